@@ -1,0 +1,32 @@
+// Writes a solve's fields and summary to an HDF5 file (the result contract,
+// docs/file-format.md). The file appears only when complete: it is written
+// under a temporary name in the same directory and renamed.
+#pragma once
+
+#include <filesystem>
+#include <span>
+#include <string>
+
+#include "halfspace/grid.hpp"
+#include "halfspace/solvers/solve_result.hpp"
+
+namespace halfspace::io {
+
+struct ResultMetadata {
+  double e_star = 0.0;        // Pa
+  std::string load_mode;      // "force", "mean_pressure" or "approach"
+  int threads = 1;
+  std::string command_line;   // the full command line
+  std::string config;         // the TOML config text, empty if none
+  std::string height_source;  // where the surface came from
+};
+
+// Datasets /height, /pressure, /gap, /displacement (float64) and /contact
+// (uint8, 1 where p > 0), shaped like the grid; root attributes as in
+// docs/file-format.md. Throws FileError naming the path if it cannot be
+// written; no partial file is left behind.
+void write_result(const std::filesystem::path& path, const Grid& grid,
+                  std::span<const double> height, const SolveResult& result,
+                  const ResultMetadata& metadata);
+
+}  // namespace halfspace::io

@@ -1,0 +1,94 @@
+// The one place for elementwise loops and reductions over grid fields.
+// Solvers express their vector work through these functions so that a later
+// distributed-memory version (MPI slabs) changes only this file and the
+// operator: `global_*` is where a reduction over all ranks would happen.
+//
+// Reductions are deterministic: the index range is cut into kReductionBlocks
+// fixed blocks, each summed in order, and the block sums are added in order,
+// so the result has the same bits whatever the number of threads.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <limits>
+
+namespace halfspace::linalg {
+
+inline constexpr std::size_t kReductionBlocks = 64;
+
+// Identity on one process; the hook for an all-ranks sum.
+template <std::size_t K>
+inline std::array<double, K> global_sum(const std::array<double, K>& local) {
+  return local;
+}
+inline double global_max(double local) { return local; }
+inline double global_min(double local) { return local; }
+
+// Calls body(i) for i in [0, n), in parallel; body must not write shared state
+// other than element i of its fields.
+template <class Body>
+void for_each_index(std::size_t n, Body&& body) {
+  const auto count = static_cast<std::ptrdiff_t>(n);
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t i = 0; i < count; ++i) {
+    body(static_cast<std::size_t>(i));
+  }
+}
+
+// Sums K terms at once: term(i) returns std::array<double, K>; the result is
+// the component-wise sum over i in [0, n), reduced over all ranks.
+template <std::size_t K, class Term>
+std::array<double, K> sums(std::size_t n, Term&& term) {
+  std::array<std::array<double, K>, kReductionBlocks> partial{};
+  const std::size_t block = (n + kReductionBlocks - 1) / kReductionBlocks;
+  const auto blocks = static_cast<std::ptrdiff_t>(kReductionBlocks);
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t b = 0; b < blocks; ++b) {
+    const std::size_t begin = std::min(n, static_cast<std::size_t>(b) * block);
+    const std::size_t end = std::min(n, begin + block);
+    std::array<double, K> acc{};
+    for (std::size_t i = begin; i < end; ++i) {
+      const std::array<double, K> t = term(i);
+      for (std::size_t k = 0; k < K; ++k) acc[k] += t[k];
+    }
+    partial[static_cast<std::size_t>(b)] = acc;
+  }
+  std::array<double, K> total{};
+  for (const auto& p : partial) {
+    for (std::size_t k = 0; k < K; ++k) total[k] += p[k];
+  }
+  return global_sum(total);
+}
+
+// Sum of term(i) over i in [0, n), reduced over all ranks.
+template <class Term>
+double sum(std::size_t n, Term&& term) {
+  return sums<1>(n, [&](std::size_t i) { return std::array<double, 1>{term(i)}; })[0];
+}
+
+// Maximum of value(i) over i in [0, n) (-infinity when n == 0).
+template <class Value>
+double max_of(std::size_t n, Value&& value) {
+  double result = -std::numeric_limits<double>::infinity();
+  const auto count = static_cast<std::ptrdiff_t>(n);
+#pragma omp parallel for schedule(static) reduction(max : result)
+  for (std::ptrdiff_t i = 0; i < count; ++i) {
+    result = std::max(result, value(static_cast<std::size_t>(i)));
+  }
+  return global_max(result);
+}
+
+// Minimum of value(i) over i in [0, n) (+infinity when n == 0).
+template <class Value>
+double min_of(std::size_t n, Value&& value) {
+  double result = std::numeric_limits<double>::infinity();
+  const auto count = static_cast<std::ptrdiff_t>(n);
+#pragma omp parallel for schedule(static) reduction(min : result)
+  for (std::ptrdiff_t i = 0; i < count; ++i) {
+    result = std::min(result, value(static_cast<std::size_t>(i)));
+  }
+  return global_min(result);
+}
+
+}  // namespace halfspace::linalg

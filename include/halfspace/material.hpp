@@ -1,0 +1,19 @@
+// Elastic constants of the two bodies and their composite (contact) modulus
+// 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2, in Pa.
+#pragma once
+
+namespace halfspace {
+
+struct ElasticBody {
+  double youngs_modulus = 0.0;  // E, Pa
+  double poissons_ratio = 0.0;  // nu, dimensionless
+};
+
+// Composite modulus E* (Pa) of two bodies. Throws InputError naming the body
+// when E <= 0 or not finite, or nu is outside (-1, 0.5].
+double composite_modulus(const ElasticBody& body1, const ElasticBody& body2);
+
+// Checks a directly given E* (Pa): throws InputError unless positive and finite.
+double checked_composite_modulus(double e_star);
+
+}  // namespace halfspace

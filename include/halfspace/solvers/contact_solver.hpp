@@ -1,0 +1,30 @@
+// Interface of every normal-contact solver (Polonsky-Keer on the FFT operator,
+// and the dense Lemke and QP solvers), so front ends can choose one by name.
+#pragma once
+
+#include <span>
+#include <string_view>
+
+#include "halfspace/solvers/loading.hpp"
+#include "halfspace/solvers/solve_result.hpp"
+
+namespace halfspace {
+
+class ContactSolver {
+ public:
+  virtual ~ContactSolver() = default;
+
+  virtual std::string_view name() const = 0;
+
+  // Solves the contact problem
+  //   gap = initial_gap + K p - approach,  p >= 0,  gap >= 0,  p * gap = 0,
+  // under `loading`. `initial_gap` (m, one entry per cell) is the separation
+  // of the undeformed surfaces at zero approach; its minimum is normally 0.
+  // `initial_pressure` (Pa), if not empty, warm-starts the iteration.
+  // Throws InputError for invalid loading or sizes; returns non-convergence
+  // as a status.
+  virtual SolveResult solve(std::span<const double> initial_gap, const Loading& loading,
+                            std::span<const double> initial_pressure = {}) = 0;
+};
+
+}  // namespace halfspace

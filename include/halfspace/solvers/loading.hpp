@@ -1,0 +1,30 @@
+// How a contact is loaded: by total force, by mean pressure, or by imposing
+// the rigid-body approach (displacement control).
+#pragma once
+
+#include <string_view>
+
+namespace halfspace {
+
+enum class ControlMode {
+  force,          // total normal force: N in 2D, N/m in 1D
+  mean_pressure,  // force divided by the domain area (Pa)
+  approach,       // rigid-body approach (m), displacement control
+};
+
+std::string_view to_string(ControlMode mode);
+
+struct Loading {
+  ControlMode mode = ControlMode::force;
+  double value = 0.0;  // in the unit of `mode`
+
+  static Loading force(double total_force) { return {ControlMode::force, total_force}; }
+  static Loading mean_pressure(double pressure) { return {ControlMode::mean_pressure, pressure}; }
+  static Loading approach(double distance) { return {ControlMode::approach, distance}; }
+
+  bool load_controlled() const { return mode != ControlMode::approach; }
+  // Throws InputError naming the mode and value unless it is positive and finite.
+  void validate() const;
+};
+
+}  // namespace halfspace

@@ -1,0 +1,60 @@
+// Polonsky-Keer constrained conjugate-gradient solver for frictionless normal
+// contact (Polonsky & Keer 1999, Wear 231, 206-219), under load control (total
+// force or mean pressure) or displacement control (imposed approach).
+//
+// Stopping criterion. With gap g = initial_gap + K p - approach, contact set
+// C = {i : p_i > 0}, mean pressure pbar = (1/N) sum_i p_i and gap scale
+// g_ref = ptp(initial_gap) + ptp(K p) (ptp = max - min over the grid), the
+// residual of iterate p is
+//
+//   residual = ( sum_i (p_i / pbar) |g_i| + sum_i max(-g_i, 0) ) / (N g_ref),
+//
+// a pressure-weighted mean gap on the contact set plus the mean interpenetration
+// elsewhere, both relative to the gap scale (the first sum is dropped when
+// pbar = 0). It is zero exactly at the solution of the linear complementarity
+// problem. The iteration stops when residual <= tolerance, checked on the
+// final (p, K p) pair, so the returned fields are mutually consistent. Under
+// load control the force equals the target to rounding at every iterate.
+#pragma once
+
+#include <functional>
+#include <span>
+#include <string_view>
+
+#include "halfspace/operators/influence_operator.hpp"
+#include "halfspace/solvers/contact_solver.hpp"
+
+namespace halfspace::solvers {
+
+struct PolonskyKeerOptions {
+  double tolerance = 1e-10;     // relative residual, see the stopping criterion above
+  int max_iterations = 10000;   // status iteration_limit when reached
+  // Called once per iteration with (iteration, residual); may be empty. It
+  // runs on the calling thread between iterations, so it may print.
+  std::function<void(int, double)> progress;
+
+  // Throws InputError naming the option unless 0 < tolerance < 1 and
+  // max_iterations >= 1.
+  void validate() const;
+};
+
+class PolonskyKeer final : public ContactSolver {
+ public:
+  // Keeps a reference to `op` (which must outlive the solver) and allocates
+  // the workspace once; solve() then allocates nothing inside its loop.
+  explicit PolonskyKeer(InfluenceOperator& op, PolonskyKeerOptions options = {});
+
+  std::string_view name() const override { return "polonsky-keer"; }
+
+  SolveResult solve(std::span<const double> initial_gap, const Loading& loading,
+                    std::span<const double> initial_pressure = {}) override;
+
+ private:
+  InfluenceOperator& op_;
+  PolonskyKeerOptions options_;
+  // Workspace, one entry per cell.
+  Eigen::ArrayXd direction_;        // conjugate direction t
+  Eigen::ArrayXd direction_image_;  // K t
+};
+
+}  // namespace halfspace::solvers

@@ -1,0 +1,48 @@
+// The outcome of a contact solve, returned as data: status, convergence
+// record, integral quantities and the fields. Non-convergence is a status,
+// never an exception.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace halfspace {
+
+enum class SolveStatus {
+  converged,        // residual below tolerance
+  iteration_limit,  // stopped at max_iterations with residual above tolerance
+  breakdown,        // the iteration could not continue (message says why)
+};
+
+std::string_view to_string(SolveStatus status);
+
+struct SolveResult {
+  SolveStatus status = SolveStatus::breakdown;
+  std::string message;   // human-readable reason, empty when converged
+  std::string solver;    // e.g. "polonsky-keer"
+
+  int iterations = 0;
+  double residual = 0.0;                // final value of the stopping measure
+  double tolerance = 0.0;               // the tolerance it was compared with
+  std::vector<double> residual_history; // one entry per iteration
+  int operator_applications = 0;        // number of K*p products
+
+  double approach = 0.0;          // rigid-body approach (m)
+  double total_force = 0.0;       // N in 2D, N/m in 1D
+  double mean_pressure = 0.0;     // total_force / domain area (Pa)
+  double max_pressure = 0.0;      // Pa
+  double contact_fraction = 0.0;  // cells with p > 0 over all cells
+  double wall_seconds = 0.0;
+
+  // Fields with one entry per cell, (ny, nx) row-major.
+  Eigen::ArrayXd pressure;      // Pa, >= 0
+  Eigen::ArrayXd displacement;  // m, K * pressure
+  Eigen::ArrayXd gap;           // m, initial_gap + displacement - approach
+
+  bool converged() const { return status == SolveStatus::converged; }
+};
+
+}  // namespace halfspace

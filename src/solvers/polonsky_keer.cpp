@@ -1,0 +1,247 @@
+// Polonsky-Keer constrained conjugate gradient (Polonsky & Keer 1999, Wear
+// 231, 206-219). The steps below follow the paper's numbering; the stopping
+// test is ours (see the header) because the paper's relative pressure change
+// says little about how well the contact conditions hold.
+#include "halfspace/solvers/polonsky_keer.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "halfspace/error.hpp"
+#include "halfspace/linalg/parallel.hpp"
+
+namespace halfspace::solvers {
+namespace {
+
+using linalg::for_each_index;
+using linalg::sums;
+
+struct Problem {
+  std::span<const double> initial_gap;
+  bool load_controlled;
+  double target_force;  // load control only
+  double approach;      // displacement control only
+  double cell_area;
+  double initial_gap_range;  // ptp(initial_gap)
+};
+
+void check_size(std::string_view what, std::size_t got, std::size_t expected) {
+  if (got != expected) {
+    throw InputError(fmt::format("{} has {} entries, but the grid has {} cells", what, got, expected));
+  }
+}
+
+// Starting pressure for displacement control: each cell pushed in by the
+// local overlap alone, p = max(approach - g0, 0) / K_ii.
+void local_overlap_pressure(std::span<const double> gap, double self_influence, double* pressure) {
+  for_each_index(gap.size(), [&](std::size_t i) { pressure[i] = std::max(-gap[i], 0.0) / self_influence; });
+}
+
+}  // namespace
+
+void PolonskyKeerOptions::validate() const {
+  if (!(tolerance > 0.0 && tolerance < 1.0)) {
+    throw InputError(fmt::format("tolerance = {} is invalid: allowed range is (0, 1)", tolerance));
+  }
+  if (max_iterations < 1) {
+    throw InputError(fmt::format("max_iterations = {} is invalid: must be at least 1", max_iterations));
+  }
+}
+
+PolonskyKeer::PolonskyKeer(InfluenceOperator& op, PolonskyKeerOptions options)
+    : op_(op), options_(std::move(options)) {
+  options_.validate();
+  const auto n = static_cast<Eigen::Index>(op_.grid().size());
+  direction_.setZero(n);
+  direction_image_.setZero(n);
+}
+
+SolveResult PolonskyKeer::solve(std::span<const double> initial_gap, const Loading& loading,
+                                std::span<const double> initial_pressure) {
+  const auto start = std::chrono::steady_clock::now();
+  const Grid& grid = op_.grid();
+  const std::size_t n = grid.size();
+  const double cells = static_cast<double>(n);
+  check_size("initial gap", initial_gap.size(), n);
+  if (!initial_pressure.empty()) check_size("initial pressure", initial_pressure.size(), n);
+  loading.validate();
+
+  const double gap_max = linalg::max_of(n, [&](std::size_t i) { return initial_gap[i]; });
+  const double gap_min = linalg::min_of(n, [&](std::size_t i) { return initial_gap[i]; });
+  if (!std::isfinite(gap_max) || !std::isfinite(gap_min)) {
+    throw InputError("initial gap holds a non-finite value");
+  }
+
+  Problem problem{initial_gap, loading.load_controlled(), 0.0, 0.0, grid.cell_area(), gap_max - gap_min};
+  switch (loading.mode) {
+    case ControlMode::force: problem.target_force = loading.value; break;
+    case ControlMode::mean_pressure: problem.target_force = loading.value * grid.domain_area(); break;
+    case ControlMode::approach: problem.approach = loading.value; break;
+  }
+  if (!problem.load_controlled && grid.periodic()) {
+    // With a zero-mean displacement the mean gap is mean(g0) - approach, and
+    // it cannot be negative: at mean(g0) the pressure is already infinite.
+    const double mean_gap = linalg::sum(n, [&](std::size_t i) { return initial_gap[i]; }) / cells;
+    if (problem.approach >= mean_gap) {
+      throw InputError(fmt::format(
+          "approach = {} m is invalid for a periodic surface: it must be below the mean initial gap {} m "
+          "(full contact needs infinite pressure there)",
+          problem.approach, mean_gap));
+    }
+  }
+
+  SolveResult result;
+  result.solver = std::string(name());
+  result.tolerance = options_.tolerance;
+  result.residual_history.reserve(static_cast<std::size_t>(options_.max_iterations) + 1);
+  result.pressure.setZero(static_cast<Eigen::Index>(n));
+  result.displacement.setZero(static_cast<Eigen::Index>(n));
+  result.gap.setZero(static_cast<Eigen::Index>(n));
+  double* p = result.pressure.data();
+  double* u = result.displacement.data();
+  double* g = result.gap.data();
+  double* t = direction_.data();
+  double* r = direction_image_.data();
+  const std::span<const double> pressure_view(p, n);
+  const std::span<double> displacement_view(u, n);
+  const double k_self = op_.self_influence();
+
+  // Step 0: starting pressure. Load control: the warm start or a uniform
+  // pressure, scaled to the target force. Displacement control: the warm
+  // start or the local-overlap guess.
+  if (!initial_pressure.empty()) {
+    for_each_index(n, [&](std::size_t i) { p[i] = std::max(initial_pressure[i], 0.0); });
+  }
+  if (problem.load_controlled) {
+    double force = problem.cell_area * linalg::sum(n, [&](std::size_t i) { return p[i]; });
+    if (!(force > 0.0)) {
+      for_each_index(n, [&](std::size_t i) { p[i] = 1.0; });
+      force = problem.cell_area * cells;
+    }
+    const double scale = problem.target_force / force;
+    for_each_index(n, [&](std::size_t i) { p[i] *= scale; });
+  } else if (initial_pressure.empty()) {
+    for_each_index(n, [&](std::size_t i) { g[i] = initial_gap[i] - problem.approach; });
+    local_overlap_pressure({g, n}, k_self, p);
+  }
+
+  direction_.setZero();
+  double previous_norm = 1.0;  // G_old
+  bool conjugate = false;      // delta: false right after a reset
+  double approach = problem.approach;
+  double residual = 0.0;
+  int iteration = 0;
+  for (;; ++iteration) {
+    // Step 1: displacement and gap of the current pressure.
+    op_.apply(pressure_view, displacement_view);
+    ++result.operator_applications;
+    const auto [contact_gap_sum, contact_cells] = sums<2>(n, [&](std::size_t i) {
+      return p[i] > 0.0 ? std::array<double, 2>{initial_gap[i] + u[i], 1.0} : std::array<double, 2>{0.0, 0.0};
+    });
+    if (problem.load_controlled) {
+      // The approach makes the mean gap on the contact set vanish.
+      approach = contact_gap_sum / contact_cells;
+    }
+    const double u_max = linalg::max_of(n, [&](std::size_t i) { return u[i]; });
+    const double u_min = linalg::min_of(n, [&](std::size_t i) { return u[i]; });
+
+    // Step 2, fused with the residual: G = sum over C of g^2.
+    const auto [weighted_gap, overlap, pressure_sum, gap_norm] = sums<4>(n, [&](std::size_t i) {
+      g[i] = initial_gap[i] + u[i] - approach;
+      const bool in_contact = p[i] > 0.0;
+      return std::array<double, 4>{p[i] * std::abs(g[i]), std::max(-g[i], 0.0), p[i],
+                                   in_contact ? g[i] * g[i] : 0.0};
+    });
+    const double gap_scale = std::max(problem.initial_gap_range + (u_max - u_min), 0.0);
+    const double numerator = (pressure_sum > 0.0 ? weighted_gap * cells / pressure_sum : 0.0) + overlap;
+    residual = numerator == 0.0 ? 0.0 : numerator / (cells * gap_scale);
+    result.residual_history.push_back(residual);
+    if (options_.progress) options_.progress(iteration, residual);
+
+    if (residual <= options_.tolerance) {
+      result.status = SolveStatus::converged;
+      break;
+    }
+    if (!std::isfinite(residual)) {
+      result.status = SolveStatus::breakdown;
+      result.message = fmt::format("residual became non-finite at iteration {}", iteration);
+      break;
+    }
+    if (iteration == options_.max_iterations) {
+      result.status = SolveStatus::iteration_limit;
+      result.message = fmt::format("no convergence after {} iterations: residual {:.3e} > tolerance {:.3e}",
+                                   iteration, residual, options_.tolerance);
+      break;
+    }
+    if (contact_cells == 0.0) {
+      // Displacement control lost every contact cell: restart from the local
+      // overlap of the current gap.
+      local_overlap_pressure({g, n}, k_self, p);
+      conjugate = false;
+      continue;
+    }
+
+    // Step 3: conjugate direction on the contact set.
+    const double beta = conjugate ? gap_norm / previous_norm : 0.0;
+    for_each_index(n, [&](std::size_t i) { t[i] = p[i] > 0.0 ? g[i] + beta * t[i] : 0.0; });
+    previous_norm = gap_norm;
+
+    // Step 4: its image r = K t, mean-corrected on C under load control.
+    op_.apply({t, n}, {r, n});
+    ++result.operator_applications;
+    const auto [r_sum, t_sum, gt, rt] = sums<4>(n, [&](std::size_t i) {
+      return p[i] > 0.0 ? std::array<double, 4>{r[i], t[i], g[i] * t[i], r[i] * t[i]}
+                        : std::array<double, 4>{0.0, 0.0, 0.0, 0.0};
+    });
+    const double r_mean = problem.load_controlled ? r_sum / contact_cells : 0.0;
+    const double curvature = rt - r_mean * t_sum;
+
+    // Step 5: step length.
+    const double tau = gt / curvature;
+    if (!(curvature > 0.0) || !std::isfinite(tau)) {
+      result.status = SolveStatus::breakdown;
+      result.message = fmt::format("non-positive curvature t.Kt = {:.3e} at iteration {}", curvature, iteration);
+      break;
+    }
+
+    // Steps 6-8: move along t, clip to p >= 0, and let cells that are out of
+    // contact but interpenetrate (g < 0) enter with pressure -tau g; any such
+    // entry resets the conjugacy.
+    const auto [new_pressure_sum, entered] = sums<2>(n, [&](std::size_t i) {
+      double pi = std::max(p[i] - tau * t[i], 0.0);
+      double entry = 0.0;
+      if (pi == 0.0 && g[i] < 0.0) {
+        pi = -tau * g[i];
+        entry = 1.0;
+      }
+      p[i] = pi;
+      return std::array<double, 2>{pi, entry};
+    });
+    conjugate = entered == 0.0;
+
+    // Step 9: restore the load.
+    if (problem.load_controlled) {
+      const double scale = problem.target_force / (problem.cell_area * new_pressure_sum);
+      for_each_index(n, [&](std::size_t i) { p[i] *= scale; });
+    }
+  }
+
+  // Summary of the final iterate, whose displacement and gap are current.
+  const auto [pressure_total, contact_total] = sums<2>(n, [&](std::size_t i) {
+    return std::array<double, 2>{p[i], p[i] > 0.0 ? 1.0 : 0.0};
+  });
+  result.iterations = iteration;
+  result.residual = residual;
+  result.approach = approach;
+  result.total_force = problem.cell_area * pressure_total;
+  result.mean_pressure = result.total_force / grid.domain_area();
+  result.max_pressure = linalg::max_of(n, [&](std::size_t i) { return p[i]; });
+  result.contact_fraction = contact_total / cells;
+  result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace halfspace::solvers
