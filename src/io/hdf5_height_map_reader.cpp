@@ -1,0 +1,266 @@
+// Reads a height map from an HDF5 file: a rank-1 profile or a rank-2 (ny, nx)
+// map of any integer or floating-point storage, converted to float64 by HDF5,
+// with the spacing from the root attributes dx and dy.
+#include "halfspace/io/hdf5_height_map_reader.hpp"
+
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <string>
+#include <string_view>
+#include <system_error>
+#include <vector>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <hdf5.h>
+
+#include "halfspace/error.hpp"
+#include "hdf5_handle.hpp"
+
+namespace halfspace::io {
+namespace {
+
+using detail::Attribute;
+using detail::Dataspace;
+using detail::Datatype;
+using detail::File;
+using detail::Object;
+
+// Enough names to recognise a typo without flooding the message.
+constexpr std::size_t kMaxListedDatasets = 10;
+
+// What is being read; every message starts with it so that it can be found
+// in a log of a batch run.
+struct Target {
+  const std::filesystem::path& path;
+  const std::string& dataset;
+
+  [[noreturn]] void fail(std::string_view what) const {
+    throw FileError(fmt::format("cannot read height map '{}' dataset '{}': {}", path.string(), dataset, what));
+  }
+};
+
+std::string_view class_name(H5T_class_t type_class) {
+  switch (type_class) {
+    case H5T_INTEGER: return "integer";
+    case H5T_FLOAT: return "floating-point";
+    case H5T_TIME: return "time";
+    case H5T_STRING: return "string";
+    case H5T_BITFIELD: return "bitfield";
+    case H5T_OPAQUE: return "opaque";
+    case H5T_COMPOUND: return "compound";
+    case H5T_REFERENCE: return "reference";
+    case H5T_ENUM: return "enum";
+    case H5T_VLEN: return "variable-length";
+    case H5T_ARRAY: return "array";
+    default: return "unknown";
+  }
+}
+
+bool is_numeric(H5T_class_t type_class) { return type_class == H5T_INTEGER || type_class == H5T_FLOAT; }
+
+// HDF5 identifies HDF5 files by their signature, which may sit after a user
+// block, so the check is left to it rather than done on the first bytes.
+File open_file(const Target& target) {
+  std::error_code error;
+  const auto status = std::filesystem::status(target.path, error);
+  if (!std::filesystem::exists(status)) target.fail("the file does not exist");
+  if (std::filesystem::is_directory(status)) target.fail("the path is a directory, not a file");
+
+#if H5_VERSION_GE(1, 12, 0)
+  const htri_t is_hdf5 = H5Fis_accessible(target.path.c_str(), H5P_DEFAULT);
+#else
+  const htri_t is_hdf5 = H5Fis_hdf5(target.path.c_str());
+#endif
+  if (is_hdf5 < 0) target.fail(fmt::format("the file cannot be opened: {}", detail::error_reason()));
+  if (is_hdf5 == 0) target.fail("the file is not an HDF5 file (no HDF5 signature found)");
+
+  File file(H5Fopen(target.path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
+  if (!file.valid()) target.fail(fmt::format("the HDF5 file cannot be opened: {}", detail::error_reason()));
+  return file;
+}
+
+// H5Lexists fails, rather than answering no, when an intermediate group is
+// missing, so the path is checked one link at a time.
+bool link_exists(hid_t file, const std::string& name) {
+  std::string prefix;
+  std::size_t begin = 0;
+  while (begin <= name.size()) {
+    std::size_t end = name.find('/', begin);
+    if (end == std::string::npos) end = name.size();
+    if (end > begin) {
+      prefix += '/';
+      prefix.append(name, begin, end - begin);
+      if (H5Lexists(file, prefix.c_str(), H5P_DEFAULT) <= 0) return false;
+    }
+    begin = end + 1;
+  }
+  return true;
+}
+
+// Names of the datasets in the root group, for a "did you mean" hint.
+std::string describe_root_datasets(hid_t file) {
+  H5G_info_t info;
+  if (H5Gget_info(file, &info) < 0) return "the datasets in the file could not be listed";
+  std::vector<std::string> names;
+  std::size_t count = 0;
+  for (hsize_t k = 0; k < info.nlinks; ++k) {
+    const ssize_t length = H5Lget_name_by_idx(file, ".", H5_INDEX_NAME, H5_ITER_INC, k, nullptr, 0, H5P_DEFAULT);
+    if (length < 0) continue;
+    std::string name(static_cast<std::size_t>(length), '\0');
+    H5Lget_name_by_idx(file, ".", H5_INDEX_NAME, H5_ITER_INC, k, name.data(), name.size() + 1, H5P_DEFAULT);
+    const Object object(H5Oopen(file, name.c_str(), H5P_DEFAULT));
+    if (!object.valid() || H5Iget_type(object.get()) != H5I_DATASET) continue;
+    if (names.size() < kMaxListedDatasets) names.push_back("'/" + name + "'");
+    ++count;
+  }
+  if (count == 0) return "the root group holds no datasets";
+  std::string text = fmt::format("datasets in the root group: {}", fmt::join(names, ", "));
+  if (count > names.size()) text += fmt::format(" and {} more", count - names.size());
+  return text;
+}
+
+Object open_dataset(hid_t file, const Target& target) {
+  if (target.dataset.empty()) target.fail("the dataset name is empty");
+  if (!link_exists(file, target.dataset)) {
+    target.fail(fmt::format("the dataset does not exist; {}", describe_root_datasets(file)));
+  }
+  Object object(H5Oopen(file, target.dataset.c_str(), H5P_DEFAULT));
+  if (!object.valid()) target.fail(fmt::format("the dataset cannot be opened: {}", detail::error_reason()));
+  const H5I_type_t kind = H5Iget_type(object.get());
+  if (kind == H5I_GROUP) target.fail("the name refers to a group, not a dataset");
+  if (kind != H5I_DATASET) target.fail("the name refers to a named datatype, not a dataset");
+  return object;
+}
+
+void check_numeric_type(hid_t dataset, const Target& target) {
+  const Datatype type(H5Dget_type(dataset));
+  if (!type.valid()) target.fail(fmt::format("the datatype cannot be read: {}", detail::error_reason()));
+  const H5T_class_t type_class = H5Tget_class(type.get());
+  if (!is_numeric(type_class)) {
+    target.fail(fmt::format("the dataset holds {} data, not numbers; heights must be stored as integers or "
+                            "floating-point values",
+                            class_name(type_class)));
+  }
+}
+
+std::string shape_text(const std::vector<hsize_t>& dims) {
+  return dims.size() == 1 ? fmt::format("({},)", dims[0]) : fmt::format("({})", fmt::join(dims, ", "));
+}
+
+// Returns the dimensions in file order: (n) for a profile, (ny, nx) for a map.
+std::vector<hsize_t> read_shape(hid_t dataset, const Target& target) {
+  const Dataspace space(H5Dget_space(dataset));
+  if (!space.valid()) target.fail(fmt::format("the dataspace cannot be read: {}", detail::error_reason()));
+  const H5S_class_t space_class = H5Sget_simple_extent_type(space.get());
+  if (space_class == H5S_NULL) target.fail("the dataset is empty (null dataspace)");
+  if (space_class == H5S_SCALAR) {
+    target.fail("the dataset is a scalar (rank 0); expected rank 1, shape (n,), for a profile or rank 2, "
+                "shape (ny, nx), for a map");
+  }
+  const int rank = H5Sget_simple_extent_ndims(space.get());
+  if (rank < 0) target.fail(fmt::format("the rank cannot be read: {}", detail::error_reason()));
+  std::vector<hsize_t> dims(static_cast<std::size_t>(rank));
+  H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr);
+  if (rank != 1 && rank != 2) {
+    target.fail(fmt::format("the dataset has rank {} (shape {}); expected rank 1, shape (n,), for a profile or "
+                            "rank 2, shape (ny, nx), for a map",
+                            rank, shape_text(dims)));
+  }
+  const char* axis_names[2][2] = {{"x", ""}, {"y", "x"}};
+  for (std::size_t axis = 0; axis < dims.size(); ++axis) {
+    if (dims[axis] < 2) {
+      target.fail(fmt::format("the dataset has shape {}, i.e. {} point(s) along {}; need at least 2 points "
+                              "along each axis",
+                              shape_text(dims), dims[axis], axis_names[rank - 1][axis]));
+    }
+  }
+  const hsize_t limit = static_cast<hsize_t>(std::numeric_limits<Eigen::Index>::max()) / sizeof(double);
+  if (rank == 2 && dims[0] > limit / dims[1]) {
+    target.fail(fmt::format("the dataset of shape {} is too large to hold in memory", shape_text(dims)));
+  }
+  return dims;
+}
+
+// Finite heights are a precondition of every solver; one bad pixel (a
+// dropout marked NaN by the instrument) must be reported, not propagated.
+void check_finite(const Eigen::ArrayXd& heights, std::size_t nx, int dimension, const Target& target) {
+  std::size_t count = 0;
+  Eigen::Index first = -1;
+  for (Eigen::Index k = 0; k < heights.size(); ++k) {
+    if (!std::isfinite(heights[k])) {
+      if (count == 0) first = k;
+      ++count;
+    }
+  }
+  if (count == 0) return;
+  const auto index = static_cast<std::size_t>(first);
+  const std::string where = dimension == 1
+                                ? fmt::format("index i = {}", index)
+                                : fmt::format("(j, i) = ({}, {}) (row j, column i)", index / nx, index % nx);
+  target.fail(fmt::format("{} of {} heights are not finite; the first is at {}: {}", count, heights.size(), where,
+                          heights[first]));
+}
+
+// A root attribute dx or dy: one number, finite and >= 0; absent means 0,
+// "not given", and the caller must supply the spacing.
+double read_spacing(hid_t file, const char* name, const Target& target) {
+  const htri_t exists = H5Aexists(file, name);
+  if (exists < 0) target.fail(fmt::format("root attribute '{}' cannot be checked: {}", name, detail::error_reason()));
+  if (exists == 0) return 0.0;
+
+  const Attribute attribute(H5Aopen(file, name, H5P_DEFAULT));
+  if (!attribute.valid()) {
+    target.fail(fmt::format("root attribute '{}' cannot be opened: {}", name, detail::error_reason()));
+  }
+  const Dataspace space(H5Aget_space(attribute.get()));
+  const hssize_t points = H5Sget_simple_extent_npoints(space.get());
+  if (points != 1) target.fail(fmt::format("root attribute '{}' holds {} values; expected one number", name, points));
+  const Datatype type(H5Aget_type(attribute.get()));
+  const H5T_class_t type_class = H5Tget_class(type.get());
+  if (!is_numeric(type_class)) {
+    target.fail(fmt::format("root attribute '{}' is of {} type; expected a number (metres)", name,
+                            class_name(type_class)));
+  }
+  double value = 0.0;
+  if (H5Aread(attribute.get(), H5T_NATIVE_DOUBLE, &value) < 0) {
+    target.fail(fmt::format("root attribute '{}' cannot be read: {}", name, detail::error_reason()));
+  }
+  if (!std::isfinite(value) || value < 0.0) {
+    target.fail(fmt::format("root attribute '{}' = {} is invalid: a spacing must be finite and >= 0 m "
+                            "(0 means not given)",
+                            name, value));
+  }
+  return value;
+}
+
+}  // namespace
+
+HeightMap read_hdf5_height_map(const std::filesystem::path& path, const std::string& dataset) {
+  const detail::ErrorPrintingOff quiet;
+  const Target target{path, dataset};
+  const File file = open_file(target);
+  const Object data = open_dataset(file.get(), target);
+  check_numeric_type(data.get(), target);
+  const std::vector<hsize_t> dims = read_shape(data.get(), target);
+
+  HeightMap map;
+  map.dimension = static_cast<int>(dims.size());
+  map.nx = static_cast<std::size_t>(dims.back());
+  map.ny = map.dimension == 1 ? 1 : static_cast<std::size_t>(dims[0]);
+  map.heights.resize(static_cast<Eigen::Index>(map.nx * map.ny));
+  // HDF5 converts integer and float32 storage to double during the read.
+  if (H5Dread(data.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, map.heights.data()) < 0) {
+    target.fail(fmt::format("the heights cannot be read: {}", detail::error_reason()));
+  }
+  check_finite(map.heights, map.nx, map.dimension, target);
+
+  map.dx = read_spacing(file.get(), "dx", target);
+  // A profile has no y spacing, whatever the file says.
+  map.dy = map.dimension == 2 ? read_spacing(file.get(), "dy", target) : 0.0;
+  map.source = path.string() + ":" + dataset;
+  return map;
+}
+
+}  // namespace halfspace::io
