@@ -2,10 +2,10 @@
 // at the cell centres of a grid, and the initial gap they define.
 #include "halfspace/geometry/builtin_surface.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <numbers>
-
-#include <fmt/format.h>
 
 #include "halfspace/error.hpp"
 
@@ -56,10 +56,14 @@ double height_at(const SurfaceSpec& spec, int dimension, double x, double y) {
 
 std::string_view to_string(SurfaceShape shape) {
   switch (shape) {
-    case SurfaceShape::sphere: return "sphere";
-    case SurfaceShape::cylinder: return "cylinder";
-    case SurfaceShape::flat: return "flat";
-    case SurfaceShape::wavy: return "wavy";
+    case SurfaceShape::sphere:
+      return "sphere";
+    case SurfaceShape::cylinder:
+      return "cylinder";
+    case SurfaceShape::flat:
+      return "flat";
+    case SurfaceShape::wavy:
+      return "wavy";
   }
   return "unknown";
 }

@@ -3,10 +3,10 @@
 // a short reason for our own exception messages.
 #pragma once
 
+#include <hdf5.h>
+
 #include <string>
 #include <utility>
-
-#include <hdf5.h>
 
 namespace halfspace::io::detail {
 

@@ -3,6 +3,10 @@
 // with the spacing from the root attributes dx and dy.
 #include "halfspace/io/hdf5_height_map_reader.hpp"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <hdf5.h>
+
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -10,10 +14,6 @@
 #include <string_view>
 #include <system_error>
 #include <vector>
-
-#include <fmt/format.h>
-#include <fmt/ranges.h>
-#include <hdf5.h>
 
 #include "halfspace/error.hpp"
 #include "hdf5_handle.hpp"
@@ -43,22 +43,36 @@ struct Target {
 
 std::string_view class_name(H5T_class_t type_class) {
   switch (type_class) {
-    case H5T_INTEGER: return "integer";
-    case H5T_FLOAT: return "floating-point";
-    case H5T_TIME: return "time";
-    case H5T_STRING: return "string";
-    case H5T_BITFIELD: return "bitfield";
-    case H5T_OPAQUE: return "opaque";
-    case H5T_COMPOUND: return "compound";
-    case H5T_REFERENCE: return "reference";
-    case H5T_ENUM: return "enum";
-    case H5T_VLEN: return "variable-length";
-    case H5T_ARRAY: return "array";
-    default: return "unknown";
+    case H5T_INTEGER:
+      return "integer";
+    case H5T_FLOAT:
+      return "floating-point";
+    case H5T_TIME:
+      return "time";
+    case H5T_STRING:
+      return "string";
+    case H5T_BITFIELD:
+      return "bitfield";
+    case H5T_OPAQUE:
+      return "opaque";
+    case H5T_COMPOUND:
+      return "compound";
+    case H5T_REFERENCE:
+      return "reference";
+    case H5T_ENUM:
+      return "enum";
+    case H5T_VLEN:
+      return "variable-length";
+    case H5T_ARRAY:
+      return "array";
+    default:
+      return "unknown";
   }
 }
 
-bool is_numeric(H5T_class_t type_class) { return type_class == H5T_INTEGER || type_class == H5T_FLOAT; }
+bool is_numeric(H5T_class_t type_class) {
+  return type_class == H5T_INTEGER || type_class == H5T_FLOAT;
+}
 
 // HDF5 identifies HDF5 files by their signature, which may sit after a user
 // block, so the check is left to it rather than done on the first bytes.
@@ -139,9 +153,10 @@ void check_numeric_type(hid_t dataset, const Target& target) {
   if (!type.valid()) target.fail(fmt::format("the datatype cannot be read: {}", detail::error_reason()));
   const H5T_class_t type_class = H5Tget_class(type.get());
   if (!is_numeric(type_class)) {
-    target.fail(fmt::format("the dataset holds {} data, not numbers; heights must be stored as integers or "
-                            "floating-point values",
-                            class_name(type_class)));
+    target.fail(
+        fmt::format("the dataset holds {} data, not numbers; heights must be stored as integers or "
+                    "floating-point values",
+                    class_name(type_class)));
   }
 }
 
@@ -156,24 +171,27 @@ std::vector<hsize_t> read_shape(hid_t dataset, const Target& target) {
   const H5S_class_t space_class = H5Sget_simple_extent_type(space.get());
   if (space_class == H5S_NULL) target.fail("the dataset is empty (null dataspace)");
   if (space_class == H5S_SCALAR) {
-    target.fail("the dataset is a scalar (rank 0); expected rank 1, shape (n,), for a profile or rank 2, "
-                "shape (ny, nx), for a map");
+    target.fail(
+        "the dataset is a scalar (rank 0); expected rank 1, shape (n,), for a profile or rank 2, "
+        "shape (ny, nx), for a map");
   }
   const int rank = H5Sget_simple_extent_ndims(space.get());
   if (rank < 0) target.fail(fmt::format("the rank cannot be read: {}", detail::error_reason()));
   std::vector<hsize_t> dims(static_cast<std::size_t>(rank));
   H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr);
   if (rank != 1 && rank != 2) {
-    target.fail(fmt::format("the dataset has rank {} (shape {}); expected rank 1, shape (n,), for a profile or "
-                            "rank 2, shape (ny, nx), for a map",
-                            rank, shape_text(dims)));
+    target.fail(
+        fmt::format("the dataset has rank {} (shape {}); expected rank 1, shape (n,), for a profile or "
+                    "rank 2, shape (ny, nx), for a map",
+                    rank, shape_text(dims)));
   }
   const char* axis_names[2][2] = {{"x", ""}, {"y", "x"}};
   for (std::size_t axis = 0; axis < dims.size(); ++axis) {
     if (dims[axis] < 2) {
-      target.fail(fmt::format("the dataset has shape {}, i.e. {} point(s) along {}; need at least 2 points "
-                              "along each axis",
-                              shape_text(dims), dims[axis], axis_names[rank - 1][axis]));
+      target.fail(
+          fmt::format("the dataset has shape {}, i.e. {} point(s) along {}; need at least 2 points "
+                      "along each axis",
+                      shape_text(dims), dims[axis], axis_names[rank - 1][axis]));
     }
   }
   const hsize_t limit = static_cast<hsize_t>(std::numeric_limits<Eigen::Index>::max()) / sizeof(double);
@@ -196,9 +214,8 @@ void check_finite(const Eigen::ArrayXd& heights, std::size_t nx, int dimension, 
   }
   if (count == 0) return;
   const auto index = static_cast<std::size_t>(first);
-  const std::string where = dimension == 1
-                                ? fmt::format("index i = {}", index)
-                                : fmt::format("(j, i) = ({}, {}) (row j, column i)", index / nx, index % nx);
+  const std::string where = dimension == 1 ? fmt::format("index i = {}", index)
+                                           : fmt::format("(j, i) = ({}, {}) (row j, column i)", index / nx, index % nx);
   target.fail(fmt::format("{} of {} heights are not finite; the first is at {}: {}", count, heights.size(), where,
                           heights[first]));
 }
@@ -220,17 +237,18 @@ double read_spacing(hid_t file, const char* name, const Target& target) {
   const Datatype type(H5Aget_type(attribute.get()));
   const H5T_class_t type_class = H5Tget_class(type.get());
   if (!is_numeric(type_class)) {
-    target.fail(fmt::format("root attribute '{}' is of {} type; expected a number (metres)", name,
-                            class_name(type_class)));
+    target.fail(
+        fmt::format("root attribute '{}' is of {} type; expected a number (metres)", name, class_name(type_class)));
   }
   double value = 0.0;
   if (H5Aread(attribute.get(), H5T_NATIVE_DOUBLE, &value) < 0) {
     target.fail(fmt::format("root attribute '{}' cannot be read: {}", name, detail::error_reason()));
   }
   if (!std::isfinite(value) || value < 0.0) {
-    target.fail(fmt::format("root attribute '{}' = {} is invalid: a spacing must be finite and >= 0 m "
-                            "(0 means not given)",
-                            name, value));
+    target.fail(
+        fmt::format("root attribute '{}' = {} is invalid: a spacing must be finite and >= 0 m "
+                    "(0 means not given)",
+                    name, value));
   }
   return value;
 }

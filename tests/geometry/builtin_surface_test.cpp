@@ -2,11 +2,11 @@
 // the grid centre, parameter validation and the initial gap.
 #include "halfspace/geometry/builtin_surface.hpp"
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <numbers>
 #include <string>
-
-#include <gtest/gtest.h>
 
 #include "halfspace/error.hpp"
 

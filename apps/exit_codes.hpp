@@ -1,0 +1,10 @@
+// Exit codes of the `halfspace` program (documented in docs/usage.md).
+#pragma once
+
+namespace halfspace::app {
+
+inline constexpr int kExitOk = 0;            // solved and converged, or --help / --version
+inline constexpr int kExitInputError = 1;    // bad command line, config, input or output file
+inline constexpr int kExitNotConverged = 2;  // solved without converging; the result is still written
+
+}  // namespace halfspace::app

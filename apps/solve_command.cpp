@@ -1,0 +1,57 @@
+// The solve pipeline of the program: heights -> initial gap -> operator ->
+// solver -> result file. Everything here was validated by make_solve_setup.
+#include "solve_command.hpp"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cstdio>
+#include <span>
+
+#include "exit_codes.hpp"
+#include "halfspace/geometry/builtin_surface.hpp"
+#include "halfspace/io/result_writer.hpp"
+#include "halfspace/operators/fft_influence_operator.hpp"
+#include "halfspace/solvers/polonsky_keer.hpp"
+#include "halfspace/threads.hpp"
+#include "summary.hpp"
+
+namespace halfspace::app {
+
+int run_solve(const SolveSetup& setup) {
+  // Threads first: the FFT plans use the thread count in force when made.
+  set_threads(setup.threads);
+  FftInfluenceOperator op(setup.grid, setup.e_star, setup.fft_planning);
+  solvers::PolonskyKeer solver(op, setup.solver);
+
+  const Eigen::ArrayXd initial_gap = geometry::initial_gap_from_heights(setup.heights);
+  const auto start = std::chrono::steady_clock::now();
+  SolveResult result = solver.solve(
+      std::span<const double>(initial_gap.data(), static_cast<std::size_t>(initial_gap.size())), setup.loading);
+  if (result.wall_seconds <= 0.0) {
+    result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+
+  io::ResultMetadata metadata;
+  metadata.e_star = setup.e_star;
+  metadata.load_mode = std::string(to_string(setup.loading.mode));
+  metadata.threads = setup.threads;
+  metadata.command_line = setup.command_line;
+  metadata.config = setup.config_text;
+  metadata.height_source = setup.height_source;
+  io::write_result(setup.output, setup.grid,
+                   std::span<const double>(setup.heights.data(), static_cast<std::size_t>(setup.heights.size())),
+                   result, metadata);
+
+  if (!setup.quiet) {
+    print_summary(stdout, setup, result);
+    std::fflush(stdout);
+  }
+  if (!result.converged()) {
+    fmt::print(stderr, "{}\n", non_convergence_message(setup, result));
+    return kExitNotConverged;
+  }
+  return kExitOk;
+}
+
+}  // namespace halfspace::app

@@ -1,0 +1,15 @@
+// `halfspace solve`: runs a checked setup through the FFT operator and the
+// Polonsky-Keer solver, writes the result file and reports.
+#pragma once
+
+#include "solve_setup.hpp"
+
+namespace halfspace::app {
+
+// Solves, writes setup.output (also when not converged) and prints the
+// summary unless setup.quiet. Returns kExitOk when converged, else
+// kExitNotConverged after printing the reason to stderr. Throws InputError
+// (FileError) when the result cannot be written.
+int run_solve(const SolveSetup& setup);
+
+}  // namespace halfspace::app

@@ -1,0 +1,348 @@
+// The option table of `halfspace solve`: one entry per option drives the CLI11
+// registration, the command-line conversion and the TOML merge, so the flag
+// names and the config keys cannot drift apart.
+#include "solve_options.hpp"
+
+#include <fmt/format.h>
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <array>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <variant>
+
+#include "halfspace/error.hpp"
+#include "value_parsing.hpp"
+
+namespace halfspace::app {
+namespace {
+
+enum class Kind {
+  number,      // double
+  integer,     // long long
+  text,        // string
+  path,        // string; relative paths in a config file are relative to the file
+  dimensions,  // string "N" or "AxB"; a config file may also give a bare number
+  flag,        // bool, no value
+};
+
+using Field = std::variant<std::optional<double> SolveOptions::*, std::optional<long long> SolveOptions::*,
+                           std::optional<std::string> SolveOptions::*, bool SolveOptions::*>;
+
+struct OptionSpec {
+  std::string_view key;  // the long flag without "--", and the config file key
+  Field field;
+  Kind kind;
+  std::string_view group;
+  std::string_view value_name;
+  std::string_view help;
+};
+
+constexpr std::string_view kSurface = "Surface (exactly one of --height-map, --geometry)";
+constexpr std::string_view kGrid = "Grid";
+constexpr std::string_view kMaterial = "Material (E1, nu1, E2 and nu2, or E-star)";
+constexpr std::string_view kLoad = "Load (exactly one)";
+constexpr std::string_view kSolver = "Solver";
+constexpr std::string_view kOutput = "Output";
+
+const std::array kOptions{
+    OptionSpec{"height-map", &SolveOptions::height_map, Kind::path, kSurface, "FILE",
+               "HDF5 height map (m): a rank-1 profile or a (ny, nx) map; its grid is used"},
+    OptionSpec{"dataset", &SolveOptions::dataset, Kind::text, kSurface, "PATH",
+               "dataset in the height map file [/height]"},
+    OptionSpec{"dx", &SolveOptions::dx, Kind::number, kSurface, "M",
+               "height map spacing along x (m); overrides the file's dx attribute"},
+    OptionSpec{"dy", &SolveOptions::dy, Kind::number, kSurface, "M",
+               "height map spacing along y (m); overrides the file's dy attribute"},
+    OptionSpec{"geometry", &SolveOptions::geometry, Kind::text, kSurface, "SHAPE",
+               "built-in surface: sphere, cylinder, flat or wavy"},
+    OptionSpec{"radius", &SolveOptions::radius, Kind::number, kSurface, "M", "sphere or cylinder radius (m)"},
+    OptionSpec{"wavelength", &SolveOptions::wavelength, Kind::number, kSurface, "M", "wavy surface wavelength (m)"},
+    OptionSpec{"amplitude", &SolveOptions::amplitude, Kind::number, kSurface, "M",
+               "wavy surface amplitude A (m): h = -A (1 - cos ...)"},
+    OptionSpec{"grid", &SolveOptions::grid, Kind::dimensions, kGrid, "N|NXxNY",
+               "cells of a built-in geometry: N (1D) or NXxNY (2D)"},
+    OptionSpec{"size", &SolveOptions::size, Kind::dimensions, kGrid, "L|LXxLY",
+               "domain size of a built-in geometry (m); spacing = L / N"},
+    OptionSpec{"boundary", &SolveOptions::boundary, Kind::text, kGrid, "TYPE", "periodic or free [free]"},
+    OptionSpec{"E1", &SolveOptions::e1, Kind::number, kMaterial, "PA", "Young's modulus of body 1 (Pa)"},
+    OptionSpec{"nu1", &SolveOptions::nu1, Kind::number, kMaterial, "NU", "Poisson's ratio of body 1"},
+    OptionSpec{"E2", &SolveOptions::e2, Kind::number, kMaterial, "PA", "Young's modulus of body 2 (Pa)"},
+    OptionSpec{"nu2", &SolveOptions::nu2, Kind::number, kMaterial, "NU", "Poisson's ratio of body 2"},
+    OptionSpec{"E-star", &SolveOptions::e_star, Kind::number, kMaterial, "PA",
+               "composite modulus E* (Pa), instead of E1, nu1, E2, nu2"},
+    OptionSpec{"force", &SolveOptions::force, Kind::number, kLoad, "F", "total normal force: N (2D) or N/m (1D)"},
+    OptionSpec{"mean-pressure", &SolveOptions::mean_pressure, Kind::number, kLoad, "PA",
+               "force over the domain area (Pa)"},
+    OptionSpec{"approach", &SolveOptions::approach, Kind::number, kLoad, "M",
+               "imposed rigid-body approach (m): displacement control"},
+    OptionSpec{"tol", &SolveOptions::tol, Kind::number, kSolver, "X", "relative residual tolerance [1e-10]"},
+    OptionSpec{"max-iter", &SolveOptions::max_iter, Kind::integer, kSolver, "N", "iteration limit [10000]"},
+    OptionSpec{"threads", &SolveOptions::threads, Kind::integer, kSolver, "N",
+               "threads for loops and FFTs [all cores]"},
+    OptionSpec{"fft-planning", &SolveOptions::fft_planning, Kind::text, kSolver, "MODE",
+               "FFTW planning effort: estimate, measure or patient [estimate]"},
+    OptionSpec{"output", &SolveOptions::output, Kind::path, kOutput, "FILE",
+               "result file (HDF5), required; replaced if it exists"},
+    OptionSpec{"quiet", &SolveOptions::quiet, Kind::flag, kOutput, "", "print nothing unless there is an error"},
+};
+
+// Options that exclude each other. A key given on the command line makes the
+// config file's keys of the *other* alternatives of its group be ignored, so
+// that e.g. `--approach 1e-6` can override a file that sets `force`.
+const std::vector<std::vector<std::vector<std::string_view>>> kAlternatives{
+    {{"force"}, {"mean-pressure"}, {"approach"}},
+    {{"E-star"}, {"E1", "nu1", "E2", "nu2"}},
+    {{"height-map", "dataset", "dx", "dy"}, {"geometry", "radius", "wavelength", "amplitude", "grid", "size"}},
+};
+
+const OptionSpec* find_spec(std::string_view key) {
+  for (const OptionSpec& spec : kOptions) {
+    if (spec.key == key) return &spec;
+  }
+  return nullptr;
+}
+
+bool is_set(const SolveOptions& options, const OptionSpec& spec) {
+  return std::visit(
+      [&](auto member) -> bool {
+        if constexpr (std::is_same_v<decltype(member), bool SolveOptions::*>) {
+          return options.*member;
+        } else {
+          return (options.*member).has_value();
+        }
+      },
+      spec.field);
+}
+
+bool excluded_by(std::string_view key, const std::set<std::string, std::less<>>& given) {
+  for (const auto& group : kAlternatives) {
+    for (std::size_t a = 0; a < group.size(); ++a) {
+      if (std::find(group[a].begin(), group[a].end(), key) == group[a].end()) continue;
+      for (std::size_t b = 0; b < group.size(); ++b) {
+        for (std::string_view other : group[b]) {
+          if (b != a && given.contains(other)) return true;
+        }
+      }
+    }
+  }
+  return false;
+}
+
+// Stores a command-line value after converting it to the option's type.
+void set_from_text(SolveOptions& options, const OptionSpec& spec, const std::string& text) {
+  options.text.insert_or_assign(std::string(spec.key), text);
+  const std::string what = options.describe(spec.key);
+  switch (spec.kind) {
+    case Kind::number:
+      options.*std::get<std::optional<double> SolveOptions::*>(spec.field) = parse_number(text, what);
+      break;
+    case Kind::integer:
+      options.*std::get<std::optional<long long> SolveOptions::*>(spec.field) = parse_integer(text, what);
+      break;
+    case Kind::text:
+    case Kind::path:
+    case Kind::dimensions:
+      options.*std::get<std::optional<std::string> SolveOptions::*>(spec.field) = text;
+      break;
+    case Kind::flag:
+      options.*std::get<bool SolveOptions::*>(spec.field) = true;
+      break;
+  }
+}
+
+std::string_view toml_type_name(const toml::node& node) {
+  switch (node.type()) {
+    case toml::node_type::string:
+      return "a string";
+    case toml::node_type::integer:
+      return "an integer";
+    case toml::node_type::floating_point:
+      return "a float";
+    case toml::node_type::boolean:
+      return "a boolean";
+    case toml::node_type::table:
+      return "a table";
+    case toml::node_type::array:
+      return "an array";
+    default:
+      return "a date or time";
+  }
+}
+
+// A config value as it would be written in the file, for error messages.
+std::string toml_text(const toml::node& node) {
+  if (node.is_string()) return fmt::format("\"{}\"", *node.value<std::string>());
+  if (node.is_integer()) return fmt::format("{}", *node.value<long long>());
+  if (node.is_floating_point()) return fmt::format("{}", *node.value<double>());
+  if (node.is_boolean()) return *node.value<bool>() ? "true" : "false";
+  return std::string(toml_type_name(node));
+}
+
+// Stores a config file value after checking its TOML type.
+void set_from_toml(SolveOptions& options, const OptionSpec& spec, const toml::node& node,
+                   const std::filesystem::path& file) {
+  const auto wrong_type = [&](std::string_view expected) {
+    return InputError(fmt::format("key '{}' in config file {} must be {} (got {})", spec.key, file.string(), expected,
+                                  toml_type_name(node)));
+  };
+  switch (spec.kind) {
+    case Kind::number: {
+      if (!node.is_number()) throw wrong_type("a number");
+      options.*std::get<std::optional<double> SolveOptions::*>(spec.field) = *node.value<double>();
+      break;
+    }
+    case Kind::integer: {
+      if (!node.is_integer()) throw wrong_type("an integer");
+      options.*std::get<std::optional<long long> SolveOptions::*>(spec.field) = *node.value<long long>();
+      break;
+    }
+    case Kind::text:
+    case Kind::path: {
+      if (!node.is_string()) throw wrong_type("a string");
+      std::string text = *node.value<std::string>();
+      const std::filesystem::path relative_to = file.parent_path();
+      if (spec.kind == Kind::path && !text.empty() && std::filesystem::path(text).is_relative() &&
+          !relative_to.empty()) {
+        text = (relative_to / text).string();
+      }
+      options.*std::get<std::optional<std::string> SolveOptions::*>(spec.field) = text;
+      break;
+    }
+    case Kind::dimensions: {
+      std::string text;
+      if (node.is_string()) {
+        text = *node.value<std::string>();
+      } else if (node.is_integer()) {
+        text = fmt::format("{}", *node.value<long long>());
+      } else if (node.is_floating_point()) {
+        text = fmt::format("{}", *node.value<double>());  // shortest form that reads back exactly
+      } else {
+        throw wrong_type("a number or a string such as \"256x256\"");
+      }
+      options.*std::get<std::optional<std::string> SolveOptions::*>(spec.field) = text;
+      break;
+    }
+    case Kind::flag: {
+      if (!node.is_boolean()) throw wrong_type("true or false");
+      options.*std::get<bool SolveOptions::*>(spec.field) = *node.value<bool>();
+      break;
+    }
+  }
+}
+
+// "E_star" -> "E-star": the spellings people try first for a key that exists.
+std::string unknown_key_message(std::string_view key, const std::filesystem::path& file) {
+  std::string message = fmt::format("unknown key '{}' in config file {}", key, file.string());
+  if (key == "config") {
+    return message + " (a config file cannot name another one)";
+  }
+  for (const OptionSpec& spec : kOptions) {
+    if (spec.key.size() != key.size()) continue;
+    bool similar = true;
+    for (std::size_t k = 0; k < key.size() && similar; ++k) {
+      const auto fold = [](char c) {
+        c = c == '_' ? '-' : c;
+        return (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c;
+      };
+      similar = fold(key[k]) == fold(spec.key[k]);
+    }
+    if (similar) return message + fmt::format(" (did you mean '{}'?)", spec.key);
+  }
+  return message + " (the keys are the long option names of 'halfspace solve' without '--')";
+}
+
+std::string read_text_file(const std::filesystem::path& path) {
+  std::error_code error;
+  if (!std::filesystem::exists(path, error)) {
+    throw FileError(fmt::format("config file {} does not exist", path.string()));
+  }
+  if (std::filesystem::is_directory(path, error)) {
+    throw FileError(fmt::format("config file {} is a directory", path.string()));
+  }
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in) {
+    throw FileError(fmt::format("config file {} cannot be read", path.string()));
+  }
+  return text.str();
+}
+
+}  // namespace
+
+std::string SolveOptions::describe(std::string_view key) const {
+  const auto found = text.find(key);
+  const std::string_view value = found == text.end() ? std::string_view() : std::string_view(found->second);
+  if (from_config.contains(key)) {
+    return fmt::format("{} = {} in {}", key, value, config.value_or(""));
+  }
+  return fmt::format("--{} {}", key, value);
+}
+
+std::string SolveOptions::name(std::string_view key) const {
+  if (from_config.contains(key)) {
+    return fmt::format("{} (in {})", key, config.value_or(""));
+  }
+  return fmt::format("--{}", key);
+}
+
+void add_solve_options(CLI::App& solve) {
+  solve.add_option("--config")
+      ->type_name("FILE")
+      ->description(
+          "TOML file of options: keys are the long option names without '--' "
+          "(e.g. E-star = 1e11); options given on the command line override it");
+  for (const OptionSpec& spec : kOptions) {
+    const std::string flag = fmt::format("--{}", spec.key);
+    CLI::Option* option = spec.kind == Kind::flag ? solve.add_flag(flag) : solve.add_option(flag);
+    option->description(std::string(spec.help));
+    option->group(std::string(spec.group));
+    if (spec.kind != Kind::flag) option->type_name(std::string(spec.value_name));
+  }
+}
+
+SolveOptions solve_options_from_command_line(const CLI::App& solve, const std::vector<std::string>& argv) {
+  SolveOptions options;
+  options.command_line = join_command_line(argv);
+  if (const CLI::Option* config = solve.get_option("--config"); config->count() > 0) {
+    options.config = config->as<std::string>();
+  }
+  for (const OptionSpec& spec : kOptions) {
+    const CLI::Option* option = solve.get_option(fmt::format("--{}", spec.key));
+    if (option->count() == 0) continue;
+    set_from_text(options, spec, spec.kind == Kind::flag ? std::string() : option->as<std::string>());
+  }
+  return options;
+}
+
+void merge_config_file(SolveOptions& options) {
+  if (!options.config) return;
+  const std::filesystem::path file = *options.config;
+  options.config_text = read_text_file(file);
+
+  toml::table table;
+  try {
+    table = toml::parse(options.config_text, file.string());
+  } catch (const toml::parse_error& error) {
+    throw InputError(fmt::format("config file {} is not valid TOML: {} (line {}, column {})", file.string(),
+                                 error.description(), error.source().begin.line, error.source().begin.column));
+  }
+
+  std::set<std::string, std::less<>> given;
+  for (const OptionSpec& spec : kOptions) {
+    if (is_set(options, spec)) given.emplace(spec.key);
+  }
+  for (auto&& [key, node] : table) {
+    const OptionSpec* spec = find_spec(key.str());
+    if (spec == nullptr) throw InputError(unknown_key_message(key.str(), file));
+    if (given.contains(spec->key) || excluded_by(spec->key, given)) continue;
+    set_from_toml(options, *spec, node, file);
+    options.from_config.emplace(spec->key);
+    options.text.insert_or_assign(std::string(spec->key), toml_text(node));
+  }
+}
+
+}  // namespace halfspace::app

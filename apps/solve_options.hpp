@@ -1,0 +1,81 @@
+// The options of `halfspace solve` as given, before validation: registered
+// with CLI11, read from the command line, and merged with a TOML config file
+// whose keys are the long flag names without the leading dashes.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace halfspace::app {
+
+// Everything `halfspace solve` accepts. An empty optional was given neither on
+// the command line nor in the config file; defaults are applied later, in
+// make_solve_setup, so that "not given" stays distinguishable from "default".
+struct SolveOptions {
+  // Surface: a height map file, or a built-in geometry.
+  std::optional<std::string> height_map;
+  std::optional<std::string> dataset;
+  std::optional<double> dx;
+  std::optional<double> dy;
+  std::optional<std::string> geometry;
+  std::optional<double> radius;
+  std::optional<double> wavelength;
+  std::optional<double> amplitude;
+  // Grid of a built-in geometry.
+  std::optional<std::string> grid;
+  std::optional<std::string> size;
+  std::optional<std::string> boundary;
+  // Material: four constants, or E* directly.
+  std::optional<double> e1;
+  std::optional<double> nu1;
+  std::optional<double> e2;
+  std::optional<double> nu2;
+  std::optional<double> e_star;
+  // Load: exactly one.
+  std::optional<double> force;
+  std::optional<double> mean_pressure;
+  std::optional<double> approach;
+  // Solver.
+  std::optional<double> tol;
+  std::optional<long long> max_iter;
+  std::optional<long long> threads;
+  std::optional<std::string> fft_planning;
+  // Output.
+  std::optional<std::string> output;
+  bool quiet = false;
+
+  // Provenance, recorded in the output file.
+  std::optional<std::string> config;                     // path of the TOML file, if any
+  std::string config_text;                               // its contents
+  std::string command_line;                              // argv joined and shell-quoted
+  std::set<std::string, std::less<>> from_config;        // keys whose value came from the file
+  std::map<std::string, std::string, std::less<>> text;  // every given value as written
+
+  // A given setting and its value as the user wrote it, for error messages:
+  // "--force -1" from the command line, "force = -1 in run.toml" from a file.
+  std::string describe(std::string_view key) const;
+  // The option by itself: "--force", or "force (in run.toml)".
+  std::string name(std::string_view key) const;
+};
+
+// Registers every option of `solve` (grouped as in --help) with CLI11.
+void add_solve_options(CLI::App& solve);
+
+// Reads the options given on the command line after `solve` parsed it.
+// Throws InputError naming the flag when a value is not of its type.
+SolveOptions solve_options_from_command_line(const CLI::App& solve, const std::vector<std::string>& argv);
+
+// If options.config is set, reads that TOML file and fills every option the
+// command line left unset. A command-line option also discards the file's
+// keys of the alternatives it excludes (e.g. --approach drops the file's
+// force). Throws FileError if the file cannot be read and InputError for a
+// TOML syntax error, an unknown key or a value of the wrong type, naming the
+// key and the file.
+void merge_config_file(SolveOptions& options);
+
+}  // namespace halfspace::app

@@ -1,0 +1,40 @@
+// Validation of `halfspace solve` options into library objects: every input
+// error is found here, before anything is solved or written.
+#pragma once
+
+#include <Eigen/Core>
+#include <filesystem>
+#include <string>
+
+#include "halfspace/fft/fft_planning.hpp"
+#include "halfspace/grid.hpp"
+#include "halfspace/solvers/loading.hpp"
+#include "halfspace/solvers/polonsky_keer.hpp"
+#include "solve_options.hpp"
+
+namespace halfspace::app {
+
+// A fully checked solve: the surface on its grid, material, load, solver
+// settings and where the result goes.
+struct SolveSetup {
+  Grid grid;
+  Eigen::ArrayXd heights;     // m, (ny, nx) row-major
+  std::string height_source;  // "file.h5:/height" or "sphere (radius = 0.01 m)"
+  double e_star = 0.0;        // Pa
+  Loading loading;
+  solvers::PolonskyKeerOptions solver;
+  int threads = 1;
+  FftPlanning fft_planning = FftPlanning::estimate;
+  std::filesystem::path output;
+  bool quiet = false;
+  std::string command_line;
+  std::string config_text;
+};
+
+// Applies the defaults, checks every option and their combinations, builds
+// the surface (reading the height map file, if any) and checks that the
+// output file can be created. Throws InputError (FileError for files) with a
+// one-line message naming the option, its value and the rule it broke.
+SolveSetup make_solve_setup(const SolveOptions& options);
+
+}  // namespace halfspace::app

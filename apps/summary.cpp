@@ -1,0 +1,90 @@
+// Formatting of the solve summary: a label column and values with their units
+// (force is N on a 2D grid and N/m on a 1D one, as everywhere in halfspace).
+#include "summary.hpp"
+
+#include <fmt/format.h>
+
+#include <string>
+
+#include "halfspace/version.hpp"
+
+namespace halfspace::app {
+namespace {
+
+void row(std::FILE* out, std::string_view label, const std::string& value) {
+  fmt::print(out, "  {:<17} {}\n", label, value);
+}
+
+std::string_view force_unit(const Grid& grid) {
+  return grid.dimension() == 1 ? "N/m" : "N";
+}
+
+std::string load_text(const SolveSetup& setup) {
+  switch (setup.loading.mode) {
+    case ControlMode::force:
+      return fmt::format("force {:.6g} {}", setup.loading.value, force_unit(setup.grid));
+    case ControlMode::mean_pressure:
+      return fmt::format("mean pressure {:.6g} Pa", setup.loading.value);
+    case ControlMode::approach:
+      return fmt::format("approach {:.6g} m", setup.loading.value);
+  }
+  return "";
+}
+
+std::string grid_text(const Grid& grid) {
+  if (grid.dimension() == 1) {
+    return fmt::format("{} cells (1D), dx = {:.6g} m, {} boundary", grid.nx(), grid.dx(), to_string(grid.boundary()));
+  }
+  return fmt::format("{} cells (2D), dx = {:.6g} m, dy = {:.6g} m, {} boundary", grid.shape_string(), grid.dx(),
+                     grid.dy(), to_string(grid.boundary()));
+}
+
+// Why the solve stopped, in a few words: the solver's message repeats the
+// residual for an iteration limit, so it is only shown for a breakdown.
+std::string stop_reason(const SolveResult& result) {
+  switch (result.status) {
+    case SolveStatus::converged:
+      return "converged";
+    case SolveStatus::iteration_limit:
+      return "iteration limit reached";
+    case SolveStatus::breakdown:
+      return result.message.empty() ? std::string("breakdown") : fmt::format("breakdown ({})", result.message);
+  }
+  return std::string(to_string(result.status));
+}
+
+}  // namespace
+
+void print_summary(std::FILE* out, const SolveSetup& setup, const SolveResult& result) {
+  const Grid& grid = setup.grid;
+  const auto contact_cells = static_cast<long long>(result.contact_fraction * static_cast<double>(grid.size()) + 0.5);
+  fmt::print(out, "halfspace {} ({}) solve\n", kVersion, kGitHash);
+  row(out, "surface", setup.height_source);
+  row(out, "grid", grid_text(grid));
+  row(out, "E*", fmt::format("{:.6g} Pa", setup.e_star));
+  row(out, "load", load_text(setup));
+  row(out, "solver",
+      fmt::format("{}, {} thread{}, FFT planning {}", result.solver, setup.threads, setup.threads == 1 ? "" : "s",
+                  to_string(setup.fft_planning)));
+  row(out, "status", stop_reason(result));
+  row(out, "iterations", fmt::format("{}", result.iterations));
+  row(out, "residual", fmt::format("{:.3e} (tolerance {:.3e})", result.residual, result.tolerance));
+  row(out, "total force", fmt::format("{:.6g} {}", result.total_force, force_unit(grid)));
+  row(out, "mean pressure", fmt::format("{:.6g} Pa", result.mean_pressure));
+  row(out, "max pressure", fmt::format("{:.6g} Pa", result.max_pressure));
+  row(out, "approach", fmt::format("{:.6g} m", result.approach));
+  row(out, "contact fraction",
+      fmt::format("{:.6g} ({} of {} cells)", result.contact_fraction, contact_cells, grid.size()));
+  row(out, "solve time", fmt::format("{:.3f} s", result.wall_seconds));
+  row(out, "output", setup.output.string());
+}
+
+std::string non_convergence_message(const SolveSetup& setup, const SolveResult& result) {
+  const char* comparison = result.residual > result.tolerance ? ">" : "vs";
+  return fmt::format(
+      "error: solver did not converge: {} after {} iterations (residual {:.3e} {} tolerance {:.3e}); "
+      "result written to {}",
+      stop_reason(result), result.iterations, result.residual, comparison, result.tolerance, setup.output.string());
+}
+
+}  // namespace halfspace::app

@@ -1,0 +1,125 @@
+// Strict text-to-value parsing for the command line: a value must be consumed
+// entirely ("10N" or "1e-3m" is an error, not 10 or 1e-3), so typos never pass.
+#include "value_parsing.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <system_error>
+
+#include "halfspace/error.hpp"
+
+namespace halfspace::app {
+namespace {
+
+// std::from_chars rejects a leading '+', which people write for exponents'
+// mantissas ("+1e3") often enough to accept it.
+std::string_view without_plus(std::string_view text) {
+  return (text.size() > 1 && text.front() == '+') ? text.substr(1) : text;
+}
+
+// Splits "AxB" at 'x' or 'X'; a single part when there is none.
+std::vector<std::string_view> split_dimensions(std::string_view text) {
+  std::vector<std::string_view> parts;
+  std::size_t start = 0;
+  for (std::size_t k = 0; k <= text.size(); ++k) {
+    if (k == text.size() || text[k] == 'x' || text[k] == 'X') {
+      parts.push_back(text.substr(start, k - start));
+      start = k + 1;
+    }
+  }
+  return parts;
+}
+
+bool is_shell_safe(char c) {
+  const bool alnum = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9');
+  return alnum || std::string_view("@%+=:,./_-").find(c) != std::string_view::npos;
+}
+
+}  // namespace
+
+double parse_number(std::string_view text, std::string_view what) {
+  const std::string_view digits = without_plus(text);
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+  if (digits.empty() || error != std::errc() || end != digits.data() + digits.size() || !std::isfinite(value)) {
+    throw InputError(fmt::format("{} is invalid: expected a finite number", what));
+  }
+  return value;
+}
+
+long long parse_integer(std::string_view text, std::string_view what) {
+  const std::string_view digits = without_plus(text);
+  long long value = 0;
+  const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+  if (digits.empty() || error != std::errc() || end != digits.data() + digits.size()) {
+    throw InputError(fmt::format("{} is invalid: expected a whole number", what));
+  }
+  return value;
+}
+
+std::vector<std::size_t> parse_grid_shape(std::string_view text, std::string_view what) {
+  const std::vector<std::string_view> parts = split_dimensions(text);
+  std::vector<std::size_t> counts;
+  for (std::string_view part : parts) {
+    std::size_t n = 0;
+    const auto [end, error] = std::from_chars(part.data(), part.data() + part.size(), n);
+    if (parts.size() > 2 || part.empty() || error != std::errc() || end != part.data() + part.size()) {
+      throw InputError(
+          fmt::format("{} is invalid: expected N cells (1D) or NXxNY cells (2D), e.g. 256 or 256x128", what));
+    }
+    counts.push_back(n);
+  }
+  for (std::size_t axis = 0; axis < counts.size(); ++axis) {
+    if (counts[axis] < 2) {
+      const char* name = counts.size() == 1 ? "n" : (axis == 0 ? "nx" : "ny");
+      throw InputError(
+          fmt::format("{} is invalid: need at least 2 cells along each axis (got {} = {})", what, name, counts[axis]));
+    }
+  }
+  return counts;
+}
+
+std::vector<double> parse_domain_size(std::string_view text, std::string_view what) {
+  const std::vector<std::string_view> parts = split_dimensions(text);
+  if (parts.size() > 2) {
+    throw InputError(fmt::format("{} is invalid: expected L or LXxLY in m, e.g. 1e-3 or 2e-3x1e-3", what));
+  }
+  std::vector<double> lengths;
+  for (std::string_view part : parts) {
+    const double length = parse_number(part, what);
+    if (!(length > 0.0)) {
+      throw InputError(fmt::format("{} is invalid: the domain size must be positive (m)", what));
+    }
+    lengths.push_back(length);
+  }
+  return lengths;
+}
+
+std::string join_command_line(const std::vector<std::string>& arguments) {
+  std::string line;
+  for (const std::string& argument : arguments) {
+    if (!line.empty()) line += ' ';
+    const bool safe = !argument.empty() && std::all_of(argument.begin(), argument.end(), is_shell_safe);
+    if (safe) {
+      line += argument;
+      continue;
+    }
+    // Single quotes keep everything literal; a quote itself is closed, escaped
+    // and reopened: ' -> '\''.
+    line += '\'';
+    for (char c : argument) {
+      if (c == '\'') {
+        line += "'\\''";
+      } else {
+        line += c;
+      }
+    }
+    line += '\'';
+  }
+  return line;
+}
+
+}  // namespace halfspace::app

@@ -1,0 +1,32 @@
+// Strict parsers for command-line values (numbers, grid shapes, domain sizes)
+// and shell quoting of the command line recorded in output files.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace halfspace::app {
+
+// The whole of `text` as a finite double ("1e-3", "+2", "0.5"). Throws
+// InputError "`what` is not a finite number" otherwise; `what` names the
+// setting, e.g. "--force abc".
+double parse_number(std::string_view text, std::string_view what);
+
+// The whole of `text` as a decimal integer. Throws InputError otherwise.
+long long parse_integer(std::string_view text, std::string_view what);
+
+// A grid shape "N" (1D) or "NXxNY" (2D), at least 2 cells per axis. Returns
+// one or two counts. Throws InputError naming `what` and saying why otherwise.
+std::vector<std::size_t> parse_grid_shape(std::string_view text, std::string_view what);
+
+// A domain size "L" or "LXxLY" (m), each positive and finite. Returns one or
+// two lengths. Throws InputError naming `what` otherwise.
+std::vector<double> parse_domain_size(std::string_view text, std::string_view what);
+
+// `arguments` joined by spaces, each quoted for a POSIX shell where needed,
+// so that the recorded command line can be pasted back into a terminal.
+std::string join_command_line(const std::vector<std::string>& arguments);
+
+}  // namespace halfspace::app

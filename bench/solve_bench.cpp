@@ -1,0 +1,241 @@
+// Whole Polonsky-Keer solves at tolerance 1e-10 on the FFT operator: a Hertz
+// sphere on free grids and a self-affine rough surface on periodic grids, with
+// 1 and 2 threads; counters give iterations and the cost per operator application.
+#include <fftw3.h>
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <complex>
+#include <cstddef>
+#include <cstdint>
+#include <exception>
+#include <memory>
+#include <numbers>
+#include <random>
+#include <span>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "halfspace/geometry/builtin_surface.hpp"
+#include "halfspace/grid.hpp"
+#include "halfspace/operators/fft_influence_operator.hpp"
+#include "halfspace/solvers/polonsky_keer.hpp"
+#include "halfspace/threads.hpp"
+
+namespace halfspace {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+constexpr double kEStar = 1.1e11;  // Pa, steel on steel
+constexpr double kTolerance = 1e-10;
+
+// Hertz: the sphere of the validation tests, on a square three contact radii wide.
+constexpr double kSphereRadius = 0.01;  // m
+constexpr double kForce = 10.0;         // N
+
+// Rough surface: one fixed surface, sampled at every grid size, so the three
+// sizes are refinements of the same problem. Its spectrum is self-affine,
+// C(q) ~ q^(-2(1 + H)), between the box mode 2 pi / L and kCutoffModes box
+// modes (4 cells per shortest wavelength on the 256^2 grid, 16 on 1024^2).
+constexpr double kHurst = 0.8;
+constexpr double kBoxSize = 1e-3;     // m
+constexpr double kRmsHeight = 1e-6;   // m
+constexpr int kCutoffModes = 64;
+constexpr std::uint64_t kSurfaceSeed = 2024;
+// Mean pressure as a fraction of E* times the rms slope: by the linear law
+// A/A0 ~ 2 p / (E* h'_rms) this puts about 10% of the surface in contact.
+constexpr double kReducedPressure = 0.05;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+struct RoughSurface {
+  Eigen::ArrayXd heights;  // m, (n, n) row-major
+  double rms_slope;        // sqrt(<|grad h|^2>)
+};
+
+// Fourier filtering of Gaussian white noise. The coefficients are drawn in an
+// order that does not depend on n, then placed into the n x (n/2 + 1) half
+// spectrum and brought to real space by FFTW's c2r, which sums
+// h(x) = sum_k c_k exp(i q_k . x) with the kx < 0 half implied by symmetry.
+RoughSurface self_affine_surface(std::size_t n) {
+  struct Mode {
+    int kx, ky;
+    std::complex<double> c;
+  };
+  std::vector<Mode> modes;
+  std::mt19937_64 random(kSurfaceSeed);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  double mean_square = 0.0;        // sum |c|^2 over the full spectrum
+  double mean_square_slope = 0.0;  // sum |c|^2 q^2
+  const double q0 = 2.0 * std::numbers::pi / kBoxSize;
+  for (int kx = 0; kx <= kCutoffModes; ++kx) {
+    for (int ky = -kCutoffModes; ky <= kCutoffModes; ++ky) {
+      const int k2 = kx * kx + ky * ky;
+      // The kx = 0 column holds both ky and -ky: draw ky > 0, mirror below.
+      if (k2 == 0 || k2 > kCutoffModes * kCutoffModes || (kx == 0 && ky < 0)) continue;
+      const double q = q0 * std::sqrt(static_cast<double>(k2));
+      const double re = normal(random);
+      const double im = normal(random);
+      const std::complex<double> c = std::pow(q, -(1.0 + kHurst)) * std::complex<double>(re, im) / std::sqrt(2.0);
+      modes.push_back({kx, ky, c});
+      // Each stored mode stands for itself and its conjugate partner.
+      mean_square += 2.0 * std::norm(c);
+      mean_square_slope += 2.0 * std::norm(c) * q * q;
+    }
+  }
+
+  const std::size_t half = n / 2 + 1;
+  fftw_complex* spectrum = fftw_alloc_complex(n * half);
+  std::fill_n(&spectrum[0][0], 2 * n * half, 0.0);
+  const auto row = [n](int ky) { return static_cast<std::size_t>((ky + static_cast<int>(n)) % static_cast<int>(n)); };
+  for (const Mode& m : modes) {
+    const auto kx = static_cast<std::size_t>(m.kx);
+    spectrum[row(m.ky) * half + kx][0] = m.c.real();
+    spectrum[row(m.ky) * half + kx][1] = m.c.imag();
+    if (m.kx == 0) {
+      spectrum[row(-m.ky) * half][0] = m.c.real();
+      spectrum[row(-m.ky) * half][1] = -m.c.imag();
+    }
+  }
+  RoughSurface surface{Eigen::ArrayXd(static_cast<Eigen::Index>(n * n)), 0.0};
+  fftw_plan_with_nthreads(1);
+  const int ni = static_cast<int>(n);
+  fftw_plan plan = fftw_plan_dft_c2r_2d(ni, ni, spectrum, surface.heights.data(), FFTW_ESTIMATE);
+  fftw_execute(plan);
+  fftw_destroy_plan(plan);
+  fftw_free(spectrum);
+
+  // Parseval: the grid mean of h^2 is mean_square, whatever n (all modes lie
+  // below the Nyquist frequency of the smallest grid).
+  const double scale = kRmsHeight / std::sqrt(mean_square);
+  surface.heights *= scale;
+  surface.rms_slope = scale * std::sqrt(mean_square_slope);
+  return surface;
+}
+
+struct SolveCase {
+  std::string name;
+  bool rough;  // rough periodic surface, else Hertz sphere on a free grid
+};
+
+// Kept between Google Benchmark's calls of one benchmark: the operator, the
+// solver with its workspace, and the initial gap. One slot at a time.
+struct SolveSetup {
+  std::tuple<std::string, std::size_t, int> key;
+  std::unique_ptr<Grid> grid;
+  std::unique_ptr<FftInfluenceOperator> op;
+  std::unique_ptr<solvers::PolonskyKeer> solver;
+  Eigen::ArrayXd initial_gap;
+  Loading loading;
+};
+
+SolveSetup& solve_setup(const SolveCase& solve_case, std::size_t n, int threads) {
+  static std::unique_ptr<SolveSetup> slot;
+  const auto key = std::make_tuple(solve_case.name, n, threads);
+  if (slot && slot->key == key) return *slot;
+  slot.reset();
+  auto setup = std::make_unique<SolveSetup>();
+  setup->key = key;
+  set_threads(threads);  // before the operator makes its plans
+  if (solve_case.rough) {
+    const double dx = kBoxSize / static_cast<double>(n);
+    setup->grid = std::make_unique<Grid>(Grid::plane(n, n, dx, dx, Boundary::periodic));
+    const RoughSurface surface = self_affine_surface(n);
+    setup->initial_gap = geometry::initial_gap_from_heights(surface.heights);
+    setup->loading = Loading::mean_pressure(kReducedPressure * kEStar * surface.rms_slope);
+  } else {
+    const double contact_radius = std::cbrt(3.0 * kForce * kSphereRadius / (4.0 * kEStar));
+    const double dx = 3.0 * contact_radius / static_cast<double>(n);
+    setup->grid = std::make_unique<Grid>(Grid::plane(n, n, dx, dx, Boundary::free));
+    geometry::SurfaceSpec sphere;
+    sphere.shape = geometry::SurfaceShape::sphere;
+    sphere.radius = kSphereRadius;
+    setup->initial_gap = geometry::initial_gap_from_heights(geometry::make_surface_heights(*setup->grid, sphere));
+    setup->loading = Loading::force(kForce);
+  }
+  setup->op = std::make_unique<FftInfluenceOperator>(*setup->grid, kEStar);
+  solvers::PolonskyKeerOptions options;
+  options.tolerance = kTolerance;
+  setup->solver = std::make_unique<solvers::PolonskyKeer>(*setup->op, options);
+  slot = std::move(setup);
+  return *slot;
+}
+
+// Mean wall seconds of op.apply alone on this grid, at least 3 runs and 0.2 s,
+// to split a solve's time into transforms and the solver's own vector work.
+double seconds_per_apply(FftInfluenceOperator& op, std::span<const double> pressure, std::span<double> out) {
+  const auto start = Clock::now();
+  int runs = 0;
+  double elapsed = 0.0;
+  while (runs < 3 || elapsed < 0.2) {
+    op.apply(pressure, out);
+    ++runs;
+    elapsed = seconds_since(start);
+  }
+  return elapsed / runs;
+}
+
+void solve(benchmark::State& state, const SolveCase& solve_case, std::size_t n) {
+  const int threads = static_cast<int>(state.range(0));
+  SolveSetup* setup = nullptr;
+  try {
+    setup = &solve_setup(solve_case, n, threads);
+  } catch (const std::exception& e) {
+    state.SkipWithError(e.what());
+    return;
+  }
+  set_threads(threads);
+  const std::span<const double> gap(setup->initial_gap.data(), setup->grid->size());
+  SolveResult result;
+  const auto start = Clock::now();
+  for (auto _ : state) {
+    result = setup->solver->solve(gap, setup->loading);
+    benchmark::DoNotOptimize(result.pressure.data());
+  }
+  const double solve_seconds = seconds_since(start) / static_cast<double>(state.iterations());
+
+  std::vector<double> scratch(setup->grid->size());
+  const double apply_seconds =
+      seconds_per_apply(*setup->op, {result.pressure.data(), setup->grid->size()}, scratch);
+  const double applications = result.operator_applications;
+  state.counters["threads"] = threads;
+  state.counters["iterations"] = result.iterations;
+  state.counters["operator_applications"] = applications;
+  state.counters["s_per_application"] = solve_seconds / applications;
+  state.counters["apply_alone_s"] = apply_seconds;
+  // Share of the solve spent inside op.apply; the rest is the solver's own
+  // elementwise loops and reductions.
+  state.counters["operator_share"] = applications * apply_seconds / solve_seconds;
+  state.counters["converged"] = result.converged() ? 1.0 : 0.0;
+  state.counters["residual"] = result.residual;
+  state.counters["contact_fraction"] = result.contact_fraction;
+  if (!result.converged()) state.SetLabel(result.message);
+}
+
+const bool kRegistered = [] {
+  const SolveCase hertz{"hertz_free_2d", false};
+  const SolveCase rough{"rough_periodic_2d", true};
+  const auto add = [](const SolveCase& c, std::size_t n) {
+    benchmark::RegisterBenchmark(("BM_Solve/" + c.name + "/" + std::to_string(n)).c_str(), solve, c, n)
+        ->ArgName("threads")
+        ->Arg(1)
+        ->Arg(2)
+        ->UseRealTime()
+        ->Unit(benchmark::kMillisecond);
+  };
+  for (std::size_t n : {128, 256, 512}) add(hertz, n);
+  for (std::size_t n : {256, 512, 1024}) add(rough, n);
+  return true;
+}();
+
+}  // namespace
+}  // namespace halfspace

@@ -1,0 +1,66 @@
+// A real-to-complex / complex-to-real FFTW plan pair (RAII) over buffers it
+// owns: the one place the library touches FFTW's planner.
+#pragma once
+
+#include <complex>
+#include <cstddef>
+#include <span>
+
+#include "halfspace/fft/fft_planning.hpp"
+
+struct fftw_plan_s;  // FFTW's opaque plan type, so that <fftw3.h> stays private
+
+namespace halfspace {
+
+// Forward (r2c) and backward (c2r) transforms of a 1D (n) or 2D (rows, cols,
+// row-major) real array. The buffers are FFTW-aligned and owned here; the plans
+// are made once, under a process-wide lock (FFTW's planner is not thread-safe),
+// with the thread count in force (set_threads). Executing is thread-safe for
+// distinct objects. Transforms are unnormalised: backward(forward(x)) = N x
+// with N = rows * cols.
+class RealFft {
+ public:
+  // 1D transform of n real values; the spectrum has n/2 + 1 entries.
+  // Throws InputError if a length is 0 or exceeds INT_MAX (FFTW's limit).
+  RealFft(std::size_t n, FftPlanning planning);
+  // 2D transform of a (rows, cols) real array; the spectrum is (rows, cols/2 + 1).
+  RealFft(std::size_t rows, std::size_t cols, FftPlanning planning);
+  ~RealFft();
+  RealFft(RealFft&& other) noexcept;
+  RealFft& operator=(RealFft&& other) noexcept;
+  RealFft(const RealFft&) = delete;
+  RealFft& operator=(const RealFft&) = delete;
+
+  std::size_t rows() const { return rows_; }
+  std::size_t cols() const { return cols_; }
+  std::size_t real_size() const { return rows_ * cols_; }
+  std::size_t spectrum_cols() const { return cols_ / 2 + 1; }
+  std::size_t spectrum_size() const { return rows_ * spectrum_cols(); }
+
+  // Read by forward() and never modified by it, so zero padding written once
+  // stays zero. All buffers are zero after construction.
+  std::span<double> input() { return {input_, real_size()}; }
+  // Written by forward(), read (and destroyed) by backward(); (rows, cols/2 + 1).
+  std::span<std::complex<double>> spectrum() { return {spectrum_, spectrum_size()}; }
+  // Written by backward().
+  std::span<double> output() { return {output_, real_size()}; }
+
+  // spectrum = DFT(input), sum_x input(x) exp(-i q x).
+  void forward();
+  // output = inverse DFT(spectrum) without 1/N; overwrites the spectrum.
+  void backward();
+
+ private:
+  void make_plans(int rank, const int* dims, FftPlanning planning);
+  void release() noexcept;
+
+  std::size_t rows_ = 0;
+  std::size_t cols_ = 0;
+  double* input_ = nullptr;
+  std::complex<double>* spectrum_ = nullptr;
+  double* output_ = nullptr;
+  fftw_plan_s* forward_plan_ = nullptr;
+  fftw_plan_s* backward_plan_ = nullptr;
+};
+
+}  // namespace halfspace

@@ -1,0 +1,162 @@
+// RAII plan pair for real FFTs. FFTW's planner (and plan destruction) is not
+// thread-safe, so every call into it here is serialised by one mutex; only
+// fftw_execute runs unlocked.
+#include "halfspace/fft/real_fft.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <climits>
+#include <mutex>
+#include <new>
+#include <stdexcept>
+#include <utility>
+
+#include <fftw3.h>
+#include <fmt/format.h>
+
+#include "halfspace/error.hpp"
+#include "halfspace/threads.hpp"
+
+namespace halfspace {
+namespace {
+
+std::mutex& planner_mutex() {
+  static std::mutex mutex;
+  return mutex;
+}
+
+// Called with the planner lock held: FFTW's thread support is set up once.
+void init_fftw_threads() {
+  static bool initialised = false;
+  if (!initialised) {
+    if (fftw_init_threads() == 0) throw std::runtime_error("FFTW thread support could not be initialised");
+    initialised = true;
+  }
+}
+
+unsigned planner_flags(FftPlanning planning) {
+  switch (planning) {
+    case FftPlanning::measure:
+      return FFTW_MEASURE;
+    case FftPlanning::patient:
+      return FFTW_PATIENT;
+    case FftPlanning::estimate:
+      break;
+  }
+  return FFTW_ESTIMATE;
+}
+
+int checked_extent(std::size_t n) {
+  if (n < 1 || n > static_cast<std::size_t>(INT_MAX)) {
+    throw InputError(fmt::format("FFT length {} is invalid: must be between 1 and {}", n, INT_MAX));
+  }
+  return static_cast<int>(n);
+}
+
+fftw_complex* as_fftw(std::complex<double>* z) {
+  // std::complex<double> is layout-compatible with double[2] ([complex.numbers]),
+  // which is what fftw_complex is; the FFTW manual sanctions this cast.
+  return reinterpret_cast<fftw_complex*>(z);
+}
+
+}  // namespace
+
+RealFft::RealFft(std::size_t n, FftPlanning planning) : rows_(1), cols_(n) {
+  const int dims[1] = {checked_extent(n)};
+  make_plans(1, dims, planning);
+}
+
+RealFft::RealFft(std::size_t rows, std::size_t cols, FftPlanning planning) : rows_(rows), cols_(cols) {
+  const int dims[2] = {checked_extent(rows), checked_extent(cols)};
+  make_plans(2, dims, planning);
+}
+
+RealFft::~RealFft() { release(); }
+
+RealFft::RealFft(RealFft&& other) noexcept
+    : rows_(std::exchange(other.rows_, 0)),
+      cols_(std::exchange(other.cols_, 0)),
+      input_(std::exchange(other.input_, nullptr)),
+      spectrum_(std::exchange(other.spectrum_, nullptr)),
+      output_(std::exchange(other.output_, nullptr)),
+      forward_plan_(std::exchange(other.forward_plan_, nullptr)),
+      backward_plan_(std::exchange(other.backward_plan_, nullptr)) {}
+
+RealFft& RealFft::operator=(RealFft&& other) noexcept {
+  if (this != &other) {
+    release();
+    rows_ = std::exchange(other.rows_, 0);
+    cols_ = std::exchange(other.cols_, 0);
+    input_ = std::exchange(other.input_, nullptr);
+    spectrum_ = std::exchange(other.spectrum_, nullptr);
+    output_ = std::exchange(other.output_, nullptr);
+    forward_plan_ = std::exchange(other.forward_plan_, nullptr);
+    backward_plan_ = std::exchange(other.backward_plan_, nullptr);
+  }
+  return *this;
+}
+
+void RealFft::make_plans(int rank, const int* dims, FftPlanning planning) {
+  bool allocated = false;
+  bool planned = false;
+  {
+    const std::lock_guard<std::mutex> lock(planner_mutex());
+    init_fftw_threads();
+    input_ = fftw_alloc_real(real_size());
+    output_ = fftw_alloc_real(real_size());
+    spectrum_ = reinterpret_cast<std::complex<double>*>(fftw_alloc_complex(spectrum_size()));
+    allocated = input_ != nullptr && output_ != nullptr && spectrum_ != nullptr;
+    if (allocated) {
+      fftw_plan_with_nthreads(threads());
+      const unsigned flags = planner_flags(planning);
+      // Out of place both ways: r2c keeps its input (the zero padding of the
+      // DC-FFT survives every transform); c2r may destroy the spectrum, which
+      // is rewritten by every forward() anyway.
+      forward_plan_ = fftw_plan_dft_r2c(rank, dims, input_, as_fftw(spectrum_), flags | FFTW_PRESERVE_INPUT);
+      backward_plan_ = fftw_plan_dft_c2r(rank, dims, as_fftw(spectrum_), output_, flags | FFTW_DESTROY_INPUT);
+      planned = forward_plan_ != nullptr && backward_plan_ != nullptr;
+    }
+  }
+  if (!allocated) {
+    release();
+    throw std::bad_alloc();
+  }
+  if (!planned) {
+    release();
+    throw std::runtime_error(fmt::format("FFTW could not plan a real FFT of size {}x{}", rows_, cols_));
+  }
+  // Measuring planners run trial transforms over the buffers.
+  std::fill_n(input_, real_size(), 0.0);
+  std::fill_n(output_, real_size(), 0.0);
+  std::fill_n(spectrum_, spectrum_size(), std::complex<double>(0.0, 0.0));
+}
+
+void RealFft::forward() {
+  assert(forward_plan_ != nullptr);
+  fftw_execute(forward_plan_);
+}
+
+void RealFft::backward() {
+  assert(backward_plan_ != nullptr);
+  fftw_execute(backward_plan_);
+}
+
+void RealFft::release() noexcept {
+  if (input_ == nullptr && output_ == nullptr && spectrum_ == nullptr && forward_plan_ == nullptr &&
+      backward_plan_ == nullptr) {
+    return;
+  }
+  const std::lock_guard<std::mutex> lock(planner_mutex());
+  if (forward_plan_ != nullptr) fftw_destroy_plan(forward_plan_);
+  if (backward_plan_ != nullptr) fftw_destroy_plan(backward_plan_);
+  fftw_free(input_);
+  fftw_free(output_);
+  fftw_free(spectrum_);
+  forward_plan_ = nullptr;
+  backward_plan_ = nullptr;
+  input_ = nullptr;
+  output_ = nullptr;
+  spectrum_ = nullptr;
+}
+
+}  // namespace halfspace

@@ -1,0 +1,118 @@
+// The RAII real FFT plan pair against a direct DFT, its normalisation, the
+// input-preserving forward transform the DC-FFT padding relies on, and moves.
+#include "halfspace/fft/real_fft.hpp"
+
+#include <cmath>
+#include <complex>
+#include <numbers>
+#include <random>
+#include <utility>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "halfspace/error.hpp"
+#include "halfspace/threads.hpp"
+
+namespace halfspace {
+namespace {
+
+// FFT against an O(N^2) DFT of O(1) data: rounding grows like eps log N.
+constexpr double kTransformTolerance = 1e-13;
+
+std::vector<double> random_values(std::size_t n, unsigned seed) {
+  std::mt19937_64 engine(seed);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  std::vector<double> values(n);
+  for (double& v : values) v = uniform(engine);
+  return values;
+}
+
+// sum_{r, c} x(r, c) exp(-2 pi i (kr r / rows + kc c / cols)).
+std::complex<double> direct_dft(const std::vector<double>& x, std::size_t rows, std::size_t cols, std::size_t kr,
+                                std::size_t kc) {
+  std::complex<double> sum = 0.0;
+  for (std::size_t r = 0; r < rows; ++r) {
+    for (std::size_t c = 0; c < cols; ++c) {
+      const double phase = 2.0 * std::numbers::pi *
+                           (static_cast<double>((kr * r) % rows) / static_cast<double>(rows) +
+                            static_cast<double>((kc * c) % cols) / static_cast<double>(cols));
+      sum += x[r * cols + c] * std::polar(1.0, -phase);
+    }
+  }
+  return sum;
+}
+
+void expect_forward_matches_dft(RealFft& fft, unsigned seed) {
+  const std::vector<double> x = random_values(fft.real_size(), seed);
+  std::copy(x.begin(), x.end(), fft.input().begin());
+  fft.forward();
+  double worst = 0.0;
+  for (std::size_t kr = 0; kr < fft.rows(); ++kr) {
+    for (std::size_t kc = 0; kc < fft.spectrum_cols(); ++kc) {
+      const auto expected = direct_dft(x, fft.rows(), fft.cols(), kr, kc);
+      worst = std::max(worst, std::abs(fft.spectrum()[kr * fft.spectrum_cols() + kc] - expected));
+    }
+  }
+  EXPECT_LE(worst, kTransformTolerance * static_cast<double>(fft.real_size()))
+      << fft.rows() << "x" << fft.cols() << ": largest error " << worst;
+  // r2c leaves its input alone.
+  for (std::size_t i = 0; i < x.size(); ++i) ASSERT_EQ(fft.input()[i], x[i]) << "input changed at " << i;
+}
+
+TEST(RealFftTest, ForwardMatchesDirectDft1D) {
+  for (const std::size_t n : {1u, 7u, 8u, 30u}) {
+    RealFft fft(n, FftPlanning::estimate);
+    EXPECT_EQ(fft.spectrum_size(), n / 2 + 1);
+    expect_forward_matches_dft(fft, static_cast<unsigned>(n));
+  }
+}
+
+TEST(RealFftTest, ForwardMatchesDirectDft2D) {
+  RealFft odd(5, 7, FftPlanning::estimate);
+  EXPECT_EQ(odd.spectrum_size(), 5u * 4u);
+  expect_forward_matches_dft(odd, 1);
+  RealFft even(6, 8, FftPlanning::estimate);
+  expect_forward_matches_dft(even, 2);
+}
+
+TEST(RealFftTest, BackwardOfForwardIsSizeTimesInput) {
+  RealFft fft(6, 10, FftPlanning::estimate);
+  const std::vector<double> x = random_values(fft.real_size(), 3);
+  std::copy(x.begin(), x.end(), fft.input().begin());
+  fft.forward();
+  fft.backward();
+  const double n = static_cast<double>(fft.real_size());
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    EXPECT_NEAR(fft.output()[i] / n, x[i], kTransformTolerance) << "at " << i;
+  }
+}
+
+TEST(RealFftTest, BuffersStartZeroAfterMeasuring) {
+  // FFTW_MEASURE runs trial transforms in the buffers; they are cleared after.
+  // One thread: measuring threaded plans is slow on a loaded machine.
+  const int original = threads();
+  set_threads(1);
+  RealFft fft(16, 12, FftPlanning::measure);
+  set_threads(original);
+  for (const double v : fft.input()) ASSERT_EQ(v, 0.0);
+  for (const double v : fft.output()) ASSERT_EQ(v, 0.0);
+  for (const std::complex<double> z : fft.spectrum()) ASSERT_EQ(z, std::complex<double>(0.0, 0.0));
+}
+
+TEST(RealFftTest, IsMoveable) {
+  RealFft a(12, FftPlanning::estimate);
+  const double* buffer = a.input().data();
+  RealFft b(std::move(a));
+  EXPECT_EQ(b.input().data(), buffer);
+  EXPECT_EQ(b.real_size(), 12u);
+  RealFft c(4, FftPlanning::estimate);
+  c = std::move(b);
+  EXPECT_EQ(c.input().data(), buffer);
+  expect_forward_matches_dft(c, 4);
+}
+
+TEST(RealFftTest, RejectsEmptySize) { EXPECT_THROW(RealFft(0, FftPlanning::estimate), InputError); }
+
+}  // namespace
+}  // namespace halfspace

@@ -1,0 +1,388 @@
+// Tests of read_hdf5_height_map: the committed fixtures (measured crops and
+// synthetic float32/int16 files made by tests/data/make_io_fixtures.py), files
+// built here with the HDF5 C API, and every rejected input with its message.
+#include "halfspace/io/hdf5_height_map_reader.hpp"
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <hdf5.h>
+
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "halfspace/error.hpp"
+#include "io/hdf5_test_support.hpp"
+
+namespace halfspace::io {
+namespace {
+
+namespace fs = std::filesystem;
+using test::add_double_attribute;
+using test::add_double_dataset;
+using test::create_file;
+using test::TempDir;
+
+const fs::path kDataDir = HALFSPACE_TEST_DATA_DIR;
+const fs::path kTopographyDir = "/work/shared/data/topography";
+
+// Our rms sums in a different order from numpy's pairwise sum, and the di-5
+// heights carry an offset 500x their rms, so cancellation amplifies rounding.
+constexpr double kRmsRelativeTolerance = 1e-10;
+// The topography README quotes Sq to 7 significant digits.
+constexpr double kQuotedSqRelativeTolerance = 1e-6;
+
+double rms_about_mean(const Eigen::ArrayXd& h) {
+  return std::sqrt((h - h.mean()).square().mean());
+}
+
+// The message of the FileError that reading throws; any other exception
+// escapes and fails the test, no exception is reported as a failure.
+std::string read_error(const fs::path& path, const std::string& dataset = "/height") {
+  try {
+    read_hdf5_height_map(path, dataset);
+  } catch (const FileError& error) {
+    return error.what();
+  }
+  ADD_FAILURE() << "reading " << path << " dataset " << dataset << " did not throw FileError";
+  return {};
+}
+
+void expect_contains(const std::string& message, const std::vector<std::string>& parts) {
+  for (const std::string& part : parts) {
+    EXPECT_NE(message.find(part), std::string::npos) << "message: " << message << "\nexpected to contain: " << part;
+  }
+}
+
+// A file holding only /height as float64 of the given shape.
+fs::path write_height_file(const TempDir& dir, const std::vector<hsize_t>& dims, const std::vector<double>& values) {
+  const fs::path path = dir / "height.h5";
+  const auto file = create_file(path);
+  add_double_dataset(file.get(), "/height", dims, values);
+  return path;
+}
+
+TEST(Hdf5HeightMapReaderTest, ReadsMeasuredMapCropWithSpacingAndRms) {
+  // di-5-crop-48x64.h5: rows 100:148, columns 200:264 of the Bruker AFM map
+  // di-5.h5. Reference values from numpy in make_io_fixtures.py:
+  //   rms about mean 6.343056140613005e-10, h[0,0] -3.17137734822813e-07,
+  //   h[47,63] -3.1766867405433544e-07, h[5,17] -3.1657954420154e-07.
+  const fs::path path = kDataDir / "di-5-crop-48x64.h5";
+  const HeightMap map = read_hdf5_height_map(path);
+
+  EXPECT_EQ(map.dimension, 2);
+  EXPECT_EQ(map.nx, 64u);
+  EXPECT_EQ(map.ny, 48u);
+  ASSERT_EQ(map.heights.size(), 48 * 64);
+  EXPECT_EQ(map.dx, 1.953125e-9);  // 1 um / 512, exact in binary
+  EXPECT_EQ(map.dy, 1.953125e-9);
+  EXPECT_EQ(map.source, path.string() + ":/height");
+  // Row-major (ny, nx): element (j, i) is heights[j * nx + i].
+  EXPECT_EQ(map.heights[0], -3.17137734822813e-07);
+  EXPECT_EQ(map.heights[47 * 64 + 63], -3.1766867405433544e-07);
+  EXPECT_EQ(map.heights[5 * 64 + 17], -3.1657954420154e-07);
+  EXPECT_NEAR(rms_about_mean(map.heights), 6.343056140613005e-10, kRmsRelativeTolerance * 6.343056140613005e-10);
+}
+
+TEST(Hdf5HeightMapReaderTest, ReadsMeasuredProfileCrop) {
+  // dektak-1-crop-256.h5: points 0:256 of the stylus line scan dektak-1.h5.
+  // numpy: rms about mean 1.3326401673040194e-07, h[0] -9.33e-09, h[255] 4.4809e-07.
+  const fs::path path = kDataDir / "dektak-1-crop-256.h5";
+  const HeightMap map = read_hdf5_height_map(path);
+
+  EXPECT_EQ(map.dimension, 1);
+  EXPECT_EQ(map.nx, 256u);
+  EXPECT_EQ(map.ny, 1u);
+  EXPECT_EQ(map.dx, 1.5625e-7);
+  EXPECT_EQ(map.dy, 0.0);
+  EXPECT_EQ(map.heights[0], -9.33e-09);
+  EXPECT_EQ(map.heights[255], 4.4809e-07);
+  EXPECT_NEAR(rms_about_mean(map.heights), 1.3326401673040194e-07, kRmsRelativeTolerance * 1.3326401673040194e-07);
+}
+
+TEST(Hdf5HeightMapReaderTest, ConvertsFloat32MapAndNumericSpacingAttributes) {
+  // height-float32-3x5.h5: float32 (3, 5) with h[j, i] = (10 j + i) / 2 - 3,
+  // dx a float32 attribute 2.5e-6, dy an int64 attribute 2.
+  const HeightMap map = read_hdf5_height_map(kDataDir / "height-float32-3x5.h5");
+  EXPECT_EQ(map.dimension, 2);
+  EXPECT_EQ(map.nx, 5u);
+  EXPECT_EQ(map.ny, 3u);
+  EXPECT_EQ(map.dx, static_cast<double>(2.5e-6f));
+  EXPECT_EQ(map.dy, 2.0);
+  ASSERT_EQ(map.heights.size(), 15);
+  for (int j = 0; j < 3; ++j) {
+    for (int i = 0; i < 5; ++i)
+      EXPECT_EQ(map.heights[j * 5 + i], (10 * j + i) * 0.5 - 3.0) << "at (j, i) = (" << j << ", " << i << ")";
+  }
+}
+
+TEST(Hdf5HeightMapReaderTest, ReadsIntegerProfileFromNamedDatasetWithoutSpacing) {
+  const fs::path path = kDataDir / "profile-int16.h5";
+  const HeightMap map = read_hdf5_height_map(path, "profile");
+  EXPECT_EQ(map.dimension, 1);
+  EXPECT_EQ(map.nx, 6u);
+  EXPECT_EQ(map.ny, 1u);
+  EXPECT_EQ(map.dx, 0.0);  // no attribute: the caller must supply it
+  EXPECT_EQ(map.dy, 0.0);
+  EXPECT_EQ(map.source, path.string() + ":profile");
+  const std::vector<double> expected{-3, 0, 7, 12, -32768, 32767};
+  for (int i = 0; i < 6; ++i) EXPECT_EQ(map.heights[i], expected[static_cast<std::size_t>(i)]) << "at i = " << i;
+}
+
+TEST(Hdf5HeightMapReaderTest, RoundTripsMapWrittenWithTheCApiBitExactly) {
+  const TempDir dir;
+  const std::size_t nx = 7;
+  const std::size_t ny = 4;
+  std::vector<double> values(nx * ny);
+  for (std::size_t k = 0; k < values.size(); ++k) values[k] = std::sin(0.37 * static_cast<double>(k)) * 1e-6;
+  const fs::path path = dir / "map.h5";
+  {
+    const auto file = create_file(path);
+    const test::H5 group(H5Gcreate2(file.get(), "surface", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "group");
+    add_double_dataset(file.get(), "/surface/h", {ny, nx}, values);  // in a group
+    add_double_attribute(file.get(), "dx", 1e-6);
+    add_double_attribute(file.get(), "dy", 3e-6);
+  }
+  const HeightMap map = read_hdf5_height_map(path, "/surface/h");
+  EXPECT_EQ(map.nx, nx);
+  EXPECT_EQ(map.ny, ny);
+  EXPECT_EQ(map.dx, 1e-6);
+  EXPECT_EQ(map.dy, 3e-6);
+  for (std::size_t k = 0; k < values.size(); ++k) EXPECT_EQ(map.heights[static_cast<Eigen::Index>(k)], values[k]);
+}
+
+TEST(Hdf5HeightMapReaderTest, ConvertsBigEndianIntegersAndOneElementSpacingArrays) {
+  const TempDir dir;
+  const fs::path path = dir / "big-endian.h5";
+  const std::vector<std::int32_t> values{-70000, 0, 1, 2, 3, 70000};  // beyond the int16 range
+  {
+    const auto file = create_file(path);
+    test::add_dataset(file.get(), "height", {2, 3}, H5T_STD_I32BE, H5T_NATIVE_INT32, values.data());
+    const hsize_t one = 1;
+    const test::H5 space(H5Screate_simple(1, &one, nullptr), H5Sclose, "1-element dataspace");
+    const test::H5 dx(H5Acreate2(file.get(), "dx", H5T_IEEE_F32BE, space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose,
+                      "dx");
+    const float spacing = 0.5f;
+    test::check(H5Awrite(dx.get(), H5T_NATIVE_FLOAT, &spacing), "write dx");
+  }
+  const HeightMap map = read_hdf5_height_map(path);
+  EXPECT_EQ(map.nx, 3u);
+  EXPECT_EQ(map.ny, 2u);
+  EXPECT_EQ(map.dx, 0.5);
+  EXPECT_EQ(map.dy, 0.0);  // absent
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    EXPECT_EQ(map.heights[static_cast<Eigen::Index>(k)], static_cast<double>(values[k]));
+  }
+}
+
+TEST(Hdf5HeightMapReaderTest, IgnoresDyOfAProfile) {
+  const TempDir dir;
+  const fs::path path = write_height_file(dir, {3}, {1.0, 2.0, 3.0});
+  {
+    const auto file = test::H5(H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), H5Fclose, "reopen");
+    add_double_attribute(file.get(), "dx", 0.5);
+    add_double_attribute(file.get(), "dy", -1.0);  // meaningless for a profile
+  }
+  const HeightMap map = read_hdf5_height_map(path);
+  EXPECT_EQ(map.dx, 0.5);
+  EXPECT_EQ(map.dy, 0.0);
+}
+
+TEST(Hdf5HeightMapReaderTest, ReadsFullMeasuredFilesWhenAvailable) {
+  if (!fs::exists(kTopographyDir / "di-5.h5")) GTEST_SKIP() << "no measured data at " << kTopographyDir;
+  // Sq quoted in the topography README, from the SurfaceTopography tests.
+  const HeightMap di5 = read_hdf5_height_map(kTopographyDir / "di-5.h5");
+  EXPECT_EQ(di5.nx, 512u);
+  EXPECT_EQ(di5.ny, 512u);
+  EXPECT_NEAR(rms_about_mean(di5.heights), 5.831926e-9, kQuotedSqRelativeTolerance * 5.831926e-9);
+
+  const HeightMap dektak = read_hdf5_height_map(kTopographyDir / "dektak-1.h5");
+  EXPECT_EQ(dektak.dimension, 1);
+  EXPECT_EQ(dektak.nx, 9600u);
+
+  // dx and dy differ in the 5th digit; a reader that copies one into the
+  // other would pass every square-pixel file.
+  const HeightMap rubber = read_hdf5_height_map(kTopographyDir / "KautschukInfiniteFocus.h5");
+  EXPECT_EQ(rubber.nx, 857u);
+  EXPECT_EQ(rubber.ny, 631u);
+  EXPECT_NE(rubber.dx, rubber.dy);
+  EXPECT_NEAR(rubber.dx, 2.279984e-6, 1e-12);
+  EXPECT_NEAR(rubber.dy, 2.279795e-6, 1e-12);
+}
+
+TEST(Hdf5HeightMapReaderTest, RejectsMissingFile) {
+  const TempDir dir;
+  const fs::path path = dir / "absent.h5";
+  expect_contains(read_error(path), {path.string(), "/height", "does not exist"});
+}
+
+TEST(Hdf5HeightMapReaderTest, RejectsDirectory) {
+  const TempDir dir;
+  expect_contains(read_error(dir.path()), {dir.path().string(), "is a directory"});
+}
+
+TEST(Hdf5HeightMapReaderTest, RejectsFileThatIsNotHdf5) {
+  const TempDir dir;
+  const fs::path path = dir / "heights.csv";
+  std::ofstream(path) << "0.0,1.0\n2.0,3.0\n";
+  expect_contains(read_error(path), {path.string(), "not an HDF5 file"});
+}
+
+TEST(Hdf5HeightMapReaderTest, RejectsMissingDatasetAndListsRootDatasets) {
+  const TempDir dir;
+  const fs::path path = dir / "many.h5";
+  {
+    const auto file = create_file(path);
+    for (int k = 0; k < 12; ++k) add_double_dataset(file.get(), fmt::format("d{}", 100 + k), {2}, {0.0, 1.0});
+    const test::H5 group(H5Gcreate2(file.get(), "a_group", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "group");
+  }
+  const std::string message = read_error(path, "/heigth");
+  expect_contains(message, {path.string(), "'/heigth'", "does not exist", "'/d100'", "'/d109'", "and 2 more"});
+  EXPECT_EQ(message.find("d110"), std::string::npos) << message;     // only ten are listed
+  EXPECT_EQ(message.find("a_group"), std::string::npos) << message;  // groups are not datasets
+}
+
+TEST(Hdf5HeightMapReaderTest, RejectsDatasetInMissingGroup) {
+  const TempDir dir;
+  const fs::path path = write_height_file(dir, {2}, {0.0, 1.0});
+  expect_contains(read_error(path, "/no/such/height"), {"'/no/such/height'", "does not exist", "'/height'"});
+}
+
+TEST(Hdf5HeightMapReaderTest, RejectsGroupInsteadOfDataset) {
+  const TempDir dir;
+  const fs::path path = dir / "group.h5";
+  {
+    const auto file = create_file(path);
+    const test::H5 group(H5Gcreate2(file.get(), "height", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "group");
+  }
+  expect_contains(read_error(path), {"group, not a dataset"});
+}
+
+TEST(Hdf5HeightMapReaderTest, RejectsRankThree) {
+  const TempDir dir;
+  const fs::path path = write_height_file(dir, {2, 3, 4}, std::vector<double>(24, 0.0));
+  expect_contains(read_error(path), {path.string(), "rank 3", "(2, 3, 4)", "expected rank 1"});
+}
+
+TEST(Hdf5HeightMapReaderTest, RejectsScalarDataset) {
+  const TempDir dir;
+  const fs::path path = write_height_file(dir, {}, {1.0});
+  expect_contains(read_error(path), {"scalar (rank 0)"});
+}
+
+TEST(Hdf5HeightMapReaderTest, RejectsFewerThanTwoPointsAlongAnAxis) {
+  const TempDir dir;
+  const fs::path map_path = write_height_file(dir, {1, 5}, std::vector<double>(5, 0.0));
+  expect_contains(read_error(map_path), {"shape (1, 5)", "1 point(s) along y", "at least 2"});
+
+  const TempDir other;
+  const fs::path profile_path = write_height_file(other, {1}, {0.0});
+  expect_contains(read_error(profile_path), {"shape (1,)", "1 point(s) along x"});
+}
+
+TEST(Hdf5HeightMapReaderTest, RejectsNonFiniteHeightsNamingTheFirst) {
+  const TempDir dir;
+  std::vector<double> values(12, 0.0);  // shape (3, 4)
+  values[1 * 4 + 2] = std::numeric_limits<double>::quiet_NaN();
+  values[2 * 4 + 0] = std::numeric_limits<double>::infinity();
+  const fs::path path = write_height_file(dir, {3, 4}, values);
+  expect_contains(read_error(path), {path.string(), "2 of 12 heights are not finite", "(j, i) = (1, 2)", "nan"});
+}
+
+TEST(Hdf5HeightMapReaderTest, RejectsNonFiniteProfileNamingTheIndex) {
+  const TempDir dir;
+  const fs::path path = write_height_file(dir, {5}, {0.0, 1.0, 2.0, -std::numeric_limits<double>::infinity(), 4.0});
+  expect_contains(read_error(path), {"1 of 5 heights are not finite", "index i = 3", "-inf"});
+}
+
+TEST(Hdf5HeightMapReaderTest, RejectsStringDataset) {
+  const TempDir dir;
+  const fs::path path = dir / "text.h5";
+  {
+    const auto file = create_file(path);
+    const test::H5 type(H5Tcopy(H5T_C_S1), H5Tclose, "string type");
+    H5Tset_size(type.get(), 4);
+    const char text[3][4] = {{'a', 'b', 'c', 'd'}, {'e', 'f', 'g', 'h'}, {'i', 'j', 'k', 'l'}};
+    test::add_dataset(file.get(), "height", {3}, type.get(), type.get(), text);
+  }
+  expect_contains(read_error(path), {path.string(), "string data, not numbers"});
+}
+
+TEST(Hdf5HeightMapReaderTest, RejectsCompoundDataset) {
+  const TempDir dir;
+  const fs::path path = dir / "compound.h5";
+  struct Point {
+    double x;
+    double z;
+  };
+  {
+    const auto file = create_file(path);
+    const test::H5 type(H5Tcreate(H5T_COMPOUND, sizeof(Point)), H5Tclose, "compound type");
+    H5Tinsert(type.get(), "x", HOFFSET(Point, x), H5T_NATIVE_DOUBLE);
+    H5Tinsert(type.get(), "z", HOFFSET(Point, z), H5T_NATIVE_DOUBLE);
+    const Point points[2] = {{0.0, 1.0}, {1.0, 2.0}};
+    test::add_dataset(file.get(), "height", {2}, type.get(), type.get(), points);
+  }
+  expect_contains(read_error(path), {"compound data, not numbers"});
+}
+
+TEST(Hdf5HeightMapReaderTest, RejectsNegativeSpacing) {
+  const TempDir dir;
+  const fs::path path = write_height_file(dir, {2, 2}, {0.0, 1.0, 2.0, 3.0});
+  {
+    const auto file = test::H5(H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), H5Fclose, "reopen");
+    add_double_attribute(file.get(), "dx", -1e-9);
+  }
+  expect_contains(read_error(path), {path.string(), "'dx' = -1e-09", "finite and >= 0"});
+}
+
+TEST(Hdf5HeightMapReaderTest, RejectsNonFiniteSpacing) {
+  const TempDir dir;
+  const fs::path path = write_height_file(dir, {2, 2}, {0.0, 1.0, 2.0, 3.0});
+  {
+    const auto file = test::H5(H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), H5Fclose, "reopen");
+    add_double_attribute(file.get(), "dx", 1e-9);
+    add_double_attribute(file.get(), "dy", std::numeric_limits<double>::quiet_NaN());
+  }
+  expect_contains(read_error(path), {"'dy' = nan", "finite and >= 0"});
+}
+
+TEST(Hdf5HeightMapReaderTest, RejectsNonNumericSpacing) {
+  const TempDir dir;
+  const fs::path path = write_height_file(dir, {2, 2}, {0.0, 1.0, 2.0, 3.0});
+  {
+    const auto file = test::H5(H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), H5Fclose, "reopen");
+    test::add_string_attribute(file.get(), "dx", "1 nm");
+  }
+  expect_contains(read_error(path), {"'dx' is of string type", "expected a number"});
+}
+
+// The library never prints: HDF5's own error stack stays silent during a
+// failed read, and the caller's HDF5 error-printing setting is restored.
+TEST(Hdf5HeightMapReaderTest, FailsSilentlyAndRestoresHdf5ErrorPrinting) {
+  const TempDir dir;
+  const fs::path path = write_height_file(dir, {2}, {0.0, 1.0});
+  H5E_auto2_t before = nullptr;
+  void* before_data = nullptr;
+  H5Eget_auto2(H5E_DEFAULT, &before, &before_data);
+  ASSERT_NE(before, nullptr) << "HDF5 should print errors by default";
+
+  testing::internal::CaptureStderr();
+  const std::string message = read_error(path, "/missing");
+  const std::string printed = testing::internal::GetCapturedStderr();
+  EXPECT_FALSE(message.empty());
+  EXPECT_EQ(printed, "");
+
+  H5E_auto2_t after = nullptr;
+  void* after_data = nullptr;
+  H5Eget_auto2(H5E_DEFAULT, &after, &after_data);
+  EXPECT_EQ(after, before);
+  EXPECT_EQ(after_data, before_data);
+}
+
+}  // namespace
+}  // namespace halfspace::io
