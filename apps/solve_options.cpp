@@ -89,13 +89,22 @@ const std::array kOptions{
     OptionSpec{"quiet", &SolveOptions::quiet, Kind::flag, kOutput, "", "print nothing unless there is an error"},
 };
 
-// Options that exclude each other. A key given on the command line makes the
-// config file's keys of the *other* alternatives of its group be ignored, so
-// that e.g. `--approach 1e-6` can override a file that sets `force`.
-const std::vector<std::vector<std::vector<std::string_view>>> kAlternatives{
-    {{"force"}, {"mean-pressure"}, {"approach"}},
-    {{"E-star"}, {"E1", "nu1", "E2", "nu2"}},
-    {{"height-map", "dataset", "dx", "dy"}, {"geometry", "radius", "wavelength", "amplitude", "grid", "size"}},
+// Options that exclude each other. Choosing an alternative on the command
+// line (by one of its selectors) makes the config file's keys of the *other*
+// alternatives of its group be ignored, so that `--approach 1e-6` overrides a
+// file that sets `force`, and `--geometry` a file that sets `height-map` and
+// `dx`. The surface is chosen only by its selectors: `--grid` alone must not
+// silently drop a file's height map, it must be reported as a conflict.
+struct Alternative {
+  std::vector<std::string_view> selectors;  // keys that choose this alternative
+  std::vector<std::string_view> keys;       // every key that belongs to it
+};
+
+const std::vector<std::vector<Alternative>> kAlternatives{
+    {{{"force"}, {"force"}}, {{"mean-pressure"}, {"mean-pressure"}}, {{"approach"}, {"approach"}}},
+    {{{"E-star"}, {"E-star"}}, {{"E1", "nu1", "E2", "nu2"}, {"E1", "nu1", "E2", "nu2"}}},
+    {{{"height-map"}, {"height-map", "dataset", "dx", "dy"}},
+     {{"geometry"}, {"geometry", "radius", "wavelength", "amplitude", "grid", "size"}}},
 };
 
 const OptionSpec* find_spec(std::string_view key) {
@@ -119,11 +128,12 @@ bool is_set(const SolveOptions& options, const OptionSpec& spec) {
 
 bool excluded_by(std::string_view key, const std::set<std::string, std::less<>>& given) {
   for (const auto& group : kAlternatives) {
-    for (std::size_t a = 0; a < group.size(); ++a) {
-      if (std::find(group[a].begin(), group[a].end(), key) == group[a].end()) continue;
-      for (std::size_t b = 0; b < group.size(); ++b) {
-        for (std::string_view other : group[b]) {
-          if (b != a && given.contains(other)) return true;
+    for (const Alternative& own : group) {
+      if (std::find(own.keys.begin(), own.keys.end(), key) == own.keys.end()) continue;
+      for (const Alternative& other : group) {
+        if (&other == &own) continue;
+        for (std::string_view selector : other.selectors) {
+          if (given.contains(selector)) return true;
         }
       }
     }

@@ -1,10 +1,10 @@
 // The process-wide thread count: OpenMP loops and FFTW plans use the same one.
 #include "halfspace/threads.hpp"
 
-#include <atomic>
-
 #include <fmt/format.h>
 #include <omp.h>
+
+#include <atomic>
 
 #include "halfspace/error.hpp"
 

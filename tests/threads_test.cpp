@@ -1,9 +1,9 @@
 // The process-wide thread count.
 #include "halfspace/threads.hpp"
 
-#include <string>
-
 #include <gtest/gtest.h>
+
+#include <string>
 
 #include "halfspace/error.hpp"
 

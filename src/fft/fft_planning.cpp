@@ -23,8 +23,7 @@ FftPlanning parse_fft_planning(std::string_view text) {
   if (text == "estimate") return FftPlanning::estimate;
   if (text == "measure") return FftPlanning::measure;
   if (text == "patient") return FftPlanning::patient;
-  throw InputError(
-      fmt::format("FFT planning '{}' is not known: use 'estimate', 'measure' or 'patient'", text));
+  throw InputError(fmt::format("FFT planning '{}' is not known: use 'estimate', 'measure' or 'patient'", text));
 }
 
 }  // namespace halfspace

@@ -3,6 +3,9 @@
 // fftw_execute runs unlocked.
 #include "halfspace/fft/real_fft.hpp"
 
+#include <fftw3.h>
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cassert>
 #include <climits>
@@ -10,9 +13,6 @@
 #include <new>
 #include <stdexcept>
 #include <utility>
-
-#include <fftw3.h>
-#include <fmt/format.h>
 
 #include "halfspace/error.hpp"
 #include "halfspace/threads.hpp"
@@ -71,7 +71,9 @@ RealFft::RealFft(std::size_t rows, std::size_t cols, FftPlanning planning) : row
   make_plans(2, dims, planning);
 }
 
-RealFft::~RealFft() { release(); }
+RealFft::~RealFft() {
+  release();
+}
 
 RealFft::RealFft(RealFft&& other) noexcept
     : rows_(std::exchange(other.rows_, 0)),

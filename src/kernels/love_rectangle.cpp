@@ -4,8 +4,8 @@
 #include "halfspace/kernels/love_rectangle.hpp"
 
 #include <array>
-#include <cstddef>
 #include <cmath>
+#include <cstddef>
 #include <numbers>
 
 namespace halfspace::kernels {
@@ -18,8 +18,7 @@ double signed_asinh_term(double s, double t) {
   if (s == 0.0 || t == 0.0) return 0.0;
   const double as = std::abs(s);
   const double at = std::abs(t);
-  const double magnitude =
-      at <= as ? std::asinh(at / as) : std::log(at + std::hypot(s, t)) - std::log(as);
+  const double magnitude = at <= as ? std::asinh(at / as) : std::log(at + std::hypot(s, t)) - std::log(as);
   return std::copysign(1.0, t) * s * magnitude;
 }
 
@@ -36,9 +35,8 @@ struct HalfRule {
   std::array<double, 8> weights;
   std::size_t count;
 };
-constexpr HalfRule kGauss4{{0.861136311594052575224, 0.339981043584856264803},
-                           {0.347854845137453857373, 0.652145154862546142627},
-                           2};
+constexpr HalfRule kGauss4{
+    {0.861136311594052575224, 0.339981043584856264803}, {0.347854845137453857373, 0.652145154862546142627}, 2};
 constexpr HalfRule kGauss8{
     {0.960289856497536231684, 0.796666477413626739592, 0.525532409916328985818, 0.183434642495649804939},
     {0.101228536290376259153, 0.222381034453374470544, 0.313706645877887287338, 0.362683783378361982965},
@@ -81,8 +79,7 @@ double gauss_integral(double x, double y, double a, double b, const HalfRule& ru
 
 }  // namespace
 
-double love_rectangle_displacement(double x, double y, double half_width_x, double half_width_y,
-                                   double e_star) {
+double love_rectangle_displacement(double x, double y, double half_width_x, double half_width_y, double e_star) {
   // The displacement is even in x and y; folding makes the coefficients exactly
   // symmetric (K(d) == K(-d) bit for bit), which keeps the DC-FFT spectrum real
   // and the dense matrix symmetric.
@@ -103,8 +100,8 @@ double love_rectangle_displacement(double x, double y, double half_width_x, doub
   const double xm = x - a;
   const double yp = y + b;
   const double ym = y - b;
-  return scale * (corner_primitive(xp, yp) - corner_primitive(xp, ym) - corner_primitive(xm, yp) +
-                  corner_primitive(xm, ym));
+  return scale *
+         (corner_primitive(xp, yp) - corner_primitive(xp, ym) - corner_primitive(xm, yp) + corner_primitive(xm, ym));
 }
 
 }  // namespace halfspace::kernels

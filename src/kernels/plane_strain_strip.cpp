@@ -9,7 +9,9 @@ namespace halfspace::kernels {
 namespace {
 
 // F(t) = t ln|t| - t, the primitive of ln|t|, with its limit F(0) = 0.
-double log_primitive(double t) { return t == 0.0 ? 0.0 : t * std::log(std::abs(t)) - t; }
+double log_primitive(double t) {
+  return t == 0.0 ? 0.0 : t * std::log(std::abs(t)) - t;
+}
 
 // F(d + h) - F(d - h) for d >= 0. Away from the strip (d > 2h) it is rewritten
 // as 2 d atanh(h/d) + h ln((d - h)(d + h)) - 2h, whose terms stay O(h ln d): the

@@ -3,13 +3,13 @@
 // sum, so the two operators check each other.
 #include "halfspace/operators/dense_influence_operator.hpp"
 
+#include <fmt/format.h>
+
 #include <cassert>
 #include <cmath>
 #include <numbers>
 #include <string>
 #include <vector>
-
-#include <fmt/format.h>
 
 #include "halfspace/error.hpp"
 #include "halfspace/kernels/love_rectangle.hpp"
@@ -31,10 +31,10 @@ void check_dense_size(const Grid& grid) {
   const std::size_t n = grid.size();
   if (n > kMaxDenseCells) {
     const double bytes = static_cast<double>(sizeof(double)) * static_cast<double>(n) * static_cast<double>(n);
-    throw InputError(fmt::format(
-        "dense influence matrix for grid {} ({} cells) would take {}: the limit is {} cells; "
-        "use the FFT solver (Polonsky-Keer) instead",
-        grid.shape_string(), n, memory_string(bytes), kMaxDenseCells));
+    throw InputError(
+        fmt::format("dense influence matrix for grid {} ({} cells) would take {}: the limit is {} cells; "
+                    "use the FFT solver (Polonsky-Keer) instead",
+                    grid.shape_string(), n, memory_string(bytes), kMaxDenseCells));
   }
 }
 
@@ -108,10 +108,9 @@ Eigen::MatrixXd free_kernel_table(const Grid& grid, double e_star) {
     const double x = static_cast<double>(ix) * grid.dx();
     for (std::size_t iy = 0; iy < ny; ++iy) {
       table(static_cast<Eigen::Index>(iy), static_cast<Eigen::Index>(ix)) =
-          grid.dimension() == 1
-              ? kernels::plane_strain_strip_displacement(x, grid.dx(), e_star)
-              : kernels::love_rectangle_displacement(x, static_cast<double>(iy) * grid.dy(), 0.5 * grid.dx(),
-                                                     0.5 * grid.dy(), e_star);
+          grid.dimension() == 1 ? kernels::plane_strain_strip_displacement(x, grid.dx(), e_star)
+                                : kernels::love_rectangle_displacement(x, static_cast<double>(iy) * grid.dy(),
+                                                                       0.5 * grid.dx(), 0.5 * grid.dy(), e_star);
     }
   });
   return table;

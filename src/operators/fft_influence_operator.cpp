@@ -26,7 +26,9 @@ std::size_t transform_rows(const Grid& grid) {
   if (grid.dimension() == 1) return 1;
   return grid.periodic() ? grid.ny() : 2 * grid.ny();
 }
-std::size_t transform_cols(const Grid& grid) { return grid.periodic() ? grid.nx() : 2 * grid.nx(); }
+std::size_t transform_cols(const Grid& grid) {
+  return grid.periodic() ? grid.nx() : 2 * grid.nx();
+}
 
 RealFft make_fft(const Grid& grid, FftPlanning planning) {
   if (grid.dimension() == 1) return RealFft(transform_cols(grid), planning);
@@ -37,7 +39,9 @@ RealFft make_fft(const Grid& grid, FftPlanning planning) {
 // 2n - k for the negative offsets. The middle index n gets distance n: it
 // multiplies only padding, never reaching the first n outputs, so any value
 // would do.
-std::size_t mirrored(std::size_t k, std::size_t n) { return k <= n ? k : 2 * n - k; }
+std::size_t mirrored(std::size_t k, std::size_t n) {
+  return k <= n ? k : 2 * n - k;
+}
 
 // Calls copy(j, i) over an (ny, nx) block, in parallel over rows, or over the
 // cells of a 1D grid's single row.
@@ -46,7 +50,7 @@ void copy_block(std::size_t ny, std::size_t nx, Copy&& copy) {
   if (ny == 1) {
     linalg::for_each_index(nx, [&](std::size_t i) { copy(0, i); });
   } else {
-    linalg::for_each_index(ny, [&](std::size_t j) {
+    linalg::for_each_row(ny, nx, [&](std::size_t j) {
       for (std::size_t i = 0; i < nx; ++i) copy(j, i);
     });
   }
@@ -106,7 +110,7 @@ struct FftInfluenceOperator::Impl {
     const std::size_t quadrant_rows = line ? 1 : ny + 1;
     std::span<double> quadrant = fft.output();
     assert(quadrant.size() >= quadrant_rows * quadrant_cols);
-    linalg::for_each_index(quadrant_rows, [&](std::size_t dj) {
+    linalg::for_each_row(quadrant_rows, quadrant_cols, [&](std::size_t dj) {
       for (std::size_t di = 0; di < quadrant_cols; ++di) {
         const double x = static_cast<double>(di) * dx;
         quadrant[dj * quadrant_cols + di] =
@@ -119,9 +123,10 @@ struct FftInfluenceOperator::Impl {
     const std::size_t rows = fft.rows();
     const std::size_t cols = fft.cols();
     std::span<double> coefficients = fft.input();
-    linalg::for_each_index(rows, [&](std::size_t r) {
+    linalg::for_each_row(rows, cols, [&](std::size_t r) {
       const std::size_t dj = line ? 0 : mirrored(r, ny);
-      for (std::size_t c = 0; c < cols; ++c) coefficients[r * cols + c] = quadrant[dj * quadrant_cols + mirrored(c, nx)];
+      for (std::size_t c = 0; c < cols; ++c)
+        coefficients[r * cols + c] = quadrant[dj * quadrant_cols + mirrored(c, nx)];
     });
     fft.forward();
     const double inverse_n = 1.0 / static_cast<double>(fft.real_size());
@@ -142,9 +147,13 @@ FftInfluenceOperator::FftInfluenceOperator(const Grid& grid, double e_star, FftP
 
 FftInfluenceOperator::~FftInfluenceOperator() = default;
 
-const Grid& FftInfluenceOperator::grid() const { return impl_->grid; }
+const Grid& FftInfluenceOperator::grid() const {
+  return impl_->grid;
+}
 
-double FftInfluenceOperator::self_influence() const { return impl_->self; }
+double FftInfluenceOperator::self_influence() const {
+  return impl_->self;
+}
 
 void FftInfluenceOperator::apply(std::span<const double> pressure, std::span<double> displacement) {
   Impl& m = *impl_;

@@ -436,6 +436,26 @@ TEST(CliTest, CommandLineOverridesConfigFile) {
   EXPECT_FALSE(fs::exists(dir / "from-file.h5"));
 }
 
+TEST(CliTest, GeometryOnCommandLineReplacesHeightMapOfConfigFile) {
+  const TempDir dir;
+  write_text(dir / "run.toml", "height-map = \"missing.h5\"\ndx = 1e-6\nE-star = 1e11\nforce = 1\nthreads = 1\n");
+  const fs::path output = dir / "out.h5";
+  const ProgramRun result = run({"solve", "--config", "run.toml", "--geometry", "sphere", "--radius", "0.01", "--grid",
+                                 "32x32", "--size", "4e-4", "--output", output.string()},
+                                dir);
+  EXPECT_EQ(result.exit_code, kExitOk) << result.err;
+  EXPECT_TRUE(fs::exists(output));
+}
+
+TEST(CliTest, GridOnCommandLineConflictsWithHeightMapOfConfigFile) {
+  const TempDir dir;
+  write_height_map(dir / "surface.h5", 32, 32, true);
+  write_text(dir / "run.toml", "height-map = \"surface.h5\"\nE-star = 1e11\nforce = 1\n");
+  const fs::path output = dir / "out.h5";
+  expect_input_error(run({"solve", "--config", "run.toml", "--grid", "64x64", "--output", output.string()}, dir),
+                     "--grid cannot be used with --height-map", output);
+}
+
 TEST(CliTest, ConfigPathsAreRelativeToTheConfigFile) {
   const TempDir dir;
   fs::create_directory(dir / "case");

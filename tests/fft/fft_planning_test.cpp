@@ -1,9 +1,9 @@
 // FFT planning names: round trip and the error for an unknown name.
 #include "halfspace/fft/fft_planning.hpp"
 
-#include <string>
-
 #include <gtest/gtest.h>
+
+#include <string>
 
 #include "halfspace/error.hpp"
 

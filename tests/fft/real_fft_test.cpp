@@ -2,14 +2,14 @@
 // input-preserving forward transform the DC-FFT padding relies on, and moves.
 #include "halfspace/fft/real_fft.hpp"
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <complex>
 #include <numbers>
 #include <random>
 #include <utility>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "halfspace/error.hpp"
 #include "halfspace/threads.hpp"
@@ -112,7 +112,9 @@ TEST(RealFftTest, IsMoveable) {
   expect_forward_matches_dft(c, 4);
 }
 
-TEST(RealFftTest, RejectsEmptySize) { EXPECT_THROW(RealFft(0, FftPlanning::estimate), InputError); }
+TEST(RealFftTest, RejectsEmptySize) {
+  EXPECT_THROW(RealFft(0, FftPlanning::estimate), InputError);
+}
 
 }  // namespace
 }  // namespace halfspace

@@ -342,12 +342,23 @@ TEST(ResultWriterTest, RefusesExistingTemporaryFile) {
 }
 
 TEST(ResultWriterTest, ThrowsForReadOnlyDirectory) {
-  if (::geteuid() == 0) GTEST_SKIP() << "root may write to any directory";
+  const Grid grid = Grid::line(8, 1e-6, Boundary::free);
+  if (::geteuid() == 0) {
+    // Root may write to any ordinary directory, but nobody may create files in /proc.
+    const fs::path path = "/proc/halfspace-result-test.h5";
+    try {
+      write_result(path, grid, make_height(grid), make_result(grid, 1), make_metadata());
+      ADD_FAILURE() << "no FileError";
+    } catch (const FileError& error) {
+      EXPECT_NE(std::string(error.what()).find(path.string()), std::string::npos) << error.what();
+    }
+    EXPECT_FALSE(fs::exists(path));
+    return;
+  }
   const TempDir dir;
   const fs::path locked = dir / "locked";
   fs::create_directory(locked);
   fs::permissions(locked, fs::perms::owner_read | fs::perms::owner_exec);
-  const Grid grid = Grid::line(8, 1e-6, Boundary::free);
   try {
     write_result(locked / "x.h5", grid, make_height(grid), make_result(grid, 1), make_metadata());
     ADD_FAILURE() << "no FileError";

@@ -2,14 +2,14 @@
 // 1/(pi E* r) over the cell, the closed-form centre value, and its far field.
 #include "halfspace/kernels/love_rectangle.hpp"
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 namespace halfspace {
 namespace {
@@ -172,10 +172,12 @@ void expect_matches(double a, double b, const std::vector<Point>& points, double
 }
 
 // Inside, on edges and corners, just off them, and a few cells away.
-const std::vector<Point> kNearPoints{
-    {0.3, 0.0},   {0.3, 0.7},   {-0.9, 0.2},  {1.0, 0.0},   {1.0, 1.0},     {-1.0, 0.5},  {0.4, -1.0},
-    {1.0 + 1e-12, 0.3},         {1.0 - 1e-12, 1.0 + 1e-12}, {1.5, 0.2},     {2.0, 2.0},   {3.0, -1.0},
-    {-4.0, 0.0},  {0.0, 5.0},   {7.3, 2.1},   {11.0, -9.0}, {1e-300, 1e-300}};
+const std::vector<Point> kNearPoints{{0.3, 0.0},   {0.3, 0.7},         {-0.9, 0.2},
+                                     {1.0, 0.0},   {1.0, 1.0},         {-1.0, 0.5},
+                                     {0.4, -1.0},  {1.0 + 1e-12, 0.3}, {1.0 - 1e-12, 1.0 + 1e-12},
+                                     {1.5, 0.2},   {2.0, 2.0},         {3.0, -1.0},
+                                     {-4.0, 0.0},  {0.0, 5.0},         {7.3, 2.1},
+                                     {11.0, -9.0}, {1e-300, 1e-300}};
 
 TEST(LoveRectangleTest, CentreOfSquareMatchesClosedForm) {
   const double a = 0.5e-6;
@@ -269,8 +271,8 @@ TEST(LoveRectangleTest, ContinuousAcrossEdgesAndCorners) {
     const double on = love_rectangle_displacement(p.x * a, p.y * b, a, b, kEStar);
     ASSERT_TRUE(std::isfinite(on));
     for (const double sign : {-1.0, 1.0}) {
-      const double off = love_rectangle_displacement(p.x * a * (1.0 + sign * delta), p.y * b * (1.0 + sign * delta), a,
-                                                     b, kEStar);
+      const double off =
+          love_rectangle_displacement(p.x * a * (1.0 + sign * delta), p.y * b * (1.0 + sign * delta), a, b, kEStar);
       EXPECT_NEAR(off, on, 100.0 * delta * scale) << "at (" << p.x << " a, " << p.y << " b)";
     }
   }

@@ -1,10 +1,10 @@
 // DFT wavenumbers in FFTW order and the periodic kernel spectrum 2/(E* |q|).
 #include "halfspace/kernels/periodic_fourier.hpp"
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <numbers>
-
-#include <gtest/gtest.h>
 
 namespace halfspace {
 namespace {

@@ -2,12 +2,12 @@
 // integration of the line-load kernel over the strip, and the far field.
 #include "halfspace/kernels/plane_strain_strip.hpp"
 
+#include <gtest/gtest.h>
+
 #include <array>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
-
-#include <gtest/gtest.h>
 
 namespace halfspace {
 namespace {
@@ -23,7 +23,9 @@ constexpr double kRoundingTolerance = 1e-14;
 constexpr double kQuadratureTolerance = 1e-14;
 
 // Line-load displacement -(2/(pi E*)) ln|t| per unit force per length.
-double line_load(double t) { return -2.0 / (kPi * kEStar) * std::log(std::abs(t)); }
+double line_load(double t) {
+  return -2.0 / (kPi * kEStar) * std::log(std::abs(t));
+}
 
 // int_lo^hi ln t dt for 0 <= lo < hi by 16-point Gauss-Legendre on panels
 // graded geometrically towards lo, [lo + w 2^-(k+1), lo + w 2^-k] with
@@ -102,7 +104,8 @@ TEST(PlaneStrainStripTest, FarFieldTendsToLineLoad) {
     const double z = 0.5 * kWidth / d;
     const double expected = line_load(d) * kWidth + 2.0 / (kPi * kEStar) * kWidth / 6.0 * z * z;
     const double value = plane_strain_strip_displacement(d, kWidth, kEStar);
-    EXPECT_NEAR(value, expected, kRoundingTolerance * std::abs(expected) + 2.0 / (kPi * kEStar) * kWidth * z * z * z * z)
+    EXPECT_NEAR(value, expected,
+                kRoundingTolerance * std::abs(expected) + 2.0 / (kPi * kEStar) * kWidth * z * z * z * z)
         << "at d = " << cells << " dx";
   }
 }

@@ -2,13 +2,13 @@
 // definiteness, zero-mean periodic columns, apply, and the size limit.
 #include "halfspace/operators/dense_influence_operator.hpp"
 
+#include <gtest/gtest.h>
+
+#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
-
-#include <Eigen/Eigenvalues>
-#include <gtest/gtest.h>
 
 #include "halfspace/error.hpp"
 #include "halfspace/kernels/love_rectangle.hpp"

@@ -3,12 +3,12 @@
 // Fourier mode, self-influence, repeatability and thread independence.
 #include "halfspace/operators/fft_influence_operator.hpp"
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <cstdio>
 #include <numbers>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "halfspace/error.hpp"
 #include "halfspace/operators/dense_influence_operator.hpp"
@@ -73,10 +73,18 @@ std::vector<Grid> plane_grids(Boundary boundary) {
           Grid::plane(100, 4, 1e-6, 1e-6, boundary)};
 }
 
-TEST(FftInfluenceOperatorTest, MatchesDenseMatrixPeriodic1D) { expect_matches_dense(line_grids(Boundary::periodic)); }
-TEST(FftInfluenceOperatorTest, MatchesDenseMatrixFree1D) { expect_matches_dense(line_grids(Boundary::free)); }
-TEST(FftInfluenceOperatorTest, MatchesDenseMatrixPeriodic2D) { expect_matches_dense(plane_grids(Boundary::periodic)); }
-TEST(FftInfluenceOperatorTest, MatchesDenseMatrixFree2D) { expect_matches_dense(plane_grids(Boundary::free)); }
+TEST(FftInfluenceOperatorTest, MatchesDenseMatrixPeriodic1D) {
+  expect_matches_dense(line_grids(Boundary::periodic));
+}
+TEST(FftInfluenceOperatorTest, MatchesDenseMatrixFree1D) {
+  expect_matches_dense(line_grids(Boundary::free));
+}
+TEST(FftInfluenceOperatorTest, MatchesDenseMatrixPeriodic2D) {
+  expect_matches_dense(plane_grids(Boundary::periodic));
+}
+TEST(FftInfluenceOperatorTest, MatchesDenseMatrixFree2D) {
+  expect_matches_dense(plane_grids(Boundary::free));
+}
 
 // u = 2/(E* q) cos(q . x) for p = cos(q . x), to rounding.
 // Mode m on n points is the wave 2 pi m' / (n h) with m' = m or m - n,
@@ -124,7 +132,8 @@ TEST(FftInfluenceOperatorTest, PeriodicFourierModeIsExact2D) {
 }
 
 TEST(FftInfluenceOperatorTest, PeriodicOutputHasZeroMean) {
-  for (const Grid& grid : {Grid::line(15, 1e-6, Boundary::periodic), Grid::plane(9, 8, 1e-6, 2e-6, Boundary::periodic)}) {
+  for (const Grid& grid :
+       {Grid::line(15, 1e-6, Boundary::periodic), Grid::plane(9, 8, 1e-6, 2e-6, Boundary::periodic)}) {
     FftInfluenceOperator op(grid, kEStar);
     const std::vector<double> displacement = apply_to(op, random_field(grid.size(), 7));
     double sum = 0.0;

@@ -16,6 +16,9 @@
 namespace halfspace::linalg {
 
 inline constexpr std::size_t kReductionBlocks = 64;
+// Below this many elements a loop runs on one thread: waking the team costs
+// more than the work (and stalls badly when the cores are busy).
+inline constexpr std::size_t kParallelThreshold = 16384;
 
 // Identity on one process; the hook for an all-ranks sum.
 template <std::size_t K>
@@ -30,9 +33,20 @@ inline double global_min(double local) { return local; }
 template <class Body>
 void for_each_index(std::size_t n, Body&& body) {
   const auto count = static_cast<std::ptrdiff_t>(n);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n > kParallelThreshold)
   for (std::ptrdiff_t i = 0; i < count; ++i) {
     body(static_cast<std::size_t>(i));
+  }
+}
+
+// Calls body(j) for j in [0, rows), where each call handles a row of
+// row_length elements; threaded when the total work is large enough.
+template <class Body>
+void for_each_row(std::size_t rows, std::size_t row_length, Body&& body) {
+  const auto count = static_cast<std::ptrdiff_t>(rows);
+#pragma omp parallel for schedule(static) if (rows * row_length > kParallelThreshold)
+  for (std::ptrdiff_t j = 0; j < count; ++j) {
+    body(static_cast<std::size_t>(j));
   }
 }
 
@@ -43,7 +57,7 @@ std::array<double, K> sums(std::size_t n, Term&& term) {
   std::array<std::array<double, K>, kReductionBlocks> partial{};
   const std::size_t block = (n + kReductionBlocks - 1) / kReductionBlocks;
   const auto blocks = static_cast<std::ptrdiff_t>(kReductionBlocks);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n > kParallelThreshold)
   for (std::ptrdiff_t b = 0; b < blocks; ++b) {
     const std::size_t begin = std::min(n, static_cast<std::size_t>(b) * block);
     const std::size_t end = std::min(n, begin + block);
@@ -72,7 +86,7 @@ template <class Value>
 double max_of(std::size_t n, Value&& value) {
   double result = -std::numeric_limits<double>::infinity();
   const auto count = static_cast<std::ptrdiff_t>(n);
-#pragma omp parallel for schedule(static) reduction(max : result)
+#pragma omp parallel for schedule(static) reduction(max : result) if (n > kParallelThreshold)
   for (std::ptrdiff_t i = 0; i < count; ++i) {
     result = std::max(result, value(static_cast<std::size_t>(i)));
   }
@@ -84,7 +98,7 @@ template <class Value>
 double min_of(std::size_t n, Value&& value) {
   double result = std::numeric_limits<double>::infinity();
   const auto count = static_cast<std::ptrdiff_t>(n);
-#pragma omp parallel for schedule(static) reduction(min : result)
+#pragma omp parallel for schedule(static) reduction(min : result) if (n > kParallelThreshold)
   for (std::ptrdiff_t i = 0; i < count; ++i) {
     result = std::min(result, value(static_cast<std::size_t>(i)));
   }
