@@ -13,7 +13,10 @@ packages=(
   libcli11-dev
   libtomlplusplus-dev
   libfmt-dev
-  python3 python3-numpy python3-h5py
+  libsiconos-numerics-dev
+  libalglib-dev
+  libzip-dev libpugixml-dev
+  python3 python3-numpy python3-h5py python3-matplotlib
 )
 
 missing=()
