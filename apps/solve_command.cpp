@@ -11,8 +11,7 @@
 #include "exit_codes.hpp"
 #include "halfspace/geometry/builtin_surface.hpp"
 #include "halfspace/io/result_writer.hpp"
-#include "halfspace/operators/fft_influence_operator.hpp"
-#include "halfspace/solvers/polonsky_keer.hpp"
+#include "halfspace/solvers/solver_factory.hpp"
 #include "halfspace/threads.hpp"
 #include "summary.hpp"
 
@@ -21,12 +20,11 @@ namespace halfspace::app {
 int run_solve(const SolveSetup& setup) {
   // Threads first: the FFT plans use the thread count in force when made.
   set_threads(setup.threads);
-  FftInfluenceOperator op(setup.grid, setup.e_star, setup.fft_planning);
-  solvers::PolonskyKeer solver(op, setup.solver);
+  const std::unique_ptr<ContactSolver> solver = solvers::make_solver(setup.grid, setup.e_star, setup.solver);
 
   const Eigen::ArrayXd initial_gap = geometry::initial_gap_from_heights(setup.heights);
   const auto start = std::chrono::steady_clock::now();
-  SolveResult result = solver.solve(
+  SolveResult result = solver->solve(
       std::span<const double>(initial_gap.data(), static_cast<std::size_t>(initial_gap.size())), setup.loading);
   if (result.wall_seconds <= 0.0) {
     result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -41,6 +41,7 @@ struct SolveOptions {
   std::optional<double> mean_pressure;
   std::optional<double> approach;
   // Solver.
+  std::optional<std::string> solver;
   std::optional<double> tol;
   std::optional<long long> max_iter;
   std::optional<long long> threads;

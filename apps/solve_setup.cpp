@@ -117,8 +117,16 @@ Loading loading_from(const SolveOptions& o) {
   return loading;
 }
 
-solvers::PolonskyKeerOptions solver_options_from(const SolveOptions& o) {
-  solvers::PolonskyKeerOptions solver;
+solvers::SolverSettings solver_settings_from(const SolveOptions& o) {
+  solvers::SolverSettings solver;
+  if (o.solver) {
+    const std::vector<std::string> names = solvers::solver_names();
+    if (std::find(names.begin(), names.end(), *o.solver) == names.end()) {
+      throw InputError(fmt::format("{} is invalid: the solver must be one of {}", o.describe("solver"),
+                                   fmt::join(names, ", ")));
+    }
+    solver.name = *o.solver;
+  }
   if (o.tol) {
     if (!(std::isfinite(*o.tol) && *o.tol > 0.0 && *o.tol < 1.0)) {
       throw InputError(fmt::format("{} is invalid: the tolerance must be in (0, 1)", o.describe("tol")));
@@ -131,7 +139,6 @@ solvers::PolonskyKeerOptions solver_options_from(const SolveOptions& o) {
     }
     solver.max_iterations = static_cast<int>(*o.max_iter);
   }
-  solver.validate();
   return solver;
 }
 
@@ -291,9 +298,9 @@ SolveSetup make_solve_setup(const SolveOptions& options) {
   check_surface_choice(options);
   const double e_star = material_from(options);
   const Loading loading = loading_from(options);
-  solvers::PolonskyKeerOptions solver = solver_options_from(options);
+  solvers::SolverSettings solver = solver_settings_from(options);
   const int threads = threads_from(options);
-  const FftPlanning planning = in_context(
+  solver.fft_planning = in_context(
       options.name("fft-planning"), [&] { return parse_fft_planning(options.fft_planning.value_or("estimate")); });
   const Boundary boundary =
       in_context(options.name("boundary"), [&] { return parse_boundary(options.boundary.value_or("free")); });
@@ -311,7 +318,6 @@ SolveSetup make_solve_setup(const SolveOptions& options) {
                     loading,
                     std::move(solver),
                     threads,
-                    planning,
                     std::move(output),
                     options.quiet,
                     options.command_line,

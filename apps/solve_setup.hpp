@@ -9,7 +9,7 @@
 #include "halfspace/fft/fft_planning.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/solvers/loading.hpp"
-#include "halfspace/solvers/polonsky_keer.hpp"
+#include "halfspace/solvers/solver_factory.hpp"
 #include "solve_options.hpp"
 
 namespace halfspace::app {
@@ -22,9 +22,8 @@ struct SolveSetup {
   std::string height_source;  // "file.h5:/height" or "sphere (radius = 0.01 m)"
   double e_star = 0.0;        // Pa
   Loading loading;
-  solvers::PolonskyKeerOptions solver;
+  solvers::SolverSettings solver;  // name, tolerance, iterations, FFT planning
   int threads = 1;
-  FftPlanning fft_planning = FftPlanning::estimate;
   std::filesystem::path output;
   bool quiet = false;
   std::string command_line;

@@ -65,7 +65,7 @@ void print_summary(std::FILE* out, const SolveSetup& setup, const SolveResult& r
   row(out, "load", load_text(setup));
   row(out, "solver",
       fmt::format("{}, {} thread{}, FFT planning {}", result.solver, setup.threads, setup.threads == 1 ? "" : "s",
-                  to_string(setup.fft_planning)));
+                  to_string(setup.solver.fft_planning)));
   row(out, "status", stop_reason(result));
   row(out, "iterations", fmt::format("{}", result.iterations));
   row(out, "residual", fmt::format("{:.3e} (tolerance {:.3e})", result.residual, result.tolerance));

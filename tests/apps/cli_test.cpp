@@ -160,7 +160,7 @@ TEST(CliTest, SolveHelpListsEveryOptionGroup) {
   EXPECT_EQ(result.exit_code, kExitOk);
   for (const char* flag : {"--config", "--height-map", "--dataset", "--geometry", "--grid", "--size", "--boundary",
                            "--E1", "--E-star", "--force", "--mean-pressure", "--approach", "--tol", "--max-iter",
-                           "--threads", "--fft-planning", "--output", "--quiet"}) {
+                           "--threads", "--fft-planning", "--solver", "--output", "--quiet"}) {
     EXPECT_NE(result.out.find(flag), std::string::npos) << flag << " missing from:\n" << result.out;
   }
 }
@@ -320,6 +320,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"ToleranceAboveOne", {}, {{"--tol", "2"}}, "--tol 2 is invalid"},
         BadInput{"ZeroThreads", {}, {{"--threads", "0"}}, "--threads 0 is invalid"},
         BadInput{"UnknownFftPlanning", {}, {{"--fft-planning", "slow"}}, "'slow'"},
+        BadInput{"UnknownSolver", {}, {{"--solver", "magic"}}, "'magic'"},
         BadInput{"OutputInMissingDirectory",
                  {},
                  {{"--output", "/nonexistent-dir/out.h5"}},

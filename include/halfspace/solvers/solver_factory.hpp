@@ -1,0 +1,33 @@
+// Chooses a contact solver by name and builds it with the operator it needs,
+// so front ends (the CLI, sweeps) handle every solver the same way.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "halfspace/fft/fft_planning.hpp"
+#include "halfspace/grid.hpp"
+#include "halfspace/solvers/contact_solver.hpp"
+
+namespace halfspace::solvers {
+
+struct SolverSettings {
+  std::string name = "pk";       // one of solver_names()
+  double tolerance = 1e-10;      // the solver's own relative stopping tolerance
+  int max_iterations = 10000;
+  FftPlanning fft_planning = FftPlanning::estimate;  // FFT-based solvers only
+  std::function<void(int, double)> progress;         // (iteration, residual), may be empty
+};
+
+// The names make_solver accepts, in the order --help lists them.
+std::vector<std::string> solver_names();
+
+// A solver for contacts on `grid` with composite modulus e_star (Pa), owning
+// its influence operator. Uses the threads in force (set_threads) for FFT
+// plans. Throws InputError naming the solver if the name is unknown or the
+// settings are invalid for it.
+std::unique_ptr<ContactSolver> make_solver(const Grid& grid, double e_star, const SolverSettings& settings);
+
+}  // namespace halfspace::solvers

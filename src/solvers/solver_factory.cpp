@@ -1,0 +1,52 @@
+// Solver construction by name. Each solver is stored with the operator it
+// references, so the pair lives and dies together.
+#include "halfspace/solvers/solver_factory.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "halfspace/error.hpp"
+#include "halfspace/operators/fft_influence_operator.hpp"
+#include "halfspace/solvers/polonsky_keer.hpp"
+
+namespace halfspace::solvers {
+namespace {
+
+// A solver together with the operator it was built on.
+class SolverWithOperator final : public ContactSolver {
+ public:
+  SolverWithOperator(std::unique_ptr<InfluenceOperator> op, std::unique_ptr<ContactSolver> solver)
+      : op_(std::move(op)), solver_(std::move(solver)) {}
+
+  std::string_view name() const override { return solver_->name(); }
+  SolveResult solve(std::span<const double> initial_gap, const Loading& loading,
+                    std::span<const double> initial_pressure) override {
+    return solver_->solve(initial_gap, loading, initial_pressure);
+  }
+
+ private:
+  std::unique_ptr<InfluenceOperator> op_;
+  std::unique_ptr<ContactSolver> solver_;
+};
+
+std::unique_ptr<ContactSolver> make_polonsky_keer(const Grid& grid, double e_star, const SolverSettings& settings) {
+  PolonskyKeerOptions options;
+  options.tolerance = settings.tolerance;
+  options.max_iterations = settings.max_iterations;
+  options.progress = settings.progress;
+  auto op = std::make_unique<FftInfluenceOperator>(grid, e_star, settings.fft_planning);
+  auto solver = std::make_unique<PolonskyKeer>(*op, options);
+  return std::make_unique<SolverWithOperator>(std::move(op), std::move(solver));
+}
+
+}  // namespace
+
+std::vector<std::string> solver_names() { return {"pk"}; }
+
+std::unique_ptr<ContactSolver> make_solver(const Grid& grid, double e_star, const SolverSettings& settings) {
+  if (settings.name == "pk") return make_polonsky_keer(grid, e_star, settings);
+  throw InputError(fmt::format("solver '{}' is not known: use one of {}", settings.name,
+                               fmt::join(solver_names(), ", ")));
+}
+
+}  // namespace halfspace::solvers
