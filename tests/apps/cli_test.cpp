@@ -320,7 +320,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"ToleranceAboveOne", {}, {{"--tol", "2"}}, "--tol 2 is invalid"},
         BadInput{"ZeroThreads", {}, {{"--threads", "0"}}, "--threads 0 is invalid"},
         BadInput{"UnknownFftPlanning", {}, {{"--fft-planning", "slow"}}, "'slow'"},
-        BadInput{"UnknownSolver", {}, {{"--solver", "magic"}}, "'magic'"},
+        BadInput{"UnknownSolver", {}, {{"--solver", "magic"}}, "--solver magic is invalid"},
         BadInput{"OutputInMissingDirectory",
                  {},
                  {{"--output", "/nonexistent-dir/out.h5"}},
