@@ -13,6 +13,7 @@
 #include "halfspace/io/result_writer.hpp"
 #include "halfspace/solvers/solver_factory.hpp"
 #include "halfspace/threads.hpp"
+#include "solve_options.hpp"
 #include "summary.hpp"
 
 namespace halfspace::app {
@@ -50,6 +51,18 @@ int run_solve(const SolveSetup& setup) {
     return kExitNotConverged;
   }
   return kExitOk;
+}
+
+Command add_solve_command(CLI::App& program) {
+  CLI::App* solve = program.add_subcommand(
+      "solve", "Solve one contact problem and write the pressure, gap and displacement to an HDF5 file");
+  solve->footer("Options can also come from --config FILE.toml; see docs/usage.md.");
+  add_solve_options(*solve);
+  return {solve, [solve](const std::vector<std::string>& argv) {
+            SolveOptions options = solve_options_from_command_line(*solve, argv);
+            merge_config_file(options);
+            return run_solve(make_solve_setup(options));
+          }};
 }
 
 }  // namespace halfspace::app

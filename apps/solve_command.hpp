@@ -2,6 +2,7 @@
 // Polonsky-Keer solver, writes the result file and reports.
 #pragma once
 
+#include "command.hpp"
 #include "solve_setup.hpp"
 
 namespace halfspace::app {
@@ -11,5 +12,8 @@ namespace halfspace::app {
 // kExitNotConverged after printing the reason to stderr. Throws InputError
 // (FileError) when the result cannot be written.
 int run_solve(const SolveSetup& setup);
+
+// Registers `solve` on the program's parser.
+Command add_solve_command(CLI::App& program);
 
 }  // namespace halfspace::app
