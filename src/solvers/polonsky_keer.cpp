@@ -51,12 +51,13 @@ void PolonskyKeerOptions::validate() const {
   }
 }
 
-PolonskyKeer::PolonskyKeer(InfluenceOperator& op, PolonskyKeerOptions options)
-    : op_(op), options_(std::move(options)) {
+PolonskyKeer::PolonskyKeer(InfluenceOperator& op, PolonskyKeerOptions options, Preconditioner* preconditioner)
+    : op_(op), options_(std::move(options)), preconditioner_(preconditioner) {
   options_.validate();
   const auto n = static_cast<Eigen::Index>(op_.grid().size());
   direction_.setZero(n);
   direction_image_.setZero(n);
+  if (preconditioner_) preconditioned_gap_.setZero(n);
 }
 
 SolveResult PolonskyKeer::solve(std::span<const double> initial_gap, const Loading& loading,
@@ -105,6 +106,8 @@ SolveResult PolonskyKeer::solve(std::span<const double> initial_gap, const Loadi
   double* g = result.gap.data();
   double* t = direction_.data();
   double* r = direction_image_.data();
+  // The search direction is built from z: the gap itself, or M^-1 g.
+  double* z = preconditioner_ ? preconditioned_gap_.data() : g;
   const std::span<const double> pressure_view(p, n);
   const std::span<double> displacement_view(u, n);
   const double k_self = op_.self_influence();
@@ -184,10 +187,26 @@ SolveResult PolonskyKeer::solve(std::span<const double> initial_gap, const Loadi
       continue;
     }
 
+    // Step 2 with a preconditioner: z = M^-1 g on C (r serves as scratch),
+    // mean-free on C under load control like g itself; G = sum over C of g z.
+    double search_norm = gap_norm;
+    if (preconditioner_) {
+      for_each_index(n, [&](std::size_t i) { r[i] = p[i] > 0.0 ? g[i] : 0.0; });
+      preconditioner_->apply({r, n}, {z, n});
+      ++result.preconditioner_applications;
+      const auto [z_sum, gz] = sums<2>(n, [&](std::size_t i) {
+        return p[i] > 0.0 ? std::array<double, 2>{z[i], g[i] * z[i]} : std::array<double, 2>{0.0, 0.0};
+      });
+      const double z_mean = problem.load_controlled ? z_sum / contact_cells : 0.0;
+      for_each_index(n, [&](std::size_t i) { z[i] -= z_mean; });
+      // sum over C of g is zero under load control, so subtracting z_mean leaves g.z unchanged.
+      search_norm = gz;
+    }
+
     // Step 3: conjugate direction on the contact set.
-    const double beta = conjugate ? gap_norm / previous_norm : 0.0;
-    for_each_index(n, [&](std::size_t i) { t[i] = p[i] > 0.0 ? g[i] + beta * t[i] : 0.0; });
-    previous_norm = gap_norm;
+    const double beta = conjugate ? search_norm / previous_norm : 0.0;
+    for_each_index(n, [&](std::size_t i) { t[i] = p[i] > 0.0 ? z[i] + beta * t[i] : 0.0; });
+    previous_norm = search_norm;
 
     // Step 4: its image r = K t, mean-corrected on C under load control.
     op_.apply({t, n}, {r, n});

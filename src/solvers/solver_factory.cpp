@@ -7,16 +7,18 @@
 
 #include "halfspace/error.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
+#include "halfspace/solvers/fourier_preconditioner.hpp"
 #include "halfspace/solvers/polonsky_keer.hpp"
 
 namespace halfspace::solvers {
 namespace {
 
-// A solver together with the operator it was built on.
+// A solver together with the operator (and preconditioner) it was built on.
 class SolverWithOperator final : public ContactSolver {
  public:
-  SolverWithOperator(std::unique_ptr<InfluenceOperator> op, std::unique_ptr<ContactSolver> solver)
-      : op_(std::move(op)), solver_(std::move(solver)) {}
+  SolverWithOperator(std::unique_ptr<InfluenceOperator> op, std::unique_ptr<Preconditioner> preconditioner,
+                     std::unique_ptr<ContactSolver> solver)
+      : op_(std::move(op)), preconditioner_(std::move(preconditioner)), solver_(std::move(solver)) {}
 
   std::string_view name() const override { return solver_->name(); }
   SolveResult solve(std::span<const double> initial_gap, const Loading& loading,
@@ -26,25 +28,30 @@ class SolverWithOperator final : public ContactSolver {
 
  private:
   std::unique_ptr<InfluenceOperator> op_;
+  std::unique_ptr<Preconditioner> preconditioner_;
   std::unique_ptr<ContactSolver> solver_;
 };
 
-std::unique_ptr<ContactSolver> make_polonsky_keer(const Grid& grid, double e_star, const SolverSettings& settings) {
+std::unique_ptr<ContactSolver> make_polonsky_keer(const Grid& grid, double e_star, const SolverSettings& settings,
+                                                  bool preconditioned) {
   PolonskyKeerOptions options;
   options.tolerance = settings.tolerance;
   options.max_iterations = settings.max_iterations;
   options.progress = settings.progress;
   auto op = std::make_unique<FftInfluenceOperator>(grid, e_star, settings.fft_planning);
-  auto solver = std::make_unique<PolonskyKeer>(*op, options);
-  return std::make_unique<SolverWithOperator>(std::move(op), std::move(solver));
+  std::unique_ptr<Preconditioner> preconditioner;
+  if (preconditioned) preconditioner = std::make_unique<FourierPreconditioner>(grid, e_star, settings.fft_planning);
+  auto solver = std::make_unique<PolonskyKeer>(*op, options, preconditioner.get());
+  return std::make_unique<SolverWithOperator>(std::move(op), std::move(preconditioner), std::move(solver));
 }
 
 }  // namespace
 
-std::vector<std::string> solver_names() { return {"pk"}; }
+std::vector<std::string> solver_names() { return {"pk", "pk-fourier"}; }
 
 std::unique_ptr<ContactSolver> make_solver(const Grid& grid, double e_star, const SolverSettings& settings) {
-  if (settings.name == "pk") return make_polonsky_keer(grid, e_star, settings);
+  if (settings.name == "pk") return make_polonsky_keer(grid, e_star, settings, false);
+  if (settings.name == "pk-fourier") return make_polonsky_keer(grid, e_star, settings, true);
   throw InputError(fmt::format("solver '{}' is not known: use one of {}", settings.name,
                                fmt::join(solver_names(), ", ")));
 }

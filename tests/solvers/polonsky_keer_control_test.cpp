@@ -10,12 +10,17 @@
 #include "halfspace/operators/fft_influence_operator.hpp"
 #include "halfspace/solvers/polonsky_keer.hpp"
 #include "support/contact_checks.hpp"
+#include "support/pk_variants.hpp"
 #include "support/grid_fields.hpp"
 
 namespace halfspace {
 namespace {
 
 using testing::expect_contact_conditions;
+using testing::PkSolver;
+using testing::PkVariant;
+
+class PolonskyKeerControlTest : public ::testing::TestWithParam<PkVariant> {};
 using testing::field_from;
 
 constexpr double kEStar = 1e11;
@@ -42,11 +47,12 @@ Eigen::ArrayXd random_periodic_gap(const Grid& grid, double rms_scale) {
   return h.maxCoeff() - h;
 }
 
-void expect_round_trip(const Grid& grid, const Eigen::ArrayXd& gap0, const Loading& loading, double gap_tolerance) {
+void expect_round_trip(const Grid& grid, const Eigen::ArrayXd& gap0, const Loading& loading, double gap_tolerance,
+                       PkVariant variant) {
   FftInfluenceOperator op(grid, kEStar);
   solvers::PolonskyKeerOptions options;
   options.tolerance = 1e-12;
-  solvers::PolonskyKeer solver(op, options);
+  PkSolver solver(op, kEStar, variant, options);
   const SolveResult loaded = solver.solve({gap0.data(), grid.size()}, loading);
   ASSERT_TRUE(loaded.converged()) << loaded.message;
   expect_contact_conditions(loaded, gap_tolerance);
@@ -63,32 +69,32 @@ void expect_round_trip(const Grid& grid, const Eigen::ArrayXd& gap0, const Loadi
   EXPECT_LE(pressure_error, kRoundTripTolerance);
 }
 
-TEST(PolonskyKeerControlTest, ApproachUnderLoadImposedBackReturnsTheLoadFree2D) {
+TEST_P(PolonskyKeerControlTest, ApproachUnderLoadImposedBackReturnsTheLoadFree2D) {
   const Grid grid = Grid::plane(48, 40, 2e-6, 2.5e-6, Boundary::free);
   const double radius = 0.01;
   const Eigen::ArrayXd gap0 = field_from(grid, [&](double x, double y) { return (x * x + y * y) / (2 * radius); });
-  expect_round_trip(grid, gap0, Loading::force(2.0), 1e-9 * gap0.maxCoeff());
+  expect_round_trip(grid, gap0, Loading::force(2.0), 1e-9 * gap0.maxCoeff(), GetParam());
 }
 
-TEST(PolonskyKeerControlTest, ApproachUnderLoadImposedBackReturnsTheLoadPeriodicRough) {
+TEST_P(PolonskyKeerControlTest, ApproachUnderLoadImposedBackReturnsTheLoadPeriodicRough) {
   const Grid grid = Grid::plane(64, 64, 1e-6, 1e-6, Boundary::periodic);
   const Eigen::ArrayXd gap0 = random_periodic_gap(grid, 1e-7);
-  expect_round_trip(grid, gap0, Loading::mean_pressure(5e7), 1e-9 * gap0.maxCoeff());
+  expect_round_trip(grid, gap0, Loading::mean_pressure(5e7), 1e-9 * gap0.maxCoeff(), GetParam());
 }
 
-TEST(PolonskyKeerControlTest, ApproachUnderLoadImposedBackReturnsTheLoadFree1D) {
+TEST_P(PolonskyKeerControlTest, ApproachUnderLoadImposedBackReturnsTheLoadFree1D) {
   const Grid grid = Grid::line(257, 1e-6, Boundary::free);
   const Eigen::ArrayXd gap0 = field_from(grid, [](double x, double) { return x * x / (2 * 0.01); });
-  expect_round_trip(grid, gap0, Loading::force(5e4), 1e-9 * gap0.maxCoeff());
+  expect_round_trip(grid, gap0, Loading::force(5e4), 1e-9 * gap0.maxCoeff(), GetParam());
 }
 
-TEST(PolonskyKeerControlTest, ReportsIterationLimitAsStatus) {
+TEST_P(PolonskyKeerControlTest, ReportsIterationLimitAsStatus) {
   const Grid grid = Grid::plane(32, 32, 1e-6, 1e-6, Boundary::periodic);
   const Eigen::ArrayXd gap0 = random_periodic_gap(grid, 1e-7);
   FftInfluenceOperator op(grid, kEStar);
   solvers::PolonskyKeerOptions options;
   options.max_iterations = 2;
-  solvers::PolonskyKeer solver(op, options);
+  PkSolver solver(op, kEStar, GetParam(), options);
   const SolveResult result = solver.solve({gap0.data(), grid.size()}, Loading::mean_pressure(1e7));
   EXPECT_EQ(result.status, SolveStatus::iteration_limit);
   EXPECT_EQ(result.iterations, 2);
@@ -97,11 +103,11 @@ TEST(PolonskyKeerControlTest, ReportsIterationLimitAsStatus) {
   EXPECT_EQ(result.residual_history.size(), 3u);
 }
 
-TEST(PolonskyKeerControlTest, RefusesInvalidLoadingAndOptions) {
+TEST_P(PolonskyKeerControlTest, RefusesInvalidLoadingAndOptions) {
   const Grid grid = Grid::line(16, 1e-6, Boundary::periodic);
   const Eigen::ArrayXd gap0 = field_from(grid, [](double x, double) { return x * x; });
   FftInfluenceOperator op(grid, kEStar);
-  solvers::PolonskyKeer solver(op);
+  PkSolver solver(op, kEStar, GetParam());
   EXPECT_THROW(solver.solve({gap0.data(), grid.size()}, Loading::force(-1.0)), InputError);
   EXPECT_THROW(solver.solve({gap0.data(), grid.size()}, Loading::mean_pressure(0.0)), InputError);
   // Periodic displacement control beyond the mean gap would need infinite pressure.
@@ -116,6 +122,9 @@ TEST(PolonskyKeerControlTest, RefusesInvalidLoadingAndOptions) {
   bad.tolerance = 0.0;
   EXPECT_THROW(solvers::PolonskyKeer(op, bad), InputError);
 }
+
+INSTANTIATE_TEST_SUITE_P(Variants, PolonskyKeerControlTest, ::testing::Values(PkVariant::plain, PkVariant::fourier),
+                         testing::variant_name);
 
 }  // namespace
 }  // namespace halfspace

@@ -10,6 +10,7 @@
 #include "halfspace/solvers/polonsky_keer.hpp"
 #include "support/analytic_solutions.hpp"
 #include "support/contact_checks.hpp"
+#include "support/pk_variants.hpp"
 #include "support/grid_fields.hpp"
 
 namespace halfspace {
@@ -17,6 +18,10 @@ namespace {
 
 using testing::centred_x;
 using testing::expect_contact_conditions;
+using testing::PkSolver;
+using testing::PkVariant;
+
+class PolonskyKeerHertzTest : public ::testing::TestWithParam<PkVariant> {};
 using testing::field_from;
 
 constexpr double kEStar = 1.1e11;       // Pa, steel on steel
@@ -35,14 +40,14 @@ struct PointContactErrors {
   double approach_error;  // relative
 };
 
-PointContactErrors solve_hertz_point(std::size_t n) {
+PointContactErrors solve_hertz_point(std::size_t n, PkVariant variant) {
   const auto hertz = testing::hertz_point(kForce, kSphereRadius, kEStar);
   const double size = 3.0 * hertz.radius;
   const Grid grid = Grid::plane(n, n, size / static_cast<double>(n), size / static_cast<double>(n), Boundary::free);
   const Eigen::ArrayXd gap0 = field_from(grid, [](double x, double y) { return (x * x + y * y) / (2 * kSphereRadius); });
 
   FftInfluenceOperator op(grid, kEStar);
-  solvers::PolonskyKeer solver(op);
+  PkSolver solver(op, kEStar, variant);
   const SolveResult result = solver.solve({gap0.data(), grid.size()}, Loading::force(kForce));
   EXPECT_TRUE(result.converged()) << result.message;
   EXPECT_NEAR(result.total_force, kForce, kForceBalanceTolerance * kForce);
@@ -59,9 +64,9 @@ PointContactErrors solve_hertz_point(std::size_t n) {
   return errors;
 }
 
-TEST(PolonskyKeerHertzTest, ReproducesHertzPointContactAndConvergesUnderRefinement) {
-  const PointContactErrors coarse = solve_hertz_point(33);
-  const PointContactErrors fine = solve_hertz_point(65);
+TEST_P(PolonskyKeerHertzTest, ReproducesHertzPointContactAndConvergesUnderRefinement) {
+  const PointContactErrors coarse = solve_hertz_point(33, GetParam());
+  const PointContactErrors fine = solve_hertz_point(65, GetParam());
   for (const auto& e : {coarse, fine}) {
     EXPECT_LE(e.radius_error_cells, 1.0);
     EXPECT_LE(e.peak_error, kHertzRelativeTolerance);
@@ -80,14 +85,14 @@ struct LineContactErrors {
 constexpr double kCylinderRadius = 0.01875;  // m, R1 = 0.05, R2 = 0.03 combined
 constexpr double kLineLoad = 1e5;            // N/m
 
-LineContactErrors solve_hertz_line(std::size_t n) {
+LineContactErrors solve_hertz_line(std::size_t n, PkVariant variant) {
   const auto hertz = testing::hertz_line(kLineLoad, kCylinderRadius, kEStar);
   const double size = 3.0 * hertz.half_width;
   const Grid grid = Grid::line(n, size / static_cast<double>(n), Boundary::free);
   const Eigen::ArrayXd gap0 = field_from(grid, [](double x, double) { return x * x / (2 * kCylinderRadius); });
 
   FftInfluenceOperator op(grid, kEStar);
-  solvers::PolonskyKeer solver(op);
+  PkSolver solver(op, kEStar, variant);
   const SolveResult result = solver.solve({gap0.data(), grid.size()}, Loading::force(kLineLoad));
   EXPECT_TRUE(result.converged()) << result.message;
   EXPECT_NEAR(result.total_force, kLineLoad, kForceBalanceTolerance * kLineLoad);
@@ -109,9 +114,9 @@ LineContactErrors solve_hertz_line(std::size_t n) {
   return errors;
 }
 
-TEST(PolonskyKeerHertzTest, ReproducesHertzLineContactAndConvergesUnderRefinement) {
-  const LineContactErrors coarse = solve_hertz_line(301);
-  const LineContactErrors fine = solve_hertz_line(1201);
+TEST_P(PolonskyKeerHertzTest, ReproducesHertzLineContactAndConvergesUnderRefinement) {
+  const LineContactErrors coarse = solve_hertz_line(301, GetParam());
+  const LineContactErrors fine = solve_hertz_line(1201, GetParam());
   for (const auto& e : {coarse, fine}) {
     EXPECT_LE(e.half_width_error, kHertzRelativeTolerance);
     EXPECT_LE(e.peak_error, kHertzRelativeTolerance);
@@ -120,6 +125,9 @@ TEST(PolonskyKeerHertzTest, ReproducesHertzLineContactAndConvergesUnderRefinemen
   EXPECT_LT(fine.half_width_error, coarse.half_width_error);
   EXPECT_LT(fine.profile_error, coarse.profile_error);
 }
+
+INSTANTIATE_TEST_SUITE_P(Variants, PolonskyKeerHertzTest, ::testing::Values(PkVariant::plain, PkVariant::fourier),
+                         testing::variant_name);
 
 }  // namespace
 }  // namespace halfspace

@@ -10,6 +10,7 @@
 #include "halfspace/solvers/polonsky_keer.hpp"
 #include "support/analytic_solutions.hpp"
 #include "support/contact_checks.hpp"
+#include "support/pk_variants.hpp"
 #include "support/grid_fields.hpp"
 
 namespace halfspace {
@@ -17,6 +18,10 @@ namespace {
 
 using testing::centred_x;
 using testing::expect_contact_conditions;
+using testing::PkSolver;
+using testing::PkVariant;
+
+class PolonskyKeerPeriodicTest : public ::testing::TestWithParam<PkVariant> {};
 using testing::field_from;
 
 constexpr double kEStar = 2.0e9;        // Pa
@@ -27,7 +32,7 @@ constexpr double kWestergaardTolerance = 0.005;
 // Full contact: one Fourier mode, so the discrete solution is exact to rounding.
 constexpr double kFullContactTolerance = 1e-8;
 
-TEST(PolonskyKeerPeriodicTest, ReproducesWestergaardHalfWidthAndProfile) {
+TEST_P(PolonskyKeerPeriodicTest, ReproducesWestergaardHalfWidthAndProfile) {
   const std::size_t n = 4096;
   const Grid grid = Grid::line(n, kWavelength / static_cast<double>(n), Boundary::periodic);
   const testing::Westergaard exact{kWavelength, kAmplitude, kEStar};
@@ -35,7 +40,7 @@ TEST(PolonskyKeerPeriodicTest, ReproducesWestergaardHalfWidthAndProfile) {
     return kAmplitude * (1.0 - std::cos(2.0 * std::numbers::pi * x / kWavelength));
   });
   FftInfluenceOperator op(grid, kEStar);
-  solvers::PolonskyKeer solver(op);
+  PkSolver solver(op, kEStar, GetParam());
 
   for (const double fraction : {0.05, 0.3, 0.7}) {
     const double mean_pressure = fraction * exact.full_contact_pressure();
@@ -61,7 +66,7 @@ TEST(PolonskyKeerPeriodicTest, ReproducesWestergaardHalfWidthAndProfile) {
   }
 }
 
-TEST(PolonskyKeerPeriodicTest, TwoDimensionalWaveIsInFullContactAtAndAboveCriticalPressure) {
+TEST_P(PolonskyKeerPeriodicTest, TwoDimensionalWaveIsInFullContactAtAndAboveCriticalPressure) {
   const std::size_t n = 64;
   const double h = kWavelength / static_cast<double>(n);
   const Grid grid = Grid::plane(n, n, h, h, Boundary::periodic);
@@ -71,7 +76,7 @@ TEST(PolonskyKeerPeriodicTest, TwoDimensionalWaveIsInFullContactAtAndAboveCritic
   const double critical = std::numbers::sqrt2 * std::numbers::pi * kEStar * kAmplitude / kWavelength;
 
   FftInfluenceOperator op(grid, kEStar);
-  solvers::PolonskyKeer solver(op);
+  PkSolver solver(op, kEStar, GetParam());
   for (const double ratio : {1.0, 1.5}) {
     const double mean_pressure = ratio * critical;
     const SolveResult result = solver.solve({gap0.data(), grid.size()}, Loading::mean_pressure(mean_pressure));
@@ -88,6 +93,9 @@ TEST(PolonskyKeerPeriodicTest, TwoDimensionalWaveIsInFullContactAtAndAboveCritic
     }
   }
 }
+
+INSTANTIATE_TEST_SUITE_P(Variants, PolonskyKeerPeriodicTest, ::testing::Values(PkVariant::plain, PkVariant::fourier),
+                         testing::variant_name);
 
 }  // namespace
 }  // namespace halfspace

@@ -29,6 +29,7 @@ struct SolveResult {
   double tolerance = 0.0;               // the tolerance it was compared with
   std::vector<double> residual_history; // one entry per iteration
   int operator_applications = 0;        // number of K*p products
+  int preconditioner_applications = 0;  // number of M^-1 g products (each one FFT pair)
 
   double approach = 0.0;          // rigid-body approach (m)
   double total_force = 0.0;       // N in 2D, N/m in 1D

@@ -1,0 +1,29 @@
+// The Fourier preconditioner E*|q|/2: the exact inverse of the periodic
+// half-space kernel 2/(E*|q|), used as an approximate inverse of K on any grid.
+#pragma once
+
+#include <memory>
+
+#include "halfspace/fft/fft_planning.hpp"
+#include "halfspace/grid.hpp"
+#include "halfspace/solvers/preconditioner.hpp"
+
+namespace halfspace::solvers {
+
+class FourierPreconditioner final : public Preconditioner {
+ public:
+  // Plans an unpadded transform of the grid (free grids too: the
+  // preconditioner need only be close to K^-1, not equal to it). The mean
+  // mode, where E*|q|/2 vanishes, gets the value of the smallest non-zero
+  // wavenumber so that M^-1 stays positive definite.
+  FourierPreconditioner(const Grid& grid, double e_star, FftPlanning planning = FftPlanning::estimate);
+  ~FourierPreconditioner() override;
+
+  void apply(std::span<const double> in, std::span<double> out) override;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace halfspace::solvers
