@@ -19,6 +19,10 @@ namespace {
 using linalg::for_each_index;
 using linalg::sums;
 
+// The displacement is updated incrementally between exact products K p; an
+// exact one every this many updates keeps rounding from accumulating.
+constexpr int kUpdatesBetweenExactProducts = 50;
+
 struct Problem {
   std::span<const double> initial_gap;
   bool load_controlled;
@@ -136,31 +140,50 @@ SolveResult PolonskyKeer::solve(std::span<const double> initial_gap, const Loadi
   bool conjugate = false;      // delta: false right after a reset
   double approach = problem.approach;
   double residual = 0.0;
-  int iteration = 0;
-  for (;; ++iteration) {
-    // Step 1: displacement and gap of the current pressure.
+  double contact_cells = 0.0;
+  double gap_norm = 0.0;
+
+  // u = K p computed afresh (rather than updated, see steps 6-8).
+  int updates_since_exact = 0;
+  auto compute_displacement = [&] {
     op_.apply(pressure_view, displacement_view);
     ++result.operator_applications;
-    const auto [contact_gap_sum, contact_cells] = sums<2>(n, [&](std::size_t i) {
+    updates_since_exact = 0;
+  };
+  // Step 1: gap of the current pressure, its approach under load control,
+  // the residual (see the header) and G = sum over C of g^2.
+  auto evaluate = [&] {
+    const auto [contact_gap_sum, contact_count] = sums<2>(n, [&](std::size_t i) {
       return p[i] > 0.0 ? std::array<double, 2>{initial_gap[i] + u[i], 1.0} : std::array<double, 2>{0.0, 0.0};
     });
+    contact_cells = contact_count;
     if (problem.load_controlled) {
       // The approach makes the mean gap on the contact set vanish.
       approach = contact_gap_sum / contact_cells;
     }
     const double u_max = linalg::max_of(n, [&](std::size_t i) { return u[i]; });
     const double u_min = linalg::min_of(n, [&](std::size_t i) { return u[i]; });
-
-    // Step 2, fused with the residual: G = sum over C of g^2.
-    const auto [weighted_gap, overlap, pressure_sum, gap_norm] = sums<4>(n, [&](std::size_t i) {
+    const auto [weighted_gap, overlap, pressure_sum, contact_gap_norm] = sums<4>(n, [&](std::size_t i) {
       g[i] = initial_gap[i] + u[i] - approach;
-      const bool in_contact = p[i] > 0.0;
       return std::array<double, 4>{p[i] * std::abs(g[i]), std::max(-g[i], 0.0), p[i],
-                                   in_contact ? g[i] * g[i] : 0.0};
+                                   p[i] > 0.0 ? g[i] * g[i] : 0.0};
     });
+    gap_norm = contact_gap_norm;
     const double gap_scale = std::max(problem.initial_gap_range + (u_max - u_min), 0.0);
     const double numerator = (pressure_sum > 0.0 ? weighted_gap * cells / pressure_sum : 0.0) + overlap;
     residual = numerator == 0.0 ? 0.0 : numerator / (cells * gap_scale);
+  };
+
+  compute_displacement();
+  int iteration = 0;
+  for (;; ++iteration) {
+    if (updates_since_exact >= kUpdatesBetweenExactProducts) compute_displacement();
+    evaluate();
+    if (residual <= options_.tolerance && updates_since_exact > 0) {
+      // Convergence is judged on the exact product only.
+      compute_displacement();
+      evaluate();
+    }
     result.residual_history.push_back(residual);
     if (options_.progress) options_.progress(iteration, residual);
 
@@ -183,6 +206,7 @@ SolveResult PolonskyKeer::solve(std::span<const double> initial_gap, const Loadi
       // Displacement control lost every contact cell: restart from the local
       // overlap of the current gap.
       local_overlap_pressure({g, n}, k_self, p);
+      compute_displacement();
       conjugate = false;
       continue;
     }
@@ -228,23 +252,39 @@ SolveResult PolonskyKeer::solve(std::span<const double> initial_gap, const Loadi
 
     // Steps 6-8: move along t, clip to p >= 0, and let cells that are out of
     // contact but interpenetrate (g < 0) enter with pressure -tau g; any such
-    // entry resets the conjugacy.
-    const auto [new_pressure_sum, entered] = sums<2>(n, [&](std::size_t i) {
-      double pi = std::max(p[i] - tau * t[i], 0.0);
+    // entry resets the conjugacy. The displacement follows without a new
+    // product: K(p - tau t) = u - tau r, plus K c for the correction c that
+    // clipping and entries add, which is zero once the contact set settles.
+    // r is not needed after this pass, so it holds c.
+    const auto [new_pressure_sum, entered, corrected] = sums<3>(n, [&](std::size_t i) {
+      const double moved = p[i] - tau * t[i];
+      double pi = std::max(moved, 0.0);
       double entry = 0.0;
       if (pi == 0.0 && g[i] < 0.0) {
         pi = -tau * g[i];
         entry = 1.0;
       }
       p[i] = pi;
-      return std::array<double, 2>{pi, entry};
+      u[i] -= tau * r[i];
+      r[i] = pi - moved;
+      return std::array<double, 3>{pi, entry, r[i] != 0.0 ? 1.0 : 0.0};
     });
     conjugate = entered == 0.0;
+    if (corrected > 0.0) {
+      // g is recomputed from u in step 1, so it can receive K c.
+      op_.apply({r, n}, {g, n});
+      ++result.operator_applications;
+      for_each_index(n, [&](std::size_t i) { u[i] += g[i]; });
+    }
+    ++updates_since_exact;
 
-    // Step 9: restore the load.
+    // Step 9: restore the load (K is linear: u scales with p).
     if (problem.load_controlled) {
       const double scale = problem.target_force / (problem.cell_area * new_pressure_sum);
-      for_each_index(n, [&](std::size_t i) { p[i] *= scale; });
+      for_each_index(n, [&](std::size_t i) {
+        p[i] *= scale;
+        u[i] *= scale;
+      });
     }
   }
 
