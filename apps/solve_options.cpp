@@ -78,7 +78,7 @@ const std::array kOptions{
                "force over the domain area (Pa)"},
     OptionSpec{"approach", &SolveOptions::approach, Kind::number, kLoad, "M",
                "imposed rigid-body approach (m): displacement control"},
-    OptionSpec{"solver", &SolveOptions::solver, Kind::text, kSolver, "NAME", "contact solver: pk (Polonsky-Keer, FFT) [pk]"},
+    OptionSpec{"solver", &SolveOptions::solver, Kind::text, kSolver, "NAME", "contact solver: pk-fourier (Polonsky-Keer with Fourier preconditioner), pk (plain Polonsky-Keer) [pk-fourier]"},
     OptionSpec{"tol", &SolveOptions::tol, Kind::number, kSolver, "X", "relative residual tolerance [1e-10]"},
     OptionSpec{"max-iter", &SolveOptions::max_iter, Kind::integer, kSolver, "N", "iteration limit [10000]"},
     OptionSpec{"threads", &SolveOptions::threads, Kind::integer, kSolver, "N",

@@ -47,7 +47,7 @@ std::unique_ptr<ContactSolver> make_polonsky_keer(const Grid& grid, double e_sta
 
 }  // namespace
 
-std::vector<std::string> solver_names() { return {"pk", "pk-fourier"}; }
+std::vector<std::string> solver_names() { return {"pk-fourier", "pk"}; }
 
 std::unique_ptr<ContactSolver> make_solver(const Grid& grid, double e_star, const SolverSettings& settings) {
   if (settings.name == "pk") return make_polonsky_keer(grid, e_star, settings, false);

@@ -1,0 +1,213 @@
+// The contact problem as a non-dimensional dense LCP (units and the mixed LCP
+// of load control are explained in the header), and the way back to a
+// SolveResult in SI units.
+#include "halfspace/solvers/dense_contact.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "halfspace/error.hpp"
+#include "halfspace/material.hpp"
+#include "halfspace/operators/dense_influence_operator.hpp"
+
+namespace halfspace::solvers {
+namespace {
+
+void check_size(std::string_view what, std::size_t got, std::size_t expected) {
+  if (got != expected) {
+    throw InputError(fmt::format("{} has {} entries, but the grid has {} cells", what, got, expected));
+  }
+}
+
+std::string memory_string(double bytes) {
+  constexpr double kMiB = 1024.0 * 1024.0;
+  constexpr double kGiB = 1024.0 * kMiB;
+  return bytes < kGiB ? fmt::format("{:.0f} MiB", bytes / kMiB) : fmt::format("{:.1f} GiB", bytes / kGiB);
+}
+
+// Total force (N, N/m in 1D) of a load-controlled problem.
+double target_force(const Grid& grid, const Loading& loading) {
+  return loading.mode == ControlMode::mean_pressure ? loading.value * grid.domain_area() : loading.value;
+}
+
+// The automatic pressure unit: the mean pressure under load control; under
+// displacement control the pressure that would push the deepest cell in by
+// its overlap on its own, or the one that closes the widest gap if nothing
+// overlaps (then the solution is p = 0 and any unit will do).
+double automatic_pressure_unit(const Grid& grid, double self_influence, std::span<const double> initial_gap,
+                               const Loading& loading) {
+  if (loading.load_controlled()) return target_force(grid, loading) / grid.domain_area();
+  double overlap = 0.0;
+  double widest = 0.0;
+  for (double g : initial_gap) {
+    overlap = std::max(overlap, loading.value - g);
+    widest = std::max(widest, std::abs(g - loading.value));
+  }
+  if (overlap > 0.0) return overlap / self_influence;
+  return widest > 0.0 ? widest / self_influence : 1.0;
+}
+
+}  // namespace
+
+void DenseContactOptions::validate() const {
+  if (!(tolerance > 0.0 && tolerance < 1.0)) {
+    throw InputError(fmt::format("tolerance = {} is invalid: allowed range is (0, 1)", tolerance));
+  }
+  if (!(std::isfinite(units.length) && units.length >= 0.0)) {
+    throw InputError(fmt::format("length unit = {} m is invalid: must be finite and >= 0 (0: automatic)", units.length));
+  }
+  if (!(std::isfinite(units.pressure) && units.pressure >= 0.0)) {
+    throw InputError(
+        fmt::format("pressure unit = {} Pa is invalid: must be finite and >= 0 (0: automatic)", units.pressure));
+  }
+}
+
+void check_dense_grid(const Grid& grid, std::string_view solver) {
+  const std::size_t n = grid.size();
+  if (n <= kMaxDenseCells) return;
+  const double bytes = static_cast<double>(sizeof(double)) * static_cast<double>(n) * static_cast<double>(n);
+  throw InputError(fmt::format(
+      "solver '{}' works on the dense influence matrix and is limited to {} cells, but grid {} has {} cells "
+      "(the matrix alone would take {}): use the FFT-based solver 'pk' (--solver pk) instead",
+      solver, kMaxDenseCells, grid.shape_string(), n, memory_string(bytes)));
+}
+
+ContactLcp make_contact_lcp(const Grid& grid, double e_star, const Eigen::MatrixXd& influence,
+                            std::span<const double> initial_gap, const Loading& loading,
+                            const DenseContactOptions& options) {
+  const std::size_t n = grid.size();
+  const auto size = static_cast<Eigen::Index>(n);
+  checked_composite_modulus(e_star);
+  options.validate();
+  loading.validate();
+  check_size("initial gap", initial_gap.size(), n);
+  if (influence.rows() != size || influence.cols() != size) {
+    throw InputError(fmt::format("influence matrix is {} x {}, but the grid has {} cells", influence.rows(),
+                                 influence.cols(), n));
+  }
+  for (double g : initial_gap) {
+    if (!std::isfinite(g)) throw InputError("initial gap holds a non-finite value");
+  }
+
+  ContactLcp contact;
+  if (options.nondimensionalise) {
+    contact.length_unit = options.units.length > 0.0
+                              ? options.units.length
+                              : (grid.dimension() == 1 ? grid.dx() : std::sqrt(grid.dx() * grid.dy()));
+    contact.pressure_unit = options.units.pressure > 0.0
+                                ? options.units.pressure
+                                : automatic_pressure_unit(grid, influence(0, 0), initial_gap, loading);
+    contact.gap_unit = contact.pressure_unit * contact.length_unit / e_star;
+  }
+  const double gap_unit = contact.gap_unit;
+  const double approach = loading.load_controlled() ? 0.0 : loading.value;
+
+  LcpProblem& lcp = contact.lcp;
+  lcp.matrix = influence * (contact.pressure_unit / gap_unit);
+  lcp.offset.resize(size);
+  for (Eigen::Index i = 0; i < size; ++i) lcp.offset[i] = (initial_gap[static_cast<std::size_t>(i)] - approach) / gap_unit;
+  if (loading.load_controlled()) {
+    lcp.equality_row = Eigen::VectorXd::Ones(size);
+    lcp.equality_value = target_force(grid, loading) / (grid.cell_area() * contact.pressure_unit);
+  }
+  return contact;
+}
+
+double contact_residual(std::span<const double> initial_gap, const Eigen::ArrayXd& pressure,
+                        const Eigen::ArrayXd& displacement, const Eigen::ArrayXd& gap) {
+  const auto cells = static_cast<double>(pressure.size());
+  const auto [g0_min, g0_max] = std::minmax_element(initial_gap.begin(), initial_gap.end());
+  const double gap_scale = (*g0_max - *g0_min) + (displacement.maxCoeff() - displacement.minCoeff());
+  const double pressure_mean = pressure.sum() / cells;
+  const double weighted_gap = (pressure * gap.abs()).sum();
+  const double overlap = (-gap).max(0.0).sum();
+  const double numerator = (pressure_mean > 0.0 ? weighted_gap / pressure_mean : 0.0) + overlap;
+  return numerator == 0.0 ? 0.0 : numerator / (cells * gap_scale);
+}
+
+DenseContactSolver::DenseContactSolver(std::string_view name, const Grid& grid, double e_star,
+                                       DenseContactOptions options)
+    : name_(name), grid_(grid), e_star_(checked_composite_modulus(e_star)), options_(std::move(options)) {
+  options_.validate();
+  check_dense_grid(grid_, name_);
+  influence_ = assemble_influence_matrix(grid_, e_star_);
+}
+
+DenseContactSolver::DenseContactSolver(std::string_view name, const Grid& grid, double e_star,
+                                       Eigen::MatrixXd influence, DenseContactOptions options)
+    : name_(name),
+      grid_(grid),
+      e_star_(checked_composite_modulus(e_star)),
+      influence_(std::move(influence)),
+      options_(std::move(options)) {
+  options_.validate();
+  const auto n = static_cast<Eigen::Index>(grid_.size());
+  if (influence_.rows() != n || influence_.cols() != n) {
+    throw InputError(fmt::format("influence matrix is {} x {}, but grid {} has {} cells", influence_.rows(),
+                                 influence_.cols(), grid_.shape_string(), n));
+  }
+}
+
+SolveResult DenseContactSolver::solve(std::span<const double> initial_gap, const Loading& loading,
+                                      std::span<const double> /*initial_pressure*/) {
+  const auto start = std::chrono::steady_clock::now();
+  last_lcp_ = make_contact_lcp(grid_, e_star_, influence_, initial_gap, loading, options_);
+  last_solution_ = solve_lcp(last_lcp_.lcp);
+  const LcpSolution& lcp = last_solution_;
+  const auto n = static_cast<Eigen::Index>(grid_.size());
+
+  SolveResult result;
+  result.solver = name_;
+  result.tolerance = options_.tolerance;
+  result.iterations = lcp.iterations;
+  // A cell is in contact when its pressure exceeds its gap (both O(1) in
+  // internal units). Pivoting gives exact zeros, so this changes nothing for
+  // Lemke; an interior-point iterate is positive in both, and this picks the
+  // side of the complementarity each cell converged to.
+  result.pressure.resize(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double z = lcp.z[i];
+    result.pressure[i] = z > 0.0 && z > lcp.w[i] ? z * last_lcp_.pressure_unit : 0.0;
+  }
+  result.approach = loading.load_controlled() ? lcp.multiplier * last_lcp_.gap_unit : loading.value;
+  result.displacement = (influence_ * result.pressure.matrix()).array();
+  result.operator_applications = 1;
+  const Eigen::Map<const Eigen::ArrayXd> g0(initial_gap.data(), n);
+  result.gap = g0 + result.displacement - result.approach;
+
+  result.total_force = grid_.cell_area() * result.pressure.sum();
+  result.mean_pressure = result.total_force / grid_.domain_area();
+  result.max_pressure = result.pressure.maxCoeff();
+  result.contact_fraction = static_cast<double>((result.pressure > 0.0).count()) / static_cast<double>(n);
+  result.residual = contact_residual(initial_gap, result.pressure, result.displacement, result.gap);
+  result.residual_history = {result.residual};
+
+  switch (lcp.status) {
+    case LcpStatus::solved:
+      if (result.residual <= options_.tolerance) {
+        result.status = SolveStatus::converged;
+      } else {
+        result.status = SolveStatus::breakdown;
+        result.message = fmt::format("{} ended at a solution of its LCP, but the contact residual {:.3e} exceeds the "
+                                     "tolerance {:.3e}",
+                                     name_, result.residual, options_.tolerance);
+      }
+      break;
+    case LcpStatus::iteration_limit:
+      result.status = SolveStatus::iteration_limit;
+      result.message = lcp.message;
+      break;
+    case LcpStatus::ray_termination:
+    case LcpStatus::failure:
+      result.status = SolveStatus::breakdown;
+      result.message = lcp.message;
+      break;
+  }
+  result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace halfspace::solvers
