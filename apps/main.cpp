@@ -9,8 +9,10 @@
 
 #include "command.hpp"
 #include "exit_codes.hpp"
+#include "generate_command.hpp"
 #include "halfspace/error.hpp"
 #include "halfspace/version.hpp"
+#include "paper_command.hpp"
 #include "solve_command.hpp"
 
 int main(int argc, char** argv) {
@@ -24,6 +26,8 @@ int main(int argc, char** argv) {
   // One line per subcommand.
   std::vector<halfspace::app::Command> commands;
   commands.push_back(halfspace::app::add_solve_command(app));
+  commands.push_back(halfspace::app::add_generate_command(app));
+  commands.push_back(halfspace::app::add_paper_command(app));
 
   try {
     app.parse(argc, argv);

@@ -3,30 +3,42 @@
 #include "solve_command.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <chrono>
 #include <cstdio>
+#include <optional>
 #include <span>
 
 #include "exit_codes.hpp"
 #include "halfspace/geometry/builtin_surface.hpp"
 #include "halfspace/io/result_writer.hpp"
 #include "halfspace/solvers/solver_factory.hpp"
+#include "halfspace/surface/statistics.hpp"
 #include "halfspace/threads.hpp"
+#include "plot_tool.hpp"
+#include "progress.hpp"
 #include "solve_options.hpp"
 #include "summary.hpp"
+#include "sweep_command.hpp"
 
 namespace halfspace::app {
 
 int run_solve(const SolveSetup& setup) {
+  if (setup.load_values.size() > 1) return run_sweep(setup);
   // Threads first: the FFT plans use the thread count in force when made.
   set_threads(setup.threads);
-  const std::unique_ptr<ContactSolver> solver = solvers::make_solver(setup.grid, setup.e_star, setup.solver);
+  const std::optional<PlotTool> plot = setup.plot ? std::optional<PlotTool>(find_plot_tool()) : std::nullopt;
+  Progress progress(!setup.quiet, 1, setup.solver.tolerance);
+  solvers::SolverSettings settings = setup.solver;
+  settings.progress = progress.callback();
+  const std::unique_ptr<ContactSolver> solver = solvers::make_solver(setup.grid, setup.e_star, settings);
 
   const Eigen::ArrayXd initial_gap = geometry::initial_gap_from_heights(setup.heights);
   const auto start = std::chrono::steady_clock::now();
   SolveResult result = solver->solve(
       std::span<const double>(initial_gap.data(), static_cast<std::size_t>(initial_gap.size())), setup.loading);
+  progress.clear();
   if (result.wall_seconds <= 0.0) {
     result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
@@ -38,6 +50,10 @@ int run_solve(const SolveSetup& setup) {
   metadata.command_line = setup.command_line;
   metadata.config = setup.config_text;
   metadata.height_source = setup.height_source;
+  metadata.preparation = fmt::format("{}", fmt::join(setup.preparation, "\n"));
+  const std::span<const double> heights(setup.heights.data(), static_cast<std::size_t>(setup.heights.size()));
+  metadata.surface_statistics = surface::surface_statistics(setup.grid, heights);
+  metadata.contact_statistics = surface::contact_statistics(setup.grid, result);
   io::write_result(setup.output, setup.grid,
                    std::span<const double>(setup.heights.data(), static_cast<std::size_t>(setup.heights.size())),
                    result, metadata);
@@ -46,11 +62,19 @@ int run_solve(const SolveSetup& setup) {
     print_summary(stdout, setup, result);
     std::fflush(stdout);
   }
+  bool plotted = true;
+  if (plot) {
+    const std::string failure = run_plot_tool(*plot, "maps", setup.output, setup.quiet);
+    if (!failure.empty()) {
+      fmt::print(stderr, "error: --plot: {}; the result is written to {}\n", failure, setup.output.string());
+      plotted = false;
+    }
+  }
   if (!result.converged()) {
     fmt::print(stderr, "{}\n", non_convergence_message(setup, result));
     return kExitNotConverged;
   }
-  return kExitOk;
+  return plotted ? kExitOk : kExitPlotFailed;
 }
 
 Command add_solve_command(CLI::App& program) {

@@ -21,6 +21,7 @@ namespace {
 
 enum class Kind {
   number,      // double
+  numbers,     // doubles: one number, a list "A,B,C" or a range "START:STOP:COUNT"; a TOML array too
   integer,     // long long
   text,        // string
   path,        // string; relative paths in a config file are relative to the file
@@ -29,7 +30,8 @@ enum class Kind {
 };
 
 using Field = std::variant<std::optional<double> SolveOptions::*, std::optional<long long> SolveOptions::*,
-                           std::optional<std::string> SolveOptions::*, bool SolveOptions::*>;
+                           std::optional<std::string> SolveOptions::*, bool SolveOptions::*,
+                           std::optional<std::vector<double>> SolveOptions::*>;
 
 struct OptionSpec {
   std::string_view key;  // the long flag without "--", and the config file key
@@ -41,6 +43,7 @@ struct OptionSpec {
 };
 
 constexpr std::string_view kSurface = "Surface (exactly one of --height-map, --geometry)";
+constexpr std::string_view kPreparation = "Height-map format and preparation (applied in this order)";
 constexpr std::string_view kGrid = "Grid";
 constexpr std::string_view kMaterial = "Material (E1, nu1, E2 and nu2, or E-star)";
 constexpr std::string_view kLoad = "Load (exactly one)";
@@ -56,6 +59,18 @@ const std::array kOptions{
                "height map spacing along x (m); overrides the file's dx attribute"},
     OptionSpec{"dy", &SolveOptions::dy, Kind::number, kSurface, "M",
                "height map spacing along y (m); overrides the file's dy attribute"},
+    OptionSpec{"format", &SolveOptions::format, Kind::text, kPreparation, "NAME",
+               "height map format: auto (by extension), hdf5, npy, matrix, profile, x3p or gsf [auto]"},
+    OptionSpec{"unit", &SolveOptions::unit, Kind::text, kPreparation, "UNIT",
+               "length unit of npy, text and unlabelled GSF files: m, mm, um, nm [m]"},
+    OptionSpec{"window", &SolveOptions::window, Kind::text, kPreparation, "I0,J0,NX,NY",
+               "use only columns I0..I0+NX-1 and rows J0..J0+NY-1 (0-based; I0,NX for a profile)"},
+    OptionSpec{"invalid", &SolveOptions::invalid, Kind::text, kPreparation, "MODE",
+               "invalid (masked or NaN) points: refuse, fill (harmonic) or crop (largest valid rectangle) [refuse]"},
+    OptionSpec{"detrend", &SolveOptions::detrend, Kind::text, kPreparation, "MODE",
+               "subtract a least-squares fit: none, mean, plane or curvature [none]"},
+    OptionSpec{"pad", &SolveOptions::pad, Kind::number, kPreparation, "FACTOR",
+               "free boundary only: embed the map in a FACTOR times larger grid at its lowest height [1]"},
     OptionSpec{"geometry", &SolveOptions::geometry, Kind::text, kSurface, "SHAPE",
                "built-in surface: sphere, cylinder, flat or wavy"},
     OptionSpec{"radius", &SolveOptions::radius, Kind::number, kSurface, "M", "sphere or cylinder radius (m)"},
@@ -73,12 +88,15 @@ const std::array kOptions{
     OptionSpec{"nu2", &SolveOptions::nu2, Kind::number, kMaterial, "NU", "Poisson's ratio of body 2"},
     OptionSpec{"E-star", &SolveOptions::e_star, Kind::number, kMaterial, "PA",
                "composite modulus E* (Pa), instead of E1, nu1, E2, nu2"},
-    OptionSpec{"force", &SolveOptions::force, Kind::number, kLoad, "F", "total normal force: N (2D) or N/m (1D)"},
-    OptionSpec{"mean-pressure", &SolveOptions::mean_pressure, Kind::number, kLoad, "PA",
-               "force over the domain area (Pa)"},
-    OptionSpec{"approach", &SolveOptions::approach, Kind::number, kLoad, "M",
-               "imposed rigid-body approach (m): displacement control"},
-    OptionSpec{"solver", &SolveOptions::solver, Kind::text, kSolver, "NAME", "contact solver: pk-fourier (Polonsky-Keer with Fourier preconditioner), pk (plain Polonsky-Keer) [pk-fourier]"},
+    OptionSpec{"force", &SolveOptions::force, Kind::numbers, kLoad, "F",
+               "total normal force: N (2D) or N/m (1D); a list F1,F2,... or a log range START:STOP:COUNT "
+               "solves a sweep, each step warm-started from the previous one"},
+    OptionSpec{"mean-pressure", &SolveOptions::mean_pressure, Kind::numbers, kLoad, "PA",
+               "force over the domain area (Pa); a list or START:STOP:COUNT makes a sweep"},
+    OptionSpec{"approach", &SolveOptions::approach, Kind::numbers, kLoad, "M",
+               "imposed rigid-body approach (m): displacement control; a list or START:STOP:COUNT makes a sweep"},
+    OptionSpec{"solver", &SolveOptions::solver, Kind::text, kSolver, "NAME", "contact solver: pk-fourier (Polonsky-Keer with Fourier preconditioner), pk (plain Polonsky-Keer), "
+               "lemke (Lemke pivoting, dense, small grids), lcpquad (the paper's QP, dense, small grids) [pk-fourier]"},
     OptionSpec{"tol", &SolveOptions::tol, Kind::number, kSolver, "X", "relative residual tolerance [1e-10]"},
     OptionSpec{"max-iter", &SolveOptions::max_iter, Kind::integer, kSolver, "N", "iteration limit [10000]"},
     OptionSpec{"threads", &SolveOptions::threads, Kind::integer, kSolver, "N",
@@ -87,7 +105,10 @@ const std::array kOptions{
                "FFTW planning effort: estimate, measure or patient [estimate]"},
     OptionSpec{"output", &SolveOptions::output, Kind::path, kOutput, "FILE",
                "result file (HDF5), required; replaced if it exists"},
-    OptionSpec{"quiet", &SolveOptions::quiet, Kind::flag, kOutput, "", "print nothing unless there is an error"},
+    OptionSpec{"quiet", &SolveOptions::quiet, Kind::flag, kOutput, "",
+               "print nothing unless there is an error (no summary, no progress line)"},
+    OptionSpec{"plot", &SolveOptions::plot, Kind::flag, kOutput, "",
+               "draw PNG figures next to the output with scripts/halfspace_plot.py (maps; sweep curves)"},
 };
 
 // Options that exclude each other. Choosing an alternative on the command
@@ -104,7 +125,8 @@ struct Alternative {
 const std::vector<std::vector<Alternative>> kAlternatives{
     {{{"force"}, {"force"}}, {{"mean-pressure"}, {"mean-pressure"}}, {{"approach"}, {"approach"}}},
     {{{"E-star"}, {"E-star"}}, {{"E1", "nu1", "E2", "nu2"}, {"E1", "nu1", "E2", "nu2"}}},
-    {{{"height-map"}, {"height-map", "dataset", "dx", "dy"}},
+    {{{"height-map"},
+      {"height-map", "dataset", "dx", "dy", "format", "unit", "window", "invalid", "detrend", "pad"}},
      {{"geometry"}, {"geometry", "radius", "wavelength", "amplitude", "grid", "size"}}},
 };
 
@@ -150,6 +172,10 @@ void set_from_text(SolveOptions& options, const OptionSpec& spec, const std::str
     case Kind::number:
       options.*std::get<std::optional<double> SolveOptions::*>(spec.field) = parse_number(text, what);
       break;
+    case Kind::numbers:
+      options.*std::get<std::optional<std::vector<double>> SolveOptions::*>(spec.field) =
+          parse_number_list(text, what);
+      break;
     case Kind::integer:
       options.*std::get<std::optional<long long> SolveOptions::*>(spec.field) = parse_integer(text, what);
       break;
@@ -185,6 +211,11 @@ std::string_view toml_type_name(const toml::node& node) {
 
 // A config value as it would be written in the file, for error messages.
 std::string toml_text(const toml::node& node) {
+  if (const toml::array* array = node.as_array()) {
+    std::string text = "[";
+    for (std::size_t k = 0; k < array->size(); ++k) text += (k == 0 ? "" : ", ") + toml_text(*array->get(k));
+    return text + "]";
+  }
   if (node.is_string()) return fmt::format("\"{}\"", *node.value<std::string>());
   if (node.is_integer()) return fmt::format("{}", *node.value<long long>());
   if (node.is_floating_point()) return fmt::format("{}", *node.value<double>());
@@ -203,6 +234,24 @@ void set_from_toml(SolveOptions& options, const OptionSpec& spec, const toml::no
     case Kind::number: {
       if (!node.is_number()) throw wrong_type("a number");
       options.*std::get<std::optional<double> SolveOptions::*>(spec.field) = *node.value<double>();
+      break;
+    }
+    case Kind::numbers: {
+      const std::string what = fmt::format("{} = {} in {}", spec.key, toml_text(node), file.string());
+      std::vector<double> values;
+      if (node.is_number()) {
+        values.push_back(*node.value<double>());
+      } else if (node.is_string()) {
+        values = parse_number_list(*node.value<std::string>(), what);
+      } else if (const toml::array* array = node.as_array(); array != nullptr && !array->empty()) {
+        for (const toml::node& element : *array) {
+          if (!element.is_number()) throw wrong_type("a number, an array of numbers or a string such as \"1e5:1e7:10\"");
+          values.push_back(*element.value<double>());
+        }
+      } else {
+        throw wrong_type("a number, an array of numbers or a string such as \"1e5:1e7:10\"");
+      }
+      options.*std::get<std::optional<std::vector<double>> SolveOptions::*>(spec.field) = values;
       break;
     }
     case Kind::integer: {

@@ -22,6 +22,13 @@ struct SolveOptions {
   std::optional<std::string> dataset;
   std::optional<double> dx;
   std::optional<double> dy;
+  // Height-map format and preparation (docs/usage.md#height-map-formats-and-preparation).
+  std::optional<std::string> format;
+  std::optional<std::string> unit;
+  std::optional<std::string> window;
+  std::optional<std::string> invalid;
+  std::optional<std::string> detrend;
+  std::optional<double> pad;
   std::optional<std::string> geometry;
   std::optional<double> radius;
   std::optional<double> wavelength;
@@ -36,10 +43,10 @@ struct SolveOptions {
   std::optional<double> e2;
   std::optional<double> nu2;
   std::optional<double> e_star;
-  // Load: exactly one.
-  std::optional<double> force;
-  std::optional<double> mean_pressure;
-  std::optional<double> approach;
+  // Load: exactly one; more than one value makes a load sweep.
+  std::optional<std::vector<double>> force;
+  std::optional<std::vector<double>> mean_pressure;
+  std::optional<std::vector<double>> approach;
   // Solver.
   std::optional<std::string> solver;
   std::optional<double> tol;
@@ -49,6 +56,7 @@ struct SolveOptions {
   // Output.
   std::optional<std::string> output;
   bool quiet = false;
+  bool plot = false;  // draw figures with the plotting tool after writing
 
   // Provenance, recorded in the output file.
   std::optional<std::string> config;                     // path of the TOML file, if any

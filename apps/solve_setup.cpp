@@ -13,12 +13,15 @@
 #include <initializer_list>
 #include <optional>
 #include <thread>
+#include <tuple>
 #include <utility>
 #include <vector>
 
 #include "halfspace/error.hpp"
 #include "halfspace/geometry/builtin_surface.hpp"
-#include "halfspace/io/hdf5_height_map_reader.hpp"
+#include "halfspace/io/height_map_reader.hpp"
+#include "halfspace/surface/padding.hpp"
+#include "halfspace/surface/preparation.hpp"
 #include "halfspace/material.hpp"
 #include "value_parsing.hpp"
 
@@ -94,7 +97,9 @@ double material_from(const SolveOptions& o) {
   return composite_modulus({*o.e1, *o.nu1}, {*o.e2, *o.nu2});
 }
 
-Loading loading_from(const SolveOptions& o) {
+// The load mode and every value of the load (one for a single solve, more for
+// a sweep); a single value keeps the message "--force -1 is invalid: ...".
+std::pair<Loading, std::vector<double>> loading_from(const SolveOptions& o) {
   const std::vector<std::string> given = given_names(o, {{"force", o.force.has_value()},
                                                          {"mean-pressure", o.mean_pressure.has_value()},
                                                          {"approach", o.approach.has_value()}});
@@ -105,16 +110,21 @@ Loading loading_from(const SolveOptions& o) {
     throw InputError(fmt::format("{} cannot be combined: give exactly one of --force, --mean-pressure, --approach",
                                  fmt::join(given, " and ")));
   }
-  Loading loading;
-  if (o.force) {
-    loading = Loading::force(require_positive(o, "force", *o.force, "N in 2D, N/m in 1D"));
-  } else if (o.mean_pressure) {
-    loading = Loading::mean_pressure(require_positive(o, "mean-pressure", *o.mean_pressure, "Pa"));
-  } else {
-    loading = Loading::approach(require_positive(o, "approach", *o.approach, "m"));
+  const auto [key, mode, unit, values] =
+      o.force           ? std::tuple{"force", ControlMode::force, "N in 2D, N/m in 1D", *o.force}
+      : o.mean_pressure ? std::tuple{"mean-pressure", ControlMode::mean_pressure, "Pa", *o.mean_pressure}
+                        : std::tuple{"approach", ControlMode::approach, "m", *o.approach};
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    if (values.size() == 1) {
+      require_positive(o, key, values[k], unit);
+    } else if (!(std::isfinite(values[k]) && values[k] > 0.0)) {
+      throw InputError(fmt::format("{} is invalid: every value must be positive ({}); value {} is {}",
+                                   o.describe(key), unit, k + 1, values[k]));
+    }
   }
+  const Loading loading{mode, values.front()};
   loading.validate();
-  return loading;
+  return {loading, values};
 }
 
 solvers::SolverSettings solver_settings_from(const SolveOptions& o) {
@@ -184,6 +194,7 @@ struct Surface {
   Grid grid;
   Eigen::ArrayXd heights;
   std::string source;
+  std::vector<std::string> preparation;  // one line per preparation step of a height map
 };
 
 void reject_given(const SolveOptions& o, Presence keys, std::string_view reason) {
@@ -212,7 +223,16 @@ Grid grid_for_geometry(const SolveOptions& o, Boundary boundary) {
 }
 
 Surface builtin_surface(const SolveOptions& o, Boundary boundary) {
-  reject_given(o, {{"dataset", o.dataset.has_value()}, {"dx", o.dx.has_value()}, {"dy", o.dy.has_value()}},
+  reject_given(o,
+               {{"dataset", o.dataset.has_value()},
+                {"dx", o.dx.has_value()},
+                {"dy", o.dy.has_value()},
+                {"format", o.format.has_value()},
+                {"unit", o.unit.has_value()},
+                {"window", o.window.has_value()},
+                {"invalid", o.invalid.has_value()},
+                {"detrend", o.detrend.has_value()},
+                {"pad", o.pad.has_value()}},
                "applies only to --height-map; a built-in geometry takes its spacing from --grid and --size");
   geometry::SurfaceSpec spec;
   spec.shape = in_context(o.name("geometry"), [&] { return geometry::parse_surface_shape(*o.geometry); });
@@ -244,7 +264,7 @@ Surface builtin_surface(const SolveOptions& o, Boundary boundary) {
   }
   Grid grid = grid_for_geometry(o, boundary);
   Eigen::ArrayXd heights = geometry::make_surface_heights(grid, spec);
-  return {std::move(grid), std::move(heights), std::move(source)};
+  return {std::move(grid), std::move(heights), std::move(source), {}};
 }
 
 // The spacing along one axis: the option if given, else the file attribute
@@ -265,6 +285,41 @@ void require_spacings(const std::string& file, const std::vector<std::string_vie
                               fmt::join(missing, " and "), fmt::join(flags, " and ")));
 }
 
+io::ReadOptions read_options_from(const SolveOptions& o) {
+  io::ReadOptions read;
+  if (o.format) read.format = in_context(o.name("format"), [&] { return io::parse_height_map_format(*o.format); });
+  if (o.dataset) read.dataset = *o.dataset;
+  if (o.unit) read.unit = in_context(o.name("unit"), [&] { return io::require_length_unit(*o.unit, "unit"); });
+  return read;
+}
+
+surface::PreparationOptions preparation_from(const SolveOptions& o, Boundary boundary) {
+  surface::PreparationOptions prepare;
+  if (o.window) prepare.window = in_context(o.name("window"), [&] { return surface::parse_window(*o.window); });
+  if (o.invalid) {
+    prepare.invalid = in_context(o.name("invalid"), [&] { return surface::parse_invalid_points(*o.invalid); });
+  }
+  if (o.detrend) prepare.detrend = in_context(o.name("detrend"), [&] { return surface::parse_detrend(*o.detrend); });
+  if (o.pad) {
+    if (boundary == Boundary::periodic) {
+      throw InputError(fmt::format("{} cannot be combined with --boundary periodic: padding is for free boundaries "
+                                   "(a periodic surface repeats without a margin)",
+                                   o.describe("pad")));
+    }
+    if (o.mean_pressure) {
+      throw InputError(fmt::format("{} cannot be combined with {}: the mean pressure would be taken over the padded "
+                                   "area; give --force instead",
+                                   o.describe("pad"), o.name("mean-pressure")));
+    }
+    if (!(*o.pad >= surface::kMinPadFactor && *o.pad <= surface::kMaxPadFactor)) {
+      throw InputError(fmt::format("{} is invalid: the factor must be in [{}, {}]", o.describe("pad"),
+                                   surface::kMinPadFactor, surface::kMaxPadFactor));
+    }
+    prepare.pad_factor = *o.pad;
+  }
+  return prepare;
+}
+
 Surface height_map_surface(const SolveOptions& o, Boundary boundary) {
   reject_given(o,
                {{"radius", o.radius.has_value()},
@@ -274,22 +329,35 @@ Surface height_map_surface(const SolveOptions& o, Boundary boundary) {
                 {"size", o.size.has_value()}},
                "cannot be used with --height-map: the grid and its spacing come from the file");
   const std::string& file = *o.height_map;
-  io::HeightMap map = io::read_hdf5_height_map(file, o.dataset.value_or("/height"));
-  std::string source = map.source.empty() ? fmt::format("{}:{}", file, o.dataset.value_or("/height")) : map.source;
+  const io::ReadOptions read = read_options_from(o);
+  const surface::PreparationOptions prepare = preparation_from(o, boundary);
+  io::HeightMap map = io::read_height_map(file, read);
+  std::string source = map.source.empty() ? file : map.source;
+
   const std::optional<double> dx = height_map_spacing(o, "dx", o.dx, map.dx);
+  std::optional<double> dy;
   if (map.dimension == 1) {
     if (o.dy) throw InputError(fmt::format("{} does not apply to the 1D profile in {}", o.name("dy"), file));
     require_spacings(file, dx ? std::vector<std::string_view>{} : std::vector<std::string_view>{"dx"});
-    Grid grid = Grid::line(map.nx, *dx, boundary);
-    return {std::move(grid), std::move(map.heights), std::move(source)};
+  } else {
+    dy = height_map_spacing(o, "dy", o.dy, map.dy);
+    std::vector<std::string_view> missing;
+    if (!dx) missing.push_back("dx");
+    if (!dy) missing.push_back("dy");
+    require_spacings(file, missing);
   }
-  const std::optional<double> dy = height_map_spacing(o, "dy", o.dy, map.dy);
-  std::vector<std::string_view> missing;
-  if (!dx) missing.push_back("dx");
-  if (!dy) missing.push_back("dy");
-  require_spacings(file, missing);
-  Grid grid = Grid::plane(map.nx, map.ny, *dx, *dy, boundary);
-  return {std::move(grid), std::move(map.heights), std::move(source)};
+  map.dx = *dx;
+  map.dy = dy.value_or(0.0);
+
+  try {
+    surface::prepare_height_map(map, prepare);
+  } catch (const FileError& error) {
+    // Only the refusal of invalid points is a FileError here: say how to proceed.
+    throw FileError(fmt::format("{} (pass --invalid fill or --invalid crop)", error.what()));
+  }
+  Grid grid = map.dimension == 1 ? Grid::line(map.nx, map.dx, boundary)
+                                 : Grid::plane(map.nx, map.ny, map.dx, map.dy, boundary);
+  return {std::move(grid), std::move(map.heights), std::move(source), std::move(map.preparation)};
 }
 
 }  // namespace
@@ -297,7 +365,7 @@ Surface height_map_surface(const SolveOptions& o, Boundary boundary) {
 SolveSetup make_solve_setup(const SolveOptions& options) {
   check_surface_choice(options);
   const double e_star = material_from(options);
-  const Loading loading = loading_from(options);
+  auto [loading, load_values] = loading_from(options);
   solvers::SolverSettings solver = solver_settings_from(options);
   const int threads = threads_from(options);
   solver.fft_planning = in_context(
@@ -314,6 +382,7 @@ SolveSetup make_solve_setup(const SolveOptions& options) {
   return SolveSetup{std::move(surface.grid),
                     std::move(surface.heights),
                     std::move(surface.source),
+                    std::move(surface.preparation),
                     e_star,
                     loading,
                     std::move(solver),
@@ -321,7 +390,9 @@ SolveSetup make_solve_setup(const SolveOptions& options) {
                     std::move(output),
                     options.quiet,
                     options.command_line,
-                    options.config_text};
+                    options.config_text,
+                    std::move(load_values),
+                    options.plot};
 }
 
 }  // namespace halfspace::app

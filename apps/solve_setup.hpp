@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "halfspace/fft/fft_planning.hpp"
 #include "halfspace/grid.hpp"
@@ -20,14 +21,17 @@ struct SolveSetup {
   Grid grid;
   Eigen::ArrayXd heights;     // m, (ny, nx) row-major
   std::string height_source;  // "file.h5:/height" or "sphere (radius = 0.01 m)"
+  std::vector<std::string> preparation;  // height-map preparation steps, one line each; empty if none
   double e_star = 0.0;        // Pa
-  Loading loading;
+  Loading loading;  // a single solve's load; the first step of a sweep
   solvers::SolverSettings solver;  // name, tolerance, iterations, FFT planning
   int threads = 1;
   std::filesystem::path output;
   bool quiet = false;
   std::string command_line;
   std::string config_text;
+  std::vector<double> load_values;  // every load in order, in loading.mode's unit; more than one: a sweep
+  bool plot = false;                // draw figures with the plotting tool after writing
 };
 
 // Applies the defaults, checks every option and their combinations, builds

@@ -60,6 +60,9 @@ void print_summary(std::FILE* out, const SolveSetup& setup, const SolveResult& r
   const auto contact_cells = static_cast<long long>(result.contact_fraction * static_cast<double>(grid.size()) + 0.5);
   fmt::print(out, "halfspace {} ({}) solve\n", kVersion, kGitHash);
   row(out, "surface", setup.height_source);
+  for (std::size_t k = 0; k < setup.preparation.size(); ++k) {
+    row(out, k == 0 ? "preparation" : "", setup.preparation[k]);
+  }
   row(out, "grid", grid_text(grid));
   row(out, "E*", fmt::format("{:.6g} Pa", setup.e_star));
   row(out, "load", load_text(setup));

@@ -98,6 +98,70 @@ std::vector<double> parse_domain_size(std::string_view text, std::string_view wh
   return lengths;
 }
 
+std::vector<double> parse_number_list(std::string_view text, std::string_view what) {
+  const auto trimmed = [](std::string_view part) {
+    while (!part.empty() && part.front() == ' ') part.remove_prefix(1);
+    while (!part.empty() && part.back() == ' ') part.remove_suffix(1);
+    return part;
+  };
+  const auto split = [](std::string_view whole, char separator) {
+    std::vector<std::string_view> parts;
+    std::size_t start = 0;
+    for (std::size_t k = 0; k <= whole.size(); ++k) {
+      if (k == whole.size() || whole[k] == separator) {
+        parts.push_back(whole.substr(start, k - start));
+        start = k + 1;
+      }
+    }
+    return parts;
+  };
+  const auto number = [&](std::string_view part) {
+    const std::string_view value = trimmed(part);
+    const std::string_view digits = without_plus(value);
+    double result = 0.0;
+    const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), result);
+    if (digits.empty() || error != std::errc() || end != digits.data() + digits.size() || !std::isfinite(result)) {
+      throw InputError(fmt::format("{} is invalid: '{}' is not a finite number", what, value));
+    }
+    return result;
+  };
+
+  const bool is_list = text.find(',') != std::string_view::npos;
+  const bool is_range = text.find(':') != std::string_view::npos;
+  if (!is_list && !is_range) return {parse_number(text, what)};
+  if (is_list && is_range) {
+    throw InputError(fmt::format("{} is invalid: give a list A,B,C or a range START:STOP:COUNT, not both", what));
+  }
+  if (is_list) {
+    std::vector<double> values;
+    for (std::string_view part : split(text, ',')) values.push_back(number(part));
+    return values;
+  }
+  const std::vector<std::string_view> parts = split(text, ':');
+  if (parts.size() != 3) {
+    throw InputError(fmt::format("{} is invalid: a range is START:STOP:COUNT, e.g. 1e5:1e7:10", what));
+  }
+  const double start = number(parts[0]);
+  const double stop = number(parts[1]);
+  const long long count = parse_integer(trimmed(parts[2]), what);
+  if (count < 2 || count > kMaxListValues) {
+    throw InputError(fmt::format("{} is invalid: the range needs a COUNT from 2 to {} (got {})", what, kMaxListValues,
+                                 count));
+  }
+  if (!(start > 0.0 && stop > 0.0)) {
+    throw InputError(fmt::format("{} is invalid: a range is log-spaced, so START and STOP must be positive", what));
+  }
+  // Each value from its index (no accumulated rounding); the ends exactly.
+  std::vector<double> values(static_cast<std::size_t>(count));
+  const double ratio = std::log(stop / start);
+  for (long long k = 0; k < count; ++k) {
+    values[static_cast<std::size_t>(k)] = start * std::exp(ratio * static_cast<double>(k) / static_cast<double>(count - 1));
+  }
+  values.front() = start;
+  values.back() = stop;
+  return values;
+}
+
 std::string join_command_line(const std::vector<std::string>& arguments) {
   std::string line;
   for (const std::string& argument : arguments) {

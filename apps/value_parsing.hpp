@@ -25,6 +25,16 @@ std::vector<std::size_t> parse_grid_shape(std::string_view text, std::string_vie
 // two lengths. Throws InputError naming `what` otherwise.
 std::vector<double> parse_domain_size(std::string_view text, std::string_view what);
 
+// Largest number of values a range START:STOP:COUNT may expand to.
+inline constexpr long long kMaxListValues = 10000;
+
+// One number ("1e5"), a comma-separated list ("1e5,2e5,5e5") or a log-spaced
+// range "START:STOP:COUNT" of COUNT >= 2 values from START to STOP, both
+// included and positive (1e5:1e7:3 is 1e5, 1e6, 1e7). Signs are not checked
+// otherwise. A single number fails exactly as parse_number does. Throws
+// InputError naming `what` and the offending part.
+std::vector<double> parse_number_list(std::string_view text, std::string_view what);
+
 // `arguments` joined by spaces, each quoted for a POSIX shell where needed,
 // so that the recorded command line can be pasted back into a terminal.
 std::string join_command_line(const std::vector<std::string>& arguments);

@@ -17,6 +17,7 @@
 
 #include "halfspace/error.hpp"
 #include "hdf5_handle.hpp"
+#include "reader_support.hpp"
 
 namespace halfspace::io {
 namespace {
@@ -255,7 +256,8 @@ double read_spacing(hid_t file, const char* name, const Target& target) {
 
 }  // namespace
 
-HeightMap read_hdf5_height_map(const std::filesystem::path& path, const std::string& dataset) {
+HeightMap read_hdf5_height_map(const std::filesystem::path& path, const std::string& dataset,
+                               NonFiniteHeights non_finite) {
   const detail::ErrorPrintingOff quiet;
   const Target target{path, dataset};
   const File file = open_file(target);
@@ -272,7 +274,11 @@ HeightMap read_hdf5_height_map(const std::filesystem::path& path, const std::str
   if (H5Dread(data.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, map.heights.data()) < 0) {
     target.fail(fmt::format("the heights cannot be read: {}", detail::error_reason()));
   }
-  check_finite(map.heights, map.nx, map.dimension, target);
+  if (non_finite == NonFiniteHeights::reject) {
+    check_finite(map.heights, map.nx, map.dimension, target);
+  } else {
+    detail::mark_non_finite_invalid(map);
+  }
 
   map.dx = read_spacing(file.get(), "dx", target);
   // A profile has no y spacing, whatever the file says.

@@ -60,7 +60,7 @@ class LiteralParser {
       skip_space();
       std::string value;
       if (peek() == '\'' || peek() == '"') {
-        value = "'" + parse_string() + "'";
+        value = fmt::format("'{}'", parse_string());
       } else if (peek() == '(') {
         const std::size_t end = text_.find(')', pos_);
         if (end == std::string_view::npos) fail("a tuple is not closed");

@@ -12,6 +12,7 @@
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <string_view>
 #include <system_error>
 #include <vector>
@@ -19,6 +20,7 @@
 #include "halfspace/error.hpp"
 #include "halfspace/version.hpp"
 #include "hdf5_handle.hpp"
+#include "hdf5_writing.hpp"
 
 namespace halfspace::io {
 namespace {
@@ -224,6 +226,20 @@ void write_fields(hid_t file, const Grid& grid, std::span<const double> height, 
                 nullptr);
 }
 
+// The surface and contact statistics, when the caller computed them.
+void write_statistics(hid_t root, const ResultMetadata& metadata) {
+  if (const auto& s = metadata.contact_statistics) {
+    attach_double(root, "mean_gap", s->mean_gap);
+    attach_double(root, "rms_gap", s->rms_gap);
+    attach_double(root, "free_volume", s->free_volume);
+    attach_int64(root, "clusters", s->clusters());
+  }
+  if (const auto& s = metadata.surface_statistics) {
+    attach_double(root, "surface_rms_height", s->rms_height);
+    attach_double(root, "surface_rms_slope", s->rms_slope);
+  }
+}
+
 void write_summary(hid_t root, const Grid& grid, const SolveResult& result, const ResultMetadata& metadata) {
   attach_string(root, "format", "halfspace-result");
   attach_int64(root, "format_version", kFormatVersion);
@@ -259,6 +275,8 @@ void write_summary(hid_t root, const Grid& grid, const SolveResult& result, cons
   attach_string(root, "command_line", metadata.command_line);
   attach_string(root, "config", metadata.config);
   attach_string(root, "height_source", metadata.height_source);
+  attach_string(root, "preparation", metadata.preparation);
+  write_statistics(root, metadata);
 }
 
 // The file is assembled in memory (HDF5's core driver without backing store)
@@ -268,8 +286,7 @@ void write_summary(hid_t root, const Grid& grid, const SolveResult& result, cons
 // (HDFGroup/hdf5 pull request 2291). In memory HDF5 never meets an I/O error,
 // and ours are reported like any other. The price is about twice the file's
 // size in memory while writing (HDF5's buffer and the image).
-std::vector<char> build_image(const std::filesystem::path& name, const Grid& grid, std::span<const double> height,
-                              const SolveResult& result, const ResultMetadata& metadata) {
+std::vector<char> build_image(const std::filesystem::path& name, const std::function<void(hid_t file)>& fill) {
   PropertyList access(H5Pcreate(H5P_FILE_ACCESS));
   if (!access.valid() || H5Pset_fapl_core(access.get(), kImageIncrement, false) < 0) {
     fail_hdf5("could not set up the in-memory file");
@@ -277,8 +294,7 @@ std::vector<char> build_image(const std::filesystem::path& name, const Grid& gri
   // The name only identifies the in-memory file; nothing is created on disk.
   File file(H5Fcreate(name.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get()));
   if (!file.valid()) fail_hdf5("could not create the in-memory file");
-  write_fields(file.get(), grid, height, result);
-  write_summary(file.get(), grid, result, metadata);
+  fill(file.get());
 
   // H5Fget_file_image copies what the driver holds, so the metadata cache
   // must be flushed into it first; the copy has the superblock of a closed
@@ -332,19 +348,30 @@ void write_image(const std::filesystem::path& file_path, const std::vector<char>
 
 }  // namespace
 
-void write_result(const std::filesystem::path& path, const Grid& grid, std::span<const double> height,
-                  const SolveResult& result, const ResultMetadata& metadata) {
-  check_size("height", height.size(), grid);
-  check_size("pressure", static_cast<std::size_t>(result.pressure.size()), grid);
-  check_size("gap", static_cast<std::size_t>(result.gap.size()), grid);
-  check_size("displacement", static_cast<std::size_t>(result.displacement.size()), grid);
-  check_output_directory(path);
+// The conventions above, for the other writers (hdf5_writing.hpp).
+namespace detail {
 
-  const detail::ErrorPrintingOff quiet;
+void write_double_attribute(hid_t location, const char* name, double value) { attach_double(location, name, value); }
+void write_int64_attribute(hid_t location, const char* name, std::int64_t value) {
+  attach_int64(location, name, value);
+}
+void write_string_attribute(hid_t location, const char* name, std::string_view value) {
+  attach_string(location, name, value);
+}
+void write_array_dataset(hid_t location, const char* name, const std::vector<hsize_t>& dims, hid_t file_type,
+                         hid_t memory_type, const void* data, const char* units) {
+  write_dataset(location, name, dims, file_type, memory_type, data, units);
+}
+void write_result_attributes(hid_t root, const Grid& grid, const SolveResult& result, const ResultMetadata& metadata) {
+  write_summary(root, grid, result, metadata);
+}
+
+void write_bytes_atomically(const std::filesystem::path& path, const std::vector<char>& bytes) {
+  check_output_directory(path);
   std::filesystem::path temporary = path;
   temporary += fmt::format(".tmp-{}", ::getpid());
   try {
-    write_image(temporary, build_image(temporary, grid, height, result, metadata));
+    write_image(temporary, bytes);
   } catch (const FileError& error) {
     throw FileError(fmt::format("cannot write output '{}': {}", path.string(), error.what()));
   }
@@ -356,6 +383,34 @@ void write_result(const std::filesystem::path& path, const Grid& grid, std::span
     throw FileError(fmt::format("cannot write output '{}': could not rename temporary file '{}' onto it: {}",
                                 path.string(), temporary.string(), error.message()));
   }
+}
+
+void write_file_atomically(const std::filesystem::path& path, const std::function<void(hid_t file)>& fill) {
+  check_output_directory(path);  // before assembling, which may take a while
+  const ErrorPrintingOff quiet;
+  std::filesystem::path name = path;
+  name += fmt::format(".tmp-{}", ::getpid());
+  std::vector<char> image;
+  try {
+    image = build_image(name, fill);
+  } catch (const FileError& error) {
+    throw FileError(fmt::format("cannot write output '{}': {}", path.string(), error.what()));
+  }
+  write_bytes_atomically(path, image);
+}
+
+}  // namespace detail
+
+void write_result(const std::filesystem::path& path, const Grid& grid, std::span<const double> height,
+                  const SolveResult& result, const ResultMetadata& metadata) {
+  check_size("height", height.size(), grid);
+  check_size("pressure", static_cast<std::size_t>(result.pressure.size()), grid);
+  check_size("gap", static_cast<std::size_t>(result.gap.size()), grid);
+  check_size("displacement", static_cast<std::size_t>(result.displacement.size()), grid);
+  detail::write_file_atomically(path, [&](hid_t file) {
+    write_fields(file, grid, height, result);
+    write_summary(file, grid, result, metadata);
+  });
 }
 
 }  // namespace halfspace::io

@@ -12,6 +12,8 @@
 namespace halfspace::io::detail {
 namespace {
 
+std::vector<std::string> split_names(std::string_view line);
+
 bool is_blank(char c) {
   return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v';
 }
@@ -62,6 +64,25 @@ double printed_step(std::string_view token) {
   const std::size_t point = token.find('.');
   const int decimals = point == std::string_view::npos ? 0 : static_cast<int>(token.size() - point - 1);
   return std::pow(10.0, exponent - decimals);
+}
+
+// Column names may hold spaces ("Lateral um", "x [um]"): when the line has a
+// comma, semicolon or tab, only those separate names.
+std::vector<std::string> split_names(std::string_view line) {
+  std::vector<std::string> names;
+  if (line.find_first_of(",;\t") == std::string_view::npos) {
+    for (std::string_view field : split_fields(line)) names.emplace_back(field);
+    return names;
+  }
+  std::size_t begin = 0;
+  while (begin <= line.size()) {
+    std::size_t end = line.find_first_of(",;\t", begin);
+    if (end == std::string_view::npos) end = line.size();
+    names.emplace_back(trim(line.substr(begin, end - begin)));
+    begin = end + 1;
+  }
+  while (!names.empty() && names.back().empty()) names.pop_back();
+  return names;
 }
 
 }  // namespace
@@ -123,7 +144,7 @@ TextTable parse_text_table(std::string_view text, std::size_t first_line, bool a
     }
     if (bad < fields.size()) {
       if (allow_header && first_row) {
-        for (std::string_view name : fields) table.header.emplace_back(name);
+        table.header = split_names(line);
         table.header_line = line_number;
         continue;
       }

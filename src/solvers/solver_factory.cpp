@@ -8,6 +8,8 @@
 #include "halfspace/error.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
 #include "halfspace/solvers/fourier_preconditioner.hpp"
+#include "halfspace/solvers/lcp_quad.hpp"
+#include "halfspace/solvers/lemke.hpp"
 #include "halfspace/solvers/polonsky_keer.hpp"
 
 namespace halfspace::solvers {
@@ -45,13 +47,23 @@ std::unique_ptr<ContactSolver> make_polonsky_keer(const Grid& grid, double e_sta
   return std::make_unique<SolverWithOperator>(std::move(op), std::move(preconditioner), std::move(solver));
 }
 
+// The dense LCP solvers own their assembled matrix; they refuse grids over
+// kMaxDenseCells with a message that points to "pk".
+std::unique_ptr<ContactSolver> make_dense(const Grid& grid, double e_star, const SolverSettings& settings) {
+  DenseContactOptions contact;
+  contact.tolerance = settings.tolerance;
+  if (settings.name == "lemke") return std::make_unique<Lemke>(grid, e_star, LemkeOptions{settings.max_iterations}, contact);
+  return std::make_unique<LcpQuad>(grid, e_star, LcpQuadOptions{}, contact);
+}
+
 }  // namespace
 
-std::vector<std::string> solver_names() { return {"pk-fourier", "pk"}; }
+std::vector<std::string> solver_names() { return {"pk-fourier", "pk", "lemke", "lcpquad"}; }
 
 std::unique_ptr<ContactSolver> make_solver(const Grid& grid, double e_star, const SolverSettings& settings) {
   if (settings.name == "pk") return make_polonsky_keer(grid, e_star, settings, false);
   if (settings.name == "pk-fourier") return make_polonsky_keer(grid, e_star, settings, true);
+  if (settings.name == "lemke" || settings.name == "lcpquad") return make_dense(grid, e_star, settings);
   throw InputError(fmt::format("solver '{}' is not known: use one of {}", settings.name,
                                fmt::join(solver_names(), ", ")));
 }

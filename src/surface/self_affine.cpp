@@ -175,8 +175,10 @@ Eigen::ArrayXd make_self_affine_surface(const Grid& grid, const SelfAffineSpec& 
     }
   });
 
-  // Step 2: the mean square slope of the surface this spectrum makes, by
-  // Parseval (no Nyquist modes, so no special case), before the inverse
+  // Step 2: the mean square slope of the surface this spectrum makes. The
+  // inverse transform is unnormalised, h(x) = sum_k H_k exp(i q_k x), so by
+  // Parseval <|grad h|^2> = sum_k |q_k|^2 |H_k|^2 over the full spectrum
+  // (no Nyquist modes, so no special case). Computed before the inverse
   // transform overwrites the spectrum.
   const double slope_sq = linalg::sum(fft.spectrum_size(), [&](std::size_t k) {
     const std::size_t r = k / modes.columns;
@@ -200,7 +202,7 @@ Eigen::ArrayXd make_self_affine_surface(const Grid& grid, const SelfAffineSpec& 
     });
     scale = *spec.rms_height / std::sqrt(square / cells);
   } else {
-    scale = *spec.rms_slope / (std::sqrt(slope_sq) / cells);
+    scale = *spec.rms_slope / std::sqrt(slope_sq);
   }
   heights *= scale;
   return heights;

@@ -9,12 +9,17 @@
 
 namespace halfspace::io {
 
+// What a non-finite height (NaN, inf) means: an error, or an invalid point
+// (HeightMap::valid) for the preparation step to fill, crop or refuse.
+enum class NonFiniteHeights { reject, mark_invalid };
+
 // Reads `dataset` (default "/height") of `path`. dx/dy are taken from root
 // attributes "dx"/"dy" when present (else 0, to be supplied by the caller).
 // Throws FileError naming the file and dataset when the file is missing or
 // not HDF5, the dataset is missing, of rank other than 1 or 2, not numeric,
-// has fewer than 2 points per axis, or holds a non-finite value (naming its
-// index).
-HeightMap read_hdf5_height_map(const std::filesystem::path& path, const std::string& dataset = "/height");
+// has fewer than 2 points per axis, or (with NonFiniteHeights::reject) holds
+// a non-finite value (naming its index).
+HeightMap read_hdf5_height_map(const std::filesystem::path& path, const std::string& dataset = "/height",
+                               NonFiniteHeights non_finite = NonFiniteHeights::reject);
 
 }  // namespace halfspace::io

@@ -4,11 +4,13 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <span>
 #include <string>
 
 #include "halfspace/grid.hpp"
 #include "halfspace/solvers/solve_result.hpp"
+#include "halfspace/surface/statistics.hpp"
 
 namespace halfspace::io {
 
@@ -19,6 +21,11 @@ struct ResultMetadata {
   std::string command_line;   // the full command line
   std::string config;         // the TOML config text, empty if none
   std::string height_source;  // where the surface came from
+  std::string preparation;    // the preparation steps applied to it, one per line; empty if none
+  // Written as root attributes when given: mean_gap, rms_gap, free_volume,
+  // clusters; surface_rms_height, surface_rms_slope (docs/file-format.md).
+  std::optional<surface::ContactStatistics> contact_statistics;
+  std::optional<surface::SurfaceStatistics> surface_statistics;
 };
 
 // Datasets /height, /pressure, /gap, /displacement (float64) and /contact

@@ -1,0 +1,32 @@
+// Finding and running the project's plotting tool (scripts/halfspace_plot.py,
+// a matplotlib script) from the program, for `halfspace solve --plot`.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace halfspace::app {
+
+struct PlotTool {
+  std::vector<std::string> interpreter;  // e.g. {"/usr/bin/python3"} or {"/usr/bin/env", "python3"}
+  std::filesystem::path script;
+};
+
+// The tool, looked for in order: $HALFSPACE_PLOT_TOOL; the installed copy
+// <prefix>/share/halfspace/halfspace_plot.py beside the program; the source
+// tree the program was built from. Its interpreter is $HALFSPACE_PYTHON, else
+// the script's #! line, else python3. Checks that the interpreter runs and
+// imports matplotlib, h5py and numpy, so that a missing package is reported
+// before a long solve. Throws InputError with a message saying what is
+// missing and how to install it.
+PlotTool find_plot_tool();
+
+// Runs `tool subcommand file` (the figures go next to `file`), its standard
+// output suppressed when `quiet`. Returns an empty string on success, else
+// one line saying what failed.
+std::string run_plot_tool(const PlotTool& tool, std::string_view subcommand, const std::filesystem::path& file,
+                          bool quiet);
+
+}  // namespace halfspace::app

@@ -1,0 +1,155 @@
+// The sweep pipeline of the program: heights -> initial gap -> solver -> one
+// warm-started solve per load -> result file, CSV, summary table, figures.
+#include "sweep_command.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <cstdio>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "exit_codes.hpp"
+#include "halfspace/geometry/builtin_surface.hpp"
+#include "halfspace/io/sweep_writer.hpp"
+#include "halfspace/solvers/load_sweep.hpp"
+#include "halfspace/solvers/solver_factory.hpp"
+#include "halfspace/threads.hpp"
+#include "halfspace/version.hpp"
+#include "plot_tool.hpp"
+#include "progress.hpp"
+
+namespace halfspace::app {
+namespace {
+
+std::string_view load_unit(ControlMode mode, const Grid& grid) {
+  switch (mode) {
+    case ControlMode::force:
+      return grid.dimension() == 1 ? "N/m" : "N";
+    case ControlMode::mean_pressure:
+      return "Pa";
+    case ControlMode::approach:
+      return "m";
+  }
+  return "";
+}
+
+std::string_view load_name(ControlMode mode) {
+  switch (mode) {
+    case ControlMode::force:
+      return "force";
+    case ControlMode::mean_pressure:
+      return "mean pressure";
+    case ControlMode::approach:
+      return "approach";
+  }
+  return "";
+}
+
+void print_sweep_summary(std::FILE* out, const SolveSetup& setup, std::span<const solvers::SweepStep> steps,
+                         const std::filesystem::path& csv) {
+  const Grid& grid = setup.grid;
+  const ControlMode mode = setup.loading.mode;
+  const auto row = [&](std::string_view label, const std::string& value) {
+    fmt::print(out, "  {:<17} {}\n", label, value);
+  };
+  fmt::print(out, "halfspace {} ({}) solve: load sweep\n", kVersion, kGitHash);
+  row("surface", setup.height_source);
+  row("grid", fmt::format("{} cells ({}D), {} boundary", grid.shape_string(), grid.dimension(),
+                          to_string(grid.boundary())));
+  row("E*", fmt::format("{:.6g} Pa", setup.e_star));
+  row("load", fmt::format("{} sweep, {} steps from {:.6g} to {:.6g} {}", load_name(mode), steps.size(),
+                          setup.load_values.front(), setup.load_values.back(), load_unit(mode, grid)));
+  row("solver", fmt::format("{}, {} thread{}, tolerance {:.1e}", steps.front().result.solver, setup.threads,
+                            setup.threads == 1 ? "" : "s", setup.solver.tolerance));
+  fmt::print(out, "\n  {:>4}  {:>12}  {:>12}  {:>12}  {:>10}  {:>8}  {:>6}  {:>9}  {:>8}\n", "step",
+             fmt::format("load ({})", load_unit(mode, grid)), "p_mean (Pa)", "approach (m)", "contact", "clusters",
+             "iter", "residual", "time (s)");
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    const solvers::SweepStep& s = steps[k];
+    fmt::print(out, "  {:>4}  {:>12.5g}  {:>12.5g}  {:>12.5g}  {:>10.4g}  {:>8}  {:>6}  {:>9.2e}  {:>8.3f}{}\n", k,
+               s.loading.value, s.result.mean_pressure, s.result.approach, s.statistics.contact_fraction,
+               s.statistics.clusters(), s.result.iterations, s.result.residual, s.result.wall_seconds,
+               s.result.converged() ? "" : "  not converged");
+  }
+  fmt::print(out, "\n");
+  row("output", fmt::format("{} (fields per step), {} (summary table)", setup.output.string(), csv.string()));
+}
+
+io::ResultMetadata metadata_for(const SolveSetup& setup) {
+  io::ResultMetadata metadata;
+  metadata.e_star = setup.e_star;
+  metadata.load_mode = std::string(to_string(setup.loading.mode));
+  metadata.threads = setup.threads;
+  metadata.command_line = setup.command_line;
+  metadata.config = setup.config_text;
+  metadata.height_source = setup.height_source;
+  metadata.preparation = fmt::format("{}", fmt::join(setup.preparation, "\n"));
+  metadata.surface_statistics = surface::surface_statistics(
+      setup.grid, std::span<const double>(setup.heights.data(), static_cast<std::size_t>(setup.heights.size())));
+  return metadata;
+}
+
+}  // namespace
+
+std::string describe_load(ControlMode mode, double value, const Grid& grid) {
+  return fmt::format("{} {:.6g} {}", load_name(mode), value, load_unit(mode, grid));
+}
+
+int run_sweep(const SolveSetup& setup) {
+  // Threads first: the FFT plans use the thread count in force when made.
+  set_threads(setup.threads);
+  const std::optional<PlotTool> plot = setup.plot ? std::optional<PlotTool>(find_plot_tool()) : std::nullopt;
+
+  Progress progress(!setup.quiet, setup.load_values.size(), setup.solver.tolerance);
+  solvers::SolverSettings settings = setup.solver;
+  settings.progress = progress.callback();
+  const std::unique_ptr<ContactSolver> solver = solvers::make_solver(setup.grid, setup.e_star, settings);
+
+  const Eigen::ArrayXd initial_gap = geometry::initial_gap_from_heights(setup.heights);
+  solvers::LoadSweepOptions options;
+  options.on_step_start = [&](std::size_t step, std::size_t, const Loading& loading) {
+    progress.start_step(step, describe_load(loading.mode, loading.value, setup.grid));
+  };
+  const std::vector<solvers::SweepStep> steps =
+      solvers::run_load_sweep(*solver, setup.grid, {initial_gap.data(), setup.grid.size()}, setup.loading.mode,
+                              setup.load_values, options);
+  progress.clear();
+
+  const std::span<const double> heights(setup.heights.data(), static_cast<std::size_t>(setup.heights.size()));
+  io::write_sweep_result(setup.output, setup.grid, heights, steps, metadata_for(setup));
+  const std::filesystem::path csv = io::sweep_csv_path(setup.output);
+  io::write_sweep_csv(csv, steps);
+
+  if (!setup.quiet) {
+    print_sweep_summary(stdout, setup, steps, csv);
+    std::fflush(stdout);
+  }
+  // The tool's `maps` reads single results; a sweep file gets its curves.
+  bool plotted = true;
+  if (plot) {
+    const std::string failure = run_plot_tool(*plot, "sweep", setup.output, setup.quiet);
+    if (!failure.empty()) {
+      fmt::print(stderr, "error: --plot: {}; the results are written to {}\n", failure, setup.output.string());
+      plotted = false;
+    }
+  }
+
+  std::vector<std::size_t> failed;
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    if (!steps[k].result.converged()) failed.push_back(k);
+  }
+  if (!failed.empty()) {
+    const SolveResult& first = steps[failed.front()].result;
+    fmt::print(stderr,
+               "error: solver did not converge at {} of {} steps ({}); step {} stopped with {} after {} "
+               "iterations (residual {:.3e}, tolerance {:.3e}); results written to {}\n",
+               failed.size(), steps.size(), fmt::join(failed, ", "), failed.front(), to_string(first.status),
+               first.iterations, first.residual, first.tolerance, setup.output.string());
+    return kExitNotConverged;
+  }
+  return plotted ? kExitOk : kExitPlotFailed;
+}
+
+}  // namespace halfspace::app

@@ -1,0 +1,24 @@
+// `halfspace solve` with several loads: the load sweep, its files (HDF5 and
+// CSV), its summary table and figures.
+#pragma once
+
+#include <string>
+
+#include "halfspace/solvers/loading.hpp"
+#include "solve_setup.hpp"
+
+namespace halfspace::app {
+
+// Solves setup.load_values in order (warm starts), writes setup.output and
+// the CSV beside it (also when a step did not converge), prints the summary
+// table unless setup.quiet and draws the figures if setup.plot. Returns
+// kExitOk when every step converged, kExitNotConverged otherwise (after
+// printing the failed steps to stderr), kExitPlotFailed when only the
+// figures failed. Throws InputError (FileError) for bad input or when a file
+// cannot be written.
+int run_sweep(const SolveSetup& setup);
+
+// "force 10 N", "mean pressure 2e+05 Pa", "approach 1e-06 m" (N/m in 1D).
+std::string describe_load(ControlMode mode, double value, const Grid& grid);
+
+}  // namespace halfspace::app

@@ -1,0 +1,36 @@
+// Writes a height map in the layout the readers accept (and the measured
+// files in shared/data/topography use): dataset /height with root attributes
+// dx, dy, so that `halfspace solve --height-map FILE` reads it directly.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "halfspace/grid.hpp"
+
+namespace halfspace::io {
+
+struct HeightMapMetadata {
+  std::string source;        // what the surface is, e.g. "self-affine (H = 0.8, seed = 1)"
+  std::string command_line;  // the command that made it
+  bool periodic = false;     // whether the map repeats with the domain
+  // Further root attributes, e.g. the generator's parameters.
+  std::vector<std::pair<std::string, double>> numbers;
+  std::vector<std::pair<std::string, std::int64_t>> integers;
+  std::vector<std::pair<std::string, std::string>> strings;
+};
+
+// /height: float64, shape (nx,) in 1D or (ny, nx) in 2D, units "m". Root
+// attributes dx, dy (float64, m; dy = 0 in 1D), nx, ny (int64), unit ("m"),
+// layout, periodic (int64 0/1), source, command_line, halfspace_version, and
+// those of `metadata`. Written atomically (temporary name, then rename).
+// Throws InputError if the heights do not match the grid, FileError naming
+// the path if the file cannot be written.
+void write_height_map(const std::filesystem::path& path, const Grid& grid, std::span<const double> heights,
+                      const HeightMapMetadata& metadata);
+
+}  // namespace halfspace::io

@@ -1,0 +1,61 @@
+// A load sweep: one contact solver run over a list of loads (or approaches)
+// in the given order, each step warm-started from the previous one, with the
+// contact statistics of every step and the summary table built from them.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "halfspace/grid.hpp"
+#include "halfspace/solvers/contact_solver.hpp"
+#include "halfspace/surface/statistics.hpp"
+
+namespace halfspace::solvers {
+
+struct SweepStep {
+  Loading loading;                       // what was imposed at this step
+  SolveResult result;                    // the solver's outcome, fields included
+  surface::ContactStatistics statistics; // of result
+  bool warm_started = false;             // started from the previous step's pressure
+};
+
+struct LoadSweepOptions {
+  // Start each step from the previous step's pressure when that step
+  // converged (a failed step's pressure may be far off, or not finite).
+  bool warm_start = true;
+  // Called before step k (0-based) of `steps` is solved, and after it with
+  // its outcome. Run on the calling thread, so they may print; may be empty.
+  std::function<void(std::size_t step, std::size_t steps, const Loading& loading)> on_step_start;
+  std::function<void(std::size_t step, std::size_t steps, const SweepStep& outcome)> on_step_done;
+};
+
+// Solves `initial_gap` (m, one entry per cell of `grid`, which must be the
+// solver's grid) under loads `values` (in the unit of `mode`) in the given
+// order. A step that does not converge is kept, with its status, and the
+// sweep goes on (cold-started). The solver's own per-iteration progress is
+// whatever it was built with (SolverSettings::progress). Throws InputError if
+// `values` is empty or a value is invalid for `mode` (checked before the
+// first solve), or if the solver rejects the problem.
+std::vector<SweepStep> run_load_sweep(ContactSolver& solver, const Grid& grid, std::span<const double> initial_gap,
+                                      ControlMode mode, std::span<const double> values,
+                                      const LoadSweepOptions& options = {});
+
+// One column of the sweep's summary table (HDF5 /sweep/<name> and the CSV):
+// its name, unit ("" when dimensionless; "force" stands for N in 2D, N/m in
+// 1D) and how a step gives its value.
+struct SummaryColumn {
+  std::string_view name;
+  std::string_view unit;
+  std::string_view meaning;
+  double (*value)(const SweepStep& step);
+};
+
+// The columns in file order: load, mean_pressure, total_force, approach,
+// contact_fraction, mean_gap, rms_gap, free_volume, max_pressure, clusters,
+// iterations, residual, seconds, converged.
+std::span<const SummaryColumn> summary_columns();
+
+}  // namespace halfspace::solvers

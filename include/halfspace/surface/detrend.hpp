@@ -1,0 +1,33 @@
+// Removing the mean, a plane (tilt) or a quadratic (curvature) from a
+// measured height map by least squares over its valid points.
+#pragma once
+
+#include <string_view>
+
+#include "halfspace/io/height_map.hpp"
+
+namespace halfspace::surface {
+
+enum class Detrend {
+  none,       // heights as read
+  mean,       // subtract the mean height
+  plane,      // subtract the least-squares plane a + b x + c y (a + b x for a profile)
+  curvature,  // subtract the least-squares quadratic a + b x + c y + d x^2 + e x y + f y^2
+};
+
+std::string_view to_string(Detrend detrend);
+// "none", "mean", "plane" (alias "tilt"), "curvature" (alias "quadratic").
+// Throws InputError naming the value and the choices.
+Detrend parse_detrend(std::string_view text);
+
+// Subtracts the least-squares fit of `detrend` over the valid points (at
+// x = i dx, y = j dy) from every valid point; invalid points stay NaN. The
+// removed surface does not depend on dx and dy (scaling an axis maps planes
+// to planes and quadratics to quadratics); they only set the units of the
+// coefficients reported in the line appended to map.preparation (per cell
+// when a spacing is 0). Exact for heights that are such a polynomial, to
+// rounding. Throws InputError when the valid points cannot determine the fit
+// (e.g. a plane through points on one line).
+void detrend(io::HeightMap& map, Detrend detrend);
+
+}  // namespace halfspace::surface

@@ -1,0 +1,388 @@
+#!/usr/bin/python3
+"""halfspace's plotting tool: figures from any halfspace HDF5 file.
+
+Subcommands (PNG files are written next to the input unless --out is given):
+
+  maps FILE.h5             height, pressure and contact maps of a result file
+                           (docs/file-format.md); 1D results as line plots
+  profile FILE.h5 [--row J]
+                           a line through a 2D map (row J, default the middle
+                           row; or the whole 1D profile): height and gap above,
+                           pressure below
+  sweep FILE.h5            contact fraction and mean gap (or approach) against
+                           the mean pressure of a sweep file (1D datasets
+                           /sweep/mean_pressure, /sweep/contact_fraction, ...)
+  paper DIR                the Table 1 reproduction figures from DIR/testN.h5
+                           (written by `halfspace paper`, docs/paper.md)
+
+--out names the output: a file ending in .png for a command that draws one
+figure, else a directory. Also importable: plot_maps, plot_profile,
+plot_sweep and plot_paper take a path and return the PNG paths written.
+
+Needs Debian's python3 with python3-matplotlib, python3-h5py and
+python3-numpy (scripts/install-deps.sh); the shebang names /usr/bin/python3
+so that another python3 earlier on PATH does not hide them.
+"""
+
+import argparse
+import glob
+import os
+import re
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")  # files only, no display
+
+import h5py  # noqa: E402
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+DPI = 110  # keeps line figures at tens of KB and maps well under 200 KB
+
+
+class PlotError(Exception):
+    """A file that is not what the subcommand needs; the message says why."""
+
+
+# ---------------------------------------------------------------- units
+
+
+def length_unit(extent):
+    """(scale, label) so that lengths up to `extent` (m) read well."""
+    if extent < 1e-6:
+        return 1e9, "nm"
+    if extent < 1e-3:
+        return 1e6, "µm"
+    if extent < 1.0:
+        return 1e3, "mm"
+    return 1.0, "m"
+
+
+def pressure_unit(peak):
+    """(scale, label) for pressures up to `peak` (Pa)."""
+    for scale, label in ((1e-9, "GPa"), (1e-6, "MPa"), (1e-3, "kPa")):
+        if peak >= 1.0 / scale:
+            return scale, label
+    return 1.0, "Pa"
+
+
+def _attr(f, name, default=None):
+    value = f.attrs.get(name, default)
+    if isinstance(value, bytes):
+        value = value.decode("utf-8", "replace")
+    return value
+
+
+def _output_path(source, suffix, out, single=True):
+    """Where a figure goes: --out (a .png file or a directory) or next to `source`."""
+    base = os.path.splitext(os.path.basename(source.rstrip("/")))[0]
+    name = f"{base}{suffix}.png"
+    if out is None:
+        directory = source if os.path.isdir(source) else os.path.dirname(os.path.abspath(source))
+        return os.path.join(directory, name)
+    if single and out.endswith(".png"):
+        return out
+    os.makedirs(out, exist_ok=True)
+    return os.path.join(out, name)
+
+
+def _save(fig, path):
+    fig.savefig(path, dpi=DPI)
+    plt.close(fig)
+    return path
+
+
+# ---------------------------------------------------------------- results
+
+
+def read_result(path):
+    """A halfspace result file as a dict of numpy arrays and attributes."""
+    if not os.path.isfile(path):
+        raise PlotError(f"{path}: no such file")
+    with h5py.File(path, "r") as f:
+        kind = _attr(f, "format", "")
+        if kind == "halfspace-paper-test":
+            raise PlotError(f"{path} is a paper reproduction file: use 'paper {os.path.dirname(path) or '.'}'")
+        if "sweep" in f and "pressure" not in f:
+            raise PlotError(f"{path} is a sweep file: use 'sweep {path}'")
+        missing = [name for name in ("height", "pressure", "gap") if name not in f]
+        if missing:
+            raise PlotError(f"{path}: not a halfspace result file (no dataset {', '.join('/' + m for m in missing)})")
+        result = {name: f[name][...] for name in ("height", "pressure", "gap", "displacement", "contact") if name in f}
+        result["attrs"] = {key: _attr(f, key) for key in f.attrs}
+    if "contact" not in result:
+        result["contact"] = (result["pressure"] > 0).astype(np.uint8)
+    attrs = result["attrs"]
+    result["dimension"] = int(attrs.get("dimension", result["pressure"].ndim))
+    result["dx"] = float(attrs.get("dx", 1.0))
+    result["dy"] = float(attrs.get("dy", 0.0))
+    return result
+
+
+def _title(result, path):
+    a = result["attrs"]
+    parts = [os.path.basename(path)]
+    if "solver" in a:
+        parts.append(str(a["solver"]))
+    if "mean_pressure" in a:
+        parts.append(f"mean pressure {float(a['mean_pressure']):.3g} Pa")
+    if "contact_fraction" in a:
+        parts.append(f"contact {100 * float(a['contact_fraction']):.2f} %")
+    return ", ".join(parts)
+
+
+def _line_figure(result, path, x, height, gap, pressure, xlabel):
+    """Two stacked panels: height and gap, then pressure, against x."""
+    lscale, lunit = length_unit(max(np.ptp(height), np.ptp(gap), 1e-300) * 10)
+    pscale, punit = pressure_unit(max(float(np.max(pressure)), 1e-300))
+    fig, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(7, 5.5), constrained_layout=True)
+    top.plot(x, height * lscale, color="0.3", label="height")
+    top.plot(x, gap * lscale, color="tab:blue", label="gap after loading")
+    top.set_ylabel(f"height, gap ({lunit})")
+    top.legend(loc="best", fontsize="small")
+    bottom.plot(x, pressure * pscale, color="tab:red")
+    bottom.fill_between(x, 0, pressure * pscale, color="tab:red", alpha=0.15)
+    bottom.set_ylabel(f"pressure ({punit})")
+    bottom.set_xlabel(xlabel)
+    top.set_title(_title(result, path), fontsize="small")
+    return fig
+
+
+def plot_maps(path, out=None):
+    """Height, pressure and contact maps (2D) or line plots (1D) of a result file."""
+    result = read_result(path)
+    if result["dimension"] == 1:
+        n = result["pressure"].shape[-1]
+        xscale, xunit = length_unit(n * result["dx"])
+        x = np.arange(n) * result["dx"] * xscale
+        fig = _line_figure(result, path, x, result["height"], result["gap"], result["pressure"], f"x ({xunit})")
+        return [_save(fig, _output_path(path, "_maps", out))]
+
+    ny, nx = result["pressure"].shape
+    dx, dy = result["dx"], result["dy"] or result["dx"]
+    scale, unit = length_unit(max(nx * dx, ny * dy))
+    extent = (0, nx * dx * scale, 0, ny * dy * scale)
+    hscale, hunit = length_unit(max(np.ptp(result["height"]), 1e-300) * 10)
+    pscale, punit = pressure_unit(max(float(np.max(result["pressure"])), 1e-300))
+    panels = (
+        (result["height"] * hscale, f"height ({hunit})", "viridis"),
+        (result["pressure"] * pscale, f"pressure ({punit})", "magma"),
+        (result["contact"], "contact (1 = in contact)", "Greys"),
+    )
+    fig, axes = plt.subplots(1, 3, figsize=(13, 4.2), constrained_layout=True)
+    for axis, (field, label, cmap) in zip(axes, panels):
+        image = axis.imshow(field, origin="lower", extent=extent, cmap=cmap, interpolation="nearest", aspect="equal")
+        axis.set_xlabel(f"x ({unit})")
+        axis.set_ylabel(f"y ({unit})")
+        ticks = [0, 1] if field is result["contact"] else None
+        fig.colorbar(image, ax=axis, shrink=0.85, label=label, ticks=ticks)
+    fig.suptitle(_title(result, path), fontsize="small")
+    return [_save(fig, _output_path(path, "_maps", out))]
+
+
+def plot_profile(path, row=None, out=None):
+    """Height, gap and pressure along row `row` of a 2D map (middle row by default), or a 1D profile."""
+    result = read_result(path)
+    if result["dimension"] == 1:
+        height, gap, pressure = result["height"], result["gap"], result["pressure"]
+        label, suffix = "x", "_profile"
+    else:
+        ny = result["pressure"].shape[0]
+        row = ny // 2 if row is None else row
+        if not 0 <= row < ny:
+            raise PlotError(f"--row {row} is out of range: the map has rows 0 to {ny - 1}")
+        height, gap, pressure = (result[name][row] for name in ("height", "gap", "pressure"))
+        label, suffix = f"x along row {row} (y = {row * result['dy']:.3g} m)", f"_profile_row{row}"
+    n = pressure.shape[0]
+    xscale, xunit = length_unit(n * result["dx"])
+    x = np.arange(n) * result["dx"] * xscale
+    fig = _line_figure(result, path, x, height, gap, pressure, f"{label} ({xunit})")
+    return [_save(fig, _output_path(path, suffix, out))]
+
+
+# ---------------------------------------------------------------- sweeps
+
+
+def plot_sweep(path, out=None):
+    """Contact fraction and mean gap (else approach) against the mean pressure of a sweep file."""
+    if not os.path.isfile(path):
+        raise PlotError(f"{path}: no such file")
+    with h5py.File(path, "r") as f:
+        if "sweep" not in f:
+            raise PlotError(f"{path}: not a sweep file (no group /sweep)")
+        sweep = {name: np.asarray(f["sweep"][name][...]) for name in f["sweep"] if f["sweep"][name].ndim == 1}
+    for name in ("mean_pressure", "contact_fraction"):
+        if name not in sweep:
+            raise PlotError(f"{path}: the sweep has no dataset /sweep/{name}")
+    load = sweep["mean_pressure"]
+    order = np.argsort(load)
+    second = "mean_gap" if "mean_gap" in sweep else ("approach" if "approach" in sweep else None)
+    pscale, punit = pressure_unit(float(np.max(load)))
+    positive = load[load > 0]
+    logarithmic = positive.size == load.size and positive.size > 1 and np.max(positive) / np.min(positive) > 100
+
+    fig, axes = plt.subplots(1, 2 if second else 1, figsize=(11 if second else 6, 4.2), constrained_layout=True)
+    axes = np.atleast_1d(axes)
+    axes[0].plot(load[order] * pscale, sweep["contact_fraction"][order], "o-", color="tab:red", ms=3)
+    axes[0].set_ylabel("contact fraction A/A0")
+    if second:
+        values = sweep[second][order]
+        lscale, lunit = length_unit(max(float(np.max(np.abs(values))), 1e-300) * 10)
+        axes[1].plot(load[order] * pscale, values * lscale, "o-", color="tab:blue", ms=3)
+        axes[1].set_ylabel(f"{second.replace('_', ' ')} ({lunit})")
+    for axis in axes:
+        axis.set_xlabel(f"mean pressure ({punit})")
+        if logarithmic:
+            axis.set_xscale("log")
+        axis.grid(True, alpha=0.3)
+    fig.suptitle(os.path.basename(path), fontsize="small")
+    return [_save(fig, _output_path(path, "_sweep", out))]
+
+
+# ---------------------------------------------------------------- paper
+
+_METHODS = (
+    ("p_lemke", "Lemke (LCPSolve)", "tab:blue", "-", None),
+    ("p_lcpquad", "LCPquad (QP)", "tab:orange", "--", None),
+    ("p_pk", "Polonsky–Keer (FFT)", "tab:green", ":", None),
+    ("p_hertz", "Hertz", "0.2", "none", "o"),
+)
+_VARIANTS = {
+    "p_lcpquad_si": ("LCPquad in SI units, load as equality", "tab:purple", "-"),
+    "p_lcpquad_si_approach": ("LCPquad in SI units, approach of Lemke", "tab:brown", "--"),
+    "p_lemke_eq4": ("Lemke, paper's eq. (4) kernel", "tab:pink", "-"),
+}
+
+
+def read_paper_test(path):
+    """One testN.h5 of `halfspace paper` as a dict of arrays and attributes."""
+    with h5py.File(path, "r") as f:
+        if _attr(f, "format", "") != "halfspace-paper-test":
+            raise PlotError(f"{path}: not a paper reproduction file (format attribute is not halfspace-paper-test)")
+        data = {name: f[name][...] for name in f}
+        data["attrs"] = {key: _attr(f, key) for key in f.attrs}
+    return data
+
+
+def _pressure_axes(axis, data, names, title):
+    a = data["attrs"]
+    peak, x = float(a["hertz_peak"]), data["x"] * 1e3
+    few = x.size <= 30  # then mark the nodes of every method
+    for name, label, color, style, marker in _METHODS:
+        if name in names:
+            axis.plot(x, data[name] / peak, color=color, linestyle=style, marker=marker or ("." if few else None),
+                      ms=3 if marker else 5, label=label)
+    axis.set_xlabel("x (mm)")
+    axis.set_ylabel("p / p_H")
+    axis.set_title(title, fontsize="small")
+    axis.grid(True, alpha=0.3)
+
+
+def _with_gap(axis, data):
+    twin = axis.twinx()
+    twin.plot(data["x"] * 1e3, data["gap"] * 1e6, color="0.6", linewidth=1, label="initial gap")
+    twin.set_ylabel("initial gap x²/(2R) (µm)", color="0.4")
+    twin.tick_params(axis="y", colors="0.4")
+    return twin
+
+
+def plot_paper_test(path, out=None):
+    """Figures of one test: pressures with the initial gap, a zoom with the differences, and variants if any."""
+    data = read_paper_test(path)
+    a = data["attrs"]
+    test = int(a["test"])
+    title = (f"Test {test}: N = {int(a['nodes'])}, R = {float(a['radius']) * 1e3:.4g} mm, "
+             f"E* = {float(a['E_star']) / 1e9:.4g} GPa, W = {float(a['load']):.3g} N/m")
+    written = []
+
+    fig, axis = plt.subplots(figsize=(7.5, 4.5), constrained_layout=True)
+    _pressure_axes(axis, data, [m[0] for m in _METHODS], title)
+    twin = _with_gap(axis, data)
+    lines = axis.get_legend_handles_labels()
+    gap_lines = twin.get_legend_handles_labels()
+    axis.legend(lines[0] + gap_lines[0], lines[1] + gap_lines[1], loc="upper right", fontsize="small")
+    axis.set_ylim(bottom=0)
+    written.append(_save(fig, _output_path(path, "", out, single=False)))
+
+    # Zoom on the contact, and the differences from Lemke over p_H.
+    peak, b = float(a["hertz_peak"]), float(a["hertz_half_width"])
+    x = data["x"]
+    window = np.abs(x) <= 1.3 * b if np.count_nonzero(np.abs(x) <= 1.3 * b) >= 3 else np.ones_like(x, bool)
+    fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4.2), constrained_layout=True)
+    _pressure_axes(left, {**data, "x": x}, [m[0] for m in _METHODS], f"Test {test}: contact zone")
+    left.set_xlim(x[window].min() * 1e3, x[window].max() * 1e3)
+    left.legend(loc="lower center", fontsize="small")
+    for name, label, color, style, _ in _METHODS[1:]:
+        difference = (data[name] - data["p_lemke"]) / peak
+        right.plot(x[window] * 1e3, difference[window], color=color, linestyle="-" if style == "none" else style,
+                   marker="o" if name == "p_hertz" else None, ms=2, label=f"{label} − Lemke")
+    right.set_yscale("symlog", linthresh=1e-12)
+    right.set_xlabel("x (mm)")
+    right.set_ylabel("(p − p_Lemke) / p_H")
+    right.set_title("differences from Lemke (symmetric log scale, linear below 1e-12)", fontsize="small")
+    right.grid(True, alpha=0.3)
+    right.legend(loc="best", fontsize="small")
+    written.append(_save(fig, _output_path(path, "_zoom", out, single=False)))
+
+    variants = [name for name in _VARIANTS if name in data]
+    if variants:
+        fig, axis = plt.subplots(figsize=(7.5, 4.5), constrained_layout=True)
+        _pressure_axes(axis, data, ["p_lemke", "p_hertz"], f"Test {test}: variants (docs/paper.md)")
+        for name in variants:
+            label, color, style = _VARIANTS[name]
+            axis.plot(x * 1e3, data[name] / peak, color=color, linestyle=style, label=label)
+        axis.legend(loc="upper right", fontsize="small")
+        written.append(_save(fig, _output_path(path, "_variants", out, single=False)))
+    return written
+
+
+def plot_paper(directory, out=None):
+    """All figures of a `halfspace paper` output directory."""
+    if not os.path.isdir(directory):
+        raise PlotError(f"{directory}: not a directory")
+    files = sorted(glob.glob(os.path.join(directory, "test*.h5")),
+                   key=lambda p: int(re.sub(r"\D", "", os.path.basename(p)) or 0))
+    if not files:
+        raise PlotError(f"{directory}: no testN.h5 files (run `halfspace paper --output-dir {directory}` first)")
+    written = []
+    for path in files:
+        written += plot_paper_test(path, out)
+    return written
+
+
+# ---------------------------------------------------------------- command line
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(prog="halfspace_plot.py", description=__doc__.split("\n\n")[0])
+    commands = parser.add_subparsers(dest="command", required=True)
+    for name, help_text in (("maps", "height, pressure and contact maps of a result file"),
+                            ("profile", "a line profile through a result file"),
+                            ("sweep", "contact fraction and mean gap against load"),
+                            ("paper", "the Table 1 figures from a `halfspace paper` directory")):
+        sub = commands.add_parser(name, help=help_text)
+        sub.add_argument("path", metavar="DIR" if name == "paper" else "FILE.h5")
+        sub.add_argument("--out", help="output .png file or directory [next to the input]")
+        if name == "profile":
+            sub.add_argument("--row", type=int, help="row index j of a 2D map [middle row]")
+    args = parser.parse_args(argv)
+    try:
+        if args.command == "maps":
+            written = plot_maps(args.path, args.out)
+        elif args.command == "profile":
+            written = plot_profile(args.path, args.row, args.out)
+        elif args.command == "sweep":
+            written = plot_sweep(args.path, args.out)
+        else:
+            written = plot_paper(args.path, args.out)
+    except (PlotError, OSError) as error:
+        print(f"error: {error}", file=sys.stderr)
+        return 1
+    for path in written:
+        print(path)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,374 @@
+// X3P (ISO 25178-72): the zip container through libzip, main.xml through
+// pugixml, the point data decoded here. Layout as in ISO 5436-2 XML / the
+// openGPS reference implementation: Record1 axes, Record3 data (link or
+// list), Record4 checksum file.
+#include "halfspace/io/x3p_reader.hpp"
+
+#include <fmt/format.h>
+#include <zip.h>
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <iterator>
+#include <memory>
+#include <optional>
+#include <pugixml.hpp>
+#include <string>
+#include <vector>
+
+#include "md5.hpp"
+#include "reader_support.hpp"
+
+namespace halfspace::io {
+namespace {
+
+using detail::ReadTarget;
+
+// |R - I| below this counts as no rotation: writers print the identity with
+// a few digits, sometimes as 0.99999999.
+constexpr double kIdentityTolerance = 1e-6;
+
+struct ZipCloser {
+  void operator()(zip_t* archive) const { zip_discard(archive); }
+};
+using Archive = std::unique_ptr<zip_t, ZipCloser>;
+
+struct ZipFileCloser {
+  void operator()(zip_file_t* file) const { zip_fclose(file); }
+};
+
+Archive open_archive(const ReadTarget& target) {
+  std::error_code error;
+  const auto status = std::filesystem::status(target.path, error);
+  if (!std::filesystem::exists(status)) target.fail("the file does not exist");
+  if (std::filesystem::is_directory(status)) target.fail("the path is a directory, not a file");
+  int code = 0;
+  zip_t* archive = zip_open(target.path.c_str(), ZIP_RDONLY | ZIP_CHECKCONS, &code);
+  if (archive == nullptr) {
+    zip_error_t zip_error;
+    zip_error_init_with_code(&zip_error, code);
+    std::string reason = zip_error_strerror(&zip_error);
+    zip_error_fini(&zip_error);
+    std::string hint;
+    if (code == ZIP_ER_NOZIP) {
+      const detail::ReadTarget probe{target.path, target.format};
+      const std::string head = detail::read_file_bytes(probe).substr(0, 16);
+      hint = detail::signature_hint(head);
+    }
+    target.fail(fmt::format("the file is not a readable zip archive ({}){}", reason, hint));
+  }
+  return Archive(archive);
+}
+
+// One member of the archive, in full; its size is checked against `expected`
+// (when given) before anything is decompressed.
+std::string read_member(zip_t* archive, const std::string& name, const ReadTarget& target,
+                        std::optional<std::uint64_t> expected = std::nullopt) {
+  zip_stat_t stat;
+  zip_stat_init(&stat);
+  if (zip_stat(archive, name.c_str(), 0, &stat) != 0) {
+    target.fail(fmt::format("the archive has no member '{}'", name));
+  }
+  if ((stat.valid & ZIP_STAT_SIZE) == 0) target.fail(fmt::format("the size of member '{}' is unknown", name));
+  if (expected && stat.size != *expected) {
+    target.fail(fmt::format("member '{}' holds {} bytes but main.xml describes {} bytes", name, stat.size, *expected));
+  }
+  std::unique_ptr<zip_file_t, ZipFileCloser> file(zip_fopen(archive, name.c_str(), 0));
+  if (!file) {
+    target.fail(fmt::format("member '{}' cannot be opened: {}", name, zip_strerror(archive)));
+  }
+  std::string bytes(static_cast<std::size_t>(stat.size), '\0');
+  std::size_t done = 0;
+  while (done < bytes.size()) {
+    const zip_int64_t count = zip_fread(file.get(), bytes.data() + done, bytes.size() - done);
+    if (count < 0) {
+      target.fail(fmt::format("member '{}' is damaged: {}", name, zip_file_strerror(file.get())));
+    }
+    if (count == 0) target.fail(fmt::format("member '{}' ends after {} of {} bytes", name, done, bytes.size()));
+    done += static_cast<std::size_t>(count);
+  }
+  // Reading to the end makes libzip compare the CRC.
+  char extra = 0;
+  if (zip_fread(file.get(), &extra, 1) < 0) {
+    target.fail(fmt::format("member '{}' is damaged: {}", name, zip_file_strerror(file.get())));
+  }
+  return bytes;
+}
+
+std::string_view local_name(const char* name) {
+  std::string_view text(name);
+  const std::size_t colon = text.find(':');
+  return colon == std::string_view::npos ? text : text.substr(colon + 1);
+}
+
+pugi::xml_node child(pugi::xml_node node, std::string_view name) {
+  for (pugi::xml_node c = node.first_child(); c; c = c.next_sibling()) {
+    if (c.type() == pugi::node_element && local_name(c.name()) == name) return c;
+  }
+  return {};
+}
+
+std::string text_of(pugi::xml_node node) {
+  std::string text = node.child_value();
+  const auto blank = [](unsigned char c) { return std::isspace(c) != 0; };
+  while (!text.empty() && blank(static_cast<unsigned char>(text.back()))) text.pop_back();
+  std::size_t begin = 0;
+  while (begin < text.size() && blank(static_cast<unsigned char>(text[begin]))) ++begin;
+  return text.substr(begin);
+}
+
+// The path of elements below the root, for messages: "Record1/Axes/CX".
+class Xml {
+ public:
+  Xml(pugi::xml_node root, const ReadTarget& target) : root_(root), target_(target) {}
+
+  pugi::xml_node find(std::string_view path) const {
+    pugi::xml_node node = root_;
+    std::size_t begin = 0;
+    while (node && begin <= path.size()) {
+      std::size_t end = path.find('/', begin);
+      if (end == std::string_view::npos) end = path.size();
+      node = child(node, path.substr(begin, end - begin));
+      begin = end + 1;
+    }
+    return node;
+  }
+  pugi::xml_node require(std::string_view path) const {
+    pugi::xml_node node = find(path);
+    if (!node) target_.fail(fmt::format("main.xml has no element {}", path));
+    return node;
+  }
+  std::optional<std::string> text(std::string_view path) const {
+    const pugi::xml_node node = find(path);
+    if (!node) return std::nullopt;
+    return text_of(node);
+  }
+  double number(std::string_view path, double fallback) const {
+    const std::optional<std::string> value = text(path);
+    if (!value) return fallback;
+    char* end = nullptr;
+    const double result = std::strtod(value->c_str(), &end);
+    if (value->empty() || end != value->c_str() + value->size() || !std::isfinite(result)) {
+      target_.fail(fmt::format("main.xml element {} = '{}' is not a number", path, *value));
+    }
+    return result;
+  }
+  std::uint64_t size(std::string_view path) const {
+    const std::string value = text_of(require(path));
+    std::uint64_t result = 0;
+    const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), result);
+    if (error != std::errc() || end != value.data() + value.size()) {
+      target_.fail(fmt::format("main.xml element {} = '{}' is not a non-negative integer", path, value));
+    }
+    return result;
+  }
+
+ private:
+  pugi::xml_node root_;
+  const ReadTarget& target_;
+};
+
+struct ZAxis {
+  char type = 'D';  // I int16, L int32, F float32, D float64
+  double increment = 1.0;
+  double offset = 0.0;
+
+  std::size_t bytes() const { return type == 'I' ? 2 : type == 'L' || type == 'F' ? 4 : 8; }
+  bool is_float() const { return type == 'F' || type == 'D'; }
+};
+
+std::string line_of_offset(std::string_view text, std::ptrdiff_t offset) {
+  const auto end = static_cast<std::size_t>(std::clamp<std::ptrdiff_t>(offset, 0, std::ssize(text)));
+  return fmt::format("line {}", 1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(end), '\n'));
+}
+
+void check_md5(std::string_view bytes, std::string stated, std::string_view what, const ReadTarget& target) {
+  // md5checksum.hex may read "<hex> *main.xml"; only the digest counts.
+  stated = stated.substr(0, std::min<std::size_t>(stated.find_first_of(" \t\r\n*"), stated.size()));
+  std::transform(stated.begin(), stated.end(), stated.begin(),
+                 [](char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); });
+  const std::string computed = detail::md5_hex(bytes);
+  if (stated != computed) {
+    target.fail(fmt::format("{} does not match its MD5 checksum (stated {}, computed {}): the file is damaged", what,
+                            stated, computed));
+  }
+}
+
+void check_axes(const Xml& xml, const std::string& feature, const ReadTarget& target) {
+  if (feature == "PCL") target.fail("FeatureType PCL (a point cloud) is not a height map; need SUR or PRF");
+  if (feature != "SUR" && feature != "PRF") {
+    target.fail(fmt::format("FeatureType '{}' is unknown; need SUR (surface) or PRF (profile)", feature));
+  }
+  for (const char* axis : {"CX", "CY"}) {
+    const std::string type = xml.text(fmt::format("Record1/Axes/{}/AxisType", axis)).value_or("");
+    if (type != "I") {
+      target.fail(fmt::format("axis {} has AxisType '{}': only incremental (I) x and y axes, a regular grid, are "
+                              "supported",
+                              axis, type));
+    }
+  }
+  if (const pugi::xml_node rotation = xml.find("Record1/Axes/Rotation")) {
+    for (int r = 1; r <= 3; ++r) {
+      for (int c = 1; c <= 3; ++c) {
+        const double value = xml.number(fmt::format("Record1/Axes/Rotation/r{}{}", r, c), r == c ? 1.0 : 0.0);
+        if (std::abs(value - (r == c ? 1.0 : 0.0)) > kIdentityTolerance) {
+          target.fail(fmt::format("Record1/Axes/Rotation is not the identity (r{}{} = {}); rotated data are not "
+                                  "supported",
+                                  r, c, value));
+        }
+      }
+    }
+  }
+}
+
+ZAxis z_axis(const Xml& xml, const ReadTarget& target) {
+  ZAxis z;
+  const std::string type = xml.text("Record1/Axes/CZ/DataType").value_or("D");
+  if (type.size() != 1 || std::string_view("ILFD").find(type[0]) == std::string_view::npos) {
+    target.fail(fmt::format("CZ DataType '{}' is unknown; expected I, L, F or D", type));
+  }
+  z.type = type[0];
+  z.increment = xml.number("Record1/Axes/CZ/Increment", 1.0);
+  z.offset = xml.number("Record1/Axes/CZ/Offset", 0.0);
+  if (!(z.increment > 0.0)) target.fail(fmt::format("CZ Increment = {} is invalid: must be positive", z.increment));
+  return z;
+}
+
+double decode(const char* p, char type) {
+  const auto load = [p]<class T>(T) {
+    std::array<char, sizeof(T)> raw;
+    std::memcpy(raw.data(), p, sizeof(T));
+    if constexpr (std::endian::native == std::endian::big) std::reverse(raw.begin(), raw.end());
+    return std::bit_cast<T>(raw);
+  };
+  switch (type) {
+    case 'I':
+      return load(std::int16_t{});
+    case 'L':
+      return load(std::int32_t{});
+    case 'F':
+      return static_cast<double>(load(float{}));
+    default:
+      return load(double{});
+  }
+}
+
+// z from the binary data file, and the validity bits when linked.
+void read_linked_points(zip_t* archive, const Xml& xml, const ZAxis& z, HeightMap& map, const ReadTarget& target) {
+  const std::size_t count = map.size();
+  const std::string data_name = xml.text("Record3/DataLink/PointDataLink").value_or("");
+  if (data_name.empty()) target.fail("Record3/DataLink has no PointDataLink");
+  const std::string data = read_member(archive, data_name, target, count * z.bytes());
+  if (const auto stated = xml.text("Record3/DataLink/MD5ChecksumPointData")) {
+    check_md5(data, *stated, fmt::format("the point data '{}'", data_name), target);
+  }
+  for (std::size_t k = 0; k < count; ++k) {
+    map.heights[static_cast<Eigen::Index>(k)] = decode(data.data() + k * z.bytes(), z.type);
+  }
+
+  const std::optional<std::string> valid_name = xml.text("Record3/DataLink/ValidPointsLink");
+  if (!valid_name || valid_name->empty()) return;
+  const std::string bits = read_member(archive, *valid_name, target);
+  if (bits.size() < (count + 7) / 8) {
+    target.fail(fmt::format("the validity file '{}' holds {} bytes, too few for {} points ({} needed)", *valid_name,
+                            bits.size(), count, (count + 7) / 8));
+  }
+  if (const auto stated = xml.text("Record3/DataLink/MD5ChecksumValidPoints")) {
+    check_md5(bits, *stated, fmt::format("the validity file '{}'", *valid_name), target);
+  }
+  map.valid.assign(count, 1);
+  for (std::size_t k = 0; k < count; ++k) {
+    map.valid[k] = static_cast<std::uint8_t>((static_cast<unsigned char>(bits[k / 8]) >> (k % 8)) & 1U);
+  }
+}
+
+// z written as text, one Datum per point; an empty Datum is an invalid point.
+void read_listed_points(const Xml& xml, HeightMap& map, const ReadTarget& target) {
+  const pugi::xml_node list = xml.require("Record3/DataList");
+  std::size_t k = 0;
+  map.valid.assign(map.size(), 1);
+  for (pugi::xml_node datum = list.first_child(); datum; datum = datum.next_sibling()) {
+    if (datum.type() != pugi::node_element || local_name(datum.name()) != "Datum") continue;
+    if (k == map.size()) target.fail(fmt::format("Record3/DataList holds more than the {} points of the grid", k));
+    const std::string text = text_of(datum);
+    if (text.empty()) {
+      map.valid[k] = 0;
+    } else {
+      char* end = nullptr;
+      map.heights[static_cast<Eigen::Index>(k)] = std::strtod(text.c_str(), &end);
+      if (end != text.c_str() + text.size()) {
+        target.fail(fmt::format("Record3/DataList Datum {} = '{}' is not a number", k, text));
+      }
+    }
+    ++k;
+  }
+  if (k != map.size()) target.fail(fmt::format("Record3/DataList holds {} points but the grid has {}", k, map.size()));
+}
+
+}  // namespace
+
+HeightMap read_x3p_height_map(const std::filesystem::path& path) {
+  const ReadTarget target{path, "an X3P file"};
+  const Archive archive = open_archive(target);
+  const std::string main_xml = read_member(archive.get(), "main.xml", target);
+
+  pugi::xml_document document;
+  const pugi::xml_parse_result parsed = document.load_buffer(main_xml.data(), main_xml.size());
+  if (!parsed) {
+    target.fail(fmt::format("main.xml is not well-formed XML: {} at {}", parsed.description(),
+                            line_of_offset(main_xml, parsed.offset)));
+  }
+  const pugi::xml_node root = document.document_element();
+  if (local_name(root.name()) != "ISO5436_2") {
+    target.fail(fmt::format("main.xml has root element '{}', not ISO5436_2", root.name()));
+  }
+  const Xml xml(root, target);
+  if (const auto checksum_file = xml.text("Record4/ChecksumFile"); checksum_file && !checksum_file->empty()) {
+    check_md5(main_xml, read_member(archive.get(), *checksum_file, target), "main.xml", target);
+  }
+
+  const std::string feature = text_of(xml.require("Record1/FeatureType"));
+  check_axes(xml, feature, target);
+  const ZAxis z = z_axis(xml, target);
+  if (xml.find("Record3/ListDimension")) target.fail("Record3 has a ListDimension (a point list), not a matrix");
+  const std::uint64_t size_x = xml.size("Record3/MatrixDimension/SizeX");
+  const std::uint64_t size_y = xml.size("Record3/MatrixDimension/SizeY");
+  const std::uint64_t size_z = xml.size("Record3/MatrixDimension/SizeZ");
+  if (size_z != 1) target.fail(fmt::format("SizeZ = {}: only a single layer is supported", size_z));
+  if (size_x < 2) target.fail(fmt::format("SizeX = {}: need at least 2 points along x", size_x));
+  if (feature == "PRF" && size_y != 1) target.fail(fmt::format("a profile (PRF) must have SizeY = 1, not {}", size_y));
+  if (size_y == 0) target.fail("SizeY = 0: the grid is empty");
+
+  HeightMap map;
+  map.dimension = size_y == 1 ? 1 : 2;
+  map.nx = static_cast<std::size_t>(size_x);
+  map.ny = static_cast<std::size_t>(size_y);
+  map.heights.resize(static_cast<Eigen::Index>(detail::checked_point_count(size_x, size_y, target)));
+  map.dx = xml.number("Record1/Axes/CX/Increment", 0.0);
+  map.dy = map.dimension == 2 ? xml.number("Record1/Axes/CY/Increment", 0.0) : 0.0;
+  if (map.dx < 0.0 || map.dy < 0.0) target.fail("a CX or CY Increment is negative");
+
+  if (xml.find("Record3/DataLink")) {
+    read_linked_points(archive.get(), xml, z, map, target);
+  } else if (xml.find("Record3/DataList")) {
+    read_listed_points(xml, map, target);
+  } else {
+    target.fail("Record3 has neither a DataLink nor a DataList");
+  }
+  for (std::size_t k = 0; k < map.size(); ++k) {
+    double& h = map.heights[static_cast<Eigen::Index>(k)];
+    h = z.increment * h + z.offset;
+  }
+  detail::mark_non_finite_invalid(map);
+  map.source = fmt::format("{} (X3P {}, {} x {} points, CZ data type {})", path.string(), feature, size_x, size_y,
+                           z.type);
+  return map;
+}
+
+}  // namespace halfspace::io

@@ -1,0 +1,183 @@
+// Least-squares detrending. The fit is done in centred, scaled coordinates
+// u = (i - ic) / hx, v = (j - jc) / hy in [-1, 1], where the normal equations
+// of the monomials up to degree 2 are well conditioned (condition number
+// ~10^2), then refined once by fitting the residual again (iterative
+// refinement, Golub & Van Loan 5.3.8), which recovers the accuracy of an
+// orthogonal factorisation at the cost of a second pass and no N x 6 matrix.
+#include "halfspace/surface/detrend.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "halfspace/error.hpp"
+
+namespace halfspace::surface {
+namespace {
+
+constexpr int kMaxTerms = 6;
+using Vector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxTerms, 1>;
+using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxTerms, kMaxTerms>;
+
+struct Basis {
+  int terms = 1;
+  double ic = 0.0, jc = 0.0, hx = 1.0, hy = 1.0;  // centre and half-width, in cells
+
+  // Monomials 1, u, v, u^2, u v, v^2 (2D) or 1, u, u^2 (1D), at point (j, i).
+  void evaluate(std::size_t j, std::size_t i, bool two_d, double* phi) const {
+    const double u = (static_cast<double>(i) - ic) / hx;
+    const double v = (static_cast<double>(j) - jc) / hy;
+    phi[0] = 1.0;
+    if (terms == 1) return;
+    phi[1] = u;
+    if (two_d) {
+      phi[2] = v;
+      if (terms > 3) {
+        phi[3] = u * u;
+        phi[4] = u * v;
+        phi[5] = v * v;
+      }
+    } else if (terms > 2) {
+      phi[2] = u * u;
+    }
+  }
+};
+
+int term_count(Detrend detrend, int dimension) {
+  switch (detrend) {
+    case Detrend::mean:
+      return 1;
+    case Detrend::plane:
+      return dimension == 1 ? 2 : 3;
+    case Detrend::curvature:
+      return dimension == 1 ? 3 : 6;
+    case Detrend::none:
+      break;
+  }
+  return 0;
+}
+
+// Least-squares coefficients of `values` (a residual or the heights) over the valid points.
+Vector fit(const io::HeightMap& map, const Eigen::ArrayXd& values, const Basis& basis, std::size_t& used) {
+  const int p = basis.terms;
+  Matrix normal = Matrix::Zero(p, p);
+  Vector rhs = Vector::Zero(p);
+  double phi[kMaxTerms];
+  used = 0;
+  for (std::size_t j = 0; j < map.ny; ++j) {
+    for (std::size_t i = 0; i < map.nx; ++i) {
+      const std::size_t k = j * map.nx + i;
+      if (!map.is_valid(k)) continue;
+      basis.evaluate(j, i, map.dimension == 2, phi);
+      const double h = values[static_cast<Eigen::Index>(k)];
+      for (int a = 0; a < p; ++a) {
+        rhs[a] += phi[a] * h;
+        for (int b = 0; b <= a; ++b) normal(a, b) += phi[a] * phi[b];
+      }
+      ++used;
+    }
+  }
+  normal = normal.selfadjointView<Eigen::Lower>();
+  const Eigen::ColPivHouseholderQR<Matrix> qr(normal);
+  if (qr.rank() < p) {
+    throw InputError(fmt::format("height map {}: cannot fit the {} surface: its {} valid points do not determine {} "
+                                 "coefficients (they lie on a line or are too few)",
+                                 map.source, p == 1 ? "mean" : p <= 3 ? "plane" : "quadratic", used, p));
+  }
+  return qr.solve(rhs);
+}
+
+void subtract(io::HeightMap& map, Eigen::ArrayXd& values, const Basis& basis, const Vector& c) {
+  double phi[kMaxTerms];
+  for (std::size_t j = 0; j < map.ny; ++j) {
+    for (std::size_t i = 0; i < map.nx; ++i) {
+      const std::size_t k = j * map.nx + i;
+      if (!map.is_valid(k)) continue;
+      basis.evaluate(j, i, map.dimension == 2, phi);
+      double surface = 0.0;
+      for (int a = 0; a < basis.terms; ++a) surface += c[a] * phi[a];
+      values[static_cast<Eigen::Index>(k)] -= surface;
+    }
+  }
+}
+
+// The removed surface in words: value at the centre and derivatives there,
+// per metre when the spacing is known, else per cell.
+std::string describe(const io::HeightMap& map, Detrend detrend, const Basis& basis, const Vector& c,
+                     std::size_t used) {
+  const bool metric_x = map.dx > 0.0;
+  const bool metric_y = map.dy > 0.0;
+  const double sx = basis.hx * (metric_x ? map.dx : 1.0);  // length of u = 1
+  const double sy = basis.hy * (metric_y ? map.dy : 1.0);
+  const char* per_x = metric_x ? "" : " per cell";
+  const char* per_y = metric_y ? "" : " per cell";
+  std::string text = fmt::format("detrend {}: subtracted the least-squares {} over {} valid points: mean level {:.6g} m",
+                                 to_string(detrend), detrend == Detrend::mean ? "mean" : detrend == Detrend::plane
+                                                                                             ? "plane"
+                                                                                             : "quadratic",
+                                 used, c[0]);
+  if (detrend == Detrend::mean) return text;
+  if (detrend == Detrend::plane || detrend == Detrend::curvature) {
+    text += fmt::format(", slope dh/dx = {:.6g}{}", c[1] / sx, per_x);
+    if (map.dimension == 2) text += fmt::format(", dh/dy = {:.6g}{}", c[2] / sy, per_y);
+  }
+  if (detrend == Detrend::curvature) {
+    if (map.dimension == 1) {
+      text += fmt::format(", d2h/dx2 = {:.6g} {}", 2.0 * c[2] / (sx * sx), metric_x ? "1/m" : "m per cell^2");
+    } else {
+      text += fmt::format(", d2h/dx2 = {:.6g}, d2h/dxdy = {:.6g}, d2h/dy2 = {:.6g} (1/m{})",
+                          2.0 * c[3] / (sx * sx), c[4] / (sx * sy), 2.0 * c[5] / (sy * sy),
+                          metric_x && metric_y ? "" : ", per cell where a spacing is unknown");
+    }
+  }
+  return text + " at the map centre";
+}
+
+}  // namespace
+
+std::string_view to_string(Detrend detrend) {
+  switch (detrend) {
+    case Detrend::none:
+      return "none";
+    case Detrend::mean:
+      return "mean";
+    case Detrend::plane:
+      return "plane";
+    case Detrend::curvature:
+      return "curvature";
+  }
+  return "unknown";
+}
+
+Detrend parse_detrend(std::string_view text) {
+  if (text == "none") return Detrend::none;
+  if (text == "mean") return Detrend::mean;
+  if (text == "plane" || text == "tilt") return Detrend::plane;
+  if (text == "curvature" || text == "quadratic") return Detrend::curvature;
+  throw InputError(fmt::format("detrend '{}' is unknown: use none, mean, plane (tilt) or curvature (quadratic)", text));
+}
+
+void detrend(io::HeightMap& map, Detrend detrend) {
+  if (detrend == Detrend::none) return;
+  Basis basis;
+  basis.terms = term_count(detrend, map.dimension);
+  basis.ic = 0.5 * static_cast<double>(map.nx - 1);
+  basis.jc = 0.5 * static_cast<double>(map.ny - 1);
+  basis.hx = std::max(basis.ic, 0.5);
+  basis.hy = std::max(basis.jc, 0.5);
+
+  std::size_t used = 0;
+  Vector coefficients = fit(map, map.heights, basis, used);
+  if (used == 0) throw InputError(fmt::format("height map {}: no valid points to detrend", map.source));
+  subtract(map, map.heights, basis, coefficients);
+  // One step of iterative refinement: the residual's own fit is the error of the first.
+  const Vector correction = fit(map, map.heights, basis, used);
+  subtract(map, map.heights, basis, correction);
+  coefficients += correction;
+  map.preparation.push_back(describe(map, detrend, basis, coefficients, used));
+}
+
+}  // namespace halfspace::surface

@@ -1,0 +1,121 @@
+// `halfspace paper` and the dense solvers of `halfspace solve`, through the
+// real executable: files written, exit codes, one-line errors.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "io/hdf5_test_support.hpp"
+
+namespace halfspace {
+namespace {
+
+namespace fs = std::filesystem;
+using test::TempDir;
+
+struct ProgramRun {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string quoted(const std::string& text) {
+  std::string out = "'";
+  for (char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+ProgramRun run(const std::vector<std::string>& arguments, const TempDir& dir) {
+  std::string command = quoted(HALFSPACE_EXECUTABLE);
+  for (const std::string& argument : arguments) command += " " + quoted(argument);
+  const fs::path err_file = dir / "stderr.txt";
+  command += " 2> " + quoted(err_file.string());
+  ProgramRun result;
+  FILE* pipe = ::popen(command.c_str(), "r");
+  if (pipe == nullptr) return result;
+  std::array<char, 4096> buffer{};
+  std::size_t count = 0;
+  while ((count = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.out.append(buffer.data(), count);
+  const int status = ::pclose(pipe);
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::ifstream in(err_file);
+  std::ostringstream text;
+  text << in.rdbuf();
+  result.err = text.str();
+  fs::remove(err_file);
+  return result;
+}
+
+void expect_one_line_error(const ProgramRun& result, const std::string& expected) {
+  EXPECT_EQ(result.exit_code, 1) << result.err;
+  EXPECT_EQ(result.err.rfind("error: ", 0), 0U) << result.err;
+  EXPECT_NE(result.err.find(expected), std::string::npos) << "expected '" << expected << "' in: " << result.err;
+}
+
+TEST(PaperCliTest, WritesTheDataFilesAndTheSummary) {
+  const TempDir dir;
+  const fs::path out = dir / "paper";
+  const ProgramRun result = run({"paper", "--test", "4", "--output-dir", out.string(), "--no-figures"}, dir);
+  EXPECT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_NE(result.out.find("test 4: N =   7"), std::string::npos) << result.out;
+  for (const char* name : {"test4.csv", "test4.h5", "summary.md"}) EXPECT_TRUE(fs::exists(out / name)) << name;
+  EXPECT_FALSE(fs::exists(out / "test1.csv"));
+}
+
+TEST(PaperCliTest, DrawsTheFiguresWithThePlottingTool) {
+  if (std::system("/usr/bin/python3 -c 'import matplotlib, h5py, numpy' > /dev/null 2>&1") != 0) {
+    GTEST_SKIP() << "Debian's python3 with matplotlib and h5py is not installed";
+  }
+  const TempDir dir;
+  const ProgramRun result =
+      run({"paper", "--test", "4", "--output-dir", dir.path().string(), "--point-load-kernel", "--quiet"}, dir);
+  EXPECT_EQ(result.exit_code, 0) << result.err;
+  for (const char* name : {"test4.png", "test4_zoom.png", "test4_variants.png"}) {
+    EXPECT_TRUE(fs::exists(dir / name)) << name;
+  }
+}
+
+TEST(PaperCliTest, RejectsBadOptions) {
+  const TempDir dir;
+  expect_one_line_error(run({"paper", "--test", "5", "--output-dir", dir.path().string()}, dir), "--test");
+  expect_one_line_error(run({"paper", "--test", "1"}, dir), "--output-dir is required");
+  expect_one_line_error(run({"paper", "--load", "-3", "--output-dir", dir.path().string(), "--no-figures"}, dir),
+                        "load = -3 N/m is invalid");
+}
+
+TEST(PaperCliTest, SolveRunsTheDenseSolversByName) {
+  const TempDir dir;
+  for (const char* name : {"lemke", "lcpquad"}) {
+    const fs::path output = dir / (std::string(name) + ".h5");
+    const ProgramRun result = run({"solve", "--geometry", "cylinder", "--radius", "0.01", "--grid", "129", "--size",
+                                   "8e-4", "--E-star", "1e11", "--force", "1e5", "--solver", name, "--output",
+                                   output.string(), "--quiet"},
+                                  dir);
+    EXPECT_EQ(result.exit_code, 0) << name << ": " << result.err;
+    const test::H5 file = test::open_file(output);
+    EXPECT_EQ(test::read_string_attribute(file.get(), "solver"), name);
+    EXPECT_EQ(test::read_int64_attribute(file.get(), "converged"), 1) << name;
+  }
+}
+
+TEST(PaperCliTest, SolveRefusesADenseSolverOnALargeGrid) {
+  const TempDir dir;
+  const fs::path output = dir / "big.h5";
+  const ProgramRun result = run({"solve", "--geometry", "sphere", "--radius", "0.01", "--grid", "128x128", "--size",
+                                 "1e-3", "--E-star", "1e11", "--force", "1", "--solver", "lemke", "--output",
+                                 output.string()},
+                                dir);
+  expect_one_line_error(result, "grid 128x128 has 16384 cells");
+  EXPECT_NE(result.err.find("--solver pk"), std::string::npos) << result.err;
+  EXPECT_FALSE(fs::exists(output));
+}
+
+}  // namespace
+}  // namespace halfspace

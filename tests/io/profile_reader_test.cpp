@@ -1,0 +1,140 @@
+// Tests of read_profile: the Dektak CSV export (the real instrument file),
+// x/z columns with units in the header, z alone, and the uniform-spacing
+// check that names the offending line.
+#include "halfspace/io/profile_reader.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "io/hdf5_test_support.hpp"
+#include "io/reader_test_support.hpp"
+
+namespace halfspace::io {
+namespace {
+
+namespace fs = std::filesystem;
+using test::expect_contains;
+using test::kFormatDataDir;
+using test::TempDir;
+
+// The README quotes Sq to 3 significant digits: half a unit of the last one.
+constexpr double kQuotedSqHalfUnit = 0.005e-6;
+// The x [um] / z [nm] fixture prints x = k dx and z with %.17g, and the unit
+// conversion multiplies by 1e-6 or 1e-9 once: a few roundings.
+constexpr double kUnitConversionRelativeTolerance = 4 * std::numeric_limits<double>::epsilon();
+
+std::string profile_error(const fs::path& path) {
+  return test::file_error_of([&] { read_profile(path); });
+}
+
+fs::path write_text(const TempDir& dir, const std::string& name, const std::string& text) {
+  const fs::path path = dir / name;
+  test::write_bytes(path, text);
+  return path;
+}
+
+TEST(ProfileReaderTest, ReadsDektakExportWithReadmeGridSpacingAndSq) {
+  // README: 9600 points, dx = 1500 um / 9600 = 0.15625 um, raw Sq 4.76 um.
+  const HeightMap map = read_profile(kFormatDataDir / "dektak-1.csv");
+  EXPECT_EQ(map.dimension, 1);
+  EXPECT_EQ(map.nx, 9600u);
+  EXPECT_EQ(map.ny, 1u);
+  EXPECT_EQ(map.dx, 1500e-6 / 9600);  // the header's Length / n, not the fit to the rounded x column
+  EXPECT_TRUE(map.valid.empty());
+  EXPECT_NEAR(test::rms_about_mean(map.heights), 4.76e-6, kQuotedSqHalfUnit);
+  EXPECT_NE(map.source.find("Dektak"), std::string::npos) << map.source;
+}
+
+TEST(ProfileReaderTest, DektakHeightsEqualTheHdf5ConversionBitForBit) {
+  const HeightMap map = read_profile(kFormatDataDir / "dektak-1.csv");
+  const HeightMap crop = read_hdf5_height_map(kFormatDataDir / "dektak-1-crop-256.h5");
+  for (std::size_t k = 0; k < crop.nx; ++k) {
+    ASSERT_EQ(map.heights[static_cast<Eigen::Index>(k)], crop.heights[static_cast<Eigen::Index>(k)]) << "at i = " << k;
+  }
+  if (!test::have_topography()) GTEST_SKIP() << "no measured data at " << test::kTopographyDir;
+  const HeightMap full = read_hdf5_height_map(test::kTopographyDir / "dektak-1.h5");
+  test::expect_same_heights(map, full);
+  EXPECT_EQ(map.dx, full.dx);
+}
+
+TEST(ProfileReaderTest, ReadsUnitsFromColumnNames) {
+  // x [um] and z [nm] of the first 256 Dektak points.
+  const HeightMap map = read_profile(kFormatDataDir / "dektak-1-crop-x-z.txt");
+  const HeightMap crop = read_hdf5_height_map(kFormatDataDir / "dektak-1-crop-256.h5");
+  EXPECT_EQ(map.nx, 256u);
+  EXPECT_NEAR(map.dx, crop.dx, kUnitConversionRelativeTolerance * crop.dx);
+  double worst = 0.0;
+  for (Eigen::Index k = 0; k < crop.heights.size(); ++k) {
+    worst = std::max(worst, std::abs(map.heights[k] - crop.heights[k]) / std::abs(crop.heights[k]));
+  }
+  EXPECT_LE(worst, kUnitConversionRelativeTolerance);
+  expect_contains(map.source, {"x in um", "z in nm"});
+}
+
+TEST(ProfileReaderTest, ReadsZAloneWithoutSpacing) {
+  const TempDir dir;
+  const HeightMap map = read_profile(write_text(dir, "z.txt", "# z only\n1e-6\n2e-6\nnan\n4e-6\n"));
+  EXPECT_EQ(map.nx, 4u);
+  EXPECT_EQ(map.dx, 0.0);
+  EXPECT_EQ(map.heights[1], 2e-6);
+  EXPECT_EQ(map.valid, (std::vector<std::uint8_t>{1, 1, 0, 1}));
+}
+
+TEST(ProfileReaderTest, AppliesTheGivenUnitToUnlabelledColumns) {
+  const TempDir dir;
+  const HeightMap map = read_profile(write_text(dir, "xz.csv", "0,1\n0.5,2\n1.0,3\n"), LengthUnit{"um", 1e-6});
+  EXPECT_EQ(map.dx, 0.5e-6);
+  EXPECT_EQ(map.heights[2], 3e-6);
+}
+
+TEST(ProfileReaderTest, RejectsAUnitThatContradictsTheFile) {
+  try {
+    read_profile(kFormatDataDir / "dektak-1-crop-x-z.txt", LengthUnit{"m", 1.0});
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& error) {
+    expect_contains(error.what(), {"the unit m contradicts column 'x [um]'", "which is in um"});
+  }
+}
+
+TEST(ProfileReaderTest, ReportsNonUniformSpacingWithTheLine) {
+  const TempDir dir;
+  const fs::path path = write_text(dir, "gap.txt", "x z\n0.0 1\n0.1 2\n0.2 3\n0.5 4\n0.6 5\n0.7 6\n");
+  expect_contains(profile_error(path), {path.string(), "not uniformly spaced", "line 4 (x = 0.2) to line 5 (x = 0.5)",
+                                        "precision 0.1"});
+}
+
+TEST(ProfileReaderTest, AcceptsRoundingWithinThePrintedPrecision) {
+  // x = k / 3 printed with 2 decimals: off the grid by up to 0.005.
+  const TempDir dir;
+  const HeightMap map = read_profile(write_text(dir, "third.txt", "0.00 1\n0.33 1\n0.67 1\n1.00 1\n1.33 1\n1.67 1\n"));
+  EXPECT_NEAR(map.dx, 1.0 / 3.0, 0.01 / 5);  // the fitted slope of 6 points rounded to 0.01
+}
+
+TEST(ProfileReaderTest, RejectsDecreasingAndNonFiniteX) {
+  const TempDir dir;
+  expect_contains(profile_error(write_text(dir, "down.txt", "3 1\n2 1\n1 1\n")), {"x does not increase"});
+  expect_contains(profile_error(write_text(dir, "nanx.txt", "0 1\nnan 1\n2 1\n")), {"line 2: x = nan is not finite"});
+}
+
+TEST(ProfileReaderTest, RejectsMatricesAndHeaderMismatch) {
+  const TempDir dir;
+  expect_contains(profile_error(write_text(dir, "three.txt", "1 2 3\n4 5 6\n")),
+                  {"line 1 has 3 values", "z alone or x and z"});
+  expect_contains(profile_error(write_text(dir, "names.txt", "x y z\n1 2\n3 4\n")),
+                  {"header on line 1 names 3 columns but the data have 2"});
+  expect_contains(profile_error(write_text(dir, "one.txt", "1 2\n")), {"1 data row"});
+}
+
+TEST(ProfileReaderTest, RejectsATruncatedDektakExport) {
+  const TempDir dir;
+  const std::string full = test::read_bytes(kFormatDataDir / "dektak-1.csv");
+  expect_contains(profile_error(write_text(dir, "head.csv", full.substr(0, 500))), {"no 'Scan Data' line"});
+  // Cut in the middle of a data line: "1499.7,16.5" loses its z.
+  const std::size_t cut = full.find("1499.7,") + 7;
+  expect_contains(profile_error(write_text(dir, "cut.csv", full.substr(0, cut))), {"line", "has 1 values"});
+}
+
+}  // namespace
+}  // namespace halfspace::io

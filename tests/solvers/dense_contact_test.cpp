@@ -1,0 +1,143 @@
+// The contact layer of the dense solvers: internal units (SI and scaled
+// inputs give the same pressures), displacement control, the refusal of grids
+// too large for a dense matrix, and the solver factory's dense names.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <span>
+#include <string>
+
+#include "halfspace/error.hpp"
+#include "halfspace/operators/dense_influence_operator.hpp"
+#include "halfspace/solvers/lcp_quad.hpp"
+#include "halfspace/solvers/lemke.hpp"
+#include "halfspace/solvers/solver_factory.hpp"
+#include "support/grid_fields.hpp"
+
+namespace halfspace {
+namespace {
+
+using testing::field_from;
+
+solvers::SolverSettings dense_settings(const char* name) {
+  solvers::SolverSettings settings;
+  settings.name = name;
+  return settings;
+}
+
+// A line contact like the paper's Test 1: R = 18.75 mm, E* = 115 GPa,
+// 129 cells over 0.8 mm, W = 1e5 N/m (SI).
+constexpr double kRadius = 0.01875;
+constexpr double kEStar = 1.1538e11;
+constexpr std::size_t kNodes = 129;
+constexpr double kLength = 8e-4;
+constexpr double kLoad = 1e5;
+// Two unit systems give LCPs that differ only by rounding and by the datum
+// of the logarithmic kernel (a constant in K, absorbed by the approach).
+constexpr double kUnitInvarianceLemke = 1e-10;    // of the peak pressure
+constexpr double kUnitInvarianceLcpQuad = 1e-8;   // of the peak; interior-point tolerance
+
+struct Units {
+  double length;    // metres per length unit
+  double pressure;  // pascals per pressure unit
+};
+
+// The line contact in the given units: pressures come back in pressure units.
+Eigen::ArrayXd solve_line_contact(solvers::DenseContactSolver& solver, const Units& units) {
+  const Eigen::ArrayXd gap = field_from(solver.grid(), [&](double x, double) { return x * x / (2.0 * kRadius / units.length); });
+  const double load = kLoad / (units.pressure * units.length);
+  const SolveResult result = solver.solve(std::span<const double>(gap.data(), kNodes), Loading::force(load));
+  EXPECT_TRUE(result.converged()) << result.message;
+  EXPECT_NEAR(result.total_force, load, 1e-10 * load);
+  return result.pressure;
+}
+
+template <class Solver>
+Eigen::ArrayXd pressures_in(const Units& units) {
+  const Grid grid = Grid::line(kNodes, kLength / static_cast<double>(kNodes - 1) / units.length, Boundary::free);
+  Solver solver(grid, kEStar / units.pressure);
+  return solve_line_contact(solver, units) * units.pressure;  // back to Pa
+}
+
+template <class Solver>
+void expect_unit_invariance(double tolerance) {
+  const double peak = std::sqrt(kLoad * kEStar / (std::numbers::pi * kRadius));  // Hertz p_H
+  const double half_width = 2.0 * kLoad / (std::numbers::pi * peak);             // Hertz b
+  const Eigen::ArrayXd si = pressures_in<Solver>({1.0, 1.0});
+  const Eigen::ArrayXd millimetre = pressures_in<Solver>({1e-3, 1e6});     // mm, N, MPa
+  const Eigen::ArrayXd hertz = pressures_in<Solver>({half_width, peak});  // b and p_H
+  Eigen::Index where = 0;
+  const double mm_error = (millimetre - si).abs().maxCoeff(&where) / peak;
+  EXPECT_LE(mm_error, tolerance) << "mm/MPa vs SI at node " << where;
+  const double hertz_error = (hertz - si).abs().maxCoeff(&where) / peak;
+  EXPECT_LE(hertz_error, tolerance) << "Hertz units vs SI at node " << where;
+  EXPECT_NEAR(si.maxCoeff(), peak, 1e-3 * peak);  // and it is the Hertz solution
+}
+
+TEST(DenseContactTest, LemkeGivesTheSamePressuresForSiAndScaledInput) {
+  expect_unit_invariance<solvers::Lemke>(kUnitInvarianceLemke);
+}
+
+TEST(DenseContactTest, LcpQuadGivesTheSamePressuresForSiAndScaledInput) {
+  expect_unit_invariance<solvers::LcpQuad>(kUnitInvarianceLcpQuad);
+}
+
+TEST(DenseContactTest, ExplicitUnitsGiveTheSamePressuresAsAutomaticOnes) {
+  const Grid grid = Grid::line(kNodes, kLength / static_cast<double>(kNodes - 1), Boundary::free);
+  solvers::Lemke automatic(grid, kEStar);
+  solvers::DenseContactOptions hertz;
+  hertz.units = {1.4e-4, 4.4e8};  // about b and p_H
+  solvers::Lemke explicit_units(grid, kEStar, {}, hertz);
+  const Eigen::ArrayXd a = solve_line_contact(automatic, {1.0, 1.0});
+  const Eigen::ArrayXd b = solve_line_contact(explicit_units, {1.0, 1.0});
+  EXPECT_LE((a - b).abs().maxCoeff() / a.maxCoeff(), kUnitInvarianceLemke);
+}
+
+TEST(DenseContactTest, DisplacementControlWithoutOverlapGivesZeroPressure) {
+  const Grid grid = Grid::plane(6, 5, 1e-6, 1e-6, Boundary::free);
+  const Eigen::ArrayXd gap = field_from(grid, [](double x, double y) { return 1e-7 + (x * x + y * y) / 2e-3; });
+  for (const char* name : {"lemke", "lcpquad"}) {
+    auto solver = solvers::make_solver(grid, kEStar, dense_settings(name));
+    const SolveResult result = solver->solve(std::span<const double>(gap.data(), grid.size()), Loading::approach(5e-8));
+    EXPECT_TRUE(result.converged()) << name << ": " << result.message;
+    EXPECT_EQ(result.max_pressure, 0.0) << name;
+    EXPECT_EQ(result.contact_fraction, 0.0) << name;
+  }
+}
+
+TEST(DenseContactTest, RefusesGridsTooLargeForADenseMatrix) {
+  const Grid grid = Grid::plane(91, 91, 1e-6, 1e-6, Boundary::periodic);  // 8281 > kMaxDenseCells
+  ASSERT_GT(grid.size(), kMaxDenseCells);
+  for (const char* name : {"lemke", "lcpquad"}) {
+    try {
+      solvers::make_solver(grid, kEStar, dense_settings(name));
+      FAIL() << "expected InputError for " << name;
+    } catch (const InputError& error) {
+      const std::string message = error.what();
+      EXPECT_NE(message.find(std::string("solver '") + name + "'"), std::string::npos) << message;
+      EXPECT_NE(message.find("grid 91x91 has 8281 cells"), std::string::npos) << message;
+      EXPECT_NE(message.find("--solver pk"), std::string::npos) << message;
+    }
+  }
+}
+
+TEST(DenseContactTest, FactoryBuildsTheDenseSolversByName) {
+  const std::vector<std::string> names = solvers::solver_names();
+  for (const char* name : {"lemke", "lcpquad"}) {
+    EXPECT_NE(std::find(names.begin(), names.end(), name), names.end()) << name;
+    const Grid grid = Grid::line(33, 1e-6, Boundary::free);
+    auto solver = solvers::make_solver(grid, kEStar, dense_settings(name));
+    EXPECT_EQ(solver->name(), name);
+    const Eigen::ArrayXd gap = field_from(grid, [](double x, double) { return x * x / 2e-3; });
+    const SolveResult result = solver->solve(std::span<const double>(gap.data(), grid.size()), Loading::force(10.0));
+    EXPECT_TRUE(result.converged()) << name << ": " << result.message;
+    EXPECT_EQ(result.solver, name);
+    EXPECT_GT(result.iterations, 0) << name;
+    EXPECT_LE(result.residual, result.tolerance) << name;
+  }
+}
+
+}  // namespace
+}  // namespace halfspace

@@ -1,0 +1,138 @@
+// Tests of the surface and contact statistics: rms height and slope against
+// closed forms, contact clusters on hand-drawn patterns (4-connectivity,
+// wrap-around only on periodic grids) and the gap moments of a known field.
+#include "halfspace/surface/statistics.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "halfspace/error.hpp"
+
+namespace halfspace::surface {
+namespace {
+
+// Closed forms evaluated with a few operations per cell, summed over <= 10^4 cells.
+constexpr double kTolerance = 1e-12;
+
+using Sizes = std::vector<std::int64_t>;
+
+// A pressure field from a picture: '#' is in contact (p = 1), '.' is not.
+std::vector<double> picture(const std::vector<std::string>& rows) {
+  std::vector<double> p;
+  for (const std::string& row : rows) {
+    for (char c : row) p.push_back(c == '#' ? 1.0 : 0.0);
+  }
+  return p;
+}
+
+TEST(SurfaceStatisticsTest, RmsHeightIsAboutTheMean) {
+  const std::vector<double> h{1.0, 2.0, 3.0, 4.0, 5.0};
+  EXPECT_NEAR(rms_height(h), std::sqrt(2.0), kTolerance);
+  const std::vector<double> shifted{1e3 + 1.0, 1e3 - 1.0};
+  EXPECT_NEAR(rms_height(shifted), 1.0, 1e-12);
+}
+
+TEST(SurfaceStatisticsTest, PeriodicRmsSlopeOfSinusoidIsExact) {
+  // h = A sin(qx x) cos(qy y): |grad h|^2 averages to A^2 (qx^2 + qy^2) / 4.
+  const std::size_t nx = 64;
+  const std::size_t ny = 48;
+  const double dx = 1e-6;
+  const double dy = 2e-6;
+  const Grid grid = Grid::plane(nx, ny, dx, dy, Boundary::periodic);
+  const double amplitude = 3e-8;
+  const double qx = 2 * std::numbers::pi * 5 / (nx * dx);
+  const double qy = 2 * std::numbers::pi * 3 / (ny * dy);
+  std::vector<double> h(grid.size());
+  for (std::size_t j = 0; j < ny; ++j) {
+    for (std::size_t i = 0; i < nx; ++i) {
+      h[j * nx + i] = amplitude * std::sin(qx * i * dx) * std::cos(qy * j * dy);
+    }
+  }
+  const double expected = amplitude * std::sqrt((qx * qx + qy * qy) / 4);
+  EXPECT_NEAR(rms_slope(grid, h), expected, kTolerance * expected);
+
+  // 1D: A sin(q x) has rms slope A q / sqrt(2).
+  const Grid line = Grid::line(100, dx, Boundary::periodic);
+  const double q = 2 * std::numbers::pi * 7 / (100 * dx);
+  std::vector<double> profile(100);
+  for (std::size_t i = 0; i < 100; ++i) profile[i] = amplitude * std::sin(q * i * dx);
+  EXPECT_NEAR(rms_slope(line, profile), amplitude * q / std::sqrt(2.0), kTolerance * amplitude * q);
+}
+
+TEST(SurfaceStatisticsTest, PeriodicRmsSlopeIgnoresNyquistMode) {
+  // The alternating surface (-1)^i is the Nyquist mode: its interpolant
+  // cos(pi x / dx) has zero slope at every cell.
+  const Grid grid = Grid::line(8, 1.0, Boundary::periodic);
+  const std::vector<double> h{1, -1, 1, -1, 1, -1, 1, -1};
+  EXPECT_NEAR(rms_slope(grid, h), 0.0, kTolerance);
+}
+
+TEST(SurfaceStatisticsTest, FreeRmsSlopeOfPlaneIsExact) {
+  // Finite differences are exact on a plane: slope sqrt(a^2 + b^2).
+  const Grid grid = Grid::plane(7, 5, 0.5, 0.25, Boundary::free);
+  std::vector<double> h(grid.size());
+  for (std::size_t j = 0; j < 5; ++j) {
+    for (std::size_t i = 0; i < 7; ++i) h[j * 7 + i] = 0.3 * (i * 0.5) - 0.4 * (j * 0.25) + 2.0;
+  }
+  EXPECT_NEAR(rms_slope(grid, h), 0.5, kTolerance);
+  EXPECT_THROW(rms_slope(grid, std::vector<double>(3, 0.0)), InputError);
+}
+
+TEST(SurfaceStatisticsTest, ClustersUseEdgeNeighboursOnly) {
+  // Diagonal neighbours are separate clusters (4-connectivity).
+  const Grid grid = Grid::plane(5, 4, 1.0, 1.0, Boundary::free);
+  const std::vector<double> p = picture({
+      "##...",
+      "##.#.",
+      "..#..",
+      ".....",
+  });
+  EXPECT_EQ(contact_cluster_sizes(grid, p), (Sizes{4, 1, 1}));
+}
+
+TEST(SurfaceStatisticsTest, PeriodicClustersWrapAroundEdges) {
+  const std::vector<double> p = picture({
+      "#...#",
+      ".....",
+      ".##..",
+      "#...#",
+  });
+  // Free: the four corners and the pair are separate.
+  EXPECT_EQ(contact_cluster_sizes(Grid::plane(5, 4, 1.0, 1.0, Boundary::free), p), (Sizes{2, 1, 1, 1, 1}));
+  // Periodic: the corners touch across both edges and form one cluster.
+  EXPECT_EQ(contact_cluster_sizes(Grid::plane(5, 4, 1.0, 1.0, Boundary::periodic), p), (Sizes{4, 2}));
+}
+
+TEST(SurfaceStatisticsTest, ClustersOnProfile) {
+  const std::vector<double> p = picture({"##..###..#"});
+  EXPECT_EQ(contact_cluster_sizes(Grid::line(10, 1.0, Boundary::free), p), (Sizes{3, 2, 1}));
+  EXPECT_EQ(contact_cluster_sizes(Grid::line(10, 1.0, Boundary::periodic), p), (Sizes{3, 3}));
+  EXPECT_TRUE(contact_cluster_sizes(Grid::line(10, 1.0, Boundary::periodic), std::vector<double>(10, 0.0)).empty());
+  EXPECT_EQ(contact_cluster_sizes(Grid::line(10, 1.0, Boundary::periodic), std::vector<double>(10, 1.0)), (Sizes{10}));
+}
+
+TEST(SurfaceStatisticsTest, ContactStatisticsOfKnownFields) {
+  const Grid grid = Grid::plane(4, 2, 2.0, 3.0, Boundary::periodic);
+  SolveResult result;
+  result.pressure = Eigen::ArrayXd::Zero(8);
+  result.gap = Eigen::ArrayXd::Zero(8);
+  result.pressure << 1, 2, 0, 0, 0, 0, 0, 5;
+  // Contact cells carry rounding-level gaps, one negative: clipped to 0.
+  result.gap << -1e-20, 1e-20, 1, 2, 3, 4, 5, 0;
+  const ContactStatistics s = contact_statistics(grid, result);
+  EXPECT_DOUBLE_EQ(s.contact_fraction, 3.0 / 8.0);
+  EXPECT_NEAR(s.mean_gap, 15.0 / 8.0, kTolerance);
+  EXPECT_NEAR(s.rms_gap, std::sqrt(55.0 / 8.0), kTolerance);
+  EXPECT_NEAR(s.free_volume, 15.0 * 6.0, 1e-10);
+  // (0,0) and (1,0) touch; (3,1) wraps onto (0,1) and (3,0), both out of
+  // contact, so it stays alone.
+  EXPECT_EQ(s.cluster_sizes, (Sizes{2, 1}));
+  EXPECT_EQ(s.clusters(), 2);
+}
+
+}  // namespace
+}  // namespace halfspace::surface
