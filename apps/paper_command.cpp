@@ -18,6 +18,7 @@
 #include "halfspace/error.hpp"
 #include "halfspace/paper/paper_output.hpp"
 #include "halfspace/paper/reproduction.hpp"
+#include "halfspace/threads.hpp"
 #include "value_parsing.hpp"
 
 namespace halfspace::app {
@@ -86,6 +87,9 @@ int run_paper(const PaperOptions& options) {
   reproduction.unscaled_qp = options.unscaled_qp;
   reproduction.point_load_kernel = options.point_load_kernel;
   reproduction.validate();
+  // At most 500 cells: one thread is fastest, and keeps the times steady on
+  // a busy machine.
+  set_threads(1);
   std::vector<int> numbers{1, 2, 3, 4};
   if (options.test) numbers = {paper::table1_test(*options.test).number};
   const fs::path script = options.no_figures ? fs::path() : find_plot_script(options);

@@ -280,8 +280,11 @@ def _pressure_axes(axis, data, names, title):
 
 
 def _with_gap(axis, data):
+    """The initial gap x^2/(2R) on a second axis, drawn smooth between the nodes."""
     twin = axis.twinx()
-    twin.plot(data["x"] * 1e3, data["gap"] * 1e6, color="0.6", linewidth=1, label="initial gap")
+    x = np.linspace(data["x"].min(), data["x"].max(), 400)
+    gap = x**2 / (2.0 * float(data["attrs"]["radius"]))
+    twin.plot(x * 1e3, gap * 1e6, color="0.6", linewidth=1, label="initial gap")
     twin.set_ylabel("initial gap x²/(2R) (µm)", color="0.4")
     twin.tick_params(axis="y", colors="0.4")
     return twin

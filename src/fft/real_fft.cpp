@@ -61,14 +61,15 @@ fftw_complex* as_fftw(std::complex<double>* z) {
 
 }  // namespace
 
-RealFft::RealFft(std::size_t n, FftPlanning planning) : rows_(1), cols_(n) {
+RealFft::RealFft(std::size_t n, FftPlanning planning, FftOutput output) : rows_(1), cols_(n) {
   const int dims[1] = {checked_extent(n)};
-  make_plans(1, dims, planning);
+  make_plans(1, dims, planning, output);
 }
 
-RealFft::RealFft(std::size_t rows, std::size_t cols, FftPlanning planning) : rows_(rows), cols_(cols) {
+RealFft::RealFft(std::size_t rows, std::size_t cols, FftPlanning planning, FftOutput output)
+    : rows_(rows), cols_(cols) {
   const int dims[2] = {checked_extent(rows), checked_extent(cols)};
-  make_plans(2, dims, planning);
+  make_plans(2, dims, planning, output);
 }
 
 RealFft::~RealFft() {
@@ -98,14 +99,14 @@ RealFft& RealFft::operator=(RealFft&& other) noexcept {
   return *this;
 }
 
-void RealFft::make_plans(int rank, const int* dims, FftPlanning planning) {
+void RealFft::make_plans(int rank, const int* dims, FftPlanning planning, FftOutput output) {
   bool allocated = false;
   bool planned = false;
   {
     const std::lock_guard<std::mutex> lock(planner_mutex());
     init_fftw_threads();
     input_ = fftw_alloc_real(real_size());
-    output_ = fftw_alloc_real(real_size());
+    output_ = output == FftOutput::separate ? fftw_alloc_real(real_size()) : input_;
     spectrum_ = reinterpret_cast<std::complex<double>*>(fftw_alloc_complex(spectrum_size()));
     allocated = input_ != nullptr && output_ != nullptr && spectrum_ != nullptr;
     if (allocated) {
@@ -129,7 +130,7 @@ void RealFft::make_plans(int rank, const int* dims, FftPlanning planning) {
   }
   // Measuring planners run trial transforms over the buffers.
   std::fill_n(input_, real_size(), 0.0);
-  std::fill_n(output_, real_size(), 0.0);
+  if (output_ != input_) std::fill_n(output_, real_size(), 0.0);
   std::fill_n(spectrum_, spectrum_size(), std::complex<double>(0.0, 0.0));
 }
 
@@ -151,8 +152,8 @@ void RealFft::release() noexcept {
   const std::lock_guard<std::mutex> lock(planner_mutex());
   if (forward_plan_ != nullptr) fftw_destroy_plan(forward_plan_);
   if (backward_plan_ != nullptr) fftw_destroy_plan(backward_plan_);
+  if (output_ != input_) fftw_free(output_);
   fftw_free(input_);
-  fftw_free(output_);
   fftw_free(spectrum_);
   forward_plan_ = nullptr;
   backward_plan_ = nullptr;

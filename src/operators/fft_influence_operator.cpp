@@ -30,9 +30,12 @@ std::size_t transform_cols(const Grid& grid) {
   return grid.periodic() ? grid.nx() : 2 * grid.nx();
 }
 
+// Periodic transforms have no padding to keep, so the inverse transform may
+// overwrite the input: one real array less.
 RealFft make_fft(const Grid& grid, FftPlanning planning) {
-  if (grid.dimension() == 1) return RealFft(transform_cols(grid), planning);
-  return RealFft(transform_rows(grid), transform_cols(grid), planning);
+  const FftOutput output = grid.periodic() ? FftOutput::overwrite_input : FftOutput::separate;
+  if (grid.dimension() == 1) return RealFft(transform_cols(grid), planning, output);
+  return RealFft(transform_rows(grid), transform_cols(grid), planning, output);
 }
 
 // Distance (in cells) of wrap-around index k on a 2n-periodic axis: k, then

@@ -132,6 +132,11 @@ void write_attributes(hid_t root, const TestReproduction& run, const Reproductio
   attach_double(root, "lemke_vs_lcpquad", run.lemke_vs_lcpquad);
   attach_double(root, "lemke_vs_pk", run.lemke_vs_pk);
   attach_double(root, "lcpquad_vs_pk", run.lcpquad_vs_pk);
+  for (const ExtraPressure& extra : run.extras) {
+    attach_string(root, extra.column + "_status", std::string(to_string(extra.lcp.status)));
+    attach_string(root, extra.column + "_message", extra.lcp.message);
+    attach_int64(root, extra.column + "_iterations", extra.lcp.iterations);
+  }
   attach_string(root, "halfspace_version", fmt::format("{} ({})", kVersion, kGitHash));
 }
 

@@ -19,8 +19,8 @@ namespace halfspace::solvers {
 namespace {
 
 RealFft make_unpadded_fft(const Grid& grid, FftPlanning planning) {
-  if (grid.dimension() == 1) return RealFft(grid.nx(), planning);
-  return RealFft(grid.ny(), grid.nx(), planning);
+  if (grid.dimension() == 1) return RealFft(grid.nx(), planning, FftOutput::overwrite_input);
+  return RealFft(grid.ny(), grid.nx(), planning, FftOutput::overwrite_input);
 }
 
 }  // namespace
@@ -58,6 +58,7 @@ void FourierPreconditioner::apply(std::span<const double> in, std::span<double> 
   Impl& m = *impl_;
   const std::size_t n = m.grid.size();
   assert(in.size() == n && out.size() == n);
+  // `in` is copied before `out` is written, so the two may alias.
   std::span<double> input = m.fft.input();
   linalg::for_each_index(n, [&](std::size_t i) { input[i] = in[i]; });
   m.fft.forward();

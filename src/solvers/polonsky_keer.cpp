@@ -61,7 +61,6 @@ PolonskyKeer::PolonskyKeer(InfluenceOperator& op, PolonskyKeerOptions options, P
   const auto n = static_cast<Eigen::Index>(op_.grid().size());
   direction_.setZero(n);
   direction_image_.setZero(n);
-  if (preconditioner_) preconditioned_gap_.setZero(n);
 }
 
 SolveResult PolonskyKeer::solve(std::span<const double> initial_gap, const Loading& loading,
@@ -110,8 +109,6 @@ SolveResult PolonskyKeer::solve(std::span<const double> initial_gap, const Loadi
   double* g = result.gap.data();
   double* t = direction_.data();
   double* r = direction_image_.data();
-  // The search direction is built from z: the gap itself, or M^-1 g.
-  double* z = preconditioner_ ? preconditioned_gap_.data() : g;
   const std::span<const double> pressure_view(p, n);
   const std::span<double> displacement_view(u, n);
   const double k_self = op_.self_influence();
@@ -211,12 +208,15 @@ SolveResult PolonskyKeer::solve(std::span<const double> initial_gap, const Loadi
       continue;
     }
 
-    // Step 2 with a preconditioner: z = M^-1 g on C (r serves as scratch),
-    // mean-free on C under load control like g itself; G = sum over C of g z.
+    // Step 2 with a preconditioner: z = M^-1 g on C, mean-free on C under
+    // load control like g itself; G = sum over C of g z. z lives in r, which
+    // is free until step 4.
     double search_norm = gap_norm;
+    double* z = g;
     if (preconditioner_) {
-      for_each_index(n, [&](std::size_t i) { r[i] = p[i] > 0.0 ? g[i] : 0.0; });
-      preconditioner_->apply({r, n}, {z, n});
+      z = r;
+      for_each_index(n, [&](std::size_t i) { z[i] = p[i] > 0.0 ? g[i] : 0.0; });
+      preconditioner_->apply({z, n}, {z, n});
       ++result.preconditioner_applications;
       const auto [z_sum, gz] = sums<2>(n, [&](std::size_t i) {
         return p[i] > 0.0 ? std::array<double, 2>{z[i], g[i] * z[i]} : std::array<double, 2>{0.0, 0.0};

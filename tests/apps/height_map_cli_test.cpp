@@ -35,16 +35,30 @@ struct ProgramRun {
 };
 
 std::string quoted(const std::string& text) {
-  std::string result = "'";
-  for (char c : text) result += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return result + "'";
+  std::string result(1, '\'');
+  for (char c : text) {
+    if (c == '\'') {
+      result.append("'\\''");
+    } else {
+      result.push_back(c);
+    }
+  }
+  result.push_back('\'');
+  return result;
 }
 
 ProgramRun run(const std::vector<std::string>& arguments, const TempDir& dir) {
   const fs::path err_file = dir / "stderr.txt";
-  std::string command = "cd " + quoted(dir.path().string()) + " && " + quoted(HALFSPACE_EXECUTABLE);
-  for (const std::string& argument : arguments) command += " " + quoted(argument);
-  command += " 2> " + quoted(err_file.string());
+  std::string command = "cd ";
+  command += quoted(dir.path().string());
+  command += " && ";
+  command += quoted(HALFSPACE_EXECUTABLE);
+  for (const std::string& argument : arguments) {
+    command += ' ';
+    command += quoted(argument);
+  }
+  command += " 2> ";
+  command += quoted(err_file.string());
   ProgramRun result;
   FILE* pipe = ::popen(command.c_str(), "r");
   if (pipe == nullptr) return result;

@@ -88,6 +88,19 @@ TEST(RealFftTest, BackwardOfForwardIsSizeTimesInput) {
   }
 }
 
+TEST(RealFftTest, BackwardCanOverwriteTheInput) {
+  RealFft fft(7, 9, FftPlanning::estimate, FftOutput::overwrite_input);
+  EXPECT_EQ(fft.output().data(), fft.input().data());
+  const std::vector<double> x = random_values(fft.real_size(), 5);
+  std::copy(x.begin(), x.end(), fft.input().begin());
+  fft.forward();
+  fft.backward();
+  const double n = static_cast<double>(fft.real_size());
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    EXPECT_NEAR(fft.input()[i] / n, x[i], kTransformTolerance) << "at " << i;
+  }
+}
+
 TEST(RealFftTest, BuffersStartZeroAfterMeasuring) {
   // FFTW_MEASURE runs trial transforms in the buffers; they are cleared after.
   // One thread: measuring threaded plans is slow on a loaded machine.

@@ -12,6 +12,10 @@ struct fftw_plan_s;  // FFTW's opaque plan type, so that <fftw3.h> stays private
 
 namespace halfspace {
 
+// Where backward() writes: its own buffer, or over the input, which saves a
+// real array when the input need not survive (no zero padding to keep).
+enum class FftOutput { separate, overwrite_input };
+
 // Forward (r2c) and backward (c2r) transforms of a 1D (n) or 2D (rows, cols,
 // row-major) real array. The buffers are FFTW-aligned and owned here; the plans
 // are made once, under a process-wide lock (FFTW's planner is not thread-safe),
@@ -22,9 +26,9 @@ class RealFft {
  public:
   // 1D transform of n real values; the spectrum has n/2 + 1 entries.
   // Throws InputError if a length is 0 or exceeds INT_MAX (FFTW's limit).
-  RealFft(std::size_t n, FftPlanning planning);
+  RealFft(std::size_t n, FftPlanning planning, FftOutput output = FftOutput::separate);
   // 2D transform of a (rows, cols) real array; the spectrum is (rows, cols/2 + 1).
-  RealFft(std::size_t rows, std::size_t cols, FftPlanning planning);
+  RealFft(std::size_t rows, std::size_t cols, FftPlanning planning, FftOutput output = FftOutput::separate);
   ~RealFft();
   RealFft(RealFft&& other) noexcept;
   RealFft& operator=(RealFft&& other) noexcept;
@@ -38,11 +42,12 @@ class RealFft {
   std::size_t spectrum_size() const { return rows_ * spectrum_cols(); }
 
   // Read by forward() and never modified by it, so zero padding written once
-  // stays zero. All buffers are zero after construction.
+  // stays zero (unless FftOutput::overwrite_input, where backward() writes
+  // here). All buffers are zero after construction.
   std::span<double> input() { return {input_, real_size()}; }
   // Written by forward(), read (and destroyed) by backward(); (rows, cols/2 + 1).
   std::span<std::complex<double>> spectrum() { return {spectrum_, spectrum_size()}; }
-  // Written by backward().
+  // Written by backward(); the input buffer itself with FftOutput::overwrite_input.
   std::span<double> output() { return {output_, real_size()}; }
 
   // spectrum = DFT(input), sum_x input(x) exp(-i q x).
@@ -51,7 +56,7 @@ class RealFft {
   void backward();
 
  private:
-  void make_plans(int rank, const int* dims, FftPlanning planning);
+  void make_plans(int rank, const int* dims, FftPlanning planning, FftOutput output);
   void release() noexcept;
 
   std::size_t rows_ = 0;

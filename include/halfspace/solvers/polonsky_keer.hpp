@@ -64,9 +64,8 @@ class PolonskyKeer final : public ContactSolver {
   PolonskyKeerOptions options_;
   Preconditioner* preconditioner_;
   // Workspace, one entry per cell.
-  Eigen::ArrayXd direction_;          // conjugate direction t
-  Eigen::ArrayXd direction_image_;    // K t
-  Eigen::ArrayXd preconditioned_gap_; // M^-1 g on the contact set; empty without a preconditioner
+  Eigen::ArrayXd direction_;        // conjugate direction t
+  Eigen::ArrayXd direction_image_;  // K t, and M^-1 g before it is needed
 };
 
 }  // namespace halfspace::solvers

@@ -9,8 +9,8 @@ namespace halfspace::solvers {
 class Preconditioner {
  public:
   virtual ~Preconditioner() = default;
-  // out = M^-1 in, both with one entry per cell, not overlapping. M^-1 must be
-  // symmetric positive definite. Allocates nothing.
+  // out = M^-1 in, both with one entry per cell; `out` may be `in` itself
+  // (in place). M^-1 must be symmetric positive definite. Allocates nothing.
   virtual void apply(std::span<const double> in, std::span<double> out) = 0;
 };
 
