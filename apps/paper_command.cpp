@@ -37,15 +37,22 @@ struct PaperOptions {
   bool quiet = false;
 };
 
-// The plotting tool: --plot-script, else the installed copy beside the
-// program (<prefix>/share/halfspace), else the one in the source tree this
-// program was built from.
+// The plotting tool: --plot-script, else $HALFSPACE_PLOT_TOOL (as for
+// `solve --plot`), else the installed copy beside the program
+// (<prefix>/share/halfspace), else the one in the source tree this program
+// was built from.
 fs::path find_plot_script(const PaperOptions& options) {
   if (!options.plot_script.empty()) {
     if (!fs::is_regular_file(options.plot_script)) {
       throw InputError(fmt::format("--plot-script '{}' is not a file", options.plot_script));
     }
     return options.plot_script;
+  }
+  if (const char* given = std::getenv("HALFSPACE_PLOT_TOOL"); given != nullptr && *given != '\0') {
+    if (!fs::is_regular_file(given)) {
+      throw InputError(fmt::format("the plotting tool {} (from HALFSPACE_PLOT_TOOL) is not a file", given));
+    }
+    return given;
   }
   std::error_code error;
   const fs::path program = fs::read_symlink("/proc/self/exe", error);
@@ -63,9 +70,9 @@ fs::path find_plot_script(const PaperOptions& options) {
 
 // Runs `script paper DIR`; the script's own shebang picks Debian's python3,
 // which has matplotlib and h5py (scripts/install-deps.sh).
-void draw_figures(const fs::path& script, const fs::path& directory) {
+void draw_figures(const fs::path& script, const fs::path& directory, bool quiet) {
   const std::string command = join_command_line({script.string(), "paper", directory.string()});
-  const int status = std::system(command.c_str());
+  const int status = std::system((quiet ? command + " > /dev/null" : command).c_str());
   if (status != 0) {
     throw InputError(fmt::format(
         "the figures could not be drawn ('{}' failed with status {}); the data files are written. Install "
@@ -109,11 +116,12 @@ int run_paper(const PaperOptions& options) {
     paper::write_csv(directory / fmt::format("test{}.csv", number), run);
     paper::write_hdf5(directory / fmt::format("test{}.h5", number), run, reproduction);
     if (!options.quiet) {
-      fmt::print("test {}: N = {:3}, contact nodes {:3}, max p/p_H {:.6f}; max |dp|/p_H Lemke-LCPquad {:.1e}, "
-                 "Lemke-PK {:.1e}, LCPquad-PK {:.1e}; {} pivots, {} IPM iterations, {} PK iterations\n",
-                 number, run.contact.test.nodes, paper::contact_nodes(run.lemke),
-                 run.lemke.max_pressure / run.contact.hertz.peak, run.lemke_vs_lcpquad, run.lemke_vs_pk,
-                 run.lcpquad_vs_pk, run.lemke_report.iterations, run.lcpquad_report.iterations, run.pk.iterations);
+      fmt::print(
+          "test {}: N = {:3}, contact nodes {:3}, max p/p_H {:.6f}; max |dp|/p_H Lemke-LCPquad {:.1e}, "
+          "Lemke-PK {:.1e}, LCPquad-PK {:.1e}; {} pivots, {} IPM iterations, {} PK iterations\n",
+          number, run.contact.test.nodes, paper::contact_nodes(run.lemke),
+          run.lemke.max_pressure / run.contact.hertz.peak, run.lemke_vs_lcpquad, run.lemke_vs_pk, run.lcpquad_vs_pk,
+          run.lemke_report.iterations, run.lcpquad_report.iterations, run.pk.iterations);
     }
     for (const SolveResult* result : {&run.lemke, &run.lcpquad, &run.pk}) {
       if (!result->converged()) {
@@ -126,7 +134,7 @@ int run_paper(const PaperOptions& options) {
   write_text(directory / "summary.md", paper::summary_markdown(runs, reproduction));
   if (!options.quiet) fmt::print("wrote {}\n", (directory / "summary.md").string());
   std::fflush(stdout);  // before the plotting tool prints the figures it writes
-  if (!options.no_figures) draw_figures(script, directory);
+  if (!options.no_figures) draw_figures(script, directory, options.quiet);
   return converged ? kExitOk : kExitNotConverged;
 }
 
@@ -135,7 +143,8 @@ int run_paper(const PaperOptions& options) {
 Command add_paper_command(CLI::App& program) {
   CLI::App* command = program.add_subcommand(
       "paper", "Reproduce Table 1 of the seed paper (Lemke, LCPquad and Polonsky-Keer on four line contacts)");
-  command->footer("Files: testN.csv, testN.h5, summary.md and the figures testN.png, testN_zoom.png; see docs/paper.md.");
+  command->footer(
+      "Files: testN.csv, testN.h5, summary.md and the figures testN.png, testN_zoom.png; see docs/paper.md.");
   auto options = std::make_shared<PaperOptions>();
   command->add_option("--test", options->test, "run only test N of Table 1 (1 to 4) [all]")
       ->type_name("N")

@@ -125,8 +125,7 @@ struct Alternative {
 const std::vector<std::vector<Alternative>> kAlternatives{
     {{{"force"}, {"force"}}, {{"mean-pressure"}, {"mean-pressure"}}, {{"approach"}, {"approach"}}},
     {{{"E-star"}, {"E-star"}}, {{"E1", "nu1", "E2", "nu2"}, {"E1", "nu1", "E2", "nu2"}}},
-    {{{"height-map"},
-      {"height-map", "dataset", "dx", "dy", "format", "unit", "window", "invalid", "detrend", "pad"}},
+    {{{"height-map"}, {"height-map", "dataset", "dx", "dy", "format", "unit", "window", "invalid", "detrend", "pad"}},
      {{"geometry"}, {"geometry", "radius", "wavelength", "amplitude", "grid", "size"}}},
 };
 

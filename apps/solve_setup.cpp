@@ -20,9 +20,9 @@
 #include "halfspace/error.hpp"
 #include "halfspace/geometry/builtin_surface.hpp"
 #include "halfspace/io/height_map_reader.hpp"
+#include "halfspace/material.hpp"
 #include "halfspace/surface/padding.hpp"
 #include "halfspace/surface/preparation.hpp"
-#include "halfspace/material.hpp"
 #include "value_parsing.hpp"
 
 namespace halfspace::app {
@@ -302,14 +302,16 @@ surface::PreparationOptions preparation_from(const SolveOptions& o, Boundary bou
   if (o.detrend) prepare.detrend = in_context(o.name("detrend"), [&] { return surface::parse_detrend(*o.detrend); });
   if (o.pad) {
     if (boundary == Boundary::periodic) {
-      throw InputError(fmt::format("{} cannot be combined with --boundary periodic: padding is for free boundaries "
-                                   "(a periodic surface repeats without a margin)",
-                                   o.describe("pad")));
+      throw InputError(
+          fmt::format("{} cannot be combined with --boundary periodic: padding is for free boundaries "
+                      "(a periodic surface repeats without a margin)",
+                      o.describe("pad")));
     }
     if (o.mean_pressure) {
-      throw InputError(fmt::format("{} cannot be combined with {}: the mean pressure would be taken over the padded "
-                                   "area; give --force instead",
-                                   o.describe("pad"), o.name("mean-pressure")));
+      throw InputError(
+          fmt::format("{} cannot be combined with {}: the mean pressure would be taken over the padded "
+                      "area; give --force instead",
+                      o.describe("pad"), o.name("mean-pressure")));
     }
     if (!(*o.pad >= surface::kMinPadFactor && *o.pad <= surface::kMaxPadFactor)) {
       throw InputError(fmt::format("{} is invalid: the factor must be in [{}, {}]", o.describe("pad"),
@@ -355,8 +357,8 @@ Surface height_map_surface(const SolveOptions& o, Boundary boundary) {
     // Only the refusal of invalid points is a FileError here: say how to proceed.
     throw FileError(fmt::format("{} (pass --invalid fill or --invalid crop)", error.what()));
   }
-  Grid grid = map.dimension == 1 ? Grid::line(map.nx, map.dx, boundary)
-                                 : Grid::plane(map.nx, map.ny, map.dx, map.dy, boundary);
+  Grid grid =
+      map.dimension == 1 ? Grid::line(map.nx, map.dx, boundary) : Grid::plane(map.nx, map.ny, map.dx, map.dy, boundary);
   return {std::move(grid), std::move(map.heights), std::move(source), std::move(map.preparation)};
 }
 

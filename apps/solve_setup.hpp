@@ -21,7 +21,8 @@ struct SolveSetup {
   Grid grid;
   Eigen::ArrayXd heights;     // m, (ny, nx) row-major
   std::string height_source;  // "file.h5:/height" or "sphere (radius = 0.01 m)"
-  std::vector<std::string> preparation;  // height-map preparation steps, one line each; empty if none
+  // Height-map preparation steps, one line each; empty if none.
+  std::vector<std::string> preparation;
   double e_star = 0.0;        // Pa
   Loading loading;  // a single solve's load; the first step of a sweep
   solvers::SolverSettings solver;  // name, tolerance, iterations, FFT planning

@@ -126,13 +126,15 @@ int run_sweep(const SolveSetup& setup) {
     print_sweep_summary(stdout, setup, steps, csv);
     std::fflush(stdout);
   }
-  // The tool's `maps` reads single results; a sweep file gets its curves.
+  // The maps of the last step, and the sweep's curves.
   bool plotted = true;
   if (plot) {
-    const std::string failure = run_plot_tool(*plot, "sweep", setup.output, setup.quiet);
-    if (!failure.empty()) {
-      fmt::print(stderr, "error: --plot: {}; the results are written to {}\n", failure, setup.output.string());
-      plotted = false;
+    for (const char* subcommand : {"maps", "sweep"}) {
+      const std::string failure = run_plot_tool(*plot, subcommand, setup.output, setup.quiet);
+      if (!failure.empty()) {
+        fmt::print(stderr, "error: --plot: {}; the results are written to {}\n", failure, setup.output.string());
+        plotted = false;
+      }
     }
   }
 

@@ -1,6 +1,6 @@
-// Whole Polonsky-Keer solves at tolerance 1e-10 on the FFT operator: a Hertz
-// sphere on free grids and a self-affine rough surface on periodic grids, with
-// 1 and 2 threads; counters give iterations and the cost per operator application.
+// Whole Polonsky-Keer solves at tolerance 1e-10 on the FFT operator, plain (pk)
+// and Fourier-preconditioned (pk-fourier): a Hertz sphere on free grids and a
+// self-affine rough surface on periodic grids, with 1 and 2 threads.
 #include <fftw3.h>
 
 #include <benchmark/benchmark.h>
@@ -25,6 +25,7 @@
 #include "halfspace/geometry/builtin_surface.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
+#include "halfspace/solvers/fourier_preconditioner.hpp"
 #include "halfspace/solvers/polonsky_keer.hpp"
 #include "halfspace/threads.hpp"
 
@@ -124,15 +125,19 @@ RoughSurface self_affine_surface(std::size_t n) {
 
 struct SolveCase {
   std::string name;
-  bool rough;  // rough periodic surface, else Hertz sphere on a free grid
+  bool rough;           // rough periodic surface, else Hertz sphere on a free grid
+  bool preconditioned;  // pk-fourier, else plain pk
 };
 
 // Kept between Google Benchmark's calls of one benchmark: the operator, the
-// solver with its workspace, and the initial gap. One slot at a time.
+// solver with its workspace, and the initial gap. One slot at a time. Built
+// like solvers::make_solver builds "pk" and "pk-fourier", but with the
+// operator and preconditioner in reach so they can be timed alone.
 struct SolveSetup {
   std::tuple<std::string, std::size_t, int> key;
   std::unique_ptr<Grid> grid;
   std::unique_ptr<FftInfluenceOperator> op;
+  std::unique_ptr<solvers::FourierPreconditioner> preconditioner;
   std::unique_ptr<solvers::PolonskyKeer> solver;
   Eigen::ArrayXd initial_gap;
   Loading loading;
@@ -163,21 +168,25 @@ SolveSetup& solve_setup(const SolveCase& solve_case, std::size_t n, int threads)
     setup->loading = Loading::force(kForce);
   }
   setup->op = std::make_unique<FftInfluenceOperator>(*setup->grid, kEStar);
+  if (solve_case.preconditioned) {
+    setup->preconditioner = std::make_unique<solvers::FourierPreconditioner>(*setup->grid, kEStar);
+  }
   solvers::PolonskyKeerOptions options;
   options.tolerance = kTolerance;
-  setup->solver = std::make_unique<solvers::PolonskyKeer>(*setup->op, options);
+  setup->solver = std::make_unique<solvers::PolonskyKeer>(*setup->op, options, setup->preconditioner.get());
   slot = std::move(setup);
   return *slot;
 }
 
-// Mean wall seconds of op.apply alone on this grid, at least 3 runs and 0.2 s,
-// to split a solve's time into transforms and the solver's own vector work.
-double seconds_per_apply(FftInfluenceOperator& op, std::span<const double> pressure, std::span<double> out) {
+// Mean wall seconds of apply(in, out) alone (at least 3 runs and 0.2 s), to
+// split a solve's time into transforms and the solver's own vector work.
+template <class Product>
+double seconds_per_apply(Product& product, std::span<const double> in, std::span<double> out) {
   const auto start = Clock::now();
   int runs = 0;
   double elapsed = 0.0;
   while (runs < 3 || elapsed < 0.2) {
-    op.apply(pressure, out);
+    product.apply(in, out);
     ++runs;
     elapsed = seconds_since(start);
   }
@@ -204,26 +213,31 @@ void solve(benchmark::State& state, const SolveCase& solve_case, std::size_t n) 
   const double solve_seconds = seconds_since(start) / static_cast<double>(state.iterations());
 
   std::vector<double> scratch(setup->grid->size());
-  const double apply_seconds =
-      seconds_per_apply(*setup->op, {result.pressure.data(), setup->grid->size()}, scratch);
+  const std::span<const double> pressure(result.pressure.data(), setup->grid->size());
+  const double apply_seconds = seconds_per_apply(*setup->op, pressure, scratch);
+  const double preconditioner_seconds =
+      setup->preconditioner ? seconds_per_apply(*setup->preconditioner, pressure, scratch) : 0.0;
   const double applications = result.operator_applications;
+  const double preconditioner_applications = result.preconditioner_applications;
   state.counters["threads"] = threads;
   state.counters["iterations"] = result.iterations;
   state.counters["operator_applications"] = applications;
+  state.counters["preconditioner_applications"] = preconditioner_applications;
   state.counters["s_per_application"] = solve_seconds / applications;
+  state.counters["s_per_iteration"] = solve_seconds / std::max(result.iterations, 1);
   state.counters["apply_alone_s"] = apply_seconds;
-  // Share of the solve spent inside op.apply; the rest is the solver's own
-  // elementwise loops and reductions.
-  state.counters["operator_share"] = applications * apply_seconds / solve_seconds;
+  // Share of the solve spent in K and M^-1 products (FFT pairs and their
+  // copies); the rest is the solver's own elementwise loops and reductions.
+  state.counters["transform_share"] =
+      (applications * apply_seconds + preconditioner_applications * preconditioner_seconds) / solve_seconds;
   state.counters["converged"] = result.converged() ? 1.0 : 0.0;
   state.counters["residual"] = result.residual;
   state.counters["contact_fraction"] = result.contact_fraction;
   if (!result.converged()) state.SetLabel(result.message);
 }
 
+// Names: BM_Solve/<solver>/<case>/<n>/threads:<t>.
 const bool kRegistered = [] {
-  const SolveCase hertz{"hertz_free_2d", false};
-  const SolveCase rough{"rough_periodic_2d", true};
   const auto add = [](const SolveCase& c, std::size_t n) {
     benchmark::RegisterBenchmark(("BM_Solve/" + c.name + "/" + std::to_string(n)).c_str(), solve, c, n)
         ->ArgName("threads")
@@ -232,8 +246,11 @@ const bool kRegistered = [] {
         ->UseRealTime()
         ->Unit(benchmark::kMillisecond);
   };
-  for (std::size_t n : {128, 256, 512}) add(hertz, n);
-  for (std::size_t n : {256, 512, 1024}) add(rough, n);
+  for (const bool preconditioned : {false, true}) {
+    const std::string solver = preconditioned ? "pk-fourier/" : "pk/";
+    for (std::size_t n : {128, 256, 512}) add({solver + "hertz_free_2d", false, preconditioned}, n);
+    for (std::size_t n : {256, 512, 1024}) add({solver + "rough_periodic_2d", true, preconditioned}, n);
+  }
   return true;
 }();
 

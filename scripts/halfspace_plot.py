@@ -3,9 +3,10 @@
 
 Subcommands (PNG files are written next to the input unless --out is given):
 
-  maps FILE.h5             height, pressure and contact maps of a result file
-                           (docs/file-format.md); 1D results as line plots
-  profile FILE.h5 [--row J]
+  maps FILE.h5 [--step K]  height, pressure and contact maps of a result file
+                           (docs/file-format.md); 1D results as line plots;
+                           for a sweep file, load step K (default the last)
+  profile FILE.h5 [--row J] [--step K]
                            a line through a 2D map (row J, default the middle
                            row; or the whole 1D profile): height and gap above,
                            pressure below
@@ -96,21 +97,37 @@ def _save(fig, path):
 # ---------------------------------------------------------------- results
 
 
-def read_result(path):
-    """A halfspace result file as a dict of numpy arrays and attributes."""
+def read_result(path, step=None):
+    """A halfspace result file as a dict of numpy arrays and attributes.
+
+    For a sweep file (fields in /steps/NNN) the fields of load step `step`
+    are read, the last one by default.
+    """
     if not os.path.isfile(path):
         raise PlotError(f"{path}: no such file")
     with h5py.File(path, "r") as f:
         kind = _attr(f, "format", "")
         if kind == "halfspace-paper-test":
             raise PlotError(f"{path} is a paper reproduction file: use 'paper {os.path.dirname(path) or '.'}'")
-        if "sweep" in f and "pressure" not in f:
-            raise PlotError(f"{path} is a sweep file: use 'sweep {path}'")
-        missing = [name for name in ("height", "pressure", "gap") if name not in f]
+        fields, attrs = f, {key: _attr(f, key) for key in f.attrs}
+        if "steps" in f and "pressure" not in f:
+            steps = sorted(f["steps"].keys())
+            if not steps:
+                raise PlotError(f"{path}: the sweep has no steps")
+            index = len(steps) - 1 if step is None else step
+            if not 0 <= index < len(steps):
+                raise PlotError(f"--step {step} is out of range: the sweep has steps 0 to {len(steps) - 1}")
+            fields = f["steps"][steps[index]]
+            attrs.update({key: _attr(fields, key) for key in fields.attrs})
+            attrs["step"] = index
+        elif step is not None:
+            raise PlotError(f"--step {step}: {path} is not a sweep file")
+        missing = [name for name in ("pressure", "gap") if name not in fields] + (["height"] if "height" not in f else [])
         if missing:
             raise PlotError(f"{path}: not a halfspace result file (no dataset {', '.join('/' + m for m in missing)})")
-        result = {name: f[name][...] for name in ("height", "pressure", "gap", "displacement", "contact") if name in f}
-        result["attrs"] = {key: _attr(f, key) for key in f.attrs}
+        result = {name: fields[name][...] for name in ("pressure", "gap", "displacement", "contact") if name in fields}
+        result["height"] = f["height"][...]
+        result["attrs"] = attrs
     if "contact" not in result:
         result["contact"] = (result["pressure"] > 0).astype(np.uint8)
     attrs = result["attrs"]
@@ -123,6 +140,8 @@ def read_result(path):
 def _title(result, path):
     a = result["attrs"]
     parts = [os.path.basename(path)]
+    if "step" in a:
+        parts.append(f"step {a['step']}")
     if "solver" in a:
         parts.append(str(a["solver"]))
     if "mean_pressure" in a:
@@ -149,15 +168,16 @@ def _line_figure(result, path, x, height, gap, pressure, xlabel):
     return fig
 
 
-def plot_maps(path, out=None):
-    """Height, pressure and contact maps (2D) or line plots (1D) of a result file."""
-    result = read_result(path)
+def plot_maps(path, out=None, step=None):
+    """Height, pressure and contact maps (2D) or line plots (1D) of a result file (or of a sweep's step)."""
+    result = read_result(path, step)
+    suffix = "_maps" if step is None else f"_maps_step{step}"
     if result["dimension"] == 1:
         n = result["pressure"].shape[-1]
         xscale, xunit = length_unit(n * result["dx"])
         x = np.arange(n) * result["dx"] * xscale
         fig = _line_figure(result, path, x, result["height"], result["gap"], result["pressure"], f"x ({xunit})")
-        return [_save(fig, _output_path(path, "_maps", out))]
+        return [_save(fig, _output_path(path, suffix, out))]
 
     ny, nx = result["pressure"].shape
     dx, dy = result["dx"], result["dy"] or result["dx"]
@@ -178,12 +198,12 @@ def plot_maps(path, out=None):
         ticks = [0, 1] if field is result["contact"] else None
         fig.colorbar(image, ax=axis, shrink=0.85, label=label, ticks=ticks)
     fig.suptitle(_title(result, path), fontsize="small")
-    return [_save(fig, _output_path(path, "_maps", out))]
+    return [_save(fig, _output_path(path, suffix, out))]
 
 
-def plot_profile(path, row=None, out=None):
+def plot_profile(path, row=None, out=None, step=None):
     """Height, gap and pressure along row `row` of a 2D map (middle row by default), or a 1D profile."""
-    result = read_result(path)
+    result = read_result(path, step)
     if result["dimension"] == 1:
         height, gap, pressure = result["height"], result["gap"], result["pressure"]
         label, suffix = "x", "_profile"
@@ -198,6 +218,8 @@ def plot_profile(path, row=None, out=None):
     xscale, xunit = length_unit(n * result["dx"])
     x = np.arange(n) * result["dx"] * xscale
     fig = _line_figure(result, path, x, height, gap, pressure, f"{label} ({xunit})")
+    if step is not None:
+        suffix += f"_step{step}"
     return [_save(fig, _output_path(path, suffix, out))]
 
 
@@ -369,12 +391,14 @@ def main(argv=None):
         sub.add_argument("--out", help="output .png file or directory [next to the input]")
         if name == "profile":
             sub.add_argument("--row", type=int, help="row index j of a 2D map [middle row]")
+        if name in ("maps", "profile"):
+            sub.add_argument("--step", type=int, help="load step of a sweep file, from 0 [the last]")
     args = parser.parse_args(argv)
     try:
         if args.command == "maps":
-            written = plot_maps(args.path, args.out)
+            written = plot_maps(args.path, args.out, args.step)
         elif args.command == "profile":
-            written = plot_profile(args.path, args.row, args.out)
+            written = plot_profile(args.path, args.row, args.out, args.step)
         elif args.command == "sweep":
             written = plot_sweep(args.path, args.out)
         else:

@@ -42,8 +42,8 @@ std::map<std::string, std::string, std::less<>> parse_header(std::string_view he
     if (text.empty()) continue;
     const std::size_t equals = text.find('=');
     if (equals == std::string_view::npos) {
-      target.fail(fmt::format("header line {} '{}' is not of the form 'name = value'", line,
-                              detail::quoted_bytes(text, 60)));
+      target.fail(
+          fmt::format("header line {} '{}' is not of the form 'name = value'", line, detail::quoted_bytes(text, 60)));
     }
     fields.emplace(std::string(trim(text.substr(0, equals))), std::string(trim(text.substr(equals + 1))));
   }
@@ -82,9 +82,10 @@ LengthUnit unit_of(const std::map<std::string, std::string, std::less<>>& fields
   if (it == fields.end() || it->second.empty()) return fallback.value_or(LengthUnit{"m", 1.0});
   const std::optional<LengthUnit> unit = parse_length_unit(it->second);
   if (!unit) {
-    target.fail(fmt::format("{} = '{}' is not a length unit; heights and spacings must be lengths (m, mm, um, nm, "
-                            "...)",
-                            name, it->second));
+    target.fail(
+        fmt::format("{} = '{}' is not a length unit; heights and spacings must be lengths (m, mm, um, nm, "
+                    "...)",
+                    name, it->second));
   }
   return *unit;
 }
@@ -118,10 +119,11 @@ HeightMap read_gsf_height_map(const std::filesystem::path& path, const std::opti
   const std::size_t count = detail::checked_point_count(x_res, y_res, target);
   const std::size_t available = bytes.size() - data_offset;
   if (available != count * sizeof(float)) {
-    target.fail(fmt::format("the header claims XRes x YRes = {} x {} float32 values ({} bytes) but {} data bytes "
-                            "follow the header{}",
-                            x_res, y_res, count * sizeof(float), available,
-                            available < count * sizeof(float) ? " (the file is truncated)" : ""));
+    target.fail(
+        fmt::format("the header claims XRes x YRes = {} x {} float32 values ({} bytes) but {} data bytes "
+                    "follow the header{}",
+                    x_res, y_res, count * sizeof(float), available,
+                    available < count * sizeof(float) ? " (the file is truncated)" : ""));
   }
   const LengthUnit xy_unit = unit_of(fields, "XYUnits", unit, target);
   const LengthUnit z_unit = unit_of(fields, "ZUnits", unit, target);

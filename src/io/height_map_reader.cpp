@@ -21,23 +21,39 @@ namespace halfspace::io {
 namespace {
 
 constexpr std::array<std::pair<std::string_view, HeightMapFormat>, 17> kNames{{
-    {"auto", HeightMapFormat::automatic},   {"hdf5", HeightMapFormat::hdf5},
-    {"h5", HeightMapFormat::hdf5},          {"nc", HeightMapFormat::hdf5},
-    {"netcdf", HeightMapFormat::hdf5},      {"npy", HeightMapFormat::npy},
-    {"matrix", HeightMapFormat::text_matrix}, {"text", HeightMapFormat::text_matrix},
-    {"txt", HeightMapFormat::text_matrix},  {"csv", HeightMapFormat::text_matrix},
-    {"dat", HeightMapFormat::text_matrix},  {"profile", HeightMapFormat::profile},
-    {"x3p", HeightMapFormat::x3p},          {"gsf", HeightMapFormat::gsf},
-    {"asc", HeightMapFormat::text_matrix},  {"hdf", HeightMapFormat::hdf5},
+    {"auto", HeightMapFormat::automatic},
+    {"hdf5", HeightMapFormat::hdf5},
+    {"h5", HeightMapFormat::hdf5},
+    {"nc", HeightMapFormat::hdf5},
+    {"netcdf", HeightMapFormat::hdf5},
+    {"npy", HeightMapFormat::npy},
+    {"matrix", HeightMapFormat::text_matrix},
+    {"text", HeightMapFormat::text_matrix},
+    {"txt", HeightMapFormat::text_matrix},
+    {"csv", HeightMapFormat::text_matrix},
+    {"dat", HeightMapFormat::text_matrix},
+    {"profile", HeightMapFormat::profile},
+    {"x3p", HeightMapFormat::x3p},
+    {"gsf", HeightMapFormat::gsf},
+    {"asc", HeightMapFormat::text_matrix},
+    {"hdf", HeightMapFormat::hdf5},
     {"nc4", HeightMapFormat::hdf5},
 }};
 
 constexpr std::array<std::pair<std::string_view, HeightMapFormat>, 13> kExtensions{{
-    {".h5", HeightMapFormat::hdf5},   {".hdf5", HeightMapFormat::hdf5},        {".hdf", HeightMapFormat::hdf5},
-    {".he5", HeightMapFormat::hdf5},  {".nc", HeightMapFormat::hdf5},          {".nc4", HeightMapFormat::hdf5},
-    {".npy", HeightMapFormat::npy},   {".txt", HeightMapFormat::text_matrix},  {".csv", HeightMapFormat::text_matrix},
-    {".dat", HeightMapFormat::text_matrix}, {".asc", HeightMapFormat::text_matrix},
-    {".x3p", HeightMapFormat::x3p},   {".gsf", HeightMapFormat::gsf},
+    {".h5", HeightMapFormat::hdf5},
+    {".hdf5", HeightMapFormat::hdf5},
+    {".hdf", HeightMapFormat::hdf5},
+    {".he5", HeightMapFormat::hdf5},
+    {".nc", HeightMapFormat::hdf5},
+    {".nc4", HeightMapFormat::hdf5},
+    {".npy", HeightMapFormat::npy},
+    {".txt", HeightMapFormat::text_matrix},
+    {".csv", HeightMapFormat::text_matrix},
+    {".dat", HeightMapFormat::text_matrix},
+    {".asc", HeightMapFormat::text_matrix},
+    {".x3p", HeightMapFormat::x3p},
+    {".gsf", HeightMapFormat::gsf},
 }};
 
 std::string lower(std::string_view text) {
@@ -82,9 +98,10 @@ HeightMapFormat parse_height_map_format(std::string_view text) {
   for (const auto& [known, format] : kNames) {
     if (name == known) return format;
   }
-  throw InputError(fmt::format("height-map format '{}' is unknown: use auto, hdf5 (h5, nc), npy, matrix (txt, csv, "
-                               "dat), profile, x3p or gsf",
-                               text));
+  throw InputError(
+      fmt::format("height-map format '{}' is unknown: use auto, hdf5 (h5, nc), npy, matrix (txt, csv, "
+                  "dat), profile, x3p or gsf",
+                  text));
 }
 
 HeightMapFormat format_from_extension(const std::filesystem::path& path) {
@@ -94,10 +111,11 @@ HeightMapFormat format_from_extension(const std::filesystem::path& path) {
     if (format == HeightMapFormat::text_matrix && starts_like_dektak_export(path)) return HeightMapFormat::profile;
     return format;
   }
-  throw FileError(fmt::format("cannot read height map '{}': the extension '{}' does not say the format; known "
-                              "extensions are .h5 .hdf5 .nc (HDF5), .npy, .txt .csv .dat .asc (text matrix), .x3p "
-                              "and .gsf; pass --format",
-                              path.string(), path.extension().string()));
+  throw FileError(
+      fmt::format("cannot read height map '{}': the extension '{}' does not say the format; known "
+                  "extensions are .h5 .hdf5 .nc (HDF5), .npy, .txt .csv .dat .asc (text matrix), .x3p "
+                  "and .gsf; pass --format",
+                  path.string(), path.extension().string()));
 }
 
 HeightMap read_height_map(const std::filesystem::path& path, const ReadOptions& options) {
@@ -108,9 +126,10 @@ HeightMap read_height_map(const std::filesystem::path& path, const ReadOptions& 
                                  path.string(), options.dataset, to_string(format)));
   }
   if (options.unit && (format == HeightMapFormat::hdf5 || format == HeightMapFormat::x3p)) {
-    throw InputError(fmt::format("height map '{}': a unit ({}) does not apply to the {} format, whose lengths are "
-                                 "always metres",
-                                 path.string(), options.unit->name, to_string(format)));
+    throw InputError(
+        fmt::format("height map '{}': a unit ({}) does not apply to the {} format, whose lengths are "
+                    "always metres",
+                    path.string(), options.unit->name, to_string(format)));
   }
   const LengthUnit unit = options.unit.value_or(LengthUnit{"m", 1.0});
   switch (format) {
@@ -119,8 +138,18 @@ HeightMap read_height_map(const std::filesystem::path& path, const ReadOptions& 
                                   NonFiniteHeights::mark_invalid);
     case HeightMapFormat::npy:
       return read_npy_height_map(path, unit);
-    case HeightMapFormat::text_matrix:
-      return read_text_matrix(path, unit);
+    case HeightMapFormat::text_matrix: {
+      HeightMap map = read_text_matrix(path, unit);
+      // Two columns are almost always x and z, not a map two points wide:
+      // refuse to guess when the format was only inferred from the extension.
+      if (options.format == HeightMapFormat::automatic && map.dimension == 2 && map.nx == 2) {
+        throw FileError(
+            fmt::format("cannot read height map '{}': it has 2 columns and {} rows; pass --format profile "
+                        "to read it as x, z or --format matrix to read it as a map 2 points wide",
+                        path.string(), map.ny));
+      }
+      return map;
+    }
     case HeightMapFormat::profile:
       return read_profile(path, options.unit);
     case HeightMapFormat::x3p:

@@ -21,22 +21,23 @@ struct Spelling {
 
 // Symbols are matched exactly (case matters: "mm" is not "Mm").
 constexpr std::array kSymbols{
-    Spelling{"m", "m", 1.0},           Spelling{"mm", "mm", 1e-3},
-    Spelling{"um", "um", 1e-6},        Spelling{"\xC2\xB5m", "um", 1e-6},  // micro sign U+00B5
-    Spelling{"\xCE\xBCm", "um", 1e-6},                                     // Greek mu U+03BC
-    Spelling{"nm", "nm", 1e-9},        Spelling{"pm", "pm", 1e-12},
-    Spelling{"\xC3\x85", "Angstrom", 1e-10},                               // Å U+00C5
-    Spelling{"\xE2\x84\xAB", "Angstrom", 1e-10},                           // Å U+212B
+    Spelling{"m", "m", 1.0},
+    Spelling{"mm", "mm", 1e-3},
+    Spelling{"um", "um", 1e-6},
+    Spelling{"\xC2\xB5m", "um", 1e-6},  // micro sign U+00B5
+    Spelling{"\xCE\xBCm", "um", 1e-6},  // Greek mu U+03BC
+    Spelling{"nm", "nm", 1e-9},
+    Spelling{"pm", "pm", 1e-12},
+    Spelling{"\xC3\x85", "Angstrom", 1e-10},      // Å U+00C5
+    Spelling{"\xE2\x84\xAB", "Angstrom", 1e-10},  // Å U+212B
 };
 
 // Words are matched in lower case, singular or plural.
 constexpr std::array kWords{
-    Spelling{"meter", "m", 1.0},           Spelling{"metre", "m", 1.0},
-    Spelling{"millimeter", "mm", 1e-3},    Spelling{"millimetre", "mm", 1e-3},
-    Spelling{"micrometer", "um", 1e-6},    Spelling{"micrometre", "um", 1e-6},
-    Spelling{"micron", "um", 1e-6},        Spelling{"nanometer", "nm", 1e-9},
-    Spelling{"nanometre", "nm", 1e-9},     Spelling{"picometer", "pm", 1e-12},
-    Spelling{"picometre", "pm", 1e-12},    Spelling{"angstrom", "Angstrom", 1e-10},
+    Spelling{"meter", "m", 1.0},        Spelling{"metre", "m", 1.0},        Spelling{"millimeter", "mm", 1e-3},
+    Spelling{"millimetre", "mm", 1e-3}, Spelling{"micrometer", "um", 1e-6}, Spelling{"micrometre", "um", 1e-6},
+    Spelling{"micron", "um", 1e-6},     Spelling{"nanometer", "nm", 1e-9},  Spelling{"nanometre", "nm", 1e-9},
+    Spelling{"picometer", "pm", 1e-12}, Spelling{"picometre", "pm", 1e-12}, Spelling{"angstrom", "Angstrom", 1e-10},
 };
 
 std::string_view trim(std::string_view text) {

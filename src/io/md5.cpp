@@ -2,11 +2,11 @@
 // per-step shifts and the sine-derived constants of the RFC's section 3.4.
 #include "md5.hpp"
 
+#include <fmt/format.h>
+
 #include <array>
 #include <cstdint>
 #include <cstring>
-
-#include <fmt/format.h>
 
 namespace halfspace::io::detail {
 namespace {

@@ -115,8 +115,8 @@ class LiteralParser {
 Dtype parse_dtype(const std::string& quoted, const ReadTarget& target) {
   const std::string descr = quoted.size() >= 2 && quoted.front() == '\'' ? quoted.substr(1, quoted.size() - 2) : quoted;
   const auto unsupported = [&](std::string_view why) {
-    target.fail(fmt::format("dtype '{}' is not supported ({}); heights must be float32, float64 or integers",
-                            descr, why));
+    target.fail(
+        fmt::format("dtype '{}' is not supported ({}); heights must be float32, float64 or integers", descr, why));
   };
   if (descr.size() < 3) unsupported("not a simple numeric type");
   Dtype dtype;
@@ -216,17 +216,25 @@ double load_value(const char* p, const Dtype& dtype) {
       return dtype.size == 4 ? static_cast<double>(load<float>(p, swap)) : load<double>(p, swap);
     case 'i':
       switch (dtype.size) {
-        case 1: return load<std::int8_t>(p, swap);
-        case 2: return load<std::int16_t>(p, swap);
-        case 4: return load<std::int32_t>(p, swap);
-        default: return static_cast<double>(load<std::int64_t>(p, swap));
+        case 1:
+          return load<std::int8_t>(p, swap);
+        case 2:
+          return load<std::int16_t>(p, swap);
+        case 4:
+          return load<std::int32_t>(p, swap);
+        default:
+          return static_cast<double>(load<std::int64_t>(p, swap));
       }
     default:
       switch (dtype.size) {
-        case 1: return load<std::uint8_t>(p, swap);
-        case 2: return load<std::uint16_t>(p, swap);
-        case 4: return load<std::uint32_t>(p, swap);
-        default: return static_cast<double>(load<std::uint64_t>(p, swap));
+        case 1:
+          return load<std::uint8_t>(p, swap);
+        case 2:
+          return load<std::uint16_t>(p, swap);
+        case 4:
+          return load<std::uint32_t>(p, swap);
+        default:
+          return static_cast<double>(load<std::uint64_t>(p, swap));
       }
   }
 }
@@ -254,9 +262,10 @@ HeightMap read_npy_height_map(const std::filesystem::path& path, const LengthUni
   const std::size_t count = detail::checked_point_count(map.nx, map.ny, target);
   const std::size_t available = bytes.size() - offset;
   if (count > available / header.dtype.size) {
-    target.fail(fmt::format("the file is truncated: shape {} of {}-byte values needs {} data bytes but {} follow the "
-                            "header",
-                            shape_text, header.dtype.size, count * header.dtype.size, available));
+    target.fail(
+        fmt::format("the file is truncated: shape {} of {}-byte values needs {} data bytes but {} follow the "
+                    "header",
+                    shape_text, header.dtype.size, count * header.dtype.size, available));
   }
   if (available != count * header.dtype.size) {
     target.fail(fmt::format("{} bytes follow the data of shape {}; the file is not a single .npy array",

@@ -39,8 +39,8 @@ std::optional<LengthUnit> unit_in_name(std::string_view name) {
 struct DektakLayout {
   std::size_t data_offset = 0;
   std::size_t data_line = 1;  // 1-based line number at data_offset
-  double length = 0.0;          // as stated, in length_unit
-  double length_unit = 1.0;     // metres per unit of length
+  double length = 0.0;        // as stated, in length_unit
+  double length_unit = 1.0;   // metres per unit of length
 };
 
 std::optional<DektakLayout> find_dektak_layout(std::string_view text, const ReadTarget& target) {
@@ -105,21 +105,22 @@ double uniform_spacing(const detail::TextTable& table, const ReadTarget& target,
   const double slope = sxy / sxx;
   const double intercept = x_mean - slope * k_mean;
   if (!(slope > 0.0)) {
-    target.fail(fmt::format("x does not increase (from {} at line {} to {} at line {}); a profile needs x in "
-                            "increasing order",
-                            table.at(0, 0), table.line_numbers.front(), table.at(n - 1, 0),
-                            table.line_numbers.back()));
+    target.fail(
+        fmt::format("x does not increase (from {} at line {} to {} at line {}); a profile needs x in "
+                    "increasing order",
+                    table.at(0, 0), table.line_numbers.front(), table.at(n - 1, 0), table.line_numbers.back()));
   }
   const double tolerance = std::max(table.printed_step[0], kFitRoundingFactor * x_max);
   // Each step may differ from the mean step by the rounding of its two ends.
   for (std::size_t k = 0; k + 1 < n; ++k) {
     const double step = table.at(k + 1, 0) - table.at(k, 0);
     if (std::abs(step - slope) > tolerance) {
-      target.fail(fmt::format("x is not uniformly spaced: from line {} (x = {}) to line {} (x = {}) x steps by {:.6g} "
-                              "but the mean step is {:.6g}, and steps may differ from it only by the precision {:.3g} "
-                              "x is printed with; resample the profile to uniform x first",
-                              table.line_numbers[k], table.at(k, 0), table.line_numbers[k + 1], table.at(k + 1, 0),
-                              step, slope, tolerance));
+      target.fail(
+          fmt::format("x is not uniformly spaced: from line {} (x = {}) to line {} (x = {}) x steps by {:.6g} "
+                      "but the mean step is {:.6g}, and steps may differ from it only by the precision {:.3g} "
+                      "x is printed with; resample the profile to uniform x first",
+                      table.line_numbers[k], table.at(k, 0), table.line_numbers[k + 1], table.at(k + 1, 0), step, slope,
+                      tolerance));
     }
   }
   // ... and no point may drift off the uniform grid by more than that precision.
@@ -127,11 +128,11 @@ double uniform_spacing(const detail::TextTable& table, const ReadTarget& target,
     const double expected = intercept + slope * static_cast<double>(k);
     const double deviation = std::abs(table.at(k, 0) - expected);
     if (deviation > tolerance) {
-      target.fail(fmt::format("x is not uniformly spaced: line {} has x = {} but the uniform grid fitted to all {} "
-                              "points (x = {:.9g} + k * {:.9g}) gives {:.9g} there, {:.3g} away, more than the "
-                              "precision {:.3g} x is printed with; resample the profile to uniform x first",
-                              table.line_numbers[k], table.at(k, 0), n, intercept, slope, expected, deviation,
-                              tolerance));
+      target.fail(
+          fmt::format("x is not uniformly spaced: line {} has x = {} but the uniform grid fitted to all {} "
+                      "points (x = {:.9g} + k * {:.9g}) gives {:.9g} there, {:.3g} away, more than the "
+                      "precision {:.3g} x is printed with; resample the profile to uniform x first",
+                      table.line_numbers[k], table.at(k, 0), n, intercept, slope, expected, deviation, tolerance));
     }
   }
   // A stated scan length n * dx is exact where the fitted slope carries the
@@ -157,8 +158,8 @@ HeightMap read_profile(const std::filesystem::path& path, const std::optional<Le
     target.fail(fmt::format("line {} has {} values; a profile has z alone or x and z (for a map use a text matrix)",
                             table.line_numbers.front(), table.columns));
   }
-  if (table.rows() < 2) target.fail(fmt::format("the file holds 1 data row (line {}); need at least 2 points",
-                                                table.line_numbers.front()));
+  if (table.rows() < 2)
+    target.fail(fmt::format("the file holds 1 data row (line {}); need at least 2 points", table.line_numbers.front()));
 
   // Units: the column names' where stated, else the caller's, else metres.
   const bool has_x = table.columns == 2;

@@ -28,8 +28,8 @@ HeightMap read_text_matrix(const std::filesystem::path& path, const LengthUnit& 
     map.ny = rows;
   }
   if (map.nx < 2) {
-    target.fail(fmt::format("the file holds a single number (line {}); need at least 2 points",
-                            table.line_numbers.front()));
+    target.fail(
+        fmt::format("the file holds a single number (line {}); need at least 2 points", table.line_numbers.front()));
   }
   map.heights = Eigen::Map<const Eigen::ArrayXd>(table.values.data(), static_cast<Eigen::Index>(table.values.size()));
   if (unit.metres != 1.0) map.heights *= unit.metres;

@@ -30,7 +30,9 @@ void check_is_text(std::string_view text, const ReadTarget& target) {
   for (std::size_t k = 0; k < text.size(); ++k) {
     const auto byte = static_cast<unsigned char>(text[k]);
     if (byte < 0x20 && byte != '\t' && byte != '\r' && byte != '\n' && byte != '\f' && byte != '\v') {
-      target.fail(fmt::format("the file is not text: byte 0x{:02x} at offset {}{}", byte, k, signature_hint(text)));
+      const std::string hint = signature_hint(text);
+      target.fail(fmt::format("the file is not text: byte 0x{:02x} at offset {}{}", byte, k,
+                              hint.empty() ? " (a binary file of a format that is not read here?)" : hint));
     }
   }
 }
@@ -111,8 +113,7 @@ std::vector<std::string_view> split_fields(std::string_view line) {
   return fields;
 }
 
-TextTable parse_text_table(std::string_view text, std::size_t first_line, bool allow_header,
-                           const ReadTarget& target) {
+TextTable parse_text_table(std::string_view text, std::size_t first_line, bool allow_header, const ReadTarget& target) {
   if (first_line == 1 && text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);
   check_is_text(text, target);
 
@@ -151,17 +152,20 @@ TextTable parse_text_table(std::string_view text, std::size_t first_line, bool a
       if (fields[bad].empty()) {
         target.fail(fmt::format("line {}: field {} is empty (two separators in a row)", line_number, bad + 1));
       }
-      target.fail(fmt::format("line {}: field {} '{}' is not a number{}", line_number, bad + 1,
-                              quoted_bytes(fields[bad], 40),
-                              table.rows() == 0 ? " (comment lines start with # or %)" : ""));
+      target.fail(
+          fmt::format("line {}: field {} '{}' is not a number{}", line_number, bad + 1, quoted_bytes(fields[bad], 40),
+                      table.rows() == 0 ? " (comment lines start with # or %; a profile with column names is read with "
+                                          "--format profile)"
+                                        : ""));
     }
     if (table.rows() == 0) {
       table.columns = row.size();
       table.printed_step.assign(table.columns, 0.0);
     } else if (row.size() != table.columns) {
-      target.fail(fmt::format("line {} has {} values but line {}, the first data line, has {}; every row needs the "
-                              "same number of values",
-                              line_number, row.size(), table.line_numbers.front(), table.columns));
+      target.fail(
+          fmt::format("line {} has {} values but line {}, the first data line, has {}; every row needs the "
+                      "same number of values",
+                      line_number, row.size(), table.line_numbers.front(), table.columns));
     }
     for (std::size_t f = 0; f < row.size(); ++f) {
       if (std::isfinite(row[f])) table.printed_step[f] = std::max(table.printed_step[f], printed_step(fields[f]));

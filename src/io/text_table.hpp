@@ -14,10 +14,10 @@ namespace halfspace::io::detail {
 
 struct TextTable {
   std::size_t columns = 0;
-  std::vector<double> values;              // row-major, rows() * columns
-  std::vector<std::size_t> line_numbers;   // 1-based line of each row in the file
-  std::vector<std::string> header;         // column names, when a header line preceded the data
-  std::size_t header_line = 0;             // its 1-based line number, 0 if none
+  std::vector<double> values;             // row-major, rows() * columns
+  std::vector<std::size_t> line_numbers;  // 1-based line of each row in the file
+  std::vector<std::string> header;        // column names, when a header line preceded the data
+  std::size_t header_line = 0;            // its 1-based line number, 0 if none
   // Per column, the largest rounding step of the values as printed: 0.1 for
   // "12.3", 1e-7 for "1.5e-6", 1 for "42". Non-finite values do not count.
   std::vector<double> printed_step;
@@ -40,8 +40,7 @@ struct TextTable {
 //   (any field that is not a number makes it the header);
 // - every data row must have the same number of fields.
 // Binary content (a NUL or other control byte) is reported as "not text".
-TextTable parse_text_table(std::string_view text, std::size_t first_line, bool allow_header,
-                           const ReadTarget& target);
+TextTable parse_text_table(std::string_view text, std::size_t first_line, bool allow_header, const ReadTarget& target);
 
 // Splits one line into fields by the rules above (without the number check).
 std::vector<std::string_view> split_fields(std::string_view line);

@@ -55,13 +55,16 @@ Archive open_archive(const ReadTarget& target) {
     zip_error_init_with_code(&zip_error, code);
     std::string reason = zip_error_strerror(&zip_error);
     zip_error_fini(&zip_error);
-    std::string hint;
-    if (code == ZIP_ER_NOZIP) {
-      const detail::ReadTarget probe{target.path, target.format};
-      const std::string head = detail::read_file_bytes(probe).substr(0, 16);
-      hint = detail::signature_hint(head);
+    const std::string head = detail::read_file_bytes(target).substr(0, 16);
+    if (head.starts_with("PK\x03\x04")) {
+      // A zip archive's table of contents is at its end: a cut file loses it.
+      target.fail(
+          fmt::format("the zip archive is truncated or damaged ({}): its table of contents, at the end of "
+                      "the file, cannot be read",
+                      reason));
     }
-    target.fail(fmt::format("the file is not a readable zip archive ({}){}", reason, hint));
+    target.fail(fmt::format("the file is not a zip archive, which every X3P file is ({}){}", reason,
+                            detail::signature_hint(head)));
   }
   return Archive(archive);
 }
@@ -208,9 +211,10 @@ void check_axes(const Xml& xml, const std::string& feature, const ReadTarget& ta
   for (const char* axis : {"CX", "CY"}) {
     const std::string type = xml.text(fmt::format("Record1/Axes/{}/AxisType", axis)).value_or("");
     if (type != "I") {
-      target.fail(fmt::format("axis {} has AxisType '{}': only incremental (I) x and y axes, a regular grid, are "
-                              "supported",
-                              axis, type));
+      target.fail(
+          fmt::format("axis {} has AxisType '{}': only incremental (I) x and y axes, a regular grid, are "
+                      "supported",
+                      axis, type));
     }
   }
   if (const pugi::xml_node rotation = xml.find("Record1/Axes/Rotation")) {
@@ -218,9 +222,10 @@ void check_axes(const Xml& xml, const std::string& feature, const ReadTarget& ta
       for (int c = 1; c <= 3; ++c) {
         const double value = xml.number(fmt::format("Record1/Axes/Rotation/r{}{}", r, c), r == c ? 1.0 : 0.0);
         if (std::abs(value - (r == c ? 1.0 : 0.0)) > kIdentityTolerance) {
-          target.fail(fmt::format("Record1/Axes/Rotation is not the identity (r{}{} = {}); rotated data are not "
-                                  "supported",
-                                  r, c, value));
+          target.fail(
+              fmt::format("Record1/Axes/Rotation is not the identity (r{}{} = {}); rotated data are not "
+                          "supported",
+                          r, c, value));
         }
       }
     }
@@ -366,8 +371,8 @@ HeightMap read_x3p_height_map(const std::filesystem::path& path) {
     h = z.increment * h + z.offset;
   }
   detail::mark_non_finite_invalid(map);
-  map.source = fmt::format("{} (X3P {}, {} x {} points, CZ data type {})", path.string(), feature, size_x, size_y,
-                           z.type);
+  map.source =
+      fmt::format("{} (X3P {}, {} x {} points, CZ data type {})", path.string(), feature, size_x, size_y, z.type);
   return map;
 }
 

@@ -49,8 +49,7 @@ std::vector<Column> columns(const TestReproduction& run) {
 
 void attach_double(hid_t location, const std::string& name, double value) {
   const Dataspace space(H5Screate(H5S_SCALAR));
-  const Attribute attribute(
-      H5Acreate2(location, name.c_str(), H5T_IEEE_F64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT));
+  const Attribute attribute(H5Acreate2(location, name.c_str(), H5T_IEEE_F64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT));
   if (!attribute.valid() || H5Awrite(attribute.get(), H5T_NATIVE_DOUBLE, &value) < 0) {
     fail_hdf5(fmt::format("could not write attribute '{}'", name));
   }
@@ -81,8 +80,8 @@ void attach_string(hid_t location, const std::string& name, const std::string& v
 void write_column(hid_t file, const Column& column, std::size_t n, const std::string& description) {
   const hsize_t dims[1] = {n};
   const Dataspace space(H5Screate_simple(1, dims, nullptr));
-  Dataset dataset(H5Dcreate2(file, column.name.c_str(), H5T_IEEE_F64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT,
-                             H5P_DEFAULT));
+  Dataset dataset(
+      H5Dcreate2(file, column.name.c_str(), H5T_IEEE_F64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
   if (!dataset.valid() || H5Dwrite(dataset.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, column.data) < 0) {
     fail_hdf5(fmt::format("could not write dataset '{}'", column.name));
   }
@@ -107,8 +106,9 @@ void write_attributes(hid_t root, const TestReproduction& run, const Reproductio
   const LineContact& c = run.contact;
   attach_string(root, "format", "halfspace-paper-test");
   attach_int64(root, "format_version", kFormatVersion);
-  attach_string(root, "units", "SI: x, gap, dx, radii, half-width, approach in m; pressures and moduli in Pa; "
-                               "load and forces in N/m; times in s");
+  attach_string(root, "units",
+                "SI: x, gap, dx, radii, half-width, approach in m; pressures and moduli in Pa; "
+                "load and forces in N/m; times in s");
   attach_int64(root, "test", c.test.number);
   attach_int64(root, "nodes", static_cast<std::int64_t>(c.test.nodes));
   attach_double(root, "dx", c.grid.dx());
@@ -231,12 +231,14 @@ std::string summary_markdown(const std::vector<TestReproduction>& runs, const Re
       "| test | N | E* (GPa) | R (mm) | b (um) | p_H (MPa) | contact nodes | a / b | max p/p_H Lemke | LCPquad | PK "
       "| Lemke-LCPquad | Lemke-PK | LCPquad-PK | Lemke pivots | LCPquad iterations | LCPquad objective "
       "| PK iterations | Lemke s | LCPquad s | PK s |\n";
-  text += "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  text +=
+      "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const TestReproduction& run : runs) {
     const LineContact& c = run.contact;
     const double p_h = c.hertz.peak;
     text += fmt::format(
-        "| {} | {} | {:.4g} | {:.4g} | {:.4g} | {:.4g} | {} | {:.4f} | {:.6f}{} | {:.6f}{} | {:.6f}{} | {:.1e} | {:.1e} "
+        "| {} | {} | {:.4g} | {:.4g} | {:.4g} | {:.4g} | {} | {:.4f} | {:.6f}{} | {:.6f}{} | {:.6f}{} | {:.1e} | "
+        "{:.1e} "
         "| {:.1e} | {}{} | {} | {:.1e} | {} | {:.4f} | {:.4f} | {:.4f} |\n",
         c.test.number, c.test.nodes, c.e_star / 1e9, c.radius * 1e3, c.hertz.half_width * 1e6, p_h / 1e6,
         contact_nodes(run.lemke), contact_half_width(run.lemke, c.grid.dx()) / c.hertz.half_width,

@@ -3,10 +3,10 @@
 // The dense solvers work in Hertz units: lengths in b, pressures in p_H.
 #include "halfspace/paper/reproduction.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <span>
-
-#include <fmt/format.h>
 
 #include "halfspace/error.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
@@ -65,7 +65,9 @@ void ReproductionOptions::validate() const {
   }
 }
 
-int contact_nodes(const SolveResult& result) { return static_cast<int>((result.pressure > 0.0).count()); }
+int contact_nodes(const SolveResult& result) {
+  return static_cast<int>((result.pressure > 0.0).count());
+}
 
 double contact_half_width(const SolveResult& result, double dx) {
   return 0.5 * dx * static_cast<double>(contact_nodes(result));

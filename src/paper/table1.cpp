@@ -2,10 +2,10 @@
 // contact, and the paper's eq. (4) kernel for showing what it gives.
 #include "halfspace/paper/table1.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <numbers>
-
-#include <fmt/format.h>
 
 #include "halfspace/error.hpp"
 #include "halfspace/material.hpp"

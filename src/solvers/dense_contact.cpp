@@ -3,11 +3,11 @@
 // SolveResult in SI units.
 #include "halfspace/solvers/dense_contact.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-
-#include <fmt/format.h>
 
 #include "halfspace/error.hpp"
 #include "halfspace/material.hpp"
@@ -57,7 +57,8 @@ void DenseContactOptions::validate() const {
     throw InputError(fmt::format("tolerance = {} is invalid: allowed range is (0, 1)", tolerance));
   }
   if (!(std::isfinite(units.length) && units.length >= 0.0)) {
-    throw InputError(fmt::format("length unit = {} m is invalid: must be finite and >= 0 (0: automatic)", units.length));
+    throw InputError(
+        fmt::format("length unit = {} m is invalid: must be finite and >= 0 (0: automatic)", units.length));
   }
   if (!(std::isfinite(units.pressure) && units.pressure >= 0.0)) {
     throw InputError(
@@ -85,11 +86,24 @@ ContactLcp make_contact_lcp(const Grid& grid, double e_star, const Eigen::Matrix
   loading.validate();
   check_size("initial gap", initial_gap.size(), n);
   if (influence.rows() != size || influence.cols() != size) {
-    throw InputError(fmt::format("influence matrix is {} x {}, but the grid has {} cells", influence.rows(),
-                                 influence.cols(), n));
+    throw InputError(
+        fmt::format("influence matrix is {} x {}, but the grid has {} cells", influence.rows(), influence.cols(), n));
   }
   for (double g : initial_gap) {
     if (!std::isfinite(g)) throw InputError("initial gap holds a non-finite value");
+  }
+  if (grid.periodic() && !loading.load_controlled()) {
+    // As for Polonsky-Keer: with zero-mean displacements the mean gap is
+    // mean(g0) - approach, which cannot be negative.
+    double mean_gap = 0.0;
+    for (double g : initial_gap) mean_gap += g;
+    mean_gap /= static_cast<double>(n);
+    if (loading.value >= mean_gap) {
+      throw InputError(
+          fmt::format("approach = {} m is invalid for a periodic surface: it must be below the mean initial gap {} m "
+                      "(full contact needs infinite pressure there)",
+                      loading.value, mean_gap));
+    }
   }
 
   ContactLcp contact;
@@ -108,7 +122,8 @@ ContactLcp make_contact_lcp(const Grid& grid, double e_star, const Eigen::Matrix
   LcpProblem& lcp = contact.lcp;
   lcp.matrix = influence * (contact.pressure_unit / gap_unit);
   lcp.offset.resize(size);
-  for (Eigen::Index i = 0; i < size; ++i) lcp.offset[i] = (initial_gap[static_cast<std::size_t>(i)] - approach) / gap_unit;
+  for (Eigen::Index i = 0; i < size; ++i)
+    lcp.offset[i] = (initial_gap[static_cast<std::size_t>(i)] - approach) / gap_unit;
   if (loading.load_controlled()) {
     lcp.equality_row = Eigen::VectorXd::Ones(size);
     lcp.equality_value = target_force(grid, loading) / (grid.cell_area() * contact.pressure_unit);
@@ -191,9 +206,10 @@ SolveResult DenseContactSolver::solve(std::span<const double> initial_gap, const
         result.status = SolveStatus::converged;
       } else {
         result.status = SolveStatus::breakdown;
-        result.message = fmt::format("{} ended at a solution of its LCP, but the contact residual {:.3e} exceeds the "
-                                     "tolerance {:.3e}",
-                                     name_, result.residual, options_.tolerance);
+        result.message = fmt::format(
+            "{} ended at a solution of its LCP, but the contact residual {:.3e} exceeds the "
+            "tolerance {:.3e}",
+            name_, result.residual, options_.tolerance);
       }
       break;
     case LcpStatus::iteration_limit:

@@ -1,10 +1,10 @@
 // Validation and the violation measure of dense LCPs.
 #include "halfspace/solvers/lcp.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-
-#include <fmt/format.h>
 
 #include "halfspace/error.hpp"
 
@@ -29,10 +29,14 @@ void LcpProblem::validate() const {
 
 std::string_view to_string(LcpStatus status) {
   switch (status) {
-    case LcpStatus::solved: return "solved";
-    case LcpStatus::ray_termination: return "ray_termination";
-    case LcpStatus::iteration_limit: return "iteration_limit";
-    case LcpStatus::failure: return "failure";
+    case LcpStatus::solved:
+      return "solved";
+    case LcpStatus::ray_termination:
+      return "ray_termination";
+    case LcpStatus::iteration_limit:
+      return "iteration_limit";
+    case LcpStatus::failure:
+      return "failure";
   }
   return "unknown";
 }

@@ -3,12 +3,12 @@
 // z'M z + q'z is passed as A = M + M', c = q.
 #include "halfspace/solvers/lcp_quad.hpp"
 
+#include <fmt/format.h>
+#include <libalglib/optimization.h>
+
 #include <chrono>
 #include <cmath>
 #include <string>
-
-#include <fmt/format.h>
-#include <libalglib/optimization.h>
 
 #include "halfspace/error.hpp"
 
@@ -17,13 +17,20 @@ namespace {
 
 std::string completion_meaning(alglib::ae_int_t code) {
   switch (code) {
-    case -9: return "automatic scaling failed";
-    case -5: return "inappropriate solver";
-    case -4: return "unbounded below";
-    case -3: return "inconsistent constraints";
-    case -2: return "no primal/dual feasible point found (infeasible or unbounded)";
-    case 5: return "iteration limit";
-    default: return "unknown code";
+    case -9:
+      return "automatic scaling failed";
+    case -5:
+      return "inappropriate solver";
+    case -4:
+      return "unbounded below";
+    case -3:
+      return "inconsistent constraints";
+    case -2:
+      return "no primal/dual feasible point found (infeasible or unbounded)";
+    case 5:
+      return "iteration limit";
+    default:
+      return "unknown code";
   }
 }
 
@@ -85,8 +92,8 @@ void set_up_qp(const LcpProblem& problem, alglib::minqpstate& state) {
 
 void LcpQuadOptions::validate() const {
   if (!(tolerance >= 0.0 && tolerance < 1.0)) {
-    throw InputError(fmt::format("LCPquad tolerance = {} is invalid: allowed range is [0, 1) (0: ALGLIB's choice)",
-                                 tolerance));
+    throw InputError(
+        fmt::format("LCPquad tolerance = {} is invalid: allowed range is [0, 1) (0: ALGLIB's choice)", tolerance));
   }
 }
 
@@ -117,9 +124,10 @@ LcpSolution solve_lcp_quad(const LcpProblem& problem, const LcpQuadOptions& opti
       solution.status = LcpStatus::solved;
     } else {
       solution.status = code == 5 ? LcpStatus::iteration_limit : LcpStatus::failure;
-      solution.message = fmt::format("LCPquad: ALGLIB minqp (dense IPM) stopped with completion code {} ({}) after "
-                                     "{} iterations",
-                                     static_cast<long>(code), completion_meaning(code), solution.iterations);
+      solution.message = fmt::format(
+          "LCPquad: ALGLIB minqp (dense IPM) stopped with completion code {} ({}) after "
+          "{} iterations",
+          static_cast<long>(code), completion_meaning(code), solution.iterations);
     }
   } catch (const alglib::ap_error& error) {
     // E.g. a failed Cholesky factorisation when M + M' is indefinite.
@@ -143,6 +151,8 @@ LcpQuad::LcpQuad(const Grid& grid, double e_star, Eigen::MatrixXd influence, Lcp
   options_.validate();
 }
 
-LcpSolution LcpQuad::solve_lcp(const LcpProblem& problem) { return solve_lcp_quad(problem, options_); }
+LcpSolution LcpQuad::solve_lcp(const LcpProblem& problem) {
+  return solve_lcp_quad(problem, options_);
+}
 
 }  // namespace halfspace::solvers

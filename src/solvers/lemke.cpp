@@ -10,13 +10,13 @@
 // z0 in every row; at a true solution the two agree to rounding.
 #include "halfspace/solvers/lemke.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cstring>
 #include <limits>
 #include <memory>
-
-#include <fmt/format.h>
 
 #include "halfspace/error.hpp"
 
@@ -127,8 +127,8 @@ LcpSolution solve_lcp_lemke(const LcpProblem& problem, const LemkeOptions& optio
   } else if (info != 0 || worst > kAcceptance * scale) {
     solution.status = LcpStatus::failure;
     solution.iterations = trivial ? 0 : loops + 1;
-    solution.message = fmt::format("Lemke: Siconos returned code {} with a point that violates the LCP by {:.3g}",
-                                   info, worst);
+    solution.message =
+        fmt::format("Lemke: Siconos returned code {} with a point that violates the LCP by {:.3g}", info, worst);
   } else {
     solution.status = LcpStatus::solved;
     solution.iterations = trivial ? 0 : loops + 1;
@@ -148,6 +148,8 @@ Lemke::Lemke(const Grid& grid, double e_star, Eigen::MatrixXd influence, LemkeOp
   options_.validate();
 }
 
-LcpSolution Lemke::solve_lcp(const LcpProblem& problem) { return solve_lcp_lemke(problem, options_); }
+LcpSolution Lemke::solve_lcp(const LcpProblem& problem) {
+  return solve_lcp_lemke(problem, options_);
+}
 
 }  // namespace halfspace::solvers

@@ -46,6 +46,18 @@ struct Basis {
   }
 };
 
+// What is fitted, in words: a plane is a line on a profile, a quadratic a parabola.
+std::string_view surface_name(Detrend detrend, int dimension) {
+  switch (detrend) {
+    case Detrend::plane:
+      return dimension == 1 ? "line" : "plane";
+    case Detrend::curvature:
+      return dimension == 1 ? "parabola" : "quadratic";
+    default:
+      return "mean";
+  }
+}
+
 int term_count(Detrend detrend, int dimension) {
   switch (detrend) {
     case Detrend::mean:
@@ -61,7 +73,8 @@ int term_count(Detrend detrend, int dimension) {
 }
 
 // Least-squares coefficients of `values` (a residual or the heights) over the valid points.
-Vector fit(const io::HeightMap& map, const Eigen::ArrayXd& values, const Basis& basis, std::size_t& used) {
+Vector fit(const io::HeightMap& map, const Eigen::ArrayXd& values, const Basis& basis, std::string_view name,
+           std::size_t& used) {
   const int p = basis.terms;
   Matrix normal = Matrix::Zero(p, p);
   Vector rhs = Vector::Zero(p);
@@ -83,9 +96,10 @@ Vector fit(const io::HeightMap& map, const Eigen::ArrayXd& values, const Basis& 
   normal = normal.selfadjointView<Eigen::Lower>();
   const Eigen::ColPivHouseholderQR<Matrix> qr(normal);
   if (qr.rank() < p) {
-    throw InputError(fmt::format("height map {}: cannot fit the {} surface: its {} valid points do not determine {} "
-                                 "coefficients (they lie on a line or are too few)",
-                                 map.source, p == 1 ? "mean" : p <= 3 ? "plane" : "quadratic", used, p));
+    throw InputError(
+        fmt::format("height map {}: cannot fit the {}: its {} valid points do not determine {} "
+                    "coefficients (they lie on a line or are too few)",
+                    map.source, name, used, p));
   }
   return qr.solve(rhs);
 }
@@ -106,19 +120,16 @@ void subtract(io::HeightMap& map, Eigen::ArrayXd& values, const Basis& basis, co
 
 // The removed surface in words: value at the centre and derivatives there,
 // per metre when the spacing is known, else per cell.
-std::string describe(const io::HeightMap& map, Detrend detrend, const Basis& basis, const Vector& c,
-                     std::size_t used) {
+std::string describe(const io::HeightMap& map, Detrend detrend, const Basis& basis, const Vector& c, std::size_t used) {
   const bool metric_x = map.dx > 0.0;
   const bool metric_y = map.dy > 0.0;
   const double sx = basis.hx * (metric_x ? map.dx : 1.0);  // length of u = 1
   const double sy = basis.hy * (metric_y ? map.dy : 1.0);
   const char* per_x = metric_x ? "" : " per cell";
   const char* per_y = metric_y ? "" : " per cell";
-  std::string text = fmt::format("detrend {}: subtracted the least-squares {} over {} valid points: mean level {:.6g} m",
-                                 to_string(detrend), detrend == Detrend::mean ? "mean" : detrend == Detrend::plane
-                                                                                             ? "plane"
-                                                                                             : "quadratic",
-                                 used, c[0]);
+  std::string text =
+      fmt::format("detrend {}: subtracted the least-squares {} over {} valid points: mean level {:.6g} m",
+                  to_string(detrend), surface_name(detrend, map.dimension), used, c[0]);
   if (detrend == Detrend::mean) return text;
   if (detrend == Detrend::plane || detrend == Detrend::curvature) {
     text += fmt::format(", slope dh/dx = {:.6g}{}", c[1] / sx, per_x);
@@ -128,8 +139,8 @@ std::string describe(const io::HeightMap& map, Detrend detrend, const Basis& bas
     if (map.dimension == 1) {
       text += fmt::format(", d2h/dx2 = {:.6g} {}", 2.0 * c[2] / (sx * sx), metric_x ? "1/m" : "m per cell^2");
     } else {
-      text += fmt::format(", d2h/dx2 = {:.6g}, d2h/dxdy = {:.6g}, d2h/dy2 = {:.6g} (1/m{})",
-                          2.0 * c[3] / (sx * sx), c[4] / (sx * sy), 2.0 * c[5] / (sy * sy),
+      text += fmt::format(", d2h/dx2 = {:.6g}, d2h/dxdy = {:.6g}, d2h/dy2 = {:.6g} (1/m{})", 2.0 * c[3] / (sx * sx),
+                          c[4] / (sx * sy), 2.0 * c[5] / (sy * sy),
                           metric_x && metric_y ? "" : ", per cell where a spacing is unknown");
     }
   }
@@ -170,11 +181,11 @@ void detrend(io::HeightMap& map, Detrend detrend) {
   basis.hy = std::max(basis.jc, 0.5);
 
   std::size_t used = 0;
-  Vector coefficients = fit(map, map.heights, basis, used);
+  Vector coefficients = fit(map, map.heights, basis, surface_name(detrend, map.dimension), used);
   if (used == 0) throw InputError(fmt::format("height map {}: no valid points to detrend", map.source));
   subtract(map, map.heights, basis, coefficients);
   // One step of iterative refinement: the residual's own fit is the error of the first.
-  const Vector correction = fit(map, map.heights, basis, used);
+  const Vector correction = fit(map, map.heights, basis, surface_name(detrend, map.dimension), used);
   subtract(map, map.heights, basis, correction);
   coefficients += correction;
   map.preparation.push_back(describe(map, detrend, basis, coefficients, used));

@@ -40,9 +40,10 @@ bool trim_invalid_border(io::HeightMap& map, std::string& record) {
   if (i_min == 0 && j_min == 0 && i_max == map.nx - 1 && j_max == map.ny - 1) return true;
   record = map.dimension == 1
                ? fmt::format(" after cutting the invalid ends, keeping points {} to {} of {}", i_min, i_max, map.nx)
-               : fmt::format(" after cutting the fully invalid border, keeping columns {} to {} and rows {} to {} of "
-                             "the {}x{} map",
-                             i_min, i_max, j_min, j_max, map.nx, map.ny);
+               : fmt::format(
+                     " after cutting the fully invalid border, keeping columns {} to {} and rows {} to {} of "
+                     "the {}x{} map",
+                     i_min, i_max, j_min, j_max, map.nx, map.ny);
   extract_window(map, i_min, j_min, i_max - i_min + 1, j_max - j_min + 1);
   return true;
 }
@@ -77,9 +78,10 @@ void refuse_invalid_points(const io::HeightMap& map) {
   if (count == 0) return;
   const std::size_t first =
       static_cast<std::size_t>(std::find(map.valid.begin(), map.valid.end(), std::uint8_t{0}) - map.valid.begin());
-  throw FileError(fmt::format("height map {}: {} of {} heights are invalid (not finite, or marked invalid by the "
-                              "file); the first is at {}; fill them or crop to the valid region",
-                              map.source, count, map.size(), where(map, first)));
+  throw FileError(
+      fmt::format("height map {}: {} of {} heights are invalid (not finite, or marked invalid by the "
+                  "file); the first is at {}; fill them or crop to the valid region",
+                  map.source, count, map.size(), where(map, first)));
 }
 
 void fill_invalid_points(io::HeightMap& map) {
@@ -150,9 +152,10 @@ void fill_invalid_points(io::HeightMap& map) {
     if (unknown[k] >= 0) map.heights[static_cast<Eigen::Index>(k)] = filled[unknown[k]];
   }
   map.valid.clear();
-  map.preparation.push_back(fmt::format("invalid points: filled {} of {} points by harmonic (Laplace) interpolation "
-                                        "of the valid points{}",
-                                        count, n, trimmed.empty() ? std::string() : ";" + trimmed));
+  map.preparation.push_back(
+      fmt::format("invalid points: filled {} of {} points by harmonic (Laplace) interpolation "
+                  "of the valid points{}",
+                  count, n, trimmed.empty() ? std::string() : ";" + trimmed));
 }
 
 void crop_to_valid_points(io::HeightMap& map) {
@@ -169,8 +172,7 @@ void crop_to_valid_points(io::HeightMap& map) {
   std::size_t best_area = 0, best_i0 = 0, best_j0 = 0, best_nx = 0, best_ny = 0;
   const auto consider = [&](std::size_t i0, std::size_t j0, std::size_t nx, std::size_t ny) {
     const std::size_t area = nx * ny;
-    const bool better =
-        area > best_area || (area == best_area && (j0 < best_j0 || (j0 == best_j0 && i0 < best_i0)));
+    const bool better = area > best_area || (area == best_area && (j0 < best_j0 || (j0 == best_j0 && i0 < best_i0)));
     if (!better) return;
     best_area = area;
     best_i0 = i0;
@@ -193,9 +195,10 @@ void crop_to_valid_points(io::HeightMap& map) {
     }
   }
   if (best_nx < 2 || (map.dimension == 2 && best_ny < 2)) {
-    throw InputError(fmt::format("height map {}: the largest rectangle of valid points is {} x {} points; need at least "
-                                 "2 along each axis (fill the invalid points instead)",
-                                 map.source, best_nx, best_ny));
+    throw InputError(
+        fmt::format("height map {}: the largest rectangle of valid points is {} x {} points; need at least "
+                    "2 along each axis (fill the invalid points instead)",
+                    map.source, best_nx, best_ny));
   }
   const std::size_t old_nx = map.nx;
   const std::size_t old_ny = map.ny;
@@ -206,9 +209,10 @@ void crop_to_valid_points(io::HeightMap& map) {
           ? fmt::format("invalid points: cropped to the longest run of valid points, points {} to {} of {} ({} invalid "
                         "points in the profile)",
                         best_i0, best_i0 + best_nx - 1, old_nx, invalid)
-          : fmt::format("invalid points: cropped to the largest rectangle of valid points, columns {} to {} and rows {} "
-                        "to {} of the {}x{} map ({} invalid points in the map)",
-                        best_i0, best_i0 + best_nx - 1, best_j0, best_j0 + best_ny - 1, old_nx, old_ny, invalid));
+          : fmt::format(
+                "invalid points: cropped to the largest rectangle of valid points, columns {} to {} and rows {} "
+                "to {} of the {}x{} map ({} invalid points in the map)",
+                best_i0, best_i0 + best_nx - 1, best_j0, best_j0 + best_ny - 1, old_nx, old_ny, invalid));
 }
 
 }  // namespace halfspace::surface

@@ -13,13 +13,14 @@ namespace halfspace::surface {
 
 void pad_for_free_boundary(io::HeightMap& map, double factor) {
   if (!(std::isfinite(factor) && factor >= kMinPadFactor && factor <= kMaxPadFactor)) {
-    throw InputError(fmt::format("padding factor {} is invalid: must be in [{}, {}] (the padded grid is factor times "
-                                 "larger along each axis)",
-                                 factor, kMinPadFactor, kMaxPadFactor));
+    throw InputError(
+        fmt::format("padding factor {} is invalid: must be in [{}, {}] (the padded grid is factor times "
+                    "larger along each axis)",
+                    factor, kMinPadFactor, kMaxPadFactor));
   }
   if (count_invalid(map) > 0) {
-    throw InputError(fmt::format("height map {}: cannot pad a map with invalid points; fill or crop them first",
-                                 map.source));
+    throw InputError(
+        fmt::format("height map {}: cannot pad a map with invalid points; fill or crop them first", map.source));
   }
   const auto grown = [factor](std::size_t n) {
     return static_cast<std::size_t>(std::ceil(factor * static_cast<double>(n) - 1e-9));
@@ -34,7 +35,8 @@ void pad_for_free_boundary(io::HeightMap& map, double factor) {
   Eigen::ArrayXd heights = Eigen::ArrayXd::Constant(static_cast<Eigen::Index>(nx * ny), level);
   for (std::size_t j = 0; j < map.ny; ++j) {
     for (std::size_t i = 0; i < map.nx; ++i) {
-      heights[static_cast<Eigen::Index>((j0 + j) * nx + i0 + i)] = map.heights[static_cast<Eigen::Index>(j * map.nx + i)];
+      heights[static_cast<Eigen::Index>((j0 + j) * nx + i0 + i)] =
+          map.heights[static_cast<Eigen::Index>(j * map.nx + i)];
     }
   }
   map.preparation.push_back(

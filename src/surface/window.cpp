@@ -16,9 +16,10 @@ Window parse_window(std::string_view text) {
   std::vector<std::size_t> values;
   std::size_t begin = 0;
   const auto invalid = [&] {
-    return InputError(fmt::format("window '{}' is invalid: expected I0,J0,NX,NY (first column, first row, columns, "
-                                  "rows; 0-based) for a map or I0,NX for a profile",
-                                  text));
+    return InputError(
+        fmt::format("window '{}' is invalid: expected I0,J0,NX,NY (first column, first row, columns, "
+                    "rows; 0-based) for a map or I0,NX for a profile",
+                    text));
   };
   while (begin <= text.size()) {
     std::size_t end = text.find(',', begin);
@@ -57,8 +58,8 @@ void extract_window(io::HeightMap& map, std::size_t i0, std::size_t j0, std::siz
 }
 
 void select_window(io::HeightMap& map, const Window& window) {
-  const std::string shape = map.dimension == 1 ? fmt::format("{}-point profile", map.nx)
-                                               : fmt::format("{}x{} map (nx x ny)", map.nx, map.ny);
+  const std::string shape =
+      map.dimension == 1 ? fmt::format("{}-point profile", map.nx) : fmt::format("{}x{} map (nx x ny)", map.nx, map.ny);
   const std::string named = window.dimension == 1 ? fmt::format("window i0 = {}, nx = {}", window.i0, window.nx)
                                                   : fmt::format("window i0 = {}, j0 = {}, nx = {}, ny = {}", window.i0,
                                                                 window.j0, window.nx, window.ny);

@@ -115,6 +115,31 @@ TEST(GenerateCliTest, WritesProfilesAndBuiltInSurfaces) {
   EXPECT_EQ(test::read_double_attribute(file.get(), "radius"), 0.01);
 }
 
+TEST(GenerateCliTest, ExampleHeightMapIsWhatItsCommandGenerates) {
+  // examples/synthetic_sweep.toml documents the command that wrote its map.
+  // Compared to rounding, not bits: another CPU may run other FFTW codelets.
+  const TempDir dir;
+  ASSERT_EQ(run_program({"generate", "--kind", "self-affine", "--grid", "128x128", "--size", "1.28e-4", "--hurst",
+                         "0.8", "--cutoff-short", "4e-6", "--rms-slope", "0.1", "--seed", "1", "--output", "map.h5",
+                         "--quiet"},
+                        dir.path())
+                .exit_code,
+            kExitOk);
+  const test::H5 fresh = test::open_file(dir / "map.h5");
+  const test::H5 shipped = test::open_file(fs::path(HALFSPACE_TEST_DATA_DIR) / ".." / ".." / "examples" /
+                                           "self_affine_128.h5");
+  const auto a = test::read_dataset<double>(fresh.get(), "/height", H5T_NATIVE_DOUBLE);
+  const auto b = test::read_dataset<double>(shipped.get(), "/height", H5T_NATIVE_DOUBLE);
+  ASSERT_EQ(a.size(), b.size());
+  double largest = 0.0;
+  double scale = 0.0;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    largest = std::max(largest, std::abs(a[k] - b[k]));
+    scale = std::max(scale, std::abs(b[k]));
+  }
+  EXPECT_LE(largest, 1e-12 * scale);
+}
+
 TEST(GenerateCliTest, RejectsBadInputWithOneLineAndNoFile) {
   struct Case {
     std::vector<std::string> arguments;

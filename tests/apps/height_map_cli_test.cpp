@@ -75,8 +75,8 @@ ProgramRun run(const std::vector<std::string>& arguments, const TempDir& dir) {
 // solve with a soft material and a small force: a few contact spots on the
 // di-5 AFM crop, converged in a few dozen iterations.
 std::vector<std::string> solve(const fs::path& map, const fs::path& output, std::vector<std::string> extra) {
-  std::vector<std::string> arguments{"solve", "--height-map", map.string(), "--E-star", "1e9", "--threads", "1",
-                                     "--output", output.string(), "--quiet"};
+  std::vector<std::string> arguments{"solve", "--height-map", map.string(),    "--E-star", "1e9", "--threads",
+                                     "1",     "--output",     output.string(), "--quiet"};
   arguments.insert(arguments.end(), extra.begin(), extra.end());
   return arguments;
 }
@@ -101,8 +101,8 @@ std::vector<double> dataset(const fs::path& file, const std::string& name) {
 
 TEST(HeightMapCliTest, SolvesEveryFormatOfTheDi5Crop) {
   const TempDir dir;
-  for (const char* name : {"di-5-crop-48x64.h5", "di-5-crop-f-be-f8.npy", "di-5-crop-space.txt",
-                           "di-5-crop-comma.csv", "di-5-crop-m.gsf"}) {
+  for (const char* name : {"di-5-crop-48x64.h5", "di-5-crop-f-be-f8.npy", "di-5-crop-space.txt", "di-5-crop-comma.csv",
+                           "di-5-crop-m.gsf"}) {
     SCOPED_TRACE(name);
     const fs::path output = dir / "out.h5";
     const ProgramRun result =
@@ -111,8 +111,7 @@ TEST(HeightMapCliTest, SolvesEveryFormatOfTheDi5Crop) {
             dir);
     ASSERT_EQ(result.exit_code, kExitOk) << result.err;
     EXPECT_NE(string_attribute(output, "height_source").find(name), std::string::npos);
-    EXPECT_EQ(string_attribute(output, "preparation").rfind("detrend plane: subtracted the least-squares plane", 0),
-              0u)
+    EXPECT_EQ(string_attribute(output, "preparation").rfind("detrend plane: subtracted the least-squares plane", 0), 0u)
         << string_attribute(output, "preparation");
     const std::vector<double> height = dataset(output, "height");
     ASSERT_EQ(height.size(), 48u * 64u);
@@ -128,8 +127,8 @@ TEST(HeightMapCliTest, X3pWithInvalidPointsIsRefusedUnlessFilledOrCropped) {
   const fs::path map = kFormatDataDir / "kautschuk-crop-40x56.x3p";
   const fs::path output = dir / "out.h5";
   expect_input_error(run(solve(map, output, {"--force", "1e-3"}), dir),
-                     {"kautschuk-crop-40x56.x3p", "85 of 2240 heights are invalid", "not finite",
-                      "(j, i) = (0, 0)", "--invalid fill or --invalid crop"},
+                     {"kautschuk-crop-40x56.x3p", "85 of 2240 heights are invalid", "not finite", "(j, i) = (0, 0)",
+                      "--invalid fill or --invalid crop"},
                      output);
 
   ProgramRun filled = run(solve(map, output, {"--invalid", "fill", "--detrend", "plane", "--force", "1e-3"}), dir);
@@ -149,11 +148,11 @@ TEST(HeightMapCliTest, X3pWithInvalidPointsIsRefusedUnlessFilledOrCropped) {
 TEST(HeightMapCliTest, DektakProfileWindowSolvesIn1D) {
   const TempDir dir;
   const fs::path output = dir / "out.h5";
-  const std::vector<std::string> arguments{"solve",      "--height-map", (kFormatDataDir / "dektak-1.csv").string(),
-                                           "--window",   "1000,512",     "--detrend",
-                                           "curvature",  "--E-star",     "1e9",
-                                           "--force",    "10",           "--threads",
-                                           "1",          "--output",     output.string()};
+  const std::vector<std::string> arguments{"solve",     "--height-map", (kFormatDataDir / "dektak-1.csv").string(),
+                                           "--window",  "1000,512",     "--detrend",
+                                           "curvature", "--E-star",     "1e9",
+                                           "--force",   "10",           "--threads",
+                                           "1",         "--output",     output.string()};
   const ProgramRun result = run(arguments, dir);
   ASSERT_EQ(result.exit_code, kExitOk) << result.err;
   test::expect_contains(result.out, {"512 cells (1D), dx = 1.5625e-07 m", "preparation", "window: points 1000 to 1511",
@@ -164,8 +163,8 @@ TEST(HeightMapCliTest, DektakProfileWindowSolvesIn1D) {
 TEST(HeightMapCliTest, PaddingKeepsThePressureOnTheMap) {
   const TempDir dir;
   const fs::path map = kFormatDataDir / "di-5-crop-c-le-f8.npy";
-  const std::vector<std::string> common{"--dx", "1.953125e-9", "--dy", "1.953125e-9", "--detrend",
-                                        "plane", "--force", "2e-9", "--tol", "1e-12"};
+  const std::vector<std::string> common{"--dx",  "1.953125e-9", "--dy", "1.953125e-9", "--detrend",
+                                        "plane", "--force",     "2e-9", "--tol",       "1e-12"};
   std::vector<std::string> padded_options = common;
   padded_options.insert(padded_options.end(), {"--pad", "2"});
   ASSERT_EQ(run(solve(map, dir / "plain.h5", common), dir).exit_code, kExitOk);
@@ -210,16 +209,14 @@ TEST(HeightMapCliTest, PreparationOptionsAreCheckedBeforeReading) {
                      {"window i0 = 0, j0 = 0, nx = 100, ny = 10", "ends at column 99", "64x48 map"}, output);
   expect_input_error(run(with({"--force", "1", "--unit", "furlong"}), dir), {"--unit", "'furlong'"}, output);
   expect_input_error(run(with({"--force", "1", "--dataset", "/height"}), dir), {"dataset", "only to HDF5"}, output);
-  expect_input_error(run(with({"--force", "1", "--pad", "2", "--boundary", "periodic"}), dir),
-                     {"--pad 2", "periodic"}, output);
-  expect_input_error(run(with({"--mean-pressure", "1e5", "--pad", "2"}), dir), {"--pad 2", "--mean-pressure"},
+  expect_input_error(run(with({"--force", "1", "--pad", "2", "--boundary", "periodic"}), dir), {"--pad 2", "periodic"},
                      output);
+  expect_input_error(run(with({"--mean-pressure", "1e5", "--pad", "2"}), dir), {"--pad 2", "--mean-pressure"}, output);
   expect_input_error(run(with({"--force", "1", "--pad", "40"}), dir), {"--pad 40 is invalid", "[1, 16]"}, output);
-  expect_input_error(
-      run({"solve", "--geometry", "flat", "--grid", "8x8", "--size", "1e-3", "--E-star", "1e9", "--force", "1",
-           "--detrend", "plane", "--output", output.string()},
-          dir),
-      {"--detrend", "applies only to --height-map"}, output);
+  expect_input_error(run({"solve", "--geometry", "flat", "--grid", "8x8", "--size", "1e-3", "--E-star", "1e9",
+                          "--force", "1", "--detrend", "plane", "--output", output.string()},
+                         dir),
+                     {"--detrend", "applies only to --height-map"}, output);
 }
 
 TEST(HeightMapCliTest, MislabelledFilesAreNamed) {

@@ -1,18 +1,14 @@
 // `halfspace paper` and the dense solvers of `halfspace solve`, through the
 // real executable: files written, exit codes, one-line errors.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <array>
-#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "io/hdf5_test_support.hpp"
+#include "support/program_run.hpp"
 
 namespace halfspace {
 namespace {
@@ -20,37 +16,10 @@ namespace {
 namespace fs = std::filesystem;
 using test::TempDir;
 
-struct ProgramRun {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string quoted(const std::string& text) {
-  std::string out = "'";
-  for (char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
+using testing::ProgramRun;
 
 ProgramRun run(const std::vector<std::string>& arguments, const TempDir& dir) {
-  std::string command = quoted(HALFSPACE_EXECUTABLE);
-  for (const std::string& argument : arguments) command += " " + quoted(argument);
-  const fs::path err_file = dir / "stderr.txt";
-  command += " 2> " + quoted(err_file.string());
-  ProgramRun result;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (pipe == nullptr) return result;
-  std::array<char, 4096> buffer{};
-  std::size_t count = 0;
-  while ((count = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.out.append(buffer.data(), count);
-  const int status = ::pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream in(err_file);
-  std::ostringstream text;
-  text << in.rdbuf();
-  result.err = text.str();
-  fs::remove(err_file);
-  return result;
+  return testing::run_program(arguments, dir.path());
 }
 
 void expect_one_line_error(const ProgramRun& result, const std::string& expected) {
@@ -94,10 +63,10 @@ TEST(PaperCliTest, SolveRunsTheDenseSolversByName) {
   const TempDir dir;
   for (const char* name : {"lemke", "lcpquad"}) {
     const fs::path output = dir / (std::string(name) + ".h5");
-    const ProgramRun result = run({"solve", "--geometry", "cylinder", "--radius", "0.01", "--grid", "129", "--size",
-                                   "8e-4", "--E-star", "1e11", "--force", "1e5", "--solver", name, "--output",
-                                   output.string(), "--quiet"},
-                                  dir);
+    const ProgramRun result =
+        run({"solve", "--geometry", "cylinder", "--radius", "0.01", "--grid", "129", "--size", "8e-4", "--E-star",
+             "1e11", "--force", "1e5", "--solver", name, "--output", output.string(), "--quiet"},
+            dir);
     EXPECT_EQ(result.exit_code, 0) << name << ": " << result.err;
     const test::H5 file = test::open_file(output);
     EXPECT_EQ(test::read_string_attribute(file.get(), "solver"), name);
@@ -108,10 +77,10 @@ TEST(PaperCliTest, SolveRunsTheDenseSolversByName) {
 TEST(PaperCliTest, SolveRefusesADenseSolverOnALargeGrid) {
   const TempDir dir;
   const fs::path output = dir / "big.h5";
-  const ProgramRun result = run({"solve", "--geometry", "sphere", "--radius", "0.01", "--grid", "128x128", "--size",
-                                 "1e-3", "--E-star", "1e11", "--force", "1", "--solver", "lemke", "--output",
-                                 output.string()},
-                                dir);
+  const ProgramRun result =
+      run({"solve", "--geometry", "sphere", "--radius", "0.01", "--grid", "128x128", "--size", "1e-3", "--E-star",
+           "1e11", "--force", "1", "--solver", "lemke", "--output", output.string()},
+          dir);
   expect_one_line_error(result, "grid 128x128 has 16384 cells");
   EXPECT_NE(result.err.find("--solver pk"), std::string::npos) << result.err;
   EXPECT_FALSE(fs::exists(output));

@@ -2,6 +2,7 @@
 // executable: the sweep file's groups and summary table, the CSV beside it,
 // lists and ranges on the command line and in config files, the statistics
 // of single solves, the progress line on terminals only, and the figures.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -221,14 +222,13 @@ TEST(SweepCliTest, ProgressLineOnTerminalsOnly) {
   if (std::system("command -v script > /dev/null 2>&1") != 0) GTEST_SKIP() << "script (util-linux) is not installed";
   const TempDir dir;
   const auto on_terminal = [&](const std::string& extra) {
-    const std::string command = "cd " + testing::shell_quoted(dir.path().string()) +
-                                " && HALFSPACE_PROGRESS_INTERVAL=0 script -qec " +
-                                testing::shell_quoted(testing::shell_quoted(HALFSPACE_EXECUTABLE) +
-                                                      " solve --geometry wavy --wavelength 1e-3 --amplitude 1e-6 "
-                                                      "--grid 32x32 --size 1e-3 --boundary periodic --E-star 1e11 "
-                                                      "--mean-pressure 1e6,2e6 --threads 1 --output tty.h5" +
-                                                      extra) +
-                                " /dev/null > terminal.txt 2>&1";
+    const std::string program = fmt::format(
+        "{} solve --geometry wavy --wavelength 1e-3 --amplitude 1e-6 --grid 32x32 --size 1e-3 --boundary periodic "
+        "--E-star 1e11 --mean-pressure 1e6,2e6 --threads 1 --output tty.h5{}",
+        testing::shell_quoted(HALFSPACE_EXECUTABLE), extra);
+    const std::string command =
+        fmt::format("cd {} && HALFSPACE_PROGRESS_INTERVAL=0 script -qec {} /dev/null > terminal.txt 2>&1",
+                    testing::shell_quoted(dir.path().string()), testing::shell_quoted(program));
     EXPECT_EQ(std::system(command.c_str()), 0);
     return testing::read_text(dir / "terminal.txt");
   };
@@ -277,7 +277,8 @@ TEST(SweepCliTest, PlotDrawsFiguresNextToTheResult) {
                                        dir.path(), {{"HALFSPACE_PYTHON", "/usr/bin/python3"}});
   ASSERT_EQ(sweep.exit_code, kExitOk) << sweep.err;
   EXPECT_EQ(sweep.out, "") << "--quiet silences the tool too";
-  EXPECT_TRUE(fs::exists(dir / "sweep_sweep.png"));
+  EXPECT_TRUE(fs::exists(dir / "sweep_maps.png")) << "the last step's maps";
+  EXPECT_TRUE(fs::exists(dir / "sweep_sweep.png")) << "the sweep's curves";
 
   // A tool that fails after the solve: the result stays, exit code 3.
   std::ofstream(dir / "failing.py") << "import sys\nsys.exit(4)\n";

@@ -76,9 +76,9 @@ TEST(GsfReaderTest, PaddingAlignsDataForEveryHeaderLength) {
   const TempDir dir;
   for (int extra = 0; extra < 4; ++extra) {
     const fs::path path = dir / "pad.gsf";
-    test::write_bytes(path, gsf_bytes("XRes = 2\nYRes = 1\nTitle = " + std::string(static_cast<std::size_t>(extra), 'x') +
-                                          "\n",
-                                      {1.5f, -2.5f}));
+    test::write_bytes(
+        path, gsf_bytes("XRes = 2\nYRes = 1\nTitle = " + std::string(static_cast<std::size_t>(extra), 'x') + "\n",
+                        {1.5f, -2.5f}));
     const HeightMap map = read_gsf_height_map(path);
     EXPECT_EQ(map.dimension, 1);
     EXPECT_EQ(map.heights[1], -2.5) << "title length " << extra;

@@ -77,6 +77,24 @@ TEST(HeightMapReaderTest, ExplicitFormatOverridesTheExtension) {
   EXPECT_EQ(profile.dimension, 1);
 }
 
+TEST(HeightMapReaderTest, TwoColumnTextNeedsAnExplicitFormat) {
+  const TempDir dir;
+  const fs::path path = dir / "xz.csv";
+  test::write_bytes(path, "0,1\n1,2\n2,3\n3,4\n");
+  try {
+    read_height_map(path);
+    ADD_FAILURE() << "no error";
+  } catch (const FileError& error) {
+    expect_contains(error.what(), {"xz.csv", "2 columns and 4 rows", "--format profile", "--format matrix"});
+  }
+  ReadOptions profile;
+  profile.format = HeightMapFormat::profile;
+  EXPECT_EQ(read_height_map(path, profile).nx, 4u);
+  ReadOptions matrix;
+  matrix.format = HeightMapFormat::text_matrix;
+  EXPECT_EQ(read_height_map(path, matrix).nx, 2u);
+}
+
 TEST(HeightMapReaderTest, Hdf5NonFiniteHeightsBecomeInvalidPoints) {
   const TempDir dir;
   const fs::path path = dir / "holes.h5";
@@ -102,6 +120,60 @@ TEST(HeightMapReaderTest, RejectsOptionsThatDoNotApplyToTheFormat) {
   }
 }
 
+TEST(HeightMapReaderTest, ReadsNetcdf4FilesAsHdf5) {
+  // NetCDF-4 is HDF5 underneath: a variable is a dataset.
+  const TempDir dir;
+  const fs::path path = dir / "surface.nc";
+  fs::copy_file(kFormatDataDir / "di-5-crop-48x64.h5", path);
+  test::expect_same_heights(read_height_map(path), test::di5_reference());
+}
+
+TEST(HeightMapReaderTest, EveryTruncationOfABinaryFixtureIsAFileError) {
+  // Cut each binary fixture at 40 lengths spread over the file (and one byte
+  // short): every read must fail with a FileError, never crash or return heights.
+  const TempDir dir;
+  for (const char* name : {"di-5-crop-48x64.h5", "di-5-crop-f-be-f8.npy", "di-5-crop-m.gsf", "kautschuk-crop-40x56.x3p",
+                           "int16-mask-5x3.x3p"}) {
+    const std::string bytes = test::read_bytes(kFormatDataDir / name);
+    const fs::path path = dir / (std::string("cut-") + name);
+    for (std::size_t step = 0; step <= 40; ++step) {
+      const std::size_t length = step == 40 ? bytes.size() - 1 : bytes.size() * step / 40;
+      test::write_bytes(path, bytes.substr(0, length));
+      SCOPED_TRACE(std::string(name) + " cut to " + std::to_string(length) + " bytes");
+      EXPECT_THROW(read_height_map(path), FileError);
+    }
+  }
+}
+
+TEST(HeightMapReaderTest, DamagedX3pIsAnErrorOrReadsTheSameHeights) {
+  // Flip one byte at 60 places of the X3P crop: its checksums and the zip's
+  // CRCs must catch every change that would alter the heights.
+  const TempDir dir;
+  const std::string bytes = test::read_bytes(kFormatDataDir / "kautschuk-crop-40x56.x3p");
+  const HeightMap original = read_height_map(kFormatDataDir / "kautschuk-crop-40x56.x3p");
+  const fs::path path = dir / "flipped.x3p";
+  std::size_t errors = 0;
+  for (std::size_t step = 0; step < 60; ++step) {
+    std::string damaged = bytes;
+    const std::size_t at = damaged.size() * step / 60;
+    damaged[at] = static_cast<char>(damaged[at] ^ 0x20);
+    test::write_bytes(path, damaged);
+    SCOPED_TRACE("byte " + std::to_string(at) + " flipped");
+    try {
+      const HeightMap map = read_height_map(path);
+      ASSERT_EQ(map.heights.size(), original.heights.size());
+      for (Eigen::Index k = 0; k < map.heights.size(); ++k) {
+        ASSERT_TRUE(map.heights[k] == original.heights[k] ||
+                    (std::isnan(map.heights[k]) && std::isnan(original.heights[k])))
+            << "silently different height at k = " << k;
+      }
+    } catch (const FileError&) {
+      ++errors;
+    }
+  }
+  EXPECT_GT(errors, 40u);  // most bytes of a compressed archive matter
+}
+
 // A measured file and what the topography README says of it: the grid, the
 // spacings and Sq as quoted, with half a unit of the last quoted digit as the
 // allowed difference.
@@ -124,8 +196,8 @@ const std::vector<ReadmeRow> kReadme{
     {"metropro-1.h5", 2, 480, 640, 1.09825e-6, 0.000005e-6, 1.09825e-6, 0.000005e-6, 7.528822e-8, 0.0000005e-8, 0},
     {"sur-2.h5", 2, 484, 563, 3.484e-6, 0.0005e-6, 3.484e-6, 0.0005e-6, 31.2e-9, 0.05e-9, 0},
     {"plu-1.h5", 2, 576, 768, 1.66e-6, 0.005e-6, 1.66e-6, 0.005e-6, 2.834391e-6, 0.0000005e-6, 0},
-    {"KautschukInfiniteFocus.h5", 2, 631, 857, 2.279984e-6, 0.0000005e-6, 2.279795e-6, 0.0000005e-6, 3.40e-6,
-     0.005e-6, 0},
+    {"KautschukInfiniteFocus.h5", 2, 631, 857, 2.279984e-6, 0.0000005e-6, 2.279795e-6, 0.0000005e-6, 3.40e-6, 0.005e-6,
+     0},
     {"KautschukInfiniteFocus.x3p", 2, 634, 860, 2.279984e-6, 0.0000005e-6, 2.279795e-6, 0.0000005e-6, 0.0, 0.0, 5296},
 };
 

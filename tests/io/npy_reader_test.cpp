@@ -139,16 +139,16 @@ TEST(NpyReaderTest, RejectsTruncatedHeader) {
 TEST(NpyReaderTest, RejectsHeaderClaimingMoreDataThanPresent) {
   const TempDir dir;
   const fs::path path = dir / "claims.npy";
-  test::write_bytes(path, npy_bytes("{'descr': '<f8', 'fortran_order': False, 'shape': (3, 4), }",
-                                    doubles({1, 2, 3, 4, 5, 6})));
+  test::write_bytes(
+      path, npy_bytes("{'descr': '<f8', 'fortran_order': False, 'shape': (3, 4), }", doubles({1, 2, 3, 4, 5, 6})));
   expect_contains(npy_error(path), {"shape (3, 4)", "96 data bytes", "48 follow"});
 }
 
 TEST(NpyReaderTest, RejectsTrailingBytes) {
   const TempDir dir;
   const fs::path path = dir / "trailing.npy";
-  test::write_bytes(path, npy_bytes("{'descr': '<f8', 'fortran_order': False, 'shape': (2, 2), }",
-                                    doubles({1, 2, 3, 4, 5})));
+  test::write_bytes(path,
+                    npy_bytes("{'descr': '<f8', 'fortran_order': False, 'shape': (2, 2), }", doubles({1, 2, 3, 4, 5})));
   expect_contains(npy_error(path), {"8 bytes follow the data"});
 }
 

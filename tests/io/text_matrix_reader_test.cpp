@@ -80,8 +80,7 @@ TEST(TextMatrixReaderTest, RejectsWordsAndEmptyFieldsNamingLineAndField) {
   expect_contains(matrix_error(write_text(dir, "empty.csv", "1,2,3\n4,,6\n")), {"line 2: field 2 is empty"});
   expect_contains(matrix_error(write_text(dir, "header.csv", "x,y\n1,2\n3,4\n")),
                   {"line 1: field 1 'x' is not a number", "comment lines start with # or %"});
-  expect_contains(matrix_error(write_text(dir, "decimal-comma.txt", "1,5 2,5\n3,5 4.5.1\n")),
-                  {"line 2", "'4.5.1'"});
+  expect_contains(matrix_error(write_text(dir, "decimal-comma.txt", "1,5 2,5\n3,5 4.5.1\n")), {"line 2", "'4.5.1'"});
 }
 
 TEST(TextMatrixReaderTest, RejectsBinaryFilesNamingWhatTheyAre) {

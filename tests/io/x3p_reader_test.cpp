@@ -203,7 +203,7 @@ TEST(X3pReaderTest, RejectsFilesThatAreNotZipArchives) {
   const TempDir dir;
   const fs::path text = dir / "text.x3p";
   test::write_bytes(text, "not a zip archive at all\n");
-  expect_contains(x3p_error(text), {text.string(), "not a readable zip archive"});
+  expect_contains(x3p_error(text), {text.string(), "not a zip archive, which every X3P file is"});
   const fs::path hdf5 = dir / "hdf5.x3p";
   fs::copy_file(kFormatDataDir / "di-5-crop-48x64.h5", hdf5);
   expect_contains(x3p_error(hdf5), {"HDF5", "--format hdf5"});
@@ -215,7 +215,7 @@ TEST(X3pReaderTest, RejectsTruncatedArchive) {
   const fs::path path = dir / "cut.x3p";
   const std::string full = test::read_bytes(kFormatDataDir / "kautschuk-crop-40x56.x3p");
   test::write_bytes(path, full.substr(0, full.size() / 2));
-  expect_contains(x3p_error(path), {path.string(), "zip archive"});
+  expect_contains(x3p_error(path), {path.string(), "the zip archive is truncated or damaged", "table of contents"});
 }
 
 TEST(X3pReaderTest, RejectsCorruptedCompressedData) {
@@ -227,8 +227,7 @@ TEST(X3pReaderTest, RejectsCorruptedCompressedData) {
   test::write_bytes(path, bytes);
   const std::string message = x3p_error(path);
   expect_contains(message, {path.string()});
-  EXPECT_TRUE(message.find("damaged") != std::string::npos || message.find("checksum") != std::string::npos)
-      << message;
+  EXPECT_TRUE(message.find("damaged") != std::string::npos || message.find("checksum") != std::string::npos) << message;
 }
 
 TEST(X3pReaderTest, RejectsMalformedXmlNamingTheLine) {
@@ -262,12 +261,16 @@ TEST(X3pReaderTest, RejectsDataOfTheWrongSizeAndMissingMembers) {
   const TempDir dir;
   const fs::path path = dir / "short.x3p";
   const std::string link = "<DataLink><PointDataLink>bindata/data.bin</PointDataLink></DataLink>";
-  write_members(path, {{"main.xml", minimal_xml("I", "<MatrixDimension><SizeX>3</SizeX><SizeY>2</SizeY><SizeZ>1"
-                                                     "</SizeZ></MatrixDimension>" + link)},
+  write_members(path, {{"main.xml", minimal_xml("I",
+                                                "<MatrixDimension><SizeX>3</SizeX><SizeY>2</SizeY><SizeZ>1"
+                                                "</SizeZ></MatrixDimension>" +
+                                                    link)},
                        {"bindata/data.bin", doubles({1, 2, 3, 4, 5})}});
   expect_contains(x3p_error(path), {"member 'bindata/data.bin' holds 40 bytes but main.xml describes 48 bytes"});
-  write_members(path, {{"main.xml", minimal_xml("I", "<MatrixDimension><SizeX>3</SizeX><SizeY>2</SizeY><SizeZ>1"
-                                                     "</SizeZ></MatrixDimension>" + link)}});
+  write_members(path, {{"main.xml", minimal_xml("I",
+                                                "<MatrixDimension><SizeX>3</SizeX><SizeY>2</SizeY><SizeZ>1"
+                                                "</SizeZ></MatrixDimension>" +
+                                                    link)}});
   expect_contains(x3p_error(path), {"the archive has no member 'bindata/data.bin'"});
   write_members(path, {{"data.xml", "<x/>"}});
   expect_contains(x3p_error(path), {"no member 'main.xml'"});
@@ -276,8 +279,9 @@ TEST(X3pReaderTest, RejectsDataOfTheWrongSizeAndMissingMembers) {
 TEST(X3pReaderTest, RejectsUnsupportedLayouts) {
   const TempDir dir;
   const fs::path path = dir / "layout.x3p";
-  const std::string matrix = "<MatrixDimension><SizeX>2</SizeX><SizeY>2</SizeY><SizeZ>1</SizeZ></MatrixDimension>"
-                             "<DataList><Datum>1</Datum><Datum>2</Datum><Datum>3</Datum><Datum>4</Datum></DataList>";
+  const std::string matrix =
+      "<MatrixDimension><SizeX>2</SizeX><SizeY>2</SizeY><SizeZ>1</SizeZ></MatrixDimension>"
+      "<DataList><Datum>1</Datum><Datum>2</Datum><Datum>3</Datum><Datum>4</Datum></DataList>";
   write_members(path, {{"main.xml", minimal_xml("A", matrix)}});
   expect_contains(x3p_error(path), {"axis CX has AxisType 'A'", "regular grid"});
   write_members(path, {{"main.xml", minimal_xml("I", matrix, "PCL")}});
@@ -290,8 +294,9 @@ TEST(X3pReaderTest, RejectsUnsupportedLayouts) {
   replace(too_few, "<Datum>4</Datum>", "");
   write_members(path, {{"main.xml", minimal_xml("I", too_few)}});
   expect_contains(x3p_error(path), {"DataList holds 3 points but the grid has 4"});
-  write_members(path, {{"main.xml", minimal_xml("I", "<MatrixDimension><SizeX>2</SizeX><SizeY>2</SizeY>"
-                                                     "</MatrixDimension>")}});
+  write_members(path, {{"main.xml", minimal_xml("I",
+                                                "<MatrixDimension><SizeX>2</SizeX><SizeY>2</SizeY>"
+                                                "</MatrixDimension>")}});
   expect_contains(x3p_error(path), {"no element Record3/MatrixDimension/SizeZ"});
   write_members(path, {{"main.xml", "<?xml version=\"1.0\"?><ISO5436_3/>"}});
   expect_contains(x3p_error(path), {"root element 'ISO5436_3'"});

@@ -1,5 +1,7 @@
 // The files of the Table 1 reproduction: the CSV and HDF5 hold the same
 // columns, values round-trip exactly, and the summary table lists each test.
+#include "halfspace/paper/paper_output.hpp"
+
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -8,7 +10,6 @@
 #include <vector>
 
 #include "halfspace/error.hpp"
-#include "halfspace/paper/paper_output.hpp"
 #include "io/hdf5_test_support.hpp"
 
 namespace halfspace {
@@ -17,7 +18,9 @@ namespace {
 using test::TempDir;
 
 // Test 4 has 7 nodes: quick, and enough for the file layout.
-paper::TestReproduction small_run() { return paper::reproduce(paper::table1_test(4), {}); }
+paper::TestReproduction small_run() {
+  return paper::reproduce(paper::table1_test(4), {});
+}
 
 std::vector<std::string> lines_of(const std::filesystem::path& path) {
   std::ifstream in(path);

@@ -1,6 +1,8 @@
 // The reproduction of Table 1 of the seed paper: the test data and their
 // line-contact reading, agreement of Lemke, LCPquad and Polonsky-Keer on all
 // four tests, force balance, and the Hertz peak and half-width on tests 1-3.
+#include "halfspace/paper/table1.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,7 +11,6 @@
 
 #include "halfspace/error.hpp"
 #include "halfspace/paper/reproduction.hpp"
-#include "halfspace/paper/table1.hpp"
 
 namespace halfspace {
 namespace {
@@ -54,6 +55,13 @@ TEST(Table1Test, ReadsEachTestAsALineContact) {
   EXPECT_DOUBLE_EQ(c.hertz.peak, 2.0 * 1e5 / (std::numbers::pi * b));
 }
 
+// Where two methods' pressures differ most (m).
+double worst_x(const paper::TestReproduction& run, const SolveResult& a, const SolveResult& b) {
+  Eigen::Index where = 0;
+  (a.pressure - b.pressure).abs().maxCoeff(&where);
+  return run.contact.x[static_cast<std::size_t>(where)];
+}
+
 class Table1Reproduction : public ::testing::TestWithParam<int> {};
 
 TEST_P(Table1Reproduction, MethodsAgreeAndMatchHertz) {
@@ -61,15 +69,16 @@ TEST_P(Table1Reproduction, MethodsAgreeAndMatchHertz) {
   const paper::LineContact& c = run.contact;
   ASSERT_TRUE(run.all_converged()) << run.lemke.message << run.lcpquad.message << run.pk.message;
   const double p_h = c.hertz.peak;
-  std::printf("test %d: Lemke-LCPquad %.2e, Lemke-PK %.2e, LCPquad-PK %.2e; peak %.6f p_H; a - b = %.3f dx; "
-              "%d pivots, %d IPM iterations\n",
-              GetParam(), run.lemke_vs_lcpquad, run.lemke_vs_pk, run.lcpquad_vs_pk, run.lemke.max_pressure / p_h,
-              (paper::contact_half_width(run.lemke, c.grid.dx()) - c.hertz.half_width) / c.grid.dx(),
-              run.lemke_report.iterations, run.lcpquad_report.iterations);
+  std::printf(
+      "test %d: Lemke-LCPquad %.2e, Lemke-PK %.2e, LCPquad-PK %.2e; peak %.6f p_H; a - b = %.3f dx; "
+      "%d pivots, %d IPM iterations\n",
+      GetParam(), run.lemke_vs_lcpquad, run.lemke_vs_pk, run.lcpquad_vs_pk, run.lemke.max_pressure / p_h,
+      (paper::contact_half_width(run.lemke, c.grid.dx()) - c.hertz.half_width) / c.grid.dx(),
+      run.lemke_report.iterations, run.lcpquad_report.iterations);
 
-  EXPECT_LE(run.lemke_vs_lcpquad, kLcpQuadAgreement);
-  EXPECT_LE(run.lcpquad_vs_pk, kLcpQuadAgreement);
-  EXPECT_LE(run.lemke_vs_pk, kLemkeVsPk);
+  EXPECT_LE(run.lemke_vs_lcpquad, kLcpQuadAgreement) << "at x = " << worst_x(run, run.lemke, run.lcpquad);
+  EXPECT_LE(run.lcpquad_vs_pk, kLcpQuadAgreement) << "at x = " << worst_x(run, run.lcpquad, run.pk);
+  EXPECT_LE(run.lemke_vs_pk, kLemkeVsPk) << "at x = " << worst_x(run, run.lemke, run.pk);
   for (const SolveResult* result : {&run.lemke, &run.lcpquad, &run.pk}) {
     EXPECT_NEAR(result->total_force, c.load, kForceTolerance * c.load) << result->solver;
   }
@@ -101,9 +110,9 @@ TEST(Table1Test, UnscaledQpWithTheLoadReturnsTheUniformPressure) {
   EXPECT_EQ(si.column, "p_lcpquad_si");
   const double uniform = run.contact.load / run.contact.grid.domain_area();
   const double spread = (si.pressure - uniform).abs().maxCoeff() / uniform;
-  std::printf("SI LCPquad with load: %s, spread %.2e of W/L = %.4f p_H\n", std::string(to_string(si.lcp.status)).c_str(),
-              spread, uniform / run.contact.hertz.peak);
-  EXPECT_LT(spread, 1e-3);  // flat to within 0.1 %
+  std::printf("SI LCPquad with load: %s, spread %.2e of W/L = %.4f p_H\n",
+              std::string(to_string(si.lcp.status)).c_str(), spread, uniform / run.contact.hertz.peak);
+  EXPECT_LT(spread, 1e-3);                            // flat to within 0.1 %
   EXPECT_GT(run.lemke.max_pressure, 10.0 * uniform);  // far from the solution
 }
 

@@ -36,8 +36,8 @@ constexpr double kLength = 8e-4;
 constexpr double kLoad = 1e5;
 // Two unit systems give LCPs that differ only by rounding and by the datum
 // of the logarithmic kernel (a constant in K, absorbed by the approach).
-constexpr double kUnitInvarianceLemke = 1e-10;    // of the peak pressure
-constexpr double kUnitInvarianceLcpQuad = 1e-8;   // of the peak; interior-point tolerance
+constexpr double kUnitInvarianceLemke = 1e-10;   // of the peak pressure
+constexpr double kUnitInvarianceLcpQuad = 1e-8;  // of the peak; interior-point tolerance
 
 struct Units {
   double length;    // metres per length unit
@@ -46,7 +46,8 @@ struct Units {
 
 // The line contact in the given units: pressures come back in pressure units.
 Eigen::ArrayXd solve_line_contact(solvers::DenseContactSolver& solver, const Units& units) {
-  const Eigen::ArrayXd gap = field_from(solver.grid(), [&](double x, double) { return x * x / (2.0 * kRadius / units.length); });
+  const Eigen::ArrayXd gap =
+      field_from(solver.grid(), [&](double x, double) { return x * x / (2.0 * kRadius / units.length); });
   const double load = kLoad / (units.pressure * units.length);
   const SolveResult result = solver.solve(std::span<const double>(gap.data(), kNodes), Loading::force(load));
   EXPECT_TRUE(result.converged()) << result.message;
@@ -66,7 +67,7 @@ void expect_unit_invariance(double tolerance) {
   const double peak = std::sqrt(kLoad * kEStar / (std::numbers::pi * kRadius));  // Hertz p_H
   const double half_width = 2.0 * kLoad / (std::numbers::pi * peak);             // Hertz b
   const Eigen::ArrayXd si = pressures_in<Solver>({1.0, 1.0});
-  const Eigen::ArrayXd millimetre = pressures_in<Solver>({1e-3, 1e6});     // mm, N, MPa
+  const Eigen::ArrayXd millimetre = pressures_in<Solver>({1e-3, 1e6});    // mm, N, MPa
   const Eigen::ArrayXd hertz = pressures_in<Solver>({half_width, peak});  // b and p_H
   Eigen::Index where = 0;
   const double mm_error = (millimetre - si).abs().maxCoeff(&where) / peak;
@@ -104,6 +105,18 @@ TEST(DenseContactTest, DisplacementControlWithoutOverlapGivesZeroPressure) {
     EXPECT_TRUE(result.converged()) << name << ": " << result.message;
     EXPECT_EQ(result.max_pressure, 0.0) << name;
     EXPECT_EQ(result.contact_fraction, 0.0) << name;
+  }
+}
+
+TEST(DenseContactTest, RefusesAnApproachBeyondTheMeanGapOfAPeriodicSurface) {
+  const Grid grid = Grid::plane(8, 8, 1e-6, 1e-6, Boundary::periodic);
+  const Eigen::ArrayXd gap = field_from(grid, [](double x, double) { return 1e-8 * (1.0 + std::cos(x / 1e-6)); });
+  solvers::Lemke solver(grid, kEStar);
+  try {
+    solver.solve(std::span<const double>(gap.data(), grid.size()), Loading::approach(2e-8));
+    FAIL() << "expected InputError";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("below the mean initial gap"), std::string::npos) << error.what();
   }
 }
 

@@ -58,8 +58,8 @@ Eigen::ArrayXd rough_gap(const Grid& grid, std::uint32_t seed) {
 }
 
 struct Comparison {
-  double lemke_vs_pk;       // max |dp| / max p
-  double lcpquad_vs_lemke;  // max |dp| / max p
+  double lemke_vs_pk;          // max |dp| / max p
+  double lcpquad_vs_lemke;     // max |dp| / max p
   double approach_difference;  // |delta_lemke - delta_pk| / ptp(g0)
   double contact_fraction;
 };
@@ -86,10 +86,11 @@ Comparison compare(const Grid& grid, const Eigen::ArrayXd& gap, const Loading& l
                      (quad.pressure - dense.pressure).abs().maxCoeff(&at_quad) / peak,
                      std::abs(dense.approach - fft.approach) / (gap.maxCoeff() - gap.minCoeff()),
                      dense.contact_fraction};
-  std::printf("%s: contact %.2f, %d pivots, %d IPM iterations, %d PK iterations; |Lemke-PK| %.2e at cell %ld, "
-              "|LCPquad-Lemke| %.2e at cell %ld, approach %.2e\n",
-              what, c.contact_fraction, dense.iterations, quad.iterations, fft.iterations, c.lemke_vs_pk,
-              static_cast<long>(at_pk), c.lcpquad_vs_lemke, static_cast<long>(at_quad), c.approach_difference);
+  std::printf(
+      "%s: contact %.2f, %d pivots, %d IPM iterations, %d PK iterations; |Lemke-PK| %.2e at cell %ld, "
+      "|LCPquad-Lemke| %.2e at cell %ld, approach %.2e\n",
+      what, c.contact_fraction, dense.iterations, quad.iterations, fft.iterations, c.lemke_vs_pk,
+      static_cast<long>(at_pk), c.lcpquad_vs_lemke, static_cast<long>(at_quad), c.approach_difference);
   return c;
 }
 

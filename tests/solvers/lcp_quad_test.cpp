@@ -1,12 +1,13 @@
 // LCPquad (the paper's QP through ALGLIB's dense IPM) on LCPs with known
 // solutions, against Lemke and the complementarity conditions, and its
 // reports on problems it cannot solve.
+#include "halfspace/solvers/lcp_quad.hpp"
+
 #include <gtest/gtest.h>
 
 #include <string>
 
 #include "halfspace/error.hpp"
-#include "halfspace/solvers/lcp_quad.hpp"
 #include "halfspace/solvers/lemke.hpp"
 #include "support/lcp_problems.hpp"
 
@@ -43,7 +44,7 @@ TEST(LcpQuadTest, SolvesTwoByTwoLcpByHand) {
 }
 
 TEST(LcpQuadTest, SolvesDegenerateLcp) {
-  const std::vector<Entry> pattern{Entry::degenerate, Entry::contact, Entry::gap, Entry::degenerate,
+  const std::vector<Entry> pattern{Entry::degenerate, Entry::contact, Entry::gap,       Entry::degenerate,
                                    Entry::contact,    Entry::gap,     Entry::degenerate};
   const auto known = known_lcp(random_spd_matrix(7, 21), pattern, 22);
   const auto solution = solve_lcp_quad(known.problem);
@@ -52,8 +53,8 @@ TEST(LcpQuadTest, SolvesDegenerateLcp) {
   EXPECT_LE(error.value, kDegenerateTolerance) << "at entry " << error.index;
 
   for (std::uint32_t seed = 1; seed <= 2; ++seed) {
-    const auto random = known_lcp(random_spd_matrix(40, seed + 60), random_pattern(40, seed + 70, 0.4, 0.1),
-                                  seed + 80, seed == 2);
+    const auto random =
+        known_lcp(random_spd_matrix(40, seed + 60), random_pattern(40, seed + 70, 0.4, 0.1), seed + 80, seed == 2);
     const auto quad = solve_lcp_quad(random.problem);
     expect_solves(random.problem, quad, kDegenerateTolerance);
     const auto to_known = max_difference(quad.z, random.z);

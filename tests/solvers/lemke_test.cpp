@@ -1,12 +1,13 @@
 // Lemke's method (Siconos) on LCPs with known solutions: by hand, trivial,
 // degenerate, random positive definite, with the load equality; and its
 // reports: ray termination, pivot limit, bad input.
+#include "halfspace/solvers/lemke.hpp"
+
 #include <gtest/gtest.h>
 
 #include <string>
 
 #include "halfspace/error.hpp"
-#include "halfspace/solvers/lemke.hpp"
 #include "support/lcp_problems.hpp"
 
 namespace halfspace {
@@ -109,9 +110,9 @@ TEST(LemkeTest, RejectsInconsistentInput) {
   } catch (const InputError& error) {
     EXPECT_NE(std::string(error.what()).find("3 x 3 but q has 2 entries"), std::string::npos) << error.what();
   }
-  EXPECT_THROW(solve_lcp_lemke({Eigen::MatrixXd::Identity(2, 2), Eigen::Vector2d(-1, -1), {}, 0.0},
-                               solvers::LemkeOptions{0}),
-               InputError);
+  EXPECT_THROW(
+      solve_lcp_lemke({Eigen::MatrixXd::Identity(2, 2), Eigen::Vector2d(-1, -1), {}, 0.0}, solvers::LemkeOptions{0}),
+      InputError);
 }
 
 }  // namespace

@@ -4,14 +4,14 @@
 // complementarity conditions that prints the worst entry.
 #pragma once
 
+#include <gtest/gtest.h>
+
+#include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <random>
 #include <vector>
-
-#include <Eigen/Core>
-#include <gtest/gtest.h>
 
 #include "halfspace/solvers/lcp.hpp"
 
@@ -75,7 +75,8 @@ inline std::vector<Entry> random_pattern(std::size_t n, std::uint32_t seed, doub
   std::vector<Entry> pattern(n);
   for (Entry& entry : pattern) {
     const double u = uniform(generator);
-    entry = u < contact_share ? Entry::contact : (u < contact_share + degenerate_share ? Entry::degenerate : Entry::gap);
+    entry =
+        u < contact_share ? Entry::contact : (u < contact_share + degenerate_share ? Entry::degenerate : Entry::gap);
   }
   return pattern;
 }

@@ -3,6 +3,7 @@
 // captured separately, the exit code returned.
 #pragma once
 
+#include <fmt/format.h>
 #include <sys/wait.h>
 
 #include <array>
@@ -32,7 +33,8 @@ inline std::string shell_quoted(const std::string& text) {
       quoted += c;
     }
   }
-  return quoted + "'";
+  quoted += '\'';
+  return quoted;
 }
 
 inline std::string read_text(const std::filesystem::path& path) {
@@ -47,11 +49,11 @@ inline std::string read_text(const std::filesystem::path& path) {
 inline ProgramRun run_program(const std::vector<std::string>& arguments, const std::filesystem::path& directory,
                               const std::vector<std::pair<std::string, std::string>>& environment = {}) {
   const std::filesystem::path err_file = directory / "stderr.txt";
-  std::string command = "cd " + shell_quoted(directory.string()) + " && ";
-  for (const auto& [name, value] : environment) command += name + "=" + shell_quoted(value) + " ";
+  std::string command = fmt::format("cd {} && ", shell_quoted(directory.string()));
+  for (const auto& [name, value] : environment) command += fmt::format("{}={} ", name, shell_quoted(value));
   command += shell_quoted(HALFSPACE_EXECUTABLE);
-  for (const std::string& argument : arguments) command += " " + shell_quoted(argument);
-  command += " 2> " + shell_quoted(err_file.string());
+  for (const std::string& argument : arguments) command += fmt::format(" {}", shell_quoted(argument));
+  command += fmt::format(" 2> {}", shell_quoted(err_file.string()));
 
   ProgramRun result;
   FILE* pipe = ::popen(command.c_str(), "r");

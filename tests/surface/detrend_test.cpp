@@ -66,7 +66,8 @@ TEST(DetrendTest, RemovesQuadricExactly) {
 }
 
 TEST(DetrendTest, RemovesProfileParabolaAndLine) {
-  io::HeightMap parabola = map_from(300, 1, 1e-7, 0.0, [](double x, double) { return 4e-6 - x * x / (2 * 1e-3) + 0.1 * x; });
+  io::HeightMap parabola =
+      map_from(300, 1, 1e-7, 0.0, [](double x, double) { return 4e-6 - x * x / (2 * 1e-3) + 0.1 * x; });
   const double scale = parabola.heights.abs().maxCoeff();
   detrend(parabola, Detrend::curvature);
   EXPECT_LE(worst_relative_residual(parabola, scale), kExactRelativeTolerance);
@@ -99,7 +100,8 @@ TEST(DetrendTest, MeanRemovalLeavesZeroMeanAndPlaneRemovalLeavesRoughness) {
   detrend(map, Detrend::plane);
   for (std::size_t j = 0; j < 64; j += 7) {
     for (std::size_t i = 0; i < 64; i += 5) {
-      const double pattern = std::cos(2 * M_PI * static_cast<double>(i) / 8) * std::cos(2 * M_PI * static_cast<double>(j) / 8);
+      const double pattern =
+          std::cos(2 * M_PI * static_cast<double>(i) / 8) * std::cos(2 * M_PI * static_cast<double>(j) / 8);
       EXPECT_NEAR(map.heights[static_cast<Eigen::Index>(j * 64 + i)], pattern, 1e-12 * 40.0);
     }
   }

@@ -88,7 +88,9 @@ TEST(InvalidPointsTest, FillCutsFullyInvalidBorderRowsAndColumns) {
   EXPECT_EQ(map.nx, 3u);
   EXPECT_EQ(map.ny, 3u);
   EXPECT_NEAR(map.heights[4], 1.0 + 2.0 * 3 + 3.0 * 2, kPlaneFillTolerance * 20.0);  // (j, i) = (2, 3) of the original
-  EXPECT_NE(map.preparation[0].find("after cutting the fully invalid border, keeping columns 2 to 4 and rows 1 to 3 of the 6x5 map"), std::string::npos)
+  EXPECT_NE(map.preparation[0].find(
+                "after cutting the fully invalid border, keeping columns 2 to 4 and rows 1 to 3 of the 6x5 map"),
+            std::string::npos)
       << map.preparation[0];
 }
 

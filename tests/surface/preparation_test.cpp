@@ -63,14 +63,14 @@ TEST(WindowTest, CutsTheWindowAndKeepsSpacing) {
   EXPECT_EQ(map.heights[0], 302.0);
   EXPECT_EQ(map.heights[19], 705.0);
   ASSERT_EQ(map.preparation.size(), 1u);
-  EXPECT_EQ(map.preparation[0],
-            "window: columns 2 to 5, rows 3 to 7 of the 10x8 map (i0 = 2, j0 = 3, nx = 4, ny = 5)");
+  EXPECT_EQ(map.preparation[0], "window: columns 2 to 5, rows 3 to 7 of the 10x8 map (i0 = 2, j0 = 3, nx = 4, ny = 5)");
 }
 
 TEST(WindowTest, BoundsErrorsNameTheValues) {
   io::HeightMap map = index_map(10, 8);
-  EXPECT_NE(input_error_of([&] { select_window(map, parse_window("8,0,4,4")); })
-                .find("window i0 = 8, j0 = 0, nx = 4, ny = 4 is invalid: it ends at column 11 but the 10x8 map"),
+  EXPECT_NE(input_error_of([&] {
+              select_window(map, parse_window("8,0,4,4"));
+            }).find("window i0 = 8, j0 = 0, nx = 4, ny = 4 is invalid: it ends at column 11 but the 10x8 map"),
             std::string::npos);
   EXPECT_NE(input_error_of([&] { select_window(map, parse_window("0,5,4,4")); }).find("ends at row 8"),
             std::string::npos);

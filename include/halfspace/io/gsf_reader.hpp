@@ -20,7 +20,6 @@ namespace halfspace::io {
 // invalid points. Throws FileError naming the file for a wrong magic, a
 // malformed or truncated header, a non-length unit, or data shorter or
 // longer than XRes * YRes values.
-HeightMap read_gsf_height_map(const std::filesystem::path& path,
-                              const std::optional<LengthUnit>& unit = std::nullopt);
+HeightMap read_gsf_height_map(const std::filesystem::path& path, const std::optional<LengthUnit>& unit = std::nullopt);
 
 }  // namespace halfspace::io

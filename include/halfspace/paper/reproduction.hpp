@@ -4,11 +4,10 @@
 // the summary table reports.
 #pragma once
 
+#include <Eigen/Core>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "halfspace/paper/table1.hpp"
 #include "halfspace/solvers/lcp.hpp"
@@ -34,10 +33,10 @@ struct ReproductionOptions {
 
 // One method's pressure where it is not one of the three main ones.
 struct ExtraPressure {
-  std::string column;       // e.g. "p_lcpquad_si"
-  std::string description;  // one line
-  Eigen::ArrayXd pressure;  // Pa as the method returned it
-  solvers::LcpSolution lcp; // the method's report
+  std::string column;        // e.g. "p_lcpquad_si"
+  std::string description;   // one line
+  Eigen::ArrayXd pressure;   // Pa as the method returned it
+  solvers::LcpSolution lcp;  // the method's report
 };
 
 struct TestReproduction {

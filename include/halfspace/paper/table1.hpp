@@ -4,11 +4,10 @@
 // plane-strain Hertz line contacts, and their Hertz solutions.
 #pragma once
 
+#include <Eigen/Core>
 #include <array>
 #include <cstddef>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "halfspace/grid.hpp"
 
@@ -37,8 +36,8 @@ const PaperTest& table1_test(int number);
 // Hertz line contact under a load per length P' (Johnson 1985, ch. 4):
 // half-width b = sqrt(4 P' R / (pi E*)), peak p_H = 2 P' / (pi b).
 struct HertzLine {
-  double half_width = 0.0;  // b (m)
-  double peak = 0.0;        // p_H (Pa)
+  double half_width = 0.0;          // b (m)
+  double peak = 0.0;                // p_H (Pa)
   double pressure(double x) const;  // p_H sqrt(1 - x^2/b^2) inside, 0 outside (Pa)
 };
 HertzLine hertz_line(double load, double radius, double e_star);
@@ -50,11 +49,11 @@ HertzLine hertz_line(double load, double radius, double e_star);
 struct LineContact {
   PaperTest test;
   Grid grid;
-  std::vector<double> x;      // node positions (m)
-  Eigen::ArrayXd initial_gap; // x^2 / (2R) (m)
-  double radius = 0.0;        // R = R1 R2 / (R1 + R2) (m)
-  double e_star = 0.0;        // from 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 (Pa)
-  double load = 0.0;          // N/m
+  std::vector<double> x;       // node positions (m)
+  Eigen::ArrayXd initial_gap;  // x^2 / (2R) (m)
+  double radius = 0.0;         // R = R1 R2 / (R1 + R2) (m)
+  double e_star = 0.0;         // from 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 (Pa)
+  double load = 0.0;           // N/m
   HertzLine hertz;
 };
 // Throws InputError unless load is positive and finite.

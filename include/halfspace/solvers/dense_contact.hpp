@@ -26,11 +26,10 @@
 // tolerance. Displacement control is the plain LCP with q = (g0 - delta)/u.
 #pragma once
 
+#include <Eigen/Core>
 #include <span>
 #include <string>
 #include <string_view>
-
-#include <Eigen/Core>
 
 #include "halfspace/grid.hpp"
 #include "halfspace/solvers/contact_solver.hpp"

@@ -3,10 +3,9 @@
 // outcome of solving it: the common language of the Lemke and LCPquad solvers.
 #pragma once
 
+#include <Eigen/Core>
 #include <string>
 #include <string_view>
-
-#include <Eigen/Core>
 
 namespace halfspace::solvers {
 
@@ -41,13 +40,13 @@ std::string_view to_string(LcpStatus status);
 
 struct LcpSolution {
   LcpStatus status = LcpStatus::failure;
-  std::string message;     // the method's own report; empty when solved
-  Eigen::VectorXd z;       // n entries
-  Eigen::VectorXd w;       // M z + q - a lambda, recomputed from z and lambda
-  double multiplier = 0.0; // lambda (0 without an equality)
-  int iterations = 0;      // Lemke: pivots; LCPquad: interior-point iterations
-  double objective = 0.0;  // z' w: zero at a solution (LCPquad's objective)
-  double seconds = 0.0;    // wall-clock time of the method itself
+  std::string message;      // the method's own report; empty when solved
+  Eigen::VectorXd z;        // n entries
+  Eigen::VectorXd w;        // M z + q - a lambda, recomputed from z and lambda
+  double multiplier = 0.0;  // lambda (0 without an equality)
+  int iterations = 0;       // Lemke: pivots; LCPquad: interior-point iterations
+  double objective = 0.0;   // z' w: zero at a solution (LCPquad's objective)
+  double seconds = 0.0;     // wall-clock time of the method itself
 
   bool solved() const { return status == LcpStatus::solved; }
 };

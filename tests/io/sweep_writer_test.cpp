@@ -1,0 +1,114 @@
+// Tests of the sweep writer on hand-made steps: group names, the summary
+// table's values and units, the CSV's exact round trip, and the errors that
+// leave nothing behind.
+#include "halfspace/io/sweep_writer.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "halfspace/error.hpp"
+#include "io/hdf5_test_support.hpp"
+
+namespace halfspace::io {
+namespace {
+
+using test::TempDir;
+
+std::vector<solvers::SweepStep> make_steps(const Grid& grid, std::size_t count) {
+  std::vector<solvers::SweepStep> steps(count);
+  for (std::size_t k = 0; k < count; ++k) {
+    solvers::SweepStep& s = steps[k];
+    s.loading = Loading::force(0.1 * static_cast<double>(k + 1));
+    s.result.status = k == 1 ? SolveStatus::iteration_limit : SolveStatus::converged;
+    s.result.solver = "test";
+    s.result.pressure = Eigen::ArrayXd::LinSpaced(static_cast<Eigen::Index>(grid.size()), 0.0, 1.0);
+    s.result.gap = Eigen::ArrayXd::Zero(static_cast<Eigen::Index>(grid.size()));
+    s.result.displacement = Eigen::ArrayXd::Zero(static_cast<Eigen::Index>(grid.size()));
+    s.result.mean_pressure = 1.0 / 3.0 * static_cast<double>(k);  // not a short decimal
+    s.result.iterations = static_cast<int>(k) + 5;
+    s.statistics.cluster_sizes = {7, 2};
+    s.statistics.free_volume = 1e-13 * static_cast<double>(k);
+  }
+  return steps;
+}
+
+TEST(SweepWriterTest, WritesGroupsTableAndExactCsv) {
+  const TempDir dir;
+  const Grid grid = Grid::line(6, 1e-6, Boundary::free);
+  const std::vector<double> height(6, 0.0);
+  const std::vector<solvers::SweepStep> steps = make_steps(grid, 3);
+  ResultMetadata metadata;
+  metadata.load_mode = "force";
+  write_sweep_result(dir / "s.h5", grid, height, steps, metadata);
+  write_sweep_csv(sweep_csv_path(dir / "s.h5"), steps);
+  EXPECT_EQ(dir.entries(), (std::vector<std::string>{"s.csv", "s.h5"})) << "no temporary file left";
+
+  const test::H5 file = test::open_file(dir / "s.h5");
+  EXPECT_EQ(test::dataset_shape(file.get(), "/steps/002/pressure"), (std::vector<hsize_t>{6}));
+  EXPECT_EQ(test::read_dataset<std::int64_t>(file.get(), "/steps/000/cluster_sizes", H5T_NATIVE_INT64),
+            (std::vector<std::int64_t>{7, 2}));
+  EXPECT_EQ(test::read_dataset<double>(file.get(), "/sweep/converged", H5T_NATIVE_DOUBLE),
+            (std::vector<double>{1, 0, 1}));
+  // Units follow the dimension: a 1D force is N/m, a free volume m^2.
+  const test::H5 load(H5Dopen2(file.get(), "/sweep/load", H5P_DEFAULT), H5Dclose, "open /sweep/load");
+  EXPECT_EQ(test::read_string_attribute(load.get(), "units"), "N/m");
+  const test::H5 volume(H5Dopen2(file.get(), "/sweep/free_volume", H5P_DEFAULT), H5Dclose, "open free_volume");
+  EXPECT_EQ(test::read_string_attribute(volume.get(), "units"), "m^2");
+  EXPECT_EQ(test::read_int64_attribute(file.get(), "sweep_steps"), 3);
+  EXPECT_EQ(test::read_int64_attribute(file.get(), "iterations"), 7) << "the root describes the last step";
+
+  // Every CSV number reads back to the same double.
+  std::ifstream csv(dir / "s.csv");
+  std::string header, line;
+  std::getline(csv, header);
+  EXPECT_EQ(header.rfind("load,mean_pressure,total_force,", 0), 0u) << header;
+  const auto mean_pressure = test::read_dataset<double>(file.get(), "/sweep/mean_pressure", H5T_NATIVE_DOUBLE);
+  for (std::size_t k = 0; std::getline(csv, line); ++k) {
+    const std::size_t first = line.find(',');
+    const std::size_t second = line.find(',', first + 1);
+    EXPECT_EQ(std::strtod(line.substr(first + 1, second - first - 1).c_str(), nullptr), mean_pressure[k]) << line;
+  }
+}
+
+TEST(SweepWriterTest, ManyStepsGetWiderNamesThatStillSort) {
+  const TempDir dir;
+  const Grid grid = Grid::line(2, 1.0, Boundary::free);
+  write_sweep_result(dir / "many.h5", grid, std::vector<double>(2, 0.0), make_steps(grid, 1001), ResultMetadata{});
+  const test::H5 file = test::open_file(dir / "many.h5");
+  EXPECT_GT(H5Lexists(file.get(), "/steps/0000", H5P_DEFAULT), 0);
+  EXPECT_GT(H5Lexists(file.get(), "/steps/1000", H5P_DEFAULT), 0);
+}
+
+TEST(SweepWriterTest, RejectsBadInputWithoutWriting) {
+  const TempDir dir;
+  const Grid grid = Grid::line(6, 1e-6, Boundary::free);
+  std::vector<solvers::SweepStep> steps = make_steps(grid, 2);
+  EXPECT_THROW(write_sweep_result(dir / "a.h5", grid, std::vector<double>(6, 0.0), {}, ResultMetadata{}), InputError);
+  EXPECT_THROW(write_sweep_result(dir / "a.h5", grid, std::vector<double>(5, 0.0), steps, ResultMetadata{}),
+               InputError);
+  steps[1].result.gap = Eigen::ArrayXd::Zero(3);
+  try {
+    write_sweep_result(dir / "a.h5", grid, std::vector<double>(6, 0.0), steps, ResultMetadata{});
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("field 'gap' of step 1 has 3 values but the grid has 6 cells"),
+              std::string::npos)
+        << error.what();
+  }
+  try {
+    write_sweep_csv(dir / "missing" / "a.csv", make_steps(grid, 1));
+    ADD_FAILURE() << "no error";
+  } catch (const FileError& error) {
+    EXPECT_NE(std::string(error.what()).find("cannot write output"), std::string::npos) << error.what();
+  }
+  EXPECT_TRUE(dir.entries().empty());
+  EXPECT_EQ(sweep_csv_path("run/sweep.h5"), std::filesystem::path("run/sweep.csv"));
+  EXPECT_EQ(sweep_csv_path("result"), std::filesystem::path("result.csv"));
+}
+
+}  // namespace
+}  // namespace halfspace::io
