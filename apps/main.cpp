@@ -20,7 +20,7 @@ int main(int argc, char** argv) {
   CLI::App app{"halfspace: frictionless normal contact of an elastic half-space with a rigid rough surface",
                "halfspace"};
   app.set_version_flag("--version", fmt::format("halfspace {} ({})", halfspace::kVersion, halfspace::kGitHash));
-  app.footer("Exit codes: 0 converged, 1 bad input or file error, 2 solved but not converged.");
+  app.footer("Exit codes: 0 converged, 1 bad input or file error, 2 solved but not converged, 3 --plot failed.");
   app.require_subcommand(0, 1);
 
   // One line per subcommand.

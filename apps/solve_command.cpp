@@ -79,7 +79,8 @@ int run_solve(const SolveSetup& setup) {
 
 Command add_solve_command(CLI::App& program) {
   CLI::App* solve = program.add_subcommand(
-      "solve", "Solve one contact problem and write the pressure, gap and displacement to an HDF5 file");
+      "solve",
+      "Solve one contact problem, or a load sweep, and write the pressure, gap and displacement to an HDF5 file");
   solve->footer("Options can also come from --config FILE.toml; see docs/usage.md.");
   add_solve_options(*solve);
   return {solve, [solve](const std::vector<std::string>& argv) {

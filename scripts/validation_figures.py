@@ -76,7 +76,7 @@ def hertz_point(program, work, out):
     axis.set_xlabel("r / a")
     axis.set_ylabel("p / p0")
     axis.set_xlim(0, 1.5)
-    axis.set_title(f"Hertz sphere, 128x128 free grid, a = {a / 2.5e-6:.1f} cells: max error {100 * error:.1f}% of p0",
+    axis.set_title(f"Hertz sphere, 128x128 free grid, a = {a / result['dx']:.1f} cells: max error {100 * error:.1f}% of p0",
                    fontsize="small")
     axis.legend()
     axis.grid(True, alpha=0.3)
@@ -187,7 +187,7 @@ def control_modes(program, work, out):
     error_f = np.max(np.abs(by_force["load"] - hertz(by_force["approach"])) / by_force["load"])
     print(f"control: displacement control max force error {error_a:.4f}, load control {error_f:.4f}")
     fig, axis = plt.subplots(figsize=(6, 4.2), constrained_layout=True)
-    d = np.geomspace(1.5e-7, 2.5e-6, 100)
+    d = np.geomspace(6e-8, 2.5e-6, 100)
     axis.loglog(d * 1e6, hertz(d), "-", color="0.2", label="Hertz: F = 4/3 E* R^½ δ^3/2")
     axis.loglog(by_approach["load"] * 1e6, by_approach["total_force"], "o", color="tab:red", ms=6, mfc="none",
                 label=f"approach imposed (max error {100 * error_a:.1f}%)")

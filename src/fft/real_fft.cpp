@@ -1,6 +1,7 @@
 // RAII plan pair for real FFTs. FFTW's planner (and plan destruction) is not
 // thread-safe, so every call into it here is serialised by one mutex; only
-// fftw_execute runs unlocked.
+// fftw_execute runs unlocked. Measured planning loads and saves wisdom
+// (fft_wisdom.cpp) under the same lock.
 #include "halfspace/fft/real_fft.hpp"
 
 #include <fftw3.h>
@@ -14,18 +15,18 @@
 #include <stdexcept>
 #include <utility>
 
+#include "fftw_planner.hpp"
 #include "halfspace/error.hpp"
 #include "halfspace/threads.hpp"
 
 namespace halfspace {
-namespace {
+namespace detail {
 
-std::mutex& planner_mutex() {
+std::mutex& fftw_planner_mutex() {
   static std::mutex mutex;
   return mutex;
 }
 
-// Called with the planner lock held: FFTW's thread support is set up once.
 void init_fftw_threads() {
   static bool initialised = false;
   if (!initialised) {
@@ -33,6 +34,10 @@ void init_fftw_threads() {
     initialised = true;
   }
 }
+
+}  // namespace detail
+
+namespace {
 
 unsigned planner_flags(FftPlanning planning) {
   switch (planning) {
@@ -103,14 +108,15 @@ void RealFft::make_plans(int rank, const int* dims, FftPlanning planning, FftOut
   bool allocated = false;
   bool planned = false;
   {
-    const std::lock_guard<std::mutex> lock(planner_mutex());
-    init_fftw_threads();
+    const std::lock_guard<std::mutex> lock(detail::fftw_planner_mutex());
+    detail::init_fftw_threads();
     input_ = fftw_alloc_real(real_size());
     output_ = output == FftOutput::separate ? fftw_alloc_real(real_size()) : input_;
     spectrum_ = reinterpret_cast<std::complex<double>*>(fftw_alloc_complex(spectrum_size()));
     allocated = input_ != nullptr && output_ != nullptr && spectrum_ != nullptr;
     if (allocated) {
       fftw_plan_with_nthreads(threads());
+      detail::before_planning(planning);
       const unsigned flags = planner_flags(planning);
       // Out of place both ways: r2c keeps its input (the zero padding of the
       // DC-FFT survives every transform); c2r may destroy the spectrum, which
@@ -118,6 +124,7 @@ void RealFft::make_plans(int rank, const int* dims, FftPlanning planning, FftOut
       forward_plan_ = fftw_plan_dft_r2c(rank, dims, input_, as_fftw(spectrum_), flags | FFTW_PRESERVE_INPUT);
       backward_plan_ = fftw_plan_dft_c2r(rank, dims, as_fftw(spectrum_), output_, flags | FFTW_DESTROY_INPUT);
       planned = forward_plan_ != nullptr && backward_plan_ != nullptr;
+      if (planned) detail::after_planning(planning);
     }
   }
   if (!allocated) {
@@ -149,7 +156,7 @@ void RealFft::release() noexcept {
       backward_plan_ == nullptr) {
     return;
   }
-  const std::lock_guard<std::mutex> lock(planner_mutex());
+  const std::lock_guard<std::mutex> lock(detail::fftw_planner_mutex());
   if (forward_plan_ != nullptr) fftw_destroy_plan(forward_plan_);
   if (backward_plan_ != nullptr) fftw_destroy_plan(backward_plan_);
   if (output_ != input_) fftw_free(output_);

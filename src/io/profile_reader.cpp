@@ -158,8 +158,9 @@ HeightMap read_profile(const std::filesystem::path& path, const std::optional<Le
     target.fail(fmt::format("line {} has {} values; a profile has z alone or x and z (for a map use a text matrix)",
                             table.line_numbers.front(), table.columns));
   }
-  if (table.rows() < 2)
+  if (table.rows() < 2) {
     target.fail(fmt::format("the file holds 1 data row (line {}); need at least 2 points", table.line_numbers.front()));
+  }
 
   // Units: the column names' where stated, else the caller's, else metres.
   const bool has_x = table.columns == 2;

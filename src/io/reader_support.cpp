@@ -38,8 +38,9 @@ std::string describe_signature(std::string_view bytes) {
   if (starts("PK\x03\x04"sv)) return "a zip archive (X3P files are zip archives)";
   if (starts("\x93NUMPY"sv)) return "a NumPy .npy file";
   if (starts("Gwyddion Simple Field"sv)) return "a Gwyddion Simple Field (.gsf) file";
-  if (starts("CDF\x01"sv) || starts("CDF\x02"sv))
+  if (starts("CDF\x01"sv) || starts("CDF\x02"sv)) {
     return "a classic NetCDF-3 file (only NetCDF-4, which is HDF5, is read)";
+  }
   return {};
 }
 

@@ -66,7 +66,7 @@ TEST(GenerateCliTest, SolveReadsTheGeneratedFile) {
   const TempDir dir;
   ASSERT_EQ(run_program(self_affine("surface.h5"), dir.path()).exit_code, kExitOk);
   const ProgramRun run = run_program({"solve", "--height-map", "surface.h5", "--boundary", "periodic", "--E-star",
-                                      "1e9", "--mean-pressure", "2e6", "--output", "result.h5", "--quiet"},
+                                      "1e9", "--mean-pressure", "2e6", "--output", "result.h5", "--threads", "1", "--quiet"},
                                      dir.path());
   ASSERT_EQ(run.exit_code, kExitOk) << run.err;
   const test::H5 file = test::open_file(dir / "result.h5");

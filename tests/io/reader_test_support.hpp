@@ -19,7 +19,14 @@
 namespace halfspace::test {
 
 inline const std::filesystem::path kFormatDataDir = HALFSPACE_TEST_DATA_DIR;
-inline const std::filesystem::path kTopographyDir = "/work/shared/data/topography";
+// The measured topographies: shared/ beside the repository (as CI lays it
+// out), else the workplace's /work/shared.
+inline std::filesystem::path find_topography_dir() {
+  const std::filesystem::path beside = kFormatDataDir / ".." / ".." / ".." / "shared" / "data" / "topography";
+  if (std::filesystem::exists(beside / "README.md")) return beside.lexically_normal();
+  return "/work/shared/data/topography";
+}
+inline const std::filesystem::path kTopographyDir = find_topography_dir();
 
 inline bool have_topography() {
   return std::filesystem::exists(kTopographyDir / "README.md");

@@ -19,8 +19,9 @@ enum class FftOutput { separate, overwrite_input };
 // Forward (r2c) and backward (c2r) transforms of a 1D (n) or 2D (rows, cols,
 // row-major) real array. The buffers are FFTW-aligned and owned here; the plans
 // are made once, under a process-wide lock (FFTW's planner is not thread-safe),
-// with the thread count in force (set_threads). Executing is thread-safe for
-// distinct objects. Transforms are unnormalised: backward(forward(x)) = N x
+// with the thread count in force (set_threads); measure and patient plans
+// read and extend the wisdom file of fft_wisdom.hpp. Executing is thread-safe
+// for distinct objects. Transforms are unnormalised: backward(forward(x)) = N x
 // with N = rows * cols.
 class RealFft {
  public:

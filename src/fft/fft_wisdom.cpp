@@ -1,0 +1,228 @@
+// FFTW wisdom between runs: where the file lives, reading it (any failure
+// ignored), writing it atomically, and the load-once, save-when-grown
+// handling that RealFft's measured planning calls under the planner lock.
+//
+// Why failures are silent. Wisdom is a cache of planner timings: a missing,
+// unreadable or corrupt file costs only the planning time that wisdom would
+// have saved, never the accuracy of a transform, and the next measured plan
+// replaces a bad file with good wisdom. So the library neither throws nor
+// prints; fft_wisdom_status() keeps the reason for a front end that wants it.
+#include "halfspace/fft/fft_wisdom.hpp"
+
+#include <fftw3.h>
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <string_view>
+#include <system_error>
+#include <utility>
+
+#include "fftw_planner.hpp"
+
+namespace halfspace {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Wisdom for a handful of sizes is a few kilobytes; a file this large is not
+// wisdom, and is not read into memory.
+constexpr std::uintmax_t kMaxWisdomBytes = std::uintmax_t{16} << 20;
+
+// The automatic handling's state; guarded by the planner lock.
+struct WisdomState {
+  bool resolved = false;  // the path was looked up and the file read (or not)
+  std::optional<fs::path> path;
+  bool loaded = false;
+  bool saved = false;
+  std::string problem;
+  std::string known;  // FFTW's wisdom when last loaded or saved
+};
+
+WisdomState& wisdom_state() {
+  static WisdomState state;
+  return state;
+}
+
+enum class ReadOutcome { loaded, missing, failed };
+
+void set_problem(std::string* problem, std::string text) {
+  if (problem != nullptr) *problem = std::move(text);
+}
+
+// FFTW's accumulated wisdom as text; empty if it cannot be exported. FFTW
+// allocates the string with malloc (FFTW 3.3 manual, section 4.7.2).
+std::string exported_wisdom() {
+  const std::unique_ptr<char, decltype(&std::free)> text(fftw_export_wisdom_to_string(), &std::free);
+  return text ? std::string(text.get()) : std::string();
+}
+
+// The lock held. FFTW rejects text that is not its wisdom, or wisdom of
+// another FFTW version or build, as a whole and keeps what it had.
+ReadOutcome import_locked(const fs::path& path, std::string* problem) {
+  const std::string shown = path.string();
+  std::error_code error;
+  const fs::file_status status = fs::status(path, error);
+  if (!fs::exists(status)) {
+    set_problem(problem, fmt::format("wisdom file '{}' does not exist", shown));
+    return ReadOutcome::missing;
+  }
+  if (!fs::is_regular_file(status)) {
+    set_problem(problem, fmt::format("wisdom file '{}' is not a regular file", shown));
+    return ReadOutcome::failed;
+  }
+  const std::uintmax_t size = fs::file_size(path, error);
+  if (error || size > kMaxWisdomBytes) {
+    set_problem(problem, fmt::format("wisdom file '{}' is larger than {} bytes", shown, kMaxWisdomBytes));
+    return ReadOutcome::failed;
+  }
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  if (in) text << in.rdbuf();
+  if (!in || in.bad()) {
+    set_problem(problem, fmt::format("wisdom file '{}' cannot be read", shown));
+    return ReadOutcome::failed;
+  }
+  const std::string wisdom = text.str();
+  try {
+    detail::init_fftw_threads();
+  } catch (const std::exception& failure) {
+    set_problem(problem, failure.what());
+    return ReadOutcome::failed;
+  }
+  // An embedded NUL would hide the rest of the file from FFTW's C-string
+  // parser, which could then accept a truncated prefix.
+  if (wisdom.find('\0') != std::string::npos || fftw_import_wisdom_from_string(wisdom.c_str()) == 0) {
+    set_problem(problem, fmt::format("wisdom file '{}' is not wisdom of this FFTW build (corrupt, or written by "
+                                     "another FFTW version)",
+                                     shown));
+    return ReadOutcome::failed;
+  }
+  return ReadOutcome::loaded;
+}
+
+// The lock held. Not synced: a crash may leave an old or, rarely, an empty
+// file under the final name, both of which merely cost a replanning.
+bool export_locked(const fs::path& path, std::string* problem) {
+  const std::string shown = path.string();
+  const std::string wisdom = exported_wisdom();
+  if (wisdom.empty()) {
+    set_problem(problem, "FFTW could not export its wisdom");
+    return false;
+  }
+  std::error_code error;
+  if (path.has_parent_path()) {
+    fs::create_directories(path.parent_path(), error);
+    if (error) {
+      set_problem(problem, fmt::format("cannot create directory '{}' for the wisdom file: {}",
+                                       path.parent_path().string(), error.message()));
+      return false;
+    }
+  }
+  fs::path temporary = path;
+  temporary += fmt::format(".tmp-{}", ::getpid());
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    out << wisdom;
+    out.close();
+    if (!out) {
+      fs::remove(temporary, error);
+      set_problem(problem, fmt::format("cannot write wisdom file '{}'", temporary.string()));
+      return false;
+    }
+  }
+  fs::rename(temporary, path, error);
+  if (error) {
+    std::error_code ignored;
+    fs::remove(temporary, ignored);
+    set_problem(problem, fmt::format("cannot rename '{}' onto wisdom file '{}': {}", temporary.string(), shown,
+                                     error.message()));
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::optional<fs::path> fft_wisdom_path() {
+  if (const char* chosen = std::getenv("HALFSPACE_FFTW_WISDOM")) {
+    const std::string_view text(chosen);
+    if (text.empty() || text == "off") return std::nullopt;
+    return fs::path(text);
+  }
+  // XDG Base Directory Specification: a relative XDG_CACHE_HOME is invalid
+  // and must be ignored.
+  if (const char* cache = std::getenv("XDG_CACHE_HOME"); cache != nullptr && fs::path(cache).is_absolute()) {
+    return fs::path(cache) / "halfspace" / "fftw-wisdom";
+  }
+  if (const char* home = std::getenv("HOME"); home != nullptr && *home != '\0') {
+    return fs::path(home) / ".cache" / "halfspace" / "fftw-wisdom";
+  }
+  return std::nullopt;
+}
+
+FftWisdomStatus fft_wisdom_status() {
+  const std::lock_guard<std::mutex> lock(detail::fftw_planner_mutex());
+  const WisdomState& state = wisdom_state();
+  return {state.path, state.loaded, state.saved, state.problem};
+}
+
+bool import_fft_wisdom(const fs::path& path, std::string* problem) {
+  const std::lock_guard<std::mutex> lock(detail::fftw_planner_mutex());
+  return import_locked(path, problem) == ReadOutcome::loaded;
+}
+
+bool export_fft_wisdom(const fs::path& path, std::string* problem) {
+  const std::lock_guard<std::mutex> lock(detail::fftw_planner_mutex());
+  return export_locked(path, problem);
+}
+
+namespace detail {
+
+void before_planning(FftPlanning planning) noexcept {
+  if (planning == FftPlanning::estimate) return;
+  WisdomState& state = wisdom_state();
+  if (state.resolved) return;
+  try {
+    state.resolved = true;
+    state.path = fft_wisdom_path();
+    if (!state.path) return;
+    std::string problem;
+    const ReadOutcome outcome = import_locked(*state.path, &problem);
+    state.loaded = outcome == ReadOutcome::loaded;
+    // A missing file is the normal first run, not a problem.
+    if (outcome == ReadOutcome::failed) state.problem = std::move(problem);
+    state.known = exported_wisdom();
+  } catch (...) {
+    state.problem = "the wisdom file could not be loaded (out of memory)";
+  }
+}
+
+void after_planning(FftPlanning planning) noexcept {
+  if (planning == FftPlanning::estimate) return;
+  WisdomState& state = wisdom_state();
+  if (!state.path) return;
+  try {
+    if (exported_wisdom() == state.known) return;
+    // Merge what other runs saved since this one loaded the file, so that
+    // concurrent runs do not drop each other's wisdom; a file that fails to
+    // read now is simply replaced.
+    import_locked(*state.path, nullptr);
+    std::string problem;
+    if (export_locked(*state.path, &problem)) {
+      state.saved = true;
+    } else {
+      state.problem = std::move(problem);
+    }
+    // Also after a failed save: retrying at every plan would not help.
+    state.known = exported_wisdom();
+  } catch (...) {
+    state.problem = "the wisdom file could not be saved (out of memory)";
+  }
+}
+
+}  // namespace detail
+}  // namespace halfspace
