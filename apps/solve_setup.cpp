@@ -281,7 +281,7 @@ void require_spacings(const std::string& file, const std::vector<std::string_vie
   if (missing.empty()) return;
   std::vector<std::string> flags;
   for (std::string_view key : missing) flags.push_back(fmt::format("--{}", key));
-  throw FileError(fmt::format("height map {} gives no spacing ({} attribute missing): pass {} (m)", file,
+  throw FileError(fmt::format("height map {} does not state its spacing {}: pass {} (m)", file,
                               fmt::join(missing, " and "), fmt::join(flags, " and ")));
 }
 
