@@ -48,7 +48,9 @@ struct SelfAffineSpec {
 // the Nyquist modes of even axes are left out, so the discrete surface is
 // exactly band-limited and its slope unambiguous. Hence the same seed gives
 // the same bits for any thread count (the synthesis FFT is planned with one
-// thread), and a mode's random number does not depend on the cutoffs.
+// thread; FFTW wisdom loaded by earlier measured plans in the same process
+// could still change the plan, and the last bits), and a mode's random
+// number does not depend on the cutoffs.
 // Finally the heights are scaled so that the requested rms height (about the
 // mean) or rms slope (surface::rms_slope's periodic definition, evaluated on
 // the spectrum) holds to rounding. Throws InputError as resolved() does.
