@@ -19,6 +19,7 @@
 #include "halfspace/paper/paper_output.hpp"
 #include "halfspace/paper/reproduction.hpp"
 #include "halfspace/threads.hpp"
+#include "plot_tool.hpp"
 #include "value_parsing.hpp"
 
 namespace halfspace::app {
@@ -36,50 +37,6 @@ struct PaperOptions {
   std::string plot_script;
   bool quiet = false;
 };
-
-// The plotting tool: --plot-script, else $HALFSPACE_PLOT_TOOL (as for
-// `solve --plot`), else the installed copy beside the program
-// (<prefix>/share/halfspace), else the one in the source tree this program
-// was built from.
-fs::path find_plot_script(const PaperOptions& options) {
-  if (!options.plot_script.empty()) {
-    if (!fs::is_regular_file(options.plot_script)) {
-      throw InputError(fmt::format("--plot-script '{}' is not a file", options.plot_script));
-    }
-    return options.plot_script;
-  }
-  if (const char* given = std::getenv("HALFSPACE_PLOT_TOOL"); given != nullptr && *given != '\0') {
-    if (!fs::is_regular_file(given)) {
-      throw InputError(fmt::format("the plotting tool {} (from HALFSPACE_PLOT_TOOL) is not a file", given));
-    }
-    return given;
-  }
-  std::error_code error;
-  const fs::path program = fs::read_symlink("/proc/self/exe", error);
-  if (!error) {
-    const fs::path installed = program.parent_path().parent_path() / "share" / "halfspace" / "halfspace_plot.py";
-    if (fs::is_regular_file(installed)) return installed;
-  }
-#ifdef HALFSPACE_PLOT_SCRIPT
-  if (fs::is_regular_file(HALFSPACE_PLOT_SCRIPT)) return HALFSPACE_PLOT_SCRIPT;
-#endif
-  throw InputError(
-      "the plotting tool halfspace_plot.py was not found (looked in <prefix>/share/halfspace and the source tree): "
-      "give it with --plot-script FILE, or skip the figures with --no-figures");
-}
-
-// Runs `script paper DIR`; the script's own shebang picks Debian's python3,
-// which has matplotlib and h5py (scripts/install-deps.sh).
-void draw_figures(const fs::path& script, const fs::path& directory, bool quiet) {
-  const std::string command = join_command_line({script.string(), "paper", directory.string()});
-  const int status = std::system((quiet ? command + " > /dev/null" : command).c_str());
-  if (status != 0) {
-    throw InputError(fmt::format(
-        "the figures could not be drawn ('{}' failed with status {}); the data files are written. Install "
-        "python3-matplotlib and python3-h5py (scripts/install-deps.sh), or skip the figures with --no-figures",
-        command, status));
-  }
-}
 
 void write_text(const fs::path& path, const std::string& text) {
   std::ofstream out(path, std::ios::trunc);
@@ -99,7 +56,10 @@ int run_paper(const PaperOptions& options) {
   set_threads(1);
   std::vector<int> numbers{1, 2, 3, 4};
   if (options.test) numbers = {paper::table1_test(*options.test).number};
-  const fs::path script = options.no_figures ? fs::path() : find_plot_script(options);
+  const std::optional<PlotTool> plot =
+      options.no_figures ? std::nullopt
+                         : std::optional<PlotTool>(find_plot_tool({"halfspace paper", "use --no-figures",
+                                                                   options.plot_script}));
 
   const fs::path directory = options.output_dir;
   std::error_code error;
@@ -134,7 +94,14 @@ int run_paper(const PaperOptions& options) {
   write_text(directory / "summary.md", paper::summary_markdown(runs, reproduction));
   if (!options.quiet) fmt::print("wrote {}\n", (directory / "summary.md").string());
   std::fflush(stdout);  // before the plotting tool prints the figures it writes
-  if (!options.no_figures) draw_figures(script, directory, options.quiet);
+  if (plot) {
+    // The data files are written whatever happens to the figures.
+    const std::string failure = run_plot_tool(*plot, "paper", directory, options.quiet);
+    if (!failure.empty()) {
+      fmt::print(stderr, "error: the figures could not be drawn: {}; the data files are written\n", failure);
+      return converged ? kExitPlotFailed : kExitNotConverged;
+    }
+  }
   return converged ? kExitOk : kExitNotConverged;
 }
 

@@ -26,14 +26,25 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr std::string_view kPackages = "matplotlib, h5py and numpy";
-constexpr std::string_view kInstallHint =
-    "install python3-matplotlib, python3-h5py and python3-numpy (scripts/install-deps.sh), set HALFSPACE_PYTHON to "
-    "a python3 that has them, or drop --plot";
 
-fs::path locate_script() {
+std::string install_hint(const PlotRequest& request) {
+  return fmt::format(
+      "install python3-matplotlib, python3-h5py and python3-numpy (scripts/install-deps.sh), set HALFSPACE_PYTHON to "
+      "a python3 that has them, or {}",
+      request.skip_hint);
+}
+
+fs::path locate_script(const PlotRequest& request) {
+  if (!request.script.empty()) {
+    if (!fs::is_regular_file(request.script)) {
+      throw InputError(fmt::format("{}: the plotting tool {} is not a file", request.by, request.script.string()));
+    }
+    return request.script;
+  }
   if (const char* given = std::getenv("HALFSPACE_PLOT_TOOL"); given != nullptr && *given != '\0') {
     if (!fs::is_regular_file(given)) {
-      throw InputError(fmt::format("--plot: the plotting tool {} (from HALFSPACE_PLOT_TOOL) is not a file", given));
+      throw InputError(
+          fmt::format("{}: the plotting tool {} (from HALFSPACE_PLOT_TOOL) is not a file", request.by, given));
     }
     return given;
   }
@@ -46,9 +57,10 @@ fs::path locate_script() {
 #ifdef HALFSPACE_PLOT_SCRIPT
   if (fs::is_regular_file(HALFSPACE_PLOT_SCRIPT)) return HALFSPACE_PLOT_SCRIPT;
 #endif
-  throw InputError(
-      "--plot: the plotting tool halfspace_plot.py was not found (looked in <prefix>/share/halfspace beside the "
-      "program and in the source tree); set HALFSPACE_PLOT_TOOL to its path, or drop --plot");
+  throw InputError(fmt::format(
+      "{}: the plotting tool halfspace_plot.py was not found (looked in <prefix>/share/halfspace beside the "
+      "program and in the source tree); set HALFSPACE_PLOT_TOOL to its path, or {}",
+      request.by, request.skip_hint));
 }
 
 // "#!/usr/bin/python3" -> {"/usr/bin/python3"}; "#!/usr/bin/env python3" ->
@@ -96,20 +108,20 @@ ChildStatus run_child(const std::vector<std::string>& arguments, bool silence_st
 
 }  // namespace
 
-PlotTool find_plot_tool() {
-  PlotTool tool{{}, locate_script()};
+PlotTool find_plot_tool(const PlotRequest& request) {
+  PlotTool tool{{}, locate_script(request)};
   tool.interpreter = interpreter_of(tool.script);
   std::vector<std::string> check = tool.interpreter;
   check.insert(check.end(), {"-c", "import matplotlib, h5py, numpy"});
   const std::string shown = join_command_line(tool.interpreter);
   const ChildStatus status = run_child(check, true, true);
   if (status.spawn_error != 0) {
-    throw InputError(fmt::format("--plot: the plotting tool's interpreter {} cannot be run ({}): {}", shown,
-                                 std::strerror(status.spawn_error), kInstallHint));
+    throw InputError(fmt::format("{}: the plotting tool's interpreter {} cannot be run ({}): {}", request.by, shown,
+                                 std::strerror(status.spawn_error), install_hint(request)));
   }
   if (status.exit_code != 0) {
-    throw InputError(fmt::format("--plot: {} cannot import {}, which the plotting tool {} needs: {}", shown, kPackages,
-                                 tool.script.string(), kInstallHint));
+    throw InputError(fmt::format("{}: {} cannot import {}, which the plotting tool {} needs: {}", request.by, shown,
+                                 kPackages, tool.script.string(), install_hint(request)));
   }
   return tool;
 }

@@ -14,14 +14,22 @@ struct PlotTool {
   std::filesystem::path script;
 };
 
-// The tool, looked for in order: $HALFSPACE_PLOT_TOOL; the installed copy
+// Who asks for the tool, so that messages name the option and how to do
+// without it: {"--plot", "drop --plot"} or {"halfspace paper", "use --no-figures"}.
+struct PlotRequest {
+  std::string_view by;
+  std::string_view skip_hint;
+  std::filesystem::path script;  // explicit path (e.g. --plot-script), else searched
+};
+
+// The tool, looked for in order: request.script; $HALFSPACE_PLOT_TOOL; the installed copy
 // <prefix>/share/halfspace/halfspace_plot.py beside the program; the source
 // tree the program was built from. Its interpreter is $HALFSPACE_PYTHON, else
 // the script's #! line, else python3. Checks that the interpreter runs and
 // imports matplotlib, h5py and numpy, so that a missing package is reported
 // before a long solve. Throws InputError with a message saying what is
 // missing and how to install it.
-PlotTool find_plot_tool();
+PlotTool find_plot_tool(const PlotRequest& request);
 
 // Runs `tool subcommand file` (the figures go next to `file`), its standard
 // output suppressed when `quiet`. Returns an empty string on success, else

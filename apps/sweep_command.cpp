@@ -100,7 +100,7 @@ std::string describe_load(ControlMode mode, double value, const Grid& grid) {
 int run_sweep(const SolveSetup& setup) {
   // Threads first: the FFT plans use the thread count in force when made.
   set_threads(setup.threads);
-  const std::optional<PlotTool> plot = setup.plot ? std::optional<PlotTool>(find_plot_tool()) : std::nullopt;
+  const std::optional<PlotTool> plot = setup.plot ? std::optional<PlotTool>(find_plot_tool({"--plot", "drop --plot", {}})) : std::nullopt;
 
   Progress progress(!setup.quiet, setup.load_values.size(), setup.solver.tolerance);
   solvers::SolverSettings settings = setup.solver;

@@ -266,6 +266,7 @@ void write_summary(hid_t root, const Grid& grid, const SolveResult& result, cons
   attach_int64(root, "converged", result.converged() ? 1 : 0);
   attach_int64(root, "iterations", result.iterations);
   attach_int64(root, "operator_applications", result.operator_applications);
+  attach_int64(root, "preconditioner_applications", result.preconditioner_applications);
   attach_double(root, "residual", result.residual);
   attach_double(root, "tolerance", result.tolerance);
   attach_double(root, "solve_seconds", result.wall_seconds);

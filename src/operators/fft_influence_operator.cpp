@@ -4,12 +4,17 @@
 // Liu, Wang & Liu 2000), exact to rounding.
 #include "halfspace/operators/fft_influence_operator.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <complex>
+#include <memory>
+#include <utility>
 #include <vector>
 
+#include "halfspace/error.hpp"
 #include "halfspace/fft/real_fft.hpp"
 #include "halfspace/kernels/love_rectangle.hpp"
 #include "halfspace/kernels/periodic_fourier.hpp"
@@ -38,6 +43,20 @@ RealFft make_fft(const Grid& grid, FftPlanning planning) {
   return RealFft(transform_rows(grid), transform_cols(grid), planning, output);
 }
 
+// A shared transform must be the periodic grid's own: apply() reads rows at
+// stride fft.cols() and the kernel follows the spectrum's layout.
+std::shared_ptr<RealFft> checked_shared_transform(const Grid& grid, std::shared_ptr<RealFft> transform) {
+  if (!grid.periodic()) {
+    throw InputError("FftInfluenceOperator: a shared transform needs a periodic grid (free grids pad it)");
+  }
+  if (!transform || transform->rows() != transform_rows(grid) || transform->cols() != transform_cols(grid)) {
+    throw InputError(fmt::format("FftInfluenceOperator: the shared transform is {}x{} but the grid needs {}x{}",
+                                 transform ? transform->rows() : 0, transform ? transform->cols() : 0,
+                                 transform_rows(grid), transform_cols(grid)));
+  }
+  return transform;
+}
+
 // Distance (in cells) of wrap-around index k on a 2n-periodic axis: k, then
 // 2n - k for the negative offsets. The middle index n gets distance n: it
 // multiplies only padding, never reaching the first n outputs, so any value
@@ -62,7 +81,8 @@ void copy_block(std::size_t ny, std::size_t nx, Copy&& copy) {
 }  // namespace
 
 struct FftInfluenceOperator::Impl {
-  Impl(const Grid& g, double e_star, FftPlanning planning) : grid(g), fft(make_fft(g, planning)) {
+  Impl(const Grid& g, double e_star, std::shared_ptr<RealFft> shared)
+      : grid(g), transform(std::move(shared)), fft(*transform) {
     kernel.resize(fft.spectrum_size());
     if (grid.periodic()) {
       init_periodic(e_star);
@@ -140,13 +160,19 @@ struct FftInfluenceOperator::Impl {
   }
 
   Grid grid;
-  RealFft fft;
+  std::shared_ptr<RealFft> transform;  // own, or shared with a preconditioner (periodic grids)
+  RealFft& fft;
   std::vector<double> kernel;  // real kernel spectrum, layout of fft.spectrum()
   double self = 0.0;
 };
 
 FftInfluenceOperator::FftInfluenceOperator(const Grid& grid, double e_star, FftPlanning planning)
-    : impl_(std::make_unique<Impl>(grid, checked_composite_modulus(e_star), planning)) {}
+    : impl_(std::make_unique<Impl>(grid, checked_composite_modulus(e_star),
+                                   std::make_shared<RealFft>(make_fft(grid, planning)))) {}
+
+FftInfluenceOperator::FftInfluenceOperator(const Grid& grid, double e_star, std::shared_ptr<RealFft> transform)
+    : impl_(std::make_unique<Impl>(grid, checked_composite_modulus(e_star),
+                                   checked_shared_transform(grid, std::move(transform)))) {}
 
 FftInfluenceOperator::~FftInfluenceOperator() = default;
 

@@ -4,12 +4,17 @@
 // removes the growth of its condition number with the grid size.
 #include "halfspace/solvers/fourier_preconditioner.hpp"
 
+#include <fmt/format.h>
+
 #include <cassert>
 #include <cmath>
 #include <complex>
 #include <limits>
+#include <memory>
+#include <utility>
 #include <vector>
 
+#include "halfspace/error.hpp"
 #include "halfspace/fft/real_fft.hpp"
 #include "halfspace/kernels/periodic_fourier.hpp"
 #include "halfspace/linalg/parallel.hpp"
@@ -18,15 +23,26 @@
 namespace halfspace::solvers {
 namespace {
 
-RealFft make_unpadded_fft(const Grid& grid, FftPlanning planning) {
-  if (grid.dimension() == 1) return RealFft(grid.nx(), planning, FftOutput::overwrite_input);
-  return RealFft(grid.ny(), grid.nx(), planning, FftOutput::overwrite_input);
+std::shared_ptr<RealFft> make_unpadded_fft(const Grid& grid, FftPlanning planning) {
+  if (grid.dimension() == 1) return std::make_shared<RealFft>(grid.nx(), planning, FftOutput::overwrite_input);
+  return std::make_shared<RealFft>(grid.ny(), grid.nx(), planning, FftOutput::overwrite_input);
+}
+
+std::shared_ptr<RealFft> checked_shared_transform(const Grid& grid, std::shared_ptr<RealFft> transform) {
+  const std::size_t rows = grid.dimension() == 1 ? 1 : grid.ny();
+  if (!transform || transform->rows() != rows || transform->cols() != grid.nx()) {
+    throw InputError(fmt::format("FourierPreconditioner: the shared transform is {}x{} but the grid needs {}x{}",
+                                 transform ? transform->rows() : 0, transform ? transform->cols() : 0, rows,
+                                 grid.nx()));
+  }
+  return transform;
 }
 
 }  // namespace
 
 struct FourierPreconditioner::Impl {
-  Impl(const Grid& g, double e_star, FftPlanning planning) : grid(g), fft(make_unpadded_fft(g, planning)) {
+  Impl(const Grid& g, double e_star, std::shared_ptr<RealFft> shared)
+      : grid(g), transform(std::move(shared)), fft(*transform) {
     const std::size_t cols = fft.spectrum_cols();
     symbol.resize(fft.spectrum_size());
     double q_min = std::numeric_limits<double>::infinity();
@@ -45,12 +61,17 @@ struct FourierPreconditioner::Impl {
   }
 
   Grid grid;
-  RealFft fft;
+  std::shared_ptr<RealFft> transform;  // own, or shared with the operator
+  RealFft& fft;
   std::vector<double> symbol;  // E*|q|/(2N), layout of fft.spectrum()
 };
 
 FourierPreconditioner::FourierPreconditioner(const Grid& grid, double e_star, FftPlanning planning)
-    : impl_(std::make_unique<Impl>(grid, checked_composite_modulus(e_star), planning)) {}
+    : impl_(std::make_unique<Impl>(grid, checked_composite_modulus(e_star), make_unpadded_fft(grid, planning))) {}
+
+FourierPreconditioner::FourierPreconditioner(const Grid& grid, double e_star, std::shared_ptr<RealFft> transform)
+    : impl_(std::make_unique<Impl>(grid, checked_composite_modulus(e_star),
+                                   checked_shared_transform(grid, std::move(transform)))) {}
 
 FourierPreconditioner::~FourierPreconditioner() = default;
 

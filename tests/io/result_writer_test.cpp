@@ -48,6 +48,7 @@ SolveResult make_result(const Grid& grid, std::size_t history_length) {
   result.tolerance = 1e-8;
   for (std::size_t k = 0; k < history_length; ++k) result.residual_history.push_back(std::pow(0.5, double(k)) / 3.0);
   result.operator_applications = 35;
+  result.preconditioner_applications = 17;
   result.approach = 1.234e-7;
   result.total_force = 0.1 / 3.0;
   result.mean_pressure = 1.7e6 / 7.0;
@@ -169,6 +170,7 @@ void expect_attributes(hid_t file, const Grid& grid, const SolveResult& result, 
   expect_double("max_pressure", result.max_pressure);
   expect_int("iterations", result.iterations);
   expect_int("operator_applications", result.operator_applications);
+  expect_int("preconditioner_applications", result.preconditioner_applications);
   expect_double("residual", result.residual);
   expect_double("tolerance", result.tolerance);
   expect_int("converged", result.converged() ? 1 : 0);

@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "halfspace/fft/fft_planning.hpp"
+#include "halfspace/fft/real_fft.hpp"
 #include "halfspace/operators/influence_operator.hpp"
 
 namespace halfspace {
@@ -16,6 +17,12 @@ class FftInfluenceOperator final : public InfluenceOperator {
   // e_star: composite modulus (Pa). Makes the plans and the kernel spectrum;
   // the threads in force (set_threads) are used by the plans.
   FftInfluenceOperator(const Grid& grid, double e_star, FftPlanning planning = FftPlanning::estimate);
+  // The same on a periodic grid, with `transform` (the grid's own (ny, nx),
+  // or nx in 1D, transform; FftOutput::overwrite_input saves most) instead
+  // of a transform of its own, so that a FourierPreconditioner can share its
+  // buffers. Nothing sharing it may run while apply() does. Throws InputError
+  // if the grid is not periodic or the transform's shape is not the grid's.
+  FftInfluenceOperator(const Grid& grid, double e_star, std::shared_ptr<RealFft> transform);
   ~FftInfluenceOperator() override;
   FftInfluenceOperator(const FftInfluenceOperator&) = delete;
   FftInfluenceOperator& operator=(const FftInfluenceOperator&) = delete;

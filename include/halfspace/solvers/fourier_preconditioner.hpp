@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "halfspace/fft/fft_planning.hpp"
+#include "halfspace/fft/real_fft.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/solvers/preconditioner.hpp"
 
@@ -17,6 +18,12 @@ class FourierPreconditioner final : public Preconditioner {
   // mode, where E*|q|/2 vanishes, gets the value of the smallest non-zero
   // wavenumber so that M^-1 stays positive definite.
   FourierPreconditioner(const Grid& grid, double e_star, FftPlanning planning = FftPlanning::estimate);
+  // The same with `transform` (the grid's (ny, nx), or nx in 1D, transform)
+  // instead of one of its own, e.g. the one a periodic FftInfluenceOperator
+  // uses: the solver applies the two one after the other, so one set of
+  // buffers serves both. Nothing sharing it may run while apply() does.
+  // Throws InputError if the transform's shape is not the grid's.
+  FourierPreconditioner(const Grid& grid, double e_star, std::shared_ptr<RealFft> transform);
   ~FourierPreconditioner() override;
 
   void apply(std::span<const double> in, std::span<double> out) override;

@@ -1,0 +1,98 @@
+// The Fourier preconditioner: on a periodic grid it inverts K except on the
+// mean mode, and it can share one transform (and its buffers) with the
+// periodic FFT operator, interleaved as Polonsky-Keer applies them, with the
+// same bits as separate transforms.
+#include "halfspace/solvers/fourier_preconditioner.hpp"
+
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <numeric>
+#include <string>
+#include <vector>
+
+#include "halfspace/error.hpp"
+#include "halfspace/fft/real_fft.hpp"
+#include "halfspace/operators/fft_influence_operator.hpp"
+#include "operators/operator_test_support.hpp"
+
+namespace halfspace::solvers {
+namespace {
+
+using testing::max_error;
+using testing::random_field;
+
+constexpr double kEStar = 2e9;  // Pa
+// M^-1 K p against p: two FFT round trips of O(1) data, rounding only.
+constexpr double kInverseTolerance = 1e-12;
+
+std::vector<double> mean_free(std::vector<double> values) {
+  const double mean = std::accumulate(values.begin(), values.end(), 0.0) / static_cast<double>(values.size());
+  for (double& v : values) v -= mean;
+  return values;
+}
+
+TEST(FourierPreconditionerTest, InvertsThePeriodicOperatorOnMeanFreeFields) {
+  const Grid grid = Grid::plane(24, 18, 1e-6, 2e-6, Boundary::periodic);
+  FftInfluenceOperator op(grid, kEStar);
+  FourierPreconditioner preconditioner(grid, kEStar);
+  const std::vector<double> pressure = mean_free(random_field(grid.size(), 3));
+  std::vector<double> field(grid.size());
+  op.apply(pressure, field);
+  preconditioner.apply(field, field);  // in place
+  const auto error = max_error(field, pressure);
+  EXPECT_LE(error.relative, kInverseTolerance) << "at cell " << error.index;
+}
+
+TEST(FourierPreconditionerTest, SharedTransformGivesTheSameBits) {
+  for (const Grid& grid : {Grid::plane(24, 18, 1e-6, 2e-6, Boundary::periodic), Grid::line(40, 1e-6, Boundary::periodic)}) {
+    const auto transform = grid.dimension() == 1
+                               ? std::make_shared<RealFft>(grid.nx(), FftPlanning::estimate, FftOutput::overwrite_input)
+                               : std::make_shared<RealFft>(grid.ny(), grid.nx(), FftPlanning::estimate,
+                                                           FftOutput::overwrite_input);
+    FftInfluenceOperator shared_op(grid, kEStar, transform);
+    FourierPreconditioner shared_preconditioner(grid, kEStar, transform);
+    FftInfluenceOperator own_op(grid, kEStar);
+    FourierPreconditioner own_preconditioner(grid, kEStar);
+
+    // Interleaved, as in an iteration: K t, then M^-1 g, then K t again.
+    std::vector<double> shared(grid.size());
+    std::vector<double> own(grid.size());
+    for (unsigned seed = 1; seed <= 3; ++seed) {
+      const std::vector<double> field = random_field(grid.size(), seed);
+      shared_op.apply(field, shared);
+      own_op.apply(field, own);
+      EXPECT_EQ(shared, own) << "K, seed " << seed << ", grid " << grid.shape_string();
+      shared_preconditioner.apply(field, shared);
+      own_preconditioner.apply(field, own);
+      EXPECT_EQ(shared, own) << "M^-1, seed " << seed << ", grid " << grid.shape_string();
+    }
+  }
+}
+
+TEST(FourierPreconditionerTest, SharedTransformMustMatchTheGrid) {
+  const Grid periodic = Grid::plane(16, 12, 1e-6, 1e-6, Boundary::periodic);
+  const auto wrong = std::make_shared<RealFft>(16, 16, FftPlanning::estimate);
+  try {
+    FourierPreconditioner preconditioner(periodic, kEStar, wrong);
+    FAIL() << "expected InputError";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("16x16 but the grid needs 12x16"), std::string::npos) << error.what();
+  }
+  try {
+    FftInfluenceOperator op(periodic, kEStar, wrong);
+    FAIL() << "expected InputError";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("16x16 but the grid needs 12x16"), std::string::npos) << error.what();
+  }
+  const Grid free = Grid::plane(16, 16, 1e-6, 1e-6, Boundary::free);
+  try {
+    FftInfluenceOperator op(free, kEStar, wrong);
+    FAIL() << "expected InputError";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("periodic grid"), std::string::npos) << error.what();
+  }
+}
+
+}  // namespace
+}  // namespace halfspace::solvers
