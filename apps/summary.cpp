@@ -66,9 +66,11 @@ void print_summary(std::FILE* out, const SolveSetup& setup, const SolveResult& r
   row(out, "grid", grid_text(grid));
   row(out, "E*", fmt::format("{:.6g} Pa", setup.e_star));
   row(out, "load", load_text(setup));
+  // Only the Polonsky-Keer solvers ("pk", "pk-fourier") use FFTs.
+  const bool uses_fft = setup.solver.name.starts_with("pk");
   row(out, "solver",
-      fmt::format("{}, {} thread{}, FFT planning {}", result.solver, setup.threads, setup.threads == 1 ? "" : "s",
-                  to_string(setup.solver.fft_planning)));
+      fmt::format("{}, {} thread{}{}", result.solver, setup.threads, setup.threads == 1 ? "" : "s",
+                  uses_fft ? fmt::format(", FFT planning {}", to_string(setup.solver.fft_planning)) : ""));
   row(out, "status", stop_reason(result));
   row(out, "iterations", fmt::format("{}", result.iterations));
   row(out, "residual", fmt::format("{:.3e} (tolerance {:.3e})", result.residual, result.tolerance));
