@@ -102,7 +102,7 @@ const std::array kOptions{
     OptionSpec{"threads", &SolveOptions::threads, Kind::integer, kSolver, "N",
                "threads for loops and FFTs [all cores]"},
     OptionSpec{"fft-planning", &SolveOptions::fft_planning, Kind::text, kSolver, "MODE",
-               "FFTW planning effort: estimate, measure or patient [estimate]"},
+               "FFTW planning effort: estimate, measure or patient [measure]"},
     OptionSpec{"output", &SolveOptions::output, Kind::path, kOutput, "FILE",
                "result file (HDF5), required; replaced if it exists"},
     OptionSpec{"quiet", &SolveOptions::quiet, Kind::flag, kOutput, "",

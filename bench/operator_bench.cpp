@@ -16,6 +16,7 @@
 #include <tuple>
 #include <vector>
 
+#include "halfspace/fft/fft_planning.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
 #include "halfspace/threads.hpp"
@@ -35,6 +36,9 @@ const std::vector<int> kThreadCounts = {1, 2};
 // n/2 (padded to n) share each bare-pair measurement.
 const std::vector<std::size_t> kTransformSizes2d = {256, 512, 1024, 2048};
 const std::vector<std::size_t> kTransformSizes1d = {std::size_t{1} << 12, std::size_t{1} << 16, std::size_t{1} << 20};
+// Periodic 2D sizes also run with FftPlanning::measure, to show what the
+// ESTIMATE default leaves on the table.
+const std::vector<std::size_t> kMeasuredSizes2d = {256, 512, 1024, 2048};
 
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
@@ -103,6 +107,7 @@ struct OperatorKind {
   std::string name;
   int dimension;
   Boundary boundary;
+  FftPlanning planning = FftPlanning::estimate;
 };
 
 Grid make_grid(const OperatorKind& kind, std::size_t n) {
@@ -132,8 +137,12 @@ ApplySetup& apply_setup(const OperatorKind& kind, std::size_t n, int threads) {
   set_threads(threads);  // before the plans are made
   const Grid grid = make_grid(kind, n);
   const auto start = Clock::now();
-  setup->op = std::make_unique<FftInfluenceOperator>(grid, kEStar);
+  setup->op = std::make_unique<FftInfluenceOperator>(grid, kEStar, kind.planning);
   setup->construct_seconds = seconds_since(start);
+  // Measured plans leave wisdom behind that later plans of the same size
+  // would reuse, ESTIMATE ones included: forget it, so the bare pair here and
+  // every later benchmark plan as if it had never been measured.
+  if (kind.planning != FftPlanning::estimate) fftw_forget_wisdom();
   const std::size_t transform_n = grid.periodic() ? n : 2 * n;
   setup->floor = std::make_unique<BareFftPair>(kind.dimension, transform_n, threads);
   setup->pressure.resize(grid.size());
@@ -213,6 +222,12 @@ const bool kRegistered = [] {
   };
   for (std::size_t t : kTransformSizes1d) register_size(1, t, periodic_1d, free_1d);
   for (std::size_t t : kTransformSizes2d) register_size(2, t, periodic_2d, free_2d);
+  const OperatorKind periodic_2d_measure{"periodic_2d_measure", 2, Boundary::periodic, FftPlanning::measure};
+  for (std::size_t t : kMeasuredSizes2d) {
+    configure(benchmark::RegisterBenchmark(
+        ("BM_OperatorApply/" + periodic_2d_measure.name + "/" + std::to_string(t)).c_str(), operator_apply,
+        periodic_2d_measure, t));
+  }
   return true;
 }();
 
