@@ -49,10 +49,10 @@ std::unique_ptr<ContactSolver> make_polonsky_keer(const Grid& grid, double e_sta
     // Both transform the unpadded grid, and Polonsky-Keer applies them one
     // after the other: one transform serves both, which saves a real and a
     // complex array per cell (docs/performance.md).
-    auto transform = grid.dimension() == 1
-                         ? std::make_shared<RealFft>(grid.nx(), settings.fft_planning, FftOutput::overwrite_input)
-                         : std::make_shared<RealFft>(grid.ny(), grid.nx(), settings.fft_planning,
-                                                     FftOutput::overwrite_input);
+    auto transform =
+        grid.dimension() == 1
+            ? std::make_shared<RealFft>(grid.nx(), settings.fft_planning, FftOutput::overwrite_input)
+            : std::make_shared<RealFft>(grid.ny(), grid.nx(), settings.fft_planning, FftOutput::overwrite_input);
     op = std::make_unique<FftInfluenceOperator>(grid, e_star, transform);
     preconditioner = std::make_unique<FourierPreconditioner>(grid, e_star, transform);
   } else {

@@ -88,8 +88,8 @@ TEST(FftWisdomTest, PathFollowsEnvironment) {
     EXPECT_EQ(fft_wisdom_path(), fs::path("/home/user/.cache/halfspace/fftw-wisdom"));
   }
   {
-    const ScopedEnvironment env{{"HALFSPACE_FFTW_WISDOM", std::nullopt}, {"XDG_CACHE_HOME", std::nullopt},
-                                {"HOME", std::nullopt}};
+    const ScopedEnvironment env{
+        {"HALFSPACE_FFTW_WISDOM", std::nullopt}, {"XDG_CACHE_HOME", std::nullopt}, {"HOME", std::nullopt}};
     EXPECT_EQ(fft_wisdom_path(), std::nullopt);
   }
 }

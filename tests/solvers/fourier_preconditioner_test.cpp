@@ -45,11 +45,12 @@ TEST(FourierPreconditionerTest, InvertsThePeriodicOperatorOnMeanFreeFields) {
 }
 
 TEST(FourierPreconditionerTest, SharedTransformGivesTheSameBits) {
-  for (const Grid& grid : {Grid::plane(24, 18, 1e-6, 2e-6, Boundary::periodic), Grid::line(40, 1e-6, Boundary::periodic)}) {
-    const auto transform = grid.dimension() == 1
-                               ? std::make_shared<RealFft>(grid.nx(), FftPlanning::estimate, FftOutput::overwrite_input)
-                               : std::make_shared<RealFft>(grid.ny(), grid.nx(), FftPlanning::estimate,
-                                                           FftOutput::overwrite_input);
+  for (const Grid& grid :
+       {Grid::plane(24, 18, 1e-6, 2e-6, Boundary::periodic), Grid::line(40, 1e-6, Boundary::periodic)}) {
+    const auto transform =
+        grid.dimension() == 1
+            ? std::make_shared<RealFft>(grid.nx(), FftPlanning::estimate, FftOutput::overwrite_input)
+            : std::make_shared<RealFft>(grid.ny(), grid.nx(), FftPlanning::estimate, FftOutput::overwrite_input);
     FftInfluenceOperator shared_op(grid, kEStar, transform);
     FourierPreconditioner shared_preconditioner(grid, kEStar, transform);
     FftInfluenceOperator own_op(grid, kEStar);
