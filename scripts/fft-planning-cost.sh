@@ -12,7 +12,7 @@
 set -eu
 build=${1:-build}
 threads=${2:-1}
-shift 2 2>/dev/null || shift $#
+if [ $# -ge 2 ]; then shift 2; else shift $#; fi
 sizes=${*:-256 512 1024 2048 4096}
 tool="$build/bench/fft_planning_cost"
 [ -x "$tool" ] || { echo "error: $tool not found: build with -DHALFSPACE_BUILD_BENCH=ON" >&2; exit 1; }
