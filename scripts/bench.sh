@@ -35,13 +35,42 @@ cpu_model="$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//' 
   echo
 } | tee -a "$text"
 
-# The flags after the defaults win, so a caller's --benchmark_filter replaces
-# none of ours (there is no default filter: the full set runs in ~5 minutes
-# on 2 quiet cores).
+# Busy CPU time of the whole machine (/proc/stat, in clock ticks) and of this
+# shell's finished children (bash `times`): their difference over the run is
+# what other processes took while the benchmark ran.
+machine_busy_ticks() { awk '/^cpu /{print $2 + $3 + $4 + $7 + $8 + $9}' /proc/stat; }
+times_file="$(mktemp)"
+trap 'rm -f "$times_file"' EXIT
+# Sets children_cpu (user + system seconds). `times` runs in this shell: in a
+# $(...) subshell it would not see this shell's children.
+measure_children_cpu() {
+  times >"$times_file"
+  children_cpu="$(tail -n 1 "$times_file" |
+    awk '{ n = 0; for (i = 1; i <= 2; i++) { split($i, t, /[ms]/); n += 60 * t[1] + t[2] } print n }')"
+}
+ticks_per_second="$(getconf CLK_TCK)"
+busy_before="$(machine_busy_ticks)"
+measure_children_cpu
+own_before="$children_cpu"
+wall_before="$(date +%s.%N)"
+
+# Flags given to this script come after the defaults, so they win. There is
+# no default filter: the full set runs in about 2.5 minutes on 2 quiet cores.
 "$build/bench/halfspace_bench" \
   --benchmark_out="$json" --benchmark_out_format=json \
   --benchmark_counters_tabular=true --benchmark_color=false \
   "$@" 2>&1 | tee -a "$text"
 
-echo | tee -a "$text"
-echo "load:     $(cut -d' ' -f1-3 /proc/loadavg) (1, 5, 15 min) after the run" | tee -a "$text"
+busy_after="$(machine_busy_ticks)"
+measure_children_cpu
+own_after="$children_cpu"
+wall_after="$(date +%s.%N)"
+{
+  echo
+  echo "load:     $(cut -d' ' -f1-3 /proc/loadavg) (1, 5, 15 min) after the run (includes the run itself)"
+  awk -v b0="$busy_before" -v b1="$busy_after" -v hz="$ticks_per_second" -v o0="$own_before" -v o1="$own_after" \
+    -v w0="$wall_before" -v w1="$wall_after" -v cores="$(nproc)" 'BEGIN {
+      wall = w1 - w0; busy = (b1 - b0) / hz; own = o1 - o0; other = busy - own; if (other < 0) other = 0
+      printf "cpu:      %.1f s wall; benchmark %.1f CPU-s, other processes %.1f CPU-s (%.0f%% of %d cores)\n",
+             wall, own, other, 100 * other / (wall * cores), cores }'
+} | tee -a "$text"
