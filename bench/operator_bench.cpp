@@ -1,6 +1,6 @@
-// One application of FftInfluenceOperator against its floor: a bare FFTW r2c + c2r
-// pair of the same transform size (2n per axis for free grids), same thread count,
-// FFTW_ESTIMATE for both. Also holds main() of the halfspace_bench program.
+// One application of FftInfluenceOperator against its floor, a bare FFTW r2c + c2r
+// pair of the same transform size (2n per axis for free grids) and thread count,
+// both FFTW_ESTIMATE (plus a FFTW_MEASURE operator). Holds halfspace_bench's main().
 #include <fftw3.h>
 
 #include <benchmark/benchmark.h>
@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <exception>
 #include <memory>
 #include <random>
@@ -235,13 +236,18 @@ const bool kRegistered = [] {
 }  // namespace halfspace
 
 int main(int argc, char** argv) {
+  // Measured plans would otherwise load and save the user's wisdom file
+  // (halfspace/fft/fft_wisdom.hpp): planning time would depend on earlier
+  // runs, and a benchmark should leave no cache behind.
+  setenv("HALFSPACE_FFTW_WISDOM", "off", 1);
   // FFTW's thread support must be initialised before the first plan; the call
   // is idempotent, so the library may make it again.
   fftw_init_threads();
   benchmark::AddCustomContext("halfspace_version", halfspace::kVersion);
   benchmark::AddCustomContext("halfspace_git", halfspace::kGitHash);
   benchmark::AddCustomContext("fftw_version", fftw_version);
-  benchmark::AddCustomContext("fft_planning", "FFTW_ESTIMATE (operator default and bare pair)");
+  benchmark::AddCustomContext("fft_planning",
+                              "FFTW_ESTIMATE (operator default and bare pair); *_measure rows: FFTW_MEASURE, no wisdom file");
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();

@@ -26,7 +26,7 @@
 #include "halfspace/grid.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
 #include "halfspace/solvers/fourier_preconditioner.hpp"
-#include "halfspace/solvers/polonsky_keer.hpp"
+#include "halfspace/solvers/solver_factory.hpp"
 #include "halfspace/threads.hpp"
 
 namespace halfspace {
@@ -124,34 +124,33 @@ RoughSurface self_affine_surface(std::size_t n) {
 }
 
 struct SolveCase {
-  std::string name;
-  bool rough;           // rough periodic surface, else Hertz sphere on a free grid
-  bool preconditioned;  // pk-fourier, else plain pk
+  std::string solver;  // a solvers::solver_names() entry: "pk" or "pk-fourier"
+  std::string shape;   // "hertz_free_2d" or "rough_periodic_2d"
 };
 
-// Kept between Google Benchmark's calls of one benchmark: the operator, the
-// solver with its workspace, and the initial gap. One slot at a time. Built
-// like solvers::make_solver builds "pk" and "pk-fourier", but with the
-// operator and preconditioner in reach so they can be timed alone.
+// Kept between Google Benchmark's calls of one benchmark: the solver exactly
+// as solvers::make_solver builds it for the CLI (ESTIMATE planning), the
+// initial gap, and a separate operator and preconditioner of the same kind,
+// only to time one product of each alone. One slot at a time.
 struct SolveSetup {
-  std::tuple<std::string, std::size_t, int> key;
+  std::tuple<std::string, std::string, std::size_t, int> key;
   std::unique_ptr<Grid> grid;
+  std::unique_ptr<ContactSolver> solver;
   std::unique_ptr<FftInfluenceOperator> op;
   std::unique_ptr<solvers::FourierPreconditioner> preconditioner;
-  std::unique_ptr<solvers::PolonskyKeer> solver;
   Eigen::ArrayXd initial_gap;
   Loading loading;
 };
 
 SolveSetup& solve_setup(const SolveCase& solve_case, std::size_t n, int threads) {
   static std::unique_ptr<SolveSetup> slot;
-  const auto key = std::make_tuple(solve_case.name, n, threads);
+  const auto key = std::make_tuple(solve_case.solver, solve_case.shape, n, threads);
   if (slot && slot->key == key) return *slot;
   slot.reset();
   auto setup = std::make_unique<SolveSetup>();
   setup->key = key;
   set_threads(threads);  // before the operator makes its plans
-  if (solve_case.rough) {
+  if (solve_case.shape == "rough_periodic_2d") {
     const double dx = kBoxSize / static_cast<double>(n);
     setup->grid = std::make_unique<Grid>(Grid::plane(n, n, dx, dx, Boundary::periodic));
     const RoughSurface surface = self_affine_surface(n);
@@ -167,13 +166,15 @@ SolveSetup& solve_setup(const SolveCase& solve_case, std::size_t n, int threads)
     setup->initial_gap = geometry::initial_gap_from_heights(geometry::make_surface_heights(*setup->grid, sphere));
     setup->loading = Loading::force(kForce);
   }
+  solvers::SolverSettings settings;
+  settings.name = solve_case.solver;
+  settings.tolerance = kTolerance;
+  settings.fft_planning = FftPlanning::estimate;
+  setup->solver = solvers::make_solver(*setup->grid, kEStar, settings);
   setup->op = std::make_unique<FftInfluenceOperator>(*setup->grid, kEStar);
-  if (solve_case.preconditioned) {
+  if (solve_case.solver == "pk-fourier") {
     setup->preconditioner = std::make_unique<solvers::FourierPreconditioner>(*setup->grid, kEStar);
   }
-  solvers::PolonskyKeerOptions options;
-  options.tolerance = kTolerance;
-  setup->solver = std::make_unique<solvers::PolonskyKeer>(*setup->op, options, setup->preconditioner.get());
   slot = std::move(setup);
   return *slot;
 }
@@ -236,20 +237,20 @@ void solve(benchmark::State& state, const SolveCase& solve_case, std::size_t n) 
   if (!result.converged()) state.SetLabel(result.message);
 }
 
-// Names: BM_Solve/<solver>/<case>/<n>/threads:<t>.
+// Names: BM_Solve/<solver>/<shape>/<n>/threads:<t>.
 const bool kRegistered = [] {
   const auto add = [](const SolveCase& c, std::size_t n) {
-    benchmark::RegisterBenchmark(("BM_Solve/" + c.name + "/" + std::to_string(n)).c_str(), solve, c, n)
+    const std::string name = "BM_Solve/" + c.solver + "/" + c.shape + "/" + std::to_string(n);
+    benchmark::RegisterBenchmark(name.c_str(), solve, c, n)
         ->ArgName("threads")
         ->Arg(1)
         ->Arg(2)
         ->UseRealTime()
         ->Unit(benchmark::kMillisecond);
   };
-  for (const bool preconditioned : {false, true}) {
-    const std::string solver = preconditioned ? "pk-fourier/" : "pk/";
-    for (std::size_t n : {128, 256, 512}) add({solver + "hertz_free_2d", false, preconditioned}, n);
-    for (std::size_t n : {256, 512, 1024}) add({solver + "rough_periodic_2d", true, preconditioned}, n);
+  for (const std::string solver : {"pk", "pk-fourier"}) {
+    for (std::size_t n : {128, 256, 512}) add({solver, "hertz_free_2d"}, n);
+    for (std::size_t n : {256, 512, 1024}) add({solver, "rough_periodic_2d"}, n);
   }
   return true;
 }();

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# Builds halfspace_bench (Release) and runs it. Appends machine, commit and the
-# text table to bench/results/<date>-<shortcommit>.txt; the JSON goes to a new
-# file beside it. Extra arguments go to halfspace_bench (e.g. --benchmark_filter=...).
+# Builds halfspace_bench (Release) and runs it: machine, commit and table appended to
+# bench/results/<date>-<shortcommit>.txt, the JSON to a new file beside it. Extra
+# arguments go to halfspace_bench (e.g. --benchmark_filter=...).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${HALFSPACE_BENCH_BUILD_DIR:-$root/build-bench}"
@@ -54,10 +54,14 @@ measure_children_cpu
 own_before="$children_cpu"
 wall_before="$(date +%s.%N)"
 
-# Flags given to this script come after the defaults, so they win. There is
-# no default filter: the full set runs in about 2.5 minutes on 2 quiet cores.
+# Flags given to this script come after the defaults, so they win. Three
+# repetitions, because on this 2-vCPU virtual machine two-thread timings move
+# by up to 1.5x between minutes; the table shows their mean, median, stddev
+# and cv, the JSON every repetition. No default filter: the full set takes
+# about 7 minutes on 2 quiet cores (--benchmark_repetitions=1: about 2.5).
 "$build/bench/halfspace_bench" \
   --benchmark_out="$json" --benchmark_out_format=json \
+  --benchmark_repetitions=3 --benchmark_display_aggregates_only=true \
   --benchmark_counters_tabular=true --benchmark_color=false \
   "$@" 2>&1 | tee -a "$text"
 
