@@ -19,6 +19,7 @@
 
 #include "halfspace/version.hpp"
 #include "io/hdf5_test_support.hpp"
+#include "support/program_run.hpp"
 
 namespace halfspace {
 namespace {
@@ -31,57 +32,11 @@ constexpr int kExitOk = 0;
 constexpr int kExitInputError = 1;
 constexpr int kExitNotConverged = 2;
 
-// Appends `text` single-quoted for /bin/sh (' itself becomes '\'').
-void append_quoted(std::string& command, const std::string& text) {
-  command.push_back('\'');
-  for (char c : text) {
-    if (c == '\'') {
-      command.append("'\\''");
-    } else {
-      command.push_back(c);
-    }
-  }
-  command.push_back('\'');
-}
+using testing::ProgramRun;
 
-std::string read_file(const fs::path& path) {
-  std::ifstream in(path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-struct ProgramRun {
-  int exit_code = -1;
-  std::string out;  // stdout
-  std::string err;  // stderr
-};
-
-// Runs the installed-layout executable with `arguments`, from `directory`.
+// Runs the executable with `arguments`, from `directory`.
 ProgramRun run(const std::vector<std::string>& arguments, const TempDir& directory) {
-  const fs::path err_file = directory / "stderr.txt";
-  std::string command = "cd ";
-  append_quoted(command, directory.path().string());
-  command.append(" && ");
-  append_quoted(command, HALFSPACE_EXECUTABLE);
-  for (const std::string& argument : arguments) {
-    command.push_back(' ');
-    append_quoted(command, argument);
-  }
-  command.append(" 2> ");
-  append_quoted(command, err_file.string());
-
-  ProgramRun result;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (pipe == nullptr) return result;
-  std::array<char, 4096> buffer{};
-  std::size_t count = 0;
-  while ((count = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.out.append(buffer.data(), count);
-  const int status = ::pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  result.err = read_file(err_file);
-  fs::remove(err_file);
-  return result;
+  return testing::run_program(arguments, directory.path());
 }
 
 // Options of a small Hertz problem (32 x 32, converges in ~20 iterations).

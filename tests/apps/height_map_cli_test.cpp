@@ -14,6 +14,7 @@
 
 #include "io/hdf5_test_support.hpp"
 #include "io/reader_test_support.hpp"
+#include "support/program_run.hpp"
 
 namespace halfspace {
 namespace {
@@ -28,48 +29,10 @@ constexpr int kExitInputError = 1;
 // the solver's tolerance (1e-10 relative residual), a little amplified.
 constexpr double kPaddingPressureTolerance = 1e-6;
 
-struct ProgramRun {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string quoted(const std::string& text) {
-  std::string result(1, '\'');
-  for (char c : text) {
-    if (c == '\'') {
-      result.append("'\\''");
-    } else {
-      result.push_back(c);
-    }
-  }
-  result.push_back('\'');
-  return result;
-}
+using testing::ProgramRun;
 
 ProgramRun run(const std::vector<std::string>& arguments, const TempDir& dir) {
-  const fs::path err_file = dir / "stderr.txt";
-  std::string command = "cd ";
-  command += quoted(dir.path().string());
-  command += " && ";
-  command += quoted(HALFSPACE_EXECUTABLE);
-  for (const std::string& argument : arguments) {
-    command += ' ';
-    command += quoted(argument);
-  }
-  command += " 2> ";
-  command += quoted(err_file.string());
-  ProgramRun result;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (pipe == nullptr) return result;
-  std::array<char, 4096> buffer{};
-  std::size_t count = 0;
-  while ((count = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.out.append(buffer.data(), count);
-  const int status = ::pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  result.err = test::read_bytes(err_file);
-  fs::remove(err_file);
-  return result;
+  return testing::run_program(arguments, dir.path());
 }
 
 // solve with a soft material and a small force: a few contact spots on the
