@@ -151,6 +151,22 @@ void RealFft::backward() {
   fftw_execute(backward_plan_);
 }
 
+bool RealFft::forward_from(std::span<const double> values) {
+  assert(forward_plan_ != nullptr);
+  // The plan was made with FFTW_PRESERVE_INPUT, so the const_cast is never written through.
+  double* data = const_cast<double*>(values.data());
+  if (values.size() != real_size() || fftw_alignment_of(data) != fftw_alignment_of(input_)) return false;
+  fftw_execute_dft_r2c(forward_plan_, data, as_fftw(spectrum_));
+  return true;
+}
+
+bool RealFft::backward_into(std::span<double> values) {
+  assert(backward_plan_ != nullptr);
+  if (values.size() != real_size() || fftw_alignment_of(values.data()) != fftw_alignment_of(output_)) return false;
+  fftw_execute_dft_c2r(backward_plan_, as_fftw(spectrum_), values.data());
+  return true;
+}
+
 void RealFft::release() noexcept {
   if (input_ == nullptr && output_ == nullptr && spectrum_ == nullptr && forward_plan_ == nullptr &&
       backward_plan_ == nullptr) {

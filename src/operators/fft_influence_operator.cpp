@@ -192,20 +192,25 @@ void FftInfluenceOperator::apply(std::span<const double> pressure, std::span<dou
   assert(pressure.data() + pressure.size() <= displacement.data() ||
          displacement.data() + displacement.size() <= pressure.data());
 
-  // Rows of the grid sit at stride fft.cols(): nx (periodic) or 2nx (free);
-  // in the free case only this first block is written, the padding stays zero.
+  // Periodic grids transform the caller's arrays directly when FFTW allows
+  // it. Otherwise rows of the grid sit at stride fft.cols(): nx (periodic) or
+  // 2nx (free); in the free case only this first block is written, the
+  // padding stays zero.
   const std::size_t stride = m.fft.cols();
-  std::span<double> input = m.fft.input();
-  copy_block(ny, nx, [&](std::size_t j, std::size_t i) { input[j * stride + i] = pressure[j * nx + i]; });
-
-  m.fft.forward();
+  const bool direct = m.grid.periodic();
+  if (!(direct && m.fft.forward_from(pressure))) {
+    std::span<double> input = m.fft.input();
+    copy_block(ny, nx, [&](std::size_t j, std::size_t i) { input[j * stride + i] = pressure[j * nx + i]; });
+    m.fft.forward();
+  }
   std::span<std::complex<double>> spectrum = m.fft.spectrum();
   const std::vector<double>& kernel = m.kernel;
   linalg::for_each_index(spectrum.size(), [&](std::size_t k) { spectrum[k] *= kernel[k]; });
-  m.fft.backward();
-
-  std::span<const double> output = m.fft.output();
-  copy_block(ny, nx, [&](std::size_t j, std::size_t i) { displacement[j * nx + i] = output[j * stride + i]; });
+  if (!(direct && m.fft.backward_into(displacement))) {
+    m.fft.backward();
+    std::span<const double> output = m.fft.output();
+    copy_block(ny, nx, [&](std::size_t j, std::size_t i) { displacement[j * nx + i] = output[j * stride + i]; });
+  }
 }
 
 }  // namespace halfspace

@@ -79,16 +79,21 @@ void FourierPreconditioner::apply(std::span<const double> in, std::span<double> 
   Impl& m = *impl_;
   const std::size_t n = m.grid.size();
   assert(in.size() == n && out.size() == n);
-  // `in` is copied before `out` is written, so the two may alias.
-  std::span<double> input = m.fft.input();
-  linalg::for_each_index(n, [&](std::size_t i) { input[i] = in[i]; });
-  m.fft.forward();
+  // `in` is read (transformed directly or copied) before `out` is written,
+  // so the two may alias.
+  if (!m.fft.forward_from(in)) {
+    std::span<double> input = m.fft.input();
+    linalg::for_each_index(n, [&](std::size_t i) { input[i] = in[i]; });
+    m.fft.forward();
+  }
   std::span<std::complex<double>> spectrum = m.fft.spectrum();
   const std::vector<double>& symbol = m.symbol;
   linalg::for_each_index(spectrum.size(), [&](std::size_t k) { spectrum[k] *= symbol[k]; });
-  m.fft.backward();
-  std::span<const double> output = m.fft.output();
-  linalg::for_each_index(n, [&](std::size_t i) { out[i] = output[i]; });
+  if (!m.fft.backward_into(out)) {
+    m.fft.backward();
+    std::span<const double> output = m.fft.output();
+    linalg::for_each_index(n, [&](std::size_t i) { out[i] = output[i]; });
+  }
 }
 
 }  // namespace halfspace::solvers

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -22,6 +23,9 @@ using linalg::sums;
 // The displacement is updated incrementally between exact products K p; an
 // exact one every this many updates keeps rounding from accumulating.
 constexpr int kUpdatesBetweenExactProducts = 50;
+
+// Powell's restart threshold (ConjugacyRestart::powell).
+constexpr double kPowellRestart = 0.2;
 
 struct Problem {
   std::span<const double> initial_gap;
@@ -139,34 +143,66 @@ SolveResult PolonskyKeer::solve(std::span<const double> initial_gap, const Loadi
   double residual = 0.0;
   double contact_cells = 0.0;
   double gap_norm = 0.0;
+  double gap_along_direction = 0.0;  // sum over C of g t_old (restart tests)
+  const bool powell_restart = options_.restart == ConjugacyRestart::powell;
+
+  // Work that steps 6-9 leave to the next evaluation, which does it in its
+  // first pass rather than in passes of its own: the load-restoring scale of
+  // p and u, and adding K c (held in g) to u.
+  double pending_scale = 1.0;
+  bool pending_correction = false;
 
   // u = K p computed afresh (rather than updated, see steps 6-8).
   int updates_since_exact = 0;
   auto compute_displacement = [&] {
+    if (pending_scale != 1.0) {
+      const double scale = pending_scale;
+      for_each_index(n, [&](std::size_t i) { p[i] *= scale; });
+    }
+    pending_scale = 1.0;
+    pending_correction = false;
     op_.apply(pressure_view, displacement_view);
     ++result.operator_applications;
     updates_since_exact = 0;
   };
-  // Step 1: gap of the current pressure, its approach under load control,
-  // the residual (see the header) and G = sum over C of g^2.
+  // Step 1: the pending work, then the gap of the current pressure, its
+  // approach under load control, the residual (see the header) and G = sum
+  // over C of g^2. With a preconditioner, r receives g restricted to C.
   auto evaluate = [&] {
-    const auto [contact_gap_sum, contact_count] = sums<2>(n, [&](std::size_t i) {
-      return p[i] > 0.0 ? std::array<double, 2>{initial_gap[i] + u[i], 1.0} : std::array<double, 2>{0.0, 0.0};
+    const double scale = pending_scale;
+    const bool add = pending_correction;
+    pending_scale = 1.0;
+    pending_correction = false;
+    const auto settled = linalg::sums_and_range<2>(n, [&](std::size_t i) {
+      double ui = u[i];
+      double pi = p[i];
+      if (add) ui += g[i];
+      if (scale != 1.0) {
+        ui *= scale;
+        pi *= scale;
+      }
+      if (add || scale != 1.0) {
+        u[i] = ui;
+        p[i] = pi;
+      }
+      return std::pair{pi > 0.0 ? std::array<double, 2>{initial_gap[i] + ui, 1.0} : std::array<double, 2>{0.0, 0.0},
+                       ui};
     });
-    contact_cells = contact_count;
+    contact_cells = settled.sums[1];
     if (problem.load_controlled) {
       // The approach makes the mean gap on the contact set vanish.
-      approach = contact_gap_sum / contact_cells;
+      approach = settled.sums[0] / contact_cells;
     }
-    const double u_max = linalg::max_of(n, [&](std::size_t i) { return u[i]; });
-    const double u_min = linalg::min_of(n, [&](std::size_t i) { return u[i]; });
-    const auto [weighted_gap, overlap, pressure_sum, contact_gap_norm] = sums<4>(n, [&](std::size_t i) {
+    const bool restrict_to_contact = preconditioner_ != nullptr;
+    const auto [weighted_gap, overlap, pressure_sum, contact_gap_norm, gap_along] = sums<5>(n, [&](std::size_t i) {
       g[i] = initial_gap[i] + u[i] - approach;
-      return std::array<double, 4>{p[i] * std::abs(g[i]), std::max(-g[i], 0.0), p[i],
-                                   p[i] > 0.0 ? g[i] * g[i] : 0.0};
+      if (restrict_to_contact) r[i] = p[i] > 0.0 ? g[i] : 0.0;
+      return std::array<double, 5>{p[i] * std::abs(g[i]), std::max(-g[i], 0.0), p[i],
+                                   p[i] > 0.0 ? g[i] * g[i] : 0.0, p[i] > 0.0 ? g[i] * t[i] : 0.0};
     });
     gap_norm = contact_gap_norm;
-    const double gap_scale = std::max(problem.initial_gap_range + (u_max - u_min), 0.0);
+    gap_along_direction = gap_along;
+    const double gap_scale = std::max(problem.initial_gap_range + (settled.max - settled.min), 0.0);
     const double numerator = (pressure_sum > 0.0 ? weighted_gap * cells / pressure_sum : 0.0) + overlap;
     residual = numerator == 0.0 ? 0.0 : numerator / (cells * gap_scale);
   };
@@ -208,28 +244,28 @@ SolveResult PolonskyKeer::solve(std::span<const double> initial_gap, const Loadi
       continue;
     }
 
-    // Step 2 with a preconditioner: z = M^-1 g on C, mean-free on C under
-    // load control like g itself; G = sum over C of g z. z lives in r, which
-    // is free until step 4.
+    // Step 2 with a preconditioner: z = M^-1 g on C (g on C is already in
+    // r, which is free until step 4), mean-free on C under load control like
+    // g itself; G = sum over C of g z.
     double search_norm = gap_norm;
     double* z = g;
+    double z_mean = 0.0;
     if (preconditioner_) {
       z = r;
-      for_each_index(n, [&](std::size_t i) { z[i] = p[i] > 0.0 ? g[i] : 0.0; });
       preconditioner_->apply({z, n}, {z, n});
       ++result.preconditioner_applications;
       const auto [z_sum, gz] = sums<2>(n, [&](std::size_t i) {
         return p[i] > 0.0 ? std::array<double, 2>{z[i], g[i] * z[i]} : std::array<double, 2>{0.0, 0.0};
       });
-      const double z_mean = problem.load_controlled ? z_sum / contact_cells : 0.0;
-      for_each_index(n, [&](std::size_t i) { z[i] -= z_mean; });
+      z_mean = problem.load_controlled ? z_sum / contact_cells : 0.0;
       // sum over C of g is zero under load control, so subtracting z_mean leaves g.z unchanged.
       search_norm = gz;
     }
 
-    // Step 3: conjugate direction on the contact set.
+    // Step 3: conjugate direction on the contact set, unless restarting.
+    if (powell_restart && !(std::abs(gap_along_direction) <= kPowellRestart * search_norm)) conjugate = false;
     const double beta = conjugate ? search_norm / previous_norm : 0.0;
-    for_each_index(n, [&](std::size_t i) { t[i] = p[i] > 0.0 ? z[i] + beta * t[i] : 0.0; });
+    for_each_index(n, [&](std::size_t i) { t[i] = p[i] > 0.0 ? (z[i] - z_mean) + beta * t[i] : 0.0; });
     previous_norm = search_norm;
 
     // Step 4: its image r = K t, mean-corrected on C under load control.
@@ -242,7 +278,10 @@ SolveResult PolonskyKeer::solve(std::span<const double> initial_gap, const Loadi
     const double r_mean = problem.load_controlled ? r_sum / contact_cells : 0.0;
     const double curvature = rt - r_mean * t_sum;
 
-    // Step 5: step length.
+    // Step 5: step length, the exact minimiser along t on the current contact
+    // set. After a restart (t = z on C) it is positive; a conjugate direction
+    // can give a negative one, which is still a valid step, but then no cell
+    // enters (its pressure -tau g would be negative) and the next step restarts.
     const double tau = gt / curvature;
     if (!(curvature > 0.0) || !std::isfinite(tau)) {
       result.status = SolveStatus::breakdown;
@@ -251,16 +290,16 @@ SolveResult PolonskyKeer::solve(std::span<const double> initial_gap, const Loadi
     }
 
     // Steps 6-8: move along t, clip to p >= 0, and let cells that are out of
-    // contact but interpenetrate (g < 0) enter with pressure -tau g; any such
-    // entry resets the conjugacy. The displacement follows without a new
+    // contact but interpenetrate (g < 0) enter with pressure -tau g; under
+    // ConjugacyRestart::on_entry any such entry resets the conjugacy. The displacement follows without a new
     // product: K(p - tau t) = u - tau r, plus K c for the correction c that
     // clipping and entries add, which is zero once the contact set settles.
-    // r is not needed after this pass, so it holds c.
+    // r is not needed after this pass, so it receives c.
     const auto [new_pressure_sum, entered, corrected] = sums<3>(n, [&](std::size_t i) {
       const double moved = p[i] - tau * t[i];
       double pi = std::max(moved, 0.0);
       double entry = 0.0;
-      if (pi == 0.0 && g[i] < 0.0) {
+      if (pi == 0.0 && g[i] < 0.0 && tau > 0.0) {
         pi = -tau * g[i];
         entry = 1.0;
       }
@@ -269,23 +308,18 @@ SolveResult PolonskyKeer::solve(std::span<const double> initial_gap, const Loadi
       r[i] = pi - moved;
       return std::array<double, 3>{pi, entry, r[i] != 0.0 ? 1.0 : 0.0};
     });
-    conjugate = entered == 0.0;
+    conjugate = (powell_restart || entered == 0.0) && tau > 0.0;
     if (corrected > 0.0) {
-      // g is recomputed from u in step 1, so it can receive K c.
+      // g is recomputed from u in step 1, so it can hold K c until then.
       op_.apply({r, n}, {g, n});
       ++result.operator_applications;
-      for_each_index(n, [&](std::size_t i) { u[i] += g[i]; });
+      pending_correction = true;
     }
     ++updates_since_exact;
 
-    // Step 9: restore the load (K is linear: u scales with p).
-    if (problem.load_controlled) {
-      const double scale = problem.target_force / (problem.cell_area * new_pressure_sum);
-      for_each_index(n, [&](std::size_t i) {
-        p[i] *= scale;
-        u[i] *= scale;
-      });
-    }
+    // Step 9: restore the load (K is linear: u scales with p), in the next
+    // evaluation's first pass.
+    if (problem.load_controlled) pending_scale = problem.target_force / (problem.cell_area * new_pressure_sum);
   }
 
   // Summary of the final iterate, whose displacement and gap are current.

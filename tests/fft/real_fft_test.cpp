@@ -8,6 +8,7 @@
 #include <complex>
 #include <numbers>
 #include <random>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -98,6 +99,33 @@ TEST(RealFftTest, BackwardCanOverwriteTheInput) {
   const double n = static_cast<double>(fft.real_size());
   for (std::size_t i = 0; i < x.size(); ++i) {
     EXPECT_NEAR(fft.input()[i] / n, x[i], kTransformTolerance) << "at " << i;
+  }
+}
+
+// The caller's arrays give the same bits as the owned buffers, and an array
+// FFTW cannot use (misaligned, wrong length) is refused without being touched.
+TEST(RealFftTest, TransformsTheCallersArrays) {
+  for (const FftOutput output : {FftOutput::separate, FftOutput::overwrite_input}) {
+    RealFft fft(6, 10, FftPlanning::estimate, output);
+    const std::vector<double> x = random_values(fft.real_size(), 9);
+    std::copy(x.begin(), x.end(), fft.input().begin());
+    fft.forward();
+    const std::vector<std::complex<double>> owned_spectrum(fft.spectrum().begin(), fft.spectrum().end());
+    fft.backward();
+    const std::vector<double> owned_output(fft.output().begin(), fft.output().end());
+
+    ASSERT_TRUE(fft.forward_from(x));
+    for (std::size_t k = 0; k < owned_spectrum.size(); ++k) ASSERT_EQ(fft.spectrum()[k], owned_spectrum[k]) << k;
+    std::vector<double> result(fft.real_size(), 0.0);
+    ASSERT_TRUE(fft.backward_into(result));
+    for (std::size_t i = 0; i < result.size(); ++i) ASSERT_EQ(result[i], owned_output[i]) << i;
+
+    // One double past an aligned start is misaligned for FFTW's SIMD codelets.
+    std::vector<double> shifted(fft.real_size() + 1, 7.0);
+    EXPECT_FALSE(fft.backward_into(std::span<double>(shifted).subspan(1)));
+    EXPECT_FALSE(fft.forward_from(std::span<const double>(shifted).subspan(1)));
+    EXPECT_FALSE(fft.backward_into(std::span<double>(shifted).first(fft.real_size() - 1)));
+    for (const double v : shifted) ASSERT_EQ(v, 7.0);
   }
 }
 

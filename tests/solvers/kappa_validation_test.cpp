@@ -92,6 +92,8 @@ TEST(KappaValidationTest, ContactAreaIsProportionalToLoadWithLiteratureKappa) {
                   area, area / x, static_cast<long long>(step.statistics.clusters()), step.result.iterations);
       ratio_sums[k] += area / x;
       EXPECT_LT(area, 0.12) << "still the small-load regime";
+      EXPECT_GE(step.result.pressure.minCoeff(), 0.0) << "seed " << seed << " step " << k;
+      EXPECT_GE(step.result.residual, 0.0) << "seed " << seed << " step " << k;
       seed_ax += area * x;
       seed_xx += x * x;
     }

@@ -123,7 +123,7 @@ TEST_P(PolonskyKeerControlTest, RefusesInvalidLoadingAndOptions) {
   EXPECT_THROW(solvers::PolonskyKeer(op, bad), InputError);
 }
 
-INSTANTIATE_TEST_SUITE_P(Variants, PolonskyKeerControlTest, ::testing::Values(PkVariant::plain, PkVariant::fourier),
+INSTANTIATE_TEST_SUITE_P(Variants, PolonskyKeerControlTest, testing::all_pk_variants(),
                          testing::variant_name);
 
 }  // namespace

@@ -126,7 +126,7 @@ TEST_P(PolonskyKeerHertzTest, ReproducesHertzLineContactAndConvergesUnderRefinem
   EXPECT_LT(fine.profile_error, coarse.profile_error);
 }
 
-INSTANTIATE_TEST_SUITE_P(Variants, PolonskyKeerHertzTest, ::testing::Values(PkVariant::plain, PkVariant::fourier),
+INSTANTIATE_TEST_SUITE_P(Variants, PolonskyKeerHertzTest, testing::all_pk_variants(),
                          testing::variant_name);
 
 }  // namespace

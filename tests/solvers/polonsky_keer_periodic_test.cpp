@@ -94,7 +94,7 @@ TEST_P(PolonskyKeerPeriodicTest, TwoDimensionalWaveIsInFullContactAtAndAboveCrit
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Variants, PolonskyKeerPeriodicTest, ::testing::Values(PkVariant::plain, PkVariant::fourier),
+INSTANTIATE_TEST_SUITE_P(Variants, PolonskyKeerPeriodicTest, testing::all_pk_variants(),
                          testing::variant_name);
 
 }  // namespace

@@ -1,5 +1,6 @@
-// Polonsky-Keer in both variants (plain and Fourier-preconditioned), so every
-// validation test runs on each; parameterised tests take a PkVariant.
+// Polonsky-Keer in its three variants (plain, Fourier-preconditioned, and
+// Fourier-preconditioned from coarse-grid solutions), so every validation test
+// runs on each; parameterised tests take a PkVariant.
 #pragma once
 
 #include <memory>
@@ -7,35 +8,84 @@
 
 #include <gtest/gtest.h>
 
+#include "halfspace/operators/fft_influence_operator.hpp"
 #include "halfspace/operators/influence_operator.hpp"
 #include "halfspace/solvers/fourier_preconditioner.hpp"
+#include "halfspace/solvers/multilevel_solver.hpp"
 #include "halfspace/solvers/polonsky_keer.hpp"
 
 namespace halfspace::testing {
 
-enum class PkVariant { plain, fourier };
+enum class PkVariant { plain, fourier, multilevel };
 
 inline std::string variant_name(const ::testing::TestParamInfo<PkVariant>& info) {
-  return info.param == PkVariant::plain ? "Plain" : "FourierPreconditioned";
+  switch (info.param) {
+    case PkVariant::plain: return "Plain";
+    case PkVariant::fourier: return "FourierPreconditioned";
+    case PkVariant::multilevel: return "Multilevel";
+  }
+  return "Unknown";
 }
 
-// The solver of `variant` on `op`, owning its preconditioner.
-class PkSolver {
+inline auto all_pk_variants() {
+  return ::testing::Values(PkVariant::plain, PkVariant::fourier, PkVariant::multilevel);
+}
+
+// Polonsky-Keer on an operator it may own, with the preconditioner it owns.
+class OwningPk final : public ContactSolver {
  public:
-  PkSolver(InfluenceOperator& op, double e_star, PkVariant variant, solvers::PolonskyKeerOptions options = {})
-      : preconditioner_(variant == PkVariant::fourier
-                            ? std::make_unique<solvers::FourierPreconditioner>(op.grid(), e_star)
-                            : nullptr),
+  OwningPk(std::unique_ptr<InfluenceOperator> owned, InfluenceOperator& op, double e_star, bool preconditioned,
+           solvers::PolonskyKeerOptions options)
+      : owned_(std::move(owned)),
+        preconditioner_(preconditioned ? std::make_unique<solvers::FourierPreconditioner>(op.grid(), e_star) : nullptr),
         solver_(op, std::move(options), preconditioner_.get()) {}
 
+  std::string_view name() const override { return solver_.name(); }
   SolveResult solve(std::span<const double> initial_gap, const Loading& loading,
-                    std::span<const double> initial_pressure = {}) {
+                    std::span<const double> initial_pressure = {}) override {
     return solver_.solve(initial_gap, loading, initial_pressure);
   }
 
  private:
+  std::unique_ptr<InfluenceOperator> owned_;
   std::unique_ptr<solvers::FourierPreconditioner> preconditioner_;
   solvers::PolonskyKeer solver_;
+};
+
+// The solver of `variant` on `op` (the multilevel variant's fine level; its
+// coarse levels get FFT operators of their own).
+class PkSolver {
+ public:
+  PkSolver(InfluenceOperator& op, double e_star, PkVariant variant, solvers::PolonskyKeerOptions options = {}) {
+    // The restart rules of the factory's "pk", "pk-fourier" and "pk-multilevel".
+    if (variant == PkVariant::plain) {
+      solver_ = std::make_unique<OwningPk>(nullptr, op, e_star, false, std::move(options));
+      return;
+    }
+    options.restart = solvers::ConjugacyRestart::powell;
+    if (variant == PkVariant::fourier) {
+      solver_ = std::make_unique<OwningPk>(nullptr, op, e_star, true, std::move(options));
+      return;
+    }
+    auto make_level = [&op, e_star, options](const Grid& level, double tolerance,
+                                             bool fine) -> std::unique_ptr<ContactSolver> {
+      solvers::PolonskyKeerOptions level_options = options;
+      level_options.tolerance = tolerance;
+      if (fine) return std::make_unique<OwningPk>(nullptr, op, e_star, true, level_options);
+      auto coarse_op = std::make_unique<FftInfluenceOperator>(level, e_star);
+      InfluenceOperator& coarse = *coarse_op;
+      return std::make_unique<OwningPk>(std::move(coarse_op), coarse, e_star, true, level_options);
+    };
+    solver_ = std::make_unique<solvers::MultilevelSolver>(op.grid(), options.tolerance, make_level);
+  }
+
+  SolveResult solve(std::span<const double> initial_gap, const Loading& loading,
+                    std::span<const double> initial_pressure = {}) {
+    return solver_->solve(initial_gap, loading, initial_pressure);
+  }
+
+ private:
+  std::unique_ptr<ContactSolver> solver_;
 };
 
 }  // namespace halfspace::testing

@@ -56,6 +56,14 @@ class RealFft {
   // output = inverse DFT(spectrum) without 1/N; overwrites the spectrum.
   void backward();
 
+  // The same transforms on the caller's arrays (FFTW's new-array execute),
+  // which saves the copy into input() and out of output() when the array's
+  // length is real_size() and its alignment is that of the planned buffers;
+  // otherwise they do nothing and return false, and the caller copies.
+  // `values` must not overlap spectrum().
+  bool forward_from(std::span<const double> values);
+  bool backward_into(std::span<double> values);
+
  private:
   void make_plans(int rank, const int* dims, FftPlanning planning, FftOutput output);
   void release() noexcept;

@@ -12,6 +12,7 @@
 #include <array>
 #include <cstddef>
 #include <limits>
+#include <utility>
 
 namespace halfspace::linalg {
 
@@ -73,6 +74,45 @@ std::array<double, K> sums(std::size_t n, Term&& term) {
     for (std::size_t k = 0; k < K; ++k) total[k] += p[k];
   }
   return global_sum(total);
+}
+
+// sums<K> and the range of one more value, in one pass: term(i) returns
+// std::pair<std::array<double, K>, double>.
+template <std::size_t K>
+struct SumsAndRange {
+  std::array<double, K> sums{};
+  double min = std::numeric_limits<double>::infinity();
+  double max = -std::numeric_limits<double>::infinity();
+};
+
+template <std::size_t K, class Term>
+SumsAndRange<K> sums_and_range(std::size_t n, Term&& term) {
+  std::array<SumsAndRange<K>, kReductionBlocks> partial{};
+  const std::size_t block = (n + kReductionBlocks - 1) / kReductionBlocks;
+  const auto blocks = static_cast<std::ptrdiff_t>(kReductionBlocks);
+#pragma omp parallel for schedule(static) if (n > kParallelThreshold)
+  for (std::ptrdiff_t b = 0; b < blocks; ++b) {
+    const std::size_t begin = std::min(n, static_cast<std::size_t>(b) * block);
+    const std::size_t end = std::min(n, begin + block);
+    SumsAndRange<K> acc;
+    for (std::size_t i = begin; i < end; ++i) {
+      const auto [t, value] = term(i);
+      for (std::size_t k = 0; k < K; ++k) acc.sums[k] += t[k];
+      acc.min = std::min(acc.min, value);
+      acc.max = std::max(acc.max, value);
+    }
+    partial[static_cast<std::size_t>(b)] = acc;
+  }
+  SumsAndRange<K> total;
+  for (const auto& p : partial) {
+    for (std::size_t k = 0; k < K; ++k) total.sums[k] += p.sums[k];
+    total.min = std::min(total.min, p.min);
+    total.max = std::max(total.max, p.max);
+  }
+  total.sums = global_sum(total.sums);
+  total.min = global_min(total.min);
+  total.max = global_max(total.max);
+  return total;
 }
 
 // Sum of term(i) over i in [0, n), reduced over all ranks.

@@ -32,9 +32,20 @@
 
 namespace halfspace::solvers {
 
+// Polonsky & Keer restart the conjugate directions whenever a cell enters the
+// contact set. On large rough contacts a few cells enter in almost every
+// iteration, which turns the method into (preconditioned) steepest descent.
+// The Powell-style test restarts instead only when the new gap is no longer
+// nearly orthogonal to the previous direction on the contact set,
+// |sum_C g t_old| > 0.2 sum_C g z (Powell 1977, Math. Programming 12, 241),
+// which is what conjugacy needs, whatever entered.
+enum class ConjugacyRestart { on_entry, powell };
+
 struct PolonskyKeerOptions {
   double tolerance = 1e-10;     // relative residual, see the stopping criterion above
   int max_iterations = 10000;   // status iteration_limit when reached
+  // When the conjugate directions restart (step 3 with beta = 0).
+  ConjugacyRestart restart = ConjugacyRestart::on_entry;
   // Called once per iteration with (iteration, residual); may be empty. It
   // runs on the calling thread between iterations, so it may print.
   std::function<void(int, double)> progress;

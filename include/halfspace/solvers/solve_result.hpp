@@ -30,6 +30,13 @@ struct SolveResult {
   std::vector<double> residual_history; // one entry per iteration
   int operator_applications = 0;        // number of K*p products
   int preconditioner_applications = 0;  // number of M^-1 g products (each one FFT pair)
+  // Coarse-grid start (MultilevelSolver): the number of coarser grids solved
+  // first, their iterations, and their K and M^-1 products each weighted by
+  // its grid's cells over this grid's (the fine-grid products they cost).
+  int coarse_levels = 0;
+  int coarse_iterations = 0;
+  double coarse_operator_work = 0.0;
+  double coarse_preconditioner_work = 0.0;
 
   double approach = 0.0;          // rigid-body approach (m)
   double total_force = 0.0;       // N in 2D, N/m in 1D

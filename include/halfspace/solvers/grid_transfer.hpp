@@ -1,0 +1,25 @@
+// Moving fields between a grid and the grid of twice its spacing, for the
+// coarse-grid start of MultilevelSolver: block averages down, piecewise
+// constant values up.
+#pragma once
+
+#include <optional>
+#include <span>
+
+#include "halfspace/grid.hpp"
+
+namespace halfspace::solvers {
+
+// The grid of the same domain with half the cells per axis (2D: both axes),
+// or nothing when an axis has an odd number of cells (the domain would
+// change) or the coarse grid would have fewer than min_cells_per_axis cells
+// along an axis.
+std::optional<Grid> coarser_grid(const Grid& fine, std::size_t min_cells_per_axis);
+
+// coarse(J, I) = mean of fine over the 2 (1D) or 2 x 2 (2D) cells it covers.
+void restrict_by_average(const Grid& fine, std::span<const double> fine_values, std::span<double> coarse_values);
+
+// fine(j, i) = coarse(j / 2, i / 2).
+void prolong_constant(const Grid& fine, std::span<const double> coarse_values, std::span<double> fine_values);
+
+}  // namespace halfspace::solvers

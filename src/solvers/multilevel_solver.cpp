@@ -1,0 +1,82 @@
+#include "halfspace/solvers/multilevel_solver.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <optional>
+#include <utility>
+
+#include "halfspace/error.hpp"
+#include "halfspace/solvers/grid_transfer.hpp"
+
+namespace halfspace::solvers {
+void MultilevelOptions::validate() const {
+  if (!(coarse_tolerance > 0.0 && coarse_tolerance < 1.0)) {
+    throw InputError(fmt::format("coarse tolerance = {} is invalid: allowed range is (0, 1)", coarse_tolerance));
+  }
+  if (min_cells_per_axis < 2) {
+    throw InputError(fmt::format("minimum coarse cells per axis = {} is invalid: must be at least 2", min_cells_per_axis));
+  }
+}
+
+MultilevelSolver::MultilevelSolver(const Grid& grid, double fine_tolerance, LevelSolverFactory make_level,
+                                   MultilevelOptions options)
+    : grid_(grid), fine_tolerance_(fine_tolerance), make_level_(std::move(make_level)), options_(options) {
+  options_.validate();
+  fine_ = make_level_(grid_, fine_tolerance_, true);
+}
+
+Eigen::ArrayXd MultilevelSolver::coarse_start(const Grid& grid, std::span<const double> gap, const Loading& loading,
+                                              SolveResult& record) {
+  const std::optional<Grid> coarse = coarser_grid(grid, options_.min_cells_per_axis);
+  if (!coarse) return {};
+  Eigen::ArrayXd coarse_gap(static_cast<Eigen::Index>(coarse->size()));
+  restrict_by_average(grid, gap, {coarse_gap.data(), coarse->size()});
+  const Eigen::ArrayXd start = coarse_start(*coarse, {coarse_gap.data(), coarse->size()}, loading, record);
+
+  // The same load on the same domain: force, mean pressure and approach all
+  // carry over unchanged.
+  const double tolerance = std::max(options_.coarse_tolerance, fine_tolerance_);
+  SolveResult coarse_result =
+      make_level_(*coarse, tolerance, false)
+          ->solve({coarse_gap.data(), coarse->size()}, loading, {start.data(), static_cast<std::size_t>(start.size())});
+  const double weight = static_cast<double>(coarse->size()) / static_cast<double>(grid_.size());
+  ++record.coarse_levels;
+  record.coarse_iterations += coarse_result.iterations;
+  record.coarse_operator_work += weight * coarse_result.operator_applications;
+  record.coarse_preconditioner_work += weight * coarse_result.preconditioner_applications;
+  // Only a start: a coarse solve short of its tolerance still helps, one
+  // that broke down does not.
+  if (!coarse_result.pressure.allFinite()) return {};
+  Eigen::ArrayXd fine_start(static_cast<Eigen::Index>(grid.size()));
+  prolong_constant(grid, {coarse_result.pressure.data(), coarse->size()}, {fine_start.data(), grid.size()});
+  return fine_start;
+}
+
+SolveResult MultilevelSolver::solve(std::span<const double> initial_gap, const Loading& loading,
+                                    std::span<const double> initial_pressure) {
+  const auto start_time = std::chrono::steady_clock::now();
+  if (!initial_pressure.empty()) {
+    SolveResult result = fine_->solve(initial_gap, loading, initial_pressure);
+    result.solver = std::string(name());
+    return result;
+  }
+  if (initial_gap.size() != grid_.size()) {
+    throw InputError(fmt::format("initial gap has {} entries, but the grid has {} cells", initial_gap.size(),
+                                 grid_.size()));
+  }
+  loading.validate();
+  SolveResult record;
+  const Eigen::ArrayXd start = coarse_start(grid_, initial_gap, loading, record);
+  SolveResult result = fine_->solve(initial_gap, loading, {start.data(), static_cast<std::size_t>(start.size())});
+  result.solver = std::string(name());
+  result.coarse_levels = record.coarse_levels;
+  result.coarse_iterations = record.coarse_iterations;
+  result.coarse_operator_work = record.coarse_operator_work;
+  result.coarse_preconditioner_work = record.coarse_preconditioner_work;
+  result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time).count();
+  return result;
+}
+
+}  // namespace halfspace::solvers
