@@ -66,13 +66,23 @@ void print_summary(std::FILE* out, const SolveSetup& setup, const SolveResult& r
   row(out, "grid", grid_text(grid));
   row(out, "E*", fmt::format("{:.6g} Pa", setup.e_star));
   row(out, "load", load_text(setup));
-  // Only the Polonsky-Keer solvers ("pk", "pk-fourier") use FFTs.
+  // Only the Polonsky-Keer solvers ("pk", "pk-fourier", "pk-multilevel") use FFTs.
   const bool uses_fft = setup.solver.name.starts_with("pk");
   row(out, "solver",
       fmt::format("{}, {} thread{}{}", result.solver, setup.threads, setup.threads == 1 ? "" : "s",
                   uses_fft ? fmt::format(", FFT planning {}", to_string(setup.solver.fft_planning)) : ""));
   row(out, "status", stop_reason(result));
   row(out, "iterations", fmt::format("{}", result.iterations));
+  if (uses_fft) {
+    row(out, "FFT products",
+        fmt::format("{} K, {} M^-1", result.operator_applications, result.preconditioner_applications));
+  }
+  if (result.coarse_levels > 0) {
+    row(out, "coarse start",
+        fmt::format("{} grids, {} iterations, costing {:.1f} K and {:.1f} M^-1 products of this grid",
+                    result.coarse_levels, result.coarse_iterations, result.coarse_operator_work,
+                    result.coarse_preconditioner_work));
+  }
   row(out, "residual", fmt::format("{:.3e} (tolerance {:.3e})", result.residual, result.tolerance));
   row(out, "total force", fmt::format("{:.6g} {}", result.total_force, force_unit(grid)));
   row(out, "mean pressure", fmt::format("{:.6g} Pa", result.mean_pressure));

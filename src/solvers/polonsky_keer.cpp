@@ -24,8 +24,10 @@ using linalg::sums;
 // exact one every this many updates keeps rounding from accumulating.
 constexpr int kUpdatesBetweenExactProducts = 50;
 
-// Powell's restart threshold (ConjugacyRestart::powell).
+// ConjugacyRestart::powell: Powell's threshold, and the share of the contact
+// cells that may enter in one step without a restart.
 constexpr double kPowellRestart = 0.2;
+constexpr double kEntriesKept = 0.01;
 
 struct Problem {
   std::span<const double> initial_gap;
@@ -291,7 +293,8 @@ SolveResult PolonskyKeer::solve(std::span<const double> initial_gap, const Loadi
 
     // Steps 6-8: move along t, clip to p >= 0, and let cells that are out of
     // contact but interpenetrate (g < 0) enter with pressure -tau g; under
-    // ConjugacyRestart::on_entry any such entry resets the conjugacy. The displacement follows without a new
+    // ConjugacyRestart::on_entry any such entry resets the conjugacy (under
+    // powell, entries of more than 1% of the contact cells). The displacement follows without a new
     // product: K(p - tau t) = u - tau r, plus K c for the correction c that
     // clipping and entries add, which is zero once the contact set settles.
     // r is not needed after this pass, so it receives c.
@@ -308,7 +311,8 @@ SolveResult PolonskyKeer::solve(std::span<const double> initial_gap, const Loadi
       r[i] = pi - moved;
       return std::array<double, 3>{pi, entry, r[i] != 0.0 ? 1.0 : 0.0};
     });
-    conjugate = (powell_restart || entered == 0.0) && tau > 0.0;
+    const double entries_kept = powell_restart ? kEntriesKept * contact_cells : 0.0;
+    conjugate = entered <= entries_kept && tau > 0.0;
     if (corrected > 0.0) {
       // g is recomputed from u in step 1, so it can hold K c until then.
       op_.apply({r, n}, {g, n});

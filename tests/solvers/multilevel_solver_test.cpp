@@ -1,0 +1,110 @@
+// pk-multilevel: the coarse-grid start changes the path, not the answer, and
+// it is used exactly when it can be (even sides, large enough grid, no warm
+// start). The physics validation (Hertz, Westergaard, round trips) runs on it
+// through the PkVariant suites.
+#include "halfspace/solvers/multilevel_solver.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "halfspace/error.hpp"
+#include "halfspace/geometry/builtin_surface.hpp"
+#include "halfspace/solvers/solver_factory.hpp"
+#include "halfspace/surface/self_affine.hpp"
+#include "halfspace/threads.hpp"
+#include "support/contact_checks.hpp"
+
+namespace halfspace::solvers {
+namespace {
+
+using testing::expect_contact_conditions;
+
+constexpr double kEStar = 1.0;
+// Two converged solutions at residual 1e-12 differ by rounding-level amounts
+// relative to the largest pressure.
+constexpr double kSameSolution = 1e-8;
+
+Eigen::ArrayXd rough_gap(const Grid& grid, std::uint64_t seed) {
+  surface::SelfAffineSpec spec;
+  spec.hurst = 0.8;
+  spec.short_cutoff = 4.0 * grid.dx();
+  spec.rms_slope = 0.1;
+  spec.seed = seed;
+  return geometry::initial_gap_from_heights(surface::make_self_affine_surface(grid, spec));
+}
+
+SolverSettings settings(const std::string& name) {
+  SolverSettings s;
+  s.name = name;
+  s.tolerance = 1e-12;
+  return s;
+}
+
+TEST(MultilevelSolverTest, MatchesTheSingleGridSolverAndUsesTheCoarseGrids) {
+  const int original = threads();
+  set_threads(1);
+  for (const Boundary boundary : {Boundary::periodic, Boundary::free}) {
+    const Grid grid = Grid::plane(128, 128, 1.0, 1.0, boundary);
+    const Eigen::ArrayXd gap = rough_gap(grid, 7);
+    const Loading loading = Loading::mean_pressure(0.004);  // about 8% contact
+    const SolveResult single = make_solver(grid, kEStar, settings("pk-fourier"))->solve({gap.data(), grid.size()}, loading);
+    const SolveResult multi =
+        make_solver(grid, kEStar, settings("pk-multilevel"))->solve({gap.data(), grid.size()}, loading);
+    ASSERT_TRUE(single.converged()) << single.message;
+    ASSERT_TRUE(multi.converged()) << multi.message;
+    expect_contact_conditions(multi, 1e-9 * gap.maxCoeff());
+    const double difference = (multi.pressure - single.pressure).abs().maxCoeff() / single.max_pressure;
+    std::printf("%s 128^2: pk-fourier %d iterations, pk-multilevel %d (+%d on %d coarser grids), max |dp| %.1e\n",
+                std::string(to_string(boundary)).c_str(), single.iterations, multi.iterations, multi.coarse_iterations,
+                multi.coarse_levels, difference);
+    EXPECT_LE(difference, kSameSolution);
+    EXPECT_EQ(multi.coarse_levels, 2) << "128 -> 64 -> 32 cells per side";
+    EXPECT_GT(multi.coarse_iterations, 0);
+    EXPECT_GT(multi.coarse_operator_work, 0.0);
+    EXPECT_LT(multi.coarse_operator_work, multi.operator_applications) << "coarse work is weighted by grid size";
+    EXPECT_EQ(multi.solver, "multilevel-polonsky-keer");
+    EXPECT_NEAR(multi.total_force, single.total_force, 1e-12 * single.total_force);
+  }
+  set_threads(original);
+}
+
+TEST(MultilevelSolverTest, SkipsTheCoarseGridsWhenItCannotOrNeedNotUseThem) {
+  // Odd side: no coarser grid of the same domain.
+  const Grid odd = Grid::plane(65, 64, 1.0, 1.0, Boundary::periodic);
+  const Eigen::ArrayXd odd_gap = rough_gap(odd, 3);
+  const SolveResult odd_result =
+      make_solver(odd, kEStar, settings("pk-multilevel"))->solve({odd_gap.data(), odd.size()}, Loading::mean_pressure(0.004));
+  ASSERT_TRUE(odd_result.converged()) << odd_result.message;
+  EXPECT_EQ(odd_result.coarse_levels, 0);
+
+  // A warm start (a sweep's previous step) is used as it is.
+  const Grid grid = Grid::plane(64, 64, 1.0, 1.0, Boundary::periodic);
+  const Eigen::ArrayXd gap = rough_gap(grid, 4);
+  auto solver = make_solver(grid, kEStar, settings("pk-multilevel"));
+  const SolveResult cold = solver->solve({gap.data(), grid.size()}, Loading::mean_pressure(0.004));
+  ASSERT_TRUE(cold.converged()) << cold.message;
+  EXPECT_EQ(cold.coarse_levels, 1);
+  const SolveResult warm = solver->solve({gap.data(), grid.size()}, Loading::mean_pressure(0.005),
+                                         {cold.pressure.data(), grid.size()});
+  ASSERT_TRUE(warm.converged()) << warm.message;
+  EXPECT_EQ(warm.coarse_levels, 0);
+  EXPECT_EQ(warm.solver, "multilevel-polonsky-keer");
+}
+
+TEST(MultilevelSolverTest, RefusesBadInputBeforeAnyCoarseSolve) {
+  const Grid grid = Grid::plane(64, 64, 1.0, 1.0, Boundary::periodic);
+  auto solver = make_solver(grid, kEStar, settings("pk-multilevel"));
+  const Eigen::ArrayXd gap = rough_gap(grid, 5);
+  EXPECT_THROW(solver->solve({gap.data(), 100}, Loading::mean_pressure(0.004)), InputError);
+  EXPECT_THROW(solver->solve({gap.data(), grid.size()}, Loading::force(-1.0)), InputError);
+  MultilevelOptions bad;
+  bad.coarse_tolerance = 2.0;
+  EXPECT_THROW(bad.validate(), InputError);
+  bad = {};
+  bad.min_cells_per_axis = 1;
+  EXPECT_THROW(bad.validate(), InputError);
+}
+
+}  // namespace
+}  // namespace halfspace::solvers
