@@ -1,6 +1,7 @@
 // One application of FftInfluenceOperator against its floor, a bare FFTW r2c + c2r
-// pair of the same transform size (2n per axis for free grids) and thread count,
-// both FFTW_ESTIMATE (plus a FFTW_MEASURE operator). Holds halfspace_bench's main().
+// pair of the same transform size (2n per axis for free grids), thread count and
+// planning (FFTW_ESTIMATE, and FFTW_MEASURE for the *_measure rows). Holds
+// halfspace_bench's main(). HALFSPACE_BENCH_LARGE=1 adds the large sizes.
 #include <fftw3.h>
 
 #include <benchmark/benchmark.h>
@@ -22,10 +23,12 @@
 #include "halfspace/operators/fft_influence_operator.hpp"
 #include "halfspace/threads.hpp"
 #include "halfspace/version.hpp"
+#include "bare_fft_pair.hpp"
 
 namespace halfspace {
 namespace {
 
+using bench::BareFftPair;
 using Clock = std::chrono::steady_clock;
 
 constexpr double kEStar = 1.1e11;   // Pa; the value does not change the cost
@@ -36,6 +39,7 @@ const std::vector<int> kThreadCounts = {1, 2};
 // Transform sizes per axis. Periodic grids of size n and free grids of size
 // n/2 (padded to n) share each bare-pair measurement.
 const std::vector<std::size_t> kTransformSizes2d = {256, 512, 1024, 2048};
+const std::vector<std::size_t> kLargeTransformSizes2d = {4096};
 const std::vector<std::size_t> kTransformSizes1d = {std::size_t{1} << 12, std::size_t{1} << 16, std::size_t{1} << 20};
 // Periodic 2D sizes also run with FftPlanning::measure, to show what the
 // ESTIMATE default leaves on the table.
@@ -44,65 +48,6 @@ const std::vector<std::size_t> kMeasuredSizes2d = {256, 512, 1024, 2048};
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
-
-// An out-of-place r2c and c2r plan over an n (1D) or n x n (2D) real array:
-// the two transforms every operator application needs, and nothing else (no
-// padding, no kernel multiply, no normalisation). The c2r result goes to its
-// own array so the unnormalised round trip never feeds back into the input.
-class BareFftPair {
- public:
-  BareFftPair(int dimension, std::size_t n, int threads) {
-    const std::size_t real_size = dimension == 1 ? n : n * n;
-    const std::size_t complex_size = dimension == 1 ? n / 2 + 1 : n * (n / 2 + 1);
-    input_ = fftw_alloc_real(real_size);
-    output_ = fftw_alloc_real(real_size);
-    spectrum_ = fftw_alloc_complex(complex_size);
-    fftw_plan_with_nthreads(threads);
-    const int ni = static_cast<int>(n);
-    if (dimension == 1) {
-      forward_ = fftw_plan_dft_r2c_1d(ni, input_, spectrum_, FFTW_ESTIMATE);
-      backward_ = fftw_plan_dft_c2r_1d(ni, spectrum_, output_, FFTW_ESTIMATE);
-    } else {
-      forward_ = fftw_plan_dft_r2c_2d(ni, ni, input_, spectrum_, FFTW_ESTIMATE);
-      backward_ = fftw_plan_dft_c2r_2d(ni, ni, spectrum_, output_, FFTW_ESTIMATE);
-    }
-    // Planned before filling: FFTW_ESTIMATE leaves the arrays alone anyway,
-    // and out-of-place r2c preserves its input, so this is the data every run sees.
-    std::mt19937_64 random(kSeed);
-    std::uniform_real_distribution<double> uniform(0.0, 1.0);
-    for (std::size_t i = 0; i < real_size; ++i) input_[i] = uniform(random);
-    run();  // first touch of the pages, outside any timing
-  }
-  ~BareFftPair() {
-    fftw_destroy_plan(backward_);
-    fftw_destroy_plan(forward_);
-    fftw_free(spectrum_);
-    fftw_free(output_);
-    fftw_free(input_);
-  }
-  BareFftPair(const BareFftPair&) = delete;
-  BareFftPair& operator=(const BareFftPair&) = delete;
-
-  void run() {
-    fftw_execute(forward_);
-    fftw_execute(backward_);
-  }
-  const double* data() const { return output_; }
-
-  // Mean wall seconds of one pair over `repetitions` back-to-back runs.
-  double seconds_per_pair(std::int64_t repetitions) {
-    const auto start = Clock::now();
-    for (std::int64_t r = 0; r < repetitions; ++r) run();
-    return seconds_since(start) / static_cast<double>(repetitions);
-  }
-
- private:
-  double* input_ = nullptr;
-  double* output_ = nullptr;
-  fftw_complex* spectrum_ = nullptr;
-  fftw_plan forward_ = nullptr;
-  fftw_plan backward_ = nullptr;
-};
 
 struct OperatorKind {
   std::string name;
@@ -145,7 +90,10 @@ ApplySetup& apply_setup(const OperatorKind& kind, std::size_t n, int threads) {
   // every later benchmark plan as if it had never been measured.
   if (kind.planning != FftPlanning::estimate) fftw_forget_wisdom();
   const std::size_t transform_n = grid.periodic() ? n : 2 * n;
-  setup->floor = std::make_unique<BareFftPair>(kind.dimension, transform_n, threads);
+  // The floor is planned like the operator: measured rows against a measured pair.
+  setup->floor = std::make_unique<BareFftPair>(kind.dimension, transform_n, threads,
+                                               kind.planning == FftPlanning::estimate ? FFTW_ESTIMATE : FFTW_MEASURE);
+  if (kind.planning != FftPlanning::estimate) fftw_forget_wisdom();
   setup->pressure.resize(grid.size());
   setup->displacement.assign(grid.size(), 0.0);
   std::mt19937_64 random(kSeed);
@@ -223,6 +171,9 @@ const bool kRegistered = [] {
   };
   for (std::size_t t : kTransformSizes1d) register_size(1, t, periodic_1d, free_1d);
   for (std::size_t t : kTransformSizes2d) register_size(2, t, periodic_2d, free_2d);
+  if (bench::large_sizes_requested()) {
+    for (std::size_t t : kLargeTransformSizes2d) register_size(2, t, periodic_2d, free_2d);
+  }
   const OperatorKind periodic_2d_measure{"periodic_2d_measure", 2, Boundary::periodic, FftPlanning::measure};
   for (std::size_t t : kMeasuredSizes2d) {
     configure(benchmark::RegisterBenchmark(
@@ -247,7 +198,8 @@ int main(int argc, char** argv) {
   benchmark::AddCustomContext("halfspace_git", halfspace::kGitHash);
   benchmark::AddCustomContext("fftw_version", fftw_version);
   benchmark::AddCustomContext("fft_planning",
-                              "FFTW_ESTIMATE (operator default and bare pair); *_measure rows: FFTW_MEASURE, no wisdom file");
+                              "FFTW_ESTIMATE (operator default and bare pair); *_measure rows: FFTW_MEASURE for both, no wisdom file");
+  benchmark::AddCustomContext("large_sizes", halfspace::bench::large_sizes_requested() ? "yes" : "no (HALFSPACE_BENCH_LARGE=1 adds them)");
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();

@@ -1,6 +1,9 @@
-// Whole Polonsky-Keer solves at tolerance 1e-10 on the FFT operator, plain (pk)
-// and Fourier-preconditioned (pk-fourier): a Hertz sphere on free grids and a
-// self-affine rough surface on periodic grids, with 1 and 2 threads.
+// Whole Polonsky-Keer solves at tolerance 1e-10 on the FFT operator, plain (pk),
+// Fourier-preconditioned (pk-fourier) and started from coarser grids
+// (pk-multilevel), with 1 and 2 threads: a Hertz sphere on free grids, and
+// self-affine rough surfaces on periodic grids, both refined in a fixed domain
+// (rough_periodic_2d) and in a domain growing at fixed spacing
+// (rough_domain_2d). HALFSPACE_BENCH_LARGE=1 adds the large grids.
 #include <fftw3.h>
 
 #include <benchmark/benchmark.h>
@@ -27,7 +30,9 @@
 #include "halfspace/operators/fft_influence_operator.hpp"
 #include "halfspace/solvers/fourier_preconditioner.hpp"
 #include "halfspace/solvers/solver_factory.hpp"
+#include "halfspace/surface/self_affine.hpp"
 #include "halfspace/threads.hpp"
+#include "bare_fft_pair.hpp"
 
 namespace halfspace {
 namespace {
@@ -48,6 +53,14 @@ constexpr double kForce = 10.0;         // N
 constexpr double kHurst = 0.8;
 constexpr double kBoxSize = 1e-3;     // m
 constexpr double kRmsHeight = 1e-6;   // m
+
+// Growing domain: the surfaces of docs/performance-scale.md, spacing 1 um,
+// power law from the domain size down to 4 um, so an n x n grid is n um
+// across and holds ever more contact spots; about 8% contact.
+constexpr double kDomainSpacing = 1e-6;      // m
+constexpr double kDomainShortCutoff = 4e-6;  // m
+constexpr double kDomainRmsSlope = 0.1;
+constexpr double kDomainReducedPressure = 0.04;
 constexpr int kCutoffModes = 64;
 constexpr std::uint64_t kSurfaceSeed = 2024;
 // Mean pressure as a fraction of E* times the rms slope: by the linear law
@@ -124,8 +137,8 @@ RoughSurface self_affine_surface(std::size_t n) {
 }
 
 struct SolveCase {
-  std::string solver;  // a solvers::solver_names() entry: "pk" or "pk-fourier"
-  std::string shape;   // "hertz_free_2d" or "rough_periodic_2d"
+  std::string solver;  // a solvers::solver_names() entry: "pk", "pk-fourier" or "pk-multilevel"
+  std::string shape;   // "hertz_free_2d", "rough_periodic_2d" or "rough_domain_2d"
 };
 
 // Kept between Google Benchmark's calls of one benchmark: the solver exactly
@@ -138,6 +151,7 @@ struct SolveSetup {
   std::unique_ptr<ContactSolver> solver;
   std::unique_ptr<FftInfluenceOperator> op;
   std::unique_ptr<solvers::FourierPreconditioner> preconditioner;
+  std::unique_ptr<bench::BareFftPair> floor;  // of the operator's transform size
   Eigen::ArrayXd initial_gap;
   Loading loading;
 };
@@ -156,6 +170,15 @@ SolveSetup& solve_setup(const SolveCase& solve_case, std::size_t n, int threads)
     const RoughSurface surface = self_affine_surface(n);
     setup->initial_gap = geometry::initial_gap_from_heights(surface.heights);
     setup->loading = Loading::mean_pressure(kReducedPressure * kEStar * surface.rms_slope);
+  } else if (solve_case.shape == "rough_domain_2d") {
+    setup->grid = std::make_unique<Grid>(Grid::plane(n, n, kDomainSpacing, kDomainSpacing, Boundary::periodic));
+    surface::SelfAffineSpec spec;
+    spec.hurst = kHurst;
+    spec.short_cutoff = kDomainShortCutoff;
+    spec.rms_slope = kDomainRmsSlope;
+    spec.seed = 1;
+    setup->initial_gap = geometry::initial_gap_from_heights(surface::make_self_affine_surface(*setup->grid, spec));
+    setup->loading = Loading::mean_pressure(kDomainReducedPressure * kEStar * kDomainRmsSlope);
   } else {
     const double contact_radius = std::cbrt(3.0 * kForce * kSphereRadius / (4.0 * kEStar));
     const double dx = 3.0 * contact_radius / static_cast<double>(n);
@@ -172,9 +195,11 @@ SolveSetup& solve_setup(const SolveCase& solve_case, std::size_t n, int threads)
   settings.fft_planning = FftPlanning::estimate;
   setup->solver = solvers::make_solver(*setup->grid, kEStar, settings);
   setup->op = std::make_unique<FftInfluenceOperator>(*setup->grid, kEStar);
-  if (solve_case.solver == "pk-fourier") {
+  if (solve_case.solver != "pk") {
     setup->preconditioner = std::make_unique<solvers::FourierPreconditioner>(*setup->grid, kEStar);
   }
+  const std::size_t transform_n = setup->grid->periodic() ? n : 2 * n;
+  setup->floor = std::make_unique<bench::BareFftPair>(2, transform_n, threads);
   slot = std::move(setup);
   return *slot;
 }
@@ -218,6 +243,8 @@ void solve(benchmark::State& state, const SolveCase& solve_case, std::size_t n) 
   const double apply_seconds = seconds_per_apply(*setup->op, pressure, scratch);
   const double preconditioner_seconds =
       setup->preconditioner ? seconds_per_apply(*setup->preconditioner, pressure, scratch) : 0.0;
+  const double floor_seconds = setup->floor->seconds_per_pair(std::max<std::int64_t>(
+      3, static_cast<std::int64_t>(0.2 / std::max(apply_seconds, 1e-6))));
   const double applications = result.operator_applications;
   const double preconditioner_applications = result.preconditioner_applications;
   state.counters["threads"] = threads;
@@ -227,6 +254,11 @@ void solve(benchmark::State& state, const SolveCase& solve_case, std::size_t n) 
   state.counters["s_per_application"] = solve_seconds / applications;
   state.counters["s_per_iteration"] = solve_seconds / std::max(result.iterations, 1);
   state.counters["apply_alone_s"] = apply_seconds;
+  state.counters["fft_pair_s"] = floor_seconds;
+  // One iteration against one bare FFT pair of the operator's transform size.
+  state.counters["iteration_per_fft_pair"] = solve_seconds / std::max(result.iterations, 1) / floor_seconds;
+  // pk-multilevel's coarse grids, in products of this grid.
+  state.counters["coarse_work"] = result.coarse_operator_work + result.coarse_preconditioner_work;
   // Share of the solve spent in K and M^-1 products (FFT pairs and their
   // copies); the rest is the solver's own elementwise loops and reductions.
   state.counters["transform_share"] =
@@ -248,9 +280,17 @@ const bool kRegistered = [] {
         ->UseRealTime()
         ->Unit(benchmark::kMillisecond);
   };
-  for (const std::string solver : {"pk", "pk-fourier"}) {
-    for (std::size_t n : {128, 256, 512}) add({solver, "hertz_free_2d"}, n);
-    for (std::size_t n : {256, 512, 1024}) add({solver, "rough_periodic_2d"}, n);
+  const bool large = bench::large_sizes_requested();
+  std::vector<std::size_t> free_sizes{128, 256, 512};
+  std::vector<std::size_t> periodic_sizes{256, 512, 1024};
+  if (large) {
+    free_sizes.insert(free_sizes.end(), {1024, 2048});
+    periodic_sizes.insert(periodic_sizes.end(), {2048, 4096});
+  }
+  for (const std::string solver : {"pk", "pk-fourier", "pk-multilevel"}) {
+    for (std::size_t n : free_sizes) add({solver, "hertz_free_2d"}, n);
+    for (std::size_t n : periodic_sizes) add({solver, "rough_periodic_2d"}, n);
+    for (std::size_t n : periodic_sizes) add({solver, "rough_domain_2d"}, n);
   }
   return true;
 }();

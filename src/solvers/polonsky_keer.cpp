@@ -200,7 +200,7 @@ SolveResult PolonskyKeer::solve(std::span<const double> initial_gap, const Loadi
       g[i] = initial_gap[i] + u[i] - approach;
       if (restrict_to_contact) r[i] = p[i] > 0.0 ? g[i] : 0.0;
       return std::array<double, 5>{p[i] * std::abs(g[i]), std::max(-g[i], 0.0), p[i],
-                                   p[i] > 0.0 ? g[i] * g[i] : 0.0, p[i] > 0.0 ? g[i] * t[i] : 0.0};
+                                   p[i] > 0.0 ? g[i] * g[i] : 0.0, p[i] > 0.0 && powell_restart ? g[i] * t[i] : 0.0};
     });
     gap_norm = contact_gap_norm;
     gap_along_direction = gap_along;
