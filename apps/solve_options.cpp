@@ -95,9 +95,9 @@ const std::array kOptions{
                "force over the domain area (Pa); a list or START:STOP:COUNT makes a sweep"},
     OptionSpec{"approach", &SolveOptions::approach, Kind::numbers, kLoad, "M",
                "imposed rigid-body approach (m): displacement control; a list or START:STOP:COUNT makes a sweep"},
-    OptionSpec{"solver", &SolveOptions::solver, Kind::text, kSolver, "NAME", "contact solver: pk-fourier (Polonsky-Keer with Fourier preconditioner), pk-multilevel (pk-fourier started "
-               "from coarser grids), pk (plain Polonsky-Keer), "
-               "lemke (Lemke pivoting, dense, small grids), lcpquad (the paper's QP, dense, small grids) [pk-fourier]"},
+    OptionSpec{"solver", &SolveOptions::solver, Kind::text, kSolver, "NAME", "contact solver: pk-multilevel (pk-fourier started from coarser grids), pk-fourier (Polonsky-Keer with "
+               "Fourier preconditioner), pk (plain Polonsky-Keer), "
+               "lemke (Lemke pivoting, dense, small grids), lcpquad (the paper's QP, dense, small grids) [pk-multilevel]"},
     OptionSpec{"tol", &SolveOptions::tol, Kind::number, kSolver, "X", "relative residual tolerance [1e-10]"},
     OptionSpec{"max-iter", &SolveOptions::max_iter, Kind::integer, kSolver, "N", "iteration limit [10000]"},
     OptionSpec{"threads", &SolveOptions::threads, Kind::integer, kSolver, "N",

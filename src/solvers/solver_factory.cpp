@@ -87,7 +87,7 @@ std::unique_ptr<ContactSolver> make_dense(const Grid& grid, double e_star, const
 
 }  // namespace
 
-std::vector<std::string> solver_names() { return {"pk-fourier", "pk-multilevel", "pk", "lemke", "lcpquad"}; }
+std::vector<std::string> solver_names() { return {"pk-multilevel", "pk-fourier", "pk", "lemke", "lcpquad"}; }
 
 std::unique_ptr<ContactSolver> make_solver(const Grid& grid, double e_star, const SolverSettings& settings) {
   // Plain Polonsky-Keer keeps the paper's restart rule; with the Fourier

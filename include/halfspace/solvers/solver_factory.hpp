@@ -14,7 +14,7 @@
 namespace halfspace::solvers {
 
 struct SolverSettings {
-  std::string name = "pk-fourier";  // one of solver_names(); the default was chosen by measurement (docs/performance.md)
+  std::string name = "pk-multilevel";  // one of solver_names(); the default was chosen by measurement (docs/performance.md)
   double tolerance = 1e-10;      // the solver's own relative stopping tolerance
   int max_iterations = 10000;
   FftPlanning fft_planning = FftPlanning::estimate;  // FFT-based solvers only
