@@ -1,8 +1,14 @@
 #!/usr/bin/env bash
 # Builds halfspace_bench (Release) and runs it: machine, commit and table appended to
-# bench/results/<date>-<shortcommit>.txt, the JSON to a new file beside it. Extra
-# arguments go to halfspace_bench (e.g. --benchmark_filter=...).
+# bench/results/<date>-<shortcommit>.txt, the JSON to a new file beside it. A first
+# argument --large adds the large grids (periodic 2048^2 and 4096^2, free 1024^2 and
+# 2048^2; most of an hour); other arguments go to halfspace_bench (e.g.
+# --benchmark_filter=...).
 set -euo pipefail
+if [[ "${1:-}" == "--large" ]]; then
+  export HALFSPACE_BENCH_LARGE=1
+  shift
+fi
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${HALFSPACE_BENCH_BUILD_DIR:-$root/build-bench}"
 
@@ -30,7 +36,7 @@ cpu_model="$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//' 
   echo "commit:   $(git -C "$root" describe --always --dirty --abbrev=12 2>/dev/null || echo unknown)"
   echo "machine:  $(uname -srm), nproc $(nproc), cpu ${cpu_model:-unknown}"
   echo "load:     $(cut -d' ' -f1-3 /proc/loadavg) (1, 5, 15 min) before the run"
-  echo "command:  scripts/bench.sh $*"
+  echo "command:  scripts/bench.sh ${HALFSPACE_BENCH_LARGE:+--large }$*"
   echo "json:     bench/results/$(basename "$json")"
   echo
 } | tee -a "$text"

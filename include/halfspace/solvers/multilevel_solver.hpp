@@ -42,7 +42,8 @@ class MultilevelSolver final : public ContactSolver {
       std::function<std::unique_ptr<ContactSolver>(const Grid& grid, double tolerance, bool fine)>;
 
   // The fine level's solver is built here, with `fine_tolerance`; coarse ones
-  // only during solve(), each freed before the next finer level starts.
+  // only during solve(), each freed before the next finer level starts (they
+  // are also built once here, so that their FFT planning happens now).
   MultilevelSolver(const Grid& grid, double fine_tolerance, LevelSolverFactory make_level,
                    MultilevelOptions options = {});
 
