@@ -5,7 +5,8 @@ For each grid size a periodic self-affine surface is generated with
 `halfspace generate` and solved under the same mean pressure by
   * Tamaas's PolonskyKeerRey (plain Polonsky-Keer, Rey et al. 2017),
   * halfspace `--solver pk` (plain Polonsky-Keer: the same algorithm),
-  * halfspace `--solver pk-fourier` (the default, Fourier-preconditioned),
+  * halfspace `--solver pk-fourier` (Fourier-preconditioned),
+  * halfspace `--solver pk-multilevel` (the default: pk-fourier started from coarser grids),
 and the script prints iterations, FFT pairs, seconds and the ratios
 Tamaas / halfspace.
 
@@ -133,8 +134,11 @@ def solve_halfspace(exe, surface, workdir, solver, e_star, mean_pressure, tol, t
         attributes = dict(f.attrs)
         result = {
             "iterations": int(attributes["iterations"]),
+            # pk-multilevel's coarse grids count in products of this grid, rounded.
             "fft_pairs": int(attributes["operator_applications"])
-            + int(attributes.get("preconditioner_applications", 0)),
+            + int(attributes.get("preconditioner_applications", 0))
+            + round(float(attributes.get("coarse_operator_work", 0.0))
+                    + float(attributes.get("coarse_preconditioner_work", 0.0))),
             "seconds": float(attributes["solve_seconds"]),
             "own_error": float(attributes["residual"]),
             "residual": float(attributes["residual"]),
@@ -193,7 +197,8 @@ def main():
             run = lambda solver, tol: solve_halfspace(args.halfspace, surface, workdir, solver, args.e_star,
                                                       args.mean_pressure, tol, args.threads, args.fft_planning)
             reference = run("pk-fourier", REFERENCE_TOL)["pressure"]
-            rows = {"halfspace pk": run("pk", args.tol), "halfspace pk-fourier": run("pk-fourier", args.tol)}
+            rows = {"halfspace pk": run("pk", args.tol), "halfspace pk-fourier": run("pk-fourier", args.tol),
+                    "halfspace pk-multilevel": run("pk-multilevel", args.tol)}
             for factor in TAMAAS_TOL_FACTORS:
                 tamaas = solve_tamaas(surface, workdir, args.e_star, args.mean_pressure, factor * args.tol)
                 tamaas["tol"] = factor * args.tol
