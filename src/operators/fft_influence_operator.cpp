@@ -36,9 +36,11 @@ std::size_t transform_cols(const Grid& grid) {
 }
 
 // Periodic transforms have no padding to keep, so the inverse transform may
-// overwrite the input: one real array less.
+// overwrite the input: one real array less. The padded free transforms work
+// in place, in one buffer a third the size of three, and rewrite the zero
+// padding before every forward transform.
 RealFft make_fft(const Grid& grid, FftPlanning planning) {
-  const FftOutput output = grid.periodic() ? FftOutput::overwrite_input : FftOutput::separate;
+  const FftOutput output = grid.periodic() ? FftOutput::overwrite_input : FftOutput::in_place;
   if (grid.dimension() == 1) return RealFft(transform_cols(grid), planning, output);
   return RealFft(transform_rows(grid), transform_cols(grid), planning, output);
 }
@@ -76,6 +78,25 @@ void copy_block(std::size_t ny, std::size_t nx, Copy&& copy) {
       for (std::size_t i = 0; i < nx; ++i) copy(j, i);
     });
   }
+}
+
+// Writes the (ny, nx) block of `values` into the top-left corner of the
+// (rows, stride) buffer and zero everywhere else, in parallel over rows.
+void copy_padded(std::size_t ny, std::size_t nx, std::size_t rows, std::size_t stride,
+                 std::span<const double> values, std::span<double> buffer) {
+  if (rows == 1) {  // a 1D grid: one long row
+    linalg::for_each_index(stride, [&](std::size_t i) { buffer[i] = i < nx ? values[i] : 0.0; });
+    return;
+  }
+  linalg::for_each_row(rows, stride, [&](std::size_t j) {
+    double* row = buffer.data() + j * stride;
+    if (j < ny) {
+      std::copy_n(values.data() + j * nx, nx, row);
+      std::fill(row + nx, row + stride, 0.0);
+    } else {
+      std::fill(row, row + stride, 0.0);
+    }
+  });
 }
 
 }  // namespace
@@ -120,9 +141,8 @@ struct FftInfluenceOperator::Impl {
 
   // Coefficients on the (2ny, 2nx) wrap-around grid, transformed once. They
   // depend on |offset| only (the kernels fold the sign), so the quadrant of
-  // non-negative offsets is evaluated once, into the output buffer (unused
-  // until the first apply), and mirrored. Being even in each axis, they have a
-  // real spectrum up to rounding: only its real part is kept.
+  // non-negative offsets is evaluated once and mirrored. Being even in each
+  // axis, they have a real spectrum up to rounding: only its real part is kept.
   void init_free(double e_star) {
     const std::size_t nx = grid.nx();
     const std::size_t ny = grid.ny();
@@ -131,8 +151,7 @@ struct FftInfluenceOperator::Impl {
     const double dy = grid.dy();
     const std::size_t quadrant_cols = nx + 1;
     const std::size_t quadrant_rows = line ? 1 : ny + 1;
-    std::span<double> quadrant = fft.output();
-    assert(quadrant.size() >= quadrant_rows * quadrant_cols);
+    std::vector<double> quadrant(quadrant_rows * quadrant_cols);
     linalg::for_each_row(quadrant_rows, quadrant_cols, [&](std::size_t dj) {
       for (std::size_t di = 0; di < quadrant_cols; ++di) {
         const double x = static_cast<double>(di) * dx;
@@ -145,18 +164,17 @@ struct FftInfluenceOperator::Impl {
 
     const std::size_t rows = fft.rows();
     const std::size_t cols = fft.cols();
+    const std::size_t stride = fft.real_stride();
     std::span<double> coefficients = fft.input();
     linalg::for_each_row(rows, cols, [&](std::size_t r) {
       const std::size_t dj = line ? 0 : mirrored(r, ny);
       for (std::size_t c = 0; c < cols; ++c)
-        coefficients[r * cols + c] = quadrant[dj * quadrant_cols + mirrored(c, nx)];
+        coefficients[r * stride + c] = quadrant[dj * quadrant_cols + mirrored(c, nx)];
     });
     fft.forward();
     const double inverse_n = 1.0 / static_cast<double>(fft.real_size());
     std::span<const std::complex<double>> spectrum = fft.spectrum();
     for (std::size_t k = 0; k < kernel.size(); ++k) kernel[k] = spectrum[k].real() * inverse_n;
-    // apply() relies on the padding being zero.
-    std::fill(coefficients.begin(), coefficients.end(), 0.0);
   }
 
   Grid grid;
@@ -193,14 +211,17 @@ void FftInfluenceOperator::apply(std::span<const double> pressure, std::span<dou
          displacement.data() + displacement.size() <= pressure.data());
 
   // Periodic grids transform the caller's arrays directly when FFTW allows
-  // it. Otherwise rows of the grid sit at stride fft.cols(): nx (periodic) or
-  // 2nx (free); in the free case only this first block is written, the
-  // padding stays zero.
-  const std::size_t stride = m.fft.cols();
+  // it. Otherwise rows of the grid sit at stride fft.real_stride(); a free
+  // grid's transform (in place) gets its zero padding rewritten around them.
+  const std::size_t stride = m.fft.real_stride();
   const bool direct = m.grid.periodic();
   if (!(direct && m.fft.forward_from(pressure))) {
     std::span<double> input = m.fft.input();
-    copy_block(ny, nx, [&](std::size_t j, std::size_t i) { input[j * stride + i] = pressure[j * nx + i]; });
+    if (direct) {
+      copy_block(ny, nx, [&](std::size_t j, std::size_t i) { input[j * stride + i] = pressure[j * nx + i]; });
+    } else {
+      copy_padded(ny, nx, m.fft.rows(), stride, pressure, input);
+    }
     m.fft.forward();
   }
   std::span<std::complex<double>> spectrum = m.fft.spectrum();
