@@ -35,12 +35,21 @@ std::size_t transform_cols(const Grid& grid) {
   return grid.periodic() ? grid.nx() : 2 * grid.nx();
 }
 
+// Padded transforms from this many points up work in place: below it FFTW's
+// ESTIMATE plans for in-place transforms were up to 1.3x slower than the
+// out-of-place ones (512^2 transform), above it faster, and that is where
+// the memory matters (docs/performance.md).
+constexpr std::size_t kInPlaceMinPoints = std::size_t{1} << 20;
+
 // Periodic transforms have no padding to keep, so the inverse transform may
-// overwrite the input: one real array less. The padded free transforms work
+// overwrite the input: one real array less. Large padded free transforms work
 // in place, in one buffer a third the size of three, and rewrite the zero
-// padding before every forward transform.
+// padding before every forward transform; small ones keep the padding in
+// their own input buffer.
 RealFft make_fft(const Grid& grid, FftPlanning planning) {
-  const FftOutput output = grid.periodic() ? FftOutput::overwrite_input : FftOutput::in_place;
+  const bool large = transform_rows(grid) * transform_cols(grid) >= kInPlaceMinPoints;
+  const FftOutput output =
+      grid.periodic() ? FftOutput::overwrite_input : (large ? FftOutput::in_place : FftOutput::separate);
   if (grid.dimension() == 1) return RealFft(transform_cols(grid), planning, output);
   return RealFft(transform_rows(grid), transform_cols(grid), planning, output);
 }
@@ -175,6 +184,8 @@ struct FftInfluenceOperator::Impl {
     const double inverse_n = 1.0 / static_cast<double>(fft.real_size());
     std::span<const std::complex<double>> spectrum = fft.spectrum();
     for (std::size_t k = 0; k < kernel.size(); ++k) kernel[k] = spectrum[k].real() * inverse_n;
+    // apply() relies on the padding of a separate input buffer being zero.
+    if (!fft.in_place()) std::fill(coefficients.begin(), coefficients.end(), 0.0);
   }
 
   Grid grid;
@@ -219,8 +230,10 @@ void FftInfluenceOperator::apply(std::span<const double> pressure, std::span<dou
     std::span<double> input = m.fft.input();
     if (direct) {
       copy_block(ny, nx, [&](std::size_t j, std::size_t i) { input[j * stride + i] = pressure[j * nx + i]; });
-    } else {
+    } else if (m.fft.in_place()) {
       copy_padded(ny, nx, m.fft.rows(), stride, pressure, input);
+    } else {  // the padding of the separate input buffer stays zero
+      copy_block(ny, nx, [&](std::size_t j, std::size_t i) { input[j * stride + i] = pressure[j * nx + i]; });
     }
     m.fft.forward();
   }

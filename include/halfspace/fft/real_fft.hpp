@@ -46,6 +46,7 @@ class RealFft {
   // Distance between rows of input() and output(): cols(), or 2 (cols/2 + 1)
   // with FftOutput::in_place.
   std::size_t real_stride() const { return in_place_ ? 2 * spectrum_cols() : cols_; }
+  bool in_place() const { return in_place_; }
   std::size_t spectrum_cols() const { return cols_ / 2 + 1; }
   std::size_t spectrum_size() const { return rows_ * spectrum_cols(); }
 
