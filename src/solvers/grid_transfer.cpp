@@ -19,9 +19,8 @@ void restrict_by_average(const Grid& fine, std::span<const double> fine_values, 
   const std::size_t cx = nx / 2;
   assert(fine_values.size() == fine.size() && coarse_values.size() * (fine.dimension() == 1 ? 2 : 4) == fine.size());
   if (fine.dimension() == 1) {
-    linalg::for_each_index(cx, [&](std::size_t i) {
-      coarse_values[i] = 0.5 * (fine_values[2 * i] + fine_values[2 * i + 1]);
-    });
+    linalg::for_each_index(
+        cx, [&](std::size_t i) { coarse_values[i] = 0.5 * (fine_values[2 * i] + fine_values[2 * i + 1]); });
     return;
   }
   linalg::for_each_row(fine.ny() / 2, nx, [&](std::size_t jc) {

@@ -16,7 +16,8 @@ void MultilevelOptions::validate() const {
     throw InputError(fmt::format("coarse tolerance = {} is invalid: allowed range is (0, 1)", coarse_tolerance));
   }
   if (min_cells_per_axis < 2) {
-    throw InputError(fmt::format("minimum coarse cells per axis = {} is invalid: must be at least 2", min_cells_per_axis));
+    throw InputError(
+        fmt::format("minimum coarse cells per axis = {} is invalid: must be at least 2", min_cells_per_axis));
   }
 }
 
@@ -70,8 +71,8 @@ SolveResult MultilevelSolver::solve(std::span<const double> initial_gap, const L
     return result;
   }
   if (initial_gap.size() != grid_.size()) {
-    throw InputError(fmt::format("initial gap has {} entries, but the grid has {} cells", initial_gap.size(),
-                                 grid_.size()));
+    throw InputError(
+        fmt::format("initial gap has {} entries, but the grid has {} cells", initial_gap.size(), grid_.size()));
   }
   loading.validate();
   SolveResult record;

@@ -48,7 +48,8 @@ TEST(MultilevelSolverTest, MatchesTheSingleGridSolverAndUsesTheCoarseGrids) {
     const Grid grid = Grid::plane(128, 128, 1.0, 1.0, boundary);
     const Eigen::ArrayXd gap = rough_gap(grid, 7);
     const Loading loading = Loading::mean_pressure(0.004);  // about 8% contact
-    const SolveResult single = make_solver(grid, kEStar, settings("pk-fourier"))->solve({gap.data(), grid.size()}, loading);
+    const SolveResult single =
+        make_solver(grid, kEStar, settings("pk-fourier"))->solve({gap.data(), grid.size()}, loading);
     const SolveResult multi =
         make_solver(grid, kEStar, settings("pk-multilevel"))->solve({gap.data(), grid.size()}, loading);
     ASSERT_TRUE(single.converged()) << single.message;
@@ -73,8 +74,8 @@ TEST(MultilevelSolverTest, SkipsTheCoarseGridsWhenItCannotOrNeedNotUseThem) {
   // Odd side: no coarser grid of the same domain.
   const Grid odd = Grid::plane(65, 64, 1.0, 1.0, Boundary::periodic);
   const Eigen::ArrayXd odd_gap = rough_gap(odd, 3);
-  const SolveResult odd_result =
-      make_solver(odd, kEStar, settings("pk-multilevel"))->solve({odd_gap.data(), odd.size()}, Loading::mean_pressure(0.004));
+  const SolveResult odd_result = make_solver(odd, kEStar, settings("pk-multilevel"))
+                                     ->solve({odd_gap.data(), odd.size()}, Loading::mean_pressure(0.004));
   ASSERT_TRUE(odd_result.converged()) << odd_result.message;
   EXPECT_EQ(odd_result.coarse_levels, 0);
 
@@ -85,8 +86,8 @@ TEST(MultilevelSolverTest, SkipsTheCoarseGridsWhenItCannotOrNeedNotUseThem) {
   const SolveResult cold = solver->solve({gap.data(), grid.size()}, Loading::mean_pressure(0.004));
   ASSERT_TRUE(cold.converged()) << cold.message;
   EXPECT_EQ(cold.coarse_levels, 1);
-  const SolveResult warm = solver->solve({gap.data(), grid.size()}, Loading::mean_pressure(0.005),
-                                         {cold.pressure.data(), grid.size()});
+  const SolveResult warm =
+      solver->solve({gap.data(), grid.size()}, Loading::mean_pressure(0.005), {cold.pressure.data(), grid.size()});
   ASSERT_TRUE(warm.converged()) << warm.message;
   EXPECT_EQ(warm.coarse_levels, 0);
   EXPECT_EQ(warm.solver, "multilevel-polonsky-keer");

@@ -9,12 +9,11 @@
 // work per iteration.
 #pragma once
 
+#include <Eigen/Core>
 #include <functional>
 #include <memory>
 #include <span>
 #include <string_view>
-
-#include <Eigen/Core>
 
 #include "halfspace/grid.hpp"
 #include "halfspace/solvers/contact_solver.hpp"
