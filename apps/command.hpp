@@ -3,11 +3,10 @@
 // main.cpp.
 #pragma once
 
+#include <CLI/CLI.hpp>
 #include <functional>
 #include <string>
 #include <vector>
-
-#include <CLI/CLI.hpp>
 
 namespace halfspace::app {
 

@@ -50,8 +50,8 @@ constexpr OptionHelp kOptions[] = {
     {"output", "FILE", "the height-map file (HDF5), required; replaced if it exists"},
 };
 
-constexpr const char* kSelfAffineKeys[] = {"hurst", "cutoff-short", "rolloff", "cutoff-long", "rms-height",
-                                           "rms-slope", "seed"};
+constexpr const char* kSelfAffineKeys[] = {"hurst",      "cutoff-short", "rolloff", "cutoff-long",
+                                           "rms-height", "rms-slope",    "seed"};
 
 struct Generated {
   Grid grid;
@@ -72,7 +72,8 @@ std::optional<double> number(const GivenOptions& given, std::string_view key) {
 double positive(const GivenOptions& given, std::string_view key, std::string_view unit) {
   const std::optional<double> value = number(given, key);
   if (!value) throw InputError(fmt::format("--kind {} needs --{} ({})", given.find("kind")->second, key, unit));
-  if (!(*value > 0.0)) throw InputError(fmt::format("{} is invalid: must be positive ({})", describe(given, key), unit));
+  if (!(*value > 0.0))
+    throw InputError(fmt::format("{} is invalid: must be positive ({})", describe(given, key), unit));
   return *value;
 }
 
@@ -220,17 +221,18 @@ int run_generate(const GivenOptions& given, bool quiet, const std::vector<std::s
 
   if (!quiet) {
     const Grid& grid = surface.grid;
-    const auto row = [](std::string_view label, const std::string& value) { fmt::print("  {:<12} {}\n", label, value); };
+    const auto row = [](std::string_view label, const std::string& value) {
+      fmt::print("  {:<12} {}\n", label, value);
+    };
     fmt::print("halfspace {} ({}) generate\n", kVersion, kGitHash);
     row("surface", surface.metadata.source);
-    row("grid", grid.dimension() == 1
-                    ? fmt::format("{} cells (1D), dx = {:.6g} m", grid.nx(), grid.dx())
-                    : fmt::format("{} cells (2D), dx = {:.6g} m, dy = {:.6g} m", grid.shape_string(), grid.dx(),
-                                  grid.dy()));
+    row("grid", grid.dimension() == 1 ? fmt::format("{} cells (1D), dx = {:.6g} m", grid.nx(), grid.dx())
+                                      : fmt::format("{} cells (2D), dx = {:.6g} m, dy = {:.6g} m", grid.shape_string(),
+                                                    grid.dx(), grid.dy()));
     row("periodic", surface.metadata.periodic ? "yes" : "no");
     row("rms height", fmt::format("{:.6g} m", statistics.rms_height));
-    row("rms slope", fmt::format("{:.6g} ({})", statistics.rms_slope,
-                                 grid.periodic() ? "spectral" : "finite differences"));
+    row("rms slope",
+        fmt::format("{:.6g} ({})", statistics.rms_slope, grid.periodic() ? "spectral" : "finite differences"));
     row("output", output);
   }
   return kExitOk;
@@ -246,13 +248,14 @@ Command add_generate_command(CLI::App& program) {
   auto quiet = std::make_shared<bool>(false);
   for (const OptionHelp& option : kOptions) {
     const std::string key = option.key;
-    generate->add_option_function<std::string>(
-                fmt::format("--{}", key), [given, key](const std::string& value) { (*given)[key] = value; },
-                option.help)
+    generate
+        ->add_option_function<std::string>(
+            fmt::format("--{}", key), [given, key](const std::string& value) { (*given)[key] = value; }, option.help)
         ->type_name(option.value_name);
   }
   generate->add_flag("--quiet", *quiet, "print nothing unless there is an error");
-  return {generate, [given, quiet](const std::vector<std::string>& argv) { return run_generate(*given, *quiet, argv); }};
+  return {generate,
+          [given, quiet](const std::vector<std::string>& argv) { return run_generate(*given, *quiet, argv); }};
 }
 
 }  // namespace halfspace::app

@@ -1,7 +1,6 @@
 // Entry point of the `halfspace` program: `--version`, `--help` and the
 // subcommands. Every error ends here as one "error: ..." line on stderr.
 #include <fmt/format.h>
-
 #include <malloc.h>
 
 #include <CLI/CLI.hpp>

@@ -57,9 +57,9 @@ int run_paper(const PaperOptions& options) {
   std::vector<int> numbers{1, 2, 3, 4};
   if (options.test) numbers = {paper::table1_test(*options.test).number};
   const std::optional<PlotTool> plot =
-      options.no_figures ? std::nullopt
-                         : std::optional<PlotTool>(find_plot_tool({"halfspace paper", "use --no-figures",
-                                                                   options.plot_script}));
+      options.no_figures
+          ? std::nullopt
+          : std::optional<PlotTool>(find_plot_tool({"halfspace paper", "use --no-figures", options.plot_script}));
 
   const fs::path directory = options.output_dir;
   std::error_code error;

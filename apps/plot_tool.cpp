@@ -135,9 +135,9 @@ std::string run_plot_tool(const PlotTool& tool, std::string_view subcommand, con
     return fmt::format("'{}' could not be started: {}", join_command_line(command), std::strerror(status.spawn_error));
   }
   if (status.exit_code != 0) {
-    return fmt::format("'{}' failed ({})", join_command_line(command),
-                       status.exit_code < 0 ? std::string("killed by a signal")
-                                            : fmt::format("exit status {}", status.exit_code));
+    return fmt::format(
+        "'{}' failed ({})", join_command_line(command),
+        status.exit_code < 0 ? std::string("killed by a signal") : fmt::format("exit status {}", status.exit_code));
   }
   return {};
 }

@@ -39,7 +39,9 @@ Progress::Progress(bool enabled, std::size_t steps, double tolerance)
   }
 }
 
-Progress::~Progress() { clear(); }
+Progress::~Progress() {
+  clear();
+}
 
 void Progress::start_step(std::size_t step, std::string load) {
   step_ = step;
@@ -66,9 +68,9 @@ void Progress::draw(int iteration, double residual) {
   }
   step_fraction = std::clamp(step_fraction, 0.0, 0.99);
   const double fraction = (static_cast<double>(step_) + step_fraction) / static_cast<double>(steps_);
-  const std::string remaining =
-      fraction >= kMinFractionForEstimate ? fmt::format("~{}", format_duration(elapsed * (1.0 - fraction) / fraction))
-                                          : std::string("?");
+  const std::string remaining = fraction >= kMinFractionForEstimate
+                                    ? fmt::format("~{}", format_duration(elapsed * (1.0 - fraction) / fraction))
+                                    : std::string("?");
 
   std::string line;
   if (steps_ > 1) line += fmt::format("step {}/{} ({})  ", step_ + 1, steps_, load_);

@@ -28,7 +28,8 @@ int run_solve(const SolveSetup& setup) {
   if (setup.load_values.size() > 1) return run_sweep(setup);
   // Threads first: the FFT plans use the thread count in force when made.
   set_threads(setup.threads);
-  const std::optional<PlotTool> plot = setup.plot ? std::optional<PlotTool>(find_plot_tool({"--plot", "drop --plot", {}})) : std::nullopt;
+  const std::optional<PlotTool> plot =
+      setup.plot ? std::optional<PlotTool>(find_plot_tool({"--plot", "drop --plot", {}})) : std::nullopt;
   Progress progress(!setup.quiet, 1, setup.solver.tolerance);
   solvers::SolverSettings settings = setup.solver;
   settings.progress = progress.callback();

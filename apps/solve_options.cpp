@@ -95,9 +95,11 @@ const std::array kOptions{
                "force over the domain area (Pa); a list or START:STOP:COUNT makes a sweep"},
     OptionSpec{"approach", &SolveOptions::approach, Kind::numbers, kLoad, "M",
                "imposed rigid-body approach (m): displacement control; a list or START:STOP:COUNT makes a sweep"},
-    OptionSpec{"solver", &SolveOptions::solver, Kind::text, kSolver, "NAME", "contact solver: pk-multilevel (pk-fourier started from coarser grids), pk-fourier (Polonsky-Keer with "
-               "Fourier preconditioner), pk (plain Polonsky-Keer), "
-               "lemke (Lemke pivoting, dense, small grids), lcpquad (the paper's QP, dense, small grids) [pk-multilevel]"},
+    OptionSpec{
+        "solver", &SolveOptions::solver, Kind::text, kSolver, "NAME",
+        "contact solver: pk-multilevel (pk-fourier started from coarser grids), pk-fourier (Polonsky-Keer with "
+        "Fourier preconditioner), pk (plain Polonsky-Keer), "
+        "lemke (Lemke pivoting, dense, small grids), lcpquad (the paper's QP, dense, small grids) [pk-multilevel]"},
     OptionSpec{"tol", &SolveOptions::tol, Kind::number, kSolver, "X", "relative residual tolerance [1e-10]"},
     OptionSpec{"max-iter", &SolveOptions::max_iter, Kind::integer, kSolver, "N", "iteration limit [10000]"},
     OptionSpec{"threads", &SolveOptions::threads, Kind::integer, kSolver, "N",
@@ -173,8 +175,7 @@ void set_from_text(SolveOptions& options, const OptionSpec& spec, const std::str
       options.*std::get<std::optional<double> SolveOptions::*>(spec.field) = parse_number(text, what);
       break;
     case Kind::numbers:
-      options.*std::get<std::optional<std::vector<double>> SolveOptions::*>(spec.field) =
-          parse_number_list(text, what);
+      options.*std::get<std::optional<std::vector<double>> SolveOptions::*>(spec.field) = parse_number_list(text, what);
       break;
     case Kind::integer:
       options.*std::get<std::optional<long long> SolveOptions::*>(spec.field) = parse_integer(text, what);
@@ -245,7 +246,8 @@ void set_from_toml(SolveOptions& options, const OptionSpec& spec, const toml::no
         values = parse_number_list(*node.value<std::string>(), what);
       } else if (const toml::array* array = node.as_array(); array != nullptr && !array->empty()) {
         for (const toml::node& element : *array) {
-          if (!element.is_number()) throw wrong_type("a number, an array of numbers or a string such as \"1e5:1e7:10\"");
+          if (!element.is_number())
+            throw wrong_type("a number, an array of numbers or a string such as \"1e5:1e7:10\"");
           values.push_back(*element.value<double>());
         }
       } else {

@@ -118,8 +118,8 @@ std::pair<Loading, std::vector<double>> loading_from(const SolveOptions& o) {
     if (values.size() == 1) {
       require_positive(o, key, values[k], unit);
     } else if (!(std::isfinite(values[k]) && values[k] > 0.0)) {
-      throw InputError(fmt::format("{} is invalid: every value must be positive ({}); value {} is {}",
-                                   o.describe(key), unit, k + 1, values[k]));
+      throw InputError(fmt::format("{} is invalid: every value must be positive ({}); value {} is {}", o.describe(key),
+                                   unit, k + 1, values[k]));
     }
   }
   const Loading loading{mode, values.front()};
@@ -132,8 +132,8 @@ solvers::SolverSettings solver_settings_from(const SolveOptions& o) {
   if (o.solver) {
     const std::vector<std::string> names = solvers::solver_names();
     if (std::find(names.begin(), names.end(), *o.solver) == names.end()) {
-      throw InputError(fmt::format("{} is invalid: the solver must be one of {}", o.describe("solver"),
-                                   fmt::join(names, ", ")));
+      throw InputError(
+          fmt::format("{} is invalid: the solver must be one of {}", o.describe("solver"), fmt::join(names, ", ")));
     }
     solver.name = *o.solver;
   }

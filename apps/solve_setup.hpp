@@ -23,8 +23,8 @@ struct SolveSetup {
   std::string height_source;  // "file.h5:/height" or "sphere (radius = 0.01 m)"
   // Height-map preparation steps, one line each; empty if none.
   std::vector<std::string> preparation;
-  double e_star = 0.0;        // Pa
-  Loading loading;  // a single solve's load; the first step of a sweep
+  double e_star = 0.0;             // Pa
+  Loading loading;                 // a single solve's load; the first step of a sweep
   solvers::SolverSettings solver;  // name, tolerance, iterations, FFT planning
   int threads = 1;
   std::filesystem::path output;

@@ -56,8 +56,8 @@ void print_sweep_summary(std::FILE* out, const SolveSetup& setup, std::span<cons
   };
   fmt::print(out, "halfspace {} ({}) solve: load sweep\n", kVersion, kGitHash);
   row("surface", setup.height_source);
-  row("grid", fmt::format("{} cells ({}D), {} boundary", grid.shape_string(), grid.dimension(),
-                          to_string(grid.boundary())));
+  row("grid",
+      fmt::format("{} cells ({}D), {} boundary", grid.shape_string(), grid.dimension(), to_string(grid.boundary())));
   row("E*", fmt::format("{:.6g} Pa", setup.e_star));
   row("load", fmt::format("{} sweep, {} steps from {:.6g} to {:.6g} {}", load_name(mode), steps.size(),
                           setup.load_values.front(), setup.load_values.back(), load_unit(mode, grid)));
@@ -100,7 +100,8 @@ std::string describe_load(ControlMode mode, double value, const Grid& grid) {
 int run_sweep(const SolveSetup& setup) {
   // Threads first: the FFT plans use the thread count in force when made.
   set_threads(setup.threads);
-  const std::optional<PlotTool> plot = setup.plot ? std::optional<PlotTool>(find_plot_tool({"--plot", "drop --plot", {}})) : std::nullopt;
+  const std::optional<PlotTool> plot =
+      setup.plot ? std::optional<PlotTool>(find_plot_tool({"--plot", "drop --plot", {}})) : std::nullopt;
 
   Progress progress(!setup.quiet, setup.load_values.size(), setup.solver.tolerance);
   solvers::SolverSettings settings = setup.solver;
@@ -112,9 +113,8 @@ int run_sweep(const SolveSetup& setup) {
   options.on_step_start = [&](std::size_t step, std::size_t, const Loading& loading) {
     progress.start_step(step, describe_load(loading.mode, loading.value, setup.grid));
   };
-  const std::vector<solvers::SweepStep> steps =
-      solvers::run_load_sweep(*solver, setup.grid, {initial_gap.data(), setup.grid.size()}, setup.loading.mode,
-                              setup.load_values, options);
+  const std::vector<solvers::SweepStep> steps = solvers::run_load_sweep(
+      *solver, setup.grid, {initial_gap.data(), setup.grid.size()}, setup.loading.mode, setup.load_values, options);
   progress.clear();
 
   const std::span<const double> heights(setup.heights.data(), static_cast<std::size_t>(setup.heights.size()));

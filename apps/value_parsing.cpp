@@ -145,8 +145,8 @@ std::vector<double> parse_number_list(std::string_view text, std::string_view wh
   const double stop = number(parts[1]);
   const long long count = parse_integer(trimmed(parts[2]), what);
   if (count < 2 || count > kMaxListValues) {
-    throw InputError(fmt::format("{} is invalid: the range needs a COUNT from 2 to {} (got {})", what, kMaxListValues,
-                                 count));
+    throw InputError(
+        fmt::format("{} is invalid: the range needs a COUNT from 2 to {} (got {})", what, kMaxListValues, count));
   }
   if (!(start > 0.0 && stop > 0.0)) {
     throw InputError(fmt::format("{} is invalid: a range is log-spaced, so START and STOP must be positive", what));
@@ -155,7 +155,8 @@ std::vector<double> parse_number_list(std::string_view text, std::string_view wh
   std::vector<double> values(static_cast<std::size_t>(count));
   const double ratio = std::log(stop / start);
   for (long long k = 0; k < count; ++k) {
-    values[static_cast<std::size_t>(k)] = start * std::exp(ratio * static_cast<double>(k) / static_cast<double>(count - 1));
+    values[static_cast<std::size_t>(k)] =
+        start * std::exp(ratio * static_cast<double>(k) / static_cast<double>(count - 1));
   }
   values.front() = start;
   values.back() = stop;

@@ -2,9 +2,8 @@
 // pair of the same transform size (2n per axis for free grids), thread count and
 // planning (FFTW_ESTIMATE, and FFTW_MEASURE for the *_measure rows). Holds
 // halfspace_bench's main(). HALFSPACE_BENCH_LARGE=1 adds the large sizes.
-#include <fftw3.h>
-
 #include <benchmark/benchmark.h>
+#include <fftw3.h>
 
 #include <chrono>
 #include <cstddef>
@@ -18,12 +17,12 @@
 #include <tuple>
 #include <vector>
 
+#include "bare_fft_pair.hpp"
 #include "halfspace/fft/fft_planning.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
 #include "halfspace/threads.hpp"
 #include "halfspace/version.hpp"
-#include "bare_fft_pair.hpp"
 
 namespace halfspace {
 namespace {
@@ -31,8 +30,8 @@ namespace {
 using bench::BareFftPair;
 using Clock = std::chrono::steady_clock;
 
-constexpr double kEStar = 1.1e11;   // Pa; the value does not change the cost
-constexpr double kSpacing = 1e-6;   // m
+constexpr double kEStar = 1.1e11;  // Pa; the value does not change the cost
+constexpr double kSpacing = 1e-6;  // m
 constexpr std::uint64_t kSeed = 42;
 const std::vector<int> kThreadCounts = {1, 2};
 
@@ -159,8 +158,7 @@ const bool kRegistered = [] {
     b->ArgName("threads")->UseRealTime()->Unit(benchmark::kMicrosecond);
     for (int t : kThreadCounts) b->Arg(t);
   };
-  const auto register_size = [&](int dimension, std::size_t t, const OperatorKind& periodic,
-                                 const OperatorKind& free) {
+  const auto register_size = [&](int dimension, std::size_t t, const OperatorKind& periodic, const OperatorKind& free) {
     const std::string tag = dimension == 1 ? "1d/" : "2d/";
     configure(benchmark::RegisterBenchmark(("BM_BareFftPair/" + tag + std::to_string(t)).c_str(), bare_fft_pair,
                                            dimension, t));
@@ -176,9 +174,9 @@ const bool kRegistered = [] {
   }
   const OperatorKind periodic_2d_measure{"periodic_2d_measure", 2, Boundary::periodic, FftPlanning::measure};
   for (std::size_t t : kMeasuredSizes2d) {
-    configure(benchmark::RegisterBenchmark(
-        ("BM_OperatorApply/" + periodic_2d_measure.name + "/" + std::to_string(t)).c_str(), operator_apply,
-        periodic_2d_measure, t));
+    configure(
+        benchmark::RegisterBenchmark(("BM_OperatorApply/" + periodic_2d_measure.name + "/" + std::to_string(t)).c_str(),
+                                     operator_apply, periodic_2d_measure, t));
   }
   return true;
 }();
@@ -197,9 +195,11 @@ int main(int argc, char** argv) {
   benchmark::AddCustomContext("halfspace_version", halfspace::kVersion);
   benchmark::AddCustomContext("halfspace_git", halfspace::kGitHash);
   benchmark::AddCustomContext("fftw_version", fftw_version);
-  benchmark::AddCustomContext("fft_planning",
-                              "FFTW_ESTIMATE (operator default and bare pair); *_measure rows: FFTW_MEASURE for both, no wisdom file");
-  benchmark::AddCustomContext("large_sizes", halfspace::bench::large_sizes_requested() ? "yes" : "no (HALFSPACE_BENCH_LARGE=1 adds them)");
+  benchmark::AddCustomContext(
+      "fft_planning",
+      "FFTW_ESTIMATE (operator default and bare pair); *_measure rows: FFTW_MEASURE for both, no wisdom file");
+  benchmark::AddCustomContext(
+      "large_sizes", halfspace::bench::large_sizes_requested() ? "yes" : "no (HALFSPACE_BENCH_LARGE=1 adds them)");
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();

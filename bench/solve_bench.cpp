@@ -4,10 +4,10 @@
 // self-affine rough surfaces on periodic grids, both refined in a fixed domain
 // (rough_periodic_2d) and in a domain growing at fixed spacing
 // (rough_domain_2d). HALFSPACE_BENCH_LARGE=1 adds the large grids.
+#include <benchmark/benchmark.h>
 #include <fftw3.h>
 
-#include <benchmark/benchmark.h>
-
+#include <Eigen/Core>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -23,8 +23,7 @@
 #include <tuple>
 #include <vector>
 
-#include <Eigen/Core>
-
+#include "bare_fft_pair.hpp"
 #include "halfspace/geometry/builtin_surface.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
@@ -32,7 +31,6 @@
 #include "halfspace/solvers/solver_factory.hpp"
 #include "halfspace/surface/self_affine.hpp"
 #include "halfspace/threads.hpp"
-#include "bare_fft_pair.hpp"
 
 namespace halfspace {
 namespace {
@@ -51,8 +49,8 @@ constexpr double kForce = 10.0;         // N
 // C(q) ~ q^(-2(1 + H)), between the box mode 2 pi / L and kCutoffModes box
 // modes (4 cells per shortest wavelength on the 256^2 grid, 16 on 1024^2).
 constexpr double kHurst = 0.8;
-constexpr double kBoxSize = 1e-3;     // m
-constexpr double kRmsHeight = 1e-6;   // m
+constexpr double kBoxSize = 1e-3;    // m
+constexpr double kRmsHeight = 1e-6;  // m
 
 // Growing domain: the surfaces of docs/performance-scale.md, spacing 1 um,
 // power law from the domain size down to 4 um, so an n x n grid is n um
@@ -243,8 +241,8 @@ void solve(benchmark::State& state, const SolveCase& solve_case, std::size_t n) 
   const double apply_seconds = seconds_per_apply(*setup->op, pressure, scratch);
   const double preconditioner_seconds =
       setup->preconditioner ? seconds_per_apply(*setup->preconditioner, pressure, scratch) : 0.0;
-  const double floor_seconds = setup->floor->seconds_per_pair(std::max<std::int64_t>(
-      3, static_cast<std::int64_t>(0.2 / std::max(apply_seconds, 1e-6))));
+  const double floor_seconds = setup->floor->seconds_per_pair(
+      std::max<std::int64_t>(3, static_cast<std::int64_t>(0.2 / std::max(apply_seconds, 1e-6))));
   const double applications = result.operator_applications;
   const double preconditioner_applications = result.preconditioner_applications;
   state.counters["threads"] = threads;

@@ -41,8 +41,8 @@ int main(int argc, char** argv) {
     std::vector<double> pressures;
     for (const double x : {0.005, 0.01, 0.02, 0.05}) pressures.push_back(x * e_star * roughness.rms_slope);
     const Eigen::ArrayXd gap = geometry::initial_gap_from_heights(heights);
-    const std::vector<solvers::SweepStep> steps = solvers::run_load_sweep(
-        *solver, grid, {gap.data(), grid.size()}, ControlMode::mean_pressure, pressures);
+    const std::vector<solvers::SweepStep> steps =
+        solvers::run_load_sweep(*solver, grid, {gap.data(), grid.size()}, ControlMode::mean_pressure, pressures);
 
     // 4. A/A0 over p / (E* h'_rms): kappa, about 2 at small loads.
     for (const solvers::SweepStep& step : steps) {

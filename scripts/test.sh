@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
-# Install what is missing, build, and run the whole test suite.
+# Install what is missing, build, run the whole test suite, and check the
+# C++ formatting.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$root/scripts/install-deps.sh"
 "$root/scripts/build.sh"
 ctest --test-dir "${HALFSPACE_BUILD_DIR:-$root/build}" --output-on-failure -j "$(nproc)"
+# The sources must match .clang-format (scripts/check-format.sh --fix repairs them).
+"$root/scripts/check-format.sh"

@@ -1,9 +1,9 @@
 // Grid construction and validation.
 #include "halfspace/grid.hpp"
 
-#include <cmath>
-
 #include <fmt/format.h>
+
+#include <cmath>
 
 #include "halfspace/error.hpp"
 

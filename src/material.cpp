@@ -1,9 +1,9 @@
 // Composite modulus of two elastic bodies, with input validation.
 #include "halfspace/material.hpp"
 
-#include <cmath>
-
 #include <fmt/format.h>
+
+#include <cmath>
 
 #include "halfspace/error.hpp"
 

@@ -26,9 +26,9 @@ void write_height_map(const std::filesystem::path& path, const Grid& grid, std::
     write_int64_attribute(file, "nx", static_cast<std::int64_t>(grid.nx()));
     write_int64_attribute(file, "ny", static_cast<std::int64_t>(grid.ny()));
     write_string_attribute(file, "unit", "m");
-    write_string_attribute(file, "layout",
-                           grid.dimension() == 1 ? "height[i] = h(x = i*dx)"
-                                                 : "height[j][i] = h(x = i*dx, y = j*dy), shape (ny, nx)");
+    write_string_attribute(
+        file, "layout",
+        grid.dimension() == 1 ? "height[i] = h(x = i*dx)" : "height[j][i] = h(x = i*dx, y = j*dy), shape (ny, nx)");
     write_int64_attribute(file, "periodic", metadata.periodic ? 1 : 0);
     write_string_attribute(file, "source", metadata.source);
     write_string_attribute(file, "command_line", metadata.command_line);

@@ -356,7 +356,9 @@ void write_image(const std::filesystem::path& file_path, const std::vector<char>
 // The conventions above, for the other writers (hdf5_writing.hpp).
 namespace detail {
 
-void write_double_attribute(hid_t location, const char* name, double value) { attach_double(location, name, value); }
+void write_double_attribute(hid_t location, const char* name, double value) {
+  attach_double(location, name, value);
+}
 void write_int64_attribute(hid_t location, const char* name, std::int64_t value) {
   attach_int64(location, name, value);
 }

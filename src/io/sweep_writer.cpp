@@ -25,8 +25,9 @@ using detail::write_string_attribute;
 
 void check_field(std::string_view field, std::size_t step, std::size_t size, const Grid& grid) {
   if (size != grid.size()) {
-    throw InputError(fmt::format("write_sweep_result: field '{}' of step {} has {} values but the grid has {} cells ({})",
-                                 field, step, size, grid.size(), grid.shape_string()));
+    throw InputError(
+        fmt::format("write_sweep_result: field '{}' of step {} has {} values but the grid has {} cells ({})", field,
+                    step, size, grid.size(), grid.shape_string()));
   }
 }
 
@@ -127,9 +128,10 @@ void write_sweep_result(const std::filesystem::path& path, const Grid& grid, std
   root_metadata.contact_statistics = steps.back().statistics;
 
   detail::write_file_atomically(path, [&](hid_t file) {
-    write_array_dataset(file, "/height", grid.dimension() == 1 ? std::vector<hsize_t>{grid.nx()}
-                                                               : std::vector<hsize_t>{grid.ny(), grid.nx()},
-                        H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, height.data(), "m");
+    write_array_dataset(
+        file, "/height",
+        grid.dimension() == 1 ? std::vector<hsize_t>{grid.nx()} : std::vector<hsize_t>{grid.ny(), grid.nx()},
+        H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, height.data(), "m");
     const Group steps_group = create_group(file, "steps");
     for (std::size_t k = 0; k < steps.size(); ++k) {
       write_step(steps_group.get(), step_name(k, steps.size()), grid, steps[k]);

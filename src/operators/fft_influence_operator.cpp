@@ -91,8 +91,8 @@ void copy_block(std::size_t ny, std::size_t nx, Copy&& copy) {
 
 // Writes the (ny, nx) block of `values` into the top-left corner of the
 // (rows, stride) buffer and zero everywhere else, in parallel over rows.
-void copy_padded(std::size_t ny, std::size_t nx, std::size_t rows, std::size_t stride,
-                 std::span<const double> values, std::span<double> buffer) {
+void copy_padded(std::size_t ny, std::size_t nx, std::size_t rows, std::size_t stride, std::span<const double> values,
+                 std::span<double> buffer) {
   if (rows == 1) {  // a 1D grid: one long row
     linalg::for_each_index(stride, [&](std::size_t i) { buffer[i] = i < nx ? values[i] : 0.0; });
     return;

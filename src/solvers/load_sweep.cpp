@@ -12,23 +12,54 @@
 namespace halfspace::solvers {
 namespace {
 
-double load_of(const SweepStep& s) { return s.loading.value; }
-double mean_pressure_of(const SweepStep& s) { return s.result.mean_pressure; }
-double total_force_of(const SweepStep& s) { return s.result.total_force; }
-double approach_of(const SweepStep& s) { return s.result.approach; }
-double contact_fraction_of(const SweepStep& s) { return s.statistics.contact_fraction; }
-double mean_gap_of(const SweepStep& s) { return s.statistics.mean_gap; }
-double rms_gap_of(const SweepStep& s) { return s.statistics.rms_gap; }
-double free_volume_of(const SweepStep& s) { return s.statistics.free_volume; }
-double max_pressure_of(const SweepStep& s) { return s.result.max_pressure; }
-double clusters_of(const SweepStep& s) { return static_cast<double>(s.statistics.clusters()); }
-double iterations_of(const SweepStep& s) { return s.result.iterations; }
-double residual_of(const SweepStep& s) { return s.result.residual; }
-double seconds_of(const SweepStep& s) { return s.result.wall_seconds; }
-double converged_of(const SweepStep& s) { return s.result.converged() ? 1.0 : 0.0; }
+double load_of(const SweepStep& s) {
+  return s.loading.value;
+}
+double mean_pressure_of(const SweepStep& s) {
+  return s.result.mean_pressure;
+}
+double total_force_of(const SweepStep& s) {
+  return s.result.total_force;
+}
+double approach_of(const SweepStep& s) {
+  return s.result.approach;
+}
+double contact_fraction_of(const SweepStep& s) {
+  return s.statistics.contact_fraction;
+}
+double mean_gap_of(const SweepStep& s) {
+  return s.statistics.mean_gap;
+}
+double rms_gap_of(const SweepStep& s) {
+  return s.statistics.rms_gap;
+}
+double free_volume_of(const SweepStep& s) {
+  return s.statistics.free_volume;
+}
+double max_pressure_of(const SweepStep& s) {
+  return s.result.max_pressure;
+}
+double clusters_of(const SweepStep& s) {
+  return static_cast<double>(s.statistics.clusters());
+}
+double iterations_of(const SweepStep& s) {
+  return s.result.iterations;
+}
+double residual_of(const SweepStep& s) {
+  return s.result.residual;
+}
+double seconds_of(const SweepStep& s) {
+  return s.result.wall_seconds;
+}
+double converged_of(const SweepStep& s) {
+  return s.result.converged() ? 1.0 : 0.0;
+}
 
 constexpr std::array kColumns{
-    SummaryColumn{"load", "", "the controlled value of the step: force (N, N/m in 1D), mean pressure (Pa) or approach (m), as load_mode says", load_of},
+    SummaryColumn{
+        "load", "",
+        "the controlled value of the step: force (N, N/m in 1D), mean pressure (Pa) or approach (m), as load_mode says",
+        load_of},
     SummaryColumn{"mean_pressure", "Pa", "total force over the domain area", mean_pressure_of},
     SummaryColumn{"total_force", "force", "sum of pressure times cell area", total_force_of},
     SummaryColumn{"approach", "m", "rigid-body approach", approach_of},
@@ -68,10 +99,10 @@ std::vector<SweepStep> run_load_sweep(ContactSolver& solver, const Grid& grid, s
     mean_gap /= static_cast<double>(initial_gap.size());
     for (const double value : values) {
       if (value >= mean_gap) {
-        throw InputError(fmt::format(
-            "approach = {} m is invalid for a periodic surface: it must be below the mean initial gap {} m "
-            "(full contact needs infinite pressure there)",
-            value, mean_gap));
+        throw InputError(
+            fmt::format("approach = {} m is invalid for a periodic surface: it must be below the mean initial gap {} m "
+                        "(full contact needs infinite pressure there)",
+                        value, mean_gap));
       }
     }
   }
@@ -94,6 +125,8 @@ std::vector<SweepStep> run_load_sweep(ContactSolver& solver, const Grid& grid, s
   return steps;
 }
 
-std::span<const SummaryColumn> summary_columns() { return kColumns; }
+std::span<const SummaryColumn> summary_columns() {
+  return kColumns;
+}
 
 }  // namespace halfspace::solvers

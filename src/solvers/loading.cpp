@@ -1,9 +1,9 @@
 // Names and validation of the loading modes.
 #include "halfspace/solvers/loading.hpp"
 
-#include <cmath>
-
 #include <fmt/format.h>
+
+#include <cmath>
 
 #include "halfspace/error.hpp"
 
@@ -11,9 +11,12 @@ namespace halfspace {
 
 std::string_view to_string(ControlMode mode) {
   switch (mode) {
-    case ControlMode::force: return "force";
-    case ControlMode::mean_pressure: return "mean_pressure";
-    case ControlMode::approach: return "approach";
+    case ControlMode::force:
+      return "force";
+    case ControlMode::mean_pressure:
+      return "mean_pressure";
+    case ControlMode::approach:
+      return "approach";
   }
   return "unknown";
 }

@@ -4,12 +4,12 @@
 // says little about how well the contact conditions hold.
 #include "halfspace/solvers/polonsky_keer.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <utility>
-
-#include <fmt/format.h>
 
 #include "halfspace/error.hpp"
 #include "halfspace/linalg/parallel.hpp"
@@ -87,19 +87,25 @@ SolveResult PolonskyKeer::solve(std::span<const double> initial_gap, const Loadi
 
   Problem problem{initial_gap, loading.load_controlled(), 0.0, 0.0, grid.cell_area(), gap_max - gap_min};
   switch (loading.mode) {
-    case ControlMode::force: problem.target_force = loading.value; break;
-    case ControlMode::mean_pressure: problem.target_force = loading.value * grid.domain_area(); break;
-    case ControlMode::approach: problem.approach = loading.value; break;
+    case ControlMode::force:
+      problem.target_force = loading.value;
+      break;
+    case ControlMode::mean_pressure:
+      problem.target_force = loading.value * grid.domain_area();
+      break;
+    case ControlMode::approach:
+      problem.approach = loading.value;
+      break;
   }
   if (!problem.load_controlled && grid.periodic()) {
     // With a zero-mean displacement the mean gap is mean(g0) - approach, and
     // it cannot be negative: at mean(g0) the pressure is already infinite.
     const double mean_gap = linalg::sum(n, [&](std::size_t i) { return initial_gap[i]; }) / cells;
     if (problem.approach >= mean_gap) {
-      throw InputError(fmt::format(
-          "approach = {} m is invalid for a periodic surface: it must be below the mean initial gap {} m "
-          "(full contact needs infinite pressure there)",
-          problem.approach, mean_gap));
+      throw InputError(
+          fmt::format("approach = {} m is invalid for a periodic surface: it must be below the mean initial gap {} m "
+                      "(full contact needs infinite pressure there)",
+                      problem.approach, mean_gap));
     }
   }
 
@@ -199,8 +205,8 @@ SolveResult PolonskyKeer::solve(std::span<const double> initial_gap, const Loadi
     const auto [weighted_gap, overlap, pressure_sum, contact_gap_norm, gap_along] = sums<5>(n, [&](std::size_t i) {
       g[i] = initial_gap[i] + u[i] - approach;
       if (restrict_to_contact) r[i] = p[i] > 0.0 ? g[i] : 0.0;
-      return std::array<double, 5>{p[i] * std::abs(g[i]), std::max(-g[i], 0.0), p[i],
-                                   p[i] > 0.0 ? g[i] * g[i] : 0.0, p[i] > 0.0 && powell_restart ? g[i] * t[i] : 0.0};
+      return std::array<double, 5>{p[i] * std::abs(g[i]), std::max(-g[i], 0.0), p[i], p[i] > 0.0 ? g[i] * g[i] : 0.0,
+                                   p[i] > 0.0 && powell_restart ? g[i] * t[i] : 0.0};
     });
     gap_norm = contact_gap_norm;
     gap_along_direction = gap_along;
@@ -233,8 +239,8 @@ SolveResult PolonskyKeer::solve(std::span<const double> initial_gap, const Loadi
     }
     if (iteration == options_.max_iterations) {
       result.status = SolveStatus::iteration_limit;
-      result.message = fmt::format("no convergence after {} iterations: residual {:.3e} > tolerance {:.3e}",
-                                   iteration, residual, options_.tolerance);
+      result.message = fmt::format("no convergence after {} iterations: residual {:.3e} > tolerance {:.3e}", iteration,
+                                   residual, options_.tolerance);
       break;
     }
     if (contact_cells == 0.0) {

@@ -5,9 +5,12 @@ namespace halfspace {
 
 std::string_view to_string(SolveStatus status) {
   switch (status) {
-    case SolveStatus::converged: return "converged";
-    case SolveStatus::iteration_limit: return "iteration_limit";
-    case SolveStatus::breakdown: return "breakdown";
+    case SolveStatus::converged:
+      return "converged";
+    case SolveStatus::iteration_limit:
+      return "iteration_limit";
+    case SolveStatus::breakdown:
+      return "breakdown";
   }
   return "unknown";
 }

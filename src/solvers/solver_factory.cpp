@@ -81,13 +81,16 @@ std::unique_ptr<ContactSolver> make_multilevel(const Grid& grid, double e_star, 
 std::unique_ptr<ContactSolver> make_dense(const Grid& grid, double e_star, const SolverSettings& settings) {
   DenseContactOptions contact;
   contact.tolerance = settings.tolerance;
-  if (settings.name == "lemke") return std::make_unique<Lemke>(grid, e_star, LemkeOptions{settings.max_iterations}, contact);
+  if (settings.name == "lemke")
+    return std::make_unique<Lemke>(grid, e_star, LemkeOptions{settings.max_iterations}, contact);
   return std::make_unique<LcpQuad>(grid, e_star, LcpQuadOptions{}, contact);
 }
 
 }  // namespace
 
-std::vector<std::string> solver_names() { return {"pk-multilevel", "pk-fourier", "pk", "lemke", "lcpquad"}; }
+std::vector<std::string> solver_names() {
+  return {"pk-multilevel", "pk-fourier", "pk", "lemke", "lcpquad"};
+}
 
 std::unique_ptr<ContactSolver> make_solver(const Grid& grid, double e_star, const SolverSettings& settings) {
   // Plain Polonsky-Keer keeps the paper's restart rule; with the Fourier
@@ -96,8 +99,8 @@ std::unique_ptr<ContactSolver> make_solver(const Grid& grid, double e_star, cons
   if (settings.name == "pk-fourier") return make_polonsky_keer(grid, e_star, settings, true, ConjugacyRestart::powell);
   if (settings.name == "pk-multilevel") return make_multilevel(grid, e_star, settings);
   if (settings.name == "lemke" || settings.name == "lcpquad") return make_dense(grid, e_star, settings);
-  throw InputError(fmt::format("solver '{}' is not known: use one of {}", settings.name,
-                               fmt::join(solver_names(), ", ")));
+  throw InputError(
+      fmt::format("solver '{}' is not known: use one of {}", settings.name, fmt::join(solver_names(), ", ")));
 }
 
 }  // namespace halfspace::solvers

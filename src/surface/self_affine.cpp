@@ -37,8 +37,7 @@ struct ModeGeometry {
         ny(grid.ny()),
         columns(grid.nx() / 2 + 1),
         qx_unit(2.0 * std::numbers::pi / (static_cast<double>(grid.nx()) * grid.dx())),
-        qy_unit(grid.dimension() == 1 ? 0.0
-                                      : 2.0 * std::numbers::pi / (static_cast<double>(grid.ny()) * grid.dy())),
+        qy_unit(grid.dimension() == 1 ? 0.0 : 2.0 * std::numbers::pi / (static_cast<double>(grid.ny()) * grid.dy())),
         q_long(2.0 * std::numbers::pi / spec.long_cutoff),
         q_rolloff(2.0 * std::numbers::pi / spec.rolloff),
         q_short(2.0 * std::numbers::pi / spec.short_cutoff),
@@ -191,8 +190,10 @@ Eigen::ArrayXd make_self_affine_surface(const Grid& grid, const SelfAffineSpec& 
 
   // Step 3: to real space; remove the rounding-level mean and scale.
   fft.backward();
-  Eigen::ArrayXd heights = Eigen::Map<const Eigen::ArrayXd>(fft.output().data(), static_cast<Eigen::Index>(grid.size()));
-  const double mean = linalg::sum(grid.size(), [&](std::size_t i) { return heights[static_cast<Eigen::Index>(i)]; }) / cells;
+  Eigen::ArrayXd heights =
+      Eigen::Map<const Eigen::ArrayXd>(fft.output().data(), static_cast<Eigen::Index>(grid.size()));
+  const double mean =
+      linalg::sum(grid.size(), [&](std::size_t i) { return heights[static_cast<Eigen::Index>(i)]; }) / cells;
   heights -= mean;
   double scale = 0.0;
   if (spec.rms_height) {

@@ -20,8 +20,8 @@ namespace {
 
 void check_size(std::string_view what, std::size_t size, const Grid& grid) {
   if (size != grid.size()) {
-    throw InputError(fmt::format("{} has {} values but the grid has {} cells ({})", what, size, grid.size(),
-                                 grid.shape_string()));
+    throw InputError(
+        fmt::format("{} has {} values but the grid has {} cells ({})", what, size, grid.size(), grid.shape_string()));
   }
 }
 
@@ -31,7 +31,9 @@ double signed_index(std::size_t k, std::size_t n) {
   return k <= n / 2 ? static_cast<double>(k) : static_cast<double>(k) - static_cast<double>(n);
 }
 
-bool is_nyquist(std::size_t k, std::size_t n) { return n % 2 == 0 && k == n / 2; }
+bool is_nyquist(std::size_t k, std::size_t n) {
+  return n % 2 == 0 && k == n / 2;
+}
 
 // sum over the half spectrum of the squared spectral gradient, Parseval-weighted.
 double spectral_slope_sq(const Grid& grid, std::span<const double> heights) {
@@ -58,8 +60,8 @@ double spectral_slope_sq(const Grid& grid, std::span<const double> heights) {
 }
 
 // numpy.gradient along one axis: central inside, one-sided at the two ends.
-double difference(std::span<const double> h, std::size_t index, std::size_t position, std::size_t n,
-                  std::size_t stride, double spacing) {
+double difference(std::span<const double> h, std::size_t index, std::size_t position, std::size_t n, std::size_t stride,
+                  double spacing) {
   if (position == 0) return (h[index + stride] - h[index]) / spacing;
   if (position == n - 1) return (h[index] - h[index - stride]) / spacing;
   return (h[index + stride] - h[index - stride]) / (2.0 * spacing);

@@ -26,8 +26,9 @@ constexpr int kExitInputError = 1;
 constexpr double kRmsTolerance = 1e-12;
 
 std::vector<std::string> self_affine(const std::string& output, const std::string& seed = "7") {
-  return {"generate", "--kind",      "self-affine", "--grid", "64x48", "--size", "6.4e-5x4.8e-5", "--hurst", "0.7",
-          "--cutoff-short", "4e-6", "--rms-slope", "0.2", "--seed", seed, "--output", output, "--quiet"};
+  return {"generate",      "--kind",  "self-affine", "--grid",         "64x48", "--size",
+          "6.4e-5x4.8e-5", "--hurst", "0.7",         "--cutoff-short", "4e-6",  "--rms-slope",
+          "0.2",           "--seed",  seed,          "--output",       output,  "--quiet"};
 }
 
 TEST(GenerateCliTest, WritesSelfAffineHeightMapWithItsParameters) {
@@ -65,9 +66,10 @@ TEST(GenerateCliTest, WritesSelfAffineHeightMapWithItsParameters) {
 TEST(GenerateCliTest, SolveReadsTheGeneratedFile) {
   const TempDir dir;
   ASSERT_EQ(run_program(self_affine("surface.h5"), dir.path()).exit_code, kExitOk);
-  const ProgramRun run = run_program({"solve", "--height-map", "surface.h5", "--boundary", "periodic", "--E-star",
-                                      "1e9", "--mean-pressure", "2e6", "--output", "result.h5", "--threads", "1", "--quiet"},
-                                     dir.path());
+  const ProgramRun run =
+      run_program({"solve", "--height-map", "surface.h5", "--boundary", "periodic", "--E-star", "1e9",
+                   "--mean-pressure", "2e6", "--output", "result.h5", "--threads", "1", "--quiet"},
+                  dir.path());
   ASSERT_EQ(run.exit_code, kExitOk) << run.err;
   const test::H5 file = test::open_file(dir / "result.h5");
   // The solve measures the same rms slope (spectral, periodic) as requested.
@@ -119,15 +121,15 @@ TEST(GenerateCliTest, ExampleHeightMapIsWhatItsCommandGenerates) {
   // examples/synthetic_sweep.toml documents the command that wrote its map.
   // Compared to rounding, not bits: another CPU may run other FFTW codelets.
   const TempDir dir;
-  ASSERT_EQ(run_program({"generate", "--kind", "self-affine", "--grid", "128x128", "--size", "1.28e-4", "--hurst",
-                         "0.8", "--cutoff-short", "4e-6", "--rms-slope", "0.1", "--seed", "1", "--output", "map.h5",
-                         "--quiet"},
-                        dir.path())
-                .exit_code,
-            kExitOk);
+  ASSERT_EQ(
+      run_program({"generate", "--kind", "self-affine", "--grid", "128x128", "--size", "1.28e-4", "--hurst", "0.8",
+                   "--cutoff-short", "4e-6", "--rms-slope", "0.1", "--seed", "1", "--output", "map.h5", "--quiet"},
+                  dir.path())
+          .exit_code,
+      kExitOk);
   const test::H5 fresh = test::open_file(dir / "map.h5");
-  const test::H5 shipped = test::open_file(fs::path(HALFSPACE_TEST_DATA_DIR) / ".." / ".." / "examples" /
-                                           "self_affine_128.h5");
+  const test::H5 shipped =
+      test::open_file(fs::path(HALFSPACE_TEST_DATA_DIR) / ".." / ".." / "examples" / "self_affine_128.h5");
   const auto a = test::read_dataset<double>(fresh.get(), "/height", H5T_NATIVE_DOUBLE);
   const auto b = test::read_dataset<double>(shipped.get(), "/height", H5T_NATIVE_DOUBLE);
   ASSERT_EQ(a.size(), b.size());
@@ -155,7 +157,8 @@ TEST(GenerateCliTest, RejectsBadInputWithOneLineAndNoFile) {
   };
   const std::vector<Case> cases{
       {with({}), "no surface kind given"},
-      {with({"--kind", "blob"}), "--kind blob is invalid: the kind must be self-affine, sphere, cylinder, wavy or flat"},
+      {with({"--kind", "blob"}),
+       "--kind blob is invalid: the kind must be self-affine, sphere, cylinder, wavy or flat"},
       {with({"--kind", "self-affine"}), "--kind self-affine needs --rms-height (m) or --rms-slope"},
       {with({"--kind", "self-affine", "--rms-height", "1e-7", "--rms-slope", "0.1"}),
        "--rms-height and --rms-slope cannot be combined"},

@@ -33,9 +33,9 @@ constexpr int kExitPlotFailed = 3;
 // A periodic 2D wave: two contact spots per period, converges in ~20
 // iterations per step.
 std::vector<std::string> wavy(const std::string& load_flag, const std::string& loads, const std::string& output) {
-  return {"solve",      "--geometry", "wavy",     "--wavelength", "1e-3",     "--amplitude", "1e-6",  "--grid",
-          "32x32",      "--size",     "1e-3",     "--boundary",   "periodic", "--E-star",    "1e11",  load_flag,
-          loads,        "--output",   output,     "--threads",    "1"};
+  return {"solve",  "--geometry", "wavy",   "--wavelength", "1e-3",       "--amplitude", "1e-6",
+          "--grid", "32x32",      "--size", "1e-3",         "--boundary", "periodic",    "--E-star",
+          "1e11",   load_flag,    loads,    "--output",     output,       "--threads",   "1"};
 }
 
 std::vector<std::string> with(std::vector<std::string> arguments, const std::vector<std::string>& extra) {
@@ -81,8 +81,8 @@ TEST(SweepCliTest, RangeWritesOneGroupPerStepTheTableAndTheCsv) {
           << step << "/" << field;
     }
     EXPECT_EQ(test::dataset_type(file.get(), std::string(step) + "/contact").size, 1u);
-    const auto sizes = test::read_dataset<std::int64_t>(file.get(), std::string(step) + "/cluster_sizes",
-                                                        H5T_NATIVE_INT64);
+    const auto sizes =
+        test::read_dataset<std::int64_t>(file.get(), std::string(step) + "/cluster_sizes", H5T_NATIVE_INT64);
     EXPECT_EQ(sizes.size(), 2u) << "two contact spots per period, " << step;
   }
   // The range is log-spaced with exact ends.
@@ -192,8 +192,8 @@ TEST(SweepCliTest, RejectsBadLoadListsBeforeSolving) {
   }
   const TempDir dir;
   std::ofstream(dir / "bad.toml") << "force = [\"1\", 2]\n";
-  const ProgramRun run = run_program(with(wavy("--mean-pressure", "1e6", "out.h5"), {"--config", "bad.toml"}),
-                                     dir.path());
+  const ProgramRun run =
+      run_program(with(wavy("--mean-pressure", "1e6", "out.h5"), {"--config", "bad.toml"}), dir.path());
   // The command line's --mean-pressure drops the file's force: no error.
   EXPECT_EQ(run.exit_code, kExitOk) << run.err;
   const ProgramRun typed = run_program({"solve", "--config", "bad.toml", "--output", "typed.h5"}, dir.path());
@@ -282,9 +282,9 @@ TEST(SweepCliTest, PlotDrawsFiguresNextToTheResult) {
 
   // A tool that fails after the solve: the result stays, exit code 3.
   std::ofstream(dir / "failing.py") << "import sys\nsys.exit(4)\n";
-  const ProgramRun failing = run_program(with(wavy("--mean-pressure", "1e7", "kept.h5"), {"--plot", "--quiet"}),
-                                         dir.path(),
-                                         {{"HALFSPACE_PYTHON", "/usr/bin/python3"}, {"HALFSPACE_PLOT_TOOL", "failing.py"}});
+  const ProgramRun failing =
+      run_program(with(wavy("--mean-pressure", "1e7", "kept.h5"), {"--plot", "--quiet"}), dir.path(),
+                  {{"HALFSPACE_PYTHON", "/usr/bin/python3"}, {"HALFSPACE_PLOT_TOOL", "failing.py"}});
   EXPECT_EQ(failing.exit_code, kExitPlotFailed);
   EXPECT_NE(failing.err.find("error: --plot: '/usr/bin/python3 failing.py maps kept.h5' failed (exit status 4); "
                              "the result is written to kept.h5"),

@@ -177,7 +177,8 @@ TEST(FftInfluenceOperatorTest, RepeatedApplyIsIdentical) {
 TEST(FftInfluenceOperatorTest, MisalignedArraysGiveTheSameResult) {
   // Periodic grids transform the caller's arrays directly; arrays FFTW cannot
   // use (here one double off its alignment) go through the owned buffers.
-  for (const Grid& grid : {Grid::line(64, 1e-6, Boundary::periodic), Grid::plane(12, 10, 1e-6, 1e-6, Boundary::periodic)}) {
+  for (const Grid& grid :
+       {Grid::line(64, 1e-6, Boundary::periodic), Grid::plane(12, 10, 1e-6, 1e-6, Boundary::periodic)}) {
     FftInfluenceOperator op(grid, kEStar);
     const std::vector<double> pressure = random_field(grid.size(), 21);
     const std::vector<double> aligned = apply_to(op, pressure);

@@ -156,11 +156,11 @@ TEST(LoadSweepTest, WestergaardSweepMatchesColdSolvesWithFewerIterations) {
   const double e_star = 2e9;
   const Grid grid = Grid::line(n, wavelength / static_cast<double>(n), Boundary::periodic);
   const testing::Westergaard exact{wavelength, amplitude, e_star};
-  const Eigen::ArrayXd gap0 = testing::field_from(grid, [&](double x, double) {
-    return amplitude * (1.0 - std::cos(2.0 * std::numbers::pi * x / wavelength));
-  });
+  const Eigen::ArrayXd gap0 = testing::field_from(
+      grid, [&](double x, double) { return amplitude * (1.0 - std::cos(2.0 * std::numbers::pi * x / wavelength)); });
   std::vector<double> loads;
-  for (const double fraction : {0.30, 0.32, 0.34, 0.36, 0.38}) loads.push_back(fraction * exact.full_contact_pressure());
+  for (const double fraction : {0.30, 0.32, 0.34, 0.36, 0.38})
+    loads.push_back(fraction * exact.full_contact_pressure());
 
   // pk-fourier: a single-grid solver, whose cold start is the uniform
   // pressure. Plain PK gains nothing from the warm start on this one-mode

@@ -1,17 +1,17 @@
 // Load control and displacement control describe the same contact; the solver
 // reports non-convergence as a status; bad loading is refused up front.
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <numbers>
 #include <random>
-
-#include <gtest/gtest.h>
 
 #include "halfspace/error.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
 #include "halfspace/solvers/polonsky_keer.hpp"
 #include "support/contact_checks.hpp"
-#include "support/pk_variants.hpp"
 #include "support/grid_fields.hpp"
+#include "support/pk_variants.hpp"
 
 namespace halfspace {
 namespace {
@@ -123,8 +123,7 @@ TEST_P(PolonskyKeerControlTest, RefusesInvalidLoadingAndOptions) {
   EXPECT_THROW(solvers::PolonskyKeer(op, bad), InputError);
 }
 
-INSTANTIATE_TEST_SUITE_P(Variants, PolonskyKeerControlTest, testing::all_pk_variants(),
-                         testing::variant_name);
+INSTANTIATE_TEST_SUITE_P(Variants, PolonskyKeerControlTest, testing::all_pk_variants(), testing::variant_name);
 
 }  // namespace
 }  // namespace halfspace

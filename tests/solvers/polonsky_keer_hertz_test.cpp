@@ -1,17 +1,17 @@
 // Polonsky-Keer on the free-boundary FFT operator against Hertz: point contact
 // of a sphere (2D grid) and line contact of a cylinder (1D grid), with errors
 // that must shrink under grid refinement.
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <numbers>
-
-#include <gtest/gtest.h>
 
 #include "halfspace/operators/fft_influence_operator.hpp"
 #include "halfspace/solvers/polonsky_keer.hpp"
 #include "support/analytic_solutions.hpp"
 #include "support/contact_checks.hpp"
-#include "support/pk_variants.hpp"
 #include "support/grid_fields.hpp"
+#include "support/pk_variants.hpp"
 
 namespace halfspace {
 namespace {
@@ -44,7 +44,8 @@ PointContactErrors solve_hertz_point(std::size_t n, PkVariant variant) {
   const auto hertz = testing::hertz_point(kForce, kSphereRadius, kEStar);
   const double size = 3.0 * hertz.radius;
   const Grid grid = Grid::plane(n, n, size / static_cast<double>(n), size / static_cast<double>(n), Boundary::free);
-  const Eigen::ArrayXd gap0 = field_from(grid, [](double x, double y) { return (x * x + y * y) / (2 * kSphereRadius); });
+  const Eigen::ArrayXd gap0 =
+      field_from(grid, [](double x, double y) { return (x * x + y * y) / (2 * kSphereRadius); });
 
   FftInfluenceOperator op(grid, kEStar);
   PkSolver solver(op, kEStar, variant);
@@ -58,9 +59,9 @@ PointContactErrors solve_hertz_point(std::size_t n, PkVariant variant) {
   PointContactErrors errors{std::abs(radius - hertz.radius) / grid.dx(),
                             std::abs(result.max_pressure - hertz.peak) / hertz.peak,
                             std::abs(result.approach - hertz.approach) / hertz.approach};
-  std::printf("Hertz point n=%zu: a/dx=%.1f, radius error %.3f cells, peak error %.2e, approach error %.2e, %d iterations\n",
-              n, hertz.radius / grid.dx(), errors.radius_error_cells, errors.peak_error, errors.approach_error,
-              result.iterations);
+  std::printf(
+      "Hertz point n=%zu: a/dx=%.1f, radius error %.3f cells, peak error %.2e, approach error %.2e, %d iterations\n", n,
+      hertz.radius / grid.dx(), errors.radius_error_cells, errors.peak_error, errors.approach_error, result.iterations);
   return errors;
 }
 
@@ -108,9 +109,10 @@ LineContactErrors solve_hertz_line(std::size_t n, PkVariant variant) {
   const double half_width = 0.5 * static_cast<double>((result.pressure > 0.0).count()) * grid.dx();
   LineContactErrors errors{std::abs(half_width - hertz.half_width) / hertz.half_width,
                            std::abs(result.max_pressure - hertz.peak) / hertz.peak, std::sqrt(error_sq / norm_sq)};
-  std::printf("Hertz line n=%zu: b/dx=%.1f, half-width error %.2e, peak error %.2e, profile error %.2e, %d iterations\n",
-              n, hertz.half_width / grid.dx(), errors.half_width_error, errors.peak_error, errors.profile_error,
-              result.iterations);
+  std::printf(
+      "Hertz line n=%zu: b/dx=%.1f, half-width error %.2e, peak error %.2e, profile error %.2e, %d iterations\n", n,
+      hertz.half_width / grid.dx(), errors.half_width_error, errors.peak_error, errors.profile_error,
+      result.iterations);
   return errors;
 }
 
@@ -126,8 +128,7 @@ TEST_P(PolonskyKeerHertzTest, ReproducesHertzLineContactAndConvergesUnderRefinem
   EXPECT_LT(fine.profile_error, coarse.profile_error);
 }
 
-INSTANTIATE_TEST_SUITE_P(Variants, PolonskyKeerHertzTest, testing::all_pk_variants(),
-                         testing::variant_name);
+INSTANTIATE_TEST_SUITE_P(Variants, PolonskyKeerHertzTest, testing::all_pk_variants(), testing::variant_name);
 
 }  // namespace
 }  // namespace halfspace

@@ -1,17 +1,17 @@
 // Polonsky-Keer on periodic grids against exact solutions: Westergaard's 1D
 // wave (partial contact) and the 2D wave of Johnson, Greenwood & Higginson
 // (full contact, where the pressure field is exactly linear in the heights).
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <numbers>
-
-#include <gtest/gtest.h>
 
 #include "halfspace/operators/fft_influence_operator.hpp"
 #include "halfspace/solvers/polonsky_keer.hpp"
 #include "support/analytic_solutions.hpp"
 #include "support/contact_checks.hpp"
-#include "support/pk_variants.hpp"
 #include "support/grid_fields.hpp"
+#include "support/pk_variants.hpp"
 
 namespace halfspace {
 namespace {
@@ -24,9 +24,9 @@ using testing::PkVariant;
 class PolonskyKeerPeriodicTest : public ::testing::TestWithParam<PkVariant> {};
 using testing::field_from;
 
-constexpr double kEStar = 2.0e9;        // Pa
-constexpr double kWavelength = 1e-4;    // m
-constexpr double kAmplitude = 1e-6;     // m
+constexpr double kEStar = 2.0e9;      // Pa
+constexpr double kWavelength = 1e-4;  // m
+constexpr double kAmplitude = 1e-6;   // m
 // Westergaard half-width and profile: the bound, met at 4096 cells.
 constexpr double kWestergaardTolerance = 0.005;
 // Full contact: one Fourier mode, so the discrete solution is exact to rounding.
@@ -36,9 +36,8 @@ TEST_P(PolonskyKeerPeriodicTest, ReproducesWestergaardHalfWidthAndProfile) {
   const std::size_t n = 4096;
   const Grid grid = Grid::line(n, kWavelength / static_cast<double>(n), Boundary::periodic);
   const testing::Westergaard exact{kWavelength, kAmplitude, kEStar};
-  const Eigen::ArrayXd gap0 = field_from(grid, [](double x, double) {
-    return kAmplitude * (1.0 - std::cos(2.0 * std::numbers::pi * x / kWavelength));
-  });
+  const Eigen::ArrayXd gap0 = field_from(
+      grid, [](double x, double) { return kAmplitude * (1.0 - std::cos(2.0 * std::numbers::pi * x / kWavelength)); });
   FftInfluenceOperator op(grid, kEStar);
   PkSolver solver(op, kEStar, GetParam());
 
@@ -49,7 +48,8 @@ TEST_P(PolonskyKeerPeriodicTest, ReproducesWestergaardHalfWidthAndProfile) {
     expect_contact_conditions(result, 1e-8 * kAmplitude);
 
     const double half_width = 0.5 * static_cast<double>((result.pressure > 0.0).count()) * grid.dx();
-    const double half_width_error = std::abs(half_width - exact.half_width(mean_pressure)) / exact.half_width(mean_pressure);
+    const double half_width_error =
+        std::abs(half_width - exact.half_width(mean_pressure)) / exact.half_width(mean_pressure);
     double error_sq = 0.0;
     double norm_sq = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
@@ -94,8 +94,7 @@ TEST_P(PolonskyKeerPeriodicTest, TwoDimensionalWaveIsInFullContactAtAndAboveCrit
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Variants, PolonskyKeerPeriodicTest, testing::all_pk_variants(),
-                         testing::variant_name);
+INSTANTIATE_TEST_SUITE_P(Variants, PolonskyKeerPeriodicTest, testing::all_pk_variants(), testing::variant_name);
 
 }  // namespace
 }  // namespace halfspace

@@ -2,9 +2,9 @@
 // and a closed gap on the contact set, to within a stated gap tolerance.
 #pragma once
 
-#include <cmath>
-
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 #include "halfspace/solvers/solve_result.hpp"
 

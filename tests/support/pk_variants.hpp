@@ -3,10 +3,10 @@
 // runs on each; parameterised tests take a PkVariant.
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <memory>
 #include <string>
-
-#include <gtest/gtest.h>
 
 #include "halfspace/operators/fft_influence_operator.hpp"
 #include "halfspace/operators/influence_operator.hpp"
@@ -20,9 +20,12 @@ enum class PkVariant { plain, fourier, multilevel };
 
 inline std::string variant_name(const ::testing::TestParamInfo<PkVariant>& info) {
   switch (info.param) {
-    case PkVariant::plain: return "Plain";
-    case PkVariant::fourier: return "FourierPreconditioned";
-    case PkVariant::multilevel: return "Multilevel";
+    case PkVariant::plain:
+      return "Plain";
+    case PkVariant::fourier:
+      return "FourierPreconditioned";
+    case PkVariant::multilevel:
+      return "Multilevel";
   }
   return "Unknown";
 }

@@ -56,7 +56,8 @@ std::vector<Mode> power_spectrum(const Grid& grid, const Eigen::ArrayXd& heights
       grid.dimension() == 1 ? 0.0 : 2.0 * std::numbers::pi / (static_cast<double>(grid.ny()) * grid.dy());
   std::vector<Mode> modes;
   for (std::size_t r = 0; r < grid.ny(); ++r) {
-    const double ky = r <= grid.ny() / 2 ? static_cast<double>(r) : static_cast<double>(r) - static_cast<double>(grid.ny());
+    const double ky =
+        r <= grid.ny() / 2 ? static_cast<double>(r) : static_cast<double>(r) - static_cast<double>(grid.ny());
     for (std::size_t c = 0; c < columns; ++c) {
       if (r == 0 && c == 0) continue;
       const double qx = qx_unit * static_cast<double>(c);
@@ -116,7 +117,8 @@ double dft_rms_slope(const Grid& grid, const Eigen::ArrayXd& heights) {
       }
       const bool x_nyquist = nx % 2 == 0 && kx == nx / 2;
       const bool y_nyquist = ny % 2 == 0 && ky == ny / 2;
-      const double qx = x_nyquist ? 0.0 : 2.0 * std::numbers::pi * signed_index(kx, nx) / (static_cast<double>(nx) * grid.dx());
+      const double qx =
+          x_nyquist ? 0.0 : 2.0 * std::numbers::pi * signed_index(kx, nx) / (static_cast<double>(nx) * grid.dx());
       const double qy = (grid.dimension() == 1 || y_nyquist)
                             ? 0.0
                             : 2.0 * std::numbers::pi * signed_index(ky, ny) / (static_cast<double>(ny) * grid.dy());
@@ -223,7 +225,8 @@ TEST(SelfAffineSurfaceTest, PowerSpectrumIsFlatBelowRolloff) {
 }
 
 TEST(SelfAffineSurfaceTest, RmsHeightMatchesRequest) {
-  for (const Grid& grid : {Grid::plane(96, 64, 2e-7, 3e-7, Boundary::periodic), Grid::line(1000, 1e-6, Boundary::free)}) {
+  for (const Grid& grid :
+       {Grid::plane(96, 64, 2e-7, 3e-7, Boundary::periodic), Grid::line(1000, 1e-6, Boundary::free)}) {
     const double target = 3.5e-8;
     const Eigen::ArrayXd h = make_self_affine_surface(grid, spec_with_height(target, 7));
     const double rms = plain_rms_height(h);
@@ -235,8 +238,9 @@ TEST(SelfAffineSurfaceTest, RmsHeightMatchesRequest) {
 
 TEST(SelfAffineSurfaceTest, RmsSlopeMatchesRequestByIndependentDft) {
   // Odd and even sizes, unequal spacings, a 1D profile.
-  for (const Grid& grid : {Grid::plane(48, 40, 2e-7, 3e-7, Boundary::periodic),
-                           Grid::plane(45, 32, 1e-6, 1e-6, Boundary::periodic), Grid::line(300, 1e-6, Boundary::periodic)}) {
+  for (const Grid& grid :
+       {Grid::plane(48, 40, 2e-7, 3e-7, Boundary::periodic), Grid::plane(45, 32, 1e-6, 1e-6, Boundary::periodic),
+        Grid::line(300, 1e-6, Boundary::periodic)}) {
     SelfAffineSpec spec;
     spec.hurst = 0.5;
     spec.rms_slope = 0.12;
@@ -322,7 +326,8 @@ TEST(SelfAffineSurfaceTest, RejectsInvalidParameters) {
   spec = spec_with_height(1e-7, 0);
   spec.short_cutoff = 8e-6;
   spec.rolloff = 8e-6;
-  EXPECT_NE(message_of(spec).find("rolloff 8e-06 m is invalid: must be longer than the short cutoff"), std::string::npos);
+  EXPECT_NE(message_of(spec).find("rolloff 8e-06 m is invalid: must be longer than the short cutoff"),
+            std::string::npos);
   spec = spec_with_height(1e-7, 0);
   spec.rolloff = 32e-6;
   spec.long_cutoff = 16e-6;

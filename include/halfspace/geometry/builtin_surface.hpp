@@ -3,9 +3,8 @@
 // half-space (peaks positive), centred on the grid.
 #pragma once
 
-#include <string_view>
-
 #include <Eigen/Core>
+#include <string_view>
 
 #include "halfspace/grid.hpp"
 

@@ -15,8 +15,8 @@
 namespace halfspace::io {
 
 struct ResultMetadata {
-  double e_star = 0.0;        // Pa
-  std::string load_mode;      // "force", "mean_pressure" or "approach"
+  double e_star = 0.0;    // Pa
+  std::string load_mode;  // "force", "mean_pressure" or "approach"
   int threads = 1;
   std::string command_line;   // the full command line
   std::string config;         // the TOML config text, empty if none
@@ -32,8 +32,7 @@ struct ResultMetadata {
 // (uint8, 1 where p > 0), shaped like the grid; root attributes as in
 // docs/file-format.md. Throws FileError naming the path if it cannot be
 // written; no partial file is left behind.
-void write_result(const std::filesystem::path& path, const Grid& grid,
-                  std::span<const double> height, const SolveResult& result,
-                  const ResultMetadata& metadata);
+void write_result(const std::filesystem::path& path, const Grid& grid, std::span<const double> height,
+                  const SolveResult& result, const ResultMetadata& metadata);
 
 }  // namespace halfspace::io

@@ -8,7 +8,6 @@ namespace halfspace::kernels {
 // under unit pressure (1 Pa) on |x'| <= half_width_x, |y'| <= half_width_y,
 // for composite modulus e_star (Pa). Finite everywhere, including on the
 // rectangle's edges and corners.
-double love_rectangle_displacement(double x, double y, double half_width_x, double half_width_y,
-                                   double e_star);
+double love_rectangle_displacement(double x, double y, double half_width_x, double half_width_y, double e_star);
 
 }  // namespace halfspace::kernels

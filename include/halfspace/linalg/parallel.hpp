@@ -26,8 +26,12 @@ template <std::size_t K>
 inline std::array<double, K> global_sum(const std::array<double, K>& local) {
   return local;
 }
-inline double global_max(double local) { return local; }
-inline double global_min(double local) { return local; }
+inline double global_max(double local) {
+  return local;
+}
+inline double global_min(double local) {
+  return local;
+}
 
 // Calls body(i) for i in [0, n), in parallel; body must not write shared state
 // other than element i of its fields.

@@ -16,10 +16,10 @@
 namespace halfspace::solvers {
 
 struct SweepStep {
-  Loading loading;                       // what was imposed at this step
-  SolveResult result;                    // the solver's outcome, fields included
-  surface::ContactStatistics statistics; // of result
-  bool warm_started = false;             // started from the previous step's pressure
+  Loading loading;                        // what was imposed at this step
+  SolveResult result;                     // the solver's outcome, fields included
+  surface::ContactStatistics statistics;  // of result
+  bool warm_started = false;              // started from the previous step's pressure
 };
 
 struct LoadSweepOptions {

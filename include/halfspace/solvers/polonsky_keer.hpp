@@ -43,8 +43,8 @@ namespace halfspace::solvers {
 enum class ConjugacyRestart { on_entry, powell };
 
 struct PolonskyKeerOptions {
-  double tolerance = 1e-10;     // relative residual, see the stopping criterion above
-  int max_iterations = 10000;   // status iteration_limit when reached
+  double tolerance = 1e-10;    // relative residual, see the stopping criterion above
+  int max_iterations = 10000;  // status iteration_limit when reached
   // When the conjugate directions restart (step 3 with beta = 0).
   ConjugacyRestart restart = ConjugacyRestart::on_entry;
   // Called once per iteration with (iteration, residual); may be empty. It
@@ -64,9 +64,7 @@ class PolonskyKeer final : public ContactSolver {
   explicit PolonskyKeer(InfluenceOperator& op, PolonskyKeerOptions options = {},
                         Preconditioner* preconditioner = nullptr);
 
-  std::string_view name() const override {
-    return preconditioner_ ? "preconditioned-polonsky-keer" : "polonsky-keer";
-  }
+  std::string_view name() const override { return preconditioner_ ? "preconditioned-polonsky-keer" : "polonsky-keer"; }
 
   SolveResult solve(std::span<const double> initial_gap, const Loading& loading,
                     std::span<const double> initial_pressure = {}) override;

@@ -3,11 +3,10 @@
 // never an exception.
 #pragma once
 
+#include <Eigen/Core>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <Eigen/Core>
 
 namespace halfspace {
 
@@ -21,15 +20,15 @@ std::string_view to_string(SolveStatus status);
 
 struct SolveResult {
   SolveStatus status = SolveStatus::breakdown;
-  std::string message;   // human-readable reason, empty when converged
-  std::string solver;    // e.g. "polonsky-keer"
+  std::string message;  // human-readable reason, empty when converged
+  std::string solver;   // e.g. "polonsky-keer"
 
   int iterations = 0;
-  double residual = 0.0;                // final value of the stopping measure
-  double tolerance = 0.0;               // the tolerance it was compared with
-  std::vector<double> residual_history; // one entry per iteration
-  int operator_applications = 0;        // number of K*p products
-  int preconditioner_applications = 0;  // number of M^-1 g products (each one FFT pair)
+  double residual = 0.0;                 // final value of the stopping measure
+  double tolerance = 0.0;                // the tolerance it was compared with
+  std::vector<double> residual_history;  // one entry per iteration
+  int operator_applications = 0;         // number of K*p products
+  int preconditioner_applications = 0;   // number of M^-1 g products (each one FFT pair)
   // Coarse-grid start (MultilevelSolver): the number of coarser grids solved
   // first, their iterations, and their K and M^-1 products each weighted by
   // its grid's cells over this grid's (the fine-grid products they cost).

@@ -14,8 +14,9 @@
 namespace halfspace::solvers {
 
 struct SolverSettings {
-  std::string name = "pk-multilevel";  // one of solver_names(); the default was chosen by measurement (docs/performance.md)
-  double tolerance = 1e-10;      // the solver's own relative stopping tolerance
+  std::string name =
+      "pk-multilevel";       // one of solver_names(); the default was chosen by measurement (docs/performance.md)
+  double tolerance = 1e-10;  // the solver's own relative stopping tolerance
   int max_iterations = 10000;
   FftPlanning fft_planning = FftPlanning::estimate;  // FFT-based solvers only
   std::function<void(int, double)> progress;         // (iteration, residual), may be empty

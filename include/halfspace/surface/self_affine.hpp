@@ -3,10 +3,9 @@
 // periodic on the grid, normalised to a given rms height or rms slope.
 #pragma once
 
+#include <Eigen/Core>
 #include <cstdint>
 #include <optional>
-
-#include <Eigen/Core>
 
 #include "halfspace/grid.hpp"
 
@@ -23,10 +22,10 @@ namespace halfspace::surface {
 // with C0 fixed by the rms height or the rms slope. Lengths in m; 0 selects
 // the default.
 struct SelfAffineSpec {
-  double hurst = 0.8;         // Hurst exponent H, in (0, 1]
-  double short_cutoff = 0.0;  // shortest wavelength [2 max(dx, dy), the grid's limit]
-  double rolloff = 0.0;       // the power law holds below this wavelength [long_cutoff]
-  double long_cutoff = 0.0;   // longest wavelength [the domain's longer side]
+  double hurst = 0.8;                // Hurst exponent H, in (0, 1]
+  double short_cutoff = 0.0;         // shortest wavelength [2 max(dx, dy), the grid's limit]
+  double rolloff = 0.0;              // the power law holds below this wavelength [long_cutoff]
+  double long_cutoff = 0.0;          // longest wavelength [the domain's longer side]
   std::optional<double> rms_height;  // m, sqrt(<(h - <h>)^2>); exactly one of the two
   std::optional<double> rms_slope;   // sqrt(<|grad h|^2>) as defined by surface::rms_slope (periodic)
   std::uint64_t seed = 0;
