@@ -77,11 +77,11 @@ void print_summary(std::FILE* out, const SolveSetup& setup, const SolveResult& r
     row(out, "FFT products",
         fmt::format("{} K, {} M^-1", result.operator_applications, result.preconditioner_applications));
   }
-  if (result.coarse_levels > 0) {
+  if (result.coarse.levels > 0) {
     row(out, "coarse start",
         fmt::format("{} grids, {} iterations, costing {:.1f} K and {:.1f} M^-1 products of this grid",
-                    result.coarse_levels, result.coarse_iterations, result.coarse_operator_work,
-                    result.coarse_preconditioner_work));
+                    result.coarse.levels, result.coarse.iterations, result.coarse.operator_work,
+                    result.coarse.preconditioner_work));
   }
   row(out, "residual", fmt::format("{:.3e} (tolerance {:.3e})", result.residual, result.tolerance));
   row(out, "total force", fmt::format("{:.6g} {}", result.total_force, force_unit(grid)));

@@ -3,9 +3,10 @@
 // what a free-boundary n x n grid transforms). Every operator or
 // preconditioner application costs at least one such pair, so a solve's
 // seconds per iteration over this number says how close it runs to FFTW.
-// scripts/headline.sh runs it beside each solve; it stays on raw FFTW (no
-// halfspace wrapper, no wisdom file) so that the floor does not move when the
-// library's transforms change.
+// scripts/headline.sh runs it beside each solve. It times the benchmarks'
+// bare pair (bench/bare_fft_pair.hpp, raw FFTW: no halfspace wrapper, no
+// wisdom file), so the floor does not move when the library's transforms
+// change.
 //
 //   fft_floor --n N --threads T [--planning estimate|measure|patient] [--padded]
 //
@@ -16,12 +17,14 @@
 #include <fmt/format.h>
 
 #include <chrono>
+#include <cstddef>
 #include <cstdio>
 #include <cstdlib>
-#include <random>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+
+#include "bare_fft_pair.hpp"
 
 namespace {
 
@@ -98,69 +101,37 @@ int main(int argc, char** argv) {
     return 2;
   }
 
-  // Threads are a property of the plan, so they are set before planning.
+  // Threads are a property of the plan: fftw_plan_with_nthreads needs the
+  // threads initialised, and BareFftPair sets the count before planning.
   if (fftw_init_threads() == 0) {
     std::fprintf(stderr, "fft_floor: fftw_init_threads failed\n");
     return 1;
   }
-  fftw_plan_with_nthreads(args.threads);
-
-  const int m = static_cast<int>(args.padded ? 2 * args.n : args.n);
-  const std::size_t real_size = static_cast<std::size_t>(m) * static_cast<std::size_t>(m);
-  const std::size_t complex_size = static_cast<std::size_t>(m) * static_cast<std::size_t>(m / 2 + 1);
-  double* input = fftw_alloc_real(real_size);
-  double* output = fftw_alloc_real(real_size);
-  fftw_complex* spectrum = fftw_alloc_complex(complex_size);
-  if (input == nullptr || output == nullptr || spectrum == nullptr) {
-    std::fprintf(stderr, "fft_floor: cannot allocate the %d x %d arrays\n", m, m);
-    return 1;
-  }
-
-  // FFTW_MEASURE and FFTW_PATIENT overwrite the arrays while planning, so the
-  // data goes in afterwards. Out-of-place r2c keeps its input (FFTW_PRESERVE_INPUT
-  // is the default there), so every run sees the same data; c2r may destroy its
-  // input, the spectrum, which the next r2c rewrites anyway.
+  const auto m = static_cast<std::size_t>(args.padded ? 2 * args.n : args.n);
   const unsigned flags = args.planning == "patient"   ? FFTW_PATIENT
                          : args.planning == "measure" ? FFTW_MEASURE
                                                       : FFTW_ESTIMATE;
-  fftw_plan forward = fftw_plan_dft_r2c_2d(m, m, input, spectrum, flags);
-  fftw_plan backward = fftw_plan_dft_c2r_2d(m, m, spectrum, output, flags);
-  if (forward == nullptr || backward == nullptr) {
-    std::fprintf(stderr, "fft_floor: FFTW could not plan a %d x %d transform\n", m, m);
-    return 1;
+  double seconds_per_pair = 0.0;
+  {
+    halfspace::bench::BareFftPair pair(2, m, args.threads, flags);  // runs once: warm-up
+    long repetitions = 0;
+    double elapsed = 0.0;
+    const auto start = Clock::now();
+    while (elapsed < kMinSeconds || repetitions < kMinRepetitions) {
+      pair.run();
+      ++repetitions;
+      elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+    }
+    // Read the output so the compiler cannot treat the pairs as unused.
+    volatile double sink = pair.data()[0];
+    (void)sink;
+    seconds_per_pair = elapsed / static_cast<double>(repetitions);
   }
-  std::mt19937_64 random(42);
-  std::uniform_real_distribution<double> uniform(0.0, 1.0);
-  for (std::size_t i = 0; i < real_size; ++i) input[i] = uniform(random);
-
-  const auto pair = [&] {
-    fftw_execute(forward);
-    fftw_execute(backward);
-  };
-  pair();  // warm-up: first touch of the output pages, thread pool start
-
-  long repetitions = 0;
-  double elapsed = 0.0;
-  const auto start = Clock::now();
-  while (elapsed < kMinSeconds || repetitions < kMinRepetitions) {
-    pair();
-    ++repetitions;
-    elapsed = std::chrono::duration<double>(Clock::now() - start).count();
-  }
-  // Read the output so the compiler cannot treat the pairs as unused.
-  volatile double sink = output[0];
-  (void)sink;
 
   std::printf("%s\n",
               fmt::format(R"({{"n":{},"transform_n":{},"threads":{},"planning":"{}","seconds_per_pair":{:.6g}}})",
-                          args.n, m, args.threads, args.planning, elapsed / static_cast<double>(repetitions))
+                          args.n, m, args.threads, args.planning, seconds_per_pair)
                   .c_str());
-
-  fftw_destroy_plan(backward);
-  fftw_destroy_plan(forward);
-  fftw_free(spectrum);
-  fftw_free(output);
-  fftw_free(input);
   fftw_cleanup_threads();
   return 0;
 }

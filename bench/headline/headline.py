@@ -94,8 +94,6 @@ def parse_arguments(argv):
                    help="FFTW planning of the solves and of the floor [%(default)s]")
     p.add_argument("--skip-slow", action="store_true",
                    help="skip pk above 2048^2 periodic and 1024^2 free")
-    p.add_argument("--no-prime", action="store_true",
-                   help="do not plan each size before timing it (see the footnotes)")
     p.add_argument("--out-dir", default=str(ROOT / "bench" / "results"),
                    help="directory of the results file [%(default)s]")
     return p.parse_args(argv)
@@ -154,21 +152,6 @@ def generate_surface(halfspace, n, directory, env):
                   "--rms-slope", "0.1", "--seed", "1", "--output", str(path), "--quiet"],
                  f"halfspace generate {n}x{n}", env=env)
     return str(path)
-
-
-def prime_plans(halfspace, case, threads, planning, directory, env):
-    """One pk-multilevel solve cut off after an iteration: it plans every
-    transform the timed solves of this size use (fine grid and all coarse
-    grids) and leaves the plans in the wisdom file. Without it the first
-    pk-multilevel solve of a size plans its coarse grids inside its
-    solve_seconds."""
-    output = directory / "prime.h5"
-    command = [*solve_command(halfspace, case, "pk-multilevel", threads, planning, output), "--max-iter", "1"]
-    done = run(command, env=env)
-    if done.returncode not in (EXIT_OK, EXIT_NOT_CONVERGED):
-        raise HeadlineError(f"planning solve failed (exit code {done.returncode}): {shown(command)}\n"
-                            f"{done.stderr.strip()}")
-    output.unlink(missing_ok=True)
 
 
 def peak_rss_bytes(time_report):
@@ -242,22 +225,13 @@ def markdown_table(rows):
     return "\n".join(lines + [table_row(r) for r in rows])
 
 
-def footnotes(args, primed):
+def footnotes(args):
     planning = (f"Plans made with `--fft-planning {args.planning}` from a fresh FFTW wisdom file per run "
                 "(HALFSPACE_FFTW_WISDOM in a temporary directory), never the user's cache.")
-    if args.planning == "estimate":
-        planning += " estimate planning is cheap and keeps no wisdom."
-    elif primed:
-        planning += (" Before the timed solves of each grid and thread count, one pk-multilevel solve cut off "
-                     "after one iteration plans every transform they use, fine and coarse grids.")
-    else:
-        planning += (" --no-prime: the first pk-multilevel solve of each grid and thread count includes the "
-                     "planning of its coarse grids.")
     return "\n".join([
-        "- solve s: the solver's own wall time (HDF5 attribute solve_seconds). The fine grid's operator, "
-        "preconditioner and FFT plans are built before it starts, so their planning is excluded; "
-        "pk-multilevel builds its coarse-grid solvers inside it (their planning is only cheap once the "
-        "wisdom file holds those sizes). Reading and writing files are excluded.",
+        "- solve s: the solver's own wall time (HDF5 attribute solve_seconds). Every FFT plan is made before "
+        "it starts, pk-multilevel's coarse grids included (it plans them when it is built and rebuilds "
+        "them from the wisdom inside the solve), so planning is excluded; so are reading and writing files.",
         "- " + planning,
         "- K, M^-1: fine-grid operator and preconditioner applications (one FFT pair each, the free "
         "boundary's K on the 2n x 2n padded grid). coarse: pk-multilevel's coarse-grid K + M^-1 products "
@@ -330,16 +304,12 @@ def main(argv):
     started = datetime.datetime.now(datetime.timezone.utc)
     load_before = load_average()
     rows, floors = [], {}
-    # estimate plans are cheap and never go to the wisdom file: nothing to prime.
-    primed = not args.no_prime and args.planning != "estimate"
     with tempfile.TemporaryDirectory(prefix="halfspace-headline-") as temporary:
         directory = Path(temporary)
         env = dict(os.environ, HALFSPACE_FFTW_WISDOM=str(directory / "wisdom"))
         for case, solvers in cases(args, halfspace, directory, env):
             n, boundary = case["n"], case["boundary"]
             for threads in args.threads:
-                if primed and solvers:
-                    prime_plans(halfspace, case, threads, args.planning, directory, env)
                 for solver in solvers:
                     row = timed_solve(halfspace, case, solver, threads, args.planning, directory, env)
                     row.update(n=n, boundary=boundary, solver=solver, threads=threads)
@@ -371,7 +341,7 @@ def main(argv):
     out_dir.mkdir(parents=True, exist_ok=True)
     results = out_dir / f"{started.strftime('%Y-%m-%d')}-{commit}-headline.md"
     with open(results, "a", encoding="utf-8") as f:
-        f.write(f"{header}\n\n{table}\n\n{footnotes(args, primed)}\n\n")
+        f.write(f"{header}\n\n{table}\n\n{footnotes(args)}\n\n")
     print(f"\nappended to {results}", file=sys.stderr)
     return 0
 

@@ -267,10 +267,10 @@ void write_summary(hid_t root, const Grid& grid, const SolveResult& result, cons
   attach_int64(root, "iterations", result.iterations);
   attach_int64(root, "operator_applications", result.operator_applications);
   attach_int64(root, "preconditioner_applications", result.preconditioner_applications);
-  attach_int64(root, "coarse_levels", result.coarse_levels);
-  attach_int64(root, "coarse_iterations", result.coarse_iterations);
-  attach_double(root, "coarse_operator_work", result.coarse_operator_work);
-  attach_double(root, "coarse_preconditioner_work", result.coarse_preconditioner_work);
+  attach_int64(root, "coarse_levels", result.coarse.levels);
+  attach_int64(root, "coarse_iterations", result.coarse.iterations);
+  attach_double(root, "coarse_operator_work", result.coarse.operator_work);
+  attach_double(root, "coarse_preconditioner_work", result.coarse.preconditioner_work);
   attach_double(root, "residual", result.residual);
   attach_double(root, "tolerance", result.tolerance);
   attach_double(root, "solve_seconds", result.wall_seconds);

@@ -89,10 +89,10 @@ void write_step(hid_t steps_group, const std::string& name, const Grid& grid, co
   write_int64_attribute(g, "iterations", r.iterations);
   write_int64_attribute(g, "operator_applications", r.operator_applications);
   write_int64_attribute(g, "preconditioner_applications", r.preconditioner_applications);
-  write_int64_attribute(g, "coarse_levels", r.coarse_levels);
-  write_int64_attribute(g, "coarse_iterations", r.coarse_iterations);
-  write_double_attribute(g, "coarse_operator_work", r.coarse_operator_work);
-  write_double_attribute(g, "coarse_preconditioner_work", r.coarse_preconditioner_work);
+  write_int64_attribute(g, "coarse_levels", r.coarse.levels);
+  write_int64_attribute(g, "coarse_iterations", r.coarse.iterations);
+  write_double_attribute(g, "coarse_operator_work", r.coarse.operator_work);
+  write_double_attribute(g, "coarse_preconditioner_work", r.coarse.preconditioner_work);
   write_double_attribute(g, "residual", r.residual);
   write_double_attribute(g, "tolerance", r.tolerance);
   write_double_attribute(g, "solve_seconds", r.wall_seconds);

@@ -55,7 +55,7 @@ RealFft make_fft(const Grid& grid, FftPlanning planning) {
 }
 
 // A shared transform must be the periodic grid's own: apply() reads rows at
-// stride fft.cols() and the kernel follows the spectrum's layout.
+// stride fft.real_stride() and the kernel follows the spectrum's layout.
 std::shared_ptr<RealFft> checked_shared_transform(const Grid& grid, std::shared_ptr<RealFft> transform) {
   if (!grid.periodic()) {
     throw InputError("FftInfluenceOperator: a shared transform needs a periodic grid (free grids pad it)");
@@ -228,11 +228,9 @@ void FftInfluenceOperator::apply(std::span<const double> pressure, std::span<dou
   const bool direct = m.grid.periodic();
   if (!(direct && m.fft.forward_from(pressure))) {
     std::span<double> input = m.fft.input();
-    if (direct) {
-      copy_block(ny, nx, [&](std::size_t j, std::size_t i) { input[j * stride + i] = pressure[j * nx + i]; });
-    } else if (m.fft.in_place()) {
+    if (m.fft.in_place()) {
       copy_padded(ny, nx, m.fft.rows(), stride, pressure, input);
-    } else {  // the padding of the separate input buffer stays zero
+    } else {  // any padding of a separate input buffer stays zero
       copy_block(ny, nx, [&](std::size_t j, std::size_t i) { input[j * stride + i] = pressure[j * nx + i]; });
     }
     m.fft.forward();

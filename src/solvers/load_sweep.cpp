@@ -12,67 +12,36 @@
 namespace halfspace::solvers {
 namespace {
 
-double load_of(const SweepStep& s) {
-  return s.loading.value;
-}
-double mean_pressure_of(const SweepStep& s) {
-  return s.result.mean_pressure;
-}
-double total_force_of(const SweepStep& s) {
-  return s.result.total_force;
-}
-double approach_of(const SweepStep& s) {
-  return s.result.approach;
-}
-double contact_fraction_of(const SweepStep& s) {
-  return s.statistics.contact_fraction;
-}
-double mean_gap_of(const SweepStep& s) {
-  return s.statistics.mean_gap;
-}
-double rms_gap_of(const SweepStep& s) {
-  return s.statistics.rms_gap;
-}
-double free_volume_of(const SweepStep& s) {
-  return s.statistics.free_volume;
-}
-double max_pressure_of(const SweepStep& s) {
-  return s.result.max_pressure;
-}
-double clusters_of(const SweepStep& s) {
-  return static_cast<double>(s.statistics.clusters());
-}
-double iterations_of(const SweepStep& s) {
-  return s.result.iterations;
-}
-double residual_of(const SweepStep& s) {
-  return s.result.residual;
-}
-double seconds_of(const SweepStep& s) {
-  return s.result.wall_seconds;
-}
-double converged_of(const SweepStep& s) {
-  return s.result.converged() ? 1.0 : 0.0;
-}
-
+// Each column reads its value with a captureless lambda (a plain function
+// pointer in the table).
 constexpr std::array kColumns{
     SummaryColumn{
         "load", "",
         "the controlled value of the step: force (N, N/m in 1D), mean pressure (Pa) or approach (m), as load_mode says",
-        load_of},
-    SummaryColumn{"mean_pressure", "Pa", "total force over the domain area", mean_pressure_of},
-    SummaryColumn{"total_force", "force", "sum of pressure times cell area", total_force_of},
-    SummaryColumn{"approach", "m", "rigid-body approach", approach_of},
-    SummaryColumn{"contact_fraction", "1", "cells with pressure > 0 over all cells", contact_fraction_of},
-    SummaryColumn{"mean_gap", "m", "mean gap over all cells", mean_gap_of},
-    SummaryColumn{"rms_gap", "m", "root mean square gap over all cells", rms_gap_of},
-    SummaryColumn{"free_volume", "volume", "sum of gap times cell area (m^3; m^2 in 1D)", free_volume_of},
-    SummaryColumn{"max_pressure", "Pa", "largest pressure", max_pressure_of},
-    SummaryColumn{"clusters", "1", "number of contact clusters (connected components)", clusters_of},
-    SummaryColumn{"iterations", "1", "solver iterations", iterations_of},
-    SummaryColumn{"residual", "1", "final value of the solver's stopping measure", residual_of},
-    SummaryColumn{"seconds", "s", "wall-clock time of the step's solve", seconds_of},
-    SummaryColumn{"converged", "1", "1 if the step converged, else 0", converged_of},
+        [](const SweepStep& s) { return s.loading.value; }},
+    SummaryColumn{"mean_pressure", "Pa", "total force over the domain area",
+                  [](const SweepStep& s) { return s.result.mean_pressure; }},
+    SummaryColumn{"total_force", "force", "sum of pressure times cell area",
+                  [](const SweepStep& s) { return s.result.total_force; }},
+    SummaryColumn{"approach", "m", "rigid-body approach", [](const SweepStep& s) { return s.result.approach; }},
+    SummaryColumn{"contact_fraction", "1", "cells with pressure > 0 over all cells",
+                  [](const SweepStep& s) { return s.statistics.contact_fraction; }},
+    SummaryColumn{"mean_gap", "m", "mean gap over all cells", [](const SweepStep& s) { return s.statistics.mean_gap; }},
+    SummaryColumn{"rms_gap", "m", "root mean square gap over all cells",
+                  [](const SweepStep& s) { return s.statistics.rms_gap; }},
+    SummaryColumn{"free_volume", "volume", "sum of gap times cell area (m^3; m^2 in 1D)",
+                  [](const SweepStep& s) { return s.statistics.free_volume; }},
+    SummaryColumn{"max_pressure", "Pa", "largest pressure", [](const SweepStep& s) { return s.result.max_pressure; }},
+    SummaryColumn{"clusters", "1", "number of contact clusters (connected components)",
+                  [](const SweepStep& s) { return static_cast<double>(s.statistics.clusters()); }},
+    SummaryColumn{"iterations", "1", "solver iterations",
+                  [](const SweepStep& s) { return static_cast<double>(s.result.iterations); }},
+    SummaryColumn{"residual", "1", "final value of the solver's stopping measure",
+                  [](const SweepStep& s) { return s.result.residual; }},
+    SummaryColumn{"seconds", "s", "wall-clock time of the step's solve",
+                  [](const SweepStep& s) { return s.result.wall_seconds; }},
+    SummaryColumn{"converged", "1", "1 if the step converged, else 0",
+                  [](const SweepStep& s) { return s.result.converged() ? 1.0 : 0.0; }},
 };
 
 }  // namespace

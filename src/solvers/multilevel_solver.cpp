@@ -31,12 +31,16 @@ MultilevelSolver::MultilevelSolver(const Grid& grid, double fine_tolerance, Leve
   // solve, and the levels take no memory between solves.
   for (std::optional<Grid> level = coarser_grid(grid_, options_.min_cells_per_axis); level;
        level = coarser_grid(*level, options_.min_cells_per_axis)) {
-    make_level_(*level, options_.coarse_tolerance, false);
+    make_level_(*level, coarse_tolerance(), false);
   }
 }
 
+double MultilevelSolver::coarse_tolerance() const {
+  return std::max(options_.coarse_tolerance, fine_tolerance_);
+}
+
 Eigen::ArrayXd MultilevelSolver::coarse_start(const Grid& grid, std::span<const double> gap, const Loading& loading,
-                                              SolveResult& record) {
+                                              CoarseStart& record) {
   const std::optional<Grid> coarse = coarser_grid(grid, options_.min_cells_per_axis);
   if (!coarse) return {};
   Eigen::ArrayXd coarse_gap(static_cast<Eigen::Index>(coarse->size()));
@@ -45,10 +49,9 @@ Eigen::ArrayXd MultilevelSolver::coarse_start(const Grid& grid, std::span<const 
 
   // The same load on the same domain: force, mean pressure and approach all
   // carry over unchanged.
-  const double tolerance = std::max(options_.coarse_tolerance, fine_tolerance_);
   SolveResult coarse_result;
   try {
-    coarse_result = make_level_(*coarse, tolerance, false)
+    coarse_result = make_level_(*coarse, coarse_tolerance(), false)
                         ->solve({coarse_gap.data(), coarse->size()}, loading,
                                 {start.data(), static_cast<std::size_t>(start.size())});
   } catch (const InputError&) {
@@ -59,10 +62,10 @@ Eigen::ArrayXd MultilevelSolver::coarse_start(const Grid& grid, std::span<const 
     return {};
   }
   const double weight = static_cast<double>(coarse->size()) / static_cast<double>(grid_.size());
-  ++record.coarse_levels;
-  record.coarse_iterations += coarse_result.iterations;
-  record.coarse_operator_work += weight * coarse_result.operator_applications;
-  record.coarse_preconditioner_work += weight * coarse_result.preconditioner_applications;
+  ++record.levels;
+  record.iterations += coarse_result.iterations;
+  record.operator_work += weight * coarse_result.operator_applications;
+  record.preconditioner_work += weight * coarse_result.preconditioner_applications;
   // Only a start: a coarse solve short of its tolerance still helps, one
   // that broke down does not.
   if (!coarse_result.pressure.allFinite()) return {};
@@ -84,14 +87,11 @@ SolveResult MultilevelSolver::solve(std::span<const double> initial_gap, const L
         fmt::format("initial gap has {} entries, but the grid has {} cells", initial_gap.size(), grid_.size()));
   }
   loading.validate();
-  SolveResult record;
-  const Eigen::ArrayXd start = coarse_start(grid_, initial_gap, loading, record);
+  CoarseStart coarse;
+  const Eigen::ArrayXd start = coarse_start(grid_, initial_gap, loading, coarse);
   SolveResult result = fine_->solve(initial_gap, loading, {start.data(), static_cast<std::size_t>(start.size())});
   result.solver = std::string(name());
-  result.coarse_levels = record.coarse_levels;
-  result.coarse_iterations = record.coarse_iterations;
-  result.coarse_operator_work = record.coarse_operator_work;
-  result.coarse_preconditioner_work = record.coarse_preconditioner_work;
+  result.coarse = coarse;
   result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time).count();
   return result;
 }

@@ -298,11 +298,12 @@ SolveResult PolonskyKeer::solve(std::span<const double> initial_gap, const Loadi
     }
 
     // Steps 6-8: move along t, clip to p >= 0, and let cells that are out of
-    // contact but interpenetrate (g < 0) enter with pressure -tau g; under
-    // ConjugacyRestart::on_entry any such entry resets the conjugacy (under
-    // powell, entries of more than 1% of the contact cells). The displacement follows without a new
-    // product: K(p - tau t) = u - tau r, plus K c for the correction c that
-    // clipping and entries add, which is zero once the contact set settles.
+    // contact but interpenetrate (g < 0) enter with pressure -tau g. Entries
+    // reset the conjugacy: any entry under ConjugacyRestart::on_entry, more
+    // than 1% of the contact cells under powell. The displacement follows
+    // without a new product: K(p - tau t) = u - tau r, plus K c for the
+    // correction c that clipping and entries add, which is zero once the
+    // contact set settles.
     // r is not needed after this pass, so it receives c.
     const auto [new_pressure_sum, entered, corrected] = sums<3>(n, [&](std::size_t i) {
       const double moved = p[i] - tau * t[i];

@@ -67,11 +67,11 @@ std::unique_ptr<ContactSolver> make_polonsky_keer(const Grid& grid, double e_sta
 
 // Fourier-preconditioned Polonsky-Keer with Powell restarts on every level.
 std::unique_ptr<ContactSolver> make_multilevel(const Grid& grid, double e_star, const SolverSettings& settings) {
-  auto make_level = [grid_e_star = e_star, settings](const Grid& level, double tolerance, bool fine) {
+  auto make_level = [e_star, settings](const Grid& level, double tolerance, bool fine) {
     SolverSettings level_settings = settings;
     level_settings.tolerance = tolerance;
     if (!fine) level_settings.progress = {};  // progress reports the fine solve only
-    return make_polonsky_keer(level, grid_e_star, level_settings, true, ConjugacyRestart::powell);
+    return make_polonsky_keer(level, e_star, level_settings, true, ConjugacyRestart::powell);
   };
   return std::make_unique<MultilevelSolver>(grid, settings.tolerance, make_level);
 }

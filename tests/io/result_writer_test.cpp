@@ -49,10 +49,7 @@ SolveResult make_result(const Grid& grid, std::size_t history_length) {
   for (std::size_t k = 0; k < history_length; ++k) result.residual_history.push_back(std::pow(0.5, double(k)) / 3.0);
   result.operator_applications = 35;
   result.preconditioner_applications = 17;
-  result.coarse_levels = 3;
-  result.coarse_iterations = 41;
-  result.coarse_operator_work = 12.5;
-  result.coarse_preconditioner_work = 6.25;
+  result.coarse = {3, 41, 12.5, 6.25};
   result.approach = 1.234e-7;
   result.total_force = 0.1 / 3.0;
   result.mean_pressure = 1.7e6 / 7.0;
@@ -175,10 +172,10 @@ void expect_attributes(hid_t file, const Grid& grid, const SolveResult& result, 
   expect_int("iterations", result.iterations);
   expect_int("operator_applications", result.operator_applications);
   expect_int("preconditioner_applications", result.preconditioner_applications);
-  expect_int("coarse_levels", result.coarse_levels);
-  expect_int("coarse_iterations", result.coarse_iterations);
-  expect_double("coarse_operator_work", result.coarse_operator_work);
-  expect_double("coarse_preconditioner_work", result.coarse_preconditioner_work);
+  expect_int("coarse_levels", result.coarse.levels);
+  expect_int("coarse_iterations", result.coarse.iterations);
+  expect_double("coarse_operator_work", result.coarse.operator_work);
+  expect_double("coarse_preconditioner_work", result.coarse.preconditioner_work);
   expect_double("residual", result.residual);
   expect_double("tolerance", result.tolerance);
   expect_int("converged", result.converged() ? 1 : 0);

@@ -57,13 +57,13 @@ TEST(MultilevelSolverTest, MatchesTheSingleGridSolverAndUsesTheCoarseGrids) {
     expect_contact_conditions(multi, 1e-9 * gap.maxCoeff());
     const double difference = (multi.pressure - single.pressure).abs().maxCoeff() / single.max_pressure;
     std::printf("%s 128^2: pk-fourier %d iterations, pk-multilevel %d (+%d on %d coarser grids), max |dp| %.1e\n",
-                std::string(to_string(boundary)).c_str(), single.iterations, multi.iterations, multi.coarse_iterations,
-                multi.coarse_levels, difference);
+                std::string(to_string(boundary)).c_str(), single.iterations, multi.iterations, multi.coarse.iterations,
+                multi.coarse.levels, difference);
     EXPECT_LE(difference, kSameSolution);
-    EXPECT_EQ(multi.coarse_levels, 2) << "128 -> 64 -> 32 cells per side";
-    EXPECT_GT(multi.coarse_iterations, 0);
-    EXPECT_GT(multi.coarse_operator_work, 0.0);
-    EXPECT_LT(multi.coarse_operator_work, multi.operator_applications) << "coarse work is weighted by grid size";
+    EXPECT_EQ(multi.coarse.levels, 2) << "128 -> 64 -> 32 cells per side";
+    EXPECT_GT(multi.coarse.iterations, 0);
+    EXPECT_GT(multi.coarse.operator_work, 0.0);
+    EXPECT_LT(multi.coarse.operator_work, multi.operator_applications) << "coarse work is weighted by grid size";
     EXPECT_EQ(multi.solver, "multilevel-polonsky-keer");
     EXPECT_NEAR(multi.total_force, single.total_force, 1e-12 * single.total_force);
   }
@@ -77,7 +77,7 @@ TEST(MultilevelSolverTest, SkipsTheCoarseGridsWhenItCannotOrNeedNotUseThem) {
   const SolveResult odd_result = make_solver(odd, kEStar, settings("pk-multilevel"))
                                      ->solve({odd_gap.data(), odd.size()}, Loading::mean_pressure(0.004));
   ASSERT_TRUE(odd_result.converged()) << odd_result.message;
-  EXPECT_EQ(odd_result.coarse_levels, 0);
+  EXPECT_EQ(odd_result.coarse.levels, 0);
 
   // A warm start (a sweep's previous step) is used as it is.
   const Grid grid = Grid::plane(64, 64, 1.0, 1.0, Boundary::periodic);
@@ -85,11 +85,11 @@ TEST(MultilevelSolverTest, SkipsTheCoarseGridsWhenItCannotOrNeedNotUseThem) {
   auto solver = make_solver(grid, kEStar, settings("pk-multilevel"));
   const SolveResult cold = solver->solve({gap.data(), grid.size()}, Loading::mean_pressure(0.004));
   ASSERT_TRUE(cold.converged()) << cold.message;
-  EXPECT_EQ(cold.coarse_levels, 1);
+  EXPECT_EQ(cold.coarse.levels, 1);
   const SolveResult warm =
       solver->solve({gap.data(), grid.size()}, Loading::mean_pressure(0.005), {cold.pressure.data(), grid.size()});
   ASSERT_TRUE(warm.converged()) << warm.message;
-  EXPECT_EQ(warm.coarse_levels, 0);
+  EXPECT_EQ(warm.coarse.levels, 0);
   EXPECT_EQ(warm.solver, "multilevel-polonsky-keer");
 }
 

@@ -55,28 +55,38 @@ void for_each_row(std::size_t rows, std::size_t row_length, Body&& body) {
   }
 }
 
-// Sums K terms at once: term(i) returns std::array<double, K>; the result is
-// the component-wise sum over i in [0, n), reduced over all ranks.
-template <std::size_t K, class Term>
-std::array<double, K> sums(std::size_t n, Term&& term) {
-  std::array<std::array<double, K>, kReductionBlocks> partial{};
+// The fixed-block reduction behind sums and sums_and_range: block b folds its
+// indices in order into a copy of `identity` with add(acc, i), and the block
+// results are merged in block order with merge(total, part), so the result
+// does not depend on the number of threads.
+template <class Acc, class Add, class Merge>
+Acc reduce_in_blocks(std::size_t n, const Acc& identity, Add&& add, Merge&& merge) {
+  std::array<Acc, kReductionBlocks> partial;
+  partial.fill(identity);
   const std::size_t block = (n + kReductionBlocks - 1) / kReductionBlocks;
   const auto blocks = static_cast<std::ptrdiff_t>(kReductionBlocks);
 #pragma omp parallel for schedule(static) if (n > kParallelThreshold)
   for (std::ptrdiff_t b = 0; b < blocks; ++b) {
     const std::size_t begin = std::min(n, static_cast<std::size_t>(b) * block);
     const std::size_t end = std::min(n, begin + block);
-    std::array<double, K> acc{};
-    for (std::size_t i = begin; i < end; ++i) {
-      const std::array<double, K> t = term(i);
-      for (std::size_t k = 0; k < K; ++k) acc[k] += t[k];
-    }
+    Acc acc = identity;
+    for (std::size_t i = begin; i < end; ++i) add(acc, i);
     partial[static_cast<std::size_t>(b)] = acc;
   }
-  std::array<double, K> total{};
-  for (const auto& p : partial) {
-    for (std::size_t k = 0; k < K; ++k) total[k] += p[k];
-  }
+  Acc total = identity;
+  for (const Acc& part : partial) merge(total, part);
+  return total;
+}
+
+// Sums K terms at once: term(i) returns std::array<double, K>; the result is
+// the component-wise sum over i in [0, n), reduced over all ranks.
+template <std::size_t K, class Term>
+std::array<double, K> sums(std::size_t n, Term&& term) {
+  const auto add_to = [](std::array<double, K>& acc, const std::array<double, K>& t) {
+    for (std::size_t k = 0; k < K; ++k) acc[k] += t[k];
+  };
+  const std::array<double, K> total = reduce_in_blocks(
+      n, std::array<double, K>{}, [&](std::array<double, K>& acc, std::size_t i) { add_to(acc, term(i)); }, add_to);
   return global_sum(total);
 }
 
@@ -87,32 +97,23 @@ struct SumsAndRange {
   std::array<double, K> sums{};
   double min = std::numeric_limits<double>::infinity();
   double max = -std::numeric_limits<double>::infinity();
+
+  void add(const std::array<double, K>& terms, double low, double high) {
+    for (std::size_t k = 0; k < K; ++k) sums[k] += terms[k];
+    min = std::min(min, low);
+    max = std::max(max, high);
+  }
 };
 
 template <std::size_t K, class Term>
 SumsAndRange<K> sums_and_range(std::size_t n, Term&& term) {
-  std::array<SumsAndRange<K>, kReductionBlocks> partial{};
-  const std::size_t block = (n + kReductionBlocks - 1) / kReductionBlocks;
-  const auto blocks = static_cast<std::ptrdiff_t>(kReductionBlocks);
-#pragma omp parallel for schedule(static) if (n > kParallelThreshold)
-  for (std::ptrdiff_t b = 0; b < blocks; ++b) {
-    const std::size_t begin = std::min(n, static_cast<std::size_t>(b) * block);
-    const std::size_t end = std::min(n, begin + block);
-    SumsAndRange<K> acc;
-    for (std::size_t i = begin; i < end; ++i) {
-      const auto [t, value] = term(i);
-      for (std::size_t k = 0; k < K; ++k) acc.sums[k] += t[k];
-      acc.min = std::min(acc.min, value);
-      acc.max = std::max(acc.max, value);
-    }
-    partial[static_cast<std::size_t>(b)] = acc;
-  }
-  SumsAndRange<K> total;
-  for (const auto& p : partial) {
-    for (std::size_t k = 0; k < K; ++k) total.sums[k] += p.sums[k];
-    total.min = std::min(total.min, p.min);
-    total.max = std::max(total.max, p.max);
-  }
+  SumsAndRange<K> total = reduce_in_blocks(
+      n, SumsAndRange<K>{},
+      [&](SumsAndRange<K>& acc, std::size_t i) {
+        const auto [t, value] = term(i);
+        acc.add(t, value, value);
+      },
+      [](SumsAndRange<K>& acc, const SumsAndRange<K>& part) { acc.add(part.sums, part.min, part.max); });
   total.sums = global_sum(total.sums);
   total.min = global_min(total.min);
   total.max = global_max(total.max);

@@ -58,7 +58,10 @@ class MultilevelSolver final : public ContactSolver {
   // (itself started from the one below), or empty if there is no coarser
   // grid. Adds the coarse work to `record`.
   Eigen::ArrayXd coarse_start(const Grid& grid, std::span<const double> gap, const Loading& loading,
-                              SolveResult& record);
+                              CoarseStart& record);
+  // The coarse solves' tolerance: options_.coarse_tolerance, but never
+  // tighter than the fine one.
+  double coarse_tolerance() const;
 
   Grid grid_;
   double fine_tolerance_;

@@ -18,6 +18,16 @@ enum class SolveStatus {
 
 std::string_view to_string(SolveStatus status);
 
+// The coarser grids a MultilevelSolver solved first: how many, their
+// iterations, and their K and M^-1 products each weighted by its grid's
+// cells over the fine grid's (the fine-grid products they cost).
+struct CoarseStart {
+  int levels = 0;
+  int iterations = 0;
+  double operator_work = 0.0;
+  double preconditioner_work = 0.0;
+};
+
 struct SolveResult {
   SolveStatus status = SolveStatus::breakdown;
   std::string message;  // human-readable reason, empty when converged
@@ -29,13 +39,7 @@ struct SolveResult {
   std::vector<double> residual_history;  // one entry per iteration
   int operator_applications = 0;         // number of K*p products
   int preconditioner_applications = 0;   // number of M^-1 g products (each one FFT pair)
-  // Coarse-grid start (MultilevelSolver): the number of coarser grids solved
-  // first, their iterations, and their K and M^-1 products each weighted by
-  // its grid's cells over this grid's (the fine-grid products they cost).
-  int coarse_levels = 0;
-  int coarse_iterations = 0;
-  double coarse_operator_work = 0.0;
-  double coarse_preconditioner_work = 0.0;
+  CoarseStart coarse;                    // coarse-grid start (MultilevelSolver); zero otherwise
 
   double approach = 0.0;          // rigid-body approach (m)
   double total_force = 0.0;       // N in 2D, N/m in 1D
