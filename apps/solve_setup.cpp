@@ -147,6 +147,13 @@ solvers::SolverSettings solver_settings_from(const SolveOptions& o) {
     if (*o.max_iter < 1 || *o.max_iter > INT_MAX) {
       throw InputError(fmt::format("{} is invalid: need 1 <= max-iter <= {}", o.describe("max-iter"), INT_MAX));
     }
+    if (solver.name == "lcpquad") {
+      // Silently ignoring the limit would let a user believe it applied.
+      throw InputError(fmt::format(
+          "{} does not apply to solver 'lcpquad': ALGLIB's dense interior-point method has no iteration limit (it "
+          "stops at its own tolerance); drop --max-iter, or use --solver lemke, whose pivots it limits",
+          o.describe("max-iter")));
+    }
     solver.max_iterations = static_cast<int>(*o.max_iter);
   }
   return solver;

@@ -69,9 +69,21 @@ Acc reduce_in_blocks(std::size_t n, const Acc& identity, Add&& add, Merge&& merg
   for (std::ptrdiff_t b = 0; b < blocks; ++b) {
     const std::size_t begin = std::min(n, static_cast<std::size_t>(b) * block);
     const std::size_t end = std::min(n, begin + block);
-    Acc acc = identity;
-    for (std::size_t i = begin; i < end; ++i) add(acc, i);
-    partial[static_cast<std::size_t>(b)] = acc;
+    // Four interleaved accumulators: independent chains of additions keep
+    // the adder busy instead of waiting on each sum's latency.
+    Acc lanes[4] = {identity, identity, identity, identity};
+    std::size_t i = begin;
+    for (; i + 4 <= end; i += 4) {
+      add(lanes[0], i);
+      add(lanes[1], i + 1);
+      add(lanes[2], i + 2);
+      add(lanes[3], i + 3);
+    }
+    for (; i < end; ++i) add(lanes[0], i);
+    merge(lanes[0], lanes[1]);
+    merge(lanes[2], lanes[3]);
+    merge(lanes[0], lanes[2]);
+    partial[static_cast<std::size_t>(b)] = lanes[0];
   }
   Acc total = identity;
   for (const Acc& part : partial) merge(total, part);
