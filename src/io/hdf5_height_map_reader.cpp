@@ -7,6 +7,7 @@
 #include <fmt/ranges.h>
 #include <hdf5.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -254,6 +255,41 @@ double read_spacing(hid_t file, const char* name, const Target& target) {
   return value;
 }
 
+// The validity mask of the shared height-map layout: a dataset 'valid' next
+// to the heights (1 measured, 0 filled in by whoever made the file). Points it
+// marks 0 become invalid points of the map, so that the --invalid choice
+// (refuse, fill or crop) decides about them rather than the file's own fill;
+// their stored heights are kept. A mask that is present but unusable is an
+// error: silently ignoring it would hand invented heights to the solver.
+void read_validity_mask(hid_t file, const std::vector<hsize_t>& dims, HeightMap& map, const Target& target) {
+  const std::size_t slash = target.dataset.find_last_of('/');
+  const std::string name = (slash == std::string::npos ? std::string() : target.dataset.substr(0, slash + 1)) + "valid";
+  if (name == target.dataset || !link_exists(file, name)) return;
+  const Target mask{target.path, name};
+  const Object data(H5Oopen(file, name.c_str(), H5P_DEFAULT));
+  if (!data.valid() || H5Iget_type(data.get()) != H5I_DATASET) {
+    mask.fail("the validity mask next to the heights is not a dataset");
+  }
+  const Datatype type(H5Dget_type(data.get()));
+  if (!type.valid() || H5Tget_class(type.get()) != H5T_INTEGER) {
+    mask.fail("the validity mask must hold integers (1 measured, 0 invalid)");
+  }
+  const std::vector<hsize_t> mask_dims = read_shape(data.get(), mask);
+  if (mask_dims != dims) {
+    mask.fail(fmt::format("the validity mask has shape {}, but the heights '{}' have shape {}", shape_text(mask_dims),
+                          target.dataset, shape_text(dims)));
+  }
+  std::vector<std::uint8_t> flags(map.size());
+  if (H5Dread(data.get(), H5T_NATIVE_UINT8, H5S_ALL, H5S_ALL, H5P_DEFAULT, flags.data()) < 0) {
+    mask.fail(fmt::format("the validity mask cannot be read: {}", detail::error_reason()));
+  }
+  if (std::find(flags.begin(), flags.end(), std::uint8_t{0}) == flags.end()) return;
+  if (map.valid.empty()) map.valid.assign(map.size(), 1);
+  for (std::size_t k = 0; k < flags.size(); ++k) {
+    if (flags[k] == 0) map.valid[k] = 0;
+  }
+}
+
 }  // namespace
 
 HeightMap read_hdf5_height_map(const std::filesystem::path& path, const std::string& dataset,
@@ -279,6 +315,7 @@ HeightMap read_hdf5_height_map(const std::filesystem::path& path, const std::str
   } else {
     detail::mark_non_finite_invalid(map);
   }
+  read_validity_mask(file.get(), dims, map, target);
 
   map.dx = read_spacing(file.get(), "dx", target);
   // A profile has no y spacing, whatever the file says.

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -106,6 +107,32 @@ TEST(HeightMapCliTest, X3pWithInvalidPointsIsRefusedUnlessFilledOrCropped) {
   ASSERT_EQ(cropped.exit_code, kExitOk) << cropped.err;
   EXPECT_NE(string_attribute(output, "preparation").find("cropped to the largest rectangle of valid points"),
             std::string::npos);
+}
+
+// A height map in the shared layout whose /valid flags one point as filled
+// in: the file's own fill is not trusted by default either.
+TEST(HeightMapCliTest, PointsFlaggedInTheValidMaskAreRefusedUnlessFilled) {
+  const TempDir dir;
+  const fs::path map = dir / "flagged.h5";
+  {
+    const test::H5 source = test::open_file(kFormatDataDir / "di-5-crop-48x64.h5");
+    const std::vector<double> height = test::read_dataset<double>(source.get(), "height", H5T_NATIVE_DOUBLE);
+    std::vector<std::uint8_t> valid(height.size(), 1);
+    valid[5 * 64 + 7] = 0;
+    const test::H5 file = test::create_file(map);
+    test::add_double_dataset(file.get(), "/height", {48, 64}, height);
+    test::add_dataset(file.get(), "/valid", {48, 64}, H5T_STD_U8LE, H5T_NATIVE_UINT8, valid.data());
+    test::add_double_attribute(file.get(), "dx", 1.953125e-9);
+    test::add_double_attribute(file.get(), "dy", 1.953125e-9);
+  }
+  const fs::path output = dir / "out.h5";
+  expect_input_error(run(solve(map, output, {"--force", "1e-9"}), dir),
+                     {"flagged.h5", "1 of 3072 heights are invalid", "marked invalid by the file", "(j, i) = (5, 7)"},
+                     output);
+  const ProgramRun filled = run(solve(map, output, {"--invalid", "fill", "--force", "1e-9"}), dir);
+  ASSERT_EQ(filled.exit_code, kExitOk) << filled.err;
+  EXPECT_NE(string_attribute(output, "preparation").find("filled 1 of 3072 points"), std::string::npos)
+      << string_attribute(output, "preparation");
 }
 
 TEST(HeightMapCliTest, DektakProfileWindowSolvesIn1D) {

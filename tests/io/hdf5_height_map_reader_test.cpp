@@ -214,6 +214,62 @@ TEST(Hdf5HeightMapReaderTest, ReadsFullMeasuredFilesWhenAvailable) {
   EXPECT_NEAR(rubber.dy, 2.279795e-6, 1e-12);
 }
 
+// The shared layout's /valid (1 measured, 0 filled in): its zeros become
+// invalid points, and the heights stored there are kept for the preparation
+// step to refuse, refill or crop.
+fs::path write_masked_file(const TempDir& dir, const std::vector<std::uint8_t>& valid,
+                           const std::vector<hsize_t>& valid_dims) {
+  const fs::path path = dir / "masked.h5";
+  const auto file = create_file(path);
+  add_double_dataset(file.get(), "/height", {2, 3}, {0.0, 1.0, 2.0, 3.0, 4.0, 5.0});
+  test::add_dataset(file.get(), "/valid", valid_dims, H5T_STD_U8LE, H5T_NATIVE_UINT8, valid.data());
+  return path;
+}
+
+TEST(Hdf5HeightMapReaderTest, MarksPointsThatTheValidMaskFlagsAsFilledIn) {
+  const TempDir dir;
+  const HeightMap map = read_hdf5_height_map(write_masked_file(dir, {1, 1, 1, 1, 0, 1}, {2, 3}));
+  ASSERT_EQ(map.valid.size(), 6u);
+  EXPECT_EQ(map.valid, (std::vector<std::uint8_t>{1, 1, 1, 1, 0, 1}));
+  EXPECT_EQ(map.heights[4], 4.0);  // the file's own fill is kept, only marked
+}
+
+TEST(Hdf5HeightMapReaderTest, AllOnesMaskLeavesEveryPointValid) {
+  const TempDir dir;
+  EXPECT_TRUE(read_hdf5_height_map(write_masked_file(dir, {1, 1, 1, 1, 1, 1}, {2, 3})).all_valid());
+}
+
+TEST(Hdf5HeightMapReaderTest, ReadsTheMaskNextToADatasetInAGroup) {
+  const TempDir dir;
+  const fs::path path = dir / "grouped.h5";
+  {
+    const auto file = create_file(path);
+    const test::H5 group(H5Gcreate2(file.get(), "/scan", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "group");
+    add_double_dataset(file.get(), "/scan/z", {2, 2}, {0.0, 1.0, 2.0, 3.0});
+    const std::vector<std::uint8_t> valid{0, 1, 1, 1};
+    test::add_dataset(file.get(), "/scan/valid", {2, 2}, H5T_STD_U8LE, H5T_NATIVE_UINT8, valid.data());
+  }
+  const HeightMap map = read_hdf5_height_map(path, "/scan/z");
+  EXPECT_EQ(map.valid, (std::vector<std::uint8_t>{0, 1, 1, 1}));
+}
+
+TEST(Hdf5HeightMapReaderTest, RejectsValidMaskOfAnotherShape) {
+  const TempDir dir;
+  const fs::path path = write_masked_file(dir, {1, 1, 1, 1, 0, 1}, {3, 2});
+  expect_contains(read_error(path), {path.string(), "'/valid'", "shape (3, 2)", "heights '/height' have shape (2, 3)"});
+}
+
+TEST(Hdf5HeightMapReaderTest, RejectsValidMaskThatIsNotIntegers) {
+  const TempDir dir;
+  const fs::path path = dir / "float-mask.h5";
+  {
+    const auto file = create_file(path);
+    add_double_dataset(file.get(), "/height", {2, 2}, {0.0, 1.0, 2.0, 3.0});
+    add_double_dataset(file.get(), "/valid", {2, 2}, {1.0, 1.0, 0.0, 1.0});
+  }
+  expect_contains(read_error(path), {"'/valid'", "must hold integers"});
+}
+
 TEST(Hdf5HeightMapReaderTest, RejectsMissingFile) {
   const TempDir dir;
   const fs::path path = dir / "absent.h5";

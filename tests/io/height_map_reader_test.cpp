@@ -184,7 +184,7 @@ struct ReadmeRow {
   double dx, dx_half_unit;
   double dy, dy_half_unit;
   double sq, sq_half_unit;
-  std::size_t invalid;  // points the file itself marks invalid
+  std::size_t invalid;  // points the file itself marks invalid (or, in the HDF5 form, marks filled in /valid)
 };
 
 const std::vector<ReadmeRow> kReadme{
@@ -192,12 +192,12 @@ const std::vector<ReadmeRow> kReadme{
     {"dektak-1.csv", 1, 1, 9600, 0.15625e-6, 0.000005e-6, 0.0, 0.0, 4.76e-6, 0.005e-6, 0},
     {"di-5.h5", 2, 512, 512, 1.953125e-9, 0.0000005e-9, 1.953125e-9, 0.0000005e-9, 5.831926e-9, 0.0000005e-9, 0},
     {"spot_1-1000nm.h5", 2, 256, 256, 78.431e-9, 0.0005e-9, 78.431e-9, 0.0005e-9, 110e-9, 0.5e-9, 0},
-    {"opd-1.h5", 2, 480, 640, 196.733e-9, 0.0005e-9, 196.733e-9, 0.0005e-9, 8.37e-9, 0.005e-9, 0},
+    {"opd-1.h5", 2, 480, 640, 196.733e-9, 0.0005e-9, 196.733e-9, 0.0005e-9, 8.37e-9, 0.005e-9, 116},
     {"metropro-1.h5", 2, 480, 640, 1.09825e-6, 0.000005e-6, 1.09825e-6, 0.000005e-6, 7.528822e-8, 0.0000005e-8, 0},
     {"sur-2.h5", 2, 484, 563, 3.484e-6, 0.0005e-6, 3.484e-6, 0.0005e-6, 31.2e-9, 0.05e-9, 0},
     {"plu-1.h5", 2, 576, 768, 1.66e-6, 0.005e-6, 1.66e-6, 0.005e-6, 2.834391e-6, 0.0000005e-6, 0},
     {"KautschukInfiniteFocus.h5", 2, 631, 857, 2.279984e-6, 0.0000005e-6, 2.279795e-6, 0.0000005e-6, 3.40e-6, 0.005e-6,
-     0},
+     823},
     {"KautschukInfiniteFocus.x3p", 2, 634, 860, 2.279984e-6, 0.0000005e-6, 2.279795e-6, 0.0000005e-6, 0.0, 0.0, 5296},
 };
 

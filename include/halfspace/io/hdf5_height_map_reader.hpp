@@ -18,7 +18,10 @@ enum class NonFiniteHeights { reject, mark_invalid };
 // Throws FileError naming the file and dataset when the file is missing or
 // not HDF5, the dataset is missing, of rank other than 1 or 2, not numeric,
 // has fewer than 2 points per axis, or (with NonFiniteHeights::reject) holds
-// a non-finite value (naming its index).
+// a non-finite value (naming its index). A dataset "valid" next to the
+// heights (the shared layout: 1 measured, 0 filled in) marks its zeros as
+// invalid points, keeping their stored heights; it must be an integer array
+// of the same shape.
 HeightMap read_hdf5_height_map(const std::filesystem::path& path, const std::string& dataset = "/height",
                                NonFiniteHeights non_finite = NonFiniteHeights::reject);
 
