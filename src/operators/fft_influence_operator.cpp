@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "halfspace/error.hpp"
+#include "halfspace/fft/even_symbol.hpp"
 #include "halfspace/fft/real_fft.hpp"
 #include "halfspace/kernels/love_rectangle.hpp"
 #include "halfspace/kernels/periodic_fourier.hpp"
@@ -112,8 +113,7 @@ void copy_padded(std::size_t ny, std::size_t nx, std::size_t rows, std::size_t s
 
 struct FftInfluenceOperator::Impl {
   Impl(const Grid& g, double e_star, std::shared_ptr<RealFft> shared)
-      : grid(g), transform(std::move(shared)), fft(*transform) {
-    kernel.resize(fft.spectrum_size());
+      : grid(g), transform(std::move(shared)), fft(*transform), kernel(fft.rows(), fft.spectrum_cols()) {
     if (grid.periodic()) {
       init_periodic(e_star);
     } else {
@@ -131,11 +131,11 @@ struct FftInfluenceOperator::Impl {
     auto wavenumber_y = [&](std::size_t r) {
       return grid.dimension() == 1 ? 0.0 : kernels::dft_wavenumber(r, ny, grid.dy());
     };
-    for (std::size_t r = 0; r < fft.rows(); ++r) {
+    for (std::size_t r = 0; r < kernel.stored_rows(); ++r) {
       const double qy = wavenumber_y(r);
       for (std::size_t c = 0; c < cols; ++c) {
         const double q = std::hypot(kernels::dft_wavenumber(c, nx, grid.dx()), qy);
-        kernel[r * cols + c] = kernels::periodic_kernel_spectrum(q, e_star) * inverse_n;
+        kernel.at(r, c) = kernels::periodic_kernel_spectrum(q, e_star) * inverse_n;
       }
     }
     double sum = 0.0;
@@ -183,7 +183,10 @@ struct FftInfluenceOperator::Impl {
     fft.forward();
     const double inverse_n = 1.0 / static_cast<double>(fft.real_size());
     std::span<const std::complex<double>> spectrum = fft.spectrum();
-    for (std::size_t k = 0; k < kernel.size(); ++k) kernel[k] = spectrum[k].real() * inverse_n;
+    for (std::size_t r = 0; r < kernel.stored_rows(); ++r) {
+      for (std::size_t c = 0; c < kernel.cols(); ++c)
+        kernel.at(r, c) = spectrum[r * kernel.cols() + c].real() * inverse_n;
+    }
     // apply() relies on the padding of a separate input buffer being zero.
     if (!fft.in_place()) std::fill(coefficients.begin(), coefficients.end(), 0.0);
   }
@@ -191,7 +194,7 @@ struct FftInfluenceOperator::Impl {
   Grid grid;
   std::shared_ptr<RealFft> transform;  // own, or shared with a preconditioner (periodic grids)
   RealFft& fft;
-  std::vector<double> kernel;  // real kernel spectrum, layout of fft.spectrum()
+  EvenSymbol kernel;  // real kernel spectrum, rows folded (even in qy)
   double self = 0.0;
 };
 
@@ -235,9 +238,7 @@ void FftInfluenceOperator::apply(std::span<const double> pressure, std::span<dou
     }
     m.fft.forward();
   }
-  std::span<std::complex<double>> spectrum = m.fft.spectrum();
-  const std::vector<double>& kernel = m.kernel;
-  linalg::for_each_index(spectrum.size(), [&](std::size_t k) { spectrum[k] *= kernel[k]; });
+  m.kernel.multiply(m.fft.spectrum());
   if (!(direct && m.fft.backward_into(displacement))) {
     m.fft.backward();
     std::span<const double> output = m.fft.output();

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "halfspace/error.hpp"
+#include "halfspace/fft/even_symbol.hpp"
 #include "halfspace/fft/real_fft.hpp"
 #include "halfspace/kernels/periodic_fourier.hpp"
 #include "halfspace/linalg/parallel.hpp"
@@ -42,28 +43,25 @@ std::shared_ptr<RealFft> checked_shared_transform(const Grid& grid, std::shared_
 
 struct FourierPreconditioner::Impl {
   Impl(const Grid& g, double e_star, std::shared_ptr<RealFft> shared)
-      : grid(g), transform(std::move(shared)), fft(*transform) {
-    const std::size_t cols = fft.spectrum_cols();
-    symbol.resize(fft.spectrum_size());
+      : grid(g), transform(std::move(shared)), fft(*transform), symbol(fft.rows(), fft.spectrum_cols()) {
+    // FFTW's transforms are unnormalised: fold 1/N into the symbol.
+    const double scale = 0.5 * e_star / static_cast<double>(grid.size());
     double q_min = std::numeric_limits<double>::infinity();
-    for (std::size_t r = 0; r < fft.rows(); ++r) {
+    for (std::size_t r = 0; r < symbol.stored_rows(); ++r) {
       const double qy = grid.dimension() == 1 ? 0.0 : kernels::dft_wavenumber(r, grid.ny(), grid.dy());
-      for (std::size_t c = 0; c < cols; ++c) {
+      for (std::size_t c = 0; c < symbol.cols(); ++c) {
         const double q = std::hypot(kernels::dft_wavenumber(c, grid.nx(), grid.dx()), qy);
-        symbol[r * cols + c] = q;
+        symbol.at(r, c) = q * scale;
         if (q > 0.0) q_min = std::min(q_min, q);
       }
     }
-    symbol[0] = q_min;
-    // FFTW's transforms are unnormalised: fold 1/N into the symbol.
-    const double scale = 0.5 * e_star / static_cast<double>(grid.size());
-    for (double& s : symbol) s *= scale;
+    symbol.at(0, 0) = q_min * scale;
   }
 
   Grid grid;
   std::shared_ptr<RealFft> transform;  // own, or shared with the operator
   RealFft& fft;
-  std::vector<double> symbol;  // E*|q|/(2N), layout of fft.spectrum()
+  EvenSymbol symbol;  // E*|q|/(2N), rows folded (even in qy)
 };
 
 FourierPreconditioner::FourierPreconditioner(const Grid& grid, double e_star, FftPlanning planning)
@@ -86,9 +84,7 @@ void FourierPreconditioner::apply(std::span<const double> in, std::span<double> 
     linalg::for_each_index(n, [&](std::size_t i) { input[i] = in[i]; });
     m.fft.forward();
   }
-  std::span<std::complex<double>> spectrum = m.fft.spectrum();
-  const std::vector<double>& symbol = m.symbol;
-  linalg::for_each_index(spectrum.size(), [&](std::size_t k) { spectrum[k] *= symbol[k]; });
+  m.symbol.multiply(m.fft.spectrum());
   if (!m.fft.backward_into(out)) {
     m.fft.backward();
     std::span<const double> output = m.fft.output();

@@ -11,6 +11,18 @@
 #include "halfspace/solvers/grid_transfer.hpp"
 
 namespace halfspace::solvers {
+namespace {
+
+// A level's solve from the prolonged start, which becomes the level's
+// pressure array (no second copy during the solve), or cold without one.
+SolveResult solve_level(ContactSolver& level, std::span<const double> gap, const Loading& loading,
+                        Eigen::ArrayXd start) {
+  if (start.size() == 0) return level.solve(gap, loading);
+  return level.solve_from(gap, loading, std::move(start));
+}
+
+}  // namespace
+
 void MultilevelOptions::validate() const {
   if (!(coarse_tolerance > 0.0 && coarse_tolerance < 1.0)) {
     throw InputError(fmt::format("coarse tolerance = {} is invalid: allowed range is (0, 1)", coarse_tolerance));
@@ -45,15 +57,14 @@ Eigen::ArrayXd MultilevelSolver::coarse_start(const Grid& grid, std::span<const 
   if (!coarse) return {};
   Eigen::ArrayXd coarse_gap(static_cast<Eigen::Index>(coarse->size()));
   restrict_by_average(grid, gap, {coarse_gap.data(), coarse->size()});
-  const Eigen::ArrayXd start = coarse_start(*coarse, {coarse_gap.data(), coarse->size()}, loading, record);
+  Eigen::ArrayXd start = coarse_start(*coarse, {coarse_gap.data(), coarse->size()}, loading, record);
 
   // The same load on the same domain: force, mean pressure and approach all
   // carry over unchanged.
   SolveResult coarse_result;
   try {
-    coarse_result = make_level_(*coarse, coarse_tolerance(), false)
-                        ->solve({coarse_gap.data(), coarse->size()}, loading,
-                                {start.data(), static_cast<std::size_t>(start.size())});
+    coarse_result = solve_level(*make_level_(*coarse, coarse_tolerance(), false), {coarse_gap.data(), coarse->size()},
+                                loading, std::move(start));
   } catch (const InputError&) {
     // The input was checked on the fine grid; a coarse grid can only differ
     // by rounding (e.g. an approach a hair below the mean gap, which the
@@ -88,8 +99,7 @@ SolveResult MultilevelSolver::solve(std::span<const double> initial_gap, const L
   }
   loading.validate();
   CoarseStart coarse;
-  const Eigen::ArrayXd start = coarse_start(grid_, initial_gap, loading, coarse);
-  SolveResult result = fine_->solve(initial_gap, loading, {start.data(), static_cast<std::size_t>(start.size())});
+  SolveResult result = solve_level(*fine_, initial_gap, loading, coarse_start(grid_, initial_gap, loading, coarse));
   result.solver = std::string(name());
   result.coarse = coarse;
   result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time).count();

@@ -71,12 +71,26 @@ PolonskyKeer::PolonskyKeer(InfluenceOperator& op, PolonskyKeerOptions options, P
 
 SolveResult PolonskyKeer::solve(std::span<const double> initial_gap, const Loading& loading,
                                 std::span<const double> initial_pressure) {
+  const std::size_t n = op_.grid().size();
+  if (initial_pressure.empty()) return run(initial_gap, loading, Eigen::ArrayXd(static_cast<Eigen::Index>(n)), false);
+  check_size("initial pressure", initial_pressure.size(), n);
+  return run(initial_gap, loading,
+             Eigen::Map<const Eigen::ArrayXd>(initial_pressure.data(), static_cast<Eigen::Index>(n)), true);
+}
+
+SolveResult PolonskyKeer::solve_from(std::span<const double> initial_gap, const Loading& loading,
+                                     Eigen::ArrayXd&& start) {
+  check_size("initial pressure", static_cast<std::size_t>(start.size()), op_.grid().size());
+  return run(initial_gap, loading, std::move(start), true);
+}
+
+SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading& loading, Eigen::ArrayXd pressure,
+                              bool warm) {
   const auto start = std::chrono::steady_clock::now();
   const Grid& grid = op_.grid();
   const std::size_t n = grid.size();
   const double cells = static_cast<double>(n);
   check_size("initial gap", initial_gap.size(), n);
-  if (!initial_pressure.empty()) check_size("initial pressure", initial_pressure.size(), n);
   loading.validate();
 
   const double gap_max = linalg::max_of(n, [&](std::size_t i) { return initial_gap[i]; });
@@ -113,7 +127,7 @@ SolveResult PolonskyKeer::solve(std::span<const double> initial_gap, const Loadi
   result.solver = std::string(name());
   result.tolerance = options_.tolerance;
   result.residual_history.reserve(static_cast<std::size_t>(options_.max_iterations) + 1);
-  result.pressure.setZero(static_cast<Eigen::Index>(n));
+  result.pressure = std::move(pressure);
   result.displacement.setZero(static_cast<Eigen::Index>(n));
   result.gap.setZero(static_cast<Eigen::Index>(n));
   double* p = result.pressure.data();
@@ -128,8 +142,10 @@ SolveResult PolonskyKeer::solve(std::span<const double> initial_gap, const Loadi
   // Step 0: starting pressure. Load control: the warm start or a uniform
   // pressure, scaled to the target force. Displacement control: the warm
   // start or the local-overlap guess.
-  if (!initial_pressure.empty()) {
-    for_each_index(n, [&](std::size_t i) { p[i] = std::max(initial_pressure[i], 0.0); });
+  if (warm) {
+    for_each_index(n, [&](std::size_t i) { p[i] = std::max(p[i], 0.0); });
+  } else {
+    for_each_index(n, [&](std::size_t i) { p[i] = 0.0; });
   }
   if (problem.load_controlled) {
     double force = problem.cell_area * linalg::sum(n, [&](std::size_t i) { return p[i]; });
@@ -139,7 +155,7 @@ SolveResult PolonskyKeer::solve(std::span<const double> initial_gap, const Loadi
     }
     const double scale = problem.target_force / force;
     for_each_index(n, [&](std::size_t i) { p[i] *= scale; });
-  } else if (initial_pressure.empty()) {
+  } else if (!warm) {
     for_each_index(n, [&](std::size_t i) { g[i] = initial_gap[i] - problem.approach; });
     local_overlap_pressure({g, n}, k_self, p);
   }

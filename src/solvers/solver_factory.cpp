@@ -31,6 +31,9 @@ class SolverWithOperator final : public ContactSolver {
                     std::span<const double> initial_pressure) override {
     return solver_->solve(initial_gap, loading, initial_pressure);
   }
+  SolveResult solve_from(std::span<const double> initial_gap, const Loading& loading, Eigen::ArrayXd&& start) override {
+    return solver_->solve_from(initial_gap, loading, std::move(start));
+  }
 
  private:
   std::unique_ptr<InfluenceOperator> op_;

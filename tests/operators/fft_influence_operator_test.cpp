@@ -130,6 +130,11 @@ TEST(FftInfluenceOperatorTest, PeriodicFourierModeIsExact2D) {
   expect_mode_response(grid, 0, 5);
   expect_mode_response(grid, 6, 1);
   expect_mode_response(grid, 11, 9);
+  // An odd number of rows: the kernel stores rows 0..ny/2 and folds the rest.
+  const Grid odd = Grid::plane(8, 7, 1e-6, 1.3e-6, Boundary::periodic);
+  expect_mode_response(odd, 1, 3);
+  expect_mode_response(odd, 3, 4);
+  expect_mode_response(odd, 5, 6);
 }
 
 TEST(FftInfluenceOperatorTest, PeriodicOutputHasZeroMean) {

@@ -88,6 +88,26 @@ TEST_P(PolonskyKeerControlTest, ApproachUnderLoadImposedBackReturnsTheLoadFree1D
   expect_round_trip(grid, gap0, Loading::force(5e4), 1e-9 * gap0.maxCoeff(), GetParam());
 }
 
+// A start handed over (solve_from) iterates exactly like the same start
+// passed as a view (solve): same iterates, same bits.
+TEST_P(PolonskyKeerControlTest, StartHandedOverSolvesLikeAStartPassedAsAView) {
+  const Grid grid = Grid::plane(64, 64, 1e-6, 1e-6, Boundary::periodic);
+  const Eigen::ArrayXd gap0 = random_periodic_gap(grid, 2e-8);
+  FftInfluenceOperator op(grid, kEStar);
+  PkSolver solver(op, kEStar, GetParam());
+  const Loading loading = Loading::mean_pressure(2e8);
+  const SolveResult cold = solver.solve({gap0.data(), grid.size()}, loading);
+  ASSERT_TRUE(cold.converged()) << cold.message;
+  const Eigen::ArrayXd start = 0.8 * cold.pressure;
+  const SolveResult viewed =
+      solver.solve({gap0.data(), grid.size()}, Loading::mean_pressure(2.5e8), {start.data(), grid.size()});
+  const SolveResult handed = solver.solve_from({gap0.data(), grid.size()}, Loading::mean_pressure(2.5e8), start);
+  ASSERT_TRUE(handed.converged()) << handed.message;
+  EXPECT_EQ(handed.iterations, viewed.iterations);
+  EXPECT_TRUE((handed.pressure == viewed.pressure).all());
+  EXPECT_EQ(handed.residual, viewed.residual);
+}
+
 TEST_P(PolonskyKeerControlTest, ReportsIterationLimitAsStatus) {
   const Grid grid = Grid::plane(32, 32, 1e-6, 1e-6, Boundary::periodic);
   const Eigen::ArrayXd gap0 = random_periodic_gap(grid, 1e-7);

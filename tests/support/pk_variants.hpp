@@ -48,6 +48,9 @@ class OwningPk final : public ContactSolver {
                     std::span<const double> initial_pressure = {}) override {
     return solver_.solve(initial_gap, loading, initial_pressure);
   }
+  SolveResult solve_from(std::span<const double> initial_gap, const Loading& loading, Eigen::ArrayXd&& start) override {
+    return solver_.solve_from(initial_gap, loading, std::move(start));
+  }
 
  private:
   std::unique_ptr<InfluenceOperator> owned_;
@@ -85,6 +88,9 @@ class PkSolver {
   SolveResult solve(std::span<const double> initial_gap, const Loading& loading,
                     std::span<const double> initial_pressure = {}) {
     return solver_->solve(initial_gap, loading, initial_pressure);
+  }
+  SolveResult solve_from(std::span<const double> initial_gap, const Loading& loading, Eigen::ArrayXd start) {
+    return solver_->solve_from(initial_gap, loading, std::move(start));
   }
 
  private:

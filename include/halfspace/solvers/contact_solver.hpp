@@ -2,6 +2,7 @@
 // and the dense Lemke and QP solvers), so front ends can choose one by name.
 #pragma once
 
+#include <Eigen/Core>
 #include <span>
 #include <string_view>
 
@@ -25,6 +26,14 @@ class ContactSolver {
   // as a status.
   virtual SolveResult solve(std::span<const double> initial_gap, const Loading& loading,
                             std::span<const double> initial_pressure = {}) = 0;
+
+  // solve() warm-started from `start`, which the solver may take over as the
+  // storage of its result's pressure, so that a start made only for this
+  // solve (a coarse-grid solution) holds no memory of its own meanwhile. The
+  // default copies it.
+  virtual SolveResult solve_from(std::span<const double> initial_gap, const Loading& loading, Eigen::ArrayXd&& start) {
+    return solve(initial_gap, loading, {start.data(), static_cast<std::size_t>(start.size())});
+  }
 };
 
 }  // namespace halfspace

@@ -68,8 +68,14 @@ class PolonskyKeer final : public ContactSolver {
 
   SolveResult solve(std::span<const double> initial_gap, const Loading& loading,
                     std::span<const double> initial_pressure = {}) override;
+  // Iterates in `start` itself (it becomes the result's pressure).
+  SolveResult solve_from(std::span<const double> initial_gap, const Loading& loading, Eigen::ArrayXd&& start) override;
 
  private:
+  // The iteration from `pressure`: a warm start if `warm`, else any values
+  // (step 0 chooses the start).
+  SolveResult run(std::span<const double> initial_gap, const Loading& loading, Eigen::ArrayXd pressure, bool warm);
+
   InfluenceOperator& op_;
   PolonskyKeerOptions options_;
   Preconditioner* preconditioner_;

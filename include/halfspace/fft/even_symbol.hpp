@@ -1,0 +1,40 @@
+// A real multiplier on a RealFft spectrum that is even in the row
+// wavenumber, as every half-space kernel and preconditioner symbol is
+// (they depend on |q|). Rows r and rows - r carry the same values, so only
+// rows 0 .. rows/2 are stored: half the memory of a full symbol, and half
+// the symbol traffic of each multiplication.
+#pragma once
+
+#include <complex>
+#include <cstddef>
+#include <span>
+#include <vector>
+
+namespace halfspace {
+
+class EvenSymbol {
+ public:
+  // For a spectrum of `rows` rows of `cols` (complex) entries; all zero.
+  EvenSymbol(std::size_t rows, std::size_t cols)
+      : rows_(rows), cols_(cols), values_(stored_rows() * cols, 0.0) {}
+
+  std::size_t rows() const { return rows_; }
+  std::size_t cols() const { return cols_; }
+  // Rows 0 .. rows/2; row r > rows/2 reads row rows - r.
+  std::size_t stored_rows() const { return rows_ / 2 + 1 < rows_ ? rows_ / 2 + 1 : rows_; }
+  double& at(std::size_t stored_row, std::size_t col) { return values_[stored_row * cols_ + col]; }
+  double at(std::size_t stored_row, std::size_t col) const { return values_[stored_row * cols_ + col]; }
+  // The stored row that spectrum row r uses.
+  std::size_t folded(std::size_t row) const { return row < stored_rows() ? row : rows_ - row; }
+
+  // spectrum[r, c] *= symbol[r, c], in parallel over rows (or over the
+  // entries of a single row).
+  void multiply(std::span<std::complex<double>> spectrum) const;
+
+ private:
+  std::size_t rows_;
+  std::size_t cols_;
+  std::vector<double> values_;
+};
+
+}  // namespace halfspace
