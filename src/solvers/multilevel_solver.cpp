@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "halfspace/error.hpp"
+#include "halfspace/linalg/parallel.hpp"
 #include "halfspace/solvers/grid_transfer.hpp"
 
 namespace halfspace::solvers {
@@ -31,6 +32,20 @@ void MultilevelOptions::validate() const {
     throw InputError(
         fmt::format("minimum coarse cells per axis = {} is invalid: must be at least 2", min_cells_per_axis));
   }
+  if (!(warm_start_max_load_ratio >= 1.0)) {
+    throw InputError(
+        fmt::format("warm start load ratio = {} is invalid: must be at least 1", warm_start_max_load_ratio));
+  }
+}
+
+bool MultilevelSolver::warm_start_is_close(std::span<const double> pressure, const Loading& loading) const {
+  if (!loading.load_controlled()) return true;
+  const double target = loading.mode == ControlMode::force ? loading.value : loading.value * grid_.domain_area();
+  const double force =
+      grid_.cell_area() * linalg::sum(pressure.size(), [&](std::size_t i) { return std::max(pressure[i], 0.0); });
+  if (!(force > 0.0)) return false;
+  const double ratio = target > force ? target / force : force / target;
+  return ratio <= options_.warm_start_max_load_ratio;
 }
 
 MultilevelSolver::MultilevelSolver(const Grid& grid, double fine_tolerance, LevelSolverFactory make_level,
@@ -88,6 +103,10 @@ Eigen::ArrayXd MultilevelSolver::coarse_start(const Grid& grid, std::span<const 
 SolveResult MultilevelSolver::solve(std::span<const double> initial_gap, const Loading& loading,
                                     std::span<const double> initial_pressure) {
   const auto start_time = std::chrono::steady_clock::now();
+  if (!initial_pressure.empty() && initial_pressure.size() == grid_.size() &&
+      !warm_start_is_close(initial_pressure, loading)) {
+    initial_pressure = {};
+  }
   if (!initial_pressure.empty()) {
     SolveResult result = fine_->solve(initial_gap, loading, initial_pressure);
     result.solver = std::string(name());

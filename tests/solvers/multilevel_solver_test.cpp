@@ -1,6 +1,6 @@
 // pk-multilevel: the coarse-grid start changes the path, not the answer, and
 // it is used exactly when it can be (even sides, large enough grid, no warm
-// start). The physics validation (Hertz, Westergaard, round trips) runs on it
+// start close to the load). The physics validation (Hertz, Westergaard, round trips) runs on it
 // through the PkVariant suites.
 #include "halfspace/solvers/multilevel_solver.hpp"
 
@@ -91,6 +91,18 @@ TEST(MultilevelSolverTest, SkipsTheCoarseGridsWhenItCannotOrNeedNotUseThem) {
   ASSERT_TRUE(warm.converged()) << warm.message;
   EXPECT_EQ(warm.coarse.levels, 0);
   EXPECT_EQ(warm.solver, "multilevel-polonsky-keer");
+
+  // A warm start whose force is more than 1.5x off the target (here 2x) is
+  // set aside for the coarse grids; under displacement control any is kept.
+  const SolveResult far =
+      solver->solve({gap.data(), grid.size()}, Loading::mean_pressure(0.008), {cold.pressure.data(), grid.size()});
+  ASSERT_TRUE(far.converged()) << far.message;
+  EXPECT_EQ(far.coarse.levels, 1);
+  EXPECT_NEAR(far.mean_pressure, 0.008, 1e-12);
+  const SolveResult approach =
+      solver->solve({gap.data(), grid.size()}, Loading::approach(far.approach), {cold.pressure.data(), grid.size()});
+  ASSERT_TRUE(approach.converged()) << approach.message;
+  EXPECT_EQ(approach.coarse.levels, 0);
 }
 
 TEST(MultilevelSolverTest, RefusesBadInputBeforeAnyCoarseSolve) {
@@ -104,6 +116,9 @@ TEST(MultilevelSolverTest, RefusesBadInputBeforeAnyCoarseSolve) {
   EXPECT_THROW(bad.validate(), InputError);
   bad = {};
   bad.min_cells_per_axis = 1;
+  EXPECT_THROW(bad.validate(), InputError);
+  bad = {};
+  bad.warm_start_max_load_ratio = 0.9;
   EXPECT_THROW(bad.validate(), InputError);
 }
 

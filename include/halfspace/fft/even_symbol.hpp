@@ -15,8 +15,7 @@ namespace halfspace {
 class EvenSymbol {
  public:
   // For a spectrum of `rows` rows of `cols` (complex) entries; all zero.
-  EvenSymbol(std::size_t rows, std::size_t cols)
-      : rows_(rows), cols_(cols), values_(stored_rows() * cols, 0.0) {}
+  EvenSymbol(std::size_t rows, std::size_t cols) : rows_(rows), cols_(cols), values_(stored_rows() * cols, 0.0) {}
 
   std::size_t rows() const { return rows_; }
   std::size_t cols() const { return cols_; }

@@ -27,9 +27,13 @@ struct MultilevelOptions {
   double coarse_tolerance = 1e-4;
   // No grid coarser than this many cells per axis is made.
   std::size_t min_cells_per_axis = 32;
+  // A warm start under load control is used only while the target force is
+  // within this factor of the start's force; further off, the coarse grids
+  // give the better start (docs/performance.md, warm starts).
+  double warm_start_max_load_ratio = 1.5;
 
-  // Throws InputError naming the option unless 0 < coarse_tolerance < 1 and
-  // min_cells_per_axis >= 2.
+  // Throws InputError naming the option unless 0 < coarse_tolerance < 1,
+  // min_cells_per_axis >= 2 and warm_start_max_load_ratio >= 1.
   void validate() const;
 };
 
@@ -49,11 +53,15 @@ class MultilevelSolver final : public ContactSolver {
   std::string_view name() const override { return "multilevel-polonsky-keer"; }
 
   // With an initial pressure (e.g. the previous step of a sweep) the coarse
-  // levels are skipped: the warm start is already a good start.
+  // levels are skipped: the warm start is already a good start, unless under
+  // load control its force is off the target by more than
+  // warm_start_max_load_ratio, in which case it is set aside.
   SolveResult solve(std::span<const double> initial_gap, const Loading& loading,
                     std::span<const double> initial_pressure = {}) override;
 
  private:
+  // Whether a warm start is close enough to the load to beat the coarse grids.
+  bool warm_start_is_close(std::span<const double> pressure, const Loading& loading) const;
   // Pressure on `grid` prolonged from the solution on the next coarser grid
   // (itself started from the one below), or empty if there is no coarser
   // grid. Adds the coarse work to `record`.
