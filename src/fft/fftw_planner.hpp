@@ -2,11 +2,27 @@
 // and what must happen under it before and after planning.
 #pragma once
 
+#include <fftw3.h>
+
+#include <complex>
+#include <cstddef>
 #include <mutex>
 
 #include "halfspace/fft/fft_planning.hpp"
 
 namespace halfspace::detail {
+
+// FFTW's planner flags for `planning`.
+unsigned planner_flags(FftPlanning planning);
+
+// n as FFTW's int extent; throws InputError naming n unless 1 <= n <= INT_MAX.
+int checked_extent(std::size_t n);
+
+// std::complex<double> is layout-compatible with double[2] ([complex.numbers]),
+// which is what fftw_complex is; the FFTW manual sanctions this cast.
+inline fftw_complex* as_fftw(std::complex<double>* z) {
+  return reinterpret_cast<fftw_complex*>(z);
+}
 
 // Held for every call into FFTW other than fftw_execute.
 std::mutex& fftw_planner_mutex();

@@ -35,10 +35,6 @@ void init_fftw_threads() {
   }
 }
 
-}  // namespace detail
-
-namespace {
-
 unsigned planner_flags(FftPlanning planning) {
   switch (planning) {
     case FftPlanning::measure:
@@ -58,13 +54,11 @@ int checked_extent(std::size_t n) {
   return static_cast<int>(n);
 }
 
-fftw_complex* as_fftw(std::complex<double>* z) {
-  // std::complex<double> is layout-compatible with double[2] ([complex.numbers]),
-  // which is what fftw_complex is; the FFTW manual sanctions this cast.
-  return reinterpret_cast<fftw_complex*>(z);
-}
+}  // namespace detail
 
-}  // namespace
+using detail::as_fftw;
+using detail::checked_extent;
+using detail::planner_flags;
 
 RealFft::RealFft(std::size_t n, FftPlanning planning, FftOutput output) : rows_(1), cols_(n) {
   const int dims[1] = {checked_extent(n)};

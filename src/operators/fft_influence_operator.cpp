@@ -16,6 +16,7 @@
 
 #include "halfspace/error.hpp"
 #include "halfspace/fft/even_symbol.hpp"
+#include "halfspace/fft/padded_real_fft.hpp"
 #include "halfspace/fft/real_fft.hpp"
 #include "halfspace/kernels/love_rectangle.hpp"
 #include "halfspace/kernels/periodic_fourier.hpp"
@@ -26,33 +27,14 @@
 namespace halfspace {
 namespace {
 
-// Transform shape: the grid itself (periodic) or twice it per axis (free). A
-// 1D grid is one row.
+// The periodic transform: the grid itself (a 1D grid is one row). The
+// inverse may overwrite the input (no padding to keep): one real array less.
 std::size_t transform_rows(const Grid& grid) {
-  if (grid.dimension() == 1) return 1;
-  return grid.periodic() ? grid.ny() : 2 * grid.ny();
+  return grid.dimension() == 1 ? 1 : grid.ny();
 }
-std::size_t transform_cols(const Grid& grid) {
-  return grid.periodic() ? grid.nx() : 2 * grid.nx();
-}
-
-// Padded transforms from this many points up work in place: below it FFTW's
-// ESTIMATE plans for in-place transforms were up to 1.3x slower than the
-// out-of-place ones (512^2 transform), above it faster, and that is where
-// the memory matters (docs/performance.md).
-constexpr std::size_t kInPlaceMinPoints = std::size_t{1} << 20;
-
-// Periodic transforms have no padding to keep, so the inverse transform may
-// overwrite the input: one real array less. Large padded free transforms work
-// in place, in one buffer a third the size of three, and rewrite the zero
-// padding before every forward transform; small ones keep the padding in
-// their own input buffer.
-RealFft make_fft(const Grid& grid, FftPlanning planning) {
-  const bool large = transform_rows(grid) * transform_cols(grid) >= kInPlaceMinPoints;
-  const FftOutput output =
-      grid.periodic() ? FftOutput::overwrite_input : (large ? FftOutput::in_place : FftOutput::separate);
-  if (grid.dimension() == 1) return RealFft(transform_cols(grid), planning, output);
-  return RealFft(transform_rows(grid), transform_cols(grid), planning, output);
+RealFft make_periodic_fft(const Grid& grid, FftPlanning planning) {
+  if (grid.dimension() == 1) return RealFft(grid.nx(), planning, FftOutput::overwrite_input);
+  return RealFft(grid.ny(), grid.nx(), planning, FftOutput::overwrite_input);
 }
 
 // A shared transform must be the periodic grid's own: apply() reads rows at
@@ -61,10 +43,10 @@ std::shared_ptr<RealFft> checked_shared_transform(const Grid& grid, std::shared_
   if (!grid.periodic()) {
     throw InputError("FftInfluenceOperator: a shared transform needs a periodic grid (free grids pad it)");
   }
-  if (!transform || transform->rows() != transform_rows(grid) || transform->cols() != transform_cols(grid)) {
+  if (!transform || transform->rows() != transform_rows(grid) || transform->cols() != grid.nx()) {
     throw InputError(fmt::format("FftInfluenceOperator: the shared transform is {}x{} but the grid needs {}x{}",
                                  transform ? transform->rows() : 0, transform ? transform->cols() : 0,
-                                 transform_rows(grid), transform_cols(grid)));
+                                 transform_rows(grid), grid.nx()));
   }
   return transform;
 }
@@ -77,43 +59,17 @@ std::size_t mirrored(std::size_t k, std::size_t n) {
   return k <= n ? k : 2 * n - k;
 }
 
-// Calls copy(j, i) over an (ny, nx) block, in parallel over rows, or over the
-// cells of a 1D grid's single row.
-template <class Copy>
-void copy_block(std::size_t ny, std::size_t nx, Copy&& copy) {
-  if (ny == 1) {
-    linalg::for_each_index(nx, [&](std::size_t i) { copy(0, i); });
-  } else {
-    linalg::for_each_row(ny, nx, [&](std::size_t j) {
-      for (std::size_t i = 0; i < nx; ++i) copy(j, i);
-    });
-  }
-}
-
-// Writes the (ny, nx) block of `values` into the top-left corner of the
-// (rows, stride) buffer and zero everywhere else, in parallel over rows.
-void copy_padded(std::size_t ny, std::size_t nx, std::size_t rows, std::size_t stride, std::span<const double> values,
-                 std::span<double> buffer) {
-  if (rows == 1) {  // a 1D grid: one long row
-    linalg::for_each_index(stride, [&](std::size_t i) { buffer[i] = i < nx ? values[i] : 0.0; });
-    return;
-  }
-  linalg::for_each_row(rows, stride, [&](std::size_t j) {
-    double* row = buffer.data() + j * stride;
-    if (j < ny) {
-      std::copy_n(values.data() + j * nx, nx, row);
-      std::fill(row + nx, row + stride, 0.0);
-    } else {
-      std::fill(row, row + stride, 0.0);
-    }
-  });
-}
-
 }  // namespace
 
 struct FftInfluenceOperator::Impl {
-  Impl(const Grid& g, double e_star, std::shared_ptr<RealFft> shared)
-      : grid(g), transform(std::move(shared)), fft(*transform), kernel(fft.rows(), fft.spectrum_cols()) {
+  // Periodic: `shared` is the grid's transform. Free: a padded one is made.
+  Impl(const Grid& g, double e_star, std::shared_ptr<RealFft> shared, FftPlanning planning)
+      : grid(g),
+        transform(std::move(shared)),
+        padded(transform ? nullptr
+                         : std::make_unique<PaddedRealFft>(g.dimension() == 1 ? 1 : g.ny(), g.nx(), planning)),
+        kernel(transform ? transform->rows() : padded->spectrum_rows(),
+               transform ? transform->spectrum_cols() : padded->spectrum_cols()) {
     if (grid.periodic()) {
       init_periodic(e_star);
     } else {
@@ -126,7 +82,7 @@ struct FftInfluenceOperator::Impl {
   void init_periodic(double e_star) {
     const std::size_t nx = grid.nx();
     const std::size_t ny = grid.ny();
-    const std::size_t cols = fft.spectrum_cols();
+    const std::size_t cols = kernel.cols();
     const double inverse_n = 1.0 / static_cast<double>(grid.size());
     auto wavenumber_y = [&](std::size_t r) {
       return grid.dimension() == 1 ? 0.0 : kernels::dft_wavenumber(r, ny, grid.dy());
@@ -139,7 +95,7 @@ struct FftInfluenceOperator::Impl {
       }
     }
     double sum = 0.0;
-    for (std::size_t r = 0; r < fft.rows(); ++r) {
+    for (std::size_t r = 0; r < kernel.rows(); ++r) {
       const double qy = wavenumber_y(r);
       for (std::size_t c = 0; c < nx; ++c) {
         sum += kernels::periodic_kernel_spectrum(std::hypot(kernels::dft_wavenumber(c, nx, grid.dx()), qy), e_star);
@@ -171,40 +127,35 @@ struct FftInfluenceOperator::Impl {
     });
     self = quadrant[0];
 
-    const std::size_t rows = fft.rows();
-    const std::size_t cols = fft.cols();
-    const std::size_t stride = fft.real_stride();
-    std::span<double> coefficients = fft.input();
-    linalg::for_each_row(rows, cols, [&](std::size_t r) {
+    linalg::for_each_row(padded->spectrum_rows(), 2 * nx, [&](std::size_t r) {
       const std::size_t dj = line ? 0 : mirrored(r, ny);
-      for (std::size_t c = 0; c < cols; ++c)
-        coefficients[r * stride + c] = quadrant[dj * quadrant_cols + mirrored(c, nx)];
+      std::span<double> row = padded->padded_row(r);
+      for (std::size_t c = 0; c < row.size(); ++c) row[c] = quadrant[dj * quadrant_cols + mirrored(c, nx)];
     });
-    fft.forward();
-    const double inverse_n = 1.0 / static_cast<double>(fft.real_size());
-    std::span<const std::complex<double>> spectrum = fft.spectrum();
+    padded->forward_all_rows();
+    const double inverse_n = 1.0 / static_cast<double>(padded->padded_size());
+    std::span<const std::complex<double>> spectrum = padded->spectrum();
     for (std::size_t r = 0; r < kernel.stored_rows(); ++r) {
       for (std::size_t c = 0; c < kernel.cols(); ++c)
         kernel.at(r, c) = spectrum[r * kernel.cols() + c].real() * inverse_n;
     }
-    // apply() relies on the padding of a separate input buffer being zero.
-    if (!fft.in_place()) std::fill(coefficients.begin(), coefficients.end(), 0.0);
   }
 
   Grid grid;
-  std::shared_ptr<RealFft> transform;  // own, or shared with a preconditioner (periodic grids)
-  RealFft& fft;
-  EvenSymbol kernel;  // real kernel spectrum, rows folded (even in qy)
+  std::shared_ptr<RealFft> transform;     // periodic grids: own, or shared with a preconditioner
+  std::unique_ptr<PaddedRealFft> padded;  // free grids
+  EvenSymbol kernel;                      // real kernel spectrum, rows folded (even in qy)
   double self = 0.0;
 };
 
 FftInfluenceOperator::FftInfluenceOperator(const Grid& grid, double e_star, FftPlanning planning)
-    : impl_(std::make_unique<Impl>(grid, checked_composite_modulus(e_star),
-                                   std::make_shared<RealFft>(make_fft(grid, planning)))) {}
+    : impl_(std::make_unique<Impl>(
+          grid, checked_composite_modulus(e_star),
+          grid.periodic() ? std::make_shared<RealFft>(make_periodic_fft(grid, planning)) : nullptr, planning)) {}
 
 FftInfluenceOperator::FftInfluenceOperator(const Grid& grid, double e_star, std::shared_ptr<RealFft> transform)
     : impl_(std::make_unique<Impl>(grid, checked_composite_modulus(e_star),
-                                   checked_shared_transform(grid, std::move(transform)))) {}
+                                   checked_shared_transform(grid, std::move(transform)), FftPlanning::estimate)) {}
 
 FftInfluenceOperator::~FftInfluenceOperator() = default;
 
@@ -218,31 +169,29 @@ double FftInfluenceOperator::self_influence() const {
 
 void FftInfluenceOperator::apply(std::span<const double> pressure, std::span<double> displacement) {
   Impl& m = *impl_;
-  const std::size_t nx = m.grid.nx();
-  const std::size_t ny = m.grid.ny();
   assert(pressure.size() == m.grid.size() && displacement.size() == m.grid.size());
   assert(pressure.data() + pressure.size() <= displacement.data() ||
          displacement.data() + displacement.size() <= pressure.data());
 
-  // Periodic grids transform the caller's arrays directly when FFTW allows
-  // it. Otherwise rows of the grid sit at stride fft.real_stride(); a free
-  // grid's transform (in place) gets its zero padding rewritten around them.
-  const std::size_t stride = m.fft.real_stride();
-  const bool direct = m.grid.periodic();
-  if (!(direct && m.fft.forward_from(pressure))) {
-    std::span<double> input = m.fft.input();
-    if (m.fft.in_place()) {
-      copy_padded(ny, nx, m.fft.rows(), stride, pressure, input);
-    } else {  // any padding of a separate input buffer stays zero
-      copy_block(ny, nx, [&](std::size_t j, std::size_t i) { input[j * stride + i] = pressure[j * nx + i]; });
-    }
-    m.fft.forward();
+  if (m.padded) {
+    m.padded->forward(pressure);
+    m.kernel.multiply(m.padded->spectrum());
+    m.padded->backward(displacement);
+    return;
   }
-  m.kernel.multiply(m.fft.spectrum());
-  if (!(direct && m.fft.backward_into(displacement))) {
-    m.fft.backward();
-    std::span<const double> output = m.fft.output();
-    copy_block(ny, nx, [&](std::size_t j, std::size_t i) { displacement[j * nx + i] = output[j * stride + i]; });
+  // Periodic grids transform the caller's arrays directly when FFTW allows
+  // it, else copy through the transform's own buffers.
+  RealFft& fft = *m.transform;
+  if (!fft.forward_from(pressure)) {
+    std::span<double> input = fft.input();
+    linalg::for_each_index(pressure.size(), [&](std::size_t i) { input[i] = pressure[i]; });
+    fft.forward();
+  }
+  m.kernel.multiply(fft.spectrum());
+  if (!fft.backward_into(displacement)) {
+    fft.backward();
+    std::span<const double> output = fft.output();
+    linalg::for_each_index(displacement.size(), [&](std::size_t i) { displacement[i] = output[i]; });
   }
 }
 

@@ -1,0 +1,93 @@
+#include "halfspace/fft/padded_real_fft.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <complex>
+#include <numbers>
+#include <vector>
+
+namespace halfspace {
+namespace {
+
+// Rounding of a few-hundred-point transform, relative to the largest value.
+constexpr double kRounding = 1e-12;
+
+std::vector<double> block_values(std::size_t rows, std::size_t cols) {
+  std::vector<double> values(rows * cols);
+  for (std::size_t k = 0; k < values.size(); ++k) values[k] = std::sin(0.7 * static_cast<double>(k) + 0.3) + 0.25;
+  return values;
+}
+
+// The DFT of the zero-padded block by its definition, at padded wavenumber (kr, kc).
+std::complex<double> direct_dft(const std::vector<double>& block, std::size_t rows, std::size_t cols, std::size_t kr,
+                                std::size_t kc) {
+  const std::size_t padded_rows = rows == 1 ? 1 : 2 * rows;
+  std::complex<double> sum = 0.0;
+  for (std::size_t j = 0; j < rows; ++j) {
+    for (std::size_t i = 0; i < cols; ++i) {
+      const double angle = -2.0 * std::numbers::pi *
+                           (static_cast<double>(kr * j) / static_cast<double>(padded_rows) +
+                            static_cast<double>(kc * i) / static_cast<double>(2 * cols));
+      sum += block[j * cols + i] * std::polar(1.0, angle);
+    }
+  }
+  return sum;
+}
+
+TEST(PaddedRealFftTest, ForwardIsTheDftOfTheZeroPaddedBlock) {
+  for (const auto [rows, cols] : {std::pair<std::size_t, std::size_t>{1, 9}, {5, 6}, {4, 7}}) {
+    SCOPED_TRACE(std::to_string(rows) + "x" + std::to_string(cols));
+    PaddedRealFft fft(rows, cols, FftPlanning::estimate);
+    ASSERT_EQ(fft.spectrum_rows(), rows == 1 ? 1u : 2 * rows);
+    ASSERT_EQ(fft.spectrum_cols(), cols + 1);
+    const std::vector<double> block = block_values(rows, cols);
+    fft.forward(block);
+    const std::span<const std::complex<double>> spectrum = fft.spectrum();
+    for (std::size_t kr = 0; kr < fft.spectrum_rows(); ++kr) {
+      for (std::size_t kc = 0; kc < fft.spectrum_cols(); ++kc) {
+        const std::complex<double> expected = direct_dft(block, rows, cols, kr, kc);
+        EXPECT_LE(std::abs(spectrum[kr * fft.spectrum_cols() + kc] - expected), kRounding * static_cast<double>(block.size()))
+            << kr << ", " << kc;
+      }
+    }
+  }
+}
+
+TEST(PaddedRealFftTest, BackwardOfForwardReturnsTheBlockTimesThePaddedSize) {
+  for (const auto [rows, cols] : {std::pair<std::size_t, std::size_t>{1, 16}, {6, 10}, {7, 5}}) {
+    SCOPED_TRACE(std::to_string(rows) + "x" + std::to_string(cols));
+    PaddedRealFft fft(rows, cols, FftPlanning::estimate);
+    const std::vector<double> block = block_values(rows, cols);
+    std::vector<double> back(block.size(), -99.0);
+    // Twice: the padding rows' spectra must be cleared again after backward() used the buffer.
+    for (int pass = 0; pass < 2; ++pass) {
+      fft.forward(block);
+      fft.backward(back);
+      const double n = static_cast<double>(fft.padded_size());
+      for (std::size_t k = 0; k < block.size(); ++k) EXPECT_NEAR(back[k] / n, block[k], kRounding) << k;
+    }
+  }
+}
+
+TEST(PaddedRealFftTest, AllRowsTransformMatchesThePrunedOneOnABlock) {
+  // A full padded array whose rows beyond the block are zero: the same
+  // spectrum as forward() of the block.
+  const std::size_t rows = 4;
+  const std::size_t cols = 6;
+  PaddedRealFft fft(rows, cols, FftPlanning::estimate);
+  const std::vector<double> block = block_values(rows, cols);
+  fft.forward(block);
+  const std::vector<std::complex<double>> pruned(fft.spectrum().begin(), fft.spectrum().end());
+  for (std::size_t r = 0; r < fft.spectrum_rows(); ++r) {
+    std::span<double> row = fft.padded_row(r);
+    for (std::size_t c = 0; c < row.size(); ++c) row[c] = r < rows && c < cols ? block[r * cols + c] : 0.0;
+  }
+  fft.forward_all_rows();
+  for (std::size_t k = 0; k < pruned.size(); ++k) {
+    EXPECT_LE(std::abs(fft.spectrum()[k] - pruned[k]), kRounding * static_cast<double>(block.size())) << k;
+  }
+}
+
+}  // namespace
+}  // namespace halfspace
