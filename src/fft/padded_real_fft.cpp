@@ -25,18 +25,18 @@ using detail::as_fftw;
 
 namespace {
 
-// howmany rows of length n, real rows at stride 2 (n/2 + 1) in place over
-// their spectra at stride n/2 + 1.
-fftw_plan row_plan(bool forward, int n, int howmany, std::complex<double>* buffer, unsigned flags) {
+// howmany rows of length n: real rows at `real_stride` (in place over the
+// spectrum, or a buffer of their own), spectra at stride n/2 + 1.
+fftw_plan row_plan(bool forward, int n, int howmany, double* real, int real_stride, std::complex<double>* spectrum,
+                   unsigned flags) {
   const int dims[1] = {n};
   const int spectrum_stride = n / 2 + 1;
-  double* real = reinterpret_cast<double*>(buffer);
   if (forward) {
-    return fftw_plan_many_dft_r2c(1, dims, howmany, real, nullptr, 1, 2 * spectrum_stride, as_fftw(buffer), nullptr, 1,
+    return fftw_plan_many_dft_r2c(1, dims, howmany, real, nullptr, 1, real_stride, as_fftw(spectrum), nullptr, 1,
                                   spectrum_stride, flags);
   }
-  return fftw_plan_many_dft_c2r(1, dims, howmany, as_fftw(buffer), nullptr, 1, spectrum_stride, real, nullptr, 1,
-                                2 * spectrum_stride, flags);
+  return fftw_plan_many_dft_c2r(1, dims, howmany, as_fftw(spectrum), nullptr, 1, spectrum_stride, real, nullptr, 1,
+                                real_stride, flags);
 }
 
 // All columns (cols of them, length rows) of the row-major complex buffer.
@@ -59,12 +59,17 @@ PaddedRealFft::PaddedRealFft(std::size_t rows, std::size_t cols, FftPlanning pla
     const std::lock_guard<std::mutex> lock(detail::fftw_planner_mutex());
     detail::init_fftw_threads();
     spectrum_ = reinterpret_cast<std::complex<double>*>(fftw_alloc_complex(spectrum_size()));
-    if (spectrum_ != nullptr) {
+    // A 2D block's rows live in place over the spectrum (the memory that
+    // matters); a line gets its own real buffer, where FFTW's threaded 1D
+    // plans are faster out of place.
+    real_ = rows == 1 ? fftw_alloc_real(2 * cols + 2) : reinterpret_cast<double*>(spectrum_);
+    if (spectrum_ != nullptr && real_ != nullptr) {
       fftw_plan_with_nthreads(threads());
       detail::before_planning(planning);
       const unsigned flags = detail::planner_flags(planning) | FFTW_DESTROY_INPUT;
-      rows_forward_ = row_plan(true, padded_cols, data_rows, spectrum_, flags);
-      rows_backward_ = row_plan(false, padded_cols, data_rows, spectrum_, flags);
+      const int stride = detail::checked_extent(real_stride());
+      rows_forward_ = row_plan(true, padded_cols, data_rows, real_, stride, spectrum_, flags);
+      rows_backward_ = row_plan(false, padded_cols, data_rows, real_, stride, spectrum_, flags);
       planned = rows_forward_ != nullptr && rows_backward_ != nullptr;
       if (rows > 1) {
         columns_forward_ = column_plan(FFTW_FORWARD, padded_rows, spectrum_columns, spectrum_, flags);
@@ -74,12 +79,16 @@ PaddedRealFft::PaddedRealFft(std::size_t rows, std::size_t cols, FftPlanning pla
       if (planned) detail::after_planning(planning);
     }
   }
-  if (spectrum_ == nullptr) throw std::bad_alloc();
+  if (spectrum_ == nullptr || real_ == nullptr) {
+    release();
+    throw std::bad_alloc();
+  }
   if (!planned) {
     release();
     throw std::runtime_error(fmt::format("FFTW could not plan a padded real FFT of a {}x{} block", rows, cols));
   }
   std::fill_n(spectrum_, spectrum_size(), std::complex<double>(0.0, 0.0));
+  if (rows == 1) std::fill_n(real_, 2 * cols + 2, 0.0);
 }
 
 PaddedRealFft::~PaddedRealFft() {
@@ -89,12 +98,16 @@ PaddedRealFft::~PaddedRealFft() {
 void PaddedRealFft::forward(std::span<const double> block) {
   assert(block.size() == block_rows_ * block_cols_);
   const std::size_t nx = block_cols_;
-  const std::size_t stride = 2 * spectrum_cols();
-  linalg::for_each_row(block_rows_, stride, [&](std::size_t j) {
-    double* row = real_row(j);
-    std::copy_n(block.data() + j * nx, nx, row);
-    std::fill(row + nx, row + stride, 0.0);
-  });
+  const std::size_t stride = real_stride();
+  if (block_rows_ == 1) {  // one long row: split it between the threads
+    linalg::for_each_index(stride, [&](std::size_t i) { real_[i] = i < nx ? block[i] : 0.0; });
+  } else {
+    linalg::for_each_row(block_rows_, stride, [&](std::size_t j) {
+      double* row = real_row(j);
+      std::copy_n(block.data() + j * nx, nx, row);
+      std::fill(row + nx, row + stride, 0.0);
+    });
+  }
   fftw_execute(rows_forward_);
   if (columns_forward_ == nullptr) return;
   // The padding rows are zero, and so are their row transforms.
@@ -112,8 +125,8 @@ void PaddedRealFft::forward_all_rows() {
   {
     const std::lock_guard<std::mutex> lock(detail::fftw_planner_mutex());
     fftw_plan_with_nthreads(threads());
-    all_rows = row_plan(true, static_cast<int>(2 * block_cols_), static_cast<int>(spectrum_rows()), spectrum_,
-                        FFTW_ESTIMATE | FFTW_DESTROY_INPUT);
+    all_rows = row_plan(true, static_cast<int>(2 * block_cols_), static_cast<int>(spectrum_rows()), real_,
+                        static_cast<int>(real_stride()), spectrum_, FFTW_ESTIMATE | FFTW_DESTROY_INPUT);
   }
   if (all_rows == nullptr) throw std::runtime_error("FFTW could not plan the rows of a padded real FFT");
   fftw_execute(all_rows);
@@ -129,7 +142,11 @@ void PaddedRealFft::backward(std::span<double> block) {
   if (columns_backward_ != nullptr) fftw_execute(columns_backward_);
   fftw_execute(rows_backward_);
   const std::size_t nx = block_cols_;
-  linalg::for_each_row(block_rows_, nx, [&](std::size_t j) { std::copy_n(real_row(j), nx, block.data() + j * nx); });
+  if (block_rows_ == 1) {
+    linalg::for_each_index(nx, [&](std::size_t i) { block[i] = real_[i]; });
+  } else {
+    linalg::for_each_row(block_rows_, nx, [&](std::size_t j) { std::copy_n(real_row(j), nx, block.data() + j * nx); });
+  }
 }
 
 void PaddedRealFft::release() noexcept {
@@ -138,8 +155,10 @@ void PaddedRealFft::release() noexcept {
     if (*plan != nullptr) fftw_destroy_plan(*plan);
     *plan = nullptr;
   }
+  if (real_ != reinterpret_cast<double*>(spectrum_)) fftw_free(real_);
   fftw_free(spectrum_);
   spectrum_ = nullptr;
+  real_ = nullptr;
 }
 
 }  // namespace halfspace

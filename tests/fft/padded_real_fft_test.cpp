@@ -47,7 +47,8 @@ TEST(PaddedRealFftTest, ForwardIsTheDftOfTheZeroPaddedBlock) {
     for (std::size_t kr = 0; kr < fft.spectrum_rows(); ++kr) {
       for (std::size_t kc = 0; kc < fft.spectrum_cols(); ++kc) {
         const std::complex<double> expected = direct_dft(block, rows, cols, kr, kc);
-        EXPECT_LE(std::abs(spectrum[kr * fft.spectrum_cols() + kc] - expected), kRounding * static_cast<double>(block.size()))
+        EXPECT_LE(std::abs(spectrum[kr * fft.spectrum_cols() + kc] - expected),
+                  kRounding * static_cast<double>(block.size()))
             << kr << ", " << kc;
       }
     }

@@ -52,14 +52,16 @@ class PaddedRealFft {
 
  private:
   void release() noexcept;
-  double* real_row(std::size_t r) { return reinterpret_cast<double*>(spectrum_ + r * spectrum_cols()); }
+  std::size_t real_stride() const { return 2 * spectrum_cols(); }
+  double* real_row(std::size_t r) { return real_ + r * real_stride(); }
 
   std::size_t block_rows_;
   std::size_t block_cols_;
-  std::complex<double>* spectrum_ = nullptr;  // in place: real rows at stride 2 spectrum_cols()
-  fftw_plan_s* rows_forward_ = nullptr;       // r2c of the block_rows() data rows
-  fftw_plan_s* rows_backward_ = nullptr;      // c2r of the same rows
-  fftw_plan_s* columns_forward_ = nullptr;    // c2c down all spectrum_rows(); none in 1D
+  std::complex<double>* spectrum_ = nullptr;
+  double* real_ = nullptr;                  // the real rows: over the spectrum (2D), or a buffer of their own (1D)
+  fftw_plan_s* rows_forward_ = nullptr;     // r2c of the block_rows() data rows
+  fftw_plan_s* rows_backward_ = nullptr;    // c2r of the same rows
+  fftw_plan_s* columns_forward_ = nullptr;  // c2c down all spectrum_rows(); none in 1D
   fftw_plan_s* columns_backward_ = nullptr;
 };
 
