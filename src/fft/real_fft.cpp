@@ -82,8 +82,7 @@ RealFft::RealFft(RealFft&& other) noexcept
       spectrum_(std::exchange(other.spectrum_, nullptr)),
       output_(std::exchange(other.output_, nullptr)),
       forward_plan_(std::exchange(other.forward_plan_, nullptr)),
-      backward_plan_(std::exchange(other.backward_plan_, nullptr)),
-      in_place_(std::exchange(other.in_place_, false)) {}
+      backward_plan_(std::exchange(other.backward_plan_, nullptr)) {}
 
 RealFft& RealFft::operator=(RealFft&& other) noexcept {
   if (this != &other) {
@@ -95,7 +94,6 @@ RealFft& RealFft::operator=(RealFft&& other) noexcept {
     output_ = std::exchange(other.output_, nullptr);
     forward_plan_ = std::exchange(other.forward_plan_, nullptr);
     backward_plan_ = std::exchange(other.backward_plan_, nullptr);
-    in_place_ = std::exchange(other.in_place_, false);
   }
   return *this;
 }
@@ -106,26 +104,17 @@ void RealFft::make_plans(int rank, const int* dims, FftPlanning planning, FftOut
   {
     const std::lock_guard<std::mutex> lock(detail::fftw_planner_mutex());
     detail::init_fftw_threads();
-    in_place_ = output == FftOutput::in_place;
     spectrum_ = reinterpret_cast<std::complex<double>*>(fftw_alloc_complex(spectrum_size()));
-    if (in_place_) {
-      input_ = reinterpret_cast<double*>(spectrum_);
-      output_ = input_;
-    } else {
-      input_ = fftw_alloc_real(real_size());
-      output_ = output == FftOutput::separate ? fftw_alloc_real(real_size()) : input_;
-    }
+    input_ = fftw_alloc_real(real_size());
+    output_ = output == FftOutput::separate ? fftw_alloc_real(real_size()) : input_;
     allocated = input_ != nullptr && output_ != nullptr && spectrum_ != nullptr;
     if (allocated) {
       fftw_plan_with_nthreads(threads());
       detail::before_planning(planning);
       const unsigned flags = planner_flags(planning);
-      // Out of place both ways: r2c keeps its input (the zero padding of the
-      // DC-FFT survives every transform); c2r may destroy the spectrum, which
-      // is rewritten by every forward() anyway.
-      // In place the input is the spectrum's memory and cannot be preserved.
-      forward_plan_ = fftw_plan_dft_r2c(rank, dims, input_, as_fftw(spectrum_),
-                                        flags | (in_place_ ? FFTW_DESTROY_INPUT : FFTW_PRESERVE_INPUT));
+      // Out of place both ways: r2c keeps its input (forward_from() relies on
+      // it); c2r may destroy the spectrum, which every forward() rewrites.
+      forward_plan_ = fftw_plan_dft_r2c(rank, dims, input_, as_fftw(spectrum_), flags | FFTW_PRESERVE_INPUT);
       backward_plan_ = fftw_plan_dft_c2r(rank, dims, as_fftw(spectrum_), output_, flags | FFTW_DESTROY_INPUT);
       planned = forward_plan_ != nullptr && backward_plan_ != nullptr;
       if (planned) detail::after_planning(planning);
@@ -141,10 +130,8 @@ void RealFft::make_plans(int rank, const int* dims, FftPlanning planning, FftOut
   }
   // Measuring planners run trial transforms over the buffers.
   std::fill_n(spectrum_, spectrum_size(), std::complex<double>(0.0, 0.0));
-  if (!in_place_) {
-    std::fill_n(input_, real_size(), 0.0);
-    if (output_ != input_) std::fill_n(output_, real_size(), 0.0);
-  }
+  std::fill_n(input_, real_size(), 0.0);
+  if (output_ != input_) std::fill_n(output_, real_size(), 0.0);
 }
 
 void RealFft::forward() {
@@ -161,14 +148,14 @@ bool RealFft::forward_from(std::span<const double> values) {
   assert(forward_plan_ != nullptr);
   // The plan was made with FFTW_PRESERVE_INPUT, so the const_cast is never written through.
   double* data = const_cast<double*>(values.data());
-  if (in_place_ || values.size() != real_size() || fftw_alignment_of(data) != fftw_alignment_of(input_)) return false;
+  if (values.size() != real_size() || fftw_alignment_of(data) != fftw_alignment_of(input_)) return false;
   fftw_execute_dft_r2c(forward_plan_, data, as_fftw(spectrum_));
   return true;
 }
 
 bool RealFft::backward_into(std::span<double> values) {
   assert(backward_plan_ != nullptr);
-  if (in_place_ || values.size() != real_size() || fftw_alignment_of(values.data()) != fftw_alignment_of(output_)) {
+  if (values.size() != real_size() || fftw_alignment_of(values.data()) != fftw_alignment_of(output_)) {
     return false;
   }
   fftw_execute_dft_c2r(backward_plan_, as_fftw(spectrum_), values.data());
@@ -183,10 +170,8 @@ void RealFft::release() noexcept {
   const std::lock_guard<std::mutex> lock(detail::fftw_planner_mutex());
   if (forward_plan_ != nullptr) fftw_destroy_plan(forward_plan_);
   if (backward_plan_ != nullptr) fftw_destroy_plan(backward_plan_);
-  if (!in_place_) {
-    if (output_ != input_) fftw_free(output_);
-    fftw_free(input_);
-  }
+  if (output_ != input_) fftw_free(output_);
+  fftw_free(input_);
   fftw_free(spectrum_);
   forward_plan_ = nullptr;
   backward_plan_ = nullptr;

@@ -1,7 +1,8 @@
 // u = K p by FFT. Periodic grids: multiply the pressure spectrum by the kernel
 // 2/(E* |q|) (Stanley & Kato 1997). Free grids: linear convolution with Love's
 // (2D) or the strip (1D) coefficients by zero padding to 2n per axis (DC-FFT,
-// Liu, Wang & Liu 2000), exact to rounding.
+// Liu, Wang & Liu 2000), exact to rounding, through the pruned padded
+// transform (PaddedRealFft).
 #include "halfspace/operators/fft_influence_operator.hpp"
 
 #include <fmt/format.h>
@@ -37,8 +38,8 @@ RealFft make_periodic_fft(const Grid& grid, FftPlanning planning) {
   return RealFft(grid.ny(), grid.nx(), planning, FftOutput::overwrite_input);
 }
 
-// A shared transform must be the periodic grid's own: apply() reads rows at
-// stride fft.real_stride() and the kernel follows the spectrum's layout.
+// A shared transform must be the periodic grid's own: apply() hands it the
+// grid's arrays and the kernel follows its spectrum's layout.
 std::shared_ptr<RealFft> checked_shared_transform(const Grid& grid, std::shared_ptr<RealFft> transform) {
   if (!grid.periodic()) {
     throw InputError("FftInfluenceOperator: a shared transform needs a periodic grid (free grids pad it)");

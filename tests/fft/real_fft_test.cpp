@@ -102,38 +102,6 @@ TEST(RealFftTest, BackwardCanOverwriteTheInput) {
   }
 }
 
-// In place: rows padded to 2 (cols/2 + 1) values, the spectrum over them, and
-// the round trip back in the same buffer.
-TEST(RealFftTest, InPlaceTransformsMatchTheSeparateOnes) {
-  for (const auto& [rows, cols] : {std::pair<std::size_t, std::size_t>{1, 10}, {1, 9}, {6, 10}, {5, 7}}) {
-    RealFft separate(rows, cols, FftPlanning::estimate);
-    RealFft in_place(rows, cols, FftPlanning::estimate, FftOutput::in_place);
-    ASSERT_EQ(in_place.real_stride(), 2 * (cols / 2 + 1));
-    ASSERT_EQ(in_place.input().data(), in_place.output().data());
-    const std::vector<double> x = random_values(rows * cols, 13);
-    for (std::size_t r = 0; r < rows; ++r) {
-      for (std::size_t c = 0; c < cols; ++c) {
-        separate.input()[r * cols + c] = x[r * cols + c];
-        in_place.input()[r * in_place.real_stride() + c] = x[r * cols + c];
-      }
-    }
-    separate.forward();
-    in_place.forward();
-    for (std::size_t k = 0; k < separate.spectrum_size(); ++k) {
-      ASSERT_NEAR(std::abs(in_place.spectrum()[k] - separate.spectrum()[k]), 0.0, kTransformTolerance * x.size())
-          << rows << "x" << cols << " at " << k;
-    }
-    in_place.backward();
-    const double n = static_cast<double>(rows * cols);
-    for (std::size_t r = 0; r < rows; ++r) {
-      for (std::size_t c = 0; c < cols; ++c) {
-        EXPECT_NEAR(in_place.output()[r * in_place.real_stride() + c] / n, x[r * cols + c], kTransformTolerance);
-      }
-    }
-    EXPECT_FALSE(in_place.forward_from(x)) << "the caller's unpadded rows cannot be transformed in place";
-  }
-}
-
 // The caller's arrays give the same bits as the owned buffers, and an array
 // FFTW cannot use (misaligned, wrong length) is refused without being touched.
 TEST(RealFftTest, TransformsTheCallersArrays) {

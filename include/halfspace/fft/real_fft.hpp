@@ -14,11 +14,9 @@ namespace halfspace {
 
 // Where the transforms write. separate: three buffers (input, spectrum,
 // output). overwrite_input: backward() writes over the input, which saves a
-// real array when the input need not survive. in_place: one buffer holds the
-// real array, with rows padded to real_stride() = 2 (cols/2 + 1) values, and
-// the spectrum over it: a third of the memory of separate, but forward()
-// destroys its input, so zero padding must be rewritten before every forward().
-enum class FftOutput { separate, overwrite_input, in_place };
+// real array when the input need not survive. (Zero-padded transforms are
+// PaddedRealFft's.)
+enum class FftOutput { separate, overwrite_input };
 
 // Forward (r2c) and backward (c2r) transforms of a 1D (n) or 2D (rows, cols,
 // row-major) real array. The buffers are FFTW-aligned and owned here; the plans
@@ -43,22 +41,17 @@ class RealFft {
   std::size_t rows() const { return rows_; }
   std::size_t cols() const { return cols_; }
   std::size_t real_size() const { return rows_ * cols_; }
-  // Distance between rows of input() and output(): cols(), or 2 (cols/2 + 1)
-  // with FftOutput::in_place.
-  std::size_t real_stride() const { return in_place_ ? 2 * spectrum_cols() : cols_; }
-  bool in_place() const { return in_place_; }
   std::size_t spectrum_cols() const { return cols_ / 2 + 1; }
   std::size_t spectrum_size() const { return rows_ * spectrum_cols(); }
 
-  // rows() rows at stride real_stride(). Read by forward() and, except with
-  // FftOutput::in_place, never modified by it, so zero padding written once
-  // stays zero (unless FftOutput::overwrite_input, where backward() writes
-  // here). All buffers are zero after construction.
-  std::span<double> input() { return {input_, rows_ * real_stride()}; }
+  // (rows, cols), row-major. Read by forward() and never modified by it, so
+  // values written once stay (unless FftOutput::overwrite_input, where
+  // backward() writes here). All buffers are zero after construction.
+  std::span<double> input() { return {input_, real_size()}; }
   // Written by forward(), read (and destroyed) by backward(); (rows, cols/2 + 1).
   std::span<std::complex<double>> spectrum() { return {spectrum_, spectrum_size()}; }
   // Written by backward(); the input buffer itself with FftOutput::overwrite_input.
-  std::span<double> output() { return {output_, rows_ * real_stride()}; }
+  std::span<double> output() { return {output_, real_size()}; }
 
   // spectrum = DFT(input), sum_x input(x) exp(-i q x).
   void forward();
@@ -68,8 +61,7 @@ class RealFft {
   // The same transforms on the caller's arrays (FFTW's new-array execute),
   // which saves the copy into input() and out of output() when the array's
   // length is real_size() and its alignment is that of the planned buffers;
-  // otherwise (and always with FftOutput::in_place, whose rows are padded)
-  // they do nothing and return false, and the caller copies.
+  // otherwise they do nothing and return false, and the caller copies.
   // `values` must not overlap spectrum().
   bool forward_from(std::span<const double> values);
   bool backward_into(std::span<double> values);
@@ -85,7 +77,6 @@ class RealFft {
   double* output_ = nullptr;
   fftw_plan_s* forward_plan_ = nullptr;
   fftw_plan_s* backward_plan_ = nullptr;
-  bool in_place_ = false;
 };
 
 }  // namespace halfspace
