@@ -17,6 +17,7 @@
 
 #include "halfspace/error.hpp"
 #include "halfspace/fft/even_symbol.hpp"
+#include "halfspace/fft/grid_transform.hpp"
 #include "halfspace/fft/padded_real_fft.hpp"
 #include "halfspace/fft/real_fft.hpp"
 #include "halfspace/kernels/love_rectangle.hpp"
@@ -28,28 +29,13 @@
 namespace halfspace {
 namespace {
 
-// The periodic transform: the grid itself (a 1D grid is one row). The
-// inverse may overwrite the input (no padding to keep): one real array less.
-std::size_t transform_rows(const Grid& grid) {
-  return grid.dimension() == 1 ? 1 : grid.ny();
-}
-RealFft make_periodic_fft(const Grid& grid, FftPlanning planning) {
-  if (grid.dimension() == 1) return RealFft(grid.nx(), planning, FftOutput::overwrite_input);
-  return RealFft(grid.ny(), grid.nx(), planning, FftOutput::overwrite_input);
-}
-
 // A shared transform must be the periodic grid's own: apply() hands it the
 // grid's arrays and the kernel follows its spectrum's layout.
 std::shared_ptr<RealFft> checked_shared_transform(const Grid& grid, std::shared_ptr<RealFft> transform) {
   if (!grid.periodic()) {
     throw InputError("FftInfluenceOperator: a shared transform needs a periodic grid (free grids pad it)");
   }
-  if (!transform || transform->rows() != transform_rows(grid) || transform->cols() != grid.nx()) {
-    throw InputError(fmt::format("FftInfluenceOperator: the shared transform is {}x{} but the grid needs {}x{}",
-                                 transform ? transform->rows() : 0, transform ? transform->cols() : 0,
-                                 transform_rows(grid), grid.nx()));
-  }
-  return transform;
+  return checked_grid_transform(grid, std::move(transform), "FftInfluenceOperator");
 }
 
 // Distance (in cells) of wrap-around index k on a 2n-periodic axis: k, then
@@ -150,9 +136,8 @@ struct FftInfluenceOperator::Impl {
 };
 
 FftInfluenceOperator::FftInfluenceOperator(const Grid& grid, double e_star, FftPlanning planning)
-    : impl_(std::make_unique<Impl>(
-          grid, checked_composite_modulus(e_star),
-          grid.periodic() ? std::make_shared<RealFft>(make_periodic_fft(grid, planning)) : nullptr, planning)) {}
+    : impl_(std::make_unique<Impl>(grid, checked_composite_modulus(e_star),
+                                   grid.periodic() ? make_grid_transform(grid, planning) : nullptr, planning)) {}
 
 FftInfluenceOperator::FftInfluenceOperator(const Grid& grid, double e_star, std::shared_ptr<RealFft> transform)
     : impl_(std::make_unique<Impl>(grid, checked_composite_modulus(e_star),

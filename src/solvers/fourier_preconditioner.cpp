@@ -16,31 +16,13 @@
 
 #include "halfspace/error.hpp"
 #include "halfspace/fft/even_symbol.hpp"
+#include "halfspace/fft/grid_transform.hpp"
 #include "halfspace/fft/real_fft.hpp"
 #include "halfspace/kernels/periodic_fourier.hpp"
 #include "halfspace/linalg/parallel.hpp"
 #include "halfspace/material.hpp"
 
 namespace halfspace::solvers {
-namespace {
-
-std::shared_ptr<RealFft> make_unpadded_fft(const Grid& grid, FftPlanning planning) {
-  if (grid.dimension() == 1) return std::make_shared<RealFft>(grid.nx(), planning, FftOutput::overwrite_input);
-  return std::make_shared<RealFft>(grid.ny(), grid.nx(), planning, FftOutput::overwrite_input);
-}
-
-std::shared_ptr<RealFft> checked_shared_transform(const Grid& grid, std::shared_ptr<RealFft> transform) {
-  const std::size_t rows = grid.dimension() == 1 ? 1 : grid.ny();
-  if (!transform || transform->rows() != rows || transform->cols() != grid.nx()) {
-    throw InputError(fmt::format("FourierPreconditioner: the shared transform is {}x{} but the grid needs {}x{}",
-                                 transform ? transform->rows() : 0, transform ? transform->cols() : 0, rows,
-                                 grid.nx()));
-  }
-  return transform;
-}
-
-}  // namespace
-
 struct FourierPreconditioner::Impl {
   Impl(const Grid& g, double e_star, std::shared_ptr<RealFft> shared)
       : grid(g), transform(std::move(shared)), fft(*transform), symbol(fft.rows(), fft.spectrum_cols()) {
@@ -65,11 +47,11 @@ struct FourierPreconditioner::Impl {
 };
 
 FourierPreconditioner::FourierPreconditioner(const Grid& grid, double e_star, FftPlanning planning)
-    : impl_(std::make_unique<Impl>(grid, checked_composite_modulus(e_star), make_unpadded_fft(grid, planning))) {}
+    : impl_(std::make_unique<Impl>(grid, checked_composite_modulus(e_star), make_grid_transform(grid, planning))) {}
 
 FourierPreconditioner::FourierPreconditioner(const Grid& grid, double e_star, std::shared_ptr<RealFft> transform)
     : impl_(std::make_unique<Impl>(grid, checked_composite_modulus(e_star),
-                                   checked_shared_transform(grid, std::move(transform)))) {}
+                                   checked_grid_transform(grid, std::move(transform), "FourierPreconditioner"))) {}
 
 FourierPreconditioner::~FourierPreconditioner() = default;
 

@@ -8,7 +8,7 @@
 #include <memory>
 
 #include "halfspace/error.hpp"
-#include "halfspace/fft/real_fft.hpp"
+#include "halfspace/fft/grid_transform.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
 #include "halfspace/solvers/fourier_preconditioner.hpp"
 #include "halfspace/solvers/lcp_quad.hpp"
@@ -54,10 +54,7 @@ std::unique_ptr<ContactSolver> make_polonsky_keer(const Grid& grid, double e_sta
     // Both transform the unpadded grid, and Polonsky-Keer applies them one
     // after the other: one transform serves both, which saves a real and a
     // complex array per cell (docs/performance.md).
-    auto transform =
-        grid.dimension() == 1
-            ? std::make_shared<RealFft>(grid.nx(), settings.fft_planning, FftOutput::overwrite_input)
-            : std::make_shared<RealFft>(grid.ny(), grid.nx(), settings.fft_planning, FftOutput::overwrite_input);
+    auto transform = make_grid_transform(grid, settings.fft_planning);
     op = std::make_unique<FftInfluenceOperator>(grid, e_star, transform);
     preconditioner = std::make_unique<FourierPreconditioner>(grid, e_star, transform);
   } else {

@@ -1,0 +1,22 @@
+// The unpadded real transform of a grid's own shape, which the periodic
+// operator and the Fourier preconditioner use (and may share): nx values in
+// 1D, (ny, nx) in 2D, the inverse overwriting the input (FftOutput::
+// overwrite_input: one real array less; nothing needs the input afterwards).
+#pragma once
+
+#include <memory>
+#include <string_view>
+
+#include "halfspace/fft/real_fft.hpp"
+#include "halfspace/grid.hpp"
+
+namespace halfspace {
+
+std::shared_ptr<RealFft> make_grid_transform(const Grid& grid, FftPlanning planning);
+
+// Returns `transform` if it has the grid's shape; throws InputError naming
+// `user` (the class receiving it) and both shapes otherwise, or if it is null.
+std::shared_ptr<RealFft> checked_grid_transform(const Grid& grid, std::shared_ptr<RealFft> transform,
+                                                std::string_view user);
+
+}  // namespace halfspace

@@ -1,0 +1,25 @@
+#include "halfspace/fft/grid_transform.hpp"
+
+#include <fmt/format.h>
+
+#include "halfspace/error.hpp"
+
+namespace halfspace {
+
+std::shared_ptr<RealFft> make_grid_transform(const Grid& grid, FftPlanning planning) {
+  if (grid.dimension() == 1) return std::make_shared<RealFft>(grid.nx(), planning, FftOutput::overwrite_input);
+  return std::make_shared<RealFft>(grid.ny(), grid.nx(), planning, FftOutput::overwrite_input);
+}
+
+std::shared_ptr<RealFft> checked_grid_transform(const Grid& grid, std::shared_ptr<RealFft> transform,
+                                                std::string_view user) {
+  const std::size_t rows = grid.dimension() == 1 ? 1 : grid.ny();
+  if (!transform || transform->rows() != rows || transform->cols() != grid.nx()) {
+    throw InputError(fmt::format("{}: the shared transform is {}x{} but the grid needs {}x{}", user,
+                                 transform ? transform->rows() : 0, transform ? transform->cols() : 0, rows,
+                                 grid.nx()));
+  }
+  return transform;
+}
+
+}  // namespace halfspace
