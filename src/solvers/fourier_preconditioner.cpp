@@ -4,8 +4,6 @@
 // removes the growth of its condition number with the grid size.
 #include "halfspace/solvers/fourier_preconditioner.hpp"
 
-#include <fmt/format.h>
-
 #include <cassert>
 #include <cmath>
 #include <complex>
@@ -14,7 +12,6 @@
 #include <utility>
 #include <vector>
 
-#include "halfspace/error.hpp"
 #include "halfspace/fft/even_symbol.hpp"
 #include "halfspace/fft/grid_transform.hpp"
 #include "halfspace/fft/real_fft.hpp"
