@@ -11,6 +11,11 @@ std::shared_ptr<RealFft> make_grid_transform(const Grid& grid, FftPlanning plann
   return std::make_shared<RealFft>(grid.ny(), grid.nx(), planning, FftOutput::overwrite_input);
 }
 
+std::shared_ptr<RealFft> make_grid_transform(const Grid& grid, FftPlanning planning,
+                                             std::span<std::complex<double>> workspace) {
+  return std::make_shared<RealFft>(grid.dimension() == 1 ? 1 : grid.ny(), grid.nx(), planning, workspace);
+}
+
 std::shared_ptr<RealFft> checked_grid_transform(const Grid& grid, std::shared_ptr<RealFft> transform,
                                                 std::string_view user) {
   const std::size_t rows = grid.dimension() == 1 ? 1 : grid.ny();

@@ -71,6 +71,21 @@ RealFft::RealFft(std::size_t rows, std::size_t cols, FftPlanning planning, FftOu
   make_plans(2, dims, planning, output);
 }
 
+RealFft::RealFft(std::size_t rows, std::size_t cols, FftPlanning planning, std::span<std::complex<double>> workspace)
+    : rows_(rows), cols_(cols) {
+  const std::size_t needed = workspace_size(rows, cols);
+  if (workspace.size() < needed) {
+    throw InputError(fmt::format("a {}x{} real FFT needs a workspace of {} complex values, but was given {}", rows,
+                                 cols, needed, workspace.size()));
+  }
+  const int dims[2] = {checked_extent(rows), checked_extent(cols)};
+  if (rows == 1) {
+    make_plans(1, dims + 1, planning, FftOutput::overwrite_input, workspace.data());
+  } else {
+    make_plans(2, dims, planning, FftOutput::overwrite_input, workspace.data());
+  }
+}
+
 RealFft::~RealFft() {
   release();
 }
@@ -82,7 +97,8 @@ RealFft::RealFft(RealFft&& other) noexcept
       spectrum_(std::exchange(other.spectrum_, nullptr)),
       output_(std::exchange(other.output_, nullptr)),
       forward_plan_(std::exchange(other.forward_plan_, nullptr)),
-      backward_plan_(std::exchange(other.backward_plan_, nullptr)) {}
+      backward_plan_(std::exchange(other.backward_plan_, nullptr)),
+      owns_buffers_(std::exchange(other.owns_buffers_, true)) {}
 
 RealFft& RealFft::operator=(RealFft&& other) noexcept {
   if (this != &other) {
@@ -94,18 +110,26 @@ RealFft& RealFft::operator=(RealFft&& other) noexcept {
     output_ = std::exchange(other.output_, nullptr);
     forward_plan_ = std::exchange(other.forward_plan_, nullptr);
     backward_plan_ = std::exchange(other.backward_plan_, nullptr);
+    owns_buffers_ = std::exchange(other.owns_buffers_, true);
   }
   return *this;
 }
 
-void RealFft::make_plans(int rank, const int* dims, FftPlanning planning, FftOutput output) {
+void RealFft::make_plans(int rank, const int* dims, FftPlanning planning, FftOutput output,
+                         std::complex<double>* workspace) {
   bool allocated = false;
   bool planned = false;
   {
     const std::lock_guard<std::mutex> lock(detail::fftw_planner_mutex());
     detail::init_fftw_threads();
-    spectrum_ = reinterpret_cast<std::complex<double>*>(fftw_alloc_complex(spectrum_size()));
-    input_ = fftw_alloc_real(real_size());
+    owns_buffers_ = workspace == nullptr;
+    if (owns_buffers_) {
+      spectrum_ = reinterpret_cast<std::complex<double>*>(fftw_alloc_complex(spectrum_size()));
+      input_ = fftw_alloc_real(real_size());
+    } else {
+      spectrum_ = workspace;
+      input_ = reinterpret_cast<double*>(workspace + spectrum_size());
+    }
     output_ = output == FftOutput::separate ? fftw_alloc_real(real_size()) : input_;
     allocated = input_ != nullptr && output_ != nullptr && spectrum_ != nullptr;
     if (allocated) {
@@ -171,8 +195,10 @@ void RealFft::release() noexcept {
   if (forward_plan_ != nullptr) fftw_destroy_plan(forward_plan_);
   if (backward_plan_ != nullptr) fftw_destroy_plan(backward_plan_);
   if (output_ != input_) fftw_free(output_);
-  fftw_free(input_);
-  fftw_free(spectrum_);
+  if (owns_buffers_) {
+    fftw_free(input_);
+    fftw_free(spectrum_);
+  }
   forward_plan_ = nullptr;
   backward_plan_ = nullptr;
   input_ = nullptr;

@@ -153,6 +153,10 @@ double FftInfluenceOperator::self_influence() const {
   return impl_->self;
 }
 
+std::span<std::complex<double>> FftInfluenceOperator::scratch() {
+  return impl_->padded ? impl_->padded->spectrum() : std::span<std::complex<double>>{};
+}
+
 void FftInfluenceOperator::apply(std::span<const double> pressure, std::span<double> displacement) {
   Impl& m = *impl_;
   assert(pressure.size() == m.grid.size() && displacement.size() == m.grid.size());

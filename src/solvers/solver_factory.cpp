@@ -58,8 +58,13 @@ std::unique_ptr<ContactSolver> make_polonsky_keer(const Grid& grid, double e_sta
     op = std::make_unique<FftInfluenceOperator>(grid, e_star, transform);
     preconditioner = std::make_unique<FourierPreconditioner>(grid, e_star, transform);
   } else {
+    // Free grids: the preconditioner's unpadded transform works in the
+    // operator's padded buffer, idle between products (16 B per cell less).
     op = std::make_unique<FftInfluenceOperator>(grid, e_star, settings.fft_planning);
-    if (preconditioned) preconditioner = std::make_unique<FourierPreconditioner>(grid, e_star, settings.fft_planning);
+    if (preconditioned) {
+      preconditioner = std::make_unique<FourierPreconditioner>(
+          grid, e_star, make_grid_transform(grid, settings.fft_planning, op->scratch()));
+    }
   }
   auto solver = std::make_unique<PolonskyKeer>(*op, options, preconditioner.get());
   return std::make_unique<SolverWithOperator>(std::move(op), std::move(preconditioner), std::move(solver));

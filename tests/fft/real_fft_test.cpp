@@ -2,6 +2,7 @@
 // input-preserving forward transform the DC-FFT padding relies on, and moves.
 #include "halfspace/fft/real_fft.hpp"
 
+#include <fftw3.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -100,6 +101,38 @@ TEST(RealFftTest, BackwardCanOverwriteTheInput) {
   for (std::size_t i = 0; i < x.size(); ++i) {
     EXPECT_NEAR(fft.input()[i] / n, x[i], kTransformTolerance) << "at " << i;
   }
+}
+
+// Over memory it does not own: the spectrum, then the real array, inside the
+// workspace; the same bits as owned buffers; a workspace too small is refused.
+TEST(RealFftTest, WorksInAGivenWorkspace) {
+  for (const auto& [rows, cols] : {std::pair<std::size_t, std::size_t>{1, 10}, {1, 9}, {6, 10}, {5, 7}}) {
+    const std::size_t size = RealFft::workspace_size(rows, cols);
+    std::complex<double>* memory = reinterpret_cast<std::complex<double>*>(fftw_alloc_complex(size));
+    ASSERT_NE(memory, nullptr);
+    {
+      RealFft owned = rows == 1 ? RealFft(cols, FftPlanning::estimate, FftOutput::overwrite_input)
+                                : RealFft(rows, cols, FftPlanning::estimate, FftOutput::overwrite_input);
+      RealFft given(rows, cols, FftPlanning::estimate, {memory, size});
+      EXPECT_EQ(given.spectrum().data(), memory);
+      EXPECT_GE(reinterpret_cast<const char*>(given.input().data()),
+                reinterpret_cast<const char*>(memory + given.spectrum_size()));
+      EXPECT_LE(reinterpret_cast<const char*>(given.input().data() + given.real_size()),
+                reinterpret_cast<const char*>(memory + size));
+      const std::vector<double> x = random_values(rows * cols, 17);
+      std::copy(x.begin(), x.end(), owned.input().begin());
+      std::copy(x.begin(), x.end(), given.input().begin());
+      owned.forward();
+      given.forward();
+      for (std::size_t k = 0; k < owned.spectrum_size(); ++k) ASSERT_EQ(given.spectrum()[k], owned.spectrum()[k]);
+      owned.backward();
+      given.backward();
+      for (std::size_t i = 0; i < x.size(); ++i) ASSERT_EQ(given.output()[i], owned.output()[i]);
+    }  // the transform is gone; the workspace is still the caller's
+    fftw_free(memory);
+  }
+  std::vector<std::complex<double>> small(RealFft::workspace_size(4, 6) - 1);
+  EXPECT_THROW(RealFft(4, 6, FftPlanning::estimate, std::span<std::complex<double>>(small)), InputError);
 }
 
 // The caller's arrays give the same bits as the owned buffers, and an array

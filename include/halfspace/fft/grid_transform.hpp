@@ -4,7 +4,9 @@
 // overwrite_input: one real array less; nothing needs the input afterwards).
 #pragma once
 
+#include <complex>
 #include <memory>
+#include <span>
 #include <string_view>
 
 #include "halfspace/fft/real_fft.hpp"
@@ -13,6 +15,11 @@
 namespace halfspace {
 
 std::shared_ptr<RealFft> make_grid_transform(const Grid& grid, FftPlanning planning);
+// The same over `workspace`, memory idle while it runs (RealFft's workspace
+// constructor); throws InputError if it is smaller than
+// RealFft::workspace_size of the grid's shape.
+std::shared_ptr<RealFft> make_grid_transform(const Grid& grid, FftPlanning planning,
+                                             std::span<std::complex<double>> workspace);
 
 // Returns `transform` if it has the grid's shape; throws InputError naming
 // `user` (the class receiving it) and both shapes otherwise, or if it is null.

@@ -32,6 +32,16 @@ class RealFft {
   RealFft(std::size_t n, FftPlanning planning, FftOutput output = FftOutput::separate);
   // 2D transform of a (rows, cols) real array; the spectrum is (rows, cols/2 + 1).
   RealFft(std::size_t rows, std::size_t cols, FftPlanning planning, FftOutput output = FftOutput::separate);
+  // The 2D (rows > 1) or 1D (rows = 1) transform with FftOutput::overwrite_input
+  // over `workspace`, memory it does not own (FFTW-aligned, at least
+  // workspace_size(rows, cols) values): the spectrum, then the real array.
+  // For memory that is idle while this transform runs, such as another
+  // transform's buffer; planning and every transform overwrite it. Throws
+  // InputError if the workspace is too small.
+  RealFft(std::size_t rows, std::size_t cols, FftPlanning planning, std::span<std::complex<double>> workspace);
+  static std::size_t workspace_size(std::size_t rows, std::size_t cols) {
+    return rows * (cols / 2 + 1) + (rows * cols + 1) / 2;
+  }
   ~RealFft();
   RealFft(RealFft&& other) noexcept;
   RealFft& operator=(RealFft&& other) noexcept;
@@ -67,7 +77,8 @@ class RealFft {
   bool backward_into(std::span<double> values);
 
  private:
-  void make_plans(int rank, const int* dims, FftPlanning planning, FftOutput output);
+  void make_plans(int rank, const int* dims, FftPlanning planning, FftOutput output,
+                  std::complex<double>* workspace = nullptr);
   void release() noexcept;
 
   std::size_t rows_ = 0;
@@ -77,6 +88,7 @@ class RealFft {
   double* output_ = nullptr;
   fftw_plan_s* forward_plan_ = nullptr;
   fftw_plan_s* backward_plan_ = nullptr;
+  bool owns_buffers_ = true;
 };
 
 }  // namespace halfspace

@@ -4,6 +4,7 @@
 // padding to twice the size per axis (DC-FFT, Liu, Wang & Liu 2000).
 #pragma once
 
+#include <complex>
 #include <memory>
 
 #include "halfspace/fft/fft_planning.hpp"
@@ -30,6 +31,13 @@ class FftInfluenceOperator final : public InfluenceOperator {
   const Grid& grid() const override;
   void apply(std::span<const double> pressure, std::span<double> displacement) override;
   double self_influence() const override;
+
+  // Free grids: the padded transform's buffer, whose contents matter only
+  // inside apply(), for a transform that runs only between products (the
+  // preconditioner's: make_grid_transform with a workspace), which saves
+  // that transform's own arrays. Empty on periodic grids (their transform
+  // can be shared whole instead). Lives as long as the operator.
+  std::span<std::complex<double>> scratch();
 
  private:
   struct Impl;
