@@ -209,8 +209,8 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
         u[i] = ui;
         p[i] = pi;
       }
-      return std::pair{pi > 0.0 ? std::array<double, 2>{initial_gap[i] + ui, 1.0} : std::array<double, 2>{0.0, 0.0},
-                       ui};
+      const double in_contact = pi > 0.0 ? 1.0 : 0.0;
+      return std::pair{std::array<double, 2>{in_contact * (initial_gap[i] + ui), in_contact}, ui};
     });
     contact_cells = settled.sums[1];
     if (problem.load_controlled) {
@@ -221,8 +221,9 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
     const auto [weighted_gap, overlap, pressure_sum, contact_gap_norm, gap_along] = sums<5>(n, [&](std::size_t i) {
       g[i] = initial_gap[i] + u[i] - approach;
       if (restrict_to_contact) r[i] = p[i] > 0.0 ? g[i] : 0.0;
-      return std::array<double, 5>{p[i] * std::abs(g[i]), std::max(-g[i], 0.0), p[i], p[i] > 0.0 ? g[i] * g[i] : 0.0,
-                                   p[i] > 0.0 && powell_restart ? g[i] * t[i] : 0.0};
+      const double in_contact = p[i] > 0.0 ? 1.0 : 0.0;  // a mask, not a branch: contact edges are everywhere
+      return std::array<double, 5>{p[i] * std::abs(g[i]), std::max(-g[i], 0.0), p[i], in_contact * (g[i] * g[i]),
+                                   in_contact * (g[i] * t[i])};
     });
     gap_norm = contact_gap_norm;
     gap_along_direction = gap_along;
@@ -279,7 +280,8 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
       preconditioner_->apply({z, n}, {z, n});
       ++result.preconditioner_applications;
       const auto [z_sum, gz] = sums<2>(n, [&](std::size_t i) {
-        return p[i] > 0.0 ? std::array<double, 2>{z[i], g[i] * z[i]} : std::array<double, 2>{0.0, 0.0};
+        const double in_contact = p[i] > 0.0 ? 1.0 : 0.0;
+        return std::array<double, 2>{in_contact * z[i], in_contact * (g[i] * z[i])};
       });
       z_mean = problem.load_controlled ? z_sum / contact_cells : 0.0;
       // sum over C of g is zero under load control, so subtracting z_mean leaves g.z unchanged.
@@ -296,8 +298,9 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
     op_.apply({t, n}, {r, n});
     ++result.operator_applications;
     const auto [r_sum, t_sum, gt, rt] = sums<4>(n, [&](std::size_t i) {
-      return p[i] > 0.0 ? std::array<double, 4>{r[i], t[i], g[i] * t[i], r[i] * t[i]}
-                        : std::array<double, 4>{0.0, 0.0, 0.0, 0.0};
+      const double in_contact = p[i] > 0.0 ? 1.0 : 0.0;
+      return std::array<double, 4>{in_contact * r[i], in_contact * t[i], in_contact * (g[i] * t[i]),
+                                   in_contact * (r[i] * t[i])};
     });
     const double r_mean = problem.load_controlled ? r_sum / contact_cells : 0.0;
     const double curvature = rt - r_mean * t_sum;
