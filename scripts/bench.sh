@@ -12,7 +12,13 @@ fi
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${HALFSPACE_BENCH_BUILD_DIR:-$root/build-bench}"
 
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DHALFSPACE_BUILD_TESTS=OFF >/dev/null
+# A fresh benchmark build skips the tests; an existing build directory (say
+# the main one, via HALFSPACE_BENCH_BUILD_DIR) keeps its own choice.
+if [[ -f "$build/CMakeCache.txt" ]]; then
+  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+else
+  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DHALFSPACE_BUILD_TESTS=OFF >/dev/null
+fi
 cmake --build "$build" -j "$(nproc)" --target halfspace_bench
 
 date="$(date -u +%Y-%m-%d)"
