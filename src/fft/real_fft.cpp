@@ -98,7 +98,10 @@ RealFft::RealFft(RealFft&& other) noexcept
       output_(std::exchange(other.output_, nullptr)),
       forward_plan_(std::exchange(other.forward_plan_, nullptr)),
       backward_plan_(std::exchange(other.backward_plan_, nullptr)),
-      owns_buffers_(std::exchange(other.owns_buffers_, true)) {}
+      owns_buffers_(std::exchange(other.owns_buffers_, true)),
+      lazy_input_(std::exchange(other.lazy_input_, false)),
+      input_alignment_(other.input_alignment_),
+      output_alignment_(other.output_alignment_) {}
 
 RealFft& RealFft::operator=(RealFft&& other) noexcept {
   if (this != &other) {
@@ -111,6 +114,9 @@ RealFft& RealFft::operator=(RealFft&& other) noexcept {
     forward_plan_ = std::exchange(other.forward_plan_, nullptr);
     backward_plan_ = std::exchange(other.backward_plan_, nullptr);
     owns_buffers_ = std::exchange(other.owns_buffers_, true);
+    lazy_input_ = std::exchange(other.lazy_input_, false);
+    input_alignment_ = other.input_alignment_;
+    output_alignment_ = other.output_alignment_;
   }
   return *this;
 }
@@ -152,34 +158,65 @@ void RealFft::make_plans(int rank, const int* dims, FftPlanning planning, FftOut
     release();
     throw std::runtime_error(fmt::format("FFTW could not plan a real FFT of size {}x{}", rows_, cols_));
   }
+  input_alignment_ = fftw_alignment_of(input_);
+  output_alignment_ = fftw_alignment_of(output_);
   // Measuring planners run trial transforms over the buffers.
   std::fill_n(spectrum_, spectrum_size(), std::complex<double>(0.0, 0.0));
+  if (owns_buffers_ && output == FftOutput::overwrite_input) {
+    // The solvers transform their own arrays: the real array, planned over,
+    // is given back until something asks for it (real_input()).
+    const std::lock_guard<std::mutex> lock(detail::fftw_planner_mutex());
+    fftw_free(input_);
+    input_ = nullptr;
+    output_ = nullptr;
+    lazy_input_ = true;
+    return;
+  }
   std::fill_n(input_, real_size(), 0.0);
   if (output_ != input_) std::fill_n(output_, real_size(), 0.0);
 }
 
+double* RealFft::real_input() {
+  if (input_ == nullptr && lazy_input_) {
+    double* made = nullptr;
+    {
+      const std::lock_guard<std::mutex> lock(detail::fftw_planner_mutex());
+      made = fftw_alloc_real(real_size());
+    }
+    if (made == nullptr) throw std::bad_alloc();
+    std::fill_n(made, real_size(), 0.0);
+    input_ = made;
+    output_ = made;
+  }
+  return input_;
+}
+
+// New-array execution throughout: the real array may not be the one planned
+// over (it is made on first use with FftOutput::overwrite_input), and FFTW
+// allows any arrays of the planned alignment; fftw_alloc_real gives that.
 void RealFft::forward() {
   assert(forward_plan_ != nullptr);
-  fftw_execute(forward_plan_);
+  fftw_execute_dft_r2c(forward_plan_, real_input(), as_fftw(spectrum_));
 }
 
 void RealFft::backward() {
   assert(backward_plan_ != nullptr);
-  fftw_execute(backward_plan_);
+  real_input();
+  fftw_execute_dft_c2r(backward_plan_, as_fftw(spectrum_), output_);
 }
 
 bool RealFft::forward_from(std::span<const double> values) {
   assert(forward_plan_ != nullptr);
   // The plan was made with FFTW_PRESERVE_INPUT, so the const_cast is never written through.
   double* data = const_cast<double*>(values.data());
-  if (values.size() != real_size() || fftw_alignment_of(data) != fftw_alignment_of(input_)) return false;
+  if (values.size() != real_size() || fftw_alignment_of(data) != input_alignment_) return false;
   fftw_execute_dft_r2c(forward_plan_, data, as_fftw(spectrum_));
   return true;
 }
 
 bool RealFft::backward_into(std::span<double> values) {
   assert(backward_plan_ != nullptr);
-  if (values.size() != real_size() || fftw_alignment_of(values.data()) != fftw_alignment_of(output_)) {
+  if (values.size() != real_size() || fftw_alignment_of(values.data()) != output_alignment_) {
     return false;
   }
   fftw_execute_dft_c2r(backward_plan_, as_fftw(spectrum_), values.data());

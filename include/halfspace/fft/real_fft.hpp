@@ -57,11 +57,18 @@ class RealFft {
   // (rows, cols), row-major. Read by forward() and never modified by it, so
   // values written once stay (unless FftOutput::overwrite_input, where
   // backward() writes here). All buffers are zero after construction.
-  std::span<double> input() { return {input_, real_size()}; }
+  // With FftOutput::overwrite_input (and buffers of its own) this real array
+  // is only made on the first call of input(), output(), forward() or
+  // backward(): users that only transform their own arrays (forward_from,
+  // backward_into) never hold it.
+  std::span<double> input() { return {real_input(), real_size()}; }
   // Written by forward(), read (and destroyed) by backward(); (rows, cols/2 + 1).
   std::span<std::complex<double>> spectrum() { return {spectrum_, spectrum_size()}; }
   // Written by backward(); the input buffer itself with FftOutput::overwrite_input.
-  std::span<double> output() { return {output_, real_size()}; }
+  std::span<double> output() {
+    real_input();
+    return {output_, real_size()};
+  }
 
   // spectrum = DFT(input), sum_x input(x) exp(-i q x).
   void forward();
@@ -80,6 +87,8 @@ class RealFft {
   void make_plans(int rank, const int* dims, FftPlanning planning, FftOutput output,
                   std::complex<double>* workspace = nullptr);
   void release() noexcept;
+  // input_, made (zeroed, FFTW-aligned) if it was left to first use.
+  double* real_input();
 
   std::size_t rows_ = 0;
   std::size_t cols_ = 0;
@@ -89,6 +98,10 @@ class RealFft {
   fftw_plan_s* forward_plan_ = nullptr;
   fftw_plan_s* backward_plan_ = nullptr;
   bool owns_buffers_ = true;
+  bool lazy_input_ = false;  // overwrite_input, own buffers: input_ made on first use
+  // fftw_alignment_of the planned real arrays: new-array execution needs the same.
+  int input_alignment_ = 0;
+  int output_alignment_ = 0;
 };
 
 }  // namespace halfspace
