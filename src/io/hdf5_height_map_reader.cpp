@@ -266,10 +266,7 @@ void read_validity_mask(hid_t file, const std::vector<hsize_t>& dims, HeightMap&
   const std::string name = (slash == std::string::npos ? std::string() : target.dataset.substr(0, slash + 1)) + "valid";
   if (name == target.dataset || !link_exists(file, name)) return;
   const Target mask{target.path, name};
-  const Object data(H5Oopen(file, name.c_str(), H5P_DEFAULT));
-  if (!data.valid() || H5Iget_type(data.get()) != H5I_DATASET) {
-    mask.fail("the validity mask next to the heights is not a dataset");
-  }
+  const Object data = open_dataset(file, mask);
   const Datatype type(H5Dget_type(data.get()));
   if (!type.valid() || H5Tget_class(type.get()) != H5T_INTEGER) {
     mask.fail("the validity mask must hold integers (1 measured, 0 invalid)");

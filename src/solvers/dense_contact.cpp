@@ -28,18 +28,13 @@ std::string memory_string(double bytes) {
   return bytes < kGiB ? fmt::format("{:.0f} MiB", bytes / kMiB) : fmt::format("{:.1f} GiB", bytes / kGiB);
 }
 
-// Total force (N, N/m in 1D) of a load-controlled problem.
-double target_force(const Grid& grid, const Loading& loading) {
-  return loading.mode == ControlMode::mean_pressure ? loading.value * grid.domain_area() : loading.value;
-}
-
 // The automatic pressure unit: the mean pressure under load control; under
 // displacement control the pressure that would push the deepest cell in by
 // its overlap on its own, or the one that closes the widest gap if nothing
 // overlaps (then the solution is p = 0 and any unit will do).
 double automatic_pressure_unit(const Grid& grid, double self_influence, std::span<const double> initial_gap,
                                const Loading& loading) {
-  if (loading.load_controlled()) return target_force(grid, loading) / grid.domain_area();
+  if (loading.load_controlled()) return loading.target_force(grid.domain_area()) / grid.domain_area();
   double overlap = 0.0;
   double widest = 0.0;
   for (double g : initial_gap) {
@@ -127,7 +122,7 @@ ContactLcp make_contact_lcp(const Grid& grid, double e_star, const Eigen::Matrix
     lcp.offset[i] = (initial_gap[static_cast<std::size_t>(i)] - approach) / gap_unit;
   if (loading.load_controlled()) {
     lcp.equality_row = Eigen::VectorXd::Ones(size);
-    lcp.equality_value = target_force(grid, loading) / (grid.cell_area() * contact.pressure_unit);
+    lcp.equality_value = loading.target_force(grid.domain_area()) / (grid.cell_area() * contact.pressure_unit);
   }
   return contact;
 }

@@ -40,7 +40,7 @@ void MultilevelOptions::validate() const {
 
 bool MultilevelSolver::warm_start_is_close(std::span<const double> pressure, const Loading& loading) const {
   if (!loading.load_controlled()) return true;
-  const double target = loading.mode == ControlMode::force ? loading.value : loading.value * grid_.domain_area();
+  const double target = loading.target_force(grid_.domain_area());
   const double force =
       grid_.cell_area() * linalg::sum(pressure.size(), [&](std::size_t i) { return std::max(pressure[i], 0.0); });
   if (!(force > 0.0)) return false;

@@ -100,16 +100,10 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
   }
 
   Problem problem{initial_gap, loading.load_controlled(), 0.0, 0.0, grid.cell_area(), gap_max - gap_min};
-  switch (loading.mode) {
-    case ControlMode::force:
-      problem.target_force = loading.value;
-      break;
-    case ControlMode::mean_pressure:
-      problem.target_force = loading.value * grid.domain_area();
-      break;
-    case ControlMode::approach:
-      problem.approach = loading.value;
-      break;
+  if (problem.load_controlled) {
+    problem.target_force = loading.target_force(grid.domain_area());
+  } else {
+    problem.approach = loading.value;
   }
   if (!problem.load_controlled && grid.periodic()) {
     // With a zero-mean displacement the mean gap is mean(g0) - approach, and

@@ -45,30 +45,35 @@ TEST(FourierPreconditionerTest, InvertsThePeriodicOperatorOnMeanFreeFields) {
   EXPECT_LE(error.relative, kInverseTolerance) << "at cell " << error.index;
 }
 
+// An operator and preconditioner that share buffers against a pair with
+// buffers of their own: the same bits, interleaved as in an iteration (K t,
+// then M^-1 g, then K t again).
+void expect_same_products(const Grid& grid, FftInfluenceOperator& shared_op,
+                          FourierPreconditioner& shared_preconditioner, FftInfluenceOperator& own_op,
+                          FourierPreconditioner& own_preconditioner) {
+  std::vector<double> shared(grid.size());
+  std::vector<double> own(grid.size());
+  for (unsigned seed = 1; seed <= 3; ++seed) {
+    const std::vector<double> field = random_field(grid.size(), seed);
+    shared_op.apply(field, shared);
+    own_op.apply(field, own);
+    EXPECT_EQ(shared, own) << "K, seed " << seed << ", grid " << grid.shape_string();
+    shared_preconditioner.apply(field, shared);
+    own_preconditioner.apply(field, own);
+    EXPECT_EQ(shared, own) << "M^-1, seed " << seed << ", grid " << grid.shape_string();
+  }
+}
+
 TEST(FourierPreconditionerTest, SharedTransformGivesTheSameBits) {
   for (const Grid& grid :
        {Grid::plane(24, 18, 1e-6, 2e-6, Boundary::periodic), Grid::line(40, 1e-6, Boundary::periodic)}) {
-    const auto transform =
-        grid.dimension() == 1
-            ? std::make_shared<RealFft>(grid.nx(), FftPlanning::estimate, FftOutput::overwrite_input)
-            : std::make_shared<RealFft>(grid.ny(), grid.nx(), FftPlanning::estimate, FftOutput::overwrite_input);
+    const auto transform = make_grid_transform(grid, FftPlanning::estimate);
     FftInfluenceOperator shared_op(grid, kEStar, transform);
     FourierPreconditioner shared_preconditioner(grid, kEStar, transform);
     FftInfluenceOperator own_op(grid, kEStar);
     FourierPreconditioner own_preconditioner(grid, kEStar);
 
-    // Interleaved, as in an iteration: K t, then M^-1 g, then K t again.
-    std::vector<double> shared(grid.size());
-    std::vector<double> own(grid.size());
-    for (unsigned seed = 1; seed <= 3; ++seed) {
-      const std::vector<double> field = random_field(grid.size(), seed);
-      shared_op.apply(field, shared);
-      own_op.apply(field, own);
-      EXPECT_EQ(shared, own) << "K, seed " << seed << ", grid " << grid.shape_string();
-      shared_preconditioner.apply(field, shared);
-      own_preconditioner.apply(field, own);
-      EXPECT_EQ(shared, own) << "M^-1, seed " << seed << ", grid " << grid.shape_string();
-    }
+    expect_same_products(grid, shared_op, shared_preconditioner, own_op, own_preconditioner);
   }
 }
 
@@ -84,17 +89,7 @@ TEST(FourierPreconditionerTest, TransformInTheOperatorsScratchGivesTheSameBits) 
     FftInfluenceOperator own_op(grid, kEStar);
     FourierPreconditioner own_preconditioner(grid, kEStar);
 
-    std::vector<double> shared(grid.size());
-    std::vector<double> own(grid.size());
-    for (unsigned seed = 1; seed <= 3; ++seed) {
-      const std::vector<double> field = random_field(grid.size(), seed);
-      shared_op.apply(field, shared);
-      own_op.apply(field, own);
-      EXPECT_EQ(shared, own) << "K, seed " << seed << ", grid " << grid.shape_string();
-      shared_preconditioner.apply(field, shared);
-      own_preconditioner.apply(field, own);
-      EXPECT_EQ(shared, own) << "M^-1, seed " << seed << ", grid " << grid.shape_string();
-    }
+    expect_same_products(grid, shared_op, shared_preconditioner, own_op, own_preconditioner);
   }
   EXPECT_TRUE(FftInfluenceOperator(Grid::plane(8, 8, 1e-6, 1e-6, Boundary::periodic), kEStar).scratch().empty());
 }

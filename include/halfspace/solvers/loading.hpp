@@ -23,6 +23,11 @@ struct Loading {
   static Loading approach(double distance) { return {ControlMode::approach, distance}; }
 
   bool load_controlled() const { return mode != ControlMode::approach; }
+  // Total force (N, N/m in 1D) on a domain of `domain_area` (m^2, m in 1D)
+  // under load control: the force itself, or the mean pressure times the area.
+  double target_force(double domain_area) const {
+    return mode == ControlMode::mean_pressure ? value * domain_area : value;
+  }
   // Throws InputError naming the mode and value unless it is positive and finite.
   void validate() const;
 };
