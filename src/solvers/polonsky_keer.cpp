@@ -163,6 +163,12 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
   double gap_norm = 0.0;
   double gap_along_direction = 0.0;  // sum over C of g t_old (restart tests)
   const bool powell_restart = options_.restart == ConjugacyRestart::powell;
+  const bool search_overlap = options_.search_set == SearchSet::contact_and_overlap;
+  // Whether cell i is in the search set (see SearchSet); g must be the
+  // current gap, which it is from step 1 until K c is stored in it (step 8).
+  auto searched = [&](std::size_t i) { return p[i] > 0.0 || (search_overlap && g[i] < 0.0); };
+  double search_cells = 0.0;    // cells in the search set
+  double search_gap_sum = 0.0;  // sum over the search set of g
 
   // Work that steps 6-9 leave to the next evaluation, which does it in its
   // first pass rather than in passes of its own: the load-restoring scale of
@@ -185,7 +191,8 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
   };
   // Step 1: the pending work, then the gap of the current pressure, its
   // approach under load control, the residual (see the header) and G = sum
-  // over C of g^2. With a preconditioner, r receives g restricted to C.
+  // over the search set of g^2. With a preconditioner, r receives g
+  // restricted to the search set.
   auto evaluate = [&] {
     const double scale = pending_scale;
     const bool add = pending_correction;
@@ -212,15 +219,19 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
       approach = settled.sums[0] / contact_cells;
     }
     const bool restrict_to_contact = preconditioner_ != nullptr;
-    const auto [weighted_gap, overlap, pressure_sum, contact_gap_norm, gap_along] = sums<5>(n, [&](std::size_t i) {
-      g[i] = initial_gap[i] + u[i] - approach;
-      if (restrict_to_contact) r[i] = p[i] > 0.0 ? g[i] : 0.0;
-      const double in_contact = p[i] > 0.0 ? 1.0 : 0.0;  // a mask, not a branch: contact edges are everywhere
-      return std::array<double, 5>{p[i] * std::abs(g[i]), std::max(-g[i], 0.0), p[i], in_contact * (g[i] * g[i]),
-                                   in_contact * (g[i] * t[i])};
-    });
-    gap_norm = contact_gap_norm;
+    const auto [weighted_gap, overlap, pressure_sum, searched_gap_norm, gap_along, searched_count, searched_gap] =
+        sums<7>(n, [&](std::size_t i) {
+          g[i] = initial_gap[i] + u[i] - approach;
+          const double in_search = searched(i) ? 1.0 : 0.0;  // a mask, not a branch: contact edges are everywhere
+          if (restrict_to_contact) r[i] = in_search * g[i];
+          return std::array<double, 7>{p[i] * std::abs(g[i]),     std::max(-g[i], 0.0),      p[i],
+                                       in_search * (g[i] * g[i]), in_search * (g[i] * t[i]), in_search,
+                                       in_search * g[i]};
+        });
+    gap_norm = searched_gap_norm;
     gap_along_direction = gap_along;
+    search_cells = searched_count;
+    search_gap_sum = searched_gap;
     const double gap_scale = std::max(problem.initial_gap_range + (settled.max - settled.min), 0.0);
     const double numerator = (pressure_sum > 0.0 ? weighted_gap * cells / pressure_sum : 0.0) + overlap;
     residual = numerator == 0.0 ? 0.0 : numerator / (cells * gap_scale);
@@ -263,40 +274,45 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
       continue;
     }
 
-    // Step 2 with a preconditioner: z = M^-1 g on C (g on C is already in
-    // r, which is free until step 4), mean-free on C under load control like
-    // g itself; G = sum over C of g z.
-    double search_norm = gap_norm;
+    // Step 2: z = g, or with a preconditioner z = M^-1 g, on the search set
+    // (g there is already in r, which is free until step 4); under load
+    // control mean-free on the search set, so that the step keeps the force;
+    // G = sum over the search set of g z. (On C alone, g is mean-free
+    // already: the approach makes it so.)
     double* z = g;
-    double z_mean = 0.0;
+    double z_sum = search_gap_sum;
+    double gz = gap_norm;
     if (preconditioner_) {
       z = r;
       preconditioner_->apply({z, n}, {z, n});
       ++result.preconditioner_applications;
-      const auto [z_sum, gz] = sums<2>(n, [&](std::size_t i) {
-        const double in_contact = p[i] > 0.0 ? 1.0 : 0.0;
-        return std::array<double, 2>{in_contact * z[i], in_contact * (g[i] * z[i])};
+      const auto [searched_z, searched_gz] = sums<2>(n, [&](std::size_t i) {
+        const double in_search = searched(i) ? 1.0 : 0.0;
+        return std::array<double, 2>{in_search * z[i], in_search * (g[i] * z[i])};
       });
-      z_mean = problem.load_controlled ? z_sum / contact_cells : 0.0;
-      // sum over C of g is zero under load control, so subtracting z_mean leaves g.z unchanged.
-      search_norm = gz;
+      z_sum = searched_z;
+      gz = searched_gz;
     }
+    const bool mean_free = problem.load_controlled && (preconditioner_ != nullptr || search_overlap);
+    const double z_mean = mean_free ? z_sum / search_cells : 0.0;
+    const double search_norm = gz - z_mean * search_gap_sum;
 
     // Step 3: conjugate direction on the contact set, unless restarting.
     if (powell_restart && !(std::abs(gap_along_direction) <= kPowellRestart * search_norm)) conjugate = false;
     const double beta = conjugate ? search_norm / previous_norm : 0.0;
-    for_each_index(n, [&](std::size_t i) { t[i] = p[i] > 0.0 ? (z[i] - z_mean) + beta * t[i] : 0.0; });
+    for_each_index(n, [&](std::size_t i) { t[i] = searched(i) ? (z[i] - z_mean) + beta * t[i] : 0.0; });
     previous_norm = search_norm;
 
-    // Step 4: its image r = K t, mean-corrected on C under load control.
+    // Step 4: its image r = K t, mean-corrected on the search set under load
+    // control.
     op_.apply({t, n}, {r, n});
     ++result.operator_applications;
     const auto [r_sum, t_sum, gt, rt] = sums<4>(n, [&](std::size_t i) {
-      const double in_contact = p[i] > 0.0 ? 1.0 : 0.0;
-      return std::array<double, 4>{in_contact * r[i], in_contact * t[i], in_contact * (g[i] * t[i]),
-                                   in_contact * (r[i] * t[i])};
+      const double in_search = searched(i) ? 1.0 : 0.0;
+      return std::array<double, 4>{in_search * r[i], in_search * t[i], in_search * (g[i] * t[i]),
+                                   in_search * (r[i] * t[i])};
     });
-    const double r_mean = problem.load_controlled ? r_sum / contact_cells : 0.0;
+    const double r_mean = problem.load_controlled ? r_sum / search_cells : 0.0;
     const double curvature = rt - r_mean * t_sum;
 
     // Step 5: step length, the exact minimiser along t on the current contact
@@ -310,10 +326,13 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
       break;
     }
 
-    // Steps 6-8: move along t, clip to p >= 0, and let cells that are out of
-    // contact but interpenetrate (g < 0) enter with pressure -tau g. Entries
-    // reset the conjugacy: any entry under ConjugacyRestart::on_entry, more
-    // than 1% of the contact cells under powell. The displacement follows
+    // Steps 6-8: move along t, clip to p >= 0, and (search set C only) let
+    // cells that are out of contact but interpenetrate (g < 0) enter with
+    // pressure -tau g. Entries reset the conjugacy: any entry under
+    // ConjugacyRestart::on_entry, more than 1% of the contact cells under
+    // powell. The projected-gradient search set has no entries: its
+    // interpenetrating cells were in the direction, and the step has given
+    // them pressure or not (then they stay in the set while g < 0). The displacement follows
     // without a new product: K(p - tau t) = u - tau r, plus K c for the
     // correction c that clipping and entries add, which is zero once the
     // contact set settles.
@@ -322,7 +341,7 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
       const double moved = p[i] - tau * t[i];
       double pi = std::max(moved, 0.0);
       double entry = 0.0;
-      if (pi == 0.0 && g[i] < 0.0 && tau > 0.0) {
+      if (!search_overlap && pi == 0.0 && g[i] < 0.0 && tau > 0.0) {
         pi = -tau * g[i];
         entry = 1.0;
       }

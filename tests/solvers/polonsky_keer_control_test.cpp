@@ -8,6 +8,7 @@
 
 #include "halfspace/error.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
+#include "halfspace/solvers/fourier_preconditioner.hpp"
 #include "halfspace/solvers/polonsky_keer.hpp"
 #include "support/contact_checks.hpp"
 #include "support/grid_fields.hpp"
@@ -86,6 +87,35 @@ TEST_P(PolonskyKeerControlTest, ApproachUnderLoadImposedBackReturnsTheLoadFree1D
   const Grid grid = Grid::line(257, 1e-6, Boundary::free);
   const Eigen::ArrayXd gap0 = field_from(grid, [](double x, double) { return x * x / (2 * 0.01); });
   expect_round_trip(grid, gap0, Loading::force(5e4), 1e-9 * gap0.maxCoeff(), GetParam());
+}
+
+// The two search sets are two paths to the same LCP solution: with and
+// without the preconditioner, under load and under an imposed approach.
+TEST(PolonskyKeerSearchSetTest, BothSearchSetsReachTheSameContact) {
+  const Grid grid = Grid::plane(64, 64, 1e-6, 1e-6, Boundary::periodic);
+  const Eigen::ArrayXd gap0 = random_periodic_gap(grid, 1e-7);
+  FftInfluenceOperator op(grid, kEStar);
+  solvers::FourierPreconditioner preconditioner(grid, kEStar);
+  for (const bool preconditioned : {false, true}) {
+    for (const Loading loading : {Loading::mean_pressure(5e7), Loading::approach(0.7 * gap0.mean())}) {
+      solvers::PolonskyKeerOptions options;
+      options.tolerance = 1e-12;
+      solvers::PolonskyKeer on_contact(op, options, preconditioned ? &preconditioner : nullptr);
+      options.search_set = solvers::SearchSet::contact_and_overlap;
+      solvers::PolonskyKeer projected(op, options, preconditioned ? &preconditioner : nullptr);
+      const SolveResult a = on_contact.solve({gap0.data(), grid.size()}, loading);
+      const SolveResult b = projected.solve({gap0.data(), grid.size()}, loading);
+      ASSERT_TRUE(a.converged()) << a.message;
+      ASSERT_TRUE(b.converged()) << b.message;
+      const double difference = (a.pressure - b.pressure).abs().maxCoeff() / a.max_pressure;
+      std::printf("preconditioned %d, %s: iterations %d (contact) / %d (projected), pressure difference %.2e\n",
+                  preconditioned ? 1 : 0, loading.load_controlled() ? "load" : "approach", a.iterations, b.iterations,
+                  difference);
+      EXPECT_LE(difference, 1e-8);
+      EXPECT_NEAR(b.contact_fraction, a.contact_fraction, 1.0 / static_cast<double>(grid.size()));
+      EXPECT_NEAR(b.total_force, a.total_force, 1e-8 * a.total_force);
+    }
+  }
 }
 
 // A start handed over (solve_from) iterates exactly like the same start

@@ -1,6 +1,7 @@
-// Polonsky-Keer in its three variants (plain, Fourier-preconditioned, and
-// Fourier-preconditioned from coarse-grid solutions), so every validation test
-// runs on each; parameterised tests take a PkVariant.
+// Polonsky-Keer in its variants (plain, plain with the projected-gradient
+// search set, Fourier-preconditioned, and Fourier-preconditioned from
+// coarse-grid solutions), so every validation test runs on each;
+// parameterised tests take a PkVariant.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -16,12 +17,14 @@
 
 namespace halfspace::testing {
 
-enum class PkVariant { plain, fourier, multilevel };
+enum class PkVariant { plain, plain_projected, fourier, multilevel };
 
 inline std::string variant_name(const ::testing::TestParamInfo<PkVariant>& info) {
   switch (info.param) {
     case PkVariant::plain:
       return "Plain";
+    case PkVariant::plain_projected:
+      return "PlainProjected";
     case PkVariant::fourier:
       return "FourierPreconditioned";
     case PkVariant::multilevel:
@@ -31,7 +34,7 @@ inline std::string variant_name(const ::testing::TestParamInfo<PkVariant>& info)
 }
 
 inline auto all_pk_variants() {
-  return ::testing::Values(PkVariant::plain, PkVariant::fourier, PkVariant::multilevel);
+  return ::testing::Values(PkVariant::plain, PkVariant::plain_projected, PkVariant::fourier, PkVariant::multilevel);
 }
 
 // Polonsky-Keer on an operator it may own, with the preconditioner it owns.
@@ -63,12 +66,14 @@ class OwningPk final : public ContactSolver {
 class PkSolver {
  public:
   PkSolver(InfluenceOperator& op, double e_star, PkVariant variant, solvers::PolonskyKeerOptions options = {}) {
-    // The restart rules of the factory's "pk", "pk-fourier" and "pk-multilevel".
-    if (variant == PkVariant::plain) {
+    // The restart rules and search sets of the factory's "pk", "pk-fourier" and "pk-multilevel".
+    if (variant == PkVariant::plain || variant == PkVariant::plain_projected) {
+      if (variant == PkVariant::plain_projected) options.search_set = solvers::SearchSet::contact_and_overlap;
       solver_ = std::make_unique<OwningPk>(nullptr, op, e_star, false, std::move(options));
       return;
     }
     options.restart = solvers::ConjugacyRestart::powell;
+    options.search_set = solvers::SearchSet::contact_and_overlap;
     if (variant == PkVariant::fourier) {
       solver_ = std::make_unique<OwningPk>(nullptr, op, e_star, true, std::move(options));
       return;

@@ -42,11 +42,22 @@ namespace halfspace::solvers {
 // enter at once (measured in docs/performance.md).
 enum class ConjugacyRestart { on_entry, powell };
 
+// The cells the search direction covers. Polonsky & Keer build it on the
+// contact set C = {p > 0}; a cell out of contact that interpenetrates
+// (g < 0) enters only after the step, with pressure -tau g, and joins the
+// direction one iteration later. The projected-gradient set adds those cells
+// at once, C + {p = 0, g < 0}, as bound-constrained CG does (Vollebregt 2014,
+// J. Comput. Phys. 257, 333): the step itself gives them pressure, which
+// saves iterations while the contact set still moves (docs/performance.md).
+enum class SearchSet { contact, contact_and_overlap };
+
 struct PolonskyKeerOptions {
   double tolerance = 1e-10;    // relative residual, see the stopping criterion above
   int max_iterations = 10000;  // status iteration_limit when reached
   // When the conjugate directions restart (step 3 with beta = 0).
   ConjugacyRestart restart = ConjugacyRestart::on_entry;
+  // Which cells the conjugate directions cover.
+  SearchSet search_set = SearchSet::contact;
   // Called once per iteration with (iteration, residual); may be empty. It
   // runs on the calling thread between iterations, so it may print.
   std::function<void(int, double)> progress;
