@@ -166,7 +166,9 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
   const bool search_overlap = options_.search_set == SearchSet::contact_and_overlap;
   // Whether cell i is in the search set (see SearchSet); g must be the
   // current gap, which it is from step 1 until K c is stored in it (step 8).
-  auto searched = [&](std::size_t i) { return p[i] > 0.0 || (search_overlap && g[i] < 0.0); };
+  // Bitwise, not short-circuit, so that the masks stay free of branches; the
+  // test of search_overlap is the same in every cell (the loops unswitch).
+  auto searched = [&](std::size_t i) { return search_overlap ? (p[i] > 0.0) | (g[i] < 0.0) : p[i] > 0.0; };
   double search_cells = 0.0;    // cells in the search set
   double search_gap_sum = 0.0;  // sum over the search set of g
 
@@ -219,19 +221,15 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
       approach = settled.sums[0] / contact_cells;
     }
     const bool restrict_to_contact = preconditioner_ != nullptr;
-    const auto [weighted_gap, overlap, pressure_sum, searched_gap_norm, gap_along, searched_count, searched_gap] =
-        sums<7>(n, [&](std::size_t i) {
-          g[i] = initial_gap[i] + u[i] - approach;
-          const double in_search = searched(i) ? 1.0 : 0.0;  // a mask, not a branch: contact edges are everywhere
-          if (restrict_to_contact) r[i] = in_search * g[i];
-          return std::array<double, 7>{p[i] * std::abs(g[i]),     std::max(-g[i], 0.0),      p[i],
-                                       in_search * (g[i] * g[i]), in_search * (g[i] * t[i]), in_search,
-                                       in_search * g[i]};
-        });
+    const auto [weighted_gap, overlap, pressure_sum, searched_gap_norm, gap_along] = sums<5>(n, [&](std::size_t i) {
+      g[i] = initial_gap[i] + u[i] - approach;
+      const double in_search = searched(i) ? 1.0 : 0.0;  // a mask, not a branch: contact edges are everywhere
+      if (restrict_to_contact) r[i] = in_search * g[i];
+      return std::array<double, 5>{p[i] * std::abs(g[i]), std::max(-g[i], 0.0), p[i], in_search * (g[i] * g[i]),
+                                   in_search * (g[i] * t[i])};
+    });
     gap_norm = searched_gap_norm;
     gap_along_direction = gap_along;
-    search_cells = searched_count;
-    search_gap_sum = searched_gap;
     const double gap_scale = std::max(problem.initial_gap_range + (settled.max - settled.min), 0.0);
     const double numerator = (pressure_sum > 0.0 ? weighted_gap * cells / pressure_sum : 0.0) + overlap;
     residual = numerator == 0.0 ? 0.0 : numerator / (cells * gap_scale);
@@ -279,19 +277,35 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
     // control mean-free on the search set, so that the step keeps the force;
     // G = sum over the search set of g z. (On C alone, g is mean-free
     // already: the approach makes it so.)
+    // The size of the search set and the sum of g over it are counted here,
+    // not in step 1, whose pass already holds five sums.
     double* z = g;
-    double z_sum = search_gap_sum;
+    double z_sum = 0.0;
     double gz = gap_norm;
     if (preconditioner_) {
       z = r;
       preconditioner_->apply({z, n}, {z, n});
       ++result.preconditioner_applications;
-      const auto [searched_z, searched_gz] = sums<2>(n, [&](std::size_t i) {
+      const auto [searched_z, searched_gz, searched_count, searched_gap] = sums<4>(n, [&](std::size_t i) {
         const double in_search = searched(i) ? 1.0 : 0.0;
-        return std::array<double, 2>{in_search * z[i], in_search * (g[i] * z[i])};
+        return std::array<double, 4>{in_search * z[i], in_search * (g[i] * z[i]), in_search, in_search * g[i]};
       });
       z_sum = searched_z;
       gz = searched_gz;
+      search_cells = searched_count;
+      search_gap_sum = searched_gap;
+    } else if (search_overlap) {
+      const auto [searched_count, searched_gap] = sums<2>(n, [&](std::size_t i) {
+        const double in_search = searched(i) ? 1.0 : 0.0;
+        return std::array<double, 2>{in_search, in_search * g[i]};
+      });
+      search_cells = searched_count;
+      search_gap_sum = searched_gap;
+      z_sum = searched_gap;
+    } else {
+      // Plain Polonsky-Keer on C, where g is mean-free already.
+      search_cells = contact_cells;
+      search_gap_sum = 0.0;
     }
     const bool mean_free = problem.load_controlled && (preconditioner_ != nullptr || search_overlap);
     const double z_mean = mean_free ? z_sum / search_cells : 0.0;
