@@ -161,7 +161,7 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
   double residual = 0.0;
   double contact_cells = 0.0;
   double gap_norm = 0.0;
-  double gap_along_direction = 0.0;  // sum over C of g t_old (restart tests)
+  double gap_along_direction = 0.0;  // sum over the search set of g t_old (restart tests)
   const bool powell_restart = options_.restart == ConjugacyRestart::powell;
   const bool search_overlap = options_.search_set == SearchSet::contact_and_overlap;
   // Whether cell i is in the search set (see SearchSet); g must be the
@@ -311,7 +311,7 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
     const double z_mean = mean_free ? z_sum / search_cells : 0.0;
     const double search_norm = gz - z_mean * search_gap_sum;
 
-    // Step 3: conjugate direction on the contact set, unless restarting.
+    // Step 3: conjugate direction on the search set, unless restarting.
     if (powell_restart && !(std::abs(gap_along_direction) <= kPowellRestart * search_norm)) conjugate = false;
     const double beta = conjugate ? search_norm / previous_norm : 0.0;
     for_each_index(n, [&](std::size_t i) { t[i] = searched(i) ? (z[i] - z_mean) + beta * t[i] : 0.0; });
@@ -346,8 +346,8 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
     // ConjugacyRestart::on_entry, more than 1% of the contact cells under
     // powell. The projected-gradient search set has no entries: its
     // interpenetrating cells were in the direction, and the step has given
-    // them pressure or not (then they stay in the set while g < 0). The displacement follows
-    // without a new product: K(p - tau t) = u - tau r, plus K c for the
+    // them pressure or not (then they stay in the set while g < 0).
+    // The displacement follows without a new product: K(p - tau t) = u - tau r, plus K c for the
     // correction c that clipping and entries add, which is zero once the
     // contact set settles.
     // r is not needed after this pass, so it receives c.
