@@ -301,7 +301,7 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
       });
       search_cells = searched_count;
       search_gap_sum = searched_gap;
-      z_sum = searched_gap;
+      z_sum = search_gap_sum;  // z = g
     } else {
       // Plain Polonsky-Keer on C, where g is mean-free already.
       search_cells = contact_cells;
@@ -346,10 +346,10 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
     // ConjugacyRestart::on_entry, more than 1% of the contact cells under
     // powell. The projected-gradient search set has no entries: its
     // interpenetrating cells were in the direction, and the step has given
-    // them pressure or not (then they stay in the set while g < 0).
-    // The displacement follows without a new product: K(p - tau t) = u - tau r, plus K c for the
-    // correction c that clipping and entries add, which is zero once the
-    // contact set settles.
+    // them pressure or not (then they stay in the set while g < 0). The
+    // displacement follows without a new product: K(p - tau t) = u - tau r,
+    // plus K c for the correction c that clipping and entries add, which is
+    // zero once the contact set settles.
     // r is not needed after this pass, so it receives c.
     const auto [new_pressure_sum, entered, corrected] = sums<3>(n, [&](std::size_t i) {
       const double moved = p[i] - tau * t[i];

@@ -18,8 +18,8 @@
 //
 // Preconditioning. Given a Preconditioner M^-1 (e.g. FourierPreconditioner),
 // the conjugate directions are built from z = M^-1 g restricted to the
-// search set (see SearchSet) instead of g itself, which cuts the iteration count on rough
-// surfaces at the price of one more transform per iteration.
+// search set (see SearchSet) instead of g itself, which cuts the iteration
+// count on rough surfaces at the price of one more transform per iteration.
 #pragma once
 
 #include <functional>
