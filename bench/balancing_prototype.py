@@ -12,10 +12,16 @@ replaces z = P_S M^-1 P_S r by
 
   z = Q r + (I - Q K_SS) P_S M^-1 P_S (I - K_SS Q) r,  Q = Z (Z^T K_SS Z)^-1 Z^T,
 
-Z the cells of S in each B x B block. The coarse matrix is assembled exactly
-for the current S in every iteration, one product per block (not counted in
-the products printed, which are those a solver would need): a prototype for
-grids of a few hundred cells per side.
+Z the cells of S in each B x B block. The coarse matrix Z^T K_SS Z is
+assembled exactly, one product per block (not counted in the products
+printed, which are those a solver would need): a prototype for grids of a few
+hundred cells per side. `--point-loads-beyond-neighbours` keeps only the
+3 x 3 nearest blocks exact and takes point loads between block centres for
+the rest; `--rebuild-change F` rebuilds it only when S changed in more than
+the fraction F of its cells; `--coarse-start` first solves the problem on
+the grid of twice the spacing (block-averaged heights, `fourier`) and starts
+from its pressure, prolonged piecewise constant, as pk-multilevel's finest
+step does.
 
   bench/balancing_prototype.py surface.h5 --mean-pressure 4e6 --E-star 1e9 [--preconditioner balancing --block 32]
 """
@@ -27,6 +33,121 @@ import h5py
 import numpy as np
 
 
+class Contact:
+    """The periodic problem on one grid: kernels, products counted."""
+
+    def __init__(self, height, dx, dy, e_star):
+        ny, nx = height.shape
+        qy = 2.0 * np.pi * np.fft.fftfreq(ny, dy)[:, None]
+        qx = 2.0 * np.pi * np.fft.rfftfreq(nx, dx)[None, :]
+        q = np.hypot(qx, qy)
+        self.height = height
+        self.dx, self.dy = dx, dy
+        self.kernel = np.zeros_like(q)
+        self.kernel[q > 0] = 2.0 / (e_star * q[q > 0])
+        self.inverse = 0.5 * e_star * q
+        self.inverse[0, 0] = 0.5 * e_star * q[q > 0].min()
+        self.products = 0
+
+    def convolve(self, symbol, field):
+        return np.fft.irfft2(np.fft.rfft2(field) * symbol, s=field.shape)
+
+    def k_product(self, field):
+        self.products += 1
+        return self.convolve(self.kernel, field)
+
+
+class Balancing:
+    """z = Q r + (I - Q K_SS) P_S M^-1 P_S (I - K_SS Q) r on B x B blocks."""
+
+    def __init__(self, contact, block, point_loads_beyond_neighbours, rebuild_change):
+        ny, nx = contact.height.shape
+        self.contact = contact
+        self.bx, self.by = nx // block, ny // block
+        self.block = block
+        self.owner = (np.arange(ny) // block)[:, None] * self.bx + (np.arange(nx) // block)[None, :]
+        self.point_loads = point_loads_beyond_neighbours
+        self.rebuild_change = rebuild_change
+        self.built_for = None
+        self.rebuilds = 0
+
+    def restrict(self, search, field):
+        return np.bincount(self.owner.ravel(), weights=(search * field).ravel(), minlength=self.bx * self.by)
+
+    def build(self, search):
+        c, blocks = self.contact, self.bx * self.by
+        coarse = np.zeros((blocks, blocks))
+        for j in range(blocks):
+            coarse[:, j] = self.restrict(search, c.convolve(c.kernel, (self.owner == j) * search))
+        counts = self.restrict(search, np.ones_like(search))
+        if self.point_loads:
+            ny, nx = search.shape
+            influence = np.fft.irfft2(c.kernel, s=search.shape)  # the kernel in real space
+            index = np.arange(blocks)
+            sx = (index[:, None] % self.bx - index[None, :] % self.bx) % self.bx
+            sy = (index[:, None] // self.bx - index[None, :] // self.bx) % self.by
+            near = (np.minimum(sx, self.bx - sx) <= 1) & (np.minimum(sy, self.by - sy) <= 1)
+            far = counts[:, None] * counts[None, :] * influence[(sy * self.block) % ny, (sx * self.block) % nx]
+            coarse = np.where(near, coarse, far)
+        used = counts > 0
+        self.coarse_inverse = np.zeros_like(coarse)
+        self.coarse_inverse[np.ix_(used, used)] = np.linalg.inv(coarse[np.ix_(used, used)])
+        self.built_for = search.copy()
+        self.rebuilds += 1
+
+    def preconditioner(self, search):
+        if self.built_for is None or np.abs(search - self.built_for).sum() > self.rebuild_change * self.built_for.sum():
+            self.build(search)
+        c = self.contact
+        fourier = lambda r: search * c.convolve(c.inverse, search * r)
+        correction = lambda r: search * (self.coarse_inverse @ self.restrict(search, r))[self.owner]
+        restricted_k = lambda v: search * c.k_product(search * v)
+
+        def apply(r):
+            y = correction(r)
+            v = fourier(r - restricted_k(y))
+            return y + v - correction(restricted_k(v))
+
+        return apply
+
+
+def solve(contact, mean_pressure, preconditioner_for, tolerance, max_iterations, start=None):
+    """halfspace's preconditioned PK under load control with the projected search set."""
+    height = contact.height
+    cells = height.size
+    initial_gap = height.max() - height
+    pressure = np.full(height.shape, mean_pressure) if start is None else start * (mean_pressure * cells / start.sum())
+    displacement = contact.k_product(pressure)
+    direction = np.zeros_like(pressure)
+    previous, conjugate = 1.0, False
+    for iteration in range(max_iterations + 1):
+        in_contact = pressure > 0.0
+        approach = (initial_gap + displacement)[in_contact].mean()
+        gap = initial_gap + displacement - approach
+        scale = max(np.ptp(initial_gap) + np.ptp(displacement), 0.0)
+        residual = ((pressure * np.abs(gap)).sum() * cells / pressure.sum() + np.maximum(-gap, 0.0).sum()) / (
+            cells * scale)
+        if residual <= tolerance or iteration == max_iterations:
+            break
+        search = (in_contact | (gap < 0.0)).astype(float)
+        z = preconditioner_for(search)(search * gap)
+        z = search * (z - (z * search).sum() / search.sum())
+        norm = (search * gap * z).sum()
+        if conjugate and abs((search * gap * direction).sum()) > 0.2 * norm:
+            conjugate = False
+        beta = norm / previous if conjugate else 0.0
+        previous = norm
+        direction = search * (z + beta * direction)
+        image = contact.k_product(direction)
+        image_mean = (image * search).sum() / search.sum()
+        tau = (search * gap * direction).sum() / ((image - image_mean) * search * direction).sum()
+        pressure = np.maximum(pressure - tau * direction, 0.0)
+        pressure *= mean_pressure * cells / pressure.sum()
+        displacement = contact.k_product(pressure)
+        conjugate = tau > 0.0
+    return pressure, iteration, residual
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("height_map", help="HDF5 height map (dataset 'height', attributes dx, dy), periodic")
@@ -34,6 +155,9 @@ def main():
     parser.add_argument("--E-star", type=float, required=True)
     parser.add_argument("--preconditioner", choices=["fourier", "balancing"], default="fourier")
     parser.add_argument("--block", type=int, default=32)
+    parser.add_argument("--point-loads-beyond-neighbours", action="store_true")
+    parser.add_argument("--rebuild-change", type=float, default=0.0, metavar="F")
+    parser.add_argument("--coarse-start", action="store_true")
     parser.add_argument("--tolerance", type=float, default=1e-10)
     parser.add_argument("--max-iterations", type=int, default=1000)
     args = parser.parse_args()
@@ -49,80 +173,31 @@ def main():
     ny, nx = height.shape
     if args.preconditioner == "balancing" and (nx % args.block or ny % args.block):
         sys.exit(f"balancing_prototype.py: --block {args.block} must divide the grid ({nx} x {ny})")
+    if args.coarse_start and (nx % 2 or ny % 2):
+        sys.exit(f"balancing_prototype.py: --coarse-start needs even grid sizes ({nx} x {ny})")
 
-    qy = 2.0 * np.pi * np.fft.fftfreq(ny, dy)[:, None]
-    qx = 2.0 * np.pi * np.fft.rfftfreq(nx, dx)[None, :]
-    q = np.hypot(qx, qy)
-    kernel = np.zeros_like(q)
-    kernel[q > 0] = 2.0 / (args.E_star * q[q > 0])
-    inverse = 0.5 * args.E_star * q
-    inverse[0, 0] = 0.5 * args.E_star * q[q > 0].min()
-    convolve = lambda symbol, field: np.fft.irfft2(np.fft.rfft2(field) * symbol, s=field.shape)
-    products = [0]
+    start = None
+    if args.coarse_start:
+        coarse = Contact(height.reshape(ny // 2, 2, nx // 2, 2).mean(axis=(1, 3)), 2 * dx, 2 * dy, args.E_star)
+        fourier = lambda search: (lambda r: search * coarse.convolve(coarse.inverse, search * r))
+        coarse_pressure, coarse_iterations, _ = solve(coarse, args.mean_pressure, fourier, args.tolerance,
+                                                      args.max_iterations)
+        start = np.repeat(np.repeat(coarse_pressure, 2, axis=0), 2, axis=1)
+        print(f"coarse start: {coarse_iterations} iterations on {nx // 2} x {ny // 2}")
 
-    def k_product(field):
-        products[0] += 1
-        return convolve(kernel, field)
-
-    bx, by = nx // args.block, ny // args.block
-    owner = (np.arange(ny) // args.block)[:, None] * bx + (np.arange(nx) // args.block)[None, :]
-    blocks = bx * by
-
-    def preconditioner(search):
-        fourier = lambda r: search * convolve(inverse, search * r)
-        if args.preconditioner == "fourier":
-            return fourier
-        restrict = lambda field: np.bincount(owner.ravel(), weights=(search * field).ravel(), minlength=blocks)
-        coarse = np.zeros((blocks, blocks))
-        for j in range(blocks):
-            coarse[:, j] = restrict(convolve(kernel, (owner == j) * search))
-        used = restrict(np.ones_like(search)) > 0
-        coarse_inverse = np.zeros_like(coarse)
-        coarse_inverse[np.ix_(used, used)] = np.linalg.inv(coarse[np.ix_(used, used)])
-        correction = lambda r: search * (coarse_inverse @ restrict(r))[owner]
-        restricted_k = lambda v: search * k_product(search * v)
-
-        def balancing(r):
-            y = correction(r)
-            v = fourier(r - restricted_k(y))
-            return y + v - correction(restricted_k(v))
-
-        return balancing
-
-    cells = nx * ny
-    initial_gap = height.max() - height
-    pressure = np.full(height.shape, args.mean_pressure)
-    displacement = k_product(pressure)
-    direction = np.zeros_like(pressure)
-    previous, conjugate = 1.0, False
-    for iteration in range(args.max_iterations + 1):
-        contact = pressure > 0.0
-        approach = (initial_gap + displacement)[contact].mean()
-        gap = initial_gap + displacement - approach
-        scale = max(np.ptp(initial_gap) + np.ptp(displacement), 0.0)
-        residual = ((pressure * np.abs(gap)).sum() * cells / pressure.sum() + np.maximum(-gap, 0.0).sum()) / (
-            cells * scale)
-        if residual <= args.tolerance or iteration == args.max_iterations:
-            break
-        search = (contact | (gap < 0.0)).astype(float)
-        z = preconditioner(search)(search * gap)
-        z = search * (z - (z * search).sum() / search.sum())
-        norm = (search * gap * z).sum()
-        if conjugate and abs((search * gap * direction).sum()) > 0.2 * norm:
-            conjugate = False
-        beta = norm / previous if conjugate else 0.0
-        previous = norm
-        direction = search * (z + beta * direction)
-        image = k_product(direction)
-        image_mean = (image * search).sum() / search.sum()
-        tau = (search * gap * direction).sum() / ((image - image_mean) * search * direction).sum()
-        pressure = np.maximum(pressure - tau * direction, 0.0)
-        pressure *= args.mean_pressure * cells / pressure.sum()
-        displacement = k_product(pressure)
-        conjugate = tau > 0.0
+    contact = Contact(height, dx, dy, args.E_star)
+    balancing = None
+    if args.preconditioner == "fourier":
+        preconditioner_for = lambda search: (lambda r: search * contact.convolve(contact.inverse, search * r))
+    else:
+        balancing = Balancing(contact, args.block, args.point_loads_beyond_neighbours, args.rebuild_change)
+        preconditioner_for = balancing.preconditioner
+    pressure, iterations, residual = solve(contact, args.mean_pressure, preconditioner_for, args.tolerance,
+                                           args.max_iterations, start)
     status = "converged" if residual <= args.tolerance else "NOT converged"
-    print(f"{args.preconditioner} (block {args.block}): {status} after {iteration} iterations, residual {residual:.2e}, "
-          f"{products[0]} K products, {int((pressure > 0).sum())} contact cells")
+    rebuilds = f", {balancing.rebuilds} coarse matrices" if balancing else ""
+    print(f"{args.preconditioner}: {status} after {iterations} iterations, residual {residual:.2e}, "
+          f"{contact.products} K products, {iterations} M^-1, {int((pressure > 0).sum())} contact cells{rebuilds}")
     return 0 if residual <= args.tolerance else 1
 
 
