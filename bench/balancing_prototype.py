@@ -32,83 +32,60 @@ import sys
 import h5py
 import numpy as np
 
+from contact_spectrum import Blocks, Operators, balancing, coarse_inverse, exact_coarse_matrix, fourier_preconditioner
+
 
 class Contact:
-    """The periodic problem on one grid: kernels, products counted."""
+    """The periodic problem on one grid, its K products counted."""
 
     def __init__(self, height, dx, dy, e_star):
-        ny, nx = height.shape
-        qy = 2.0 * np.pi * np.fft.fftfreq(ny, dy)[:, None]
-        qx = 2.0 * np.pi * np.fft.rfftfreq(nx, dx)[None, :]
-        q = np.hypot(qx, qy)
         self.height = height
-        self.dx, self.dy = dx, dy
-        self.kernel = np.zeros_like(q)
-        self.kernel[q > 0] = 2.0 / (e_star * q[q > 0])
-        self.inverse = 0.5 * e_star * q
-        self.inverse[0, 0] = 0.5 * e_star * q[q > 0].min()
+        self.ops = Operators(height.shape, dx, dy, e_star)
         self.products = 0
-
-    def convolve(self, symbol, field):
-        return np.fft.irfft2(np.fft.rfft2(field) * symbol, s=field.shape)
 
     def k_product(self, field):
         self.products += 1
-        return self.convolve(self.kernel, field)
+        return self.ops.apply(self.ops.kernel, field)
+
+    def fourier(self, search):
+        return fourier_preconditioner(self.ops, search)
 
 
 class Balancing:
-    """z = Q r + (I - Q K_SS) P_S M^-1 P_S (I - K_SS Q) r on B x B blocks."""
+    """The balancing preconditioner of contact_spectrum.py for the current
+    search set, its coarse matrix rebuilt when the set has changed enough."""
 
     def __init__(self, contact, block, point_loads_beyond_neighbours, rebuild_change):
-        ny, nx = contact.height.shape
         self.contact = contact
-        self.bx, self.by = nx // block, ny // block
-        self.block = block
-        self.owner = (np.arange(ny) // block)[:, None] * self.bx + (np.arange(nx) // block)[None, :]
+        self.blocks = Blocks(contact.height.shape, block)
         self.point_loads = point_loads_beyond_neighbours
         self.rebuild_change = rebuild_change
         self.built_for = None
         self.rebuilds = 0
 
-    def restrict(self, search, field):
-        return np.bincount(self.owner.ravel(), weights=(search * field).ravel(), minlength=self.bx * self.by)
-
     def build(self, search):
-        c, blocks = self.contact, self.bx * self.by
-        coarse = np.zeros((blocks, blocks))
-        for j in range(blocks):
-            coarse[:, j] = self.restrict(search, c.convolve(c.kernel, (self.owner == j) * search))
-        counts = self.restrict(search, np.ones_like(search))
+        ops, blocks = self.contact.ops, self.blocks
+        # Not counted: a solver would not assemble it with products.
+        coarse = exact_coarse_matrix(blocks, search, lambda v: search * ops.apply(ops.kernel, search * v))
         if self.point_loads:
             ny, nx = search.shape
-            influence = np.fft.irfft2(c.kernel, s=search.shape)  # the kernel in real space
-            index = np.arange(blocks)
-            sx = (index[:, None] % self.bx - index[None, :] % self.bx) % self.bx
-            sy = (index[:, None] // self.bx - index[None, :] // self.bx) % self.by
-            near = (np.minimum(sx, self.bx - sx) <= 1) & (np.minimum(sy, self.by - sy) <= 1)
-            far = counts[:, None] * counts[None, :] * influence[(sy * self.block) % ny, (sx * self.block) % nx]
+            counts = blocks.restrict(search, np.ones_like(search))
+            influence = np.fft.irfft2(ops.kernel, s=search.shape)  # the kernel in real space
+            index = np.arange(blocks.count)
+            sx = (index[:, None] % blocks.bx - index[None, :] % blocks.bx) % blocks.bx
+            sy = (index[:, None] // blocks.bx - index[None, :] // blocks.bx) % blocks.by
+            near = (np.minimum(sx, blocks.bx - sx) <= 1) & (np.minimum(sy, blocks.by - sy) <= 1)
+            far = counts[:, None] * counts[None, :] * influence[(sy * blocks.block) % ny, (sx * blocks.block) % nx]
             coarse = np.where(near, coarse, far)
-        used = counts > 0
-        self.coarse_inverse = np.zeros_like(coarse)
-        self.coarse_inverse[np.ix_(used, used)] = np.linalg.inv(coarse[np.ix_(used, used)])
+        self.inverse = coarse_inverse(blocks, search, coarse)
         self.built_for = search.copy()
         self.rebuilds += 1
 
     def preconditioner(self, search):
         if self.built_for is None or np.abs(search - self.built_for).sum() > self.rebuild_change * self.built_for.sum():
             self.build(search)
-        c = self.contact
-        fourier = lambda r: search * c.convolve(c.inverse, search * r)
-        correction = lambda r: search * (self.coarse_inverse @ self.restrict(search, r))[self.owner]
-        restricted_k = lambda v: search * c.k_product(search * v)
-
-        def apply(r):
-            y = correction(r)
-            v = fourier(r - restricted_k(y))
-            return y + v - correction(restricted_k(v))
-
-        return apply
+        restricted_k = lambda v: search * self.contact.k_product(search * v)
+        return balancing(self.blocks, search, self.inverse, restricted_k, self.contact.fourier(search))
 
 
 def solve(contact, mean_pressure, preconditioner_for, tolerance, max_iterations, start=None):
@@ -179,8 +156,7 @@ def main():
     start = None
     if args.coarse_start:
         coarse = Contact(height.reshape(ny // 2, 2, nx // 2, 2).mean(axis=(1, 3)), 2 * dx, 2 * dy, args.E_star)
-        fourier = lambda search: (lambda r: search * coarse.convolve(coarse.inverse, search * r))
-        coarse_pressure, coarse_iterations, _ = solve(coarse, args.mean_pressure, fourier, args.tolerance,
+        coarse_pressure, coarse_iterations, _ = solve(coarse, args.mean_pressure, coarse.fourier, args.tolerance,
                                                       args.max_iterations)
         start = np.repeat(np.repeat(coarse_pressure, 2, axis=0), 2, axis=1)
         print(f"coarse start: {coarse_iterations} iterations on {nx // 2} x {ny // 2}")
@@ -188,7 +164,7 @@ def main():
     contact = Contact(height, dx, dy, args.E_star)
     balancing = None
     if args.preconditioner == "fourier":
-        preconditioner_for = lambda search: (lambda r: search * contact.convolve(contact.inverse, search * r))
+        preconditioner_for = contact.fourier
     else:
         balancing = Balancing(contact, args.block, args.point_loads_beyond_neighbours, args.rebuild_change)
         preconditioner_for = balancing.preconditioner

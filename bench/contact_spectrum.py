@@ -55,18 +55,18 @@ def read_contact_set(path):
 
 
 class Operators:
-    """K (2/(E*|q|), zero mean) and M^-1 (E*|q|/2, the DC at the smallest |q|), E* = 1."""
+    """K (2/(E*|q|), zero mean) and M^-1 (E*|q|/2, the DC at the smallest |q|); E* = 1 unless given."""
 
-    def __init__(self, shape, dx, dy):
+    def __init__(self, shape, dx, dy, e_star=1.0):
         ny, nx = shape
         qy = 2.0 * np.pi * np.fft.fftfreq(ny, dy)[:, None]
         qx = 2.0 * np.pi * np.fft.rfftfreq(nx, dx)[None, :]
         q = np.hypot(qx, qy)
         self.shape = shape
         self.kernel = np.zeros_like(q)
-        self.kernel[q > 0] = 2.0 / q[q > 0]
-        self.inverse = 0.5 * q
-        self.inverse[0, 0] = 0.5 * q[q > 0].min()
+        self.kernel[q > 0] = 2.0 / (e_star * q[q > 0])
+        self.inverse = 0.5 * e_star * q
+        self.inverse[0, 0] = 0.5 * e_star * q[q > 0].min()
 
     def apply(self, symbol, field):
         return np.fft.irfft2(np.fft.rfft2(field) * symbol, s=self.shape)
@@ -76,28 +76,55 @@ def fourier_preconditioner(ops, contact):
     return lambda r: contact * ops.apply(ops.inverse, contact * r)
 
 
+class Blocks:
+    """B x B blocks of the grid: the coarse space is their cells in a search set."""
+
+    def __init__(self, shape, block):
+        ny, nx = shape
+        self.block, self.bx, self.by = block, nx // block, ny // block
+        self.count = self.bx * self.by
+        self.owner = (np.arange(ny) // block)[:, None] * self.bx + (np.arange(nx) // block)[None, :]
+
+    def restrict(self, search, field):
+        """Z^T field: the sum over each block's cells in the search set."""
+        return np.bincount(self.owner.ravel(), weights=(search * field).ravel(), minlength=self.count)
+
+
+def exact_coarse_matrix(blocks, search, restricted_k):
+    """Z^T K_SS Z, one product per block."""
+    coarse = np.zeros((blocks.count, blocks.count))
+    for j in range(blocks.count):
+        coarse[:, j] = blocks.restrict(search, restricted_k((blocks.owner == j) * search))
+    return coarse
+
+
+def coarse_inverse(blocks, search, coarse):
+    """coarse^-1 on the blocks with a cell in the search set, zero elsewhere."""
+    used = blocks.restrict(search, np.ones_like(search)) > 0
+    inverse = np.zeros_like(coarse)
+    inverse[np.ix_(used, used)] = np.linalg.inv(coarse[np.ix_(used, used)])
+    return inverse
+
+
+def balancing(blocks, search, inverse, restricted_k, fourier):
+    """z = Q r + (I - Q K_SS) fourier (I - K_SS Q) r, Q = Z inverse Z^T."""
+    correction = lambda r: search * (inverse @ blocks.restrict(search, r))[blocks.owner]
+
+    def apply(r):
+        y = correction(r)
+        v = fourier(r - restricted_k(y))
+        return y + v - correction(restricted_k(v))
+
+    return apply
+
+
 def balancing_preconditioner(ops, contact, block, restricted_k, fourier):
     ny, nx = contact.shape
     if nx % block or ny % block:
         fail(f"--balancing {block} must divide the grid ({nx} x {ny})")
-    by, bx = ny // block, nx // block
-    owner = (np.arange(ny) // block)[:, None] * bx + (np.arange(nx) // block)[None, :]
-    blocks = by * bx
-    restrict = lambda field: np.bincount(owner.ravel(), weights=(contact * field).ravel(), minlength=blocks)
-    coarse = np.zeros((blocks, blocks))
-    for j in range(blocks):  # one product per block: exact Galerkin
-        coarse[:, j] = restrict(restricted_k((owner == j) * contact))
-    used = restrict(np.ones_like(contact)) > 0
-    coarse_inverse = np.zeros_like(coarse)
-    coarse_inverse[np.ix_(used, used)] = np.linalg.inv(coarse[np.ix_(used, used)])
-    coarse_correction = lambda r: contact * (coarse_inverse @ restrict(r))[owner]
-
-    def apply(r):
-        y = coarse_correction(r)
-        v = fourier(r - restricted_k(y))
-        return y + v - coarse_correction(restricted_k(v))
-
-    return apply
+    blocks = Blocks(contact.shape, block)
+    inverse = coarse_inverse(blocks, contact, exact_coarse_matrix(blocks, contact, restricted_k))
+    return balancing(blocks, contact, inverse, restricted_k, fourier)
 
 
 def lanczos_spectrum(restricted_k, preconditioner, contact, steps):
