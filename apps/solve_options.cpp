@@ -106,6 +106,9 @@ const std::array kOptions{
                "threads for loops and FFTs [all cores]"},
     OptionSpec{"fft-planning", &SolveOptions::fft_planning, Kind::text, kSolver, "MODE",
                "FFTW planning effort: estimate, measure or patient [measure]"},
+    OptionSpec{"deflation-block", &SolveOptions::deflation_block, Kind::integer, kSolver, "B",
+               "coarse-grid correction on B x B blocks of the contact (pk-fourier, pk-multilevel's finest grid; "
+               "periodic 2D grids whose nx and ny B divides, at least 3 blocks per axis) [none]"},
     OptionSpec{"output", &SolveOptions::output, Kind::path, kOutput, "FILE",
                "result file (HDF5), required; replaced if it exists"},
     OptionSpec{"quiet", &SolveOptions::quiet, Kind::flag, kOutput, "",

@@ -53,6 +53,7 @@ struct SolveOptions {
   std::optional<long long> max_iter;
   std::optional<long long> threads;
   std::optional<std::string> fft_planning;
+  std::optional<long long> deflation_block;
   // Output.
   std::optional<std::string> output;
   bool quiet = false;

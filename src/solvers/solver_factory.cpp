@@ -10,6 +10,7 @@
 #include "halfspace/error.hpp"
 #include "halfspace/fft/grid_transform.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
+#include "halfspace/solvers/block_deflation.hpp"
 #include "halfspace/solvers/fourier_preconditioner.hpp"
 #include "halfspace/solvers/lcp_quad.hpp"
 #include "halfspace/solvers/lemke.hpp"
@@ -23,8 +24,11 @@ namespace {
 class SolverWithOperator final : public ContactSolver {
  public:
   SolverWithOperator(std::unique_ptr<InfluenceOperator> op, std::unique_ptr<Preconditioner> preconditioner,
-                     std::unique_ptr<ContactSolver> solver)
-      : op_(std::move(op)), preconditioner_(std::move(preconditioner)), solver_(std::move(solver)) {}
+                     std::unique_ptr<BlockDeflation> deflation, std::unique_ptr<ContactSolver> solver)
+      : op_(std::move(op)),
+        preconditioner_(std::move(preconditioner)),
+        deflation_(std::move(deflation)),
+        solver_(std::move(solver)) {}
 
   std::string_view name() const override { return solver_->name(); }
   SolveResult solve(std::span<const double> initial_gap, const Loading& loading,
@@ -38,11 +42,12 @@ class SolverWithOperator final : public ContactSolver {
  private:
   std::unique_ptr<InfluenceOperator> op_;
   std::unique_ptr<Preconditioner> preconditioner_;
+  std::unique_ptr<BlockDeflation> deflation_;
   std::unique_ptr<ContactSolver> solver_;
 };
 
 std::unique_ptr<ContactSolver> make_polonsky_keer(const Grid& grid, double e_star, const SolverSettings& settings,
-                                                  bool preconditioned, ConjugacyRestart restart) {
+                                                  bool preconditioned, ConjugacyRestart restart, bool deflated) {
   PolonskyKeerOptions options;
   options.tolerance = settings.tolerance;
   options.max_iterations = settings.max_iterations;
@@ -70,8 +75,15 @@ std::unique_ptr<ContactSolver> make_polonsky_keer(const Grid& grid, double e_sta
           grid, e_star, make_grid_transform(grid, settings.fft_planning, op->scratch()));
     }
   }
-  auto solver = std::make_unique<PolonskyKeer>(*op, options, preconditioner.get());
-  return std::make_unique<SolverWithOperator>(std::move(op), std::move(preconditioner), std::move(solver));
+  std::unique_ptr<BlockDeflation> deflation;
+  if (deflated) {
+    BlockDeflationOptions deflation_options;
+    deflation_options.block = settings.deflation_block;
+    deflation = std::make_unique<BlockDeflation>(grid, deflation_options);
+  }
+  auto solver = std::make_unique<PolonskyKeer>(*op, options, preconditioner.get(), deflation.get());
+  return std::make_unique<SolverWithOperator>(std::move(op), std::move(preconditioner), std::move(deflation),
+                                              std::move(solver));
 }
 
 // Fourier-preconditioned Polonsky-Keer with Powell restarts on every level.
@@ -80,7 +92,10 @@ std::unique_ptr<ContactSolver> make_multilevel(const Grid& grid, double e_star, 
     SolverSettings level_settings = settings;
     level_settings.tolerance = tolerance;
     if (!fine) level_settings.progress = {};  // progress reports the fine solve only
-    return make_polonsky_keer(level, e_star, level_settings, true, ConjugacyRestart::powell);
+    // The coarse-grid correction on the finest grid only, where the
+    // contact has the most spots.
+    return make_polonsky_keer(level, e_star, level_settings, true, ConjugacyRestart::powell,
+                              fine && settings.deflation_block > 0);
   };
   return std::make_unique<MultilevelSolver>(grid, settings.tolerance, make_level);
 }
@@ -104,8 +119,16 @@ std::vector<std::string> solver_names() {
 std::unique_ptr<ContactSolver> make_solver(const Grid& grid, double e_star, const SolverSettings& settings) {
   // Plain Polonsky-Keer keeps the paper's restart rule; with the Fourier
   // preconditioner Powell's restart test cuts the iterations (docs/performance.md).
-  if (settings.name == "pk") return make_polonsky_keer(grid, e_star, settings, false, ConjugacyRestart::on_entry);
-  if (settings.name == "pk-fourier") return make_polonsky_keer(grid, e_star, settings, true, ConjugacyRestart::powell);
+  if (settings.deflation_block > 0 && settings.name != "pk-fourier" && settings.name != "pk-multilevel") {
+    throw InputError(fmt::format(
+        "solver '{}' has no coarse-grid correction: deflation needs pk-fourier or pk-multilevel", settings.name));
+  }
+  if (settings.name == "pk") {
+    return make_polonsky_keer(grid, e_star, settings, false, ConjugacyRestart::on_entry, false);
+  }
+  if (settings.name == "pk-fourier") {
+    return make_polonsky_keer(grid, e_star, settings, true, ConjugacyRestart::powell, settings.deflation_block > 0);
+  }
   if (settings.name == "pk-multilevel") return make_multilevel(grid, e_star, settings);
   if (settings.name == "lemke" || settings.name == "lcpquad") return make_dense(grid, e_star, settings);
   throw InputError(

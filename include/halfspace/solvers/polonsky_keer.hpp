@@ -20,6 +20,9 @@
 // the conjugate directions are built from z = M^-1 g restricted to the
 // search set (see SearchSet) instead of g itself, which cuts the iteration
 // count on rough surfaces at the price of one more transform per iteration.
+// A BlockDeflation adds a coarse-grid correction to M^-1 (two more products
+// per iteration) once the contact set has nearly settled, which keeps the
+// iterations from growing with the domain (docs/performance.md).
 #pragma once
 
 #include <functional>
@@ -27,6 +30,7 @@
 #include <string_view>
 
 #include "halfspace/operators/influence_operator.hpp"
+#include "halfspace/solvers/block_deflation.hpp"
 #include "halfspace/solvers/contact_solver.hpp"
 #include "halfspace/solvers/preconditioner.hpp"
 
@@ -71,11 +75,15 @@ class PolonskyKeer final : public ContactSolver {
  public:
   // Keeps a reference to `op` (which must outlive the solver) and allocates
   // the workspace once; solve() then allocates nothing inside its loop.
-  // `preconditioner`, if given, must outlive the solver too.
+  // `preconditioner`, if given, must outlive the solver too, and so must
+  // `deflation`, which needs a preconditioner and the operator's grid.
   explicit PolonskyKeer(InfluenceOperator& op, PolonskyKeerOptions options = {},
-                        Preconditioner* preconditioner = nullptr);
+                        Preconditioner* preconditioner = nullptr, BlockDeflation* deflation = nullptr);
 
-  std::string_view name() const override { return preconditioner_ ? "preconditioned-polonsky-keer" : "polonsky-keer"; }
+  std::string_view name() const override {
+    if (deflation_) return "deflated-polonsky-keer";
+    return preconditioner_ ? "preconditioned-polonsky-keer" : "polonsky-keer";
+  }
 
   SolveResult solve(std::span<const double> initial_gap, const Loading& loading,
                     std::span<const double> initial_pressure = {}) override;
@@ -86,13 +94,25 @@ class PolonskyKeer final : public ContactSolver {
   // The iteration from `pressure`: a warm start if `warm`, else any values
   // (step 0 chooses the start).
   SolveResult run(std::span<const double> initial_gap, const Loading& loading, Eigen::ArrayXd pressure, bool warm);
+  // Step 2 with deflation: direction_image_ = B g on the search set
+  // (in_search(i)), B the balancing preconditioner of block_deflation.hpp
+  // around M^-1; under load control on the set's mean-free fields. Counts
+  // its products in `result`, whose gap and pressure it reads.
+  template <class InSearch>
+  void apply_balancing(bool load_controlled, InSearch&& in_search, SolveResult& result);
 
   InfluenceOperator& op_;
   PolonskyKeerOptions options_;
   Preconditioner* preconditioner_;
+  BlockDeflation* deflation_;
+  bool kernel_known_ = false;  // deflation_ has the kernel (one product, on the first solve)
   // Workspace, one entry per cell.
   Eigen::ArrayXd direction_;        // conjugate direction t
   Eigen::ArrayXd direction_image_;  // K t, and M^-1 g before it is needed
+  // With deflation only: the coarse correction Z y as a field, and K of it
+  // (then K of M^-1's output).
+  Eigen::ArrayXd coarse_field_;
+  Eigen::ArrayXd coarse_image_;
 };
 
 }  // namespace halfspace::solvers

@@ -19,7 +19,10 @@ struct SolverSettings {
   double tolerance = 1e-10;  // the solver's own relative stopping tolerance
   int max_iterations = 10000;
   FftPlanning fft_planning = FftPlanning::estimate;  // FFT-based solvers only
-  std::function<void(int, double)> progress;         // (iteration, residual), may be empty
+  // Block size of the coarse-grid correction (BlockDeflation) of pk-fourier
+  // and of pk-multilevel's finest grid; 0 for none. Periodic 2D grids only.
+  std::size_t deflation_block = 0;
+  std::function<void(int, double)> progress;  // (iteration, residual), may be empty
 };
 
 // The names make_solver accepts, in the order --help lists them.

@@ -1,0 +1,151 @@
+// A coarse-grid correction for preconditioned Polonsky-Keer on periodic 2D
+// grids: deflation by the search-set cells of b x b blocks.
+//
+// On a large rough contact the Fourier preconditioner M^-1 overestimates the
+// response to smooth pressure modulations spread across many small spots, so
+// the condition number on the contact set grows with the domain
+// (docs/performance.md, "Why a growing domain costs more"). The coarse space
+// Z, one column per block holding 1 on the block's cells in the search set S,
+// captures those modulations. With the Galerkin matrix A = Z^T K_SS Z the
+// preconditioner becomes (A-DEF2, Tang, Nabben, Vuik & Erlangga 2009,
+// J. Sci. Comput. 39, 340)
+//
+//   z = v + Z A^-1 Z^T (r - K v),  v = M^-1 r,
+//
+// one more product K v per iteration. A is assembled from the kernel in real
+// space: exactly between each block and its eight neighbours (sums over cell
+// pairs), and as point loads between block centres, n_I n_J k(c_I - c_J),
+// beyond them, which the coarse grid applies by FFT. When the search set
+// changes, the pair sums are updated by the changed cells' sums alone (a
+// stale A costs many iterations: docs/performance.md), or rebuilt when most
+// of the set changed. A is solved by Jacobi-preconditioned CG. The preconditioner is not symmetric
+// while Z^T r != 0 and A is solved inexactly, so the solver uses it with the
+// flexible (Polak-Ribiere) conjugacy.
+#pragma once
+
+#include <complex>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "halfspace/fft/real_fft.hpp"
+#include "halfspace/grid.hpp"
+#include "halfspace/linalg/parallel.hpp"
+
+namespace halfspace::solvers {
+
+struct BlockDeflationOptions {
+  std::size_t block = 32;  // cells per block side; must divide nx and ny
+  // A is brought up to date when more than this share of the search set has
+  // changed since it was last (0: on every change).
+  double update_change = 0.0;
+  double coarse_tolerance = 1e-8;
+  int coarse_max_iterations = 1000;
+
+  // Throws InputError naming the option unless 1 <= block <= 256, 0 <=
+  // update_change, 0 < coarse_tolerance < 1 and coarse_max_iterations >= 1.
+  void validate() const;
+};
+
+// Counters of the coarse work, for reports and benchmarks.
+struct BlockDeflationStats {
+  int rebuilds = 0;  // A assembled from all pair sums
+  int updates = 0;   // A updated by the changed cells
+  long coarse_iterations = 0;      // CG iterations of all coarse solves
+  int unconverged_coarse_solves = 0;  // stopped at coarse_max_iterations
+};
+
+class BlockDeflation {
+ public:
+  // Throws InputError unless the grid is periodic and 2D, and the block
+  // divides nx and ny leaving at least 3 blocks per axis.
+  BlockDeflation(const Grid& grid, BlockDeflationOptions options = {});
+  ~BlockDeflation();
+
+  const Grid& grid() const { return grid_; }
+  std::size_t block() const { return options_.block; }
+
+  // The kernel in real space: `unit_response` = K e_0, the displacement of
+  // every cell under unit pressure on cell 0. Must be called before update().
+  void set_kernel(std::span<const double> unit_response);
+
+  // Records the coarse set, in_set(i) for each cell, and brings A up to
+  // date if the set changed by more than the update share since A was last
+  // (or A was never built): from the changed cells' pair sums, or from all
+  // pairs when more than half of the set changed. Returns whether A changed.
+  template <class InSet>
+  bool update(InSet&& in_set) {
+    const auto [changed, size] = linalg::sums<2>(grid_.size(), [&](std::size_t i) {
+      const std::uint8_t now = in_set(i) ? 1 : 0;
+      const std::uint8_t built = set_[i] >> 1;
+      set_[i] = static_cast<std::uint8_t>((built << 1) | now);
+      return std::array<double, 2>{now != built ? 1.0 : 0.0, static_cast<double>(now)};
+    });
+    if (built_ && (changed == 0.0 || changed <= options_.update_change * built_size_)) return false;
+    refresh(!built_ || changed > 0.5 * size, size);
+    return true;
+  }
+
+  // The balancing form, z = Q r + (I - Q K) M^-1 (I - K Q) r with Q = Z A^-1
+  // Z^T, in two halves around M^-1: pre_correction solves y1 = A^-1 Z^T r
+  // and writes Z y1 into `field` (zero off the set), whose image K Z y1 the
+  // caller subtracts from r before M^-1; post_correction, given K v of the
+  // result v, solves y2 = A^-1 Z^T K v and adds Z (y1 - y2) to z = v.
+  void pre_correction(std::span<const double> r, std::span<double> field, bool fixed_load);
+  void post_correction(std::span<const double> image, std::span<double> z, bool fixed_load);
+
+  const BlockDeflationStats& stats() const { return stats_; }
+
+  // The coarse matrix applied to y (one entry per block, row-major blocks):
+  // out = A y. Exposed for tests.
+  void apply_coarse(std::span<const double> y, std::span<double> out);
+  std::size_t coarse_size() const { return blocks_x_ * blocks_y_; }
+
+ private:
+  void refresh(bool full, double size);
+  // Lists the cells of the current set and the changed cells per block;
+  // the current set becomes the built one.
+  void list_cells();
+  // The exact sums over cell pairs of block I and neighbour (dy, dx):
+  // sum_{a in first, c in second} k(x_a - x_c).
+  struct WeightedCell {
+    std::uint32_t offset;  // local (row, col) as row * (4b - 1) + col, the offset in near_kernel_
+    float weight;          // 1, or -1 for a cell that left the set (in the changed lists)
+  };
+  double pair_sum(const WeightedCell* first, const WeightedCell* first_end, const WeightedCell* second,
+                  const WeightedCell* second_end, int dy, int dx) const;
+  void solve_coarse(bool fixed_load);
+  // rhs_ = Z^T (field - minus) over the current set (minus may be empty).
+  void restrict_to_blocks(std::span<const double> field, std::span<const double> minus);
+  // z = Z y, or z += Z y, over the current set.
+  void prolong(const std::vector<double>& y, std::span<double> z, bool add) const;
+
+  Grid grid_;
+  BlockDeflationOptions options_;
+  std::size_t blocks_x_;
+  std::size_t blocks_y_;
+  bool built_ = false;
+  double built_size_ = 0.0;
+  // Per cell: bit 0 in the current search set, bit 1 in the set A was built on.
+  std::vector<std::uint8_t> set_;
+  // Kernel near field k(dy, dx) for |dx|, |dy| < 2b, row-major over dy.
+  std::vector<double> near_kernel_;
+  // Per block: its cells in the set, n_I, and the 3 x 3 exact block sums
+  // (neighbour (dy, dx) at (dy + 1) * 3 + dx + 1).
+  std::vector<double> counts_;
+  std::vector<double> near_;
+  // Per block, the cells of the set A was built on (current, previous) and
+  // the cells that changed between the two.
+  std::vector<std::size_t> cell_start_, previous_start_, changed_start_;
+  std::vector<WeightedCell> cells_, previous_cells_, changed_cells_;
+  // Far field: point loads between block centres, as a coarse-grid symbol.
+  std::unique_ptr<RealFft> coarse_fft_;
+  std::vector<std::complex<double>> far_symbol_;
+  // Coarse CG vectors.
+  std::vector<double> rhs_, y_, first_, inverse_diagonal_, residual_, direction_, image_, scaled_;
+  BlockDeflationStats stats_;
+};
+
+}  // namespace halfspace::solvers

@@ -1,0 +1,363 @@
+#include "halfspace/solvers/block_deflation.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+#include "halfspace/error.hpp"
+
+namespace halfspace::solvers {
+namespace {
+
+// Blocks per axis below which the 3 x 3 neighbourhood would meet itself
+// across the period.
+constexpr std::size_t kMinBlocksPerAxis = 3;
+// Larger blocks leave too few coarse unknowns to help, and their pair sums
+// grow as b^4.
+constexpr std::size_t kMaxBlock = 256;
+
+// Neighbour index of offset (dy, dx) in {-1, 0, 1}^2.
+constexpr std::size_t neighbour(int dy, int dx) {
+  return static_cast<std::size_t>((dy + 1) * 3 + dx + 1);
+}
+
+std::size_t wrapped(std::size_t index, int offset, std::size_t count) {
+  return (index + count + static_cast<std::size_t>(offset + static_cast<int>(count))) % count;
+}
+
+double dot(const std::vector<double>& a, const std::vector<double>& b) {
+  double total = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) total += a[i] * b[i];
+  return total;
+}
+
+
+}  // namespace
+
+void BlockDeflationOptions::validate() const {
+  if (block < 1 || block > kMaxBlock) {
+    throw InputError(fmt::format("deflation block = {} is invalid: allowed range is 1 to {} cells", block, kMaxBlock));
+  }
+  if (!(update_change >= 0.0)) {
+    throw InputError(fmt::format("deflation update change = {} is invalid: must be at least 0", update_change));
+  }
+  if (!(coarse_tolerance > 0.0 && coarse_tolerance < 1.0)) {
+    throw InputError(
+        fmt::format("deflation coarse tolerance = {} is invalid: allowed range is (0, 1)", coarse_tolerance));
+  }
+  if (coarse_max_iterations < 1) {
+    throw InputError(
+        fmt::format("deflation coarse iterations = {} is invalid: must be at least 1", coarse_max_iterations));
+  }
+}
+
+BlockDeflation::BlockDeflation(const Grid& grid, BlockDeflationOptions options) : grid_(grid), options_(options) {
+  options_.validate();
+  if (grid_.dimension() != 2 || !grid_.periodic()) {
+    throw InputError(fmt::format("block deflation needs a periodic 2D grid, not a {} {}D grid",
+                                 to_string(grid_.boundary()), grid_.dimension()));
+  }
+  const std::size_t b = options_.block;
+  if (grid_.nx() % b != 0 || grid_.ny() % b != 0 || grid_.nx() < kMinBlocksPerAxis * b ||
+      grid_.ny() < kMinBlocksPerAxis * b) {
+    throw InputError(fmt::format(
+        "deflation block = {} is invalid for the {} grid: it must divide nx and ny and leave at least {} blocks "
+        "per axis",
+        b, grid_.shape_string(), kMinBlocksPerAxis));
+  }
+  blocks_x_ = grid_.nx() / b;
+  blocks_y_ = grid_.ny() / b;
+  const std::size_t m = coarse_size();
+  set_.assign(grid_.size(), 0);
+  counts_.assign(m, 0.0);
+  near_.assign(9 * m, 0.0);
+  cell_start_.assign(m + 1, 0);
+  previous_start_.assign(m + 1, 0);
+  changed_start_.assign(m + 1, 0);
+  coarse_fft_ = std::make_unique<RealFft>(blocks_y_, blocks_x_, FftPlanning::estimate);
+  for (auto* v : {&rhs_, &y_, &first_, &inverse_diagonal_, &residual_, &direction_, &image_, &scaled_}) v->assign(m, 0.0);
+}
+
+BlockDeflation::~BlockDeflation() = default;
+
+void BlockDeflation::set_kernel(std::span<const double> unit_response) {
+  assert(unit_response.size() == grid_.size());
+  const std::size_t nx = grid_.nx();
+  const std::size_t ny = grid_.ny();
+  const auto b = static_cast<int>(options_.block);
+  const int reach = 2 * b - 1;
+  const auto side = static_cast<std::size_t>(2 * reach + 1);
+  near_kernel_.assign(side * side, 0.0);
+  for (int dy = -reach; dy <= reach; ++dy) {
+    for (int dx = -reach; dx <= reach; ++dx) {
+      near_kernel_[static_cast<std::size_t>(dy + reach) * side + static_cast<std::size_t>(dx + reach)] =
+          unit_response[wrapped(0, dy, ny) * nx + wrapped(0, dx, nx)];
+    }
+  }
+  // Point loads between block centres beyond the neighbours; the coarse
+  // transform is unnormalised, so 1/m goes into the symbol.
+  std::span<double> far = coarse_fft_->input();
+  for (std::size_t jy = 0; jy < blocks_y_; ++jy) {
+    for (std::size_t jx = 0; jx < blocks_x_; ++jx) {
+      const bool near_y = jy <= 1 || jy + 1 == blocks_y_;
+      const bool near_x = jx <= 1 || jx + 1 == blocks_x_;
+      far[jy * blocks_x_ + jx] = near_y && near_x ? 0.0 : unit_response[(jy * options_.block) * nx + jx * options_.block];
+    }
+  }
+  coarse_fft_->forward();
+  const std::span<const std::complex<double>> spectrum = coarse_fft_->spectrum();
+  const double scale = 1.0 / static_cast<double>(coarse_size());
+  far_symbol_.resize(spectrum.size());
+  for (std::size_t k = 0; k < spectrum.size(); ++k) far_symbol_[k] = spectrum[k] * scale;
+}
+
+void BlockDeflation::list_cells() {
+  const std::size_t b = options_.block;
+  const std::size_t nx = grid_.nx();
+  const std::size_t m = coarse_size();
+  const auto side = static_cast<std::uint32_t>(4 * b - 1);
+  std::swap(cells_, previous_cells_);
+  std::swap(cell_start_, previous_start_);
+  cell_start_.resize(m + 1);
+  changed_start_.resize(m + 1);
+  // Count, then fill: each block's cells in row-major order.
+  linalg::for_each_row(blocks_y_, b * nx, [&](std::size_t by) {
+    for (std::size_t bx = 0; bx < blocks_x_; ++bx) {
+      std::size_t in_set = 0;
+      std::size_t changed = 0;
+      for (std::size_t r = 0; r < b; ++r) {
+        const std::uint8_t* cell = set_.data() + (by * b + r) * nx + bx * b;
+        for (std::size_t c = 0; c < b; ++c) {
+          in_set += cell[c] & 1U;
+          changed += (cell[c] & 1U) != (cell[c] >> 1) ? 1 : 0;
+        }
+      }
+      cell_start_[by * blocks_x_ + bx + 1] = in_set;
+      changed_start_[by * blocks_x_ + bx + 1] = changed;
+    }
+  });
+  cell_start_[0] = 0;
+  changed_start_[0] = 0;
+  for (std::size_t k = 0; k < m; ++k) {
+    cell_start_[k + 1] += cell_start_[k];
+    changed_start_[k + 1] += changed_start_[k];
+  }
+  cells_.resize(cell_start_[m]);
+  changed_cells_.resize(changed_start_[m]);
+  linalg::for_each_row(blocks_y_, b * nx, [&](std::size_t by) {
+    for (std::size_t bx = 0; bx < blocks_x_; ++bx) {
+      const std::size_t block = by * blocks_x_ + bx;
+      std::size_t next = cell_start_[block];
+      std::size_t next_changed = changed_start_[block];
+      for (std::size_t r = 0; r < b; ++r) {
+        const std::size_t begin = (by * b + r) * nx + bx * b;
+        std::uint8_t* cell = set_.data() + begin;
+        for (std::size_t c = 0; c < b; ++c) {
+          const std::uint8_t now = cell[c] & 1U;
+          const auto offset = static_cast<std::uint32_t>(r * side + c);
+          if (now) cells_[next++] = WeightedCell{offset, 1.0F};
+          if (now != (cell[c] >> 1)) changed_cells_[next_changed++] = WeightedCell{offset, now ? 1.0F : -1.0F};
+          cell[c] = static_cast<std::uint8_t>((now << 1) | now);
+        }
+      }
+      counts_[block] = static_cast<double>(cell_start_[block + 1] - cell_start_[block]);
+    }
+  });
+}
+
+double BlockDeflation::pair_sum(const WeightedCell* first, const WeightedCell* first_end, const WeightedCell* second,
+                                const WeightedCell* second_end, int dy, int dx) const {
+  // x_a - x_c = local_a - local_c - b (dy, dx): from the table entry of
+  // local_a - b (dy, dx), step back by each local_c.
+  const auto b = static_cast<std::ptrdiff_t>(options_.block);
+  const std::ptrdiff_t reach = 2 * b - 1;
+  const std::ptrdiff_t side = 2 * reach + 1;
+  const double* centre = near_kernel_.data() + (reach - dy * b) * side + (reach - dx * b);
+  double total = 0.0;
+  for (const WeightedCell* a = first; a != first_end; ++a) {
+    const double* origin = centre + a->offset;
+    double row = 0.0;
+    for (const WeightedCell* c = second; c != second_end; ++c) {
+      row += static_cast<double>(c->weight) * origin[-static_cast<std::ptrdiff_t>(c->offset)];
+    }
+    total += static_cast<double>(a->weight) * row;
+  }
+  return total;
+}
+
+// Full: A_IJ = sum over S_I x S_J of k. Update, with chi' = chi + delta the
+// new set's indicator: A'_IJ - A_IJ = sum delta_a chi'_c k + sum chi_a
+// delta_c k, i.e. the changed cells of I (with the sign of the change)
+// against J's new cells and I's old cells against J's changed cells.
+void BlockDeflation::refresh(bool full, double size) {
+  if (near_kernel_.empty()) throw std::logic_error("BlockDeflation::update before set_kernel");
+  full = full || !built_;
+  list_cells();
+  const WeightedCell* cells = cells_.data();
+  const WeightedCell* previous = previous_cells_.data();
+  const WeightedCell* changes = changed_cells_.data();
+  const auto blocks = static_cast<std::ptrdiff_t>(coarse_size());
+#pragma omp parallel for schedule(dynamic, 16)
+  for (std::ptrdiff_t index = 0; index < blocks; ++index) {
+    const auto I = static_cast<std::size_t>(index);
+    const std::size_t iy = I / blocks_x_;
+    const std::size_t ix = I % blocks_x_;
+    for (int dy = -1; dy <= 1; ++dy) {
+      for (int dx = -1; dx <= 1; ++dx) {
+        const std::size_t J = wrapped(iy, dy, blocks_y_) * blocks_x_ + wrapped(ix, dx, blocks_x_);
+        double& entry = near_[I * 9 + neighbour(dy, dx)];
+        const WeightedCell* j_begin = cells + cell_start_[J];
+        const WeightedCell* j_end = cells + cell_start_[J + 1];
+        if (full) {
+          entry = pair_sum(cells + cell_start_[I], cells + cell_start_[I + 1], j_begin, j_end, dy, dx);
+          continue;
+        }
+        const double delta =
+            pair_sum(changes + changed_start_[I], changes + changed_start_[I + 1], j_begin, j_end, dy, dx) +
+            pair_sum(previous + previous_start_[I], previous + previous_start_[I + 1], changes + changed_start_[J],
+                     changes + changed_start_[J + 1], dy, dx);
+        // An emptied block's entries are exactly zero, not the rounding
+        // left by subtracting its sums.
+        entry = counts_[I] > 0.0 && counts_[J] > 0.0 ? entry + delta : 0.0;
+      }
+    }
+  }
+  built_ = true;
+  built_size_ = size;
+  ++(full ? stats_.rebuilds : stats_.updates);
+}
+
+void BlockDeflation::apply_coarse(std::span<const double> y, std::span<double> out) {
+  const std::size_t m = coarse_size();
+  std::span<double> far = coarse_fft_->input();
+  for (std::size_t k = 0; k < m; ++k) far[k] = counts_[k] * y[k];
+  coarse_fft_->forward();
+  std::span<std::complex<double>> spectrum = coarse_fft_->spectrum();
+  for (std::size_t k = 0; k < spectrum.size(); ++k) spectrum[k] *= far_symbol_[k];
+  coarse_fft_->backward();
+  const std::span<const double> response = coarse_fft_->output();
+  for (std::size_t iy = 0; iy < blocks_y_; ++iy) {
+    for (std::size_t ix = 0; ix < blocks_x_; ++ix) {
+      const std::size_t I = iy * blocks_x_ + ix;
+      double total = counts_[I] * response[I];
+      for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+          const std::size_t J = wrapped(iy, dy, blocks_y_) * blocks_x_ + wrapped(ix, dx, blocks_x_);
+          total += near_[I * 9 + neighbour(dy, dx)] * y[J];
+        }
+      }
+      out[I] = total;
+    }
+  }
+}
+
+// Jacobi-preconditioned CG on A y = rhs_ over the blocks with cells (the
+// others keep y = 0: their rows and columns of A vanish).
+// Jacobi-preconditioned CG on A y = rhs_ over the blocks with cells (the
+// others keep y = 0: their rows and columns of A vanish). With a fixed load,
+// projected CG on n^T y = 0 (n the blocks' cell counts): the coarse
+// correction moves no load, and a multiplier absorbs the rhs along n, as
+// the approach does on the fine grid. Without the constraint A's softest
+// mode, a uniform pressure on the set (on a periodic grid K has no mean
+// response), would take any rhs along it and amplify it.
+void BlockDeflation::solve_coarse(bool fixed_load) {
+  const std::size_t m = coarse_size();
+  for (std::size_t k = 0; k < m; ++k) {
+    const double diagonal = near_[k * 9 + neighbour(0, 0)];
+    inverse_diagonal_[k] = counts_[k] > 0.0 && diagonal > 0.0 ? 1.0 / diagonal : 0.0;
+  }
+  double counts_norm = 0.0;  // n^T D^-1 n
+  if (fixed_load) {
+    for (std::size_t k = 0; k < m; ++k) counts_norm += counts_[k] * inverse_diagonal_[k] * counts_[k];
+  }
+  // out = D^-1 in, projected onto n^T out = 0 under a fixed load.
+  auto precondition = [&](const std::vector<double>& in, std::vector<double>& out) {
+    for (std::size_t k = 0; k < m; ++k) out[k] = inverse_diagonal_[k] * in[k];
+    if (counts_norm > 0.0) {
+      const double multiplier = dot(counts_, out) / counts_norm;
+      for (std::size_t k = 0; k < m; ++k) out[k] -= multiplier * inverse_diagonal_[k] * counts_[k];
+    }
+  };
+  std::fill(y_.begin(), y_.end(), 0.0);
+  for (std::size_t k = 0; k < m; ++k) rhs_[k] = counts_[k] > 0.0 ? rhs_[k] : 0.0;
+  residual_ = rhs_;
+  precondition(residual_, direction_);
+  double rz = dot(residual_, direction_);
+  // The preconditioned residual norm r^T z, which ignores the part along n.
+  const double target = options_.coarse_tolerance * options_.coarse_tolerance * rz;
+  for (int iteration = 0;; ++iteration) {
+    if (rz <= target) return;
+    if (iteration == options_.coarse_max_iterations) break;
+    apply_coarse(direction_, image_);
+    const double curvature = dot(direction_, image_);
+    if (!(curvature > 0.0)) break;
+    const double alpha = rz / curvature;
+    for (std::size_t k = 0; k < m; ++k) {
+      y_[k] += alpha * direction_[k];
+      residual_[k] -= alpha * image_[k];
+    }
+    ++stats_.coarse_iterations;
+    precondition(residual_, scaled_);
+    const double rz_next = dot(residual_, scaled_);
+    const double beta = rz_next / rz;
+    rz = rz_next;
+    for (std::size_t k = 0; k < m; ++k) direction_[k] = scaled_[k] + beta * direction_[k];
+  }
+  ++stats_.unconverged_coarse_solves;
+}
+
+void BlockDeflation::restrict_to_blocks(std::span<const double> field, std::span<const double> minus) {
+  const std::size_t b = options_.block;
+  const std::size_t nx = grid_.nx();
+  linalg::for_each_row(blocks_y_, b * nx, [&](std::size_t by) {
+    for (std::size_t bx = 0; bx < blocks_x_; ++bx) {
+      double total = 0.0;
+      for (std::size_t row = by * b; row < (by + 1) * b; ++row) {
+        const std::size_t begin = row * nx + bx * b;
+        if (minus.empty()) {
+          for (std::size_t i = begin; i < begin + b; ++i) total += (set_[i] & 1U) ? field[i] : 0.0;
+        } else {
+          for (std::size_t i = begin; i < begin + b; ++i) {
+            total += (set_[i] & 1U) ? field[i] - minus[i] : 0.0;
+          }
+        }
+      }
+      rhs_[by * blocks_x_ + bx] = total;
+    }
+  });
+}
+
+void BlockDeflation::prolong(const std::vector<double>& y, std::span<double> z, bool add) const {
+  const std::size_t b = options_.block;
+  const std::size_t nx = grid_.nx();
+  linalg::for_each_row(grid_.ny(), nx, [&](std::size_t row) {
+    const std::size_t by = row / b;
+    for (std::size_t bx = 0; bx < blocks_x_; ++bx) {
+      const double value = y[by * blocks_x_ + bx];
+      const std::size_t begin = row * nx + bx * b;
+      if (add) {
+        for (std::size_t i = begin; i < begin + b; ++i) z[i] += (set_[i] & 1U) ? value : 0.0;
+      } else {
+        for (std::size_t i = begin; i < begin + b; ++i) z[i] = (set_[i] & 1U) ? value : 0.0;
+      }
+    }
+  });
+}
+
+void BlockDeflation::pre_correction(std::span<const double> g, std::span<double> field, bool fixed_load) {
+  restrict_to_blocks(g, {});
+  solve_coarse(fixed_load);
+  first_ = y_;
+  prolong(first_, field, false);
+}
+
+void BlockDeflation::post_correction(std::span<const double> image, std::span<double> z, bool fixed_load) {
+  restrict_to_blocks(image, {});
+  solve_coarse(fixed_load);
+  for (std::size_t k = 0; k < coarse_size(); ++k) y_[k] = first_[k] - y_[k];
+  prolong(y_, z, true);
+}
+
+}  // namespace halfspace::solvers

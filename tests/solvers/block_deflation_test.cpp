@@ -1,0 +1,234 @@
+// Block deflation: its coarse matrix against Z^T K Z assembled from FFT
+// products, exact where every block pair is a neighbour pair and close
+// (point loads beyond the neighbours) on a larger grid; the correction it
+// adds; and the input it refuses.
+#include "halfspace/solvers/block_deflation.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "halfspace/error.hpp"
+#include "halfspace/operators/fft_influence_operator.hpp"
+
+namespace halfspace::solvers {
+namespace {
+
+constexpr double kEStar = 1e9;  // Pa
+
+// A random search set covering about `share` of the cells.
+std::vector<std::uint8_t> random_set(std::size_t n, double share, unsigned seed) {
+  std::mt19937 generator(seed);
+  std::bernoulli_distribution in(share);
+  std::vector<std::uint8_t> set(n);
+  for (auto& s : set) s = in(generator) ? 1 : 0;
+  return set;
+}
+
+struct Fixture {
+  Grid grid;
+  std::size_t block;
+  FftInfluenceOperator op;
+  BlockDeflation deflation;
+  std::vector<std::uint8_t> set;
+
+  Fixture(std::size_t nx, std::size_t ny, std::size_t b, double share)
+      : grid(Grid::plane(nx, ny, 1e-6, 1.5e-6, Boundary::periodic)),
+        block(b),
+        op(grid, kEStar),
+        deflation(grid, BlockDeflationOptions{b}),
+        set(random_set(grid.size(), share, 7)) {
+    std::vector<double> unit(grid.size(), 0.0);
+    std::vector<double> response(grid.size());
+    unit[0] = 1.0;
+    op.apply(unit, response);
+    deflation.set_kernel(response);
+    EXPECT_TRUE(deflation.update([&](std::size_t i) { return set[i] != 0; }));
+  }
+
+  std::size_t owner(std::size_t i) const {
+    const std::size_t row = i / grid.nx();
+    const std::size_t col = i % grid.nx();
+    return (row / block) * (grid.nx() / block) + col / block;
+  }
+
+  // Column J of Z^T K Z by one product of Z e_J.
+  std::vector<double> galerkin_column(std::size_t J) {
+    std::vector<double> field(grid.size(), 0.0);
+    std::vector<double> image(grid.size());
+    for (std::size_t i = 0; i < grid.size(); ++i) field[i] = (set[i] && owner(i) == J) ? 1.0 : 0.0;
+    op.apply(field, image);
+    std::vector<double> column(deflation.coarse_size(), 0.0);
+    for (std::size_t i = 0; i < grid.size(); ++i) {
+      if (set[i]) column[owner(i)] += image[i];
+    }
+    return column;
+  }
+
+  std::vector<double> coarse_column(std::size_t J) {
+    std::vector<double> unit(deflation.coarse_size(), 0.0);
+    std::vector<double> column(deflation.coarse_size());
+    unit[J] = 1.0;
+    deflation.apply_coarse(unit, column);
+    return column;
+  }
+};
+
+double max_abs(const std::vector<double>& v) {
+  double m = 0.0;
+  for (double x : v) m = std::max(m, std::abs(x));
+  return m;
+}
+
+// 3 x 3 blocks: every pair is a neighbour pair (across the period), so A is
+// the exact Galerkin matrix up to rounding.
+TEST(BlockDeflationTest, CoarseMatrixIsExactWhenAllBlocksAreNeighbours) {
+  Fixture f(24, 24, 8, 0.3);
+  for (std::size_t J = 0; J < f.deflation.coarse_size(); ++J) {
+    const std::vector<double> exact = f.galerkin_column(J);
+    const std::vector<double> built = f.coarse_column(J);
+    const double scale = max_abs(exact);
+    for (std::size_t I = 0; I < exact.size(); ++I) {
+      EXPECT_NEAR(built[I], exact[I], 1e-10 * scale) << "block " << I << ", column " << J;
+    }
+  }
+}
+
+// 8 x 6 blocks: the neighbours exact, the others point loads between block
+// centres, which for 8-cell blocks two or more blocks apart are within a few
+// percent of the diagonal's scale.
+TEST(BlockDeflationTest, CoarseMatrixMatchesGalerkinNearAndApproximatesItFar) {
+  Fixture f(64, 48, 8, 0.3);
+  const std::size_t bx = 8;
+  for (std::size_t J : {std::size_t{0}, std::size_t{13}, std::size_t{47}}) {
+    const std::vector<double> exact = f.galerkin_column(J);
+    const std::vector<double> built = f.coarse_column(J);
+    const double diagonal = exact[J];
+    for (std::size_t I = 0; I < exact.size(); ++I) {
+      const auto dy = static_cast<long>(I / bx) - static_cast<long>(J / bx);
+      const auto dx = static_cast<long>(I % bx) - static_cast<long>(J % bx);
+      const bool near_y = std::labs(dy) <= 1 || std::labs(dy) == 5;
+      const bool near_x = std::labs(dx) <= 1 || std::labs(dx) == 7;
+      const double tolerance = near_x && near_y ? 1e-10 : 0.03;
+      EXPECT_NEAR(built[I], exact[I], tolerance * diagonal) << "block " << I << ", column " << J;
+    }
+  }
+}
+
+// Random fields g on the grid.
+std::vector<double> random_values(std::size_t n, unsigned seed) {
+  std::mt19937 generator(seed);
+  std::uniform_real_distribution<double> value(-1.0, 1.0);
+  std::vector<double> values(n);
+  for (double& v : values) v = value(generator);
+  return values;
+}
+
+// y read back from a prolonged field Z y, and Z^T g, by block.
+struct Coarse {
+  std::vector<double> y;
+  std::vector<double> rhs;
+  std::vector<double> counts;
+};
+
+Coarse read_back(Fixture& f, const std::vector<double>& field, const std::vector<double>& g) {
+  const std::size_t m = f.deflation.coarse_size();
+  Coarse c{std::vector<double>(m, 0.0), std::vector<double>(m, 0.0), std::vector<double>(m, 0.0)};
+  for (std::size_t i = 0; i < f.grid.size(); ++i) {
+    if (f.set[i]) {
+      c.y[f.owner(i)] = field[i];
+      c.rhs[f.owner(i)] += g[i];
+      c.counts[f.owner(i)] += 1.0;
+    } else {
+      EXPECT_EQ(field[i], 0.0) << "cell " << i << " is outside the set";
+    }
+  }
+  return c;
+}
+
+// pre_correction solves A y = Z^T g and writes Z y: y on the set's cells of
+// each block, zero elsewhere.
+TEST(BlockDeflationTest, PreCorrectionSolvesTheCoarseSystemOnTheSet) {
+  Fixture f(48, 48, 8, 0.4);
+  const std::vector<double> g = random_values(f.grid.size(), 3);
+  std::vector<double> field(f.grid.size(), 0.5);
+  f.deflation.pre_correction(g, field, false);
+  const Coarse c = read_back(f, field, g);
+  std::vector<double> image(c.y.size());
+  f.deflation.apply_coarse(c.y, image);
+  for (std::size_t I = 0; I < c.y.size(); ++I) EXPECT_NEAR(image[I], c.rhs[I], 1e-7 * max_abs(c.rhs)) << "block " << I;
+  EXPECT_EQ(f.deflation.stats().unconverged_coarse_solves, 0);
+}
+
+// Under a fixed load the correction moves no load (n^T y = 0) and solves A y
+// = Z^T g up to a multiple of n, the coarse multiplier.
+TEST(BlockDeflationTest, FixedLoadCorrectionMovesNoLoad) {
+  Fixture f(48, 48, 8, 0.4);
+  const std::vector<double> g = random_values(f.grid.size(), 5);
+  std::vector<double> field(f.grid.size());
+  f.deflation.pre_correction(g, field, true);
+  const Coarse c = read_back(f, field, g);
+  double load = 0.0;
+  double scale = 0.0;
+  for (std::size_t I = 0; I < c.y.size(); ++I) {
+    load += c.counts[I] * c.y[I];
+    scale += c.counts[I] * std::abs(c.y[I]);
+  }
+  EXPECT_LE(std::abs(load), 1e-10 * scale);
+  std::vector<double> image(c.y.size());
+  f.deflation.apply_coarse(c.y, image);
+  // The multiplier: the least-squares lambda of rhs - A y = lambda n.
+  double along = 0.0;
+  double norm = 0.0;
+  for (std::size_t I = 0; I < c.y.size(); ++I) {
+    along += c.counts[I] * (c.rhs[I] - image[I]);
+    norm += c.counts[I] * c.counts[I];
+  }
+  const double lambda = along / norm;
+  for (std::size_t I = 0; I < c.y.size(); ++I) {
+    EXPECT_NEAR(image[I] + lambda * c.counts[I], c.rhs[I], 1e-6 * max_abs(c.rhs)) << "block " << I;
+  }
+}
+
+// Cells leaving and entering: A updated by the changed cells equals the
+// Galerkin matrix of the new set; a large change rebuilds it; no change
+// leaves it.
+TEST(BlockDeflationTest, UpdatesByTheChangedCells) {
+  Fixture f(24, 24, 8, 0.4);
+  std::mt19937 generator(11);
+  std::bernoulli_distribution flip(0.1);
+  for (auto& s : f.set) {
+    if (flip(generator)) s = s ? 0 : 1;
+  }
+  EXPECT_TRUE(f.deflation.update([&](std::size_t i) { return f.set[i] != 0; }));
+  EXPECT_EQ(f.deflation.stats().rebuilds, 1);
+  EXPECT_EQ(f.deflation.stats().updates, 1);
+  for (std::size_t J = 0; J < f.deflation.coarse_size(); ++J) {
+    const std::vector<double> exact = f.galerkin_column(J);
+    const std::vector<double> built = f.coarse_column(J);
+    for (std::size_t I = 0; I < exact.size(); ++I) {
+      EXPECT_NEAR(built[I], exact[I], 1e-10 * max_abs(exact)) << "block " << I << ", column " << J;
+    }
+  }
+  EXPECT_FALSE(f.deflation.update([&](std::size_t i) { return f.set[i] != 0; }));
+  for (auto& s : f.set) s = s ? 0 : 1;
+  EXPECT_TRUE(f.deflation.update([&](std::size_t i) { return f.set[i] != 0; }));
+  EXPECT_EQ(f.deflation.stats().rebuilds, 2);
+  const std::vector<double> exact = f.galerkin_column(4);
+  const std::vector<double> built = f.coarse_column(4);
+  for (std::size_t I = 0; I < exact.size(); ++I) EXPECT_NEAR(built[I], exact[I], 1e-10 * max_abs(exact));
+}
+
+TEST(BlockDeflationTest, RefusesGridsItCannotCover) {
+  EXPECT_THROW(BlockDeflation(Grid::plane(64, 64, 1e-6, 1e-6, Boundary::free), {8}), InputError);
+  EXPECT_THROW(BlockDeflation(Grid::line(64, 1e-6, Boundary::periodic), {8}), InputError);
+  EXPECT_THROW(BlockDeflation(Grid::plane(60, 64, 1e-6, 1e-6, Boundary::periodic), {8}), InputError);
+  EXPECT_THROW(BlockDeflation(Grid::plane(16, 64, 1e-6, 1e-6, Boundary::periodic), {8}), InputError);
+  EXPECT_THROW(BlockDeflation(Grid::plane(64, 64, 1e-6, 1e-6, Boundary::periodic), {0}), InputError);
+}
+
+}  // namespace
+}  // namespace halfspace::solvers

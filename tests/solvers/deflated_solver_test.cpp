@@ -1,0 +1,88 @@
+// Polonsky-Keer with the block-deflation coarse correction: the same
+// solutions as without it on rough periodic contacts, under load and
+// displacement control, from coarse-grid and cold starts, in no more
+// iterations; and the solvers and grids it refuses.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <string>
+
+#include "halfspace/error.hpp"
+#include "halfspace/geometry/builtin_surface.hpp"
+#include "halfspace/solvers/solver_factory.hpp"
+#include "halfspace/surface/self_affine.hpp"
+#include "support/contact_checks.hpp"
+
+namespace halfspace::solvers {
+namespace {
+
+using testing::expect_contact_conditions;
+
+constexpr double kEStar = 1.0;
+// Two solutions converged to residual 1e-12 differ by rounding-level amounts
+// relative to the largest pressure.
+constexpr double kSameSolution = 1e-8;
+
+Eigen::ArrayXd rough_gap(const Grid& grid, std::uint64_t seed) {
+  surface::SelfAffineSpec spec;
+  spec.hurst = 0.8;
+  spec.short_cutoff = 4.0 * grid.dx();
+  spec.rms_slope = 0.1;
+  spec.seed = seed;
+  return geometry::initial_gap_from_heights(surface::make_self_affine_surface(grid, spec));
+}
+
+SolverSettings settings(const std::string& name, std::size_t block) {
+  SolverSettings s;
+  s.name = name;
+  s.tolerance = 1e-12;
+  s.deflation_block = block;
+  return s;
+}
+
+struct Case {
+  std::string solver;
+  Loading loading;
+};
+
+TEST(DeflatedSolverTest, MatchesTheUndeflatedSolutionInNoMoreIterations) {
+  const Grid grid = Grid::plane(256, 256, 1.0, 1.0, Boundary::periodic);
+  const Eigen::ArrayXd gap = rough_gap(grid, 3);
+  // About 8 % contact; the approach of the same load from a first solve.
+  const Loading load = Loading::mean_pressure(0.004);
+  const SolveResult loaded = make_solver(grid, kEStar, settings("pk-fourier", 0))->solve({gap.data(), grid.size()}, load);
+  ASSERT_TRUE(loaded.converged()) << loaded.message;
+  const Loading approach = Loading::approach(loaded.approach);
+  for (const Case& c : {Case{"pk-multilevel", load}, Case{"pk-multilevel", approach}, Case{"pk-fourier", load}}) {
+    const SolveResult plain =
+        make_solver(grid, kEStar, settings(c.solver, 0))->solve({gap.data(), grid.size()}, c.loading);
+    const SolveResult deflated =
+        make_solver(grid, kEStar, settings(c.solver, 32))->solve({gap.data(), grid.size()}, c.loading);
+    ASSERT_TRUE(plain.converged()) << plain.message;
+    ASSERT_TRUE(deflated.converged()) << c.solver << ": " << deflated.message;
+    expect_contact_conditions(deflated, 1e-9 * gap.maxCoeff());
+    const double difference = (deflated.pressure - plain.pressure).abs().maxCoeff() / plain.max_pressure;
+    std::printf("%s, %s control: %d iterations (%d K, %d M^-1) deflated against %d (%d K, %d M^-1), max |dp| %.1e\n",
+                c.solver.c_str(), c.loading.load_controlled() ? "load" : "displacement", deflated.iterations,
+                deflated.operator_applications, deflated.preconditioner_applications, plain.iterations,
+                plain.operator_applications, plain.preconditioner_applications, difference);
+    EXPECT_LE(difference, kSameSolution) << c.solver;
+    EXPECT_LE(deflated.iterations, plain.iterations) << c.solver;
+  }
+}
+
+TEST(DeflatedSolverTest, RefusesSolversAndGridsWithoutIt) {
+  EXPECT_THROW(make_solver(Grid::plane(128, 128, 1.0, 1.0, Boundary::periodic), kEStar, settings("pk", 32)),
+               InputError);
+  EXPECT_THROW(make_solver(Grid::plane(128, 128, 1.0, 1.0, Boundary::periodic), kEStar, settings("lemke", 32)),
+               InputError);
+  EXPECT_THROW(make_solver(Grid::plane(128, 128, 1.0, 1.0, Boundary::free), kEStar, settings("pk-fourier", 32)),
+               InputError);
+  EXPECT_THROW(make_solver(Grid::line(1024, 1.0, Boundary::periodic), kEStar, settings("pk-multilevel", 32)),
+               InputError);
+  EXPECT_THROW(make_solver(Grid::plane(96, 80, 1.0, 1.0, Boundary::periodic), kEStar, settings("pk-fourier", 32)),
+               InputError);
+}
+
+}  // namespace
+}  // namespace halfspace::solvers
