@@ -157,8 +157,9 @@ solvers::SolverSettings solver_settings_from(const SolveOptions& o) {
     solver.max_iterations = static_cast<int>(*o.max_iter);
   }
   if (o.deflation_block) {
-    if (*o.deflation_block < 1 || *o.deflation_block > 256) {
-      throw InputError(fmt::format("{} is invalid: need 1 <= deflation-block <= 256", o.describe("deflation-block")));
+    if (*o.deflation_block < 0 || *o.deflation_block > 256) {
+      throw InputError(
+          fmt::format("{} is invalid: need 0 (none) <= deflation-block <= 256", o.describe("deflation-block")));
     }
     solver.deflation_block = static_cast<std::size_t>(*o.deflation_block);
   }

@@ -33,12 +33,14 @@ double dot(const std::vector<double>& a, const std::vector<double>& b) {
   return total;
 }
 
-
 }  // namespace
 
 void BlockDeflationOptions::validate() const {
   if (block < 1 || block > kMaxBlock) {
     throw InputError(fmt::format("deflation block = {} is invalid: allowed range is 1 to {} cells", block, kMaxBlock));
+  }
+  if (!(max_pair_terms > 0.0)) {
+    throw InputError(fmt::format("deflation pair terms = {} is invalid: must be positive", max_pair_terms));
   }
   if (!(update_change >= 0.0)) {
     throw InputError(fmt::format("deflation update change = {} is invalid: must be at least 0", update_change));
@@ -77,7 +79,8 @@ BlockDeflation::BlockDeflation(const Grid& grid, BlockDeflationOptions options) 
   previous_start_.assign(m + 1, 0);
   changed_start_.assign(m + 1, 0);
   coarse_fft_ = std::make_unique<RealFft>(blocks_y_, blocks_x_, FftPlanning::estimate);
-  for (auto* v : {&rhs_, &y_, &first_, &inverse_diagonal_, &residual_, &direction_, &image_, &scaled_}) v->assign(m, 0.0);
+  for (auto* v : {&rhs_, &y_, &first_, &inverse_diagonal_, &residual_, &direction_, &image_, &scaled_})
+    v->assign(m, 0.0);
 }
 
 BlockDeflation::~BlockDeflation() = default;
@@ -103,7 +106,8 @@ void BlockDeflation::set_kernel(std::span<const double> unit_response) {
     for (std::size_t jx = 0; jx < blocks_x_; ++jx) {
       const bool near_y = jy <= 1 || jy + 1 == blocks_y_;
       const bool near_x = jx <= 1 || jx + 1 == blocks_x_;
-      far[jy * blocks_x_ + jx] = near_y && near_x ? 0.0 : unit_response[(jy * options_.block) * nx + jx * options_.block];
+      far[jy * blocks_x_ + jx] =
+          near_y && near_x ? 0.0 : unit_response[(jy * options_.block) * nx + jx * options_.block];
     }
   }
   coarse_fft_->forward();
@@ -195,6 +199,23 @@ void BlockDeflation::refresh(bool full, double size) {
   if (near_kernel_.empty()) throw std::logic_error("BlockDeflation::update before set_kernel");
   full = full || !built_;
   list_cells();
+  if (full) {
+    double terms = 0.0;
+    for (std::size_t I = 0; I < coarse_size(); ++I) {
+      const std::size_t iy = I / blocks_x_;
+      const std::size_t ix = I % blocks_x_;
+      for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+          terms += counts_[I] * counts_[wrapped(iy, dy, blocks_y_) * blocks_x_ + wrapped(ix, dx, blocks_x_)];
+        }
+      }
+    }
+    if (terms > options_.max_pair_terms * static_cast<double>(grid_.size())) {
+      built_ = false;
+      ++stats_.declined;
+      return;
+    }
+  }
   const WeightedCell* cells = cells_.data();
   const WeightedCell* previous = previous_cells_.data();
   const WeightedCell* changes = changed_cells_.data();

@@ -105,16 +105,15 @@ SolveResult PolonskyKeer::solve_from(std::span<const double> initial_gap, const 
 // B r = Q r + (I - Q K) M^-1 (I - K Q) r, Q = Z A^-1 Z^T, with r the gap on
 // the search set (less its mean there under load control: the iteration
 // moves in the mean-free directions, and B must act on those alone to stay
-// symmetric there). The coarse functions live on the contact cells.
+// symmetric there). The coarse functions live on the contact cells, for
+// which the caller has updated deflation_.
 template <class InSearch>
 void PolonskyKeer::apply_balancing(bool load_controlled, InSearch&& in_search, SolveResult& result) {
   const std::size_t n = op_.grid().size();
-  const double* p = result.pressure.data();
   const double* g = result.gap.data();
   double* z = direction_image_.data();
   double* field = coarse_field_.data();
   double* image = coarse_image_.data();
-  deflation_->update([&](std::size_t i) { return p[i] > 0.0; });
   const auto [count, gap_sum] = sums<2>(n, [&](std::size_t i) {
     const double inside = in_search(i) ? 1.0 : 0.0;
     return std::array<double, 2>{inside, inside * g[i]};
@@ -226,6 +225,7 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
   // Deflation (see apply_balancing): whether it is on, and the last step's
   // clipped cells and search set, which decide it.
   bool deflating = false;
+  bool deflation_declined = false;
   double clipped_before = std::numeric_limits<double>::infinity();
   double searched_before = 0.0;
   double previous_norm = 1.0;  // G_old
@@ -359,7 +359,13 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
       z = r;
       // The coarse correction joins once clipping has died down; a change
       // of preconditioner restarts the conjugate directions.
-      const bool deflate = deflation_ != nullptr && clipped_before <= kDeflateBelowClipped * searched_before;
+      bool deflate =
+          deflation_ != nullptr && !deflation_declined && clipped_before <= kDeflateBelowClipped * searched_before;
+      if (deflate) {
+        deflation_->update([&](std::size_t i) { return p[i] > 0.0; });
+        deflation_declined = !deflation_->ready();  // too dense a contact: not in this solve
+        deflate = !deflation_declined;
+      }
       if (deflate != deflating) conjugate = false;
       deflating = deflate;
       if (deflating) {

@@ -78,12 +78,21 @@ std::unique_ptr<ContactSolver> make_polonsky_keer(const Grid& grid, double e_sta
   std::unique_ptr<BlockDeflation> deflation;
   if (deflated) {
     BlockDeflationOptions deflation_options;
-    deflation_options.block = settings.deflation_block;
+    deflation_options.block = settings.deflation_block.value_or(kDefaultDeflationBlock);
     deflation = std::make_unique<BlockDeflation>(grid, deflation_options);
   }
   auto solver = std::make_unique<PolonskyKeer>(*op, options, preconditioner.get(), deflation.get());
   return std::make_unique<SolverWithOperator>(std::move(op), std::move(preconditioner), std::move(deflation),
                                               std::move(solver));
+}
+
+// Whether pk-multilevel's fine grid gets the coarse correction: as asked,
+// or by default where the default block applies.
+bool deflated(const Grid& grid, const SolverSettings& settings) {
+  if (settings.deflation_block) return *settings.deflation_block > 0;
+  const std::size_t b = kDefaultDeflationBlock;
+  return grid.dimension() == 2 && grid.periodic() && grid.nx() % b == 0 && grid.ny() % b == 0 && grid.nx() >= 3 * b &&
+         grid.ny() >= 3 * b;
 }
 
 // Fourier-preconditioned Polonsky-Keer with Powell restarts on every level.
@@ -95,7 +104,7 @@ std::unique_ptr<ContactSolver> make_multilevel(const Grid& grid, double e_star, 
     // The coarse-grid correction on the finest grid only, where the
     // contact has the most spots.
     return make_polonsky_keer(level, e_star, level_settings, true, ConjugacyRestart::powell,
-                              fine && settings.deflation_block > 0);
+                              fine && deflated(level, settings));
   };
   return std::make_unique<MultilevelSolver>(grid, settings.tolerance, make_level);
 }
@@ -119,7 +128,7 @@ std::vector<std::string> solver_names() {
 std::unique_ptr<ContactSolver> make_solver(const Grid& grid, double e_star, const SolverSettings& settings) {
   // Plain Polonsky-Keer keeps the paper's restart rule; with the Fourier
   // preconditioner Powell's restart test cuts the iterations (docs/performance.md).
-  if (settings.deflation_block > 0 && settings.name != "pk-fourier" && settings.name != "pk-multilevel") {
+  if (settings.deflation_block.value_or(0) > 0 && settings.name != "pk-fourier" && settings.name != "pk-multilevel") {
     throw InputError(fmt::format(
         "solver '{}' has no coarse-grid correction: deflation needs pk-fourier or pk-multilevel", settings.name));
   }
@@ -127,7 +136,8 @@ std::unique_ptr<ContactSolver> make_solver(const Grid& grid, double e_star, cons
     return make_polonsky_keer(grid, e_star, settings, false, ConjugacyRestart::on_entry, false);
   }
   if (settings.name == "pk-fourier") {
-    return make_polonsky_keer(grid, e_star, settings, true, ConjugacyRestart::powell, settings.deflation_block > 0);
+    return make_polonsky_keer(grid, e_star, settings, true, ConjugacyRestart::powell,
+                              settings.deflation_block.value_or(0) > 0);
   }
   if (settings.name == "pk-multilevel") return make_multilevel(grid, e_star, settings);
   if (settings.name == "lemke" || settings.name == "lcpquad") return make_dense(grid, e_star, settings);

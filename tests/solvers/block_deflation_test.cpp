@@ -39,14 +39,15 @@ struct Fixture {
       : grid(Grid::plane(nx, ny, 1e-6, 1.5e-6, Boundary::periodic)),
         block(b),
         op(grid, kEStar),
-        deflation(grid, BlockDeflationOptions{b}),
+        deflation(grid, BlockDeflationOptions{b, 0.0, 1e9}),
         set(random_set(grid.size(), share, 7)) {
     std::vector<double> unit(grid.size(), 0.0);
     std::vector<double> response(grid.size());
     unit[0] = 1.0;
     op.apply(unit, response);
     deflation.set_kernel(response);
-    EXPECT_TRUE(deflation.update([&](std::size_t i) { return set[i] != 0; }));
+    deflation.update([&](std::size_t i) { return set[i] != 0; });
+    EXPECT_TRUE(deflation.ready());
   }
 
   std::size_t owner(std::size_t i) const {
@@ -203,7 +204,7 @@ TEST(BlockDeflationTest, UpdatesByTheChangedCells) {
   for (auto& s : f.set) {
     if (flip(generator)) s = s ? 0 : 1;
   }
-  EXPECT_TRUE(f.deflation.update([&](std::size_t i) { return f.set[i] != 0; }));
+  f.deflation.update([&](std::size_t i) { return f.set[i] != 0; });
   EXPECT_EQ(f.deflation.stats().rebuilds, 1);
   EXPECT_EQ(f.deflation.stats().updates, 1);
   for (std::size_t J = 0; J < f.deflation.coarse_size(); ++J) {
@@ -213,13 +214,35 @@ TEST(BlockDeflationTest, UpdatesByTheChangedCells) {
       EXPECT_NEAR(built[I], exact[I], 1e-10 * max_abs(exact)) << "block " << I << ", column " << J;
     }
   }
-  EXPECT_FALSE(f.deflation.update([&](std::size_t i) { return f.set[i] != 0; }));
+  f.deflation.update([&](std::size_t i) { return f.set[i] != 0; });
+  EXPECT_EQ(f.deflation.stats().updates, 1) << "no change, no update";
   for (auto& s : f.set) s = s ? 0 : 1;
-  EXPECT_TRUE(f.deflation.update([&](std::size_t i) { return f.set[i] != 0; }));
+  f.deflation.update([&](std::size_t i) { return f.set[i] != 0; });
   EXPECT_EQ(f.deflation.stats().rebuilds, 2);
   const std::vector<double> exact = f.galerkin_column(4);
   const std::vector<double> built = f.coarse_column(4);
   for (std::size_t I = 0; I < exact.size(); ++I) EXPECT_NEAR(built[I], exact[I], 1e-10 * max_abs(exact));
+}
+
+// A full build whose pair sums exceed the budget is not made.
+TEST(BlockDeflationTest, DeclinesDenseContacts) {
+  const Grid grid = Grid::plane(48, 48, 1.0, 1.0, Boundary::periodic);
+  BlockDeflationOptions options{8};
+  // Per cell 9 n_B: 576 at full contact, about 52 at 30 %.
+  options.max_pair_terms = 288.0;
+  BlockDeflation deflation(grid, options);
+  FftInfluenceOperator op(grid, kEStar);
+  std::vector<double> unit(grid.size(), 0.0);
+  std::vector<double> response(grid.size());
+  unit[0] = 1.0;
+  op.apply(unit, response);
+  deflation.set_kernel(response);
+  deflation.update([](std::size_t) { return true; });
+  EXPECT_FALSE(deflation.ready());
+  EXPECT_EQ(deflation.stats().declined, 1);
+  const std::vector<std::uint8_t> sparse = random_set(grid.size(), 0.3, 9);
+  deflation.update([&](std::size_t i) { return sparse[i] != 0; });
+  EXPECT_TRUE(deflation.ready());
 }
 
 TEST(BlockDeflationTest, RefusesGridsItCannotCover) {

@@ -50,7 +50,8 @@ TEST(DeflatedSolverTest, MatchesTheUndeflatedSolutionInNoMoreIterations) {
   const Eigen::ArrayXd gap = rough_gap(grid, 3);
   // About 8 % contact; the approach of the same load from a first solve.
   const Loading load = Loading::mean_pressure(0.004);
-  const SolveResult loaded = make_solver(grid, kEStar, settings("pk-fourier", 0))->solve({gap.data(), grid.size()}, load);
+  const SolveResult loaded =
+      make_solver(grid, kEStar, settings("pk-fourier", 0))->solve({gap.data(), grid.size()}, load);
   ASSERT_TRUE(loaded.converged()) << loaded.message;
   const Loading approach = Loading::approach(loaded.approach);
   for (const Case& c : {Case{"pk-multilevel", load}, Case{"pk-multilevel", approach}, Case{"pk-fourier", load}}) {

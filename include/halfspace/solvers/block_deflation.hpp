@@ -41,6 +41,11 @@ struct BlockDeflationOptions {
   // A is brought up to date when more than this share of the search set has
   // changed since it was last (0: on every change).
   double update_change = 0.0;
+  // The most pair-sum terms per cell a full build of A may take: 190-320 on
+  // the 8 % contacts of docs/performance.md (0.45 s at 2048^2, about five
+  // FFT products), 9200 at 97 % contact, where the preconditioner alone
+  // needs few iterations anyway.
+  double max_pair_terms = 1000.0;
   double coarse_tolerance = 1e-8;
   int coarse_max_iterations = 1000;
 
@@ -51,9 +56,10 @@ struct BlockDeflationOptions {
 
 // Counters of the coarse work, for reports and benchmarks.
 struct BlockDeflationStats {
-  int rebuilds = 0;  // A assembled from all pair sums
-  int updates = 0;   // A updated by the changed cells
-  long coarse_iterations = 0;      // CG iterations of all coarse solves
+  int rebuilds = 0;                   // A assembled from all pair sums
+  int declined = 0;                   // full builds not made: too many pair terms
+  int updates = 0;                    // A updated by the changed cells
+  long coarse_iterations = 0;         // CG iterations of all coarse solves
   int unconverged_coarse_solves = 0;  // stopped at coarse_max_iterations
 };
 
@@ -74,19 +80,23 @@ class BlockDeflation {
   // Records the coarse set, in_set(i) for each cell, and brings A up to
   // date if the set changed by more than the update share since A was last
   // (or A was never built): from the changed cells' pair sums, or from all
-  // pairs when more than half of the set changed. Returns whether A changed.
+  // pairs when more than half of the set changed. A full build whose pair
+  // sums would exceed max_pair_terms per cell is not made: ready() is then
+  // false (dense contacts, where the correction would cost more than it
+  // saves), and the next update tries again.
   template <class InSet>
-  bool update(InSet&& in_set) {
+  void update(InSet&& in_set) {
     const auto [changed, size] = linalg::sums<2>(grid_.size(), [&](std::size_t i) {
       const std::uint8_t now = in_set(i) ? 1 : 0;
       const std::uint8_t built = set_[i] >> 1;
       set_[i] = static_cast<std::uint8_t>((built << 1) | now);
       return std::array<double, 2>{now != built ? 1.0 : 0.0, static_cast<double>(now)};
     });
-    if (built_ && (changed == 0.0 || changed <= options_.update_change * built_size_)) return false;
+    if (built_ && (changed == 0.0 || changed <= options_.update_change * built_size_)) return;
     refresh(!built_ || changed > 0.5 * size, size);
-    return true;
   }
+  // Whether A is built for the last update's set.
+  bool ready() const { return built_; }
 
   // The balancing form, z = Q r + (I - Q K) M^-1 (I - K Q) r with Q = Z A^-1
   // Z^T, in two halves around M^-1: pre_correction solves y1 = A^-1 Z^T r

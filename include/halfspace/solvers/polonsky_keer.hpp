@@ -97,7 +97,7 @@ class PolonskyKeer final : public ContactSolver {
   // Step 2 with deflation: direction_image_ = B g on the search set
   // (in_search(i)), B the balancing preconditioner of block_deflation.hpp
   // around M^-1; under load control on the set's mean-free fields. Counts
-  // its products in `result`, whose gap and pressure it reads.
+  // its products in `result`, whose gap it reads.
   template <class InSearch>
   void apply_balancing(bool load_controlled, InSearch&& in_search, SolveResult& result);
 

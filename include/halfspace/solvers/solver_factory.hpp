@@ -4,6 +4,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,8 @@
 
 namespace halfspace::solvers {
 
+inline constexpr std::size_t kDefaultDeflationBlock = 32;
+
 struct SolverSettings {
   std::string name =
       "pk-multilevel";       // one of solver_names(); the default was chosen by measurement (docs/performance.md)
@@ -20,8 +23,11 @@ struct SolverSettings {
   int max_iterations = 10000;
   FftPlanning fft_planning = FftPlanning::estimate;  // FFT-based solvers only
   // Block size of the coarse-grid correction (BlockDeflation) of pk-fourier
-  // and of pk-multilevel's finest grid; 0 for none. Periodic 2D grids only.
-  std::size_t deflation_block = 0;
+  // and of pk-multilevel's finest grid: B (refused where it does not apply),
+  // 0 for none, or unset: kDefaultDeflationBlock for pk-multilevel on
+  // periodic 2D grids it divides into at least 3 blocks per axis (chosen by
+  // measurement, docs/performance.md), none otherwise.
+  std::optional<std::size_t> deflation_block;
   std::function<void(int, double)> progress;  // (iteration, residual), may be empty
 };
 
