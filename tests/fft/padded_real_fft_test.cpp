@@ -36,7 +36,7 @@ std::complex<double> direct_dft(const std::vector<double>& block, std::size_t ro
 }
 
 TEST(PaddedRealFftTest, ForwardIsTheDftOfTheZeroPaddedBlock) {
-  for (const auto [rows, cols] : {std::pair<std::size_t, std::size_t>{1, 9}, {5, 6}, {4, 7}}) {
+  for (const auto& [rows, cols] : {std::pair<std::size_t, std::size_t>{1, 9}, {5, 6}, {4, 7}}) {
     SCOPED_TRACE(std::to_string(rows) + "x" + std::to_string(cols));
     PaddedRealFft fft(rows, cols, FftPlanning::estimate);
     ASSERT_EQ(fft.spectrum_rows(), rows == 1 ? 1u : 2 * rows);
@@ -56,7 +56,7 @@ TEST(PaddedRealFftTest, ForwardIsTheDftOfTheZeroPaddedBlock) {
 }
 
 TEST(PaddedRealFftTest, BackwardOfForwardReturnsTheBlockTimesThePaddedSize) {
-  for (const auto [rows, cols] : {std::pair<std::size_t, std::size_t>{1, 16}, {6, 10}, {7, 5}}) {
+  for (const auto& [rows, cols] : {std::pair<std::size_t, std::size_t>{1, 16}, {6, 10}, {7, 5}}) {
     SCOPED_TRACE(std::to_string(rows) + "x" + std::to_string(cols));
     PaddedRealFft fft(rows, cols, FftPlanning::estimate);
     const std::vector<double> block = block_values(rows, cols);
