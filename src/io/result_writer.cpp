@@ -271,6 +271,9 @@ void write_summary(hid_t root, const Grid& grid, const SolveResult& result, cons
   attach_int64(root, "coarse_iterations", result.coarse.iterations);
   attach_double(root, "coarse_operator_work", result.coarse.operator_work);
   attach_double(root, "coarse_preconditioner_work", result.coarse.preconditioner_work);
+  attach_int64(root, "deflation_block", static_cast<std::int64_t>(result.deflation.block));
+  attach_int64(root, "deflated_iterations", result.deflation.deflated_iterations);
+  attach_int64(root, "deflation_declined", result.deflation.declined);
   attach_double(root, "residual", result.residual);
   attach_double(root, "tolerance", result.tolerance);
   attach_double(root, "solve_seconds", result.wall_seconds);

@@ -226,6 +226,7 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
   // clipped cells and search set, which decide it.
   bool deflating = false;
   bool deflation_declined = false;
+  const BlockDeflationStats deflation_before = deflation_ ? deflation_->stats() : BlockDeflationStats{};
   double clipped_before = std::numeric_limits<double>::infinity();
   double searched_before = 0.0;
   double previous_norm = 1.0;  // G_old
@@ -370,6 +371,7 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
       deflating = deflate;
       if (deflating) {
         apply_balancing(problem.load_controlled, searched, result);
+        ++result.deflation.deflated_iterations;
       } else {
         preconditioner_->apply({z, n}, {z, n});
         ++result.preconditioner_applications;
@@ -469,6 +471,15 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
     if (problem.load_controlled) pending_scale = problem.target_force / (problem.cell_area * new_pressure_sum);
   }
 
+  if (deflation_) {
+    // This solve's share of the correction's counters.
+    const BlockDeflationStats& after = deflation_->stats();
+    result.deflation.block = deflation_->block();
+    result.deflation.rebuilds = after.rebuilds - deflation_before.rebuilds;
+    result.deflation.updates = after.updates - deflation_before.updates;
+    result.deflation.declined = after.declined - deflation_before.declined;
+    result.deflation.coarse_iterations = after.coarse_iterations - deflation_before.coarse_iterations;
+  }
   // Summary of the final iterate, whose displacement and gap are current.
   const auto [pressure_total, contact_total] = sums<2>(n, [&](std::size_t i) {
     return std::array<double, 2>{p[i], p[i] > 0.0 ? 1.0 : 0.0};

@@ -176,6 +176,9 @@ void expect_attributes(hid_t file, const Grid& grid, const SolveResult& result, 
   expect_int("coarse_iterations", result.coarse.iterations);
   expect_double("coarse_operator_work", result.coarse.operator_work);
   expect_double("coarse_preconditioner_work", result.coarse.preconditioner_work);
+  expect_int("deflation_block", static_cast<std::int64_t>(result.deflation.block));
+  expect_int("deflated_iterations", result.deflation.deflated_iterations);
+  expect_int("deflation_declined", result.deflation.declined);
   expect_double("residual", result.residual);
   expect_double("tolerance", result.tolerance);
   expect_int("converged", result.converged() ? 1 : 0);

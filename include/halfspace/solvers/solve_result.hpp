@@ -4,6 +4,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cstddef>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -28,6 +29,19 @@ struct CoarseStart {
   double preconditioner_work = 0.0;
 };
 
+// The block-deflation coarse correction of the fine solve (BlockDeflation):
+// block size (0: none), the iterations it was applied in, and its coarse
+// work. declined counts the full builds not made because the contact was
+// too dense; then the solve ran without it.
+struct DeflationRecord {
+  std::size_t block = 0;
+  int deflated_iterations = 0;
+  int rebuilds = 0;
+  int updates = 0;
+  int declined = 0;
+  long coarse_iterations = 0;
+};
+
 struct SolveResult {
   SolveStatus status = SolveStatus::breakdown;
   std::string message;  // human-readable reason, empty when converged
@@ -40,6 +54,7 @@ struct SolveResult {
   int operator_applications = 0;         // number of K*p products
   int preconditioner_applications = 0;   // number of M^-1 g products (each one FFT pair)
   CoarseStart coarse;                    // coarse-grid start (MultilevelSolver); zero otherwise
+  DeflationRecord deflation;             // coarse-grid correction of the fine solve; block 0 without
 
   double approach = 0.0;          // rigid-body approach (m)
   double total_force = 0.0;       // N in 2D, N/m in 1D
