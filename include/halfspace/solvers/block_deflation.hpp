@@ -1,26 +1,27 @@
 // A coarse-grid correction for preconditioned Polonsky-Keer on periodic 2D
-// grids: deflation by the search-set cells of b x b blocks.
+// grids: deflation by b x b blocks of the contact cells.
 //
 // On a large rough contact the Fourier preconditioner M^-1 overestimates the
 // response to smooth pressure modulations spread across many small spots, so
 // the condition number on the contact set grows with the domain
 // (docs/performance.md, "Why a growing domain costs more"). The coarse space
-// Z, one column per block holding 1 on the block's cells in the search set S,
-// captures those modulations. With the Galerkin matrix A = Z^T K_SS Z the
-// preconditioner becomes (A-DEF2, Tang, Nabben, Vuik & Erlangga 2009,
-// J. Sci. Comput. 39, 340)
+// Z, one column per block holding 1 on the block's cells in the coarse set
+// (the solver passes the contact cells), captures those modulations. With
+// the Galerkin matrix A = Z^T K Z and Q = Z A^-1 Z^T, the balancing
+// preconditioner (Mandel 1993; Tang, Nabben, Vuik & Erlangga 2009)
 //
-//   z = v + Z A^-1 Z^T (r - K v),  v = M^-1 r,
+//   B r = Q r + (I - Q K) M^-1 (I - K Q) r
 //
-// one more product K v per iteration. A is assembled from the kernel in real
-// space: exactly between each block and its eight neighbours (sums over cell
-// pairs), and as point loads between block centres, n_I n_J k(c_I - c_J),
-// beyond them, which the coarse grid applies by FFT. When the search set
-// changes, the pair sums are updated by the changed cells' sums alone (a
-// stale A costs many iterations: docs/performance.md), or rebuilt when most
-// of the set changed. A is solved by Jacobi-preconditioned CG. The preconditioner is not symmetric
-// while Z^T r != 0 and A is solved inexactly, so the solver uses it with the
-// flexible (Polak-Ribiere) conjugacy.
+// is symmetric positive definite; pre_correction and post_correction are
+// its two halves around M^-1 (two more products K per application). A is
+// assembled from the kernel in real space: exactly between each block and
+// its eight neighbours (sums over cell pairs), and as point loads between
+// block centres, n_I n_J k(c_I - c_J), beyond them, which the coarse grid
+// applies by FFT. When the set changes, the pair sums are updated from the
+// changed cells alone (a stale A costs many iterations), or rebuilt when most
+// of the set changed. A is solved by Jacobi-preconditioned CG, under a fixed
+// load projected onto corrections that move no load (docs/theory.md, "Block
+// deflation").
 #pragma once
 
 #include <complex>
@@ -38,7 +39,7 @@ namespace halfspace::solvers {
 
 struct BlockDeflationOptions {
   std::size_t block = 32;  // cells per block side; must divide nx and ny
-  // A is brought up to date when more than this share of the search set has
+  // A is brought up to date when more than this share of the coarse set has
   // changed since it was last (0: on every change).
   double update_change = 0.0;
   // The most pair-sum terms per cell a full build of A may take: 190-320 on
@@ -138,7 +139,7 @@ class BlockDeflation {
   std::size_t blocks_y_;
   bool built_ = false;
   double built_size_ = 0.0;
-  // Per cell: bit 0 in the current search set, bit 1 in the set A was built on.
+  // Per cell: bit 0 in the current coarse set, bit 1 in the set A was built on.
   std::vector<std::uint8_t> set_;
   // Kernel near field k(dy, dx) for |dx|, |dy| < 2b, row-major over dy.
   std::vector<double> near_kernel_;
