@@ -11,8 +11,7 @@
 namespace halfspace::solvers {
 namespace {
 
-// Blocks per axis below which the 3 x 3 neighbourhood would meet itself
-// across the period.
+// See BlockDeflation::covers.
 constexpr std::size_t kMinBlocksPerAxis = 3;
 // Larger blocks leave too few coarse unknowns to help, and their pair sums
 // grow as b^4.
@@ -42,9 +41,6 @@ void BlockDeflationOptions::validate() const {
   if (!(max_pair_terms > 0.0)) {
     throw InputError(fmt::format("deflation pair terms = {} is invalid: must be positive", max_pair_terms));
   }
-  if (!(update_change >= 0.0)) {
-    throw InputError(fmt::format("deflation update change = {} is invalid: must be at least 0", update_change));
-  }
   if (!(coarse_tolerance > 0.0 && coarse_tolerance < 1.0)) {
     throw InputError(
         fmt::format("deflation coarse tolerance = {} is invalid: allowed range is (0, 1)", coarse_tolerance));
@@ -55,6 +51,11 @@ void BlockDeflationOptions::validate() const {
   }
 }
 
+bool BlockDeflation::covers(const Grid& grid, std::size_t block) {
+  return grid.dimension() == 2 && grid.periodic() && block > 0 && grid.nx() % block == 0 && grid.ny() % block == 0 &&
+         grid.nx() >= kMinBlocksPerAxis * block && grid.ny() >= kMinBlocksPerAxis * block;
+}
+
 BlockDeflation::BlockDeflation(const Grid& grid, BlockDeflationOptions options) : grid_(grid), options_(options) {
   options_.validate();
   if (grid_.dimension() != 2 || !grid_.periodic()) {
@@ -62,8 +63,7 @@ BlockDeflation::BlockDeflation(const Grid& grid, BlockDeflationOptions options) 
                                  to_string(grid_.boundary()), grid_.dimension()));
   }
   const std::size_t b = options_.block;
-  if (grid_.nx() % b != 0 || grid_.ny() % b != 0 || grid_.nx() < kMinBlocksPerAxis * b ||
-      grid_.ny() < kMinBlocksPerAxis * b) {
+  if (!covers(grid_, b)) {
     throw InputError(fmt::format(
         "deflation block = {} is invalid for the {} grid: it must divide nx and ny and leave at least {} blocks "
         "per axis",
@@ -161,8 +161,8 @@ void BlockDeflation::list_cells() {
         for (std::size_t c = 0; c < b; ++c) {
           const std::uint8_t now = cell[c] & 1U;
           const auto offset = static_cast<std::uint32_t>(r * side + c);
-          if (now) cells_[next++] = WeightedCell{offset, 1.0F};
-          if (now != (cell[c] >> 1)) changed_cells_[next_changed++] = WeightedCell{offset, now ? 1.0F : -1.0F};
+          if (now) cells_[next++] = ListedCell{offset, 1.0F};
+          if (now != (cell[c] >> 1)) changed_cells_[next_changed++] = ListedCell{offset, now ? 1.0F : -1.0F};
           cell[c] = static_cast<std::uint8_t>((now << 1) | now);
         }
       }
@@ -171,8 +171,8 @@ void BlockDeflation::list_cells() {
   });
 }
 
-double BlockDeflation::pair_sum(const WeightedCell* first, const WeightedCell* first_end, const WeightedCell* second,
-                                const WeightedCell* second_end, int dy, int dx) const {
+double BlockDeflation::pair_sum(const ListedCell* first, const ListedCell* first_end, const ListedCell* second,
+                                const ListedCell* second_end, int dy, int dx) const {
   // x_a - x_c = local_a - local_c - b (dy, dx): from the table entry of
   // local_a - b (dy, dx), step back by each local_c.
   const auto b = static_cast<std::ptrdiff_t>(options_.block);
@@ -180,13 +180,13 @@ double BlockDeflation::pair_sum(const WeightedCell* first, const WeightedCell* f
   const std::ptrdiff_t side = 2 * reach + 1;
   const double* centre = near_kernel_.data() + (reach - dy * b) * side + (reach - dx * b);
   double total = 0.0;
-  for (const WeightedCell* a = first; a != first_end; ++a) {
+  for (const ListedCell* a = first; a != first_end; ++a) {
     const double* origin = centre + a->offset;
     double row = 0.0;
-    for (const WeightedCell* c = second; c != second_end; ++c) {
-      row += static_cast<double>(c->weight) * origin[-static_cast<std::ptrdiff_t>(c->offset)];
+    for (const ListedCell* c = second; c != second_end; ++c) {
+      row += static_cast<double>(c->sign) * origin[-static_cast<std::ptrdiff_t>(c->offset)];
     }
-    total += static_cast<double>(a->weight) * row;
+    total += static_cast<double>(a->sign) * row;
   }
   return total;
 }
@@ -195,7 +195,7 @@ double BlockDeflation::pair_sum(const WeightedCell* first, const WeightedCell* f
 // new set's indicator: A'_IJ - A_IJ = sum delta_a chi'_c k + sum chi_a
 // delta_c k, i.e. the changed cells of I (with the sign of the change)
 // against J's new cells and I's old cells against J's changed cells.
-void BlockDeflation::refresh(bool full, double size) {
+void BlockDeflation::refresh(bool full) {
   if (near_kernel_.empty()) throw std::logic_error("BlockDeflation::update before set_kernel");
   full = full || !built_;
   list_cells();
@@ -216,9 +216,9 @@ void BlockDeflation::refresh(bool full, double size) {
       return;
     }
   }
-  const WeightedCell* cells = cells_.data();
-  const WeightedCell* previous = previous_cells_.data();
-  const WeightedCell* changes = changed_cells_.data();
+  const ListedCell* cells = cells_.data();
+  const ListedCell* previous = previous_cells_.data();
+  const ListedCell* changes = changed_cells_.data();
   const auto blocks = static_cast<std::ptrdiff_t>(coarse_size());
 #pragma omp parallel for schedule(dynamic, 16)
   for (std::ptrdiff_t index = 0; index < blocks; ++index) {
@@ -229,8 +229,8 @@ void BlockDeflation::refresh(bool full, double size) {
       for (int dx = -1; dx <= 1; ++dx) {
         const std::size_t J = wrapped(iy, dy, blocks_y_) * blocks_x_ + wrapped(ix, dx, blocks_x_);
         double& entry = near_[I * 9 + neighbour(dy, dx)];
-        const WeightedCell* j_begin = cells + cell_start_[J];
-        const WeightedCell* j_end = cells + cell_start_[J + 1];
+        const ListedCell* j_begin = cells + cell_start_[J];
+        const ListedCell* j_end = cells + cell_start_[J + 1];
         if (full) {
           entry = pair_sum(cells + cell_start_[I], cells + cell_start_[I + 1], j_begin, j_end, dy, dx);
           continue;
@@ -246,7 +246,6 @@ void BlockDeflation::refresh(bool full, double size) {
     }
   }
   built_ = true;
-  built_size_ = size;
   ++(full ? stats_.rebuilds : stats_.updates);
 }
 
@@ -275,8 +274,6 @@ void BlockDeflation::apply_coarse(std::span<const double> y, std::span<double> o
 }
 
 // Jacobi-preconditioned CG on A y = rhs_ over the blocks with cells (the
-// others keep y = 0: their rows and columns of A vanish).
-// Jacobi-preconditioned CG on A y = rhs_ over the blocks with cells (the
 // others keep y = 0: their rows and columns of A vanish). With a fixed load,
 // projected CG on n^T y = 0 (n the blocks' cell counts): the coarse
 // correction moves no load, and a multiplier absorbs the rhs along n, as
@@ -293,13 +290,20 @@ void BlockDeflation::solve_coarse(bool fixed_load) {
   if (fixed_load) {
     for (std::size_t k = 0; k < m; ++k) counts_norm += counts_[k] * inverse_diagonal_[k] * counts_[k];
   }
-  // out = D^-1 in, projected onto n^T out = 0 under a fixed load.
-  auto precondition = [&](const std::vector<double>& in, std::vector<double>& out) {
-    for (std::size_t k = 0; k < m; ++k) out[k] = inverse_diagonal_[k] * in[k];
+  // Under a fixed load the residual less its part along n, r - lambda n
+  // with n^T D^-1 (r - lambda n) = 0 (the multiplier), so that z = D^-1 r
+  // moves no load. Taking it out of the residual itself, not only out of z,
+  // keeps the residual as small as the iteration has made it: otherwise its
+  // part along n stays and the rounding of each projection grows against
+  // the shrinking rest (Gould, Hribar & Nocedal 2001).
+  auto precondition = [&](std::vector<double>& r, std::vector<double>& out) {
     if (counts_norm > 0.0) {
-      const double multiplier = dot(counts_, out) / counts_norm;
-      for (std::size_t k = 0; k < m; ++k) out[k] -= multiplier * inverse_diagonal_[k] * counts_[k];
+      double along = 0.0;
+      for (std::size_t k = 0; k < m; ++k) along += counts_[k] * inverse_diagonal_[k] * r[k];
+      const double multiplier = along / counts_norm;
+      for (std::size_t k = 0; k < m; ++k) r[k] -= multiplier * counts_[k];
     }
+    for (std::size_t k = 0; k < m; ++k) out[k] = inverse_diagonal_[k] * r[k];
   };
   std::fill(y_.begin(), y_.end(), 0.0);
   for (std::size_t k = 0; k < m; ++k) rhs_[k] = counts_[k] > 0.0 ? rhs_[k] : 0.0;

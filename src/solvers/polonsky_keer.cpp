@@ -120,9 +120,9 @@ void PolonskyKeer::apply_balancing(bool load_controlled, InSearch&& in_search, S
   });
   const double shift = load_controlled ? gap_sum / count : 0.0;
   for_each_index(n, [&](std::size_t i) { z[i] = in_search(i) ? g[i] - shift : 0.0; });
-  // field = field - minus on the set, zero elsewhere, mean-free on the set
+  // values = values - minus on the set, zero elsewhere, mean-free on the set
   // under load control.
-  auto restrict = [&](double* values, const double* minus) {
+  auto onto_set = [&](double* values, const double* minus) {
     double mean = 0.0;
     if (load_controlled) {
       mean = linalg::sum(n, [&](std::size_t i) { return in_search(i) ? values[i] - (minus ? minus[i] : 0.0) : 0.0; }) /
@@ -134,10 +134,10 @@ void PolonskyKeer::apply_balancing(bool load_controlled, InSearch&& in_search, S
   deflation_->pre_correction({z, n}, {field, n}, load_controlled);
   op_.apply({field, n}, {image, n});
   ++result.operator_applications;
-  restrict(z, image);
+  onto_set(z, image);
   preconditioner_->apply({z, n}, {z, n});
   ++result.preconditioner_applications;
-  restrict(z, nullptr);
+  onto_set(z, nullptr);
   op_.apply({z, n}, {image, n});
   ++result.operator_applications;
   deflation_->post_correction({image, n}, {z, n}, load_controlled);

@@ -90,9 +90,7 @@ std::unique_ptr<ContactSolver> make_polonsky_keer(const Grid& grid, double e_sta
 // or by default where the default block applies.
 bool deflated(const Grid& grid, const SolverSettings& settings) {
   if (settings.deflation_block) return *settings.deflation_block > 0;
-  const std::size_t b = kDefaultDeflationBlock;
-  return grid.dimension() == 2 && grid.periodic() && grid.nx() % b == 0 && grid.ny() % b == 0 && grid.nx() >= 3 * b &&
-         grid.ny() >= 3 * b;
+  return BlockDeflation::covers(grid, kDefaultDeflationBlock);
 }
 
 // Fourier-preconditioned Polonsky-Keer with Powell restarts on every level.

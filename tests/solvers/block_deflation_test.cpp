@@ -13,9 +13,12 @@
 
 #include "halfspace/error.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
+#include "operators/operator_test_support.hpp"
 
 namespace halfspace::solvers {
 namespace {
+
+using testing::random_field;
 
 constexpr double kEStar = 1e9;  // Pa
 
@@ -39,7 +42,7 @@ struct Fixture {
       : grid(Grid::plane(nx, ny, 1e-6, 1.5e-6, Boundary::periodic)),
         block(b),
         op(grid, kEStar),
-        deflation(grid, BlockDeflationOptions{b, 0.0, 1e9}),
+        deflation(grid, BlockDeflationOptions{b, 1e9}),
         set(random_set(grid.size(), share, 7)) {
     std::vector<double> unit(grid.size(), 0.0);
     std::vector<double> response(grid.size());
@@ -119,15 +122,6 @@ TEST(BlockDeflationTest, CoarseMatrixMatchesGalerkinNearAndApproximatesItFar) {
   }
 }
 
-// Random fields g on the grid.
-std::vector<double> random_values(std::size_t n, unsigned seed) {
-  std::mt19937 generator(seed);
-  std::uniform_real_distribution<double> value(-1.0, 1.0);
-  std::vector<double> values(n);
-  for (double& v : values) v = value(generator);
-  return values;
-}
-
 // y read back from a prolonged field Z y, and Z^T g, by block.
 struct Coarse {
   std::vector<double> y;
@@ -154,7 +148,7 @@ Coarse read_back(Fixture& f, const std::vector<double>& field, const std::vector
 // each block, zero elsewhere.
 TEST(BlockDeflationTest, PreCorrectionSolvesTheCoarseSystemOnTheSet) {
   Fixture f(48, 48, 8, 0.4);
-  const std::vector<double> g = random_values(f.grid.size(), 3);
+  const std::vector<double> g = random_field(f.grid.size(), 3);
   std::vector<double> field(f.grid.size(), 0.5);
   f.deflation.pre_correction(g, field, false);
   const Coarse c = read_back(f, field, g);
@@ -168,7 +162,7 @@ TEST(BlockDeflationTest, PreCorrectionSolvesTheCoarseSystemOnTheSet) {
 // = Z^T g up to a multiple of n, the coarse multiplier.
 TEST(BlockDeflationTest, FixedLoadCorrectionMovesNoLoad) {
   Fixture f(48, 48, 8, 0.4);
-  const std::vector<double> g = random_values(f.grid.size(), 5);
+  const std::vector<double> g = random_field(f.grid.size(), 5);
   std::vector<double> field(f.grid.size());
   f.deflation.pre_correction(g, field, true);
   const Coarse c = read_back(f, field, g);

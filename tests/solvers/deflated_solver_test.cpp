@@ -8,29 +8,20 @@
 #include <string>
 
 #include "halfspace/error.hpp"
-#include "halfspace/geometry/builtin_surface.hpp"
 #include "halfspace/solvers/solver_factory.hpp"
-#include "halfspace/surface/self_affine.hpp"
 #include "support/contact_checks.hpp"
+#include "support/rough_gap.hpp"
 
 namespace halfspace::solvers {
 namespace {
 
 using testing::expect_contact_conditions;
+using testing::self_affine_gap;
 
 constexpr double kEStar = 1.0;
 // Two solutions converged to residual 1e-12 differ by rounding-level amounts
 // relative to the largest pressure.
 constexpr double kSameSolution = 1e-8;
-
-Eigen::ArrayXd rough_gap(const Grid& grid, std::uint64_t seed) {
-  surface::SelfAffineSpec spec;
-  spec.hurst = 0.8;
-  spec.short_cutoff = 4.0 * grid.dx();
-  spec.rms_slope = 0.1;
-  spec.seed = seed;
-  return geometry::initial_gap_from_heights(surface::make_self_affine_surface(grid, spec));
-}
 
 SolverSettings settings(const std::string& name, std::size_t block) {
   SolverSettings s;
@@ -47,7 +38,7 @@ struct Case {
 
 TEST(DeflatedSolverTest, MatchesTheUndeflatedSolutionInNoMoreIterations) {
   const Grid grid = Grid::plane(256, 256, 1.0, 1.0, Boundary::periodic);
-  const Eigen::ArrayXd gap = rough_gap(grid, 3);
+  const Eigen::ArrayXd gap = self_affine_gap(grid, 3);
   // About 8 % contact; the approach of the same load from a first solve.
   const Loading load = Loading::mean_pressure(0.004);
   const SolveResult loaded =

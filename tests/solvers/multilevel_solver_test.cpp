@@ -9,30 +9,21 @@
 #include <cstdio>
 
 #include "halfspace/error.hpp"
-#include "halfspace/geometry/builtin_surface.hpp"
 #include "halfspace/solvers/solver_factory.hpp"
-#include "halfspace/surface/self_affine.hpp"
 #include "halfspace/threads.hpp"
 #include "support/contact_checks.hpp"
+#include "support/rough_gap.hpp"
 
 namespace halfspace::solvers {
 namespace {
 
 using testing::expect_contact_conditions;
+using testing::self_affine_gap;
 
 constexpr double kEStar = 1.0;
 // Two converged solutions at residual 1e-12 differ by rounding-level amounts
 // relative to the largest pressure.
 constexpr double kSameSolution = 1e-8;
-
-Eigen::ArrayXd rough_gap(const Grid& grid, std::uint64_t seed) {
-  surface::SelfAffineSpec spec;
-  spec.hurst = 0.8;
-  spec.short_cutoff = 4.0 * grid.dx();
-  spec.rms_slope = 0.1;
-  spec.seed = seed;
-  return geometry::initial_gap_from_heights(surface::make_self_affine_surface(grid, spec));
-}
 
 SolverSettings settings(const std::string& name) {
   SolverSettings s;
@@ -46,7 +37,7 @@ TEST(MultilevelSolverTest, MatchesTheSingleGridSolverAndUsesTheCoarseGrids) {
   set_threads(1);
   for (const Boundary boundary : {Boundary::periodic, Boundary::free}) {
     const Grid grid = Grid::plane(128, 128, 1.0, 1.0, boundary);
-    const Eigen::ArrayXd gap = rough_gap(grid, 7);
+    const Eigen::ArrayXd gap = self_affine_gap(grid, 7);
     const Loading loading = Loading::mean_pressure(0.004);  // about 8% contact
     const SolveResult single =
         make_solver(grid, kEStar, settings("pk-fourier"))->solve({gap.data(), grid.size()}, loading);
@@ -73,7 +64,7 @@ TEST(MultilevelSolverTest, MatchesTheSingleGridSolverAndUsesTheCoarseGrids) {
 TEST(MultilevelSolverTest, SkipsTheCoarseGridsWhenItCannotOrNeedNotUseThem) {
   // Odd side: no coarser grid of the same domain.
   const Grid odd = Grid::plane(65, 64, 1.0, 1.0, Boundary::periodic);
-  const Eigen::ArrayXd odd_gap = rough_gap(odd, 3);
+  const Eigen::ArrayXd odd_gap = self_affine_gap(odd, 3);
   const SolveResult odd_result = make_solver(odd, kEStar, settings("pk-multilevel"))
                                      ->solve({odd_gap.data(), odd.size()}, Loading::mean_pressure(0.004));
   ASSERT_TRUE(odd_result.converged()) << odd_result.message;
@@ -81,7 +72,7 @@ TEST(MultilevelSolverTest, SkipsTheCoarseGridsWhenItCannotOrNeedNotUseThem) {
 
   // A warm start (a sweep's previous step) is used as it is.
   const Grid grid = Grid::plane(64, 64, 1.0, 1.0, Boundary::periodic);
-  const Eigen::ArrayXd gap = rough_gap(grid, 4);
+  const Eigen::ArrayXd gap = self_affine_gap(grid, 4);
   auto solver = make_solver(grid, kEStar, settings("pk-multilevel"));
   const SolveResult cold = solver->solve({gap.data(), grid.size()}, Loading::mean_pressure(0.004));
   ASSERT_TRUE(cold.converged()) << cold.message;
@@ -108,7 +99,7 @@ TEST(MultilevelSolverTest, SkipsTheCoarseGridsWhenItCannotOrNeedNotUseThem) {
 TEST(MultilevelSolverTest, RefusesBadInputBeforeAnyCoarseSolve) {
   const Grid grid = Grid::plane(64, 64, 1.0, 1.0, Boundary::periodic);
   auto solver = make_solver(grid, kEStar, settings("pk-multilevel"));
-  const Eigen::ArrayXd gap = rough_gap(grid, 5);
+  const Eigen::ArrayXd gap = self_affine_gap(grid, 5);
   EXPECT_THROW(solver->solve({gap.data(), 100}, Loading::mean_pressure(0.004)), InputError);
   EXPECT_THROW(solver->solve({gap.data(), grid.size()}, Loading::force(-1.0)), InputError);
   MultilevelOptions bad;

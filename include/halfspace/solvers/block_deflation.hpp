@@ -39,9 +39,6 @@ namespace halfspace::solvers {
 
 struct BlockDeflationOptions {
   std::size_t block = 32;  // cells per block side; must divide nx and ny
-  // A is brought up to date when more than this share of the coarse set has
-  // changed since it was last (0: on every change).
-  double update_change = 0.0;
   // The most pair-sum terms per cell a full build of A may take: 190-320 on
   // the 8 % contacts of docs/performance.md (0.45 s at 2048^2, about five
   // FFT products), 9200 at 97 % contact, where the preconditioner alone
@@ -50,8 +47,8 @@ struct BlockDeflationOptions {
   double coarse_tolerance = 1e-8;
   int coarse_max_iterations = 1000;
 
-  // Throws InputError naming the option unless 1 <= block <= 256, 0 <=
-  // update_change, 0 < coarse_tolerance < 1 and coarse_max_iterations >= 1.
+  // Throws InputError naming the option unless 1 <= block <= 256,
+  // max_pair_terms > 0, 0 < coarse_tolerance < 1 and coarse_max_iterations >= 1.
   void validate() const;
 };
 
@@ -66,8 +63,11 @@ struct BlockDeflationStats {
 
 class BlockDeflation {
  public:
-  // Throws InputError unless the grid is periodic and 2D, and the block
-  // divides nx and ny leaving at least 3 blocks per axis.
+  // Whether blocks of `block` cells cover `grid`: periodic and 2D, the block
+  // dividing nx and ny and leaving at least 3 blocks per axis (fewer, and
+  // the 3 x 3 neighbourhood would meet itself across the period).
+  static bool covers(const Grid& grid, std::size_t block);
+  // Throws InputError unless covers(grid, options.block).
   BlockDeflation(const Grid& grid, BlockDeflationOptions options = {});
   ~BlockDeflation();
 
@@ -79,9 +79,9 @@ class BlockDeflation {
   void set_kernel(std::span<const double> unit_response);
 
   // Records the coarse set, in_set(i) for each cell, and brings A up to
-  // date if the set changed by more than the update share since A was last
-  // (or A was never built): from the changed cells' pair sums, or from all
-  // pairs when more than half of the set changed. A full build whose pair
+  // date if the set changed since A was last (or A was never built): from
+  // the changed cells' pair sums, or from all pairs when more than half of
+  // the set changed. A full build whose pair
   // sums would exceed max_pair_terms per cell is not made: ready() is then
   // false (dense contacts, where the correction would cost more than it
   // saves), and the next update tries again.
@@ -93,8 +93,8 @@ class BlockDeflation {
       set_[i] = static_cast<std::uint8_t>((built << 1) | now);
       return std::array<double, 2>{now != built ? 1.0 : 0.0, static_cast<double>(now)};
     });
-    if (built_ && (changed == 0.0 || changed <= options_.update_change * built_size_)) return;
-    refresh(!built_ || changed > 0.5 * size, size);
+    if (built_ && changed == 0.0) return;
+    refresh(changed > 0.5 * size);
   }
   // Whether A is built for the last update's set.
   bool ready() const { return built_; }
@@ -115,18 +115,20 @@ class BlockDeflation {
   std::size_t coarse_size() const { return blocks_x_ * blocks_y_; }
 
  private:
-  void refresh(bool full, double size);
+  // Brings A up to date with the current set, from all pairs if `full` or
+  // A was never built.
+  void refresh(bool full);
   // Lists the cells of the current set and the changed cells per block;
   // the current set becomes the built one.
   void list_cells();
   // The exact sums over cell pairs of block I and neighbour (dy, dx):
   // sum_{a in first, c in second} k(x_a - x_c).
-  struct WeightedCell {
+  struct ListedCell {
     std::uint32_t offset;  // local (row, col) as row * (4b - 1) + col, the offset in near_kernel_
-    float weight;          // 1, or -1 for a cell that left the set (in the changed lists)
+    float sign;            // 1, or -1 for a cell that left the set (in the changed lists)
   };
-  double pair_sum(const WeightedCell* first, const WeightedCell* first_end, const WeightedCell* second,
-                  const WeightedCell* second_end, int dy, int dx) const;
+  double pair_sum(const ListedCell* first, const ListedCell* first_end, const ListedCell* second,
+                  const ListedCell* second_end, int dy, int dx) const;
   void solve_coarse(bool fixed_load);
   // rhs_ = Z^T (field - minus) over the current set (minus may be empty).
   void restrict_to_blocks(std::span<const double> field, std::span<const double> minus);
@@ -138,7 +140,6 @@ class BlockDeflation {
   std::size_t blocks_x_;
   std::size_t blocks_y_;
   bool built_ = false;
-  double built_size_ = 0.0;
   // Per cell: bit 0 in the current coarse set, bit 1 in the set A was built on.
   std::vector<std::uint8_t> set_;
   // Kernel near field k(dy, dx) for |dx|, |dy| < 2b, row-major over dy.
@@ -150,7 +151,7 @@ class BlockDeflation {
   // Per block, the cells of the set A was built on (current, previous) and
   // the cells that changed between the two.
   std::vector<std::size_t> cell_start_, previous_start_, changed_start_;
-  std::vector<WeightedCell> cells_, previous_cells_, changed_cells_;
+  std::vector<ListedCell> cells_, previous_cells_, changed_cells_;
   // Far field: point loads between block centres, as a coarse-grid symbol.
   std::unique_ptr<RealFft> coarse_fft_;
   std::vector<std::complex<double>> far_symbol_;
