@@ -52,15 +52,32 @@ void BlockDeflationOptions::validate() const {
 }
 
 bool BlockDeflation::covers(const Grid& grid, std::size_t block) {
-  return grid.dimension() == 2 && grid.periodic() && block > 0 && grid.nx() % block == 0 && grid.ny() % block == 0 &&
+  return grid.dimension() == 2 && block > 0 && grid.nx() % block == 0 && grid.ny() % block == 0 &&
          grid.nx() >= kMinBlocksPerAxis * block && grid.ny() >= kMinBlocksPerAxis * block;
+}
+
+bool BlockDeflation::neighbour_block(std::size_t I, int dy, int dx, std::size_t& J) const {
+  const std::size_t iy = I / blocks_x_;
+  const std::size_t ix = I % blocks_x_;
+  if (grid_.periodic()) {
+    J = wrapped(iy, dy, blocks_y_) * blocks_x_ + wrapped(ix, dx, blocks_x_);
+    return true;
+  }
+  const auto jy = static_cast<std::ptrdiff_t>(iy) + dy;
+  const auto jx = static_cast<std::ptrdiff_t>(ix) + dx;
+  if (jy < 0 || jx < 0 || jy >= static_cast<std::ptrdiff_t>(blocks_y_) ||
+      jx >= static_cast<std::ptrdiff_t>(blocks_x_)) {
+    return false;
+  }
+  J = static_cast<std::size_t>(jy) * blocks_x_ + static_cast<std::size_t>(jx);
+  return true;
 }
 
 BlockDeflation::BlockDeflation(const Grid& grid, BlockDeflationOptions options) : grid_(grid), options_(options) {
   options_.validate();
-  if (grid_.dimension() != 2 || !grid_.periodic()) {
-    throw InputError(fmt::format("block deflation needs a periodic 2D grid, not a {} {}D grid",
-                                 to_string(grid_.boundary()), grid_.dimension()));
+  if (grid_.dimension() != 2) {
+    throw InputError(fmt::format("block deflation needs a 2D grid, not a {} {}D grid", to_string(grid_.boundary()),
+                                 grid_.dimension()));
   }
   const std::size_t b = options_.block;
   if (!covers(grid_, b)) {
@@ -78,7 +95,10 @@ BlockDeflation::BlockDeflation(const Grid& grid, BlockDeflationOptions options) 
   cell_start_.assign(m + 1, 0);
   previous_start_.assign(m + 1, 0);
   changed_start_.assign(m + 1, 0);
-  coarse_fft_ = std::make_unique<RealFft>(blocks_y_, blocks_x_, FftPlanning::estimate);
+  // A free grid's far field is a linear convolution: zero-padded to twice
+  // the blocks per axis.
+  const std::size_t pad = grid_.periodic() ? 1 : 2;
+  coarse_fft_ = std::make_unique<RealFft>(pad * blocks_y_, pad * blocks_x_, FftPlanning::estimate);
   for (auto* v : {&rhs_, &y_, &first_, &inverse_diagonal_, &residual_, &direction_, &image_, &scaled_})
     v->assign(m, 0.0);
 }
@@ -89,30 +109,48 @@ void BlockDeflation::set_kernel(std::span<const double> unit_response) {
   assert(unit_response.size() == grid_.size());
   const std::size_t nx = grid_.nx();
   const std::size_t ny = grid_.ny();
-  const auto b = static_cast<int>(options_.block);
-  const int reach = 2 * b - 1;
+  const bool periodic = grid_.periodic();
+  // k at offset (dy, dx) cells: read from K e_0 across the period on a
+  // periodic grid; on a free one K e_0 holds the offsets >= 0 and k is even
+  // in each (Love's rectangle coefficients).
+  auto kernel = [&](std::ptrdiff_t dy, std::ptrdiff_t dx) {
+    if (periodic)
+      return unit_response[wrapped(0, static_cast<int>(dy), ny) * nx + wrapped(0, static_cast<int>(dx), nx)];
+    return unit_response[static_cast<std::size_t>(std::abs(dy)) * nx + static_cast<std::size_t>(std::abs(dx))];
+  };
+  const auto b = static_cast<std::ptrdiff_t>(options_.block);
+  const std::ptrdiff_t reach = 2 * b - 1;
   const auto side = static_cast<std::size_t>(2 * reach + 1);
   near_kernel_.assign(side * side, 0.0);
-  for (int dy = -reach; dy <= reach; ++dy) {
-    for (int dx = -reach; dx <= reach; ++dx) {
-      near_kernel_[static_cast<std::size_t>(dy + reach) * side + static_cast<std::size_t>(dx + reach)] =
-          unit_response[wrapped(0, dy, ny) * nx + wrapped(0, dx, nx)];
+  for (std::ptrdiff_t dy = -reach; dy <= reach; ++dy) {
+    for (std::ptrdiff_t dx = -reach; dx <= reach; ++dx) {
+      near_kernel_[static_cast<std::size_t>(dy + reach) * side + static_cast<std::size_t>(dx + reach)] = kernel(dy, dx);
     }
   }
-  // Point loads between block centres beyond the neighbours; the coarse
-  // transform is unnormalised, so 1/m goes into the symbol.
+  // Point loads between block centres beyond the neighbours, at the coarse
+  // offsets (jy, jx) of the (padded) coarse grid; the coarse transform is
+  // unnormalised, so 1/size goes into the symbol.
+  const std::size_t rows = coarse_fft_->rows();
+  const std::size_t cols = coarse_fft_->cols();
+  auto signed_offset = [](std::size_t j, std::size_t count) {
+    return j <= count / 2 ? static_cast<std::ptrdiff_t>(j)
+                          : static_cast<std::ptrdiff_t>(j) - static_cast<std::ptrdiff_t>(count);
+  };
   std::span<double> far = coarse_fft_->input();
-  for (std::size_t jy = 0; jy < blocks_y_; ++jy) {
-    for (std::size_t jx = 0; jx < blocks_x_; ++jx) {
-      const bool near_y = jy <= 1 || jy + 1 == blocks_y_;
-      const bool near_x = jx <= 1 || jx + 1 == blocks_x_;
-      far[jy * blocks_x_ + jx] =
-          near_y && near_x ? 0.0 : unit_response[(jy * options_.block) * nx + jx * options_.block];
+  for (std::size_t jy = 0; jy < rows; ++jy) {
+    for (std::size_t jx = 0; jx < cols; ++jx) {
+      const std::ptrdiff_t sy = signed_offset(jy, rows);
+      const std::ptrdiff_t sx = signed_offset(jx, cols);
+      const bool near = std::abs(sy) <= 1 && std::abs(sx) <= 1;
+      // Padding: offsets of a whole grid or more do not occur.
+      const bool reachable = periodic || (std::abs(sy) < static_cast<std::ptrdiff_t>(blocks_y_) &&
+                                          std::abs(sx) < static_cast<std::ptrdiff_t>(blocks_x_));
+      far[jy * cols + jx] = near || !reachable ? 0.0 : kernel(sy * b, sx * b);
     }
   }
   coarse_fft_->forward();
   const std::span<const std::complex<double>> spectrum = coarse_fft_->spectrum();
-  const double scale = 1.0 / static_cast<double>(coarse_size());
+  const double scale = 1.0 / static_cast<double>(rows * cols);
   far_symbol_.resize(spectrum.size());
   for (std::size_t k = 0; k < spectrum.size(); ++k) far_symbol_[k] = spectrum[k] * scale;
 }
@@ -202,11 +240,10 @@ void BlockDeflation::refresh(bool full) {
   if (full) {
     double terms = 0.0;
     for (std::size_t I = 0; I < coarse_size(); ++I) {
-      const std::size_t iy = I / blocks_x_;
-      const std::size_t ix = I % blocks_x_;
       for (int dy = -1; dy <= 1; ++dy) {
         for (int dx = -1; dx <= 1; ++dx) {
-          terms += counts_[I] * counts_[wrapped(iy, dy, blocks_y_) * blocks_x_ + wrapped(ix, dx, blocks_x_)];
+          std::size_t J = 0;
+          if (neighbour_block(I, dy, dx, J)) terms += counts_[I] * counts_[J];
         }
       }
     }
@@ -223,11 +260,10 @@ void BlockDeflation::refresh(bool full) {
 #pragma omp parallel for schedule(dynamic, 16)
   for (std::ptrdiff_t index = 0; index < blocks; ++index) {
     const auto I = static_cast<std::size_t>(index);
-    const std::size_t iy = I / blocks_x_;
-    const std::size_t ix = I % blocks_x_;
     for (int dy = -1; dy <= 1; ++dy) {
       for (int dx = -1; dx <= 1; ++dx) {
-        const std::size_t J = wrapped(iy, dy, blocks_y_) * blocks_x_ + wrapped(ix, dx, blocks_x_);
+        std::size_t J = 0;
+        if (!neighbour_block(I, dy, dx, J)) continue;  // beyond a free grid's edge: the entry stays zero
         double& entry = near_[I * 9 + neighbour(dy, dx)];
         const ListedCell* j_begin = cells + cell_start_[J];
         const ListedCell* j_end = cells + cell_start_[J + 1];
@@ -250,9 +286,15 @@ void BlockDeflation::refresh(bool full) {
 }
 
 void BlockDeflation::apply_coarse(std::span<const double> y, std::span<double> out) {
-  const std::size_t m = coarse_size();
+  const std::size_t cols = coarse_fft_->cols();
   std::span<double> far = coarse_fft_->input();
-  for (std::size_t k = 0; k < m; ++k) far[k] = counts_[k] * y[k];
+  if (!grid_.periodic()) std::fill(far.begin(), far.end(), 0.0);  // the padding
+  for (std::size_t iy = 0; iy < blocks_y_; ++iy) {
+    for (std::size_t ix = 0; ix < blocks_x_; ++ix) {
+      const std::size_t I = iy * blocks_x_ + ix;
+      far[iy * cols + ix] = counts_[I] * y[I];
+    }
+  }
   coarse_fft_->forward();
   std::span<std::complex<double>> spectrum = coarse_fft_->spectrum();
   for (std::size_t k = 0; k < spectrum.size(); ++k) spectrum[k] *= far_symbol_[k];
@@ -261,11 +303,11 @@ void BlockDeflation::apply_coarse(std::span<const double> y, std::span<double> o
   for (std::size_t iy = 0; iy < blocks_y_; ++iy) {
     for (std::size_t ix = 0; ix < blocks_x_; ++ix) {
       const std::size_t I = iy * blocks_x_ + ix;
-      double total = counts_[I] * response[I];
+      double total = counts_[I] * response[iy * cols + ix];
       for (int dy = -1; dy <= 1; ++dy) {
         for (int dx = -1; dx <= 1; ++dx) {
-          const std::size_t J = wrapped(iy, dy, blocks_y_) * blocks_x_ + wrapped(ix, dx, blocks_x_);
-          total += near_[I * 9 + neighbour(dy, dx)] * y[J];
+          std::size_t J = 0;
+          if (neighbour_block(I, dy, dx, J)) total += near_[I * 9 + neighbour(dy, dx)] * y[J];
         }
       }
       out[I] = total;

@@ -281,7 +281,7 @@ INSTANTIATE_TEST_SUITE_P(
                  {{"--solver", "lcpquad"}, {"--max-iter", "5"}},
                  "--max-iter 5 does not apply to solver 'lcpquad'"},
         BadInput{"NegativeDeflationBlock", {}, {{"--deflation-block", "-1"}}, "--deflation-block -1 is invalid"},
-        BadInput{"DeflationOnFreeGrid", {}, {{"--deflation-block", "8"}}, "needs a periodic 2D grid"},
+        BadInput{"DeflationBlockNotDividing", {}, {{"--deflation-block", "12"}}, "it must divide nx and ny"},
         BadInput{"DeflationWithPlainPk",
                  {},
                  {{"--deflation-block", "8"}, {"--solver", "pk"}},

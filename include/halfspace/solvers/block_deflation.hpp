@@ -1,5 +1,5 @@
-// A coarse-grid correction for preconditioned Polonsky-Keer on periodic 2D
-// grids: deflation by b x b blocks of the contact cells.
+// A coarse-grid correction for preconditioned Polonsky-Keer on 2D grids,
+// periodic or free: deflation by b x b blocks of the contact cells.
 //
 // On a large rough contact the Fourier preconditioner M^-1 overestimates the
 // response to smooth pressure modulations spread across many small spots, so
@@ -63,9 +63,10 @@ struct BlockDeflationStats {
 
 class BlockDeflation {
  public:
-  // Whether blocks of `block` cells cover `grid`: periodic and 2D, the block
-  // dividing nx and ny and leaving at least 3 blocks per axis (fewer, and
-  // the 3 x 3 neighbourhood would meet itself across the period).
+  // Whether blocks of `block` cells cover `grid`: 2D, periodic or free, the
+  // block dividing nx and ny and leaving at least 3 blocks per axis (fewer,
+  // and on a periodic grid the 3 x 3 neighbourhood would meet itself across
+  // the period).
   static bool covers(const Grid& grid, std::size_t block);
   // Throws InputError unless covers(grid, options.block).
   BlockDeflation(const Grid& grid, BlockDeflationOptions options = {});
@@ -115,6 +116,9 @@ class BlockDeflation {
   std::size_t coarse_size() const { return blocks_x_ * blocks_y_; }
 
  private:
+  // J = the block at (dy, dx) in {-1, 0, 1}^2 from block I: across the
+  // period on a periodic grid; false beyond the edge of a free one.
+  bool neighbour_block(std::size_t I, int dy, int dx, std::size_t& J) const;
   // Brings A up to date with the current set, from all pairs if `full` or
   // A was never built.
   void refresh(bool full);
@@ -152,7 +156,8 @@ class BlockDeflation {
   // the cells that changed between the two.
   std::vector<std::size_t> cell_start_, previous_start_, changed_start_;
   std::vector<ListedCell> cells_, previous_cells_, changed_cells_;
-  // Far field: point loads between block centres, as a coarse-grid symbol.
+  // Far field: point loads between block centres, as a coarse-grid symbol
+  // (zero-padded to 2 x 2 times the blocks on a free grid).
   std::unique_ptr<RealFft> coarse_fft_;
   std::vector<std::complex<double>> far_symbol_;
   // Coarse CG vectors.
