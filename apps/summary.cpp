@@ -90,7 +90,9 @@ void print_summary(std::FILE* out, const SolveSetup& setup, const SolveResult& r
             ? fmt::format("{0}x{0} blocks, in {1} of {2} iterations ({3} coarse CG steps)", d.block,
                           d.deflated_iterations, result.iterations, d.coarse_iterations)
             : fmt::format("{0}x{0} blocks, not used ({1})", d.block,
-                          d.declined > 0 ? "contact too dense for its coarse matrix" : "contact set never settled"));
+                          d.declined > 0      ? "contact too dense for its coarse matrix"
+                          : d.fast_rate > 0.0 ? fmt::format("fast without it: {:.2f} per iteration", d.fast_rate)
+                                              : "contact set never settled"));
   }
   row(out, "residual", fmt::format("{:.3e} (tolerance {:.3e})", result.residual, result.tolerance));
   row(out, "total force", fmt::format("{:.6g} {}", result.total_force, force_unit(grid)));

@@ -274,6 +274,7 @@ void write_summary(hid_t root, const Grid& grid, const SolveResult& result, cons
   attach_int64(root, "deflation_block", static_cast<std::int64_t>(result.deflation.block));
   attach_int64(root, "deflated_iterations", result.deflation.deflated_iterations);
   attach_int64(root, "deflation_declined", result.deflation.declined);
+  attach_double(root, "undeflated_rate", result.deflation.fast_rate);
   attach_double(root, "residual", result.residual);
   attach_double(root, "tolerance", result.tolerance);
   attach_double(root, "solve_seconds", result.wall_seconds);

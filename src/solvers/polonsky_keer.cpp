@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 #include <utility>
+#include <vector>
 
 #include "halfspace/error.hpp"
 #include "halfspace/linalg/parallel.hpp"
@@ -37,6 +38,14 @@ constexpr double kEntriesKept = 0.01;
 // the correction takes the iterations' rate from 0.7-0.75 to about 0.3
 // (docs/performance.md).
 constexpr double kDeflateBelowClipped = 0.01;
+// ... and only where the iteration without it is slow: a deflated iteration
+// costs about twice as many products and converges at about 0.3 per
+// iteration, which pays against a rate above 0.3^(1/2) = 0.55, measured
+// over two settled undeflated steps. Rough contacts run at 0.7-0.8 there; a
+// Hertz contact at 0.2-0.4, where deflation saved one iteration in ten and
+// doubled the time (docs/performance.md).
+constexpr double kDeflateAboveRate = 0.55;
+constexpr int kRateSteps = 2;
 
 struct Problem {
   std::span<const double> initial_gap;
@@ -229,8 +238,10 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
   const BlockDeflationStats deflation_before = deflation_ ? deflation_->stats() : BlockDeflationStats{};
   double clipped_before = std::numeric_limits<double>::infinity();
   double searched_before = 0.0;
-  double previous_norm = 1.0;  // G_old
-  bool conjugate = false;      // delta: false right after a reset
+  int settled_steps = 0;        // consecutive undeflated steps that clipped little
+  bool deflation_pays = false;  // their rate was slow (kDeflateAboveRate)
+  double previous_norm = 1.0;   // G_old
+  bool conjugate = false;       // delta: false right after a reset
   double approach = problem.approach;
   double residual = 0.0;
   double contact_cells = 0.0;
@@ -360,8 +371,14 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
       z = r;
       // The coarse correction joins once clipping has died down; a change
       // of preconditioner restarts the conjugate directions.
-      bool deflate =
-          deflation_ != nullptr && !deflation_declined && clipped_before <= kDeflateBelowClipped * searched_before;
+      if (deflation_ != nullptr && !deflation_pays && settled_steps >= kRateSteps) {
+        const std::vector<double>& history = result.residual_history;
+        const double ratio = history.back() / history[history.size() - 1 - kRateSteps];
+        const double rate = std::pow(ratio, 1.0 / kRateSteps);
+        deflation_pays = rate > kDeflateAboveRate;
+        result.deflation.fast_rate = deflation_pays ? 0.0 : rate;
+      }
+      bool deflate = deflation_pays && !deflation_declined && clipped_before <= kDeflateBelowClipped * searched_before;
       if (deflate) {
         deflation_->update([&](std::size_t i) { return p[i] > 0.0; });
         deflation_declined = !deflation_->ready();  // too dense a contact: not in this solve
@@ -458,6 +475,7 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
     conjugate = entered <= entries_kept && tau > 0.0;
     clipped_before = corrected;
     searched_before = search_cells;
+    settled_steps = !deflating && corrected <= kDeflateBelowClipped * search_cells ? settled_steps + 1 : 0;
     if (corrected > 0.0) {
       // g is recomputed from u in step 1, so it can hold K c until then.
       op_.apply({r, n}, {g, n});

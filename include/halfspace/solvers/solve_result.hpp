@@ -40,6 +40,10 @@ struct DeflationRecord {
   int updates = 0;
   int declined = 0;
   long coarse_iterations = 0;
+  // The rate per iteration of the last two settled steps without the
+  // correction, when it was measured and found fast (it then stays off):
+  // 0 if never measured or if the correction joined.
+  double fast_rate = 0.0;
 };
 
 struct SolveResult {
