@@ -90,10 +90,6 @@ PolonskyKeer::PolonskyKeer(InfluenceOperator& op, PolonskyKeerOptions options, P
   const auto n = static_cast<Eigen::Index>(op_.grid().size());
   direction_.setZero(n);
   direction_image_.setZero(n);
-  if (deflation_) {
-    coarse_field_.setZero(n);
-    coarse_image_.setZero(n);
-  }
 }
 
 SolveResult PolonskyKeer::solve(std::span<const double> initial_gap, const Loading& loading,
@@ -200,14 +196,6 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
   const std::span<const double> pressure_view(p, n);
   const std::span<double> displacement_view(u, n);
   const double k_self = op_.self_influence();
-  if (deflation_ && !kernel_known_) {
-    // The kernel in real space, K e_0, for the coarse matrix.
-    for_each_index(n, [&](std::size_t i) { t[i] = i == 0 ? 1.0 : 0.0; });
-    op_.apply({t, n}, {r, n});
-    ++result.operator_applications;
-    deflation_->set_kernel({r, n});
-    kernel_known_ = true;
-  }
 
   // Step 0: starting pressure. Load control: the warm start or a uniform
   // pressure, scaled to the target force. Displacement control: the warm
@@ -379,6 +367,19 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
         result.deflation.fast_rate = deflation_pays ? 0.0 : rate;
       }
       bool deflate = deflation_pays && !deflation_declined && clipped_before <= kDeflateBelowClipped * searched_before;
+      if (deflate && !kernel_known_) {
+        // The correction's two fields, and the kernel in real space, K e_0,
+        // for the coarse matrix: once per solver, when first needed, so that
+        // a solve that never deflates holds neither (16 B per cell).
+        coarse_field_.setZero(static_cast<Eigen::Index>(n));
+        coarse_image_.setZero(static_cast<Eigen::Index>(n));
+        double* unit = coarse_field_.data();
+        for_each_index(n, [&](std::size_t i) { unit[i] = i == 0 ? 1.0 : 0.0; });
+        op_.apply({unit, n}, {coarse_image_.data(), n});
+        ++result.operator_applications;
+        deflation_->set_kernel({coarse_image_.data(), n});
+        kernel_known_ = true;
+      }
       if (deflate) {
         deflation_->update([&](std::size_t i) { return p[i] > 0.0; });
         deflation_declined = !deflation_->ready();  // too dense a contact: not in this solve

@@ -100,7 +100,7 @@ TEST(DeflatedSolverRateTest, StaysOffWhereTheIterationIsFastWithoutIt) {
   EXPECT_GT(deflated.deflation.fast_rate, 0.0);
   EXPECT_LE(deflated.deflation.fast_rate, 0.55);
   EXPECT_EQ(deflated.iterations, plain.iterations);
-  EXPECT_EQ(deflated.operator_applications, plain.operator_applications + 1) << "K e_0 for the coarse matrix";
+  EXPECT_EQ(deflated.operator_applications, plain.operator_applications) << "not even K e_0 for the coarse matrix";
   EXPECT_LE((deflated.pressure - plain.pressure).abs().maxCoeff(), 1e-12 * plain.max_pressure);
 }
 

@@ -74,7 +74,8 @@ struct PolonskyKeerOptions {
 class PolonskyKeer final : public ContactSolver {
  public:
   // Keeps a reference to `op` (which must outlive the solver) and allocates
-  // the workspace once; solve() then allocates nothing inside its loop.
+  // the workspace once; solve() then allocates nothing inside its loop but
+  // the deflation's two fields, once per solver when it first joins.
   // `preconditioner`, if given, must outlive the solver too, and so must
   // `deflation`, which needs a preconditioner and the operator's grid.
   explicit PolonskyKeer(InfluenceOperator& op, PolonskyKeerOptions options = {},
@@ -105,12 +106,12 @@ class PolonskyKeer final : public ContactSolver {
   PolonskyKeerOptions options_;
   Preconditioner* preconditioner_;
   BlockDeflation* deflation_;
-  bool kernel_known_ = false;  // deflation_ has the kernel (one product, on the first solve)
+  bool kernel_known_ = false;  // deflation_ has the kernel (one product, when first deflating)
   // Workspace, one entry per cell.
   Eigen::ArrayXd direction_;        // conjugate direction t
   Eigen::ArrayXd direction_image_;  // K t, and M^-1 g before it is needed
-  // With deflation only: the coarse correction Z y as a field, and K of it
-  // (then K of M^-1's output).
+  // With deflation only, made when it first joins: the coarse correction
+  // Z y as a field, and K of it (then K of M^-1's output).
   Eigen::ArrayXd coarse_field_;
   Eigen::ArrayXd coarse_image_;
 };
