@@ -91,6 +91,7 @@ BlockDeflation::BlockDeflation(const Grid& grid, BlockDeflationOptions options) 
   const std::size_t m = coarse_size();
   set_.assign(grid_.size(), 0);
   counts_.assign(m, 0.0);
+  block_counts_.assign(m, 0.0);
   near_.assign(9 * m, 0.0);
   cell_start_.assign(m + 1, 0);
   previous_start_.assign(m + 1, 0);
@@ -229,6 +230,19 @@ double BlockDeflation::pair_sum(const ListedCell* first, const ListedCell* first
   return total;
 }
 
+bool BlockDeflation::too_many_pair_terms(const std::vector<double>& counts) const {
+  double terms = 0.0;
+  for (std::size_t I = 0; I < coarse_size(); ++I) {
+    for (int dy = -1; dy <= 1; ++dy) {
+      for (int dx = -1; dx <= 1; ++dx) {
+        std::size_t J = 0;
+        if (neighbour_block(I, dy, dx, J)) terms += counts[I] * counts[J];
+      }
+    }
+  }
+  return terms > options_.max_pair_terms * static_cast<double>(grid_.size());
+}
+
 // Full: A_IJ = sum over S_I x S_J of k. Update, with chi' = chi + delta the
 // new set's indicator: A'_IJ - A_IJ = sum delta_a chi'_c k + sum chi_a
 // delta_c k, i.e. the changed cells of I (with the sign of the change)
@@ -237,21 +251,10 @@ void BlockDeflation::refresh(bool full) {
   if (near_kernel_.empty()) throw std::logic_error("BlockDeflation::update before set_kernel");
   full = full || !built_;
   list_cells();
-  if (full) {
-    double terms = 0.0;
-    for (std::size_t I = 0; I < coarse_size(); ++I) {
-      for (int dy = -1; dy <= 1; ++dy) {
-        for (int dx = -1; dx <= 1; ++dx) {
-          std::size_t J = 0;
-          if (neighbour_block(I, dy, dx, J)) terms += counts_[I] * counts_[J];
-        }
-      }
-    }
-    if (terms > options_.max_pair_terms * static_cast<double>(grid_.size())) {
-      built_ = false;
-      ++stats_.declined;
-      return;
-    }
+  if (full && too_many_pair_terms(counts_)) {
+    built_ = false;
+    ++stats_.declined;
+    return;
   }
   const ListedCell* cells = cells_.data();
   const ListedCell* previous = previous_cells_.data();

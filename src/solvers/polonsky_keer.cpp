@@ -367,6 +367,10 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
         result.deflation.fast_rate = deflation_pays ? 0.0 : rate;
       }
       bool deflate = deflation_pays && !deflation_declined && clipped_before <= kDeflateBelowClipped * searched_before;
+      if (deflate && !kernel_known_ && deflation_->decline_if_dense([&](std::size_t i) { return p[i] > 0.0; })) {
+        deflate = false;  // too dense a contact: not in this solve, and no kernel or fields made for it
+        deflation_declined = true;
+      }
       if (deflate && !kernel_known_) {
         // The correction's two fields, and the kernel in real space, K e_0,
         // for the coarse matrix: once per solver, when first needed, so that

@@ -260,6 +260,12 @@ TEST(BlockDeflationTest, DeclinesDenseContacts) {
   // Per cell 9 n_B: 576 at full contact, about 52 at 30 %.
   options.max_pair_terms = 288.0;
   BlockDeflation deflation(grid, options);
+  // The same decision before the kernel is known.
+  EXPECT_TRUE(deflation.decline_if_dense([](std::size_t) { return true; }));
+  EXPECT_EQ(deflation.stats().declined, 1);
+  const std::vector<std::uint8_t> sparse_set = random_set(grid.size(), 0.3, 9);
+  EXPECT_FALSE(deflation.decline_if_dense([&](std::size_t i) { return sparse_set[i] != 0; }));
+  EXPECT_EQ(deflation.stats().declined, 1);
   FftInfluenceOperator op(grid, kEStar);
   std::vector<double> unit(grid.size(), 0.0);
   std::vector<double> response(grid.size());
@@ -268,7 +274,7 @@ TEST(BlockDeflationTest, DeclinesDenseContacts) {
   deflation.set_kernel(response);
   deflation.update([](std::size_t) { return true; });
   EXPECT_FALSE(deflation.ready());
-  EXPECT_EQ(deflation.stats().declined, 1);
+  EXPECT_EQ(deflation.stats().declined, 2);
   const std::vector<std::uint8_t> sparse = random_set(grid.size(), 0.3, 9);
   deflation.update([&](std::size_t i) { return sparse[i] != 0; });
   EXPECT_TRUE(deflation.ready());

@@ -100,6 +100,28 @@ class BlockDeflation {
   // Whether A is built for the last update's set.
   bool ready() const { return built_; }
 
+  // Whether a full build of A for the set in_set(i) would be declined (see
+  // update), counted as declined if so: one pass over the cells, no kernel
+  // needed, so that a caller can skip making the kernel for a dense contact.
+  template <class InSet>
+  bool decline_if_dense(InSet&& in_set) {
+    const std::size_t b = options_.block;
+    const std::size_t nx = grid_.nx();
+    linalg::for_each_row(blocks_y_, b * nx, [&](std::size_t by) {
+      for (std::size_t bx = 0; bx < blocks_x_; ++bx) {
+        std::size_t in = 0;
+        for (std::size_t r = 0; r < b; ++r) {
+          const std::size_t begin = (by * b + r) * nx + bx * b;
+          for (std::size_t i = begin; i < begin + b; ++i) in += in_set(i) ? 1 : 0;
+        }
+        block_counts_[by * blocks_x_ + bx] = static_cast<double>(in);
+      }
+    });
+    if (!too_many_pair_terms(block_counts_)) return false;
+    ++stats_.declined;
+    return true;
+  }
+
   // The balancing form, z = Q r + (I - Q K) M^-1 (I - K Q) r with Q = Z A^-1
   // Z^T, in two halves around M^-1: pre_correction solves y1 = A^-1 Z^T r
   // and writes Z y1 into `field` (zero off the set), whose image K Z y1 the
@@ -119,6 +141,9 @@ class BlockDeflation {
   // J = the block at (dy, dx) in {-1, 0, 1}^2 from block I: across the
   // period on a periodic grid; false beyond the edge of a free one.
   bool neighbour_block(std::size_t I, int dy, int dx, std::size_t& J) const;
+  // Whether the pair sums of a full build with these cells per block exceed
+  // max_pair_terms per cell.
+  bool too_many_pair_terms(const std::vector<double>& counts) const;
   // Brings A up to date with the current set, from all pairs if `full` or
   // A was never built.
   void refresh(bool full);
@@ -151,6 +176,7 @@ class BlockDeflation {
   // Per block: its cells in the set, n_I, and the 3 x 3 exact block sums
   // (neighbour (dy, dx) at (dy + 1) * 3 + dx + 1).
   std::vector<double> counts_;
+  std::vector<double> block_counts_;  // decline_if_dense's counts
   std::vector<double> near_;
   // Per block, the cells of the set A was built on (current, previous) and
   // the cells that changed between the two.
