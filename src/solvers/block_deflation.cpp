@@ -154,6 +154,8 @@ void BlockDeflation::set_kernel(std::span<const double> unit_response) {
   const double scale = 1.0 / static_cast<double>(rows * cols);
   far_symbol_.resize(spectrum.size());
   for (std::size_t k = 0; k < spectrum.size(); ++k) far_symbol_[k] = spectrum[k] * scale;
+  // apply_coarse writes the blocks only: a free grid's padding stays zero.
+  std::fill(far.begin(), far.end(), 0.0);
 }
 
 void BlockDeflation::list_cells() {
@@ -291,7 +293,6 @@ void BlockDeflation::refresh(bool full) {
 void BlockDeflation::apply_coarse(std::span<const double> y, std::span<double> out) {
   const std::size_t cols = coarse_fft_->cols();
   std::span<double> far = coarse_fft_->input();
-  if (!grid_.periodic()) std::fill(far.begin(), far.end(), 0.0);  // the padding
   for (std::size_t iy = 0; iy < blocks_y_; ++iy) {
     for (std::size_t ix = 0; ix < blocks_x_; ++ix) {
       const std::size_t I = iy * blocks_x_ + ix;

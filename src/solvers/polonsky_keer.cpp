@@ -367,7 +367,8 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
         result.deflation.fast_rate = deflation_pays ? 0.0 : rate;
       }
       bool deflate = deflation_pays && !deflation_declined && clipped_before <= kDeflateBelowClipped * searched_before;
-      if (deflate && !kernel_known_ && deflation_->decline_if_dense([&](std::size_t i) { return p[i] > 0.0; })) {
+      auto in_contact = [&](std::size_t i) { return p[i] > 0.0; };  // the coarse functions' cells
+      if (deflate && !kernel_known_ && deflation_->decline_if_dense(in_contact)) {
         deflate = false;  // too dense a contact: not in this solve, and no kernel or fields made for it
         deflation_declined = true;
       }
@@ -385,7 +386,7 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
         kernel_known_ = true;
       }
       if (deflate) {
-        deflation_->update([&](std::size_t i) { return p[i] > 0.0; });
+        deflation_->update(in_contact);
         deflation_declined = !deflation_->ready();  // too dense a contact: not in this solve
         deflate = !deflation_declined;
       }
