@@ -152,13 +152,18 @@ Eigen::MatrixXd assemble_influence_matrix(const Grid& grid, double e_star) {
 }
 
 DenseInfluenceOperator::DenseInfluenceOperator(const Grid& grid, double e_star)
-    : grid_(grid), matrix_(assemble_influence_matrix(grid, e_star)) {}
+    : grid_(grid), matrix_(assemble_influence_matrix(grid, e_star)), product_(matrix_.rows()) {}
 
 void DenseInfluenceOperator::apply(std::span<const double> pressure, std::span<double> displacement) {
   const auto n = static_cast<Eigen::Index>(grid_.size());
   assert(pressure.size() == grid_.size() && displacement.size() == grid_.size());
   const Eigen::Map<const Eigen::VectorXd> p(pressure.data(), n);
   Eigen::Map<Eigen::VectorXd> u(displacement.data(), n);
+  if (pressure.data() == displacement.data()) {
+    product_.noalias() = matrix_ * p;
+    u = product_;
+    return;
+  }
   u.noalias() = matrix_ * p;
 }
 

@@ -117,8 +117,9 @@ void PolonskyKeer::apply_balancing(bool load_controlled, InSearch&& in_search, S
   const std::size_t n = op_.grid().size();
   const double* g = result.gap.data();
   double* z = direction_image_.data();
+  // One field holds Z y1, then its image (K in place), then K of M^-1's
+  // output: post_correction needs the coarse y1 alone, which it keeps.
   double* field = coarse_field_.data();
-  double* image = coarse_image_.data();
   const auto [count, gap_sum] = sums<2>(n, [&](std::size_t i) {
     const double inside = in_search(i) ? 1.0 : 0.0;
     return std::array<double, 2>{inside, inside * g[i]};
@@ -137,15 +138,15 @@ void PolonskyKeer::apply_balancing(bool load_controlled, InSearch&& in_search, S
         n, [&](std::size_t i) { values[i] = in_search(i) ? values[i] - (minus ? minus[i] : 0.0) - mean : 0.0; });
   };
   deflation_->pre_correction({z, n}, {field, n}, load_controlled);
-  op_.apply({field, n}, {image, n});
+  op_.apply({field, n}, {field, n});
   ++result.operator_applications;
-  onto_set(z, image);
+  onto_set(z, field);
   preconditioner_->apply({z, n}, {z, n});
   ++result.preconditioner_applications;
   onto_set(z, nullptr);
-  op_.apply({z, n}, {image, n});
+  op_.apply({z, n}, {field, n});
   ++result.operator_applications;
-  deflation_->post_correction({image, n}, {z, n}, load_controlled);
+  deflation_->post_correction({field, n}, {z, n}, load_controlled);
 }
 
 SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading& loading, Eigen::ArrayXd pressure,
@@ -373,16 +374,15 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
         deflation_declined = true;
       }
       if (deflate && !kernel_known_) {
-        // The correction's two fields, and the kernel in real space, K e_0,
-        // for the coarse matrix: once per solver, when first needed, so that
-        // a solve that never deflates holds neither (16 B per cell).
+        // The correction's field, and the kernel in real space, K e_0, for
+        // the coarse matrix: once per solver, when first needed, so that a
+        // solve that never deflates holds neither (8 B per cell).
         coarse_field_.setZero(static_cast<Eigen::Index>(n));
-        coarse_image_.setZero(static_cast<Eigen::Index>(n));
         double* unit = coarse_field_.data();
         for_each_index(n, [&](std::size_t i) { unit[i] = i == 0 ? 1.0 : 0.0; });
-        op_.apply({unit, n}, {coarse_image_.data(), n});
+        op_.apply({unit, n}, {unit, n});
         ++result.operator_applications;
-        deflation_->set_kernel({coarse_image_.data(), n});
+        deflation_->set_kernel({unit, n});
         kernel_known_ = true;
       }
       if (deflate) {

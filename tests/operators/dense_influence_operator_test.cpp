@@ -1,5 +1,6 @@
 // The assembled influence matrix: entries from the kernels, symmetry,
-// definiteness, zero-mean periodic columns, apply, and the size limit.
+// definiteness, zero-mean periodic columns, apply (also in place), and the
+// size limit.
 #include "halfspace/operators/dense_influence_operator.hpp"
 
 #include <gtest/gtest.h>
@@ -98,6 +99,18 @@ TEST(DenseInfluenceOperatorTest, ApplyIsMatrixVectorProduct) {
   const auto error = testing::max_error(displacement, expected);
   EXPECT_LE(error.relative, kProductTolerance) << "at cell " << error.index;
   EXPECT_EQ(op.self_influence(), op.matrix()(0, 0));
+}
+
+TEST(DenseInfluenceOperatorTest, InPlaceApplyGivesTheSameResult) {
+  // The product goes through the operator's own vector: written straight
+  // into the input, later rows would read already overwritten pressures.
+  const Grid grid = Grid::plane(6, 5, 1e-6, 1e-6, Boundary::periodic);
+  DenseInfluenceOperator op(grid, kEStar);
+  std::vector<double> field = testing::random_field(grid.size(), 4);
+  std::vector<double> expected(grid.size());
+  op.apply(field, expected);
+  op.apply(field, field);
+  EXPECT_EQ(field, expected);
 }
 
 TEST(DenseInfluenceOperatorTest, RefusesTooLargeGrid) {

@@ -32,6 +32,7 @@ class DenseInfluenceOperator final : public InfluenceOperator {
  private:
   Grid grid_;
   Eigen::MatrixXd matrix_;
+  Eigen::VectorXd product_;  // K p when applied in place
 };
 
 }  // namespace halfspace

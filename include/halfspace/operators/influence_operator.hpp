@@ -18,7 +18,8 @@ class InfluenceOperator {
 
   // displacement = K * pressure: normal surface displacement (m, positive into
   // the half-space) for piecewise-constant cell pressures (Pa). Both spans have
-  // grid().size() entries and must not overlap. For periodic grids the mean
+  // grid().size() entries and are either the same array (in place, which
+  // saves a caller one field) or do not overlap. For periodic grids the mean
   // (q = 0) mode of the displacement is zero. Allocates nothing.
   virtual void apply(std::span<const double> pressure, std::span<double> displacement) = 0;
 

@@ -75,7 +75,7 @@ class PolonskyKeer final : public ContactSolver {
  public:
   // Keeps a reference to `op` (which must outlive the solver) and allocates
   // the workspace once; solve() then allocates nothing inside its loop but
-  // the deflation's two fields, once per solver when it first joins.
+  // the deflation's field, once per solver when it first joins.
   // `preconditioner`, if given, must outlive the solver too, and so must
   // `deflation`, which needs a preconditioner and the operator's grid.
   explicit PolonskyKeer(InfluenceOperator& op, PolonskyKeerOptions options = {},
@@ -111,9 +111,8 @@ class PolonskyKeer final : public ContactSolver {
   Eigen::ArrayXd direction_;        // conjugate direction t
   Eigen::ArrayXd direction_image_;  // K t, and M^-1 g before it is needed
   // With deflation only, made when it first joins: the coarse correction
-  // Z y as a field, and K of it (then K of M^-1's output).
+  // Z y as a field, then K of it, then K of M^-1's output (apply_balancing).
   Eigen::ArrayXd coarse_field_;
-  Eigen::ArrayXd coarse_image_;
 };
 
 }  // namespace halfspace::solvers
