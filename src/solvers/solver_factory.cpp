@@ -87,10 +87,10 @@ std::unique_ptr<ContactSolver> make_polonsky_keer(const Grid& grid, double e_sta
 }
 
 // Whether pk-multilevel's fine grid gets the coarse correction: as asked,
-// or by default where the default block applies.
+// or by default.
 bool deflated(const Grid& grid, const SolverSettings& settings) {
   if (settings.deflation_block) return *settings.deflation_block > 0;
-  return BlockDeflation::covers(grid, kDefaultDeflationBlock);
+  return default_deflation(grid);
 }
 
 // Fourier-preconditioned Polonsky-Keer with Powell restarts on every level.
@@ -118,6 +118,10 @@ std::unique_ptr<ContactSolver> make_dense(const Grid& grid, double e_star, const
 }
 
 }  // namespace
+
+bool default_deflation(const Grid& grid) {
+  return grid.size() >= kDefaultDeflationFromCells && BlockDeflation::covers(grid, kDefaultDeflationBlock);
+}
 
 std::vector<std::string> solver_names() {
   return {"pk-multilevel", "pk-fourier", "pk", "lemke", "lcpquad"};

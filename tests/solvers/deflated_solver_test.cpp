@@ -122,5 +122,20 @@ TEST(DeflatedSolverRefusalTest, RefusesSolversAndGridsWithoutIt) {
                InputError);
 }
 
+TEST(DeflatedSolverDefaultTest, JoinsFrom2048SquaredCellsOnBothBoundaries) {
+  // The default follows the measured break-even (kDefaultDeflationFromCells):
+  // 2048^2 cells and beyond, either boundary, any shape the block divides.
+  for (const Boundary boundary : {Boundary::periodic, Boundary::free}) {
+    EXPECT_TRUE(default_deflation(Grid::plane(2048, 2048, 1e-6, 1e-6, boundary)));
+    EXPECT_TRUE(default_deflation(Grid::plane(16384, 256, 1e-6, 1e-6, boundary)));
+    EXPECT_FALSE(default_deflation(Grid::plane(1024, 1024, 1e-6, 1e-6, boundary)));
+    EXPECT_FALSE(default_deflation(Grid::plane(2048, 2016, 1e-6, 1e-6, boundary)));  // 63 blocks of 32, too few cells
+    EXPECT_TRUE(default_deflation(Grid::plane(2080, 2080, 1e-6, 1e-6, boundary)));   // 65 blocks of 32
+    EXPECT_FALSE(default_deflation(Grid::plane(2050, 2050, 1e-6, 1e-6, boundary)));  // 32 does not divide 2050
+    EXPECT_FALSE(default_deflation(Grid::plane(65536, 64, 1e-6, 1e-6, boundary)));   // 2 blocks across
+  }
+  EXPECT_FALSE(default_deflation(Grid::line(std::size_t{1} << 23, 1e-6, Boundary::periodic)));
+}
+
 }  // namespace
 }  // namespace halfspace::solvers

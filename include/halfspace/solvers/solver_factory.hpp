@@ -15,6 +15,12 @@
 namespace halfspace::solvers {
 
 inline constexpr std::size_t kDefaultDeflationBlock = 32;
+// The default correction starts at this many cells (2048^2): below, its
+// costs (two more products per iteration, the kernel product, building A,
+// the coarse solves) outweigh the iterations it saves (256^2-512^2: 15-55 %
+// more time, 1024^2: 2 % less to 23 % more; 2048^2 up: 15-38 % less,
+// docs/performance.md).
+inline constexpr std::size_t kDefaultDeflationFromCells = std::size_t{1} << 22;
 
 struct SolverSettings {
   std::string name =
@@ -24,12 +30,17 @@ struct SolverSettings {
   FftPlanning fft_planning = FftPlanning::estimate;  // FFT-based solvers only
   // Block size of the coarse-grid correction (BlockDeflation) of pk-fourier
   // and of pk-multilevel's finest grid: B (refused where it does not apply),
-  // 0 for none, or unset: kDefaultDeflationBlock for pk-multilevel on
-  // periodic 2D grids it divides into at least 3 blocks per axis (chosen by
-  // measurement, docs/performance.md), none otherwise.
+  // 0 for none, or unset: default_deflation() for pk-multilevel, none
+  // otherwise.
   std::optional<std::size_t> deflation_block;
   std::function<void(int, double)> progress;  // (iteration, residual), may be empty
 };
+
+// Whether pk-multilevel's finest grid gets the coarse correction when the
+// block is not set: 2D grids, periodic or free, of at least
+// kDefaultDeflationFromCells cells that kDefaultDeflationBlock divides into
+// at least 3 blocks per axis (chosen by measurement, docs/performance.md).
+bool default_deflation(const Grid& grid);
 
 // The names make_solver accepts, in the order --help lists them.
 std::vector<std::string> solver_names();
