@@ -109,7 +109,7 @@ const std::array kOptions{
     OptionSpec{"deflation-block", &SolveOptions::deflation_block, Kind::integer, kSolver, "B",
                "coarse-grid correction on B x B blocks of the contact (pk-fourier, pk-multilevel's finest grid; "
                "2D grids whose nx and ny B divides, at least 3 blocks per axis); 0 for none "
-               "[32 with pk-multilevel where it applies, else none]"},
+               "[32 with pk-multilevel on grids of 2048^2 cells or more where it applies, else none]"},
     OptionSpec{"output", &SolveOptions::output, Kind::path, kOutput, "FILE",
                "result file (HDF5), required; replaced if it exists"},
     OptionSpec{"quiet", &SolveOptions::quiet, Kind::flag, kOutput, "",
