@@ -185,20 +185,20 @@ def timed_solve(halfspace, case, solver, threads, planning, directory, env):
     return row
 
 
-def fft_floor(tool, n, threads, planning, padded, cache):
-    key = (n, threads, padded)
-    if key not in cache:
-        command = [tool, "--n", str(n), "--threads", str(threads), "--planning", planning]
-        if padded:
-            command.append("--padded")
-        cache[key] = json.loads(check_output(command, f"fft_floor {n} threads {threads}"))
-    return cache[key]
+def fft_floor(tool, n, threads, planning, padded):
+    # Timed again after every solve, not once per grid: this VM's speed
+    # drifts by up to 2x within minutes, and a floor taken in another state
+    # than the solve moved the ratio by as much (docs/performance.md).
+    command = [tool, "--n", str(n), "--threads", str(threads), "--planning", planning]
+    if padded:
+        command.append("--padded")
+    return json.loads(check_output(command, f"fft_floor {n} threads {threads}"))
 
 
 # ---------------------------------------------------------------- table
 
 COLUMNS = ["grid", "boundary", "solver", "threads", "iterations", "K", "M^-1",
-           "coarse (K+M^-1 equivalents)", "solve s", "s per K", "iteration / FFT pair",
+           "coarse (K+M^-1 equivalents)", "solve s", "s per K", "iteration / FFT pair", "FFT pair ms",
            "peak MiB", "B/point"]
 
 
@@ -215,6 +215,7 @@ def table_row(r):
     cells = [f"{n}x{n}", r["boundary"], solver, str(r["threads"]), str(iterations), str(k),
              str(r["preconditioner_applications"]), f"{coarse:.1f}", f"{seconds:.3g}",
              f"{seconds / k:.3g}" if k else "–", f"{per_iteration:.2f}",
+             f"{1e3 * r['floor']['seconds_per_pair']:.3g}",
              f"{r['peak_bytes'] / 2**20:.1f}", f"{r['peak_bytes'] / (n * n):.0f}"]
     return "| " + " | ".join(cells) + " |"
 
@@ -239,7 +240,8 @@ def footnotes(args):
         "- s per K: solve s / K, so it also carries the M^-1 products, the coarse grids and the "
         "vector work of each iteration.",
         "- iteration / FFT pair: (solve s / iterations) / one bare out-of-place FFTW r2c + c2r pair of the "
-        "same transform (n x n periodic, 2n x 2n free; `fft_floor`, same threads and planning).",
+        "same transform (n x n periodic, 2n x 2n free; `fft_floor`, same threads and planning), timed "
+        "right after each solve; FFT pair ms: that pair.",
         "- peak MiB, B/point: maximum resident set size of the whole `halfspace solve` process "
         "(`/usr/bin/time -v`): program, libraries, surface, result fields and HDF5 output buffer "
         "included, so small grids are dominated by the fixed part.",
@@ -303,7 +305,7 @@ def main(argv):
 
     started = datetime.datetime.now(datetime.timezone.utc)
     load_before = load_average()
-    rows, floors = [], {}
+    rows = []
     with tempfile.TemporaryDirectory(prefix="halfspace-headline-") as temporary:
         directory = Path(temporary)
         env = dict(os.environ, HALFSPACE_FFTW_WISDOM=str(directory / "wisdom"))
@@ -313,7 +315,7 @@ def main(argv):
                 for solver in solvers:
                     row = timed_solve(halfspace, case, solver, threads, args.planning, directory, env)
                     row.update(n=n, boundary=boundary, solver=solver, threads=threads)
-                    row["floor"] = fft_floor(floor_tool, n, threads, args.planning, boundary == "free", floors)
+                    row["floor"] = fft_floor(floor_tool, n, threads, args.planning, boundary == "free")
                     rows.append(row)
                     status = "converged" if row["converged"] else "NOT CONVERGED"
                     print(f"headline: {n}x{n} {boundary} {solver} threads {threads}: {row['iterations']} iterations, "
