@@ -378,8 +378,8 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
         // the coarse matrix: once per solver, when first needed, so that a
         // solve that never deflates holds neither (8 B per cell).
         coarse_field_.setZero(static_cast<Eigen::Index>(n));
+        coarse_field_[0] = 1.0;
         double* unit = coarse_field_.data();
-        for_each_index(n, [&](std::size_t i) { unit[i] = i == 0 ? 1.0 : 0.0; });
         op_.apply({unit, n}, {unit, n});
         ++result.operator_applications;
         deflation_->set_kernel({unit, n});

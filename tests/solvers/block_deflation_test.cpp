@@ -9,12 +9,12 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
-#include <string>
 #include <vector>
 
 #include "halfspace/error.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
 #include "operators/operator_test_support.hpp"
+#include "support/boundary_param.hpp"
 
 namespace halfspace::solvers {
 namespace {
@@ -245,9 +245,7 @@ TEST_P(BlockDeflationBoundaryTest, UpdatesByTheChangedCells) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Boundaries, BlockDeflationBoundaryTest, ::testing::Values(Boundary::periodic, Boundary::free),
-                         [](const ::testing::TestParamInfo<Boundary>& info) {
-                           return info.param == Boundary::periodic ? std::string("Periodic") : std::string("Free");
-                         });
+                         testing::boundary_param_name);
 
 // A full build whose pair sums exceed the budget is not made.
 TEST(BlockDeflationTest, DeclinesDenseContacts) {

@@ -10,6 +10,7 @@
 #include "halfspace/error.hpp"
 #include "halfspace/geometry/builtin_surface.hpp"
 #include "halfspace/solvers/solver_factory.hpp"
+#include "support/boundary_param.hpp"
 #include "support/contact_checks.hpp"
 #include "support/rough_gap.hpp"
 
@@ -105,9 +106,7 @@ TEST(DeflatedSolverRateTest, StaysOffWhereTheIterationIsFastWithoutIt) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Boundaries, DeflatedSolverTest, ::testing::Values(Boundary::periodic, Boundary::free),
-                         [](const ::testing::TestParamInfo<Boundary>& info) {
-                           return info.param == Boundary::periodic ? std::string("Periodic") : std::string("Free");
-                         });
+                         testing::boundary_param_name);
 
 TEST(DeflatedSolverRefusalTest, RefusesSolversAndGridsWithoutIt) {
   EXPECT_THROW(make_solver(Grid::plane(128, 128, 1.0, 1.0, Boundary::periodic), kEStar, settings("pk", 32)),
