@@ -2,12 +2,13 @@
 # Builds the library and tests with AddressSanitizer and UndefinedBehaviour-
 # Sanitizer (Debug, -O1) into ./build-sanitize and runs the whole test suite
 # under them: any invalid access, leak or undefined behaviour fails the test
-# it happens in. Leaks inside Siconos are suppressed
+# it happens in. Installs what is missing first. Leaks inside Siconos are suppressed
 # (scripts/lsan-suppressions.txt says why). Extra arguments go to ctest,
 # e.g. scripts/sanitize.sh -R Lemke. Takes about 25 minutes on 2 cores.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${HALFSPACE_SANITIZE_BUILD_DIR:-$root/build-sanitize}"
+"$root/scripts/install-deps.sh"
 flags="-O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=undefined"
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS="$flags" \
   -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" >/dev/null
