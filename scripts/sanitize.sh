@@ -4,7 +4,7 @@
 # under them: any invalid access, leak or undefined behaviour fails the test
 # it happens in. Installs what is missing first. Leaks inside Siconos are suppressed
 # (scripts/lsan-suppressions.txt says why). Extra arguments go to ctest,
-# e.g. scripts/sanitize.sh -R Lemke. Takes about 25 minutes on 2 cores.
+# e.g. scripts/sanitize.sh -R Lemke. Takes about 15 minutes on 2 cores.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${HALFSPACE_SANITIZE_BUILD_DIR:-$root/build-sanitize}"
