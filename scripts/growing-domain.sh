@@ -3,7 +3,7 @@
 # size: the per-size counts and means, a logarithmic fit and the increase per
 # doubling, printed and appended to
 # bench/results/<date>-<shortcommit>-growing-domain.md. Builds halfspace
-# (Release, build-bench), then runs bench/growing_domain.py; arguments go to
+# (Release, build-bench), then runs bench/headline/growing_domain.py; arguments go to
 # it, options for `halfspace solve` after --, e.g.
 #
 #   scripts/growing-domain.sh --sizes 256,512,1024 --seeds 1,2,3 -- --deflation-block 0
@@ -23,4 +23,4 @@ python="${HALFSPACE_PYTHON:-/usr/bin/python3}"
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DHALFSPACE_BUILD_TESTS=OFF >/dev/null
 cmake --build "$build" -j "$(nproc)" --target halfspace_cli
 
-exec "$python" "$root/bench/growing_domain.py" --build-dir "$build" "$@"
+exec "$python" "$root/bench/headline/growing_domain.py" --build-dir "$build" "$@"

@@ -7,7 +7,8 @@ little about that (a single count moves by several iterations from one
 realisation to the next), so this solves the same statistical surface for
 several seeds at each size and reports, per size, the counts, their mean and
 how many of them the block deflation took; then the least-squares fit
-mean = a + b log2(side / smallest side) with its residuals, and the increase per doubling.
+mean = a + b log2(side / smallest side) with its residuals, and the increase
+per doubling.
 
 Surfaces: `halfspace generate --kind self-affine`, Hurst 0.8, rms slope 0.1,
 short cutoff 4 um, a 1 um cell (so the domain grows with the grid and the
@@ -25,34 +26,19 @@ import datetime
 import os
 import platform
 import shlex
-import subprocess
 import sys
 from pathlib import Path
 
 import h5py
 
-ROOT = Path(__file__).resolve().parents[1]
+# The headline script's helpers: its directory is this script's.
+from headline import EXIT_NOT_CONVERGED, EXIT_OK, ROOT, git, integer_list, run, size_list
+
 CELL = 1e-6  # m
-EXIT_OK, EXIT_NOT_CONVERGED = 0, 2  # apps/exit_codes.hpp
 
 
 class StudyError(Exception):
     """A problem that stops the run; the message says what and where."""
-
-
-def integer_list(text, smallest, what):
-    try:
-        values = [int(s) for s in text.split(",") if s.strip()]
-    except ValueError as error:
-        raise StudyError(f"{what} '{text}' is invalid: expected comma-separated integers") from error
-    if not values or any(v < smallest for v in values):
-        raise StudyError(f"{what} '{text}' is invalid: each value must be at least {smallest}")
-    return values
-
-
-def run(command):
-    completed = subprocess.run(command, capture_output=True, text=True)
-    return completed.returncode, completed.stderr.strip()
 
 
 def surface(program, work, side, seed):
@@ -61,21 +47,20 @@ def surface(program, work, side, seed):
     if path.exists():
         return path
     partial = path.with_suffix(".partial.h5")
-    code, error = run([str(program), "generate", "--kind", "self-affine", "--grid", f"{side}x{side}",
-                       "--size", f"{side * CELL}", "--hurst", "0.8", "--cutoff-short", "4e-6",
-                       "--rms-slope", "0.1", "--seed", str(seed), "--quiet", "--output", str(partial)])
-    if code != EXIT_OK:
-        raise StudyError(f"generating {path.name} failed (exit {code}): {error}")
+    done = run([program, "generate", "--kind", "self-affine", "--grid", f"{side}x{side}",
+                "--size", side * CELL, "--hurst", 0.8, "--cutoff-short", 4e-6,
+                "--rms-slope", 0.1, "--seed", seed, "--quiet", "--output", partial])
+    if done.returncode != EXIT_OK:
+        raise StudyError(f"generating {path.name} failed (exit {done.returncode}): {done.stderr.strip()}")
     partial.rename(path)
     return path
 
 
 def solve(program, height_map, result, solver_args):
-    code, error = run([str(program), "solve", "--height-map", str(height_map), "--boundary", "periodic",
-                       "--E-star", "1e9", "--mean-pressure", "4e6", "--quiet", "--output", str(result)]
-                      + solver_args)
-    if code not in (EXIT_OK, EXIT_NOT_CONVERGED):
-        raise StudyError(f"solving {height_map.name} failed (exit {code}): {error}")
+    done = run([program, "solve", "--height-map", height_map, "--boundary", "periodic", "--E-star", 1e9,
+                "--mean-pressure", 4e6, "--quiet", "--output", result, *solver_args])
+    if done.returncode not in (EXIT_OK, EXIT_NOT_CONVERGED):
+        raise StudyError(f"solving {height_map.name} failed (exit {done.returncode}): {done.stderr.strip()}")
     with h5py.File(result, "r") as f:
         row = {key: f.attrs[key] for key in ("iterations", "deflated_iterations", "converged")}
     result.unlink()
@@ -93,22 +78,13 @@ def log_fit(sides, means):
     return a, b, [y - (a + b * x) for x, y in zip(xs, means)]
 
 
-def commit():
-    try:
-        short = subprocess.run(["git", "-C", str(ROOT), "rev-parse", "--short", "HEAD"], capture_output=True,
-                               text=True, check=True).stdout.strip()
-        dirty = subprocess.run(["git", "-C", str(ROOT), "status", "--porcelain", "--untracked-files=no"],
-                               capture_output=True, text=True, check=True).stdout.strip()
-        return short + ("-dirty" if dirty else "")
-    except (OSError, subprocess.CalledProcessError):
-        return "unknown"
-
-
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--build-dir", type=Path, required=True, help="build with bin/halfspace")
-    parser.add_argument("--sizes", default="256,512,1024,2048,4096", help="grid sides (powers of two)")
-    parser.add_argument("--seeds", default="1,2,3,4,5", help="surface seeds")
+    parser.add_argument("--sizes", type=size_list, default=[256, 512, 1024, 2048, 4096],
+                        help="grid sides, powers of two [256,512,1024,2048,4096]")
+    parser.add_argument("--seeds", type=lambda t: integer_list(t, 0, "seeds"), default=[1, 2, 3, 4, 5],
+                        help="surface seeds [1,2,3,4,5]")
     parser.add_argument("--threads", type=int, default=2)
     parser.add_argument("--work-dir", type=Path, default=Path("/tmp/halfspace-growing-domain"),
                         help="where the surfaces are kept between runs")
@@ -117,10 +93,10 @@ def main():
     args = parser.parse_args()
 
     try:
-        sides = integer_list(args.sizes, 2, "--sizes")
-        if any(s & (s - 1) for s in sides):
-            raise StudyError(f"--sizes '{args.sizes}' is invalid: each side must be a power of two")
-        seeds = integer_list(args.seeds, 0, "--seeds")
+        sides, seeds = args.sizes, args.seeds
+        if not sides or not seeds or any(s & (s - 1) for s in sides):
+            raise StudyError(f"--sizes {sides} and --seeds {seeds} are invalid: need at least one of each, "
+                             "and every side a power of two")
         program = args.build_dir / "bin" / "halfspace"
         if not os.access(program, os.X_OK):
             raise StudyError(f"{program} is not an executable: build it first (scripts/growing-domain.sh does)")
@@ -146,7 +122,7 @@ def main():
     means = [sum(c) / len(c) for _, c, _, _ in rows]
     lines = ["| grid | iterations per seed | mean | deflated (mean) | not converged | fit residual | "
              "mean increase over the previous size |", "|---|---|--:|--:|--:|--:|--:|"]
-    a, b, residuals = log_fit([r[0] for r in rows], means) if len(rows) > 1 else (means[0], 0.0, [0.0])
+    a, b, residuals = log_fit([r[0] for r in rows], means)
     for k, ((side, counts, deflated, failures), mean, residual) in enumerate(zip(rows, means, residuals)):
         step = f"{mean - means[k - 1]:+.1f}" if k > 0 else ""
         lines.append(f"| {side}x{side} | {', '.join(map(str, counts))} | {mean:.1f} | "
@@ -155,7 +131,7 @@ def main():
     uname = platform.uname()
     text = "\n".join([
         f"## Growing-domain iterations, {now.strftime('%Y-%m-%dT%H:%M:%SZ')}", "",
-        f"- commit: `{commit()}`",
+        f"- commit: `{git('describe', '--always', '--dirty')}`",
         f"- machine: {uname.system} {uname.release} {uname.machine}, nproc {os.cpu_count()}",
         f"- command: `{shlex.join(['growing_domain.py'] + sys.argv[1:])}`",
         f"- solve options: `{shlex.join(solver_args)}`", "",
@@ -165,7 +141,8 @@ def main():
         "- surfaces: self-affine, H = 0.8, rms slope 0.1, short cutoff 4 um, 1 um cells, periodic; "
         "E* = 1 GPa, mean pressure 4 MPa", ""])
     print(text)
-    results = ROOT / "bench" / "results" / f"{now.strftime('%Y-%m-%d')}-{commit()}-growing-domain.md"
+    commit = git("rev-parse", "--short", "HEAD")
+    results = ROOT / "bench" / "results" / f"{now.strftime('%Y-%m-%d')}-{commit}-growing-domain.md"
     with open(results, "a", encoding="utf-8") as out:
         out.write(text + "\n")
     print(f"appended to {results}", file=sys.stderr)
