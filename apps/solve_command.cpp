@@ -45,7 +45,7 @@ int run_solve(const SolveSetup& setup) {
   }
   // Free the operator, its FFT buffers, the solver's workspace and the
   // initial gap before the statistics and the result file are made, so that
-  // the peak memory is the solve's (docs/performance.md).
+  // the peak memory is the solve's (docs/development-log.md).
   solver.reset();
   initial_gap.resize(0);
 

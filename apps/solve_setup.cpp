@@ -386,7 +386,7 @@ SolveSetup make_solve_setup(const SolveOptions& options) {
   const int threads = threads_from(options);
   // measure by default: its planning cost is paid once per grid size (the
   // wisdom file keeps it) and buys transforms 1.4-2x faster from 512^2 up
-  // (docs/performance.md).
+  // (docs/solvers.md).
   solver.fft_planning = in_context(options.name("fft-planning"),
                                    [&] { return parse_fft_planning(options.fft_planning.value_or("measure")); });
   const Boundary boundary =

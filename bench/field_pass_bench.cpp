@@ -3,8 +3,8 @@
 // Polonsky-Keer iteration reads and writes pressure, displacement, direction
 // and its image, and reads the initial gap, in passes that each wait for the
 // previous pass's sums; at the field cost measured here, that traffic alone
-// bounds how close an iteration can come to two products (docs/performance.md,
-// "What is slow").
+// bounds how close an iteration can come to two products
+// (docs/development-log.md, "How close an iteration can come").
 //
 // BM_FieldPass/<variant>/<n>/threads:<t>, one pass over n x n cells that
 // reads four fields, writes one and sums two products, the shape of the

@@ -57,7 +57,7 @@ constexpr std::uint64_t kSurfaceSeed = 2024;
 // A/A0 ~ 2 p / (E* h'_rms) this puts about 10% of the surface in contact.
 constexpr double kReducedPressure = 0.05;
 
-// Growing domain: the surfaces of docs/performance-scale.md, spacing 1 um,
+// Growing domain: the surfaces of docs/performance.md, spacing 1 um,
 // power law from the domain size down to 4 um, so an n x n grid is n um
 // across and holds ever more contact spots; about 8% contact.
 constexpr double kDomainSpacing = 1e-6;      // m

@@ -46,7 +46,7 @@ PERIODIC_CELL = 1e-6
 HERTZ_RADIUS, HERTZ_E_STAR, HERTZ_FORCE = 0.01, 1.1e11, 10.0
 HERTZ_A = (3 * HERTZ_FORCE * HERTZ_RADIUS / (4 * HERTZ_E_STAR)) ** (1 / 3)
 
-# --skip-slow: plain pk above these sizes takes minutes (docs/performance-scale.md).
+# --skip-slow: plain pk above these sizes takes minutes (docs/performance.md).
 SLOW_PK_ABOVE = {"periodic": 2048, "free": 1024}
 
 

@@ -4,7 +4,7 @@
 // spectra, then transforms the columns; the inverse runs the columns and then
 // only the data rows back (c2r). FFTW's full 2D transform would also
 // transform the ny zero rows and the ny discarded ones: about a quarter of its
-// work, measured in docs/performance.md.
+// work, measured in docs/development-log.md.
 #include "halfspace/fft/padded_real_fft.hpp"
 
 #include <fmt/format.h>

@@ -36,14 +36,14 @@ constexpr double kEntriesKept = 0.01;
 // correction's block-wide pressure changes clip more cells than they settle
 // (at 2048^2 the iteration then fails to converge), and once it has settled
 // the correction takes the iterations' rate from 0.7-0.75 to about 0.3
-// (docs/performance.md).
+// (docs/development-log.md, block deflation).
 constexpr double kDeflateBelowClipped = 0.01;
 // ... and only where the iteration without it is slow: a deflated iteration
 // costs about twice as many products and converges at about 0.3 per
 // iteration, which pays against a rate above 0.3^(1/2) = 0.55, measured
 // over two settled undeflated steps. Rough contacts run at 0.7-0.8 there; a
 // Hertz contact at 0.2-0.4, where deflation saved one iteration in ten and
-// doubled the time (docs/performance.md).
+// doubled the time (docs/development-log.md, when it joins).
 constexpr double kDeflateAboveRate = 0.55;
 constexpr int kRateSteps = 2;
 

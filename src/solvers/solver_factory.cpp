@@ -55,14 +55,14 @@ std::unique_ptr<ContactSolver> make_polonsky_keer(const Grid& grid, double e_sta
   options.restart = restart;
   // The paper's search set for plain Polonsky-Keer; the projected-gradient
   // one with the preconditioner, where it saves 6-13 % of the iterations up to
-  // 2048^2 and 30-45 % at 4096^2-8192^2 (docs/performance.md).
+  // 2048^2 and 30-45 % at 4096^2-8192^2 (docs/development-log.md).
   options.search_set = preconditioned ? SearchSet::contact_and_overlap : SearchSet::contact;
   std::unique_ptr<FftInfluenceOperator> op;
   std::unique_ptr<Preconditioner> preconditioner;
   if (preconditioned && grid.periodic()) {
     // Both transform the unpadded grid, and Polonsky-Keer applies them one
     // after the other: one transform serves both, which saves a real and a
-    // complex array per cell (docs/performance.md).
+    // complex array per cell (docs/development-log.md).
     auto transform = make_grid_transform(grid, settings.fft_planning);
     op = std::make_unique<FftInfluenceOperator>(grid, e_star, transform);
     preconditioner = std::make_unique<FourierPreconditioner>(grid, e_star, transform);
@@ -129,7 +129,7 @@ std::vector<std::string> solver_names() {
 
 std::unique_ptr<ContactSolver> make_solver(const Grid& grid, double e_star, const SolverSettings& settings) {
   // Plain Polonsky-Keer keeps the paper's restart rule; with the Fourier
-  // preconditioner Powell's restart test cuts the iterations (docs/performance.md).
+  // preconditioner Powell's restart test cuts the iterations (docs/development-log.md).
   if (settings.deflation_block.value_or(0) > 0 && settings.name != "pk-fourier" && settings.name != "pk-multilevel") {
     throw InputError(fmt::format(
         "solver '{}' has no coarse-grid correction: deflation needs pk-fourier or pk-multilevel", settings.name));

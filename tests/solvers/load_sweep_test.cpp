@@ -166,7 +166,7 @@ TEST(LoadSweepTest, WestergaardSweepMatchesColdSolvesWithFewerIterations) {
   // pressure. Plain PK gains nothing from the warm start on this one-mode
   // surface (its iteration count is set by the conditioning, not by the
   // starting error), and pk-multilevel's cold start from coarser grids is
-  // already as good as the previous step (docs/performance.md).
+  // already as good as the previous step (docs/development-log.md, warm starts).
   SolverSettings settings;
   settings.name = "pk-fourier";
   const std::unique_ptr<ContactSolver> solver = make_solver(grid, e_star, settings);

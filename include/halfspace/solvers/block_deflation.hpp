@@ -4,7 +4,7 @@
 // On a large rough contact the Fourier preconditioner M^-1 overestimates the
 // response to smooth pressure modulations spread across many small spots, so
 // the condition number on the contact set grows with the domain
-// (docs/performance.md, "Why a growing domain costs more"). The coarse space
+// (docs/development-log.md, "Why a growing domain costs more"). The coarse space
 // Z, one column per block holding 1 on the block's cells in the coarse set
 // (the solver passes the contact cells), captures those modulations. With
 // the Galerkin matrix A = Z^T K Z and Q = Z A^-1 Z^T, the balancing

@@ -29,7 +29,7 @@ struct MultilevelOptions {
   std::size_t min_cells_per_axis = 32;
   // A warm start under load control is used only while the target force is
   // within this factor of the start's force; further off, the coarse grids
-  // give the better start (docs/performance.md, warm starts).
+  // give the better start (docs/development-log.md, warm starts).
   double warm_start_max_load_ratio = 1.5;
 
   // Throws InputError naming the option unless 0 < coarse_tolerance < 1,

@@ -22,7 +22,7 @@
 // count on rough surfaces at the price of one more transform per iteration.
 // A BlockDeflation adds a coarse-grid correction to M^-1 (two more products
 // per iteration) once the contact set has nearly settled, which keeps the
-// iterations from growing with the domain (docs/performance.md).
+// iterations from growing with the domain (docs/solvers.md).
 #pragma once
 
 #include <functional>
@@ -43,7 +43,7 @@ namespace halfspace::solvers {
 // orthogonal to the previous direction on the contact set,
 // |sum_C g t_old| > 0.2 sum_C g z (Powell 1977, Math. Programming 12, 241),
 // which is what conjugacy needs, or when more than 1% of the contact cells
-// enter at once (measured in docs/performance.md).
+// enter at once (measured in docs/development-log.md).
 enum class ConjugacyRestart { on_entry, powell };
 
 // The cells the search direction covers. Polonsky & Keer build it on the
@@ -52,7 +52,7 @@ enum class ConjugacyRestart { on_entry, powell };
 // direction one iteration later. The projected-gradient set adds those cells
 // at once, C + {p = 0, g < 0}, as bound-constrained CG does (Vollebregt 2014,
 // J. Comput. Phys. 257, 333): the step itself gives them pressure, which
-// saves iterations while the contact set still moves (docs/performance.md).
+// saves iterations while the contact set still moves (docs/development-log.md).
 enum class SearchSet { contact, contact_and_overlap };
 
 struct PolonskyKeerOptions {

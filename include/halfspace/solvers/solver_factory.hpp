@@ -19,7 +19,7 @@ inline constexpr std::size_t kDefaultDeflationBlock = 32;
 // costs (two more products per iteration, the kernel product, building A,
 // the coarse solves) outweigh the iterations it saves (256^2-512^2: 15-55 %
 // more time, 1024^2: 2 % less to 23 % more; 2048^2 up: 15-38 % less,
-// docs/performance.md).
+// docs/development-log.md).
 inline constexpr std::size_t kDefaultDeflationFromCells = std::size_t{1} << 22;
 
 struct SolverSettings {
@@ -39,7 +39,7 @@ struct SolverSettings {
 // Whether pk-multilevel's finest grid gets the coarse correction when the
 // block is not set: 2D grids, periodic or free, of at least
 // kDefaultDeflationFromCells cells that kDefaultDeflationBlock divides into
-// at least 3 blocks per axis (chosen by measurement, docs/performance.md).
+// at least 3 blocks per axis (chosen by measurement, docs/development-log.md).
 bool default_deflation(const Grid& grid);
 
 // The names make_solver accepts, in the order --help lists them.
