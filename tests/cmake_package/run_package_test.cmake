@@ -45,5 +45,14 @@ endif()
 run_step("configuring the consumer" "${CMAKE_COMMAND}" -S "${SOURCE_DIR}" -B "${consumer_build}"
   -DCMAKE_BUILD_TYPE=Release "-DCMAKE_PREFIX_PATH=${prefix}" "-DCMAKE_CXX_COMPILER=${CXX_COMPILER}"
   ${launcher_option})
+# The package found must be the one just installed, not another on the system.
+file(STRINGS "${consumer_build}/CMakeCache.txt" found_dir REGEX "^halfspace_DIR:")
+string(REGEX REPLACE "^halfspace_DIR:[A-Z]*=" "" found_dir "${found_dir}")
+file(REAL_PATH "${found_dir}" found_dir)
+file(REAL_PATH "${prefix}" real_prefix)
+string(FIND "${found_dir}" "${real_prefix}/" at)
+if(NOT at EQUAL 0)
+  message(FATAL_ERROR "the consumer found halfspace in ${found_dir}, not under ${real_prefix}")
+endif()
 run_step("building the consumer" "${CMAKE_COMMAND}" --build "${consumer_build}")
 run_step("the consumer's Hertz check" "${consumer_build}/hertz_consumer")
