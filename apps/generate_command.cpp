@@ -12,13 +12,18 @@
 #include <optional>
 #include <string>
 
+#include "activity.hpp"
 #include "exit_codes.hpp"
+#include "grid_options.hpp"
 #include "halfspace/error.hpp"
 #include "halfspace/geometry/builtin_surface.hpp"
 #include "halfspace/io/height_map_writer.hpp"
+#include "halfspace/memory_estimate.hpp"
 #include "halfspace/surface/self_affine.hpp"
 #include "halfspace/surface/statistics.hpp"
 #include "halfspace/version.hpp"
+#include "memory_check.hpp"
+#include "physical_ranges.hpp"
 #include "value_parsing.hpp"
 
 namespace halfspace::app {
@@ -48,6 +53,9 @@ constexpr OptionHelp kOptions[] = {
     {"wavelength", "M", "wavy: wavelength (m)"},
     {"amplitude", "M", "wavy: amplitude A (m), h = -A (1 - cos ...)"},
     {"output", "FILE", "the height-map file (HDF5), required; replaced if it exists"},
+    {"max-memory", "SIZE",
+     "refuse to start when the estimated peak memory exceeds SIZE: bytes, or K, M, G, T (powers of 1024), e.g. "
+     "512M [the memory available]"},
 };
 
 constexpr const char* kSelfAffineKeys[] = {"hurst",      "cutoff-short", "rolloff", "cutoff-long",
@@ -69,12 +77,12 @@ std::optional<double> number(const GivenOptions& given, std::string_view key) {
   return parse_number(found->second, describe(given, key));
 }
 
-double positive(const GivenOptions& given, std::string_view key, std::string_view unit) {
+// A length option of a built-in shape, within the program's range of lengths.
+double length(const GivenOptions& given, std::string_view key) {
   const std::optional<double> value = number(given, key);
-  if (!value) throw InputError(fmt::format("--kind {} needs --{} ({})", given.find("kind")->second, key, unit));
-  if (!(*value > 0.0))
-    throw InputError(fmt::format("{} is invalid: must be positive ({})", describe(given, key), unit));
-  return *value;
+  if (!value) throw InputError(fmt::format("--kind {} needs --{} (m)", given.find("kind")->second, key));
+  if (!(*value > 0.0)) throw InputError(fmt::format("{} is invalid: must be positive (m)", describe(given, key)));
+  return require_in_range(describe(given, key), *value, kMinLength, kMaxLength, "m");
 }
 
 void reject(const GivenOptions& given, std::initializer_list<const char*> keys, std::string_view reason) {
@@ -83,21 +91,19 @@ void reject(const GivenOptions& given, std::initializer_list<const char*> keys, 
   }
 }
 
+// The grid, once its generation is known to fit in memory.
 Grid grid_from(const GivenOptions& given, Boundary boundary) {
   if (!given.contains("grid")) throw InputError("no grid given: pass --grid N (1D) or NXxNY (2D)");
   if (!given.contains("size")) throw InputError("no domain size given: pass --size L or LXxLY (m)");
-  const std::vector<std::size_t> cells = parse_grid_shape(given.find("grid")->second, describe(given, "grid"));
-  const std::vector<double> lengths = parse_domain_size(given.find("size")->second, describe(given, "size"));
-  if (cells.size() == 1) {
-    if (lengths.size() != 1) {
-      throw InputError(fmt::format("{} is invalid for the 1D grid {}: give one length", describe(given, "size"),
-                                   describe(given, "grid")));
-    }
-    return Grid::line(cells[0], lengths[0] / static_cast<double>(cells[0]), boundary);
-  }
-  const double length_y = lengths.size() == 2 ? lengths[1] : lengths[0];
-  return Grid::plane(cells[0], cells[1], lengths[0] / static_cast<double>(cells[0]),
-                     length_y / static_cast<double>(cells[1]), boundary);
+  Grid grid = grid_from_options(given.find("grid")->second, describe(given, "grid"), given.find("size")->second,
+                                describe(given, "size"), boundary);
+  const auto max_memory = given.find("max-memory");
+  const std::optional<MemoryLimit> limit =
+      memory_limit(max_memory == given.end() ? std::nullopt : std::optional<std::string>(max_memory->second),
+                   max_memory == given.end() ? std::string("--max-memory") : describe(given, "max-memory"));
+  require_memory(fmt::format("{}: generating {:g} cells", describe(given, "grid"), static_cast<double>(grid.size())),
+                 generate_memory_estimate(grid), limit);
+  return grid;
 }
 
 Generated self_affine(const GivenOptions& given) {
@@ -107,10 +113,11 @@ Generated self_affine(const GivenOptions& given) {
   spec.short_cutoff = number(given, "cutoff-short").value_or(0.0);
   spec.rolloff = number(given, "rolloff").value_or(0.0);
   spec.long_cutoff = number(given, "cutoff-long").value_or(0.0);
-  for (const char* key : {"cutoff-short", "rolloff", "cutoff-long"}) {
+  for (const char* key : {"cutoff-short", "rolloff", "cutoff-long", "rms-height"}) {
     if (given.contains(key) && !(*number(given, key) > 0.0)) {
       throw InputError(fmt::format("{} is invalid: must be positive (m)", describe(given, key)));
     }
+    if (given.contains(key)) require_in_range(describe(given, key), *number(given, key), kMinLength, kMaxLength, "m");
   }
   spec.rms_height = number(given, "rms-height");
   spec.rms_slope = number(given, "rms-slope");
@@ -127,6 +134,7 @@ Generated self_affine(const GivenOptions& given) {
   }
 
   Grid grid = grid_from(given, Boundary::periodic);
+  const Activity activity(fmt::format("generating the self-affine surface on the {} grid", grid.shape_string()));
   const surface::SelfAffineSpec resolved = spec.resolved(grid);
   Eigen::ArrayXd heights = surface::make_self_affine_surface(grid, spec);
   io::HeightMapMetadata metadata;
@@ -166,13 +174,13 @@ Generated builtin(const GivenOptions& given, geometry::SurfaceShape shape) {
     case geometry::SurfaceShape::sphere:
     case geometry::SurfaceShape::cylinder:
       reject(given, {"wavelength", "amplitude"}, fmt::format("does not apply to --kind {}", kind));
-      spec.radius = positive(given, "radius", "m");
+      spec.radius = length(given, "radius");
       source += fmt::format(" (radius = {} m)", spec.radius);
       break;
     case geometry::SurfaceShape::wavy:
       reject(given, {"radius"}, "does not apply to --kind wavy");
-      spec.wavelength = positive(given, "wavelength", "m");
-      spec.amplitude = positive(given, "amplitude", "m");
+      spec.wavelength = length(given, "wavelength");
+      spec.amplitude = length(given, "amplitude");
       source += fmt::format(" (wavelength = {} m, amplitude = {} m)", spec.wavelength, spec.amplitude);
       break;
     case geometry::SurfaceShape::flat:
@@ -183,6 +191,7 @@ Generated builtin(const GivenOptions& given, geometry::SurfaceShape shape) {
   Grid probe = grid_from(given, Boundary::free);
   const bool periodic = shape == geometry::SurfaceShape::wavy && whole_periods(probe, spec.wavelength);
   Grid grid = grid_from(given, periodic ? Boundary::periodic : Boundary::free);
+  const Activity activity(fmt::format("generating the {} surface on the {} grid", kind, grid.shape_string()));
   Eigen::ArrayXd heights = geometry::make_surface_heights(grid, spec);
   io::HeightMapMetadata metadata;
   metadata.periodic = periodic;
@@ -213,11 +222,17 @@ int run_generate(const GivenOptions& given, bool quiet, const std::vector<std::s
   surface.metadata.command_line = join_command_line(argv);
 
   const std::span<const double> heights(surface.heights.data(), static_cast<std::size_t>(surface.heights.size()));
+  std::optional<Activity> activity(std::in_place,
+                                   fmt::format("computing the statistics of the {} grid", surface.grid.shape_string()));
   const surface::SurfaceStatistics statistics = surface::surface_statistics(surface.grid, heights);
+  activity.reset();
   surface.metadata.numbers.emplace_back("rms_height", statistics.rms_height);
   surface.metadata.numbers.emplace_back("rms_slope", statistics.rms_slope);
   const std::string output = given.find("output")->second;
-  io::write_height_map(output, surface.grid, heights, surface.metadata);
+  {
+    const Activity activity(fmt::format("writing {}", output));
+    io::write_height_map(output, surface.grid, heights, surface.metadata);
+  }
 
   if (!quiet) {
     const Grid& grid = surface.grid;

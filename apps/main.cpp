@@ -5,18 +5,25 @@
 
 #include <CLI/CLI.hpp>
 #include <exception>
+#include <new>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "activity.hpp"
 #include "command.hpp"
 #include "exit_codes.hpp"
 #include "generate_command.hpp"
 #include "halfspace/error.hpp"
+#include "halfspace/memory_estimate.hpp"
 #include "halfspace/version.hpp"
+#include "openmp_waiting.hpp"
 #include "paper_command.hpp"
 #include "solve_command.hpp"
 
 int main(int argc, char** argv) {
+  // First: it may start the program again, with OMP_WAIT_POLICY=passive.
+  halfspace::app::use_passive_openmp_waiting(argv);
   using halfspace::app::kExitInputError;
   // Field arrays (1 MiB and up) always come from mmap and go back to the
   // system when freed. glibc's default threshold rises after each such free,
@@ -51,10 +58,17 @@ int main(int argc, char** argv) {
       return command.run(std::vector<std::string>(argv, argv + argc));
     } catch (const halfspace::InputError& error) {
       fmt::print(stderr, "error: {}\n", error.what());
+    } catch (const std::bad_alloc&) {
+      // The estimate checked before the run (docs/usage.md#memory) did not
+      // foresee it: other processes took the memory meanwhile, or the limit
+      // was raised with --max-memory.
+      const std::optional<halfspace::AvailableMemory> available = halfspace::available_memory();
+      fmt::print(stderr, "error: out of memory while {} ({} available now): use a smaller grid or free memory\n",
+                 halfspace::app::Activity::failed_while(),
+                 available ? halfspace::format_bytes(available->bytes) : std::string("unknown"));
     } catch (const std::exception& error) {
-      // Not an input mistake we foresaw (e.g. out of memory for a huge grid);
-      // still one line, still a failure.
-      fmt::print(stderr, "error: {}\n", error.what());
+      // Not an input mistake we foresaw; still one line, still a failure.
+      fmt::print(stderr, "error: {} (while {})\n", error.what(), halfspace::app::Activity::failed_while());
     }
     return kExitInputError;
   }

@@ -8,12 +8,18 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 #include "halfspace/error.hpp"
 #include "value_parsing.hpp"
@@ -78,12 +84,59 @@ std::vector<std::string> interpreter_of(const fs::path& script) {
   return interpreter;
 }
 
+// HALFSPACE_PLOT_TIMEOUT in seconds, else the default.
+double plot_timeout(const PlotRequest& request) {
+  const char* given = std::getenv("HALFSPACE_PLOT_TIMEOUT");
+  if (given == nullptr || *given == '\0') return kDefaultPlotTimeoutSeconds;
+  const std::string_view text(given);
+  double seconds = 0.0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), seconds);
+  if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(seconds) || seconds < 0.0) {
+    throw InputError(fmt::format("{}: HALFSPACE_PLOT_TIMEOUT={} is invalid: give the plotting tool's time limit in "
+                                 "seconds, or 0 for none",
+                                 request.by, text));
+  }
+  return seconds;
+}
+
 struct ChildStatus {
-  int spawn_error = 0;  // errno of posix_spawnp, 0 if it started
-  int exit_code = -1;   // -1 if killed by a signal
+  int spawn_error = 0;     // errno of posix_spawnp, 0 if it started
+  int exit_code = -1;      // -1 if killed by a signal
+  bool timed_out = false;  // stopped after running `timeout` seconds
 };
 
-ChildStatus run_child(const std::vector<std::string>& arguments, bool silence_stdout, bool silence_stderr) {
+// Waits for `child`; after `timeout` seconds (0: none) asks it to stop, and
+// kills it if it has not within a few seconds more.
+int wait_for(pid_t child, double timeout, bool& timed_out) {
+  using Clock = std::chrono::steady_clock;
+  constexpr auto kPoll = std::chrono::milliseconds(20);
+  constexpr auto kGrace = std::chrono::seconds(5);
+  // At most about three years, so that the deadline cannot overflow the clock.
+  const auto deadline =
+      Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(std::min(timeout, 1e8)));
+  int wait_status = 0;
+  bool terminated = false;
+  for (;;) {
+    const pid_t done = ::waitpid(child, &wait_status, timeout > 0.0 ? WNOHANG : 0);
+    if (done == child) return wait_status;
+    if (done < 0 && errno != EINTR) return wait_status;
+    if (timeout <= 0.0) continue;  // interrupted blocking wait: wait again
+    const auto now = Clock::now();
+    if (!terminated && now >= deadline) {
+      ::kill(child, SIGTERM);
+      terminated = true;
+      timed_out = true;
+    } else if (terminated && now >= deadline + kGrace) {
+      ::kill(child, SIGKILL);
+      timeout = 0.0;  // and reap it
+      continue;
+    }
+    std::this_thread::sleep_for(kPoll);
+  }
+}
+
+ChildStatus run_child(const std::vector<std::string>& arguments, bool silence_stdout, bool silence_stderr,
+                      double timeout) {
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   if (silence_stdout) posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
@@ -99,9 +152,7 @@ ChildStatus run_child(const std::vector<std::string>& arguments, bool silence_st
   status.spawn_error = posix_spawnp(&child, argv[0], &actions, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
   if (status.spawn_error != 0) return status;
-  int wait_status = 0;
-  while (::waitpid(child, &wait_status, 0) < 0 && errno == EINTR) {
-  }
+  const int wait_status = wait_for(child, timeout, status.timed_out);
   if (WIFEXITED(wait_status)) status.exit_code = WEXITSTATUS(wait_status);
   return status;
 }
@@ -109,12 +160,17 @@ ChildStatus run_child(const std::vector<std::string>& arguments, bool silence_st
 }  // namespace
 
 PlotTool find_plot_tool(const PlotRequest& request) {
-  PlotTool tool{{}, locate_script(request)};
+  PlotTool tool{{}, locate_script(request), plot_timeout(request)};
   tool.interpreter = interpreter_of(tool.script);
   std::vector<std::string> check = tool.interpreter;
   check.insert(check.end(), {"-c", "import matplotlib, h5py, numpy"});
   const std::string shown = join_command_line(tool.interpreter);
-  const ChildStatus status = run_child(check, true, true);
+  const ChildStatus status = run_child(check, true, true, tool.timeout_seconds);
+  if (status.timed_out) {
+    throw InputError(fmt::format("{}: {} did not finish importing {} within {:g} s and was stopped (set "
+                                 "HALFSPACE_PLOT_TIMEOUT to allow longer, 0 for no limit), or {}",
+                                 request.by, shown, kPackages, tool.timeout_seconds, request.skip_hint));
+  }
   if (status.spawn_error != 0) {
     throw InputError(fmt::format("{}: the plotting tool's interpreter {} cannot be run ({}): {}", request.by, shown,
                                  std::strerror(status.spawn_error), install_hint(request)));
@@ -130,7 +186,13 @@ std::string run_plot_tool(const PlotTool& tool, std::string_view subcommand, con
                           bool quiet) {
   std::vector<std::string> command = tool.interpreter;
   command.insert(command.end(), {tool.script.string(), std::string(subcommand), file.string()});
-  const ChildStatus status = run_child(command, quiet, false);
+  const ChildStatus status = run_child(command, quiet, false, tool.timeout_seconds);
+  if (status.timed_out) {
+    return fmt::format(
+        "'{}' did not finish within {:g} s and was stopped (set HALFSPACE_PLOT_TIMEOUT to allow longer, 0 for no "
+        "limit)",
+        join_command_line(command), tool.timeout_seconds);
+  }
   if (status.spawn_error != 0) {
     return fmt::format("'{}' could not be started: {}", join_command_line(command), std::strerror(status.spawn_error));
   }

@@ -9,9 +9,15 @@
 
 namespace halfspace::app {
 
+// How long the tool may run before it is stopped, unless HALFSPACE_PLOT_TIMEOUT
+// (seconds; 0 for no limit) says otherwise: a tool that never exits (a
+// display it waits for, a locked font cache) must not hang the program.
+inline constexpr double kDefaultPlotTimeoutSeconds = 120.0;
+
 struct PlotTool {
   std::vector<std::string> interpreter;  // e.g. {"/usr/bin/python3"} or {"/usr/bin/env", "python3"}
   std::filesystem::path script;
+  double timeout_seconds = kDefaultPlotTimeoutSeconds;  // 0: no limit
 };
 
 // Who asks for the tool, so that messages name the option and how to do
@@ -28,12 +34,14 @@ struct PlotRequest {
 // the script's #! line, else python3. Checks that the interpreter runs and
 // imports matplotlib, h5py and numpy, so that a missing package is reported
 // before a long solve. Throws InputError with a message saying what is
-// missing and how to install it.
+// missing and how to install it, or that HALFSPACE_PLOT_TIMEOUT is not a
+// number of seconds.
 PlotTool find_plot_tool(const PlotRequest& request);
 
 // Runs `tool subcommand file` (the figures go next to `file`), its standard
-// output suppressed when `quiet`. Returns an empty string on success, else
-// one line saying what failed.
+// output suppressed when `quiet`; stops it (SIGTERM, then SIGKILL 5 s later)
+// once it has run tool.timeout_seconds. Returns an empty string on success,
+// else one line saying what failed.
 std::string run_plot_tool(const PlotTool& tool, std::string_view subcommand, const std::filesystem::path& file,
                           bool quiet);
 

@@ -9,7 +9,10 @@
 #include <cstdio>
 #include <optional>
 #include <span>
+#include <string>
+#include <utility>
 
+#include "activity.hpp"
 #include "exit_codes.hpp"
 #include "halfspace/geometry/builtin_surface.hpp"
 #include "halfspace/io/result_writer.hpp"
@@ -25,7 +28,11 @@
 namespace halfspace::app {
 
 int run_solve(const SolveSetup& setup) {
-  if (setup.load_values.size() > 1) return run_sweep(setup);
+  const std::string on_grid = fmt::format("{} on the {} grid", setup.solver.name, setup.grid.shape_string());
+  if (setup.load_values.size() > 1) {
+    const Activity sweep(fmt::format("running the load sweep ({}, {} steps)", on_grid, setup.load_values.size()));
+    return run_sweep(setup);
+  }
   // Threads first: the FFT plans use the thread count in force when made.
   set_threads(setup.threads);
   const std::optional<PlotTool> plot =
@@ -33,8 +40,10 @@ int run_solve(const SolveSetup& setup) {
   Progress progress(!setup.quiet, 1, setup.solver.tolerance);
   solvers::SolverSettings settings = setup.solver;
   settings.progress = progress.callback();
+  std::optional<Activity> activity(std::in_place, fmt::format("building the solver ({})", on_grid));
   std::unique_ptr<ContactSolver> solver = solvers::make_solver(setup.grid, setup.e_star, settings);
 
+  activity.emplace(fmt::format("solving ({})", on_grid));
   Eigen::ArrayXd initial_gap = geometry::initial_gap_from_heights(setup.heights);
   const auto start = std::chrono::steady_clock::now();
   SolveResult result = solver->solve(
@@ -58,12 +67,15 @@ int run_solve(const SolveSetup& setup) {
   metadata.height_source = setup.height_source;
   metadata.preparation = fmt::format("{}", fmt::join(setup.preparation, "\n"));
   const std::span<const double> heights(setup.heights.data(), static_cast<std::size_t>(setup.heights.size()));
+  activity.emplace(fmt::format("computing the statistics of the {} grid", setup.grid.shape_string()));
   metadata.surface_statistics = surface::surface_statistics(setup.grid, heights);
   metadata.contact_statistics = surface::contact_statistics(setup.grid, result);
+  activity.emplace(fmt::format("writing {}", setup.output.string()));
   io::write_result(setup.output, setup.grid,
                    std::span<const double>(setup.heights.data(), static_cast<std::size_t>(setup.heights.size())),
                    result, metadata);
 
+  activity.reset();
   if (!setup.quiet) {
     print_summary(stdout, setup, result);
     std::fflush(stdout);
@@ -91,8 +103,12 @@ Command add_solve_command(CLI::App& program) {
   add_solve_options(*solve);
   return {solve, [solve](const std::vector<std::string>& argv) {
             SolveOptions options = solve_options_from_command_line(*solve, argv);
+            std::optional<Activity> activity(std::in_place, "reading the options");
             merge_config_file(options);
-            return run_solve(make_solve_setup(options));
+            activity.emplace("checking the options and making the surface");
+            const SolveSetup setup = make_solve_setup(options);
+            activity.reset();
+            return run_solve(setup);
           }};
 }
 

@@ -26,6 +26,7 @@ enum class Kind {
   text,        // string
   path,        // string; relative paths in a config file are relative to the file
   dimensions,  // string "N" or "AxB"; a config file may also give a bare number
+  memory,      // string "8G", "512M" or bytes; a config file may also give a whole number of bytes
   flag,        // bool, no value
 };
 
@@ -110,6 +111,9 @@ const std::array kOptions{
                "coarse-grid correction on B x B blocks of the contact (pk-fourier, pk-multilevel's finest grid; "
                "2D grids whose nx and ny B divides, at least 3 blocks per axis); 0 for none "
                "[32 with pk-multilevel on grids of 2048^2 cells or more where it applies, else none]"},
+    OptionSpec{"max-memory", &SolveOptions::max_memory, Kind::memory, kSolver, "SIZE",
+               "refuse to start when the run's estimated peak memory exceeds SIZE: bytes, or K, M, G, T (powers of "
+               "1024), e.g. 512M or 8G [the memory available: MemAvailable, or a cgroup's limit if lower]"},
     OptionSpec{"output", &SolveOptions::output, Kind::path, kOutput, "FILE",
                "result file (HDF5), required; replaced if it exists"},
     OptionSpec{"quiet", &SolveOptions::quiet, Kind::flag, kOutput, "",
@@ -187,6 +191,7 @@ void set_from_text(SolveOptions& options, const OptionSpec& spec, const std::str
     case Kind::text:
     case Kind::path:
     case Kind::dimensions:
+    case Kind::memory:
       options.*std::get<std::optional<std::string> SolveOptions::*>(spec.field) = text;
       break;
     case Kind::flag:
@@ -287,6 +292,18 @@ void set_from_toml(SolveOptions& options, const OptionSpec& spec, const toml::no
         text = fmt::format("{}", *node.value<double>());  // shortest form that reads back exactly
       } else {
         throw wrong_type("a number or a string such as \"256x256\"");
+      }
+      options.*std::get<std::optional<std::string> SolveOptions::*>(spec.field) = text;
+      break;
+    }
+    case Kind::memory: {
+      std::string text;
+      if (node.is_string()) {
+        text = *node.value<std::string>();
+      } else if (node.is_integer()) {
+        text = fmt::format("{}", *node.value<long long>());
+      } else {
+        throw wrong_type("a string such as \"8G\" or a whole number of bytes");
       }
       options.*std::get<std::optional<std::string> SolveOptions::*>(spec.field) = text;
       break;

@@ -54,6 +54,7 @@ struct SolveOptions {
   std::optional<long long> threads;
   std::optional<std::string> fft_planning;
   std::optional<long long> deflation_block;
+  std::optional<std::string> max_memory;  // "8G", "512M" or bytes, as written
   // Output.
   std::optional<std::string> output;
   bool quiet = false;

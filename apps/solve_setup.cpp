@@ -12,17 +12,23 @@
 #include <cmath>
 #include <initializer_list>
 #include <optional>
-#include <thread>
+#include <functional>
 #include <tuple>
 #include <utility>
 #include <vector>
 
+#include "activity.hpp"
+#include "grid_options.hpp"
 #include "halfspace/error.hpp"
 #include "halfspace/geometry/builtin_surface.hpp"
 #include "halfspace/io/height_map_reader.hpp"
 #include "halfspace/material.hpp"
+#include "halfspace/memory_estimate.hpp"
 #include "halfspace/surface/padding.hpp"
 #include "halfspace/surface/preparation.hpp"
+#include "halfspace/threads.hpp"
+#include "memory_check.hpp"
+#include "physical_ranges.hpp"
 #include "value_parsing.hpp"
 
 namespace halfspace::app {
@@ -64,6 +70,18 @@ double require_positive(const SolveOptions& options, std::string_view key, doubl
   return value;
 }
 
+// A length option (radius, wavelength, amplitude, spacing) within the
+// program's range of lengths.
+double require_length(const SolveOptions& options, std::string_view key, double value) {
+  require_positive(options, key, value, "m");
+  return require_in_range(options.describe(key), value, kMinLength, kMaxLength, "m");
+}
+
+double require_modulus(const SolveOptions& options, std::string_view key, double value) {
+  require_positive(options, key, value, "Pa");
+  return require_in_range(options.describe(key), value, kMinModulus, kMaxModulus, "Pa");
+}
+
 void check_surface_choice(const SolveOptions& options) {
   if (options.height_map && options.geometry) {
     throw InputError(fmt::format("{} and {} cannot be combined: give exactly one surface", options.name("height-map"),
@@ -82,7 +100,7 @@ double material_from(const SolveOptions& o) {
     throw InputError(fmt::format("{} cannot be combined with {}: give either E-star or all of E1, nu1, E2, nu2",
                                  o.name("E-star"), join_names(given)));
   }
-  if (o.e_star) return checked_composite_modulus(*o.e_star);
+  if (o.e_star) return checked_composite_modulus(require_modulus(o, "E-star", *o.e_star));
   if (given.empty()) {
     throw InputError("no material given: pass --E-star, or --E1, --nu1, --E2 and --nu2");
   }
@@ -94,7 +112,11 @@ double material_from(const SolveOptions& o) {
     throw InputError(
         fmt::format("incomplete material: missing {} (give all of E1, nu1, E2, nu2, or E-star)", join_names(missing)));
   }
-  return composite_modulus({*o.e1, *o.nu1}, {*o.e2, *o.nu2});
+  const double e_star = composite_modulus({require_modulus(o, "E1", *o.e1), *o.nu1}, {require_modulus(o, "E2", *o.e2), *o.nu2});
+  // nu near -1 makes a body's compliance vanish and E* grow without bound.
+  return require_in_range(fmt::format("the composite modulus E* = {:g} Pa of {}, {}, {}, {}", e_star, o.describe("E1"),
+                                      o.describe("nu1"), o.describe("E2"), o.describe("nu2")),
+                          e_star, kMinModulus, kMaxModulus, "Pa");
 }
 
 // The load mode and every value of the load (one for a single solve, more for
@@ -167,13 +189,50 @@ solvers::SolverSettings solver_settings_from(const SolveOptions& o) {
 }
 
 int threads_from(const SolveOptions& o) {
-  if (!o.threads) {
-    return static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
-  }
-  if (*o.threads < 1 || *o.threads > INT_MAX) {
-    throw InputError(fmt::format("{} is invalid: need at least 1 thread", o.describe("threads")));
+  if (!o.threads) return default_threads();
+  if (*o.threads < 1 || *o.threads > max_threads()) {
+    throw InputError(fmt::format("{} is invalid: allowed range is 1 to {} threads ({} x the {} hardware threads)",
+                                 o.describe("threads"), max_threads(), kThreadsPerHardwareThread,
+                                 hardware_threads()));
   }
   return static_cast<int>(*o.threads);
+}
+
+// The mean pressure each load makes on `grid`, within the program's range:
+// a force of 1e300 N on a 1 mm^2 domain, or a mean pressure of 1e-300 Pa,
+// would overflow or underflow inside the solve.
+void check_load_scale(const SolveOptions& o, const Grid& grid, ControlMode mode, const std::vector<double>& values) {
+  const auto value_name = [&](std::size_t k) {
+    return values.size() == 1 ? std::string() : fmt::format(" (value {}: {:g})", k + 1, values[k]);
+  };
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    switch (mode) {
+      case ControlMode::force: {
+        const double pressure = values[k] / grid.domain_area();
+        require_in_range(fmt::format("{}{} on the {} grid of {} {:g} {}: the mean pressure force / {} = {:g} Pa",
+                                     o.describe("force"), value_name(k), grid.shape_string(),
+                                     grid.dimension() == 1 ? "length" : "area", grid.domain_area(),
+                                     grid.dimension() == 1 ? "m" : "m^2", grid.dimension() == 1 ? "length" : "area",
+                                     pressure),
+                         pressure, kMinMeanPressure, kMaxMeanPressure, "Pa");
+        break;
+      }
+      case ControlMode::mean_pressure:
+        require_in_range(o.describe("mean-pressure") + value_name(k), values[k], kMinMeanPressure, kMaxMeanPressure,
+                         "Pa");
+        break;
+      case ControlMode::approach:
+        require_in_range(o.describe("approach") + value_name(k), values[k], kMinLength, kMaxLength, "m");
+        break;
+    }
+  }
+}
+
+// "the solve (pk-multilevel, free boundary, 1e+12 cells)" with the steps of a sweep.
+std::string solve_description(const Grid& grid, const solvers::SolverSettings& solver, std::size_t steps) {
+  return fmt::format("the {} ({}, {} boundary, {:g} cells{})", steps > 1 ? "load sweep" : "solve", solver.name,
+                     to_string(grid.boundary()), static_cast<double>(grid.size()),
+                     steps > 1 ? fmt::format(", {} steps", steps) : std::string());
 }
 
 // The output is checked before solving so that a typo in the path does not
@@ -221,22 +280,15 @@ void reject_given(const SolveOptions& o, Presence keys, std::string_view reason)
 Grid grid_for_geometry(const SolveOptions& o, Boundary boundary) {
   if (!o.grid) throw InputError("--geometry needs --grid N (1D) or NXxNY (2D)");
   if (!o.size) throw InputError("--geometry needs --size L or LXxLY (domain size in m)");
-  const std::vector<std::size_t> cells = parse_grid_shape(*o.grid, o.describe("grid"));
-  const std::vector<double> lengths = parse_domain_size(*o.size, o.describe("size"));
-  if (cells.size() == 1) {
-    if (lengths.size() != 1) {
-      throw InputError(
-          fmt::format("{} is invalid for the 1D grid {}: give one length", o.describe("size"), o.describe("grid")));
-    }
-    return Grid::line(cells[0], lengths[0] / static_cast<double>(cells[0]), boundary);
-  }
-  // One length on a 2D grid means a square domain.
-  const double length_y = lengths.size() == 2 ? lengths[1] : lengths[0];
-  return Grid::plane(cells[0], cells[1], lengths[0] / static_cast<double>(cells[0]),
-                     length_y / static_cast<double>(cells[1]), boundary);
+  return grid_from_options(*o.grid, o.describe("grid"), *o.size, o.describe("size"), boundary);
 }
 
-Surface builtin_surface(const SolveOptions& o, Boundary boundary) {
+// The checks that need the grid, run as soon as it is known and before the
+// heights are made: the loads' scale on it, and the memory a solve on it
+// needs. `request` names where the grid came from.
+using GridCheck = std::function<void(const Grid& grid, const std::string& request)>;
+
+Surface builtin_surface(const SolveOptions& o, Boundary boundary, const GridCheck& check_grid) {
   reject_given(o,
                {{"dataset", o.dataset.has_value()},
                 {"dx", o.dx.has_value()},
@@ -253,7 +305,7 @@ Surface builtin_surface(const SolveOptions& o, Boundary boundary) {
   const std::string shape_name = o.describe("geometry");
   const auto require = [&](std::string_view key, const std::optional<double>& value) {
     if (!value) throw InputError(fmt::format("{} needs --{} (m)", shape_name, key));
-    return require_positive(o, key, *value, "m");
+    return require_length(o, key, *value);
   };
   const auto unused = [&](Presence keys) { reject_given(o, keys, fmt::format("does not apply to {}", shape_name)); };
   std::string source = std::string(geometry::to_string(spec.shape));
@@ -277,6 +329,8 @@ Surface builtin_surface(const SolveOptions& o, Boundary boundary) {
       break;
   }
   Grid grid = grid_for_geometry(o, boundary);
+  check_grid(grid, o.describe("grid"));
+  const Activity activity(fmt::format("making the {} surface on the {} grid", shape_name, grid.shape_string()));
   Eigen::ArrayXd heights = geometry::make_surface_heights(grid, spec);
   return {std::move(grid), std::move(heights), std::move(source), {}};
 }
@@ -285,7 +339,7 @@ Surface builtin_surface(const SolveOptions& o, Boundary boundary) {
 // (0 when the file has none; the reader rejects negative ones).
 std::optional<double> height_map_spacing(const SolveOptions& o, std::string_view key,
                                          const std::optional<double>& option, double attribute) {
-  if (option) return require_positive(o, key, *option, "m");
+  if (option) return require_length(o, key, *option);
   if (attribute > 0.0) return attribute;
   return std::nullopt;
 }
@@ -336,7 +390,7 @@ surface::PreparationOptions preparation_from(const SolveOptions& o, Boundary bou
   return prepare;
 }
 
-Surface height_map_surface(const SolveOptions& o, Boundary boundary) {
+Surface height_map_surface(const SolveOptions& o, Boundary boundary, const GridCheck& check_grid) {
   reject_given(o,
                {{"radius", o.radius.has_value()},
                 {"wavelength", o.wavelength.has_value()},
@@ -347,6 +401,7 @@ Surface height_map_surface(const SolveOptions& o, Boundary boundary) {
   const std::string& file = *o.height_map;
   const io::ReadOptions read = read_options_from(o);
   const surface::PreparationOptions prepare = preparation_from(o, boundary);
+  const Activity reading(fmt::format("reading the height map {}", file));
   io::HeightMap map = io::read_height_map(file, read);
   std::string source = map.source.empty() ? file : map.source;
 
@@ -364,6 +419,15 @@ Surface height_map_surface(const SolveOptions& o, Boundary boundary) {
   }
   map.dx = *dx;
   map.dy = dy.value_or(0.0);
+  // Spacings from the file's attributes get the range the options have.
+  for (const auto& [key, value, given] : {std::tuple{"dx", map.dx, o.dx.has_value()},
+                                          std::tuple{"dy", map.dy, o.dy.has_value() || map.dimension == 1}}) {
+    if (!given) {
+      require_in_range(fmt::format("the spacing {} = {:g} m of height map {} (override it with --{})", key, value,
+                                   file, key),
+                       value, kMinLength, kMaxLength, "m");
+    }
+  }
 
   try {
     surface::prepare_height_map(map, prepare);
@@ -373,6 +437,8 @@ Surface height_map_surface(const SolveOptions& o, Boundary boundary) {
   }
   Grid grid =
       map.dimension == 1 ? Grid::line(map.nx, map.dx, boundary) : Grid::plane(map.nx, map.ny, map.dx, map.dy, boundary);
+  check_grid(grid, fmt::format("height map {} ({} cells{})", file, grid.shape_string(),
+                                 map.preparation.empty() ? "" : " after preparation"));
   return {std::move(grid), std::move(map.heights), std::move(source), std::move(map.preparation)};
 }
 
@@ -392,8 +458,15 @@ SolveSetup make_solve_setup(const SolveOptions& options) {
   const Boundary boundary =
       in_context(options.name("boundary"), [&] { return parse_boundary(options.boundary.value_or("free")); });
   fs::path output = output_from(options);
+  const std::optional<MemoryLimit> limit = memory_limit(options.max_memory, options.describe("max-memory"));
+  const GridCheck check_grid = [&](const Grid& grid, const std::string& request) {
+    check_load_scale(options, grid, loading.mode, load_values);
+    require_memory(fmt::format("{}: {}", request, solve_description(grid, solver, load_values.size())),
+                   solve_memory_estimate(grid, solver, load_values.size()), limit);
+  };
 
-  Surface surface = options.geometry ? builtin_surface(options, boundary) : height_map_surface(options, boundary);
+  Surface surface = options.geometry ? builtin_surface(options, boundary, check_grid)
+                                     : height_map_surface(options, boundary, check_grid);
   if (static_cast<std::size_t>(surface.heights.size()) != surface.grid.size()) {
     throw InputError(fmt::format("surface {} has {} heights for a {} grid", surface.source, surface.heights.size(),
                                  surface.grid.shape_string()));

@@ -6,10 +6,13 @@
 
 #include <algorithm>
 #include <charconv>
+#include <optional>
 #include <cmath>
 #include <system_error>
 
+#include "halfspace/checked_size.hpp"
 #include "halfspace/error.hpp"
+#include "physical_ranges.hpp"
 
 namespace halfspace::app {
 namespace {
@@ -79,6 +82,13 @@ std::vector<std::size_t> parse_grid_shape(std::string_view text, std::string_vie
           fmt::format("{} is invalid: need at least 2 cells along each axis (got {} = {})", what, name, counts[axis]));
     }
   }
+  const std::size_t rows = counts.size() == 2 ? counts[1] : 1;
+  const std::optional<std::size_t> cells = checked_multiply(counts[0], rows);
+  if (!cells || *cells > kMaxGridCells) {
+    throw InputError(fmt::format("{} is invalid: {:.4g} cells is more than the {:.4g} a grid can have", what,
+                                 static_cast<double>(counts[0]) * static_cast<double>(rows),
+                                 static_cast<double>(kMaxGridCells)));
+  }
   return counts;
 }
 
@@ -90,12 +100,48 @@ std::vector<double> parse_domain_size(std::string_view text, std::string_view wh
   std::vector<double> lengths;
   for (std::string_view part : parts) {
     const double length = parse_number(part, what);
-    if (!(length > 0.0)) {
-      throw InputError(fmt::format("{} is invalid: the domain size must be positive (m)", what));
+    if (!(length >= kMinLength && length <= kMaxLength)) {
+      throw InputError(fmt::format("{} is invalid: each length of the domain must be in [{:g}, {:g}] m (got {:g})",
+                                   what, kMinLength, kMaxLength, length));
     }
     lengths.push_back(length);
   }
   return lengths;
+}
+
+double parse_memory_size(std::string_view text, std::string_view what) {
+  const auto invalid = [&] {
+    return InputError(fmt::format(
+        "{} is invalid: expected a size in bytes, or with a unit K, M, G or T (powers of 1024), e.g. 512M or 8G",
+        what));
+  };
+  std::string_view number = text;
+  double unit = 1.0;
+  for (std::string_view suffix : {"iB", "B"}) {
+    if (number.size() > suffix.size() && number.substr(number.size() - suffix.size()) == suffix) {
+      number.remove_suffix(suffix.size());
+      break;
+    }
+  }
+  constexpr std::string_view kUnits = "KMGT";
+  if (!number.empty()) {
+    const char last = static_cast<char>(number.back() >= 'a' && number.back() <= 'z' ? number.back() - 'a' + 'A'
+                                                                                      : number.back());
+    if (const std::size_t power = kUnits.find(last); power != std::string_view::npos) {
+      unit = std::pow(1024.0, static_cast<double>(power + 1));
+      number.remove_suffix(1);
+    } else if (number.size() != text.size() && text.substr(number.size()) != "B") {
+      throw invalid();  // "iB" without a unit letter
+    }
+  }
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(number.data(), number.data() + number.size(), value);
+  if (number.empty() || error != std::errc() || end != number.data() + number.size()) throw invalid();
+  const double bytes = value * unit;
+  if (!(std::isfinite(bytes) && bytes >= 1.0)) {
+    throw InputError(fmt::format("{} is invalid: the size must be at least 1 byte and finite", what));
+  }
+  return bytes;
 }
 
 std::vector<double> parse_number_list(std::string_view text, std::string_view what) {

@@ -14,8 +14,9 @@ namespace {
 double compliance(const ElasticBody& body, int index) {
   const double e = body.youngs_modulus;
   const double nu = body.poissons_ratio;
-  if (!(std::isfinite(e) && e > 0.0)) {
-    throw InputError(fmt::format("Young's modulus E{} = {} Pa is invalid: must be positive and finite", index, e));
+  if (!(std::isnormal(e) && e > 0.0)) {
+    throw InputError(
+        fmt::format("Young's modulus E{} = {} Pa is invalid: must be positive, finite and not denormal", index, e));
   }
   if (!(std::isfinite(nu) && nu > -1.0 && nu <= 0.5)) {
     throw InputError(fmt::format("Poisson's ratio nu{} = {} is invalid: allowed range is (-1, 0.5]", index, nu));
@@ -26,12 +27,23 @@ double compliance(const ElasticBody& body, int index) {
 }  // namespace
 
 double composite_modulus(const ElasticBody& body1, const ElasticBody& body2) {
-  return 1.0 / (compliance(body1, 1) + compliance(body2, 2));
+  // Each compliance may be fine and their sum still overflow or vanish.
+  const double e_star = 1.0 / (compliance(body1, 1) + compliance(body2, 2));
+  if (!(std::isnormal(e_star) && e_star > 0.0)) {
+    throw InputError(fmt::format(
+        "composite modulus E* = {} Pa of E1 = {} Pa, nu1 = {}, E2 = {} Pa, nu2 = {} is invalid: must be positive, "
+        "finite and not denormal",
+        e_star, body1.youngs_modulus, body1.poissons_ratio, body2.youngs_modulus, body2.poissons_ratio));
+  }
+  return e_star;
 }
 
 double checked_composite_modulus(double e_star) {
-  if (!(std::isfinite(e_star) && e_star > 0.0)) {
-    throw InputError(fmt::format("composite modulus E* = {} Pa is invalid: must be positive and finite", e_star));
+  // A denormal E* passes "positive and finite" but its reciprocal, in every
+  // kernel, is infinite.
+  if (!(std::isnormal(e_star) && e_star > 0.0)) {
+    throw InputError(
+        fmt::format("composite modulus E* = {} Pa is invalid: must be positive, finite and not denormal", e_star));
   }
   return e_star;
 }

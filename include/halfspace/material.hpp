@@ -10,10 +10,13 @@ struct ElasticBody {
 };
 
 // Composite modulus E* (Pa) of two bodies. Throws InputError naming the body
-// when E <= 0 or not finite, or nu is outside (-1, 0.5].
+// when E is not positive, finite and normal (not denormal), or nu is outside
+// (-1, 0.5], and naming all four when E* itself is not.
 double composite_modulus(const ElasticBody& body1, const ElasticBody& body2);
 
-// Checks a directly given E* (Pa): throws InputError unless positive and finite.
+// Checks a directly given E* (Pa): throws InputError unless positive, finite
+// and normal (not denormal). Any scale is accepted (tests use E* = 1); the
+// program sets physical bounds of its own.
 double checked_composite_modulus(double e_star);
 
 }  // namespace halfspace

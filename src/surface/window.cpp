@@ -5,12 +5,29 @@
 
 #include <algorithm>
 #include <charconv>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "halfspace/checked_size.hpp"
 #include "halfspace/error.hpp"
 
 namespace halfspace::surface {
+namespace {
+
+// Where a window that does not fit goes past the map along one axis: "it
+// ends at column 99"; "it starts at column 5000" when the start is already
+// outside, and "it has 2^64 - 1 columns" when the end is not even countable
+// (computed unchecked, it wraps round to a small column).
+std::string extent(std::string_view axis, std::size_t first, std::size_t count, std::size_t available) {
+  if (first >= available) return fmt::format("it starts at {} {}", axis, first);
+  if (const std::optional<std::size_t> end = checked_add(first, count - 1)) {
+    return fmt::format("it ends at {} {}", axis, *end);
+  }
+  return fmt::format("it has {} {}s", count, axis);
+}
+
+}  // namespace
 
 Window parse_window(std::string_view text) {
   std::vector<std::size_t> values;
@@ -71,12 +88,12 @@ void select_window(io::HeightMap& map, const Window& window) {
     throw InputError(fmt::format("{} is invalid: need at least 2 points along each axis", named));
   }
   if (window.i0 >= map.nx || window.nx > map.nx - window.i0) {
-    throw InputError(fmt::format("{} is invalid: it ends at column {} but the {} of {} has columns 0 to {}", named,
-                                 window.i0 + window.nx - 1, shape, map.source, map.nx - 1));
+    throw InputError(fmt::format("{} is invalid: {} but the {} of {} has columns 0 to {}", named,
+                                 extent("column", window.i0, window.nx, map.nx), shape, map.source, map.nx - 1));
   }
   if (window.j0 >= map.ny || window.ny > map.ny - window.j0) {
-    throw InputError(fmt::format("{} is invalid: it ends at row {} but the {} of {} has rows 0 to {}", named,
-                                 window.j0 + window.ny - 1, shape, map.source, map.ny - 1));
+    throw InputError(fmt::format("{} is invalid: {} but the {} of {} has rows 0 to {}", named,
+                                 extent("row", window.j0, window.ny, map.ny), shape, map.source, map.ny - 1));
   }
   const std::size_t old_nx = map.nx;
   const std::size_t old_ny = map.ny;

@@ -1,0 +1,21 @@
+// OpenMP threads that wait for work spin on their core for a while (GNU
+// OpenMP: up to 300,000 spins per wait) unless OMP_WAIT_POLICY is passive.
+// Alone on a machine that costs nothing; beside other busy processes the
+// spinning threads take the cores those need, and a solve ran 15-30 times
+// slower than alone (DeflatedSolverTest/Periodic: 20.7 s instead of 0.68 s
+// with two threads under load). Passive waiting costs a few percent when the
+// machine is idle (bench/results/2026-11-25-concurrent.md).
+#pragma once
+
+namespace halfspace::app {
+
+// Makes this process's OpenMP threads wait passively unless the user chose a
+// policy (OMP_WAIT_POLICY or GOMP_SPINCOUNT set and not empty). GNU OpenMP reads its
+// environment once, when the library is loaded, before main: so this sets
+// OMP_WAIT_POLICY=passive and executes the program again (same process,
+// same arguments) from /proc/self/exe. Call it first thing in main. Returns
+// only if nothing had to be done or the program could not be executed again
+// (then it runs with the runtime's default waiting).
+void use_passive_openmp_waiting(char** argv);
+
+}  // namespace halfspace::app

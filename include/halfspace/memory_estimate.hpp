@@ -1,0 +1,58 @@
+// How much memory a run will need, worked out from the grid before anything
+// is allocated, and how much the machine has, so that a request far beyond
+// it is refused with a message instead of ending in std::bad_alloc, the
+// out-of-memory killer or minutes of swapping.
+//
+// The estimates add up the arrays each part allocates (operator, FFT buffers,
+// solver workspace, result fields, the file image the writer builds) at the
+// peak of each phase of the run. They are upper bounds: the measured peak
+// (maximum resident set size) stays below them, and above a third of them
+// (tests/memory_estimate_test.cpp).
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "halfspace/grid.hpp"
+#include "halfspace/solvers/solver_factory.hpp"
+
+namespace halfspace {
+
+// What the halfspace program holds before a run allocates anything: code,
+// libraries, FFTW's and HDF5's own state (measured: 27-30 MiB).
+inline constexpr double kProgramBytes = 40.0 * 1024 * 1024;
+
+// Peak bytes of `halfspace solve` on `grid` with `settings` (solver, maximum
+// iterations, deflation) and `load_steps` loads (more than one: a sweep,
+// which keeps every step's fields): kProgramBytes, the heights and the
+// initial gap, and the largest of the solve (the coarse-grid start of
+// pk-multilevel, the fine solve) and the writing of the result file.
+// Bytes are doubles: the count for a grid of 2^32 x 2^32 cells does not fit
+// in std::size_t.
+double solve_memory_estimate(const Grid& grid, const solvers::SolverSettings& settings, std::size_t load_steps = 1);
+
+// Peak bytes of `halfspace generate` on `grid`: kProgramBytes, the
+// synthesis transform of a self-affine surface and the heights (the
+// deterministic shapes need less).
+double generate_memory_estimate(const Grid& grid);
+
+// The memory this process may still use, and where that figure comes from.
+struct AvailableMemory {
+  double bytes = 0.0;
+  std::string source;  // e.g. "MemAvailable in /proc/meminfo"
+};
+
+// The smallest of MemAvailable (/proc/meminfo) and, where a cgroup limits
+// this process's memory, that limit less the cgroup's usage (page cache it
+// can reclaim excepted): cgroup v2 memory.max along the process's cgroup
+// path, or v1 memory.limit_in_bytes. Nothing if none can be read.
+// `proc` and `cgroup` are the mount points, replaceable for tests.
+std::optional<AvailableMemory> available_memory(const std::filesystem::path& proc = "/proc",
+                                                const std::filesystem::path& cgroup = "/sys/fs/cgroup");
+
+// "512 MiB", "1.5 GiB", "93.1 TiB": three significant digits, binary units.
+std::string format_bytes(double bytes);
+
+}  // namespace halfspace

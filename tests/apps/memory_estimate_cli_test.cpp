@@ -1,0 +1,129 @@
+// The memory estimate against what real runs of the program use: for solves
+// of every solver family, both boundaries, 1D and 2D, and a sweep, the peak
+// resident set size of the child process (wait4's ru_maxrss) must stay below
+// the estimate, and the estimate must not exceed three times that peak (an
+// estimate that refuses runs the machine could do is no use either).
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "halfspace/memory_estimate.hpp"
+#include "io/hdf5_test_support.hpp"
+
+namespace halfspace {
+namespace {
+
+namespace fs = std::filesystem;
+using test::TempDir;
+
+struct Measured {
+  int exit_code = -1;
+  double peak_bytes = 0.0;  // maximum resident set size
+};
+
+// Runs the program with `arguments` in `directory`, output discarded, and
+// reads its peak memory from the kernel's accounting of that one child.
+Measured run_measured(const std::vector<std::string>& arguments, const fs::path& directory) {
+  std::vector<std::string> words{HALFSPACE_EXECUTABLE};
+  words.insert(words.end(), arguments.begin(), arguments.end());
+  std::vector<char*> argv;
+  for (std::string& word : words) argv.push_back(word.data());
+  argv.push_back(nullptr);
+  const std::string where = directory.string();
+  std::fflush(nullptr);
+  const pid_t child = ::fork();
+  if (child == 0) {
+    // Only async-signal-safe calls between fork and exec.
+    const int null = ::open("/dev/null", O_WRONLY);
+    if (::chdir(where.c_str()) != 0 || null < 0) ::_exit(127);
+    ::dup2(null, STDOUT_FILENO);
+    ::dup2(null, STDERR_FILENO);
+    ::execv(argv[0], argv.data());
+    ::_exit(127);
+  }
+  Measured measured;
+  int status = 0;
+  struct rusage usage {};
+  if (child < 0 || ::wait4(child, &status, 0, &usage) != child) return measured;
+  measured.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  measured.peak_bytes = static_cast<double>(usage.ru_maxrss) * 1024.0;  // KiB on Linux
+  return measured;
+}
+
+struct Case {
+  std::string name;
+  std::vector<std::string> arguments;  // after "solve", without --output
+  Grid grid;                           // the grid those options make
+  solvers::SolverSettings settings;    // the settings they choose
+  std::size_t steps = 1;
+};
+
+solvers::SolverSettings solver(const std::string& name, std::optional<std::size_t> deflation_block = std::nullopt) {
+  solvers::SolverSettings settings;
+  settings.name = name;
+  settings.deflation_block = deflation_block;
+  return settings;
+}
+
+TEST(MemoryEstimateCliTest, EstimateBoundsTheMeasuredPeakWithinAFactorOfThree) {
+  const std::vector<Case> cases{
+      {"periodic 2D wavy, pk-multilevel",
+       {"--geometry", "wavy", "--wavelength", "2.5e-4", "--amplitude", "1e-6", "--grid", "512x512", "--size", "1e-3",
+        "--boundary", "periodic", "--mean-pressure", "1e7"},
+       Grid::plane(512, 512, 1e-3 / 512, 1e-3 / 512, Boundary::periodic),
+       solver("pk-multilevel")},
+      {"free 2D sphere, pk-multilevel",
+       {"--geometry", "sphere", "--radius", "0.01", "--grid", "512x512", "--size", "5e-4", "--force", "10"},
+       Grid::plane(512, 512, 5e-4 / 512, 5e-4 / 512, Boundary::free),
+       solver("pk-multilevel")},
+      {"periodic 2D wavy, pk-fourier with block deflation",
+       {"--geometry", "wavy", "--wavelength", "2.5e-4", "--amplitude", "1e-6", "--grid", "512x512", "--size", "1e-3",
+        "--boundary", "periodic", "--mean-pressure", "1e7", "--solver", "pk-fourier", "--deflation-block", "32"},
+       Grid::plane(512, 512, 1e-3 / 512, 1e-3 / 512, Boundary::periodic),
+       solver("pk-fourier", 32)},
+      {"free 1D cylinder, pk",
+       {"--geometry", "cylinder", "--radius", "0.01", "--grid", "262144", "--size", "1e-3", "--force", "1e4",
+        "--solver", "pk"},
+       Grid::line(262144, 1e-3 / 262144, Boundary::free),
+       solver("pk")},
+      {"periodic 1D wavy, pk-multilevel",
+       {"--geometry", "wavy", "--wavelength", "2.5e-4", "--amplitude", "1e-6", "--grid", "262144", "--size", "1e-3",
+        "--boundary", "periodic", "--mean-pressure", "1e7"},
+       Grid::line(262144, 1e-3 / 262144, Boundary::periodic),
+       solver("pk-multilevel")},
+      {"free 2D sphere, sweep of 4 loads",
+       {"--geometry", "sphere", "--radius", "0.01", "--grid", "256x256", "--size", "5e-4", "--force", "1,3,10,30"},
+       Grid::plane(256, 256, 5e-4 / 256, 5e-4 / 256, Boundary::free),
+       solver("pk-multilevel"),
+       4},
+      {"free 1D cylinder, lemke (dense)",
+       {"--geometry", "cylinder", "--radius", "0.01", "--grid", "1024", "--size", "1e-4", "--force", "1e3",
+        "--solver", "lemke"},
+       Grid::line(1024, 1e-4 / 1024, Boundary::free),
+       solver("lemke")},
+  };
+  const TempDir dir;
+  for (const Case& c : cases) {
+    std::vector<std::string> arguments{"solve"};
+    arguments.insert(arguments.end(), c.arguments.begin(), c.arguments.end());
+    arguments.insert(arguments.end(), {"--output", "out.h5", "--quiet"});
+    const Measured measured = run_measured(arguments, dir.path());
+    ASSERT_EQ(measured.exit_code, 0) << c.name;
+    const double estimate = solve_memory_estimate(c.grid, c.settings, c.steps);
+    std::printf("  %-50s peak %8.1f MiB, estimate %8.1f MiB (%.2fx)\n", c.name.c_str(),
+                measured.peak_bytes / 1048576.0, estimate / 1048576.0, estimate / measured.peak_bytes);
+    EXPECT_LT(measured.peak_bytes, estimate) << c.name;
+    EXPECT_LT(estimate, 3.0 * measured.peak_bytes) << c.name;
+  }
+}
+
+}  // namespace
+}  // namespace halfspace
