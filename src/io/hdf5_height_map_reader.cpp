@@ -83,6 +83,11 @@ File open_file(const Target& target) {
   const auto status = std::filesystem::status(target.path, error);
   if (!std::filesystem::exists(status)) target.fail("the file does not exist");
   if (std::filesystem::is_directory(status)) target.fail("the path is a directory, not a file");
+  // HDF5 reads by seeking: a pipe or device cannot be read, and /dev/zero
+  // must not be searched for a signature.
+  if (!std::filesystem::is_regular_file(status)) {
+    target.fail("the path is not a regular file (a device, pipe or socket); save the data to a file first");
+  }
 
 #if H5_VERSION_GE(1, 12, 0)
   const htri_t is_hdf5 = H5Fis_accessible(target.path.c_str(), H5P_DEFAULT);
@@ -128,7 +133,7 @@ std::string describe_root_datasets(hid_t file) {
     H5Lget_name_by_idx(file, ".", H5_INDEX_NAME, H5_ITER_INC, k, name.data(), name.size() + 1, H5P_DEFAULT);
     const Object object(H5Oopen(file, name.c_str(), H5P_DEFAULT));
     if (!object.valid() || H5Iget_type(object.get()) != H5I_DATASET) continue;
-    if (names.size() < kMaxListedDatasets) names.push_back("'/" + name + "'");
+    if (names.size() < kMaxListedDatasets) names.push_back("'/" + detail::printable(name, 80) + "'");
     ++count;
   }
   if (count == 0) return "the root group holds no datasets";

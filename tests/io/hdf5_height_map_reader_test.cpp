@@ -17,6 +17,7 @@
 
 #include "halfspace/error.hpp"
 #include "io/hdf5_test_support.hpp"
+#include "io/reader_test_support.hpp"
 
 namespace halfspace::io {
 namespace {
@@ -28,7 +29,7 @@ using test::create_file;
 using test::TempDir;
 
 const fs::path kDataDir = HALFSPACE_TEST_DATA_DIR;
-const fs::path kTopographyDir = "/work/shared/data/topography";
+const fs::path& kTopographyDir = test::kTopographyDir;
 
 // Our rms sums in a different order from numpy's pairwise sum, and the di-5
 // heights carry an offset 500x their rms, so cancellation amplifies rounding.
