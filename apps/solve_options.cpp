@@ -332,12 +332,15 @@ std::string read_text_file(const std::filesystem::path& path) {
   // A config file holds a few options: read at most kMaxConfigBytes (plus
   // one to tell), so that /dev/zero or a huge file cannot exhaust memory.
   std::ifstream in(path, std::ios::binary);
-  std::string text(kMaxConfigBytes + 1, '\0');
-  in.read(text.data(), static_cast<std::streamsize>(text.size()));
-  if (in.bad() || (!in && !in.eof())) {
+  std::string text;
+  std::array<char, 1 << 16> piece{};
+  while (in && text.size() <= kMaxConfigBytes) {
+    in.read(piece.data(), static_cast<std::streamsize>(piece.size()));
+    text.append(piece.data(), static_cast<std::size_t>(in.gcount()));
+  }
+  if (in.bad() || (!in.eof() && text.size() <= kMaxConfigBytes)) {
     throw FileError(fmt::format("config file {} cannot be read", path.string()));
   }
-  text.resize(static_cast<std::size_t>(in.gcount()));
   if (text.size() > kMaxConfigBytes) {
     throw FileError(fmt::format("config file {} is larger than {} bytes (1 MiB); a config file holds a few options",
                                 path.string(), kMaxConfigBytes));

@@ -123,9 +123,10 @@ HeightMap read_gsf_height_map(const std::filesystem::path& path, const std::opti
   while (header_end == std::string::npos) {
     const std::size_t before = bytes.size();
     if (before > kMaxHeaderBytes) {
-      target.fail(fmt::format("no NUL ends the header within its first {} bytes (a GSF header is a few lines; the "
-                              "file is damaged or not binary GSF)",
-                              kMaxHeaderBytes));
+      target.fail(
+          fmt::format("no NUL ends the header within its first {} bytes (a GSF header is a few lines; the "
+                      "file is damaged or not binary GSF)",
+                      kMaxHeaderBytes));
     }
     if (file.append(bytes, kHeaderPiece) == 0) {
       target.fail("the header is not terminated by NUL padding (the file is truncated or not binary GSF)");
@@ -186,9 +187,10 @@ HeightMap read_gsf_height_map(const std::filesystem::path& path, const std::opti
   }
   detail::mark_non_finite_invalid(map);
   const auto title = fields.find("Title");
-  map.source = fmt::format("{} (Gwyddion Simple Field{}, z in {}, x/y in {})", path.string(),
-                           title != fields.end() ? fmt::format(" '{}'", detail::printable(title->second, 80)) : std::string(), z_unit.name,
-                           xy_unit.name);
+  map.source =
+      fmt::format("{} (Gwyddion Simple Field{}, z in {}, x/y in {})", path.string(),
+                  title != fields.end() ? fmt::format(" '{}'", detail::printable(title->second, 80)) : std::string(),
+                  z_unit.name, xy_unit.name);
   return map;
 }
 

@@ -116,9 +116,8 @@ class LiteralParser {
 Dtype parse_dtype(const std::string& quoted, const ReadTarget& target) {
   const std::string descr = quoted.size() >= 2 && quoted.front() == '\'' ? quoted.substr(1, quoted.size() - 2) : quoted;
   const auto unsupported = [&](std::string_view why) {
-    target.fail(
-        fmt::format("dtype '{}' is not supported ({}); heights must be float32, float64 or integers",
-                    detail::printable(descr), why));
+    target.fail(fmt::format("dtype '{}' is not supported ({}); heights must be float32, float64 or integers",
+                            detail::printable(descr), why));
   };
   if (descr.size() < 3) unsupported("not a simple numeric type");
   Dtype dtype;
@@ -153,7 +152,8 @@ std::vector<std::uint64_t> parse_shape(const std::string& tuple, const ReadTarge
     if (pos >= tuple.size() || tuple[pos] == ')') break;
     std::uint64_t value = 0;
     const auto [end, error] = std::from_chars(tuple.data() + pos, tuple.data() + tuple.size(), value);
-    if (error != std::errc()) target.fail(fmt::format("the header's shape {} is not a tuple of sizes", detail::printable(tuple)));
+    if (error != std::errc())
+      target.fail(fmt::format("the header's shape {} is not a tuple of sizes", detail::printable(tuple)));
     shape.push_back(value);
     pos = static_cast<std::size_t>(end - tuple.data());
   }

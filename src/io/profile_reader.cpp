@@ -134,11 +134,11 @@ double uniform_spacing(const detail::TextTable& table, const ReadTarget& target,
     const double expected = intercept + slope * static_cast<double>(k);
     const double deviation = std::abs(table.at(k, 0) - expected);
     if (deviation > tolerance) {
-      target.fail(
-          fmt::format("x is not uniformly spaced: line {} has x = {} but the uniform grid fitted to all {} "
-                      "points (x = {:.9g} + k * {:.9g}) gives {:.9g} there, {:.3g} away, more than "
-                      "{:.3g}, the precision x is printed with (at most half a step); resample the profile to uniform x first",
-                      table.line_numbers[k], table.at(k, 0), n, intercept, slope, expected, deviation, tolerance));
+      target.fail(fmt::format(
+          "x is not uniformly spaced: line {} has x = {} but the uniform grid fitted to all {} "
+          "points (x = {:.9g} + k * {:.9g}) gives {:.9g} there, {:.3g} away, more than "
+          "{:.3g}, the precision x is printed with (at most half a step); resample the profile to uniform x first",
+          table.line_numbers[k], table.at(k, 0), n, intercept, slope, expected, deviation, tolerance));
     }
   }
   // A stated scan length n * dx is exact where the fitted slope carries the

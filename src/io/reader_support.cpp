@@ -22,6 +22,7 @@ namespace {
 // Reads grow the buffer by at most this much at a time: a header that claims
 // gigabytes costs only what the file really delivers.
 constexpr std::size_t kReadChunk = std::size_t{16} << 20;
+constexpr std::size_t kFirstPiece = std::size_t{64} << 10;
 
 std::string type_of(const struct stat& status) {
   if (S_ISFIFO(status.st_mode)) return "a pipe (FIFO)";
@@ -36,13 +37,6 @@ void check_exists(const ReadTarget& target) {
   const auto status = std::filesystem::status(target.path, error);
   if (!std::filesystem::exists(status)) target.fail("the file does not exist");
   if (std::filesystem::is_directory(status)) target.fail("the path is a directory, not a file");
-}
-
-std::uint64_t physical_memory_bytes() {
-  const long pages = ::sysconf(_SC_PHYS_PAGES);
-  const long page_size = ::sysconf(_SC_PAGE_SIZE);
-  if (pages <= 0 || page_size <= 0) return std::numeric_limits<std::uint64_t>::max();
-  return static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(page_size);
 }
 
 }  // namespace
@@ -97,7 +91,9 @@ std::size_t InputFile::read_some(char* buffer, std::size_t count) {
 std::size_t InputFile::append(std::string& bytes, std::size_t count) {
   std::size_t done = 0;
   while (done < count) {
-    const std::size_t piece = std::min(count - done, kReadChunk);
+    // The buffer grows with what has arrived (at most doubling), not with
+    // what was asked for: a request for more than the file holds is cheap.
+    const std::size_t piece = std::min({count - done, kReadChunk, std::max(kFirstPiece, bytes.size())});
     const std::size_t old_size = bytes.size();
     bytes.resize(old_size + piece);
     const std::size_t got = read_some(bytes.data() + old_size, piece);
@@ -120,19 +116,21 @@ void require_regular_file(const ReadTarget& target) {
     target.fail(fmt::format("the file cannot be examined: {}", std::strerror(errno)));
   }
   if (!S_ISREG(status.st_mode)) {
-    target.fail(fmt::format("the path is {}; this format is read by seeking, so it must be a regular file (save "
-                            "the data to a file first)",
-                            type_of(status)));
+    target.fail(
+        fmt::format("the path is {}; this format is read by seeking, so it must be a regular file (save "
+                    "the data to a file first)",
+                    type_of(status)));
   }
 }
 
 std::string read_text_file(const ReadTarget& target) {
   InputFile file(target);
-  const std::size_t limit =
-      file.is_regular() ? std::max<std::size_t>(file.stated_size().value_or(0), kMaxStreamedTextBytes)
-                        : kMaxStreamedTextBytes;
+  const std::size_t limit = file.is_regular()
+                                ? std::max<std::size_t>(file.stated_size().value_or(0), kMaxStreamedTextBytes)
+                                : kMaxStreamedTextBytes;
   std::string bytes;
-  if (const auto size = file.stated_size()) bytes.reserve(static_cast<std::size_t>(std::min<std::uint64_t>(*size, limit)));
+  if (const auto size = file.stated_size())
+    bytes.reserve(static_cast<std::size_t>(std::min<std::uint64_t>(*size, limit)));
   while (bytes.size() <= limit) {
     const std::size_t before = bytes.size();
     const std::size_t got = file.append(bytes, std::min(kReadChunk, limit + 1 - before));
@@ -214,10 +212,12 @@ std::string printable(std::string_view text, std::size_t count) {
     }
     // A well-formed UTF-8 sequence of 2 to 4 bytes outside the C1 controls
     // (U+0080..U+009F, which some terminals obey) is kept as it is.
-    const std::size_t length = byte >= 0xc2 && byte <= 0xdf ? 2 : byte >= 0xe0 && byte <= 0xef ? 3
-                               : byte >= 0xf0 && byte <= 0xf4                                    ? 4
-                                                                                                 : 0;
-    bool keep = length != 0 && k + length <= text.size() && !(byte == 0xc2 && static_cast<unsigned char>(text[k + 1]) < 0xa0);
+    const std::size_t length = byte >= 0xc2 && byte <= 0xdf   ? 2
+                               : byte >= 0xe0 && byte <= 0xef ? 3
+                               : byte >= 0xf0 && byte <= 0xf4 ? 4
+                                                              : 0;
+    bool keep =
+        length != 0 && k + length <= text.size() && !(byte == 0xc2 && static_cast<unsigned char>(text[k + 1]) < 0xa0);
     for (std::size_t m = 1; keep && m < length; ++m) {
       keep = (static_cast<unsigned char>(text[k + m]) & 0xc0) == 0x80;
     }
@@ -259,11 +259,19 @@ std::size_t checked_point_count(std::uint64_t nx, std::uint64_t ny, const ReadTa
   const std::uint64_t count = nx * ny;
   const std::uint64_t memory = physical_memory_bytes();
   if (count > memory / sizeof(double)) {
-    target.fail(fmt::format("a grid of {} x {} points needs {} for its heights alone, more than the {} of "
-                            "memory this machine has",
-                            nx, ny, byte_size_text(count * sizeof(double)), byte_size_text(memory)));
+    target.fail(
+        fmt::format("a grid of {} x {} points needs {} for its heights alone, more than the {} of "
+                    "memory this machine has",
+                    nx, ny, byte_size_text(count * sizeof(double)), byte_size_text(memory)));
   }
   return static_cast<std::size_t>(count);
+}
+
+std::uint64_t physical_memory_bytes() {
+  const long pages = ::sysconf(_SC_PHYS_PAGES);
+  const long page_size = ::sysconf(_SC_PAGE_SIZE);
+  if (pages <= 0 || page_size <= 0) return std::numeric_limits<std::uint64_t>::max();
+  return static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(page_size);
 }
 
 std::uint64_t checked_product(std::uint64_t a, std::uint64_t b, std::string_view what, const ReadTarget& target) {

@@ -102,6 +102,10 @@ void mark_non_finite_invalid(HeightMap& map);
 // alone (8 bytes a point) would exceed the machine's physical memory.
 std::size_t checked_point_count(std::uint64_t nx, std::uint64_t ny, const ReadTarget& target);
 
+// The machine's physical memory in bytes (the largest 64-bit value when the
+// system does not say).
+std::uint64_t physical_memory_bytes();
+
 // a * b, or a FileError naming `what` when the product overflows 64 bits.
 std::uint64_t checked_product(std::uint64_t a, std::uint64_t b, std::string_view what, const ReadTarget& target);
 

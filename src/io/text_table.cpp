@@ -157,7 +157,8 @@ TextTable parse_text_table(std::string_view text, std::size_t first_line, bool a
     for (std::size_t f = 0; f < row.size(); ++f) {
       // A zero's printed digits say nothing about the precision of the
       // others ("0.000000e+00" among "1.000000e-06", ...).
-      if (std::isfinite(row[f]) && row[f] != 0.0) table.printed_step[f] = std::max(table.printed_step[f], printed_step(fields[f]));
+      if (std::isfinite(row[f]) && row[f] != 0.0)
+        table.printed_step[f] = std::max(table.printed_step[f], printed_step(fields[f]));
     }
     table.values.insert(table.values.end(), row.begin(), row.end());
     table.line_numbers.push_back(line_number);

@@ -74,10 +74,8 @@ constexpr std::uint64_t kMaxMainXmlBytes = std::uint64_t{32} << 20;
 // Deflate codes at most 258 bytes in about two bits: no member expands more
 // than about 1032 times (zlib's technical notes), whatever its directory says.
 constexpr std::uint64_t kMaxDeflateRatio = 1032;
-// Members larger than this are decompressed once without being kept, so
-// that a directory entry lying about a large size is caught before the
-// memory for it is taken.
-constexpr std::uint64_t kVerifyFirstBytes = std::uint64_t{64} << 20;
+// Members are decompressed in pieces of this size.
+constexpr std::uint64_t kStreamChunkBytes = std::uint64_t{1} << 20;
 
 // The size of a member, from the central directory, checked against what
 // the member's compressed bytes can hold.
@@ -93,70 +91,65 @@ std::uint64_t member_size(zip_t* archive, const std::string& name, const ReadTar
   if ((stat.valid & ZIP_STAT_COMP_SIZE) != 0 && (stat.valid & ZIP_STAT_COMP_METHOD) != 0) {
     const bool stored = stat.comp_method == ZIP_CM_STORE;
     const bool deflated = stat.comp_method == ZIP_CM_DEFLATE;
-    if ((stored && stat.size != stat.comp_size) ||
-        (deflated && stat.size / kMaxDeflateRatio > stat.comp_size)) {
-      target.fail(fmt::format("the zip directory says member '{}' holds {} bytes, which its {} {} bytes cannot: "
-                              "the archive is damaged",
-                              detail::printable(name), stat.size, stored ? "stored" : "compressed",
-                              stat.comp_size));
+    if ((stored && stat.size != stat.comp_size) || (deflated && stat.size / kMaxDeflateRatio > stat.comp_size)) {
+      target.fail(
+          fmt::format("the zip directory says member '{}' holds {} bytes, which its {} {} bytes cannot: "
+                      "the archive is damaged",
+                      detail::printable(name), stat.size, stored ? "stored" : "compressed", stat.comp_size));
     }
   }
   return stat.size;
 }
 
-// Decompresses a member into `buffer` (or, when `buffer` is null, only
-// through a small scratch buffer), failing unless exactly `size` bytes come
-// out with the right CRC.
-void read_member_into(zip_t* archive, const std::string& name, std::uint64_t size, char* buffer,
-                      const ReadTarget& target) {
+// Decompresses a member a chunk at a time, handing each chunk to `consume`,
+// and fails unless exactly `size` bytes come out with the right CRC.
+template <class Consume>
+void stream_member(zip_t* archive, const std::string& name, std::uint64_t size, const ReadTarget& target,
+                   Consume&& consume) {
   std::unique_ptr<zip_file_t, ZipFileCloser> file(zip_fopen(archive, name.c_str(), 0));
   if (!file) {
     target.fail(fmt::format("member '{}' cannot be opened: {}", detail::printable(name), zip_strerror(archive)));
   }
-  std::array<char, 1 << 16> scratch;
+  std::vector<char> chunk(static_cast<std::size_t>(std::min<std::uint64_t>(size, kStreamChunkBytes)) + 1);
   std::uint64_t done = 0;
   while (done < size) {
-    char* into = buffer != nullptr ? buffer + done : scratch.data();
-    const std::uint64_t want = buffer != nullptr ? size - done : std::min<std::uint64_t>(size - done, scratch.size());
-    const zip_int64_t count = zip_fread(file.get(), into, want);
+    const std::uint64_t want = std::min<std::uint64_t>(size - done, chunk.size() - 1);
+    const zip_int64_t count = zip_fread(file.get(), chunk.data(), want);
     if (count < 0) {
       target.fail(fmt::format("member '{}' is damaged: {}", detail::printable(name), zip_file_strerror(file.get())));
     }
     if (count == 0) {
       target.fail(fmt::format("member '{}' ends after {} of {} bytes", detail::printable(name), done, size));
     }
+    consume(std::string_view(chunk.data(), static_cast<std::size_t>(count)));
     done += static_cast<std::uint64_t>(count);
   }
   // Reading to the end makes libzip compare the CRC.
-  char extra = 0;
-  const zip_int64_t beyond = zip_fread(file.get(), &extra, 1);
+  const zip_int64_t beyond = zip_fread(file.get(), chunk.data(), 1);
   if (beyond < 0) {
     target.fail(fmt::format("member '{}' is damaged: {}", detail::printable(name), zip_file_strerror(file.get())));
   }
   if (beyond > 0) {
-    target.fail(fmt::format("member '{}' holds more than the {} bytes the zip directory states: the archive is "
-                            "damaged",
-                            detail::printable(name), size));
+    target.fail(
+        fmt::format("member '{}' holds more than the {} bytes the zip directory states: the archive is "
+                    "damaged",
+                    detail::printable(name), size));
   }
 }
 
-// One member of the archive, in full. Its size is checked before anything
-// is decompressed: against `expected` (what main.xml describes) when given,
-// else against `limit`.
-std::string read_member(zip_t* archive, const std::string& name, const ReadTarget& target,
-                        std::optional<std::uint64_t> expected, std::uint64_t limit, std::string_view what) {
+// One small member of the archive (main.xml, the checksum file, the validity
+// bits), in full; its size is checked against `limit` before anything is
+// decompressed.
+std::string read_member(zip_t* archive, const std::string& name, const ReadTarget& target, std::uint64_t limit,
+                        std::string_view what) {
   const std::uint64_t size = member_size(archive, name, target);
-  if (expected && size != *expected) {
-    target.fail(fmt::format("member '{}' holds {} bytes but main.xml describes {} bytes", detail::printable(name),
-                            size, *expected));
+  if (size > limit) {
+    target.fail(fmt::format("member '{}' holds {} bytes, more than the {} {} may hold", detail::printable(name), size,
+                            detail::byte_size_text(limit), what));
   }
-  if (!expected && size > limit) {
-    target.fail(fmt::format("member '{}' holds {} bytes, more than the {} {} may hold", detail::printable(name),
-                            size, detail::byte_size_text(limit), what));
-  }
-  if (size > kVerifyFirstBytes) read_member_into(archive, name, size, nullptr, target);
-  std::string bytes(static_cast<std::size_t>(size), '\0');
-  read_member_into(archive, name, size, bytes.data(), target);
+  std::string bytes;
+  bytes.reserve(static_cast<std::size_t>(size));
+  stream_member(archive, name, size, target, [&](std::string_view chunk) { bytes.append(chunk); });
   return bytes;
 }
 
@@ -181,9 +174,10 @@ std::string find_main_xml(zip_t* archive, const ReadTarget& target) {
     for (std::size_t k = 0; k < found.size() && k < 4; ++k) {
       names += fmt::format("{}'{}'", k == 0 ? "" : ", ", detail::printable(found[k]));
     }
-    target.fail(fmt::format("the archive holds {} files named main.xml ({}{}); which one describes the surface is "
-                            "ambiguous",
-                            found.size(), names, found.size() > 4 ? ", ..." : ""));
+    target.fail(
+        fmt::format("the archive holds {} files named main.xml ({}{}); which one describes the surface is "
+                    "ambiguous",
+                    found.size(), names, found.size() > 4 ? ", ..." : ""));
   }
   return found.front();
 }
@@ -262,8 +256,8 @@ class Xml {
     std::uint64_t result = 0;
     const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), result);
     if (error != std::errc() || end != value.data() + value.size()) {
-      target_.fail(fmt::format("main.xml element {} = '{}' is not a non-negative integer", path,
-                               detail::printable(value, 60)));
+      target_.fail(
+          fmt::format("main.xml element {} = '{}' is not a non-negative integer", path, detail::printable(value, 60)));
     }
     return result;
   }
@@ -287,16 +281,20 @@ std::string line_of_offset(std::string_view text, std::ptrdiff_t offset) {
   return fmt::format("line {}", 1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(end), '\n'));
 }
 
-void check_md5(std::string_view bytes, std::string stated, std::string_view what, const ReadTarget& target) {
-  // md5checksum.hex may read "<hex> *main.xml"; only the digest counts.
+// md5checksum.hex may read "<hex> *main.xml"; only the digest counts.
+void check_md5_digest(const std::string& computed, std::string stated, std::string_view what,
+                      const ReadTarget& target) {
   stated = stated.substr(0, std::min<std::size_t>(stated.find_first_of(" \t\r\n*"), stated.size()));
   std::transform(stated.begin(), stated.end(), stated.begin(),
                  [](char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); });
-  const std::string computed = detail::md5_hex(bytes);
   if (stated != computed) {
     target.fail(fmt::format("{} does not match its MD5 checksum (stated {}, computed {}): the file is damaged", what,
                             detail::printable(stated, 40), computed));
   }
+}
+
+void check_md5(std::string_view bytes, const std::string& stated, std::string_view what, const ReadTarget& target) {
+  check_md5_digest(detail::md5_hex(bytes), stated, what, target);
 }
 
 void check_axes(const Xml& xml, const std::string& feature, const ReadTarget& target) {
@@ -373,22 +371,46 @@ void read_linked_points(zip_t* archive, const std::string& folder, const Xml& xm
   if (data_link.empty()) target.fail("Record3/DataLink has no PointDataLink");
   const std::string data_name = member_name(archive, folder, data_link);
   const std::uint64_t data_bytes = detail::checked_product(count, z.bytes(), "the point data size", target);
-  const std::string data =
-      read_member(archive, data_name, target, data_bytes, data_bytes, "point data of the grid main.xml describes");
-  if (const auto stated = xml.text("Record3/DataLink/MD5ChecksumPointData")) {
-    check_md5(data, *stated, fmt::format("the point data '{}'", detail::printable(data_name)), target);
+  const std::uint64_t stored = member_size(archive, data_name, target);
+  if (stored != data_bytes) {
+    target.fail(fmt::format("member '{}' holds {} bytes but main.xml describes {} bytes", detail::printable(data_name),
+                            stored, data_bytes));
   }
-  // The heights are allocated only now that the data have been read in full.
+  const std::optional<std::string> stated_md5 = xml.text("Record3/DataLink/MD5ChecksumPointData");
+  const std::string data_what = fmt::format("the point data '{}'", detail::printable(data_name));
+  // The values are decoded straight into the heights, a chunk at a time, so
+  // that the member is never held whole; the heights' pages are touched only
+  // as data arrive, so a member that ends early costs little. A value may
+  // straddle two chunks: its bytes are gathered first.
   map.heights.resize(static_cast<Eigen::Index>(count));
-  for (std::size_t k = 0; k < count; ++k) {
-    map.heights[static_cast<Eigen::Index>(k)] = decode(data.data() + k * z.bytes(), z.type);
-  }
+  detail::Md5 digest;
+  std::array<char, 8> partial{};
+  std::size_t partial_size = 0;
+  std::size_t k = 0;
+  stream_member(archive, data_name, data_bytes, target, [&](std::string_view chunk) {
+    digest.update(chunk);
+    while (!chunk.empty()) {
+      const std::size_t take = std::min(chunk.size(), z.bytes() - partial_size);
+      if (partial_size == 0 && take == z.bytes()) {
+        map.heights[static_cast<Eigen::Index>(k++)] = decode(chunk.data(), z.type);
+      } else {
+        std::memcpy(partial.data() + partial_size, chunk.data(), take);
+        partial_size += take;
+        if (partial_size == z.bytes()) {
+          map.heights[static_cast<Eigen::Index>(k++)] = decode(partial.data(), z.type);
+          partial_size = 0;
+        }
+      }
+      chunk.remove_prefix(take);
+    }
+  });
+  if (stated_md5) check_md5_digest(digest.hex(), *stated_md5, data_what, target);
 
   const std::optional<std::string> valid_link = xml.text("Record3/DataLink/ValidPointsLink");
   if (!valid_link || valid_link->empty()) return;
   const std::string valid_name = member_name(archive, folder, *valid_link);
   const std::size_t needed = (count + 7) / 8;
-  const std::string bits = read_member(archive, valid_name, target, std::nullopt, needed + kValidityPaddingBytes,
+  const std::string bits = read_member(archive, valid_name, target, needed + kValidityPaddingBytes,
                                        fmt::format("validity bits of {} points", count));
   if (bits.size() < needed) {
     target.fail(fmt::format("the validity file '{}' holds {} bytes, too few for {} points ({} needed)",
@@ -442,7 +464,7 @@ HeightMap read_x3p_height_map(const std::filesystem::path& path) {
   const std::string main_name = find_main_xml(archive.get(), target);
   const std::string folder = main_name.substr(0, main_name.size() - std::string_view("main.xml").size());
   const std::string main_xml =
-      read_member(archive.get(), main_name, target, std::nullopt, kMaxMainXmlBytes, "main.xml of an X3P file");
+      read_member(archive.get(), main_name, target, kMaxMainXmlBytes, "main.xml of an X3P file");
 
   pugi::xml_document document;
   const pugi::xml_parse_result parsed = document.load_buffer(main_xml.data(), main_xml.size());
@@ -458,7 +480,7 @@ HeightMap read_x3p_height_map(const std::filesystem::path& path) {
   const Xml xml(root, target);
   if (const auto checksum_file = xml.text("Record4/ChecksumFile"); checksum_file && !checksum_file->empty()) {
     const std::string stated = read_member(archive.get(), member_name(archive.get(), folder, *checksum_file), target,
-                                           std::nullopt, kMaxChecksumFileBytes, "checksum file");
+                                           kMaxChecksumFileBytes, "checksum file");
     check_md5(main_xml, stated, "main.xml", target);
   }
 

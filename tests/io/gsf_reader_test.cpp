@@ -172,7 +172,9 @@ TEST(GsfReaderTest, EscapesControlBytesFromTheHeader) {
   const std::string message = gsf_error(path);
   expect_contains(message, {"XRes = '2\\x1b[2J' is invalid"});
   EXPECT_EQ(message.find('\x1b'), std::string::npos) << message;
-  test::write_bytes(path, gsf_bytes("XRes = 2\nYRes = 1\nTitle = a\x07" "b\n", {1.0F, 2.0F}));
+  test::write_bytes(path, gsf_bytes("XRes = 2\nYRes = 1\nTitle = a\x07"
+                                    "b\n",
+                                    {1.0F, 2.0F}));
   EXPECT_NE(read_gsf_height_map(path).source.find("'a\\x07b'"), std::string::npos);
 }
 

@@ -198,8 +198,9 @@ TEST(NpyReaderTest, ReadsFromAPipeNoMoreThanTheHeaderDeclares) {
   const TempDir dir;
   const fs::path path = dir / "pipe.npy";
   constexpr std::size_t kCap = std::size_t{64} << 20;
-  test::EndlessPipe pipe(path, npy_bytes("{'descr': '<f8', 'fortran_order': False, 'shape': (2, 2), }", doubles({1, 2, 3, 4})),
-                         std::string(1 << 16, '\x01'), kCap);
+  test::EndlessPipe pipe(
+      path, npy_bytes("{'descr': '<f8', 'fortran_order': False, 'shape': (2, 2), }", doubles({1, 2, 3, 4})),
+      std::string(1 << 16, '\x01'), kCap);
   expect_contains(npy_error(path), {path.string(), "more bytes follow the data of shape (2, 2)"});
   EXPECT_LT(pipe.written(), std::size_t{4} << 20) << "the reader read on after the declared data";
 }
@@ -225,15 +226,16 @@ TEST(NpyReaderTest, RefusesHeadersAndShapesThatClaimTooMuch) {
                                     doubles({1, 2})));
   expect_contains(npy_error(path), {"4294967296 x 4294967296", "too large"});
   // A shape beyond the machine's memory, from a 100-byte file.
-  test::write_bytes(path, npy_bytes("{'descr': '<f8', 'fortran_order': False, 'shape': (1000000000, 100000), }",
-                                    doubles({1, 2})));
+  test::write_bytes(
+      path, npy_bytes("{'descr': '<f8', 'fortran_order': False, 'shape': (1000000000, 100000), }", doubles({1, 2})));
   expect_contains(npy_error(path), {"100000 x 1000000000", "memory"});
 }
 
 TEST(NpyReaderTest, EscapesControlBytesFromTheHeader) {
   const TempDir dir;
   const fs::path path = dir / "escape.npy";
-  test::write_bytes(path, npy_bytes("{'descr': '<f\x1b[31m', 'fortran_order': False, 'shape': (2,), }", doubles({1, 2})));
+  test::write_bytes(path,
+                    npy_bytes("{'descr': '<f\x1b[31m', 'fortran_order': False, 'shape': (2,), }", doubles({1, 2})));
   const std::string message = npy_error(path);
   expect_contains(message, {"dtype '<f\\x1b[31m'"});
   EXPECT_EQ(message.find('\x1b'), std::string::npos) << message;

@@ -101,8 +101,8 @@ TEST(ProfileReaderTest, RejectsAUnitThatContradictsTheFile) {
 TEST(ProfileReaderTest, ReportsNonUniformSpacingWithTheLine) {
   const TempDir dir;
   const fs::path path = write_text(dir, "gap.txt", "x z\n0.0 1\n0.1 2\n0.2 3\n0.5 4\n0.6 5\n0.7 6\n");
-  expect_contains(profile_error(path),
-                  {path.string(), "not uniformly spaced", "line 4 (x = 0.2) to line 5 (x = 0.5)", "the precision x is printed with"});
+  expect_contains(profile_error(path), {path.string(), "not uniformly spaced", "line 4 (x = 0.2) to line 5 (x = 0.5)",
+                                        "the precision x is printed with"});
 }
 
 TEST(ProfileReaderTest, AcceptsRoundingWithinThePrintedPrecision) {

@@ -127,7 +127,9 @@ TEST(TextMatrixReaderTest, ReadsFromAPipe) {
 
 TEST(TextMatrixReaderTest, EscapesControlBytesInMessages) {
   const TempDir dir;
-  const std::string message = matrix_error(write_text(dir, "esc.txt", "1 2\n3 \xc2\x9b" "31m\n"));
+  const std::string message = matrix_error(write_text(dir, "esc.txt",
+                                                      "1 2\n3 \xc2\x9b"
+                                                      "31m\n"));
   expect_contains(message, {"'\\xc2\\x9b31m' is not a number"});
   EXPECT_EQ(message.find("\xc2\x9b"), std::string::npos) << message;
 }

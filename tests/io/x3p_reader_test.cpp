@@ -4,10 +4,9 @@
 // there, and damaged archives, XML, data and checksums.
 #include "halfspace/io/x3p_reader.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <zip.h>
-
-#include <fmt/format.h>
 
 #include <cmath>
 #include <map>
@@ -339,12 +338,14 @@ TEST(X3pReaderTest, RefusesAMainXmlWhoseStatedSizeItsBytesCannotHoldBeforeAlloca
   // bytes; reading it used to allocate (and zero) the claimed size.
   const TempDir dir;
   const fs::path path = dir / "huge-main.x3p";
-  write_members(path, {{"main.xml", minimal_xml("I", link_record3(3, 2))}, {"bindata/data.bin", doubles({1, 2, 3, 4, 5, 6})}});
+  write_members(
+      path, {{"main.xml", minimal_xml("I", link_record3(3, 2))}, {"bindata/data.bin", doubles({1, 2, 3, 4, 5, 6})}});
   std::string zip = test::read_bytes(path);
   claim_member_size(zip, "main.xml", 0xF0000000U);
   test::write_bytes(path, zip);
   const std::size_t before = test::peak_resident_bytes();
-  expect_contains(x3p_error(path), {path.string(), "member 'main.xml' holds 4026531840 bytes", "the archive is damaged"});
+  expect_contains(x3p_error(path),
+                  {path.string(), "member 'main.xml' holds 4026531840 bytes", "the archive is damaged"});
   EXPECT_LT(test::peak_resident_bytes(), before + test::kRefusalMemoryAllowance);
 }
 
@@ -372,7 +373,8 @@ TEST(X3pReaderTest, RefusesValidityBitsLargerThanTheGridNeeds) {
   write_members(path, {{"main.xml", minimal_xml("I", link_record3(3, 2, "bindata/valid.bin"))},
                        {"bindata/data.bin", doubles({1, 2, 3, 4, 5, 6})},
                        {"bindata/valid.bin", std::string(100, '\xff')}});
-  expect_contains(x3p_error(path), {path.string(), "member 'bindata/valid.bin' holds 100 bytes", "validity bits of 6 points"});
+  expect_contains(x3p_error(path),
+                  {path.string(), "member 'bindata/valid.bin' holds 100 bytes", "validity bits of 6 points"});
   std::string zip = test::read_bytes(path);
   claim_member_size(zip, "bindata/valid.bin", 3'000'000'000U);
   test::write_bytes(path, zip);
@@ -422,9 +424,10 @@ TEST(X3pReaderTest, ReadsAMainXmlInASubfolderWithItsMembersRelativeToIt) {
 TEST(X3pReaderTest, AcceptsTheOlderRootNameAndEmptyOffsets) {
   const TempDir dir;
   const fs::path path = dir / "old.x3p";
-  std::string xml = minimal_xml("I",
-                                "<MatrixDimension><SizeX>2</SizeX><SizeY>2</SizeY><SizeZ>1</SizeZ></MatrixDimension>"
-                                "<DataList><Datum>1</Datum><Datum>2</Datum><Datum>3</Datum><Datum>4</Datum></DataList>");
+  std::string xml =
+      minimal_xml("I",
+                  "<MatrixDimension><SizeX>2</SizeX><SizeY>2</SizeY><SizeZ>1</SizeZ></MatrixDimension>"
+                  "<DataList><Datum>1</Datum><Datum>2</Datum><Datum>3</Datum><Datum>4</Datum></DataList>");
   replace(xml, "<p:ISO5436_2 xmlns:p=\"http://www.opengps.eu/2008/ISO5436_2\">", "<ISO5436>");
   replace(xml, "</p:ISO5436_2>", "</ISO5436>");
   replace(xml, "<Offset>0</Offset>", "<Offset/>");
