@@ -10,7 +10,6 @@
 #include <array>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <variant>
 
 #include "halfspace/error.hpp"
@@ -337,6 +336,8 @@ std::string unknown_key_message(std::string_view key, const std::filesystem::pat
   return message + " (the keys are the long option names of 'halfspace solve' without '--')";
 }
 
+constexpr std::size_t kMaxConfigBytes = std::size_t{1} << 20;
+
 std::string read_text_file(const std::filesystem::path& path) {
   std::error_code error;
   if (!std::filesystem::exists(path, error)) {
@@ -345,13 +346,23 @@ std::string read_text_file(const std::filesystem::path& path) {
   if (std::filesystem::is_directory(path, error)) {
     throw FileError(fmt::format("config file {} is a directory", path.string()));
   }
+  // A config file holds a few options: read at most kMaxConfigBytes (plus
+  // one to tell), so that /dev/zero or a huge file cannot exhaust memory.
   std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (!in) {
+  std::string text;
+  std::array<char, 1 << 16> piece{};
+  while (in && text.size() <= kMaxConfigBytes) {
+    in.read(piece.data(), static_cast<std::streamsize>(piece.size()));
+    text.append(piece.data(), static_cast<std::size_t>(in.gcount()));
+  }
+  if (in.bad() || (!in.eof() && text.size() <= kMaxConfigBytes)) {
     throw FileError(fmt::format("config file {} cannot be read", path.string()));
   }
-  return text.str();
+  if (text.size() > kMaxConfigBytes) {
+    throw FileError(fmt::format("config file {} is larger than {} bytes (1 MiB); a config file holds a few options",
+                                path.string(), kMaxConfigBytes));
+  }
+  return text;
 }
 
 }  // namespace

@@ -16,6 +16,7 @@ packages=(
   libsiconos-numerics-dev
   libalglib-dev
   libzip-dev libpugixml-dev
+  clang-14 libclang-rt-14-dev
   time
   python3 python3-numpy python3-h5py python3-matplotlib
 )

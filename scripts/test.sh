@@ -6,5 +6,6 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$root/scripts/install-deps.sh"
 "$root/scripts/build.sh"
 ctest --test-dir "${HALFSPACE_BUILD_DIR:-$root/build}" --output-on-failure -j "$(nproc)"
+"$root/scripts/fuzz.sh" 20
 # The sources must match .clang-format (scripts/check-format.sh --fix repairs them).
 "$root/scripts/check-format.sh"

@@ -12,15 +12,21 @@
 #include <map>
 #include <string>
 
+#include "halfspace/error.hpp"
 #include "reader_support.hpp"
 
 namespace halfspace::io {
 namespace {
 
+using detail::InputFile;
 using detail::ReadTarget;
 
 constexpr std::string_view kMagic = "Gwyddion Simple Field 1.0\n";
 constexpr std::size_t kAlignment = 4;
+// Gwyddion writes headers of a few hundred bytes; a title or comment may
+// make one longer, but not a megabyte.
+constexpr std::size_t kMaxHeaderBytes = std::size_t{1} << 20;
+constexpr std::size_t kHeaderPiece = 4096;
 
 std::string_view trim(std::string_view text) {
   const auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r'; };
@@ -43,9 +49,13 @@ std::map<std::string, std::string, std::less<>> parse_header(std::string_view he
     const std::size_t equals = text.find('=');
     if (equals == std::string_view::npos) {
       target.fail(
-          fmt::format("header line {} '{}' is not of the form 'name = value'", line, detail::quoted_bytes(text, 60)));
+          fmt::format("header line {} '{}' is not of the form 'name = value'", line, detail::printable(text, 60)));
     }
-    fields.emplace(std::string(trim(text.substr(0, equals))), std::string(trim(text.substr(equals + 1))));
+    const std::string name(trim(text.substr(0, equals)));
+    if (!fields.emplace(name, std::string(trim(text.substr(equals + 1)))).second) {
+      target.fail(fmt::format("header line {} sets '{}' a second time; each name may appear once", line,
+                              detail::printable(name, 60)));
+    }
   }
   return fields;
 }
@@ -58,7 +68,7 @@ std::uint64_t resolution(const std::map<std::string, std::string, std::less<>>& 
   const std::string& text = it->second;
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (error != std::errc() || end != text.data() + text.size() || value == 0) {
-    target.fail(fmt::format("{} = '{}' is invalid: must be a positive integer", name, text));
+    target.fail(fmt::format("{} = '{}' is invalid: must be a positive integer", name, detail::printable(text, 60)));
   }
   return value;
 }
@@ -71,11 +81,14 @@ double real_size(const std::map<std::string, std::string, std::less<>>& fields, 
   char* end = nullptr;
   const double value = std::strtod(it->second.c_str(), &end);
   if (end != it->second.c_str() + it->second.size() || !std::isfinite(value) || value <= 0.0) {
-    target.fail(fmt::format("{} = '{}' is invalid: must be a positive number", name, it->second));
+    target.fail(
+        fmt::format("{} = '{}' is invalid: must be a positive number", name, detail::printable(it->second, 60)));
   }
   return value;
 }
 
+// The unit the header states for `name`, else the caller's, else metres. A
+// caller's unit that contradicts the header's is an error, as for profiles.
 LengthUnit unit_of(const std::map<std::string, std::string, std::less<>>& fields, const char* name,
                    const std::optional<LengthUnit>& fallback, const ReadTarget& target) {
   const auto it = fields.find(name);
@@ -85,7 +98,11 @@ LengthUnit unit_of(const std::map<std::string, std::string, std::less<>>& fields
     target.fail(
         fmt::format("{} = '{}' is not a length unit; heights and spacings must be lengths (m, mm, um, nm, "
                     "...)",
-                    name, it->second));
+                    name, detail::printable(it->second, 60)));
+  }
+  if (fallback && fallback->metres != unit->metres) {
+    throw InputError(fmt::format("height map '{}': the unit {} contradicts {} = {} in the file's header",
+                                 target.path.string(), fallback->name, name, unit->name));
   }
   return *unit;
 }
@@ -94,17 +111,31 @@ LengthUnit unit_of(const std::map<std::string, std::string, std::less<>>& fields
 
 HeightMap read_gsf_height_map(const std::filesystem::path& path, const std::optional<LengthUnit>& unit) {
   const ReadTarget target{path, "a Gwyddion Simple Field (.gsf) file"};
-  const std::string bytes = detail::read_file_bytes(target);
+  InputFile file(target);
+  std::string bytes;
+  file.append(bytes, kMagic.size());
   if (!std::string_view(bytes).starts_with(kMagic)) {
     target.fail(fmt::format("the file does not start with the line 'Gwyddion Simple Field 1.0' but with '{}'{}",
                             detail::quoted_bytes(bytes, 26), detail::signature_hint(bytes)));
   }
-  const std::size_t header_end = bytes.find('\0', kMagic.size());
-  if (header_end == std::string::npos) {
-    target.fail("the header is not terminated by NUL padding (the file is truncated or not binary GSF)");
+  // The header ends at the first NUL; read it in small pieces, up to a cap.
+  std::size_t header_end = std::string::npos;
+  while (header_end == std::string::npos) {
+    const std::size_t before = bytes.size();
+    if (before > kMaxHeaderBytes) {
+      target.fail(
+          fmt::format("no NUL ends the header within its first {} bytes (a GSF header is a few lines; the "
+                      "file is damaged or not binary GSF)",
+                      kMaxHeaderBytes));
+    }
+    if (file.append(bytes, kHeaderPiece) == 0) {
+      target.fail("the header is not terminated by NUL padding (the file is truncated or not binary GSF)");
+    }
+    header_end = bytes.find('\0', before);
   }
   // One to four NULs, so that the data start at a multiple of 4.
   const std::size_t data_offset = (header_end / kAlignment + 1) * kAlignment;
+  if (bytes.size() < data_offset) file.append(bytes, data_offset - bytes.size());
   if (bytes.size() < data_offset) target.fail("the file is truncated inside the NUL padding of the header");
   for (std::size_t k = header_end; k < data_offset; ++k) {
     if (bytes[k] != '\0') {
@@ -117,13 +148,25 @@ HeightMap read_gsf_height_map(const std::filesystem::path& path, const std::opti
   const std::uint64_t y_res = resolution(fields, "YRes", target);
   if (x_res < 2) target.fail(fmt::format("XRes = {}: need at least 2 points along x", x_res));
   const std::size_t count = detail::checked_point_count(x_res, y_res, target);
-  const std::size_t available = bytes.size() - data_offset;
-  if (available != count * sizeof(float)) {
+  const std::uint64_t data_bytes = detail::checked_product(count, sizeof(float), "the data size", target);
+  const auto size_mismatch = [&](std::uint64_t available) {
     target.fail(
         fmt::format("the header claims XRes x YRes = {} x {} float32 values ({} bytes) but {} data bytes "
                     "follow the header{}",
-                    x_res, y_res, count * sizeof(float), available,
-                    available < count * sizeof(float) ? " (the file is truncated)" : ""));
+                    x_res, y_res, data_bytes, available, available < data_bytes ? " (the file is truncated)" : ""));
+  };
+  // A regular file says its size: compare before reading the data.
+  if (const std::optional<std::uint64_t> size = file.stated_size()) {
+    const std::uint64_t available = *size - std::min<std::uint64_t>(*size, data_offset);
+    if (available != data_bytes) size_mismatch(available);
+  }
+  const std::size_t already = bytes.size() - data_offset;
+  if (already > data_bytes) size_mismatch(already);
+  const std::size_t got = already + file.append(bytes, static_cast<std::size_t>(data_bytes) - already);
+  if (got < data_bytes) size_mismatch(got);
+  if (!file.at_end()) {
+    target.fail(fmt::format("more than the {} data bytes of XRes x YRes = {} x {} float32 values follow the header",
+                            data_bytes, x_res, y_res));
   }
   const LengthUnit xy_unit = unit_of(fields, "XYUnits", unit, target);
   const LengthUnit z_unit = unit_of(fields, "ZUnits", unit, target);
@@ -144,9 +187,10 @@ HeightMap read_gsf_height_map(const std::filesystem::path& path, const std::opti
   }
   detail::mark_non_finite_invalid(map);
   const auto title = fields.find("Title");
-  map.source = fmt::format("{} (Gwyddion Simple Field{}, z in {}, x/y in {})", path.string(),
-                           title != fields.end() ? fmt::format(" '{}'", title->second) : std::string(), z_unit.name,
-                           xy_unit.name);
+  map.source =
+      fmt::format("{} (Gwyddion Simple Field{}, z in {}, x/y in {})", path.string(),
+                  title != fields.end() ? fmt::format(" '{}'", detail::printable(title->second, 80)) : std::string(),
+                  z_unit.name, xy_unit.name);
   return map;
 }
 

@@ -73,11 +73,19 @@ class ErrorPrintingOff {
   }
   ErrorPrintingOff(const ErrorPrintingOff&) = delete;
   ErrorPrintingOff& operator=(const ErrorPrintingOff&) = delete;
-  ~ErrorPrintingOff() { H5Eset_auto2(H5E_DEFAULT, function_, client_data_); }
+  ~ErrorPrintingOff() {
+    if (restore_) H5Eset_auto2(H5E_DEFAULT, function_, client_data_);
+  }
+
+  // Leaves printing off for good. A damaged file can leave HDF5 unable to
+  // close its internals, and at exit it then prints "HDF5: infinite loop
+  // closing library" and a line of interface names, unless printing is off.
+  void keep_off() { restore_ = false; }
 
  private:
   H5E_auto2_t function_ = nullptr;
   void* client_data_ = nullptr;
+  bool restore_ = true;
 };
 
 // The most specific entry of HDF5's current error stack, shortened to the

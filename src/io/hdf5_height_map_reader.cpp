@@ -28,6 +28,7 @@ using detail::Dataspace;
 using detail::Datatype;
 using detail::File;
 using detail::Object;
+using detail::PropertyList;
 
 // Enough names to recognise a typo without flooding the message.
 constexpr std::size_t kMaxListedDatasets = 10;
@@ -83,6 +84,11 @@ File open_file(const Target& target) {
   const auto status = std::filesystem::status(target.path, error);
   if (!std::filesystem::exists(status)) target.fail("the file does not exist");
   if (std::filesystem::is_directory(status)) target.fail("the path is a directory, not a file");
+  // HDF5 reads by seeking: a pipe or device cannot be read, and /dev/zero
+  // must not be searched for a signature.
+  if (!std::filesystem::is_regular_file(status)) {
+    target.fail("the path is not a regular file (a device, pipe or socket); save the data to a file first");
+  }
 
 #if H5_VERSION_GE(1, 12, 0)
   const htri_t is_hdf5 = H5Fis_accessible(target.path.c_str(), H5P_DEFAULT);
@@ -128,7 +134,7 @@ std::string describe_root_datasets(hid_t file) {
     H5Lget_name_by_idx(file, ".", H5_INDEX_NAME, H5_ITER_INC, k, name.data(), name.size() + 1, H5P_DEFAULT);
     const Object object(H5Oopen(file, name.c_str(), H5P_DEFAULT));
     if (!object.valid() || H5Iget_type(object.get()) != H5I_DATASET) continue;
-    if (names.size() < kMaxListedDatasets) names.push_back("'/" + name + "'");
+    if (names.size() < kMaxListedDatasets) names.push_back("'/" + detail::printable(name, 80) + "'");
     ++count;
   }
   if (count == 0) return "the root group holds no datasets";
@@ -148,6 +154,24 @@ Object open_dataset(hid_t file, const Target& target) {
   if (kind == H5I_GROUP) target.fail("the name refers to a group, not a dataset");
   if (kind != H5I_DATASET) target.fail("the name refers to a named datatype, not a dataset");
   return object;
+}
+
+// The heights must be stored in this file: an external raw-data file or a
+// virtual dataset names other files, which a height map has no business
+// reading (a crafted one could point at /dev/zero or at any file), and a
+// dataset never written holds only a fill value, however large it claims to be.
+void check_storage(hid_t dataset, const Target& target) {
+  const PropertyList creation(H5Dget_create_plist(dataset));
+  if (!creation.valid()) target.fail(fmt::format("the dataset's layout cannot be read: {}", detail::error_reason()));
+  if (H5Pget_layout(creation.get()) == H5D_VIRTUAL) {
+    target.fail("the dataset is virtual (its data are in other files); store the heights in this file");
+  }
+  if (H5Pget_external_count(creation.get()) != 0) {
+    target.fail("the dataset's data are in external files; store the heights in this file");
+  }
+  if (H5Dget_storage_size(dataset) == 0) {
+    target.fail("the dataset holds no stored data (it was created but never written)");
+  }
 }
 
 void check_numeric_type(hid_t dataset, const Target& target) {
@@ -199,6 +223,14 @@ std::vector<hsize_t> read_shape(hid_t dataset, const Target& target) {
   const hsize_t limit = static_cast<hsize_t>(std::numeric_limits<Eigen::Index>::max()) / sizeof(double);
   if (rank == 2 && dims[0] > limit / dims[1]) {
     target.fail(fmt::format("the dataset of shape {} is too large to hold in memory", shape_text(dims)));
+  }
+  const std::uint64_t points = rank == 2 ? dims[0] * dims[1] : dims[0];
+  const std::uint64_t memory = detail::physical_memory_bytes();
+  if (points > memory / sizeof(double)) {
+    target.fail(
+        fmt::format("the dataset of shape {} needs {} for its heights alone, more than the {} of memory "
+                    "this machine has",
+                    shape_text(dims), detail::byte_size_text(points * sizeof(double)), detail::byte_size_text(memory)));
   }
   return dims;
 }
@@ -272,6 +304,7 @@ void read_validity_mask(hid_t file, const std::vector<hsize_t>& dims, HeightMap&
     mask.fail("the validity mask must hold integers (1 measured, 0 invalid)");
   }
   const std::vector<hsize_t> mask_dims = read_shape(data.get(), mask);
+  check_storage(data.get(), mask);
   if (mask_dims != dims) {
     mask.fail(fmt::format("the validity mask has shape {}, but the heights '{}' have shape {}", shape_text(mask_dims),
                           target.dataset, shape_text(dims)));
@@ -287,16 +320,14 @@ void read_validity_mask(hid_t file, const std::vector<hsize_t>& dims, HeightMap&
   }
 }
 
-}  // namespace
-
-HeightMap read_hdf5_height_map(const std::filesystem::path& path, const std::string& dataset,
-                               NonFiniteHeights non_finite) {
-  const detail::ErrorPrintingOff quiet;
+// The reading itself, with HDF5's error printing off.
+HeightMap read_quietly(const std::filesystem::path& path, const std::string& dataset, NonFiniteHeights non_finite) {
   const Target target{path, dataset};
   const File file = open_file(target);
   const Object data = open_dataset(file.get(), target);
   check_numeric_type(data.get(), target);
   const std::vector<hsize_t> dims = read_shape(data.get(), target);
+  check_storage(data.get(), target);
 
   HeightMap map;
   map.dimension = static_cast<int>(dims.size());
@@ -319,6 +350,19 @@ HeightMap read_hdf5_height_map(const std::filesystem::path& path, const std::str
   map.dy = map.dimension == 2 ? read_spacing(file.get(), "dy", target) : 0.0;
   map.source = path.string() + ":" + dataset;
   return map;
+}
+
+}  // namespace
+
+HeightMap read_hdf5_height_map(const std::filesystem::path& path, const std::string& dataset,
+                               NonFiniteHeights non_finite) {
+  detail::ErrorPrintingOff quiet;
+  try {
+    return read_quietly(path, dataset, non_finite);
+  } catch (const FileError&) {
+    quiet.keep_off();
+    throw;
+  }
 }
 
 }  // namespace halfspace::io

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <cstring>
@@ -71,27 +72,46 @@ void process_block(const unsigned char* block, std::array<std::uint32_t, 4>& sta
 
 }  // namespace
 
-std::string md5_hex(std::string_view bytes) {
-  std::array<std::uint32_t, 4> state{0x67452301, 0xefcdab89, 0x98badcfe, 0x10325476};
+void Md5::update(std::string_view bytes) {
   const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
-  const std::size_t full_blocks = bytes.size() / 64;
-  for (std::size_t b = 0; b < full_blocks; ++b) process_block(data + 64 * b, state);
+  std::size_t size = bytes.size();
+  total_ += size;
+  if (pending_size_ > 0) {
+    const std::size_t take = std::min(size, pending_.size() - pending_size_);
+    std::memcpy(pending_.data() + pending_size_, data, take);
+    pending_size_ += take;
+    data += take;
+    size -= take;
+    if (pending_size_ < pending_.size()) return;
+    process_block(pending_.data(), state_);
+    pending_size_ = 0;
+  }
+  for (; size >= 64; data += 64, size -= 64) process_block(data, state_);
+  std::memcpy(pending_.data(), data, size);
+  pending_size_ = size;
+}
 
+std::string Md5::hex() {
   // Padding: 0x80, zeros to 56 mod 64, then the length in bits (64-bit LE).
   std::array<unsigned char, 128> tail{};
-  const std::size_t rest = bytes.size() - 64 * full_blocks;
-  std::memcpy(tail.data(), data + 64 * full_blocks, rest);
-  tail[rest] = 0x80;
-  const std::size_t tail_size = rest < 56 ? 64 : 128;
-  const std::uint64_t bits = static_cast<std::uint64_t>(bytes.size()) * 8;
+  std::memcpy(tail.data(), pending_.data(), pending_size_);
+  tail[pending_size_] = 0x80;
+  const std::size_t tail_size = pending_size_ < 56 ? 64 : 128;
+  const std::uint64_t bits = total_ * 8;
   for (std::size_t k = 0; k < 8; ++k) tail[tail_size - 8 + k] = static_cast<unsigned char>(bits >> (8 * k));
-  for (std::size_t offset = 0; offset < tail_size; offset += 64) process_block(tail.data() + offset, state);
+  for (std::size_t offset = 0; offset < tail_size; offset += 64) process_block(tail.data() + offset, state_);
 
   std::string hex;
-  for (const std::uint32_t word : state) {
+  for (const std::uint32_t word : state_) {
     for (std::size_t k = 0; k < 4; ++k) hex += fmt::format("{:02x}", (word >> (8 * k)) & 0xff);
   }
   return hex;
+}
+
+std::string md5_hex(std::string_view bytes) {
+  Md5 digest;
+  digest.update(bytes);
+  return digest.hex();
 }
 
 }  // namespace halfspace::io::detail

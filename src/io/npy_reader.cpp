@@ -25,6 +25,7 @@
 namespace halfspace::io {
 namespace {
 
+using detail::InputFile;
 using detail::ReadTarget;
 
 constexpr std::string_view kMagic = "\x93NUMPY";
@@ -104,7 +105,7 @@ class LiteralParser {
   }
   [[noreturn]] void fail(std::string_view what) const {
     target_.fail(fmt::format("the header is not a valid dict literal ({} at character {}): '{}'", what, pos_,
-                             detail::quoted_bytes(text_, 120)));
+                             detail::printable(text_, 120)));
   }
 
   std::string_view text_;
@@ -115,8 +116,8 @@ class LiteralParser {
 Dtype parse_dtype(const std::string& quoted, const ReadTarget& target) {
   const std::string descr = quoted.size() >= 2 && quoted.front() == '\'' ? quoted.substr(1, quoted.size() - 2) : quoted;
   const auto unsupported = [&](std::string_view why) {
-    target.fail(
-        fmt::format("dtype '{}' is not supported ({}); heights must be float32, float64 or integers", descr, why));
+    target.fail(fmt::format("dtype '{}' is not supported ({}); heights must be float32, float64 or integers",
+                            detail::printable(descr), why));
   };
   if (descr.size() < 3) unsupported("not a simple numeric type");
   Dtype dtype;
@@ -151,15 +152,23 @@ std::vector<std::uint64_t> parse_shape(const std::string& tuple, const ReadTarge
     if (pos >= tuple.size() || tuple[pos] == ')') break;
     std::uint64_t value = 0;
     const auto [end, error] = std::from_chars(tuple.data() + pos, tuple.data() + tuple.size(), value);
-    if (error != std::errc()) target.fail(fmt::format("the header's shape {} is not a tuple of sizes", tuple));
+    if (error != std::errc())
+      target.fail(fmt::format("the header's shape {} is not a tuple of sizes", detail::printable(tuple)));
     shape.push_back(value);
     pos = static_cast<std::size_t>(end - tuple.data());
   }
   return shape;
 }
 
-Header read_header(std::string_view bytes, std::size_t& data_offset, const ReadTarget& target) {
-  if (!bytes.starts_with(kMagic)) {
+// numpy writes headers of a few hundred bytes (and refuses to read more
+// than 10000 by default); anything much larger is not a header.
+constexpr std::size_t kMaxHeaderBytes = std::size_t{1} << 20;
+
+// Reads the preamble and the header dict into `bytes`, so that the data
+// start at bytes.size(); the header's length is checked before it is read.
+Header read_header(InputFile& file, std::string& bytes, const ReadTarget& target) {
+  file.append(bytes, kPreambleV1);
+  if (!std::string_view(bytes).starts_with(kMagic)) {
     target.fail(fmt::format("the file does not start with the .npy magic \\x93NUMPY but with '{}'{}",
                             detail::quoted_bytes(bytes, 8), detail::signature_hint(bytes)));
   }
@@ -172,18 +181,24 @@ Header read_header(std::string_view bytes, std::size_t& data_offset, const ReadT
     preamble = kPreambleV1;
     header_length = byte(8) | byte(9) << 8;
   } else if (major == 2 || major == 3) {
-    if (bytes.size() < kPreambleV2) target.fail("the file is truncated inside the header length");
+    if (file.append(bytes, kPreambleV2 - kPreambleV1) < kPreambleV2 - kPreambleV1) {
+      target.fail("the file is truncated inside the header length");
+    }
     preamble = kPreambleV2;
     header_length = byte(8) | byte(9) << 8 | byte(10) << 16 | byte(11) << 24;
   } else {
     target.fail(fmt::format("format version {}.{} is not supported (1.0, 2.0 and 3.0 are)", major, byte(7)));
   }
-  if (bytes.size() < preamble + header_length) {
-    target.fail(fmt::format("the file is truncated: the header claims {} bytes but only {} follow", header_length,
-                            bytes.size() - preamble));
+  if (header_length > kMaxHeaderBytes) {
+    target.fail(fmt::format("the header claims {} bytes; an .npy header holds a few hundred (at most {} are read)",
+                            header_length, kMaxHeaderBytes));
   }
-  data_offset = preamble + header_length;
-  LiteralParser parser(bytes.substr(preamble, header_length), target);
+  const std::size_t got = file.append(bytes, header_length);
+  if (got < header_length) {
+    target.fail(
+        fmt::format("the file is truncated: the header claims {} bytes but only {} follow", header_length, got));
+  }
+  LiteralParser parser(std::string_view(bytes).substr(preamble, header_length), target);
   const std::map<std::string, std::string> entries = parser.parse_dict();
   for (const char* key : {"descr", "fortran_order", "shape"}) {
     if (!entries.contains(key)) target.fail(fmt::format("the header has no '{}' entry", key));
@@ -192,7 +207,7 @@ Header read_header(std::string_view bytes, std::size_t& data_offset, const ReadT
   header.dtype = parse_dtype(entries.at("descr"), target);
   const std::string& order = entries.at("fortran_order");
   if (order != "True" && order != "False") {
-    target.fail(fmt::format("the header's fortran_order is {}, not True or False", order));
+    target.fail(fmt::format("the header's fortran_order is {}, not True or False", detail::printable(order)));
   }
   header.fortran_order = order == "True";
   header.shape = parse_shape(entries.at("shape"), target);
@@ -243,9 +258,10 @@ double load_value(const char* p, const Dtype& dtype) {
 
 HeightMap read_npy_height_map(const std::filesystem::path& path, const LengthUnit& unit) {
   const ReadTarget target{path, "a NumPy .npy file"};
-  const std::string bytes = detail::read_file_bytes(target);
-  std::size_t offset = 0;
-  const Header header = read_header(bytes, offset, target);
+  InputFile file(target);
+  std::string bytes;
+  const Header header = read_header(file, bytes, target);
+  const std::size_t offset = bytes.size();
 
   const std::vector<std::uint64_t>& shape = header.shape;
   const std::string shape_text = fmt::format("({}{})", fmt::join(shape, ", "), shape.size() == 1 ? "," : "");
@@ -259,17 +275,33 @@ HeightMap read_npy_height_map(const std::filesystem::path& path, const LengthUni
   map.dimension = static_cast<int>(shape.size());
   map.nx = static_cast<std::size_t>(shape.back());
   map.ny = map.dimension == 1 ? 1 : static_cast<std::size_t>(shape[0]);
-  const std::size_t count = detail::checked_point_count(map.nx, map.ny, target);
-  const std::size_t available = bytes.size() - offset;
-  if (count > available / header.dtype.size) {
+  const std::size_t count = detail::checked_point_count(shape.back(), map.dimension == 1 ? 1 : shape[0], target);
+  const std::uint64_t data_bytes = detail::checked_product(count, header.dtype.size, "the data size", target);
+  // A regular file says its size: compare before reading anything more.
+  if (const std::optional<std::uint64_t> size = file.stated_size()) {
+    const std::uint64_t available = *size - std::min<std::uint64_t>(*size, offset);
+    if (available < data_bytes) {
+      target.fail(
+          fmt::format("the file is truncated: shape {} of {}-byte values needs {} data bytes but {} follow the "
+                      "header",
+                      shape_text, header.dtype.size, data_bytes, available));
+    }
+    if (available > data_bytes) {
+      target.fail(fmt::format("{} bytes follow the data of shape {}; the file is not a single .npy array",
+                              available - data_bytes, shape_text));
+    }
+    bytes.reserve(offset + static_cast<std::size_t>(data_bytes));
+  }
+  // A pipe or device delivers what it delivers: read no more than the shape needs.
+  const std::size_t got = file.append(bytes, static_cast<std::size_t>(data_bytes));
+  if (got < data_bytes) {
     target.fail(
         fmt::format("the file is truncated: shape {} of {}-byte values needs {} data bytes but {} follow the "
                     "header",
-                    shape_text, header.dtype.size, count * header.dtype.size, available));
+                    shape_text, header.dtype.size, data_bytes, got));
   }
-  if (available != count * header.dtype.size) {
-    target.fail(fmt::format("{} bytes follow the data of shape {}; the file is not a single .npy array",
-                            available - count * header.dtype.size, shape_text));
+  if (!file.at_end()) {
+    target.fail(fmt::format("more bytes follow the data of shape {}; the file is not a single .npy array", shape_text));
   }
 
   map.heights.resize(static_cast<Eigen::Index>(count));

@@ -22,6 +22,9 @@ using detail::ReadTarget;
 // Room for the rounding of x by whoever wrote the file and of our fit, as a
 // multiple of the largest |x|: far below any printed precision.
 constexpr double kFitRoundingFactor = 64.0 * std::numeric_limits<double>::epsilon();
+// A point half a step off lies as near one grid point as the next: whatever
+// the printed precision, no x may be that far off its place.
+constexpr double kMaxToleranceInSteps = 0.5;
 
 // The unit in a column name: inside [..] or (..) if present, else its last word.
 std::optional<LengthUnit> unit_in_name(std::string_view name) {
@@ -110,15 +113,18 @@ double uniform_spacing(const detail::TextTable& table, const ReadTarget& target,
                     "increasing order",
                     table.at(0, 0), table.line_numbers.front(), table.at(n - 1, 0), table.line_numbers.back()));
   }
-  const double tolerance = std::max(table.printed_step[0], kFitRoundingFactor * x_max);
+  // The printed precision of the nonzero x (text_table skips zeros, whose
+  // digits say nothing about the others), never more than half a step.
+  const double tolerance =
+      std::min(std::max(table.printed_step[0], kFitRoundingFactor * x_max), kMaxToleranceInSteps * slope);
   // Each step may differ from the mean step by the rounding of its two ends.
   for (std::size_t k = 0; k + 1 < n; ++k) {
     const double step = table.at(k + 1, 0) - table.at(k, 0);
     if (std::abs(step - slope) > tolerance) {
       target.fail(
           fmt::format("x is not uniformly spaced: from line {} (x = {}) to line {} (x = {}) x steps by {:.6g} "
-                      "but the mean step is {:.6g}, and steps may differ from it only by the precision {:.3g} "
-                      "x is printed with; resample the profile to uniform x first",
+                      "but the mean step is {:.6g}, and steps may differ from it only by {:.3g}, the precision "
+                      "x is printed with (at most half a step); resample the profile to uniform x first",
                       table.line_numbers[k], table.at(k, 0), table.line_numbers[k + 1], table.at(k + 1, 0), step, slope,
                       tolerance));
     }
@@ -128,11 +134,11 @@ double uniform_spacing(const detail::TextTable& table, const ReadTarget& target,
     const double expected = intercept + slope * static_cast<double>(k);
     const double deviation = std::abs(table.at(k, 0) - expected);
     if (deviation > tolerance) {
-      target.fail(
-          fmt::format("x is not uniformly spaced: line {} has x = {} but the uniform grid fitted to all {} "
-                      "points (x = {:.9g} + k * {:.9g}) gives {:.9g} there, {:.3g} away, more than the "
-                      "precision {:.3g} x is printed with; resample the profile to uniform x first",
-                      table.line_numbers[k], table.at(k, 0), n, intercept, slope, expected, deviation, tolerance));
+      target.fail(fmt::format(
+          "x is not uniformly spaced: line {} has x = {} but the uniform grid fitted to all {} "
+          "points (x = {:.9g} + k * {:.9g}) gives {:.9g} there, {:.3g} away, more than "
+          "{:.3g}, the precision x is printed with (at most half a step); resample the profile to uniform x first",
+          table.line_numbers[k], table.at(k, 0), n, intercept, slope, expected, deviation, tolerance));
     }
   }
   // A stated scan length n * dx is exact where the fitted slope carries the
@@ -148,7 +154,7 @@ double uniform_spacing(const detail::TextTable& table, const ReadTarget& target,
 
 HeightMap read_profile(const std::filesystem::path& path, const std::optional<LengthUnit>& unit) {
   const ReadTarget target{path, "a text profile"};
-  const std::string bytes = detail::read_file_bytes(target);
+  const std::string bytes = detail::read_text_file(target);
   const std::optional<DektakLayout> dektak = find_dektak_layout(bytes, target);
   const std::string_view text = std::string_view(bytes).substr(dektak ? dektak->data_offset : 0);
   const detail::TextTable table =
@@ -176,7 +182,7 @@ HeightMap read_profile(const std::filesystem::path& path, const std::optional<Le
     if (!stated[c]) continue;
     if (unit && unit->metres != stated[c]->metres) {
       throw InputError(fmt::format("height map '{}': the unit {} contradicts column '{}' of the file, which is in {}",
-                                   path.string(), unit->name, table.header[c], stated[c]->name));
+                                   path.string(), unit->name, detail::printable(table.header[c]), stated[c]->name));
     }
     units[c] = *stated[c];
   }

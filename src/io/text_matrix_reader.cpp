@@ -10,7 +10,7 @@ namespace halfspace::io {
 
 HeightMap read_text_matrix(const std::filesystem::path& path, const LengthUnit& unit) {
   const detail::ReadTarget target{path, "a text matrix"};
-  const std::string bytes = detail::read_file_bytes(target);
+  const std::string bytes = detail::read_text_file(target);
   const detail::TextTable table = detail::parse_text_table(bytes, 1, /*allow_header=*/false, target);
   if (table.rows() == 0) target.fail("the file holds no numbers");
 

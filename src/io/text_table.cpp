@@ -24,19 +24,6 @@ std::string_view trim(std::string_view text) {
   return text;
 }
 
-// The first byte that text files do not contain: NUL or another control
-// character than tab, CR, LF, FF, VT. A binary file shows one within a few bytes.
-void check_is_text(std::string_view text, const ReadTarget& target) {
-  for (std::size_t k = 0; k < text.size(); ++k) {
-    const auto byte = static_cast<unsigned char>(text[k]);
-    if (byte < 0x20 && byte != '\t' && byte != '\r' && byte != '\n' && byte != '\f' && byte != '\v') {
-      const std::string hint = signature_hint(text);
-      target.fail(fmt::format("the file is not text: byte 0x{:02x} at offset {}{}", byte, k,
-                              hint.empty() ? " (a binary file of a format that is not read here?)" : hint));
-    }
-  }
-}
-
 std::optional<double> parse_number(std::string_view token) {
   if (token.size() > 1 && token.front() == '+' && token[1] != '-' && token[1] != '+') token.remove_prefix(1);
   double value = 0.0;
@@ -115,7 +102,7 @@ std::vector<std::string_view> split_fields(std::string_view line) {
 
 TextTable parse_text_table(std::string_view text, std::size_t first_line, bool allow_header, const ReadTarget& target) {
   if (first_line == 1 && text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);
-  check_is_text(text, target);
+  check_is_text(text, 0, target);
 
   TextTable table;
   std::size_t line_number = first_line - 1;
@@ -153,7 +140,7 @@ TextTable parse_text_table(std::string_view text, std::size_t first_line, bool a
         target.fail(fmt::format("line {}: field {} is empty (two separators in a row)", line_number, bad + 1));
       }
       target.fail(
-          fmt::format("line {}: field {} '{}' is not a number{}", line_number, bad + 1, quoted_bytes(fields[bad], 40),
+          fmt::format("line {}: field {} '{}' is not a number{}", line_number, bad + 1, printable(fields[bad], 40),
                       table.rows() == 0 ? " (comment lines start with # or %; a profile with column names is read with "
                                           "--format profile)"
                                         : ""));
@@ -168,7 +155,10 @@ TextTable parse_text_table(std::string_view text, std::size_t first_line, bool a
                       line_number, row.size(), table.line_numbers.front(), table.columns));
     }
     for (std::size_t f = 0; f < row.size(); ++f) {
-      if (std::isfinite(row[f])) table.printed_step[f] = std::max(table.printed_step[f], printed_step(fields[f]));
+      // A zero's printed digits say nothing about the precision of the
+      // others ("0.000000e+00" among "1.000000e-06", ...).
+      if (std::isfinite(row[f]) && row[f] != 0.0)
+        table.printed_step[f] = std::max(table.printed_step[f], printed_step(fields[f]));
     }
     table.values.insert(table.values.end(), row.begin(), row.end());
     table.line_numbers.push_back(line_number);

@@ -19,7 +19,8 @@ struct TextTable {
   std::vector<std::string> header;        // column names, when a header line preceded the data
   std::size_t header_line = 0;            // its 1-based line number, 0 if none
   // Per column, the largest rounding step of the values as printed: 0.1 for
-  // "12.3", 1e-7 for "1.5e-6", 1 for "42". Non-finite values do not count.
+  // "12.3", 1e-7 for "1.5e-6", 1 for "42". Non-finite values and zeros do
+  // not count (0 for a column of zeros).
   std::vector<double> printed_step;
 
   std::size_t rows() const { return line_numbers.size(); }

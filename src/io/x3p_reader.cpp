@@ -44,10 +44,9 @@ struct ZipFileCloser {
 };
 
 Archive open_archive(const ReadTarget& target) {
-  std::error_code error;
-  const auto status = std::filesystem::status(target.path, error);
-  if (!std::filesystem::exists(status)) target.fail("the file does not exist");
-  if (std::filesystem::is_directory(status)) target.fail("the path is a directory, not a file");
+  // A zip archive is read from its end (the central directory): a pipe or a
+  // device cannot be, and /dev/zero must not be read at all.
+  detail::require_regular_file(target);
   int code = 0;
   zip_t* archive = zip_open(target.path.c_str(), ZIP_RDONLY | ZIP_CHECKCONS, &code);
   if (archive == nullptr) {
@@ -55,7 +54,7 @@ Archive open_archive(const ReadTarget& target) {
     zip_error_init_with_code(&zip_error, code);
     std::string reason = zip_error_strerror(&zip_error);
     zip_error_fini(&zip_error);
-    const std::string head = detail::read_file_bytes(target).substr(0, 16);
+    const std::string head = detail::read_file_head(target, 16);
     if (head.starts_with("PK\x03\x04")) {
       // A zip archive's table of contents is at its end: a cut file loses it.
       target.fail(
@@ -69,39 +68,128 @@ Archive open_archive(const ReadTarget& target) {
   return Archive(archive);
 }
 
-// One member of the archive, in full; its size is checked against `expected`
-// (when given) before anything is decompressed.
-std::string read_member(zip_t* archive, const std::string& name, const ReadTarget& target,
-                        std::optional<std::uint64_t> expected = std::nullopt) {
+// The most main.xml may hold. Real files hold a few kilobytes; a DataList
+// (points written as text) of a few hundred thousand points fits.
+constexpr std::uint64_t kMaxMainXmlBytes = std::uint64_t{32} << 20;
+// Deflate codes at most 258 bytes in about two bits: no member expands more
+// than about 1032 times (zlib's technical notes), whatever its directory says.
+constexpr std::uint64_t kMaxDeflateRatio = 1032;
+// Members are decompressed in pieces of this size.
+constexpr std::uint64_t kStreamChunkBytes = std::uint64_t{1} << 20;
+
+// The size of a member, from the central directory, checked against what
+// the member's compressed bytes can hold.
+std::uint64_t member_size(zip_t* archive, const std::string& name, const ReadTarget& target) {
   zip_stat_t stat;
   zip_stat_init(&stat);
   if (zip_stat(archive, name.c_str(), 0, &stat) != 0) {
-    target.fail(fmt::format("the archive has no member '{}'", name));
+    target.fail(fmt::format("the archive has no member '{}'", detail::printable(name)));
   }
-  if ((stat.valid & ZIP_STAT_SIZE) == 0) target.fail(fmt::format("the size of member '{}' is unknown", name));
-  if (expected && stat.size != *expected) {
-    target.fail(fmt::format("member '{}' holds {} bytes but main.xml describes {} bytes", name, stat.size, *expected));
+  if ((stat.valid & ZIP_STAT_SIZE) == 0) {
+    target.fail(fmt::format("the size of member '{}' is unknown", detail::printable(name)));
   }
+  if ((stat.valid & ZIP_STAT_COMP_SIZE) != 0 && (stat.valid & ZIP_STAT_COMP_METHOD) != 0) {
+    const bool stored = stat.comp_method == ZIP_CM_STORE;
+    const bool deflated = stat.comp_method == ZIP_CM_DEFLATE;
+    if ((stored && stat.size != stat.comp_size) || (deflated && stat.size / kMaxDeflateRatio > stat.comp_size)) {
+      target.fail(
+          fmt::format("the zip directory says member '{}' holds {} bytes, which its {} {} bytes cannot: "
+                      "the archive is damaged",
+                      detail::printable(name), stat.size, stored ? "stored" : "compressed", stat.comp_size));
+    }
+  }
+  return stat.size;
+}
+
+// Decompresses a member a chunk at a time, handing each chunk to `consume`,
+// and fails unless exactly `size` bytes come out with the right CRC.
+template <class Consume>
+void stream_member(zip_t* archive, const std::string& name, std::uint64_t size, const ReadTarget& target,
+                   Consume&& consume) {
   std::unique_ptr<zip_file_t, ZipFileCloser> file(zip_fopen(archive, name.c_str(), 0));
   if (!file) {
-    target.fail(fmt::format("member '{}' cannot be opened: {}", name, zip_strerror(archive)));
+    target.fail(fmt::format("member '{}' cannot be opened: {}", detail::printable(name), zip_strerror(archive)));
   }
-  std::string bytes(static_cast<std::size_t>(stat.size), '\0');
-  std::size_t done = 0;
-  while (done < bytes.size()) {
-    const zip_int64_t count = zip_fread(file.get(), bytes.data() + done, bytes.size() - done);
+  std::vector<char> chunk(static_cast<std::size_t>(std::min<std::uint64_t>(size, kStreamChunkBytes)) + 1);
+  std::uint64_t done = 0;
+  while (done < size) {
+    const std::uint64_t want = std::min<std::uint64_t>(size - done, chunk.size() - 1);
+    const zip_int64_t count = zip_fread(file.get(), chunk.data(), want);
     if (count < 0) {
-      target.fail(fmt::format("member '{}' is damaged: {}", name, zip_file_strerror(file.get())));
+      target.fail(fmt::format("member '{}' is damaged: {}", detail::printable(name), zip_file_strerror(file.get())));
     }
-    if (count == 0) target.fail(fmt::format("member '{}' ends after {} of {} bytes", name, done, bytes.size()));
-    done += static_cast<std::size_t>(count);
+    if (count == 0) {
+      target.fail(fmt::format("member '{}' ends after {} of {} bytes", detail::printable(name), done, size));
+    }
+    consume(std::string_view(chunk.data(), static_cast<std::size_t>(count)));
+    done += static_cast<std::uint64_t>(count);
   }
   // Reading to the end makes libzip compare the CRC.
-  char extra = 0;
-  if (zip_fread(file.get(), &extra, 1) < 0) {
-    target.fail(fmt::format("member '{}' is damaged: {}", name, zip_file_strerror(file.get())));
+  const zip_int64_t beyond = zip_fread(file.get(), chunk.data(), 1);
+  if (beyond < 0) {
+    target.fail(fmt::format("member '{}' is damaged: {}", detail::printable(name), zip_file_strerror(file.get())));
   }
+  if (beyond > 0) {
+    target.fail(
+        fmt::format("member '{}' holds more than the {} bytes the zip directory states: the archive is "
+                    "damaged",
+                    detail::printable(name), size));
+  }
+}
+
+// One small member of the archive (main.xml, the checksum file, the validity
+// bits), in full; its size is checked against `limit` before anything is
+// decompressed.
+std::string read_member(zip_t* archive, const std::string& name, const ReadTarget& target, std::uint64_t limit,
+                        std::string_view what) {
+  const std::uint64_t size = member_size(archive, name, target);
+  if (size > limit) {
+    target.fail(fmt::format("member '{}' holds {} bytes, more than the {} {} may hold", detail::printable(name), size,
+                            detail::byte_size_text(limit), what));
+  }
+  std::string bytes;
+  bytes.reserve(static_cast<std::size_t>(size));
+  stream_member(archive, name, size, target, [&](std::string_view chunk) { bytes.append(chunk); });
   return bytes;
+}
+
+// "md5checksum.hex" holds a digest and a file name: a line.
+constexpr std::uint64_t kMaxChecksumFileBytes = 4096;
+
+// The one main.xml of the archive: at its top, or alone in a folder (some
+// tools pack "sample-land/main.xml" with "sample-land/bindata/..."). Two are
+// ambiguous.
+std::string find_main_xml(zip_t* archive, const ReadTarget& target) {
+  const zip_int64_t entries = zip_get_num_entries(archive, 0);
+  std::vector<std::string> found;
+  for (zip_int64_t k = 0; k < entries; ++k) {
+    const char* name = zip_get_name(archive, static_cast<zip_uint64_t>(k), 0);
+    if (name == nullptr) continue;
+    const std::string_view text(name);
+    if (text == "main.xml" || text.ends_with("/main.xml")) found.emplace_back(text);
+  }
+  if (found.empty()) target.fail("the archive has no member 'main.xml' (at its top or in a folder)");
+  if (found.size() > 1) {
+    std::string names;
+    for (std::size_t k = 0; k < found.size() && k < 4; ++k) {
+      names += fmt::format("{}'{}'", k == 0 ? "" : ", ", detail::printable(found[k]));
+    }
+    target.fail(
+        fmt::format("the archive holds {} files named main.xml ({}{}); which one describes the surface is "
+                    "ambiguous",
+                    found.size(), names, found.size() > 4 ? ", ..." : ""));
+  }
+  return found.front();
+}
+
+// A member that main.xml links to: relative to main.xml's folder, else (for
+// writers that store full paths) as written.
+std::string member_name(zip_t* archive, const std::string& folder, const std::string& link) {
+  if (folder.empty()) return link;
+  const std::string relative = folder + link;
+  if (zip_name_locate(archive, relative.c_str(), 0) >= 0) return relative;
+  if (zip_name_locate(archive, link.c_str(), 0) >= 0) return link;
+  return relative;
 }
 
 std::string_view local_name(const char* name) {
@@ -154,11 +242,12 @@ class Xml {
   }
   double number(std::string_view path, double fallback) const {
     const std::optional<std::string> value = text(path);
-    if (!value) return fallback;
+    // An empty element (<Offset/>, written by some tools) states nothing.
+    if (!value || value->empty()) return fallback;
     char* end = nullptr;
     const double result = std::strtod(value->c_str(), &end);
     if (value->empty() || end != value->c_str() + value->size() || !std::isfinite(result)) {
-      target_.fail(fmt::format("main.xml element {} = '{}' is not a number", path, *value));
+      target_.fail(fmt::format("main.xml element {} = '{}' is not a number", path, detail::printable(*value, 60)));
     }
     return result;
   }
@@ -167,7 +256,8 @@ class Xml {
     std::uint64_t result = 0;
     const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), result);
     if (error != std::errc() || end != value.data() + value.size()) {
-      target_.fail(fmt::format("main.xml element {} = '{}' is not a non-negative integer", path, value));
+      target_.fail(
+          fmt::format("main.xml element {} = '{}' is not a non-negative integer", path, detail::printable(value, 60)));
     }
     return result;
   }
@@ -191,22 +281,27 @@ std::string line_of_offset(std::string_view text, std::ptrdiff_t offset) {
   return fmt::format("line {}", 1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(end), '\n'));
 }
 
-void check_md5(std::string_view bytes, std::string stated, std::string_view what, const ReadTarget& target) {
-  // md5checksum.hex may read "<hex> *main.xml"; only the digest counts.
+// md5checksum.hex may read "<hex> *main.xml"; only the digest counts.
+void check_md5_digest(const std::string& computed, std::string stated, std::string_view what,
+                      const ReadTarget& target) {
   stated = stated.substr(0, std::min<std::size_t>(stated.find_first_of(" \t\r\n*"), stated.size()));
   std::transform(stated.begin(), stated.end(), stated.begin(),
                  [](char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); });
-  const std::string computed = detail::md5_hex(bytes);
   if (stated != computed) {
     target.fail(fmt::format("{} does not match its MD5 checksum (stated {}, computed {}): the file is damaged", what,
-                            stated, computed));
+                            detail::printable(stated, 40), computed));
   }
+}
+
+void check_md5(std::string_view bytes, const std::string& stated, std::string_view what, const ReadTarget& target) {
+  check_md5_digest(detail::md5_hex(bytes), stated, what, target);
 }
 
 void check_axes(const Xml& xml, const std::string& feature, const ReadTarget& target) {
   if (feature == "PCL") target.fail("FeatureType PCL (a point cloud) is not a height map; need SUR or PRF");
   if (feature != "SUR" && feature != "PRF") {
-    target.fail(fmt::format("FeatureType '{}' is unknown; need SUR (surface) or PRF (profile)", feature));
+    target.fail(fmt::format("FeatureType '{}' is unknown; need SUR (surface) or PRF (profile)",
+                            detail::printable(feature, 40)));
   }
   for (const char* axis : {"CX", "CY"}) {
     const std::string type = xml.text(fmt::format("Record1/Axes/{}/AxisType", axis)).value_or("");
@@ -214,7 +309,7 @@ void check_axes(const Xml& xml, const std::string& feature, const ReadTarget& ta
       target.fail(
           fmt::format("axis {} has AxisType '{}': only incremental (I) x and y axes, a regular grid, are "
                       "supported",
-                      axis, type));
+                      axis, detail::printable(type, 40)));
     }
   }
   if (const pugi::xml_node rotation = xml.find("Record1/Axes/Rotation")) {
@@ -236,7 +331,7 @@ ZAxis z_axis(const Xml& xml, const ReadTarget& target) {
   ZAxis z;
   const std::string type = xml.text("Record1/Axes/CZ/DataType").value_or("D");
   if (type.size() != 1 || std::string_view("ILFD").find(type[0]) == std::string_view::npos) {
-    target.fail(fmt::format("CZ DataType '{}' is unknown; expected I, L, F or D", type));
+    target.fail(fmt::format("CZ DataType '{}' is unknown; expected I, L, F or D", detail::printable(type, 40)));
   }
   z.type = type[0];
   z.increment = xml.number("Record1/Axes/CZ/Increment", 1.0);
@@ -264,28 +359,65 @@ double decode(const char* p, char type) {
   }
 }
 
-// z from the binary data file, and the validity bits when linked.
-void read_linked_points(zip_t* archive, const Xml& xml, const ZAxis& z, HeightMap& map, const ReadTarget& target) {
-  const std::size_t count = map.size();
-  const std::string data_name = xml.text("Record3/DataLink/PointDataLink").value_or("");
-  if (data_name.empty()) target.fail("Record3/DataLink has no PointDataLink");
-  const std::string data = read_member(archive, data_name, target, count * z.bytes());
-  if (const auto stated = xml.text("Record3/DataLink/MD5ChecksumPointData")) {
-    check_md5(data, *stated, fmt::format("the point data '{}'", data_name), target);
-  }
-  for (std::size_t k = 0; k < count; ++k) {
-    map.heights[static_cast<Eigen::Index>(k)] = decode(data.data() + k * z.bytes(), z.type);
-  }
+// The validity file may be padded to a whole 64-bit word.
+constexpr std::size_t kValidityPaddingBytes = 8;
 
-  const std::optional<std::string> valid_name = xml.text("Record3/DataLink/ValidPointsLink");
-  if (!valid_name || valid_name->empty()) return;
-  const std::string bits = read_member(archive, *valid_name, target);
-  if (bits.size() < (count + 7) / 8) {
-    target.fail(fmt::format("the validity file '{}' holds {} bytes, too few for {} points ({} needed)", *valid_name,
-                            bits.size(), count, (count + 7) / 8));
+// z from the binary data file, and the validity bits when linked. Member
+// names are relative to the folder holding main.xml.
+void read_linked_points(zip_t* archive, const std::string& folder, const Xml& xml, const ZAxis& z, HeightMap& map,
+                        const ReadTarget& target) {
+  const std::size_t count = map.size();
+  const std::string data_link = xml.text("Record3/DataLink/PointDataLink").value_or("");
+  if (data_link.empty()) target.fail("Record3/DataLink has no PointDataLink");
+  const std::string data_name = member_name(archive, folder, data_link);
+  const std::uint64_t data_bytes = detail::checked_product(count, z.bytes(), "the point data size", target);
+  const std::uint64_t stored = member_size(archive, data_name, target);
+  if (stored != data_bytes) {
+    target.fail(fmt::format("member '{}' holds {} bytes but main.xml describes {} bytes", detail::printable(data_name),
+                            stored, data_bytes));
+  }
+  const std::optional<std::string> stated_md5 = xml.text("Record3/DataLink/MD5ChecksumPointData");
+  const std::string data_what = fmt::format("the point data '{}'", detail::printable(data_name));
+  // The values are decoded straight into the heights, a chunk at a time, so
+  // that the member is never held whole; the heights' pages are touched only
+  // as data arrive, so a member that ends early costs little. A value may
+  // straddle two chunks: its bytes are gathered first.
+  map.heights.resize(static_cast<Eigen::Index>(count));
+  detail::Md5 digest;
+  std::array<char, 8> partial{};
+  std::size_t partial_size = 0;
+  std::size_t k = 0;
+  stream_member(archive, data_name, data_bytes, target, [&](std::string_view chunk) {
+    digest.update(chunk);
+    while (!chunk.empty()) {
+      const std::size_t take = std::min(chunk.size(), z.bytes() - partial_size);
+      if (partial_size == 0 && take == z.bytes()) {
+        map.heights[static_cast<Eigen::Index>(k++)] = decode(chunk.data(), z.type);
+      } else {
+        std::memcpy(partial.data() + partial_size, chunk.data(), take);
+        partial_size += take;
+        if (partial_size == z.bytes()) {
+          map.heights[static_cast<Eigen::Index>(k++)] = decode(partial.data(), z.type);
+          partial_size = 0;
+        }
+      }
+      chunk.remove_prefix(take);
+    }
+  });
+  if (stated_md5) check_md5_digest(digest.hex(), *stated_md5, data_what, target);
+
+  const std::optional<std::string> valid_link = xml.text("Record3/DataLink/ValidPointsLink");
+  if (!valid_link || valid_link->empty()) return;
+  const std::string valid_name = member_name(archive, folder, *valid_link);
+  const std::size_t needed = (count + 7) / 8;
+  const std::string bits = read_member(archive, valid_name, target, needed + kValidityPaddingBytes,
+                                       fmt::format("validity bits of {} points", count));
+  if (bits.size() < needed) {
+    target.fail(fmt::format("the validity file '{}' holds {} bytes, too few for {} points ({} needed)",
+                            detail::printable(valid_name), bits.size(), count, needed));
   }
   if (const auto stated = xml.text("Record3/DataLink/MD5ChecksumValidPoints")) {
-    check_md5(bits, *stated, fmt::format("the validity file '{}'", *valid_name), target);
+    check_md5(bits, *stated, fmt::format("the validity file '{}'", detail::printable(valid_name)), target);
   }
   map.valid.assign(count, 1);
   for (std::size_t k = 0; k < count; ++k) {
@@ -296,11 +428,20 @@ void read_linked_points(zip_t* archive, const Xml& xml, const ZAxis& z, HeightMa
 // z written as text, one Datum per point; an empty Datum is an invalid point.
 void read_listed_points(const Xml& xml, HeightMap& map, const ReadTarget& target) {
   const pugi::xml_node list = xml.require("Record3/DataList");
+  const auto is_datum = [](pugi::xml_node node) {
+    return node.type() == pugi::node_element && local_name(node.name()) == "Datum";
+  };
+  // Counted before the heights are allocated: the grid's size is only a claim.
+  std::size_t listed = 0;
+  for (pugi::xml_node datum = list.first_child(); datum; datum = datum.next_sibling()) listed += is_datum(datum);
+  if (listed != map.size()) {
+    target.fail(fmt::format("Record3/DataList holds {} points but the grid has {}", listed, map.size()));
+  }
   std::size_t k = 0;
+  map.heights.resize(static_cast<Eigen::Index>(map.size()));
   map.valid.assign(map.size(), 1);
   for (pugi::xml_node datum = list.first_child(); datum; datum = datum.next_sibling()) {
-    if (datum.type() != pugi::node_element || local_name(datum.name()) != "Datum") continue;
-    if (k == map.size()) target.fail(fmt::format("Record3/DataList holds more than the {} points of the grid", k));
+    if (!is_datum(datum)) continue;
     const std::string text = text_of(datum);
     if (text.empty()) {
       map.valid[k] = 0;
@@ -308,12 +449,11 @@ void read_listed_points(const Xml& xml, HeightMap& map, const ReadTarget& target
       char* end = nullptr;
       map.heights[static_cast<Eigen::Index>(k)] = std::strtod(text.c_str(), &end);
       if (end != text.c_str() + text.size()) {
-        target.fail(fmt::format("Record3/DataList Datum {} = '{}' is not a number", k, text));
+        target.fail(fmt::format("Record3/DataList Datum {} = '{}' is not a number", k, detail::printable(text, 60)));
       }
     }
     ++k;
   }
-  if (k != map.size()) target.fail(fmt::format("Record3/DataList holds {} points but the grid has {}", k, map.size()));
 }
 
 }  // namespace
@@ -321,7 +461,10 @@ void read_listed_points(const Xml& xml, HeightMap& map, const ReadTarget& target
 HeightMap read_x3p_height_map(const std::filesystem::path& path) {
   const ReadTarget target{path, "an X3P file"};
   const Archive archive = open_archive(target);
-  const std::string main_xml = read_member(archive.get(), "main.xml", target);
+  const std::string main_name = find_main_xml(archive.get(), target);
+  const std::string folder = main_name.substr(0, main_name.size() - std::string_view("main.xml").size());
+  const std::string main_xml =
+      read_member(archive.get(), main_name, target, kMaxMainXmlBytes, "main.xml of an X3P file");
 
   pugi::xml_document document;
   const pugi::xml_parse_result parsed = document.load_buffer(main_xml.data(), main_xml.size());
@@ -330,12 +473,15 @@ HeightMap read_x3p_height_map(const std::filesystem::path& path) {
                             line_of_offset(main_xml, parsed.offset)));
   }
   const pugi::xml_node root = document.document_element();
-  if (local_name(root.name()) != "ISO5436_2") {
-    target.fail(fmt::format("main.xml has root element '{}', not ISO5436_2", root.name()));
+  // ISO5436_2 is the standard's name; some writers use the older ISO5436.
+  if (local_name(root.name()) != "ISO5436_2" && local_name(root.name()) != "ISO5436") {
+    target.fail(fmt::format("main.xml has root element '{}', not ISO5436_2", detail::printable(root.name(), 60)));
   }
   const Xml xml(root, target);
   if (const auto checksum_file = xml.text("Record4/ChecksumFile"); checksum_file && !checksum_file->empty()) {
-    check_md5(main_xml, read_member(archive.get(), *checksum_file, target), "main.xml", target);
+    const std::string stated = read_member(archive.get(), member_name(archive.get(), folder, *checksum_file), target,
+                                           kMaxChecksumFileBytes, "checksum file");
+    check_md5(main_xml, stated, "main.xml", target);
   }
 
   const std::string feature = text_of(xml.require("Record1/FeatureType"));
@@ -354,13 +500,13 @@ HeightMap read_x3p_height_map(const std::filesystem::path& path) {
   map.dimension = size_y == 1 ? 1 : 2;
   map.nx = static_cast<std::size_t>(size_x);
   map.ny = static_cast<std::size_t>(size_y);
-  map.heights.resize(static_cast<Eigen::Index>(detail::checked_point_count(size_x, size_y, target)));
+  detail::checked_point_count(size_x, size_y, target);
   map.dx = xml.number("Record1/Axes/CX/Increment", 0.0);
   map.dy = map.dimension == 2 ? xml.number("Record1/Axes/CY/Increment", 0.0) : 0.0;
   if (map.dx < 0.0 || map.dy < 0.0) target.fail("a CX or CY Increment is negative");
 
   if (xml.find("Record3/DataLink")) {
-    read_linked_points(archive.get(), xml, z, map, target);
+    read_linked_points(archive.get(), folder, xml, z, map, target);
   } else if (xml.find("Record3/DataList")) {
     read_listed_points(xml, map, target);
   } else {

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Makes the fixtures of the height-map format readers (tests/io/*_reader_test.cpp)
 from committed HDF5 crops of the measured topographies and, for the X3P and
-Dektak files, from the originals in /work/shared/data/topography (numpy 1.24,
+Dektak files, from the originals in ../shared/data/topography beside the project (numpy 1.24,
 h5py 3.7, only the standard library otherwise). Run from anywhere:
     python3 tests/data/make_format_fixtures.py [topography_dir]
 Every binary fixture holds the same numbers as its source bit for bit; the text
@@ -19,7 +19,9 @@ import h5py
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-TOPOGRAPHY = sys.argv[1] if len(sys.argv) > 1 else "/work/shared/data/topography"
+# The shared data sit beside the project root (tests/data/../..): <root>/../shared.
+ROOT = os.path.dirname(os.path.dirname(HERE))
+TOPOGRAPHY = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "..", "shared", "data", "topography")
 FIXED_DATE = (1980, 1, 1, 0, 0, 0)  # reproducible zip members
 
 

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Makes the small HDF5 fixtures of tests/io from the measured topographies in
-/work/shared/data/topography (h5py 3.7, numpy 1.24). Run from anywhere:
+../shared/data/topography beside the project (h5py 3.7, numpy 1.24). Run from anywhere:
     python3 tests/data/make_io_fixtures.py [topography_dir]
 It prints the reference values that tests/io/hdf5_height_map_reader_test.cpp
 records, computed here with numpy independently of the C++ reader."""
@@ -11,7 +11,9 @@ import h5py
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-TOPOGRAPHY = sys.argv[1] if len(sys.argv) > 1 else "/work/shared/data/topography"
+# The shared data sit beside the project root (tests/data/../..): <root>/../shared.
+ROOT = os.path.dirname(os.path.dirname(HERE))
+TOPOGRAPHY = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "..", "shared", "data", "topography")
 
 
 def copy_attributes(source, target, **changes):

@@ -124,5 +124,59 @@ TEST(GsfReaderTest, RejectsMalformedHeaders) {
   expect_contains(gsf_error(path), {"not terminated by NUL padding"});
 }
 
+TEST(GsfReaderTest, RefusesADuplicateHeaderName) {
+  // A second XRes used to be ignored silently (the first one won).
+  const TempDir dir;
+  const fs::path path = dir / "twice.gsf";
+  test::write_bytes(path, gsf_bytes("XRes = 2\nYRes = 1\nXRes = 1\n", {1.0F, 2.0F}));
+  expect_contains(gsf_error(path), {path.string(), "header line 4 sets 'XRes' a second time"});
+}
+
+TEST(GsfReaderTest, RefusesAUnitThatContradictsTheHeader) {
+  // di-5-crop-m.gsf states ZUnits = m; --unit nm used to be ignored silently.
+  try {
+    read_gsf_height_map(kFormatDataDir / "di-5-crop-m.gsf", LengthUnit{"nm", 1e-9});
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& error) {
+    expect_contains(error.what(), {"di-5-crop-m.gsf", "the unit nm contradicts", "= m in the file's header"});
+  }
+  // The same unit as the header's is no contradiction.
+  EXPECT_EQ(read_gsf_height_map(kFormatDataDir / "di-5-crop-m.gsf", LengthUnit{"m", 1.0}).nx, 64u);
+  // A header without units takes the given unit.
+  const TempDir dir;
+  const fs::path path = dir / "bare.gsf";
+  test::write_bytes(path, gsf_bytes("XRes = 2\nYRes = 1\n", {1.0F, 2.0F}));
+  EXPECT_EQ(read_gsf_height_map(path, LengthUnit{"nm", 1e-9}).heights[1], 2e-9);
+}
+
+TEST(GsfReaderTest, BoundsTheHeaderAndTheDataItReads) {
+  const TempDir dir;
+  // /dev/zero used to be read until memory ran out.
+  expect_contains(gsf_error("/dev/zero"), {"/dev/zero", "does not start with the line 'Gwyddion Simple Field 1.0'"});
+  // A header with no NUL for 2 MiB is not a GSF header.
+  const fs::path path = dir / "long.gsf";
+  test::write_bytes(path, "Gwyddion Simple Field 1.0\n" + std::string(2 << 20, 'a'));
+  expect_contains(gsf_error(path), {path.string(), "no NUL ends the header within its first 1048576 bytes"});
+  // Endless data after a valid header: read the 8 declared bytes, not the pipe.
+  const fs::path pipe_path = dir / "pipe.gsf";
+  test::EndlessPipe pipe(pipe_path, gsf_bytes("XRes = 2\nYRes = 1\n", {1.0F, 2.0F}), std::string(1 << 16, '\0'),
+                         std::size_t{64} << 20);
+  expect_contains(gsf_error(pipe_path), {"more than the 8 data bytes"});
+  EXPECT_LT(pipe.written(), std::size_t{4} << 20);
+}
+
+TEST(GsfReaderTest, EscapesControlBytesFromTheHeader) {
+  const TempDir dir;
+  const fs::path path = dir / "escape.gsf";
+  test::write_bytes(path, gsf_bytes("XRes = 2\x1b[2J\nYRes = 1\n", {1.0F, 2.0F}));
+  const std::string message = gsf_error(path);
+  expect_contains(message, {"XRes = '2\\x1b[2J' is invalid"});
+  EXPECT_EQ(message.find('\x1b'), std::string::npos) << message;
+  test::write_bytes(path, gsf_bytes("XRes = 2\nYRes = 1\nTitle = a\x07"
+                                    "b\n",
+                                    {1.0F, 2.0F}));
+  EXPECT_NE(read_gsf_height_map(path).source.find("'a\\x07b'"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace halfspace::io

@@ -17,6 +17,7 @@
 
 #include "halfspace/error.hpp"
 #include "io/hdf5_test_support.hpp"
+#include "io/reader_test_support.hpp"
 
 namespace halfspace::io {
 namespace {
@@ -28,7 +29,7 @@ using test::create_file;
 using test::TempDir;
 
 const fs::path kDataDir = HALFSPACE_TEST_DATA_DIR;
-const fs::path kTopographyDir = "/work/shared/data/topography";
+const fs::path& kTopographyDir = test::kTopographyDir;
 
 // Our rms sums in a different order from numpy's pairwise sum, and the di-5
 // heights carry an offset 500x their rms, so cancellation amplifies rounding.
@@ -438,6 +439,60 @@ TEST(Hdf5HeightMapReaderTest, FailsSilentlyAndRestoresHdf5ErrorPrinting) {
   H5Eget_auto2(H5E_DEFAULT, &after, &after_data);
   EXPECT_EQ(after, before);
   EXPECT_EQ(after_data, before_data);
+}
+
+TEST(Hdf5HeightMapReaderTest, RefusesDatasetsWhoseDataAreNotStoredInTheFile) {
+  const TempDir dir;
+  // 30000 x 30000 points never written: a 2 KB file that used to cost 7.2 GB
+  // of fill values.
+  const fs::path unwritten = dir / "unwritten.h5";
+  {
+    const test::H5 file = create_file(unwritten);
+    const hsize_t dims[2] = {30000, 30000};
+    const test::H5 space(H5Screate_simple(2, dims, nullptr), H5Sclose, "space");
+    const test::H5 data(
+        H5Dcreate2(file.get(), "height", H5T_IEEE_F64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose,
+        "create");
+  }
+  const std::size_t before = test::peak_resident_bytes();
+  expect_contains(read_error(unwritten), {unwritten.string(), "holds no stored data"});
+  EXPECT_LT(test::peak_resident_bytes(), before + test::kRefusalMemoryAllowance);
+
+  // Raw data in an external file, here /dev/zero: used to be read from there.
+  const fs::path external = dir / "external.h5";
+  {
+    const test::H5 file = create_file(external);
+    const test::H5 creation(H5Pcreate(H5P_DATASET_CREATE), H5Pclose, "dcpl");
+    test::check(H5Pset_external(creation.get(), "/dev/zero", 0, 4 * sizeof(double)), "external");
+    const hsize_t dims[2] = {2, 2};
+    const test::H5 space(H5Screate_simple(2, dims, nullptr), H5Sclose, "space");
+    const test::H5 data(
+        H5Dcreate2(file.get(), "height", H5T_IEEE_F64LE, space.get(), H5P_DEFAULT, creation.get(), H5P_DEFAULT),
+        H5Dclose, "create");
+  }
+  expect_contains(read_error(external), {external.string(), "external files"});
+}
+
+TEST(Hdf5HeightMapReaderTest, ADamagedFileLeavesHdf5ErrorPrintingOff) {
+  // One byte of an object address changed: H5Fopen fails ("addr overflow")
+  // and leaves HDF5 unable to close its internals, so that at exit it printed
+  // "HDF5: infinite loop closing library" and a line of interface names
+  // after halfspace's message, unless error printing is off by then
+  // (hostile_input_cli_test checks what a user sees).
+  const TempDir dir;
+  std::string bytes = test::read_bytes(kDataDir / "di-5-crop-48x64.h5");
+  bytes[1410] = '\x94';
+  const fs::path path = dir / "damaged.h5";
+  test::write_bytes(path, bytes);
+  ::testing::internal::CaptureStderr();
+  const std::string message = read_error(path);
+  EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");
+  expect_contains(message, {path.string(), "cannot be opened"});
+  EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  H5E_auto2_t printer = nullptr;
+  void* data = nullptr;
+  H5Eget_auto2(H5E_DEFAULT, &printer, &data);
+  EXPECT_EQ(printer, nullptr) << "HDF5's error printing was turned back on";
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
 // Tests of read_height_map: format choice by extension and by name, options
-// that do not apply, and every measured file of /work/shared/data/topography
+// that do not apply, and every measured file of ../shared/data/topography
 // against the grid, spacing and Sq of its README (skipped without the data).
 #include "halfspace/io/height_map_reader.hpp"
 

@@ -187,5 +187,59 @@ TEST(NpyReaderTest, RejectsMissingFileAndUnknownVersion) {
   expect_contains(npy_error(version), {"format version 9.0"});
 }
 
+TEST(NpyReaderTest, RefusesDevZeroAtItsFirstBytes) {
+  // Used to read /dev/zero to the end of memory.
+  expect_contains(npy_error("/dev/zero"), {"/dev/zero", "magic", "\\x00"});
+}
+
+TEST(NpyReaderTest, ReadsFromAPipeNoMoreThanTheHeaderDeclares) {
+  // A valid 2 x 2 float64 array, then endless bytes: the reader must stop
+  // after the 32 data bytes and one more, not read the pipe to its end.
+  const TempDir dir;
+  const fs::path path = dir / "pipe.npy";
+  constexpr std::size_t kCap = std::size_t{64} << 20;
+  test::EndlessPipe pipe(
+      path, npy_bytes("{'descr': '<f8', 'fortran_order': False, 'shape': (2, 2), }", doubles({1, 2, 3, 4})),
+      std::string(1 << 16, '\x01'), kCap);
+  expect_contains(npy_error(path), {path.string(), "more bytes follow the data of shape (2, 2)"});
+  EXPECT_LT(pipe.written(), std::size_t{4} << 20) << "the reader read on after the declared data";
+}
+
+TEST(NpyReaderTest, ReadsAWholeArrayFromAPipe) {
+  const TempDir dir;
+  const fs::path path = dir / "pipe.npy";
+  const std::string bytes = npy_bytes("{'descr': '<f8', 'fortran_order': False, 'shape': (3,), }", doubles({1, 2, 3}));
+  test::EndlessPipe pipe(path, bytes, "", bytes.size());
+  const HeightMap map = read_npy_height_map(path);
+  ASSERT_EQ(map.nx, 3u);
+  EXPECT_EQ(map.heights[2], 3.0);
+}
+
+TEST(NpyReaderTest, RefusesHeadersAndShapesThatClaimTooMuch) {
+  const TempDir dir;
+  const fs::path path = dir / "claims.npy";
+  // Version 2.0 with a header length of 4 GiB - 1.
+  test::write_bytes(path, std::string("\x93NUMPY\x02\x00\xff\xff\xff\xff{}", 14));
+  expect_contains(npy_error(path), {path.string(), "the header claims 4294967295 bytes"});
+  // A shape whose product overflows 64 bits.
+  test::write_bytes(path, npy_bytes("{'descr': '<f8', 'fortran_order': False, 'shape': (4294967296, 4294967296), }",
+                                    doubles({1, 2})));
+  expect_contains(npy_error(path), {"4294967296 x 4294967296", "too large"});
+  // A shape beyond the machine's memory, from a 100-byte file.
+  test::write_bytes(
+      path, npy_bytes("{'descr': '<f8', 'fortran_order': False, 'shape': (1000000000, 100000), }", doubles({1, 2})));
+  expect_contains(npy_error(path), {"100000 x 1000000000", "memory"});
+}
+
+TEST(NpyReaderTest, EscapesControlBytesFromTheHeader) {
+  const TempDir dir;
+  const fs::path path = dir / "escape.npy";
+  test::write_bytes(path,
+                    npy_bytes("{'descr': '<f\x1b[31m', 'fortran_order': False, 'shape': (2,), }", doubles({1, 2})));
+  const std::string message = npy_error(path);
+  expect_contains(message, {"dtype '<f\\x1b[31m'"});
+  EXPECT_EQ(message.find('\x1b'), std::string::npos) << message;
+}
+
 }  // namespace
 }  // namespace halfspace::io

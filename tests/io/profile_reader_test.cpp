@@ -101,8 +101,8 @@ TEST(ProfileReaderTest, RejectsAUnitThatContradictsTheFile) {
 TEST(ProfileReaderTest, ReportsNonUniformSpacingWithTheLine) {
   const TempDir dir;
   const fs::path path = write_text(dir, "gap.txt", "x z\n0.0 1\n0.1 2\n0.2 3\n0.5 4\n0.6 5\n0.7 6\n");
-  expect_contains(profile_error(path),
-                  {path.string(), "not uniformly spaced", "line 4 (x = 0.2) to line 5 (x = 0.5)", "precision 0.1"});
+  expect_contains(profile_error(path), {path.string(), "not uniformly spaced", "line 4 (x = 0.2) to line 5 (x = 0.5)",
+                                        "the precision x is printed with"});
 }
 
 TEST(ProfileReaderTest, AcceptsRoundingWithinThePrintedPrecision) {
@@ -134,6 +134,49 @@ TEST(ProfileReaderTest, RejectsATruncatedDektakExport) {
   // Cut in the middle of a data line: "1499.7,16.5" loses its z.
   const std::size_t cut = full.find("1499.7,") + 7;
   expect_contains(profile_error(write_text(dir, "cut.csv", full.substr(0, cut))), {"line", "has 1 values"});
+}
+
+TEST(ProfileReaderTest, AZeroXDoesNotLoosenTheSpacingCheck) {
+  // "0.000000e+00" printed with 6 decimals has a rounding step of 1e-6, the
+  // whole spacing: x values 0.4 and 0.9 of a step off the grid were accepted.
+  const TempDir dir;
+  const std::string head = "0.000000e+00 1\n1.000000e-06 2\n2.000000e-06 3\n";
+  for (const char* off : {"3.400000e-06", "3.900000e-06"}) {
+    SCOPED_TRACE(off);
+    const fs::path path =
+        write_text(dir, "zero.txt", head + off + " 4\n4.000000e-06 5\n5.000000e-06 6\n6.000000e-06 7\n");
+    expect_contains(profile_error(path), {path.string(), "not uniformly spaced", "line 4"});
+  }
+  // The same file on the grid is read, with dx from the fit.
+  const HeightMap map = read_profile(write_text(dir, "on.txt", head + "3.000000e-06 4\n4.000000e-06 5\n"));
+  EXPECT_NEAR(map.dx, 1e-6, 1e-18);
+}
+
+TEST(ProfileReaderTest, NoXMayBeHalfAStepOffWhateverItsPrecision) {
+  // Integers printed for a step of 1: the printed precision (1) is a whole
+  // step, so the tolerance is half a step.
+  const TempDir dir;
+  const fs::path path = write_text(dir, "int.txt", "0 1\n1 1\n2 1\n3.6 1\n4 1\n5 1\n");
+  expect_contains(profile_error(path), {"not uniformly spaced"});
+  EXPECT_EQ(read_profile(write_text(dir, "ok.txt", "0 1\n1 1\n2 1\n3 1\n4 1\n")).dx, 1.0);
+}
+
+TEST(ProfileReaderTest, ReadsDevZeroAndProcFilesWithAClearError) {
+  expect_contains(profile_error("/dev/zero"), {"/dev/zero", "not text", "byte 0x00 at offset 0"});
+  expect_contains(profile_error("/proc/self/mem"), {"/proc/self/mem", "cannot be read"});
+}
+
+TEST(ProfileReaderTest, EscapesControlBytesOfColumnNames) {
+  const TempDir dir;
+  const fs::path path = write_text(dir, "names.txt", "x\xc2\x9b (um)\tz [nm]\n0 1\n1 2\n");
+  try {
+    read_profile(path, LengthUnit{"m", 1.0});
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& error) {
+    const std::string message = error.what();
+    expect_contains(message, {"contradicts column 'x\\xc2\\x9b (um)'"});
+    EXPECT_EQ(message.find("\xc2\x9b"), std::string::npos) << message;
+  }
 }
 
 }  // namespace

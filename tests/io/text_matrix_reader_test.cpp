@@ -107,5 +107,32 @@ TEST(TextMatrixReaderTest, TruncatedLastRowIsReported) {
   expect_contains(matrix_error(path), {"line 48 has", "but line 1, the first data line, has 64"});
 }
 
+TEST(TextMatrixReaderTest, RefusesDevicesAtTheirFirstBytesAndNamesReadErrors) {
+  // /dev/zero used to be read until memory ran out; /proc/self/mem gave
+  // "basic_filebuf::underflow error" naming no file.
+  expect_contains(matrix_error("/dev/zero"), {"/dev/zero", "not text: byte 0x00 at offset 0"});
+  expect_contains(matrix_error("/proc/self/mem"), {"/proc/self/mem", "cannot be read", "Input/output error"});
+}
+
+TEST(TextMatrixReaderTest, ReadsFromAPipe) {
+  const TempDir dir;
+  const fs::path path = dir / "pipe.txt";
+  const std::string text = "1 2 3\n4 5 6\n";
+  test::EndlessPipe pipe(path, text, "", text.size());
+  const HeightMap map = read_text_matrix(path);
+  EXPECT_EQ(map.nx, 3u);
+  EXPECT_EQ(map.ny, 2u);
+  EXPECT_EQ(map.heights[5], 6.0);
+}
+
+TEST(TextMatrixReaderTest, EscapesControlBytesInMessages) {
+  const TempDir dir;
+  const std::string message = matrix_error(write_text(dir, "esc.txt",
+                                                      "1 2\n3 \xc2\x9b"
+                                                      "31m\n"));
+  expect_contains(message, {"'\\xc2\\x9b31m' is not a number"});
+  EXPECT_EQ(message.find("\xc2\x9b"), std::string::npos) << message;
+}
+
 }  // namespace
 }  // namespace halfspace::io

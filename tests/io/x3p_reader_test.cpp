@@ -1,9 +1,10 @@
 // Tests of read_x3p_height_map: a re-packed crop of the Alicona X3P file
 // (float32 with +inf invalid points), an int16 surface with a validity bit
-// mask, a text-data profile, the full instrument file when /work/shared is
+// mask, a text-data profile, the full instrument file when ../shared is
 // there, and damaged archives, XML, data and checksums.
 #include "halfspace/io/x3p_reader.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <zip.h>
 
@@ -300,6 +301,152 @@ TEST(X3pReaderTest, RejectsUnsupportedLayouts) {
   expect_contains(x3p_error(path), {"no element Record3/MatrixDimension/SizeZ"});
   write_members(path, {{"main.xml", "<?xml version=\"1.0\"?><ISO5436_3/>"}});
   expect_contains(x3p_error(path), {"root element 'ISO5436_3'"});
+}
+
+// Rewrites the uncompressed size that the local header and the central
+// directory state for `name`, leaving the data as they are: an archive that
+// lies about a member's size.
+void claim_member_size(std::string& zip, const std::string& name, std::uint32_t size) {
+  const auto put = [&](std::size_t at) {
+    for (int b = 0; b < 4; ++b) zip[at + b] = static_cast<char>((size >> (8 * b)) & 0xffU);
+  };
+  int patched = 0;
+  for (std::size_t at = zip.find("PK\x03\x04"); at != std::string::npos; at = zip.find("PK\x03\x04", at + 4)) {
+    if (zip.compare(at + 30, name.size(), name) == 0) {
+      put(at + 22);
+      ++patched;
+    }
+  }
+  for (std::size_t at = zip.find("PK\x01\x02"); at != std::string::npos; at = zip.find("PK\x01\x02", at + 4)) {
+    if (zip.compare(at + 46, name.size(), name) == 0) {
+      put(at + 24);
+      ++patched;
+    }
+  }
+  ASSERT_EQ(patched, 2) << "member " << name << " not found in both headers";
+}
+
+std::string link_record3(std::size_t nx, std::size_t ny, const std::string& valid_link = "") {
+  return fmt::format(
+      "<MatrixDimension><SizeX>{}</SizeX><SizeY>{}</SizeY><SizeZ>1</SizeZ></MatrixDimension>"
+      "<DataLink><PointDataLink>bindata/data.bin</PointDataLink>{}</DataLink>",
+      nx, ny, valid_link.empty() ? "" : "<ValidPointsLink>" + valid_link + "</ValidPointsLink>");
+}
+
+TEST(X3pReaderTest, RefusesAMainXmlWhoseStatedSizeItsBytesCannotHoldBeforeAllocating) {
+  // The zip directory claims a 3.75 GiB main.xml in a file of a few hundred
+  // bytes; reading it used to allocate (and zero) the claimed size.
+  const TempDir dir;
+  const fs::path path = dir / "huge-main.x3p";
+  write_members(
+      path, {{"main.xml", minimal_xml("I", link_record3(3, 2))}, {"bindata/data.bin", doubles({1, 2, 3, 4, 5, 6})}});
+  std::string zip = test::read_bytes(path);
+  claim_member_size(zip, "main.xml", 0xF0000000U);
+  test::write_bytes(path, zip);
+  const std::size_t before = test::peak_resident_bytes();
+  expect_contains(x3p_error(path),
+                  {path.string(), "member 'main.xml' holds 4026531840 bytes", "the archive is damaged"});
+  EXPECT_LT(test::peak_resident_bytes(), before + test::kRefusalMemoryAllowance);
+}
+
+TEST(X3pReaderTest, RefusesPointDataWhoseStatedSizeItsBytesCannotHoldBeforeAllocating) {
+  // main.xml claims 20000 x 20000 float64 points and the directory agrees
+  // (3.2e9 bytes), but the member holds 48 bytes: used to cost 6 GB (the
+  // heights, then the member) before the read failed.
+  const TempDir dir;
+  const fs::path path = dir / "huge-grid.x3p";
+  write_members(path, {{"main.xml", minimal_xml("I", link_record3(20000, 20000))},
+                       {"bindata/data.bin", doubles({1, 2, 3, 4, 5, 6})}});
+  std::string zip = test::read_bytes(path);
+  claim_member_size(zip, "bindata/data.bin", 3'200'000'000U);
+  test::write_bytes(path, zip);
+  const std::size_t before = test::peak_resident_bytes();
+  expect_contains(x3p_error(path), {path.string(), "member 'bindata/data.bin' holds 3200000000 bytes", "damaged"});
+  EXPECT_LT(test::peak_resident_bytes(), before + test::kRefusalMemoryAllowance);
+}
+
+TEST(X3pReaderTest, RefusesValidityBitsLargerThanTheGridNeeds) {
+  // 3 x 2 points need 1 byte of bits (8 of padding allowed); a 3 GB valid.bin
+  // used to be read in full. Here its real 100 bytes, and then a lying size.
+  const TempDir dir;
+  const fs::path path = dir / "valid.x3p";
+  write_members(path, {{"main.xml", minimal_xml("I", link_record3(3, 2, "bindata/valid.bin"))},
+                       {"bindata/data.bin", doubles({1, 2, 3, 4, 5, 6})},
+                       {"bindata/valid.bin", std::string(100, '\xff')}});
+  expect_contains(x3p_error(path),
+                  {path.string(), "member 'bindata/valid.bin' holds 100 bytes", "validity bits of 6 points"});
+  std::string zip = test::read_bytes(path);
+  claim_member_size(zip, "bindata/valid.bin", 3'000'000'000U);
+  test::write_bytes(path, zip);
+  const std::size_t before = test::peak_resident_bytes();
+  expect_contains(x3p_error(path), {"member 'bindata/valid.bin' holds 3000000000 bytes"});
+  EXPECT_LT(test::peak_resident_bytes(), before + test::kRefusalMemoryAllowance);
+}
+
+TEST(X3pReaderTest, RefusesDevicesAndPipes) {
+  expect_contains(x3p_error("/dev/zero"), {"/dev/zero", "character device", "regular file"});
+}
+
+// The members of `source` moved into `folder`, as some tools pack them.
+Members in_folder(const Members& source, const std::string& folder) {
+  Members moved;
+  for (const auto& [name, bytes] : source) moved.emplace_back(folder + name, bytes);
+  return moved;
+}
+
+void expect_same_map(const HeightMap& map, const HeightMap& reference) {
+  ASSERT_EQ(map.nx, reference.nx);
+  ASSERT_EQ(map.ny, reference.ny);
+  EXPECT_EQ(map.dx, reference.dx);
+  EXPECT_EQ(map.dy, reference.dy);
+  ASSERT_EQ(map.valid, reference.valid);
+  for (std::size_t k = 0; k < map.size(); ++k) {
+    if (reference.is_valid(k)) {
+      EXPECT_EQ(map.heights[static_cast<Eigen::Index>(k)], reference.heights[static_cast<Eigen::Index>(k)]) << k;
+    }
+  }
+}
+
+TEST(X3pReaderTest, ReadsAMainXmlInASubfolderWithItsMembersRelativeToIt) {
+  const TempDir dir;
+  const Members original = read_members(kFormatDataDir / "int16-mask-5x3.x3p");
+  const fs::path path = dir / "sample-land.x3p";
+  write_members(path, in_folder(original, "sample-land/"));
+  expect_same_map(read_x3p_height_map(path), read_x3p_height_map(kFormatDataDir / "int16-mask-5x3.x3p"));
+
+  // Two main.xml: which one describes the surface cannot be told.
+  Members twice = in_folder(original, "a/");
+  for (auto& member : in_folder(original, "b/")) twice.push_back(member);
+  write_members(path, twice);
+  expect_contains(x3p_error(path), {"2 files named main.xml", "'a/main.xml'", "'b/main.xml'", "ambiguous"});
+}
+
+TEST(X3pReaderTest, AcceptsTheOlderRootNameAndEmptyOffsets) {
+  const TempDir dir;
+  const fs::path path = dir / "old.x3p";
+  std::string xml =
+      minimal_xml("I",
+                  "<MatrixDimension><SizeX>2</SizeX><SizeY>2</SizeY><SizeZ>1</SizeZ></MatrixDimension>"
+                  "<DataList><Datum>1</Datum><Datum>2</Datum><Datum>3</Datum><Datum>4</Datum></DataList>");
+  replace(xml, "<p:ISO5436_2 xmlns:p=\"http://www.opengps.eu/2008/ISO5436_2\">", "<ISO5436>");
+  replace(xml, "</p:ISO5436_2>", "</ISO5436>");
+  replace(xml, "<Offset>0</Offset>", "<Offset/>");
+  replace(xml, "<CZ><AxisType>A</AxisType>", "<CZ><AxisType>A</AxisType><Increment>1e-9</Increment><Offset/>");
+  write_members(path, {{"main.xml", xml}});
+  const HeightMap map = read_x3p_height_map(path);
+  EXPECT_EQ(map.nx, 2u);
+  EXPECT_EQ(map.dx, 1e-6);
+  EXPECT_EQ(map.heights[3], 4e-9);  // 4 x increment 1e-9 + an empty, zero, offset
+}
+
+TEST(X3pReaderTest, EscapesControlBytesFromTheFileInMessages) {
+  const TempDir dir;
+  const fs::path path = dir / "escape.x3p";
+  std::string xml = minimal_xml("I", link_record3(3, 2), "S\x1b[2JUR");
+  write_members(path, {{"main.xml", xml}});
+  const std::string message = x3p_error(path);
+  expect_contains(message, {"FeatureType 'S\\x1b[2JUR'"});
+  EXPECT_EQ(message.find('\x1b'), std::string::npos) << message;
 }
 
 }  // namespace

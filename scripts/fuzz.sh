@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer harnesses (fuzz/, clang with ASan and UBSan, a build
+# of its own) and runs each for SECONDS (default 300) on one core, starting
+# from the seed corpus in fuzz/corpus/<reader>/. Prints, per harness, the
+# executions per second and the coverage reached (libFuzzer's cov: and ft:).
+# Inputs that crash are written to $HALFSPACE_FUZZ_DIR/crashes/<reader>/ and
+# make the script fail. New corpus entries go to $HALFSPACE_FUZZ_DIR/corpus/,
+# not into the repository.
+#   scripts/fuzz.sh [SECONDS] [harness ...]     harnesses: hdf5 npy text_matrix profile x3p gsf toml_config
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+seconds="${1:-300}"
+shift || true
+harnesses=("$@")
+if [ "${#harnesses[@]}" -eq 0 ]; then
+  harnesses=(hdf5 npy text_matrix profile x3p gsf toml_config)
+fi
+build="${HALFSPACE_FUZZ_BUILD_DIR:-$root/build-fuzz}"
+work="${HALFSPACE_FUZZ_DIR:-$build/runs}"
+cc="${CC_FUZZ:-clang-14}"
+cxx="${CXX_FUZZ:-clang++-14}"
+
+cmake -S "$root/fuzz" -B "$build" -DCMAKE_C_COMPILER="$cc" -DCMAKE_CXX_COMPILER="$cxx" >/dev/null
+cmake --build "$build" -j "$(nproc)" >/dev/null
+
+# Memory: the readers must refuse what they cannot hold, so a single input
+# costing more than 1 GiB is reported as a failure.
+status=0
+printf '%-12s %10s %8s %8s %8s  %s\n' harness "exec/s" cov ft corpus result
+for h in "${harnesses[@]}"; do
+  corpus="$work/corpus/$h"
+  crashes="$work/crashes/$h"
+  mkdir -p "$corpus" "$crashes"
+  log="$work/$h.log"
+  set +e
+  ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=0 \
+    UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+    "$build/fuzz_$h" "$corpus" "$root/fuzz/corpus/$h" -max_total_time="$seconds" -rss_limit_mb=2048 \
+    -malloc_limit_mb=1024 -max_len=65536 -timeout=10 -print_final_stats=1 -artifact_prefix="$crashes/" \
+    >"$log" 2>&1
+  rc=$?
+  set -e
+  # The last status line: "#N DONE cov: C ft: F corp: K/..." and the final stats.
+  line="$(grep -E '^#[0-9]+' "$log" | tail -1 || true)"
+  cov="$(sed -nE 's/.* cov: ([0-9]+).*/\1/p' <<<"$line")"
+  ft="$(sed -nE 's/.* ft: ([0-9]+).*/\1/p' <<<"$line")"
+  corp="$(sed -nE 's/.* corp: ([0-9]+).*/\1/p' <<<"$line")"
+  execs="$(sed -nE 's/^stat::average_exec_per_sec: *([0-9]+)/\1/p' "$log" | tail -1)"
+  result=ok
+  if [ "$rc" -ne 0 ]; then
+    result="FAILED (exit $rc; see $log and $crashes)"
+    status=1
+  fi
+  printf '%-12s %10s %8s %8s %8s  %s\n' "$h" "${execs:-?}" "${cov:-?}" "${ft:-?}" "${corp:-?}" "$result"
+done
+exit "$status"
