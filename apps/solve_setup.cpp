@@ -18,8 +18,8 @@
 #include <vector>
 
 #include "halfspace/error.hpp"
-#include "halfspace/geometry/builtin_surface.hpp"
 #include "halfspace/fft/fft_wisdom.hpp"
+#include "halfspace/geometry/builtin_surface.hpp"
 #include "halfspace/io/height_map_reader.hpp"
 #include "halfspace/io/output_file.hpp"
 #include "halfspace/io/sweep_writer.hpp"
@@ -220,8 +220,8 @@ void check_outputs_against_inputs(const SolveOptions& o, const fs::path& output,
   };
   std::vector<File> outputs{{o.describe("output"), output}};
   if (sweep) {
-    outputs.push_back({fmt::format("the sweep's CSV table {} (the {} name with .csv)", io::sweep_csv_path(output).string(),
-                                   o.name("output")),
+    outputs.push_back({fmt::format("the sweep's CSV table {} (the {} name with .csv)",
+                                   io::sweep_csv_path(output).string(), o.name("output")),
                        io::sweep_csv_path(output)});
   }
   if (planning != FftPlanning::estimate) {
@@ -245,8 +245,9 @@ void check_outputs_against_inputs(const SolveOptions& o, const fs::path& output,
   for (std::size_t k = 0; k < outputs.size(); ++k) {
     for (const File& input : inputs) {
       if (io::same_file(outputs[k].path, input.path)) {
-        throw InputError(fmt::format("{} would overwrite the input {}: both are the file '{}'; choose another output name",
-                                     outputs[k].what, input.what, input.path.string()));
+        throw InputError(
+            fmt::format("{} would overwrite the input {}: both are the file '{}'; choose another output name",
+                        outputs[k].what, input.what, input.path.string()));
       }
     }
     for (std::size_t m = 0; m < k; ++m) {

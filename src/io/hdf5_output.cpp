@@ -151,7 +151,8 @@ hid_t write_array(hid_t location, std::string_view name, const std::vector<std::
   const Dataspace space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr));
   if (!space.valid()) fail_hdf5(fmt::format("could not create the dataspace of '{}'", name));
   const PropertyList properties = creation_properties(dims);
-  Dataset dataset(H5Dcreate2(location, key.c_str(), file_type, space.get(), H5P_DEFAULT, properties.get(), H5P_DEFAULT));
+  Dataset dataset(
+      H5Dcreate2(location, key.c_str(), file_type, space.get(), H5P_DEFAULT, properties.get(), H5P_DEFAULT));
   if (!dataset.valid()) fail_hdf5(fmt::format("could not create dataset '{}'", name));
   if (elements > 0 && H5Dwrite(dataset.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0) {
     fail_hdf5(fmt::format("could not write dataset '{}'", name));
@@ -166,8 +167,7 @@ hid_t write_array(hid_t location, std::string_view name, const std::vector<std::
 
 // The file image: HDF5's core driver without backing store, flushed so that
 // the copy has the superblock of a closed file, unlike the raw core buffer.
-std::vector<char> build_image(const std::filesystem::path& path,
-                              const std::function<void(const Hdf5Node& root)>& fill,
+std::vector<char> build_image(const std::filesystem::path& path, const std::function<void(const Hdf5Node& root)>& fill,
                               const std::function<Hdf5Node(hid_t)>& make_node) {
   PropertyList access(H5Pcreate(H5P_FILE_ACCESS));
   if (!access.valid() || H5Pset_fapl_core(access.get(), kImageIncrement, false) < 0) {

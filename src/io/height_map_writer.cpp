@@ -22,9 +22,9 @@ void write_height_map(const std::filesystem::path& path, const Grid& grid, std::
     root.write_int64_attribute("nx", static_cast<std::int64_t>(grid.nx()));
     root.write_int64_attribute("ny", static_cast<std::int64_t>(grid.ny()));
     root.write_string_attribute("unit", "m");
-    root.write_string_attribute(
-        "layout",
-        grid.dimension() == 1 ? "height[i] = h(x = i*dx)" : "height[j][i] = h(x = i*dx, y = j*dy), shape (ny, nx)");
+    root.write_string_attribute("layout", grid.dimension() == 1
+                                              ? "height[i] = h(x = i*dx)"
+                                              : "height[j][i] = h(x = i*dx, y = j*dy), shape (ny, nx)");
     root.write_int64_attribute("periodic", metadata.periodic ? 1 : 0);
     root.write_string_attribute("source", metadata.source);
     root.write_string_attribute("command_line", metadata.command_line);

@@ -107,7 +107,8 @@ void write_hdf5(const std::filesystem::path& path, const TestReproduction& run, 
   io::write_hdf5_file(path, [&](const io::Hdf5Node& root) {
     const std::size_t n = run.contact.x.size();
     for (const Column& column : columns(run)) {
-      const io::Hdf5Node dataset = root.write_dataset(column.name, {n}, std::span<const double>(column.data, n), column.units);
+      const io::Hdf5Node dataset =
+          root.write_dataset(column.name, {n}, std::span<const double>(column.data, n), column.units);
       for (const ExtraPressure& extra : run.extras) {
         if (extra.column == column.name && !extra.description.empty()) {
           dataset.write_string_attribute("description", extra.description);

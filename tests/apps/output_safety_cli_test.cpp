@@ -19,10 +19,10 @@
 
 #include <algorithm>
 #include <array>
-#include <csignal>
-#include <cstring>
 #include <chrono>
 #include <cmath>
+#include <csignal>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -56,9 +56,9 @@ void write_map_csv(const fs::path& path) {
 }
 
 std::vector<std::string> solve_map(const std::string& map, const std::string& loads, const std::string& output) {
-  return {"solve",        map,    "--dx",     "1e-6",        "--dy",     "1e-6",   "--boundary",
-          "periodic",     "--E-star", "1e11", "--mean-pressure", loads, "--output", output,
-          "--threads",    "1",    "--quiet"};
+  return {
+      "solve",           map,   "--dx",     "1e-6", "--dy",      "1e-6", "--boundary", "periodic", "--E-star", "1e11",
+      "--mean-pressure", loads, "--output", output, "--threads", "1",    "--quiet"};
 }
 
 std::vector<std::string> names_in(const fs::path& directory) {
@@ -114,8 +114,7 @@ TEST(OutputSafetyCliTest, OutputMayNotReplaceTheHeightMapOrTheConfig) {
     arguments.insert(arguments.begin() + 1, "--height-map");
     const auto run = run_program(arguments, dir.path());
     EXPECT_EQ(run.exit_code, kExitInputError) << run.err;
-    EXPECT_NE(run.err.find("--output sub/../map.csv would overwrite the input --height-map map.csv"),
-              std::string::npos)
+    EXPECT_NE(run.err.find("--output sub/../map.csv would overwrite the input --height-map map.csv"), std::string::npos)
         << run.err;
     EXPECT_EQ(read_text(dir / "map.csv"), map_before);
   }
@@ -177,8 +176,7 @@ TEST(OutputSafetyCliTest, RefusesAFifoOrDeviceAsOutputAndLeavesIt) {
 
 // A child running the program from `directory`, its output discarded;
 // `prepare` runs in the child before exec (async-signal-safe calls only).
-pid_t start_program(const std::vector<std::string>& arguments, const fs::path& directory,
-                    void (*prepare)() = nullptr) {
+pid_t start_program(const std::vector<std::string>& arguments, const fs::path& directory, void (*prepare)() = nullptr) {
   std::vector<std::string> argv_text{HALFSPACE_EXECUTABLE};
   argv_text.insert(argv_text.end(), arguments.begin(), arguments.end());
   std::vector<char*> argv;
@@ -204,8 +202,8 @@ pid_t start_program(const std::vector<std::string>& arguments, const fs::path& d
 // A random surface: its heights barely compress, so writing the file takes
 // long enough to be caught.
 std::vector<std::string> generate_large(const std::string& output) {
-  return {"generate", "--kind", "self-affine", "--grid", "2048x2048", "--size", "1e-3",
-          "--rms-slope", "0.1", "--seed", "3", "--output", output, "--quiet"};
+  return {"generate",    "--kind", "self-affine", "--grid", "1024x1024", "--size", "1e-3",
+          "--rms-slope", "0.1",    "--seed",      "3",      "--output",  output,   "--quiet"};
 }
 
 // Stops the child the moment a temporary file appears in `directory`
@@ -273,13 +271,12 @@ TEST(OutputSafetyCliTest, TerminationWhileWritingLeavesNoTemporary) {
 // deterministically in the middle of the temporary.
 TEST(OutputSafetyCliTest, FileSizeLimitWhileWritingLeavesNoTemporary) {
   const TempDir dir;
-  const pid_t child =
-      start_program({"generate", "--kind", "self-affine", "--grid", "256x256", "--size", "1e-3", "--rms-slope", "0.1",
-                     "--output", "surface.h5", "--quiet"},
-                    dir.path(), [] {
-                      const rlimit limit{65536, 65536};  // far below the ~480 KB file
-                      ::setrlimit(RLIMIT_FSIZE, &limit);
-                    });
+  const pid_t child = start_program({"generate", "--kind", "self-affine", "--grid", "256x256", "--size", "1e-3",
+                                     "--rms-slope", "0.1", "--output", "surface.h5", "--quiet"},
+                                    dir.path(), [] {
+                                      const rlimit limit{65536, 65536};  // far below the ~480 KB file
+                                      ::setrlimit(RLIMIT_FSIZE, &limit);
+                                    });
   ASSERT_GT(child, 0);
   int status = 0;
   ASSERT_EQ(::waitpid(child, &status, 0), child);

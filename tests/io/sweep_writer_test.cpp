@@ -140,10 +140,25 @@ TEST(SweepWriterTest, StepGroupsHaveEveryResultAttributeOfASingleSolve) {
   write_result(dir / "single.h5", grid, height, steps[1].result, metadata);
   write_sweep_result(dir / "sweep.h5", grid, height, steps, metadata);
 
-  const std::set<std::string> file_level{"format", "format_version", "units", "dimension", "nx", "ny", "dx", "dy",
-                                         "boundary", "E_star", "load_mode", "threads", "halfspace_version",
-                                         "command_line", "config", "height_source", "preparation",
-                                         "surface_rms_height", "surface_rms_slope"};
+  const std::set<std::string> file_level{"format",
+                                         "format_version",
+                                         "units",
+                                         "dimension",
+                                         "nx",
+                                         "ny",
+                                         "dx",
+                                         "dy",
+                                         "boundary",
+                                         "E_star",
+                                         "load_mode",
+                                         "threads",
+                                         "halfspace_version",
+                                         "command_line",
+                                         "config",
+                                         "height_source",
+                                         "preparation",
+                                         "surface_rms_height",
+                                         "surface_rms_slope"};
   const test::H5 single = test::open_file(dir / "single.h5");
   std::set<std::string> expected = attribute_names(single.get());
   for (const std::string& name : file_level) expected.erase(name);

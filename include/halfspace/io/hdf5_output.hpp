@@ -38,8 +38,8 @@ class Hdf5Node {
   // holding `values` (as many as the shape's product), with a `units`
   // string attribute unless `units` is empty. Returns the dataset, for more
   // attributes.
-  Hdf5Node write_dataset(std::string_view name, const std::vector<std::size_t>& shape,
-                         std::span<const double> values, std::string_view units) const;
+  Hdf5Node write_dataset(std::string_view name, const std::vector<std::size_t>& shape, std::span<const double> values,
+                         std::string_view units) const;
   Hdf5Node write_dataset(std::string_view name, const std::vector<std::size_t>& shape,
                          std::span<const std::int64_t> values, std::string_view units) const;
   Hdf5Node write_dataset(std::string_view name, const std::vector<std::size_t>& shape,
