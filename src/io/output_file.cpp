@@ -54,7 +54,11 @@ std::string_view kind_of(fs::file_type type) {
 void require_regular_or_missing(const fs::path& shown, const fs::path& where, bool follow) {
   std::error_code error;
   const fs::file_status status = follow ? fs::status(where, error) : fs::symlink_status(where, error);
-  if (error && error != std::errc::no_such_file_or_directory) fail(shown, error.message());
+  // A missing directory, or a file where a directory should be, is named by
+  // the directory check.
+  if (error && error != std::errc::no_such_file_or_directory && error != std::errc::not_a_directory) {
+    fail(shown, error.message());
+  }
   if (!fs::exists(status) || fs::is_regular_file(status)) return;
   const std::string_view kind = kind_of(status.type());
   fail(shown, fmt::format("{} {}; an output must be a regular file or a new name (the finished file is renamed onto "

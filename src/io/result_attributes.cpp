@@ -3,6 +3,7 @@
 // docs/file-format.md.
 #include "halfspace/io/result_attributes.hpp"
 
+#include <algorithm>
 #include <array>
 
 namespace halfspace::io {
@@ -46,8 +47,10 @@ std::span<const ResultAttribute> result_attributes() {
   return kResultAttributes;
 }
 
-void write_result_attributes(const Hdf5Node& node, const SolveResult& result, std::string_view prefix) {
+void write_result_attributes(const Hdf5Node& node, const SolveResult& result, std::string_view prefix,
+                             std::span<const std::string_view> skip) {
   for (const ResultAttribute& attribute : kResultAttributes) {
+    if (std::find(skip.begin(), skip.end(), attribute.name) != skip.end()) continue;
     const std::string name = std::string(prefix) + std::string(attribute.name);
     if (const auto* number = std::get_if<Number>(&attribute.value)) {
       node.write_double_attribute(name, (*number)(result));

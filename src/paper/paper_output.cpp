@@ -39,8 +39,12 @@ std::vector<Column> columns(const TestReproduction& run) {
 // Outcome of one method as root attributes with a common prefix: every
 // result attribute (result_attributes.hpp), plus the contact nodes and the
 // wall time under the name this file has always used (`<prefix>_seconds`).
+// Not `tolerance`: this file's `pk_tolerance` and `lcpquad_tolerance` are
+// the options given to the methods (LCPquad's is its interior-point
+// tolerance, not the one its result is measured against).
 void write_method(const io::Hdf5Node& root, const std::string& prefix, const SolveResult& result) {
-  io::write_result_attributes(root, result, prefix + "_");
+  static constexpr std::string_view kSkip[] = {"tolerance"};
+  io::write_result_attributes(root, result, prefix + "_", kSkip);
   root.write_double_attribute(prefix + "_seconds", result.wall_seconds);
   root.write_int64_attribute(prefix + "_contact_nodes", contact_nodes(result));
 }

@@ -170,7 +170,9 @@ TEST(OutputSafetyCliTest, RefusesAFifoOrDeviceAsOutputAndLeavesIt) {
         << generate.err;
   }
   EXPECT_EQ(fs::symlink_status(dir / "pipe.h5").type(), fs::file_type::fifo);
-  if (kinds.size() == 2) EXPECT_EQ(fs::symlink_status(dir / "device.h5").type(), fs::file_type::character);
+  if (kinds.size() == 2) {
+    EXPECT_EQ(fs::symlink_status(dir / "device.h5").type(), fs::file_type::character);
+  }
   EXPECT_FALSE(has_temporary(dir.path()));
 }
 

@@ -30,8 +30,10 @@ struct ResultAttribute {
 std::span<const ResultAttribute> result_attributes();
 
 // Writes every attribute of result_attributes() on `node`, each name
-// preceded by `prefix` (the paper's files keep one set per method: "pk_").
-void write_result_attributes(const Hdf5Node& node, const SolveResult& result, std::string_view prefix = {});
+// preceded by `prefix` (the paper's files keep one set per method: "pk_"),
+// but those named in `skip` (names a file already uses for another fact).
+void write_result_attributes(const Hdf5Node& node, const SolveResult& result, std::string_view prefix = {},
+                             std::span<const std::string_view> skip = {});
 
 // mean_gap, rms_gap, free_volume (float64) and clusters (int64): the contact
 // statistics of a solve, on a result's root or a sweep step's group.
