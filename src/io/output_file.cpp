@@ -110,8 +110,11 @@ class TemporaryRegistration {
   }
   TemporaryRegistration(const TemporaryRegistration&) = delete;
   TemporaryRegistration& operator=(const TemporaryRegistration&) = delete;
-  ~TemporaryRegistration() {
+  ~TemporaryRegistration() { release(); }
+
+  void release() {
     if (slot_ >= 0) temporaries[static_cast<std::size_t>(slot_)].state.store(kFree, std::memory_order_release);
+    slot_ = -1;
   }
 
  private:
@@ -140,15 +143,24 @@ extern "C" void remove_temporaries_and_reraise(int signal) {
 // The directory entry is not synced: a crash may lose the rename, and so the
 // new file, but never yields a partial one. Removed again on failure.
 void write_temporary(const fs::path& shown, const fs::path& temporary, std::span<const char> bytes) {
-  const int descriptor = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-  if (descriptor < 0 && errno == EEXIST) {
+  const auto refuse_existing = [&] {
     fail(shown, fmt::format("temporary file '{}' already exists (left by an interrupted run?); remove it and retry",
                             temporary.string()));
-  }
+  };
+  // Registered before it is created, so that no signal finds it existing
+  // but unregistered; the name is checked free first, so that a signal in
+  // between removes nothing of anyone else's (the name holds our pid, so
+  // only a leftover of an earlier process with the same pid can be there).
+  struct stat existing {};
+  if (::lstat(temporary.c_str(), &existing) == 0) refuse_existing();
+  TemporaryRegistration registration(temporary);
+  const int descriptor = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
   if (descriptor < 0) {
-    fail(shown, fmt::format("could not create temporary file '{}': {}", temporary.string(), std::strerror(errno)));
+    const int reason = errno;
+    registration.release();
+    if (reason == EEXIST) refuse_existing();
+    fail(shown, fmt::format("could not create temporary file '{}': {}", temporary.string(), std::strerror(reason)));
   }
-  const TemporaryRegistration registration(temporary);
   int error = 0;
   const char* data = bytes.data();
   std::size_t left = bytes.size();
