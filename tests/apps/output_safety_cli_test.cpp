@@ -176,6 +176,20 @@ TEST(OutputSafetyCliTest, RefusesAFifoOrDeviceAsOutputAndLeavesIt) {
   EXPECT_FALSE(has_temporary(dir.path()));
 }
 
+// The wisdom file follows the same rules: a FIFO there is neither read (it
+// is not a regular file) nor replaced when the new plans are saved; the
+// solve itself goes on, since wisdom only saves planning time.
+TEST(OutputSafetyCliTest, WisdomIsNotSavedOverAFifo) {
+  const TempDir dir;
+  ASSERT_EQ(::mkfifo((dir / "wisdom").c_str(), 0600), 0);
+  const auto run = run_program({"solve", "--geometry", "sphere", "--radius", "1e-2", "--grid", "24x20", "--size",
+                                "1e-4", "--E-star", "1e11", "--force", "1", "--output", "out.h5", "--quiet"},
+                               dir.path(), {{"HALFSPACE_FFTW_WISDOM", (dir / "wisdom").string()}});
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(fs::symlink_status(dir / "wisdom").type(), fs::file_type::fifo);
+  EXPECT_EQ(names_in(dir.path()), (std::vector<std::string>{"out.h5", "wisdom"}));
+}
+
 // A child running the program from `directory`, its output discarded;
 // `prepare` runs in the child before exec (async-signal-safe calls only).
 pid_t start_program(const std::vector<std::string>& arguments, const fs::path& directory, void (*prepare)() = nullptr) {
