@@ -15,6 +15,7 @@
 #include "exit_codes.hpp"
 #include "generate_command.hpp"
 #include "halfspace/error.hpp"
+#include "halfspace/io/output_file.hpp"
 #include "halfspace/memory_estimate.hpp"
 #include "halfspace/version.hpp"
 #include "openmp_waiting.hpp"
@@ -31,6 +32,9 @@ int main(int argc, char** argv) {
   // writer's buffers) land in the heap and stay resident: 9 bytes per grid
   // point more peak memory for pk-multilevel at 2048^2.
   mallopt(M_MMAP_THRESHOLD, 1 << 20);
+  // Ctrl-C or a kill while an output is being written removes its temporary
+  // file (docs/usage.md#output-files).
+  halfspace::io::install_output_cleanup_on_signals();
   CLI::App app{"halfspace: frictionless normal contact of an elastic half-space with a rigid rough surface",
                "halfspace"};
   app.set_version_flag("--version", fmt::format("halfspace {} ({})", halfspace::kVersion, halfspace::kGitHash));

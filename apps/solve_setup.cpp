@@ -20,8 +20,11 @@
 #include "activity.hpp"
 #include "grid_options.hpp"
 #include "halfspace/error.hpp"
+#include "halfspace/fft/fft_wisdom.hpp"
 #include "halfspace/geometry/builtin_surface.hpp"
 #include "halfspace/io/height_map_reader.hpp"
+#include "halfspace/io/output_file.hpp"
+#include "halfspace/io/sweep_writer.hpp"
 #include "halfspace/material.hpp"
 #include "halfspace/memory_estimate.hpp"
 #include "halfspace/surface/padding.hpp"
@@ -263,6 +266,58 @@ fs::path output_from(const SolveOptions& o) {
   return path;
 }
 
+// Every file the run writes must be writable (io::check_output_path: a
+// regular file or a new name, never a device, FIFO or directory) and none
+// may replace one of the run's inputs or another of its outputs: the sweep's
+// CSV goes beside the result with the extension .csv, and measured FFT plans
+// save the wisdom file. Checked before anything is read, solved or written
+// (docs/usage.md#output-files).
+void check_outputs_against_inputs(const SolveOptions& o, const fs::path& output, bool sweep, FftPlanning planning) {
+  struct File {
+    std::string what;
+    fs::path path;
+  };
+  std::vector<File> outputs{{o.describe("output"), output}};
+  if (sweep) {
+    outputs.push_back({fmt::format("the sweep's CSV table {} (the {} name with .csv)",
+                                   io::sweep_csv_path(output).string(), o.name("output")),
+                       io::sweep_csv_path(output)});
+  }
+  if (planning != FftPlanning::estimate) {
+    if (const std::optional<fs::path> wisdom = fft_wisdom_path()) {
+      outputs.push_back({fmt::format("the FFTW wisdom file {}", wisdom->string()), *wisdom});
+    }
+  }
+  std::vector<File> inputs;
+  if (o.height_map) inputs.push_back({o.describe("height-map"), *o.height_map});
+  if (o.config) inputs.push_back({fmt::format("--config {}", *o.config), *o.config});
+
+  // Not the wisdom file: its directory is created on the first save, and a
+  // wisdom file that cannot be written is skipped silently at that time.
+  for (std::size_t k = 0; k < (sweep ? 2U : 1U); ++k) {
+    try {
+      io::check_output_path(outputs[k].path);
+    } catch (const FileError& error) {
+      throw FileError(fmt::format("{} is invalid: {}", outputs[k].what, error.what()));
+    }
+  }
+  for (std::size_t k = 0; k < outputs.size(); ++k) {
+    for (const File& input : inputs) {
+      if (io::same_file(outputs[k].path, input.path)) {
+        throw InputError(
+            fmt::format("{} would overwrite the input {}: both are the file '{}'; choose another output name",
+                        outputs[k].what, input.what, input.path.string()));
+      }
+    }
+    for (std::size_t m = 0; m < k; ++m) {
+      if (io::same_file(outputs[k].path, outputs[m].path)) {
+        throw InputError(fmt::format("{} and {} are the same file '{}'; choose another output name", outputs[m].what,
+                                     outputs[k].what, outputs[k].path.string()));
+      }
+    }
+  }
+}
+
 struct Surface {
   Grid grid;
   Eigen::ArrayXd heights;
@@ -464,6 +519,7 @@ SolveSetup make_solve_setup(const SolveOptions& options) {
     require_memory(fmt::format("{}: {}", request, solve_description(grid, solver, load_values.size())),
                    solve_memory_estimate(grid, solver, load_values.size()), limit);
   };
+  check_outputs_against_inputs(options, output, load_values.size() > 1, solver.fft_planning);
 
   Surface surface = options.geometry ? builtin_surface(options, boundary, check_grid)
                                      : height_map_surface(options, boundary, check_grid);

@@ -11,7 +11,6 @@
 
 #include <fftw3.h>
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include <cstdlib>
 #include <fstream>
@@ -22,6 +21,8 @@
 #include <utility>
 
 #include "fftw_planner.hpp"
+#include "halfspace/error.hpp"
+#include "halfspace/io/output_file.hpp"
 
 namespace halfspace {
 namespace {
@@ -104,10 +105,10 @@ ReadOutcome import_locked(const fs::path& path, std::string* problem) {
   return ReadOutcome::loaded;
 }
 
-// The lock held. Not synced: a crash may leave an old or, rarely, an empty
-// file under the final name, both of which merely cost a replanning.
+// The lock held. Written like every output (io/output_file.hpp): under a
+// temporary name and renamed, so runs side by side never see a partial file,
+// and never onto a device, FIFO or directory.
 bool export_locked(const fs::path& path, std::string* problem) {
-  const std::string shown = path.string();
   const std::string wisdom = exported_wisdom();
   if (wisdom.empty()) {
     set_problem(problem, "FFTW could not export its wisdom");
@@ -122,24 +123,10 @@ bool export_locked(const fs::path& path, std::string* problem) {
       return false;
     }
   }
-  fs::path temporary = path;
-  temporary += fmt::format(".tmp-{}", ::getpid());
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out << wisdom;
-    out.close();
-    if (!out) {
-      fs::remove(temporary, error);
-      set_problem(problem, fmt::format("cannot write wisdom file '{}'", temporary.string()));
-      return false;
-    }
-  }
-  fs::rename(temporary, path, error);
-  if (error) {
-    std::error_code ignored;
-    fs::remove(temporary, ignored);
-    set_problem(problem, fmt::format("cannot rename '{}' onto wisdom file '{}': {}", temporary.string(), shown,
-                                     error.message()));
+  try {
+    io::write_output_file(path, wisdom);
+  } catch (const FileError& failure) {
+    set_problem(problem, fmt::format("wisdom not saved: {}", failure.what()));
     return false;
   }
   return true;

@@ -1,12 +1,11 @@
-// Height-map output with the result writer's conventions (hdf5_writing.hpp).
+// Height-map output with the conventions of every HDF5 output (hdf5_output.hpp).
 #include "halfspace/io/height_map_writer.hpp"
 
 #include <fmt/format.h>
-#include <hdf5.h>
 
 #include "halfspace/error.hpp"
+#include "halfspace/io/hdf5_output.hpp"
 #include "halfspace/version.hpp"
-#include "hdf5_writing.hpp"
 
 namespace halfspace::io {
 
@@ -16,26 +15,23 @@ void write_height_map(const std::filesystem::path& path, const Grid& grid, std::
     throw InputError(fmt::format("write_height_map: {} heights for a grid of {} cells ({})", heights.size(),
                                  grid.size(), grid.shape_string()));
   }
-  using namespace detail;
-  write_file_atomically(path, [&](hid_t file) {
-    const std::vector<hsize_t> shape =
-        grid.dimension() == 1 ? std::vector<hsize_t>{grid.nx()} : std::vector<hsize_t>{grid.ny(), grid.nx()};
-    write_array_dataset(file, "/height", shape, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, heights.data(), "m");
-    write_double_attribute(file, "dx", grid.dx());
-    write_double_attribute(file, "dy", grid.dimension() == 1 ? 0.0 : grid.dy());
-    write_int64_attribute(file, "nx", static_cast<std::int64_t>(grid.nx()));
-    write_int64_attribute(file, "ny", static_cast<std::int64_t>(grid.ny()));
-    write_string_attribute(file, "unit", "m");
-    write_string_attribute(
-        file, "layout",
-        grid.dimension() == 1 ? "height[i] = h(x = i*dx)" : "height[j][i] = h(x = i*dx, y = j*dy), shape (ny, nx)");
-    write_int64_attribute(file, "periodic", metadata.periodic ? 1 : 0);
-    write_string_attribute(file, "source", metadata.source);
-    write_string_attribute(file, "command_line", metadata.command_line);
-    write_string_attribute(file, "halfspace_version", fmt::format("{} ({})", kVersion, kGitHash));
-    for (const auto& [name, value] : metadata.numbers) write_double_attribute(file, name.c_str(), value);
-    for (const auto& [name, value] : metadata.integers) write_int64_attribute(file, name.c_str(), value);
-    for (const auto& [name, value] : metadata.strings) write_string_attribute(file, name.c_str(), value);
+  write_hdf5_file(path, [&](const Hdf5Node& root) {
+    root.write_dataset("height", field_shape(grid), heights, "m");
+    root.write_double_attribute("dx", grid.dx());
+    root.write_double_attribute("dy", grid.dimension() == 1 ? 0.0 : grid.dy());
+    root.write_int64_attribute("nx", static_cast<std::int64_t>(grid.nx()));
+    root.write_int64_attribute("ny", static_cast<std::int64_t>(grid.ny()));
+    root.write_string_attribute("unit", "m");
+    root.write_string_attribute("layout", grid.dimension() == 1
+                                              ? "height[i] = h(x = i*dx)"
+                                              : "height[j][i] = h(x = i*dx, y = j*dy), shape (ny, nx)");
+    root.write_int64_attribute("periodic", metadata.periodic ? 1 : 0);
+    root.write_string_attribute("source", metadata.source);
+    root.write_string_attribute("command_line", metadata.command_line);
+    root.write_string_attribute("halfspace_version", fmt::format("{} ({})", kVersion, kGitHash));
+    for (const auto& [name, value] : metadata.numbers) root.write_double_attribute(name, value);
+    for (const auto& [name, value] : metadata.integers) root.write_int64_attribute(name, value);
+    for (const auto& [name, value] : metadata.strings) root.write_string_attribute(name, value);
   });
 }
 

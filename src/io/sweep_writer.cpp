@@ -1,9 +1,9 @@
 // Writes sweep results (layout in docs/file-format.md#sweep-results) with the
-// conventions of the single-result writer, shared through hdf5_writing.hpp.
+// conventions of the single-result writer: the same fields per step, and the
+// result attributes from the one table (result_attributes.hpp).
 #include "halfspace/io/sweep_writer.hpp"
 
 #include <fmt/format.h>
-#include <hdf5.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -11,17 +11,13 @@
 #include <vector>
 
 #include "halfspace/error.hpp"
-#include "hdf5_handle.hpp"
+#include "halfspace/io/hdf5_output.hpp"
+#include "halfspace/io/output_file.hpp"
+#include "halfspace/io/result_attributes.hpp"
 #include "hdf5_writing.hpp"
 
 namespace halfspace::io {
 namespace {
-
-using Group = detail::Handle<H5Gclose>;
-using detail::write_array_dataset;
-using detail::write_double_attribute;
-using detail::write_int64_attribute;
-using detail::write_string_attribute;
 
 void check_field(std::string_view field, std::size_t step, std::size_t size, const Grid& grid) {
   if (size != grid.size()) {
@@ -29,12 +25,6 @@ void check_field(std::string_view field, std::size_t step, std::size_t size, con
         fmt::format("write_sweep_result: field '{}' of step {} has {} values but the grid has {} cells ({})", field,
                     step, size, grid.size(), grid.shape_string()));
   }
-}
-
-Group create_group(hid_t location, const std::string& name) {
-  Group group(H5Gcreate2(location, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
-  if (!group.valid()) throw FileError(fmt::format("could not create group '{}': {}", name, detail::error_reason()));
-  return group;
 }
 
 // "000", "001", ...: zero-padded so that names sort in step order.
@@ -55,60 +45,26 @@ std::string column_unit(const solvers::SummaryColumn& column, const Grid& grid, 
   return std::string(column.unit);
 }
 
-void write_step(hid_t steps_group, const std::string& name, const Grid& grid, const solvers::SweepStep& step) {
-  const Group group = create_group(steps_group, name);
-  const hid_t g = group.get();
-  const SolveResult& r = step.result;
-  const std::vector<hsize_t> shape =
-      grid.dimension() == 1 ? std::vector<hsize_t>{grid.nx()} : std::vector<hsize_t>{grid.ny(), grid.nx()};
-  write_array_dataset(g, "pressure", shape, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, r.pressure.data(), "Pa");
-  write_array_dataset(g, "gap", shape, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, r.gap.data(), "m");
-  write_array_dataset(g, "displacement", shape, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, r.displacement.data(), "m");
-  std::vector<std::uint8_t> contact(grid.size());
-  for (std::size_t k = 0; k < contact.size(); ++k) contact[k] = r.pressure[static_cast<Eigen::Index>(k)] > 0.0 ? 1 : 0;
-  write_array_dataset(g, "contact", shape, H5T_STD_U8LE, H5T_NATIVE_UINT8, contact.data(), "1");
-  const std::vector<hsize_t> history{r.residual_history.size()};
-  write_array_dataset(g, "residual_history", history, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, r.residual_history.data(),
-                      nullptr);
-  const std::vector<std::int64_t>& sizes = step.statistics.cluster_sizes;
-  write_array_dataset(g, "cluster_sizes", {sizes.size()}, H5T_STD_I64LE, H5T_NATIVE_INT64, sizes.data(), "cells");
-
-  write_double_attribute(g, "load", step.loading.value);
-  write_double_attribute(g, "total_force", r.total_force);
-  write_double_attribute(g, "mean_pressure", r.mean_pressure);
-  write_double_attribute(g, "approach", r.approach);
-  write_double_attribute(g, "contact_fraction", r.contact_fraction);
-  write_double_attribute(g, "max_pressure", r.max_pressure);
-  write_double_attribute(g, "mean_gap", step.statistics.mean_gap);
-  write_double_attribute(g, "rms_gap", step.statistics.rms_gap);
-  write_double_attribute(g, "free_volume", step.statistics.free_volume);
-  write_int64_attribute(g, "clusters", step.statistics.clusters());
-  write_string_attribute(g, "status", to_string(r.status));
-  write_string_attribute(g, "message", r.message);
-  write_int64_attribute(g, "converged", r.converged() ? 1 : 0);
-  write_int64_attribute(g, "iterations", r.iterations);
-  write_int64_attribute(g, "operator_applications", r.operator_applications);
-  write_int64_attribute(g, "preconditioner_applications", r.preconditioner_applications);
-  write_int64_attribute(g, "coarse_levels", r.coarse.levels);
-  write_int64_attribute(g, "coarse_iterations", r.coarse.iterations);
-  write_double_attribute(g, "coarse_operator_work", r.coarse.operator_work);
-  write_double_attribute(g, "coarse_preconditioner_work", r.coarse.preconditioner_work);
-  write_double_attribute(g, "residual", r.residual);
-  write_double_attribute(g, "tolerance", r.tolerance);
-  write_double_attribute(g, "solve_seconds", r.wall_seconds);
-  write_int64_attribute(g, "warm_started", step.warm_started ? 1 : 0);
+void write_step(const Hdf5Node& steps_group, const std::string& name, const Grid& grid,
+                const solvers::SweepStep& step) {
+  const Hdf5Node group = steps_group.create_group(name);
+  write_result_fields(group, grid, step.result);
+  group.write_dataset("cluster_sizes", {step.statistics.cluster_sizes.size()},
+                      std::span<const std::int64_t>(step.statistics.cluster_sizes), "cells");
+  group.write_double_attribute("load", step.loading.value);
+  write_result_attributes(group, step.result);
+  write_contact_statistics_attributes(group, step.statistics);
+  group.write_int64_attribute("warm_started", step.warm_started ? 1 : 0);
 }
 
-void write_summary_table(hid_t root, const Grid& grid, std::span<const solvers::SweepStep> steps,
+void write_summary_table(const Hdf5Node& root, const Grid& grid, std::span<const solvers::SweepStep> steps,
                          std::string_view load_mode) {
-  const Group table = create_group(root, "sweep");
+  const Hdf5Node table = root.create_group("sweep");
   for (const solvers::SummaryColumn& column : solvers::summary_columns()) {
     std::vector<double> values;
     for (const solvers::SweepStep& step : steps) values.push_back(column.value(step));
-    const std::string name(column.name);
     const std::string unit = column_unit(column, grid, load_mode);
-    write_array_dataset(table.get(), name.c_str(), {values.size()}, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, values.data(),
-                        unit.empty() ? "1" : unit.c_str());
+    table.write_dataset(column.name, {values.size()}, std::span<const double>(values), unit.empty() ? "1" : unit);
   }
 }
 
@@ -127,18 +83,17 @@ void write_sweep_result(const std::filesystem::path& path, const Grid& grid, std
   ResultMetadata root_metadata = metadata;
   root_metadata.contact_statistics = steps.back().statistics;
 
-  detail::write_file_atomically(path, [&](hid_t file) {
-    write_array_dataset(
-        file, "/height",
-        grid.dimension() == 1 ? std::vector<hsize_t>{grid.nx()} : std::vector<hsize_t>{grid.ny(), grid.nx()},
-        H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, height.data(), "m");
-    const Group steps_group = create_group(file, "steps");
-    for (std::size_t k = 0; k < steps.size(); ++k) {
-      write_step(steps_group.get(), step_name(k, steps.size()), grid, steps[k]);
+  write_hdf5_file(path, [&](const Hdf5Node& root) {
+    root.write_dataset("height", field_shape(grid), height, "m");
+    {
+      const Hdf5Node steps_group = root.create_group("steps");
+      for (std::size_t k = 0; k < steps.size(); ++k) {
+        write_step(steps_group, step_name(k, steps.size()), grid, steps[k]);
+      }
     }
-    write_summary_table(file, grid, steps, metadata.load_mode);
-    detail::write_result_attributes(file, grid, steps.back().result, root_metadata);
-    write_int64_attribute(file, "sweep_steps", static_cast<std::int64_t>(steps.size()));
+    write_summary_table(root, grid, steps, metadata.load_mode);
+    write_result_root_attributes(root, grid, steps.back().result, root_metadata);
+    root.write_int64_attribute("sweep_steps", static_cast<std::int64_t>(steps.size()));
   });
 }
 
@@ -157,7 +112,7 @@ void write_sweep_csv(const std::filesystem::path& path, std::span<const solvers:
     }
     text += '\n';
   }
-  detail::write_bytes_atomically(path, std::vector<char>(text.begin(), text.end()));
+  write_output_file(path, text);
 }
 
 std::filesystem::path sweep_csv_path(const std::filesystem::path& result_path) {

@@ -3,7 +3,10 @@
 #include "halfspace/io/height_map_writer.hpp"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
+#include <filesystem>
+#include <string>
 #include <vector>
 
 #include "halfspace/error.hpp"
@@ -51,6 +54,24 @@ TEST(HeightMapWriterTest, RoundTripsThroughTheReader) {
 
   EXPECT_THROW(write_height_map(dir / "bad.h5", line, std::vector<double>{1, 2}, HeightMapMetadata{}), InputError);
   EXPECT_FALSE(std::filesystem::exists(dir / "bad.h5"));
+}
+
+// A FIFO at the output path (as a device node would be, as root) is refused
+// by name and left as it is, not replaced by the renamed file.
+TEST(HeightMapWriterTest, RefusesAFifoAtTheOutputPathAndLeavesIt) {
+  const TempDir dir;
+  const std::filesystem::path pipe = dir / "map.h5";
+  ASSERT_EQ(::mkfifo(pipe.c_str(), 0600), 0);
+  const Grid grid = Grid::line(4, 1e-6, Boundary::free);
+  try {
+    write_height_map(pipe, grid, std::vector<double>(4, 0.0), HeightMapMetadata{});
+    ADD_FAILURE() << "no FileError";
+  } catch (const FileError& error) {
+    EXPECT_NE(std::string(error.what()).find("'" + pipe.string() + "': it is a FIFO"), std::string::npos)
+        << error.what();
+  }
+  EXPECT_EQ(std::filesystem::symlink_status(pipe).type(), std::filesystem::file_type::fifo);
+  EXPECT_EQ(dir.entries(), std::vector<std::string>{"map.h5"});
 }
 
 }  // namespace

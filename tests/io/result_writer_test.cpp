@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <hdf5.h>
 #include <sys/resource.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -425,6 +426,40 @@ TEST(ResultWriterTest, RemovesTemporaryFileWhenTheDiskWriteFails) {
   EXPECT_NE(message.find("cannot write output '" + path.string() + "'"), std::string::npos) << message;
   EXPECT_NE(message.find(std::strerror(EFBIG)), std::string::npos) << message;
   EXPECT_TRUE(dir.entries().empty());
+}
+
+// What stands at the output path must be a regular file: a FIFO (like a
+// device node, which root's rename would replace by a regular file) is
+// refused before anything is written, and stays.
+TEST(ResultWriterTest, RefusesAFifoAtTheOutputPathAndLeavesIt) {
+  const TempDir dir;
+  const fs::path pipe = dir / "out.h5";
+  ASSERT_EQ(::mkfifo(pipe.c_str(), 0600), 0);
+  const Grid grid = Grid::line(8, 1e-6, Boundary::free);
+  try {
+    write_result(pipe, grid, make_height(grid), make_result(grid, 1), make_metadata());
+    ADD_FAILURE() << "no FileError";
+  } catch (const FileError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("cannot write output '" + pipe.string() + "': it is a FIFO"), std::string::npos) << message;
+  }
+  EXPECT_EQ(fs::symlink_status(pipe).type(), fs::file_type::fifo);
+  EXPECT_EQ(dir.entries(), std::vector<std::string>{"out.h5"});
+}
+
+// A symbolic link at the output path is followed: the result replaces the
+// file it names, and the link stays.
+TEST(ResultWriterTest, WritesThroughASymbolicLink) {
+  const TempDir dir;
+  std::ofstream(dir / "target.h5") << "an old result";
+  fs::create_symlink("target.h5", dir / "latest.h5");
+  const Grid grid = Grid::line(16, 1e-6, Boundary::free);
+  const SolveResult result = make_result(grid, 3);
+  write_result(dir / "latest.h5", grid, make_height(grid), result, make_metadata());
+  EXPECT_TRUE(fs::is_symlink(fs::symlink_status(dir / "latest.h5")));
+  const auto file = test::open_file(dir / "target.h5");
+  EXPECT_EQ(test::read_dataset<double>(file.get(), "/pressure", H5T_NATIVE_DOUBLE), as_vector(result.pressure));
+  EXPECT_EQ(dir.entries(), (std::vector<std::string>{"latest.h5", "target.h5"}));
 }
 
 TEST(ResultWriterTest, RejectsFieldOfWrongSizeNamingIt) {

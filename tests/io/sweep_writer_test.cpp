@@ -7,10 +7,12 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <set>
 #include <string>
 #include <vector>
 
 #include "halfspace/error.hpp"
+#include "halfspace/io/result_attributes.hpp"
 #include "io/hdf5_test_support.hpp"
 
 namespace halfspace::io {
@@ -108,6 +110,74 @@ TEST(SweepWriterTest, RejectsBadInputWithoutWriting) {
   EXPECT_TRUE(dir.entries().empty());
   EXPECT_EQ(sweep_csv_path("run/sweep.h5"), std::filesystem::path("run/sweep.csv"));
   EXPECT_EQ(sweep_csv_path("result"), std::filesystem::path("result.csv"));
+}
+
+// The names of every attribute on `location`, read with the HDF5 C API.
+std::set<std::string> attribute_names(hid_t location) {
+  std::set<std::string> names;
+  const auto collect = [](hid_t, const char* name, const H5A_info_t*, void* data) -> herr_t {
+    static_cast<std::set<std::string>*>(data)->insert(name);
+    return 0;
+  };
+  test::check(H5Aiterate2(location, H5_INDEX_NAME, H5_ITER_NATIVE, nullptr, collect, &names), "iterate attributes");
+  return names;
+}
+
+// Every attribute of a single result, but those describing the whole file
+// (format, grid, material, provenance, the surface), is on each sweep step
+// too: the writers take them from one table and cannot drift apart.
+TEST(SweepWriterTest, StepGroupsHaveEveryResultAttributeOfASingleSolve) {
+  const TempDir dir;
+  const Grid grid = Grid::line(6, 1e-6, Boundary::free);
+  const std::vector<double> height(6, 0.0);
+  std::vector<solvers::SweepStep> steps = make_steps(grid, 2);
+  steps[1].result.deflation.block = 8;
+  steps[1].result.deflation.deflated_iterations = 3;
+  steps[1].result.deflation.fast_rate = 0.25;
+  ResultMetadata metadata;
+  metadata.load_mode = "force";
+  metadata.contact_statistics = steps[1].statistics;
+  write_result(dir / "single.h5", grid, height, steps[1].result, metadata);
+  write_sweep_result(dir / "sweep.h5", grid, height, steps, metadata);
+
+  const std::set<std::string> file_level{"format",
+                                         "format_version",
+                                         "units",
+                                         "dimension",
+                                         "nx",
+                                         "ny",
+                                         "dx",
+                                         "dy",
+                                         "boundary",
+                                         "E_star",
+                                         "load_mode",
+                                         "threads",
+                                         "halfspace_version",
+                                         "command_line",
+                                         "config",
+                                         "height_source",
+                                         "preparation",
+                                         "surface_rms_height",
+                                         "surface_rms_slope"};
+  const test::H5 single = test::open_file(dir / "single.h5");
+  std::set<std::string> expected = attribute_names(single.get());
+  for (const std::string& name : file_level) expected.erase(name);
+  ASSERT_GE(expected.size(), result_attributes().size() + 4) << "result attributes and contact statistics";
+  for (const ResultAttribute& attribute : result_attributes()) {
+    EXPECT_TRUE(expected.contains(std::string(attribute.name))) << attribute.name;
+  }
+
+  const test::H5 sweep = test::open_file(dir / "sweep.h5");
+  for (const char* step : {"/steps/000", "/steps/001"}) {
+    const test::H5 group(H5Gopen2(sweep.get(), step, H5P_DEFAULT), H5Gclose, step);
+    const std::set<std::string> present = attribute_names(group.get());
+    for (const std::string& name : expected) EXPECT_TRUE(present.contains(name)) << step << " lacks " << name;
+  }
+  const test::H5 last(H5Gopen2(sweep.get(), "/steps/001", H5P_DEFAULT), H5Gclose, "/steps/001");
+  EXPECT_EQ(test::read_int64_attribute(last.get(), "deflation_block"), 8);
+  EXPECT_EQ(test::read_int64_attribute(last.get(), "deflated_iterations"), 3);
+  EXPECT_EQ(test::read_double_attribute(last.get(), "undeflated_rate"), 0.25);
+  EXPECT_EQ(test::read_string_attribute(last.get(), "solver"), "test");
 }
 
 }  // namespace

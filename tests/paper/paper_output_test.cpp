@@ -2,6 +2,7 @@
 // columns, values round-trip exactly, and the summary table lists each test.
 #include "halfspace/paper/paper_output.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "halfspace/error.hpp"
+#include "halfspace/io/result_attributes.hpp"
 #include "io/hdf5_test_support.hpp"
 
 namespace halfspace {
@@ -68,6 +70,29 @@ TEST(PaperOutputTest, HdfFileHoldsTheSameDataAndTheOutcomes) {
   for (const char* name : {"x", "gap", "p_lcpquad", "p_pk", "p_hertz"}) {
     EXPECT_EQ(test::dataset_shape(file.get(), name), std::vector<hsize_t>{7}) << name;
   }
+}
+
+// Each method's outcome comes from the one table of result attributes, so
+// the paper's files record what a result file records (but `tolerance`,
+// whose name the file uses for the options).
+TEST(PaperOutputTest, EachMethodHasEveryResultAttribute) {
+  const TempDir dir;
+  const paper::TestReproduction run = small_run();
+  paper::write_hdf5(dir / "test4.h5", run, {});
+  const test::H5 file = test::open_file(dir / "test4.h5");
+  for (const char* method : {"lemke", "lcpquad", "pk"}) {
+    for (const io::ResultAttribute& attribute : io::result_attributes()) {
+      // <method>_tolerance is the option given to the method (docs/paper.md).
+      if (attribute.name == "tolerance") continue;
+      const std::string name = fmt::format("{}_{}", method, attribute.name);
+      EXPECT_GT(H5Aexists(file.get(), name.c_str()), 0) << name;
+    }
+  }
+  EXPECT_EQ(test::read_int64_attribute(file.get(), "pk_iterations"), run.pk.iterations);
+  EXPECT_EQ(test::read_int64_attribute(file.get(), "pk_operator_applications"), run.pk.operator_applications);
+  EXPECT_EQ(test::read_double_attribute(file.get(), "pk_seconds"), run.pk.wall_seconds) << "the name kept";
+  EXPECT_EQ(test::read_double_attribute(file.get(), "pk_solve_seconds"), run.pk.wall_seconds);
+  EXPECT_EQ(test::read_string_attribute(file.get(), "lemke_solver"), run.lemke.solver);
 }
 
 TEST(PaperOutputTest, SummaryTableHasOneRowPerTest) {

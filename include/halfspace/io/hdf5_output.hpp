@@ -1,0 +1,70 @@
+// The conventions of every HDF5 file halfspace writes (docs/file-format.md),
+// in one place for all writers (results, sweeps, height maps, the paper's
+// tables): numbers as scalar float64 or int64 little-endian attributes;
+// strings as variable-length UTF-8 (invalid bytes and NULs replaced by
+// U+FFFD); datasets with a `units` attribute, contiguous up to 65536 elements
+// and above that chunked in whole rows with shuffle and deflate; the file
+// assembled in memory and written atomically through write_output_file.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "halfspace/grid.hpp"
+
+namespace halfspace::io {
+
+// A group or dataset of a file that write_hdf5_file is building; valid only
+// inside its fill callback. Every method throws FileError with the reason
+// (write_hdf5_file adds the path).
+class Hdf5Node {
+ public:
+  Hdf5Node(Hdf5Node&& other) noexcept;
+  Hdf5Node& operator=(Hdf5Node&& other) noexcept;
+  Hdf5Node(const Hdf5Node&) = delete;
+  Hdf5Node& operator=(const Hdf5Node&) = delete;
+  ~Hdf5Node();
+
+  void write_double_attribute(std::string_view name, double value) const;
+  void write_int64_attribute(std::string_view name, std::int64_t value) const;
+  void write_string_attribute(std::string_view name, std::string_view value) const;
+
+  // A dataset of `shape` (row-major; a zero extent gives an empty dataset)
+  // holding `values` (as many as the shape's product), with a `units`
+  // string attribute unless `units` is empty. Returns the dataset, for more
+  // attributes.
+  Hdf5Node write_dataset(std::string_view name, const std::vector<std::size_t>& shape, std::span<const double> values,
+                         std::string_view units) const;
+  Hdf5Node write_dataset(std::string_view name, const std::vector<std::size_t>& shape,
+                         std::span<const std::int64_t> values, std::string_view units) const;
+  Hdf5Node write_dataset(std::string_view name, const std::vector<std::size_t>& shape,
+                         std::span<const std::uint8_t> values, std::string_view units) const;
+
+  Hdf5Node create_group(std::string_view name) const;
+
+ private:
+  friend void write_hdf5_file(const std::filesystem::path&, const std::function<void(const Hdf5Node&)>&);
+  explicit Hdf5Node(std::int64_t id) : id_(id) {}  // an HDF5 object id (hid_t), owned
+  std::int64_t id_ = -1;
+};
+
+// Builds the file in memory by calling fill(root) and writes it to `path`
+// with write_output_file (checked path, temporary name, fsync, rename).
+// Throws FileError "cannot write output '<path>': <reason>"; no partial file
+// is left behind.
+//
+// Why in memory: HDF5 1.10 cannot recover from an I/O error (a full disk)
+// while closing a file on disk; in memory it never meets one, and ours are
+// reported like any other. The cost is about twice the file's size in
+// memory while writing.
+void write_hdf5_file(const std::filesystem::path& path, const std::function<void(const Hdf5Node& root)>& fill);
+
+// The shape of a field dataset on `grid`: (nx) in 1D, (ny, nx) in 2D.
+std::vector<std::size_t> field_shape(const Grid& grid);
+
+}  // namespace halfspace::io

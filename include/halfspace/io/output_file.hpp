@@ -1,0 +1,53 @@
+// Every file halfspace writes goes through here: the path rules, the atomic
+// write (temporary file beside the target, fsync, rename) and the cleanup of
+// temporaries when the program is interrupted (docs/usage.md#output-files).
+//
+// Rules. The output path must name a regular file or nothing: a directory,
+// device, FIFO or socket there is refused, never replaced. A symbolic link is
+// followed: the temporary is written beside the link's final target and
+// renamed onto the target, so the link stays and the file it points to gets
+// the new contents.
+#pragma once
+
+#include <filesystem>
+#include <span>
+
+namespace halfspace::io {
+
+// Checks that `path` can receive an output file: the name is not empty and
+// names a file, the (link-resolved) target is a regular file or does not
+// exist, and its directory exists and is writable. Throws FileError
+// "cannot write output '<path>': <reason>", naming what is in the way (for
+// example "it is a character device"). Called again by write_output_file, so
+// an early call only moves the refusal before a long computation.
+void check_output_path(const std::filesystem::path& path);
+
+// Where the bytes written to `path` end up: `path` itself, or the final
+// target of the chain of symbolic links at `path` (which may not exist yet).
+// Throws FileError for a loop of links.
+std::filesystem::path output_target(const std::filesystem::path& path);
+
+// Whether writing `output` would replace the file at `other` (an input or
+// another output of the same run): the same path after resolving symbolic
+// links, "..", and relative names, or the same existing file under another
+// name (a hard link).
+bool same_file(const std::filesystem::path& output, const std::filesystem::path& other);
+
+// Writes `bytes` to `path` atomically: checks the path (as above), creates
+// `<target>.tmp-<pid>` exclusively beside the target, writes and fsyncs it,
+// and renames it onto the target. A reader sees the old file or the complete
+// new one, never a partial file. Throws FileError "cannot write output
+// '<path>': <reason>"; on failure the temporary is removed and an existing
+// file at `path` is left untouched.
+void write_output_file(const std::filesystem::path& path, std::span<const char> bytes);
+
+// Installs handlers for SIGINT, SIGTERM, SIGHUP and SIGXFSZ that remove the
+// temporaries of writes in progress and then end the process by the same
+// signal with its default action (exit status and core dumps as without the
+// handler). Signals whose disposition is not the default (ignored by the
+// shell for background jobs, or handled by the application) are left alone.
+// SIGKILL cannot be handled: it may leave a `<name>.tmp-<pid>` file behind.
+// Call once, early, from the program's main thread.
+void install_output_cleanup_on_signals();
+
+}  // namespace halfspace::io

@@ -1,0 +1,42 @@
+// The one table of a solve's result attributes: name, unit and how to get
+// the value from a SolveResult. Every writer takes its attributes from here
+// (the single result's root, each sweep step's group, each method of the
+// paper's files), so a new field of SolveResult is one line in
+// src/io/result_attributes.cpp and appears in every file.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+#include <variant>
+
+#include "halfspace/io/hdf5_output.hpp"
+#include "halfspace/solvers/solve_result.hpp"
+#include "halfspace/surface/statistics.hpp"
+
+namespace halfspace::io {
+
+struct ResultAttribute {
+  std::string_view name;  // the HDF5 attribute name (docs/file-format.md#root-attributes)
+  std::string_view unit;  // SI unit in words; empty for counts, ratios and text
+  // Stored as float64, int64 or a variable-length UTF-8 string.
+  std::variant<double (*)(const SolveResult&), std::int64_t (*)(const SolveResult&),
+               std::string (*)(const SolveResult&)>
+      value;
+};
+
+// Every attribute of a SolveResult, in the order they are written.
+std::span<const ResultAttribute> result_attributes();
+
+// Writes every attribute of result_attributes() on `node`, each name
+// preceded by `prefix` (the paper's files keep one set per method: "pk_"),
+// but those named in `skip` (names a file already uses for another fact).
+void write_result_attributes(const Hdf5Node& node, const SolveResult& result, std::string_view prefix = {},
+                             std::span<const std::string_view> skip = {});
+
+// mean_gap, rms_gap, free_volume (float64) and clusters (int64): the contact
+// statistics of a solve, on a result's root or a sweep step's group.
+void write_contact_statistics_attributes(const Hdf5Node& node, const surface::ContactStatistics& statistics);
+
+}  // namespace halfspace::io

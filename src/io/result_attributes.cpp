@@ -1,0 +1,72 @@
+// The result attributes table (result_attributes.hpp). Adding a field of
+// SolveResult to every output file is one line below, plus its row in
+// docs/file-format.md.
+#include "halfspace/io/result_attributes.hpp"
+
+#include <algorithm>
+#include <array>
+
+namespace halfspace::io {
+namespace {
+
+using Number = double (*)(const SolveResult&);
+using Integer = std::int64_t (*)(const SolveResult&);
+using Text = std::string (*)(const SolveResult&);
+
+const std::array<ResultAttribute, 23> kResultAttributes{{
+    {"total_force", "N (N/m in 1D)", Number{[](const SolveResult& r) { return r.total_force; }}},
+    {"mean_pressure", "Pa", Number{[](const SolveResult& r) { return r.mean_pressure; }}},
+    {"approach", "m", Number{[](const SolveResult& r) { return r.approach; }}},
+    {"contact_fraction", "", Number{[](const SolveResult& r) { return r.contact_fraction; }}},
+    {"max_pressure", "Pa", Number{[](const SolveResult& r) { return r.max_pressure; }}},
+    {"solver", "", Text{[](const SolveResult& r) { return r.solver; }}},
+    {"status", "", Text{[](const SolveResult& r) { return std::string(to_string(r.status)); }}},
+    {"message", "", Text{[](const SolveResult& r) { return r.message; }}},
+    {"converged", "", Integer{[](const SolveResult& r) { return std::int64_t{r.converged() ? 1 : 0}; }}},
+    {"iterations", "", Integer{[](const SolveResult& r) { return std::int64_t{r.iterations}; }}},
+    {"operator_applications", "", Integer{[](const SolveResult& r) { return std::int64_t{r.operator_applications}; }}},
+    {"preconditioner_applications", "",
+     Integer{[](const SolveResult& r) { return std::int64_t{r.preconditioner_applications}; }}},
+    {"coarse_levels", "", Integer{[](const SolveResult& r) { return std::int64_t{r.coarse.levels}; }}},
+    {"coarse_iterations", "", Integer{[](const SolveResult& r) { return std::int64_t{r.coarse.iterations}; }}},
+    {"coarse_operator_work", "", Number{[](const SolveResult& r) { return r.coarse.operator_work; }}},
+    {"coarse_preconditioner_work", "", Number{[](const SolveResult& r) { return r.coarse.preconditioner_work; }}},
+    {"deflation_block", "", Integer{[](const SolveResult& r) { return static_cast<std::int64_t>(r.deflation.block); }}},
+    {"deflated_iterations", "",
+     Integer{[](const SolveResult& r) { return std::int64_t{r.deflation.deflated_iterations}; }}},
+    {"deflation_declined", "", Integer{[](const SolveResult& r) { return std::int64_t{r.deflation.declined}; }}},
+    {"undeflated_rate", "", Number{[](const SolveResult& r) { return r.deflation.fast_rate; }}},
+    {"residual", "", Number{[](const SolveResult& r) { return r.residual; }}},
+    {"tolerance", "", Number{[](const SolveResult& r) { return r.tolerance; }}},
+    {"solve_seconds", "s", Number{[](const SolveResult& r) { return r.wall_seconds; }}},
+}};
+
+}  // namespace
+
+std::span<const ResultAttribute> result_attributes() {
+  return kResultAttributes;
+}
+
+void write_result_attributes(const Hdf5Node& node, const SolveResult& result, std::string_view prefix,
+                             std::span<const std::string_view> skip) {
+  for (const ResultAttribute& attribute : kResultAttributes) {
+    if (std::find(skip.begin(), skip.end(), attribute.name) != skip.end()) continue;
+    const std::string name = std::string(prefix) + std::string(attribute.name);
+    if (const auto* number = std::get_if<Number>(&attribute.value)) {
+      node.write_double_attribute(name, (*number)(result));
+    } else if (const auto* integer = std::get_if<Integer>(&attribute.value)) {
+      node.write_int64_attribute(name, (*integer)(result));
+    } else {
+      node.write_string_attribute(name, std::get<Text>(attribute.value)(result));
+    }
+  }
+}
+
+void write_contact_statistics_attributes(const Hdf5Node& node, const surface::ContactStatistics& statistics) {
+  node.write_double_attribute("mean_gap", statistics.mean_gap);
+  node.write_double_attribute("rms_gap", statistics.rms_gap);
+  node.write_double_attribute("free_volume", statistics.free_volume);
+  node.write_int64_attribute("clusters", statistics.clusters());
+}
+
+}  // namespace halfspace::io
