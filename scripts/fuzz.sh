@@ -34,6 +34,7 @@ for h in "${harnesses[@]}"; do
   log="$work/$h.log"
   set +e
   ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=0 \
+    LSAN_OPTIONS="suppressions=$root/fuzz/lsan-suppressions.txt:print_suppressions=0" \
     UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
     "$build/fuzz_$h" "$corpus" "$root/fuzz/corpus/$h" -max_total_time="$seconds" -rss_limit_mb=2048 \
     -malloc_limit_mb=1024 -max_len=65536 -timeout=10 -print_final_stats=1 -artifact_prefix="$crashes/" \

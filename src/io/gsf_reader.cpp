@@ -160,14 +160,15 @@ HeightMap read_gsf_height_map(const std::filesystem::path& path, const std::opti
     const std::uint64_t available = *size - std::min<std::uint64_t>(*size, data_offset);
     if (available != data_bytes) size_mismatch(available);
   }
-  const std::size_t already = bytes.size() - data_offset;
-  if (already > data_bytes) size_mismatch(already);
-  const std::size_t got = already + file.append(bytes, static_cast<std::size_t>(data_bytes) - already);
-  if (got < data_bytes) size_mismatch(got);
-  if (!file.at_end()) {
+  const auto too_many = [&] {
     target.fail(fmt::format("more than the {} data bytes of XRes x YRes = {} x {} float32 values follow the header",
                             data_bytes, x_res, y_res));
-  }
+  };
+  const std::size_t already = bytes.size() - data_offset;
+  if (already > data_bytes) too_many();
+  const std::size_t got = already + file.append(bytes, static_cast<std::size_t>(data_bytes) - already);
+  if (got < data_bytes) size_mismatch(got);
+  if (!file.at_end()) too_many();
   const LengthUnit xy_unit = unit_of(fields, "XYUnits", unit, target);
   const LengthUnit z_unit = unit_of(fields, "ZUnits", unit, target);
 

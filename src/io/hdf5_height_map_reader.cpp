@@ -79,7 +79,9 @@ bool is_numeric(H5T_class_t type_class) {
 
 // HDF5 identifies HDF5 files by their signature, which may sit after a user
 // block, so the check is left to it rather than done on the first bytes.
-File open_file(const Target& target) {
+// A damaged file that HDF5 fails to open can leave HDF5 unable to close
+// its internals; printing then stays off (see ErrorPrintingOff::keep_off).
+File open_file(const Target& target, detail::ErrorPrintingOff& quiet) {
   std::error_code error;
   const auto status = std::filesystem::status(target.path, error);
   if (!std::filesystem::exists(status)) target.fail("the file does not exist");
@@ -95,11 +97,17 @@ File open_file(const Target& target) {
 #else
   const htri_t is_hdf5 = H5Fis_hdf5(target.path.c_str());
 #endif
-  if (is_hdf5 < 0) target.fail(fmt::format("the file cannot be opened: {}", detail::error_reason()));
+  if (is_hdf5 < 0) {
+    quiet.keep_off();
+    target.fail(fmt::format("the file cannot be opened: {}", detail::error_reason()));
+  }
   if (is_hdf5 == 0) target.fail("the file is not an HDF5 file (no HDF5 signature found)");
 
   File file(H5Fopen(target.path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
-  if (!file.valid()) target.fail(fmt::format("the HDF5 file cannot be opened: {}", detail::error_reason()));
+  if (!file.valid()) {
+    quiet.keep_off();
+    target.fail(fmt::format("the HDF5 file cannot be opened: {}", detail::error_reason()));
+  }
   return file;
 }
 
@@ -321,9 +329,10 @@ void read_validity_mask(hid_t file, const std::vector<hsize_t>& dims, HeightMap&
 }
 
 // The reading itself, with HDF5's error printing off.
-HeightMap read_quietly(const std::filesystem::path& path, const std::string& dataset, NonFiniteHeights non_finite) {
+HeightMap read_quietly(const std::filesystem::path& path, const std::string& dataset, NonFiniteHeights non_finite,
+                       detail::ErrorPrintingOff& quiet) {
   const Target target{path, dataset};
-  const File file = open_file(target);
+  const File file = open_file(target, quiet);
   const Object data = open_dataset(file.get(), target);
   check_numeric_type(data.get(), target);
   const std::vector<hsize_t> dims = read_shape(data.get(), target);
@@ -357,12 +366,7 @@ HeightMap read_quietly(const std::filesystem::path& path, const std::string& dat
 HeightMap read_hdf5_height_map(const std::filesystem::path& path, const std::string& dataset,
                                NonFiniteHeights non_finite) {
   detail::ErrorPrintingOff quiet;
-  try {
-    return read_quietly(path, dataset, non_finite);
-  } catch (const FileError&) {
-    quiet.keep_off();
-    throw;
-  }
+  return read_quietly(path, dataset, non_finite, quiet);
 }
 
 }  // namespace halfspace::io

@@ -7,6 +7,7 @@
 #include <array>
 #include <cctype>
 #include <fstream>
+#include <system_error>
 #include <utility>
 
 #include "halfspace/error.hpp"
@@ -65,6 +66,9 @@ std::string lower(std::string_view text) {
 
 // A Dektak CSV export is a profile whatever its extension says.
 bool starts_like_dektak_export(const std::filesystem::path& path) {
+  // Only a regular file can be looked into and then read again from its start.
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error)) return false;
   std::ifstream in(path, std::ios::binary);
   std::string head(15, '\0');
   in.read(head.data(), static_cast<std::streamsize>(head.size()));

@@ -43,6 +43,16 @@ TEST(HostileInputCliTest, DevZeroAsHeightMapOrConfigIsRefusedAtOnce) {
                               {"config file /dev/zero is larger than 1048576 bytes (1 MiB)"});
 }
 
+TEST(HostileInputCliTest, AConfigWithACodePointTomlPlusPlusMishandlesIsAParseError) {
+  // U+0344 in a bare key: toml++ 3.3.0 reaches an "unreachable" branch of its
+  // whitespace table (found by fuzz/toml_config_fuzzer.cpp); the library
+  // halfspace links must still report a parse error.
+  const TempDir dir;
+  const fs::path config = dir / "odd.toml";
+  test::write_bytes(config, "isz\xcd\x84ui");
+  expect_one_line_input_error({"solve", "--config", config.string()}, {config.string(), "is not valid TOML"});
+}
+
 TEST(HostileInputCliTest, AnUnreadableFileIsNamed) {
   // Used to print "basic_filebuf::underflow error reading the file", no name.
   expect_one_line_input_error(

@@ -483,6 +483,9 @@ TEST(Hdf5HeightMapReaderTest, ADamagedFileLeavesHdf5ErrorPrintingOff) {
   std::string bytes = test::read_bytes(kDataDir / "di-5-crop-48x64.h5");
   bytes[1410] = '\x94';
   const fs::path path = dir / "damaged.h5";
+  H5E_auto2_t saved_printer = nullptr;
+  void* saved_data = nullptr;
+  H5Eget_auto2(H5E_DEFAULT, &saved_printer, &saved_data);
   test::write_bytes(path, bytes);
   ::testing::internal::CaptureStderr();
   const std::string message = read_error(path);
@@ -493,6 +496,7 @@ TEST(Hdf5HeightMapReaderTest, ADamagedFileLeavesHdf5ErrorPrintingOff) {
   void* data = nullptr;
   H5Eget_auto2(H5E_DEFAULT, &printer, &data);
   EXPECT_EQ(printer, nullptr) << "HDF5's error printing was turned back on";
+  H5Eset_auto2(H5E_DEFAULT, saved_printer, saved_data);  // as it was, for the other tests
 }
 
 }  // namespace

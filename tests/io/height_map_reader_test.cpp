@@ -219,5 +219,19 @@ TEST(HeightMapReaderTest, MeasuredFilesMatchTheReadme) {
   }
 }
 
+TEST(HeightMapReaderTest, ReadsANamedPipeWithoutLookingIntoItFirst) {
+  // The .csv extension makes the dispatcher check for a Dektak export; on a
+  // pipe that check used to consume the data, and the reader then waited
+  // for a writer that was gone.
+  const test::TempDir dir;
+  const std::filesystem::path path = dir / "map.csv";
+  const std::string text = "1 2 3\n4 5 6\n";
+  test::EndlessPipe pipe(path, text, "", text.size());
+  const HeightMap map = read_height_map(path);
+  EXPECT_EQ(map.nx, 3u);
+  EXPECT_EQ(map.ny, 2u);
+  EXPECT_EQ(map.heights[4], 5.0);
+}
+
 }  // namespace
 }  // namespace halfspace::io
