@@ -33,8 +33,11 @@ constexpr int kExitPlotFailed = 3;
 
 using Environment = std::vector<std::pair<std::string, std::string>>;
 
+// The value of a flag in sphere()'s changes: given without a value.
+const std::string kFlag = "(flag)";
+
 // A sphere solve with `changes` replacing or adding options (an empty value
-// drops the option).
+// drops the option, kFlag gives it without a value).
 std::vector<std::string> sphere(const std::vector<std::pair<std::string, std::string>>& changes) {
   std::vector<std::pair<std::string, std::string>> options{
       {"--geometry", "sphere"}, {"--radius", "0.01"}, {"--grid", "32x32"}, {"--size", "5e-4"},
@@ -51,7 +54,7 @@ std::vector<std::string> sphere(const std::vector<std::pair<std::string, std::st
   for (const auto& [flag, value] : options) {
     if (value.empty()) continue;
     arguments.push_back(flag);
-    arguments.push_back(value);
+    if (value != kFlag) arguments.push_back(value);
   }
   return arguments;
 }
@@ -127,7 +130,7 @@ TEST(ResourceLimitsCliTest, MaxMemoryLowersTheLimit) {
                    {"--max-memory " + size + " is invalid"}, dir / "o.h5");
   }
   // Enough: solved.
-  const ProgramRun run = testing::run_program(sphere({{"--max-memory", "2G"}, {"--quiet", ""}}), dir.path());
+  const ProgramRun run = testing::run_program(sphere({{"--max-memory", "2G"}, {"--quiet", kFlag}}), dir.path());
   EXPECT_EQ(run.exit_code, kExitOk) << run.err;
 }
 
@@ -247,7 +250,7 @@ TEST(ResourceLimitsCliTest, PlottingToolThatNeverExitsIsStopped) {
   fs::permissions(python, fs::perms::owner_all);
   const Environment environment{{"HALFSPACE_PYTHON", python.string()}, {"HALFSPACE_PLOT_TIMEOUT", "1"}};
   const auto start = std::chrono::steady_clock::now();
-  const ProgramRun run = testing::run_program(sphere({{"--plot", "x"}, {"--quiet", ""}}), dir.path(), environment);
+  const ProgramRun run = testing::run_program(sphere({{"--plot", kFlag}, {"--quiet", kFlag}}), dir.path(), environment);
   EXPECT_LT(seconds_since(start), 30.0);
   EXPECT_EQ(run.exit_code, kExitPlotFailed) << run.err;
   EXPECT_NE(run.err.find("did not finish within 1 s and was stopped (set HALFSPACE_PLOT_TIMEOUT"), std::string::npos)
@@ -255,7 +258,7 @@ TEST(ResourceLimitsCliTest, PlottingToolThatNeverExitsIsStopped) {
   EXPECT_TRUE(fs::exists(dir / "o.h5"));
 
   const ProgramRun bad =
-      testing::run_program(sphere({{"--plot", "x"}}), dir.path(), {{"HALFSPACE_PLOT_TIMEOUT", "soon"}});
+      testing::run_program(sphere({{"--plot", kFlag}}), dir.path(), {{"HALFSPACE_PLOT_TIMEOUT", "soon"}});
   expect_refused(bad, {"--plot: HALFSPACE_PLOT_TIMEOUT=soon is invalid"}, dir / "unwritten.h5");
 }
 
@@ -291,7 +294,7 @@ TEST(ResourceLimitsCliTest, OpenMpWaitsPassivelyUnlessTheUserChose) {
   const auto policy_with = [&](Environment environment) {
     environment.emplace_back("HALFSPACE_PYTHON", python.string());
     fs::remove(dir / "policy.txt");
-    const ProgramRun run = testing::run_program(sphere({{"--plot", "x"}, {"--quiet", ""}}), dir.path(), environment);
+    const ProgramRun run = testing::run_program(sphere({{"--plot", kFlag}, {"--quiet", kFlag}}), dir.path(), environment);
     EXPECT_EQ(run.exit_code, kExitOk) << run.err;
     std::ifstream in(dir / "policy.txt");
     std::string policy;
