@@ -109,8 +109,8 @@ TEST(MemoryEstimateCliTest, EstimateBoundsTheMeasuredPeakWithinAFactorOfThree) {
        solver("pk-multilevel"),
        4},
       {"free 1D cylinder, lemke (dense)",
-       {"--geometry", "cylinder", "--radius", "0.01", "--grid", "1024", "--size", "1e-4", "--force", "1e3",
-        "--solver", "lemke"},
+       {"--geometry", "cylinder", "--radius", "0.01", "--grid", "1024", "--size", "1e-4", "--force", "1e3", "--solver",
+        "lemke"},
        Grid::line(1024, 1e-4 / 1024, Boundary::free),
        solver("lemke")},
   };
@@ -122,8 +122,8 @@ TEST(MemoryEstimateCliTest, EstimateBoundsTheMeasuredPeakWithinAFactorOfThree) {
     const Measured measured = run_measured(arguments, dir.path());
     ASSERT_EQ(measured.exit_code, 0) << c.name << ": " << testing::read_text(dir / "stderr.txt");
     const double estimate = solve_memory_estimate(c.grid, c.settings, c.steps);
-    std::printf("  %-50s peak %8.1f MiB, estimate %8.1f MiB (%.2fx)\n", c.name.c_str(),
-                measured.peak_bytes / 1048576.0, estimate / 1048576.0, estimate / measured.peak_bytes);
+    std::printf("  %-50s peak %8.1f MiB, estimate %8.1f MiB (%.2fx)\n", c.name.c_str(), measured.peak_bytes / 1048576.0,
+                estimate / 1048576.0, estimate / measured.peak_bytes);
     EXPECT_LT(measured.peak_bytes, estimate) << c.name;
     EXPECT_LT(estimate, 3.0 * measured.peak_bytes) << c.name;
   }
