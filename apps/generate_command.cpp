@@ -101,7 +101,7 @@ Grid grid_from(const GivenOptions& given, Boundary boundary) {
   const std::optional<MemoryLimit> limit =
       memory_limit(max_memory == given.end() ? std::nullopt : std::optional<std::string>(max_memory->second),
                    max_memory == given.end() ? std::string("--max-memory") : describe(given, "max-memory"));
-  require_memory(fmt::format("{}: generating {:g} cells", describe(given, "grid"), static_cast<double>(grid.size())),
+  require_memory(fmt::format("{}: generating {} cells", describe(given, "grid"), grid.size()),
                  generate_memory_estimate(grid), limit);
   return grid;
 }

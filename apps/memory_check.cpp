@@ -25,10 +25,10 @@ void require_memory(std::string_view request, double estimate, const std::option
         "--max-memory if the machine has the memory",
         request, format_bytes(estimate), format_bytes(limit->bytes), limit->source));
   }
-  throw InputError(fmt::format(
-      "{} needs about {} of memory at its peak, but {} is available ({}): use a smaller grid, or pass "
-      "--max-memory SIZE to set the limit yourself",
-      request, format_bytes(estimate), format_bytes(limit->bytes), limit->source));
+  throw InputError(
+      fmt::format("{} needs about {} of memory at its peak, but {} is available ({}): use a smaller grid, or pass "
+                  "--max-memory SIZE to set the limit yourself",
+                  request, format_bytes(estimate), format_bytes(limit->bytes), limit->source));
 }
 
 }  // namespace halfspace::app

@@ -92,9 +92,10 @@ double plot_timeout(const PlotRequest& request) {
   double seconds = 0.0;
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), seconds);
   if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(seconds) || seconds < 0.0) {
-    throw InputError(fmt::format("{}: HALFSPACE_PLOT_TIMEOUT={} is invalid: give the plotting tool's time limit in "
-                                 "seconds, or 0 for none",
-                                 request.by, text));
+    throw InputError(
+        fmt::format("{}: HALFSPACE_PLOT_TIMEOUT={} is invalid: give the plotting tool's time limit in "
+                    "seconds, or 0 for none",
+                    request.by, text));
   }
   return seconds;
 }
@@ -167,9 +168,10 @@ PlotTool find_plot_tool(const PlotRequest& request) {
   const std::string shown = join_command_line(tool.interpreter);
   const ChildStatus status = run_child(check, true, true, tool.timeout_seconds);
   if (status.timed_out) {
-    throw InputError(fmt::format("{}: {} did not finish importing {} within {:g} s and was stopped (set "
-                                 "HALFSPACE_PLOT_TIMEOUT to allow longer, 0 for no limit), or {}",
-                                 request.by, shown, kPackages, tool.timeout_seconds, request.skip_hint));
+    throw InputError(
+        fmt::format("{}: {} did not finish importing {} within {:g} s and was stopped (set "
+                    "HALFSPACE_PLOT_TIMEOUT to allow longer, 0 for no limit), or {}",
+                    request.by, shown, kPackages, tool.timeout_seconds, request.skip_hint));
   }
   if (status.spawn_error != 0) {
     throw InputError(fmt::format("{}: the plotting tool's interpreter {} cannot be run ({}): {}", request.by, shown,

@@ -10,9 +10,9 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
+#include <functional>
 #include <initializer_list>
 #include <optional>
-#include <functional>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -115,7 +115,8 @@ double material_from(const SolveOptions& o) {
     throw InputError(
         fmt::format("incomplete material: missing {} (give all of E1, nu1, E2, nu2, or E-star)", join_names(missing)));
   }
-  const double e_star = composite_modulus({require_modulus(o, "E1", *o.e1), *o.nu1}, {require_modulus(o, "E2", *o.e2), *o.nu2});
+  const double e_star =
+      composite_modulus({require_modulus(o, "E1", *o.e1), *o.nu1}, {require_modulus(o, "E2", *o.e2), *o.nu2});
   // nu near -1 makes a body's compliance vanish and E* grow without bound.
   return require_in_range(fmt::format("the composite modulus E* = {:g} Pa of {}, {}, {}, {}", e_star, o.describe("E1"),
                                       o.describe("nu1"), o.describe("E2"), o.describe("nu2")),
@@ -195,8 +196,7 @@ int threads_from(const SolveOptions& o) {
   if (!o.threads) return default_threads();
   if (*o.threads < 1 || *o.threads > max_threads()) {
     throw InputError(fmt::format("{} is invalid: allowed range is 1 to {} threads ({} x the {} hardware threads)",
-                                 o.describe("threads"), max_threads(), kThreadsPerHardwareThread,
-                                 hardware_threads()));
+                                 o.describe("threads"), max_threads(), kThreadsPerHardwareThread, hardware_threads()));
   }
   return static_cast<int>(*o.threads);
 }
@@ -212,12 +212,12 @@ void check_load_scale(const SolveOptions& o, const Grid& grid, ControlMode mode,
     switch (mode) {
       case ControlMode::force: {
         const double pressure = values[k] / grid.domain_area();
-        require_in_range(fmt::format("{}{} on the {} grid of {} {:g} {}: the mean pressure force / {} = {:g} Pa",
-                                     o.describe("force"), value_name(k), grid.shape_string(),
-                                     grid.dimension() == 1 ? "length" : "area", grid.domain_area(),
-                                     grid.dimension() == 1 ? "m" : "m^2", grid.dimension() == 1 ? "length" : "area",
-                                     pressure),
-                         pressure, kMinMeanPressure, kMaxMeanPressure, "Pa");
+        require_in_range(
+            fmt::format("{}{} on the {} grid of {} {:g} {}: the mean pressure force / {} = {:g} Pa",
+                        o.describe("force"), value_name(k), grid.shape_string(),
+                        grid.dimension() == 1 ? "length" : "area", grid.domain_area(),
+                        grid.dimension() == 1 ? "m" : "m^2", grid.dimension() == 1 ? "length" : "area", pressure),
+            pressure, kMinMeanPressure, kMaxMeanPressure, "Pa");
         break;
       }
       case ControlMode::mean_pressure:
@@ -231,10 +231,11 @@ void check_load_scale(const SolveOptions& o, const Grid& grid, ControlMode mode,
   }
 }
 
-// "the solve (pk-multilevel, free boundary, 1e+12 cells)" with the steps of a sweep.
+// "the solve (pk-multilevel, free boundary, 4194304 cells)", with the steps
+// of a sweep.
 std::string solve_description(const Grid& grid, const solvers::SolverSettings& solver, std::size_t steps) {
-  return fmt::format("the {} ({}, {} boundary, {:g} cells{})", steps > 1 ? "load sweep" : "solve", solver.name,
-                     to_string(grid.boundary()), static_cast<double>(grid.size()),
+  return fmt::format("the {} ({}, {} boundary, {} cells{})", steps > 1 ? "load sweep" : "solve", solver.name,
+                     to_string(grid.boundary()), grid.size(),
                      steps > 1 ? fmt::format(", {} steps", steps) : std::string());
 }
 
@@ -475,12 +476,12 @@ Surface height_map_surface(const SolveOptions& o, Boundary boundary, const GridC
   map.dx = *dx;
   map.dy = dy.value_or(0.0);
   // Spacings from the file's attributes get the range the options have.
-  for (const auto& [key, value, given] : {std::tuple{"dx", map.dx, o.dx.has_value()},
-                                          std::tuple{"dy", map.dy, o.dy.has_value() || map.dimension == 1}}) {
+  for (const auto& [key, value, given] :
+       {std::tuple{"dx", map.dx, o.dx.has_value()}, std::tuple{"dy", map.dy, o.dy.has_value() || map.dimension == 1}}) {
     if (!given) {
-      require_in_range(fmt::format("the spacing {} = {:g} m of height map {} (override it with --{})", key, value,
-                                   file, key),
-                       value, kMinLength, kMaxLength, "m");
+      require_in_range(
+          fmt::format("the spacing {} = {:g} m of height map {} (override it with --{})", key, value, file, key), value,
+          kMinLength, kMaxLength, "m");
     }
   }
 
@@ -493,7 +494,7 @@ Surface height_map_surface(const SolveOptions& o, Boundary boundary, const GridC
   Grid grid =
       map.dimension == 1 ? Grid::line(map.nx, map.dx, boundary) : Grid::plane(map.nx, map.ny, map.dx, map.dy, boundary);
   check_grid(grid, fmt::format("height map {} ({} cells{})", file, grid.shape_string(),
-                                 map.preparation.empty() ? "" : " after preparation"));
+                               map.preparation.empty() ? "" : " after preparation"));
   return {std::move(grid), std::move(map.heights), std::move(source), std::move(map.preparation)};
 }
 

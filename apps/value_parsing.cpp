@@ -6,8 +6,8 @@
 
 #include <algorithm>
 #include <charconv>
-#include <optional>
 #include <cmath>
+#include <optional>
 #include <system_error>
 
 #include "halfspace/checked_size.hpp"
@@ -125,8 +125,8 @@ double parse_memory_size(std::string_view text, std::string_view what) {
   }
   constexpr std::string_view kUnits = "KMGT";
   if (!number.empty()) {
-    const char last = static_cast<char>(number.back() >= 'a' && number.back() <= 'z' ? number.back() - 'a' + 'A'
-                                                                                      : number.back());
+    const char last =
+        static_cast<char>(number.back() >= 'a' && number.back() <= 'z' ? number.back() - 'a' + 'A' : number.back());
     if (const std::size_t power = kUnits.find(last); power != std::string_view::npos) {
       unit = std::pow(1024.0, static_cast<double>(power + 1));
       number.remove_suffix(1);

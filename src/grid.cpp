@@ -23,7 +23,8 @@ void check_cells(std::string_view name, std::size_t n) {
 
 void check_spacing(std::string_view name, double h) {
   if (!(std::isnormal(h) && h > 0.0)) {
-    throw InputError(fmt::format("grid spacing {} = {} m is invalid: must be positive, finite and not denormal", name, h));
+    throw InputError(
+        fmt::format("grid spacing {} = {} m is invalid: must be positive, finite and not denormal", name, h));
   }
 }
 
@@ -41,8 +42,8 @@ void check_cell_count(std::size_t nx, std::size_t ny) {
 // spacings can underflow to 0, one of two huge ones overflow to infinity.
 void check_area(std::string_view name, double area, std::string_view unit) {
   if (!(std::isnormal(area) && area > 0.0)) {
-    throw InputError(fmt::format("grid {} = {} {} is invalid: must be positive, finite and not denormal", name, area,
-                                 unit));
+    throw InputError(
+        fmt::format("grid {} = {} {} is invalid: must be positive, finite and not denormal", name, area, unit));
   }
 }
 

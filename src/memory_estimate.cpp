@@ -119,14 +119,13 @@ double solver_peak(const Grid& grid, const solvers::SolverSettings& settings) {
   // adds the result; before that the coarse start holds the averaged gap of
   // every coarser level, the first coarser level's solver and result, and
   // the prolonged start on the fine grid.
-  const bool deflated =
-      settings.deflation_block ? *settings.deflation_block > 0 : solvers::default_deflation(grid);
+  const bool deflated = settings.deflation_block ? *settings.deflation_block > 0 : solvers::default_deflation(grid);
   const double fine = level_bytes(g, true, deflated, history);
   const Extents coarse = g.coarser();
   const double shrink = g.line ? 0.5 : 0.25;
   const double coarse_gaps = kDouble * g.cells() * shrink / (1.0 - shrink);
-  const double coarse_start = coarse_gaps + level_bytes(coarse, true, false, history) +
-                              result_bytes(coarse, history) + kDouble * g.cells();
+  const double coarse_start =
+      coarse_gaps + level_bytes(coarse, true, false, history) + result_bytes(coarse, history) + kDouble * g.cells();
   return fine + std::max(result_bytes(g, history), coarse_start);
 }
 
@@ -248,7 +247,8 @@ std::optional<AvailableMemory> tightest_room(const fs::path& root, const std::st
     if (fs::is_directory(directory)) {
       const std::optional<double> here = cgroup_room(directory, limit_file, usage_file);
       if (here && (!room || *here < room->bytes)) {
-        room = AvailableMemory{*here, fmt::format("the cgroup limit in {} less its usage", (directory / limit_file).string())};
+        room = AvailableMemory{*here,
+                               fmt::format("the cgroup limit in {} less its usage", (directory / limit_file).string())};
       }
     }
     if (relative.empty()) break;
@@ -264,7 +264,8 @@ std::optional<AvailableMemory> available_memory(const fs::path& proc, const fs::
   const CgroupPaths paths = cgroup_paths(proc);
   for (std::optional<AvailableMemory> room :
        {tightest_room(cgroup, paths.unified.value_or("/"), "memory.max", "memory.current"),
-        tightest_room(cgroup / "memory", paths.memory.value_or("/"), "memory.limit_in_bytes", "memory.usage_in_bytes")}) {
+        tightest_room(cgroup / "memory", paths.memory.value_or("/"), "memory.limit_in_bytes",
+                      "memory.usage_in_bytes")}) {
     if (room && (!available || room->bytes < available->bytes)) available = std::move(room);
   }
   return available;

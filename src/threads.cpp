@@ -54,7 +54,8 @@ std::optional<int> cpu_quota() {
   std::ifstream period_file("/sys/fs/cgroup/cpu/cpu.cfs_period_us");
   long long quota = -1;
   long long period = 0;
-  if (quota_file >> quota && period_file >> period) return ratio(static_cast<double>(quota), static_cast<double>(period));
+  if (quota_file >> quota && period_file >> period)
+    return ratio(static_cast<double>(quota), static_cast<double>(period));
   return std::nullopt;
 }
 

@@ -43,8 +43,9 @@ TEST(ThreadsTest, RejectsMoreThanTheCap) {
     set_threads(max_threads() + 1);
     FAIL() << "expected InputError";
   } catch (const InputError& error) {
-    EXPECT_NE(std::string(error.what()).find(fmt::format("thread count {} is invalid: allowed range is 1 to {}",
-                                                         max_threads() + 1, max_threads())),
+    EXPECT_NE(std::string(error.what())
+                  .find(fmt::format("thread count {} is invalid: allowed range is 1 to {}", max_threads() + 1,
+                                    max_threads())),
               std::string::npos)
         << error.what();
   }
