@@ -31,7 +31,7 @@ int run_solve(const SolveSetup& setup) {
   const std::optional<PlotTool> plot =
       setup.plot ? std::optional<PlotTool>(find_plot_tool({"--plot", "drop --plot", {}})) : std::nullopt;
   Progress progress(!setup.quiet, 1, setup.solver.tolerance);
-  solvers::SolverSettings settings = setup.solver;
+  solvers::SolverOptions settings = setup.solver;
   settings.progress = progress.callback();
   std::unique_ptr<ContactSolver> solver = solvers::make_solver(setup.grid, setup.e_star, settings);
 

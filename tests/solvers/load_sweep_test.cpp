@@ -15,6 +15,7 @@
 #include "halfspace/solvers/solver_factory.hpp"
 #include "support/analytic_solutions.hpp"
 #include "support/grid_fields.hpp"
+#include "support/pk_solvers.hpp"
 
 namespace halfspace::solvers {
 namespace {
@@ -167,9 +168,8 @@ TEST(LoadSweepTest, WestergaardSweepMatchesColdSolvesWithFewerIterations) {
   // surface (its iteration count is set by the conditioning, not by the
   // starting error), and pk-multilevel's cold start from coarser grids is
   // already as good as the previous step (docs/performance.md).
-  SolverSettings settings;
-  settings.name = "pk-fourier";
-  const std::unique_ptr<ContactSolver> solver = make_solver(grid, e_star, settings);
+  const std::unique_ptr<ContactSolver> solver =
+      make_solver(grid, e_star, testing::test_options(SolverType::pk_fourier));
   const std::vector<SweepStep> steps =
       run_load_sweep(*solver, grid, {gap0.data(), n}, ControlMode::mean_pressure, loads);
 
