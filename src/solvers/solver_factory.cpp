@@ -9,6 +9,7 @@
 #include "halfspace/error.hpp"
 #include "halfspace/fft/grid_transform.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
+#include "halfspace/solvers/balancing_preconditioner.hpp"
 #include "halfspace/solvers/block_deflation.hpp"
 #include "halfspace/solvers/fourier_preconditioner.hpp"
 #include "halfspace/solvers/lcp_quad.hpp"
@@ -19,14 +20,16 @@
 namespace halfspace::solvers {
 namespace {
 
-// A solver together with the operator (and preconditioner) it was built on.
+// A solver together with the operator and preconditioners it was built on.
 class SolverWithOperator final : public ContactSolver {
  public:
-  SolverWithOperator(std::unique_ptr<InfluenceOperator> op, std::unique_ptr<Preconditioner> preconditioner,
-                     std::unique_ptr<BlockDeflation> deflation, std::unique_ptr<ContactSolver> solver)
+  SolverWithOperator(std::unique_ptr<InfluenceOperator> op, std::unique_ptr<Preconditioner> fourier,
+                     std::unique_ptr<BlockDeflation> deflation, std::unique_ptr<Preconditioner> balancing,
+                     std::unique_ptr<ContactSolver> solver)
       : op_(std::move(op)),
-        preconditioner_(std::move(preconditioner)),
+        fourier_(std::move(fourier)),
         deflation_(std::move(deflation)),
+        balancing_(std::move(balancing)),
         solver_(std::move(solver)) {}
 
   std::string_view name() const override { return solver_->name(); }
@@ -40,8 +43,9 @@ class SolverWithOperator final : public ContactSolver {
 
  private:
   std::unique_ptr<InfluenceOperator> op_;
-  std::unique_ptr<Preconditioner> preconditioner_;
+  std::unique_ptr<Preconditioner> fourier_;
   std::unique_ptr<BlockDeflation> deflation_;
+  std::unique_ptr<Preconditioner> balancing_;  // around fourier_ and deflation_
   std::unique_ptr<ContactSolver> solver_;
 };
 
@@ -53,11 +57,6 @@ std::unique_ptr<ContactSolver> make_polonsky_keer(const Grid& grid, double e_sta
   pk.tolerance = tolerance;
   pk.max_iterations = options.iteration_limit();
   if (fine) pk.progress = options.progress;  // progress reports the fine solve only
-  // Plain Polonsky-Keer keeps the paper's restart rule and search set; with
-  // the Fourier preconditioner Powell's restart test and the
-  // projected-gradient set cut the iterations (docs/solvers.md).
-  pk.restart = preconditioned ? ConjugacyRestart::powell : ConjugacyRestart::on_entry;
-  pk.search_set = preconditioned ? SearchSet::contact_and_overlap : SearchSet::contact;
   std::unique_ptr<FftInfluenceOperator> op;
   std::unique_ptr<Preconditioner> preconditioner;
   if (preconditioned && grid.periodic()) {
@@ -77,10 +76,14 @@ std::unique_ptr<ContactSolver> make_polonsky_keer(const Grid& grid, double e_sta
     }
   }
   std::unique_ptr<BlockDeflation> deflation;
-  if (deflated) deflation = std::make_unique<BlockDeflation>(grid, options.deflation);
-  auto solver = std::make_unique<PolonskyKeer>(*op, pk, preconditioner.get(), deflation.get());
+  std::unique_ptr<Preconditioner> balancing;
+  if (deflated) {
+    deflation = std::make_unique<BlockDeflation>(grid, options.deflation);
+    balancing = std::make_unique<BalancingPreconditioner>(*op, *preconditioner, *deflation);
+  }
+  auto solver = std::make_unique<PolonskyKeer>(*op, pk, balancing ? balancing.get() : preconditioner.get());
   return std::make_unique<SolverWithOperator>(std::move(op), std::move(preconditioner), std::move(deflation),
-                                              std::move(solver));
+                                              std::move(balancing), std::move(solver));
 }
 
 // Fourier-preconditioned Polonsky-Keer on every level; the coarse-grid

@@ -109,9 +109,9 @@ void SolverOptions::validate() const {
   deflation.validate();
   if (deflation.mode == DeflationOptions::Mode::on && type != SolverType::pk_fourier &&
       type != SolverType::pk_multilevel) {
-    throw SolverOptionError("deflation.mode", std::string(to_string(deflation.mode)),
-                            fmt::format("does not apply to solver '{}': deflation needs pk-fourier or pk-multilevel",
-                                        to_string(type)));
+    throw SolverOptionError(
+        "deflation.mode", std::string(to_string(deflation.mode)),
+        fmt::format("does not apply to solver '{}': deflation needs pk-fourier or pk-multilevel", to_string(type)));
   }
 }
 

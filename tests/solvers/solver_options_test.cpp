@@ -70,41 +70,49 @@ TEST(SolverOptionsTest, DefaultsAreValidAndAreTheProgramsDefaults) {
 TEST(SolverOptionsTest, RefusesEachBrokenRuleNamingTheOption) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   for (const double tolerance : {0.0, -1e-3, 1.0, 2.0, nan, std::numeric_limits<double>::infinity()}) {
-    refused(SolverType::pk, [&](SolverOptions& o) { o.tolerance = tolerance; }, "tolerance");
+    refused(
+        SolverType::pk, [&](SolverOptions& o) { o.tolerance = tolerance; }, "tolerance");
   }
   for (const int limit : {0, -5}) {
-    refused(SolverType::pk_fourier, [&](SolverOptions& o) { o.max_iterations = limit; }, "max_iterations");
+    refused(
+        SolverType::pk_fourier, [&](SolverOptions& o) { o.max_iterations = limit; }, "max_iterations");
   }
-  const SolverOptionError lcpquad =
-      refused(SolverType::lcpquad, [](SolverOptions& o) { o.max_iterations = 5; }, "max_iterations");
+  const SolverOptionError lcpquad = refused(
+      SolverType::lcpquad, [](SolverOptions& o) { o.max_iterations = 5; }, "max_iterations");
   EXPECT_NE(lcpquad.rule().find("does not apply to solver 'lcpquad'"), std::string::npos) << lcpquad.what();
   SolverOptions lemke;
   lemke.type = SolverType::lemke;
   lemke.max_iterations = 5;
   EXPECT_NO_THROW(lemke.validate());
 
-  refused(SolverType::pk_multilevel, [](SolverOptions& o) { o.multilevel.coarse_tolerance = 1.0; },
-          "multilevel.coarse_tolerance");
-  refused(SolverType::pk_multilevel, [](SolverOptions& o) { o.multilevel.min_cells_per_axis = 1; },
-          "multilevel.min_cells_per_axis");
-  refused(SolverType::pk_multilevel, [](SolverOptions& o) { o.multilevel.warm_start_max_load_ratio = 0.9; },
-          "multilevel.warm_start_max_load_ratio");
+  refused(
+      SolverType::pk_multilevel, [](SolverOptions& o) { o.multilevel.coarse_tolerance = 1.0; },
+      "multilevel.coarse_tolerance");
+  refused(
+      SolverType::pk_multilevel, [](SolverOptions& o) { o.multilevel.min_cells_per_axis = 1; },
+      "multilevel.min_cells_per_axis");
+  refused(
+      SolverType::pk_multilevel, [](SolverOptions& o) { o.multilevel.warm_start_max_load_ratio = 0.9; },
+      "multilevel.warm_start_max_load_ratio");
 
   for (const std::size_t block : {std::size_t{0}, std::size_t{257}}) {
-    refused(SolverType::pk_fourier, [&](SolverOptions& o) { o.deflation.block = block; }, "deflation.block");
+    refused(
+        SolverType::pk_fourier, [&](SolverOptions& o) { o.deflation.block = block; }, "deflation.block");
   }
-  refused(SolverType::pk_fourier, [](SolverOptions& o) { o.deflation.max_pair_terms = 0.0; },
-          "deflation.max_pair_terms");
-  refused(SolverType::pk_fourier, [](SolverOptions& o) { o.deflation.coarse_tolerance = 0.0; },
-          "deflation.coarse_tolerance");
-  refused(SolverType::pk_fourier, [](SolverOptions& o) { o.deflation.coarse_max_iterations = 0; },
-          "deflation.coarse_max_iterations");
+  refused(
+      SolverType::pk_fourier, [](SolverOptions& o) { o.deflation.max_pair_terms = 0.0; }, "deflation.max_pair_terms");
+  refused(
+      SolverType::pk_fourier, [](SolverOptions& o) { o.deflation.coarse_tolerance = 0.0; },
+      "deflation.coarse_tolerance");
+  refused(
+      SolverType::pk_fourier, [](SolverOptions& o) { o.deflation.coarse_max_iterations = 0; },
+      "deflation.coarse_max_iterations");
 }
 
 TEST(SolverOptionsTest, DeflationIsOnOnlyWhereItApplies) {
   for (const SolverType type : {SolverType::pk, SolverType::lemke, SolverType::lcpquad}) {
-    const SolverOptionError error =
-        refused(type, [](SolverOptions& o) { o.deflation.mode = DeflationOptions::Mode::on; }, "deflation.mode");
+    const SolverOptionError error = refused(
+        type, [](SolverOptions& o) { o.deflation.mode = DeflationOptions::Mode::on; }, "deflation.mode");
     EXPECT_NE(error.rule().find("deflation needs pk-fourier or pk-multilevel"), std::string::npos) << error.what();
     // Off or automatic is no request, so nothing to refuse.
     SolverOptions quiet;
