@@ -219,6 +219,15 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
     local_overlap_pressure({g, n}, k_self, p);
   }
 
+  if (uniform_response_range_ < 0.0) {
+    // ptp(K 1) for the gap scale (see the header), once per solver; t and r
+    // are free until the iteration starts.
+    direction_.setOnes();
+    op_.apply({t, n}, {r, n});
+    ++result.operator_applications;
+    uniform_response_range_ =
+        linalg::max_of(n, [&](std::size_t i) { return r[i]; }) - linalg::min_of(n, [&](std::size_t i) { return r[i]; });
+  }
   direction_.setZero();
   // Deflation (see apply_balancing): whether it is on, and the last step's
   // clipped cells and search set, which decide it.
@@ -304,7 +313,10 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
     });
     gap_norm = searched_gap_norm;
     gap_along_direction = gap_along;
-    const double gap_scale = std::max(problem.initial_gap_range + (settled.max - settled.min), 0.0);
+    // Never below the range the same load gives spread uniformly: a flat
+    // punch in full contact has ptp(g0) = ptp(K p) = 0 at its solution.
+    const double load_range = uniform_response_range_ * pressure_sum / cells;
+    const double gap_scale = problem.initial_gap_range + std::max(settled.max - settled.min, load_range);
     const double numerator = (pressure_sum > 0.0 ? weighted_gap * cells / pressure_sum : 0.0) + overlap;
     residual = numerator == 0.0 ? 0.0 : numerator / (cells * gap_scale);
   };
