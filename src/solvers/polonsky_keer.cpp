@@ -83,7 +83,8 @@ Problem make_problem(const Grid& grid, std::span<const double> initial_gap, cons
 class Iteration {
  public:
   Iteration(InfluenceOperator& op, Preconditioner* preconditioner, const PolonskyKeerOptions& options,
-            const Problem& problem, SolveResult& result, Eigen::ArrayXd& direction, Eigen::ArrayXd& image)
+            const Problem& problem, SolveResult& result, Eigen::ArrayXd& direction, Eigen::ArrayXd& image,
+            double& uniform_response_range)
       : op_(op),
         preconditioner_(preconditioner),
         options_(options),
@@ -96,7 +97,17 @@ class Iteration {
         t_(direction.data()),
         r_(image.data()),
         set_{p_, g_, preconditioner != nullptr, problem.load_controlled && preconditioner != nullptr},
+        uniform_response_range_(uniform_response_range),
         approach_(problem.approach) {
+    if (uniform_response_range_ < 0.0) {
+      // ptp(K 1) for the gap scale (see the header), once per solver; t and
+      // r are free until the iteration starts.
+      direction.setOnes();
+      op_.apply({t_, n_}, {r_, n_});
+      ++result_.operator_applications;
+      uniform_response_range_ = linalg::max_of(n_, [&](std::size_t i) { return r_[i]; }) -
+                                linalg::min_of(n_, [&](std::size_t i) { return r_[i]; });
+    }
     direction.setZero();
   }
 
@@ -341,7 +352,10 @@ class Iteration {
     gap_norm_ = gap_norm;
     gap_along_direction_ = gap_along;
     const double cells = static_cast<double>(n_);
-    const double gap_scale = std::max(problem_.initial_gap_range + (settled.max - settled.min), 0.0);
+    // Never below the range the same load gives spread uniformly: a flat
+    // punch in full contact has ptp(g0) = ptp(K p) = 0 at its solution.
+    const double load_range = uniform_response_range_ * pressure_sum / cells;
+    const double gap_scale = problem_.initial_gap_range + std::max(settled.max - settled.min, load_range);
     const double numerator = (pressure_sum > 0.0 ? weighted_gap * cells / pressure_sum : 0.0) + overlap;
     residual_ = numerator == 0.0 ? 0.0 : numerator / (cells * gap_scale);
   }
@@ -359,6 +373,7 @@ class Iteration {
   double* r_;  // M^-1 g, then K t, then c
   const SearchSet set_;
   const PressureBounds bounds_;
+  double& uniform_response_range_;  // ptp(K 1), the solver's
 
   int updates_since_exact_ = 0;
   Deferred deferred_;
@@ -428,7 +443,7 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
   result.gap.setZero(n);
   if (preconditioner_) preconditioner_->begin_solve();
 
-  Iteration it(op_, preconditioner_, options_, problem, result, direction_, image_);
+  Iteration it(op_, preconditioner_, options_, problem, result, direction_, image_, uniform_response_range_);
   it.start(warm);  // 0: starting pressure
   int k = 0;
   for (;; ++k) {

@@ -4,17 +4,23 @@
 //
 // Stopping criterion. With gap g = initial_gap + K p - approach, contact set
 // C = {i : p_i > 0}, mean pressure pbar = (1/N) sum_i p_i and gap scale
-// g_ref = ptp(initial_gap) + ptp(K p) (ptp = max - min over the grid), the
-// residual of iterate p is
+// g_ref = ptp(initial_gap) + max(ptp(K p), pbar ptp(K 1)) (ptp = max - min
+// over the grid), the residual of iterate p is
 //
 //   residual = ( sum_i (p_i / pbar) |g_i| + sum_i max(-g_i, 0) ) / (N g_ref),
 //
 // a pressure-weighted mean gap on the contact set plus the mean interpenetration
 // elsewhere, both relative to the gap scale (the first sum is dropped when
 // pbar = 0). It is zero exactly at the solution of the linear complementarity
-// problem. The iteration stops when residual <= tolerance, checked on the
-// final (p, K p) pair, so the returned fields are mutually consistent. Under
-// load control the force equals the target to rounding at every iterate.
+// problem. The floor pbar ptp(K 1), the displacement range of the same load
+// spread uniformly (zero on a periodic grid), keeps g_ref from vanishing where
+// the first two do: a flat punch in full contact has ptp(initial_gap) = 0 and
+// ptp(K p) -> 0 at its solution, so without it the residual stalled at O(1)
+// or became 0/0. It costs one product K 1 per solver, on its first solve; on
+// other contacts ptp(K p) is the larger term. The iteration stops when
+// residual <= tolerance, checked on the final (p, K p) pair, so the returned
+// fields are mutually consistent. Under load control the force equals the
+// target to rounding at every iterate.
 //
 // The method comes in two forms.
 //  - Without a preconditioner, the paper's: the conjugate directions cover
@@ -91,6 +97,9 @@ class PolonskyKeer final : public ContactSolver {
   // c (each needed only until the next is made).
   Eigen::ArrayXd direction_;
   Eigen::ArrayXd image_;
+  // ptp(K 1), the displacement range of a unit uniform pressure (the gap
+  // scale's floor); negative until the first solve computes it.
+  double uniform_response_range_ = -1.0;
 };
 
 }  // namespace halfspace::solvers
