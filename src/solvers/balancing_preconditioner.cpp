@@ -90,11 +90,12 @@ void BalancingPreconditioner::apply_balancing(std::span<const double> in, std::s
   auto onto_set = [&](double* values, const double* minus) {
     double mean = 0.0;
     if (mean_free) {
-      mean = linalg::sum(n, [&](std::size_t i) { return set.contains(i) ? values[i] - (minus ? minus[i] : 0.0) : 0.0; }) /
-             count;
+      mean =
+          linalg::sum(n, [&](std::size_t i) { return set.contains(i) ? values[i] - (minus ? minus[i] : 0.0) : 0.0; }) /
+          count;
     }
-    for_each_index(n,
-                   [&](std::size_t i) { values[i] = set.contains(i) ? values[i] - (minus ? minus[i] : 0.0) - mean : 0.0; });
+    for_each_index(
+        n, [&](std::size_t i) { values[i] = set.contains(i) ? values[i] - (minus ? minus[i] : 0.0) - mean : 0.0; });
   };
   deflation_.pre_correction({z, n}, {field, n}, mean_free);
   op_.apply({field, n}, {field, n});

@@ -49,8 +49,8 @@ class DeflationSchedule {
  private:
   double clipped_ = std::numeric_limits<double>::infinity();  // the last step's clipped cells
   double searched_ = 0.0;                                     // and its search set
-  int settled_steps_ = 0;  // consecutive undeflated steps that clipped little
-  bool pays_ = false;      // their rate was slow
+  int settled_steps_ = 0;                                     // consecutive undeflated steps that clipped little
+  bool pays_ = false;                                         // their rate was slow
   bool declined_ = false;
   double fast_rate_ = 0.0;
 };

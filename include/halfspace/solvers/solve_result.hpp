@@ -9,7 +9,7 @@
 #include <string_view>
 #include <vector>
 
-namespace halfspace {
+namespace halfspace::solvers {
 
 enum class SolveStatus {
   converged,        // residual below tolerance
@@ -75,4 +75,14 @@ struct SolveResult {
   bool converged() const { return status == SolveStatus::converged; }
 };
 
+}  // namespace halfspace::solvers
+
+// The library, its writers and front ends name these without the folder's
+// namespace.
+namespace halfspace {
+using solvers::SolveStatus;
+using solvers::CoarseStart;
+using solvers::DeflationRecord;
+using solvers::SolveResult;
+using solvers::to_string;
 }  // namespace halfspace
