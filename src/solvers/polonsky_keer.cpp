@@ -515,6 +515,14 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
     result.deflation.updates = after.updates - deflation_before.updates;
     result.deflation.declined = after.declined - deflation_before.declined;
     result.deflation.coarse_iterations = after.coarse_iterations - deflation_before.coarse_iterations;
+    result.deflation.unconverged_coarse_solves =
+        after.unconverged_coarse_solves - deflation_before.unconverged_coarse_solves;
+    if (result.deflation.unconverged_coarse_solves > 0) {
+      result.warnings.push_back(
+          fmt::format("block deflation: {} of {} coarse solves stopped short of their tolerance (iteration limit or "
+                      "non-positive curvature), so the coarse correction was inexact",
+                      result.deflation.unconverged_coarse_solves, 2 * result.deflation.deflated_iterations));
+    }
   }
   // Summary of the final iterate, whose displacement and gap are current.
   const auto [pressure_total, contact_total] = sums<2>(n, [&](std::size_t i) {
