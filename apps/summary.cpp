@@ -93,6 +93,9 @@ void print_summary(std::FILE* out, const SolveSetup& setup, const SolveResult& r
                           : d.fast_rate > 0.0 ? fmt::format("fast without it: {:.2f} per iteration", d.fast_rate)
                                               : "contact set never settled"));
   }
+  for (std::size_t k = 0; k < result.warnings.size(); ++k) {
+    row(out, k == 0 ? "warnings" : "", result.warnings[k]);
+  }
   row(out, "residual", fmt::format("{:.3e} (tolerance {:.3e})", result.residual, result.tolerance));
   row(out, "total force", fmt::format("{:.6g} {}", result.total_force, force_unit(grid)));
   row(out, "mean pressure", fmt::format("{:.6g} Pa", result.mean_pressure));

@@ -1,5 +1,7 @@
 #include "halfspace/solvers/balancing_preconditioner.hpp"
 
+#include <fmt/format.h>
+
 #include <array>
 
 #include "halfspace/error.hpp"
@@ -116,7 +118,15 @@ void BalancingPreconditioner::report(SolveResult& result) const {
   result.deflation.updates = after.updates - stats_before_.updates;
   result.deflation.declined = after.declined - stats_before_.declined;
   result.deflation.coarse_iterations = after.coarse_iterations - stats_before_.coarse_iterations;
+  result.deflation.unconverged_coarse_solves =
+      after.unconverged_coarse_solves - stats_before_.unconverged_coarse_solves;
   result.deflation.fast_rate = schedule_.fast_rate();
+  if (result.deflation.unconverged_coarse_solves > 0) {
+    result.warnings.push_back(
+        fmt::format("block deflation: {} of {} coarse solves stopped short of their tolerance (iteration limit or "
+                    "non-positive curvature), so the coarse correction was inexact",
+                    result.deflation.unconverged_coarse_solves, 2 * result.deflation.deflated_iterations));
+  }
 }
 
 }  // namespace halfspace::solvers

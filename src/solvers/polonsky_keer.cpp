@@ -96,7 +96,8 @@ class Iteration {
         g_(result.gap.data()),
         t_(direction.data()),
         r_(image.data()),
-        set_{p_, g_, preconditioner != nullptr, problem.load_controlled && preconditioner != nullptr},
+        projected_(options.form == PolonskyKeerForm::projected),
+        set_{p_, g_, projected_, problem.load_controlled && projected_},
         uniform_response_range_(uniform_response_range),
         approach_(problem.approach) {
     if (uniform_response_range_ < 0.0) {
@@ -179,20 +180,23 @@ class Iteration {
   // g z. An adapting M^-1 that changed restarts the conjugate directions.
   void precondition() {
     z_ = g_;
-    if (!preconditioner_) {
+    if (!projected_) {
       search_cells_ = contact_cells_;
       search_gap_sum_ = 0.0;
       z_mean_ = 0.0;
       search_norm_ = gap_norm_;
       return;
     }
-    z_ = r_;  // evaluate() left g on the search set there
-    if (preconditioner_->adapt(set_, result_.residual_history)) conjugate_ = false;
-    preconditioner_->apply({r_, n_}, {r_, n_});
-    ++result_.preconditioner_applications;
+    if (preconditioner_) {
+      z_ = r_;  // evaluate() left g on the search set there
+      if (preconditioner_->adapt(set_, result_.residual_history)) conjugate_ = false;
+      preconditioner_->apply({r_, n_}, {r_, n_});
+      ++result_.preconditioner_applications;
+    }
+    const double* z = z_;
     const auto [z_sum, gz, cells, gap_sum] = sums<4>(n_, [&](std::size_t i) {
       const double in_set = set_.contains(i) ? 1.0 : 0.0;
-      return std::array<double, 4>{in_set * r_[i], in_set * (g_[i] * r_[i]), in_set, in_set * g_[i]};
+      return std::array<double, 4>{in_set * z[i], in_set * (g_[i] * z[i]), in_set, in_set * g_[i]};
     });
     search_cells_ = cells;
     search_gap_sum_ = gap_sum;
@@ -203,7 +207,7 @@ class Iteration {
   // Step 3: the conjugate direction t = z + beta t on the search set, or
   // t = z when restarting.
   void conjugate() {
-    if (preconditioner_ && !(std::abs(gap_along_direction_) <= kPowellRestart * search_norm_)) conjugate_ = false;
+    if (projected_ && !(std::abs(gap_along_direction_) <= kPowellRestart * search_norm_)) conjugate_ = false;
     const double beta = conjugate_ ? search_norm_ / previous_norm_ : 0.0;
     const double* z = z_;
     const double z_mean = z_mean_;
@@ -242,7 +246,7 @@ class Iteration {
   // addition of K c and the scaling are left to the next evaluation's first
   // pass (Deferred).
   void advance() {
-    const bool entries = preconditioner_ == nullptr;
+    const bool entries = !projected_;
     const double tau = tau_;
     const auto [new_pressure_sum, entered, corrected] = sums<3>(n_, [&](std::size_t i) {
       const double moved = p_[i] - tau * t_[i];
@@ -257,7 +261,7 @@ class Iteration {
       r_[i] = pi - moved;
       return std::array<double, 3>{pi, entry, r_[i] != 0.0 ? 1.0 : 0.0};
     });
-    const double entries_kept = preconditioner_ ? kEntriesKept * contact_cells_ : 0.0;
+    const double entries_kept = projected_ ? kEntriesKept * contact_cells_ : 0.0;
     conjugate_ = entered <= entries_kept && tau > 0.0;
     if (preconditioner_) preconditioner_->observe_step({corrected, search_cells_});
     if (corrected > 0.0) {
@@ -366,11 +370,12 @@ class Iteration {
   const Problem& problem_;
   SolveResult& result_;
   const std::size_t n_;
-  double* p_;  // pressure
-  double* u_;  // displacement K p
-  double* g_;  // gap; K c between steps 8 and 1
-  double* t_;  // conjugate direction
-  double* r_;  // M^-1 g, then K t, then c
+  double* p_;             // pressure
+  double* u_;             // displacement K p
+  double* g_;             // gap; K c between steps 8 and 1
+  double* t_;             // conjugate direction
+  double* r_;             // M^-1 g, then K t, then c
+  const bool projected_;  // the form (see the header)
   const SearchSet set_;
   const PressureBounds bounds_;
   double& uniform_response_range_;  // ptp(K 1), the solver's
@@ -409,6 +414,9 @@ PolonskyKeer::PolonskyKeer(InfluenceOperator& op, PolonskyKeerOptions options, P
       preconditioner_(preconditioner),
       name_(preconditioner ? fmt::format("{}-polonsky-keer", preconditioner->kind()) : "polonsky-keer") {
   options_.validate();
+  if (preconditioner_ && options_.form != PolonskyKeerForm::projected) {
+    throw InputError("a preconditioner needs the projected form of Polonsky-Keer (PolonskyKeerForm::projected)");
+  }
   const auto n = static_cast<Eigen::Index>(op_.grid().size());
   direction_.setZero(n);
   image_.setZero(n);

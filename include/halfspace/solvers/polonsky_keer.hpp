@@ -22,25 +22,25 @@
 // fields are mutually consistent. Under load control the force equals the
 // target to rounding at every iterate.
 //
-// The method comes in two forms.
-//  - Without a preconditioner, the paper's: the conjugate directions cover
-//    the contact set C; a cell out of contact that interpenetrates (g < 0)
-//    enters after the step with pressure -tau g, and any entry restarts the
-//    conjugate directions.
-//  - With a Preconditioner M^-1 (e.g. FourierPreconditioner), the
-//    directions are built from z = M^-1 g instead of g, which cuts the
-//    iteration count on rough surfaces at the price of one more transform
-//    per iteration. They cover the projected-gradient search set
+// The method comes in two forms (PolonskyKeerForm).
+//  - paper: the conjugate directions cover the contact set C; a cell out of
+//    contact that interpenetrates (g < 0) enters after the step with
+//    pressure -tau g, and any entry restarts the conjugate directions.
+//  - projected: the directions cover the projected-gradient search set
 //    C + {p = 0, g < 0}, as bound-constrained CG does (Vollebregt 2014, J.
 //    Comput. Phys. 257, 333): the step itself gives interpenetrating cells
-//    pressure. On large rough contacts a few cells enter in almost every
-//    iteration, so restarting at every entry would turn the method into
-//    steepest descent; Powell's rule restarts only when the new gap is no
-//    longer nearly orthogonal to the previous direction on the search set,
-//    |sum g t_old| > 0.2 sum g z (Powell 1977, Math. Programming 12, 241),
-//    or when more than 1 % of the contact cells enter at once. A
-//    preconditioner that adapts to the active set (BalancingPreconditioner,
-//    the coarse-grid correction) restarts them when it changes.
+//    pressure. With a Preconditioner M^-1 (e.g. FourierPreconditioner; only
+//    this form takes one) they are built from z = M^-1 g instead of g,
+//    which cuts the iteration count on rough surfaces at the price of one
+//    more transform per iteration. On large rough contacts a few cells
+//    enter in almost every iteration, so restarting at every entry would
+//    turn the method into steepest descent; Powell's rule restarts only
+//    when the new gap is no longer nearly orthogonal to the previous
+//    direction on the search set, |sum g t_old| > 0.2 sum g z (Powell 1977,
+//    Math. Programming 12, 241), or when more than 1 % of the contact cells
+//    enter at once. A preconditioner that adapts to the active set
+//    (BalancingPreconditioner, the coarse-grid correction) restarts them
+//    when it changes.
 // docs/solvers.md says what each form costs and saves.
 #pragma once
 
@@ -56,9 +56,12 @@
 
 namespace halfspace::solvers {
 
+enum class PolonskyKeerForm { paper, projected };
+
 struct PolonskyKeerOptions {
   double tolerance = 1e-10;    // relative residual, see the stopping criterion above
   int max_iterations = 10000;  // status iteration_limit when reached
+  PolonskyKeerForm form = PolonskyKeerForm::paper;
   // Called once per iteration with (iteration, residual); may be empty. It
   // runs on the calling thread between iterations, so it may print.
   std::function<void(int, double)> progress;
@@ -72,7 +75,8 @@ class PolonskyKeer final : public ContactSolver {
  public:
   // Keeps a reference to `op` (which must outlive the solver) and allocates
   // the workspace once; solve() then allocates nothing inside its loop.
-  // `preconditioner`, if given, must outlive the solver too.
+  // `preconditioner`, if given, must outlive the solver too; it needs the
+  // projected form (InputError otherwise).
   explicit PolonskyKeer(InfluenceOperator& op, PolonskyKeerOptions options = {},
                         Preconditioner* preconditioner = nullptr);
 
