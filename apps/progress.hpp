@@ -23,14 +23,14 @@ class Progress {
 
   // A step begins; `load` describes it, e.g. "mean pressure 2e+05 Pa".
   void start_step(std::size_t step, std::string load);
-  // One solver iteration (the SolverSettings::progress callback). Redraws at
+  // One solver iteration (the SolverOptions::progress callback). Redraws at
   // most every kInterval, and not before kInterval has passed, so quick
   // solves print nothing.
   void iteration(int iteration, double residual);
   // Removes the line (before the summary is printed).
   void clear();
 
-  // A callback for SolverSettings::progress that feeds iteration(); empty
+  // A callback for SolverOptions::progress that feeds iteration(); empty
   // when inactive, so the solver does not even call it.
   std::function<void(int, double)> callback();
 

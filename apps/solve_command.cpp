@@ -38,7 +38,7 @@ int run_solve(const SolveSetup& setup) {
   const std::optional<PlotTool> plot =
       setup.plot ? std::optional<PlotTool>(find_plot_tool({"--plot", "drop --plot", {}})) : std::nullopt;
   Progress progress(!setup.quiet, 1, setup.solver.tolerance);
-  solvers::SolverSettings settings = setup.solver;
+  solvers::SolverOptions settings = setup.solver;
   settings.progress = progress.callback();
   std::optional<Activity> activity(std::in_place, fmt::format("building the solver ({})", on_grid));
   std::unique_ptr<ContactSolver> solver = solvers::make_solver(setup.grid, setup.e_star, settings);

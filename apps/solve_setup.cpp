@@ -153,42 +153,37 @@ std::pair<Loading, std::vector<double>> loading_from(const SolveOptions& o) {
   return {loading, values};
 }
 
-solvers::SolverSettings solver_settings_from(const SolveOptions& o) {
-  solvers::SolverSettings solver;
-  if (o.solver) {
-    const std::vector<std::string> names = solvers::solver_names();
-    if (std::find(names.begin(), names.end(), *o.solver) == names.end()) {
-      throw InputError(
-          fmt::format("{} is invalid: the solver must be one of {}", o.describe("solver"), fmt::join(names, ", ")));
-    }
-    solver.name = *o.solver;
+// The solver flags mapped onto SolverOptions, whose validate() holds every
+// rule; a broken one is restated with the flag (or config key) it came from.
+template <class Function>
+auto with_solver_flags(const SolveOptions& o, Function&& function) {
+  try {
+    return function();
+  } catch (const solvers::SolverOptionError& error) {
+    const std::string& option = error.option();
+    const std::string_view key = option == "tolerance"             ? "tol"
+                                 : option == "max_iterations"      ? "max-iter"
+                                 : option.starts_with("deflation") ? "deflation-block"
+                                                                   : "solver";
+    throw InputError(fmt::format("{} {}", o.describe(key), error.rule()));
   }
-  if (o.tol) {
-    if (!(std::isfinite(*o.tol) && *o.tol > 0.0 && *o.tol < 1.0)) {
-      throw InputError(fmt::format("{} is invalid: the tolerance must be in (0, 1)", o.describe("tol")));
+}
+
+solvers::SolverOptions solver_options_from(const SolveOptions& o) {
+  solvers::SolverOptions solver;
+  with_solver_flags(o, [&] {
+    if (o.solver) solver.type = solvers::parse_solver_type(*o.solver);
+    if (o.tol) solver.tolerance = *o.tol;
+    // Beyond int, a limit is no limit: validate() sees the nearest int.
+    if (o.max_iter) solver.max_iterations = static_cast<int>(std::clamp<long long>(*o.max_iter, INT_MIN, INT_MAX));
+    if (o.deflation_block) {
+      // 0 turns the correction off; a negative B wraps to a size validate() refuses.
+      solver.deflation.mode =
+          *o.deflation_block == 0 ? solvers::DeflationOptions::Mode::off : solvers::DeflationOptions::Mode::on;
+      if (*o.deflation_block != 0) solver.deflation.block = static_cast<std::size_t>(*o.deflation_block);
     }
-    solver.tolerance = *o.tol;
-  }
-  if (o.max_iter) {
-    if (*o.max_iter < 1 || *o.max_iter > INT_MAX) {
-      throw InputError(fmt::format("{} is invalid: need 1 <= max-iter <= {}", o.describe("max-iter"), INT_MAX));
-    }
-    if (solver.name == "lcpquad") {
-      // Silently ignoring the limit would let a user believe it applied.
-      throw InputError(fmt::format(
-          "{} does not apply to solver 'lcpquad': ALGLIB's dense interior-point method has no iteration limit (it "
-          "stops at its own tolerance); drop --max-iter, or use --solver lemke, whose pivots it limits",
-          o.describe("max-iter")));
-    }
-    solver.max_iterations = static_cast<int>(*o.max_iter);
-  }
-  if (o.deflation_block) {
-    if (*o.deflation_block < 0 || *o.deflation_block > 256) {
-      throw InputError(
-          fmt::format("{} is invalid: need 0 (none) <= deflation-block <= 256", o.describe("deflation-block")));
-    }
-    solver.deflation_block = static_cast<std::size_t>(*o.deflation_block);
-  }
+    solver.validate();
+  });
   return solver;
 }
 
@@ -233,8 +228,8 @@ void check_load_scale(const SolveOptions& o, const Grid& grid, ControlMode mode,
 
 // "the solve (pk-multilevel, free boundary, 4194304 cells)", with the steps
 // of a sweep.
-std::string solve_description(const Grid& grid, const solvers::SolverSettings& solver, std::size_t steps) {
-  return fmt::format("the {} ({}, {} boundary, {} cells{})", steps > 1 ? "load sweep" : "solve", solver.name,
+std::string solve_description(const Grid& grid, const solvers::SolverOptions& solver, std::size_t steps) {
+  return fmt::format("the {} ({}, {} boundary, {} cells{})", steps > 1 ? "load sweep" : "solve", solvers::to_string(solver.type),
                      to_string(grid.boundary()), grid.size(),
                      steps > 1 ? fmt::format(", {} steps", steps) : std::string());
 }
@@ -504,13 +499,12 @@ SolveSetup make_solve_setup(const SolveOptions& options) {
   check_surface_choice(options);
   const double e_star = material_from(options);
   auto [loading, load_values] = loading_from(options);
-  solvers::SolverSettings solver = solver_settings_from(options);
+  solvers::SolverOptions solver = solver_options_from(options);
   const int threads = threads_from(options);
-  // measure by default: its planning cost is paid once per grid size (the
-  // wisdom file keeps it) and buys transforms 1.4-2x faster from 512^2 up
-  // (docs/solvers.md).
-  solver.fft_planning = in_context(options.name("fft-planning"),
-                                   [&] { return parse_fft_planning(options.fft_planning.value_or("measure")); });
+  if (options.fft_planning) {
+    solver.fft_planning =
+        in_context(options.name("fft-planning"), [&] { return parse_fft_planning(*options.fft_planning); });
+  }
   const Boundary boundary =
       in_context(options.name("boundary"), [&] { return parse_boundary(options.boundary.value_or("free")); });
   fs::path output = output_from(options);
@@ -528,6 +522,7 @@ SolveSetup make_solve_setup(const SolveOptions& options) {
     throw InputError(fmt::format("surface {} has {} heights for a {} grid", surface.source, surface.heights.size(),
                                  surface.grid.shape_string()));
   }
+  with_solver_flags(options, [&] { solver.validate(surface.grid); });
   return SolveSetup{std::move(surface.grid),
                     std::move(surface.heights),
                     std::move(surface.source),

@@ -10,7 +10,7 @@
 #include "halfspace/fft/fft_planning.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/solvers/loading.hpp"
-#include "halfspace/solvers/solver_factory.hpp"
+#include "halfspace/solvers/solver_options.hpp"
 #include "solve_options.hpp"
 
 namespace halfspace::app {
@@ -23,9 +23,9 @@ struct SolveSetup {
   std::string height_source;  // "file.h5:/height" or "sphere (radius = 0.01 m)"
   // Height-map preparation steps, one line each; empty if none.
   std::vector<std::string> preparation;
-  double e_star = 0.0;             // Pa
-  Loading loading;                 // a single solve's load; the first step of a sweep
-  solvers::SolverSettings solver;  // name, tolerance, iterations, FFT planning
+  double e_star = 0.0;            // Pa
+  Loading loading;                // a single solve's load; the first step of a sweep
+  solvers::SolverOptions solver;  // type, tolerance, iterations, FFT planning, deflation
   int threads = 1;
   std::filesystem::path output;
   bool quiet = false;

@@ -66,8 +66,7 @@ void print_summary(std::FILE* out, const SolveSetup& setup, const SolveResult& r
   row(out, "grid", grid_text(grid));
   row(out, "E*", fmt::format("{:.6g} Pa", setup.e_star));
   row(out, "load", load_text(setup));
-  // Only the Polonsky-Keer solvers ("pk", "pk-fourier", "pk-multilevel") use FFTs.
-  const bool uses_fft = setup.solver.name.starts_with("pk");
+  const bool uses_fft = solvers::uses_fft(setup.solver.type);
   row(out, "solver",
       fmt::format("{}, {} thread{}{}", result.solver, setup.threads, setup.threads == 1 ? "" : "s",
                   uses_fft ? fmt::format(", FFT planning {}", to_string(setup.solver.fft_planning)) : ""));
@@ -93,6 +92,9 @@ void print_summary(std::FILE* out, const SolveSetup& setup, const SolveResult& r
                           d.declined > 0      ? "contact too dense for its coarse matrix"
                           : d.fast_rate > 0.0 ? fmt::format("fast without it: {:.2f} per iteration", d.fast_rate)
                                               : "contact set never settled"));
+  }
+  for (std::size_t k = 0; k < result.warnings.size(); ++k) {
+    row(out, k == 0 ? "warnings" : "", result.warnings[k]);
   }
   row(out, "residual", fmt::format("{:.3e} (tolerance {:.3e})", result.residual, result.tolerance));
   row(out, "total force", fmt::format("{:.6g} {}", result.total_force, force_unit(grid)));

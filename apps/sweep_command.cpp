@@ -104,7 +104,7 @@ int run_sweep(const SolveSetup& setup) {
       setup.plot ? std::optional<PlotTool>(find_plot_tool({"--plot", "drop --plot", {}})) : std::nullopt;
 
   Progress progress(!setup.quiet, setup.load_values.size(), setup.solver.tolerance);
-  solvers::SolverSettings settings = setup.solver;
+  solvers::SolverOptions settings = setup.solver;
   settings.progress = progress.callback();
   const std::unique_ptr<ContactSolver> solver = solvers::make_solver(setup.grid, setup.e_star, settings);
 

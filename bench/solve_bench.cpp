@@ -135,7 +135,7 @@ RoughSurface self_affine_surface(std::size_t n) {
 }
 
 struct SolveCase {
-  std::string solver;  // a solvers::solver_names() entry: "pk", "pk-fourier" or "pk-multilevel"
+  std::string solver;  // a solvers::SolverType name: "pk", "pk-fourier" or "pk-multilevel"
   std::string shape;   // "hertz_free_2d", "rough_periodic_2d" or "rough_domain_2d"
 };
 
@@ -187,8 +187,8 @@ SolveSetup& solve_setup(const SolveCase& solve_case, std::size_t n, int threads)
     setup->initial_gap = geometry::initial_gap_from_heights(geometry::make_surface_heights(*setup->grid, sphere));
     setup->loading = Loading::force(kForce);
   }
-  solvers::SolverSettings settings;
-  settings.name = solve_case.solver;
+  solvers::SolverOptions settings;
+  settings.type = solvers::parse_solver_type(solve_case.solver);
   settings.tolerance = kTolerance;
   settings.fft_planning = FftPlanning::estimate;
   setup->solver = solvers::make_solver(*setup->grid, kEStar, settings);

@@ -34,7 +34,7 @@ int main(int argc, char** argv) {
     // 2. The default solver (Polonsky-Keer, Fourier-preconditioned, on the
     //    FFT operator) for a rubber-like E* = 10 MPa.
     const double e_star = 1e7;  // Pa
-    const std::unique_ptr<ContactSolver> solver = solvers::make_solver(grid, e_star, solvers::SolverSettings{});
+    const std::unique_ptr<ContactSolver> solver = solvers::make_solver(grid, e_star, solvers::SolverOptions{});
 
     // 3. Mean pressures p = x E* h'_rms for x from 0.005 to 0.05, solved in
     //    order, each step warm-started from the previous one.

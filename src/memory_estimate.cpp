@@ -100,27 +100,33 @@ double dense_bytes(const Extents& g) {
   return 5.0 * kDouble * n * n;
 }
 
-bool is_dense(const std::string& name) {
-  return name == "lemke" || name == "lcpquad";
+bool is_dense(solvers::SolverType type) {
+  return type == solvers::SolverType::lemke || type == solvers::SolverType::lcpquad;
+}
+
+// Whether the fine Polonsky-Keer solve holds the block deflation's fields.
+bool deflated(const Grid& grid, const solvers::SolverOptions& options) {
+  using Mode = solvers::DeflationOptions::Mode;
+  if (options.deflation.mode == Mode::on) return true;
+  return options.type == solvers::SolverType::pk_multilevel && options.deflation.mode == Mode::automatic &&
+         options.deflation.automatic_applies(grid);
 }
 
 // The peak of the solve itself, besides the heights and the initial gap
 // the program holds and the fields of the finished steps of a sweep.
-double solver_peak(const Grid& grid, const solvers::SolverSettings& settings) {
+double solver_peak(const Grid& grid, const solvers::SolverOptions& settings) {
   const Extents g(grid);
-  const double history = kDouble * (static_cast<double>(std::max(settings.max_iterations, 0)) + 1.0);
-  if (is_dense(settings.name)) return dense_bytes(g) + result_bytes(g, history);
-  if (settings.name == "pk") return level_bytes(g, false, false, history) + result_bytes(g, history);
-  if (settings.name == "pk-fourier") {
-    const bool deflated = settings.deflation_block.value_or(0) > 0;
-    return level_bytes(g, true, deflated, history) + result_bytes(g, history);
+  const double history = kDouble * (static_cast<double>(std::max(settings.iteration_limit(), 0)) + 1.0);
+  if (is_dense(settings.type)) return dense_bytes(g) + result_bytes(g, history);
+  if (settings.type == solvers::SolverType::pk) return level_bytes(g, false, false, history) + result_bytes(g, history);
+  if (settings.type == solvers::SolverType::pk_fourier) {
+    return level_bytes(g, true, deflated(grid, settings), history) + result_bytes(g, history);
   }
   // pk-multilevel: the fine solver is built first and kept. Its fine solve
   // adds the result; before that the coarse start holds the averaged gap of
   // every coarser level, the first coarser level's solver and result, and
   // the prolonged start on the fine grid.
-  const bool deflated = settings.deflation_block ? *settings.deflation_block > 0 : solvers::default_deflation(grid);
-  const double fine = level_bytes(g, true, deflated, history);
+  const double fine = level_bytes(g, true, deflated(grid, settings), history);
   const Extents coarse = g.coarser();
   const double shrink = g.line ? 0.5 : 0.25;
   const double coarse_gaps = kDouble * g.cells() * shrink / (1.0 - shrink);
@@ -131,11 +137,11 @@ double solver_peak(const Grid& grid, const solvers::SolverSettings& settings) {
 
 }  // namespace
 
-double solve_memory_estimate(const Grid& grid, const solvers::SolverSettings& settings, std::size_t load_steps) {
+double solve_memory_estimate(const Grid& grid, const solvers::SolverOptions& settings, std::size_t load_steps) {
   const Extents g(grid);
   const double cells = g.cells();
   const double steps = static_cast<double>(std::max<std::size_t>(load_steps, 1));
-  const double history = kDouble * (static_cast<double>(std::max(settings.max_iterations, 0)) + 1.0);
+  const double history = kDouble * (static_cast<double>(std::max(settings.iteration_limit(), 0)) + 1.0);
   const double heights_and_gap = 2.0 * kDouble * cells;
   // A sweep keeps each finished step's fields and cluster sizes (at most
   // one cluster per two cells).

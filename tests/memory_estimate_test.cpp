@@ -27,7 +27,7 @@ TEST(MemoryEstimateTest, PerCellCostsMatchTheMeasuredRanges) {
   // docs/performance.md: 70-86 B per cell for periodic 2D solves with
   // pk-multilevel, 100-120 for free ones; the estimate adds the writing of
   // the file (up to two uncompressed images) and stays within 1.5x of those.
-  const solvers::SolverSettings settings;
+  const solvers::SolverOptions settings;
   const auto per_cell = [&](Boundary boundary) {
     const Grid grid = Grid::plane(4096, 4096, 1e-6, 1e-6, boundary);
     return (solve_memory_estimate(grid, settings) - kProgramBytes) / static_cast<double>(grid.size());
@@ -40,12 +40,12 @@ TEST(MemoryEstimateTest, PerCellCostsMatchTheMeasuredRanges) {
 
 TEST(MemoryEstimateTest, SweepsAndDenseSolversCostMore) {
   const Grid grid = Grid::line(4096, 1e-6, Boundary::free);
-  solvers::SolverSettings settings;
+  solvers::SolverOptions settings;
   const double one = solve_memory_estimate(grid, settings, 1);
   // Each kept step: three fields, cluster sizes, the residual history and
   // its part of the file image.
   EXPECT_GT(solve_memory_estimate(grid, settings, 11) - one, 10 * 3 * 8.0 * 4096);
-  settings.name = "lemke";
+  settings.type = solvers::SolverType::lemke;
   // Five dense 4096 x 4096 matrices.
   EXPECT_GT(solve_memory_estimate(grid, settings), 5 * 8.0 * 4096 * 4096);
 }
@@ -55,7 +55,7 @@ TEST(MemoryEstimateTest, LargestGridsGiveFiniteEstimates) {
   // overflow (bytes are doubles; 100 B per cell is past 2^63) and come out
   // near 2^57 * 100.
   const Grid grid = Grid::plane(std::size_t{1} << 29, std::size_t{1} << 28, 1e-6, 1e-6, Boundary::free);
-  const double estimate = solve_memory_estimate(grid, solvers::SolverSettings{});
+  const double estimate = solve_memory_estimate(grid, solvers::SolverOptions{});
   EXPECT_TRUE(std::isfinite(estimate));
   EXPECT_GT(estimate, 100.0 * std::pow(2.0, 57));
   EXPECT_GT(generate_memory_estimate(grid), 24.0 * std::pow(2.0, 57));

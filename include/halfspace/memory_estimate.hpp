@@ -16,7 +16,7 @@
 #include <string>
 
 #include "halfspace/grid.hpp"
-#include "halfspace/solvers/solver_factory.hpp"
+#include "halfspace/solvers/solver_options.hpp"
 
 namespace halfspace {
 
@@ -31,7 +31,7 @@ inline constexpr double kProgramBytes = 40.0 * 1024 * 1024;
 // pk-multilevel, the fine solve) and the writing of the result file.
 // Bytes are doubles: the count for a grid of 2^32 x 2^32 cells does not fit
 // in std::size_t.
-double solve_memory_estimate(const Grid& grid, const solvers::SolverSettings& settings, std::size_t load_steps = 1);
+double solve_memory_estimate(const Grid& grid, const solvers::SolverOptions& settings, std::size_t load_steps = 1);
 
 // Peak bytes of `halfspace generate` on `grid`: kProgramBytes, the
 // synthesis transform of a self-affine surface and the heights (the

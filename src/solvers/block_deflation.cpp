@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "halfspace/error.hpp"
+#include "halfspace/solvers/solver_options.hpp"
 
 namespace halfspace::solvers {
 namespace {
@@ -36,18 +37,20 @@ double dot(const std::vector<double>& a, const std::vector<double>& b) {
 
 void BlockDeflationOptions::validate() const {
   if (block < 1 || block > kMaxBlock) {
-    throw InputError(fmt::format("deflation block = {} is invalid: allowed range is 1 to {} cells", block, kMaxBlock));
+    throw SolverOptionError("deflation.block", fmt::format("{}", block),
+                            fmt::format("is invalid: allowed range is 1 to {} cells", kMaxBlock));
   }
   if (!(max_pair_terms > 0.0)) {
-    throw InputError(fmt::format("deflation pair terms = {} is invalid: must be positive", max_pair_terms));
+    throw SolverOptionError("deflation.max_pair_terms", fmt::format("{}", max_pair_terms),
+                            "is invalid: must be positive");
   }
   if (!(coarse_tolerance > 0.0 && coarse_tolerance < 1.0)) {
-    throw InputError(
-        fmt::format("deflation coarse tolerance = {} is invalid: allowed range is (0, 1)", coarse_tolerance));
+    throw SolverOptionError("deflation.coarse_tolerance", fmt::format("{}", coarse_tolerance),
+                            "is invalid: allowed range is (0, 1)");
   }
   if (coarse_max_iterations < 1) {
-    throw InputError(
-        fmt::format("deflation coarse iterations = {} is invalid: must be at least 1", coarse_max_iterations));
+    throw SolverOptionError("deflation.coarse_max_iterations", fmt::format("{}", coarse_max_iterations),
+                            "is invalid: must be at least 1");
   }
 }
 
@@ -73,19 +76,24 @@ bool BlockDeflation::neighbour_block(std::size_t I, int dy, int dx, std::size_t&
   return true;
 }
 
+void BlockDeflation::require_covers(const Grid& grid, std::size_t block) {
+  if (grid.dimension() != 2) {
+    throw SolverOptionError("deflation.block", fmt::format("{}", block),
+                            fmt::format("does not apply to the {} {}D grid: block deflation needs a 2D grid",
+                                        to_string(grid.boundary()), grid.dimension()));
+  }
+  if (!covers(grid, block)) {
+    throw SolverOptionError("deflation.block", fmt::format("{}", block),
+                            fmt::format("is invalid for the {} grid: it must divide nx and ny and leave at least {} "
+                                        "blocks per axis",
+                                        grid.shape_string(), kMinBlocksPerAxis));
+  }
+}
+
 BlockDeflation::BlockDeflation(const Grid& grid, BlockDeflationOptions options) : grid_(grid), options_(options) {
   options_.validate();
-  if (grid_.dimension() != 2) {
-    throw InputError(fmt::format("block deflation needs a 2D grid, not a {} {}D grid", to_string(grid_.boundary()),
-                                 grid_.dimension()));
-  }
+  require_covers(grid_, options_.block);
   const std::size_t b = options_.block;
-  if (!covers(grid_, b)) {
-    throw InputError(fmt::format(
-        "deflation block = {} is invalid for the {} grid: it must divide nx and ny and leave at least {} blocks "
-        "per axis",
-        b, grid_.shape_string(), kMinBlocksPerAxis));
-  }
   blocks_x_ = grid_.nx() / b;
   blocks_y_ = grid_.ny() / b;
   const std::size_t m = coarse_size();

@@ -128,11 +128,12 @@ ContactLcp make_contact_lcp(const Grid& grid, double e_star, const Eigen::Matrix
 }
 
 double contact_residual(std::span<const double> initial_gap, const Eigen::ArrayXd& pressure,
-                        const Eigen::ArrayXd& displacement, const Eigen::ArrayXd& gap) {
+                        const Eigen::ArrayXd& displacement, const Eigen::ArrayXd& gap, double uniform_response_range) {
   const auto cells = static_cast<double>(pressure.size());
   const auto [g0_min, g0_max] = std::minmax_element(initial_gap.begin(), initial_gap.end());
-  const double gap_scale = (*g0_max - *g0_min) + (displacement.maxCoeff() - displacement.minCoeff());
   const double pressure_mean = pressure.sum() / cells;
+  const double gap_scale = (*g0_max - *g0_min) + std::max(displacement.maxCoeff() - displacement.minCoeff(),
+                                                          pressure_mean * uniform_response_range);
   const double weighted_gap = (pressure * gap.abs()).sum();
   const double overlap = (-gap).max(0.0).sum();
   const double numerator = (pressure_mean > 0.0 ? weighted_gap / pressure_mean : 0.0) + overlap;
@@ -193,7 +194,9 @@ SolveResult DenseContactSolver::solve(std::span<const double> initial_gap, const
   result.mean_pressure = result.total_force / grid_.domain_area();
   result.max_pressure = result.pressure.maxCoeff();
   result.contact_fraction = static_cast<double>((result.pressure > 0.0).count()) / static_cast<double>(n);
-  result.residual = contact_residual(initial_gap, result.pressure, result.displacement, result.gap);
+  const Eigen::VectorXd uniform_response = influence_.rowwise().sum();  // K 1
+  result.residual = contact_residual(initial_gap, result.pressure, result.displacement, result.gap,
+                                     uniform_response.maxCoeff() - uniform_response.minCoeff());
   result.residual_history = {result.residual};
 
   switch (lcp.status) {

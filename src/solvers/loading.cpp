@@ -7,7 +7,7 @@
 
 #include "halfspace/error.hpp"
 
-namespace halfspace {
+namespace halfspace::solvers {
 
 std::string_view to_string(ControlMode mode) {
   switch (mode) {
@@ -27,4 +27,4 @@ void Loading::validate() const {
   }
 }
 
-}  // namespace halfspace
+}  // namespace halfspace::solvers

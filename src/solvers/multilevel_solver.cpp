@@ -24,20 +24,6 @@ SolveResult solve_level(ContactSolver& level, std::span<const double> gap, const
 
 }  // namespace
 
-void MultilevelOptions::validate() const {
-  if (!(coarse_tolerance > 0.0 && coarse_tolerance < 1.0)) {
-    throw InputError(fmt::format("coarse tolerance = {} is invalid: allowed range is (0, 1)", coarse_tolerance));
-  }
-  if (min_cells_per_axis < 2) {
-    throw InputError(
-        fmt::format("minimum coarse cells per axis = {} is invalid: must be at least 2", min_cells_per_axis));
-  }
-  if (!(warm_start_max_load_ratio >= 1.0)) {
-    throw InputError(
-        fmt::format("warm start load ratio = {} is invalid: must be at least 1", warm_start_max_load_ratio));
-  }
-}
-
 bool MultilevelSolver::warm_start_is_close(std::span<const double> pressure, const Loading& loading) const {
   if (!loading.load_controlled()) return true;
   const double target = loading.target_force(grid_.domain_area());

@@ -7,14 +7,14 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
-#include <limits>
 #include <utility>
-#include <vector>
 
 #include "halfspace/error.hpp"
 #include "halfspace/linalg/parallel.hpp"
+#include "halfspace/solvers/pressure_bounds.hpp"
 
 namespace halfspace::solvers {
 namespace {
@@ -26,34 +26,18 @@ using linalg::sums;
 // exact one every this many updates keeps rounding from accumulating.
 constexpr int kUpdatesBetweenExactProducts = 50;
 
-// ConjugacyRestart::powell: Powell's threshold, and the share of the contact
-// cells that may enter in one step without a restart.
+// Powell's restart threshold, and the share of the contact cells that may
+// enter in one step without a restart (preconditioned form, see the header).
 constexpr double kPowellRestart = 0.2;
 constexpr double kEntriesKept = 0.01;
 
-// Deflation joins once a step clips at most this share of the search set:
-// while the contact set still moves by thousands of cells, the coarse
-// correction's block-wide pressure changes clip more cells than they settle
-// (at 2048^2 the iteration then fails to converge), and once it has settled
-// the correction takes the iterations' rate from 0.7-0.75 to about 0.3
-// (docs/development-log.md, block deflation).
-constexpr double kDeflateBelowClipped = 0.01;
-// ... and only where the iteration without it is slow: a deflated iteration
-// costs about twice as many products and converges at about 0.3 per
-// iteration, which pays against a rate above 0.3^(1/2) = 0.55, measured
-// over two settled undeflated steps. Rough contacts run at 0.7-0.8 there; a
-// Hertz contact at 0.2-0.4, where deflation saved one iteration in ten and
-// doubled the time (docs/development-log.md, when it joins).
-constexpr double kDeflateAboveRate = 0.55;
-constexpr int kRateSteps = 2;
-
 struct Problem {
   std::span<const double> initial_gap;
-  bool load_controlled;
-  double target_force;  // load control only
-  double approach;      // displacement control only
-  double cell_area;
-  double initial_gap_range;  // ptp(initial_gap)
+  bool load_controlled = false;
+  double target_force = 0.0;  // load control only
+  double approach = 0.0;      // displacement control only
+  double cell_area = 0.0;
+  double initial_gap_range = 0.0;  // ptp(initial_gap)
 };
 
 void check_size(std::string_view what, std::size_t got, std::size_t expected) {
@@ -62,11 +46,356 @@ void check_size(std::string_view what, std::size_t got, std::size_t expected) {
   }
 }
 
-// Starting pressure for displacement control: each cell pushed in by the
-// local overlap alone, p = max(approach - g0, 0) / K_ii.
-void local_overlap_pressure(std::span<const double> gap, double self_influence, double* pressure) {
-  for_each_index(gap.size(), [&](std::size_t i) { pressure[i] = std::max(-gap[i], 0.0) / self_influence; });
+// The problem of a solve, checked.
+Problem make_problem(const Grid& grid, std::span<const double> initial_gap, const Loading& loading) {
+  const std::size_t n = grid.size();
+  check_size("initial gap", initial_gap.size(), n);
+  loading.validate();
+  const double gap_max = linalg::max_of(n, [&](std::size_t i) { return initial_gap[i]; });
+  const double gap_min = linalg::min_of(n, [&](std::size_t i) { return initial_gap[i]; });
+  if (!std::isfinite(gap_max) || !std::isfinite(gap_min)) {
+    throw InputError("initial gap holds a non-finite value");
+  }
+  Problem problem{initial_gap, loading.load_controlled(), 0.0, 0.0, grid.cell_area(), gap_max - gap_min};
+  if (problem.load_controlled) {
+    problem.target_force = loading.target_force(grid.domain_area());
+  } else {
+    problem.approach = loading.value;
+  }
+  if (!problem.load_controlled && grid.periodic()) {
+    // With a zero-mean displacement the mean gap is mean(g0) - approach, and
+    // it cannot be negative: at mean(g0) the pressure is already infinite.
+    const double mean_gap = linalg::sum(n, [&](std::size_t i) { return initial_gap[i]; }) / static_cast<double>(n);
+    if (problem.approach >= mean_gap) {
+      throw InputError(
+          fmt::format("approach = {} m is invalid for a periodic surface: it must be below the mean initial gap {} m "
+                      "(full contact needs infinite pressure there)",
+                      problem.approach, mean_gap));
+    }
+  }
+  return problem;
 }
+
+// One solve: the iterate and the paper's steps, each one or two passes over
+// the cells. The fields live in the result (p, u = K p, g) and in the
+// solver's workspace (t, and r, which holds z = M^-1 g, then K t, then the
+// step's correction c).
+class Iteration {
+ public:
+  Iteration(InfluenceOperator& op, Preconditioner* preconditioner, const PolonskyKeerOptions& options,
+            const Problem& problem, SolveResult& result, Eigen::ArrayXd& direction, Eigen::ArrayXd& image,
+            double& uniform_response_range)
+      : op_(op),
+        preconditioner_(preconditioner),
+        options_(options),
+        problem_(problem),
+        result_(result),
+        n_(op.grid().size()),
+        p_(result.pressure.data()),
+        u_(result.displacement.data()),
+        g_(result.gap.data()),
+        t_(direction.data()),
+        r_(image.data()),
+        projected_(options.form == PolonskyKeerForm::projected),
+        set_{p_, g_, projected_, problem.load_controlled && projected_},
+        uniform_response_range_(uniform_response_range),
+        approach_(problem.approach) {
+    if (uniform_response_range_ < 0.0) {
+      // ptp(K 1) for the gap scale (see the header), once per solver; t and
+      // r are free until the iteration starts.
+      direction.setOnes();
+      op_.apply({t_, n_}, {r_, n_});
+      ++result_.operator_applications;
+      uniform_response_range_ = linalg::max_of(n_, [&](std::size_t i) { return r_[i]; }) -
+                                linalg::min_of(n_, [&](std::size_t i) { return r_[i]; });
+    }
+    direction.setZero();
+  }
+
+  // Step 0: the starting pressure, projected onto the bounds. Load control:
+  // the warm start or a uniform pressure, scaled to the target force.
+  // Displacement control: the warm start or the local-overlap guess.
+  void start(bool warm) {
+    for_each_index(n_, [&](std::size_t i) { p_[i] = warm ? bounds_.project(p_[i]) : 0.0; });
+    if (problem_.load_controlled) {
+      double force = problem_.cell_area * linalg::sum(n_, [&](std::size_t i) { return p_[i]; });
+      if (!(force > 0.0)) {
+        for_each_index(n_, [&](std::size_t i) { p_[i] = 1.0; });
+        force = problem_.cell_area * static_cast<double>(n_);
+      }
+      const double scale = problem_.target_force / force;
+      for_each_index(n_, [&](std::size_t i) { p_[i] *= scale; });
+    } else if (!warm) {
+      for_each_index(n_, [&](std::size_t i) { g_[i] = problem_.initial_gap[i] - problem_.approach; });
+      local_overlap_pressure();
+    }
+    exact_displacement();
+  }
+
+  // Step 1: the gap of the current pressure, its approach under load
+  // control, and the residual (see the header), from an exact product every
+  // kUpdatesBetweenExactProducts updates and whenever it would stop.
+  void evaluate(int iteration) {
+    if (updates_since_exact_ >= kUpdatesBetweenExactProducts) exact_displacement();
+    measure();
+    if (residual_ <= options_.tolerance && updates_since_exact_ > 0) {
+      // Convergence is judged on the exact product only.
+      exact_displacement();
+      measure();
+    }
+    result_.residual_history.push_back(residual_);
+    if (options_.progress) options_.progress(iteration, residual_);
+  }
+
+  // Whether the iteration ends here, with the result's status.
+  bool finished(int iteration) {
+    if (residual_ <= options_.tolerance) {
+      result_.status = SolveStatus::converged;
+    } else if (!std::isfinite(residual_)) {
+      result_.status = SolveStatus::breakdown;
+      result_.message = fmt::format("residual became non-finite at iteration {}", iteration);
+    } else if (iteration == options_.max_iterations) {
+      result_.status = SolveStatus::iteration_limit;
+      result_.message = fmt::format("no convergence after {} iterations: residual {:.3e} > tolerance {:.3e}", iteration,
+                                    residual_, options_.tolerance);
+    } else {
+      return false;
+    }
+    return true;
+  }
+
+  // Displacement control can lose every contact cell; the iteration then
+  // starts again from the local overlap of the current gap.
+  bool restarted_without_contact() {
+    if (contact_cells_ > 0.0) return false;
+    local_overlap_pressure();
+    exact_displacement();
+    conjugate_ = false;
+    return true;
+  }
+
+  // Step 2: z = g, or z = M^-1 g, on the search set; under load control
+  // mean-free there, so that the step keeps the force (on C alone g is
+  // mean-free already: the approach makes it so). G = sum over the set of
+  // g z. An adapting M^-1 that changed restarts the conjugate directions.
+  void precondition() {
+    z_ = g_;
+    if (!projected_) {
+      search_cells_ = contact_cells_;
+      search_gap_sum_ = 0.0;
+      z_mean_ = 0.0;
+      search_norm_ = gap_norm_;
+      return;
+    }
+    if (preconditioner_) {
+      z_ = r_;  // evaluate() left g on the search set there
+      if (preconditioner_->adapt(set_, result_.residual_history)) conjugate_ = false;
+      preconditioner_->apply({r_, n_}, {r_, n_});
+      ++result_.preconditioner_applications;
+    }
+    const double* z = z_;
+    const auto [z_sum, gz, cells, gap_sum] = sums<4>(n_, [&](std::size_t i) {
+      const double in_set = set_.contains(i) ? 1.0 : 0.0;
+      return std::array<double, 4>{in_set * z[i], in_set * (g_[i] * z[i]), in_set, in_set * g_[i]};
+    });
+    search_cells_ = cells;
+    search_gap_sum_ = gap_sum;
+    z_mean_ = set_.mean_free ? z_sum / search_cells_ : 0.0;
+    search_norm_ = gz - z_mean_ * search_gap_sum_;
+  }
+
+  // Step 3: the conjugate direction t = z + beta t on the search set, or
+  // t = z when restarting.
+  void conjugate() {
+    if (projected_ && !(std::abs(gap_along_direction_) <= kPowellRestart * search_norm_)) conjugate_ = false;
+    const double beta = conjugate_ ? search_norm_ / previous_norm_ : 0.0;
+    const double* z = z_;
+    const double z_mean = z_mean_;
+    for_each_index(n_, [&](std::size_t i) { t_[i] = set_.contains(i) ? (z[i] - z_mean) + beta * t_[i] : 0.0; });
+    previous_norm_ = search_norm_;
+  }
+
+  // Steps 4-5: the image r = K t, mean-corrected on the search set under
+  // load control, and the step length tau, the exact minimiser along t on
+  // the current set. After a restart tau is positive; a conjugate direction
+  // can give a negative one, which is still a valid step, but then no cell
+  // enters and the next step restarts. False (breakdown) if t.Kt is not
+  // positive.
+  bool step_length(int iteration) {
+    op_.apply({t_, n_}, {r_, n_});
+    ++result_.operator_applications;
+    const auto [r_sum, t_sum, gt, rt] = sums<4>(n_, [&](std::size_t i) {
+      const double in_set = set_.contains(i) ? 1.0 : 0.0;
+      return std::array<double, 4>{in_set * r_[i], in_set * t_[i], in_set * (g_[i] * t_[i]), in_set * (r_[i] * t_[i])};
+    });
+    const double r_mean = problem_.load_controlled ? r_sum / search_cells_ : 0.0;
+    const double curvature = rt - r_mean * t_sum;
+    tau_ = gt / curvature;
+    if (curvature > 0.0 && std::isfinite(tau_)) return true;
+    result_.status = SolveStatus::breakdown;
+    result_.message = fmt::format("non-positive curvature t.Kt = {:.3e} at iteration {}", curvature, iteration);
+    return false;
+  }
+
+  // Steps 6-9: p = P(p - tau t), P the projection onto the bounds; in the
+  // paper's form, cells out of contact that interpenetrate enter with
+  // pressure -tau g. The displacement follows without a new product:
+  // K(p - tau t) = u - tau r, plus K c for the correction c that the
+  // projection and entries add, zero once the contact set settles. The
+  // load is restored by scaling (K is linear: u scales with p). The
+  // addition of K c and the scaling are left to the next evaluation's first
+  // pass (Deferred).
+  void advance() {
+    const bool entries = !projected_;
+    const double tau = tau_;
+    const auto [new_pressure_sum, entered, corrected] = sums<3>(n_, [&](std::size_t i) {
+      const double moved = p_[i] - tau * t_[i];
+      double pi = bounds_.project(moved);
+      double entry = 0.0;
+      if (entries && pi == 0.0 && g_[i] < 0.0 && tau > 0.0) {
+        pi = -tau * g_[i];
+        entry = 1.0;
+      }
+      p_[i] = pi;
+      u_[i] -= tau * r_[i];
+      r_[i] = pi - moved;
+      return std::array<double, 3>{pi, entry, r_[i] != 0.0 ? 1.0 : 0.0};
+    });
+    const double entries_kept = projected_ ? kEntriesKept * contact_cells_ : 0.0;
+    conjugate_ = entered <= entries_kept && tau > 0.0;
+    if (preconditioner_) preconditioner_->observe_step({corrected, search_cells_});
+    if (corrected > 0.0) {
+      // g is recomputed from u in step 1, so it can hold K c until then.
+      op_.apply({r_, n_}, {g_, n_});
+      ++result_.operator_applications;
+      deferred_.add_correction = true;
+    }
+    ++updates_since_exact_;
+    if (problem_.load_controlled) deferred_.scale = problem_.target_force / (problem_.cell_area * new_pressure_sum);
+  }
+
+  // The result's summary of the final iterate, whose displacement and gap
+  // are current.
+  void summarise(int iterations) {
+    const auto [pressure_total, contact_total] = sums<2>(n_, [&](std::size_t i) {
+      return std::array<double, 2>{p_[i], p_[i] > 0.0 ? 1.0 : 0.0};
+    });
+    const Grid& grid = op_.grid();
+    result_.iterations = iterations;
+    result_.residual = residual_;
+    result_.approach = approach_;
+    result_.total_force = problem_.cell_area * pressure_total;
+    result_.mean_pressure = result_.total_force / grid.domain_area();
+    result_.max_pressure = linalg::max_of(n_, [&](std::size_t i) { return p_[i]; });
+    result_.contact_fraction = contact_total / static_cast<double>(n_);
+  }
+
+ private:
+  // Steps 8-9 end with work on p and u that the next evaluation does in its
+  // first pass rather than in passes of their own: adding K c (held in g)
+  // to u, and the load-restoring scale of p and u.
+  struct Deferred {
+    double scale = 1.0;
+    bool add_correction = false;
+  };
+
+  // Starting pressure from the overlap in g: each cell pushed in by the
+  // local overlap alone, p = max(-g, 0) / K_ii.
+  void local_overlap_pressure() {
+    const double self_influence = op_.self_influence();
+    for_each_index(n_, [&](std::size_t i) { p_[i] = std::max(-g_[i], 0.0) / self_influence; });
+  }
+
+  // u = K p afresh, after the deferred scale of p (K c is superseded).
+  void exact_displacement() {
+    if (deferred_.scale != 1.0) {
+      const double scale = deferred_.scale;
+      for_each_index(n_, [&](std::size_t i) { p_[i] *= scale; });
+    }
+    deferred_ = {};
+    op_.apply({p_, n_}, {u_, n_});
+    ++result_.operator_applications;
+    updates_since_exact_ = 0;
+  }
+
+  // Step 1's two passes: the deferred work and the contact set's mean gap
+  // (the approach), then g, the residual's sums, G = sum over the search set
+  // of g^2 and sum over it of g t_old (Powell's test). With a
+  // preconditioner, r receives g on the search set.
+  void measure() {
+    const Deferred deferred = std::exchange(deferred_, Deferred{});
+    const double scale = deferred.scale;
+    const bool add = deferred.add_correction;
+    const auto settled = linalg::sums_and_range<2>(n_, [&](std::size_t i) {
+      double ui = u_[i];
+      double pi = p_[i];
+      if (add) ui += g_[i];
+      if (scale != 1.0) {
+        ui *= scale;
+        pi *= scale;
+      }
+      if (add || scale != 1.0) {
+        u_[i] = ui;
+        p_[i] = pi;
+      }
+      const double in_contact = pi > 0.0 ? 1.0 : 0.0;
+      return std::pair{std::array<double, 2>{in_contact * (problem_.initial_gap[i] + ui), in_contact}, ui};
+    });
+    contact_cells_ = settled.sums[1];
+    // Under load control the approach makes the mean gap on the contact set vanish.
+    if (problem_.load_controlled) approach_ = settled.sums[0] / contact_cells_;
+    const bool store_gap = preconditioner_ != nullptr;
+    const double approach = approach_;
+    const auto [weighted_gap, overlap, pressure_sum, gap_norm, gap_along] = sums<5>(n_, [&](std::size_t i) {
+      g_[i] = problem_.initial_gap[i] + u_[i] - approach;
+      const double in_set = set_.contains(i) ? 1.0 : 0.0;  // a mask, not a branch
+      if (store_gap) r_[i] = in_set * g_[i];
+      return std::array<double, 5>{p_[i] * std::abs(g_[i]), std::max(-g_[i], 0.0), p_[i], in_set * (g_[i] * g_[i]),
+                                   in_set * (g_[i] * t_[i])};
+    });
+    gap_norm_ = gap_norm;
+    gap_along_direction_ = gap_along;
+    const double cells = static_cast<double>(n_);
+    // Never below the range the same load gives spread uniformly: a flat
+    // punch in full contact has ptp(g0) = ptp(K p) = 0 at its solution.
+    const double load_range = uniform_response_range_ * pressure_sum / cells;
+    const double gap_scale = problem_.initial_gap_range + std::max(settled.max - settled.min, load_range);
+    const double numerator = (pressure_sum > 0.0 ? weighted_gap * cells / pressure_sum : 0.0) + overlap;
+    residual_ = numerator == 0.0 ? 0.0 : numerator / (cells * gap_scale);
+  }
+
+  InfluenceOperator& op_;
+  Preconditioner* preconditioner_;
+  const PolonskyKeerOptions& options_;
+  const Problem& problem_;
+  SolveResult& result_;
+  const std::size_t n_;
+  double* p_;             // pressure
+  double* u_;             // displacement K p
+  double* g_;             // gap; K c between steps 8 and 1
+  double* t_;             // conjugate direction
+  double* r_;             // M^-1 g, then K t, then c
+  const bool projected_;  // the form (see the header)
+  const SearchSet set_;
+  const PressureBounds bounds_;
+  double& uniform_response_range_;  // ptp(K 1), the solver's
+
+  int updates_since_exact_ = 0;
+  Deferred deferred_;
+  double approach_;
+  double residual_ = 0.0;
+  double contact_cells_ = 0.0;
+  double gap_norm_ = 0.0;             // sum over the search set of g^2
+  double gap_along_direction_ = 0.0;  // sum over the search set of g t_old
+  const double* z_ = nullptr;         // z: g itself, or M^-1 g in r
+  double z_mean_ = 0.0;
+  double search_cells_ = 0.0;
+  double search_gap_sum_ = 0.0;
+  double search_norm_ = 0.0;    // G = sum over the search set of g (z - mean z)
+  double previous_norm_ = 1.0;  // G of the previous step
+  bool conjugate_ = false;      // false right after a restart
+  double tau_ = 0.0;
+};
 
 }  // namespace
 
@@ -79,17 +408,18 @@ void PolonskyKeerOptions::validate() const {
   }
 }
 
-PolonskyKeer::PolonskyKeer(InfluenceOperator& op, PolonskyKeerOptions options, Preconditioner* preconditioner,
-                           BlockDeflation* deflation)
-    : op_(op), options_(std::move(options)), preconditioner_(preconditioner), deflation_(deflation) {
+PolonskyKeer::PolonskyKeer(InfluenceOperator& op, PolonskyKeerOptions options, Preconditioner* preconditioner)
+    : op_(op),
+      options_(std::move(options)),
+      preconditioner_(preconditioner),
+      name_(preconditioner ? fmt::format("{}-polonsky-keer", preconditioner->kind()) : "polonsky-keer") {
   options_.validate();
-  if (deflation_ && !preconditioner_) throw InputError("block deflation needs a preconditioner");
-  if (deflation_ && deflation_->grid().size() != op_.grid().size()) {
-    throw InputError("block deflation was built for a different grid than the operator's");
+  if (preconditioner_ && options_.form != PolonskyKeerForm::projected) {
+    throw InputError("a preconditioner needs the projected form of Polonsky-Keer (PolonskyKeerForm::projected)");
   }
   const auto n = static_cast<Eigen::Index>(op_.grid().size());
   direction_.setZero(n);
-  direction_image_.setZero(n);
+  image_.setZero(n);
 }
 
 SolveResult PolonskyKeer::solve(std::span<const double> initial_gap, const Loading& loading,
@@ -107,414 +437,35 @@ SolveResult PolonskyKeer::solve_from(std::span<const double> initial_gap, const 
   return run(initial_gap, loading, std::move(start), true);
 }
 
-// B r = Q r + (I - Q K) M^-1 (I - K Q) r, Q = Z A^-1 Z^T, with r the gap on
-// the search set (less its mean there under load control: the iteration
-// moves in the mean-free directions, and B must act on those alone to stay
-// symmetric there). The coarse functions live on the contact cells, for
-// which the caller has updated deflation_.
-template <class InSearch>
-void PolonskyKeer::apply_balancing(bool load_controlled, InSearch&& in_search, SolveResult& result) {
-  const std::size_t n = op_.grid().size();
-  const double* g = result.gap.data();
-  double* z = direction_image_.data();
-  // One field holds Z y1, then its image (K in place), then K of M^-1's
-  // output: post_correction needs the coarse y1 alone, which it keeps.
-  double* field = coarse_field_.data();
-  const auto [count, gap_sum] = sums<2>(n, [&](std::size_t i) {
-    const double inside = in_search(i) ? 1.0 : 0.0;
-    return std::array<double, 2>{inside, inside * g[i]};
-  });
-  const double shift = load_controlled ? gap_sum / count : 0.0;
-  for_each_index(n, [&](std::size_t i) { z[i] = in_search(i) ? g[i] - shift : 0.0; });
-  // values = values - minus on the set, zero elsewhere, mean-free on the set
-  // under load control.
-  auto onto_set = [&](double* values, const double* minus) {
-    double mean = 0.0;
-    if (load_controlled) {
-      mean = linalg::sum(n, [&](std::size_t i) { return in_search(i) ? values[i] - (minus ? minus[i] : 0.0) : 0.0; }) /
-             count;
-    }
-    for_each_index(
-        n, [&](std::size_t i) { values[i] = in_search(i) ? values[i] - (minus ? minus[i] : 0.0) - mean : 0.0; });
-  };
-  deflation_->pre_correction({z, n}, {field, n}, load_controlled);
-  op_.apply({field, n}, {field, n});
-  ++result.operator_applications;
-  onto_set(z, field);
-  preconditioner_->apply({z, n}, {z, n});
-  ++result.preconditioner_applications;
-  onto_set(z, nullptr);
-  op_.apply({z, n}, {field, n});
-  ++result.operator_applications;
-  deflation_->post_correction({field, n}, {z, n}, load_controlled);
-}
-
 SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading& loading, Eigen::ArrayXd pressure,
                               bool warm) {
   const auto start = std::chrono::steady_clock::now();
-  const Grid& grid = op_.grid();
-  const std::size_t n = grid.size();
-  const double cells = static_cast<double>(n);
-  check_size("initial gap", initial_gap.size(), n);
-  loading.validate();
-
-  const double gap_max = linalg::max_of(n, [&](std::size_t i) { return initial_gap[i]; });
-  const double gap_min = linalg::min_of(n, [&](std::size_t i) { return initial_gap[i]; });
-  if (!std::isfinite(gap_max) || !std::isfinite(gap_min)) {
-    throw InputError("initial gap holds a non-finite value");
-  }
-
-  Problem problem{initial_gap, loading.load_controlled(), 0.0, 0.0, grid.cell_area(), gap_max - gap_min};
-  if (problem.load_controlled) {
-    problem.target_force = loading.target_force(grid.domain_area());
-  } else {
-    problem.approach = loading.value;
-  }
-  if (!problem.load_controlled && grid.periodic()) {
-    // With a zero-mean displacement the mean gap is mean(g0) - approach, and
-    // it cannot be negative: at mean(g0) the pressure is already infinite.
-    const double mean_gap = linalg::sum(n, [&](std::size_t i) { return initial_gap[i]; }) / cells;
-    if (problem.approach >= mean_gap) {
-      throw InputError(
-          fmt::format("approach = {} m is invalid for a periodic surface: it must be below the mean initial gap {} m "
-                      "(full contact needs infinite pressure there)",
-                      problem.approach, mean_gap));
-    }
-  }
-
+  const Problem problem = make_problem(op_.grid(), initial_gap, loading);
+  const auto n = static_cast<Eigen::Index>(op_.grid().size());
   SolveResult result;
-  result.solver = std::string(name());
+  result.solver = name_;
   result.tolerance = options_.tolerance;
   result.residual_history.reserve(static_cast<std::size_t>(options_.max_iterations) + 1);
   result.pressure = std::move(pressure);
-  result.displacement.setZero(static_cast<Eigen::Index>(n));
-  result.gap.setZero(static_cast<Eigen::Index>(n));
-  double* p = result.pressure.data();
-  double* u = result.displacement.data();
-  double* g = result.gap.data();
-  double* t = direction_.data();
-  double* r = direction_image_.data();
-  const std::span<const double> pressure_view(p, n);
-  const std::span<double> displacement_view(u, n);
-  const double k_self = op_.self_influence();
+  result.displacement.setZero(n);
+  result.gap.setZero(n);
+  if (preconditioner_) preconditioner_->begin_solve();
 
-  // Step 0: starting pressure. Load control: the warm start or a uniform
-  // pressure, scaled to the target force. Displacement control: the warm
-  // start or the local-overlap guess.
-  if (warm) {
-    for_each_index(n, [&](std::size_t i) { p[i] = std::max(p[i], 0.0); });
-  } else {
-    for_each_index(n, [&](std::size_t i) { p[i] = 0.0; });
+  Iteration it(op_, preconditioner_, options_, problem, result, direction_, image_, uniform_response_range_);
+  it.start(warm);  // 0: starting pressure
+  int k = 0;
+  for (;; ++k) {
+    it.evaluate(k);                                // 1: gap, approach, residual
+    if (it.finished(k)) break;                     //    converged or stopped
+    if (it.restarted_without_contact()) continue;  //    (displacement control)
+    it.precondition();                             // 2: z = M^-1 g on the search set
+    it.conjugate();                                // 3: t = z + beta t
+    if (!it.step_length(k)) break;                 // 4-5: K t, tau
+    it.advance();                                  // 6-9: p = P(p - tau t), u, load
   }
-  if (problem.load_controlled) {
-    double force = problem.cell_area * linalg::sum(n, [&](std::size_t i) { return p[i]; });
-    if (!(force > 0.0)) {
-      for_each_index(n, [&](std::size_t i) { p[i] = 1.0; });
-      force = problem.cell_area * cells;
-    }
-    const double scale = problem.target_force / force;
-    for_each_index(n, [&](std::size_t i) { p[i] *= scale; });
-  } else if (!warm) {
-    for_each_index(n, [&](std::size_t i) { g[i] = initial_gap[i] - problem.approach; });
-    local_overlap_pressure({g, n}, k_self, p);
-  }
+  it.summarise(k);
 
-  direction_.setZero();
-  // Deflation (see apply_balancing): whether it is on, and the last step's
-  // clipped cells and search set, which decide it.
-  bool deflating = false;
-  bool deflation_declined = false;
-  const BlockDeflationStats deflation_before = deflation_ ? deflation_->stats() : BlockDeflationStats{};
-  double clipped_before = std::numeric_limits<double>::infinity();
-  double searched_before = 0.0;
-  int settled_steps = 0;        // consecutive undeflated steps that clipped little
-  bool deflation_pays = false;  // their rate was slow (kDeflateAboveRate)
-  double previous_norm = 1.0;   // G_old
-  bool conjugate = false;       // delta: false right after a reset
-  double approach = problem.approach;
-  double residual = 0.0;
-  double contact_cells = 0.0;
-  double gap_norm = 0.0;
-  double gap_along_direction = 0.0;  // sum over the search set of g t_old (restart tests)
-  const bool powell_restart = options_.restart == ConjugacyRestart::powell;
-  const bool search_overlap = options_.search_set == SearchSet::contact_and_overlap;
-  // Whether cell i is in the search set (see SearchSet); g must be the
-  // current gap, which it is from step 1 until K c is stored in it (step 8).
-  // Bitwise, not short-circuit, so that the masks stay free of branches; the
-  // test of search_overlap is the same in every cell (the loops unswitch).
-  auto searched = [&](std::size_t i) { return search_overlap ? (p[i] > 0.0) | (g[i] < 0.0) : p[i] > 0.0; };
-  double search_cells = 0.0;    // cells in the search set
-  double search_gap_sum = 0.0;  // sum over the search set of g
-
-  // Work that steps 6-9 leave to the next evaluation, which does it in its
-  // first pass rather than in passes of its own: the load-restoring scale of
-  // p and u, and adding K c (held in g) to u.
-  double pending_scale = 1.0;
-  bool pending_correction = false;
-
-  // u = K p computed afresh (rather than updated, see steps 6-8).
-  int updates_since_exact = 0;
-  auto compute_displacement = [&] {
-    if (pending_scale != 1.0) {
-      const double scale = pending_scale;
-      for_each_index(n, [&](std::size_t i) { p[i] *= scale; });
-    }
-    pending_scale = 1.0;
-    pending_correction = false;
-    op_.apply(pressure_view, displacement_view);
-    ++result.operator_applications;
-    updates_since_exact = 0;
-  };
-  // Step 1: the pending work, then the gap of the current pressure, its
-  // approach under load control, the residual (see the header) and G = sum
-  // over the search set of g^2. With a preconditioner, r receives g
-  // restricted to the search set.
-  auto evaluate = [&] {
-    const double scale = pending_scale;
-    const bool add = pending_correction;
-    pending_scale = 1.0;
-    pending_correction = false;
-    const auto settled = linalg::sums_and_range<2>(n, [&](std::size_t i) {
-      double ui = u[i];
-      double pi = p[i];
-      if (add) ui += g[i];
-      if (scale != 1.0) {
-        ui *= scale;
-        pi *= scale;
-      }
-      if (add || scale != 1.0) {
-        u[i] = ui;
-        p[i] = pi;
-      }
-      const double in_contact = pi > 0.0 ? 1.0 : 0.0;
-      return std::pair{std::array<double, 2>{in_contact * (initial_gap[i] + ui), in_contact}, ui};
-    });
-    contact_cells = settled.sums[1];
-    if (problem.load_controlled) {
-      // The approach makes the mean gap on the contact set vanish.
-      approach = settled.sums[0] / contact_cells;
-    }
-    const bool restrict_to_contact = preconditioner_ != nullptr;
-    const auto [weighted_gap, overlap, pressure_sum, searched_gap_norm, gap_along] = sums<5>(n, [&](std::size_t i) {
-      g[i] = initial_gap[i] + u[i] - approach;
-      const double in_search = searched(i) ? 1.0 : 0.0;  // a mask, not a branch: contact edges are everywhere
-      if (restrict_to_contact) r[i] = in_search * g[i];
-      return std::array<double, 5>{p[i] * std::abs(g[i]), std::max(-g[i], 0.0), p[i], in_search * (g[i] * g[i]),
-                                   in_search * (g[i] * t[i])};
-    });
-    gap_norm = searched_gap_norm;
-    gap_along_direction = gap_along;
-    const double gap_scale = std::max(problem.initial_gap_range + (settled.max - settled.min), 0.0);
-    const double numerator = (pressure_sum > 0.0 ? weighted_gap * cells / pressure_sum : 0.0) + overlap;
-    residual = numerator == 0.0 ? 0.0 : numerator / (cells * gap_scale);
-  };
-
-  compute_displacement();
-  int iteration = 0;
-  for (;; ++iteration) {
-    if (updates_since_exact >= kUpdatesBetweenExactProducts) compute_displacement();
-    evaluate();
-    if (residual <= options_.tolerance && updates_since_exact > 0) {
-      // Convergence is judged on the exact product only.
-      compute_displacement();
-      evaluate();
-    }
-    result.residual_history.push_back(residual);
-    if (options_.progress) options_.progress(iteration, residual);
-
-    if (residual <= options_.tolerance) {
-      result.status = SolveStatus::converged;
-      break;
-    }
-    if (!std::isfinite(residual)) {
-      result.status = SolveStatus::breakdown;
-      result.message = fmt::format("residual became non-finite at iteration {}", iteration);
-      break;
-    }
-    if (iteration == options_.max_iterations) {
-      result.status = SolveStatus::iteration_limit;
-      result.message = fmt::format("no convergence after {} iterations: residual {:.3e} > tolerance {:.3e}", iteration,
-                                   residual, options_.tolerance);
-      break;
-    }
-    if (contact_cells == 0.0) {
-      // Displacement control lost every contact cell: restart from the local
-      // overlap of the current gap.
-      local_overlap_pressure({g, n}, k_self, p);
-      compute_displacement();
-      conjugate = false;
-      continue;
-    }
-
-    // Step 2: z = g, or with a preconditioner z = M^-1 g, on the search set
-    // (g there is already in r, which is free until step 4); under load
-    // control mean-free on the search set, so that the step keeps the force;
-    // G = sum over the search set of g z. (On C alone, g is mean-free
-    // already: the approach makes it so.)
-    // The size of the search set and the sum of g over it are counted here,
-    // not in step 1, whose pass already holds five sums.
-    double* z = g;
-    double z_sum = 0.0;
-    double gz = gap_norm;
-    if (preconditioner_) {
-      z = r;
-      // The coarse correction joins once clipping has died down; a change
-      // of preconditioner restarts the conjugate directions.
-      if (deflation_ != nullptr && !deflation_pays && settled_steps >= kRateSteps) {
-        const std::vector<double>& history = result.residual_history;
-        const double ratio = history.back() / history[history.size() - 1 - kRateSteps];
-        const double rate = std::pow(ratio, 1.0 / kRateSteps);
-        deflation_pays = rate > kDeflateAboveRate;
-        result.deflation.fast_rate = deflation_pays ? 0.0 : rate;
-      }
-      bool deflate = deflation_pays && !deflation_declined && clipped_before <= kDeflateBelowClipped * searched_before;
-      auto in_contact = [&](std::size_t i) { return p[i] > 0.0; };  // the coarse functions' cells
-      if (deflate && !kernel_known_ && deflation_->decline_if_dense(in_contact)) {
-        deflate = false;  // too dense a contact: not in this solve, and no kernel or fields made for it
-        deflation_declined = true;
-      }
-      if (deflate && !kernel_known_) {
-        // The correction's field, and the kernel in real space, K e_0, for
-        // the coarse matrix: once per solver, when first needed, so that a
-        // solve that never deflates holds neither (8 B per cell).
-        coarse_field_.setZero(static_cast<Eigen::Index>(n));
-        coarse_field_[0] = 1.0;
-        double* unit = coarse_field_.data();
-        op_.apply({unit, n}, {unit, n});
-        ++result.operator_applications;
-        deflation_->set_kernel({unit, n});
-        kernel_known_ = true;
-      }
-      if (deflate) {
-        deflation_->update(in_contact);
-        deflation_declined = !deflation_->ready();  // too dense a contact: not in this solve
-        deflate = !deflation_declined;
-      }
-      if (deflate != deflating) conjugate = false;
-      deflating = deflate;
-      if (deflating) {
-        apply_balancing(problem.load_controlled, searched, result);
-        ++result.deflation.deflated_iterations;
-      } else {
-        preconditioner_->apply({z, n}, {z, n});
-        ++result.preconditioner_applications;
-      }
-      const auto [searched_z, searched_gz, searched_count, searched_gap] = sums<4>(n, [&](std::size_t i) {
-        const double in_search = searched(i) ? 1.0 : 0.0;
-        return std::array<double, 4>{in_search * z[i], in_search * (g[i] * z[i]), in_search, in_search * g[i]};
-      });
-      z_sum = searched_z;
-      gz = searched_gz;
-      search_cells = searched_count;
-      search_gap_sum = searched_gap;
-    } else if (search_overlap) {
-      const auto [searched_count, searched_gap] = sums<2>(n, [&](std::size_t i) {
-        const double in_search = searched(i) ? 1.0 : 0.0;
-        return std::array<double, 2>{in_search, in_search * g[i]};
-      });
-      search_cells = searched_count;
-      search_gap_sum = searched_gap;
-      z_sum = search_gap_sum;  // z = g
-    } else {
-      // Plain Polonsky-Keer on C, where g is mean-free already.
-      search_cells = contact_cells;
-      search_gap_sum = 0.0;
-    }
-    const bool mean_free = problem.load_controlled && (preconditioner_ != nullptr || search_overlap);
-    const double z_mean = mean_free ? z_sum / search_cells : 0.0;
-    const double search_norm = gz - z_mean * search_gap_sum;
-
-    // Step 3: conjugate direction on the search set, unless restarting.
-    if (powell_restart && !(std::abs(gap_along_direction) <= kPowellRestart * search_norm)) conjugate = false;
-    const double beta = conjugate ? search_norm / previous_norm : 0.0;
-    for_each_index(n, [&](std::size_t i) { t[i] = searched(i) ? (z[i] - z_mean) + beta * t[i] : 0.0; });
-    previous_norm = search_norm;
-
-    // Step 4: its image r = K t, mean-corrected on the search set under load
-    // control.
-    op_.apply({t, n}, {r, n});
-    ++result.operator_applications;
-    const auto [r_sum, t_sum, gt, rt] = sums<4>(n, [&](std::size_t i) {
-      const double in_search = searched(i) ? 1.0 : 0.0;
-      return std::array<double, 4>{in_search * r[i], in_search * t[i], in_search * (g[i] * t[i]),
-                                   in_search * (r[i] * t[i])};
-    });
-    const double r_mean = problem.load_controlled ? r_sum / search_cells : 0.0;
-    const double curvature = rt - r_mean * t_sum;
-
-    // Step 5: step length, the exact minimiser along t on the current contact
-    // set. After a restart (t = z on C) it is positive; a conjugate direction
-    // can give a negative one, which is still a valid step, but then no cell
-    // enters (its pressure -tau g would be negative) and the next step restarts.
-    const double tau = gt / curvature;
-    if (!(curvature > 0.0) || !std::isfinite(tau)) {
-      result.status = SolveStatus::breakdown;
-      result.message = fmt::format("non-positive curvature t.Kt = {:.3e} at iteration {}", curvature, iteration);
-      break;
-    }
-
-    // Steps 6-8: move along t, clip to p >= 0, and (search set C only) let
-    // cells that are out of contact but interpenetrate (g < 0) enter with
-    // pressure -tau g. Entries reset the conjugacy: any entry under
-    // ConjugacyRestart::on_entry, more than 1% of the contact cells under
-    // powell. The projected-gradient search set has no entries: its
-    // interpenetrating cells were in the direction, and the step has given
-    // them pressure or not (then they stay in the set while g < 0). The
-    // displacement follows without a new product: K(p - tau t) = u - tau r,
-    // plus K c for the correction c that clipping and entries add, which is
-    // zero once the contact set settles.
-    // r is not needed after this pass, so it receives c.
-    const auto [new_pressure_sum, entered, corrected] = sums<3>(n, [&](std::size_t i) {
-      const double moved = p[i] - tau * t[i];
-      double pi = std::max(moved, 0.0);
-      double entry = 0.0;
-      if (!search_overlap && pi == 0.0 && g[i] < 0.0 && tau > 0.0) {
-        pi = -tau * g[i];
-        entry = 1.0;
-      }
-      p[i] = pi;
-      u[i] -= tau * r[i];
-      r[i] = pi - moved;
-      return std::array<double, 3>{pi, entry, r[i] != 0.0 ? 1.0 : 0.0};
-    });
-    const double entries_kept = powell_restart ? kEntriesKept * contact_cells : 0.0;
-    conjugate = entered <= entries_kept && tau > 0.0;
-    clipped_before = corrected;
-    searched_before = search_cells;
-    settled_steps = !deflating && corrected <= kDeflateBelowClipped * search_cells ? settled_steps + 1 : 0;
-    if (corrected > 0.0) {
-      // g is recomputed from u in step 1, so it can hold K c until then.
-      op_.apply({r, n}, {g, n});
-      ++result.operator_applications;
-      pending_correction = true;
-    }
-    ++updates_since_exact;
-
-    // Step 9: restore the load (K is linear: u scales with p), in the next
-    // evaluation's first pass.
-    if (problem.load_controlled) pending_scale = problem.target_force / (problem.cell_area * new_pressure_sum);
-  }
-
-  if (deflation_) {
-    // This solve's share of the correction's counters.
-    const BlockDeflationStats& after = deflation_->stats();
-    result.deflation.block = deflation_->block();
-    result.deflation.rebuilds = after.rebuilds - deflation_before.rebuilds;
-    result.deflation.updates = after.updates - deflation_before.updates;
-    result.deflation.declined = after.declined - deflation_before.declined;
-    result.deflation.coarse_iterations = after.coarse_iterations - deflation_before.coarse_iterations;
-  }
-  // Summary of the final iterate, whose displacement and gap are current.
-  const auto [pressure_total, contact_total] = sums<2>(n, [&](std::size_t i) {
-    return std::array<double, 2>{p[i], p[i] > 0.0 ? 1.0 : 0.0};
-  });
-  result.iterations = iteration;
-  result.residual = residual;
-  result.approach = approach;
-  result.total_force = problem.cell_area * pressure_total;
-  result.mean_pressure = result.total_force / grid.domain_area();
-  result.max_pressure = linalg::max_of(n, [&](std::size_t i) { return p[i]; });
-  result.contact_fraction = contact_total / cells;
+  if (preconditioner_) preconditioner_->report(result);
   result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

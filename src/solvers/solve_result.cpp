@@ -1,7 +1,7 @@
 // Names of solver outcomes.
 #include "halfspace/solvers/solve_result.hpp"
 
-namespace halfspace {
+namespace halfspace::solvers {
 
 std::string_view to_string(SolveStatus status) {
   switch (status) {
@@ -15,4 +15,4 @@ std::string_view to_string(SolveStatus status) {
   return "unknown";
 }
 
-}  // namespace halfspace
+}  // namespace halfspace::solvers

@@ -1,15 +1,15 @@
-// Solver construction by name. Each solver is stored with the operator it
+// Solver construction from SolverOptions. Each solver is stored with the operator it
 // references, so the pair lives and dies together.
 #include "halfspace/solvers/solver_factory.hpp"
 
 #include <fmt/format.h>
-#include <fmt/ranges.h>
 
 #include <memory>
 
 #include "halfspace/error.hpp"
 #include "halfspace/fft/grid_transform.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
+#include "halfspace/solvers/balancing_preconditioner.hpp"
 #include "halfspace/solvers/block_deflation.hpp"
 #include "halfspace/solvers/fourier_preconditioner.hpp"
 #include "halfspace/solvers/lcp_quad.hpp"
@@ -20,14 +20,16 @@
 namespace halfspace::solvers {
 namespace {
 
-// A solver together with the operator (and preconditioner) it was built on.
+// A solver together with the operator and preconditioners it was built on.
 class SolverWithOperator final : public ContactSolver {
  public:
-  SolverWithOperator(std::unique_ptr<InfluenceOperator> op, std::unique_ptr<Preconditioner> preconditioner,
-                     std::unique_ptr<BlockDeflation> deflation, std::unique_ptr<ContactSolver> solver)
+  SolverWithOperator(std::unique_ptr<InfluenceOperator> op, std::unique_ptr<Preconditioner> fourier,
+                     std::unique_ptr<BlockDeflation> deflation, std::unique_ptr<Preconditioner> balancing,
+                     std::unique_ptr<ContactSolver> solver)
       : op_(std::move(op)),
-        preconditioner_(std::move(preconditioner)),
+        fourier_(std::move(fourier)),
         deflation_(std::move(deflation)),
+        balancing_(std::move(balancing)),
         solver_(std::move(solver)) {}
 
   std::string_view name() const override { return solver_->name(); }
@@ -41,110 +43,96 @@ class SolverWithOperator final : public ContactSolver {
 
  private:
   std::unique_ptr<InfluenceOperator> op_;
-  std::unique_ptr<Preconditioner> preconditioner_;
+  std::unique_ptr<Preconditioner> fourier_;
   std::unique_ptr<BlockDeflation> deflation_;
+  std::unique_ptr<Preconditioner> balancing_;  // around fourier_ and deflation_
   std::unique_ptr<ContactSolver> solver_;
 };
 
-std::unique_ptr<ContactSolver> make_polonsky_keer(const Grid& grid, double e_star, const SolverSettings& settings,
-                                                  bool preconditioned, ConjugacyRestart restart, bool deflated) {
-  PolonskyKeerOptions options;
-  options.tolerance = settings.tolerance;
-  options.max_iterations = settings.max_iterations;
-  options.progress = settings.progress;
-  options.restart = restart;
-  // The paper's search set for plain Polonsky-Keer; the projected-gradient
-  // one with the preconditioner, where it saves 6-13 % of the iterations up to
-  // 2048^2 and 30-45 % at 4096^2-8192^2 (docs/development-log.md).
-  options.search_set = preconditioned ? SearchSet::contact_and_overlap : SearchSet::contact;
+// Polonsky-Keer on an FFT operator: the paper's form, or the projected
+// form with the Fourier preconditioner (and the coarse correction if
+// `deflated`) when `projected`.
+std::unique_ptr<ContactSolver> make_polonsky_keer(const Grid& grid, double e_star, const SolverOptions& options,
+                                                  double tolerance, bool fine, bool projected, bool deflated) {
+  PolonskyKeerOptions pk;
+  pk.tolerance = tolerance;
+  pk.max_iterations = options.iteration_limit();
+  if (fine) pk.progress = options.progress;  // progress reports the fine solve only
+  pk.form = projected ? PolonskyKeerForm::projected : PolonskyKeerForm::paper;
+  // The preconditioner not on 1D grids: there the preconditioned steps clip
+  // hundreds of cells each, and the iteration cycles on measured profiles
+  // under moderate loads, while the projected form alone converges at every
+  // load (docs/validation.md, "Measured profiles").
+  const bool preconditioned = projected && grid.dimension() == 2;
   std::unique_ptr<FftInfluenceOperator> op;
   std::unique_ptr<Preconditioner> preconditioner;
   if (preconditioned && grid.periodic()) {
     // Both transform the unpadded grid, and Polonsky-Keer applies them one
     // after the other: one transform serves both, which saves a real and a
-    // complex array per cell (docs/development-log.md).
-    auto transform = make_grid_transform(grid, settings.fft_planning);
+    // complex array per cell.
+    auto transform = make_grid_transform(grid, options.fft_planning);
     op = std::make_unique<FftInfluenceOperator>(grid, e_star, transform);
     preconditioner = std::make_unique<FourierPreconditioner>(grid, e_star, transform);
   } else {
     // Free grids: the preconditioner's unpadded transform works in the
     // operator's padded buffer, idle between products (16 B per cell less).
-    op = std::make_unique<FftInfluenceOperator>(grid, e_star, settings.fft_planning);
+    op = std::make_unique<FftInfluenceOperator>(grid, e_star, options.fft_planning);
     if (preconditioned) {
       preconditioner = std::make_unique<FourierPreconditioner>(
-          grid, e_star, make_grid_transform(grid, settings.fft_planning, op->scratch()));
+          grid, e_star, make_grid_transform(grid, options.fft_planning, op->scratch()));
     }
   }
   std::unique_ptr<BlockDeflation> deflation;
+  std::unique_ptr<Preconditioner> balancing;
   if (deflated) {
-    BlockDeflationOptions deflation_options;
-    deflation_options.block = settings.deflation_block.value_or(kDefaultDeflationBlock);
-    deflation = std::make_unique<BlockDeflation>(grid, deflation_options);
+    deflation = std::make_unique<BlockDeflation>(grid, options.deflation);
+    balancing = std::make_unique<BalancingPreconditioner>(*op, *preconditioner, *deflation);
   }
-  auto solver = std::make_unique<PolonskyKeer>(*op, options, preconditioner.get(), deflation.get());
+  auto solver = std::make_unique<PolonskyKeer>(*op, pk, balancing ? balancing.get() : preconditioner.get());
   return std::make_unique<SolverWithOperator>(std::move(op), std::move(preconditioner), std::move(deflation),
-                                              std::move(solver));
+                                              std::move(balancing), std::move(solver));
 }
 
-// Whether pk-multilevel's fine grid gets the coarse correction: as asked,
-// or by default.
-bool deflated(const Grid& grid, const SolverSettings& settings) {
-  if (settings.deflation_block) return *settings.deflation_block > 0;
-  return default_deflation(grid);
-}
-
-// Fourier-preconditioned Polonsky-Keer with Powell restarts on every level.
-std::unique_ptr<ContactSolver> make_multilevel(const Grid& grid, double e_star, const SolverSettings& settings) {
-  auto make_level = [e_star, settings](const Grid& level, double tolerance, bool fine) {
-    SolverSettings level_settings = settings;
-    level_settings.tolerance = tolerance;
-    if (!fine) level_settings.progress = {};  // progress reports the fine solve only
-    // The coarse-grid correction on the finest grid only, where the
-    // contact has the most spots.
-    return make_polonsky_keer(level, e_star, level_settings, true, ConjugacyRestart::powell,
-                              fine && deflated(level, settings));
+// Fourier-preconditioned Polonsky-Keer on every level; the coarse-grid
+// correction on the finest grid only, where the contact has the most spots.
+std::unique_ptr<ContactSolver> make_multilevel(const Grid& grid, double e_star, const SolverOptions& options) {
+  using Mode = DeflationOptions::Mode;
+  const bool deflated = options.deflation.mode == Mode::on ||
+                        (options.deflation.mode == Mode::automatic && options.deflation.automatic_applies(grid));
+  auto make_level = [e_star, options, deflated](const Grid& level, double tolerance, bool fine) {
+    return make_polonsky_keer(level, e_star, options, tolerance, fine, true, fine && deflated);
   };
-  return std::make_unique<MultilevelSolver>(grid, settings.tolerance, make_level);
+  return std::make_unique<MultilevelSolver>(grid, options.tolerance, make_level, options.multilevel);
 }
 
 // The dense LCP solvers own their assembled matrix; they refuse grids over
 // kMaxDenseCells with a message that points to "pk".
-std::unique_ptr<ContactSolver> make_dense(const Grid& grid, double e_star, const SolverSettings& settings) {
+std::unique_ptr<ContactSolver> make_dense(const Grid& grid, double e_star, const SolverOptions& options) {
   DenseContactOptions contact;
-  contact.tolerance = settings.tolerance;
-  if (settings.name == "lemke")
-    return std::make_unique<Lemke>(grid, e_star, LemkeOptions{settings.max_iterations}, contact);
+  contact.tolerance = options.tolerance;
+  if (options.type == SolverType::lemke) {
+    return std::make_unique<Lemke>(grid, e_star, LemkeOptions{options.iteration_limit()}, contact);
+  }
   return std::make_unique<LcpQuad>(grid, e_star, LcpQuadOptions{}, contact);
 }
 
 }  // namespace
 
-bool default_deflation(const Grid& grid) {
-  return grid.size() >= kDefaultDeflationFromCells && BlockDeflation::covers(grid, kDefaultDeflationBlock);
-}
-
-std::vector<std::string> solver_names() {
-  return {"pk-multilevel", "pk-fourier", "pk", "lemke", "lcpquad"};
-}
-
-std::unique_ptr<ContactSolver> make_solver(const Grid& grid, double e_star, const SolverSettings& settings) {
-  // Plain Polonsky-Keer keeps the paper's restart rule; with the Fourier
-  // preconditioner Powell's restart test cuts the iterations (docs/development-log.md).
-  if (settings.deflation_block.value_or(0) > 0 && settings.name != "pk-fourier" && settings.name != "pk-multilevel") {
-    throw InputError(fmt::format(
-        "solver '{}' has no coarse-grid correction: deflation needs pk-fourier or pk-multilevel", settings.name));
+std::unique_ptr<ContactSolver> make_solver(const Grid& grid, double e_star, const SolverOptions& options) {
+  options.validate(grid);
+  switch (options.type) {
+    case SolverType::pk:
+      return make_polonsky_keer(grid, e_star, options, options.tolerance, true, false, false);
+    case SolverType::pk_fourier:
+      return make_polonsky_keer(grid, e_star, options, options.tolerance, true, true,
+                                options.deflation.mode == DeflationOptions::Mode::on);
+    case SolverType::pk_multilevel:
+      return make_multilevel(grid, e_star, options);
+    case SolverType::lemke:
+    case SolverType::lcpquad:
+      return make_dense(grid, e_star, options);
   }
-  if (settings.name == "pk") {
-    return make_polonsky_keer(grid, e_star, settings, false, ConjugacyRestart::on_entry, false);
-  }
-  if (settings.name == "pk-fourier") {
-    return make_polonsky_keer(grid, e_star, settings, true, ConjugacyRestart::powell,
-                              settings.deflation_block.value_or(0) > 0);
-  }
-  if (settings.name == "pk-multilevel") return make_multilevel(grid, e_star, settings);
-  if (settings.name == "lemke" || settings.name == "lcpquad") return make_dense(grid, e_star, settings);
-  throw InputError(
-      fmt::format("solver '{}' is not known: use one of {}", settings.name, fmt::join(solver_names(), ", ")));
+  throw InputError(fmt::format("solver type {} is not known", static_cast<int>(options.type)));
 }
 
 }  // namespace halfspace::solvers

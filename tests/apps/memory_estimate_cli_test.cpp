@@ -66,14 +66,18 @@ struct Case {
   std::string name;
   std::vector<std::string> arguments;  // after "solve", without --output
   Grid grid;                           // the grid those options make
-  solvers::SolverSettings settings;    // the settings they choose
+  solvers::SolverOptions settings;     // the settings they choose
   std::size_t steps = 1;
 };
 
-solvers::SolverSettings solver(const std::string& name, std::optional<std::size_t> deflation_block = std::nullopt) {
-  solvers::SolverSettings settings;
-  settings.name = name;
-  settings.deflation_block = deflation_block;
+solvers::SolverOptions solver(const std::string& name, std::optional<std::size_t> deflation_block = std::nullopt) {
+  solvers::SolverOptions settings;
+  settings.type = solvers::parse_solver_type(name);
+  if (deflation_block) {
+    settings.deflation.mode =
+        *deflation_block > 0 ? solvers::DeflationOptions::Mode::on : solvers::DeflationOptions::Mode::off;
+    if (*deflation_block > 0) settings.deflation.block = *deflation_block;
+  }
   return settings;
 }
 

@@ -12,6 +12,7 @@
 #include "halfspace/solvers/solver_factory.hpp"
 #include "support/boundary_param.hpp"
 #include "support/contact_checks.hpp"
+#include "support/pk_solvers.hpp"
 #include "support/rough_gap.hpp"
 
 namespace halfspace::solvers {
@@ -25,11 +26,11 @@ constexpr double kEStar = 1.0;
 // relative to the largest pressure.
 constexpr double kSameSolution = 1e-8;
 
-SolverSettings settings(const std::string& name, std::size_t block) {
-  SolverSettings s;
-  s.name = name;
-  s.tolerance = 1e-12;
-  s.deflation_block = block;
+// `name` with the correction on B x B blocks, or none for B = 0.
+SolverOptions settings(const std::string& name, std::size_t block) {
+  SolverOptions s = testing::test_options(parse_solver_type(name), 1e-12);
+  s.deflation.mode = block > 0 ? DeflationOptions::Mode::on : DeflationOptions::Mode::off;
+  if (block > 0) s.deflation.block = block;
   return s;
 }
 
@@ -122,8 +123,11 @@ TEST(DeflatedSolverRefusalTest, RefusesSolversAndGridsWithoutIt) {
 }
 
 TEST(DeflatedSolverDefaultTest, JoinsFrom2048SquaredCellsOnBothBoundaries) {
-  // The default follows the measured break-even (kDefaultDeflationFromCells):
-  // 2048^2 cells and beyond, either boundary, any shape the block divides.
+  // The automatic rule follows the measured break-even
+  // (DeflationOptions::kAutomaticFromCells): 2048^2 cells and beyond, either
+  // boundary, any shape the block divides.
+  const DeflationOptions automatic;
+  auto default_deflation = [&](const Grid& grid) { return automatic.automatic_applies(grid); };
   for (const Boundary boundary : {Boundary::periodic, Boundary::free}) {
     EXPECT_TRUE(default_deflation(Grid::plane(2048, 2048, 1e-6, 1e-6, boundary)));
     EXPECT_TRUE(default_deflation(Grid::plane(16384, 256, 1e-6, 1e-6, boundary)));

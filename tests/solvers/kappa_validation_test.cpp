@@ -17,6 +17,7 @@
 #include "halfspace/surface/self_affine.hpp"
 #include "halfspace/surface/statistics.hpp"
 #include "halfspace/threads.hpp"
+#include "support/pk_solvers.hpp"
 
 namespace halfspace::solvers {
 namespace {
@@ -60,7 +61,8 @@ TEST(KappaValidationTest, ContactAreaIsProportionalToLoadWithLiteratureKappa) {
   set_threads(1);
   const Grid grid = Grid::plane(kCells, kCells, 1.0, 1.0, Boundary::periodic);
   const double e_star = 1.0;
-  const std::unique_ptr<ContactSolver> solver = make_solver(grid, e_star, SolverSettings{});
+  const std::unique_ptr<ContactSolver> solver =
+      make_solver(grid, e_star, testing::test_options(SolverType::pk_multilevel));
 
   double sum_ax = 0.0;  // least squares through the origin: kappa = sum(A x) / sum(x^2)
   double sum_xx = 0.0;

@@ -1,7 +1,7 @@
 // pk-multilevel: the coarse-grid start changes the path, not the answer, and
 // it is used exactly when it can be (even sides, large enough grid, no warm
-// start close to the load). The physics validation (Hertz, Westergaard, round trips) runs on it
-// through the PkVariant suites.
+// start close to the load). The physics validation (Hertz, Westergaard,
+// round trips) runs on it through the suites of support/pk_solvers.hpp.
 #include "halfspace/solvers/multilevel_solver.hpp"
 
 #include <gtest/gtest.h>
@@ -12,6 +12,7 @@
 #include "halfspace/solvers/solver_factory.hpp"
 #include "halfspace/threads.hpp"
 #include "support/contact_checks.hpp"
+#include "support/pk_solvers.hpp"
 #include "support/rough_gap.hpp"
 
 namespace halfspace::solvers {
@@ -25,11 +26,8 @@ constexpr double kEStar = 1.0;
 // relative to the largest pressure.
 constexpr double kSameSolution = 1e-8;
 
-SolverSettings settings(const std::string& name) {
-  SolverSettings s;
-  s.name = name;
-  s.tolerance = 1e-12;
-  return s;
+SolverOptions settings(const std::string& name) {
+  return testing::test_options(parse_solver_type(name), 1e-12);
 }
 
 TEST(MultilevelSolverTest, MatchesTheSingleGridSolverAndUsesTheCoarseGrids) {

@@ -7,21 +7,19 @@
 #include <random>
 
 #include "halfspace/error.hpp"
-#include "halfspace/operators/fft_influence_operator.hpp"
-#include "halfspace/solvers/fourier_preconditioner.hpp"
-#include "halfspace/solvers/polonsky_keer.hpp"
+#include "halfspace/solvers/solver_factory.hpp"
 #include "support/contact_checks.hpp"
 #include "support/grid_fields.hpp"
-#include "support/pk_variants.hpp"
+#include "support/pk_solvers.hpp"
 
 namespace halfspace {
 namespace {
 
+using solvers::SolverType;
 using testing::expect_contact_conditions;
-using testing::PkSolver;
-using testing::PkVariant;
+using testing::test_options;
 
-class PolonskyKeerControlTest : public ::testing::TestWithParam<PkVariant> {};
+class PolonskyKeerControlTest : public ::testing::TestWithParam<SolverType> {};
 using testing::field_from;
 
 constexpr double kEStar = 1e11;
@@ -49,16 +47,13 @@ Eigen::ArrayXd random_periodic_gap(const Grid& grid, double rms_scale) {
 }
 
 void expect_round_trip(const Grid& grid, const Eigen::ArrayXd& gap0, const Loading& loading, double gap_tolerance,
-                       PkVariant variant) {
-  FftInfluenceOperator op(grid, kEStar);
-  solvers::PolonskyKeerOptions options;
-  options.tolerance = 1e-12;
-  PkSolver solver(op, kEStar, variant, options);
-  const SolveResult loaded = solver.solve({gap0.data(), grid.size()}, loading);
+                       SolverType type) {
+  const auto solver = solvers::make_solver(grid, kEStar, test_options(type, 1e-12));
+  const SolveResult loaded = solver->solve({gap0.data(), grid.size()}, loading);
   ASSERT_TRUE(loaded.converged()) << loaded.message;
   expect_contact_conditions(loaded, gap_tolerance);
 
-  const SolveResult displaced = solver.solve({gap0.data(), grid.size()}, Loading::approach(loaded.approach));
+  const SolveResult displaced = solver->solve({gap0.data(), grid.size()}, Loading::approach(loaded.approach));
   ASSERT_TRUE(displaced.converged()) << displaced.message;
   expect_contact_conditions(displaced, gap_tolerance);
   const double force_error = std::abs(displaced.total_force - loaded.total_force) / loaded.total_force;
@@ -89,32 +84,25 @@ TEST_P(PolonskyKeerControlTest, ApproachUnderLoadImposedBackReturnsTheLoadFree1D
   expect_round_trip(grid, gap0, Loading::force(5e4), 1e-9 * gap0.maxCoeff(), GetParam());
 }
 
-// The two search sets are two paths to the same LCP solution: with and
-// without the preconditioner, under load and under an imposed approach.
+// The two search sets are two paths to the same LCP solution: plain
+// Polonsky-Keer on the contact set, and the Fourier-preconditioned one on
+// the projected-gradient set, under load and under an imposed approach.
 TEST(PolonskyKeerSearchSetTest, BothSearchSetsReachTheSameContact) {
   const Grid grid = Grid::plane(64, 64, 1e-6, 1e-6, Boundary::periodic);
   const Eigen::ArrayXd gap0 = random_periodic_gap(grid, 1e-7);
-  FftInfluenceOperator op(grid, kEStar);
-  solvers::FourierPreconditioner preconditioner(grid, kEStar);
-  for (const bool preconditioned : {false, true}) {
-    for (const Loading loading : {Loading::mean_pressure(5e7), Loading::approach(0.7 * gap0.mean())}) {
-      solvers::PolonskyKeerOptions options;
-      options.tolerance = 1e-12;
-      solvers::PolonskyKeer on_contact(op, options, preconditioned ? &preconditioner : nullptr);
-      options.search_set = solvers::SearchSet::contact_and_overlap;
-      solvers::PolonskyKeer projected(op, options, preconditioned ? &preconditioner : nullptr);
-      const SolveResult a = on_contact.solve({gap0.data(), grid.size()}, loading);
-      const SolveResult b = projected.solve({gap0.data(), grid.size()}, loading);
-      ASSERT_TRUE(a.converged()) << a.message;
-      ASSERT_TRUE(b.converged()) << b.message;
-      const double difference = (a.pressure - b.pressure).abs().maxCoeff() / a.max_pressure;
-      std::printf("preconditioned %d, %s: iterations %d (contact) / %d (projected), pressure difference %.2e\n",
-                  preconditioned ? 1 : 0, loading.load_controlled() ? "load" : "approach", a.iterations, b.iterations,
-                  difference);
-      EXPECT_LE(difference, 1e-8);
-      EXPECT_NEAR(b.contact_fraction, a.contact_fraction, 1.0 / static_cast<double>(grid.size()));
-      EXPECT_NEAR(b.total_force, a.total_force, 1e-8 * a.total_force);
-    }
+  const auto on_contact = solvers::make_solver(grid, kEStar, test_options(SolverType::pk, 1e-12));
+  const auto projected = solvers::make_solver(grid, kEStar, test_options(SolverType::pk_fourier, 1e-12));
+  for (const Loading loading : {Loading::mean_pressure(5e7), Loading::approach(0.7 * gap0.mean())}) {
+    const SolveResult a = on_contact->solve({gap0.data(), grid.size()}, loading);
+    const SolveResult b = projected->solve({gap0.data(), grid.size()}, loading);
+    ASSERT_TRUE(a.converged()) << a.message;
+    ASSERT_TRUE(b.converged()) << b.message;
+    const double difference = (a.pressure - b.pressure).abs().maxCoeff() / a.max_pressure;
+    std::printf("%s: iterations %d (contact) / %d (projected), pressure difference %.2e\n",
+                loading.load_controlled() ? "load" : "approach", a.iterations, b.iterations, difference);
+    EXPECT_LE(difference, 1e-8);
+    EXPECT_NEAR(b.contact_fraction, a.contact_fraction, 1.0 / static_cast<double>(grid.size()));
+    EXPECT_NEAR(b.total_force, a.total_force, 1e-8 * a.total_force);
   }
 }
 
@@ -123,15 +111,15 @@ TEST(PolonskyKeerSearchSetTest, BothSearchSetsReachTheSameContact) {
 TEST_P(PolonskyKeerControlTest, StartHandedOverSolvesLikeAStartPassedAsAView) {
   const Grid grid = Grid::plane(64, 64, 1e-6, 1e-6, Boundary::periodic);
   const Eigen::ArrayXd gap0 = random_periodic_gap(grid, 2e-8);
-  FftInfluenceOperator op(grid, kEStar);
-  PkSolver solver(op, kEStar, GetParam());
+  const auto solver = solvers::make_solver(grid, kEStar, test_options(GetParam()));
   const Loading loading = Loading::mean_pressure(2e8);
-  const SolveResult cold = solver.solve({gap0.data(), grid.size()}, loading);
+  const SolveResult cold = solver->solve({gap0.data(), grid.size()}, loading);
   ASSERT_TRUE(cold.converged()) << cold.message;
   const Eigen::ArrayXd start = 0.8 * cold.pressure;
   const SolveResult viewed =
-      solver.solve({gap0.data(), grid.size()}, Loading::mean_pressure(2.5e8), {start.data(), grid.size()});
-  const SolveResult handed = solver.solve_from({gap0.data(), grid.size()}, Loading::mean_pressure(2.5e8), start);
+      solver->solve({gap0.data(), grid.size()}, Loading::mean_pressure(2.5e8), {start.data(), grid.size()});
+  const SolveResult handed =
+      solver->solve_from({gap0.data(), grid.size()}, Loading::mean_pressure(2.5e8), Eigen::ArrayXd(start));
   ASSERT_TRUE(handed.converged()) << handed.message;
   EXPECT_EQ(handed.iterations, viewed.iterations);
   EXPECT_TRUE((handed.pressure == viewed.pressure).all());
@@ -141,11 +129,10 @@ TEST_P(PolonskyKeerControlTest, StartHandedOverSolvesLikeAStartPassedAsAView) {
 TEST_P(PolonskyKeerControlTest, ReportsIterationLimitAsStatus) {
   const Grid grid = Grid::plane(32, 32, 1e-6, 1e-6, Boundary::periodic);
   const Eigen::ArrayXd gap0 = random_periodic_gap(grid, 1e-7);
-  FftInfluenceOperator op(grid, kEStar);
-  solvers::PolonskyKeerOptions options;
+  solvers::SolverOptions options = test_options(GetParam());
   options.max_iterations = 2;
-  PkSolver solver(op, kEStar, GetParam(), options);
-  const SolveResult result = solver.solve({gap0.data(), grid.size()}, Loading::mean_pressure(1e7));
+  const auto solver = solvers::make_solver(grid, kEStar, options);
+  const SolveResult result = solver->solve({gap0.data(), grid.size()}, Loading::mean_pressure(1e7));
   EXPECT_EQ(result.status, SolveStatus::iteration_limit);
   EXPECT_EQ(result.iterations, 2);
   EXPECT_GT(result.residual, options.tolerance);
@@ -156,24 +143,23 @@ TEST_P(PolonskyKeerControlTest, ReportsIterationLimitAsStatus) {
 TEST_P(PolonskyKeerControlTest, RefusesInvalidLoadingAndOptions) {
   const Grid grid = Grid::line(16, 1e-6, Boundary::periodic);
   const Eigen::ArrayXd gap0 = field_from(grid, [](double x, double) { return x * x; });
-  FftInfluenceOperator op(grid, kEStar);
-  PkSolver solver(op, kEStar, GetParam());
-  EXPECT_THROW(solver.solve({gap0.data(), grid.size()}, Loading::force(-1.0)), InputError);
-  EXPECT_THROW(solver.solve({gap0.data(), grid.size()}, Loading::mean_pressure(0.0)), InputError);
+  const auto solver = solvers::make_solver(grid, kEStar, test_options(GetParam()));
+  EXPECT_THROW(solver->solve({gap0.data(), grid.size()}, Loading::force(-1.0)), InputError);
+  EXPECT_THROW(solver->solve({gap0.data(), grid.size()}, Loading::mean_pressure(0.0)), InputError);
   // Periodic displacement control beyond the mean gap would need infinite pressure.
   try {
-    solver.solve({gap0.data(), grid.size()}, Loading::approach(gap0.mean() * 1.01));
+    solver->solve({gap0.data(), grid.size()}, Loading::approach(gap0.mean() * 1.01));
     FAIL() << "expected InputError";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("mean initial gap"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(solver.solve({gap0.data(), 3}, Loading::force(1.0)), InputError);
-  solvers::PolonskyKeerOptions bad;
+  EXPECT_THROW(solver->solve({gap0.data(), 3}, Loading::force(1.0)), InputError);
+  solvers::SolverOptions bad = test_options(GetParam());
   bad.tolerance = 0.0;
-  EXPECT_THROW(solvers::PolonskyKeer(op, bad), InputError);
+  EXPECT_THROW(solvers::make_solver(grid, kEStar, bad), InputError);
 }
 
-INSTANTIATE_TEST_SUITE_P(Variants, PolonskyKeerControlTest, testing::all_pk_variants(), testing::variant_name);
+INSTANTIATE_TEST_SUITE_P(Variants, PolonskyKeerControlTest, testing::all_pk_solvers(), testing::solver_type_name);
 
 }  // namespace
 }  // namespace halfspace

@@ -6,22 +6,21 @@
 #include <cmath>
 #include <numbers>
 
-#include "halfspace/operators/fft_influence_operator.hpp"
-#include "halfspace/solvers/polonsky_keer.hpp"
+#include "halfspace/solvers/solver_factory.hpp"
 #include "support/analytic_solutions.hpp"
 #include "support/contact_checks.hpp"
 #include "support/grid_fields.hpp"
-#include "support/pk_variants.hpp"
+#include "support/pk_solvers.hpp"
 
 namespace halfspace {
 namespace {
 
+using solvers::SolverType;
 using testing::centred_x;
 using testing::expect_contact_conditions;
-using testing::PkSolver;
-using testing::PkVariant;
+using testing::test_options;
 
-class PolonskyKeerHertzTest : public ::testing::TestWithParam<PkVariant> {};
+class PolonskyKeerHertzTest : public ::testing::TestWithParam<SolverType> {};
 using testing::field_from;
 
 constexpr double kEStar = 1.1e11;       // Pa, steel on steel
@@ -40,16 +39,15 @@ struct PointContactErrors {
   double approach_error;  // relative
 };
 
-PointContactErrors solve_hertz_point(std::size_t n, PkVariant variant) {
+PointContactErrors solve_hertz_point(std::size_t n, SolverType type) {
   const auto hertz = testing::hertz_point(kForce, kSphereRadius, kEStar);
   const double size = 3.0 * hertz.radius;
   const Grid grid = Grid::plane(n, n, size / static_cast<double>(n), size / static_cast<double>(n), Boundary::free);
   const Eigen::ArrayXd gap0 =
       field_from(grid, [](double x, double y) { return (x * x + y * y) / (2 * kSphereRadius); });
 
-  FftInfluenceOperator op(grid, kEStar);
-  PkSolver solver(op, kEStar, variant);
-  const SolveResult result = solver.solve({gap0.data(), grid.size()}, Loading::force(kForce));
+  const auto solver = solvers::make_solver(grid, kEStar, test_options(type));
+  const SolveResult result = solver->solve({gap0.data(), grid.size()}, Loading::force(kForce));
   EXPECT_TRUE(result.converged()) << result.message;
   EXPECT_NEAR(result.total_force, kForce, kForceBalanceTolerance * kForce);
   expect_contact_conditions(result, kGapTolerance * hertz.approach);
@@ -86,15 +84,14 @@ struct LineContactErrors {
 constexpr double kCylinderRadius = 0.01875;  // m, R1 = 0.05, R2 = 0.03 combined
 constexpr double kLineLoad = 1e5;            // N/m
 
-LineContactErrors solve_hertz_line(std::size_t n, PkVariant variant) {
+LineContactErrors solve_hertz_line(std::size_t n, SolverType type) {
   const auto hertz = testing::hertz_line(kLineLoad, kCylinderRadius, kEStar);
   const double size = 3.0 * hertz.half_width;
   const Grid grid = Grid::line(n, size / static_cast<double>(n), Boundary::free);
   const Eigen::ArrayXd gap0 = field_from(grid, [](double x, double) { return x * x / (2 * kCylinderRadius); });
 
-  FftInfluenceOperator op(grid, kEStar);
-  PkSolver solver(op, kEStar, variant);
-  const SolveResult result = solver.solve({gap0.data(), grid.size()}, Loading::force(kLineLoad));
+  const auto solver = solvers::make_solver(grid, kEStar, test_options(type));
+  const SolveResult result = solver->solve({gap0.data(), grid.size()}, Loading::force(kLineLoad));
   EXPECT_TRUE(result.converged()) << result.message;
   EXPECT_NEAR(result.total_force, kLineLoad, kForceBalanceTolerance * kLineLoad);
   expect_contact_conditions(result, kGapTolerance * hertz.half_width * hertz.half_width / kCylinderRadius);
@@ -128,7 +125,7 @@ TEST_P(PolonskyKeerHertzTest, ReproducesHertzLineContactAndConvergesUnderRefinem
   EXPECT_LT(fine.profile_error, coarse.profile_error);
 }
 
-INSTANTIATE_TEST_SUITE_P(Variants, PolonskyKeerHertzTest, testing::all_pk_variants(), testing::variant_name);
+INSTANTIATE_TEST_SUITE_P(Variants, PolonskyKeerHertzTest, testing::all_pk_solvers(), testing::solver_type_name);
 
 }  // namespace
 }  // namespace halfspace

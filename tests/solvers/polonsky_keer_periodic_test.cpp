@@ -6,22 +6,21 @@
 #include <cmath>
 #include <numbers>
 
-#include "halfspace/operators/fft_influence_operator.hpp"
-#include "halfspace/solvers/polonsky_keer.hpp"
+#include "halfspace/solvers/solver_factory.hpp"
 #include "support/analytic_solutions.hpp"
 #include "support/contact_checks.hpp"
 #include "support/grid_fields.hpp"
-#include "support/pk_variants.hpp"
+#include "support/pk_solvers.hpp"
 
 namespace halfspace {
 namespace {
 
+using solvers::SolverType;
 using testing::centred_x;
 using testing::expect_contact_conditions;
-using testing::PkSolver;
-using testing::PkVariant;
+using testing::test_options;
 
-class PolonskyKeerPeriodicTest : public ::testing::TestWithParam<PkVariant> {};
+class PolonskyKeerPeriodicTest : public ::testing::TestWithParam<SolverType> {};
 using testing::field_from;
 
 constexpr double kEStar = 2.0e9;      // Pa
@@ -38,12 +37,11 @@ TEST_P(PolonskyKeerPeriodicTest, ReproducesWestergaardHalfWidthAndProfile) {
   const testing::Westergaard exact{kWavelength, kAmplitude, kEStar};
   const Eigen::ArrayXd gap0 = field_from(
       grid, [](double x, double) { return kAmplitude * (1.0 - std::cos(2.0 * std::numbers::pi * x / kWavelength)); });
-  FftInfluenceOperator op(grid, kEStar);
-  PkSolver solver(op, kEStar, GetParam());
+  const auto solver = solvers::make_solver(grid, kEStar, test_options(GetParam()));
 
   for (const double fraction : {0.05, 0.3, 0.7}) {
     const double mean_pressure = fraction * exact.full_contact_pressure();
-    const SolveResult result = solver.solve({gap0.data(), n}, Loading::mean_pressure(mean_pressure));
+    const SolveResult result = solver->solve({gap0.data(), n}, Loading::mean_pressure(mean_pressure));
     ASSERT_TRUE(result.converged()) << result.message;
     expect_contact_conditions(result, 1e-8 * kAmplitude);
 
@@ -75,11 +73,10 @@ TEST_P(PolonskyKeerPeriodicTest, TwoDimensionalWaveIsInFullContactAtAndAboveCrit
   const Eigen::ArrayXd gap0 = kAmplitude * (1.0 - wave);
   const double critical = std::numbers::sqrt2 * std::numbers::pi * kEStar * kAmplitude / kWavelength;
 
-  FftInfluenceOperator op(grid, kEStar);
-  PkSolver solver(op, kEStar, GetParam());
+  const auto solver = solvers::make_solver(grid, kEStar, test_options(GetParam()));
   for (const double ratio : {1.0, 1.5}) {
     const double mean_pressure = ratio * critical;
-    const SolveResult result = solver.solve({gap0.data(), grid.size()}, Loading::mean_pressure(mean_pressure));
+    const SolveResult result = solver->solve({gap0.data(), grid.size()}, Loading::mean_pressure(mean_pressure));
     ASSERT_TRUE(result.converged()) << result.message;
     const Eigen::ArrayXd exact = mean_pressure + critical * wave;
     Eigen::Index worst = 0;
@@ -94,7 +91,7 @@ TEST_P(PolonskyKeerPeriodicTest, TwoDimensionalWaveIsInFullContactAtAndAboveCrit
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Variants, PolonskyKeerPeriodicTest, testing::all_pk_variants(), testing::variant_name);
+INSTANTIATE_TEST_SUITE_P(Variants, PolonskyKeerPeriodicTest, testing::all_pk_solvers(), testing::solver_type_name);
 
 }  // namespace
 }  // namespace halfspace

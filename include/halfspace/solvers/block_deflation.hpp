@@ -34,23 +34,9 @@
 #include "halfspace/fft/real_fft.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/linalg/parallel.hpp"
+#include "halfspace/solvers/block_deflation_options.hpp"
 
 namespace halfspace::solvers {
-
-struct BlockDeflationOptions {
-  std::size_t block = 32;  // cells per block side; must divide nx and ny
-  // The most pair-sum terms per cell a full build of A may take: 190-320 on
-  // the 8 % contacts of docs/performance.md (0.45 s at 2048^2, about five
-  // FFT products), 9200 at 97 % contact, where the preconditioner alone
-  // needs few iterations anyway.
-  double max_pair_terms = 1000.0;
-  double coarse_tolerance = 1e-8;
-  int coarse_max_iterations = 1000;
-
-  // Throws InputError naming the option unless 1 <= block <= 256,
-  // max_pair_terms > 0, 0 < coarse_tolerance < 1 and coarse_max_iterations >= 1.
-  void validate() const;
-};
 
 // Counters of the coarse work, for reports and benchmarks.
 struct BlockDeflationStats {
@@ -68,6 +54,8 @@ class BlockDeflation {
   // and on a periodic grid the 3 x 3 neighbourhood would meet itself across
   // the period).
   static bool covers(const Grid& grid, std::size_t block);
+  // Throws InputError (SolverOptionError for the block) unless covers(grid, block).
+  static void require_covers(const Grid& grid, std::size_t block);
   // Throws InputError unless covers(grid, options.block).
   BlockDeflation(const Grid& grid, BlockDeflationOptions options = {});
   ~BlockDeflation();

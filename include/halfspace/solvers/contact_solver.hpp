@@ -9,7 +9,7 @@
 #include "halfspace/solvers/loading.hpp"
 #include "halfspace/solvers/solve_result.hpp"
 
-namespace halfspace {
+namespace halfspace::solvers {
 
 class ContactSolver {
  public:
@@ -36,4 +36,10 @@ class ContactSolver {
   }
 };
 
+}  // namespace halfspace::solvers
+
+// The library, its writers and front ends name these without the folder's
+// namespace.
+namespace halfspace {
+using solvers::ContactSolver;
 }  // namespace halfspace

@@ -74,9 +74,10 @@ ContactLcp make_contact_lcp(const Grid& grid, double e_star, const Eigen::Matrix
 
 // The Polonsky-Keer stopping measure of a contact state (polonsky_keer.hpp):
 // ( sum_i (p_i / pbar) |g_i| + sum_i max(-g_i, 0) ) / (N g_ref), with
-// g_ref = ptp(g0) + ptp(K p), so that dense and FFT results compare.
+// g_ref = ptp(g0) + max(ptp(K p), pbar uniform_response_range), where
+// uniform_response_range = ptp(K 1), so that dense and FFT results compare.
 double contact_residual(std::span<const double> initial_gap, const Eigen::ArrayXd& pressure,
-                        const Eigen::ArrayXd& displacement, const Eigen::ArrayXd& gap);
+                        const Eigen::ArrayXd& displacement, const Eigen::ArrayXd& gap, double uniform_response_range);
 
 // A contact solver that assembles K and solves the contact LCP with a dense
 // method (the derived class). Warm starts are ignored: the methods are direct

@@ -36,7 +36,7 @@ struct LoadSweepOptions {
 // solver's grid) under loads `values` (in the unit of `mode`) in the given
 // order. A step that does not converge is kept, with its status, and the
 // sweep goes on (cold-started). The solver's own per-iteration progress is
-// whatever it was built with (SolverSettings::progress). Throws InputError if
+// whatever it was built with (SolverOptions::progress). Throws InputError if
 // `values` is empty or a value is invalid for `mode` (checked before the
 // first solve), or if the solver rejects the problem.
 std::vector<SweepStep> run_load_sweep(ContactSolver& solver, const Grid& grid, std::span<const double> initial_gap,

@@ -4,7 +4,7 @@
 
 #include <string_view>
 
-namespace halfspace {
+namespace halfspace::solvers {
 
 enum class ControlMode {
   force,          // total normal force: N in 2D, N/m in 1D
@@ -32,4 +32,12 @@ struct Loading {
   void validate() const;
 };
 
+}  // namespace halfspace::solvers
+
+// The library, its writers and front ends name these without the folder's
+// namespace.
+namespace halfspace {
+using solvers::ControlMode;
+using solvers::Loading;
+using solvers::to_string;
 }  // namespace halfspace

@@ -17,25 +17,9 @@
 
 #include "halfspace/grid.hpp"
 #include "halfspace/solvers/contact_solver.hpp"
+#include "halfspace/solvers/solver_options.hpp"
 
 namespace halfspace::solvers {
-
-struct MultilevelOptions {
-  // Residual tolerance of the coarse solves: they only place the contact
-  // edges for the next grid, so a loose tolerance suffices (the fine solve
-  // uses the requested one).
-  double coarse_tolerance = 1e-4;
-  // No grid coarser than this many cells per axis is made.
-  std::size_t min_cells_per_axis = 32;
-  // A warm start under load control is used only while the target force is
-  // within this factor of the start's force; further off, the coarse grids
-  // give the better start (docs/development-log.md, warm starts).
-  double warm_start_max_load_ratio = 1.5;
-
-  // Throws InputError naming the option unless 0 < coarse_tolerance < 1,
-  // min_cells_per_axis >= 2 and warm_start_max_load_ratio >= 1.
-  void validate() const;
-};
 
 class MultilevelSolver final : public ContactSolver {
  public:

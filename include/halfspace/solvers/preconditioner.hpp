@@ -1,17 +1,63 @@
 // A preconditioner for contact solvers: an approximation of the inverse of
-// the influence operator, z = M^-1 r, applied to residuals (gaps).
+// the influence operator, z = M^-1 r, applied to residuals (gaps). Within a
+// contact solve M^-1 may depend on the iterate's active set, which the
+// solver reports before each application (adapt) and after each step
+// (observe_step); a plain M^-1, such as the Fourier one, ignores both.
 #pragma once
 
+#include <cstddef>
 #include <span>
+#include <string_view>
+
+#include "halfspace/solvers/solve_result.hpp"
 
 namespace halfspace::solvers {
+
+// The cells a contact solver's search direction covers, read from its
+// current iterate: the contact set {p > 0}, and with `overlap` also the
+// cells out of contact that interpenetrate {p = 0, g < 0} (see
+// polonsky_keer.hpp). Under `mean_free` (load control) directions must be
+// mean-free on the set, so that a step keeps the force.
+struct SearchSet {
+  const double* pressure = nullptr;
+  const double* gap = nullptr;
+  bool overlap = false;
+  bool mean_free = false;
+
+  bool in_contact(std::size_t i) const { return pressure[i] > 0.0; }
+  // Bitwise, not short-circuit, so that masks over the cells stay free of
+  // branches (contact edges are everywhere).
+  bool contains(std::size_t i) const { return (pressure[i] > 0.0) | (overlap & (gap[i] < 0.0)); }
+};
+
+// What a step of a contact solve did, for preconditioners that adapt.
+struct StepReport {
+  double clipped = 0.0;   // cells whose pressure the bounds or entries changed
+  double searched = 0.0;  // cells in the search set
+};
 
 class Preconditioner {
  public:
   virtual ~Preconditioner() = default;
   // out = M^-1 in, both with one entry per cell; `out` may be `in` itself
-  // (in place). M^-1 must be symmetric positive definite. Allocates nothing.
+  // (in place). M^-1 must be symmetric positive definite (on the mean-free
+  // fields of the search set, for an adapting one). Allocates nothing.
   virtual void apply(std::span<const double> in, std::span<double> out) = 0;
+
+  // How a solver built on it names itself: "<kind>-polonsky-keer".
+  virtual std::string_view kind() const { return "preconditioned"; }
+  // A contact solve begins.
+  virtual void begin_solve() {}
+  // Before an application in a contact solve: the iterate's search set
+  // (valid until the application) and the residuals so far. Returns whether
+  // M^-1 changed since the last application, so that the solver restarts
+  // its conjugate directions.
+  virtual bool adapt(const SearchSet& /*set*/, std::span<const double> /*residuals*/) { return false; }
+  // After each step of a contact solve.
+  virtual void observe_step(const StepReport& /*step*/) {}
+  // A contact solve ends: adds the work M^-1 did beyond its applications
+  // (which the solver counts) to `result`.
+  virtual void report(SolveResult& /*result*/) const {}
 };
 
 }  // namespace halfspace::solvers

@@ -9,7 +9,7 @@
 #include <string_view>
 #include <vector>
 
-namespace halfspace {
+namespace halfspace::solvers {
 
 enum class SolveStatus {
   converged,        // residual below tolerance
@@ -40,6 +40,10 @@ struct DeflationRecord {
   int updates = 0;
   int declined = 0;
   long coarse_iterations = 0;
+  // Coarse solves that stopped short of their tolerance (iteration limit or
+  // breakdown); each leaves the correction inexact, which SolveResult::warnings
+  // reports.
+  int unconverged_coarse_solves = 0;
   // The rate per iteration of the last two settled steps without the
   // correction, when it was measured and found fast (it then stays off):
   // 0 if never measured or if the correction joined.
@@ -50,6 +54,10 @@ struct SolveResult {
   SolveStatus status = SolveStatus::breakdown;
   std::string message;  // human-readable reason, empty when converged
   std::string solver;   // e.g. "polonsky-keer"
+  // Numerical trouble that did not stop the solve but may have slowed it or
+  // made it less accurate (e.g. unconverged coarse solves of the deflation),
+  // one sentence each; empty when there was none.
+  std::vector<std::string> warnings;
 
   int iterations = 0;
   double residual = 0.0;                 // final value of the stopping measure
@@ -75,4 +83,14 @@ struct SolveResult {
   bool converged() const { return status == SolveStatus::converged; }
 };
 
+}  // namespace halfspace::solvers
+
+// The library, its writers and front ends name these without the folder's
+// namespace.
+namespace halfspace {
+using solvers::CoarseStart;
+using solvers::DeflationRecord;
+using solvers::SolveResult;
+using solvers::SolveStatus;
+using solvers::to_string;
 }  // namespace halfspace

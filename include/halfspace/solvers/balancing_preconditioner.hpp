@@ -1,0 +1,64 @@
+// The Fourier preconditioner with the block-deflation coarse correction in
+// balancing form (Mandel 1993; Tang, Nabben, Vuik & Erlangga 2009):
+//
+//   B r = Q r + (I - Q K) M^-1 (I - K Q) r,   Q = Z A^-1 Z^T,
+//
+// with M^-1 the Fourier preconditioner, K the influence operator and Z, A
+// the coarse space of block_deflation.hpp on the contact cells. B acts on
+// the search set (under load control on its mean-free fields, where the
+// iteration moves, so that it stays symmetric there). A DeflationSchedule
+// decides in which iterations the correction applies; in the others B is
+// M^-1 alone. Each corrected application costs two more products K.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "halfspace/operators/influence_operator.hpp"
+#include "halfspace/solvers/block_deflation.hpp"
+#include "halfspace/solvers/deflation_schedule.hpp"
+#include "halfspace/solvers/preconditioner.hpp"
+
+namespace halfspace::solvers {
+
+class BalancingPreconditioner final : public Preconditioner {
+ public:
+  // Keeps references to all three, which must outlive it. Throws InputError
+  // if the deflation's grid is not the operator's.
+  BalancingPreconditioner(InfluenceOperator& op, Preconditioner& fourier, BlockDeflation& deflation);
+
+  // Outside a contact solve, or in an iteration without the correction:
+  // M^-1. Otherwise B on the search set last given to adapt().
+  void apply(std::span<const double> in, std::span<double> out) override;
+
+  std::string_view kind() const override { return "deflated"; }
+  void begin_solve() override;
+  // Asks the schedule, and brings the coarse matrix up to the contact set
+  // when the correction applies (the first time in this object's life, also
+  // the kernel K e_0: one product, and the correction's field).
+  bool adapt(const SearchSet& set, std::span<const double> residuals) override;
+  void observe_step(const StepReport& step) override;
+  // The correction's products and coarse work in this solve, and its record.
+  void report(SolveResult& result) const override;
+
+ private:
+  // B in on the search set, into out (which may be in).
+  void apply_balancing(std::span<const double> in, std::span<double> out);
+
+  InfluenceOperator& op_;
+  Preconditioner& fourier_;
+  BlockDeflation& deflation_;
+  DeflationSchedule schedule_;
+  SearchSet set_;
+  bool active_ = false;        // the correction applies in this iteration
+  bool kernel_known_ = false;  // deflation_ has the kernel (one product, when first needed)
+  // Made when the correction first applies: Z y as a field, then K of it,
+  // then K of M^-1's output (8 B per cell, none for a solve that never
+  // deflates).
+  Eigen::ArrayXd coarse_field_;
+  // This solve's work.
+  int operator_applications_ = 0;
+  int deflated_iterations_ = 0;
+  BlockDeflationStats stats_before_;
+};
+
+}  // namespace halfspace::solvers

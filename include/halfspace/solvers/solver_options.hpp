@@ -1,0 +1,133 @@
+// The front door of the solvers: which solver, and every option it takes,
+// typed and checked in one place (validate), so that a front end maps its
+// own flags onto SolverOptions and adds no rule of its own. make_solver
+// (solver_factory.hpp) builds the solver these options describe.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "halfspace/error.hpp"
+#include "halfspace/fft/fft_planning.hpp"
+#include "halfspace/grid.hpp"
+#include "halfspace/solvers/block_deflation_options.hpp"
+
+namespace halfspace::solvers {
+
+enum class SolverType {
+  pk_multilevel,  // pk_fourier started from coarse-grid solutions (multilevel_solver.hpp)
+  pk_fourier,     // Polonsky-Keer with the Fourier preconditioner (fourier_preconditioner.hpp)
+  pk,             // Polonsky-Keer as the paper states it (polonsky_keer.hpp)
+  lemke,          // Lemke pivoting on the assembled matrix, small grids (lemke.hpp)
+  lcpquad,        // the paper's quadratic programme on the assembled matrix, small grids (lcp_quad.hpp)
+};
+
+// "pk-multilevel", "pk-fourier", "pk", "lemke", "lcpquad".
+std::string_view to_string(SolverType type);
+// The inverse of to_string; throws SolverOptionError naming the option
+// "solver", the value and the allowed names otherwise.
+SolverType parse_solver_type(std::string_view name);
+// Every solver type, in the order --help lists them.
+std::vector<SolverType> solver_types();
+// Whether the solver works on the FFT operator (the Polonsky-Keer family),
+// so that fft_planning and deflation concern it.
+bool uses_fft(SolverType type);
+
+// A broken rule of SolverOptions. option() is the option as SolverOptions
+// spells it ("tolerance", "deflation.block", ...), value() its value as
+// text and rule() the rest of the sentence ("is invalid: allowed range is
+// (0, 1)"), so that a front end can restate it with its own spelling of the
+// option; what() is "option = value rule".
+class SolverOptionError : public InputError {
+ public:
+  SolverOptionError(std::string option, std::string value, std::string rule);
+  const std::string& option() const { return option_; }
+  const std::string& value() const { return value_; }
+  const std::string& rule() const { return rule_; }
+
+ private:
+  std::string option_;
+  std::string value_;
+  std::string rule_;
+};
+
+// pk_multilevel's coarse-grid start.
+struct MultilevelOptions {
+  // Residual tolerance of the coarse solves: they only place the contact
+  // edges for the next grid, so a loose tolerance suffices (the fine solve
+  // uses the requested one).
+  double coarse_tolerance = 1e-4;
+  // No grid coarser than this many cells per axis is made.
+  std::size_t min_cells_per_axis = 32;
+  // A warm start under load control is used only while the target force is
+  // within this factor of the start's force; further off, the coarse grids
+  // give the better start (docs/solvers.md, warm starts).
+  double warm_start_max_load_ratio = 1.5;
+
+  // Throws SolverOptionError naming the option ("multilevel.coarse_tolerance",
+  // ...) unless 0 < coarse_tolerance < 1, min_cells_per_axis >= 2 and
+  // warm_start_max_load_ratio >= 1.
+  void validate() const;
+};
+
+// The coarse-grid correction by block deflation (block_deflation.hpp) of
+// pk_fourier and of pk_multilevel's finest grid; the block size and the
+// coarse solve's limits are BlockDeflationOptions'.
+struct DeflationOptions : BlockDeflationOptions {
+  // off: never; on: always (pk_fourier or pk_multilevel only, on a grid the
+  // block covers); automatic: on pk_multilevel's finest grid where
+  // automatic_applies says it pays, never with pk_fourier.
+  enum class Mode { off, on, automatic };
+  Mode mode = Mode::automatic;
+
+  // The automatic rule: the correction's costs (two more products per
+  // iteration, the kernel product, assembling and solving the coarse
+  // matrix) outweigh the iterations it saves below this many cells
+  // (docs/solvers.md, "Block deflation").
+  static constexpr std::size_t kAutomaticFromCells = std::size_t{1} << 22;
+  // Whether automatic mode deflates on `grid`: 2D, periodic or free, at
+  // least kAutomaticFromCells cells, and `block` dividing it into at least
+  // 3 blocks per axis (BlockDeflation::covers).
+  bool automatic_applies(const Grid& grid) const;
+};
+
+std::string_view to_string(DeflationOptions::Mode mode);
+
+struct SolverOptions {
+  // The default was chosen by measurement (docs/solvers.md).
+  SolverType type = SolverType::pk_multilevel;
+  // Relative residual at which the solve stops (the stopping criterion of
+  // polonsky_keer.hpp; dense_contact.hpp for lemke and lcpquad).
+  double tolerance = 1e-10;
+  // Iteration limit of the iterative solvers (pivots for lemke); unset:
+  // kDefaultMaxIterations. lcpquad takes none (ALGLIB's interior-point
+  // method stops at its own tolerance), so setting it there is refused.
+  std::optional<int> max_iterations;
+  static constexpr int kDefaultMaxIterations = 10000;
+  // FFTW planning of the FFT solvers. measure costs its planning once per
+  // grid size (FFTW's wisdom keeps it) and buys faster transforms on large
+  // grids (docs/solvers.md).
+  FftPlanning fft_planning = FftPlanning::measure;
+  // Called once per iteration of the fine solve with (iteration, residual);
+  // may be empty. It runs on the calling thread between iterations.
+  std::function<void(int, double)> progress;
+
+  MultilevelOptions multilevel;  // pk_multilevel only
+  DeflationOptions deflation;    // pk_fourier and pk_multilevel only
+
+  int iteration_limit() const { return max_iterations.value_or(kDefaultMaxIterations); }
+
+  // Throws SolverOptionError naming the option unless: 0 < tolerance < 1;
+  // max_iterations >= 1, and unset for lcpquad; the nested options are
+  // valid; deflation is on only for pk_fourier or pk_multilevel.
+  void validate() const;
+  // validate(), and the rules that depend on the grid: deflation on needs a
+  // grid its block covers.
+  void validate(const Grid& grid) const;
+};
+
+}  // namespace halfspace::solvers

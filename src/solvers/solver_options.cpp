@@ -1,0 +1,123 @@
+#include "halfspace/solvers/solver_options.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <array>
+#include <utility>
+
+#include "halfspace/solvers/block_deflation.hpp"
+
+namespace halfspace::solvers {
+namespace {
+
+constexpr std::array<std::pair<SolverType, std::string_view>, 5> kSolverNames{{
+    {SolverType::pk_multilevel, "pk-multilevel"},
+    {SolverType::pk_fourier, "pk-fourier"},
+    {SolverType::pk, "pk"},
+    {SolverType::lemke, "lemke"},
+    {SolverType::lcpquad, "lcpquad"},
+}};
+
+std::string text(double value) {
+  return fmt::format("{}", value);
+}
+
+}  // namespace
+
+SolverOptionError::SolverOptionError(std::string option, std::string value, std::string rule)
+    : InputError(fmt::format("{} = {} {}", option, value, rule)),
+      option_(std::move(option)),
+      value_(std::move(value)),
+      rule_(std::move(rule)) {}
+
+std::string_view to_string(SolverType type) {
+  for (const auto& [known, name] : kSolverNames) {
+    if (known == type) return name;
+  }
+  return "unknown";
+}
+
+SolverType parse_solver_type(std::string_view name) {
+  std::vector<std::string_view> names;
+  for (const auto& [type, known] : kSolverNames) {
+    if (known == name) return type;
+    names.push_back(known);
+  }
+  throw SolverOptionError("solver", std::string(name),
+                          fmt::format("is invalid: the solver must be one of {}", fmt::join(names, ", ")));
+}
+
+std::vector<SolverType> solver_types() {
+  std::vector<SolverType> types;
+  for (const auto& [type, name] : kSolverNames) types.push_back(type);
+  return types;
+}
+
+bool uses_fft(SolverType type) {
+  return type == SolverType::pk_multilevel || type == SolverType::pk_fourier || type == SolverType::pk;
+}
+
+std::string_view to_string(DeflationOptions::Mode mode) {
+  switch (mode) {
+    case DeflationOptions::Mode::off:
+      return "off";
+    case DeflationOptions::Mode::on:
+      return "on";
+    case DeflationOptions::Mode::automatic:
+      return "automatic";
+  }
+  return "unknown";
+}
+
+bool DeflationOptions::automatic_applies(const Grid& grid) const {
+  return grid.size() >= kAutomaticFromCells && BlockDeflation::covers(grid, block);
+}
+
+void MultilevelOptions::validate() const {
+  if (!(coarse_tolerance > 0.0 && coarse_tolerance < 1.0)) {
+    throw SolverOptionError("multilevel.coarse_tolerance", text(coarse_tolerance),
+                            "is invalid: allowed range is (0, 1)");
+  }
+  if (min_cells_per_axis < 2) {
+    throw SolverOptionError("multilevel.min_cells_per_axis", fmt::format("{}", min_cells_per_axis),
+                            "is invalid: must be at least 2");
+  }
+  if (!(warm_start_max_load_ratio >= 1.0)) {
+    throw SolverOptionError("multilevel.warm_start_max_load_ratio", text(warm_start_max_load_ratio),
+                            "is invalid: must be at least 1");
+  }
+}
+
+void SolverOptions::validate() const {
+  if (!(tolerance > 0.0 && tolerance < 1.0)) {
+    throw SolverOptionError("tolerance", text(tolerance), "is invalid: the tolerance must be in (0, 1)");
+  }
+  if (max_iterations) {
+    if (*max_iterations < 1) {
+      throw SolverOptionError("max_iterations", fmt::format("{}", *max_iterations), "is invalid: must be at least 1");
+    }
+    if (type == SolverType::lcpquad) {
+      // Silently ignoring the limit would let a user believe it applied.
+      throw SolverOptionError("max_iterations", fmt::format("{}", *max_iterations),
+                              "does not apply to solver 'lcpquad': ALGLIB's dense interior-point method has no "
+                              "iteration limit (it stops at its own tolerance); leave it unset, or use solver "
+                              "'lemke', whose pivots it limits");
+    }
+  }
+  multilevel.validate();
+  deflation.validate();
+  if (deflation.mode == DeflationOptions::Mode::on && type != SolverType::pk_fourier &&
+      type != SolverType::pk_multilevel) {
+    throw SolverOptionError(
+        "deflation.mode", std::string(to_string(deflation.mode)),
+        fmt::format("does not apply to solver '{}': deflation needs pk-fourier or pk-multilevel", to_string(type)));
+  }
+}
+
+void SolverOptions::validate(const Grid& grid) const {
+  validate();
+  if (deflation.mode == DeflationOptions::Mode::on) BlockDeflation::require_covers(grid, deflation.block);
+}
+
+}  // namespace halfspace::solvers
