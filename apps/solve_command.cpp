@@ -28,7 +28,8 @@
 namespace halfspace::app {
 
 int run_solve(const SolveSetup& setup) {
-  const std::string on_grid = fmt::format("{} on the {} grid", setup.solver.name, setup.grid.shape_string());
+  const std::string on_grid =
+      fmt::format("{} on the {} grid", solvers::to_string(setup.solver.type), setup.grid.shape_string());
   if (setup.load_values.size() > 1) {
     const Activity sweep(fmt::format("running the load sweep ({}, {} steps)", on_grid, setup.load_values.size()));
     return run_sweep(setup);

@@ -229,8 +229,8 @@ void check_load_scale(const SolveOptions& o, const Grid& grid, ControlMode mode,
 // "the solve (pk-multilevel, free boundary, 4194304 cells)", with the steps
 // of a sweep.
 std::string solve_description(const Grid& grid, const solvers::SolverOptions& solver, std::size_t steps) {
-  return fmt::format("the {} ({}, {} boundary, {} cells{})", steps > 1 ? "load sweep" : "solve", solvers::to_string(solver.type),
-                     to_string(grid.boundary()), grid.size(),
+  return fmt::format("the {} ({}, {} boundary, {} cells{})", steps > 1 ? "load sweep" : "solve",
+                     solvers::to_string(solver.type), to_string(grid.boundary()), grid.size(),
                      steps > 1 ? fmt::format(", {} steps", steps) : std::string());
 }
 
