@@ -18,6 +18,7 @@
 #include "halfspace/error.hpp"
 #include "halfspace/geometry/builtin_surface.hpp"
 #include "halfspace/io/height_map_writer.hpp"
+#include "halfspace/io/output_file.hpp"
 #include "halfspace/memory_estimate.hpp"
 #include "halfspace/surface/self_affine.hpp"
 #include "halfspace/surface/statistics.hpp"
@@ -208,6 +209,8 @@ int run_generate(const GivenOptions& given, bool quiet, const std::vector<std::s
     throw InputError("no surface kind given: pass --kind self-affine, sphere, cylinder, wavy or flat");
   }
   if (!given.contains("output")) throw InputError("no output file given: pass --output FILE.h5");
+  // Refuse a device, FIFO or directory before generating, not after.
+  io::check_output_path(given.find("output")->second);
   const std::string& kind = given.find("kind")->second;
   std::optional<geometry::SurfaceShape> shape;
   if (kind != "self-affine") {

@@ -445,7 +445,10 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
   SolveResult result;
   result.solver = name_;
   result.tolerance = options_.tolerance;
-  result.residual_history.reserve(static_cast<std::size_t>(options_.max_iterations) + 1);
+  // Room for a typical solve only: a huge iteration limit must not reserve
+  // memory the solve never uses; past 1024 iterations the history grows by
+  // doubling (a handful of reallocations in a long solve).
+  result.residual_history.reserve(static_cast<std::size_t>(std::min(options_.max_iterations, 1024)) + 1);
   result.pressure = std::move(pressure);
   result.displacement.setZero(n);
   result.gap.setZero(n);
