@@ -13,7 +13,9 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <optional>
 
+#include "halfspace/checked_size.hpp"
 #include "halfspace/error.hpp"
 
 namespace halfspace::io::detail {
@@ -275,10 +277,10 @@ std::uint64_t physical_memory_bytes() {
 }
 
 std::uint64_t checked_product(std::uint64_t a, std::uint64_t b, std::string_view what, const ReadTarget& target) {
-  if (a != 0 && b > std::numeric_limits<std::uint64_t>::max() / a) {
-    target.fail(fmt::format("{} ({} x {}) overflows a 64-bit size", what, a, b));
-  }
-  return a * b;
+  static_assert(sizeof(std::size_t) == sizeof(std::uint64_t));
+  const std::optional<std::size_t> product = checked_multiply(a, b);
+  if (!product) target.fail(fmt::format("{} ({} x {}) overflows a 64-bit size", what, a, b));
+  return *product;
 }
 
 std::string point_text(std::size_t index, std::size_t nx, int dimension) {

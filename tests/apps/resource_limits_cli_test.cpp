@@ -202,14 +202,19 @@ TEST(ResourceLimitsCliTest, ExtremeButFiniteValuesAreRefusedWithTheirRange) {
                  {"--size 1e300 is invalid"}, dir / "g.h5");
 }
 
-// A height map whose spacing attribute is absurd is refused naming the file.
-TEST(ResourceLimitsCliTest, HeightMapSpacingOutsideTheRangeIsRefused) {
-  const TempDir dir;
+// A flat 16x16 height map, map.h5 in `dir`, for the solves below to read.
+void generate_flat_map(const TempDir& dir) {
   ASSERT_EQ(testing::run_program(
                 {"generate", "--kind", "flat", "--grid", "16x16", "--size", "1e-3", "--output", "map.h5", "--quiet"},
                 dir.path())
                 .exit_code,
             kExitOk);
+}
+
+// A height map whose spacing attribute is absurd is refused naming the file.
+TEST(ResourceLimitsCliTest, HeightMapSpacingOutsideTheRangeIsRefused) {
+  const TempDir dir;
+  ASSERT_NO_FATAL_FAILURE(generate_flat_map(dir));
   const std::vector<std::string> base{"solve", "--height-map", "map.h5", "--E-star", "1e11", "--force",
                                       "1",     "--output",     "o.h5"};
   std::vector<std::string> tiny = base;
@@ -222,11 +227,7 @@ TEST(ResourceLimitsCliTest, HeightMapSpacingOutsideTheRangeIsRefused) {
 // wrapped round.
 TEST(ResourceLimitsCliTest, WindowPastTheLastColumnSaysWhere) {
   const TempDir dir;
-  ASSERT_EQ(testing::run_program(
-                {"generate", "--kind", "flat", "--grid", "16x16", "--size", "1e-3", "--output", "map.h5", "--quiet"},
-                dir.path())
-                .exit_code,
-            kExitOk);
+  ASSERT_NO_FATAL_FAILURE(generate_flat_map(dir));
   const auto solve_window = [&](const std::string& window) {
     return testing::run_program(
         {"solve", "--height-map", "map.h5", "--E-star", "1e11", "--force", "1", "--window", window, "--output", "o.h5"},
