@@ -11,7 +11,7 @@
 #include "halfspace/fft/real_fft.hpp"
 #include "halfspace/operators/influence_operator.hpp"
 
-namespace halfspace {
+namespace halfspace::operators {
 
 class FftInfluenceOperator final : public InfluenceOperator {
  public:
@@ -44,4 +44,9 @@ class FftInfluenceOperator final : public InfluenceOperator {
   std::unique_ptr<Impl> impl_;
 };
 
+}  // namespace halfspace::operators
+
+// The library and its front ends name these without the folder's namespace.
+namespace halfspace {
+using operators::FftInfluenceOperator;
 }  // namespace halfspace
