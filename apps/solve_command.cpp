@@ -72,7 +72,8 @@ int run_solve(const SolveSetup& setup) {
   const std::span<const double> heights(setup.heights.data(), static_cast<std::size_t>(setup.heights.size()));
   activity.emplace(fmt::format("computing the statistics of the {} grid", setup.grid.shape_string()));
   metadata.surface_statistics = surface::surface_statistics(setup.grid, heights);
-  metadata.contact_statistics = surface::contact_statistics(setup.grid, result);
+  metadata.contact_statistics = surface::contact_statistics(setup.grid, {result.pressure.data(), setup.grid.size()},
+                                                            {result.gap.data(), setup.grid.size()});
   // Subsurface stresses (--stress-depths), written as the result's /stress group.
   std::optional<stress::StressVolume> stresses;
   if (!setup.stress_depths.empty()) {
