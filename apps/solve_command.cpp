@@ -16,7 +16,9 @@
 #include "exit_codes.hpp"
 #include "halfspace/geometry/builtin_surface.hpp"
 #include "halfspace/io/result_writer.hpp"
+#include "halfspace/io/stress_writer.hpp"
 #include "halfspace/solvers/solver_factory.hpp"
+#include "halfspace/stress/stress_volume.hpp"
 #include "halfspace/surface/statistics.hpp"
 #include "halfspace/threads.hpp"
 #include "plot_tool.hpp"
@@ -72,6 +74,17 @@ int run_solve(const SolveSetup& setup) {
   metadata.surface_statistics = surface::surface_statistics(setup.grid, heights);
   metadata.contact_statistics = surface::contact_statistics(setup.grid, {result.pressure.data(), setup.grid.size()},
                                                             {result.gap.data(), setup.grid.size()});
+  // Subsurface stresses (--stress-depths), written as the result's /stress group.
+  std::optional<stress::StressVolume> stresses;
+  if (!setup.stress_depths.empty()) {
+    activity.emplace(fmt::format("computing stresses at {} depths", setup.stress_depths.size()));
+    stresses = stress::compute_stress_volume(
+        setup.grid, std::span<const double>(result.pressure.data(), static_cast<std::size_t>(result.pressure.size())),
+        setup.stress_depths, setup.stress_nu, setup.solver.fft_planning);
+    metadata.extra_groups = [&](const io::Hdf5Node& root) {
+      io::write_stress_group(root, setup.grid, *stresses, setup.stress_nu);
+    };
+  }
   activity.emplace(fmt::format("writing {}", setup.output.string()));
   io::write_result(setup.output, setup.grid,
                    std::span<const double>(setup.heights.data(), static_cast<std::size_t>(setup.heights.size())),

@@ -49,6 +49,7 @@ constexpr std::string_view kMaterial = "Material (E1, nu1, E2 and nu2, or E-star
 constexpr std::string_view kLoad = "Load (exactly one)";
 constexpr std::string_view kSolver = "Solver";
 constexpr std::string_view kOutput = "Output";
+constexpr std::string_view kStress = "Subsurface stresses (single solves)";
 
 const std::array kOptions{
     OptionSpec{"height-map", &SolveOptions::height_map, Kind::path, kSurface, "FILE",
@@ -113,6 +114,12 @@ const std::array kOptions{
     OptionSpec{"max-memory", &SolveOptions::max_memory, Kind::memory, kSolver, "SIZE",
                "refuse to start when the run's estimated peak memory exceeds SIZE: bytes, or K, M, G, T (powers of "
                "1024), e.g. 512M or 8G [the memory available: MemAvailable, or a cgroup's limit if lower]"},
+    // Subsurface stresses: the /stress group of the result file.
+    OptionSpec{"stress-depths", &SolveOptions::stress_depths, Kind::text, kStress, "LIST|START:STOP:COUNT",
+               "also write the stresses below the contact at these depths (m, > 0): z1,z2,... or COUNT evenly "
+               "spaced from START to STOP"},
+    OptionSpec{"stress-nu", &SolveOptions::stress_nu, Kind::number, kStress, "NU",
+               "Poisson's ratio of the body whose stresses are wanted [nu1 when --nu1 and --nu2 are equal]"},
     OptionSpec{"output", &SolveOptions::output, Kind::path, kOutput, "FILE",
                "result file (HDF5), required; replaced if it exists"},
     OptionSpec{"quiet", &SolveOptions::quiet, Kind::flag, kOutput, "",

@@ -55,6 +55,9 @@ struct SolveOptions {
   std::optional<std::string> fft_planning;
   std::optional<long long> deflation_block;
   std::optional<std::string> max_memory;  // "8G", "512M" or bytes, as written
+  // Subsurface stresses written into the result (docs/usage.md#stress).
+  std::optional<std::string> stress_depths;  // "z1,z2,..." or "START:STOP:COUNT" (m), as written
+  std::optional<double> stress_nu;
   // Output.
   std::optional<std::string> output;
   bool quiet = false;

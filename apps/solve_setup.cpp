@@ -27,11 +27,13 @@
 #include "halfspace/io/sweep_writer.hpp"
 #include "halfspace/material.hpp"
 #include "halfspace/memory_estimate.hpp"
+#include "halfspace/stress/stress_volume.hpp"
 #include "halfspace/surface/padding.hpp"
 #include "halfspace/surface/preparation.hpp"
 #include "halfspace/threads.hpp"
 #include "memory_check.hpp"
 #include "physical_ranges.hpp"
+#include "stress_command.hpp"
 #include "value_parsing.hpp"
 
 namespace halfspace::app {
@@ -493,6 +495,45 @@ Surface height_map_surface(const SolveOptions& o, Boundary boundary, const GridC
   return {std::move(grid), std::move(map.heights), std::move(source), std::move(map.preparation)};
 }
 
+// Subsurface stresses (--stress-depths, --stress-nu): the depths and Poisson's
+// ratio, or none. Poisson's ratio is --stress-nu, else nu1 when the two bodies'
+// are equal (E* alone does not fix it).
+struct StressRequest {
+  std::vector<double> depths;
+  double nu = 0.0;
+};
+
+StressRequest stress_request_from(const SolveOptions& o, std::size_t load_steps) {
+  if (!o.stress_depths) {
+    if (o.stress_nu) throw InputError(fmt::format("{} needs --stress-depths", o.describe("stress-nu")));
+    return {};
+  }
+  if (load_steps > 1) {
+    throw InputError(fmt::format("{} applies to a single solve, not a load sweep: run `halfspace stress` on a step",
+                                 o.describe("stress-depths")));
+  }
+  const bool range = o.stress_depths->find(':') != std::string::npos;
+  StressRequest request;
+  request.depths =
+      parse_stress_depths(range ? nullptr : &*o.stress_depths, range ? &*o.stress_depths : nullptr, "stress-");
+  if (o.stress_nu) {
+    request.nu = parse_stress_poisson_ratio(fmt::format("{}", *o.stress_nu), "--stress-nu");
+  } else if (o.nu1 && o.nu2 && *o.nu1 == *o.nu2) {
+    request.nu = parse_stress_poisson_ratio(fmt::format("{}", *o.nu1), "--nu1");
+  } else {
+    throw InputError(missing_poisson_ratio_message("--stress-nu") + " (or equal --nu1 and --nu2)");
+  }
+  return request;
+}
+
+// The peak while the stresses are computed and written after the solve: the
+// heights and the result's fields (5 arrays) kept, and the stress volume.
+double stress_peak_memory(const Grid& grid, std::size_t depth_count) {
+  if (depth_count == 0) return 0.0;
+  return kProgramBytes + 6.0 * 8.0 * static_cast<double>(grid.size()) +
+         stress::stress_memory_estimate(grid, depth_count);
+}
+
 }  // namespace
 
 SolveSetup make_solve_setup(const SolveOptions& options) {
@@ -509,10 +550,13 @@ SolveSetup make_solve_setup(const SolveOptions& options) {
       in_context(options.name("boundary"), [&] { return parse_boundary(options.boundary.value_or("free")); });
   fs::path output = output_from(options);
   const std::optional<MemoryLimit> limit = memory_limit(options.max_memory, options.describe("max-memory"));
+  const StressRequest stress = stress_request_from(options, load_values.size());
   const GridCheck check_grid = [&](const Grid& grid, const std::string& request) {
     check_load_scale(options, grid, loading.mode, load_values);
     require_memory(fmt::format("{}: {}", request, solve_description(grid, solver, load_values.size())),
-                   solve_memory_estimate(grid, solver, load_values.size()), limit);
+                   std::max(solve_memory_estimate(grid, solver, load_values.size()),
+                            stress_peak_memory(grid, stress.depths.size())),
+                   limit);
   };
   check_outputs_against_inputs(options, output, load_values.size() > 1, solver.fft_planning);
 
@@ -523,20 +567,23 @@ SolveSetup make_solve_setup(const SolveOptions& options) {
                                  surface.grid.shape_string()));
   }
   with_solver_flags(options, [&] { solver.validate(surface.grid); });
-  return SolveSetup{std::move(surface.grid),
-                    std::move(surface.heights),
-                    std::move(surface.source),
-                    std::move(surface.preparation),
-                    e_star,
-                    loading,
-                    std::move(solver),
-                    threads,
-                    std::move(output),
-                    options.quiet,
-                    options.command_line,
-                    options.config_text,
-                    std::move(load_values),
-                    options.plot};
+  SolveSetup setup{std::move(surface.grid),
+                   std::move(surface.heights),
+                   std::move(surface.source),
+                   std::move(surface.preparation),
+                   e_star,
+                   loading,
+                   std::move(solver),
+                   threads,
+                   std::move(output),
+                   options.quiet,
+                   options.command_line,
+                   options.config_text,
+                   std::move(load_values),
+                   options.plot,
+                   stress.depths,
+                   stress.nu};
+  return setup;
 }
 
 }  // namespace halfspace::app

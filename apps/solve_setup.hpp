@@ -33,6 +33,9 @@ struct SolveSetup {
   std::string config_text;
   std::vector<double> load_values;  // every load in order, in loading.mode's unit; more than one: a sweep
   bool plot = false;                // draw figures with the plotting tool after writing
+  // Subsurface stresses to write into the result: none when empty.
+  std::vector<double> stress_depths;  // m
+  double stress_nu = 0.0;
 };
 
 // Applies the defaults, checks every option and their combinations, builds

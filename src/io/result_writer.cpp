@@ -90,6 +90,7 @@ void write_result(const std::filesystem::path& path, const Grid& grid, std::span
     root.write_dataset("height", field_shape(grid), height, "m");
     write_result_fields(root, grid, result);
     write_result_root_attributes(root, grid, result, metadata);
+    if (metadata.extra_groups) metadata.extra_groups(root);
   });
 }
 

@@ -4,11 +4,13 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
 
 #include "halfspace/grid.hpp"
+#include "halfspace/io/hdf5_output.hpp"
 #include "halfspace/solvers/solve_result.hpp"
 #include "halfspace/surface/statistics.hpp"
 
@@ -26,6 +28,9 @@ struct ResultMetadata {
   // clusters; surface_rms_height, surface_rms_slope (docs/file-format.md).
   std::optional<surface::ContactStatistics> contact_statistics;
   std::optional<surface::SurfaceStatistics> surface_statistics;
+  // More groups written under the root after the fields when set (the
+  // /stress group of solve --stress-depths).
+  std::function<void(const Hdf5Node& root)> extra_groups;
 };
 
 // Datasets /height, /pressure, /gap, /displacement (float64) and /contact
