@@ -9,6 +9,7 @@
 #include <string>
 
 #include "halfspace/grid.hpp"
+#include "halfspace/layered_material.hpp"
 #include "halfspace/solvers/solve_result.hpp"
 #include "halfspace/surface/statistics.hpp"
 
@@ -26,6 +27,10 @@ struct ResultMetadata {
   // clusters; surface_rms_height, surface_rms_slope (docs/file-format.md).
   std::optional<surface::ContactStatistics> contact_statistics;
   std::optional<surface::SurfaceStatistics> surface_statistics;
+  // A coated half-space: its five constants as root attributes (layer_thickness,
+  // layer_E, layer_nu, substrate_E, substrate_nu); e_star is then the layer's
+  // E1/(1 - nu1^2), its modulus against the rigid surface.
+  std::optional<LayeredMaterial> coating;
 };
 
 // Datasets /height, /pressure, /gap, /displacement (float64) and /contact
