@@ -44,7 +44,7 @@ int run_solve(const SolveSetup& setup) {
   solvers::SolverOptions settings = setup.solver;
   settings.progress = progress.callback();
   std::optional<Activity> activity(std::in_place, fmt::format("building the solver ({})", on_grid));
-  std::unique_ptr<ContactSolver> solver = solvers::make_solver(setup.grid, setup.e_star, settings);
+  std::unique_ptr<ContactSolver> solver = make_setup_solver(setup, settings);
 
   activity.emplace(fmt::format("solving ({})", on_grid));
   Eigen::ArrayXd initial_gap = geometry::initial_gap_from_heights(setup.heights);
@@ -63,6 +63,7 @@ int run_solve(const SolveSetup& setup) {
 
   io::ResultMetadata metadata;
   metadata.e_star = setup.e_star;
+  metadata.coating = setup.coating;
   metadata.load_mode = std::string(to_string(setup.loading.mode));
   metadata.threads = setup.threads;
   metadata.command_line = setup.command_line;

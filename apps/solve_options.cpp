@@ -46,6 +46,7 @@ constexpr std::string_view kSurface = "Surface (exactly one of --height-map, --g
 constexpr std::string_view kPreparation = "Height-map format and preparation (applied in this order)";
 constexpr std::string_view kGrid = "Grid";
 constexpr std::string_view kMaterial = "Material (E1, nu1, E2 and nu2, or E-star)";
+constexpr std::string_view kCoating = "Coated half-space (all five, instead of the material; the surface is rigid)";
 constexpr std::string_view kLoad = "Load (exactly one)";
 constexpr std::string_view kSolver = "Solver";
 constexpr std::string_view kOutput = "Output";
@@ -89,6 +90,15 @@ const std::array kOptions{
     OptionSpec{"nu2", &SolveOptions::nu2, Kind::number, kMaterial, "NU", "Poisson's ratio of body 2"},
     OptionSpec{"E-star", &SolveOptions::e_star, Kind::number, kMaterial, "PA",
                "composite modulus E* (Pa), instead of E1, nu1, E2, nu2"},
+    // Coated half-space (docs/usage.md#coated-half-space).
+    OptionSpec{"layer-thickness", &SolveOptions::layer_thickness, Kind::number, kCoating, "M",
+               "thickness t of the elastic layer bonded to the substrate (m)"},
+    OptionSpec{"layer-E", &SolveOptions::layer_e, Kind::number, kCoating, "PA", "Young's modulus of the layer (Pa)"},
+    OptionSpec{"layer-nu", &SolveOptions::layer_nu, Kind::number, kCoating, "NU", "Poisson's ratio of the layer"},
+    OptionSpec{"substrate-E", &SolveOptions::substrate_e, Kind::number, kCoating, "PA",
+               "Young's modulus of the substrate (Pa)"},
+    OptionSpec{"substrate-nu", &SolveOptions::substrate_nu, Kind::number, kCoating, "NU",
+               "Poisson's ratio of the substrate"},
     OptionSpec{"force", &SolveOptions::force, Kind::numbers, kLoad, "F",
                "total normal force: N (2D) or N/m (1D); a list F1,F2,... or a log range START:STOP:COUNT "
                "solves a sweep, each step warm-started from the previous one"},
@@ -141,7 +151,10 @@ struct Alternative {
 
 const std::vector<std::vector<Alternative>> kAlternatives{
     {{{"force"}, {"force"}}, {{"mean-pressure"}, {"mean-pressure"}}, {{"approach"}, {"approach"}}},
-    {{{"E-star"}, {"E-star"}}, {{"E1", "nu1", "E2", "nu2"}, {"E1", "nu1", "E2", "nu2"}}},
+    {{{"E-star"}, {"E-star"}},
+     {{"E1", "nu1", "E2", "nu2"}, {"E1", "nu1", "E2", "nu2"}},
+     {{"layer-thickness", "layer-E", "layer-nu", "substrate-E", "substrate-nu"},
+      {"layer-thickness", "layer-E", "layer-nu", "substrate-E", "substrate-nu"}}},
     {{{"height-map"}, {"height-map", "dataset", "dx", "dy", "format", "unit", "window", "invalid", "detrend", "pad"}},
      {{"geometry"}, {"geometry", "radius", "wavelength", "amplitude", "grid", "size"}}},
 };

@@ -43,6 +43,13 @@ struct SolveOptions {
   std::optional<double> e2;
   std::optional<double> nu2;
   std::optional<double> e_star;
+  // Coated half-space (all five, instead of the material above): a layer
+  // bonded to a substrate, against a rigid surface.
+  std::optional<double> layer_thickness;
+  std::optional<double> layer_e;
+  std::optional<double> layer_nu;
+  std::optional<double> substrate_e;
+  std::optional<double> substrate_nu;
   // Load: exactly one; more than one value makes a load sweep.
   std::optional<std::vector<double>> force;
   std::optional<std::vector<double>> mean_pressure;

@@ -28,6 +28,7 @@
 #include "halfspace/material.hpp"
 #include "halfspace/memory_estimate.hpp"
 #include "halfspace/stress/stress_volume.hpp"
+#include "halfspace/solvers/solver_factory.hpp"
 #include "halfspace/surface/padding.hpp"
 #include "halfspace/surface/preparation.hpp"
 #include "halfspace/threads.hpp"
@@ -123,6 +124,48 @@ double material_from(const SolveOptions& o) {
   return require_in_range(fmt::format("the composite modulus E* = {:g} Pa of {}, {}, {}, {}", e_star, o.describe("E1"),
                                       o.describe("nu1"), o.describe("E2"), o.describe("nu2")),
                           e_star, kMinModulus, kMaxModulus, "Pa");
+}
+
+// Coated half-space: all five of --layer-thickness, --layer-E, --layer-nu,
+// --substrate-E, --substrate-nu, instead of the material options.
+std::optional<LayeredMaterial> coating_from(const SolveOptions& o) {
+  const Presence keys{{"layer-thickness", o.layer_thickness.has_value()},
+                      {"layer-E", o.layer_e.has_value()},
+                      {"layer-nu", o.layer_nu.has_value()},
+                      {"substrate-E", o.substrate_e.has_value()},
+                      {"substrate-nu", o.substrate_nu.has_value()}};
+  const std::vector<std::string> given = given_names(o, keys);
+  if (given.empty()) return std::nullopt;
+  const std::vector<std::string> material = given_names(o, {{"E-star", o.e_star.has_value()},
+                                                            {"E1", o.e1.has_value()},
+                                                            {"nu1", o.nu1.has_value()},
+                                                            {"E2", o.e2.has_value()},
+                                                            {"nu2", o.nu2.has_value()}});
+  if (!material.empty()) {
+    throw InputError(
+        fmt::format("{} cannot be combined with {}: a coated half-space (--layer-*, --substrate-*) "
+                    "against a rigid surface replaces the material options",
+                    join_names(given), join_names(material)));
+  }
+  if (given.size() < 5) {
+    std::vector<std::string> missing;
+    for (const auto& [key, present] : keys) {
+      if (!present) missing.push_back(fmt::format("--{}", key));
+    }
+    throw InputError(fmt::format(
+        "incomplete coated half-space: missing {} (give all of layer-thickness, layer-E, layer-nu, substrate-E, "
+        "substrate-nu)",
+        join_names(missing)));
+  }
+  auto poisson = [&o](std::string_view key, double nu) {
+    if (!(nu > -1.0 && nu <= 0.5)) {
+      throw InputError(fmt::format("{} is invalid: allowed range is (-1, 0.5]", o.describe(key)));
+    }
+    return nu;
+  };
+  return LayeredMaterial{require_length(o, "layer-thickness", *o.layer_thickness),
+                         {require_modulus(o, "layer-E", *o.layer_e), poisson("layer-nu", *o.layer_nu)},
+                         {require_modulus(o, "substrate-E", *o.substrate_e), poisson("substrate-nu", *o.substrate_nu)}};
 }
 
 // The load mode and every value of the load (one for a single solve, more for
@@ -538,7 +581,8 @@ double stress_peak_memory(const Grid& grid, std::size_t depth_count) {
 
 SolveSetup make_solve_setup(const SolveOptions& options) {
   check_surface_choice(options);
-  const double e_star = material_from(options);
+  const std::optional<LayeredMaterial> coating = coating_from(options);
+  const double e_star = coating ? plane_strain_modulus(coating->layer) : material_from(options);
   auto [loading, load_values] = loading_from(options);
   solvers::SolverOptions solver = solver_options_from(options);
   const int threads = threads_from(options);
@@ -567,23 +611,55 @@ SolveSetup make_solve_setup(const SolveOptions& options) {
                                  surface.grid.shape_string()));
   }
   with_solver_flags(options, [&] { solver.validate(surface.grid); });
-  SolveSetup setup{std::move(surface.grid),
-                   std::move(surface.heights),
-                   std::move(surface.source),
-                   std::move(surface.preparation),
-                   e_star,
-                   loading,
-                   std::move(solver),
-                   threads,
-                   std::move(output),
-                   options.quiet,
-                   options.command_line,
-                   options.config_text,
-                   std::move(load_values),
-                   options.plot,
-                   stress.depths,
-                   stress.nu};
-  return setup;
+  if (coating) {
+    if (solver.type == solvers::SolverType::lemke || solver.type == solvers::SolverType::lcpquad) {
+      throw InputError(fmt::format(
+          "{} is invalid for a coated half-space (its dense matrix is the homogeneous one): allowed are pk, "
+          "pk-fourier and pk-multilevel",
+          options.describe("solver")));
+    }
+    if (surface.grid.dimension() == 1 && !surface.grid.periodic()) {
+      throw InputError(
+          "a coated half-space on a free 1D grid is not supported: pass --boundary periodic or use a "
+          "2D surface");
+    }
+    if (!stress.depths.empty()) {
+      throw InputError(
+          "--stress-depths is not supported for a coated half-space: the subsurface stresses are those of a "
+          "homogeneous half-space");
+    }
+  }
+  return SolveSetup{std::move(surface.grid),
+                    std::move(surface.heights),
+                    std::move(surface.source),
+                    std::move(surface.preparation),
+                    e_star,
+                    loading,
+                    std::move(solver),
+                    threads,
+                    std::move(output),
+                    options.quiet,
+                    options.command_line,
+                    options.config_text,
+                    std::move(load_values),
+                    options.plot,
+                    stress.depths,
+                    stress.nu,
+                    coating};
+}
+
+std::string coating_text(const LayeredMaterial& coating) {
+  return fmt::format(
+      "layer t = {:.6g} m, E1 = {:.6g} Pa, nu1 = {:.6g} on substrate E2 = {:.6g} Pa, nu2 = {:.6g} "
+      "(E* above is the layer's)",
+      coating.thickness, coating.layer.youngs_modulus, coating.layer.poissons_ratio, coating.substrate.youngs_modulus,
+      coating.substrate.poissons_ratio);
+}
+
+std::unique_ptr<solvers::ContactSolver> make_setup_solver(const SolveSetup& setup,
+                                                          const solvers::SolverOptions& settings) {
+  return setup.coating ? solvers::make_solver(setup.grid, *setup.coating, settings)
+                       : solvers::make_solver(setup.grid, setup.e_star, settings);
 }
 
 }  // namespace halfspace::app

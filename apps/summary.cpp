@@ -65,6 +65,7 @@ void print_summary(std::FILE* out, const SolveSetup& setup, const SolveResult& r
   }
   row(out, "grid", grid_text(grid));
   row(out, "E*", fmt::format("{:.6g} Pa", setup.e_star));
+  if (const auto& c = setup.coating) row(out, "coating", coating_text(*c));
   row(out, "load", load_text(setup));
   const bool uses_fft = solvers::uses_fft(setup.solver.type);
   row(out, "solver",

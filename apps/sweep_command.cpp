@@ -59,6 +59,7 @@ void print_sweep_summary(std::FILE* out, const SolveSetup& setup, std::span<cons
   row("grid",
       fmt::format("{} cells ({}D), {} boundary", grid.shape_string(), grid.dimension(), to_string(grid.boundary())));
   row("E*", fmt::format("{:.6g} Pa", setup.e_star));
+  if (const auto& c = setup.coating) row("coating", coating_text(*c));
   row("load", fmt::format("{} sweep, {} steps from {:.6g} to {:.6g} {}", load_name(mode), steps.size(),
                           setup.load_values.front(), setup.load_values.back(), load_unit(mode, grid)));
   row("solver", fmt::format("{}, {} thread{}, tolerance {:.1e}", steps.front().result.solver, setup.threads,
@@ -80,6 +81,7 @@ void print_sweep_summary(std::FILE* out, const SolveSetup& setup, std::span<cons
 io::ResultMetadata metadata_for(const SolveSetup& setup) {
   io::ResultMetadata metadata;
   metadata.e_star = setup.e_star;
+  metadata.coating = setup.coating;
   metadata.load_mode = std::string(to_string(setup.loading.mode));
   metadata.threads = setup.threads;
   metadata.command_line = setup.command_line;
@@ -106,7 +108,7 @@ int run_sweep(const SolveSetup& setup) {
   Progress progress(!setup.quiet, setup.load_values.size(), setup.solver.tolerance);
   solvers::SolverOptions settings = setup.solver;
   settings.progress = progress.callback();
-  const std::unique_ptr<ContactSolver> solver = solvers::make_solver(setup.grid, setup.e_star, settings);
+  const std::unique_ptr<ContactSolver> solver = make_setup_solver(setup, settings);
 
   const Eigen::ArrayXd initial_gap = geometry::initial_gap_from_heights(setup.heights);
   solvers::LoadSweepOptions options;

@@ -69,4 +69,13 @@ void write_contact_statistics_attributes(const Hdf5Node& node, const surface::Co
   node.write_int64_attribute("clusters", statistics.clusters());
 }
 
+// Coated half-space (docs/file-format.md#root-attributes).
+void write_coating_attributes(const Hdf5Node& node, const LayeredMaterial& coating) {
+  node.write_double_attribute("layer_thickness", coating.thickness);
+  node.write_double_attribute("layer_E", coating.layer.youngs_modulus);
+  node.write_double_attribute("layer_nu", coating.layer.poissons_ratio);
+  node.write_double_attribute("substrate_E", coating.substrate.youngs_modulus);
+  node.write_double_attribute("substrate_nu", coating.substrate.poissons_ratio);
+}
+
 }  // namespace halfspace::io

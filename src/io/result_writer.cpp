@@ -63,6 +63,7 @@ void write_result_root_attributes(const Hdf5Node& root, const Grid& grid, const 
   root.write_double_attribute("dy", grid.dimension() == 1 ? 0.0 : grid.dy());
   root.write_string_attribute("boundary", to_string(grid.boundary()));
   root.write_double_attribute("E_star", metadata.e_star);
+  if (metadata.coating) write_coating_attributes(root, *metadata.coating);
   root.write_string_attribute("load_mode", metadata.load_mode);
 
   write_result_attributes(root, result);

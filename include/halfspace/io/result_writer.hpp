@@ -11,6 +11,7 @@
 
 #include "halfspace/grid.hpp"
 #include "halfspace/io/hdf5_output.hpp"
+#include "halfspace/layered_material.hpp"
 #include "halfspace/solvers/solve_result.hpp"
 #include "halfspace/surface/statistics.hpp"
 
@@ -31,6 +32,10 @@ struct ResultMetadata {
   // More groups written under the root after the fields when set (the
   // /stress group of solve --stress-depths).
   std::function<void(const Hdf5Node& root)> extra_groups;
+  // A coated half-space: its five constants as root attributes (layer_thickness,
+  // layer_E, layer_nu, substrate_E, substrate_nu); e_star is then the layer's
+  // E1/(1 - nu1^2), its modulus against the rigid surface.
+  std::optional<LayeredMaterial> coating;
 };
 
 // Datasets /height, /pressure, /gap, /displacement (float64) and /contact
