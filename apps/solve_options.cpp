@@ -47,6 +47,7 @@ constexpr std::string_view kPreparation = "Height-map format and preparation (ap
 constexpr std::string_view kGrid = "Grid";
 constexpr std::string_view kMaterial = "Material (E1, nu1, E2 and nu2, or E-star)";
 constexpr std::string_view kLoad = "Load (exactly one)";
+constexpr std::string_view kInterface = "Interface law";
 constexpr std::string_view kSolver = "Solver";
 constexpr std::string_view kOutput = "Output";
 
@@ -88,6 +89,10 @@ const std::array kOptions{
     OptionSpec{"nu2", &SolveOptions::nu2, Kind::number, kMaterial, "NU", "Poisson's ratio of body 2"},
     OptionSpec{"E-star", &SolveOptions::e_star, Kind::number, kMaterial, "PA",
                "composite modulus E* (Pa), instead of E1, nu1, E2, nu2"},
+    // Hardness cap (elastic-perfectly plastic surface, docs/theory.md#hardness-cap).
+    OptionSpec{"hardness", &SolveOptions::hardness, Kind::number, kInterface, "PA",
+               "hardness H (Pa): caps the pressure at H, cells at the cap flow plastically (every solver but lemke) "
+               "[none: elastic]"},
     OptionSpec{"force", &SolveOptions::force, Kind::numbers, kLoad, "F",
                "total normal force: N (2D) or N/m (1D); a list F1,F2,... or a log range START:STOP:COUNT "
                "solves a sweep, each step warm-started from the previous one"},

@@ -43,6 +43,8 @@ struct SolveOptions {
   std::optional<double> e2;
   std::optional<double> nu2;
   std::optional<double> e_star;
+  // Interface law: a hardness cap p <= H (Pa).
+  std::optional<double> hardness;
   // Load: exactly one; more than one value makes a load sweep.
   std::optional<std::vector<double>> force;
   std::optional<std::vector<double>> mean_pressure;
