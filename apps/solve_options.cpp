@@ -48,6 +48,7 @@ constexpr std::string_view kGrid = "Grid";
 constexpr std::string_view kMaterial = "Material (E1, nu1, E2 and nu2, or E-star)";
 constexpr std::string_view kCoating = "Coated half-space (all five, instead of the material; the surface is rigid)";
 constexpr std::string_view kLoad = "Load (exactly one)";
+constexpr std::string_view kInterface = "Interface law";
 constexpr std::string_view kSolver = "Solver";
 constexpr std::string_view kOutput = "Output";
 constexpr std::string_view kStress = "Subsurface stresses (single solves)";
@@ -99,6 +100,10 @@ const std::array kOptions{
                "Young's modulus of the substrate (Pa)"},
     OptionSpec{"substrate-nu", &SolveOptions::substrate_nu, Kind::number, kCoating, "NU",
                "Poisson's ratio of the substrate"},
+    // Hardness cap (elastic-perfectly plastic surface, docs/theory.md#hardness-cap).
+    OptionSpec{"hardness", &SolveOptions::hardness, Kind::number, kInterface, "PA",
+               "hardness H (Pa): caps the pressure at H, cells at the cap flow plastically (every solver but lemke) "
+               "[none: elastic]"},
     OptionSpec{"force", &SolveOptions::force, Kind::numbers, kLoad, "F",
                "total normal force: N (2D) or N/m (1D); a list F1,F2,... or a log range START:STOP:COUNT "
                "solves a sweep, each step warm-started from the previous one"},

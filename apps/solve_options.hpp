@@ -50,6 +50,8 @@ struct SolveOptions {
   std::optional<double> layer_nu;
   std::optional<double> substrate_e;
   std::optional<double> substrate_nu;
+  // Interface law: a hardness cap p <= H (Pa).
+  std::optional<double> hardness;
   // Load: exactly one; more than one value makes a load sweep.
   std::optional<std::vector<double>> force;
   std::optional<std::vector<double>> mean_pressure;

@@ -209,6 +209,7 @@ auto with_solver_flags(const SolveOptions& o, Function&& function) {
     const std::string_view key = option == "tolerance"             ? "tol"
                                  : option == "max_iterations"      ? "max-iter"
                                  : option.starts_with("deflation") ? "deflation-block"
+                                 : option == "hardness"            ? "hardness"
                                                                    : "solver";
     throw InputError(fmt::format("{} {}", o.describe(key), error.rule()));
   }
@@ -227,6 +228,7 @@ solvers::SolverOptions solver_options_from(const SolveOptions& o) {
           *o.deflation_block == 0 ? solvers::DeflationOptions::Mode::off : solvers::DeflationOptions::Mode::on;
       if (*o.deflation_block != 0) solver.deflation.block = static_cast<std::size_t>(*o.deflation_block);
     }
+    if (o.hardness) solver.interface_law.hardness = *o.hardness;  // hardness cap
     solver.validate();
   });
   return solver;
@@ -597,6 +599,11 @@ SolveSetup make_solve_setup(const SolveOptions& options) {
   const StressRequest stress = stress_request_from(options, load_values.size());
   const GridCheck check_grid = [&](const Grid& grid, const std::string& request) {
     check_load_scale(options, grid, loading.mode, load_values);
+    // Hardness cap: no load above H times the domain area.
+    for (const double value : load_values) {
+      in_context(options.describe(loading.mode == ControlMode::force ? "force" : "mean-pressure"),
+                 [&] { solver.interface_law.check_load(grid, Loading{loading.mode, value}); });
+    }
     require_memory(fmt::format("{}: {}", request, solve_description(grid, solver, load_values.size())),
                    std::max(solve_memory_estimate(grid, solver, load_values.size()),
                             stress_peak_memory(grid, stress.depths.size())),

@@ -13,6 +13,7 @@
 #include "halfspace/error.hpp"
 #include "halfspace/io/hdf5_output.hpp"
 #include "halfspace/io/result_attributes.hpp"
+#include "halfspace/solvers/interface_law.hpp"
 #include "halfspace/version.hpp"
 
 namespace halfspace::io {
@@ -46,6 +47,16 @@ void write_result_fields(const Hdf5Node& node, const Grid& grid, const SolveResu
     contact[k] = result.pressure[static_cast<Eigen::Index>(k)] > 0.0 ? 1 : 0;
   }
   node.write_dataset("contact", shape, std::span<const std::uint8_t>(contact), "1");
+  if (result.hardness) {
+    // Hardness cap: the cells at it, and the plastic displacement
+    // (interface_law.hpp, docs/theory.md#hardness-cap).
+    const std::span<const double> pressure = values(result.pressure);
+    const auto plastic = solvers::plastic_cells(pressure, result.hardness);
+    node.write_dataset("plastic", shape, std::span<const std::uint8_t>(plastic.data(), grid.size()), "1");
+    const Eigen::ArrayXd plastic_displacement =
+        solvers::plastic_displacement(pressure, values(result.gap), result.hardness);
+    node.write_dataset("plastic_displacement", shape, values(plastic_displacement), "m");
+  }
   node.write_dataset("residual_history", {result.residual_history.size()},
                      std::span<const double>(result.residual_history), "");
 }

@@ -85,6 +85,7 @@ std::unique_ptr<ContactSolver> make_polonsky_keer(const Grid& grid, const Elasti
   pk.max_iterations = options.iteration_limit();
   if (fine) pk.progress = options.progress;  // progress reports the fine solve only
   pk.form = projected ? PolonskyKeerForm::projected : PolonskyKeerForm::paper;
+  pk.bounds = options.interface_law.bounds();
   // The preconditioner not on 1D grids: there the preconditioned steps clip
   // hundreds of cells each, and the iteration cycles on measured profiles
   // under moderate loads, while the projected form alone converges at every
@@ -136,6 +137,7 @@ std::unique_ptr<ContactSolver> make_multilevel(const Grid& grid, const Elasticit
 std::unique_ptr<ContactSolver> make_dense(const Grid& grid, double e_star, const SolverOptions& options) {
   DenseContactOptions contact;
   contact.tolerance = options.tolerance;
+  contact.hardness = options.interface_law.hardness;
   if (options.type == SolverType::lemke) {
     return std::make_unique<Lemke>(grid, e_star, LemkeOptions{options.iteration_limit()}, contact);
   }

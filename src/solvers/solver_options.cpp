@@ -107,6 +107,12 @@ void SolverOptions::validate() const {
   }
   multilevel.validate();
   deflation.validate();
+  interface_law.validate();
+  if (interface_law.hardness && type == SolverType::lemke) {
+    throw SolverOptionError("hardness", text(*interface_law.hardness),
+                            "does not apply to solver 'lemke': Lemke's pivoting solves the plain LCP without an "
+                            "upper bound on the pressure; use 'lcpquad' for a dense solution with a hardness cap");
+  }
   if (deflation.mode == DeflationOptions::Mode::on && type != SolverType::pk_fourier &&
       type != SolverType::pk_multilevel) {
     throw SolverOptionError(

@@ -15,6 +15,7 @@
 #include "halfspace/fft/fft_planning.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/solvers/block_deflation_options.hpp"
+#include "halfspace/solvers/interface_law.hpp"
 
 namespace halfspace::solvers {
 
@@ -116,6 +117,10 @@ struct SolverOptions {
   // may be empty. It runs on the calling thread between iterations.
   std::function<void(int, double)> progress;
 
+  // The interface law: a hardness cap 0 <= p <= H (every solver but lemke,
+  // whose pivoting solves the plain LCP only).
+  InterfaceLaw interface_law;
+
   MultilevelOptions multilevel;  // pk_multilevel only
   DeflationOptions deflation;    // pk_fourier and pk_multilevel only
 
@@ -123,7 +128,8 @@ struct SolverOptions {
 
   // Throws SolverOptionError naming the option unless: 0 < tolerance < 1;
   // max_iterations >= 1, and unset for lcpquad; the nested options are
-  // valid; deflation is on only for pk_fourier or pk_multilevel.
+  // valid; deflation is on only for pk_fourier or pk_multilevel; a hardness
+  // is in its range and not asked of lemke.
   void validate() const;
   // validate(), and the rules that depend on the grid: deflation on needs a
   // grid its block covers.
