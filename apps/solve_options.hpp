@@ -55,6 +55,11 @@ struct SolveOptions {
   std::optional<std::string> fft_planning;
   std::optional<long long> deflation_block;
   std::optional<std::string> max_memory;  // "8G", "512M" or bytes, as written
+  // Adhesion (docs/usage.md#adhesion): a cohesive law beside the hard wall.
+  std::optional<std::string> adhesion;  // md or exponential
+  std::optional<double> work_of_adhesion;
+  std::optional<double> adhesion_range;
+  std::optional<double> adhesion_stress;
   // Output.
   std::optional<std::string> output;
   bool quiet = false;

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <array>
+#include <cmath>
 
 #include "halfspace/error.hpp"
 
@@ -57,7 +58,11 @@ std::vector<SweepStep> run_load_sweep(ContactSolver& solver, const Grid& grid, s
   std::vector<Loading> loads;
   for (const double value : values) {
     const Loading loading{mode, value};
-    loading.validate();
+    if (!options.signed_loads) {
+      loading.validate();
+    } else if (!std::isfinite(value)) {
+      throw InputError(fmt::format("{} = {} is invalid: must be finite", to_string(mode), value));
+    }
     loads.push_back(loading);
   }
   if (mode == ControlMode::approach && grid.periodic()) {
