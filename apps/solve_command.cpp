@@ -70,7 +70,8 @@ int run_solve(const SolveSetup& setup) {
   const std::span<const double> heights(setup.heights.data(), static_cast<std::size_t>(setup.heights.size()));
   activity.emplace(fmt::format("computing the statistics of the {} grid", setup.grid.shape_string()));
   metadata.surface_statistics = surface::surface_statistics(setup.grid, heights);
-  metadata.contact_statistics = surface::contact_statistics(setup.grid, result);
+  metadata.contact_statistics = surface::contact_statistics(setup.grid, {result.pressure.data(), setup.grid.size()},
+                                                            {result.gap.data(), setup.grid.size()});
   activity.emplace(fmt::format("writing {}", setup.output.string()));
   io::write_result(setup.output, setup.grid,
                    std::span<const double>(setup.heights.data(), static_cast<std::size_t>(setup.heights.size())),
