@@ -173,9 +173,10 @@ auto with_solver_flags(const SolveOptions& o, Function&& function) {
                                  : option == "max_iterations"      ? "max-iter"
                                  : option.starts_with("deflation") ? "deflation-block"
                                  : option == "adhesion.work"       ? "work-of-adhesion"
-                                 : option == "adhesion.range"      ? (o.adhesion_stress ? "adhesion-stress" : "adhesion-range")
-                                 : option == "adhesion.tolerance"  ? "tol"
-                                                                   : "solver";
+                                 : option == "adhesion.range"
+                                     ? (o.adhesion_stress ? "adhesion-stress" : "adhesion-range")
+                                 : option == "adhesion.tolerance" ? "tol"
+                                                                  : "solver";
     throw InputError(fmt::format("{} {}", o.describe(key), error.rule()));
   }
 }
@@ -200,7 +201,8 @@ std::optional<solvers::SolverOptions::Adhesion> adhesion_from(const SolveOptions
     throw InputError(fmt::format("{} cannot be combined with {}: adhesion has its own solver (adhesive-spg)",
                                  o.describe("solver"), o.describe("adhesion")));
   }
-  if (!o.work_of_adhesion) throw InputError(fmt::format("{} needs --work-of-adhesion W (J/m^2)", o.describe("adhesion")));
+  if (!o.work_of_adhesion)
+    throw InputError(fmt::format("{} needs --work-of-adhesion W (J/m^2)", o.describe("adhesion")));
   if (o.adhesion_stress && type != AdhesionLawType::maugis_dugdale) {
     throw InputError(fmt::format("{} applies only to --adhesion md; give --adhesion-range RHO (m) for {}",
                                  o.describe("adhesion-stress"), o.describe("adhesion")));
@@ -267,8 +269,11 @@ void check_load_scale(const SolveOptions& o, const Grid& grid, ControlMode mode,
       // Adhesive loads are signed: only their size is checked.
       const double size = std::abs(mode == ControlMode::force ? values[k] / grid.domain_area() : values[k]);
       const double high = mode == ControlMode::approach ? kMaxLength : kMaxMeanPressure;
-      require_in_range(o.describe(mode == ControlMode::force ? "force" : mode == ControlMode::approach ? "approach" : "mean-pressure") + value_name(k), size, 0.0, high,
-                       mode == ControlMode::approach ? "m (in size)" : "Pa (in size)");
+      require_in_range(o.describe(mode == ControlMode::force      ? "force"
+                                  : mode == ControlMode::approach ? "approach"
+                                                                  : "mean-pressure") +
+                           value_name(k),
+                       size, 0.0, high, mode == ControlMode::approach ? "m (in size)" : "Pa (in size)");
       continue;
     }
     switch (mode) {

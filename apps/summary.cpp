@@ -108,8 +108,9 @@ void print_summary(std::FILE* out, const SolveSetup& setup, const SolveResult& r
     row(out, "adhesion",
         fmt::format("{}, w = {:.6g} J/m^2, range {:.6g} m, stress {:.6g} Pa", a.law, a.work, a.range, a.stress));
     row(out, "adhesive force", fmt::format("{:.6g} {}", a.adhesive_force, force_unit(grid)));
-    row(out, "interaction", fmt::format("{:.6g} of the cells within range; {:.6g} in repulsive contact",
-                                        a.interaction_fraction, a.repulsive_contact_fraction));
+    row(out, "interaction",
+        fmt::format("{:.6g} of the cells within range; {:.6g} in repulsive contact", a.interaction_fraction,
+                    a.repulsive_contact_fraction));
   }
   row(out, "solve time", fmt::format("{:.3f} s", result.wall_seconds));
   row(out, "output", setup.output.string());

@@ -78,8 +78,9 @@ void print_sweep_summary(std::FILE* out, const SolveSetup& setup, std::span<cons
   fmt::print(out, "\n");
   if (setup.solver.adhesion) {
     const double pull_off = solvers::pull_off_force(steps);
-    row("pull-off force", std::isnan(pull_off) ? std::string("none (no unloading branch)")
-                                               : fmt::format("{:.6g} {}", pull_off, grid.dimension() == 1 ? "N/m" : "N"));
+    row("pull-off force", std::isnan(pull_off)
+                              ? std::string("none (no unloading branch)")
+                              : fmt::format("{:.6g} {}", pull_off, grid.dimension() == 1 ? "N/m" : "N"));
   }
   row("output", fmt::format("{} (fields per step), {} (summary table)", setup.output.string(), csv.string()));
 }

@@ -209,6 +209,7 @@ struct AdhesiveContactSolver::Impl {
 
   SolveResult solve_displacement(std::span<const double> initial_gap, double approach,
                                  std::span<const double> initial_pressure, bool start_from_last);
+  SolveResult solve_force(std::span<const double> initial_gap, double target, std::span<const double> initial_pressure);
   void fill_result(SolveResult& result, std::span<const double> initial_gap, double approach);
 
   Grid grid;
@@ -227,11 +228,12 @@ struct AdhesiveContactSolver::Impl {
   // offset + v) and the bound delta - h (-inf on the padding).
   Eigen::ArrayXd x, sx, gradient, trial, direction, s_direction, offset, lower;
   bool have_last = false;  // x holds the last solve's displacement
+  double last_approach = 0.0;
 };
 
 SolveResult AdhesiveContactSolver::Impl::solve_displacement(std::span<const double> initial_gap, double approach,
-                                                             std::span<const double> initial_pressure,
-                                                             bool start_from_last) {
+                                                            std::span<const double> initial_pressure,
+                                                            bool start_from_last) {
   const auto started = std::chrono::steady_clock::now();
   const std::size_t m = size();
   const double inf = std::numeric_limits<double>::infinity();
@@ -359,7 +361,8 @@ SolveResult AdhesiveContactSolver::Impl::solve_displacement(std::span<const doub
     energy = trial_energy;
     recent[static_cast<std::size_t>(iteration + 1) % kMemory] = energy;
   }
-  have_last = true;
+  have_last = result.converged();
+  last_approach = approach;
   fill_result(result, initial_gap, approach);
   result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return result;
@@ -420,6 +423,86 @@ void AdhesiveContactSolver::Impl::fill_result(SolveResult& result, std::span<con
   record.repulsive_contact_fraction = static_cast<double>(repulsive) / cells;
 }
 
+// Load control: the approach whose displacement-controlled equilibrium
+// carries `target`, by the secant method on F(delta) with a bracket kept for
+// bisection (Illinois-free: the branch's F is smooth between jumps). Every
+// solve starts from the previous one, so the search follows the branch it
+// starts on; where F decreases with delta on it (past JKR's force minimum)
+// load control has no stable equilibrium, and the search reports that.
+SolveResult AdhesiveContactSolver::Impl::solve_force(std::span<const double> initial_gap, double target,
+                                                     std::span<const double> initial_pressure) {
+  const auto started = std::chrono::steady_clock::now();
+  double mean_gap = 0.0;
+  double min_gap = std::numeric_limits<double>::infinity();
+  for (const double g : initial_gap) {
+    mean_gap += g;
+    min_gap = std::min(min_gap, g);
+  }
+  mean_gap /= static_cast<double>(initial_gap.size());
+  // Periodic grids: the approach stays below the mean gap (infinite force there).
+  const double ceiling = padded ? std::numeric_limits<double>::infinity() : mean_gap - 1e-9 * (mean_gap - min_gap);
+  double approach = have_last && initial_pressure.empty() ? last_approach : min_gap;
+  SolveResult result =
+      solve_displacement(initial_gap, approach, initial_pressure, have_last && initial_pressure.empty());
+  int iterations = result.iterations;
+  int products = result.operator_applications;
+  const double probe = options.law.range;
+  double low = -std::numeric_limits<double>::infinity();  // approaches with F below the target
+  double high = std::numeric_limits<double>::infinity();  // and above it
+  double previous_approach = approach;
+  double previous_force = result.total_force;
+  const auto tolerance = [&](const SolveResult& r) {
+    const double scale = std::max(
+        {std::abs(target), std::abs(r.adhesion.adhesive_force), std::abs(r.total_force - r.adhesion.adhesive_force)});
+    return options.force_tolerance * scale;
+  };
+  std::string failure;
+  int step = 0;
+  for (; step < options.max_load_steps; ++step) {
+    if (!result.converged()) {
+      failure = fmt::format("the displacement-controlled solve at approach {} m failed: {}", approach, result.message);
+      break;
+    }
+    const double force = result.total_force;
+    if (std::abs(force - target) <= tolerance(result)) break;
+    (force < target ? low : high) = approach;
+    double next = 0.0;
+    if (step == 0) {
+      next = approach + (force < target ? probe : -probe);
+    } else {
+      const double slope = (force - previous_force) / (approach - previous_approach);
+      next = slope > 0.0 ? approach + (target - force) / slope : approach + (force < target ? 1.0 : -1.0) * 2.0 * probe;
+    }
+    // Inside the bracket when there is one (bisection otherwise).
+    if (std::isfinite(low) && std::isfinite(high) && !(next > std::min(low, high) && next < std::max(low, high))) {
+      next = 0.5 * (low + high);
+    }
+    next = std::min(next, ceiling);
+    previous_approach = approach;
+    previous_force = force;
+    approach = next;
+    result = solve_displacement(initial_gap, approach, {}, true);
+    iterations += result.iterations;
+    products += result.operator_applications;
+  }
+  if (failure.empty() && step >= options.max_load_steps) {
+    result.status = SolveStatus::iteration_limit;
+    failure = fmt::format(
+        "the force {} was not reached in {} approach steps (last: {} at approach {} m); beyond the pull-off force, or "
+        "where the force falls as the approach grows, load control has no stable equilibrium on this branch: use "
+        "displacement control (an approach sweep)",
+        target, options.max_load_steps, result.total_force, approach);
+  }
+  if (!failure.empty()) {
+    if (result.converged()) result.status = SolveStatus::breakdown;
+    result.message = failure;
+  }
+  result.iterations = iterations;
+  result.operator_applications = products;
+  result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  return result;
+}
+
 AdhesiveContactSolver::AdhesiveContactSolver(const Grid& grid, double e_star, AdhesiveSolverOptions options) {
   options.validate();
   impl_ = std::make_unique<Impl>(grid, e_star, std::move(options));
@@ -436,8 +519,8 @@ SolveResult AdhesiveContactSolver::solve(std::span<const double> initial_gap, co
   Impl& m = *impl_;
   const std::size_t n = m.grid.size();
   if (initial_gap.size() != n) {
-    throw InputError(
-        fmt::format("adhesive solve: the initial gap has {} entries, but the grid has {} cells", initial_gap.size(), n));
+    throw InputError(fmt::format("adhesive solve: the initial gap has {} entries, but the grid has {} cells",
+                                 initial_gap.size(), n));
   }
   if (!initial_pressure.empty() && initial_pressure.size() != n) {
     throw InputError(fmt::format("adhesive solve: the initial pressure has {} entries, but the grid has {} cells",
@@ -449,9 +532,7 @@ SolveResult AdhesiveContactSolver::solve(std::span<const double> initial_gap, co
   if (loading.mode == ControlMode::approach) {
     return m.solve_displacement(initial_gap, loading.value, initial_pressure, false);
   }
-  throw InputError(fmt::format(
-      "{} = {}: the adhesive solver takes displacement control (--approach) only", to_string(loading.mode),
-      loading.value));
+  return m.solve_force(initial_gap, loading.target_force(m.grid.domain_area()), initial_pressure);
 }
 
 }  // namespace halfspace::solvers

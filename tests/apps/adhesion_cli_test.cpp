@@ -27,10 +27,17 @@ constexpr int kExitInputError = 1;
 // grid of 1 mm: ell = (pi w R^2 / K)^(1/3) = 0.23 mm, the approach unit
 // ell^2 / R = 5.3 um; sigma0 = 15 kPa makes the Tabor parameter about 1.
 std::vector<std::string> sphere_arguments(const fs::path& output, const std::string& approach) {
-  return {"solve",        "--geometry",    "sphere",  "--radius",          "0.01",  "--grid",
-          "32x32",        "--size",        "1e-3",    "--E-star",          "1e6",   "--adhesion",
-          "md",           "--work-of-adhesion", "0.05", "--adhesion-stress", "1.5e4", "--approach=" + approach,
-          "--threads",    "1",             "--output", output.string()};
+  return {"solve",     "--geometry",
+          "sphere",    "--radius",
+          "0.01",      "--grid",
+          "32x32",     "--size",
+          "1e-3",      "--E-star",
+          "1e6",       "--adhesion",
+          "md",        "--work-of-adhesion",
+          "0.05",      "--adhesion-stress",
+          "1.5e4",     "--approach=" + approach,
+          "--threads", "1",
+          "--output",  output.string()};
 }
 
 using testing::ProgramRun;
@@ -97,11 +104,12 @@ TEST(AdhesionCliTest, ConfigFileKeysMatchTheFlags) {
   EXPECT_DOUBLE_EQ(test::read_double_attribute(file.get(), "adhesion_range"), 2e-6);
 }
 
-void expect_refused(const std::vector<std::string>& extra, const std::string& expected, bool adhesive = true) {
+void expect_refused(const std::vector<std::string>& extra, const std::string& expected, bool adhesive = true,
+                    const std::string& approach = "-1e-6") {
   const TempDir dir;
   const fs::path output = dir / "out.h5";
-  std::vector<std::string> arguments{"solve",  "--geometry", "sphere", "--radius", "0.01", "--grid", "16x16",
-                                     "--size", "1e-3",       "--E-star", "1e6",    "--approach=-1e-6",
+  std::vector<std::string> arguments{"solve",    "--geometry",   "sphere", "--radius", "0.01", "--grid",
+                                     "16x16",    "--size",       "1e-3",   "--E-star", "1e6",  "--approach=" + approach,
                                      "--output", output.string()};
   if (adhesive) arguments.insert(arguments.end(), {"--adhesion", "md", "--work-of-adhesion", "0.05"});
   arguments.insert(arguments.end(), extra.begin(), extra.end());
@@ -121,7 +129,7 @@ TEST(AdhesionCliTest, RefusesInconsistentAdhesionOptions) {
   expect_refused({"--adhesion", "jkr", "--work-of-adhesion", "0.05", "--adhesion-range", "1e-6"},
                  "allowed laws are md, exponential", false);
   // Without --adhesion: the law's options alone, and a negative approach, are refused.
-  expect_refused({"--work-of-adhesion", "0.05"}, "--work-of-adhesion 0.05 needs --adhesion", false);
+  expect_refused({"--work-of-adhesion", "0.05"}, "--work-of-adhesion needs --adhesion md|exponential", false, "1e-6");
   expect_refused({}, "--approach -1e-6 is invalid", false);
 }
 

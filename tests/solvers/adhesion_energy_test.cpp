@@ -59,7 +59,8 @@ void expect_uniform_traction(const Grid& grid, const AdhesionLaw& law, double se
 TEST(AdhesionEnergyTest, FlatPeriodicSurfaceFeelsTheLawUniformly) {
   const AdhesionLaw md = AdhesionLaw::maugis_dugdale(0.1, 1e-9);
   const AdhesionLaw exponential = AdhesionLaw::exponential(0.1, 1e-9);
-  for (const Grid& grid : {Grid::plane(16, 8, 1e-8, 1e-8, Boundary::periodic), Grid::line(32, 1e-8, Boundary::periodic)}) {
+  for (const Grid& grid :
+       {Grid::plane(16, 8, 1e-8, 1e-8, Boundary::periodic), Grid::line(32, 1e-8, Boundary::periodic)}) {
     expect_uniform_traction(grid, md, 0.5e-9);
     expect_uniform_traction(grid, exponential, 1e-9);
   }
@@ -75,8 +76,9 @@ struct BumpCase {
 
 BumpCase bump(int dimension, Boundary boundary) {
   const double ell = std::cbrt(kPi * 1e-4 / (4.0 / 3.0));
+  // 1D: a wider cell, so that the approach stays below the periodic mean gap.
   const std::size_t n = dimension == 2 ? 48 : 256;
-  const double dx = 4.0 * ell / static_cast<double>(n);
+  const double dx = (dimension == 2 ? 4.0 : 8.0) * ell / static_cast<double>(n);
   Grid grid = dimension == 2 ? Grid::plane(n, n, dx, dx, boundary) : Grid::line(n, dx, boundary);
   std::vector<double> gap(grid.size());
   for (std::size_t j = 0; j < grid.ny(); ++j) {
@@ -90,14 +92,14 @@ BumpCase bump(int dimension, Boundary boundary) {
 }
 
 // Along a branch without jumps dPi/d(delta) = F (the wall's and the law's
-// forces are the derivative of the minimised energy), so the trapezoidal
-// integral of F over the approaches equals the energy difference; the
-// quadrature error of 20 steps and the solver's tolerance bound the
-// mismatch (relative to the integral of |F|).
-constexpr double kEnergyBalanceTolerance = 2e-3;
+// forces are the derivative of the minimised energy), so Simpson's integral
+// of F over the approaches equals the energy difference; the quadrature
+// error of 20 steps and the solver's tolerance bound the mismatch (relative
+// to the integral of |F|; measured: below 2e-4 with the trapezoidal rule).
+constexpr double kEnergyBalanceTolerance = 1e-3;
 
 void expect_energy_balance(const BumpCase& c) {
-  AdhesiveContactSolver solver = make_solver(c.grid, c.law, 1e-8);
+  AdhesiveContactSolver solver = make_solver(c.grid, c.law, 1e-7);
   const double unit = c.law.range;  // ell^2 / R
   std::vector<SolveResult> results;
   Eigen::ArrayXd start;
@@ -109,12 +111,13 @@ void expect_energy_balance(const BumpCase& c) {
     ASSERT_TRUE(results.back().converged()) << results.back().message;
     start = results.back().pressure;
   }
+  const double step = results[1].approach - results[0].approach;
   double work = 0.0;
   double scale = 0.0;
-  for (std::size_t k = 1; k < results.size(); ++k) {
-    const double step = results[k].approach - results[k - 1].approach;
-    work += 0.5 * (results[k].total_force + results[k - 1].total_force) * step;
-    scale += 0.5 * (std::abs(results[k].total_force) + std::abs(results[k - 1].total_force)) * step;
+  for (std::size_t k = 0; k < results.size(); ++k) {
+    const double weight = (k == 0 || k + 1 == results.size()) ? 1.0 : (k % 2 == 1 ? 4.0 : 2.0);
+    work += weight * results[k].total_force * step / 3.0;
+    scale += weight * std::abs(results[k].total_force) * step / 3.0;
   }
   const double change = total_energy(c.grid, results.back(), c.law) - total_energy(c.grid, results.front(), c.law);
   EXPECT_NEAR(work, change, kEnergyBalanceTolerance * scale) << "work " << work << ", energy change " << change;
@@ -123,18 +126,26 @@ void expect_energy_balance(const BumpCase& c) {
   EXPECT_GT(results.front().adhesion.interaction_fraction, results.front().contact_fraction);
 }
 
-TEST(AdhesionEnergyTest, WorkEqualsEnergyChangePeriodic2D) { expect_energy_balance(bump(2, Boundary::periodic)); }
-TEST(AdhesionEnergyTest, WorkEqualsEnergyChangeFree2D) { expect_energy_balance(bump(2, Boundary::free)); }
-TEST(AdhesionEnergyTest, WorkEqualsEnergyChangePeriodic1D) { expect_energy_balance(bump(1, Boundary::periodic)); }
-TEST(AdhesionEnergyTest, WorkEqualsEnergyChangeFree1D) { expect_energy_balance(bump(1, Boundary::free)); }
+TEST(AdhesionEnergyTest, WorkEqualsEnergyChangePeriodic2D) {
+  expect_energy_balance(bump(2, Boundary::periodic));
+}
+TEST(AdhesionEnergyTest, WorkEqualsEnergyChangeFree2D) {
+  expect_energy_balance(bump(2, Boundary::free));
+}
+TEST(AdhesionEnergyTest, WorkEqualsEnergyChangePeriodic1D) {
+  expect_energy_balance(bump(1, Boundary::periodic));
+}
+TEST(AdhesionEnergyTest, WorkEqualsEnergyChangeFree1D) {
+  expect_energy_balance(bump(1, Boundary::free));
+}
 
 TEST(AdhesionEnergyTest, WarmStartFromTheSolutionNeedsNoIteration) {
   const BumpCase c = bump(2, Boundary::free);
   AdhesiveContactSolver solver = make_solver(c.grid, c.law);
   const SolveResult first = solver.solve(c.gap, Loading::approach(0.5 * c.law.range));
   ASSERT_TRUE(first.converged());
-  const SolveResult again = solver.solve(c.gap, Loading::approach(0.5 * c.law.range),
-                                         {first.pressure.data(), c.grid.size()});
+  const SolveResult again =
+      solver.solve(c.gap, Loading::approach(0.5 * c.law.range), {first.pressure.data(), c.grid.size()});
   ASSERT_TRUE(again.converged());
   EXPECT_LE(again.iterations, first.iterations / 4) << "cold " << first.iterations << ", warm " << again.iterations;
   EXPECT_NEAR(again.total_force, first.total_force, 1e-4 * std::abs(first.total_force));

@@ -1,11 +1,12 @@
 // The cohesive laws: values, traction = -d energy / d gap, and their checks.
+#include "halfspace/solvers/adhesion_law.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
 
 #include "halfspace/error.hpp"
-#include "halfspace/solvers/adhesion_law.hpp"
 
 namespace halfspace {
 namespace {
@@ -36,7 +37,8 @@ TEST(AdhesionLawTest, ExponentialTractionIsMinusEnergySlope) {
   for (const double gap : {0.0, 0.3e-9, 1e-9, 4e-9}) {
     const double h = 1e-6 * law.range;
     const double slope = (law.energy(gap + h) - law.energy(std::max(gap - h, 0.0))) / (gap > 0.0 ? 2 * h : h);
-    EXPECT_NEAR(law.traction(gap), -slope, kDerivativeTolerance * law.stress() + (gap > 0.0 ? 0.0 : 1e-6 * law.stress()))
+    EXPECT_NEAR(law.traction(gap), -slope,
+                kDerivativeTolerance * law.stress() + (gap > 0.0 ? 0.0 : 1e-6 * law.stress()))
         << "gap " << gap;
     const double t = 1e-6 * law.range;
     EXPECT_NEAR(law.traction_slope(gap + t), (law.traction(gap + 2 * t) - law.traction(gap)) / (2 * t),

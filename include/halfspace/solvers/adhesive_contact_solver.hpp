@@ -3,8 +3,8 @@
 // bound-constrained minimisation of the total energy over the surface
 // displacement, by spectral projected gradients (SPG: Barzilai-Borwein steps
 // with a non-monotone line search, Birgin, Martinez & Raydan 2000, SIAM J.
-// Optim. 10, 1196), the approach of ContactMechanics (Pastewka & Robbins
-// 2016) with a different minimiser. Load control wraps it in a search on the
+// Optim. 10, 1196): the energy formulation of Pastewka & Robbins (2014,
+// PNAS 111, 3298) and their ContactMechanics code, with another minimiser. Load control wraps it in a search on the
 // approach along the stable branch the warm start follows.
 //
 // The problem. With v the displacement (m), S = K^-1 the stiffness, h the
@@ -26,7 +26,7 @@
 // zero-padded (2ny, 2nx) grid of the DC-FFT convolution, S is the inverse of
 // its circulant kernel, and the padding carries no interaction, so at a
 // stationary point its pressure vanishes and v on the grid is K p exactly
-// (Pastewka & Robbins 2016's treatment of free boundaries).
+// (ContactMechanics' free-boundary half-space does the same).
 //
 // Stopping. residual = max_i |P(v - c G) - v|_i / (c p_ref), with G the
 // gradient, P the projection onto the constraints, c = K_ii (the cell's
