@@ -52,6 +52,7 @@ constexpr std::string_view kInterface = "Interface law";
 constexpr std::string_view kSolver = "Solver";
 constexpr std::string_view kOutput = "Output";
 constexpr std::string_view kStress = "Subsurface stresses (single solves)";
+constexpr std::string_view kAdhesion = "Adhesion (a cohesive law beside the hard wall; --approach may be negative)";
 
 const std::array kOptions{
     OptionSpec{"height-map", &SolveOptions::height_map, Kind::path, kSurface, "FILE",
@@ -135,6 +136,16 @@ const std::array kOptions{
                "spaced from START to STOP"},
     OptionSpec{"stress-nu", &SolveOptions::stress_nu, Kind::number, kStress, "NU",
                "Poisson's ratio of the body whose stresses are wanted [nu1 when --nu1 and --nu2 are equal]"},
+    // Adhesion.
+    OptionSpec{"adhesion", &SolveOptions::adhesion, Kind::text, kAdhesion, "LAW",
+               "cohesive law: md (Maugis-Dugdale: stress sigma0 = w/h0 where 0 <= gap < h0) or exponential "
+               "(traction -(w/rho) exp(-gap/rho)); solved by the adhesive solver (adhesive-spg) [none]"},
+    OptionSpec{"work-of-adhesion", &SolveOptions::work_of_adhesion, Kind::number, kAdhesion, "W",
+               "work of adhesion w (J/m^2), required with --adhesion"},
+    OptionSpec{"adhesion-range", &SolveOptions::adhesion_range, Kind::number, kAdhesion, "M",
+               "range of the law (m): h0 for md, rho for exponential; or --adhesion-stress for md"},
+    OptionSpec{"adhesion-stress", &SolveOptions::adhesion_stress, Kind::number, kAdhesion, "PA",
+               "md only: the Dugdale stress sigma0 (Pa) instead of --adhesion-range (h0 = w / sigma0)"},
     OptionSpec{"output", &SolveOptions::output, Kind::path, kOutput, "FILE",
                "result file (HDF5), required; replaced if it exists"},
     OptionSpec{"quiet", &SolveOptions::quiet, Kind::flag, kOutput, "",

@@ -67,6 +67,11 @@ struct SolveOptions {
   // Subsurface stresses written into the result (docs/usage.md#stress).
   std::optional<std::string> stress_depths;  // "z1,z2,..." or "START:STOP:COUNT" (m), as written
   std::optional<double> stress_nu;
+  // Adhesion (docs/usage.md#adhesion): a cohesive law beside the hard wall.
+  std::optional<std::string> adhesion;  // md or exponential
+  std::optional<double> work_of_adhesion;
+  std::optional<double> adhesion_range;
+  std::optional<double> adhesion_stress;
   // Output.
   std::optional<std::string> output;
   bool quiet = false;

@@ -29,6 +29,7 @@
 #include "halfspace/memory_estimate.hpp"
 #include "halfspace/stress/stress_volume.hpp"
 #include "halfspace/solvers/solver_factory.hpp"
+#include "halfspace/solvers/adhesion_law.hpp"
 #include "halfspace/surface/padding.hpp"
 #include "halfspace/surface/preparation.hpp"
 #include "halfspace/threads.hpp"
@@ -185,8 +186,15 @@ std::pair<Loading, std::vector<double>> loading_from(const SolveOptions& o) {
       o.force           ? std::tuple{"force", ControlMode::force, "N in 2D, N/m in 1D", *o.force}
       : o.mean_pressure ? std::tuple{"mean-pressure", ControlMode::mean_pressure, "Pa", *o.mean_pressure}
                         : std::tuple{"approach", ControlMode::approach, "m", *o.approach};
+  // With adhesion any finite value is a load: the approach of surfaces
+  // apart (negative), or a pull (a negative force).
+  const bool adhesive = o.adhesion.has_value();
   for (std::size_t k = 0; k < values.size(); ++k) {
-    if (values.size() == 1) {
+    if (adhesive) {
+      if (!std::isfinite(values[k])) {
+        throw InputError(fmt::format("{} is invalid: every value must be finite ({})", o.describe(key), unit));
+      }
+    } else if (values.size() == 1) {
       require_positive(o, key, values[k], unit);
     } else if (!(std::isfinite(values[k]) && values[k] > 0.0)) {
       throw InputError(fmt::format("{} is invalid: every value must be positive ({}); value {} is {}", o.describe(key),
@@ -194,7 +202,7 @@ std::pair<Loading, std::vector<double>> loading_from(const SolveOptions& o) {
     }
   }
   const Loading loading{mode, values.front()};
-  loading.validate();
+  if (!adhesive) loading.validate();
   return {loading, values};
 }
 
@@ -210,14 +218,67 @@ auto with_solver_flags(const SolveOptions& o, Function&& function) {
                                  : option == "max_iterations"      ? "max-iter"
                                  : option.starts_with("deflation") ? "deflation-block"
                                  : option == "hardness"            ? "hardness"
-                                                                   : "solver";
+                                 : option == "adhesion.work"       ? "work-of-adhesion"
+                                 : option == "adhesion.range"
+                                     ? (o.adhesion_stress ? "adhesion-stress" : "adhesion-range")
+                                 : option == "adhesion.tolerance" ? "tol"
+                                                                  : "solver";
     throw InputError(fmt::format("{} {}", o.describe(key), error.rule()));
   }
+}
+
+// --- Adhesion: --adhesion md|exponential with --work-of-adhesion and
+// --adhesion-range (or --adhesion-stress for md) become SolverOptions::adhesion,
+// whose validate() holds the law's rules.
+void reject_given(const SolveOptions& o, Presence keys, std::string_view reason);
+
+std::optional<solvers::SolverOptions::Adhesion> adhesion_from(const SolveOptions& o) {
+  if (!o.adhesion) {
+    reject_given(o,
+                 {{"work-of-adhesion", o.work_of_adhesion.has_value()},
+                  {"adhesion-range", o.adhesion_range.has_value()},
+                  {"adhesion-stress", o.adhesion_stress.has_value()}},
+                 "needs --adhesion md|exponential");
+    return std::nullopt;
+  }
+  const AdhesionLawType type =
+      in_context(o.name("adhesion"), [&] { return solvers::parse_adhesion_law_type(*o.adhesion); });
+  if (o.solver) {
+    throw InputError(fmt::format("{} cannot be combined with {}: adhesion has its own solver (adhesive-spg)",
+                                 o.describe("solver"), o.describe("adhesion")));
+  }
+  if (!o.work_of_adhesion)
+    throw InputError(fmt::format("{} needs --work-of-adhesion W (J/m^2)", o.describe("adhesion")));
+  if (o.adhesion_stress && type != AdhesionLawType::maugis_dugdale) {
+    throw InputError(fmt::format("{} applies only to --adhesion md; give --adhesion-range RHO (m) for {}",
+                                 o.describe("adhesion-stress"), o.describe("adhesion")));
+  }
+  if (o.adhesion_stress && o.adhesion_range) {
+    throw InputError(fmt::format("{} and {} cannot be combined: give the range h0 or the stress sigma0 = w / h0",
+                                 o.describe("adhesion-range"), o.describe("adhesion-stress")));
+  }
+  if (!o.adhesion_stress && !o.adhesion_range) {
+    throw InputError(fmt::format("{} needs --adhesion-range {} (m){}", o.describe("adhesion"),
+                                 type == AdhesionLawType::maugis_dugdale ? "H0" : "RHO",
+                                 type == AdhesionLawType::maugis_dugdale ? " or --adhesion-stress SIGMA0 (Pa)" : ""));
+  }
+  const double w = require_positive(o, "work-of-adhesion", *o.work_of_adhesion, "J/m^2");
+  solvers::SolverOptions::Adhesion adhesion;
+  if (o.adhesion_stress) {
+    const double sigma0 = require_positive(o, "adhesion-stress", *o.adhesion_stress, "Pa");
+    adhesion.law = AdhesionLaw::maugis_dugdale_from_stress(w, sigma0);
+  } else {
+    const double range = require_length(o, "adhesion-range", *o.adhesion_range);
+    adhesion.law = {type, w, range};
+  }
+  if (o.tol) adhesion.tolerance = *o.tol;
+  return adhesion;
 }
 
 solvers::SolverOptions solver_options_from(const SolveOptions& o) {
   solvers::SolverOptions solver;
   with_solver_flags(o, [&] {
+    solver.adhesion = adhesion_from(o);
     if (o.solver) solver.type = solvers::parse_solver_type(*o.solver);
     if (o.tol) solver.tolerance = *o.tol;
     // Beyond int, a limit is no limit: validate() sees the nearest int.
@@ -251,6 +312,17 @@ void check_load_scale(const SolveOptions& o, const Grid& grid, ControlMode mode,
     return values.size() == 1 ? std::string() : fmt::format(" (value {}: {:g})", k + 1, values[k]);
   };
   for (std::size_t k = 0; k < values.size(); ++k) {
+    if (o.adhesion) {
+      // Adhesive loads are signed: only their size is checked.
+      const double size = std::abs(mode == ControlMode::force ? values[k] / grid.domain_area() : values[k]);
+      const double high = mode == ControlMode::approach ? kMaxLength : kMaxMeanPressure;
+      require_in_range(o.describe(mode == ControlMode::force      ? "force"
+                                  : mode == ControlMode::approach ? "approach"
+                                                                  : "mean-pressure") +
+                           value_name(k),
+                       size, 0.0, high, mode == ControlMode::approach ? "m (in size)" : "Pa (in size)");
+      continue;
+    }
     switch (mode) {
       case ControlMode::force: {
         const double pressure = values[k] / grid.domain_area();
@@ -629,6 +701,11 @@ SolveSetup make_solve_setup(const SolveOptions& options) {
       throw InputError(
           "a coated half-space on a free 1D grid is not supported: pass --boundary periodic or use a "
           "2D surface");
+    }
+    if (solver.adhesion) {
+      throw InputError(fmt::format("{} is not supported for a coated half-space: the adhesive solver works on the "
+                                   "homogeneous half-space",
+                                   options.describe("adhesion")));
     }
     if (!stress.depths.empty()) {
       throw InputError(

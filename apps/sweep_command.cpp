@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <cmath>
 #include <cstdio>
 #include <optional>
 #include <span>
@@ -13,6 +14,7 @@
 #include "exit_codes.hpp"
 #include "halfspace/geometry/builtin_surface.hpp"
 #include "halfspace/io/sweep_writer.hpp"
+#include "halfspace/solvers/adhesion_sweep.hpp"
 #include "halfspace/solvers/load_sweep.hpp"
 #include "halfspace/solvers/solver_factory.hpp"
 #include "halfspace/threads.hpp"
@@ -63,7 +65,7 @@ void print_sweep_summary(std::FILE* out, const SolveSetup& setup, std::span<cons
   row("load", fmt::format("{} sweep, {} steps from {:.6g} to {:.6g} {}", load_name(mode), steps.size(),
                           setup.load_values.front(), setup.load_values.back(), load_unit(mode, grid)));
   row("solver", fmt::format("{}, {} thread{}, tolerance {:.1e}", steps.front().result.solver, setup.threads,
-                            setup.threads == 1 ? "" : "s", setup.solver.tolerance));
+                            setup.threads == 1 ? "" : "s", steps.front().result.tolerance));
   fmt::print(out, "\n  {:>4}  {:>12}  {:>12}  {:>12}  {:>10}  {:>8}  {:>6}  {:>9}  {:>8}\n", "step",
              fmt::format("load ({})", load_unit(mode, grid)), "p_mean (Pa)", "approach (m)", "contact", "clusters",
              "iter", "residual", "time (s)");
@@ -75,6 +77,12 @@ void print_sweep_summary(std::FILE* out, const SolveSetup& setup, std::span<cons
                s.result.converged() ? "" : "  not converged");
   }
   fmt::print(out, "\n");
+  if (setup.solver.adhesion) {
+    const double pull_off = solvers::pull_off_force(steps);
+    row("pull-off force", std::isnan(pull_off)
+                              ? std::string("none (no unloading branch)")
+                              : fmt::format("{:.6g} {}", pull_off, grid.dimension() == 1 ? "N/m" : "N"));
+  }
   row("output", fmt::format("{} (fields per step), {} (summary table)", setup.output.string(), csv.string()));
 }
 
@@ -112,6 +120,7 @@ int run_sweep(const SolveSetup& setup) {
 
   const Eigen::ArrayXd initial_gap = geometry::initial_gap_from_heights(setup.heights);
   solvers::LoadSweepOptions options;
+  options.signed_loads = setup.solver.adhesion.has_value();
   options.on_step_start = [&](std::size_t step, std::size_t, const Loading& loading) {
     progress.start_step(step, describe_load(loading.mode, loading.value, setup.grid));
   };

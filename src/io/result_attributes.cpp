@@ -63,6 +63,18 @@ void write_result_attributes(const Hdf5Node& node, const SolveResult& result, st
       node.write_string_attribute(name, std::get<Text>(attribute.value)(result));
     }
   }
+  // Adhesion: written only for adhesive solves, so other files keep their
+  // attributes (docs/file-format.md#adhesion).
+  if (const AdhesionRecord& a = result.adhesion; !a.law.empty()) {
+    const auto named = [&](std::string_view base) { return std::string(prefix) + std::string(base); };
+    node.write_string_attribute(named("adhesion_law"), a.law);
+    node.write_double_attribute(named("work_of_adhesion"), a.work);
+    node.write_double_attribute(named("adhesion_range"), a.range);
+    node.write_double_attribute(named("adhesion_stress"), a.stress);
+    node.write_double_attribute(named("adhesive_force"), a.adhesive_force);
+    node.write_double_attribute(named("interaction_fraction"), a.interaction_fraction);
+    node.write_double_attribute(named("repulsive_contact_fraction"), a.repulsive_contact_fraction);
+  }
 }
 
 void write_contact_statistics_attributes(const Hdf5Node& node, const surface::ContactStatistics& statistics) {

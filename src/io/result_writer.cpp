@@ -43,8 +43,12 @@ void write_result_fields(const Hdf5Node& node, const Grid& grid, const SolveResu
   node.write_dataset("gap", shape, values(result.gap), "m");
   node.write_dataset("displacement", shape, values(result.displacement), "m");
   std::vector<std::uint8_t> contact(grid.size());
+  // Adhesive results: contact is the wall (gap 0), where the pressure may
+  // be negative; otherwise the cells with pressure.
+  const bool adhesive = !result.adhesion.law.empty();
   for (std::size_t k = 0; k < contact.size(); ++k) {
-    contact[k] = result.pressure[static_cast<Eigen::Index>(k)] > 0.0 ? 1 : 0;
+    const auto i = static_cast<Eigen::Index>(k);
+    contact[k] = (adhesive ? result.gap[i] <= 0.0 : result.pressure[i] > 0.0) ? 1 : 0;
   }
   node.write_dataset("contact", shape, std::span<const std::uint8_t>(contact), "1");
   if (result.hardness) {

@@ -10,6 +10,7 @@
 #include "halfspace/error.hpp"
 #include "halfspace/fft/grid_transform.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
+#include "halfspace/solvers/adhesive_contact_solver.hpp"
 #include "halfspace/solvers/balancing_preconditioner.hpp"
 #include "halfspace/solvers/block_deflation.hpp"
 #include "halfspace/solvers/fourier_preconditioner.hpp"
@@ -147,6 +148,15 @@ std::unique_ptr<ContactSolver> make_dense(const Grid& grid, double e_star, const
 std::unique_ptr<ContactSolver> make_any_solver(const Grid& grid, const Elasticity& e_star,
                                                const SolverOptions& options) {
   options.validate(grid);
+  if (options.adhesion) {
+    AdhesiveSolverOptions adhesive;
+    adhesive.law = options.adhesion->law;
+    adhesive.tolerance = options.adhesion->tolerance;
+    if (options.max_iterations) adhesive.max_iterations = *options.max_iterations;
+    adhesive.fft_planning = options.fft_planning;
+    adhesive.progress = options.progress;
+    return std::make_unique<AdhesiveContactSolver>(grid, e_star, std::move(adhesive));
+  }
   switch (options.type) {
     case SolverType::pk:
       return make_polonsky_keer(grid, e_star, options, options.tolerance, true, false, false);
