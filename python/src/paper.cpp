@@ -21,13 +21,12 @@ nb::dict reproduce(int test, double load) {
   options.load = load;
   options.validate();
   const paper::PaperTest& chosen = paper::table1_test(test);
-  paper::TestReproduction run;
-  {
+  paper::TestReproduction run = [&] {
     nb::gil_scoped_release release;
     // At most 500 cells: one thread is fastest (as `halfspace paper` runs it).
     set_threads(1);
-    run = paper::reproduce(chosen, options);
-  }
+    return paper::reproduce(chosen, options);
+  }();
   const std::size_t n = run.contact.x.size();
   // The summary first: the columns below take the results' arrays over.
   nb::dict summary;

@@ -4,6 +4,7 @@
 // result file back.
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include <nanobind/stl/filesystem.h>
 #include <nanobind/stl/shared_ptr.h>
 #include <nanobind/stl/string.h>
 #include <nanobind/stl/vector.h>
@@ -68,14 +69,14 @@ std::string describe(const Result& r) {
       s.contact_fraction);
 }
 
-void save_result(const Result& r, const std::string& path) {
+void save_result(const Result& r, const std::filesystem::path& path) {
   io::ResultMetadata metadata = metadata_of(*r.run);
   metadata.contact_statistics = r.data().statistics;
   nb::gil_scoped_release release;
   io::write_result(path, r.run->grid, r.run->heights, r.result(), metadata);
 }
 
-void save_sweep(const Sweep& s, const std::string& path) {
+void save_sweep(const Sweep& s, const std::filesystem::path& path) {
   const io::ResultMetadata metadata = metadata_of(*s.run);
   nb::gil_scoped_release release;
   io::write_sweep_result(path, s.run->grid, s.run->heights, s.run->steps, metadata);
@@ -83,11 +84,11 @@ void save_sweep(const Sweep& s, const std::string& path) {
 }
 
 template <class T>
-T attribute(const io::StoredResult& stored, const std::string& path, const std::string& name) {
+T attribute(const io::StoredResult& stored, const std::filesystem::path& path, const std::string& name) {
   const io::AttributeValue* value = stored.find(name);
   if (!value || !std::holds_alternative<T>(*value)) {
-    throw FileError(fmt::format("cannot read result '{}': root attribute '{}' is missing or of the wrong type", path,
-                                name));
+    throw FileError(fmt::format("cannot read result '{}': root attribute '{}' is missing or of the wrong type",
+                                path.string(), name));
   }
   return std::get<T>(*value);
 }
@@ -98,7 +99,7 @@ T attribute_or(const io::StoredResult& stored, const std::string& name, T fallba
   return value && std::holds_alternative<T>(*value) ? std::get<T>(*value) : fallback;
 }
 
-Result read(const std::string& path, int step) {
+Result read(const std::filesystem::path& path, int step) {
   io::StoredResult stored;
   {
     nb::gil_scoped_release release;
@@ -114,8 +115,8 @@ Result read(const std::string& path, int step) {
   Grid grid = integer("dimension") == 1 ? Grid::line(nx, number("dx"), boundary)
                                         : Grid::plane(nx, ny, number("dx"), number("dy"), boundary);
   if (grid.size() != static_cast<std::size_t>(stored.height.size())) {
-    throw FileError(fmt::format("cannot read result '{}': /height does not have nx x ny = {} values", path,
-                                grid.size()));
+    throw FileError(fmt::format("cannot read result '{}': /height does not have nx x ny = {} values",
+                                path.string(), grid.size()));
   }
 
   solvers::SweepStep data;

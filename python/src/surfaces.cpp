@@ -2,6 +2,7 @@
 // the built-in and self-affine generators, and the surface statistics.
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include <nanobind/stl/filesystem.h>
 #include <nanobind/stl/optional.h>
 #include <nanobind/stl/pair.h>
 #include <nanobind/stl/string.h>
@@ -84,7 +85,7 @@ void prepare(io::HeightMap& map, const surface::PreparationOptions& options) {
   }
 }
 
-nb::dict read_map(const std::string& path, const std::string& format, const std::string& dataset,
+nb::dict read_map(const std::filesystem::path& path, const std::string& format, const std::string& dataset,
                   const std::optional<std::string>& unit, const std::optional<std::string>& window,
                   const std::string& invalid, const std::string& detrend, std::optional<double> dx,
                   std::optional<double> dy, double pad) {
@@ -104,9 +105,9 @@ nb::dict read_map(const std::string& path, const std::string& format, const std:
   }
   if (dx) map.dx = checked_spacing("dx", *dx);
   if (map.dimension == 1) {
-    if (dy) throw InputError(fmt::format("dy does not apply to the 1D profile in {}", path));
+    if (dy) throw InputError(fmt::format("dy does not apply to the 1D profile in {}", path.string()));
     if (!(map.dx > 0.0)) {
-      throw FileError(fmt::format("height map {} does not state its spacing dx: pass dx= (m)", path));
+      throw FileError(fmt::format("height map {} does not state its spacing dx: pass dx= (m)", path.string()));
     }
   } else {
     if (dy) map.dy = checked_spacing("dy", *dy);
@@ -114,7 +115,7 @@ nb::dict read_map(const std::string& path, const std::string& format, const std:
     if (!(map.dx > 0.0)) missing.emplace_back("dx");
     if (!(map.dy > 0.0)) missing.emplace_back("dy");
     if (!missing.empty()) {
-      throw FileError(fmt::format("height map {} does not state its spacing {}: pass {}= (m)", path,
+      throw FileError(fmt::format("height map {} does not state its spacing {}: pass {}= (m)", path.string(),
                                   fmt::join(missing, " and "), fmt::join(missing, "= and ")));
     }
   }

@@ -160,7 +160,6 @@ StoredResult read_result(const std::filesystem::path& path, int step) {
   stored.height = Eigen::Map<const Eigen::ArrayXd>(height.data(), static_cast<Eigen::Index>(height.size()));
   stored.shape = shape;
 
-  stored.group = "/";
   if (reader.exists(file.get(), "steps")) {
     const Object steps(H5Oopen(file.get(), "steps", H5P_DEFAULT));
     H5G_info_t info;

@@ -17,7 +17,7 @@ using AttributeValue = std::variant<double, std::int64_t, std::string>;
 
 struct StoredResult {
   // The group that was read: "/" for a single result, "/steps/007" for a step.
-  std::string group;
+  std::string group = "/";
   // Every float64, integer and string attribute of the group (and, for a
   // step, of the root, the step's own taking precedence), in file order.
   std::vector<std::pair<std::string, AttributeValue>> attributes;
