@@ -50,7 +50,8 @@ int run_solve(const SolveSetup& setup) {
 
   activity.emplace(fmt::format("computing the statistics of the {} grid", setup.grid.shape_string()));
   io::ResultMetadata metadata = io::result_metadata(provenance(setup), setup.grid, heights);
-  metadata.contact_statistics = surface::contact_statistics(setup.grid, result);
+  metadata.contact_statistics = surface::contact_statistics(setup.grid, {result.pressure.data(), setup.grid.size()},
+                                                            {result.gap.data(), setup.grid.size()});
   activity.emplace(fmt::format("writing {}", setup.output.string()));
   io::write_result(setup.output, setup.grid, heights, result, metadata);
 

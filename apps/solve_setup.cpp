@@ -453,7 +453,7 @@ Surface height_map_surface(const SolveOptions& o, Boundary boundary, const GridC
   const io::ReadOptions read = read_options_from(o);
   const surface::PreparationOptions prepare = preparation_from(o, boundary);
   const Activity reading(fmt::format("reading the height map {}", file));
-  io::HeightMap map = io::read_height_map(file, read);
+  HeightMap map = io::read_height_map(file, read);
   std::string source = map.source.empty() ? file : map.source;
 
   const std::optional<double> dx = height_map_spacing(o, "dx", o.dx, map.dx);

@@ -13,7 +13,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   using namespace halfspace;
   const fuzz::InputFile file(data, size);
   try {
-    const io::HeightMap map = io::read_gsf_height_map(file.path(), std::nullopt);
+    const HeightMap map = io::read_gsf_height_map(file.path(), std::nullopt);
     if (map.heights.size() != static_cast<Eigen::Index>(map.size())) __builtin_trap();
   } catch (const InputError&) {
   }

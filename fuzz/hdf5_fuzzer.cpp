@@ -13,7 +13,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   using namespace halfspace;
   const fuzz::InputFile file(data, size);
   try {
-    const io::HeightMap map = io::read_hdf5_height_map(file.path(), "/height", io::NonFiniteHeights::mark_invalid);
+    const HeightMap map = io::read_hdf5_height_map(file.path(), "/height", io::NonFiniteHeights::mark_invalid);
     if (map.heights.size() != static_cast<Eigen::Index>(map.size())) __builtin_trap();
   } catch (const InputError&) {
   }

@@ -17,6 +17,7 @@
 #include "halfspace/io/result_attributes.hpp"
 #include "halfspace/io/result_reader.hpp"
 #include "halfspace/io/result_writer.hpp"
+#include "halfspace/io/sweep_table.hpp"
 #include "halfspace/io/sweep_writer.hpp"
 #include "run.hpp"
 
@@ -151,7 +152,7 @@ Result read(const std::filesystem::path& path, int step) {
   data.loading.value = data.loading.mode == ControlMode::force           ? s.total_force
                        : data.loading.mode == ControlMode::mean_pressure ? s.mean_pressure
                                                                          : s.approach;
-  data.statistics = surface::contact_statistics(grid, s);
+  data.statistics = contact_statistics_of(grid, s);
 
   auto run = std::make_shared<Run>(Run{std::move(grid), nb::none(), {}, {}, {}, {}, {}, {}});
   io::SolveProvenance& p = run->provenance;
@@ -274,7 +275,7 @@ void bind_results(nb::module_& module) {
           "table",
           [](const Sweep& s) {
             nb::dict table;
-            for (const solvers::SummaryColumn& column : solvers::summary_columns()) {
+            for (const io::SummaryColumn& column : io::summary_columns()) {
               Eigen::ArrayXd values(static_cast<Eigen::Index>(s.run->steps.size()));
               for (std::size_t k = 0; k < s.run->steps.size(); ++k) values[k] = column.value(s.run->steps[k]);
               table[nb::str(column.name.data(), column.name.size())] =

@@ -35,6 +35,12 @@ struct Run {
   void mark_contact();
 };
 
+// The contact statistics of a solved result on `grid`.
+inline surface::ContactStatistics contact_statistics_of(const Grid& grid, const SolveResult& result) {
+  return surface::contact_statistics(grid, {result.pressure.data(), static_cast<std::size_t>(result.pressure.size())},
+                                     {result.gap.data(), static_cast<std::size_t>(result.gap.size())});
+}
+
 // One step of a Run (the only one for a single solve).
 struct Result {
   std::shared_ptr<Run> run;

@@ -198,7 +198,7 @@ Result solve(const nb::object& heights, double dx, double dy, const std::string&
     set_threads(thread_number);
     return solvers::solve_surface(problem.grid, problem.heights, e_star, loading, options, start);
   });
-  step.statistics = surface::contact_statistics(problem.grid, step.result);
+  step.statistics = contact_statistics_of(problem.grid, step.result);
   std::vector<solvers::SweepStep> steps;
   steps.push_back(std::move(step));
   return Result{make_run(std::move(problem),

@@ -25,7 +25,7 @@
 namespace halfspace::python {
 namespace {
 
-std::vector<std::size_t> shape_of(const io::HeightMap& map) {
+std::vector<std::size_t> shape_of(const HeightMap& map) {
   return map.dimension == 1 ? std::vector<std::size_t>{map.nx} : std::vector<std::size_t>{map.ny, map.nx};
 }
 
@@ -35,7 +35,7 @@ Grid grid_of(std::size_t nx, std::size_t ny, int dimension, double dx, double dy
 }
 
 // What read_height_map and prepare hand back: the prepared map as a dict.
-nb::dict map_dict(io::HeightMap&& map) {
+nb::dict map_dict(HeightMap&& map) {
   nb::dict out;
   out["shape"] = nb::cast(shape_of(map));
   out["dx"] = map.dx;
@@ -76,7 +76,7 @@ double checked_spacing(const char* keyword, double value) {
   return value;
 }
 
-void prepare(io::HeightMap& map, const surface::PreparationOptions& options) {
+void prepare(HeightMap& map, const surface::PreparationOptions& options) {
   try {
     surface::prepare_height_map(map, options);
   } catch (const FileError& error) {
@@ -98,7 +98,7 @@ nb::dict read_map(const std::filesystem::path& path, const std::string& format, 
   read.dataset = dataset;
   if (unit) read.unit = io::require_length_unit(*unit, "unit");
   const surface::PreparationOptions options = preparation_options(window, invalid, detrend, pad);
-  io::HeightMap map;
+  HeightMap map;
   {
     nb::gil_scoped_release release;
     map = io::read_height_map(path, read);
@@ -127,11 +127,11 @@ nb::dict read_map(const std::filesystem::path& path, const std::string& format, 
 }
 
 // An array's heights as a HeightMap with NaN (and inf) as invalid points.
-io::HeightMap map_from(const InputArray& heights, double dx, double dy, const std::string& source) {
+HeightMap map_from(const InputArray& heights, double dx, double dy, const std::string& source) {
   if (heights.ndim() != 1 && heights.ndim() != 2) {
     throw InputError(fmt::format("heights must be a 1D or 2D array, got {} dimensions", heights.ndim()));
   }
-  io::HeightMap map;
+  HeightMap map;
   map.dimension = static_cast<int>(heights.ndim());
   map.nx = heights.shape(heights.ndim() - 1);
   map.ny = heights.ndim() == 2 ? heights.shape(0) : 1;
@@ -155,7 +155,7 @@ nb::dict prepare_array(const InputArray& heights, double dx, double dy, const st
                        const std::optional<std::string>& window, const std::string& invalid, const std::string& detrend,
                        double pad) {
   const surface::PreparationOptions options = preparation_options(window, invalid, detrend, pad);
-  io::HeightMap map = map_from(heights, dx, dy, source);
+  HeightMap map = map_from(heights, dx, dy, source);
   {
     nb::gil_scoped_release release;
     prepare(map, options);

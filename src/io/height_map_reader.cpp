@@ -118,7 +118,7 @@ HeightMapFormat format_from_extension(const std::filesystem::path& path) {
   throw FileError(
       fmt::format("cannot read height map '{}': the extension '{}' does not say the format; known "
                   "extensions are .h5 .hdf5 .nc (HDF5), .npy, .txt .csv .dat .asc (text matrix), .x3p "
-                  "and .gsf; pass --format",
+                  "and .gsf; set the format",
                   path.string(), path.extension().string()));
 }
 
@@ -148,8 +148,8 @@ HeightMap read_height_map(const std::filesystem::path& path, const ReadOptions& 
       // refuse to guess when the format was only inferred from the extension.
       if (options.format == HeightMapFormat::automatic && map.dimension == 2 && map.nx == 2) {
         throw FileError(
-            fmt::format("cannot read height map '{}': it has 2 columns and {} rows; pass --format profile "
-                        "to read it as x, z or --format matrix to read it as a map 2 points wide",
+            fmt::format("cannot read height map '{}': it has 2 columns and {} rows; set the format to "
+                        "profile to read it as x, z or to matrix to read it as a map 2 points wide",
                         path.string(), map.ny));
       }
       return map;

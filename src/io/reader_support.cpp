@@ -185,7 +185,7 @@ std::string signature_hint(std::string_view bytes) {
   if (what.starts_with("a NumPy")) format = "npy";
   if (what.starts_with("a Gwyddion")) format = "gsf";
   if (format.empty()) return fmt::format(" (the file looks like {})", what);
-  return fmt::format(" (the file looks like {}; pass --format {})", what, format);
+  return fmt::format(" (the file looks like {}; set the format to {})", what, format);
 }
 
 std::string quoted_bytes(std::string_view bytes, std::size_t count) {

@@ -12,7 +12,7 @@
 #include <string>
 #include <string_view>
 
-#include "halfspace/io/height_map.hpp"
+#include "halfspace/height_map.hpp"
 
 namespace halfspace::io::detail {
 
@@ -81,7 +81,7 @@ std::string read_file_head(const ReadTarget& target, std::size_t count);
 // files are zip archives)", ...), or an empty string when they say nothing.
 std::string describe_signature(std::string_view bytes);
 
-// " (the file looks like <what>; pass --format <name>)" when the signature is
+// " (the file looks like <what>; set the format to <name>)" when the signature is
 // recognised, else "". Appended to "wrong magic" messages.
 std::string signature_hint(std::string_view bytes);
 

@@ -14,6 +14,7 @@
 #include "halfspace/io/hdf5_output.hpp"
 #include "halfspace/io/output_file.hpp"
 #include "halfspace/io/result_attributes.hpp"
+#include "halfspace/io/sweep_table.hpp"
 #include "hdf5_writing.hpp"
 
 namespace halfspace::io {
@@ -33,7 +34,7 @@ std::string step_name(std::size_t step, std::size_t steps) {
   return fmt::format("{:0{}}", step, digits);
 }
 
-std::string column_unit(const solvers::SummaryColumn& column, const Grid& grid, std::string_view load_mode) {
+std::string column_unit(const SummaryColumn& column, const Grid& grid, std::string_view load_mode) {
   const std::string_view force = grid.dimension() == 1 ? "N/m" : "N";
   if (column.name == "load") {
     if (load_mode == "force") return std::string(force);
@@ -60,7 +61,7 @@ void write_step(const Hdf5Node& steps_group, const std::string& name, const Grid
 void write_summary_table(const Hdf5Node& root, const Grid& grid, std::span<const solvers::SweepStep> steps,
                          std::string_view load_mode) {
   const Hdf5Node table = root.create_group("sweep");
-  for (const solvers::SummaryColumn& column : solvers::summary_columns()) {
+  for (const SummaryColumn& column : summary_columns()) {
     std::vector<double> values;
     for (const solvers::SweepStep& step : steps) values.push_back(column.value(step));
     const std::string unit = column_unit(column, grid, load_mode);
@@ -99,7 +100,7 @@ void write_sweep_result(const std::filesystem::path& path, const Grid& grid, std
 
 void write_sweep_csv(const std::filesystem::path& path, std::span<const solvers::SweepStep> steps) {
   std::string text;
-  const std::span<const solvers::SummaryColumn> columns = solvers::summary_columns();
+  const std::span<const SummaryColumn> columns = summary_columns();
   for (std::size_t c = 0; c < columns.size(); ++c) {
     text += c == 0 ? "" : ",";
     text += columns[c].name;

@@ -142,7 +142,7 @@ TextTable parse_text_table(std::string_view text, std::size_t first_line, bool a
       target.fail(
           fmt::format("line {}: field {} '{}' is not a number{}", line_number, bad + 1, printable(fields[bad], 40),
                       table.rows() == 0 ? " (comment lines start with # or %; a profile with column names is read with "
-                                          "--format profile)"
+                                          "format profile)"
                                         : ""));
     }
     if (table.rows() == 0) {

@@ -67,8 +67,8 @@ void check_dense_grid(const Grid& grid, std::string_view solver) {
   const double bytes = static_cast<double>(sizeof(double)) * static_cast<double>(n) * static_cast<double>(n);
   throw InputError(fmt::format(
       "solver '{}' works on the dense influence matrix and is limited to {} cells, but grid {} has {} cells "
-      "(the matrix alone would take {}): use an FFT-based solver instead (--solver pk-multilevel, the default, or "
-      "--solver pk)",
+      "(the matrix alone would take {}): use an FFT-based solver instead (solver pk-multilevel, the default, or "
+      "pk)",
       solver, kMaxDenseCells, grid.shape_string(), n, memory_string(bytes)));
 }
 

@@ -5,47 +5,9 @@
 
 #include <fmt/format.h>
 
-#include <array>
-
 #include "halfspace/error.hpp"
 
 namespace halfspace::solvers {
-namespace {
-
-// Each column reads its value with a captureless lambda (a plain function
-// pointer in the table).
-constexpr std::array kColumns{
-    SummaryColumn{
-        "load", "",
-        "the controlled value of the step: force (N, N/m in 1D), mean pressure (Pa) or approach (m), as load_mode says",
-        [](const SweepStep& s) { return s.loading.value; }},
-    SummaryColumn{"mean_pressure", "Pa", "total force over the domain area",
-                  [](const SweepStep& s) { return s.result.mean_pressure; }},
-    SummaryColumn{"total_force", "force", "sum of pressure times cell area",
-                  [](const SweepStep& s) { return s.result.total_force; }},
-    SummaryColumn{"approach", "m", "rigid-body approach", [](const SweepStep& s) { return s.result.approach; }},
-    SummaryColumn{"contact_fraction", "1", "cells with pressure > 0 over all cells",
-                  [](const SweepStep& s) { return s.statistics.contact_fraction; }},
-    SummaryColumn{"mean_gap", "m", "mean gap over all cells", [](const SweepStep& s) { return s.statistics.mean_gap; }},
-    SummaryColumn{"rms_gap", "m", "root mean square gap over all cells",
-                  [](const SweepStep& s) { return s.statistics.rms_gap; }},
-    SummaryColumn{"free_volume", "volume", "sum of gap times cell area (m^3; m^2 in 1D)",
-                  [](const SweepStep& s) { return s.statistics.free_volume; }},
-    SummaryColumn{"max_pressure", "Pa", "largest pressure", [](const SweepStep& s) { return s.result.max_pressure; }},
-    SummaryColumn{"clusters", "1", "number of contact clusters (connected components)",
-                  [](const SweepStep& s) { return static_cast<double>(s.statistics.clusters()); }},
-    SummaryColumn{"iterations", "1", "solver iterations",
-                  [](const SweepStep& s) { return static_cast<double>(s.result.iterations); }},
-    SummaryColumn{"residual", "1", "final value of the solver's stopping measure",
-                  [](const SweepStep& s) { return s.result.residual; }},
-    SummaryColumn{"seconds", "s", "wall-clock time of the step's solve",
-                  [](const SweepStep& s) { return s.result.wall_seconds; }},
-    SummaryColumn{"converged", "1", "1 if the step converged, else 0",
-                  [](const SweepStep& s) { return s.result.converged() ? 1.0 : 0.0; }},
-};
-
-}  // namespace
-
 std::vector<SweepStep> run_load_sweep(ContactSolver& solver, const Grid& grid, std::span<const double> initial_gap,
                                       ControlMode mode, std::span<const double> values,
                                       const LoadSweepOptions& options) {
@@ -87,15 +49,12 @@ std::vector<SweepStep> run_load_sweep(ContactSolver& solver, const Grid& grid, s
     std::span<const double> start;
     if (step.warm_started) start = {previous->result.pressure.data(), grid.size()};
     step.result = solver.solve(initial_gap, loads[k], start);
-    step.statistics = surface::contact_statistics(grid, step.result);
+    step.statistics = surface::contact_statistics(grid, {step.result.pressure.data(), grid.size()},
+                                                  {step.result.gap.data(), grid.size()});
     steps.push_back(std::move(step));
     if (options.on_step_done) options.on_step_done(k, loads.size(), steps.back());
   }
   return steps;
-}
-
-std::span<const SummaryColumn> summary_columns() {
-  return kColumns;
 }
 
 }  // namespace halfspace::solvers

@@ -73,7 +73,7 @@ int term_count(Detrend detrend, int dimension) {
 }
 
 // Least-squares coefficients of `values` (a residual or the heights) over the valid points.
-Vector fit(const io::HeightMap& map, const Eigen::ArrayXd& values, const Basis& basis, std::string_view name,
+Vector fit(const HeightMap& map, const Eigen::ArrayXd& values, const Basis& basis, std::string_view name,
            std::size_t& used) {
   const int p = basis.terms;
   Matrix normal = Matrix::Zero(p, p);
@@ -104,7 +104,7 @@ Vector fit(const io::HeightMap& map, const Eigen::ArrayXd& values, const Basis& 
   return qr.solve(rhs);
 }
 
-void subtract(io::HeightMap& map, Eigen::ArrayXd& values, const Basis& basis, const Vector& c) {
+void subtract(HeightMap& map, Eigen::ArrayXd& values, const Basis& basis, const Vector& c) {
   double phi[kMaxTerms];
   for (std::size_t j = 0; j < map.ny; ++j) {
     for (std::size_t i = 0; i < map.nx; ++i) {
@@ -120,7 +120,7 @@ void subtract(io::HeightMap& map, Eigen::ArrayXd& values, const Basis& basis, co
 
 // The removed surface in words: value at the centre and derivatives there,
 // per metre when the spacing is known, else per cell.
-std::string describe(const io::HeightMap& map, Detrend detrend, const Basis& basis, const Vector& c, std::size_t used) {
+std::string describe(const HeightMap& map, Detrend detrend, const Basis& basis, const Vector& c, std::size_t used) {
   const bool metric_x = map.dx > 0.0;
   const bool metric_y = map.dy > 0.0;
   const double sx = basis.hx * (metric_x ? map.dx : 1.0);  // length of u = 1
@@ -171,7 +171,7 @@ Detrend parse_detrend(std::string_view text) {
   throw InputError(fmt::format("detrend '{}' is unknown: use none, mean, plane (tilt) or curvature (quadratic)", text));
 }
 
-void detrend(io::HeightMap& map, Detrend detrend) {
+void detrend(HeightMap& map, Detrend detrend) {
   if (detrend == Detrend::none) return;
   Basis basis;
   basis.terms = term_count(detrend, map.dimension);

@@ -18,14 +18,14 @@
 namespace halfspace::surface {
 namespace {
 
-std::string where(const io::HeightMap& map, std::size_t k) {
+std::string where(const HeightMap& map, std::size_t k) {
   return map.dimension == 1 ? fmt::format("i = {}", k)
                             : fmt::format("(j, i) = ({}, {}) (row j, column i)", k / map.nx, k % map.nx);
 }
 
 // Cuts off the edge rows and columns without a valid point; returns false
 // when there is no valid point at all.
-bool trim_invalid_border(io::HeightMap& map, std::string& record) {
+bool trim_invalid_border(HeightMap& map, std::string& record) {
   std::size_t i_min = map.nx, i_max = 0, j_min = map.ny, j_max = 0;
   for (std::size_t j = 0; j < map.ny; ++j) {
     for (std::size_t i = 0; i < map.nx; ++i) {
@@ -69,11 +69,11 @@ InvalidPoints parse_invalid_points(std::string_view text) {
   throw InputError(fmt::format("invalid-point handling '{}' is unknown: use refuse, fill or crop", text));
 }
 
-std::size_t count_invalid(const io::HeightMap& map) {
+std::size_t count_invalid(const HeightMap& map) {
   return static_cast<std::size_t>(std::count(map.valid.begin(), map.valid.end(), std::uint8_t{0}));
 }
 
-void refuse_invalid_points(const io::HeightMap& map) {
+void refuse_invalid_points(const HeightMap& map) {
   const std::size_t count = count_invalid(map);
   if (count == 0) return;
   const std::size_t first =
@@ -84,7 +84,7 @@ void refuse_invalid_points(const io::HeightMap& map) {
                   map.source, count, map.size(), where(map, first)));
 }
 
-void fill_invalid_points(io::HeightMap& map) {
+void fill_invalid_points(HeightMap& map) {
   if (count_invalid(map) == 0) {
     map.valid.clear();
     return;
@@ -158,7 +158,7 @@ void fill_invalid_points(io::HeightMap& map) {
                   count, n, trimmed.empty() ? std::string() : ";" + trimmed));
 }
 
-void crop_to_valid_points(io::HeightMap& map) {
+void crop_to_valid_points(HeightMap& map) {
   if (count_invalid(map) == 0) {
     map.valid.clear();
     return;

@@ -11,7 +11,7 @@
 
 namespace halfspace::surface {
 
-void pad_for_free_boundary(io::HeightMap& map, double factor) {
+void pad_for_free_boundary(HeightMap& map, double factor) {
   if (!(std::isfinite(factor) && factor >= kMinPadFactor && factor <= kMaxPadFactor)) {
     throw InputError(
         fmt::format("padding factor {} is invalid: must be in [{}, {}] (the padded grid is factor times "

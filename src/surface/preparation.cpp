@@ -5,7 +5,7 @@
 
 namespace halfspace::surface {
 
-void prepare_height_map(io::HeightMap& map, const PreparationOptions& options) {
+void prepare_height_map(HeightMap& map, const PreparationOptions& options) {
   if (options.window) select_window(map, *options.window);
   if (options.invalid == InvalidPoints::crop) crop_to_valid_points(map);
   if (options.invalid == InvalidPoints::refuse) refuse_invalid_points(map);

@@ -169,11 +169,11 @@ std::vector<std::int64_t> contact_cluster_sizes(const Grid& grid, std::span<cons
   return sizes;
 }
 
-ContactStatistics contact_statistics(const Grid& grid, const SolveResult& result) {
-  check_size("contact_statistics: the pressure", static_cast<std::size_t>(result.pressure.size()), grid);
-  check_size("contact_statistics: the gap", static_cast<std::size_t>(result.gap.size()), grid);
-  const double* p = result.pressure.data();
-  const double* g = result.gap.data();
+ContactStatistics contact_statistics(const Grid& grid, std::span<const double> pressure, std::span<const double> gap) {
+  check_size("contact_statistics: the pressure", pressure.size(), grid);
+  check_size("contact_statistics: the gap", gap.size(), grid);
+  const double* p = pressure.data();
+  const double* g = gap.data();
   const auto [contact, gap_sum, gap_square] = linalg::sums<3>(grid.size(), [&](std::size_t i) {
     const double gap = std::max(g[i], 0.0);
     return std::array<double, 3>{p[i] > 0.0 ? 1.0 : 0.0, gap, gap * gap};

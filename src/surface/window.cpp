@@ -55,7 +55,7 @@ Window parse_window(std::string_view text) {
   throw invalid();
 }
 
-void extract_window(io::HeightMap& map, std::size_t i0, std::size_t j0, std::size_t nx, std::size_t ny) {
+void extract_window(HeightMap& map, std::size_t i0, std::size_t j0, std::size_t nx, std::size_t ny) {
   Eigen::ArrayXd heights(static_cast<Eigen::Index>(nx * ny));
   std::vector<std::uint8_t> valid;
   if (!map.valid.empty()) valid.resize(nx * ny);
@@ -74,7 +74,7 @@ void extract_window(io::HeightMap& map, std::size_t i0, std::size_t j0, std::siz
   if (std::find(map.valid.begin(), map.valid.end(), std::uint8_t{0}) == map.valid.end()) map.valid.clear();
 }
 
-void select_window(io::HeightMap& map, const Window& window) {
+void select_window(HeightMap& map, const Window& window) {
   const std::string shape =
       map.dimension == 1 ? fmt::format("{}-point profile", map.nx) : fmt::format("{}x{} map (nx x ny)", map.nx, map.ny);
   const std::string named = window.dimension == 1 ? fmt::format("window i0 = {}, nx = {}", window.i0, window.nx)

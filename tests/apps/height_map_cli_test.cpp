@@ -215,11 +215,11 @@ TEST(HeightMapCliTest, MislabelledFilesAreNamed) {
   const fs::path fake = dir / "surface.dat";
   fs::copy_file(kFormatDataDir / "di-5-crop-m.gsf", fake);
   expect_input_error(run(solve(fake, output, {"--force", "1"}), dir),
-                     {"surface.dat", "not text", "Gwyddion", "--format gsf"}, output);
+                     {"surface.dat", "not text", "Gwyddion", "set the format to gsf"}, output);
   // The suggested format works.
   const ProgramRun fixed = run(solve(fake, output, {"--force", "1e-9", "--format", "gsf"}), dir);
   EXPECT_EQ(fixed.exit_code, kExitOk) << fixed.err;
-  expect_input_error(run(solve(dir / "scan.sur", dir / "out2.h5", {"--force", "1"}), dir), {"'.sur'", "--format"},
+  expect_input_error(run(solve(dir / "scan.sur", dir / "out2.h5", {"--force", "1"}), dir), {"'.sur'", "set the format"},
                      dir / "out2.h5");
 }
 

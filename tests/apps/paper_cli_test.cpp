@@ -82,7 +82,7 @@ TEST(PaperCliTest, SolveRefusesADenseSolverOnALargeGrid) {
            "1e11", "--force", "1", "--solver", "lemke", "--output", output.string()},
           dir);
   expect_one_line_error(result, "grid 128x128 has 16384 cells");
-  EXPECT_NE(result.err.find("--solver pk"), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find("solver pk-multilevel"), std::string::npos) << result.err;
   EXPECT_FALSE(fs::exists(output));
 }
 

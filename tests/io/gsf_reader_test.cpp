@@ -89,7 +89,7 @@ TEST(GsfReaderTest, RejectsWrongMagicNamingWhatTheFileIs) {
   const TempDir dir;
   const fs::path path = dir / "really-npy.gsf";
   fs::copy_file(kFormatDataDir / "di-5-crop-c-le-f8.npy", path);
-  expect_contains(gsf_error(path), {path.string(), "Gwyddion Simple Field 1.0", "NumPy", "--format npy"});
+  expect_contains(gsf_error(path), {path.string(), "Gwyddion Simple Field 1.0", "NumPy", "set the format to npy"});
 }
 
 TEST(GsfReaderTest, RejectsTruncatedData) {

@@ -35,7 +35,7 @@ TEST(HeightMapReaderTest, ChoosesTheReaderByExtension) {
     format_from_extension("scan.sur");
     ADD_FAILURE() << "no error";
   } catch (const FileError& error) {
-    expect_contains(error.what(), {"scan.sur", "'.sur'", "--format"});
+    expect_contains(error.what(), {"scan.sur", "'.sur'", "set the format"});
   }
 }
 
@@ -85,7 +85,7 @@ TEST(HeightMapReaderTest, TwoColumnTextNeedsAnExplicitFormat) {
     read_height_map(path);
     ADD_FAILURE() << "no error";
   } catch (const FileError& error) {
-    expect_contains(error.what(), {"xz.csv", "2 columns and 4 rows", "--format profile", "--format matrix"});
+    expect_contains(error.what(), {"xz.csv", "2 columns and 4 rows", "format to profile", "to matrix"});
   }
   ReadOptions profile;
   profile.format = HeightMapFormat::profile;

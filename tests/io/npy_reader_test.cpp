@@ -118,7 +118,7 @@ TEST(NpyReaderTest, NamesTheRealFormatOfAnHdf5FileMislabelledAsNpy) {
   const TempDir dir;
   const fs::path path = dir / "surface.npy";
   fs::copy_file(kFormatDataDir / "di-5-crop-48x64.h5", path);
-  expect_contains(npy_error(path), {"HDF5", "--format hdf5"});
+  expect_contains(npy_error(path), {"HDF5", "set the format to hdf5"});
 }
 
 TEST(NpyReaderTest, RejectsTruncatedData) {

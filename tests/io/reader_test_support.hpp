@@ -20,8 +20,8 @@
 #include <vector>
 
 #include "halfspace/error.hpp"
+#include "halfspace/height_map.hpp"
 #include "halfspace/io/hdf5_height_map_reader.hpp"
-#include "halfspace/io/height_map.hpp"
 
 namespace halfspace::test {
 
@@ -41,7 +41,7 @@ inline bool have_topography() {
 
 // The 48 x 64 crop of di-5.h5 that every format fixture of the map readers
 // was written from (tests/data/make_format_fixtures.py).
-inline io::HeightMap di5_reference() {
+inline HeightMap di5_reference() {
   return io::read_hdf5_height_map(kFormatDataDir / "di-5-crop-48x64.h5");
 }
 
@@ -144,7 +144,7 @@ inline void write_bytes(const std::filesystem::path& path, const std::string& by
 
 // Expects `map` to hold exactly the heights of `reference` (same shape),
 // reporting the first difference.
-inline void expect_same_heights(const io::HeightMap& map, const io::HeightMap& reference) {
+inline void expect_same_heights(const HeightMap& map, const HeightMap& reference) {
   ASSERT_EQ(map.nx, reference.nx);
   ASSERT_EQ(map.ny, reference.ny);
   ASSERT_EQ(map.heights.size(), reference.heights.size());

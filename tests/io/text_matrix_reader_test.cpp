@@ -87,10 +87,10 @@ TEST(TextMatrixReaderTest, RejectsBinaryFilesNamingWhatTheyAre) {
   const TempDir dir;
   const fs::path npy = dir / "really-npy.txt";
   fs::copy_file(kFormatDataDir / "di-5-crop-c-le-f8.npy", npy);
-  expect_contains(matrix_error(npy), {npy.string(), "not text", "NumPy", "--format npy"});
+  expect_contains(matrix_error(npy), {npy.string(), "not text", "NumPy", "set the format to npy"});
   const fs::path gsf = dir / "really-gsf.dat";
   fs::copy_file(kFormatDataDir / "di-5-crop-m.gsf", gsf);
-  expect_contains(matrix_error(gsf), {"not text", "Gwyddion", "--format gsf"});
+  expect_contains(matrix_error(gsf), {"not text", "Gwyddion", "set the format to gsf"});
 }
 
 TEST(TextMatrixReaderTest, RejectsEmptyAndSingleValueFiles) {

@@ -207,7 +207,7 @@ TEST(X3pReaderTest, RejectsFilesThatAreNotZipArchives) {
   expect_contains(x3p_error(text), {text.string(), "not a zip archive, which every X3P file is"});
   const fs::path hdf5 = dir / "hdf5.x3p";
   fs::copy_file(kFormatDataDir / "di-5-crop-48x64.h5", hdf5);
-  expect_contains(x3p_error(hdf5), {"HDF5", "--format hdf5"});
+  expect_contains(x3p_error(hdf5), {"HDF5", "set the format to hdf5"});
   expect_contains(x3p_error(dir / "missing.x3p"), {"does not exist"});
 }
 

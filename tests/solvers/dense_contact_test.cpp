@@ -131,7 +131,7 @@ TEST(DenseContactTest, RefusesGridsTooLargeForADenseMatrix) {
       const std::string message = error.what();
       EXPECT_NE(message.find(std::string("solver '") + name + "'"), std::string::npos) << message;
       EXPECT_NE(message.find("grid 91x91 has 8281 cells"), std::string::npos) << message;
-      EXPECT_NE(message.find("--solver pk"), std::string::npos) << message;
+      EXPECT_NE(message.find("solver pk-multilevel"), std::string::npos) << message;
     }
   }
 }

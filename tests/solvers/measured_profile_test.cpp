@@ -38,7 +38,7 @@ struct Surface {
 
 // The file's heights less their least-squares quadratic, as the initial gap.
 Surface measured(const std::string& file, Boundary boundary) {
-  io::HeightMap map = io::read_height_map(kDataDir / file);
+  HeightMap map = io::read_height_map(kDataDir / file);
   surface::detrend(map, surface::Detrend::curvature);
   const Grid grid =
       map.dimension == 1 ? Grid::line(map.nx, map.dx, boundary) : Grid::plane(map.nx, map.ny, map.dx, map.dy, boundary);

@@ -18,9 +18,9 @@ namespace {
 // represent is rounding only; the brief asks for 1e-12 of the heights.
 constexpr double kExactRelativeTolerance = 1e-12;
 
-io::HeightMap map_from(std::size_t nx, std::size_t ny, double dx, double dy,
-                       const std::function<double(double, double)>& h) {
-  io::HeightMap map;
+HeightMap map_from(std::size_t nx, std::size_t ny, double dx, double dy,
+                   const std::function<double(double, double)>& h) {
+  HeightMap map;
   map.dimension = ny == 1 ? 1 : 2;
   map.nx = nx;
   map.ny = ny;
@@ -37,7 +37,7 @@ io::HeightMap map_from(std::size_t nx, std::size_t ny, double dx, double dy,
 }
 
 // Largest |residual| over valid points, relative to the largest |height| before.
-double worst_relative_residual(const io::HeightMap& after, double scale) {
+double worst_relative_residual(const HeightMap& after, double scale) {
   double worst = 0.0;
   for (std::size_t k = 0; k < after.size(); ++k) {
     if (after.is_valid(k)) worst = std::max(worst, std::abs(after.heights[static_cast<Eigen::Index>(k)]));
@@ -47,7 +47,7 @@ double worst_relative_residual(const io::HeightMap& after, double scale) {
 
 TEST(DetrendTest, RemovesPlaneWithLargeOffsetExactly) {
   // A tilted plane with an offset 10^4 times its relief, anisotropic cells.
-  io::HeightMap map = map_from(97, 61, 2.0e-6, 3.5e-6, [](double x, double y) { return 1e-2 + 3e-3 * x - 7e-4 * y; });
+  HeightMap map = map_from(97, 61, 2.0e-6, 3.5e-6, [](double x, double y) { return 1e-2 + 3e-3 * x - 7e-4 * y; });
   const double scale = map.heights.abs().maxCoeff();
   detrend(map, Detrend::plane);
   EXPECT_LE(worst_relative_residual(map, scale), kExactRelativeTolerance);
@@ -57,7 +57,7 @@ TEST(DetrendTest, RemovesPlaneWithLargeOffsetExactly) {
 }
 
 TEST(DetrendTest, RemovesQuadricExactly) {
-  io::HeightMap map = map_from(80, 50, 1e-6, 2e-6, [](double x, double y) {
+  HeightMap map = map_from(80, 50, 1e-6, 2e-6, [](double x, double y) {
     return -5e-5 + 2e-2 * x + 1e-2 * y - (x * x + 0.5 * x * y + 3 * y * y) / (2 * 0.01);
   });
   const double scale = map.heights.abs().maxCoeff();
@@ -66,18 +66,18 @@ TEST(DetrendTest, RemovesQuadricExactly) {
 }
 
 TEST(DetrendTest, RemovesProfileParabolaAndLine) {
-  io::HeightMap parabola =
+  HeightMap parabola =
       map_from(300, 1, 1e-7, 0.0, [](double x, double) { return 4e-6 - x * x / (2 * 1e-3) + 0.1 * x; });
   const double scale = parabola.heights.abs().maxCoeff();
   detrend(parabola, Detrend::curvature);
   EXPECT_LE(worst_relative_residual(parabola, scale), kExactRelativeTolerance);
-  io::HeightMap line = map_from(300, 1, 1e-7, 0.0, [](double x, double) { return 4e-6 + 0.1 * x; });
+  HeightMap line = map_from(300, 1, 1e-7, 0.0, [](double x, double) { return 4e-6 + 0.1 * x; });
   detrend(line, Detrend::plane);
   EXPECT_LE(worst_relative_residual(line, 4e-6), kExactRelativeTolerance);
 }
 
 TEST(DetrendTest, FitsOnlyValidPointsAndKeepsInvalidOnesNaN) {
-  io::HeightMap map = map_from(20, 10, 1e-6, 1e-6, [](double x, double y) { return 1e-6 + 0.01 * x + 0.02 * y; });
+  HeightMap map = map_from(20, 10, 1e-6, 1e-6, [](double x, double y) { return 1e-6 + 0.01 * x + 0.02 * y; });
   map.valid.assign(map.size(), 1);
   for (std::size_t k : {3u, 47u, 150u}) {
     map.valid[k] = 0;
@@ -91,10 +91,10 @@ TEST(DetrendTest, FitsOnlyValidPointsAndKeepsInvalidOnesNaN) {
 
 TEST(DetrendTest, MeanRemovalLeavesZeroMeanAndPlaneRemovalLeavesRoughness) {
   // A plane plus a zero-mean, plane-orthogonal pattern: only the plane goes.
-  io::HeightMap map = map_from(64, 64, 1.0, 1.0, [](double x, double y) {
+  HeightMap map = map_from(64, 64, 1.0, 1.0, [](double x, double y) {
     return 5.0 + 0.25 * x - 0.5 * y + std::cos(2 * M_PI * x / 8) * std::cos(2 * M_PI * y / 8);
   });
-  io::HeightMap mean_only = map;
+  HeightMap mean_only = map;
   detrend(mean_only, Detrend::mean);
   EXPECT_NEAR(mean_only.heights.mean(), 0.0, 1e-12 * 40.0);
   detrend(map, Detrend::plane);
@@ -108,7 +108,7 @@ TEST(DetrendTest, MeanRemovalLeavesZeroMeanAndPlaneRemovalLeavesRoughness) {
 }
 
 TEST(DetrendTest, NoneChangesNothing) {
-  io::HeightMap map = map_from(4, 3, 1.0, 1.0, [](double x, double y) { return x + y; });
+  HeightMap map = map_from(4, 3, 1.0, 1.0, [](double x, double y) { return x + y; });
   const Eigen::ArrayXd before = map.heights;
   detrend(map, Detrend::none);
   EXPECT_TRUE((map.heights == before).all());
@@ -116,7 +116,7 @@ TEST(DetrendTest, NoneChangesNothing) {
 }
 
 TEST(DetrendTest, RejectsFitsTheValidPointsCannotDetermine) {
-  io::HeightMap map = map_from(5, 4, 1.0, 1.0, [](double x, double) { return x; });
+  HeightMap map = map_from(5, 4, 1.0, 1.0, [](double x, double) { return x; });
   map.valid.assign(map.size(), 0);
   for (std::size_t i = 0; i < 5; ++i) map.valid[2 * 5 + i] = 1;  // one row: no y slope
   try {

@@ -21,8 +21,8 @@ constexpr double kPlaneFillTolerance = 1e-12;
 
 // An nx x ny map of h = 1 + 2 i + 3 j with the points listed by the mask
 // string ('.' valid, 'x' invalid, rows top to bottom) marked invalid.
-io::HeightMap masked_plane(const std::vector<std::string>& rows) {
-  io::HeightMap map;
+HeightMap masked_plane(const std::vector<std::string>& rows) {
+  HeightMap map;
   map.ny = rows.size();
   map.nx = rows.front().size();
   map.dimension = map.ny == 1 ? 1 : 2;
@@ -43,7 +43,7 @@ io::HeightMap masked_plane(const std::vector<std::string>& rows) {
 }
 
 TEST(InvalidPointsTest, RefusalNamesTheCountAndTheFirstPoint) {
-  const io::HeightMap map = masked_plane({"....", "..x.", "x..."});
+  const HeightMap map = masked_plane({"....", "..x.", "x..."});
   EXPECT_EQ(count_invalid(map), 2u);
   try {
     refuse_invalid_points(map);
@@ -61,7 +61,7 @@ TEST(InvalidPointsTest, FillReproducesAPlaneInInteriorHoles) {
   // Interior holes: a plane is discrete-harmonic. (Holes on the edge see the
   // zero-flux condition, which a tilted plane does not satisfy; the next test
   // checks them against the equation itself.)
-  io::HeightMap map = masked_plane({".......", "..xx...", "..xxx..", ".......", "......."});
+  HeightMap map = masked_plane({".......", "..xx...", "..xxx..", ".......", "......."});
   fill_invalid_points(map);
   EXPECT_TRUE(map.valid.empty());
   for (Eigen::Index k = 0; k < map.heights.size(); ++k) {
@@ -73,7 +73,7 @@ TEST(InvalidPointsTest, FillReproducesAPlaneInInteriorHoles) {
 }
 
 TEST(InvalidPointsTest, FilledEdgePointsSatisfyTheZeroFluxLaplaceEquation) {
-  io::HeightMap map = masked_plane({"x....", ".....", "....x"});
+  HeightMap map = masked_plane({"x....", ".....", "....x"});
   map.dx = 1.0;
   map.dy = 2.0;  // weights 1 and 1/4
   fill_invalid_points(map);
@@ -83,7 +83,7 @@ TEST(InvalidPointsTest, FilledEdgePointsSatisfyTheZeroFluxLaplaceEquation) {
 }
 
 TEST(InvalidPointsTest, FillCutsFullyInvalidBorderRowsAndColumns) {
-  io::HeightMap map = masked_plane({"xxxxxx", "xx...x", "xx.x.x", "xx...x", "xxxxxx"});
+  HeightMap map = masked_plane({"xxxxxx", "xx...x", "xx.x.x", "xx...x", "xxxxxx"});
   fill_invalid_points(map);
   EXPECT_EQ(map.nx, 3u);
   EXPECT_EQ(map.ny, 3u);
@@ -95,7 +95,7 @@ TEST(InvalidPointsTest, FillCutsFullyInvalidBorderRowsAndColumns) {
 }
 
 TEST(InvalidPointsTest, FillOfAProfileInterpolatesLinearly) {
-  io::HeightMap map = masked_plane({".xx.x"});
+  HeightMap map = masked_plane({".xx.x"});
   map.dimension = 1;
   fill_invalid_points(map);
   EXPECT_EQ(map.nx, 4u);  // the invalid last point is an end: cut
@@ -104,12 +104,12 @@ TEST(InvalidPointsTest, FillOfAProfileInterpolatesLinearly) {
 }
 
 TEST(InvalidPointsTest, FillWithoutValidPointsIsAnError) {
-  io::HeightMap map = masked_plane({"xx", "xx"});
+  HeightMap map = masked_plane({"xx", "xx"});
   EXPECT_THROW(fill_invalid_points(map), InputError);
 }
 
 TEST(InvalidPointsTest, CropKeepsTheLargestValidRectangle) {
-  io::HeightMap map = masked_plane({
+  HeightMap map = masked_plane({
       "x.......",
       "...x....",
       "........",
@@ -128,7 +128,7 @@ TEST(InvalidPointsTest, CropKeepsTheLargestValidRectangle) {
 }
 
 TEST(InvalidPointsTest, CropBreaksTiesByTopRowThenLeftColumn) {
-  io::HeightMap map = masked_plane({"..x..", "..x..", "xxxxx", "..x.."});
+  HeightMap map = masked_plane({"..x..", "..x..", "xxxxx", "..x.."});
   crop_to_valid_points(map);
   EXPECT_EQ(map.nx, 2u);
   EXPECT_EQ(map.ny, 2u);
@@ -136,7 +136,7 @@ TEST(InvalidPointsTest, CropBreaksTiesByTopRowThenLeftColumn) {
 }
 
 TEST(InvalidPointsTest, CropRefusesARectangleTooSmall) {
-  io::HeightMap map = masked_plane({".x.", "x.x", ".x."});
+  HeightMap map = masked_plane({".x.", "x.x", ".x."});
   try {
     crop_to_valid_points(map);
     ADD_FAILURE() << "no error";

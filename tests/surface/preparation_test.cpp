@@ -15,8 +15,8 @@ namespace halfspace::surface {
 namespace {
 
 // h[j][i] = 100 j + i, easy to recognise after cutting.
-io::HeightMap index_map(std::size_t nx, std::size_t ny) {
-  io::HeightMap map;
+HeightMap index_map(std::size_t nx, std::size_t ny) {
+  HeightMap map;
   map.dimension = ny == 1 ? 1 : 2;
   map.nx = nx;
   map.ny = ny;
@@ -55,7 +55,7 @@ TEST(WindowTest, ParsesMapAndProfileWindows) {
 }
 
 TEST(WindowTest, CutsTheWindowAndKeepsSpacing) {
-  io::HeightMap map = index_map(10, 8);
+  HeightMap map = index_map(10, 8);
   select_window(map, parse_window("2,3,4,5"));
   EXPECT_EQ(map.nx, 4u);
   EXPECT_EQ(map.ny, 5u);
@@ -67,7 +67,7 @@ TEST(WindowTest, CutsTheWindowAndKeepsSpacing) {
 }
 
 TEST(WindowTest, BoundsErrorsNameTheValues) {
-  io::HeightMap map = index_map(10, 8);
+  HeightMap map = index_map(10, 8);
   EXPECT_NE(input_error_of([&] {
               select_window(map, parse_window("8,0,4,4"));
             }).find("window i0 = 8, j0 = 0, nx = 4, ny = 4 is invalid: it ends at column 11 but the 10x8 map"),
@@ -78,14 +78,14 @@ TEST(WindowTest, BoundsErrorsNameTheValues) {
             std::string::npos);
   EXPECT_NE(input_error_of([&] { select_window(map, parse_window("0,4")); }).find("give I0,J0,NX,NY"),
             std::string::npos);
-  io::HeightMap profile = index_map(50, 1);
+  HeightMap profile = index_map(50, 1);
   select_window(profile, parse_window("10,20"));
   EXPECT_EQ(profile.nx, 20u);
   EXPECT_EQ(profile.heights[0], 10.0);
 }
 
 TEST(WindowTest, WindowWithoutInvalidPointsDropsTheMask) {
-  io::HeightMap map = index_map(6, 6);
+  HeightMap map = index_map(6, 6);
   map.valid.assign(36, 1);
   map.valid[0] = 0;
   select_window(map, parse_window("1,1,4,4"));
@@ -93,7 +93,7 @@ TEST(WindowTest, WindowWithoutInvalidPointsDropsTheMask) {
 }
 
 TEST(PaddingTest, CentresTheMapInAMarginAtItsLowestHeight) {
-  io::HeightMap map = index_map(4, 3);
+  HeightMap map = index_map(4, 3);
   pad_for_free_boundary(map, 2.0);
   EXPECT_EQ(map.nx, 8u);
   EXPECT_EQ(map.ny, 6u);
@@ -108,13 +108,13 @@ TEST(PaddingTest, CentresTheMapInAMarginAtItsLowestHeight) {
 }
 
 TEST(PaddingTest, PadsProfilesAlongXAndRejectsBadFactors) {
-  io::HeightMap profile = index_map(10, 1);
+  HeightMap profile = index_map(10, 1);
   pad_for_free_boundary(profile, 1.5);
   EXPECT_EQ(profile.nx, 15u);
   EXPECT_EQ(profile.ny, 1u);
   EXPECT_EQ(profile.heights[2], 0.0);
   EXPECT_EQ(profile.heights[3], 1.0);
-  io::HeightMap map = index_map(4, 4);
+  HeightMap map = index_map(4, 4);
   for (double factor : {0.5, 17.0, std::numeric_limits<double>::quiet_NaN()}) {
     EXPECT_NE(input_error_of([&] { pad_for_free_boundary(map, factor); }).find("must be in [1, 16]"),
               std::string::npos);
@@ -127,7 +127,7 @@ TEST(PaddingTest, PadsProfilesAlongXAndRejectsBadFactors) {
 
 TEST(PreparationTest, AppliesWindowInvalidDetrendAndPadInOrder) {
   // A tilted plane with one invalid point inside the window and one outside.
-  io::HeightMap map = index_map(12, 10);
+  HeightMap map = index_map(12, 10);
   map.valid.assign(120, 1);
   for (std::size_t k : {std::size_t{0}, std::size_t{5 * 12 + 6}}) {
     map.valid[k] = 0;
@@ -151,11 +151,11 @@ TEST(PreparationTest, AppliesWindowInvalidDetrendAndPadInOrder) {
 }
 
 TEST(PreparationTest, RefusesInvalidPointsByDefaultButNotOutsideTheWindow) {
-  io::HeightMap map = index_map(8, 8);
+  HeightMap map = index_map(8, 8);
   map.valid.assign(64, 1);
   map.valid[0] = 0;
   map.heights[0] = std::numeric_limits<double>::quiet_NaN();
-  io::HeightMap whole = map;
+  HeightMap whole = map;
   EXPECT_THROW(prepare_height_map(whole, {}), FileError);
   PreparationOptions window;
   window.window = parse_window("1,1,6,6");
@@ -163,7 +163,7 @@ TEST(PreparationTest, RefusesInvalidPointsByDefaultButNotOutsideTheWindow) {
 }
 
 TEST(PreparationTest, CropThenDetrendFitsTheCroppedRegion) {
-  io::HeightMap map = index_map(8, 6);
+  HeightMap map = index_map(8, 6);
   map.valid.assign(48, 1);
   map.valid[7] = 0;  // (0, 7)
   map.heights[7] = std::numeric_limits<double>::quiet_NaN();

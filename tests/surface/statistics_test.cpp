@@ -117,13 +117,10 @@ TEST(SurfaceStatisticsTest, ClustersOnProfile) {
 
 TEST(SurfaceStatisticsTest, ContactStatisticsOfKnownFields) {
   const Grid grid = Grid::plane(4, 2, 2.0, 3.0, Boundary::periodic);
-  SolveResult result;
-  result.pressure = Eigen::ArrayXd::Zero(8);
-  result.gap = Eigen::ArrayXd::Zero(8);
-  result.pressure << 1, 2, 0, 0, 0, 0, 0, 5;
+  const std::vector<double> pressure{1, 2, 0, 0, 0, 0, 0, 5};
   // Contact cells carry rounding-level gaps, one negative: clipped to 0.
-  result.gap << -1e-20, 1e-20, 1, 2, 3, 4, 5, 0;
-  const ContactStatistics s = contact_statistics(grid, result);
+  const std::vector<double> gap{-1e-20, 1e-20, 1, 2, 3, 4, 5, 0};
+  const ContactStatistics s = contact_statistics(grid, pressure, gap);
   EXPECT_DOUBLE_EQ(s.contact_fraction, 3.0 / 8.0);
   EXPECT_NEAR(s.mean_gap, 15.0 / 8.0, kTolerance);
   EXPECT_NEAR(s.rms_gap, std::sqrt(55.0 / 8.0), kTolerance);

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <string>
 
-#include "halfspace/io/height_map.hpp"
+#include "halfspace/height_map.hpp"
 
 namespace halfspace::io {
 

@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-#include "halfspace/io/height_map.hpp"
+#include "halfspace/height_map.hpp"
 #include "halfspace/io/length_unit.hpp"
 
 namespace halfspace::io {

@@ -17,7 +17,7 @@ namespace halfspace::io {
 // /height; /steps/NNN (zero-padded, at least 3 digits) with pressure, gap,
 // displacement, contact, residual_history and cluster_sizes (int64, largest
 // first) and the step's attributes; /sweep/<column> (float64, one entry per
-// step) for every solvers::summary_columns() column. metadata.load_mode and
+// step) for every summary_columns() column (sweep_table.hpp). metadata.load_mode and
 // the rest of metadata apply to every step. Throws InputError if `steps` is
 // empty or a field does not match the grid, FileError naming the path if the
 // file cannot be written.

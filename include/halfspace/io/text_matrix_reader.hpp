@@ -4,7 +4,7 @@
 
 #include <filesystem>
 
-#include "halfspace/io/height_map.hpp"
+#include "halfspace/height_map.hpp"
 #include "halfspace/io/length_unit.hpp"
 
 namespace halfspace::io {

@@ -4,7 +4,7 @@
 
 #include <filesystem>
 
-#include "halfspace/io/height_map.hpp"
+#include "halfspace/height_map.hpp"
 
 namespace halfspace::io {
 

@@ -6,7 +6,6 @@
 #include <cstddef>
 #include <functional>
 #include <span>
-#include <string_view>
 #include <vector>
 
 #include "halfspace/grid.hpp"
@@ -42,20 +41,5 @@ struct LoadSweepOptions {
 std::vector<SweepStep> run_load_sweep(ContactSolver& solver, const Grid& grid, std::span<const double> initial_gap,
                                       ControlMode mode, std::span<const double> values,
                                       const LoadSweepOptions& options = {});
-
-// One column of the sweep's summary table (HDF5 /sweep/<name> and the CSV):
-// its name, unit ("" when dimensionless; "force" stands for N in 2D, N/m in
-// 1D) and how a step gives its value.
-struct SummaryColumn {
-  std::string_view name;
-  std::string_view unit;
-  std::string_view meaning;
-  double (*value)(const SweepStep& step);
-};
-
-// The columns in file order: load, mean_pressure, total_force, approach,
-// contact_fraction, mean_gap, rms_gap, free_volume, max_pressure, clusters,
-// iterations, residual, seconds, converged.
-std::span<const SummaryColumn> summary_columns();
 
 }  // namespace halfspace::solvers

@@ -4,7 +4,7 @@
 
 #include <string_view>
 
-#include "halfspace/io/height_map.hpp"
+#include "halfspace/height_map.hpp"
 
 namespace halfspace::surface {
 
@@ -28,6 +28,6 @@ Detrend parse_detrend(std::string_view text);
 // when a spacing is 0). Exact for heights that are such a polynomial, to
 // rounding. Throws InputError when the valid points cannot determine the fit
 // (e.g. a plane through points on one line).
-void detrend(io::HeightMap& map, Detrend detrend);
+void detrend(HeightMap& map, Detrend detrend);
 
 }  // namespace halfspace::surface

@@ -4,7 +4,7 @@
 
 #include <string_view>
 
-#include "halfspace/io/height_map.hpp"
+#include "halfspace/height_map.hpp"
 
 namespace halfspace::surface {
 
@@ -19,11 +19,11 @@ std::string_view to_string(InvalidPoints policy);
 InvalidPoints parse_invalid_points(std::string_view text);
 
 // Number of invalid points (0 when map.valid is empty).
-std::size_t count_invalid(const io::HeightMap& map);
+std::size_t count_invalid(const HeightMap& map);
 
 // Throws FileError naming map.source, the number of invalid points and the
 // first one (row j, column i) when there is any; does nothing otherwise.
-void refuse_invalid_points(const io::HeightMap& map);
+void refuse_invalid_points(const HeightMap& map);
 
 // Fills the invalid points: first the rows and columns at the edges that hold
 // no valid point at all are cut off (there is nothing to interpolate from;
@@ -35,13 +35,13 @@ void refuse_invalid_points(const io::HeightMap& map);
 // exactly. Solved directly (sparse Cholesky) in the invalid points only.
 // Clears map.valid and appends a line to map.preparation. Throws InputError
 // when no point is valid or the trimmed map has fewer than 2 points per axis.
-void fill_invalid_points(io::HeightMap& map);
+void fill_invalid_points(HeightMap& map);
 
 // Keeps the largest axis-aligned rectangle (most points; among equals the
 // one with the smallest top row, then the smallest left column) that holds
 // only valid points; for a profile, the longest run of valid points. Clears
 // map.valid and appends a line to map.preparation. Throws InputError when
 // that rectangle has fewer than 2 points along an axis.
-void crop_to_valid_points(io::HeightMap& map);
+void crop_to_valid_points(HeightMap& map);
 
 }  // namespace halfspace::surface

@@ -1,7 +1,7 @@
 // Padding a height map with a non-contacting margin, for free boundaries.
 #pragma once
 
-#include "halfspace/io/height_map.hpp"
+#include "halfspace/height_map.hpp"
 
 namespace halfspace::surface {
 
@@ -19,6 +19,6 @@ inline constexpr double kMaxPadFactor = 16.0;
 // touch before the deepest valley of the map does. Requires a map without
 // invalid points. Throws InputError for a factor outside [1, 16] or invalid
 // points. Appends a line to map.preparation (none for factor 1).
-void pad_for_free_boundary(io::HeightMap& map, double factor);
+void pad_for_free_boundary(HeightMap& map, double factor);
 
 }  // namespace halfspace::surface

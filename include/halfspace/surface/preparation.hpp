@@ -4,7 +4,7 @@
 
 #include <optional>
 
-#include "halfspace/io/height_map.hpp"
+#include "halfspace/height_map.hpp"
 #include "halfspace/surface/detrend.hpp"
 #include "halfspace/surface/invalid_points.hpp"
 #include "halfspace/surface/window.hpp"
@@ -25,6 +25,6 @@ struct PreparationOptions {
 // Each step that changes the map appends one line to map.preparation. After
 // it the map has no invalid points. Throws InputError/FileError as the steps
 // do.
-void prepare_height_map(io::HeightMap& map, const PreparationOptions& options);
+void prepare_height_map(HeightMap& map, const PreparationOptions& options);
 
 }  // namespace halfspace::surface

@@ -7,7 +7,6 @@
 #include <vector>
 
 #include "halfspace/grid.hpp"
-#include "halfspace/solvers/solve_result.hpp"
 
 namespace halfspace::surface {
 
@@ -55,9 +54,10 @@ SurfaceStatistics surface_statistics(const Grid& grid, std::span<const double> h
 // edges too when the grid is periodic. Throws InputError on a size mismatch.
 std::vector<std::int64_t> contact_cluster_sizes(const Grid& grid, std::span<const double> pressure);
 
-// Contact fraction, gap moments, free volume and clusters of a solved contact.
-// The gap is clipped at 0 (a converged solve leaves rounding-level negative
-// gaps in contact). Throws InputError if the fields do not match the grid.
-ContactStatistics contact_statistics(const Grid& grid, const SolveResult& result);
+// Contact fraction, gap moments, free volume and clusters of a solved contact
+// from its pressure (Pa) and gap (m) fields. The gap is clipped at 0 (a
+// converged solve leaves rounding-level negative gaps in contact). Throws
+// InputError if the fields do not match the grid.
+ContactStatistics contact_statistics(const Grid& grid, std::span<const double> pressure, std::span<const double> gap);
 
 }  // namespace halfspace::surface

@@ -4,7 +4,7 @@
 #include <cstddef>
 #include <string_view>
 
-#include "halfspace/io/height_map.hpp"
+#include "halfspace/height_map.hpp"
 
 namespace halfspace::surface {
 
@@ -26,10 +26,10 @@ Window parse_window(std::string_view text);
 // Throws InputError naming the window and the map's size when the window
 // is smaller than 2 points along an axis, extends past the map, or does not
 // match its dimension. Appends a line to map.preparation.
-void select_window(io::HeightMap& map, const Window& window);
+void select_window(HeightMap& map, const Window& window);
 
 // The sub-grid [i0, i0 + nx) x [j0, j0 + ny) without checks or a record, for
 // other preparation steps.
-void extract_window(io::HeightMap& map, std::size_t i0, std::size_t j0, std::size_t nx, std::size_t ny);
+void extract_window(HeightMap& map, std::size_t i0, std::size_t j0, std::size_t nx, std::size_t ny);
 
 }  // namespace halfspace::surface

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace halfspace::io {
+namespace halfspace {
 
 struct HeightMap {
   int dimension = 2;       // 1 for a profile, 2 for a map
@@ -31,4 +31,4 @@ struct HeightMap {
   bool is_valid(std::size_t k) const { return valid.empty() || valid[k] != 0; }
 };
 
-}  // namespace halfspace::io
+}  // namespace halfspace

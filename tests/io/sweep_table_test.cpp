@@ -1,0 +1,42 @@
+// The sweep's summary table: its columns, their order and what each reads
+// from a step.
+#include "halfspace/io/sweep_table.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace halfspace::io {
+namespace {
+
+using solvers::SweepStep;
+
+TEST(SweepTableTest, SummaryColumnsAreTheDocumentedOnes) {
+  std::vector<std::string> names;
+  for (const SummaryColumn& column : summary_columns()) names.emplace_back(column.name);
+  EXPECT_EQ(names, (std::vector<std::string>{"load", "mean_pressure", "total_force", "approach", "contact_fraction",
+                                             "mean_gap", "rms_gap", "free_volume", "max_pressure", "clusters",
+                                             "iterations", "residual", "seconds", "converged"}));
+  SweepStep step;
+  step.loading = Loading::approach(2e-6);
+  step.result.status = SolveStatus::converged;
+  step.result.iterations = 7;
+  step.statistics.cluster_sizes = {5, 3, 1};
+  step.statistics.free_volume = 4.5;
+  const auto value = [&](std::string_view name) {
+    for (const SummaryColumn& column : summary_columns()) {
+      if (column.name == name) return column.value(step);
+    }
+    return -1.0;
+  };
+  EXPECT_EQ(value("load"), 2e-6);
+  EXPECT_EQ(value("clusters"), 3.0);
+  EXPECT_EQ(value("iterations"), 7.0);
+  EXPECT_EQ(value("free_volume"), 4.5);
+  EXPECT_EQ(value("converged"), 1.0);
+}
+
+}  // namespace
+}  // namespace halfspace::io
