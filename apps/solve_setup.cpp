@@ -27,9 +27,9 @@
 #include "halfspace/io/sweep_writer.hpp"
 #include "halfspace/material.hpp"
 #include "halfspace/memory_estimate.hpp"
-#include "halfspace/stress/stress_volume.hpp"
-#include "halfspace/solvers/solver_factory.hpp"
 #include "halfspace/solvers/adhesion_law.hpp"
+#include "halfspace/solvers/solver_factory.hpp"
+#include "halfspace/stress/stress_volume.hpp"
 #include "halfspace/surface/padding.hpp"
 #include "halfspace/surface/preparation.hpp"
 #include "halfspace/threads.hpp"
@@ -673,8 +673,9 @@ SolveSetup make_solve_setup(const SolveOptions& options) {
     check_load_scale(options, grid, loading.mode, load_values);
     // Hardness cap: no load above H times the domain area.
     for (const double value : load_values) {
-      in_context(options.describe(loading.mode == ControlMode::force ? "force" : "mean-pressure"),
-                 [&] { solver.interface_law.check_load(grid, Loading{loading.mode, value}); });
+      in_context(options.describe(loading.mode == ControlMode::force ? "force" : "mean-pressure"), [&] {
+        solver.interface_law.check_load(grid, Loading{loading.mode, value});
+      });
     }
     require_memory(fmt::format("{}: {}", request, solve_description(grid, solver, load_values.size())),
                    std::max(solve_memory_estimate(grid, solver, load_values.size()),
@@ -703,9 +704,10 @@ SolveSetup make_solve_setup(const SolveOptions& options) {
           "2D surface");
     }
     if (solver.adhesion) {
-      throw InputError(fmt::format("{} is not supported for a coated half-space: the adhesive solver works on the "
-                                   "homogeneous half-space",
-                                   options.describe("adhesion")));
+      throw InputError(
+          fmt::format("{} is not supported for a coated half-space: the adhesive solver works on the "
+                      "homogeneous half-space",
+                      options.describe("adhesion")));
     }
     if (!stress.depths.empty()) {
       throw InputError(
@@ -738,12 +740,6 @@ std::string coating_text(const LayeredMaterial& coating) {
       "(E* above is the layer's)",
       coating.thickness, coating.layer.youngs_modulus, coating.layer.poissons_ratio, coating.substrate.youngs_modulus,
       coating.substrate.poissons_ratio);
-}
-
-std::unique_ptr<solvers::ContactSolver> make_setup_solver(const SolveSetup& setup,
-                                                          const solvers::SolverOptions& settings) {
-  return setup.coating ? solvers::make_solver(setup.grid, *setup.coating, settings)
-                       : solvers::make_solver(setup.grid, setup.e_star, settings);
 }
 
 }  // namespace halfspace::app

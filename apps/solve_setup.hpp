@@ -48,10 +48,6 @@ struct SolveSetup {
 // "t = 1e-06 m, layer E1 = 3e+09 Pa, nu1 = 0.35 on substrate E2 = ... (E* is the layer's)".
 std::string coating_text(const LayeredMaterial& coating);
 
-// The solver the setup asks for, on its material (homogeneous or coated).
-std::unique_ptr<solvers::ContactSolver> make_setup_solver(const SolveSetup& setup,
-                                                          const solvers::SolverOptions& settings);
-
 // Applies the defaults, checks every option and their combinations, builds
 // the surface (reading the height map file, if any) and checks that the
 // output file can be created. Throws InputError (FileError for files) with a

@@ -16,7 +16,8 @@ namespace halfspace::stress {
 void check_depths(std::span<const double> depths) {
   if (depths.empty()) throw InputError("no depth given: at least one depth (m, > 0) is needed for stresses");
   if (depths.size() > kMaxDepthCount) {
-    throw InputError(fmt::format("{} depths requested: allowed range is 1 to {} depths", depths.size(), kMaxDepthCount));
+    throw InputError(
+        fmt::format("{} depths requested: allowed range is 1 to {} depths", depths.size(), kMaxDepthCount));
   }
   for (const double z : depths) checked_depth(z);
 }

@@ -77,15 +77,15 @@ TEST_P(HardnessRoughTest, PlasticFractionRisesWithTheLoadAndTheForceBalances) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    AllSolversAndGrids, HardnessRoughTest,
-    ::testing::Combine(testing::all_pk_solvers(), ::testing::Values(Shape::line_free, Shape::line_periodic,
-                                                                     Shape::plane_free, Shape::plane_periodic)),
-    [](const ::testing::TestParamInfo<std::tuple<SolverType, Shape>>& info) {
-      static const char* shapes[] = {"LineFree", "LinePeriodic", "PlaneFree", "PlanePeriodic"};
-      return testing::solver_type_name({std::get<0>(info.param), info.index}) +
-             shapes[static_cast<int>(std::get<1>(info.param))];
-    });
+INSTANTIATE_TEST_SUITE_P(AllSolversAndGrids, HardnessRoughTest,
+                         ::testing::Combine(testing::all_pk_solvers(),
+                                            ::testing::Values(Shape::line_free, Shape::line_periodic, Shape::plane_free,
+                                                              Shape::plane_periodic)),
+                         [](const ::testing::TestParamInfo<std::tuple<SolverType, Shape>>& info) {
+                           static const char* shapes[] = {"LineFree", "LinePeriodic", "PlaneFree", "PlanePeriodic"};
+                           return testing::solver_type_name({std::get<0>(info.param), info.index}) +
+                                  shapes[static_cast<int>(std::get<1>(info.param))];
+                         });
 
 // E* -> infinity: the elastic deflections vanish against the heights, so
 // the contact is the k lowest cells of the initial gap (the bearing area at
