@@ -149,13 +149,18 @@ std::unique_ptr<ContactSolver> make_any_solver(const Grid& grid, const Elasticit
                                                const SolverOptions& options) {
   options.validate(grid);
   if (options.adhesion) {
+    if (!std::holds_alternative<double>(e_star)) {
+      throw SolverOptionError("adhesion", std::string(to_string(options.adhesion->law.type)),
+                              "is not supported for a coated half-space: the adhesive solver works on the "
+                              "homogeneous half-space");
+    }
     AdhesiveSolverOptions adhesive;
     adhesive.law = options.adhesion->law;
     adhesive.tolerance = options.adhesion->tolerance;
     if (options.max_iterations) adhesive.max_iterations = *options.max_iterations;
     adhesive.fft_planning = options.fft_planning;
     adhesive.progress = options.progress;
-    return std::make_unique<AdhesiveContactSolver>(grid, e_star, std::move(adhesive));
+    return std::make_unique<AdhesiveContactSolver>(grid, std::get<double>(e_star), std::move(adhesive));
   }
   switch (options.type) {
     case SolverType::pk:
