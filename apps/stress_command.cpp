@@ -54,9 +54,10 @@ int run_stress(const StressOptions& o, const std::vector<std::string>& argv) {
   if (!o.output) throw InputError("no output file given: pass --output FILE.h5");
   const std::string& output = *o.output;
   if (io::same_file(output, o.result)) {
-    throw InputError(fmt::format("--output {} is the input result file: the stresses go to a new file, pass "
-                                 "another --output",
-                                 output));
+    throw InputError(
+        fmt::format("--output {} is the input result file: the stresses go to a new file, pass "
+                    "another --output",
+                    output));
   }
   io::check_output_path(output);
   set_threads(threads_from(o.threads));
@@ -67,8 +68,8 @@ int run_stress(const StressOptions& o, const std::vector<std::string>& argv) {
   }();
   const Grid& grid = input.grid;
   // The pressure read twice (reader and field) and the stress volume.
-  const double estimate = kProgramBytes + 16.0 * static_cast<double>(grid.size()) +
-                          stress::stress_memory_estimate(grid, depths.size());
+  const double estimate =
+      kProgramBytes + 16.0 * static_cast<double>(grid.size()) + stress::stress_memory_estimate(grid, depths.size());
   const std::string what = o.max_memory ? fmt::format("--max-memory {}", *o.max_memory) : "--max-memory";
   require_memory(fmt::format("stresses at {} depths on the {} grid of {} ({} cells x {} depths x 8 fields x 8 "
                              "bytes, and the file image)",
@@ -123,8 +124,8 @@ std::vector<double> parse_stress_depths(const std::string* depths, const std::st
     throw InputError(fmt::format("{} and {} were both given: pass one of them", list_option, range_option));
   }
   if (!depths && !depth_range) {
-    throw InputError(fmt::format("no depth given: pass {} z1,z2,... or {} START:STOP:COUNT (m, > 0)", list_option,
-                                 range_option));
+    throw InputError(
+        fmt::format("no depth given: pass {} z1,z2,... or {} START:STOP:COUNT (m, > 0)", list_option, range_option));
   }
   std::vector<double> values;
   if (depths) {
@@ -155,9 +156,8 @@ std::vector<double> parse_stress_depths(const std::string* depths, const std::st
     const double stop = parse_number(text.substr(first + 1, second - first - 1), what);
     const long long count = parse_integer(text.substr(second + 1), what);
     if (count < 1 || count > static_cast<long long>(stress::kMaxDepthCount)) {
-      throw InputError(
-          fmt::format("{} is invalid: COUNT = {} is outside the allowed range 1 to {}", what, count,
-                      stress::kMaxDepthCount));
+      throw InputError(fmt::format("{} is invalid: COUNT = {} is outside the allowed range 1 to {}", what, count,
+                                   stress::kMaxDepthCount));
     }
     if (!(start > 0.0) || !(stop >= start) || (count > 1 && !(stop > start))) {
       throw InputError(fmt::format("{} is invalid: need 0 < START < STOP (m) (START = STOP only with COUNT 1)", what));

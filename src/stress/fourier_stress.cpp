@@ -18,20 +18,29 @@ std::complex<double> fourier_stress_component(Component component, double kx, do
   if (q2 == 0.0) {
     switch (component) {
       case Component::xx:
-      case Component::yy: return -nu / (1.0 - nu);
-      case Component::zz: return -1.0;
-      default: return 0.0;
+      case Component::yy:
+        return -nu / (1.0 - nu);
+      case Component::zz:
+        return -1.0;
+      default:
+        return 0.0;
     }
   }
   const double qz = std::sqrt(q2) * z;
   const double bracket = (qz - (1.0 - 2.0 * nu)) * decay / q2;
   switch (component) {
-    case Component::xx: return kx * kx * bracket - 2.0 * nu * decay;
-    case Component::yy: return ky * ky * bracket - 2.0 * nu * decay;
-    case Component::zz: return -(1.0 + qz) * decay;
-    case Component::xy: return kx * ky * bracket;
-    case Component::xz: return {0.0, kx * z * decay};
-    case Component::yz: return {0.0, ky * z * decay};
+    case Component::xx:
+      return kx * kx * bracket - 2.0 * nu * decay;
+    case Component::yy:
+      return ky * ky * bracket - 2.0 * nu * decay;
+    case Component::zz:
+      return -(1.0 + qz) * decay;
+    case Component::xy:
+      return kx * ky * bracket;
+    case Component::xz:
+      return {0.0, kx * z * decay};
+    case Component::yz:
+      return {0.0, ky * z * decay};
   }
   return 0.0;
 }

@@ -125,7 +125,7 @@ StressTensor strip_stress(double x, double z, double half_width, double nu) {
   const double angle = std::atan2(z * (s2 - s1), z2 + s1 * s2);
   const double r1 = s1 * s1 + z2;
   const double r2 = s2 * s2 + z2;
-  const double sin_difference = 2.0 * z * (s2 / r2 - s1 / r1);           // sin 2theta2 - sin 2theta1
+  const double sin_difference = 2.0 * z * (s2 / r2 - s1 / r1);              // sin 2theta2 - sin 2theta1
   const double cos_difference = (z2 - s1 * s1) / r1 - (z2 - s2 * s2) / r2;  // cos 2theta1 - cos 2theta2
   const double scale = 1.0 / (2.0 * std::numbers::pi);
   StressTensor s;

@@ -26,8 +26,8 @@ double max_shear(const StressTensor& s) {
   const double kzz = s.zz - m;
   const double p = (kxx * kxx + kyy * kyy + kzz * kzz + 2.0 * (s.xy * s.xy + s.xz * s.xz + s.yz * s.yz)) / 6.0;
   if (p <= 0.0) return 0.0;  // isotropic: every direction is principal
-  const double det = kxx * (kyy * kzz - s.yz * s.yz) - s.xy * (s.xy * kzz - s.yz * s.xz) +
-                     s.xz * (s.xy * s.yz - kyy * s.xz);
+  const double det =
+      kxx * (kyy * kzz - s.yz * s.yz) - s.xy * (s.xy * kzz - s.yz * s.xz) + s.xz * (s.xy * s.yz - kyy * s.xz);
   // Rounding can push the cosine just outside [-1, 1].
   const double cos3phi = std::clamp(det / (2.0 * p * std::sqrt(p)), -1.0, 1.0);
   const double phi = std::acos(cos3phi) / 3.0;

@@ -35,12 +35,18 @@ namespace {
 
 double component_of(const StressTensor& s, std::size_t c) {
   switch (static_cast<Component>(c)) {
-    case Component::xx: return s.xx;
-    case Component::yy: return s.yy;
-    case Component::zz: return s.zz;
-    case Component::xy: return s.xy;
-    case Component::xz: return s.xz;
-    case Component::yz: return s.yz;
+    case Component::xx:
+      return s.xx;
+    case Component::yy:
+      return s.yy;
+    case Component::zz:
+      return s.zz;
+    case Component::xy:
+      return s.xy;
+    case Component::xz:
+      return s.xz;
+    case Component::yz:
+      return s.yz;
   }
   return 0.0;
 }
@@ -201,9 +207,8 @@ struct SubsurfaceStress::Impl {
       kernel->forward();
       std::span<const std::complex<double>> kernel_spectrum = kernel->spectrum();
       std::span<std::complex<double>> spectrum = padded->spectrum();
-      linalg::for_each_index(spectrum.size(), [&](std::size_t k) {
-        spectrum[k] = pressure_spectrum[k] * kernel_spectrum[k] * inverse_n;
-      });
+      linalg::for_each_index(
+          spectrum.size(), [&](std::size_t k) { spectrum[k] = pressure_spectrum[k] * kernel_spectrum[k] * inverse_n; });
       padded->backward(fields[component]);
     }
   }

@@ -26,10 +26,10 @@ constexpr int kExitInputError = 1;
 
 // A small free Hertz solve to take the stresses of.
 fs::path solved_sphere(const TempDir& dir) {
-  const ProgramRun run = run_program({"solve", "--geometry", "sphere", "--radius", "0.01", "--grid", "32x32", "--size",
-                                      "4e-4", "--E-star", "1e11", "--force", "1", "--threads", "1", "--output",
-                                      "result.h5", "--quiet"},
-                                     dir.path());
+  const ProgramRun run =
+      run_program({"solve", "--geometry", "sphere", "--radius", "0.01", "--grid", "32x32", "--size", "4e-4", "--E-star",
+                   "1e11", "--force", "1", "--threads", "1", "--output", "result.h5", "--quiet"},
+                  dir.path());
   EXPECT_EQ(run.exit_code, kExitOk) << run.err;
   return dir / "result.h5";
 }
@@ -61,7 +61,7 @@ TEST(StressCliTest, WritesTheStressFieldOfAResult) {
   // The file holds what the library computes from the result's pressure.
   const io::ResultPressure input = io::read_result_pressure(result);
   const stress::StressVolume expected = stress::compute_stress_volume(input.grid, input.pressure, depths, 0.3);
-  const char* names[] = {"sigma_xx", "sigma_yy", "sigma_zz", "sigma_xy",
+  const char* names[] = {"sigma_xx", "sigma_yy", "sigma_zz",  "sigma_xy",
                          "sigma_xz", "sigma_yz", "von_mises", "max_shear"};
   for (std::size_t c = 0; c < 8; ++c) {
     const std::string name = std::string("/stress/") + names[c];
@@ -129,9 +129,9 @@ TEST(StressCliTest, RefusesBadInput) {
 
 TEST(StressCliTest, SolveWritesTheStressGroupIntoTheResult) {
   const TempDir dir;
-  const std::vector<std::string> sphere = {"solve",  "--geometry", "sphere", "--radius", "0.01",   "--grid",
-                                           "32x32",  "--size",     "4e-4",   "--force",  "1",      "--threads",
-                                           "1",      "--quiet",    "--output"};
+  const std::vector<std::string> sphere = {"solve",  "--geometry", "sphere", "--radius", "0.01",
+                                           "--grid", "32x32",      "--size", "4e-4",     "--force",
+                                           "1",      "--threads",  "1",      "--quiet",  "--output"};
   std::vector<std::string> with_e_star = sphere;
   for (const char* a : {"result.h5", "--E-star", "1e11", "--stress-depths", "2e-6,8e-6", "--stress-nu", "0.3"}) {
     with_e_star.push_back(a);
@@ -158,8 +158,8 @@ TEST(StressCliTest, SolveWritesTheStressGroupIntoTheResult) {
 
   // Poisson's ratio from equal --nu1 and --nu2; a range of depths.
   std::vector<std::string> with_bodies = sphere;
-  for (const char* a : {"bodies.h5", "--E1", "2e11", "--nu1", "0.3", "--E2", "2e11", "--nu2", "0.3",
-                        "--stress-depths", "1e-6:4e-6:3"}) {
+  for (const char* a : {"bodies.h5", "--E1", "2e11", "--nu1", "0.3", "--E2", "2e11", "--nu2", "0.3", "--stress-depths",
+                        "1e-6:4e-6:3"}) {
     with_bodies.push_back(a);
   }
   ASSERT_EQ(run_program(with_bodies, dir.path()).exit_code, kExitOk);
@@ -173,8 +173,8 @@ TEST(StressCliTest, SolveWritesTheStressGroupIntoTheResult) {
   for (const char* a : {"none.h5", "--E-star", "1e11", "--stress-depths", "1e-6"}) no_nu.push_back(a);
   expect_input_error(run_program(no_nu, dir.path()), "E* alone does not fix it");
   std::vector<std::string> unequal = sphere;
-  for (const char* a : {"none.h5", "--E1", "2e11", "--nu1", "0.3", "--E2", "1e11", "--nu2", "0.25",
-                        "--stress-depths", "1e-6"}) {
+  for (const char* a :
+       {"none.h5", "--E1", "2e11", "--nu1", "0.3", "--E2", "1e11", "--nu2", "0.25", "--stress-depths", "1e-6"}) {
     unequal.push_back(a);
   }
   expect_input_error(run_program(unequal, dir.path()), "--stress-nu");

@@ -84,8 +84,7 @@ StressTensor integrated_point_loads(double x, double y, double z, double a, doub
       for (std::size_t i = 0; i < rule.nodes.size(); ++i) {
         for (std::size_t j = 0; j < rule.nodes.size(); ++j) {
           const double w = rule.weights[i] * rule.weights[j] * hx * hy;
-          const StressTensor t =
-              point_load_stress(x - (cx + hx * rule.nodes[i]), y - (cy + hy * rule.nodes[j]), z, nu);
+          const StressTensor t = point_load_stress(x - (cx + hx * rule.nodes[i]), y - (cy + hy * rule.nodes[j]), z, nu);
           sum.xx += w * t.xx;
           sum.yy += w * t.yy;
           sum.zz += w * t.zz;

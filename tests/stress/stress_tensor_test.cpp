@@ -27,8 +27,8 @@ TEST(StressTensorTest, MaxShearIsHalfTheExtremePrincipalDifference) {
     const double scale = m.norm();
     EXPECT_NEAR(max_shear(s), 0.5 * (eig.maxCoeff() - eig.minCoeff()), kTolerance * scale) << "trial " << trial;
     // Von Mises from the principal stresses.
-    const double vm = std::sqrt(0.5 * (std::pow(eig[0] - eig[1], 2) + std::pow(eig[1] - eig[2], 2) +
-                                       std::pow(eig[2] - eig[0], 2)));
+    const double vm =
+        std::sqrt(0.5 * (std::pow(eig[0] - eig[1], 2) + std::pow(eig[1] - eig[2], 2) + std::pow(eig[2] - eig[0], 2)));
     EXPECT_NEAR(von_mises(s), vm, kTolerance * scale) << "trial " << trial;
     EXPECT_NEAR(hydrostatic(s), eig.sum() / 3.0, kTolerance * scale);
   }

@@ -50,8 +50,8 @@ TEST(SubsurfaceStressTest, PeriodicFourierModeMatchesClosedForm) {
   constexpr double kRoundoff = 1e-12;
   const double nu = 0.3;
   for (const bool line : {false, true}) {
-    const Grid grid = line ? Grid::line(40, 0.5e-6, Boundary::periodic)
-                           : Grid::plane(32, 24, 1e-6, 1.5e-6, Boundary::periodic);
+    const Grid grid =
+        line ? Grid::line(40, 0.5e-6, Boundary::periodic) : Grid::plane(32, 24, 1e-6, 1.5e-6, Boundary::periodic);
     const double kx = 2.0 * std::numbers::pi * 3.0 / (static_cast<double>(grid.nx()) * grid.dx());
     const double ky = line ? 0.0 : 2.0 * std::numbers::pi * -2.0 / (static_cast<double>(grid.ny()) * grid.dy());
     const double mean = 1e6;
@@ -76,8 +76,8 @@ TEST(SubsurfaceStressTest, PeriodicFourierModeMatchesClosedForm) {
         const std::size_t j = k / grid.nx();
         const double phase = kx * i * grid.dx() + ky * j * (line ? 0.0 : grid.dy());
         for (std::size_t c = 0; c < kComponentCount; ++c) {
-          const double expected = mean * uniform[c].real() +
-                                  (mode[c] * std::complex<double>(a, -b) * std::polar(1.0, phase)).real();
+          const double expected =
+              mean * uniform[c].real() + (mode[c] * std::complex<double>(a, -b) * std::polar(1.0, phase)).real();
           ASSERT_NEAR(fields.values[c][k], expected, kRoundoff * a)
               << kComponentNames[c] << " at cell " << k << ", z = " << z << (line ? " (1D)" : " (2D)");
         }
@@ -324,7 +324,8 @@ TEST(SubsurfaceStressTest, RefusesBadInput) {
   EXPECT_THROW(stress.set_pressure(pressure), InputError);
   pressure[3] = 1.0;
   stress.set_pressure(pressure);
-  for (const double z : {0.0, -1e-6, std::nan(""), HUGE_VAL}) EXPECT_THROW(stress.compute(z, fields.spans()), InputError);
+  for (const double z : {0.0, -1e-6, std::nan(""), HUGE_VAL})
+    EXPECT_THROW(stress.compute(z, fields.spans()), InputError);
   const std::vector<double> none;
   EXPECT_THROW(compute_stress_volume(grid, pressure, none, 0.3), InputError);
 }

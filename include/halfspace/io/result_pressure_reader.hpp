@@ -10,7 +10,7 @@
 namespace halfspace::io {
 
 struct ResultPressure {
-  Grid grid;                    // shape and spacing from /pressure and dx, dy; boundary from the root attribute
+  Grid grid;                     // shape and spacing from /pressure and dx, dy; boundary from the root attribute
   std::vector<double> pressure;  // Pa, (ny, nx) row-major
 };
 

@@ -13,7 +13,7 @@ namespace halfspace::stress {
 enum class Component { xx, yy, zz, xy, xz, yz };
 inline constexpr std::size_t kComponentCount = 6;
 inline constexpr std::array<const char*, kComponentCount> kComponentNames = {"sigma_xx", "sigma_yy", "sigma_zz",
-                                                                           "sigma_xy", "sigma_xz", "sigma_yz"};
+                                                                             "sigma_xy", "sigma_xz", "sigma_yz"};
 
 // The stress spectra at depth z (m, > 0) per unit pressure spectrum, for the
 // surface pressure mode exp(i (kx x + ky y)) (kx, ky in rad/m), Poisson's
