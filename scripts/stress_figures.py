@@ -24,6 +24,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import halfspace_plot as hp  # noqa: E402  (the project's plotting tool)
+import matplotlib.colors  # noqa: E402
 
 plt = hp.plt
 E_STAR = 1e11  # Pa
@@ -75,9 +76,8 @@ def hertz_section(program, work, out):
           f"max shear {tau[k]:.4f} p0 at z = {z[k]:.3f} a; max von Mises {attrs['max_von_mises'] / p0:.4f} p0 "
           f"at z = {attrs['max_von_mises_z'] / a:.3f} a")
 
-    fig, axes = plt.subplots(1, 3, figsize=(12.5, 3.9), constrained_layout=True,
+    fig, axes = plt.subplots(1, 3, figsize=(11.5, 3.6), constrained_layout=True,
                              gridspec_kw={"width_ratios": [1, 1, 0.8]})
-    extent = [x[0], x[-1], z[-1], z[0]]
     keep = np.abs(x) <= 2.0
     for axis, name, label, cmap in ((axes[0], "sigma_zz", "σzz / p0", "viridis"),
                                      (axes[1], "von_mises", "von Mises / p0", "magma")):
@@ -88,7 +88,6 @@ def hertz_section(program, work, out):
         axis.set_xlabel("x / a")
         axis.set_ylabel("z / a")
         axis.set_title(f"{label}, section y = 0", fontsize="small")
-    del extent
     axis = axes[2]
     axis.plot(szz, z, "-", color="0.2", label="Johnson σz")
     axis.plot(srr, z, "--", color="0.2", label="Johnson σr")
@@ -112,7 +111,7 @@ def rough_section(program, work, out):
         "0.8", "--cutoff-short", "4e-6", "--rms-slope", "0.1", "--seed", "3", "--output", "rough.h5")
     run(program, work, "solve", "--height-map", "rough.h5", "--boundary", "periodic", "--E-star", "1e9",
         "--mean-pressure", "2e6", "--output", "rough_result.h5")
-    run(program, work, "stress", "rough_result.h5", "--depth-range", "0.25e-6:40e-6:80", "--nu", str(NU),
+    run(program, work, "stress", "rough_result.h5", "--depth-range", "0.25e-6:30e-6:60", "--nu", str(NU),
         "--output", "rough_stress.h5")
     s, attrs = read_stress(os.path.join(work, "rough_stress.h5"))
     nz, ny, nx = s["von_mises"].shape
@@ -130,14 +129,18 @@ def rough_section(program, work, out):
 
     fig, axes = plt.subplots(1, 2, figsize=(12, 4.4), constrained_layout=True)
     x = np.arange(nx) * dx * 1e6
+    # A square-root colour scale: the hot spots under the asperities are an
+    # order of magnitude above the field that spreads between them.
+    norm = matplotlib.colors.PowerNorm(0.5, vmin=0.0, vmax=float(vm.max()))
     image = axes[0].imshow(vm[:, row, :], extent=[x[0], x[-1], s["depths"][-1] * 1e6, s["depths"][0] * 1e6],
-                           aspect="auto", cmap="magma")
+                           aspect="auto", cmap="magma", norm=norm)
     axes[0].plot(xmax * 1e6, zmax * 1e6, "c+", ms=10)
     fig.colorbar(image, ax=axes[0], label="von Mises (MPa)")
     axes[0].set_xlabel("x (μm)")
     axes[0].set_ylabel("z (μm)")
     axes[0].set_title(f"section y = {ymax * 1e6:.0f} μm through the maximum", fontsize="small")
-    image = axes[1].imshow(vm[k], origin="lower", extent=[0, nx * dx * 1e6, 0, ny * dy * 1e6], cmap="magma")
+    image = axes[1].imshow(vm[k], origin="lower", extent=[0, nx * dx * 1e6, 0, ny * dy * 1e6], cmap="magma",
+                           norm=norm)
     axes[1].contour(np.arange(nx) * dx * 1e6, np.arange(ny) * dy * 1e6, pressure > 0, [0.5], colors="c",
                     linewidths=0.4)
     fig.colorbar(image, ax=axes[1], label="von Mises (MPa)")

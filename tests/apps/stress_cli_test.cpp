@@ -123,6 +123,14 @@ TEST(StressCliTest, RefusesBadInput) {
   expect_input_error(run({in, "--depths", "1e-6", "--nu", "0.3", "--output", "s.h5", "--max-memory", "1M"}),
                      "needs about");
   expect_input_error(run({"missing.h5", "--depths", "1e-6", "--nu", "0.3", "--output", "s.h5"}), "missing.h5");
+  // A height map is not a result: it has no pressure.
+  ASSERT_EQ(
+      run_program({"generate", "--kind", "flat", "--grid", "8x8", "--size", "8e-6", "--output", "flat.h5", "--quiet"},
+                  dir.path())
+          .exit_code,
+      kExitOk);
+  expect_input_error(run({"flat.h5", "--depths", "1e-6", "--nu", "0.3", "--output", "s.h5"}),
+                     "cannot read result file 'flat.h5': its pressure cannot be read");
   EXPECT_FALSE(fs::exists(dir / "s.h5"));
   EXPECT_TRUE(fs::exists(result));  // the input is never touched
 }

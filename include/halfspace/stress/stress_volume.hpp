@@ -45,7 +45,7 @@ StressVolume compute_stress_volume(const Grid& grid, std::span<const double> pre
 
 // Peak bytes of compute_stress_volume on `grid` at `depth_count` depths,
 // including the in-memory image of the file that stores it (the 8 stored
-// fields, 8 bytes each per cell and depth, twice) and the transforms'
+// fields, 8 bytes each per cell and depth, three times) and the transforms'
 // workspace: an upper bound for the memory check of the command line.
 double stress_memory_estimate(const Grid& grid, std::size_t depth_count);
 
