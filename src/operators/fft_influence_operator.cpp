@@ -27,7 +27,7 @@
 #include "halfspace/linalg/parallel.hpp"
 #include "halfspace/material.hpp"
 
-namespace halfspace {
+namespace halfspace::operators {
 namespace {
 
 // A shared transform must be the periodic grid's own: apply() hands it the
@@ -286,4 +286,4 @@ void FftInfluenceOperator::apply(std::span<const double> pressure, std::span<dou
   }
 }
 
-}  // namespace halfspace
+}  // namespace halfspace::operators

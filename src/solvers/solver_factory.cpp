@@ -10,6 +10,7 @@
 #include "halfspace/error.hpp"
 #include "halfspace/fft/grid_transform.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
+#include "halfspace/solvers/adhesive_contact_solver.hpp"
 #include "halfspace/solvers/balancing_preconditioner.hpp"
 #include "halfspace/solvers/block_deflation.hpp"
 #include "halfspace/solvers/fourier_preconditioner.hpp"
@@ -85,6 +86,7 @@ std::unique_ptr<ContactSolver> make_polonsky_keer(const Grid& grid, const Elasti
   pk.max_iterations = options.iteration_limit();
   if (fine) pk.progress = options.progress;  // progress reports the fine solve only
   pk.form = projected ? PolonskyKeerForm::projected : PolonskyKeerForm::paper;
+  pk.bounds = options.interface_law.bounds();
   // The preconditioner not on 1D grids: there the preconditioned steps clip
   // hundreds of cells each, and the iteration cycles on measured profiles
   // under moderate loads, while the projected form alone converges at every
@@ -136,6 +138,7 @@ std::unique_ptr<ContactSolver> make_multilevel(const Grid& grid, const Elasticit
 std::unique_ptr<ContactSolver> make_dense(const Grid& grid, double e_star, const SolverOptions& options) {
   DenseContactOptions contact;
   contact.tolerance = options.tolerance;
+  contact.hardness = options.interface_law.hardness;
   if (options.type == SolverType::lemke) {
     return std::make_unique<Lemke>(grid, e_star, LemkeOptions{options.iteration_limit()}, contact);
   }
@@ -145,6 +148,20 @@ std::unique_ptr<ContactSolver> make_dense(const Grid& grid, double e_star, const
 std::unique_ptr<ContactSolver> make_any_solver(const Grid& grid, const Elasticity& e_star,
                                                const SolverOptions& options) {
   options.validate(grid);
+  if (options.adhesion) {
+    if (!std::holds_alternative<double>(e_star)) {
+      throw SolverOptionError("adhesion", std::string(to_string(options.adhesion->law.type)),
+                              "is not supported for a coated half-space: the adhesive solver works on the "
+                              "homogeneous half-space");
+    }
+    AdhesiveSolverOptions adhesive;
+    adhesive.law = options.adhesion->law;
+    adhesive.tolerance = options.adhesion->tolerance;
+    if (options.max_iterations) adhesive.max_iterations = *options.max_iterations;
+    adhesive.fft_planning = options.fft_planning;
+    adhesive.progress = options.progress;
+    return std::make_unique<AdhesiveContactSolver>(grid, std::get<double>(e_star), std::move(adhesive));
+  }
   switch (options.type) {
     case SolverType::pk:
       return make_polonsky_keer(grid, e_star, options, options.tolerance, true, false, false);

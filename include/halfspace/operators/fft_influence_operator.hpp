@@ -12,7 +12,7 @@
 #include "halfspace/layered_material.hpp"
 #include "halfspace/operators/influence_operator.hpp"
 
-namespace halfspace {
+namespace halfspace::operators {
 
 class FftInfluenceOperator final : public InfluenceOperator {
  public:
@@ -51,4 +51,9 @@ class FftInfluenceOperator final : public InfluenceOperator {
   std::unique_ptr<Impl> impl_;
 };
 
+}  // namespace halfspace::operators
+
+// The library and its front ends name these without the folder's namespace.
+namespace halfspace {
+using operators::FftInfluenceOperator;
 }  // namespace halfspace
