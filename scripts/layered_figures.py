@@ -131,6 +131,7 @@ def main():
     parser.add_argument("--out", default=os.path.join(root, "docs", "figures", "validation"))
     parser.add_argument("--work", default=None)
     args = parser.parse_args()
+    program = os.path.abspath(args.halfspace)
     work = args.work or tempfile.mkdtemp(prefix="halfspace_layered_")
     os.makedirs(args.out, exist_ok=True)
 
@@ -153,7 +154,7 @@ def main():
         for x in np.logspace(-1, 1, 7):
             t = LAYER_HERTZ_RADIUS / x
             ring_radius, ring_peak = axisymmetric_contact(t, layer, substrate, force, r_max)
-            radius, peak = halfspace_contact(args.halfspace, work, t, layer, substrate, force, side)
+            radius, peak = halfspace_contact(program, work, t, layer, substrate, force, side)
             ax_p.plot(radius / t, peak / hertz_peak, "o", color=colour, mfc="none")
             ax_a.plot(radius / t, radius / LAYER_HERTZ_RADIUS, "o", color=colour, mfc="none")
             print(f"  {x:7.3f} {ring_radius / t:7.3f}   {ring_radius / LAYER_HERTZ_RADIUS:8.4f}  "

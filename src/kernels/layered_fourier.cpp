@@ -115,13 +115,18 @@ double LayeredKernel::remainder_cell_spectrum(double qx, double qy, double dx, d
   // images e^{i 2 pi m x/dx} are 1, so they add up in one DFT bin.
   const double period_x = 2.0 * std::numbers::pi / dx;
   const double period_y = 2.0 * std::numbers::pi / dy;
+  // Beyond q t = 40 the remainder is below e^-40 of its scale: skipped.
+  const double q_negligible = 40.0 / material_.thickness;
   double sum = 0.0;
   for (int my = -kAliasImages; my <= kAliasImages; ++my) {
     const double ky = qy + my * period_y;
+    if (std::abs(ky) > q_negligible) continue;
     const double shape_y = sinc(0.5 * ky * dy);
     for (int mx = -kAliasImages; mx <= kAliasImages; ++mx) {
       const double kx = qx + mx * period_x;
-      sum += remainder(std::hypot(kx, ky)) * sinc(0.5 * kx * dx) * shape_y;
+      const double q = std::hypot(kx, ky);
+      if (q > q_negligible) continue;
+      sum += remainder(q) * sinc(0.5 * kx * dx) * shape_y;
     }
   }
   return sum;

@@ -28,7 +28,7 @@ using testing::test_options;
 constexpr double kPi = std::numbers::pi;
 
 // Displacement at r of the layer's half-space (E1*) under 1 Pa on a disk of
-// radius b (Johnson 1985, eqs. 3.29, 3.30 ... with complete elliptic integrals
+// radius b (Johnson 1985, uniform pressure on a circle: complete elliptic integrals
 // of modulus r/b or b/r).
 double disk_displacement(double b, double r, double e_star) {
   if (b == 0.0) return 0.0;
