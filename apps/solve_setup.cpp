@@ -28,11 +28,14 @@
 #include "halfspace/material.hpp"
 #include "halfspace/memory_estimate.hpp"
 #include "halfspace/solvers/adhesion_law.hpp"
+#include "halfspace/solvers/solver_factory.hpp"
+#include "halfspace/stress/stress_volume.hpp"
 #include "halfspace/surface/padding.hpp"
 #include "halfspace/surface/preparation.hpp"
 #include "halfspace/threads.hpp"
 #include "memory_check.hpp"
 #include "physical_ranges.hpp"
+#include "stress_command.hpp"
 #include "value_parsing.hpp"
 
 namespace halfspace::app {
@@ -124,6 +127,48 @@ double material_from(const SolveOptions& o) {
                           e_star, kMinModulus, kMaxModulus, "Pa");
 }
 
+// Coated half-space: all five of --layer-thickness, --layer-E, --layer-nu,
+// --substrate-E, --substrate-nu, instead of the material options.
+std::optional<LayeredMaterial> coating_from(const SolveOptions& o) {
+  const Presence keys{{"layer-thickness", o.layer_thickness.has_value()},
+                      {"layer-E", o.layer_e.has_value()},
+                      {"layer-nu", o.layer_nu.has_value()},
+                      {"substrate-E", o.substrate_e.has_value()},
+                      {"substrate-nu", o.substrate_nu.has_value()}};
+  const std::vector<std::string> given = given_names(o, keys);
+  if (given.empty()) return std::nullopt;
+  const std::vector<std::string> material = given_names(o, {{"E-star", o.e_star.has_value()},
+                                                            {"E1", o.e1.has_value()},
+                                                            {"nu1", o.nu1.has_value()},
+                                                            {"E2", o.e2.has_value()},
+                                                            {"nu2", o.nu2.has_value()}});
+  if (!material.empty()) {
+    throw InputError(
+        fmt::format("{} cannot be combined with {}: a coated half-space (--layer-*, --substrate-*) "
+                    "against a rigid surface replaces the material options",
+                    join_names(given), join_names(material)));
+  }
+  if (given.size() < 5) {
+    std::vector<std::string> missing;
+    for (const auto& [key, present] : keys) {
+      if (!present) missing.push_back(fmt::format("--{}", key));
+    }
+    throw InputError(fmt::format(
+        "incomplete coated half-space: missing {} (give all of layer-thickness, layer-E, layer-nu, substrate-E, "
+        "substrate-nu)",
+        join_names(missing)));
+  }
+  auto poisson = [&o](std::string_view key, double nu) {
+    if (!(nu > -1.0 && nu <= 0.5)) {
+      throw InputError(fmt::format("{} is invalid: allowed range is (-1, 0.5]", o.describe(key)));
+    }
+    return nu;
+  };
+  return LayeredMaterial{require_length(o, "layer-thickness", *o.layer_thickness),
+                         {require_modulus(o, "layer-E", *o.layer_e), poisson("layer-nu", *o.layer_nu)},
+                         {require_modulus(o, "substrate-E", *o.substrate_e), poisson("substrate-nu", *o.substrate_nu)}};
+}
+
 // The load mode and every value of the load (one for a single solve, more for
 // a sweep); a single value keeps the message "--force -1 is invalid: ...".
 std::pair<Loading, std::vector<double>> loading_from(const SolveOptions& o) {
@@ -172,6 +217,7 @@ auto with_solver_flags(const SolveOptions& o, Function&& function) {
     const std::string_view key = option == "tolerance"             ? "tol"
                                  : option == "max_iterations"      ? "max-iter"
                                  : option.starts_with("deflation") ? "deflation-block"
+                                 : option == "hardness"            ? "hardness"
                                  : option == "adhesion.work"       ? "work-of-adhesion"
                                  : option == "adhesion.range"
                                      ? (o.adhesion_stress ? "adhesion-stress" : "adhesion-range")
@@ -243,6 +289,7 @@ solvers::SolverOptions solver_options_from(const SolveOptions& o) {
           *o.deflation_block == 0 ? solvers::DeflationOptions::Mode::off : solvers::DeflationOptions::Mode::on;
       if (*o.deflation_block != 0) solver.deflation.block = static_cast<std::size_t>(*o.deflation_block);
     }
+    if (o.hardness) solver.interface_law.hardness = *o.hardness;  // hardness cap
     solver.validate();
   });
   return solver;
@@ -565,11 +612,51 @@ Surface height_map_surface(const SolveOptions& o, Boundary boundary, const GridC
   return {std::move(grid), std::move(map.heights), std::move(source), std::move(map.preparation)};
 }
 
+// Subsurface stresses (--stress-depths, --stress-nu): the depths and Poisson's
+// ratio, or none. Poisson's ratio is --stress-nu, else nu1 when the two bodies'
+// are equal (E* alone does not fix it).
+struct StressRequest {
+  std::vector<double> depths;
+  double nu = 0.0;
+};
+
+StressRequest stress_request_from(const SolveOptions& o, std::size_t load_steps) {
+  if (!o.stress_depths) {
+    if (o.stress_nu) throw InputError(fmt::format("{} needs --stress-depths", o.describe("stress-nu")));
+    return {};
+  }
+  if (load_steps > 1) {
+    throw InputError(fmt::format("{} applies to a single solve, not a load sweep: run `halfspace stress` on a step",
+                                 o.describe("stress-depths")));
+  }
+  const bool range = o.stress_depths->find(':') != std::string::npos;
+  StressRequest request;
+  request.depths =
+      parse_stress_depths(range ? nullptr : &*o.stress_depths, range ? &*o.stress_depths : nullptr, "stress-");
+  if (o.stress_nu) {
+    request.nu = parse_stress_poisson_ratio(fmt::format("{}", *o.stress_nu), "--stress-nu");
+  } else if (o.nu1 && o.nu2 && *o.nu1 == *o.nu2) {
+    request.nu = parse_stress_poisson_ratio(fmt::format("{}", *o.nu1), "--nu1");
+  } else {
+    throw InputError(missing_poisson_ratio_message("--stress-nu") + " (or equal --nu1 and --nu2)");
+  }
+  return request;
+}
+
+// The peak while the stresses are computed and written after the solve: the
+// heights and the result's fields (5 arrays) kept, and the stress volume.
+double stress_peak_memory(const Grid& grid, std::size_t depth_count) {
+  if (depth_count == 0) return 0.0;
+  return kProgramBytes + 6.0 * 8.0 * static_cast<double>(grid.size()) +
+         stress::stress_memory_estimate(grid, depth_count);
+}
+
 }  // namespace
 
 SolveSetup make_solve_setup(const SolveOptions& options) {
   check_surface_choice(options);
-  const double e_star = material_from(options);
+  const std::optional<LayeredMaterial> coating = coating_from(options);
+  const double e_star = coating ? plane_strain_modulus(coating->layer) : material_from(options);
   auto [loading, load_values] = loading_from(options);
   solvers::SolverOptions solver = solver_options_from(options);
   const int threads = threads_from(options);
@@ -581,10 +668,19 @@ SolveSetup make_solve_setup(const SolveOptions& options) {
       in_context(options.name("boundary"), [&] { return parse_boundary(options.boundary.value_or("free")); });
   fs::path output = output_from(options);
   const std::optional<MemoryLimit> limit = memory_limit(options.max_memory, options.describe("max-memory"));
+  const StressRequest stress = stress_request_from(options, load_values.size());
   const GridCheck check_grid = [&](const Grid& grid, const std::string& request) {
     check_load_scale(options, grid, loading.mode, load_values);
+    // Hardness cap: no load above H times the domain area.
+    for (const double value : load_values) {
+      in_context(options.describe(loading.mode == ControlMode::force ? "force" : "mean-pressure"), [&] {
+        solver.interface_law.check_load(grid, Loading{loading.mode, value});
+      });
+    }
     require_memory(fmt::format("{}: {}", request, solve_description(grid, solver, load_values.size())),
-                   solve_memory_estimate(grid, solver, load_values.size()), limit);
+                   std::max(solve_memory_estimate(grid, solver, load_values.size()),
+                            stress_peak_memory(grid, stress.depths.size())),
+                   limit);
   };
   check_outputs_against_inputs(options, output, load_values.size() > 1, solver.fft_planning);
 
@@ -595,6 +691,30 @@ SolveSetup make_solve_setup(const SolveOptions& options) {
                                  surface.grid.shape_string()));
   }
   with_solver_flags(options, [&] { solver.validate(surface.grid); });
+  if (coating) {
+    if (solver.type == solvers::SolverType::lemke || solver.type == solvers::SolverType::lcpquad) {
+      throw InputError(fmt::format(
+          "{} is invalid for a coated half-space (its dense matrix is the homogeneous one): allowed are pk, "
+          "pk-fourier and pk-multilevel",
+          options.describe("solver")));
+    }
+    if (surface.grid.dimension() == 1 && !surface.grid.periodic()) {
+      throw InputError(
+          "a coated half-space on a free 1D grid is not supported: pass --boundary periodic or use a "
+          "2D surface");
+    }
+    if (solver.adhesion) {
+      throw InputError(
+          fmt::format("{} is not supported for a coated half-space: the adhesive solver works on the "
+                      "homogeneous half-space",
+                      options.describe("adhesion")));
+    }
+    if (!stress.depths.empty()) {
+      throw InputError(
+          "--stress-depths is not supported for a coated half-space: the subsurface stresses are those of a "
+          "homogeneous half-space");
+    }
+  }
   return SolveSetup{std::move(surface.grid),
                     std::move(surface.heights),
                     std::move(surface.source),
@@ -608,7 +728,18 @@ SolveSetup make_solve_setup(const SolveOptions& options) {
                     options.command_line,
                     options.config_text,
                     std::move(load_values),
-                    options.plot};
+                    options.plot,
+                    stress.depths,
+                    stress.nu,
+                    coating};
+}
+
+std::string coating_text(const LayeredMaterial& coating) {
+  return fmt::format(
+      "layer t = {:.6g} m, E1 = {:.6g} Pa, nu1 = {:.6g} on substrate E2 = {:.6g} Pa, nu2 = {:.6g} "
+      "(E* above is the layer's)",
+      coating.thickness, coating.layer.youngs_modulus, coating.layer.poissons_ratio, coating.substrate.youngs_modulus,
+      coating.substrate.poissons_ratio);
 }
 
 }  // namespace halfspace::app

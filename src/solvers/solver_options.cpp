@@ -108,6 +108,12 @@ void SolverOptions::validate() const {
   }
   multilevel.validate();
   deflation.validate();
+  interface_law.validate();
+  if (interface_law.hardness && type == SolverType::lemke) {
+    throw SolverOptionError("hardness", text(*interface_law.hardness),
+                            "does not apply to solver 'lemke': Lemke's pivoting solves the plain LCP without an "
+                            "upper bound on the pressure; use 'lcpquad' for a dense solution with a hardness cap");
+  }
   if (deflation.mode == DeflationOptions::Mode::on && type != SolverType::pk_fourier &&
       type != SolverType::pk_multilevel) {
     throw SolverOptionError(
@@ -130,6 +136,10 @@ void SolverOptions::validate() const {
     }
     if (deflation.mode == DeflationOptions::Mode::on) {
       throw SolverOptionError("deflation.mode", "on", "does not apply to the adhesive solver");
+    }
+    if (interface_law.hardness) {
+      throw SolverOptionError("hardness", text(*interface_law.hardness),
+                              "does not apply with adhesion: the adhesive solver has no hardness cap");
     }
   }
 }

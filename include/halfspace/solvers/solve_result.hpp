@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -86,6 +87,11 @@ struct SolveResult {
   double mean_pressure = 0.0;     // total_force / domain area (Pa)
   double max_pressure = 0.0;      // Pa
   double contact_fraction = 0.0;  // cells with p > 0 over all cells
+  // The hardness cap the solve honoured (interface_law.hpp), unset for
+  // purely elastic contact; plastic_fraction counts the cells at it over
+  // all cells (zero without a cap).
+  std::optional<double> hardness;
+  double plastic_fraction = 0.0;
   double wall_seconds = 0.0;
 
   // Fields with one entry per cell, (ny, nx) row-major.

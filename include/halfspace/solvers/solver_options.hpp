@@ -16,6 +16,7 @@
 #include "halfspace/grid.hpp"
 #include "halfspace/solvers/adhesion_law.hpp"
 #include "halfspace/solvers/block_deflation_options.hpp"
+#include "halfspace/solvers/interface_law.hpp"
 
 namespace halfspace::solvers {
 
@@ -117,6 +118,10 @@ struct SolverOptions {
   // may be empty. It runs on the calling thread between iterations.
   std::function<void(int, double)> progress;
 
+  // The interface law: a hardness cap 0 <= p <= H (every solver but lemke,
+  // whose pivoting solves the plain LCP only).
+  InterfaceLaw interface_law;
+
   MultilevelOptions multilevel;  // pk_multilevel only
   DeflationOptions deflation;    // pk_fourier and pk_multilevel only
 
@@ -134,9 +139,10 @@ struct SolverOptions {
 
   // Throws SolverOptionError naming the option unless: 0 < tolerance < 1;
   // max_iterations >= 1, and unset for lcpquad; the nested options are
-  // valid; deflation is on only for pk_fourier or pk_multilevel; with
-  // adhesion, the law is valid ("adhesion.work", "adhesion.range"), its
-  // tolerance in (0, 1) and deflation not on.
+  // valid; deflation is on only for pk_fourier or pk_multilevel; a hardness
+  // is in its range and not asked of lemke; with adhesion, the law is valid
+  // ("adhesion.work", "adhesion.range"), its tolerance in (0, 1) and
+  // deflation not on.
   void validate() const;
   // validate(), and the rules that depend on the grid: deflation on needs a
   // grid its block covers.
