@@ -5,7 +5,6 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include <chrono>
 #include <cstdio>
 #include <optional>
 #include <span>
@@ -14,9 +13,11 @@
 
 #include "activity.hpp"
 #include "exit_codes.hpp"
-#include "halfspace/geometry/builtin_surface.hpp"
+#include "halfspace/io/result_metadata.hpp"
 #include "halfspace/io/result_writer.hpp"
-#include "halfspace/solvers/solver_factory.hpp"
+#include "halfspace/io/stress_writer.hpp"
+#include "halfspace/solvers/surface_solve.hpp"
+#include "halfspace/stress/stress_volume.hpp"
 #include "halfspace/surface/statistics.hpp"
 #include "halfspace/threads.hpp"
 #include "plot_tool.hpp"
@@ -41,41 +42,34 @@ int run_solve(const SolveSetup& setup) {
   Progress progress(!setup.quiet, 1, setup.solver.tolerance);
   solvers::SolverOptions settings = setup.solver;
   settings.progress = progress.callback();
-  std::optional<Activity> activity(std::in_place, fmt::format("building the solver ({})", on_grid));
-  std::unique_ptr<ContactSolver> solver = solvers::make_solver(setup.grid, setup.e_star, settings);
-
-  activity.emplace(fmt::format("solving ({})", on_grid));
-  Eigen::ArrayXd initial_gap = geometry::initial_gap_from_heights(setup.heights);
-  const auto start = std::chrono::steady_clock::now();
-  SolveResult result = solver->solve(
-      std::span<const double>(initial_gap.data(), static_cast<std::size_t>(initial_gap.size())), setup.loading);
-  progress.clear();
-  if (result.wall_seconds <= 0.0) {
-    result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  }
-  // Free the operator, its FFT buffers, the solver's workspace and the
-  // initial gap before the statistics and the result file are made, so that
-  // the peak memory is the solve's (docs/development-log.md).
-  solver.reset();
-  initial_gap.resize(0);
-
-  io::ResultMetadata metadata;
-  metadata.e_star = setup.e_star;
-  metadata.load_mode = std::string(to_string(setup.loading.mode));
-  metadata.threads = setup.threads;
-  metadata.command_line = setup.command_line;
-  metadata.config = setup.config_text;
-  metadata.height_source = setup.height_source;
-  metadata.preparation = fmt::format("{}", fmt::join(setup.preparation, "\n"));
+  // The solver and its operator are freed inside solve_surface, before the
+  // statistics and the result file are made, so that the peak memory is the
+  // solve's (docs/development-log.md).
+  std::optional<Activity> activity(std::in_place, fmt::format("solving ({})", on_grid));
   const std::span<const double> heights(setup.heights.data(), static_cast<std::size_t>(setup.heights.size()));
+  const SolveResult result = setup.coating
+                                 ? solvers::solve_surface(setup.grid, heights, *setup.coating, setup.loading, settings)
+                                 : solvers::solve_surface(setup.grid, heights, setup.e_star, setup.loading, settings);
+  progress.clear();
+
   activity.emplace(fmt::format("computing the statistics of the {} grid", setup.grid.shape_string()));
-  metadata.surface_statistics = surface::surface_statistics(setup.grid, heights);
+  io::ResultMetadata metadata = io::result_metadata(provenance(setup), setup.grid, heights);
+  metadata.coating = setup.coating;
   metadata.contact_statistics = surface::contact_statistics(setup.grid, {result.pressure.data(), setup.grid.size()},
                                                             {result.gap.data(), setup.grid.size()});
+  // Subsurface stresses (--stress-depths), written as the result's /stress group.
+  std::optional<stress::StressVolume> stresses;
+  if (!setup.stress_depths.empty()) {
+    activity.emplace(fmt::format("computing stresses at {} depths", setup.stress_depths.size()));
+    stresses = stress::compute_stress_volume(
+        setup.grid, std::span<const double>(result.pressure.data(), static_cast<std::size_t>(result.pressure.size())),
+        setup.stress_depths, setup.stress_nu, setup.solver.fft_planning);
+    metadata.extra_groups = [&](const io::Hdf5Node& root) {
+      io::write_stress_group(root, setup.grid, *stresses, setup.stress_nu);
+    };
+  }
   activity.emplace(fmt::format("writing {}", setup.output.string()));
-  io::write_result(setup.output, setup.grid,
-                   std::span<const double>(setup.heights.data(), static_cast<std::size_t>(setup.heights.size())),
-                   result, metadata);
+  io::write_result(setup.output, setup.grid, heights, result, metadata);
 
   activity.reset();
   if (!setup.quiet) {

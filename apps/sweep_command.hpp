@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "halfspace/io/result_metadata.hpp"
 #include "halfspace/solvers/loading.hpp"
 #include "solve_setup.hpp"
 
@@ -17,6 +18,9 @@ namespace halfspace::app {
 // figures failed. Throws InputError (FileError) for bad input or when a file
 // cannot be written.
 int run_sweep(const SolveSetup& setup);
+
+// What the result files of `setup` record about the run (io::result_metadata).
+io::SolveProvenance provenance(const SolveSetup& setup);
 
 // "force 10 N", "mean pressure 2e+05 Pa", "approach 1e-06 m" (N/m in 1D).
 std::string describe_load(ControlMode mode, double value, const Grid& grid);

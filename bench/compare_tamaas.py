@@ -27,6 +27,10 @@ Tamaas is optional: where `import tamaas` fails the script says so and exits
 0. scripts/compare-tamaas.sh installs it in a virtual environment.
 
     bench/compare_tamaas.py --halfspace build/bin/halfspace --sizes 256 512 1024
+
+halfspace is called through its Python package where `import halfspace`
+works (the same library call as the program's, without its files), else
+through the program; the program still generates the surfaces.
 """
 import argparse
 import os
@@ -48,6 +52,13 @@ try:
 except ImportError:
     print("compare_tamaas: skipped, Tamaas is not installed (pip install tamaas, or scripts/compare-tamaas.sh)")
     sys.exit(0)
+
+# halfspace itself: through the Python package (pip install .) where it is
+# installed, in this process; else through the program and its files.
+try:
+    import halfspace as halfspace_package
+except ImportError:
+    halfspace_package = None
 
 # The reference solution's tolerance: near the rounding floor of the residual.
 REFERENCE_TOL = 1e-13
@@ -119,6 +130,41 @@ def solve_tamaas(surface, workdir, e_star, mean_pressure, tol):
 
 
 def solve_halfspace(exe, surface, workdir, solver, e_star, mean_pressure, tol, threads, planning):
+    """Solves through the Python package where it is installed (in this
+    process, no files), else through the program."""
+    if halfspace_package is not None:
+        return solve_halfspace_package(surface, workdir, solver, e_star, mean_pressure, tol, threads, planning)
+    return solve_halfspace_cli(exe, surface, workdir, solver, e_star, mean_pressure, tol, threads, planning)
+
+
+def result_row(attributes, pressure):
+    return {
+        "iterations": int(attributes["iterations"]),
+        # pk-multilevel's coarse grids count in products of this grid, rounded.
+        "fft_pairs": int(attributes["operator_applications"])
+        + int(attributes.get("preconditioner_applications", 0))
+        + round(float(attributes.get("coarse_operator_work", 0.0))
+                + float(attributes.get("coarse_preconditioner_work", 0.0))),
+        "seconds": float(attributes["solve_seconds"]),
+        "own_error": float(attributes["residual"]),
+        "residual": float(attributes["residual"]),
+        "pressure": pressure,
+        "contact_fraction": float(attributes["contact_fraction"]),
+    }
+
+
+def solve_halfspace_package(surface, workdir, solver, e_star, mean_pressure, tol, threads, planning):
+    hs = halfspace_package
+    # solve_seconds excludes planning; the wisdom stays in the work directory
+    # (read by the library when it plans, so setting it here is in time).
+    os.environ["HALFSPACE_FFTW_WISDOM"] = str(workdir / "fftw-wisdom")
+    result = hs.solve(hs.read_height_map(surface), e_star=e_star, mean_pressure=mean_pressure,
+                      boundary="periodic", solver=solver, tol=tol, max_iter=1000000, threads=threads,
+                      fft_planning=planning)
+    return result_row(result.attributes, result.pressure)
+
+
+def solve_halfspace_cli(exe, surface, workdir, solver, e_star, mean_pressure, tol, threads, planning):
     output = workdir / f"{surface.stem}-{solver}-{tol:g}.h5"
     command = [str(exe), "solve", "--height-map", str(surface), "--boundary", "periodic",
                "--E-star", repr(e_star), "--mean-pressure", repr(mean_pressure), "--solver", solver,
@@ -131,20 +177,7 @@ def solve_halfspace(exe, surface, workdir, solver, e_star, mean_pressure, tol, t
     if subprocess.run(command, env=environment).returncode not in (0, 2):
         sys.exit(f"compare_tamaas: {' '.join(command)} failed")
     with h5py.File(output, "r") as f:
-        attributes = dict(f.attrs)
-        result = {
-            "iterations": int(attributes["iterations"]),
-            # pk-multilevel's coarse grids count in products of this grid, rounded.
-            "fft_pairs": int(attributes["operator_applications"])
-            + int(attributes.get("preconditioner_applications", 0))
-            + round(float(attributes.get("coarse_operator_work", 0.0))
-                    + float(attributes.get("coarse_preconditioner_work", 0.0))),
-            "seconds": float(attributes["solve_seconds"]),
-            "own_error": float(attributes["residual"]),
-            "residual": float(attributes["residual"]),
-            "pressure": f["pressure"][...],
-            "contact_fraction": float(attributes["contact_fraction"]),
-        }
+        result = result_row(dict(f.attrs), f["pressure"][...])
     output.unlink()
     return result
 
@@ -183,7 +216,8 @@ def main():
         sys.exit(f"compare_tamaas: {args.halfspace} not found: build halfspace or pass --halfspace")
 
     info = tm.TamaasInfo
-    print(f"Tamaas {info.version} (backend {info.backend}); halfspace {args.halfspace}; "
+    via = "the Python package" if halfspace_package is not None else str(args.halfspace)
+    print(f"Tamaas {info.version} (backend {info.backend}); halfspace through {via}; "
           f"tol {args.tol:g}; {args.threads} halfspace thread(s), FFT planning {args.fft_planning}; "
           f"load {os.getloadavg()[0]:.2f}")
     header = (f"{'n':>5} {'code':<22} {'tol':>7} {'iter':>6} {'FFT pairs':>9} {'seconds':>9} "

@@ -7,5 +7,7 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$root/scripts/build.sh"
 ctest --test-dir "${HALFSPACE_BUILD_DIR:-$root/build}" --output-on-failure -j "$(nproc)"
 "$root/scripts/fuzz.sh" 20
+# The Python package: `pip install .` into a virtual environment, and its tests.
+"$root/scripts/test-python.sh"
 # The sources must match .clang-format (scripts/check-format.sh --fix repairs them).
 "$root/scripts/check-format.sh"

@@ -43,8 +43,12 @@ void write_result_fields(const Hdf5Node& node, const Grid& grid, const SolveResu
   node.write_dataset("gap", shape, values(result.gap), "m");
   node.write_dataset("displacement", shape, values(result.displacement), "m");
   std::vector<std::uint8_t> contact(grid.size());
+  // Adhesive results: contact is the wall (gap 0), where the pressure may
+  // be negative; otherwise the cells with pressure.
+  const bool adhesive = !result.adhesion.law.empty();
   for (std::size_t k = 0; k < contact.size(); ++k) {
-    contact[k] = result.pressure[static_cast<Eigen::Index>(k)] > 0.0 ? 1 : 0;
+    const auto i = static_cast<Eigen::Index>(k);
+    contact[k] = (adhesive ? result.gap[i] <= 0.0 : result.pressure[i] > 0.0) ? 1 : 0;
   }
   node.write_dataset("contact", shape, std::span<const std::uint8_t>(contact), "1");
   if (result.hardness) {
@@ -74,6 +78,7 @@ void write_result_root_attributes(const Hdf5Node& root, const Grid& grid, const 
   root.write_double_attribute("dy", grid.dimension() == 1 ? 0.0 : grid.dy());
   root.write_string_attribute("boundary", to_string(grid.boundary()));
   root.write_double_attribute("E_star", metadata.e_star);
+  if (metadata.coating) write_coating_attributes(root, *metadata.coating);
   root.write_string_attribute("load_mode", metadata.load_mode);
 
   write_result_attributes(root, result);
@@ -101,6 +106,7 @@ void write_result(const std::filesystem::path& path, const Grid& grid, std::span
     root.write_dataset("height", field_shape(grid), height, "m");
     write_result_fields(root, grid, result);
     write_result_root_attributes(root, grid, result, metadata);
+    if (metadata.extra_groups) metadata.extra_groups(root);
   });
 }
 

@@ -158,7 +158,8 @@ class Iteration {
         scale = capped ? *capped
                        : CappedScale{problem_.target_force / (problem_.cell_area * static_cast<double>(n_)), false};
       }
-      for_each_index(n_, [&](std::size_t i) { p_[i] = bounds_.snap(scale.stored(p_[i], bounds_.upper) * scale.factor); });
+      for_each_index(n_,
+                     [&](std::size_t i) { p_[i] = bounds_.snap(scale.stored(p_[i], bounds_.upper) * scale.factor); });
     } else if (!warm) {
       for_each_index(n_, [&](std::size_t i) { g_[i] = problem_.initial_gap[i] - problem_.approach; });
       local_overlap_pressure();
@@ -334,8 +335,8 @@ class Iteration {
       return pi;
     };
     CappedScale scale{1.0, true};
-    double fill = 0.0;                  // pressure of each filled cell
-    double fill_below = -kInfinity;     // the filled cells: out of contact with a gap below this
+    double fill = 0.0;               // pressure of each filled cell
+    double fill_below = -kInfinity;  // the filled cells: out of contact with a gap below this
     bool filled = false;
     if (problem_.load_controlled) {
       const double target_sum = problem_.target_force / problem_.cell_area;
@@ -350,8 +351,8 @@ class Iteration {
         const double positive =
             linalg::sum(n_, [&](std::size_t i) { return lower(i, p_[i] - tau * t_[i]) > 0.0 ? 1.0 : 0.0; });
         const double deficit = target_sum - upper * positive;
-        const auto [below, count] = smallest_gaps(
-            [&](std::size_t i) { return lower(i, p_[i] - tau * t_[i]) == 0.0; }, std::ceil(deficit / upper));
+        const auto [below, count] = smallest_gaps([&](std::size_t i) { return lower(i, p_[i] - tau * t_[i]) == 0.0; },
+                                                  std::ceil(deficit / upper));
         fill_below = below;
         fill = deficit / count;
       }
@@ -425,8 +426,8 @@ class Iteration {
     wanted = std::min(wanted, candidates);
     // count_below(low) < wanted <= count_below(high) = candidates.
     double low = linalg::min_of(n_, [&](std::size_t i) { return candidate(i) ? g_[i] : kInfinity; });
-    double high = std::nextafter(linalg::max_of(n_, [&](std::size_t i) { return candidate(i) ? g_[i] : -kInfinity; }),
-                                 kInfinity);
+    double high =
+        std::nextafter(linalg::max_of(n_, [&](std::size_t i) { return candidate(i) ? g_[i] : -kInfinity; }), kInfinity);
     double count = candidates;
     constexpr int kMaxPasses = 64;
     for (int pass = 0; pass < kMaxPasses && count != wanted; ++pass) {
@@ -532,9 +533,8 @@ class Iteration {
       } else {
         // Every contact cell at the cap: the smallest approach that leaves
         // none of them with an open gap.
-        approach_ = linalg::max_of(n_, [&](std::size_t i) {
-          return p_[i] > 0.0 ? problem_.initial_gap[i] + u_[i] : -kInfinity;
-        });
+        approach_ = linalg::max_of(
+            n_, [&](std::size_t i) { return p_[i] > 0.0 ? problem_.initial_gap[i] + u_[i] : -kInfinity; });
       }
     }
     const bool store_gap = preconditioner_ != nullptr;
@@ -552,8 +552,8 @@ class Iteration {
       const double weighted = capped ? p_[i] * std::max(g_[i], 0.0) : p_[i] * std::abs(g_[i]);
       const double overlap_weight = capped ? (upper - p_[i]) / upper : 1.0;
       const double release = capped && bounds_.at_cap(p_[i]) && g_[i] > 0.0 ? 1.0 : 0.0;
-      return std::array<double, 6>{weighted, overlap_weight * over, p_[i], in_set * (g_[i] * g_[i]),
-                                   in_set * (g_[i] * t_[i]), release};
+      return std::array<double, 6>{
+          weighted, overlap_weight * over, p_[i], in_set * (g_[i] * g_[i]), in_set * (g_[i] * t_[i]), release};
     });
     released_cells_ = released;
     gap_norm_ = gap_norm;
@@ -588,7 +588,7 @@ class Iteration {
   double approach_;
   double residual_ = 0.0;
   double contact_cells_ = 0.0;
-  double released_cells_ = 0.0;  // cells at the cap whose gap is positive
+  double released_cells_ = 0.0;       // cells at the cap whose gap is positive
   double gap_norm_ = 0.0;             // sum over the search set of g^2
   double gap_along_direction_ = 0.0;  // sum over the search set of g t_old
   const double* z_ = nullptr;         // z: g itself, or M^-1 g in r

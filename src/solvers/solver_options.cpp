@@ -4,6 +4,7 @@
 #include <fmt/ranges.h>
 
 #include <array>
+#include <cmath>
 #include <utility>
 
 #include "halfspace/solvers/block_deflation.hpp"
@@ -118,6 +119,28 @@ void SolverOptions::validate() const {
     throw SolverOptionError(
         "deflation.mode", std::string(to_string(deflation.mode)),
         fmt::format("does not apply to solver '{}': deflation needs pk-fourier or pk-multilevel", to_string(type)));
+  }
+  if (adhesion) {
+    // The law's own rules, restated with the option's name here.
+    const AdhesionLaw& law = adhesion->law;
+    if (!(std::isfinite(law.work) && law.work > 0.0)) {
+      throw SolverOptionError("adhesion.work", text(law.work), "is invalid: must be positive and finite (J/m^2)");
+    }
+    if (!(std::isfinite(law.range) && law.range > 0.0)) {
+      throw SolverOptionError("adhesion.range", text(law.range), "is invalid: must be positive and finite (m)");
+    }
+    law.validate();
+    if (!(adhesion->tolerance > 0.0 && adhesion->tolerance < 1.0)) {
+      throw SolverOptionError("adhesion.tolerance", text(adhesion->tolerance),
+                              "is invalid: the tolerance must be in (0, 1)");
+    }
+    if (deflation.mode == DeflationOptions::Mode::on) {
+      throw SolverOptionError("deflation.mode", "on", "does not apply to the adhesive solver");
+    }
+    if (interface_law.hardness) {
+      throw SolverOptionError("hardness", text(*interface_law.hardness),
+                              "does not apply with adhesion: the adhesive solver has no hardness cap");
+    }
   }
 }
 

@@ -29,10 +29,9 @@ constexpr int kExitInputError = 1;
 // A sphere on a free 2D grid whose elastic peak (about 3.6 GPa) lies above
 // the hardness of 2 GPa used below.
 std::vector<std::string> sphere(const std::string& output, const std::vector<std::string>& extra) {
-  std::vector<std::string> arguments{"solve",  "--geometry", "sphere", "--radius",  "1e-4",    "--grid",
-                                     "32x32",  "--size",     "32e-6",  "--E-star",  "1e11",    "--force",
-                                     "0.1",    "--output",   output,   "--threads", "1",       "--tol",
-                                     "1e-11"};
+  std::vector<std::string> arguments{"solve",  "--geometry", "sphere",   "--radius", "1e-4",    "--grid", "32x32",
+                                     "--size", "32e-6",      "--E-star", "1e11",     "--force", "0.1",    "--output",
+                                     output,   "--threads",  "1",        "--tol",    "1e-11"};
   arguments.insert(arguments.end(), extra.begin(), extra.end());
   return arguments;
 }
@@ -54,8 +53,7 @@ TEST(HardnessCliTest, WritesThePlasticFieldsAndAttributes) {
   const auto pressure = test::read_dataset<double>(file.get(), "/pressure", H5T_NATIVE_DOUBLE);
   const auto gap = test::read_dataset<double>(file.get(), "/gap", H5T_NATIVE_DOUBLE);
   const auto plastic = test::read_dataset<std::uint8_t>(file.get(), "/plastic", H5T_NATIVE_UINT8);
-  const auto plastic_displacement =
-      test::read_dataset<double>(file.get(), "/plastic_displacement", H5T_NATIVE_DOUBLE);
+  const auto plastic_displacement = test::read_dataset<double>(file.get(), "/plastic_displacement", H5T_NATIVE_DOUBLE);
   ASSERT_EQ(plastic.size(), pressure.size());
   double plastic_cells = 0.0;
   for (std::size_t i = 0; i < pressure.size(); ++i) {

@@ -7,8 +7,8 @@
 
 #include <cstdio>
 #include <limits>
-#include <string>
 #include <span>
+#include <string>
 
 #include "halfspace/error.hpp"
 #include "halfspace/solvers/lcp_quad.hpp"
@@ -62,8 +62,8 @@ void expect_dense_agrees_with_pk(const Case& c) {
   const double difference = (dense.pressure - fft.pressure).abs().maxCoeff(&worst) / kHardness;
   const double range = c.gap.maxCoeff() - c.gap.minCoeff();
   std::printf("%s: contact %.3f, plastic %.3f (dense %.3f), %d IPM iterations; |LCPquad-PK| / H = %.2e at cell %ld\n",
-              c.what, fft.contact_fraction, fft.plastic_fraction, dense.plastic_fraction, dense.iterations,
-              difference, static_cast<long>(worst));
+              c.what, fft.contact_fraction, fft.plastic_fraction, dense.plastic_fraction, dense.iterations, difference,
+              static_cast<long>(worst));
   EXPECT_LE(difference, kDenseVsPk) << c.what;
   EXPECT_NEAR(dense.approach, fft.approach, kApproachTolerance * range) << c.what;
   EXPECT_EQ(dense.plastic_fraction, fft.plastic_fraction) << c.what;
@@ -143,8 +143,7 @@ TEST(HardnessDenseTest, HardnessOutOfRangeIsRefused) {
       FAIL() << "hardness " << hardness << " accepted";
     } catch (const solvers::SolverOptionError& error) {
       EXPECT_EQ(error.option(), "hardness");
-      EXPECT_NE(std::string(error.what()).find("allowed range is 1000 to 1e+13 Pa"), std::string::npos)
-          << error.what();
+      EXPECT_NE(std::string(error.what()).find("allowed range is 1000 to 1e+13 Pa"), std::string::npos) << error.what();
     }
   }
 }

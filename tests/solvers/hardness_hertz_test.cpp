@@ -39,7 +39,9 @@ constexpr double kGapTolerance = 1e-8;
 // Pressures of two solvers of the same discrete problem, relative to H.
 constexpr double kSolverAgreement = 1e-7;
 
-Grid sphere_grid() { return Grid::plane(kCells, kCells, kSpacing, kSpacing, Boundary::free); }
+Grid sphere_grid() {
+  return Grid::plane(kCells, kCells, kSpacing, kSpacing, Boundary::free);
+}
 
 Eigen::ArrayXd sphere_gap(const Grid& grid) {
   return field_from(grid, [](double x, double y) { return (x * x + y * y) / (2.0 * kRadius); });

@@ -87,8 +87,8 @@ std::string case_name(const ::testing::TestParamInfo<std::tuple<SolverType, Shap
 
 INSTANTIATE_TEST_SUITE_P(AllSolversAndGrids, HardnessRoughTest,
                          ::testing::Combine(testing::all_pk_solvers(),
-                                            ::testing::Values(Shape::line_free, Shape::line_periodic,
-                                                              Shape::plane_free, Shape::plane_periodic)),
+                                            ::testing::Values(Shape::line_free, Shape::line_periodic, Shape::plane_free,
+                                                              Shape::plane_periodic)),
                          case_name);
 
 // E* -> infinity: the elastic deflections vanish against the heights, so

@@ -10,7 +10,7 @@
 namespace halfspace::solvers {
 
 struct PressureBounds {
-  double lower = 0.0;                                     // Pa
+  double lower = 0.0;                                      // Pa
   double upper = std::numeric_limits<double>::infinity();  // Pa; infinite without a cap
 
   // Relative distance below the cap within which a pressure is on it.

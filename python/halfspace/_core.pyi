@@ -1,0 +1,146 @@
+# Type stubs of the compiled module halfspace._core (python/src/*.cpp).
+# Users reach it through the package: halfspace.solve, halfspace.Result, ...
+from typing import Any, Callable, Optional, Sequence, Tuple
+
+import numpy as np
+import numpy.typing as npt
+
+__version__: str
+git_hash: str
+
+class InputError(ValueError):
+    """Bad input or options: the message names the parameter, its value and the rule."""
+
+class FileError(OSError):
+    """A file that cannot be read or written: missing, unreadable, wrong layout."""
+
+class Result:
+    """The outcome of a solve. Field arrays are views of memory this object
+    owns (no copies); each array keeps the Result alive."""
+
+    @property
+    def pressure(self) -> npt.NDArray[np.float64]:
+        """Contact pressure (Pa), shaped like the surface, (ny, nx) or (n,)."""
+    @property
+    def gap(self) -> npt.NDArray[np.float64]:
+        """Gap (m): initial gap + displacement - approach; 0 in contact."""
+    @property
+    def displacement(self) -> npt.NDArray[np.float64]:
+        """Elastic surface displacement (m)."""
+    @property
+    def contact(self) -> npt.NDArray[np.bool_]:
+        """True where the pressure is positive."""
+    @property
+    def residual_history(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def heights(self) -> npt.NDArray[np.float64]:
+        """The surface heights (m) the solve ran on."""
+    @property
+    def shape(self) -> Tuple[int, ...]: ...
+    @property
+    def dx(self) -> float: ...
+    @property
+    def dy(self) -> float: ...
+    @property
+    def boundary(self) -> str: ...
+    @property
+    def e_star(self) -> float: ...
+    @property
+    def load_mode(self) -> str:
+        """"force", "mean_pressure" or "approach"."""
+    @property
+    def load(self) -> float:
+        """The imposed value, in the unit of load_mode."""
+    @property
+    def total_force(self) -> float:
+        """N (N/m for a profile)."""
+    @property
+    def mean_pressure(self) -> float:
+        """Pa."""
+    @property
+    def approach(self) -> float:
+        """Rigid-body approach (m)."""
+    @property
+    def contact_fraction(self) -> float: ...
+    @property
+    def max_pressure(self) -> float: ...
+    @property
+    def iterations(self) -> int: ...
+    @property
+    def residual(self) -> float: ...
+    @property
+    def tolerance(self) -> float: ...
+    @property
+    def converged(self) -> bool: ...
+    @property
+    def status(self) -> str:
+        """"converged", "iteration_limit" or "breakdown"."""
+    @property
+    def message(self) -> str: ...
+    @property
+    def solver(self) -> str: ...
+    @property
+    def warnings(self) -> list[str]: ...
+    @property
+    def solve_seconds(self) -> float: ...
+    @property
+    def warm_started(self) -> bool: ...
+    @property
+    def height_source(self) -> str: ...
+    @property
+    def preparation(self) -> list[str]: ...
+    @property
+    def threads(self) -> int: ...
+    @property
+    def statistics(self) -> dict[str, Any]:
+        """contact_fraction, mean_gap, rms_gap, free_volume, clusters,
+        cluster_sizes, surface_rms_height, surface_rms_slope."""
+    @property
+    def attributes(self) -> dict[str, Any]:
+        """The result file's root attributes."""
+    def save(self, path: str) -> None:
+        """Writes the HDF5 file `halfspace solve` writes."""
+
+class Sweep:
+    """A load sweep: one Result per step and the summary table."""
+
+    def __len__(self) -> int: ...
+    def __getitem__(self, step: int) -> Result: ...
+    @property
+    def steps(self) -> list[Result]: ...
+    @property
+    def table(self) -> dict[str, npt.NDArray[np.float64]]:
+        """load, mean_pressure, total_force, approach, contact_fraction,
+        mean_gap, rms_gap, free_volume, max_pressure, clusters, iterations,
+        residual, seconds, converged: one entry per step."""
+    @property
+    def load_mode(self) -> str: ...
+    def to_pandas(self) -> Any:
+        """The table as a pandas DataFrame (needs pandas)."""
+    def save(self, path: str) -> None:
+        """Writes the sweep's HDF5 file and the CSV beside it."""
+
+def default_threads() -> int: ...
+def max_threads() -> int: ...
+def composite_modulus(E1: float, nu1: float, E2: float, nu2: float) -> float: ...
+def checked_composite_modulus(e_star: float) -> float: ...
+def read_height_map(path: str, format: str, dataset: str, unit: Optional[str], window: Optional[str], invalid: str,
+                    detrend: str, dx: Optional[float], dy: Optional[float], pad: float) -> dict[str, Any]: ...
+def prepare(heights: npt.NDArray[np.float64], dx: float, dy: float, source: str, window: Optional[str],
+            invalid: str, detrend: str, pad: float) -> dict[str, Any]: ...
+def builtin_surface(shape: str, nx: int, ny: int, dimension: int, dx: float, dy: float, radius: float,
+                    wavelength: float, amplitude: float) -> npt.NDArray[np.float64]: ...
+def self_affine(nx: int, ny: int, dimension: int, dx: float, dy: float, hurst: float, cutoff_short: float,
+                rolloff: float, cutoff_long: float, rms_height: Optional[float], rms_slope: Optional[float],
+                seed: int) -> Tuple[npt.NDArray[np.float64], dict[str, float]]: ...
+def surface_statistics(heights: npt.NDArray[np.float64], dx: float, dy: float, periodic: bool) -> dict[str, float]: ...
+def solve(heights: npt.NDArray[np.float64], dx: float, dy: float, boundary: str, e_star: float, mode: str,
+          value: float, solver: dict[str, Any], threads: Optional[int], initial_pressure: Optional[np.ndarray],
+          progress: Optional[Callable[[int, float], None]], command_line: str, height_source: str,
+          preparation: Sequence[str]) -> Result: ...
+def sweep(heights: npt.NDArray[np.float64], dx: float, dy: float, boundary: str, e_star: float, mode: str,
+          values: Sequence[float], solver: dict[str, Any], threads: Optional[int], warm_start: bool,
+          progress: Optional[Callable[[int, float], None]], command_line: str, height_source: str,
+          preparation: Sequence[str]) -> Sweep: ...
+def read_result(path: str, step: int = -1) -> Result: ...
+def paper_reproduce(test: int, load: float) -> dict[str, Any]: ...

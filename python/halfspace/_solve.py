@@ -1,0 +1,157 @@
+"""solve, sweep and read_result: the contact solve from Python."""
+
+from __future__ import annotations
+
+import os
+from typing import Callable, Optional, Sequence, Union
+
+import numpy as np
+
+from . import _core
+from ._height_map import HeightMap
+
+ProgressCallback = Callable[[int, float], None]
+
+_LOADS = ("force", "mean_pressure", "approach")
+
+
+def composite_modulus(E1: float, nu1: float, E2: float, nu2: float) -> float:
+    """E* (Pa) of two elastic bodies: 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2."""
+    return _core.composite_modulus(E1, nu1, E2, nu2)
+
+
+def _material(e_star, E1, nu1, E2, nu2) -> float:
+    constants = {"E1": E1, "nu1": nu1, "E2": E2, "nu2": nu2}
+    given = [name for name, value in constants.items() if value is not None]
+    if e_star is not None and given:
+        raise _core.InputError(f"e_star cannot be combined with {', '.join(given)}: give either e_star or all of "
+                               "E1, nu1, E2, nu2")
+    if e_star is not None:
+        return float(e_star)
+    if not given:
+        raise _core.InputError("no material given: pass e_star, or E1, nu1, E2 and nu2")
+    if len(given) < 4:
+        missing = [name for name in constants if constants[name] is None]
+        raise _core.InputError(f"incomplete material: missing {', '.join(missing)} (give all of E1, nu1, E2, nu2, "
+                               "or e_star)")
+    return _core.composite_modulus(E1, nu1, E2, nu2)
+
+
+def _load(force, mean_pressure, approach, plural: bool):
+    values = {"force": force, "mean_pressure": mean_pressure, "approach": approach}
+    given = [name for name, value in values.items() if value is not None]
+    if not given:
+        raise _core.InputError("no load given: pass one of force, mean_pressure, approach")
+    if len(given) > 1:
+        raise _core.InputError(f"{' and '.join(given)} cannot be combined: give exactly one of force, "
+                               "mean_pressure, approach")
+    mode = given[0]
+    value = values[mode]
+    if plural:
+        loads = np.atleast_1d(np.asarray(value, dtype=np.float64))
+        if loads.ndim != 1 or loads.size == 0:
+            raise _core.InputError(f"{mode} must be a non-empty sequence of values for a sweep")
+        return mode, [float(v) for v in loads]
+    if np.ndim(value) != 0:
+        raise _core.InputError(f"{mode} must be one number for solve(); use sweep() for several loads")
+    return mode, float(value)
+
+
+def _surface(surface, dx, dy) -> HeightMap:
+    if isinstance(surface, HeightMap):
+        if dx is not None or dy is not None:
+            raise _core.InputError("dx and dy apply to arrays only: a HeightMap carries its own spacing")
+        return surface
+    if dx is None:
+        raise _core.InputError("an array surface needs dx= (and dy= for a 2D map if it differs from dx), in m")
+    return HeightMap(surface, dx, dy)
+
+
+def _call_text(name: str, surface: HeightMap, keywords: dict) -> str:
+    """The call as the result file's command_line records it."""
+    shown = ", ".join(f"{key}={value!r}" for key, value in keywords.items() if value is not None)
+    grid = "x".join(map(str, surface.shape[::-1]))
+    return f"python: halfspace.{name}(<{grid} surface>, {shown})"
+
+
+def _solver_options(solver, tol, max_iter, fft_planning, deflation_block) -> dict:
+    # Keys are the keywords; _core maps each onto SolverOptions (python/src/solve.cpp).
+    return {"solver": solver, "tol": tol, "max_iter": max_iter, "fft_planning": fft_planning,
+            "deflation_block": deflation_block}
+
+
+def solve(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, dy: Optional[float] = None,
+          e_star: Optional[float] = None, E1: Optional[float] = None, nu1: Optional[float] = None,
+          E2: Optional[float] = None, nu2: Optional[float] = None, boundary: str = "free",
+          force: Optional[float] = None, mean_pressure: Optional[float] = None, approach: Optional[float] = None,
+          solver: str = "pk-multilevel", tol: float = 1e-10, max_iter: Optional[int] = None,
+          threads: Optional[int] = None, initial_pressure: Optional[np.ndarray] = None,
+          progress: Optional[ProgressCallback] = None, fft_planning: str = "measure",
+          deflation_block: Optional[int] = None) -> _core.Result:
+    """Solves the frictionless contact of a rigid rough surface on an elastic half-space.
+
+    surface: a HeightMap, or a 1D/2D array of heights (m, peaks positive,
+        ``(ny, nx)``) with ``dx`` (and ``dy``) in m. float64 C-contiguous
+        arrays are used in place; others are converted once.
+    e_star: composite modulus E* (Pa), or E1, nu1, E2, nu2 of both bodies.
+    boundary: "free" (an isolated patch) or "periodic" (the surface repeats).
+    force / mean_pressure / approach: exactly one load: total force (N, N/m
+        for a profile), mean pressure (Pa) or rigid-body approach (m).
+    solver: "pk-multilevel" (default), "pk-fourier", "pk", "lemke", "lcpquad".
+    tol: relative residual at which the solve stops; max_iter: iteration
+        limit (None: the library's 10000; lcpquad takes none).
+    threads: threads of the solve (None: the CPUs this process may use). It
+        is process-wide: it also sets the threads of later FFT plans.
+    initial_pressure: a warm start (Pa), shaped like the surface.
+    progress: ``callable(iteration, residual)`` called after each iteration
+        of the fine solve, on the calling thread; an exception it raises
+        stops the solve and propagates.
+    fft_planning: "estimate", "measure" (default, as the program) or
+        "patient"; deflation_block: 0 turns the block-deflation correction
+        off, B > 0 forces blocks of B x B cells (None: automatic).
+
+    The GIL is released while solving; Ctrl-C (KeyboardInterrupt) stops the
+    solve within about 0.1 s. Non-convergence is not an exception: see
+    ``Result.converged``, ``.status`` and ``.message``. Raises InputError for
+    bad options, naming the keyword, its value and the rule.
+    """
+    height_map = _surface(surface, dx, dy)
+    modulus = _material(e_star, E1, nu1, E2, nu2)
+    mode, value = _load(force, mean_pressure, approach, plural=False)
+    start = None if initial_pressure is None else np.ascontiguousarray(initial_pressure, dtype=np.float64)
+    options = _solver_options(solver, tol, max_iter, fft_planning, deflation_block)
+    call = _call_text("solve", height_map, {"e_star": modulus, "boundary": boundary, mode: value, **options,
+                                            "threads": threads})
+    return _core.solve(height_map.heights, height_map.dx, height_map.dy or 0.0, boundary, modulus, mode, value,
+                       options, threads, start, progress, call, height_map.source, list(height_map.preparation))
+
+
+def sweep(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, dy: Optional[float] = None,
+          e_star: Optional[float] = None, E1: Optional[float] = None, nu1: Optional[float] = None,
+          E2: Optional[float] = None, nu2: Optional[float] = None, boundary: str = "free",
+          force: Optional[Sequence[float]] = None, mean_pressure: Optional[Sequence[float]] = None,
+          approach: Optional[Sequence[float]] = None, solver: str = "pk-multilevel", tol: float = 1e-10,
+          max_iter: Optional[int] = None, threads: Optional[int] = None, warm_start: bool = True,
+          progress: Optional[ProgressCallback] = None, fft_planning: str = "measure",
+          deflation_block: Optional[int] = None) -> _core.Sweep:
+    """Solves the surface under each load of a sequence, in order, each step
+    warm-started from the previous one (as ``halfspace solve`` with several
+    loads). Takes the keywords of :func:`solve`, with ``force``,
+    ``mean_pressure`` or ``approach`` a sequence. Returns a Sweep: ``sweep[k]``
+    is step k's Result, ``.table`` the summary columns as numpy arrays,
+    ``.to_pandas()`` a DataFrame, ``.save(path)`` the program's HDF5 and CSV.
+    A step that does not converge is kept with its status."""
+    height_map = _surface(surface, dx, dy)
+    modulus = _material(e_star, E1, nu1, E2, nu2)
+    mode, values = _load(force, mean_pressure, approach, plural=True)
+    options = _solver_options(solver, tol, max_iter, fft_planning, deflation_block)
+    call = _call_text("sweep", height_map, {"e_star": modulus, "boundary": boundary, mode: values, **options,
+                                            "threads": threads, "warm_start": warm_start})
+    return _core.sweep(height_map.heights, height_map.dx, height_map.dy or 0.0, boundary, modulus, mode, values,
+                       options, threads, warm_start, progress, call, height_map.source, list(height_map.preparation))
+
+
+def read_result(path: Union[str, os.PathLike], step: Optional[int] = None) -> _core.Result:
+    """Reads a result file written by ``halfspace solve`` or ``Result.save``.
+    For a sweep file, ``step`` chooses the step (default: the last)."""
+    return _core.read_result(os.fspath(path), -1 if step is None else int(step))

@@ -1,0 +1,40 @@
+// Shared pieces of the extension module halfspace._core: the array types it
+// takes and returns, and the functions that add each part of the module.
+#pragma once
+
+#include <nanobind/nanobind.h>
+#include <nanobind/ndarray.h>
+
+#include <Eigen/Core>
+#include <cstddef>
+#include <span>
+#include <vector>
+
+namespace halfspace::python {
+
+namespace nb = nanobind;
+
+// A float64 input array, C-contiguous, on the CPU (1D or 2D). The Python
+// layer converts other dtypes and layouts once (np.ascontiguousarray), so
+// what arrives here is the caller's own memory.
+using InputArray = nb::ndarray<const double, nb::c_contig, nb::device::cpu>;
+// A float64 array handed to numpy.
+using OutputArray = nb::ndarray<nb::numpy, double>;
+
+inline std::span<const double> values(const InputArray& array) {
+  return {array.data(), array.size()};
+}
+
+// A new numpy array owning `field` (moved, not copied), shaped `shape`.
+OutputArray owning_array(Eigen::ArrayXd&& field, const std::vector<std::size_t>& shape);
+
+// The Python exception types (halfspace.InputError, halfspace.FileError).
+nb::handle input_error_type();
+
+void bind_errors(nb::module_& module);
+void bind_surfaces(nb::module_& module);
+void bind_results(nb::module_& module);
+void bind_solve(nb::module_& module);
+void bind_paper(nb::module_& module);
+
+}  // namespace halfspace::python

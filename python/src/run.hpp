@@ -1,0 +1,58 @@
+// What a solve or a sweep leaves behind for Python: the grid, the heights it
+// was solved on (the caller's array, kept alive), the steps with their
+// fields, and the provenance the result files record. Results and sweeps
+// share one Run, so a step's arrays are views of the fields it owns.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bindings.hpp"
+#include "halfspace/grid.hpp"
+#include "halfspace/io/result_metadata.hpp"
+#include "halfspace/solvers/load_sweep.hpp"
+#include "halfspace/surface/statistics.hpp"
+
+namespace halfspace::python {
+
+// Holds a Python object: made and destroyed with the GIL held.
+struct Run {
+  Grid grid;
+  nb::object heights_owner;         // the numpy array heights points into
+  std::span<const double> heights;  // m, one per cell
+  io::SolveProvenance provenance;   // written into every result file
+  surface::SurfaceStatistics surface;
+  std::vector<solvers::SweepStep> steps;
+  std::vector<std::vector<std::uint8_t>> contact;  // per step: 1 where p > 0
+  // Attributes of a file the run was read from (read_result); empty for a solve.
+  nb::dict stored_attributes;
+
+  std::vector<std::size_t> shape() const;
+  // Fills contact from the steps' pressures.
+  void mark_contact();
+};
+
+// The contact statistics of a solved result on `grid`.
+inline surface::ContactStatistics contact_statistics_of(const Grid& grid, const SolveResult& result) {
+  return surface::contact_statistics(grid, {result.pressure.data(), static_cast<std::size_t>(result.pressure.size())},
+                                     {result.gap.data(), static_cast<std::size_t>(result.gap.size())});
+}
+
+// One step of a Run (the only one for a single solve).
+struct Result {
+  std::shared_ptr<Run> run;
+  std::size_t step = 0;
+
+  const solvers::SweepStep& data() const { return run->steps[step]; }
+  const SolveResult& result() const { return data().result; }
+};
+
+// Every step of a Run.
+struct Sweep {
+  std::shared_ptr<Run> run;
+};
+
+}  // namespace halfspace::python

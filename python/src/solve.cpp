@@ -1,0 +1,250 @@
+// halfspace.solve and halfspace.sweep: the options mapped onto the library's
+// typed front door (SolverOptions, Loading), the solve run with the GIL
+// released, and Ctrl-C and the progress callable served between iterations.
+#include <fmt/format.h>
+#include <nanobind/stl/optional.h>
+#include <nanobind/stl/string.h>
+#include <nanobind/stl/vector.h>
+
+#include <chrono>
+#include <cmath>
+#include <optional>
+#include <string>
+
+#include "bindings.hpp"
+#include "halfspace/error.hpp"
+#include "halfspace/material.hpp"
+#include "halfspace/solvers/surface_solve.hpp"
+#include "halfspace/threads.hpp"
+#include "run.hpp"
+
+namespace halfspace::python {
+namespace {
+
+// Thrown from the progress hook when a Python error (KeyboardInterrupt from
+// Ctrl-C, or an exception of the user's progress callable) is pending: it
+// unwinds the solve, whose state is all RAII, and the binding re-raises the
+// Python error once the GIL is back.
+struct PythonErrorPending {};
+
+// SolverOptions::progress while the GIL is released. It runs on the calling
+// thread between iterations; it takes the GIL to check for signals every
+// kSignalCheckInterval, or at every iteration when the user gave a callable
+// (calling it needs the GIL anyway).
+class ProgressHook {
+ public:
+  explicit ProgressHook(nb::object callback) : callback_(std::move(callback)) {}
+
+  void operator()(int iteration, double residual) {
+    const bool call = !callback_.is_none();
+    if (!call) {
+      const auto now = std::chrono::steady_clock::now();
+      if (now < next_check_) return;
+      next_check_ = now + kSignalCheckInterval;
+    }
+    nb::gil_scoped_acquire gil;
+    if (PyErr_CheckSignals() != 0) throw PythonErrorPending{};
+    if (call) {
+      try {
+        callback_(iteration, residual);
+      } catch (nb::python_error& error) {
+        error.restore();
+        throw PythonErrorPending{};
+      }
+    }
+  }
+
+ private:
+  // Short enough that Ctrl-C feels immediate, long enough that the GIL is
+  // taken a negligible number of times.
+  static constexpr std::chrono::milliseconds kSignalCheckInterval{100};
+  nb::object callback_;
+  std::chrono::steady_clock::time_point next_check_ = std::chrono::steady_clock::now() + kSignalCheckInterval;
+};
+
+struct Problem {
+  Grid grid;
+  nb::object heights_owner;
+  std::span<const double> heights;
+};
+
+Problem problem_from(const nb::object& heights_object, double dx, double dy, const std::string& boundary_name) {
+  const auto heights = nb::cast<InputArray>(heights_object, false);
+  if (heights.ndim() != 1 && heights.ndim() != 2) {
+    throw InputError(fmt::format("the surface must be a 1D or 2D array, got {} dimensions", heights.ndim()));
+  }
+  Boundary boundary;
+  try {
+    boundary = parse_boundary(boundary_name);
+  } catch (const InputError& error) {
+    throw InputError(fmt::format("boundary: {}", error.what()));
+  }
+  Grid grid = heights.ndim() == 1 ? Grid::line(heights.shape(0), dx, boundary)
+                                  : Grid::plane(heights.shape(1), heights.shape(0), dx, dy, boundary);
+  for (std::size_t k = 0; k < heights.size(); ++k) {
+    if (!std::isfinite(heights.data()[k])) {
+      throw InputError(fmt::format(
+          "the surface has a non-finite height at index {}: prepare it first (HeightMap.prepare(invalid='fill'))", k));
+    }
+  }
+  return {std::move(grid), heights_object, values(heights)};
+}
+
+// The keywords of halfspace.solve that set SolverOptions, each mapped onto
+// its member here and nowhere else; validate() holds the rules. A feature
+// that adds a solver option adds one entry (docs/python.md, "Adding an
+// option"). Keywords not listed are refused, so a misspelt one never passes
+// silently.
+solvers::SolverOptions solver_options(const nb::dict& given, const Grid& grid) {
+  solvers::SolverOptions options;
+  for (const auto& [key_object, value] : given) {
+    if (value.is_none()) continue;
+    const std::string key = nb::cast<std::string>(key_object);
+    const auto named = [&](auto&& parse) {
+      try {
+        return parse();
+      } catch (const solvers::SolverOptionError&) {
+        throw;
+      } catch (const InputError& error) {
+        throw InputError(fmt::format("{}: {}", key, error.what()));
+      }
+    };
+    if (key == "solver") {
+      options.type = solvers::parse_solver_type(nb::cast<std::string>(value));
+    } else if (key == "tol") {
+      options.tolerance = nb::cast<double>(value);
+    } else if (key == "max_iter") {
+      options.max_iterations = nb::cast<int>(value);
+    } else if (key == "fft_planning") {
+      options.fft_planning = named([&] { return parse_fft_planning(nb::cast<std::string>(value)); });
+    } else if (key == "deflation_block") {
+      const long block = nb::cast<long>(value);
+      if (block < 0)
+        throw InputError(fmt::format("deflation_block={} is invalid: give 0 (off) or a block size", block));
+      options.deflation.mode = block == 0 ? solvers::DeflationOptions::Mode::off : solvers::DeflationOptions::Mode::on;
+      if (block != 0) options.deflation.block = static_cast<std::size_t>(block);
+    } else {
+      throw InputError(fmt::format("unknown solver option '{}'", key));
+    }
+  }
+  options.validate(grid);
+  return options;
+}
+
+ControlMode control_mode(const std::string& mode) {
+  for (ControlMode candidate : {ControlMode::force, ControlMode::mean_pressure, ControlMode::approach}) {
+    if (to_string(candidate) == mode) return candidate;
+  }
+  throw InputError(fmt::format("load mode '{}' is invalid: use force, mean_pressure or approach", mode));
+}
+
+int thread_count(std::optional<int> threads) {
+  if (!threads) return default_threads();
+  if (*threads < 1 || *threads > max_threads()) {
+    throw InputError(fmt::format("threads={} is invalid: allowed range is 1 to {} ({} x the {} hardware threads)",
+                                 *threads, max_threads(), kThreadsPerHardwareThread, hardware_threads()));
+  }
+  return *threads;
+}
+
+// Runs `work` with the GIL released and `hook` as the solver's progress;
+// re-raises a Python error the hook left pending.
+template <class Work>
+auto run_released(Work&& work) {
+  try {
+    nb::gil_scoped_release release;
+    return work();
+  } catch (const PythonErrorPending&) {
+    throw nb::python_error();
+  }
+}
+
+std::shared_ptr<Run> make_run(Problem&& problem, io::SolveProvenance&& provenance,
+                              std::vector<solvers::SweepStep>&& steps) {
+  auto run = std::make_shared<Run>(Run{std::move(problem.grid),
+                                       std::move(problem.heights_owner),
+                                       problem.heights,
+                                       std::move(provenance),
+                                       {},
+                                       {},
+                                       {},
+                                       {}});
+  run->steps = std::move(steps);
+  run->surface = surface::surface_statistics(run->grid, run->heights);
+  run->mark_contact();
+  return run;
+}
+
+Result solve(const nb::object& heights, double dx, double dy, const std::string& boundary, double e_star,
+             const std::string& mode, double value, const nb::dict& solver, std::optional<int> threads,
+             const std::optional<InputArray>& initial_pressure, nb::object progress, const std::string& command_line,
+             const std::string& height_source, const std::vector<std::string>& preparation) {
+  Problem problem = problem_from(heights, dx, dy, boundary);
+  e_star = checked_composite_modulus(e_star);
+  const Loading loading{control_mode(mode), value};
+  loading.validate();
+  solvers::SolverOptions options = solver_options(solver, problem.grid);
+  const int thread_number = thread_count(threads);
+  std::span<const double> start;
+  if (initial_pressure) {
+    start = values(*initial_pressure);
+    if (start.size() != problem.grid.size()) {
+      throw InputError(
+          fmt::format("initial_pressure has {} values but the surface has {}", start.size(), problem.grid.size()));
+    }
+  }
+  ProgressHook hook(std::move(progress));
+  options.progress = [&hook](int iteration, double residual) { hook(iteration, residual); };
+
+  solvers::SweepStep step;
+  step.loading = loading;
+  step.warm_started = !start.empty();
+  step.result = run_released([&] {
+    set_threads(thread_number);
+    return solvers::solve_surface(problem.grid, problem.heights, e_star, loading, options, start);
+  });
+  step.statistics = contact_statistics_of(problem.grid, step.result);
+  std::vector<solvers::SweepStep> steps;
+  steps.push_back(std::move(step));
+  return Result{
+      make_run(std::move(problem), {e_star, loading.mode, thread_number, command_line, "", height_source, preparation},
+               std::move(steps)),
+      0};
+}
+
+Sweep sweep(const nb::object& heights, double dx, double dy, const std::string& boundary, double e_star,
+            const std::string& mode, const std::vector<double>& load_values, const nb::dict& solver,
+            std::optional<int> threads, bool warm_start, nb::object progress, const std::string& command_line,
+            const std::string& height_source, const std::vector<std::string>& preparation) {
+  Problem problem = problem_from(heights, dx, dy, boundary);
+  e_star = checked_composite_modulus(e_star);
+  const ControlMode control = control_mode(mode);
+  solvers::SolverOptions options = solver_options(solver, problem.grid);
+  const int thread_number = thread_count(threads);
+  ProgressHook hook(std::move(progress));
+  options.progress = [&hook](int iteration, double residual) { hook(iteration, residual); };
+  solvers::LoadSweepOptions sweep_options;
+  sweep_options.warm_start = warm_start;
+
+  std::vector<solvers::SweepStep> steps = run_released([&] {
+    set_threads(thread_number);
+    return solvers::sweep_surface(problem.grid, problem.heights, e_star, control, load_values, options, sweep_options);
+  });
+  return Sweep{make_run(std::move(problem),
+                        {e_star, control, thread_number, command_line, "", height_source, preparation},
+                        std::move(steps))};
+}
+
+}  // namespace
+
+void bind_solve(nb::module_& module) {
+  module.def("solve", &solve, nb::arg("heights"), nb::arg("dx"), nb::arg("dy"), nb::arg("boundary"), nb::arg("e_star"),
+             nb::arg("mode"), nb::arg("value"), nb::arg("solver"), nb::arg("threads").none(),
+             nb::arg("initial_pressure").none(), nb::arg("progress").none(), nb::arg("command_line"),
+             nb::arg("height_source"), nb::arg("preparation"));
+  module.def("sweep", &sweep, nb::arg("heights"), nb::arg("dx"), nb::arg("dy"), nb::arg("boundary"), nb::arg("e_star"),
+             nb::arg("mode"), nb::arg("values"), nb::arg("solver"), nb::arg("threads").none(), nb::arg("warm_start"),
+             nb::arg("progress").none(), nb::arg("command_line"), nb::arg("height_source"), nb::arg("preparation"));
+}
+
+}  // namespace halfspace::python

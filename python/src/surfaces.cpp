@@ -1,0 +1,240 @@
+// Height maps in and out of Python: the readers with the preparation steps,
+// the built-in and self-affine generators, and the surface statistics.
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <nanobind/stl/filesystem.h>
+#include <nanobind/stl/optional.h>
+#include <nanobind/stl/pair.h>
+#include <nanobind/stl/string.h>
+#include <nanobind/stl/vector.h>
+
+#include <cmath>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "bindings.hpp"
+#include "halfspace/error.hpp"
+#include "halfspace/geometry/builtin_surface.hpp"
+#include "halfspace/io/height_map_reader.hpp"
+#include "halfspace/surface/padding.hpp"
+#include "halfspace/surface/preparation.hpp"
+#include "halfspace/surface/self_affine.hpp"
+#include "halfspace/surface/statistics.hpp"
+
+namespace halfspace::python {
+namespace {
+
+std::vector<std::size_t> shape_of(const HeightMap& map) {
+  return map.dimension == 1 ? std::vector<std::size_t>{map.nx} : std::vector<std::size_t>{map.ny, map.nx};
+}
+
+Grid grid_of(std::size_t nx, std::size_t ny, int dimension, double dx, double dy, bool periodic) {
+  const Boundary boundary = periodic ? Boundary::periodic : Boundary::free;
+  return dimension == 1 ? Grid::line(nx, dx, boundary) : Grid::plane(nx, ny, dx, dy, boundary);
+}
+
+// What read_height_map and prepare hand back: the prepared map as a dict.
+nb::dict map_dict(HeightMap&& map) {
+  nb::dict out;
+  out["shape"] = nb::cast(shape_of(map));
+  out["dx"] = map.dx;
+  out["dy"] = map.dy;
+  out["source"] = map.source;
+  out["preparation"] = nb::cast(map.preparation);
+  out["heights"] = owning_array(std::move(map.heights), shape_of(map));
+  return out;
+}
+
+surface::PreparationOptions preparation_options(const std::optional<std::string>& window, const std::string& invalid,
+                                                const std::string& detrend, double pad) {
+  surface::PreparationOptions prepare;
+  const auto named = [](std::string_view keyword, auto&& parse) {
+    try {
+      return parse();
+    } catch (const FileError&) {
+      throw;
+    } catch (const InputError& error) {
+      throw InputError(fmt::format("{}: {}", keyword, error.what()));
+    }
+  };
+  if (window) prepare.window = named("window", [&] { return surface::parse_window(*window); });
+  prepare.invalid = named("invalid", [&] { return surface::parse_invalid_points(invalid); });
+  prepare.detrend = named("detrend", [&] { return surface::parse_detrend(detrend); });
+  if (!(pad >= surface::kMinPadFactor && pad <= surface::kMaxPadFactor)) {
+    throw InputError(fmt::format("pad={} is invalid: the factor must be in [{}, {}]", pad, surface::kMinPadFactor,
+                                 surface::kMaxPadFactor));
+  }
+  prepare.pad_factor = pad;
+  return prepare;
+}
+
+double checked_spacing(const char* keyword, double value) {
+  if (!(std::isfinite(value) && value > 0.0)) {
+    throw InputError(fmt::format("{}={} is invalid: the spacing must be positive and finite (m)", keyword, value));
+  }
+  return value;
+}
+
+void prepare(HeightMap& map, const surface::PreparationOptions& options) {
+  try {
+    surface::prepare_height_map(map, options);
+  } catch (const FileError& error) {
+    // Only the refusal of invalid points is a FileError here: say how to proceed.
+    throw FileError(fmt::format("{} (pass invalid='fill' or invalid='crop')", error.what()));
+  }
+}
+
+nb::dict read_map(const std::filesystem::path& path, const std::string& format, const std::string& dataset,
+                  const std::optional<std::string>& unit, const std::optional<std::string>& window,
+                  const std::string& invalid, const std::string& detrend, std::optional<double> dx,
+                  std::optional<double> dy, double pad) {
+  io::ReadOptions read;
+  try {
+    read.format = io::parse_height_map_format(format);
+  } catch (const InputError& error) {
+    throw InputError(fmt::format("format: {}", error.what()));
+  }
+  read.dataset = dataset;
+  if (unit) read.unit = io::require_length_unit(*unit, "unit");
+  const surface::PreparationOptions options = preparation_options(window, invalid, detrend, pad);
+  HeightMap map;
+  {
+    nb::gil_scoped_release release;
+    map = io::read_height_map(path, read);
+  }
+  if (dx) map.dx = checked_spacing("dx", *dx);
+  if (map.dimension == 1) {
+    if (dy) throw InputError(fmt::format("dy does not apply to the 1D profile in {}", path.string()));
+    if (!(map.dx > 0.0)) {
+      throw FileError(fmt::format("height map {} does not state its spacing dx: pass dx= (m)", path.string()));
+    }
+  } else {
+    if (dy) map.dy = checked_spacing("dy", *dy);
+    std::vector<std::string> missing;
+    if (!(map.dx > 0.0)) missing.emplace_back("dx");
+    if (!(map.dy > 0.0)) missing.emplace_back("dy");
+    if (!missing.empty()) {
+      throw FileError(fmt::format("height map {} does not state its spacing {}: pass {}= (m)", path.string(),
+                                  fmt::join(missing, " and "), fmt::join(missing, "= and ")));
+    }
+  }
+  {
+    nb::gil_scoped_release release;
+    prepare(map, options);
+  }
+  return map_dict(std::move(map));
+}
+
+// An array's heights as a HeightMap with NaN (and inf) as invalid points.
+HeightMap map_from(const InputArray& heights, double dx, double dy, const std::string& source) {
+  if (heights.ndim() != 1 && heights.ndim() != 2) {
+    throw InputError(fmt::format("heights must be a 1D or 2D array, got {} dimensions", heights.ndim()));
+  }
+  HeightMap map;
+  map.dimension = static_cast<int>(heights.ndim());
+  map.nx = heights.shape(heights.ndim() - 1);
+  map.ny = heights.ndim() == 2 ? heights.shape(0) : 1;
+  map.dx = dx;
+  map.dy = map.dimension == 2 ? dy : 0.0;
+  map.source = source;
+  map.heights = Eigen::Map<const Eigen::ArrayXd>(heights.data(), static_cast<Eigen::Index>(heights.size()));
+  bool all_valid = true;
+  for (std::size_t k = 0; k < map.size() && all_valid; ++k) all_valid = std::isfinite(map.heights[k]);
+  if (!all_valid) {
+    map.valid.resize(map.size());
+    for (std::size_t k = 0; k < map.size(); ++k) {
+      map.valid[k] = std::isfinite(map.heights[k]) ? 1 : 0;
+      if (!map.valid[k]) map.heights[k] = std::nan("");
+    }
+  }
+  return map;
+}
+
+nb::dict prepare_array(const InputArray& heights, double dx, double dy, const std::string& source,
+                       const std::optional<std::string>& window, const std::string& invalid, const std::string& detrend,
+                       double pad) {
+  const surface::PreparationOptions options = preparation_options(window, invalid, detrend, pad);
+  HeightMap map = map_from(heights, dx, dy, source);
+  {
+    nb::gil_scoped_release release;
+    prepare(map, options);
+  }
+  return map_dict(std::move(map));
+}
+
+OutputArray builtin(const std::string& shape, std::size_t nx, std::size_t ny, int dimension, double dx, double dy,
+                    double radius, double wavelength, double amplitude) {
+  geometry::SurfaceSpec spec;
+  spec.shape = geometry::parse_surface_shape(shape);
+  spec.radius = radius;
+  spec.wavelength = wavelength;
+  spec.amplitude = amplitude;
+  const Grid grid = grid_of(nx, ny, dimension, dx, dy, false);
+  Eigen::ArrayXd heights = geometry::make_surface_heights(grid, spec);
+  return owning_array(std::move(heights),
+                      dimension == 1 ? std::vector<std::size_t>{nx} : std::vector<std::size_t>{ny, nx});
+}
+
+nb::tuple self_affine(std::size_t nx, std::size_t ny, int dimension, double dx, double dy, double hurst,
+                      double short_cutoff, double rolloff, double long_cutoff, std::optional<double> rms_height,
+                      std::optional<double> rms_slope, std::uint64_t seed) {
+  surface::SelfAffineSpec spec;
+  spec.hurst = hurst;
+  spec.short_cutoff = short_cutoff;
+  spec.rolloff = rolloff;
+  spec.long_cutoff = long_cutoff;
+  spec.rms_height = rms_height;
+  spec.rms_slope = rms_slope;
+  spec.seed = seed;
+  const Grid grid = grid_of(nx, ny, dimension, dx, dy, true);
+  const surface::SelfAffineSpec resolved = spec.resolved(grid);
+  Eigen::ArrayXd heights;
+  {
+    nb::gil_scoped_release release;
+    heights = surface::make_self_affine_surface(grid, spec);
+  }
+  nb::dict used;
+  used["hurst"] = resolved.hurst;
+  used["cutoff_short"] = resolved.short_cutoff;
+  used["rolloff"] = resolved.rolloff;
+  used["cutoff_long"] = resolved.long_cutoff;
+  return nb::make_tuple(owning_array(std::move(heights),
+                                     dimension == 1 ? std::vector<std::size_t>{nx} : std::vector<std::size_t>{ny, nx}),
+                        used);
+}
+
+nb::dict statistics(const InputArray& heights, double dx, double dy, bool periodic) {
+  if (heights.ndim() != 1 && heights.ndim() != 2) {
+    throw InputError(fmt::format("heights must be a 1D or 2D array, got {} dimensions", heights.ndim()));
+  }
+  const int dimension = static_cast<int>(heights.ndim());
+  const Grid grid =
+      grid_of(heights.shape(dimension - 1), dimension == 2 ? heights.shape(0) : 1, dimension, dx, dy, periodic);
+  surface::SurfaceStatistics s;
+  {
+    nb::gil_scoped_release release;
+    s = surface::surface_statistics(grid, values(heights));
+  }
+  nb::dict out;
+  out["rms_height"] = s.rms_height;
+  out["rms_slope"] = s.rms_slope;
+  return out;
+}
+
+}  // namespace
+
+void bind_surfaces(nb::module_& module) {
+  module.def("read_height_map", &read_map, nb::arg("path"), nb::arg("format"), nb::arg("dataset"), nb::arg("unit"),
+             nb::arg("window"), nb::arg("invalid"), nb::arg("detrend"), nb::arg("dx"), nb::arg("dy"), nb::arg("pad"));
+  module.def("prepare", &prepare_array, nb::arg("heights"), nb::arg("dx"), nb::arg("dy"), nb::arg("source"),
+             nb::arg("window"), nb::arg("invalid"), nb::arg("detrend"), nb::arg("pad"));
+  module.def("builtin_surface", &builtin, nb::arg("shape"), nb::arg("nx"), nb::arg("ny"), nb::arg("dimension"),
+             nb::arg("dx"), nb::arg("dy"), nb::arg("radius"), nb::arg("wavelength"), nb::arg("amplitude"));
+  module.def("self_affine", &self_affine, nb::arg("nx"), nb::arg("ny"), nb::arg("dimension"), nb::arg("dx"),
+             nb::arg("dy"), nb::arg("hurst"), nb::arg("cutoff_short"), nb::arg("rolloff"), nb::arg("cutoff_long"),
+             nb::arg("rms_height").none(), nb::arg("rms_slope").none(), nb::arg("seed"));
+  module.def("surface_statistics", &statistics, nb::arg("heights"), nb::arg("dx"), nb::arg("dy"), nb::arg("periodic"));
+}
+
+}  // namespace halfspace::python

@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Builds the Python package into a virtual environment (`pip install .`, as
+# the README says) and runs its tests (tests/python). The tests compare with
+# the halfspace program, so scripts/build.sh must have run. The environment
+# is kept between runs (HALFSPACE_PYTHON_VENV, default build/python-venv);
+# the package's own build directory (build/python) and ccache make a second
+# run quick.
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${HALFSPACE_BUILD_DIR:-$root/build}"
+venv="${HALFSPACE_PYTHON_VENV:-$root/build/python-venv}"
+if [ ! -x "$venv/bin/python" ]; then
+  python3 -m venv "$venv"
+fi
+"$venv/bin/python" -m pip install --quiet --upgrade pip
+# numpy is the package's dependency; pytest and matplotlib (the example's
+# figures) are the tests'.
+"$venv/bin/python" -m pip install --quiet numpy pytest matplotlib
+"$venv/bin/python" -m pip install --quiet "$root"
+HALFSPACE_EXECUTABLE="$build/bin/halfspace" "$venv/bin/python" -m pytest -q "$root/tests/python" "$@"

@@ -1,0 +1,82 @@
+"""Ctrl-C stops a running solve, the GIL is free during a solve, and the
+progress callable is called between iterations."""
+
+import _thread
+import threading
+import time
+
+import numpy as np
+import pytest
+
+import halfspace as hs
+
+# A solve that cannot finish soon: the plain Polonsky-Keer iteration on a
+# rough 512^2 surface with an unreachable tolerance and a large iteration cap.
+LONG = dict(e_star=1e9, mean_pressure=1e6, boundary="periodic", solver="pk", tol=1e-15, max_iter=10**8,
+            fft_planning="estimate", threads=1)
+
+
+@pytest.fixture(scope="module")
+def rough():
+    return hs.generate.self_affine(grid=(512, 512), size=1e-3, rms_slope=0.2, seed=3)
+
+
+def test_keyboard_interrupt_stops_a_solve(rough):
+    delay = 0.5
+    timer = threading.Timer(delay, _thread.interrupt_main)
+    start = time.monotonic()
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        hs.solve(rough, **LONG)
+    stopped = time.monotonic() - start
+    timer.cancel()
+    # Stopped within the check interval (0.1 s) plus an iteration, with margin for a loaded machine.
+    assert stopped < delay + 2.0, stopped
+    # The process is usable afterwards: the next solve runs normally.
+    again = hs.solve(hs.generate.sphere(grid=(32, 32), size=1e-3, radius=0.01), e_star=1e9, force=0.1,
+                     fft_planning="estimate", threads=1)
+    assert again.converged
+
+
+def test_gil_is_released_during_a_solve(rough):
+    counter = {"ticks": 0, "stop": False}
+
+    def tick():
+        while not counter["stop"]:
+            counter["ticks"] += 1
+            time.sleep(0.001)
+
+    thread = threading.Thread(target=tick)
+    thread.start()
+    try:
+        result = hs.solve(rough, **{**LONG, "max_iter": 60})
+    finally:
+        counter["stop"] = True
+        thread.join()
+    assert result.status == "iteration_limit"
+    # The other thread ran while the solve held no GIL (60 iterations take far more than 10 ms).
+    assert counter["ticks"] > 10, counter
+
+
+def test_progress_is_called_every_iteration():
+    calls = []
+    surface = hs.generate.self_affine(grid=(64, 64), size=1e-3, rms_slope=0.1, seed=1)
+    result = hs.solve(surface, e_star=1e9, mean_pressure=1e6, boundary="periodic", solver="pk-fourier",
+                      fft_planning="estimate", threads=1, progress=lambda k, r: calls.append((k, r)))
+    assert result.converged
+    # One call per evaluation, numbered from 0 (the starting pressure) to the last iteration.
+    assert [k for k, _ in calls] == list(range(len(calls)))
+    assert calls[-1][0] == result.iterations
+    assert np.array_equal([r for _, r in calls], result.residual_history)
+
+
+def test_exception_in_progress_stops_the_solve(rough):
+    class Enough(Exception):
+        pass
+
+    def progress(iteration, residual):
+        if iteration == 5:
+            raise Enough(f"stopped at {iteration}")
+
+    with pytest.raises(Enough, match="stopped at 5"):
+        hs.solve(rough, **LONG, progress=progress)

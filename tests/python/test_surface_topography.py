@@ -1,0 +1,44 @@
+"""Instrument formats halfspace does not read go to SurfaceTopography: a
+clear message when it is absent (always tested), and, where it is
+installed, the originals in ../shared/data/topography against their HDF5
+conversions there (the README there: height == Topography.heights().T)."""
+
+import importlib.util
+import sys
+
+import numpy as np
+import pytest
+
+import halfspace as hs
+
+HAVE_SURFACE_TOPOGRAPHY = importlib.util.find_spec("SurfaceTopography") is not None
+
+
+def test_absent_package_is_named(monkeypatch, shared_topography):
+    # None in sys.modules makes `import SurfaceTopography` fail, installed or not.
+    monkeypatch.setitem(sys.modules, "SurfaceTopography", None)
+    for name in ("sur-2.sur", "plu-1.plu", "opd-1.opd", "di-5.di"):
+        with pytest.raises(hs.FileError, match=r"install the SurfaceTopography package") as error:
+            hs.read_height_map(shared_topography / name)
+        assert name in str(error.value)
+        assert f"'.{name.split('.')[-1]}'" in str(error.value)
+    # A binary .dat (Zygo MetroPro) is not a text matrix: the message names the package too.
+    with pytest.raises(hs.FileError, match="SurfaceTopography"):
+        hs.read_height_map(shared_topography / "metropro-1.dat")
+    with pytest.raises(hs.FileError, match="format='surfacetopography' was asked"):
+        hs.read_height_map(shared_topography / "di-5.h5", format="surfacetopography")
+
+
+@pytest.mark.skipif(not HAVE_SURFACE_TOPOGRAPHY, reason="SurfaceTopography is not installed (optional)")
+@pytest.mark.parametrize("original, converted", [("di-5.di", "di-5.h5"), ("sur-2.sur", "sur-2.h5"),
+                                                 ("plu-1.plu", "plu-1.h5"), ("metropro-1.dat", "metropro-1.h5"),
+                                                 ("opd-1.opd", "opd-1.h5")])
+def test_originals_match_their_conversions(shared_topography, original, converted):
+    surface = hs.read_height_map(shared_topography / original, invalid="fill")
+    reference = hs.read_height_map(shared_topography / converted)
+    assert surface.shape == reference.shape
+    assert surface.dx == pytest.approx(reference.dx, rel=1e-6)
+    assert surface.dy == pytest.approx(reference.dy, rel=1e-6)
+    # Both decode the same integers or floats with the same scale: equal to float32 rounding of the range.
+    scale = np.ptp(reference.heights)
+    assert np.max(np.abs(surface.heights - reference.heights)) <= 1e-6 * scale
