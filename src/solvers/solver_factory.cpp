@@ -160,7 +160,7 @@ std::unique_ptr<ContactSolver> make_any_solver(const Grid& grid, const Elasticit
     if (options.max_iterations) adhesive.max_iterations = *options.max_iterations;
     adhesive.fft_planning = options.fft_planning;
     adhesive.progress = options.progress;
-    return std::make_unique<AdhesiveContactSolver>(grid, e_star, std::move(adhesive));
+    return std::make_unique<AdhesiveContactSolver>(grid, std::get<double>(e_star), std::move(adhesive));
   }
   switch (options.type) {
     case SolverType::pk:
