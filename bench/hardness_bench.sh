@@ -22,7 +22,7 @@ trap 'rm -rf "$work"' EXIT
 cd "$work"
 export HALFSPACE_FFTW_WISDOM="$work/wisdom"
 
-size="$(echo "$side * 1e-6" | bc -l)"
+size="$(awk -v n="$side" 'BEGIN { print n * 1e-6 }')"
 "$program" generate --kind self-affine --grid "${side}x${side}" --size "$size" --hurst 0.8 --cutoff-short 4e-6 \
   --rms-slope 0.1 --seed 1 --output surface.h5 --quiet
 
@@ -33,7 +33,7 @@ solve() {
   shift
   "$program" solve --height-map surface.h5 --boundary periodic --E-star 1e9 --mean-pressure 4e6 \
     --solver "$solver" --output "$name.h5" --quiet "$@"
-  python3 - "$name" <<'PY'
+  /usr/bin/python3 - "$name" <<'PY'
 import sys, h5py
 name = sys.argv[1]
 with h5py.File(f"{name}.h5", "r") as f:
@@ -52,7 +52,7 @@ done > runs.txt
 
 echo "| case ($solver, ${side}^2, 4 MPa) | iterations | K | M^-1 | solve time (median of $repeats) | plastic | contact | time / elastic |"
 echo "|---|--:|--:|--:|--:|--:|--:|--:|"
-python3 - <<'PY'
+/usr/bin/python3 - <<'PY'
 import statistics
 rows = {}
 for line in open("runs.txt"):

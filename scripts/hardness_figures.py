@@ -52,6 +52,7 @@ def main():
     parser.add_argument("--out", default=os.path.join(ROOT, "docs", "figures", "validation"))
     parser.add_argument("--work", default=None, help="directory for the result files [a temporary one]")
     args = parser.parse_args()
+    args.halfspace = os.path.abspath(args.halfspace)
     work = args.work or tempfile.mkdtemp(prefix="hardness_figures_")
     os.makedirs(args.out, exist_ok=True)
 
