@@ -154,6 +154,11 @@ std::unique_ptr<ContactSolver> make_any_solver(const Grid& grid, const Elasticit
                                                const SolverOptions& options) {
   options.validate(grid);
   if (options.adhesion) {
+    if (!std::holds_alternative<double>(e_star)) {
+      throw SolverOptionError("adhesion", std::string(to_string(options.adhesion->law.type)),
+                              "is not supported for a coated half-space: the adhesive solver works on the "
+                              "homogeneous half-space");
+    }
     AdhesiveSolverOptions adhesive;
     adhesive.law = options.adhesion->law;
     adhesive.tolerance = options.adhesion->tolerance;
