@@ -83,6 +83,18 @@ Problem make_problem(const Grid& grid, std::span<const double> initial_gap, cons
   return problem;
 }
 
+// A load-restoring scale with a hardness cap (Iteration::capped_scale): the
+// pressure q becomes min(H, factor q), or H where q >= H if keep_cap. The
+// iteration stores stored(q) and multiplies by the factor later.
+struct CappedScale {
+  double factor = 1.0;
+  bool keep_cap = true;
+
+  double stored(double q, double upper) const {
+    return keep_cap && q >= upper ? upper / factor : std::min(q, upper / factor);
+  }
+};
+
 // One solve: the iterate and the paper's steps, each one or two passes over
 // the cells. The fields live in the result (p, u = K p, g) and in the
 // solver's workspace (t, and r, which holds z = M^-1 g, then K t, then the
@@ -137,17 +149,17 @@ class Iteration {
         for_each_index(n_, [&](std::size_t i) { p_[i] = 1.0; });
         force = problem_.cell_area * static_cast<double>(n_);
       }
-      double scale = problem_.target_force / force;
+      CappedScale scale{problem_.target_force / force, false};
       if (bounds_.capped()) {
         // Scaled and capped; a start too concentrated to carry the load
         // below the cap gives way to the uniform pressure, which does.
-        const std::optional<double> capped =
-            capped_scale([&](std::size_t i) { return p_[i]; }, force / problem_.cell_area);
+        const std::optional<CappedScale> capped = capped_scale([&](std::size_t i) { return p_[i]; });
         if (!capped) for_each_index(n_, [&](std::size_t i) { p_[i] = 1.0; });
-        scale = capped ? *capped : problem_.target_force / (problem_.cell_area * static_cast<double>(n_));
+        scale = capped ? *capped
+                       : CappedScale{problem_.target_force / (problem_.cell_area * static_cast<double>(n_)), false};
       }
-      const double upper = bounds_.upper;
-      for_each_index(n_, [&](std::size_t i) { p_[i] = std::min(p_[i] * scale, upper); });
+      for_each_index(n_,
+                     [&](std::size_t i) { p_[i] = bounds_.snap(scale.stored(p_[i], bounds_.upper) * scale.factor); });
     } else if (!warm) {
       for_each_index(n_, [&](std::size_t i) { g_[i] = problem_.initial_gap[i] - problem_.approach; });
       local_overlap_pressure();
@@ -306,13 +318,13 @@ class Iteration {
 
   // Steps 6-9 with a hardness cap: p = P(p - tau t) onto [0, H], entries
   // as above. Under load control scaling alone would lift capped cells
-  // above H, so the load is restored by the capped scaling min(H, s p) with
-  // s from capped_scale. Its p is stored as min(H/s, p) and scaled by s in
-  // the next evaluation (Deferred, which puts it back on the cap exactly),
-  // so that the correction c and K c stay exact. A step that leaves too few
-  // cells in contact to carry the load at the cap fills the deficit into
-  // the interpenetrating cells (or, if they cannot take it, all cells out of
-  // contact) and restarts the conjugate directions.
+  // above H, or pull them off the cap, so the load is restored by the
+  // capped scaling of capped_scale. Its p is stored as CappedScale::stored
+  // and scaled by s in the next evaluation (Deferred, which puts it back on
+  // the cap exactly), so that the correction c and K c stay exact. A step
+  // that leaves too few cells in contact to carry the load at the cap fills
+  // the deficit into the cells out of contact with the smallest gaps and
+  // restarts the conjugate directions.
   void advance_capped() {
     const bool entries = !projected_;
     const double tau = tau_;
@@ -322,24 +334,22 @@ class Iteration {
       if (entries && pi == 0.0 && g_[i] < 0.0 && tau > 0.0) pi = -tau * g_[i];
       return pi;
     };
-    double scale = 1.0;
+    CappedScale scale{1.0, true};
     double fill = 0.0;               // pressure of each filled cell
     double fill_below = -kInfinity;  // the filled cells: out of contact with a gap below this
     bool filled = false;
     if (problem_.load_controlled) {
       const double target_sum = problem_.target_force / problem_.cell_area;
-      const auto [pre_sum, positive] = sums<2>(n_, [&](std::size_t i) {
-        const double pi = lower(i, p_[i] - tau * t_[i]);
-        return std::array<double, 2>{pi, pi > 0.0 ? 1.0 : 0.0};
-      });
-      const std::optional<double> capped =
-          capped_scale([&](std::size_t i) { return lower(i, p_[i] - tau * t_[i]); }, pre_sum);
+      const std::optional<CappedScale> capped =
+          capped_scale([&](std::size_t i) { return lower(i, p_[i] - tau * t_[i]); });
       if (capped) {
         scale = *capped;
       } else {
         // The cells at the cap cannot carry the load: the next cells to
         // touch, those out of contact with the smallest gaps, take the rest.
         filled = true;
+        const double positive =
+            linalg::sum(n_, [&](std::size_t i) { return lower(i, p_[i] - tau * t_[i]) > 0.0 ? 1.0 : 0.0; });
         const double deficit = target_sum - upper * positive;
         const auto [below, count] = smallest_gaps([&](std::size_t i) { return lower(i, p_[i] - tau * t_[i]) == 0.0; },
                                                   std::ceil(deficit / upper));
@@ -347,17 +357,16 @@ class Iteration {
         fill = deficit / count;
       }
     }
-    const double stored_upper = upper / scale;
     const auto [entered, corrected, reached_cap] = sums<3>(n_, [&](std::size_t i) {
       const double moved = p_[i] - tau * t_[i];
       const double pre = lower(i, moved);
-      double pi = std::min(pre, stored_upper);
+      double pi = scale.stored(pre, upper);
       if (filled) pi = pre > 0.0 ? upper : (g_[i] < fill_below ? fill : 0.0);
       const double entry = entries && moved <= 0.0 && pre > 0.0 ? 1.0 : 0.0;
       p_[i] = pi;
       u_[i] -= tau * r_[i];
       r_[i] = pi - moved;
-      return std::array<double, 3>{entry, r_[i] != 0.0 ? 1.0 : 0.0, pre > stored_upper ? 1.0 : 0.0};
+      return std::array<double, 3>{entry, r_[i] != 0.0 ? 1.0 : 0.0, pre * scale.factor >= upper ? 1.0 : 0.0};
     });
     const double entries_kept = projected_ ? kEntriesKept * contact_cells_ : 0.0;
     conjugate_ = entered <= entries_kept && tau > 0.0 && !filled && (projected_ || reached_cap == 0.0);
@@ -368,7 +377,7 @@ class Iteration {
       deferred_.add_correction = true;
     }
     ++updates_since_exact_;
-    deferred_.scale = scale;
+    deferred_.scale = scale.factor;
   }
 
   // The result's summary of the final iterate, whose displacement and gap
@@ -435,31 +444,47 @@ class Iteration {
     return {high, count};
   }
 
-  // The factor s with sum_i min(H, s q_i) = target force / cell area, for
-  // the pressures q_i = pressure(i) >= 0 summing to `pressure_sum`: the
-  // load restored by scaling, with the cap. The capped sum is concave and
-  // piecewise linear in s, so Newton's method from the uncapped factor
-  // (which lies below the root) rises monotonically to the root and meets
-  // it exactly once the capped cells stop changing, in a few passes. None
-  // if the load exceeds H times the cells with q_i > 0.
+  // The load restored by scaling, with the cap: the factor s with
+  //
+  //   sum over q_i >= H of H  +  sum over q_i < H of min(H, s q_i)  =  target force / cell area
+  //
+  // for the pressures q_i = pressure(i) >= 0 (keep_cap): cells pushed to
+  // the cap stay there, the others scale. The left side is concave and
+  // piecewise linear in s, so Newton's method from the factor that ignores
+  // the cap for the others (below the root) rises monotonically to the root
+  // and meets it exactly once the capped cells stop changing, in a few
+  // passes. If the cells at the cap alone carry more than the load, all
+  // cells scale (keep_cap false: s < 1 takes them off the cap). None if the
+  // load exceeds H times the cells with q_i > 0.
   template <class Pressure>
-  std::optional<double> capped_scale(Pressure&& pressure, double pressure_sum) const {
+  std::optional<CappedScale> capped_scale(Pressure&& pressure) const {
     const double target_sum = problem_.target_force / problem_.cell_area;
     const double upper = bounds_.upper;
-    double scale = target_sum / pressure_sum;
-    if (scale * linalg::max_of(n_, [&](std::size_t i) { return pressure(i); }) <= upper) return scale;
+    const auto [at_cap, below_sum, total_sum] = sums<3>(n_, [&](std::size_t i) {
+      const double q = pressure(i);
+      return q >= upper ? std::array<double, 3>{1.0, 0.0, q} : std::array<double, 3>{0.0, q, q};
+    });
+    const double cap_sum = upper * at_cap;
+    if (!(target_sum > cap_sum)) return CappedScale{target_sum / total_sum, false};
+    if (!(below_sum > 0.0)) return std::nullopt;
+    double scale = (target_sum - cap_sum) / below_sum;
+    const double below_max = linalg::max_of(n_, [&](std::size_t i) {
+      const double q = pressure(i);
+      return q < upper ? q : 0.0;
+    });
+    if (scale * below_max <= upper) return CappedScale{scale, true};
     constexpr int kMaxPasses = 100;
     for (int pass = 0; pass < kMaxPasses; ++pass) {
       const auto [force_sum, slope] = sums<2>(n_, [&](std::size_t i) {
         const double q = pressure(i);
-        return scale * q < upper ? std::array<double, 2>{scale * q, q} : std::array<double, 2>{upper, 0.0};
+        return q < upper && scale * q < upper ? std::array<double, 2>{scale * q, q} : std::array<double, 2>{upper, 0.0};
       });
       const double shortfall = target_sum - force_sum;
-      if (shortfall <= 1e-15 * target_sum) return scale;
+      if (shortfall <= 1e-15 * target_sum) break;
       if (!(slope > 0.0)) return std::nullopt;  // every loaded cell at the cap, and still short
       scale += shortfall / slope;
     }
-    return scale;
+    return CappedScale{scale, true};
   }
 
   // u = K p afresh, after the deferred scale of p (K c is superseded).

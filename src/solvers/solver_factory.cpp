@@ -125,8 +125,13 @@ std::unique_ptr<ContactSolver> make_polonsky_keer(const Grid& grid, const Elasti
 std::unique_ptr<ContactSolver> make_multilevel(const Grid& grid, const Elasticity& e_star,
                                                const SolverOptions& options) {
   using Mode = DeflationOptions::Mode;
+  // Not by default with a hardness cap: its steps keep clipping cells at the
+  // cap, so the schedule never found them settled and the correction never
+  // joined in the capped solves measured (docs/theory.md#hardness-cap); it would cost
+  // its memory for nothing. Asked for (Mode::on), it applies.
   const bool deflated = options.deflation.mode == Mode::on ||
-                        (options.deflation.mode == Mode::automatic && options.deflation.automatic_applies(grid));
+                        (options.deflation.mode == Mode::automatic && options.deflation.automatic_applies(grid) &&
+                         !options.interface_law.hardness);
   auto make_level = [e_star, options, deflated](const Grid& level, double tolerance, bool fine) {
     return make_polonsky_keer(level, e_star, options, tolerance, fine, true, fine && deflated);
   };

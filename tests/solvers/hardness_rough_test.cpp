@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <tuple>
@@ -77,15 +79,17 @@ TEST_P(HardnessRoughTest, PlasticFractionRisesWithTheLoadAndTheForceBalances) {
   }
 }
 
+std::string case_name(const ::testing::TestParamInfo<std::tuple<SolverType, Shape>>& info) {
+  constexpr std::array<const char*, 4> kShapes{"LineFree", "LinePeriodic", "PlaneFree", "PlanePeriodic"};
+  return testing::solver_type_name({std::get<0>(info.param), info.index}) +
+         kShapes[static_cast<std::size_t>(std::get<1>(info.param))];
+}
+
 INSTANTIATE_TEST_SUITE_P(AllSolversAndGrids, HardnessRoughTest,
                          ::testing::Combine(testing::all_pk_solvers(),
                                             ::testing::Values(Shape::line_free, Shape::line_periodic, Shape::plane_free,
                                                               Shape::plane_periodic)),
-                         [](const ::testing::TestParamInfo<std::tuple<SolverType, Shape>>& info) {
-                           static const char* shapes[] = {"LineFree", "LinePeriodic", "PlaneFree", "PlanePeriodic"};
-                           return testing::solver_type_name({std::get<0>(info.param), info.index}) +
-                                  shapes[static_cast<int>(std::get<1>(info.param))];
-                         });
+                         case_name);
 
 // E* -> infinity: the elastic deflections vanish against the heights, so
 // the contact is the k lowest cells of the initial gap (the bearing area at
