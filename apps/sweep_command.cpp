@@ -80,7 +80,7 @@ void print_sweep_summary(std::FILE* out, const SolveSetup& setup, std::span<cons
 }  // namespace
 
 io::SolveProvenance provenance(const SolveSetup& setup) {
-  return {setup.e_star,      setup.loading.mode,  setup.threads,     setup.command_line,
+  return {setup.e_star,      setup.loading.mode,  setup.threads,    setup.command_line,
           setup.config_text, setup.height_source, setup.preparation};
 }
 

@@ -21,7 +21,9 @@ using InputArray = nb::ndarray<const double, nb::c_contig, nb::device::cpu>;
 // A float64 array handed to numpy.
 using OutputArray = nb::ndarray<nb::numpy, double>;
 
-inline std::span<const double> values(const InputArray& array) { return {array.data(), array.size()}; }
+inline std::span<const double> values(const InputArray& array) {
+  return {array.data(), array.size()};
+}
 
 // A new numpy array owning `field` (moved, not copied), shaped `shape`.
 OutputArray owning_array(Eigen::ArrayXd&& field, const std::vector<std::size_t>& shape);

@@ -30,7 +30,9 @@ std::string keyword_for(const std::string& option) {
 
 }  // namespace
 
-nb::handle input_error_type() { return nb::handle(input_error); }
+nb::handle input_error_type() {
+  return nb::handle(input_error);
+}
 
 OutputArray owning_array(Eigen::ArrayXd&& field, const std::vector<std::size_t>& shape) {
   auto* owned = new Eigen::ArrayXd(std::move(field));
@@ -42,9 +44,9 @@ void bind_errors(nb::module_& module) {
   input_error = PyErr_NewExceptionWithDoc(
       "halfspace.InputError", "Bad input or options: the message names the parameter, its value and the rule.",
       PyExc_ValueError, nullptr);
-  file_error = PyErr_NewExceptionWithDoc(
-      "halfspace.FileError", "A file that cannot be read or written: missing, unreadable, wrong layout.",
-      PyExc_OSError, nullptr);
+  file_error = PyErr_NewExceptionWithDoc("halfspace.FileError",
+                                         "A file that cannot be read or written: missing, unreadable, wrong layout.",
+                                         PyExc_OSError, nullptr);
   if (!input_error || !file_error) throw nb::python_error();
   module.attr("InputError") = nb::handle(input_error);
   module.attr("FileError") = nb::handle(file_error);
@@ -78,7 +80,9 @@ NB_MODULE(_core, module) {
   module.def("max_threads", &max_threads, "The largest thread count a solve accepts.");
   module.def(
       "composite_modulus",
-      [](double e1, double nu1, double e2, double nu2) { return composite_modulus({e1, nu1}, {e2, nu2}); },
+      [](double e1, double nu1, double e2, double nu2) {
+        return composite_modulus({e1, nu1}, {e2, nu2});
+      },
       nb::arg("E1"), nb::arg("nu1"), nb::arg("E2"), nb::arg("nu2"),
       "E* (Pa) from 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2.");
   module.def("checked_composite_modulus", &checked_composite_modulus, nb::arg("e_star"));

@@ -44,7 +44,8 @@ nb::dict reproduce(int test, double load) {
   summary["all_converged"] = run.all_converged();
   summary["pk_iterations"] = run.pk.iterations;
   nb::dict out;
-  out["x"] = column(Eigen::ArrayXd(Eigen::Map<const Eigen::ArrayXd>(run.contact.x.data(), static_cast<Eigen::Index>(n))));
+  out["x"] =
+      column(Eigen::ArrayXd(Eigen::Map<const Eigen::ArrayXd>(run.contact.x.data(), static_cast<Eigen::Index>(n))));
   out["gap"] = column(std::move(run.contact.initial_gap));
   out["p_lemke"] = column(std::move(run.lemke.pressure));
   out["p_lcpquad"] = column(std::move(run.lcpquad.pressure));

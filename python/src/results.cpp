@@ -116,8 +116,8 @@ Result read(const std::filesystem::path& path, int step) {
   Grid grid = integer("dimension") == 1 ? Grid::line(nx, number("dx"), boundary)
                                         : Grid::plane(nx, ny, number("dx"), number("dy"), boundary);
   if (grid.size() != static_cast<std::size_t>(stored.height.size())) {
-    throw FileError(fmt::format("cannot read result '{}': /height does not have nx x ny = {} values",
-                                path.string(), grid.size()));
+    throw FileError(
+        fmt::format("cannot read result '{}': /height does not have nx x ny = {} values", path.string(), grid.size()));
   }
 
   solvers::SweepStep data;
@@ -233,12 +233,17 @@ void bind_results(nb::module_& module) {
       .def_prop_ro("boundary", [](const Result& r) { return std::string(to_string(r.run->grid.boundary())); })
       .def_prop_ro("e_star", [](const Result& r) { return r.run->provenance.e_star; })
       .def_prop_ro("load_mode", [](const Result& r) { return std::string(to_string(r.data().loading.mode)); })
-      .def_prop_ro("load", [](const Result& r) { return r.data().loading.value; }, "The imposed load value.")
-      .def_prop_ro("total_force", [](const Result& r) { return r.result().total_force; }, "N (N/m in 1D)")
-      .def_prop_ro("mean_pressure", [](const Result& r) { return r.result().mean_pressure; }, "Pa")
-      .def_prop_ro("approach", [](const Result& r) { return r.result().approach; }, "m")
+      .def_prop_ro(
+          "load", [](const Result& r) { return r.data().loading.value; }, "The imposed load value.")
+      .def_prop_ro(
+          "total_force", [](const Result& r) { return r.result().total_force; }, "N (N/m in 1D)")
+      .def_prop_ro(
+          "mean_pressure", [](const Result& r) { return r.result().mean_pressure; }, "Pa")
+      .def_prop_ro(
+          "approach", [](const Result& r) { return r.result().approach; }, "m")
       .def_prop_ro("contact_fraction", [](const Result& r) { return r.result().contact_fraction; })
-      .def_prop_ro("max_pressure", [](const Result& r) { return r.result().max_pressure; }, "Pa")
+      .def_prop_ro(
+          "max_pressure", [](const Result& r) { return r.result().max_pressure; }, "Pa")
       .def_prop_ro("iterations", [](const Result& r) { return r.result().iterations; })
       .def_prop_ro("residual", [](const Result& r) { return r.result().residual; })
       .def_prop_ro("tolerance", [](const Result& r) { return r.result().tolerance; })

@@ -21,9 +21,9 @@ namespace halfspace::python {
 // Holds a Python object: made and destroyed with the GIL held.
 struct Run {
   Grid grid;
-  nb::object heights_owner;          // the numpy array heights points into
-  std::span<const double> heights;   // m, one per cell
-  io::SolveProvenance provenance;    // written into every result file
+  nb::object heights_owner;         // the numpy array heights points into
+  std::span<const double> heights;  // m, one per cell
+  io::SolveProvenance provenance;   // written into every result file
   surface::SurfaceStatistics surface;
   std::vector<solvers::SweepStep> steps;
   std::vector<std::vector<std::uint8_t>> contact;  // per step: 1 where p > 0

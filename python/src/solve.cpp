@@ -119,9 +119,9 @@ solvers::SolverOptions solver_options(const nb::dict& given, const Grid& grid) {
       options.fft_planning = named([&] { return parse_fft_planning(nb::cast<std::string>(value)); });
     } else if (key == "deflation_block") {
       const long block = nb::cast<long>(value);
-      if (block < 0) throw InputError(fmt::format("deflation_block={} is invalid: give 0 (off) or a block size", block));
-      options.deflation.mode =
-          block == 0 ? solvers::DeflationOptions::Mode::off : solvers::DeflationOptions::Mode::on;
+      if (block < 0)
+        throw InputError(fmt::format("deflation_block={} is invalid: give 0 (off) or a block size", block));
+      options.deflation.mode = block == 0 ? solvers::DeflationOptions::Mode::off : solvers::DeflationOptions::Mode::on;
       if (block != 0) options.deflation.block = static_cast<std::size_t>(block);
     } else {
       throw InputError(fmt::format("unknown solver option '{}'", key));
@@ -161,9 +161,14 @@ auto run_released(Work&& work) {
 
 std::shared_ptr<Run> make_run(Problem&& problem, io::SolveProvenance&& provenance,
                               std::vector<solvers::SweepStep>&& steps) {
-  auto run = std::make_shared<Run>(
-      Run{std::move(problem.grid), std::move(problem.heights_owner), problem.heights, std::move(provenance), {}, {},
-          {}, {}});
+  auto run = std::make_shared<Run>(Run{std::move(problem.grid),
+                                       std::move(problem.heights_owner),
+                                       problem.heights,
+                                       std::move(provenance),
+                                       {},
+                                       {},
+                                       {},
+                                       {}});
   run->steps = std::move(steps);
   run->surface = surface::surface_statistics(run->grid, run->heights);
   run->mark_contact();
@@ -184,8 +189,8 @@ Result solve(const nb::object& heights, double dx, double dy, const std::string&
   if (initial_pressure) {
     start = values(*initial_pressure);
     if (start.size() != problem.grid.size()) {
-      throw InputError(fmt::format("initial_pressure has {} values but the surface has {}", start.size(),
-                                   problem.grid.size()));
+      throw InputError(
+          fmt::format("initial_pressure has {} values but the surface has {}", start.size(), problem.grid.size()));
     }
   }
   ProgressHook hook(std::move(progress));
@@ -201,10 +206,10 @@ Result solve(const nb::object& heights, double dx, double dy, const std::string&
   step.statistics = contact_statistics_of(problem.grid, step.result);
   std::vector<solvers::SweepStep> steps;
   steps.push_back(std::move(step));
-  return Result{make_run(std::move(problem),
-                         {e_star, loading.mode, thread_number, command_line, "", height_source, preparation},
-                         std::move(steps)),
-                0};
+  return Result{
+      make_run(std::move(problem), {e_star, loading.mode, thread_number, command_line, "", height_source, preparation},
+               std::move(steps)),
+      0};
 }
 
 Sweep sweep(const nb::object& heights, double dx, double dy, const std::string& boundary, double e_star,
@@ -223,8 +228,7 @@ Sweep sweep(const nb::object& heights, double dx, double dy, const std::string& 
 
   std::vector<solvers::SweepStep> steps = run_released([&] {
     set_threads(thread_number);
-    return solvers::sweep_surface(problem.grid, problem.heights, e_star, control, load_values, options,
-                                  sweep_options);
+    return solvers::sweep_surface(problem.grid, problem.heights, e_star, control, load_values, options, sweep_options);
   });
   return Sweep{make_run(std::move(problem),
                         {e_star, control, thread_number, command_line, "", height_source, preparation},
@@ -234,12 +238,13 @@ Sweep sweep(const nb::object& heights, double dx, double dy, const std::string& 
 }  // namespace
 
 void bind_solve(nb::module_& module) {
-  module.def("solve", &solve, nb::arg("heights"), nb::arg("dx"), nb::arg("dy"), nb::arg("boundary"),
-             nb::arg("e_star"), nb::arg("mode"), nb::arg("value"), nb::arg("solver"), nb::arg("threads").none(), nb::arg("initial_pressure").none(), nb::arg("progress").none(),
-             nb::arg("command_line"), nb::arg("height_source"), nb::arg("preparation"));
-  module.def("sweep", &sweep, nb::arg("heights"), nb::arg("dx"), nb::arg("dy"), nb::arg("boundary"),
-             nb::arg("e_star"), nb::arg("mode"), nb::arg("values"), nb::arg("solver"), nb::arg("threads").none(), nb::arg("warm_start"), nb::arg("progress").none(), nb::arg("command_line"),
+  module.def("solve", &solve, nb::arg("heights"), nb::arg("dx"), nb::arg("dy"), nb::arg("boundary"), nb::arg("e_star"),
+             nb::arg("mode"), nb::arg("value"), nb::arg("solver"), nb::arg("threads").none(),
+             nb::arg("initial_pressure").none(), nb::arg("progress").none(), nb::arg("command_line"),
              nb::arg("height_source"), nb::arg("preparation"));
+  module.def("sweep", &sweep, nb::arg("heights"), nb::arg("dx"), nb::arg("dy"), nb::arg("boundary"), nb::arg("e_star"),
+             nb::arg("mode"), nb::arg("values"), nb::arg("solver"), nb::arg("threads").none(), nb::arg("warm_start"),
+             nb::arg("progress").none(), nb::arg("command_line"), nb::arg("height_source"), nb::arg("preparation"));
 }
 
 }  // namespace halfspace::python

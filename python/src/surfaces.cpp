@@ -172,8 +172,8 @@ OutputArray builtin(const std::string& shape, std::size_t nx, std::size_t ny, in
   spec.amplitude = amplitude;
   const Grid grid = grid_of(nx, ny, dimension, dx, dy, false);
   Eigen::ArrayXd heights = geometry::make_surface_heights(grid, spec);
-  return owning_array(std::move(heights), dimension == 1 ? std::vector<std::size_t>{nx}
-                                                         : std::vector<std::size_t>{ny, nx});
+  return owning_array(std::move(heights),
+                      dimension == 1 ? std::vector<std::size_t>{nx} : std::vector<std::size_t>{ny, nx});
 }
 
 nb::tuple self_affine(std::size_t nx, std::size_t ny, int dimension, double dx, double dy, double hurst,
@@ -199,10 +199,9 @@ nb::tuple self_affine(std::size_t nx, std::size_t ny, int dimension, double dx, 
   used["cutoff_short"] = resolved.short_cutoff;
   used["rolloff"] = resolved.rolloff;
   used["cutoff_long"] = resolved.long_cutoff;
-  return nb::make_tuple(
-      owning_array(std::move(heights),
-                   dimension == 1 ? std::vector<std::size_t>{nx} : std::vector<std::size_t>{ny, nx}),
-      used);
+  return nb::make_tuple(owning_array(std::move(heights),
+                                     dimension == 1 ? std::vector<std::size_t>{nx} : std::vector<std::size_t>{ny, nx}),
+                        used);
 }
 
 nb::dict statistics(const InputArray& heights, double dx, double dy, bool periodic) {
@@ -210,8 +209,8 @@ nb::dict statistics(const InputArray& heights, double dx, double dy, bool period
     throw InputError(fmt::format("heights must be a 1D or 2D array, got {} dimensions", heights.ndim()));
   }
   const int dimension = static_cast<int>(heights.ndim());
-  const Grid grid = grid_of(heights.shape(dimension - 1), dimension == 2 ? heights.shape(0) : 1, dimension, dx, dy,
-                            periodic);
+  const Grid grid =
+      grid_of(heights.shape(dimension - 1), dimension == 2 ? heights.shape(0) : 1, dimension, dx, dy, periodic);
   surface::SurfaceStatistics s;
   {
     nb::gil_scoped_release release;
@@ -227,8 +226,7 @@ nb::dict statistics(const InputArray& heights, double dx, double dy, bool period
 
 void bind_surfaces(nb::module_& module) {
   module.def("read_height_map", &read_map, nb::arg("path"), nb::arg("format"), nb::arg("dataset"), nb::arg("unit"),
-             nb::arg("window"), nb::arg("invalid"), nb::arg("detrend"), nb::arg("dx"), nb::arg("dy"),
-             nb::arg("pad"));
+             nb::arg("window"), nb::arg("invalid"), nb::arg("detrend"), nb::arg("dx"), nb::arg("dy"), nb::arg("pad"));
   module.def("prepare", &prepare_array, nb::arg("heights"), nb::arg("dx"), nb::arg("dy"), nb::arg("source"),
              nb::arg("window"), nb::arg("invalid"), nb::arg("detrend"), nb::arg("pad"));
   module.def("builtin_surface", &builtin, nb::arg("shape"), nb::arg("nx"), nb::arg("ny"), nb::arg("dimension"),
@@ -236,8 +234,7 @@ void bind_surfaces(nb::module_& module) {
   module.def("self_affine", &self_affine, nb::arg("nx"), nb::arg("ny"), nb::arg("dimension"), nb::arg("dx"),
              nb::arg("dy"), nb::arg("hurst"), nb::arg("cutoff_short"), nb::arg("rolloff"), nb::arg("cutoff_long"),
              nb::arg("rms_height").none(), nb::arg("rms_slope").none(), nb::arg("seed"));
-  module.def("surface_statistics", &statistics, nb::arg("heights"), nb::arg("dx"), nb::arg("dy"),
-             nb::arg("periodic"));
+  module.def("surface_statistics", &statistics, nb::arg("heights"), nb::arg("dx"), nb::arg("dy"), nb::arg("periodic"));
 }
 
 }  // namespace halfspace::python

@@ -30,17 +30,16 @@ SolveResult solve_surface(const Grid& grid, std::span<const double> heights, dou
   const Eigen::ArrayXd gap = initial_gap(grid, heights);
   const std::unique_ptr<ContactSolver> solver = make_solver(grid, e_star, options);
   const auto start = std::chrono::steady_clock::now();
-  SolveResult result =
-      solver->solve(std::span<const double>(gap.data(), static_cast<std::size_t>(gap.size())), loading,
-                    initial_pressure);
+  SolveResult result = solver->solve(std::span<const double>(gap.data(), static_cast<std::size_t>(gap.size())), loading,
+                                     initial_pressure);
   if (result.wall_seconds <= 0.0) {
     result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
   return result;
 }
 
-std::vector<SweepStep> sweep_surface(const Grid& grid, std::span<const double> heights, double e_star,
-                                     ControlMode mode, std::span<const double> values, const SolverOptions& options,
+std::vector<SweepStep> sweep_surface(const Grid& grid, std::span<const double> heights, double e_star, ControlMode mode,
+                                     std::span<const double> values, const SolverOptions& options,
                                      const LoadSweepOptions& sweep) {
   const Eigen::ArrayXd gap = initial_gap(grid, heights);
   const std::unique_ptr<ContactSolver> solver = make_solver(grid, e_star, options);

@@ -55,8 +55,8 @@ TEST(ResultReaderTest, ReadsBackWhatWriteResultWrote) {
   const SolveResult result = solvers::solve_surface(grid, h, 1e9, Loading::force(0.05), estimate_options());
   ASSERT_TRUE(result.converged()) << result.message;
   ResultMetadata metadata = result_metadata({1e9, ControlMode::force, 1, "test", "", "sphere", {"a", "b"}}, grid, h);
-  metadata.contact_statistics = surface::contact_statistics(grid, {result.pressure.data(), grid.size()},
-                                                            {result.gap.data(), grid.size()});
+  metadata.contact_statistics =
+      surface::contact_statistics(grid, {result.pressure.data(), grid.size()}, {result.gap.data(), grid.size()});
   write_result(dir / "r.h5", grid, h, result, metadata);
 
   const StoredResult stored = read_result(dir / "r.h5");

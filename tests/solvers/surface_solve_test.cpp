@@ -16,12 +16,10 @@ namespace {
 
 TEST(SurfaceSolveTest, EqualsTheSolverBuiltByHand) {
   const Grid grid = Grid::plane(32, 32, 1e-5, 1e-5, Boundary::free);
-  const Eigen::ArrayXd heights =
-      geometry::make_surface_heights(grid, {geometry::SurfaceShape::sphere, 0.01, 0.0, 0.0});
+  const Eigen::ArrayXd heights = geometry::make_surface_heights(grid, {geometry::SurfaceShape::sphere, 0.01, 0.0, 0.0});
   SolverOptions options;
   options.fft_planning = FftPlanning::estimate;
-  const SolveResult front_door =
-      solve_surface(grid, {heights.data(), grid.size()}, 1e9, Loading::force(0.05), options);
+  const SolveResult front_door = solve_surface(grid, {heights.data(), grid.size()}, 1e9, Loading::force(0.05), options);
   const Eigen::ArrayXd gap = geometry::initial_gap_from_heights(heights);
   const SolveResult by_hand = make_solver(grid, 1e9, options)->solve({gap.data(), grid.size()}, Loading::force(0.05));
   ASSERT_TRUE(front_door.converged());

@@ -30,8 +30,8 @@ SolveResult solve_surface(const Grid& grid, std::span<const double> heights, dou
 
 // The load sweep of run_load_sweep on the surface `heights`, with one solver
 // built for all steps. Throws as solve_surface and run_load_sweep do.
-std::vector<SweepStep> sweep_surface(const Grid& grid, std::span<const double> heights, double e_star,
-                                     ControlMode mode, std::span<const double> values, const SolverOptions& options,
+std::vector<SweepStep> sweep_surface(const Grid& grid, std::span<const double> heights, double e_star, ControlMode mode,
+                                     std::span<const double> values, const SolverOptions& options,
                                      const LoadSweepOptions& sweep = {});
 
 }  // namespace halfspace::solvers
