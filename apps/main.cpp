@@ -21,6 +21,7 @@
 #include "openmp_waiting.hpp"
 #include "paper_command.hpp"
 #include "solve_command.hpp"
+#include "stress_command.hpp"
 
 int main(int argc, char** argv) {
   // First: it may start the program again, with OMP_WAIT_POLICY=passive.
@@ -46,6 +47,7 @@ int main(int argc, char** argv) {
   commands.push_back(halfspace::app::add_solve_command(app));
   commands.push_back(halfspace::app::add_generate_command(app));
   commands.push_back(halfspace::app::add_paper_command(app));
+  commands.push_back(halfspace::app::add_stress_command(app));
 
   try {
     app.parse(argc, argv);

@@ -15,7 +15,9 @@
 #include "exit_codes.hpp"
 #include "halfspace/io/result_metadata.hpp"
 #include "halfspace/io/result_writer.hpp"
+#include "halfspace/io/stress_writer.hpp"
 #include "halfspace/solvers/surface_solve.hpp"
+#include "halfspace/stress/stress_volume.hpp"
 #include "halfspace/surface/statistics.hpp"
 #include "halfspace/threads.hpp"
 #include "plot_tool.hpp"
@@ -45,13 +47,27 @@ int run_solve(const SolveSetup& setup) {
   // solve's (docs/development-log.md).
   std::optional<Activity> activity(std::in_place, fmt::format("solving ({})", on_grid));
   const std::span<const double> heights(setup.heights.data(), static_cast<std::size_t>(setup.heights.size()));
-  const SolveResult result = solvers::solve_surface(setup.grid, heights, setup.e_star, setup.loading, settings);
+  const SolveResult result = setup.coating
+                                 ? solvers::solve_surface(setup.grid, heights, *setup.coating, setup.loading, settings)
+                                 : solvers::solve_surface(setup.grid, heights, setup.e_star, setup.loading, settings);
   progress.clear();
 
   activity.emplace(fmt::format("computing the statistics of the {} grid", setup.grid.shape_string()));
   io::ResultMetadata metadata = io::result_metadata(provenance(setup), setup.grid, heights);
+  metadata.coating = setup.coating;
   metadata.contact_statistics = surface::contact_statistics(setup.grid, {result.pressure.data(), setup.grid.size()},
                                                             {result.gap.data(), setup.grid.size()});
+  // Subsurface stresses (--stress-depths), written as the result's /stress group.
+  std::optional<stress::StressVolume> stresses;
+  if (!setup.stress_depths.empty()) {
+    activity.emplace(fmt::format("computing stresses at {} depths", setup.stress_depths.size()));
+    stresses = stress::compute_stress_volume(
+        setup.grid, std::span<const double>(result.pressure.data(), static_cast<std::size_t>(result.pressure.size())),
+        setup.stress_depths, setup.stress_nu, setup.solver.fft_planning);
+    metadata.extra_groups = [&](const io::Hdf5Node& root) {
+      io::write_stress_group(root, setup.grid, *stresses, setup.stress_nu);
+    };
+  }
   activity.emplace(fmt::format("writing {}", setup.output.string()));
   io::write_result(setup.output, setup.grid, heights, result, metadata);
 

@@ -46,9 +46,13 @@ constexpr std::string_view kSurface = "Surface (exactly one of --height-map, --g
 constexpr std::string_view kPreparation = "Height-map format and preparation (applied in this order)";
 constexpr std::string_view kGrid = "Grid";
 constexpr std::string_view kMaterial = "Material (E1, nu1, E2 and nu2, or E-star)";
+constexpr std::string_view kCoating = "Coated half-space (all five, instead of the material; the surface is rigid)";
 constexpr std::string_view kLoad = "Load (exactly one)";
+constexpr std::string_view kInterface = "Interface law";
 constexpr std::string_view kSolver = "Solver";
 constexpr std::string_view kOutput = "Output";
+constexpr std::string_view kStress = "Subsurface stresses (single solves)";
+constexpr std::string_view kAdhesion = "Adhesion (a cohesive law beside the hard wall; --approach may be negative)";
 
 const std::array kOptions{
     OptionSpec{"height-map", &SolveOptions::height_map, Kind::path, kSurface, "FILE",
@@ -88,6 +92,19 @@ const std::array kOptions{
     OptionSpec{"nu2", &SolveOptions::nu2, Kind::number, kMaterial, "NU", "Poisson's ratio of body 2"},
     OptionSpec{"E-star", &SolveOptions::e_star, Kind::number, kMaterial, "PA",
                "composite modulus E* (Pa), instead of E1, nu1, E2, nu2"},
+    // Coated half-space (docs/usage.md#coated-half-space).
+    OptionSpec{"layer-thickness", &SolveOptions::layer_thickness, Kind::number, kCoating, "M",
+               "thickness t of the elastic layer bonded to the substrate (m)"},
+    OptionSpec{"layer-E", &SolveOptions::layer_e, Kind::number, kCoating, "PA", "Young's modulus of the layer (Pa)"},
+    OptionSpec{"layer-nu", &SolveOptions::layer_nu, Kind::number, kCoating, "NU", "Poisson's ratio of the layer"},
+    OptionSpec{"substrate-E", &SolveOptions::substrate_e, Kind::number, kCoating, "PA",
+               "Young's modulus of the substrate (Pa)"},
+    OptionSpec{"substrate-nu", &SolveOptions::substrate_nu, Kind::number, kCoating, "NU",
+               "Poisson's ratio of the substrate"},
+    // Hardness cap (elastic-perfectly plastic surface, docs/theory.md#hardness-cap).
+    OptionSpec{"hardness", &SolveOptions::hardness, Kind::number, kInterface, "PA",
+               "hardness H (Pa): caps the pressure at H, cells at the cap flow plastically (every solver but lemke) "
+               "[none: elastic]"},
     OptionSpec{"force", &SolveOptions::force, Kind::numbers, kLoad, "F",
                "total normal force: N (2D) or N/m (1D); a list F1,F2,... or a log range START:STOP:COUNT "
                "solves a sweep, each step warm-started from the previous one"},
@@ -113,6 +130,22 @@ const std::array kOptions{
     OptionSpec{"max-memory", &SolveOptions::max_memory, Kind::memory, kSolver, "SIZE",
                "refuse to start when the run's estimated peak memory exceeds SIZE: bytes, or K, M, G, T (powers of "
                "1024), e.g. 512M or 8G [the memory available: MemAvailable, or a cgroup's limit if lower]"},
+    // Subsurface stresses: the /stress group of the result file.
+    OptionSpec{"stress-depths", &SolveOptions::stress_depths, Kind::text, kStress, "LIST|START:STOP:COUNT",
+               "also write the stresses below the contact at these depths (m, > 0): z1,z2,... or COUNT evenly "
+               "spaced from START to STOP"},
+    OptionSpec{"stress-nu", &SolveOptions::stress_nu, Kind::number, kStress, "NU",
+               "Poisson's ratio of the body whose stresses are wanted [nu1 when --nu1 and --nu2 are equal]"},
+    // Adhesion.
+    OptionSpec{"adhesion", &SolveOptions::adhesion, Kind::text, kAdhesion, "LAW",
+               "cohesive law: md (Maugis-Dugdale: stress sigma0 = w/h0 where 0 <= gap < h0) or exponential "
+               "(traction -(w/rho) exp(-gap/rho)); solved by the adhesive solver (adhesive-spg) [none]"},
+    OptionSpec{"work-of-adhesion", &SolveOptions::work_of_adhesion, Kind::number, kAdhesion, "W",
+               "work of adhesion w (J/m^2), required with --adhesion"},
+    OptionSpec{"adhesion-range", &SolveOptions::adhesion_range, Kind::number, kAdhesion, "M",
+               "range of the law (m): h0 for md, rho for exponential; or --adhesion-stress for md"},
+    OptionSpec{"adhesion-stress", &SolveOptions::adhesion_stress, Kind::number, kAdhesion, "PA",
+               "md only: the Dugdale stress sigma0 (Pa) instead of --adhesion-range (h0 = w / sigma0)"},
     OptionSpec{"output", &SolveOptions::output, Kind::path, kOutput, "FILE",
                "result file (HDF5), required; replaced if it exists"},
     OptionSpec{"quiet", &SolveOptions::quiet, Kind::flag, kOutput, "",
@@ -134,7 +167,10 @@ struct Alternative {
 
 const std::vector<std::vector<Alternative>> kAlternatives{
     {{{"force"}, {"force"}}, {{"mean-pressure"}, {"mean-pressure"}}, {{"approach"}, {"approach"}}},
-    {{{"E-star"}, {"E-star"}}, {{"E1", "nu1", "E2", "nu2"}, {"E1", "nu1", "E2", "nu2"}}},
+    {{{"E-star"}, {"E-star"}},
+     {{"E1", "nu1", "E2", "nu2"}, {"E1", "nu1", "E2", "nu2"}},
+     {{"layer-thickness", "layer-E", "layer-nu", "substrate-E", "substrate-nu"},
+      {"layer-thickness", "layer-E", "layer-nu", "substrate-E", "substrate-nu"}}},
     {{{"height-map"}, {"height-map", "dataset", "dx", "dy", "format", "unit", "window", "invalid", "detrend", "pad"}},
      {{"geometry"}, {"geometry", "radius", "wavelength", "amplitude", "grid", "size"}}},
 };

@@ -43,6 +43,15 @@ struct SolveOptions {
   std::optional<double> e2;
   std::optional<double> nu2;
   std::optional<double> e_star;
+  // Coated half-space (all five, instead of the material above): a layer
+  // bonded to a substrate, against a rigid surface.
+  std::optional<double> layer_thickness;
+  std::optional<double> layer_e;
+  std::optional<double> layer_nu;
+  std::optional<double> substrate_e;
+  std::optional<double> substrate_nu;
+  // Interface law: a hardness cap p <= H (Pa).
+  std::optional<double> hardness;
   // Load: exactly one; more than one value makes a load sweep.
   std::optional<std::vector<double>> force;
   std::optional<std::vector<double>> mean_pressure;
@@ -55,6 +64,14 @@ struct SolveOptions {
   std::optional<std::string> fft_planning;
   std::optional<long long> deflation_block;
   std::optional<std::string> max_memory;  // "8G", "512M" or bytes, as written
+  // Subsurface stresses written into the result (docs/usage.md#stress).
+  std::optional<std::string> stress_depths;  // "z1,z2,..." or "START:STOP:COUNT" (m), as written
+  std::optional<double> stress_nu;
+  // Adhesion (docs/usage.md#adhesion): a cohesive law beside the hard wall.
+  std::optional<std::string> adhesion;  // md or exponential
+  std::optional<double> work_of_adhesion;
+  std::optional<double> adhesion_range;
+  std::optional<double> adhesion_stress;
   // Output.
   std::optional<std::string> output;
   bool quiet = false;

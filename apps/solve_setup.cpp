@@ -27,11 +27,15 @@
 #include "halfspace/io/sweep_writer.hpp"
 #include "halfspace/material.hpp"
 #include "halfspace/memory_estimate.hpp"
+#include "halfspace/solvers/adhesion_law.hpp"
+#include "halfspace/solvers/solver_factory.hpp"
+#include "halfspace/stress/stress_volume.hpp"
 #include "halfspace/surface/padding.hpp"
 #include "halfspace/surface/preparation.hpp"
 #include "halfspace/threads.hpp"
 #include "memory_check.hpp"
 #include "physical_ranges.hpp"
+#include "stress_command.hpp"
 #include "value_parsing.hpp"
 
 namespace halfspace::app {
@@ -123,6 +127,48 @@ double material_from(const SolveOptions& o) {
                           e_star, kMinModulus, kMaxModulus, "Pa");
 }
 
+// Coated half-space: all five of --layer-thickness, --layer-E, --layer-nu,
+// --substrate-E, --substrate-nu, instead of the material options.
+std::optional<LayeredMaterial> coating_from(const SolveOptions& o) {
+  const Presence keys{{"layer-thickness", o.layer_thickness.has_value()},
+                      {"layer-E", o.layer_e.has_value()},
+                      {"layer-nu", o.layer_nu.has_value()},
+                      {"substrate-E", o.substrate_e.has_value()},
+                      {"substrate-nu", o.substrate_nu.has_value()}};
+  const std::vector<std::string> given = given_names(o, keys);
+  if (given.empty()) return std::nullopt;
+  const std::vector<std::string> material = given_names(o, {{"E-star", o.e_star.has_value()},
+                                                            {"E1", o.e1.has_value()},
+                                                            {"nu1", o.nu1.has_value()},
+                                                            {"E2", o.e2.has_value()},
+                                                            {"nu2", o.nu2.has_value()}});
+  if (!material.empty()) {
+    throw InputError(
+        fmt::format("{} cannot be combined with {}: a coated half-space (--layer-*, --substrate-*) "
+                    "against a rigid surface replaces the material options",
+                    join_names(given), join_names(material)));
+  }
+  if (given.size() < 5) {
+    std::vector<std::string> missing;
+    for (const auto& [key, present] : keys) {
+      if (!present) missing.push_back(fmt::format("--{}", key));
+    }
+    throw InputError(fmt::format(
+        "incomplete coated half-space: missing {} (give all of layer-thickness, layer-E, layer-nu, substrate-E, "
+        "substrate-nu)",
+        join_names(missing)));
+  }
+  auto poisson = [&o](std::string_view key, double nu) {
+    if (!(nu > -1.0 && nu <= 0.5)) {
+      throw InputError(fmt::format("{} is invalid: allowed range is (-1, 0.5]", o.describe(key)));
+    }
+    return nu;
+  };
+  return LayeredMaterial{require_length(o, "layer-thickness", *o.layer_thickness),
+                         {require_modulus(o, "layer-E", *o.layer_e), poisson("layer-nu", *o.layer_nu)},
+                         {require_modulus(o, "substrate-E", *o.substrate_e), poisson("substrate-nu", *o.substrate_nu)}};
+}
+
 // The load mode and every value of the load (one for a single solve, more for
 // a sweep); a single value keeps the message "--force -1 is invalid: ...".
 std::pair<Loading, std::vector<double>> loading_from(const SolveOptions& o) {
@@ -140,8 +186,15 @@ std::pair<Loading, std::vector<double>> loading_from(const SolveOptions& o) {
       o.force           ? std::tuple{"force", ControlMode::force, "N in 2D, N/m in 1D", *o.force}
       : o.mean_pressure ? std::tuple{"mean-pressure", ControlMode::mean_pressure, "Pa", *o.mean_pressure}
                         : std::tuple{"approach", ControlMode::approach, "m", *o.approach};
+  // With adhesion any finite value is a load: the approach of surfaces
+  // apart (negative), or a pull (a negative force).
+  const bool adhesive = o.adhesion.has_value();
   for (std::size_t k = 0; k < values.size(); ++k) {
-    if (values.size() == 1) {
+    if (adhesive) {
+      if (!std::isfinite(values[k])) {
+        throw InputError(fmt::format("{} is invalid: every value must be finite ({})", o.describe(key), unit));
+      }
+    } else if (values.size() == 1) {
       require_positive(o, key, values[k], unit);
     } else if (!(std::isfinite(values[k]) && values[k] > 0.0)) {
       throw InputError(fmt::format("{} is invalid: every value must be positive ({}); value {} is {}", o.describe(key),
@@ -149,7 +202,7 @@ std::pair<Loading, std::vector<double>> loading_from(const SolveOptions& o) {
     }
   }
   const Loading loading{mode, values.front()};
-  loading.validate();
+  if (!adhesive) loading.validate();
   return {loading, values};
 }
 
@@ -164,14 +217,68 @@ auto with_solver_flags(const SolveOptions& o, Function&& function) {
     const std::string_view key = option == "tolerance"             ? "tol"
                                  : option == "max_iterations"      ? "max-iter"
                                  : option.starts_with("deflation") ? "deflation-block"
-                                                                   : "solver";
+                                 : option == "hardness"            ? "hardness"
+                                 : option == "adhesion.work"       ? "work-of-adhesion"
+                                 : option == "adhesion.range"
+                                     ? (o.adhesion_stress ? "adhesion-stress" : "adhesion-range")
+                                 : option == "adhesion.tolerance" ? "tol"
+                                                                  : "solver";
     throw InputError(fmt::format("{} {}", o.describe(key), error.rule()));
   }
+}
+
+// --- Adhesion: --adhesion md|exponential with --work-of-adhesion and
+// --adhesion-range (or --adhesion-stress for md) become SolverOptions::adhesion,
+// whose validate() holds the law's rules.
+void reject_given(const SolveOptions& o, Presence keys, std::string_view reason);
+
+std::optional<solvers::SolverOptions::Adhesion> adhesion_from(const SolveOptions& o) {
+  if (!o.adhesion) {
+    reject_given(o,
+                 {{"work-of-adhesion", o.work_of_adhesion.has_value()},
+                  {"adhesion-range", o.adhesion_range.has_value()},
+                  {"adhesion-stress", o.adhesion_stress.has_value()}},
+                 "needs --adhesion md|exponential");
+    return std::nullopt;
+  }
+  const AdhesionLawType type =
+      in_context(o.name("adhesion"), [&] { return solvers::parse_adhesion_law_type(*o.adhesion); });
+  if (o.solver) {
+    throw InputError(fmt::format("{} cannot be combined with {}: adhesion has its own solver (adhesive-spg)",
+                                 o.describe("solver"), o.describe("adhesion")));
+  }
+  if (!o.work_of_adhesion)
+    throw InputError(fmt::format("{} needs --work-of-adhesion W (J/m^2)", o.describe("adhesion")));
+  if (o.adhesion_stress && type != AdhesionLawType::maugis_dugdale) {
+    throw InputError(fmt::format("{} applies only to --adhesion md; give --adhesion-range RHO (m) for {}",
+                                 o.describe("adhesion-stress"), o.describe("adhesion")));
+  }
+  if (o.adhesion_stress && o.adhesion_range) {
+    throw InputError(fmt::format("{} and {} cannot be combined: give the range h0 or the stress sigma0 = w / h0",
+                                 o.describe("adhesion-range"), o.describe("adhesion-stress")));
+  }
+  if (!o.adhesion_stress && !o.adhesion_range) {
+    throw InputError(fmt::format("{} needs --adhesion-range {} (m){}", o.describe("adhesion"),
+                                 type == AdhesionLawType::maugis_dugdale ? "H0" : "RHO",
+                                 type == AdhesionLawType::maugis_dugdale ? " or --adhesion-stress SIGMA0 (Pa)" : ""));
+  }
+  const double w = require_positive(o, "work-of-adhesion", *o.work_of_adhesion, "J/m^2");
+  solvers::SolverOptions::Adhesion adhesion;
+  if (o.adhesion_stress) {
+    const double sigma0 = require_positive(o, "adhesion-stress", *o.adhesion_stress, "Pa");
+    adhesion.law = AdhesionLaw::maugis_dugdale_from_stress(w, sigma0);
+  } else {
+    const double range = require_length(o, "adhesion-range", *o.adhesion_range);
+    adhesion.law = {type, w, range};
+  }
+  if (o.tol) adhesion.tolerance = *o.tol;
+  return adhesion;
 }
 
 solvers::SolverOptions solver_options_from(const SolveOptions& o) {
   solvers::SolverOptions solver;
   with_solver_flags(o, [&] {
+    solver.adhesion = adhesion_from(o);
     if (o.solver) solver.type = solvers::parse_solver_type(*o.solver);
     if (o.tol) solver.tolerance = *o.tol;
     // Beyond int, a limit is no limit: validate() sees the nearest int.
@@ -182,6 +289,7 @@ solvers::SolverOptions solver_options_from(const SolveOptions& o) {
           *o.deflation_block == 0 ? solvers::DeflationOptions::Mode::off : solvers::DeflationOptions::Mode::on;
       if (*o.deflation_block != 0) solver.deflation.block = static_cast<std::size_t>(*o.deflation_block);
     }
+    if (o.hardness) solver.interface_law.hardness = *o.hardness;  // hardness cap
     solver.validate();
   });
   return solver;
@@ -204,6 +312,17 @@ void check_load_scale(const SolveOptions& o, const Grid& grid, ControlMode mode,
     return values.size() == 1 ? std::string() : fmt::format(" (value {}: {:g})", k + 1, values[k]);
   };
   for (std::size_t k = 0; k < values.size(); ++k) {
+    if (o.adhesion) {
+      // Adhesive loads are signed: only their size is checked.
+      const double size = std::abs(mode == ControlMode::force ? values[k] / grid.domain_area() : values[k]);
+      const double high = mode == ControlMode::approach ? kMaxLength : kMaxMeanPressure;
+      require_in_range(o.describe(mode == ControlMode::force      ? "force"
+                                  : mode == ControlMode::approach ? "approach"
+                                                                  : "mean-pressure") +
+                           value_name(k),
+                       size, 0.0, high, mode == ControlMode::approach ? "m (in size)" : "Pa (in size)");
+      continue;
+    }
     switch (mode) {
       case ControlMode::force: {
         const double pressure = values[k] / grid.domain_area();
@@ -493,11 +612,51 @@ Surface height_map_surface(const SolveOptions& o, Boundary boundary, const GridC
   return {std::move(grid), std::move(map.heights), std::move(source), std::move(map.preparation)};
 }
 
+// Subsurface stresses (--stress-depths, --stress-nu): the depths and Poisson's
+// ratio, or none. Poisson's ratio is --stress-nu, else nu1 when the two bodies'
+// are equal (E* alone does not fix it).
+struct StressRequest {
+  std::vector<double> depths;
+  double nu = 0.0;
+};
+
+StressRequest stress_request_from(const SolveOptions& o, std::size_t load_steps) {
+  if (!o.stress_depths) {
+    if (o.stress_nu) throw InputError(fmt::format("{} needs --stress-depths", o.describe("stress-nu")));
+    return {};
+  }
+  if (load_steps > 1) {
+    throw InputError(fmt::format("{} applies to a single solve, not a load sweep: run `halfspace stress` on a step",
+                                 o.describe("stress-depths")));
+  }
+  const bool range = o.stress_depths->find(':') != std::string::npos;
+  StressRequest request;
+  request.depths =
+      parse_stress_depths(range ? nullptr : &*o.stress_depths, range ? &*o.stress_depths : nullptr, "stress-");
+  if (o.stress_nu) {
+    request.nu = parse_stress_poisson_ratio(fmt::format("{}", *o.stress_nu), "--stress-nu");
+  } else if (o.nu1 && o.nu2 && *o.nu1 == *o.nu2) {
+    request.nu = parse_stress_poisson_ratio(fmt::format("{}", *o.nu1), "--nu1");
+  } else {
+    throw InputError(missing_poisson_ratio_message("--stress-nu") + " (or equal --nu1 and --nu2)");
+  }
+  return request;
+}
+
+// The peak while the stresses are computed and written after the solve: the
+// heights and the result's fields (5 arrays) kept, and the stress volume.
+double stress_peak_memory(const Grid& grid, std::size_t depth_count) {
+  if (depth_count == 0) return 0.0;
+  return kProgramBytes + 6.0 * 8.0 * static_cast<double>(grid.size()) +
+         stress::stress_memory_estimate(grid, depth_count);
+}
+
 }  // namespace
 
 SolveSetup make_solve_setup(const SolveOptions& options) {
   check_surface_choice(options);
-  const double e_star = material_from(options);
+  const std::optional<LayeredMaterial> coating = coating_from(options);
+  const double e_star = coating ? plane_strain_modulus(coating->layer) : material_from(options);
   auto [loading, load_values] = loading_from(options);
   solvers::SolverOptions solver = solver_options_from(options);
   const int threads = threads_from(options);
@@ -509,10 +668,19 @@ SolveSetup make_solve_setup(const SolveOptions& options) {
       in_context(options.name("boundary"), [&] { return parse_boundary(options.boundary.value_or("free")); });
   fs::path output = output_from(options);
   const std::optional<MemoryLimit> limit = memory_limit(options.max_memory, options.describe("max-memory"));
+  const StressRequest stress = stress_request_from(options, load_values.size());
   const GridCheck check_grid = [&](const Grid& grid, const std::string& request) {
     check_load_scale(options, grid, loading.mode, load_values);
+    // Hardness cap: no load above H times the domain area.
+    for (const double value : load_values) {
+      in_context(options.describe(loading.mode == ControlMode::force ? "force" : "mean-pressure"), [&] {
+        solver.interface_law.check_load(grid, Loading{loading.mode, value});
+      });
+    }
     require_memory(fmt::format("{}: {}", request, solve_description(grid, solver, load_values.size())),
-                   solve_memory_estimate(grid, solver, load_values.size()), limit);
+                   std::max(solve_memory_estimate(grid, solver, load_values.size()),
+                            stress_peak_memory(grid, stress.depths.size())),
+                   limit);
   };
   check_outputs_against_inputs(options, output, load_values.size() > 1, solver.fft_planning);
 
@@ -523,6 +691,30 @@ SolveSetup make_solve_setup(const SolveOptions& options) {
                                  surface.grid.shape_string()));
   }
   with_solver_flags(options, [&] { solver.validate(surface.grid); });
+  if (coating) {
+    if (solver.type == solvers::SolverType::lemke || solver.type == solvers::SolverType::lcpquad) {
+      throw InputError(fmt::format(
+          "{} is invalid for a coated half-space (its dense matrix is the homogeneous one): allowed are pk, "
+          "pk-fourier and pk-multilevel",
+          options.describe("solver")));
+    }
+    if (surface.grid.dimension() == 1 && !surface.grid.periodic()) {
+      throw InputError(
+          "a coated half-space on a free 1D grid is not supported: pass --boundary periodic or use a "
+          "2D surface");
+    }
+    if (solver.adhesion) {
+      throw InputError(
+          fmt::format("{} is not supported for a coated half-space: the adhesive solver works on the "
+                      "homogeneous half-space",
+                      options.describe("adhesion")));
+    }
+    if (!stress.depths.empty()) {
+      throw InputError(
+          "--stress-depths is not supported for a coated half-space: the subsurface stresses are those of a "
+          "homogeneous half-space");
+    }
+  }
   return SolveSetup{std::move(surface.grid),
                     std::move(surface.heights),
                     std::move(surface.source),
@@ -536,7 +728,18 @@ SolveSetup make_solve_setup(const SolveOptions& options) {
                     options.command_line,
                     options.config_text,
                     std::move(load_values),
-                    options.plot};
+                    options.plot,
+                    stress.depths,
+                    stress.nu,
+                    coating};
+}
+
+std::string coating_text(const LayeredMaterial& coating) {
+  return fmt::format(
+      "layer t = {:.6g} m, E1 = {:.6g} Pa, nu1 = {:.6g} on substrate E2 = {:.6g} Pa, nu2 = {:.6g} "
+      "(E* above is the layer's)",
+      coating.thickness, coating.layer.youngs_modulus, coating.layer.poissons_ratio, coating.substrate.youngs_modulus,
+      coating.substrate.poissons_ratio);
 }
 
 }  // namespace halfspace::app

@@ -4,11 +4,15 @@
 
 #include <Eigen/Core>
 #include <filesystem>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "halfspace/fft/fft_planning.hpp"
 #include "halfspace/grid.hpp"
+#include "halfspace/layered_material.hpp"
+#include "halfspace/solvers/contact_solver.hpp"
 #include "halfspace/solvers/loading.hpp"
 #include "halfspace/solvers/solver_options.hpp"
 #include "solve_options.hpp"
@@ -33,7 +37,16 @@ struct SolveSetup {
   std::string config_text;
   std::vector<double> load_values;  // every load in order, in loading.mode's unit; more than one: a sweep
   bool plot = false;                // draw figures with the plotting tool after writing
+  // Subsurface stresses to write into the result: none when empty.
+  std::vector<double> stress_depths;  // m
+  double stress_nu = 0.0;
+  // A coated half-space (--layer-*, --substrate-*); e_star is then the
+  // layer's E1/(1 - nu1^2), its modulus against the rigid surface.
+  std::optional<LayeredMaterial> coating;
 };
+
+// "t = 1e-06 m, layer E1 = 3e+09 Pa, nu1 = 0.35 on substrate E2 = ... (E* is the layer's)".
+std::string coating_text(const LayeredMaterial& coating);
 
 // Applies the defaults, checks every option and their combinations, builds
 // the surface (reading the height map file, if any) and checks that the

@@ -65,6 +65,7 @@ void print_summary(std::FILE* out, const SolveSetup& setup, const SolveResult& r
   }
   row(out, "grid", grid_text(grid));
   row(out, "E*", fmt::format("{:.6g} Pa", setup.e_star));
+  if (const auto& c = setup.coating) row(out, "coating", coating_text(*c));
   row(out, "load", load_text(setup));
   const bool uses_fft = solvers::uses_fft(setup.solver.type);
   row(out, "solver",
@@ -103,6 +104,21 @@ void print_summary(std::FILE* out, const SolveSetup& setup, const SolveResult& r
   row(out, "approach", fmt::format("{:.6g} m", result.approach));
   row(out, "contact fraction",
       fmt::format("{:.6g} ({} of {} cells)", result.contact_fraction, contact_cells, grid.size()));
+  if (result.hardness) {  // hardness cap
+    const auto plastic_cells = static_cast<long long>(result.plastic_fraction * static_cast<double>(grid.size()) + 0.5);
+    row(out, "plastic fraction",
+        fmt::format("{:.6g} ({} of {} cells at the hardness {:.6g} Pa)", result.plastic_fraction, plastic_cells,
+                    grid.size(), *result.hardness));
+  }
+  if (const AdhesionRecord& a = result.adhesion; !a.law.empty()) {
+    // Adhesion: the law, and the attractive part of the pressure.
+    row(out, "adhesion",
+        fmt::format("{}, w = {:.6g} J/m^2, range {:.6g} m, stress {:.6g} Pa", a.law, a.work, a.range, a.stress));
+    row(out, "adhesive force", fmt::format("{:.6g} {}", a.adhesive_force, force_unit(grid)));
+    row(out, "interaction",
+        fmt::format("{:.6g} of the cells within range; {:.6g} in repulsive contact", a.interaction_fraction,
+                    a.repulsive_contact_fraction));
+  }
   row(out, "solve time", fmt::format("{:.3f} s", result.wall_seconds));
   row(out, "output", setup.output.string());
 }

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <cmath>
 #include <cstdio>
 #include <optional>
 #include <span>
@@ -13,6 +14,7 @@
 #include "exit_codes.hpp"
 #include "halfspace/io/result_metadata.hpp"
 #include "halfspace/io/sweep_writer.hpp"
+#include "halfspace/solvers/adhesion_sweep.hpp"
 #include "halfspace/solvers/load_sweep.hpp"
 #include "halfspace/solvers/surface_solve.hpp"
 #include "halfspace/threads.hpp"
@@ -59,10 +61,11 @@ void print_sweep_summary(std::FILE* out, const SolveSetup& setup, std::span<cons
   row("grid",
       fmt::format("{} cells ({}D), {} boundary", grid.shape_string(), grid.dimension(), to_string(grid.boundary())));
   row("E*", fmt::format("{:.6g} Pa", setup.e_star));
+  if (const auto& c = setup.coating) row("coating", coating_text(*c));
   row("load", fmt::format("{} sweep, {} steps from {:.6g} to {:.6g} {}", load_name(mode), steps.size(),
                           setup.load_values.front(), setup.load_values.back(), load_unit(mode, grid)));
   row("solver", fmt::format("{}, {} thread{}, tolerance {:.1e}", steps.front().result.solver, setup.threads,
-                            setup.threads == 1 ? "" : "s", setup.solver.tolerance));
+                            setup.threads == 1 ? "" : "s", steps.front().result.tolerance));
   fmt::print(out, "\n  {:>4}  {:>12}  {:>12}  {:>12}  {:>10}  {:>8}  {:>6}  {:>9}  {:>8}\n", "step",
              fmt::format("load ({})", load_unit(mode, grid)), "p_mean (Pa)", "approach (m)", "contact", "clusters",
              "iter", "residual", "time (s)");
@@ -74,6 +77,12 @@ void print_sweep_summary(std::FILE* out, const SolveSetup& setup, std::span<cons
                s.result.converged() ? "" : "  not converged");
   }
   fmt::print(out, "\n");
+  if (setup.solver.adhesion) {
+    const double pull_off = solvers::pull_off_force(steps);
+    row("pull-off force", std::isnan(pull_off)
+                              ? std::string("none (no unloading branch)")
+                              : fmt::format("{:.6g} {}", pull_off, grid.dimension() == 1 ? "N/m" : "N"));
+  }
   row("output", fmt::format("{} (fields per step), {} (summary table)", setup.output.string(), csv.string()));
 }
 
@@ -99,15 +108,20 @@ int run_sweep(const SolveSetup& setup) {
   settings.progress = progress.callback();
   const std::span<const double> heights(setup.heights.data(), static_cast<std::size_t>(setup.heights.size()));
   solvers::LoadSweepOptions options;
+  options.signed_loads = setup.solver.adhesion.has_value();
   options.on_step_start = [&](std::size_t step, std::size_t, const Loading& loading) {
     progress.start_step(step, describe_load(loading.mode, loading.value, setup.grid));
   };
-  const std::vector<solvers::SweepStep> steps = solvers::sweep_surface(
-      setup.grid, heights, setup.e_star, setup.loading.mode, setup.load_values, settings, options);
+  const std::vector<solvers::SweepStep> steps =
+      setup.coating ? solvers::sweep_surface(setup.grid, heights, *setup.coating, setup.loading.mode, setup.load_values,
+                                             settings, options)
+                    : solvers::sweep_surface(setup.grid, heights, setup.e_star, setup.loading.mode, setup.load_values,
+                                             settings, options);
   progress.clear();
 
-  io::write_sweep_result(setup.output, setup.grid, heights, steps,
-                         io::result_metadata(provenance(setup), setup.grid, heights));
+  io::ResultMetadata metadata = io::result_metadata(provenance(setup), setup.grid, heights);
+  metadata.coating = setup.coating;
+  io::write_sweep_result(setup.output, setup.grid, heights, steps, metadata);
   const std::filesystem::path csv = io::sweep_csv_path(setup.output);
   io::write_sweep_csv(csv, steps);
 

@@ -18,7 +18,7 @@ packages=(
   libzip-dev libpugixml-dev
   clang-14 libclang-rt-14-dev
   time
-  python3 python3-numpy python3-h5py python3-matplotlib
+  python3 python3-numpy python3-h5py python3-matplotlib python3-scipy
 )
 
 missing=()

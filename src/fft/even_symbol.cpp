@@ -4,7 +4,7 @@
 
 #include "halfspace/linalg/parallel.hpp"
 
-namespace halfspace {
+namespace halfspace::fft {
 
 void EvenSymbol::multiply(std::span<std::complex<double>> spectrum) const {
   assert(spectrum.size() == rows_ * cols_);
@@ -19,4 +19,4 @@ void EvenSymbol::multiply(std::span<std::complex<double>> spectrum) const {
   });
 }
 
-}  // namespace halfspace
+}  // namespace halfspace::fft

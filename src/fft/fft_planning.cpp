@@ -5,7 +5,7 @@
 
 #include "halfspace/error.hpp"
 
-namespace halfspace {
+namespace halfspace::fft {
 
 std::string_view to_string(FftPlanning planning) {
   switch (planning) {
@@ -26,4 +26,4 @@ FftPlanning parse_fft_planning(std::string_view text) {
   throw InputError(fmt::format("FFT planning '{}' is not known: use 'estimate', 'measure' or 'patient'", text));
 }
 
-}  // namespace halfspace
+}  // namespace halfspace::fft

@@ -24,7 +24,7 @@
 #include "halfspace/error.hpp"
 #include "halfspace/io/output_file.hpp"
 
-namespace halfspace {
+namespace halfspace::fft {
 namespace {
 
 namespace fs = std::filesystem;
@@ -212,4 +212,4 @@ void after_planning(FftPlanning planning) noexcept {
 }
 
 }  // namespace detail
-}  // namespace halfspace
+}  // namespace halfspace::fft

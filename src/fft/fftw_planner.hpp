@@ -10,7 +10,7 @@
 
 #include "halfspace/fft/fft_planning.hpp"
 
-namespace halfspace::detail {
+namespace halfspace::fft::detail {
 
 // FFTW's planner flags for `planning`.
 unsigned planner_flags(FftPlanning planning);
@@ -39,4 +39,4 @@ void init_fftw_threads();
 void before_planning(FftPlanning planning) noexcept;
 void after_planning(FftPlanning planning) noexcept;
 
-}  // namespace halfspace::detail
+}  // namespace halfspace::fft::detail

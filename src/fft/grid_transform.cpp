@@ -4,7 +4,7 @@
 
 #include "halfspace/error.hpp"
 
-namespace halfspace {
+namespace halfspace::fft {
 
 std::shared_ptr<RealFft> make_grid_transform(const Grid& grid, FftPlanning planning) {
   if (grid.dimension() == 1) return std::make_shared<RealFft>(grid.nx(), planning, FftOutput::overwrite_input);
@@ -27,4 +27,4 @@ std::shared_ptr<RealFft> checked_grid_transform(const Grid& grid, std::shared_pt
   return transform;
 }
 
-}  // namespace halfspace
+}  // namespace halfspace::fft

@@ -19,7 +19,7 @@
 #include "halfspace/linalg/parallel.hpp"
 #include "halfspace/threads.hpp"
 
-namespace halfspace {
+namespace halfspace::fft {
 
 using detail::as_fftw;
 
@@ -161,4 +161,4 @@ void PaddedRealFft::release() noexcept {
   real_ = nullptr;
 }
 
-}  // namespace halfspace
+}  // namespace halfspace::fft

@@ -19,7 +19,7 @@
 #include "halfspace/error.hpp"
 #include "halfspace/threads.hpp"
 
-namespace halfspace {
+namespace halfspace::fft {
 namespace detail {
 
 std::mutex& fftw_planner_mutex() {
@@ -243,4 +243,4 @@ void RealFft::release() noexcept {
   spectrum_ = nullptr;
 }
 
-}  // namespace halfspace
+}  // namespace halfspace::fft

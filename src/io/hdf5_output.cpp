@@ -125,7 +125,12 @@ PropertyList creation_properties(const std::vector<hsize_t>& dims) {
 
   std::vector<hsize_t> chunk(dims.size());
   chunk.back() = balanced_piece(dims.back(), kChunkElements);
-  if (dims.size() == 2) chunk[0] = balanced_piece(dims[0], std::max<hsize_t>(1, kChunkElements / chunk.back()));
+  if (dims.size() >= 2) {
+    const std::size_t row_axis = dims.size() - 2;
+    chunk[row_axis] = balanced_piece(dims[row_axis], std::max<hsize_t>(1, kChunkElements / chunk.back()));
+    // Rank 3 (the stress fields, one (ny, nx) slice per depth): one slice a chunk.
+    for (std::size_t k = 0; k < row_axis; ++k) chunk[k] = 1;
+  }
   if (H5Pset_chunk(properties.get(), static_cast<int>(chunk.size()), chunk.data()) < 0) {
     fail_hdf5("could not set the chunk shape");
   }

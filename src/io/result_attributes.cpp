@@ -13,12 +13,15 @@ using Number = double (*)(const SolveResult&);
 using Integer = std::int64_t (*)(const SolveResult&);
 using Text = std::string (*)(const SolveResult&);
 
-const std::array<ResultAttribute, 23> kResultAttributes{{
+const std::array<ResultAttribute, 25> kResultAttributes{{
     {"total_force", "N (N/m in 1D)", Number{[](const SolveResult& r) { return r.total_force; }}},
     {"mean_pressure", "Pa", Number{[](const SolveResult& r) { return r.mean_pressure; }}},
     {"approach", "m", Number{[](const SolveResult& r) { return r.approach; }}},
     {"contact_fraction", "", Number{[](const SolveResult& r) { return r.contact_fraction; }}},
     {"max_pressure", "Pa", Number{[](const SolveResult& r) { return r.max_pressure; }}},
+    // Hardness cap: H (0 for none) and the cells at it over all cells.
+    {"hardness", "Pa", Number{[](const SolveResult& r) { return r.hardness.value_or(0.0); }}},
+    {"plastic_fraction", "", Number{[](const SolveResult& r) { return r.plastic_fraction; }}},
     {"solver", "", Text{[](const SolveResult& r) { return r.solver; }}},
     {"status", "", Text{[](const SolveResult& r) { return std::string(to_string(r.status)); }}},
     {"message", "", Text{[](const SolveResult& r) { return r.message; }}},
@@ -60,6 +63,18 @@ void write_result_attributes(const Hdf5Node& node, const SolveResult& result, st
       node.write_string_attribute(name, std::get<Text>(attribute.value)(result));
     }
   }
+  // Adhesion: written only for adhesive solves, so other files keep their
+  // attributes (docs/file-format.md#adhesion).
+  if (const AdhesionRecord& a = result.adhesion; !a.law.empty()) {
+    const auto named = [&](std::string_view base) { return std::string(prefix) + std::string(base); };
+    node.write_string_attribute(named("adhesion_law"), a.law);
+    node.write_double_attribute(named("work_of_adhesion"), a.work);
+    node.write_double_attribute(named("adhesion_range"), a.range);
+    node.write_double_attribute(named("adhesion_stress"), a.stress);
+    node.write_double_attribute(named("adhesive_force"), a.adhesive_force);
+    node.write_double_attribute(named("interaction_fraction"), a.interaction_fraction);
+    node.write_double_attribute(named("repulsive_contact_fraction"), a.repulsive_contact_fraction);
+  }
 }
 
 void write_contact_statistics_attributes(const Hdf5Node& node, const surface::ContactStatistics& statistics) {
@@ -67,6 +82,15 @@ void write_contact_statistics_attributes(const Hdf5Node& node, const surface::Co
   node.write_double_attribute("rms_gap", statistics.rms_gap);
   node.write_double_attribute("free_volume", statistics.free_volume);
   node.write_int64_attribute("clusters", statistics.clusters());
+}
+
+// Coated half-space (docs/file-format.md#root-attributes).
+void write_coating_attributes(const Hdf5Node& node, const LayeredMaterial& coating) {
+  node.write_double_attribute("layer_thickness", coating.thickness);
+  node.write_double_attribute("layer_E", coating.layer.youngs_modulus);
+  node.write_double_attribute("layer_nu", coating.layer.poissons_ratio);
+  node.write_double_attribute("substrate_E", coating.substrate.youngs_modulus);
+  node.write_double_attribute("substrate_nu", coating.substrate.poissons_ratio);
 }
 
 }  // namespace halfspace::io

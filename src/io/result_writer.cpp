@@ -13,6 +13,7 @@
 #include "halfspace/error.hpp"
 #include "halfspace/io/hdf5_output.hpp"
 #include "halfspace/io/result_attributes.hpp"
+#include "halfspace/solvers/interface_law.hpp"
 #include "halfspace/version.hpp"
 
 namespace halfspace::io {
@@ -42,10 +43,24 @@ void write_result_fields(const Hdf5Node& node, const Grid& grid, const SolveResu
   node.write_dataset("gap", shape, values(result.gap), "m");
   node.write_dataset("displacement", shape, values(result.displacement), "m");
   std::vector<std::uint8_t> contact(grid.size());
+  // Adhesive results: contact is the wall (gap 0), where the pressure may
+  // be negative; otherwise the cells with pressure.
+  const bool adhesive = !result.adhesion.law.empty();
   for (std::size_t k = 0; k < contact.size(); ++k) {
-    contact[k] = result.pressure[static_cast<Eigen::Index>(k)] > 0.0 ? 1 : 0;
+    const auto i = static_cast<Eigen::Index>(k);
+    contact[k] = (adhesive ? result.gap[i] <= 0.0 : result.pressure[i] > 0.0) ? 1 : 0;
   }
   node.write_dataset("contact", shape, std::span<const std::uint8_t>(contact), "1");
+  if (result.hardness) {
+    // Hardness cap: the cells at it, and the plastic displacement
+    // (interface_law.hpp, docs/theory.md#hardness-cap).
+    const std::span<const double> pressure = values(result.pressure);
+    const auto plastic = solvers::plastic_cells(pressure, result.hardness);
+    node.write_dataset("plastic", shape, std::span<const std::uint8_t>(plastic.data(), grid.size()), "1");
+    const Eigen::ArrayXd plastic_displacement =
+        solvers::plastic_displacement(pressure, values(result.gap), result.hardness);
+    node.write_dataset("plastic_displacement", shape, values(plastic_displacement), "m");
+  }
   node.write_dataset("residual_history", {result.residual_history.size()},
                      std::span<const double>(result.residual_history), "");
 }
@@ -63,6 +78,7 @@ void write_result_root_attributes(const Hdf5Node& root, const Grid& grid, const 
   root.write_double_attribute("dy", grid.dimension() == 1 ? 0.0 : grid.dy());
   root.write_string_attribute("boundary", to_string(grid.boundary()));
   root.write_double_attribute("E_star", metadata.e_star);
+  if (metadata.coating) write_coating_attributes(root, *metadata.coating);
   root.write_string_attribute("load_mode", metadata.load_mode);
 
   write_result_attributes(root, result);
@@ -90,6 +106,7 @@ void write_result(const std::filesystem::path& path, const Grid& grid, std::span
     root.write_dataset("height", field_shape(grid), height, "m");
     write_result_fields(root, grid, result);
     write_result_root_attributes(root, grid, result, metadata);
+    if (metadata.extra_groups) metadata.extra_groups(root);
   });
 }
 

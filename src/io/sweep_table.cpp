@@ -22,6 +22,8 @@ constexpr std::array kColumns{
     SummaryColumn{"approach", "m", "rigid-body approach", [](const SweepStep& s) { return s.result.approach; }},
     SummaryColumn{"contact_fraction", "1", "cells with pressure > 0 over all cells",
                   [](const SweepStep& s) { return s.statistics.contact_fraction; }},
+    SummaryColumn{"plastic_fraction", "1", "cells at the hardness cap over all cells (0 without a cap)",
+                  [](const SweepStep& s) { return s.result.plastic_fraction; }},
     SummaryColumn{"mean_gap", "m", "mean gap over all cells", [](const SweepStep& s) { return s.statistics.mean_gap; }},
     SummaryColumn{"rms_gap", "m", "root mean square gap over all cells",
                   [](const SweepStep& s) { return s.statistics.rms_gap; }},

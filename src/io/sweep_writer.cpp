@@ -15,6 +15,7 @@
 #include "halfspace/io/output_file.hpp"
 #include "halfspace/io/result_attributes.hpp"
 #include "halfspace/io/sweep_table.hpp"
+#include "halfspace/solvers/adhesion_sweep.hpp"
 #include "hdf5_writing.hpp"
 
 namespace halfspace::io {
@@ -95,6 +96,10 @@ void write_sweep_result(const std::filesystem::path& path, const Grid& grid, std
     write_summary_table(root, grid, steps, metadata.load_mode);
     write_result_root_attributes(root, grid, steps.back().result, root_metadata);
     root.write_int64_attribute("sweep_steps", static_cast<std::int64_t>(steps.size()));
+    // Adhesive sweeps: the pull-off force of the unloading branch (NaN without one).
+    if (!steps.front().result.adhesion.law.empty()) {
+      root.write_double_attribute("pull_off_force", solvers::pull_off_force(steps));
+    }
   });
 }
 

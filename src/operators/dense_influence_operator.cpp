@@ -18,7 +18,7 @@
 #include "halfspace/linalg/parallel.hpp"
 #include "halfspace/material.hpp"
 
-namespace halfspace {
+namespace halfspace::operators {
 namespace {
 
 std::string memory_string(double bytes) {
@@ -167,4 +167,4 @@ void DenseInfluenceOperator::apply(std::span<const double> pressure, std::span<d
   u.noalias() = matrix_ * p;
 }
 
-}  // namespace halfspace
+}  // namespace halfspace::operators

@@ -12,6 +12,7 @@
 #include "halfspace/error.hpp"
 #include "halfspace/material.hpp"
 #include "halfspace/operators/dense_influence_operator.hpp"
+#include "halfspace/solvers/interface_law.hpp"
 
 namespace halfspace::solvers {
 namespace {
@@ -59,6 +60,7 @@ void DenseContactOptions::validate() const {
     throw InputError(
         fmt::format("pressure unit = {} Pa is invalid: must be finite and >= 0 (0: automatic)", units.pressure));
   }
+  InterfaceLaw{hardness}.validate();
 }
 
 void check_dense_grid(const Grid& grid, std::string_view solver) {
@@ -88,6 +90,7 @@ ContactLcp make_contact_lcp(const Grid& grid, double e_star, const Eigen::Matrix
   for (double g : initial_gap) {
     if (!std::isfinite(g)) throw InputError("initial gap holds a non-finite value");
   }
+  InterfaceLaw{options.hardness}.check_load(grid, loading);
   if (grid.periodic() && !loading.load_controlled()) {
     // As for Polonsky-Keer: with zero-mean displacements the mean gap is
     // mean(g0) - approach, which cannot be negative.
@@ -124,18 +127,21 @@ ContactLcp make_contact_lcp(const Grid& grid, double e_star, const Eigen::Matrix
     lcp.equality_row = Eigen::VectorXd::Ones(size);
     lcp.equality_value = loading.target_force(grid.domain_area()) / (grid.cell_area() * contact.pressure_unit);
   }
+  if (options.hardness) lcp.upper_bound = Eigen::VectorXd::Constant(size, *options.hardness / contact.pressure_unit);
   return contact;
 }
 
 double contact_residual(std::span<const double> initial_gap, const Eigen::ArrayXd& pressure,
-                        const Eigen::ArrayXd& displacement, const Eigen::ArrayXd& gap, double uniform_response_range) {
+                        const Eigen::ArrayXd& displacement, const Eigen::ArrayXd& gap, double uniform_response_range,
+                        std::optional<double> hardness) {
   const auto cells = static_cast<double>(pressure.size());
   const auto [g0_min, g0_max] = std::minmax_element(initial_gap.begin(), initial_gap.end());
   const double pressure_mean = pressure.sum() / cells;
   const double gap_scale = (*g0_max - *g0_min) + std::max(displacement.maxCoeff() - displacement.minCoeff(),
                                                           pressure_mean * uniform_response_range);
-  const double weighted_gap = (pressure * gap.abs()).sum();
-  const double overlap = (-gap).max(0.0).sum();
+  const double weighted_gap = hardness ? (pressure * gap.max(0.0)).sum() : (pressure * gap.abs()).sum();
+  const double overlap =
+      hardness ? (((*hardness - pressure) / *hardness) * (-gap).max(0.0)).sum() : (-gap).max(0.0).sum();
   const double numerator = (pressure_mean > 0.0 ? weighted_gap / pressure_mean : 0.0) + overlap;
   return numerator == 0.0 ? 0.0 : numerator / (cells * gap_scale);
 }
@@ -180,9 +186,13 @@ SolveResult DenseContactSolver::solve(std::span<const double> initial_gap, const
   // Lemke; an interior-point iterate is positive in both, and this picks the
   // side of the complementarity each cell converged to.
   result.pressure.resize(n);
+  // With a cap, the same at the upper bound: a cell is at the cap when its
+  // distance to it is below its overlap -w.
+  const bool capped = last_lcp_.lcp.has_upper_bound();
   for (Eigen::Index i = 0; i < n; ++i) {
     const double z = lcp.z[i];
     result.pressure[i] = z > 0.0 && z > lcp.w[i] ? z * last_lcp_.pressure_unit : 0.0;
+    if (capped && last_lcp_.lcp.upper_bound[i] - z < -lcp.w[i]) result.pressure[i] = *options_.hardness;
   }
   result.approach = loading.load_controlled() ? lcp.multiplier * last_lcp_.gap_unit : loading.value;
   result.displacement = (influence_ * result.pressure.matrix()).array();
@@ -194,9 +204,14 @@ SolveResult DenseContactSolver::solve(std::span<const double> initial_gap, const
   result.mean_pressure = result.total_force / grid_.domain_area();
   result.max_pressure = result.pressure.maxCoeff();
   result.contact_fraction = static_cast<double>((result.pressure > 0.0).count()) / static_cast<double>(n);
+  if (capped) {
+    result.hardness = options_.hardness;
+    result.plastic_fraction =
+        static_cast<double>((result.pressure >= *options_.hardness).count()) / static_cast<double>(n);
+  }
   const Eigen::VectorXd uniform_response = influence_.rowwise().sum();  // K 1
   result.residual = contact_residual(initial_gap, result.pressure, result.displacement, result.gap,
-                                     uniform_response.maxCoeff() - uniform_response.minCoeff());
+                                     uniform_response.maxCoeff() - uniform_response.minCoeff(), options_.hardness);
   result.residual_history = {result.residual};
 
   switch (lcp.status) {

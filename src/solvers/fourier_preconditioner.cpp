@@ -1,7 +1,8 @@
 // Fourier preconditioner for Polonsky-Keer: multiply the spectrum by E*|q|/2,
 // the symbol of the inverse half-space operator (Stanley & Kato 1997 give the
 // forward symbol 2/(E*|q|)). Because K acts like a half-order integral, this
-// removes the growth of its condition number with the grid size.
+// removes the growth of its condition number with the grid size. A coated
+// half-space gets the inverse of its own kernel, E1*|q| / (2 M(q t)).
 #include "halfspace/solvers/fourier_preconditioner.hpp"
 
 #include <cassert>
@@ -9,45 +10,58 @@
 #include <complex>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <utility>
 #include <vector>
 
 #include "halfspace/fft/even_symbol.hpp"
 #include "halfspace/fft/grid_transform.hpp"
 #include "halfspace/fft/real_fft.hpp"
+#include "halfspace/kernels/layered_fourier.hpp"
 #include "halfspace/kernels/periodic_fourier.hpp"
 #include "halfspace/linalg/parallel.hpp"
 #include "halfspace/material.hpp"
 
 namespace halfspace::solvers {
 struct FourierPreconditioner::Impl {
-  Impl(const Grid& g, double e_star, std::shared_ptr<RealFft> shared)
+  Impl(const Grid& g, double e_star, const std::optional<kernels::LayeredKernel>& layered,
+       std::shared_ptr<RealFft> shared)
       : grid(g), transform(std::move(shared)), fft(*transform), symbol(fft.rows(), fft.spectrum_cols()) {
     // FFTW's transforms are unnormalised: fold 1/N into the symbol.
-    const double scale = 0.5 * e_star / static_cast<double>(grid.size());
+    const double n = static_cast<double>(grid.size());
+    const double scale = 0.5 * e_star / n;
+    auto inverse_kernel = [&](double q) { return layered ? 1.0 / (layered->spectrum(q) * n) : q * scale; };
     double q_min = std::numeric_limits<double>::infinity();
     for (std::size_t r = 0; r < symbol.stored_rows(); ++r) {
       const double qy = grid.dimension() == 1 ? 0.0 : kernels::dft_wavenumber(r, grid.ny(), grid.dy());
       for (std::size_t c = 0; c < symbol.cols(); ++c) {
         const double q = std::hypot(kernels::dft_wavenumber(c, grid.nx(), grid.dx()), qy);
-        symbol.at(r, c) = q * scale;
-        if (q > 0.0) q_min = std::min(q_min, q);
+        if (q > 0.0) {
+          symbol.at(r, c) = inverse_kernel(q);
+          q_min = std::min(q_min, q);
+        }
       }
     }
-    symbol.at(0, 0) = q_min * scale;
+    symbol.at(0, 0) = inverse_kernel(q_min);
   }
 
   Grid grid;
   std::shared_ptr<RealFft> transform;  // own, or shared with the operator
   RealFft& fft;
-  EvenSymbol symbol;  // E*|q|/(2N), rows folded (even in qy)
+  EvenSymbol symbol;  // E*|q|/(2N) or its layered form, rows folded (even in qy)
 };
 
 FourierPreconditioner::FourierPreconditioner(const Grid& grid, double e_star, FftPlanning planning)
-    : impl_(std::make_unique<Impl>(grid, checked_composite_modulus(e_star), make_grid_transform(grid, planning))) {}
+    : impl_(std::make_unique<Impl>(grid, checked_composite_modulus(e_star), std::nullopt,
+                                   make_grid_transform(grid, planning))) {}
 
 FourierPreconditioner::FourierPreconditioner(const Grid& grid, double e_star, std::shared_ptr<RealFft> transform)
-    : impl_(std::make_unique<Impl>(grid, checked_composite_modulus(e_star),
+    : impl_(std::make_unique<Impl>(grid, checked_composite_modulus(e_star), std::nullopt,
+                                   checked_grid_transform(grid, std::move(transform), "FourierPreconditioner"))) {}
+
+FourierPreconditioner::FourierPreconditioner(const Grid& grid, const LayeredMaterial& material,
+                                             std::shared_ptr<RealFft> transform)
+    : impl_(std::make_unique<Impl>(grid, 1.0, kernels::LayeredKernel(material),
                                    checked_grid_transform(grid, std::move(transform), "FourierPreconditioner"))) {}
 
 FourierPreconditioner::~FourierPreconditioner() = default;

@@ -25,6 +25,14 @@ void LcpProblem::validate() const {
   if (has_equality() && !(equality_row.allFinite() && std::isfinite(equality_value))) {
     throw InputError("LCP: the equality a' z = b holds a non-finite value");
   }
+  if (has_upper_bound()) {
+    if (upper_bound.size() != n) {
+      throw InputError(fmt::format("LCP: the upper bound u has {} entries but q has {}", upper_bound.size(), n));
+    }
+    if (!(upper_bound.allFinite() && (upper_bound.array() > 0.0).all())) {
+      throw InputError("LCP: the upper bound u must be finite and positive");
+    }
+  }
 }
 
 std::string_view to_string(LcpStatus status) {

@@ -77,6 +77,11 @@ void LemkeOptions::validate() const {
 LcpSolution solve_lcp_lemke(const LcpProblem& problem, const LemkeOptions& options) {
   problem.validate();
   options.validate();
+  if (problem.has_upper_bound()) {
+    throw InputError(
+        "Lemke's method solves the plain LCP and takes no upper bound on z (a hardness cap): use LCPquad "
+        "(solve_lcp_quad, solver 'lcpquad') for the box-constrained LCP");
+  }
   const auto start = std::chrono::steady_clock::now();
   PlainLcp plain = plain_lcp(problem);
   const auto size = static_cast<int>(plain.offset.size());

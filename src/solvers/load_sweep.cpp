@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 #include "halfspace/error.hpp"
 
 namespace halfspace::solvers {
@@ -19,7 +21,11 @@ std::vector<SweepStep> run_load_sweep(ContactSolver& solver, const Grid& grid, s
   std::vector<Loading> loads;
   for (const double value : values) {
     const Loading loading{mode, value};
-    loading.validate();
+    if (!options.signed_loads) {
+      loading.validate();
+    } else if (!std::isfinite(value)) {
+      throw InputError(fmt::format("{} = {} is invalid: must be finite", to_string(mode), value));
+    }
     loads.push_back(loading);
   }
   if (mode == ControlMode::approach && grid.periodic()) {

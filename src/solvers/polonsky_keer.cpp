@@ -10,10 +10,13 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <limits>
+#include <optional>
 #include <utility>
 
 #include "halfspace/error.hpp"
 #include "halfspace/linalg/parallel.hpp"
+#include "halfspace/solvers/interface_law.hpp"
 #include "halfspace/solvers/pressure_bounds.hpp"
 
 namespace halfspace::solvers {
@@ -31,6 +34,8 @@ constexpr int kUpdatesBetweenExactProducts = 50;
 constexpr double kPowellRestart = 0.2;
 constexpr double kEntriesKept = 0.01;
 
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
 struct Problem {
   std::span<const double> initial_gap;
   bool load_controlled = false;
@@ -47,10 +52,12 @@ void check_size(std::string_view what, std::size_t got, std::size_t expected) {
 }
 
 // The problem of a solve, checked.
-Problem make_problem(const Grid& grid, std::span<const double> initial_gap, const Loading& loading) {
+Problem make_problem(const Grid& grid, std::span<const double> initial_gap, const Loading& loading,
+                     const PressureBounds& bounds) {
   const std::size_t n = grid.size();
   check_size("initial gap", initial_gap.size(), n);
   loading.validate();
+  if (bounds.capped()) InterfaceLaw{bounds.upper}.check_load(grid, loading);
   const double gap_max = linalg::max_of(n, [&](std::size_t i) { return initial_gap[i]; });
   const double gap_min = linalg::min_of(n, [&](std::size_t i) { return initial_gap[i]; });
   if (!std::isfinite(gap_max) || !std::isfinite(gap_min)) {
@@ -97,7 +104,14 @@ class Iteration {
         t_(direction.data()),
         r_(image.data()),
         projected_(options.form == PolonskyKeerForm::projected),
-        set_{p_, g_, projected_, problem.load_controlled && projected_},
+        // With a cap the paper's form searches the projected set too: its
+        // entries alone stall once the cells below the cap are too few to
+        // move the load among them (the mean-free direction on one cell is
+        // zero), and its set holds the cells leaving the cap, whose gaps the
+        // approach (the mean over the contact below the cap) does not balance.
+        set_{p_, g_, projected_ || options.bounds.capped(),
+             problem.load_controlled && (projected_ || options.bounds.capped()), options.bounds.upper},
+        bounds_(options.bounds),
         uniform_response_range_(uniform_response_range),
         approach_(problem.approach) {
     if (uniform_response_range_ < 0.0) {
@@ -123,8 +137,17 @@ class Iteration {
         for_each_index(n_, [&](std::size_t i) { p_[i] = 1.0; });
         force = problem_.cell_area * static_cast<double>(n_);
       }
-      const double scale = problem_.target_force / force;
-      for_each_index(n_, [&](std::size_t i) { p_[i] *= scale; });
+      double scale = problem_.target_force / force;
+      if (bounds_.capped()) {
+        // Scaled and capped; a start too concentrated to carry the load
+        // below the cap gives way to the uniform pressure, which does.
+        const std::optional<double> capped =
+            capped_scale([&](std::size_t i) { return p_[i]; }, force / problem_.cell_area);
+        if (!capped) for_each_index(n_, [&](std::size_t i) { p_[i] = 1.0; });
+        scale = capped ? *capped : problem_.target_force / (problem_.cell_area * static_cast<double>(n_));
+      }
+      const double upper = bounds_.upper;
+      for_each_index(n_, [&](std::size_t i) { p_[i] = std::min(p_[i] * scale, upper); });
     } else if (!warm) {
       for_each_index(n_, [&](std::size_t i) { g_[i] = problem_.initial_gap[i] - problem_.approach; });
       local_overlap_pressure();
@@ -180,7 +203,7 @@ class Iteration {
   // g z. An adapting M^-1 that changed restarts the conjugate directions.
   void precondition() {
     z_ = g_;
-    if (!projected_) {
+    if (!projected_ && !set_.mean_free) {
       search_cells_ = contact_cells_;
       search_gap_sum_ = 0.0;
       z_mean_ = 0.0;
@@ -208,6 +231,9 @@ class Iteration {
   // t = z when restarting.
   void conjugate() {
     if (projected_ && !(std::abs(gap_along_direction_) <= kPowellRestart * search_norm_)) conjugate_ = false;
+    // The paper's form restarts whenever its set grows: cells leaving the
+    // cap join it as entering cells do.
+    if (!projected_ && released_cells_ > 0.0) conjugate_ = false;
     const double beta = conjugate_ ? search_norm_ / previous_norm_ : 0.0;
     const double* z = z_;
     const double z_mean = z_mean_;
@@ -246,6 +272,10 @@ class Iteration {
   // addition of K c and the scaling are left to the next evaluation's first
   // pass (Deferred).
   void advance() {
+    if (bounds_.capped()) {
+      advance_capped();
+      return;
+    }
     const bool entries = !projected_;
     const double tau = tau_;
     const auto [new_pressure_sum, entered, corrected] = sums<3>(n_, [&](std::size_t i) {
@@ -274,12 +304,81 @@ class Iteration {
     if (problem_.load_controlled) deferred_.scale = problem_.target_force / (problem_.cell_area * new_pressure_sum);
   }
 
+  // Steps 6-9 with a hardness cap: p = P(p - tau t) onto [0, H], entries
+  // as above. Under load control scaling alone would lift capped cells
+  // above H, so the load is restored by the capped scaling min(H, s p) with
+  // s from capped_scale. Its p is stored as min(H/s, p) and scaled by s in
+  // the next evaluation (Deferred, which puts it back on the cap exactly),
+  // so that the correction c and K c stay exact. A step that leaves too few
+  // cells in contact to carry the load at the cap fills the deficit into
+  // the interpenetrating cells (or, if they cannot take it, all cells out of
+  // contact) and restarts the conjugate directions.
+  void advance_capped() {
+    const bool entries = !projected_;
+    const double tau = tau_;
+    const double upper = bounds_.upper;
+    auto lower = [&](std::size_t i, double moved) {
+      double pi = std::max(moved, bounds_.lower);
+      if (entries && pi == 0.0 && g_[i] < 0.0 && tau > 0.0) pi = -tau * g_[i];
+      return pi;
+    };
+    double scale = 1.0;
+    double fill = 0.0;               // pressure of each filled cell
+    double fill_below = -kInfinity;  // the filled cells: out of contact with a gap below this
+    bool filled = false;
+    if (problem_.load_controlled) {
+      const double target_sum = problem_.target_force / problem_.cell_area;
+      const auto [pre_sum, positive] = sums<2>(n_, [&](std::size_t i) {
+        const double pi = lower(i, p_[i] - tau * t_[i]);
+        return std::array<double, 2>{pi, pi > 0.0 ? 1.0 : 0.0};
+      });
+      const std::optional<double> capped =
+          capped_scale([&](std::size_t i) { return lower(i, p_[i] - tau * t_[i]); }, pre_sum);
+      if (capped) {
+        scale = *capped;
+      } else {
+        // The cells at the cap cannot carry the load: the next cells to
+        // touch, those out of contact with the smallest gaps, take the rest.
+        filled = true;
+        const double deficit = target_sum - upper * positive;
+        const auto [below, count] = smallest_gaps([&](std::size_t i) { return lower(i, p_[i] - tau * t_[i]) == 0.0; },
+                                                  std::ceil(deficit / upper));
+        fill_below = below;
+        fill = deficit / count;
+      }
+    }
+    const double stored_upper = upper / scale;
+    const auto [entered, corrected, reached_cap] = sums<3>(n_, [&](std::size_t i) {
+      const double moved = p_[i] - tau * t_[i];
+      const double pre = lower(i, moved);
+      double pi = std::min(pre, stored_upper);
+      if (filled) pi = pre > 0.0 ? upper : (g_[i] < fill_below ? fill : 0.0);
+      const double entry = entries && moved <= 0.0 && pre > 0.0 ? 1.0 : 0.0;
+      p_[i] = pi;
+      u_[i] -= tau * r_[i];
+      r_[i] = pi - moved;
+      return std::array<double, 3>{entry, r_[i] != 0.0 ? 1.0 : 0.0, pre > stored_upper ? 1.0 : 0.0};
+    });
+    const double entries_kept = projected_ ? kEntriesKept * contact_cells_ : 0.0;
+    conjugate_ = entered <= entries_kept && tau > 0.0 && !filled && (projected_ || reached_cap == 0.0);
+    if (preconditioner_) preconditioner_->observe_step({corrected, search_cells_});
+    if (corrected > 0.0) {
+      op_.apply({r_, n_}, {g_, n_});
+      ++result_.operator_applications;
+      deferred_.add_correction = true;
+    }
+    ++updates_since_exact_;
+    deferred_.scale = scale;
+  }
+
   // The result's summary of the final iterate, whose displacement and gap
   // are current.
   void summarise(int iterations) {
-    const auto [pressure_total, contact_total] = sums<2>(n_, [&](std::size_t i) {
-      return std::array<double, 2>{p_[i], p_[i] > 0.0 ? 1.0 : 0.0};
+    const auto [pressure_total, contact_total, plastic_total] = sums<3>(n_, [&](std::size_t i) {
+      return std::array<double, 3>{p_[i], p_[i] > 0.0 ? 1.0 : 0.0, bounds_.at_cap(p_[i]) ? 1.0 : 0.0};
     });
+    if (bounds_.capped()) result_.hardness = bounds_.upper;
+    result_.plastic_fraction = plastic_total / static_cast<double>(n_);
     const Grid& grid = op_.grid();
     result_.iterations = iterations;
     result_.residual = residual_;
@@ -300,17 +399,74 @@ class Iteration {
   };
 
   // Starting pressure from the overlap in g: each cell pushed in by the
-  // local overlap alone, p = max(-g, 0) / K_ii.
+  // local overlap alone, p = max(-g, 0) / K_ii, projected onto the bounds.
   void local_overlap_pressure() {
     const double self_influence = op_.self_influence();
-    for_each_index(n_, [&](std::size_t i) { p_[i] = std::max(-g_[i], 0.0) / self_influence; });
+    for_each_index(n_, [&](std::size_t i) { p_[i] = bounds_.project(std::max(-g_[i], 0.0) / self_influence); });
+  }
+
+  // The bound b such that `wanted` cells or a few more (ties) of those with
+  // candidate(i) have a gap below it, by bisection over the gaps (a pass per
+  // step, about 60 at most), and the number of them.
+  template <class Candidate>
+  std::pair<double, double> smallest_gaps(Candidate&& candidate, double wanted) const {
+    auto count_below = [&](double bound) {
+      return linalg::sum(n_, [&](std::size_t i) { return candidate(i) && g_[i] < bound ? 1.0 : 0.0; });
+    };
+    const double candidates = count_below(kInfinity);
+    wanted = std::min(wanted, candidates);
+    // count_below(low) < wanted <= count_below(high) = candidates.
+    double low = linalg::min_of(n_, [&](std::size_t i) { return candidate(i) ? g_[i] : kInfinity; });
+    double high =
+        std::nextafter(linalg::max_of(n_, [&](std::size_t i) { return candidate(i) ? g_[i] : -kInfinity; }), kInfinity);
+    double count = candidates;
+    constexpr int kMaxPasses = 64;
+    for (int pass = 0; pass < kMaxPasses && count != wanted; ++pass) {
+      const double middle = 0.5 * (low + high);
+      if (!(middle > low && middle < high)) break;
+      const double below = count_below(middle);
+      if (below >= wanted) {
+        high = middle;
+        count = below;
+      } else {
+        low = middle;
+      }
+    }
+    return {high, count};
+  }
+
+  // The factor s with sum_i min(H, s q_i) = target force / cell area, for
+  // the pressures q_i = pressure(i) >= 0 summing to `pressure_sum`: the
+  // load restored by scaling, with the cap. The capped sum is concave and
+  // piecewise linear in s, so Newton's method from the uncapped factor
+  // (which lies below the root) rises monotonically to the root and meets
+  // it exactly once the capped cells stop changing, in a few passes. None
+  // if the load exceeds H times the cells with q_i > 0.
+  template <class Pressure>
+  std::optional<double> capped_scale(Pressure&& pressure, double pressure_sum) const {
+    const double target_sum = problem_.target_force / problem_.cell_area;
+    const double upper = bounds_.upper;
+    double scale = target_sum / pressure_sum;
+    if (scale * linalg::max_of(n_, [&](std::size_t i) { return pressure(i); }) <= upper) return scale;
+    constexpr int kMaxPasses = 100;
+    for (int pass = 0; pass < kMaxPasses; ++pass) {
+      const auto [force_sum, slope] = sums<2>(n_, [&](std::size_t i) {
+        const double q = pressure(i);
+        return scale * q < upper ? std::array<double, 2>{scale * q, q} : std::array<double, 2>{upper, 0.0};
+      });
+      const double shortfall = target_sum - force_sum;
+      if (shortfall <= 1e-15 * target_sum) return scale;
+      if (!(slope > 0.0)) return std::nullopt;  // every loaded cell at the cap, and still short
+      scale += shortfall / slope;
+    }
+    return scale;
   }
 
   // u = K p afresh, after the deferred scale of p (K c is superseded).
   void exact_displacement() {
     if (deferred_.scale != 1.0) {
       const double scale = deferred_.scale;
-      for_each_index(n_, [&](std::size_t i) { p_[i] *= scale; });
+      for_each_index(n_, [&](std::size_t i) { p_[i] = bounds_.snap(p_[i] * scale); });
     }
     deferred_ = {};
     op_.apply({p_, n_}, {u_, n_});
@@ -326,33 +482,55 @@ class Iteration {
     const Deferred deferred = std::exchange(deferred_, Deferred{});
     const double scale = deferred.scale;
     const bool add = deferred.add_correction;
-    const auto settled = linalg::sums_and_range<2>(n_, [&](std::size_t i) {
+    const auto settled = linalg::sums_and_range<3>(n_, [&](std::size_t i) {
       double ui = u_[i];
       double pi = p_[i];
       if (add) ui += g_[i];
       if (scale != 1.0) {
         ui *= scale;
-        pi *= scale;
+        pi = bounds_.snap(pi * scale);
       }
       if (add || scale != 1.0) {
         u_[i] = ui;
         p_[i] = pi;
       }
       const double in_contact = pi > 0.0 ? 1.0 : 0.0;
-      return std::pair{std::array<double, 2>{in_contact * (problem_.initial_gap[i] + ui), in_contact}, ui};
+      const double below_cap = set_.in_contact(i) ? 1.0 : 0.0;
+      const double surface = problem_.initial_gap[i] + ui;
+      return std::pair{std::array<double, 3>{below_cap * surface, below_cap, in_contact}, ui};
     });
-    contact_cells_ = settled.sums[1];
-    // Under load control the approach makes the mean gap on the contact set vanish.
-    if (problem_.load_controlled) approach_ = settled.sums[0] / contact_cells_;
+    contact_cells_ = settled.sums[2];
+    // Under load control the approach makes the mean gap on the contact set
+    // below the cap vanish (where the gap is zero at the solution).
+    if (problem_.load_controlled) {
+      if (settled.sums[1] > 0.0) {
+        approach_ = settled.sums[0] / settled.sums[1];
+      } else {
+        // Every contact cell at the cap: the smallest approach that leaves
+        // none of them with an open gap.
+        approach_ = linalg::max_of(
+            n_, [&](std::size_t i) { return p_[i] > 0.0 ? problem_.initial_gap[i] + u_[i] : -kInfinity; });
+      }
+    }
     const bool store_gap = preconditioner_ != nullptr;
     const double approach = approach_;
-    const auto [weighted_gap, overlap, pressure_sum, gap_norm, gap_along] = sums<5>(n_, [&](std::size_t i) {
+    // With a cap, interpenetration is admissible at the cap: a cell's
+    // overlap counts by how far below the cap it is, (H - p)/H, and the
+    // pressure-weighted gap by its positive part only (see the header).
+    const bool capped = bounds_.capped();
+    const double upper = bounds_.upper;
+    const auto [weighted_gap, overlap, pressure_sum, gap_norm, gap_along, released] = sums<6>(n_, [&](std::size_t i) {
       g_[i] = problem_.initial_gap[i] + u_[i] - approach;
       const double in_set = set_.contains(i) ? 1.0 : 0.0;  // a mask, not a branch
       if (store_gap) r_[i] = in_set * g_[i];
-      return std::array<double, 5>{p_[i] * std::abs(g_[i]), std::max(-g_[i], 0.0), p_[i], in_set * (g_[i] * g_[i]),
-                                   in_set * (g_[i] * t_[i])};
+      const double over = std::max(-g_[i], 0.0);
+      const double weighted = capped ? p_[i] * std::max(g_[i], 0.0) : p_[i] * std::abs(g_[i]);
+      const double overlap_weight = capped ? (upper - p_[i]) / upper : 1.0;
+      const double release = capped && bounds_.at_cap(p_[i]) && g_[i] > 0.0 ? 1.0 : 0.0;
+      return std::array<double, 6>{
+          weighted, overlap_weight * over, p_[i], in_set * (g_[i] * g_[i]), in_set * (g_[i] * t_[i]), release};
     });
+    released_cells_ = released;
     gap_norm_ = gap_norm;
     gap_along_direction_ = gap_along;
     const double cells = static_cast<double>(n_);
@@ -385,6 +563,7 @@ class Iteration {
   double approach_;
   double residual_ = 0.0;
   double contact_cells_ = 0.0;
+  double released_cells_ = 0.0;       // cells at the cap whose gap is positive
   double gap_norm_ = 0.0;             // sum over the search set of g^2
   double gap_along_direction_ = 0.0;  // sum over the search set of g t_old
   const double* z_ = nullptr;         // z: g itself, or M^-1 g in r
@@ -405,6 +584,10 @@ void PolonskyKeerOptions::validate() const {
   }
   if (max_iterations < 1) {
     throw InputError(fmt::format("max_iterations = {} is invalid: must be at least 1", max_iterations));
+  }
+  if (!(bounds.lower == 0.0 && bounds.upper > 0.0)) {
+    throw InputError(fmt::format("pressure bounds [{}, {}] Pa are invalid: the lower must be 0 and the upper positive",
+                                 bounds.lower, bounds.upper));
   }
 }
 
@@ -440,7 +623,7 @@ SolveResult PolonskyKeer::solve_from(std::span<const double> initial_gap, const 
 SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading& loading, Eigen::ArrayXd pressure,
                               bool warm) {
   const auto start = std::chrono::steady_clock::now();
-  const Problem problem = make_problem(op_.grid(), initial_gap, loading);
+  const Problem problem = make_problem(op_.grid(), initial_gap, loading, options_.bounds);
   const auto n = static_cast<Eigen::Index>(op_.grid().size());
   SolveResult result;
   result.solver = name_;

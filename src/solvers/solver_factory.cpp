@@ -5,10 +5,12 @@
 #include <fmt/format.h>
 
 #include <memory>
+#include <variant>
 
 #include "halfspace/error.hpp"
 #include "halfspace/fft/grid_transform.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
+#include "halfspace/solvers/adhesive_contact_solver.hpp"
 #include "halfspace/solvers/balancing_preconditioner.hpp"
 #include "halfspace/solvers/block_deflation.hpp"
 #include "halfspace/solvers/fourier_preconditioner.hpp"
@@ -49,16 +51,42 @@ class SolverWithOperator final : public ContactSolver {
   std::unique_ptr<ContactSolver> solver_;
 };
 
+// The half-space: homogeneous with composite modulus E* (Pa), or coated. The
+// operator and the Fourier preconditioner take the same one, so the
+// preconditioner inverts the kernel in use, on every multilevel level.
+using Elasticity = std::variant<double, LayeredMaterial>;
+
+template <class Transform>
+std::unique_ptr<FftInfluenceOperator> make_operator(const Grid& grid, const Elasticity& elasticity,
+                                                    Transform&& transform) {
+  return std::visit(
+      [&](const auto& material) {
+        return std::make_unique<FftInfluenceOperator>(grid, material, std::forward<Transform>(transform));
+      },
+      elasticity);
+}
+
+std::unique_ptr<Preconditioner> make_fourier(const Grid& grid, const Elasticity& elasticity,
+                                             std::shared_ptr<RealFft> transform) {
+  return std::visit(
+      [&](const auto& material) -> std::unique_ptr<Preconditioner> {
+        return std::make_unique<FourierPreconditioner>(grid, material, std::move(transform));
+      },
+      elasticity);
+}
+
 // Polonsky-Keer on an FFT operator: the paper's form, or the projected
 // form with the Fourier preconditioner (and the coarse correction if
 // `deflated`) when `projected`.
-std::unique_ptr<ContactSolver> make_polonsky_keer(const Grid& grid, double e_star, const SolverOptions& options,
-                                                  double tolerance, bool fine, bool projected, bool deflated) {
+std::unique_ptr<ContactSolver> make_polonsky_keer(const Grid& grid, const Elasticity& e_star,
+                                                  const SolverOptions& options, double tolerance, bool fine,
+                                                  bool projected, bool deflated) {
   PolonskyKeerOptions pk;
   pk.tolerance = tolerance;
   pk.max_iterations = options.iteration_limit();
   if (fine) pk.progress = options.progress;  // progress reports the fine solve only
   pk.form = projected ? PolonskyKeerForm::projected : PolonskyKeerForm::paper;
+  pk.bounds = options.interface_law.bounds();
   // The preconditioner not on 1D grids: there the preconditioned steps clip
   // hundreds of cells each, and the iteration cycles on measured profiles
   // under moderate loads, while the projected form alone converges at every
@@ -71,15 +99,14 @@ std::unique_ptr<ContactSolver> make_polonsky_keer(const Grid& grid, double e_sta
     // after the other: one transform serves both, which saves a real and a
     // complex array per cell.
     auto transform = make_grid_transform(grid, options.fft_planning);
-    op = std::make_unique<FftInfluenceOperator>(grid, e_star, transform);
-    preconditioner = std::make_unique<FourierPreconditioner>(grid, e_star, transform);
+    op = make_operator(grid, e_star, transform);
+    preconditioner = make_fourier(grid, e_star, transform);
   } else {
     // Free grids: the preconditioner's unpadded transform works in the
     // operator's padded buffer, idle between products (16 B per cell less).
-    op = std::make_unique<FftInfluenceOperator>(grid, e_star, options.fft_planning);
+    op = make_operator(grid, e_star, options.fft_planning);
     if (preconditioned) {
-      preconditioner = std::make_unique<FourierPreconditioner>(
-          grid, e_star, make_grid_transform(grid, options.fft_planning, op->scratch()));
+      preconditioner = make_fourier(grid, e_star, make_grid_transform(grid, options.fft_planning, op->scratch()));
     }
   }
   std::unique_ptr<BlockDeflation> deflation;
@@ -95,7 +122,8 @@ std::unique_ptr<ContactSolver> make_polonsky_keer(const Grid& grid, double e_sta
 
 // Fourier-preconditioned Polonsky-Keer on every level; the coarse-grid
 // correction on the finest grid only, where the contact has the most spots.
-std::unique_ptr<ContactSolver> make_multilevel(const Grid& grid, double e_star, const SolverOptions& options) {
+std::unique_ptr<ContactSolver> make_multilevel(const Grid& grid, const Elasticity& e_star,
+                                               const SolverOptions& options) {
   using Mode = DeflationOptions::Mode;
   const bool deflated = options.deflation.mode == Mode::on ||
                         (options.deflation.mode == Mode::automatic && options.deflation.automatic_applies(grid));
@@ -110,16 +138,30 @@ std::unique_ptr<ContactSolver> make_multilevel(const Grid& grid, double e_star, 
 std::unique_ptr<ContactSolver> make_dense(const Grid& grid, double e_star, const SolverOptions& options) {
   DenseContactOptions contact;
   contact.tolerance = options.tolerance;
+  contact.hardness = options.interface_law.hardness;
   if (options.type == SolverType::lemke) {
     return std::make_unique<Lemke>(grid, e_star, LemkeOptions{options.iteration_limit()}, contact);
   }
   return std::make_unique<LcpQuad>(grid, e_star, LcpQuadOptions{}, contact);
 }
 
-}  // namespace
-
-std::unique_ptr<ContactSolver> make_solver(const Grid& grid, double e_star, const SolverOptions& options) {
+std::unique_ptr<ContactSolver> make_any_solver(const Grid& grid, const Elasticity& e_star,
+                                               const SolverOptions& options) {
   options.validate(grid);
+  if (options.adhesion) {
+    if (!std::holds_alternative<double>(e_star)) {
+      throw SolverOptionError("adhesion", std::string(to_string(options.adhesion->law.type)),
+                              "is not supported for a coated half-space: the adhesive solver works on the "
+                              "homogeneous half-space");
+    }
+    AdhesiveSolverOptions adhesive;
+    adhesive.law = options.adhesion->law;
+    adhesive.tolerance = options.adhesion->tolerance;
+    if (options.max_iterations) adhesive.max_iterations = *options.max_iterations;
+    adhesive.fft_planning = options.fft_planning;
+    adhesive.progress = options.progress;
+    return std::make_unique<AdhesiveContactSolver>(grid, std::get<double>(e_star), std::move(adhesive));
+  }
   switch (options.type) {
     case SolverType::pk:
       return make_polonsky_keer(grid, e_star, options, options.tolerance, true, false, false);
@@ -130,9 +172,26 @@ std::unique_ptr<ContactSolver> make_solver(const Grid& grid, double e_star, cons
       return make_multilevel(grid, e_star, options);
     case SolverType::lemke:
     case SolverType::lcpquad:
-      return make_dense(grid, e_star, options);
+      return make_dense(grid, std::get<double>(e_star), options);
   }
   throw InputError(fmt::format("solver type {} is not known", static_cast<int>(options.type)));
+}
+
+}  // namespace
+
+std::unique_ptr<ContactSolver> make_solver(const Grid& grid, double e_star, const SolverOptions& options) {
+  return make_any_solver(grid, Elasticity{e_star}, options);
+}
+
+std::unique_ptr<ContactSolver> make_solver(const Grid& grid, const LayeredMaterial& material,
+                                           const SolverOptions& options) {
+  validated(material);
+  if (options.type == SolverType::lemke || options.type == SolverType::lcpquad) {
+    throw SolverOptionError("type", std::string(to_string(options.type)),
+                            "is invalid for a coated half-space (its dense matrix is the homogeneous one): allowed "
+                            "are pk, pk-fourier and pk-multilevel");
+  }
+  return make_any_solver(grid, Elasticity{material}, options);
 }
 
 }  // namespace halfspace::solvers

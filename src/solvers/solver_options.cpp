@@ -4,6 +4,7 @@
 #include <fmt/ranges.h>
 
 #include <array>
+#include <cmath>
 #include <utility>
 
 #include "halfspace/solvers/block_deflation.hpp"
@@ -107,11 +108,39 @@ void SolverOptions::validate() const {
   }
   multilevel.validate();
   deflation.validate();
+  interface_law.validate();
+  if (interface_law.hardness && type == SolverType::lemke) {
+    throw SolverOptionError("hardness", text(*interface_law.hardness),
+                            "does not apply to solver 'lemke': Lemke's pivoting solves the plain LCP without an "
+                            "upper bound on the pressure; use 'lcpquad' for a dense solution with a hardness cap");
+  }
   if (deflation.mode == DeflationOptions::Mode::on && type != SolverType::pk_fourier &&
       type != SolverType::pk_multilevel) {
     throw SolverOptionError(
         "deflation.mode", std::string(to_string(deflation.mode)),
         fmt::format("does not apply to solver '{}': deflation needs pk-fourier or pk-multilevel", to_string(type)));
+  }
+  if (adhesion) {
+    // The law's own rules, restated with the option's name here.
+    const AdhesionLaw& law = adhesion->law;
+    if (!(std::isfinite(law.work) && law.work > 0.0)) {
+      throw SolverOptionError("adhesion.work", text(law.work), "is invalid: must be positive and finite (J/m^2)");
+    }
+    if (!(std::isfinite(law.range) && law.range > 0.0)) {
+      throw SolverOptionError("adhesion.range", text(law.range), "is invalid: must be positive and finite (m)");
+    }
+    law.validate();
+    if (!(adhesion->tolerance > 0.0 && adhesion->tolerance < 1.0)) {
+      throw SolverOptionError("adhesion.tolerance", text(adhesion->tolerance),
+                              "is invalid: the tolerance must be in (0, 1)");
+    }
+    if (deflation.mode == DeflationOptions::Mode::on) {
+      throw SolverOptionError("deflation.mode", "on", "does not apply to the adhesive solver");
+    }
+    if (interface_law.hardness) {
+      throw SolverOptionError("hardness", text(*interface_law.hardness),
+                              "does not apply with adhesion: the adhesive solver has no hardness cap");
+    }
   }
 }
 

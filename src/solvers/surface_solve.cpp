@@ -23,12 +23,12 @@ Eigen::ArrayXd initial_gap(const Grid& grid, std::span<const double> heights) {
   return h.maxCoeff() - h;
 }
 
-}  // namespace
-
-SolveResult solve_surface(const Grid& grid, std::span<const double> heights, double e_star, const Loading& loading,
-                          const SolverOptions& options, std::span<const double> initial_pressure) {
+// The solve with the solver `make` builds, freed before returning.
+template <typename MakeSolver>
+SolveResult solve_with(const Grid& grid, std::span<const double> heights, MakeSolver make, const Loading& loading,
+                       std::span<const double> initial_pressure) {
   const Eigen::ArrayXd gap = initial_gap(grid, heights);
-  const std::unique_ptr<ContactSolver> solver = make_solver(grid, e_star, options);
+  const std::unique_ptr<ContactSolver> solver = make();
   const auto start = std::chrono::steady_clock::now();
   SolveResult result = solver->solve(std::span<const double>(gap.data(), static_cast<std::size_t>(gap.size())), loading,
                                      initial_pressure);
@@ -38,12 +38,41 @@ SolveResult solve_surface(const Grid& grid, std::span<const double> heights, dou
   return result;
 }
 
+template <typename MakeSolver>
+std::vector<SweepStep> sweep_with(const Grid& grid, std::span<const double> heights, MakeSolver make, ControlMode mode,
+                                  std::span<const double> values, const LoadSweepOptions& sweep) {
+  const Eigen::ArrayXd gap = initial_gap(grid, heights);
+  const std::unique_ptr<ContactSolver> solver = make();
+  return run_load_sweep(*solver, grid, {gap.data(), grid.size()}, mode, values, sweep);
+}
+
+}  // namespace
+
+SolveResult solve_surface(const Grid& grid, std::span<const double> heights, double e_star, const Loading& loading,
+                          const SolverOptions& options, std::span<const double> initial_pressure) {
+  return solve_with(
+      grid, heights, [&] { return make_solver(grid, e_star, options); }, loading, initial_pressure);
+}
+
+SolveResult solve_surface(const Grid& grid, std::span<const double> heights, const LayeredMaterial& coating,
+                          const Loading& loading, const SolverOptions& options,
+                          std::span<const double> initial_pressure) {
+  return solve_with(
+      grid, heights, [&] { return make_solver(grid, coating, options); }, loading, initial_pressure);
+}
+
 std::vector<SweepStep> sweep_surface(const Grid& grid, std::span<const double> heights, double e_star, ControlMode mode,
                                      std::span<const double> values, const SolverOptions& options,
                                      const LoadSweepOptions& sweep) {
-  const Eigen::ArrayXd gap = initial_gap(grid, heights);
-  const std::unique_ptr<ContactSolver> solver = make_solver(grid, e_star, options);
-  return run_load_sweep(*solver, grid, {gap.data(), grid.size()}, mode, values, sweep);
+  return sweep_with(
+      grid, heights, [&] { return make_solver(grid, e_star, options); }, mode, values, sweep);
+}
+
+std::vector<SweepStep> sweep_surface(const Grid& grid, std::span<const double> heights, const LayeredMaterial& coating,
+                                     ControlMode mode, std::span<const double> values, const SolverOptions& options,
+                                     const LoadSweepOptions& sweep) {
+  return sweep_with(
+      grid, heights, [&] { return make_solver(grid, coating, options); }, mode, values, sweep);
 }
 
 }  // namespace halfspace::solvers

@@ -17,8 +17,8 @@ TEST(SweepTableTest, SummaryColumnsAreTheDocumentedOnes) {
   std::vector<std::string> names;
   for (const SummaryColumn& column : summary_columns()) names.emplace_back(column.name);
   EXPECT_EQ(names, (std::vector<std::string>{"load", "mean_pressure", "total_force", "approach", "contact_fraction",
-                                             "mean_gap", "rms_gap", "free_volume", "max_pressure", "clusters",
-                                             "iterations", "residual", "seconds", "converged"}));
+                                             "plastic_fraction", "mean_gap", "rms_gap", "free_volume", "max_pressure",
+                                             "clusters", "iterations", "residual", "seconds", "converged"}));
   SweepStep step;
   step.loading = Loading::approach(2e-6);
   step.result.status = SolveStatus::converged;

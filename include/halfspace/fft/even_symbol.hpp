@@ -10,7 +10,7 @@
 #include <span>
 #include <vector>
 
-namespace halfspace {
+namespace halfspace::fft {
 
 class EvenSymbol {
  public:
@@ -36,4 +36,9 @@ class EvenSymbol {
   std::vector<double> values_;
 };
 
+}  // namespace halfspace::fft
+
+// The library and its front ends name these without the folder's namespace.
+namespace halfspace {
+using fft::EvenSymbol;
 }  // namespace halfspace

@@ -3,7 +3,7 @@
 
 #include <string_view>
 
-namespace halfspace {
+namespace halfspace::fft {
 
 enum class FftPlanning {
   estimate,  // FFTW_ESTIMATE: instant, a reasonable plan
@@ -15,4 +15,11 @@ std::string_view to_string(FftPlanning planning);
 // Parses "estimate", "measure" or "patient"; throws InputError otherwise.
 FftPlanning parse_fft_planning(std::string_view text);
 
+}  // namespace halfspace::fft
+
+// The library and its front ends name these without the folder's namespace.
+namespace halfspace {
+using fft::FftPlanning;
+using fft::parse_fft_planning;
+using fft::to_string;
 }  // namespace halfspace

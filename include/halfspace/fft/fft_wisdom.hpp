@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-namespace halfspace {
+namespace halfspace::fft {
 
 // The wisdom file measured planning reads and writes:
 //   $HALFSPACE_FFTW_WISDOM if set ("" or "off": no wisdom file, nullopt);
@@ -40,4 +40,13 @@ bool import_fft_wisdom(const std::filesystem::path& path, std::string* problem =
 // in *problem if given, when it cannot be written.
 bool export_fft_wisdom(const std::filesystem::path& path, std::string* problem = nullptr);
 
+}  // namespace halfspace::fft
+
+// The library and its front ends name these without the folder's namespace.
+namespace halfspace {
+using fft::export_fft_wisdom;
+using fft::fft_wisdom_path;
+using fft::fft_wisdom_status;
+using fft::FftWisdomStatus;
+using fft::import_fft_wisdom;
 }  // namespace halfspace

@@ -12,7 +12,7 @@
 #include "halfspace/fft/real_fft.hpp"
 #include "halfspace/grid.hpp"
 
-namespace halfspace {
+namespace halfspace::fft {
 
 std::shared_ptr<RealFft> make_grid_transform(const Grid& grid, FftPlanning planning);
 // The same over `workspace`, memory idle while it runs (RealFft's workspace
@@ -26,4 +26,9 @@ std::shared_ptr<RealFft> make_grid_transform(const Grid& grid, FftPlanning plann
 std::shared_ptr<RealFft> checked_grid_transform(const Grid& grid, std::shared_ptr<RealFft> transform,
                                                 std::string_view user);
 
+}  // namespace halfspace::fft
+
+// The library and its front ends name these without the folder's namespace.
+namespace halfspace {
+using fft::make_grid_transform;
 }  // namespace halfspace

@@ -14,7 +14,7 @@
 
 struct fftw_plan_s;
 
-namespace halfspace {
+namespace halfspace::fft {
 
 class PaddedRealFft {
  public:
@@ -65,4 +65,9 @@ class PaddedRealFft {
   fftw_plan_s* columns_backward_ = nullptr;
 };
 
+}  // namespace halfspace::fft
+
+// The library and its front ends name these without the folder's namespace.
+namespace halfspace {
+using fft::PaddedRealFft;
 }  // namespace halfspace

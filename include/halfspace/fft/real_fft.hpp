@@ -10,7 +10,7 @@
 
 struct fftw_plan_s;  // FFTW's opaque plan type, so that <fftw3.h> stays private
 
-namespace halfspace {
+namespace halfspace::fft {
 
 // Where the transforms write. separate: three buffers (input, spectrum,
 // output). overwrite_input: backward() writes over the input, which saves a
@@ -104,4 +104,10 @@ class RealFft {
   int output_alignment_ = 0;
 };
 
+}  // namespace halfspace::fft
+
+// The library and its front ends name these without the folder's namespace.
+namespace halfspace {
+using fft::FftOutput;
+using fft::RealFft;
 }  // namespace halfspace

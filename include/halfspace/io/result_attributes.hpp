@@ -12,6 +12,7 @@
 #include <variant>
 
 #include "halfspace/io/hdf5_output.hpp"
+#include "halfspace/layered_material.hpp"
 #include "halfspace/solvers/solve_result.hpp"
 #include "halfspace/surface/statistics.hpp"
 
@@ -38,5 +39,9 @@ void write_result_attributes(const Hdf5Node& node, const SolveResult& result, st
 // mean_gap, rms_gap, free_volume (float64) and clusters (int64): the contact
 // statistics of a solve, on a result's root or a sweep step's group.
 void write_contact_statistics_attributes(const Hdf5Node& node, const surface::ContactStatistics& statistics);
+
+// layer_thickness (m), layer_E (Pa), layer_nu, substrate_E (Pa) and
+// substrate_nu (float64): a coated half-space's constants, on a result's root.
+void write_coating_attributes(const Hdf5Node& node, const LayeredMaterial& coating);
 
 }  // namespace halfspace::io

@@ -21,7 +21,7 @@ struct SummaryColumn {
 };
 
 // The columns in file order: load, mean_pressure, total_force, approach,
-// contact_fraction, mean_gap, rms_gap, free_volume, max_pressure, clusters,
+// contact_fraction, plastic_fraction, mean_gap, rms_gap, free_volume, max_pressure, clusters,
 // iterations, residual, seconds, converged.
 std::span<const SummaryColumn> summary_columns();
 

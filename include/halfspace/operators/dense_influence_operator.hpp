@@ -7,7 +7,7 @@
 
 #include "halfspace/operators/influence_operator.hpp"
 
-namespace halfspace {
+namespace halfspace::operators {
 
 // Largest grid (cells) for which the dense matrix is assembled: 8 * 8192^2
 // bytes = 512 MiB.
@@ -35,4 +35,11 @@ class DenseInfluenceOperator final : public InfluenceOperator {
   Eigen::VectorXd product_;  // K p when applied in place
 };
 
+}  // namespace halfspace::operators
+
+// The library and its front ends name these without the folder's namespace.
+namespace halfspace {
+using operators::assemble_influence_matrix;
+using operators::DenseInfluenceOperator;
+using operators::kMaxDenseCells;
 }  // namespace halfspace

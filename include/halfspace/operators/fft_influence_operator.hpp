@@ -9,9 +9,10 @@
 
 #include "halfspace/fft/fft_planning.hpp"
 #include "halfspace/fft/real_fft.hpp"
+#include "halfspace/layered_material.hpp"
 #include "halfspace/operators/influence_operator.hpp"
 
-namespace halfspace {
+namespace halfspace::operators {
 
 class FftInfluenceOperator final : public InfluenceOperator {
  public:
@@ -24,6 +25,12 @@ class FftInfluenceOperator final : public InfluenceOperator {
   // buffers. Nothing sharing it may run while apply() does. Throws InputError
   // if the grid is not periodic or the transform's shape is not the grid's.
   FftInfluenceOperator(const Grid& grid, double e_star, std::shared_ptr<RealFft> transform);
+  // A coated half-space (an elastic layer bonded to a substrate) under a
+  // rigid indenter: the same two forms with its kernel (layered_fourier.hpp).
+  // Throws InputError if `material` is out of range (layered_material.hpp)
+  // or the grid is free and 1D (not supported).
+  FftInfluenceOperator(const Grid& grid, const LayeredMaterial& material, FftPlanning planning = FftPlanning::estimate);
+  FftInfluenceOperator(const Grid& grid, const LayeredMaterial& material, std::shared_ptr<RealFft> transform);
   ~FftInfluenceOperator() override;
   FftInfluenceOperator(const FftInfluenceOperator&) = delete;
   FftInfluenceOperator& operator=(const FftInfluenceOperator&) = delete;
@@ -44,4 +51,9 @@ class FftInfluenceOperator final : public InfluenceOperator {
   std::unique_ptr<Impl> impl_;
 };
 
+}  // namespace halfspace::operators
+
+// The library and its front ends name these without the folder's namespace.
+namespace halfspace {
+using operators::FftInfluenceOperator;
 }  // namespace halfspace

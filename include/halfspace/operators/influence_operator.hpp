@@ -7,7 +7,7 @@
 
 #include "halfspace/grid.hpp"
 
-namespace halfspace {
+namespace halfspace::operators {
 
 class InfluenceOperator {
  public:
@@ -28,4 +28,9 @@ class InfluenceOperator {
   virtual double self_influence() const = 0;
 };
 
+}  // namespace halfspace::operators
+
+// The library and its front ends name these without the folder's namespace.
+namespace halfspace {
+using operators::InfluenceOperator;
 }  // namespace halfspace

@@ -27,6 +27,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -52,9 +53,13 @@ struct DenseContactOptions {
   // The result counts as converged when the method succeeded and the contact
   // residual (the Polonsky-Keer stopping measure) is at most this.
   double tolerance = 1e-10;
+  // A hardness cap p <= H (Pa, interface_law.hpp): the LCP becomes the
+  // box-constrained one, z <= H / P (LcpProblem::upper_bound). Unset:
+  // none.
+  std::optional<double> hardness;
 
-  // Throws InputError naming the option unless 0 < tolerance < 1 and the
-  // units are finite and >= 0.
+  // Throws InputError naming the option unless 0 < tolerance < 1, the
+  // units are finite and >= 0 and the hardness (if set) is valid.
   void validate() const;
 };
 
@@ -76,8 +81,11 @@ ContactLcp make_contact_lcp(const Grid& grid, double e_star, const Eigen::Matrix
 // ( sum_i (p_i / pbar) |g_i| + sum_i max(-g_i, 0) ) / (N g_ref), with
 // g_ref = ptp(g0) + max(ptp(K p), pbar uniform_response_range), where
 // uniform_response_range = ptp(K 1), so that dense and FFT results compare.
+// With a hardness H the capped form of polonsky_keer.hpp: the positive part
+// of g in the first sum, the overlap weighed by (H - p_i)/H in the second.
 double contact_residual(std::span<const double> initial_gap, const Eigen::ArrayXd& pressure,
-                        const Eigen::ArrayXd& displacement, const Eigen::ArrayXd& gap, double uniform_response_range);
+                        const Eigen::ArrayXd& displacement, const Eigen::ArrayXd& gap, double uniform_response_range,
+                        std::optional<double> hardness = std::nullopt);
 
 // A contact solver that assembles K and solves the contact LCP with a dense
 // method (the derived class). Warm starts are ignored: the methods are direct

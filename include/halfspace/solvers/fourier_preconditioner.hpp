@@ -7,6 +7,7 @@
 #include "halfspace/fft/fft_planning.hpp"
 #include "halfspace/fft/real_fft.hpp"
 #include "halfspace/grid.hpp"
+#include "halfspace/layered_material.hpp"
 #include "halfspace/solvers/preconditioner.hpp"
 
 namespace halfspace::solvers {
@@ -24,6 +25,10 @@ class FourierPreconditioner final : public Preconditioner {
   // buffers serves both. Nothing sharing it may run while apply() does.
   // Throws InputError if the transform's shape is not the grid's.
   FourierPreconditioner(const Grid& grid, double e_star, std::shared_ptr<RealFft> transform);
+  // A coated half-space: the inverse of its kernel, E1*|q| / (2 M(q t))
+  // (layered_fourier.hpp), with `transform` as above. Throws InputError if
+  // `material` is out of range.
+  FourierPreconditioner(const Grid& grid, const LayeredMaterial& material, std::shared_ptr<RealFft> transform);
   ~FourierPreconditioner() override;
 
   void apply(std::span<const double> in, std::span<double> out) override;

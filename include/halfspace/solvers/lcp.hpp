@@ -21,11 +21,16 @@ struct LcpProblem {
   Eigen::VectorXd offset;        // q, n entries
   Eigen::VectorXd equality_row;  // a, n entries, or empty for no equality
   double equality_value = 0.0;   // b
+  // u, n entries, or empty for none: the box-constrained LCP 0 <= z <= u,
+  // w >= 0 where z = 0, w = 0 where 0 < z < u, w <= 0 where z = u (a
+  // hardness cap). Lemke's method does not take it.
+  Eigen::VectorXd upper_bound = Eigen::VectorXd();
 
   Eigen::Index size() const { return offset.size(); }
   bool has_equality() const { return equality_row.size() > 0; }
-  // Throws InputError naming the part unless n >= 1, M is n x n, a is empty
-  // or has n entries, and every entry is finite.
+  bool has_upper_bound() const { return upper_bound.size() > 0; }
+  // Throws InputError naming the part unless n >= 1, M is n x n, a and u
+  // are empty or have n entries, every entry is finite and u > 0.
   void validate() const;
 };
 

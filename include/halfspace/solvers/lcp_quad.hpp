@@ -31,7 +31,12 @@ struct LcpQuadOptions {
 // M + M' must be positive semidefinite (the QP is then convex). `iterations`
 // counts interior-point iterations; `objective` is z'w of the returned point,
 // and `message` the ALGLIB completion code when it is not a success. Throws
-// InputError for an invalid problem or options.
+// InputError for an invalid problem or options. With an upper bound u (the
+// box-constrained LCP of a hardness cap) the QP is instead the energy QP
+// min (1/2) z'M z + q'z over 0 <= z <= u (and a'z = b), whose optimality
+// conditions are the box LCP for a symmetric M (an influence matrix is);
+// lambda is recovered from the cells between the bounds, and `objective` is
+// the complementarity left at both bounds.
 LcpSolution solve_lcp_quad(const LcpProblem& problem, const LcpQuadOptions& options = {});
 
 // Contact solver "lcpquad": LCPquad on the contact LCP of dense_contact.hpp.

@@ -25,6 +25,10 @@ struct LoadSweepOptions {
   // Start each step from the previous step's pressure when that step
   // converged (a failed step's pressure may be far off, or not finite).
   bool warm_start = true;
+  // Adhesive solvers: any finite load is valid (a negative approach holds
+  // the surfaces apart, a negative force pulls), and the list may go up and
+  // back down (loading, then unloading); the solver checks each value.
+  bool signed_loads = false;
   // Called before step k (0-based) of `steps` is solved, and after it with
   // its outcome. Run on the calling thread, so they may print; may be empty.
   std::function<void(std::size_t step, std::size_t steps, const Loading& loading)> on_step_start;

@@ -42,6 +42,20 @@
 //    (BalancingPreconditioner, the coarse-grid correction) restarts them
 //    when it changes.
 // docs/solvers.md says what each form costs and saves.
+//
+// Hardness cap. With PressureBounds' upper bound H (interface_law.hpp) the
+// problem is the bound-constrained one, 0 <= p <= H, whose conditions at a
+// cell at the cap are g <= 0: the rigid surface penetrates the elastic one
+// there, and the overlap is the plastic flow (docs/theory.md, "Hardness
+// cap"). Cells at the cap leave the search set as cells out of contact do,
+// with the opposite sign test: a cell at p = H stays out while g <= 0 and
+// joins while g > 0 says its pressure should fall (the projected-gradient
+// set of bound-constrained CG, Vollebregt 2014). The approach under load
+// control is the mean gap over the contact cells below the cap, and the
+// load is restored by the capped scaling min(H, s p). The residual then
+// weighs a cell's overlap by (H - p)/H and takes the positive part of the
+// gap in the pressure-weighted sum, so that it again vanishes exactly at the
+// solution. A load above H times the domain area is refused (InputError).
 #pragma once
 
 #include <Eigen/Core>
@@ -53,6 +67,7 @@
 #include "halfspace/operators/influence_operator.hpp"
 #include "halfspace/solvers/contact_solver.hpp"
 #include "halfspace/solvers/preconditioner.hpp"
+#include "halfspace/solvers/pressure_bounds.hpp"
 
 namespace halfspace::solvers {
 
@@ -62,12 +77,14 @@ struct PolonskyKeerOptions {
   double tolerance = 1e-10;    // relative residual, see the stopping criterion above
   int max_iterations = 10000;  // status iteration_limit when reached
   PolonskyKeerForm form = PolonskyKeerForm::paper;
+  // The admissible pressures: [0, inf), or [0, H] with a hardness cap.
+  PressureBounds bounds;
   // Called once per iteration with (iteration, residual); may be empty. It
   // runs on the calling thread between iterations, so it may print.
   std::function<void(int, double)> progress;
 
-  // Throws InputError naming the option unless 0 < tolerance < 1 and
-  // max_iterations >= 1.
+  // Throws InputError naming the option unless 0 < tolerance < 1,
+  // max_iterations >= 1 and the bounds are [0, upper] with upper > 0.
   void validate() const;
 };
 

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstddef>
+#include <limits>
 #include <span>
 #include <string_view>
 
@@ -16,18 +17,26 @@ namespace halfspace::solvers {
 // The cells a contact solver's search direction covers, read from its
 // current iterate: the contact set {p > 0}, and with `overlap` also the
 // cells out of contact that interpenetrate {p = 0, g < 0} (see
-// polonsky_keer.hpp). Under `mean_free` (load control) directions must be
+// polonsky_keer.hpp). With a hardness cap (`upper` finite) a cell at the cap
+// leaves the set while its gap is not positive (it stays plastic) and is in
+// it while the gap says its pressure should fall, the mirror of the cells
+// out of contact. Under `mean_free` (load control) directions must be
 // mean-free on the set, so that a step keeps the force.
 struct SearchSet {
   const double* pressure = nullptr;
   const double* gap = nullptr;
   bool overlap = false;
   bool mean_free = false;
+  double upper = std::numeric_limits<double>::infinity();  // the cap (Pa)
 
-  bool in_contact(std::size_t i) const { return pressure[i] > 0.0; }
+  // In contact and below the cap: the cells whose gap vanishes at the
+  // solution (the elastic part of the contact).
+  bool in_contact(std::size_t i) const { return (pressure[i] > 0.0) & (pressure[i] < upper); }
   // Bitwise, not short-circuit, so that masks over the cells stay free of
   // branches (contact edges are everywhere).
-  bool contains(std::size_t i) const { return (pressure[i] > 0.0) | (overlap & (gap[i] < 0.0)); }
+  bool contains(std::size_t i) const {
+    return ((pressure[i] > 0.0) | (overlap & (gap[i] < 0.0))) & ((pressure[i] < upper) | (gap[i] > 0.0));
+  }
 };
 
 // What a step of a contact solve did, for preconditioners that adapt.

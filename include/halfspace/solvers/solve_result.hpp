@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -50,6 +51,18 @@ struct DeflationRecord {
   double fast_rate = 0.0;
 };
 
+// Adhesive solves (adhesive_contact_solver.hpp): the law and the adhesive
+// quantities of the result; `law` is empty for every other solver.
+struct AdhesionRecord {
+  std::string law;                          // "md" or "exponential"
+  double work = 0.0;                        // work of adhesion w, J/m^2
+  double range = 0.0;                       // h0 (md) or rho (exponential), m
+  double stress = 0.0;                      // w / range: sigma0 (md), the stress at contact (exponential), Pa
+  double adhesive_force = 0.0;              // sum of the negative pressures times cell area (<= 0)
+  double interaction_fraction = 0.0;        // cells within the law's range (AdhesionLaw::interacts)
+  double repulsive_contact_fraction = 0.0;  // cells with gap 0 and pressure > 0
+};
+
 struct SolveResult {
   SolveStatus status = SolveStatus::breakdown;
   std::string message;  // human-readable reason, empty when converged
@@ -67,12 +80,18 @@ struct SolveResult {
   int preconditioner_applications = 0;   // number of M^-1 g products (each one FFT pair)
   CoarseStart coarse;                    // coarse-grid start (MultilevelSolver); zero otherwise
   DeflationRecord deflation;             // coarse-grid correction of the fine solve; block 0 without
+  AdhesionRecord adhesion;               // adhesive solves only
 
   double approach = 0.0;          // rigid-body approach (m)
   double total_force = 0.0;       // N in 2D, N/m in 1D
   double mean_pressure = 0.0;     // total_force / domain area (Pa)
   double max_pressure = 0.0;      // Pa
   double contact_fraction = 0.0;  // cells with p > 0 over all cells
+  // The hardness cap the solve honoured (interface_law.hpp), unset for
+  // purely elastic contact; plastic_fraction counts the cells at it over
+  // all cells (zero without a cap).
+  std::optional<double> hardness;
+  double plastic_fraction = 0.0;
   double wall_seconds = 0.0;
 
   // Fields with one entry per cell, (ny, nx) row-major.
@@ -88,6 +107,7 @@ struct SolveResult {
 // The library, its writers and front ends name these without the folder's
 // namespace.
 namespace halfspace {
+using solvers::AdhesionRecord;
 using solvers::CoarseStart;
 using solvers::DeflationRecord;
 using solvers::SolveResult;

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "halfspace/grid.hpp"
+#include "halfspace/layered_material.hpp"
 #include "halfspace/solvers/contact_solver.hpp"
 #include "halfspace/solvers/solver_options.hpp"
 
@@ -15,5 +16,12 @@ namespace halfspace::solvers {
 // plans. Throws SolverOptionError (an InputError) naming the option if
 // options.validate(grid) does.
 std::unique_ptr<ContactSolver> make_solver(const Grid& grid, double e_star, const SolverOptions& options = {});
+
+// The same for a coated half-space under a rigid indenter (layered_material.hpp):
+// its kernel in the operator, the Fourier preconditioner and every multilevel
+// level. Throws InputError if `material` is out of range, SolverOptionError
+// for the dense solvers (lemke, lcpquad), whose matrix is the homogeneous one.
+std::unique_ptr<ContactSolver> make_solver(const Grid& grid, const LayeredMaterial& material,
+                                           const SolverOptions& options = {});
 
 }  // namespace halfspace::solvers

@@ -14,7 +14,9 @@
 #include "halfspace/error.hpp"
 #include "halfspace/fft/fft_planning.hpp"
 #include "halfspace/grid.hpp"
+#include "halfspace/solvers/adhesion_law.hpp"
 #include "halfspace/solvers/block_deflation_options.hpp"
+#include "halfspace/solvers/interface_law.hpp"
 
 namespace halfspace::solvers {
 
@@ -116,14 +118,31 @@ struct SolverOptions {
   // may be empty. It runs on the calling thread between iterations.
   std::function<void(int, double)> progress;
 
+  // The interface law: a hardness cap 0 <= p <= H (every solver but lemke,
+  // whose pivoting solves the plain LCP only).
+  InterfaceLaw interface_law;
+
   MultilevelOptions multilevel;  // pk_multilevel only
   DeflationOptions deflation;    // pk_fourier and pk_multilevel only
+
+  // Adhesion: when set, make_solver builds the adhesive solver
+  // (adhesive_contact_solver.hpp) with this law instead of `type`, with its
+  // own tolerance (its residual is another measure than Polonsky-Keer's),
+  // and max_iterations, fft_planning and progress from here.
+  struct Adhesion {
+    AdhesionLaw law;
+    double tolerance = 1e-6;
+  };
+  std::optional<Adhesion> adhesion;
 
   int iteration_limit() const { return max_iterations.value_or(kDefaultMaxIterations); }
 
   // Throws SolverOptionError naming the option unless: 0 < tolerance < 1;
   // max_iterations >= 1, and unset for lcpquad; the nested options are
-  // valid; deflation is on only for pk_fourier or pk_multilevel.
+  // valid; deflation is on only for pk_fourier or pk_multilevel; a hardness
+  // is in its range and not asked of lemke; with adhesion, the law is valid
+  // ("adhesion.work", "adhesion.range"), its tolerance in (0, 1) and
+  // deflation not on.
   void validate() const;
   // validate(), and the rules that depend on the grid: deflation on needs a
   // grid its block covers.

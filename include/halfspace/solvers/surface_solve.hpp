@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "halfspace/grid.hpp"
+#include "halfspace/layered_material.hpp"
 #include "halfspace/solvers/load_sweep.hpp"
 #include "halfspace/solvers/loading.hpp"
 #include "halfspace/solvers/solve_result.hpp"
@@ -32,6 +33,15 @@ SolveResult solve_surface(const Grid& grid, std::span<const double> heights, dou
 // built for all steps. Throws as solve_surface and run_load_sweep do.
 std::vector<SweepStep> sweep_surface(const Grid& grid, std::span<const double> heights, double e_star, ControlMode mode,
                                      std::span<const double> values, const SolverOptions& options,
+                                     const LoadSweepOptions& sweep = {});
+
+// The same on a coated half-space (layered_material.hpp) instead of a
+// homogeneous one.
+SolveResult solve_surface(const Grid& grid, std::span<const double> heights, const LayeredMaterial& coating,
+                          const Loading& loading, const SolverOptions& options,
+                          std::span<const double> initial_pressure = {});
+std::vector<SweepStep> sweep_surface(const Grid& grid, std::span<const double> heights, const LayeredMaterial& coating,
+                                     ControlMode mode, std::span<const double> values, const SolverOptions& options,
                                      const LoadSweepOptions& sweep = {});
 
 }  // namespace halfspace::solvers

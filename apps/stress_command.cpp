@@ -1,0 +1,196 @@
+// The stress command: result file -> pressure and grid -> stress volume ->
+// stress file. Options are read as text and parsed strictly, as solve's are.
+#include "stress_command.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <map>
+#include <memory>
+#include <optional>
+
+#include "activity.hpp"
+#include "exit_codes.hpp"
+#include "halfspace/error.hpp"
+#include "halfspace/io/output_file.hpp"
+#include "halfspace/io/result_pressure_reader.hpp"
+#include "halfspace/io/stress_writer.hpp"
+#include "halfspace/memory_estimate.hpp"
+#include "halfspace/stress/stress_volume.hpp"
+#include "halfspace/stress/subsurface_stress.hpp"
+#include "halfspace/threads.hpp"
+#include "halfspace/version.hpp"
+#include "memory_check.hpp"
+#include "value_parsing.hpp"
+
+namespace halfspace::app {
+namespace {
+
+struct StressOptions {
+  std::string result;
+  std::optional<std::string> depths;
+  std::optional<std::string> depth_range;
+  std::optional<std::string> nu;
+  std::optional<std::string> output;
+  std::optional<std::string> max_memory;
+  std::optional<std::string> threads;
+  bool quiet = false;
+};
+
+int threads_from(const std::optional<std::string>& text) {
+  if (!text) return default_threads();
+  const long long threads = parse_integer(*text, fmt::format("--threads {}", *text));
+  if (threads < 1 || threads > max_threads()) {
+    throw InputError(fmt::format("--threads {} is invalid: allowed range is 1 to {} threads", *text, max_threads()));
+  }
+  return static_cast<int>(threads);
+}
+
+int run_stress(const StressOptions& o, const std::vector<std::string>& argv) {
+  if (!o.nu) throw InputError(missing_poisson_ratio_message("--nu"));
+  const double nu = parse_stress_poisson_ratio(*o.nu, "--nu");
+  const std::vector<double> depths =
+      parse_stress_depths(o.depths ? &*o.depths : nullptr, o.depth_range ? &*o.depth_range : nullptr);
+  if (!o.output) throw InputError("no output file given: pass --output FILE.h5");
+  const std::string& output = *o.output;
+  if (io::same_file(output, o.result)) {
+    throw InputError(
+        fmt::format("--output {} is the input result file: the stresses go to a new file, pass "
+                    "another --output",
+                    output));
+  }
+  io::check_output_path(output);
+  set_threads(threads_from(o.threads));
+
+  io::ResultPressure input = [&] {
+    const Activity activity(fmt::format("reading {}", o.result));
+    return io::read_result_pressure(o.result);
+  }();
+  const Grid& grid = input.grid;
+  // The pressure read twice (reader and field) and the stress volume.
+  const double estimate =
+      kProgramBytes + 16.0 * static_cast<double>(grid.size()) + stress::stress_memory_estimate(grid, depths.size());
+  const std::string what = o.max_memory ? fmt::format("--max-memory {}", *o.max_memory) : "--max-memory";
+  require_memory(fmt::format("stresses at {} depths on the {} grid of {} ({} cells x {} depths x 8 fields x 8 "
+                             "bytes, and the file image)",
+                             depths.size(), grid.shape_string(), o.result, grid.size(), depths.size()),
+                 estimate, memory_limit(o.max_memory, what));
+
+  const stress::StressVolume volume = [&] {
+    const Activity activity(
+        fmt::format("computing stresses at {} depths on the {} grid", depths.size(), grid.shape_string()));
+    return stress::compute_stress_volume(grid, input.pressure, depths, nu);
+  }();
+  {
+    const Activity activity(fmt::format("writing {}", output));
+    io::write_stress_file(output, grid, input.pressure, volume, nu, {o.result, join_command_line(argv)});
+  }
+  if (!o.quiet) {
+    const auto row = [](std::string_view label, const std::string& value) {
+      fmt::print("  {:<15} {}\n", label, value);
+    };
+    fmt::print("halfspace {} ({}) stress\n", kVersion, kGitHash);
+    row("result", o.result);
+    row("grid", fmt::format("{} ({}), Poisson's ratio {}", grid.shape_string(), to_string(grid.boundary()), nu));
+    row("depths", fmt::format("{} from {:.6g} m to {:.6g} m", depths.size(), depths.front(), depths.back()));
+    const auto& m = volume.max_von_mises;
+    row("max von Mises", fmt::format("{:.6g} Pa at x = {:.6g} m, y = {:.6g} m, z = {:.6g} m", m.value, m.x, m.y, m.z));
+    row("output", output);
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+std::string missing_poisson_ratio_message(std::string_view option) {
+  return fmt::format(
+      "no Poisson's ratio given: pass {} NU, the Poisson's ratio of the body whose stresses are wanted (E* alone "
+      "does not fix it; -1 < NU <= 0.5)",
+      option);
+}
+
+double parse_stress_poisson_ratio(const std::string& text, std::string_view option) {
+  const std::string what = fmt::format("{} {}", option, text);
+  const double nu = parse_number(text, what);
+  if (!(nu > -1.0 && nu <= 0.5)) throw InputError(fmt::format("{} is invalid: allowed range is -1 < nu <= 0.5", what));
+  return nu;
+}
+
+std::vector<double> parse_stress_depths(const std::string* depths, const std::string* depth_range,
+                                        std::string_view prefix) {
+  const std::string list_option = fmt::format("--{}depths", prefix);
+  const std::string range_option = fmt::format("--{}depth-range", prefix);
+  if (depths && depth_range) {
+    throw InputError(fmt::format("{} and {} were both given: pass one of them", list_option, range_option));
+  }
+  if (!depths && !depth_range) {
+    throw InputError(
+        fmt::format("no depth given: pass {} z1,z2,... or {} START:STOP:COUNT (m, > 0)", list_option, range_option));
+  }
+  std::vector<double> values;
+  if (depths) {
+    const std::string what = fmt::format("{} {}", list_option, *depths);
+    std::string_view rest = *depths;
+    while (true) {
+      const std::size_t comma = rest.find(',');
+      const std::string_view part = rest.substr(0, comma);
+      values.push_back(parse_number(part, fmt::format("{} (the part '{}')", what, part)));
+      if (values.size() > stress::kMaxDepthCount) {
+        throw InputError(fmt::format("{} gives more than {} depths", list_option, stress::kMaxDepthCount));
+      }
+      if (comma == std::string_view::npos) break;
+      rest.remove_prefix(comma + 1);
+    }
+    for (const double z : values) {
+      if (!(z > 0.0)) throw InputError(fmt::format("{} is invalid: every depth must be > 0 m, got {}", what, z));
+    }
+  } else {
+    const std::string what = fmt::format("{} {}", range_option, *depth_range);
+    const std::string& text = *depth_range;
+    const std::size_t first = text.find(':');
+    const std::size_t second = first == std::string::npos ? first : text.find(':', first + 1);
+    if (second == std::string::npos || text.find(':', second + 1) != std::string::npos) {
+      throw InputError(fmt::format("{} is invalid: expected START:STOP:COUNT, e.g. 1e-6:2e-5:20", what));
+    }
+    const double start = parse_number(text.substr(0, first), what);
+    const double stop = parse_number(text.substr(first + 1, second - first - 1), what);
+    const long long count = parse_integer(text.substr(second + 1), what);
+    if (count < 1 || count > static_cast<long long>(stress::kMaxDepthCount)) {
+      throw InputError(fmt::format("{} is invalid: COUNT = {} is outside the allowed range 1 to {}", what, count,
+                                   stress::kMaxDepthCount));
+    }
+    if (!(start > 0.0) || !(stop >= start) || (count > 1 && !(stop > start))) {
+      throw InputError(fmt::format("{} is invalid: need 0 < START < STOP (m) (START = STOP only with COUNT 1)", what));
+    }
+    for (long long k = 0; k < count; ++k) {
+      values.push_back(count == 1 ? start
+                                  : start + (stop - start) * static_cast<double>(k) / static_cast<double>(count - 1));
+    }
+  }
+  stress::check_depths(values);
+  return values;
+}
+
+Command add_stress_command(CLI::App& program) {
+  CLI::App* command =
+      program.add_subcommand("stress", "Compute the subsurface stress field of a solved contact from its result file");
+  command->footer(
+      "Stresses in Pa, tension positive (compression negative), z positive downwards; see docs/usage.md#stress.");
+  auto o = std::make_shared<StressOptions>();
+  command->add_option("RESULT", o->result, "a result file of `halfspace solve` (HDF5)")->required();
+  command->add_option("--depths", o->depths, "depths below the surface z1,z2,... (m, > 0)")->type_name("LIST");
+  command->add_option("--depth-range", o->depth_range, "COUNT depths evenly spaced from START to STOP (m)")
+      ->type_name("START:STOP:COUNT");
+  command->add_option("--nu", o->nu, "Poisson's ratio of the body whose stresses are wanted, -1 < NU <= 0.5 (required)")
+      ->type_name("NU");
+  command->add_option("--output", o->output, "the stress file (HDF5), required; replaced if it exists")
+      ->type_name("FILE");
+  command->add_option("--max-memory", o->max_memory, "refuse to start above this estimated peak memory [available]")
+      ->type_name("SIZE");
+  command->add_option("--threads", o->threads, "threads for the transforms and loops [the CPUs available]")
+      ->type_name("N");
+  command->add_flag("--quiet", o->quiet, "print nothing unless there is an error");
+  return {command, [o](const std::vector<std::string>& argv) { return run_stress(*o, argv); }};
+}
+
+}  // namespace halfspace::app

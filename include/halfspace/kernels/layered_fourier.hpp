@@ -1,0 +1,68 @@
+// Fourier-space kernel of a coated half-space: an elastic layer of thickness t
+// (E1, nu1) perfectly bonded to an elastic substrate (E2, nu2), normal load,
+// no shear on the surface (O'Sullivan & King 1988; Stanley & Kato 1997):
+//   u(q) = 2 p(q) M(q t) / (E1* |q|),  E1* = E1 / (1 - nu1^2),
+// with the bonded-layer compliance factor M (docs/theory.md, "Coated
+// half-space"): M = 1 for identical materials or t -> inf, E1*/E2* for t -> 0.
+#pragma once
+
+#include <vector>
+
+#include "halfspace/layered_material.hpp"
+
+namespace halfspace::kernels {
+
+class LayeredKernel {
+ public:
+  // Throws InputError naming the quantity if `material` is out of range
+  // (validated(), layered_material.hpp).
+  explicit LayeredKernel(const LayeredMaterial& material);
+
+  const LayeredMaterial& material() const { return material_; }
+  double layer_modulus() const { return layer_modulus_; }          // E1*, Pa
+  double substrate_modulus() const { return substrate_modulus_; }  // E2*, Pa
+
+  // M(q t), dimensionless, for |q| (rad/m); finite and positive for all q.
+  double compliance_factor(double q) const;
+  // The kernel 2 M(q t) / (E1* |q|) (m/Pa per unit spectral amplitude), 0 at
+  // q = 0 (the mean mode is set by the load or approach, as for the
+  // homogeneous kernel).
+  double spectrum(double q) const;
+
+  // Free grids, in two parts (docs/theory.md, "Coated half-space"):
+  // near_rectangle_displacement is the displacement (m) at (x, y) under unit
+  // pressure on the rectangle |x'| <= hx, |y'| <= hy of the closed-form part
+  // of the kernel, 2/(E1* q) + 2 (1/E2* - 1/E1*) exp(-q t)/q: Love's
+  // rectangle for E1* plus a smoothed point-load term, so that it has the
+  // substrate's 1/(pi E2* r) far away and the layer's Love coefficients near.
+  double near_rectangle_displacement(double x, double y, double hx, double hy) const;
+  // The rest, R(q) = 2 (M(q t) - 1 - (E1*/E2* - 1) exp(-q t)) / (E1* |q|),
+  // which is finite at q = 0 and decays exponentially for q t >> 1, times the
+  // transform of a dx x dy cell divided by its area, summed over the alias
+  // images (qx + 2 pi m / dx, qy + 2 pi n / dy), |m|, |n| <= kAliasImages: the
+  // DFT, at wavenumber (qx, qy) of a grid of spacing (dx, dy), of this part's
+  // cell coefficients times the grid's period area over dx dy.
+  double remainder_cell_spectrum(double qx, double qy, double dx, double dy) const;
+  static constexpr int kAliasImages = 2;
+  // The same part in real space, for free grids whose domain is not large
+  // against t (the DFT above would fold in its periodic images): the
+  // displacement (m) at distances 0, step, 2 step, ... <= r_max (m) under a
+  // point force of 1 N,
+  //   (1/(pi E1*)) int_0^inf (M(q t) - 1 - (E1*/E2* - 1) exp(-q t)) J0(q r) dq,
+  // by composite Simpson quadrature (the integrand decays like exp(-q t)).
+  std::vector<double> remainder_point_table(double r_max, double step) const;
+
+ private:
+  double remainder(double q) const;  // R(q) above, with its limit at q = 0
+
+  LayeredMaterial material_;
+  double layer_modulus_;
+  double substrate_modulus_;
+  double kappa_;              // (g - 1)/(g + 3 - 4 nu1), g = mu1/mu2
+  double lambda_;             // 1 - 4 (1 - nu1)/(1 + g (3 - 4 nu2))
+  double one_minus_kappa_;    // 1 - kappa, formed without cancellation
+  double one_minus_lambda_;   // 1 - lambda, likewise
+  double remainder_at_zero_;  // lim R(q), q -> 0
+};
+
+}  // namespace halfspace::kernels

@@ -1,0 +1,70 @@
+// Cohesive (adhesive) interface laws: the attractive traction and the
+// interaction energy per unit area as functions of the gap, acting beside
+// the hard wall gap >= 0 of the repulsive contact.
+#pragma once
+
+#include <string_view>
+
+namespace halfspace::solvers {
+
+enum class AdhesionLawType {
+  // Maugis-Dugdale: a constant attractive stress sigma0 where 0 <= gap < h0,
+  // none beyond; work of adhesion w = sigma0 h0 (Maugis 1992, J. Colloid
+  // Interface Sci. 150, 243).
+  maugis_dugdale,
+  // A smooth exponential attraction of range rho: energy -w exp(-gap/rho),
+  // traction -(w/rho) exp(-gap/rho) (the Contact Mechanics Challenge's kind,
+  // Mueser et al. 2017, Tribol. Lett. 65, 118).
+  exponential,
+};
+
+// "md", "exponential".
+std::string_view to_string(AdhesionLawType type);
+// The inverse of to_string ("maugis-dugdale" is accepted for "md"); throws
+// InputError naming the option "adhesion", the value and the allowed names.
+AdhesionLawType parse_adhesion_law_type(std::string_view name);
+
+struct AdhesionLaw {
+  AdhesionLawType type = AdhesionLawType::maugis_dugdale;
+  double work = 0.0;   // work of adhesion w (J/m^2): the energy per area to separate from contact
+  double range = 0.0;  // m: h0 (maugis_dugdale, where the stress stops) or rho (exponential, decay length)
+
+  static AdhesionLaw maugis_dugdale(double work_of_adhesion, double h0) {
+    return {AdhesionLawType::maugis_dugdale, work_of_adhesion, h0};
+  }
+  // Maugis-Dugdale given its stress sigma0 (Pa): h0 = w / sigma0.
+  static AdhesionLaw maugis_dugdale_from_stress(double work_of_adhesion, double sigma0) {
+    return {AdhesionLawType::maugis_dugdale, work_of_adhesion, work_of_adhesion / sigma0};
+  }
+  static AdhesionLaw exponential(double work_of_adhesion, double rho) {
+    return {AdhesionLawType::exponential, work_of_adhesion, rho};
+  }
+
+  // The largest attractive stress (Pa), w / range for both laws: sigma0 of
+  // Maugis-Dugdale, the traction at contact of the exponential law.
+  double stress() const { return work / range; }
+  // Signed pressure (Pa) the law exerts at `gap` (m, >= 0): <= 0 (attractive).
+  double traction(double gap) const;
+  // Interaction energy per area (J/m^2) at `gap`: -w at contact, rising to 0;
+  // traction = -d energy / d gap.
+  double energy(double gap) const;
+  // d traction / d gap (Pa/m): 0 for Maugis-Dugdale away from h0.
+  double traction_slope(double gap) const;
+  // Whether a cell at `gap` interacts: 0 <= gap < h0 for Maugis-Dugdale;
+  // for the exponential law, while the attraction exceeds
+  // kInteractionFraction of its value at contact (gap < rho ln(1/0.01)).
+  bool interacts(double gap) const;
+  static constexpr double kInteractionFraction = 0.01;
+
+  // Throws InputError naming the option ("work-of-adhesion",
+  // "adhesion-range") and value unless w and range are positive and finite,
+  // and the stress w / range is finite and normal.
+  void validate() const;
+};
+
+}  // namespace halfspace::solvers
+
+namespace halfspace {
+using solvers::AdhesionLaw;
+using solvers::AdhesionLawType;
+}  // namespace halfspace

@@ -1,0 +1,100 @@
+// Adhesive frictionless normal contact: the hard wall gap >= 0 plus a
+// cohesive law (adhesion_law.hpp), solved under displacement control as the
+// bound-constrained minimisation of the total energy over the surface
+// displacement, by spectral projected gradients (SPG: Barzilai-Borwein steps
+// with a non-monotone line search, Birgin, Martinez & Raydan 2000, SIAM J.
+// Optim. 10, 1196): the energy formulation of Pastewka & Robbins (2014,
+// PNAS 111, 3298) and their ContactMechanics code, with another minimiser. Load control wraps it in a search on the
+// approach along the stable branch the warm start follows.
+//
+// The problem. With v the displacement (m), S = K^-1 the stiffness, h the
+// initial gap and delta the approach, the energy per cell area
+//
+//   E(v) = 1/2 v.S v + sum_i phi(h_i + v_i - delta),   v_i >= delta - h_i,
+//
+// (phi the law's energy) has the gradient S v - t(g) (t the law's traction),
+// so its constrained stationary points are the equilibria: p = S v equals
+// t(g) where g > 0 and p >= t(0) where g = 0. The energy is not convex (phi
+// is not), so which equilibrium a solve reaches depends on its start: a warm
+// start from the previous step of a sweep follows a branch, which is how
+// loading and unloading differ (hysteresis, jump-in, pull-off).
+//
+// Grids. Periodic: S is diagonal in Fourier space, E*|q|/2, and the mean
+// displacement is held at 0 (the convention of the operator: the mean gap
+// is mean(h) - delta), so the approach must stay below mean(h); the mean
+// pressure is the multiplier of that constraint. Free: v lives on the
+// zero-padded (2ny, 2nx) grid of the DC-FFT convolution, S is the inverse of
+// its circulant kernel, and the padding carries no interaction, so at a
+// stationary point its pressure vanishes and v on the grid is K p exactly
+// (ContactMechanics' free-boundary half-space does the same).
+//
+// Stopping. residual = max_i |P(v - c G) - v|_i / (c p_ref), with G the
+// gradient, P the projection onto the constraints, c = K_ii (the cell's
+// self-compliance, m/Pa) and p_ref = max(w / range, max |p|): the largest
+// pressure error of the projected gradient step relative to the pressure
+// scale. Zero exactly at a constrained stationary point.
+#pragma once
+
+#include <Eigen/Core>
+#include <functional>
+#include <memory>
+#include <span>
+#include <string_view>
+
+#include "halfspace/fft/fft_planning.hpp"
+#include "halfspace/grid.hpp"
+#include "halfspace/solvers/adhesion_law.hpp"
+#include "halfspace/solvers/contact_solver.hpp"
+
+namespace halfspace::solvers {
+
+struct AdhesiveSolverOptions {
+  AdhesionLaw law;
+  double tolerance = 1e-6;     // relative residual, see Stopping above
+  int max_iterations = 20000;  // per displacement-controlled solve
+  FftPlanning fft_planning = FftPlanning::estimate;
+  // Load control: relative force tolerance of the search on the approach,
+  // and its limit of displacement-controlled solves.
+  double force_tolerance = 1e-6;
+  int max_load_steps = 60;
+  std::function<void(int, double)> progress;  // (iteration, residual), may be empty
+
+  // Throws InputError naming the option unless the law is valid,
+  // 0 < tolerance < 1, 0 < force_tolerance < 1, max_iterations >= 1 and
+  // max_load_steps >= 1.
+  void validate() const;
+};
+
+class AdhesiveContactSolver final : public ContactSolver {
+ public:
+  // Plans the transforms and the kernel once (options.validate() first).
+  // Throws InputError if the free grid's padded kernel is not positive
+  // definite (no stiffness exists; the 1D strip kernel with its datum at
+  // 1 m can be so on domains longer than about 1 m).
+  AdhesiveContactSolver(const Grid& grid, double e_star, AdhesiveSolverOptions options);
+  ~AdhesiveContactSolver() override;
+  AdhesiveContactSolver(const AdhesiveContactSolver&) = delete;
+  AdhesiveContactSolver& operator=(const AdhesiveContactSolver&) = delete;
+
+  std::string_view name() const override { return "adhesive-spg"; }
+  const AdhesiveSolverOptions& options() const;
+
+  // Displacement control: any finite approach (negative: the surfaces start
+  // apart); on a periodic grid it must be below the mean initial gap. Load
+  // control (force or mean pressure, which may be negative: a pull): a
+  // secant-bisection search on the approach, each step a displacement-
+  // controlled solve warm-started from the last; it returns iteration_limit
+  // or breakdown when the force is out of reach of the branch it follows
+  // (beyond pull-off). `initial_pressure` (Pa, signed), if given,
+  // warm-starts from the displacement K p it makes. The result's pressure
+  // is signed (negative: attraction); contact_fraction counts the cells at
+  // the wall (gap 0); result.adhesion holds the adhesive quantities.
+  SolveResult solve(std::span<const double> initial_gap, const Loading& loading,
+                    std::span<const double> initial_pressure = {}) override;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace halfspace::solvers

@@ -1,0 +1,54 @@
+// The stress tensor below a solved contact: from the surface pressure on a
+// Grid, the six components at any depth, matrix-free. Periodic grids use the
+// closed-form Fourier-space solution (fourier_stress.hpp); free grids convolve
+// the pressure with the exact stress coefficients of a loaded cell
+// (rectangle_stress.hpp) by zero padding (DC-FFT, Liu, Wang & Liu 2000).
+// Cost and memory per depth: docs/theory.md#subsurface-stresses.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <span>
+
+#include "halfspace/fft/fft_planning.hpp"
+#include "halfspace/grid.hpp"
+#include "halfspace/stress/fourier_stress.hpp"
+
+namespace halfspace::stress {
+
+// Throws InputError unless -1 < nu <= 0.5 (and finite); returns nu.
+double checked_poisson_ratio(double nu);
+
+// Throws InputError unless depth is finite and > 0 (m); returns it.
+double checked_depth(double depth);
+
+class SubsurfaceStress {
+ public:
+  // Plans the transforms of `grid` (made once, reused for every depth) for a
+  // body of Poisson's ratio nu. Throws InputError for a bad nu.
+  SubsurfaceStress(const Grid& grid, double nu, FftPlanning planning = FftPlanning::estimate);
+  ~SubsurfaceStress();
+  SubsurfaceStress(const SubsurfaceStress&) = delete;
+  SubsurfaceStress& operator=(const SubsurfaceStress&) = delete;
+
+  const Grid& grid() const;
+  double poisson_ratio() const;
+
+  // Takes the surface pressure (Pa, grid.size() values, (ny, nx) row-major,
+  // positive in compression): one forward FFT, kept for every depth. Throws
+  // InputError if the size differs from the grid's or a value is not finite.
+  void set_pressure(std::span<const double> pressure);
+
+  // The stress (Pa, compression negative) at depth z (m, > 0) below every
+  // cell centre: fields[c] (grid.size() values each) receives component c in
+  // Component order. One inverse FFT per component (free grids: also one
+  // forward FFT of the padded coefficients per component). Throws InputError
+  // for a bad depth, a field of the wrong size, or no pressure set.
+  void compute(double depth, const std::array<std::span<double>, kComponentCount>& fields);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace halfspace::stress

@@ -1,0 +1,84 @@
+// The pressure and grid of a result file: the field through the HDF5 height
+// map reader (which checks rank, type, size and finiteness), the boundary
+// from its root attribute.
+#include "halfspace/io/result_pressure_reader.hpp"
+
+#include <fmt/format.h>
+#include <hdf5.h>
+
+#include <string>
+
+#include "halfspace/error.hpp"
+#include "halfspace/io/hdf5_height_map_reader.hpp"
+#include "hdf5_handle.hpp"
+
+namespace halfspace::io {
+namespace {
+
+[[noreturn]] void fail(const std::filesystem::path& path, const std::string& what) {
+  throw FileError(fmt::format("cannot read result file '{}': {}", path.string(), what));
+}
+
+std::string read_boundary(const std::filesystem::path& path) {
+  const detail::ErrorPrintingOff quiet;
+  const detail::File file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
+  if (!file.valid()) fail(path, "it cannot be opened as HDF5");
+  if (H5Aexists(file.get(), "boundary") <= 0) {
+    fail(path, "it has no root attribute 'boundary' (periodic or free): is it a halfspace result file?");
+  }
+  const detail::Attribute attribute(H5Aopen(file.get(), "boundary", H5P_DEFAULT));
+  const detail::Datatype type(H5Aget_type(attribute.get()));
+  if (!attribute.valid() || !type.valid() || H5Tget_class(type.get()) != H5T_STRING) {
+    fail(path, "its root attribute 'boundary' is not a string");
+  }
+  std::string value;
+  if (H5Tis_variable_str(type.get()) > 0) {
+    const detail::Datatype memory(H5Tcopy(H5T_C_S1));
+    H5Tset_size(memory.get(), H5T_VARIABLE);
+    H5Tset_cset(memory.get(), H5Tget_cset(type.get()));
+    char* text = nullptr;
+    if (H5Aread(attribute.get(), memory.get(), &text) < 0 || text == nullptr) {
+      fail(path, "its root attribute 'boundary' cannot be read");
+    }
+    value = text;
+    H5free_memory(text);
+  } else {
+    const std::size_t size = H5Tget_size(type.get());
+    if (size == 0 || size > 64) fail(path, "its root attribute 'boundary' is not 'periodic' or 'free'");
+    std::string buffer(size, '\0');
+    if (H5Aread(attribute.get(), type.get(), buffer.data()) < 0) {
+      fail(path, "its root attribute 'boundary' cannot be read");
+    }
+    value = buffer.substr(0, buffer.find('\0'));
+  }
+  return value;
+}
+
+}  // namespace
+
+ResultPressure read_result_pressure(const std::filesystem::path& path) {
+  HeightMap field;
+  try {
+    field = read_hdf5_height_map(path, "/pressure");
+  } catch (const FileError& error) {
+    fail(path, fmt::format("its pressure cannot be read ({})", error.what()));
+  }
+  Boundary boundary = Boundary::periodic;
+  try {
+    boundary = parse_boundary(read_boundary(path));
+  } catch (const FileError&) {
+    throw;
+  } catch (const InputError& error) {
+    fail(path, fmt::format("root attribute 'boundary': {}", error.what()));
+  }
+  if (!(field.dx > 0.0) || (field.dimension == 2 && !(field.dy > 0.0))) {
+    fail(path, fmt::format("its root attributes dx = {} m, dy = {} m do not give a grid spacing (> 0 m)", field.dx,
+                           field.dy));
+  }
+  ResultPressure result{field.dimension == 1 ? Grid::line(field.nx, field.dx, boundary)
+                                             : Grid::plane(field.nx, field.ny, field.dx, field.dy, boundary),
+                        std::vector<double>(field.heights.data(), field.heights.data() + field.heights.size())};
+  return result;
+}
+
+}  // namespace halfspace::io

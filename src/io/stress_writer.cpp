@@ -1,0 +1,57 @@
+// The /stress group and the stress command's file, with the conventions of
+// hdf5_output.hpp (units attributes, chunked and compressed fields).
+#include "halfspace/io/stress_writer.hpp"
+
+#include <fmt/format.h>
+
+#include <cstdint>
+#include <vector>
+
+#include "halfspace/version.hpp"
+
+namespace halfspace::io {
+namespace {
+
+constexpr std::int64_t kStressFormatVersion = 1;
+
+}  // namespace
+
+void write_stress_group(const Hdf5Node& root, const Grid& grid, const stress::StressVolume& volume, double nu) {
+  const Hdf5Node group = root.create_group("stress");
+  group.write_double_attribute("poisson_ratio", nu);
+  group.write_string_attribute("sign_convention", "tension positive (compression negative); z positive downwards");
+  group.write_dataset("depths", {volume.depths.size()}, std::span<const double>(volume.depths), "m");
+  std::vector<std::size_t> shape = field_shape(grid);
+  shape.insert(shape.begin(), volume.depths.size());
+  for (std::size_t c = 0; c < stress::kComponentCount; ++c) {
+    group.write_dataset(stress::kComponentNames[c], shape, std::span<const double>(volume.components[c]), "Pa");
+  }
+  group.write_dataset("von_mises", shape, std::span<const double>(volume.von_mises), "Pa");
+  group.write_dataset("max_shear", shape, std::span<const double>(volume.max_shear), "Pa");
+  root.write_double_attribute("max_von_mises", volume.max_von_mises.value);
+  root.write_double_attribute("max_von_mises_x", volume.max_von_mises.x);
+  root.write_double_attribute("max_von_mises_y", volume.max_von_mises.y);
+  root.write_double_attribute("max_von_mises_z", volume.max_von_mises.z);
+}
+
+void write_stress_file(const std::filesystem::path& path, const Grid& grid, std::span<const double> pressure,
+                       const stress::StressVolume& volume, double nu, const StressFileMetadata& metadata) {
+  write_hdf5_file(path, [&](const Hdf5Node& root) {
+    root.write_string_attribute("format", "halfspace-stress");
+    root.write_int64_attribute("format_version", kStressFormatVersion);
+    root.write_string_attribute("units", "SI: depths, dx, dy and positions in m; stresses and pressure in Pa");
+    root.write_int64_attribute("dimension", grid.dimension());
+    root.write_int64_attribute("nx", static_cast<std::int64_t>(grid.nx()));
+    root.write_int64_attribute("ny", static_cast<std::int64_t>(grid.ny()));
+    root.write_double_attribute("dx", grid.dx());
+    root.write_double_attribute("dy", grid.dimension() == 1 ? 0.0 : grid.dy());
+    root.write_string_attribute("boundary", to_string(grid.boundary()));
+    root.write_string_attribute("halfspace_version", fmt::format("{} ({})", kVersion, kGitHash));
+    root.write_string_attribute("command_line", metadata.command_line);
+    root.write_string_attribute("source", metadata.source);
+    root.write_dataset("pressure", field_shape(grid), pressure, "Pa");
+    write_stress_group(root, grid, volume, nu);
+  });
+}
+
+}  // namespace halfspace::io

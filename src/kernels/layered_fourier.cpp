@@ -1,0 +1,160 @@
+// The bonded-layer kernel of a coated half-space. The compliance factor
+//   M(s) = (1 + 4 kappa s e - lambda kappa e^2) / (1 - (lambda + kappa + 4 kappa s^2) e + lambda kappa e^2),
+//   s = |q| t, e = exp(-2 s), g = mu1/mu2,
+//   kappa = (g - 1)/(g + 3 - 4 nu1), lambda = 1 - 4 (1 - nu1)/(1 + g (3 - 4 nu2)),
+// is the closed-form solution of the layer's plane-strain equations for one
+// Fourier mode with zero surface shear and continuous displacements and
+// tractions at the interface (O'Sullivan & King 1988, Stanley & Kato 1997);
+// docs/theory.md, "Coated half-space", checks it against a direct solution
+// of those equations. Its limits: kappa = lambda = 0 for identical
+// materials (M = 1), M -> 1 for s -> inf, and M(0) = (1 - lambda kappa) /
+// ((1 - lambda)(1 - kappa)) = E1*/E2*.
+#include "halfspace/kernels/layered_fourier.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "halfspace/kernels/love_rectangle.hpp"
+#include "halfspace/linalg/parallel.hpp"
+
+namespace halfspace::kernels {
+namespace {
+
+double sinc(double x) {
+  return x == 0.0 ? 1.0 : std::sin(x) / x;
+}
+
+// Antiderivative in X and Y of 1/sqrt(X^2 + Y^2 + s^2), s > 0: the potential of
+// a uniform rectangle at height s. Y + rho is formed without cancellation for
+// Y < 0.
+double smoothed_potential_antiderivative(double x, double y, double s) {
+  const double rho = std::sqrt(x * x + y * y + s * s);
+  auto log_sum = [rho, s](double a, double other) {  // ln(a + rho)
+    return a >= 0.0 ? std::log(a + rho) : std::log((other * other + s * s) / (rho - a));
+  };
+  return x * log_sum(y, x) + y * log_sum(x, y) - s * std::atan(x * y / (s * rho));
+}
+
+}  // namespace
+
+LayeredKernel::LayeredKernel(const LayeredMaterial& material)
+    : material_(validated(material)),
+      layer_modulus_(plane_strain_modulus(material.layer)),
+      substrate_modulus_(plane_strain_modulus(material.substrate)) {
+  const double nu1 = material.layer.poissons_ratio;
+  const double nu2 = material.substrate.poissons_ratio;
+  // Shear moduli mu = E / (2 (1 + nu)); their ratio g.
+  const double g = (material.layer.youngs_modulus / (1.0 + nu1)) / (material.substrate.youngs_modulus / (1.0 + nu2));
+  kappa_ = (g - 1.0) / (g + 3.0 - 4.0 * nu1);
+  one_minus_kappa_ = 4.0 * (1.0 - nu1) / (g + 3.0 - 4.0 * nu1);
+  one_minus_lambda_ = 4.0 * (1.0 - nu1) / (1.0 + g * (3.0 - 4.0 * nu2));
+  lambda_ = 1.0 - one_minus_lambda_;
+  // R(q) -> (2 t / E1*) d/ds [M - 1 - (c - 1) exp(-s)] at s = 0: Richardson
+  // extrapolation of the difference quotient, O(h^2) = 1e-8 relative.
+  constexpr double h = 1e-4;
+  const double t = material_.thickness;
+  remainder_at_zero_ = 2.0 * remainder(h / t) - remainder(2.0 * h / t);
+}
+
+double LayeredKernel::compliance_factor(double q) const {
+  const double s = std::abs(q) * material_.thickness;
+  const double e = std::exp(-2.0 * s);
+  const double em1 = std::expm1(-2.0 * s);  // e - 1
+  // 1 - lambda e = (1 - lambda) - lambda (e - 1), likewise for kappa: exact
+  // near s = 0, where the denominator tends to (1 - lambda)(1 - kappa).
+  const double denominator =
+      (one_minus_lambda_ - lambda_ * em1) * (one_minus_kappa_ - kappa_ * em1) - 4.0 * kappa_ * s * s * e;
+  const double one_minus_lambda_kappa = one_minus_lambda_ + lambda_ * one_minus_kappa_;
+  const double numerator = one_minus_lambda_kappa - lambda_ * kappa_ * std::expm1(-4.0 * s) + 4.0 * kappa_ * s * e;
+  return numerator / denominator;
+}
+
+double LayeredKernel::spectrum(double q) const {
+  return q == 0.0 ? 0.0 : 2.0 * compliance_factor(q) / (layer_modulus_ * std::abs(q));
+}
+
+double LayeredKernel::remainder(double q) const {
+  if (q == 0.0) return remainder_at_zero_;
+  const double t = material_.thickness;
+  const double s = std::abs(q) * t;
+  const double c = layer_modulus_ / substrate_modulus_;
+  double bracket;  // M - 1 - (c - 1) exp(-s), divided by s
+  if (s < 1.0) {
+    // (M - c) + (c - 1)(1 - exp(-s)): both terms vanish like s.
+    bracket = ((compliance_factor(q) - c) - (c - 1.0) * std::expm1(-s)) / s;
+  } else {
+    // M - 1 = e (lambda + kappa + 4 kappa s (1 + s) - 2 lambda kappa e) / D,
+    // free of the cancellation of M - 1 when M is close to 1.
+    const double e = std::exp(-2.0 * s);
+    const double em1 = std::expm1(-2.0 * s);
+    const double denominator =
+        (one_minus_lambda_ - lambda_ * em1) * (one_minus_kappa_ - kappa_ * em1) - 4.0 * kappa_ * s * s * e;
+    const double m_minus_one =
+        e * (lambda_ + kappa_ + 4.0 * kappa_ * s * (1.0 + s) - 2.0 * lambda_ * kappa_ * e) / denominator;
+    bracket = (m_minus_one - (c - 1.0) * std::exp(-s)) / s;
+  }
+  return 2.0 * t * bracket / layer_modulus_;
+}
+
+double LayeredKernel::near_rectangle_displacement(double x, double y, double hx, double hy) const {
+  // 2 exp(-q t)/(E |q|) is, in real space, 1/(pi E sqrt(r^2 + t^2)): its cell
+  // integral is the rectangle potential at height t.
+  const double t = material_.thickness;
+  const double smoothed =
+      smoothed_potential_antiderivative(x + hx, y + hy, t) - smoothed_potential_antiderivative(x + hx, y - hy, t) -
+      smoothed_potential_antiderivative(x - hx, y + hy, t) + smoothed_potential_antiderivative(x - hx, y - hy, t);
+  const double weight = (1.0 / substrate_modulus_ - 1.0 / layer_modulus_) / std::numbers::pi;
+  return love_rectangle_displacement(x, y, hx, hy, layer_modulus_) + weight * smoothed;
+}
+
+double LayeredKernel::remainder_cell_spectrum(double qx, double qy, double dx, double dy) const {
+  // Collocation at cell centres of a piecewise-constant pressure: the cell's
+  // transform is dx dy sinc(qx dx/2) sinc(qy dy/2); on grid points the alias
+  // images e^{i 2 pi m x/dx} are 1, so they add up in one DFT bin.
+  const double period_x = 2.0 * std::numbers::pi / dx;
+  const double period_y = 2.0 * std::numbers::pi / dy;
+  double sum = 0.0;
+  for (int my = -kAliasImages; my <= kAliasImages; ++my) {
+    const double ky = qy + my * period_y;
+    const double shape_y = sinc(0.5 * ky * dy);
+    for (int mx = -kAliasImages; mx <= kAliasImages; ++mx) {
+      const double kx = qx + mx * period_x;
+      sum += remainder(std::hypot(kx, ky)) * sinc(0.5 * kx * dx) * shape_y;
+    }
+  }
+  return sum;
+}
+
+std::vector<double> LayeredKernel::remainder_point_table(double r_max, double step) const {
+  const double t = material_.thickness;
+  const double c = layer_modulus_ / substrate_modulus_;
+  // Up to q t = 40 (the integrand has fallen by e^-40 of its scale); steps
+  // that resolve both the decay (t/40) and J0's period at r_max (2 pi / r_max)
+  // with Simpson's error far below 1e-6.
+  const double q_max = 40.0 / t;
+  const double h_max = std::min(0.02 / t, 0.2 / std::max(r_max, t));
+  const auto intervals = 2 * static_cast<std::size_t>(std::ceil(0.5 * q_max / h_max));
+  const double h = q_max / static_cast<double>(intervals);
+  std::vector<double> weighted(intervals + 1);  // Simpson weight times integrand, without J0
+  for (std::size_t k = 0; k <= intervals; ++k) {
+    const double q = static_cast<double>(k) * h;
+    const double s = q * t;
+    const double f = k == 0 ? 0.0 : (compliance_factor(q) - 1.0) - (c - 1.0) * std::exp(-s);
+    const double w = (k == 0 || k == intervals) ? 1.0 : (k % 2 == 1 ? 4.0 : 2.0);
+    weighted[k] = w * f * h / 3.0;
+  }
+  const auto entries = static_cast<std::size_t>(std::floor(r_max / step)) + 2;
+  std::vector<double> table(entries);
+  linalg::for_each_row(entries, intervals, [&](std::size_t i) {
+    const double r = static_cast<double>(i) * step;
+    double sum = 0.0;
+    for (std::size_t k = 0; k <= intervals; ++k)
+      sum += weighted[k] * std::cyl_bessel_j(0.0, static_cast<double>(k) * h * r);
+    table[i] = sum / (std::numbers::pi * layer_modulus_);
+  });
+  return table;
+}
+
+}  // namespace halfspace::kernels

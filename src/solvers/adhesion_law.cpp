@@ -1,0 +1,63 @@
+// The two cohesive laws and their checks.
+#include "halfspace/solvers/adhesion_law.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "halfspace/error.hpp"
+
+namespace halfspace::solvers {
+
+std::string_view to_string(AdhesionLawType type) {
+  switch (type) {
+    case AdhesionLawType::maugis_dugdale:
+      return "md";
+    case AdhesionLawType::exponential:
+      return "exponential";
+  }
+  return "unknown";
+}
+
+AdhesionLawType parse_adhesion_law_type(std::string_view name) {
+  if (name == "md" || name == "maugis-dugdale") return AdhesionLawType::maugis_dugdale;
+  if (name == "exponential") return AdhesionLawType::exponential;
+  throw InputError(fmt::format("adhesion = {} is invalid: allowed laws are md, exponential", name));
+}
+
+double AdhesionLaw::traction(double gap) const {
+  if (type == AdhesionLawType::maugis_dugdale) return gap < range ? -stress() : 0.0;
+  return -stress() * std::exp(-gap / range);
+}
+
+double AdhesionLaw::energy(double gap) const {
+  if (type == AdhesionLawType::maugis_dugdale) return gap < range ? -work + stress() * gap : 0.0;
+  return -work * std::exp(-gap / range);
+}
+
+double AdhesionLaw::traction_slope(double gap) const {
+  if (type == AdhesionLawType::maugis_dugdale) return 0.0;
+  return stress() / range * std::exp(-gap / range);
+}
+
+bool AdhesionLaw::interacts(double gap) const {
+  if (type == AdhesionLawType::maugis_dugdale) return gap < range;
+  return gap < range * std::log(1.0 / kInteractionFraction);
+}
+
+void AdhesionLaw::validate() const {
+  if (!(std::isfinite(work) && work > 0.0)) {
+    throw InputError(fmt::format("work-of-adhesion = {} is invalid: must be positive and finite (J/m^2)", work));
+  }
+  if (!(std::isfinite(range) && range > 0.0)) {
+    throw InputError(fmt::format("adhesion-range = {} is invalid: must be positive and finite (m)", range));
+  }
+  const double sigma = stress();
+  if (!(std::isfinite(sigma) && std::isnormal(sigma))) {
+    throw InputError(fmt::format(
+        "adhesion stress = work-of-adhesion / adhesion-range = {} / {} = {} Pa is invalid: must be finite and normal",
+        work, range, sigma));
+  }
+}
+
+}  // namespace halfspace::solvers

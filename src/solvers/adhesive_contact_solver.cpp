@@ -1,0 +1,538 @@
+// Spectral projected gradients on the adhesive contact energy
+// (adhesive_contact_solver.hpp). Each iteration costs one product with the
+// stiffness S (one FFT pair): the trial energies of the line search reuse
+// S v and S d, since the elastic energy is quadratic along a line.
+#include "halfspace/solvers/adhesive_contact_solver.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "halfspace/error.hpp"
+#include "halfspace/fft/even_symbol.hpp"
+#include "halfspace/fft/real_fft.hpp"
+#include "halfspace/kernels/love_rectangle.hpp"
+#include "halfspace/kernels/periodic_fourier.hpp"
+#include "halfspace/kernels/plane_strain_strip.hpp"
+#include "halfspace/linalg/parallel.hpp"
+#include "halfspace/material.hpp"
+
+namespace halfspace::solvers {
+namespace {
+
+// Non-monotone line search of SPG (Grippo, Lampariello & Lucidi 1986): a
+// step is accepted against the largest of the last kMemory energies, which
+// lets the Barzilai-Borwein steps through the narrow valleys of an
+// ill-conditioned energy.
+constexpr std::size_t kMemory = 10;
+constexpr double kSufficientDecrease = 1e-4;
+constexpr int kMaxBacktracks = 40;
+// S v is updated along the steps (S v += lambda S d); it is recomputed from v
+// this often, so rounding does not accumulate.
+constexpr int kRefreshEvery = 50;
+
+std::size_t mirrored(std::size_t k, std::size_t n) {
+  return k <= n ? k : 2 * n - k;
+}
+
+}  // namespace
+
+void AdhesiveSolverOptions::validate() const {
+  law.validate();
+  if (!(tolerance > 0.0 && tolerance < 1.0)) {
+    throw InputError(fmt::format("tolerance = {} is invalid: allowed range is (0, 1)", tolerance));
+  }
+  if (!(force_tolerance > 0.0 && force_tolerance < 1.0)) {
+    throw InputError(fmt::format("force tolerance = {} is invalid: allowed range is (0, 1)", force_tolerance));
+  }
+  if (max_iterations < 1) {
+    throw InputError(fmt::format("max_iterations = {} is invalid: must be at least 1", max_iterations));
+  }
+  if (max_load_steps < 1) {
+    throw InputError(fmt::format("max_load_steps = {} is invalid: must be at least 1", max_load_steps));
+  }
+}
+
+struct AdhesiveContactSolver::Impl {
+  Impl(const Grid& g, double e, AdhesiveSolverOptions o)
+      : grid(g),
+        e_star(checked_composite_modulus(e)),
+        options(std::move(o)),
+        padded(!g.periodic()),
+        rows(g.dimension() == 1 ? 1 : (padded ? 2 * g.ny() : g.ny())),
+        cols(padded ? 2 * g.nx() : g.nx()),
+        fft(rows == 1 ? RealFft(cols, options.fft_planning) : RealFft(rows, cols, options.fft_planning)),
+        kernel(rows, cols / 2 + 1),
+        stiffness(rows, cols / 2 + 1) {
+    const std::size_t m = rows * cols;
+    for (Eigen::ArrayXd* a : {&x, &sx, &gradient, &trial, &direction, &s_direction, &offset, &lower}) a->resize(m);
+    physical.assign(m, 0);
+    for (std::size_t k = 0; k < grid.size(); ++k) physical[index(k)] = 1;
+    if (padded) {
+      init_free();
+    } else {
+      init_periodic();
+    }
+    // K_ii: the displacement of cell 0 under unit pressure on it alone.
+    trial.setZero();
+    trial[0] = 1.0;
+    apply(kernel, trial, direction);
+    compliance = direction[0];
+  }
+
+  // Index in the variable's array of grid cell k ((ny, nx) row-major).
+  std::size_t index(std::size_t k) const { return padded ? (k / grid.nx()) * cols + k % grid.nx() : k; }
+  std::size_t size() const { return rows * cols; }
+
+  void init_periodic() {
+    const double inverse_m = 1.0 / static_cast<double>(size());
+    for (std::size_t r = 0; r < kernel.stored_rows(); ++r) {
+      const double qy = grid.dimension() == 1 ? 0.0 : kernels::dft_wavenumber(r, grid.ny(), grid.dy());
+      for (std::size_t c = 0; c < kernel.cols(); ++c) {
+        const double q = std::hypot(kernels::dft_wavenumber(c, grid.nx(), grid.dx()), qy);
+        kernel.at(r, c) = kernels::periodic_kernel_spectrum(q, e_star) * inverse_m;
+        // The mean mode has no stiffness: the mean displacement is held at
+        // 0 by the projection instead.
+        stiffness.at(r, c) = q > 0.0 ? 0.5 * e_star * q * inverse_m : 0.0;
+      }
+    }
+  }
+
+  // The circulant of the DC-FFT convolution on the padded grid (as the FFT
+  // operator builds it) and its inverse.
+  void init_free() {
+    const std::size_t nx = grid.nx();
+    const std::size_t ny = grid.ny();
+    const bool line = grid.dimension() == 1;
+    std::span<double> input = fft.input();
+    for (std::size_t r = 0; r < rows; ++r) {
+      const std::size_t dj = line ? 0 : mirrored(r, ny);
+      for (std::size_t c = 0; c < cols; ++c) {
+        const double x_offset = static_cast<double>(mirrored(c, nx)) * grid.dx();
+        input[r * cols + c] = line ? kernels::plane_strain_strip_displacement(x_offset, grid.dx(), e_star)
+                                   : kernels::love_rectangle_displacement(x_offset, static_cast<double>(dj) * grid.dy(),
+                                                                          0.5 * grid.dx(), 0.5 * grid.dy(), e_star);
+      }
+    }
+    fft.forward();
+    const std::span<const std::complex<double>> spectrum = fft.spectrum();
+    const double inverse_m = 1.0 / static_cast<double>(size());
+    double smallest = std::numeric_limits<double>::infinity();
+    for (std::size_t r = 0; r < kernel.stored_rows(); ++r) {
+      for (std::size_t c = 0; c < kernel.cols(); ++c) {
+        const double k = spectrum[r * kernel.cols() + c].real();
+        smallest = std::min(smallest, k);
+        kernel.at(r, c) = k * inverse_m;
+        stiffness.at(r, c) = k > 0.0 ? inverse_m / k : 0.0;
+      }
+    }
+    if (!(smallest > 0.0)) {
+      throw InputError(fmt::format(
+          "adhesion on the free {} grid: the padded influence kernel is not positive definite (smallest eigenvalue "
+          "{:g} m/Pa), so the stiffness the adhesive solver minimises with does not exist; use a periodic grid{}",
+          grid.shape_string(), smallest, line ? " or a domain shorter than 1 m (the strip kernel's datum)" : ""));
+    }
+  }
+
+  // out = symbol applied to in (the unnormalised FFT pair with 1/M folded in).
+  void apply(const EvenSymbol& symbol, const Eigen::ArrayXd& in, Eigen::ArrayXd& out) {
+    const std::size_t m = size();
+    if (!fft.forward_from({in.data(), m})) {
+      std::span<double> input = fft.input();
+      linalg::for_each_index(m, [&](std::size_t i) { input[i] = in[static_cast<Eigen::Index>(i)]; });
+      fft.forward();
+    }
+    symbol.multiply(fft.spectrum());
+    if (!fft.backward_into({out.data(), m})) {
+      fft.backward();
+      std::span<const double> output = fft.output();
+      linalg::for_each_index(m, [&](std::size_t i) { out[static_cast<Eigen::Index>(i)] = output[i]; });
+    }
+  }
+
+  // z = the projection of y onto {v >= lower} (and, periodic, mean v = 0:
+  // z = max(lower, y - tau) with tau the root of the convex, decreasing,
+  // piecewise linear sum, found by Newton's method from the left, exact once
+  // a step clips no new cell). Returns false if no feasible point exists.
+  bool project(const Eigen::ArrayXd& y, Eigen::ArrayXd& z) const {
+    const std::size_t m = size();
+    if (padded) {
+      linalg::for_each_index(m, [&](std::size_t i) { z[i] = std::max(lower[i], y[i]); });
+      return true;
+    }
+    const auto sum_and_free = [&](double tau) {
+      return linalg::sums<2>(m, [&](std::size_t i) {
+        const double v = y[i] - tau;
+        return v > lower[i] ? std::array<double, 2>{v, 1.0} : std::array<double, 2>{lower[i], 0.0};
+      });
+    };
+    double tau = y.mean();
+    std::array<double, 2> s = sum_and_free(tau);
+    for (int k = 0; k < 1000; ++k) {
+      if (s[1] == 0.0) return false;
+      tau += s[0] / s[1];
+      const std::array<double, 2> next = sum_and_free(tau);
+      const bool exact = next[1] == s[1];
+      s = next;
+      if (exact) break;
+    }
+    linalg::for_each_index(m, [&](std::size_t i) { z[i] = std::max(lower[i], y[i] - tau); });
+    return true;
+  }
+
+  // The interaction energy sum_i phi(g_i + step * d_i) over the grid cells.
+  double interaction_energy(const Eigen::ArrayXd& v, const Eigen::ArrayXd* d, double step) const {
+    const AdhesionLaw& law = options.law;
+    return linalg::sum(size(), [&](std::size_t i) {
+      if (!physical[i]) return 0.0;
+      const double g = offset[i] + v[i] + (d ? step * (*d)[i] : 0.0);
+      return law.energy(std::max(g, 0.0));
+    });
+  }
+
+  // gradient = S v - t(g) on the grid, S v on the padding.
+  void make_gradient() {
+    const AdhesionLaw& law = options.law;
+    linalg::for_each_index(size(), [&](std::size_t i) {
+      gradient[i] = physical[i] ? sx[i] - law.traction(std::max(offset[i] + x[i], 0.0)) : sx[i];
+    });
+  }
+
+  double dot(const Eigen::ArrayXd& a, const Eigen::ArrayXd& b) const {
+    return linalg::sum(size(), [&](std::size_t i) { return a[i] * b[i]; });
+  }
+
+  SolveResult solve_displacement(std::span<const double> initial_gap, double approach,
+                                 std::span<const double> initial_pressure, bool start_from_last);
+  SolveResult solve_force(std::span<const double> initial_gap, double target, std::span<const double> initial_pressure);
+  void fill_result(SolveResult& result, std::span<const double> initial_gap, double approach);
+
+  Grid grid;
+  double e_star;
+  AdhesiveSolverOptions options;
+  bool padded;
+  std::size_t rows;
+  std::size_t cols;
+  RealFft fft;
+  EvenSymbol kernel;     // K: the kernel spectrum over M
+  EvenSymbol stiffness;  // S = K^-1 over M (0 at the periodic mean mode)
+  double compliance = 0.0;
+  std::vector<unsigned char> physical;  // 1 on the grid's cells, 0 on the padding
+  // Workspace over the variable's array: v, S v, the gradient, the trial
+  // point P(v - alpha G), the step d, S d, the offset h - delta (gap =
+  // offset + v) and the bound delta - h (-inf on the padding).
+  Eigen::ArrayXd x, sx, gradient, trial, direction, s_direction, offset, lower;
+  bool have_last = false;  // x holds the last solve's displacement
+  double last_approach = 0.0;
+};
+
+SolveResult AdhesiveContactSolver::Impl::solve_displacement(std::span<const double> initial_gap, double approach,
+                                                            std::span<const double> initial_pressure,
+                                                            bool start_from_last) {
+  const auto started = std::chrono::steady_clock::now();
+  const std::size_t m = size();
+  const double inf = std::numeric_limits<double>::infinity();
+  offset.setZero();
+  lower.setConstant(-inf);
+  for (std::size_t k = 0; k < grid.size(); ++k) {
+    offset[index(k)] = initial_gap[k] - approach;
+    lower[index(k)] = approach - initial_gap[k];
+  }
+  if (!padded && !(lower.mean() < 0.0)) {
+    throw InputError(fmt::format(
+        "approach = {} m is invalid for a periodic surface: it must be below the mean initial gap {} m (full contact "
+        "needs infinite pressure there)",
+        approach, approach - lower.mean()));
+  }
+  // The start: the last solution's displacement, K p of the given pressure,
+  // or 0, projected onto the constraints.
+  if (!start_from_last) {
+    direction.setZero();
+    if (!initial_pressure.empty()) {
+      for (std::size_t k = 0; k < grid.size(); ++k) direction[index(k)] = initial_pressure[k];
+      apply(kernel, direction, direction);
+    }
+    x = direction;
+  }
+  SolveResult result;
+  result.solver = "adhesive-spg";
+  result.tolerance = options.tolerance;
+  if (!project(x, x)) {
+    result.status = SolveStatus::breakdown;
+    result.message = "no displacement satisfies the constraints";
+    return result;
+  }
+  apply(stiffness, x, sx);
+  result.operator_applications = 1;
+  make_gradient();
+  double energy = 0.5 * dot(x, sx) + interaction_energy(x, nullptr, 0.0);
+  std::array<double, kMemory> recent;
+  recent.fill(energy);
+
+  const double c = compliance;
+  const double alpha_min = 1e-10 * c;
+  const double alpha_max = 1e6 * c;
+  double alpha = c;
+  const double stress = options.law.stress();
+  result.status = SolveStatus::iteration_limit;
+  for (int iteration = 0;; ++iteration) {
+    // Residual: the projected gradient step of length c, in pressure.
+    trial = x - c * gradient;
+    project(trial, trial);
+    const double step_norm = linalg::max_of(m, [&](std::size_t i) { return std::abs(trial[i] - x[i]); });
+    const double max_pressure = linalg::max_of(m, [&](std::size_t i) { return physical[i] ? std::abs(sx[i]) : 0.0; });
+    const double residual = step_norm / (c * std::max(stress, max_pressure));
+    result.residual = residual;
+    result.iterations = iteration;
+    if (result.residual_history.size() < 100000) result.residual_history.push_back(residual);
+    if (options.progress) options.progress(iteration, residual);
+    if (!std::isfinite(residual)) {
+      result.status = SolveStatus::breakdown;
+      result.message = fmt::format("the residual is not finite at iteration {}", iteration);
+      break;
+    }
+    if (residual <= options.tolerance) {
+      result.status = SolveStatus::converged;
+      break;
+    }
+    if (iteration >= options.max_iterations) {
+      result.message = fmt::format("no convergence in {} iterations: residual {:.3g} > tolerance {:.3g}", iteration,
+                                   residual, options.tolerance);
+      break;
+    }
+    // The spectral step and the line search along d = P(v - alpha G) - v.
+    trial = x - alpha * gradient;
+    project(trial, trial);
+    direction = trial - x;
+    apply(stiffness, direction, s_direction);
+    ++result.operator_applications;
+    const double slope = dot(gradient, direction);
+    if (!(slope < 0.0)) {
+      result.status = SolveStatus::breakdown;
+      result.message = fmt::format(
+          "the projected gradient step is no descent direction at iteration {} (residual {:.3g}): rounding limits "
+          "the accuracy; loosen the tolerance",
+          iteration, residual);
+      break;
+    }
+    const double elastic = 0.5 * dot(x, sx);
+    const double linear = dot(direction, sx);
+    const double quadratic = 0.5 * dot(direction, s_direction);
+    const double reference = *std::max_element(recent.begin(), recent.end());
+    double step = 1.0;
+    double trial_energy = 0.0;
+    int backtracks = 0;
+    for (;; ++backtracks) {
+      trial_energy = elastic + step * linear + step * step * quadratic + interaction_energy(x, &direction, step);
+      if (trial_energy <= reference + kSufficientDecrease * step * slope || backtracks >= kMaxBacktracks) break;
+      // Safeguarded quadratic interpolation of the energy along the line.
+      const double curvature = trial_energy - energy - step * slope;
+      double next = curvature > 0.0 ? -0.5 * slope * step * step / curvature : 0.5 * step;
+      step = std::clamp(next, 0.1 * step, 0.5 * step);
+    }
+    if (backtracks >= kMaxBacktracks) {
+      result.status = SolveStatus::breakdown;
+      result.message =
+          fmt::format("the line search found no decrease at iteration {} (residual {:.3g})", iteration, residual);
+      break;
+    }
+    // s = step d, y = G_new - G; the Barzilai-Borwein step s.s / s.y.
+    if (step == 1.0) {
+      x = trial;
+    } else {
+      x += step * direction;
+    }
+    if ((iteration + 1) % kRefreshEvery == 0) {
+      apply(stiffness, x, sx);
+      ++result.operator_applications;
+    } else {
+      sx += step * s_direction;
+    }
+    trial = gradient;  // the old gradient
+    make_gradient();
+    const double ss = step * step * dot(direction, direction);
+    const double sy = step * linalg::sum(m, [&](std::size_t i) { return direction[i] * (gradient[i] - trial[i]); });
+    alpha = sy > 0.0 ? std::clamp(ss / sy, alpha_min, alpha_max) : alpha_max;
+    energy = trial_energy;
+    recent[static_cast<std::size_t>(iteration + 1) % kMemory] = energy;
+  }
+  have_last = result.converged();
+  last_approach = approach;
+  fill_result(result, initial_gap, approach);
+  result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  return result;
+}
+
+void AdhesiveContactSolver::Impl::fill_result(SolveResult& result, std::span<const double> initial_gap,
+                                              double approach) {
+  const std::size_t n = grid.size();
+  // The periodic mean pressure: the multiplier of mean v = 0, -G on the
+  // cells off the wall (where the gradient vanishes at the solution).
+  double mean_pressure_shift = 0.0;
+  if (!padded) {
+    const std::array<double, 2> free_part = linalg::sums<2>(n, [&](std::size_t i) {
+      return x[i] > lower[i] ? std::array<double, 2>{gradient[i], 1.0} : std::array<double, 2>{0.0, 0.0};
+    });
+    if (free_part[1] > 0.0) mean_pressure_shift = -free_part[0] / free_part[1];
+  }
+  result.approach = approach;
+  result.pressure.resize(static_cast<Eigen::Index>(n));
+  result.displacement.resize(static_cast<Eigen::Index>(n));
+  result.gap.resize(static_cast<Eigen::Index>(n));
+  const AdhesionLaw& law = options.law;
+  double force = 0.0;
+  double adhesive = 0.0;
+  double max_pressure = -std::numeric_limits<double>::infinity();
+  std::size_t at_wall = 0;
+  std::size_t repulsive = 0;
+  std::size_t interacting = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t i = index(k);
+    const bool wall = x[i] <= lower[i];
+    const double g = wall ? 0.0 : std::max(initial_gap[k] + x[i] - approach, 0.0);
+    // Off the wall the law gives the pressure exactly; S v there differs
+    // from it by the residual, which would show as spurious contact.
+    const double p = wall ? sx[i] + mean_pressure_shift : law.traction(g);
+    result.pressure[static_cast<Eigen::Index>(k)] = p;
+    result.displacement[static_cast<Eigen::Index>(k)] = x[i];
+    result.gap[static_cast<Eigen::Index>(k)] = g;
+    force += p;
+    adhesive += std::min(p, 0.0);
+    max_pressure = std::max(max_pressure, p);
+    at_wall += wall ? 1 : 0;
+    repulsive += wall && p > 0.0 ? 1 : 0;
+    interacting += law.interacts(g) ? 1 : 0;
+  }
+  const double cells = static_cast<double>(n);
+  result.total_force = force * grid.cell_area();
+  result.mean_pressure = result.total_force / grid.domain_area();
+  result.max_pressure = max_pressure;
+  result.contact_fraction = static_cast<double>(at_wall) / cells;
+  AdhesionRecord& record = result.adhesion;
+  record.law = std::string(to_string(law.type));
+  record.work = law.work;
+  record.range = law.range;
+  record.stress = law.stress();
+  record.adhesive_force = adhesive * grid.cell_area();
+  record.interaction_fraction = static_cast<double>(interacting) / cells;
+  record.repulsive_contact_fraction = static_cast<double>(repulsive) / cells;
+}
+
+// Load control: the approach whose displacement-controlled equilibrium
+// carries `target`, by the secant method on F(delta) with a bracket kept for
+// bisection (Illinois-free: the branch's F is smooth between jumps). Every
+// solve starts from the previous one, so the search follows the branch it
+// starts on; where F decreases with delta on it (past JKR's force minimum)
+// load control has no stable equilibrium, and the search reports that.
+SolveResult AdhesiveContactSolver::Impl::solve_force(std::span<const double> initial_gap, double target,
+                                                     std::span<const double> initial_pressure) {
+  const auto started = std::chrono::steady_clock::now();
+  double mean_gap = 0.0;
+  double min_gap = std::numeric_limits<double>::infinity();
+  for (const double g : initial_gap) {
+    mean_gap += g;
+    min_gap = std::min(min_gap, g);
+  }
+  mean_gap /= static_cast<double>(initial_gap.size());
+  // Periodic grids: the approach stays below the mean gap (infinite force there).
+  const double ceiling = padded ? std::numeric_limits<double>::infinity() : mean_gap - 1e-9 * (mean_gap - min_gap);
+  double approach = have_last && initial_pressure.empty() ? last_approach : min_gap;
+  SolveResult result =
+      solve_displacement(initial_gap, approach, initial_pressure, have_last && initial_pressure.empty());
+  int iterations = result.iterations;
+  int products = result.operator_applications;
+  const double probe = options.law.range;
+  double low = -std::numeric_limits<double>::infinity();  // approaches with F below the target
+  double high = std::numeric_limits<double>::infinity();  // and above it
+  double previous_approach = approach;
+  double previous_force = result.total_force;
+  const auto tolerance = [&](const SolveResult& r) {
+    const double scale = std::max(
+        {std::abs(target), std::abs(r.adhesion.adhesive_force), std::abs(r.total_force - r.adhesion.adhesive_force)});
+    return options.force_tolerance * scale;
+  };
+  std::string failure;
+  int step = 0;
+  for (; step < options.max_load_steps; ++step) {
+    if (!result.converged()) {
+      failure = fmt::format("the displacement-controlled solve at approach {} m failed: {}", approach, result.message);
+      break;
+    }
+    const double force = result.total_force;
+    if (std::abs(force - target) <= tolerance(result)) break;
+    (force < target ? low : high) = approach;
+    double next = 0.0;
+    if (step == 0) {
+      next = approach + (force < target ? probe : -probe);
+    } else {
+      const double slope = (force - previous_force) / (approach - previous_approach);
+      next = slope > 0.0 ? approach + (target - force) / slope : approach + (force < target ? 1.0 : -1.0) * 2.0 * probe;
+    }
+    // Inside the bracket when there is one (bisection otherwise).
+    if (std::isfinite(low) && std::isfinite(high) && !(next > std::min(low, high) && next < std::max(low, high))) {
+      next = 0.5 * (low + high);
+    }
+    next = std::min(next, ceiling);
+    previous_approach = approach;
+    previous_force = force;
+    approach = next;
+    result = solve_displacement(initial_gap, approach, {}, true);
+    iterations += result.iterations;
+    products += result.operator_applications;
+  }
+  if (failure.empty() && step >= options.max_load_steps) {
+    result.status = SolveStatus::iteration_limit;
+    failure = fmt::format(
+        "the force {} was not reached in {} approach steps (last: {} at approach {} m); beyond the pull-off force, or "
+        "where the force falls as the approach grows, load control has no stable equilibrium on this branch: use "
+        "displacement control (an approach sweep)",
+        target, options.max_load_steps, result.total_force, approach);
+  }
+  if (!failure.empty()) {
+    if (result.converged()) result.status = SolveStatus::breakdown;
+    result.message = failure;
+  }
+  result.iterations = iterations;
+  result.operator_applications = products;
+  result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  return result;
+}
+
+AdhesiveContactSolver::AdhesiveContactSolver(const Grid& grid, double e_star, AdhesiveSolverOptions options) {
+  options.validate();
+  impl_ = std::make_unique<Impl>(grid, e_star, std::move(options));
+}
+
+AdhesiveContactSolver::~AdhesiveContactSolver() = default;
+
+const AdhesiveSolverOptions& AdhesiveContactSolver::options() const {
+  return impl_->options;
+}
+
+SolveResult AdhesiveContactSolver::solve(std::span<const double> initial_gap, const Loading& loading,
+                                         std::span<const double> initial_pressure) {
+  Impl& m = *impl_;
+  const std::size_t n = m.grid.size();
+  if (initial_gap.size() != n) {
+    throw InputError(fmt::format("adhesive solve: the initial gap has {} entries, but the grid has {} cells",
+                                 initial_gap.size(), n));
+  }
+  if (!initial_pressure.empty() && initial_pressure.size() != n) {
+    throw InputError(fmt::format("adhesive solve: the initial pressure has {} entries, but the grid has {} cells",
+                                 initial_pressure.size(), n));
+  }
+  if (!std::isfinite(loading.value)) {
+    throw InputError(fmt::format("{} = {} is invalid: must be finite", to_string(loading.mode), loading.value));
+  }
+  if (loading.mode == ControlMode::approach) {
+    return m.solve_displacement(initial_gap, loading.value, initial_pressure, false);
+  }
+  return m.solve_force(initial_gap, loading.target_force(m.grid.domain_area()), initial_pressure);
+}
+
+}  // namespace halfspace::solvers

@@ -1,0 +1,255 @@
+// Subsurface stresses by FFT.
+//
+// Periodic: sigma_c(q, z) = S_c(q, z) p(q) with the closed-form multipliers
+// S_c of fourier_stress.hpp: one forward FFT of p for all depths, then per
+// depth and component one multiplication and one inverse FFT. Odd multipliers
+// (xz, yz, xy) are set to zero on a Nyquist row or column: there the sine
+// they stand for vanishes on the grid, and the c2r transform needs a
+// Hermitian spectrum.
+//
+// Free: sigma_c(i) = sum_j C_c(x_i - x_j, z) p_j with the exact cell
+// coefficients C_c of rectangle_stress.hpp, a linear convolution done on the
+// (2ny, 2nx) zero-padded grid (Liu, Wang & Liu 2000). The coefficients change
+// with depth, so each depth evaluates them once on the quadrant of
+// non-negative offsets (each component is even or odd in each axis), and each
+// component fills the wrap-around array, transforms it and multiplies it
+// into the kept pressure spectrum before the pruned inverse transform.
+#include "halfspace/stress/subsurface_stress.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <complex>
+#include <vector>
+
+#include "halfspace/error.hpp"
+#include "halfspace/fft/grid_transform.hpp"
+#include "halfspace/fft/padded_real_fft.hpp"
+#include "halfspace/fft/real_fft.hpp"
+#include "halfspace/kernels/periodic_fourier.hpp"
+#include "halfspace/linalg/parallel.hpp"
+#include "halfspace/stress/rectangle_stress.hpp"
+
+namespace halfspace::stress {
+namespace {
+
+double component_of(const StressTensor& s, std::size_t c) {
+  switch (static_cast<Component>(c)) {
+    case Component::xx:
+      return s.xx;
+    case Component::yy:
+      return s.yy;
+    case Component::zz:
+      return s.zz;
+    case Component::xy:
+      return s.xy;
+    case Component::xz:
+      return s.xz;
+    case Component::yz:
+      return s.yz;
+  }
+  return 0.0;
+}
+
+// Signed offset (cells) of wrap-around index k on a 2n-periodic axis; the
+// middle index n only ever meets padding (any value would do) and gets 0 via
+// `valid` = false.
+std::ptrdiff_t wrapped_offset(std::size_t k, std::size_t n, bool& valid) {
+  valid = k != n;
+  return k < n ? static_cast<std::ptrdiff_t>(k) : static_cast<std::ptrdiff_t>(k) - static_cast<std::ptrdiff_t>(2 * n);
+}
+
+}  // namespace
+
+double checked_poisson_ratio(double nu) {
+  if (!(nu > -1.0 && nu <= 0.5)) {
+    throw InputError(fmt::format("Poisson's ratio nu = {} is invalid: allowed range is -1 < nu <= 0.5", nu));
+  }
+  return nu;
+}
+
+double checked_depth(double depth) {
+  if (!(std::isfinite(depth) && depth > 0.0)) {
+    throw InputError(fmt::format("depth = {} m is invalid: a depth below the surface must be finite and > 0 m", depth));
+  }
+  return depth;
+}
+
+struct SubsurfaceStress::Impl {
+  Impl(const Grid& g, double poisson, FftPlanning planning) : grid(g), nu(checked_poisson_ratio(poisson)) {
+    const bool line = grid.dimension() == 1;
+    rows = line ? 1 : grid.ny();
+    if (grid.periodic()) {
+      transform = make_grid_transform(grid, planning);
+      pressure_spectrum.resize(transform->spectrum_size());
+      decay.resize(transform->spectrum_size());
+      kx.resize(transform->spectrum_cols());
+      ky.resize(rows);
+      for (std::size_t c = 0; c < kx.size(); ++c) kx[c] = kernels::dft_wavenumber(c, grid.nx(), grid.dx());
+      for (std::size_t r = 0; r < rows; ++r) ky[r] = line ? 0.0 : kernels::dft_wavenumber(r, grid.ny(), grid.dy());
+    } else {
+      padded = std::make_unique<PaddedRealFft>(rows, grid.nx(), planning);
+      kernel = line ? std::make_unique<RealFft>(2 * grid.nx(), planning, FftOutput::overwrite_input)
+                    : std::make_unique<RealFft>(2 * rows, 2 * grid.nx(), planning, FftOutput::overwrite_input);
+      pressure_spectrum.resize(padded->spectrum_size());
+      quadrant_cols = grid.nx() + 1;
+      quadrant_rows = line ? 1 : rows + 1;
+      for (auto& q : quadrant) q.resize(quadrant_rows * quadrant_cols);
+    }
+  }
+
+  void set_pressure(std::span<const double> pressure) {
+    if (pressure.size() != grid.size()) {
+      throw InputError(fmt::format("subsurface stress: the pressure has {} values but the grid has {} cells ({})",
+                                   pressure.size(), grid.size(), grid.shape_string()));
+    }
+    for (std::size_t k = 0; k < pressure.size(); ++k) {
+      if (!std::isfinite(pressure[k])) {
+        throw InputError(fmt::format("subsurface stress: pressure value {} at index {} is not finite", pressure[k], k));
+      }
+    }
+    std::span<const std::complex<double>> spectrum;
+    if (transform) {
+      if (!transform->forward_from(pressure)) {
+        std::span<double> input = transform->input();
+        linalg::for_each_index(pressure.size(), [&](std::size_t i) { input[i] = pressure[i]; });
+        transform->forward();
+      }
+      spectrum = transform->spectrum();
+    } else {
+      padded->forward(pressure);
+      spectrum = padded->spectrum();
+    }
+    linalg::for_each_index(spectrum.size(), [&](std::size_t k) { pressure_spectrum[k] = spectrum[k]; });
+    has_pressure = true;
+  }
+
+  void compute(double depth, const std::array<std::span<double>, kComponentCount>& fields) {
+    checked_depth(depth);
+    if (!has_pressure) throw InputError("subsurface stress: no pressure was set before computing stresses");
+    for (std::size_t c = 0; c < kComponentCount; ++c) {
+      if (fields[c].size() != grid.size()) {
+        throw InputError(fmt::format("subsurface stress: the {} field has {} values but the grid has {} cells",
+                                     kComponentNames[c], fields[c].size(), grid.size()));
+      }
+    }
+    if (transform) {
+      compute_periodic(depth, fields);
+    } else {
+      compute_free(depth, fields);
+    }
+  }
+
+  void compute_periodic(double z, const std::array<std::span<double>, kComponentCount>& fields) {
+    const std::size_t cols = transform->spectrum_cols();
+    const bool nyquist_col = grid.nx() % 2 == 0;
+    const bool nyquist_row = rows > 1 && rows % 2 == 0;
+    const double inverse_n = 1.0 / static_cast<double>(grid.size());
+    linalg::for_each_row(rows, cols, [&](std::size_t r) {
+      for (std::size_t c = 0; c < cols; ++c) decay[r * cols + c] = std::exp(-std::hypot(kx[c], ky[r]) * z);
+    });
+    for (std::size_t component = 0; component < kComponentCount; ++component) {
+      std::span<std::complex<double>> spectrum = transform->spectrum();
+      const auto kind = static_cast<Component>(component);
+      linalg::for_each_row(rows, cols, [&](std::size_t r) {
+        const bool zero_row = odd_in_y(kind) && nyquist_row && r == rows / 2;
+        for (std::size_t c = 0; c < cols; ++c) {
+          const std::size_t k = r * cols + c;
+          const bool zero = zero_row || (odd_in_x(kind) && nyquist_col && c == cols - 1);
+          const std::complex<double> multiplier =
+              zero ? 0.0 : fourier_stress_component(kind, kx[c], ky[r], z, decay[k], nu);
+          spectrum[k] = pressure_spectrum[k] * multiplier * inverse_n;
+        }
+      });
+      std::span<double> out = fields[component];
+      if (!transform->backward_into(out)) {
+        transform->backward();
+        std::span<const double> output = transform->output();
+        linalg::for_each_index(out.size(), [&](std::size_t i) { out[i] = output[i]; });
+      }
+    }
+  }
+
+  void compute_free(double z, const std::array<std::span<double>, kComponentCount>& fields) {
+    const bool line = grid.dimension() == 1;
+    const double dx = grid.dx();
+    const double dy = grid.dy();
+    linalg::for_each_row(quadrant_rows, quadrant_cols, [&](std::size_t dj) {
+      for (std::size_t di = 0; di < quadrant_cols; ++di) {
+        const double x = static_cast<double>(di) * dx;
+        const StressTensor s = line ? strip_stress(x, z, 0.5 * dx, nu)
+                                    : rectangle_stress(x, static_cast<double>(dj) * dy, z, 0.5 * dx, 0.5 * dy, nu);
+        const std::size_t k = dj * quadrant_cols + di;
+        for (std::size_t c = 0; c < kComponentCount; ++c) quadrant[c][k] = component_of(s, c);
+      }
+    });
+
+    const std::size_t nx = grid.nx();
+    const std::size_t padded_rows = line ? 1 : 2 * rows;
+    const std::size_t padded_cols = 2 * nx;
+    const double inverse_n = 1.0 / static_cast<double>(padded->padded_size());
+    for (std::size_t component = 0; component < kComponentCount; ++component) {
+      std::span<double> coefficients = kernel->input();
+      const std::vector<double>& values = quadrant[component];
+      linalg::for_each_row(padded_rows, padded_cols, [&](std::size_t r) {
+        bool row_valid = true;
+        const std::ptrdiff_t dj = line ? 0 : wrapped_offset(r, rows, row_valid);
+        const double row_sign = odd_in_y(static_cast<Component>(component)) && dj < 0 ? -1.0 : 1.0;
+        const std::size_t row_base = static_cast<std::size_t>(std::abs(dj)) * quadrant_cols;
+        double* row = coefficients.data() + r * padded_cols;
+        for (std::size_t c = 0; c < padded_cols; ++c) {
+          bool col_valid = true;
+          const std::ptrdiff_t di = wrapped_offset(c, nx, col_valid);
+          const double sign = odd_in_x(static_cast<Component>(component)) && di < 0 ? -row_sign : row_sign;
+          row[c] = row_valid && col_valid ? sign * values[row_base + static_cast<std::size_t>(std::abs(di))] : 0.0;
+        }
+      });
+      kernel->forward();
+      std::span<const std::complex<double>> kernel_spectrum = kernel->spectrum();
+      std::span<std::complex<double>> spectrum = padded->spectrum();
+      linalg::for_each_index(
+          spectrum.size(), [&](std::size_t k) { spectrum[k] = pressure_spectrum[k] * kernel_spectrum[k] * inverse_n; });
+      padded->backward(fields[component]);
+    }
+  }
+
+  Grid grid;
+  double nu;
+  std::size_t rows = 1;
+  bool has_pressure = false;
+  std::vector<std::complex<double>> pressure_spectrum;
+  // Periodic grids.
+  std::shared_ptr<RealFft> transform;
+  std::vector<double> decay;  // exp(-|q| z) on the half spectrum, for the current depth
+  std::vector<double> kx;
+  std::vector<double> ky;
+  // Free grids.
+  std::unique_ptr<PaddedRealFft> padded;
+  std::unique_ptr<RealFft> kernel;  // the (2ny, 2nx) transform of the coefficients
+  std::size_t quadrant_rows = 0;
+  std::size_t quadrant_cols = 0;
+  std::array<std::vector<double>, kComponentCount> quadrant;  // coefficients at non-negative offsets
+};
+
+SubsurfaceStress::SubsurfaceStress(const Grid& grid, double nu, FftPlanning planning)
+    : impl_(std::make_unique<Impl>(grid, nu, planning)) {}
+
+SubsurfaceStress::~SubsurfaceStress() = default;
+
+const Grid& SubsurfaceStress::grid() const {
+  return impl_->grid;
+}
+
+double SubsurfaceStress::poisson_ratio() const {
+  return impl_->nu;
+}
+
+void SubsurfaceStress::set_pressure(std::span<const double> pressure) {
+  impl_->set_pressure(pressure);
+}
+
+void SubsurfaceStress::compute(double depth, const std::array<std::span<double>, kComponentCount>& fields) {
+  impl_->compute(depth, fields);
+}
+
+}  // namespace halfspace::stress

@@ -1,0 +1,138 @@
+// `halfspace solve` on a coated half-space: --layer-thickness, --layer-E,
+// --layer-nu, --substrate-E, --substrate-nu (all five, instead of the
+// material options), recorded in the result's attributes, and their errors.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "io/hdf5_test_support.hpp"
+#include "support/program_run.hpp"
+
+namespace halfspace {
+namespace {
+
+namespace fs = std::filesystem;
+using test::TempDir;
+using testing::ProgramRun;
+
+constexpr int kExitOk = 0;
+constexpr int kExitInputError = 1;
+
+using Options = std::vector<std::pair<std::string, std::string>>;
+
+ProgramRun run_solve(const Options& options, const TempDir& directory) {
+  std::vector<std::string> arguments{"solve"};
+  for (const auto& [flag, value] : options) {
+    arguments.push_back(flag);
+    if (!value.empty()) arguments.push_back(value);
+  }
+  return testing::run_program(arguments, directory.path());
+}
+
+// A small sphere problem without a material.
+Options sphere(const fs::path& output) {
+  return {{"--geometry", "sphere"}, {"--radius", "0.01"},          {"--grid", "32x32"}, {"--size", "4e-4"},
+          {"--force", "1"},         {"--output", output.string()}, {"--threads", "1"}};
+}
+
+Options coating(const std::string& thickness = "2e-5", const std::string& layer_e = "3e9",
+                const std::string& layer_nu = "0.35") {
+  return {{"--layer-thickness", thickness},
+          {"--layer-E", layer_e},
+          {"--layer-nu", layer_nu},
+          {"--substrate-E", "2.1e11"},
+          {"--substrate-nu", "0.29"}};
+}
+
+Options joined(Options a, const Options& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
+void expect_input_error(const ProgramRun& result, const std::string& expected, const fs::path& output) {
+  EXPECT_EQ(result.exit_code, kExitInputError) << result.err;
+  EXPECT_EQ(result.err.rfind("error: ", 0), 0U) << result.err;
+  EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+  EXPECT_NE(result.err.find(expected), std::string::npos) << "expected '" << expected << "' in: " << result.err;
+  EXPECT_FALSE(fs::exists(output)) << output;
+}
+
+TEST(LayeredCliTest, CoatedSolveRecordsTheCoatingAndTheLayersModulus) {
+  const TempDir dir;
+  const fs::path output = dir / "coated.h5";
+  const ProgramRun result = run_solve(joined(sphere(output), coating()), dir);
+  ASSERT_EQ(result.exit_code, kExitOk) << result.err;
+  EXPECT_NE(result.out.find("coating"), std::string::npos) << result.out;
+  const test::H5 file = test::open_file(output);
+  EXPECT_EQ(test::read_double_attribute(file.get(), "layer_thickness"), 2e-5);
+  EXPECT_EQ(test::read_double_attribute(file.get(), "layer_E"), 3e9);
+  EXPECT_EQ(test::read_double_attribute(file.get(), "layer_nu"), 0.35);
+  EXPECT_EQ(test::read_double_attribute(file.get(), "substrate_E"), 2.1e11);
+  EXPECT_EQ(test::read_double_attribute(file.get(), "substrate_nu"), 0.29);
+  EXPECT_DOUBLE_EQ(test::read_double_attribute(file.get(), "E_star"), 3e9 / (1 - 0.35 * 0.35));
+  EXPECT_EQ(test::read_int64_attribute(file.get(), "converged"), 1);
+}
+
+// The same solve, two ways: rounding of the kernels (M = 1 + O(eps)) and of
+// the solver's iterates.
+constexpr double kSameSolveTolerance = 1e-8;
+
+TEST(LayeredCliTest, CoatingOfTheSubstratesMaterialSolvesLikeTheHomogeneousHalfSpace) {
+  const TempDir dir;
+  const fs::path coated = dir / "coated.h5";
+  const fs::path homogeneous = dir / "homogeneous.h5";
+  const Options steel_on_steel = {{"--layer-thickness", "2e-5"},
+                                  {"--layer-E", "2.1e11"},
+                                  {"--layer-nu", "0.29"},
+                                  {"--substrate-E", "2.1e11"},
+                                  {"--substrate-nu", "0.29"}};
+  ASSERT_EQ(run_solve(joined(sphere(coated), steel_on_steel), dir).exit_code, kExitOk);
+  const double e_star = 2.1e11 / (1 - 0.29 * 0.29);
+  ASSERT_EQ(run_solve(joined(sphere(homogeneous), {{"--E-star", fmt::format("{:.17g}", e_star)}}), dir).exit_code,
+            kExitOk);
+  const test::H5 a = test::open_file(coated);
+  const test::H5 b = test::open_file(homogeneous);
+  for (const char* name : {"max_pressure", "approach", "contact_fraction"}) {
+    const double expected = test::read_double_attribute(b.get(), name);
+    EXPECT_NEAR(test::read_double_attribute(a.get(), name), expected, kSameSolveTolerance * std::abs(expected)) << name;
+  }
+}
+
+TEST(LayeredCliTest, CoatingOptionErrorsNameTheOptionValueAndRange) {
+  const TempDir dir;
+  const fs::path output = dir / "out.h5";
+  Options missing = coating();
+  missing.pop_back();
+  expect_input_error(run_solve(joined(sphere(output), missing), dir),
+                     "incomplete coated half-space: missing --substrate-nu", output);
+  expect_input_error(run_solve(joined(joined(sphere(output), coating()), {{"--E-star", "1e11"}}), dir),
+                     "cannot be combined with --E-star", output);
+  expect_input_error(run_solve(joined(sphere(output), coating("1e4")), dir),
+                     "--layer-thickness 1e4 is invalid: allowed range is [1e-12, 1000] m", output);
+  expect_input_error(run_solve(joined(sphere(output), coating("2e-5", "10")), dir),
+                     "--layer-E 10 is invalid: allowed range is [1000, 1e+15] Pa", output);
+  expect_input_error(run_solve(joined(sphere(output), coating("2e-5", "3e9", "0.7")), dir),
+                     "--layer-nu 0.7 is invalid: allowed range is (-1, 0.5]", output);
+  expect_input_error(run_solve(joined(joined(sphere(output), coating()), {{"--solver", "lemke"}}), dir),
+                     "--solver lemke is invalid for a coated half-space", output);
+}
+
+TEST(LayeredCliTest, FreeLineGridIsRefusedAndPeriodicLineSolves) {
+  const TempDir dir;
+  const fs::path output = dir / "line.h5";
+  const Options cylinder = {{"--geometry", "cylinder"}, {"--radius", "0.01"}, {"--grid", "256"},
+                            {"--size", "4e-4"},         {"--force", "100"},   {"--output", output.string()},
+                            {"--threads", "1"}};
+  expect_input_error(run_solve(joined(cylinder, coating()), dir), "free 1D grid is not supported", output);
+  const ProgramRun periodic = run_solve(joined(joined(cylinder, coating()), {{"--boundary", "periodic"}}), dir);
+  EXPECT_EQ(periodic.exit_code, kExitOk) << periodic.err;
+}
+
+}  // namespace
+}  // namespace halfspace

@@ -1,0 +1,146 @@
+// The adhesive sphere under displacement control (free boundary): pull-off
+// forces against Maugis's curve (adhesion_maugis_reference.hpp) and its DMT
+// and JKR limits.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "halfspace/solvers/adhesion_sweep.hpp"
+#include "halfspace/solvers/adhesive_contact_solver.hpp"
+#include "halfspace/solvers/load_sweep.hpp"
+#include "solvers/adhesion_maugis_reference.hpp"
+
+namespace halfspace {
+namespace {
+
+using solvers::AdhesiveContactSolver;
+using solvers::AdhesiveSolverOptions;
+
+constexpr double kPi = std::numbers::pi;
+
+// A sphere of radius R = 1 m on E* = 1 Pa with the Maugis-Dugdale law of
+// Tabor parameter lambda, in Maugis's units: lengths along the surface in
+// ell = (pi w R^2 / K)^(1/3) (K = 4E*/3), approaches in ell^2 / R, forces in
+// pi w R. h0 = 2 / (pi lambda) approach units.
+struct AdhesiveSphere {
+  double lambda;
+  double radius = 1.0;
+  double e_star = 1.0;
+  double work = 1e-4;
+  double k() const { return 4.0 * e_star / 3.0; }
+  double ell() const { return std::cbrt(kPi * work * radius * radius / k()); }
+  double sigma0() const { return 0.5 * lambda * k() * ell() / radius; }
+  double approach_unit() const { return ell() * ell() / radius; }
+  double force_unit() const { return kPi * work * radius; }
+  AdhesionLaw law() const { return AdhesionLaw::maugis_dugdale_from_stress(work, sigma0()); }
+};
+
+// The paraboloid r^2 / (2R), its apex between the four middle cells.
+std::vector<double> sphere_gap(const Grid& grid, double radius) {
+  std::vector<double> gap(grid.size());
+  const auto centred = [](std::size_t i, std::size_t n, double h) {
+    return (static_cast<double>(i) + 0.5 - 0.5 * static_cast<double>(n)) * h;
+  };
+  for (std::size_t j = 0; j < grid.ny(); ++j) {
+    for (std::size_t i = 0; i < grid.nx(); ++i) {
+      const double x = centred(i, grid.nx(), grid.dx());
+      const double y = centred(j, grid.ny(), grid.dy());
+      gap[j * grid.nx() + i] = (x * x + y * y) / (2.0 * radius);
+    }
+  }
+  return gap;
+}
+
+// The pull-off force (in pi w R) of a displacement-controlled sweep over
+// `approaches` (in ell^2 / R) on a free grid of `cells_per_ell` cells per
+// ell spanning `width` ell: the smallest force of the unloading branch,
+// refined by the parabola through it and its neighbours (the force is
+// smooth at its minimum).
+double pull_off(const AdhesiveSphere& sphere, double cells_per_ell, double width,
+                const std::vector<double>& approaches) {
+  const double dx = sphere.ell() / cells_per_ell;
+  const auto n = static_cast<std::size_t>(std::lround(width * cells_per_ell));
+  const Grid grid = Grid::plane(n, n, dx, dx, Boundary::free);
+  AdhesiveSolverOptions options;
+  options.law = sphere.law();
+  AdhesiveContactSolver solver(grid, sphere.e_star, options);
+  const std::vector<double> gap = sphere_gap(grid, sphere.radius);
+  std::vector<double> values;
+  for (const double a : approaches) values.push_back(a * sphere.approach_unit());
+  solvers::LoadSweepOptions sweep;
+  sweep.signed_loads = true;
+  const std::vector<solvers::SweepStep> steps =
+      solvers::run_load_sweep(solver, grid, gap, ControlMode::approach, values, sweep);
+  for (const solvers::SweepStep& step : steps) {
+    EXPECT_TRUE(step.result.converged()) << "approach " << step.loading.value << ": " << step.result.message;
+  }
+  const double least = solvers::pull_off_force(steps);
+  std::size_t k = 0;
+  while (steps[k].result.total_force != least) ++k;
+  if (k == 0 || k + 1 >= steps.size()) return least / sphere.force_unit();
+  // Parabola through (a_i, F_i), i = k-1, k, k+1, at its vertex.
+  const double a0 = approaches[k - 1], a1 = approaches[k], a2 = approaches[k + 1];
+  const double f0 = steps[k - 1].result.total_force, f1 = least, f2 = steps[k + 1].result.total_force;
+  const double d01 = (f1 - f0) / (a1 - a0);
+  const double d12 = (f2 - f1) / (a2 - a1);
+  const double curvature = (d12 - d01) / (a2 - a0);
+  if (!(curvature > 0.0)) return least / sphere.force_unit();
+  const double vertex = 0.5 * (a0 + a1) - d01 / (2.0 * curvature);
+  const double refined = f1 + d01 * (vertex - a1) + curvature * (vertex - a0) * (vertex - a1);
+  return std::min(refined, least) / sphere.force_unit();
+}
+
+// DMT side, lambda = 0.05: the attraction acts out to c = ell sqrt(4 /
+// (pi lambda)) = 5 ell, which 6 cells per ell over 12 ell resolve; the
+// pull-off (at the loss of contact) then agrees with Maugis's -1.981 to
+// 0.3 % and with DMT's -2 (the lambda -> 0 limit) to 1.3 %.
+constexpr double kDmtLambda = 0.05;
+constexpr double kDmtMaugisTolerance = 0.015;  // relative: the attracted disc's area on a 6-per-ell grid
+constexpr double kDmtLimitTolerance =
+    0.03;  // relative: Maugis's own distance from DMT at lambda = 0.05, 1 %, plus the above
+
+TEST(AdhesionSphereTest, PullOffApproachesDmtAtSmallTaborParameter) {
+  const AdhesiveSphere sphere{kDmtLambda};
+  const std::vector<double> approaches{0.0, 0.5, 0.3, 0.1, -0.1, -0.2, -0.3, -0.35, -0.4, -0.5, -0.7};
+  const double force = pull_off(sphere, 6.0, 12.0, approaches);
+  const double maugis = testing::maugis::pull_off(kDmtLambda);
+  EXPECT_NEAR(force, maugis, kDmtMaugisTolerance * std::abs(maugis)) << "pull-off " << force << " pi w R";
+  EXPECT_NEAR(force, -2.0, kDmtLimitTolerance * 2.0) << "DMT: -2 pi w R";
+}
+
+// JKR side, lambda = 2 (Maugis -1.535, within 2.3 % of JKR's -3/2). The
+// cohesive zone is (3/4) ell / lambda^2 = 0.19 ell wide there; a grid that
+// does not resolve it traps the crack edge and overestimates the pull-off
+// (measured: -1.644 and -1.568 pi w R at 16 and 32 cells per ell, +7.1 %
+// and +2.2 %). The test checks the convergence and the fine grid against
+// Maugis and JKR. (At lambda = 3 the zone is 0.08 ell, and 32 cells per ell
+// still leave +8 %: docs/theory.md, "Adhesion".)
+constexpr double kJkrLambda = 2.0;
+constexpr double kJkrMaugisTolerance = 0.04;  // relative, against Maugis's value: the 32-per-ell grid's +2.2 %
+constexpr double kJkrLimitTolerance = 0.06;   // relative, against -3/2: Maugis's own 2.3 % plus the above
+
+TEST(AdhesionSphereTest, PullOffConvergesTowardsJkrAtLargerTaborParameter) {
+  const AdhesiveSphere sphere{kJkrLambda};
+  const std::vector<double> approaches{0.2, 0.0, -0.2, -0.4, -0.5, -0.55, -0.6, -0.65, -0.7, -0.75, -0.8, -0.9, -1.0};
+  const double coarse = pull_off(sphere, 16.0, 4.0, approaches);
+  const double fine = pull_off(sphere, 32.0, 4.0, approaches);
+  const double maugis = testing::maugis::pull_off(kJkrLambda);
+  EXPECT_LT(std::abs(fine - maugis), 0.6 * std::abs(coarse - maugis))
+      << "coarse " << coarse << ", fine " << fine << ", Maugis " << maugis;
+  EXPECT_NEAR(fine, maugis, kJkrMaugisTolerance * std::abs(maugis)) << "coarse " << coarse << ", fine " << fine;
+  EXPECT_NEAR(fine, -1.5, kJkrLimitTolerance * 1.5) << "JKR: -3/2 pi w R";
+}
+
+TEST(AdhesionMaugisReferenceTest, ReachesTheJkrAndDmtLimits) {
+  // Independent of the solver: the reference itself, at its two ends.
+  EXPECT_NEAR(testing::maugis::pull_off(100.0), -1.5, 1e-3);
+  EXPECT_NEAR(testing::maugis::pull_off(1e-3), -2.0, 1e-3);
+  // JKR's load at contact radius A: A^3 - sqrt(6 A^3).
+  EXPECT_NEAR(testing::maugis::load(1000.0, 1.2), 1.2 * 1.2 * 1.2 - std::sqrt(6.0 * 1.2 * 1.2 * 1.2), 1e-2);
+}
+
+}  // namespace
+}  // namespace halfspace
