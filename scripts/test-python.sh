@@ -13,8 +13,8 @@ if [ ! -x "$venv/bin/python" ]; then
   python3 -m venv "$venv"
 fi
 "$venv/bin/python" -m pip install --quiet --upgrade pip
-# numpy is the package's dependency; pytest and matplotlib (the example's
-# figures) are the tests'.
-"$venv/bin/python" -m pip install --quiet numpy pytest matplotlib
+# numpy is the package's dependency; pytest, matplotlib (the example's
+# figures) and pandas (Sweep.to_pandas) are the tests'.
+"$venv/bin/python" -m pip install --quiet numpy pytest matplotlib pandas
 "$venv/bin/python" -m pip install --quiet "$root"
 HALFSPACE_EXECUTABLE="$build/bin/halfspace" "$venv/bin/python" -m pytest -q "$root/tests/python" "$@"
