@@ -102,8 +102,8 @@ TEST(SweepCliTest, RangeWritesOneGroupPerStepTheTableAndTheCsv) {
   std::vector<std::string> header;
   const auto rows = read_csv(dir / "sweep.csv", header);
   EXPECT_EQ(header, (std::vector<std::string>{"load", "mean_pressure", "total_force", "approach", "contact_fraction",
-                                              "mean_gap", "rms_gap", "free_volume", "max_pressure", "clusters",
-                                              "iterations", "residual", "seconds", "converged"}));
+                                              "plastic_fraction", "mean_gap", "rms_gap", "free_volume", "max_pressure",
+                                              "clusters", "iterations", "residual", "seconds", "converged"}));
   ASSERT_EQ(rows.size(), 4u);
   for (std::size_t k = 0; k < header.size(); ++k) {
     const auto column = test::read_dataset<double>(file.get(), "/sweep/" + header[k], H5T_NATIVE_DOUBLE);
