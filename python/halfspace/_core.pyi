@@ -65,6 +65,16 @@ class Result:
     @property
     def max_pressure(self) -> float: ...
     @property
+    def hardness(self) -> Optional[float]:
+        """The hardness cap H (Pa), None for an elastic solve."""
+    @property
+    def plastic_fraction(self) -> float:
+        """Cells at the hardness cap over all cells (0 without a cap)."""
+    @property
+    def adhesion(self) -> Optional[dict]:
+        """Adhesive solves: law, work_of_adhesion, range, stress, adhesive_force,
+        interaction_fraction, repulsive_contact_fraction; None otherwise."""
+    @property
     def iterations(self) -> int: ...
     @property
     def residual(self) -> float: ...

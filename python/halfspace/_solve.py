@@ -74,10 +74,17 @@ def _call_text(name: str, surface: HeightMap, keywords: dict) -> str:
     return f"python: halfspace.{name}(<{grid} surface>, {shown})"
 
 
-def _solver_options(solver, tol, max_iter, fft_planning, deflation_block) -> dict:
+def _solver_options(solver, tol, max_iter, fft_planning, deflation_block, laws) -> dict:
     # Keys are the keywords; _core maps each onto SolverOptions (python/src/solve.cpp).
     return {"solver": solver, "tol": tol, "max_iter": max_iter, "fft_planning": fft_planning,
-            "deflation_block": deflation_block}
+            "deflation_block": deflation_block, **laws}
+
+
+def _laws(hardness, adhesion, work_of_adhesion, adhesion_range, adhesion_stress, adhesion_tol) -> dict:
+    """The interface-law keywords that were given."""
+    given = {"hardness": hardness, "adhesion": adhesion, "work_of_adhesion": work_of_adhesion,
+             "adhesion_range": adhesion_range, "adhesion_stress": adhesion_stress, "adhesion_tol": adhesion_tol}
+    return {key: value for key, value in given.items() if value is not None}
 
 
 def solve(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, dy: Optional[float] = None,
@@ -87,7 +94,10 @@ def solve(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
           solver: str = "pk-multilevel", tol: float = 1e-10, max_iter: Optional[int] = None,
           threads: Optional[int] = None, initial_pressure: Optional[np.ndarray] = None,
           progress: Optional[ProgressCallback] = None, fft_planning: str = "measure",
-          deflation_block: Optional[int] = None) -> _core.Result:
+          deflation_block: Optional[int] = None, hardness: Optional[float] = None,
+          adhesion: Optional[str] = None, work_of_adhesion: Optional[float] = None,
+          adhesion_range: Optional[float] = None, adhesion_stress: Optional[float] = None,
+          adhesion_tol: Optional[float] = None) -> _core.Result:
     """Solves the frictionless contact of a rigid rough surface on an elastic half-space.
 
     surface: a HeightMap, or a 1D/2D array of heights (m, peaks positive,
@@ -109,6 +119,13 @@ def solve(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
     fft_planning: "estimate", "measure" (default, as the program) or
         "patient"; deflation_block: 0 turns the block-deflation correction
         off, B > 0 forces blocks of B x B cells (None: automatic).
+    hardness: a hardness cap H (Pa): 0 <= p <= H, cells at H flow
+        plastically (``Result.plastic_fraction``); every solver but lemke.
+    adhesion: "md" (Maugis-Dugdale) or "exponential", with
+        work_of_adhesion (J/m^2) and adhesion_range (h0 or rho, m) or, for
+        md, adhesion_stress (sigma0, Pa). Adhesion has its own solver
+        (adhesive-spg) and tolerance, adhesion_tol (None: 1e-6); the
+        approach may be negative. ``Result.adhesion`` holds its record.
 
     The GIL is released while solving; Ctrl-C (KeyboardInterrupt) stops the
     solve within about 0.1 s. Non-convergence is not an exception: see
@@ -119,7 +136,9 @@ def solve(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
     modulus = _material(e_star, E1, nu1, E2, nu2)
     mode, value = _load(force, mean_pressure, approach, plural=False)
     start = None if initial_pressure is None else np.ascontiguousarray(initial_pressure, dtype=np.float64)
-    options = _solver_options(solver, tol, max_iter, fft_planning, deflation_block)
+    options = _solver_options(solver, tol, max_iter, fft_planning, deflation_block,
+                              _laws(hardness, adhesion, work_of_adhesion, adhesion_range, adhesion_stress,
+                                    adhesion_tol))
     call = _call_text("solve", height_map, {"e_star": modulus, "boundary": boundary, mode: value, **options,
                                             "threads": threads})
     return _core.solve(height_map.heights, height_map.dx, height_map.dy or 0.0, boundary, modulus, mode, value,
@@ -133,7 +152,10 @@ def sweep(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
           approach: Optional[Sequence[float]] = None, solver: str = "pk-multilevel", tol: float = 1e-10,
           max_iter: Optional[int] = None, threads: Optional[int] = None, warm_start: bool = True,
           progress: Optional[ProgressCallback] = None, fft_planning: str = "measure",
-          deflation_block: Optional[int] = None) -> _core.Sweep:
+          deflation_block: Optional[int] = None, hardness: Optional[float] = None,
+          adhesion: Optional[str] = None, work_of_adhesion: Optional[float] = None,
+          adhesion_range: Optional[float] = None, adhesion_stress: Optional[float] = None,
+          adhesion_tol: Optional[float] = None) -> _core.Sweep:
     """Solves the surface under each load of a sequence, in order, each step
     warm-started from the previous one (as ``halfspace solve`` with several
     loads). Takes the keywords of :func:`solve`, with ``force``,
@@ -144,7 +166,9 @@ def sweep(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
     height_map = _surface(surface, dx, dy)
     modulus = _material(e_star, E1, nu1, E2, nu2)
     mode, values = _load(force, mean_pressure, approach, plural=True)
-    options = _solver_options(solver, tol, max_iter, fft_planning, deflation_block)
+    options = _solver_options(solver, tol, max_iter, fft_planning, deflation_block,
+                              _laws(hardness, adhesion, work_of_adhesion, adhesion_range, adhesion_stress,
+                                    adhesion_tol))
     call = _call_text("sweep", height_map, {"e_star": modulus, "boundary": boundary, mode: values, **options,
                                             "threads": threads, "warm_start": warm_start})
     return _core.sweep(height_map.heights, height_map.dx, height_map.dy or 0.0, boundary, modulus, mode, values,

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 #include <nanobind/stl/filesystem.h>
+#include <nanobind/stl/optional.h>
 #include <nanobind/stl/shared_ptr.h>
 #include <nanobind/stl/string.h>
 #include <nanobind/stl/vector.h>
@@ -244,6 +245,28 @@ void bind_results(nb::module_& module) {
       .def_prop_ro("contact_fraction", [](const Result& r) { return r.result().contact_fraction; })
       .def_prop_ro(
           "max_pressure", [](const Result& r) { return r.result().max_pressure; }, "Pa")
+      .def_prop_ro(
+          "hardness", [](const Result& r) { return r.result().hardness; }, "The hardness cap H (Pa), None if elastic.")
+      .def_prop_ro(
+          "plastic_fraction", [](const Result& r) { return r.result().plastic_fraction; },
+          "Cells at the hardness cap over all cells (0 without a cap).")
+      .def_prop_ro(
+          "adhesion",
+          [](const Result& r) -> nb::object {
+            const solvers::AdhesionRecord& a = r.result().adhesion;
+            if (a.law.empty()) return nb::none();
+            nb::dict out;
+            out["law"] = a.law;
+            out["work_of_adhesion"] = a.work;
+            out["range"] = a.range;
+            out["stress"] = a.stress;
+            out["adhesive_force"] = a.adhesive_force;
+            out["interaction_fraction"] = a.interaction_fraction;
+            out["repulsive_contact_fraction"] = a.repulsive_contact_fraction;
+            return out;
+          },
+          "Adhesive solves: the law and the attractive part (adhesive_force, interaction_fraction, "
+          "repulsive_contact_fraction); None otherwise.")
       .def_prop_ro("iterations", [](const Result& r) { return r.result().iterations; })
       .def_prop_ro("residual", [](const Result& r) { return r.result().residual; })
       .def_prop_ro("tolerance", [](const Result& r) { return r.result().tolerance; })

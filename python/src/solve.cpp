@@ -14,6 +14,7 @@
 #include "bindings.hpp"
 #include "halfspace/error.hpp"
 #include "halfspace/material.hpp"
+#include "halfspace/solvers/adhesion_law.hpp"
 #include "halfspace/solvers/surface_solve.hpp"
 #include "halfspace/threads.hpp"
 #include "run.hpp"
@@ -97,6 +98,9 @@ Problem problem_from(const nb::object& heights_object, double dx, double dy, con
 // silently.
 solvers::SolverOptions solver_options(const nb::dict& given, const Grid& grid) {
   solvers::SolverOptions options;
+  // Adhesion comes in four keywords; the law is made from them after the loop.
+  std::optional<std::string> adhesion;
+  std::optional<double> work, range, stress, adhesion_tol;
   for (const auto& [key_object, value] : given) {
     if (value.is_none()) continue;
     const std::string key = nb::cast<std::string>(key_object);
@@ -123,9 +127,46 @@ solvers::SolverOptions solver_options(const nb::dict& given, const Grid& grid) {
         throw InputError(fmt::format("deflation_block={} is invalid: give 0 (off) or a block size", block));
       options.deflation.mode = block == 0 ? solvers::DeflationOptions::Mode::off : solvers::DeflationOptions::Mode::on;
       if (block != 0) options.deflation.block = static_cast<std::size_t>(block);
+    } else if (key == "hardness") {
+      options.interface_law.hardness = nb::cast<double>(value);
+    } else if (key == "adhesion") {
+      adhesion = nb::cast<std::string>(value);
+    } else if (key == "work_of_adhesion") {
+      work = nb::cast<double>(value);
+    } else if (key == "adhesion_range") {
+      range = nb::cast<double>(value);
+    } else if (key == "adhesion_stress") {
+      stress = nb::cast<double>(value);
+    } else if (key == "adhesion_tol") {
+      adhesion_tol = nb::cast<double>(value);
     } else {
       throw InputError(fmt::format("unknown solver option '{}'", key));
     }
+  }
+  if (!adhesion) {
+    if (work || range || stress || adhesion_tol) {
+      throw InputError(
+          "work_of_adhesion, adhesion_range, adhesion_stress and adhesion_tol need adhesion=\"md\" or "
+          "adhesion=\"exponential\"");
+    }
+  } else {
+    const solvers::AdhesionLawType type = solvers::parse_adhesion_law_type(*adhesion);
+    if (!work) throw InputError(fmt::format("adhesion='{}' needs work_of_adhesion (J/m^2)", *adhesion));
+    if (range && stress) {
+      throw InputError("adhesion_range and adhesion_stress cannot be combined: give h0 or sigma0 = w / h0");
+    }
+    if (stress && type != solvers::AdhesionLawType::maugis_dugdale) {
+      throw InputError("adhesion_stress applies to adhesion='md' only; give adhesion_range (rho, m)");
+    }
+    if (!range && !stress) throw InputError(fmt::format("adhesion='{}' needs adhesion_range (m)", *adhesion));
+    if (stress && !(std::isfinite(*stress) && *stress > 0.0)) {
+      throw InputError(fmt::format("adhesion_stress={} is invalid: must be positive and finite (Pa)", *stress));
+    }
+    solvers::SolverOptions::Adhesion law;
+    law.law = stress ? solvers::AdhesionLaw::maugis_dugdale_from_stress(*work, *stress)
+                     : solvers::AdhesionLaw{type, *work, *range};
+    if (adhesion_tol) law.tolerance = *adhesion_tol;
+    options.adhesion = law;
   }
   options.validate(grid);
   return options;
@@ -182,8 +223,12 @@ Result solve(const nb::object& heights, double dx, double dy, const std::string&
   Problem problem = problem_from(heights, dx, dy, boundary);
   e_star = checked_composite_modulus(e_star);
   const Loading loading{control_mode(mode), value};
-  loading.validate();
   solvers::SolverOptions options = solver_options(solver, problem.grid);
+  if (!options.adhesion) {
+    loading.validate();
+  } else if (!std::isfinite(value)) {  // adhesive loads are signed (pulling is negative)
+    throw InputError(fmt::format("{} = {} is invalid: must be finite", mode, value));
+  }
   const int thread_number = thread_count(threads);
   std::span<const double> start;
   if (initial_pressure) {
@@ -225,6 +270,7 @@ Sweep sweep(const nb::object& heights, double dx, double dy, const std::string& 
   options.progress = [&hook](int iteration, double residual) { hook(iteration, residual); };
   solvers::LoadSweepOptions sweep_options;
   sweep_options.warm_start = warm_start;
+  sweep_options.signed_loads = options.adhesion.has_value();  // pulling is a negative load
 
   std::vector<solvers::SweepStep> steps = run_released([&] {
     set_threads(thread_number);
