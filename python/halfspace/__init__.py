@@ -23,7 +23,7 @@ _os.environ.setdefault("OMP_WAIT_POLICY", "passive")
 from . import _core  # noqa: E402
 from ._core import FileError, InputError, Result, Sweep  # noqa: E402
 from ._height_map import HeightMap, read_height_map  # noqa: E402
-from ._solve import composite_modulus, read_result, solve, sweep  # noqa: E402
+from ._solve import composite_modulus, read_result, solve, subsurface_stress, sweep  # noqa: E402
 from . import generate, paper  # noqa: E402
 
 __version__ = _core.__version__
@@ -40,6 +40,7 @@ __all__ = [
     "read_height_map",
     "read_result",
     "solve",
+    "subsurface_stress",
     "sweep",
 ]
 

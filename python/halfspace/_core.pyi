@@ -14,6 +14,8 @@ class InputError(ValueError):
 class FileError(OSError):
     """A file that cannot be read or written: missing, unreadable, wrong layout."""
 
+def subsurface_stress(result: "Result", depths: Sequence[float], nu: float) -> dict: ...
+
 class Result:
     """The outcome of a solve. Field arrays are views of memory this object
     owns (no copies); each array keeps the Result alive."""

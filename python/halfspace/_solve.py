@@ -179,3 +179,22 @@ def read_result(path: Union[str, os.PathLike], step: Optional[int] = None) -> _c
     """Reads a result file written by ``halfspace solve`` or ``Result.save``.
     For a sweep file, ``step`` chooses the step (default: the last)."""
     return _core.read_result(os.fspath(path), -1 if step is None else int(step))
+
+
+def subsurface_stress(result: _core.Result, depths: Sequence[float], nu: float) -> dict:
+    """The stress field below a solved contact, as ``halfspace stress``.
+
+    result: a Result (its pressure and grid); depths: depths below the
+    surface (m, > 0); nu: Poisson's ratio of the body whose stresses are
+    wanted (E* alone does not fix it). Periodic grids use the Fourier-space
+    half-space solution, free grids Love's rectangle coefficients by DC-FFT
+    (docs/theory.md, subsurface stresses); a coated half-space is not
+    covered.
+
+    Returns a dict: ``depths``; ``sigma_xx``, ``sigma_yy``, ``sigma_zz``,
+    ``sigma_xy``, ``sigma_xz``, ``sigma_yz``, ``von_mises``, ``max_shear``
+    (Pa, compression negative), each ``(nz, ny, nx)`` (``(nz, n)`` for a
+    profile) and owned by numpy without a copy; ``max_von_mises`` and its
+    ``max_von_mises_position`` ``(x, y, z)`` in m. The GIL is released while
+    computing."""
+    return _core.subsurface_stress(result, [float(z) for z in depths], float(nu))

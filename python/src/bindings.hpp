@@ -36,5 +36,6 @@ void bind_surfaces(nb::module_& module);
 void bind_results(nb::module_& module);
 void bind_solve(nb::module_& module);
 void bind_paper(nb::module_& module);
+void bind_stress(nb::module_& module);
 
 }  // namespace halfspace::python

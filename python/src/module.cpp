@@ -91,4 +91,5 @@ NB_MODULE(_core, module) {
   bind_results(module);
   bind_solve(module);
   bind_paper(module);
+  bind_stress(module);
 }

@@ -60,3 +60,24 @@ def test_adhesion_keywords_are_checked():
                  adhesion_range=1e-8)
     with pytest.raises(hs.InputError, match="hardness"):
         hs.solve(flat, dx=1e-6, e_star=E_STAR, force=1.0, hardness=-1.0)
+
+
+def test_subsurface_stress_on_the_axis_of_a_hertz_sphere():
+    # Johnson (1985) eq. 3.45: sigma_z = -p0 / (1 + z^2/a^2) on the axis;
+    # the maximum shear 0.31 p0 lies at z = 0.48 a for nu = 0.3.
+    radius, force, n = 0.01, 0.2, 128
+    surface = hs.generate.sphere(grid=(n, n), size=1e-3, radius=radius)
+    result = hs.solve(surface, e_star=E_STAR, force=force, fft_planning="estimate", threads=1)
+    a = (3 * force * radius / (4 * E_STAR)) ** (1 / 3)
+    p0 = 3 * force / (2 * math.pi * a * a)
+    depths = [0.25 * a, 0.48 * a, a]
+    field = hs.subsurface_stress(result, depths, nu=0.3)
+    assert field["sigma_zz"].shape == (3, n, n)
+    centre = np.unravel_index(np.argmax(result.pressure), result.pressure.shape)
+    for k, z in enumerate(depths):
+        # 15 cells per contact radius: a few per cent of p0 from the discretised pressure.
+        assert field["sigma_zz"][k][centre] == pytest.approx(-p0 / (1 + (z / a) ** 2), abs=0.03 * p0)
+    assert field["max_shear"][1][centre] == pytest.approx(0.31 * p0, abs=0.02 * p0)
+    assert field["max_von_mises"] == pytest.approx(np.max(field["von_mises"]))
+    with pytest.raises(hs.InputError):
+        hs.subsurface_stress(result, [-1e-6], nu=0.3)

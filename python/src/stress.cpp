@@ -1,0 +1,54 @@
+// halfspace.subsurface_stress: the stress field below a solved contact
+// (stress/stress_volume.hpp), as `halfspace stress` computes it, with each
+// field handed to numpy without a copy.
+#include <fmt/format.h>
+#include <nanobind/stl/string.h>
+#include <nanobind/stl/vector.h>
+
+#include <cstddef>
+#include <vector>
+
+#include "bindings.hpp"
+#include "halfspace/stress/stress_volume.hpp"
+#include "run.hpp"
+
+namespace halfspace::python {
+namespace {
+
+// A numpy array taking over `field` (moved), shaped (nz, ny, nx) or (nz, n).
+OutputArray volume_array(std::vector<double>&& field, const std::vector<std::size_t>& shape) {
+  auto* owned = new std::vector<double>(std::move(field));
+  nb::capsule owner(owned, [](void* p) noexcept { delete static_cast<std::vector<double>*>(p); });
+  return OutputArray(owned->data(), shape.size(), shape.data(), owner);
+}
+
+nb::dict subsurface_stress(const Result& result, const std::vector<double>& depths, double nu) {
+  const Grid& grid = result.run->grid;
+  const Eigen::ArrayXd& pressure = result.result().pressure;
+  stress::StressVolume volume = [&] {
+    nb::gil_scoped_release release;
+    return stress::compute_stress_volume(grid, {pressure.data(), grid.size()}, depths, nu);
+  }();
+  std::vector<std::size_t> shape{depths.size()};
+  if (grid.dimension() == 2) shape.push_back(grid.ny());
+  shape.push_back(grid.nx());
+  nb::dict out;
+  out["depths"] = depths;
+  for (std::size_t c = 0; c < stress::kComponentCount; ++c) {
+    out[stress::kComponentNames[c]] = volume_array(std::move(volume.components[c]), shape);
+  }
+  out["von_mises"] = volume_array(std::move(volume.von_mises), shape);
+  out["max_shear"] = volume_array(std::move(volume.max_shear), shape);
+  const stress::VonMisesMaximum& peak = volume.max_von_mises;
+  out["max_von_mises"] = peak.value;
+  out["max_von_mises_position"] = nb::make_tuple(peak.x, peak.y, peak.z);
+  return out;
+}
+
+}  // namespace
+
+void bind_stress(nb::module_& module) {
+  module.def("subsurface_stress", &subsurface_stress, nb::arg("result"), nb::arg("depths"), nb::arg("nu"));
+}
+
+}  // namespace halfspace::python
