@@ -21,13 +21,21 @@ def rough():
     return hs.generate.self_affine(grid=(512, 512), size=1e-3, rms_slope=0.2, seed=3)
 
 
-def test_keyboard_interrupt_stops_a_solve(rough):
-    delay = 0.5
+@pytest.fixture(scope="module")
+def large():
+    # Plain Polonsky-Keer needs about 100 iterations of a 2048^2 transform
+    # pair here: tens of seconds, so the interrupt below always lands
+    # mid-solve however fast the machine (512^2 converges within a second).
+    return hs.generate.self_affine(grid=(2048, 2048), size=1e-3, rms_slope=0.2, seed=3)
+
+
+def test_keyboard_interrupt_stops_a_solve(large):
+    delay = 1.0
     timer = threading.Timer(delay, _thread.interrupt_main)
     start = time.monotonic()
     timer.start()
     with pytest.raises(KeyboardInterrupt):
-        hs.solve(rough, **LONG)
+        hs.solve(large, **LONG)
     stopped = time.monotonic() - start
     timer.cancel()
     # Stopped within the check interval (0.1 s) plus an iteration, with margin for a loaded machine.

@@ -4,6 +4,7 @@ installed, the originals in ../shared/data/topography against their HDF5
 conversions there (the README there: height == Topography.heights().T)."""
 
 import importlib.util
+import pathlib
 import sys
 
 import numpy as np
@@ -14,19 +15,25 @@ import halfspace as hs
 HAVE_SURFACE_TOPOGRAPHY = importlib.util.find_spec("SurfaceTopography") is not None
 
 
-def test_absent_package_is_named(monkeypatch, shared_topography):
-    # None in sys.modules makes `import SurfaceTopography` fail, installed or not.
+def test_absent_package_is_named(monkeypatch, tmp_path):
+    # None in sys.modules makes `import SurfaceTopography` fail, installed or
+    # not. The files only need their extension (and, for .dat, binary bytes):
+    # the choice of reader is made before anything is parsed, so the test
+    # needs no instrument file and runs wherever the package does.
     monkeypatch.setitem(sys.modules, "SurfaceTopography", None)
-    for name in ("sur-2.sur", "plu-1.plu", "opd-1.opd", "di-5.di"):
+    for name in ("scan.sur", "scan.plu", "scan.opd", "scan.di"):
+        (tmp_path / name).write_bytes(b"\x00\x01instrument data\xff")
         with pytest.raises(hs.FileError, match=r"install the SurfaceTopography package") as error:
-            hs.read_height_map(shared_topography / name)
+            hs.read_height_map(tmp_path / name)
         assert name in str(error.value)
         assert f"'.{name.split('.')[-1]}'" in str(error.value)
     # A binary .dat (Zygo MetroPro) is not a text matrix: the message names the package too.
+    (tmp_path / "metropro.dat").write_bytes(b"\x88\x1b\x03\x6f" + bytes(range(256)) * 8)
     with pytest.raises(hs.FileError, match="SurfaceTopography"):
-        hs.read_height_map(shared_topography / "metropro-1.dat")
+        hs.read_height_map(tmp_path / "metropro.dat")
+    converted = pathlib.Path(__file__).resolve().parents[1] / "data" / "di-5-crop-48x64.h5"
     with pytest.raises(hs.FileError, match="format='surfacetopography' was asked"):
-        hs.read_height_map(shared_topography / "di-5.h5", format="surfacetopography")
+        hs.read_height_map(converted, format="surfacetopography")
 
 
 @pytest.mark.skipif(not HAVE_SURFACE_TOPOGRAPHY, reason="SurfaceTopography is not installed (optional)")
