@@ -85,6 +85,15 @@ void write_contact_statistics_attributes(const Hdf5Node& node, const surface::Co
 }
 
 // Coated half-space (docs/file-format.md#root-attributes).
+void write_grid_attributes(const Hdf5Node& node, const Grid& grid) {
+  node.write_int64_attribute("dimension", grid.dimension());
+  node.write_int64_attribute("nx", static_cast<std::int64_t>(grid.nx()));
+  node.write_int64_attribute("ny", static_cast<std::int64_t>(grid.ny()));
+  node.write_double_attribute("dx", grid.dx());
+  node.write_double_attribute("dy", grid.dimension() == 1 ? 0.0 : grid.dy());
+  node.write_string_attribute("boundary", to_string(grid.boundary()));
+}
+
 void write_coating_attributes(const Hdf5Node& node, const LayeredMaterial& coating) {
   node.write_double_attribute("layer_thickness", coating.thickness);
   node.write_double_attribute("layer_E", coating.layer.youngs_modulus);

@@ -71,12 +71,7 @@ void write_result_root_attributes(const Hdf5Node& root, const Grid& grid, const 
   root.write_int64_attribute("format_version", kFormatVersion);
   root.write_string_attribute("units", kUnits);
 
-  root.write_int64_attribute("dimension", grid.dimension());
-  root.write_int64_attribute("nx", static_cast<std::int64_t>(grid.nx()));
-  root.write_int64_attribute("ny", static_cast<std::int64_t>(grid.ny()));
-  root.write_double_attribute("dx", grid.dx());
-  root.write_double_attribute("dy", grid.dimension() == 1 ? 0.0 : grid.dy());
-  root.write_string_attribute("boundary", to_string(grid.boundary()));
+  write_grid_attributes(root, grid);
   root.write_double_attribute("E_star", metadata.e_star);
   if (metadata.coating) write_coating_attributes(root, *metadata.coating);
   root.write_string_attribute("load_mode", metadata.load_mode);

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "halfspace/io/result_attributes.hpp"
 #include "halfspace/version.hpp"
 
 namespace halfspace::io {
@@ -40,12 +41,7 @@ void write_stress_file(const std::filesystem::path& path, const Grid& grid, std:
     root.write_string_attribute("format", "halfspace-stress");
     root.write_int64_attribute("format_version", kStressFormatVersion);
     root.write_string_attribute("units", "SI: depths, dx, dy and positions in m; stresses and pressure in Pa");
-    root.write_int64_attribute("dimension", grid.dimension());
-    root.write_int64_attribute("nx", static_cast<std::int64_t>(grid.nx()));
-    root.write_int64_attribute("ny", static_cast<std::int64_t>(grid.ny()));
-    root.write_double_attribute("dx", grid.dx());
-    root.write_double_attribute("dy", grid.dimension() == 1 ? 0.0 : grid.dy());
-    root.write_string_attribute("boundary", to_string(grid.boundary()));
+    write_grid_attributes(root, grid);
     root.write_string_attribute("halfspace_version", fmt::format("{} ({})", kVersion, kGitHash));
     root.write_string_attribute("command_line", metadata.command_line);
     root.write_string_attribute("source", metadata.source);

@@ -305,14 +305,7 @@ class Iteration {
     });
     const double entries_kept = projected_ ? kEntriesKept * contact_cells_ : 0.0;
     conjugate_ = entered <= entries_kept && tau > 0.0;
-    if (preconditioner_) preconditioner_->observe_step({corrected, search_cells_});
-    if (corrected > 0.0) {
-      // g is recomputed from u in step 1, so it can hold K c until then.
-      op_.apply({r_, n_}, {g_, n_});
-      ++result_.operator_applications;
-      deferred_.add_correction = true;
-    }
-    ++updates_since_exact_;
+    finish_step(corrected);
     if (problem_.load_controlled) deferred_.scale = problem_.target_force / (problem_.cell_area * new_pressure_sum);
   }
 
@@ -370,6 +363,18 @@ class Iteration {
     });
     const double entries_kept = projected_ ? kEntriesKept * contact_cells_ : 0.0;
     conjugate_ = entered <= entries_kept && tau > 0.0 && !filled && (projected_ || reached_cap == 0.0);
+    finish_step(corrected);
+    deferred_.scale = scale.factor;
+  }
+
+  // The result's summary of the final iterate, whose displacement and gap
+  // are current.
+  // The end of steps 6-9 shared by both projections: the preconditioner
+  // sees how much the projection moved, and the moved part c (in r) is
+  // turned into its displacement K c, added to u at the next exact
+  // evaluation (g is recomputed from u in step 1, so it can hold K c until
+  // then).
+  void finish_step(double corrected) {
     if (preconditioner_) preconditioner_->observe_step({corrected, search_cells_});
     if (corrected > 0.0) {
       op_.apply({r_, n_}, {g_, n_});
@@ -377,11 +382,8 @@ class Iteration {
       deferred_.add_correction = true;
     }
     ++updates_since_exact_;
-    deferred_.scale = scale.factor;
   }
 
-  // The result's summary of the final iterate, whose displacement and gap
-  // are current.
   void summarise(int iterations) {
     const auto [pressure_total, contact_total, plastic_total] = sums<3>(n_, [&](std::size_t i) {
       return std::array<double, 3>{p_[i], p_[i] > 0.0 ? 1.0 : 0.0, bounds_.at_cap(p_[i]) ? 1.0 : 0.0};

@@ -40,6 +40,10 @@ void write_result_attributes(const Hdf5Node& node, const SolveResult& result, st
 // statistics of a solve, on a result's root or a sweep step's group.
 void write_contact_statistics_attributes(const Hdf5Node& node, const surface::ContactStatistics& statistics);
 
+// dimension, nx, ny (int64), dx, dy (float64, m; dy 0 in 1D) and boundary:
+// the grid, on the root of every file that holds fields on it.
+void write_grid_attributes(const Hdf5Node& node, const Grid& grid);
+
 // layer_thickness (m), layer_E (Pa), layer_nu, substrate_E (Pa) and
 // substrate_nu (float64): a coated half-space's constants, on a result's root.
 void write_coating_attributes(const Hdf5Node& node, const LayeredMaterial& coating);
