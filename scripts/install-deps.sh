@@ -19,6 +19,8 @@ packages=(
   clang-14 libclang-rt-14-dev
   time
   python3 python3-numpy python3-h5py python3-matplotlib python3-scipy
+  # `python3 -m venv` for the Python package's tests (scripts/test-python.sh).
+  python3-venv
 )
 
 missing=()
