@@ -13,12 +13,12 @@
 
 #include "activity.hpp"
 #include "exit_codes.hpp"
+#include "halfspace/analysis/contact_statistics.hpp"
 #include "halfspace/io/result_metadata.hpp"
 #include "halfspace/io/result_writer.hpp"
 #include "halfspace/io/stress_writer.hpp"
 #include "halfspace/solvers/surface_solve.hpp"
 #include "halfspace/stress/stress_volume.hpp"
-#include "halfspace/surface/statistics.hpp"
 #include "halfspace/threads.hpp"
 #include "plot_tool.hpp"
 #include "progress.hpp"
@@ -55,8 +55,8 @@ int run_solve(const SolveSetup& setup) {
   activity.emplace(fmt::format("computing the statistics of the {} grid", setup.grid.shape_string()));
   io::ResultMetadata metadata = io::result_metadata(provenance(setup), setup.grid, heights);
   metadata.coating = setup.coating;
-  metadata.contact_statistics = surface::contact_statistics(setup.grid, {result.pressure.data(), setup.grid.size()},
-                                                            {result.gap.data(), setup.grid.size()});
+  metadata.contact_statistics = analysis::contact_statistics(setup.grid, {result.pressure.data(), setup.grid.size()},
+                                                             {result.gap.data(), setup.grid.size()});
   // Subsurface stresses (--stress-depths), written as the result's /stress group.
   std::optional<stress::StressVolume> stresses;
   if (!setup.stress_depths.empty()) {

@@ -12,10 +12,10 @@
 #include <vector>
 
 #include "exit_codes.hpp"
+#include "halfspace/analysis/adhesion_sweep.hpp"
+#include "halfspace/analysis/load_sweep.hpp"
 #include "halfspace/io/result_metadata.hpp"
 #include "halfspace/io/sweep_writer.hpp"
-#include "halfspace/solvers/adhesion_sweep.hpp"
-#include "halfspace/solvers/load_sweep.hpp"
 #include "halfspace/solvers/surface_solve.hpp"
 #include "halfspace/threads.hpp"
 #include "halfspace/version.hpp"
@@ -49,7 +49,7 @@ std::string_view load_name(ControlMode mode) {
   return "";
 }
 
-void print_sweep_summary(std::FILE* out, const SolveSetup& setup, std::span<const solvers::SweepStep> steps,
+void print_sweep_summary(std::FILE* out, const SolveSetup& setup, std::span<const analysis::SweepStep> steps,
                          const std::filesystem::path& csv) {
   const Grid& grid = setup.grid;
   const ControlMode mode = setup.loading.mode;
@@ -70,7 +70,7 @@ void print_sweep_summary(std::FILE* out, const SolveSetup& setup, std::span<cons
              fmt::format("load ({})", load_unit(mode, grid)), "p_mean (Pa)", "approach (m)", "contact", "clusters",
              "iter", "residual", "time (s)");
   for (std::size_t k = 0; k < steps.size(); ++k) {
-    const solvers::SweepStep& s = steps[k];
+    const analysis::SweepStep& s = steps[k];
     fmt::print(out, "  {:>4}  {:>12.5g}  {:>12.5g}  {:>12.5g}  {:>10.4g}  {:>8}  {:>6}  {:>9.2e}  {:>8.3f}{}\n", k,
                s.loading.value, s.result.mean_pressure, s.result.approach, s.statistics.contact_fraction,
                s.statistics.clusters(), s.result.iterations, s.result.residual, s.result.wall_seconds,
@@ -78,7 +78,7 @@ void print_sweep_summary(std::FILE* out, const SolveSetup& setup, std::span<cons
   }
   fmt::print(out, "\n");
   if (setup.solver.adhesion) {
-    const double pull_off = solvers::pull_off_force(steps);
+    const double pull_off = analysis::pull_off_force(steps);
     row("pull-off force", std::isnan(pull_off)
                               ? std::string("none (no unloading branch)")
                               : fmt::format("{:.6g} {}", pull_off, grid.dimension() == 1 ? "N/m" : "N"));
@@ -107,16 +107,16 @@ int run_sweep(const SolveSetup& setup) {
   solvers::SolverOptions settings = setup.solver;
   settings.progress = progress.callback();
   const std::span<const double> heights(setup.heights.data(), static_cast<std::size_t>(setup.heights.size()));
-  solvers::LoadSweepOptions options;
+  analysis::LoadSweepOptions options;
   options.signed_loads = setup.solver.adhesion.has_value();
   options.on_step_start = [&](std::size_t step, std::size_t, const Loading& loading) {
     progress.start_step(step, describe_load(loading.mode, loading.value, setup.grid));
   };
-  const std::vector<solvers::SweepStep> steps =
-      setup.coating ? solvers::sweep_surface(setup.grid, heights, *setup.coating, setup.loading.mode, setup.load_values,
-                                             settings, options)
-                    : solvers::sweep_surface(setup.grid, heights, setup.e_star, setup.loading.mode, setup.load_values,
-                                             settings, options);
+  const std::vector<analysis::SweepStep> steps =
+      setup.coating ? analysis::sweep_surface(setup.grid, heights, *setup.coating, setup.loading.mode,
+                                              setup.load_values, settings, options)
+                    : analysis::sweep_surface(setup.grid, heights, setup.e_star, setup.loading.mode, setup.load_values,
+                                              settings, options);
   progress.clear();
 
   io::ResultMetadata metadata = io::result_metadata(provenance(setup), setup.grid, heights);

@@ -8,10 +8,11 @@
 #include <exception>
 #include <vector>
 
+#include "halfspace/analysis/contact_statistics.hpp"
+#include "halfspace/analysis/load_sweep.hpp"
 #include "halfspace/error.hpp"
 #include "halfspace/geometry/builtin_surface.hpp"
 #include "halfspace/io/sweep_writer.hpp"
-#include "halfspace/solvers/load_sweep.hpp"
 #include "halfspace/solvers/solver_factory.hpp"
 #include "halfspace/surface/self_affine.hpp"
 #include "halfspace/surface/statistics.hpp"
@@ -41,11 +42,11 @@ int main(int argc, char** argv) {
     std::vector<double> pressures;
     for (const double x : {0.005, 0.01, 0.02, 0.05}) pressures.push_back(x * e_star * roughness.rms_slope);
     const Eigen::ArrayXd gap = geometry::initial_gap_from_heights(heights);
-    const std::vector<solvers::SweepStep> steps =
-        solvers::run_load_sweep(*solver, grid, {gap.data(), grid.size()}, ControlMode::mean_pressure, pressures);
+    const std::vector<analysis::SweepStep> steps =
+        analysis::run_load_sweep(*solver, grid, {gap.data(), grid.size()}, ControlMode::mean_pressure, pressures);
 
     // 4. A/A0 over p / (E* h'_rms): kappa, about 2 at small loads.
-    for (const solvers::SweepStep& step : steps) {
+    for (const analysis::SweepStep& step : steps) {
       if (!step.result.converged()) {
         std::fprintf(stderr, "step at %g Pa did not converge: %s\n", step.loading.value, step.result.message.c_str());
         return 2;

@@ -14,11 +14,11 @@
 #include <string>
 
 #include "bindings.hpp"
+#include "halfspace/analysis/sweep_table.hpp"
 #include "halfspace/error.hpp"
 #include "halfspace/io/result_attributes.hpp"
 #include "halfspace/io/result_reader.hpp"
 #include "halfspace/io/result_writer.hpp"
-#include "halfspace/io/sweep_table.hpp"
 #include "halfspace/io/sweep_writer.hpp"
 #include "run.hpp"
 
@@ -37,7 +37,7 @@ io::ResultMetadata metadata_of(const Run& run) {
 }
 
 nb::dict statistics_of(const Result& r) {
-  const surface::ContactStatistics& c = r.data().statistics;
+  const analysis::ContactStatistics& c = r.data().statistics;
   nb::dict out;
   out["contact_fraction"] = c.contact_fraction;
   out["mean_gap"] = c.mean_gap;
@@ -121,7 +121,7 @@ Result read(const std::filesystem::path& path, int step) {
         fmt::format("cannot read result '{}': /height does not have nx x ny = {} values", path.string(), grid.size()));
   }
 
-  solvers::SweepStep data;
+  analysis::SweepStep data;
   SolveResult& s = data.result;
   const std::string status = text("status");
   for (SolveStatus candidate : {SolveStatus::converged, SolveStatus::iteration_limit, SolveStatus::breakdown}) {
@@ -187,7 +187,7 @@ std::vector<std::size_t> Run::shape() const {
 
 void Run::mark_contact() {
   contact.clear();
-  for (const solvers::SweepStep& s : steps) {
+  for (const analysis::SweepStep& s : steps) {
     std::vector<std::uint8_t> marks(grid.size());
     for (std::size_t k = 0; k < marks.size(); ++k) marks[k] = s.result.pressure[static_cast<Eigen::Index>(k)] > 0.0;
     contact.push_back(std::move(marks));
@@ -303,7 +303,7 @@ void bind_results(nb::module_& module) {
           "table",
           [](const Sweep& s) {
             nb::dict table;
-            for (const io::SummaryColumn& column : io::summary_columns()) {
+            for (const analysis::SummaryColumn& column : analysis::summary_columns()) {
               Eigen::ArrayXd values(static_cast<Eigen::Index>(s.run->steps.size()));
               for (std::size_t k = 0; k < s.run->steps.size(); ++k) values[k] = column.value(s.run->steps[k]);
               table[nb::str(column.name.data(), column.name.size())] =

@@ -11,9 +11,10 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "halfspace/analysis/contact_statistics.hpp"
+#include "halfspace/analysis/load_sweep.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/io/result_metadata.hpp"
-#include "halfspace/solvers/load_sweep.hpp"
 #include "halfspace/surface/statistics.hpp"
 
 namespace halfspace::python {
@@ -25,7 +26,7 @@ struct Run {
   std::span<const double> heights;  // m, one per cell
   io::SolveProvenance provenance;   // written into every result file
   surface::SurfaceStatistics surface;
-  std::vector<solvers::SweepStep> steps;
+  std::vector<analysis::SweepStep> steps;
   std::vector<std::vector<std::uint8_t>> contact;  // per step: 1 where p > 0
   // Attributes of a file the run was read from (read_result); empty for a solve.
   nb::dict stored_attributes;
@@ -36,9 +37,9 @@ struct Run {
 };
 
 // The contact statistics of a solved result on `grid`.
-inline surface::ContactStatistics contact_statistics_of(const Grid& grid, const SolveResult& result) {
-  return surface::contact_statistics(grid, {result.pressure.data(), static_cast<std::size_t>(result.pressure.size())},
-                                     {result.gap.data(), static_cast<std::size_t>(result.gap.size())});
+inline analysis::ContactStatistics contact_statistics_of(const Grid& grid, const SolveResult& result) {
+  return analysis::contact_statistics(grid, {result.pressure.data(), static_cast<std::size_t>(result.pressure.size())},
+                                      {result.gap.data(), static_cast<std::size_t>(result.gap.size())});
 }
 
 // One step of a Run (the only one for a single solve).
@@ -46,7 +47,7 @@ struct Result {
   std::shared_ptr<Run> run;
   std::size_t step = 0;
 
-  const solvers::SweepStep& data() const { return run->steps[step]; }
+  const analysis::SweepStep& data() const { return run->steps[step]; }
   const SolveResult& result() const { return data().result; }
 };
 

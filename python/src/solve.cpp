@@ -201,7 +201,7 @@ auto run_released(Work&& work) {
 }
 
 std::shared_ptr<Run> make_run(Problem&& problem, io::SolveProvenance&& provenance,
-                              std::vector<solvers::SweepStep>&& steps) {
+                              std::vector<analysis::SweepStep>&& steps) {
   auto run = std::make_shared<Run>(Run{std::move(problem.grid),
                                        std::move(problem.heights_owner),
                                        problem.heights,
@@ -241,7 +241,7 @@ Result solve(const nb::object& heights, double dx, double dy, const std::string&
   ProgressHook hook(std::move(progress));
   options.progress = [&hook](int iteration, double residual) { hook(iteration, residual); };
 
-  solvers::SweepStep step;
+  analysis::SweepStep step;
   step.loading = loading;
   step.warm_started = !start.empty();
   step.result = run_released([&] {
@@ -249,7 +249,7 @@ Result solve(const nb::object& heights, double dx, double dy, const std::string&
     return solvers::solve_surface(problem.grid, problem.heights, e_star, loading, options, start);
   });
   step.statistics = contact_statistics_of(problem.grid, step.result);
-  std::vector<solvers::SweepStep> steps;
+  std::vector<analysis::SweepStep> steps;
   steps.push_back(std::move(step));
   return Result{
       make_run(std::move(problem), {e_star, loading.mode, thread_number, command_line, "", height_source, preparation},
@@ -268,13 +268,13 @@ Sweep sweep(const nb::object& heights, double dx, double dy, const std::string& 
   const int thread_number = thread_count(threads);
   ProgressHook hook(std::move(progress));
   options.progress = [&hook](int iteration, double residual) { hook(iteration, residual); };
-  solvers::LoadSweepOptions sweep_options;
+  analysis::LoadSweepOptions sweep_options;
   sweep_options.warm_start = warm_start;
   sweep_options.signed_loads = options.adhesion.has_value();  // pulling is a negative load
 
-  std::vector<solvers::SweepStep> steps = run_released([&] {
+  std::vector<analysis::SweepStep> steps = run_released([&] {
     set_threads(thread_number);
-    return solvers::sweep_surface(problem.grid, problem.heights, e_star, control, load_values, options, sweep_options);
+    return analysis::sweep_surface(problem.grid, problem.heights, e_star, control, load_values, options, sweep_options);
   });
   return Sweep{make_run(std::move(problem),
                         {e_star, control, thread_number, command_line, "", height_source, preparation},

@@ -77,7 +77,7 @@ void write_result_attributes(const Hdf5Node& node, const SolveResult& result, st
   }
 }
 
-void write_contact_statistics_attributes(const Hdf5Node& node, const surface::ContactStatistics& statistics) {
+void write_contact_statistics_attributes(const Hdf5Node& node, const analysis::ContactStatistics& statistics) {
   node.write_double_attribute("mean_gap", statistics.mean_gap);
   node.write_double_attribute("rms_gap", statistics.rms_gap);
   node.write_double_attribute("free_volume", statistics.free_volume);

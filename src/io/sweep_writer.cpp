@@ -10,12 +10,12 @@
 #include <string>
 #include <vector>
 
+#include "halfspace/analysis/adhesion_sweep.hpp"
+#include "halfspace/analysis/sweep_table.hpp"
 #include "halfspace/error.hpp"
 #include "halfspace/io/hdf5_output.hpp"
 #include "halfspace/io/output_file.hpp"
 #include "halfspace/io/result_attributes.hpp"
-#include "halfspace/io/sweep_table.hpp"
-#include "halfspace/solvers/adhesion_sweep.hpp"
 #include "hdf5_writing.hpp"
 
 namespace halfspace::io {
@@ -35,7 +35,7 @@ std::string step_name(std::size_t step, std::size_t steps) {
   return fmt::format("{:0{}}", step, digits);
 }
 
-std::string column_unit(const SummaryColumn& column, const Grid& grid, std::string_view load_mode) {
+std::string column_unit(const analysis::SummaryColumn& column, const Grid& grid, std::string_view load_mode) {
   const std::string_view force = grid.dimension() == 1 ? "N/m" : "N";
   if (column.name == "load") {
     if (load_mode == "force") return std::string(force);
@@ -48,7 +48,7 @@ std::string column_unit(const SummaryColumn& column, const Grid& grid, std::stri
 }
 
 void write_step(const Hdf5Node& steps_group, const std::string& name, const Grid& grid,
-                const solvers::SweepStep& step) {
+                const analysis::SweepStep& step) {
   const Hdf5Node group = steps_group.create_group(name);
   write_result_fields(group, grid, step.result);
   group.write_dataset("cluster_sizes", {step.statistics.cluster_sizes.size()},
@@ -59,12 +59,12 @@ void write_step(const Hdf5Node& steps_group, const std::string& name, const Grid
   group.write_int64_attribute("warm_started", step.warm_started ? 1 : 0);
 }
 
-void write_summary_table(const Hdf5Node& root, const Grid& grid, std::span<const solvers::SweepStep> steps,
+void write_summary_table(const Hdf5Node& root, const Grid& grid, std::span<const analysis::SweepStep> steps,
                          std::string_view load_mode) {
   const Hdf5Node table = root.create_group("sweep");
-  for (const SummaryColumn& column : summary_columns()) {
+  for (const analysis::SummaryColumn& column : analysis::summary_columns()) {
     std::vector<double> values;
-    for (const solvers::SweepStep& step : steps) values.push_back(column.value(step));
+    for (const analysis::SweepStep& step : steps) values.push_back(column.value(step));
     const std::string unit = column_unit(column, grid, load_mode);
     table.write_dataset(column.name, {values.size()}, std::span<const double>(values), unit.empty() ? "1" : unit);
   }
@@ -73,7 +73,7 @@ void write_summary_table(const Hdf5Node& root, const Grid& grid, std::span<const
 }  // namespace
 
 void write_sweep_result(const std::filesystem::path& path, const Grid& grid, std::span<const double> height,
-                        std::span<const solvers::SweepStep> steps, const ResultMetadata& metadata) {
+                        std::span<const analysis::SweepStep> steps, const ResultMetadata& metadata) {
   if (steps.empty()) throw InputError("write_sweep_result: the sweep has no steps");
   check_field("height", 0, height.size(), grid);
   for (std::size_t k = 0; k < steps.size(); ++k) {
@@ -98,20 +98,20 @@ void write_sweep_result(const std::filesystem::path& path, const Grid& grid, std
     root.write_int64_attribute("sweep_steps", static_cast<std::int64_t>(steps.size()));
     // Adhesive sweeps: the pull-off force of the unloading branch (NaN without one).
     if (!steps.front().result.adhesion.law.empty()) {
-      root.write_double_attribute("pull_off_force", solvers::pull_off_force(steps));
+      root.write_double_attribute("pull_off_force", analysis::pull_off_force(steps));
     }
   });
 }
 
-void write_sweep_csv(const std::filesystem::path& path, std::span<const solvers::SweepStep> steps) {
+void write_sweep_csv(const std::filesystem::path& path, std::span<const analysis::SweepStep> steps) {
   std::string text;
-  const std::span<const SummaryColumn> columns = summary_columns();
+  const std::span<const analysis::SummaryColumn> columns = analysis::summary_columns();
   for (std::size_t c = 0; c < columns.size(); ++c) {
     text += c == 0 ? "" : ",";
     text += columns[c].name;
   }
   text += '\n';
-  for (const solvers::SweepStep& step : steps) {
+  for (const analysis::SweepStep& step : steps) {
     for (std::size_t c = 0; c < columns.size(); ++c) {
       // {} is the shortest representation that reads back to the same double.
       text += fmt::format("{}{}", c == 0 ? "" : ",", columns[c].value(step));

@@ -12,17 +12,6 @@
 namespace halfspace::solvers {
 namespace {
 
-// The separation at zero approach, max(h) - h (geometry::initial_gap_from_heights
-// for heights that are not an Eigen array of their own).
-Eigen::ArrayXd initial_gap(const Grid& grid, std::span<const double> heights) {
-  if (heights.size() != grid.size()) {
-    throw InputError(fmt::format("the surface has {} heights but the grid has {} cells ({})", heights.size(),
-                                 grid.size(), grid.shape_string()));
-  }
-  const Eigen::Map<const Eigen::ArrayXd> h(heights.data(), static_cast<Eigen::Index>(heights.size()));
-  return h.maxCoeff() - h;
-}
-
 // The solve with the solver `make` builds, freed before returning.
 template <typename MakeSolver>
 SolveResult solve_with(const Grid& grid, std::span<const double> heights, MakeSolver make, const Loading& loading,
@@ -38,15 +27,16 @@ SolveResult solve_with(const Grid& grid, std::span<const double> heights, MakeSo
   return result;
 }
 
-template <typename MakeSolver>
-std::vector<SweepStep> sweep_with(const Grid& grid, std::span<const double> heights, MakeSolver make, ControlMode mode,
-                                  std::span<const double> values, const LoadSweepOptions& sweep) {
-  const Eigen::ArrayXd gap = initial_gap(grid, heights);
-  const std::unique_ptr<ContactSolver> solver = make();
-  return run_load_sweep(*solver, grid, {gap.data(), grid.size()}, mode, values, sweep);
-}
-
 }  // namespace
+
+Eigen::ArrayXd initial_gap(const Grid& grid, std::span<const double> heights) {
+  if (heights.size() != grid.size()) {
+    throw InputError(fmt::format("the surface has {} heights but the grid has {} cells ({})", heights.size(),
+                                 grid.size(), grid.shape_string()));
+  }
+  const Eigen::Map<const Eigen::ArrayXd> h(heights.data(), static_cast<Eigen::Index>(heights.size()));
+  return h.maxCoeff() - h;
+}
 
 SolveResult solve_surface(const Grid& grid, std::span<const double> heights, double e_star, const Loading& loading,
                           const SolverOptions& options, std::span<const double> initial_pressure) {
@@ -59,20 +49,6 @@ SolveResult solve_surface(const Grid& grid, std::span<const double> heights, con
                           std::span<const double> initial_pressure) {
   return solve_with(
       grid, heights, [&] { return make_solver(grid, coating, options); }, loading, initial_pressure);
-}
-
-std::vector<SweepStep> sweep_surface(const Grid& grid, std::span<const double> heights, double e_star, ControlMode mode,
-                                     std::span<const double> values, const SolverOptions& options,
-                                     const LoadSweepOptions& sweep) {
-  return sweep_with(
-      grid, heights, [&] { return make_solver(grid, e_star, options); }, mode, values, sweep);
-}
-
-std::vector<SweepStep> sweep_surface(const Grid& grid, std::span<const double> heights, const LayeredMaterial& coating,
-                                     ControlMode mode, std::span<const double> values, const SolverOptions& options,
-                                     const LoadSweepOptions& sweep) {
-  return sweep_with(
-      grid, heights, [&] { return make_solver(grid, coating, options); }, mode, values, sweep);
 }
 
 }  // namespace halfspace::solvers

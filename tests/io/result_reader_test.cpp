@@ -56,7 +56,7 @@ TEST(ResultReaderTest, ReadsBackWhatWriteResultWrote) {
   ASSERT_TRUE(result.converged()) << result.message;
   ResultMetadata metadata = result_metadata({1e9, ControlMode::force, 1, "test", "", "sphere", {"a", "b"}}, grid, h);
   metadata.contact_statistics =
-      surface::contact_statistics(grid, {result.pressure.data(), grid.size()}, {result.gap.data(), grid.size()});
+      analysis::contact_statistics(grid, {result.pressure.data(), grid.size()}, {result.gap.data(), grid.size()});
   write_result(dir / "r.h5", grid, h, result, metadata);
 
   const StoredResult stored = read_result(dir / "r.h5");
@@ -85,8 +85,8 @@ TEST(ResultReaderTest, ReadsEachStepOfASweep) {
   const Eigen::ArrayXd heights = sphere_heights(grid, 0.01);
   const std::span<const double> h(heights.data(), grid.size());
   const std::vector<double> loads{1e5, 2e5, 4e5};
-  const std::vector<solvers::SweepStep> steps =
-      solvers::sweep_surface(grid, h, 1e9, ControlMode::mean_pressure, loads, estimate_options());
+  const std::vector<analysis::SweepStep> steps =
+      analysis::sweep_surface(grid, h, 1e9, ControlMode::mean_pressure, loads, estimate_options());
   write_sweep_result(dir / "s.h5", grid, h, steps,
                      result_metadata({1e9, ControlMode::mean_pressure, 1, "", "", "", {}}, grid, h));
   for (int k = 0; k < 3; ++k) {

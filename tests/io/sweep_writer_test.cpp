@@ -20,10 +20,10 @@ namespace {
 
 using test::TempDir;
 
-std::vector<solvers::SweepStep> make_steps(const Grid& grid, std::size_t count) {
-  std::vector<solvers::SweepStep> steps(count);
+std::vector<analysis::SweepStep> make_steps(const Grid& grid, std::size_t count) {
+  std::vector<analysis::SweepStep> steps(count);
   for (std::size_t k = 0; k < count; ++k) {
-    solvers::SweepStep& s = steps[k];
+    analysis::SweepStep& s = steps[k];
     s.loading = Loading::force(0.1 * static_cast<double>(k + 1));
     s.result.status = k == 1 ? SolveStatus::iteration_limit : SolveStatus::converged;
     s.result.solver = "test";
@@ -42,7 +42,7 @@ TEST(SweepWriterTest, WritesGroupsTableAndExactCsv) {
   const TempDir dir;
   const Grid grid = Grid::line(6, 1e-6, Boundary::free);
   const std::vector<double> height(6, 0.0);
-  const std::vector<solvers::SweepStep> steps = make_steps(grid, 3);
+  const std::vector<analysis::SweepStep> steps = make_steps(grid, 3);
   ResultMetadata metadata;
   metadata.load_mode = "force";
   write_sweep_result(dir / "s.h5", grid, height, steps, metadata);
@@ -88,7 +88,7 @@ TEST(SweepWriterTest, ManyStepsGetWiderNamesThatStillSort) {
 TEST(SweepWriterTest, RejectsBadInputWithoutWriting) {
   const TempDir dir;
   const Grid grid = Grid::line(6, 1e-6, Boundary::free);
-  std::vector<solvers::SweepStep> steps = make_steps(grid, 2);
+  std::vector<analysis::SweepStep> steps = make_steps(grid, 2);
   EXPECT_THROW(write_sweep_result(dir / "a.h5", grid, std::vector<double>(6, 0.0), {}, ResultMetadata{}), InputError);
   EXPECT_THROW(write_sweep_result(dir / "a.h5", grid, std::vector<double>(5, 0.0), steps, ResultMetadata{}),
                InputError);
@@ -130,7 +130,7 @@ TEST(SweepWriterTest, StepGroupsHaveEveryResultAttributeOfASingleSolve) {
   const TempDir dir;
   const Grid grid = Grid::line(6, 1e-6, Boundary::free);
   const std::vector<double> height(6, 0.0);
-  std::vector<solvers::SweepStep> steps = make_steps(grid, 2);
+  std::vector<analysis::SweepStep> steps = make_steps(grid, 2);
   steps[1].result.deflation.block = 8;
   steps[1].result.deflation.deflated_iterations = 3;
   steps[1].result.deflation.fast_rate = 0.25;

@@ -8,9 +8,9 @@
 #include <numbers>
 #include <vector>
 
-#include "halfspace/solvers/adhesion_sweep.hpp"
+#include "halfspace/analysis/adhesion_sweep.hpp"
+#include "halfspace/analysis/load_sweep.hpp"
 #include "halfspace/solvers/adhesive_contact_solver.hpp"
-#include "halfspace/solvers/load_sweep.hpp"
 #include "solvers/adhesion_maugis_reference.hpp"
 
 namespace halfspace {
@@ -70,14 +70,14 @@ double pull_off(const AdhesiveSphere& sphere, double cells_per_ell, double width
   const std::vector<double> gap = sphere_gap(grid, sphere.radius);
   std::vector<double> values;
   for (const double a : approaches) values.push_back(a * sphere.approach_unit());
-  solvers::LoadSweepOptions sweep;
+  analysis::LoadSweepOptions sweep;
   sweep.signed_loads = true;
-  const std::vector<solvers::SweepStep> steps =
-      solvers::run_load_sweep(solver, grid, gap, ControlMode::approach, values, sweep);
-  for (const solvers::SweepStep& step : steps) {
+  const std::vector<analysis::SweepStep> steps =
+      analysis::run_load_sweep(solver, grid, gap, ControlMode::approach, values, sweep);
+  for (const analysis::SweepStep& step : steps) {
     EXPECT_TRUE(step.result.converged()) << "approach " << step.loading.value << ": " << step.result.message;
   }
-  const double least = solvers::pull_off_force(steps);
+  const double least = analysis::pull_off_force(steps);
   std::size_t k = 0;
   while (steps[k].result.total_force != least) ++k;
   if (k == 0 || k + 1 >= steps.size()) return least / sphere.force_unit();

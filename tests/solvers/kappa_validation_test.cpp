@@ -11,8 +11,8 @@
 #include <numbers>
 #include <vector>
 
+#include "halfspace/analysis/load_sweep.hpp"
 #include "halfspace/geometry/builtin_surface.hpp"
-#include "halfspace/solvers/load_sweep.hpp"
 #include "halfspace/solvers/solver_factory.hpp"
 #include "halfspace/surface/self_affine.hpp"
 #include "halfspace/surface/statistics.hpp"
@@ -79,14 +79,14 @@ TEST(KappaValidationTest, ContactAreaIsProportionalToLoadWithLiteratureKappa) {
 
     std::vector<double> pressures;
     for (const double x : kReducedPressures) pressures.push_back(x * e_star * slope);
-    const std::vector<SweepStep> steps =
-        run_load_sweep(*solver, grid, {gap.data(), grid.size()}, ControlMode::mean_pressure, pressures);
+    const std::vector<analysis::SweepStep> steps =
+        analysis::run_load_sweep(*solver, grid, {gap.data(), grid.size()}, ControlMode::mean_pressure, pressures);
 
     if (ratio_sums.empty()) ratio_sums.assign(steps.size(), 0.0);
     double seed_ax = 0.0;
     double seed_xx = 0.0;
     for (std::size_t k = 0; k < steps.size(); ++k) {
-      const SweepStep& step = steps[k];
+      const analysis::SweepStep& step = steps[k];
       ASSERT_TRUE(step.result.converged()) << "seed " << seed << " step " << k << ": " << step.result.message;
       const double x = step.result.mean_pressure / (e_star * slope);
       const double area = step.statistics.contact_fraction;

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <vector>
 
+#include "halfspace/analysis/load_sweep.hpp"
 #include "halfspace/error.hpp"
 #include "halfspace/geometry/builtin_surface.hpp"
 #include "halfspace/solvers/solver_factory.hpp"
@@ -46,7 +47,8 @@ TEST(SurfaceSolveTest, RefusesHeightsOfAnotherSize) {
   const Grid grid = Grid::line(16, 1e-5, Boundary::free);
   const std::vector<double> heights(15, 0.0);
   EXPECT_THROW(solve_surface(grid, heights, 1e9, Loading::force(1.0), {}), InputError);
-  EXPECT_THROW(sweep_surface(grid, heights, 1e9, ControlMode::force, std::vector<double>{1.0}, {}), InputError);
+  EXPECT_THROW(analysis::sweep_surface(grid, heights, 1e9, ControlMode::force, std::vector<double>{1.0}, {}),
+               InputError);
 }
 
 }  // namespace

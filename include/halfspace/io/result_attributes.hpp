@@ -11,10 +11,10 @@
 #include <string_view>
 #include <variant>
 
+#include "halfspace/analysis/contact_statistics.hpp"
 #include "halfspace/io/hdf5_output.hpp"
 #include "halfspace/layered_material.hpp"
 #include "halfspace/solvers/solve_result.hpp"
-#include "halfspace/surface/statistics.hpp"
 
 namespace halfspace::io {
 
@@ -38,7 +38,7 @@ void write_result_attributes(const Hdf5Node& node, const SolveResult& result, st
 
 // mean_gap, rms_gap, free_volume (float64) and clusters (int64): the contact
 // statistics of a solve, on a result's root or a sweep step's group.
-void write_contact_statistics_attributes(const Hdf5Node& node, const surface::ContactStatistics& statistics);
+void write_contact_statistics_attributes(const Hdf5Node& node, const analysis::ContactStatistics& statistics);
 
 // dimension, nx, ny (int64), dx, dy (float64, m; dy 0 in 1D) and boundary:
 // the grid, on the root of every file that holds fields on it.

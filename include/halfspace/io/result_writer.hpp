@@ -9,6 +9,7 @@
 #include <span>
 #include <string>
 
+#include "halfspace/analysis/contact_statistics.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/io/hdf5_output.hpp"
 #include "halfspace/layered_material.hpp"
@@ -27,7 +28,7 @@ struct ResultMetadata {
   std::string preparation;    // the preparation steps applied to it, one per line; empty if none
   // Written as root attributes when given: mean_gap, rms_gap, free_volume,
   // clusters; surface_rms_height, surface_rms_slope (docs/file-format.md).
-  std::optional<surface::ContactStatistics> contact_statistics;
+  std::optional<analysis::ContactStatistics> contact_statistics;
   std::optional<surface::SurfaceStatistics> surface_statistics;
   // More groups written under the root after the fields when set (the
   // /stress group of solve --stress-depths).

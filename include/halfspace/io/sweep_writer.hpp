@@ -6,9 +6,9 @@
 #include <filesystem>
 #include <span>
 
+#include "halfspace/analysis/load_sweep.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/io/result_writer.hpp"
-#include "halfspace/solvers/load_sweep.hpp"
 
 namespace halfspace::io {
 
@@ -22,12 +22,12 @@ namespace halfspace::io {
 // empty or a field does not match the grid, FileError naming the path if the
 // file cannot be written.
 void write_sweep_result(const std::filesystem::path& path, const Grid& grid, std::span<const double> height,
-                        std::span<const solvers::SweepStep> steps, const ResultMetadata& metadata);
+                        std::span<const analysis::SweepStep> steps, const ResultMetadata& metadata);
 
 // The summary table as CSV: a header line of the column names, then one line
 // per step, numbers in the shortest form that reads back exactly. Throws
 // FileError naming the path if it cannot be written.
-void write_sweep_csv(const std::filesystem::path& path, std::span<const solvers::SweepStep> steps);
+void write_sweep_csv(const std::filesystem::path& path, std::span<const analysis::SweepStep> steps);
 
 // Where the CSV of a sweep written to `result_path` goes: the same name with
 // the extension .csv (sweep.h5 -> sweep.csv).

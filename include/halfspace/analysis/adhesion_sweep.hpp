@@ -4,9 +4,9 @@
 
 #include <span>
 
-#include "halfspace/solvers/load_sweep.hpp"
+#include "halfspace/analysis/load_sweep.hpp"
 
-namespace halfspace::solvers {
+namespace halfspace::analysis {
 
 // The most negative total force (N, N/m in 1D) on the unloading branch: the
 // steps after the one of largest approach. NaN when there is no such step
@@ -16,4 +16,4 @@ namespace halfspace::solvers {
 // JKR's sphere, -3/2 pi w R).
 double pull_off_force(std::span<const SweepStep> steps);
 
-}  // namespace halfspace::solvers
+}  // namespace halfspace::analysis

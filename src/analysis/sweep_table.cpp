@@ -1,12 +1,10 @@
 // The sweep's summary columns, in file order.
-#include "halfspace/io/sweep_table.hpp"
+#include "halfspace/analysis/sweep_table.hpp"
 
 #include <array>
 
-namespace halfspace::io {
+namespace halfspace::analysis {
 namespace {
-
-using solvers::SweepStep;
 
 // Each column reads its value with a captureless lambda (a plain function
 // pointer in the table).
@@ -48,4 +46,4 @@ std::span<const SummaryColumn> summary_columns() {
   return kColumns;
 }
 
-}  // namespace halfspace::io
+}  // namespace halfspace::analysis

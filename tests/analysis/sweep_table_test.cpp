@@ -1,6 +1,6 @@
 // The sweep's summary table: its columns, their order and what each reads
 // from a step.
-#include "halfspace/io/sweep_table.hpp"
+#include "halfspace/analysis/sweep_table.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,10 +8,10 @@
 #include <string_view>
 #include <vector>
 
-namespace halfspace::io {
+namespace halfspace::analysis {
 namespace {
 
-using solvers::SweepStep;
+using analysis::SweepStep;
 
 TEST(SweepTableTest, SummaryColumnsAreTheDocumentedOnes) {
   std::vector<std::string> names;
@@ -39,4 +39,4 @@ TEST(SweepTableTest, SummaryColumnsAreTheDocumentedOnes) {
 }
 
 }  // namespace
-}  // namespace halfspace::io
+}  // namespace halfspace::analysis

@@ -1,10 +1,10 @@
 // Pull-off force of a displacement-controlled adhesive sweep.
-#include "halfspace/solvers/adhesion_sweep.hpp"
+#include "halfspace/analysis/adhesion_sweep.hpp"
 
 #include <algorithm>
 #include <limits>
 
-namespace halfspace::solvers {
+namespace halfspace::analysis {
 
 double pull_off_force(std::span<const SweepStep> steps) {
   const double none = std::numeric_limits<double>::quiet_NaN();
@@ -19,4 +19,4 @@ double pull_off_force(std::span<const SweepStep> steps) {
   return least;
 }
 
-}  // namespace halfspace::solvers
+}  // namespace halfspace::analysis

@@ -6,9 +6,9 @@
 #include <span>
 #include <string_view>
 
-#include "halfspace/solvers/load_sweep.hpp"
+#include "halfspace/analysis/load_sweep.hpp"
 
-namespace halfspace::io {
+namespace halfspace::analysis {
 
 // One column of the sweep's summary table (HDF5 /sweep/<name> and the CSV):
 // its name, unit ("" when dimensionless; "force" stands for N in 2D, N/m in
@@ -17,7 +17,7 @@ struct SummaryColumn {
   std::string_view name;
   std::string_view unit;
   std::string_view meaning;
-  double (*value)(const solvers::SweepStep& step);
+  double (*value)(const SweepStep& step);
 };
 
 // The columns in file order: load, mean_pressure, total_force, approach,
@@ -25,4 +25,4 @@ struct SummaryColumn {
 // iterations, residual, seconds, converged.
 std::span<const SummaryColumn> summary_columns();
 
-}  // namespace halfspace::io
+}  // namespace halfspace::analysis

@@ -1,15 +1,32 @@
 // Load sweeps with warm starts. Starting step k from the pressure of step k-1
 // saves most of the iterations when the loads are close: the contact set
 // changes little, and the Polonsky-Keer iteration only has to move its edge.
-#include "halfspace/solvers/load_sweep.hpp"
+#include "halfspace/analysis/load_sweep.hpp"
 
 #include <fmt/format.h>
 
+#include <Eigen/Core>
 #include <cmath>
+#include <memory>
 
 #include "halfspace/error.hpp"
+#include "halfspace/solvers/solver_factory.hpp"
+#include "halfspace/solvers/surface_solve.hpp"
 
-namespace halfspace::solvers {
+namespace halfspace::analysis {
+namespace {
+
+// The sweep with the solver `make` builds, freed before returning.
+template <typename MakeSolver>
+std::vector<SweepStep> sweep_with(const Grid& grid, std::span<const double> heights, MakeSolver make, ControlMode mode,
+                                  std::span<const double> values, const LoadSweepOptions& sweep) {
+  const Eigen::ArrayXd gap = solvers::initial_gap(grid, heights);
+  const std::unique_ptr<ContactSolver> solver = make();
+  return run_load_sweep(*solver, grid, {gap.data(), grid.size()}, mode, values, sweep);
+}
+
+}  // namespace
+
 std::vector<SweepStep> run_load_sweep(ContactSolver& solver, const Grid& grid, std::span<const double> initial_gap,
                                       ControlMode mode, std::span<const double> values,
                                       const LoadSweepOptions& options) {
@@ -55,12 +72,26 @@ std::vector<SweepStep> run_load_sweep(ContactSolver& solver, const Grid& grid, s
     std::span<const double> start;
     if (step.warm_started) start = {previous->result.pressure.data(), grid.size()};
     step.result = solver.solve(initial_gap, loads[k], start);
-    step.statistics = surface::contact_statistics(grid, {step.result.pressure.data(), grid.size()},
-                                                  {step.result.gap.data(), grid.size()});
+    step.statistics =
+        contact_statistics(grid, {step.result.pressure.data(), grid.size()}, {step.result.gap.data(), grid.size()});
     steps.push_back(std::move(step));
     if (options.on_step_done) options.on_step_done(k, loads.size(), steps.back());
   }
   return steps;
 }
 
-}  // namespace halfspace::solvers
+std::vector<SweepStep> sweep_surface(const Grid& grid, std::span<const double> heights, double e_star, ControlMode mode,
+                                     std::span<const double> values, const solvers::SolverOptions& options,
+                                     const LoadSweepOptions& sweep) {
+  return sweep_with(
+      grid, heights, [&] { return solvers::make_solver(grid, e_star, options); }, mode, values, sweep);
+}
+
+std::vector<SweepStep> sweep_surface(const Grid& grid, std::span<const double> heights, const LayeredMaterial& coating,
+                                     ControlMode mode, std::span<const double> values,
+                                     const solvers::SolverOptions& options, const LoadSweepOptions& sweep) {
+  return sweep_with(
+      grid, heights, [&] { return solvers::make_solver(grid, coating, options); }, mode, values, sweep);
+}
+
+}  // namespace halfspace::analysis

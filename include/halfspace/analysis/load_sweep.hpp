@@ -8,17 +8,19 @@
 #include <span>
 #include <vector>
 
+#include "halfspace/analysis/contact_statistics.hpp"
 #include "halfspace/grid.hpp"
+#include "halfspace/layered_material.hpp"
 #include "halfspace/solvers/contact_solver.hpp"
-#include "halfspace/surface/statistics.hpp"
+#include "halfspace/solvers/solver_options.hpp"
 
-namespace halfspace::solvers {
+namespace halfspace::analysis {
 
 struct SweepStep {
-  Loading loading;                        // what was imposed at this step
-  SolveResult result;                     // the solver's outcome, fields included
-  surface::ContactStatistics statistics;  // of result
-  bool warm_started = false;              // started from the previous step's pressure
+  Loading loading;               // what was imposed at this step
+  SolveResult result;            // the solver's outcome, fields included
+  ContactStatistics statistics;  // of result
+  bool warm_started = false;     // started from the previous step's pressure
 };
 
 struct LoadSweepOptions {
@@ -46,4 +48,15 @@ std::vector<SweepStep> run_load_sweep(ContactSolver& solver, const Grid& grid, s
                                       ControlMode mode, std::span<const double> values,
                                       const LoadSweepOptions& options = {});
 
-}  // namespace halfspace::solvers
+// The load sweep of run_load_sweep on the surface `heights`, with one solver
+// built for all steps. Throws as solvers::solve_surface and run_load_sweep do.
+std::vector<SweepStep> sweep_surface(const Grid& grid, std::span<const double> heights, double e_star, ControlMode mode,
+                                     std::span<const double> values, const solvers::SolverOptions& options,
+                                     const LoadSweepOptions& sweep = {});
+
+// The same on a coated half-space (layered_material.hpp).
+std::vector<SweepStep> sweep_surface(const Grid& grid, std::span<const double> heights, const LayeredMaterial& coating,
+                                     ControlMode mode, std::span<const double> values,
+                                     const solvers::SolverOptions& options, const LoadSweepOptions& sweep = {});
+
+}  // namespace halfspace::analysis

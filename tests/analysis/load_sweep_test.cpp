@@ -2,7 +2,7 @@
 // with a recording stand-in solver), failed steps kept and followed by a cold
 // start, up-front validation, and a real Westergaard sweep that matches cold
 // solves step by step with fewer iterations.
-#include "halfspace/solvers/load_sweep.hpp"
+#include "halfspace/analysis/load_sweep.hpp"
 
 #include <gtest/gtest.h>
 
@@ -19,7 +19,7 @@
 #include "support/analytic_solutions.hpp"
 #include "support/grid_fields.hpp"
 
-namespace halfspace::solvers {
+namespace halfspace::analysis {
 namespace {
 
 // A solver that records what it was asked and answers p = load everywhere,
@@ -148,10 +148,10 @@ TEST(LoadSweepTest, WestergaardSweepMatchesColdSolvesWithFewerIterations) {
   // itself runs without the preconditioner on 1D grids, so it is built here
   // from its parts.)
   FftInfluenceOperator op(grid, e_star);
-  FourierPreconditioner preconditioner(grid, e_star);
-  PolonskyKeerOptions options;
-  options.form = PolonskyKeerForm::projected;
-  const std::unique_ptr<ContactSolver> solver = std::make_unique<PolonskyKeer>(op, options, &preconditioner);
+  solvers::FourierPreconditioner preconditioner(grid, e_star);
+  solvers::PolonskyKeerOptions options;
+  options.form = solvers::PolonskyKeerForm::projected;
+  const std::unique_ptr<ContactSolver> solver = std::make_unique<solvers::PolonskyKeer>(op, options, &preconditioner);
   const std::vector<SweepStep> steps =
       run_load_sweep(*solver, grid, {gap0.data(), n}, ControlMode::mean_pressure, loads);
 
@@ -175,4 +175,4 @@ TEST(LoadSweepTest, WestergaardSweepMatchesColdSolvesWithFewerIterations) {
 }
 
 }  // namespace
-}  // namespace halfspace::solvers
+}  // namespace halfspace::analysis

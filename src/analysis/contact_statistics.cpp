@@ -1,0 +1,114 @@
+// Contact statistics. Sums go through linalg::sums (fixed blocking, so the
+// same bits for any thread count); the cluster labelling is a serial
+// union-find, linear in the number of cells.
+#include "halfspace/analysis/contact_statistics.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <functional>
+#include <numeric>
+
+#include "halfspace/error.hpp"
+#include "halfspace/linalg/parallel.hpp"
+
+namespace halfspace::analysis {
+namespace {
+
+void check_size(std::string_view what, std::size_t size, const Grid& grid) {
+  if (size != grid.size()) {
+    throw InputError(
+        fmt::format("{} has {} values but the grid has {} cells ({})", what, size, grid.size(), grid.shape_string()));
+  }
+}
+
+// Union-find over cell indices with path halving and union by size.
+class DisjointSets {
+ public:
+  explicit DisjointSets(std::size_t n) : parent_(n), size_(n, 1) { std::iota(parent_.begin(), parent_.end(), 0); }
+
+  std::size_t find(std::size_t a) {
+    while (parent_[a] != a) {
+      parent_[a] = parent_[parent_[a]];
+      a = parent_[a];
+    }
+    return a;
+  }
+
+  void unite(std::size_t a, std::size_t b) {
+    a = find(a);
+    b = find(b);
+    if (a == b) return;
+    if (size_[a] < size_[b]) std::swap(a, b);
+    parent_[b] = a;
+    size_[a] += size_[b];
+  }
+
+  std::int64_t size_of_root(std::size_t root) const { return size_[root]; }
+
+ private:
+  std::vector<std::size_t> parent_;
+  std::vector<std::int64_t> size_;
+};
+
+}  // namespace
+
+std::vector<std::int64_t> contact_cluster_sizes(const Grid& grid, std::span<const double> pressure) {
+  check_size("contact_cluster_sizes: the pressure", pressure.size(), grid);
+  const std::size_t nx = grid.nx();
+  const std::size_t ny = grid.ny();
+  const bool wrap = grid.periodic();
+  DisjointSets sets(grid.size());
+  const auto join = [&](std::size_t a, std::size_t b) {
+    if (pressure[a] > 0.0 && pressure[b] > 0.0) sets.unite(a, b);
+  };
+  for (std::size_t j = 0; j < ny; ++j) {
+    for (std::size_t i = 0; i < nx; ++i) {
+      const std::size_t k = j * nx + i;
+      if (!(pressure[k] > 0.0)) continue;
+      // Right and lower neighbours; with wrap-around the last column meets
+      // the first and the last row the first. A 1D grid has only one row.
+      if (i + 1 < nx) {
+        join(k, k + 1);
+      } else if (wrap) {
+        join(k, j * nx);
+      }
+      if (grid.dimension() == 2) {
+        if (j + 1 < ny) {
+          join(k, k + nx);
+        } else if (wrap) {
+          join(k, i);
+        }
+      }
+    }
+  }
+  std::vector<std::int64_t> sizes;
+  for (std::size_t k = 0; k < grid.size(); ++k) {
+    if (pressure[k] > 0.0 && sets.find(k) == k) sizes.push_back(sets.size_of_root(k));
+  }
+  std::sort(sizes.begin(), sizes.end(), std::greater<>());
+  return sizes;
+}
+
+ContactStatistics contact_statistics(const Grid& grid, std::span<const double> pressure, std::span<const double> gap) {
+  check_size("contact_statistics: the pressure", pressure.size(), grid);
+  check_size("contact_statistics: the gap", gap.size(), grid);
+  const double* p = pressure.data();
+  const double* g = gap.data();
+  const auto [contact, gap_sum, gap_square] = linalg::sums<3>(grid.size(), [&](std::size_t i) {
+    const double gap = std::max(g[i], 0.0);
+    return std::array<double, 3>{p[i] > 0.0 ? 1.0 : 0.0, gap, gap * gap};
+  });
+  const double cells = static_cast<double>(grid.size());
+  ContactStatistics statistics;
+  statistics.contact_fraction = contact / cells;
+  statistics.mean_gap = gap_sum / cells;
+  statistics.rms_gap = std::sqrt(gap_square / cells);
+  statistics.free_volume = gap_sum * grid.cell_area();
+  statistics.cluster_sizes = contact_cluster_sizes(grid, {p, grid.size()});
+  return statistics;
+}
+
+}  // namespace halfspace::analysis
