@@ -218,6 +218,7 @@ auto with_solver_flags(const SolveOptions& o, Function&& function) {
                                  : option == "max_iterations"      ? "max-iter"
                                  : option.starts_with("deflation") ? "deflation-block"
                                  : option == "hardness"            ? "hardness"
+                                 : option == "adhesion"            ? "adhesion"
                                  : option == "adhesion.work"       ? "work-of-adhesion"
                                  : option == "adhesion.range"
                                      ? (o.adhesion_stress ? "adhesion-stress" : "adhesion-range")
@@ -690,24 +691,18 @@ SolveSetup make_solve_setup(const SolveOptions& options) {
     throw InputError(fmt::format("surface {} has {} heights for a {} grid", surface.source, surface.heights.size(),
                                  surface.grid.shape_string()));
   }
-  with_solver_flags(options, [&] { solver.validate(surface.grid); });
-  if (coating) {
-    if (solver.type == solvers::SolverType::lemke || solver.type == solvers::SolverType::lcpquad) {
-      throw InputError(fmt::format(
-          "{} is invalid for a coated half-space (its dense matrix is the homogeneous one): allowed are pk, "
-          "pk-fourier and pk-multilevel",
-          options.describe("solver")));
+  with_solver_flags(options, [&] {
+    if (coating) {
+      solver.validate(surface.grid, *coating);
+    } else {
+      solver.validate(surface.grid);
     }
+  });
+  if (coating) {
     if (surface.grid.dimension() == 1 && !surface.grid.periodic()) {
       throw InputError(
           "a coated half-space on a free 1D grid is not supported: pass --boundary periodic or use a "
           "2D surface");
-    }
-    if (solver.adhesion) {
-      throw InputError(
-          fmt::format("{} is not supported for a coated half-space: the adhesive solver works on the "
-                      "homogeneous half-space",
-                      options.describe("adhesion")));
     }
     if (!stress.depths.empty()) {
       throw InputError(

@@ -154,11 +154,7 @@ std::unique_ptr<ContactSolver> make_any_solver(const Grid& grid, const Elasticit
                                                const SolverOptions& options) {
   options.validate(grid);
   if (options.adhesion) {
-    if (!std::holds_alternative<double>(e_star)) {
-      throw SolverOptionError("adhesion", std::string(to_string(options.adhesion->law.type)),
-                              "is not supported for a coated half-space: the adhesive solver works on the "
-                              "homogeneous half-space");
-    }
+    // A coated half-space was refused by options.validate(grid, material).
     AdhesiveSolverOptions adhesive;
     adhesive.law = options.adhesion->law;
     adhesive.tolerance = options.adhesion->tolerance;
@@ -191,11 +187,7 @@ std::unique_ptr<ContactSolver> make_solver(const Grid& grid, double e_star, cons
 std::unique_ptr<ContactSolver> make_solver(const Grid& grid, const LayeredMaterial& material,
                                            const SolverOptions& options) {
   validated(material);
-  if (options.type == SolverType::lemke || options.type == SolverType::lcpquad) {
-    throw SolverOptionError("type", std::string(to_string(options.type)),
-                            "is invalid for a coated half-space (its dense matrix is the homogeneous one): allowed "
-                            "are pk, pk-fourier and pk-multilevel");
-  }
+  options.validate(grid, material);
   return make_any_solver(grid, Elasticity{material}, options);
 }
 

@@ -149,4 +149,18 @@ void SolverOptions::validate(const Grid& grid) const {
   if (deflation.mode == DeflationOptions::Mode::on) BlockDeflation::require_covers(grid, deflation.block);
 }
 
+void SolverOptions::validate(const Grid& grid, const LayeredMaterial& /*coating*/) const {
+  validate(grid);
+  if (type == SolverType::lemke || type == SolverType::lcpquad) {
+    throw SolverOptionError("type", std::string(to_string(type)),
+                            "is invalid for a coated half-space (its dense matrix is the homogeneous one): allowed "
+                            "are pk, pk-fourier and pk-multilevel");
+  }
+  if (adhesion) {
+    throw SolverOptionError("adhesion", std::string(to_string(adhesion->law.type)),
+                            "is not supported for a coated half-space: the adhesive solver works on the "
+                            "homogeneous half-space");
+  }
+}
+
 }  // namespace halfspace::solvers

@@ -151,5 +151,32 @@ TEST(SolverOptionsTest, TheFactoryRefusesWhatValidateRefuses) {
   refusal([&] { make_solver(grid, 1e9, options); }, "deflation.block");
 }
 
+// The rules of a coated half-space live in validate(grid, coating), which
+// make_solver and the program both call: no dense solver, no adhesion.
+TEST(SolverOptionsTest, CoatedHalfSpaceRefusesTheDenseSolversAndAdhesion) {
+  const Grid grid = Grid::plane(16, 16, 1e-6, 1e-6, Boundary::free);
+  const LayeredMaterial coating{4e-6, {3e9, 0.35}, {2.1e11, 0.29}};
+  for (const SolverType type : {SolverType::pk, SolverType::pk_fourier, SolverType::pk_multilevel}) {
+    SolverOptions options;
+    options.type = type;
+    EXPECT_NO_THROW(options.validate(grid, coating)) << to_string(type);
+  }
+  for (const SolverType type : {SolverType::lemke, SolverType::lcpquad}) {
+    SolverOptions options;
+    options.type = type;
+    const SolverOptionError error = refusal([&] { options.validate(grid, coating); }, "type");
+    EXPECT_EQ(error.value(), to_string(type));
+    EXPECT_NE(error.rule().find("allowed are pk, pk-fourier and pk-multilevel"), std::string::npos) << error.rule();
+    // Homogeneous: the same options are valid.
+    EXPECT_NO_THROW(options.validate(grid)) << to_string(type);
+  }
+  SolverOptions adhesive;
+  adhesive.adhesion = SolverOptions::Adhesion{AdhesionLaw::maugis_dugdale(0.05, 1e-6)};
+  EXPECT_NO_THROW(adhesive.validate(grid));
+  const SolverOptionError error = refusal([&] { adhesive.validate(grid, coating); }, "adhesion");
+  EXPECT_EQ(error.value(), "md");
+  refusal([&] { make_solver(grid, coating, adhesive); }, "adhesion");
+}
+
 }  // namespace
 }  // namespace halfspace::solvers

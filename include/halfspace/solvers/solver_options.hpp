@@ -14,6 +14,7 @@
 #include "halfspace/error.hpp"
 #include "halfspace/fft/fft_planning.hpp"
 #include "halfspace/grid.hpp"
+#include "halfspace/layered_material.hpp"
 #include "halfspace/solvers/adhesion_law.hpp"
 #include "halfspace/solvers/block_deflation_options.hpp"
 #include "halfspace/solvers/interface_law.hpp"
@@ -147,6 +148,11 @@ struct SolverOptions {
   // validate(), and the rules that depend on the grid: deflation on needs a
   // grid its block covers.
   void validate(const Grid& grid) const;
+  // validate(grid), and the rules of a coated half-space (layered_material.hpp):
+  // not a dense solver ("type": lemke and lcpquad assemble the homogeneous
+  // matrix) and no adhesion ("adhesion": the adhesive solver works on the
+  // homogeneous half-space).
+  void validate(const Grid& grid, const LayeredMaterial& coating) const;
 };
 
 }  // namespace halfspace::solvers
