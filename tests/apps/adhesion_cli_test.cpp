@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "io/hdf5_test_support.hpp"
+#include "support/cli_checks.hpp"
 #include "support/program_run.hpp"
 
 namespace halfspace {
@@ -19,9 +20,9 @@ namespace {
 
 namespace fs = std::filesystem;
 using test::TempDir;
-
-constexpr int kExitOk = 0;
-constexpr int kExitInputError = 1;
+using testing::kExitInputError;
+using testing::kExitOk;
+using testing::run;
 
 // A soft sphere (R = 10 mm, E* = 1 MPa, w = 0.05 J/m^2) on a 32 x 32 free
 // grid of 1 mm: ell = (pi w R^2 / K)^(1/3) = 0.23 mm, the approach unit
@@ -41,10 +42,6 @@ std::vector<std::string> sphere_arguments(const fs::path& output, const std::str
 }
 
 using testing::ProgramRun;
-
-ProgramRun run(const std::vector<std::string>& arguments, const TempDir& directory) {
-  return testing::run_program(arguments, directory.path());
-}
 
 TEST(AdhesionCliTest, SingleSolveWritesSignedPressureAndAdhesionAttributes) {
   const TempDir dir;
@@ -113,11 +110,7 @@ void expect_refused(const std::vector<std::string>& extra, const std::string& ex
                                      "--output", output.string()};
   if (adhesive) arguments.insert(arguments.end(), {"--adhesion", "md", "--work-of-adhesion", "0.05"});
   arguments.insert(arguments.end(), extra.begin(), extra.end());
-  const ProgramRun result = run(arguments, dir);
-  EXPECT_EQ(result.exit_code, kExitInputError) << result.err;
-  EXPECT_EQ(result.err.rfind("error: ", 0), 0U) << result.err;
-  EXPECT_NE(result.err.find(expected), std::string::npos) << "expected '" << expected << "' in: " << result.err;
-  EXPECT_FALSE(fs::exists(output));
+  testing::expect_input_error(run(arguments, dir), expected, output);
 }
 
 TEST(AdhesionCliTest, RefusesInconsistentAdhesionOptions) {

@@ -19,6 +19,7 @@
 
 #include "halfspace/version.hpp"
 #include "io/hdf5_test_support.hpp"
+#include "support/cli_checks.hpp"
 #include "support/program_run.hpp"
 
 namespace halfspace {
@@ -26,18 +27,13 @@ namespace {
 
 namespace fs = std::filesystem;
 using test::TempDir;
-
-// The program's exit codes (docs/usage.md).
-constexpr int kExitOk = 0;
-constexpr int kExitInputError = 1;
-constexpr int kExitNotConverged = 2;
+using testing::expect_input_error;
+using testing::kExitInputError;
+using testing::kExitNotConverged;
+using testing::kExitOk;
+using testing::run;
 
 using testing::ProgramRun;
-
-// Runs the executable with `arguments`, from `directory`.
-ProgramRun run(const std::vector<std::string>& arguments, const TempDir& directory) {
-  return testing::run_program(arguments, directory.path());
-}
 
 // Options of a small Hertz problem (32 x 32, converges in ~20 iterations).
 std::vector<std::pair<std::string, std::string>> sphere_options(const fs::path& output) {
@@ -45,24 +41,8 @@ std::vector<std::pair<std::string, std::string>> sphere_options(const fs::path& 
           {"--E-star", "1e11"},     {"--force", "1"},     {"--output", output.string()}, {"--threads", "1"}};
 }
 
-std::vector<std::string> solve_arguments(const std::vector<std::pair<std::string, std::string>>& options) {
-  std::vector<std::string> arguments{"solve"};
-  for (const auto& [flag, value] : options) {
-    arguments.push_back(flag);
-    if (!value.empty()) arguments.push_back(value);
-  }
-  return arguments;
-}
-
-// Expects an input error: exit 1, nothing on stdout, exactly one stderr line
-// starting "error: " and containing `expected`, and no output file.
-void expect_input_error(const ProgramRun& result, const std::string& expected, const fs::path& output) {
-  EXPECT_EQ(result.exit_code, kExitInputError) << result.err;
-  EXPECT_EQ(result.out, "");
-  EXPECT_EQ(result.err.rfind("error: ", 0), 0U) << result.err;
-  EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
-  EXPECT_NE(result.err.find(expected), std::string::npos) << "expected '" << expected << "' in: " << result.err;
-  EXPECT_FALSE(fs::exists(output)) << output;
+std::vector<std::string> solve_arguments(const testing::OptionPairs& options) {
+  return testing::command_arguments("solve", options);
 }
 
 std::int64_t converged_attribute(const fs::path& file) {

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "io/hdf5_test_support.hpp"
+#include "support/cli_checks.hpp"
 #include "support/program_run.hpp"
 
 namespace halfspace {
@@ -53,7 +54,7 @@ TEST(FftWisdomCliTest, MeasuredRunSavesWisdomAndNextRunReadsIt) {
   const fs::path wisdom = dir / "cache/fftw-wisdom";
   const auto first =
       run_program(measured_solve(dir / "a.h5"), dir.path(), {{"HALFSPACE_FFTW_WISDOM", wisdom.string()}});
-  ASSERT_EQ(first.exit_code, 0) << first.err;
+  ASSERT_EQ(first.exit_code, testing::kExitOk) << first.err;
   EXPECT_EQ(first.err, "");
   const std::string text = read_text(wisdom);
   ASSERT_EQ(text.substr(0, kWisdomHeader.size()), kWisdomHeader) << text;
@@ -63,7 +64,7 @@ TEST(FftWisdomCliTest, MeasuredRunSavesWisdomAndNextRunReadsIt) {
   const ino_t before = inode(wisdom);
   const auto second =
       run_program(measured_solve(dir / "b.h5"), dir.path(), {{"HALFSPACE_FFTW_WISDOM", wisdom.string()}});
-  ASSERT_EQ(second.exit_code, 0) << second.err;
+  ASSERT_EQ(second.exit_code, testing::kExitOk) << second.err;
   EXPECT_EQ(inode(wisdom), before) << "the second run did not use the saved wisdom";
   EXPECT_EQ(read_text(wisdom), text);
   for (const auto& entry : fs::directory_iterator(wisdom.parent_path())) {
@@ -77,7 +78,7 @@ TEST(FftWisdomCliTest, CorruptWisdomFileIsIgnoredAndReplaced) {
   std::ofstream(wisdom) << "(fftw-3.3.10 fftw_wisdom #x0 garbage";
   const auto run =
       run_program(measured_solve(dir / "out.h5"), dir.path(), {{"HALFSPACE_FFTW_WISDOM", wisdom.string()}});
-  ASSERT_EQ(run.exit_code, 0) << run.err;
+  ASSERT_EQ(run.exit_code, testing::kExitOk) << run.err;
   EXPECT_EQ(run.err, "");
   EXPECT_TRUE(fs::exists(dir / "out.h5"));
   const std::string text = read_text(wisdom);
@@ -91,7 +92,7 @@ TEST(FftWisdomCliTest, OffWritesNoWisdom) {
     const auto run = run_program(
         measured_solve(dir / "out.h5"), dir.path(),
         {{"HALFSPACE_FFTW_WISDOM", off}, {"XDG_CACHE_HOME", (dir / "cache").string()}, {"HOME", dir.path().string()}});
-    ASSERT_EQ(run.exit_code, 0) << run.err;
+    ASSERT_EQ(run.exit_code, testing::kExitOk) << run.err;
     EXPECT_FALSE(fs::exists(dir / "cache")) << "HALFSPACE_FFTW_WISDOM='" << off << "'";
     EXPECT_FALSE(fs::exists(dir / ".cache")) << "HALFSPACE_FFTW_WISDOM='" << off << "'";
   }

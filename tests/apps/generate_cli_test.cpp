@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "io/hdf5_test_support.hpp"
+#include "support/cli_checks.hpp"
 #include "support/program_run.hpp"
 
 namespace halfspace {
@@ -17,11 +18,11 @@ namespace {
 
 namespace fs = std::filesystem;
 using test::TempDir;
+using testing::kExitInputError;
+using testing::kExitOk;
 using testing::ProgramRun;
 using testing::run_program;
 
-constexpr int kExitOk = 0;
-constexpr int kExitInputError = 1;
 // The rms slope is scaled onto the request; only rounding remains.
 constexpr double kRmsTolerance = 1e-12;
 

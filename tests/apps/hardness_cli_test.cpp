@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "io/hdf5_test_support.hpp"
+#include "support/cli_checks.hpp"
 #include "support/program_run.hpp"
 
 namespace halfspace {
@@ -20,11 +21,10 @@ namespace {
 
 namespace fs = std::filesystem;
 using test::TempDir;
+using testing::kExitInputError;
+using testing::kExitOk;
 using testing::ProgramRun;
 using testing::run_program;
-
-constexpr int kExitOk = 0;
-constexpr int kExitInputError = 1;
 
 // A sphere on a free 2D grid whose elastic peak (about 3.6 GPa) lies above
 // the hardness of 2 GPa used below.

@@ -15,6 +15,7 @@
 
 #include "io/hdf5_test_support.hpp"
 #include "io/reader_test_support.hpp"
+#include "support/cli_checks.hpp"
 #include "support/program_run.hpp"
 
 namespace halfspace {
@@ -23,18 +24,16 @@ namespace {
 namespace fs = std::filesystem;
 using test::kFormatDataDir;
 using test::TempDir;
+using testing::expect_input_error;
+using testing::kExitInputError;
+using testing::kExitOk;
+using testing::run;
 
-constexpr int kExitOk = 0;
-constexpr int kExitInputError = 1;
 // Padding adds non-contacting cells only: the pressure on the map agrees to
 // the solver's tolerance (1e-10 relative residual), a little amplified.
 constexpr double kPaddingPressureTolerance = 1e-6;
 
 using testing::ProgramRun;
-
-ProgramRun run(const std::vector<std::string>& arguments, const TempDir& dir) {
-  return testing::run_program(arguments, dir.path());
-}
 
 // solve with a soft material and a small force: a few contact spots on the
 // di-5 AFM crop, converged in a few dozen iterations.
@@ -43,14 +42,6 @@ std::vector<std::string> solve(const fs::path& map, const fs::path& output, std:
                                      "1",     "--output",     output.string(), "--quiet"};
   arguments.insert(arguments.end(), extra.begin(), extra.end());
   return arguments;
-}
-
-void expect_input_error(const ProgramRun& result, const std::vector<std::string>& parts, const fs::path& output) {
-  EXPECT_EQ(result.exit_code, kExitInputError) << result.err;
-  EXPECT_EQ(result.err.rfind("error: ", 0), 0u) << result.err;
-  EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
-  test::expect_contains(result.err, parts);
-  EXPECT_FALSE(fs::exists(output));
 }
 
 std::string string_attribute(const fs::path& file, const std::string& name) {

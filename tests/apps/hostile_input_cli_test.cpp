@@ -10,6 +10,7 @@
 
 #include "io/hdf5_test_support.hpp"
 #include "io/reader_test_support.hpp"
+#include "support/cli_checks.hpp"
 #include "support/program_run.hpp"
 
 namespace halfspace {
@@ -18,8 +19,6 @@ namespace {
 namespace fs = std::filesystem;
 using test::TempDir;
 
-constexpr int kExitInputError = 1;
-
 void expect_one_line_input_error(const std::vector<std::string>& arguments, const std::vector<std::string>& parts) {
   const TempDir dir;
   std::vector<std::string> all = arguments;
@@ -27,12 +26,7 @@ void expect_one_line_input_error(const std::vector<std::string>& arguments, cons
     all.emplace_back(extra);
   }
   all.push_back((dir / "out.h5").string());
-  const testing::ProgramRun result = testing::run_program(all, dir.path());
-  EXPECT_EQ(result.exit_code, kExitInputError) << result.err;
-  EXPECT_EQ(result.err.rfind("error: ", 0), 0u) << result.err;
-  EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
-  test::expect_contains(result.err, parts);
-  EXPECT_FALSE(fs::exists(dir / "out.h5"));
+  testing::expect_input_error(testing::run(all, dir), parts, dir / "out.h5");
 }
 
 TEST(HostileInputCliTest, DevZeroAsHeightMapOrConfigIsRefusedAtOnce) {

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "io/hdf5_test_support.hpp"
+#include "support/cli_checks.hpp"
 #include "support/program_run.hpp"
 
 namespace halfspace {
@@ -19,20 +20,15 @@ namespace {
 
 namespace fs = std::filesystem;
 using test::TempDir;
+using testing::expect_input_error;
+using testing::kExitInputError;
+using testing::kExitOk;
 using testing::ProgramRun;
 
-constexpr int kExitOk = 0;
-constexpr int kExitInputError = 1;
-
-using Options = std::vector<std::pair<std::string, std::string>>;
+using Options = testing::OptionPairs;
 
 ProgramRun run_solve(const Options& options, const TempDir& directory) {
-  std::vector<std::string> arguments{"solve"};
-  for (const auto& [flag, value] : options) {
-    arguments.push_back(flag);
-    if (!value.empty()) arguments.push_back(value);
-  }
-  return testing::run_program(arguments, directory.path());
+  return testing::run(testing::command_arguments("solve", options), directory);
 }
 
 // A small sphere problem without a material.
@@ -53,14 +49,6 @@ Options coating(const std::string& thickness = "2e-5", const std::string& layer_
 Options joined(Options a, const Options& b) {
   a.insert(a.end(), b.begin(), b.end());
   return a;
-}
-
-void expect_input_error(const ProgramRun& result, const std::string& expected, const fs::path& output) {
-  EXPECT_EQ(result.exit_code, kExitInputError) << result.err;
-  EXPECT_EQ(result.err.rfind("error: ", 0), 0U) << result.err;
-  EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
-  EXPECT_NE(result.err.find(expected), std::string::npos) << "expected '" << expected << "' in: " << result.err;
-  EXPECT_FALSE(fs::exists(output)) << output;
 }
 
 TEST(LayeredCliTest, CoatedSolveRecordsTheCoatingAndTheLayersModulus) {

@@ -17,6 +17,7 @@
 
 #include "halfspace/memory_estimate.hpp"
 #include "io/hdf5_test_support.hpp"
+#include "support/cli_checks.hpp"
 #include "support/program_run.hpp"
 
 namespace halfspace {
@@ -124,7 +125,7 @@ TEST(MemoryEstimateCliTest, EstimateBoundsTheMeasuredPeakWithinAFactorOfThree) {
     arguments.insert(arguments.end(), c.arguments.begin(), c.arguments.end());
     arguments.insert(arguments.end(), {"--E-star", "1e11", "--output", "out.h5", "--quiet"});
     const Measured measured = run_measured(arguments, dir.path());
-    ASSERT_EQ(measured.exit_code, 0) << c.name << ": " << testing::read_text(dir / "stderr.txt");
+    ASSERT_EQ(measured.exit_code, testing::kExitOk) << c.name << ": " << testing::read_text(dir / "stderr.txt");
     const double estimate = solve_memory_estimate(c.grid, c.settings, c.steps);
     std::printf("  %-50s peak %8.1f MiB, estimate %8.1f MiB (%.2fx)\n", c.name.c_str(), measured.peak_bytes / 1048576.0,
                 estimate / 1048576.0, estimate / measured.peak_bytes);

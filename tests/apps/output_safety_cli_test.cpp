@@ -30,6 +30,7 @@
 #include <vector>
 
 #include "io/hdf5_test_support.hpp"
+#include "support/cli_checks.hpp"
 #include "support/program_run.hpp"
 
 namespace halfspace {
@@ -37,10 +38,9 @@ namespace {
 
 namespace fs = std::filesystem;
 using test::TempDir;
+using testing::kExitInputError;
 using testing::read_text;
 using testing::run_program;
-
-constexpr int kExitInputError = 1;
 
 // A 16x16 text-matrix height map (a shallow bowl, m), given a .csv name.
 void write_map_csv(const fs::path& path) {
@@ -185,7 +185,7 @@ TEST(OutputSafetyCliTest, WisdomIsNotSavedOverAFifo) {
   const auto run = run_program({"solve", "--geometry", "sphere", "--radius", "1e-2", "--grid", "24x20", "--size",
                                 "1e-4", "--E-star", "1e11", "--force", "1", "--output", "out.h5", "--quiet"},
                                dir.path(), {{"HALFSPACE_FFTW_WISDOM", (dir / "wisdom").string()}});
-  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(run.exit_code, testing::kExitOk) << run.err;
   EXPECT_EQ(fs::symlink_status(dir / "wisdom").type(), fs::file_type::fifo);
   EXPECT_EQ(names_in(dir.path()), (std::vector<std::string>{"out.h5", "wisdom"}));
 }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "io/hdf5_test_support.hpp"
+#include "support/cli_checks.hpp"
 #include "support/program_run.hpp"
 
 namespace halfspace {
@@ -15,24 +16,15 @@ namespace {
 
 namespace fs = std::filesystem;
 using test::TempDir;
+using testing::run;
 
 using testing::ProgramRun;
-
-ProgramRun run(const std::vector<std::string>& arguments, const TempDir& dir) {
-  return testing::run_program(arguments, dir.path());
-}
-
-void expect_one_line_error(const ProgramRun& result, const std::string& expected) {
-  EXPECT_EQ(result.exit_code, 1) << result.err;
-  EXPECT_EQ(result.err.rfind("error: ", 0), 0U) << result.err;
-  EXPECT_NE(result.err.find(expected), std::string::npos) << "expected '" << expected << "' in: " << result.err;
-}
 
 TEST(PaperCliTest, WritesTheDataFilesAndTheSummary) {
   const TempDir dir;
   const fs::path out = dir / "paper";
   const ProgramRun result = run({"paper", "--test", "4", "--output-dir", out.string(), "--no-figures"}, dir);
-  EXPECT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_EQ(result.exit_code, testing::kExitOk) << result.err;
   EXPECT_NE(result.out.find("test 4: N =   7"), std::string::npos) << result.out;
   for (const char* name : {"test4.csv", "test4.h5", "summary.md"}) EXPECT_TRUE(fs::exists(out / name)) << name;
   EXPECT_FALSE(fs::exists(out / "test1.csv"));
@@ -45,7 +37,7 @@ TEST(PaperCliTest, DrawsTheFiguresWithThePlottingTool) {
   const TempDir dir;
   const ProgramRun result =
       run({"paper", "--test", "4", "--output-dir", dir.path().string(), "--point-load-kernel", "--quiet"}, dir);
-  EXPECT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_EQ(result.exit_code, testing::kExitOk) << result.err;
   for (const char* name : {"test4.png", "test4_zoom.png", "test4_variants.png"}) {
     EXPECT_TRUE(fs::exists(dir / name)) << name;
   }
@@ -53,10 +45,10 @@ TEST(PaperCliTest, DrawsTheFiguresWithThePlottingTool) {
 
 TEST(PaperCliTest, RejectsBadOptions) {
   const TempDir dir;
-  expect_one_line_error(run({"paper", "--test", "5", "--output-dir", dir.path().string()}, dir), "--test");
-  expect_one_line_error(run({"paper", "--test", "1"}, dir), "--output-dir is required");
-  expect_one_line_error(run({"paper", "--load", "-3", "--output-dir", dir.path().string(), "--no-figures"}, dir),
-                        "load = -3 N/m is invalid");
+  testing::expect_input_error(run({"paper", "--test", "5", "--output-dir", dir.path().string()}, dir), "--test");
+  testing::expect_input_error(run({"paper", "--test", "1"}, dir), "--output-dir is required");
+  testing::expect_input_error(run({"paper", "--load", "-3", "--output-dir", dir.path().string(), "--no-figures"}, dir),
+                              "load = -3 N/m is invalid");
 }
 
 TEST(PaperCliTest, SolveRunsTheDenseSolversByName) {
@@ -67,7 +59,7 @@ TEST(PaperCliTest, SolveRunsTheDenseSolversByName) {
         run({"solve", "--geometry", "cylinder", "--radius", "0.01", "--grid", "129", "--size", "8e-4", "--E-star",
              "1e11", "--force", "1e5", "--solver", name, "--output", output.string(), "--quiet"},
             dir);
-    EXPECT_EQ(result.exit_code, 0) << name << ": " << result.err;
+    EXPECT_EQ(result.exit_code, testing::kExitOk) << name << ": " << result.err;
     const test::H5 file = test::open_file(output);
     EXPECT_EQ(test::read_string_attribute(file.get(), "solver"), name);
     EXPECT_EQ(test::read_int64_attribute(file.get(), "converged"), 1) << name;
@@ -81,7 +73,7 @@ TEST(PaperCliTest, SolveRefusesADenseSolverOnALargeGrid) {
       run({"solve", "--geometry", "sphere", "--radius", "0.01", "--grid", "128x128", "--size", "1e-3", "--E-star",
            "1e11", "--force", "1", "--solver", "lemke", "--output", output.string()},
           dir);
-  expect_one_line_error(result, "grid 128x128 has 16384 cells");
+  testing::expect_input_error(result, "grid 128x128 has 16384 cells");
   EXPECT_NE(result.err.find("solver pk-multilevel"), std::string::npos) << result.err;
   EXPECT_FALSE(fs::exists(output));
 }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "io/hdf5_test_support.hpp"
+#include "support/cli_checks.hpp"
 #include "support/program_run.hpp"
 
 namespace halfspace {
@@ -40,7 +41,7 @@ void solve(const std::vector<std::string>& arguments, const TempDir& dir) {
   std::vector<std::string> all{"solve", "--E-star", "1e11", "--quiet"};
   all.insert(all.end(), arguments.begin(), arguments.end());
   const ProgramRun run = testing::run_program(all, dir.path());
-  ASSERT_EQ(run.exit_code, 0) << run.err;
+  ASSERT_EQ(run.exit_code, testing::kExitOk) << run.err;
 }
 
 TEST(PlotScriptTest, DrawsMapsAndProfilesOfResults) {

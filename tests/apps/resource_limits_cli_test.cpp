@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "io/hdf5_test_support.hpp"
+#include "support/cli_checks.hpp"
 #include "support/program_run.hpp"
 
 namespace halfspace {
@@ -25,11 +26,10 @@ namespace {
 
 namespace fs = std::filesystem;
 using test::TempDir;
+using testing::kExitInputError;
+using testing::kExitOk;
+using testing::kExitPlotFailed;
 using testing::ProgramRun;
-
-constexpr int kExitOk = 0;
-constexpr int kExitInputError = 1;
-constexpr int kExitPlotFailed = 3;
 
 using Environment = std::vector<std::pair<std::string, std::string>>;
 
@@ -59,19 +59,6 @@ std::vector<std::string> sphere(const std::vector<std::pair<std::string, std::st
   return arguments;
 }
 
-// Exit 1, nothing on stdout, one "error: " line holding every part of
-// `expected`, and no output file.
-void expect_refused(const ProgramRun& run, const std::vector<std::string>& expected, const fs::path& output) {
-  EXPECT_EQ(run.exit_code, kExitInputError) << run.err;
-  EXPECT_EQ(run.out, "");
-  EXPECT_EQ(run.err.rfind("error: ", 0), 0U) << run.err;
-  EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
-  for (const std::string& part : expected) {
-    EXPECT_NE(run.err.find(part), std::string::npos) << "expected '" << part << "' in: " << run.err;
-  }
-  EXPECT_FALSE(fs::exists(output)) << output;
-}
-
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -81,14 +68,15 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 TEST(ResourceLimitsCliTest, GridWhoseCellCountOverflowsIsRefused) {
   const TempDir dir;
   const std::string grid = "4294967296x4294967296";
-  expect_refused(testing::run_program(sphere({{"--grid", grid}}), dir.path()),
-                 {"--grid " + grid + " is invalid", "cells is more than the"}, dir / "o.h5");
-  expect_refused(testing::run_program(
-                     {"generate", "--kind", "flat", "--grid", grid, "--size", "5e-4", "--output", "g.h5"}, dir.path()),
-                 {"--grid " + grid + " is invalid", "cells is more than the"}, dir / "g.h5");
+  testing::expect_input_error(testing::run_program(sphere({{"--grid", grid}}), dir.path()),
+                              {"--grid " + grid + " is invalid", "cells is more than the"}, dir / "o.h5");
+  testing::expect_input_error(
+      testing::run_program({"generate", "--kind", "flat", "--grid", grid, "--size", "5e-4", "--output", "g.h5"},
+                           dir.path()),
+      {"--grid " + grid + " is invalid", "cells is more than the"}, dir / "g.h5");
   // One axis alone beyond the limit.
-  expect_refused(testing::run_program(sphere({{"--grid", "18446744073709551615"}}), dir.path()),
-                 {"--grid 18446744073709551615 is invalid"}, dir / "o.h5");
+  testing::expect_input_error(testing::run_program(sphere({{"--grid", "18446744073709551615"}}), dir.path()),
+                              {"--grid 18446744073709551615 is invalid"}, dir / "o.h5");
 }
 
 // Ended in "error: std::bad_alloc" (2D) or sat in FFT planning at 8 GB (1D)
@@ -96,38 +84,42 @@ TEST(ResourceLimitsCliTest, GridWhoseCellCountOverflowsIsRefused) {
 TEST(ResourceLimitsCliTest, GridBeyondTheMachinesMemoryIsRefusedBeforeAllocating) {
   const TempDir dir;
   const auto start = std::chrono::steady_clock::now();
-  expect_refused(testing::run_program(sphere({{"--grid", "1000000x1000000"}}), dir.path()),
-                 {"--grid 1000000x1000000: the solve (pk-multilevel, free boundary, 1000000000000 cells) needs about",
-                  "TiB of memory at its peak, but", "is available (", "--max-memory"},
-                 dir / "o.h5");
-  expect_refused(testing::run_program(sphere({{"--grid", "1000000000"}, {"--size", "1"}}), dir.path()),
-                 {"--grid 1000000000: the solve", "GiB of memory at its peak, but"}, dir / "o.h5");
+  testing::expect_input_error(
+      testing::run_program(sphere({{"--grid", "1000000x1000000"}}), dir.path()),
+      {"--grid 1000000x1000000: the solve (pk-multilevel, free boundary, 1000000000000 cells) needs about",
+       "TiB of memory at its peak, but", "is available (", "--max-memory"},
+      dir / "o.h5");
+  testing::expect_input_error(testing::run_program(sphere({{"--grid", "1000000000"}, {"--size", "1"}}), dir.path()),
+                              {"--grid 1000000000: the solve", "GiB of memory at its peak, but"}, dir / "o.h5");
   // The self-affine generator spent minutes counting Fourier modes first.
-  expect_refused(testing::run_program({"generate", "--kind", "self-affine", "--grid", "1000000x1000000", "--size",
-                                       "1e-3", "--rms-height", "1e-7", "--output", "g.h5"},
-                                      dir.path()),
-                 {"--grid 1000000x1000000: generating 1000000000000 cells needs about", "TiB"}, dir / "g.h5");
+  testing::expect_input_error(testing::run_program({"generate", "--kind", "self-affine", "--grid", "1000000x1000000",
+                                                    "--size", "1e-3", "--rms-height", "1e-7", "--output", "g.h5"},
+                                                   dir.path()),
+                              {"--grid 1000000x1000000: generating 1000000000000 cells needs about", "TiB"},
+                              dir / "g.h5");
   EXPECT_LT(seconds_since(start), 30.0);
 }
 
 TEST(ResourceLimitsCliTest, MaxMemoryLowersTheLimit) {
   const TempDir dir;
   // 512x512 free: about 60 MiB, more than 16M allows.
-  expect_refused(testing::run_program(sphere({{"--grid", "512x512"}, {"--max-memory", "16M"}}), dir.path()),
-                 {"--grid 512x512: the solve (pk-multilevel, free boundary, 262144 cells) needs about",
-                  "more than the 16 MiB that --max-memory 16M allows"},
-                 dir / "o.h5");
+  testing::expect_input_error(
+      testing::run_program(sphere({{"--grid", "512x512"}, {"--max-memory", "16M"}}), dir.path()),
+      {"--grid 512x512: the solve (pk-multilevel, free boundary, 262144 cells) needs about",
+       "more than the 16 MiB that --max-memory 16M allows"},
+      dir / "o.h5");
   // The same key in a config file, as bytes.
   std::ofstream(dir / "run.toml") << "max-memory = 16777216\n";
-  expect_refused(testing::run_program(sphere({{"--grid", "512x512"}, {"--config", "run.toml"}}), dir.path()),
-                 {"that max-memory = 16777216 in run.toml allows"}, dir / "o.h5");
-  expect_refused(testing::run_program({"generate", "--kind", "flat", "--grid", "1024x1024", "--size", "1e-3",
-                                       "--max-memory", "8M", "--output", "g.h5"},
-                                      dir.path()),
-                 {"more than the 8 MiB that --max-memory 8M allows"}, dir / "g.h5");
+  testing::expect_input_error(
+      testing::run_program(sphere({{"--grid", "512x512"}, {"--config", "run.toml"}}), dir.path()),
+      {"that max-memory = 16777216 in run.toml allows"}, dir / "o.h5");
+  testing::expect_input_error(testing::run_program({"generate", "--kind", "flat", "--grid", "1024x1024", "--size",
+                                                    "1e-3", "--max-memory", "8M", "--output", "g.h5"},
+                                                   dir.path()),
+                              {"more than the 8 MiB that --max-memory 8M allows"}, dir / "g.h5");
   for (const std::string size : {"abc", "0", "-5G", "12X", "1e400"}) {
-    expect_refused(testing::run_program(sphere({{"--max-memory", size}}), dir.path()),
-                   {"--max-memory " + size + " is invalid"}, dir / "o.h5");
+    testing::expect_input_error(testing::run_program(sphere({{"--max-memory", size}}), dir.path()),
+                                {"--max-memory " + size + " is invalid"}, dir / "o.h5");
   }
   // Enough: solved.
   const ProgramRun run = testing::run_program(sphere({{"--max-memory", "2G"}, {"--quiet", kFlag}}), dir.path());
@@ -140,10 +132,11 @@ TEST(ResourceLimitsCliTest, OutOfMemoryNamesWhatWasBeingDone) {
   const TempDir dir;
   const ProgramRun run =
       testing::run_program(sphere({{"--grid", "100000000x100000000"}, {"--max-memory", "1e9T"}}), dir.path());
-  expect_refused(run,
-                 {"error: out of memory while making the --geometry sphere surface on the 100000000x100000000 grid",
-                  "available now"},
-                 dir / "o.h5");
+  testing::expect_input_error(
+      run,
+      {"error: out of memory while making the --geometry sphere surface on the 100000000x100000000 grid",
+       "available now"},
+      dir / "o.h5");
   EXPECT_EQ(run.err.find("std::bad_alloc"), std::string::npos) << run.err;
 }
 
@@ -152,8 +145,9 @@ TEST(ResourceLimitsCliTest, OutOfMemoryNamesWhatWasBeingDone) {
 TEST(ResourceLimitsCliTest, ThreadCountsBeyondTheCapAreRefusedWithTheRange) {
   const TempDir dir;
   for (const std::string threads : {"10000", "99999999999", "0", "-1"}) {
-    expect_refused(testing::run_program(sphere({{"--threads", threads}}), dir.path()),
-                   {"--threads " + threads + " is invalid: allowed range is 1 to", "hardware threads"}, dir / "o.h5");
+    testing::expect_input_error(testing::run_program(sphere({{"--threads", threads}}), dir.path()),
+                                {"--threads " + threads + " is invalid: allowed range is 1 to", "hardware threads"},
+                                dir / "o.h5");
   }
 }
 
@@ -191,15 +185,16 @@ TEST(ResourceLimitsCliTest, ExtremeButFiniteValuesAreRefusedWithTheirRange) {
       {{{"--force", ""}, {"--approach", "1e-300"}}, {"--approach 1e-300 is invalid: allowed range is [1e-12, 1000] m"}},
   };
   for (const auto& [changes, expected] : cases) {
-    expect_refused(testing::run_program(sphere(changes), dir.path()), expected, dir / "o.h5");
+    testing::expect_input_error(testing::run_program(sphere(changes), dir.path()), expected, dir / "o.h5");
   }
-  expect_refused(testing::run_program({"generate", "--kind", "sphere", "--radius", "1e300", "--grid", "8", "--size",
-                                       "1e-3", "--output", "g.h5"},
-                                      dir.path()),
-                 {"--radius 1e300 is invalid: allowed range is [1e-12, 1000] m"}, dir / "g.h5");
-  expect_refused(testing::run_program(
-                     {"generate", "--kind", "flat", "--grid", "8", "--size", "1e300", "--output", "g.h5"}, dir.path()),
-                 {"--size 1e300 is invalid"}, dir / "g.h5");
+  testing::expect_input_error(testing::run_program({"generate", "--kind", "sphere", "--radius", "1e300", "--grid", "8",
+                                                    "--size", "1e-3", "--output", "g.h5"},
+                                                   dir.path()),
+                              {"--radius 1e300 is invalid: allowed range is [1e-12, 1000] m"}, dir / "g.h5");
+  testing::expect_input_error(
+      testing::run_program({"generate", "--kind", "flat", "--grid", "8", "--size", "1e300", "--output", "g.h5"},
+                           dir.path()),
+      {"--size 1e300 is invalid"}, dir / "g.h5");
 }
 
 // A flat 16x16 height map, map.h5 in `dir`, for the solves below to read.
@@ -219,8 +214,8 @@ TEST(ResourceLimitsCliTest, HeightMapSpacingOutsideTheRangeIsRefused) {
                                       "1",     "--output",     "o.h5"};
   std::vector<std::string> tiny = base;
   tiny.insert(tiny.end(), {"--dx", "1e-20"});
-  expect_refused(testing::run_program(tiny, dir.path()), {"--dx 1e-20 is invalid: allowed range is [1e-12, 1000] m"},
-                 dir / "o.h5");
+  testing::expect_input_error(testing::run_program(tiny, dir.path()),
+                              {"--dx 1e-20 is invalid: allowed range is [1e-12, 1000] m"}, dir / "o.h5");
 }
 
 // "window i0 = 18446744073709551615, ... ends at column 0": the end column
@@ -233,10 +228,12 @@ TEST(ResourceLimitsCliTest, WindowPastTheLastColumnSaysWhere) {
         {"solve", "--height-map", "map.h5", "--E-star", "1e11", "--force", "1", "--window", window, "--output", "o.h5"},
         dir.path());
   };
-  expect_refused(solve_window("18446744073709551615,0,2,2"),
-                 {"it starts at column 18446744073709551615 but the 16x16 map", "has columns 0 to 15"}, dir / "o.h5");
-  expect_refused(solve_window("5,0,18446744073709551615,2"), {"it has 18446744073709551615 columns but"}, dir / "o.h5");
-  expect_refused(solve_window("0,4,2,13"), {"it ends at row 16 but"}, dir / "o.h5");
+  testing::expect_input_error(solve_window("18446744073709551615,0,2,2"),
+                              {"it starts at column 18446744073709551615 but the 16x16 map", "has columns 0 to 15"},
+                              dir / "o.h5");
+  testing::expect_input_error(solve_window("5,0,18446744073709551615,2"), {"it has 18446744073709551615 columns but"},
+                              dir / "o.h5");
+  testing::expect_input_error(solve_window("0,4,2,13"), {"it ends at row 16 but"}, dir / "o.h5");
 }
 
 // A plotting tool that never exits is stopped after HALFSPACE_PLOT_TIMEOUT
@@ -259,7 +256,7 @@ TEST(ResourceLimitsCliTest, PlottingToolThatNeverExitsIsStopped) {
 
   const ProgramRun bad =
       testing::run_program(sphere({{"--plot", kFlag}}), dir.path(), {{"HALFSPACE_PLOT_TIMEOUT", "soon"}});
-  expect_refused(bad, {"--plot: HALFSPACE_PLOT_TIMEOUT=soon is invalid"}, dir / "unwritten.h5");
+  testing::expect_input_error(bad, {"--plot: HALFSPACE_PLOT_TIMEOUT=soon is invalid"}, dir / "unwritten.h5");
 }
 
 // Removes an environment variable for its lifetime (the programs a test

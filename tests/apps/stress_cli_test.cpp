@@ -11,6 +11,7 @@
 #include "halfspace/io/result_pressure_reader.hpp"
 #include "halfspace/stress/stress_volume.hpp"
 #include "io/hdf5_test_support.hpp"
+#include "support/cli_checks.hpp"
 #include "support/program_run.hpp"
 
 namespace halfspace {
@@ -18,11 +19,11 @@ namespace {
 
 namespace fs = std::filesystem;
 using test::TempDir;
+using testing::expect_input_error;
+using testing::kExitInputError;
+using testing::kExitOk;
 using testing::ProgramRun;
 using testing::run_program;
-
-constexpr int kExitOk = 0;
-constexpr int kExitInputError = 1;
 
 // A small free Hertz solve to take the stresses of.
 fs::path solved_sphere(const TempDir& dir) {
@@ -32,14 +33,6 @@ fs::path solved_sphere(const TempDir& dir) {
                   dir.path());
   EXPECT_EQ(run.exit_code, kExitOk) << run.err;
   return dir / "result.h5";
-}
-
-void expect_input_error(const ProgramRun& run, const std::string& expected) {
-  EXPECT_EQ(run.exit_code, kExitInputError) << run.err;
-  EXPECT_EQ(run.out, "");
-  EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
-  EXPECT_EQ(run.err.rfind("error: ", 0), 0u) << run.err;
-  EXPECT_NE(run.err.find(expected), std::string::npos) << run.err;
 }
 
 TEST(StressCliTest, WritesTheStressFieldOfAResult) {

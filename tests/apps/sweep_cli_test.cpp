@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "io/hdf5_test_support.hpp"
+#include "support/cli_checks.hpp"
 #include "support/program_run.hpp"
 
 namespace halfspace {
@@ -22,13 +23,12 @@ namespace {
 
 namespace fs = std::filesystem;
 using test::TempDir;
+using testing::kExitInputError;
+using testing::kExitNotConverged;
+using testing::kExitOk;
+using testing::kExitPlotFailed;
 using testing::ProgramRun;
 using testing::run_program;
-
-constexpr int kExitOk = 0;
-constexpr int kExitInputError = 1;
-constexpr int kExitNotConverged = 2;
-constexpr int kExitPlotFailed = 3;
 
 // A periodic 2D wave: two contact spots per period, converges in ~20
 // iterations per step.
