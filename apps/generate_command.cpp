@@ -1,13 +1,13 @@
 // The generate command: options -> surface spec -> heights -> height-map file.
-// Options are read as text and parsed strictly (value_parsing.hpp), so the
-// messages match those of `solve`.
+// Options come from a table (option_table.hpp) as those of `solve` do: flags,
+// config keys and value types from one list, so the messages match.
 #include "generate_command.hpp"
 
 #include <fmt/format.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
-#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -24,39 +24,70 @@
 #include "halfspace/surface/statistics.hpp"
 #include "halfspace/version.hpp"
 #include "memory_check.hpp"
+#include "option_table.hpp"
 #include "physical_ranges.hpp"
-#include "value_parsing.hpp"
 
 namespace halfspace::app {
 namespace {
 
-// Every option but --quiet, as written; absent when not given.
-using GivenOptions = std::map<std::string, std::string, std::less<>>;
-
-struct OptionHelp {
-  const char* key;
-  const char* value_name;
-  const char* help;
+// Everything `halfspace generate` accepts; an empty optional was not given.
+struct GenerateOptions : GivenOptions {
+  std::optional<std::string> kind;
+  std::optional<std::string> grid;
+  std::optional<std::string> size;
+  std::optional<double> hurst;
+  std::optional<double> cutoff_short;
+  std::optional<double> rolloff;
+  std::optional<double> cutoff_long;
+  std::optional<double> rms_height;
+  std::optional<double> rms_slope;
+  std::optional<long long> seed;
+  std::optional<double> radius;
+  std::optional<double> wavelength;
+  std::optional<double> amplitude;
+  std::optional<std::string> output;
+  std::optional<std::string> max_memory;
+  bool quiet = false;
 };
 
-constexpr OptionHelp kOptions[] = {
-    {"kind", "KIND", "self-affine, sphere, cylinder, wavy or flat (required)"},
-    {"grid", "N|NXxNY", "cells: N (1D profile) or NXxNY (2D map), at least 2 per axis (required)"},
-    {"size", "L|LXxLY", "domain size (m); spacing = L / N (required)"},
-    {"hurst", "H", "self-affine: Hurst exponent in (0, 1] [0.8]"},
-    {"cutoff-short", "M", "self-affine: shortest wavelength (m) [2 max(dx, dy)]"},
-    {"rolloff", "M", "self-affine: the power law holds below this wavelength, flat above (m) [cutoff-long]"},
-    {"cutoff-long", "M", "self-affine: longest wavelength (m) [the domain's longer side]"},
-    {"rms-height", "M", "self-affine: rms height about the mean (m); exactly one of rms-height, rms-slope"},
-    {"rms-slope", "X", "self-affine: rms of the gradient magnitude, sqrt(<|grad h|^2>) (spectral)"},
-    {"seed", "N", "self-affine: random seed, 0 to 2^63-1 [0]; same seed, same surface"},
-    {"radius", "M", "sphere, cylinder: radius (m)"},
-    {"wavelength", "M", "wavy: wavelength (m)"},
-    {"amplitude", "M", "wavy: amplitude A (m), h = -A (1 - cos ...)"},
-    {"output", "FILE", "the height-map file (HDF5), required; replaced if it exists"},
-    {"max-memory", "SIZE",
-     "refuse to start when the estimated peak memory exceeds SIZE: bytes, or K, M, G, T (powers of 1024), e.g. "
-     "512M [the memory available]"},
+using GenerateOption = OptionSpec<GenerateOptions>;
+using Kind = OptionKind;
+
+constexpr std::string_view kSurface = "Surface";
+constexpr std::string_view kSelfAffine = "Self-affine surface (--kind self-affine)";
+constexpr std::string_view kShape = "Built-in shapes (--kind sphere, cylinder, wavy)";
+constexpr std::string_view kOutput = "Output";
+
+const std::array kOptions{
+    GenerateOption{"kind", &GenerateOptions::kind, Kind::text, kSurface, "KIND",
+                   "self-affine, sphere, cylinder, wavy or flat (required)"},
+    GenerateOption{"grid", &GenerateOptions::grid, Kind::dimensions, kSurface, "N|NXxNY",
+                   "cells: N (1D profile) or NXxNY (2D map), at least 2 per axis (required)"},
+    GenerateOption{"size", &GenerateOptions::size, Kind::dimensions, kSurface, "L|LXxLY",
+                   "domain size (m); spacing = L / N (required)"},
+    GenerateOption{"hurst", &GenerateOptions::hurst, Kind::number, kSelfAffine, "H", "Hurst exponent in (0, 1] [0.8]"},
+    GenerateOption{"cutoff-short", &GenerateOptions::cutoff_short, Kind::number, kSelfAffine, "M",
+                   "shortest wavelength (m) [2 max(dx, dy)]"},
+    GenerateOption{"rolloff", &GenerateOptions::rolloff, Kind::number, kSelfAffine, "M",
+                   "the power law holds below this wavelength, flat above (m) [cutoff-long]"},
+    GenerateOption{"cutoff-long", &GenerateOptions::cutoff_long, Kind::number, kSelfAffine, "M",
+                   "longest wavelength (m) [the domain's longer side]"},
+    GenerateOption{"rms-height", &GenerateOptions::rms_height, Kind::number, kSelfAffine, "M",
+                   "rms height about the mean (m); exactly one of rms-height, rms-slope"},
+    GenerateOption{"rms-slope", &GenerateOptions::rms_slope, Kind::number, kSelfAffine, "X",
+                   "rms of the gradient magnitude, sqrt(<|grad h|^2>) (spectral)"},
+    GenerateOption{"seed", &GenerateOptions::seed, Kind::integer, kSelfAffine, "N",
+                   "random seed, 0 to 2^63-1 [0]; same seed, same surface"},
+    GenerateOption{"radius", &GenerateOptions::radius, Kind::number, kShape, "M", "sphere, cylinder: radius (m)"},
+    GenerateOption{"wavelength", &GenerateOptions::wavelength, Kind::number, kShape, "M", "wavy: wavelength (m)"},
+    GenerateOption{"amplitude", &GenerateOptions::amplitude, Kind::number, kShape, "M",
+                   "wavy: amplitude A (m), h = -A (1 - cos ...)"},
+    GenerateOption{"output", &GenerateOptions::output, Kind::path, kOutput, "FILE",
+                   "the height-map file (HDF5), required; replaced if it exists"},
+    GenerateOption{"max-memory", &GenerateOptions::max_memory, Kind::memory, kOutput, "SIZE",
+                   "refuse to start when the estimated peak memory exceeds SIZE: bytes, or K, M, G, T (powers of "
+                   "1024), e.g. 512M [the memory available]"},
+    GenerateOption{"quiet", &GenerateOptions::quiet, Kind::flag, kOutput, "", "print nothing unless there is an error"},
 };
 
 constexpr const char* kSelfAffineKeys[] = {"hurst",      "cutoff-short", "rolloff", "cutoff-long",
@@ -68,73 +99,58 @@ struct Generated {
   io::HeightMapMetadata metadata;
 };
 
-std::string describe(const GivenOptions& given, std::string_view key) {
-  return fmt::format("--{} {}", key, given.find(key)->second);
+// A positive length within the program's range of lengths, if given.
+std::optional<double> length(const GenerateOptions& o, std::string_view key, const std::optional<double>& value) {
+  if (!value) return std::nullopt;
+  if (!(*value > 0.0)) throw InputError(fmt::format("{} is invalid: must be positive (m)", o.describe(key)));
+  return require_in_range(o.describe(key), *value, kMinLength, kMaxLength, "m");
 }
 
-std::optional<double> number(const GivenOptions& given, std::string_view key) {
-  const auto found = given.find(key);
-  if (found == given.end()) return std::nullopt;
-  return parse_number(found->second, describe(given, key));
+// A length option a built-in shape needs.
+double required_length(const GenerateOptions& o, std::string_view key, const std::optional<double>& value) {
+  if (!value) throw InputError(fmt::format("{} needs {} (m)", o.describe("kind"), o.name(key)));
+  return *length(o, key, value);
 }
 
-// A length option of a built-in shape, within the program's range of lengths.
-double length(const GivenOptions& given, std::string_view key) {
-  const std::optional<double> value = number(given, key);
-  if (!value) throw InputError(fmt::format("--kind {} needs --{} (m)", given.find("kind")->second, key));
-  if (!(*value > 0.0)) throw InputError(fmt::format("{} is invalid: must be positive (m)", describe(given, key)));
-  return require_in_range(describe(given, key), *value, kMinLength, kMaxLength, "m");
-}
-
-void reject(const GivenOptions& given, std::initializer_list<const char*> keys, std::string_view reason) {
+void reject(const GenerateOptions& o, std::initializer_list<const char*> keys, std::string_view reason) {
   for (const char* key : keys) {
-    if (given.contains(key)) throw InputError(fmt::format("--{} {}", key, reason));
+    if (o.given(key)) throw InputError(fmt::format("{} {}", o.name(key), reason));
   }
 }
 
 // The grid, once its generation is known to fit in memory.
-Grid grid_from(const GivenOptions& given, Boundary boundary) {
-  if (!given.contains("grid")) throw InputError("no grid given: pass --grid N (1D) or NXxNY (2D)");
-  if (!given.contains("size")) throw InputError("no domain size given: pass --size L or LXxLY (m)");
-  Grid grid = grid_from_options(given.find("grid")->second, describe(given, "grid"), given.find("size")->second,
-                                describe(given, "size"), boundary);
-  const auto max_memory = given.find("max-memory");
+Grid grid_from(const GenerateOptions& o, Boundary boundary) {
+  if (!o.grid) throw InputError("no grid given: pass --grid N (1D) or NXxNY (2D)");
+  if (!o.size) throw InputError("no domain size given: pass --size L or LXxLY (m)");
+  Grid grid = grid_from_options(*o.grid, o.describe("grid"), *o.size, o.describe("size"), boundary);
   const std::optional<MemoryLimit> limit =
-      memory_limit(max_memory == given.end() ? std::nullopt : std::optional<std::string>(max_memory->second),
-                   max_memory == given.end() ? std::string("--max-memory") : describe(given, "max-memory"));
-  require_memory(fmt::format("{}: generating {} cells", describe(given, "grid"), grid.size()),
+      memory_limit(o.max_memory, o.max_memory ? o.describe("max-memory") : std::string("--max-memory"));
+  require_memory(fmt::format("{}: generating {} cells", o.describe("grid"), grid.size()),
                  generate_memory_estimate(grid), limit);
   return grid;
 }
 
-Generated self_affine(const GivenOptions& given) {
-  reject(given, {"radius", "wavelength", "amplitude"}, "does not apply to --kind self-affine");
+Generated self_affine(const GenerateOptions& o) {
+  reject(o, {"radius", "wavelength", "amplitude"}, "does not apply to --kind self-affine");
   surface::SelfAffineSpec spec;
-  spec.hurst = number(given, "hurst").value_or(spec.hurst);
-  spec.short_cutoff = number(given, "cutoff-short").value_or(0.0);
-  spec.rolloff = number(given, "rolloff").value_or(0.0);
-  spec.long_cutoff = number(given, "cutoff-long").value_or(0.0);
-  for (const char* key : {"cutoff-short", "rolloff", "cutoff-long", "rms-height"}) {
-    if (given.contains(key) && !(*number(given, key) > 0.0)) {
-      throw InputError(fmt::format("{} is invalid: must be positive (m)", describe(given, key)));
-    }
-    if (given.contains(key)) require_in_range(describe(given, key), *number(given, key), kMinLength, kMaxLength, "m");
-  }
-  spec.rms_height = number(given, "rms-height");
-  spec.rms_slope = number(given, "rms-slope");
+  spec.hurst = o.hurst.value_or(spec.hurst);
+  spec.short_cutoff = length(o, "cutoff-short", o.cutoff_short).value_or(0.0);
+  spec.rolloff = length(o, "rolloff", o.rolloff).value_or(0.0);
+  spec.long_cutoff = length(o, "cutoff-long", o.cutoff_long).value_or(0.0);
+  spec.rms_height = length(o, "rms-height", o.rms_height);
+  spec.rms_slope = o.rms_slope;
   if (spec.rms_height && spec.rms_slope) {
     throw InputError("--rms-height and --rms-slope cannot be combined: give exactly one");
   }
   if (!spec.rms_height && !spec.rms_slope) {
     throw InputError("--kind self-affine needs --rms-height (m) or --rms-slope");
   }
-  if (const auto found = given.find("seed"); found != given.end()) {
-    const long long seed = parse_integer(found->second, describe(given, "seed"));
-    if (seed < 0) throw InputError(fmt::format("{} is invalid: the seed must be 0 or more", describe(given, "seed")));
-    spec.seed = static_cast<std::uint64_t>(seed);
+  if (o.seed) {
+    if (*o.seed < 0) throw InputError(fmt::format("{} is invalid: the seed must be 0 or more", o.describe("seed")));
+    spec.seed = static_cast<std::uint64_t>(*o.seed);
   }
 
-  Grid grid = grid_from(given, Boundary::periodic);
+  Grid grid = grid_from(o, Boundary::periodic);
   const Activity activity(fmt::format("generating the self-affine surface on the {} grid", grid.shape_string()));
   const surface::SelfAffineSpec resolved = spec.resolved(grid);
   Eigen::ArrayXd heights = surface::make_self_affine_surface(grid, spec);
@@ -163,10 +179,10 @@ bool whole_periods(const Grid& grid, double wavelength) {
   return grid.dimension() == 1 ? x : x && whole(static_cast<double>(grid.ny()) * grid.dy());
 }
 
-Generated builtin(const GivenOptions& given, geometry::SurfaceShape shape) {
-  const std::string kind = given.find("kind")->second;
+Generated builtin(const GenerateOptions& o, geometry::SurfaceShape shape) {
+  const std::string& kind = *o.kind;
   for (const char* key : kSelfAffineKeys) {
-    if (given.contains(key)) throw InputError(fmt::format("--{} does not apply to --kind {}", key, kind));
+    if (o.given(key)) throw InputError(fmt::format("{} does not apply to --kind {}", o.name(key), kind));
   }
   geometry::SurfaceSpec spec;
   spec.shape = shape;
@@ -174,24 +190,24 @@ Generated builtin(const GivenOptions& given, geometry::SurfaceShape shape) {
   switch (shape) {
     case geometry::SurfaceShape::sphere:
     case geometry::SurfaceShape::cylinder:
-      reject(given, {"wavelength", "amplitude"}, fmt::format("does not apply to --kind {}", kind));
-      spec.radius = length(given, "radius");
+      reject(o, {"wavelength", "amplitude"}, fmt::format("does not apply to --kind {}", kind));
+      spec.radius = required_length(o, "radius", o.radius);
       source += fmt::format(" (radius = {} m)", spec.radius);
       break;
     case geometry::SurfaceShape::wavy:
-      reject(given, {"radius"}, "does not apply to --kind wavy");
-      spec.wavelength = length(given, "wavelength");
-      spec.amplitude = length(given, "amplitude");
+      reject(o, {"radius"}, "does not apply to --kind wavy");
+      spec.wavelength = required_length(o, "wavelength", o.wavelength);
+      spec.amplitude = required_length(o, "amplitude", o.amplitude);
       source += fmt::format(" (wavelength = {} m, amplitude = {} m)", spec.wavelength, spec.amplitude);
       break;
     case geometry::SurfaceShape::flat:
-      reject(given, {"radius", "wavelength", "amplitude"}, "does not apply to --kind flat");
+      reject(o, {"radius", "wavelength", "amplitude"}, "does not apply to --kind flat");
       break;
   }
   // Only a wavy surface with whole periods repeats with the domain.
-  Grid probe = grid_from(given, Boundary::free);
+  Grid probe = grid_from(o, Boundary::free);
   const bool periodic = shape == geometry::SurfaceShape::wavy && whole_periods(probe, spec.wavelength);
-  Grid grid = grid_from(given, periodic ? Boundary::periodic : Boundary::free);
+  Grid grid = grid_from(o, periodic ? Boundary::periodic : Boundary::free);
   const Activity activity(fmt::format("generating the {} surface on the {} grid", kind, grid.shape_string()));
   Eigen::ArrayXd heights = geometry::make_surface_heights(grid, spec);
   io::HeightMapMetadata metadata;
@@ -204,25 +220,23 @@ Generated builtin(const GivenOptions& given, geometry::SurfaceShape shape) {
   return {std::move(grid), std::move(heights), std::move(metadata)};
 }
 
-int run_generate(const GivenOptions& given, bool quiet, const std::vector<std::string>& argv) {
-  if (!given.contains("kind")) {
-    throw InputError("no surface kind given: pass --kind self-affine, sphere, cylinder, wavy or flat");
-  }
-  if (!given.contains("output")) throw InputError("no output file given: pass --output FILE.h5");
+int run_generate(const GenerateOptions& o) {
+  if (!o.kind) throw InputError("no surface kind given: pass --kind self-affine, sphere, cylinder, wavy or flat");
+  if (!o.output) throw InputError("no output file given: pass --output FILE.h5");
   // Refuse a device, FIFO or directory before generating, not after.
-  io::check_output_path(given.find("output")->second);
-  const std::string& kind = given.find("kind")->second;
+  io::check_output_path(*o.output);
+  const std::string& kind = *o.kind;
   std::optional<geometry::SurfaceShape> shape;
   if (kind != "self-affine") {
     try {
       shape = geometry::parse_surface_shape(kind);
     } catch (const InputError&) {
       throw InputError(fmt::format("{} is invalid: the kind must be self-affine, sphere, cylinder, wavy or flat",
-                                   describe(given, "kind")));
+                                   o.describe("kind")));
     }
   }
-  Generated surface = shape ? builtin(given, *shape) : self_affine(given);
-  surface.metadata.command_line = join_command_line(argv);
+  Generated surface = shape ? builtin(o, *shape) : self_affine(o);
+  surface.metadata.command_line = o.command_line;
 
   const std::span<const double> heights(surface.heights.data(), static_cast<std::size_t>(surface.heights.size()));
   std::optional<Activity> activity(std::in_place,
@@ -231,13 +245,13 @@ int run_generate(const GivenOptions& given, bool quiet, const std::vector<std::s
   activity.reset();
   surface.metadata.numbers.emplace_back("rms_height", statistics.rms_height);
   surface.metadata.numbers.emplace_back("rms_slope", statistics.rms_slope);
-  const std::string output = given.find("output")->second;
+  const std::string& output = *o.output;
   {
     const Activity activity(fmt::format("writing {}", output));
     io::write_height_map(output, surface.grid, heights, surface.metadata);
   }
 
-  if (!quiet) {
+  if (!o.quiet) {
     const Grid& grid = surface.grid;
     const auto row = [](std::string_view label, const std::string& value) {
       fmt::print("  {:<12} {}\n", label, value);
@@ -262,18 +276,15 @@ Command add_generate_command(CLI::App& program) {
   CLI::App* generate = program.add_subcommand(
       "generate", "Write a synthetic surface (self-affine random, sphere, cylinder, wavy, flat) as an HDF5 height map");
   generate->footer("The file reads back with `halfspace solve --height-map FILE`; see docs/usage.md.");
-  auto given = std::make_shared<GivenOptions>();
-  auto quiet = std::make_shared<bool>(false);
-  for (const OptionHelp& option : kOptions) {
-    const std::string key = option.key;
-    generate
-        ->add_option_function<std::string>(
-            fmt::format("--{}", key), [given, key](const std::string& value) { (*given)[key] = value; }, option.help)
-        ->type_name(option.value_name);
-  }
-  generate->add_flag("--quiet", *quiet, "print nothing unless there is an error");
-  return {generate,
-          [given, quiet](const std::vector<std::string>& argv) { return run_generate(*given, *quiet, argv); }};
+  add_config_option(*generate, "rms-slope = 0.1");
+  add_options(*generate, std::span<const GenerateOption>(kOptions));
+  return {generate, [generate](const std::vector<std::string>& argv) {
+            GenerateOptions options;
+            const std::vector<BoundOption> bound = bind_options(std::span<const GenerateOption>(kOptions), options);
+            read_command_line(*generate, argv, bound, options);
+            merge_config_file(bound, {}, "generate", options);
+            return run_generate(options);
+          }};
 }
 
 }  // namespace halfspace::app

@@ -5,11 +5,11 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,23 +19,46 @@
 #include "halfspace/paper/paper_output.hpp"
 #include "halfspace/paper/reproduction.hpp"
 #include "halfspace/threads.hpp"
+#include "option_table.hpp"
 #include "plot_tool.hpp"
-#include "value_parsing.hpp"
 
 namespace halfspace::app {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct PaperOptions {
-  std::optional<int> test;  // all four when not given
-  double load = paper::kDefaultLoad;
-  std::string output_dir;
+// Everything `halfspace paper` accepts; an empty optional was not given.
+struct PaperOptions : GivenOptions {
+  std::optional<long long> test;  // all four when not given
+  std::optional<double> load;     // paper::kDefaultLoad when not given
+  std::optional<std::string> output_dir;
   bool unscaled_qp = false;
   bool point_load_kernel = false;
   bool no_figures = false;
-  std::string plot_script;
+  std::optional<std::string> plot_script;
   bool quiet = false;
+};
+
+using PaperOption = OptionSpec<PaperOptions>;
+using Kind = OptionKind;
+
+constexpr std::string_view kRun = "Run";
+constexpr std::string_view kOutput = "Output";
+
+const std::array kOptions{
+    PaperOption{"test", &PaperOptions::test, Kind::integer, kRun, "N", "run only test N of Table 1 (1 to 4) [all]"},
+    PaperOption{"load", &PaperOptions::load, Kind::number, kRun, "W", "line load W (N/m per unit length) [1e5]"},
+    PaperOption{"unscaled-qp", &PaperOptions::unscaled_qp, Kind::flag, kRun, "",
+                "also solve LCPquad in SI units, without nondimensionalisation (columns p_lcpquad_si, "
+                "p_lcpquad_si_approach)"},
+    PaperOption{"point-load-kernel", &PaperOptions::point_load_kernel, Kind::flag, kRun, "",
+                "also solve with the paper's eq. (4) kernel by Lemke (column p_lemke_eq4)"},
+    PaperOption{"output-dir", &PaperOptions::output_dir, Kind::path, kOutput, "DIR",
+                "directory for the files; created if missing (required)"},
+    PaperOption{"no-figures", &PaperOptions::no_figures, Kind::flag, kOutput, "", "write the data files only"},
+    PaperOption{"plot-script", &PaperOptions::plot_script, Kind::path, kOutput, "FILE",
+                "the plotting tool [found automatically]"},
+    PaperOption{"quiet", &PaperOptions::quiet, Kind::flag, kOutput, "", "print nothing unless there is an error"},
 };
 
 void write_text(const fs::path& path, const std::string& text) {
@@ -46,8 +69,9 @@ void write_text(const fs::path& path, const std::string& text) {
 }
 
 int run_paper(const PaperOptions& options) {
+  if (!options.output_dir) throw InputError("--output-dir is required: the directory for the files");
   paper::ReproductionOptions reproduction;
-  reproduction.load = options.load;
+  reproduction.load = options.load.value_or(paper::kDefaultLoad);
   reproduction.unscaled_qp = options.unscaled_qp;
   reproduction.point_load_kernel = options.point_load_kernel;
   reproduction.validate();
@@ -55,13 +79,15 @@ int run_paper(const PaperOptions& options) {
   // a busy machine.
   set_threads(1);
   std::vector<int> numbers{1, 2, 3, 4};
-  if (options.test) numbers = {paper::table1_test(*options.test).number};
+  if (options.test) {
+    numbers = {in_context(options.name("test"), [&] { return paper::table1_test(*options.test).number; })};
+  }
   const std::optional<PlotTool> plot =
-      options.no_figures
-          ? std::nullopt
-          : std::optional<PlotTool>(find_plot_tool({"halfspace paper", "use --no-figures", options.plot_script}));
+      options.no_figures ? std::nullopt
+                         : std::optional<PlotTool>(find_plot_tool(
+                               {"halfspace paper", "use --no-figures", options.plot_script.value_or("")}));
 
-  const fs::path directory = options.output_dir;
+  const fs::path directory = *options.output_dir;
   std::error_code error;
   fs::create_directories(directory, error);
   if (error || !fs::is_directory(directory)) {
@@ -112,24 +138,15 @@ Command add_paper_command(CLI::App& program) {
       "paper", "Reproduce Table 1 of the seed paper (Lemke, LCPquad and Polonsky-Keer on four line contacts)");
   command->footer(
       "Files: testN.csv, testN.h5, summary.md and the figures testN.png, testN_zoom.png; see docs/paper.md.");
-  auto options = std::make_shared<PaperOptions>();
-  command->add_option("--test", options->test, "run only test N of Table 1 (1 to 4) [all]")
-      ->type_name("N")
-      ->check(CLI::Range(1, 4));
-  command->add_option("--load", options->load, "line load W (N/m per unit length) [1e5]")->type_name("W");
-  command->add_option("--output-dir", options->output_dir, "directory for the files; created if missing")
-      ->type_name("DIR")
-      ->required();
-  command->add_flag("--unscaled-qp", options->unscaled_qp,
-                    "also solve LCPquad in SI units, without nondimensionalisation (columns p_lcpquad_si, "
-                    "p_lcpquad_si_approach)");
-  command->add_flag("--point-load-kernel", options->point_load_kernel,
-                    "also solve with the paper's eq. (4) kernel by Lemke (column p_lemke_eq4)");
-  command->add_flag("--no-figures", options->no_figures, "write the data files only");
-  command->add_option("--plot-script", options->plot_script, "the plotting tool [found automatically]")
-      ->type_name("FILE");
-  command->add_flag("--quiet", options->quiet, "print nothing unless there is an error");
-  return {command, [options](const std::vector<std::string>& /*argv*/) { return run_paper(*options); }};
+  add_config_option(*command, "load = 2e5");
+  add_options(*command, std::span<const PaperOption>(kOptions));
+  return {command, [command](const std::vector<std::string>& argv) {
+            PaperOptions options;
+            const std::vector<BoundOption> bound = bind_options(std::span<const PaperOption>(kOptions), options);
+            read_command_line(*command, argv, bound, options);
+            merge_config_file(bound, {}, "paper", options);
+            return run_paper(options);
+          }};
 }
 
 }  // namespace halfspace::app

@@ -1,22 +1,22 @@
 // The options of `halfspace solve` as given, before validation: registered
 // with CLI11, read from the command line, and merged with a TOML config file
-// whose keys are the long flag names without the leading dashes.
+// whose keys are the long flag names without the leading dashes (through the
+// option table, option_table.hpp).
 #pragma once
 
 #include <CLI/CLI.hpp>
-#include <map>
 #include <optional>
-#include <set>
 #include <string>
-#include <string_view>
 #include <vector>
+
+#include "option_table.hpp"
 
 namespace halfspace::app {
 
 // Everything `halfspace solve` accepts. An empty optional was given neither on
 // the command line nor in the config file; defaults are applied later, in
 // make_solve_setup, so that "not given" stays distinguishable from "default".
-struct SolveOptions {
+struct SolveOptions : GivenOptions {
   // Surface: a height map file, or a built-in geometry.
   std::optional<std::string> height_map;
   std::optional<std::string> dataset;
@@ -76,19 +76,6 @@ struct SolveOptions {
   std::optional<std::string> output;
   bool quiet = false;
   bool plot = false;  // draw figures with the plotting tool after writing
-
-  // Provenance, recorded in the output file.
-  std::optional<std::string> config;                     // path of the TOML file, if any
-  std::string config_text;                               // its contents
-  std::string command_line;                              // argv joined and shell-quoted
-  std::set<std::string, std::less<>> from_config;        // keys whose value came from the file
-  std::map<std::string, std::string, std::less<>> text;  // every given value as written
-
-  // A given setting and its value as the user wrote it, for error messages:
-  // "--force -1" from the command line, "force = -1 in run.toml" from a file.
-  std::string describe(std::string_view key) const;
-  // The option by itself: "--force", or "force (in run.toml)".
-  std::string name(std::string_view key) const;
 };
 
 // Registers every option of `solve` (grouped as in --help) with CLI11.

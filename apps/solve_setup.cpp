@@ -58,18 +58,6 @@ std::string join_names(const std::vector<std::string>& names) {
   return fmt::format("{}", fmt::join(names, ", "));
 }
 
-// Re-throws a library InputError with the option it came from in front.
-template <class Function>
-auto in_context(const std::string& context, Function&& function) {
-  try {
-    return function();
-  } catch (const FileError&) {
-    throw;
-  } catch (const InputError& error) {
-    throw InputError(fmt::format("{}: {}", context, error.what()));
-  }
-}
-
 double require_positive(const SolveOptions& options, std::string_view key, double value, std::string_view unit) {
   if (!(std::isfinite(value) && value > 0.0)) {
     throw InputError(fmt::format("{} is invalid: must be positive ({})", options.describe(key), unit));

@@ -22,7 +22,7 @@ const std::array<PaperTest, 4>& table1() {
   return tests;
 }
 
-const PaperTest& table1_test(int number) {
+const PaperTest& table1_test(long long number) {
   if (number < 1 || number > 4) {
     throw InputError(fmt::format("test = {} is invalid: Table 1 has tests 1 to 4", number));
   }

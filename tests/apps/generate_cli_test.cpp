@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -186,6 +187,33 @@ TEST(GenerateCliTest, RejectsBadInputWithOneLineAndNoFile) {
     EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
     EXPECT_FALSE(fs::exists(dir / "out.h5"));
   }
+}
+
+// A config file gives the same options as flags (the same option table), a
+// flag overrides its key, and an unknown key is refused naming the command.
+TEST(GenerateCliTest, ConfigFileGivesTheOptionsAndFlagsOverrideIt) {
+  const TempDir dir;
+  ASSERT_EQ(run_program(self_affine("flags.h5", "7"), dir.path()).exit_code, kExitOk);
+  {
+    std::ofstream config(dir / "surface.toml");
+    config << "kind = \"self-affine\"\ngrid = \"64x48\"\nsize = \"6.4e-5x4.8e-5\"\nhurst = 0.7\n"
+              "cutoff-short = 4e-6\nrms-slope = 0.2\nseed = 3\noutput = \"config.h5\"\n";
+  }
+  const ProgramRun run = run_program({"generate", "--config", "surface.toml", "--seed", "7", "--quiet"}, dir.path());
+  ASSERT_EQ(run.exit_code, kExitOk) << run.err;
+  const test::H5 flags = test::open_file(dir / "flags.h5");
+  const test::H5 config = test::open_file(dir / "config.h5");
+  EXPECT_EQ(test::read_int64_attribute(config.get(), "seed"), 7);
+  // Same options, same generator: the same bits.
+  EXPECT_EQ(test::read_dataset<double>(config.get(), "/height", H5T_NATIVE_DOUBLE),
+            test::read_dataset<double>(flags.get(), "/height", H5T_NATIVE_DOUBLE));
+
+  {
+    std::ofstream config(dir / "bad.toml");
+    config << "kind = \"flat\"\nradius_ = 1\n";
+  }
+  testing::expect_input_error(run_program({"generate", "--config", "bad.toml"}, dir.path()),
+                              {"unknown key 'radius_'", "bad.toml", "'halfspace generate'"});
 }
 
 }  // namespace

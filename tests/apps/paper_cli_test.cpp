@@ -4,6 +4,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -49,6 +50,22 @@ TEST(PaperCliTest, RejectsBadOptions) {
   testing::expect_input_error(run({"paper", "--test", "1"}, dir), "--output-dir is required");
   testing::expect_input_error(run({"paper", "--load", "-3", "--output-dir", dir.path().string(), "--no-figures"}, dir),
                               "load = -3 N/m is invalid");
+}
+
+// The options from a config file, its relative output directory taken
+// relative to the file.
+TEST(PaperCliTest, ConfigFileGivesTheOptions) {
+  const TempDir dir;
+  fs::create_directories(dir / "runs");
+  {
+    std::ofstream config(dir / "runs" / "paper.toml");
+    config << "test = 4\noutput-dir = \"out\"\nno-figures = true\nquiet = true\n";
+  }
+  const ProgramRun result = run({"paper", "--config", (dir / "runs" / "paper.toml").string()}, dir);
+  EXPECT_EQ(result.exit_code, testing::kExitOk) << result.err;
+  EXPECT_EQ(result.out, "");
+  EXPECT_TRUE(fs::exists(dir / "runs" / "out" / "test4.csv"));
+  EXPECT_FALSE(fs::exists(dir / "runs" / "out" / "test1.csv"));
 }
 
 TEST(PaperCliTest, SolveRunsTheDenseSolversByName) {

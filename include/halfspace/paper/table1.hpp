@@ -31,7 +31,7 @@ struct PaperTest {
 // Tests 1-4 in order.
 const std::array<PaperTest, 4>& table1();
 // Test `number` (1..4); throws InputError naming the value otherwise.
-const PaperTest& table1_test(int number);
+const PaperTest& table1_test(long long number);
 
 // Hertz line contact under a load per length P' (Johnson 1985, ch. 4):
 // half-width b = sqrt(4 P' R / (pi E*)), peak p_H = 2 P' / (pi b).
