@@ -104,8 +104,7 @@ std::string toml_text(const toml::node& node) {
 }
 
 // Stores a config file value after checking its TOML type.
-void set_from_toml(const BoundOption& spec, const toml::node& node,
-                   const std::filesystem::path& file) {
+void set_from_toml(const BoundOption& spec, const toml::node& node, const std::filesystem::path& file) {
   const auto wrong_type = [&](std::string_view expected) {
     return InputError(fmt::format("key '{}' in config file {} must be {} (got {})", spec.key, file.string(), expected,
                                   toml_type_name(node)));
@@ -187,8 +186,8 @@ void set_from_toml(const BoundOption& spec, const toml::node& node,
 }
 
 // "E_star" -> "E-star": the spellings people try first for a key that exists.
-std::string unknown_key_message(std::string_view key, const std::filesystem::path& file, std::span<const BoundOption> options,
-                                std::string_view command_name) {
+std::string unknown_key_message(std::string_view key, const std::filesystem::path& file,
+                                std::span<const BoundOption> options, std::string_view command_name) {
   std::string message = fmt::format("unknown key '{}' in config file {}", key, file.string());
   if (key == "config") {
     return message + " (a config file cannot name another one)";

@@ -107,8 +107,8 @@ std::vector<BoundOption> bind_options(std::span<const OptionSpec<Options>> table
   std::vector<BoundOption> bound;
   bound.reserve(table.size());
   for (const OptionSpec<Options>& spec : table) {
-    bound.push_back({spec.key, spec.kind, std::visit([&](auto member) -> OptionSlot { return &(options.*member); },
-                                                     spec.field)});
+    bound.push_back(
+        {spec.key, spec.kind, std::visit([&](auto member) -> OptionSlot { return &(options.*member); }, spec.field)});
   }
   return bound;
 }

@@ -63,7 +63,7 @@ inline void expect_input_error(const ProgramRun& result, const std::vector<std::
 // The same for one expected part (a template, so that a braced list of
 // strings always means the overload above).
 template <class Text>
-  requires std::convertible_to<const Text&, std::string_view>
+requires std::convertible_to<const Text&, std::string_view>
 void expect_input_error(const ProgramRun& result, const Text& expected, const std::filesystem::path& output = {}) {
   expect_input_error(result, std::vector<std::string>{std::string(std::string_view(expected))}, output);
 }
