@@ -55,8 +55,8 @@ std::optional<std::string> unsupported_by_program(const SolveSetup& setup) {
 SolveResult solve_slab(const SolveSetup& setup, const mpi::SlabLayout& layout, const solvers::SolverOptions& settings) {
   try {
     // The initial gap max(h) - h of the whole surface, this process's rows.
-    const Eigen::Map<const Eigen::ArrayXd> local_heights(
-        setup.heights.data() + layout.first_row * layout.nx, static_cast<Eigen::Index>(layout.local_size()));
+    const Eigen::Map<const Eigen::ArrayXd> local_heights(setup.heights.data() + layout.first_row * layout.nx,
+                                                         static_cast<Eigen::Index>(layout.local_size()));
     const Eigen::ArrayXd gap = setup.heights.maxCoeff() - local_heights;
     const std::unique_ptr<solvers::ContactSolver> solver =
         mpi::make_distributed_solver(setup.grid, setup.e_star, settings, *world);
@@ -126,8 +126,8 @@ std::optional<int> run_solve_on_slabs(const SolveSetup& setup) {
     if (!root) return;
     activity.emplace(fmt::format("computing the statistics of the {} grid", setup.grid.shape_string()));
     io::ResultMetadata metadata = io::result_metadata(provenance(setup), setup.grid, heights);
-    metadata.contact_statistics = surface::contact_statistics(setup.grid, span_of(result.pressure),
-                                                              span_of(result.gap));
+    metadata.contact_statistics =
+        surface::contact_statistics(setup.grid, span_of(result.pressure), span_of(result.gap));
     activity.emplace(fmt::format("writing {}", setup.output.string()));
     io::write_result(setup.output, setup.grid, heights, result, metadata);
   });

@@ -55,9 +55,9 @@ bool distributable(const Grid& grid, const solvers::SolverOptions& options) {
 
 void check_distributable(const Grid& grid, const solvers::SolverOptions& options) {
   if (grid.dimension() != 2 || !grid.periodic()) {
-    throw SolverOptionError("grid", fmt::format("{} ({}D, {})", grid.shape_string(), grid.dimension(),
-                                                to_string(grid.boundary())),
-                            fmt::format("{}: only periodic 2D grids are distributed", kNotYet));
+    throw SolverOptionError(
+        "grid", fmt::format("{} ({}D, {})", grid.shape_string(), grid.dimension(), to_string(grid.boundary())),
+        fmt::format("{}: only periodic 2D grids are distributed", kNotYet));
   }
   if (options.adhesion) {
     throw SolverOptionError("adhesion", std::string(to_string(options.adhesion->law.type)),

@@ -32,9 +32,8 @@ LocalSizes local_sizes(std::size_t nx, std::size_t ny, MPI_Comm comm) {
   ptrdiff_t first_row = 0;
   ptrdiff_t columns = 0;
   ptrdiff_t first_column = 0;
-  const ptrdiff_t allocation =
-      fftw_mpi_local_size_2d_transposed(static_cast<ptrdiff_t>(ny), static_cast<ptrdiff_t>(nx / 2 + 1), comm, &rows,
-                                        &first_row, &columns, &first_column);
+  const ptrdiff_t allocation = fftw_mpi_local_size_2d_transposed(
+      static_cast<ptrdiff_t>(ny), static_cast<ptrdiff_t>(nx / 2 + 1), comm, &rows, &first_row, &columns, &first_column);
   LocalSizes sizes;
   sizes.layout = {nx,
                   ny,
@@ -57,8 +56,8 @@ SlabRealFft::SlabRealFft(std::size_t nx, std::size_t ny, const MpiCommunicator& 
   const LocalSizes sizes = local_sizes(nx, ny, comm.get());
   layout_ = sizes.layout;
   // At least one value, so that a process without rows still has a buffer.
-  buffer_ = reinterpret_cast<std::complex<double>*>(fftw_alloc_complex(static_cast<std::size_t>(
-      std::max<std::ptrdiff_t>(sizes.allocation, 1))));
+  buffer_ = reinterpret_cast<std::complex<double>*>(
+      fftw_alloc_complex(static_cast<std::size_t>(std::max<std::ptrdiff_t>(sizes.allocation, 1))));
   if (buffer_ == nullptr) throw std::bad_alloc();
   double* real = reinterpret_cast<double*>(buffer_);
   fftw_complex* complex = fft::detail::as_fftw(buffer_);

@@ -65,8 +65,8 @@ SlabFourierOperator::SlabFourierOperator(const Grid& grid, double e_star, std::s
   for (std::size_t r = 0; r < grid.ny(); ++r) {
     const double qy = kernels::dft_wavenumber(r, grid.ny(), grid.dy());
     for (std::size_t c = 0; c < grid.nx(); ++c) {
-      sum += kernels::periodic_kernel_spectrum(std::hypot(kernels::dft_wavenumber(c, grid.nx(), grid.dx()), qy),
-                                               e_star);
+      sum +=
+          kernels::periodic_kernel_spectrum(std::hypot(kernels::dft_wavenumber(c, grid.nx(), grid.dx()), qy), e_star);
     }
   }
   self_ = sum * inverse_n;
@@ -88,8 +88,8 @@ SlabFourierPreconditioner::SlabFourierPreconditioner(const Grid& grid, double e_
   // finds it).
   const SlabLayout& layout = transform_->layout();
   if (layout.first_column == 0 && layout.columns > 0) {
-    const double q_min = std::min(kernels::dft_wavenumber(1, grid.nx(), grid.dx()),
-                                  kernels::dft_wavenumber(1, grid.ny(), grid.dy()));
+    const double q_min =
+        std::min(kernels::dft_wavenumber(1, grid.nx(), grid.dx()), kernels::dft_wavenumber(1, grid.ny(), grid.dy()));
     symbol_[0] = q_min * scale;
   }
 }
