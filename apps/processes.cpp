@@ -22,8 +22,8 @@ int process_count() {
 bool prints_messages() {
   return mpi_world().rank() == 0;
 }
-void run_everywhere(const std::function<void()>& phase) {
-  mpi::run_agreed(mpi_world(), phase);
+SolveSetup make_setup_everywhere(const std::function<SolveSetup(const SurfaceSharing& share)>& make) {
+  return make_distributed_setup(make);
 }
 std::optional<int> run_distributed_solve(const SolveSetup& setup) {
   return run_solve_on_slabs(setup);
@@ -39,8 +39,8 @@ int process_count() {
 bool prints_messages() {
   return true;
 }
-void run_everywhere(const std::function<void()>& phase) {
-  phase();
+SolveSetup make_setup_everywhere(const std::function<SolveSetup(const SurfaceSharing& share)>& make) {
+  return make(make_whole_surface);
 }
 std::optional<int> run_distributed_solve(const SolveSetup& /*setup*/) {
   return std::nullopt;

@@ -27,10 +27,14 @@ int process_count();
 // or the first of the MPI processes.
 bool prints_messages();
 
-// Runs `phase` on every process; if it throws on any, it throws on all, the
-// error of the first process that failed (one message, one exit code, no
-// process left waiting). The serial build just runs it.
-void run_everywhere(const std::function<void()>& phase);
+// The setup of a solve on every process: make(share) checks the options and
+// makes the surface through `share` (make_solve_setup). In an MPI run every
+// process checks the options, the first reads or builds the surface and
+// hands the others their rows; if anything fails on any process, it throws
+// on all, the error of the first process that failed (one message, one exit
+// code, no process left waiting). The serial build calls
+// make(make_whole_surface).
+SolveSetup make_setup_everywhere(const std::function<SolveSetup(const SurfaceSharing& share)>& make);
 
 // Runs the single solve of `setup` distributed over the MPI processes and
 // returns the exit code; nullopt if it is to be solved by this process

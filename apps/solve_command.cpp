@@ -101,17 +101,14 @@ Command add_solve_command(CLI::App& program) {
   solve->footer("Options can also come from --config FILE.toml; see docs/usage.md.");
   add_solve_options(*solve);
   return {solve, [solve](const std::vector<std::string>& argv) {
-            // Every process of an MPI run reads the same options and surface,
-            // and fails alike if any one does.
-            std::optional<SolveSetup> setup;
-            run_everywhere([&] {
+            const SolveSetup setup = make_setup_everywhere([&](const SurfaceSharing& share) {
               SolveOptions options = solve_options_from_command_line(*solve, argv);
               std::optional<Activity> activity(std::in_place, "reading the options");
               merge_config_file(options);
               activity.emplace("checking the options and making the surface");
-              setup.emplace(make_solve_setup(options));
+              return make_solve_setup(options, share);
             });
-            return run_solve(*setup);
+            return run_solve(setup);
           }};
 }
 

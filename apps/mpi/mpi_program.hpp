@@ -3,6 +3,7 @@
 // solve command.
 #pragma once
 
+#include <functional>
 #include <optional>
 
 #include "../solve_setup.hpp"
@@ -17,6 +18,9 @@ void stop_mpi();
 
 // MPI_COMM_WORLD; valid between start_mpi and stop_mpi.
 const mpi::MpiCommunicator& mpi_world();
+
+// processes.hpp's make_setup_everywhere.
+SolveSetup make_distributed_setup(const std::function<SolveSetup(const SurfaceSharing& share)>& make);
 
 // processes.hpp's run_distributed_solve.
 std::optional<int> run_solve_on_slabs(const SolveSetup& setup);

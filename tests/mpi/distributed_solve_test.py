@@ -6,9 +6,10 @@ usage: distributed_solve_test.py MPI_PROGRAM SERIAL_PROGRAM MPIEXEC SOURCE_DIR W
 For periodic Hertz and rough contacts, `mpiexec -np 1, 2 and 3 MPI_PROGRAM
 solve` (3 gives uneven slabs) must write the serial program's file: the same
 datasets, shapes, types and attributes, fields equal within kFieldTolerance
-of their largest value, the contact set identical. Failures (a bad file, an
-invalid option, a solver not distributed yet) must end every process with
-one message and the serial exit code.
+of their largest value, the contact set identical. Failures (a bad file,
+which only the first process reads; an invalid option; a solve not
+distributed yet) must end every process with one message and the serial
+exit code, and write nothing.
 """
 import os
 import subprocess
@@ -104,13 +105,13 @@ def compare_files(where, got_path, want_path):
         print(f"{where}: largest field difference {worst:.2e} of the field's largest value")
 
 
-def solve_case(name, arguments):
+def solve_case(name, arguments, process_counts=kProcessCounts):
     serial_output = os.path.join(work_dir, f"{name}-serial.h5")
     serial = run([serial_program, "solve"] + arguments + ["--output", serial_output])
     if serial.returncode != 0:
         fail(f"{name}: the serial program failed ({serial.returncode}): {serial.stderr.strip()}")
         return
-    for processes in kProcessCounts:
+    for processes in process_counts:
         output = os.path.join(work_dir, f"{name}-np{processes}.h5")
         if os.path.exists(output):
             os.remove(output)
@@ -151,6 +152,9 @@ rough = ["--height-map", os.path.join(source_dir, "examples", "self_affine_128.h
          "--solver", "pk-fourier", "--tol", "1e-12"] + common
 solve_case("rough-force", rough + ["--mean-pressure", "2e8"])
 solve_case("rough-approach", rough + ["--approach", "1e-6"])
+# On one process the MPI program solves what is not distributed yet as the
+# serial program does: the default solver, pk-multilevel.
+solve_case("hertz-one-process-multilevel", hertz + ["--solver", "pk-multilevel", "--tol", "1e-12"], (1,))
 
 missing = os.path.join(work_dir, "failure.h5")
 for processes in (2, 3):
@@ -159,6 +163,10 @@ for processes in (2, 3):
                  "no-such-map.h5", missing)
     failure_case("invalid option", processes, hertz + ["--solver", "pk-fourier", "--tol", "2"], "tol", missing)
     failure_case("not distributed yet", processes, hertz + ["--solver", "pk-multilevel"],
+                 "is not available with more than one process yet", missing)
+    failure_case("1D not distributed yet", processes,
+                 ["--geometry", "cylinder", "--radius", "0.01", "--grid", "64", "--size", "1e-3", "--boundary",
+                  "periodic", "--force", "1e3", "--solver", "pk-fourier"] + common,
                  "is not available with more than one process yet", missing)
 
 if failures:

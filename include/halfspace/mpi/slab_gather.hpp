@@ -16,4 +16,9 @@ namespace halfspace::mpi {
 void gather_rows(const MpiCommunicator& comm, const SlabLayout& layout, std::span<const double> local,
                  std::span<double> whole, int root = 0);
 
+// The reverse: `root` hands each process its layout.rows rows of `whole`
+// (nx * ny values on root, ignored elsewhere) into `local`. Collective.
+void scatter_rows(const MpiCommunicator& comm, const SlabLayout& layout, std::span<const double> whole,
+                  std::span<double> local, int root = 0);
+
 }  // namespace halfspace::mpi
