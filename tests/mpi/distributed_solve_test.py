@@ -22,9 +22,11 @@ import numpy as np
 # than the serial fixed blocks, and FFTW-MPI's transforms round differently
 # from the serial ones: equal to rounding, not bitwise.
 kFieldTolerance = 1e-12
-# Attributes that record the run rather than the result: the solve's wall
-# time and the program's path in the command line.
-kRunAttributes = {"solve_seconds", "command_line"}
+# Attributes that record the run rather than the result (present in both,
+# values not compared): the solve's wall time, the program's path in the
+# command line, and the version with the git hash of the build, which differs
+# when the two builds were made at different commits.
+kRunAttributes = {"solve_seconds", "command_line", "halfspace_version"}
 # The residual at convergence is rounding itself (1e-19 here): compared as
 # the relative quantity it is, not relative to itself.
 kAbsoluteAttributes = {"residual"}
