@@ -49,7 +49,7 @@ configs=(serial-1t serial-2t mpi-1x1 mpi-2x1)
 for ((k = 0; k < repeats; ++k)); do
   for c in "${configs[@]}"; do echo "$c $(run "$c")" >> runs.txt; done
 done
-echo "grid $grid, $repeats rounds alternating, $(nproc) cores, load average before: $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "grid $grid, $repeats rounds alternating, $(nproc) cores, load average at the end: $(cut -d' ' -f1-3 /proc/loadavg)"
 echo
 echo "| run | solve s (median) | wall s (median) | iterations | peak RSS per process (MiB) |"
 echo "|---|---|---|---|---|"
