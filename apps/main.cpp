@@ -20,12 +20,16 @@
 #include "halfspace/version.hpp"
 #include "openmp_waiting.hpp"
 #include "paper_command.hpp"
+#include "processes.hpp"
 #include "solve_command.hpp"
 #include "stress_command.hpp"
 
 int main(int argc, char** argv) {
   // First: it may start the program again, with OMP_WAIT_POLICY=passive.
   halfspace::app::use_passive_openmp_waiting(argv);
+  // MPI's setup, in an MPI build, before anything else reads argv.
+  const halfspace::app::Processes processes(argc, argv);
+  const bool prints = halfspace::app::prints_messages();
   using halfspace::app::kExitInputError;
   // Field arrays (1 MiB and up) always come from mmap and go back to the
   // system when freed. glibc's default threshold rises after each such free,
@@ -54,30 +58,38 @@ int main(int argc, char** argv) {
   } catch (const CLI::Success& success) {
     return app.exit(success);  // --help or --version: printed to stdout, exit 0
   } catch (const CLI::ParseError& error) {
-    fmt::print(stderr, "error: {} (see halfspace --help)\n", error.what());
+    if (prints) fmt::print(stderr, "error: {} (see halfspace --help)\n", error.what());
     return kExitInputError;
   }
 
   for (const auto& command : commands) {
     if (!command.parser->parsed()) continue;
     try {
+      // Only solve is distributed; several processes of another command
+      // would write one file side by side.
+      if (halfspace::app::process_count() > 1 && command.parser->get_name() != "solve") {
+        throw halfspace::InputError(
+            fmt::format("{} is not available with more than one process: run it without mpirun (solve is)",
+                        command.parser->get_name()));
+      }
       return command.run(std::vector<std::string>(argv, argv + argc));
     } catch (const halfspace::InputError& error) {
-      fmt::print(stderr, "error: {}\n", error.what());
+      if (prints) fmt::print(stderr, "error: {}\n", error.what());
     } catch (const std::bad_alloc&) {
       // The estimate checked before the run (docs/usage.md#memory) did not
       // foresee it: other processes took the memory meanwhile, or the limit
       // was raised with --max-memory.
       const std::optional<halfspace::AvailableMemory> available = halfspace::available_memory();
-      fmt::print(stderr, "error: out of memory while {} ({} available now): use a smaller grid or free memory\n",
-                 halfspace::app::Activity::failed_while(),
-                 available ? halfspace::format_bytes(available->bytes) : std::string("unknown"));
+      if (prints)
+        fmt::print(stderr, "error: out of memory while {} ({} available now): use a smaller grid or free memory\n",
+                   halfspace::app::Activity::failed_while(),
+                   available ? halfspace::format_bytes(available->bytes) : std::string("unknown"));
     } catch (const std::exception& error) {
       // Not an input mistake we foresaw; still one line, still a failure.
-      fmt::print(stderr, "error: {} (while {})\n", error.what(), halfspace::app::Activity::failed_while());
+      if (prints) fmt::print(stderr, "error: {} (while {})\n", error.what(), halfspace::app::Activity::failed_while());
     }
     return kExitInputError;
   }
-  fmt::print(stderr, "error: no command given: try 'halfspace --help'\n");
+  if (prints) fmt::print(stderr, "error: no command given: try 'halfspace --help'\n");
   return kExitInputError;
 }

@@ -21,6 +21,7 @@
 #include "halfspace/stress/stress_volume.hpp"
 #include "halfspace/threads.hpp"
 #include "plot_tool.hpp"
+#include "processes.hpp"
 #include "progress.hpp"
 #include "solve_options.hpp"
 #include "summary.hpp"
@@ -29,6 +30,8 @@
 namespace halfspace::app {
 
 int run_solve(const SolveSetup& setup) {
+  // Several MPI processes, or one MPI process and a solve it distributes.
+  if (const std::optional<int> code = run_distributed_solve(setup)) return *code;
   const std::string on_grid =
       fmt::format("{} on the {} grid", solvers::to_string(setup.solver.type), setup.grid.shape_string());
   if (setup.load_values.size() > 1) {
@@ -98,12 +101,13 @@ Command add_solve_command(CLI::App& program) {
   solve->footer("Options can also come from --config FILE.toml; see docs/usage.md.");
   add_solve_options(*solve);
   return {solve, [solve](const std::vector<std::string>& argv) {
-            SolveOptions options = solve_options_from_command_line(*solve, argv);
-            std::optional<Activity> activity(std::in_place, "reading the options");
-            merge_config_file(options);
-            activity.emplace("checking the options and making the surface");
-            const SolveSetup setup = make_solve_setup(options);
-            activity.reset();
+            const SolveSetup setup = make_setup_everywhere([&](const SurfaceSharing& share) {
+              SolveOptions options = solve_options_from_command_line(*solve, argv);
+              std::optional<Activity> activity(std::in_place, "reading the options");
+              merge_config_file(options);
+              activity.emplace("checking the options and making the surface");
+              return make_solve_setup(options, share);
+            });
             return run_solve(setup);
           }};
 }

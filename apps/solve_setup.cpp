@@ -422,13 +422,6 @@ void check_outputs_against_inputs(const SolveOptions& o, const fs::path& output,
   }
 }
 
-struct Surface {
-  Grid grid;
-  Eigen::ArrayXd heights;
-  std::string source;
-  std::vector<std::string> preparation;  // one line per preparation step of a height map
-};
-
 void reject_given(const SolveOptions& o, Presence keys, std::string_view reason) {
   const std::vector<std::string> given = given_names(o, keys);
   if (!given.empty()) {
@@ -491,7 +484,8 @@ Surface builtin_surface(const SolveOptions& o, Boundary boundary, const GridChec
   check_grid(grid, o.describe("grid"));
   const Activity activity(fmt::format("making the {} surface on the {} grid", shape_name, grid.shape_string()));
   Eigen::ArrayXd heights = geometry::make_surface_heights(grid, spec);
-  return {std::move(grid), std::move(heights), std::move(source), {}};
+  const std::size_t rows = grid.dimension() == 1 ? 1 : grid.ny();
+  return {std::move(grid), std::move(heights), std::move(source), {}, 0, rows};
 }
 
 // The spacing along one axis: the option if given, else the file attribute
@@ -598,7 +592,8 @@ Surface height_map_surface(const SolveOptions& o, Boundary boundary, const GridC
       map.dimension == 1 ? Grid::line(map.nx, map.dx, boundary) : Grid::plane(map.nx, map.ny, map.dx, map.dy, boundary);
   check_grid(grid, fmt::format("height map {} ({} cells{})", file, grid.shape_string(),
                                map.preparation.empty() ? "" : " after preparation"));
-  return {std::move(grid), std::move(map.heights), std::move(source), std::move(map.preparation)};
+  const std::size_t rows = grid.dimension() == 1 ? 1 : grid.ny();
+  return {std::move(grid), std::move(map.heights), std::move(source), std::move(map.preparation), 0, rows};
 }
 
 // Subsurface stresses (--stress-depths, --stress-nu): the depths and Poisson's
@@ -642,7 +637,7 @@ double stress_peak_memory(const Grid& grid, std::size_t depth_count) {
 
 }  // namespace
 
-SolveSetup make_solve_setup(const SolveOptions& options) {
+SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& share) {
   check_surface_choice(options);
   const std::optional<LayeredMaterial> coating = coating_from(options);
   const double e_star = coating ? plane_strain_modulus(coating->layer) : material_from(options);
@@ -673,9 +668,14 @@ SolveSetup make_solve_setup(const SolveOptions& options) {
   };
   check_outputs_against_inputs(options, output, load_values.size() > 1, solver.fft_planning);
 
-  Surface surface = options.geometry ? builtin_surface(options, boundary, check_grid)
-                                     : height_map_surface(options, boundary, check_grid);
-  if (static_cast<std::size_t>(surface.heights.size()) != surface.grid.size()) {
+  Surface surface = share([&] {
+    return options.geometry ? builtin_surface(options, boundary, check_grid)
+                            : height_map_surface(options, boundary, check_grid);
+  });
+  const std::size_t rows = surface.grid.dimension() == 1 ? 1 : surface.grid.ny();
+  const bool slab_ok = surface.first_row + surface.rows <= rows &&
+                       static_cast<std::size_t>(surface.heights.size()) == surface.rows * surface.grid.nx();
+  if (surface.rows == rows ? static_cast<std::size_t>(surface.heights.size()) != surface.grid.size() : !slab_ok) {
     throw InputError(fmt::format("surface {} has {} heights for a {} grid", surface.source, surface.heights.size(),
                                  surface.grid.shape_string()));
   }
@@ -698,8 +698,10 @@ SolveSetup make_solve_setup(const SolveOptions& options) {
           "homogeneous half-space");
     }
   }
+  const std::size_t first_row = surface.first_row;
   return SolveSetup{std::move(surface.grid),
                     std::move(surface.heights),
+                    first_row,
                     std::move(surface.source),
                     std::move(surface.preparation),
                     e_star,

@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -23,7 +24,10 @@ namespace halfspace::app {
 // settings and where the result goes.
 struct SolveSetup {
   Grid grid;
-  Eigen::ArrayXd heights;     // m, (ny, nx) row-major
+  // m, (ny, nx) row-major: every row, or (on an MPI process other than the
+  // first) the rows from first_row on that this process solves.
+  Eigen::ArrayXd heights;
+  std::size_t first_row = 0;
   std::string height_source;  // "file.h5:/height" or "sphere (radius = 0.01 m)"
   // Height-map preparation steps, one line each; empty if none.
   std::vector<std::string> preparation;
@@ -48,10 +52,30 @@ struct SolveSetup {
 // "t = 1e-06 m, layer E1 = 3e+09 Pa, nu1 = 0.35 on substrate E2 = ... (E* is the layer's)".
 std::string coating_text(const LayeredMaterial& coating);
 
+// The surface of a solve as make_solve_setup makes it.
+struct Surface {
+  Grid grid;
+  Eigen::ArrayXd heights;  // `rows` rows of nx heights (m), from row first_row on
+  std::string source;
+  std::vector<std::string> preparation;  // one line per preparation step of a height map
+  std::size_t first_row = 0;
+  std::size_t rows = 0;  // the grid's ny (1 in 1D) unless the surface is shared out in slabs
+};
+
+// How the processes of a run get the surface: given the function that reads
+// or builds it whole, returns this process's surface. The serial program
+// calls it; an MPI run calls it on the first process and hands the others
+// their rows (apps/mpi/).
+using SurfaceSharing = std::function<Surface(const std::function<Surface()>& make_whole)>;
+inline Surface make_whole_surface(const std::function<Surface()>& make_whole) {
+  return make_whole();
+}
+
 // Applies the defaults, checks every option and their combinations, builds
-// the surface (reading the height map file, if any) and checks that the
-// output file can be created. Throws InputError (FileError for files) with a
-// one-line message naming the option, its value and the rule it broke.
-SolveSetup make_solve_setup(const SolveOptions& options);
+// the surface (reading the height map file, if any; through `share`) and
+// checks that the output file can be created. Throws InputError (FileError
+// for files) with a one-line message naming the option, its value and the
+// rule it broke.
+SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& share = make_whole_surface);
 
 }  // namespace halfspace::app

@@ -19,3 +19,14 @@ if(FFTW3_FOUND AND NOT TARGET FFTW3::fftw3)
     INTERFACE_LINK_LIBRARIES FFTW3::fftw3)
 endif()
 mark_as_advanced(FFTW3_INCLUDE_DIR FFTW3_LIBRARY FFTW3_OMP_LIBRARY)
+
+# FFTW's MPI interface (libfftw3-mpi-dev), for the HALFSPACE_MPI build only:
+# FFTW3::fftw3_mpi when the library is found. Link MPI itself separately.
+find_library(FFTW3_MPI_LIBRARY NAMES fftw3_mpi)
+if(FFTW3_FOUND AND FFTW3_MPI_LIBRARY AND NOT TARGET FFTW3::fftw3_mpi)
+  add_library(FFTW3::fftw3_mpi UNKNOWN IMPORTED)
+  set_target_properties(FFTW3::fftw3_mpi PROPERTIES
+    IMPORTED_LOCATION "${FFTW3_MPI_LIBRARY}"
+    INTERFACE_LINK_LIBRARIES FFTW3::fftw3)
+endif()
+mark_as_advanced(FFTW3_MPI_LIBRARY)

@@ -21,7 +21,21 @@ packages=(
   python3 python3-numpy python3-h5py python3-matplotlib python3-scipy
   # `python3 -m venv` for the Python package's tests (scripts/test-python.sh).
   python3-venv
+  # The MPI build (-DHALFSPACE_MPI=ON, docs/usage.md#running-on-a-cluster):
+  # Open MPI, FFTW's MPI interface and the parallel HDF5, which installs
+  # beside the serial libhdf5-dev (hdf5/openmpi next to hdf5/serial).
+  libopenmpi-dev openmpi-bin libfftw3-mpi-dev libhdf5-openmpi-dev
 )
+
+# Installing libhdf5-openmpi-dev makes Debian's hdf5.pc alternative point to
+# the parallel HDF5 (it has the higher priority); keep the serial one the
+# system default, so that only the MPI build (which asks for it) uses MPI.
+keep_serial_hdf5_default() {
+  local serial=/usr/lib/x86_64-linux-gnu/pkgconfig/hdf5-serial.pc
+  if [ -e "$serial" ] && update-alternatives --query hdf5.pc 2>/dev/null | grep -q "^Status: auto"; then
+    "${sudo_cmd[@]}" update-alternatives --set hdf5.pc "$serial" >/dev/null
+  fi
+}
 
 missing=()
 for p in "${packages[@]}"; do
@@ -30,17 +44,19 @@ for p in "${packages[@]}"; do
   fi
 done
 
-if [ "${#missing[@]}" -eq 0 ]; then
-  echo "install-deps: all ${#packages[@]} packages already installed"
-  exit 0
-fi
-
 sudo_cmd=()
 if [ "$(id -u)" -ne 0 ]; then
   sudo_cmd=(sudo)
+fi
+
+if [ "${#missing[@]}" -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages already installed"
+  keep_serial_hdf5_default
+  exit 0
 fi
 
 echo "install-deps: installing ${missing[*]}"
 export DEBIAN_FRONTEND=noninteractive
 "${sudo_cmd[@]}" apt-get update -qq
 "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+keep_serial_hdf5_default

@@ -6,6 +6,8 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$root/scripts/install-deps.sh"
 "$root/scripts/build.sh"
 ctest --test-dir "${HALFSPACE_BUILD_DIR:-$root/build}" --output-on-failure -j "$(nproc)"
+# The MPI build and its distributed tests against the serial program.
+"$root/scripts/test-mpi.sh"
 "$root/scripts/fuzz.sh" 20
 # The Python package: `pip install .` into a virtual environment, and its tests.
 "$root/scripts/test-python.sh"

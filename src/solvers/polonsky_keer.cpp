@@ -52,14 +52,16 @@ void check_size(std::string_view what, std::size_t got, std::size_t expected) {
 }
 
 // The problem of a solve, checked.
-Problem make_problem(const Grid& grid, std::span<const double> initial_gap, const Loading& loading,
+Problem make_problem(const InfluenceOperator& op, std::span<const double> initial_gap, const Loading& loading,
                      const PressureBounds& bounds) {
-  const std::size_t n = grid.size();
+  const Grid& grid = op.grid();
+  const linalg::Communicator& comm = op.communicator();
+  const std::size_t n = op.local_size();
   check_size("initial gap", initial_gap.size(), n);
   loading.validate();
   if (bounds.capped()) InterfaceLaw{bounds.upper}.check_load(grid, loading);
-  const double gap_max = linalg::max_of(n, [&](std::size_t i) { return initial_gap[i]; });
-  const double gap_min = linalg::min_of(n, [&](std::size_t i) { return initial_gap[i]; });
+  const double gap_max = linalg::max_of(comm, n, [&](std::size_t i) { return initial_gap[i]; });
+  const double gap_min = linalg::min_of(comm, n, [&](std::size_t i) { return initial_gap[i]; });
   if (!std::isfinite(gap_max) || !std::isfinite(gap_min)) {
     throw InputError("initial gap holds a non-finite value");
   }
@@ -72,7 +74,8 @@ Problem make_problem(const Grid& grid, std::span<const double> initial_gap, cons
   if (!problem.load_controlled && grid.periodic()) {
     // With a zero-mean displacement the mean gap is mean(g0) - approach, and
     // it cannot be negative: at mean(g0) the pressure is already infinite.
-    const double mean_gap = linalg::sum(n, [&](std::size_t i) { return initial_gap[i]; }) / static_cast<double>(n);
+    const double mean_gap =
+        linalg::sum(comm, n, [&](std::size_t i) { return initial_gap[i]; }) / static_cast<double>(grid.size());
     if (problem.approach >= mean_gap) {
       throw InputError(
           fmt::format("approach = {} m is invalid for a periodic surface: it must be below the mean initial gap {} m "
@@ -109,7 +112,9 @@ class Iteration {
         options_(options),
         problem_(problem),
         result_(result),
-        n_(op.grid().size()),
+        comm_(op.communicator()),
+        n_(op.local_size()),
+        cells_(static_cast<double>(op.grid().size())),
         p_(result.pressure.data()),
         u_(result.displacement.data()),
         g_(result.gap.data()),
@@ -132,8 +137,8 @@ class Iteration {
       direction.setOnes();
       op_.apply({t_, n_}, {r_, n_});
       ++result_.operator_applications;
-      uniform_response_range_ = linalg::max_of(n_, [&](std::size_t i) { return r_[i]; }) -
-                                linalg::min_of(n_, [&](std::size_t i) { return r_[i]; });
+      uniform_response_range_ = linalg::max_of(comm_, n_, [&](std::size_t i) { return r_[i]; }) -
+                                linalg::min_of(comm_, n_, [&](std::size_t i) { return r_[i]; });
     }
     direction.setZero();
   }
@@ -144,10 +149,10 @@ class Iteration {
   void start(bool warm) {
     for_each_index(n_, [&](std::size_t i) { p_[i] = warm ? bounds_.project(p_[i]) : 0.0; });
     if (problem_.load_controlled) {
-      double force = problem_.cell_area * linalg::sum(n_, [&](std::size_t i) { return p_[i]; });
+      double force = problem_.cell_area * linalg::sum(comm_, n_, [&](std::size_t i) { return p_[i]; });
       if (!(force > 0.0)) {
         for_each_index(n_, [&](std::size_t i) { p_[i] = 1.0; });
-        force = problem_.cell_area * static_cast<double>(n_);
+        force = problem_.cell_area * cells_;
       }
       CappedScale scale{problem_.target_force / force, false};
       if (bounds_.capped()) {
@@ -155,8 +160,7 @@ class Iteration {
         // below the cap gives way to the uniform pressure, which does.
         const std::optional<CappedScale> capped = capped_scale([&](std::size_t i) { return p_[i]; });
         if (!capped) for_each_index(n_, [&](std::size_t i) { p_[i] = 1.0; });
-        scale = capped ? *capped
-                       : CappedScale{problem_.target_force / (problem_.cell_area * static_cast<double>(n_)), false};
+        scale = capped ? *capped : CappedScale{problem_.target_force / (problem_.cell_area * cells_), false};
       }
       for_each_index(n_,
                      [&](std::size_t i) { p_[i] = bounds_.snap(scale.stored(p_[i], bounds_.upper) * scale.factor); });
@@ -229,7 +233,7 @@ class Iteration {
       ++result_.preconditioner_applications;
     }
     const double* z = z_;
-    const auto [z_sum, gz, cells, gap_sum] = sums<4>(n_, [&](std::size_t i) {
+    const auto [z_sum, gz, cells, gap_sum] = sums<4>(comm_, n_, [&](std::size_t i) {
       const double in_set = set_.contains(i) ? 1.0 : 0.0;
       return std::array<double, 4>{in_set * z[i], in_set * (g_[i] * z[i]), in_set, in_set * g_[i]};
     });
@@ -262,7 +266,7 @@ class Iteration {
   bool step_length(int iteration) {
     op_.apply({t_, n_}, {r_, n_});
     ++result_.operator_applications;
-    const auto [r_sum, t_sum, gt, rt] = sums<4>(n_, [&](std::size_t i) {
+    const auto [r_sum, t_sum, gt, rt] = sums<4>(comm_, n_, [&](std::size_t i) {
       const double in_set = set_.contains(i) ? 1.0 : 0.0;
       return std::array<double, 4>{in_set * r_[i], in_set * t_[i], in_set * (g_[i] * t_[i]), in_set * (r_[i] * t_[i])};
     });
@@ -290,7 +294,7 @@ class Iteration {
     }
     const bool entries = !projected_;
     const double tau = tau_;
-    const auto [new_pressure_sum, entered, corrected] = sums<3>(n_, [&](std::size_t i) {
+    const auto [new_pressure_sum, entered, corrected] = sums<3>(comm_, n_, [&](std::size_t i) {
       const double moved = p_[i] - tau * t_[i];
       double pi = bounds_.project(moved);
       double entry = 0.0;
@@ -342,7 +346,7 @@ class Iteration {
         // touch, those out of contact with the smallest gaps, take the rest.
         filled = true;
         const double positive =
-            linalg::sum(n_, [&](std::size_t i) { return lower(i, p_[i] - tau * t_[i]) > 0.0 ? 1.0 : 0.0; });
+            linalg::sum(comm_, n_, [&](std::size_t i) { return lower(i, p_[i] - tau * t_[i]) > 0.0 ? 1.0 : 0.0; });
         const double deficit = target_sum - upper * positive;
         const auto [below, count] = smallest_gaps([&](std::size_t i) { return lower(i, p_[i] - tau * t_[i]) == 0.0; },
                                                   std::ceil(deficit / upper));
@@ -350,7 +354,7 @@ class Iteration {
         fill = deficit / count;
       }
     }
-    const auto [entered, corrected, reached_cap] = sums<3>(n_, [&](std::size_t i) {
+    const auto [entered, corrected, reached_cap] = sums<3>(comm_, n_, [&](std::size_t i) {
       const double moved = p_[i] - tau * t_[i];
       const double pre = lower(i, moved);
       double pi = scale.stored(pre, upper);
@@ -385,19 +389,19 @@ class Iteration {
   }
 
   void summarise(int iterations) {
-    const auto [pressure_total, contact_total, plastic_total] = sums<3>(n_, [&](std::size_t i) {
+    const auto [pressure_total, contact_total, plastic_total] = sums<3>(comm_, n_, [&](std::size_t i) {
       return std::array<double, 3>{p_[i], p_[i] > 0.0 ? 1.0 : 0.0, bounds_.at_cap(p_[i]) ? 1.0 : 0.0};
     });
     if (bounds_.capped()) result_.hardness = bounds_.upper;
-    result_.plastic_fraction = plastic_total / static_cast<double>(n_);
+    result_.plastic_fraction = plastic_total / cells_;
     const Grid& grid = op_.grid();
     result_.iterations = iterations;
     result_.residual = residual_;
     result_.approach = approach_;
     result_.total_force = problem_.cell_area * pressure_total;
     result_.mean_pressure = result_.total_force / grid.domain_area();
-    result_.max_pressure = linalg::max_of(n_, [&](std::size_t i) { return p_[i]; });
-    result_.contact_fraction = contact_total / static_cast<double>(n_);
+    result_.max_pressure = linalg::max_of(comm_, n_, [&](std::size_t i) { return p_[i]; });
+    result_.contact_fraction = contact_total / cells_;
   }
 
  private:
@@ -422,14 +426,14 @@ class Iteration {
   template <class Candidate>
   std::pair<double, double> smallest_gaps(Candidate&& candidate, double wanted) const {
     auto count_below = [&](double bound) {
-      return linalg::sum(n_, [&](std::size_t i) { return candidate(i) && g_[i] < bound ? 1.0 : 0.0; });
+      return linalg::sum(comm_, n_, [&](std::size_t i) { return candidate(i) && g_[i] < bound ? 1.0 : 0.0; });
     };
     const double candidates = count_below(kInfinity);
     wanted = std::min(wanted, candidates);
     // count_below(low) < wanted <= count_below(high) = candidates.
-    double low = linalg::min_of(n_, [&](std::size_t i) { return candidate(i) ? g_[i] : kInfinity; });
-    double high =
-        std::nextafter(linalg::max_of(n_, [&](std::size_t i) { return candidate(i) ? g_[i] : -kInfinity; }), kInfinity);
+    double low = linalg::min_of(comm_, n_, [&](std::size_t i) { return candidate(i) ? g_[i] : kInfinity; });
+    double high = std::nextafter(
+        linalg::max_of(comm_, n_, [&](std::size_t i) { return candidate(i) ? g_[i] : -kInfinity; }), kInfinity);
     double count = candidates;
     constexpr int kMaxPasses = 64;
     for (int pass = 0; pass < kMaxPasses && count != wanted; ++pass) {
@@ -462,7 +466,7 @@ class Iteration {
   std::optional<CappedScale> capped_scale(Pressure&& pressure) const {
     const double target_sum = problem_.target_force / problem_.cell_area;
     const double upper = bounds_.upper;
-    const auto [at_cap, below_sum, total_sum] = sums<3>(n_, [&](std::size_t i) {
+    const auto [at_cap, below_sum, total_sum] = sums<3>(comm_, n_, [&](std::size_t i) {
       const double q = pressure(i);
       return q >= upper ? std::array<double, 3>{1.0, 0.0, q} : std::array<double, 3>{0.0, q, q};
     });
@@ -470,14 +474,14 @@ class Iteration {
     if (!(target_sum > cap_sum)) return CappedScale{target_sum / total_sum, false};
     if (!(below_sum > 0.0)) return std::nullopt;
     double scale = (target_sum - cap_sum) / below_sum;
-    const double below_max = linalg::max_of(n_, [&](std::size_t i) {
+    const double below_max = linalg::max_of(comm_, n_, [&](std::size_t i) {
       const double q = pressure(i);
       return q < upper ? q : 0.0;
     });
     if (scale * below_max <= upper) return CappedScale{scale, true};
     constexpr int kMaxPasses = 100;
     for (int pass = 0; pass < kMaxPasses; ++pass) {
-      const auto [force_sum, slope] = sums<2>(n_, [&](std::size_t i) {
+      const auto [force_sum, slope] = sums<2>(comm_, n_, [&](std::size_t i) {
         const double q = pressure(i);
         return q < upper && scale * q < upper ? std::array<double, 2>{scale * q, q} : std::array<double, 2>{upper, 0.0};
       });
@@ -509,7 +513,7 @@ class Iteration {
     const Deferred deferred = std::exchange(deferred_, Deferred{});
     const double scale = deferred.scale;
     const bool add = deferred.add_correction;
-    const auto settled = linalg::sums_and_range<3>(n_, [&](std::size_t i) {
+    const auto settled = linalg::sums_and_range<3>(comm_, n_, [&](std::size_t i) {
       double ui = u_[i];
       double pi = p_[i];
       if (add) ui += g_[i];
@@ -536,7 +540,7 @@ class Iteration {
         // Every contact cell at the cap: the smallest approach that leaves
         // none of them with an open gap.
         approach_ = linalg::max_of(
-            n_, [&](std::size_t i) { return p_[i] > 0.0 ? problem_.initial_gap[i] + u_[i] : -kInfinity; });
+            comm_, n_, [&](std::size_t i) { return p_[i] > 0.0 ? problem_.initial_gap[i] + u_[i] : -kInfinity; });
       }
     }
     const bool store_gap = preconditioner_ != nullptr;
@@ -546,21 +550,22 @@ class Iteration {
     // pressure-weighted gap by its positive part only (see the header).
     const bool capped = bounds_.capped();
     const double upper = bounds_.upper;
-    const auto [weighted_gap, overlap, pressure_sum, gap_norm, gap_along, released] = sums<6>(n_, [&](std::size_t i) {
-      g_[i] = problem_.initial_gap[i] + u_[i] - approach;
-      const double in_set = set_.contains(i) ? 1.0 : 0.0;  // a mask, not a branch
-      if (store_gap) r_[i] = in_set * g_[i];
-      const double over = std::max(-g_[i], 0.0);
-      const double weighted = capped ? p_[i] * std::max(g_[i], 0.0) : p_[i] * std::abs(g_[i]);
-      const double overlap_weight = capped ? (upper - p_[i]) / upper : 1.0;
-      const double release = capped && bounds_.at_cap(p_[i]) && g_[i] > 0.0 ? 1.0 : 0.0;
-      return std::array<double, 6>{
-          weighted, overlap_weight * over, p_[i], in_set * (g_[i] * g_[i]), in_set * (g_[i] * t_[i]), release};
-    });
+    const auto [weighted_gap, overlap, pressure_sum, gap_norm, gap_along, released] =
+        sums<6>(comm_, n_, [&](std::size_t i) {
+          g_[i] = problem_.initial_gap[i] + u_[i] - approach;
+          const double in_set = set_.contains(i) ? 1.0 : 0.0;  // a mask, not a branch
+          if (store_gap) r_[i] = in_set * g_[i];
+          const double over = std::max(-g_[i], 0.0);
+          const double weighted = capped ? p_[i] * std::max(g_[i], 0.0) : p_[i] * std::abs(g_[i]);
+          const double overlap_weight = capped ? (upper - p_[i]) / upper : 1.0;
+          const double release = capped && bounds_.at_cap(p_[i]) && g_[i] > 0.0 ? 1.0 : 0.0;
+          return std::array<double, 6>{
+              weighted, overlap_weight * over, p_[i], in_set * (g_[i] * g_[i]), in_set * (g_[i] * t_[i]), release};
+        });
     released_cells_ = released;
     gap_norm_ = gap_norm;
     gap_along_direction_ = gap_along;
-    const double cells = static_cast<double>(n_);
+    const double cells = cells_;
     // Never below the range the same load gives spread uniformly: a flat
     // punch in full contact has ptp(g0) = ptp(K p) = 0 at its solution.
     const double load_range = uniform_response_range_ * pressure_sum / cells;
@@ -574,13 +579,15 @@ class Iteration {
   const PolonskyKeerOptions& options_;
   const Problem& problem_;
   SolveResult& result_;
-  const std::size_t n_;
-  double* p_;             // pressure
-  double* u_;             // displacement K p
-  double* g_;             // gap; K c between steps 8 and 1
-  double* t_;             // conjugate direction
-  double* r_;             // M^-1 g, then K t, then c
-  const bool projected_;  // the form (see the header)
+  const linalg::Communicator& comm_;  // the processes the fields are spread over
+  const std::size_t n_;               // the cells this process holds
+  const double cells_;                // the cells of the whole grid
+  double* p_;                         // pressure
+  double* u_;                         // displacement K p
+  double* g_;                         // gap; K c between steps 8 and 1
+  double* t_;                         // conjugate direction
+  double* r_;                         // M^-1 g, then K t, then c
+  const bool projected_;              // the form (see the header)
   const SearchSet set_;
   const PressureBounds bounds_;
   double& uniform_response_range_;  // ptp(K 1), the solver's
@@ -627,14 +634,14 @@ PolonskyKeer::PolonskyKeer(InfluenceOperator& op, PolonskyKeerOptions options, P
   if (preconditioner_ && options_.form != PolonskyKeerForm::projected) {
     throw InputError("a preconditioner needs the projected form of Polonsky-Keer (PolonskyKeerForm::projected)");
   }
-  const auto n = static_cast<Eigen::Index>(op_.grid().size());
+  const auto n = static_cast<Eigen::Index>(op_.local_size());
   direction_.setZero(n);
   image_.setZero(n);
 }
 
 SolveResult PolonskyKeer::solve(std::span<const double> initial_gap, const Loading& loading,
                                 std::span<const double> initial_pressure) {
-  const std::size_t n = op_.grid().size();
+  const std::size_t n = op_.local_size();
   if (initial_pressure.empty()) return run(initial_gap, loading, Eigen::ArrayXd(static_cast<Eigen::Index>(n)), false);
   check_size("initial pressure", initial_pressure.size(), n);
   return run(initial_gap, loading,
@@ -643,15 +650,15 @@ SolveResult PolonskyKeer::solve(std::span<const double> initial_gap, const Loadi
 
 SolveResult PolonskyKeer::solve_from(std::span<const double> initial_gap, const Loading& loading,
                                      Eigen::ArrayXd&& start) {
-  check_size("initial pressure", static_cast<std::size_t>(start.size()), op_.grid().size());
+  check_size("initial pressure", static_cast<std::size_t>(start.size()), op_.local_size());
   return run(initial_gap, loading, std::move(start), true);
 }
 
 SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading& loading, Eigen::ArrayXd pressure,
                               bool warm) {
   const auto start = std::chrono::steady_clock::now();
-  const Problem problem = make_problem(op_.grid(), initial_gap, loading, options_.bounds);
-  const auto n = static_cast<Eigen::Index>(op_.grid().size());
+  const Problem problem = make_problem(op_, initial_gap, loading, options_.bounds);
+  const auto n = static_cast<Eigen::Index>(op_.local_size());
   SolveResult result;
   result.solver = name_;
   result.tolerance = options_.tolerance;

@@ -81,12 +81,8 @@ std::unique_ptr<Preconditioner> make_fourier(const Grid& grid, const Elasticity&
 std::unique_ptr<ContactSolver> make_polonsky_keer(const Grid& grid, const Elasticity& e_star,
                                                   const SolverOptions& options, double tolerance, bool fine,
                                                   bool projected, bool deflated) {
-  PolonskyKeerOptions pk;
-  pk.tolerance = tolerance;
-  pk.max_iterations = options.iteration_limit();
-  if (fine) pk.progress = options.progress;  // progress reports the fine solve only
-  pk.form = projected ? PolonskyKeerForm::projected : PolonskyKeerForm::paper;
-  pk.bounds = options.interface_law.bounds();
+  PolonskyKeerOptions pk = polonsky_keer_options(options, tolerance, projected);
+  if (!fine) pk.progress = nullptr;  // progress reports the fine solve only
   // The preconditioner not on 1D grids: there the preconditioned steps clip
   // hundreds of cells each, and the iteration cycles on measured profiles
   // under moderate loads, while the projected form alone converges at every
@@ -179,6 +175,16 @@ std::unique_ptr<ContactSolver> make_any_solver(const Grid& grid, const Elasticit
 }
 
 }  // namespace
+
+PolonskyKeerOptions polonsky_keer_options(const SolverOptions& options, double tolerance, bool projected) {
+  PolonskyKeerOptions pk;
+  pk.tolerance = tolerance;
+  pk.max_iterations = options.iteration_limit();
+  pk.progress = options.progress;
+  pk.form = projected ? PolonskyKeerForm::projected : PolonskyKeerForm::paper;
+  pk.bounds = options.interface_law.bounds();
+  return pk;
+}
 
 std::unique_ptr<ContactSolver> make_solver(const Grid& grid, double e_star, const SolverOptions& options) {
   return make_any_solver(grid, Elasticity{e_star}, options);

@@ -1,7 +1,9 @@
 // The one place for elementwise loops and reductions over grid fields.
-// Solvers express their vector work through these functions so that a later
-// distributed-memory version (MPI slabs) changes only this file and the
-// operator: `global_*` is where a reduction over all ranks would happen.
+// Solvers express their vector work through these functions, so that a
+// distributed field (MPI slabs, include/halfspace/mpi/) changes only the
+// operator and the Communicator the reductions are given: each reduction
+// folds the process's own cells, then `global_*` combines the processes.
+// Without a Communicator a reduction is over this process alone.
 //
 // Reductions are deterministic: the index range is cut into kReductionBlocks
 // fixed blocks, each summed in order, and the block sums are added in order,
@@ -14,6 +16,8 @@
 #include <limits>
 #include <utility>
 
+#include "halfspace/linalg/communicator.hpp"
+
 namespace halfspace::linalg {
 
 inline constexpr std::size_t kReductionBlocks = 64;
@@ -21,16 +25,17 @@ inline constexpr std::size_t kReductionBlocks = 64;
 // more than the work (and stalls badly when the cores are busy).
 inline constexpr std::size_t kParallelThreshold = 16384;
 
-// Identity on one process; the hook for an all-ranks sum.
+// The combination over the processes of `comm` (identity on one process).
 template <std::size_t K>
-inline std::array<double, K> global_sum(const std::array<double, K>& local) {
+inline std::array<double, K> global_sum(const Communicator& comm, std::array<double, K> local) {
+  comm.sum(local);
   return local;
 }
-inline double global_max(double local) {
-  return local;
+inline double global_max(const Communicator& comm, double local) {
+  return comm.max(local);
 }
-inline double global_min(double local) {
-  return local;
+inline double global_min(const Communicator& comm, double local) {
+  return comm.min(local);
 }
 
 // Calls body(i) for i in [0, n), in parallel; body must not write shared state
@@ -91,15 +96,19 @@ Acc reduce_in_blocks(std::size_t n, const Acc& identity, Add&& add, Merge&& merg
 }
 
 // Sums K terms at once: term(i) returns std::array<double, K>; the result is
-// the component-wise sum over i in [0, n), reduced over all ranks.
+// the component-wise sum over i in [0, n), reduced over the processes of comm.
 template <std::size_t K, class Term>
-std::array<double, K> sums(std::size_t n, Term&& term) {
+std::array<double, K> sums(const Communicator& comm, std::size_t n, Term&& term) {
   const auto add_to = [](std::array<double, K>& acc, const std::array<double, K>& t) {
     for (std::size_t k = 0; k < K; ++k) acc[k] += t[k];
   };
   const std::array<double, K> total = reduce_in_blocks(
       n, std::array<double, K>{}, [&](std::array<double, K>& acc, std::size_t i) { add_to(acc, term(i)); }, add_to);
-  return global_sum(total);
+  return global_sum(comm, total);
+}
+template <std::size_t K, class Term>
+std::array<double, K> sums(std::size_t n, Term&& term) {
+  return sums<K>(serial_communicator(), n, std::forward<Term>(term));
 }
 
 // sums<K> and the range of one more value, in one pass: term(i) returns
@@ -118,7 +127,7 @@ struct SumsAndRange {
 };
 
 template <std::size_t K, class Term>
-SumsAndRange<K> sums_and_range(std::size_t n, Term&& term) {
+SumsAndRange<K> sums_and_range(const Communicator& comm, std::size_t n, Term&& term) {
   SumsAndRange<K> total = reduce_in_blocks(
       n, SumsAndRange<K>{},
       [&](SumsAndRange<K>& acc, std::size_t i) {
@@ -126,40 +135,58 @@ SumsAndRange<K> sums_and_range(std::size_t n, Term&& term) {
         acc.add(t, value, value);
       },
       [](SumsAndRange<K>& acc, const SumsAndRange<K>& part) { acc.add(part.sums, part.min, part.max); });
-  total.sums = global_sum(total.sums);
-  total.min = global_min(total.min);
-  total.max = global_max(total.max);
+  total.sums = global_sum(comm, total.sums);
+  total.min = global_min(comm, total.min);
+  total.max = global_max(comm, total.max);
   return total;
 }
-
-// Sum of term(i) over i in [0, n), reduced over all ranks.
-template <class Term>
-double sum(std::size_t n, Term&& term) {
-  return sums<1>(n, [&](std::size_t i) { return std::array<double, 1>{term(i)}; })[0];
+template <std::size_t K, class Term>
+SumsAndRange<K> sums_and_range(std::size_t n, Term&& term) {
+  return sums_and_range<K>(serial_communicator(), n, std::forward<Term>(term));
 }
 
-// Maximum of value(i) over i in [0, n) (-infinity when n == 0).
+// Sum of term(i) over i in [0, n), reduced over the processes of comm.
+template <class Term>
+double sum(const Communicator& comm, std::size_t n, Term&& term) {
+  return sums<1>(comm, n, [&](std::size_t i) { return std::array<double, 1>{term(i)}; })[0];
+}
+template <class Term>
+double sum(std::size_t n, Term&& term) {
+  return sum(serial_communicator(), n, std::forward<Term>(term));
+}
+
+// Maximum of value(i) over i in [0, n) and the processes of comm (-infinity
+// when there are no cells).
 template <class Value>
-double max_of(std::size_t n, Value&& value) {
+double max_of(const Communicator& comm, std::size_t n, Value&& value) {
   double result = -std::numeric_limits<double>::infinity();
   const auto count = static_cast<std::ptrdiff_t>(n);
 #pragma omp parallel for schedule(static) reduction(max : result) if (n > kParallelThreshold)
   for (std::ptrdiff_t i = 0; i < count; ++i) {
     result = std::max(result, value(static_cast<std::size_t>(i)));
   }
-  return global_max(result);
+  return global_max(comm, result);
+}
+template <class Value>
+double max_of(std::size_t n, Value&& value) {
+  return max_of(serial_communicator(), n, std::forward<Value>(value));
 }
 
-// Minimum of value(i) over i in [0, n) (+infinity when n == 0).
+// Minimum of value(i) over i in [0, n) and the processes of comm (+infinity
+// when there are no cells).
 template <class Value>
-double min_of(std::size_t n, Value&& value) {
+double min_of(const Communicator& comm, std::size_t n, Value&& value) {
   double result = std::numeric_limits<double>::infinity();
   const auto count = static_cast<std::ptrdiff_t>(n);
 #pragma omp parallel for schedule(static) reduction(min : result) if (n > kParallelThreshold)
   for (std::ptrdiff_t i = 0; i < count; ++i) {
     result = std::min(result, value(static_cast<std::size_t>(i)));
   }
-  return global_min(result);
+  return global_min(comm, result);
+}
+template <class Value>
+double min_of(std::size_t n, Value&& value) {
+  return min_of(serial_communicator(), n, std::forward<Value>(value));
 }
 
 }  // namespace halfspace::linalg

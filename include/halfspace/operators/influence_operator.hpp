@@ -1,11 +1,13 @@
 // The influence operator K of an elastic half-space: surface displacement per
 // cell pressure, u = K p. Solvers see only this interface, so the FFT
-// convolution and an assembled dense matrix are interchangeable.
+// convolution, an assembled dense matrix and a distributed operator (one slab
+// of rows per process, include/halfspace/mpi/) are interchangeable.
 #pragma once
 
 #include <span>
 
 #include "halfspace/grid.hpp"
+#include "halfspace/linalg/communicator.hpp"
 
 namespace halfspace::operators {
 
@@ -13,12 +15,20 @@ class InfluenceOperator {
  public:
   virtual ~InfluenceOperator() = default;
 
-  // The grid the operator acts on; fields have grid().size() entries.
+  // The (whole) grid the operator acts on.
   virtual const Grid& grid() const = 0;
+
+  // The cells of a field this process holds: all grid().size() of them, or
+  // a distributed operator's slab. Fields passed to apply() and to solvers
+  // built on the operator have local_size() entries.
+  virtual std::size_t local_size() const { return grid().size(); }
+  // The processes the field is spread over: reductions over a field (sums,
+  // ranges) go through it (linalg/parallel.hpp).
+  virtual const linalg::Communicator& communicator() const { return linalg::serial_communicator(); }
 
   // displacement = K * pressure: normal surface displacement (m, positive into
   // the half-space) for piecewise-constant cell pressures (Pa). Both spans have
-  // grid().size() entries and are either the same array (in place, which
+  // local_size() entries and are either the same array (in place, which
   // saves a caller one field) or do not overlap. For periodic grids the mean
   // (q = 0) mode of the displacement is zero. Allocates nothing.
   virtual void apply(std::span<const double> pressure, std::span<double> displacement) = 0;

@@ -7,6 +7,7 @@
 #include "halfspace/grid.hpp"
 #include "halfspace/layered_material.hpp"
 #include "halfspace/solvers/contact_solver.hpp"
+#include "halfspace/solvers/polonsky_keer.hpp"
 #include "halfspace/solvers/solver_options.hpp"
 
 namespace halfspace::solvers {
@@ -23,5 +24,10 @@ std::unique_ptr<ContactSolver> make_solver(const Grid& grid, double e_star, cons
 // for the dense solvers (lemke, lcpquad), whose matrix is the homogeneous one.
 std::unique_ptr<ContactSolver> make_solver(const Grid& grid, const LayeredMaterial& material,
                                            const SolverOptions& options = {});
+
+// The Polonsky-Keer options of `options` at `tolerance`: its iteration limit,
+// progress and pressure bounds; the projected form (which takes a
+// preconditioner) if `projected`, else the paper's.
+PolonskyKeerOptions polonsky_keer_options(const SolverOptions& options, double tolerance, bool projected);
 
 }  // namespace halfspace::solvers

@@ -1,0 +1,51 @@
+// The serial program runs as one process; with HALFSPACE_MPI the MPI parts
+// live in apps/mpi/.
+#include "processes.hpp"
+
+#ifdef HALFSPACE_MPI
+#include "mpi/mpi_program.hpp"
+#endif
+
+namespace halfspace::app {
+
+#ifdef HALFSPACE_MPI
+
+Processes::Processes(int& argc, char**& argv) {
+  start_mpi(argc, argv);
+}
+Processes::~Processes() {
+  stop_mpi();
+}
+int process_count() {
+  return mpi_world().size();
+}
+bool prints_messages() {
+  return mpi_world().rank() == 0;
+}
+SolveSetup make_setup_everywhere(const std::function<SolveSetup(const SurfaceSharing& share)>& make) {
+  return make_distributed_setup(make);
+}
+std::optional<int> run_distributed_solve(const SolveSetup& setup) {
+  return run_solve_on_slabs(setup);
+}
+
+#else
+
+Processes::Processes(int& /*argc*/, char**& /*argv*/) {}
+Processes::~Processes() = default;
+int process_count() {
+  return 1;
+}
+bool prints_messages() {
+  return true;
+}
+SolveSetup make_setup_everywhere(const std::function<SolveSetup(const SurfaceSharing& share)>& make) {
+  return make(make_whole_surface);
+}
+std::optional<int> run_distributed_solve(const SolveSetup& /*setup*/) {
+  return std::nullopt;
+}
+
+#endif
+
+}  // namespace halfspace::app

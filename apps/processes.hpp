@@ -1,0 +1,46 @@
+// The processes the program runs as: one, or (built with HALFSPACE_MPI) the
+// MPI processes mpirun starts, which all run the same command. Only here and
+// in apps/mpi/ does the program know the difference.
+#pragma once
+
+#include <functional>
+#include <optional>
+
+#include "solve_setup.hpp"
+
+namespace halfspace::app {
+
+// For the program's lifetime: MPI's setup and teardown in an MPI build,
+// nothing otherwise.
+class Processes {
+ public:
+  Processes(int& argc, char**& argv);
+  ~Processes();
+  Processes(const Processes&) = delete;
+  Processes& operator=(const Processes&) = delete;
+};
+
+// How many processes run the program (1 in the serial build).
+int process_count();
+
+// Whether this process prints (messages, progress, summaries): the only one,
+// or the first of the MPI processes.
+bool prints_messages();
+
+// The setup of a solve on every process: make(share) checks the options and
+// makes the surface through `share` (make_solve_setup). In an MPI run every
+// process checks the options, the first reads or builds the surface and
+// hands the others their rows; if anything fails on any process, it throws
+// on all, the error of the first process that failed (one message, one exit
+// code, no process left waiting). The serial build calls
+// make(make_whole_surface).
+SolveSetup make_setup_everywhere(const std::function<SolveSetup(const SurfaceSharing& share)>& make);
+
+// Runs the single solve of `setup` distributed over the MPI processes and
+// returns the exit code; nullopt if it is to be solved by this process
+// alone (always in the serial build; on one MPI process, when the
+// distributed solver does not take it). Throws InputError, on every process,
+// for a solve that several processes cannot do yet.
+std::optional<int> run_distributed_solve(const SolveSetup& setup);
+
+}  // namespace halfspace::app

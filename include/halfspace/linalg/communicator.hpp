@@ -1,0 +1,41 @@
+// The processes a distributed field is spread over, as reductions see them.
+// Every reduction in linalg/parallel.hpp takes one, so that a problem solved
+// redundantly on every process (a small gathered one) reduces over one
+// process while the distributed one around it reduces over all.
+#pragma once
+
+#include <span>
+
+namespace halfspace::linalg {
+
+class Communicator {
+ public:
+  virtual ~Communicator() = default;
+  // How many processes hold parts of the field, and this one's index.
+  virtual int size() const = 0;
+  virtual int rank() const = 0;
+  // values[k] = the sum over the processes of their values[k], with the same
+  // bits on every process (a fixed order of addition).
+  virtual void sum(std::span<double> values) const = 0;
+  // The largest and smallest of the processes' values.
+  virtual double max(double local) const = 0;
+  virtual double min(double local) const = 0;
+};
+
+// One process holding the whole field: every reduction is the identity.
+class SerialCommunicator final : public Communicator {
+ public:
+  int size() const override { return 1; }
+  int rank() const override { return 0; }
+  void sum(std::span<double> /*values*/) const override {}
+  double max(double local) const override { return local; }
+  double min(double local) const override { return local; }
+};
+
+// The one SerialCommunicator, the default of every reduction.
+inline const Communicator& serial_communicator() {
+  static const SerialCommunicator serial;
+  return serial;
+}
+
+}  // namespace halfspace::linalg

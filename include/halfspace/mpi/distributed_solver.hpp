@@ -1,0 +1,35 @@
+// The contact solvers that run on a grid spread over MPI processes, and the
+// refusal of those that do not yet: what SolverOptions asks for is either
+// solved distributed or refused with a message that names the alternative,
+// never solved wrongly. Compiled only with HALFSPACE_MPI.
+#pragma once
+
+#include <memory>
+
+#include "halfspace/grid.hpp"
+#include "halfspace/mpi/mpi_communicator.hpp"
+#include "halfspace/solvers/contact_solver.hpp"
+#include "halfspace/solvers/solver_options.hpp"
+
+namespace halfspace::mpi {
+
+// Whether make_distributed_solver takes `options` on `grid`: a periodic 2D
+// grid, solver pk or pk-fourier without block deflation, no hardness cap,
+// no adhesion.
+bool distributable(const Grid& grid, const solvers::SolverOptions& options);
+
+// Throws SolverOptionError naming the option and what to use instead unless
+// distributable(grid, options), e.g. "type = pk-multilevel is not available
+// with more than one process yet: use solver pk-fourier".
+void check_distributable(const Grid& grid, const solvers::SolverOptions& options);
+
+// Polonsky-Keer (pk: the paper's form; pk-fourier: the projected form with
+// the Fourier preconditioner) on the slab operator of `grid` over `comm`,
+// which must outlive the solver. Fields given to and returned by the solver
+// hold this process's rows (slab_layout). Collective; throws as
+// check_distributable and SolverOptions::validate do.
+std::unique_ptr<solvers::ContactSolver> make_distributed_solver(const Grid& grid, double e_star,
+                                                                const solvers::SolverOptions& options,
+                                                                const MpiCommunicator& comm);
+
+}  // namespace halfspace::mpi

@@ -1,0 +1,40 @@
+// An MPI communicator as the reductions of linalg/parallel.hpp see it: sums
+// added in rank order (the same bits on every process, whatever algorithm
+// the MPI library picks), ranges by MPI_MAX and MPI_MIN. Compiled only with
+// HALFSPACE_MPI.
+#pragma once
+
+#include <mpi.h>
+
+#include <span>
+#include <vector>
+
+#include "halfspace/linalg/communicator.hpp"
+
+namespace halfspace::mpi {
+
+class MpiCommunicator final : public linalg::Communicator {
+ public:
+  // Uses `comm` (not owned: it must outlive this object). Collective.
+  explicit MpiCommunicator(MPI_Comm comm);
+
+  MPI_Comm get() const { return comm_; }
+  int size() const override { return size_; }
+  int rank() const override { return rank_; }
+  // Allocates only the first time it reduces more values than before.
+  void sum(std::span<double> values) const override;
+  double max(double local) const override;
+  double min(double local) const override;
+
+ private:
+  MPI_Comm comm_;
+  int size_ = 1;
+  int rank_ = 0;
+  mutable std::vector<double> gathered_;  // every process's values, rank by rank
+};
+
+// Throws std::runtime_error naming `call` unless `code` is MPI_SUCCESS (MPI's
+// default handler aborts first; this is for communicators that return).
+void check(int code, const char* call);
+
+}  // namespace halfspace::mpi

@@ -1,0 +1,54 @@
+// The periodic half-space's influence operator and the Fourier preconditioner
+// on a grid spread over MPI processes in slabs of rows: the distributed
+// counterparts of FftInfluenceOperator (periodic) and FourierPreconditioner,
+// with the same kernels (Stanley & Kato 1997) applied to the transposed
+// spectrum of SlabRealFft. Fields hold this process's rows only. Compiled
+// only with HALFSPACE_MPI.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "halfspace/grid.hpp"
+#include "halfspace/mpi/slab_fft.hpp"
+#include "halfspace/operators/influence_operator.hpp"
+#include "halfspace/solvers/preconditioner.hpp"
+
+namespace halfspace::mpi {
+
+class SlabFourierOperator final : public InfluenceOperator {
+ public:
+  // u = K p on the periodic 2D `grid` for composite modulus e_star (Pa),
+  // through `transform` (the grid's, shared with a preconditioner that runs
+  // between products). Throws InputError unless the grid is 2D and periodic
+  // and the transform is its own.
+  SlabFourierOperator(const Grid& grid, double e_star, std::shared_ptr<SlabRealFft> transform);
+
+  const Grid& grid() const override { return grid_; }
+  std::size_t local_size() const override { return transform_->layout().local_size(); }
+  const linalg::Communicator& communicator() const override { return transform_->communicator(); }
+  // Collective: every process applies the operator together.
+  void apply(std::span<const double> pressure, std::span<double> displacement) override;
+  double self_influence() const override { return self_; }
+
+ private:
+  Grid grid_;
+  std::shared_ptr<SlabRealFft> transform_;
+  std::vector<double> kernel_;  // 2/(E*|q|)/N on this process's spectrum columns
+  double self_ = 0.0;
+};
+
+class SlabFourierPreconditioner final : public solvers::Preconditioner {
+ public:
+  // M^-1 = E*|q|/2, the mean mode at the smallest non-zero |q|, as
+  // FourierPreconditioner; `transform` as for the operator.
+  SlabFourierPreconditioner(const Grid& grid, double e_star, std::shared_ptr<SlabRealFft> transform);
+  // Collective.
+  void apply(std::span<const double> in, std::span<double> out) override;
+
+ private:
+  std::shared_ptr<SlabRealFft> transform_;
+  std::vector<double> symbol_;  // E*|q|/(2N) on this process's spectrum columns
+};
+
+}  // namespace halfspace::mpi

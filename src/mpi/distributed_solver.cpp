@@ -1,0 +1,94 @@
+// Polonsky-Keer on a slab-distributed periodic grid: the serial solver loop
+// (polonsky_keer.cpp) unchanged, over the slab operator and preconditioner,
+// whose reductions go through the operator's communicator.
+#include "halfspace/mpi/distributed_solver.hpp"
+
+#include <fmt/format.h>
+
+#include <utility>
+
+#include "halfspace/mpi/slab_fft.hpp"
+#include "halfspace/mpi/slab_fourier_operator.hpp"
+#include "halfspace/solvers/polonsky_keer.hpp"
+#include "halfspace/solvers/solver_factory.hpp"
+
+namespace halfspace::mpi {
+namespace {
+
+using solvers::SolverOptionError;
+using solvers::SolverType;
+
+// The solver with the operator and preconditioner it references.
+class DistributedSolver final : public solvers::ContactSolver {
+ public:
+  DistributedSolver(std::unique_ptr<SlabFourierOperator> op, std::unique_ptr<SlabFourierPreconditioner> fourier,
+                    const solvers::PolonskyKeerOptions& options)
+      : op_(std::move(op)), fourier_(std::move(fourier)), solver_(*op_, options, fourier_.get()) {}
+
+  std::string_view name() const override { return solver_.name(); }
+  SolveResult solve(std::span<const double> initial_gap, const Loading& loading,
+                    std::span<const double> initial_pressure) override {
+    return solver_.solve(initial_gap, loading, initial_pressure);
+  }
+  SolveResult solve_from(std::span<const double> initial_gap, const Loading& loading, Eigen::ArrayXd&& start) override {
+    return solver_.solve_from(initial_gap, loading, std::move(start));
+  }
+
+ private:
+  std::unique_ptr<SlabFourierOperator> op_;
+  std::unique_ptr<SlabFourierPreconditioner> fourier_;
+  solvers::PolonskyKeer solver_;
+};
+
+constexpr const char* kNotYet = "is not available with more than one process yet";
+
+}  // namespace
+
+bool distributable(const Grid& grid, const solvers::SolverOptions& options) {
+  try {
+    check_distributable(grid, options);
+  } catch (const SolverOptionError&) {
+    return false;
+  }
+  return true;
+}
+
+void check_distributable(const Grid& grid, const solvers::SolverOptions& options) {
+  if (grid.dimension() != 2 || !grid.periodic()) {
+    throw SolverOptionError(
+        "grid", fmt::format("{} ({}D, {})", grid.shape_string(), grid.dimension(), to_string(grid.boundary())),
+        fmt::format("{}: only periodic 2D grids are distributed", kNotYet));
+  }
+  if (options.adhesion) {
+    throw SolverOptionError("adhesion", std::string(to_string(options.adhesion->law.type)),
+                            fmt::format("{}: solve adhesive contacts on one process", kNotYet));
+  }
+  if (options.interface_law.hardness) {
+    throw SolverOptionError("hardness", fmt::format("{}", *options.interface_law.hardness),
+                            fmt::format("{}: solve capped contacts on one process", kNotYet));
+  }
+  if (options.type != SolverType::pk && options.type != SolverType::pk_fourier) {
+    throw SolverOptionError("type", std::string(to_string(options.type)),
+                            fmt::format("{}: use solver pk-fourier (or pk)", kNotYet));
+  }
+  if (options.deflation.mode == solvers::DeflationOptions::Mode::on) {
+    throw SolverOptionError("deflation block", fmt::format("{}", options.deflation.block),
+                            fmt::format("{}: use no block deflation (0)", kNotYet));
+  }
+}
+
+std::unique_ptr<solvers::ContactSolver> make_distributed_solver(const Grid& grid, double e_star,
+                                                                const solvers::SolverOptions& options,
+                                                                const MpiCommunicator& comm) {
+  options.validate(grid);
+  check_distributable(grid, options);
+  const bool projected = options.type == SolverType::pk_fourier;
+  auto transform = std::make_shared<SlabRealFft>(grid.nx(), grid.ny(), comm, options.fft_planning);
+  auto op = std::make_unique<SlabFourierOperator>(grid, e_star, transform);
+  std::unique_ptr<SlabFourierPreconditioner> fourier;
+  if (projected) fourier = std::make_unique<SlabFourierPreconditioner>(grid, e_star, transform);
+  return std::make_unique<DistributedSolver>(std::move(op), std::move(fourier),
+                                             solvers::polonsky_keer_options(options, options.tolerance, projected));
+}
+
+}  // namespace halfspace::mpi

@@ -1,0 +1,102 @@
+// The periodic kernel 2/(E*|q|) and its inverse on the transposed spectrum of
+// a slab-distributed grid. The multipliers are computed for this process's
+// columns kx only; K_ii and the preconditioner's mean mode are computed from
+// the whole grid in the serial classes' order, so they have the serial bits.
+#include "halfspace/mpi/slab_fourier_operator.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <utility>
+
+#include "halfspace/error.hpp"
+#include "halfspace/kernels/periodic_fourier.hpp"
+#include "halfspace/linalg/parallel.hpp"
+#include "halfspace/material.hpp"
+
+namespace halfspace::mpi {
+namespace {
+
+std::shared_ptr<SlabRealFft> checked_transform(const Grid& grid, std::shared_ptr<SlabRealFft> transform,
+                                               const char* who) {
+  if (grid.dimension() != 2 || !grid.periodic()) {
+    throw InputError(fmt::format("{}: the distributed operator needs a periodic 2D grid, not a {} {}D one", who,
+                                 to_string(grid.boundary()), grid.dimension()));
+  }
+  if (!transform || transform->layout().nx != grid.nx() || transform->layout().ny != grid.ny()) {
+    throw InputError(fmt::format("{}: the transform is not the {} grid's", who, grid.shape_string()));
+  }
+  return transform;
+}
+
+// f(|q|) on this process's spectrum columns, [c * ny + r] (SlabRealFft).
+template <class Multiplier>
+std::vector<double> on_local_spectrum(const Grid& grid, const SlabLayout& layout, Multiplier&& multiplier) {
+  std::vector<double> values(layout.columns * layout.ny);
+  linalg::for_each_row(layout.columns, layout.ny, [&](std::size_t c) {
+    const double qx = kernels::dft_wavenumber(layout.first_column + c, grid.nx(), grid.dx());
+    for (std::size_t r = 0; r < layout.ny; ++r) {
+      values[c * layout.ny + r] = multiplier(std::hypot(qx, kernels::dft_wavenumber(r, grid.ny(), grid.dy())));
+    }
+  });
+  return values;
+}
+
+// spectrum *= multiplier, then the inverse transform into `out`.
+void multiply_and_invert(SlabRealFft& fft, const std::vector<double>& multiplier, std::span<double> out) {
+  std::span<std::complex<double>> spectrum = fft.spectrum();
+  linalg::for_each_index(spectrum.size(), [&](std::size_t k) { spectrum[k] *= multiplier[k]; });
+  fft.backward(out);
+}
+
+}  // namespace
+
+SlabFourierOperator::SlabFourierOperator(const Grid& grid, double e_star, std::shared_ptr<SlabRealFft> transform)
+    : grid_(grid), transform_(checked_transform(grid, std::move(transform), "SlabFourierOperator")) {
+  e_star = checked_composite_modulus(e_star);
+  // FFTW's transforms are unnormalised: fold 1/N into the kernel.
+  const double inverse_n = 1.0 / static_cast<double>(grid.size());
+  kernel_ = on_local_spectrum(grid, transform_->layout(),
+                              [&](double q) { return kernels::periodic_kernel_spectrum(q, e_star) * inverse_n; });
+  // K_ii = (1/N) sum over the whole spectrum, in FftInfluenceOperator's order.
+  double sum = 0.0;
+  for (std::size_t r = 0; r < grid.ny(); ++r) {
+    const double qy = kernels::dft_wavenumber(r, grid.ny(), grid.dy());
+    for (std::size_t c = 0; c < grid.nx(); ++c) {
+      sum +=
+          kernels::periodic_kernel_spectrum(std::hypot(kernels::dft_wavenumber(c, grid.nx(), grid.dx()), qy), e_star);
+    }
+  }
+  self_ = sum * inverse_n;
+}
+
+void SlabFourierOperator::apply(std::span<const double> pressure, std::span<double> displacement) {
+  assert(pressure.size() == local_size() && displacement.size() == local_size());
+  transform_->forward(pressure);
+  multiply_and_invert(*transform_, kernel_, displacement);
+}
+
+SlabFourierPreconditioner::SlabFourierPreconditioner(const Grid& grid, double e_star,
+                                                     std::shared_ptr<SlabRealFft> transform)
+    : transform_(checked_transform(grid, std::move(transform), "SlabFourierPreconditioner")) {
+  const double scale = 0.5 * checked_composite_modulus(e_star) / static_cast<double>(grid.size());
+  symbol_ = on_local_spectrum(grid, transform_->layout(), [&](double q) { return q * scale; });
+  // The mean mode (zero above) gets the smallest non-zero |q|, the first
+  // harmonic along x or y (hypot(q, 0) = q exactly, as FourierPreconditioner
+  // finds it).
+  const SlabLayout& layout = transform_->layout();
+  if (layout.first_column == 0 && layout.columns > 0) {
+    const double q_min =
+        std::min(kernels::dft_wavenumber(1, grid.nx(), grid.dx()), kernels::dft_wavenumber(1, grid.ny(), grid.dy()));
+    symbol_[0] = q_min * scale;
+  }
+}
+
+void SlabFourierPreconditioner::apply(std::span<const double> in, std::span<double> out) {
+  transform_->forward(in);
+  multiply_and_invert(*transform_, symbol_, out);
+}
+
+}  // namespace halfspace::mpi

@@ -1,0 +1,177 @@
+#!/usr/bin/env python3
+"""The MPI program against the serial one (HALFSPACE_MPI builds; ctest runs it).
+
+usage: distributed_solve_test.py MPI_PROGRAM SERIAL_PROGRAM MPIEXEC SOURCE_DIR WORK_DIR
+
+For periodic Hertz and rough contacts, `mpiexec -np 1, 2 and 3 MPI_PROGRAM
+solve` (3 gives uneven slabs) must write the serial program's file: the same
+datasets, shapes, types and attributes, fields equal within kFieldTolerance
+of their largest value, the contact set identical. Failures (a bad file,
+which only the first process reads; an invalid option; a solve not
+distributed yet) must end every process with one message and the serial
+exit code, and write nothing.
+"""
+import os
+import subprocess
+import sys
+
+import h5py
+import numpy as np
+
+# The distributed reductions add the processes' partial sums in another order
+# than the serial fixed blocks, and FFTW-MPI's transforms round differently
+# from the serial ones: equal to rounding, not bitwise.
+kFieldTolerance = 1e-12
+# Attributes that record the run rather than the result (present in both,
+# values not compared): the solve's wall time, the program's path in the
+# command line, and the version with the git hash of the build, which differs
+# when the two builds were made at different commits.
+kRunAttributes = {"solve_seconds", "command_line", "halfspace_version"}
+# The residual at convergence is rounding itself (1e-19 here): compared as
+# the relative quantity it is, not relative to itself.
+kAbsoluteAttributes = {"residual"}
+kProcessCounts = (1, 2, 3)
+kExitInputError = 1
+
+mpi_program, serial_program, mpiexec, source_dir, work_dir = sys.argv[1:6]
+os.makedirs(work_dir, exist_ok=True)
+environment = dict(os.environ, OMP_NUM_THREADS="1", OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+                   OMPI_MCA_rmaps_base_oversubscribe="1", HALFSPACE_FFTW_WISDOM="off")
+failures = []
+
+
+def run(command):
+    return subprocess.run(command, env=environment, capture_output=True, text=True, timeout=300)
+
+
+def run_mpi(processes, arguments):
+    return run([mpiexec, "--oversubscribe", "-np", str(processes), mpi_program] + arguments)
+
+
+def fail(message):
+    print("FAIL: " + message)
+    failures.append(message)
+
+
+def attributes(node):
+    return {name: node.attrs[name] for name in node.attrs}
+
+
+def compare_attributes(where, got, want):
+    if set(got) != set(want):
+        fail(f"{where}: attributes differ: only distributed {sorted(set(got) - set(want))}, "
+             f"only serial {sorted(set(want) - set(got))}")
+    for name in sorted(set(got) & set(want)):
+        if name in kRunAttributes:
+            continue
+        a, b = got[name], want[name]
+        if isinstance(b, (float, np.floating)) and not isinstance(b, (bool, np.bool_)):
+            scale = 1.0 if name in kAbsoluteAttributes else max(abs(float(b)), 1e-300)
+            if abs(float(a) - float(b)) > kFieldTolerance * scale:
+                fail(f"{where}: attribute {name} = {a!r}, serial {b!r} (relative {abs(a - b) / scale:.2e})")
+        elif not np.array_equal(np.asarray(a), np.asarray(b)):
+            fail(f"{where}: attribute {name} = {a!r}, serial {b!r}")
+
+
+def compare_files(where, got_path, want_path):
+    with h5py.File(got_path, "r") as got, h5py.File(want_path, "r") as want:
+        compare_attributes(where + " /", attributes(got), attributes(want))
+        names = []
+        want.visit(names.append)
+        got_names = []
+        got.visit(got_names.append)
+        if sorted(names) != sorted(got_names):
+            fail(f"{where}: objects differ: {sorted(got_names)} vs serial {sorted(names)}")
+            return
+        worst = 0.0
+        for name in names:
+            if not isinstance(want[name], h5py.Dataset):
+                compare_attributes(f"{where} /{name}", attributes(got[name]), attributes(want[name]))
+                continue
+            a, b = got[name], want[name]
+            compare_attributes(f"{where} /{name}", attributes(a), attributes(b))
+            if a.shape != b.shape or a.dtype != b.dtype:
+                fail(f"{where}: /{name} is {a.shape} {a.dtype}, serial {b.shape} {b.dtype}")
+                continue
+            x, y = a[()], b[()]
+            if np.issubdtype(y.dtype, np.floating):
+                scale = max(float(np.max(np.abs(y))), 1e-300)
+                error = np.abs(x - y) / scale
+                where_worst = np.unravel_index(int(np.argmax(error)), error.shape)
+                worst = max(worst, float(np.max(error)))
+                if float(np.max(error)) > kFieldTolerance:
+                    fail(f"{where}: /{name} differs by {float(np.max(error)):.2e} of its largest value at "
+                         f"{where_worst} (allowed {kFieldTolerance:.0e})")
+            elif not np.array_equal(x, y):
+                fail(f"{where}: /{name} differs in {int(np.count_nonzero(x != y))} cells")
+        print(f"{where}: largest field difference {worst:.2e} of the field's largest value")
+
+
+def solve_case(name, arguments, process_counts=kProcessCounts):
+    serial_output = os.path.join(work_dir, f"{name}-serial.h5")
+    serial = run([serial_program, "solve"] + arguments + ["--output", serial_output])
+    if serial.returncode != 0:
+        fail(f"{name}: the serial program failed ({serial.returncode}): {serial.stderr.strip()}")
+        return
+    for processes in process_counts:
+        output = os.path.join(work_dir, f"{name}-np{processes}.h5")
+        if os.path.exists(output):
+            os.remove(output)
+        distributed = run_mpi(processes, ["solve"] + arguments + ["--output", output])
+        where = f"{name}, {processes} processes"
+        if distributed.returncode != 0:
+            fail(f"{where}: exit {distributed.returncode}: {distributed.stderr.strip()}")
+            continue
+        compare_files(where, output, serial_output)
+        leftovers = [f for f in os.listdir(work_dir) if ".tmp-" in f]
+        if leftovers:
+            fail(f"{where}: temporaries left behind: {leftovers}")
+
+
+def failure_case(name, processes, arguments, message, output):
+    result = run_mpi(processes, ["solve"] + arguments + ["--output", output])
+    where = f"{name}, {processes} processes"
+    errors = [line for line in result.stderr.splitlines() if line.startswith("error:")]
+    if result.returncode != kExitInputError:
+        fail(f"{where}: exit {result.returncode}, expected {kExitInputError}; stderr: {result.stderr.strip()}")
+    if len(errors) != 1 or message not in errors[0]:
+        fail(f"{where}: expected one error line containing {message!r}, got {errors}")
+    if os.path.exists(output):
+        fail(f"{where}: the output {output} was written")
+    print(f"{where}: {errors[0] if errors else result.stderr.strip()}")
+
+
+common = ["--E-star", "1e11", "--threads", "1", "--fft-planning", "estimate", "--quiet"]
+# Hertz: a sphere on a periodic 64 x 50 grid (50 rows: 17, 17 and 16 on 3
+# processes), load controlled, both forms of Polonsky-Keer.
+hertz = ["--geometry", "sphere", "--radius", "0.01", "--grid", "64x50", "--size", "1e-3x0.78125e-3",
+         "--boundary", "periodic", "--force", "5"] + common
+solve_case("hertz-pk-fourier", hertz + ["--solver", "pk-fourier", "--tol", "1e-12"])
+solve_case("hertz-pk", hertz + ["--solver", "pk", "--tol", "1e-12"])
+# Rough: the self-affine 128 x 128 example surface, periodic, under
+# displacement and load control.
+rough = ["--height-map", os.path.join(source_dir, "examples", "self_affine_128.h5"), "--boundary", "periodic",
+         "--solver", "pk-fourier", "--tol", "1e-12"] + common
+solve_case("rough-force", rough + ["--mean-pressure", "2e8"])
+solve_case("rough-approach", rough + ["--approach", "1e-6"])
+# On one process the MPI program solves what is not distributed yet as the
+# serial program does: the default solver, pk-multilevel.
+solve_case("hertz-one-process-multilevel", hertz + ["--solver", "pk-multilevel", "--tol", "1e-12"], (1,))
+
+missing = os.path.join(work_dir, "failure.h5")
+for processes in (2, 3):
+    failure_case("bad file", processes, ["--height-map", os.path.join(work_dir, "no-such-map.h5"), "--boundary",
+                                         "periodic", "--mean-pressure", "1e6", "--solver", "pk-fourier"] + common,
+                 "no-such-map.h5", missing)
+    failure_case("invalid option", processes, hertz + ["--solver", "pk-fourier", "--tol", "2"], "tol", missing)
+    failure_case("not distributed yet", processes, hertz + ["--solver", "pk-multilevel"],
+                 "is not available with more than one process yet", missing)
+    failure_case("1D not distributed yet", processes,
+                 ["--geometry", "cylinder", "--radius", "0.01", "--grid", "64", "--size", "1e-3", "--boundary",
+                  "periodic", "--force", "1e3", "--solver", "pk-fourier"] + common,
+                 "is not available with more than one process yet", missing)
+
+if failures:
+    print(f"{len(failures)} failure(s)")
+    sys.exit(1)
+print("all distributed solves match the serial program")
