@@ -200,8 +200,8 @@ std::complex<double> layered_stress_component(Component component, double kx, do
     }
   }
   const double q = std::sqrt(q2);
-  const double along = profile.g2;                        // sigma_x'x'
-  const double across = nu * (profile.g2 - profile.g);    // sigma_y'y', plane strain
+  const double along = profile.g2;                      // sigma_x'x'
+  const double across = nu * (profile.g2 - profile.g);  // sigma_y'y', plane strain
   switch (component) {
     case Component::xx:
       return (kx * kx * along + ky * ky * across) / q2;

@@ -22,9 +22,8 @@ LayeredMaterial coating(double t, double e1, double nu1, double e2, double nu2) 
 // Soft on hard, hard on soft, an auxetic layer, a nearly incompressible one,
 // and moduli a thousand times apart either way.
 std::vector<LayeredMaterial> material_pairs(double t) {
-  return {coating(t, 2e9, 0.4, 200e9, 0.3),   coating(t, 400e9, 0.25, 100e9, 0.35),
-          coating(t, 50e9, -0.5, 70e9, 0.2),  coating(t, 1e7, 0.4999, 1e9, 0.3),
-          coating(t, 1e12, 0.3, 1e9, 0.3),    coating(t, 1e9, 0.3, 1e12, 0.5)};
+  return {coating(t, 2e9, 0.4, 200e9, 0.3),  coating(t, 400e9, 0.25, 100e9, 0.35), coating(t, 50e9, -0.5, 70e9, 0.2),
+          coating(t, 1e7, 0.4999, 1e9, 0.3), coating(t, 1e12, 0.3, 1e9, 0.3),      coating(t, 1e9, 0.3, 1e12, 0.5)};
 }
 
 // Wavevectors with |k| = q in three directions (along x, along y, oblique).
@@ -103,7 +102,8 @@ TEST(LayeredFourierStressTest, SurfaceIsLoadedByThePressureOnlyAndTheInterfaceIs
         const auto above = layered.stress(kx, ky, layered.profile(mode, t, Body::layer), Body::layer);
         const auto below = layered.stress(kx, ky, layered.profile(mode, t, Body::substrate), Body::substrate);
         double scale = 0.0;
-        for (std::size_t c = 0; c < kComponentCount; ++c) scale = std::max({scale, std::abs(above[c]), std::abs(below[c])});
+        for (std::size_t c = 0; c < kComponentCount; ++c)
+          scale = std::max({scale, std::abs(above[c]), std::abs(below[c])});
         for (const std::size_t c : {2u, 4u, 5u}) {
           EXPECT_NEAR(std::abs(above[c] - below[c]), 0.0, kRoundoff * scale)
               << kComponentNames[c] << " continuous at q t = " << s << ", E1 = " << material.layer.youngs_modulus;

@@ -74,8 +74,8 @@ TEST(LayeredSubsurfaceStressTest, PeriodicFourierModeMatchesThePerModeSolution) 
       const auto uniform = layered.stress(0.0, 0.0, layered.profile(uniform_mode, z, body), body);
       for (std::size_t k = 0; k < grid.size(); ++k) {
         for (std::size_t c = 0; c < kComponentCount; ++c) {
-          const double expected = mean * uniform[c].real() +
-                                  (wave[c] * std::complex<double>(a, -b) * std::polar(1.0, phase_of(k))).real();
+          const double expected =
+              mean * uniform[c].real() + (wave[c] * std::complex<double>(a, -b) * std::polar(1.0, phase_of(k))).real();
           ASSERT_NEAR(values[c][k], expected, kRoundoff * a)
               << kComponentNames[c] << " at cell " << k << ", z = " << z << (line ? " (1D)" : " (2D)");
         }
