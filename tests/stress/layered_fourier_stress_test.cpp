@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 #include "halfspace/kernels/layered_fourier.hpp"
@@ -68,8 +69,9 @@ TEST(LayeredFourierStressTest, SurfaceDisplacementEqualsTheLayeredKernel) {
   // Two independent solutions of the same conditions (Stanley & Kato's closed
   // form and this 6 x 6 solve): round-off amplified by the system's condition,
   // largest for a stiff layer on a soft substrate at small q t.
-  constexpr double kAgreement = 1e-9;
+  constexpr double kAgreement = 1e-11;  // measured 4e-14
   const double t = 2e-6;
+  double worst = 0.0;
   for (const LayeredMaterial& material : material_pairs(t)) {
     const LayeredFourierStress layered(material);
     const kernels::LayeredKernel kernel(material);
@@ -79,8 +81,10 @@ TEST(LayeredFourierStressTest, SurfaceDisplacementEqualsTheLayeredKernel) {
       const double got = layered.surface_displacement(layered.solve(q));
       EXPECT_NEAR(got / expected, 1.0, kAgreement) << "E1 = " << material.layer.youngs_modulus
                                                    << ", E2 = " << material.substrate.youngs_modulus << ", q t = " << s;
+      worst = std::max(worst, std::abs(got / expected - 1.0));
     }
   }
+  std::printf("surface displacement against the layered kernel: largest relative difference %.3g\n", worst);
 }
 
 TEST(LayeredFourierStressTest, SurfaceIsLoadedByThePressureOnlyAndTheInterfaceIsBonded) {
