@@ -47,70 +47,91 @@ double LayeredFourierStress::poisson_ratio(Body body) const {
   return body == Body::layer ? material_.layer.poissons_ratio : material_.substrate.poissons_ratio;
 }
 
-LayeredMode LayeredFourierStress::solve(double q) const {
-  LayeredMode mode;
-  mode.q = std::abs(q);
-  if (mode.q == 0.0) return mode;
-  const double s = mode.q * material_.thickness;
-  mode.thin = s <= 1.0;
-  // The layer's g^(j)(s) = values[j][k] x_k + constants[j] over its unknowns x.
-  constexpr int kMaxLayerUnknowns = 4;
-  double values[4][kMaxLayerUnknowns] = {};
+namespace {
+
+// The layer's g, g', g'', g''' at zeta = s as linear functions of its
+// unknowns x: g^(j)(s) = values[j] . x + constants[j].
+struct LayerInterface {
+  int unknowns = 0;
+  double values[4][4] = {};
   double constants[4] = {};
-  int layer_unknowns = 0;
-  if (mode.thin) {
-    layer_unknowns = 2;  // g''(0), g'''(0); g(0) = 1 and g'(0) = 0 are built in
+};
+
+LayerInterface layer_interface(double s, bool thin) {
+  LayerInterface layer;
+  if (thin) {
+    layer.unknowns = 2;  // g''(0), g'''(0); g(0) = 1 and g'(0) = 0 are built in
     const double c = std::cosh(s);
     const double sh = std::sinh(s);
     const double phi0[4] = {c - 0.5 * s * sh, 0.5 * (sh - s * c), -0.5 * s * sh, -0.5 * (sh + s * c)};
     const double phi2[4] = {0.5 * s * sh, 0.5 * (sh + s * c), c + 0.5 * s * sh, 0.5 * (3.0 * sh + s * c)};
     const double phi3[4] = {0.5 * (s * c - sh), 0.5 * s * sh, 0.5 * (sh + s * c), c + 0.5 * s * sh};
     for (int j = 0; j < 4; ++j) {
-      constants[j] = phi0[j];
-      values[j][0] = phi2[j];
-      values[j][1] = phi3[j];
+      layer.constants[j] = phi0[j];
+      layer.values[j][0] = phi2[j];
+      layer.values[j][1] = phi3[j];
     }
   } else {
-    layer_unknowns = 4;  // a, b, c, d
+    layer.unknowns = 4;  // a, b, c, d
     const double e = std::exp(-s);
     const double b_terms[4] = {s * e, (1.0 - s) * e, (s - 2.0) * e, (3.0 - s) * e};
     for (int j = 0; j < 4; ++j) {
-      values[j][0] = (j % 2 == 0 ? 1.0 : -1.0) * e;
-      values[j][1] = b_terms[j];
-      values[j][2] = 1.0;
-      values[j][3] = static_cast<double>(j);
+      layer.values[j][0] = (j % 2 == 0 ? 1.0 : -1.0) * e;
+      layer.values[j][1] = b_terms[j];
+      layer.values[j][2] = 1.0;
+      layer.values[j][3] = static_cast<double>(j);
     }
   }
+  return layer;
+}
 
-  const int n = layer_unknowns + 2;
+// The weights of g, g', g'', g''' in the four interface conditions (g, g',
+// in-plane strain, vertical displacement) of a body of Poisson's ratio nu,
+// the last two times `weight` (its 1/mu, scaled).
+struct ConditionRows {
+  double weights[4][4];
+};
+
+ConditionRows condition_rows(double nu, double weight) {
+  return {{{1.0, 0.0, 0.0, 0.0},
+           {0.0, 1.0, 0.0, 0.0},
+           {weight * nu, 0.0, weight * (1.0 - nu), 0.0},
+           {0.0, weight * (2.0 - nu), 0.0, -weight * (1.0 - nu)}}};
+}
+
+}  // namespace
+
+LayeredMode LayeredFourierStress::solve(double q) const {
+  LayeredMode mode;
+  mode.q = std::abs(q);
+  if (mode.q == 0.0) return mode;
+  const double s = mode.q * material_.thickness;
+  mode.thin = s <= 1.0;
+  // 1. The layer's values at the interface over its unknowns.
+  const LayerInterface layer = layer_interface(s, mode.thin);
+  const int n = layer.unknowns + 2;
+
+  // 2. The interface conditions. The strain and displacement rows are
+  // (layer)/mu1 = (substrate)/mu2, scaled so that neither side's
+  // coefficients exceed their own size when mu1/mu2 is extreme.
+  const double g = shear_modulus_ratio_;
+  const ConditionRows layer_rows = condition_rows(material_.layer.poissons_ratio, 1.0 / std::max(g, 1.0));
+  const ConditionRows substrate_rows = condition_rows(material_.substrate.poissons_ratio, std::min(g, 1.0));
   Eigen::Matrix<double, 6, 6> matrix = Eigen::Matrix<double, 6, 6>::Zero();
   Eigen::Matrix<double, 6, 1> rhs = Eigen::Matrix<double, 6, 1>::Zero();
-  const double nu1 = material_.layer.poissons_ratio;
-  const double nu2 = material_.substrate.poissons_ratio;
-  // The displacement rows are (layer)/mu1 = (substrate)/mu2, scaled so that
-  // neither side's coefficients exceed their own size when mu1/mu2 is extreme.
-  const double g = shear_modulus_ratio_;
-  const double layer_weight = 1.0 / std::max(g, 1.0);
-  const double substrate_weight = std::min(g, 1.0);
-  // Row weights of the layer's g, g', g'', g''' and the substrate's, for the
-  // four interface conditions (g, g', strain, displacement).
-  const double layer_rows[4][4] = {{1.0, 0.0, 0.0, 0.0},
-                                   {0.0, 1.0, 0.0, 0.0},
-                                   {layer_weight * nu1, 0.0, layer_weight * (1.0 - nu1), 0.0},
-                                   {0.0, layer_weight * (2.0 - nu1), 0.0, -layer_weight * (1.0 - nu1)}};
-  const double substrate_rows[4][4] = {{1.0, 0.0, 0.0, 0.0},
-                                       {0.0, 1.0, 0.0, 0.0},
-                                       {substrate_weight * nu2, 0.0, substrate_weight * (1.0 - nu2), 0.0},
-                                       {0.0, substrate_weight * (2.0 - nu2), 0.0, -substrate_weight * (1.0 - nu2)}};
   for (int row = 0; row < 4; ++row) {
     for (int j = 0; j < 4; ++j) {
-      for (int k = 0; k < layer_unknowns; ++k) matrix(row, k) += layer_rows[row][j] * values[j][k];
-      rhs(row) -= layer_rows[row][j] * constants[j];
-      for (int k = 0; k < 2; ++k) matrix(row, layer_unknowns + k) -= substrate_rows[row][j] * kSubstrateValues[j][k];
+      const double w = layer_rows.weights[row][j];
+      for (int k = 0; k < layer.unknowns; ++k) matrix(row, k) += w * layer.values[j][k];
+      rhs(row) -= w * layer.constants[j];
+      for (int k = 0; k < 2; ++k) {
+        matrix(row, layer.unknowns + k) -= substrate_rows.weights[row][j] * kSubstrateValues[j][k];
+      }
     }
   }
+  // 3. The surface, in the exponential basis (the other has it built in):
+  // g(0) = a + (c - d s) e^{-s} = 1, g'(0) = b - a + (c + d - d s) e^{-s} = 0.
   if (!mode.thin) {
-    // The surface: g(0) = a + (c - d s) e^{-s} = 1, g'(0) = b - a + (c + d - d s) e^{-s} = 0.
     const double e = std::exp(-s);
     matrix(4, 0) = 1.0;
     matrix(4, 2) = e;
@@ -121,6 +142,7 @@ LayeredMode LayeredFourierStress::solve(double q) const {
     matrix(5, 2) = e;
     matrix(5, 3) = (1.0 - s) * e;
   }
+  // 4. Full-pivoting LU of the 4 x 4 or 6 x 6 system.
   Eigen::Matrix<double, 6, 1> x;
   if (n == 4) {
     const Eigen::Matrix4d m4 = matrix.topLeftCorner<4, 4>();
@@ -129,8 +151,8 @@ LayeredMode LayeredFourierStress::solve(double q) const {
   } else {
     x = matrix.fullPivLu().solve(rhs);
   }
-  for (int k = 0; k < layer_unknowns; ++k) mode.layer[static_cast<std::size_t>(k)] = x(k);
-  mode.substrate = {x(layer_unknowns), x(layer_unknowns + 1)};
+  for (int k = 0; k < layer.unknowns; ++k) mode.layer[static_cast<std::size_t>(k)] = x(k);
+  mode.substrate = {x(layer.unknowns), x(layer.unknowns + 1)};
   return mode;
 }
 
