@@ -64,11 +64,14 @@ int run_solve(const SolveSetup& setup) {
   std::optional<stress::StressVolume> stresses;
   if (!setup.stress_depths.empty()) {
     activity.emplace(fmt::format("computing stresses at {} depths", setup.stress_depths.size()));
-    stresses = stress::compute_stress_volume(
-        setup.grid, std::span<const double>(result.pressure.data(), static_cast<std::size_t>(result.pressure.size())),
-        setup.stress_depths, setup.stress_nu, setup.solver.fft_planning);
+    const std::span<const double> pressure(result.pressure.data(), static_cast<std::size_t>(result.pressure.size()));
+    stresses = setup.coating ? stress::compute_stress_volume(setup.grid, pressure, setup.stress_depths, *setup.coating,
+                                                             setup.solver.fft_planning)
+                             : stress::compute_stress_volume(setup.grid, pressure, setup.stress_depths, setup.stress_nu,
+                                                             setup.solver.fft_planning);
     metadata.extra_groups = [&](const io::Hdf5Node& root) {
-      io::write_stress_group(root, setup.grid, *stresses, setup.stress_nu);
+      io::write_stress_group(root, setup.grid, *stresses,
+                             setup.coating ? setup.coating->layer.poissons_ratio : setup.stress_nu);
     };
   }
   activity.emplace(fmt::format("writing {}", setup.output.string()));

@@ -604,7 +604,7 @@ struct StressRequest {
   double nu = 0.0;
 };
 
-StressRequest stress_request_from(const SolveOptions& o, std::size_t load_steps) {
+StressRequest stress_request_from(const SolveOptions& o, std::size_t load_steps, bool coated) {
   if (!o.stress_depths) {
     if (o.stress_nu) throw InputError(fmt::format("{} needs --stress-depths", o.describe("stress-nu")));
     return {};
@@ -617,7 +617,15 @@ StressRequest stress_request_from(const SolveOptions& o, std::size_t load_steps)
   StressRequest request;
   request.depths =
       parse_stress_depths(range ? nullptr : &*o.stress_depths, range ? &*o.stress_depths : nullptr, "stress-");
-  if (o.stress_nu) {
+  if (coated) {
+    // Each body's own Poisson's ratio: --layer-nu and --substrate-nu.
+    if (o.stress_nu) {
+      throw InputError(fmt::format(
+          "{} is not used for a coated half-space: the stresses take --layer-nu in the layer and --substrate-nu "
+          "below it; drop --stress-nu",
+          o.describe("stress-nu")));
+    }
+  } else if (o.stress_nu) {
     request.nu = parse_stress_poisson_ratio(fmt::format("{}", *o.stress_nu), "--stress-nu");
   } else if (o.nu1 && o.nu2 && *o.nu1 == *o.nu2) {
     request.nu = parse_stress_poisson_ratio(fmt::format("{}", *o.nu1), "--nu1");
@@ -629,10 +637,10 @@ StressRequest stress_request_from(const SolveOptions& o, std::size_t load_steps)
 
 // The peak while the stresses are computed and written after the solve: the
 // heights and the result's fields (5 arrays) kept, and the stress volume.
-double stress_peak_memory(const Grid& grid, std::size_t depth_count) {
+double stress_peak_memory(const Grid& grid, std::size_t depth_count, bool coated) {
   if (depth_count == 0) return 0.0;
   return kProgramBytes + 6.0 * 8.0 * static_cast<double>(grid.size()) +
-         stress::stress_memory_estimate(grid, depth_count);
+         stress::stress_memory_estimate(grid, depth_count, coated);
 }
 
 }  // namespace
@@ -652,7 +660,7 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
       in_context(options.name("boundary"), [&] { return parse_boundary(options.boundary.value_or("free")); });
   fs::path output = output_from(options);
   const std::optional<MemoryLimit> limit = memory_limit(options.max_memory, options.describe("max-memory"));
-  const StressRequest stress = stress_request_from(options, load_values.size());
+  const StressRequest stress = stress_request_from(options, load_values.size(), coating.has_value());
   const GridCheck check_grid = [&](const Grid& grid, const std::string& request) {
     check_load_scale(options, grid, loading.mode, load_values);
     // Hardness cap: no load above H times the domain area.
@@ -663,7 +671,7 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
     }
     require_memory(fmt::format("{}: {}", request, solve_description(grid, solver, load_values.size())),
                    std::max(solve_memory_estimate(grid, solver, load_values.size()),
-                            stress_peak_memory(grid, stress.depths.size())),
+                            stress_peak_memory(grid, stress.depths.size(), coating.has_value())),
                    limit);
   };
   check_outputs_against_inputs(options, output, load_values.size() > 1, solver.fft_planning);
@@ -692,10 +700,11 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
           "a coated half-space on a free 1D grid is not supported: pass --boundary periodic or use a "
           "2D surface");
     }
-    if (!stress.depths.empty()) {
-      throw InputError(
-          "--stress-depths is not supported for a coated half-space: the subsurface stresses are those of a "
-          "homogeneous half-space");
+    if (!stress.depths.empty() && !surface.grid.periodic()) {
+      throw InputError(fmt::format(
+          "{} for a coated half-space needs a periodic grid (the layered stresses are evaluated per Fourier "
+          "mode): pass --boundary periodic",
+          options.describe("stress-depths")));
     }
   }
   const std::size_t first_row = surface.first_row;

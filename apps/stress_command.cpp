@@ -47,8 +47,9 @@ int threads_from(const std::optional<std::string>& text) {
 }
 
 int run_stress(const StressOptions& o, const std::vector<std::string>& argv) {
-  if (!o.nu) throw InputError(missing_poisson_ratio_message("--nu"));
-  const double nu = parse_stress_poisson_ratio(*o.nu, "--nu");
+  // A coated result brings each body's Poisson's ratio; --nu is checked
+  // against the file once it is read.
+  const double given_nu = o.nu ? parse_stress_poisson_ratio(*o.nu, "--nu") : 0.0;
   const std::vector<double> depths =
       parse_stress_depths(o.depths ? &*o.depths : nullptr, o.depth_range ? &*o.depth_range : nullptr);
   if (!o.output) throw InputError("no output file given: pass --output FILE.h5");
@@ -67,9 +68,24 @@ int run_stress(const StressOptions& o, const std::vector<std::string>& argv) {
     return io::read_result_pressure(o.result);
   }();
   const Grid& grid = input.grid;
+  const std::optional<LayeredMaterial>& coating = input.coating;
+  if (coating && o.nu) {
+    throw InputError(fmt::format(
+        "--nu {} is not used: {} is a coated half-space's result, whose stresses take its layer_nu = {} in the "
+        "layer and substrate_nu = {} below it; drop --nu",
+        *o.nu, o.result, coating->layer.poissons_ratio, coating->substrate.poissons_ratio));
+  }
+  if (!coating && !o.nu) throw InputError(missing_poisson_ratio_message("--nu"));
+  if (coating && !grid.periodic()) {
+    throw InputError(fmt::format(
+        "{} is a coated half-space's result on a free grid: stresses below a coating need a periodic grid (they "
+        "are evaluated per Fourier mode)",
+        o.result));
+  }
+  const double nu = coating ? coating->layer.poissons_ratio : given_nu;
   // The pressure read twice (reader and field) and the stress volume.
-  const double estimate =
-      kProgramBytes + 16.0 * static_cast<double>(grid.size()) + stress::stress_memory_estimate(grid, depths.size());
+  const double estimate = kProgramBytes + 16.0 * static_cast<double>(grid.size()) +
+                          stress::stress_memory_estimate(grid, depths.size(), coating.has_value());
   const std::string what = o.max_memory ? fmt::format("--max-memory {}", *o.max_memory) : "--max-memory";
   require_memory(fmt::format("stresses at {} depths on the {} grid of {} ({} cells x {} depths x 8 fields x 8 "
                              "bytes, and the file image)",
@@ -79,7 +95,8 @@ int run_stress(const StressOptions& o, const std::vector<std::string>& argv) {
   const stress::StressVolume volume = [&] {
     const Activity activity(
         fmt::format("computing stresses at {} depths on the {} grid", depths.size(), grid.shape_string()));
-    return stress::compute_stress_volume(grid, input.pressure, depths, nu);
+    return coating ? stress::compute_stress_volume(grid, input.pressure, depths, *coating)
+                   : stress::compute_stress_volume(grid, input.pressure, depths, nu);
   }();
   {
     const Activity activity(fmt::format("writing {}", output));
@@ -91,7 +108,11 @@ int run_stress(const StressOptions& o, const std::vector<std::string>& argv) {
     };
     fmt::print("halfspace {} ({}) stress\n", kVersion, kGitHash);
     row("result", o.result);
-    row("grid", fmt::format("{} ({}), Poisson's ratio {}", grid.shape_string(), to_string(grid.boundary()), nu));
+    row("grid", coating
+                    ? fmt::format("{} ({}), coated: layer t = {:.6g} m, nu1 = {}; substrate nu2 = {}",
+                                  grid.shape_string(), to_string(grid.boundary()), coating->thickness,
+                                  coating->layer.poissons_ratio, coating->substrate.poissons_ratio)
+                    : fmt::format("{} ({}), Poisson's ratio {}", grid.shape_string(), to_string(grid.boundary()), nu));
     row("depths", fmt::format("{} from {:.6g} m to {:.6g} m", depths.size(), depths.front(), depths.back()));
     const auto& m = volume.max_von_mises;
     row("max von Mises", fmt::format("{:.6g} Pa at x = {:.6g} m, y = {:.6g} m, z = {:.6g} m", m.value, m.x, m.y, m.z));
@@ -181,7 +202,10 @@ Command add_stress_command(CLI::App& program) {
   command->add_option("--depths", o->depths, "depths below the surface z1,z2,... (m, > 0)")->type_name("LIST");
   command->add_option("--depth-range", o->depth_range, "COUNT depths evenly spaced from START to STOP (m)")
       ->type_name("START:STOP:COUNT");
-  command->add_option("--nu", o->nu, "Poisson's ratio of the body whose stresses are wanted, -1 < NU <= 0.5 (required)")
+  command
+      ->add_option("--nu", o->nu,
+                   "Poisson's ratio of the body whose stresses are wanted, -1 < NU <= 0.5 (required, except for "
+                   "a coated result, which records its own)")
       ->type_name("NU");
   command->add_option("--output", o->output, "the stress file (HDF5), required; replaced if it exists")
       ->type_name("FILE");

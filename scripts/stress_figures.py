@@ -3,12 +3,14 @@
 
 Solves a Hertz sphere and a self-affine rough contact, runs `halfspace stress`
 on each result and draws: the Hertz cross-section (sigma_zz and von Mises in
-the x-z plane through the centre, with Johnson's axis solution), and the
-rough contact's von Mises field (the x-z section through its maximum and the
-plan view at that depth). Prints the numbers quoted in docs/validation.md.
+the x-z plane through the centre, with Johnson's axis solution), the rough
+contact's von Mises field (the x-z section through its maximum and the plan
+view at that depth), and a sphere on a hard coating (the interface stresses).
+Prints the numbers quoted in docs/validation.md.
 
   scripts/stress_figures.py [--halfspace build/bin/halfspace]
                             [--out docs/figures/validation] [--work DIR]
+                            [--only hertz|rough|coated]
 
 Needs Debian's python3 with matplotlib, h5py and numpy (scripts/install-deps.sh).
 """
@@ -151,19 +153,95 @@ def rough_section(program, work, out):
     save(fig, out, "stress_rough.png")
 
 
+def coated_section(program, work, out):
+    """Sphere R = 10 mm, F = 2 N on a hard coating (E1 = 3 E2, t = 20 um) over
+    steel, on a 256² periodic grid of period 10 a: the interface stresses."""
+    radius, force, t = 0.01, 2.0, 20e-6
+    e1, nu1, e2, nu2 = 630e9, 0.25, 210e9, 0.3
+    e_substrate = e2 / (1 - nu2 * nu2)
+    a_h = (3 * force * radius / (4 * e_substrate)) ** (1 / 3)  # the uncoated substrate's Hertz radius
+    p0_h = 3 * force / (2 * np.pi * a_h * a_h)
+    depths = np.concatenate([np.linspace(0.5e-6, t, 40), np.linspace(t * (1 + 1e-9), 80e-6, 80)])
+    run(program, work, "solve", "--geometry", "sphere", "--radius", str(radius), "--grid", "256x256", "--size",
+        "4e-4", "--boundary", "periodic", "--force", str(force), "--layer-thickness", str(t), "--layer-E", str(e1),
+        "--layer-nu", str(nu1), "--substrate-E", str(e2), "--substrate-nu", str(nu2), "--output", "coated.h5")
+    run(program, work, "stress", "coated.h5", "--depths", ",".join(f"{z:.17g}" for z in depths), "--output",
+        "coated_stress.h5")
+    s, attrs = read_stress(os.path.join(work, "coated_stress.h5"))
+    with h5py.File(os.path.join(work, "coated.h5"), "r") as f:
+        pressure = f["pressure"][...]
+    nz, ny, nx = s["sigma_zz"].shape
+    dx = attrs["dx"]
+    # The axis: the cell of largest pressure.
+    row, centre = np.unravel_index(int(np.argmax(pressure)), pressure.shape)
+    z = s["depths"]
+    layer = s["in_layer"].astype(bool)
+    above, below = np.flatnonzero(layer)[-1], np.flatnonzero(~layer)[0]
+    axis = {name: s[name][:, row, centre] / p0_h for name in ("sigma_xx", "sigma_zz", "von_mises", "max_shear")}
+    jump = axis["sigma_xx"][above] - axis["sigma_xx"][below]
+    # The in-plane strain is continuous: eps_xx = (sxx - nu (syy + szz)) / E on both sides.
+    strain = [(s["sigma_xx"][k, row, centre] - n * (s["sigma_yy"][k, row, centre] + s["sigma_zz"][k, row, centre])) / e
+              for k, e, n in ((above, e1, nu1), (below, e2, nu2))]
+    k_max = int(np.argmax(axis["von_mises"]))
+    print(f"coated: Hertz radius of the substrate a_H = {a_h:.4e} m, p0_H = {p0_h / 1e9:.3f} GPa; peak pressure "
+          f"{pressure.max() / p0_h:.3f} p0_H; at the interface on the axis sigma_zz {axis['sigma_zz'][above]:.4f} "
+          f"(layer) / {axis['sigma_zz'][below]:.4f} (substrate) p0_H, sigma_xx {axis['sigma_xx'][above]:.4f} / "
+          f"{axis['sigma_xx'][below]:.4f} p0_H (jump {jump:.4f}), eps_xx {strain[0]:.4e} / {strain[1]:.4e}; "
+          f"max von Mises on the axis {axis['von_mises'][k_max]:.4f} p0_H at z = {z[k_max] * 1e6:.2f} um; in the "
+          f"volume {attrs['max_von_mises'] / p0_h:.4f} p0_H at z = {attrs['max_von_mises_z'] * 1e6:.2f} um")
+
+    fig, axes = plt.subplots(1, 3, figsize=(11.5, 3.8), constrained_layout=True,
+                             gridspec_kw={"width_ratios": [1, 1, 0.8]})
+    x = (np.arange(nx) - centre) * dx / a_h
+    keep = np.abs(x) <= 2.5
+    zs = z / a_h
+    for panel, name, label, cmap in ((axes[0], "sigma_xx", "σxx / p0_H", "RdBu_r"),
+                                      (axes[1], "von_mises", "von Mises / p0_H", "magma")):
+        field = s[name][:, row, :][:, keep] / p0_h
+        if cmap == "RdBu_r":
+            limit = float(np.max(np.abs(field)))
+            image = panel.pcolormesh(x[keep], zs, field, cmap=cmap, vmin=-limit, vmax=limit, shading="nearest")
+        else:
+            image = panel.pcolormesh(x[keep], zs, field, cmap=cmap, shading="nearest")
+        panel.axhline(t / a_h, color="c", lw=0.8, ls="--")
+        panel.invert_yaxis()
+        fig.colorbar(image, ax=panel, label=label)
+        panel.set_xlabel("x / a_H")
+        panel.set_ylabel("z / a_H")
+        panel.set_title(f"{label}, section through the centre (cyan: interface)", fontsize="small")
+    panel = axes[2]
+    panel.plot(axis["sigma_zz"], zs, "-", color="tab:blue", label="σzz (continuous)")
+    panel.plot(axis["sigma_xx"], zs, "-", color="tab:red", label="σxx (jumps)")
+    panel.plot(axis["von_mises"], zs, "-", color="0.2", label="von Mises")
+    zeta = np.linspace(0.01, zs[-1], 200)
+    panel.plot(-1 / (1 + zeta ** 2), zeta, ":", color="tab:blue", label="σz uncoated (Johnson)")
+    panel.axhline(t / a_h, color="c", lw=0.8, ls="--")
+    panel.invert_yaxis()
+    panel.set_xlabel("stress / p0_H")
+    panel.set_ylabel("z / a_H")
+    panel.set_title("on the axis", fontsize="small")
+    panel.legend(fontsize="x-small")
+    panel.grid(True, alpha=0.3)
+    fig.suptitle(f"sphere on a hard coating: E1 = 3 E2, ν1 = {nu1}, ν2 = {nu2}, t = {t / a_h:.2f} a_H, 256² periodic "
+                 f"(a_H, p0_H: Hertz on the uncoated substrate)", fontsize="small")
+    save(fig, out, "stress_coated.png")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--halfspace", default="build/bin/halfspace")
     parser.add_argument("--out", default="docs/figures/validation")
     parser.add_argument("--work", default=None)
+    parser.add_argument("--only", choices=("hertz", "rough", "coated"), default=None)
     args = parser.parse_args()
     program = os.path.abspath(args.halfspace)
     os.makedirs(args.out, exist_ok=True)
     with tempfile.TemporaryDirectory() as temporary:
         work = args.work or temporary
         os.makedirs(work, exist_ok=True)
-        hertz_section(program, work, args.out)
-        rough_section(program, work, args.out)
+        for name, figure in (("hertz", hertz_section), ("rough", rough_section), ("coated", coated_section)):
+            if args.only in (None, name):
+                figure(program, work, args.out)
 
 
 if __name__ == "__main__":

@@ -14,7 +14,7 @@ class InputError(ValueError):
 class FileError(OSError):
     """A file that cannot be read or written: missing, unreadable, wrong layout."""
 
-def subsurface_stress(result: "Result", depths: Sequence[float], nu: float) -> dict: ...
+def subsurface_stress(result: "Result", depths: Sequence[float], nu: Optional[float]) -> dict: ...
 
 class Result:
     """The outcome of a solve. Field arrays are views of memory this object
@@ -47,6 +47,10 @@ class Result:
     def boundary(self) -> str: ...
     @property
     def e_star(self) -> float: ...
+    @property
+    def coating(self) -> Optional[dict[str, float]]:
+        """A coated half-space's thickness (m), layer_E (Pa), layer_nu,
+        substrate_E (Pa), substrate_nu; None for a homogeneous one."""
     @property
     def load_mode(self) -> str:
         """"force", "mean_pressure" or "approach"."""
@@ -146,12 +150,12 @@ def self_affine(nx: int, ny: int, dimension: int, dx: float, dy: float, hurst: f
                 rolloff: float, cutoff_long: float, rms_height: Optional[float], rms_slope: Optional[float],
                 seed: int) -> Tuple[npt.NDArray[np.float64], dict[str, float]]: ...
 def surface_statistics(heights: npt.NDArray[np.float64], dx: float, dy: float, periodic: bool) -> dict[str, float]: ...
-def solve(heights: npt.NDArray[np.float64], dx: float, dy: float, boundary: str, e_star: float, mode: str,
-          value: float, solver: dict[str, Any], threads: Optional[int], initial_pressure: Optional[np.ndarray],
+def solve(heights: npt.NDArray[np.float64], dx: float, dy: float, boundary: str, e_star: float,
+          coating: Optional[Sequence[float]], mode: str, value: float, solver: dict[str, Any], threads: Optional[int], initial_pressure: Optional[np.ndarray],
           progress: Optional[Callable[[int, float], None]], command_line: str, height_source: str,
           preparation: Sequence[str]) -> Result: ...
-def sweep(heights: npt.NDArray[np.float64], dx: float, dy: float, boundary: str, e_star: float, mode: str,
-          values: Sequence[float], solver: dict[str, Any], threads: Optional[int], warm_start: bool,
+def sweep(heights: npt.NDArray[np.float64], dx: float, dy: float, boundary: str, e_star: float,
+          coating: Optional[Sequence[float]], mode: str, values: Sequence[float], solver: dict[str, Any], threads: Optional[int], warm_start: bool,
           progress: Optional[Callable[[int, float], None]], command_line: str, height_source: str,
           preparation: Sequence[str]) -> Sweep: ...
 def read_result(path: str, step: int = -1) -> Result: ...

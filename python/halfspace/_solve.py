@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import os
-from typing import Callable, Optional, Sequence, Union
+from typing import Callable, Mapping, Optional, Sequence, Union
 
 import numpy as np
 
@@ -35,6 +35,29 @@ def _material(e_star, E1, nu1, E2, nu2) -> float:
         raise _core.InputError(f"incomplete material: missing {', '.join(missing)} (give all of E1, nu1, E2, nu2, "
                                "or e_star)")
     return _core.composite_modulus(E1, nu1, E2, nu2)
+
+
+_COATING_KEYS = ("thickness", "layer_E", "layer_nu", "substrate_E", "substrate_nu")
+
+
+def _coating(coating, e_star, E1, nu1, E2, nu2) -> Optional[list]:
+    """The five constants of a coated half-space, in _core's order, or None."""
+    if coating is None:
+        return None
+    given = [name for name, value in {"e_star": e_star, "E1": E1, "nu1": nu1, "E2": E2, "nu2": nu2}.items()
+             if value is not None]
+    if given:
+        raise _core.InputError(f"coating cannot be combined with {', '.join(given)}: a coated half-space takes its "
+                               "moduli from the coating (the indenter is rigid)")
+    if not isinstance(coating, Mapping):
+        raise _core.InputError("coating must be a mapping with the keys " + ", ".join(_COATING_KEYS))
+    missing = [key for key in _COATING_KEYS if key not in coating]
+    unknown = [str(key) for key in coating if key not in _COATING_KEYS]
+    if missing or unknown:
+        raise _core.InputError(f"coating: missing {', '.join(missing) or 'nothing'}, unknown "
+                               f"{', '.join(unknown) or 'nothing'}; the keys are {', '.join(_COATING_KEYS)} "
+                               "(m, Pa, -, Pa, -)")
+    return [float(coating[key]) for key in _COATING_KEYS]
 
 
 def _load(force, mean_pressure, approach, plural: bool):
@@ -97,7 +120,7 @@ def solve(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
           deflation_block: Optional[int] = None, hardness: Optional[float] = None,
           adhesion: Optional[str] = None, work_of_adhesion: Optional[float] = None,
           adhesion_range: Optional[float] = None, adhesion_stress: Optional[float] = None,
-          adhesion_tol: Optional[float] = None) -> _core.Result:
+          adhesion_tol: Optional[float] = None, coating: Optional[Mapping[str, float]] = None) -> _core.Result:
     """Solves the frictionless contact of a rigid rough surface on an elastic half-space.
 
     surface: a HeightMap, or a 1D/2D array of heights (m, peaks positive,
@@ -126,6 +149,13 @@ def solve(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
         md, adhesion_stress (sigma0, Pa). Adhesion has its own solver
         (adhesive-spg) and tolerance, adhesion_tol (None: 1e-6); the
         approach may be negative. ``Result.adhesion`` holds its record.
+    coating: a coated half-space instead of a homogeneous one: a mapping
+        with ``thickness`` (m), ``layer_E`` (Pa), ``layer_nu``,
+        ``substrate_E`` (Pa), ``substrate_nu``, as the program's
+        ``--layer-thickness`` ... options; not combined with e_star or
+        E1..nu2 (the indenter is rigid; ``Result.e_star`` is the layer's
+        E1*). Solvers pk, pk-fourier, pk-multilevel; no adhesion; a profile
+        (1D) needs boundary="periodic". ``Result.coating`` holds it.
 
     The GIL is released while solving; Ctrl-C (KeyboardInterrupt) stops the
     solve within about 0.1 s. Non-convergence is not an exception: see
@@ -133,16 +163,19 @@ def solve(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
     bad options, naming the keyword, its value and the rule.
     """
     height_map = _surface(surface, dx, dy)
-    modulus = _material(e_star, E1, nu1, E2, nu2)
+    layers = _coating(coating, e_star, E1, nu1, E2, nu2)
+    modulus = 0.0 if layers else _material(e_star, E1, nu1, E2, nu2)
     mode, value = _load(force, mean_pressure, approach, plural=False)
     start = None if initial_pressure is None else np.ascontiguousarray(initial_pressure, dtype=np.float64)
     options = _solver_options(solver, tol, max_iter, fft_planning, deflation_block,
                               _laws(hardness, adhesion, work_of_adhesion, adhesion_range, adhesion_stress,
                                     adhesion_tol))
-    call = _call_text("solve", height_map, {"e_star": modulus, "boundary": boundary, mode: value, **options,
+    material = {"coating": dict(zip(_COATING_KEYS, layers))} if layers else {"e_star": modulus}
+    call = _call_text("solve", height_map, {**material, "boundary": boundary, mode: value, **options,
                                             "threads": threads})
-    return _core.solve(height_map.heights, height_map.dx, height_map.dy or 0.0, boundary, modulus, mode, value,
-                       options, threads, start, progress, call, height_map.source, list(height_map.preparation))
+    return _core.solve(height_map.heights, height_map.dx, height_map.dy or 0.0, boundary, modulus, layers, mode,
+                       value, options, threads, start, progress, call, height_map.source,
+                       list(height_map.preparation))
 
 
 def sweep(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, dy: Optional[float] = None,
@@ -155,7 +188,7 @@ def sweep(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
           deflation_block: Optional[int] = None, hardness: Optional[float] = None,
           adhesion: Optional[str] = None, work_of_adhesion: Optional[float] = None,
           adhesion_range: Optional[float] = None, adhesion_stress: Optional[float] = None,
-          adhesion_tol: Optional[float] = None) -> _core.Sweep:
+          adhesion_tol: Optional[float] = None, coating: Optional[Mapping[str, float]] = None) -> _core.Sweep:
     """Solves the surface under each load of a sequence, in order, each step
     warm-started from the previous one (as ``halfspace solve`` with several
     loads). Takes the keywords of :func:`solve`, with ``force``,
@@ -164,15 +197,18 @@ def sweep(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
     ``.to_pandas()`` a DataFrame, ``.save(path)`` the program's HDF5 and CSV.
     A step that does not converge is kept with its status."""
     height_map = _surface(surface, dx, dy)
-    modulus = _material(e_star, E1, nu1, E2, nu2)
+    layers = _coating(coating, e_star, E1, nu1, E2, nu2)
+    modulus = 0.0 if layers else _material(e_star, E1, nu1, E2, nu2)
     mode, values = _load(force, mean_pressure, approach, plural=True)
     options = _solver_options(solver, tol, max_iter, fft_planning, deflation_block,
                               _laws(hardness, adhesion, work_of_adhesion, adhesion_range, adhesion_stress,
                                     adhesion_tol))
-    call = _call_text("sweep", height_map, {"e_star": modulus, "boundary": boundary, mode: values, **options,
+    material = {"coating": dict(zip(_COATING_KEYS, layers))} if layers else {"e_star": modulus}
+    call = _call_text("sweep", height_map, {**material, "boundary": boundary, mode: values, **options,
                                             "threads": threads, "warm_start": warm_start})
-    return _core.sweep(height_map.heights, height_map.dx, height_map.dy or 0.0, boundary, modulus, mode, values,
-                       options, threads, warm_start, progress, call, height_map.source, list(height_map.preparation))
+    return _core.sweep(height_map.heights, height_map.dx, height_map.dy or 0.0, boundary, modulus, layers, mode,
+                       values, options, threads, warm_start, progress, call, height_map.source,
+                       list(height_map.preparation))
 
 
 def read_result(path: Union[str, os.PathLike], step: Optional[int] = None) -> _core.Result:
@@ -181,20 +217,22 @@ def read_result(path: Union[str, os.PathLike], step: Optional[int] = None) -> _c
     return _core.read_result(os.fspath(path), -1 if step is None else int(step))
 
 
-def subsurface_stress(result: _core.Result, depths: Sequence[float], nu: float) -> dict:
+def subsurface_stress(result: _core.Result, depths: Sequence[float], nu: Optional[float] = None) -> dict:
     """The stress field below a solved contact, as ``halfspace stress``.
 
     result: a Result (its pressure and grid); depths: depths below the
     surface (m, > 0); nu: Poisson's ratio of the body whose stresses are
     wanted (E* alone does not fix it). Periodic grids use the Fourier-space
     half-space solution, free grids Love's rectangle coefficients by DC-FFT
-    (docs/theory.md, subsurface stresses); a coated half-space is not
-    covered.
+    (docs/theory.md, subsurface stresses). A coated result (solved with
+    ``coating=``, periodic grids only) takes no nu: each depth uses its
+    body's, the layer's for z <= thickness.
 
     Returns a dict: ``depths``; ``sigma_xx``, ``sigma_yy``, ``sigma_zz``,
-    ``sigma_xy``, ``sigma_xz``, ``sigma_yz``, ``von_mises``, ``max_shear``
-    (Pa, compression negative), each ``(nz, ny, nx)`` (``(nz, n)`` for a
-    profile) and owned by numpy without a copy; ``max_von_mises`` and its
-    ``max_von_mises_position`` ``(x, y, z)`` in m. The GIL is released while
-    computing."""
-    return _core.subsurface_stress(result, [float(z) for z in depths], float(nu))
+    ``sigma_xy``, ``sigma_xz``, ``sigma_yz``, ``von_mises``, ``max_shear``,
+    ``hydrostatic`` (Pa, compression negative), each ``(nz, ny, nx)``
+    (``(nz, n)`` for a profile) and owned by numpy without a copy;
+    ``max_von_mises`` and its ``max_von_mises_position`` ``(x, y, z)`` in m;
+    for a coated result ``in_layer``, one bool per depth. The GIL is
+    released while computing."""
+    return _core.subsurface_stress(result, [float(z) for z in depths], None if nu is None else float(nu))

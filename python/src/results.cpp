@@ -33,6 +33,7 @@ OutputArray view(const Eigen::ArrayXd& field, const std::vector<std::size_t>& sh
 
 io::ResultMetadata metadata_of(const Run& run) {
   io::ResultMetadata metadata = io::result_metadata(run.provenance, run.grid, run.heights);
+  metadata.coating = run.coating;
   return metadata;
 }
 
@@ -155,7 +156,7 @@ Result read(const std::filesystem::path& path, int step) {
                                                                          : s.approach;
   data.statistics = contact_statistics_of(grid, s);
 
-  auto run = std::make_shared<Run>(Run{std::move(grid), nb::none(), {}, {}, {}, {}, {}, {}});
+  auto run = std::make_shared<Run>(Run{std::move(grid), nb::none(), {}, {}, {}, {}, {}, {}, {}});
   io::SolveProvenance& p = run->provenance;
   p.e_star = number("E_star");
   p.load_mode = data.loading.mode;
@@ -175,6 +176,11 @@ Result read(const std::filesystem::path& path, int step) {
   run->mark_contact();
   for (const auto& [name, value] : stored.attributes) {
     std::visit([&, &key = name](const auto& v) { run->stored_attributes[nb::str(key.c_str())] = v; }, value);
+  }
+  if (stored.find("layer_thickness") != nullptr) {
+    run->coating = validated(LayeredMaterial{number("layer_thickness"),
+                                             {number("layer_E"), number("layer_nu")},
+                                             {number("substrate_E"), number("substrate_nu")}});
   }
   return Result{std::move(run), 0};
 }
@@ -233,6 +239,18 @@ void bind_results(nb::module_& module) {
       .def_prop_ro("dy", [](const Result& r) { return r.run->grid.dy(); })
       .def_prop_ro("boundary", [](const Result& r) { return std::string(to_string(r.run->grid.boundary())); })
       .def_prop_ro("e_star", [](const Result& r) { return r.run->provenance.e_star; })
+      .def_prop_ro("coating",
+                   [](const Result& r) -> nb::object {
+                     if (!r.run->coating) return nb::none();
+                     const LayeredMaterial& c = *r.run->coating;
+                     nb::dict out;
+                     out["thickness"] = c.thickness;
+                     out["layer_E"] = c.layer.youngs_modulus;
+                     out["layer_nu"] = c.layer.poissons_ratio;
+                     out["substrate_E"] = c.substrate.youngs_modulus;
+                     out["substrate_nu"] = c.substrate.poissons_ratio;
+                     return out;
+                   })
       .def_prop_ro("load_mode", [](const Result& r) { return std::string(to_string(r.data().loading.mode)); })
       .def_prop_ro(
           "load", [](const Result& r) { return r.data().loading.value; }, "The imposed load value.")

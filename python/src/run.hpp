@@ -15,6 +15,7 @@
 #include "halfspace/analysis/load_sweep.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/io/result_metadata.hpp"
+#include "halfspace/layered_material.hpp"
 #include "halfspace/surface/statistics.hpp"
 
 namespace halfspace::python {
@@ -30,6 +31,7 @@ struct Run {
   std::vector<std::vector<std::uint8_t>> contact;  // per step: 1 where p > 0
   // Attributes of a file the run was read from (read_result); empty for a solve.
   nb::dict stored_attributes;
+  std::optional<LayeredMaterial> coating;  // a coated half-space, else none
 
   std::vector<std::size_t> shape() const;
   // Fills contact from the steps' pressures.

@@ -13,6 +13,7 @@
 
 #include "bindings.hpp"
 #include "halfspace/error.hpp"
+#include "halfspace/layered_material.hpp"
 #include "halfspace/material.hpp"
 #include "halfspace/solvers/adhesion_law.hpp"
 #include "halfspace/solvers/surface_solve.hpp"
@@ -201,7 +202,7 @@ auto run_released(Work&& work) {
 }
 
 std::shared_ptr<Run> make_run(Problem&& problem, io::SolveProvenance&& provenance,
-                              std::vector<analysis::SweepStep>&& steps) {
+                              std::vector<analysis::SweepStep>&& steps, const std::optional<LayeredMaterial>& coating) {
   auto run = std::make_shared<Run>(Run{std::move(problem.grid),
                                        std::move(problem.heights_owner),
                                        problem.heights,
@@ -209,19 +210,42 @@ std::shared_ptr<Run> make_run(Problem&& problem, io::SolveProvenance&& provenanc
                                        {},
                                        {},
                                        {},
-                                       {}});
+                                       {},
+                                       coating});
   run->steps = std::move(steps);
   run->surface = surface::surface_statistics(run->grid, run->heights);
   run->mark_contact();
   return run;
 }
 
+// The coated half-space of the `coating` keyword (thickness, layer E and nu,
+// substrate E and nu, as _solve.py orders them), validated; E* becomes the
+// layer's E1*, as the program records it.
+std::optional<LayeredMaterial> coating_from(const std::optional<std::vector<double>>& values, double& e_star) {
+  if (!values) {
+    e_star = checked_composite_modulus(e_star);
+    return std::nullopt;
+  }
+  if (values->size() != 5)
+    throw InputError("coating needs five values: thickness, layer_E, layer_nu, substrate_E, substrate_nu");
+  const std::vector<double>& v = *values;
+  LayeredMaterial coating{v[0], {v[1], v[2]}, {v[3], v[4]}};
+  try {
+    validated(coating);
+  } catch (const InputError& error) {
+    throw InputError(fmt::format("coating: {}", error.what()));
+  }
+  e_star = plane_strain_modulus(coating.layer);
+  return coating;
+}
+
 Result solve(const nb::object& heights, double dx, double dy, const std::string& boundary, double e_star,
-             const std::string& mode, double value, const nb::dict& solver, std::optional<int> threads,
-             const std::optional<InputArray>& initial_pressure, nb::object progress, const std::string& command_line,
-             const std::string& height_source, const std::vector<std::string>& preparation) {
+             const std::optional<std::vector<double>>& coating_values, const std::string& mode, double value,
+             const nb::dict& solver, std::optional<int> threads, const std::optional<InputArray>& initial_pressure,
+             nb::object progress, const std::string& command_line, const std::string& height_source,
+             const std::vector<std::string>& preparation) {
   Problem problem = problem_from(heights, dx, dy, boundary);
-  e_star = checked_composite_modulus(e_star);
+  const std::optional<LayeredMaterial> coating = coating_from(coating_values, e_star);
   const Loading loading{control_mode(mode), value};
   solvers::SolverOptions options = solver_options(solver, problem.grid);
   if (!options.adhesion) {
@@ -246,23 +270,25 @@ Result solve(const nb::object& heights, double dx, double dy, const std::string&
   step.warm_started = !start.empty();
   step.result = run_released([&] {
     set_threads(thread_number);
-    return solvers::solve_surface(problem.grid, problem.heights, e_star, loading, options, start);
+    return coating ? solvers::solve_surface(problem.grid, problem.heights, *coating, loading, options, start)
+                   : solvers::solve_surface(problem.grid, problem.heights, e_star, loading, options, start);
   });
   step.statistics = contact_statistics_of(problem.grid, step.result);
   std::vector<analysis::SweepStep> steps;
   steps.push_back(std::move(step));
   return Result{
       make_run(std::move(problem), {e_star, loading.mode, thread_number, command_line, "", height_source, preparation},
-               std::move(steps)),
+               std::move(steps), coating),
       0};
 }
 
 Sweep sweep(const nb::object& heights, double dx, double dy, const std::string& boundary, double e_star,
-            const std::string& mode, const std::vector<double>& load_values, const nb::dict& solver,
-            std::optional<int> threads, bool warm_start, nb::object progress, const std::string& command_line,
-            const std::string& height_source, const std::vector<std::string>& preparation) {
+            const std::optional<std::vector<double>>& coating_values, const std::string& mode,
+            const std::vector<double>& load_values, const nb::dict& solver, std::optional<int> threads, bool warm_start,
+            nb::object progress, const std::string& command_line, const std::string& height_source,
+            const std::vector<std::string>& preparation) {
   Problem problem = problem_from(heights, dx, dy, boundary);
-  e_star = checked_composite_modulus(e_star);
+  const std::optional<LayeredMaterial> coating = coating_from(coating_values, e_star);
   const ControlMode control = control_mode(mode);
   solvers::SolverOptions options = solver_options(solver, problem.grid);
   const int thread_number = thread_count(threads);
@@ -274,23 +300,27 @@ Sweep sweep(const nb::object& heights, double dx, double dy, const std::string& 
 
   std::vector<analysis::SweepStep> steps = run_released([&] {
     set_threads(thread_number);
-    return analysis::sweep_surface(problem.grid, problem.heights, e_star, control, load_values, options, sweep_options);
+    return coating ? analysis::sweep_surface(problem.grid, problem.heights, *coating, control, load_values, options,
+                                             sweep_options)
+                   : analysis::sweep_surface(problem.grid, problem.heights, e_star, control, load_values, options,
+                                             sweep_options);
   });
   return Sweep{make_run(std::move(problem),
                         {e_star, control, thread_number, command_line, "", height_source, preparation},
-                        std::move(steps))};
+                        std::move(steps), coating)};
 }
 
 }  // namespace
 
 void bind_solve(nb::module_& module) {
   module.def("solve", &solve, nb::arg("heights"), nb::arg("dx"), nb::arg("dy"), nb::arg("boundary"), nb::arg("e_star"),
-             nb::arg("mode"), nb::arg("value"), nb::arg("solver"), nb::arg("threads").none(),
+             nb::arg("coating").none(), nb::arg("mode"), nb::arg("value"), nb::arg("solver"), nb::arg("threads").none(),
              nb::arg("initial_pressure").none(), nb::arg("progress").none(), nb::arg("command_line"),
              nb::arg("height_source"), nb::arg("preparation"));
   module.def("sweep", &sweep, nb::arg("heights"), nb::arg("dx"), nb::arg("dy"), nb::arg("boundary"), nb::arg("e_star"),
-             nb::arg("mode"), nb::arg("values"), nb::arg("solver"), nb::arg("threads").none(), nb::arg("warm_start"),
-             nb::arg("progress").none(), nb::arg("command_line"), nb::arg("height_source"), nb::arg("preparation"));
+             nb::arg("coating").none(), nb::arg("mode"), nb::arg("values"), nb::arg("solver"),
+             nb::arg("threads").none(), nb::arg("warm_start"), nb::arg("progress").none(), nb::arg("command_line"),
+             nb::arg("height_source"), nb::arg("preparation"));
 }
 
 }  // namespace halfspace::python

@@ -2,13 +2,16 @@
 // (stress/stress_volume.hpp), as `halfspace stress` computes it, with each
 // field handed to numpy without a copy.
 #include <fmt/format.h>
+#include <nanobind/stl/optional.h>
 #include <nanobind/stl/string.h>
 #include <nanobind/stl/vector.h>
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "bindings.hpp"
+#include "halfspace/error.hpp"
 #include "halfspace/stress/stress_volume.hpp"
 #include "run.hpp"
 
@@ -22,12 +25,25 @@ OutputArray volume_array(std::vector<double>&& field, const std::vector<std::siz
   return OutputArray(owned->data(), shape.size(), shape.data(), owner);
 }
 
-nb::dict subsurface_stress(const Result& result, const std::vector<double>& depths, double nu) {
+nb::dict subsurface_stress(const Result& result, const std::vector<double>& depths, std::optional<double> nu) {
   const Grid& grid = result.run->grid;
   const Eigen::ArrayXd& pressure = result.result().pressure;
+  const std::optional<LayeredMaterial>& coating = result.run->coating;
+  if (coating && nu) {
+    throw InputError(fmt::format(
+        "nu={} is not used: the result is of a coated half-space, whose stresses take layer_nu = {} in the layer "
+        "and substrate_nu = {} below it; drop nu",
+        *nu, coating->layer.poissons_ratio, coating->substrate.poissons_ratio));
+  }
+  if (!coating && !nu) {
+    throw InputError(
+        "no Poisson's ratio given: pass nu, the Poisson's ratio of the body whose stresses are wanted (E* alone "
+        "does not fix it; -1 < nu <= 0.5)");
+  }
   stress::StressVolume volume = [&] {
     nb::gil_scoped_release release;
-    return stress::compute_stress_volume(grid, {pressure.data(), grid.size()}, depths, nu);
+    return coating ? stress::compute_stress_volume(grid, {pressure.data(), grid.size()}, depths, *coating)
+                   : stress::compute_stress_volume(grid, {pressure.data(), grid.size()}, depths, *nu);
   }();
   std::vector<std::size_t> shape{depths.size()};
   if (grid.dimension() == 2) shape.push_back(grid.ny());
@@ -39,6 +55,8 @@ nb::dict subsurface_stress(const Result& result, const std::vector<double>& dept
   }
   out["von_mises"] = volume_array(std::move(volume.von_mises), shape);
   out["max_shear"] = volume_array(std::move(volume.max_shear), shape);
+  out["hydrostatic"] = volume_array(std::move(volume.hydrostatic), shape);
+  if (coating) out["in_layer"] = std::vector<bool>(volume.in_layer.begin(), volume.in_layer.end());
   const stress::VonMisesMaximum& peak = volume.max_von_mises;
   out["max_von_mises"] = peak.value;
   out["max_von_mises_position"] = nb::make_tuple(peak.x, peak.y, peak.z);
@@ -48,7 +66,7 @@ nb::dict subsurface_stress(const Result& result, const std::vector<double>& dept
 }  // namespace
 
 void bind_stress(nb::module_& module) {
-  module.def("subsurface_stress", &subsurface_stress, nb::arg("result"), nb::arg("depths"), nb::arg("nu"));
+  module.def("subsurface_stress", &subsurface_stress, nb::arg("result"), nb::arg("depths"), nb::arg("nu").none());
 }
 
 }  // namespace halfspace::python

@@ -116,7 +116,7 @@ hsize_t balanced_piece(hsize_t extent, hsize_t limit) {
 // Chunks of whole rows, at most kChunkElements each: a row is the unit that
 // post-processing reads most often, and a whole-field read touches every
 // chunk once.
-PropertyList creation_properties(const std::vector<hsize_t>& dims) {
+PropertyList creation_properties(const std::vector<hsize_t>& dims, Compression compression) {
   PropertyList properties(H5Pcreate(H5P_DATASET_CREATE));
   if (!properties.valid()) fail_hdf5("could not create dataset properties");
   hsize_t elements = 1;
@@ -136,7 +136,7 @@ PropertyList creation_properties(const std::vector<hsize_t>& dims) {
   }
   // Deflate is optional in an HDF5 build; without it the file stays valid,
   // only larger.
-  if (H5Zfilter_avail(H5Z_FILTER_DEFLATE) > 0) {
+  if (compression == Compression::deflate && H5Zfilter_avail(H5Z_FILTER_DEFLATE) > 0) {
     if (H5Pset_shuffle(properties.get()) < 0 || H5Pset_deflate(properties.get(), kDeflateLevel) < 0) {
       fail_hdf5("could not set the compression filters");
     }
@@ -145,7 +145,8 @@ PropertyList creation_properties(const std::vector<hsize_t>& dims) {
 }
 
 hid_t write_array(hid_t location, std::string_view name, const std::vector<std::size_t>& shape, std::size_t count,
-                  hid_t file_type, hid_t memory_type, const void* data, std::string_view units) {
+                  hid_t file_type, hid_t memory_type, const void* data, std::string_view units,
+                  Compression compression = Compression::deflate) {
   const std::string key(name);
   const std::vector<hsize_t> dims(shape.begin(), shape.end());
   hsize_t elements = 1;
@@ -155,7 +156,7 @@ hid_t write_array(hid_t location, std::string_view name, const std::vector<std::
   }
   const Dataspace space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr));
   if (!space.valid()) fail_hdf5(fmt::format("could not create the dataspace of '{}'", name));
-  const PropertyList properties = creation_properties(dims);
+  const PropertyList properties = creation_properties(dims, compression);
   Dataset dataset(
       H5Dcreate2(location, key.c_str(), file_type, space.get(), H5P_DEFAULT, properties.get(), H5P_DEFAULT));
   if (!dataset.valid()) fail_hdf5(fmt::format("could not create dataset '{}'", name));
@@ -226,9 +227,10 @@ void Hdf5Node::write_string_attribute(std::string_view name, std::string_view va
 }
 
 Hdf5Node Hdf5Node::write_dataset(std::string_view name, const std::vector<std::size_t>& shape,
-                                 std::span<const double> values, std::string_view units) const {
-  return Hdf5Node(
-      write_array(id_, name, shape, values.size(), H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, values.data(), units));
+                                 std::span<const double> values, std::string_view units,
+                                 Compression compression) const {
+  return Hdf5Node(write_array(id_, name, shape, values.size(), H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, values.data(), units,
+                              compression));
 }
 
 Hdf5Node Hdf5Node::write_dataset(std::string_view name, const std::vector<std::size_t>& shape,

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <hdf5.h>
 
+#include <optional>
 #include <string>
 
 #include "halfspace/error.hpp"
@@ -54,6 +55,38 @@ std::string read_boundary(const std::filesystem::path& path) {
   return value;
 }
 
+// The coating's five root attributes (result_attributes.hpp), if the result
+// is of a coated half-space: all five or none.
+std::optional<LayeredMaterial> read_coating(const std::filesystem::path& path) {
+  const detail::ErrorPrintingOff quiet;
+  const detail::File file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
+  if (!file.valid()) fail(path, "it cannot be opened as HDF5");
+  constexpr const char* kNames[] = {"layer_thickness", "layer_E", "layer_nu", "substrate_E", "substrate_nu"};
+  double values[5] = {};
+  int found = 0;
+  for (int k = 0; k < 5; ++k) {
+    if (H5Aexists(file.get(), kNames[k]) <= 0) continue;
+    const detail::Attribute attribute(H5Aopen(file.get(), kNames[k], H5P_DEFAULT));
+    if (!attribute.valid() || H5Aread(attribute.get(), H5T_NATIVE_DOUBLE, &values[k]) < 0) {
+      fail(path, fmt::format("its root attribute '{}' cannot be read as a number", kNames[k]));
+    }
+    ++found;
+  }
+  if (found == 0) return std::nullopt;
+  if (found != 5) {
+    fail(path,
+         "it has some but not all of the coating's attributes (layer_thickness, layer_E, layer_nu, "
+         "substrate_E, substrate_nu)");
+  }
+  LayeredMaterial coating{values[0], {values[1], values[2]}, {values[3], values[4]}};
+  try {
+    validated(coating);
+  } catch (const InputError& error) {
+    fail(path, fmt::format("its coating attributes are invalid ({})", error.what()));
+  }
+  return coating;
+}
+
 }  // namespace
 
 ResultPressure read_result_pressure(const std::filesystem::path& path) {
@@ -77,7 +110,8 @@ ResultPressure read_result_pressure(const std::filesystem::path& path) {
   }
   ResultPressure result{field.dimension == 1 ? Grid::line(field.nx, field.dx, boundary)
                                              : Grid::plane(field.nx, field.ny, field.dx, field.dy, boundary),
-                        std::vector<double>(field.heights.data(), field.heights.data() + field.heights.size())};
+                        std::vector<double>(field.heights.data(), field.heights.data() + field.heights.size()),
+                        read_coating(path)};
   return result;
 }
 

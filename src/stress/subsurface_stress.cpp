@@ -7,6 +7,10 @@
 // they stand for vanishes on the grid, and the c2r transform needs a
 // Hermitian spectrum.
 //
+// Coated (periodic only): the same, with the multipliers of the bonded layer
+// (layered_fourier_stress.hpp); each mode's six coefficients are solved once
+// when the grid is set up, and each depth evaluates g, g', g'' per mode.
+//
 // Free: sigma_c(i) = sum_j C_c(x_i - x_j, z) p_j with the exact cell
 // coefficients C_c of rectangle_stress.hpp, a linear convolution done on the
 // (2ny, 2nx) zero-padded grid (Liu, Wang & Liu 2000). The coefficients change
@@ -20,6 +24,7 @@
 
 #include <cmath>
 #include <complex>
+#include <optional>
 #include <vector>
 
 #include "halfspace/error.hpp"
@@ -28,6 +33,7 @@
 #include "halfspace/fft/real_fft.hpp"
 #include "halfspace/kernels/periodic_fourier.hpp"
 #include "halfspace/linalg/parallel.hpp"
+#include "halfspace/stress/layered_fourier_stress.hpp"
 #include "halfspace/stress/rectangle_stress.hpp"
 
 namespace halfspace::stress {
@@ -76,7 +82,20 @@ double checked_depth(double depth) {
 }
 
 struct SubsurfaceStress::Impl {
-  Impl(const Grid& g, double poisson, FftPlanning planning) : grid(g), nu(checked_poisson_ratio(poisson)) {
+  Impl(const Grid& g, const LayeredMaterial& coating, FftPlanning planning)
+      : Impl(g, coating.layer.poissons_ratio, planning, &coating) {}
+
+  Impl(const Grid& g, double poisson, FftPlanning planning, const LayeredMaterial* coating = nullptr)
+      : grid(g), nu(checked_poisson_ratio(poisson)) {
+    if (coating) {
+      if (!grid.periodic()) {
+        throw InputError(
+            fmt::format("subsurface stresses in a coated half-space need a periodic grid: the {} grid is free (pass "
+                        "--boundary periodic)",
+                        grid.shape_string()));
+      }
+      layered.emplace(*coating);
+    }
     const bool line = grid.dimension() == 1;
     rows = line ? 1 : grid.ny();
     if (grid.periodic()) {
@@ -87,6 +106,7 @@ struct SubsurfaceStress::Impl {
       ky.resize(rows);
       for (std::size_t c = 0; c < kx.size(); ++c) kx[c] = kernels::dft_wavenumber(c, grid.nx(), grid.dx());
       for (std::size_t r = 0; r < rows; ++r) ky[r] = line ? 0.0 : kernels::dft_wavenumber(r, grid.ny(), grid.dy());
+      if (layered) solve_modes();
     } else {
       padded = std::make_unique<PaddedRealFft>(rows, grid.nx(), planning);
       kernel = line ? std::make_unique<RealFft>(2 * grid.nx(), planning, FftOutput::overwrite_input)
@@ -140,14 +160,41 @@ struct SubsurfaceStress::Impl {
     }
   }
 
+  // Each mode's layer and substrate coefficients, for every depth.
+  void solve_modes() {
+    const std::size_t cols = transform->spectrum_cols();
+    modes.resize(rows * cols);
+    profiles.resize(rows * cols);
+    decay.clear();
+    decay.shrink_to_fit();
+    linalg::for_each_row(rows, cols, [&](std::size_t r) {
+      for (std::size_t c = 0; c < cols; ++c) modes[r * cols + c] = layered->solve(std::hypot(kx[c], ky[r]));
+    });
+  }
+
+  double poisson_ratio_at(double z) const {
+    if (!layered || layered->body_at(z) == Body::layer) return nu;
+    return layered->material().substrate.poissons_ratio;
+  }
+
   void compute_periodic(double z, const std::array<std::span<double>, kComponentCount>& fields) {
     const std::size_t cols = transform->spectrum_cols();
     const bool nyquist_col = grid.nx() % 2 == 0;
     const bool nyquist_row = rows > 1 && rows % 2 == 0;
     const double inverse_n = 1.0 / static_cast<double>(grid.size());
-    linalg::for_each_row(rows, cols, [&](std::size_t r) {
-      for (std::size_t c = 0; c < cols; ++c) decay[r * cols + c] = std::exp(-std::hypot(kx[c], ky[r]) * z);
-    });
+    const double body_nu = poisson_ratio_at(z);
+    if (layered) {
+      const Body body = layered->body_at(z);
+      linalg::for_each_row(rows, cols, [&](std::size_t r) {
+        for (std::size_t c = 0; c < cols; ++c) {
+          profiles[r * cols + c] = layered->profile(modes[r * cols + c], z, body);
+        }
+      });
+    } else {
+      linalg::for_each_row(rows, cols, [&](std::size_t r) {
+        for (std::size_t c = 0; c < cols; ++c) decay[r * cols + c] = std::exp(-std::hypot(kx[c], ky[r]) * z);
+      });
+    }
     for (std::size_t component = 0; component < kComponentCount; ++component) {
       std::span<std::complex<double>> spectrum = transform->spectrum();
       const auto kind = static_cast<Component>(component);
@@ -157,7 +204,9 @@ struct SubsurfaceStress::Impl {
           const std::size_t k = r * cols + c;
           const bool zero = zero_row || (odd_in_x(kind) && nyquist_col && c == cols - 1);
           const std::complex<double> multiplier =
-              zero ? 0.0 : fourier_stress_component(kind, kx[c], ky[r], z, decay[k], nu);
+              zero      ? 0.0
+              : layered ? layered_stress_component(kind, kx[c], ky[r], profiles[k], body_nu)
+                        : fourier_stress_component(kind, kx[c], ky[r], z, decay[k], nu);
           spectrum[k] = pressure_spectrum[k] * multiplier * inverse_n;
         }
       });
@@ -223,6 +272,10 @@ struct SubsurfaceStress::Impl {
   std::vector<double> decay;  // exp(-|q| z) on the half spectrum, for the current depth
   std::vector<double> kx;
   std::vector<double> ky;
+  // Coated bodies (periodic grids): the solved modes and, per depth, their g, g', g''.
+  std::optional<LayeredFourierStress> layered;
+  std::vector<LayeredMode> modes;
+  std::vector<AiryProfile> profiles;
   // Free grids.
   std::unique_ptr<PaddedRealFft> padded;
   std::unique_ptr<RealFft> kernel;  // the (2ny, 2nx) transform of the coefficients
@@ -234,6 +287,9 @@ struct SubsurfaceStress::Impl {
 SubsurfaceStress::SubsurfaceStress(const Grid& grid, double nu, FftPlanning planning)
     : impl_(std::make_unique<Impl>(grid, nu, planning)) {}
 
+SubsurfaceStress::SubsurfaceStress(const Grid& grid, const LayeredMaterial& coating, FftPlanning planning)
+    : impl_(std::make_unique<Impl>(grid, coating, planning)) {}
+
 SubsurfaceStress::~SubsurfaceStress() = default;
 
 const Grid& SubsurfaceStress::grid() const {
@@ -242,6 +298,18 @@ const Grid& SubsurfaceStress::grid() const {
 
 double SubsurfaceStress::poisson_ratio() const {
   return impl_->nu;
+}
+
+double SubsurfaceStress::poisson_ratio(double depth) const {
+  return impl_->poisson_ratio_at(depth);
+}
+
+bool SubsurfaceStress::coated() const {
+  return impl_->layered.has_value();
+}
+
+bool SubsurfaceStress::in_layer(double depth) const {
+  return impl_->layered && impl_->layered->body_at(depth) == Body::layer;
 }
 
 void SubsurfaceStress::set_pressure(std::span<const double> pressure) {

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <utility>
@@ -120,6 +121,48 @@ TEST(LayeredCliTest, FreeLineGridIsRefusedAndPeriodicLineSolves) {
   expect_input_error(run_solve(joined(cylinder, coating()), dir), "free 1D grid is not supported", output);
   const ProgramRun periodic = run_solve(joined(joined(cylinder, coating()), {{"--boundary", "periodic"}}), dir);
   EXPECT_EQ(periodic.exit_code, kExitOk) << periodic.err;
+}
+
+// A hard coating on a periodic grid, stresses at depths on both sides of the
+// interface: from `solve --stress-depths` and from `halfspace stress` on the
+// result, which reads the coating back (the two must agree exactly).
+TEST(LayeredCliTest, StressesBelowACoatingFromSolveAndFromTheStressCommand) {
+  const TempDir dir;
+  const fs::path output = dir / "coated.h5";
+  Options options = joined(joined(sphere(output), coating("2e-5", "4e11", "0.22")), {{"--boundary", "periodic"}});
+  options.push_back({"--stress-depths", "5e-6,2e-5,3e-5"});
+  const ProgramRun solved = run_solve(options, dir);
+  ASSERT_EQ(solved.exit_code, kExitOk) << solved.err;
+  const test::H5 file = test::open_file(output);
+  const auto in_layer = test::read_dataset<std::uint8_t>(file.get(), "/stress/in_layer", H5T_NATIVE_UINT8);
+  EXPECT_EQ(in_layer, (std::vector<std::uint8_t>{1, 1, 0}));
+  EXPECT_EQ(test::read_double_attribute(file.get(), "max_von_mises_z") > 0.0, true);
+  EXPECT_EQ(test::dataset_shape(file.get(), "/stress/hydrostatic"), (std::vector<hsize_t>{3, 32, 32}));
+
+  const fs::path stresses = dir / "stresses.h5";
+  const ProgramRun command = testing::run_program(
+      {"stress", output.string(), "--depths", "5e-6,2e-5,3e-5", "--output", stresses.string()}, dir.path());
+  ASSERT_EQ(command.exit_code, kExitOk) << command.err;
+  EXPECT_NE(command.out.find("coated: layer t = 2e-05 m"), std::string::npos) << command.out;
+  const test::H5 other = test::open_file(stresses);
+  for (const char* name : {"/stress/sigma_xx", "/stress/sigma_zz", "/stress/von_mises"}) {
+    EXPECT_EQ(test::read_dataset<double>(other.get(), name, H5T_NATIVE_DOUBLE),
+              test::read_dataset<double>(file.get(), name, H5T_NATIVE_DOUBLE))
+        << name;
+  }
+
+  // A coated result brings its own Poisson's ratios; a free grid is refused
+  // before solving.
+  const ProgramRun with_nu = testing::run_program(
+      {"stress", output.string(), "--depths", "5e-6", "--nu", "0.3", "--output", (dir / "s.h5").string()}, dir.path());
+  expect_input_error(with_nu, "--nu 0.3 is not used", dir / "s.h5");
+  const fs::path free_output = dir / "free.h5";
+  Options free = joined(sphere(free_output), coating());
+  free.push_back({"--stress-depths", "5e-6"});
+  expect_input_error(run_solve(free, dir), "--stress-depths 5e-6 for a coated half-space needs a periodic grid",
+                     free_output);
+  free.push_back({"--stress-nu", "0.3"});
+  expect_input_error(run_solve(free, dir), "is not used for a coated half-space", free_output);
 }
 
 }  // namespace

@@ -3,7 +3,8 @@
 // tables): numbers as scalar float64 or int64 little-endian attributes;
 // strings as variable-length UTF-8 (invalid bytes and NULs replaced by
 // U+FFFD); datasets with a `units` attribute, contiguous up to 65536 elements
-// and above that chunked in whole rows with shuffle and deflate; the file
+// and above that chunked in whole rows with shuffle and deflate (or, asked
+// for, without filters); the file
 // assembled in memory and written atomically through write_output_file.
 #pragma once
 
@@ -18,6 +19,11 @@
 #include "halfspace/grid.hpp"
 
 namespace halfspace::io {
+
+// How a chunked float64 dataset is stored: shuffle and deflate (the
+// convention), or without filters, for large fields that compress little
+// (the stress volume: docs/performance.md#subsurface-stresses).
+enum class Compression { deflate, none };
 
 // A group or dataset of a file that write_hdf5_file is building; valid only
 // inside its fill callback. Every method throws FileError with the reason
@@ -39,7 +45,7 @@ class Hdf5Node {
   // string attribute unless `units` is empty. Returns the dataset, for more
   // attributes.
   Hdf5Node write_dataset(std::string_view name, const std::vector<std::size_t>& shape, std::span<const double> values,
-                         std::string_view units) const;
+                         std::string_view units, Compression compression = Compression::deflate) const;
   Hdf5Node write_dataset(std::string_view name, const std::vector<std::size_t>& shape,
                          std::span<const std::int64_t> values, std::string_view units) const;
   Hdf5Node write_dataset(std::string_view name, const std::vector<std::size_t>& shape,

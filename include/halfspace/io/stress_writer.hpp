@@ -14,9 +14,12 @@
 namespace halfspace::io {
 
 // Under `root`: the group `stress` with `depths` (m, (nz)) and sigma_xx,
-// sigma_yy, sigma_zz, sigma_xy, sigma_xz, sigma_yz, von_mises, max_shear (Pa,
-// (nz, ny, nx); 1D (nz, n)), the group attribute poisson_ratio, and the root
-// attributes max_von_mises (Pa) and its position max_von_mises_x, _y, _z (m).
+// sigma_yy, sigma_zz, sigma_xy, sigma_xz, sigma_yz, von_mises, max_shear,
+// hydrostatic (Pa, (nz, ny, nx); 1D (nz, n)), the group attribute
+// poisson_ratio, and the root attributes max_von_mises (Pa) and its position
+// max_von_mises_x, _y, _z (m). Below a coating also `in_layer` ((nz), 1 for a
+// depth in the layer, 0 in the substrate) and the attributes layer_thickness
+// (m), layer_poisson_ratio and substrate_poisson_ratio.
 void write_stress_group(const Hdf5Node& root, const Grid& grid, const stress::StressVolume& volume, double nu);
 
 struct StressFileMetadata {

@@ -5,11 +5,13 @@
 
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <span>
 #include <vector>
 
 #include "halfspace/fft/fft_planning.hpp"
 #include "halfspace/grid.hpp"
+#include "halfspace/layered_material.hpp"
 #include "halfspace/stress/fourier_stress.hpp"
 
 namespace halfspace::stress {
@@ -29,7 +31,11 @@ struct StressVolume {
   // Each depths.size() * cells values, (nz, ny, nx) row-major (1D: (nz, n)), Pa.
   std::array<std::vector<double>, kComponentCount> components;
   std::vector<double> von_mises;
-  std::vector<double> max_shear;  // half the largest principal difference
+  std::vector<double> max_shear;    // half the largest principal difference
+  std::vector<double> hydrostatic;  // (xx + yy + zz) / 3
+  // A coated half-space: the body of each depth (true: in the layer, z <= t).
+  std::optional<LayeredMaterial> coating;
+  std::vector<bool> in_layer;
   VonMisesMaximum max_von_mises;  // the first cell reaching it, in depth then row order
 };
 
@@ -43,10 +49,17 @@ void check_depths(std::span<const double> depths);
 StressVolume compute_stress_volume(const Grid& grid, std::span<const double> pressure, std::span<const double> depths,
                                    double nu, FftPlanning planning = FftPlanning::estimate);
 
+// The same below a coated half-space (periodic grids only), each depth with
+// the constants of its body. Throws InputError for a free grid, bad depths,
+// material or pressure.
+StressVolume compute_stress_volume(const Grid& grid, std::span<const double> pressure, std::span<const double> depths,
+                                   const LayeredMaterial& coating, FftPlanning planning = FftPlanning::estimate);
+
 // Peak bytes of compute_stress_volume on `grid` at `depth_count` depths,
-// including the in-memory image of the file that stores it (the 8 stored
+// including the in-memory image of the file that stores it (the 9 stored
 // fields, 8 bytes each per cell and depth, three times) and the transforms'
-// workspace: an upper bound for the memory check of the command line.
-double stress_memory_estimate(const Grid& grid, std::size_t depth_count);
+// workspace (more for a coated body's solved modes): an upper bound for the
+// memory check of the command line.
+double stress_memory_estimate(const Grid& grid, std::size_t depth_count, bool coated = false);
 
 }  // namespace halfspace::stress

@@ -12,6 +12,7 @@
 
 #include "halfspace/fft/fft_planning.hpp"
 #include "halfspace/grid.hpp"
+#include "halfspace/layered_material.hpp"
 #include "halfspace/stress/fourier_stress.hpp"
 
 namespace halfspace::stress {
@@ -27,12 +28,22 @@ class SubsurfaceStress {
   // Plans the transforms of `grid` (made once, reused for every depth) for a
   // body of Poisson's ratio nu. Throws InputError for a bad nu.
   SubsurfaceStress(const Grid& grid, double nu, FftPlanning planning = FftPlanning::estimate);
+  // A coated half-space (layered_fourier_stress.hpp): depths z <= t are in
+  // the layer. Solves each mode's layer and substrate coefficients once, for
+  // every depth (about 32 bytes per cell). Periodic grids only: throws
+  // InputError naming the grid for a free one, or for a bad material.
+  SubsurfaceStress(const Grid& grid, const LayeredMaterial& coating, FftPlanning planning = FftPlanning::estimate);
   ~SubsurfaceStress();
   SubsurfaceStress(const SubsurfaceStress&) = delete;
   SubsurfaceStress& operator=(const SubsurfaceStress&) = delete;
 
   const Grid& grid() const;
+  // The Poisson's ratio of a homogeneous body, or of the body at `depth`.
   double poisson_ratio() const;
+  double poisson_ratio(double depth) const;
+  // Whether the stresses are those of a coated half-space, and the body of a depth.
+  bool coated() const;
+  bool in_layer(double depth) const;
 
   // Takes the surface pressure (Pa, grid.size() values, (ny, nx) row-major,
   // positive in compression): one forward FFT, kept for every depth. Throws
