@@ -163,6 +163,24 @@ TEST(LayeredCliTest, StressesBelowACoatingFromSolveAndFromTheStressCommand) {
                      free_output);
   free.push_back({"--stress-nu", "0.3"});
   expect_input_error(run_solve(free, dir), "is not used for a coated half-space", free_output);
+
+  // The stress command on a coated result of a free grid, and on a result
+  // whose coating attributes are incomplete.
+  ASSERT_EQ(run_solve(joined(sphere(free_output), coating()), dir).exit_code, kExitOk);
+  const auto stress_of = [&](const fs::path& result) {
+    return testing::run_program({"stress", result.string(), "--depths", "5e-6", "--output", (dir / "s.h5").string()},
+                                dir.path());
+  };
+  expect_input_error(stress_of(free_output), "coated half-space's result on a free grid", dir / "s.h5");
+  const fs::path partial = dir / "partial.h5";
+  fs::copy_file(output, partial);
+  {
+    const hid_t file = H5Fopen(partial.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    ASSERT_GE(file, 0);
+    ASSERT_GE(H5Adelete(file, "substrate_nu"), 0);
+    H5Fclose(file);
+  }
+  expect_input_error(stress_of(partial), "some but not all of the coating's attributes", dir / "s.h5");
 }
 
 }  // namespace
