@@ -687,11 +687,6 @@ SolveSetup make_solve_setup(const SolveOptions& options) {
     }
   });
   if (coating) {
-    if (surface.grid.dimension() == 1 && !surface.grid.periodic()) {
-      throw InputError(
-          "a coated half-space on a free 1D grid is not supported: pass --boundary periodic or use a "
-          "2D surface");
-    }
     if (!stress.depths.empty()) {
       throw InputError(
           "--stress-depths is not supported for a coated half-space: the subsurface stresses are those of a "
