@@ -695,11 +695,6 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
     }
   });
   if (coating) {
-    if (surface.grid.dimension() == 1 && !surface.grid.periodic()) {
-      throw InputError(
-          "a coated half-space on a free 1D grid is not supported: pass --boundary periodic or use a "
-          "2D surface");
-    }
     if (!stress.depths.empty() && !surface.grid.periodic()) {
       throw InputError(fmt::format(
           "{} for a coated half-space needs a periodic grid (the layered stresses are evaluated per Fourier "

@@ -223,15 +223,19 @@ FftInfluenceOperator::FftInfluenceOperator(const Grid& grid, double e_star, std:
 namespace {
 
 kernels::LayeredKernel checked_layered_kernel(const Grid& grid, const LayeredMaterial& material) {
+  require_coated_grid(grid);
+  return kernels::LayeredKernel(material);
+}
+
+}  // namespace
+
+void require_coated_grid(const Grid& grid) {
   // A free 1D grid would need the strip's counterpart of the smoothed term
   // and remainder; not made (docs/theory.md, "Coated half-space").
   if (!grid.periodic() && grid.dimension() == 1) {
     throw InputError("a coated half-space on a free 1D grid is not supported: use a periodic 1D grid or a 2D grid");
   }
-  return kernels::LayeredKernel(material);
 }
-
-}  // namespace
 
 FftInfluenceOperator::FftInfluenceOperator(const Grid& grid, const LayeredMaterial& material, FftPlanning planning)
     : impl_(std::make_unique<Impl>(grid, 1.0, checked_layered_kernel(grid, material),

@@ -152,7 +152,8 @@ TEST(SolverOptionsTest, TheFactoryRefusesWhatValidateRefuses) {
 }
 
 // The rules of a coated half-space live in validate(grid, coating), which
-// make_solver and the program both call: no dense solver, no adhesion.
+// make_solver and the program both call: no dense solver, a grid the coated
+// operator supports, no adhesion.
 TEST(SolverOptionsTest, CoatedHalfSpaceRefusesTheDenseSolversAndAdhesion) {
   const Grid grid = Grid::plane(16, 16, 1e-6, 1e-6, Boundary::free);
   const LayeredMaterial coating{4e-6, {3e9, 0.35}, {2.1e11, 0.29}};
@@ -176,6 +177,16 @@ TEST(SolverOptionsTest, CoatedHalfSpaceRefusesTheDenseSolversAndAdhesion) {
   const SolverOptionError error = refusal([&] { adhesive.validate(grid, coating); }, "adhesion");
   EXPECT_EQ(error.value(), "md");
   refusal([&] { make_solver(grid, coating, adhesive); }, "adhesion");
+  // The coated operator's grid rule (operators::require_coated_grid) is checked
+  // here too, before any work: a free 1D grid is refused, a periodic one not.
+  const SolverOptions pk;
+  try {
+    pk.validate(Grid::line(16, 1e-6, Boundary::free), coating);
+    ADD_FAILURE() << "a free 1D grid was accepted";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("free 1D grid is not supported"), std::string::npos) << error.what();
+  }
+  EXPECT_NO_THROW(pk.validate(Grid::line(16, 1e-6, Boundary::periodic), coating));
 }
 
 }  // namespace

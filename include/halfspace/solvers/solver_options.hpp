@@ -150,8 +150,9 @@ struct SolverOptions {
   void validate(const Grid& grid) const;
   // validate(grid), and the rules of a coated half-space (layered_material.hpp):
   // not a dense solver ("type": lemke and lcpquad assemble the homogeneous
-  // matrix) and no adhesion ("adhesion": the adhesive solver works on the
-  // homogeneous half-space).
+  // matrix), a grid its operator supports (operators::require_coated_grid,
+  // an InputError) and no adhesion ("adhesion": the adhesive solver works on
+  // the homogeneous half-space).
   void validate(const Grid& grid, const LayeredMaterial& coating) const;
 };
 
