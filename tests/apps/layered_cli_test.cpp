@@ -145,10 +145,20 @@ TEST(LayeredCliTest, StressesBelowACoatingFromSolveAndFromTheStressCommand) {
   ASSERT_EQ(command.exit_code, kExitOk) << command.err;
   EXPECT_NE(command.out.find("coated: layer t = 2e-05 m"), std::string::npos) << command.out;
   const test::H5 other = test::open_file(stresses);
+  // The two processes may plan their transforms differently (measured plans),
+  // so the fields agree to rounding, not bit for bit.
+  constexpr double kPlanRounding = 1e-12;  // relative to the field's largest value
   for (const char* name : {"/stress/sigma_xx", "/stress/sigma_zz", "/stress/von_mises"}) {
-    EXPECT_EQ(test::read_dataset<double>(other.get(), name, H5T_NATIVE_DOUBLE),
-              test::read_dataset<double>(file.get(), name, H5T_NATIVE_DOUBLE))
-        << name;
+    const auto from_command = test::read_dataset<double>(other.get(), name, H5T_NATIVE_DOUBLE);
+    const auto from_solve = test::read_dataset<double>(file.get(), name, H5T_NATIVE_DOUBLE);
+    ASSERT_EQ(from_command.size(), from_solve.size()) << name;
+    double largest = 0.0;
+    double worst = 0.0;
+    for (std::size_t i = 0; i < from_solve.size(); ++i) {
+      largest = std::max(largest, std::abs(from_solve[i]));
+      worst = std::max(worst, std::abs(from_command[i] - from_solve[i]));
+    }
+    EXPECT_LE(worst, kPlanRounding * largest) << name << ": largest difference " << worst << " of " << largest;
   }
 
   // A coated result brings its own Poisson's ratios; a free grid is refused
