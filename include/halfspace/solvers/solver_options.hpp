@@ -132,6 +132,9 @@ struct SolverOptions {
   struct Adhesion {
     AdhesionLaw law;
     double tolerance = 1e-6;
+    // Preconditioned conjugate gradients instead of SPG
+    // (AdhesiveSolverOptions::precondition).
+    bool precondition = false;
   };
   std::optional<Adhesion> adhesion;
 
