@@ -199,6 +199,21 @@ struct AdhesiveContactSolver::Impl {
     });
   }
 
+  // sum_i phi(g_i + step d_i) - phi(g_i) (with `to`: phi at offset + to
+  // minus phi at offset + v): the interaction energy's change, summed cell by
+  // cell so that a change far below the energy itself is not lost to
+  // rounding.
+  double interaction_change(const Eigen::ArrayXd& v, const Eigen::ArrayXd* d, double step,
+                            const Eigen::ArrayXd* to) const {
+    const AdhesionLaw& law = options.law;
+    return linalg::sum(size(), [&](std::size_t i) {
+      if (!physical[i]) return 0.0;
+      const double g = offset[i] + v[i];
+      const double moved = to ? offset[i] + (*to)[i] : g + step * (*d)[i];
+      return law.energy(std::max(moved, 0.0)) - law.energy(std::max(g, 0.0));
+    });
+  }
+
   // gradient = S v - t(g) on the grid, S v on the padding.
   void make_gradient() {
     const AdhesionLaw& law = options.law;
@@ -400,11 +415,14 @@ SolveResult AdhesiveContactSolver::Impl::solve_displacement(std::span<const doub
       }
       apply(stiffness, direction, s_direction);
       ++result.operator_applications;
-      const double elastic = 0.5 * dot(x, sx);
+      // Energy changes, not energies: near the solution the change is far
+      // below the rounding of the energy itself. Non-monotone as SPG's: the
+      // change is measured against the largest of the last kMemory energies.
+      const double allowance = *std::max_element(recent.begin(), recent.end()) - energy;
       const double linear = dot(direction, sx);
       const double quadratic = 0.5 * dot(direction, s_direction);
       double step = plain || !(quadratic > 0.0) ? 1.0 : -0.5 * slope / quadratic;
-      double trial_energy = 0.0;
+      double change = 0.0;
       bool clipped = false;
       int backtracks = 0;
       for (;; ++backtracks) {
@@ -415,14 +433,20 @@ SolveResult AdhesiveContactSolver::Impl::solve_displacement(std::span<const doub
           project(trial, trial);
           apply(stiffness, trial, scaled);  // S of the trial point
           ++result.operator_applications;
-          trial_energy = 0.5 * dot(trial, scaled) + interaction_energy(trial, nullptr, 0.0);
-          decrease = linalg::sum(m, [&](std::size_t i) { return gradient[i] * (trial[i] - x[i]); });
+          // 1/2 t.S t - 1/2 x.S x = 1/2 (t - x).(S t + S x).
+          const std::array<double, 2> sums2 = linalg::sums<2>(m, [&](std::size_t i) {
+            const double s_i = trial[i] - x[i];
+            return std::array<double, 2>{0.5 * s_i * (scaled[i] + sx[i]), gradient[i] * s_i};
+          });
+          change = sums2[0] + interaction_change(x, nullptr, 0.0, &trial);
+          decrease = sums2[1];
         } else {
-          trial_energy = elastic + step * linear + step * step * quadratic + interaction_energy(x, &direction, step);
+          change = step * linear + step * step * quadratic + interaction_change(x, &direction, step, nullptr);
         }
-        if (trial_energy <= energy + kSufficientDecrease * decrease || backtracks >= kMaxBacktracks) break;
+        if (change <= allowance + kSufficientDecrease * decrease || backtracks >= kMaxBacktracks) break;
         step *= 0.5;
       }
+      const double trial_energy = energy + change;
       if (backtracks >= kMaxBacktracks) {
         result.status = SolveStatus::breakdown;
         result.message =
@@ -441,11 +465,11 @@ SolveResult AdhesiveContactSolver::Impl::solve_displacement(std::span<const doub
       }
       make_gradient();
       energy = trial_energy;
+      recent[static_cast<std::size_t>(iteration + 1) % kMemory] = energy;
       restart = clipped || plain;
       continue;
     }
-    // The spectral step and the line search along d = P(v - alpha D G) - v
-    // (D = 1 unpreconditioned).
+    // The spectral step and the line search along d = P(v - alpha G) - v.
     trial = x - alpha * gradient;
     project(trial, trial);
     direction = trial - x;

@@ -59,13 +59,14 @@ std::vector<double> sphere_gap(const Grid& grid, double radius) {
 // ell spanning `width` ell: the smallest force of the unloading branch,
 // refined by the parabola through it and its neighbours (the force is
 // smooth at its minimum).
-double pull_off(const AdhesiveSphere& sphere, double cells_per_ell, double width,
-                const std::vector<double>& approaches) {
+double pull_off(const AdhesiveSphere& sphere, double cells_per_ell, double width, const std::vector<double>& approaches,
+                bool precondition = false) {
   const double dx = sphere.ell() / cells_per_ell;
   const auto n = static_cast<std::size_t>(std::lround(width * cells_per_ell));
   const Grid grid = Grid::plane(n, n, dx, dx, Boundary::free);
   AdhesiveSolverOptions options;
   options.law = sphere.law();
+  options.precondition = precondition;
   AdhesiveContactSolver solver(grid, sphere.e_star, options);
   const std::vector<double> gap = sphere_gap(grid, sphere.radius);
   std::vector<double> values;
@@ -102,36 +103,59 @@ constexpr double kDmtMaugisTolerance = 0.015;  // relative: the attracted disc's
 constexpr double kDmtLimitTolerance =
     0.03;  // relative: Maugis's own distance from DMT at lambda = 0.05, 1 %, plus the above
 
-TEST(AdhesionSphereTest, PullOffApproachesDmtAtSmallTaborParameter) {
+void expect_dmt_pull_off(bool precondition) {
   const AdhesiveSphere sphere{kDmtLambda};
   const std::vector<double> approaches{0.0, 0.5, 0.3, 0.1, -0.1, -0.2, -0.3, -0.35, -0.4, -0.5, -0.7};
-  const double force = pull_off(sphere, 6.0, 12.0, approaches);
+  const double force = pull_off(sphere, 6.0, 12.0, approaches, precondition);
   const double maugis = testing::maugis::pull_off(kDmtLambda);
   EXPECT_NEAR(force, maugis, kDmtMaugisTolerance * std::abs(maugis)) << "pull-off " << force << " pi w R";
   EXPECT_NEAR(force, -2.0, kDmtLimitTolerance * 2.0) << "DMT: -2 pi w R";
 }
 
+TEST(AdhesionSphereTest, PullOffApproachesDmtAtSmallTaborParameter) {
+  expect_dmt_pull_off(false);
+}
+TEST(AdhesionSphereTest, PullOffApproachesDmtAtSmallTaborParameterConjugateGradients) {
+  expect_dmt_pull_off(true);
+}
+
 // JKR side, lambda = 2 (Maugis -1.535, within 2.3 % of JKR's -3/2). The
 // cohesive zone is (3/4) ell / lambda^2 = 0.19 ell wide there; a grid that
 // does not resolve it traps the crack edge and overestimates the pull-off
-// (measured: -1.644 and -1.568 pi w R at 16 and 32 cells per ell, +7.1 %
-// and +2.2 %). The test checks the convergence and the fine grid against
+// (measured with SPG: -1.644 and -1.568 pi w R at 16 and 32 cells per ell,
+// +7.1 % and +2.2 %). The test checks the convergence and the fine grid against
 // Maugis and JKR. (At lambda = 3 the zone is 0.08 ell, and 32 cells per ell
 // still leave +8 %: docs/theory.md, "Adhesion".)
 constexpr double kJkrLambda = 2.0;
-constexpr double kJkrMaugisTolerance = 0.04;  // relative, against Maugis's value: the 32-per-ell grid's +2.2 %
-constexpr double kJkrLimitTolerance = 0.06;   // relative, against -3/2: Maugis's own 2.3 % plus the above
+// Relative tolerances against Maugis's value and against -3/2 (Maugis's own
+// 2.3 % plus the grid's error), per solver: SPG's 32-per-ell grid is +2.2 %
+// off Maugis; the preconditioned conjugate gradients keep the crack edge
+// trapped longer on unloading (measured: -1.776 and -1.659 pi w R at 16 and
+// 32 cells per ell, +16 % and +8.1 %), still converging with the grid.
+struct JkrTolerances {
+  double maugis;
+  double limit;
+};
+constexpr JkrTolerances kJkrSpg{0.04, 0.06};
+constexpr JkrTolerances kJkrConjugateGradients{0.10, 0.13};
 
-TEST(AdhesionSphereTest, PullOffConvergesTowardsJkrAtLargerTaborParameter) {
+void expect_jkr_pull_off(bool precondition, JkrTolerances tolerance) {
   const AdhesiveSphere sphere{kJkrLambda};
   const std::vector<double> approaches{0.2, 0.0, -0.2, -0.4, -0.5, -0.55, -0.6, -0.65, -0.7, -0.75, -0.8, -0.9, -1.0};
-  const double coarse = pull_off(sphere, 16.0, 4.0, approaches);
-  const double fine = pull_off(sphere, 32.0, 4.0, approaches);
+  const double coarse = pull_off(sphere, 16.0, 4.0, approaches, precondition);
+  const double fine = pull_off(sphere, 32.0, 4.0, approaches, precondition);
   const double maugis = testing::maugis::pull_off(kJkrLambda);
   EXPECT_LT(std::abs(fine - maugis), 0.6 * std::abs(coarse - maugis))
       << "coarse " << coarse << ", fine " << fine << ", Maugis " << maugis;
-  EXPECT_NEAR(fine, maugis, kJkrMaugisTolerance * std::abs(maugis)) << "coarse " << coarse << ", fine " << fine;
-  EXPECT_NEAR(fine, -1.5, kJkrLimitTolerance * 1.5) << "JKR: -3/2 pi w R";
+  EXPECT_NEAR(fine, maugis, tolerance.maugis * std::abs(maugis)) << "coarse " << coarse << ", fine " << fine;
+  EXPECT_NEAR(fine, -1.5, tolerance.limit * 1.5) << "JKR: -3/2 pi w R";
+}
+
+TEST(AdhesionSphereTest, PullOffConvergesTowardsJkrAtLargerTaborParameter) {
+  expect_jkr_pull_off(false, kJkrSpg);
+}
+TEST(AdhesionSphereTest, PullOffConvergesTowardsJkrAtLargerTaborParameterConjugateGradients) {
+  expect_jkr_pull_off(true, kJkrConjugateGradients);
 }
 
 TEST(AdhesionMaugisReferenceTest, ReachesTheJkrAndDmtLimits) {
