@@ -42,7 +42,7 @@ int run_solve(const SolveSetup& setup) {
   set_threads(setup.threads);
   const std::optional<PlotTool> plot =
       setup.plot ? std::optional<PlotTool>(find_plot_tool({"--plot", "drop --plot", {}})) : std::nullopt;
-  Progress progress(!setup.quiet, 1, setup.solver.tolerance);
+  Progress progress(!setup.quiet, 1, setup.solver.solver_tolerance());
   solvers::SolverOptions settings = setup.solver;
   settings.progress = progress.callback();
   // The solver and its operator are freed inside solve_surface, before the

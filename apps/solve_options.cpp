@@ -118,6 +118,9 @@ const std::array kOptions{
                 "range of the law (m): h0 for md, rho for exponential; or --adhesion-stress for md"},
     SolveOption{"adhesion-stress", &SolveOptions::adhesion_stress, Kind::number, kAdhesion, "PA",
                 "md only: the Dugdale stress sigma0 (Pa) instead of --adhesion-range (h0 = w / sigma0)"},
+    SolveOption{"adhesion-precondition", &SolveOptions::adhesion_precondition, Kind::text, kAdhesion, "on|off",
+                "on: the adhesive solver runs conjugate gradients preconditioned by the compliance (far fewer "
+                "iterations on rough md contacts; docs/solvers.md); off: spectral projected gradients [off]"},
     SolveOption{"output", &SolveOptions::output, Kind::path, kOutput, "FILE",
                 "result file (HDF5), required; replaced if it exists"},
     SolveOption{"quiet", &SolveOptions::quiet, Kind::flag, kOutput, "",

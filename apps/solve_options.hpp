@@ -72,6 +72,7 @@ struct SolveOptions : GivenOptions {
   std::optional<double> work_of_adhesion;
   std::optional<double> adhesion_range;
   std::optional<double> adhesion_stress;
+  std::optional<std::string> adhesion_precondition;  // on or off
   // Output.
   std::optional<std::string> output;
   bool quiet = false;

@@ -226,7 +226,8 @@ std::optional<solvers::SolverOptions::Adhesion> adhesion_from(const SolveOptions
     reject_given(o,
                  {{"work-of-adhesion", o.work_of_adhesion.has_value()},
                   {"adhesion-range", o.adhesion_range.has_value()},
-                  {"adhesion-stress", o.adhesion_stress.has_value()}},
+                  {"adhesion-stress", o.adhesion_stress.has_value()},
+                  {"adhesion-precondition", o.adhesion_precondition.has_value()}},
                  "needs --adhesion md|exponential");
     return std::nullopt;
   }
@@ -261,6 +262,13 @@ std::optional<solvers::SolverOptions::Adhesion> adhesion_from(const SolveOptions
     adhesion.law = {type, w, range};
   }
   if (o.tol) adhesion.tolerance = *o.tol;
+  if (o.adhesion_precondition) {
+    if (*o.adhesion_precondition != "on" && *o.adhesion_precondition != "off") {
+      throw InputError(
+          fmt::format("{} is invalid: allowed values are on and off", o.describe("adhesion-precondition")));
+    }
+    adhesion.precondition = *o.adhesion_precondition == "on";
+  }
   return adhesion;
 }
 

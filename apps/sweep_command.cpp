@@ -103,7 +103,7 @@ int run_sweep(const SolveSetup& setup) {
   const std::optional<PlotTool> plot =
       setup.plot ? std::optional<PlotTool>(find_plot_tool({"--plot", "drop --plot", {}})) : std::nullopt;
 
-  Progress progress(!setup.quiet, setup.load_values.size(), setup.solver.tolerance);
+  Progress progress(!setup.quiet, setup.load_values.size(), setup.solver.solver_tolerance());
   solvers::SolverOptions settings = setup.solver;
   settings.progress = progress.callback();
   const std::span<const double> heights(setup.heights.data(), static_cast<std::size_t>(setup.heights.size()));

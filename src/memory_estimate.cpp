@@ -112,11 +112,28 @@ bool deflated(const Grid& grid, const solvers::SolverOptions& options) {
          options.deflation.automatic_applies(grid);
 }
 
+// The adhesive solver (adhesive_contact_solver.cpp) on its variable's grid,
+// the zero-padded one on free grids: eight workspace fields (two more for
+// the conjugate gradients), the padding flags, the transform's real buffer
+// and spectrum, the kernel and stiffness symbols, and the residual history
+// (at most 100000 entries; its iteration limit defaults to 20000).
+double adhesive_bytes(const Extents& g, const solvers::SolverOptions& settings) {
+  const double rows = g.line ? 1.0 : (g.periodic ? g.ny : 2.0 * g.ny);
+  const double cols = g.periodic ? g.nx : 2.0 * g.nx;
+  const double m = rows * cols;
+  const double half = std::floor(cols / 2.0) + 1.0;
+  const double fields = settings.adhesion->precondition ? 10.0 : 8.0;
+  const double entries = std::min(static_cast<double>(settings.max_iterations.value_or(20000)), 100000.0) + 1.0;
+  return (fields * kDouble + 1.0 + kDouble) * m + kComplex * rows * half + 2.0 * kDouble * stored_rows(rows) * half +
+         kDouble * entries;
+}
+
 // The peak of the solve itself, besides the heights and the initial gap
 // the program holds and the fields of the finished steps of a sweep.
 double solver_peak(const Grid& grid, const solvers::SolverOptions& settings) {
   const Extents g(grid);
   const double history = kDouble * (static_cast<double>(std::max(settings.iteration_limit(), 0)) + 1.0);
+  if (settings.adhesion) return adhesive_bytes(g, settings) + result_bytes(g, history);
   if (is_dense(settings.type)) return dense_bytes(g) + result_bytes(g, history);
   if (settings.type == solvers::SolverType::pk) return level_bytes(g, false, false, history) + result_bytes(g, history);
   if (settings.type == solvers::SolverType::pk_fourier) {

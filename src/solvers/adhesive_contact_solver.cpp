@@ -71,6 +71,10 @@ struct AdhesiveContactSolver::Impl {
         stiffness(rows, cols / 2 + 1) {
     const std::size_t m = rows * cols;
     for (Eigen::ArrayXd* a : {&x, &sx, &gradient, &trial, &direction, &s_direction, &offset, &lower}) a->resize(m);
+    if (options.precondition) {
+      scaled.resize(m);
+      old_gradient.resize(m);
+    }
     physical.assign(m, 0);
     for (std::size_t k = 0; k < grid.size(); ++k) physical[index(k)] = 1;
     if (padded) {
@@ -195,11 +199,54 @@ struct AdhesiveContactSolver::Impl {
     });
   }
 
+  // sum_i phi(g_i + step d_i) - phi(g_i) (with `to`: phi at offset + to
+  // minus phi at offset + v): the interaction energy's change, summed cell by
+  // cell so that a change far below the energy itself is not lost to
+  // rounding.
+  double interaction_change(const Eigen::ArrayXd& v, const Eigen::ArrayXd* d, double step,
+                            const Eigen::ArrayXd* to) const {
+    const AdhesionLaw& law = options.law;
+    return linalg::sum(size(), [&](std::size_t i) {
+      if (!physical[i]) return 0.0;
+      const double g = offset[i] + v[i];
+      const double moved = to ? offset[i] + (*to)[i] : g + step * (*d)[i];
+      return law.energy(std::max(moved, 0.0)) - law.energy(std::max(g, 0.0));
+    });
+  }
+
   // gradient = S v - t(g) on the grid, S v on the padding.
   void make_gradient() {
     const AdhesionLaw& law = options.law;
     linalg::for_each_index(size(), [&](std::size_t i) {
       gradient[i] = physical[i] ? sx[i] - law.traction(std::max(offset[i] + x[i], 0.0)) : sx[i];
+    });
+  }
+
+  // Whether cell i is held by the wall: at its bound with the gradient,
+  // less the multiplier `shift` of the periodic mean constraint, pushing
+  // into the wall.
+  bool binding(std::size_t i, double shift) const { return x[i] <= lower[i] && gradient[i] - shift > 0.0; }
+
+  // The periodic grid's multiplier of mean v = 0: the mean gradient over the
+  // cells off the wall (0 on free grids, which have no such constraint).
+  double mean_shift() const {
+    if (padded) return 0.0;
+    const std::array<double, 2> free_part = linalg::sums<2>(size(), [&](std::size_t i) {
+      return x[i] > lower[i] ? std::array<double, 2>{gradient[i], 1.0} : std::array<double, 2>{0.0, 0.0};
+    });
+    return free_part[1] > 0.0 ? free_part[0] / free_part[1] : 0.0;
+  }
+
+  // scaled = D (G - shift) on the cells the wall does not hold, 0 on those
+  // it holds: D is the compliance K's principal block on the free cells. K
+  // inverts the elastic stiffness that makes the plain gradient
+  // ill-conditioned (symbol E*|q|/2). One FFT pair.
+  void scale_gradient(double shift) {
+    const std::size_t m = size();
+    linalg::for_each_index(m, [&](std::size_t i) { scaled[i] = binding(i, shift) ? 0.0 : gradient[i] - shift; });
+    apply(kernel, scaled, scaled);
+    linalg::for_each_index(m, [&](std::size_t i) {
+      if (binding(i, shift)) scaled[i] = 0.0;
     });
   }
 
@@ -227,7 +274,8 @@ struct AdhesiveContactSolver::Impl {
   // point P(v - alpha G), the step d, S d, the offset h - delta (gap =
   // offset + v) and the bound delta - h (-inf on the padding).
   Eigen::ArrayXd x, sx, gradient, trial, direction, s_direction, offset, lower;
-  bool have_last = false;  // x holds the last solve's displacement
+  Eigen::ArrayXd scaled, old_gradient;  // preconditioned solves only: D G (or S of a trial point), the last G
+  bool have_last = false;               // x holds the last solve's displacement
   double last_approach = 0.0;
 };
 
@@ -260,7 +308,7 @@ SolveResult AdhesiveContactSolver::Impl::solve_displacement(std::span<const doub
     x = direction;
   }
   SolveResult result;
-  result.solver = "adhesive-spg";
+  result.solver = options.precondition ? "adhesive-pcg" : "adhesive-spg";
   result.tolerance = options.tolerance;
   if (!project(x, x)) {
     result.status = SolveStatus::breakdown;
@@ -275,9 +323,15 @@ SolveResult AdhesiveContactSolver::Impl::solve_displacement(std::span<const doub
   recent.fill(energy);
 
   const double c = compliance;
+  const bool preconditioned = options.precondition;
   const double alpha_min = 1e-10 * c;
   const double alpha_max = 1e6 * c;
   double alpha = c;
+  // Conjugate gradients: restart after a step the wall clipped, or when the
+  // set of cells it holds changed; rho = (G - shift).D(G - shift).
+  bool restart = true;
+  double rho_old = 0.0;
+  double bound_old = -1.0;
   const double stress = options.law.stress();
   result.status = SolveStatus::iteration_limit;
   for (int iteration = 0;; ++iteration) {
@@ -305,13 +359,123 @@ SolveResult AdhesiveContactSolver::Impl::solve_displacement(std::span<const doub
                                    residual, options.tolerance);
       break;
     }
+    if (preconditioned) {
+      // Preconditioned non-linear conjugate gradients on the free cells
+      // (Polak-Ribiere+), the wall's cells held, the step the minimiser of
+      // the elastic energy along d, clipped onto the wall and backtracked
+      // until the energy falls (Armijo, monotone).
+      const double shift = mean_shift();
+      scale_gradient(shift);
+      ++result.operator_applications;
+      const std::array<double, 3> sums = linalg::sums<3>(m, [&](std::size_t i) {
+        const bool held = binding(i, shift);
+        return std::array<double, 3>{held ? 1.0 : 0.0, scaled[i] * (gradient[i] - shift),
+                                     restart ? 0.0 : scaled[i] * (gradient[i] - old_gradient[i])};
+      });
+      double beta = 0.0;
+      if (!restart && sums[0] == bound_old && rho_old > 0.0) beta = std::max(0.0, sums[2] / rho_old);
+      rho_old = sums[1];
+      bound_old = sums[0];
+      const auto make_direction = [&](double b) {
+        linalg::for_each_index(
+            m, [&](std::size_t i) { direction[i] = binding(i, shift) ? 0.0 : -scaled[i] + b * direction[i]; });
+        if (!padded) {
+          // Mean-free on the free cells: mean v = 0 holds along the line.
+          const std::array<double, 2> mean = linalg::sums<2>(m, [&](std::size_t i) {
+            return binding(i, shift) ? std::array<double, 2>{0.0, 0.0} : std::array<double, 2>{direction[i], 1.0};
+          });
+          const double mu = mean[1] > 0.0 ? mean[0] / mean[1] : 0.0;
+          linalg::for_each_index(m, [&](std::size_t i) {
+            if (!binding(i, shift)) direction[i] -= mu;
+          });
+        }
+        return dot(gradient, direction);
+      };
+      double slope = make_direction(beta);
+      if (!(slope < 0.0) && beta != 0.0) {
+        linalg::for_each_index(m, [&](std::size_t i) { direction[i] = 0.0; });
+        slope = make_direction(0.0);
+      }
+      bool plain = false;
+      if (!(slope < 0.0)) {
+        // The plain projected gradient step always descends.
+        trial = x - c * gradient;
+        project(trial, trial);
+        direction = trial - x;
+        slope = dot(gradient, direction);
+        plain = true;
+      }
+      if (!(slope < 0.0)) {
+        result.status = SolveStatus::breakdown;
+        result.message = fmt::format(
+            "the conjugate direction is no descent direction at iteration {} (residual {:.3g}): rounding limits "
+            "the accuracy; loosen the tolerance",
+            iteration, residual);
+        break;
+      }
+      apply(stiffness, direction, s_direction);
+      ++result.operator_applications;
+      // Energy changes, not energies: near the solution the change is far
+      // below the rounding of the energy itself. Non-monotone as SPG's: the
+      // change is measured against the largest of the last kMemory energies.
+      const double allowance = *std::max_element(recent.begin(), recent.end()) - energy;
+      const double linear = dot(direction, sx);
+      const double quadratic = 0.5 * dot(direction, s_direction);
+      double step = plain || !(quadratic > 0.0) ? 1.0 : -0.5 * slope / quadratic;
+      double change = 0.0;
+      bool clipped = false;
+      int backtracks = 0;
+      for (;; ++backtracks) {
+        trial = x + step * direction;
+        clipped = linalg::sum(m, [&](std::size_t i) { return trial[i] < lower[i] ? 1.0 : 0.0; }) > 0.0;
+        double decrease = step * slope;
+        if (clipped) {
+          project(trial, trial);
+          apply(stiffness, trial, scaled);  // S of the trial point
+          ++result.operator_applications;
+          // 1/2 t.S t - 1/2 x.S x = 1/2 (t - x).(S t + S x).
+          const std::array<double, 2> sums2 = linalg::sums<2>(m, [&](std::size_t i) {
+            const double s_i = trial[i] - x[i];
+            return std::array<double, 2>{0.5 * s_i * (scaled[i] + sx[i]), gradient[i] * s_i};
+          });
+          change = sums2[0] + interaction_change(x, nullptr, 0.0, &trial);
+          decrease = sums2[1];
+        } else {
+          change = step * linear + step * step * quadratic + interaction_change(x, &direction, step, nullptr);
+        }
+        if (change <= allowance + kSufficientDecrease * decrease || backtracks >= kMaxBacktracks) break;
+        step *= 0.5;
+      }
+      const double trial_energy = energy + change;
+      if (backtracks >= kMaxBacktracks) {
+        result.status = SolveStatus::breakdown;
+        result.message =
+            fmt::format("the line search found no decrease at iteration {} (residual {:.3g})", iteration, residual);
+        break;
+      }
+      old_gradient = gradient;
+      x = trial;
+      if (clipped) {
+        sx = scaled;
+      } else if ((iteration + 1) % kRefreshEvery == 0) {
+        apply(stiffness, x, sx);
+        ++result.operator_applications;
+      } else {
+        sx += step * s_direction;
+      }
+      make_gradient();
+      energy = trial_energy;
+      recent[static_cast<std::size_t>(iteration + 1) % kMemory] = energy;
+      restart = clipped || plain;
+      continue;
+    }
     // The spectral step and the line search along d = P(v - alpha G) - v.
     trial = x - alpha * gradient;
     project(trial, trial);
     direction = trial - x;
+    const double slope = dot(gradient, direction);
     apply(stiffness, direction, s_direction);
     ++result.operator_applications;
-    const double slope = dot(gradient, direction);
     if (!(slope < 0.0)) {
       result.status = SolveStatus::breakdown;
       result.message = fmt::format(

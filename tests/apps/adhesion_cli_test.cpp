@@ -119,6 +119,8 @@ TEST(AdhesionCliTest, RefusesInconsistentAdhesionOptions) {
   expect_refused({"--adhesion-range", "-1e-6"}, "--adhesion-range -1e-6 is invalid");
   expect_refused({"--adhesion-stress", "0"}, "--adhesion-stress 0 is invalid");
   expect_refused({"--adhesion-range", "1e-6", "--solver", "pk"}, "adhesion has its own solver");
+  expect_refused({"--adhesion-range", "1e-6", "--adhesion-precondition", "yes"},
+                 "--adhesion-precondition yes is invalid: allowed values are on and off");
   expect_refused({"--adhesion", "jkr", "--work-of-adhesion", "0.05", "--adhesion-range", "1e-6"},
                  "allowed laws are md, exponential", false);
   // Without --adhesion: the law's options alone, and a negative approach, are refused.

@@ -82,6 +82,13 @@ solvers::SolverOptions solver(const std::string& name, std::optional<std::size_t
   return settings;
 }
 
+// Maugis-Dugdale, w = 0.05 J/m^2, h0 = 10 nm, as the adhesive cases ask.
+solvers::SolverOptions adhesive(bool precondition) {
+  solvers::SolverOptions settings;
+  settings.adhesion = solvers::SolverOptions::Adhesion{AdhesionLaw::maugis_dugdale(0.05, 1e-8), 1e-6, precondition};
+  return settings;
+}
+
 TEST(MemoryEstimateCliTest, EstimateBoundsTheMeasuredPeakWithinAFactorOfThree) {
   const std::vector<Case> cases{
       {"periodic 2D wavy, pk-multilevel",
@@ -113,6 +120,36 @@ TEST(MemoryEstimateCliTest, EstimateBoundsTheMeasuredPeakWithinAFactorOfThree) {
        Grid::plane(256, 256, 5e-4 / 256, 5e-4 / 256, Boundary::free),
        solver("pk-multilevel"),
        4},
+      {"free 2D sphere, adhesive (SPG)",
+       {"--geometry", "sphere", "--radius", "0.01", "--grid", "256x256", "--size", "5e-4", "--approach", "1e-7",
+        "--adhesion", "md", "--work-of-adhesion", "0.05", "--adhesion-range", "1e-8"},
+       Grid::plane(256, 256, 5e-4 / 256, 5e-4 / 256, Boundary::free),
+       adhesive(false)},
+      {"periodic 2D wavy, adhesive (conjugate gradients)",
+       {"--geometry",
+        "wavy",
+        "--wavelength",
+        "2.5e-4",
+        "--amplitude",
+        "1e-6",
+        "--grid",
+        "512x512",
+        "--size",
+        "1e-3",
+        "--boundary",
+        "periodic",
+        "--approach",
+        "5e-7",
+        "--adhesion",
+        "md",
+        "--work-of-adhesion",
+        "0.05",
+        "--adhesion-range",
+        "1e-8",
+        "--adhesion-precondition",
+        "on"},
+       Grid::plane(512, 512, 1e-3 / 512, 1e-3 / 512, Boundary::periodic),
+       adhesive(true)},
       {"free 1D cylinder, lemke (dense)",
        {"--geometry", "cylinder", "--radius", "0.01", "--grid", "1024", "--size", "1e-4", "--force", "1e3", "--solver",
         "lemke"},

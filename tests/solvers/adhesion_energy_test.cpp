@@ -33,10 +33,12 @@ double total_energy(const Grid& grid, const SolveResult& result, const AdhesionL
   return energy * grid.cell_area();
 }
 
-AdhesiveContactSolver make_solver(const Grid& grid, const AdhesionLaw& law, double tolerance = 1e-6) {
+AdhesiveContactSolver make_solver(const Grid& grid, const AdhesionLaw& law, double tolerance = 1e-6,
+                                  bool precondition = false) {
   AdhesiveSolverOptions options;
   options.law = law;
   options.tolerance = tolerance;
+  options.precondition = precondition;
   return AdhesiveContactSolver(grid, 1.0, options);
 }
 
@@ -98,8 +100,8 @@ BumpCase bump(int dimension, Boundary boundary) {
 // to the integral of |F|; measured: below 2e-4 with the trapezoidal rule).
 constexpr double kEnergyBalanceTolerance = 1e-3;
 
-void expect_energy_balance(const BumpCase& c) {
-  AdhesiveContactSolver solver = make_solver(c.grid, c.law, 1e-7);
+void expect_energy_balance(const BumpCase& c, bool precondition = false) {
+  AdhesiveContactSolver solver = make_solver(c.grid, c.law, 1e-7, precondition);
   const double unit = c.law.range;  // ell^2 / R
   std::vector<SolveResult> results;
   Eigen::ArrayXd start;
@@ -108,7 +110,7 @@ void expect_energy_balance(const BumpCase& c) {
     std::span<const double> warm;
     if (start.size() > 0) warm = {start.data(), c.grid.size()};
     results.push_back(solver.solve(c.gap, Loading::approach(approach), warm));
-    ASSERT_TRUE(results.back().converged()) << results.back().message;
+    ASSERT_TRUE(results.back().converged()) << "step " << k << ": " << results.back().message;
     start = results.back().pressure;
   }
   const double step = results[1].approach - results[0].approach;
@@ -137,6 +139,20 @@ TEST(AdhesionEnergyTest, WorkEqualsEnergyChangePeriodic1D) {
 }
 TEST(AdhesionEnergyTest, WorkEqualsEnergyChangeFree1D) {
   expect_energy_balance(bump(1, Boundary::free));
+}
+
+// The same with the preconditioned conjugate gradients.
+TEST(AdhesionEnergyTest, WorkEqualsEnergyChangePeriodic2DConjugateGradients) {
+  expect_energy_balance(bump(2, Boundary::periodic), true);
+}
+TEST(AdhesionEnergyTest, WorkEqualsEnergyChangeFree2DConjugateGradients) {
+  expect_energy_balance(bump(2, Boundary::free), true);
+}
+TEST(AdhesionEnergyTest, WorkEqualsEnergyChangePeriodic1DConjugateGradients) {
+  expect_energy_balance(bump(1, Boundary::periodic), true);
+}
+TEST(AdhesionEnergyTest, WorkEqualsEnergyChangeFree1DConjugateGradients) {
+  expect_energy_balance(bump(1, Boundary::free), true);
 }
 
 TEST(AdhesionEnergyTest, WarmStartFromTheSolutionNeedsNoIteration) {

@@ -59,13 +59,14 @@ std::vector<double> sphere_gap(const Grid& grid, double radius) {
 // ell spanning `width` ell: the smallest force of the unloading branch,
 // refined by the parabola through it and its neighbours (the force is
 // smooth at its minimum).
-double pull_off(const AdhesiveSphere& sphere, double cells_per_ell, double width,
-                const std::vector<double>& approaches) {
+double pull_off(const AdhesiveSphere& sphere, double cells_per_ell, double width, const std::vector<double>& approaches,
+                bool precondition = false) {
   const double dx = sphere.ell() / cells_per_ell;
   const auto n = static_cast<std::size_t>(std::lround(width * cells_per_ell));
   const Grid grid = Grid::plane(n, n, dx, dx, Boundary::free);
   AdhesiveSolverOptions options;
   options.law = sphere.law();
+  options.precondition = precondition;
   AdhesiveContactSolver solver(grid, sphere.e_star, options);
   const std::vector<double> gap = sphere_gap(grid, sphere.radius);
   std::vector<double> values;
@@ -102,36 +103,111 @@ constexpr double kDmtMaugisTolerance = 0.015;  // relative: the attracted disc's
 constexpr double kDmtLimitTolerance =
     0.03;  // relative: Maugis's own distance from DMT at lambda = 0.05, 1 %, plus the above
 
-TEST(AdhesionSphereTest, PullOffApproachesDmtAtSmallTaborParameter) {
+void expect_dmt_pull_off(bool precondition) {
   const AdhesiveSphere sphere{kDmtLambda};
   const std::vector<double> approaches{0.0, 0.5, 0.3, 0.1, -0.1, -0.2, -0.3, -0.35, -0.4, -0.5, -0.7};
-  const double force = pull_off(sphere, 6.0, 12.0, approaches);
+  const double force = pull_off(sphere, 6.0, 12.0, approaches, precondition);
   const double maugis = testing::maugis::pull_off(kDmtLambda);
   EXPECT_NEAR(force, maugis, kDmtMaugisTolerance * std::abs(maugis)) << "pull-off " << force << " pi w R";
   EXPECT_NEAR(force, -2.0, kDmtLimitTolerance * 2.0) << "DMT: -2 pi w R";
 }
 
+TEST(AdhesionSphereTest, PullOffApproachesDmtAtSmallTaborParameter) {
+  expect_dmt_pull_off(false);
+}
+TEST(AdhesionSphereTest, PullOffApproachesDmtAtSmallTaborParameterConjugateGradients) {
+  expect_dmt_pull_off(true);
+}
+
 // JKR side, lambda = 2 (Maugis -1.535, within 2.3 % of JKR's -3/2). The
 // cohesive zone is (3/4) ell / lambda^2 = 0.19 ell wide there; a grid that
 // does not resolve it traps the crack edge and overestimates the pull-off
-// (measured: -1.644 and -1.568 pi w R at 16 and 32 cells per ell, +7.1 %
-// and +2.2 %). The test checks the convergence and the fine grid against
+// (measured with SPG: -1.644 and -1.568 pi w R at 16 and 32 cells per ell,
+// +7.1 % and +2.2 %). The test checks the convergence and the fine grid against
 // Maugis and JKR. (At lambda = 3 the zone is 0.08 ell, and 32 cells per ell
 // still leave +8 %: docs/theory.md, "Adhesion".)
 constexpr double kJkrLambda = 2.0;
-constexpr double kJkrMaugisTolerance = 0.04;  // relative, against Maugis's value: the 32-per-ell grid's +2.2 %
-constexpr double kJkrLimitTolerance = 0.06;   // relative, against -3/2: Maugis's own 2.3 % plus the above
+// Relative tolerances against Maugis's value and against -3/2 (Maugis's own
+// 2.3 % plus the grid's error), per solver: SPG's 32-per-ell grid is +2.2 %
+// off Maugis; the preconditioned conjugate gradients keep the crack edge
+// trapped longer on unloading (measured: -1.776 and -1.659 pi w R at 16 and
+// 32 cells per ell, +16 % and +8.1 %), still converging with the grid.
+struct JkrTolerances {
+  double maugis;
+  double limit;
+};
+constexpr JkrTolerances kJkrSpg{0.04, 0.06};
+constexpr JkrTolerances kJkrConjugateGradients{0.10, 0.13};
 
-TEST(AdhesionSphereTest, PullOffConvergesTowardsJkrAtLargerTaborParameter) {
+void expect_jkr_pull_off(bool precondition, JkrTolerances tolerance) {
   const AdhesiveSphere sphere{kJkrLambda};
   const std::vector<double> approaches{0.2, 0.0, -0.2, -0.4, -0.5, -0.55, -0.6, -0.65, -0.7, -0.75, -0.8, -0.9, -1.0};
-  const double coarse = pull_off(sphere, 16.0, 4.0, approaches);
-  const double fine = pull_off(sphere, 32.0, 4.0, approaches);
+  const double coarse = pull_off(sphere, 16.0, 4.0, approaches, precondition);
+  const double fine = pull_off(sphere, 32.0, 4.0, approaches, precondition);
   const double maugis = testing::maugis::pull_off(kJkrLambda);
   EXPECT_LT(std::abs(fine - maugis), 0.6 * std::abs(coarse - maugis))
       << "coarse " << coarse << ", fine " << fine << ", Maugis " << maugis;
-  EXPECT_NEAR(fine, maugis, kJkrMaugisTolerance * std::abs(maugis)) << "coarse " << coarse << ", fine " << fine;
-  EXPECT_NEAR(fine, -1.5, kJkrLimitTolerance * 1.5) << "JKR: -3/2 pi w R";
+  EXPECT_NEAR(fine, maugis, tolerance.maugis * std::abs(maugis)) << "coarse " << coarse << ", fine " << fine;
+  EXPECT_NEAR(fine, -1.5, tolerance.limit * 1.5) << "JKR: -3/2 pi w R";
+}
+
+TEST(AdhesionSphereTest, PullOffConvergesTowardsJkrAtLargerTaborParameter) {
+  expect_jkr_pull_off(false, kJkrSpg);
+}
+TEST(AdhesionSphereTest, PullOffConvergesTowardsJkrAtLargerTaborParameterConjugateGradients) {
+  expect_jkr_pull_off(true, kJkrConjugateGradients);
+}
+
+// The load-contact-radius relation on the loading branch at lambda = 2: a
+// sweep from first touch (approach 0) to 1.5 ell^2 / R, each step's force
+// P (in pi w R) against Maugis's P(A) at the contact radius A =
+// sqrt(area / pi) / ell of the cells at the wall (A = 1.45-1.88 here). JKR's
+// F(a) = 4 E* a^3 / (3R) - sqrt(8 pi w E* a^3), P = A^3 - sqrt(6 A^3) in
+// these units, is Maugis's curve as lambda -> infinity (checked on the
+// reference below); at lambda = 2 the curve still lies 0.3-0.5 pi w R above
+// JKR, and the larger lambda that would close that gap needs a grid finer
+// than a unit test affords (the cohesive zone is 0.75 ell / lambda^2 wide).
+// The error is dominated by the contact radius the discrete wall set gives:
+// dP/dA is about 4 here, so a radius off by a third of a cell at 16 cells
+// per ell moves P by 0.1. Measured largest |P - P_Maugis(A)| over the three
+// loaded steps: 0.40 and 0.26 pi w R at 8 and 16 cells per ell.
+constexpr double kLoadingBranchTolerance = 0.35;  // pi w R, absolute: the 16-per-ell grid's 0.26 plus margin
+
+// The largest |P - P_Maugis(A)| over the loaded steps on a free grid of
+// `cells_per_ell` cells per ell spanning 4 ell.
+double loading_branch_error(const AdhesiveSphere& sphere, double cells_per_ell) {
+  const double dx = sphere.ell() / cells_per_ell;
+  const auto n = static_cast<std::size_t>(std::lround(4.0 * cells_per_ell));
+  const Grid grid = Grid::plane(n, n, dx, dx, Boundary::free);
+  AdhesiveSolverOptions options;
+  options.law = sphere.law();
+  AdhesiveContactSolver solver(grid, sphere.e_star, options);
+  const std::vector<double> gap = sphere_gap(grid, sphere.radius);
+  std::vector<double> values;
+  for (const double a : {0.0, 0.5, 1.0, 1.5}) values.push_back(a * sphere.approach_unit());
+  analysis::LoadSweepOptions sweep;
+  sweep.signed_loads = true;
+  const std::vector<analysis::SweepStep> steps =
+      analysis::run_load_sweep(solver, grid, gap, ControlMode::approach, values, sweep);
+  double worst = 0.0;
+  for (std::size_t k = 1; k < steps.size(); ++k) {
+    const SolveResult& r = steps[k].result;
+    EXPECT_TRUE(r.converged()) << "approach " << steps[k].loading.value << ": " << r.message;
+    const double a = std::sqrt(r.contact_fraction * grid.domain_area() / kPi) / sphere.ell();
+    const double p = r.total_force / sphere.force_unit();
+    // In contact: the loading branch has jumped in.
+    EXPECT_GT(a, 1.0) << "approach " << steps[k].loading.value;
+    worst = std::max(worst, std::abs(p - testing::maugis::load(sphere.lambda, a)));
+  }
+  return worst;
+}
+
+TEST(AdhesionSphereTest, LoadAgainstContactRadiusFollowsMaugisOnLoading) {
+  const AdhesiveSphere sphere{kJkrLambda};
+  const double coarse = loading_branch_error(sphere, 8.0);
+  const double fine = loading_branch_error(sphere, 16.0);
+  EXPECT_LT(fine, 0.8 * coarse) << "coarse " << coarse << ", fine " << fine << " pi w R";
+  EXPECT_LT(fine, kLoadingBranchTolerance) << "coarse " << coarse << ", fine " << fine << " pi w R";
 }
 
 TEST(AdhesionMaugisReferenceTest, ReachesTheJkrAndDmtLimits) {

@@ -28,6 +28,21 @@
 // stationary point its pressure vanishes and v on the grid is K p exactly
 // (ContactMechanics' free-boundary half-space does the same).
 //
+// Preconditioning (optional). The plain gradient's Hessian is S, whose
+// symbol grows like |q|, so SPG's iterations grow with the grid. The
+// option runs preconditioned non-linear conjugate gradients instead
+// (Polak-Ribiere+) on the cells the wall does not hold: the gradient there
+// is scaled by the compliance K = S^-1 (its principal block on those cells,
+// a two-metric projection in the sense of Bertsekas 1982, SIAM J. Control
+// Optim. 20, 221), which flattens the elastic spectrum; the cells the wall
+// holds stay put. The step minimises the elastic energy along the
+// direction, is clipped onto the wall and halved until the energy falls
+// (Armijo); a clipped step or a change of the held set restarts the
+// conjugation, as Polonsky-Keer restarts on a change of the contact set.
+// Where the conjugate direction does not descend, the iteration takes the
+// plain projected gradient step. Two or three FFT pairs per iteration
+// against SPG's one.
+//
 // Stopping. residual = max_i |P(v - c G) - v|_i / (c p_ref), with G the
 // gradient, P the projection onto the constraints, c = K_ii (the cell's
 // self-compliance, m/Pa) and p_ref = max(w / range, max |p|): the largest
@@ -53,6 +68,11 @@ struct AdhesiveSolverOptions {
   double tolerance = 1e-6;     // relative residual, see Stopping above
   int max_iterations = 20000;  // per displacement-controlled solve
   FftPlanning fft_planning = FftPlanning::estimate;
+  // Preconditioned conjugate gradients instead of SPG (see Preconditioning
+  // above): far fewer iterations on rough Maugis-Dugdale contacts, but not
+  // yet the default (docs/solvers.md#adhesion-adhesive-spg says where it
+  // falls short).
+  bool precondition = false;
   // Load control: relative force tolerance of the search on the approach,
   // and its limit of displacement-controlled solves.
   double force_tolerance = 1e-6;

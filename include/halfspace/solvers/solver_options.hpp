@@ -133,10 +133,16 @@ struct SolverOptions {
   struct Adhesion {
     AdhesionLaw law;
     double tolerance = 1e-6;
+    // Preconditioned conjugate gradients instead of SPG
+    // (AdhesiveSolverOptions::precondition).
+    bool precondition = false;
   };
   std::optional<Adhesion> adhesion;
 
   int iteration_limit() const { return max_iterations.value_or(kDefaultMaxIterations); }
+  // The tolerance of the solver make_solver builds: the adhesive solver's
+  // own with adhesion, `tolerance` otherwise (progress displays use it).
+  double solver_tolerance() const { return adhesion ? adhesion->tolerance : tolerance; }
 
   // Throws SolverOptionError naming the option unless: 0 < tolerance < 1;
   // max_iterations >= 1, and unset for lcpquad; the nested options are
