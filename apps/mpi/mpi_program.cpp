@@ -23,6 +23,7 @@
 #include "../progress.hpp"
 #include "../summary.hpp"
 #include "../sweep_command.hpp"
+#include "halfspace/analysis/contact_statistics.hpp"
 #include "halfspace/error.hpp"
 #include "halfspace/io/result_metadata.hpp"
 #include "halfspace/io/result_writer.hpp"
@@ -30,7 +31,6 @@
 #include "halfspace/mpi/session.hpp"
 #include "halfspace/mpi/slab_fft.hpp"
 #include "halfspace/mpi/slab_gather.hpp"
-#include "halfspace/surface/statistics.hpp"
 #include "halfspace/threads.hpp"
 
 namespace halfspace::app {
@@ -221,7 +221,7 @@ std::optional<int> run_solve_on_slabs(const SolveSetup& setup) {
     activity.emplace(fmt::format("computing the statistics of the {} grid", setup.grid.shape_string()));
     io::ResultMetadata metadata = io::result_metadata(provenance(setup), setup.grid, heights);
     metadata.contact_statistics =
-        surface::contact_statistics(setup.grid, span_of(result.pressure), span_of(result.gap));
+        analysis::contact_statistics(setup.grid, span_of(result.pressure), span_of(result.gap));
     activity.emplace(fmt::format("writing {}", setup.output.string()));
     io::write_result(setup.output, setup.grid, heights, result, metadata);
   });
