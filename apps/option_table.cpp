@@ -303,9 +303,11 @@ void merge_config_file(std::span<const BoundOption> options, std::span<const Alt
     if (is_set(spec)) set_keys.emplace(spec.key);
   }
   for (auto&& [key, node] : table) {
-    const auto spec = std::find_if(options.begin(), options.end(),
-                                   [&](const BoundOption& option) { return option.key == key.str(); });
-    if (spec == options.end()) throw InputError(unknown_key_message(key.str(), file, options, command_name));
+    // A named copy: clang 14 (the fuzz build) cannot capture a structured binding.
+    const std::string_view name = key.str();
+    const auto spec =
+        std::find_if(options.begin(), options.end(), [&](const BoundOption& option) { return option.key == name; });
+    if (spec == options.end()) throw InputError(unknown_key_message(name, file, options, command_name));
     if (set_keys.contains(spec->key) || excluded_by(spec->key, set_keys, alternatives)) continue;
     set_from_toml(*spec, node, file);
     given.from_config.emplace(spec->key);
