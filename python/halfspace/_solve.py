@@ -103,10 +103,12 @@ def _solver_options(solver, tol, max_iter, fft_planning, deflation_block, laws) 
             "deflation_block": deflation_block, **laws}
 
 
-def _laws(hardness, adhesion, work_of_adhesion, adhesion_range, adhesion_stress, adhesion_tol) -> dict:
+def _laws(hardness, adhesion, work_of_adhesion, adhesion_range, adhesion_stress, adhesion_tol,
+          adhesion_precondition) -> dict:
     """The interface-law keywords that were given."""
     given = {"hardness": hardness, "adhesion": adhesion, "work_of_adhesion": work_of_adhesion,
-             "adhesion_range": adhesion_range, "adhesion_stress": adhesion_stress, "adhesion_tol": adhesion_tol}
+             "adhesion_range": adhesion_range, "adhesion_stress": adhesion_stress, "adhesion_tol": adhesion_tol,
+             "adhesion_precondition": adhesion_precondition}
     return {key: value for key, value in given.items() if value is not None}
 
 
@@ -120,7 +122,8 @@ def solve(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
           deflation_block: Optional[int] = None, hardness: Optional[float] = None,
           adhesion: Optional[str] = None, work_of_adhesion: Optional[float] = None,
           adhesion_range: Optional[float] = None, adhesion_stress: Optional[float] = None,
-          adhesion_tol: Optional[float] = None, coating: Optional[Mapping[str, float]] = None) -> _core.Result:
+          adhesion_tol: Optional[float] = None, adhesion_precondition: Optional[bool] = None,
+          coating: Optional[Mapping[str, float]] = None) -> _core.Result:
     """Solves the frictionless contact of a rigid rough surface on an elastic half-space.
 
     surface: a HeightMap, or a 1D/2D array of heights (m, peaks positive,
@@ -149,6 +152,9 @@ def solve(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
         md, adhesion_stress (sigma0, Pa). Adhesion has its own solver
         (adhesive-spg) and tolerance, adhesion_tol (None: 1e-6); the
         approach may be negative. ``Result.adhesion`` holds its record.
+        adhesion_precondition=True runs conjugate gradients preconditioned
+        by the compliance instead (adhesive-pcg: far fewer iterations on
+        rough contacts; docs/solvers.md says why it is not the default).
     coating: a coated half-space instead of a homogeneous one: a mapping
         with ``thickness`` (m), ``layer_E`` (Pa), ``layer_nu``,
         ``substrate_E`` (Pa), ``substrate_nu``, as the program's
@@ -169,7 +175,7 @@ def solve(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
     start = None if initial_pressure is None else np.ascontiguousarray(initial_pressure, dtype=np.float64)
     options = _solver_options(solver, tol, max_iter, fft_planning, deflation_block,
                               _laws(hardness, adhesion, work_of_adhesion, adhesion_range, adhesion_stress,
-                                    adhesion_tol))
+                                    adhesion_tol, adhesion_precondition))
     material = {"coating": dict(zip(_COATING_KEYS, layers))} if layers else {"e_star": modulus}
     call = _call_text("solve", height_map, {**material, "boundary": boundary, mode: value, **options,
                                             "threads": threads})
@@ -188,7 +194,8 @@ def sweep(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
           deflation_block: Optional[int] = None, hardness: Optional[float] = None,
           adhesion: Optional[str] = None, work_of_adhesion: Optional[float] = None,
           adhesion_range: Optional[float] = None, adhesion_stress: Optional[float] = None,
-          adhesion_tol: Optional[float] = None, coating: Optional[Mapping[str, float]] = None) -> _core.Sweep:
+          adhesion_tol: Optional[float] = None, adhesion_precondition: Optional[bool] = None,
+          coating: Optional[Mapping[str, float]] = None) -> _core.Sweep:
     """Solves the surface under each load of a sequence, in order, each step
     warm-started from the previous one (as ``halfspace solve`` with several
     loads). Takes the keywords of :func:`solve`, with ``force``,
@@ -202,7 +209,7 @@ def sweep(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
     mode, values = _load(force, mean_pressure, approach, plural=True)
     options = _solver_options(solver, tol, max_iter, fft_planning, deflation_block,
                               _laws(hardness, adhesion, work_of_adhesion, adhesion_range, adhesion_stress,
-                                    adhesion_tol))
+                                    adhesion_tol, adhesion_precondition))
     material = {"coating": dict(zip(_COATING_KEYS, layers))} if layers else {"e_star": modulus}
     call = _call_text("sweep", height_map, {**material, "boundary": boundary, mode: values, **options,
                                             "threads": threads, "warm_start": warm_start})

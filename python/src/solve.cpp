@@ -102,6 +102,7 @@ solvers::SolverOptions solver_options(const nb::dict& given, const Grid& grid) {
   // Adhesion comes in four keywords; the law is made from them after the loop.
   std::optional<std::string> adhesion;
   std::optional<double> work, range, stress, adhesion_tol;
+  std::optional<bool> adhesion_precondition;
   for (const auto& [key_object, value] : given) {
     if (value.is_none()) continue;
     const std::string key = nb::cast<std::string>(key_object);
@@ -140,15 +141,17 @@ solvers::SolverOptions solver_options(const nb::dict& given, const Grid& grid) {
       stress = nb::cast<double>(value);
     } else if (key == "adhesion_tol") {
       adhesion_tol = nb::cast<double>(value);
+    } else if (key == "adhesion_precondition") {
+      adhesion_precondition = nb::cast<bool>(value);
     } else {
       throw InputError(fmt::format("unknown solver option '{}'", key));
     }
   }
   if (!adhesion) {
-    if (work || range || stress || adhesion_tol) {
+    if (work || range || stress || adhesion_tol || adhesion_precondition) {
       throw InputError(
-          "work_of_adhesion, adhesion_range, adhesion_stress and adhesion_tol need adhesion=\"md\" or "
-          "adhesion=\"exponential\"");
+          "work_of_adhesion, adhesion_range, adhesion_stress, adhesion_tol and adhesion_precondition need "
+          "adhesion=\"md\" or adhesion=\"exponential\"");
     }
   } else {
     const solvers::AdhesionLawType type = solvers::parse_adhesion_law_type(*adhesion);
@@ -167,6 +170,7 @@ solvers::SolverOptions solver_options(const nb::dict& given, const Grid& grid) {
     law.law = stress ? solvers::AdhesionLaw::maugis_dugdale_from_stress(*work, *stress)
                      : solvers::AdhesionLaw{type, *work, *range};
     if (adhesion_tol) law.tolerance = *adhesion_tol;
+    if (adhesion_precondition) law.precondition = *adhesion_precondition;
     options.adhesion = law;
   }
   options.validate(grid);

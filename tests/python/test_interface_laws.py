@@ -81,3 +81,20 @@ def test_subsurface_stress_on_the_axis_of_a_hertz_sphere():
     assert field["max_von_mises"] == pytest.approx(np.max(field["von_mises"]))
     with pytest.raises(hs.InputError):
         hs.subsurface_stress(result, [-1e-6], nu=0.3)
+
+
+def test_preconditioned_adhesive_solver_holds_the_dugdale_stress():
+    # adhesion_precondition=True selects the conjugate-gradient adhesive
+    # solver (adhesive-pcg); on a flat surface within the range it must give
+    # the same closed form as SPG: every cell at -sigma0 = -w / h0.
+    work, h0 = 0.05, 2e-8  # J/m^2, m
+    flat = np.zeros((32, 32))
+    common = dict(dx=1e-6, e_star=E_STAR, boundary="periodic", approach=-h0 / 2, adhesion="md",
+                  work_of_adhesion=work, adhesion_range=h0, fft_planning="estimate", threads=1)
+    result = hs.solve(flat, adhesion_precondition=True, **common)
+    assert result.converged, result.message
+    assert result.solver == "adhesive-pcg"
+    assert result.mean_pressure == pytest.approx(-work / h0, rel=1e-5)
+    assert hs.solve(flat, adhesion_precondition=False, **common).solver == "adhesive-spg"
+    with pytest.raises(hs.InputError, match="adhesion_precondition need"):
+        hs.solve(flat, dx=1e-6, e_star=E_STAR, approach=0.0, adhesion_precondition=True)
