@@ -24,12 +24,20 @@ cmake -S "$root/fuzz" -B "$build" -DCMAKE_C_COMPILER="$cc" -DCMAKE_CXX_COMPILER=
 cmake --build "$build" -j "$(nproc)" >/dev/null
 
 # Memory: the readers must refuse what they cannot hold, so a single input
-# costing more than 1 GiB is reported as a failure (-malloc_limit_mb). An
+# costing more than 2 GiB of real memory is a failure (-rss_limit_mb), and so is a
+# single allocation above 1 GiB (-malloc_limit_mb) in our own readers. An
 # allocation the system cannot give returns NULL, as glibc's malloc does in
-# the program (allocator_may_return_null=1), so that the library's handling
-# of it is what is tested: libhdf5 asks for sizes a damaged file declares
-# (fuzz/corpus/hdf5/superblock-huge-metadata-entry.h5: 40 GiB) and reports
-# the failure, which the reader turns into a FileError.
+# the program (allocator_may_return_null=1), so the library's handling of it
+# is what is tested. One exception: libhdf5 reserves metadata buffers of the
+# sizes a damaged file declares before it reads them (a 140-byte file asks
+# for 4-40 GiB; the test AMetadataEntryTooLargeToAllocateIsAFileError holds
+# one). The reservation is never touched (the program's peak on such files:
+# 23 MB) and the open fails with a FileError, but refusing the file first
+# would mean parsing HDF5's superblock ourselves; so the hdf5 harness has no
+# per-allocation limit, only the limit on real memory.
+malloc_limit_mb() {
+  if [ "$1" = hdf5 ]; then echo 1048576; else echo 1024; fi
+}
 status=0
 printf '%-12s %10s %8s %8s %8s  %s\n' harness "exec/s" cov ft corpus result
 for h in "${harnesses[@]}"; do
@@ -42,7 +50,7 @@ for h in "${harnesses[@]}"; do
     LSAN_OPTIONS="suppressions=$root/fuzz/lsan-suppressions.txt:print_suppressions=0" \
     UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
     "$build/fuzz_$h" "$corpus" "$root/fuzz/corpus/$h" -max_total_time="$seconds" -rss_limit_mb=2048 \
-    -malloc_limit_mb=1024 -max_len=65536 -timeout=10 -print_final_stats=1 -artifact_prefix="$crashes/" \
+    -malloc_limit_mb="$(malloc_limit_mb "$h")" -max_len=65536 -timeout=10 -print_final_stats=1 -artifact_prefix="$crashes/" \
     >"$log" 2>&1
   rc=$?
   set -e

@@ -500,8 +500,8 @@ TEST(Hdf5HeightMapReaderTest, ADamagedFileLeavesHdf5ErrorPrintingOff) {
 }
 
 }  // namespace
-// A 140-byte file the fuzzer found (fuzz/corpus/hdf5/superblock-huge-metadata-entry.h5):
-// its metadata declares an entry of 40 GiB, which libhdf5 tries to allocate
+// A 140-byte file the fuzzer found: its metadata declares an entry of
+// 40 GiB, which libhdf5 tries to allocate
 // while opening. The allocation fails and must end in a FileError naming the
 // file, not a crash.
 TEST(Hdf5HeightMapReaderTest, AMetadataEntryTooLargeToAllocateIsAFileError) {
