@@ -56,7 +56,8 @@ std::optional<DektakLayout> find_dektak_layout(std::string_view text, const Read
     if (end == std::string_view::npos) end = text.size();
     std::string_view row = text.substr(begin, end - begin);
     while (!row.empty() && (row.back() == '\r' || row.back() == ' ')) row.remove_suffix(1);
-    begin = end + 1;
+    // Past the newline, or at the end when the last line has none.
+    begin = std::min(end + 1, text.size());
     ++line;
     if (row.starts_with("Length,")) {
       // "Length,1500.0 um": value and unit separated by a space.

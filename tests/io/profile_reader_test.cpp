@@ -98,6 +98,15 @@ TEST(ProfileReaderTest, RejectsAUnitThatContradictsTheFile) {
   }
 }
 
+// Found by the fuzzer: a Dektak header whose 'Scan Data' line is the last,
+// with no newline after it, read past the end of the text (an uncaught
+// std::out_of_range); it must be a file without data rows.
+TEST(ProfileReaderTest, ADektakHeaderEndingAtScanDataHasNoDataRows) {
+  const TempDir dir;
+  const fs::path path = write_text(dir, "header.csv", "Scan Parameters\r\nLength,1500.0 um\r\nScan Data");
+  expect_contains(profile_error(path), {path.string(), "holds no data rows"});
+}
+
 TEST(ProfileReaderTest, ReportsNonUniformSpacingWithTheLine) {
   const TempDir dir;
   const fs::path path = write_text(dir, "gap.txt", "x z\n0.0 1\n0.1 2\n0.2 3\n0.5 4\n0.6 5\n0.7 6\n");
