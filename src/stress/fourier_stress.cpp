@@ -12,20 +12,22 @@
 
 namespace halfspace::stress {
 
+double confined_mean_stress(Component component, double nu) {
+  switch (component) {
+    case Component::xx:
+    case Component::yy:
+      return -nu / (1.0 - nu);
+    case Component::zz:
+      return -1.0;
+    default:
+      return 0.0;
+  }
+}
+
 std::complex<double> fourier_stress_component(Component component, double kx, double ky, double z, double decay,
                                               double nu) {
   const double q2 = kx * kx + ky * ky;
-  if (q2 == 0.0) {
-    switch (component) {
-      case Component::xx:
-      case Component::yy:
-        return -nu / (1.0 - nu);
-      case Component::zz:
-        return -1.0;
-      default:
-        return 0.0;
-    }
-  }
+  if (q2 == 0.0) return confined_mean_stress(component, nu);
   const double qz = std::sqrt(q2) * z;
   const double bracket = (qz - (1.0 - 2.0 * nu)) * decay / q2;
   switch (component) {

@@ -210,17 +210,7 @@ double LayeredFourierStress::surface_displacement(const LayeredMode& mode) const
 std::complex<double> layered_stress_component(Component component, double kx, double ky, const AiryProfile& profile,
                                               double nu) {
   const double q2 = kx * kx + ky * ky;
-  if (q2 == 0.0) {
-    switch (component) {
-      case Component::xx:
-      case Component::yy:
-        return -nu / (1.0 - nu);
-      case Component::zz:
-        return -1.0;
-      default:
-        return 0.0;
-    }
-  }
+  if (q2 == 0.0) return confined_mean_stress(component, nu);
   const double q = std::sqrt(q2);
   const double along = profile.g2;                      // sigma_x'x'
   const double across = nu * (profile.g2 - profile.g);  // sigma_y'y', plane strain

@@ -28,6 +28,11 @@ inline constexpr std::array<const char*, kComponentCount> kComponentNames = {"si
 // plane-strain field, yy = nu (xx + zz).
 std::array<std::complex<double>, kComponentCount> fourier_stress(double kx, double ky, double z, double nu);
 
+// The mean mode's component per unit mean pressure (the confined state
+// above), for a body of Poisson's ratio nu; the layered solution uses it for
+// each body too.
+double confined_mean_stress(Component component, double nu);
+
 // One component of the above, given decay = exp(-|k| z): the form the
 // periodic stress loop evaluates for each wavevector.
 std::complex<double> fourier_stress_component(Component component, double kx, double ky, double z, double decay,
