@@ -9,8 +9,8 @@
 #include <utility>
 
 #include "halfspace/mpi/slab_fft.hpp"
-#include "halfspace/mpi/slab_free_operator.hpp"
 #include "halfspace/mpi/slab_fourier_operator.hpp"
+#include "halfspace/mpi/slab_free_operator.hpp"
 #include "halfspace/solvers/polonsky_keer.hpp"
 #include "halfspace/solvers/solver_factory.hpp"
 
@@ -31,7 +31,8 @@ struct SlabOperator {
 // grid's transform, which the preconditioner shares (Polonsky-Keer applies
 // them one after the other); free, the padded convolution, the
 // preconditioner on a transform of its own (the unpadded periodic symbol,
-// as the serial solvers use on free grids). Collective.
+// as the serial solvers use on free grids) working in the operator's padded
+// buffer, idle between products. Collective.
 SlabOperator make_slab_operator(const Grid& grid, double e_star, bool fourier, FftPlanning planning,
                                 const MpiCommunicator& comm) {
   SlabOperator made;
@@ -40,11 +41,12 @@ SlabOperator make_slab_operator(const Grid& grid, double e_star, bool fourier, F
     made.op = std::make_unique<SlabFourierOperator>(grid, e_star, transform);
     if (fourier) made.fourier = std::make_unique<SlabFourierPreconditioner>(grid, e_star, transform);
   } else {
-    made.op = std::make_unique<SlabFreeOperator>(grid, e_star, comm, planning);
+    auto op = std::make_unique<SlabFreeOperator>(grid, e_star, comm, planning);
     if (fourier) {
       made.fourier = std::make_unique<SlabFourierPreconditioner>(
-          grid, e_star, std::make_shared<SlabRealFft>(grid.nx(), grid.ny(), comm, planning));
+          grid, e_star, std::make_shared<SlabRealFft>(grid.nx(), grid.ny(), comm, planning, op->scratch()));
     }
+    made.op = std::move(op);
   }
   return made;
 }

@@ -77,8 +77,7 @@ fftw_plan dct_rows(QuadrantTransform& buffer, std::size_t n, std::size_t howmany
 
 }  // namespace
 
-SlabFreeOperator::SlabFreeOperator(const Grid& grid, double e_star, const MpiCommunicator& comm,
-                                   FftPlanning planning)
+SlabFreeOperator::SlabFreeOperator(const Grid& grid, double e_star, const MpiCommunicator& comm, FftPlanning planning)
     : grid_(checked_free_grid(grid)) {
   e_star = checked_composite_modulus(e_star);
   fft_ = std::make_unique<SlabPaddedRealFft>(grid.nx(), grid.ny(), comm, planning);
@@ -117,9 +116,8 @@ SlabFreeOperator::SlabFreeOperator(const Grid& grid, double e_star, const MpiCom
     const std::lock_guard<std::mutex> lock(fft::detail::fftw_planner_mutex());
     fftw_plan_with_nthreads(threads());
     if (rows > 0) along_x = dct_rows(quadrant, nx + 1, static_cast<std::size_t>(rows));
-    transpose = quadrant.keep(fftw_mpi_plan_many_transpose(n[0], n[1], 1, FFTW_MPI_DEFAULT_BLOCK,
-                                                           FFTW_MPI_DEFAULT_BLOCK, values, values, comm.get(),
-                                                           FFTW_ESTIMATE));
+    transpose = quadrant.keep(fftw_mpi_plan_many_transpose(
+        n[0], n[1], 1, FFTW_MPI_DEFAULT_BLOCK, FFTW_MPI_DEFAULT_BLOCK, values, values, comm.get(), FFTW_ESTIMATE));
     if (columns > 0) along_y = dct_rows(quadrant, ny + 1, static_cast<std::size_t>(columns));
   }
   if (along_x != nullptr) fftw_execute(along_x);

@@ -47,16 +47,12 @@ PaddedSizes padded_sizes(std::size_t nx, std::size_t ny, const MpiCommunicator& 
   if (static_cast<std::size_t>(rows) != grid.rows || static_cast<std::size_t>(first_row) != grid.first_row) {
     // Both are FFTW-MPI's default block of ny rows; a different FFTW would
     // need the rows redistributed, which is not done.
-    throw std::logic_error(fmt::format("FFTW-MPI distributes the {}x{} grid's rows differently for its padded transform",
-                                       nx, ny));
+    throw std::logic_error(
+        fmt::format("FFTW-MPI distributes the {}x{} grid's rows differently for its padded transform", nx, ny));
   }
   PaddedSizes sizes;
-  sizes.layout = {nx,
-                  ny,
-                  grid.rows,
-                  grid.first_row,
-                  static_cast<std::size_t>(columns),
-                  static_cast<std::size_t>(first_column)};
+  sizes.layout = {
+      nx, ny, grid.rows, grid.first_row, static_cast<std::size_t>(columns), static_cast<std::size_t>(first_column)};
   sizes.allocation = static_cast<std::size_t>(allocation);
   return sizes;
 }
@@ -67,8 +63,7 @@ SlabLayout padded_slab_layout(std::size_t nx, std::size_t ny, const MpiCommunica
   return padded_sizes(nx, ny, comm).layout;
 }
 
-SlabPaddedRealFft::SlabPaddedRealFft(std::size_t nx, std::size_t ny, const MpiCommunicator& comm,
-                                     FftPlanning planning)
+SlabPaddedRealFft::SlabPaddedRealFft(std::size_t nx, std::size_t ny, const MpiCommunicator& comm, FftPlanning planning)
     : comm_(comm) {
   const PaddedSizes sizes = padded_sizes(nx, ny, comm);
   layout_ = sizes.layout;
@@ -78,6 +73,7 @@ SlabPaddedRealFft::SlabPaddedRealFft(std::size_t nx, std::size_t ny, const MpiCo
       std::max({(sizes.allocation + 1) / 2, layout_.columns * spectrum_rows(), std::size_t{1}});
   buffer_ = reinterpret_cast<std::complex<double>*>(fftw_alloc_complex(complex_values));
   if (buffer_ == nullptr) throw std::bad_alloc();
+  buffer_size_ = complex_values;
   double* real = reinterpret_cast<double*>(buffer_);
   fftw_complex* complex = fft::detail::as_fftw(buffer_);
   const int padded_x[1] = {fft::detail::checked_extent(2 * nx)};
@@ -95,12 +91,12 @@ SlabPaddedRealFft::SlabPaddedRealFft(std::size_t nx, std::size_t ny, const MpiCo
     fftw_plan_with_nthreads(threads());
     const unsigned flags = fft::detail::planner_flags(planning);
     const unsigned local = flags | FFTW_DESTROY_INPUT;
-    to_columns_ = fftw_mpi_plan_many_transpose(static_cast<ptrdiff_t>(ny), static_cast<ptrdiff_t>(nx + 1), 2,
-                                               FFTW_MPI_DEFAULT_BLOCK, FFTW_MPI_DEFAULT_BLOCK, real, real, comm.get(),
-                                               flags);
-    to_rows_ = fftw_mpi_plan_many_transpose(static_cast<ptrdiff_t>(nx + 1), static_cast<ptrdiff_t>(ny), 2,
-                                            FFTW_MPI_DEFAULT_BLOCK, FFTW_MPI_DEFAULT_BLOCK, real, real, comm.get(),
-                                            flags);
+    to_columns_ =
+        fftw_mpi_plan_many_transpose(static_cast<ptrdiff_t>(ny), static_cast<ptrdiff_t>(nx + 1), 2,
+                                     FFTW_MPI_DEFAULT_BLOCK, FFTW_MPI_DEFAULT_BLOCK, real, real, comm.get(), flags);
+    to_rows_ =
+        fftw_mpi_plan_many_transpose(static_cast<ptrdiff_t>(nx + 1), static_cast<ptrdiff_t>(ny), 2,
+                                     FFTW_MPI_DEFAULT_BLOCK, FFTW_MPI_DEFAULT_BLOCK, real, real, comm.get(), flags);
     planned = to_columns_ != nullptr && to_rows_ != nullptr;
     if (rows > 0) {
       rows_forward_ = fftw_plan_many_dft_r2c(1, padded_x, rows, real, nullptr, 1, real_stride, complex, nullptr, 1,
@@ -110,8 +106,8 @@ SlabPaddedRealFft::SlabPaddedRealFft(std::size_t nx, std::size_t ny, const MpiCo
       planned = planned && rows_forward_ != nullptr && rows_backward_ != nullptr;
     }
     if (columns > 0) {
-      columns_forward_ = fftw_plan_many_dft(1, padded_y, columns, complex, nullptr, 1, padded_y[0], complex, nullptr,
-                                            1, padded_y[0], FFTW_FORWARD, local);
+      columns_forward_ = fftw_plan_many_dft(1, padded_y, columns, complex, nullptr, 1, padded_y[0], complex, nullptr, 1,
+                                            padded_y[0], FFTW_FORWARD, local);
       columns_backward_ = fftw_plan_many_dft(1, padded_y, columns, complex, nullptr, 1, padded_y[0], complex, nullptr,
                                              1, padded_y[0], FFTW_BACKWARD, local);
       planned = planned && columns_forward_ != nullptr && columns_backward_ != nullptr;
@@ -129,7 +125,8 @@ SlabPaddedRealFft::~SlabPaddedRealFft() {
 
 void SlabPaddedRealFft::release() noexcept {
   const std::lock_guard<std::mutex> lock(fft::detail::fftw_planner_mutex());
-  for (void** plan : {&rows_forward_, &rows_backward_, &to_columns_, &to_rows_, &columns_forward_, &columns_backward_}) {
+  for (void** plan :
+       {&rows_forward_, &rows_backward_, &to_columns_, &to_rows_, &columns_forward_, &columns_backward_}) {
     if (*plan != nullptr) fftw_destroy_plan(static_cast<fftw_plan>(*plan));
     *plan = nullptr;
   }

@@ -6,7 +6,9 @@
 // Compiled only with HALFSPACE_MPI.
 #pragma once
 
+#include <complex>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "halfspace/fft/fft_planning.hpp"
@@ -31,6 +33,11 @@ class SlabFreeOperator final : public InfluenceOperator {
   // Collective: every process applies the operator together.
   void apply(std::span<const double> pressure, std::span<double> displacement) override;
   double self_influence() const override { return self_; }
+  // The padded transform's buffer, whose contents matter only inside
+  // apply(): a workspace for a transform that runs only between products
+  // (the Fourier preconditioner's SlabRealFft), as FftInfluenceOperator's
+  // scratch() is serially. Lives as long as the operator.
+  std::span<std::complex<double>> scratch() { return fft_->buffer(); }
 
  private:
   Grid grid_;

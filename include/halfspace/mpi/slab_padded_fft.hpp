@@ -60,6 +60,9 @@ class SlabPaddedRealFft {
   // transform of spectrum() (`block` may be the array given to forward()).
   // Collective.
   void backward(std::span<double> block);
+  // The whole buffer (at least spectrum()), FFTW-aligned; its contents
+  // matter only from forward() to backward().
+  std::span<std::complex<double>> buffer() { return {buffer_, buffer_size_}; }
 
  private:
   void release() noexcept;
@@ -67,10 +70,11 @@ class SlabPaddedRealFft {
   SlabLayout layout_;
   const MpiCommunicator& comm_;
   std::complex<double>* buffer_ = nullptr;
+  std::size_t buffer_size_ = 0;   // complex values
   void* rows_forward_ = nullptr;  // fftw_plan: r2c of the local rows, 2nx long
   void* rows_backward_ = nullptr;
-  void* to_columns_ = nullptr;  // FFTW-MPI transpose (ny, nx + 1) -> (nx + 1, ny)
-  void* to_rows_ = nullptr;     // and back
+  void* to_columns_ = nullptr;       // FFTW-MPI transpose (ny, nx + 1) -> (nx + 1, ny)
+  void* to_rows_ = nullptr;          // and back
   void* columns_forward_ = nullptr;  // c2c of the local columns, 2ny long
   void* columns_backward_ = nullptr;
 };
