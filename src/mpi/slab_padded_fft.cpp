@@ -13,7 +13,6 @@
 
 #include <algorithm>
 #include <cassert>
-#include <cstring>
 #include <mutex>
 #include <new>
 #include <stdexcept>
@@ -147,13 +146,19 @@ void SlabPaddedRealFft::forward(std::span<const double> block) {
   });
   if (rows_forward_ != nullptr) fftw_execute(static_cast<fftw_plan>(rows_forward_));
   fftw_execute(static_cast<fftw_plan>(to_columns_));
-  // Column c moves from c * ny to c * 2ny, the last first, so that no column
-  // is overwritten before it moves; its padding half is zero.
-  for (std::size_t c = layout_.columns; c-- > 0;) {
-    std::complex<double>* column = buffer_ + c * 2 * ny;
-    if (c > 0) std::memmove(static_cast<void*>(column), buffer_ + c * ny, ny * sizeof(std::complex<double>));
-    std::fill_n(column + ny, ny, std::complex<double>(0.0, 0.0));
+  // Column c moves from c * ny to c * 2ny, its padding half zeroed. The
+  // columns [ceil(hi / 2), hi) land above all of their sources, so they
+  // move together (in parallel), the top group first.
+  for (std::size_t hi = layout_.columns; hi > 1;) {
+    const std::size_t lo = (hi + 1) / 2;
+    linalg::for_each_row(hi - lo, 2 * ny, [&](std::size_t k) {
+      const std::size_t c = lo + k;
+      std::copy_n(buffer_ + c * ny, ny, buffer_ + c * 2 * ny);
+      std::fill_n(buffer_ + c * 2 * ny + ny, ny, std::complex<double>(0.0, 0.0));
+    });
+    hi = lo;
   }
+  if (layout_.columns > 0) std::fill_n(buffer_ + ny, ny, std::complex<double>(0.0, 0.0));
   if (columns_forward_ != nullptr) fftw_execute(static_cast<fftw_plan>(columns_forward_));
 }
 
@@ -166,9 +171,15 @@ void SlabPaddedRealFft::backward(std::span<double> block) {
   const std::size_t nx = layout_.nx;
   const std::size_t ny = layout_.ny;
   if (columns_backward_ != nullptr) fftw_execute(static_cast<fftw_plan>(columns_backward_));
-  // The grid's ny rows of each column, back to stride ny, the first first.
-  for (std::size_t c = 1; c < layout_.columns; ++c) {
-    std::memmove(static_cast<void*>(buffer_ + c * ny), buffer_ + c * 2 * ny, ny * sizeof(std::complex<double>));
+  // The grid's ny rows of each column back to stride ny: the columns
+  // [lo, 2 lo) land below all of their sources, so they move together, the
+  // lowest group first.
+  for (std::size_t lo = 1; lo < layout_.columns; lo *= 2) {
+    const std::size_t hi = std::min(2 * lo, layout_.columns);
+    linalg::for_each_row(hi - lo, ny, [&](std::size_t k) {
+      const std::size_t c = lo + k;
+      std::copy_n(buffer_ + c * 2 * ny, ny, buffer_ + c * ny);
+    });
   }
   fftw_execute(static_cast<fftw_plan>(to_rows_));
   if (rows_backward_ != nullptr) fftw_execute(static_cast<fftw_plan>(rows_backward_));
