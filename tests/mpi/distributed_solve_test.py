@@ -184,6 +184,9 @@ for processes in (2, 3):
     failure_case("invalid option", processes, hertz + ["--solver", "pk-fourier", "--tol", "2"], "tol", missing)
     failure_case("not distributed yet", processes, hertz + ["--solver", "pk-multilevel"],
                  "is not available with more than one process yet", missing)
+    failure_case("free multilevel not distributed yet", processes,
+                 free_hertz + ["--solver", "pk-multilevel", "--force", "5"],
+                 "type = pk-multilevel is not available with more than one process yet", missing)
     failure_case("1D not distributed yet", processes,
                  ["--geometry", "cylinder", "--radius", "0.01", "--grid", "64", "--size", "1e-3", "--boundary",
                   "periodic", "--force", "1e3", "--solver", "pk-fourier"] + common,
