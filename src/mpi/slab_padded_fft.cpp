@@ -58,10 +58,6 @@ PaddedSizes padded_sizes(std::size_t nx, std::size_t ny, const MpiCommunicator& 
 
 }  // namespace
 
-SlabLayout padded_slab_layout(std::size_t nx, std::size_t ny, const MpiCommunicator& comm) {
-  return padded_sizes(nx, ny, comm).layout;
-}
-
 SlabPaddedRealFft::SlabPaddedRealFft(std::size_t nx, std::size_t ny, const MpiCommunicator& comm, FftPlanning planning)
     : comm_(comm) {
   const PaddedSizes sizes = padded_sizes(nx, ny, comm);

@@ -22,19 +22,14 @@
 
 namespace halfspace::mpi {
 
-// FFTW-MPI's distribution of the padded spectrum's nx + 1 columns over
-// `comm` (its default block), as `layout`'s columns: the rows stay the
-// grid's (slab_layout), the columns become the padded spectrum's. Collective
-// only in that every process must ask alike.
-SlabLayout padded_slab_layout(std::size_t nx, std::size_t ny, const MpiCommunicator& comm);
-
 class SlabPaddedRealFft {
  public:
   // Plans the local row and column transforms and the two distributed
   // transposes in one buffer, the size of this process's part of the padded
   // spectrum (or FFTW-MPI's transpose, if larger), with the threads in force.
-  // Collective; throws InputError for sizes FFTW cannot take,
-  // std::runtime_error if FFTW cannot plan.
+  // The rows are the grid's slabs (slab_layout). Collective; throws
+  // InputError for sizes FFTW cannot take, std::runtime_error if FFTW cannot
+  // plan.
   SlabPaddedRealFft(std::size_t nx, std::size_t ny, const MpiCommunicator& comm, FftPlanning planning);
   ~SlabPaddedRealFft();
   SlabPaddedRealFft(const SlabPaddedRealFft&) = delete;
