@@ -714,7 +714,15 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
     const double estimate = std::max(solve_memory_estimate(grid, solver, load_values.size()),
                                      stress_peak_memory(grid, stress.depths.size(), coating.has_value()));
     if (share.check_memory) {
-      share.check_memory(what, grid, estimate, limit);
+      // A process holding some rows runs the distributed single solve (any
+      // other run is refused on several processes before it starts).
+      const std::size_t all_rows = grid.dimension() == 1 ? 1 : grid.ny();
+      share.check_memory(
+          what, grid,
+          [&](std::size_t rows) {
+            return rows >= all_rows ? estimate : slab_solve_memory_estimate(grid, solver, rows);
+          },
+          limit);
     } else {
       require_memory(what, estimate, limit);
     }

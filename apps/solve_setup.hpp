@@ -90,9 +90,10 @@ struct SurfaceSharing {
   std::function<io::HeightMapRows(const std::filesystem::path& path, const std::string& dataset)> read_hdf5_rows;
   // The processes that the preparation of a map read in rows adds its sums over.
   const linalg::Communicator* communicator = &linalg::serial_communicator();
-  // The memory check of a run on `grid` whose whole estimate on one process
-  // is `estimate` bytes; unset: require_memory(request, estimate, limit).
-  std::function<void(const std::string& request, const Grid& grid, double estimate,
+  // The memory check of a run on `grid`; estimate(rows) is what a process
+  // holding that many of its rows needs (all of them: the serial run).
+  // Unset: require_memory(request, estimate(all rows), limit).
+  std::function<void(const std::string& request, const Grid& grid, const std::function<double(std::size_t rows)>& estimate,
                      const std::optional<MemoryLimit>& limit)>
       check_memory;
 };

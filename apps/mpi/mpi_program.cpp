@@ -31,7 +31,6 @@
 #include "halfspace/error.hpp"
 #include "halfspace/io/result_metadata.hpp"
 #include "halfspace/io/result_writer.hpp"
-#include "halfspace/memory_estimate.hpp"
 #include "halfspace/mpi/distributed_solver.hpp"
 #include "halfspace/mpi/node_memory.hpp"
 #include "halfspace/mpi/parallel_height_map_reader.hpp"
@@ -183,43 +182,36 @@ Surface share_surface(const std::function<Surface()>& make_whole) {
   return {grid, std::move(local), std::move(source), std::move(preparation), layout.first_row, layout.rows};
 }
 
-// What one process needs of a run whose whole estimate on one process is
-// `estimate`: its share of the arrays (the largest slab's), and the program.
-double per_process_memory(const Grid& grid, double estimate) {
-  if (grid.dimension() == 1 || world->size() == 1) return estimate;
-  const auto processes = static_cast<std::size_t>(world->size());
-  const double largest_slab = static_cast<double>((grid.ny() + processes - 1) / processes);
-  return kProgramBytes + (estimate - kProgramBytes) * largest_slab / static_cast<double>(grid.ny());
-}
-
-// The memory check of a distributed run, against what each process's
-// machine has: the needs of the processes on one machine add up (they share
-// its memory); --max-memory bounds each process. Collective, except while
-// the first process reads a surface alone: it then also holds the whole map
+// The memory check of a distributed run: what one process needs for the
+// largest slab (slab_solve_memory_estimate), against what its machine has,
+// where the needs of the processes on one machine add up (they share its
+// memory); --max-memory bounds each process. Collective, except while the
+// first process reads a surface alone: it then also holds the whole map
 // (read and prepared), and counts the other processes on its machine as
-// needing as much as their slabs.
+// needing as much as it does for its slab.
 int processes_on_node = 1;
-void check_process_memory(const std::string& request, const Grid& grid, double estimate,
+void check_process_memory(const std::string& request, const Grid& grid,
+                          const std::function<double(std::size_t rows)>& estimate,
                           const std::optional<MemoryLimit>& limit) {
-  const double mine = per_process_memory(grid, estimate);
-  const auto describe = [&](double together, int processes) {
-    if (limit && limit->given) {
-      return std::pair{fmt::format("{}, per process of {}", request, world->size()), mine};
+  const auto processes = static_cast<std::size_t>(world->size());
+  const std::size_t rows = grid.dimension() == 1 ? 1 : grid.ny();
+  const double mine = estimate(grid.dimension() == 1 ? rows : (rows + processes - 1) / processes);
+  const bool per_process = limit && limit->given;
+  const auto check = [&](double together, int on_node, double extra) {
+    if (per_process) {
+      require_memory(fmt::format("{}, per process of {}", request, processes), mine + extra, limit);
+    } else {
+      require_memory(fmt::format("{}, on {} processes ({} on this machine, together)", request, processes, on_node),
+                     together + extra, limit);
     }
-    return std::pair{fmt::format("{}, on {} processes ({} on this machine, together)", request, world->size(),
-                                 processes),
-                     together};
   };
   if (whole_on_first) {
-    const double whole_map = 2.0 * 8.0 * static_cast<double>(grid.size());
-    const auto [what, bytes] = describe(mine * processes_on_node + whole_map, processes_on_node);
-    require_memory(what, limit && limit->given ? mine + whole_map : bytes, limit);
+    check(mine * processes_on_node, processes_on_node, 2.0 * 8.0 * static_cast<double>(grid.size()));
     return;
   }
   mpi::run_agreed(*world, [&] {
     const mpi::NodeShare node = mpi::share_of_node(*world, mine);
-    const auto [what, bytes] = describe(node.bytes, node.processes);
-    require_memory(what, bytes, limit);
+    check(node.bytes, node.processes, 0.0);
   });
 }
 
@@ -246,9 +238,8 @@ SurfaceSharing deferred_sharing() {
   share.read_hdf5_rows = [](const std::filesystem::path&, const std::string&) -> io::HeightMapRows {
     throw SurfaceDeferred{};
   };
-  share.check_memory = [](const std::string&, const Grid&, double, const std::optional<MemoryLimit>&) {
-    throw SurfaceDeferred{};
-  };
+  share.check_memory = [](const std::string&, const Grid&, const std::function<double(std::size_t)>&,
+                          const std::optional<MemoryLimit>&) { throw SurfaceDeferred{}; };
   return share;
 }
 

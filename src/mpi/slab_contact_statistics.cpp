@@ -144,19 +144,19 @@ std::vector<std::int64_t> slab_cluster_sizes(const Grid& grid, const SlabLayout&
                                              std::span<const double> pressure, const MpiCommunicator& comm) {
   const std::vector<std::int64_t> message = describe_slab(grid, layout, pressure);
   const int length = static_cast<int>(message.size());
+  // Checked on every process alike: MPI_Gatherv counts in int.
+  std::int64_t total = length;
+  check(MPI_Allreduce(MPI_IN_PLACE, &total, 1, MPI_INT64_T, MPI_SUM, comm.get()), "MPI_Allreduce");
+  if (total > std::numeric_limits<int>::max()) {
+    throw InputError(fmt::format("the {} grid's contact clusters are too many to join on one process",
+                                 grid.shape_string()));
+  }
   const bool root = comm.rank() == 0;
   std::vector<int> lengths(root ? static_cast<std::size_t>(comm.size()) : 0);
   check(MPI_Gather(&length, 1, MPI_INT, lengths.data(), 1, MPI_INT, 0, comm.get()), "MPI_Gather");
   std::vector<int> offsets(lengths.size(), 0);
-  std::int64_t total = 0;
-  for (std::size_t p = 0; p < lengths.size(); ++p) {
-    offsets[p] = static_cast<int>(total);
-    total += lengths[p];
-  }
-  if (total > std::numeric_limits<int>::max()) {
-    throw InputError("the contact clusters of the slabs are too many to merge on one process");
-  }
-  std::vector<std::int64_t> messages(static_cast<std::size_t>(total));
+  for (std::size_t p = 1; p < lengths.size(); ++p) offsets[p] = offsets[p - 1] + lengths[p - 1];
+  std::vector<std::int64_t> messages(root ? static_cast<std::size_t>(total) : 0);
   check(MPI_Gatherv(message.data(), length, MPI_INT64_T, messages.data(), lengths.data(), offsets.data(),
                     MPI_INT64_T, 0, comm.get()),
         "MPI_Gatherv");

@@ -254,6 +254,15 @@ for shape, parameters in (("wavy", ["--wavelength", "2.5e-4", "--amplitude", "1e
                ["--grid", "64x50", "--size", "1e-3x0.78125e-3", "--force", "1", "--tol", "1e-11"] + common,
                (2, 3), exact=("height",))
 
+# Two rows on three processes: one holds none, and still takes part in the
+# collective reading, statistics and writing.
+solve_case("built-in wavy on 2 rows", ["--geometry", "wavy", "--wavelength", "2.5e-4", "--amplitude", "1e-7",
+                                       "--grid", "40x2", "--size", "1e-3x5e-5", "--force", "0.05", "--tol", "1e-11"] +
+           common, (3,), exact=("height",))
+two_rows = write_map("two-rows.h5", rough[:2, :40], dx=spacing, dy=spacing)
+solve_case("read 2 rows", ["--height-map", two_rows, "--detrend", "plane", "--mean-pressure", "5e7", "--tol",
+                           "1e-11"] + common, (3,))
+
 output = os.path.join(work_dir, "failure.h5")
 not_hdf5 = os.path.join(work_dir, "not-hdf5.h5")
 with open(not_hdf5, "w") as f:
