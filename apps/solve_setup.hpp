@@ -14,8 +14,8 @@
 #include "halfspace/fft/fft_planning.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/io/hdf5_height_map_reader.hpp"
-#include "halfspace/linalg/communicator.hpp"
 #include "halfspace/layered_material.hpp"
+#include "halfspace/linalg/communicator.hpp"
 #include "halfspace/solvers/contact_solver.hpp"
 #include "halfspace/solvers/loading.hpp"
 #include "halfspace/solvers/solver_options.hpp"
@@ -93,8 +93,8 @@ struct SurfaceSharing {
   // The memory check of a run on `grid`; estimate(rows) is what a process
   // holding that many of its rows needs (all of them: the serial run).
   // Unset: require_memory(request, estimate(all rows), limit).
-  std::function<void(const std::string& request, const Grid& grid, const std::function<double(std::size_t rows)>& estimate,
-                     const std::optional<MemoryLimit>& limit)>
+  std::function<void(const std::string& request, const Grid& grid,
+                     const std::function<double(std::size_t rows)>& estimate, const std::optional<MemoryLimit>& limit)>
       check_memory;
 };
 

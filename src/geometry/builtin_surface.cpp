@@ -82,8 +82,8 @@ Eigen::ArrayXd make_surface_heights(const Grid& grid, const SurfaceSpec& spec) {
 Eigen::ArrayXd make_surface_rows(const Grid& grid, const SurfaceSpec& spec, std::size_t first_row, std::size_t rows) {
   validate(spec);
   if (first_row > grid.ny() || rows > grid.ny() - first_row) {
-    throw InputError(fmt::format("rows {} to {} are not all rows of the {} grid", first_row, first_row + rows,
-                                 grid.shape_string()));
+    throw InputError(
+        fmt::format("rows {} to {} are not all rows of the {} grid", first_row, first_row + rows, grid.shape_string()));
   }
   // Centring on (n - 1) h / 2 puts the apex of a sphere or cylinder on a cell
   // for odd n and symmetrically between two cells for even n, so the sampled

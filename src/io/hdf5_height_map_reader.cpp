@@ -263,8 +263,9 @@ herr_t read_rows(hid_t dataset, hid_t memory_type, const std::vector<hsize_t>& d
   const Dataspace memory_space(H5Screate_simple(1, &memory_count, nullptr));
   if (!file_space.valid() || !memory_space.valid()) return -1;
   // A process without rows still takes part in the collective read.
-  const herr_t selected = rows.count == 0 ? (H5Sselect_none(file_space.get()) < 0 || H5Sselect_none(memory_space.get()) < 0 ? -1 : 0)
-                                          : H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start, nullptr, count, nullptr);
+  const herr_t selected =
+      rows.count == 0 ? (H5Sselect_none(file_space.get()) < 0 || H5Sselect_none(memory_space.get()) < 0 ? -1 : 0)
+                      : H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start, nullptr, count, nullptr);
   if (selected < 0) return -1;
   return H5Dread(dataset, memory_type, memory_space.get(), file_space.get(), transfer, buffer);
 }

@@ -179,9 +179,9 @@ hid_t write_array(hid_t location, std::string_view name, const std::vector<std::
     const hsize_t memory_count = std::max<hsize_t>(count, 1);
     const Dataspace memory_space(H5Screate_simple(1, &memory_count, nullptr));
     if (!memory_space.valid()) fail_hdf5(fmt::format("could not create the dataspace of '{}'", name));
-    const herr_t selected = count == 0 ? std::min(H5Sselect_none(space.get()), H5Sselect_none(memory_space.get()))
-                                       : H5Sselect_hyperslab(space.get(), H5S_SELECT_SET, start.data(), nullptr,
-                                                             block.data(), nullptr);
+    const herr_t selected =
+        count == 0 ? std::min(H5Sselect_none(space.get()), H5Sselect_none(memory_space.get()))
+                   : H5Sselect_hyperslab(space.get(), H5S_SELECT_SET, start.data(), nullptr, block.data(), nullptr);
     if (selected < 0 || H5Dwrite(dataset.get(), memory_type, memory_space.get(), space.get(), transfer, data) < 0) {
       fail_hdf5(fmt::format("could not write dataset '{}'", name));
     }
@@ -283,8 +283,8 @@ Hdf5Node Hdf5Node::write_dataset_rows(std::string_view name, const std::vector<s
 Hdf5Node Hdf5Node::write_dataset_rows(std::string_view name, const std::vector<std::size_t>& shape,
                                       std::size_t first_row, std::span<const std::uint8_t> values,
                                       std::string_view units) const {
-  return Hdf5Node(write_array(id_, name, shape, first_row, values.size(), H5T_STD_U8LE, H5T_NATIVE_UINT8,
-                              values.data(), units, transfer_),
+  return Hdf5Node(write_array(id_, name, shape, first_row, values.size(), H5T_STD_U8LE, H5T_NATIVE_UINT8, values.data(),
+                              units, transfer_),
                   transfer_);
 }
 

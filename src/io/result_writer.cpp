@@ -65,8 +65,7 @@ void write_result_fields(const Hdf5Node& node, const Grid& grid, const SolveResu
     node.write_dataset_rows("plastic_displacement", shape, first, values(plastic_displacement), "m");
   }
   const std::span<const double> history(result.residual_history);
-  node.write_dataset_rows("residual_history", {history.size()}, 0,
-                          rows.lead ? history : std::span<const double>(), "");
+  node.write_dataset_rows("residual_history", {history.size()}, 0, rows.lead ? history : std::span<const double>(), "");
 }
 
 void write_result_root_attributes(const Hdf5Node& root, const Grid& grid, const SolveResult& result,

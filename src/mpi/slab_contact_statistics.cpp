@@ -148,8 +148,8 @@ std::vector<std::int64_t> slab_cluster_sizes(const Grid& grid, const SlabLayout&
   std::int64_t total = length;
   check(MPI_Allreduce(MPI_IN_PLACE, &total, 1, MPI_INT64_T, MPI_SUM, comm.get()), "MPI_Allreduce");
   if (total > std::numeric_limits<int>::max()) {
-    throw InputError(fmt::format("the {} grid's contact clusters are too many to join on one process",
-                                 grid.shape_string()));
+    throw InputError(
+        fmt::format("the {} grid's contact clusters are too many to join on one process", grid.shape_string()));
   }
   const bool root = comm.rank() == 0;
   std::vector<int> lengths(root ? static_cast<std::size_t>(comm.size()) : 0);
@@ -157,8 +157,8 @@ std::vector<std::int64_t> slab_cluster_sizes(const Grid& grid, const SlabLayout&
   std::vector<int> offsets(lengths.size(), 0);
   for (std::size_t p = 1; p < lengths.size(); ++p) offsets[p] = offsets[p - 1] + lengths[p - 1];
   std::vector<std::int64_t> messages(root ? static_cast<std::size_t>(total) : 0);
-  check(MPI_Gatherv(message.data(), length, MPI_INT64_T, messages.data(), lengths.data(), offsets.data(),
-                    MPI_INT64_T, 0, comm.get()),
+  check(MPI_Gatherv(message.data(), length, MPI_INT64_T, messages.data(), lengths.data(), offsets.data(), MPI_INT64_T,
+                    0, comm.get()),
         "MPI_Gatherv");
   std::vector<std::int64_t> sizes;
   if (root) sizes = merge_slabs(grid, messages, lengths);

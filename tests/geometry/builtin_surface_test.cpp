@@ -145,7 +145,8 @@ TEST(GeometryTest, InitialGapIsZeroAtHighestPoint) {
 // for bit, for every shape, and rows beyond the grid are refused.
 TEST(GeometryTest, SurfaceRowsAreTheWholeSurfacesRows) {
   const Grid grid = Grid::plane(9, 7, 0.3, 0.2, Boundary::periodic);
-  for (const SurfaceShape shape : {SurfaceShape::sphere, SurfaceShape::cylinder, SurfaceShape::flat, SurfaceShape::wavy}) {
+  for (const SurfaceShape shape :
+       {SurfaceShape::sphere, SurfaceShape::cylinder, SurfaceShape::flat, SurfaceShape::wavy}) {
     const SurfaceSpec spec{shape, 1.5, 0.7, 0.1};
     const Eigen::ArrayXd whole = make_surface_heights(grid, spec);
     for (const auto& [first, rows] : {std::pair<std::size_t, std::size_t>{0, 3}, {3, 3}, {6, 1}, {7, 0}, {0, 7}}) {

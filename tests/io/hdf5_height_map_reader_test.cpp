@@ -263,7 +263,7 @@ TEST(Hdf5HeightMapReaderTest, ReadsTheRowsAProcessAsksFor) {
   std::vector<double> heights(5 * 4);
   for (std::size_t k = 0; k < heights.size(); ++k) heights[k] = 0.5 * static_cast<double>(k);
   std::vector<std::uint8_t> valid(heights.size(), 1);
-  valid[2 * 4 + 3] = 0;  // row 2
+  valid[2 * 4 + 3] = 0;                                           // row 2
   heights[3 * 4 + 1] = std::numeric_limits<double>::quiet_NaN();  // row 3
   {
     const auto file = create_file(path);

@@ -5,8 +5,8 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
-#include <utility>
 #include <string>
+#include <utility>
 
 #include "halfspace/height_map.hpp"
 
