@@ -39,9 +39,8 @@ void expect_close(const std::string& where, const char* what, double got, double
 }
 
 void check_grid(const Grid& grid, double contact_share, unsigned seed, const mpi::MpiCommunicator& comm) {
-  const std::string where =
-      fmt::format("{} {} grid, {:.0f} % contact, {} processes", grid.shape_string(),
-                  grid.periodic() ? "periodic" : "free", 100.0 * contact_share, comm.size());
+  const std::string where = fmt::format("{} {} grid, {:.0f} % contact, {} processes", grid.shape_string(),
+                                        grid.periodic() ? "periodic" : "free", 100.0 * contact_share, comm.size());
   std::mt19937_64 random(seed);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   Eigen::ArrayXd pressure(static_cast<Eigen::Index>(grid.size())), gap(pressure.size()), heights(pressure.size());
@@ -61,8 +60,7 @@ void check_grid(const Grid& grid, double contact_share, unsigned seed, const mpi
   const auto rows = [&](const Eigen::ArrayXd& field) {
     return std::span<const double>(field.data() + begin, layout.local_size());
   };
-  const analysis::ContactStatistics got =
-      mpi::slab_contact_statistics(grid, layout, rows(pressure), rows(gap), comm);
+  const analysis::ContactStatistics got = mpi::slab_contact_statistics(grid, layout, rows(pressure), rows(gap), comm);
   const surface::SurfaceStatistics got_surface = mpi::slab_surface_statistics(grid, layout, rows(heights), comm);
 
   expect_close(where, "contact fraction", got.contact_fraction, want.contact_fraction, comm.rank());
@@ -95,7 +93,7 @@ int main(int argc, char** argv) {
       // they are many and small.
       check_grid(Grid::plane(48, 31, 1e-6, 2e-6, boundary), 0.55, 1, world);
       check_grid(Grid::plane(37, 24, 1e-6, 1e-6, boundary), 0.2, 2, world);
-      check_grid(Grid::plane(16, 2, 1e-6, 1e-6, boundary), 0.6, 3, world);  // fewer rows than processes
+      check_grid(Grid::plane(16, 2, 1e-6, 1e-6, boundary), 0.6, 3, world);   // fewer rows than processes
       check_grid(Grid::plane(20, 20, 1e-6, 1e-6, boundary), 1.0, 4, world);  // one cluster, everything
       check_grid(Grid::plane(20, 20, 1e-6, 1e-6, boundary), 0.0, 5, world);  // none
     }
