@@ -37,8 +37,8 @@
 // Optim. 20, 221), which flattens the elastic spectrum; the cells the wall
 // holds stay put. The step minimises the elastic energy along the
 // direction, is clipped onto the wall and halved until the energy falls
-// (Armijo); a clipped step or a change of the held set restarts the
-// conjugation, as Polonsky-Keer restarts on a change of the contact set.
+// (Armijo); a clipped step restarts the conjugation (a change of the held
+// set alone does not: Polak-Ribiere+ resets itself where needed).
 // Where the conjugate direction does not descend, the iteration takes the
 // plain projected gradient step. Two or three FFT pairs per iteration
 // against SPG's one.
