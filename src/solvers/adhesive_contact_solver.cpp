@@ -450,8 +450,9 @@ SolveResult AdhesiveContactSolver::Impl::solve_displacement(std::span<const doub
       // below the rounding of the energy itself. Non-monotone as SPG's: the
       // change is measured against the largest of the last kMemory energies.
       const double allowance = *std::max_element(recent.begin(), recent.end()) - energy;
-      const std::array<double, 2> along = linalg::sums<2>(
-          m, [&](std::size_t i) { return std::array<double, 2>{direction[i] * sx[i], direction[i] * s_direction[i]}; });
+      const std::array<double, 2> along = linalg::sums<2>(m, [&](std::size_t i) {
+        return std::array<double, 2>{direction[i] * sx[i], direction[i] * s_direction[i]};
+      });
       const double linear = along[0];
       const double quadratic = 0.5 * along[1];
       double step = plain || !(quadratic > 0.0) ? 1.0 : -0.5 * slope / quadratic;
