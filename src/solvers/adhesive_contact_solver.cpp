@@ -328,7 +328,7 @@ SolveResult AdhesiveContactSolver::Impl::solve_displacement(std::span<const doub
     x = direction;
   }
   SolveResult result;
-  result.solver = options.precondition ? "adhesive-pcg" : "adhesive-spg";
+  result.solver = options.precondition ? "adhesive-pcg" : "adhesive-spg";  // as name()
   result.tolerance = options.tolerance;
   if (!project(x, x)) {
     result.status = SolveStatus::breakdown;
@@ -730,6 +730,10 @@ AdhesiveContactSolver::AdhesiveContactSolver(const Grid& grid, double e_star, Ad
 }
 
 AdhesiveContactSolver::~AdhesiveContactSolver() = default;
+
+std::string_view AdhesiveContactSolver::name() const {
+  return impl_->options.precondition ? "adhesive-pcg" : "adhesive-spg";
+}
 
 const AdhesiveSolverOptions& AdhesiveContactSolver::options() const {
   return impl_->options;
