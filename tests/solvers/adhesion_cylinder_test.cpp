@@ -5,8 +5,8 @@
 //   P(a) = pi E* a^2 / (4 R) - sqrt(2 pi E* w a)
 //
 // (Barquins 1988, J. Adhesion 26, 1; Chaudhury, Weaver, Hui & Kramer 1996,
-// J. Appl. Phys. 80, 30, eq. 5; its first term is Hertz's line contact,
-// Johnson 1985, Contact Mechanics, eq. 4.43). dP/da = 0 at
+// J. Appl. Phys. 80, 30; its first term is Hertz's line contact, Johnson
+// 1985, Contact Mechanics, section 4.3). dP/da = 0 at
 // a_c = (2 w R^2 / (pi E*))^(1/3), where P_c = -(3/4) pi E* a_c^2 / R =
 // -(3/4) (4 pi E* w^2 R)^(1/3): the pull-off force per unit length
 // (docs/theory.md, "Adhesion").
@@ -105,10 +105,10 @@ CylinderBranches sweep(const AdhesiveCylinder& cylinder, double cells_per_ac) {
 // cells, on loading below and on unloading beyond the JKR curve), and the
 // Richardson extrapolation 2 F(h/2) - F(h) of the pull-off, 1.025 P_c from
 // the two grids tested here (1.016 from 200 and 400), is JKR's.
-constexpr double kLoadTolerance = 0.2;             // |P_c|: the 200-per-a_c grid's 0.14 plus margin
-constexpr double kPullOffTolerance = 0.15;         // relative: its +10.5 % plus margin
-constexpr double kExtrapolatedTolerance = 0.05;    // relative: the extrapolation's +2.5 % plus margin
-constexpr double kConvergenceRatio = 0.65;         // error(h/2) / error(h): measured 0.51 and 0.57
+constexpr double kLoadTolerance = 0.2;           // |P_c|: the 200-per-a_c grid's 0.14 plus margin
+constexpr double kPullOffTolerance = 0.15;       // relative: its +10.5 % plus margin
+constexpr double kExtrapolatedTolerance = 0.05;  // relative: the extrapolation's +2.5 % plus margin
+constexpr double kConvergenceRatio = 0.65;       // error(h/2) / error(h): measured 0.51 and 0.57
 
 TEST(AdhesionCylinderTest, LoadAgainstHalfWidthAndPullOffFollowJkrLineContact) {
   const AdhesiveCylinder cylinder;
