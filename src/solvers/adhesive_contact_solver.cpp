@@ -232,21 +232,6 @@ struct AdhesiveContactSolver::Impl {
     });
   }
 
-  // sum_i phi(g_i + step d_i) - phi(g_i) (with `to`: phi at offset + to
-  // minus phi at offset + v): the interaction energy's change, summed cell by
-  // cell so that a change far below the energy itself is not lost to
-  // rounding.
-  double interaction_change(const Eigen::ArrayXd& v, const Eigen::ArrayXd* d, double step,
-                            const Eigen::ArrayXd* to) const {
-    const AdhesionLaw& law = options.law;
-    return linalg::sum(size(), [&](std::size_t i) {
-      if (!physical[i]) return 0.0;
-      const double g = offset[i] + v[i];
-      const double moved = to ? offset[i] + (*to)[i] : g + step * (*d)[i];
-      return law.energy(std::max(moved, 0.0)) - law.energy(std::max(g, 0.0));
-    });
-  }
-
   // gradient = S v - t(g) on the grid, S v on the padding.
   void make_gradient() {
     const AdhesionLaw& law = options.law;
