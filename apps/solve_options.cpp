@@ -111,7 +111,7 @@ const std::array kOptions{
     // Adhesion.
     SolveOption{"adhesion", &SolveOptions::adhesion, Kind::text, kAdhesion, "LAW",
                 "cohesive law: md (Maugis-Dugdale: stress sigma0 = w/h0 where 0 <= gap < h0) or exponential "
-                "(traction -(w/rho) exp(-gap/rho)); solved by the adhesive solver (adhesive-spg) [none]"},
+                "(traction -(w/rho) exp(-gap/rho)); solved by the adhesive solver (adhesive-pcg) [none]"},
     SolveOption{"work-of-adhesion", &SolveOptions::work_of_adhesion, Kind::number, kAdhesion, "W",
                 "work of adhesion w (J/m^2), required with --adhesion"},
     SolveOption{"adhesion-range", &SolveOptions::adhesion_range, Kind::number, kAdhesion, "M",
@@ -119,8 +119,8 @@ const std::array kOptions{
     SolveOption{"adhesion-stress", &SolveOptions::adhesion_stress, Kind::number, kAdhesion, "PA",
                 "md only: the Dugdale stress sigma0 (Pa) instead of --adhesion-range (h0 = w / sigma0)"},
     SolveOption{"adhesion-precondition", &SolveOptions::adhesion_precondition, Kind::text, kAdhesion, "on|off",
-                "on: the adhesive solver runs conjugate gradients preconditioned by the compliance (far fewer "
-                "iterations on rough md contacts; docs/solvers.md); off: spectral projected gradients [off]"},
+                "on: the adhesive solver runs conjugate gradients preconditioned by the compliance (adhesive-pcg); "
+                "off: spectral projected gradients (adhesive-spg, 5-15x slower; docs/solvers.md) [on]"},
     SolveOption{"output", &SolveOptions::output, Kind::path, kOutput, "FILE",
                 "result file (HDF5), required; replaced if it exists"},
     SolveOption{"quiet", &SolveOptions::quiet, Kind::flag, kOutput, "",

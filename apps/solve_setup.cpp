@@ -234,7 +234,7 @@ std::optional<solvers::SolverOptions::Adhesion> adhesion_from(const SolveOptions
   const AdhesionLawType type =
       in_context(o.name("adhesion"), [&] { return solvers::parse_adhesion_law_type(*o.adhesion); });
   if (o.solver) {
-    throw InputError(fmt::format("{} cannot be combined with {}: adhesion has its own solver (adhesive-spg)",
+    throw InputError(fmt::format("{} cannot be combined with {}: adhesion has its own solver (adhesive-pcg)",
                                  o.describe("solver"), o.describe("adhesion")));
   }
   if (!o.work_of_adhesion)

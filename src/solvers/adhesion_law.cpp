@@ -25,15 +25,8 @@ AdhesionLawType parse_adhesion_law_type(std::string_view name) {
   throw InputError(fmt::format("adhesion = {} is invalid: allowed laws are md, exponential", name));
 }
 
-double AdhesionLaw::traction(double gap) const {
-  if (type == AdhesionLawType::maugis_dugdale) return gap < range ? -stress() : 0.0;
-  return -stress() * std::exp(-gap / range);
-}
-
-double AdhesionLaw::energy(double gap) const {
-  if (type == AdhesionLawType::maugis_dugdale) return gap < range ? -work + stress() * gap : 0.0;
-  return -work * std::exp(-gap / range);
-}
+// traction and energy are inline in the header: the solvers call them for
+// every cell in every pass.
 
 double AdhesionLaw::traction_slope(double gap) const {
   if (type == AdhesionLawType::maugis_dugdale) return 0.0;

@@ -48,7 +48,7 @@ TEST(AdhesionCliTest, SingleSolveWritesSignedPressureAndAdhesionAttributes) {
   const fs::path output = dir / "adhesive.h5";
   const ProgramRun result = run(sphere_arguments(output, "0"), dir);
   ASSERT_EQ(result.exit_code, kExitOk) << result.err;
-  EXPECT_NE(result.out.find("adhesive-spg"), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("adhesive-pcg"), std::string::npos) << result.out;  // the default minimiser
   EXPECT_NE(result.out.find("adhesive force"), std::string::npos) << result.out;
   const test::H5 file = test::open_file(output);
   EXPECT_EQ(test::read_string_attribute(file.get(), "adhesion_law"), "md");

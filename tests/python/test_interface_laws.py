@@ -96,5 +96,6 @@ def test_preconditioned_adhesive_solver_holds_the_dugdale_stress():
     assert result.solver == "adhesive-pcg"
     assert result.mean_pressure == pytest.approx(-work / h0, rel=1e-5)
     assert hs.solve(flat, adhesion_precondition=False, **common).solver == "adhesive-spg"
+    assert hs.solve(flat, **common).solver == "adhesive-pcg"  # the default
     with pytest.raises(hs.InputError, match="adhesion_precondition need"):
         hs.solve(flat, dx=1e-6, e_star=E_STAR, approach=0.0, adhesion_precondition=True)

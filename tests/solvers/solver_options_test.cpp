@@ -8,8 +8,10 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <string>
 
+#include "halfspace/solvers/adhesive_contact_solver.hpp"
 #include "halfspace/solvers/solver_factory.hpp"
 
 namespace halfspace::solvers {
@@ -149,6 +151,28 @@ TEST(SolverOptionsTest, TheFactoryRefusesWhatValidateRefuses) {
   options.deflation.mode = DeflationOptions::Mode::on;
   options.deflation.block = 48;
   refusal([&] { make_solver(grid, 1e9, options); }, "deflation.block");
+}
+
+// The progress line estimates how far a solve has come from its residual
+// against the tolerance of the solver that runs (apps/progress.cpp): with
+// adhesion that is the adhesive solver's own (default 1e-6, a relative
+// pressure error), not the elastic 1e-10, and make_solver builds the
+// adhesive solver with it.
+TEST(SolverOptionsTest, SolverToleranceIsTheAdhesiveSolversWithAdhesion) {
+  const Grid grid = Grid::plane(16, 16, 1e-6, 1e-6, Boundary::periodic);
+  SolverOptions options;
+  EXPECT_EQ(options.solver_tolerance(), options.tolerance);
+  options.adhesion = SolverOptions::Adhesion{AdhesionLaw::maugis_dugdale(0.05, 1e-6)};
+  EXPECT_EQ(options.solver_tolerance(), 1e-6);
+  EXPECT_NE(options.solver_tolerance(), options.tolerance);
+  options.adhesion->tolerance = 3e-5;
+  EXPECT_EQ(options.solver_tolerance(), 3e-5);
+  const std::unique_ptr<ContactSolver> solver = make_solver(grid, 1e9, options);
+  const auto* adhesive = dynamic_cast<const AdhesiveContactSolver*>(solver.get());
+  ASSERT_NE(adhesive, nullptr) << solver->name();
+  EXPECT_EQ(adhesive->options().tolerance, options.solver_tolerance());
+  EXPECT_TRUE(adhesive->options().precondition) << "the default minimiser is adhesive-pcg";
+  EXPECT_EQ(solver->name(), "adhesive-pcg");
 }
 
 // The rules of a coated half-space live in validate(grid, coating), which

@@ -3,6 +3,7 @@
 // the hard wall gap >= 0 of the repulsive contact.
 #pragma once
 
+#include <cmath>
 #include <string_view>
 
 namespace halfspace::solvers {
@@ -44,10 +45,16 @@ struct AdhesionLaw {
   // Maugis-Dugdale, the traction at contact of the exponential law.
   double stress() const { return work / range; }
   // Signed pressure (Pa) the law exerts at `gap` (m, >= 0): <= 0 (attractive).
-  double traction(double gap) const;
+  double traction(double gap) const {
+    if (type == AdhesionLawType::maugis_dugdale) return gap < range ? -stress() : 0.0;
+    return -stress() * std::exp(-gap / range);
+  }
   // Interaction energy per area (J/m^2) at `gap`: -w at contact, rising to 0;
   // traction = -d energy / d gap.
-  double energy(double gap) const;
+  double energy(double gap) const {
+    if (type == AdhesionLawType::maugis_dugdale) return gap < range ? -work + stress() * gap : 0.0;
+    return -work * std::exp(-gap / range);
+  }
   // d traction / d gap (Pa/m): 0 for Maugis-Dugdale away from h0.
   double traction_slope(double gap) const;
   // Whether a cell at `gap` interacts: 0 <= gap < h0 for Maugis-Dugdale;

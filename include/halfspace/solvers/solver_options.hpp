@@ -133,9 +133,9 @@ struct SolverOptions {
   struct Adhesion {
     AdhesionLaw law;
     double tolerance = 1e-6;
-    // Preconditioned conjugate gradients instead of SPG
+    // Preconditioned conjugate gradients (the default) or SPG
     // (AdhesiveSolverOptions::precondition).
-    bool precondition = false;
+    bool precondition = true;
   };
   std::optional<Adhesion> adhesion;
 
