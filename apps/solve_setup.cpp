@@ -644,11 +644,11 @@ StressRequest stress_request_from(const SolveOptions& o, std::size_t load_steps,
 }
 
 // The peak while the stresses are computed and written after the solve: the
-// heights and the result's fields (5 arrays) kept, and the stress volume.
+// heights and the result's fields (5 arrays) kept, the transforms and one
+// depth's fields (the depths are computed and written one at a time).
 double stress_peak_memory(const Grid& grid, std::size_t depth_count, bool coated) {
   if (depth_count == 0) return 0.0;
-  return kProgramBytes + 6.0 * 8.0 * static_cast<double>(grid.size()) +
-         stress::stress_memory_estimate(grid, depth_count, coated);
+  return kProgramBytes + 6.0 * 8.0 * static_cast<double>(grid.size()) + stress::stress_memory_estimate(grid, coated);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include <fcntl.h>
 #include <fmt/format.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -226,18 +227,16 @@ bool same_file(const fs::path& output, const fs::path& other) {
   return resolved(output) == resolved(other);
 }
 
-void write_output_file(const fs::path& path, std::span<const char> bytes) {
-  check_output_path(path);
-  const fs::path target = output_target(path);
-  fs::path temporary = target;
-  temporary += fmt::format(".tmp-{}", ::getpid());
-  write_temporary(path, temporary, bytes);
+namespace {
+
+// The rename that ends every write: the target checked once more (the first
+// check may be minutes old), the temporary removed if anything fails.
+void rename_onto_target(const fs::path& path, const fs::path& target, const fs::path& temporary) {
   const auto discard = [&] {
     std::error_code ignored;
     fs::remove(temporary, ignored);
   };
   try {
-    // Once more just before the rename: the check above may be minutes old.
     require_regular_or_missing(path, target, false);
   } catch (const FileError&) {
     discard();
@@ -249,6 +248,92 @@ void write_output_file(const fs::path& path, std::span<const char> bytes) {
     discard();
     fail(path, fmt::format("could not rename temporary file '{}' onto it: {}", temporary.string(), error.message()));
   }
+}
+
+fs::path temporary_name(const fs::path& target) {
+  fs::path temporary = target;
+  temporary += fmt::format(".tmp-{}", ::getpid());
+  return temporary;
+}
+
+// After the writer: blocks reserved beyond the written size are released (a
+// truncation to the file's own size frees them on ext4 and XFS), and the
+// data reach the disk before the rename.
+void finish_temporary(const fs::path& shown, const fs::path& temporary) {
+  const int descriptor = ::open(temporary.c_str(), O_WRONLY | O_CLOEXEC);
+  if (descriptor < 0) {
+    fail(shown, fmt::format("could not reopen temporary file '{}': {}", temporary.string(), std::strerror(errno)));
+  }
+  int error = 0;
+  struct stat status {};
+  if (::fstat(descriptor, &status) != 0) {
+    error = errno;
+  } else if (::ftruncate(descriptor, status.st_size) != 0) {
+    error = errno;
+  }
+  if (error == 0 && ::fsync(descriptor) != 0 && errno != EINVAL) error = errno;
+  if (::close(descriptor) != 0 && error == 0 && errno != EINTR) error = errno;
+  if (error != 0) {
+    fail(shown, fmt::format("could not write temporary file '{}': {}", temporary.string(), std::strerror(error)));
+  }
+}
+
+}  // namespace
+
+void write_output_file(const fs::path& path, std::span<const char> bytes) {
+  check_output_path(path);
+  const fs::path target = output_target(path);
+  const fs::path temporary = temporary_name(target);
+  write_temporary(path, temporary, bytes);
+  rename_onto_target(path, target, temporary);
+}
+
+void write_output_file_with(const fs::path& path, const std::function<void(const fs::path& temporary)>& write) {
+  check_output_path(path);
+  const fs::path target = output_target(path);
+  const fs::path temporary = temporary_name(target);
+  // As in write_temporary: the name checked free, then registered before the
+  // writer creates it.
+  struct stat existing {};
+  if (::lstat(temporary.c_str(), &existing) == 0) {
+    fail(path, fmt::format("temporary file '{}' already exists (left by an interrupted run?); remove it and retry",
+                           temporary.string()));
+  }
+  {
+    TemporaryRegistration registration(temporary);
+    try {
+      write(temporary);
+      finish_temporary(path, temporary);
+    } catch (...) {
+      std::error_code ignored;
+      fs::remove(temporary, ignored);
+      throw;
+    }
+  }
+  rename_onto_target(path, target, temporary);
+}
+
+void reserve_output_space(const fs::path& path, const fs::path& temporary, std::uint64_t bytes) {
+  const auto refuse = [&](int reason) {
+    fail(path, fmt::format("could not reserve {} bytes for temporary file '{}': {}", bytes, temporary.string(),
+                           std::strerror(reason)));
+  };
+  // A reservation that keeps the size is not held to the file-size limit,
+  // which the writing would then meet.
+  rlimit limit{};
+  if (::getrlimit(RLIMIT_FSIZE, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY && bytes > limit.rlim_cur) {
+    refuse(EFBIG);
+  }
+  const int descriptor = ::open(temporary.c_str(), O_WRONLY | O_CLOEXEC);
+  if (descriptor < 0) refuse(errno);
+  int error = 0;
+  while (::fallocate(descriptor, FALLOC_FL_KEEP_SIZE, 0, static_cast<off_t>(bytes)) != 0) {
+    if (errno == EINTR) continue;
+    if (errno != EOPNOTSUPP) error = errno;
+    break;
+  }
+  ::close(descriptor);
+  if (error != 0) refuse(error);
 }
 
 void install_output_cleanup_on_signals() {

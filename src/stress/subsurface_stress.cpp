@@ -312,6 +312,11 @@ bool SubsurfaceStress::in_layer(double depth) const {
   return impl_->layered && impl_->layered->body_at(depth) == Body::layer;
 }
 
+std::optional<LayeredMaterial> SubsurfaceStress::coating() const {
+  if (!impl_->layered) return std::nullopt;
+  return impl_->layered->material();
+}
+
 void SubsurfaceStress::set_pressure(std::span<const double> pressure) {
   impl_->set_pressure(pressure);
 }

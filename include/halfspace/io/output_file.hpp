@@ -9,7 +9,9 @@
 // the new contents.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <span>
 
 namespace halfspace::io {
@@ -40,6 +42,25 @@ bool same_file(const std::filesystem::path& output, const std::filesystem::path&
 // '<path>': <reason>"; on failure the temporary is removed and an existing
 // file at `path` is left untouched.
 void write_output_file(const std::filesystem::path& path, std::span<const char> bytes);
+
+// The same for a file too large to assemble in memory: `write(temporary)`
+// creates `<target>.tmp-<pid>` exclusively (refusing an existing file) and
+// writes it, reserving its space first with reserve_output_space. Then the
+// reservation beyond the written size is released, and fsync and rename
+// follow as above. If `write` throws, the temporary is removed and the error
+// is passed on.
+void write_output_file_with(const std::filesystem::path& path,
+                            const std::function<void(const std::filesystem::path& temporary)>& write);
+
+// Reserves `bytes` of disk space for the file at `temporary` (just created by
+// the writer of write_output_file_with) without changing its size
+// (fallocate, FALLOC_FL_KEEP_SIZE), so that a full disk or the file-size
+// limit shows up here, before anything is written, rather than half-way
+// through. Where the file system cannot reserve (EOPNOTSUPP) it does nothing.
+// Throws FileError "cannot write output '<path>': could not reserve N bytes
+// for temporary file '...': <reason>".
+void reserve_output_space(const std::filesystem::path& path, const std::filesystem::path& temporary,
+                          std::uint64_t bytes);
 
 // Installs handlers for SIGINT, SIGTERM, SIGHUP and SIGXFSZ that remove the
 // temporaries of writes in progress and then end the process by the same

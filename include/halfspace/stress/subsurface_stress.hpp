@@ -8,6 +8,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <span>
 
 #include "halfspace/fft/fft_planning.hpp"
@@ -44,6 +45,8 @@ class SubsurfaceStress {
   // Whether the stresses are those of a coated half-space, and the body of a depth.
   bool coated() const;
   bool in_layer(double depth) const;
+  // The coated half-space's layer and substrate; nullopt for a homogeneous body.
+  std::optional<LayeredMaterial> coating() const;
 
   // Takes the surface pressure (Pa, grid.size() values, (ny, nx) row-major,
   // positive in compression): one forward FFT, kept for every depth. Throws
