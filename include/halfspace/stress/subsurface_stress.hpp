@@ -21,6 +21,16 @@ namespace halfspace::stress {
 // Throws InputError unless -1 < nu <= 0.5 (and finite); returns nu.
 double checked_poisson_ratio(double nu);
 
+// Coated half-spaces on free grids: the layer's thickness may be at most this
+// fraction of the domain's shorter side (the remainder's spectrum folds in
+// its periodic images beyond it, docs/theory.md).
+inline constexpr double kFreeCoatedStressThicknessRatio = 0.125;
+
+// Throws InputError naming the grid unless the stresses below `coating` can
+// be computed on `grid`: periodic grids, and free 2D grids with t <= L/8 (L
+// the domain's shorter side); free 1D grids are refused.
+void require_coated_stress_grid(const Grid& grid, const LayeredMaterial& coating);
+
 // Throws InputError unless depth is finite and > 0 (m); returns it.
 double checked_depth(double depth);
 
@@ -30,9 +40,12 @@ class SubsurfaceStress {
   // body of Poisson's ratio nu. Throws InputError for a bad nu.
   SubsurfaceStress(const Grid& grid, double nu, FftPlanning planning = FftPlanning::estimate);
   // A coated half-space (layered_fourier_stress.hpp): depths z <= t are in
-  // the layer. Solves each mode's layer and substrate coefficients once, for
-  // every depth (about 32 bytes per cell). Periodic grids only: throws
-  // InputError naming the grid for a free one, or for a bad material.
+  // the layer. Periodic grids solve each mode's layer and substrate
+  // coefficients once, for every depth (about 32 bytes per cell); free 2D
+  // grids add the remainder of the layered solution over Love's rectangle
+  // (solved per depth, up to 25 alias images per bin of the padded grid).
+  // Throws InputError for a grid require_coated_stress_grid refuses, or for
+  // a bad material.
   SubsurfaceStress(const Grid& grid, const LayeredMaterial& coating, FftPlanning planning = FftPlanning::estimate);
   ~SubsurfaceStress();
   SubsurfaceStress(const SubsurfaceStress&) = delete;
