@@ -30,6 +30,7 @@
 #include "halfspace/solvers/adhesion_law.hpp"
 #include "halfspace/solvers/solver_factory.hpp"
 #include "halfspace/stress/stress_volume.hpp"
+#include "halfspace/stress/subsurface_stress.hpp"
 #include "halfspace/surface/padding.hpp"
 #include "halfspace/surface/preparation.hpp"
 #include "halfspace/threads.hpp"
@@ -702,13 +703,9 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
       solver.validate(surface.grid);
     }
   });
-  if (coating) {
-    if (!stress.depths.empty() && !surface.grid.periodic()) {
-      throw InputError(fmt::format(
-          "{} for a coated half-space needs a periodic grid (the layered stresses are evaluated per Fourier "
-          "mode): pass --boundary periodic",
-          options.describe("stress-depths")));
-    }
+  if (coating && !stress.depths.empty()) {
+    in_context(options.describe("stress-depths"),
+               [&] { stress::require_coated_stress_grid(surface.grid, *coating); });
   }
   const std::size_t first_row = surface.first_row;
   return SolveSetup{std::move(surface.grid),

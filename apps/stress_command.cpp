@@ -76,11 +76,12 @@ int run_stress(const StressOptions& o, const std::vector<std::string>& argv) {
         *o.nu, o.result, coating->layer.poissons_ratio, coating->substrate.poissons_ratio));
   }
   if (!coating && !o.nu) throw InputError(missing_poisson_ratio_message("--nu"));
-  if (coating && !grid.periodic()) {
-    throw InputError(fmt::format(
-        "{} is a coated half-space's result on a free grid: stresses below a coating need a periodic grid (they "
-        "are evaluated per Fourier mode)",
-        o.result));
+  if (coating) {
+    try {
+      stress::require_coated_stress_grid(grid, *coating);
+    } catch (const InputError& error) {
+      throw InputError(fmt::format("{} is a coated half-space's result: {}", o.result, error.what()));
+    }
   }
   const double nu = coating ? coating->layer.poissons_ratio : given_nu;
   // The pressure read twice (reader and field), the transforms and one

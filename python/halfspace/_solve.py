@@ -232,8 +232,9 @@ def subsurface_stress(result: _core.Result, depths: Sequence[float], nu: Optiona
     wanted (E* alone does not fix it). Periodic grids use the Fourier-space
     half-space solution, free grids Love's rectangle coefficients by DC-FFT
     (docs/theory.md, subsurface stresses). A coated result (solved with
-    ``coating=``, periodic grids only) takes no nu: each depth uses its
-    body's, the layer's for z <= thickness.
+    ``coating=``; periodic grids, or free 2D grids whose shorter side is at
+    least 8 layer thicknesses) takes no nu: each depth uses its body's, the
+    layer's for z <= thickness.
 
     Returns a dict: ``depths``; ``sigma_xx``, ``sigma_yy``, ``sigma_zz``,
     ``sigma_xy``, ``sigma_xz``, ``sigma_yz``, ``von_mises``, ``max_shear``,

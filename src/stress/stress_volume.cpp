@@ -116,8 +116,9 @@ double stress_memory_estimate(const Grid& grid, bool coated) {
   // spectrum and transform, the padded coefficient transform (4 cells each
   // of spectrum and real array) and the six coefficient quadrants (about 26).
   // Coated: each half-spectrum mode's solution (8 doubles) and profile (3)
-  // instead of the decay table, about 5.5 more doubles a cell.
-  const double workspace = (grid.periodic() ? (coated ? 10.5 : 5.0) : 26.0) * 8.0 * cells;
+  // instead of the decay table, about 5.5 more doubles a cell; on a free
+  // grid the remainder's six parts on the padded half spectrum (12).
+  const double workspace = (grid.periodic() ? (coated ? 10.5 : 5.0) : (coated ? 38.0 : 26.0)) * 8.0 * cells;
   // The pressure itself and one depth's nine fields.
   constexpr double kSliceFields = 9.0;
   return 8.0 * cells + workspace + kSliceFields * 8.0 * cells;

@@ -161,27 +161,29 @@ TEST(LayeredCliTest, StressesBelowACoatingFromSolveAndFromTheStressCommand) {
     EXPECT_LE(worst, kPlanRounding * largest) << name << ": largest difference " << worst << " of " << largest;
   }
 
-  // A coated result brings its own Poisson's ratios; a free grid is refused
-  // before solving.
+  // A coated result brings its own Poisson's ratios; a free grid whose
+  // shorter side is under 8 layer thicknesses (here L = 400 um, t = 60 um) is
+  // refused before solving.
   const ProgramRun with_nu = testing::run_program(
       {"stress", output.string(), "--depths", "5e-6", "--nu", "0.3", "--output", (dir / "s.h5").string()}, dir.path());
   expect_input_error(with_nu, "--nu 0.3 is not used", dir / "s.h5");
   const fs::path free_output = dir / "free.h5";
-  Options free = joined(sphere(free_output), coating());
+  Options free = joined(sphere(free_output), coating("6e-5"));
   free.push_back({"--stress-depths", "5e-6"});
-  expect_input_error(run_solve(free, dir), "--stress-depths 5e-6 for a coated half-space needs a periodic grid",
+  expect_input_error(run_solve(free, dir), "--stress-depths 5e-6: subsurface stresses in a coated half-space on a "
+                                           "free grid need a layer thickness t <= L/8",
                      free_output);
   free.push_back({"--stress-nu", "0.3"});
   expect_input_error(run_solve(free, dir), "is not used for a coated half-space", free_output);
 
-  // The stress command on a coated result of a free grid, and on a result
-  // whose coating attributes are incomplete.
-  ASSERT_EQ(run_solve(joined(sphere(free_output), coating()), dir).exit_code, kExitOk);
+  // The stress command on such a coated result of a free grid, and on a
+  // result whose coating attributes are incomplete.
+  ASSERT_EQ(run_solve(joined(sphere(free_output), coating("6e-5")), dir).exit_code, kExitOk);
   const auto stress_of = [&](const fs::path& result) {
     return testing::run_program({"stress", result.string(), "--depths", "5e-6", "--output", (dir / "s.h5").string()},
                                 dir.path());
   };
-  expect_input_error(stress_of(free_output), "coated half-space's result on a free grid", dir / "s.h5");
+  expect_input_error(stress_of(free_output), "coated half-space's result: subsurface stresses", dir / "s.h5");
   const fs::path partial = dir / "partial.h5";
   fs::copy_file(output, partial);
   {
@@ -191,6 +193,39 @@ TEST(LayeredCliTest, StressesBelowACoatingFromSolveAndFromTheStressCommand) {
     H5Fclose(file);
   }
   expect_input_error(stress_of(partial), "some but not all of the coating's attributes", dir / "s.h5");
+}
+
+// A thin coating (t = 20 um, L = 400 um) on a free grid: solve --stress-depths
+// and the stress command on its result give the same fields.
+TEST(LayeredCliTest, StressesBelowACoatingOnAFreeGrid) {
+  const TempDir dir;
+  const fs::path output = dir / "coated.h5";
+  Options options = joined(sphere(output), coating("2e-5", "4e11", "0.22"));
+  options.push_back({"--stress-depths", "5e-6,2e-5,3e-5"});
+  const ProgramRun solved = run_solve(options, dir);
+  ASSERT_EQ(solved.exit_code, kExitOk) << solved.err;
+  const test::H5 file = test::open_file(output);
+  EXPECT_EQ(test::read_dataset<std::uint8_t>(file.get(), "/stress/in_layer", H5T_NATIVE_UINT8),
+            (std::vector<std::uint8_t>{1, 1, 0}));
+  const fs::path stresses = dir / "stresses.h5";
+  const ProgramRun command = testing::run_program(
+      {"stress", output.string(), "--depths", "5e-6,2e-5,3e-5", "--output", stresses.string()}, dir.path());
+  ASSERT_EQ(command.exit_code, kExitOk) << command.err;
+  const test::H5 other = test::open_file(stresses);
+  constexpr double kPlanRounding = 1e-12;  // relative to the field's largest value (as above)
+  for (const char* name : {"/stress/sigma_xx", "/stress/sigma_zz", "/stress/sigma_xz", "/stress/von_mises"}) {
+    const auto from_command = test::read_dataset<double>(other.get(), name, H5T_NATIVE_DOUBLE);
+    const auto from_solve = test::read_dataset<double>(file.get(), name, H5T_NATIVE_DOUBLE);
+    ASSERT_EQ(from_command.size(), from_solve.size()) << name;
+    double largest = 0.0;
+    double worst = 0.0;
+    for (std::size_t i = 0; i < from_solve.size(); ++i) {
+      largest = std::max(largest, std::abs(from_solve[i]));
+      worst = std::max(worst, std::abs(from_command[i] - from_solve[i]));
+    }
+    EXPECT_GT(largest, 0.0) << name;
+    EXPECT_LE(worst, kPlanRounding * largest) << name << ": largest difference " << worst << " of " << largest;
+  }
 }
 
 }  // namespace
