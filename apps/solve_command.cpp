@@ -73,8 +73,8 @@ int run_solve(const SolveSetup& setup) {
       io::write_stress_group(root, *stresses, pressure, setup.stress_depths);
     };
     metadata.extra_groups_bytes = io::stress_group_bound(setup.grid, setup.stress_depths.size());
-    activity.emplace(
-        fmt::format("computing stresses at {} depths and writing {}", setup.stress_depths.size(), setup.output.string()));
+    activity.emplace(fmt::format("computing stresses at {} depths and writing {}", setup.stress_depths.size(),
+                                 setup.output.string()));
   } else {
     activity.emplace(fmt::format("writing {}", setup.output.string()));
   }

@@ -704,8 +704,7 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
     }
   });
   if (coating && !stress.depths.empty()) {
-    in_context(options.describe("stress-depths"),
-               [&] { stress::require_coated_stress_grid(surface.grid, *coating); });
+    in_context(options.describe("stress-depths"), [&] { stress::require_coated_stress_grid(surface.grid, *coating); });
   }
   const std::size_t first_row = surface.first_row;
   return SolveSetup{std::move(surface.grid),

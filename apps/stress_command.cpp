@@ -96,13 +96,12 @@ int run_stress(const StressOptions& o, const std::vector<std::string>& argv) {
 
   stress::VonMisesMaximum maximum;
   {
-    const Activity activity(fmt::format("computing stresses at {} depths on the {} grid and writing {}",
-                                        depths.size(), grid.shape_string(), output));
+    const Activity activity(fmt::format("computing stresses at {} depths on the {} grid and writing {}", depths.size(),
+                                        grid.shape_string(), output));
     std::unique_ptr<stress::SubsurfaceStress> stresses =
         coating ? std::make_unique<stress::SubsurfaceStress>(grid, *coating)
                 : std::make_unique<stress::SubsurfaceStress>(grid, nu);
-    maximum =
-        io::write_stress_file(output, *stresses, input.pressure, depths, {o.result, join_command_line(argv)});
+    maximum = io::write_stress_file(output, *stresses, input.pressure, depths, {o.result, join_command_line(argv)});
   }
   if (!o.quiet) {
     const auto row = [](std::string_view label, const std::string& value) {

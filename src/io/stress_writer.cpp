@@ -50,7 +50,8 @@ stress::VonMisesMaximum write_stress_group(const Hdf5Node& root, stress::Subsurf
   const std::vector<std::size_t> shape = volume_shape(grid, depths.size());
   std::vector<Hdf5Node> fields;
   fields.reserve(kStoredFields);
-  for (const char* name : stress::kComponentNames) fields.push_back(group.create_dataset(name, shape, "Pa", Compression::none));
+  for (const char* name : stress::kComponentNames)
+    fields.push_back(group.create_dataset(name, shape, "Pa", Compression::none));
   for (const char* name : {"von_mises", "max_shear", "hydrostatic"}) {
     fields.push_back(group.create_dataset(name, shape, "Pa", Compression::none));
   }

@@ -7,7 +7,7 @@
 // they stand for vanishes on the grid, and the c2r transform needs a
 // Hermitian spectrum.
 //
-// Coated (periodic only): the same, with the multipliers of the bonded layer
+// Coated (periodic): the same, with the multipliers of the bonded layer
 // (layered_fourier_stress.hpp); each mode's six coefficients are solved once
 // when the grid is set up, and each depth evaluates g, g', g'' per mode.
 //
@@ -381,8 +381,9 @@ struct SubsurfaceStress::Impl {
           spectrum[k] = pressure_spectrum[k] * (kernel_spectrum[k] + added) * inverse_n;
         });
       } else {
-        linalg::for_each_index(spectrum.size(),
-                               [&](std::size_t k) { spectrum[k] = pressure_spectrum[k] * kernel_spectrum[k] * inverse_n; });
+        linalg::for_each_index(spectrum.size(), [&](std::size_t k) {
+          spectrum[k] = pressure_spectrum[k] * kernel_spectrum[k] * inverse_n;
+        });
       }
       padded->backward(fields[component]);
     }

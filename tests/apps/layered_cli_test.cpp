@@ -170,8 +170,9 @@ TEST(LayeredCliTest, StressesBelowACoatingFromSolveAndFromTheStressCommand) {
   const fs::path free_output = dir / "free.h5";
   Options free = joined(sphere(free_output), coating("6e-5"));
   free.push_back({"--stress-depths", "5e-6"});
-  expect_input_error(run_solve(free, dir), "--stress-depths 5e-6: subsurface stresses in a coated half-space on a "
-                                           "free grid need a layer thickness t <= L/8",
+  expect_input_error(run_solve(free, dir),
+                     "--stress-depths 5e-6: subsurface stresses in a coated half-space on a "
+                     "free grid need a layer thickness t <= L/8",
                      free_output);
   free.push_back({"--stress-nu", "0.3"});
   expect_input_error(run_solve(free, dir), "is not used for a coated half-space", free_output);

@@ -180,10 +180,11 @@ TEST(MemoryEstimateCliTest, StressCommandHoldsOneDepthNotTheVolume) {
   const TempDir dir;
   constexpr std::size_t kCells = 128 * 128;
   constexpr std::size_t kDepths = 96;
-  const Measured solve = run_measured({"solve", "--geometry", "sphere", "--radius", "0.01", "--grid", "128x128",
-                                       "--size", "4e-4", "--boundary", "periodic", "--E-star", "1e11", "--force",
-                                       "1", "--threads", "1", "--output", "result.h5", "--quiet"},
-                                      dir.path());
+  const Measured solve =
+      run_measured({"solve",  "--geometry", "sphere",     "--radius", "0.01",      "--grid", "128x128",
+                    "--size", "4e-4",       "--boundary", "periodic", "--E-star",  "1e11",   "--force",
+                    "1",      "--threads",  "1",          "--output", "result.h5", "--quiet"},
+                   dir.path());
   ASSERT_EQ(solve.exit_code, testing::kExitOk) << testing::read_text(dir / "stderr.txt");
   const Measured stress = run_measured({"stress", "result.h5", "--depth-range", "1e-6:1e-4:96", "--nu", "0.3",
                                         "--threads", "1", "--output", "stress.h5", "--quiet"},

@@ -73,8 +73,8 @@ VonMisesMaximum stresses_by_depth(SubsurfaceStress& stresses, std::span<const do
 StressVolume compute_stress_volume(const Grid& grid, std::span<const double> pressure, std::span<const double> depths,
                                    double nu, FftPlanning planning = FftPlanning::estimate);
 
-// The same below a coated half-space (periodic grids only), each depth with
-// the constants of its body. Throws InputError for a free grid, bad depths,
+// The same below a coated half-space (require_coated_stress_grid), each depth with
+// the constants of its body. Throws InputError for a grid it refuses, bad depths,
 // material or pressure.
 StressVolume compute_stress_volume(const Grid& grid, std::span<const double> pressure, std::span<const double> depths,
                                    const LayeredMaterial& coating, FftPlanning planning = FftPlanning::estimate);
