@@ -160,8 +160,8 @@ def solve(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
         ``substrate_E`` (Pa), ``substrate_nu``, as the program's
         ``--layer-thickness`` ... options; not combined with e_star or
         E1..nu2 (the indenter is rigid; ``Result.e_star`` is the layer's
-        E1*). Solvers pk, pk-fourier, pk-multilevel; no adhesion; a profile
-        (1D) needs boundary="periodic". ``Result.coating`` holds it.
+        E1*). Solvers pk, pk-fourier, pk-multilevel; no adhesion; any grid
+        (profiles too). ``Result.coating`` holds it.
 
     The GIL is released while solving; Ctrl-C (KeyboardInterrupt) stops the
     solve within about 0.1 s. Non-convergence is not an exception: see

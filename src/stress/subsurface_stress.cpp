@@ -90,13 +90,8 @@ double checked_poisson_ratio(double nu) {
 
 void require_coated_stress_grid(const Grid& grid, const LayeredMaterial& coating) {
   if (grid.periodic()) return;
-  if (grid.dimension() == 1) {
-    throw InputError(fmt::format(
-        "subsurface stresses in a coated half-space on a free 1D grid are not supported: the {} grid is free (use "
-        "--boundary periodic, or a 2D grid)",
-        grid.shape_string()));
-  }
-  const double side = std::min(static_cast<double>(grid.nx()) * grid.dx(), static_cast<double>(grid.ny()) * grid.dy());
+  const double length = static_cast<double>(grid.nx()) * grid.dx();
+  const double side = grid.dimension() == 1 ? length : std::min(length, static_cast<double>(grid.ny()) * grid.dy());
   if (coating.thickness > kFreeCoatedStressThicknessRatio * side) {
     throw InputError(fmt::format(
         "subsurface stresses in a coated half-space on a free grid need a layer thickness t <= L/8, L the domain's "
@@ -278,6 +273,8 @@ struct SubsurfaceStress::Impl {
     // The q = 0 image: D's in-plane components tend to direction-dependent
     // limits A + B cos(2 phi); the bin takes their angular mean A (the
     // cos(2 phi) part is a kernel whose integral over the period vanishes).
+    // A line (plane strain) has one direction, x, and its limit.
+    const bool line = grid.dimension() == 1;
     std::array<double, kComponentCount> at_zero{};
     {
       const double small = 1e-6 / t;
@@ -287,10 +284,11 @@ struct SubsurfaceStress::Impl {
       difference(0.0, small, along_y);
       for (const Component c : {Component::xx, Component::yy, Component::zz}) {
         const auto k = static_cast<std::size_t>(c);
-        at_zero[k] = 0.5 * (along_x[k] + along_y[k]);
+        at_zero[k] = line ? along_x[k] : 0.5 * (along_x[k] + along_y[k]);
       }
     }
-    const std::size_t padded_rows = 2 * rows;
+    const std::size_t padded_rows = line ? 1 : 2 * rows;
+    const int images_y = line ? 0 : kernels::LayeredKernel::kAliasImages;
     const std::size_t padded_cols = 2 * grid.nx();
     const std::size_t cols = kernel->spectrum_cols();
     const double dx = grid.dx();
@@ -299,15 +297,15 @@ struct SubsurfaceStress::Impl {
     const double period_y = 2.0 * std::numbers::pi / dy;
     constexpr int kImages = kernels::LayeredKernel::kAliasImages;
     linalg::for_each_row(padded_rows, cols, [&](std::size_t r) {
-      const double qy = kernels::dft_wavenumber(r, padded_rows, dy);
+      const double qy = line ? 0.0 : kernels::dft_wavenumber(r, padded_rows, dy);
       std::array<double, kComponentCount> d{};
       for (std::size_t c = 0; c < cols; ++c) {
         const double qx = kernels::dft_wavenumber(c, padded_cols, dx);
         std::array<double, kComponentCount> sum{};
-        for (int my = -kImages; my <= kImages; ++my) {
-          const double ky = qy + my * period_y;
+        for (int my = -images_y; my <= images_y; ++my) {
+          const double ky = line ? 0.0 : qy + my * period_y;  // a line's dy is no spacing
           if (std::abs(ky) > q_negligible) continue;
-          const double shape_y = sinc(0.5 * ky * dy);
+          const double shape_y = line ? 1.0 : sinc(0.5 * ky * dy);
           for (int mx = -kImages; mx <= kImages; ++mx) {
             const double kx = qx + mx * period_x;
             if (std::hypot(kx, ky) > q_negligible) continue;

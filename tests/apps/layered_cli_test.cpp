@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <numbers>
 #include <string>
 #include <utility>
 #include <vector>
@@ -112,15 +113,41 @@ TEST(LayeredCliTest, CoatingOptionErrorsNameTheOptionValueAndRange) {
                      "--solver lemke is invalid for a coated half-space", output);
 }
 
-TEST(LayeredCliTest, FreeLineGridIsRefusedAndPeriodicLineSolves) {
+// A Hertz line contact (cylinder, R = 10 mm, 100 N/m) on a polymer coating
+// (t = 20 um, about the contact's half-width) over steel, on a free 1D grid
+// and on a periodic one of the same length (20 half-widths: its images move
+// the pressure by about (b/L)^2): the same peak pressure and contact width,
+// both between the Hertz values of the polymer's and the steel's half-plane.
+TEST(LayeredCliTest, HertzLineOnACoatingFreeAndPeriodic) {
   const TempDir dir;
-  const fs::path output = dir / "line.h5";
-  const Options cylinder = {{"--geometry", "cylinder"}, {"--radius", "0.01"}, {"--grid", "256"},
-                            {"--size", "4e-4"},         {"--force", "100"},   {"--output", output.string()},
-                            {"--threads", "1"}};
-  expect_input_error(run_solve(joined(cylinder, coating()), dir), "free 1D grid is not supported", output);
-  const ProgramRun periodic = run_solve(joined(joined(cylinder, coating()), {{"--boundary", "periodic"}}), dir);
-  EXPECT_EQ(periodic.exit_code, kExitOk) << periodic.err;
+  const double radius = 0.01;
+  const double force = 100.0;
+  const auto solve_line = [&](const std::string& boundary) {
+    const fs::path output = dir / (boundary + ".h5");
+    const Options cylinder = {{"--geometry", "cylinder"}, {"--radius", "0.01"},    {"--grid", "512"},
+                              {"--size", "4e-4"},         {"--force", "100"},      {"--output", output.string()},
+                              {"--threads", "1"},         {"--boundary", boundary}};
+    const ProgramRun run = run_solve(joined(cylinder, coating()), dir);
+    EXPECT_EQ(run.exit_code, kExitOk) << run.err;
+    const test::H5 file = test::open_file(output);
+    return test::read_dataset<double>(file.get(), "/pressure", H5T_NATIVE_DOUBLE);
+  };
+  const std::vector<double> free = solve_line("free");
+  const std::vector<double> periodic = solve_line("periodic");
+  ASSERT_EQ(free.size(), periodic.size());
+  const auto peak = [](const std::vector<double>& p) { return *std::max_element(p.begin(), p.end()); };
+  const auto width = [](const std::vector<double>& p) {
+    return std::count_if(p.begin(), p.end(), [](double v) { return v > 0.0; });
+  };
+  const auto hertz_peak = [&](double youngs, double nu) {  // p0 = sqrt(F E* / (pi R))
+    return std::sqrt(force * youngs / (1.0 - nu * nu) / (std::numbers::pi * radius));
+  };
+  std::printf("Hertz line on a coating: peak %.4g (free), %.4g (periodic) Pa; %ld and %ld cells in contact\n",
+              peak(free), peak(periodic), static_cast<long>(width(free)), static_cast<long>(width(periodic)));
+  EXPECT_NEAR(peak(free), peak(periodic), 0.01 * peak(periodic));
+  EXPECT_LE(std::abs(width(free) - width(periodic)), 2);
+  EXPECT_GT(peak(free), 1.05 * hertz_peak(3e9, 0.35));
+  EXPECT_LT(peak(free), hertz_peak(2.1e11, 0.29));
 }
 
 // A hard coating on a periodic grid, stresses at depths on both sides of the

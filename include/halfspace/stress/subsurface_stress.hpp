@@ -27,8 +27,8 @@ double checked_poisson_ratio(double nu);
 inline constexpr double kFreeCoatedStressThicknessRatio = 0.125;
 
 // Throws InputError naming the grid unless the stresses below `coating` can
-// be computed on `grid`: periodic grids, and free 2D grids with t <= L/8 (L
-// the domain's shorter side); free 1D grids are refused.
+// be computed on `grid`: periodic grids, and free grids with t <= L/8 (L the
+// domain's shorter side, or its length in 1D).
 void require_coated_stress_grid(const Grid& grid, const LayeredMaterial& coating);
 
 // Throws InputError unless depth is finite and > 0 (m); returns it.
@@ -41,9 +41,10 @@ class SubsurfaceStress {
   SubsurfaceStress(const Grid& grid, double nu, FftPlanning planning = FftPlanning::estimate);
   // A coated half-space (layered_fourier_stress.hpp): depths z <= t are in
   // the layer. Periodic grids solve each mode's layer and substrate
-  // coefficients once, for every depth (about 32 bytes per cell); free 2D
-  // grids add the remainder of the layered solution over Love's rectangle
-  // (solved per depth, up to 25 alias images per bin of the padded grid).
+  // coefficients once, for every depth (about 32 bytes per cell); free grids
+  // add the remainder of the layered solution over Love's rectangle (the
+  // strip in 1D), solved per depth, up to 25 (1D: 5) alias images per bin of
+  // the padded grid.
   // Throws InputError for a grid require_coated_stress_grid refuses, or for
   // a bad material.
   SubsurfaceStress(const Grid& grid, const LayeredMaterial& coating, FftPlanning planning = FftPlanning::estimate);
