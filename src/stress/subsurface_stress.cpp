@@ -11,9 +11,9 @@
 // (layered_fourier_stress.hpp); each mode's six coefficients are solved once
 // when the grid is set up, and each depth evaluates g, g', g'' per mode.
 //
-// Coated, free 2D grids: the same split as the free coated kernel
-// (docs/theory.md, "Stresses in a coated half-space"): Love's rectangle with
-// the Poisson's ratio of the depth's body, plus the remainder D = S_layered -
+// Coated, free grids: the same split as the free coated kernel
+// (docs/theory.md, "Stresses in a coated half-space"): Love's rectangle (the
+// strip in 1D) with the Poisson's ratio of the depth's body, plus the remainder D = S_layered -
 // S_homogeneous, which decays like exp(-q min(z, 2t - z)), added to each
 // bin of the coefficients' spectrum as its DFT on the padded grid (the alias
 // images summed with the cell's transform).
@@ -67,13 +67,14 @@ double component_of(const StressTensor& s, std::size_t c) {
   return 0.0;
 }
 
-// Signed offset (cells) of wrap-around index k on a 2n-periodic axis; the
-// middle index n only ever meets padding (any value would do) and gets 0 via
-// `valid` = false.
+// sin(x)/x, the transform of a cell (over its width) at x = q dx/2.
 double sinc(double x) {
   return std::abs(x) < 1e-8 ? 1.0 - x * x / 6.0 : std::sin(x) / x;
 }
 
+// Signed offset (cells) of wrap-around index k on a 2n-periodic axis; the
+// middle index n only ever meets padding (any value would do) and gets 0 via
+// `valid` = false.
 std::ptrdiff_t wrapped_offset(std::size_t k, std::size_t n, bool& valid) {
   valid = k != n;
   return k < n ? static_cast<std::ptrdiff_t>(k) : static_cast<std::ptrdiff_t>(k) - static_cast<std::ptrdiff_t>(2 * n);
