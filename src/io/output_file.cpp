@@ -92,7 +92,10 @@ struct TemporarySlot {
 static_assert(std::atomic<int>::is_always_lock_free, "the signal handler needs lock-free atomics");
 std::array<TemporarySlot, kSlots> temporaries;
 
-// Registers a temporary for removal on a signal while it exists.
+}  // namespace
+
+// Registers a temporary for removal on a signal while it exists. (Outside
+// the anonymous namespace: OutputTemporary::Registration is one.)
 class TemporaryRegistration {
  public:
   explicit TemporaryRegistration(const fs::path& temporary) {
@@ -121,6 +124,8 @@ class TemporaryRegistration {
  private:
   int slot_ = -1;
 };
+
+namespace {
 
 extern "C" void remove_temporaries_and_reraise(int signal) {
   const int saved_errno = errno;
@@ -229,8 +234,14 @@ bool same_file(const fs::path& output, const fs::path& other) {
 
 namespace {
 
-// The rename that ends every write: the target checked once more (the first
-// check may be minutes old), the temporary removed if anything fails.
+fs::path temporary_beside(const fs::path& target) {
+  fs::path temporary = target;
+  temporary += fmt::format(".tmp-{}", ::getpid());
+  return temporary;
+}
+
+// The last step of an atomic write: the complete temporary renamed onto the
+// target (checked once more: the first check may be minutes old), or removed.
 void rename_onto_target(const fs::path& path, const fs::path& target, const fs::path& temporary) {
   const auto discard = [&] {
     std::error_code ignored;
@@ -250,67 +261,51 @@ void rename_onto_target(const fs::path& path, const fs::path& target, const fs::
   }
 }
 
-fs::path temporary_name(const fs::path& target) {
-  fs::path temporary = target;
-  temporary += fmt::format(".tmp-{}", ::getpid());
-  return temporary;
-}
-
-// After the writer: blocks reserved beyond the written size are released (a
-// truncation to the file's own size frees them on ext4 and XFS), and the
-// data reach the disk before the rename.
-void finish_temporary(const fs::path& shown, const fs::path& temporary) {
-  const int descriptor = ::open(temporary.c_str(), O_WRONLY | O_CLOEXEC);
-  if (descriptor < 0) {
-    fail(shown, fmt::format("could not reopen temporary file '{}': {}", temporary.string(), std::strerror(errno)));
-  }
-  int error = 0;
-  struct stat status {};
-  if (::fstat(descriptor, &status) != 0) {
-    error = errno;
-  } else if (::ftruncate(descriptor, status.st_size) != 0) {
-    error = errno;
-  }
-  if (error == 0 && ::fsync(descriptor) != 0 && errno != EINVAL) error = errno;
-  if (::close(descriptor) != 0 && error == 0 && errno != EINTR) error = errno;
-  if (error != 0) {
-    fail(shown, fmt::format("could not write temporary file '{}': {}", temporary.string(), std::strerror(error)));
-  }
-}
-
 }  // namespace
 
 void write_output_file(const fs::path& path, std::span<const char> bytes) {
   check_output_path(path);
   const fs::path target = output_target(path);
-  const fs::path temporary = temporary_name(target);
+  const fs::path temporary = temporary_beside(target);
   write_temporary(path, temporary, bytes);
   rename_onto_target(path, target, temporary);
 }
 
-void write_output_file_with(const fs::path& path, const std::function<void(const fs::path& temporary)>& write) {
-  check_output_path(path);
-  const fs::path target = output_target(path);
-  const fs::path temporary = temporary_name(target);
-  // As in write_temporary: the name checked free, then registered before the
-  // writer creates it.
-  struct stat existing {};
-  if (::lstat(temporary.c_str(), &existing) == 0) {
-    fail(path, fmt::format("temporary file '{}' already exists (left by an interrupted run?); remove it and retry",
-                           temporary.string()));
+struct OutputTemporary::Registration : TemporaryRegistration {
+  using TemporaryRegistration::TemporaryRegistration;
+};
+
+OutputTemporary::OutputTemporary(const fs::path& path)
+    : path_(path), target_((check_output_path(path), output_target(path))), temporary_(temporary_beside(target_)) {
+  write_temporary(path_, temporary_, {});
+  // Registered after it exists (write_temporary's own registration ended
+  // with it): a signal in between leaves it behind, as SIGKILL would.
+  registration_ = std::make_unique<Registration>(temporary_);
+}
+
+OutputTemporary::~OutputTemporary() {
+  if (!registration_) return;
+  std::error_code ignored;
+  fs::remove(temporary_, ignored);
+}
+
+void OutputTemporary::commit() {
+  // Space reserved beyond the written size (reserve_output_space) is
+  // released: a truncation to the file's own size frees it on ext4 and XFS.
+  // The writers wrote through their own descriptors: synced here, so that a
+  // crash soon after the rename cannot leave an empty file (write_temporary).
+  const int descriptor = ::open(temporary_.c_str(), O_WRONLY | O_CLOEXEC);
+  int error = descriptor < 0 ? errno : 0;
+  struct stat status {};
+  if (error == 0 && ::fstat(descriptor, &status) != 0) error = errno;
+  if (error == 0 && ::ftruncate(descriptor, status.st_size) != 0) error = errno;
+  if (error == 0 && ::fsync(descriptor) != 0 && errno != EINVAL) error = errno;
+  if (descriptor >= 0) ::close(descriptor);
+  if (error != 0) {
+    fail(path_, fmt::format("could not write temporary file '{}': {}", temporary_.string(), std::strerror(error)));
   }
-  {
-    TemporaryRegistration registration(temporary);
-    try {
-      write(temporary);
-      finish_temporary(path, temporary);
-    } catch (...) {
-      std::error_code ignored;
-      fs::remove(temporary, ignored);
-      throw;
-    }
-  }
-  rename_onto_target(path, target, temporary);
+  rename_onto_target(path_, target_, temporary_);
+  registration_.reset();
 }
 
 void reserve_output_space(const fs::path& path, const fs::path& temporary, std::uint64_t bytes) {

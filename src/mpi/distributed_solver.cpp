@@ -1,6 +1,7 @@
-// Polonsky-Keer on a slab-distributed periodic grid: the serial solver loop
-// (polonsky_keer.cpp) unchanged, over the slab operator and preconditioner,
-// whose reductions go through the operator's communicator.
+// Polonsky-Keer on a slab-distributed 2D grid: the serial solver loop
+// (polonsky_keer.cpp) unchanged, over the slab operator (periodic or free)
+// and preconditioner, whose reductions go through the operator's
+// communicator.
 #include "halfspace/mpi/distributed_solver.hpp"
 
 #include <fmt/format.h>
@@ -9,6 +10,7 @@
 
 #include "halfspace/mpi/slab_fft.hpp"
 #include "halfspace/mpi/slab_fourier_operator.hpp"
+#include "halfspace/mpi/slab_free_operator.hpp"
 #include "halfspace/solvers/polonsky_keer.hpp"
 #include "halfspace/solvers/solver_factory.hpp"
 
@@ -18,12 +20,42 @@ namespace {
 using solvers::SolverOptionError;
 using solvers::SolverType;
 
+// A grid's distributed operator and, if asked for, its Fourier
+// preconditioner.
+struct SlabOperator {
+  std::unique_ptr<InfluenceOperator> op;
+  std::unique_ptr<solvers::Preconditioner> fourier;  // null unless asked for
+};
+
+// The operator of the 2D `grid` over `comm`: periodic, the kernel on the
+// grid's transform, which the preconditioner shares (Polonsky-Keer applies
+// them one after the other); free, the padded convolution, the
+// preconditioner on a transform of its own (the unpadded periodic symbol,
+// as the serial solvers use on free grids) working in the operator's padded
+// buffer, idle between products. Collective.
+SlabOperator make_slab_operator(const Grid& grid, double e_star, bool fourier, FftPlanning planning,
+                                const MpiCommunicator& comm) {
+  SlabOperator made;
+  if (grid.periodic()) {
+    auto transform = std::make_shared<SlabRealFft>(grid.nx(), grid.ny(), comm, planning);
+    made.op = std::make_unique<SlabFourierOperator>(grid, e_star, transform);
+    if (fourier) made.fourier = std::make_unique<SlabFourierPreconditioner>(grid, e_star, transform);
+  } else {
+    auto op = std::make_unique<SlabFreeOperator>(grid, e_star, comm, planning);
+    if (fourier) {
+      made.fourier = std::make_unique<SlabFourierPreconditioner>(
+          grid, e_star, std::make_shared<SlabRealFft>(grid.nx(), grid.ny(), comm, planning, op->scratch()));
+    }
+    made.op = std::move(op);
+  }
+  return made;
+}
+
 // The solver with the operator and preconditioner it references.
 class DistributedSolver final : public solvers::ContactSolver {
  public:
-  DistributedSolver(std::unique_ptr<SlabFourierOperator> op, std::unique_ptr<SlabFourierPreconditioner> fourier,
-                    const solvers::PolonskyKeerOptions& options)
-      : op_(std::move(op)), fourier_(std::move(fourier)), solver_(*op_, options, fourier_.get()) {}
+  DistributedSolver(SlabOperator slab, const solvers::PolonskyKeerOptions& options)
+      : op_(std::move(slab.op)), fourier_(std::move(slab.fourier)), solver_(*op_, options, fourier_.get()) {}
 
   std::string_view name() const override { return solver_.name(); }
   SolveResult solve(std::span<const double> initial_gap, const Loading& loading,
@@ -35,8 +67,8 @@ class DistributedSolver final : public solvers::ContactSolver {
   }
 
  private:
-  std::unique_ptr<SlabFourierOperator> op_;
-  std::unique_ptr<SlabFourierPreconditioner> fourier_;
+  std::unique_ptr<InfluenceOperator> op_;
+  std::unique_ptr<solvers::Preconditioner> fourier_;
   solvers::PolonskyKeer solver_;
 };
 
@@ -54,10 +86,10 @@ bool distributable(const Grid& grid, const solvers::SolverOptions& options) {
 }
 
 void check_distributable(const Grid& grid, const solvers::SolverOptions& options) {
-  if (grid.dimension() != 2 || !grid.periodic()) {
+  if (grid.dimension() != 2) {
     throw SolverOptionError(
         "grid", fmt::format("{} ({}D, {})", grid.shape_string(), grid.dimension(), to_string(grid.boundary())),
-        fmt::format("{}: only periodic 2D grids are distributed", kNotYet));
+        fmt::format("{}: only 2D grids are distributed", kNotYet));
   }
   if (options.adhesion) {
     throw SolverOptionError("adhesion", std::string(to_string(options.adhesion->law.type)),
@@ -83,11 +115,7 @@ std::unique_ptr<solvers::ContactSolver> make_distributed_solver(const Grid& grid
   options.validate(grid);
   check_distributable(grid, options);
   const bool projected = options.type == SolverType::pk_fourier;
-  auto transform = std::make_shared<SlabRealFft>(grid.nx(), grid.ny(), comm, options.fft_planning);
-  auto op = std::make_unique<SlabFourierOperator>(grid, e_star, transform);
-  std::unique_ptr<SlabFourierPreconditioner> fourier;
-  if (projected) fourier = std::make_unique<SlabFourierPreconditioner>(grid, e_star, transform);
-  return std::make_unique<DistributedSolver>(std::move(op), std::move(fourier),
+  return std::make_unique<DistributedSolver>(make_slab_operator(grid, e_star, projected, options.fft_planning, comm),
                                              solvers::polonsky_keer_options(options, options.tolerance, projected));
 }
 

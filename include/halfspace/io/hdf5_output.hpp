@@ -52,6 +52,17 @@ class Hdf5Node {
   Hdf5Node write_dataset(std::string_view name, const std::vector<std::size_t>& shape,
                          std::span<const std::uint8_t> values, std::string_view units) const;
 
+  // A dataset of `shape` of which this process writes the rows (indices
+  // along the first axis) first_row .. first_row + r - 1, `values` holding
+  // them (r times the product of the other extents; r may be 0), and other
+  // processes the rest: stored as write_dataset stores it. In a file several
+  // processes write (fill_hdf5_file), every process calls it, with the same
+  // name, shape and units. The same as write_dataset for all rows.
+  Hdf5Node write_dataset_rows(std::string_view name, const std::vector<std::size_t>& shape, std::size_t first_row,
+                              std::span<const double> values, std::string_view units) const;
+  Hdf5Node write_dataset_rows(std::string_view name, const std::vector<std::size_t>& shape, std::size_t first_row,
+                              std::span<const std::uint8_t> values, std::string_view units) const;
+
   // A float64 dataset of `shape` (rank >= 2, stored as write_dataset would)
   // whose values come later, slab by slab along the first axis, through
   // write_slabs on the returned node: for fields too large to hold at once.
@@ -65,10 +76,12 @@ class Hdf5Node {
 
  private:
   friend void write_hdf5_file(const std::filesystem::path&, const std::function<void(const Hdf5Node&)>&);
-  friend void write_large_hdf5_file(const std::filesystem::path&, std::uint64_t,
-                                    const std::function<void(const Hdf5Node&)>&);
-  explicit Hdf5Node(std::int64_t id) : id_(id) {}  // an HDF5 object id (hid_t), owned
+  friend void fill_hdf5_file(std::int64_t, std::int64_t, const std::function<void(const Hdf5Node&)>&);
+  // An HDF5 object id (hid_t), owned, and the transfer property list its
+  // datasets are written with (H5P_DEFAULT, 0, or a collective one; not owned).
+  explicit Hdf5Node(std::int64_t id, std::int64_t transfer = 0) : id_(id), transfer_(transfer) {}
   std::int64_t id_ = -1;
+  std::int64_t transfer_ = 0;
 };
 
 // Builds the file in memory by calling fill(root) and writes it to `path`
@@ -82,8 +95,15 @@ class Hdf5Node {
 // memory while writing.
 void write_hdf5_file(const std::filesystem::path& path, const std::function<void(const Hdf5Node& root)>& fill);
 
+// Fills a file the caller has created (with its own file access: the
+// parallel HDF5 of an MPI run) and will close: calls fill(root), whose
+// datasets are written with the transfer property list `transfer` (a
+// collective one when processes write their rows of each field). Throws
+// FileError with the reason; the caller removes the file.
+void fill_hdf5_file(std::int64_t file, std::int64_t transfer, const std::function<void(const Hdf5Node& root)>& fill);
+
 // The same for a file too large to hold in memory (the stress volume): HDF5
-// writes the temporary file on disk directly (write_output_file_with), after
+// writes the temporary file on disk directly (OutputTemporary), after
 // `reserved_bytes`, an upper bound on the file's size, has been reserved on
 // disk, so that a full disk is met before HDF5 writes (the case that HDF5
 // 1.10 does not survive) and reported like any other error. Memory: HDF5's

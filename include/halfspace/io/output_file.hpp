@@ -11,7 +11,7 @@
 
 #include <cstdint>
 #include <filesystem>
-#include <functional>
+#include <memory>
 #include <span>
 
 namespace halfspace::io {
@@ -43,22 +43,41 @@ bool same_file(const std::filesystem::path& output, const std::filesystem::path&
 // file at `path` is left untouched.
 void write_output_file(const std::filesystem::path& path, std::span<const char> bytes);
 
-// The same for a file too large to assemble in memory: `write(temporary)`
-// creates `<target>.tmp-<pid>` exclusively (refusing an existing file) and
-// writes it, reserving its space first with reserve_output_space. Then the
-// reservation beyond the written size is released, and fsync and rename
-// follow as above. If `write` throws, the temporary is removed and the error
-// is passed on.
-void write_output_file_with(const std::filesystem::path& path,
-                            const std::function<void(const std::filesystem::path& temporary)>& write);
+// The same atomic write for a writer that writes the file itself, by name
+// (the parallel HDF5 writer of an MPI run, whose processes all write into
+// it; the stress volume, too large to assemble in memory): the constructor
+// checks the path as above and creates an empty `<target>.tmp-<pid>`
+// exclusively beside the target, registered for removal on the signals
+// below; commit() releases any space reserved beyond the written size
+// (reserve_output_space), syncs it and renames it onto the target; never
+// committed, it is removed by the destructor. Throws FileError "cannot write
+// output '<path>': <reason>".
+class OutputTemporary {
+ public:
+  explicit OutputTemporary(const std::filesystem::path& path);
+  ~OutputTemporary();
+  OutputTemporary(const OutputTemporary&) = delete;
+  OutputTemporary& operator=(const OutputTemporary&) = delete;
 
-// Reserves `bytes` of disk space for the file at `temporary` (just created by
-// the writer of write_output_file_with) without changing its size
-// (fallocate, FALLOC_FL_KEEP_SIZE), so that a full disk or the file-size
-// limit shows up here, before anything is written, rather than half-way
-// through. Where the file system cannot reserve (EOPNOTSUPP) it does nothing.
-// Throws FileError "cannot write output '<path>': could not reserve N bytes
-// for temporary file '...': <reason>".
+  // Where the writer writes.
+  const std::filesystem::path& temporary() const { return temporary_; }
+  void commit();
+
+ private:
+  struct Registration;
+  std::filesystem::path path_;
+  std::filesystem::path target_;
+  std::filesystem::path temporary_;
+  std::unique_ptr<Registration> registration_;
+};
+
+// Reserves `bytes` of disk space for the file at `temporary` (an
+// OutputTemporary's, once its writer has created it) without changing its
+// size (fallocate, FALLOC_FL_KEEP_SIZE), so that a full disk or the
+// file-size limit shows up here, before anything is written, rather than
+// half-way through. Where the file system cannot reserve (EOPNOTSUPP) it
+// does nothing. Throws FileError "cannot write output '<path>': could not
+// reserve N bytes for temporary file '...': <reason>".
 void reserve_output_space(const std::filesystem::path& path, const std::filesystem::path& temporary,
                           std::uint64_t bytes);
 
