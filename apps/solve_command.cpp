@@ -6,6 +6,7 @@
 #include <fmt/ranges.h>
 
 #include <cstdio>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -60,21 +61,23 @@ int run_solve(const SolveSetup& setup) {
   metadata.coating = setup.coating;
   metadata.contact_statistics = analysis::contact_statistics(setup.grid, {result.pressure.data(), setup.grid.size()},
                                                              {result.gap.data(), setup.grid.size()});
-  // Subsurface stresses (--stress-depths), written as the result's /stress group.
-  std::optional<stress::StressVolume> stresses;
+  // Subsurface stresses (--stress-depths), computed depth by depth while the
+  // result's /stress group is written.
+  std::unique_ptr<stress::SubsurfaceStress> stresses;
   if (!setup.stress_depths.empty()) {
-    activity.emplace(fmt::format("computing stresses at {} depths", setup.stress_depths.size()));
+    stresses = setup.coating
+                   ? std::make_unique<stress::SubsurfaceStress>(setup.grid, *setup.coating, setup.solver.fft_planning)
+                   : std::make_unique<stress::SubsurfaceStress>(setup.grid, setup.stress_nu, setup.solver.fft_planning);
     const std::span<const double> pressure(result.pressure.data(), static_cast<std::size_t>(result.pressure.size()));
-    stresses = setup.coating ? stress::compute_stress_volume(setup.grid, pressure, setup.stress_depths, *setup.coating,
-                                                             setup.solver.fft_planning)
-                             : stress::compute_stress_volume(setup.grid, pressure, setup.stress_depths, setup.stress_nu,
-                                                             setup.solver.fft_planning);
-    metadata.extra_groups = [&](const io::Hdf5Node& root) {
-      io::write_stress_group(root, setup.grid, *stresses,
-                             setup.coating ? setup.coating->layer.poissons_ratio : setup.stress_nu);
+    metadata.extra_groups = [&stresses, &setup, pressure](const io::Hdf5Node& root) {
+      io::write_stress_group(root, *stresses, pressure, setup.stress_depths);
     };
+    metadata.extra_groups_bytes = io::stress_group_bound(setup.grid, setup.stress_depths.size());
+    activity.emplace(fmt::format("computing stresses at {} depths and writing {}", setup.stress_depths.size(),
+                                 setup.output.string()));
+  } else {
+    activity.emplace(fmt::format("writing {}", setup.output.string()));
   }
-  activity.emplace(fmt::format("writing {}", setup.output.string()));
   io::write_result(setup.output, setup.grid, heights, result, metadata);
 
   activity.reset();

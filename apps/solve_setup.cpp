@@ -30,6 +30,7 @@
 #include "halfspace/solvers/adhesion_law.hpp"
 #include "halfspace/solvers/solver_factory.hpp"
 #include "halfspace/stress/stress_volume.hpp"
+#include "halfspace/stress/subsurface_stress.hpp"
 #include "halfspace/surface/padding.hpp"
 #include "halfspace/surface/preparation.hpp"
 #include "halfspace/threads.hpp"
@@ -667,11 +668,11 @@ StressRequest stress_request_from(const SolveOptions& o, std::size_t load_steps,
 }
 
 // The peak while the stresses are computed and written after the solve: the
-// heights and the result's fields (5 arrays) kept, and the stress volume.
+// heights and the result's fields (5 arrays) kept, the transforms and one
+// depth's fields (the depths are computed and written one at a time).
 double stress_peak_memory(const Grid& grid, std::size_t depth_count, bool coated) {
   if (depth_count == 0) return 0.0;
-  return kProgramBytes + 6.0 * 8.0 * static_cast<double>(grid.size()) +
-         stress::stress_memory_estimate(grid, depth_count, coated);
+  return kProgramBytes + 6.0 * 8.0 * static_cast<double>(grid.size()) + stress::stress_memory_estimate(grid, coated);
 }
 
 }  // namespace
@@ -753,13 +754,8 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
       solver.validate(surface.grid);
     }
   });
-  if (coating) {
-    if (!stress.depths.empty() && !surface.grid.periodic()) {
-      throw InputError(fmt::format(
-          "{} for a coated half-space needs a periodic grid (the layered stresses are evaluated per Fourier "
-          "mode): pass --boundary periodic",
-          options.describe("stress-depths")));
-    }
+  if (coating && !stress.depths.empty()) {
+    in_context(options.describe("stress-depths"), [&] { stress::require_coated_stress_grid(surface.grid, *coating); });
   }
   const std::size_t first_row = surface.first_row;
   return SolveSetup{std::move(surface.grid),

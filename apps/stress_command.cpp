@@ -76,31 +76,32 @@ int run_stress(const StressOptions& o, const std::vector<std::string>& argv) {
         *o.nu, o.result, coating->layer.poissons_ratio, coating->substrate.poissons_ratio));
   }
   if (!coating && !o.nu) throw InputError(missing_poisson_ratio_message("--nu"));
-  if (coating && !grid.periodic()) {
-    throw InputError(fmt::format(
-        "{} is a coated half-space's result on a free grid: stresses below a coating need a periodic grid (they "
-        "are evaluated per Fourier mode)",
-        o.result));
+  if (coating) {
+    try {
+      stress::require_coated_stress_grid(grid, *coating);
+    } catch (const InputError& error) {
+      throw InputError(fmt::format("{} is a coated half-space's result: {}", o.result, error.what()));
+    }
   }
   const double nu = coating ? coating->layer.poissons_ratio : given_nu;
-  // The pressure read twice (reader and field) and the stress volume.
+  // The pressure read twice (reader and field), the transforms and one
+  // depth's fields: the depths are computed and written one at a time.
   const double estimate = kProgramBytes + 16.0 * static_cast<double>(grid.size()) +
-                          stress::stress_memory_estimate(grid, depths.size(), coating.has_value());
+                          stress::stress_memory_estimate(grid, coating.has_value());
   const std::string what = o.max_memory ? fmt::format("--max-memory {}", *o.max_memory) : "--max-memory";
-  require_memory(fmt::format("stresses at {} depths on the {} grid of {} ({} cells x {} depths x 8 fields x 8 "
-                             "bytes, and the file image)",
-                             depths.size(), grid.shape_string(), o.result, grid.size(), depths.size()),
+  require_memory(fmt::format("stresses on the {} grid of {} (the transforms and one depth's 9 fields of {} cells "
+                             "x 8 bytes at a time)",
+                             grid.shape_string(), o.result, grid.size()),
                  estimate, memory_limit(o.max_memory, what));
 
-  const stress::StressVolume volume = [&] {
-    const Activity activity(
-        fmt::format("computing stresses at {} depths on the {} grid", depths.size(), grid.shape_string()));
-    return coating ? stress::compute_stress_volume(grid, input.pressure, depths, *coating)
-                   : stress::compute_stress_volume(grid, input.pressure, depths, nu);
-  }();
+  stress::VonMisesMaximum maximum;
   {
-    const Activity activity(fmt::format("writing {}", output));
-    io::write_stress_file(output, grid, input.pressure, volume, nu, {o.result, join_command_line(argv)});
+    const Activity activity(fmt::format("computing stresses at {} depths on the {} grid and writing {}", depths.size(),
+                                        grid.shape_string(), output));
+    std::unique_ptr<stress::SubsurfaceStress> stresses =
+        coating ? std::make_unique<stress::SubsurfaceStress>(grid, *coating)
+                : std::make_unique<stress::SubsurfaceStress>(grid, nu);
+    maximum = io::write_stress_file(output, *stresses, input.pressure, depths, {o.result, join_command_line(argv)});
   }
   if (!o.quiet) {
     const auto row = [](std::string_view label, const std::string& value) {
@@ -114,7 +115,7 @@ int run_stress(const StressOptions& o, const std::vector<std::string>& argv) {
                                   coating->layer.poissons_ratio, coating->substrate.poissons_ratio)
                     : fmt::format("{} ({}), Poisson's ratio {}", grid.shape_string(), to_string(grid.boundary()), nu));
     row("depths", fmt::format("{} from {:.6g} m to {:.6g} m", depths.size(), depths.front(), depths.back()));
-    const auto& m = volume.max_von_mises;
+    const auto& m = maximum;
     row("max von Mises", fmt::format("{:.6g} Pa at x = {:.6g} m, y = {:.6g} m, z = {:.6g} m", m.value, m.x, m.y, m.z));
     row("output", output);
   }

@@ -161,8 +161,8 @@ def solve(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
         ``substrate_E`` (Pa), ``substrate_nu``, as the program's
         ``--layer-thickness`` ... options; not combined with e_star or
         E1..nu2 (the indenter is rigid; ``Result.e_star`` is the layer's
-        E1*). Solvers pk, pk-fourier, pk-multilevel; no adhesion; a profile
-        (1D) needs boundary="periodic". ``Result.coating`` holds it.
+        E1*). Solvers pk, pk-fourier, pk-multilevel; no adhesion; any grid
+        (profiles too). ``Result.coating`` holds it.
 
     The GIL is released while solving; Ctrl-C (KeyboardInterrupt) stops the
     solve within about 0.1 s. Non-convergence is not an exception: see
@@ -233,8 +233,9 @@ def subsurface_stress(result: _core.Result, depths: Sequence[float], nu: Optiona
     wanted (E* alone does not fix it). Periodic grids use the Fourier-space
     half-space solution, free grids Love's rectangle coefficients by DC-FFT
     (docs/theory.md, subsurface stresses). A coated result (solved with
-    ``coating=``, periodic grids only) takes no nu: each depth uses its
-    body's, the layer's for z <= thickness.
+    ``coating=``; periodic grids, or free 2D grids whose shorter side is at
+    least 8 layer thicknesses) takes no nu: each depth uses its body's, the
+    layer's for z <= thickness.
 
     Returns a dict: ``depths``; ``sigma_xx``, ``sigma_yy``, ``sigma_zz``,
     ``sigma_xy``, ``sigma_xz``, ``sigma_yz``, ``von_mises``, ``max_shear``,

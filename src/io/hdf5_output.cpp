@@ -115,13 +115,11 @@ hsize_t balanced_piece(hsize_t extent, hsize_t limit) {
 
 // Chunks of whole rows, at most kChunkElements each: a row is the unit that
 // post-processing reads most often, and a whole-field read touches every
-// chunk once.
-PropertyList creation_properties(const std::vector<hsize_t>& dims, Compression compression) {
-  PropertyList properties(H5Pcreate(H5P_DATASET_CREATE));
-  if (!properties.valid()) fail_hdf5("could not create dataset properties");
+// chunk once. Empty for a field stored contiguously.
+std::vector<hsize_t> chunk_shape(const std::vector<hsize_t>& dims) {
   hsize_t elements = 1;
   for (const hsize_t d : dims) elements *= d;
-  if (elements <= kChunkElements) return properties;  // contiguous
+  if (elements <= kChunkElements) return {};  // contiguous
 
   std::vector<hsize_t> chunk(dims.size());
   chunk.back() = balanced_piece(dims.back(), kChunkElements);
@@ -131,6 +129,14 @@ PropertyList creation_properties(const std::vector<hsize_t>& dims, Compression c
     // Rank 3 (the stress fields, one (ny, nx) slice per depth): one slice a chunk.
     for (std::size_t k = 0; k < row_axis; ++k) chunk[k] = 1;
   }
+  return chunk;
+}
+
+PropertyList creation_properties(const std::vector<hsize_t>& dims, Compression compression) {
+  PropertyList properties(H5Pcreate(H5P_DATASET_CREATE));
+  if (!properties.valid()) fail_hdf5("could not create dataset properties");
+  const std::vector<hsize_t> chunk = chunk_shape(dims);
+  if (chunk.empty()) return properties;
   if (H5Pset_chunk(properties.get(), static_cast<int>(chunk.size()), chunk.data()) < 0) {
     fail_hdf5("could not set the chunk shape");
   }
@@ -288,6 +294,47 @@ Hdf5Node Hdf5Node::write_dataset_rows(std::string_view name, const std::vector<s
                   transfer_);
 }
 
+Hdf5Node Hdf5Node::create_dataset(std::string_view name, const std::vector<std::size_t>& shape, std::string_view units,
+                                  Compression compression) const {
+  const std::string key(name);
+  if (shape.size() < 2) throw InputError(fmt::format("dataset '{}': a dataset written in slabs needs rank >= 2", name));
+  const std::vector<hsize_t> dims(shape.begin(), shape.end());
+  const Dataspace space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr));
+  if (!space.valid()) fail_hdf5(fmt::format("could not create the dataspace of '{}'", name));
+  const PropertyList properties = creation_properties(dims, compression);
+  Hdf5Node dataset(
+      H5Dcreate2(id_, key.c_str(), H5T_IEEE_F64LE, space.get(), H5P_DEFAULT, properties.get(), H5P_DEFAULT), transfer_);
+  if (dataset.id_ < 0) fail_hdf5(fmt::format("could not create dataset '{}'", name));
+  if (!units.empty()) attach_string(dataset.id_, "units", units);
+  return dataset;
+}
+
+void Hdf5Node::write_slabs(std::size_t first, std::span<const double> values) const {
+  const Dataspace file_space(H5Dget_space(id_));
+  const int rank = file_space.valid() ? H5Sget_simple_extent_ndims(file_space.get()) : -1;
+  if (rank < 2) fail_hdf5("could not read the shape of the dataset being written");
+  std::vector<hsize_t> dims(static_cast<std::size_t>(rank));
+  H5Sget_simple_extent_dims(file_space.get(), dims.data(), nullptr);
+  hsize_t slab = 1;
+  for (std::size_t k = 1; k < dims.size(); ++k) slab *= dims[k];
+  const hsize_t count = slab > 0 ? values.size() / slab : 0;
+  if (count * slab != values.size() || first + count > dims[0]) {
+    throw InputError(fmt::format("dataset slabs: {} values from slab {} do not fit a dataset of {} slabs of {} values",
+                                 values.size(), first, dims[0], slab));
+  }
+  if (count == 0) return;
+  std::vector<hsize_t> start(dims.size(), 0);
+  std::vector<hsize_t> extent = dims;
+  start[0] = first;
+  extent[0] = count;
+  const Dataspace memory_space(H5Screate_simple(rank, extent.data(), nullptr));
+  if (!memory_space.valid() ||
+      H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start.data(), nullptr, extent.data(), nullptr) < 0 ||
+      H5Dwrite(id_, H5T_NATIVE_DOUBLE, memory_space.get(), file_space.get(), transfer_, values.data()) < 0) {
+    fail_hdf5(fmt::format("could not write slabs {} to {} of a dataset", first, first + count - 1));
+  }
+}
+
 Hdf5Node Hdf5Node::create_group(std::string_view name) const {
   const std::string key(name);
   const hid_t group = H5Gcreate2(id_, key.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
@@ -314,6 +361,49 @@ void fill_hdf5_file(std::int64_t file, std::int64_t transfer, const std::functio
   if (root < 0) fail_hdf5("could not open the root group");
   const Hdf5Node node(root, transfer);
   fill(node);
+}
+
+void write_large_hdf5_file(const std::filesystem::path& path, std::uint64_t reserved_bytes,
+                           const std::function<void(const Hdf5Node& root)>& fill) {
+  OutputTemporary output(path);
+  {
+    const detail::ErrorPrintingOff quiet;
+    try {
+      PropertyList access(H5Pcreate(H5P_FILE_ACCESS));
+      if (!access.valid() || H5Pset_fapl_sec2(access.get()) < 0) fail_hdf5("could not set up the file access");
+      // The empty temporary OutputTemporary created exclusively.
+      File file(H5Fcreate(output.temporary().c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get()));
+      if (!file.valid()) fail_hdf5(fmt::format("could not create temporary file '{}'", output.temporary().string()));
+      reserve_output_space(path, output.temporary(), reserved_bytes);
+      fill_hdf5_file(file.get(), H5P_DEFAULT, fill);
+      if (H5Fflush(file.get(), H5F_SCOPE_GLOBAL) < 0) fail_hdf5("could not flush the file");
+      if (!file.close()) fail_hdf5("could not close the file");
+    } catch (const FileError& error) {
+      const std::string message = error.what();
+      if (message.starts_with("cannot write output")) throw;
+      throw FileError(fmt::format("cannot write output '{}': {}", path.string(), message));
+    }
+  }
+  output.commit();
+}
+
+std::uint64_t hdf5_dataset_bound(const std::vector<std::size_t>& shape, Compression compression) {
+  const std::vector<hsize_t> dims(shape.begin(), shape.end());
+  std::uint64_t elements = 1;
+  for (const hsize_t d : dims) elements *= d;
+  std::uint64_t bytes = 8 * elements + 4096;  // the values; the object header with its attributes
+  const std::vector<hsize_t> chunk = chunk_shape(dims);
+  if (chunk.empty()) return bytes;
+  std::uint64_t chunks = 1;
+  for (std::size_t k = 0; k < dims.size(); ++k) chunks *= (dims[k] + chunk[k] - 1) / chunk[k];
+  // The v1 B-tree of chunk addresses: nodes of 64 entries of a key (at most
+  // 48 bytes at rank 3) and an address, half full after a split, plus the
+  // levels above: 160 bytes a chunk bounds it.
+  bytes += 160 * chunks + 4096;
+  // Deflate's stored blocks on incompressible data: 5 bytes per 64 KiB and
+  // a few bytes a chunk.
+  if (compression == Compression::deflate) bytes += elements / 1024 + 64 * chunks;
+  return bytes;
 }
 
 std::vector<std::size_t> field_shape(const Grid& grid) {

@@ -4,6 +4,7 @@
 
 #include <fcntl.h>
 #include <fmt/format.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -240,14 +241,13 @@ fs::path temporary_beside(const fs::path& target) {
 }
 
 // The last step of an atomic write: the complete temporary renamed onto the
-// target, or removed.
+// target (checked once more: the first check may be minutes old), or removed.
 void rename_onto_target(const fs::path& path, const fs::path& target, const fs::path& temporary) {
   const auto discard = [&] {
     std::error_code ignored;
     fs::remove(temporary, ignored);
   };
   try {
-    // Once more just before the rename: the check above may be minutes old.
     require_regular_or_missing(path, target, false);
   } catch (const FileError&) {
     discard();
@@ -290,10 +290,15 @@ OutputTemporary::~OutputTemporary() {
 }
 
 void OutputTemporary::commit() {
+  // Space reserved beyond the written size (reserve_output_space) is
+  // released: a truncation to the file's own size frees it on ext4 and XFS.
   // The writers wrote through their own descriptors: synced here, so that a
   // crash soon after the rename cannot leave an empty file (write_temporary).
-  const int descriptor = ::open(temporary_.c_str(), O_RDONLY | O_CLOEXEC);
+  const int descriptor = ::open(temporary_.c_str(), O_WRONLY | O_CLOEXEC);
   int error = descriptor < 0 ? errno : 0;
+  struct stat status {};
+  if (error == 0 && ::fstat(descriptor, &status) != 0) error = errno;
+  if (error == 0 && ::ftruncate(descriptor, status.st_size) != 0) error = errno;
   if (error == 0 && ::fsync(descriptor) != 0 && errno != EINVAL) error = errno;
   if (descriptor >= 0) ::close(descriptor);
   if (error != 0) {
@@ -301,6 +306,29 @@ void OutputTemporary::commit() {
   }
   rename_onto_target(path_, target_, temporary_);
   registration_.reset();
+}
+
+void reserve_output_space(const fs::path& path, const fs::path& temporary, std::uint64_t bytes) {
+  const auto refuse = [&](int reason) {
+    fail(path, fmt::format("could not reserve {} bytes for temporary file '{}': {}", bytes, temporary.string(),
+                           std::strerror(reason)));
+  };
+  // A reservation that keeps the size is not held to the file-size limit,
+  // which the writing would then meet.
+  rlimit limit{};
+  if (::getrlimit(RLIMIT_FSIZE, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY && bytes > limit.rlim_cur) {
+    refuse(EFBIG);
+  }
+  const int descriptor = ::open(temporary.c_str(), O_WRONLY | O_CLOEXEC);
+  if (descriptor < 0) refuse(errno);
+  int error = 0;
+  while (::fallocate(descriptor, FALLOC_FL_KEEP_SIZE, 0, static_cast<off_t>(bytes)) != 0) {
+    if (errno == EINTR) continue;
+    if (errno != EOPNOTSUPP) error = errno;
+    break;
+  }
+  ::close(descriptor);
+  if (error != 0) refuse(error);
 }
 
 void install_output_cleanup_on_signals() {

@@ -1,7 +1,7 @@
 // Writes a solve's fields and summary to HDF5 (layout in docs/file-format.md)
-// with the conventions of hdf5_output.hpp: assembled in memory, written
-// under a temporary name beside the target, synced and renamed, so a reader
-// never sees a partial result.
+// with the conventions of hdf5_output.hpp: assembled in memory (or, with a
+// large extra group, in place), written under a temporary name beside the
+// target, synced and renamed, so a reader never sees a partial result.
 #include "halfspace/io/result_writer.hpp"
 
 #include <fmt/format.h>
@@ -100,12 +100,23 @@ void write_result(const std::filesystem::path& path, const Grid& grid, std::span
   check_size("pressure", static_cast<std::size_t>(result.pressure.size()), grid);
   check_size("gap", static_cast<std::size_t>(result.gap.size()), grid);
   check_size("displacement", static_cast<std::size_t>(result.displacement.size()), grid);
-  write_hdf5_file(path, [&](const Hdf5Node& root) {
+  const auto fill = [&](const Hdf5Node& root) {
     root.write_dataset("height", field_shape(grid), height, "m");
     write_result_fields(root, grid, result);
     write_result_root_attributes(root, grid, result, metadata);
     if (metadata.extra_groups) metadata.extra_groups(root);
-  });
+  };
+  if (metadata.extra_groups_bytes == 0) {
+    write_hdf5_file(path, fill);
+    return;
+  }
+  // height, pressure, gap, displacement, plastic_displacement, and the uint8
+  // contact and plastic within one more float64 field's bound.
+  constexpr std::uint64_t kFields = 6;
+  const std::uint64_t bound =
+      kHdf5SmallItemsBound + kFields * hdf5_dataset_bound(field_shape(grid), Compression::deflate) +
+      hdf5_dataset_bound({result.residual_history.size()}, Compression::deflate) + metadata.extra_groups_bytes;
+  write_large_hdf5_file(path, bound, fill);
 }
 
 }  // namespace halfspace::io

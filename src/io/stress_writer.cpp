@@ -1,9 +1,10 @@
 // The /stress group and the stress command's file, with the conventions of
-// hdf5_output.hpp (units attributes, chunked and compressed fields).
+// hdf5_output.hpp (units attributes, chunked fields), written depth by depth.
 #include "halfspace/io/stress_writer.hpp"
 
 #include <fmt/format.h>
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -15,43 +16,73 @@ namespace {
 
 constexpr std::int64_t kStressFormatVersion = 1;
 
+// The nine stored fields in file order: the six components, then the derived ones.
+constexpr std::size_t kStoredFields = stress::kComponentCount + 3;
+
+std::vector<std::size_t> volume_shape(const Grid& grid, std::size_t depth_count) {
+  std::vector<std::size_t> shape = field_shape(grid);
+  shape.insert(shape.begin(), depth_count);
+  return shape;
+}
+
 }  // namespace
 
-void write_stress_group(const Hdf5Node& root, const Grid& grid, const stress::StressVolume& volume, double nu) {
+stress::VonMisesMaximum write_stress_group(const Hdf5Node& root, stress::SubsurfaceStress& stresses,
+                                           std::span<const double> pressure, std::span<const double> depths) {
+  stress::check_depths(depths);
+  const Grid& grid = stresses.grid();
   const Hdf5Node group = root.create_group("stress");
-  group.write_double_attribute("poisson_ratio", nu);
-  if (volume.coating) {
+  group.write_double_attribute("poisson_ratio", stresses.poisson_ratio());
+  if (const std::optional<LayeredMaterial> coating = stresses.coating()) {
     // Which depths lie in the layer (z <= t), and the constants of each body.
-    group.write_double_attribute("layer_thickness", volume.coating->thickness);
-    group.write_double_attribute("layer_poisson_ratio", volume.coating->layer.poissons_ratio);
-    group.write_double_attribute("substrate_poisson_ratio", volume.coating->substrate.poissons_ratio);
-    const std::vector<std::uint8_t> in_layer(volume.in_layer.begin(), volume.in_layer.end());
+    group.write_double_attribute("layer_thickness", coating->thickness);
+    group.write_double_attribute("layer_poisson_ratio", coating->layer.poissons_ratio);
+    group.write_double_attribute("substrate_poisson_ratio", coating->substrate.poissons_ratio);
+    std::vector<std::uint8_t> in_layer;
+    for (const double z : depths) in_layer.push_back(stresses.in_layer(z) ? 1 : 0);
     group.write_dataset("in_layer", {in_layer.size()}, std::span<const std::uint8_t>(in_layer), "")
         .write_string_attribute("meaning", "1: the depth is in the layer (z <= layer_thickness); 0: in the substrate");
   }
   group.write_string_attribute("sign_convention", "tension positive (compression negative); z positive downwards");
-  group.write_dataset("depths", {volume.depths.size()}, std::span<const double>(volume.depths), "m");
-  std::vector<std::size_t> shape = field_shape(grid);
-  shape.insert(shape.begin(), volume.depths.size());
+  group.write_dataset("depths", {depths.size()}, depths, "m");
   // Without deflate: the fields' float64 mantissas barely compress (23% at
   // 512^2) at 15 times the time of the plain write (docs/performance.md).
-  const auto write_field = [&](std::string_view name, const std::vector<double>& values) {
-    group.write_dataset(name, shape, std::span<const double>(values), "Pa", Compression::none);
-  };
-  for (std::size_t c = 0; c < stress::kComponentCount; ++c)
-    write_field(stress::kComponentNames[c], volume.components[c]);
-  write_field("von_mises", volume.von_mises);
-  write_field("max_shear", volume.max_shear);
-  write_field("hydrostatic", volume.hydrostatic);
-  root.write_double_attribute("max_von_mises", volume.max_von_mises.value);
-  root.write_double_attribute("max_von_mises_x", volume.max_von_mises.x);
-  root.write_double_attribute("max_von_mises_y", volume.max_von_mises.y);
-  root.write_double_attribute("max_von_mises_z", volume.max_von_mises.z);
+  const std::vector<std::size_t> shape = volume_shape(grid, depths.size());
+  std::vector<Hdf5Node> fields;
+  fields.reserve(kStoredFields);
+  for (const char* name : stress::kComponentNames)
+    fields.push_back(group.create_dataset(name, shape, "Pa", Compression::none));
+  for (const char* name : {"von_mises", "max_shear", "hydrostatic"}) {
+    fields.push_back(group.create_dataset(name, shape, "Pa", Compression::none));
+  }
+  const stress::VonMisesMaximum maximum =
+      stress::stresses_by_depth(stresses, pressure, depths, [&](const stress::StressSlice& slice) {
+        for (std::size_t c = 0; c < stress::kComponentCount; ++c) {
+          fields[c].write_slabs(slice.index, slice.components[c]);
+        }
+        fields[stress::kComponentCount].write_slabs(slice.index, slice.von_mises);
+        fields[stress::kComponentCount + 1].write_slabs(slice.index, slice.max_shear);
+        fields[stress::kComponentCount + 2].write_slabs(slice.index, slice.hydrostatic);
+      });
+  root.write_double_attribute("max_von_mises", maximum.value);
+  root.write_double_attribute("max_von_mises_x", maximum.x);
+  root.write_double_attribute("max_von_mises_y", maximum.y);
+  root.write_double_attribute("max_von_mises_z", maximum.z);
+  return maximum;
 }
 
-void write_stress_file(const std::filesystem::path& path, const Grid& grid, std::span<const double> pressure,
-                       const stress::StressVolume& volume, double nu, const StressFileMetadata& metadata) {
-  write_hdf5_file(path, [&](const Hdf5Node& root) {
+std::uint64_t stress_group_bound(const Grid& grid, std::size_t depth_count) {
+  return kStoredFields * hdf5_dataset_bound(volume_shape(grid, depth_count), Compression::none) + 8 * depth_count;
+}
+
+stress::VonMisesMaximum write_stress_file(const std::filesystem::path& path, stress::SubsurfaceStress& stresses,
+                                          std::span<const double> pressure, std::span<const double> depths,
+                                          const StressFileMetadata& metadata) {
+  const Grid& grid = stresses.grid();
+  const std::uint64_t bound = kHdf5SmallItemsBound + hdf5_dataset_bound(field_shape(grid), Compression::deflate) +
+                              stress_group_bound(grid, depths.size());
+  stress::VonMisesMaximum maximum;
+  write_large_hdf5_file(path, bound, [&](const Hdf5Node& root) {
     root.write_string_attribute("format", "halfspace-stress");
     root.write_int64_attribute("format_version", kStressFormatVersion);
     root.write_string_attribute("units", "SI: depths, dx, dy and positions in m; stresses and pressure in Pa");
@@ -60,8 +91,9 @@ void write_stress_file(const std::filesystem::path& path, const Grid& grid, std:
     root.write_string_attribute("command_line", metadata.command_line);
     root.write_string_attribute("source", metadata.source);
     root.write_dataset("pressure", field_shape(grid), pressure, "Pa");
-    write_stress_group(root, grid, volume, nu);
+    maximum = write_stress_group(root, stresses, pressure, depths);
   });
+  return maximum;
 }
 
 }  // namespace halfspace::io

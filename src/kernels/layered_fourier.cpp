@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "halfspace/kernels/love_rectangle.hpp"
+#include "halfspace/kernels/plane_strain_strip.hpp"
 #include "halfspace/linalg/parallel.hpp"
 
 namespace halfspace::kernels {
@@ -109,6 +110,32 @@ double LayeredKernel::near_rectangle_displacement(double x, double y, double hx,
   return love_rectangle_displacement(x, y, hx, hy, layer_modulus_) + weight * smoothed;
 }
 
+double LayeredKernel::near_strip_displacement(double x, double h) const {
+  // int_{x-h}^{x+h} ln(s^2 + t^2) ds = G(x + h) - G(x - h), G(s) = s ln(s^2 +
+  // t^2) - 2 s + 2 t atan(s/t), written as x ln(A/B) + h ln(A B) - 4 h + 2 t
+  // (atan((x+h)/t) - atan((x-h)/t)), A, B = (x +- h)^2 + t^2, so that far
+  // away no two large terms cancel.
+  const double t = material_.thickness;
+  const double a = (x + h) * (x + h) + t * t;
+  const double b = (x - h) * (x - h) + t * t;
+  const double integral = x * std::log1p(4.0 * x * h / b) + h * std::log(a * b) - 4.0 * h +
+                          2.0 * t * std::atan2(2.0 * h * t, t * t + x * x - h * h);
+  const double weight = (1.0 / substrate_modulus_ - 1.0 / layer_modulus_) / std::numbers::pi;
+  return plane_strain_strip_displacement(x, 2.0 * h, layer_modulus_) - weight * integral;
+}
+
+double LayeredKernel::remainder_strip_spectrum(double qx, double dx) const {
+  const double period = 2.0 * std::numbers::pi / dx;
+  const double q_negligible = 40.0 / material_.thickness;  // as remainder_cell_spectrum
+  double sum = 0.0;
+  for (int m = -kAliasImages; m <= kAliasImages; ++m) {
+    const double kx = qx + m * period;
+    if (std::abs(kx) > q_negligible) continue;
+    sum += remainder(std::abs(kx)) * sinc(0.5 * kx * dx);
+  }
+  return sum;
+}
+
 double LayeredKernel::remainder_cell_spectrum(double qx, double qy, double dx, double dy) const {
   // Collocation at cell centres of a piecewise-constant pressure: the cell's
   // transform is dx dy sinc(qx dx/2) sinc(qy dy/2); on grid points the alias
@@ -158,6 +185,30 @@ std::vector<double> LayeredKernel::remainder_point_table(double r_max, double st
     for (std::size_t k = 0; k <= intervals; ++k)
       sum += weighted[k] * std::cyl_bessel_j(0.0, static_cast<double>(k) * h * r);
     table[i] = sum / (std::numbers::pi * layer_modulus_);
+  });
+  return table;
+}
+
+std::vector<double> LayeredKernel::remainder_line_table(double x_max, double step) const {
+  // As remainder_point_table, with cos(q x) for J0 and R itself (finite at
+  // q = 0) as the integrand.
+  const double t = material_.thickness;
+  const double q_max = 40.0 / t;
+  const double h_max = std::min(0.02 / t, 0.2 / std::max(x_max, t));
+  const auto intervals = 2 * static_cast<std::size_t>(std::ceil(0.5 * q_max / h_max));
+  const double h = q_max / static_cast<double>(intervals);
+  std::vector<double> weighted(intervals + 1);
+  for (std::size_t k = 0; k <= intervals; ++k) {
+    const double w = (k == 0 || k == intervals) ? 1.0 : (k % 2 == 1 ? 4.0 : 2.0);
+    weighted[k] = w * remainder(static_cast<double>(k) * h) * h / 3.0;
+  }
+  const auto entries = static_cast<std::size_t>(std::floor(x_max / step)) + 2;
+  std::vector<double> table(entries);
+  linalg::for_each_row(entries, intervals, [&](std::size_t i) {
+    const double x = static_cast<double>(i) * step;
+    double sum = 0.0;
+    for (std::size_t k = 0; k <= intervals; ++k) sum += weighted[k] * std::cos(static_cast<double>(k) * h * x);
+    table[i] = sum / std::numbers::pi;
   });
   return table;
 }

@@ -118,7 +118,8 @@ struct FftInfluenceOperator::Impl {
         const double x = static_cast<double>(di) * dx;
         const double y = static_cast<double>(dj) * dy;
         quadrant[dj * quadrant_cols + di] =
-            line      ? kernels::plane_strain_strip_displacement(x, dx, e_star)
+            line      ? (layered ? layered->near_strip_displacement(x, 0.5 * dx)
+                                 : kernels::plane_strain_strip_displacement(x, dx, e_star))
             : layered ? layered->near_rectangle_displacement(x, y, 0.5 * dx, 0.5 * dy)
                       : kernels::love_rectangle_displacement(x, y, 0.5 * dx, 0.5 * dy, e_star);
       }
@@ -152,11 +153,14 @@ struct FftInfluenceOperator::Impl {
     const double dx = grid.dx();
     const double dy = grid.dy();
     const double inverse_n = 1.0 / static_cast<double>(padded->padded_size());
+    const bool line = grid.dimension() == 1;
     linalg::for_each_row(kernel.stored_rows(), kernel.cols(), [&](std::size_t r) {
       const double qy = kernels::dft_wavenumber(r, rows, dy);
       for (std::size_t c = 0; c < kernel.cols(); ++c) {
+        const double qx = kernels::dft_wavenumber(c, padded_cols, dx);
         kernel.at(r, c) +=
-            layered->remainder_cell_spectrum(kernels::dft_wavenumber(c, padded_cols, dx), qy, dx, dy) * inverse_n;
+            (line ? layered->remainder_strip_spectrum(qx, dx) : layered->remainder_cell_spectrum(qx, qy, dx, dy)) *
+            inverse_n;
       }
     });
     // K_ii: the whole kernel's coefficient at offset 0, the inverse DFT's sum
@@ -177,8 +181,8 @@ struct FftInfluenceOperator::Impl {
   // (docs/theory.md, "Coated half-space").
   static constexpr double kSpectralRemainderLimit = 0.125;  // t / shorter domain side
   bool spectral_remainder() const {
-    const double side =
-        std::min(static_cast<double>(grid.nx()) * grid.dx(), static_cast<double>(grid.ny()) * grid.dy());
+    const double length = static_cast<double>(grid.nx()) * grid.dx();
+    const double side = grid.dimension() == 1 ? length : std::min(length, static_cast<double>(grid.ny()) * grid.dy());
     return layered->material().thickness <= kSpectralRemainderLimit * side;
   }
 
@@ -188,8 +192,16 @@ struct FftInfluenceOperator::Impl {
   // are below 1e-4 of the remainder).
   void add_layered_remainder_in_real_space(std::vector<double>& quadrant, std::size_t rows, std::size_t cols) const {
     const double dx = grid.dx();
-    const double dy = grid.dy();
     const double step = 0.01 * layered->material().thickness;
+    if (grid.dimension() == 1) {
+      // A line load of dx times the pressure at each cell's centre, the
+      // profile tabulated at the cells' own offsets (n values: no
+      // interpolation, whose kink at 0 would show at the 1e-9 level).
+      const std::vector<double> table = layered->remainder_line_table(static_cast<double>(cols - 1) * dx, dx);
+      for (std::size_t di = 0; di < cols; ++di) quadrant[di] += dx * table[di];
+      return;
+    }
+    const double dy = grid.dy();
     const double r_max = std::hypot(static_cast<double>(cols - 1) * dx, static_cast<double>(rows - 1) * dy);
     const std::vector<double> table = layered->remainder_point_table(r_max, step);
     const double cell_area = grid.cell_area();
@@ -220,30 +232,14 @@ FftInfluenceOperator::FftInfluenceOperator(const Grid& grid, double e_star, std:
                                    checked_shared_transform(grid, std::move(transform)), FftPlanning::estimate)) {}
 
 // Coated half-space.
-namespace {
-
-kernels::LayeredKernel checked_layered_kernel(const Grid& grid, const LayeredMaterial& material) {
-  require_coated_grid(grid);
-  return kernels::LayeredKernel(material);
-}
-
-}  // namespace
-
-void require_coated_grid(const Grid& grid) {
-  // A free 1D grid would need the strip's counterpart of the smoothed term
-  // and remainder; not made (docs/theory.md, "Coated half-space").
-  if (!grid.periodic() && grid.dimension() == 1) {
-    throw InputError("a coated half-space on a free 1D grid is not supported: use a periodic 1D grid or a 2D grid");
-  }
-}
 
 FftInfluenceOperator::FftInfluenceOperator(const Grid& grid, const LayeredMaterial& material, FftPlanning planning)
-    : impl_(std::make_unique<Impl>(grid, 1.0, checked_layered_kernel(grid, material),
+    : impl_(std::make_unique<Impl>(grid, 1.0, kernels::LayeredKernel(material),
                                    grid.periodic() ? make_grid_transform(grid, planning) : nullptr, planning)) {}
 
 FftInfluenceOperator::FftInfluenceOperator(const Grid& grid, const LayeredMaterial& material,
                                            std::shared_ptr<RealFft> transform)
-    : impl_(std::make_unique<Impl>(grid, 1.0, checked_layered_kernel(grid, material),
+    : impl_(std::make_unique<Impl>(grid, 1.0, kernels::LayeredKernel(material),
                                    checked_shared_transform(grid, std::move(transform)), FftPlanning::estimate)) {}
 
 FftInfluenceOperator::~FftInfluenceOperator() = default;

@@ -7,7 +7,6 @@
 #include <cmath>
 #include <utility>
 
-#include "halfspace/operators/fft_influence_operator.hpp"
 #include "halfspace/solvers/block_deflation.hpp"
 
 namespace halfspace::solvers {
@@ -157,7 +156,6 @@ void SolverOptions::validate(const Grid& grid, const LayeredMaterial& /*coating*
                             "is invalid for a coated half-space (its dense matrix is the homogeneous one): allowed "
                             "are pk, pk-fourier and pk-multilevel");
   }
-  operators::require_coated_grid(grid);
   if (adhesion) {
     throw SolverOptionError("adhesion", std::string(to_string(adhesion->law.type)),
                             "is not supported for a coated half-space: the adhesive solver works on the "

@@ -22,12 +22,55 @@ void check_depths(std::span<const double> depths) {
   for (const double z : depths) checked_depth(z);
 }
 
-namespace {
-
-StressVolume fill_volume(SubsurfaceStress& stresses, std::span<const double> pressure, std::span<const double> depths) {
+VonMisesMaximum stresses_by_depth(SubsurfaceStress& stresses, std::span<const double> pressure,
+                                  std::span<const double> depths,
+                                  const std::function<void(const StressSlice& slice)>& consume) {
+  check_depths(depths);
   const Grid& grid = stresses.grid();
   stresses.set_pressure(pressure);
   const std::size_t cells = grid.size();
+  StressSlice slice;
+  for (auto& component : slice.components) component.resize(cells);
+  slice.von_mises.resize(cells);
+  slice.max_shear.resize(cells);
+  slice.hydrostatic.resize(cells);
+
+  VonMisesMaximum maximum;
+  bool first = true;
+  for (std::size_t d = 0; d < depths.size(); ++d) {
+    slice.index = d;
+    slice.depth = depths[d];
+    slice.in_layer = stresses.in_layer(depths[d]);
+    std::array<std::span<double>, kComponentCount> fields;
+    for (std::size_t c = 0; c < kComponentCount; ++c) fields[c] = slice.components[c];
+    stresses.compute(depths[d], fields);
+    const auto& s = slice.components;
+    linalg::for_each_index(cells, [&](std::size_t k) {
+      const StressTensor tensor{s[0][k], s[1][k], s[2][k], s[3][k], s[4][k], s[5][k]};
+      slice.von_mises[k] = von_mises(tensor);
+      slice.max_shear[k] = max_shear(tensor);
+      slice.hydrostatic[k] = hydrostatic(tensor);
+    });
+    // The first maximum in storage order (depth, then row), so that the
+    // reported point does not depend on the thread count.
+    const auto largest = std::max_element(slice.von_mises.begin(), slice.von_mises.end());
+    if (first || *largest > maximum.value) {
+      const auto cell = static_cast<std::size_t>(largest - slice.von_mises.begin());
+      maximum.value = *largest;
+      maximum.x = static_cast<double>(cell % grid.nx()) * grid.dx();
+      maximum.y = grid.dimension() == 1 ? 0.0 : static_cast<double>(cell / grid.nx()) * grid.dy();
+      maximum.z = depths[d];
+      first = false;
+    }
+    consume(slice);
+  }
+  return maximum;
+}
+
+namespace {
+
+StressVolume fill_volume(SubsurfaceStress& stresses, std::span<const double> pressure, std::span<const double> depths) {
+  const std::size_t cells = stresses.grid().size();
   const std::size_t total = cells * depths.size();
   StressVolume volume;
   volume.depths.assign(depths.begin(), depths.end());
@@ -35,32 +78,15 @@ StressVolume fill_volume(SubsurfaceStress& stresses, std::span<const double> pre
   volume.von_mises.resize(total);
   volume.max_shear.resize(total);
   volume.hydrostatic.resize(total);
-
-  for (std::size_t d = 0; d < depths.size(); ++d) {
-    std::array<std::span<double>, kComponentCount> fields;
-    for (std::size_t c = 0; c < kComponentCount; ++c) {
-      fields[c] = std::span<double>(volume.components[c]).subspan(d * cells, cells);
-    }
-    stresses.compute(depths[d], fields);
-  }
-
-  const auto& s = volume.components;
-  linalg::for_each_index(total, [&](std::size_t k) {
-    const StressTensor tensor{s[0][k], s[1][k], s[2][k], s[3][k], s[4][k], s[5][k]};
-    volume.von_mises[k] = von_mises(tensor);
-    volume.max_shear[k] = max_shear(tensor);
-    volume.hydrostatic[k] = hydrostatic(tensor);
+  const auto keep = [&](const std::vector<double>& field, std::vector<double>& into, std::size_t d) {
+    std::copy(field.begin(), field.end(), into.begin() + static_cast<std::ptrdiff_t>(d * cells));
+  };
+  volume.max_von_mises = stresses_by_depth(stresses, pressure, depths, [&](const StressSlice& slice) {
+    for (std::size_t c = 0; c < kComponentCount; ++c) keep(slice.components[c], volume.components[c], slice.index);
+    keep(slice.von_mises, volume.von_mises, slice.index);
+    keep(slice.max_shear, volume.max_shear, slice.index);
+    keep(slice.hydrostatic, volume.hydrostatic, slice.index);
   });
-
-  // The first maximum in storage order, so the reported point does not depend
-  // on the thread count.
-  const auto largest = std::max_element(volume.von_mises.begin(), volume.von_mises.end());
-  const auto index = static_cast<std::size_t>(largest - volume.von_mises.begin());
-  const std::size_t cell = index % cells;
-  volume.max_von_mises.value = *largest;
-  volume.max_von_mises.x = static_cast<double>(cell % grid.nx()) * grid.dx();
-  volume.max_von_mises.y = grid.dimension() == 1 ? 0.0 : static_cast<double>(cell / grid.nx()) * grid.dy();
-  volume.max_von_mises.z = depths[index / cells];
   return volume;
 }
 
@@ -83,21 +109,19 @@ StressVolume compute_stress_volume(const Grid& grid, std::span<const double> pre
   return volume;
 }
 
-double stress_memory_estimate(const Grid& grid, std::size_t depth_count, bool coated) {
+double stress_memory_estimate(const Grid& grid, bool coated) {
   const double cells = static_cast<double>(grid.nx()) * static_cast<double>(grid.ny());
-  constexpr double kStoredFields = 9.0;
-  const double volume = kStoredFields * 8.0 * cells * static_cast<double>(depth_count);
   // Periodic: the pressure spectrum, the transform's spectrum and real array,
   // the decay table (about 5 doubles a cell). Free: the padded pressure
   // spectrum and transform, the padded coefficient transform (4 cells each
   // of spectrum and real array) and the six coefficient quadrants (about 26).
   // Coated: each half-spectrum mode's solution (8 doubles) and profile (3)
-  // instead of the decay table, about 5.5 more doubles a cell.
-  const double workspace = (grid.periodic() ? (coated ? 10.5 : 5.0) : 26.0) * 8.0 * cells;
-  // The pressure itself, then the file the writer assembles in memory: HDF5's
-  // image of the (uncompressed) fields and its copy, twice the volume
-  // (measured peak at 512^2 and 16 depths: 917 MB, 3.0 times the volume).
-  return 8.0 * cells + volume + std::max(workspace, 2.0 * volume);
+  // instead of the decay table, about 5.5 more doubles a cell; on a free
+  // grid the remainder's six parts on the padded half spectrum (12).
+  const double workspace = (grid.periodic() ? (coated ? 10.5 : 5.0) : (coated ? 38.0 : 26.0)) * 8.0 * cells;
+  // The pressure itself and one depth's nine fields.
+  constexpr double kSliceFields = 9.0;
+  return 8.0 * cells + workspace + kSliceFields * 8.0 * cells;
 }
 
 }  // namespace halfspace::stress

@@ -7,9 +7,16 @@
 // they stand for vanishes on the grid, and the c2r transform needs a
 // Hermitian spectrum.
 //
-// Coated (periodic only): the same, with the multipliers of the bonded layer
+// Coated (periodic): the same, with the multipliers of the bonded layer
 // (layered_fourier_stress.hpp); each mode's six coefficients are solved once
 // when the grid is set up, and each depth evaluates g, g', g'' per mode.
+//
+// Coated, free grids: the same split as the free coated kernel
+// (docs/theory.md, "Stresses in a coated half-space"): Love's rectangle (the
+// strip in 1D) with the Poisson's ratio of the depth's body, plus the remainder D = S_layered -
+// S_homogeneous, which decays like exp(-q min(z, 2t - z)), added to each
+// bin of the coefficients' spectrum as its DFT on the padded grid (the alias
+// images summed with the cell's transform).
 //
 // Free: sigma_c(i) = sum_j C_c(x_i - x_j, z) p_j with the exact cell
 // coefficients C_c of rectangle_stress.hpp, a linear convolution done on the
@@ -22,8 +29,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
+#include <numbers>
 #include <optional>
 #include <vector>
 
@@ -31,6 +40,7 @@
 #include "halfspace/fft/grid_transform.hpp"
 #include "halfspace/fft/padded_real_fft.hpp"
 #include "halfspace/fft/real_fft.hpp"
+#include "halfspace/kernels/layered_fourier.hpp"
 #include "halfspace/kernels/periodic_fourier.hpp"
 #include "halfspace/linalg/parallel.hpp"
 #include "halfspace/stress/layered_fourier_stress.hpp"
@@ -57,6 +67,11 @@ double component_of(const StressTensor& s, std::size_t c) {
   return 0.0;
 }
 
+// sin(x)/x, the transform of a cell (over its width) at x = q dx/2.
+double sinc(double x) {
+  return std::abs(x) < 1e-8 ? 1.0 - x * x / 6.0 : std::sin(x) / x;
+}
+
 // Signed offset (cells) of wrap-around index k on a 2n-periodic axis; the
 // middle index n only ever meets padding (any value would do) and gets 0 via
 // `valid` = false.
@@ -74,6 +89,18 @@ double checked_poisson_ratio(double nu) {
   return nu;
 }
 
+void require_coated_stress_grid(const Grid& grid, const LayeredMaterial& coating) {
+  if (grid.periodic()) return;
+  const double length = static_cast<double>(grid.nx()) * grid.dx();
+  const double side = grid.dimension() == 1 ? length : std::min(length, static_cast<double>(grid.ny()) * grid.dy());
+  if (coating.thickness > kFreeCoatedStressThicknessRatio * side) {
+    throw InputError(fmt::format(
+        "subsurface stresses in a coated half-space on a free grid need a layer thickness t <= L/8, L the domain's "
+        "shorter side: t = {:.6g} m, L = {:.6g} m on the free {} grid (use --boundary periodic, or a larger domain)",
+        coating.thickness, side, grid.shape_string()));
+  }
+}
+
 double checked_depth(double depth) {
   if (!(std::isfinite(depth) && depth > 0.0)) {
     throw InputError(fmt::format("depth = {} m is invalid: a depth below the surface must be finite and > 0 m", depth));
@@ -88,12 +115,7 @@ struct SubsurfaceStress::Impl {
   Impl(const Grid& g, double poisson, FftPlanning planning, const LayeredMaterial* coating = nullptr)
       : grid(g), nu(checked_poisson_ratio(poisson)) {
     if (coating) {
-      if (!grid.periodic()) {
-        throw InputError(
-            fmt::format("subsurface stresses in a coated half-space need a periodic grid: the {} grid is free (pass "
-                        "--boundary periodic)",
-                        grid.shape_string()));
-      }
+      require_coated_stress_grid(grid, *coating);
       layered.emplace(*coating);
     }
     const bool line = grid.dimension() == 1;
@@ -115,6 +137,9 @@ struct SubsurfaceStress::Impl {
       quadrant_cols = grid.nx() + 1;
       quadrant_rows = line ? 1 : rows + 1;
       for (auto& q : quadrant) q.resize(quadrant_rows * quadrant_cols);
+      if (layered) {
+        for (auto& part : remainder) part.resize(kernel->spectrum_size());
+      }
     }
   }
 
@@ -219,15 +244,103 @@ struct SubsurfaceStress::Impl {
     }
   }
 
+  // The remainder of a coated body at depth z, per bin of the padded grid's
+  // half spectrum: sum over the alias images K of D(k + K) times the cell's
+  // transform over its area, sinc(Kx dx/2) sinc(Ky dy/2) (the DFT of the
+  // remainder's cell coefficients, as LayeredKernel::remainder_cell_spectrum
+  // for the displacement). Odd components (xz, yz: imaginary multipliers)
+  // keep their imaginary part; xy, xz on the Nyquist column and xy, yz on the
+  // Nyquist row are 0, as the DFT of an odd sequence is there.
+  void compute_remainder(double z) {
+    const Body body = layered->body_at(z);
+    const double body_nu = poisson_ratio_at(z);
+    const double t = layered->thickness();
+    // D falls like exp(-q (2t - z)) in the layer (the wave reflected at the
+    // interface), like exp(-q z) below it; beyond 45 decay lengths it is
+    // below 1e-16 of its scale.
+    const double decay_length = body == Body::layer ? 2.0 * t - z : z;
+    const double q_negligible = 45.0 / decay_length;
+    const auto difference = [&](double kx, double ky, std::array<double, kComponentCount>& out) {
+      const double q = std::hypot(kx, ky);
+      const AiryProfile profile = layered->profile(layered->solve(q), z, body);
+      const double decay = std::exp(-q * z);
+      for (std::size_t c = 0; c < kComponentCount; ++c) {
+        const auto kind = static_cast<Component>(c);
+        const std::complex<double> d = layered_stress_component(kind, kx, ky, profile, body_nu) -
+                                       fourier_stress_component(kind, kx, ky, z, decay, body_nu);
+        out[c] = kind == Component::xz || kind == Component::yz ? d.imag() : d.real();
+      }
+    };
+    // The q = 0 image: D's in-plane components tend to direction-dependent
+    // limits A + B cos(2 phi); the bin takes their angular mean A (the
+    // cos(2 phi) part is a kernel whose integral over the period vanishes).
+    // A line (plane strain) has one direction, x, and its limit.
+    const bool line = grid.dimension() == 1;
+    std::array<double, kComponentCount> at_zero{};
+    {
+      const double small = 1e-6 / t;
+      std::array<double, kComponentCount> along_x{};
+      std::array<double, kComponentCount> along_y{};
+      difference(small, 0.0, along_x);
+      difference(0.0, small, along_y);
+      for (const Component c : {Component::xx, Component::yy, Component::zz}) {
+        const auto k = static_cast<std::size_t>(c);
+        at_zero[k] = line ? along_x[k] : 0.5 * (along_x[k] + along_y[k]);
+      }
+    }
+    const std::size_t padded_rows = line ? 1 : 2 * rows;
+    const int images_y = line ? 0 : kernels::LayeredKernel::kAliasImages;
+    const std::size_t padded_cols = 2 * grid.nx();
+    const std::size_t cols = kernel->spectrum_cols();
+    const double dx = grid.dx();
+    const double dy = grid.dy();
+    const double period_x = 2.0 * std::numbers::pi / dx;
+    const double period_y = 2.0 * std::numbers::pi / dy;
+    constexpr int kImages = kernels::LayeredKernel::kAliasImages;
+    linalg::for_each_row(padded_rows, cols, [&](std::size_t r) {
+      const double qy = line ? 0.0 : kernels::dft_wavenumber(r, padded_rows, dy);
+      std::array<double, kComponentCount> d{};
+      for (std::size_t c = 0; c < cols; ++c) {
+        const double qx = kernels::dft_wavenumber(c, padded_cols, dx);
+        std::array<double, kComponentCount> sum{};
+        for (int my = -images_y; my <= images_y; ++my) {
+          const double ky = line ? 0.0 : qy + my * period_y;  // a line's dy is no spacing
+          if (std::abs(ky) > q_negligible) continue;
+          const double shape_y = line ? 1.0 : sinc(0.5 * ky * dy);
+          for (int mx = -kImages; mx <= kImages; ++mx) {
+            const double kx = qx + mx * period_x;
+            if (std::hypot(kx, ky) > q_negligible) continue;
+            if (kx == 0.0 && ky == 0.0) {
+              d = at_zero;
+            } else {
+              difference(kx, ky, d);
+            }
+            const double shape = sinc(0.5 * kx * dx) * shape_y;
+            for (std::size_t k = 0; k < kComponentCount; ++k) sum[k] += d[k] * shape;
+          }
+        }
+        const bool nyquist_col = c == grid.nx();
+        const bool nyquist_row = r == rows;
+        for (std::size_t k = 0; k < kComponentCount; ++k) {
+          const auto kind = static_cast<Component>(k);
+          const bool zero = (nyquist_col && odd_in_x(kind)) || (nyquist_row && odd_in_y(kind));
+          remainder[k][r * cols + c] = zero ? 0.0 : sum[k];
+        }
+      }
+    });
+  }
+
   void compute_free(double z, const std::array<std::span<double>, kComponentCount>& fields) {
     const bool line = grid.dimension() == 1;
     const double dx = grid.dx();
     const double dy = grid.dy();
+    const double body_nu = poisson_ratio_at(z);
+    if (layered) compute_remainder(z);
     linalg::for_each_row(quadrant_rows, quadrant_cols, [&](std::size_t dj) {
       for (std::size_t di = 0; di < quadrant_cols; ++di) {
         const double x = static_cast<double>(di) * dx;
-        const StressTensor s = line ? strip_stress(x, z, 0.5 * dx, nu)
-                                    : rectangle_stress(x, static_cast<double>(dj) * dy, z, 0.5 * dx, 0.5 * dy, nu);
+        const StressTensor s = line ? strip_stress(x, z, 0.5 * dx, body_nu)
+                                    : rectangle_stress(x, static_cast<double>(dj) * dy, z, 0.5 * dx, 0.5 * dy, body_nu);
         const std::size_t k = dj * quadrant_cols + di;
         for (std::size_t c = 0; c < kComponentCount; ++c) quadrant[c][k] = component_of(s, c);
       }
@@ -256,8 +369,21 @@ struct SubsurfaceStress::Impl {
       kernel->forward();
       std::span<const std::complex<double>> kernel_spectrum = kernel->spectrum();
       std::span<std::complex<double>> spectrum = padded->spectrum();
-      linalg::for_each_index(
-          spectrum.size(), [&](std::size_t k) { spectrum[k] = pressure_spectrum[k] * kernel_spectrum[k] * inverse_n; });
+      if (layered) {
+        // The remainder's multiplier: real, or i times the stored value for
+        // the imaginary ones (xz, yz).
+        const auto kind = static_cast<Component>(component);
+        const bool imaginary = kind == Component::xz || kind == Component::yz;
+        const std::vector<double>& part = remainder[component];
+        linalg::for_each_index(spectrum.size(), [&](std::size_t k) {
+          const std::complex<double> added = imaginary ? std::complex<double>(0.0, part[k]) : part[k];
+          spectrum[k] = pressure_spectrum[k] * (kernel_spectrum[k] + added) * inverse_n;
+        });
+      } else {
+        linalg::for_each_index(spectrum.size(), [&](std::size_t k) {
+          spectrum[k] = pressure_spectrum[k] * kernel_spectrum[k] * inverse_n;
+        });
+      }
       padded->backward(fields[component]);
     }
   }
@@ -282,6 +408,9 @@ struct SubsurfaceStress::Impl {
   std::size_t quadrant_rows = 0;
   std::size_t quadrant_cols = 0;
   std::array<std::vector<double>, kComponentCount> quadrant;  // coefficients at non-negative offsets
+  // Coated bodies (free grids): the remainder's spectrum at the current depth
+  // (real part, or imaginary for xz and yz), on the coefficients' half spectrum.
+  std::array<std::vector<double>, kComponentCount> remainder;
 };
 
 SubsurfaceStress::SubsurfaceStress(const Grid& grid, double nu, FftPlanning planning)
@@ -310,6 +439,11 @@ bool SubsurfaceStress::coated() const {
 
 bool SubsurfaceStress::in_layer(double depth) const {
   return impl_->layered && impl_->layered->body_at(depth) == Body::layer;
+}
+
+std::optional<LayeredMaterial> SubsurfaceStress::coating() const {
+  if (!impl_->layered) return std::nullopt;
+  return impl_->layered->material();
 }
 
 void SubsurfaceStress::set_pressure(std::span<const double> pressure) {

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <numbers>
 #include <string>
 #include <utility>
 #include <vector>
@@ -112,15 +113,41 @@ TEST(LayeredCliTest, CoatingOptionErrorsNameTheOptionValueAndRange) {
                      "--solver lemke is invalid for a coated half-space", output);
 }
 
-TEST(LayeredCliTest, FreeLineGridIsRefusedAndPeriodicLineSolves) {
+// A Hertz line contact (cylinder, R = 10 mm, 100 N/m) on a polymer coating
+// (t = 20 um, about the contact's half-width) over steel, on a free 1D grid
+// and on a periodic one of the same length (20 half-widths: its images move
+// the pressure by about (b/L)^2): the same peak pressure and contact width,
+// both between the Hertz values of the polymer's and the steel's half-plane.
+TEST(LayeredCliTest, HertzLineOnACoatingFreeAndPeriodic) {
   const TempDir dir;
-  const fs::path output = dir / "line.h5";
-  const Options cylinder = {{"--geometry", "cylinder"}, {"--radius", "0.01"}, {"--grid", "256"},
-                            {"--size", "4e-4"},         {"--force", "100"},   {"--output", output.string()},
-                            {"--threads", "1"}};
-  expect_input_error(run_solve(joined(cylinder, coating()), dir), "free 1D grid is not supported", output);
-  const ProgramRun periodic = run_solve(joined(joined(cylinder, coating()), {{"--boundary", "periodic"}}), dir);
-  EXPECT_EQ(periodic.exit_code, kExitOk) << periodic.err;
+  const double radius = 0.01;
+  const double force = 100.0;
+  const auto solve_line = [&](const std::string& boundary) {
+    const fs::path output = dir / (boundary + ".h5");
+    const Options cylinder = {{"--geometry", "cylinder"}, {"--radius", "0.01"},    {"--grid", "512"},
+                              {"--size", "4e-4"},         {"--force", "100"},      {"--output", output.string()},
+                              {"--threads", "1"},         {"--boundary", boundary}};
+    const ProgramRun run = run_solve(joined(cylinder, coating()), dir);
+    EXPECT_EQ(run.exit_code, kExitOk) << run.err;
+    const test::H5 file = test::open_file(output);
+    return test::read_dataset<double>(file.get(), "/pressure", H5T_NATIVE_DOUBLE);
+  };
+  const std::vector<double> free = solve_line("free");
+  const std::vector<double> periodic = solve_line("periodic");
+  ASSERT_EQ(free.size(), periodic.size());
+  const auto peak = [](const std::vector<double>& p) { return *std::max_element(p.begin(), p.end()); };
+  const auto width = [](const std::vector<double>& p) {
+    return std::count_if(p.begin(), p.end(), [](double v) { return v > 0.0; });
+  };
+  const auto hertz_peak = [&](double youngs, double nu) {  // p0 = sqrt(F E* / (pi R))
+    return std::sqrt(force * youngs / (1.0 - nu * nu) / (std::numbers::pi * radius));
+  };
+  std::printf("Hertz line on a coating: peak %.4g (free), %.4g (periodic) Pa; %ld and %ld cells in contact\n",
+              peak(free), peak(periodic), static_cast<long>(width(free)), static_cast<long>(width(periodic)));
+  EXPECT_NEAR(peak(free), peak(periodic), 0.01 * peak(periodic));
+  EXPECT_LE(std::abs(width(free) - width(periodic)), 2);
+  EXPECT_GT(peak(free), 1.05 * hertz_peak(3e9, 0.35));
+  EXPECT_LT(peak(free), hertz_peak(2.1e11, 0.29));
 }
 
 // A hard coating on a periodic grid, stresses at depths on both sides of the
@@ -161,27 +188,30 @@ TEST(LayeredCliTest, StressesBelowACoatingFromSolveAndFromTheStressCommand) {
     EXPECT_LE(worst, kPlanRounding * largest) << name << ": largest difference " << worst << " of " << largest;
   }
 
-  // A coated result brings its own Poisson's ratios; a free grid is refused
-  // before solving.
+  // A coated result brings its own Poisson's ratios; a free grid whose
+  // shorter side is under 8 layer thicknesses (here L = 400 um, t = 60 um) is
+  // refused before solving.
   const ProgramRun with_nu = testing::run_program(
       {"stress", output.string(), "--depths", "5e-6", "--nu", "0.3", "--output", (dir / "s.h5").string()}, dir.path());
   expect_input_error(with_nu, "--nu 0.3 is not used", dir / "s.h5");
   const fs::path free_output = dir / "free.h5";
-  Options free = joined(sphere(free_output), coating());
+  Options free = joined(sphere(free_output), coating("6e-5"));
   free.push_back({"--stress-depths", "5e-6"});
-  expect_input_error(run_solve(free, dir), "--stress-depths 5e-6 for a coated half-space needs a periodic grid",
+  expect_input_error(run_solve(free, dir),
+                     "--stress-depths 5e-6: subsurface stresses in a coated half-space on a "
+                     "free grid need a layer thickness t <= L/8",
                      free_output);
   free.push_back({"--stress-nu", "0.3"});
   expect_input_error(run_solve(free, dir), "is not used for a coated half-space", free_output);
 
-  // The stress command on a coated result of a free grid, and on a result
-  // whose coating attributes are incomplete.
-  ASSERT_EQ(run_solve(joined(sphere(free_output), coating()), dir).exit_code, kExitOk);
+  // The stress command on such a coated result of a free grid, and on a
+  // result whose coating attributes are incomplete.
+  ASSERT_EQ(run_solve(joined(sphere(free_output), coating("6e-5")), dir).exit_code, kExitOk);
   const auto stress_of = [&](const fs::path& result) {
     return testing::run_program({"stress", result.string(), "--depths", "5e-6", "--output", (dir / "s.h5").string()},
                                 dir.path());
   };
-  expect_input_error(stress_of(free_output), "coated half-space's result on a free grid", dir / "s.h5");
+  expect_input_error(stress_of(free_output), "coated half-space's result: subsurface stresses", dir / "s.h5");
   const fs::path partial = dir / "partial.h5";
   fs::copy_file(output, partial);
   {
@@ -191,6 +221,39 @@ TEST(LayeredCliTest, StressesBelowACoatingFromSolveAndFromTheStressCommand) {
     H5Fclose(file);
   }
   expect_input_error(stress_of(partial), "some but not all of the coating's attributes", dir / "s.h5");
+}
+
+// A thin coating (t = 20 um, L = 400 um) on a free grid: solve --stress-depths
+// and the stress command on its result give the same fields.
+TEST(LayeredCliTest, StressesBelowACoatingOnAFreeGrid) {
+  const TempDir dir;
+  const fs::path output = dir / "coated.h5";
+  Options options = joined(sphere(output), coating("2e-5", "4e11", "0.22"));
+  options.push_back({"--stress-depths", "5e-6,2e-5,3e-5"});
+  const ProgramRun solved = run_solve(options, dir);
+  ASSERT_EQ(solved.exit_code, kExitOk) << solved.err;
+  const test::H5 file = test::open_file(output);
+  EXPECT_EQ(test::read_dataset<std::uint8_t>(file.get(), "/stress/in_layer", H5T_NATIVE_UINT8),
+            (std::vector<std::uint8_t>{1, 1, 0}));
+  const fs::path stresses = dir / "stresses.h5";
+  const ProgramRun command = testing::run_program(
+      {"stress", output.string(), "--depths", "5e-6,2e-5,3e-5", "--output", stresses.string()}, dir.path());
+  ASSERT_EQ(command.exit_code, kExitOk) << command.err;
+  const test::H5 other = test::open_file(stresses);
+  constexpr double kPlanRounding = 1e-12;  // relative to the field's largest value (as above)
+  for (const char* name : {"/stress/sigma_xx", "/stress/sigma_zz", "/stress/sigma_xz", "/stress/von_mises"}) {
+    const auto from_command = test::read_dataset<double>(other.get(), name, H5T_NATIVE_DOUBLE);
+    const auto from_solve = test::read_dataset<double>(file.get(), name, H5T_NATIVE_DOUBLE);
+    ASSERT_EQ(from_command.size(), from_solve.size()) << name;
+    double largest = 0.0;
+    double worst = 0.0;
+    for (std::size_t i = 0; i < from_solve.size(); ++i) {
+      largest = std::max(largest, std::abs(from_solve[i]));
+      worst = std::max(worst, std::abs(from_command[i] - from_solve[i]));
+    }
+    EXPECT_GT(largest, 0.0) << name;
+    EXPECT_LE(worst, kPlanRounding * largest) << name << ": largest difference " << worst << " of " << largest;
+  }
 }
 
 }  // namespace

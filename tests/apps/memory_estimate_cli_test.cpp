@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "halfspace/memory_estimate.hpp"
+#include "halfspace/stress/stress_volume.hpp"
 #include "io/hdf5_test_support.hpp"
 #include "support/cli_checks.hpp"
 #include "support/program_run.hpp"
@@ -169,6 +170,37 @@ TEST(MemoryEstimateCliTest, EstimateBoundsTheMeasuredPeakWithinAFactorOfThree) {
     EXPECT_LT(measured.peak_bytes, estimate) << c.name;
     EXPECT_LT(estimate, 3.0 * measured.peak_bytes) << c.name;
   }
+}
+
+// `halfspace stress` computes and writes one depth at a time: its peak is the
+// transforms and one depth's fields, far below the volume it writes (the
+// whole volume, then HDF5's in-memory image of the file and its copy, three
+// times the volume, before).
+TEST(MemoryEstimateCliTest, StressCommandHoldsOneDepthNotTheVolume) {
+  const TempDir dir;
+  constexpr std::size_t kCells = 128 * 128;
+  constexpr std::size_t kDepths = 96;
+  const Measured solve =
+      run_measured({"solve",  "--geometry", "sphere",     "--radius", "0.01",      "--grid", "128x128",
+                    "--size", "4e-4",       "--boundary", "periodic", "--E-star",  "1e11",   "--force",
+                    "1",      "--threads",  "1",          "--output", "result.h5", "--quiet"},
+                   dir.path());
+  ASSERT_EQ(solve.exit_code, testing::kExitOk) << testing::read_text(dir / "stderr.txt");
+  const Measured stress = run_measured({"stress", "result.h5", "--depth-range", "1e-6:1e-4:96", "--nu", "0.3",
+                                        "--threads", "1", "--output", "stress.h5", "--quiet"},
+                                       dir.path());
+  ASSERT_EQ(stress.exit_code, testing::kExitOk) << testing::read_text(dir / "stderr.txt");
+  const double volume = 9.0 * 8.0 * static_cast<double>(kCells * kDepths);  // 113 MB
+  const Grid grid = Grid::plane(128, 128, 4e-4 / 128, 4e-4 / 128, Boundary::periodic);
+  // What the command checks before it starts (stress_command.cpp).
+  const double estimate = kProgramBytes + 16.0 * kCells + stress::stress_memory_estimate(grid);
+  std::printf("  stress, 128^2 x 96 depths: peak %.1f MiB, estimate %.1f MiB, volume %.1f MiB, solve's peak %.1f MiB\n",
+              stress.peak_bytes / 1048576.0, estimate / 1048576.0, volume / 1048576.0, solve.peak_bytes / 1048576.0);
+  EXPECT_GT(fs::file_size(dir / "stress.h5"), volume);
+  EXPECT_LT(stress.peak_bytes, estimate);
+  // Beyond the program itself (the small solve's peak): HDF5's caches and
+  // one depth's fields, not a fraction of the volume.
+  EXPECT_LT(stress.peak_bytes - solve.peak_bytes, volume / 8.0);
 }
 
 }  // namespace

@@ -5,12 +5,14 @@
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 #include <sys/socket.h>
 #include <sys/stat.h>
 #include <sys/sysmacros.h>
 #include <sys/un.h>
 #include <unistd.h>
 
+#include <csignal>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -18,6 +20,7 @@
 #include <vector>
 
 #include "halfspace/error.hpp"
+#include "halfspace/io/hdf5_output.hpp"
 #include "io/hdf5_test_support.hpp"
 #include "support/program_run.hpp"
 
@@ -163,6 +166,64 @@ TEST(OutputFileTest, WritesAtomicallyAndLeavesNoTemporary) {
   const std::string message = write_refusal(dir / "missing" / "t.csv", "x");
   EXPECT_NE(message.find("directory '" + (dir / "missing").string() + "' does not exist"), std::string::npos)
       << message;
+}
+
+// The large-file path: the writer fills the temporary in place. A writer
+// that fails leaves the old file and no temporary; one that succeeds
+// replaces the file.
+TEST(OutputFileTest, WriterInPlaceIsAtomicToo) {
+  const TempDir dir;
+  const fs::path path = dir / "big.h5";
+  std::ofstream(path) << "old contents";
+  const auto values = std::vector<double>(6 * 4 * 5, 1.5);
+  EXPECT_THROW(write_large_hdf5_file(path, 1 << 20,
+                                     [&](const Hdf5Node& root) {
+                                       const Hdf5Node field = root.create_dataset("field", {6, 4, 5}, "Pa");
+                                       field.write_slabs(0, std::span<const double>(values).first(40));
+                                       throw InputError("stopped half-way");
+                                     }),
+               InputError);
+  EXPECT_EQ(read_text(path), "old contents");
+  EXPECT_EQ(dir.entries(), std::vector<std::string>{"big.h5"});
+
+  write_large_hdf5_file(path, 1 << 20, [&](const Hdf5Node& root) {
+    const Hdf5Node field = root.create_dataset("field", {6, 4, 5}, "Pa");
+    field.write_slabs(0, std::span<const double>(values).first(40));
+    field.write_slabs(2, std::span<const double>(values).subspan(40));
+    // Slabs beyond the dataset are refused.
+    EXPECT_THROW(field.write_slabs(5, std::span<const double>(values).first(40)), InputError);
+  });
+  EXPECT_EQ(dir.entries(), std::vector<std::string>{"big.h5"});
+  const test::H5 file = test::open_file(path);
+  EXPECT_EQ(test::read_dataset<double>(file.get(), "/field", H5T_NATIVE_DOUBLE), values);
+}
+
+// The reservation meets the file-size limit (like a full disk) before HDF5
+// writes anything: a FileError naming the reason, and no temporary left.
+TEST(OutputFileTest, ReservationFailureLeavesNoTemporary) {
+  constexpr rlim_t kSizeLimit = 1 << 20;
+  const TempDir dir;
+  rlimit saved{};
+  ASSERT_EQ(::getrlimit(RLIMIT_FSIZE, &saved), 0);
+  if (saved.rlim_max != RLIM_INFINITY && saved.rlim_max < kSizeLimit) GTEST_SKIP() << "file size limit already low";
+  const auto old_handler = std::signal(SIGXFSZ, SIG_IGN);
+  rlimit limited = saved;
+  limited.rlim_cur = kSizeLimit;
+  ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &limited), 0);
+  bool filled = false;
+  std::string message;
+  try {
+    write_large_hdf5_file(dir / "big.h5", 64 << 20, [&](const Hdf5Node&) { filled = true; });
+  } catch (const FileError& error) {
+    message = error.what();
+  }
+  ::setrlimit(RLIMIT_FSIZE, &saved);
+  std::signal(SIGXFSZ, old_handler);
+  EXPECT_FALSE(filled);
+  EXPECT_NE(message.find("cannot write output '" + (dir / "big.h5").string() + "'"), std::string::npos) << message;
+  EXPECT_NE(message.find("could not reserve"), std::string::npos) << message;
+  EXPECT_NE(message.find(std::strerror(EFBIG)), std::string::npos) << message;
+  EXPECT_TRUE(dir.entries().empty());
 }
 
 // The atomic write of a writer that writes the file itself by name.

@@ -73,10 +73,14 @@ def test_coating_keyword_is_checked():
         hs.solve(surface, dx=1e-6, coating={**HARD_COATING, "thickness": -1.0}, force=1.0)
     with pytest.raises(hs.InputError, match="coated half-space"):
         hs.solve(surface, dx=1e-6, coating=HARD_COATING, force=1.0, solver="lemke")
+    # Free grids: stresses below a layer up to L/8 thick (L = 400 um here).
     free = hs.solve(hs.generate.sphere(grid=(16, 16), size=4e-4, radius=0.01), coating=HARD_COATING, force=0.1,
                     fft_planning="estimate", threads=1)
-    with pytest.raises(hs.InputError, match="need a periodic grid"):
-        hs.subsurface_stress(free, [1e-6])
+    assert hs.subsurface_stress(free, [1e-5, 3e-5])["in_layer"] == [True, False]
+    thick = hs.solve(hs.generate.sphere(grid=(16, 16), size=4e-4, radius=0.01),
+                     coating={**HARD_COATING, "thickness": 6e-5}, force=0.1, fft_planning="estimate", threads=1)
+    with pytest.raises(hs.InputError, match="need a layer thickness t <= L/8"):
+        hs.subsurface_stress(thick, [1e-6])
     steps = hs.sweep(hs.generate.sphere(grid=(16, 16), size=4e-4, radius=0.01), coating=HARD_COATING,
                      force=[0.05, 0.1], fft_planning="estimate", threads=1)
     assert steps[1].coating == HARD_COATING

@@ -5,7 +5,8 @@
 // U+FFFD); datasets with a `units` attribute, contiguous up to 65536 elements
 // and above that chunked in whole rows with shuffle and deflate (or, asked
 // for, without filters); the file
-// assembled in memory and written atomically through write_output_file.
+// assembled in memory and written atomically through write_output_file (or,
+// too large for memory, written in place under its temporary name).
 #pragma once
 
 #include <cstddef>
@@ -62,6 +63,15 @@ class Hdf5Node {
   Hdf5Node write_dataset_rows(std::string_view name, const std::vector<std::size_t>& shape, std::size_t first_row,
                               std::span<const std::uint8_t> values, std::string_view units) const;
 
+  // A float64 dataset of `shape` (rank >= 2, stored as write_dataset would)
+  // whose values come later, slab by slab along the first axis, through
+  // write_slabs on the returned node: for fields too large to hold at once.
+  Hdf5Node create_dataset(std::string_view name, const std::vector<std::size_t>& shape, std::string_view units,
+                          Compression compression = Compression::deflate) const;
+  // On a dataset made by create_dataset: writes `values`, whole slabs of the
+  // first axis, starting at slab `first`.
+  void write_slabs(std::size_t first, std::span<const double> values) const;
+
   Hdf5Node create_group(std::string_view name) const;
 
  private:
@@ -91,6 +101,23 @@ void write_hdf5_file(const std::filesystem::path& path, const std::function<void
 // collective one when processes write their rows of each field). Throws
 // FileError with the reason; the caller removes the file.
 void fill_hdf5_file(std::int64_t file, std::int64_t transfer, const std::function<void(const Hdf5Node& root)>& fill);
+
+// The same for a file too large to hold in memory (the stress volume): HDF5
+// writes the temporary file on disk directly (OutputTemporary), after
+// `reserved_bytes`, an upper bound on the file's size, has been reserved on
+// disk, so that a full disk is met before HDF5 writes (the case that HDF5
+// 1.10 does not survive) and reported like any other error. Memory: HDF5's
+// caches (a few MiB) beside what `fill` holds.
+void write_large_hdf5_file(const std::filesystem::path& path, std::uint64_t reserved_bytes,
+                           const std::function<void(const Hdf5Node& root)>& fill);
+
+// Upper bounds for write_large_hdf5_file's reservation: the bytes a float64
+// dataset of `shape` takes in the file, stored as write_dataset stores it
+// (values, deflate's worst case, chunk index, object header with a few
+// attributes), and those of a file's small items (superblock, groups,
+// attributes, small datasets).
+std::uint64_t hdf5_dataset_bound(const std::vector<std::size_t>& shape, Compression compression);
+inline constexpr std::uint64_t kHdf5SmallItemsBound = std::uint64_t{1} << 20;
 
 // The shape of a field dataset on `grid`: (nx) in 1D, (ny, nx) in 2D.
 std::vector<std::size_t> field_shape(const Grid& grid);

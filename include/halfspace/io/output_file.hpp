@@ -9,6 +9,7 @@
 // the new contents.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <span>
@@ -44,11 +45,13 @@ void write_output_file(const std::filesystem::path& path, std::span<const char> 
 
 // The same atomic write for a writer that writes the file itself, by name
 // (the parallel HDF5 writer of an MPI run, whose processes all write into
-// it): the constructor checks the path as above and creates an empty
-// `<target>.tmp-<pid>` exclusively beside the target, registered for
-// removal on the signals below; commit() syncs it and renames it onto the
-// target; never committed, it is removed by the destructor. Throws FileError
-// "cannot write output '<path>': <reason>".
+// it; the stress volume, too large to assemble in memory): the constructor
+// checks the path as above and creates an empty `<target>.tmp-<pid>`
+// exclusively beside the target, registered for removal on the signals
+// below; commit() releases any space reserved beyond the written size
+// (reserve_output_space), syncs it and renames it onto the target; never
+// committed, it is removed by the destructor. Throws FileError "cannot write
+// output '<path>': <reason>".
 class OutputTemporary {
  public:
   explicit OutputTemporary(const std::filesystem::path& path);
@@ -67,6 +70,16 @@ class OutputTemporary {
   std::filesystem::path temporary_;
   std::unique_ptr<Registration> registration_;
 };
+
+// Reserves `bytes` of disk space for the file at `temporary` (an
+// OutputTemporary's, once its writer has created it) without changing its
+// size (fallocate, FALLOC_FL_KEEP_SIZE), so that a full disk or the
+// file-size limit shows up here, before anything is written, rather than
+// half-way through. Where the file system cannot reserve (EOPNOTSUPP) it
+// does nothing. Throws FileError "cannot write output '<path>': could not
+// reserve N bytes for temporary file '...': <reason>".
+void reserve_output_space(const std::filesystem::path& path, const std::filesystem::path& temporary,
+                          std::uint64_t bytes);
 
 // Installs handlers for SIGINT, SIGTERM, SIGHUP and SIGXFSZ that remove the
 // temporaries of writes in progress and then end the process by the same

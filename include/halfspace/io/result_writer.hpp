@@ -3,6 +3,7 @@
 // under a temporary name in the same directory and renamed.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -33,6 +34,10 @@ struct ResultMetadata {
   // More groups written under the root after the fields when set (the
   // /stress group of solve --stress-depths).
   std::function<void(const Hdf5Node& root)> extra_groups;
+  // An upper bound on the bytes extra_groups adds (stress_group_bound). When
+  // not 0 the file is written in place (write_large_hdf5_file) instead of in
+  // memory, so that a large group is never held whole.
+  std::uint64_t extra_groups_bytes = 0;
   // A coated half-space: its five constants as root attributes (layer_thickness,
   // layer_E, layer_nu, substrate_E, substrate_nu); e_star is then the layer's
   // E1/(1 - nu1^2), its modulus against the rigid surface.

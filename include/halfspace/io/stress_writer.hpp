@@ -1,8 +1,12 @@
-// Writes a stress volume (halfspace/stress/stress_volume.hpp) to HDF5: the
-// `/stress` group of a result file, or a file of its own made by the `stress`
-// command (layout in docs/file-format.md#stress-output).
+// Writes the stresses below a contact (halfspace/stress/stress_volume.hpp) to
+// HDF5: the `/stress` group of a result file, or a file of its own made by the
+// `stress` command (layout in docs/file-format.md#stress-output). The
+// stresses are computed and written one depth at a time, so that memory holds
+// one depth's fields, never the volume.
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <span>
 #include <string>
@@ -10,6 +14,7 @@
 #include "halfspace/grid.hpp"
 #include "halfspace/io/hdf5_output.hpp"
 #include "halfspace/stress/stress_volume.hpp"
+#include "halfspace/stress/subsurface_stress.hpp"
 
 namespace halfspace::io {
 
@@ -19,8 +24,14 @@ namespace halfspace::io {
 // poisson_ratio, and the root attributes max_von_mises (Pa) and its position
 // max_von_mises_x, _y, _z (m). Below a coating also `in_layer` ((nz), 1 for a
 // depth in the layer, 0 in the substrate) and the attributes layer_thickness
-// (m), layer_poisson_ratio and substrate_poisson_ratio.
-void write_stress_group(const Hdf5Node& root, const Grid& grid, const stress::StressVolume& volume, double nu);
+// (m), layer_poisson_ratio and substrate_poisson_ratio. The fields are those
+// of `pressure` on `stresses`' grid at `depths` (stresses_by_depth), written
+// depth by depth. Returns the largest von Mises stress and its position.
+stress::VonMisesMaximum write_stress_group(const Hdf5Node& root, stress::SubsurfaceStress& stresses,
+                                           std::span<const double> pressure, std::span<const double> depths);
+
+// An upper bound on the bytes the /stress group adds to a file.
+std::uint64_t stress_group_bound(const Grid& grid, std::size_t depth_count);
 
 struct StressFileMetadata {
   std::string source;        // the result file the pressure came from
@@ -29,9 +40,11 @@ struct StressFileMetadata {
 
 // A file of its own: root attributes format ("halfspace-stress"), the grid
 // (dimension, nx, ny, dx, dy, boundary) and provenance, the `/pressure` the
-// stresses come from, and the `/stress` group. Atomic, like every output
-// (output_file.hpp); throws FileError naming the path.
-void write_stress_file(const std::filesystem::path& path, const Grid& grid, std::span<const double> pressure,
-                       const stress::StressVolume& volume, double nu, const StressFileMetadata& metadata);
+// stresses come from, and the `/stress` group. Written in place under its
+// temporary name (write_large_hdf5_file), then renamed: atomic like every
+// output (output_file.hpp); throws FileError naming the path.
+stress::VonMisesMaximum write_stress_file(const std::filesystem::path& path, stress::SubsurfaceStress& stresses,
+                                          std::span<const double> pressure, std::span<const double> depths,
+                                          const StressFileMetadata& metadata);
 
 }  // namespace halfspace::io

@@ -36,6 +36,12 @@ class LayeredKernel {
   // rectangle for E1* plus a smoothed point-load term, so that it has the
   // substrate's 1/(pi E2* r) far away and the layer's Love coefficients near.
   double near_rectangle_displacement(double x, double y, double hx, double hy) const;
+  // Free 1D (plane strain) grids, the same split: the displacement (m) at
+  // distance x from the centre of the strip |x'| <= h under unit pressure of
+  // the same closed-form part, the strip for E1* plus (1/E2* - 1/E1*) times
+  // the cell integral of -(1/pi) ln(x^2 + t^2) (the line-load counterpart of
+  // the smoothed term; lengths in metres, datum at 1 m as for the strip).
+  double near_strip_displacement(double x, double h) const;
   // The rest, R(q) = 2 (M(q t) - 1 - (E1*/E2* - 1) exp(-q t)) / (E1* |q|),
   // which is finite at q = 0 and decays exponentially for q t >> 1, times the
   // transform of a dx x dy cell divided by its area, summed over the alias
@@ -43,6 +49,9 @@ class LayeredKernel {
   // DFT, at wavenumber (qx, qy) of a grid of spacing (dx, dy), of this part's
   // cell coefficients times the grid's period area over dx dy.
   double remainder_cell_spectrum(double qx, double qy, double dx, double dy) const;
+  // The same on a 1D grid: images qx + 2 pi m / dx only, the cell's
+  // transform sinc(qx dx/2).
+  double remainder_strip_spectrum(double qx, double dx) const;
   static constexpr int kAliasImages = 2;
   // The same part in real space, for free grids whose domain is not large
   // against t (the DFT above would fold in its periodic images): the
@@ -51,6 +60,9 @@ class LayeredKernel {
   //   (1/(pi E1*)) int_0^inf (M(q t) - 1 - (E1*/E2* - 1) exp(-q t)) J0(q r) dq,
   // by composite Simpson quadrature (the integrand decays like exp(-q t)).
   std::vector<double> remainder_point_table(double r_max, double step) const;
+  // Its plane-strain counterpart, under a line load of 1 N/m:
+  //   (1/pi) int_0^inf R(q) cos(q x) dq at x = 0, step, ... <= x_max.
+  std::vector<double> remainder_line_table(double x_max, double step) const;
 
  private:
   double remainder(double q) const;  // R(q) above, with its limit at q = 0

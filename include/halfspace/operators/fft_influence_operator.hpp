@@ -51,12 +51,6 @@ class FftInfluenceOperator final : public InfluenceOperator {
   std::unique_ptr<Impl> impl_;
 };
 
-// Throws InputError unless the coated half-space's operator supports `grid`:
-// every grid but a free 1D one (its kernel has no plane-strain counterpart of
-// the free 2D treatment). The one statement of the rule: the operator, and
-// SolverOptions::validate(grid, coating) before any work, use it.
-void require_coated_grid(const Grid& grid);
-
 }  // namespace halfspace::operators
 
 // The library and its front ends name these without the folder's namespace.

@@ -156,9 +156,8 @@ struct SolverOptions {
   void validate(const Grid& grid) const;
   // validate(grid), and the rules of a coated half-space (layered_material.hpp):
   // not a dense solver ("type": lemke and lcpquad assemble the homogeneous
-  // matrix), a grid its operator supports (operators::require_coated_grid,
-  // an InputError) and no adhesion ("adhesion": the adhesive solver works on
-  // the homogeneous half-space).
+  // matrix) and no adhesion ("adhesion": the adhesive solver works on the
+  // homogeneous half-space). Every grid is supported.
   void validate(const Grid& grid, const LayeredMaterial& coating) const;
 };
 

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <span>
 #include <vector>
@@ -13,6 +14,7 @@
 #include "halfspace/grid.hpp"
 #include "halfspace/layered_material.hpp"
 #include "halfspace/stress/fourier_stress.hpp"
+#include "halfspace/stress/subsurface_stress.hpp"
 
 namespace halfspace::stress {
 
@@ -39,9 +41,31 @@ struct StressVolume {
   VonMisesMaximum max_von_mises;  // the first cell reaching it, in depth then row order
 };
 
+// The fields at one depth: what stresses_by_depth hands over, depth after
+// depth, in the same arrays.
+struct StressSlice {
+  std::size_t index = 0;  // of the depth in the request
+  double depth = 0.0;     // m
+  bool in_layer = false;  // a coated half-space: the depth is in the layer (z <= t)
+  // grid.size() values each, (ny, nx) row-major, Pa.
+  std::array<std::vector<double>, kComponentCount> components;
+  std::vector<double> von_mises;
+  std::vector<double> max_shear;
+  std::vector<double> hydrostatic;
+};
+
 // Throws InputError naming the problem unless there are 1 to kMaxDepthCount
 // depths, each finite and > 0 (m).
 void check_depths(std::span<const double> depths);
+
+// The stresses of `pressure` (Pa, grid.size() values) below `stresses`' grid
+// at each of `depths` in turn: `consume` receives each depth's fields before
+// the next depth is computed, so that only one depth is ever held (the
+// streaming writer, io/stress_writer.hpp). Returns the largest von Mises
+// stress and its position. Throws InputError for bad depths or pressure.
+VonMisesMaximum stresses_by_depth(SubsurfaceStress& stresses, std::span<const double> pressure,
+                                  std::span<const double> depths,
+                                  const std::function<void(const StressSlice& slice)>& consume);
 
 // The stress volume of `pressure` (Pa, grid.size() values) on `grid` at
 // `depths`, for a body of Poisson's ratio nu. Throws InputError for bad
@@ -49,17 +73,17 @@ void check_depths(std::span<const double> depths);
 StressVolume compute_stress_volume(const Grid& grid, std::span<const double> pressure, std::span<const double> depths,
                                    double nu, FftPlanning planning = FftPlanning::estimate);
 
-// The same below a coated half-space (periodic grids only), each depth with
-// the constants of its body. Throws InputError for a free grid, bad depths,
+// The same below a coated half-space (require_coated_stress_grid), each depth with
+// the constants of its body. Throws InputError for a grid it refuses, bad depths,
 // material or pressure.
 StressVolume compute_stress_volume(const Grid& grid, std::span<const double> pressure, std::span<const double> depths,
                                    const LayeredMaterial& coating, FftPlanning planning = FftPlanning::estimate);
 
-// Peak bytes of compute_stress_volume on `grid` at `depth_count` depths,
-// including the in-memory image of the file that stores it (the 9 stored
-// fields, 8 bytes each per cell and depth, three times) and the transforms'
-// workspace (more for a coated body's solved modes): an upper bound for the
-// memory check of the command line.
-double stress_memory_estimate(const Grid& grid, std::size_t depth_count, bool coated = false);
+// Peak bytes of stresses_by_depth on `grid`: the transforms' workspace (more
+// for a coated body's solved modes) and one depth's nine fields, whatever the
+// number of depths; an upper bound for the memory check of the command line.
+// compute_stress_volume holds the whole volume besides: nine fields of 8
+// bytes per cell and depth.
+double stress_memory_estimate(const Grid& grid, bool coated = false);
 
 }  // namespace halfspace::stress

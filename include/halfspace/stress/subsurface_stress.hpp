@@ -8,6 +8,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <span>
 
 #include "halfspace/fft/fft_planning.hpp"
@@ -20,6 +21,16 @@ namespace halfspace::stress {
 // Throws InputError unless -1 < nu <= 0.5 (and finite); returns nu.
 double checked_poisson_ratio(double nu);
 
+// Coated half-spaces on free grids: the layer's thickness may be at most this
+// fraction of the domain's shorter side (the remainder's spectrum folds in
+// its periodic images beyond it, docs/theory.md).
+inline constexpr double kFreeCoatedStressThicknessRatio = 0.125;
+
+// Throws InputError naming the grid unless the stresses below `coating` can
+// be computed on `grid`: periodic grids, and free grids with t <= L/8 (L the
+// domain's shorter side, or its length in 1D).
+void require_coated_stress_grid(const Grid& grid, const LayeredMaterial& coating);
+
 // Throws InputError unless depth is finite and > 0 (m); returns it.
 double checked_depth(double depth);
 
@@ -29,9 +40,13 @@ class SubsurfaceStress {
   // body of Poisson's ratio nu. Throws InputError for a bad nu.
   SubsurfaceStress(const Grid& grid, double nu, FftPlanning planning = FftPlanning::estimate);
   // A coated half-space (layered_fourier_stress.hpp): depths z <= t are in
-  // the layer. Solves each mode's layer and substrate coefficients once, for
-  // every depth (about 32 bytes per cell). Periodic grids only: throws
-  // InputError naming the grid for a free one, or for a bad material.
+  // the layer. Periodic grids solve each mode's layer and substrate
+  // coefficients once, for every depth (about 32 bytes per cell); free grids
+  // add the remainder of the layered solution over Love's rectangle (the
+  // strip in 1D), solved per depth, up to 25 (1D: 5) alias images per bin of
+  // the padded grid.
+  // Throws InputError for a grid require_coated_stress_grid refuses, or for
+  // a bad material.
   SubsurfaceStress(const Grid& grid, const LayeredMaterial& coating, FftPlanning planning = FftPlanning::estimate);
   ~SubsurfaceStress();
   SubsurfaceStress(const SubsurfaceStress&) = delete;
@@ -44,6 +59,8 @@ class SubsurfaceStress {
   // Whether the stresses are those of a coated half-space, and the body of a depth.
   bool coated() const;
   bool in_layer(double depth) const;
+  // The coated half-space's layer and substrate; nullopt for a homogeneous body.
+  std::optional<LayeredMaterial> coating() const;
 
   // Takes the surface pressure (Pa, grid.size() values, (ny, nx) row-major,
   // positive in compression): one forward FFT, kept for every depth. Throws
