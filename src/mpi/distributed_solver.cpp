@@ -7,6 +7,7 @@
 
 #include <utility>
 
+#include "halfspace/mpi/distributed_multilevel.hpp"
 #include "halfspace/mpi/slab_fft.hpp"
 #include "halfspace/mpi/slab_fourier_operator.hpp"
 #include "halfspace/solvers/polonsky_keer.hpp"
@@ -67,9 +68,10 @@ void check_distributable(const Grid& grid, const solvers::SolverOptions& options
     throw SolverOptionError("hardness", fmt::format("{}", *options.interface_law.hardness),
                             fmt::format("{}: solve capped contacts on one process", kNotYet));
   }
-  if (options.type != SolverType::pk && options.type != SolverType::pk_fourier) {
+  if (options.type != SolverType::pk && options.type != SolverType::pk_fourier &&
+      options.type != SolverType::pk_multilevel) {
     throw SolverOptionError("type", std::string(to_string(options.type)),
-                            fmt::format("{}: use solver pk-fourier (or pk)", kNotYet));
+                            fmt::format("{}: use solver pk-multilevel, pk-fourier or pk", kNotYet));
   }
   if (options.deflation.mode == solvers::DeflationOptions::Mode::on) {
     throw SolverOptionError("deflation block", fmt::format("{}", options.deflation.block),
@@ -82,6 +84,7 @@ std::unique_ptr<solvers::ContactSolver> make_distributed_solver(const Grid& grid
                                                                 const MpiCommunicator& comm) {
   options.validate(grid);
   check_distributable(grid, options);
+  if (options.type == SolverType::pk_multilevel) return make_distributed_multilevel(grid, e_star, options, comm);
   const bool projected = options.type == SolverType::pk_fourier;
   auto transform = std::make_shared<SlabRealFft>(grid.nx(), grid.ny(), comm, options.fft_planning);
   auto op = std::make_unique<SlabFourierOperator>(grid, e_star, transform);

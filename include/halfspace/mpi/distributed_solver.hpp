@@ -14,17 +14,19 @@
 namespace halfspace::mpi {
 
 // Whether make_distributed_solver takes `options` on `grid`: a periodic 2D
-// grid, solver pk or pk-fourier without block deflation, no hardness cap,
-// no adhesion.
+// grid, solver pk, pk-fourier or pk-multilevel without block deflation
+// asked for (pk-multilevel's automatic deflation stays off), no hardness
+// cap, no adhesion.
 bool distributable(const Grid& grid, const solvers::SolverOptions& options);
 
 // Throws SolverOptionError naming the option and what to use instead unless
-// distributable(grid, options), e.g. "type = pk-multilevel is not available
-// with more than one process yet: use solver pk-fourier".
+// distributable(grid, options), e.g. "type = lemke is not available
+// with more than one process yet: use solver pk-multilevel, pk-fourier or pk".
 void check_distributable(const Grid& grid, const solvers::SolverOptions& options);
 
 // Polonsky-Keer (pk: the paper's form; pk-fourier: the projected form with
-// the Fourier preconditioner) on the slab operator of `grid` over `comm`,
+// the Fourier preconditioner; pk-multilevel: distributed_multilevel.hpp,
+// whose distributed levels are made here) on the slab operator of `grid` over `comm`,
 // which must outlive the solver. Fields given to and returned by the solver
 // hold this process's rows (slab_layout). Collective; throws as
 // check_distributable and SolverOptions::validate do.
