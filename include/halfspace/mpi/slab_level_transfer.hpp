@@ -22,8 +22,10 @@ namespace halfspace::mpi {
 
 class SlabLevelTransfer final : public solvers::LevelTransfer {
  public:
-  // Levels coarser than this many cells are gathered.
-  static constexpr std::size_t kGatherBelowCells = std::size_t{1} << 16;
+  // Levels of fewer cells are gathered: below 64 x 64 cells a process holds
+  // a few rows, and FFTW-MPI's transposes cost more than the redundant
+  // serial solve.
+  static constexpr std::size_t kGatherBelowCells = std::size_t{1} << 12;
 
   // The levels of `fine` (a periodic 2D grid, held in slabs) down to
   // coarser_grid's limit of min_cells_per_axis: each coarse level is
