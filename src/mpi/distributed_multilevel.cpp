@@ -15,14 +15,16 @@ std::unique_ptr<solvers::ContactSolver> make_distributed_multilevel(const Grid& 
   auto transfer = std::make_unique<SlabLevelTransfer>(grid, options.multilevel.min_cells_per_axis, comm);
   const SlabLevelTransfer* levels = transfer.get();  // owned by the solver, as is this factory
   // Each level is the Fourier-preconditioned Polonsky-Keer at the level's
-  // tolerance, as in the serial pk-multilevel (solver_factory.cpp), without
-  // the block deflation, which is not distributed.
+  // tolerance, with the block deflation on the finest grid when the serial
+  // pk-multilevel takes it there (solver_factory.cpp's rule).
+  using Mode = solvers::DeflationOptions::Mode;
+  const bool deflated = solvers::multilevel_deflates(grid, options);
   solvers::SolverOptions level_options = options;
   level_options.type = solvers::SolverType::pk_fourier;
-  level_options.deflation.mode = solvers::DeflationOptions::Mode::off;
-  auto make_level = [e_star, level_options, levels, &comm](const Grid& level, double tolerance, bool fine) {
+  auto make_level = [e_star, level_options, deflated, levels, &comm](const Grid& level, double tolerance, bool fine) {
     solvers::SolverOptions one = level_options;
     one.tolerance = tolerance;
+    one.deflation.mode = fine && deflated ? Mode::on : Mode::off;
     if (!fine) one.progress = nullptr;  // progress reports the fine solve only
     if (!levels->gathered(level)) return make_distributed_solver(level, e_star, one, comm);
     // Solved on every process alike: estimated plans, since measured ones

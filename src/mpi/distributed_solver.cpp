@@ -10,6 +10,8 @@
 #include "halfspace/mpi/distributed_multilevel.hpp"
 #include "halfspace/mpi/slab_fft.hpp"
 #include "halfspace/mpi/slab_fourier_operator.hpp"
+#include "halfspace/solvers/balancing_preconditioner.hpp"
+#include "halfspace/solvers/block_deflation.hpp"
 #include "halfspace/solvers/polonsky_keer.hpp"
 #include "halfspace/solvers/solver_factory.hpp"
 
@@ -22,9 +24,17 @@ using solvers::SolverType;
 // The solver with the operator and preconditioner it references.
 class DistributedSolver final : public solvers::ContactSolver {
  public:
+  // With `deflation`, the block-deflation coarse correction around the
+  // Fourier preconditioner (which must then be given).
   DistributedSolver(std::unique_ptr<SlabFourierOperator> op, std::unique_ptr<SlabFourierPreconditioner> fourier,
-                    const solvers::PolonskyKeerOptions& options)
-      : op_(std::move(op)), fourier_(std::move(fourier)), solver_(*op_, options, fourier_.get()) {}
+                    std::unique_ptr<solvers::BlockDeflation> deflation, const solvers::PolonskyKeerOptions& options)
+      : op_(std::move(op)),
+        fourier_(std::move(fourier)),
+        deflation_(std::move(deflation)),
+        balancing_(deflation_ ? std::make_unique<solvers::BalancingPreconditioner>(*op_, *fourier_, *deflation_)
+                              : nullptr),
+        solver_(*op_, options,
+                balancing_ ? static_cast<solvers::Preconditioner*>(balancing_.get()) : fourier_.get()) {}
 
   std::string_view name() const override { return solver_.name(); }
   SolveResult solve(std::span<const double> initial_gap, const Loading& loading,
@@ -38,6 +48,8 @@ class DistributedSolver final : public solvers::ContactSolver {
  private:
   std::unique_ptr<SlabFourierOperator> op_;
   std::unique_ptr<SlabFourierPreconditioner> fourier_;
+  std::unique_ptr<solvers::BlockDeflation> deflation_;
+  std::unique_ptr<solvers::BalancingPreconditioner> balancing_;  // around fourier_ and deflation_
   solvers::PolonskyKeer solver_;
 };
 
@@ -73,10 +85,6 @@ void check_distributable(const Grid& grid, const solvers::SolverOptions& options
     throw SolverOptionError("type", std::string(to_string(options.type)),
                             fmt::format("{}: use solver pk-multilevel, pk-fourier or pk", kNotYet));
   }
-  if (options.deflation.mode == solvers::DeflationOptions::Mode::on) {
-    throw SolverOptionError("deflation block", fmt::format("{}", options.deflation.block),
-                            fmt::format("{}: use no block deflation (0)", kNotYet));
-  }
 }
 
 std::unique_ptr<solvers::ContactSolver> make_distributed_solver(const Grid& grid, double e_star,
@@ -90,7 +98,14 @@ std::unique_ptr<solvers::ContactSolver> make_distributed_solver(const Grid& grid
   auto op = std::make_unique<SlabFourierOperator>(grid, e_star, transform);
   std::unique_ptr<SlabFourierPreconditioner> fourier;
   if (projected) fourier = std::make_unique<SlabFourierPreconditioner>(grid, e_star, transform);
-  return std::make_unique<DistributedSolver>(std::move(op), std::move(fourier),
+  // Block deflation as the serial pk-fourier takes it: when asked for (its
+  // options were checked by validate).
+  std::unique_ptr<solvers::BlockDeflation> deflation;
+  if (projected && options.deflation.mode == solvers::DeflationOptions::Mode::on) {
+    const SlabLayout& layout = transform->layout();
+    deflation = std::make_unique<solvers::BlockDeflation>(grid, options.deflation, layout.first_row, layout.rows, comm);
+  }
+  return std::make_unique<DistributedSolver>(std::move(op), std::move(fourier), std::move(deflation),
                                              solvers::polonsky_keer_options(options, options.tolerance, projected));
 }
 

@@ -14,9 +14,8 @@
 namespace halfspace::mpi {
 
 // Whether make_distributed_solver takes `options` on `grid`: a periodic 2D
-// grid, solver pk, pk-fourier or pk-multilevel without block deflation
-// asked for (pk-multilevel's automatic deflation stays off), no hardness
-// cap, no adhesion.
+// grid, solver pk, pk-fourier or pk-multilevel (block deflation as the
+// serial solvers take it), no hardness cap, no adhesion.
 bool distributable(const Grid& grid, const solvers::SolverOptions& options);
 
 // Throws SolverOptionError naming the option and what to use instead unless
