@@ -23,7 +23,6 @@
 #include "../progress.hpp"
 #include "../summary.hpp"
 #include "../sweep_command.hpp"
-#include "mpi_sweep.hpp"
 #include "halfspace/analysis/contact_statistics.hpp"
 #include "halfspace/error.hpp"
 #include "halfspace/io/result_metadata.hpp"
@@ -33,6 +32,7 @@
 #include "halfspace/mpi/slab_fft.hpp"
 #include "halfspace/mpi/slab_gather.hpp"
 #include "halfspace/threads.hpp"
+#include "mpi_sweep.hpp"
 
 namespace halfspace::app {
 namespace {

@@ -94,7 +94,8 @@ std::vector<analysis::SweepStep> solve_steps(const SolveSetup& setup, const mpi:
       analysis::SweepStep step;
       step.loading = loads[k];
       step.warm_started = k > 0 && previous_converged;
-      step.result = solver->solve(span_of(gap), loads[k], step.warm_started ? span_of(previous) : std::span<const double>());
+      step.result =
+          solver->solve(span_of(gap), loads[k], step.warm_started ? span_of(previous) : std::span<const double>());
       previous = step.result.pressure;
       previous_converged = step.result.converged();
       SolveResult& result = step.result;

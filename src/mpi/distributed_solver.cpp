@@ -33,8 +33,7 @@ class DistributedSolver final : public solvers::ContactSolver {
         deflation_(std::move(deflation)),
         balancing_(deflation_ ? std::make_unique<solvers::BalancingPreconditioner>(*op_, *fourier_, *deflation_)
                               : nullptr),
-        solver_(*op_, options,
-                balancing_ ? static_cast<solvers::Preconditioner*>(balancing_.get()) : fourier_.get()) {}
+        solver_(*op_, options, balancing_ ? static_cast<solvers::Preconditioner*>(balancing_.get()) : fourier_.get()) {}
 
   std::string_view name() const override { return solver_.name(); }
   SolveResult solve(std::span<const double> initial_gap, const Loading& loading,

@@ -65,8 +65,7 @@ void MpiCommunicator::concatenate(std::span<const std::byte> mine, std::span<std
   MPI_Datatype type = MPI_DATATYPE_NULL;
   check(MPI_Type_contiguous(static_cast<int>(unit), MPI_BYTE, &type), "MPI_Type_contiguous");
   check(MPI_Type_commit(&type), "MPI_Type_commit");
-  const int code =
-      MPI_Allgatherv(mine.data(), units, type, all.data(), counts.data(), offsets.data(), type, comm_);
+  const int code = MPI_Allgatherv(mine.data(), units, type, all.data(), counts.data(), offsets.data(), type, comm_);
   MPI_Type_free(&type);
   check(code, "MPI_Allgatherv");
 }

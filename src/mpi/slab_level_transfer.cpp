@@ -30,8 +30,7 @@ SlabLevelTransfer::SlabLevelTransfer(const Grid& fine, std::size_t min_cells_per
     const bool empty_slab = *std::min_element(level.slab_rows.rows.begin(), level.slab_rows.rows.end()) == 0;
     // The fine level is the caller's slab; once one level is gathered, all
     // coarser ones are.
-    level.gathered = !levels_.empty() &&
-                     (levels_.back().gathered || grid->size() < gather_below_cells || empty_slab);
+    level.gathered = !levels_.empty() && (levels_.back().gathered || grid->size() < gather_below_cells || empty_slab);
     level.fine_rows = level.slab_rows;
     for (std::size_t p = 0; p < level.fine_rows.first.size(); ++p) {
       level.fine_rows.first[p] *= 2;

@@ -93,8 +93,8 @@ void BlockDeflation::require_covers(const Grid& grid, std::size_t block) {
 BlockDeflation::BlockDeflation(const Grid& grid, BlockDeflationOptions options)
     : BlockDeflation(grid, options, 0, grid.ny(), linalg::serial_communicator()) {}
 
-BlockDeflation::BlockDeflation(const Grid& grid, BlockDeflationOptions options, std::size_t first_row,
-                               std::size_t rows, const linalg::Communicator& comm)
+BlockDeflation::BlockDeflation(const Grid& grid, BlockDeflationOptions options, std::size_t first_row, std::size_t rows,
+                               const linalg::Communicator& comm)
     : grid_(grid), options_(options), first_row_(first_row), rows_(rows), comm_(&comm) {
   options_.validate();
   if (first_row_ + rows_ > grid_.ny()) {

@@ -27,9 +27,8 @@ SolveResult solve_level(ContactSolver& level, std::span<const double> gap, const
 bool MultilevelSolver::warm_start_is_close(std::span<const double> pressure, const Loading& loading) const {
   if (!loading.load_controlled()) return true;
   const double target = loading.target_force(grid_.domain_area());
-  const double force =
-      grid_.cell_area() * linalg::sum(transfer_->communicator(grid_), pressure.size(),
-                                      [&](std::size_t i) { return std::max(pressure[i], 0.0); });
+  const double force = grid_.cell_area() * linalg::sum(transfer_->communicator(grid_), pressure.size(),
+                                                       [&](std::size_t i) { return std::max(pressure[i], 0.0); });
   if (!(force > 0.0)) return false;
   const double ratio = target > force ? target / force : force / target;
   return ratio <= options_.warm_start_max_load_ratio;
@@ -107,8 +106,8 @@ SolveResult MultilevelSolver::solve(std::span<const double> initial_gap, const L
     return result;
   }
   if (initial_gap.size() != local_size) {
-    throw InputError(fmt::format("initial gap has {} entries, but the grid has {} cells here", initial_gap.size(),
-                                 local_size));
+    throw InputError(
+        fmt::format("initial gap has {} entries, but the grid has {} cells here", initial_gap.size(), local_size));
   }
   loading.validate();
   CoarseStart coarse;

@@ -36,8 +36,7 @@ class SerialCommunicator final : public Communicator {
   void sum(std::span<double> /*values*/) const override {}
   double max(double local) const override { return local; }
   double min(double local) const override { return local; }
-  void concatenate(std::span<const std::byte> mine, std::span<std::byte> all,
-                   std::size_t /*unit*/) const override {
+  void concatenate(std::span<const std::byte> mine, std::span<std::byte> all, std::size_t /*unit*/) const override {
     if (!mine.empty()) std::memcpy(all.data(), mine.data(), mine.size());
   }
 };

@@ -43,8 +43,7 @@ class SlabLevelTransfer final : public solvers::LevelTransfer {
   // Collective while `fine` is distributed.
   void restrict_to_coarse(const Grid& fine, std::span<const double> fine_values,
                           std::span<double> coarse_values) override;
-  void prolong_to_fine(const Grid& fine, std::span<const double> coarse_values,
-                       std::span<double> fine_values) override;
+  void prolong_to_fine(const Grid& fine, std::span<const double> coarse_values, std::span<double> fine_values) override;
 
  private:
   struct Level {

@@ -22,9 +22,7 @@ class LevelTransfer {
   // How many values of a field on `grid` this process holds.
   virtual std::size_t local_size(const Grid& grid) const { return grid.size(); }
   // The processes a field on `grid` is spread over (its sums reduce over them).
-  virtual const linalg::Communicator& communicator(const Grid& /*grid*/) const {
-    return linalg::serial_communicator();
-  }
+  virtual const linalg::Communicator& communicator(const Grid& /*grid*/) const { return linalg::serial_communicator(); }
   // restrict_by_average from `fine` to coarser_grid(fine), on the values held
   // here of either. Collective where the fields are distributed.
   virtual void restrict_to_coarse(const Grid& fine, std::span<const double> fine_values,
@@ -32,8 +30,7 @@ class LevelTransfer {
     restrict_by_average(fine, fine_values, coarse_values);
   }
   // prolong_constant from coarser_grid(fine) to `fine`, likewise.
-  virtual void prolong_to_fine(const Grid& fine, std::span<const double> coarse_values,
-                               std::span<double> fine_values) {
+  virtual void prolong_to_fine(const Grid& fine, std::span<const double> coarse_values, std::span<double> fine_values) {
     prolong_constant(fine, coarse_values, fine_values);
   }
 };
