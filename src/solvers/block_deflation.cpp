@@ -97,9 +97,10 @@ BlockDeflation::BlockDeflation(const Grid& grid, BlockDeflationOptions options, 
                                const linalg::Communicator& comm)
     : grid_(grid), options_(options), first_row_(first_row), rows_(rows), comm_(&comm) {
   options_.validate();
-  if (first_row_ + rows_ > grid_.ny()) {
-    throw InputError(fmt::format("block deflation: rows {} to {} are not rows of the {} grid", first_row_,
-                                 first_row_ + rows_, grid_.shape_string()));
+  // One process holds every row; several hold slabs.
+  if (first_row_ + rows_ > grid_.ny() || (comm_->size() == 1 && (first_row_ != 0 || rows_ != grid_.ny()))) {
+    throw InputError(fmt::format("block deflation: rows {} to {} of the {} grid do not suit {} process(es)", first_row_,
+                                 first_row_ + rows_, grid_.shape_string(), comm_->size()));
   }
   if (comm_->size() > 1) {
     local_set_.assign(local_size(), 0);
