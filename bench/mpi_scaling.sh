@@ -69,6 +69,6 @@ done
 import h5py, numpy as np
 a, b = h5py.File('mpi-2x1.h5', 'r'), h5py.File('serial-1t.h5', 'r')
 p, q = a['pressure'][()], b['pressure'][()]
-print(f'\nmpi-2x1 against serial-1t: pressure within {np.max(np.abs(p - q)) / np.max(np.abs(q)):.1e} of its largest value, '
-      f'{np.count_nonzero((p > 0) != (q > 0))} cells differ in contact; deflation block {a.attrs[\"deflation_block\"]} '
-      f'against {b.attrs[\"deflation_block\"]}')"
+print(f'\nmpi-2x1 against serial-1t: pressure within {np.max(np.abs(p - q)) / np.max(np.abs(q)):.1e} of its '
+      f'largest value, {np.count_nonzero((p > 0) != (q > 0))} cells differ in contact; deflation block '
+      f'{a.attrs[\"deflation_block\"]} against {b.attrs[\"deflation_block\"]}')"

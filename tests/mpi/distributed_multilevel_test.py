@@ -204,8 +204,8 @@ generated = run([serial_program, "generate", "--kind", "self-affine", "--grid", 
 if generated.returncode != 0:
     fail(f"generating the deflation case's surface failed: {generated.stderr.strip()}")
 else:
-    deflation_case = ["--height-map", surface, "--boundary", "periodic", "--mean-pressure", "1e9", "--deflation-block", "32",
-                "--tol", "1e-12"] + common
+    deflation_case = ["--height-map", surface, "--boundary", "periodic", "--mean-pressure", "1e9",
+                      "--deflation-block", "32", "--tol", "1e-12"] + common
     solve_case("rough-multilevel-deflation", deflation_case, deflated=True)
     solve_case("rough-pk-fourier-deflation", deflation_case + ["--solver", "pk-fourier"], deflated=True)
 
