@@ -8,5 +8,5 @@ serial_build="${HALFSPACE_BUILD_DIR:-$root/build}"
 build="${HALFSPACE_MPI_BUILD_DIR:-$root/build-mpi}"
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DHALFSPACE_MPI=ON -DHALFSPACE_BUILD_BENCH=OFF \
   -DHALFSPACE_SERIAL_PROGRAM="$serial_build/bin/halfspace" "$@"
-cmake --build "$build" -j "$(nproc)" --target halfspace_cli
+cmake --build "$build" -j "$(nproc)" --target halfspace_cli halfspace_mpi_free_operator_test
 ctest --test-dir "$build" --output-on-failure

@@ -1,6 +1,7 @@
-// Polonsky-Keer on a slab-distributed periodic grid: the serial solver loop
-// (polonsky_keer.cpp) unchanged, over the slab operator and preconditioner,
-// whose reductions go through the operator's communicator.
+// Polonsky-Keer on a slab-distributed 2D grid: the serial solver loop
+// (polonsky_keer.cpp) unchanged, over the slab operator (periodic or free)
+// and preconditioner, whose reductions go through the operator's
+// communicator.
 #include "halfspace/mpi/distributed_solver.hpp"
 
 #include <fmt/format.h>
@@ -10,6 +11,7 @@
 #include "halfspace/mpi/distributed_multilevel.hpp"
 #include "halfspace/mpi/slab_fft.hpp"
 #include "halfspace/mpi/slab_fourier_operator.hpp"
+#include "halfspace/mpi/slab_free_operator.hpp"
 #include "halfspace/solvers/balancing_preconditioner.hpp"
 #include "halfspace/solvers/block_deflation.hpp"
 #include "halfspace/solvers/polonsky_keer.hpp"
@@ -21,15 +23,46 @@ namespace {
 using solvers::SolverOptionError;
 using solvers::SolverType;
 
+// A grid's distributed operator and, if asked for, its Fourier
+// preconditioner.
+struct SlabOperator {
+  std::unique_ptr<InfluenceOperator> op;
+  std::unique_ptr<solvers::Preconditioner> fourier;  // null unless asked for
+};
+
+// The operator of the 2D `grid` over `comm`: periodic, the kernel on the
+// grid's transform, which the preconditioner shares (Polonsky-Keer applies
+// them one after the other); free, the padded convolution, the
+// preconditioner on a transform of its own (the unpadded periodic symbol,
+// as the serial solvers use on free grids) working in the operator's padded
+// buffer, idle between products. Collective.
+SlabOperator make_slab_operator(const Grid& grid, double e_star, bool fourier, FftPlanning planning,
+                                const MpiCommunicator& comm) {
+  SlabOperator made;
+  if (grid.periodic()) {
+    auto transform = std::make_shared<SlabRealFft>(grid.nx(), grid.ny(), comm, planning);
+    made.op = std::make_unique<SlabFourierOperator>(grid, e_star, transform);
+    if (fourier) made.fourier = std::make_unique<SlabFourierPreconditioner>(grid, e_star, transform);
+  } else {
+    auto op = std::make_unique<SlabFreeOperator>(grid, e_star, comm, planning);
+    if (fourier) {
+      made.fourier = std::make_unique<SlabFourierPreconditioner>(
+          grid, e_star, std::make_shared<SlabRealFft>(grid.nx(), grid.ny(), comm, planning, op->scratch()));
+    }
+    made.op = std::move(op);
+  }
+  return made;
+}
+
 // The solver with the operator and preconditioner it references.
 class DistributedSolver final : public solvers::ContactSolver {
  public:
   // With `deflation`, the block-deflation coarse correction around the
-  // Fourier preconditioner (which must then be given).
-  DistributedSolver(std::unique_ptr<SlabFourierOperator> op, std::unique_ptr<SlabFourierPreconditioner> fourier,
-                    std::unique_ptr<solvers::BlockDeflation> deflation, const solvers::PolonskyKeerOptions& options)
-      : op_(std::move(op)),
-        fourier_(std::move(fourier)),
+  // Fourier preconditioner (which the slab must then have).
+  DistributedSolver(SlabOperator slab, std::unique_ptr<solvers::BlockDeflation> deflation,
+                    const solvers::PolonskyKeerOptions& options)
+      : op_(std::move(slab.op)),
+        fourier_(std::move(slab.fourier)),
         deflation_(std::move(deflation)),
         balancing_(deflation_ ? std::make_unique<solvers::BalancingPreconditioner>(*op_, *fourier_, *deflation_)
                               : nullptr),
@@ -45,8 +78,8 @@ class DistributedSolver final : public solvers::ContactSolver {
   }
 
  private:
-  std::unique_ptr<SlabFourierOperator> op_;
-  std::unique_ptr<SlabFourierPreconditioner> fourier_;
+  std::unique_ptr<InfluenceOperator> op_;
+  std::unique_ptr<solvers::Preconditioner> fourier_;
   std::unique_ptr<solvers::BlockDeflation> deflation_;
   std::unique_ptr<solvers::BalancingPreconditioner> balancing_;  // around fourier_ and deflation_
   solvers::PolonskyKeer solver_;
@@ -66,10 +99,10 @@ bool distributable(const Grid& grid, const solvers::SolverOptions& options) {
 }
 
 void check_distributable(const Grid& grid, const solvers::SolverOptions& options) {
-  if (grid.dimension() != 2 || !grid.periodic()) {
+  if (grid.dimension() != 2) {
     throw SolverOptionError(
         "grid", fmt::format("{} ({}D, {})", grid.shape_string(), grid.dimension(), to_string(grid.boundary())),
-        fmt::format("{}: only periodic 2D grids are distributed", kNotYet));
+        fmt::format("{}: only 2D grids are distributed", kNotYet));
   }
   if (options.adhesion) {
     throw SolverOptionError("adhesion", std::string(to_string(options.adhesion->law.type)),
@@ -93,18 +126,15 @@ std::unique_ptr<solvers::ContactSolver> make_distributed_solver(const Grid& grid
   check_distributable(grid, options);
   if (options.type == SolverType::pk_multilevel) return make_distributed_multilevel(grid, e_star, options, comm);
   const bool projected = options.type == SolverType::pk_fourier;
-  auto transform = std::make_shared<SlabRealFft>(grid.nx(), grid.ny(), comm, options.fft_planning);
-  auto op = std::make_unique<SlabFourierOperator>(grid, e_star, transform);
-  std::unique_ptr<SlabFourierPreconditioner> fourier;
-  if (projected) fourier = std::make_unique<SlabFourierPreconditioner>(grid, e_star, transform);
+  SlabOperator slab = make_slab_operator(grid, e_star, projected, options.fft_planning, comm);
   // Block deflation as the serial pk-fourier takes it: when asked for (its
-  // options were checked by validate).
+  // options were checked by validate), on the rows the operator holds.
   std::unique_ptr<solvers::BlockDeflation> deflation;
   if (projected && options.deflation.mode == solvers::DeflationOptions::Mode::on) {
-    const SlabLayout& layout = transform->layout();
+    const SlabLayout layout = slab_layout(grid.nx(), grid.ny(), comm);
     deflation = std::make_unique<solvers::BlockDeflation>(grid, options.deflation, layout.first_row, layout.rows, comm);
   }
-  return std::make_unique<DistributedSolver>(std::move(op), std::move(fourier), std::move(deflation),
+  return std::make_unique<DistributedSolver>(std::move(slab), std::move(deflation),
                                              solvers::polonsky_keer_options(options, options.tolerance, projected));
 }
 

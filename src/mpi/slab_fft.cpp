@@ -51,13 +51,19 @@ SlabLayout slab_layout(std::size_t nx, std::size_t ny, const MpiCommunicator& co
   return local_sizes(nx, ny, comm.get()).layout;
 }
 
-SlabRealFft::SlabRealFft(std::size_t nx, std::size_t ny, const MpiCommunicator& comm, FftPlanning planning)
+SlabRealFft::SlabRealFft(std::size_t nx, std::size_t ny, const MpiCommunicator& comm, FftPlanning planning,
+                         std::span<std::complex<double>> workspace)
     : comm_(comm), padded_cols_(2 * (nx / 2 + 1)) {
   const LocalSizes sizes = local_sizes(nx, ny, comm.get());
   layout_ = sizes.layout;
   // At least one value, so that a process without rows still has a buffer.
-  buffer_ = reinterpret_cast<std::complex<double>*>(
-      fftw_alloc_complex(static_cast<std::size_t>(std::max<std::ptrdiff_t>(sizes.allocation, 1))));
+  const auto needed = static_cast<std::size_t>(std::max<std::ptrdiff_t>(sizes.allocation, 1));
+  if (workspace.size() >= needed) {
+    buffer_ = workspace.data();
+    owns_buffer_ = false;
+  } else {
+    buffer_ = reinterpret_cast<std::complex<double>*>(fftw_alloc_complex(needed));
+  }
   if (buffer_ == nullptr) throw std::bad_alloc();
   double* real = reinterpret_cast<double*>(buffer_);
   fftw_complex* complex = fft::detail::as_fftw(buffer_);
@@ -87,7 +93,7 @@ void SlabRealFft::release() noexcept {
   if (forward_plan_) fftw_destroy_plan(static_cast<fftw_plan>(forward_plan_));
   if (backward_plan_) fftw_destroy_plan(static_cast<fftw_plan>(backward_plan_));
   forward_plan_ = backward_plan_ = nullptr;
-  if (buffer_) fftw_free(buffer_);
+  if (buffer_ && owns_buffer_) fftw_free(buffer_);
   buffer_ = nullptr;
 }
 

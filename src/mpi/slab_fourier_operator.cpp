@@ -19,10 +19,13 @@
 namespace halfspace::mpi {
 namespace {
 
+// The operator needs a periodic grid; the preconditioner takes a free one too
+// (the serial solvers precondition free grids with the unpadded periodic
+// symbol as well).
 std::shared_ptr<SlabRealFft> checked_transform(const Grid& grid, std::shared_ptr<SlabRealFft> transform,
-                                               const char* who) {
-  if (grid.dimension() != 2 || !grid.periodic()) {
-    throw InputError(fmt::format("{}: the distributed operator needs a periodic 2D grid, not a {} {}D one", who,
+                                               const char* who, bool periodic_only) {
+  if (grid.dimension() != 2 || (periodic_only && !grid.periodic())) {
+    throw InputError(fmt::format("{}: needs a {}2D grid, not a {} {}D one", who, periodic_only ? "periodic " : "",
                                  to_string(grid.boundary()), grid.dimension()));
   }
   if (!transform || transform->layout().nx != grid.nx() || transform->layout().ny != grid.ny()) {
@@ -54,7 +57,7 @@ void multiply_and_invert(SlabRealFft& fft, const std::vector<double>& multiplier
 }  // namespace
 
 SlabFourierOperator::SlabFourierOperator(const Grid& grid, double e_star, std::shared_ptr<SlabRealFft> transform)
-    : grid_(grid), transform_(checked_transform(grid, std::move(transform), "SlabFourierOperator")) {
+    : grid_(grid), transform_(checked_transform(grid, std::move(transform), "SlabFourierOperator", true)) {
   e_star = checked_composite_modulus(e_star);
   // FFTW's transforms are unnormalised: fold 1/N into the kernel.
   const double inverse_n = 1.0 / static_cast<double>(grid.size());
@@ -80,7 +83,7 @@ void SlabFourierOperator::apply(std::span<const double> pressure, std::span<doub
 
 SlabFourierPreconditioner::SlabFourierPreconditioner(const Grid& grid, double e_star,
                                                      std::shared_ptr<SlabRealFft> transform)
-    : transform_(checked_transform(grid, std::move(transform), "SlabFourierPreconditioner")) {
+    : transform_(checked_transform(grid, std::move(transform), "SlabFourierPreconditioner", false)) {
   const double scale = 0.5 * checked_composite_modulus(e_star) / static_cast<double>(grid.size());
   symbol_ = on_local_spectrum(grid, transform_->layout(), [&](double q) { return q * scale; });
   // The mean mode (zero above) gets the smallest non-zero |q|, the first

@@ -3,8 +3,9 @@
 
 usage: distributed_solve_test.py MPI_PROGRAM SERIAL_PROGRAM MPIEXEC SOURCE_DIR WORK_DIR
 
-For periodic Hertz and rough contacts, `mpiexec -np 1, 2 and 3 MPI_PROGRAM
-solve` (3 gives uneven slabs) must write the serial program's file: the same
+For Hertz and rough contacts on periodic and free (non-periodic) grids,
+`mpiexec -np 1, 2 and 3 MPI_PROGRAM solve` (3 gives uneven slabs) must write
+the serial program's file: the same
 datasets, shapes, types and attributes, fields equal within kFieldTolerance
 of their largest value, the contact set identical. Failures (a bad file,
 which only the first process reads; an invalid option; a solve not
@@ -154,6 +155,23 @@ rough = ["--height-map", os.path.join(source_dir, "examples", "self_affine_128.h
          "--solver", "pk-fourier", "--tol", "1e-12"] + common
 solve_case("rough-force", rough + ["--mean-pressure", "2e8"])
 solve_case("rough-approach", rough + ["--approach", "1e-6"])
+# Free (non-periodic) grids: the padded convolution with Love's coefficients.
+# Hertz on a 64 x 51 grid (odd: 17 rows on each of 3 processes, the padded
+# spectrum's 65 columns 22, 22 and 21), both solvers, load and displacement
+# controlled.
+free_hertz = ["--geometry", "sphere", "--radius", "0.01", "--grid", "64x51", "--size", "1e-3x0.796875e-3",
+              "--boundary", "free", "--tol", "1e-12"] + common
+solve_case("free-hertz-pk-fourier-force", free_hertz + ["--solver", "pk-fourier", "--force", "5"])
+solve_case("free-hertz-pk-fourier-approach", free_hertz + ["--solver", "pk-fourier", "--approach", "4e-7"])
+solve_case("free-hertz-pk-force", free_hertz + ["--solver", "pk", "--force", "5"])
+solve_case("free-hertz-pk-approach", free_hertz + ["--solver", "pk", "--approach", "4e-7"])
+# The rough example surface as a free one (many contact spots), 128 x 128.
+free_rough = ["--height-map", os.path.join(source_dir, "examples", "self_affine_128.h5"), "--boundary", "free",
+              "--tol", "1e-12"] + common
+solve_case("free-rough-pk-fourier-force", free_rough + ["--solver", "pk-fourier", "--mean-pressure", "2e8"])
+solve_case("free-rough-pk-fourier-approach", free_rough + ["--solver", "pk-fourier", "--approach", "1e-6"])
+solve_case("free-rough-pk-force", free_rough + ["--solver", "pk", "--mean-pressure", "2e8"])
+solve_case("free-rough-pk-approach", free_rough + ["--solver", "pk", "--approach", "1e-6"])
 # On one process the MPI program solves what is not distributed yet as the
 # serial program does: the default solver, pk-multilevel.
 solve_case("hertz-one-process-multilevel", hertz + ["--solver", "pk-multilevel", "--tol", "1e-12"], (1,))
@@ -166,6 +184,9 @@ for processes in (2, 3):
     failure_case("invalid option", processes, hertz + ["--solver", "pk-fourier", "--tol", "2"], "tol", missing)
     failure_case("not distributed yet", processes, hertz + ["--solver", "pk-multilevel"],
                  "is not available with more than one process yet", missing)
+    failure_case("free multilevel not distributed yet", processes,
+                 free_hertz + ["--solver", "pk-multilevel", "--force", "5"],
+                 "type = pk-multilevel is not available with more than one process yet", missing)
     failure_case("1D not distributed yet", processes,
                  ["--geometry", "cylinder", "--radius", "0.01", "--grid", "64", "--size", "1e-3", "--boundary",
                   "periodic", "--force", "1e3", "--solver", "pk-fourier"] + common,

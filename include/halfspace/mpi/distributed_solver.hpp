@@ -13,9 +13,9 @@
 
 namespace halfspace::mpi {
 
-// Whether make_distributed_solver takes `options` on `grid`: a periodic 2D
-// grid, solver pk, pk-fourier or pk-multilevel (block deflation as the
-// serial solvers take it), no hardness cap, no adhesion.
+// Whether make_distributed_solver takes `options` on `grid`: a 2D grid
+// (periodic or free), solver pk, pk-fourier or pk-multilevel (block
+// deflation as the serial solvers take it), no hardness cap, no adhesion.
 bool distributable(const Grid& grid, const solvers::SolverOptions& options);
 
 // Throws SolverOptionError naming the option and what to use instead unless
@@ -24,8 +24,10 @@ bool distributable(const Grid& grid, const solvers::SolverOptions& options);
 void check_distributable(const Grid& grid, const solvers::SolverOptions& options);
 
 // Polonsky-Keer (pk: the paper's form; pk-fourier: the projected form with
-// the Fourier preconditioner; pk-multilevel: distributed_multilevel.hpp,
-// whose distributed levels are made here) on the slab operator of `grid` over `comm`,
+// the Fourier preconditioner, with block deflation if asked for;
+// pk-multilevel: distributed_multilevel.hpp, whose distributed levels are
+// made here) on the slab operator of `grid` (periodic: SlabFourierOperator;
+// free: SlabFreeOperator) over `comm`,
 // which must outlive the solver. Fields given to and returned by the solver
 // hold this process's rows (slab_layout). Collective; throws as
 // check_distributable and SolverOptions::validate do.

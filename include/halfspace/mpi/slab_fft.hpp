@@ -37,7 +37,13 @@ class SlabRealFft {
   // in one buffer, with the threads in force (set_threads). Collective;
   // throws InputError for sizes FFTW cannot take, std::runtime_error if
   // FFTW cannot plan.
-  SlabRealFft(std::size_t nx, std::size_t ny, const MpiCommunicator& comm, FftPlanning planning);
+  // With `workspace` (FFTW-aligned, as another transform's buffer is) large
+  // enough for this process's part, the transform works in it instead of a
+  // buffer of its own: for a transform that runs only while the owner of
+  // the workspace is idle (the Fourier preconditioner in a free operator's
+  // padded buffer). Whether it is large enough may differ between processes.
+  SlabRealFft(std::size_t nx, std::size_t ny, const MpiCommunicator& comm, FftPlanning planning,
+              std::span<std::complex<double>> workspace = {});
   ~SlabRealFft();
   SlabRealFft(const SlabRealFft&) = delete;
   SlabRealFft& operator=(const SlabRealFft&) = delete;
@@ -62,6 +68,7 @@ class SlabRealFft {
   const MpiCommunicator& comm_;
   std::size_t padded_cols_ = 0;  // 2 (nx/2 + 1): FFTW's in-place row length
   std::complex<double>* buffer_ = nullptr;
+  bool owns_buffer_ = true;
   void* forward_plan_ = nullptr;  // fftw_plan
   void* backward_plan_ = nullptr;
 };

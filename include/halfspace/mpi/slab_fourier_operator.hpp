@@ -41,7 +41,10 @@ class SlabFourierOperator final : public InfluenceOperator {
 class SlabFourierPreconditioner final : public solvers::Preconditioner {
  public:
   // M^-1 = E*|q|/2, the mean mode at the smallest non-zero |q|, as
-  // FourierPreconditioner; `transform` as for the operator.
+  // FourierPreconditioner; `transform` as for the operator. On a free grid
+  // too (with a transform of its own), as the serial solvers precondition
+  // the padded operator with the unpadded grid's symbol. Throws InputError
+  // unless the grid is 2D and the transform its own.
   SlabFourierPreconditioner(const Grid& grid, double e_star, std::shared_ptr<SlabRealFft> transform);
   // Collective.
   void apply(std::span<const double> in, std::span<double> out) override;

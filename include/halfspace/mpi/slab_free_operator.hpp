@@ -1,0 +1,51 @@
+// The free (non-periodic) half-space's influence operator on a 2D grid
+// spread over MPI processes in slabs of rows: the distributed counterpart of
+// FftInfluenceOperator on a free grid, the linear convolution with Love's
+// rectangle coefficients by zero padding to (2ny, 2nx) (DC-FFT, Liu, Wang &
+// Liu 2000) through SlabPaddedRealFft. Fields hold this process's rows only.
+// Compiled only with HALFSPACE_MPI.
+#pragma once
+
+#include <complex>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "halfspace/fft/fft_planning.hpp"
+#include "halfspace/grid.hpp"
+#include "halfspace/mpi/slab_padded_fft.hpp"
+#include "halfspace/operators/influence_operator.hpp"
+
+namespace halfspace::mpi {
+
+class SlabFreeOperator final : public InfluenceOperator {
+ public:
+  // u = K p on the free 2D `grid` for composite modulus e_star (Pa), over
+  // `comm` (which must outlive the operator). Each process computes the
+  // coefficients' spectrum of its own columns only. Collective; throws
+  // InputError unless the grid is 2D and free.
+  SlabFreeOperator(const Grid& grid, double e_star, const MpiCommunicator& comm,
+                   FftPlanning planning = FftPlanning::estimate);
+
+  const Grid& grid() const override { return grid_; }
+  std::size_t local_size() const override { return fft_->layout().local_size(); }
+  const linalg::Communicator& communicator() const override { return fft_->communicator(); }
+  // Collective: every process applies the operator together.
+  void apply(std::span<const double> pressure, std::span<double> displacement) override;
+  double self_influence() const override { return self_; }
+  // The padded transform's buffer, whose contents matter only inside
+  // apply(): a workspace for a transform that runs only between products
+  // (the Fourier preconditioner's SlabRealFft), as FftInfluenceOperator's
+  // scratch() is serially. Lives as long as the operator.
+  std::span<std::complex<double>> scratch() { return fft_->buffer(); }
+
+ private:
+  Grid grid_;
+  std::unique_ptr<SlabPaddedRealFft> fft_;
+  // The coefficients' (real) spectrum over the padded size on this
+  // process's columns, [c * (ny + 1) + r]: even in ky, so ky = 0 .. ny only.
+  std::vector<double> symbol_;
+  double self_ = 0.0;
+};
+
+}  // namespace halfspace::mpi

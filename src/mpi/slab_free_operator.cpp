@@ -1,0 +1,151 @@
+// Love's coefficients k(|i|, |j|) on the (2ny, 2nx) wrap-around grid are the
+// quadrant 0 <= i <= nx, 0 <= j <= ny mirrored in both axes (as
+// FftInfluenceOperator builds them), so their DFT is real and is the 2D
+// DCT-I (FFTW's REDFT00) of the quadrant: kx = 0 .. nx, ky = 0 .. ny, and
+// ky > ny reads 2ny - ky. Each process evaluates the quadrant rows FFTW-MPI
+// gives it, transforms them along x, FFTW-MPI transposes the quadrant to the
+// padded transform's columns, and each process transforms its columns along
+// y: it never holds more than its share of the quadrant.
+#include "halfspace/mpi/slab_free_operator.hpp"
+
+#include <fftw3-mpi.h>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cassert>
+#include <complex>
+#include <mutex>
+#include <new>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+#include "../fft/fftw_planner.hpp"
+#include "halfspace/error.hpp"
+#include "halfspace/kernels/love_rectangle.hpp"
+#include "halfspace/linalg/parallel.hpp"
+#include "halfspace/material.hpp"
+#include "halfspace/threads.hpp"
+
+namespace halfspace::mpi {
+namespace {
+
+const Grid& checked_free_grid(const Grid& grid) {
+  if (grid.dimension() != 2 || grid.periodic()) {
+    throw InputError(fmt::format("SlabFreeOperator: the distributed operator needs a free 2D grid, not a {} {}D one",
+                                 to_string(grid.boundary()), grid.dimension()));
+  }
+  return grid;
+}
+
+// The one-off buffer and plans of the coefficients' transform, released
+// whatever happens.
+class QuadrantTransform {
+ public:
+  explicit QuadrantTransform(std::size_t values) : values_(fftw_alloc_real(std::max<std::size_t>(values, 1))) {
+    if (values_ == nullptr) throw std::bad_alloc();
+  }
+  ~QuadrantTransform() {
+    const std::lock_guard<std::mutex> lock(fft::detail::fftw_planner_mutex());
+    for (fftw_plan plan : plans_) fftw_destroy_plan(plan);
+    fftw_free(values_);
+  }
+  QuadrantTransform(const QuadrantTransform&) = delete;
+  QuadrantTransform& operator=(const QuadrantTransform&) = delete;
+
+  double* values() { return values_; }
+  // Keeps `plan` to destroy it; throws std::runtime_error if it is null.
+  fftw_plan keep(fftw_plan plan) {
+    if (plan == nullptr) throw std::runtime_error("FFTW-MPI could not plan the free operator's coefficient transform");
+    plans_.push_back(plan);
+    return plan;
+  }
+
+ private:
+  double* values_;
+  std::vector<fftw_plan> plans_;
+};
+
+// howmany DCT-I (REDFT00) of n values each, contiguous, in place.
+fftw_plan dct_rows(QuadrantTransform& buffer, std::size_t n, std::size_t howmany) {
+  const int length[1] = {static_cast<int>(n)};
+  const fftw_r2r_kind kind[1] = {FFTW_REDFT00};
+  return buffer.keep(fftw_plan_many_r2r(1, length, static_cast<int>(howmany), buffer.values(), nullptr, 1,
+                                        static_cast<int>(n), buffer.values(), nullptr, 1, static_cast<int>(n), kind,
+                                        FFTW_ESTIMATE | FFTW_DESTROY_INPUT));
+}
+
+}  // namespace
+
+SlabFreeOperator::SlabFreeOperator(const Grid& grid, double e_star, const MpiCommunicator& comm, FftPlanning planning)
+    : grid_(checked_free_grid(grid)) {
+  e_star = checked_composite_modulus(e_star);
+  fft_ = std::make_unique<SlabPaddedRealFft>(grid.nx(), grid.ny(), comm, planning);
+  const SlabLayout& layout = fft_->layout();
+  const std::size_t nx = grid.nx();
+  const std::size_t ny = grid.ny();
+  const double dx = grid.dx();
+  const double dy = grid.dy();
+
+  // The quadrant's rows here, and after the transpose its columns, which
+  // must be the padded transform's (both FFTW-MPI's default block of nx + 1).
+  const ptrdiff_t n[2] = {static_cast<ptrdiff_t>(ny + 1), static_cast<ptrdiff_t>(nx + 1)};
+  ptrdiff_t rows = 0;
+  ptrdiff_t first_row = 0;
+  ptrdiff_t columns = 0;
+  ptrdiff_t first_column = 0;
+  const ptrdiff_t allocation = fftw_mpi_local_size_many_transposed(
+      2, n, 1, FFTW_MPI_DEFAULT_BLOCK, FFTW_MPI_DEFAULT_BLOCK, comm.get(), &rows, &first_row, &columns, &first_column);
+  if (static_cast<std::size_t>(columns) != layout.columns ||
+      static_cast<std::size_t>(first_column) != layout.first_column) {
+    throw std::logic_error("FFTW-MPI distributes the free operator's coefficient columns unlike its transform's");
+  }
+  QuadrantTransform quadrant(static_cast<std::size_t>(allocation));
+  double* values = quadrant.values();
+  linalg::for_each_row(static_cast<std::size_t>(rows), nx + 1, [&](std::size_t j) {
+    const double y = static_cast<double>(static_cast<std::size_t>(first_row) + j) * dy;
+    for (std::size_t i = 0; i <= nx; ++i) {
+      values[j * (nx + 1) + i] =
+          kernels::love_rectangle_displacement(static_cast<double>(i) * dx, y, 0.5 * dx, 0.5 * dy, e_star);
+    }
+  });
+  fftw_plan along_x = nullptr;
+  fftw_plan transpose = nullptr;
+  fftw_plan along_y = nullptr;
+  {
+    const std::lock_guard<std::mutex> lock(fft::detail::fftw_planner_mutex());
+    fftw_plan_with_nthreads(threads());
+    if (rows > 0) along_x = dct_rows(quadrant, nx + 1, static_cast<std::size_t>(rows));
+    transpose = quadrant.keep(fftw_mpi_plan_many_transpose(
+        n[0], n[1], 1, FFTW_MPI_DEFAULT_BLOCK, FFTW_MPI_DEFAULT_BLOCK, values, values, comm.get(), FFTW_ESTIMATE));
+    if (columns > 0) along_y = dct_rows(quadrant, ny + 1, static_cast<std::size_t>(columns));
+  }
+  if (along_x != nullptr) fftw_execute(along_x);
+  fftw_execute(transpose);
+  if (along_y != nullptr) fftw_execute(along_y);
+  // FFTW's transforms are unnormalised: fold 1/N of the padded grid in.
+  const double inverse_n = 1.0 / fft_->padded_size();
+  symbol_.resize(layout.columns * (ny + 1));
+  linalg::for_each_index(symbol_.size(), [&](std::size_t k) { symbol_[k] = values[k] * inverse_n; });
+  // K_ii: the coefficient at offset 0, as the serial operator takes it.
+  self_ = kernels::love_rectangle_displacement(0.0, 0.0, 0.5 * dx, 0.5 * dy, e_star);
+}
+
+void SlabFreeOperator::apply(std::span<const double> pressure, std::span<double> displacement) {
+  assert(pressure.size() == local_size() && displacement.size() == local_size());
+  // In place is safe: forward() reads all of the pressure before backward()
+  // writes the displacement.
+  fft_->forward(pressure);
+  const std::size_t ny = grid_.ny();
+  const std::size_t padded_rows = 2 * ny;
+  std::span<std::complex<double>> spectrum = fft_->spectrum();
+  linalg::for_each_row(fft_->layout().columns, padded_rows, [&](std::size_t c) {
+    std::complex<double>* column = spectrum.data() + c * padded_rows;
+    const double* symbol = symbol_.data() + c * (ny + 1);
+    for (std::size_t r = 0; r <= ny; ++r) column[r] *= symbol[r];
+    for (std::size_t r = ny + 1; r < padded_rows; ++r) column[r] *= symbol[padded_rows - r];
+  });
+  fft_->backward(displacement);
+}
+
+}  // namespace halfspace::mpi
