@@ -5,8 +5,8 @@
 usage: distributed_multilevel_test.py MPI_PROGRAM SERIAL_PROGRAM MPIEXEC SOURCE_DIR WORK_DIR
 
 `mpiexec -np 1, 2 and 3 MPI_PROGRAM solve` with the default solver
-(pk-multilevel) on periodic Hertz and rough contacts, single solves and
-3-step load sweeps, and with block deflation (pk-multilevel and
+(pk-multilevel) on periodic and free Hertz and rough contacts, single
+solves and 3-step load sweeps, and with block deflation (pk-multilevel and
 pk-fourier), must write the serial program's files: the same
 datasets, shapes, types and attributes (iteration counts, coarse levels and
 their iterations included), floating-point data equal within kTolerance of
@@ -189,6 +189,11 @@ rough = ["--height-map", os.path.join(source_dir, "examples", "self_affine_128.h
          "--tol", "1e-12"] + common
 solve_case("rough-multilevel-force", rough + ["--mean-pressure", "2e8"])
 solve_case("rough-multilevel-approach", rough + ["--approach", "1e-6"])
+# Free grids (the padded convolution): the same Hertz and rough cases.
+free_hertz = [a if a != "periodic" else "free" for a in hertz]
+solve_case("free-hertz-multilevel", free_hertz + ["--force", "5"])
+free_rough = [a if a != "periodic" else "free" for a in rough]
+solve_case("free-rough-multilevel-force", free_rough + ["--mean-pressure", "2e8"])
 # Load sweeps: the second step warm-started, the third off by a factor 2
 # (beyond the warm-start ratio 1.5), so started from the coarse levels again.
 solve_case("rough-sweep-force", rough + ["--mean-pressure", "1e8,2e8,4e8"], sweep=True)
@@ -208,6 +213,8 @@ else:
                       "--deflation-block", "32", "--tol", "1e-12"] + common
     solve_case("rough-multilevel-deflation", deflation_case, deflated=True)
     solve_case("rough-pk-fourier-deflation", deflation_case + ["--solver", "pk-fourier"], deflated=True)
+    solve_case("free-rough-multilevel-deflation", [a if a != "periodic" else "free" for a in deflation_case],
+               (2, 3), deflated=True)
 
 missing = os.path.join(work_dir, "failure.h5")
 for processes in (2, 3):
