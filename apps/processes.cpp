@@ -40,7 +40,7 @@ bool prints_messages() {
   return true;
 }
 SolveSetup make_setup_everywhere(const std::function<SolveSetup(const SurfaceSharing& share)>& make) {
-  return make(make_whole_surface);
+  return make(SurfaceSharing{});
 }
 std::optional<int> run_distributed_solve(const SolveSetup& /*setup*/) {
   return std::nullopt;

@@ -29,11 +29,11 @@ bool prints_messages();
 
 // The setup of a solve on every process: make(share) checks the options and
 // makes the surface through `share` (make_solve_setup). In an MPI run every
-// process checks the options, the first reads or builds the surface and
-// hands the others their rows; if anything fails on any process, it throws
-// on all, the error of the first process that failed (one message, one exit
-// code, no process left waiting). The serial build calls
-// make(make_whole_surface).
+// process checks the options and makes or reads its rows of the surface (or
+// the first reads it whole and hands the others their rows: see
+// SurfaceSharing); if anything fails on any process, it throws on all, the
+// error of the first process that failed (one message, one exit code, no
+// process left waiting). The serial build calls make(SurfaceSharing{}).
 SolveSetup make_setup_everywhere(const std::function<SolveSetup(const SurfaceSharing& share)>& make);
 
 // Runs the single solve of `setup` distributed over the MPI processes and

@@ -448,7 +448,8 @@ Grid grid_for_geometry(const SolveOptions& o, Boundary boundary) {
 // needs. `request` names where the grid came from.
 using GridCheck = std::function<void(const Grid& grid, const std::string& request)>;
 
-Surface builtin_surface(const SolveOptions& o, Boundary boundary, const GridCheck& check_grid) {
+Surface builtin_surface(const SolveOptions& o, Boundary boundary, const GridCheck& check_grid,
+                        const std::function<RowRange(const Grid&)>& rows_of) {
   reject_given(o,
                {{"dataset", o.dataset.has_value()},
                 {"dx", o.dx.has_value()},
@@ -490,10 +491,11 @@ Surface builtin_surface(const SolveOptions& o, Boundary boundary, const GridChec
   }
   Grid grid = grid_for_geometry(o, boundary);
   check_grid(grid, o.describe("grid"));
+  // Each process its own rows, from their global coordinates.
+  const auto [first_row, rows] = rows_of && grid.dimension() == 2 ? rows_of(grid) : RowRange{0, grid.ny()};
   const Activity activity(fmt::format("making the {} surface on the {} grid", shape_name, grid.shape_string()));
-  Eigen::ArrayXd heights = geometry::make_surface_heights(grid, spec);
-  const std::size_t rows = grid.dimension() == 1 ? 1 : grid.ny();
-  return {std::move(grid), std::move(heights), std::move(source), {}, 0, rows};
+  Eigen::ArrayXd heights = geometry::make_surface_rows(grid, spec, first_row, rows);
+  return {std::move(grid), std::move(heights), std::move(source), {}, first_row, rows};
 }
 
 // The spacing along one axis: the option if given, else the file attribute
@@ -551,7 +553,10 @@ surface::PreparationOptions preparation_from(const SolveOptions& o, Boundary bou
   return prepare;
 }
 
-Surface height_map_surface(const SolveOptions& o, Boundary boundary, const GridCheck& check_grid) {
+// `slabs`: read this process's rows through it (reads_height_map_in_slabs);
+// null: read the whole map.
+Surface height_map_surface(const SolveOptions& o, Boundary boundary, const GridCheck& check_grid,
+                           const SurfaceSharing* slabs) {
   reject_given(o,
                {{"radius", o.radius.has_value()},
                 {"wavelength", o.wavelength.has_value()},
@@ -563,7 +568,17 @@ Surface height_map_surface(const SolveOptions& o, Boundary boundary, const GridC
   const io::ReadOptions read = read_options_from(o);
   const surface::PreparationOptions prepare = preparation_from(o, boundary);
   const Activity reading(fmt::format("reading the height map {}", file));
-  HeightMap map = io::read_height_map(file, read);
+  HeightMap map;
+  std::size_t first_row = 0;
+  std::optional<std::size_t> slab_rows;  // set when this process holds only some rows
+  if (slabs) {
+    io::HeightMapRows part = slabs->read_hdf5_rows(file, io::hdf5_dataset(read));
+    map = std::move(part.map);
+    first_row = part.first_row;
+    if (part.rows != map.ny) slab_rows = part.rows;
+  } else {
+    map = io::read_height_map(file, read);
+  }
   std::string source = map.source.empty() ? file : map.source;
 
   const std::optional<double> dx = height_map_spacing(o, "dx", o.dx, map.dx);
@@ -591,7 +606,15 @@ Surface height_map_surface(const SolveOptions& o, Boundary boundary, const GridC
   }
 
   try {
-    surface::prepare_height_map(map, prepare);
+    if (slabs) {
+      // prepare_height_map's steps that apply (reads_height_map_in_slabs),
+      // with the whole map's sums when the rows are spread out.
+      const linalg::Communicator& comm = slab_rows ? *slabs->communicator : linalg::serial_communicator();
+      surface::refuse_invalid_points_rows(map, first_row, comm);
+      surface::detrend_rows(map, prepare.detrend, first_row, comm);
+    } else {
+      surface::prepare_height_map(map, prepare);
+    }
   } catch (const FileError& error) {
     // Only the refusal of invalid points is a FileError here: say how to proceed.
     throw FileError(fmt::format("{} (pass --invalid fill or --invalid crop)", error.what()));
@@ -600,8 +623,8 @@ Surface height_map_surface(const SolveOptions& o, Boundary boundary, const GridC
       map.dimension == 1 ? Grid::line(map.nx, map.dx, boundary) : Grid::plane(map.nx, map.ny, map.dx, map.dy, boundary);
   check_grid(grid, fmt::format("height map {} ({} cells{})", file, grid.shape_string(),
                                map.preparation.empty() ? "" : " after preparation"));
-  const std::size_t rows = grid.dimension() == 1 ? 1 : grid.ny();
-  return {std::move(grid), std::move(map.heights), std::move(source), std::move(map.preparation), 0, rows};
+  const std::size_t rows = slab_rows.value_or(grid.dimension() == 1 ? 1 : grid.ny());
+  return {std::move(grid), std::move(map.heights), std::move(source), std::move(map.preparation), first_row, rows};
 }
 
 // Subsurface stresses (--stress-depths, --stress-nu): the depths and Poisson's
@@ -653,6 +676,16 @@ double stress_peak_memory(const Grid& grid, std::size_t depth_count, bool coated
 
 }  // namespace
 
+bool reads_height_map_in_slabs(const SolveOptions& o) {
+  if (!o.height_map || o.geometry || o.window || o.pad) return false;
+  try {
+    if (o.invalid && surface::parse_invalid_points(*o.invalid) != surface::InvalidPoints::refuse) return false;
+    return io::checked_format(*o.height_map, read_options_from(o)) == io::HeightMapFormat::hdf5;
+  } catch (const InputError&) {
+    return false;  // the whole reading reports it, as the serial program does
+  }
+}
+
 SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& share) {
   check_surface_choice(options);
   const std::optional<LayeredMaterial> coating = coating_from(options);
@@ -677,17 +710,35 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
         solver.interface_law.check_load(grid, Loading{loading.mode, value});
       });
     }
-    require_memory(fmt::format("{}: {}", request, solve_description(grid, solver, load_values.size())),
-                   std::max(solve_memory_estimate(grid, solver, load_values.size()),
-                            stress_peak_memory(grid, stress.depths.size(), coating.has_value())),
-                   limit);
+    const std::string what = fmt::format("{}: {}", request, solve_description(grid, solver, load_values.size()));
+    const double estimate = std::max(solve_memory_estimate(grid, solver, load_values.size()),
+                                     stress_peak_memory(grid, stress.depths.size(), coating.has_value()));
+    if (share.check_memory) {
+      // A process holding some rows runs the distributed single solve (any
+      // other run is refused on several processes before it starts).
+      const std::size_t all_rows = grid.dimension() == 1 ? 1 : grid.ny();
+      share.check_memory(
+          what, grid,
+          [&](std::size_t rows) {
+            return rows >= all_rows ? estimate : slab_solve_memory_estimate(grid, solver, rows);
+          },
+          limit);
+    } else {
+      require_memory(what, estimate, limit);
+    }
   };
   check_outputs_against_inputs(options, output, load_values.size() > 1, solver.fft_planning);
 
-  Surface surface = share([&] {
-    return options.geometry ? builtin_surface(options, boundary, check_grid)
-                            : height_map_surface(options, boundary, check_grid);
-  });
+  Surface surface = [&] {
+    if (options.geometry && share.rows) return builtin_surface(options, boundary, check_grid, share.rows);
+    if (!options.geometry && share.read_hdf5_rows && reads_height_map_in_slabs(options)) {
+      return height_map_surface(options, boundary, check_grid, &share);
+    }
+    return share.whole([&] {
+      return options.geometry ? builtin_surface(options, boundary, check_grid, {})
+                              : height_map_surface(options, boundary, check_grid, nullptr);
+    });
+  }();
   const std::size_t rows = surface.grid.dimension() == 1 ? 1 : surface.grid.ny();
   const bool slab_ok = surface.first_row + surface.rows <= rows &&
                        static_cast<std::size_t>(surface.heights.size()) == surface.rows * surface.grid.nx();

@@ -8,14 +8,18 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "halfspace/fft/fft_planning.hpp"
 #include "halfspace/grid.hpp"
+#include "halfspace/io/hdf5_height_map_reader.hpp"
 #include "halfspace/layered_material.hpp"
+#include "halfspace/linalg/communicator.hpp"
 #include "halfspace/solvers/contact_solver.hpp"
 #include "halfspace/solvers/loading.hpp"
 #include "halfspace/solvers/solver_options.hpp"
+#include "memory_check.hpp"
 #include "solve_options.hpp"
 
 namespace halfspace::app {
@@ -62,20 +66,49 @@ struct Surface {
   std::size_t rows = 0;  // the grid's ny (1 in 1D) unless the surface is shared out in slabs
 };
 
-// How the processes of a run get the surface: given the function that reads
-// or builds it whole, returns this process's surface. The serial program
-// calls it; an MPI run calls it on the first process and hands the others
-// their rows (apps/mpi/).
-using SurfaceSharing = std::function<Surface(const std::function<Surface()>& make_whole)>;
+// Which rows of a 2D grid a process holds: {first_row, rows}.
+using RowRange = std::pair<std::size_t, std::size_t>;
+
 inline Surface make_whole_surface(const std::function<Surface()>& make_whole) {
   return make_whole();
 }
+
+// How the processes of a run get the surface. The serial program (the
+// defaults) reads or builds it whole. An MPI run (apps/mpi/) sets the rest:
+// a built-in surface is made by every process for its rows, an HDF5 height
+// map read by every process for its rows (when its preparation can be done
+// on slabs: see reads_height_map_in_slabs), and any other surface read
+// whole by the first process, which hands the others their rows.
+struct SurfaceSharing {
+  // Given the function that reads or builds the surface whole, returns this
+  // process's surface.
+  std::function<Surface(const std::function<Surface()>& make_whole)> whole = make_whole_surface;
+  // The rows of a 2D grid this process holds; unset: all. Collective.
+  std::function<RowRange(const Grid& grid)> rows;
+  // Reads this process's rows of an HDF5 height map; unset: maps are read
+  // whole. Collective.
+  std::function<io::HeightMapRows(const std::filesystem::path& path, const std::string& dataset)> read_hdf5_rows;
+  // The processes that the preparation of a map read in rows adds its sums over.
+  const linalg::Communicator* communicator = &linalg::serial_communicator();
+  // The memory check of a run on `grid`; estimate(rows) is what a process
+  // holding that many of its rows needs (all of them: the serial run).
+  // Unset: require_memory(request, estimate(all rows), limit).
+  std::function<void(const std::string& request, const Grid& grid,
+                     const std::function<double(std::size_t rows)>& estimate, const std::optional<MemoryLimit>& limit)>
+      check_memory;
+};
+
+// Whether make_solve_setup reads the height map of `options` in rows when
+// `share` can: an HDF5 file whose preparation needs no whole map (no
+// window, invalid points refused, any detrending; a periodic grid is never
+// padded).
+bool reads_height_map_in_slabs(const SolveOptions& options);
 
 // Applies the defaults, checks every option and their combinations, builds
 // the surface (reading the height map file, if any; through `share`) and
 // checks that the output file can be created. Throws InputError (FileError
 // for files) with a one-line message naming the option, its value and the
 // rule it broke.
-SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& share = make_whole_surface);
+SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& share = {});
 
 }  // namespace halfspace::app

@@ -172,6 +172,16 @@ double solve_memory_estimate(const Grid& grid, const solvers::SolverOptions& set
   return kProgramBytes + std::max(solving, writing);
 }
 
+double slab_solve_memory_estimate(const Grid& grid, const solvers::SolverOptions& settings, std::size_t rows) {
+  const Extents g(grid);
+  const double share = g.line ? 1.0 : static_cast<double>(rows) / g.ny;
+  // The slab operator and preconditioner keep their multipliers on the
+  // whole (transposed) half spectrum, not folded as the serial EvenSymbol:
+  // counted on top of the folded ones solver_peak has.
+  const double unfolded_symbols = 2.0 * kDouble * (std::floor(g.nx / 2.0) + 1.0) * g.ny;
+  return kProgramBytes + share * (2.0 * kDouble * g.cells() + solver_peak(grid, settings) + unfolded_symbols);
+}
+
 double generate_memory_estimate(const Grid& grid) {
   const Extents g(grid);
   const double rows = g.line ? 1.0 : g.ny;

@@ -1,9 +1,12 @@
 // `mpirun -np N halfspace solve ...`: every process validates the same
-// options (so that they fail alike); the first reads or builds the surface
-// and hands every other its slab of rows; all solve with the distributed
-// Polonsky-Keer; the first gathers the fields and writes the result file
-// through the serial writer, so the file is the serial program's in layout
-// and attributes (docs/usage.md#running-on-a-cluster).
+// options (so that they fail alike); each builds its slab of rows of a
+// built-in surface, or reads it from an HDF5 height map (parallel HDF5),
+// while any other height map is read whole by the first process, which
+// hands every other its slab and keeps only its own; all solve with the
+// distributed Polonsky-Keer; the statistics come from the slabs and small
+// reductions, and all write their rows of the result file at once, so no
+// process ever holds a whole field. The file is the serial program's in
+// layout and attributes (docs/usage.md#running-on-a-cluster).
 #include "mpi_program.hpp"
 
 #include <fmt/format.h>
@@ -20,6 +23,7 @@
 
 #include "../activity.hpp"
 #include "../exit_codes.hpp"
+#include "../memory_check.hpp"
 #include "../progress.hpp"
 #include "../summary.hpp"
 #include "../sweep_command.hpp"
@@ -28,9 +32,14 @@
 #include "halfspace/io/result_metadata.hpp"
 #include "halfspace/io/result_writer.hpp"
 #include "halfspace/mpi/distributed_solver.hpp"
+#include "halfspace/mpi/node_memory.hpp"
+#include "halfspace/mpi/parallel_height_map_reader.hpp"
+#include "halfspace/mpi/parallel_result_writer.hpp"
 #include "halfspace/mpi/session.hpp"
+#include "halfspace/mpi/slab_contact_statistics.hpp"
 #include "halfspace/mpi/slab_fft.hpp"
 #include "halfspace/mpi/slab_gather.hpp"
+#include "halfspace/mpi/slab_surface_statistics.hpp"
 #include "halfspace/threads.hpp"
 #include "mpi_sweep.hpp"
 
@@ -126,13 +135,24 @@ namespace {
 // made.
 struct SurfaceDeferred {};
 
-// The first process reads or builds the surface and keeps it whole; every
-// other gets its slab of rows. Collective.
+// Set while the first process reads or builds a whole surface alone.
+bool whole_on_first = false;
+
+// The first process reads or builds the surface whole and keeps its own
+// rows; every other gets its slab of rows. Collective.
 Surface share_surface(const std::function<Surface()>& make_whole) {
   const bool root = world->rank() == 0;
   std::optional<Surface> whole;
   mpi::run_agreed(*world, [&] {
-    if (root) whole.emplace(make_whole());
+    if (!root) return;
+    whole_on_first = true;
+    try {
+      whole.emplace(make_whole());
+    } catch (...) {
+      whole_on_first = false;
+      throw;
+    }
+    whole_on_first = false;
   });
   if (world->size() == 1) return std::move(*whole);
   const Grid grid = broadcast(whole ? std::optional<Grid>(whole->grid) : std::nullopt);
@@ -143,19 +163,18 @@ Surface share_surface(const std::function<Surface()>& make_whole) {
     for (const std::string& step : whole->preparation) steps += step + '\n';
   }
   broadcast(steps);
-  // A 1D grid is not distributed: the others hold no rows (the run is
-  // refused before they would need any).
-  const mpi::SlabLayout layout = grid.dimension() == 2 ? mpi::slab_layout(grid.nx(), grid.ny(), *world)
-                                                       : mpi::SlabLayout{grid.nx(), 1, 0, 0, 0, 0};
-  Eigen::ArrayXd local(static_cast<Eigen::Index>(root ? 0 : layout.local_size()));
-  if (grid.dimension() == 2) {
-    Eigen::ArrayXd mine(static_cast<Eigen::Index>(layout.local_size()));
-    mpi::scatter_rows(*world, layout,
-                      root ? std::span<const double>(whole->heights.data(), grid.size()) : std::span<const double>(),
-                      {mine.data(), layout.local_size()});
-    if (!root) local = std::move(mine);
+  // A 1D grid is not distributed: the first process keeps it, the others
+  // hold no rows (the run is refused before they would need any).
+  if (grid.dimension() == 1) {
+    if (root) return std::move(*whole);
+    return {grid, Eigen::ArrayXd(), std::move(source), {}, 0, 0};
   }
-  if (root) return std::move(*whole);
+  const mpi::SlabLayout layout = mpi::slab_layout(grid.nx(), grid.ny(), *world);
+  Eigen::ArrayXd local(static_cast<Eigen::Index>(layout.local_size()));
+  mpi::scatter_rows(*world, layout,
+                    root ? std::span<const double>(whole->heights.data(), grid.size()) : std::span<const double>(),
+                    {local.data(), layout.local_size()});
+  whole.reset();  // the first process too keeps only its rows
   std::vector<std::string> preparation;
   for (std::size_t begin = 0, end; (end = steps.find('\n', begin)) != std::string::npos; begin = end + 1) {
     preparation.push_back(steps.substr(begin, end - begin));
@@ -163,21 +182,83 @@ Surface share_surface(const std::function<Surface()>& make_whole) {
   return {grid, std::move(local), std::move(source), std::move(preparation), layout.first_row, layout.rows};
 }
 
+// The memory check of a distributed run: what one process needs for the
+// largest slab (slab_solve_memory_estimate), against what its machine has,
+// where the needs of the processes on one machine add up (they share its
+// memory); --max-memory bounds each process. Collective, except while the
+// first process reads a surface alone: it then also holds the whole map
+// (read and prepared), and counts the other processes on its machine as
+// needing as much as it does for its slab.
+int processes_on_node = 1;
+void check_process_memory(const std::string& request, const Grid& grid,
+                          const std::function<double(std::size_t rows)>& estimate,
+                          const std::optional<MemoryLimit>& limit) {
+  const auto processes = static_cast<std::size_t>(world->size());
+  const std::size_t rows = grid.dimension() == 1 ? 1 : grid.ny();
+  const double mine = estimate(grid.dimension() == 1 ? rows : (rows + processes - 1) / processes);
+  const bool per_process = limit && limit->given;
+  const auto check = [&](double together, int on_node, double extra) {
+    if (per_process) {
+      require_memory(fmt::format("{}, per process of {}", request, processes), mine + extra, limit);
+    } else {
+      require_memory(fmt::format("{}, on {} processes ({} on this machine, together)", request, processes, on_node),
+                     together + extra, limit);
+    }
+  };
+  if (whole_on_first) {
+    check(mine * processes_on_node, processes_on_node, 2.0 * 8.0 * static_cast<double>(grid.size()));
+    return;
+  }
+  mpi::run_agreed(*world, [&] {
+    const mpi::NodeShare node = mpi::share_of_node(*world, mine);
+    check(node.bytes, node.processes, 0.0);
+  });
+}
+
+SurfaceSharing distributed_sharing() {
+  SurfaceSharing share;
+  share.whole = share_surface;
+  share.rows = [](const Grid& grid) {
+    const mpi::SlabLayout layout = mpi::slab_layout(grid.nx(), grid.ny(), *world);
+    return RowRange{layout.first_row, layout.rows};
+  };
+  share.read_hdf5_rows = [](const std::filesystem::path& path, const std::string& dataset) {
+    return mpi::read_height_map_slab(*world, path, dataset);
+  };
+  share.communicator = world.get();
+  share.check_memory = check_process_memory;
+  return share;
+}
+
+// The first pass: no process communicates, so every hook stops it.
+SurfaceSharing deferred_sharing() {
+  SurfaceSharing share;
+  share.whole = [](const std::function<Surface()>&) -> Surface { throw SurfaceDeferred{}; };
+  share.rows = [](const Grid&) -> RowRange { throw SurfaceDeferred{}; };
+  share.read_hdf5_rows = [](const std::filesystem::path&, const std::string&) -> io::HeightMapRows {
+    throw SurfaceDeferred{};
+  };
+  share.check_memory = [](const std::string&, const Grid&, const std::function<double(std::size_t)>&,
+                          const std::optional<MemoryLimit>&) { throw SurfaceDeferred{}; };
+  return share;
+}
+
 }  // namespace
 
 SolveSetup make_distributed_setup(const std::function<SolveSetup(const SurfaceSharing& share)>& make) {
+  processes_on_node = mpi::share_of_node(*world, 0.0).processes;
   // Twice: first every process checks the options up to the surface without
   // any communication, and all agree on the outcome; only then do they
-  // meet in share_surface's collectives, which a process that failed before
+  // meet in the surface's collectives, which a process that failed before
   // them would never reach (the others would wait for it forever).
   mpi::run_agreed(*world, [&] {
     try {
-      make([](const std::function<Surface()>&) -> Surface { throw SurfaceDeferred{}; });
+      make(deferred_sharing());
     } catch (const SurfaceDeferred&) {
     }
   });
   std::optional<SolveSetup> setup;
-  mpi::run_agreed(*world, [&] { setup.emplace(make(share_surface)); });
+  mpi::run_agreed(*world, [&] { setup.emplace(make(distributed_sharing())); });
   return std::move(*setup);
 }
 
@@ -201,31 +282,23 @@ std::optional<int> run_solve_on_slabs(const SolveSetup& setup) {
   SolveResult result = solve_slab(setup, layout, settings);
   progress.clear();
 
-  // The whole fields on the first process, which writes the file.
-  activity.emplace(fmt::format("gathering the {} grid's fields", setup.grid.shape_string()));
-  const auto whole = static_cast<Eigen::Index>(root ? setup.grid.size() : 0);
-  Eigen::ArrayXd pressure(whole), displacement(whole), gap(whole);
+  // Statistics and the file from the slabs: no process holds a whole field.
   const auto span_of = [](const Eigen::ArrayXd& a) {
     return std::span<const double>(a.data(), static_cast<std::size_t>(a.size()));
   };
-  mpi::gather_rows(*world, layout, span_of(result.pressure), {pressure.data(), static_cast<std::size_t>(whole)});
-  mpi::gather_rows(*world, layout, span_of(result.displacement),
-                   {displacement.data(), static_cast<std::size_t>(whole)});
-  mpi::gather_rows(*world, layout, span_of(result.gap), {gap.data(), static_cast<std::size_t>(whole)});
-  result.pressure = std::move(pressure);
-  result.displacement = std::move(displacement);
-  result.gap = std::move(gap);
-
-  const std::span<const double> heights(setup.heights.data(), static_cast<std::size_t>(setup.heights.size()));
+  const Eigen::Map<const Eigen::ArrayXd> local_heights(
+      setup.heights.data() + (layout.first_row - setup.first_row) * layout.nx,
+      static_cast<Eigen::Index>(layout.local_size()));
+  const std::span<const double> heights(local_heights.data(), layout.local_size());
+  io::ResultMetadata metadata = io::provenance_metadata(provenance(setup));
   mpi::run_agreed(*world, [&] {
-    if (!root) return;
     activity.emplace(fmt::format("computing the statistics of the {} grid", setup.grid.shape_string()));
-    io::ResultMetadata metadata = io::result_metadata(provenance(setup), setup.grid, heights);
+    metadata.surface_statistics = mpi::slab_surface_statistics(setup.grid, layout, heights, *world);
     metadata.contact_statistics =
-        analysis::contact_statistics(setup.grid, span_of(result.pressure), span_of(result.gap));
-    activity.emplace(fmt::format("writing {}", setup.output.string()));
-    io::write_result(setup.output, setup.grid, heights, result, metadata);
+        mpi::slab_contact_statistics(setup.grid, layout, span_of(result.pressure), span_of(result.gap), *world);
   });
+  activity.emplace(fmt::format("writing {}", setup.output.string()));
+  mpi::write_result_slabs(*world, setup.output, setup.grid, layout, heights, result, metadata);
   activity.reset();
   if (root && !setup.quiet) {
     print_summary(stdout, setup, result);

@@ -1,7 +1,8 @@
 // The distributed load sweep. Every process holds its rows of the gap and of
 // the previous step's pressure (the warm start); the fields of each step go
-// to the first process as soon as it is solved, which keeps every step as
-// the serial sweep does and writes them with the serial writer.
+// to the first process as soon as it is solved, which keeps every step (and
+// the whole height map) as the serial sweep does and writes them with the
+// serial writer.
 #include "mpi_sweep.hpp"
 
 #include <fmt/format.h>
@@ -128,11 +129,21 @@ int run_sweep_on_slabs(const SolveSetup& setup, const mpi::MpiCommunicator& worl
       std::in_place, fmt::format("solving a load sweep ({} on the {} grid, {} processes)",
                                  solvers::to_string(setup.solver.type), setup.grid.shape_string(), world.size()));
   const std::vector<analysis::SweepStep> steps = solve_steps(setup, layout, world);
+  // The whole height map on the first process too, for the serial writer
+  // (a process may hold its rows only).
+  activity.emplace(fmt::format("gathering the {} grid's heights", setup.grid.shape_string()));
+  Eigen::ArrayXd heights(static_cast<Eigen::Index>(root ? setup.grid.size() : 0));
+  mpi::gather_rows(world, layout,
+                   {setup.heights.data() + (layout.first_row - setup.first_row) * layout.nx, layout.local_size()},
+                   {heights.data(), static_cast<std::size_t>(heights.size())});
   int code = kExitOk;
   mpi::run_agreed(world, [&] {
     if (!root) return;
     activity.emplace(fmt::format("writing {}", setup.output.string()));
-    code = finish_sweep(setup, steps, std::nullopt);
+    SolveSetup whole = setup;
+    whole.heights = std::move(heights);
+    whole.first_row = 0;
+    code = finish_sweep(whole, steps, std::nullopt);
   });
   mpi::check(MPI_Bcast(&code, 1, MPI_INT, 0, world.get()), "MPI_Bcast");
   return code;

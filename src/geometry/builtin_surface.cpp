@@ -76,18 +76,26 @@ SurfaceShape parse_surface_shape(std::string_view text) {
 }
 
 Eigen::ArrayXd make_surface_heights(const Grid& grid, const SurfaceSpec& spec) {
+  return make_surface_rows(grid, spec, 0, grid.ny());
+}
+
+Eigen::ArrayXd make_surface_rows(const Grid& grid, const SurfaceSpec& spec, std::size_t first_row, std::size_t rows) {
   validate(spec);
+  if (first_row > grid.ny() || rows > grid.ny() - first_row) {
+    throw InputError(
+        fmt::format("rows {} to {} are not all rows of the {} grid", first_row, first_row + rows, grid.shape_string()));
+  }
   // Centring on (n - 1) h / 2 puts the apex of a sphere or cylinder on a cell
   // for odd n and symmetrically between two cells for even n, so the sampled
   // surface is mirror-symmetric about the grid centre either way.
   const double xc = 0.5 * static_cast<double>(grid.nx() - 1) * grid.dx();
   const double yc = 0.5 * static_cast<double>(grid.ny() - 1) * grid.dy();
-  Eigen::ArrayXd heights(static_cast<Eigen::Index>(grid.size()));
-  for (std::size_t j = 0; j < grid.ny(); ++j) {
-    const double y = static_cast<double>(j) * grid.dy() - yc;
+  Eigen::ArrayXd heights(static_cast<Eigen::Index>(rows * grid.nx()));
+  for (std::size_t r = 0; r < rows; ++r) {
+    const double y = static_cast<double>(first_row + r) * grid.dy() - yc;
     for (std::size_t i = 0; i < grid.nx(); ++i) {
       const double x = static_cast<double>(i) * grid.dx() - xc;
-      heights[static_cast<Eigen::Index>(j * grid.nx() + i)] = height_at(spec, grid.dimension(), x, y);
+      heights[static_cast<Eigen::Index>(r * grid.nx() + i)] = height_at(spec, grid.dimension(), x, y);
     }
   }
   return heights;

@@ -81,7 +81,7 @@ bool is_numeric(H5T_class_t type_class) {
 // block, so the check is left to it rather than done on the first bytes.
 // A damaged file that HDF5 fails to open can leave HDF5 unable to close
 // its internals; printing then stays off (see ErrorPrintingOff::keep_off).
-File open_file(const Target& target, detail::ErrorPrintingOff& quiet) {
+File open_file(const Target& target, detail::ErrorPrintingOff& quiet, hid_t access) {
   std::error_code error;
   const auto status = std::filesystem::status(target.path, error);
   if (!std::filesystem::exists(status)) target.fail("the file does not exist");
@@ -103,7 +103,7 @@ File open_file(const Target& target, detail::ErrorPrintingOff& quiet) {
   }
   if (is_hdf5 == 0) target.fail("the file is not an HDF5 file (no HDF5 signature found)");
 
-  File file(H5Fopen(target.path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
+  File file(H5Fopen(target.path.c_str(), H5F_ACC_RDONLY, access));
   if (!file.valid()) {
     quiet.keep_off();
     target.fail(fmt::format("the HDF5 file cannot be opened: {}", detail::error_reason()));
@@ -243,6 +243,33 @@ std::vector<hsize_t> read_shape(hid_t dataset, const Target& target) {
   return dims;
 }
 
+// The rows {first, count} of a dataset a process reads; all of them unless
+// it reads a slab.
+struct RowSelection {
+  bool all = true;
+  std::size_t first = 0;
+  std::size_t count = 0;
+};
+
+// Reads the selected rows of `dataset` (dims in file order) as `memory_type`
+// into `buffer` (count * nx values, or all of them).
+herr_t read_rows(hid_t dataset, hid_t memory_type, const std::vector<hsize_t>& dims, const RowSelection& rows,
+                 hid_t transfer, void* buffer) {
+  if (rows.all) return H5Dread(dataset, memory_type, H5S_ALL, H5S_ALL, transfer, buffer);
+  const Dataspace file_space(H5Dget_space(dataset));
+  const hsize_t start[2] = {rows.first, 0};
+  const hsize_t count[2] = {rows.count, dims[1]};
+  const hsize_t memory_count = std::max<hsize_t>(rows.count * dims[1], 1);
+  const Dataspace memory_space(H5Screate_simple(1, &memory_count, nullptr));
+  if (!file_space.valid() || !memory_space.valid()) return -1;
+  // A process without rows still takes part in the collective read.
+  const herr_t selected =
+      rows.count == 0 ? (H5Sselect_none(file_space.get()) < 0 || H5Sselect_none(memory_space.get()) < 0 ? -1 : 0)
+                      : H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start, nullptr, count, nullptr);
+  if (selected < 0) return -1;
+  return H5Dread(dataset, memory_type, memory_space.get(), file_space.get(), transfer, buffer);
+}
+
 // Finite heights are a precondition of every solver; one bad pixel (a
 // dropout marked NaN by the instrument) must be reported, not propagated.
 void check_finite(const Eigen::ArrayXd& heights, std::size_t nx, int dimension, const Target& target) {
@@ -301,7 +328,8 @@ double read_spacing(hid_t file, const char* name, const Target& target) {
 // (refuse, fill or crop) decides about them rather than the file's own fill;
 // their stored heights are kept. A mask that is present but unusable is an
 // error: silently ignoring it would hand invented heights to the solver.
-void read_validity_mask(hid_t file, const std::vector<hsize_t>& dims, HeightMap& map, const Target& target) {
+void read_validity_mask(hid_t file, const std::vector<hsize_t>& dims, HeightMap& map, const Target& target,
+                        const RowSelection& rows, hid_t transfer) {
   const std::size_t slash = target.dataset.find_last_of('/');
   const std::string name = (slash == std::string::npos ? std::string() : target.dataset.substr(0, slash + 1)) + "valid";
   if (name == target.dataset || !link_exists(file, name)) return;
@@ -317,34 +345,45 @@ void read_validity_mask(hid_t file, const std::vector<hsize_t>& dims, HeightMap&
     mask.fail(fmt::format("the validity mask has shape {}, but the heights '{}' have shape {}", shape_text(mask_dims),
                           target.dataset, shape_text(dims)));
   }
-  std::vector<std::uint8_t> flags(map.size());
-  if (H5Dread(data.get(), H5T_NATIVE_UINT8, H5S_ALL, H5S_ALL, H5P_DEFAULT, flags.data()) < 0) {
+  std::vector<std::uint8_t> flags(static_cast<std::size_t>(map.heights.size()));
+  if (read_rows(data.get(), H5T_NATIVE_UINT8, dims, rows, transfer, flags.data()) < 0) {
     mask.fail(fmt::format("the validity mask cannot be read: {}", detail::error_reason()));
   }
   if (std::find(flags.begin(), flags.end(), std::uint8_t{0}) == flags.end()) return;
-  if (map.valid.empty()) map.valid.assign(map.size(), 1);
+  if (map.valid.empty()) map.valid.assign(flags.size(), 1);
   for (std::size_t k = 0; k < flags.size(); ++k) {
     if (flags[k] == 0) map.valid[k] = 0;
   }
 }
 
-// The reading itself, with HDF5's error printing off.
-HeightMap read_quietly(const std::filesystem::path& path, const std::string& dataset, NonFiniteHeights non_finite,
-                       detail::ErrorPrintingOff& quiet) {
+// The reading itself, with HDF5's error printing off: all of the map, or
+// (with `reading.rows`) this process's rows.
+HeightMapRows read_quietly(const std::filesystem::path& path, const std::string& dataset, NonFiniteHeights non_finite,
+                           detail::ErrorPrintingOff& quiet, const Hdf5RowReading& reading) {
   const Target target{path, dataset};
-  const File file = open_file(target, quiet);
+  const File file = open_file(target, quiet, reading.file_access);
   const Object data = open_dataset(file.get(), target);
   check_numeric_type(data.get(), target);
   const std::vector<hsize_t> dims = read_shape(data.get(), target);
   check_storage(data.get(), target);
 
-  HeightMap map;
+  HeightMapRows part;
+  HeightMap& map = part.map;
   map.dimension = static_cast<int>(dims.size());
   map.nx = static_cast<std::size_t>(dims.back());
   map.ny = map.dimension == 1 ? 1 : static_cast<std::size_t>(dims[0]);
-  map.heights.resize(static_cast<Eigen::Index>(map.nx * map.ny));
+  RowSelection rows;
+  if (reading.rows && map.dimension == 2) {
+    const auto [first, count] = reading.rows(map.nx, map.ny);
+    rows = {false, first, count};
+  } else {
+    rows = {true, 0, map.ny};
+  }
+  part.first_row = rows.first;
+  part.rows = rows.count;
+  map.heights.resize(static_cast<Eigen::Index>(map.nx * rows.count));
   // HDF5 converts integer and float32 storage to double during the read.
-  if (H5Dread(data.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, map.heights.data()) < 0) {
+  if (read_rows(data.get(), H5T_NATIVE_DOUBLE, dims, rows, reading.transfer, map.heights.data()) < 0) {
     target.fail(fmt::format("the heights cannot be read: {}", detail::error_reason()));
   }
   if (non_finite == NonFiniteHeights::reject) {
@@ -352,13 +391,13 @@ HeightMap read_quietly(const std::filesystem::path& path, const std::string& dat
   } else {
     detail::mark_non_finite_invalid(map);
   }
-  read_validity_mask(file.get(), dims, map, target);
+  read_validity_mask(file.get(), dims, map, target, rows, reading.transfer);
 
   map.dx = read_spacing(file.get(), "dx", target);
   // A profile has no y spacing, whatever the file says.
   map.dy = map.dimension == 2 ? read_spacing(file.get(), "dy", target) : 0.0;
   map.source = path.string() + ":" + dataset;
-  return map;
+  return part;
 }
 
 }  // namespace
@@ -366,7 +405,13 @@ HeightMap read_quietly(const std::filesystem::path& path, const std::string& dat
 HeightMap read_hdf5_height_map(const std::filesystem::path& path, const std::string& dataset,
                                NonFiniteHeights non_finite) {
   detail::ErrorPrintingOff quiet;
-  return read_quietly(path, dataset, non_finite, quiet);
+  return read_quietly(path, dataset, non_finite, quiet, {}).map;
+}
+
+HeightMapRows read_hdf5_height_map_rows(const std::filesystem::path& path, const std::string& dataset,
+                                        const Hdf5RowReading& reading) {
+  detail::ErrorPrintingOff quiet;
+  return read_quietly(path, dataset, NonFiniteHeights::mark_invalid, quiet, reading);
 }
 
 }  // namespace halfspace::io

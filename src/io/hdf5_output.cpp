@@ -144,15 +144,21 @@ PropertyList creation_properties(const std::vector<hsize_t>& dims, Compression c
   return properties;
 }
 
-hid_t write_array(hid_t location, std::string_view name, const std::vector<std::size_t>& shape, std::size_t count,
-                  hid_t file_type, hid_t memory_type, const void* data, std::string_view units,
-                  Compression compression = Compression::deflate) {
+// Writes rows first_row .. of a dataset of `shape` (all of them when `count`
+// is the shape's product), creating it first.
+hid_t write_array(hid_t location, std::string_view name, const std::vector<std::size_t>& shape, std::size_t first_row,
+                  std::size_t count, hid_t file_type, hid_t memory_type, const void* data, std::string_view units,
+                  hid_t transfer, Compression compression = Compression::deflate) {
   const std::string key(name);
   const std::vector<hsize_t> dims(shape.begin(), shape.end());
   hsize_t elements = 1;
   for (const hsize_t d : dims) elements *= d;
-  if (elements != count) {
-    throw InputError(fmt::format("dataset '{}': {} values for a shape of {} elements", name, count, elements));
+  const hsize_t row_elements = dims.empty() || dims[0] == 0 ? 1 : elements / dims[0];
+  const bool whole = first_row == 0 && count == elements;
+  if (!whole && (dims.empty() || count % row_elements != 0 || first_row > dims[0] ||
+                 count / row_elements > dims[0] - first_row)) {
+    throw InputError(fmt::format("dataset '{}': {} values from row {} for a shape of {} elements", name, count,
+                                 first_row, elements));
   }
   const Dataspace space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr));
   if (!space.valid()) fail_hdf5(fmt::format("could not create the dataspace of '{}'", name));
@@ -160,8 +166,25 @@ hid_t write_array(hid_t location, std::string_view name, const std::vector<std::
   Dataset dataset(
       H5Dcreate2(location, key.c_str(), file_type, space.get(), H5P_DEFAULT, properties.get(), H5P_DEFAULT));
   if (!dataset.valid()) fail_hdf5(fmt::format("could not create dataset '{}'", name));
-  if (elements > 0 && H5Dwrite(dataset.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0) {
-    fail_hdf5(fmt::format("could not write dataset '{}'", name));
+  if (whole) {
+    if (elements > 0 && H5Dwrite(dataset.get(), memory_type, H5S_ALL, H5S_ALL, transfer, data) < 0) {
+      fail_hdf5(fmt::format("could not write dataset '{}'", name));
+    }
+  } else {
+    // This process's rows; one without rows still takes part (collective).
+    std::vector<hsize_t> start(dims.size(), 0);
+    std::vector<hsize_t> block = dims;
+    start[0] = first_row;
+    block[0] = count / row_elements;
+    const hsize_t memory_count = std::max<hsize_t>(count, 1);
+    const Dataspace memory_space(H5Screate_simple(1, &memory_count, nullptr));
+    if (!memory_space.valid()) fail_hdf5(fmt::format("could not create the dataspace of '{}'", name));
+    const herr_t selected =
+        count == 0 ? std::min(H5Sselect_none(space.get()), H5Sselect_none(memory_space.get()))
+                   : H5Sselect_hyperslab(space.get(), H5S_SELECT_SET, start.data(), nullptr, block.data(), nullptr);
+    if (selected < 0 || H5Dwrite(dataset.get(), memory_type, memory_space.get(), space.get(), transfer, data) < 0) {
+      fail_hdf5(fmt::format("could not write dataset '{}'", name));
+    }
   }
   if (!units.empty()) attach_string(dataset.get(), "units", units);
   // Closing flushes the chunk cache, where the compression runs and can fail.
@@ -200,12 +223,13 @@ std::vector<char> build_image(const std::filesystem::path& path, const std::func
 
 }  // namespace
 
-Hdf5Node::Hdf5Node(Hdf5Node&& other) noexcept : id_(std::exchange(other.id_, -1)) {}
+Hdf5Node::Hdf5Node(Hdf5Node&& other) noexcept : id_(std::exchange(other.id_, -1)), transfer_(other.transfer_) {}
 
 Hdf5Node& Hdf5Node::operator=(Hdf5Node&& other) noexcept {
   if (this != &other) {
     if (id_ >= 0) H5Oclose(id_);
     id_ = std::exchange(other.id_, -1);
+    transfer_ = other.transfer_;
   }
   return *this;
 }
@@ -229,25 +253,46 @@ void Hdf5Node::write_string_attribute(std::string_view name, std::string_view va
 Hdf5Node Hdf5Node::write_dataset(std::string_view name, const std::vector<std::size_t>& shape,
                                  std::span<const double> values, std::string_view units,
                                  Compression compression) const {
-  return Hdf5Node(write_array(id_, name, shape, values.size(), H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, values.data(), units,
-                              compression));
+  return Hdf5Node(write_array(id_, name, shape, 0, values.size(), H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, values.data(),
+                              units, transfer_, compression),
+                  transfer_);
 }
 
 Hdf5Node Hdf5Node::write_dataset(std::string_view name, const std::vector<std::size_t>& shape,
                                  std::span<const std::int64_t> values, std::string_view units) const {
-  return Hdf5Node(write_array(id_, name, shape, values.size(), H5T_STD_I64LE, H5T_NATIVE_INT64, values.data(), units));
+  return Hdf5Node(
+      write_array(id_, name, shape, 0, values.size(), H5T_STD_I64LE, H5T_NATIVE_INT64, values.data(), units, transfer_),
+      transfer_);
 }
 
 Hdf5Node Hdf5Node::write_dataset(std::string_view name, const std::vector<std::size_t>& shape,
                                  std::span<const std::uint8_t> values, std::string_view units) const {
-  return Hdf5Node(write_array(id_, name, shape, values.size(), H5T_STD_U8LE, H5T_NATIVE_UINT8, values.data(), units));
+  return Hdf5Node(
+      write_array(id_, name, shape, 0, values.size(), H5T_STD_U8LE, H5T_NATIVE_UINT8, values.data(), units, transfer_),
+      transfer_);
+}
+
+Hdf5Node Hdf5Node::write_dataset_rows(std::string_view name, const std::vector<std::size_t>& shape,
+                                      std::size_t first_row, std::span<const double> values,
+                                      std::string_view units) const {
+  return Hdf5Node(write_array(id_, name, shape, first_row, values.size(), H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE,
+                              values.data(), units, transfer_),
+                  transfer_);
+}
+
+Hdf5Node Hdf5Node::write_dataset_rows(std::string_view name, const std::vector<std::size_t>& shape,
+                                      std::size_t first_row, std::span<const std::uint8_t> values,
+                                      std::string_view units) const {
+  return Hdf5Node(write_array(id_, name, shape, first_row, values.size(), H5T_STD_U8LE, H5T_NATIVE_UINT8, values.data(),
+                              units, transfer_),
+                  transfer_);
 }
 
 Hdf5Node Hdf5Node::create_group(std::string_view name) const {
   const std::string key(name);
   const hid_t group = H5Gcreate2(id_, key.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
   if (group < 0) fail_hdf5(fmt::format("could not create group '{}'", name));
-  return Hdf5Node(group);
+  return Hdf5Node(group, transfer_);
 }
 
 void write_hdf5_file(const std::filesystem::path& path, const std::function<void(const Hdf5Node& root)>& fill) {
@@ -262,6 +307,13 @@ void write_hdf5_file(const std::filesystem::path& path, const std::function<void
     }
   }
   write_output_file(path, image);
+}
+
+void fill_hdf5_file(std::int64_t file, std::int64_t transfer, const std::function<void(const Hdf5Node& root)>& fill) {
+  const hid_t root = H5Oopen(file, "/", H5P_DEFAULT);
+  if (root < 0) fail_hdf5("could not open the root group");
+  const Hdf5Node node(root, transfer);
+  fill(node);
 }
 
 std::vector<std::size_t> field_shape(const Grid& grid) {

@@ -11,9 +11,19 @@
 
 namespace halfspace::io {
 
+// Which rows of the fields a writer holds: all of them (the serial
+// writers), or, in a file that several processes write at once, this
+// process's rows from first_row on; the `lead` process writes the datasets
+// that are not fields (residual_history).
+struct FieldRows {
+  std::size_t first_row = 0;
+  bool lead = true;
+};
+
 // The datasets pressure, gap, displacement (float64, shaped like the grid),
-// contact (uint8, 1 where p > 0) and residual_history under `node`.
-void write_result_fields(const Hdf5Node& node, const Grid& grid, const SolveResult& result);
+// contact (uint8, 1 where p > 0) and residual_history under `node`; the
+// result's fields hold the rows `rows` says.
+void write_result_fields(const Hdf5Node& node, const Grid& grid, const SolveResult& result, FieldRows rows = {});
 
 // The root attributes of a result file: format, grid, E*, load mode, every
 // result attribute (result_attributes.hpp), threads, provenance and the

@@ -122,7 +122,7 @@ HeightMapFormat format_from_extension(const std::filesystem::path& path) {
                   path.string(), path.extension().string()));
 }
 
-HeightMap read_height_map(const std::filesystem::path& path, const ReadOptions& options) {
+HeightMapFormat checked_format(const std::filesystem::path& path, const ReadOptions& options) {
   const HeightMapFormat format =
       options.format == HeightMapFormat::automatic ? format_from_extension(path) : options.format;
   if (!options.dataset.empty() && format != HeightMapFormat::hdf5) {
@@ -135,11 +135,19 @@ HeightMap read_height_map(const std::filesystem::path& path, const ReadOptions& 
                     "always metres",
                     path.string(), options.unit->name, to_string(format)));
   }
+  return format;
+}
+
+std::string hdf5_dataset(const ReadOptions& options) {
+  return options.dataset.empty() ? "/height" : options.dataset;
+}
+
+HeightMap read_height_map(const std::filesystem::path& path, const ReadOptions& options) {
+  const HeightMapFormat format = checked_format(path, options);
   const LengthUnit unit = options.unit.value_or(LengthUnit{"m", 1.0});
   switch (format) {
     case HeightMapFormat::hdf5:
-      return read_hdf5_height_map(path, options.dataset.empty() ? "/height" : options.dataset,
-                                  NonFiniteHeights::mark_invalid);
+      return read_hdf5_height_map(path, hdf5_dataset(options), NonFiniteHeights::mark_invalid);
     case HeightMapFormat::npy:
       return read_npy_height_map(path, unit);
     case HeightMapFormat::text_matrix: {

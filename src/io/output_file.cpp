@@ -91,7 +91,10 @@ struct TemporarySlot {
 static_assert(std::atomic<int>::is_always_lock_free, "the signal handler needs lock-free atomics");
 std::array<TemporarySlot, kSlots> temporaries;
 
-// Registers a temporary for removal on a signal while it exists.
+}  // namespace
+
+// Registers a temporary for removal on a signal while it exists. (Outside
+// the anonymous namespace: OutputTemporary::Registration is one.)
 class TemporaryRegistration {
  public:
   explicit TemporaryRegistration(const fs::path& temporary) {
@@ -120,6 +123,8 @@ class TemporaryRegistration {
  private:
   int slot_ = -1;
 };
+
+namespace {
 
 extern "C" void remove_temporaries_and_reraise(int signal) {
   const int saved_errno = errno;
@@ -226,12 +231,17 @@ bool same_file(const fs::path& output, const fs::path& other) {
   return resolved(output) == resolved(other);
 }
 
-void write_output_file(const fs::path& path, std::span<const char> bytes) {
-  check_output_path(path);
-  const fs::path target = output_target(path);
+namespace {
+
+fs::path temporary_beside(const fs::path& target) {
   fs::path temporary = target;
   temporary += fmt::format(".tmp-{}", ::getpid());
-  write_temporary(path, temporary, bytes);
+  return temporary;
+}
+
+// The last step of an atomic write: the complete temporary renamed onto the
+// target, or removed.
+void rename_onto_target(const fs::path& path, const fs::path& target, const fs::path& temporary) {
   const auto discard = [&] {
     std::error_code ignored;
     fs::remove(temporary, ignored);
@@ -249,6 +259,48 @@ void write_output_file(const fs::path& path, std::span<const char> bytes) {
     discard();
     fail(path, fmt::format("could not rename temporary file '{}' onto it: {}", temporary.string(), error.message()));
   }
+}
+
+}  // namespace
+
+void write_output_file(const fs::path& path, std::span<const char> bytes) {
+  check_output_path(path);
+  const fs::path target = output_target(path);
+  const fs::path temporary = temporary_beside(target);
+  write_temporary(path, temporary, bytes);
+  rename_onto_target(path, target, temporary);
+}
+
+struct OutputTemporary::Registration : TemporaryRegistration {
+  using TemporaryRegistration::TemporaryRegistration;
+};
+
+OutputTemporary::OutputTemporary(const fs::path& path)
+    : path_(path), target_((check_output_path(path), output_target(path))), temporary_(temporary_beside(target_)) {
+  write_temporary(path_, temporary_, {});
+  // Registered after it exists (write_temporary's own registration ended
+  // with it): a signal in between leaves it behind, as SIGKILL would.
+  registration_ = std::make_unique<Registration>(temporary_);
+}
+
+OutputTemporary::~OutputTemporary() {
+  if (!registration_) return;
+  std::error_code ignored;
+  fs::remove(temporary_, ignored);
+}
+
+void OutputTemporary::commit() {
+  // The writers wrote through their own descriptors: synced here, so that a
+  // crash soon after the rename cannot leave an empty file (write_temporary).
+  const int descriptor = ::open(temporary_.c_str(), O_RDONLY | O_CLOEXEC);
+  int error = descriptor < 0 ? errno : 0;
+  if (error == 0 && ::fsync(descriptor) != 0 && errno != EINVAL) error = errno;
+  if (descriptor >= 0) ::close(descriptor);
+  if (error != 0) {
+    fail(path_, fmt::format("could not write temporary file '{}': {}", temporary_.string(), std::strerror(error)));
+  }
+  rename_onto_target(path_, target_, temporary_);
+  registration_.reset();
 }
 
 void install_output_cleanup_on_signals() {

@@ -15,6 +15,7 @@
 #include "halfspace/io/result_attributes.hpp"
 #include "halfspace/solvers/interface_law.hpp"
 #include "halfspace/version.hpp"
+#include "hdf5_writing.hpp"
 
 namespace halfspace::io {
 namespace {
@@ -37,12 +38,14 @@ std::span<const double> values(const Eigen::ArrayXd& field) {
 
 }  // namespace
 
-void write_result_fields(const Hdf5Node& node, const Grid& grid, const SolveResult& result) {
+void write_result_fields(const Hdf5Node& node, const Grid& grid, const SolveResult& result, FieldRows rows) {
   const std::vector<std::size_t> shape = field_shape(grid);
-  node.write_dataset("pressure", shape, values(result.pressure), "Pa");
-  node.write_dataset("gap", shape, values(result.gap), "m");
-  node.write_dataset("displacement", shape, values(result.displacement), "m");
-  std::vector<std::uint8_t> contact(grid.size());
+  const std::size_t first = rows.first_row;
+  node.write_dataset_rows("pressure", shape, first, values(result.pressure), "Pa");
+  node.write_dataset_rows("gap", shape, first, values(result.gap), "m");
+  node.write_dataset_rows("displacement", shape, first, values(result.displacement), "m");
+  const auto cells = static_cast<std::size_t>(result.pressure.size());
+  std::vector<std::uint8_t> contact(cells);
   // Adhesive results: contact is the wall (gap 0), where the pressure may
   // be negative; otherwise the cells with pressure.
   const bool adhesive = !result.adhesion.law.empty();
@@ -50,19 +53,19 @@ void write_result_fields(const Hdf5Node& node, const Grid& grid, const SolveResu
     const auto i = static_cast<Eigen::Index>(k);
     contact[k] = (adhesive ? result.gap[i] <= 0.0 : result.pressure[i] > 0.0) ? 1 : 0;
   }
-  node.write_dataset("contact", shape, std::span<const std::uint8_t>(contact), "1");
+  node.write_dataset_rows("contact", shape, first, std::span<const std::uint8_t>(contact), "1");
   if (result.hardness) {
     // Hardness cap: the cells at it, and the plastic displacement
     // (interface_law.hpp, docs/theory.md#hardness-cap).
     const std::span<const double> pressure = values(result.pressure);
     const auto plastic = solvers::plastic_cells(pressure, result.hardness);
-    node.write_dataset("plastic", shape, std::span<const std::uint8_t>(plastic.data(), grid.size()), "1");
+    node.write_dataset_rows("plastic", shape, first, std::span<const std::uint8_t>(plastic.data(), cells), "1");
     const Eigen::ArrayXd plastic_displacement =
         solvers::plastic_displacement(pressure, values(result.gap), result.hardness);
-    node.write_dataset("plastic_displacement", shape, values(plastic_displacement), "m");
+    node.write_dataset_rows("plastic_displacement", shape, first, values(plastic_displacement), "m");
   }
-  node.write_dataset("residual_history", {result.residual_history.size()},
-                     std::span<const double>(result.residual_history), "");
+  const std::span<const double> history(result.residual_history);
+  node.write_dataset_rows("residual_history", {history.size()}, 0, rows.lead ? history : std::span<const double>(), "");
 }
 
 void write_result_root_attributes(const Hdf5Node& root, const Grid& grid, const SolveResult& result,

@@ -72,27 +72,51 @@ int term_count(Detrend detrend, int dimension) {
   return 0;
 }
 
-// Least-squares coefficients of `values` (a residual or the heights) over the valid points.
+// The rows a map's heights hold: all of them, or a process's slab.
+struct Rows {
+  std::size_t first = 0;
+  std::size_t count = 0;
+};
+
+// Least-squares coefficients of `values` (a residual or the heights) over the
+// valid points; the normal equations' sums are added over `comm`.
 Vector fit(const HeightMap& map, const Eigen::ArrayXd& values, const Basis& basis, std::string_view name,
-           std::size_t& used) {
+           std::size_t& used, Rows rows, const linalg::Communicator& comm) {
   const int p = basis.terms;
   Matrix normal = Matrix::Zero(p, p);
   Vector rhs = Vector::Zero(p);
   double phi[kMaxTerms];
-  used = 0;
-  for (std::size_t j = 0; j < map.ny; ++j) {
+  double points = 0.0;
+  for (std::size_t r = 0; r < rows.count; ++r) {
     for (std::size_t i = 0; i < map.nx; ++i) {
-      const std::size_t k = j * map.nx + i;
+      const std::size_t k = r * map.nx + i;
       if (!map.is_valid(k)) continue;
-      basis.evaluate(j, i, map.dimension == 2, phi);
+      basis.evaluate(rows.first + r, i, map.dimension == 2, phi);
       const double h = values[static_cast<Eigen::Index>(k)];
       for (int a = 0; a < p; ++a) {
         rhs[a] += phi[a] * h;
         for (int b = 0; b <= a; ++b) normal(a, b) += phi[a] * phi[b];
       }
-      ++used;
+      points += 1.0;
     }
   }
+  if (comm.size() > 1) {
+    double sums[kMaxTerms * kMaxTerms + kMaxTerms + 1];
+    std::size_t n = 0;
+    for (int a = 0; a < p; ++a) {
+      sums[n++] = rhs[a];
+      for (int b = 0; b <= a; ++b) sums[n++] = normal(a, b);
+    }
+    sums[n++] = points;
+    comm.sum({sums, n});
+    n = 0;
+    for (int a = 0; a < p; ++a) {
+      rhs[a] = sums[n++];
+      for (int b = 0; b <= a; ++b) normal(a, b) = sums[n++];
+    }
+    points = sums[n];
+  }
+  used = static_cast<std::size_t>(points);
   normal = normal.selfadjointView<Eigen::Lower>();
   const Eigen::ColPivHouseholderQR<Matrix> qr(normal);
   if (qr.rank() < p) {
@@ -104,13 +128,13 @@ Vector fit(const HeightMap& map, const Eigen::ArrayXd& values, const Basis& basi
   return qr.solve(rhs);
 }
 
-void subtract(HeightMap& map, Eigen::ArrayXd& values, const Basis& basis, const Vector& c) {
+void subtract(HeightMap& map, Eigen::ArrayXd& values, const Basis& basis, const Vector& c, Rows rows) {
   double phi[kMaxTerms];
-  for (std::size_t j = 0; j < map.ny; ++j) {
+  for (std::size_t r = 0; r < rows.count; ++r) {
     for (std::size_t i = 0; i < map.nx; ++i) {
-      const std::size_t k = j * map.nx + i;
+      const std::size_t k = r * map.nx + i;
       if (!map.is_valid(k)) continue;
-      basis.evaluate(j, i, map.dimension == 2, phi);
+      basis.evaluate(rows.first + r, i, map.dimension == 2, phi);
       double surface = 0.0;
       for (int a = 0; a < basis.terms; ++a) surface += c[a] * phi[a];
       values[static_cast<Eigen::Index>(k)] -= surface;
@@ -172,7 +196,12 @@ Detrend parse_detrend(std::string_view text) {
 }
 
 void detrend(HeightMap& map, Detrend detrend) {
+  detrend_rows(map, detrend, 0, linalg::serial_communicator());
+}
+
+void detrend_rows(HeightMap& map, Detrend detrend, std::size_t first_row, const linalg::Communicator& comm) {
   if (detrend == Detrend::none) return;
+  const Rows rows{first_row, static_cast<std::size_t>(map.heights.size()) / map.nx};
   Basis basis;
   basis.terms = term_count(detrend, map.dimension);
   basis.ic = 0.5 * static_cast<double>(map.nx - 1);
@@ -181,12 +210,12 @@ void detrend(HeightMap& map, Detrend detrend) {
   basis.hy = std::max(basis.jc, 0.5);
 
   std::size_t used = 0;
-  Vector coefficients = fit(map, map.heights, basis, surface_name(detrend, map.dimension), used);
+  Vector coefficients = fit(map, map.heights, basis, surface_name(detrend, map.dimension), used, rows, comm);
   if (used == 0) throw InputError(fmt::format("height map {}: no valid points to detrend", map.source));
-  subtract(map, map.heights, basis, coefficients);
+  subtract(map, map.heights, basis, coefficients, rows);
   // One step of iterative refinement: the residual's own fit is the error of the first.
-  const Vector correction = fit(map, map.heights, basis, surface_name(detrend, map.dimension), used);
-  subtract(map, map.heights, basis, correction);
+  const Vector correction = fit(map, map.heights, basis, surface_name(detrend, map.dimension), used, rows, comm);
+  subtract(map, map.heights, basis, correction, rows);
   coefficients += correction;
   map.preparation.push_back(describe(map, detrend, basis, coefficients, used));
 }

@@ -74,14 +74,26 @@ std::size_t count_invalid(const HeightMap& map) {
 }
 
 void refuse_invalid_points(const HeightMap& map) {
-  const std::size_t count = count_invalid(map);
-  if (count == 0) return;
-  const std::size_t first =
-      static_cast<std::size_t>(std::find(map.valid.begin(), map.valid.end(), std::uint8_t{0}) - map.valid.begin());
-  throw FileError(
-      fmt::format("height map {}: {} of {} heights are invalid (not finite, or marked invalid by the "
-                  "file); the first is at {}; fill them or crop to the valid region",
-                  map.source, count, map.size(), where(map, first)));
+  refuse_invalid_points_rows(map, 0, linalg::serial_communicator());
+}
+
+void refuse_invalid_points_rows(const HeightMap& map, std::size_t first_row, const linalg::Communicator& comm) {
+  // Counts and indices as doubles: exact below 2^53 cells.
+  double count = static_cast<double>(count_invalid(map));
+  const auto local_first = std::find(map.valid.begin(), map.valid.end(), std::uint8_t{0});
+  double first =
+      local_first == map.valid.end()
+          ? std::numeric_limits<double>::infinity()
+          : static_cast<double>(first_row * map.nx + static_cast<std::size_t>(local_first - map.valid.begin()));
+  if (comm.size() > 1) {
+    comm.sum({&count, 1});
+    first = comm.min(first);
+  }
+  if (count == 0.0) return;
+  throw FileError(fmt::format(
+      "height map {}: {} of {} heights are invalid (not finite, or marked invalid by the "
+      "file); the first is at {}; fill them or crop to the valid region",
+      map.source, static_cast<std::size_t>(count), map.size(), where(map, static_cast<std::size_t>(first))));
 }
 
 void fill_invalid_points(HeightMap& map) {

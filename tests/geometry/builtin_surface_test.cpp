@@ -141,5 +141,23 @@ TEST(GeometryTest, InitialGapIsZeroAtHighestPoint) {
   }
 }
 
+// The rows of a slab (an MPI process's) are the whole surface's rows, bit
+// for bit, for every shape, and rows beyond the grid are refused.
+TEST(GeometryTest, SurfaceRowsAreTheWholeSurfacesRows) {
+  const Grid grid = Grid::plane(9, 7, 0.3, 0.2, Boundary::periodic);
+  for (const SurfaceShape shape :
+       {SurfaceShape::sphere, SurfaceShape::cylinder, SurfaceShape::flat, SurfaceShape::wavy}) {
+    const SurfaceSpec spec{shape, 1.5, 0.7, 0.1};
+    const Eigen::ArrayXd whole = make_surface_heights(grid, spec);
+    for (const auto& [first, rows] : {std::pair<std::size_t, std::size_t>{0, 3}, {3, 3}, {6, 1}, {7, 0}, {0, 7}}) {
+      const Eigen::ArrayXd part = make_surface_rows(grid, spec, first, rows);
+      ASSERT_EQ(part.size(), static_cast<Eigen::Index>(rows * 9));
+      EXPECT_TRUE((part == whole.segment(static_cast<Eigen::Index>(first * 9), part.size())).all())
+          << to_string(shape) << " rows " << first << " + " << rows;
+    }
+  }
+  EXPECT_THROW(make_surface_rows(grid, {SurfaceShape::flat, 0.0, 0.0, 0.0}, 5, 3), InputError);
+}
+
 }  // namespace
 }  // namespace halfspace::geometry

@@ -254,6 +254,74 @@ TEST(Hdf5HeightMapReaderTest, ReadsTheMaskNextToADatasetInAGroup) {
   EXPECT_EQ(map.valid, (std::vector<std::uint8_t>{0, 1, 1, 1}));
 }
 
+// A process's rows of a map (the reading of an MPI run, here with the
+// serial HDF5's default property lists): the whole map's rows, with their
+// mask, and the whole map's shape, spacing and source.
+TEST(Hdf5HeightMapReaderTest, ReadsTheRowsAProcessAsksFor) {
+  const TempDir dir;
+  const fs::path path = dir / "rows.h5";
+  std::vector<double> heights(5 * 4);
+  for (std::size_t k = 0; k < heights.size(); ++k) heights[k] = 0.5 * static_cast<double>(k);
+  std::vector<std::uint8_t> valid(heights.size(), 1);
+  valid[2 * 4 + 3] = 0;                                           // row 2
+  heights[3 * 4 + 1] = std::numeric_limits<double>::quiet_NaN();  // row 3
+  {
+    const auto file = create_file(path);
+    add_double_dataset(file.get(), "/height", {5, 4}, heights);
+    test::add_dataset(file.get(), "/valid", {5, 4}, H5T_STD_U8LE, H5T_NATIVE_UINT8, valid.data());
+    add_double_attribute(file.get(), "dx", 2e-6);
+    add_double_attribute(file.get(), "dy", 3e-6);
+  }
+  const HeightMap whole = read_hdf5_height_map(path, "/height", NonFiniteHeights::mark_invalid);
+  Hdf5RowReading reading;
+  std::size_t asked_nx = 0, asked_ny = 0;
+  reading.rows = [&](std::size_t nx, std::size_t ny) {
+    asked_nx = nx;
+    asked_ny = ny;
+    return std::pair<std::size_t, std::size_t>{2, 2};
+  };
+  const HeightMapRows part = read_hdf5_height_map_rows(path, "/height", reading);
+  EXPECT_EQ(asked_nx, 4u);
+  EXPECT_EQ(asked_ny, 5u);
+  EXPECT_EQ(part.first_row, 2u);
+  EXPECT_EQ(part.rows, 2u);
+  EXPECT_EQ(part.map.nx, 4u);
+  EXPECT_EQ(part.map.ny, 5u);
+  EXPECT_EQ(part.map.dx, 2e-6);
+  EXPECT_EQ(part.map.dy, 3e-6);
+  EXPECT_EQ(part.map.source, whole.source);
+  ASSERT_EQ(part.map.heights.size(), 8);
+  ASSERT_EQ(part.map.valid.size(), 8u);
+  for (std::size_t k = 0; k < 8; ++k) {
+    EXPECT_EQ(part.map.valid[k], whole.valid[8 + k]) << k;
+    if (whole.is_valid(8 + k)) {
+      EXPECT_EQ(part.map.heights[static_cast<Eigen::Index>(k)], heights[8 + k]) << k;
+    }
+  }
+  EXPECT_EQ(part.map.valid[3], 0);  // the mask's zero
+  EXPECT_EQ(part.map.valid[5], 0);  // the NaN
+
+  // A process without rows reads nothing, and still learns the shape.
+  reading.rows = [](std::size_t, std::size_t) { return std::pair<std::size_t, std::size_t>{5, 0}; };
+  const HeightMapRows none = read_hdf5_height_map_rows(path, "/height", reading);
+  EXPECT_EQ(none.map.heights.size(), 0);
+  EXPECT_EQ(none.map.ny, 5u);
+  EXPECT_TRUE(none.map.all_valid());
+}
+
+TEST(Hdf5HeightMapReaderTest, RowReadingChecksTheFileAsTheWholeReading) {
+  const TempDir dir;
+  const fs::path path = write_masked_file(dir, {1, 1, 1, 1, 0, 1}, {3, 2});
+  Hdf5RowReading reading;
+  reading.rows = [](std::size_t, std::size_t) { return std::pair<std::size_t, std::size_t>{0, 1}; };
+  try {
+    read_hdf5_height_map_rows(path, "/height", reading);
+    ADD_FAILURE() << "a mask of another shape was accepted";
+  } catch (const FileError& error) {
+    EXPECT_EQ(std::string(error.what()), read_error(path));
+  }
+}
+
 TEST(Hdf5HeightMapReaderTest, RejectsValidMaskOfAnotherShape) {
   const TempDir dir;
   const fs::path path = write_masked_file(dir, {1, 1, 1, 1, 0, 1}, {3, 2});

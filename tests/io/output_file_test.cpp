@@ -165,5 +165,33 @@ TEST(OutputFileTest, WritesAtomicallyAndLeavesNoTemporary) {
       << message;
 }
 
+// The atomic write of a writer that writes the file itself by name.
+TEST(OutputFileTest, OutputTemporaryIsRenamedOnCommitAndRemovedOtherwise) {
+  const TempDir dir;
+  std::ofstream(dir / "result.h5") << "old contents";
+  {
+    OutputTemporary output(dir / "result.h5");
+    EXPECT_EQ(output.temporary().parent_path(), dir.path());
+    EXPECT_TRUE(fs::is_regular_file(output.temporary()));
+    std::ofstream(output.temporary()) << "new contents";
+    EXPECT_EQ(read_text(dir / "result.h5"), "old contents") << "replaced before commit";
+    output.commit();
+  }
+  EXPECT_EQ(read_text(dir / "result.h5"), "new contents");
+  EXPECT_EQ(dir.entries(), std::vector<std::string>{"result.h5"});
+  {
+    OutputTemporary abandoned(dir / "result.h5");
+    std::ofstream(abandoned.temporary()) << "never finished";
+  }
+  EXPECT_EQ(read_text(dir / "result.h5"), "new contents");
+  EXPECT_EQ(dir.entries(), std::vector<std::string>{"result.h5"}) << "the abandoned temporary is left";
+  try {
+    OutputTemporary refused(dir / "missing" / "result.h5");
+    ADD_FAILURE() << "an output in a missing directory was accepted";
+  } catch (const FileError& error) {
+    EXPECT_NE(std::string(error.what()).find("does not exist"), std::string::npos) << error.what();
+  }
+}
+
 }  // namespace
 }  // namespace halfspace::io

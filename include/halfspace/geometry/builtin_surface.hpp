@@ -33,6 +33,12 @@ struct SurfaceSpec {
 // Throws InputError naming the parameter if a needed one is not positive.
 Eigen::ArrayXd make_surface_heights(const Grid& grid, const SurfaceSpec& spec);
 
+// The same heights for rows first_row .. first_row + rows - 1 of a 2D grid
+// only ((rows, nx) row-major), each from its global coordinates, so that the
+// slabs of a distributed run put together are make_surface_heights's
+// values. Throws InputError as above, or for rows beyond the grid.
+Eigen::ArrayXd make_surface_rows(const Grid& grid, const SurfaceSpec& spec, std::size_t first_row, std::size_t rows);
+
 // The separation at zero approach: max(h) - h, zero at the highest point.
 Eigen::ArrayXd initial_gap_from_heights(const Eigen::ArrayXd& heights);
 

@@ -51,12 +51,27 @@ class Hdf5Node {
   Hdf5Node write_dataset(std::string_view name, const std::vector<std::size_t>& shape,
                          std::span<const std::uint8_t> values, std::string_view units) const;
 
+  // A dataset of `shape` of which this process writes the rows (indices
+  // along the first axis) first_row .. first_row + r - 1, `values` holding
+  // them (r times the product of the other extents; r may be 0), and other
+  // processes the rest: stored as write_dataset stores it. In a file several
+  // processes write (fill_hdf5_file), every process calls it, with the same
+  // name, shape and units. The same as write_dataset for all rows.
+  Hdf5Node write_dataset_rows(std::string_view name, const std::vector<std::size_t>& shape, std::size_t first_row,
+                              std::span<const double> values, std::string_view units) const;
+  Hdf5Node write_dataset_rows(std::string_view name, const std::vector<std::size_t>& shape, std::size_t first_row,
+                              std::span<const std::uint8_t> values, std::string_view units) const;
+
   Hdf5Node create_group(std::string_view name) const;
 
  private:
   friend void write_hdf5_file(const std::filesystem::path&, const std::function<void(const Hdf5Node&)>&);
-  explicit Hdf5Node(std::int64_t id) : id_(id) {}  // an HDF5 object id (hid_t), owned
+  friend void fill_hdf5_file(std::int64_t, std::int64_t, const std::function<void(const Hdf5Node&)>&);
+  // An HDF5 object id (hid_t), owned, and the transfer property list its
+  // datasets are written with (H5P_DEFAULT, 0, or a collective one; not owned).
+  explicit Hdf5Node(std::int64_t id, std::int64_t transfer = 0) : id_(id), transfer_(transfer) {}
   std::int64_t id_ = -1;
+  std::int64_t transfer_ = 0;
 };
 
 // Builds the file in memory by calling fill(root) and writes it to `path`
@@ -69,6 +84,13 @@ class Hdf5Node {
 // reported like any other. The cost is about twice the file's size in
 // memory while writing.
 void write_hdf5_file(const std::filesystem::path& path, const std::function<void(const Hdf5Node& root)>& fill);
+
+// Fills a file the caller has created (with its own file access: the
+// parallel HDF5 of an MPI run) and will close: calls fill(root), whose
+// datasets are written with the transfer property list `transfer` (a
+// collective one when processes write their rows of each field). Throws
+// FileError with the reason; the caller removes the file.
+void fill_hdf5_file(std::int64_t file, std::int64_t transfer, const std::function<void(const Hdf5Node& root)>& fill);
 
 // The shape of a field dataset on `grid`: (nx) in 1D, (ny, nx) in 2D.
 std::vector<std::size_t> field_shape(const Grid& grid);

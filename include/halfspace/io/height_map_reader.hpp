@@ -53,4 +53,11 @@ struct ReadOptions {
 // and FileError, naming the file, for everything wrong with the file.
 HeightMap read_height_map(const std::filesystem::path& path, const ReadOptions& options = {});
 
+// The format read_height_map reads `path` in, after the same checks of the
+// options against it (same exceptions): options.format, or the extension's.
+HeightMapFormat checked_format(const std::filesystem::path& path, const ReadOptions& options);
+
+// The HDF5 dataset read_height_map reads: options.dataset, or "/height".
+std::string hdf5_dataset(const ReadOptions& options);
+
 }  // namespace halfspace::io

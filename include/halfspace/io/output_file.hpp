@@ -10,6 +10,7 @@
 #pragma once
 
 #include <filesystem>
+#include <memory>
 #include <span>
 
 namespace halfspace::io {
@@ -40,6 +41,32 @@ bool same_file(const std::filesystem::path& output, const std::filesystem::path&
 // '<path>': <reason>"; on failure the temporary is removed and an existing
 // file at `path` is left untouched.
 void write_output_file(const std::filesystem::path& path, std::span<const char> bytes);
+
+// The same atomic write for a writer that writes the file itself, by name
+// (the parallel HDF5 writer of an MPI run, whose processes all write into
+// it): the constructor checks the path as above and creates an empty
+// `<target>.tmp-<pid>` exclusively beside the target, registered for
+// removal on the signals below; commit() syncs it and renames it onto the
+// target; never committed, it is removed by the destructor. Throws FileError
+// "cannot write output '<path>': <reason>".
+class OutputTemporary {
+ public:
+  explicit OutputTemporary(const std::filesystem::path& path);
+  ~OutputTemporary();
+  OutputTemporary(const OutputTemporary&) = delete;
+  OutputTemporary& operator=(const OutputTemporary&) = delete;
+
+  // Where the writer writes.
+  const std::filesystem::path& temporary() const { return temporary_; }
+  void commit();
+
+ private:
+  struct Registration;
+  std::filesystem::path path_;
+  std::filesystem::path target_;
+  std::filesystem::path temporary_;
+  std::unique_ptr<Registration> registration_;
+};
 
 // Installs handlers for SIGINT, SIGTERM, SIGHUP and SIGXFSZ that remove the
 // temporaries of writes in progress and then end the process by the same

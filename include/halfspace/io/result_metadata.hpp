@@ -29,4 +29,8 @@ struct SolveProvenance {
 // differ per step). Throws InputError if heights do not match the grid.
 ResultMetadata result_metadata(const SolveProvenance& run, const Grid& grid, std::span<const double> heights);
 
+// The same without surface_statistics, for a caller that computes them
+// itself (the slabs of an MPI run).
+ResultMetadata provenance_metadata(const SolveProvenance& run);
+
 }  // namespace halfspace::io

@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include "halfspace/height_map.hpp"
+#include "halfspace/linalg/communicator.hpp"
 
 namespace halfspace::surface {
 
@@ -29,5 +30,12 @@ Detrend parse_detrend(std::string_view text);
 // rounding. Throws InputError when the valid points cannot determine the fit
 // (e.g. a plane through points on one line).
 void detrend(HeightMap& map, Detrend detrend);
+
+// The same for a map spread over processes in slabs of rows: map.ny is the
+// whole map's, map.heights (and map.valid) hold this process's rows from
+// first_row on. The fit's sums are added over `comm`, so every process
+// subtracts the same surface and appends the same line (the serial fit's to
+// rounding: the sums are added in another order).
+void detrend_rows(HeightMap& map, Detrend detrend, std::size_t first_row, const linalg::Communicator& comm);
 
 }  // namespace halfspace::surface

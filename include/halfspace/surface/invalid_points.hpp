@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include "halfspace/height_map.hpp"
+#include "halfspace/linalg/communicator.hpp"
 
 namespace halfspace::surface {
 
@@ -24,6 +25,12 @@ std::size_t count_invalid(const HeightMap& map);
 // Throws FileError naming map.source, the number of invalid points and the
 // first one (row j, column i) when there is any; does nothing otherwise.
 void refuse_invalid_points(const HeightMap& map);
+
+// The same for a map spread over processes in slabs of rows (map.ny the
+// whole map's, map.valid this process's rows from first_row on): the count
+// and the first point are the whole map's, found over `comm`, so every
+// process throws the serial message or none does.
+void refuse_invalid_points_rows(const HeightMap& map, std::size_t first_row, const linalg::Communicator& comm);
 
 // Fills the invalid points: first the rows and columns at the edges that hold
 // no valid point at all are cut off (there is nothing to interpolate from;

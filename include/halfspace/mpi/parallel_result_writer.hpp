@@ -1,0 +1,29 @@
+// A solve's result file written by every MPI process at once, each its rows
+// of every field (hyperslabs, written collectively through the parallel
+// HDF5): the serial io::write_result's layout, storage and attributes, with
+// no field gathered. Compiled only with HALFSPACE_MPI.
+#pragma once
+
+#include <filesystem>
+#include <span>
+
+#include "halfspace/grid.hpp"
+#include "halfspace/io/result_writer.hpp"
+#include "halfspace/mpi/mpi_communicator.hpp"
+#include "halfspace/mpi/slab_fft.hpp"
+#include "halfspace/solvers/solve_result.hpp"
+
+namespace halfspace::mpi {
+
+// `heights` and result's fields hold this process's layout.rows rows of the
+// 2D `grid`; result's other members and `metadata` are the same on every
+// process. Atomic as the serial writer: the first process creates
+// `<target>.tmp-<pid>` beside the target (io::OutputTemporary), all write
+// into it and close it, then the first renames it onto `path`; on any
+// failure it is removed and every process throws the same FileError
+// "cannot write output '<path>': <reason>". Collective.
+void write_result_slabs(const MpiCommunicator& comm, const std::filesystem::path& path, const Grid& grid,
+                        const SlabLayout& layout, std::span<const double> heights, const solvers::SolveResult& result,
+                        const io::ResultMetadata& metadata);
+
+}  // namespace halfspace::mpi

@@ -1,0 +1,80 @@
+// The collective write: the serial writer's datasets and attributes
+// (io/hdf5_writing.hpp) into one file opened by every process with MPI-IO,
+// field datasets by rows, attributes and small datasets alike everywhere
+// (the parallel HDF5 needs every process to make the same metadata calls).
+#include "halfspace/mpi/parallel_result_writer.hpp"
+
+#include <fmt/format.h>
+#include <hdf5.h>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "../io/hdf5_handle.hpp"
+#include "../io/hdf5_writing.hpp"
+#include "halfspace/error.hpp"
+#include "halfspace/io/hdf5_output.hpp"
+#include "halfspace/io/output_file.hpp"
+#include "halfspace/mpi/agreement.hpp"
+
+namespace halfspace::mpi {
+namespace {
+
+void broadcast(std::string& text, const MpiCommunicator& comm) {
+  std::uint64_t size = text.size();
+  check(MPI_Bcast(&size, 1, MPI_UINT64_T, 0, comm.get()), "MPI_Bcast");
+  text.resize(size);
+  check(MPI_Bcast(text.data(), static_cast<int>(size), MPI_CHAR, 0, comm.get()), "MPI_Bcast");
+}
+
+void write_into(const MpiCommunicator& comm, const std::filesystem::path& path, const std::string& temporary,
+                const Grid& grid, const SlabLayout& layout, std::span<const double> heights,
+                const solvers::SolveResult& result, const io::ResultMetadata& metadata) {
+  const auto fail = [&](const std::string& what) {
+    throw FileError(fmt::format("cannot write output '{}': {}: {}", path.string(), what, io::detail::error_reason()));
+  };
+  const io::detail::ErrorPrintingOff quiet;
+  const io::detail::PropertyList access(H5Pcreate(H5P_FILE_ACCESS));
+  const io::detail::PropertyList transfer(H5Pcreate(H5P_DATASET_XFER));
+  if (!access.valid() || !transfer.valid() || H5Pset_fapl_mpio(access.get(), comm.get(), MPI_INFO_NULL) < 0 ||
+      H5Pset_dxpl_mpio(transfer.get(), H5FD_MPIO_COLLECTIVE) < 0) {
+    fail("could not set up the parallel HDF5 writing");
+  }
+  io::detail::File file(H5Fcreate(temporary.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get()));
+  if (!file.valid()) fail(fmt::format("could not create temporary file '{}'", temporary));
+  try {
+    io::fill_hdf5_file(file.get(), transfer.get(), [&](const io::Hdf5Node& root) {
+      root.write_dataset_rows("height", io::field_shape(grid), layout.first_row, heights, "m");
+      io::write_result_fields(root, grid, result, {layout.first_row, comm.rank() == 0});
+      io::write_result_root_attributes(root, grid, result, metadata);
+      if (metadata.extra_groups) metadata.extra_groups(root);
+    });
+  } catch (const FileError& error) {
+    throw FileError(fmt::format("cannot write output '{}': {}", path.string(), error.what()));
+  }
+  if (!file.close()) fail(fmt::format("could not write temporary file '{}'", temporary));
+}
+
+}  // namespace
+
+void write_result_slabs(const MpiCommunicator& comm, const std::filesystem::path& path, const Grid& grid,
+                        const SlabLayout& layout, std::span<const double> heights, const solvers::SolveResult& result,
+                        const io::ResultMetadata& metadata) {
+  const bool first = comm.rank() == 0;
+  std::unique_ptr<io::OutputTemporary> output;
+  std::string temporary;
+  run_agreed(comm, [&] {
+    if (!first) return;
+    output = std::make_unique<io::OutputTemporary>(path);
+    temporary = output->temporary().string();
+  });
+  broadcast(temporary, comm);
+  run_agreed(comm, [&] { write_into(comm, path, temporary, grid, layout, heights, result, metadata); });
+  // Every process has closed the file: only now is it complete.
+  run_agreed(comm, [&] {
+    if (first) output->commit();
+  });
+}
+
+}  // namespace halfspace::mpi
