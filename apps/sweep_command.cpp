@@ -97,12 +97,9 @@ std::string describe_load(ControlMode mode, double value, const Grid& grid) {
   return fmt::format("{} {:.6g} {}", load_name(mode), value, load_unit(mode, grid));
 }
 
-int run_sweep(const SolveSetup& setup) {
-  // Threads first: the FFT plans use the thread count in force when made.
-  set_threads(setup.threads);
-  const std::optional<PlotTool> plot =
-      setup.plot ? std::optional<PlotTool>(find_plot_tool({"--plot", "drop --plot", {}})) : std::nullopt;
+namespace {
 
+std::vector<analysis::SweepStep> solve_sweep(const SolveSetup& setup) {
   Progress progress(!setup.quiet, setup.load_values.size(), setup.solver.solver_tolerance());
   solvers::SolverOptions settings = setup.solver;
   settings.progress = progress.callback();
@@ -118,7 +115,23 @@ int run_sweep(const SolveSetup& setup) {
                     : analysis::sweep_surface(setup.grid, heights, setup.e_star, setup.loading.mode, setup.load_values,
                                               settings, options);
   progress.clear();
+  return steps;
+}
 
+}  // namespace
+
+int run_sweep(const SolveSetup& setup) {
+  // Threads first: the FFT plans use the thread count in force when made.
+  set_threads(setup.threads);
+  const std::optional<PlotTool> plot =
+      setup.plot ? std::optional<PlotTool>(find_plot_tool({"--plot", "drop --plot", {}})) : std::nullopt;
+  const std::vector<analysis::SweepStep> steps = solve_sweep(setup);
+  return finish_sweep(setup, steps, plot);
+}
+
+int finish_sweep(const SolveSetup& setup, std::span<const analysis::SweepStep> steps,
+                 const std::optional<PlotTool>& plot) {
+  const std::span<const double> heights(setup.heights.data(), static_cast<std::size_t>(setup.heights.size()));
   io::ResultMetadata metadata = io::result_metadata(provenance(setup), setup.grid, heights);
   metadata.coating = setup.coating;
   io::write_sweep_result(setup.output, setup.grid, heights, steps, metadata);

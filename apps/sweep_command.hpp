@@ -2,10 +2,14 @@
 // CSV), its summary table and figures.
 #pragma once
 
+#include <optional>
+#include <span>
 #include <string>
 
+#include "halfspace/analysis/load_sweep.hpp"
 #include "halfspace/io/result_metadata.hpp"
 #include "halfspace/solvers/loading.hpp"
+#include "plot_tool.hpp"
 #include "solve_setup.hpp"
 
 namespace halfspace::app {
@@ -18,6 +22,13 @@ namespace halfspace::app {
 // figures failed. Throws InputError (FileError) for bad input or when a file
 // cannot be written.
 int run_sweep(const SolveSetup& setup);
+
+// run_sweep after the solves: writes the files of the solved `steps`,
+// prints the summary table and the failed steps, draws the figures with
+// `plot` if given; returns and throws as run_sweep. The MPI program calls it
+// on the first process with the steps' fields gathered.
+int finish_sweep(const SolveSetup& setup, std::span<const analysis::SweepStep> steps,
+                 const std::optional<PlotTool>& plot);
 
 // What the result files of `setup` record about the run (io::result_metadata).
 io::SolveProvenance provenance(const SolveSetup& setup);

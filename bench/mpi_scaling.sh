@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Strong scaling of the distributed solve on this machine: one rough surface
-# (periodic, or free with BOUNDARY = free) solved by pk-fourier as
+# (periodic, or free with BOUNDARY = free) solved by SOLVER (pk-fourier
+# unless given) as
 #   serial-1t   the serial program, 1 thread
 #   serial-2t   the serial program, 2 OpenMP threads
 #   mpi-1x1     the MPI program, 1 process (FFTW-MPI on one process)
@@ -8,13 +9,14 @@
 # alternating, REPEATS rounds; prints a Markdown table of medians: the solve's
 # own time (the result's solve_seconds), the whole run's wall time, the
 # iterations, and the peak resident memory of each process (GNU time).
-# Usage: bench/mpi_scaling.sh SERIAL_PROGRAM MPI_PROGRAM [GRID] [REPEATS] [BOUNDARY]
+# Usage: bench/mpi_scaling.sh SERIAL_PROGRAM MPI_PROGRAM [GRID] [REPEATS] [BOUNDARY] [SOLVER]
 set -euo pipefail
 serial="$(realpath "$1")"
 mpi="$(realpath "$2")"
 grid="${3:-2048x2048}"
 repeats="${4:-3}"
 boundary="${5:-periodic}"
+solver="${6:-pk-fourier}"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 cd "$work"
@@ -23,7 +25,7 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_WAIT_POLICY
 "$serial" generate --kind self-affine --grid "$grid" --size 1e-3x1e-3 --hurst 0.8 --rms-slope 0.1 --seed 1 \
   --output surface.h5 --quiet
 solve_args=(solve --height-map surface.h5 --boundary "$boundary" --E-star 1e11 --mean-pressure 5e7
-  --solver pk-fourier --fft-planning estimate --quiet)
+  --solver "$solver" --fft-planning estimate --quiet)
 
 # One run of configuration $1: "solve_seconds wall_seconds iterations rss_kib_per_process".
 run() {
@@ -44,13 +46,14 @@ run() {
 import h5py, sys
 f = h5py.File('out.h5', 'r')
 print(f.attrs['solve_seconds'], $end - $start, f.attrs['iterations'], '$rss')"
+  mv out.h5 "$1.h5"
 }
 
 configs=(serial-1t serial-2t mpi-1x1 mpi-2x1)
 for ((k = 0; k < repeats; ++k)); do
   for c in "${configs[@]}"; do echo "$c $(run "$c")" >> runs.txt; done
 done
-echo "grid $grid ($boundary), $repeats rounds alternating, $(nproc) cores, load average at the end: $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "grid $grid ($boundary), solver $solver, $repeats rounds alternating, $(nproc) cores, load average at the end: $(cut -d' ' -f1-3 /proc/loadavg)"
 echo
 echo "| run | solve s (median) | wall s (median) | iterations | peak RSS per process (MiB) |"
 echo "|---|---|---|---|---|"
@@ -63,3 +66,11 @@ wall = statistics.median(float(r[2]) for r in rows)
 rss = '/'.join(str(round(int(v) / 1024)) for v in rows[-1][4].split('/'))
 print(f'| $c | {solve:.2f} | {wall:.2f} | {rows[-1][3]} | {rss} |')"
 done
+# The 2-process result against the serial one (the last round's).
+/usr/bin/python3 -c "
+import h5py, numpy as np
+a, b = h5py.File('mpi-2x1.h5', 'r'), h5py.File('serial-1t.h5', 'r')
+p, q = a['pressure'][()], b['pressure'][()]
+print(f'\nmpi-2x1 against serial-1t: pressure within {np.max(np.abs(p - q)) / np.max(np.abs(q)):.1e} of its '
+      f'largest value, {np.count_nonzero((p > 0) != (q > 0))} cells differ in contact; deflation block '
+      f'{a.attrs[\"deflation_block\"]} against {b.attrs[\"deflation_block\"]}')"

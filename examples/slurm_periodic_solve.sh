@@ -22,11 +22,12 @@ export OMP_PLACES=cores OMP_PROC_BIND=close OMP_WAIT_POLICY=passive
 
 # srun starts the processes with Slurm's binding: each gets its
 # --cpus-per-task cores, and --threads uses them all. The solver must be one
-# that is distributed (pk-fourier or pk, periodic 2D grids). FFTW-MPI
+# that is distributed (pk-multilevel, the default, pk-fourier or pk, on
+# periodic 2D grids). FFTW-MPI
 # measures its plans in every run (no wisdom file yet): a few seconds to a
 # minute on large grids; --fft-planning estimate skips it.
 srun --cpu-bind=cores "$program" solve \
   --height-map "$map" --boundary periodic \
   --E-star 1e11 --mean-pressure 1e7 \
-  --solver pk-fourier --threads "${SLURM_CPUS_PER_TASK}" \
+  --threads "${SLURM_CPUS_PER_TASK}" \
   --output "$output"

@@ -41,6 +41,7 @@
 #include "halfspace/mpi/slab_gather.hpp"
 #include "halfspace/mpi/slab_surface_statistics.hpp"
 #include "halfspace/threads.hpp"
+#include "mpi_sweep.hpp"
 
 namespace halfspace::app {
 namespace {
@@ -80,7 +81,6 @@ Grid broadcast(const std::optional<Grid>& grid) {
 // What the program adds to the solver: refused on several processes until
 // it is distributed; on one process the serial program does it.
 std::optional<std::string> unsupported_by_program(const SolveSetup& setup) {
-  if (setup.load_values.size() > 1) return fmt::format("a load sweep ({} loads) {}", setup.load_values.size(), kNotYet);
   if (!setup.stress_depths.empty()) return fmt::format("subsurface stresses (stress depths) {}", kNotYet);
   if (setup.coating) return fmt::format("a coated half-space {}", kNotYet);
   if (setup.plot) return fmt::format("plot {}", kNotYet);
@@ -271,6 +271,7 @@ std::optional<int> run_solve_on_slabs(const SolveSetup& setup) {
 
   // Threads first: the FFT plans use the thread count in force when made.
   set_threads(setup.threads);
+  if (setup.load_values.size() > 1) return run_sweep_on_slabs(setup, *world);
   Progress progress(!setup.quiet && root, 1, setup.solver.tolerance);
   solvers::SolverOptions settings = setup.solver;
   settings.progress = progress.callback();

@@ -8,9 +8,12 @@
 
 #include <utility>
 
+#include "halfspace/mpi/distributed_multilevel.hpp"
 #include "halfspace/mpi/slab_fft.hpp"
 #include "halfspace/mpi/slab_fourier_operator.hpp"
 #include "halfspace/mpi/slab_free_operator.hpp"
+#include "halfspace/solvers/balancing_preconditioner.hpp"
+#include "halfspace/solvers/block_deflation.hpp"
 #include "halfspace/solvers/polonsky_keer.hpp"
 #include "halfspace/solvers/solver_factory.hpp"
 
@@ -54,8 +57,16 @@ SlabOperator make_slab_operator(const Grid& grid, double e_star, bool fourier, F
 // The solver with the operator and preconditioner it references.
 class DistributedSolver final : public solvers::ContactSolver {
  public:
-  DistributedSolver(SlabOperator slab, const solvers::PolonskyKeerOptions& options)
-      : op_(std::move(slab.op)), fourier_(std::move(slab.fourier)), solver_(*op_, options, fourier_.get()) {}
+  // With `deflation`, the block-deflation coarse correction around the
+  // Fourier preconditioner (which the slab must then have).
+  DistributedSolver(SlabOperator slab, std::unique_ptr<solvers::BlockDeflation> deflation,
+                    const solvers::PolonskyKeerOptions& options)
+      : op_(std::move(slab.op)),
+        fourier_(std::move(slab.fourier)),
+        deflation_(std::move(deflation)),
+        balancing_(deflation_ ? std::make_unique<solvers::BalancingPreconditioner>(*op_, *fourier_, *deflation_)
+                              : nullptr),
+        solver_(*op_, options, balancing_ ? static_cast<solvers::Preconditioner*>(balancing_.get()) : fourier_.get()) {}
 
   std::string_view name() const override { return solver_.name(); }
   SolveResult solve(std::span<const double> initial_gap, const Loading& loading,
@@ -69,6 +80,8 @@ class DistributedSolver final : public solvers::ContactSolver {
  private:
   std::unique_ptr<InfluenceOperator> op_;
   std::unique_ptr<solvers::Preconditioner> fourier_;
+  std::unique_ptr<solvers::BlockDeflation> deflation_;
+  std::unique_ptr<solvers::BalancingPreconditioner> balancing_;  // around fourier_ and deflation_
   solvers::PolonskyKeer solver_;
 };
 
@@ -99,13 +112,10 @@ void check_distributable(const Grid& grid, const solvers::SolverOptions& options
     throw SolverOptionError("hardness", fmt::format("{}", *options.interface_law.hardness),
                             fmt::format("{}: solve capped contacts on one process", kNotYet));
   }
-  if (options.type != SolverType::pk && options.type != SolverType::pk_fourier) {
+  if (options.type != SolverType::pk && options.type != SolverType::pk_fourier &&
+      options.type != SolverType::pk_multilevel) {
     throw SolverOptionError("type", std::string(to_string(options.type)),
-                            fmt::format("{}: use solver pk-fourier (or pk)", kNotYet));
-  }
-  if (options.deflation.mode == solvers::DeflationOptions::Mode::on) {
-    throw SolverOptionError("deflation block", fmt::format("{}", options.deflation.block),
-                            fmt::format("{}: use no block deflation (0)", kNotYet));
+                            fmt::format("{}: use solver pk-multilevel, pk-fourier or pk", kNotYet));
   }
 }
 
@@ -114,8 +124,17 @@ std::unique_ptr<solvers::ContactSolver> make_distributed_solver(const Grid& grid
                                                                 const MpiCommunicator& comm) {
   options.validate(grid);
   check_distributable(grid, options);
+  if (options.type == SolverType::pk_multilevel) return make_distributed_multilevel(grid, e_star, options, comm);
   const bool projected = options.type == SolverType::pk_fourier;
-  return std::make_unique<DistributedSolver>(make_slab_operator(grid, e_star, projected, options.fft_planning, comm),
+  SlabOperator slab = make_slab_operator(grid, e_star, projected, options.fft_planning, comm);
+  // Block deflation as the serial pk-fourier takes it: when asked for (its
+  // options were checked by validate), on the rows the operator holds.
+  std::unique_ptr<solvers::BlockDeflation> deflation;
+  if (projected && options.deflation.mode == solvers::DeflationOptions::Mode::on) {
+    const SlabLayout layout = slab_layout(grid.nx(), grid.ny(), comm);
+    deflation = std::make_unique<solvers::BlockDeflation>(grid, options.deflation, layout.first_row, layout.rows, comm);
+  }
+  return std::make_unique<DistributedSolver>(std::move(slab), std::move(deflation),
                                              solvers::polonsky_keer_options(options, options.tolerance, projected));
 }
 

@@ -15,7 +15,7 @@ using linalg::sums;
 BalancingPreconditioner::BalancingPreconditioner(InfluenceOperator& op, Preconditioner& fourier,
                                                  BlockDeflation& deflation)
     : op_(op), fourier_(fourier), deflation_(deflation) {
-  if (deflation_.grid().size() != op_.grid().size()) {
+  if (deflation_.grid().size() != op_.grid().size() || deflation_.local_size() != op_.local_size()) {
     throw InputError("block deflation was built for a different grid than the operator's");
   }
 }
@@ -30,7 +30,7 @@ void BalancingPreconditioner::begin_solve() {
 
 bool BalancingPreconditioner::adapt(const SearchSet& set, std::span<const double> residuals) {
   set_ = set;
-  const std::size_t n = op_.grid().size();
+  const std::size_t n = op_.local_size();
   auto in_contact = [&](std::size_t i) { return set.in_contact(i); };  // the coarse functions' cells
   bool deflate = schedule_.wants(residuals);
   if (deflate && !kernel_known_ && deflation_.decline_if_dense(in_contact)) {
@@ -40,7 +40,7 @@ bool BalancingPreconditioner::adapt(const SearchSet& set, std::span<const double
   if (deflate && !kernel_known_) {
     // The kernel in real space, K e_0, for the coarse matrix.
     coarse_field_.setZero(static_cast<Eigen::Index>(n));
-    coarse_field_[0] = 1.0;
+    if (deflation_.holds_first_cell()) coarse_field_[0] = 1.0;
     double* unit = coarse_field_.data();
     op_.apply({unit, n}, {unit, n});
     ++operator_applications_;
@@ -74,14 +74,15 @@ void BalancingPreconditioner::apply(std::span<const double> in, std::span<double
 // control); pre_correction and post_correction are B's two halves around
 // M^-1 (block_deflation.hpp).
 void BalancingPreconditioner::apply_balancing(std::span<const double> in, std::span<double> out) {
-  const std::size_t n = op_.grid().size();
+  const std::size_t n = op_.local_size();
+  const linalg::Communicator& comm = op_.communicator();
   const SearchSet& set = set_;
   const bool mean_free = set.mean_free;
   double* z = out.data();
   // One field holds Z y1, then its image (K in place), then K of M^-1's
   // output: post_correction needs the coarse y1 alone, which it keeps.
   double* field = coarse_field_.data();
-  const auto [count, in_sum] = sums<2>(n, [&](std::size_t i) {
+  const auto [count, in_sum] = sums<2>(comm, n, [&](std::size_t i) {
     const double inside = set.contains(i) ? 1.0 : 0.0;
     return std::array<double, 2>{inside, inside * in[i]};
   });
@@ -92,9 +93,9 @@ void BalancingPreconditioner::apply_balancing(std::span<const double> in, std::s
   auto onto_set = [&](double* values, const double* minus) {
     double mean = 0.0;
     if (mean_free) {
-      mean =
-          linalg::sum(n, [&](std::size_t i) { return set.contains(i) ? values[i] - (minus ? minus[i] : 0.0) : 0.0; }) /
-          count;
+      mean = linalg::sum(comm, n,
+                         [&](std::size_t i) { return set.contains(i) ? values[i] - (minus ? minus[i] : 0.0) : 0.0; }) /
+             count;
     }
     for_each_index(
         n, [&](std::size_t i) { values[i] = set.contains(i) ? values[i] - (minus ? minus[i] : 0.0) - mean : 0.0; });

@@ -90,8 +90,22 @@ void BlockDeflation::require_covers(const Grid& grid, std::size_t block) {
   }
 }
 
-BlockDeflation::BlockDeflation(const Grid& grid, BlockDeflationOptions options) : grid_(grid), options_(options) {
+BlockDeflation::BlockDeflation(const Grid& grid, BlockDeflationOptions options)
+    : BlockDeflation(grid, options, 0, grid.ny(), linalg::serial_communicator()) {}
+
+BlockDeflation::BlockDeflation(const Grid& grid, BlockDeflationOptions options, std::size_t first_row, std::size_t rows,
+                               const linalg::Communicator& comm)
+    : grid_(grid), options_(options), first_row_(first_row), rows_(rows), comm_(&comm) {
   options_.validate();
+  // One process holds every row; several hold slabs.
+  if (first_row_ + rows_ > grid_.ny() || (comm_->size() == 1 && (first_row_ != 0 || rows_ != grid_.ny()))) {
+    throw InputError(fmt::format("block deflation: rows {} to {} of the {} grid do not suit {} process(es)", first_row_,
+                                 first_row_ + rows_, grid_.shape_string(), comm_->size()));
+  }
+  if (comm_->size() > 1) {
+    local_set_.assign(local_size(), 0);
+    whole_set_.assign(grid_.size(), 0);
+  }
   require_covers(grid_, options_.block);
   const std::size_t b = options_.block;
   blocks_x_ = grid_.nx() / b;
@@ -114,8 +128,18 @@ BlockDeflation::BlockDeflation(const Grid& grid, BlockDeflationOptions options) 
 
 BlockDeflation::~BlockDeflation() = default;
 
-void BlockDeflation::set_kernel(std::span<const double> unit_response) {
-  assert(unit_response.size() == grid_.size());
+void BlockDeflation::set_kernel(std::span<const double> local_response) {
+  assert(local_response.size() == local_size());
+  // The whole K e_0 on every process (once per solver: the near field and
+  // the block-centre offsets lie on any process's rows).
+  std::vector<double> whole;
+  std::span<const double> unit_response = local_response;
+  if (comm_->size() > 1) {
+    whole.resize(grid_.size());
+    comm_->concatenate(std::as_bytes(local_response), std::as_writable_bytes(std::span<double>(whole)),
+                       grid_.nx() * sizeof(double));
+    unit_response = whole;
+  }
   const std::size_t nx = grid_.nx();
   const std::size_t ny = grid_.ny();
   const bool periodic = grid_.periodic();
@@ -387,53 +411,55 @@ void BlockDeflation::solve_coarse(bool fixed_load) {
   ++stats_.unconverged_coarse_solves;
 }
 
-void BlockDeflation::restrict_to_blocks(std::span<const double> field, std::span<const double> minus) {
+void BlockDeflation::restrict_to_blocks(std::span<const double> field) {
   const std::size_t b = options_.block;
   const std::size_t nx = grid_.nx();
+  // This process's rows of each block (a block may straddle two processes).
+  const std::size_t end_row = first_row_ + rows_;
   linalg::for_each_row(blocks_y_, b * nx, [&](std::size_t by) {
+    const std::size_t first = std::max(by * b, first_row_);
+    const std::size_t last = std::min((by + 1) * b, end_row);
     for (std::size_t bx = 0; bx < blocks_x_; ++bx) {
       double total = 0.0;
-      for (std::size_t row = by * b; row < (by + 1) * b; ++row) {
-        const std::size_t begin = row * nx + bx * b;
-        if (minus.empty()) {
-          for (std::size_t i = begin; i < begin + b; ++i) total += (set_[i] & 1U) ? field[i] : 0.0;
-        } else {
-          for (std::size_t i = begin; i < begin + b; ++i) {
-            total += (set_[i] & 1U) ? field[i] - minus[i] : 0.0;
-          }
-        }
+      for (std::size_t row = first; row < last; ++row) {
+        const std::uint8_t* set = set_.data() + row * nx + bx * b;
+        const double* values = field.data() + (row - first_row_) * nx + bx * b;
+        for (std::size_t c = 0; c < b; ++c) total += (set[c] & 1U) ? values[c] : 0.0;
       }
       rhs_[by * blocks_x_ + bx] = total;
     }
   });
+  comm_->sum(rhs_);
 }
 
 void BlockDeflation::prolong(const std::vector<double>& y, std::span<double> z, bool add) const {
   const std::size_t b = options_.block;
   const std::size_t nx = grid_.nx();
-  linalg::for_each_row(grid_.ny(), nx, [&](std::size_t row) {
+  linalg::for_each_row(rows_, nx, [&](std::size_t local_row) {
+    const std::size_t row = first_row_ + local_row;
     const std::size_t by = row / b;
     for (std::size_t bx = 0; bx < blocks_x_; ++bx) {
       const double value = y[by * blocks_x_ + bx];
-      const std::size_t begin = row * nx + bx * b;
+      const std::uint8_t* set = set_.data() + row * nx + bx * b;
+      double* values = z.data() + local_row * nx + bx * b;
       if (add) {
-        for (std::size_t i = begin; i < begin + b; ++i) z[i] += (set_[i] & 1U) ? value : 0.0;
+        for (std::size_t c = 0; c < b; ++c) values[c] += (set[c] & 1U) ? value : 0.0;
       } else {
-        for (std::size_t i = begin; i < begin + b; ++i) z[i] = (set_[i] & 1U) ? value : 0.0;
+        for (std::size_t c = 0; c < b; ++c) values[c] = (set[c] & 1U) ? value : 0.0;
       }
     }
   });
 }
 
 void BlockDeflation::pre_correction(std::span<const double> g, std::span<double> field, bool fixed_load) {
-  restrict_to_blocks(g, {});
+  restrict_to_blocks(g);
   solve_coarse(fixed_load);
   first_ = y_;
   prolong(first_, field, false);
 }
 
 void BlockDeflation::post_correction(std::span<const double> image, std::span<double> z, bool fixed_load) {
-  restrict_to_blocks(image, {});
+  restrict_to_blocks(image);
   solve_coarse(fixed_load);
   for (std::size_t k = 0; k < coarse_size(); ++k) y_[k] = first_[k] - y_[k];
   prolong(y_, z, true);

@@ -27,16 +27,20 @@ SolveResult solve_level(ContactSolver& level, std::span<const double> gap, const
 bool MultilevelSolver::warm_start_is_close(std::span<const double> pressure, const Loading& loading) const {
   if (!loading.load_controlled()) return true;
   const double target = loading.target_force(grid_.domain_area());
-  const double force =
-      grid_.cell_area() * linalg::sum(pressure.size(), [&](std::size_t i) { return std::max(pressure[i], 0.0); });
+  const double force = grid_.cell_area() * linalg::sum(transfer_->communicator(grid_), pressure.size(),
+                                                       [&](std::size_t i) { return std::max(pressure[i], 0.0); });
   if (!(force > 0.0)) return false;
   const double ratio = target > force ? target / force : force / target;
   return ratio <= options_.warm_start_max_load_ratio;
 }
 
 MultilevelSolver::MultilevelSolver(const Grid& grid, double fine_tolerance, LevelSolverFactory make_level,
-                                   MultilevelOptions options)
-    : grid_(grid), fine_tolerance_(fine_tolerance), make_level_(std::move(make_level)), options_(options) {
+                                   MultilevelOptions options, std::unique_ptr<LevelTransfer> transfer)
+    : grid_(grid),
+      fine_tolerance_(fine_tolerance),
+      make_level_(std::move(make_level)),
+      options_(options),
+      transfer_(transfer ? std::move(transfer) : std::make_unique<LevelTransfer>()) {
   options_.validate();
   fine_ = make_level_(grid_, fine_tolerance_, true);
   // Build each coarse level once and drop it: its FFT plans (measured ones
@@ -56,15 +60,16 @@ Eigen::ArrayXd MultilevelSolver::coarse_start(const Grid& grid, std::span<const 
                                               CoarseStart& record) {
   const std::optional<Grid> coarse = coarser_grid(grid, options_.min_cells_per_axis);
   if (!coarse) return {};
-  Eigen::ArrayXd coarse_gap(static_cast<Eigen::Index>(coarse->size()));
-  restrict_by_average(grid, gap, {coarse_gap.data(), coarse->size()});
-  Eigen::ArrayXd start = coarse_start(*coarse, {coarse_gap.data(), coarse->size()}, loading, record);
+  const std::size_t coarse_size = transfer_->local_size(*coarse);
+  Eigen::ArrayXd coarse_gap(static_cast<Eigen::Index>(coarse_size));
+  transfer_->restrict_to_coarse(grid, gap, {coarse_gap.data(), coarse_size});
+  Eigen::ArrayXd start = coarse_start(*coarse, {coarse_gap.data(), coarse_size}, loading, record);
 
   // The same load on the same domain: force, mean pressure and approach all
   // carry over unchanged.
   SolveResult coarse_result;
   try {
-    coarse_result = solve_level(*make_level_(*coarse, coarse_tolerance(), false), {coarse_gap.data(), coarse->size()},
+    coarse_result = solve_level(*make_level_(*coarse, coarse_tolerance(), false), {coarse_gap.data(), coarse_size},
                                 loading, std::move(start));
   } catch (const InputError&) {
     // The input was checked on the fine grid; a coarse grid can only differ
@@ -79,28 +84,30 @@ Eigen::ArrayXd MultilevelSolver::coarse_start(const Grid& grid, std::span<const 
   record.operator_work += weight * coarse_result.operator_applications;
   record.preconditioner_work += weight * coarse_result.preconditioner_applications;
   // Only a start: a coarse solve short of its tolerance still helps, one
-  // that broke down does not.
-  if (!coarse_result.pressure.allFinite()) return {};
-  Eigen::ArrayXd fine_start(static_cast<Eigen::Index>(grid.size()));
-  prolong_constant(grid, {coarse_result.pressure.data(), coarse->size()}, {fine_start.data(), grid.size()});
+  // that broke down does not (a distributed level agrees on it).
+  if (transfer_->communicator(*coarse).max(coarse_result.pressure.allFinite() ? 0.0 : 1.0) > 0.0) return {};
+  const std::size_t fine_size = transfer_->local_size(grid);
+  Eigen::ArrayXd fine_start(static_cast<Eigen::Index>(fine_size));
+  transfer_->prolong_to_fine(grid, {coarse_result.pressure.data(), coarse_size}, {fine_start.data(), fine_size});
   return fine_start;
 }
 
 SolveResult MultilevelSolver::solve(std::span<const double> initial_gap, const Loading& loading,
                                     std::span<const double> initial_pressure) {
   const auto start_time = std::chrono::steady_clock::now();
-  if (!initial_pressure.empty() && initial_pressure.size() == grid_.size() &&
-      !warm_start_is_close(initial_pressure, loading)) {
-    initial_pressure = {};
-  }
-  if (!initial_pressure.empty()) {
+  // Given if given on any process (one without cells of a distributed grid
+  // holds none), so that the processes decide alike.
+  const std::size_t local_size = transfer_->local_size(grid_);
+  bool warm = transfer_->communicator(grid_).max(initial_pressure.empty() ? 0.0 : 1.0) > 0.0;
+  if (warm && initial_pressure.size() == local_size && !warm_start_is_close(initial_pressure, loading)) warm = false;
+  if (warm) {
     SolveResult result = fine_->solve(initial_gap, loading, initial_pressure);
     result.solver = std::string(name());
     return result;
   }
-  if (initial_gap.size() != grid_.size()) {
+  if (initial_gap.size() != local_size) {
     throw InputError(
-        fmt::format("initial gap has {} entries, but the grid has {} cells", initial_gap.size(), grid_.size()));
+        fmt::format("initial gap has {} entries, but the grid has {} cells here", initial_gap.size(), local_size));
   }
   loading.validate();
   CoarseStart coarse;

@@ -120,14 +120,7 @@ std::unique_ptr<ContactSolver> make_polonsky_keer(const Grid& grid, const Elasti
 // correction on the finest grid only, where the contact has the most spots.
 std::unique_ptr<ContactSolver> make_multilevel(const Grid& grid, const Elasticity& e_star,
                                                const SolverOptions& options) {
-  using Mode = DeflationOptions::Mode;
-  // Not by default with a hardness cap: its steps keep clipping cells at the
-  // cap, so the schedule never found them settled and the correction never
-  // joined in the capped solves measured (docs/theory.md#hardness-cap); it would cost
-  // its memory for nothing. Asked for (Mode::on), it applies.
-  const bool deflated = options.deflation.mode == Mode::on ||
-                        (options.deflation.mode == Mode::automatic && options.deflation.automatic_applies(grid) &&
-                         !options.interface_law.hardness);
+  const bool deflated = multilevel_deflates(grid, options);
   auto make_level = [e_star, options, deflated](const Grid& level, double tolerance, bool fine) {
     return make_polonsky_keer(level, e_star, options, tolerance, fine, true, fine && deflated);
   };
@@ -185,6 +178,17 @@ PolonskyKeerOptions polonsky_keer_options(const SolverOptions& options, double t
   pk.form = projected ? PolonskyKeerForm::projected : PolonskyKeerForm::paper;
   pk.bounds = options.interface_law.bounds();
   return pk;
+}
+
+bool multilevel_deflates(const Grid& grid, const SolverOptions& options) {
+  using Mode = DeflationOptions::Mode;
+  // Not by default with a hardness cap: its steps keep clipping cells at the
+  // cap, so the schedule never found them settled and the correction never
+  // joined in the capped solves measured (docs/theory.md#hardness-cap); it would cost
+  // its memory for nothing. Asked for (Mode::on), it applies.
+  return options.deflation.mode == Mode::on ||
+         (options.deflation.mode == Mode::automatic && options.deflation.automatic_applies(grid) &&
+          !options.interface_law.hardness);
 }
 
 std::unique_ptr<ContactSolver> make_solver(const Grid& grid, double e_star, const SolverOptions& options) {

@@ -283,5 +283,16 @@ TEST(BlockDeflationTest, RefusesGridsItCannotCover) {
   EXPECT_THROW(BlockDeflation(Grid::plane(64, 64, 1e-6, 1e-6, Boundary::periodic), {0}), InputError);
 }
 
+// A slab of rows is for a distributed grid (the MPI build's tests solve
+// those): on one process the correction holds every row.
+TEST(BlockDeflationTest, OneProcessHoldsEveryRow) {
+  const Grid grid = Grid::plane(64, 64, 1e-6, 1e-6, Boundary::periodic);
+  const linalg::Communicator& one = linalg::serial_communicator();
+  EXPECT_EQ(BlockDeflation(grid, {8}, 0, 64, one).local_size(), grid.size());
+  EXPECT_THROW(BlockDeflation(grid, {8}, 0, 32, one), InputError);
+  EXPECT_THROW(BlockDeflation(grid, {8}, 32, 32, one), InputError);
+  EXPECT_THROW(BlockDeflation(grid, {8}, 32, 64, one), InputError);
+}
+
 }  // namespace
 }  // namespace halfspace::solvers

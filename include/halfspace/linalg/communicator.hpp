@@ -4,6 +4,8 @@
 // process while the distributed one around it reduces over all.
 #pragma once
 
+#include <cstddef>
+#include <cstring>
 #include <span>
 
 namespace halfspace::linalg {
@@ -20,6 +22,10 @@ class Communicator {
   // The largest and smallest of the processes' values.
   virtual double max(double local) const = 0;
   virtual double min(double local) const = 0;
+  // Every process's `mine`, in rank order, into `all` on every process (a
+  // distributed field's slabs made whole); the sizes are multiples of
+  // `unit` bytes (a row), and `all` holds their sum.
+  virtual void concatenate(std::span<const std::byte> mine, std::span<std::byte> all, std::size_t unit) const = 0;
 };
 
 // One process holding the whole field: every reduction is the identity.
@@ -30,6 +36,9 @@ class SerialCommunicator final : public Communicator {
   void sum(std::span<double> /*values*/) const override {}
   double max(double local) const override { return local; }
   double min(double local) const override { return local; }
+  void concatenate(std::span<const std::byte> mine, std::span<std::byte> all, std::size_t /*unit*/) const override {
+    if (!mine.empty()) std::memcpy(all.data(), mine.data(), mine.size());
+  }
 };
 
 // The one SerialCommunicator, the default of every reduction.

@@ -14,18 +14,20 @@
 namespace halfspace::mpi {
 
 // Whether make_distributed_solver takes `options` on `grid`: a 2D grid
-// (periodic or free), solver pk or pk-fourier without block deflation, no
-// hardness cap, no adhesion.
+// (periodic or free), solver pk, pk-fourier or pk-multilevel (block
+// deflation as the serial solvers take it), no hardness cap, no adhesion.
 bool distributable(const Grid& grid, const solvers::SolverOptions& options);
 
 // Throws SolverOptionError naming the option and what to use instead unless
-// distributable(grid, options), e.g. "type = pk-multilevel is not available
-// with more than one process yet: use solver pk-fourier".
+// distributable(grid, options), e.g. "type = lemke is not available
+// with more than one process yet: use solver pk-multilevel, pk-fourier or pk".
 void check_distributable(const Grid& grid, const solvers::SolverOptions& options);
 
 // Polonsky-Keer (pk: the paper's form; pk-fourier: the projected form with
-// the Fourier preconditioner) on the slab operator of `grid` (periodic:
-// SlabFourierOperator; free: SlabFreeOperator) over `comm`,
+// the Fourier preconditioner, with block deflation if asked for;
+// pk-multilevel: distributed_multilevel.hpp, whose distributed levels are
+// made here) on the slab operator of `grid` (periodic: SlabFourierOperator;
+// free: SlabFreeOperator) over `comm`,
 // which must outlive the solver. Fields given to and returned by the solver
 // hold this process's rows (slab_layout). Collective; throws as
 // check_distributable and SolverOptions::validate do.

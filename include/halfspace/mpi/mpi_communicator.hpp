@@ -25,6 +25,9 @@ class MpiCommunicator final : public linalg::Communicator {
   void sum(std::span<double> values) const override;
   double max(double local) const override;
   double min(double local) const override;
+  // MPI_Allgatherv of whole units (an MPI datatype of `unit` bytes, so that
+  // the counts stay within MPI's int).
+  void concatenate(std::span<const std::byte> mine, std::span<std::byte> all, std::size_t unit) const override;
 
  private:
   MPI_Comm comm_;

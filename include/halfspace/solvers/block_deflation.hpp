@@ -58,13 +58,25 @@ class BlockDeflation {
   static void require_covers(const Grid& grid, std::size_t block);
   // Throws InputError unless covers(grid, options.block).
   BlockDeflation(const Grid& grid, BlockDeflationOptions options = {});
+  // On a grid spread over the processes of `comm` in slabs of rows (which
+  // must outlive this object): the fields given to and returned by the
+  // correction, and the set, hold this process's `rows` rows from
+  // `first_row` on, and every process keeps the whole set and solves the
+  // (small) coarse problem redundantly, its right-hand sides summed over
+  // the processes. Throws InputError unless covers(grid, options.block).
+  BlockDeflation(const Grid& grid, BlockDeflationOptions options, std::size_t first_row, std::size_t rows,
+                 const linalg::Communicator& comm);
   ~BlockDeflation();
 
   const Grid& grid() const { return grid_; }
   std::size_t block() const { return options_.block; }
+  // The cells held here (rows x nx), and whether cell 0 is among them.
+  std::size_t local_size() const { return rows_ * grid_.nx(); }
+  bool holds_first_cell() const { return first_row_ == 0 && rows_ > 0; }
 
   // The kernel in real space: `unit_response` = K e_0, the displacement of
-  // every cell under unit pressure on cell 0. Must be called before update().
+  // every cell under unit pressure on cell 0 (this process's rows).
+  // Collective; must be called before update().
   void set_kernel(std::span<const double> unit_response);
 
   // Records the coarse set, in_set(i) for each cell, and brings A up to
@@ -74,8 +86,59 @@ class BlockDeflation {
   // sums would exceed max_pair_terms per cell is not made: ready() is then
   // false (dense contacts, where the correction would cost more than it
   // saves), and the next update tries again.
+  // Collective on several processes.
   template <class InSet>
   void update(InSet&& in_set) {
+    if (comm_->size() > 1) {
+      gather_set(in_set);
+      update_whole([this](std::size_t i) { return whole_set_[i] != 0; });
+      return;
+    }
+    update_whole(in_set);
+  }
+  // Whether A is built for the last update's set.
+  bool ready() const { return built_; }
+
+  // Whether a full build of A for the set in_set(i) would be declined (see
+  // update), counted as declined if so: one pass over the cells, no kernel
+  // needed, so that a caller can skip making the kernel for a dense contact.
+  // Collective on several processes.
+  template <class InSet>
+  bool decline_if_dense(InSet&& in_set) {
+    if (comm_->size() > 1) {
+      gather_set(in_set);
+      return decline_if_dense_whole([this](std::size_t i) { return whole_set_[i] != 0; });
+    }
+    return decline_if_dense_whole(in_set);
+  }
+
+  // The balancing form, z = Q r + (I - Q K) M^-1 (I - K Q) r with Q = Z A^-1
+  // Z^T, in two halves around M^-1: pre_correction solves y1 = A^-1 Z^T r
+  // and writes Z y1 into `field` (zero off the set), whose image K Z y1 the
+  // caller subtracts from r before M^-1; post_correction, given K v of the
+  // result v, solves y2 = A^-1 Z^T K v and adds Z (y1 - y2) to z = v.
+  // Fields hold this process's rows; collective on several processes.
+  void pre_correction(std::span<const double> r, std::span<double> field, bool fixed_load);
+  void post_correction(std::span<const double> image, std::span<double> z, bool fixed_load);
+
+  const BlockDeflationStats& stats() const { return stats_; }
+
+  // The coarse matrix applied to y (one entry per block, row-major blocks):
+  // out = A y. Exposed for tests.
+  void apply_coarse(std::span<const double> y, std::span<double> out);
+  std::size_t coarse_size() const { return blocks_x_ * blocks_y_; }
+
+ private:
+  // The set given on this process's rows, made whole in whole_set_.
+  template <class InSet>
+  void gather_set(InSet&& in_set) {
+    linalg::for_each_index(local_size(), [&](std::size_t i) { local_set_[i] = in_set(i) ? 1 : 0; });
+    comm_->concatenate(std::as_bytes(std::span<const std::uint8_t>(local_set_)),
+                       std::as_writable_bytes(std::span<std::uint8_t>(whole_set_)), grid_.nx());
+  }
+  // update and decline_if_dense on the whole grid's set.
+  template <class InSet>
+  void update_whole(InSet&& in_set) {
     const auto [changed, size] = linalg::sums<2>(grid_.size(), [&](std::size_t i) {
       const std::uint8_t now = in_set(i) ? 1 : 0;
       const std::uint8_t built = set_[i] >> 1;
@@ -85,14 +148,8 @@ class BlockDeflation {
     if (built_ && changed == 0.0) return;
     refresh(changed > 0.5 * size);
   }
-  // Whether A is built for the last update's set.
-  bool ready() const { return built_; }
-
-  // Whether a full build of A for the set in_set(i) would be declined (see
-  // update), counted as declined if so: one pass over the cells, no kernel
-  // needed, so that a caller can skip making the kernel for a dense contact.
   template <class InSet>
-  bool decline_if_dense(InSet&& in_set) {
+  bool decline_if_dense_whole(InSet&& in_set) {
     const std::size_t b = options_.block;
     const std::size_t nx = grid_.nx();
     linalg::for_each_row(blocks_y_, b * nx, [&](std::size_t by) {
@@ -109,23 +166,6 @@ class BlockDeflation {
     ++stats_.declined;
     return true;
   }
-
-  // The balancing form, z = Q r + (I - Q K) M^-1 (I - K Q) r with Q = Z A^-1
-  // Z^T, in two halves around M^-1: pre_correction solves y1 = A^-1 Z^T r
-  // and writes Z y1 into `field` (zero off the set), whose image K Z y1 the
-  // caller subtracts from r before M^-1; post_correction, given K v of the
-  // result v, solves y2 = A^-1 Z^T K v and adds Z (y1 - y2) to z = v.
-  void pre_correction(std::span<const double> r, std::span<double> field, bool fixed_load);
-  void post_correction(std::span<const double> image, std::span<double> z, bool fixed_load);
-
-  const BlockDeflationStats& stats() const { return stats_; }
-
-  // The coarse matrix applied to y (one entry per block, row-major blocks):
-  // out = A y. Exposed for tests.
-  void apply_coarse(std::span<const double> y, std::span<double> out);
-  std::size_t coarse_size() const { return blocks_x_ * blocks_y_; }
-
- private:
   // J = the block at (dy, dx) in {-1, 0, 1}^2 from block I: across the
   // period on a periodic grid; false beyond the edge of a free one.
   bool neighbour_block(std::size_t I, int dy, int dx, std::size_t& J) const;
@@ -147,13 +187,19 @@ class BlockDeflation {
   double pair_sum(const ListedCell* first, const ListedCell* first_end, const ListedCell* second,
                   const ListedCell* second_end, int dy, int dx) const;
   void solve_coarse(bool fixed_load);
-  // rhs_ = Z^T (field - minus) over the current set (minus may be empty).
-  void restrict_to_blocks(std::span<const double> field, std::span<const double> minus);
+  // rhs_ = Z^T field over the current set, summed over the processes.
+  void restrict_to_blocks(std::span<const double> field);
   // z = Z y, or z += Z y, over the current set.
   void prolong(const std::vector<double>& y, std::span<double> z, bool add) const;
 
   Grid grid_;
   BlockDeflationOptions options_;
+  std::size_t first_row_ = 0;  // this process's rows of the fields
+  std::size_t rows_ = 0;
+  const linalg::Communicator* comm_;
+  // On several processes: this process's rows of the set and the whole set
+  // (empty on one process).
+  std::vector<std::uint8_t> local_set_, whole_set_;
   std::size_t blocks_x_;
   std::size_t blocks_y_;
   bool built_ = false;

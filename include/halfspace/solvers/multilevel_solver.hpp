@@ -17,6 +17,7 @@
 
 #include "halfspace/grid.hpp"
 #include "halfspace/solvers/contact_solver.hpp"
+#include "halfspace/solvers/level_transfer.hpp"
 #include "halfspace/solvers/solver_options.hpp"
 
 namespace halfspace::solvers {
@@ -31,8 +32,10 @@ class MultilevelSolver final : public ContactSolver {
   // The fine level's solver is built here, with `fine_tolerance`; coarse ones
   // only during solve(), each freed before the next finer level starts (they
   // are also built once here, so that their FFT planning happens now).
+  // `transfer` says where the levels' fields live (null: whole, here); the
+  // level solvers take and return fields as it holds them.
   MultilevelSolver(const Grid& grid, double fine_tolerance, LevelSolverFactory make_level,
-                   MultilevelOptions options = {});
+                   MultilevelOptions options = {}, std::unique_ptr<LevelTransfer> transfer = nullptr);
 
   std::string_view name() const override { return "multilevel-polonsky-keer"; }
 
@@ -59,6 +62,7 @@ class MultilevelSolver final : public ContactSolver {
   double fine_tolerance_;
   LevelSolverFactory make_level_;
   MultilevelOptions options_;
+  std::unique_ptr<LevelTransfer> transfer_;
   std::unique_ptr<ContactSolver> fine_;
 };
 

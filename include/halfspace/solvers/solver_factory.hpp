@@ -30,4 +30,9 @@ std::unique_ptr<ContactSolver> make_solver(const Grid& grid, const LayeredMateri
 // preconditioner) if `projected`, else the paper's.
 PolonskyKeerOptions polonsky_keer_options(const SolverOptions& options, double tolerance, bool projected);
 
+// Whether pk-multilevel on `grid` deflates its finest grid: deflation on,
+// or automatic where DeflationOptions::automatic_applies and there is no
+// hardness cap.
+bool multilevel_deflates(const Grid& grid, const SolverOptions& options);
+
 }  // namespace halfspace::solvers

@@ -1,0 +1,152 @@
+// The distributed load sweep. Every process holds its rows of the gap and of
+// the previous step's pressure (the warm start); the fields of each step go
+// to the first process as soon as it is solved, which keeps every step (and
+// the whole height map) as the serial sweep does and writes them with the
+// serial writer.
+#include "mpi_sweep.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/Core>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "../activity.hpp"
+#include "../exit_codes.hpp"
+#include "../progress.hpp"
+#include "../sweep_command.hpp"
+#include "halfspace/analysis/contact_statistics.hpp"
+#include "halfspace/analysis/load_sweep.hpp"
+#include "halfspace/error.hpp"
+#include "halfspace/linalg/parallel.hpp"
+#include "halfspace/mpi/agreement.hpp"
+#include "halfspace/mpi/distributed_solver.hpp"
+#include "halfspace/mpi/session.hpp"
+#include "halfspace/mpi/slab_fft.hpp"
+#include "halfspace/mpi/slab_gather.hpp"
+
+namespace halfspace::app {
+namespace {
+
+std::span<const double> span_of(const Eigen::ArrayXd& a) {
+  return {a.data(), static_cast<std::size_t>(a.size())};
+}
+
+// The loads of the sweep, checked as analysis::run_load_sweep checks them
+// (the mean gap reduced over the processes), before the first solve.
+std::vector<Loading> checked_loads(const SolveSetup& setup, std::span<const double> gap,
+                                   const mpi::MpiCommunicator& world) {
+  std::vector<Loading> loads;
+  for (const double value : setup.load_values) {
+    const Loading loading{setup.loading.mode, value};
+    loading.validate();
+    loads.push_back(loading);
+  }
+  if (setup.loading.mode == ControlMode::approach && setup.grid.periodic()) {
+    const double mean_gap =
+        linalg::sum(world, gap.size(), [&](std::size_t i) { return gap[i]; }) / static_cast<double>(setup.grid.size());
+    for (const double value : setup.load_values) {
+      if (value >= mean_gap) {
+        throw InputError(
+            fmt::format("approach = {} m is invalid for a periodic surface: it must be below the mean initial gap {} m "
+                        "(full contact needs infinite pressure there)",
+                        value, mean_gap));
+      }
+    }
+  }
+  return loads;
+}
+
+// The steps, solved on this process's rows; on the first process with their
+// whole fields and statistics, elsewhere without fields. A failure that only
+// some processes meet in the middle of collective work ends them all
+// (MPI_Abort), as in the single solve.
+std::vector<analysis::SweepStep> solve_steps(const SolveSetup& setup, const mpi::SlabLayout& layout,
+                                             const mpi::MpiCommunicator& world) {
+  const bool root = world.rank() == 0;
+  try {
+    const Grid& grid = setup.grid;
+    const Eigen::Map<const Eigen::ArrayXd> local_heights(
+        setup.heights.data() + (layout.first_row - setup.first_row) * layout.nx,
+        static_cast<Eigen::Index>(layout.local_size()));
+    const double highest =
+        world.max(local_heights.size() > 0 ? local_heights.maxCoeff() : -std::numeric_limits<double>::infinity());
+    const Eigen::ArrayXd gap = highest - local_heights;
+    const std::vector<Loading> loads = checked_loads(setup, span_of(gap), world);
+
+    Progress progress(!setup.quiet && root, loads.size(), setup.solver.tolerance);
+    solvers::SolverOptions settings = setup.solver;
+    settings.progress = progress.callback();
+    const std::unique_ptr<solvers::ContactSolver> solver =
+        mpi::make_distributed_solver(grid, setup.e_star, settings, world);
+
+    std::vector<analysis::SweepStep> steps;
+    Eigen::ArrayXd previous;  // this process's rows of the last step's pressure
+    bool previous_converged = false;
+    const auto whole = static_cast<Eigen::Index>(root ? grid.size() : 0);
+    for (std::size_t k = 0; k < loads.size(); ++k) {
+      progress.start_step(k, describe_load(loads[k].mode, loads[k].value, grid));
+      analysis::SweepStep step;
+      step.loading = loads[k];
+      step.warm_started = k > 0 && previous_converged;
+      step.result =
+          solver->solve(span_of(gap), loads[k], step.warm_started ? span_of(previous) : std::span<const double>());
+      previous = step.result.pressure;
+      previous_converged = step.result.converged();
+      SolveResult& result = step.result;
+      for (Eigen::ArrayXd* field : {&result.pressure, &result.displacement, &result.gap}) {
+        Eigen::ArrayXd gathered(whole);
+        mpi::gather_rows(world, layout, span_of(*field), {gathered.data(), static_cast<std::size_t>(whole)});
+        *field = std::move(gathered);
+      }
+      if (root) step.statistics = analysis::contact_statistics(grid, span_of(result.pressure), span_of(result.gap));
+      steps.push_back(std::move(step));
+    }
+    progress.clear();
+    return steps;
+  } catch (const InputError&) {
+    throw;  // found by every process alike (options, loads, reduced values)
+  } catch (const std::exception& error) {
+    fmt::print(stderr, "error: {} (while {}, on process {} of {})\n", error.what(), Activity::failed_while(),
+               world.rank(), world.size());
+    std::fflush(stderr);
+    mpi::Session::abort(kExitInputError);
+  }
+}
+
+}  // namespace
+
+int run_sweep_on_slabs(const SolveSetup& setup, const mpi::MpiCommunicator& world) {
+  const bool root = world.rank() == 0;
+  const mpi::SlabLayout layout = mpi::slab_layout(setup.grid.nx(), setup.grid.ny(), world);
+  std::optional<Activity> activity(
+      std::in_place, fmt::format("solving a load sweep ({} on the {} grid, {} processes)",
+                                 solvers::to_string(setup.solver.type), setup.grid.shape_string(), world.size()));
+  const std::vector<analysis::SweepStep> steps = solve_steps(setup, layout, world);
+  // The whole height map on the first process too, for the serial writer
+  // (a process may hold its rows only).
+  activity.emplace(fmt::format("gathering the {} grid's heights", setup.grid.shape_string()));
+  Eigen::ArrayXd heights(static_cast<Eigen::Index>(root ? setup.grid.size() : 0));
+  mpi::gather_rows(world, layout,
+                   {setup.heights.data() + (layout.first_row - setup.first_row) * layout.nx, layout.local_size()},
+                   {heights.data(), static_cast<std::size_t>(heights.size())});
+  int code = kExitOk;
+  mpi::run_agreed(world, [&] {
+    if (!root) return;
+    activity.emplace(fmt::format("writing {}", setup.output.string()));
+    SolveSetup whole = setup;
+    whole.heights = std::move(heights);
+    whole.first_row = 0;
+    code = finish_sweep(whole, steps, std::nullopt);
+  });
+  mpi::check(MPI_Bcast(&code, 1, MPI_INT, 0, world.get()), "MPI_Bcast");
+  return code;
+}
+
+}  // namespace halfspace::app

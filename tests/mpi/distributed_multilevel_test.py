@@ -1,0 +1,227 @@
+#!/usr/bin/env python3
+"""The MPI program's pk-multilevel and load sweeps against the serial program
+(HALFSPACE_MPI builds; ctest runs it).
+
+usage: distributed_multilevel_test.py MPI_PROGRAM SERIAL_PROGRAM MPIEXEC SOURCE_DIR WORK_DIR
+
+`mpiexec -np 1, 2 and 3 MPI_PROGRAM solve` with the default solver
+(pk-multilevel) on periodic and free Hertz and rough contacts, single
+solves and 3-step load sweeps, and with block deflation (pk-multilevel and
+pk-fourier), must write the serial program's files: the same
+datasets, shapes, types and attributes (iteration counts, coarse levels and
+their iterations included), floating-point data equal within kTolerance of
+its largest value, contact sets identical; a sweep's CSV likewise. The grids
+make the multilevel's levels both distributed (with slab boundaries that do
+not line up between levels on 3 processes) and gathered.
+"""
+import csv
+import os
+import subprocess
+import sys
+
+import h5py
+import numpy as np
+
+# Distributed reductions add in another order than the serial fixed blocks,
+# and FFTW-MPI rounds differently from serial FFTW: equal to rounding.
+kTolerance = 1e-12
+# Values that record the run rather than the result (present in both, not
+# compared): wall times, the program's path, the version with the build's
+# git hash.
+kRunValues = {"solve_seconds", "seconds", "command_line", "halfspace_version"}
+# Residuals are relative quantities near rounding at convergence: compared
+# absolutely.
+kAbsoluteValues = {"residual", "residual_history"}
+kProcessCounts = (1, 2, 3)
+kExitInputError = 1
+
+mpi_program, serial_program, mpiexec, source_dir, work_dir = sys.argv[1:6]
+os.makedirs(work_dir, exist_ok=True)
+environment = dict(os.environ, OMP_NUM_THREADS="1", OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+                   OMPI_MCA_rmaps_base_oversubscribe="1", HALFSPACE_FFTW_WISDOM="off")
+failures = []
+
+
+def run(command):
+    return subprocess.run(command, env=environment, capture_output=True, text=True, timeout=300)
+
+
+def run_mpi(processes, arguments):
+    return run([mpiexec, "--oversubscribe", "-np", str(processes), mpi_program] + arguments)
+
+
+def fail(message):
+    print("FAIL: " + message)
+    failures.append(message)
+
+
+def close(name, got, want):
+    """Whether float data `got` equals `want` within kTolerance; the error."""
+    got = np.asarray(got, dtype=float)
+    want = np.asarray(want, dtype=float)
+    scale = 1.0 if name in kAbsoluteValues else max(float(np.max(np.abs(want))) if want.size else 0.0, 1e-300)
+    error = float(np.max(np.abs(got - want))) / scale if want.size else 0.0
+    return error <= kTolerance, error
+
+
+def compare_attributes(where, got, want):
+    if set(got.attrs) != set(want.attrs):
+        fail(f"{where}: attributes differ: only distributed {sorted(set(got.attrs) - set(want.attrs))}, "
+             f"only serial {sorted(set(want.attrs) - set(got.attrs))}")
+    for name in sorted(set(got.attrs) & set(want.attrs)):
+        if name in kRunValues:
+            continue
+        a, b = got.attrs[name], want.attrs[name]
+        if isinstance(b, (float, np.floating)):
+            ok, error = close(name, a, b)
+            if not ok:
+                fail(f"{where}: attribute {name} = {a!r}, serial {b!r} (difference {error:.2e})")
+        elif not np.array_equal(np.asarray(a), np.asarray(b)):
+            fail(f"{where}: attribute {name} = {a!r}, serial {b!r}")
+
+
+def compare_files(where, got_path, want_path):
+    worst = 0.0
+    with h5py.File(got_path, "r") as got, h5py.File(want_path, "r") as want:
+        compare_attributes(where + " /", got, want)
+        names, got_names = [], []
+        want.visit(names.append)
+        got.visit(got_names.append)
+        if sorted(names) != sorted(got_names):
+            fail(f"{where}: objects differ: {sorted(got_names)} vs serial {sorted(names)}")
+            return
+        for name in names:
+            compare_attributes(f"{where} /{name}", got[name], want[name])
+            if not isinstance(want[name], h5py.Dataset):
+                continue
+            a, b = got[name], want[name]
+            if a.shape != b.shape or a.dtype != b.dtype:
+                fail(f"{where}: /{name} is {a.shape} {a.dtype}, serial {b.shape} {b.dtype}")
+                continue
+            x, y = a[()], b[()]
+            leaf = name.rsplit("/", 1)[-1]
+            if leaf in kRunValues:
+                continue
+            if np.issubdtype(y.dtype, np.floating):
+                ok, error = close(leaf, x, y)
+                worst = max(worst, error) if leaf not in kAbsoluteValues else worst
+                if not ok:
+                    fail(f"{where}: /{name} differs by {error:.2e} (allowed {kTolerance:.0e})")
+            elif not np.array_equal(x, y):
+                fail(f"{where}: /{name} differs in {int(np.count_nonzero(x != y))} entries")
+        # The contact set: pressure > 0 in every single solve and sweep step.
+        for name in names:
+            if name.rsplit("/", 1)[-1] == "pressure" and not np.array_equal(got[name][()] > 0, want[name][()] > 0):
+                fail(f"{where}: the contact set of /{name} differs")
+        iterations = want.attrs.get("iterations")
+        print(f"{where}: largest field difference {worst:.2e} of the field's largest value; "
+              f"iterations {got.attrs.get('iterations')} (serial {iterations}), coarse levels "
+              f"{got.attrs.get('coarse_levels')}, coarse iterations {got.attrs.get('coarse_iterations')} "
+              f"(serial {want.attrs.get('coarse_iterations')}), deflated iterations "
+              f"{got.attrs.get('deflated_iterations')} (serial {want.attrs.get('deflated_iterations')})")
+
+
+def compare_csv(where, got_path, want_path):
+    with open(got_path, newline="") as g, open(want_path, newline="") as w:
+        got, want = list(csv.DictReader(g)), list(csv.DictReader(w))
+    if len(got) != len(want) or (want and list(got[0]) != list(want[0])):
+        fail(f"{where}: the CSV's rows or columns differ from the serial one's")
+        return
+    for column in (want[0] if want else []):
+        if column in kRunValues:
+            continue
+        ok, error = close(column, [float(r[column]) for r in got], [float(r[column]) for r in want])
+        if not ok:
+            fail(f"{where}: CSV column {column} differs by {error:.2e}")
+
+
+def solve_case(name, arguments, process_counts=kProcessCounts, sweep=False, deflated=False):
+    serial_output = os.path.join(work_dir, f"{name}-serial.h5")
+    serial = run([serial_program, "solve"] + arguments + ["--output", serial_output])
+    if serial.returncode != 0:
+        fail(f"{name}: the serial program failed ({serial.returncode}): {serial.stderr.strip()}")
+        return
+    if deflated:
+        with h5py.File(serial_output, "r") as want:
+            if not want.attrs["deflated_iterations"] > 0:
+                fail(f"{name}: the serial solve never applied the block deflation, so the case tests nothing of it")
+    for processes in process_counts:
+        output = os.path.join(work_dir, f"{name}-np{processes}.h5")
+        for path in (output, output[:-3] + ".csv"):
+            if os.path.exists(path):
+                os.remove(path)
+        distributed = run_mpi(processes, ["solve"] + arguments + ["--output", output])
+        where = f"{name}, {processes} processes"
+        if distributed.returncode != 0:
+            fail(f"{where}: exit {distributed.returncode}: {distributed.stderr.strip()}")
+            continue
+        compare_files(where, output, serial_output)
+        if sweep:
+            compare_csv(where, output[:-3] + ".csv", serial_output[:-3] + ".csv")
+        leftovers = [f for f in os.listdir(work_dir) if ".tmp-" in f]
+        if leftovers:
+            fail(f"{where}: temporaries left behind: {leftovers}")
+
+
+def failure_case(name, processes, arguments, message, output):
+    result = run_mpi(processes, ["solve"] + arguments + ["--output", output])
+    where = f"{name}, {processes} processes"
+    errors = [line for line in result.stderr.splitlines() if line.startswith("error:")]
+    if result.returncode != kExitInputError:
+        fail(f"{where}: exit {result.returncode}, expected {kExitInputError}; stderr: {result.stderr.strip()}")
+    if len(errors) != 1 or message not in errors[0]:
+        fail(f"{where}: expected one error line containing {message!r}, got {errors}")
+    if os.path.exists(output):
+        fail(f"{where}: the output {output} was written")
+    print(f"{where}: {errors[0] if errors else result.stderr.strip()}")
+
+
+common = ["--E-star", "1e11", "--threads", "1", "--fft-planning", "estimate", "--quiet"]
+# Hertz on a periodic 256 x 200 grid: levels 128 x 100 (distributed; on 3
+# processes FFTW-MPI gives 67, 67, 66 fine rows but 34, 34, 32 coarse ones,
+# so a coarse row's fine rows lie on the neighbour) and 64 x 50 (gathered).
+hertz = ["--geometry", "sphere", "--radius", "0.01", "--grid", "256x200", "--size", "1e-3x0.78125e-3",
+         "--boundary", "periodic", "--tol", "1e-12"] + common
+solve_case("hertz-multilevel", hertz + ["--force", "5"])
+# Rough: the self-affine 128 x 128 example (43, 43, 42 rows on 3 processes;
+# its 64 x 64 level 22, 22, 20), under load and displacement control.
+rough = ["--height-map", os.path.join(source_dir, "examples", "self_affine_128.h5"), "--boundary", "periodic",
+         "--tol", "1e-12"] + common
+solve_case("rough-multilevel-force", rough + ["--mean-pressure", "2e8"])
+solve_case("rough-multilevel-approach", rough + ["--approach", "1e-6"])
+# Free grids (the padded convolution): the same Hertz and rough cases.
+free_hertz = [a if a != "periodic" else "free" for a in hertz]
+solve_case("free-hertz-multilevel", free_hertz + ["--force", "5"])
+free_rough = [a if a != "periodic" else "free" for a in rough]
+solve_case("free-rough-multilevel-force", free_rough + ["--mean-pressure", "2e8"])
+# Load sweeps: the second step warm-started, the third off by a factor 2
+# (beyond the warm-start ratio 1.5), so started from the coarse levels again.
+solve_case("rough-sweep-force", rough + ["--mean-pressure", "1e8,2e8,4e8"], sweep=True)
+solve_case("hertz-sweep-approach", hertz + ["--approach", "2e-6,3e-6,3.5e-6"], sweep=True)
+
+# Block deflation on a rough 512 x 352 surface under 1 GPa (21 % contact),
+# where the correction joins in 11 (pk-multilevel) and 12 (pk-fourier)
+# iterations: 32-row blocks straddle the slabs of 3 processes (118, 118 and
+# 116 rows).
+surface = os.path.join(work_dir, "rough-512x352.h5")
+generated = run([serial_program, "generate", "--kind", "self-affine", "--grid", "512x352", "--size", "1e-3x0.6875e-3",
+                 "--hurst", "0.8", "--rms-slope", "0.1", "--seed", "3", "--output", surface, "--quiet"])
+if generated.returncode != 0:
+    fail(f"generating the deflation case's surface failed: {generated.stderr.strip()}")
+else:
+    deflation_case = ["--height-map", surface, "--boundary", "periodic", "--mean-pressure", "1e9",
+                      "--deflation-block", "32", "--tol", "1e-12"] + common
+    solve_case("rough-multilevel-deflation", deflation_case, deflated=True)
+    solve_case("rough-pk-fourier-deflation", deflation_case + ["--solver", "pk-fourier"], deflated=True)
+    solve_case("free-rough-multilevel-deflation", [a if a != "periodic" else "free" for a in deflation_case],
+               (2, 3), deflated=True)
+
+missing = os.path.join(work_dir, "failure.h5")
+for processes in (2, 3):
+    failure_case("sweep with an invalid approach", processes, rough + ["--approach", "1e-7,1e-3"],
+                 "mean initial gap", missing)
+
+if failures:
+    print(f"{len(failures)} failure(s)")
+    sys.exit(1)
+print("all distributed multilevel solves and sweeps match the serial program")
