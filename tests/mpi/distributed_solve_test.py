@@ -173,7 +173,7 @@ solve_case("free-rough-pk-fourier-approach", free_rough + ["--solver", "pk-fouri
 solve_case("free-rough-pk-force", free_rough + ["--solver", "pk", "--mean-pressure", "2e8"])
 solve_case("free-rough-pk-approach", free_rough + ["--solver", "pk", "--approach", "1e-6"])
 # On one process the MPI program solves what is not distributed yet as the
-# serial program does: the default solver, pk-multilevel.
+# serial program does: the default solver on one process equals the serial one.
 solve_case("hertz-one-process-multilevel", hertz + ["--solver", "pk-multilevel", "--tol", "1e-12"], (1,))
 
 missing = os.path.join(work_dir, "failure.h5")
@@ -182,11 +182,11 @@ for processes in (2, 3):
                                          "periodic", "--mean-pressure", "1e6", "--solver", "pk-fourier"] + common,
                  "no-such-map.h5", missing)
     failure_case("invalid option", processes, hertz + ["--solver", "pk-fourier", "--tol", "2"], "tol", missing)
-    failure_case("not distributed yet", processes, hertz + ["--solver", "pk-multilevel"],
+    failure_case("not distributed yet", processes, hertz + ["--solver", "lemke"],
+                 "type = lemke is not available with more than one process yet", missing)
+    failure_case("free hardness not distributed yet", processes,
+                 free_hertz + ["--solver", "pk-fourier", "--hardness", "1e9", "--force", "5"],
                  "is not available with more than one process yet", missing)
-    failure_case("free multilevel not distributed yet", processes,
-                 free_hertz + ["--solver", "pk-multilevel", "--force", "5"],
-                 "type = pk-multilevel is not available with more than one process yet", missing)
     failure_case("1D not distributed yet", processes,
                  ["--geometry", "cylinder", "--radius", "0.01", "--grid", "64", "--size", "1e-3", "--boundary",
                   "periodic", "--force", "1e3", "--solver", "pk-fourier"] + common,
