@@ -11,6 +11,7 @@
 #include <functional>
 #include <numeric>
 
+#include "halfspace/analysis/disjoint_sets.hpp"
 #include "halfspace/error.hpp"
 #include "halfspace/linalg/parallel.hpp"
 
@@ -23,35 +24,6 @@ void check_size(std::string_view what, std::size_t size, const Grid& grid) {
         fmt::format("{} has {} values but the grid has {} cells ({})", what, size, grid.size(), grid.shape_string()));
   }
 }
-
-// Union-find over cell indices with path halving and union by size.
-class DisjointSets {
- public:
-  explicit DisjointSets(std::size_t n) : parent_(n), size_(n, 1) { std::iota(parent_.begin(), parent_.end(), 0); }
-
-  std::size_t find(std::size_t a) {
-    while (parent_[a] != a) {
-      parent_[a] = parent_[parent_[a]];
-      a = parent_[a];
-    }
-    return a;
-  }
-
-  void unite(std::size_t a, std::size_t b) {
-    a = find(a);
-    b = find(b);
-    if (a == b) return;
-    if (size_[a] < size_[b]) std::swap(a, b);
-    parent_[b] = a;
-    size_[a] += size_[b];
-  }
-
-  std::int64_t size_of_root(std::size_t root) const { return size_[root]; }
-
- private:
-  std::vector<std::size_t> parent_;
-  std::vector<std::int64_t> size_;
-};
 
 }  // namespace
 

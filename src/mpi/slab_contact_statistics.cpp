@@ -18,40 +18,12 @@
 #include <numeric>
 #include <vector>
 
+#include "halfspace/analysis/disjoint_sets.hpp"
 #include "halfspace/error.hpp"
 #include "halfspace/linalg/parallel.hpp"
 
 namespace halfspace::mpi {
 namespace {
-
-// Union-find with path halving and union by size.
-class DisjointSets {
- public:
-  explicit DisjointSets(std::size_t n) : parent_(n), size_(n, 1) { std::iota(parent_.begin(), parent_.end(), 0); }
-
-  std::size_t find(std::size_t a) {
-    while (parent_[a] != a) {
-      parent_[a] = parent_[parent_[a]];
-      a = parent_[a];
-    }
-    return a;
-  }
-
-  void unite(std::size_t a, std::size_t b) {
-    a = find(a);
-    b = find(b);
-    if (a == b) return;
-    if (size_[a] < size_[b]) std::swap(a, b);
-    parent_[b] = a;
-    size_[a] += size_[b];
-  }
-
-  std::int64_t size_of_root(std::size_t root) const { return size_[root]; }
-
- private:
-  std::vector<std::size_t> parent_;
-  std::vector<std::int64_t> size_;
-};
 
 constexpr std::int64_t kNoContact = -1;
 
@@ -63,7 +35,7 @@ std::vector<std::int64_t> describe_slab(const Grid& grid, const SlabLayout& layo
   const std::size_t nx = grid.nx();
   const std::size_t rows = layout.rows;
   const bool wrap = grid.periodic();
-  DisjointSets sets(pressure.size());
+  analysis::DisjointSets sets(pressure.size());
   const auto touching = [&](std::size_t k) { return pressure[k] > 0.0; };
   for (std::size_t r = 0; r < rows; ++r) {
     for (std::size_t i = 0; i < nx; ++i) {
@@ -120,7 +92,7 @@ std::vector<std::int64_t> merge_slabs(const Grid& grid, const std::vector<std::i
   const auto index_of = [&](std::int64_t label) {
     return static_cast<std::size_t>(std::lower_bound(labels.begin(), labels.end(), label) - labels.begin());
   };
-  DisjointSets sets(labels.size());
+  analysis::DisjointSets sets(labels.size());
   const auto join_rows = [&](const std::int64_t* upper_last, const std::int64_t* lower_first) {
     for (std::size_t i = 0; i < nx; ++i) {
       if (upper_last[i] != kNoContact && lower_first[i] != kNoContact) {
