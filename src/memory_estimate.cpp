@@ -179,7 +179,12 @@ double slab_solve_memory_estimate(const Grid& grid, const solvers::SolverOptions
   // whole (transposed) half spectrum, not folded as the serial EvenSymbol:
   // counted on top of the folded ones solver_peak has.
   const double unfolded_symbols = 2.0 * kDouble * (std::floor(g.nx / 2.0) + 1.0) * g.ny;
-  return kProgramBytes + share * (2.0 * kDouble * g.cells() + solver_peak(grid, settings) + unfolded_symbols);
+  // Block deflation keeps its contact flags (as gathered and as its own)
+  // and its lists of contact cells for the whole grid on every process
+  // (block_deflation.cpp): counted whole, not as a share.
+  const double whole_deflation = deflated(grid, settings) ? (2.0 + 3.0 * kDouble) * g.cells() * (1.0 - share) : 0.0;
+  return kProgramBytes + share * (2.0 * kDouble * g.cells() + solver_peak(grid, settings) + unfolded_symbols) +
+         whole_deflation;
 }
 
 double generate_memory_estimate(const Grid& grid) {

@@ -61,6 +61,27 @@ TEST(MemoryEstimateTest, LargestGridsGiveFiniteEstimates) {
   EXPECT_GT(generate_memory_estimate(grid), 24.0 * std::pow(2.0, 57));
 }
 
+TEST(MemoryEstimateTest, SlabsShareTheFieldsButNotTheDeflationsWholeGridFlags) {
+  // 2048^2 on two processes of 1024 rows each. Without deflation a slab
+  // needs about half the one-process estimate (the program's own bytes
+  // aside); with deflation every process also holds the whole grid's contact
+  // flags and cell lists (2 + 3 x 8 B per cell), which must not be halved.
+  const Grid grid = Grid::plane(2048, 2048, 1e-6, 1e-6, Boundary::periodic);
+  solvers::SolverOptions plain;
+  plain.deflation.mode = solvers::DeflationOptions::Mode::off;
+  solvers::SolverOptions deflated;
+  deflated.deflation.mode = solvers::DeflationOptions::Mode::on;
+  const double cells = static_cast<double>(grid.size());
+  const double whole = slab_solve_memory_estimate(grid, plain, 2048);
+  const double half = slab_solve_memory_estimate(grid, plain, 1024);
+  EXPECT_GT(half, 0.5 * whole);
+  EXPECT_LT(half, 0.6 * whole);
+  const double half_deflated = slab_solve_memory_estimate(grid, deflated, 1024);
+  const double whole_deflated = slab_solve_memory_estimate(grid, deflated, 2048);
+  // The deflation's share of a slab plus its whole-grid part.
+  EXPECT_GE(half_deflated - half, 0.5 * (whole_deflated - whole) + 0.5 * 26.0 * cells - 1.0);
+}
+
 TEST(MemoryEstimateTest, AvailableMemoryIsMemAvailableWithoutACgroupLimit) {
   const TempDir dir;
   write(dir / "proc" / "meminfo", "MemTotal:       24683656 kB\nMemFree:  100 kB\nMemAvailable:   2000 kB\n");

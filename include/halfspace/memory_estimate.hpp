@@ -36,7 +36,8 @@ double solve_memory_estimate(const Grid& grid, const solvers::SolverOptions& set
 // Peak bytes of one process of a distributed single solve (the MPI
 // program) on `grid` when it holds `rows` of its rows: kProgramBytes and its
 // share of the heights, the initial gap and the solve (the slab transform
-// and symbols, the workspace and the result). The statistics and the
+// and symbols, the workspace and the result; block deflation's contact
+// flags and lists, which every process holds for the whole grid). The statistics and the
 // collective writing after it work on the same fields in place, with less
 // besides (the slab transform of the slope, the cluster labels); no file
 // image is assembled.

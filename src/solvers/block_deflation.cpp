@@ -130,26 +130,21 @@ BlockDeflation::~BlockDeflation() = default;
 
 void BlockDeflation::set_kernel(std::span<const double> local_response) {
   assert(local_response.size() == local_size());
-  // The whole K e_0 on every process (once per solver: the near field and
-  // the block-centre offsets lie on any process's rows).
-  std::vector<double> whole;
-  std::span<const double> unit_response = local_response;
-  if (comm_->size() > 1) {
-    whole.resize(grid_.size());
-    comm_->concatenate(std::as_bytes(local_response), std::as_writable_bytes(std::span<double>(whole)),
-                       grid_.nx() * sizeof(double));
-    unit_response = whole;
-  }
+  // k at offset (dy, dx) cells: read from K e_0 across the period on a
+  // periodic grid; on a free one K e_0 holds the offsets >= 0 and k is even
+  // in each (Love's rectangle coefficients). On several processes each reads
+  // the rows it holds and 0 elsewhere; the near field and the block-centre
+  // offsets are then summed over the processes, which is exact (every entry
+  // comes from one process), so no process holds the whole K e_0.
   const std::size_t nx = grid_.nx();
   const std::size_t ny = grid_.ny();
   const bool periodic = grid_.periodic();
-  // k at offset (dy, dx) cells: read from K e_0 across the period on a
-  // periodic grid; on a free one K e_0 holds the offsets >= 0 and k is even
-  // in each (Love's rectangle coefficients).
+  const bool distributed = comm_->size() > 1;
   auto kernel = [&](std::ptrdiff_t dy, std::ptrdiff_t dx) {
-    if (periodic)
-      return unit_response[wrapped(0, static_cast<int>(dy), ny) * nx + wrapped(0, static_cast<int>(dx), nx)];
-    return unit_response[static_cast<std::size_t>(std::abs(dy)) * nx + static_cast<std::size_t>(std::abs(dx))];
+    const std::size_t row = periodic ? wrapped(0, static_cast<int>(dy), ny) : static_cast<std::size_t>(std::abs(dy));
+    const std::size_t column = periodic ? wrapped(0, static_cast<int>(dx), nx) : static_cast<std::size_t>(std::abs(dx));
+    if (row < first_row_ || row >= first_row_ + rows_) return 0.0;
+    return local_response[(row - first_row_) * nx + column];
   };
   const auto b = static_cast<std::ptrdiff_t>(options_.block);
   const std::ptrdiff_t reach = 2 * b - 1;
@@ -160,6 +155,7 @@ void BlockDeflation::set_kernel(std::span<const double> local_response) {
       near_kernel_[static_cast<std::size_t>(dy + reach) * side + static_cast<std::size_t>(dx + reach)] = kernel(dy, dx);
     }
   }
+  if (distributed) comm_->sum(near_kernel_);
   // Point loads between block centres beyond the neighbours, at the coarse
   // offsets (jy, jx) of the (padded) coarse grid; the coarse transform is
   // unnormalised, so 1/size goes into the symbol.
@@ -169,7 +165,7 @@ void BlockDeflation::set_kernel(std::span<const double> local_response) {
     return j <= count / 2 ? static_cast<std::ptrdiff_t>(j)
                           : static_cast<std::ptrdiff_t>(j) - static_cast<std::ptrdiff_t>(count);
   };
-  std::span<double> far = coarse_fft_->input();
+  std::vector<double> far(rows * cols);
   for (std::size_t jy = 0; jy < rows; ++jy) {
     for (std::size_t jx = 0; jx < cols; ++jx) {
       const std::ptrdiff_t sy = signed_offset(jy, rows);
@@ -181,13 +177,15 @@ void BlockDeflation::set_kernel(std::span<const double> local_response) {
       far[jy * cols + jx] = near || !reachable ? 0.0 : kernel(sy * b, sx * b);
     }
   }
+  if (distributed) comm_->sum(far);
+  std::copy(far.begin(), far.end(), coarse_fft_->input().begin());
   coarse_fft_->forward();
   const std::span<const std::complex<double>> spectrum = coarse_fft_->spectrum();
   const double scale = 1.0 / static_cast<double>(rows * cols);
   far_symbol_.resize(spectrum.size());
   for (std::size_t k = 0; k < spectrum.size(); ++k) far_symbol_[k] = spectrum[k] * scale;
   // apply_coarse writes the blocks only: a free grid's padding stays zero.
-  std::fill(far.begin(), far.end(), 0.0);
+  std::fill(coarse_fft_->input().begin(), coarse_fft_->input().end(), 0.0);
 }
 
 void BlockDeflation::list_cells() {
