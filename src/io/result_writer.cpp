@@ -110,13 +110,15 @@ void write_result(const std::filesystem::path& path, const Grid& grid, std::span
     write_hdf5_file(path, fill);
     return;
   }
+  write_large_hdf5_file(path, result_file_bound(grid, result, metadata), fill);
+}
+
+std::uint64_t result_file_bound(const Grid& grid, const SolveResult& result, const ResultMetadata& metadata) {
   // height, pressure, gap, displacement, plastic_displacement, and the uint8
   // contact and plastic within one more float64 field's bound.
   constexpr std::uint64_t kFields = 6;
-  const std::uint64_t bound =
-      kHdf5SmallItemsBound + kFields * hdf5_dataset_bound(field_shape(grid), Compression::deflate) +
-      hdf5_dataset_bound({result.residual_history.size()}, Compression::deflate) + metadata.extra_groups_bytes;
-  write_large_hdf5_file(path, bound, fill);
+  return kHdf5SmallItemsBound + kFields * hdf5_dataset_bound(field_shape(grid), Compression::deflate) +
+         hdf5_dataset_bound({result.residual_history.size()}, Compression::deflate) + metadata.extra_groups_bytes;
 }
 
 }  // namespace halfspace::io

@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "../io/hdf5_handle.hpp"
@@ -21,6 +22,10 @@
 namespace halfspace::mpi {
 namespace {
 
+[[noreturn]] void fail(const std::filesystem::path& path, const std::string& what) {
+  throw FileError(fmt::format("cannot write output '{}': {}: {}", path.string(), what, io::detail::error_reason()));
+}
+
 void broadcast(std::string& text, const MpiCommunicator& comm) {
   std::uint64_t size = text.size();
   check(MPI_Bcast(&size, 1, MPI_UINT64_T, 0, comm.get()), "MPI_Bcast");
@@ -28,21 +33,28 @@ void broadcast(std::string& text, const MpiCommunicator& comm) {
   check(MPI_Bcast(text.data(), static_cast<int>(size), MPI_CHAR, 0, comm.get()), "MPI_Bcast");
 }
 
-void write_into(const MpiCommunicator& comm, const std::filesystem::path& path, const std::string& temporary,
-                const Grid& grid, const SlabLayout& layout, std::span<const double> heights,
-                const solvers::SolveResult& result, const io::ResultMetadata& metadata) {
-  const auto fail = [&](const std::string& what) {
-    throw FileError(fmt::format("cannot write output '{}': {}: {}", path.string(), what, io::detail::error_reason()));
-  };
+// The temporary, created by every process with MPI-IO (collective).
+io::detail::File create_collectively(const MpiCommunicator& comm, const std::filesystem::path& path,
+                                     const std::string& temporary) {
   const io::detail::ErrorPrintingOff quiet;
   const io::detail::PropertyList access(H5Pcreate(H5P_FILE_ACCESS));
-  const io::detail::PropertyList transfer(H5Pcreate(H5P_DATASET_XFER));
-  if (!access.valid() || !transfer.valid() || H5Pset_fapl_mpio(access.get(), comm.get(), MPI_INFO_NULL) < 0 ||
-      H5Pset_dxpl_mpio(transfer.get(), H5FD_MPIO_COLLECTIVE) < 0) {
-    fail("could not set up the parallel HDF5 writing");
+  if (!access.valid() || H5Pset_fapl_mpio(access.get(), comm.get(), MPI_INFO_NULL) < 0) {
+    fail(path, "could not set up the parallel HDF5 writing");
   }
   io::detail::File file(H5Fcreate(temporary.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get()));
-  if (!file.valid()) fail(fmt::format("could not create temporary file '{}'", temporary));
+  if (!file.valid()) fail(path, fmt::format("could not create temporary file '{}'", temporary));
+  return file;
+}
+
+void write_into(io::detail::File& file, const MpiCommunicator& comm, const std::filesystem::path& path,
+                const std::string& temporary, const Grid& grid, const SlabLayout& layout,
+                std::span<const double> heights, const solvers::SolveResult& result,
+                const io::ResultMetadata& metadata) {
+  const io::detail::ErrorPrintingOff quiet;
+  const io::detail::PropertyList transfer(H5Pcreate(H5P_DATASET_XFER));
+  if (!transfer.valid() || H5Pset_dxpl_mpio(transfer.get(), H5FD_MPIO_COLLECTIVE) < 0) {
+    fail(path, "could not set up the parallel HDF5 writing");
+  }
   try {
     io::fill_hdf5_file(file.get(), transfer.get(), [&](const io::Hdf5Node& root) {
       root.write_dataset_rows("height", io::field_shape(grid), layout.first_row, heights, "m");
@@ -53,7 +65,7 @@ void write_into(const MpiCommunicator& comm, const std::filesystem::path& path, 
   } catch (const FileError& error) {
     throw FileError(fmt::format("cannot write output '{}': {}", path.string(), error.what()));
   }
-  if (!file.close()) fail(fmt::format("could not write temporary file '{}'", temporary));
+  if (!file.close()) fail(path, fmt::format("could not write temporary file '{}'", temporary));
 }
 
 }  // namespace
@@ -70,7 +82,16 @@ void write_result_slabs(const MpiCommunicator& comm, const std::filesystem::path
     temporary = output->temporary().string();
   });
   broadcast(temporary, comm);
-  run_agreed(comm, [&] { write_into(comm, path, temporary, grid, layout, heights, result, metadata); });
+  std::optional<io::detail::File> file;
+  run_agreed(comm, [&] { file.emplace(create_collectively(comm, path, temporary)); });
+  // The file's space before any field is written: a full disk or a file-size
+  // limit is then met here, where every process learns of it, and not by
+  // one process alone inside a collective write, which would leave the
+  // others waiting.
+  run_agreed(comm, [&] {
+    if (first) io::reserve_output_space(path, temporary, io::result_file_bound(grid, result, metadata));
+  });
+  run_agreed(comm, [&] { write_into(*file, comm, path, temporary, grid, layout, heights, result, metadata); });
   // Every process has closed the file: only now is it complete.
   run_agreed(comm, [&] {
     if (first) output->commit();

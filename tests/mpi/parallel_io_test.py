@@ -294,6 +294,26 @@ for processes in (2, 3):
     failure_case("temporary cannot be created", processes, hertz, "could not create temporary file", long_name,
                  same_message=False)
 
+# A file-size limit below the result's size (32 KiB: `ulimit -f` counts
+# 512-byte blocks in sh): met by the reservation on the first process before
+# any field is written, so every process ends with the one message, not one
+# process alone inside a collective write. Open MPI's shared-memory transport
+# maps files larger than the limit, so the processes talk over TCP here.
+for processes in (2, 3):
+    limited = os.path.join(work_dir, "limited.h5")
+    command = " ".join([mpi_program, "solve"] + hertz + ["--output", limited])
+    result = run([mpiexec, "--oversubscribe", "--mca", "btl", "self,tcp", "-np", str(processes), "sh", "-c",
+                  "ulimit -f 64; exec " + command])
+    where = f"file-size limit, {processes} processes"
+    errors = [line for line in result.stderr.splitlines() if line.startswith("error:")]
+    if result.returncode != 1:
+        fail(f"{where}: exit {result.returncode}, expected 1; stderr: {result.stderr.strip()}")
+    if len(errors) != 1 or "could not reserve" not in errors[0] or "File too large" not in errors[0]:
+        fail(f"{where}: expected one error line about the reservation, got {errors}")
+    if os.path.exists(limited) or leftovers():
+        fail(f"{where}: output or temporaries left behind: {leftovers()}")
+    print(f"{where}: {errors[0] if errors else result.stderr.strip()}")
+
 if failures:
     print(f"{len(failures)} failure(s)")
     sys.exit(1)

@@ -51,4 +51,10 @@ struct ResultMetadata {
 void write_result(const std::filesystem::path& path, const Grid& grid, std::span<const double> height,
                   const SolveResult& result, const ResultMetadata& metadata);
 
+// An upper bound on the bytes of write_result's file (reserve_output_space),
+// so that a full disk or a file-size limit is met before any field is
+// written (by write_result with extra groups, and by the collective writer,
+// where a process failing alone in mid-write would leave the others waiting).
+std::uint64_t result_file_bound(const Grid& grid, const SolveResult& result, const ResultMetadata& metadata);
+
 }  // namespace halfspace::io
