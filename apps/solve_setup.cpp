@@ -715,8 +715,10 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
     const double estimate = std::max(solve_memory_estimate(grid, solver, load_values.size()),
                                      stress_peak_memory(grid, stress.depths.size(), coating.has_value()));
     if (share.check_memory) {
-      // A process holding some rows runs the distributed single solve (any
-      // other run is refused on several processes before it starts).
+      // A process holding some rows runs the distributed solve (what is not
+      // distributed is refused on several processes before it starts). Not
+      // counted yet: a sweep's first process gathers the height map and
+      // every step's fields to write the sweep (docs/usage.md).
       const std::size_t all_rows = grid.dimension() == 1 ? 1 : grid.ny();
       share.check_memory(
           what, grid,
