@@ -1,7 +1,9 @@
 // Polonsky-Keer on a slab-distributed 2D grid: the serial solver loop
 // (polonsky_keer.cpp) unchanged, over the slab operator (periodic or free)
 // and preconditioner, whose reductions go through the operator's
-// communicator.
+// communicator. A hardness cap is elementwise (the projection onto [0, H])
+// apart from its load-restoring scale and fill, whose sums and searches are
+// reductions over that communicator too.
 #include "halfspace/mpi/distributed_solver.hpp"
 
 #include <fmt/format.h>
@@ -107,10 +109,6 @@ void check_distributable(const Grid& grid, const solvers::SolverOptions& options
   if (options.adhesion) {
     throw SolverOptionError("adhesion", std::string(to_string(options.adhesion->law.type)),
                             fmt::format("{}: solve adhesive contacts on one process", kNotYet));
-  }
-  if (options.interface_law.hardness) {
-    throw SolverOptionError("hardness", fmt::format("{}", *options.interface_law.hardness),
-                            fmt::format("{}: solve capped contacts on one process", kNotYet));
   }
   if (options.type != SolverType::pk && options.type != SolverType::pk_fourier &&
       options.type != SolverType::pk_multilevel) {

@@ -15,7 +15,8 @@ namespace halfspace::mpi {
 
 // Whether make_distributed_solver takes `options` on `grid`: a 2D grid
 // (periodic or free), solver pk, pk-fourier or pk-multilevel (block
-// deflation as the serial solvers take it), no hardness cap, no adhesion.
+// deflation as the serial solvers take it), with or without a hardness cap,
+// no adhesion.
 bool distributable(const Grid& grid, const solvers::SolverOptions& options);
 
 // Throws SolverOptionError naming the option and what to use instead unless
