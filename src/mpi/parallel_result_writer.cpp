@@ -1,5 +1,5 @@
-// The collective write: the serial writer's datasets and attributes
-// (io/hdf5_writing.hpp) into one file opened by every process with MPI-IO,
+// The collective write: the serial writers' datasets and attributes
+// (io/hdf5_writing.hpp, io/height_map_writer.hpp) into one file opened by every process with MPI-IO,
 // field datasets by rows, attributes and small datasets alike everywhere
 // (the parallel HDF5 needs every process to make the same metadata calls).
 #include "halfspace/mpi/parallel_result_writer.hpp"
@@ -8,6 +8,7 @@
 #include <hdf5.h>
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -15,6 +16,7 @@
 #include "../io/hdf5_writing.hpp"
 #include "halfspace/error.hpp"
 #include "halfspace/io/hdf5_output.hpp"
+#include "halfspace/io/height_map_writer.hpp"
 #include "halfspace/io/output_file.hpp"
 #include "halfspace/mpi/agreement.hpp"
 
@@ -29,8 +31,7 @@ void broadcast(std::string& text, const MpiCommunicator& comm) {
 }
 
 void write_into(const MpiCommunicator& comm, const std::filesystem::path& path, const std::string& temporary,
-                const Grid& grid, const SlabLayout& layout, std::span<const double> heights,
-                const solvers::SolveResult& result, const io::ResultMetadata& metadata) {
+                const std::function<void(const io::Hdf5Node& root)>& fill) {
   const auto fail = [&](const std::string& what) {
     throw FileError(fmt::format("cannot write output '{}': {}: {}", path.string(), what, io::detail::error_reason()));
   };
@@ -44,12 +45,7 @@ void write_into(const MpiCommunicator& comm, const std::filesystem::path& path, 
   io::detail::File file(H5Fcreate(temporary.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get()));
   if (!file.valid()) fail(fmt::format("could not create temporary file '{}'", temporary));
   try {
-    io::fill_hdf5_file(file.get(), transfer.get(), [&](const io::Hdf5Node& root) {
-      root.write_dataset_rows("height", io::field_shape(grid), layout.first_row, heights, "m");
-      io::write_result_fields(root, grid, result, {layout.first_row, comm.rank() == 0});
-      io::write_result_root_attributes(root, grid, result, metadata);
-      if (metadata.extra_groups) metadata.extra_groups(root);
-    });
+    io::fill_hdf5_file(file.get(), transfer.get(), fill);
   } catch (const FileError& error) {
     throw FileError(fmt::format("cannot write output '{}': {}", path.string(), error.what()));
   }
@@ -58,9 +54,8 @@ void write_into(const MpiCommunicator& comm, const std::filesystem::path& path, 
 
 }  // namespace
 
-void write_result_slabs(const MpiCommunicator& comm, const std::filesystem::path& path, const Grid& grid,
-                        const SlabLayout& layout, std::span<const double> heights, const solvers::SolveResult& result,
-                        const io::ResultMetadata& metadata) {
+void write_file_slabs(const MpiCommunicator& comm, const std::filesystem::path& path,
+                      const std::function<void(const io::Hdf5Node& root)>& fill) {
   const bool first = comm.rank() == 0;
   std::unique_ptr<io::OutputTemporary> output;
   std::string temporary;
@@ -70,10 +65,29 @@ void write_result_slabs(const MpiCommunicator& comm, const std::filesystem::path
     temporary = output->temporary().string();
   });
   broadcast(temporary, comm);
-  run_agreed(comm, [&] { write_into(comm, path, temporary, grid, layout, heights, result, metadata); });
+  run_agreed(comm, [&] { write_into(comm, path, temporary, fill); });
   // Every process has closed the file: only now is it complete.
   run_agreed(comm, [&] {
     if (first) output->commit();
+  });
+}
+
+void write_result_slabs(const MpiCommunicator& comm, const std::filesystem::path& path, const Grid& grid,
+                        const SlabLayout& layout, std::span<const double> heights, const solvers::SolveResult& result,
+                        const io::ResultMetadata& metadata) {
+  write_file_slabs(comm, path, [&](const io::Hdf5Node& root) {
+    root.write_dataset_rows("height", io::field_shape(grid), layout.first_row, heights, "m");
+    io::write_result_fields(root, grid, result, {layout.first_row, comm.rank() == 0});
+    io::write_result_root_attributes(root, grid, result, metadata);
+    if (metadata.extra_groups) metadata.extra_groups(root);
+  });
+}
+
+void write_height_map_slabs(const MpiCommunicator& comm, const std::filesystem::path& path, const Grid& grid,
+                            const SlabLayout& layout, std::span<const double> heights,
+                            const io::HeightMapMetadata& metadata) {
+  write_file_slabs(comm, path, [&](const io::Hdf5Node& root) {
+    io::write_height_map_contents(root, grid, layout.first_row, heights, metadata);
   });
 }
 

@@ -51,7 +51,8 @@ Eigen::ArrayXd make_self_affine_slab(const Grid& grid, const surface::SelfAffine
   Eigen::ArrayXd heights(static_cast<Eigen::Index>(layout.local_size()));
   fft.backward({heights.data(), layout.local_size()});
   const std::size_t n = layout.local_size();
-  const double mean = linalg::sum(comm, n, [&](std::size_t i) { return heights[static_cast<Eigen::Index>(i)]; }) / cells;
+  const double mean =
+      linalg::sum(comm, n, [&](std::size_t i) { return heights[static_cast<Eigen::Index>(i)]; }) / cells;
   heights -= mean;
   double scale = 0.0;
   if (spec.rms_height) {

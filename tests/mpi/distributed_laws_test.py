@@ -7,7 +7,11 @@ usage: distributed_laws_test.py MPI_PROGRAM SERIAL_PROGRAM MPIEXEC SOURCE_DIR WO
 hardness cap (periodic and free grids; pk, pk-fourier, pk-multilevel; load
 and displacement control), and on a coated half-space (periodic grids: the
 layered kernel and preconditioner; every distributed solver, a load sweep),
-must write the serial program's file: the same
+must write the serial program's file; so must `generate --kind self-affine`
+on 2D grids (the height map: each process its rows of the spectrum, the
+transform and the file; equal to rounding, since FFTW-MPI's inverse
+transform and the sums over the processes round differently from the
+serial ones). Each must write the serial program's file: the same
 datasets (with /plastic and /plastic_displacement), shapes, types and
 attributes (plastic_fraction, hardness), floating-point fields within
 kTolerance of their largest value, the contact and plastic sets identical,
@@ -175,9 +179,50 @@ solve_case("coated-hardness-pk-fourier", coated + ["--solver", "pk-fourier", "--
                                                     "--hardness", "1e10", "--tol", "1e-12"], plastic,
            skipped=kCappedPathAttributes)
 
+
+def generate_case(name, arguments):
+    serial_output = os.path.join(work_dir, f"{name}-serial.h5")
+    serial = run([serial_program, "generate"] + arguments + ["--output", serial_output])
+    if serial.returncode != 0:
+        fail(f"{name}: the serial program failed ({serial.returncode}): {serial.stderr.strip()}")
+        return
+    for processes in kProcessCounts:
+        output = os.path.join(work_dir, f"{name}-np{processes}.h5")
+        if os.path.exists(output):
+            os.remove(output)
+        distributed = run_mpi(processes, ["generate"] + arguments + ["--output", output])
+        where = f"{name}, {processes} processes"
+        if distributed.returncode != 0:
+            fail(f"{where}: exit {distributed.returncode}: {distributed.stderr.strip()}")
+            continue
+        compare_files(where, output, serial_output, ("height",), kTolerance, frozenset())
+
+
+# generate: even and odd grids (uneven slabs on 3 processes), by rms height
+# and by rms slope with a roll-off.
+generate_case("generate-height", ["--kind", "self-affine", "--grid", "64x50", "--size", "64e-6x50e-6",
+                                  "--rms-height", "1e-6", "--seed", "3", "--quiet"])
+generate_case("generate-slope", ["--kind", "self-affine", "--grid", "33x17", "--size", "33e-6x34e-6", "--hurst", "0.5",
+                                 "--rms-slope", "0.1", "--rolloff", "1e-5", "--seed", "99", "--quiet"])
+# A built-in shape and a 1D profile are refused on several processes (on one
+# they are the serial program's).
+refused = os.path.join(work_dir, "refused.h5")
+for processes in (2, 3):
+    for arguments, expected in (
+            (["--kind", "sphere", "--radius", "1e-3", "--grid", "64x50", "--size", "64e-6x50e-6"],
+             "--kind sphere is not available with more than one process yet"),
+            (["--kind", "self-affine", "--grid", "64", "--size", "64e-6", "--rms-height", "1e-6"],
+             "a 1D profile is not available with more than one process yet")):
+        result = run_mpi(processes, ["generate"] + arguments + ["--output", refused])
+        errors = [line for line in result.stderr.splitlines() if line.startswith("error:")]
+        if result.returncode != 1 or len(errors) != 1 or expected not in errors[0] or os.path.exists(refused):
+            fail(f"generate {arguments[1]}, {processes} processes: exit {result.returncode}, errors {errors}, "
+                 f"written {os.path.exists(refused)}")
+        else:
+            print(f"generate {arguments[1]}, {processes} processes: {errors[0]}")
+
 # Still refused on several processes (free coated grids): one error line,
 # exit 1, nothing written.
-refused = os.path.join(work_dir, "refused.h5")
 for processes in (2, 3):
     result = run_mpi(processes, ["solve"] + coated[:3] + ["free"] + coated[4:] +
                      ["--mean-pressure", "2e8", "--output", refused])

@@ -4,6 +4,8 @@
 // it within kTolerance of the largest height, on even and odd grids, by rms
 // height and by rms slope, with more processes than spectrum columns too.
 // Exits non-zero on a mismatch, printing it.
+#include "halfspace/mpi/slab_self_affine.hpp"
+
 #include <fmt/format.h>
 
 #include <Eigen/Core>
@@ -14,7 +16,6 @@
 #include "halfspace/mpi/mpi_communicator.hpp"
 #include "halfspace/mpi/session.hpp"
 #include "halfspace/mpi/slab_fft.hpp"
-#include "halfspace/mpi/slab_self_affine.hpp"
 #include "halfspace/surface/self_affine.hpp"
 
 namespace {
@@ -67,9 +68,9 @@ int main(int argc, char** argv) {
   by_slope.rms_slope = 0.1;
   by_slope.seed = 12345;
   by_slope.rolloff = 2e-5;  // a roll-off below the longest wavelength
-  for (const Grid& grid : {Grid::plane(64, 50, 1e-6, 1e-6, Boundary::periodic),
-                           Grid::plane(33, 17, 1e-6, 2e-6, Boundary::periodic),
-                           Grid::plane(6, 40, 1e-6, 1e-6, Boundary::periodic)}) {
+  for (const Grid& grid :
+       {Grid::plane(64, 50, 1e-6, 1e-6, Boundary::periodic), Grid::plane(33, 17, 1e-6, 2e-6, Boundary::periodic),
+        Grid::plane(6, 40, 1e-6, 1e-6, Boundary::periodic)}) {
     check(grid, by_height, "rms height", comm);
     check(grid, by_slope, "rms slope", comm);
   }
