@@ -26,6 +26,7 @@
 #include "memory_check.hpp"
 #include "option_table.hpp"
 #include "physical_ranges.hpp"
+#include "processes.hpp"
 
 namespace halfspace::app {
 namespace {
@@ -93,10 +94,13 @@ const std::array kOptions{
 constexpr const char* kSelfAffineKeys[] = {"hurst",      "cutoff-short", "rolloff", "cutoff-long",
                                            "rms-height", "rms-slope",    "seed"};
 
+// The heights are made here on one process; on several, each makes and
+// writes its rows later (generate_distributed), from `self_affine`.
 struct Generated {
   Grid grid;
   Eigen::ArrayXd heights;
   io::HeightMapMetadata metadata;
+  std::optional<surface::SelfAffineSpec> self_affine;
 };
 
 // A positive length within the program's range of lengths, if given.
@@ -151,9 +155,18 @@ Generated self_affine(const GenerateOptions& o) {
   }
 
   Grid grid = grid_from(o, Boundary::periodic);
-  const Activity activity(fmt::format("generating the self-affine surface on the {} grid", grid.shape_string()));
+  if (process_count() > 1 && grid.dimension() != 2) {
+    throw InputError(
+        fmt::format("{}: a 1D profile is not available with more than one process yet: run it without "
+                    "mpirun (2D maps are)",
+                    o.describe("grid")));
+  }
   const surface::SelfAffineSpec resolved = spec.resolved(grid);
-  Eigen::ArrayXd heights = surface::make_self_affine_surface(grid, spec);
+  Eigen::ArrayXd heights;
+  if (process_count() == 1) {
+    const Activity activity(fmt::format("generating the self-affine surface on the {} grid", grid.shape_string()));
+    heights = surface::make_self_affine_surface(grid, spec);
+  }
   io::HeightMapMetadata metadata;
   metadata.periodic = true;
   metadata.source = fmt::format(
@@ -166,7 +179,7 @@ Generated self_affine(const GenerateOptions& o) {
                       {"rolloff", resolved.rolloff},
                       {"cutoff_long", resolved.long_cutoff}};
   metadata.integers = {{"seed", static_cast<std::int64_t>(spec.seed)}};
-  return {std::move(grid), std::move(heights), std::move(metadata)};
+  return {std::move(grid), std::move(heights), std::move(metadata), spec};
 }
 
 // Whether a wavy surface fits the domain a whole number of times per axis.
@@ -217,41 +230,59 @@ Generated builtin(const GenerateOptions& o, geometry::SurfaceShape shape) {
   if (spec.radius > 0.0) metadata.numbers.emplace_back("radius", spec.radius);
   if (spec.wavelength > 0.0) metadata.numbers.emplace_back("wavelength", spec.wavelength);
   if (spec.amplitude > 0.0) metadata.numbers.emplace_back("amplitude", spec.amplitude);
-  return {std::move(grid), std::move(heights), std::move(metadata)};
+  return {std::move(grid), std::move(heights), std::move(metadata), std::nullopt};
 }
 
 int run_generate(const GenerateOptions& o) {
   if (!o.kind) throw InputError("no surface kind given: pass --kind self-affine, sphere, cylinder, wavy or flat");
   if (!o.output) throw InputError("no output file given: pass --output FILE.h5");
-  // Refuse a device, FIFO or directory before generating, not after.
-  io::check_output_path(*o.output);
   const std::string& kind = *o.kind;
-  std::optional<geometry::SurfaceShape> shape;
-  if (kind != "self-affine") {
-    try {
-      shape = geometry::parse_surface_shape(kind);
-    } catch (const InputError&) {
-      throw InputError(fmt::format("{} is invalid: the kind must be self-affine, sphere, cylinder, wavy or flat",
-                                   o.describe("kind")));
+  // On several processes every one checks the options; all fail, with the
+  // first failure's message, if any does.
+  std::optional<Generated> made;
+  agree_everywhere([&] {
+    // Refuse a device, FIFO or directory before generating, not after.
+    io::check_output_path(*o.output);
+    std::optional<geometry::SurfaceShape> shape;
+    if (kind != "self-affine") {
+      try {
+        shape = geometry::parse_surface_shape(kind);
+      } catch (const InputError&) {
+        throw InputError(fmt::format("{} is invalid: the kind must be self-affine, sphere, cylinder, wavy or flat",
+                                     o.describe("kind")));
+      }
+      if (process_count() > 1) {
+        throw InputError(
+            fmt::format("{} is not available with more than one process yet: run it without mpirun "
+                        "(--kind self-affine is)",
+                        o.describe("kind")));
+      }
     }
-  }
-  Generated surface = shape ? builtin(o, *shape) : self_affine(o);
+    made.emplace(shape ? builtin(o, *shape) : self_affine(o));
+  });
+  Generated& surface = *made;
   surface.metadata.command_line = o.command_line;
-
-  const std::span<const double> heights(surface.heights.data(), static_cast<std::size_t>(surface.heights.size()));
-  std::optional<Activity> activity(std::in_place,
-                                   fmt::format("computing the statistics of the {} grid", surface.grid.shape_string()));
-  const surface::SurfaceStatistics statistics = surface::surface_statistics(surface.grid, heights);
-  activity.reset();
-  surface.metadata.numbers.emplace_back("rms_height", statistics.rms_height);
-  surface.metadata.numbers.emplace_back("rms_slope", statistics.rms_slope);
   const std::string& output = *o.output;
-  {
-    const Activity activity(fmt::format("writing {}", output));
+
+  surface::SurfaceStatistics statistics;
+  if (process_count() > 1) {
+    // Each process its rows, made, measured and written at once.
+    const Activity activity(fmt::format("generating the self-affine surface on the {} grid and writing {}",
+                                        surface.grid.shape_string(), output));
+    statistics = generate_distributed(surface.grid, *surface.self_affine, surface.metadata, output);
+  } else {
+    const std::span<const double> heights(surface.heights.data(), static_cast<std::size_t>(surface.heights.size()));
+    std::optional<Activity> activity(
+        std::in_place, fmt::format("computing the statistics of the {} grid", surface.grid.shape_string()));
+    statistics = surface::surface_statistics(surface.grid, heights);
+    activity.reset();
+    surface.metadata.numbers.emplace_back("rms_height", statistics.rms_height);
+    surface.metadata.numbers.emplace_back("rms_slope", statistics.rms_slope);
+    const Activity writing(fmt::format("writing {}", output));
     io::write_height_map(output, surface.grid, heights, surface.metadata);
   }
 
-  if (!o.quiet) {
+  if (!o.quiet && prints_messages()) {
     const Grid& grid = surface.grid;
     const auto row = [](std::string_view label, const std::string& value) {
       fmt::print("  {:<12} {}\n", label, value);

@@ -65,12 +65,12 @@ int main(int argc, char** argv) {
   for (const auto& command : commands) {
     if (!command.parser->parsed()) continue;
     try {
-      // Only solve is distributed; several processes of another command
-      // would write one file side by side.
-      if (halfspace::app::process_count() > 1 && command.parser->get_name() != "solve") {
-        throw halfspace::InputError(
-            fmt::format("{} is not available with more than one process: run it without mpirun (solve is)",
-                        command.parser->get_name()));
+      // Only solve and generate are distributed; several processes of
+      // another command would write one file side by side.
+      const std::string& name = command.parser->get_name();
+      if (halfspace::app::process_count() > 1 && name != "solve" && name != "generate") {
+        throw halfspace::InputError(fmt::format(
+            "{} is not available with more than one process: run it without mpirun (solve and generate are)", name));
       }
       return command.run(std::vector<std::string>(argv, argv + argc));
     } catch (const halfspace::InputError& error) {

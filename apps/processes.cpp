@@ -2,7 +2,10 @@
 // live in apps/mpi/.
 #include "processes.hpp"
 
+#include <stdexcept>
+
 #ifdef HALFSPACE_MPI
+#include "mpi/mpi_generate.hpp"
 #include "mpi/mpi_program.hpp"
 #endif
 
@@ -28,6 +31,13 @@ SolveSetup make_setup_everywhere(const std::function<SolveSetup(const SurfaceSha
 std::optional<int> run_distributed_solve(const SolveSetup& setup) {
   return run_solve_on_slabs(setup);
 }
+void agree_everywhere(const std::function<void()>& step) {
+  run_agreed_everywhere(step);
+}
+surface::SurfaceStatistics generate_distributed(const Grid& grid, const surface::SelfAffineSpec& spec,
+                                                io::HeightMapMetadata& metadata, const std::filesystem::path& output) {
+  return generate_on_slabs(grid, spec, metadata, output);
+}
 
 #else
 
@@ -44,6 +54,14 @@ SolveSetup make_setup_everywhere(const std::function<SolveSetup(const SurfaceSha
 }
 std::optional<int> run_distributed_solve(const SolveSetup& /*setup*/) {
   return std::nullopt;
+}
+void agree_everywhere(const std::function<void()>& step) {
+  step();
+}
+surface::SurfaceStatistics generate_distributed(const Grid& /*grid*/, const surface::SelfAffineSpec& /*spec*/,
+                                                io::HeightMapMetadata& /*metadata*/,
+                                                const std::filesystem::path& /*output*/) {
+  throw std::logic_error("generate_distributed: the serial build runs one process");
 }
 
 #endif

@@ -3,9 +3,13 @@
 // in apps/mpi/ does the program know the difference.
 #pragma once
 
+#include <filesystem>
 #include <functional>
 #include <optional>
 
+#include "halfspace/io/height_map_writer.hpp"
+#include "halfspace/surface/self_affine.hpp"
+#include "halfspace/surface/statistics.hpp"
 #include "solve_setup.hpp"
 
 namespace halfspace::app {
@@ -42,5 +46,17 @@ SolveSetup make_setup_everywhere(const std::function<SolveSetup(const SurfaceSha
 // distributed solver does not take it). Throws InputError, on every process,
 // for a solve that several processes cannot do yet.
 std::optional<int> run_distributed_solve(const SolveSetup& setup);
+
+// Runs `step` on every process; if it failed on any, throws on all the
+// error of the first process that failed (the serial build: step()).
+void agree_everywhere(const std::function<void()>& step);
+
+// On several MPI processes: the self-affine surface of `spec` on the 2D
+// `grid`, each process its rows, written into `output` by all at once
+// with `metadata` and the statistics (rms_height, rms_slope, appended to
+// its numbers as the serial generate appends them), which it returns.
+// Throws std::logic_error in the serial build (process_count() is 1 there).
+surface::SurfaceStatistics generate_distributed(const Grid& grid, const surface::SelfAffineSpec& spec,
+                                                io::HeightMapMetadata& metadata, const std::filesystem::path& output);
 
 }  // namespace halfspace::app

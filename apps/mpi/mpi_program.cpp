@@ -82,7 +82,9 @@ Grid broadcast(const std::optional<Grid>& grid) {
 // it is distributed; on one process the serial program does it.
 std::optional<std::string> unsupported_by_program(const SolveSetup& setup) {
   if (!setup.stress_depths.empty()) return fmt::format("subsurface stresses (stress depths) {}", kNotYet);
-  if (setup.coating) return fmt::format("a coated half-space {}", kNotYet);
+  if (setup.coating && !setup.grid.periodic()) {
+    return fmt::format("a coated half-space on a free grid {} (on periodic grids it is)", kNotYet);
+  }
   if (setup.plot) return fmt::format("plot {}", kNotYet);
   return std::nullopt;
 }
@@ -101,7 +103,7 @@ SolveResult solve_slab(const SolveSetup& setup, const mpi::SlabLayout& layout, c
         world->max(local_heights.size() > 0 ? local_heights.maxCoeff() : -std::numeric_limits<double>::infinity());
     const Eigen::ArrayXd gap = highest - local_heights;
     const std::unique_ptr<solvers::ContactSolver> solver =
-        mpi::make_distributed_solver(setup.grid, setup.e_star, settings, *world);
+        mpi::make_distributed_solver(setup.grid, slab_elasticity(setup), settings, *world);
     return solver->solve({gap.data(), static_cast<std::size_t>(gap.size())}, setup.loading, {});
   } catch (const InputError&) {
     throw;  // found by every process alike (options, reduced values)
@@ -114,6 +116,11 @@ SolveResult solve_slab(const SolveSetup& setup, const mpi::SlabLayout& layout, c
 }
 
 }  // namespace
+
+mpi::SlabElasticity slab_elasticity(const SolveSetup& setup) {
+  if (setup.coating) return *setup.coating;
+  return setup.e_star;
+}
 
 void start_mpi(int& argc, char**& argv) {
   session = std::make_unique<mpi::Session>(argc, argv);
@@ -291,6 +298,7 @@ std::optional<int> run_solve_on_slabs(const SolveSetup& setup) {
       static_cast<Eigen::Index>(layout.local_size()));
   const std::span<const double> heights(local_heights.data(), layout.local_size());
   io::ResultMetadata metadata = io::provenance_metadata(provenance(setup));
+  metadata.coating = setup.coating;
   mpi::run_agreed(*world, [&] {
     activity.emplace(fmt::format("computing the statistics of the {} grid", setup.grid.shape_string()));
     metadata.surface_statistics = mpi::slab_surface_statistics(setup.grid, layout, heights, *world);

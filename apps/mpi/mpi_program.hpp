@@ -9,6 +9,7 @@
 #include "../solve_setup.hpp"
 #include "halfspace/mpi/agreement.hpp"
 #include "halfspace/mpi/mpi_communicator.hpp"
+#include "halfspace/mpi/slab_fourier_operator.hpp"
 
 namespace halfspace::app {
 
@@ -21,6 +22,9 @@ const mpi::MpiCommunicator& mpi_world();
 
 // processes.hpp's make_setup_everywhere.
 SolveSetup make_distributed_setup(const std::function<SolveSetup(const SurfaceSharing& share)>& make);
+
+// The half-space of `setup`: its coating, or the homogeneous E*.
+mpi::SlabElasticity slab_elasticity(const SolveSetup& setup);
 
 // processes.hpp's run_distributed_solve.
 std::optional<int> run_solve_on_slabs(const SolveSetup& setup);

@@ -30,6 +30,7 @@
 #include "halfspace/mpi/session.hpp"
 #include "halfspace/mpi/slab_fft.hpp"
 #include "halfspace/mpi/slab_gather.hpp"
+#include "mpi_program.hpp"
 
 namespace halfspace::app {
 namespace {
@@ -84,7 +85,7 @@ std::vector<analysis::SweepStep> solve_steps(const SolveSetup& setup, const mpi:
     solvers::SolverOptions settings = setup.solver;
     settings.progress = progress.callback();
     const std::unique_ptr<solvers::ContactSolver> solver =
-        mpi::make_distributed_solver(grid, setup.e_star, settings, world);
+        mpi::make_distributed_solver(grid, slab_elasticity(setup), settings, world);
 
     std::vector<analysis::SweepStep> steps;
     Eigen::ArrayXd previous;  // this process's rows of the last step's pressure

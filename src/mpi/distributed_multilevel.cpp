@@ -1,6 +1,7 @@
 #include "halfspace/mpi/distributed_multilevel.hpp"
 
 #include <utility>
+#include <variant>
 
 #include "halfspace/mpi/distributed_solver.hpp"
 #include "halfspace/mpi/slab_level_transfer.hpp"
@@ -9,7 +10,7 @@
 
 namespace halfspace::mpi {
 
-std::unique_ptr<solvers::ContactSolver> make_distributed_multilevel(const Grid& grid, double e_star,
+std::unique_ptr<solvers::ContactSolver> make_distributed_multilevel(const Grid& grid, const SlabElasticity& elasticity,
                                                                     const solvers::SolverOptions& options,
                                                                     const MpiCommunicator& comm) {
   auto transfer = std::make_unique<SlabLevelTransfer>(grid, options.multilevel.min_cells_per_axis, comm);
@@ -21,16 +22,17 @@ std::unique_ptr<solvers::ContactSolver> make_distributed_multilevel(const Grid& 
   const bool deflated = solvers::multilevel_deflates(grid, options);
   solvers::SolverOptions level_options = options;
   level_options.type = solvers::SolverType::pk_fourier;
-  auto make_level = [e_star, level_options, deflated, levels, &comm](const Grid& level, double tolerance, bool fine) {
+  auto make_level = [elasticity, level_options, deflated, levels, &comm](const Grid& level, double tolerance,
+                                                                         bool fine) {
     solvers::SolverOptions one = level_options;
     one.tolerance = tolerance;
     one.deflation.mode = fine && deflated ? Mode::on : Mode::off;
     if (!fine) one.progress = nullptr;  // progress reports the fine solve only
-    if (!levels->gathered(level)) return make_distributed_solver(level, e_star, one, comm);
+    if (!levels->gathered(level)) return make_distributed_solver(level, elasticity, one, comm);
     // Solved on every process alike: estimated plans, since measured ones
     // may differ between processes and so round differently.
     one.fft_planning = FftPlanning::estimate;
-    return solvers::make_solver(level, e_star, one);
+    return std::visit([&](const auto& material) { return solvers::make_solver(level, material, one); }, elasticity);
   };
   return std::make_unique<solvers::MultilevelSolver>(grid, options.tolerance, make_level, options.multilevel,
                                                      std::move(transfer));

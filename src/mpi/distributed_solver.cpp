@@ -1,12 +1,15 @@
 // Polonsky-Keer on a slab-distributed 2D grid: the serial solver loop
 // (polonsky_keer.cpp) unchanged, over the slab operator (periodic or free)
 // and preconditioner, whose reductions go through the operator's
-// communicator.
+// communicator. A hardness cap is elementwise (the projection onto [0, H])
+// apart from its load-restoring scale and fill, whose sums and searches are
+// reductions over that communicator too.
 #include "halfspace/mpi/distributed_solver.hpp"
 
 #include <fmt/format.h>
 
 #include <utility>
+#include <variant>
 
 #include "halfspace/mpi/distributed_multilevel.hpp"
 #include "halfspace/mpi/slab_fft.hpp"
@@ -36,14 +39,17 @@ struct SlabOperator {
 // preconditioner on a transform of its own (the unpadded periodic symbol,
 // as the serial solvers use on free grids) working in the operator's padded
 // buffer, idle between products. Collective.
-SlabOperator make_slab_operator(const Grid& grid, double e_star, bool fourier, FftPlanning planning,
+// A coated half-space takes its layered kernel in both (periodic grids
+// only: check_coating).
+SlabOperator make_slab_operator(const Grid& grid, const SlabElasticity& elasticity, bool fourier, FftPlanning planning,
                                 const MpiCommunicator& comm) {
   SlabOperator made;
   if (grid.periodic()) {
     auto transform = std::make_shared<SlabRealFft>(grid.nx(), grid.ny(), comm, planning);
-    made.op = std::make_unique<SlabFourierOperator>(grid, e_star, transform);
-    if (fourier) made.fourier = std::make_unique<SlabFourierPreconditioner>(grid, e_star, transform);
+    made.op = std::make_unique<SlabFourierOperator>(grid, elasticity, transform);
+    if (fourier) made.fourier = std::make_unique<SlabFourierPreconditioner>(grid, elasticity, transform);
   } else {
+    const double e_star = std::get<double>(elasticity);
     auto op = std::make_unique<SlabFreeOperator>(grid, e_star, comm, planning);
     if (fourier) {
       made.fourier = std::make_unique<SlabFourierPreconditioner>(
@@ -108,10 +114,6 @@ void check_distributable(const Grid& grid, const solvers::SolverOptions& options
     throw SolverOptionError("adhesion", std::string(to_string(options.adhesion->law.type)),
                             fmt::format("{}: solve adhesive contacts on one process", kNotYet));
   }
-  if (options.interface_law.hardness) {
-    throw SolverOptionError("hardness", fmt::format("{}", *options.interface_law.hardness),
-                            fmt::format("{}: solve capped contacts on one process", kNotYet));
-  }
   if (options.type != SolverType::pk && options.type != SolverType::pk_fourier &&
       options.type != SolverType::pk_multilevel) {
     throw SolverOptionError("type", std::string(to_string(options.type)),
@@ -119,14 +121,28 @@ void check_distributable(const Grid& grid, const solvers::SolverOptions& options
   }
 }
 
-std::unique_ptr<solvers::ContactSolver> make_distributed_solver(const Grid& grid, double e_star,
+void check_distributable(const Grid& grid, const LayeredMaterial& /*coating*/) {
+  if (!grid.periodic()) {
+    throw SolverOptionError("boundary", std::string(to_string(grid.boundary())),
+                            fmt::format("with a coated half-space {}: solve coated free grids on one process "
+                                        "(coated periodic grids are distributed)",
+                                        kNotYet));
+  }
+}
+
+std::unique_ptr<solvers::ContactSolver> make_distributed_solver(const Grid& grid, const SlabElasticity& elasticity,
                                                                 const solvers::SolverOptions& options,
                                                                 const MpiCommunicator& comm) {
-  options.validate(grid);
+  if (const auto* coating = std::get_if<LayeredMaterial>(&elasticity)) {
+    options.validate(grid, validated(*coating));
+    check_distributable(grid, *coating);
+  } else {
+    options.validate(grid);
+  }
   check_distributable(grid, options);
-  if (options.type == SolverType::pk_multilevel) return make_distributed_multilevel(grid, e_star, options, comm);
+  if (options.type == SolverType::pk_multilevel) return make_distributed_multilevel(grid, elasticity, options, comm);
   const bool projected = options.type == SolverType::pk_fourier;
-  SlabOperator slab = make_slab_operator(grid, e_star, projected, options.fft_planning, comm);
+  SlabOperator slab = make_slab_operator(grid, elasticity, projected, options.fft_planning, comm);
   // Block deflation as the serial pk-fourier takes it: when asked for (its
   // options were checked by validate), on the rows the operator holds.
   std::unique_ptr<solvers::BlockDeflation> deflation;

@@ -1,5 +1,5 @@
-// The collective write: the serial writer's datasets and attributes
-// (io/hdf5_writing.hpp) into one file opened by every process with MPI-IO,
+// The collective write: the serial writers' datasets and attributes
+// (io/hdf5_writing.hpp, io/height_map_writer.hpp) into one file opened by every process with MPI-IO,
 // field datasets by rows, attributes and small datasets alike everywhere
 // (the parallel HDF5 needs every process to make the same metadata calls).
 #include "halfspace/mpi/parallel_result_writer.hpp"
@@ -8,6 +8,7 @@
 #include <hdf5.h>
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -16,21 +17,22 @@
 #include "../io/hdf5_writing.hpp"
 #include "halfspace/error.hpp"
 #include "halfspace/io/hdf5_output.hpp"
+#include "halfspace/io/height_map_writer.hpp"
 #include "halfspace/io/output_file.hpp"
 #include "halfspace/mpi/agreement.hpp"
 
 namespace halfspace::mpi {
 namespace {
 
-[[noreturn]] void fail(const std::filesystem::path& path, const std::string& what) {
-  throw FileError(fmt::format("cannot write output '{}': {}: {}", path.string(), what, io::detail::error_reason()));
-}
-
 void broadcast(std::string& text, const MpiCommunicator& comm) {
   std::uint64_t size = text.size();
   check(MPI_Bcast(&size, 1, MPI_UINT64_T, 0, comm.get()), "MPI_Bcast");
   text.resize(size);
   check(MPI_Bcast(text.data(), static_cast<int>(size), MPI_CHAR, 0, comm.get()), "MPI_Bcast");
+}
+
+[[noreturn]] void fail(const std::filesystem::path& path, const std::string& what) {
+  throw FileError(fmt::format("cannot write output '{}': {}: {}", path.string(), what, io::detail::error_reason()));
 }
 
 // The temporary, created by every process with MPI-IO (collective).
@@ -46,22 +48,15 @@ io::detail::File create_collectively(const MpiCommunicator& comm, const std::fil
   return file;
 }
 
-void write_into(io::detail::File& file, const MpiCommunicator& comm, const std::filesystem::path& path,
-                const std::string& temporary, const Grid& grid, const SlabLayout& layout,
-                std::span<const double> heights, const solvers::SolveResult& result,
-                const io::ResultMetadata& metadata) {
+void write_into(io::detail::File& file, const std::filesystem::path& path, const std::string& temporary,
+                const std::function<void(const io::Hdf5Node& root)>& fill) {
   const io::detail::ErrorPrintingOff quiet;
   const io::detail::PropertyList transfer(H5Pcreate(H5P_DATASET_XFER));
   if (!transfer.valid() || H5Pset_dxpl_mpio(transfer.get(), H5FD_MPIO_COLLECTIVE) < 0) {
     fail(path, "could not set up the parallel HDF5 writing");
   }
   try {
-    io::fill_hdf5_file(file.get(), transfer.get(), [&](const io::Hdf5Node& root) {
-      root.write_dataset_rows("height", io::field_shape(grid), layout.first_row, heights, "m");
-      io::write_result_fields(root, grid, result, {layout.first_row, comm.rank() == 0});
-      io::write_result_root_attributes(root, grid, result, metadata);
-      if (metadata.extra_groups) metadata.extra_groups(root);
-    });
+    io::fill_hdf5_file(file.get(), transfer.get(), fill);
   } catch (const FileError& error) {
     throw FileError(fmt::format("cannot write output '{}': {}", path.string(), error.what()));
   }
@@ -70,9 +65,8 @@ void write_into(io::detail::File& file, const MpiCommunicator& comm, const std::
 
 }  // namespace
 
-void write_result_slabs(const MpiCommunicator& comm, const std::filesystem::path& path, const Grid& grid,
-                        const SlabLayout& layout, std::span<const double> heights, const solvers::SolveResult& result,
-                        const io::ResultMetadata& metadata) {
+void write_file_slabs(const MpiCommunicator& comm, const std::filesystem::path& path, std::uint64_t reserved_bytes,
+                      const std::function<void(const io::Hdf5Node& root)>& fill) {
   const bool first = comm.rank() == 0;
   std::unique_ptr<io::OutputTemporary> output;
   std::string temporary;
@@ -89,12 +83,33 @@ void write_result_slabs(const MpiCommunicator& comm, const std::filesystem::path
   // one process alone inside a collective write, which would leave the
   // others waiting.
   run_agreed(comm, [&] {
-    if (first) io::reserve_output_space(path, temporary, io::result_file_bound(grid, result, metadata));
+    if (first) io::reserve_output_space(path, temporary, reserved_bytes);
   });
-  run_agreed(comm, [&] { write_into(*file, comm, path, temporary, grid, layout, heights, result, metadata); });
+  run_agreed(comm, [&] { write_into(*file, path, temporary, fill); });
   // Every process has closed the file: only now is it complete.
   run_agreed(comm, [&] {
     if (first) output->commit();
+  });
+}
+
+void write_result_slabs(const MpiCommunicator& comm, const std::filesystem::path& path, const Grid& grid,
+                        const SlabLayout& layout, std::span<const double> heights, const solvers::SolveResult& result,
+                        const io::ResultMetadata& metadata) {
+  write_file_slabs(comm, path, io::result_file_bound(grid, result, metadata), [&](const io::Hdf5Node& root) {
+    root.write_dataset_rows("height", io::field_shape(grid), layout.first_row, heights, "m");
+    io::write_result_fields(root, grid, result, {layout.first_row, comm.rank() == 0});
+    io::write_result_root_attributes(root, grid, result, metadata);
+    if (metadata.extra_groups) metadata.extra_groups(root);
+  });
+}
+
+void write_height_map_slabs(const MpiCommunicator& comm, const std::filesystem::path& path, const Grid& grid,
+                            const SlabLayout& layout, std::span<const double> heights,
+                            const io::HeightMapMetadata& metadata) {
+  const std::uint64_t bound =
+      io::kHdf5SmallItemsBound + io::hdf5_dataset_bound(io::field_shape(grid), io::Compression::deflate);
+  write_file_slabs(comm, path, bound, [&](const io::Hdf5Node& root) {
+    io::write_height_map_contents(root, grid, layout.first_row, heights, metadata);
   });
 }
 

@@ -1,5 +1,6 @@
-// The periodic kernel 2/(E*|q|) and its inverse on the transposed spectrum of
-// a slab-distributed grid. The multipliers are computed for this process's
+// The periodic kernel 2/(E*|q|), or a coated half-space's 2 M(q t)/(E1*|q|)
+// (layered_fourier.hpp), and its inverse on the transposed spectrum of a
+// slab-distributed grid. The multipliers are computed for this process's
 // columns kx only; K_ii and the preconditioner's mean mode are computed from
 // the whole grid in the serial classes' order, so they have the serial bits.
 #include "halfspace/mpi/slab_fourier_operator.hpp"
@@ -9,9 +10,11 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <functional>
 #include <utility>
 
 #include "halfspace/error.hpp"
+#include "halfspace/kernels/layered_fourier.hpp"
 #include "halfspace/kernels/periodic_fourier.hpp"
 #include "halfspace/linalg/parallel.hpp"
 #include "halfspace/material.hpp"
@@ -47,6 +50,27 @@ std::vector<double> on_local_spectrum(const Grid& grid, const SlabLayout& layout
   return values;
 }
 
+// The kernel u(q)/p(q) of `elasticity` (m/Pa), 0 at q = 0, as
+// FftInfluenceOperator's periodic kernel.
+std::function<double(double)> kernel_of(const SlabElasticity& elasticity) {
+  if (const auto* material = std::get_if<LayeredMaterial>(&elasticity)) {
+    return [layered = kernels::LayeredKernel(*material)](double q) { return layered.spectrum(q); };
+  }
+  const double e_star = checked_composite_modulus(std::get<double>(elasticity));
+  return [e_star](double q) { return kernels::periodic_kernel_spectrum(q, e_star); };
+}
+
+// The preconditioner's symbol 1/(kernel N) as FourierPreconditioner forms
+// it: E*|q|/(2N) for the homogeneous half-space, 1/(kernel(q) N) coated.
+std::function<double(double)> inverse_kernel_of(const SlabElasticity& elasticity, double cells) {
+  if (const auto* material = std::get_if<LayeredMaterial>(&elasticity)) {
+    return
+        [layered = kernels::LayeredKernel(*material), cells](double q) { return 1.0 / (layered.spectrum(q) * cells); };
+  }
+  const double scale = 0.5 * checked_composite_modulus(std::get<double>(elasticity)) / cells;
+  return [scale](double q) { return q * scale; };
+}
+
 // spectrum *= multiplier, then the inverse transform into `out`.
 void multiply_and_invert(SlabRealFft& fft, const std::vector<double>& multiplier, std::span<double> out) {
   std::span<std::complex<double>> spectrum = fft.spectrum();
@@ -56,20 +80,19 @@ void multiply_and_invert(SlabRealFft& fft, const std::vector<double>& multiplier
 
 }  // namespace
 
-SlabFourierOperator::SlabFourierOperator(const Grid& grid, double e_star, std::shared_ptr<SlabRealFft> transform)
+SlabFourierOperator::SlabFourierOperator(const Grid& grid, const SlabElasticity& elasticity,
+                                         std::shared_ptr<SlabRealFft> transform)
     : grid_(grid), transform_(checked_transform(grid, std::move(transform), "SlabFourierOperator", true)) {
-  e_star = checked_composite_modulus(e_star);
+  const std::function<double(double)> spectrum = kernel_of(elasticity);
   // FFTW's transforms are unnormalised: fold 1/N into the kernel.
   const double inverse_n = 1.0 / static_cast<double>(grid.size());
-  kernel_ = on_local_spectrum(grid, transform_->layout(),
-                              [&](double q) { return kernels::periodic_kernel_spectrum(q, e_star) * inverse_n; });
+  kernel_ = on_local_spectrum(grid, transform_->layout(), [&](double q) { return spectrum(q) * inverse_n; });
   // K_ii = (1/N) sum over the whole spectrum, in FftInfluenceOperator's order.
   double sum = 0.0;
   for (std::size_t r = 0; r < grid.ny(); ++r) {
     const double qy = kernels::dft_wavenumber(r, grid.ny(), grid.dy());
     for (std::size_t c = 0; c < grid.nx(); ++c) {
-      sum +=
-          kernels::periodic_kernel_spectrum(std::hypot(kernels::dft_wavenumber(c, grid.nx(), grid.dx()), qy), e_star);
+      sum += spectrum(std::hypot(kernels::dft_wavenumber(c, grid.nx(), grid.dx()), qy));
     }
   }
   self_ = sum * inverse_n;
@@ -81,11 +104,11 @@ void SlabFourierOperator::apply(std::span<const double> pressure, std::span<doub
   multiply_and_invert(*transform_, kernel_, displacement);
 }
 
-SlabFourierPreconditioner::SlabFourierPreconditioner(const Grid& grid, double e_star,
+SlabFourierPreconditioner::SlabFourierPreconditioner(const Grid& grid, const SlabElasticity& elasticity,
                                                      std::shared_ptr<SlabRealFft> transform)
     : transform_(checked_transform(grid, std::move(transform), "SlabFourierPreconditioner", false)) {
-  const double scale = 0.5 * checked_composite_modulus(e_star) / static_cast<double>(grid.size());
-  symbol_ = on_local_spectrum(grid, transform_->layout(), [&](double q) { return q * scale; });
+  const std::function<double(double)> inverse_kernel = inverse_kernel_of(elasticity, static_cast<double>(grid.size()));
+  symbol_ = on_local_spectrum(grid, transform_->layout(), inverse_kernel);
   // The mean mode (zero above) gets the smallest non-zero |q|, the first
   // harmonic along x or y (hypot(q, 0) = q exactly, as FourierPreconditioner
   // finds it).
@@ -93,7 +116,7 @@ SlabFourierPreconditioner::SlabFourierPreconditioner(const Grid& grid, double e_
   if (layout.first_column == 0 && layout.columns > 0) {
     const double q_min =
         std::min(kernels::dft_wavenumber(1, grid.nx(), grid.dx()), kernels::dft_wavenumber(1, grid.ny(), grid.dy()));
-    symbol_[0] = q_min * scale;
+    symbol_[0] = inverse_kernel(q_min);
   }
 }
 

@@ -184,9 +184,10 @@ for processes in (2, 3):
     failure_case("invalid option", processes, hertz + ["--solver", "pk-fourier", "--tol", "2"], "tol", missing)
     failure_case("not distributed yet", processes, hertz + ["--solver", "lemke"],
                  "type = lemke is not available with more than one process yet", missing)
-    failure_case("free hardness not distributed yet", processes,
-                 free_hertz + ["--solver", "pk-fourier", "--hardness", "1e9", "--force", "5"],
-                 "is not available with more than one process yet", missing)
+    failure_case("free adhesion not distributed yet", processes,
+                 free_hertz + ["--force", "5", "--adhesion", "exponential", "--work-of-adhesion", "0.1",
+                               "--adhesion-range", "1e-8"],
+                 "adhesion = exponential is not available with more than one process yet", missing)
     failure_case("1D not distributed yet", processes,
                  ["--geometry", "cylinder", "--radius", "0.01", "--grid", "64", "--size", "1e-3", "--boundary",
                   "periodic", "--force", "1e3", "--solver", "pk-fourier"] + common,

@@ -14,6 +14,8 @@
 
 namespace halfspace::io {
 
+class Hdf5Node;
+
 struct HeightMapMetadata {
   std::string source;        // what the surface is, e.g. "self-affine (H = 0.8, seed = 1)"
   std::string command_line;  // the command that made it
@@ -32,5 +34,11 @@ struct HeightMapMetadata {
 // the path if the file cannot be written.
 void write_height_map(const std::filesystem::path& path, const Grid& grid, std::span<const double> heights,
                       const HeightMapMetadata& metadata);
+
+// The same contents under `root`, with `rows` the heights of the rows from
+// `first_row` on (all of them for the serial file; a process's slab when
+// several write one file collectively, each calling this alike).
+void write_height_map_contents(const Hdf5Node& root, const Grid& grid, std::size_t first_row,
+                               std::span<const double> rows, const HeightMapMetadata& metadata);
 
 }  // namespace halfspace::io

@@ -10,15 +10,16 @@
 
 #include "halfspace/grid.hpp"
 #include "halfspace/mpi/mpi_communicator.hpp"
+#include "halfspace/mpi/slab_fourier_operator.hpp"
 #include "halfspace/solvers/contact_solver.hpp"
 #include "halfspace/solvers/solver_options.hpp"
 
 namespace halfspace::mpi {
 
 // Fields given to and returned by the solver hold this process's rows
-// (slab_layout), as make_distributed_solver's. `comm` must outlive the
+// (slab_layout), as make_distributed_solver's, whose `elasticity` it takes. `comm` must outlive the
 // solver. Collective; options are checked by make_distributed_solver.
-std::unique_ptr<solvers::ContactSolver> make_distributed_multilevel(const Grid& grid, double e_star,
+std::unique_ptr<solvers::ContactSolver> make_distributed_multilevel(const Grid& grid, const SlabElasticity& elasticity,
                                                                     const solvers::SolverOptions& options,
                                                                     const MpiCommunicator& comm);
 

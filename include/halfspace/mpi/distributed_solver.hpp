@@ -7,7 +7,9 @@
 #include <memory>
 
 #include "halfspace/grid.hpp"
+#include "halfspace/layered_material.hpp"
 #include "halfspace/mpi/mpi_communicator.hpp"
+#include "halfspace/mpi/slab_fourier_operator.hpp"
 #include "halfspace/solvers/contact_solver.hpp"
 #include "halfspace/solvers/solver_options.hpp"
 
@@ -15,7 +17,8 @@ namespace halfspace::mpi {
 
 // Whether make_distributed_solver takes `options` on `grid`: a 2D grid
 // (periodic or free), solver pk, pk-fourier or pk-multilevel (block
-// deflation as the serial solvers take it), no hardness cap, no adhesion.
+// deflation as the serial solvers take it), with or without a hardness cap,
+// no adhesion.
 bool distributable(const Grid& grid, const solvers::SolverOptions& options);
 
 // Throws SolverOptionError naming the option and what to use instead unless
@@ -23,15 +26,23 @@ bool distributable(const Grid& grid, const solvers::SolverOptions& options);
 // with more than one process yet: use solver pk-multilevel, pk-fourier or pk".
 void check_distributable(const Grid& grid, const solvers::SolverOptions& options);
 
+// Throws SolverOptionError naming the boundary unless a coated half-space
+// on `grid` is distributed: periodic grids (the layered kernel is a Fourier
+// symbol); free ones, whose padded operator would need the coated real-space
+// coefficients and the layered remainder on the slabs, not yet.
+void check_distributable(const Grid& grid, const LayeredMaterial& coating);
+
 // Polonsky-Keer (pk: the paper's form; pk-fourier: the projected form with
 // the Fourier preconditioner, with block deflation if asked for;
 // pk-multilevel: distributed_multilevel.hpp, whose distributed levels are
 // made here) on the slab operator of `grid` (periodic: SlabFourierOperator;
-// free: SlabFreeOperator) over `comm`,
+// free: SlabFreeOperator) of the homogeneous or (periodic grids) coated
+// half-space `elasticity`, over `comm`,
 // which must outlive the solver. Fields given to and returned by the solver
 // hold this process's rows (slab_layout). Collective; throws as
-// check_distributable and SolverOptions::validate do.
-std::unique_ptr<solvers::ContactSolver> make_distributed_solver(const Grid& grid, double e_star,
+// check_distributable and SolverOptions::validate do (for a coating, as
+// solvers::make_solver's coated overload).
+std::unique_ptr<solvers::ContactSolver> make_distributed_solver(const Grid& grid, const SlabElasticity& elasticity,
                                                                 const solvers::SolverOptions& options,
                                                                 const MpiCommunicator& comm);
 

@@ -4,10 +4,13 @@
 // no field gathered. Compiled only with HALFSPACE_MPI.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <span>
 
 #include "halfspace/grid.hpp"
+#include "halfspace/io/height_map_writer.hpp"
 #include "halfspace/io/result_writer.hpp"
 #include "halfspace/mpi/mpi_communicator.hpp"
 #include "halfspace/mpi/slab_fft.hpp"
@@ -25,5 +28,20 @@ namespace halfspace::mpi {
 void write_result_slabs(const MpiCommunicator& comm, const std::filesystem::path& path, const Grid& grid,
                         const SlabLayout& layout, std::span<const double> heights, const solvers::SolveResult& result,
                         const io::ResultMetadata& metadata);
+
+// A height map (io::write_height_map's file) written the same way, each
+// process its rows of the 2D `grid`'s heights. Collective.
+void write_height_map_slabs(const MpiCommunicator& comm, const std::filesystem::path& path, const Grid& grid,
+                            const SlabLayout& layout, std::span<const double> heights,
+                            const io::HeightMapMetadata& metadata);
+
+// The plumbing of both: fill(root) makes the same calls on every process
+// (datasets by rows, attributes alike), into one temporary file the first
+// process renames, with write_result_slabs's failures. The first process
+// reserves `reserved_bytes` (an upper bound on the file) before any field
+// is written, so that a full disk or a file-size limit fails on every
+// process alike, not on one inside a collective write. Collective.
+void write_file_slabs(const MpiCommunicator& comm, const std::filesystem::path& path, std::uint64_t reserved_bytes,
+                      const std::function<void(const io::Hdf5Node& root)>& fill);
 
 }  // namespace halfspace::mpi

@@ -1,28 +1,35 @@
 // The periodic half-space's influence operator and the Fourier preconditioner
 // on a grid spread over MPI processes in slabs of rows: the distributed
 // counterparts of FftInfluenceOperator (periodic) and FourierPreconditioner,
-// with the same kernels (Stanley & Kato 1997) applied to the transposed
-// spectrum of SlabRealFft. Fields hold this process's rows only. Compiled
-// only with HALFSPACE_MPI.
+// with the same kernels (Stanley & Kato 1997; a coated half-space's,
+// layered_fourier.hpp) applied to the transposed spectrum of SlabRealFft. Fields hold this process's rows only.
+// Compiled only with HALFSPACE_MPI.
 #pragma once
 
 #include <memory>
+#include <variant>
 #include <vector>
 
 #include "halfspace/grid.hpp"
+#include "halfspace/layered_material.hpp"
 #include "halfspace/mpi/slab_fft.hpp"
 #include "halfspace/operators/influence_operator.hpp"
 #include "halfspace/solvers/preconditioner.hpp"
 
 namespace halfspace::mpi {
 
+// The half-space: homogeneous with composite modulus E* (Pa), or coated (a
+// layer bonded to a substrate), as the serial solvers take either.
+using SlabElasticity = std::variant<double, LayeredMaterial>;
+
 class SlabFourierOperator final : public InfluenceOperator {
  public:
-  // u = K p on the periodic 2D `grid` for composite modulus e_star (Pa),
-  // through `transform` (the grid's, shared with a preconditioner that runs
+  // u = K p on the periodic 2D `grid` for composite modulus E* (Pa) or a
+  // coating (the kernel 2 M(q t)/(E1*|q|)), through `transform` (the grid's, shared with a preconditioner that runs
   // between products). Throws InputError unless the grid is 2D and periodic
-  // and the transform is its own.
-  SlabFourierOperator(const Grid& grid, double e_star, std::shared_ptr<SlabRealFft> transform);
+  // and the transform is its own, or as checked_composite_modulus and
+  // kernels::LayeredKernel for an invalid modulus or coating.
+  SlabFourierOperator(const Grid& grid, const SlabElasticity& elasticity, std::shared_ptr<SlabRealFft> transform);
 
   const Grid& grid() const override { return grid_; }
   std::size_t local_size() const override { return transform_->layout().local_size(); }
@@ -34,24 +41,24 @@ class SlabFourierOperator final : public InfluenceOperator {
  private:
   Grid grid_;
   std::shared_ptr<SlabRealFft> transform_;
-  std::vector<double> kernel_;  // 2/(E*|q|)/N on this process's spectrum columns
+  std::vector<double> kernel_;  // 2/(E*|q|)/N or its coated form, on this process's spectrum columns
   double self_ = 0.0;
 };
 
 class SlabFourierPreconditioner final : public solvers::Preconditioner {
  public:
-  // M^-1 = E*|q|/2, the mean mode at the smallest non-zero |q|, as
-  // FourierPreconditioner; `transform` as for the operator. On a free grid
+  // M^-1 = E*|q|/2 (coated: the inverse of the layered kernel), the mean
+  // mode at the smallest non-zero |q|, as FourierPreconditioner; `transform` as for the operator. On a free grid
   // too (with a transform of its own), as the serial solvers precondition
   // the padded operator with the unpadded grid's symbol. Throws InputError
   // unless the grid is 2D and the transform its own.
-  SlabFourierPreconditioner(const Grid& grid, double e_star, std::shared_ptr<SlabRealFft> transform);
+  SlabFourierPreconditioner(const Grid& grid, const SlabElasticity& elasticity, std::shared_ptr<SlabRealFft> transform);
   // Collective.
   void apply(std::span<const double> in, std::span<double> out) override;
 
  private:
   std::shared_ptr<SlabRealFft> transform_;
-  std::vector<double> symbol_;  // E*|q|/(2N) on this process's spectrum columns
+  std::vector<double> symbol_;  // E*|q|/(2N) or its coated form, on this process's spectrum columns
 };
 
 }  // namespace halfspace::mpi

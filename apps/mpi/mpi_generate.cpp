@@ -1,0 +1,35 @@
+#include "mpi_generate.hpp"
+
+#include <Eigen/Core>
+#include <span>
+
+#include "halfspace/mpi/agreement.hpp"
+#include "halfspace/mpi/parallel_result_writer.hpp"
+#include "halfspace/mpi/slab_fft.hpp"
+#include "halfspace/mpi/slab_self_affine.hpp"
+#include "halfspace/mpi/slab_surface_statistics.hpp"
+#include "mpi_program.hpp"
+
+namespace halfspace::app {
+
+void run_agreed_everywhere(const std::function<void()>& step) {
+  mpi::run_agreed(mpi_world(), step);
+}
+
+surface::SurfaceStatistics generate_on_slabs(const Grid& grid, const surface::SelfAffineSpec& spec,
+                                             io::HeightMapMetadata& metadata, const std::filesystem::path& output) {
+  const mpi::MpiCommunicator& world = mpi_world();
+  const mpi::SlabLayout layout = mpi::slab_layout(grid.nx(), grid.ny(), world);
+  // The spec was resolved by every process alike: the synthesis fails on all
+  // or none.
+  Eigen::ArrayXd heights;
+  mpi::run_agreed(world, [&] { heights = mpi::make_self_affine_slab(grid, spec, world); });
+  const std::span<const double> rows(heights.data(), layout.local_size());
+  const surface::SurfaceStatistics statistics = mpi::slab_surface_statistics(grid, layout, rows, world);
+  metadata.numbers.emplace_back("rms_height", statistics.rms_height);
+  metadata.numbers.emplace_back("rms_slope", statistics.rms_slope);
+  mpi::write_height_map_slabs(world, output, grid, layout, rows, metadata);
+  return statistics;
+}
+
+}  // namespace halfspace::app
