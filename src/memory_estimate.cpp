@@ -186,7 +186,8 @@ double slab_solve_memory_estimate(const Grid& grid, const solvers::SolverOptions
   // (this slab's set and the fetched one).
   double halo_deflation = 0.0;
   if (deflated(grid, settings) && !g.line && rows < static_cast<std::size_t>(g.ny)) {
-    const double halo_rows = std::min(3.0 * static_cast<double>(settings.deflation.block), g.ny - static_cast<double>(rows));
+    const double halo_rows =
+        std::min(3.0 * static_cast<double>(settings.deflation.block), g.ny - static_cast<double>(rows));
     const double held_cells = (static_cast<double>(rows) + halo_rows) * g.nx;
     halo_deflation = (1.0 + 3.0 * kDouble) * halo_rows * g.nx + 2.0 * held_cells;
   }

@@ -9,8 +9,8 @@
 #include <algorithm>
 #include <array>
 #include <climits>
-#include <utility>
 #include <stdexcept>
+#include <utility>
 
 namespace halfspace::mpi {
 

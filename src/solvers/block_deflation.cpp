@@ -274,9 +274,8 @@ std::array<double, 2> BlockDeflation::share_set() {
   const std::span<std::byte> fetched = std::as_writable_bytes(std::span<std::uint8_t>(fetched_));
   comm_->fetch_rows(mine, first_row_, held_first_ * b, fetched.first(first_run * b * nx), nx);
   comm_->fetch_rows(mine, first_row_, 0, fetched.subspan(first_run * b * nx), nx);
-  linalg::for_each_index(set_.size(), [&](std::size_t i) {
-    set_[i] = static_cast<std::uint8_t>((set_[i] & 2U) | fetched_[i]);
-  });
+  linalg::for_each_index(set_.size(),
+                         [&](std::size_t i) { set_[i] = static_cast<std::uint8_t>((set_[i] & 2U) | fetched_[i]); });
   // Changed and set cells counted on this process's rows only.
   const std::size_t base = rows_ > 0 ? held_row(first_row_) * nx : 0;
   std::array<double, 2> totals = linalg::sums<2>(local_size(), [&](std::size_t i) {
@@ -292,8 +291,8 @@ void BlockDeflation::share_owned(std::vector<double>& values, std::size_t per_bl
   const std::size_t row = blocks_x_ * per_block;
   owned_.assign(values.begin() + static_cast<std::ptrdiff_t>(owned_first_ * row),
                 values.begin() + static_cast<std::ptrdiff_t>(owned_end_ * row));
-  comm_->concatenate(std::as_bytes(std::span<const double>(owned_)),
-                     std::as_writable_bytes(std::span<double>(values)), row * sizeof(double));
+  comm_->concatenate(std::as_bytes(std::span<const double>(owned_)), std::as_writable_bytes(std::span<double>(values)),
+                     row * sizeof(double));
 }
 
 double BlockDeflation::pair_sum(const ListedCell* first, const ListedCell* first_end, const ListedCell* second,
@@ -348,9 +347,7 @@ void BlockDeflation::refresh(bool full) {
   // This process's blocks: those of the block rows it owns.
   const auto first_block = static_cast<std::ptrdiff_t>(owned_first_ * blocks_x_);
   const auto end_block = static_cast<std::ptrdiff_t>(owned_end_ * blocks_x_);
-  auto held_block = [this](std::size_t block) {
-    return held_slot(block / blocks_x_) * blocks_x_ + block % blocks_x_;
-  };
+  auto held_block = [this](std::size_t block) { return held_slot(block / blocks_x_) * blocks_x_ + block % blocks_x_; };
 #pragma omp parallel for schedule(dynamic, 16)
   for (std::ptrdiff_t index = first_block; index < end_block; ++index) {
     const auto I = static_cast<std::size_t>(index);

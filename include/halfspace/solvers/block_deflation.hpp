@@ -165,10 +165,12 @@ class BlockDeflation {
   // set_; returns the changed cells and the set's size, summed over the
   // processes.
   std::array<double, 2> share_set();
-  // The held slot of block row `by` (held_block_rows_ if not held), and the
+  // The held slot of block row `by` (held_block_rows_ or more if not held), and the
   // held row of grid row `row`.
   std::size_t held_slot(std::size_t by) const { return (by + blocks_y_ - held_first_) % blocks_y_; }
-  std::size_t held_row(std::size_t row) const { return held_slot(row / options_.block) * options_.block + row % options_.block; }
+  std::size_t held_row(std::size_t row) const {
+    return held_slot(row / options_.block) * options_.block + row % options_.block;
+  }
   // On several processes: every process's entries (`per_block` per block)
   // of the block rows it owns made whole in `values`.
   void share_owned(std::vector<double>& values, std::size_t per_block);
