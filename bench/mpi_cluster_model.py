@@ -17,13 +17,16 @@ gathered and added in rank order) cost latency only.
 The default solver, pk-multilevel, adds its coarse start (distributed while
 a level has at least 64 x 64 cells, about a third of a fine solve's work)
 and, on grids of 2048^2 and more, block deflation: every process holds the
-deflation's contact flags for the whole grid (2 B per cell) and its lists of
-contact cells (24 B per contact cell), and solves the coarse problem of
-N / b^2 blocks itself at each iteration. The last column gives that memory
-per process (b = 32, 10 % of the cells in contact); the coarse problem's
-time is not modelled (at 65536^2 it has 4.2 million blocks, the size of a
-2048^2 grid, on every process: use a larger --deflation-block, or none, at
-that scale until the coarse problem is distributed).
+deflation's contact flags (3 B per cell) and its lists of contact cells
+(24 B per contact cell) on its slab and a halo of three block rows, and
+solves the coarse problem of N / b^2 blocks itself at each iteration: its
+per-block vectors (about 150 B per block) and the rank-order sum of its
+right-hand side, which gathers P values per block (8 P B per block). The
+last column gives that memory per process (b = 32, 10 % of the cells in
+contact); the coarse problem's time is not modelled (at 65536^2 it has 4.2
+million blocks, the size of a 2048^2 grid, on every process: use a larger
+--deflation-block, or none, at that scale until the coarse problem is
+distributed).
 """
 import math
 import sys
@@ -38,10 +41,17 @@ kSecondsPerCellLog = 371.3 / 75 / (4096**2 * math.log2(4096**2))
 # than the others), of which 34 MiB is the program itself (a 256^2 run).
 kProgramBytes = 34 * 2**20
 kSlabBytesPerCell = (187 - 34) * 2**20 / (2048**2 / 2)
-# Block deflation's whole-grid part on every process (block_deflation.cpp):
-# contact flags twice (1 B each per cell) and three lists of 8-byte cells
-# over the contact set, taken as 10 % of the cells.
-kDeflationBytesPerCell = 2.0 + 3 * 8 * 0.10
+# Block deflation on a slab (block_deflation.cpp): contact flags three times
+# (this slab's, the fetched and the built, 1 B each per cell) and three
+# lists of 8-byte cells over the contact set, taken as 10 % of the cells, on
+# the slab and a halo of three block rows; per block of the whole grid, on
+# every process, the coarse problem's vectors (near field 9 doubles, counts,
+# CG vectors, far-field transform: about 150 B) and the rank-order sum of
+# its right-hand side (MpiCommunicator::sum gathers P doubles per block).
+kDeflationBytesPerCell = 3.0 + 3 * 8 * 0.10
+kDeflationBlock = 32
+kDeflationHaloBlockRows = 3
+kCoarseBytesPerBlock = 150.0
 # Iterations of the measured rough surfaces (H = 0.8, rms slope 0.1, 5e7 Pa):
 # 59 at 2048^2 and 75 at 4096^2; taken to keep growing by that factor per
 # doubling of n.
@@ -77,7 +87,10 @@ def memory(n, processes):
     """A process's memory with pk-fourier, and with block deflation added."""
     cells = n * n
     slab = kProgramBytes + kSlabBytesPerCell * cells / processes
-    return slab, slab + kDeflationBytesPerCell * cells
+    blocks = cells / kDeflationBlock**2
+    held_cells = cells / processes + kDeflationHaloBlockRows * kDeflationBlock * n
+    deflation = kDeflationBytesPerCell * held_cells + (kCoarseBytesPerBlock + 8.0 * processes) * blocks
+    return slab, slab + deflation
 
 
 def table():

@@ -179,12 +179,20 @@ double slab_solve_memory_estimate(const Grid& grid, const solvers::SolverOptions
   // whole (transposed) half spectrum, not folded as the serial EvenSymbol:
   // counted on top of the folded ones solver_peak has.
   const double unfolded_symbols = 2.0 * kDouble * (std::floor(g.nx / 2.0) + 1.0) * g.ny;
-  // Block deflation keeps its contact flags (as gathered and as its own)
-  // and its lists of contact cells for the whole grid on every process
-  // (block_deflation.cpp): counted whole, not as a share.
-  const double whole_deflation = deflated(grid, settings) ? (2.0 + 3.0 * kDouble) * g.cells() * (1.0 - share) : 0.0;
+  // Block deflation on a slab keeps its contact flags and cell lists on its
+  // held rows (block_deflation.cpp): its own, counted in the share, and a
+  // halo of at most three block rows more (one each side, and the rest of
+  // a block row split with a neighbour), with two more flags per held cell
+  // (this slab's set and the fetched one).
+  double halo_deflation = 0.0;
+  if (deflated(grid, settings) && !g.line && rows < static_cast<std::size_t>(g.ny)) {
+    const double halo_rows =
+        std::min(3.0 * static_cast<double>(settings.deflation.block), g.ny - static_cast<double>(rows));
+    const double held_cells = (static_cast<double>(rows) + halo_rows) * g.nx;
+    halo_deflation = (1.0 + 3.0 * kDouble) * halo_rows * g.nx + 2.0 * held_cells;
+  }
   return kProgramBytes + share * (2.0 * kDouble * g.cells() + solver_peak(grid, settings) + unfolded_symbols) +
-         whole_deflation;
+         halo_deflation;
 }
 
 double generate_memory_estimate(const Grid& grid) {

@@ -61,25 +61,33 @@ TEST(MemoryEstimateTest, LargestGridsGiveFiniteEstimates) {
   EXPECT_GT(generate_memory_estimate(grid), 24.0 * std::pow(2.0, 57));
 }
 
-TEST(MemoryEstimateTest, SlabsShareTheFieldsButNotTheDeflationsWholeGridFlags) {
+TEST(MemoryEstimateTest, SlabsShareTheFieldsAndTheDeflationsFlagsUpToAHalo) {
   // 2048^2 on two processes of 1024 rows each. Without deflation a slab
   // needs about half the one-process estimate (the program's own bytes
-  // aside); with deflation every process also holds the whole grid's contact
-  // flags and cell lists (2 + 3 x 8 B per cell), which must not be halved.
+  // aside); with deflation (32-cell blocks) every process holds its share
+  // of the contact flags and cell lists, plus a halo of at most three block
+  // rows (1 + 3 x 8 B per cell) and two more flags per held cell.
   const Grid grid = Grid::plane(2048, 2048, 1e-6, 1e-6, Boundary::periodic);
   solvers::SolverOptions plain;
   plain.deflation.mode = solvers::DeflationOptions::Mode::off;
   solvers::SolverOptions deflated;
   deflated.deflation.mode = solvers::DeflationOptions::Mode::on;
-  const double cells = static_cast<double>(grid.size());
+  ASSERT_EQ(deflated.deflation.block, 32U);
   const double whole = slab_solve_memory_estimate(grid, plain, 2048);
   const double half = slab_solve_memory_estimate(grid, plain, 1024);
   EXPECT_GT(half, 0.5 * whole);
   EXPECT_LT(half, 0.6 * whole);
-  const double half_deflated = slab_solve_memory_estimate(grid, deflated, 1024);
-  const double whole_deflated = slab_solve_memory_estimate(grid, deflated, 2048);
-  // The deflation's share of a slab plus its whole-grid part.
-  EXPECT_GE(half_deflated - half, 0.5 * (whole_deflated - whole) + 0.5 * 26.0 * cells - 1.0);
+  // The deflation's part of a slab of `rows` rows.
+  auto deflation = [&](std::size_t rows) {
+    return slab_solve_memory_estimate(grid, deflated, rows) - slab_solve_memory_estimate(grid, plain, rows);
+  };
+  const double halo = 25.0 * 3.0 * 32.0 * 2048.0 + 2.0 * (1024.0 + 3.0 * 32.0) * 2048.0;
+  EXPECT_GE(deflation(1024), 0.5 * deflation(2048) + halo - 1.0);
+  EXPECT_LE(deflation(1024), 0.5 * deflation(2048) + halo + 1.0);
+  // On eight processes a slab's deflation is about a sixth of the whole
+  // grid's (whole-grid flags and lists on every process would make it four
+  // fifths).
+  EXPECT_LT(deflation(256), 0.2 * deflation(2048));
 }
 
 TEST(MemoryEstimateTest, AvailableMemoryIsMemAvailableWithoutACgroupLimit) {

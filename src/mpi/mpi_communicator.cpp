@@ -6,8 +6,11 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <array>
 #include <climits>
 #include <stdexcept>
+#include <utility>
 
 namespace halfspace::mpi {
 
@@ -68,6 +71,48 @@ void MpiCommunicator::concatenate(std::span<const std::byte> mine, std::span<std
   const int code = MPI_Allgatherv(mine.data(), units, type, all.data(), counts.data(), offsets.data(), type, comm_);
   MPI_Type_free(&type);
   check(code, "MPI_Allgatherv");
+}
+
+void MpiCommunicator::fetch_rows(std::span<const std::byte> mine, std::size_t mine_first, std::size_t first,
+                                 std::span<std::byte> wanted, std::size_t unit) const {
+  if (unit == 0 || mine.size() % unit != 0 || wanted.size() % unit != 0) {
+    throw std::runtime_error("MpiCommunicator::fetch_rows: sizes are not whole units");
+  }
+  const auto size = static_cast<std::size_t>(size_);
+  const auto me = static_cast<std::size_t>(rank_);
+  // (held first, held rows, wanted first, wanted rows) of every process.
+  const std::array<unsigned long long, 4> ranges = {mine_first, mine.size() / unit, first, wanted.size() / unit};
+  std::vector<unsigned long long> every(4 * size);
+  check(MPI_Allgather(ranges.data(), 4, MPI_UNSIGNED_LONG_LONG, every.data(), 4, MPI_UNSIGNED_LONG_LONG, comm_),
+        "MPI_Allgather");
+  auto as_int = [](unsigned long long value) {
+    if (value > static_cast<unsigned long long>(INT_MAX)) {
+      throw std::runtime_error("MpiCommunicator::fetch_rows: more units than MPI's int counts");
+    }
+    return static_cast<int>(value);
+  };
+  // The overlap of rows [a, a + m) and [b, b + n): (first, count).
+  auto overlap = [](unsigned long long a, unsigned long long m, unsigned long long b, unsigned long long n) {
+    const unsigned long long begin = std::max(a, b);
+    const unsigned long long end = std::min(a + m, b + n);
+    return std::pair<unsigned long long, unsigned long long>{begin, end > begin ? end - begin : 0};
+  };
+  std::vector<int> send_counts(size), send_offsets(size), receive_counts(size), receive_offsets(size);
+  for (std::size_t p = 0; p < size; ++p) {
+    const auto sent = overlap(every[4 * me], every[4 * me + 1], every[4 * p + 2], every[4 * p + 3]);
+    send_counts[p] = as_int(sent.second);
+    send_offsets[p] = as_int(sent.second > 0 ? sent.first - every[4 * me] : 0);
+    const auto received = overlap(every[4 * me + 2], every[4 * me + 3], every[4 * p], every[4 * p + 1]);
+    receive_counts[p] = as_int(received.second);
+    receive_offsets[p] = as_int(received.second > 0 ? received.first - every[4 * me + 2] : 0);
+  }
+  MPI_Datatype type = MPI_DATATYPE_NULL;
+  check(MPI_Type_contiguous(as_int(unit), MPI_BYTE, &type), "MPI_Type_contiguous");
+  check(MPI_Type_commit(&type), "MPI_Type_commit");
+  const int code = MPI_Alltoallv(mine.data(), send_counts.data(), send_offsets.data(), type, wanted.data(),
+                                 receive_counts.data(), receive_offsets.data(), type, comm_);
+  MPI_Type_free(&type);
+  check(code, "MPI_Alltoallv");
 }
 
 }  // namespace halfspace::mpi

@@ -102,22 +102,42 @@ BlockDeflation::BlockDeflation(const Grid& grid, BlockDeflationOptions options, 
     throw InputError(fmt::format("block deflation: rows {} to {} of the {} grid do not suit {} process(es)", first_row_,
                                  first_row_ + rows_, grid_.shape_string(), comm_->size()));
   }
-  if (comm_->size() > 1) {
-    local_set_.assign(local_size(), 0);
-    whole_set_.assign(grid_.size(), 0);
-  }
   require_covers(grid_, options_.block);
   const std::size_t b = options_.block;
   blocks_x_ = grid_.nx() / b;
   blocks_y_ = grid_.ny() / b;
   const std::size_t m = coarse_size();
-  set_.assign(grid_.size(), 0);
+  // Owned block rows: those whose first row is held here. Held: one more
+  // each side, which also covers the block rows of this slab's own rows.
+  owned_first_ = (first_row_ + b - 1) / b;
+  owned_end_ = (first_row_ + rows_ + b - 1) / b;
+  if (rows_ > 0) {
+    auto low = static_cast<std::ptrdiff_t>(owned_first_) - 1;
+    auto high = static_cast<std::ptrdiff_t>(owned_end_) + 1;
+    const auto count = static_cast<std::ptrdiff_t>(blocks_y_);
+    if (!grid_.periodic()) {
+      low = std::max<std::ptrdiff_t>(low, 0);
+      high = std::min(high, count);
+    } else if (high - low >= count) {
+      low = 0;
+      high = count;
+    }
+    held_first_ = static_cast<std::size_t>((low + count) % count);
+    held_block_rows_ = static_cast<std::size_t>(high - low);
+  }
+  const std::size_t held_cells = held_block_rows_ * b * grid_.nx();
+  if (comm_->size() > 1) {
+    local_set_.assign(local_size(), 0);
+    fetched_.assign(held_cells, 0);
+  }
+  set_.assign(held_cells, 0);
   counts_.assign(m, 0.0);
   block_counts_.assign(m, 0.0);
   near_.assign(9 * m, 0.0);
-  cell_start_.assign(m + 1, 0);
-  previous_start_.assign(m + 1, 0);
-  changed_start_.assign(m + 1, 0);
+  const std::size_t held_blocks = held_block_rows_ * blocks_x_;
+  cell_start_.assign(held_blocks + 1, 0);
+  previous_start_.assign(held_blocks + 1, 0);
+  changed_start_.assign(held_blocks + 1, 0);
   // A free grid's far field is a linear convolution: zero-padded to twice
   // the blocks per axis.
   const std::size_t pad = grid_.periodic() ? 1 : 2;
@@ -191,43 +211,44 @@ void BlockDeflation::set_kernel(std::span<const double> local_response) {
 void BlockDeflation::list_cells() {
   const std::size_t b = options_.block;
   const std::size_t nx = grid_.nx();
-  const std::size_t m = coarse_size();
+  const std::size_t held = held_block_rows_ * blocks_x_;
   const auto side = static_cast<std::uint32_t>(4 * b - 1);
   std::swap(cells_, previous_cells_);
   std::swap(cell_start_, previous_start_);
-  cell_start_.resize(m + 1);
-  changed_start_.resize(m + 1);
-  // Count, then fill: each block's cells in row-major order.
-  linalg::for_each_row(blocks_y_, b * nx, [&](std::size_t by) {
+  cell_start_.resize(held + 1);
+  changed_start_.resize(held + 1);
+  // Count, then fill: each held block's cells in row-major order.
+  linalg::for_each_row(held_block_rows_, b * nx, [&](std::size_t slot) {
     for (std::size_t bx = 0; bx < blocks_x_; ++bx) {
       std::size_t in_set = 0;
       std::size_t changed = 0;
       for (std::size_t r = 0; r < b; ++r) {
-        const std::uint8_t* cell = set_.data() + (by * b + r) * nx + bx * b;
+        const std::uint8_t* cell = set_.data() + (slot * b + r) * nx + bx * b;
         for (std::size_t c = 0; c < b; ++c) {
           in_set += cell[c] & 1U;
           changed += (cell[c] & 1U) != (cell[c] >> 1) ? 1 : 0;
         }
       }
-      cell_start_[by * blocks_x_ + bx + 1] = in_set;
-      changed_start_[by * blocks_x_ + bx + 1] = changed;
+      cell_start_[slot * blocks_x_ + bx + 1] = in_set;
+      changed_start_[slot * blocks_x_ + bx + 1] = changed;
     }
   });
   cell_start_[0] = 0;
   changed_start_[0] = 0;
-  for (std::size_t k = 0; k < m; ++k) {
+  for (std::size_t k = 0; k < held; ++k) {
     cell_start_[k + 1] += cell_start_[k];
     changed_start_[k + 1] += changed_start_[k];
   }
-  cells_.resize(cell_start_[m]);
-  changed_cells_.resize(changed_start_[m]);
-  linalg::for_each_row(blocks_y_, b * nx, [&](std::size_t by) {
+  cells_.resize(cell_start_[held]);
+  changed_cells_.resize(changed_start_[held]);
+  linalg::for_each_row(held_block_rows_, b * nx, [&](std::size_t slot) {
+    const std::size_t by = (held_first_ + slot) % blocks_y_;
     for (std::size_t bx = 0; bx < blocks_x_; ++bx) {
-      const std::size_t block = by * blocks_x_ + bx;
+      const std::size_t block = slot * blocks_x_ + bx;
       std::size_t next = cell_start_[block];
       std::size_t next_changed = changed_start_[block];
       for (std::size_t r = 0; r < b; ++r) {
-        const std::size_t begin = (by * b + r) * nx + bx * b;
+        const std::size_t begin = (slot * b + r) * nx + bx * b;
         std::uint8_t* cell = set_.data() + begin;
         for (std::size_t c = 0; c < b; ++c) {
           const std::uint8_t now = cell[c] & 1U;
@@ -237,9 +258,41 @@ void BlockDeflation::list_cells() {
           cell[c] = static_cast<std::uint8_t>((now << 1) | now);
         }
       }
-      counts_[block] = static_cast<double>(cell_start_[block + 1] - cell_start_[block]);
+      counts_[by * blocks_x_ + bx] = static_cast<double>(cell_start_[block + 1] - cell_start_[block]);
     }
   });
+  share_owned(counts_, 1);
+}
+
+std::array<double, 2> BlockDeflation::share_set() {
+  // The held rows in at most two runs of grid rows: up to the period, then
+  // on from row 0.
+  const std::size_t b = options_.block;
+  const std::size_t nx = grid_.nx();
+  const std::size_t first_run = std::min(held_block_rows_, blocks_y_ - held_first_);
+  const std::span<const std::byte> mine = std::as_bytes(std::span<const std::uint8_t>(local_set_));
+  const std::span<std::byte> fetched = std::as_writable_bytes(std::span<std::uint8_t>(fetched_));
+  comm_->fetch_rows(mine, first_row_, held_first_ * b, fetched.first(first_run * b * nx), nx);
+  comm_->fetch_rows(mine, first_row_, 0, fetched.subspan(first_run * b * nx), nx);
+  linalg::for_each_index(set_.size(),
+                         [&](std::size_t i) { set_[i] = static_cast<std::uint8_t>((set_[i] & 2U) | fetched_[i]); });
+  // Changed and set cells counted on this process's rows only.
+  const std::size_t base = rows_ > 0 ? held_row(first_row_) * nx : 0;
+  std::array<double, 2> totals = linalg::sums<2>(local_size(), [&](std::size_t i) {
+    const std::uint8_t cell = set_[base + i];
+    return std::array<double, 2>{(cell & 1U) != (cell >> 1) ? 1.0 : 0.0, static_cast<double>(cell & 1U)};
+  });
+  comm_->sum(totals);
+  return totals;
+}
+
+void BlockDeflation::share_owned(std::vector<double>& values, std::size_t per_block) {
+  if (comm_->size() == 1) return;
+  const std::size_t row = blocks_x_ * per_block;
+  owned_.assign(values.begin() + static_cast<std::ptrdiff_t>(owned_first_ * row),
+                values.begin() + static_cast<std::ptrdiff_t>(owned_end_ * row));
+  comm_->concatenate(std::as_bytes(std::span<const double>(owned_)), std::as_writable_bytes(std::span<double>(values)),
+                     row * sizeof(double));
 }
 
 double BlockDeflation::pair_sum(const ListedCell* first, const ListedCell* first_end, const ListedCell* second,
@@ -291,31 +344,38 @@ void BlockDeflation::refresh(bool full) {
   const ListedCell* cells = cells_.data();
   const ListedCell* previous = previous_cells_.data();
   const ListedCell* changes = changed_cells_.data();
-  const auto blocks = static_cast<std::ptrdiff_t>(coarse_size());
+  // This process's blocks: those of the block rows it owns.
+  const auto first_block = static_cast<std::ptrdiff_t>(owned_first_ * blocks_x_);
+  const auto end_block = static_cast<std::ptrdiff_t>(owned_end_ * blocks_x_);
+  auto held_block = [this](std::size_t block) { return held_slot(block / blocks_x_) * blocks_x_ + block % blocks_x_; };
 #pragma omp parallel for schedule(dynamic, 16)
-  for (std::ptrdiff_t index = 0; index < blocks; ++index) {
+  for (std::ptrdiff_t index = first_block; index < end_block; ++index) {
     const auto I = static_cast<std::size_t>(index);
+    const std::size_t i = held_block(I);
     for (int dy = -1; dy <= 1; ++dy) {
       for (int dx = -1; dx <= 1; ++dx) {
         std::size_t J = 0;
         if (!neighbour_block(I, dy, dx, J)) continue;  // beyond a free grid's edge: the entry stays zero
+        const std::size_t j = held_block(J);
         double& entry = near_[I * 9 + neighbour(dy, dx)];
-        const ListedCell* j_begin = cells + cell_start_[J];
-        const ListedCell* j_end = cells + cell_start_[J + 1];
+        const ListedCell* j_begin = cells + cell_start_[j];
+        const ListedCell* j_end = cells + cell_start_[j + 1];
         if (full) {
-          entry = pair_sum(cells + cell_start_[I], cells + cell_start_[I + 1], j_begin, j_end, dy, dx);
+          entry = pair_sum(cells + cell_start_[i], cells + cell_start_[i + 1], j_begin, j_end, dy, dx);
           continue;
         }
         const double delta =
-            pair_sum(changes + changed_start_[I], changes + changed_start_[I + 1], j_begin, j_end, dy, dx) +
-            pair_sum(previous + previous_start_[I], previous + previous_start_[I + 1], changes + changed_start_[J],
-                     changes + changed_start_[J + 1], dy, dx);
+            pair_sum(changes + changed_start_[i], changes + changed_start_[i + 1], j_begin, j_end, dy, dx) +
+            pair_sum(previous + previous_start_[i], previous + previous_start_[i + 1], changes + changed_start_[j],
+                     changes + changed_start_[j + 1], dy, dx);
         // An emptied block's entries are exactly zero, not the rounding
         // left by subtracting its sums.
         entry = counts_[I] > 0.0 && counts_[J] > 0.0 ? entry + delta : 0.0;
       }
     }
   }
+  // The owners' entries are copied, not summed: the same bits as one process.
+  share_owned(near_, 9);
   built_ = true;
   ++(full ? stats_.rebuilds : stats_.updates);
 }
@@ -420,7 +480,7 @@ void BlockDeflation::restrict_to_blocks(std::span<const double> field) {
     for (std::size_t bx = 0; bx < blocks_x_; ++bx) {
       double total = 0.0;
       for (std::size_t row = first; row < last; ++row) {
-        const std::uint8_t* set = set_.data() + row * nx + bx * b;
+        const std::uint8_t* set = set_.data() + held_row(row) * nx + bx * b;
         const double* values = field.data() + (row - first_row_) * nx + bx * b;
         for (std::size_t c = 0; c < b; ++c) total += (set[c] & 1U) ? values[c] : 0.0;
       }
@@ -438,7 +498,7 @@ void BlockDeflation::prolong(const std::vector<double>& y, std::span<double> z, 
     const std::size_t by = row / b;
     for (std::size_t bx = 0; bx < blocks_x_; ++bx) {
       const double value = y[by * blocks_x_ + bx];
-      const std::uint8_t* set = set_.data() + row * nx + bx * b;
+      const std::uint8_t* set = set_.data() + held_row(row) * nx + bx * b;
       double* values = z.data() + local_row * nx + bx * b;
       if (add) {
         for (std::size_t c = 0; c < b; ++c) values[c] += (set[c] & 1U) ? value : 0.0;

@@ -215,6 +215,10 @@ else:
     solve_case("rough-pk-fourier-deflation", deflation_case + ["--solver", "pk-fourier"], deflated=True)
     solve_case("free-rough-multilevel-deflation", [a if a != "periodic" else "free" for a in deflation_case],
                (2, 3), deflated=True)
+    # Slabs thinner than a block (12 processes of about 30 rows): processes
+    # that own no block row (none starts in their slab) hold only the halo
+    # of the block row their rows lie in.
+    solve_case("thin-slabs-pk-fourier-deflation", deflation_case + ["--solver", "pk-fourier"], (12,), deflated=True)
 
 missing = os.path.join(work_dir, "failure.h5")
 for processes in (2, 3):

@@ -26,6 +26,12 @@ class Communicator {
   // distributed field's slabs made whole); the sizes are multiples of
   // `unit` bytes (a row), and `all` holds their sum.
   virtual void concatenate(std::span<const std::byte> mine, std::span<std::byte> all, std::size_t unit) const = 0;
+  // Rows of a field held in slabs of `unit`-byte rows, in rank order (this
+  // process's slab `mine` starting at row `mine_first`): the rows from
+  // `first` on that fill `wanted`, fetched from the processes that hold
+  // them. Each process may want a different range (or none); collective.
+  virtual void fetch_rows(std::span<const std::byte> mine, std::size_t mine_first, std::size_t first,
+                          std::span<std::byte> wanted, std::size_t unit) const = 0;
 };
 
 // One process holding the whole field: every reduction is the identity.
@@ -38,6 +44,10 @@ class SerialCommunicator final : public Communicator {
   double min(double local) const override { return local; }
   void concatenate(std::span<const std::byte> mine, std::span<std::byte> all, std::size_t /*unit*/) const override {
     if (!mine.empty()) std::memcpy(all.data(), mine.data(), mine.size());
+  }
+  void fetch_rows(std::span<const std::byte> mine, std::size_t mine_first, std::size_t first,
+                  std::span<std::byte> wanted, std::size_t unit) const override {
+    if (!wanted.empty()) std::memcpy(wanted.data(), mine.data() + (first - mine_first) * unit, wanted.size());
   }
 };
 

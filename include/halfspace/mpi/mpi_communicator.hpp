@@ -28,6 +28,10 @@ class MpiCommunicator final : public linalg::Communicator {
   // MPI_Allgatherv of whole units (an MPI datatype of `unit` bytes, so that
   // the counts stay within MPI's int).
   void concatenate(std::span<const std::byte> mine, std::span<std::byte> all, std::size_t unit) const override;
+  // Every process's held and wanted ranges gathered, then one MPI_Alltoallv
+  // of whole units (as row_exchange.cpp does for fields of doubles).
+  void fetch_rows(std::span<const std::byte> mine, std::size_t mine_first, std::size_t first,
+                  std::span<std::byte> wanted, std::size_t unit) const override;
 
  private:
   MPI_Comm comm_;

@@ -24,6 +24,8 @@
 // deflation").
 #pragma once
 
+#include <algorithm>
+#include <array>
 #include <complex>
 #include <cstddef>
 #include <cstdint>
@@ -61,9 +63,12 @@ class BlockDeflation {
   // On a grid spread over the processes of `comm` in slabs of rows (which
   // must outlive this object): the fields given to and returned by the
   // correction, and the set, hold this process's `rows` rows from
-  // `first_row` on, and every process keeps the whole set and solves the
-  // (small) coarse problem redundantly, its right-hand sides summed over
-  // the processes. Throws InputError unless covers(grid, options.block).
+  // `first_row` on. Each process keeps the set and its cells only on the
+  // block rows whose first row it holds and one block row each side (the
+  // neighbours of the near field), computes those blocks' coarse entries,
+  // and shares them; every process then solves the (small) coarse problem
+  // redundantly, its right-hand sides summed over the processes. Throws
+  // InputError unless covers(grid, options.block).
   BlockDeflation(const Grid& grid, BlockDeflationOptions options, std::size_t first_row, std::size_t rows,
                  const linalg::Communicator& comm);
   ~BlockDeflation();
@@ -90,11 +95,20 @@ class BlockDeflation {
   template <class InSet>
   void update(InSet&& in_set) {
     if (comm_->size() > 1) {
-      gather_set(in_set);
-      update_whole([this](std::size_t i) { return whole_set_[i] != 0; });
+      linalg::for_each_index(local_size(), [&](std::size_t i) { local_set_[i] = in_set(i) ? 1 : 0; });
+      const auto [changed, size] = share_set();
+      if (built_ && changed == 0.0) return;
+      refresh(changed > 0.5 * size);
       return;
     }
-    update_whole(in_set);
+    const auto [changed, size] = linalg::sums<2>(grid_.size(), [&](std::size_t i) {
+      const std::uint8_t now = in_set(i) ? 1 : 0;
+      const std::uint8_t built = set_[i] >> 1;
+      set_[i] = static_cast<std::uint8_t>((built << 1) | now);
+      return std::array<double, 2>{now != built ? 1.0 : 0.0, static_cast<double>(now)};
+    });
+    if (built_ && changed == 0.0) return;
+    refresh(changed > 0.5 * size);
   }
   // Whether A is built for the last update's set.
   bool ready() const { return built_; }
@@ -105,11 +119,28 @@ class BlockDeflation {
   // Collective on several processes.
   template <class InSet>
   bool decline_if_dense(InSet&& in_set) {
-    if (comm_->size() > 1) {
-      gather_set(in_set);
-      return decline_if_dense_whole([this](std::size_t i) { return whole_set_[i] != 0; });
-    }
-    return decline_if_dense_whole(in_set);
+    const std::size_t b = options_.block;
+    const std::size_t nx = grid_.nx();
+    // Each process counts its rows of each block; the counts are whole
+    // numbers, so their sum over the processes is exact.
+    std::fill(block_counts_.begin(), block_counts_.end(), 0.0);
+    const std::size_t end_row = first_row_ + rows_;
+    linalg::for_each_row(blocks_y_, b * nx, [&](std::size_t by) {
+      const std::size_t first = std::max(by * b, first_row_);
+      const std::size_t last = std::min((by + 1) * b, end_row);
+      for (std::size_t bx = 0; bx < blocks_x_; ++bx) {
+        std::size_t in = 0;
+        for (std::size_t row = first; row < last; ++row) {
+          const std::size_t begin = (row - first_row_) * nx + bx * b;
+          for (std::size_t i = begin; i < begin + b; ++i) in += in_set(i) ? 1 : 0;
+        }
+        block_counts_[by * blocks_x_ + bx] = static_cast<double>(in);
+      }
+    });
+    comm_->sum(block_counts_);
+    if (!too_many_pair_terms(block_counts_)) return false;
+    ++stats_.declined;
+    return true;
   }
 
   // The balancing form, z = Q r + (I - Q K) M^-1 (I - K Q) r with Q = Z A^-1
@@ -129,43 +160,20 @@ class BlockDeflation {
   std::size_t coarse_size() const { return blocks_x_ * blocks_y_; }
 
  private:
-  // The set given on this process's rows, made whole in whole_set_.
-  template <class InSet>
-  void gather_set(InSet&& in_set) {
-    linalg::for_each_index(local_size(), [&](std::size_t i) { local_set_[i] = in_set(i) ? 1 : 0; });
-    comm_->concatenate(std::as_bytes(std::span<const std::uint8_t>(local_set_)),
-                       std::as_writable_bytes(std::span<std::uint8_t>(whole_set_)), grid_.nx());
+  // On several processes: the set on the held rows from local_set_ (this
+  // process's rows) and the processes holding the halo, into bit 0 of
+  // set_; returns the changed cells and the set's size, summed over the
+  // processes.
+  std::array<double, 2> share_set();
+  // The held slot of block row `by` (held_block_rows_ or more if not held), and the
+  // held row of grid row `row`.
+  std::size_t held_slot(std::size_t by) const { return (by + blocks_y_ - held_first_) % blocks_y_; }
+  std::size_t held_row(std::size_t row) const {
+    return held_slot(row / options_.block) * options_.block + row % options_.block;
   }
-  // update and decline_if_dense on the whole grid's set.
-  template <class InSet>
-  void update_whole(InSet&& in_set) {
-    const auto [changed, size] = linalg::sums<2>(grid_.size(), [&](std::size_t i) {
-      const std::uint8_t now = in_set(i) ? 1 : 0;
-      const std::uint8_t built = set_[i] >> 1;
-      set_[i] = static_cast<std::uint8_t>((built << 1) | now);
-      return std::array<double, 2>{now != built ? 1.0 : 0.0, static_cast<double>(now)};
-    });
-    if (built_ && changed == 0.0) return;
-    refresh(changed > 0.5 * size);
-  }
-  template <class InSet>
-  bool decline_if_dense_whole(InSet&& in_set) {
-    const std::size_t b = options_.block;
-    const std::size_t nx = grid_.nx();
-    linalg::for_each_row(blocks_y_, b * nx, [&](std::size_t by) {
-      for (std::size_t bx = 0; bx < blocks_x_; ++bx) {
-        std::size_t in = 0;
-        for (std::size_t r = 0; r < b; ++r) {
-          const std::size_t begin = (by * b + r) * nx + bx * b;
-          for (std::size_t i = begin; i < begin + b; ++i) in += in_set(i) ? 1 : 0;
-        }
-        block_counts_[by * blocks_x_ + bx] = static_cast<double>(in);
-      }
-    });
-    if (!too_many_pair_terms(block_counts_)) return false;
-    ++stats_.declined;
-    return true;
-  }
+  // On several processes: every process's entries (`per_block` per block)
+  // of the block rows it owns made whole in `values`.
+  void share_owned(std::vector<double>& values, std::size_t per_block);
   // J = the block at (dy, dx) in {-1, 0, 1}^2 from block I: across the
   // period on a periodic grid; false beyond the edge of a free one.
   bool neighbour_block(std::size_t I, int dy, int dx, std::size_t& J) const;
@@ -197,13 +205,20 @@ class BlockDeflation {
   std::size_t first_row_ = 0;  // this process's rows of the fields
   std::size_t rows_ = 0;
   const linalg::Communicator* comm_;
-  // On several processes: this process's rows of the set and the whole set
-  // (empty on one process).
-  std::vector<std::uint8_t> local_set_, whole_set_;
+  // On several processes: this process's rows of the set, and the held rows
+  // fetched (empty on one process).
+  std::vector<std::uint8_t> local_set_, fetched_;
   std::size_t blocks_x_;
   std::size_t blocks_y_;
+  // The block rows whose near-field entries this process computes (those
+  // whose first row it holds), and the block rows it holds the set on:
+  // those and one more each side (a block's 3 x 3 neighbourhood), from
+  // held_first_ on across the period; every block row on one process.
+  std::size_t owned_first_ = 0, owned_end_ = 0;
+  std::size_t held_first_ = 0, held_block_rows_ = 0;
   bool built_ = false;
-  // Per cell: bit 0 in the current coarse set, bit 1 in the set A was built on.
+  // Per held cell: bit 0 in the current coarse set, bit 1 in the set A was
+  // built on.
   std::vector<std::uint8_t> set_;
   // Kernel near field k(dy, dx) for |dx|, |dy| < 2b, row-major over dy.
   std::vector<double> near_kernel_;
@@ -212,7 +227,8 @@ class BlockDeflation {
   std::vector<double> counts_;
   std::vector<double> block_counts_;  // decline_if_dense's counts
   std::vector<double> near_;
-  // Per block, the cells of the set A was built on (current, previous) and
+  std::vector<double> owned_;  // this process's rows of counts_ or near_, to share
+  // Per held block (row-major from held_first_), the cells of the set A was built on (current, previous) and
   // the cells that changed between the two.
   std::vector<std::size_t> cell_start_, previous_start_, changed_start_;
   std::vector<ListedCell> cells_, previous_cells_, changed_cells_;
