@@ -8,12 +8,14 @@
 #include <hdf5.h>
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
 
 #include "../io/hdf5_handle.hpp"
 #include "../io/hdf5_writing.hpp"
+#include "../io/sweep_writing.hpp"
 #include "halfspace/error.hpp"
 #include "halfspace/io/hdf5_output.hpp"
 #include "halfspace/io/output_file.hpp"
@@ -46,33 +48,25 @@ io::detail::File create_collectively(const MpiCommunicator& comm, const std::fil
   return file;
 }
 
-void write_into(io::detail::File& file, const MpiCommunicator& comm, const std::filesystem::path& path,
-                const std::string& temporary, const Grid& grid, const SlabLayout& layout,
-                std::span<const double> heights, const solvers::SolveResult& result,
-                const io::ResultMetadata& metadata) {
+void write_into(io::detail::File& file, const std::filesystem::path& path, const std::string& temporary,
+                const std::function<void(const io::Hdf5Node& root)>& fill) {
   const io::detail::ErrorPrintingOff quiet;
   const io::detail::PropertyList transfer(H5Pcreate(H5P_DATASET_XFER));
   if (!transfer.valid() || H5Pset_dxpl_mpio(transfer.get(), H5FD_MPIO_COLLECTIVE) < 0) {
     fail(path, "could not set up the parallel HDF5 writing");
   }
   try {
-    io::fill_hdf5_file(file.get(), transfer.get(), [&](const io::Hdf5Node& root) {
-      root.write_dataset_rows("height", io::field_shape(grid), layout.first_row, heights, "m");
-      io::write_result_fields(root, grid, result, {layout.first_row, comm.rank() == 0});
-      io::write_result_root_attributes(root, grid, result, metadata);
-      if (metadata.extra_groups) metadata.extra_groups(root);
-    });
+    io::fill_hdf5_file(file.get(), transfer.get(), fill);
   } catch (const FileError& error) {
     throw FileError(fmt::format("cannot write output '{}': {}", path.string(), error.what()));
   }
   if (!file.close()) fail(path, fmt::format("could not write temporary file '{}'", temporary));
 }
 
-}  // namespace
-
-void write_result_slabs(const MpiCommunicator& comm, const std::filesystem::path& path, const Grid& grid,
-                        const SlabLayout& layout, std::span<const double> heights, const solvers::SolveResult& result,
-                        const io::ResultMetadata& metadata) {
+// The collective write of a file of at most `bound` bytes whose contents
+// `fill` makes (the same calls on every process, each with its rows).
+void write_file_slabs(const MpiCommunicator& comm, const std::filesystem::path& path, std::uint64_t bound,
+                      const std::function<void(const io::Hdf5Node& root)>& fill) {
   const bool first = comm.rank() == 0;
   std::unique_ptr<io::OutputTemporary> output;
   std::string temporary;
@@ -89,12 +83,34 @@ void write_result_slabs(const MpiCommunicator& comm, const std::filesystem::path
   // one process alone inside a collective write, which would leave the
   // others waiting.
   run_agreed(comm, [&] {
-    if (first) io::reserve_output_space(path, temporary, io::result_file_bound(grid, result, metadata));
+    if (first) io::reserve_output_space(path, temporary, bound);
   });
-  run_agreed(comm, [&] { write_into(*file, comm, path, temporary, grid, layout, heights, result, metadata); });
+  run_agreed(comm, [&] { write_into(*file, path, temporary, fill); });
   // Every process has closed the file: only now is it complete.
   run_agreed(comm, [&] {
     if (first) output->commit();
+  });
+}
+
+}  // namespace
+
+void write_result_slabs(const MpiCommunicator& comm, const std::filesystem::path& path, const Grid& grid,
+                        const SlabLayout& layout, std::span<const double> heights, const solvers::SolveResult& result,
+                        const io::ResultMetadata& metadata) {
+  write_file_slabs(comm, path, io::result_file_bound(grid, result, metadata), [&](const io::Hdf5Node& root) {
+    root.write_dataset_rows("height", io::field_shape(grid), layout.first_row, heights, "m");
+    io::write_result_fields(root, grid, result, {layout.first_row, comm.rank() == 0});
+    io::write_result_root_attributes(root, grid, result, metadata);
+    if (metadata.extra_groups) metadata.extra_groups(root);
+  });
+}
+
+void write_sweep_slabs(const MpiCommunicator& comm, const std::filesystem::path& path, const Grid& grid,
+                       const SlabLayout& layout, std::span<const double> heights,
+                       std::span<const analysis::SweepStep> steps, const io::ResultMetadata& metadata) {
+  if (steps.empty()) throw InputError("write_sweep_slabs: the sweep has no steps");
+  write_file_slabs(comm, path, io::sweep_file_bound(grid, steps), [&](const io::Hdf5Node& root) {
+    io::write_sweep_contents(root, grid, heights, steps, metadata, {layout.first_row, comm.rank() == 0});
   });
 }
 

@@ -1,4 +1,4 @@
-// A solve's result file written by every MPI process at once, each its rows
+// A solve's (or a load sweep's) result file written by every MPI process at once, each its rows
 // of every field (hyperslabs, written collectively through the parallel
 // HDF5): the serial io::write_result's layout, storage and attributes, with
 // no field gathered. Compiled only with HALFSPACE_MPI.
@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <span>
 
+#include "halfspace/analysis/load_sweep.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/io/result_writer.hpp"
 #include "halfspace/mpi/mpi_communicator.hpp"
@@ -25,5 +26,14 @@ namespace halfspace::mpi {
 void write_result_slabs(const MpiCommunicator& comm, const std::filesystem::path& path, const Grid& grid,
                         const SlabLayout& layout, std::span<const double> heights, const solvers::SolveResult& result,
                         const io::ResultMetadata& metadata);
+
+// The same for a load sweep: io::write_sweep_result's layout, storage and
+// attributes. `heights` and every step's fields hold this process's rows;
+// the steps' other members (their statistics among them) and `metadata` are
+// the same on every process. Throws InputError if `steps` is empty.
+// Collective.
+void write_sweep_slabs(const MpiCommunicator& comm, const std::filesystem::path& path, const Grid& grid,
+                       const SlabLayout& layout, std::span<const double> heights,
+                       std::span<const analysis::SweepStep> steps, const io::ResultMetadata& metadata);
 
 }  // namespace halfspace::mpi
