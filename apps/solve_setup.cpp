@@ -722,8 +722,7 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
       share.check_memory(
           what, grid,
           [&](std::size_t rows) {
-            return rows >= all_rows ? estimate
-                                    : slab_solve_memory_estimate(grid, solver, rows, load_values.size());
+            return rows >= all_rows ? estimate : slab_solve_memory_estimate(grid, solver, rows, load_values.size());
           },
           limit);
     } else {

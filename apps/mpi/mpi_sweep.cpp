@@ -101,8 +101,8 @@ std::vector<analysis::SweepStep> solve_steps(const SolveSetup& setup, const mpi:
           solver->solve(span_of(gap), loads[k], step.warm_started ? span_of(previous) : std::span<const double>());
       previous = step.result.pressure;
       previous_converged = step.result.converged();
-      step.statistics = mpi::slab_contact_statistics(grid, layout, span_of(step.result.pressure),
-                                                     span_of(step.result.gap), world);
+      step.statistics =
+          mpi::slab_contact_statistics(grid, layout, span_of(step.result.pressure), span_of(step.result.gap), world);
       steps.push_back(std::move(step));
     }
     progress.clear();

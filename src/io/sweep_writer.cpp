@@ -54,8 +54,8 @@ std::span<const T> if_lead(const std::vector<T>& values, FieldRows rows) {
   return rows.lead ? std::span<const T>(values) : std::span<const T>();
 }
 
-void write_step(const Hdf5Node& steps_group, const std::string& name, const Grid& grid,
-                const analysis::SweepStep& step, FieldRows rows) {
+void write_step(const Hdf5Node& steps_group, const std::string& name, const Grid& grid, const analysis::SweepStep& step,
+                FieldRows rows) {
   const Hdf5Node group = steps_group.create_group(name);
   write_result_fields(group, grid, step.result, rows);
   const std::vector<std::int64_t>& clusters = step.statistics.cluster_sizes;
@@ -88,13 +88,11 @@ void write_sweep_result(const std::filesystem::path& path, const Grid& grid, std
     check_field("gap", k, static_cast<std::size_t>(steps[k].result.gap.size()), grid);
     check_field("displacement", k, static_cast<std::size_t>(steps[k].result.displacement.size()), grid);
   }
-  write_hdf5_file(path,
-                  [&](const Hdf5Node& root) { write_sweep_contents(root, grid, height, steps, metadata); });
+  write_hdf5_file(path, [&](const Hdf5Node& root) { write_sweep_contents(root, grid, height, steps, metadata); });
 }
 
 void write_sweep_contents(const Hdf5Node& root, const Grid& grid, std::span<const double> height,
-                          std::span<const analysis::SweepStep> steps, const ResultMetadata& metadata,
-                          FieldRows rows) {
+                          std::span<const analysis::SweepStep> steps, const ResultMetadata& metadata, FieldRows rows) {
   // The root describes the last step, like a single result at that load.
   ResultMetadata root_metadata = metadata;
   root_metadata.contact_statistics = steps.back().statistics;
