@@ -221,6 +221,10 @@ else:
     solve_case("rough-pk-fourier-deflation", deflation_case + ["--solver", "pk-fourier"], deflated=True)
     solve_case("free-rough-multilevel-deflation", [a if a != "periodic" else "free" for a in deflation_case],
                (2, 3), deflated=True)
+    # A sweep whose fields are chunked (180224 cells, above the 65536 stored
+    # contiguously), chunks that slab boundaries cut on 3 processes.
+    solve_case("rough-sweep-chunked", ["--height-map", surface, "--boundary", "periodic", "--mean-pressure",
+                                       "5e8,1e9,2e9", "--tol", "1e-10"] + common, (3,), sweep=True)
 
 missing = os.path.join(work_dir, "failure.h5")
 for processes in (2, 3):
