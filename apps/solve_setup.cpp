@@ -716,14 +716,13 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
                                      stress_peak_memory(grid, stress.depths.size(), coating.has_value()));
     if (share.check_memory) {
       // A process holding some rows runs the distributed solve (what is not
-      // distributed is refused on several processes before it starts). Not
-      // counted yet: a sweep's first process gathers the height map and
-      // every step's fields to write the sweep (docs/usage.md).
+      // distributed is refused on several processes before it starts); a
+      // sweep's steps are kept by rows until all write them (docs/usage.md).
       const std::size_t all_rows = grid.dimension() == 1 ? 1 : grid.ny();
       share.check_memory(
           what, grid,
           [&](std::size_t rows) {
-            return rows >= all_rows ? estimate : slab_solve_memory_estimate(grid, solver, rows);
+            return rows >= all_rows ? estimate : slab_solve_memory_estimate(grid, solver, rows, load_values.size());
           },
           limit);
     } else {

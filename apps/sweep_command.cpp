@@ -135,6 +135,11 @@ int finish_sweep(const SolveSetup& setup, std::span<const analysis::SweepStep> s
   io::ResultMetadata metadata = io::result_metadata(provenance(setup), setup.grid, heights);
   metadata.coating = setup.coating;
   io::write_sweep_result(setup.output, setup.grid, heights, steps, metadata);
+  return report_sweep(setup, steps, plot);
+}
+
+int report_sweep(const SolveSetup& setup, std::span<const analysis::SweepStep> steps,
+                 const std::optional<PlotTool>& plot) {
   const std::filesystem::path csv = io::sweep_csv_path(setup.output);
   io::write_sweep_csv(csv, steps);
 

@@ -25,9 +25,15 @@ int run_sweep(const SolveSetup& setup);
 
 // run_sweep after the solves: writes the files of the solved `steps`,
 // prints the summary table and the failed steps, draws the figures with
-// `plot` if given; returns and throws as run_sweep. The MPI program calls it
-// on the first process with the steps' fields gathered.
+// `plot` if given; returns and throws as run_sweep.
 int finish_sweep(const SolveSetup& setup, std::span<const analysis::SweepStep> steps,
+                 const std::optional<PlotTool>& plot);
+
+// finish_sweep after the HDF5 file is written: the CSV (from the steps'
+// scalars and statistics only, not their fields), the summary table, the
+// figures and the failed steps. The MPI program calls it on the first
+// process once every process has written its rows of the HDF5 file.
+int report_sweep(const SolveSetup& setup, std::span<const analysis::SweepStep> steps,
                  const std::optional<PlotTool>& plot);
 
 // What the result files of `setup` record about the run (io::result_metadata).

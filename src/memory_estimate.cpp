@@ -172,9 +172,18 @@ double solve_memory_estimate(const Grid& grid, const solvers::SolverOptions& set
   return kProgramBytes + std::max(solving, writing);
 }
 
-double slab_solve_memory_estimate(const Grid& grid, const solvers::SolverOptions& settings, std::size_t rows) {
+double slab_solve_memory_estimate(const Grid& grid, const solvers::SolverOptions& settings, std::size_t rows,
+                                  std::size_t load_steps) {
   const Extents g(grid);
   const double share = g.line ? 1.0 : static_cast<double>(rows) / g.ny;
+  const double steps = static_cast<double>(std::max<std::size_t>(load_steps, 1));
+  const double history = kDouble * (static_cast<double>(std::max(settings.iteration_limit(), 0)) + 1.0);
+  // A sweep keeps its rows of each finished step's fields until the
+  // collective writing, and each step's cluster sizes, which every process
+  // holds whole (at most one cluster per two cells). The writing after the
+  // last step adds that step's contact flags, less than the solver it
+  // follows.
+  const double kept_steps = (steps - 1.0) * (share * result_bytes(g, history) + 0.5 * kDouble * g.cells());
   // The slab operator and preconditioner keep their multipliers on the
   // whole (transposed) half spectrum, not folded as the serial EvenSymbol:
   // counted on top of the folded ones solver_peak has.
@@ -192,7 +201,7 @@ double slab_solve_memory_estimate(const Grid& grid, const solvers::SolverOptions
     halo_deflation = (1.0 + 3.0 * kDouble) * halo_rows * g.nx + 2.0 * held_cells;
   }
   return kProgramBytes + share * (2.0 * kDouble * g.cells() + solver_peak(grid, settings) + unfolded_symbols) +
-         halo_deflation;
+         halo_deflation + kept_steps;
 }
 
 double generate_memory_estimate(const Grid& grid) {

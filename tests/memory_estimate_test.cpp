@@ -90,6 +90,25 @@ TEST(MemoryEstimateTest, SlabsShareTheFieldsAndTheDeflationsFlagsUpToAHalo) {
   EXPECT_LT(deflation(256), 0.2 * deflation(2048));
 }
 
+TEST(MemoryEstimateTest, SlabSweepKeepsItsRowsOfEveryStepAndEveryStepsClusterSizes) {
+  // A 5-step sweep on 2048^2: each process keeps its rows of the 4 finished
+  // steps' three fields (24 B per cell of its share) and every step's
+  // cluster sizes whole (at most 4 B per cell of the grid), so the excess
+  // over a single solve shrinks with the slab but not below the clusters.
+  const Grid grid = Grid::plane(2048, 2048, 1e-6, 1e-6, Boundary::periodic);
+  solvers::SolverOptions plain;
+  plain.deflation.mode = solvers::DeflationOptions::Mode::off;
+  const double cells = static_cast<double>(grid.size());
+  EXPECT_EQ(slab_solve_memory_estimate(grid, plain, 1024), slab_solve_memory_estimate(grid, plain, 1024, 1));
+  const double half_excess =
+      slab_solve_memory_estimate(grid, plain, 1024, 5) - slab_solve_memory_estimate(grid, plain, 1024);
+  const double quarter_excess =
+      slab_solve_memory_estimate(grid, plain, 512, 5) - slab_solve_memory_estimate(grid, plain, 512);
+  EXPECT_GE(half_excess, 4.0 * (0.5 * 24.0 + 4.0) * cells);
+  EXPECT_GE(quarter_excess, 4.0 * (0.25 * 24.0 + 4.0) * cells);
+  EXPECT_LT(quarter_excess, half_excess);
+}
+
 TEST(MemoryEstimateTest, AvailableMemoryIsMemAvailableWithoutACgroupLimit) {
   const TempDir dir;
   write(dir / "proc" / "meminfo", "MemTotal:       24683656 kB\nMemFree:  100 kB\nMemAvailable:   2000 kB\n");

@@ -1,8 +1,9 @@
-// The distributed load sweep. Every process holds its rows of the gap and of
-// the previous step's pressure (the warm start); the fields of each step go
-// to the first process as soon as it is solved, which keeps every step (and
-// the whole height map) as the serial sweep does and writes them with the
-// serial writer.
+// The distributed load sweep. Every process holds its rows of the gap, of
+// the previous step's pressure (the warm start) and of every step's fields,
+// until all write their rows of the sweep file at once
+// (mpi::write_sweep_slabs); the statistics come from the slabs, and only the
+// CSV and the summary table (per step scalars) are the first process's.
+// No process holds a whole field.
 #include "mpi_sweep.hpp"
 
 #include <fmt/format.h>
@@ -24,12 +25,16 @@
 #include "halfspace/analysis/contact_statistics.hpp"
 #include "halfspace/analysis/load_sweep.hpp"
 #include "halfspace/error.hpp"
+#include "halfspace/io/result_metadata.hpp"
+#include "halfspace/io/sweep_writer.hpp"
 #include "halfspace/linalg/parallel.hpp"
 #include "halfspace/mpi/agreement.hpp"
 #include "halfspace/mpi/distributed_solver.hpp"
+#include "halfspace/mpi/parallel_result_writer.hpp"
 #include "halfspace/mpi/session.hpp"
+#include "halfspace/mpi/slab_contact_statistics.hpp"
 #include "halfspace/mpi/slab_fft.hpp"
-#include "halfspace/mpi/slab_gather.hpp"
+#include "halfspace/mpi/slab_surface_statistics.hpp"
 #include "mpi_program.hpp"
 
 namespace halfspace::app {
@@ -64,18 +69,16 @@ std::vector<Loading> checked_loads(const SolveSetup& setup, std::span<const doub
   return loads;
 }
 
-// The steps, solved on this process's rows; on the first process with their
-// whole fields and statistics, elsewhere without fields. A failure that only
+// The steps, solved on this process's rows: their fields are these rows,
+// their statistics (from the slabs) the same on every process. A failure that only
 // some processes meet in the middle of collective work ends them all
 // (MPI_Abort), as in the single solve.
 std::vector<analysis::SweepStep> solve_steps(const SolveSetup& setup, const mpi::SlabLayout& layout,
-                                             const mpi::MpiCommunicator& world) {
+                                             std::span<const double> heights, const mpi::MpiCommunicator& world) {
   const bool root = world.rank() == 0;
   try {
     const Grid& grid = setup.grid;
-    const Eigen::Map<const Eigen::ArrayXd> local_heights(
-        setup.heights.data() + (layout.first_row - setup.first_row) * layout.nx,
-        static_cast<Eigen::Index>(layout.local_size()));
+    const Eigen::Map<const Eigen::ArrayXd> local_heights(heights.data(), static_cast<Eigen::Index>(heights.size()));
     const double highest =
         world.max(local_heights.size() > 0 ? local_heights.maxCoeff() : -std::numeric_limits<double>::infinity());
     const Eigen::ArrayXd gap = highest - local_heights;
@@ -90,7 +93,6 @@ std::vector<analysis::SweepStep> solve_steps(const SolveSetup& setup, const mpi:
     std::vector<analysis::SweepStep> steps;
     Eigen::ArrayXd previous;  // this process's rows of the last step's pressure
     bool previous_converged = false;
-    const auto whole = static_cast<Eigen::Index>(root ? grid.size() : 0);
     for (std::size_t k = 0; k < loads.size(); ++k) {
       progress.start_step(k, describe_load(loads[k].mode, loads[k].value, grid));
       analysis::SweepStep step;
@@ -100,13 +102,8 @@ std::vector<analysis::SweepStep> solve_steps(const SolveSetup& setup, const mpi:
           solver->solve(span_of(gap), loads[k], step.warm_started ? span_of(previous) : std::span<const double>());
       previous = step.result.pressure;
       previous_converged = step.result.converged();
-      SolveResult& result = step.result;
-      for (Eigen::ArrayXd* field : {&result.pressure, &result.displacement, &result.gap}) {
-        Eigen::ArrayXd gathered(whole);
-        mpi::gather_rows(world, layout, span_of(*field), {gathered.data(), static_cast<std::size_t>(whole)});
-        *field = std::move(gathered);
-      }
-      if (root) step.statistics = analysis::contact_statistics(grid, span_of(result.pressure), span_of(result.gap));
+      step.statistics =
+          mpi::slab_contact_statistics(grid, layout, span_of(step.result.pressure), span_of(step.result.gap), world);
       steps.push_back(std::move(step));
     }
     progress.clear();
@@ -126,25 +123,25 @@ std::vector<analysis::SweepStep> solve_steps(const SolveSetup& setup, const mpi:
 int run_sweep_on_slabs(const SolveSetup& setup, const mpi::MpiCommunicator& world) {
   const bool root = world.rank() == 0;
   const mpi::SlabLayout layout = mpi::slab_layout(setup.grid.nx(), setup.grid.ny(), world);
+  const std::span<const double> heights(setup.heights.data() + (layout.first_row - setup.first_row) * layout.nx,
+                                        layout.local_size());
   std::optional<Activity> activity(
       std::in_place, fmt::format("solving a load sweep ({} on the {} grid, {} processes)",
                                  solvers::to_string(setup.solver.type), setup.grid.shape_string(), world.size()));
-  const std::vector<analysis::SweepStep> steps = solve_steps(setup, layout, world);
-  // The whole height map on the first process too, for the serial writer
-  // (a process may hold its rows only).
-  activity.emplace(fmt::format("gathering the {} grid's heights", setup.grid.shape_string()));
-  Eigen::ArrayXd heights(static_cast<Eigen::Index>(root ? setup.grid.size() : 0));
-  mpi::gather_rows(world, layout,
-                   {setup.heights.data() + (layout.first_row - setup.first_row) * layout.nx, layout.local_size()},
-                   {heights.data(), static_cast<std::size_t>(heights.size())});
+  const std::vector<analysis::SweepStep> steps = solve_steps(setup, layout, heights, world);
+  io::ResultMetadata metadata = io::provenance_metadata(provenance(setup));
+  metadata.coating = setup.coating;
+  mpi::run_agreed(world, [&] {
+    activity.emplace(fmt::format("computing the statistics of the {} grid", setup.grid.shape_string()));
+    metadata.surface_statistics = mpi::slab_surface_statistics(setup.grid, layout, heights, world);
+  });
+  activity.emplace(fmt::format("writing {}", setup.output.string()));
+  mpi::write_sweep_slabs(world, setup.output, setup.grid, layout, heights, steps, metadata);
   int code = kExitOk;
   mpi::run_agreed(world, [&] {
     if (!root) return;
-    activity.emplace(fmt::format("writing {}", setup.output.string()));
-    SolveSetup whole = setup;
-    whole.heights = std::move(heights);
-    whole.first_row = 0;
-    code = finish_sweep(whole, steps, std::nullopt);
+    activity.emplace(fmt::format("writing {}", io::sweep_csv_path(setup.output).string()));
+    code = report_sweep(setup, steps, std::nullopt);
   });
   mpi::check(MPI_Bcast(&code, 1, MPI_INT, 0, world.get()), "MPI_Bcast");
   return code;

@@ -9,9 +9,10 @@ namespace halfspace::app {
 
 // Solves setup.load_values in order on this process's rows, each step
 // warm-started from the previous converged one as the serial sweep
-// (analysis::run_load_sweep); the first process gathers every step's fields,
-// computes its statistics and writes the serial program's files
-// (finish_sweep). Returns the serial run_sweep's exit code on every process.
+// (analysis::run_load_sweep); every process keeps its rows of every step's
+// fields and writes them into the serial program's sweep file
+// (mpi::write_sweep_slabs), the first process then the CSV and the summary
+// (report_sweep). Returns the serial run_sweep's exit code on every process.
 // Collective; throws InputError alike on every process for an invalid load.
 int run_sweep_on_slabs(const SolveSetup& setup, const mpi::MpiCommunicator& world);
 

@@ -33,15 +33,18 @@ inline constexpr double kProgramBytes = 40.0 * 1024 * 1024;
 // in std::size_t.
 double solve_memory_estimate(const Grid& grid, const solvers::SolverOptions& settings, std::size_t load_steps = 1);
 
-// Peak bytes of one process of a distributed single solve (the MPI
-// program) on `grid` when it holds `rows` of its rows: kProgramBytes and its
-// share of the heights, the initial gap and the solve (the slab transform
-// and symbols, the workspace and the result; block deflation's contact
-// flags and lists, which every process holds for the whole grid). The statistics and the
-// collective writing after it work on the same fields in place, with less
-// besides (the slab transform of the slope, the cluster labels); no file
-// image is assembled.
-double slab_solve_memory_estimate(const Grid& grid, const solvers::SolverOptions& settings, std::size_t rows);
+// Peak bytes of one process of a distributed solve (the MPI program) on
+// `grid` when it holds `rows` of its rows: kProgramBytes and its share of
+// the heights, the initial gap and the solve (the slab transform and
+// symbols, the workspace and the result; block deflation's contact flags
+// and lists, which every process holds for the whole grid). With
+// `load_steps` > 1 (a sweep) also its rows of every finished step's fields
+// and every step's cluster sizes, kept until the collective writing. The
+// statistics and the collective writing work on the same fields in place,
+// with less besides (the slab transform of the slope, the cluster labels);
+// no file image is assembled.
+double slab_solve_memory_estimate(const Grid& grid, const solvers::SolverOptions& settings, std::size_t rows,
+                                  std::size_t load_steps = 1);
 
 // Peak bytes of `halfspace generate` on `grid`: kProgramBytes, the
 // synthesis transform of a self-affine surface and the heights (the

@@ -294,6 +294,14 @@ Hdf5Node Hdf5Node::write_dataset_rows(std::string_view name, const std::vector<s
                   transfer_);
 }
 
+Hdf5Node Hdf5Node::write_dataset_rows(std::string_view name, const std::vector<std::size_t>& shape,
+                                      std::size_t first_row, std::span<const std::int64_t> values,
+                                      std::string_view units) const {
+  return Hdf5Node(write_array(id_, name, shape, first_row, values.size(), H5T_STD_I64LE, H5T_NATIVE_INT64,
+                              values.data(), units, transfer_),
+                  transfer_);
+}
+
 Hdf5Node Hdf5Node::create_dataset(std::string_view name, const std::vector<std::size_t>& shape, std::string_view units,
                                   Compression compression) const {
   const std::string key(name);

@@ -16,7 +16,7 @@
 #include "halfspace/io/hdf5_output.hpp"
 #include "halfspace/io/output_file.hpp"
 #include "halfspace/io/result_attributes.hpp"
-#include "hdf5_writing.hpp"
+#include "sweep_writing.hpp"
 
 namespace halfspace::io {
 namespace {
@@ -47,12 +47,19 @@ std::string column_unit(const analysis::SummaryColumn& column, const Grid& grid,
   return std::string(column.unit);
 }
 
-void write_step(const Hdf5Node& steps_group, const std::string& name, const Grid& grid,
-                const analysis::SweepStep& step) {
+// The small datasets (cluster sizes, the summary table) are written by the
+// lead process alone when several write the file.
+template <typename T>
+std::span<const T> if_lead(const std::vector<T>& values, FieldRows rows) {
+  return rows.lead ? std::span<const T>(values) : std::span<const T>();
+}
+
+void write_step(const Hdf5Node& steps_group, const std::string& name, const Grid& grid, const analysis::SweepStep& step,
+                FieldRows rows) {
   const Hdf5Node group = steps_group.create_group(name);
-  write_result_fields(group, grid, step.result);
-  group.write_dataset("cluster_sizes", {step.statistics.cluster_sizes.size()},
-                      std::span<const std::int64_t>(step.statistics.cluster_sizes), "cells");
+  write_result_fields(group, grid, step.result, rows);
+  const std::vector<std::int64_t>& clusters = step.statistics.cluster_sizes;
+  group.write_dataset_rows("cluster_sizes", {clusters.size()}, 0, if_lead(clusters, rows), "cells");
   group.write_double_attribute("load", step.loading.value);
   write_result_attributes(group, step.result);
   write_contact_statistics_attributes(group, step.statistics);
@@ -60,13 +67,13 @@ void write_step(const Hdf5Node& steps_group, const std::string& name, const Grid
 }
 
 void write_summary_table(const Hdf5Node& root, const Grid& grid, std::span<const analysis::SweepStep> steps,
-                         std::string_view load_mode) {
+                         std::string_view load_mode, FieldRows rows) {
   const Hdf5Node table = root.create_group("sweep");
   for (const analysis::SummaryColumn& column : analysis::summary_columns()) {
     std::vector<double> values;
     for (const analysis::SweepStep& step : steps) values.push_back(column.value(step));
     const std::string unit = column_unit(column, grid, load_mode);
-    table.write_dataset(column.name, {values.size()}, std::span<const double>(values), unit.empty() ? "1" : unit);
+    table.write_dataset_rows(column.name, {values.size()}, 0, if_lead(values, rows), unit.empty() ? "1" : unit);
   }
 }
 
@@ -81,26 +88,46 @@ void write_sweep_result(const std::filesystem::path& path, const Grid& grid, std
     check_field("gap", k, static_cast<std::size_t>(steps[k].result.gap.size()), grid);
     check_field("displacement", k, static_cast<std::size_t>(steps[k].result.displacement.size()), grid);
   }
+  write_hdf5_file(path, [&](const Hdf5Node& root) { write_sweep_contents(root, grid, height, steps, metadata); });
+}
+
+void write_sweep_contents(const Hdf5Node& root, const Grid& grid, std::span<const double> height,
+                          std::span<const analysis::SweepStep> steps, const ResultMetadata& metadata, FieldRows rows) {
   // The root describes the last step, like a single result at that load.
   ResultMetadata root_metadata = metadata;
   root_metadata.contact_statistics = steps.back().statistics;
+  root.write_dataset_rows("height", field_shape(grid), rows.first_row, height, "m");
+  {
+    const Hdf5Node steps_group = root.create_group("steps");
+    for (std::size_t k = 0; k < steps.size(); ++k) {
+      write_step(steps_group, step_name(k, steps.size()), grid, steps[k], rows);
+    }
+  }
+  write_summary_table(root, grid, steps, metadata.load_mode, rows);
+  write_result_root_attributes(root, grid, steps.back().result, root_metadata);
+  root.write_int64_attribute("sweep_steps", static_cast<std::int64_t>(steps.size()));
+  // Adhesive sweeps: the pull-off force of the unloading branch (NaN without one).
+  if (!steps.front().result.adhesion.law.empty()) {
+    root.write_double_attribute("pull_off_force", analysis::pull_off_force(steps));
+  }
+}
 
-  write_hdf5_file(path, [&](const Hdf5Node& root) {
-    root.write_dataset("height", field_shape(grid), height, "m");
-    {
-      const Hdf5Node steps_group = root.create_group("steps");
-      for (std::size_t k = 0; k < steps.size(); ++k) {
-        write_step(steps_group, step_name(k, steps.size()), grid, steps[k]);
-      }
-    }
-    write_summary_table(root, grid, steps, metadata.load_mode);
-    write_result_root_attributes(root, grid, steps.back().result, root_metadata);
-    root.write_int64_attribute("sweep_steps", static_cast<std::int64_t>(steps.size()));
-    // Adhesive sweeps: the pull-off force of the unloading branch (NaN without one).
-    if (!steps.front().result.adhesion.law.empty()) {
-      root.write_double_attribute("pull_off_force", analysis::pull_off_force(steps));
-    }
-  });
+std::uint64_t sweep_file_bound(const Grid& grid, std::span<const analysis::SweepStep> steps) {
+  // Per step: pressure, gap, displacement, plastic_displacement, and the
+  // uint8 contact and plastic within one more float64 field's bound; the
+  // residual history, the cluster sizes (int64, bounded as float64) and the
+  // group's attributes. Then the height and the summary table.
+  constexpr std::uint64_t kStepFields = 5;
+  constexpr std::uint64_t kStepSmallItems = std::uint64_t{64} << 10;
+  const std::uint64_t field = hdf5_dataset_bound(field_shape(grid), Compression::deflate);
+  std::uint64_t bytes = kHdf5SmallItemsBound + field;
+  for (const analysis::SweepStep& step : steps) {
+    bytes += kStepFields * field + kStepSmallItems +
+             hdf5_dataset_bound({step.result.residual_history.size()}, Compression::deflate) +
+             hdf5_dataset_bound({step.statistics.cluster_sizes.size()}, Compression::deflate);
+  }
+  bytes += analysis::summary_columns().size() * hdf5_dataset_bound({steps.size()}, Compression::deflate);
+  return bytes;
 }
 
 void write_sweep_csv(const std::filesystem::path& path, std::span<const analysis::SweepStep> steps) {

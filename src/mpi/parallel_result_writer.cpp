@@ -15,6 +15,7 @@
 
 #include "../io/hdf5_handle.hpp"
 #include "../io/hdf5_writing.hpp"
+#include "../io/sweep_writing.hpp"
 #include "halfspace/error.hpp"
 #include "halfspace/io/hdf5_output.hpp"
 #include "halfspace/io/height_map_writer.hpp"
@@ -110,6 +111,15 @@ void write_height_map_slabs(const MpiCommunicator& comm, const std::filesystem::
       io::kHdf5SmallItemsBound + io::hdf5_dataset_bound(io::field_shape(grid), io::Compression::deflate);
   write_file_slabs(comm, path, bound, [&](const io::Hdf5Node& root) {
     io::write_height_map_contents(root, grid, layout.first_row, heights, metadata);
+  });
+}
+
+void write_sweep_slabs(const MpiCommunicator& comm, const std::filesystem::path& path, const Grid& grid,
+                       const SlabLayout& layout, std::span<const double> heights,
+                       std::span<const analysis::SweepStep> steps, const io::ResultMetadata& metadata) {
+  if (steps.empty()) throw InputError("write_sweep_slabs: the sweep has no steps");
+  write_file_slabs(comm, path, io::sweep_file_bound(grid, steps), [&](const io::Hdf5Node& root) {
+    io::write_sweep_contents(root, grid, heights, steps, metadata, {layout.first_row, comm.rank() == 0});
   });
 }
 

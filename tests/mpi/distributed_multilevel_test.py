@@ -7,12 +7,15 @@ usage: distributed_multilevel_test.py MPI_PROGRAM SERIAL_PROGRAM MPIEXEC SOURCE_
 `mpiexec -np 1, 2 and 3 MPI_PROGRAM solve` with the default solver
 (pk-multilevel) on periodic and free Hertz and rough contacts, single
 solves and 3-step load sweeps, and with block deflation (pk-multilevel and
-pk-fourier), must write the serial program's files: the same
-datasets, shapes, types and attributes (iteration counts, coarse levels and
-their iterations included), floating-point data equal within kTolerance of
-its largest value, contact sets identical; a sweep's CSV likewise. The grids
+pk-fourier), must write the serial program's files: the same datasets,
+shapes, types, storage (chunks, filters) and attributes (iteration counts,
+coarse levels and their iterations included), floating-point data equal
+within kTolerance of its largest value, contact sets identical; a sweep's
+CSV likewise. The grids
 make the multilevel's levels both distributed (with slab boundaries that do
-not line up between levels on 3 processes) and gathered.
+not line up between levels on 3 processes) and gathered. A sweep that
+cannot be written leaves nothing behind, and a 1024^2 sweep on 2 processes
+peaks on the first within 25 % of the second (no whole field gathered).
 """
 import csv
 import os
@@ -98,6 +101,9 @@ def compare_files(where, got_path, want_path):
             if a.shape != b.shape or a.dtype != b.dtype:
                 fail(f"{where}: /{name} is {a.shape} {a.dtype}, serial {b.shape} {b.dtype}")
                 continue
+            storage = [(d.chunks, d.compression, d.compression_opts, d.shuffle) for d in (a, b)]
+            if storage[0] != storage[1]:
+                fail(f"{where}: /{name} is stored as {storage[0]} (chunks, filters), serial {storage[1]}")
             x, y = a[()], b[()]
             leaf = name.rsplit("/", 1)[-1]
             if leaf in kRunValues:
@@ -219,11 +225,74 @@ else:
     # that own no block row (none starts in their slab) hold only the halo
     # of the block row their rows lie in.
     solve_case("thin-slabs-pk-fourier-deflation", deflation_case + ["--solver", "pk-fourier"], (12,), deflated=True)
+    # A sweep whose fields are chunked (180224 cells, above the 65536 stored
+    # contiguously, in chunks of 118 rows): the slabs of 2 processes (176
+    # rows) cut a chunk, those of 3 (118, 118, 116) match them.
+    solve_case("rough-sweep-chunked", ["--height-map", surface, "--boundary", "periodic", "--mean-pressure",
+                                       "5e8,1e9,2e9", "--tol", "1e-10"] + common, (2, 3), sweep=True)
 
 missing = os.path.join(work_dir, "failure.h5")
 for processes in (2, 3):
     failure_case("sweep with an invalid approach", processes, rough + ["--approach", "1e-7,1e-3"],
                  "mean initial gap", missing)
+
+# A sweep that cannot be written: a missing directory (refused before the
+# solve) and a file-size limit below the sweep file's size (32 KiB: `ulimit
+# -f` counts 512-byte blocks in sh), met by the collective writer's
+# reservation after the solves. Neither leaves the file, its CSV or a
+# temporary behind. Open MPI's shared-memory transport maps files larger
+# than the limit, so the processes talk over TCP there.
+sweep_loads = ["--mean-pressure", "1e8,2e8,4e8"]
+for processes in (2, 3):
+    failure_case("sweep into a missing directory", processes, rough + sweep_loads, "does not exist",
+                 os.path.join(work_dir, "no-such-directory", "sweep.h5"))
+    limited = os.path.join(work_dir, "limited-sweep.h5")
+    command = " ".join([mpi_program, "solve"] + rough + sweep_loads + ["--output", limited])
+    result = run([mpiexec, "--oversubscribe", "--mca", "btl", "self,tcp", "-np", str(processes), "sh", "-c",
+                  "ulimit -f 64; exec " + command])
+    where = f"sweep under a file-size limit, {processes} processes"
+    errors = [line for line in result.stderr.splitlines() if line.startswith("error:")]
+    if result.returncode != kExitInputError:
+        fail(f"{where}: exit {result.returncode}, expected {kExitInputError}; stderr: {result.stderr.strip()}")
+    if len(errors) != 1 or "could not reserve" not in errors[0]:
+        fail(f"{where}: expected one error line about the reservation, got {errors}")
+    left = [f for f in os.listdir(work_dir) if f.startswith("limited-sweep")]
+    if left:
+        fail(f"{where}: left behind: {left}")
+    print(f"{where}: {errors[0] if errors else result.stderr.strip()}")
+
+# No process holds a sweep's whole fields: a 3-step sweep on a 1024^2 grid
+# on 2 processes, each process's peak resident set measured by
+# /usr/bin/time. Gathering the height map and the 3 steps' fields on the
+# first process (as the sweep did before it was written collectively) put
+# its peak far above the other's; now it must stay within 25 % of it.
+if os.path.exists("/usr/bin/time"):
+    peaks_dir = os.path.join(work_dir, "sweep-peaks")
+    os.makedirs(peaks_dir, exist_ok=True)
+    big_sweep = os.path.join(work_dir, "big-sweep.h5")
+    command = " ".join([mpi_program, "solve", "--geometry", "sphere", "--radius", "0.01", "--grid", "1024x1024",
+                        "--size", "1e-3x1e-3", "--boundary", "periodic", "--approach", "2e-6,3e-6,3.5e-6",
+                        "--tol", "1e-8", "--output", big_sweep] + common)
+    result = run([mpiexec, "--oversubscribe", "-np", "2", "sh", "-c",
+                  f"exec /usr/bin/time -v -o {peaks_dir}/rank$OMPI_COMM_WORLD_RANK {command}"])
+    where = "1024^2 sweep on 2 processes"
+    if result.returncode != 0:
+        fail(f"{where}: exit {result.returncode}: {result.stderr.strip()}")
+    else:
+        peaks = []
+        for rank in (0, 1):
+            with open(os.path.join(peaks_dir, f"rank{rank}")) as report:
+                peaks += [int(line.split(":")[1]) for line in report if "Maximum resident set size" in line]
+        if len(peaks) != 2:
+            fail(f"{where}: could not read both processes' peaks: {peaks}")
+        elif peaks[0] > 1.25 * peaks[1]:
+            fail(f"{where}: the first process peaked at {peaks[0] / 1024:.0f} MiB, "
+                 f"more than 25 % above the second's {peaks[1] / 1024:.0f} MiB")
+        else:
+            print(f"{where}: peaks {peaks[0] / 1024:.0f} MiB (first) and {peaks[1] / 1024:.0f} MiB")
+    for path in (big_sweep, big_sweep[:-3] + ".csv"):
+        if os.path.exists(path):
+            os.remove(path)
 
 if failures:
     print(f"{len(failures)} failure(s)")

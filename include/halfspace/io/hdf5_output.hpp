@@ -62,6 +62,8 @@ class Hdf5Node {
                               std::span<const double> values, std::string_view units) const;
   Hdf5Node write_dataset_rows(std::string_view name, const std::vector<std::size_t>& shape, std::size_t first_row,
                               std::span<const std::uint8_t> values, std::string_view units) const;
+  Hdf5Node write_dataset_rows(std::string_view name, const std::vector<std::size_t>& shape, std::size_t first_row,
+                              std::span<const std::int64_t> values, std::string_view units) const;
 
   // A float64 dataset of `shape` (rank >= 2, stored as write_dataset would)
   // whose values come later, slab by slab along the first axis, through

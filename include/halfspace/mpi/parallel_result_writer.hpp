@@ -1,4 +1,4 @@
-// A solve's result file written by every MPI process at once, each its rows
+// A solve's (or a load sweep's) result file written by every MPI process at once, each its rows
 // of every field (hyperslabs, written collectively through the parallel
 // HDF5): the serial io::write_result's layout, storage and attributes, with
 // no field gathered. Compiled only with HALFSPACE_MPI.
@@ -9,6 +9,7 @@
 #include <functional>
 #include <span>
 
+#include "halfspace/analysis/load_sweep.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/io/height_map_writer.hpp"
 #include "halfspace/io/result_writer.hpp"
@@ -43,5 +44,14 @@ void write_height_map_slabs(const MpiCommunicator& comm, const std::filesystem::
 // process alike, not on one inside a collective write. Collective.
 void write_file_slabs(const MpiCommunicator& comm, const std::filesystem::path& path, std::uint64_t reserved_bytes,
                       const std::function<void(const io::Hdf5Node& root)>& fill);
+
+// The same for a load sweep: io::write_sweep_result's layout, storage and
+// attributes. `heights` and every step's fields hold this process's rows;
+// the steps' other members (their statistics among them) and `metadata` are
+// the same on every process. Throws InputError if `steps` is empty.
+// Collective.
+void write_sweep_slabs(const MpiCommunicator& comm, const std::filesystem::path& path, const Grid& grid,
+                       const SlabLayout& layout, std::span<const double> heights,
+                       std::span<const analysis::SweepStep> steps, const io::ResultMetadata& metadata);
 
 }  // namespace halfspace::mpi
