@@ -29,11 +29,11 @@ kPaperFormTolerance, its iteration count and residual not, its contact and
 plastic sets exactly still.
 """
 import os
-import subprocess
 import sys
 
 import h5py
 import numpy as np
+from mpi_harness import Harness
 
 # The distributed reductions and FFTW-MPI's transforms round differently
 # from the serial ones: equal to rounding, not bitwise.
@@ -49,24 +49,13 @@ kPaperFormTolerance = 1e-6
 kAbsoluteAttributes = {"residual", "residual_history"}
 kProcessCounts = (1, 2, 3)
 
-mpi_program, serial_program, mpiexec, source_dir, work_dir = sys.argv[1:6]
-os.makedirs(work_dir, exist_ok=True)
-environment = dict(os.environ, OMP_NUM_THREADS="1", OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-                   OMPI_MCA_rmaps_base_oversubscribe="1", HALFSPACE_FFTW_WISDOM="off")
-failures = []
-
-
-def run(command):
-    return subprocess.run(command, env=environment, capture_output=True, text=True, timeout=300)
-
-
-def run_mpi(processes, arguments):
-    return run([mpiexec, "--oversubscribe", "-np", str(processes), mpi_program] + arguments)
-
-
-def fail(message):
-    print("FAIL: " + message)
-    failures.append(message)
+harness = Harness(sys.argv)
+mpi_program, serial_program, mpiexec, source_dir, work_dir = harness.arguments
+environment = harness.environment
+failures = harness.failures
+run = harness.run
+run_mpi = harness.run_mpi
+fail = harness.fail
 
 
 def compare_attributes(where, got, want, tolerance, skipped):

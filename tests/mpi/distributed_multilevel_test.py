@@ -19,11 +19,11 @@ peaks on the first within 25 % of the second (no whole field gathered).
 """
 import csv
 import os
-import subprocess
 import sys
 
 import h5py
 import numpy as np
+from mpi_harness import Harness
 
 # Distributed reductions add in another order than the serial fixed blocks,
 # and FFTW-MPI rounds differently from serial FFTW: equal to rounding.
@@ -38,24 +38,13 @@ kAbsoluteValues = {"residual", "residual_history"}
 kProcessCounts = (1, 2, 3)
 kExitInputError = 1
 
-mpi_program, serial_program, mpiexec, source_dir, work_dir = sys.argv[1:6]
-os.makedirs(work_dir, exist_ok=True)
-environment = dict(os.environ, OMP_NUM_THREADS="1", OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-                   OMPI_MCA_rmaps_base_oversubscribe="1", HALFSPACE_FFTW_WISDOM="off")
-failures = []
-
-
-def run(command):
-    return subprocess.run(command, env=environment, capture_output=True, text=True, timeout=300)
-
-
-def run_mpi(processes, arguments):
-    return run([mpiexec, "--oversubscribe", "-np", str(processes), mpi_program] + arguments)
-
-
-def fail(message):
-    print("FAIL: " + message)
-    failures.append(message)
+harness = Harness(sys.argv)
+mpi_program, serial_program, mpiexec, source_dir, work_dir = harness.arguments
+environment = harness.environment
+failures = harness.failures
+run = harness.run
+run_mpi = harness.run_mpi
+fail = harness.fail
 
 
 def close(name, got, want):

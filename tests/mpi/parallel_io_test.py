@@ -22,12 +22,12 @@ usage: parallel_io_test.py MPI_PROGRAM SERIAL_PROGRAM MPIEXEC SOURCE_DIR WORK_DI
   no temporary left.
 """
 import os
-import subprocess
 import sys
 from collections import deque
 
 import h5py
 import numpy as np
+from mpi_harness import Harness
 
 # Distributed sums are added in another order than the serial fixed blocks
 # and FFTW-MPI rounds differently: equal to rounding, not bitwise.
@@ -38,24 +38,13 @@ kRunAttributes = {"solve_seconds", "command_line", "halfspace_version"}
 kAbsoluteAttributes = {"residual"}
 kProcessCounts = (1, 2, 3)
 
-mpi_program, serial_program, mpiexec, source_dir, work_dir = sys.argv[1:6]
-os.makedirs(work_dir, exist_ok=True)
-environment = dict(os.environ, OMP_NUM_THREADS="1", OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-                   OMPI_MCA_rmaps_base_oversubscribe="1", HALFSPACE_FFTW_WISDOM="off")
-failures = []
-
-
-def fail(message):
-    print("FAIL: " + message)
-    failures.append(message)
-
-
-def run(command):
-    return subprocess.run(command, env=environment, capture_output=True, text=True, timeout=300)
-
-
-def run_mpi(processes, arguments):
-    return run([mpiexec, "--oversubscribe", "-np", str(processes), mpi_program] + arguments)
+harness = Harness(sys.argv)
+mpi_program, serial_program, mpiexec, source_dir, work_dir = harness.arguments
+environment = harness.environment
+failures = harness.failures
+run = harness.run
+run_mpi = harness.run_mpi
+fail = harness.fail
 
 
 def leftovers():
