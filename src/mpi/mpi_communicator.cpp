@@ -24,16 +24,24 @@ MpiCommunicator::MpiCommunicator(MPI_Comm comm) : comm_(comm) {
 }
 
 void MpiCommunicator::sum(std::span<double> values) const {
-  const std::size_t k = values.size();
-  if (size_ == 1 || k == 0) return;
-  if (gathered_.size() < k * static_cast<std::size_t>(size_)) gathered_.resize(k * static_cast<std::size_t>(size_));
-  check(MPI_Allgather(values.data(), static_cast<int>(k), MPI_DOUBLE, gathered_.data(), static_cast<int>(k), MPI_DOUBLE,
-                      comm_),
-        "MPI_Allgather");
-  for (std::size_t j = 0; j < k; ++j) {
-    double total = gathered_[j];
-    for (std::size_t r = 1; r < static_cast<std::size_t>(size_); ++r) total += gathered_[r * k + j];
-    values[j] = total;
+  if (size_ == 1 || values.empty()) return;
+  // In chunks, so that the gathered copies cost P x kSumChunk values, not P
+  // per value (block deflation sums one value per block of a grid of
+  // billions of cells); each value is added in the same rank order as a
+  // whole, so the bits do not depend on the chunking.
+  constexpr std::size_t kSumChunk = std::size_t{1} << 16;
+  const auto processes = static_cast<std::size_t>(size_);
+  for (std::size_t begin = 0; begin < values.size(); begin += kSumChunk) {
+    const std::size_t k = std::min(kSumChunk, values.size() - begin);
+    if (gathered_.size() < k * processes) gathered_.resize(k * processes);
+    check(MPI_Allgather(values.data() + begin, static_cast<int>(k), MPI_DOUBLE, gathered_.data(), static_cast<int>(k),
+                        MPI_DOUBLE, comm_),
+          "MPI_Allgather");
+    for (std::size_t j = 0; j < k; ++j) {
+      double total = gathered_[j];
+      for (std::size_t r = 1; r < processes; ++r) total += gathered_[r * k + j];
+      values[begin + j] = total;
+    }
   }
 }
 
