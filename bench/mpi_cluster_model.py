@@ -21,7 +21,8 @@ deflation's contact flags (3 B per cell) and its lists of contact cells
 (24 B per contact cell) on its slab and a halo of three block rows, and
 solves the coarse problem of N / b^2 blocks itself at each iteration: its
 per-block vectors (about 150 B per block) and the rank-order sum of its
-right-hand side, which gathers P values per block (8 P B per block). The
+right-hand side, which gathers P values of a chunk of 65536 blocks at a
+time (8 P x 65536 B). The
 last column gives that memory per process (b = 32, 10 % of the cells in
 contact); the coarse problem's time is not modelled (at 65536^2 it has 4.2
 million blocks, the size of a 2048^2 grid, on every process: use a larger
@@ -47,11 +48,13 @@ kSlabBytesPerCell = (187 - 34) * 2**20 / (2048**2 / 2)
 # the slab and a halo of three block rows; per block of the whole grid, on
 # every process, the coarse problem's vectors (near field 9 doubles, counts,
 # CG vectors, far-field transform: about 150 B) and the rank-order sum of
-# its right-hand side (MpiCommunicator::sum gathers P doubles per block).
+# its right-hand side (MpiCommunicator::sum gathers P doubles per value of a
+# chunk of 65536).
 kDeflationBytesPerCell = 3.0 + 3 * 8 * 0.10
 kDeflationBlock = 32
 kDeflationHaloBlockRows = 3
 kCoarseBytesPerBlock = 150.0
+kSumChunk = 65536
 # Iterations of the measured rough surfaces (H = 0.8, rms slope 0.1, 5e7 Pa):
 # 59 at 2048^2 and 75 at 4096^2; taken to keep growing by that factor per
 # doubling of n.
@@ -89,7 +92,8 @@ def memory(n, processes):
     slab = kProgramBytes + kSlabBytesPerCell * cells / processes
     blocks = cells / kDeflationBlock**2
     held_cells = cells / processes + kDeflationHaloBlockRows * kDeflationBlock * n
-    deflation = kDeflationBytesPerCell * held_cells + (kCoarseBytesPerBlock + 8.0 * processes) * blocks
+    deflation = (kDeflationBytesPerCell * held_cells + kCoarseBytesPerBlock * blocks +
+                 8.0 * processes * min(blocks, kSumChunk))
     return slab, slab + deflation
 
 
