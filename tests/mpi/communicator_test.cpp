@@ -44,8 +44,8 @@ int main(int argc, char** argv) {
   int failures = 0;
   {
     const mpi::MpiCommunicator world(MPI_COMM_WORLD);
-    for (const std::size_t count : {std::size_t{1}, std::size_t{65535}, std::size_t{65536}, std::size_t{65537},
-                                    std::size_t{3 * 65536 + 17}}) {
+    for (const std::size_t count :
+         {std::size_t{1}, std::size_t{65535}, std::size_t{65536}, std::size_t{65537}, std::size_t{3 * 65536 + 17}}) {
       failures += check_sum(world, count) > 0 ? 1 : 0;
     }
     const double rank = world.rank();
