@@ -113,20 +113,10 @@ def compare_files(where, got_path, want_path, required, tolerance, skipped):
 
 
 def solve_case(name, arguments, required=(), tolerance=kTolerance, skipped=frozenset()):
-    serial_output = os.path.join(work_dir, f"{name}-serial.h5")
-    serial = run([serial_program, "solve"] + arguments + ["--output", serial_output])
-    if serial.returncode != 0:
-        fail(f"{name}: the serial program failed ({serial.returncode}): {serial.stderr.strip()}")
+    serial_output = harness.serial_output(name, "solve", arguments)
+    if serial_output is None:
         return
-    for processes in kProcessCounts:
-        output = os.path.join(work_dir, f"{name}-np{processes}.h5")
-        if os.path.exists(output):
-            os.remove(output)
-        distributed = run_mpi(processes, ["solve"] + arguments + ["--output", output])
-        where = f"{name}, {processes} processes"
-        if distributed.returncode != 0:
-            fail(f"{where}: exit {distributed.returncode}: {distributed.stderr.strip()}")
-            continue
+    for where, output in harness.distributed_outputs(name, "solve", arguments, kProcessCounts):
         compare_files(where, output, serial_output, required, tolerance, skipped)
 
 
@@ -170,20 +160,10 @@ solve_case("coated-hardness-pk-fourier", coated + ["--solver", "pk-fourier", "--
 
 
 def generate_case(name, arguments):
-    serial_output = os.path.join(work_dir, f"{name}-serial.h5")
-    serial = run([serial_program, "generate"] + arguments + ["--output", serial_output])
-    if serial.returncode != 0:
-        fail(f"{name}: the serial program failed ({serial.returncode}): {serial.stderr.strip()}")
+    serial_output = harness.serial_output(name, "generate", arguments)
+    if serial_output is None:
         return
-    for processes in kProcessCounts:
-        output = os.path.join(work_dir, f"{name}-np{processes}.h5")
-        if os.path.exists(output):
-            os.remove(output)
-        distributed = run_mpi(processes, ["generate"] + arguments + ["--output", output])
-        where = f"{name}, {processes} processes"
-        if distributed.returncode != 0:
-            fail(f"{where}: exit {distributed.returncode}: {distributed.stderr.strip()}")
-            continue
+    for where, output in harness.distributed_outputs(name, "generate", arguments, kProcessCounts):
         compare_files(where, output, serial_output, ("height",), kTolerance, frozenset())
 
 

@@ -131,31 +131,17 @@ def compare_csv(where, got_path, want_path):
 
 
 def solve_case(name, arguments, process_counts=kProcessCounts, sweep=False, deflated=False):
-    serial_output = os.path.join(work_dir, f"{name}-serial.h5")
-    serial = run([serial_program, "solve"] + arguments + ["--output", serial_output])
-    if serial.returncode != 0:
-        fail(f"{name}: the serial program failed ({serial.returncode}): {serial.stderr.strip()}")
+    serial_output = harness.serial_output(name, "solve", arguments)
+    if serial_output is None:
         return
     if deflated:
         with h5py.File(serial_output, "r") as want:
             if not want.attrs["deflated_iterations"] > 0:
                 fail(f"{name}: the serial solve never applied the block deflation, so the case tests nothing of it")
-    for processes in process_counts:
-        output = os.path.join(work_dir, f"{name}-np{processes}.h5")
-        for path in (output, output[:-3] + ".csv"):
-            if os.path.exists(path):
-                os.remove(path)
-        distributed = run_mpi(processes, ["solve"] + arguments + ["--output", output])
-        where = f"{name}, {processes} processes"
-        if distributed.returncode != 0:
-            fail(f"{where}: exit {distributed.returncode}: {distributed.stderr.strip()}")
-            continue
+    for where, output in harness.distributed_outputs(name, "solve", arguments, process_counts):
         compare_files(where, output, serial_output)
         if sweep:
             compare_csv(where, output[:-3] + ".csv", serial_output[:-3] + ".csv")
-        leftovers = [f for f in os.listdir(work_dir) if ".tmp-" in f]
-        if leftovers:
-            fail(f"{where}: temporaries left behind: {leftovers}")
 
 
 def failure_case(name, processes, arguments, message, output):

@@ -98,24 +98,11 @@ def compare_files(where, got_path, want_path):
 
 
 def solve_case(name, arguments, process_counts=kProcessCounts):
-    serial_output = os.path.join(work_dir, f"{name}-serial.h5")
-    serial = run([serial_program, "solve"] + arguments + ["--output", serial_output])
-    if serial.returncode != 0:
-        fail(f"{name}: the serial program failed ({serial.returncode}): {serial.stderr.strip()}")
+    serial_output = harness.serial_output(name, "solve", arguments)
+    if serial_output is None:
         return
-    for processes in process_counts:
-        output = os.path.join(work_dir, f"{name}-np{processes}.h5")
-        if os.path.exists(output):
-            os.remove(output)
-        distributed = run_mpi(processes, ["solve"] + arguments + ["--output", output])
-        where = f"{name}, {processes} processes"
-        if distributed.returncode != 0:
-            fail(f"{where}: exit {distributed.returncode}: {distributed.stderr.strip()}")
-            continue
+    for where, output in harness.distributed_outputs(name, "solve", arguments, process_counts):
         compare_files(where, output, serial_output)
-        leftovers = [f for f in os.listdir(work_dir) if ".tmp-" in f]
-        if leftovers:
-            fail(f"{where}: temporaries left behind: {leftovers}")
 
 
 def failure_case(name, processes, arguments, message, output):

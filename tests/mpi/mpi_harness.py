@@ -29,3 +29,36 @@ class Harness:
     def fail(self, message):
         print("FAIL: " + message)
         self.failures.append(message)
+
+    def temporaries(self):
+        return [f for f in os.listdir(self.work_dir) if ".tmp-" in f]
+
+    def serial_output(self, name, command, arguments, exit_code=0):
+        """The serial program's file for `name` (`command` is solve or
+        generate), or None after recording its failure."""
+        output = os.path.join(self.work_dir, f"{name}-serial.h5")
+        serial = self.run([self.serial_program, command] + arguments + ["--output", output])
+        if serial.returncode != exit_code:
+            self.fail(f"{name}: the serial program failed ({serial.returncode}): {serial.stderr.strip()}")
+            return None
+        return output
+
+    def distributed_outputs(self, name, command, arguments, process_counts, exit_code=0):
+        """Runs the MPI program on each process count and yields (where,
+        file) of each run that exits with `exit_code`, after removing the
+        file (and its sweep's CSV) of an earlier run; a run that exits
+        otherwise, and temporaries left behind, are recorded as failures."""
+        for processes in process_counts:
+            output = os.path.join(self.work_dir, f"{name}-np{processes}.h5")
+            for path in (output, output[:-3] + ".csv"):
+                if os.path.exists(path):
+                    os.remove(path)
+            distributed = self.run_mpi(processes, [command] + arguments + ["--output", output])
+            where = f"{name}, {processes} processes"
+            if distributed.returncode != exit_code:
+                self.fail(f"{where}: exit {distributed.returncode}, expected {exit_code}: "
+                          f"{distributed.stderr.strip()}")
+                continue
+            yield where, output
+            if self.temporaries():
+                self.fail(f"{where}: temporaries left behind: {self.temporaries()}")

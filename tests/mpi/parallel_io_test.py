@@ -128,10 +128,8 @@ def periodic_clusters(contact):
 
 
 def solve_case(name, arguments, process_counts=kProcessCounts, exact=(), check_clusters=False, exit_code=0):
-    serial_output = os.path.join(work_dir, f"{name}-serial.h5")
-    serial = run([serial_program, "solve"] + arguments + ["--output", serial_output])
-    if serial.returncode != exit_code:
-        fail(f"{name}: the serial program failed ({serial.returncode}): {serial.stderr.strip()}")
+    serial_output = harness.serial_output(name, "solve", arguments, exit_code)
+    if serial_output is None:
         return
     if check_clusters:
         with h5py.File(serial_output, "r") as f:
@@ -140,18 +138,8 @@ def solve_case(name, arguments, process_counts=kProcessCounts, exact=(), check_c
                 fail(f"{name}: the serial file records {int(f.attrs['clusters'])} clusters, counted {counted}")
             else:
                 print(f"{name}: {counted} contact clusters")
-    for processes in process_counts:
-        output = os.path.join(work_dir, f"{name}-np{processes}.h5")
-        if os.path.exists(output):
-            os.remove(output)
-        distributed = run_mpi(processes, ["solve"] + arguments + ["--output", output])
-        where = f"{name}, {processes} processes"
-        if distributed.returncode != exit_code:
-            fail(f"{where}: exit {distributed.returncode}, expected {exit_code}: {distributed.stderr.strip()}")
-            continue
+    for where, output in harness.distributed_outputs(name, "solve", arguments, process_counts, exit_code):
         compare_files(where, output, serial_output, exact)
-        if leftovers():
-            fail(f"{where}: temporaries left behind: {leftovers()}")
 
 
 def failure_case(name, processes, arguments, message, output, same_message=True):
