@@ -50,21 +50,7 @@ Eigen::ArrayXd make_self_affine_slab(const Grid& grid, const surface::SelfAffine
   // over the whole grid.
   Eigen::ArrayXd heights(static_cast<Eigen::Index>(layout.local_size()));
   fft.backward({heights.data(), layout.local_size()});
-  const std::size_t n = layout.local_size();
-  const double mean =
-      linalg::sum(comm, n, [&](std::size_t i) { return heights[static_cast<Eigen::Index>(i)]; }) / cells;
-  heights -= mean;
-  double scale = 0.0;
-  if (spec.rms_height) {
-    const double square = linalg::sum(comm, n, [&](std::size_t i) {
-      const double h = heights[static_cast<Eigen::Index>(i)];
-      return h * h;
-    });
-    scale = *spec.rms_height / std::sqrt(square / cells);
-  } else {
-    scale = *spec.rms_slope / std::sqrt(slope_sq);
-  }
-  heights *= scale;
+  surface::detail::remove_mean_and_scale(heights, spec, slope_sq, cells, comm);
   return heights;
 }
 

@@ -116,20 +116,7 @@ Eigen::ArrayXd make_self_affine_surface(const Grid& grid, const SelfAffineSpec& 
   fft.backward();
   Eigen::ArrayXd heights =
       Eigen::Map<const Eigen::ArrayXd>(fft.output().data(), static_cast<Eigen::Index>(grid.size()));
-  const double mean =
-      linalg::sum(grid.size(), [&](std::size_t i) { return heights[static_cast<Eigen::Index>(i)]; }) / cells;
-  heights -= mean;
-  double scale = 0.0;
-  if (spec.rms_height) {
-    const double square = linalg::sum(grid.size(), [&](std::size_t i) {
-      const double h = heights[static_cast<Eigen::Index>(i)];
-      return h * h;
-    });
-    scale = *spec.rms_height / std::sqrt(square / cells);
-  } else {
-    scale = *spec.rms_slope / std::sqrt(slope_sq);
-  }
-  heights *= scale;
+  detail::remove_mean_and_scale(heights, spec, slope_sq, cells, linalg::serial_communicator());
   return heights;
 }
 

@@ -3,6 +3,7 @@
 // fill the same modes with the same values, each its own part.
 #pragma once
 
+#include <Eigen/Core>
 #include <cmath>
 #include <complex>
 #include <cstddef>
@@ -10,6 +11,7 @@
 #include <numbers>
 
 #include "halfspace/grid.hpp"
+#include "halfspace/linalg/parallel.hpp"
 #include "halfspace/surface/self_affine.hpp"
 
 namespace halfspace::surface::detail {
@@ -101,6 +103,29 @@ inline double slope_weight(const ModeGeometry& modes, std::size_t c, std::size_t
   const double qx = modes.qx_unit * static_cast<double>(c);
   const double qy = modes.qy_unit * static_cast<double>(modes.ky(r));
   return (c == 0 ? 1.0 : 2.0) * (qx * qx + qy * qy);
+}
+
+// Step 3's end, on the whole grid or a process's rows of it: the
+// rounding-level mean removed and the heights scaled to the requested rms
+// height, or to the rms slope whose square the spectrum gave
+// (`slope_squared`); the sums run over `comm`'s processes.
+inline void remove_mean_and_scale(Eigen::ArrayXd& heights, const SelfAffineSpec& spec, double slope_squared,
+                                  double cells, const linalg::Communicator& comm) {
+  const auto n = static_cast<std::size_t>(heights.size());
+  const double mean =
+      linalg::sum(comm, n, [&](std::size_t i) { return heights[static_cast<Eigen::Index>(i)]; }) / cells;
+  heights -= mean;
+  double scale = 0.0;
+  if (spec.rms_height) {
+    const double square = linalg::sum(comm, n, [&](std::size_t i) {
+      const double h = heights[static_cast<Eigen::Index>(i)];
+      return h * h;
+    });
+    scale = *spec.rms_height / std::sqrt(square / cells);
+  } else {
+    scale = *spec.rms_slope / std::sqrt(slope_squared);
+  }
+  heights *= scale;
 }
 
 }  // namespace halfspace::surface::detail
