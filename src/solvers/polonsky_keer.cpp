@@ -253,7 +253,17 @@ class Iteration {
     const double beta = conjugate_ ? search_norm_ / previous_norm_ : 0.0;
     const double* z = z_;
     const double z_mean = z_mean_;
-    for_each_index(n_, [&](std::size_t i) { t_[i] = set_.contains(i) ? (z[i] - z_mean) + beta * t_[i] : 0.0; });
+    // Under load control the carried-over direction is made mean-free on the
+    // current set too: cells that left the set took part of it with them.
+    // A direction with a mean moves the load the scaling then puts back, and
+    // its curvature t.Kt - mean(Kt) sum(t) can vanish or turn negative: on a
+    // measured profile the solve broke down at random, by the FFT plan's
+    // rounding. Not in Polonsky & Keer's paper; docs/solvers.md has the
+    // iterations it saves.
+    const double t_mean =
+        problem_.load_controlled && beta != 0.0 && search_cells_ > 0.0 ? direction_sum_ / search_cells_ : 0.0;
+    for_each_index(n_,
+                   [&](std::size_t i) { t_[i] = set_.contains(i) ? (z[i] - z_mean) + beta * (t_[i] - t_mean) : 0.0; });
     previous_norm_ = search_norm_;
   }
 
@@ -262,7 +272,9 @@ class Iteration {
   // the current set. After a restart tau is positive; a conjugate direction
   // can give a negative one, which is still a valid step, but then no cell
   // enters and the next step restarts. False (breakdown) if t.Kt is not
-  // positive.
+  // positive: K is positive definite on directions that are mean-free on
+  // the set, as conjugate() keeps them under load control (the curvature
+  // t.Kt - mean(Kt) sum(t) of a direction with a mean can vanish).
   bool step_length(int iteration) {
     op_.apply({t_, n_}, {r_, n_});
     ++result_.operator_applications;
@@ -550,8 +562,8 @@ class Iteration {
     // pressure-weighted gap by its positive part only (see the header).
     const bool capped = bounds_.capped();
     const double upper = bounds_.upper;
-    const auto [weighted_gap, overlap, pressure_sum, gap_norm, gap_along, released] =
-        sums<6>(comm_, n_, [&](std::size_t i) {
+    const auto [weighted_gap, overlap, pressure_sum, gap_norm, gap_along, released, direction_sum] =
+        sums<7>(comm_, n_, [&](std::size_t i) {
           g_[i] = problem_.initial_gap[i] + u_[i] - approach;
           const double in_set = set_.contains(i) ? 1.0 : 0.0;  // a mask, not a branch
           if (store_gap) r_[i] = in_set * g_[i];
@@ -559,10 +571,12 @@ class Iteration {
           const double weighted = capped ? p_[i] * std::max(g_[i], 0.0) : p_[i] * std::abs(g_[i]);
           const double overlap_weight = capped ? (upper - p_[i]) / upper : 1.0;
           const double release = capped && bounds_.at_cap(p_[i]) && g_[i] > 0.0 ? 1.0 : 0.0;
-          return std::array<double, 6>{
-              weighted, overlap_weight * over, p_[i], in_set * (g_[i] * g_[i]), in_set * (g_[i] * t_[i]), release};
+          return std::array<double, 7>{
+              weighted, overlap_weight * over, p_[i], in_set * (g_[i] * g_[i]), in_set * (g_[i] * t_[i]),
+              release,  in_set * t_[i]};
         });
     released_cells_ = released;
+    direction_sum_ = direction_sum;
     gap_norm_ = gap_norm;
     gap_along_direction_ = gap_along;
     const double cells = cells_;
@@ -600,6 +614,7 @@ class Iteration {
   double released_cells_ = 0.0;       // cells at the cap whose gap is positive
   double gap_norm_ = 0.0;             // sum over the search set of g^2
   double gap_along_direction_ = 0.0;  // sum over the search set of g t_old
+  double direction_sum_ = 0.0;        // sum over the search set of t_old
   const double* z_ = nullptr;         // z: g itself, or M^-1 g in r
   double z_mean_ = 0.0;
   double search_cells_ = 0.0;
