@@ -18,6 +18,7 @@
 
 #include "halfspace/error.hpp"
 #include "hdf5_handle.hpp"
+#include "hdf5_superblock.hpp"
 #include "reader_support.hpp"
 
 namespace halfspace::io {
@@ -102,6 +103,9 @@ File open_file(const Target& target, detail::ErrorPrintingOff& quiet, hid_t acce
     target.fail(fmt::format("the file cannot be opened: {}", detail::error_reason()));
   }
   if (is_hdf5 == 0) target.fail("the file is not an HDF5 file (no HDF5 signature found)");
+  if (const auto problem = detail::hdf5_superblock_problem(target.path)) {
+    target.fail(fmt::format("the HDF5 file is damaged: {}", *problem));
+  }
 
   File file(H5Fopen(target.path.c_str(), H5F_ACC_RDONLY, access));
   if (!file.valid()) {

@@ -10,6 +10,7 @@
 
 #include "halfspace/error.hpp"
 #include "hdf5_handle.hpp"
+#include "hdf5_superblock.hpp"
 
 namespace halfspace::io {
 namespace {
@@ -145,6 +146,9 @@ StoredResult read_result(const std::filesystem::path& path, int step) {
   const htri_t is_hdf5 = H5Fis_hdf5(path.c_str());
 #endif
   if (is_hdf5 <= 0) reader.fail("not an HDF5 file");
+  if (const auto problem = detail::hdf5_superblock_problem(path)) {
+    reader.fail(fmt::format("the HDF5 file is damaged: {}", *problem));
+  }
   const File file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
   if (!file.valid()) reader.fail(detail::error_reason());
 

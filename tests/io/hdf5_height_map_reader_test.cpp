@@ -591,3 +591,67 @@ TEST(Hdf5HeightMapReaderTest, AMetadataEntryTooLargeToAllocateIsAFileError) {
 }
 
 }  // namespace halfspace::io
+
+namespace halfspace::io {
+namespace {
+
+// A 50-byte file the fuzzer found: a version 0 superblock, cut short, whose
+// reserved byte 15 is 0xf9. libhdf5 1.10 read it as a size and allocated
+// 4 GiB (16 MiB per unit of the byte) for 12 s before failing; the reserved
+// fields are now checked before HDF5 sees the file (hdf5_superblock.hpp).
+TEST(Hdf5HeightMapReaderTest, ASuperblockWithAReservedByteSetIsRefusedBeforeHdf5ReadsIt) {
+  const TempDir dir;
+  const fs::path path = dir / "reserved.h5";
+  const std::vector<unsigned char> bytes{0x89, 0x48, 0x44, 0x46, 0x0d, 0x0a, 0x1a, 0x0a, 0x00, 0x00, 0x00, 0x00, 0x00,
+                                         0x08, 0x08, 0xf9, 0x03, 0x3b, 0x4f, 0x10, 0x00, 0x00, 0x00, 0x48, 0x00, 0x00,
+                                         0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff,
+                                         0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x08, 0x00};
+  test::write_bytes(path, std::string(bytes.begin(), bytes.end()));
+  expect_contains(read_error(path), {path.string(), "damaged", "reserved byte 15 is 249 (must be 0)"});
+}
+
+// Each fixed field of a good file's superblock, spoiled in turn.
+TEST(Hdf5HeightMapReaderTest, DamagedSuperblockFieldsAreNamed) {
+  const TempDir dir;
+  const std::string good = test::read_bytes(write_height_file(dir, {2, 3}, {1, 2, 3, 4, 5, 6}));
+  ASSERT_EQ(good.substr(0, 4), "\x89HDF");
+  const unsigned version = static_cast<unsigned char>(good[8]);
+  ASSERT_LE(version, 3u);
+  const std::size_t offsets_at = version <= 1 ? 13 : 9;
+  struct Case {
+    std::size_t at;
+    char value;
+    std::string expected;
+  };
+  for (const Case& c : {Case{8, '\x09', "superblock version 9"}, Case{offsets_at, '\x03', "size of offsets is 3"},
+                        Case{offsets_at + 1, '\x05', "size of lengths is 5"}}) {
+    std::string bytes = good;
+    bytes[c.at] = c.value;
+    const fs::path path = dir / "spoiled.h5";
+    test::write_bytes(path, bytes);
+    expect_contains(read_error(path), {path.string(), "damaged", c.expected});
+  }
+  const fs::path path = dir / "cut.h5";
+  test::write_bytes(path, good.substr(0, 40));
+  expect_contains(read_error(path), {path.string(), "damaged", "cut short"});
+}
+
+// The signature may follow a user block (512, 1024, ... bytes): the check
+// finds it there and reads the file.
+TEST(Hdf5HeightMapReaderTest, ReadsAFileWithAUserBlock) {
+  const TempDir dir;
+  const fs::path path = dir / "user-block.h5";
+  {
+    const hid_t create = H5Pcreate(H5P_FILE_CREATE);
+    ASSERT_GE(H5Pset_userblock(create, 1024), 0);
+    const test::H5 file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, create, H5P_DEFAULT), H5Fclose, "create");
+    H5Pclose(create);
+    add_double_dataset(file.get(), "/height", {2, 2}, {1.0, 2.0, 3.0, 4.0});
+  }
+  ASSERT_EQ(test::read_bytes(path).substr(1024, 4), "\x89HDF") << "no user block written";
+  const HeightMap map = read_hdf5_height_map(path, "/height");
+  EXPECT_EQ(map.heights[3], 4.0);
+}
+
+}  // namespace
+}  // namespace halfspace::io

@@ -1,0 +1,102 @@
+#include "hdf5_superblock.hpp"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <cstdint>
+#include <fstream>
+
+namespace halfspace::io::detail {
+namespace {
+
+constexpr std::array<unsigned char, 8> kSignature = {0x89, 'H', 'D', 'F', '\r', '\n', 0x1a, '\n'};
+
+bool valid_field_size(unsigned size) {
+  return size == 2 || size == 4 || size == 8 || size == 16 || size == 32;
+}
+
+// The superblock after its signature (`at` bytes into the file), or a
+// problem. `fixed` holds the bytes from the version on, as many as the file has.
+std::optional<std::string> superblock_problem(const std::array<unsigned char, 32>& fixed, std::size_t available,
+                                              std::uintmax_t at, std::uintmax_t file_size) {
+  auto need = [&](std::size_t bytes) -> std::optional<std::string> {
+    if (available >= bytes) return std::nullopt;
+    return fmt::format("the superblock at byte {} is cut short: the file ends after {} of its bytes", at,
+                       8 + available);
+  };
+  if (auto cut = need(1)) return cut;
+  const unsigned version = fixed[0];
+  if (version > 3) return fmt::format("superblock version {} is not one HDF5 defines (0 to 3)", version);
+  if (version >= 2) {
+    // Version, sizes of offsets and lengths, flags, then four addresses and
+    // a checksum (which HDF5 verifies).
+    if (auto cut = need(3)) return cut;
+    const unsigned offsets = fixed[1];
+    const unsigned lengths = fixed[2];
+    if (!valid_field_size(offsets)) return fmt::format("the superblock's size of offsets is {} bytes", offsets);
+    if (!valid_field_size(lengths)) return fmt::format("the superblock's size of lengths is {} bytes", lengths);
+    const std::uintmax_t size = 8 + 4 + 4 * static_cast<std::uintmax_t>(offsets) + 4;
+    if (at + size > file_size) {
+      return fmt::format("the superblock at byte {} is cut short: it needs {} bytes, the file has {}", at, size,
+                         file_size - at);
+    }
+    return std::nullopt;
+  }
+  // Versions 0 and 1: eight one-byte fields, two reserved; two B-tree K
+  // values; the consistency flags; (version 1) a third K and two reserved
+  // bytes; four addresses and the root group's symbol table entry.
+  const std::size_t prefix = version == 0 ? 16 : 20;
+  if (auto cut = need(prefix)) return cut;
+  const char* names[] = {"free-space storage version", "root group symbol table entry version", "reserved byte 11",
+                         "shared header message format version"};
+  for (int k = 0; k < 4; ++k) {
+    if (fixed[1 + k] != 0) return fmt::format("the superblock's {} is {} (must be 0)", names[k], fixed[1 + k]);
+  }
+  const unsigned offsets = fixed[5];
+  const unsigned lengths = fixed[6];
+  if (!valid_field_size(offsets)) return fmt::format("the superblock's size of offsets is {} bytes", offsets);
+  if (!valid_field_size(lengths)) return fmt::format("the superblock's size of lengths is {} bytes", lengths);
+  if (fixed[7] != 0) return fmt::format("the superblock's reserved byte 15 is {} (must be 0)", fixed[7]);
+  const unsigned leaf_k = fixed[8] | (fixed[9] << 8);
+  const unsigned internal_k = fixed[10] | (fixed[11] << 8);
+  if (leaf_k == 0 || internal_k == 0) {
+    return fmt::format("the superblock's group B-tree K values are {} and {} (must be positive)", leaf_k, internal_k);
+  }
+  if (version == 1) {
+    const unsigned storage_k = fixed[16] | (fixed[17] << 8);
+    if (storage_k == 0) return "the superblock's indexed storage B-tree K is 0 (must be positive)";
+    if (fixed[18] != 0 || fixed[19] != 0) return "the superblock's reserved bytes 26-27 are not 0";
+  }
+  // Four addresses and the root group's symbol table entry (two offsets,
+  // cache type, reserved, 16-byte scratch pad).
+  const std::uintmax_t size = 8 + prefix + 6 * static_cast<std::uintmax_t>(offsets) + 24;
+  if (at + size > file_size) {
+    return fmt::format("the superblock at byte {} is cut short: it needs {} bytes, the file has {}", at, size,
+                       file_size - at);
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<std::string> hdf5_superblock_problem(const std::filesystem::path& path) {
+  std::error_code error;
+  const std::uintmax_t file_size = std::filesystem::file_size(path, error);
+  if (error) return std::nullopt;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  // The signature is at byte 0 or after a user block of 512, 1024, 2048, ... bytes.
+  for (std::uintmax_t at = 0; at + 8 <= file_size; at = at == 0 ? 512 : 2 * at) {
+    std::array<unsigned char, 8> signature{};
+    in.seekg(static_cast<std::streamoff>(at));
+    if (!in.read(reinterpret_cast<char*>(signature.data()), signature.size())) return std::nullopt;
+    if (signature != kSignature) continue;
+    std::array<unsigned char, 32> fixed{};
+    in.read(reinterpret_cast<char*>(fixed.data()), fixed.size());
+    const auto available = static_cast<std::size_t>(in.gcount());
+    return superblock_problem(fixed, available, at, file_size);
+  }
+  return std::nullopt;
+}
+
+}  // namespace halfspace::io::detail
