@@ -252,8 +252,9 @@ void expect_plastic_fraction_grows(const Grid& grid, int steps) {
     const SolveResult result = solver.solve(view(gap), Loading::approach(approach));
     ASSERT_TRUE(result.converged()) << "step " << k << ": " << result.message;
     expect_capped_adhesive_conditions(result, options.law, hardness, 1e-5 * hardness);
-    std::printf("step %d: contact %.4f plastic %.4f mean pressure %.4g Pa, %d iterations\n", k,
-                result.contact_fraction, result.plastic_fraction, result.mean_pressure, result.iterations);
+    std::printf("step %d: contact %.4f plastic %.4f mean pressure %.4g Pa, %d iterations, %d FFT pairs\n", k,
+                result.contact_fraction, result.plastic_fraction, result.mean_pressure, result.iterations,
+                result.operator_applications);
     EXPECT_GE(result.plastic_fraction, previous) << "step " << k;
     previous = result.plastic_fraction;
   }
