@@ -27,7 +27,7 @@ namespace {
 using solvers::AdhesiveContactSolver;
 using solvers::AdhesiveSolverOptions;
 
-constexpr double kEStar = 1e6;   // Pa: a soft elastomer
+constexpr double kEStar = 1e6;    // Pa: a soft elastomer
 constexpr double kRadius = 1e-3;  // sphere (cylinder in 1D) radius, m
 constexpr double kWork = 0.05;    // J/m^2
 // The solves stop at this relative residual.
@@ -92,8 +92,8 @@ void expect_capped_adhesive_conditions(const SolveResult& r, const AdhesionLaw& 
   }
   ASSERT_TRUE(r.hardness.has_value());
   EXPECT_EQ(*r.hardness, hardness);
-  EXPECT_EQ(r.plastic_fraction, static_cast<double>((r.pressure >= hardness).count()) /
-                                    static_cast<double>(r.pressure.size()));
+  EXPECT_EQ(r.plastic_fraction,
+            static_cast<double>((r.pressure >= hardness).count()) / static_cast<double>(r.pressure.size()));
 }
 
 // (a) A cap above the uncapped solution's peak is never reached: the same
@@ -152,9 +152,10 @@ void expect_capped_hertz(const Sphere& s, double approach) {
     ASSERT_TRUE(result.converged()) << result.message;
     expect_capped_adhesive_conditions(result, s.law, hardness, 1e-5 * hardness);
     const double difference = (result.pressure.max(0.0) - reference.pressure).abs().maxCoeff();
-    std::printf("%s vs capped PK: max |dp| / H %.3g, plastic fraction %.5g vs %.5g, force %.8g vs %.8g, %d iterations\n",
-                std::string(solver.name()).c_str(), difference / hardness, result.plastic_fraction,
-                reference.plastic_fraction, result.total_force, reference.total_force, result.iterations);
+    std::printf(
+        "%s vs capped PK: max |dp| / H %.3g, plastic fraction %.5g vs %.5g, force %.8g vs %.8g, %d iterations\n",
+        std::string(solver.name()).c_str(), difference / hardness, result.plastic_fraction, reference.plastic_fraction,
+        result.total_force, reference.total_force, result.iterations);
     EXPECT_LE(difference, 5e-5 * hardness);
     EXPECT_NEAR(result.total_force, reference.total_force, 1e-5 * reference.total_force);
     int disagreeing = 0;
@@ -209,7 +210,8 @@ void expect_capped_adhesive_sphere(const Sphere& s, double approach) {
       Eigen::ArrayXd displacement(result.pressure.size());
       operators::FftInfluenceOperator(s.grid, kEStar)
           .apply(view(result.pressure), {displacement.data(), s.grid.size()});
-      const double mismatch = (displacement - result.displacement).abs().maxCoeff() / result.displacement.abs().maxCoeff();
+      const double mismatch =
+          (displacement - result.displacement).abs().maxCoeff() / result.displacement.abs().maxCoeff();
       std::printf("%s: |K p - v| / max |v| = %.3g\n", std::string(solver.name()).c_str(), mismatch);
       EXPECT_LE(mismatch, 1e-4) << "v is not K p";
     }
@@ -266,6 +268,25 @@ TEST(AdhesionHardnessTest, RoughPlasticFractionGrowsAlongALoadingSweepPeriodic2D
 }
 TEST(AdhesionHardnessTest, RoughPlasticFractionGrowsAlongALoadingSweepPeriodic1D) {
   expect_plastic_fraction_grows(Grid::line(512, 1e-6, Boundary::periodic), 8);
+}
+
+// The front ends' route: SolverOptions with adhesion and a hardness (no
+// longer refused) build the adhesive solver with the cap.
+TEST(AdhesionHardnessTest, SolverOptionsCombineAdhesionAndHardness) {
+  const Sphere s = sphere(2, Boundary::free);
+  solvers::SolverOptions options;
+  options.adhesion = solvers::SolverOptions::Adhesion{s.law, kSolveTolerance, true};
+  options.interface_law.hardness = 2e4;
+  options.fft_planning = FftPlanning::estimate;
+  ASSERT_NO_THROW(options.validate(s.grid));
+  const auto solver = solvers::make_solver(s.grid, kEStar, options);
+  EXPECT_EQ(solver->name(), "adhesive-pcg");
+  const SolveResult result = solver->solve(view(s.gap), Loading::approach(1.5 * s.law.range));
+  ASSERT_TRUE(result.converged()) << result.message;
+  ASSERT_TRUE(result.hardness.has_value());
+  EXPECT_EQ(*result.hardness, 2e4);
+  EXPECT_GT(result.plastic_fraction, 0.0);
+  EXPECT_EQ(result.max_pressure, 2e4);
 }
 
 // Load control beyond H times the area has no solution: refused.

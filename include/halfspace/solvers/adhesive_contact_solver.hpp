@@ -138,7 +138,10 @@ class AdhesiveContactSolver final : public ContactSolver {
   // (beyond pull-off). `initial_pressure` (Pa, signed), if given,
   // warm-starts from the displacement K p it makes. The result's pressure
   // is signed (negative: attraction); contact_fraction counts the cells at
-  // the wall (gap 0); result.adhesion holds the adhesive quantities.
+  // the wall (gap 0; with a cap also those below it, gap < 0 at p = H);
+  // result.adhesion holds the adhesive quantities, result.hardness and
+  // plastic_fraction the cap's. With a cap, a load above H times the domain
+  // area throws InputError (InterfaceLaw::check_load).
   SolveResult solve(std::span<const double> initial_gap, const Loading& loading,
                     std::span<const double> initial_pressure = {}) override;
 
