@@ -2,20 +2,23 @@
 // docs/theory.md "Adhesion with a hardness cap"): a cap above the peak
 // changes nothing; with vanishing adhesion it is the capped Hertz contact of
 // Polonsky-Keer; an adhesive sphere under a cap below its peak keeps p <= H,
-// is in equilibrium (v = K p) and carries less force than without the cap;
-// a rough surface's plastic fraction grows along a loading sweep. Free and
+// is in equilibrium (v = K p) and carries less force than without the cap,
+// and once flattened it pulls off harder; a rough surface's plastic
+// fraction grows along a loading sweep. Free and
 // periodic grids, 1D and 2D, both minimisers.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <numbers>
 #include <span>
 #include <vector>
 
 #include "halfspace/operators/fft_influence_operator.hpp"
 #include "halfspace/solvers/adhesive_contact_solver.hpp"
+#include "halfspace/solvers/interface_law.hpp"
 #include "halfspace/solvers/solver_factory.hpp"
 #include "support/grid_fields.hpp"
 #include "support/pk_solvers.hpp"
@@ -234,6 +237,60 @@ TEST(AdhesionHardnessTest, AdhesiveSphereUnderTheCapPeriodic2D) {
 TEST(AdhesionHardnessTest, AdhesiveCylinderUnderTheCapFree1D) {
   const Sphere s = sphere(1, Boundary::free);
   expect_capped_adhesive_sphere(s, 2.0 * s.law.range);
+}
+
+// The plastic flattening raises the pull-off. The capped model is
+// reversible (docs/theory.md), so the flattened sphere is built as a
+// history would keep it: the heights lowered by the plastic displacement
+// of a capped solve at the deepest approach, h' = h + max(0, -g) at the
+// plastic cells. (i) The capped solution is an equilibrium of the elastic
+// adhesive problem on h' (its plastic cells now touch at g = 0 with p = H):
+// started from it, the solve stays there (pressures to 1e-4 H). (ii)
+// Unloaded elastically from there, the flattened tip, more conforming, pulls
+// harder than the sphere unloaded from the same approach (Mesarovic &
+// Johnson 2000, J. Mech. Phys. Solids 48, 2009: the pull-off force rises
+// with the plastic deformation).
+double pull_off(const Sphere& s, const Eigen::ArrayXd& gap, double from, const Eigen::ArrayXd& start) {
+  AdhesiveContactSolver solver = adhesive_solver(s, std::nullopt);
+  Eigen::ArrayXd pressure = start;
+  double least = std::numeric_limits<double>::infinity();
+  for (int k = 0; k <= 80; ++k) {
+    const double approach = from - 0.1 * k * s.law.range;
+    const SolveResult r = solver.solve(view(gap), Loading::approach(approach), view(pressure));
+    EXPECT_TRUE(r.converged()) << "approach " << approach << ": " << r.message;
+    least = std::min(least, r.total_force);
+    pressure = r.pressure;
+  }
+  // The sweep went past the pull-off: the surfaces have let go.
+  EXPECT_GT(solver.solve(view(gap), Loading::approach(from - 8.0 * s.law.range), view(pressure)).total_force,
+            0.5 * least);
+  return least;
+}
+
+TEST(AdhesionHardnessTest, PlasticFlatteningRaisesThePullOffFree2D) {
+  const Sphere s = sphere(2, Boundary::free);
+  const double deepest = 1.5 * s.law.range;
+  AdhesiveContactSolver plain = adhesive_solver(s, std::nullopt);
+  const SolveResult elastic = plain.solve(view(s.gap), Loading::approach(deepest));
+  ASSERT_TRUE(elastic.converged()) << elastic.message;
+  const double hardness = 0.6 * elastic.max_pressure;
+  AdhesiveContactSolver capped_solver = adhesive_solver(s, hardness);
+  const SolveResult capped = capped_solver.solve(view(s.gap), Loading::approach(deepest));
+  ASSERT_TRUE(capped.converged()) << capped.message;
+  const Eigen::ArrayXd flattened =
+      s.gap + solvers::plastic_displacement(view(capped.pressure), view(capped.gap), hardness);
+  ASSERT_GT(flattened.sum(), s.gap.sum());
+
+  AdhesiveContactSolver check = adhesive_solver(s, std::nullopt);
+  const SolveResult kept = check.solve(view(flattened), Loading::approach(deepest), view(capped.pressure));
+  ASSERT_TRUE(kept.converged()) << kept.message;
+  EXPECT_LE((kept.pressure - capped.pressure).abs().maxCoeff(), 1e-4 * hardness);
+
+  const double sphere_pull_off = pull_off(s, s.gap, deepest, elastic.pressure);
+  const double flattened_pull_off = pull_off(s, flattened, deepest, capped.pressure);
+  std::printf("pull-off: sphere %.6g, flattened (plastic fraction %.4g) %.6g\n", sphere_pull_off,
+              capped.plastic_fraction, flattened_pull_off);
+  EXPECT_LT(flattened_pull_off, sphere_pull_off);
 }
 
 // (d) A rough periodic surface pressed in steps, each warm-started from the
