@@ -568,7 +568,9 @@ SolveResult AdhesiveContactSolver::Impl::solve_displacement(std::span<const doub
       ++result.operator_applications;
       // Energy changes, not energies: near the solution the change is far
       // below the rounding of the energy itself. Non-monotone as SPG's: the
-      // change is measured against the largest of the last kMemory energies.
+      // change is measured against the largest of the last kMemory energies;
+      // monotone with a cap (non-monotone steps cycled there: a rough sweep
+      // alternated between two held sets for 20000 iterations).
       const double allowance = capped ? 0.0 : *std::max_element(recent.begin(), recent.end()) - energy;
       const std::array<double, 2> along = linalg::sums<2>(m, [&](std::size_t i) {
         return std::array<double, 2>{direction[i] * sx[i], direction[i] * s_direction[i]};
