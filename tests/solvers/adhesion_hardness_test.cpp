@@ -327,6 +327,25 @@ TEST(AdhesionHardnessTest, RoughPlasticFractionGrowsAlongALoadingSweepPeriodic1D
   expect_plastic_fraction_grows(Grid::line(512, 1e-6, Boundary::periodic), 8);
 }
 
+// Load control with a cap: the approach search finds the displacement-
+// controlled state that carries its force (approach to 1e-4 of the
+// adhesive range, the same plastic cells).
+TEST(AdhesionHardnessTest, LoadControlFindsTheCappedDisplacementControlledStateFree2D) {
+  const Sphere s = sphere(2, Boundary::free);
+  const double approach = 1.5 * s.law.range;
+  const double hardness = 2e4;
+  AdhesiveContactSolver by_approach = adhesive_solver(s, hardness);
+  const SolveResult reference = by_approach.solve(view(s.gap), Loading::approach(approach));
+  ASSERT_TRUE(reference.converged()) << reference.message;
+  ASSERT_GT(reference.plastic_fraction, 0.0);
+  AdhesiveContactSolver by_force = adhesive_solver(s, hardness);
+  const SolveResult result = by_force.solve(view(s.gap), Loading::force(reference.total_force));
+  ASSERT_TRUE(result.converged()) << result.message;
+  EXPECT_NEAR(result.approach, approach, 1e-4 * s.law.range);
+  EXPECT_NEAR(result.total_force, reference.total_force, 1e-5 * std::abs(reference.total_force));
+  EXPECT_EQ(result.plastic_fraction, reference.plastic_fraction);
+}
+
 // The front ends' route: SolverOptions with adhesion and a hardness (no
 // longer refused) build the adhesive solver with the cap.
 TEST(AdhesionHardnessTest, SolverOptionsCombineAdhesionAndHardness) {
