@@ -146,7 +146,8 @@ def solve(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
         "patient"; deflation_block: 0 turns the block-deflation correction
         off, B > 0 forces blocks of B x B cells (None: automatic).
     hardness: a hardness cap H (Pa): 0 <= p <= H, cells at H flow
-        plastically (``Result.plastic_fraction``); every solver but lemke.
+        plastically (``Result.plastic_fraction``); every solver but lemke,
+        and the adhesive one (with ``adhesion``).
     adhesion: "md" (Maugis-Dugdale) or "exponential", with
         work_of_adhesion (J/m^2) and adhesion_range (h0 or rho, m) or, for
         md, adhesion_stress (sigma0, Pa). Adhesion has its own solver

@@ -21,6 +21,7 @@
 #include "halfspace/kernels/plane_strain_strip.hpp"
 #include "halfspace/linalg/parallel.hpp"
 #include "halfspace/material.hpp"
+#include "halfspace/solvers/interface_law.hpp"
 
 namespace halfspace::solvers {
 namespace {
@@ -56,6 +57,7 @@ void AdhesiveSolverOptions::validate() const {
   if (max_load_steps < 1) {
     throw InputError(fmt::format("max_load_steps = {} is invalid: must be at least 1", max_load_steps));
   }
+  InterfaceLaw{hardness}.validate();
 }
 
 struct AdhesiveContactSolver::Impl {
@@ -64,6 +66,8 @@ struct AdhesiveContactSolver::Impl {
         e_star(checked_composite_modulus(e)),
         options(std::move(o)),
         padded(!g.periodic()),
+        capped(options.hardness.has_value()),
+        hardness(options.hardness.value_or(std::numeric_limits<double>::infinity())),
         rows(g.dimension() == 1 ? 1 : (padded ? 2 * g.ny() : g.ny())),
         cols(padded ? 2 * g.nx() : g.nx()),
         fft(rows == 1 ? RealFft(cols, options.fft_planning) : RealFft(rows, cols, options.fft_planning)),
@@ -76,6 +80,7 @@ struct AdhesiveContactSolver::Impl {
       old_gradient.resize(m);
     }
     physical.assign(m, 0);
+    below.assign(m, 0);
     for (std::size_t k = 0; k < grid.size(); ++k) physical[index(k)] = 1;
     if (padded) {
       init_free();
@@ -168,6 +173,7 @@ struct AdhesiveContactSolver::Impl {
   template <class Y>
   std::optional<double> projection_shift(Y&& y) const {
     if (padded) return 0.0;
+    if (capped) return capped_projection_shift(y);
     const std::size_t m = size();
     const auto sum_and_free = [&](double tau) {
       return linalg::sums<2>(m, [&](std::size_t i) {
@@ -188,12 +194,66 @@ struct AdhesiveContactSolver::Impl {
     return tau;
   }
 
+  // With a hardness cap: y - tau moved onto cell i's side of the kink
+  // (below: g <= 0, above: g >= 0); without, max(lower, y - tau).
+  double onto_side(std::size_t i, double shifted) const {
+    return below[i] ? std::min(lower[i], shifted) : std::max(lower[i], shifted);
+  }
+
+  // projection_shift with a cap: the sum of the projection onto the sides
+  // is still decreasing, continuous and piecewise linear in tau, but neither
+  // convex nor concave, so Newton's steps are kept inside a bracket of the
+  // root and replaced by bisection where they leave it, until the sum is
+  // zero to rounding (relative to the sum of |P(y)|).
+  template <class Y>
+  std::optional<double> capped_projection_shift(Y&& y) const {
+    const std::size_t m = size();
+    // The sum of P(y), its count of unclipped cells and the sum of |P(y)|.
+    const auto sums_at = [&](double tau) {
+      return linalg::sums<3>(m, [&](std::size_t i) {
+        const double shifted = y(i) - tau;
+        const double z = onto_side(i, shifted);
+        return std::array<double, 3>{z, z == shifted ? 1.0 : 0.0, std::abs(z)};
+      });
+    };
+    double tau = linalg::sum(m, [&](std::size_t i) { return y(i); }) / static_cast<double>(m);
+    double low = -std::numeric_limits<double>::infinity();  // sum above 0
+    double high = std::numeric_limits<double>::infinity();  // sum below 0
+    std::array<double, 3> s = sums_at(tau);
+    double scale = std::abs(tau);
+    for (int k = 0; k < 400; ++k) {
+      if (!std::isfinite(s[0])) return std::nullopt;
+      if (std::abs(s[0]) <= 1e-14 * s[2]) return tau;
+      (s[0] > 0.0 ? low : high) = tau;
+      if (std::isfinite(low) && std::isfinite(high) && !(high - low > 1e-15 * (std::abs(low) + std::abs(high)))) {
+        return tau;
+      }
+      double next = s[1] > 0.0 ? tau + s[0] / s[1] : std::numeric_limits<double>::quiet_NaN();
+      if (!(next > low && next < high)) {
+        if (std::isfinite(low) && std::isfinite(high)) {
+          next = 0.5 * (low + high);
+        } else {
+          // No slope and no bracket yet: double the step outwards.
+          scale = 2.0 * scale + s[2] / static_cast<double>(m);
+          next = tau + (s[0] > 0.0 ? scale : -scale);
+        }
+      }
+      tau = next;
+      s = sums_at(tau);
+    }
+    return std::nullopt;
+  }
+
   // z = the projection of y (see projection_shift); false if no feasible
   // point exists.
   bool project(const Eigen::ArrayXd& y, Eigen::ArrayXd& z) const {
     const std::optional<double> tau = projection_shift([&](std::size_t i) { return y[i]; });
     if (!tau) return false;
-    linalg::for_each_index(size(), [&](std::size_t i) { z[i] = std::max(lower[i], y[i] - *tau); });
+    if (capped) {
+      linalg::for_each_index(size(), [&](std::size_t i) { z[i] = onto_side(i, y[i] - *tau); });
+    } else {
+      linalg::for_each_index(size(), [&](std::size_t i) { z[i] = std::max(lower[i], y[i] - *tau); });
+    }
     return true;
   }
 
@@ -208,7 +268,7 @@ struct AdhesiveContactSolver::Impl {
     const Maxima largest = linalg::reduce_in_blocks(
         size(), Maxima{0.0, 0.0, 0.0},
         [&](Maxima& acc, std::size_t i) {
-          const double step = std::abs(std::max(lower[i], y(i) - tau) - x[i]);
+          const double step = std::abs((capped ? onto_side(i, y(i) - tau) : std::max(lower[i], y(i) - tau)) - x[i]);
           acc[0] = std::max(acc[0], step);
           acc[2] += std::isfinite(step) ? 0.0 : 1.0;
           if (physical[i]) acc[1] = std::max(acc[1], std::abs(sx[i]));
@@ -228,29 +288,94 @@ struct AdhesiveContactSolver::Impl {
     return linalg::sum(size(), [&](std::size_t i) {
       if (!physical[i]) return 0.0;
       const double g = offset[i] + v[i] + (d ? step * (*d)[i] : 0.0);
-      return law.energy(std::max(g, 0.0));
+      return cell_energy(law, g);
     });
   }
 
-  // gradient = S v - t(g) on the grid, S v on the padding.
+  // The interaction energy per area at gap g, with the cap's plastic work
+  // below the kink (see Hardness cap in the header).
+  double cell_energy(const AdhesionLaw& law, double g) const {
+    return capped && g < 0.0 ? law.energy(0.0) - hardness * g : law.energy(std::max(g, 0.0));
+  }
+  // The pressure the interface exerts at gap g: H below the kink (the
+  // traction above it at g = 0, the side settle() may change).
+  double cell_traction(const AdhesionLaw& law, double g) const {
+    return capped && g < 0.0 ? hardness : law.traction(std::max(g, 0.0));
+  }
+  // Whether cell i is off the wall (the kink): its gradient vanishes there
+  // at the solution, so it measures the periodic multiplier.
+  bool off_wall(std::size_t i) const { return capped ? x[i] != lower[i] : x[i] > lower[i]; }
+
+  // With a cap: the side of every cell for the next step, and the gradient
+  // of the cells on the kink: released below (gradient S v - H) when their
+  // pressure, less the periodic multiplier `shift`, exceeds H; otherwise
+  // above (S v - t(0), held or released as without a cap).
+  void settle(double shift) {
+    if (!capped) return;
+    const double jump = hardness - options.law.traction(0.0);
+    linalg::for_each_index(size(), [&](std::size_t i) {
+      if (x[i] == lower[i]) {
+        const bool flows = gradient[i] - jump - shift > 0.0;
+        if (flows) gradient[i] -= jump;
+        below[i] = flows ? 1 : 0;
+      } else {
+        below[i] = x[i] < lower[i] ? 1 : 0;
+      }
+    });
+  }
+
+  // gradient = S v - t(g) on the grid, S v on the padding (with a cap,
+  // the sides settled).
   void make_gradient() {
     const AdhesionLaw& law = options.law;
     linalg::for_each_index(size(), [&](std::size_t i) {
-      gradient[i] = physical[i] ? sx[i] - law.traction(std::max(offset[i] + x[i], 0.0)) : sx[i];
+      gradient[i] = physical[i] ? sx[i] - cell_traction(law, offset[i] + x[i]) : sx[i];
     });
+    if (capped) settle(mean_shift());
   }
 
   // Whether cell i is held by the wall: at its bound with the gradient,
   // less the multiplier `shift` of the periodic mean constraint, pushing
   // into the wall.
-  bool binding(std::size_t i, double shift) const { return x[i] <= lower[i] && gradient[i] - shift > 0.0; }
+  // With a cap, only a cell on the kink above it (settle()).
+  bool binding(std::size_t i, double shift) const {
+    if (capped) return x[i] == lower[i] && !below[i] && gradient[i] - shift > 0.0;
+    return x[i] <= lower[i] && gradient[i] - shift > 0.0;
+  }
+
+  // With a cap: a cell on the kink released to one side whose conjugate
+  // direction points to the other (the compliance mixes the cells) would be
+  // clipped back by every step, and stay on the kink with its pressure
+  // beyond the bounds; its component is the diagonally scaled gradient
+  // -c (G - shift) instead, which points to its side (the two-metric
+  // projection's diagonal near a bound, Bertsekas 1982), and the direction
+  // is made mean-free again on the free cells (periodic). Returns the slope
+  // G.d.
+  double keep_released_sides(double shift) {
+    const std::size_t m = size();
+    const double c = compliance;
+    // sum of d and count over the free cells, G.d, sum of G over them
+    const std::array<double, 4> parts = linalg::sums<4>(m, [&](std::size_t i) {
+      if (binding(i, shift)) return std::array<double, 4>{};
+      if (x[i] == lower[i] && (below[i] ? direction[i] > 0.0 : direction[i] < 0.0)) {
+        direction[i] = -c * (gradient[i] - shift);
+      }
+      return std::array<double, 4>{direction[i], 1.0, gradient[i] * direction[i], gradient[i]};
+    });
+    if (padded || !(parts[1] > 0.0)) return parts[2];
+    const double mu = parts[0] / parts[1];
+    linalg::for_each_index(m, [&](std::size_t i) {
+      if (!binding(i, shift)) direction[i] -= mu;
+    });
+    return parts[2] - mu * parts[3];
+  }
 
   // The periodic grid's multiplier of mean v = 0: the mean gradient over the
   // cells off the wall (0 on free grids, which have no such constraint).
   double mean_shift() const {
     if (padded) return 0.0;
     const std::array<double, 2> free_part = linalg::sums<2>(size(), [&](std::size_t i) {
-      return x[i] > lower[i] ? std::array<double, 2>{gradient[i], 1.0} : std::array<double, 2>{0.0, 0.0};
+      return off_wall(i) ? std::array<double, 2>{gradient[i], 1.0} : std::array<double, 2>{0.0, 0.0};
     });
     return free_part[1] > 0.0 ? free_part[0] / free_part[1] : 0.0;
   }
@@ -268,6 +393,8 @@ struct AdhesiveContactSolver::Impl {
   double e_star;
   AdhesiveSolverOptions options;
   bool padded;
+  bool capped;      // a hardness cap is set
+  double hardness;  // H (Pa), infinite without a cap
   std::size_t rows;
   std::size_t cols;
   RealFft fft;
@@ -275,6 +402,7 @@ struct AdhesiveContactSolver::Impl {
   EvenSymbol stiffness;  // S = K^-1 over M (0 at the periodic mean mode)
   double compliance = 0.0;
   std::vector<unsigned char> physical;  // 1 on the grid's cells, 0 on the padding
+  std::vector<unsigned char> below;     // with a cap: 1 where the cell's side is below the kink (settle())
   // Workspace over the variable's array: v, S v, the gradient, the trial
   // point P(v - alpha G), the step d, S d, the offset h - delta (gap =
   // offset + v) and the bound delta - h (-inf on the padding).
@@ -315,6 +443,12 @@ SolveResult AdhesiveContactSolver::Impl::solve_displacement(std::span<const doub
   SolveResult result;
   result.solver = options.precondition ? "adhesive-pcg" : "adhesive-spg";  // as name()
   result.tolerance = options.tolerance;
+  // With a cap, every cell starts above the kink (the projection puts the
+  // penetrating ones on it; those pressed beyond H are released below at
+  // once), but for the last solve's plastic cells when continuing from it.
+  if (capped) {
+    linalg::for_each_index(m, [&](std::size_t i) { below[i] = start_from_last && x[i] < lower[i] ? 1 : 0; });
+  }
   if (!project(x, x)) {
     result.status = SolveStatus::breakdown;
     result.message = "no displacement satisfies the constraints";
@@ -412,6 +546,7 @@ SolveResult AdhesiveContactSolver::Impl::solve_displacement(std::span<const doub
         linalg::for_each_index(m, [&](std::size_t i) { direction[i] = 0.0; });
         slope = make_direction(0.0);
       }
+      if (capped) slope = keep_released_sides(shift);
       bool plain = false;
       if (!(slope < 0.0)) {
         // The plain projected gradient step always descends.
@@ -433,8 +568,10 @@ SolveResult AdhesiveContactSolver::Impl::solve_displacement(std::span<const doub
       ++result.operator_applications;
       // Energy changes, not energies: near the solution the change is far
       // below the rounding of the energy itself. Non-monotone as SPG's: the
-      // change is measured against the largest of the last kMemory energies.
-      const double allowance = *std::max_element(recent.begin(), recent.end()) - energy;
+      // change is measured against the largest of the last kMemory energies;
+      // monotone with a cap (non-monotone steps cycled there: a rough sweep
+      // alternated between two held sets for 20000 iterations).
+      const double allowance = capped ? 0.0 : *std::max_element(recent.begin(), recent.end()) - energy;
       const std::array<double, 2> along = linalg::sums<2>(m, [&](std::size_t i) {
         return std::array<double, 2>{direction[i] * sx[i], direction[i] * s_direction[i]};
       });
@@ -450,10 +587,10 @@ SolveResult AdhesiveContactSolver::Impl::solve_displacement(std::span<const doub
         // interaction energy's change, in one pass.
         const std::array<double, 2> moved = linalg::sums<2>(m, [&](std::size_t i) {
           trial[i] = x[i] + step * direction[i];
-          const double cut = trial[i] < lower[i] ? 1.0 : 0.0;
+          const double cut = (below[i] ? trial[i] > lower[i] : trial[i] < lower[i]) ? 1.0 : 0.0;
           if (!physical[i]) return std::array<double, 2>{cut, 0.0};
           const double g = offset[i] + x[i];
-          const double change_i = law.energy(std::max(g + step * direction[i], 0.0)) - law.energy(std::max(g, 0.0));
+          const double change_i = cell_energy(law, g + step * direction[i]) - cell_energy(law, g);
           return std::array<double, 2>{cut, change_i};
         });
         clipped = moved[0] > 0.0;
@@ -467,8 +604,7 @@ SolveResult AdhesiveContactSolver::Impl::solve_displacement(std::span<const doub
           const std::array<double, 3> sums3 = linalg::sums<3>(m, [&](std::size_t i) {
             const double s_i = trial[i] - x[i];
             const double g = offset[i] + x[i];
-            const double change_i =
-                physical[i] ? law.energy(std::max(offset[i] + trial[i], 0.0)) - law.energy(std::max(g, 0.0)) : 0.0;
+            const double change_i = physical[i] ? cell_energy(law, offset[i] + trial[i]) - cell_energy(law, g) : 0.0;
             return std::array<double, 3>{0.5 * s_i * (scaled[i] + sx[i]), gradient[i] * s_i, change_i};
           });
           change = sums3[0] + sums3[2];
@@ -502,10 +638,11 @@ SolveResult AdhesiveContactSolver::Impl::solve_displacement(std::span<const doub
         } else if (!refresh) {
           sx[i] += step * s_direction[i];
         }
-        gradient[i] = physical[i] ? sx[i] - law.traction(std::max(offset[i] + x[i], 0.0)) : sx[i];
-        return x[i] > lower[i] ? std::array<double, 2>{gradient[i], 1.0} : std::array<double, 2>{0.0, 0.0};
+        gradient[i] = physical[i] ? sx[i] - cell_traction(law, offset[i] + x[i]) : sx[i];
+        return off_wall(i) ? std::array<double, 2>{gradient[i], 1.0} : std::array<double, 2>{0.0, 0.0};
       });
       free_shift = padded || !(free_part[1] > 0.0) ? 0.0 : free_part[0] / free_part[1];
+      settle(free_shift);
       energy = trial_energy;
       recent[static_cast<std::size_t>(iteration + 1) % kMemory] = energy;
       restart = clipped || plain;
@@ -582,7 +719,7 @@ void AdhesiveContactSolver::Impl::fill_result(SolveResult& result, std::span<con
   double mean_pressure_shift = 0.0;
   if (!padded) {
     const std::array<double, 2> free_part = linalg::sums<2>(n, [&](std::size_t i) {
-      return x[i] > lower[i] ? std::array<double, 2>{gradient[i], 1.0} : std::array<double, 2>{0.0, 0.0};
+      return off_wall(i) ? std::array<double, 2>{gradient[i], 1.0} : std::array<double, 2>{0.0, 0.0};
     });
     if (free_part[1] > 0.0) mean_pressure_shift = -free_part[0] / free_part[1];
   }
@@ -597,13 +734,18 @@ void AdhesiveContactSolver::Impl::fill_result(SolveResult& result, std::span<con
   std::size_t at_wall = 0;
   std::size_t repulsive = 0;
   std::size_t interacting = 0;
+  std::size_t plastic = 0;
   for (std::size_t k = 0; k < n; ++k) {
     const std::size_t i = index(k);
+    // With a cap: on the kink (gap 0), or below it (plastic, gap < 0).
     const bool wall = x[i] <= lower[i];
-    const double g = wall ? 0.0 : std::max(initial_gap[k] + x[i] - approach, 0.0);
+    const bool kink = capped ? x[i] == lower[i] : wall;
+    const double g =
+        kink ? 0.0 : (capped ? initial_gap[k] + x[i] - approach : std::max(initial_gap[k] + x[i] - approach, 0.0));
     // Off the wall the law gives the pressure exactly; S v there differs
-    // from it by the residual, which would show as spurious contact.
-    const double p = wall ? sx[i] + mean_pressure_shift : law.traction(g);
+    // from it by the residual, which would show as spurious contact. On it,
+    // S v may exceed a cap by the residual: the cap holds exactly.
+    const double p = kink ? std::min(sx[i] + mean_pressure_shift, hardness) : cell_traction(law, g);
     result.pressure[static_cast<Eigen::Index>(k)] = p;
     result.displacement[static_cast<Eigen::Index>(k)] = x[i];
     result.gap[static_cast<Eigen::Index>(k)] = g;
@@ -612,13 +754,16 @@ void AdhesiveContactSolver::Impl::fill_result(SolveResult& result, std::span<con
     max_pressure = std::max(max_pressure, p);
     at_wall += wall ? 1 : 0;
     repulsive += wall && p > 0.0 ? 1 : 0;
-    interacting += law.interacts(g) ? 1 : 0;
+    interacting += law.interacts(std::max(g, 0.0)) ? 1 : 0;
+    plastic += capped && p >= hardness ? 1 : 0;
   }
   const double cells = static_cast<double>(n);
   result.total_force = force * grid.cell_area();
   result.mean_pressure = result.total_force / grid.domain_area();
   result.max_pressure = max_pressure;
   result.contact_fraction = static_cast<double>(at_wall) / cells;
+  result.hardness = options.hardness;
+  result.plastic_fraction = static_cast<double>(plastic) / cells;
   AdhesionRecord& record = result.adhesion;
   record.law = std::string(to_string(law.type));
   record.work = law.work;
@@ -739,6 +884,7 @@ SolveResult AdhesiveContactSolver::solve(std::span<const double> initial_gap, co
   if (!std::isfinite(loading.value)) {
     throw InputError(fmt::format("{} = {} is invalid: must be finite", to_string(loading.mode), loading.value));
   }
+  InterfaceLaw{m.options.hardness}.check_load(m.grid, loading);
   if (loading.mode == ControlMode::approach) {
     return m.solve_displacement(initial_gap, loading.value, initial_pressure, false);
   }

@@ -148,6 +148,7 @@ std::unique_ptr<ContactSolver> make_any_solver(const Grid& grid, const Elasticit
     adhesive.law = options.adhesion->law;
     adhesive.tolerance = options.adhesion->tolerance;
     adhesive.precondition = options.adhesion->precondition;
+    adhesive.hardness = options.interface_law.hardness;
     if (options.max_iterations) adhesive.max_iterations = *options.max_iterations;
     adhesive.fft_planning = options.fft_planning;
     adhesive.progress = options.progress;

@@ -137,10 +137,6 @@ void SolverOptions::validate() const {
     if (deflation.mode == DeflationOptions::Mode::on) {
       throw SolverOptionError("deflation.mode", "on", "does not apply to the adhesive solver");
     }
-    if (interface_law.hardness) {
-      throw SolverOptionError("hardness", text(*interface_law.hardness),
-                              "does not apply with adhesion: the adhesive solver has no hardness cap");
-    }
   }
 }
 

@@ -46,16 +46,38 @@
 // plain projected gradient step. Two or three FFT pairs per iteration
 // against SPG's one.
 //
+// Hardness cap (optional). An elastic-perfectly plastic surface carries at
+// most H: the wall becomes the kink of the energy term H max(-g, 0) (the
+// plastic work of a rigid surface penetrating by -g), so
+//
+//   E(v) = 1/2 v.S v + sum_i psi(h_i + v_i - delta),
+//   psi(g) = phi(g) for g >= 0,  phi(0) - H g for g < 0,
+//
+// unconstrained but for the periodic mean. Its stationary points: p = t(g)
+// where g > 0, p = H where g < 0 (plastic), t(0) <= p <= H where g = 0.
+// The kink is a breakpoint both ways, handled as the wall is (an
+// orthant-wise projection in the sense of Andrew & Gao 2007, ICML, for the
+// L1 kink): every cell has a side, above (g >= 0) or below (g <= 0) the
+// kink, fixed for one iteration; steps are projected onto the sides, so a
+// cell crossing the kink stops on it. A cell on the kink is held while
+// t(0) <= p <= H (less the periodic multiplier), released below when p > H
+// (its gradient there is S v - H) and above when p < t(0). Without a cap
+// every cell is above, and the iteration is the one described here.
+//
 // Stopping. residual = max_i |P(v - c G) - v|_i / (c p_ref), with G the
 // gradient, P the projection onto the constraints, c = K_ii (the cell's
 // self-compliance, m/Pa) and p_ref = max(w / range, max |p|): the largest
 // pressure error of the projected gradient step relative to the pressure
-// scale. Zero exactly at a constrained stationary point.
+// scale. Zero exactly at a constrained stationary point. With a cap, P
+// projects onto the sides, with the gradient of the side a cell on the
+// kink is released to: zero exactly at a stationary point of the capped
+// energy.
 #pragma once
 
 #include <Eigen/Core>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string_view>
 
@@ -75,6 +97,10 @@ struct AdhesiveSolverOptions {
   // fewer operator products than SPG on rough contacts, the same pull-off
   // on a quasi-static sweep), or SPG with false.
   bool precondition = true;
+  // Hardness cap H (Pa, interface_law.hpp): a cell pressed onto the wall
+  // carries at most H and beyond it flows (see Hardness cap above). Unset:
+  // the rigid wall.
+  std::optional<double> hardness;
   // Load control: relative force tolerance of the search on the approach,
   // and its limit of displacement-controlled solves.
   double force_tolerance = 1e-6;
@@ -82,8 +108,9 @@ struct AdhesiveSolverOptions {
   std::function<void(int, double)> progress;  // (iteration, residual), may be empty
 
   // Throws InputError naming the option unless the law is valid,
-  // 0 < tolerance < 1, 0 < force_tolerance < 1, max_iterations >= 1 and
-  // max_load_steps >= 1.
+  // 0 < tolerance < 1, 0 < force_tolerance < 1, max_iterations >= 1,
+  // max_load_steps >= 1 and a hardness, if set, in InterfaceLaw's range
+  // (SolverOptionError naming "hardness").
   void validate() const;
 };
 
@@ -111,7 +138,10 @@ class AdhesiveContactSolver final : public ContactSolver {
   // (beyond pull-off). `initial_pressure` (Pa, signed), if given,
   // warm-starts from the displacement K p it makes. The result's pressure
   // is signed (negative: attraction); contact_fraction counts the cells at
-  // the wall (gap 0); result.adhesion holds the adhesive quantities.
+  // the wall (gap 0; with a cap also those below it, gap < 0 at p = H);
+  // result.adhesion holds the adhesive quantities, result.hardness and
+  // plastic_fraction the cap's. With a cap, a load above H times the domain
+  // area throws InputError (InterfaceLaw::check_load).
   SolveResult solve(std::span<const double> initial_gap, const Loading& loading,
                     std::span<const double> initial_pressure = {}) override;
 
