@@ -10,6 +10,27 @@ namespace halfspace::io::detail {
 namespace {
 
 constexpr std::array<unsigned char, 8> kSignature = {0x89, 'H', 'D', 'F', '\r', '\n', 0x1a, '\n'};
+constexpr std::uintmax_t kUndefined = ~std::uintmax_t{0};
+
+// A little-endian address or length of `size` bytes; kUndefined for the
+// format's undefined address (all bits set) and for values beyond 64 bits.
+std::uintmax_t decode(const unsigned char* bytes, unsigned size) {
+  bool all_set = true;
+  std::uintmax_t value = 0;
+  for (unsigned k = 0; k < size; ++k) {
+    all_set = all_set && bytes[k] == 0xff;
+    if (k >= 8) {
+      if (bytes[k] != 0) return kUndefined;
+      continue;
+    }
+    value |= static_cast<std::uintmax_t>(bytes[k]) << (8 * k);
+  }
+  return all_set ? kUndefined : value;
+}
+
+// The bytes read after the signature: the longest fixed part (version 1,
+// 32-byte offsets) and more.
+constexpr std::size_t kRead = 20 + 4 * 32;
 
 bool valid_field_size(unsigned size) {
   return size == 2 || size == 4 || size == 8 || size == 16 || size == 32;
@@ -17,8 +38,8 @@ bool valid_field_size(unsigned size) {
 
 // The superblock after its signature (`at` bytes into the file), or a
 // problem. `fixed` holds the bytes from the version on, as many as the file has.
-std::optional<std::string> superblock_problem(const std::array<unsigned char, 32>& fixed, std::size_t available,
-                                              std::uintmax_t at, std::uintmax_t file_size) {
+std::optional<std::string> superblock_problem(const std::array<unsigned char, kRead>& fixed, std::size_t available,
+                                              std::uintmax_t at, std::uintmax_t file_size, std::ifstream& in) {
   auto need = [&](std::size_t bytes) -> std::optional<std::string> {
     if (available >= bytes) return std::nullopt;
     return fmt::format("the superblock at byte {} is cut short: the file ends after {} of its bytes", at,
@@ -74,6 +95,26 @@ std::optional<std::string> superblock_problem(const std::array<unsigned char, 32
     return fmt::format("the superblock at byte {} is cut short: it needs {} bytes, the file has {}", at, size,
                        file_size - at);
   }
+  // The driver information block (version 0, 3 reserved bytes, the size of
+  // its information, an 8-byte driver name, the information) must lie in
+  // the file: libhdf5 allocates the size it states before reading it (a
+  // 97-byte file stated 1.6 GiB).
+  const std::uintmax_t base = decode(&fixed[prefix], offsets);
+  const std::uintmax_t driver = decode(&fixed[prefix + 3 * offsets], offsets);
+  if (driver == kUndefined) return std::nullopt;
+  if (base == kUndefined || base > file_size || driver > file_size - base || file_size - base - driver < 16) {
+    return fmt::format("the superblock's driver information block (at byte {}) does not fit in the file of {} bytes",
+                       driver, file_size);
+  }
+  std::array<unsigned char, 8> header{};
+  in.clear();
+  in.seekg(static_cast<std::streamoff>(base + driver));
+  if (!in.read(reinterpret_cast<char*>(header.data()), header.size())) return std::nullopt;
+  const std::uintmax_t stated = decode(&header[4], 4);
+  if (header[0] != 0) return fmt::format("the driver information block's version is {} (must be 0)", header[0]);
+  if (stated > file_size - base - driver - 16) {
+    return fmt::format("the driver information block states {} bytes of information, more than the file holds", stated);
+  }
   return std::nullopt;
 }
 
@@ -91,10 +132,10 @@ std::optional<std::string> hdf5_superblock_problem(const std::filesystem::path& 
     in.seekg(static_cast<std::streamoff>(at));
     if (!in.read(reinterpret_cast<char*>(signature.data()), signature.size())) return std::nullopt;
     if (signature != kSignature) continue;
-    std::array<unsigned char, 32> fixed{};
+    std::array<unsigned char, kRead> fixed{};
     in.read(reinterpret_cast<char*>(fixed.data()), fixed.size());
     const auto available = static_cast<std::size_t>(in.gcount());
-    return superblock_problem(fixed, available, at, file_size);
+    return superblock_problem(fixed, available, at, file_size, in);
   }
   return std::nullopt;
 }
