@@ -137,15 +137,17 @@ TEST(AdhesionSphereTest, PullOffConvergesTowardsJkrAtLargerTaborParameterConjuga
 // a^3), P = A^3 - sqrt(6 A^3) in these units, is Maugis's curve as lambda
 // -> infinity (checked on the reference below); at lambda = 2 the curve
 // still lies 0.3-0.5 pi w R above JKR. Directly at larger lambda the
-// cohesive zone (0.75 ell / lambda^2) is below a cell of a unit test's grid
-// and traps the advancing edge: at lambda = 5, 16 and 32 cells per ell
-// leave P 1.24 and 0.95 pi w R off JKR's F(a), converging too slowly for a
-// test; the 1D cylinder (adhesion_cylinder_test.cpp) resolves its zone and
-// tests JKR directly. The error here is dominated by the contact radius
-// the discrete wall set gives: dP/dA is about 4, so a radius off by a third
-// of a cell at 16 cells per ell moves P by 0.1. Measured largest |P -
-// P_Maugis(A)| over the three steps: 0.51 and 0.26 pi w R at 8 and 16 cells
-// per ell (adhesive-pcg; SPG 0.51 and 0.23).
+// Maugis-Dugdale zone (0.75 ell / lambda^2) is below a cell of a unit
+// test's grid and traps the edge (at lambda = 5, P 0.6-0.7 pi w R off JKR's
+// F(a) at 32 and 64 cells per ell, bench/adhesion_jkr_sphere.py);
+// adhesion_jkr_sphere_test.cpp tests JKR directly with the exponential law,
+// which converges at about a cell per zone, and the 1D cylinder
+// (adhesion_cylinder_test.cpp) with Maugis-Dugdale. The error here is
+// dominated by the contact radius the discrete wall set gives: dP/dA is
+// about 4, so a radius off by a third of a cell at 16 cells per ell moves P
+// by 0.1. Measured largest |P - P_Maugis(A)| over the three steps: 0.51
+// and 0.26 pi w R at 8 and 16 cells per ell (adhesive-pcg; SPG 0.51 and
+// 0.23).
 constexpr double kLoadingBranchTolerance = 0.35;  // pi w R, absolute: the 16-per-ell grid's 0.26 plus margin
 
 // The loading branch of a displacement-controlled sweep from first touch
