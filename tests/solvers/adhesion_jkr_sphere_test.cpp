@@ -94,8 +94,8 @@ JkrSphereBranches sweep(const AdhesiveSphere& sphere, double cells_per_ell) {
 // 0.17 and 0.016 pi w R at the same approach (the lattice traps the edge on
 // the coarse grid, hardly on the fine one). What remains on the fine grid is
 // the law's own finite range, not the grid: 64 cells per ell give 0.065 and
-// -1.520, and a shorter range (lambda = 10 on 128 cells per ell) brings both
-// closer to JKR (bench/adhesion_jkr_sphere.py).
+// -1.520, and a shorter range (lambda = 10 on 128 cells per ell) 0.019 and
+// -1.506 (bench/adhesion_jkr_sphere.py).
 constexpr double kTaborParameter = 5.0;
 constexpr double kLoadTolerance = 0.1;         // pi w R, absolute: the fine grid's 0.058 plus margin
 constexpr double kPullOffTolerance = 0.03;     // relative to 3/2: the fine grid's 1.8 % plus margin
