@@ -72,7 +72,7 @@ void print_sweep_summary(std::FILE* out, const SolveSetup& setup, std::span<cons
   for (std::size_t k = 0; k < steps.size(); ++k) {
     const analysis::SweepStep& s = steps[k];
     fmt::print(out, "  {:>4}  {:>12.5g}  {:>12.5g}  {:>12.5g}  {:>10.4g}  {:>8}  {:>6}  {:>9.2e}  {:>8.3f}{}\n", k,
-               s.loading.value, s.result.mean_pressure, s.result.approach, s.statistics.contact_fraction,
+               s.loading.value, s.result.mean_pressure, s.result.approach, s.result.contact_fraction,
                s.statistics.clusters(), s.result.iterations, s.result.residual, s.result.wall_seconds,
                s.result.converged() ? "" : "  not converged");
   }

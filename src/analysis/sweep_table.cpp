@@ -18,8 +18,11 @@ constexpr std::array kColumns{
     SummaryColumn{"total_force", "force", "sum of pressure times cell area",
                   [](const SweepStep& s) { return s.result.total_force; }},
     SummaryColumn{"approach", "m", "rigid-body approach", [](const SweepStep& s) { return s.result.approach; }},
-    SummaryColumn{"contact_fraction", "1", "cells with pressure > 0 over all cells",
-                  [](const SweepStep& s) { return s.statistics.contact_fraction; }},
+    // The solver's own count, as in a single result: with adhesion the cells
+    // at the wall (gap 0, whatever their pressure's sign), not those pushed.
+    SummaryColumn{"contact_fraction", "1",
+                  "cells in contact over all cells: pressure > 0, or with adhesion at the wall (gap 0)",
+                  [](const SweepStep& s) { return s.result.contact_fraction; }},
     SummaryColumn{"plastic_fraction", "1", "cells at the hardness cap over all cells (0 without a cap)",
                   [](const SweepStep& s) { return s.result.plastic_fraction; }},
     SummaryColumn{"mean_gap", "m", "mean gap over all cells", [](const SweepStep& s) { return s.statistics.mean_gap; }},

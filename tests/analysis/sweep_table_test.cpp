@@ -38,5 +38,18 @@ TEST(SweepTableTest, SummaryColumnsAreTheDocumentedOnes) {
   EXPECT_EQ(value("converged"), 1.0);
 }
 
+// The contact fraction is the solver's, as in a single result: with
+// adhesion the cells at the wall, which the pressure's sign does not tell
+// (attraction holds the rim of a JKR-like contact at the wall). It once read
+// the statistics' count of cells with p > 0.
+TEST(SweepTableTest, ContactFractionIsTheSolversCount) {
+  SweepStep step;
+  step.result.contact_fraction = 0.25;       // at the wall
+  step.statistics.contact_fraction = 0.125;  // p > 0
+  for (const SummaryColumn& column : summary_columns()) {
+    if (column.name == "contact_fraction") EXPECT_EQ(column.value(step), 0.25);
+  }
+}
+
 }  // namespace
 }  // namespace halfspace::analysis
