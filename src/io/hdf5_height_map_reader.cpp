@@ -18,6 +18,7 @@
 
 #include "halfspace/error.hpp"
 #include "hdf5_handle.hpp"
+#include "hdf5_stored_data.hpp"
 #include "hdf5_superblock.hpp"
 #include "reader_support.hpp"
 
@@ -168,22 +169,9 @@ Object open_dataset(hid_t file, const Target& target) {
   return object;
 }
 
-// The heights must be stored in this file: an external raw-data file or a
-// virtual dataset names other files, which a height map has no business
-// reading (a crafted one could point at /dev/zero or at any file), and a
-// dataset never written holds only a fill value, however large it claims to be.
+// The heights must be stored in this file (hdf5_stored_data.hpp).
 void check_storage(hid_t dataset, const Target& target) {
-  const PropertyList creation(H5Dget_create_plist(dataset));
-  if (!creation.valid()) target.fail(fmt::format("the dataset's layout cannot be read: {}", detail::error_reason()));
-  if (H5Pget_layout(creation.get()) == H5D_VIRTUAL) {
-    target.fail("the dataset is virtual (its data are in other files); store the heights in this file");
-  }
-  if (H5Pget_external_count(creation.get()) != 0) {
-    target.fail("the dataset's data are in external files; store the heights in this file");
-  }
-  if (H5Dget_storage_size(dataset) == 0) {
-    target.fail("the dataset holds no stored data (it was created but never written)");
-  }
+  if (const auto problem = detail::unstored_data_problem(dataset)) target.fail(*problem);
 }
 
 void check_numeric_type(hid_t dataset, const Target& target) {

@@ -6,11 +6,16 @@
 #include <hdf5.h>
 
 #include <algorithm>
+#include <cstdint>
+#include <optional>
 #include <string_view>
 
+#include "halfspace/checked_size.hpp"
 #include "halfspace/error.hpp"
 #include "hdf5_handle.hpp"
+#include "hdf5_stored_data.hpp"
 #include "hdf5_superblock.hpp"
+#include "reader_support.hpp"
 
 namespace halfspace::io {
 namespace {
@@ -49,8 +54,22 @@ struct Reader {
     const Dataset dataset(H5Dopen2(location, name.c_str(), H5P_DEFAULT));
     if (!dataset.valid()) fail(fmt::format("no dataset '{}'", name));
     const std::vector<std::size_t> dims = extents(dataset, name);
+    // A hostile file may declare any shape: the count must not overflow, fit
+    // the machine's memory, and come from data stored in this file.
     std::size_t count = 1;
-    for (std::size_t d : dims) count *= d;
+    for (std::size_t d : dims) {
+      const std::optional<std::size_t> product = checked_multiply(count, d);
+      if (!product) fail(fmt::format("dataset '{}' declares a shape whose size overflows", name));
+      count = *product;
+    }
+    if (count > detail::physical_memory_bytes() / sizeof(T)) {
+      fail(fmt::format("dataset '{}' declares {} values, more than this machine's memory holds", name, count));
+    }
+    if (count > 0) {
+      if (const auto problem = detail::unstored_data_problem(dataset.get())) {
+        fail(fmt::format("dataset '{}': {}", name, *problem));
+      }
+    }
     if (shape) *shape = dims;
     std::vector<T> values(count);
     if (count > 0 && H5Dread(dataset.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0) {
@@ -66,6 +85,8 @@ struct Reader {
     return Eigen::Map<const Eigen::ArrayXd>(values.data(), static_cast<Eigen::Index>(values.size()));
   }
 };
+
+constexpr std::size_t kMaxAttributeText = std::size_t{1} << 20;  // 1 MiB
 
 AttributeValue attribute_value(hid_t id, bool& readable) {
   readable = false;
@@ -91,7 +112,11 @@ AttributeValue attribute_value(hid_t id, bool& readable) {
         readable = true;
         return value;
       }
-      std::string text(H5Tget_size(type.get()), '\0');
+      // A fixed-length string's declared size, not trusted beyond what a
+      // result's attributes (names, versions, command lines) need.
+      const std::size_t size = H5Tget_size(type.get());
+      if (size == 0 || size > kMaxAttributeText) return std::string();
+      std::string text(size, '\0');
       readable = H5Aread(id, type.get(), text.data()) >= 0;
       text.erase(std::find(text.begin(), text.end(), '\0'), text.end());
       return text;

@@ -117,5 +117,41 @@ TEST(ResultReaderTest, RefusesWhatIsNotAResult) {
   }
 }
 
+// A result file that declares datasets it does not hold: the reader must
+// refuse before allocating what the shape implies (a few hundred bytes of
+// file could ask for any size; the height-map reader had these checks, the
+// result reader, which `halfspace stress` uses, had not).
+std::string hollow_result_error(const std::filesystem::path& path, std::vector<hsize_t> dims) {
+  {
+    const auto file = test::create_file(path);
+    test::add_string_attribute(file.get(), "format", "halfspace-result");
+    const test::H5 space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), H5Sclose, "space");
+    const test::H5 creation(H5Pcreate(H5P_DATASET_CREATE), H5Pclose, "plist");
+    std::vector<hsize_t> chunk(dims.size(), 2);
+    H5Pset_chunk(creation.get(), static_cast<int>(chunk.size()), chunk.data());
+    const test::H5 dataset(
+        H5Dcreate2(file.get(), "height", H5T_IEEE_F64LE, space.get(), H5P_DEFAULT, creation.get(), H5P_DEFAULT),
+        H5Dclose, "dataset");
+  }
+  try {
+    read_result(path);
+  } catch (const FileError& error) {
+    return error.what();
+  }
+  ADD_FAILURE() << "no error for " << path;
+  return {};
+}
+
+TEST(ResultReaderTest, RefusesDatasetsItWouldHaveToInvent) {
+  const TempDir dir;
+  const std::string never_written = hollow_result_error(dir / "never-written.h5", {3, 4});
+  EXPECT_NE(never_written.find("dataset 'height': the dataset holds no stored data"), std::string::npos)
+      << never_written;
+  const std::string huge = hollow_result_error(dir / "huge.h5", {hsize_t{1} << 20, hsize_t{1} << 20});
+  EXPECT_NE(huge.find("more than this machine's memory holds"), std::string::npos) << huge;
+  const std::string overflowing = hollow_result_error(dir / "overflowing.h5", {hsize_t{1} << 40, hsize_t{1} << 40});
+  EXPECT_NE(overflowing.find("whose size overflows"), std::string::npos) << overflowing;
+}
+
 }  // namespace
 }  // namespace halfspace::io
