@@ -362,9 +362,17 @@ struct AdhesiveContactSolver::Impl {
       }
       return std::array<double, 4>{direction[i], 1.0, gradient[i] * direction[i], gradient[i]};
     });
+    return mean_free_on_free_cells(parts, shift);
+  }
+
+  // The direction made mean-free on the cells the wall does not hold
+  // (periodic: mean v = 0 then holds along the line), from the sums over
+  // those cells {sum d, count, G.d, sum G}; returns the slope G.d of the
+  // result. Free grids have no mean constraint.
+  double mean_free_on_free_cells(const std::array<double, 4>& parts, double shift) {
     if (padded || !(parts[1] > 0.0)) return parts[2];
     const double mu = parts[0] / parts[1];
-    linalg::for_each_index(m, [&](std::size_t i) {
+    linalg::for_each_index(size(), [&](std::size_t i) {
       if (!binding(i, shift)) direction[i] -= mu;
     });
     return parts[2] - mu * parts[3];
@@ -534,12 +542,7 @@ SolveResult AdhesiveContactSolver::Impl::solve_displacement(std::span<const doub
           direction[i] = -scaled[i] + b * direction[i];
           return std::array<double, 4>{direction[i], 1.0, gradient[i] * direction[i], gradient[i]};
         });
-        if (padded || !(parts[1] > 0.0)) return parts[2];
-        const double mu = parts[0] / parts[1];
-        linalg::for_each_index(m, [&](std::size_t i) {
-          if (!binding(i, shift)) direction[i] -= mu;
-        });
-        return parts[2] - mu * parts[3];
+        return mean_free_on_free_cells(parts, shift);
       };
       double slope = make_direction(beta);
       if (!(slope < 0.0) && beta != 0.0) {

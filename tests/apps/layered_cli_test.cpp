@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <initializer_list>
 #include <numbers>
 #include <string>
 #include <utility>
@@ -150,6 +151,30 @@ TEST(LayeredCliTest, HertzLineOnACoatingFreeAndPeriodic) {
   EXPECT_LT(peak(free), hertz_peak(2.1e11, 0.29));
 }
 
+// The stress fields `names` of the stress command's file and of the solve's
+// result file agree. The two processes may plan their transforms
+// differently (measured plans), so to rounding, not bit for bit; and a
+// field must not be zero (that would make the comparison vacuous).
+void expect_same_stresses(const fs::path& from_command_file, const fs::path& from_solve_file,
+                          std::initializer_list<const char*> names) {
+  constexpr double kPlanRounding = 1e-12;  // relative to the field's largest value
+  const test::H5 other = test::open_file(from_command_file);
+  const test::H5 file = test::open_file(from_solve_file);
+  for (const char* name : names) {
+    const auto from_command = test::read_dataset<double>(other.get(), name, H5T_NATIVE_DOUBLE);
+    const auto from_solve = test::read_dataset<double>(file.get(), name, H5T_NATIVE_DOUBLE);
+    ASSERT_EQ(from_command.size(), from_solve.size()) << name;
+    double largest = 0.0;
+    double worst = 0.0;
+    for (std::size_t i = 0; i < from_solve.size(); ++i) {
+      largest = std::max(largest, std::abs(from_solve[i]));
+      worst = std::max(worst, std::abs(from_command[i] - from_solve[i]));
+    }
+    EXPECT_GT(largest, 0.0) << name;
+    EXPECT_LE(worst, kPlanRounding * largest) << name << ": largest difference " << worst << " of " << largest;
+  }
+}
+
 // A hard coating on a periodic grid, stresses at depths on both sides of the
 // interface: from `solve --stress-depths` and from `halfspace stress` on the
 // result, which reads the coating back (the two must agree exactly).
@@ -171,22 +196,7 @@ TEST(LayeredCliTest, StressesBelowACoatingFromSolveAndFromTheStressCommand) {
       {"stress", output.string(), "--depths", "5e-6,2e-5,3e-5", "--output", stresses.string()}, dir.path());
   ASSERT_EQ(command.exit_code, kExitOk) << command.err;
   EXPECT_NE(command.out.find("coated: layer t = 2e-05 m"), std::string::npos) << command.out;
-  const test::H5 other = test::open_file(stresses);
-  // The two processes may plan their transforms differently (measured plans),
-  // so the fields agree to rounding, not bit for bit.
-  constexpr double kPlanRounding = 1e-12;  // relative to the field's largest value
-  for (const char* name : {"/stress/sigma_xx", "/stress/sigma_zz", "/stress/von_mises"}) {
-    const auto from_command = test::read_dataset<double>(other.get(), name, H5T_NATIVE_DOUBLE);
-    const auto from_solve = test::read_dataset<double>(file.get(), name, H5T_NATIVE_DOUBLE);
-    ASSERT_EQ(from_command.size(), from_solve.size()) << name;
-    double largest = 0.0;
-    double worst = 0.0;
-    for (std::size_t i = 0; i < from_solve.size(); ++i) {
-      largest = std::max(largest, std::abs(from_solve[i]));
-      worst = std::max(worst, std::abs(from_command[i] - from_solve[i]));
-    }
-    EXPECT_LE(worst, kPlanRounding * largest) << name << ": largest difference " << worst << " of " << largest;
-  }
+  expect_same_stresses(stresses, output, {"/stress/sigma_xx", "/stress/sigma_zz", "/stress/von_mises"});
 
   // A coated result brings its own Poisson's ratios; a free grid whose
   // shorter side is under 8 layer thicknesses (here L = 400 um, t = 60 um) is
@@ -239,21 +249,8 @@ TEST(LayeredCliTest, StressesBelowACoatingOnAFreeGrid) {
   const ProgramRun command = testing::run_program(
       {"stress", output.string(), "--depths", "5e-6,2e-5,3e-5", "--output", stresses.string()}, dir.path());
   ASSERT_EQ(command.exit_code, kExitOk) << command.err;
-  const test::H5 other = test::open_file(stresses);
-  constexpr double kPlanRounding = 1e-12;  // relative to the field's largest value (as above)
-  for (const char* name : {"/stress/sigma_xx", "/stress/sigma_zz", "/stress/sigma_xz", "/stress/von_mises"}) {
-    const auto from_command = test::read_dataset<double>(other.get(), name, H5T_NATIVE_DOUBLE);
-    const auto from_solve = test::read_dataset<double>(file.get(), name, H5T_NATIVE_DOUBLE);
-    ASSERT_EQ(from_command.size(), from_solve.size()) << name;
-    double largest = 0.0;
-    double worst = 0.0;
-    for (std::size_t i = 0; i < from_solve.size(); ++i) {
-      largest = std::max(largest, std::abs(from_solve[i]));
-      worst = std::max(worst, std::abs(from_command[i] - from_solve[i]));
-    }
-    EXPECT_GT(largest, 0.0) << name;
-    EXPECT_LE(worst, kPlanRounding * largest) << name << ": largest difference " << worst << " of " << largest;
-  }
+  expect_same_stresses(stresses, output,
+                       {"/stress/sigma_xx", "/stress/sigma_zz", "/stress/sigma_xz", "/stress/von_mises"});
 }
 
 }  // namespace

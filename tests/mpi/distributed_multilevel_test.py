@@ -23,7 +23,7 @@ import sys
 
 import h5py
 import numpy as np
-from mpi_harness import Harness
+from mpi_harness import Harness, kExitInputError
 
 # Distributed reductions add in another order than the serial fixed blocks,
 # and FFTW-MPI rounds differently from serial FFTW: equal to rounding.
@@ -36,7 +36,6 @@ kRunValues = {"solve_seconds", "seconds", "command_line", "halfspace_version"}
 # absolutely.
 kAbsoluteValues = {"residual", "residual_history"}
 kProcessCounts = (1, 2, 3)
-kExitInputError = 1
 
 harness = Harness(sys.argv)
 mpi_program, serial_program, mpiexec, source_dir, work_dir = harness.arguments
@@ -144,17 +143,7 @@ def solve_case(name, arguments, process_counts=kProcessCounts, sweep=False, defl
             compare_csv(where, output[:-3] + ".csv", serial_output[:-3] + ".csv")
 
 
-def failure_case(name, processes, arguments, message, output):
-    result = run_mpi(processes, ["solve"] + arguments + ["--output", output])
-    where = f"{name}, {processes} processes"
-    errors = [line for line in result.stderr.splitlines() if line.startswith("error:")]
-    if result.returncode != kExitInputError:
-        fail(f"{where}: exit {result.returncode}, expected {kExitInputError}; stderr: {result.stderr.strip()}")
-    if len(errors) != 1 or message not in errors[0]:
-        fail(f"{where}: expected one error line containing {message!r}, got {errors}")
-    if os.path.exists(output):
-        fail(f"{where}: the output {output} was written")
-    print(f"{where}: {errors[0] if errors else result.stderr.strip()}")
+failure_case = harness.refusal_case
 
 
 common = ["--E-star", "1e11", "--threads", "1", "--fft-planning", "estimate", "--quiet"]

@@ -32,7 +32,6 @@ kRunAttributes = {"solve_seconds", "command_line", "halfspace_version"}
 # the relative quantity it is, not relative to itself.
 kAbsoluteAttributes = {"residual"}
 kProcessCounts = (1, 2, 3)
-kExitInputError = 1
 
 harness = Harness(sys.argv)
 mpi_program, serial_program, mpiexec, source_dir, work_dir = harness.arguments
@@ -105,17 +104,7 @@ def solve_case(name, arguments, process_counts=kProcessCounts):
         compare_files(where, output, serial_output)
 
 
-def failure_case(name, processes, arguments, message, output):
-    result = run_mpi(processes, ["solve"] + arguments + ["--output", output])
-    where = f"{name}, {processes} processes"
-    errors = [line for line in result.stderr.splitlines() if line.startswith("error:")]
-    if result.returncode != kExitInputError:
-        fail(f"{where}: exit {result.returncode}, expected {kExitInputError}; stderr: {result.stderr.strip()}")
-    if len(errors) != 1 or message not in errors[0]:
-        fail(f"{where}: expected one error line containing {message!r}, got {errors}")
-    if os.path.exists(output):
-        fail(f"{where}: the output {output} was written")
-    print(f"{where}: {errors[0] if errors else result.stderr.strip()}")
+failure_case = harness.refusal_case
 
 
 common = ["--E-star", "1e11", "--threads", "1", "--fft-planning", "estimate", "--quiet"]

@@ -9,6 +9,8 @@ usage in a script: SCRIPT MPI_PROGRAM SERIAL_PROGRAM MPIEXEC SOURCE_DIR WORK_DIR
 import os
 import subprocess
 
+kExitInputError = 1  # the program's exit code for bad input
+
 
 class Harness:
     def __init__(self, argv):
@@ -29,6 +31,21 @@ class Harness:
     def fail(self, message):
         print("FAIL: " + message)
         self.failures.append(message)
+
+    def refusal_case(self, name, processes, arguments, message, output):
+        """`mpiexec -np processes halfspace solve ARGUMENTS` must exit 1 (bad
+        input) with one error line containing `message` and write no
+        `output`."""
+        result = self.run_mpi(processes, ["solve"] + arguments + ["--output", output])
+        where = f"{name}, {processes} processes"
+        errors = [line for line in result.stderr.splitlines() if line.startswith("error:")]
+        if result.returncode != kExitInputError:
+            self.fail(f"{where}: exit {result.returncode}, expected {kExitInputError}; stderr: {result.stderr.strip()}")
+        if len(errors) != 1 or message not in errors[0]:
+            self.fail(f"{where}: expected one error line containing {message!r}, got {errors}")
+        if os.path.exists(output):
+            self.fail(f"{where}: the output {output} was written")
+        print(f"{where}: {errors[0] if errors else result.stderr.strip()}")
 
     def temporaries(self):
         return [f for f in os.listdir(self.work_dir) if ".tmp-" in f]

@@ -16,26 +16,15 @@
 #include "halfspace/stress/layered_fourier_stress.hpp"
 #include "halfspace/stress/stress_volume.hpp"
 #include "halfspace/stress/subsurface_stress.hpp"
+#include "stress/coated_hertz_reference.hpp"
 #include "support/grid_fields.hpp"
 
 namespace halfspace::stress {
 namespace {
 
-using halfspace::testing::centred_x;
-using halfspace::testing::centred_y;
-
-const LayeredMaterial kHardCoating{5e-6, ElasticBody{400e9, 0.22}, ElasticBody{200e9, 0.3}};
-
-std::vector<double> hertz_pressure(const Grid& grid, double a, double p0) {
-  std::vector<double> p(grid.size());
-  for (std::size_t j = 0; j < grid.ny(); ++j) {
-    for (std::size_t i = 0; i < grid.nx(); ++i) {
-      const double r2 = (std::pow(centred_x(grid, i), 2) + std::pow(centred_y(grid, j), 2)) / (a * a);
-      p[j * grid.nx() + i] = r2 < 1.0 ? p0 * std::sqrt(1.0 - r2) : 0.0;
-    }
-  }
-  return p;
-}
+using testing::hankel_axis_sigma_zz;
+using testing::hertz_pressure;
+using testing::kHardCoating;
 
 TEST(LayeredSubsurfaceStressTest, PeriodicFourierModeMatchesThePerModeSolution) {
   // Exact algebra through two FFTs: a few eps of the pressure amplitude.
@@ -106,27 +95,6 @@ TEST(LayeredSubsurfaceStressTest, LayerEqualToSubstrateGivesTheHomogeneousStress
   EXPECT_LT(worst, kRoundoff * p0);
   EXPECT_EQ(coated.in_layer, (std::vector<bool>{true, true, true, false, false}));
   EXPECT_DOUBLE_EQ(coated.max_von_mises.value, homogeneous.max_von_mises.value);
-}
-
-// sigma_zz on the axis under a Hertz pressure p0 sqrt(1 - r^2/a^2) on the
-// coated half-space, by the axisymmetric (Hankel) transform of the per-mode
-// solution: the pressure's transform is 2 pi p0 a^2 j1(q a)/(q a) (j1 the
-// spherical Bessel function), so sigma_zz(0, z) = -p0 int_0^inf j1(x)
-// g(x z/a) dx, by Simpson's rule up to x z/a = 40.
-double hankel_axis_sigma_zz(const LayeredFourierStress& layered, double a, double p0, double z) {
-  const double x_max = 40.0 * a / z;
-  const auto intervals = static_cast<std::size_t>(2 * std::ceil(x_max / 0.01 / 2));
-  const double h = x_max / static_cast<double>(intervals);
-  const Body body = layered.body_at(z);
-  double sum = 0.0;
-  for (std::size_t k = 1; k <= intervals; ++k) {  // the integrand is 0 at x = 0
-    const double x = static_cast<double>(k) * h;
-    const double j1 = (std::sin(x) - x * std::cos(x)) / (x * x);
-    const double g = layered.profile(layered.solve(x / a), z, body).g;
-    const double weight = k == intervals ? 1.0 : (k % 2 == 1 ? 4.0 : 2.0);
-    sum += weight * j1 * g;
-  }
-  return -p0 * sum * h / 3.0;
 }
 
 TEST(LayeredSubsurfaceStressTest, HertzPressureOnAHardCoatingMatchesTheHankelTransform) {
