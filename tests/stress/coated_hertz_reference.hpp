@@ -1,14 +1,17 @@
 // What the coated half-space's stress tests share: a hard coating, the
-// sampled Hertz pressure, and the independent reference for it, sigma_zz on
-// the axis by the axisymmetric (Hankel) transform of the per-mode solution.
+// sampled Hertz pressure, the largest difference of two stress volumes, and
+// the independent reference for the pressure: sigma_zz on the axis by the
+// axisymmetric (Hankel) transform of the per-mode solution.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
 #include "halfspace/grid.hpp"
 #include "halfspace/layered_material.hpp"
 #include "halfspace/stress/layered_fourier_stress.hpp"
+#include "halfspace/stress/stress_volume.hpp"
 #include "support/grid_fields.hpp"
 
 namespace halfspace::stress::testing {
@@ -28,6 +31,17 @@ inline std::vector<double> hertz_pressure(const Grid& grid, double a, double p0)
     }
   }
   return p;
+}
+
+// The largest difference of any component anywhere in two volumes.
+inline double largest_difference(const StressVolume& a, const StressVolume& b) {
+  double worst = 0.0;
+  for (std::size_t c = 0; c < kComponentCount; ++c) {
+    for (std::size_t k = 0; k < a.components[c].size(); ++k) {
+      worst = std::max(worst, std::abs(a.components[c][k] - b.components[c][k]));
+    }
+  }
+  return worst;
 }
 
 // sigma_zz on the axis under that pressure: its transform is

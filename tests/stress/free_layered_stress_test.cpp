@@ -28,16 +28,7 @@ using halfspace::testing::centred_x;
 using testing::hankel_axis_sigma_zz;
 using testing::hertz_pressure;
 using testing::kHardCoating;
-
-double largest_difference(const StressVolume& a, const StressVolume& b) {
-  double worst = 0.0;
-  for (std::size_t c = 0; c < kComponentCount; ++c) {
-    for (std::size_t k = 0; k < a.components[c].size(); ++k) {
-      worst = std::max(worst, std::abs(a.components[c][k] - b.components[c][k]));
-    }
-  }
-  return worst;
-}
+using testing::largest_difference;
 
 TEST(FreeLayeredStressTest, LayerEqualToSubstrateGivesTheHomogeneousFreeStresses) {
   // The remainder is the difference of two equal multipliers, round-off in

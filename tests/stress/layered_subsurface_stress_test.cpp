@@ -25,6 +25,7 @@ namespace {
 using testing::hankel_axis_sigma_zz;
 using testing::hertz_pressure;
 using testing::kHardCoating;
+using testing::largest_difference;
 
 TEST(LayeredSubsurfaceStressTest, PeriodicFourierModeMatchesThePerModeSolution) {
   // Exact algebra through two FFTs: a few eps of the pressure amplitude.
@@ -86,13 +87,7 @@ TEST(LayeredSubsurfaceStressTest, LayerEqualToSubstrateGivesTheHomogeneousStress
   const LayeredMaterial same{5e-6, ElasticBody{210e9, nu}, ElasticBody{210e9, nu}};
   const StressVolume coated = compute_stress_volume(grid, pressure, depths, same);
   const StressVolume homogeneous = compute_stress_volume(grid, pressure, depths, nu);
-  double worst = 0.0;
-  for (std::size_t c = 0; c < kComponentCount; ++c) {
-    for (std::size_t k = 0; k < coated.components[c].size(); ++k) {
-      worst = std::max(worst, std::abs(coated.components[c][k] - homogeneous.components[c][k]));
-    }
-  }
-  EXPECT_LT(worst, kRoundoff * p0);
+  EXPECT_LT(largest_difference(coated, homogeneous), kRoundoff * p0);
   EXPECT_EQ(coated.in_layer, (std::vector<bool>{true, true, true, false, false}));
   EXPECT_DOUBLE_EQ(coated.max_von_mises.value, homogeneous.max_von_mises.value);
 }
