@@ -8,10 +8,7 @@
 #include <numbers>
 #include <string_view>
 
-#include "halfspace/grid.hpp"
-#include "halfspace/operators/fft_influence_operator.hpp"
-#include "halfspace/solvers/loading.hpp"
-#include "halfspace/solvers/polonsky_keer.hpp"
+#include "halfspace/halfspace.hpp"
 
 namespace {
 
@@ -43,18 +40,20 @@ int main() {
     const double side = 3.0 * a;
     const double dx = side / static_cast<double>(kCells);
     const halfspace::Grid grid = halfspace::Grid::plane(kCells, kCells, dx, dx, halfspace::Boundary::free);
-    Eigen::ArrayXd gap(static_cast<Eigen::Index>(grid.size()));
+    // The sphere's heights (peaks positive): the solve starts from max(h) - h.
+    Eigen::ArrayXd heights(static_cast<Eigen::Index>(grid.size()));
     for (std::size_t j = 0; j < kCells; ++j) {
       for (std::size_t i = 0; i < kCells; ++i) {
         const double x = (static_cast<double>(i) + 0.5) * dx - 0.5 * side;
         const double y = (static_cast<double>(j) + 0.5) * dx - 0.5 * side;
-        gap[static_cast<Eigen::Index>(j * kCells + i)] = (x * x + y * y) / (2.0 * kSphereRadius);
+        heights[static_cast<Eigen::Index>(j * kCells + i)] = -(x * x + y * y) / (2.0 * kSphereRadius);
       }
     }
 
-    halfspace::FftInfluenceOperator op(grid, kEStar);
-    halfspace::solvers::PolonskyKeer solver(op);
-    const halfspace::SolveResult result = solver.solve({gap.data(), grid.size()}, halfspace::Loading::force(kForce));
+    halfspace::solvers::SolverOptions options;
+    options.type = halfspace::solvers::SolverType::pk;
+    const halfspace::SolveResult result = halfspace::solvers::solve_surface(grid, {heights.data(), grid.size()}, kEStar,
+                                                                            halfspace::Loading::force(kForce), options);
     const std::string_view status = halfspace::to_string(result.status);
     std::printf("%s: %.*s after %d iterations\n", result.solver.c_str(), static_cast<int>(status.size()), status.data(),
                 result.iterations);
