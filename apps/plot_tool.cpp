@@ -106,8 +106,12 @@ struct ChildStatus {
   bool timed_out = false;  // stopped after running `timeout` seconds
 };
 
-// Waits for `child`; after `timeout` seconds (0: none) asks it to stop, and
-// kills it if it has not within a few seconds more.
+// Waits for `child`, the leader of its own process group; after `timeout`
+// seconds (0: none) asks the whole group to stop (the tool's own children
+// too: a python that forks a renderer), and kills the group if the child has
+// not exited within a few seconds more. Once a timed-out child has exited,
+// the rest of its group is killed before the child is reaped: until then its
+// pid, the group's id, cannot be reused by another process.
 int wait_for(pid_t child, double timeout, bool& timed_out) {
   using Clock = std::chrono::steady_clock;
   constexpr auto kPoll = std::chrono::milliseconds(20);
@@ -115,25 +119,29 @@ int wait_for(pid_t child, double timeout, bool& timed_out) {
   // At most about three years, so that the deadline cannot overflow the clock.
   const auto deadline =
       Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(std::min(timeout, 1e8)));
-  int wait_status = 0;
-  bool terminated = false;
+  bool killed = false;
   for (;;) {
-    const pid_t done = ::waitpid(child, &wait_status, timeout > 0.0 ? WNOHANG : 0);
-    if (done == child) return wait_status;
-    if (done < 0 && errno != EINTR) return wait_status;
-    if (timeout <= 0.0) continue;  // interrupted blocking wait: wait again
+    siginfo_t info{};
+    const int options = WEXITED | WNOWAIT | (timeout > 0.0 && !killed ? WNOHANG : 0);
+    const int waited = ::waitid(P_PID, static_cast<id_t>(child), &info, options);
+    if (waited < 0 && errno == EINTR) continue;
+    if (waited < 0 || info.si_pid == child) break;
     const auto now = Clock::now();
-    if (!terminated && now >= deadline) {
-      ::kill(child, SIGTERM);
-      terminated = true;
+    if (!timed_out && now >= deadline) {
+      ::kill(-child, SIGTERM);
       timed_out = true;
-    } else if (terminated && now >= deadline + kGrace) {
-      ::kill(child, SIGKILL);
-      timeout = 0.0;  // and reap it
+    } else if (timed_out && now >= deadline + kGrace) {
+      ::kill(-child, SIGKILL);
+      killed = true;  // and wait without polling
       continue;
     }
     std::this_thread::sleep_for(kPoll);
   }
+  if (timed_out) ::kill(-child, SIGKILL);
+  int wait_status = 0;
+  while (::waitpid(child, &wait_status, 0) < 0 && errno == EINTR) {
+  }
+  return wait_status;
 }
 
 ChildStatus run_child(const std::vector<std::string>& arguments, bool silence_stdout, bool silence_stderr,
@@ -142,6 +150,12 @@ ChildStatus run_child(const std::vector<std::string>& arguments, bool silence_st
   posix_spawn_file_actions_init(&actions);
   if (silence_stdout) posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
   if (silence_stderr) posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
+  // Its own process group (the child's pid), so that the time limit ends the
+  // tool and whatever it started.
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
+  posix_spawnattr_setpgroup(&attributes, 0);
   std::vector<char*> argv;
   for (const std::string& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
   argv.push_back(nullptr);
@@ -150,8 +164,9 @@ ChildStatus run_child(const std::vector<std::string>& arguments, bool silence_st
   std::fflush(stderr);
   pid_t child = 0;
   ChildStatus status;
-  status.spawn_error = posix_spawnp(&child, argv[0], &actions, nullptr, argv.data(), environ);
+  status.spawn_error = posix_spawnp(&child, argv[0], &actions, &attributes, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
+  posix_spawnattr_destroy(&attributes);
   if (status.spawn_error != 0) return status;
   const int wait_status = wait_for(child, timeout, status.timed_out);
   if (WIFEXITED(wait_status)) status.exit_code = WEXITSTATUS(wait_status);

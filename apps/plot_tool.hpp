@@ -38,9 +38,10 @@ struct PlotRequest {
 // number of seconds.
 PlotTool find_plot_tool(const PlotRequest& request);
 
-// Runs `tool subcommand file` (the figures go next to `file`), its standard
-// output suppressed when `quiet`; stops it (SIGTERM, then SIGKILL 5 s later)
-// once it has run tool.timeout_seconds. Returns an empty string on success,
+// Runs `tool subcommand file` (the figures go next to `file`) in a process
+// group of its own, its standard output suppressed when `quiet`; stops the
+// group, the tool and any process it started (SIGTERM, then SIGKILL 5 s later
+// or as soon as the tool has exited), once it has run tool.timeout_seconds. Returns an empty string on success,
 // else one line saying what failed.
 std::string run_plot_tool(const PlotTool& tool, std::string_view subcommand, const std::filesystem::path& file,
                           bool quiet);

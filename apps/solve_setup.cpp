@@ -647,8 +647,8 @@ StressRequest stress_request_from(const SolveOptions& o, std::size_t load_steps,
   }
   const bool range = o.stress_depths->find(':') != std::string::npos;
   StressRequest request;
-  request.depths =
-      parse_stress_depths(range ? nullptr : &*o.stress_depths, range ? &*o.stress_depths : nullptr, "stress-");
+  const std::string what = o.describe("stress-depths");
+  request.depths = range ? parse_depth_range(*o.stress_depths, what) : parse_depth_list(*o.stress_depths, what);
   if (coated) {
     // Each body's own Poisson's ratio: --layer-nu and --substrate-nu.
     if (o.stress_nu) {
@@ -755,8 +755,11 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
       solver.validate(surface.grid);
     }
   });
-  if (coating && !stress.depths.empty()) {
-    in_context(options.describe("stress-depths"), [&] { stress::require_coated_stress_grid(surface.grid, *coating); });
+  if (!stress.depths.empty()) {
+    in_context(options.describe("stress-depths"), [&] {
+      if (coating) stress::require_coated_stress_grid(surface.grid, *coating);
+      stress::check_depths(surface.grid, stress.depths);
+    });
   }
   const std::size_t first_row = surface.first_row;
   return SolveSetup{std::move(surface.grid),

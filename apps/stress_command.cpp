@@ -21,6 +21,8 @@
 #include "halfspace/threads.hpp"
 #include "halfspace/version.hpp"
 #include "memory_check.hpp"
+#include "option_table.hpp"
+#include "physical_ranges.hpp"
 #include "value_parsing.hpp"
 
 namespace halfspace::app {
@@ -68,6 +70,16 @@ int run_stress(const StressOptions& o, const std::vector<std::string>& argv) {
     return io::read_result_pressure(o.result);
   }();
   const Grid& grid = input.grid;
+  // The spacings SI lengths may take (physical_ranges.hpp): beyond them the
+  // stress coefficients overflow.
+  require_in_range(fmt::format("result file '{}': root attribute dx = {:.6g} m", o.result, grid.dx()), grid.dx(),
+                   kMinLength, kMaxLength, "m");
+  if (grid.dimension() == 2) {
+    require_in_range(fmt::format("result file '{}': root attribute dy = {:.6g} m", o.result, grid.dy()), grid.dy(),
+                     kMinLength, kMaxLength, "m");
+  }
+  in_context(o.depths ? fmt::format("--depths {}", *o.depths) : fmt::format("--depth-range {}", *o.depth_range),
+             [&] { stress::check_depths(grid, depths); });
   const std::optional<LayeredMaterial>& coating = input.coating;
   if (coating && o.nu) {
     throw InputError(fmt::format(
@@ -138,59 +150,58 @@ double parse_stress_poisson_ratio(const std::string& text, std::string_view opti
   return nu;
 }
 
-std::vector<double> parse_stress_depths(const std::string* depths, const std::string* depth_range,
-                                        std::string_view prefix) {
-  const std::string list_option = fmt::format("--{}depths", prefix);
-  const std::string range_option = fmt::format("--{}depth-range", prefix);
-  if (depths && depth_range) {
-    throw InputError(fmt::format("{} and {} were both given: pass one of them", list_option, range_option));
-  }
-  if (!depths && !depth_range) {
-    throw InputError(
-        fmt::format("no depth given: pass {} z1,z2,... or {} START:STOP:COUNT (m, > 0)", list_option, range_option));
-  }
+std::vector<double> parse_depth_list(std::string_view text, const std::string& what) {
   std::vector<double> values;
-  if (depths) {
-    const std::string what = fmt::format("{} {}", list_option, *depths);
-    std::string_view rest = *depths;
-    while (true) {
-      const std::size_t comma = rest.find(',');
-      const std::string_view part = rest.substr(0, comma);
-      values.push_back(parse_number(part, fmt::format("{} (the part '{}')", what, part)));
-      if (values.size() > stress::kMaxDepthCount) {
-        throw InputError(fmt::format("{} gives more than {} depths", list_option, stress::kMaxDepthCount));
-      }
-      if (comma == std::string_view::npos) break;
-      rest.remove_prefix(comma + 1);
+  std::string_view rest = text;
+  while (true) {
+    const std::size_t comma = rest.find(',');
+    const std::string_view part = rest.substr(0, comma);
+    values.push_back(parse_number(part, fmt::format("{} (the part '{}')", what, part)));
+    if (values.size() > stress::kMaxDepthCount) {
+      throw InputError(fmt::format("{} is invalid: it gives more than {} depths", what, stress::kMaxDepthCount));
     }
-    for (const double z : values) {
-      if (!(z > 0.0)) throw InputError(fmt::format("{} is invalid: every depth must be > 0 m, got {}", what, z));
-    }
-  } else {
-    const std::string what = fmt::format("{} {}", range_option, *depth_range);
-    const std::string& text = *depth_range;
-    const std::size_t first = text.find(':');
-    const std::size_t second = first == std::string::npos ? first : text.find(':', first + 1);
-    if (second == std::string::npos || text.find(':', second + 1) != std::string::npos) {
-      throw InputError(fmt::format("{} is invalid: expected START:STOP:COUNT, e.g. 1e-6:2e-5:20", what));
-    }
-    const double start = parse_number(text.substr(0, first), what);
-    const double stop = parse_number(text.substr(first + 1, second - first - 1), what);
-    const long long count = parse_integer(text.substr(second + 1), what);
-    if (count < 1 || count > static_cast<long long>(stress::kMaxDepthCount)) {
-      throw InputError(fmt::format("{} is invalid: COUNT = {} is outside the allowed range 1 to {}", what, count,
-                                   stress::kMaxDepthCount));
-    }
-    if (!(start > 0.0) || !(stop >= start) || (count > 1 && !(stop > start))) {
-      throw InputError(fmt::format("{} is invalid: need 0 < START < STOP (m) (START = STOP only with COUNT 1)", what));
-    }
-    for (long long k = 0; k < count; ++k) {
-      values.push_back(count == 1 ? start
-                                  : start + (stop - start) * static_cast<double>(k) / static_cast<double>(count - 1));
-    }
+    if (comma == std::string_view::npos) break;
+    rest.remove_prefix(comma + 1);
+  }
+  for (const double z : values) {
+    if (!(z > 0.0)) throw InputError(fmt::format("{} is invalid: every depth must be > 0 m, got {:.6g}", what, z));
   }
   stress::check_depths(values);
   return values;
+}
+
+std::vector<double> parse_depth_range(const std::string& text, const std::string& what) {
+  const std::size_t first = text.find(':');
+  const std::size_t second = first == std::string::npos ? first : text.find(':', first + 1);
+  if (second == std::string::npos || text.find(':', second + 1) != std::string::npos) {
+    throw InputError(fmt::format("{} is invalid: expected START:STOP:COUNT, e.g. 1e-6:2e-5:20", what));
+  }
+  const double start = parse_number(text.substr(0, first), what);
+  const double stop = parse_number(text.substr(first + 1, second - first - 1), what);
+  const long long count = parse_integer(text.substr(second + 1), what);
+  if (count < 1 || count > static_cast<long long>(stress::kMaxDepthCount)) {
+    throw InputError(fmt::format("{} is invalid: COUNT = {} is outside the allowed range 1 to {}", what, count,
+                                 stress::kMaxDepthCount));
+  }
+  if (!(start > 0.0) || !(stop >= start) || (count > 1 && !(stop > start))) {
+    throw InputError(fmt::format("{} is invalid: need 0 < START < STOP (m) (START = STOP only with COUNT 1)", what));
+  }
+  std::vector<double> values;
+  for (long long k = 0; k < count; ++k) {
+    values.push_back(count == 1 ? start
+                                : start + (stop - start) * static_cast<double>(k) / static_cast<double>(count - 1));
+  }
+  stress::check_depths(values);
+  return values;
+}
+
+std::vector<double> parse_stress_depths(const std::string* depths, const std::string* depth_range) {
+  if (depths && depth_range) throw InputError("--depths and --depth-range were both given: pass one of them");
+  if (!depths && !depth_range) {
+    throw InputError("no depth given: pass --depths z1,z2,... or --depth-range START:STOP:COUNT (m, > 0)");
+  }
+  return depths ? parse_depth_list(*depths, fmt::format("--depths {}", *depths))
+                : parse_depth_range(*depth_range, fmt::format("--depth-range {}", *depth_range));
 }
 
 Command add_stress_command(CLI::App& program) {

@@ -141,7 +141,6 @@ int finish_sweep(const SolveSetup& setup, std::span<const analysis::SweepStep> s
 int report_sweep(const SolveSetup& setup, std::span<const analysis::SweepStep> steps,
                  const std::optional<PlotTool>& plot) {
   const std::filesystem::path csv = io::sweep_csv_path(setup.output);
-  io::write_sweep_csv(csv, steps);
 
   if (!setup.quiet) {
     print_sweep_summary(stdout, setup, steps, csv);

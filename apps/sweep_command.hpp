@@ -29,10 +29,10 @@ int run_sweep(const SolveSetup& setup);
 int finish_sweep(const SolveSetup& setup, std::span<const analysis::SweepStep> steps,
                  const std::optional<PlotTool>& plot);
 
-// finish_sweep after the HDF5 file is written: the CSV (from the steps'
-// scalars and statistics only, not their fields), the summary table, the
-// figures and the failed steps. The MPI program calls it on the first
-// process once every process has written its rows of the HDF5 file.
+// finish_sweep after the HDF5 file and its CSV are written (serially as one
+// set by io::write_sweep_result; the MPI program writes the CSV on the first
+// process once every process has written its rows of the HDF5 file): the
+// summary table, the figures and the failed steps.
 int report_sweep(const SolveSetup& setup, std::span<const analysis::SweepStep> steps,
                  const std::optional<PlotTool>& plot);
 

@@ -12,10 +12,12 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <limits>
 #include <memory>
 #include <optional>
 #include <span>
+#include <system_error>
 #include <vector>
 
 #include "../activity.hpp"
@@ -136,11 +138,18 @@ int run_sweep_on_slabs(const SolveSetup& setup, const mpi::MpiCommunicator& worl
     metadata.surface_statistics = mpi::slab_surface_statistics(setup.grid, layout, heights, world);
   });
   activity.emplace(fmt::format("writing {}", setup.output.string()));
+  // A previous sweep's table would not match the new file: removed first, so
+  // that an interrupted write leaves no mismatched pair (file-format.md).
+  mpi::run_agreed(world, [&] {
+    std::error_code ignored;
+    if (root) std::filesystem::remove(io::sweep_csv_path(setup.output), ignored);
+  });
   mpi::write_sweep_slabs(world, setup.output, setup.grid, layout, heights, steps, metadata);
   int code = kExitOk;
   mpi::run_agreed(world, [&] {
     if (!root) return;
     activity.emplace(fmt::format("writing {}", io::sweep_csv_path(setup.output).string()));
+    io::write_sweep_csv(io::sweep_csv_path(setup.output), steps);
     code = report_sweep(setup, steps, std::nullopt);
   });
   mpi::check(MPI_Bcast(&code, 1, MPI_INT, 0, world.get()), "MPI_Bcast");

@@ -14,6 +14,7 @@
 #include "halfspace/error.hpp"
 #include "halfspace/io/output_file.hpp"
 #include "hdf5_handle.hpp"
+#include "hdf5_writing.hpp"
 
 namespace halfspace::io {
 namespace {
@@ -350,18 +351,19 @@ Hdf5Node Hdf5Node::create_group(std::string_view name) const {
   return Hdf5Node(group, transfer_);
 }
 
-void write_hdf5_file(const std::filesystem::path& path, const std::function<void(const Hdf5Node& root)>& fill) {
+std::vector<char> hdf5_file_image(const std::filesystem::path& path,
+                                  const std::function<void(const Hdf5Node& root)>& fill) {
   check_output_path(path);  // before assembling, which may take a while
-  std::vector<char> image;
-  {
-    const detail::ErrorPrintingOff quiet;
-    try {
-      image = build_image(path, fill, [](hid_t root) { return Hdf5Node(root); });
-    } catch (const FileError& error) {
-      throw FileError(fmt::format("cannot write output '{}': {}", path.string(), error.what()));
-    }
+  const detail::ErrorPrintingOff quiet;
+  try {
+    return build_image(path, fill, [](hid_t root) { return Hdf5Node(root); });
+  } catch (const FileError& error) {
+    throw FileError(fmt::format("cannot write output '{}': {}", path.string(), error.what()));
   }
-  write_output_file(path, image);
+}
+
+void write_hdf5_file(const std::filesystem::path& path, const std::function<void(const Hdf5Node& root)>& fill) {
+  write_output_file(path, hdf5_file_image(path, fill));
 }
 
 void fill_hdf5_file(std::int64_t file, std::int64_t transfer, const std::function<void(const Hdf5Node& root)>& fill) {

@@ -4,12 +4,22 @@
 // halfspace/io/hdf5_output.hpp.
 #pragma once
 
+#include <filesystem>
+#include <functional>
+#include <vector>
+
 #include "halfspace/grid.hpp"
 #include "halfspace/io/hdf5_output.hpp"
 #include "halfspace/io/result_writer.hpp"
 #include "halfspace/solvers/solve_result.hpp"
 
 namespace halfspace::io {
+
+// The bytes of the file write_hdf5_file would write to `path` (checked as an
+// output path first), for a writer that writes it with other files as one
+// set (write_output_set). Throws FileError "cannot write output '<path>': ...".
+std::vector<char> hdf5_file_image(const std::filesystem::path& path,
+                                  const std::function<void(const Hdf5Node& root)>& fill);
 
 // Which rows of the fields a writer holds: all of them (the serial
 // writers), or, in a file that several processes write at once, this

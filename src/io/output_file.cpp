@@ -14,9 +14,11 @@
 #include <climits>
 #include <csignal>
 #include <cstring>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <system_error>
+#include <vector>
 
 #include "halfspace/error.hpp"
 
@@ -306,6 +308,45 @@ void OutputTemporary::commit() {
   }
   rename_onto_target(path_, target_, temporary_);
   registration_.reset();
+}
+
+void write_output_set(std::span<const OutputBytes> files,
+                      const std::function<void(std::size_t renamed)>& after_rename) {
+  for (const OutputBytes& file : files) check_output_path(file.path);
+  std::vector<std::unique_ptr<OutputTemporary>> temporaries;
+  for (const OutputBytes& file : files) {
+    temporaries.push_back(std::make_unique<OutputTemporary>(file.path));
+    const fs::path& temporary = temporaries.back()->temporary();
+    const int descriptor = ::open(temporary.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+    int error = descriptor < 0 ? errno : 0;
+    const char* data = file.bytes.data();
+    std::size_t left = file.bytes.size();
+    while (error == 0 && left > 0) {
+      const ssize_t written = ::write(descriptor, data, left);
+      if (written < 0) {
+        if (errno != EINTR) error = errno;
+        continue;
+      }
+      data += written;
+      left -= static_cast<std::size_t>(written);
+    }
+    if (descriptor >= 0 && ::close(descriptor) != 0 && error == 0 && errno != EINTR) error = errno;
+    if (error != 0) {
+      fail(file.path, fmt::format("could not write temporary file '{}': {}", temporary.string(), std::strerror(error)));
+    }
+  }
+  // The later files' old versions go before the first new one arrives.
+  for (std::size_t k = 1; k < files.size(); ++k) {
+    const fs::path target = output_target(files[k].path);
+    if (::unlink(target.c_str()) != 0 && errno != ENOENT) {
+      fail(files[k].path, fmt::format("could not remove the previous file, which would no longer match '{}': {}",
+                                      files[0].path.string(), std::strerror(errno)));
+    }
+  }
+  for (std::size_t k = 0; k < files.size(); ++k) {
+    temporaries[k]->commit();  // fsyncs, then renames
+    if (after_rename) after_rename(k);
+  }
 }
 
 void reserve_output_space(const fs::path& path, const fs::path& temporary, std::uint64_t bytes) {

@@ -20,17 +20,22 @@ namespace {
   throw FileError(fmt::format("cannot read result file '{}': {}", path.string(), what));
 }
 
-std::string read_boundary(const std::filesystem::path& path) {
+// A root string attribute holding one value (a scalar or a single-element
+// array), or nullopt if the file has none.
+std::optional<std::string> read_root_string(const std::filesystem::path& path, const char* name) {
   const detail::ErrorPrintingOff quiet;
   const detail::File file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
   if (!file.valid()) fail(path, "it cannot be opened as HDF5");
-  if (H5Aexists(file.get(), "boundary") <= 0) {
-    fail(path, "it has no root attribute 'boundary' (periodic or free): is it a halfspace result file?");
-  }
-  const detail::Attribute attribute(H5Aopen(file.get(), "boundary", H5P_DEFAULT));
+  if (H5Aexists(file.get(), name) <= 0) return std::nullopt;
+  const detail::Attribute attribute(H5Aopen(file.get(), name, H5P_DEFAULT));
   const detail::Datatype type(H5Aget_type(attribute.get()));
   if (!attribute.valid() || !type.valid() || H5Tget_class(type.get()) != H5T_STRING) {
-    fail(path, "its root attribute 'boundary' is not a string");
+    fail(path, fmt::format("its root attribute '{}' is not a string", name));
+  }
+  const detail::Dataspace space(H5Aget_space(attribute.get()));
+  const hssize_t points = space.valid() ? H5Sget_simple_extent_npoints(space.get()) : -1;
+  if (points != 1) {
+    fail(path, fmt::format("its root attribute '{}' holds {} values; expected one string", name, points));
   }
   std::string value;
   if (H5Tis_variable_str(type.get()) > 0) {
@@ -39,20 +44,41 @@ std::string read_boundary(const std::filesystem::path& path) {
     H5Tset_cset(memory.get(), H5Tget_cset(type.get()));
     char* text = nullptr;
     if (H5Aread(attribute.get(), memory.get(), &text) < 0 || text == nullptr) {
-      fail(path, "its root attribute 'boundary' cannot be read");
+      fail(path, fmt::format("its root attribute '{}' cannot be read", name));
     }
     value = text;
     H5free_memory(text);
   } else {
     const std::size_t size = H5Tget_size(type.get());
-    if (size == 0 || size > 64) fail(path, "its root attribute 'boundary' is not 'periodic' or 'free'");
+    if (size == 0 || size > 64) fail(path, fmt::format("its root attribute '{}' is longer than 64 characters", name));
     std::string buffer(size, '\0');
     if (H5Aread(attribute.get(), type.get(), buffer.data()) < 0) {
-      fail(path, "its root attribute 'boundary' cannot be read");
+      fail(path, fmt::format("its root attribute '{}' cannot be read", name));
     }
     value = buffer.substr(0, buffer.find('\0'));
   }
   return value;
+}
+
+std::string read_boundary(const std::filesystem::path& path) {
+  const std::optional<std::string> boundary = read_root_string(path, "boundary");
+  if (!boundary) {
+    fail(path, "it has no root attribute 'boundary' (periodic or free): is it a halfspace result file?");
+  }
+  return *boundary;
+}
+
+// Only a result of `halfspace solve` (format = 'halfspace-result') holds the
+// contact pressure; a stress file also has a /pressure, but is an output.
+void require_result_kind(const std::filesystem::path& path) {
+  const std::optional<std::string> format = read_root_string(path, "format");
+  if (!format)
+    fail(path, "it has no root attribute 'format': a result of `halfspace solve` has format = 'halfspace-result'");
+  if (*format != "halfspace-result") {
+    fail(path, fmt::format("its root attribute format = '{}' is not 'halfspace-result': pass a result of `halfspace "
+                           "solve` (or one step of a sweep's)",
+                           *format));
+  }
 }
 
 // The coating's five root attributes (result_attributes.hpp), if the result
@@ -104,13 +130,22 @@ ResultPressure read_result_pressure(const std::filesystem::path& path) {
   } catch (const InputError& error) {
     fail(path, fmt::format("root attribute 'boundary': {}", error.what()));
   }
+  require_result_kind(path);
   if (!(field.dx > 0.0) || (field.dimension == 2 && !(field.dy > 0.0))) {
-    fail(path, fmt::format("its root attributes dx = {} m, dy = {} m do not give a grid spacing (> 0 m)", field.dx,
-                           field.dy));
+    fail(path, fmt::format("its root attributes dx = {:.6g} m, dy = {:.6g} m do not give a grid spacing (> 0 m)",
+                           field.dx, field.dy));
   }
-  ResultPressure result{field.dimension == 1 ? Grid::line(field.nx, field.dx, boundary)
-                                             : Grid::plane(field.nx, field.ny, field.dx, field.dy, boundary),
-                        std::vector<double>(field.heights.data(), field.heights.data() + field.heights.size()),
+  const Grid grid = [&] {
+    try {
+      return field.dimension == 1 ? Grid::line(field.nx, field.dx, boundary)
+                                  : Grid::plane(field.nx, field.ny, field.dx, field.dy, boundary);
+    } catch (const InputError& error) {
+      fail(path, fmt::format("its root attributes dx = {:.6g} m, dy = {:.6g} m with the pressure's {} cells give no "
+                             "valid grid ({})",
+                             field.dx, field.dy, field.heights.size(), error.what()));
+    }
+  }();
+  ResultPressure result{grid, std::vector<double>(field.heights.data(), field.heights.data() + field.heights.size()),
                         read_coating(path)};
   return result;
 }

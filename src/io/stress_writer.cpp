@@ -29,8 +29,8 @@ std::vector<std::size_t> volume_shape(const Grid& grid, std::size_t depth_count)
 
 stress::VonMisesMaximum write_stress_group(const Hdf5Node& root, stress::SubsurfaceStress& stresses,
                                            std::span<const double> pressure, std::span<const double> depths) {
-  stress::check_depths(depths);
   const Grid& grid = stresses.grid();
+  stress::check_depths(grid, depths);
   const Hdf5Node group = root.create_group("stress");
   group.write_double_attribute("poisson_ratio", stresses.poisson_ratio());
   if (const std::optional<LayeredMaterial> coating = stresses.coating()) {

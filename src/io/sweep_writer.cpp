@@ -16,6 +16,7 @@
 #include "halfspace/io/hdf5_output.hpp"
 #include "halfspace/io/output_file.hpp"
 #include "halfspace/io/result_attributes.hpp"
+#include "md5.hpp"
 #include "sweep_writing.hpp"
 
 namespace halfspace::io {
@@ -77,6 +78,25 @@ void write_summary_table(const Hdf5Node& root, const Grid& grid, std::span<const
   }
 }
 
+// The summary table as CSV text (write_sweep_csv's contents).
+std::string sweep_csv_text(std::span<const analysis::SweepStep> steps) {
+  std::string text;
+  const std::span<const analysis::SummaryColumn> columns = analysis::summary_columns();
+  for (std::size_t c = 0; c < columns.size(); ++c) {
+    text += c == 0 ? "" : ",";
+    text += columns[c].name;
+  }
+  text += '\n';
+  for (const analysis::SweepStep& step : steps) {
+    for (std::size_t c = 0; c < columns.size(); ++c) {
+      // {} is the shortest representation that reads back to the same double.
+      text += fmt::format("{}{}", c == 0 ? "" : ",", columns[c].value(step));
+    }
+    text += '\n';
+  }
+  return text;
+}
+
 }  // namespace
 
 void write_sweep_result(const std::filesystem::path& path, const Grid& grid, std::span<const double> height,
@@ -88,7 +108,14 @@ void write_sweep_result(const std::filesystem::path& path, const Grid& grid, std
     check_field("gap", k, static_cast<std::size_t>(steps[k].result.gap.size()), grid);
     check_field("displacement", k, static_cast<std::size_t>(steps[k].result.displacement.size()), grid);
   }
-  write_hdf5_file(path, [&](const Hdf5Node& root) { write_sweep_contents(root, grid, height, steps, metadata); });
+  // The .h5 and its .csv as one set (docs/file-format.md#sweep-results):
+  // both complete on disk before either replaces anything, the previous
+  // sweep's .csv removed before the new .h5 arrives.
+  const std::vector<char> image =
+      hdf5_file_image(path, [&](const Hdf5Node& root) { write_sweep_contents(root, grid, height, steps, metadata); });
+  const std::string csv = sweep_csv_text(steps);
+  const OutputBytes files[] = {{path, image}, {sweep_csv_path(path), csv}};
+  write_output_set(files);
 }
 
 void write_sweep_contents(const Hdf5Node& root, const Grid& grid, std::span<const double> height,
@@ -106,6 +133,9 @@ void write_sweep_contents(const Hdf5Node& root, const Grid& grid, std::span<cons
   write_summary_table(root, grid, steps, metadata.load_mode, rows);
   write_result_root_attributes(root, grid, steps.back().result, root_metadata);
   root.write_int64_attribute("sweep_steps", static_cast<std::int64_t>(steps.size()));
+  // The digest of the .csv written with this file: a .csv beside it with
+  // another digest belongs to another sweep.
+  root.write_string_attribute("summary_csv_md5", detail::md5_hex(sweep_csv_text(steps)));
   // Adhesive sweeps: the pull-off force of the unloading branch (NaN without one).
   if (!steps.front().result.adhesion.law.empty()) {
     root.write_double_attribute("pull_off_force", analysis::pull_off_force(steps));
@@ -131,21 +161,7 @@ std::uint64_t sweep_file_bound(const Grid& grid, std::span<const analysis::Sweep
 }
 
 void write_sweep_csv(const std::filesystem::path& path, std::span<const analysis::SweepStep> steps) {
-  std::string text;
-  const std::span<const analysis::SummaryColumn> columns = analysis::summary_columns();
-  for (std::size_t c = 0; c < columns.size(); ++c) {
-    text += c == 0 ? "" : ",";
-    text += columns[c].name;
-  }
-  text += '\n';
-  for (const analysis::SweepStep& step : steps) {
-    for (std::size_t c = 0; c < columns.size(); ++c) {
-      // {} is the shortest representation that reads back to the same double.
-      text += fmt::format("{}{}", c == 0 ? "" : ",", columns[c].value(step));
-    }
-    text += '\n';
-  }
-  write_output_file(path, text);
+  write_output_file(path, sweep_csv_text(steps));
 }
 
 std::filesystem::path sweep_csv_path(const std::filesystem::path& result_path) {

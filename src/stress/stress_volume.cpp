@@ -22,11 +22,38 @@ void check_depths(std::span<const double> depths) {
   for (const double z : depths) checked_depth(z);
 }
 
+void check_depths(const Grid& grid, std::span<const double> depths) {
+  check_depths(depths);
+  for (const double z : depths) checked_depth(grid, z);
+}
+
+namespace {
+
+// Throws InputError at the first value of the slice's nine fields (in storage
+// order) that is not finite: nothing that overflowed is handed to a writer.
+void require_finite(const StressSlice& slice, const Grid& grid) {
+  const auto check = [&](const std::vector<double>& field, std::string_view name) {
+    const auto bad = std::find_if(field.begin(), field.end(), [](double v) { return !std::isfinite(v); });
+    if (bad == field.end()) return;
+    const auto cell = static_cast<std::size_t>(bad - field.begin());
+    throw InputError(fmt::format(
+        "the stress {} at depth z = {:.6g} m, cell (row {}, column {}) of the {} grid, is {}: the pressure or the "
+        "grid's spacing is too large for the stresses to be represented; nothing was written",
+        name, slice.depth, cell / grid.nx(), cell % grid.nx(), grid.shape_string(), *bad));
+  };
+  for (std::size_t c = 0; c < kComponentCount; ++c) check(slice.components[c], kComponentNames[c]);
+  check(slice.von_mises, "von_mises");
+  check(slice.max_shear, "max_shear");
+  check(slice.hydrostatic, "hydrostatic");
+}
+
+}  // namespace
+
 VonMisesMaximum stresses_by_depth(SubsurfaceStress& stresses, std::span<const double> pressure,
                                   std::span<const double> depths,
                                   const std::function<void(const StressSlice& slice)>& consume) {
-  check_depths(depths);
   const Grid& grid = stresses.grid();
+  check_depths(grid, depths);
   stresses.set_pressure(pressure);
   const std::size_t cells = grid.size();
   StressSlice slice;
@@ -51,6 +78,7 @@ VonMisesMaximum stresses_by_depth(SubsurfaceStress& stresses, std::span<const do
       slice.max_shear[k] = max_shear(tensor);
       slice.hydrostatic[k] = hydrostatic(tensor);
     });
+    require_finite(slice, grid);
     // The first maximum in storage order (depth, then row), so that the
     // reported point does not depend on the thread count.
     const auto largest = std::max_element(slice.von_mises.begin(), slice.von_mises.end());
@@ -94,14 +122,14 @@ StressVolume fill_volume(SubsurfaceStress& stresses, std::span<const double> pre
 
 StressVolume compute_stress_volume(const Grid& grid, std::span<const double> pressure, std::span<const double> depths,
                                    double nu, FftPlanning planning) {
-  check_depths(depths);
+  check_depths(grid, depths);
   SubsurfaceStress stresses(grid, nu, planning);
   return fill_volume(stresses, pressure, depths);
 }
 
 StressVolume compute_stress_volume(const Grid& grid, std::span<const double> pressure, std::span<const double> depths,
                                    const LayeredMaterial& coating, FftPlanning planning) {
-  check_depths(depths);
+  check_depths(grid, depths);
   SubsurfaceStress stresses(grid, coating, planning);
   StressVolume volume = fill_volume(stresses, pressure, depths);
   volume.coating = coating;

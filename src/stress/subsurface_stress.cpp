@@ -108,6 +108,28 @@ double checked_depth(double depth) {
   return depth;
 }
 
+DepthRange allowed_depth_range(const Grid& grid) {
+  const bool line = grid.dimension() == 1;
+  const double finer = line ? grid.dx() : std::min(grid.dx(), grid.dy());
+  const double length = static_cast<double>(grid.nx()) * grid.dx();
+  const double longer = line ? length : std::max(length, static_cast<double>(grid.ny()) * grid.dy());
+  return {kShallowestDepthPerCell * finer, kDeepestDepthPerDomain * longer};
+}
+
+double checked_depth(const Grid& grid, double depth) {
+  checked_depth(depth);
+  const DepthRange range = allowed_depth_range(grid);
+  if (!(depth >= range.shallowest && depth <= range.deepest)) {
+    throw InputError(fmt::format(
+        "depth = {:.6g} m is outside the allowed range {:.6g} to {:.6g} m on the {} {} grid (dx = {:.6g} m): from "
+        "{:g} of a cell, where the field is the surface pressure, to {:g} times the domain's longer side, below which "
+        "it is that of the mean pressure (periodic) or of a point load (free)",
+        depth, range.shallowest, range.deepest, to_string(grid.boundary()), grid.shape_string(), grid.dx(),
+        kShallowestDepthPerCell, kDeepestDepthPerDomain));
+  }
+  return depth;
+}
+
 struct SubsurfaceStress::Impl {
   Impl(const Grid& g, const LayeredMaterial& coating, FftPlanning planning)
       : Impl(g, coating.layer.poissons_ratio, planning, &coating) {}
@@ -170,7 +192,7 @@ struct SubsurfaceStress::Impl {
   }
 
   void compute(double depth, const std::array<std::span<double>, kComponentCount>& fields) {
-    checked_depth(depth);
+    checked_depth(grid, depth);
     if (!has_pressure) throw InputError("subsurface stress: no pressure was set before computing stresses");
     for (std::size_t c = 0; c < kComponentCount; ++c) {
       if (fields[c].size() != grid.size()) {

@@ -1,10 +1,12 @@
 // Tests of `halfspace stress` through the real executable: a round trip from a
 // solved result to the stress file (layout, units, values against the
 // library), and its refusals of bad input.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -184,6 +186,98 @@ TEST(StressCliTest, SolveWritesTheStressGroupIntoTheResult) {
     bad_depth.push_back(a);
   }
   expect_input_error(run_program(bad_depth, dir.path()), "--stress-depths 0 is invalid");
+  EXPECT_FALSE(fs::exists(dir / "none.h5"));
+}
+
+// A copy of `result` whose root attribute `name` is replaced by `rewrite`
+// (which creates the new one on the open file).
+template <class Rewrite>
+fs::path altered_result(const fs::path& result, const std::string& copy, const char* name, Rewrite rewrite) {
+  const fs::path path = result.parent_path() / copy;
+  fs::copy_file(result, path, fs::copy_options::overwrite_existing);
+  const test::H5 file(H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), H5Fclose, "open " + path.string());
+  test::check(H5Adelete(file.get(), name), std::string("delete ") + name);
+  rewrite(file.get());
+  return path;
+}
+
+// Depths outside the grid's range, and results whose stresses would not be
+// finite, are refused and nothing is written (a depth of 1e154 m wrote
+// all-NaN fields and exit 0; dx = 1e300 m was refused without naming the
+// file or the attribute).
+TEST(StressCliTest, RefusesDepthsAndGridsWhoseStressesAreNotFinite) {
+  const TempDir dir;
+  const fs::path result = solved_sphere(dir);  // 32x32 cells of 1.25e-5 m
+  const auto run = [&](const fs::path& input, const std::string& depths) {
+    return run_program({"stress", input.string(), "--depths", depths, "--nu", "0.3", "--output", "s.h5"}, dir.path());
+  };
+  expect_input_error(run(result, "1e154"),
+                     "--depths 1e154: depth = 1e+154 m is outside the allowed range 1.25e-11 to 0.004 m on the free "
+                     "32x32 grid");
+  expect_input_error(run(result, "1e-6,5e-3"), "depth = 0.005 m is outside the allowed range");
+  for (const double dx : {1e150, 1e300}) {
+    const fs::path huge =
+        altered_result(result, "huge.h5", "dx", [&](hid_t file) { test::add_double_attribute(file, "dx", dx); });
+    const ProgramRun refused = run(huge, "1e-6");
+    expect_input_error(refused, "result file '" + huge.string() + "'");
+    expect_input_error(refused, fmt::format("dx = {:.6g} m", dx));
+  }
+  EXPECT_FALSE(fs::exists(dir / "s.h5"));
+}
+
+// The input must be a result: a stress file (which has a /pressure too) and
+// a result whose 'boundary' holds two strings are refused.
+TEST(StressCliTest, RefusesFilesThatAreNotAResult) {
+  const TempDir dir;
+  const fs::path result = solved_sphere(dir);
+  const auto run = [&](const fs::path& input) {
+    return run_program({"stress", input.string(), "--depths", "1e-6", "--nu", "0.3", "--output", "out.h5"}, dir.path());
+  };
+  ASSERT_EQ(
+      run_program({"stress", result.string(), "--depths", "1e-6", "--nu", "0.3", "--output", "stress.h5", "--quiet"},
+                  dir.path())
+          .exit_code,
+      kExitOk);
+  expect_input_error(run(dir / "stress.h5"),
+                     "its root attribute format = 'halfspace-stress' is not 'halfspace-result'");
+  const fs::path two = altered_result(result, "two.h5", "boundary", [](hid_t file) {
+    const test::H5 type(H5Tcopy(H5T_C_S1), H5Tclose, "string type");
+    test::check(H5Tset_size(type.get(), 8), "string size");
+    const hsize_t count = 2;
+    const test::H5 space(H5Screate_simple(1, &count, nullptr), H5Sclose, "space");
+    const test::H5 attribute(H5Acreate2(file, "boundary", type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose,
+                             "create boundary");
+    const char values[17] = "free\0\0\0\0periodic";  // two 8-character strings
+    test::check(H5Awrite(attribute.get(), type.get(), values), "write boundary");
+  });
+  expect_input_error(run(two), "its root attribute 'boundary' holds 2 values; expected one string");
+  EXPECT_FALSE(fs::exists(dir / "out.h5"));
+}
+
+// solve --stress-depths: a depth beyond the grid's range is refused before the
+// solve (it reported converged with a maximum that ignored the NaN depth);
+// the messages name the option as given, or the config file's key and file.
+TEST(StressCliTest, SolveRefusesStressDepthsOutsideTheGrid) {
+  const TempDir dir;
+  const std::vector<std::string> sphere = {"solve", "--geometry", "sphere",      "--radius", "0.01",     "--grid",
+                                           "32x32", "--size",     "4e-4",        "--force",  "1",        "--E-star",
+                                           "1e11",  "--quiet",    "--stress-nu", "0.3",      "--output", "none.h5"};
+  std::vector<std::string> deep = sphere;
+  for (const char* a : {"--stress-depths", "1e-6,1e200"}) deep.push_back(a);
+  expect_input_error(run_program(deep, dir.path()),
+                     "--stress-depths 1e-6,1e200: depth = 1e+200 m is outside the allowed range");
+  std::vector<std::string> many = sphere;
+  for (const char* a : {"--stress-depths", "1e-6:1e-5:4097"}) many.push_back(a);
+  const ProgramRun too_many = run_program(many, dir.path());
+  expect_input_error(too_many, "--stress-depths 1e-6:1e-5:4097 is invalid: COUNT = 4097");
+  EXPECT_EQ(too_many.err.find("depth-range"), std::string::npos) << too_many.err;
+  {
+    std::ofstream config(dir / "run.toml");
+    config << "stress-depths = \"1e-6:1e-5:4097\"\n";
+  }
+  std::vector<std::string> from_file = sphere;
+  for (const char* a : {"--config", "run.toml"}) from_file.push_back(a);
+  expect_input_error(run_program(from_file, dir.path()), R"(stress-depths = "1e-6:1e-5:4097" in run.toml is invalid)");
   EXPECT_FALSE(fs::exists(dir / "none.h5"));
 }
 

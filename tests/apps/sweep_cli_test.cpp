@@ -266,6 +266,54 @@ TEST(SweepCliTest, PlotReportsMissingToolsBeforeSolving) {
   EXPECT_FALSE(fs::exists(dir / "out.h5"));
 }
 
+// Whether process `pid` is gone (or only a zombie left for its parent).
+bool process_ended(long pid) {
+  std::ifstream stat(fmt::format("/proc/{}/stat", pid));
+  std::string line;
+  if (!std::getline(stat, line)) return true;
+  const std::size_t close = line.rfind(')');
+  return close != std::string::npos && close + 2 < line.size() && line[close + 2] == 'Z';
+}
+
+// The time limit ends the plotting tool's whole process group: a tool that
+// forks a child which outlives it (here a shell that starts a background
+// sleep, then sleeps itself) leaves nothing running (the child's sleep went
+// on after the tool was stopped).
+TEST(SweepCliTest, PlotTimeLimitEndsTheToolAndItsChildren) {
+  const TempDir dir;
+  {
+    std::ofstream interpreter(dir / "fake-python");
+    interpreter << "#!/bin/sh\n"
+                   "# The import check passes; the tool forks a sleeper, records its pid and sleeps.\n"
+                   "if [ \"$1\" = \"-c\" ]; then exit 0; fi\n"
+                   "sleep 300 &\n"
+                   "echo $! > grandchild.pid\n"
+                   "sleep 300\n";
+  }
+  fs::permissions(dir / "fake-python", fs::perms::owner_all);
+  { std::ofstream(dir / "tool.py") << "# run by fake-python\n"; }
+  const ProgramRun run =
+      run_program(with(wavy("--mean-pressure", "1e7", "single.h5"), {"--plot", "--quiet"}), dir.path(),
+                  {{"HALFSPACE_PYTHON", (dir / "fake-python").string()},
+                   {"HALFSPACE_PLOT_TOOL", (dir / "tool.py").string()},
+                   {"HALFSPACE_PLOT_TIMEOUT", "1"}});
+  EXPECT_EQ(run.exit_code, kExitPlotFailed) << run.err;
+  EXPECT_NE(run.err.find("did not finish within 1 s and was stopped"), std::string::npos) << run.err;
+  EXPECT_TRUE(fs::exists(dir / "single.h5"));
+  std::ifstream recorded(dir / "grandchild.pid");
+  long grandchild = 0;
+  ASSERT_TRUE(recorded >> grandchild) << "the tool did not start its child";
+  // The group was sent SIGKILL before the program returned; allow the
+  // orphan's new parent a moment to reap it.
+  bool ended = false;
+  for (int k = 0; k < 100 && !ended; ++k) {
+    ended = process_ended(grandchild);
+    if (!ended) std::system("sleep 0.05");
+  }
+  EXPECT_TRUE(ended) << "the tool's child " << grandchild << " is still running";
+  if (!ended) std::system(fmt::format("kill -9 {}", grandchild).c_str());
+}
+
 TEST(SweepCliTest, PlotDrawsFiguresNextToTheResult) {
   if (!python_with_matplotlib()) GTEST_SKIP() << "/usr/bin/python3 with matplotlib, h5py and numpy is not installed";
   const TempDir dir;

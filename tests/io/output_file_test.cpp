@@ -10,6 +10,7 @@
 #include <sys/stat.h>
 #include <sys/sysmacros.h>
 #include <sys/un.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <csignal>
@@ -166,6 +167,62 @@ TEST(OutputFileTest, WritesAtomicallyAndLeavesNoTemporary) {
   const std::string message = write_refusal(dir / "missing" / "t.csv", "x");
   EXPECT_NE(message.find("directory '" + (dir / "missing").string() + "' does not exist"), std::string::npos)
       << message;
+}
+
+// A set of files ended between its renames, in a child process: by SIGKILL
+// it leaves the first file new, the second's old version removed and its
+// temporary behind; by SIGTERM (with the cleanup handlers) the same without
+// the temporary. Never the new first file beside the old second one (a
+// sweep's new .h5 beside the previous .csv).
+std::vector<std::string> set_killed_between_renames(const TempDir& dir, int signal) {
+  std::ofstream(dir / "a.h5") << "old a";
+  std::ofstream(dir / "a.csv") << "old b";
+  std::fflush(nullptr);
+  const pid_t child = ::fork();
+  if (child == 0) {
+    if (signal == SIGTERM) install_output_cleanup_on_signals();
+    const std::string a = "new a";
+    const std::string b = "new b";
+    const OutputBytes files[] = {{dir / "a.h5", a}, {dir / "a.csv", b}};
+    write_output_set(files, [&](std::size_t renamed) {
+      if (renamed == 0) ::raise(signal);
+    });
+    ::_exit(0);
+  }
+  int status = 0;
+  EXPECT_EQ(::waitpid(child, &status, 0), child);
+  EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == signal) << status;
+  EXPECT_EQ(read_text(dir / "a.h5"), "new a");
+  std::vector<std::string> entries = dir.entries();
+  const std::string leftover = fmt::format("a.csv.tmp-{}", child);
+  for (std::string& entry : entries) {
+    if (entry == leftover) entry = "a.csv.tmp-<pid>";
+  }
+  return entries;
+}
+
+TEST(OutputFileTest, SetEndedBetweenRenamesLeavesNoMismatchedPair) {
+  {
+    const TempDir dir;
+    EXPECT_EQ(set_killed_between_renames(dir, SIGKILL), (std::vector<std::string>{"a.csv.tmp-<pid>", "a.h5"}));
+  }
+  {
+    const TempDir dir;
+    EXPECT_EQ(set_killed_between_renames(dir, SIGTERM), (std::vector<std::string>{"a.h5"}));
+  }
+  // Not interrupted: both new, nothing else; a refused path changes nothing.
+  const TempDir dir;
+  std::ofstream(dir / "a.csv") << "old b";
+  const std::string a = "new a";
+  const std::string b = "new b";
+  const OutputBytes files[] = {{dir / "a.h5", a}, {dir / "a.csv", b}};
+  write_output_set(files);
+  EXPECT_EQ(read_text(dir / "a.h5"), "new a");
+  EXPECT_EQ(read_text(dir / "a.csv"), "new b");
+  const OutputBytes refused[] = {{dir / "a.h5", b}, {dir / "missing" / "a.csv", a}};
+  EXPECT_THROW(write_output_set(refused), FileError);
+  EXPECT_EQ(read_text(dir / "a.h5"), "new a");
+  EXPECT_EQ(dir.entries(), (std::vector<std::string>{"a.csv", "a.h5"}));
 }
 
 // The large-file path: the writer fills the temporary in place. A writer

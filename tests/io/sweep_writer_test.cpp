@@ -3,6 +3,7 @@
 // leave nothing behind.
 #include "halfspace/io/sweep_writer.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -46,8 +47,7 @@ TEST(SweepWriterTest, WritesGroupsTableAndExactCsv) {
   ResultMetadata metadata;
   metadata.load_mode = "force";
   write_sweep_result(dir / "s.h5", grid, height, steps, metadata);
-  write_sweep_csv(sweep_csv_path(dir / "s.h5"), steps);
-  EXPECT_EQ(dir.entries(), (std::vector<std::string>{"s.csv", "s.h5"})) << "no temporary file left";
+  EXPECT_EQ(dir.entries(), (std::vector<std::string>{"s.csv", "s.h5"})) << "the pair, and no temporary file left";
 
   const test::H5 file = test::open_file(dir / "s.h5");
   EXPECT_EQ(test::dataset_shape(file.get(), "/steps/002/pressure"), (std::vector<hsize_t>{6}));
@@ -74,6 +74,33 @@ TEST(SweepWriterTest, WritesGroupsTableAndExactCsv) {
     const std::size_t second = line.find(',', first + 1);
     EXPECT_EQ(std::strtod(line.substr(first + 1, second - first - 1).c_str(), nullptr), mean_pressure[k]) << line;
   }
+}
+
+// The .h5 records the MD5 of the .csv written with it; a previous sweep's
+// .csv is replaced by the new one (write_sweep_csv writes the same bytes).
+TEST(SweepWriterTest, TheCsvBesideTheFileIsTheOneItRecords) {
+  const TempDir dir;
+  const Grid grid = Grid::line(6, 1e-6, Boundary::free);
+  const std::vector<double> height(6, 0.0);
+  std::ofstream(dir / "s.csv") << "load\n1\n";  // a previous sweep's
+  const std::vector<analysis::SweepStep> steps = make_steps(grid, 3);
+  write_sweep_result(dir / "s.h5", grid, height, steps, ResultMetadata{});
+  const std::string recorded = test::read_string_attribute(test::open_file(dir / "s.h5").get(), "summary_csv_md5");
+  EXPECT_EQ(recorded.size(), 32u);
+  const auto md5_of = [&](const std::string& name) {
+    const std::string command = fmt::format("md5sum {} > {}", (dir / name).string(), (dir / "sum.txt").string());
+    EXPECT_EQ(std::system(command.c_str()), 0);
+    std::ifstream sum(dir / "sum.txt");
+    std::string digest;
+    sum >> digest;
+    return digest;
+  };
+  EXPECT_EQ(md5_of("s.csv"), recorded);
+  write_sweep_csv(dir / "apart.csv", steps);
+  EXPECT_EQ(md5_of("apart.csv"), recorded);
+  // Another sweep's table has another digest.
+  write_sweep_csv(dir / "other.csv", make_steps(grid, 2));
+  EXPECT_NE(md5_of("other.csv"), recorded);
 }
 
 TEST(SweepWriterTest, ManyStepsGetWiderNamesThatStillSort) {

@@ -330,5 +330,57 @@ TEST(SubsurfaceStressTest, RefusesBadInput) {
   EXPECT_THROW(compute_stress_volume(grid, pressure, none, 0.3), InputError);
 }
 
+// Depths are bounded by the grid: from a millionth of a cell to ten domain
+// lengths. At both ends, on every kind of grid, every field is finite; just
+// outside, the depth is refused with the range in the message (1e154 m gave
+// all-NaN fields with no error before).
+TEST(SubsurfaceStressTest, DepthsAreBoundedByTheGrid) {
+  const Grid grids[] = {Grid::plane(16, 8, 1e-6, 2e-6, Boundary::free),
+                        Grid::plane(16, 8, 1e-6, 2e-6, Boundary::periodic), Grid::line(16, 1e-6, Boundary::free),
+                        Grid::line(16, 1e-6, Boundary::periodic)};
+  for (const Grid& grid : grids) {
+    const DepthRange range = allowed_depth_range(grid);
+    EXPECT_DOUBLE_EQ(range.shallowest, 1e-12);
+    EXPECT_DOUBLE_EQ(range.deepest, 1.6e-4);  // 16 cells of 1e-6 m (2D: also 8 of 2e-6 m)
+    std::vector<double> pressure(grid.size(), 0.0);
+    pressure[grid.size() / 2 + 3] = 1e9;
+    pressure[grid.size() / 2 + 4] = 5e8;
+    const std::vector<double> edges = {range.shallowest, range.deepest};
+    const StressVolume volume = compute_stress_volume(grid, pressure, edges, 0.3);
+    for (const auto& field : volume.components) {
+      for (const double v : field) ASSERT_TRUE(std::isfinite(v)) << grid.shape_string();
+    }
+    for (const double z : {0.99 * range.shallowest, 1.01 * range.deepest, 1e154}) {
+      const std::vector<double> depth = {z};
+      try {
+        compute_stress_volume(grid, pressure, depth, 0.3);
+        ADD_FAILURE() << "no error for z = " << z;
+      } catch (const InputError& error) {
+        const std::string message = error.what();
+        EXPECT_NE(message.find("is outside the allowed range 1e-12 to 0.00016 m on the"), std::string::npos) << message;
+      }
+    }
+  }
+}
+
+// A pressure whose stresses overflow is refused, never written as inf or NaN
+// (pressures of 1e300 Pa gave inf fields with a finite-looking maximum).
+TEST(SubsurfaceStressTest, RefusesFieldsThatAreNotFinite) {
+  for (const Boundary boundary : {Boundary::free, Boundary::periodic}) {
+    const Grid grid = Grid::plane(8, 8, 1e-6, 1e-6, boundary);
+    const std::vector<double> pressure(grid.size(), 1e308);
+    const std::vector<double> depths = {1e-6};
+    try {
+      compute_stress_volume(grid, pressure, depths, 0.3);
+      ADD_FAILURE() << "no error on the " << to_string(boundary) << " grid";
+    } catch (const InputError& error) {
+      const std::string message = error.what();
+      EXPECT_NE(message.find("at depth z = 1e-06 m, cell (row 0, column 0) of the 8x8 grid, is"), std::string::npos)
+          << message;
+      EXPECT_NE(message.find("too large for the stresses to be represented"), std::string::npos) << message;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace halfspace::stress

@@ -78,6 +78,7 @@ class Hdf5Node {
 
  private:
   friend void write_hdf5_file(const std::filesystem::path&, const std::function<void(const Hdf5Node&)>&);
+  friend std::vector<char> hdf5_file_image(const std::filesystem::path&, const std::function<void(const Hdf5Node&)>&);
   friend void fill_hdf5_file(std::int64_t, std::int64_t, const std::function<void(const Hdf5Node&)>&);
   // An HDF5 object id (hid_t), owned, and the transfer property list its
   // datasets are written with (H5P_DEFAULT, 0, or a collective one; not owned).

@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <span>
 
@@ -70,6 +71,23 @@ class OutputTemporary {
   std::filesystem::path temporary_;
   std::unique_ptr<Registration> registration_;
 };
+
+// One file of a set that write_output_set writes.
+struct OutputBytes {
+  std::filesystem::path path;
+  std::span<const char> bytes;
+};
+
+// Writes several files that belong together (a sweep's .h5 and .csv): every
+// path is checked and every temporary written first (a failure there
+// changes nothing); then the existing files at the later paths are removed,
+// and the temporaries are renamed in order. So a process ended between two
+// renames, even by SIGKILL, leaves the earlier files new and the later ones
+// absent (SIGKILL: and their temporaries), never an old file beside a new
+// one. `after_rename(k)`, if given, runs after file k is in place (a test's
+// seam). Throws FileError "cannot write output '<path>': <reason>".
+void write_output_set(std::span<const OutputBytes> files,
+                      const std::function<void(std::size_t renamed)>& after_rename = {});
 
 // Reserves `bytes` of disk space for the file at `temporary` (an
 // OutputTemporary's, once its writer has created it) without changing its

@@ -1,6 +1,7 @@
 // Writes a load sweep: one HDF5 file with a group of fields per step and the
 // summary table (docs/file-format.md#sweep-results), and the same table as
-// CSV. Both files appear only when complete (temporary name, then rename).
+// CSV. Both files appear only when complete (temporary name, then rename),
+// written as one set (output_file.hpp's write_output_set).
 #pragma once
 
 #include <filesystem>
@@ -18,14 +19,20 @@ namespace halfspace::io {
 // displacement, contact, residual_history and cluster_sizes (int64, largest
 // first) and the step's attributes; /sweep/<column> (float64, one entry per
 // step) for every summary_columns() column (sweep_table.hpp). metadata.load_mode and
-// the rest of metadata apply to every step. Throws InputError if `steps` is
-// empty or a field does not match the grid, FileError naming the path if the
-// file cannot be written.
+// the rest of metadata apply to every step; the root attribute
+// summary_csv_md5 is the MD5 of the summary table's CSV. The CSV is written
+// with it to sweep_csv_path(path): both temporaries complete first, then the
+// previous CSV removed, the .h5 renamed, the .csv renamed, so that the two
+// never come from different sweeps. Throws InputError if `steps` is empty or
+// a field does not match the grid, FileError naming the path if a file cannot
+// be written.
 void write_sweep_result(const std::filesystem::path& path, const Grid& grid, std::span<const double> height,
                         std::span<const analysis::SweepStep> steps, const ResultMetadata& metadata);
 
 // The summary table as CSV: a header line of the column names, then one line
-// per step, numbers in the shortest form that reads back exactly. Throws
+// per step, numbers in the shortest form that reads back exactly (what
+// write_sweep_result writes beside its file; for writers of the .h5 that
+// write the CSV apart, the MPI one). Throws
 // FileError naming the path if it cannot be written.
 void write_sweep_csv(const std::filesystem::path& path, std::span<const analysis::SweepStep> steps);
 

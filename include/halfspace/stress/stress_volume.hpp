@@ -57,12 +57,16 @@ struct StressSlice {
 // Throws InputError naming the problem unless there are 1 to kMaxDepthCount
 // depths, each finite and > 0 (m).
 void check_depths(std::span<const double> depths);
+// The same, and each depth in allowed_depth_range(grid).
+void check_depths(const Grid& grid, std::span<const double> depths);
 
 // The stresses of `pressure` (Pa, grid.size() values) below `stresses`' grid
 // at each of `depths` in turn: `consume` receives each depth's fields before
 // the next depth is computed, so that only one depth is ever held (the
 // streaming writer, io/stress_writer.hpp). Returns the largest von Mises
-// stress and its position. Throws InputError for bad depths or pressure.
+// stress and its position. Throws InputError for bad depths (check_depths on
+// the grid) or pressure, and for a field that is not finite (a pressure or
+// grid whose stresses overflow) before that depth is handed over.
 VonMisesMaximum stresses_by_depth(SubsurfaceStress& stresses, std::span<const double> pressure,
                                   std::span<const double> depths,
                                   const std::function<void(const StressSlice& slice)>& consume);

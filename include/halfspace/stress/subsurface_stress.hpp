@@ -34,6 +34,24 @@ void require_coated_stress_grid(const Grid& grid, const LayeredMaterial& coating
 // Throws InputError unless depth is finite and > 0 (m); returns it.
 double checked_depth(double depth);
 
+// The depths (m) at which stresses are computed on a grid: from a millionth
+// of the finer cell spacing (shallower, the field is the surface's own
+// cell-constant pressure to that resolution) to ten times the domain's longer
+// side (deeper, a periodic field is uniform, the non-mean modes having decayed
+// by exp(-20 pi), and a free one is a point load's, its cell coefficients lost
+// to cancellation as (z/dx)^2 machine epsilon).
+struct DepthRange {
+  double shallowest = 0.0;
+  double deepest = 0.0;
+};
+inline constexpr double kShallowestDepthPerCell = 1e-6;
+inline constexpr double kDeepestDepthPerDomain = 10.0;
+DepthRange allowed_depth_range(const Grid& grid);
+
+// Throws InputError naming the depth, the grid and the allowed range unless
+// depth lies in allowed_depth_range(grid); returns it.
+double checked_depth(const Grid& grid, double depth);
+
 class SubsurfaceStress {
  public:
   // Plans the transforms of `grid` (made once, reused for every depth) for a
@@ -71,7 +89,8 @@ class SubsurfaceStress {
   // cell centre: fields[c] (grid.size() values each) receives component c in
   // Component order. One inverse FFT per component (free grids: also one
   // forward FFT of the padded coefficients per component). Throws InputError
-  // for a bad depth, a field of the wrong size, or no pressure set.
+  // for a depth outside allowed_depth_range(grid()), a field of the wrong
+  // size, or no pressure set.
   void compute(double depth, const std::array<std::span<double>, kComponentCount>& fields);
 
  private:
