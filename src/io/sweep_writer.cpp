@@ -16,6 +16,7 @@
 #include "halfspace/io/hdf5_output.hpp"
 #include "halfspace/io/output_file.hpp"
 #include "halfspace/io/result_attributes.hpp"
+#include "halfspace/io/xdmf_writer.hpp"
 #include "sweep_writing.hpp"
 
 namespace halfspace::io {
@@ -89,6 +90,7 @@ void write_sweep_result(const std::filesystem::path& path, const Grid& grid, std
     check_field("displacement", k, static_cast<std::size_t>(steps[k].result.displacement.size()), grid);
   }
   write_hdf5_file(path, [&](const Hdf5Node& root) { write_sweep_contents(root, grid, height, steps, metadata); });
+  write_xdmf_sidecar(path, grid);  // for ParaView (xdmf_writer.hpp)
 }
 
 void write_sweep_contents(const Hdf5Node& root, const Grid& grid, std::span<const double> height,

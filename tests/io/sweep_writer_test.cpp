@@ -47,7 +47,7 @@ TEST(SweepWriterTest, WritesGroupsTableAndExactCsv) {
   metadata.load_mode = "force";
   write_sweep_result(dir / "s.h5", grid, height, steps, metadata);
   write_sweep_csv(sweep_csv_path(dir / "s.h5"), steps);
-  EXPECT_EQ(dir.entries(), (std::vector<std::string>{"s.csv", "s.h5"})) << "no temporary file left";
+  EXPECT_EQ(dir.entries(), (std::vector<std::string>{"s.csv", "s.h5", "s.xdmf"})) << "no temporary file left";
 
   const test::H5 file = test::open_file(dir / "s.h5");
   EXPECT_EQ(test::dataset_shape(file.get(), "/steps/002/pressure"), (std::vector<hsize_t>{6}));
