@@ -158,11 +158,20 @@ std::string escaped(std::string_view text) {
   std::string out;
   for (const char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -178,8 +187,8 @@ std::string number_list(const Numbers& values) {
 }
 
 std::string inline_item(std::size_t count, const std::string& values) {
-  return fmt::format(R"(<DataItem Dimensions="{}" NumberType="Float" Precision="8" Format="XML">{}</DataItem>)",
-                     count, values);
+  return fmt::format(R"(<DataItem Dimensions="{}" NumberType="Float" Precision="8" Format="XML">{}</DataItem>)", count,
+                     values);
 }
 
 std::string attribute(const FieldDataset& field, std::string_view center, std::string_view dimensions,
@@ -233,8 +242,8 @@ std::string stress_grid(const Grid& grid, const StressVolume& volume, const std:
   const std::string dimensions = fmt::format("{} {} {}", volume.depths.size(), ny, grid.nx());
   std::string text = "    <Grid Name=\"stress\" GridType=\"Uniform\">\n";
   text += fmt::format("      <Topology TopologyType=\"3DRectMesh\" Dimensions=\"{}\"/>\n", dimensions);
-  text += "      <Geometry GeometryType=\"VXVYVZ\">\n        " + inline_item(x.size(), number_list(x)) +
-          "\n        " + inline_item(y.size(), number_list(y)) + "\n        " + inline_item(z.size(), number_list(z)) +
+  text += "      <Geometry GeometryType=\"VXVYVZ\">\n        " + inline_item(x.size(), number_list(x)) + "\n        " +
+          inline_item(y.size(), number_list(y)) + "\n        " + inline_item(z.size(), number_list(z)) +
           "\n      </Geometry>\n";
   for (const FieldDataset& field : volume.fields) text += attribute(field, "Node", dimensions, file_name);
   return text + "    </Grid>\n";

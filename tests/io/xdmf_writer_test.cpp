@@ -189,8 +189,7 @@ TEST(XdmfWriterTest, ResultSidecarDescribesEveryFieldOnTheUniformGrid) {
 TEST(XdmfWriterTest, OneDimensionalResultIsALineOfNodes) {
   const TempDir dir;
   const Grid grid = Grid::line(9, 0.5e-6, Boundary::free);
-  write_result(dir / "line.h5", grid, std::vector<double>(grid.size(), 0.0), make_result(grid, 1e3),
-               ResultMetadata{});
+  write_result(dir / "line.h5", grid, std::vector<double>(grid.size(), 0.0), make_result(grid, 1e3), ResultMetadata{});
   const auto xdmf = read_sidecar(dir / "line.xdmf");
   const Element& grid_element = *xdmf->all("Grid").at(0);
   EXPECT_EQ(grid_element.child("Topology").attributes.at("Dimensions"), "1 1 9");
