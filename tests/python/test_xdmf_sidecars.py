@@ -174,3 +174,16 @@ def test_python_save_writes_the_sidecar(tmp_path):
     sweep.save(tmp_path / "s.h5")
     _, reader = read(tmp_path / "s.xdmf")
     assert reader.GetOutputInformation(0).Get(vtkStreamingDemandDrivenPipeline.TIME_STEPS()) == (0.0, 1.0)
+
+
+def test_result_with_stress_group_has_both_grids(tmp_path, cli):
+    run(cli, "solve", "--geometry", "sphere", "--radius", "0.01", "--grid", "16x16", "--size", "5e-4", "--E-star",
+        "1e11", "--force", "1", "--stress-depths", "1e-5,2e-5,4e-5", "--stress-nu", "0.3", "--output", "result.h5",
+        cwd=tmp_path)
+    blocks, _ = read(tmp_path / "result.xdmf")
+    assert [name for name, _ in blocks] == ["surface", "stress"]
+    with h5py.File(tmp_path / "result.h5") as f:
+        check_surface(blocks[0][1], field_datasets(f, (16, 16)), 16, 16, f.attrs["dx"], f.attrs["dy"])
+        volume = blocks[1][1]
+        np.testing.assert_array_equal(vtk_to_numpy(volume.GetZCoordinates()), -f["stress/depths"][()])
+        np.testing.assert_array_equal(arrays(volume)["sigma_zz"], f["stress/sigma_zz"][()].ravel())
