@@ -134,7 +134,7 @@ Contents read_contents(const std::filesystem::path& path, const Grid& grid) {
     if (!group.valid()) continue;
     if (group_name == "steps") {
       std::vector<std::string> steps;
-      fields_of(group.get(), "/steps", {}, &steps);
+      fields_of(group.get(), "/steps", field, &steps);  // its groups; it has no fields
       for (const std::string& step : steps) {
         const Object step_group(H5Oopen(group.get(), step.c_str(), H5P_DEFAULT));
         if (step_group.valid()) contents.steps.push_back({step, fields_of(step_group.get(), "/steps/" + step, field)});
