@@ -19,6 +19,7 @@
 #include "halfspace/geometry/builtin_surface.hpp"
 #include "halfspace/io/height_map_writer.hpp"
 #include "halfspace/io/output_file.hpp"
+#include "halfspace/io/xdmf_writer.hpp"
 #include "halfspace/memory_estimate.hpp"
 #include "halfspace/surface/self_affine.hpp"
 #include "halfspace/surface/statistics.hpp"
@@ -243,6 +244,7 @@ int run_generate(const GenerateOptions& o) {
   agree_everywhere([&] {
     // Refuse a device, FIFO or directory before generating, not after.
     io::check_output_path(*o.output);
+    io::check_xdmf_sidecar_path(*o.output);
     std::optional<geometry::SurfaceShape> shape;
     if (kind != "self-affine") {
       try {

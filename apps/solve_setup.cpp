@@ -25,6 +25,7 @@
 #include "halfspace/io/height_map_reader.hpp"
 #include "halfspace/io/output_file.hpp"
 #include "halfspace/io/sweep_writer.hpp"
+#include "halfspace/io/xdmf_writer.hpp"
 #include "halfspace/material.hpp"
 #include "halfspace/memory_estimate.hpp"
 #include "halfspace/solvers/adhesion_law.hpp"
@@ -382,7 +383,8 @@ fs::path output_from(const SolveOptions& o) {
 // Every file the run writes must be writable (io::check_output_path: a
 // regular file or a new name, never a device, FIFO or directory) and none
 // may replace one of the run's inputs or another of its outputs: the sweep's
-// CSV goes beside the result with the extension .csv, and measured FFT plans
+// CSV goes beside the result with the extension .csv, its XDMF sidecar with
+// .xdmf (io/xdmf_writer.hpp), and measured FFT plans
 // save the wisdom file. Checked before anything is read, solved or written
 // (docs/usage.md#output-files).
 void check_outputs_against_inputs(const SolveOptions& o, const fs::path& output, bool sweep, FftPlanning planning) {
@@ -396,6 +398,9 @@ void check_outputs_against_inputs(const SolveOptions& o, const fs::path& output,
                                    io::sweep_csv_path(output).string(), o.name("output")),
                        io::sweep_csv_path(output)});
   }
+  outputs.push_back({fmt::format("the XDMF sidecar {} (the {} name with .xdmf)", io::xdmf_sidecar_path(output).string(),
+                                 o.name("output")),
+                     io::xdmf_sidecar_path(output)});
   if (planning != FftPlanning::estimate) {
     if (const std::optional<fs::path> wisdom = fft_wisdom_path()) {
       outputs.push_back({fmt::format("the FFTW wisdom file {}", wisdom->string()), *wisdom});
@@ -407,7 +412,7 @@ void check_outputs_against_inputs(const SolveOptions& o, const fs::path& output,
 
   // Not the wisdom file: its directory is created on the first save, and a
   // wisdom file that cannot be written is skipped silently at that time.
-  for (std::size_t k = 0; k < (sweep ? 2U : 1U); ++k) {
+  for (std::size_t k = 0; k < (sweep ? 3U : 2U); ++k) {
     try {
       io::check_output_path(outputs[k].path);
     } catch (const FileError& error) {

@@ -15,6 +15,7 @@
 #include "halfspace/io/output_file.hpp"
 #include "halfspace/io/result_pressure_reader.hpp"
 #include "halfspace/io/stress_writer.hpp"
+#include "halfspace/io/xdmf_writer.hpp"
 #include "halfspace/memory_estimate.hpp"
 #include "halfspace/stress/stress_volume.hpp"
 #include "halfspace/stress/subsurface_stress.hpp"
@@ -63,6 +64,7 @@ int run_stress(const StressOptions& o, const std::vector<std::string>& argv) {
                     output));
   }
   io::check_output_path(output);
+  io::check_xdmf_sidecar_path(output);
   set_threads(threads_from(o.threads));
 
   io::ResultPressure input = [&] {

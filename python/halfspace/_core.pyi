@@ -115,7 +115,7 @@ class Result:
     def attributes(self) -> dict[str, Any]:
         """The result file's root attributes."""
     def save(self, path: str) -> None:
-        """Writes the HDF5 file `halfspace solve` writes."""
+        """Writes the HDF5 file `halfspace solve` writes, and its XDMF sidecar (`.xdmf`, for ParaView) beside it."""
 
 class Sweep:
     """A load sweep: one Result per step and the summary table."""
@@ -134,7 +134,7 @@ class Sweep:
     def to_pandas(self) -> Any:
         """The table as a pandas DataFrame (needs pandas)."""
     def save(self, path: str) -> None:
-        """Writes the sweep's HDF5 file and the CSV beside it."""
+        """Writes the sweep's HDF5 file, and the CSV and the XDMF sidecar (`.xdmf`, for ParaView) beside it."""
 
 def default_threads() -> int: ...
 def max_threads() -> int: ...

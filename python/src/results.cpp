@@ -303,7 +303,8 @@ void bind_results(nb::module_& module) {
                    "cluster_sizes, surface_rms_height, surface_rms_slope.")
       .def_prop_ro("attributes", &attributes_of, "The result file's attributes (those of the solve for a new one).")
       .def("save", &save_result, nb::arg("path"),
-           "Writes the HDF5 result file `halfspace solve` writes (docs/file-format.md).")
+           "Writes the HDF5 result file `halfspace solve` writes (docs/file-format.md), and its XDMF sidecar "
+           "(same name, .xdmf) for ParaView.")
       .def("__repr__", &describe);
 
   nb::class_<Sweep>(module, "Sweep", "A load sweep: one Result per step and the summary table.")
@@ -332,7 +333,8 @@ void bind_results(nb::module_& module) {
           "The summary table: one float64 array per column, one entry per step.")
       .def_prop_ro("load_mode", [](const Sweep& s) { return std::string(to_string(s.run->provenance.load_mode)); })
       .def("save", &save_sweep, nb::arg("path"),
-           "Writes the sweep's HDF5 file and the CSV table beside it (same name, .csv), as `halfspace solve` does.")
+           "Writes the sweep's HDF5 file, the CSV table (same name, .csv) and the XDMF sidecar (.xdmf) beside it, as "
+           "`halfspace solve` does.")
       .def("__repr__", [](const Sweep& s) {
         std::size_t converged = 0;
         for (const auto& step : s.run->steps) converged += step.result.converged() ? 1 : 0;

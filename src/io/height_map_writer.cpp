@@ -5,6 +5,7 @@
 
 #include "halfspace/error.hpp"
 #include "halfspace/io/hdf5_output.hpp"
+#include "halfspace/io/xdmf_writer.hpp"
 #include "halfspace/version.hpp"
 
 namespace halfspace::io {
@@ -16,6 +17,7 @@ void write_height_map(const std::filesystem::path& path, const Grid& grid, std::
                                  grid.size(), grid.shape_string()));
   }
   write_hdf5_file(path, [&](const Hdf5Node& root) { write_height_map_contents(root, grid, 0, heights, metadata); });
+  write_xdmf_sidecar(path, grid);  // for ParaView (xdmf_writer.hpp)
 }
 
 void write_height_map_contents(const Hdf5Node& root, const Grid& grid, std::size_t first_row,

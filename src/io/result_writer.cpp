@@ -13,6 +13,7 @@
 #include "halfspace/error.hpp"
 #include "halfspace/io/hdf5_output.hpp"
 #include "halfspace/io/result_attributes.hpp"
+#include "halfspace/io/xdmf_writer.hpp"
 #include "halfspace/solvers/interface_law.hpp"
 #include "halfspace/version.hpp"
 #include "hdf5_writing.hpp"
@@ -108,9 +109,10 @@ void write_result(const std::filesystem::path& path, const Grid& grid, std::span
   };
   if (metadata.extra_groups_bytes == 0) {
     write_hdf5_file(path, fill);
-    return;
+  } else {
+    write_large_hdf5_file(path, result_file_bound(grid, result, metadata), fill);
   }
-  write_large_hdf5_file(path, result_file_bound(grid, result, metadata), fill);
+  write_xdmf_sidecar(path, grid);  // for ParaView (xdmf_writer.hpp)
 }
 
 std::uint64_t result_file_bound(const Grid& grid, const SolveResult& result, const ResultMetadata& metadata) {

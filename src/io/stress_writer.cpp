@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "halfspace/io/result_attributes.hpp"
+#include "halfspace/io/xdmf_writer.hpp"
 #include "halfspace/version.hpp"
 
 namespace halfspace::io {
@@ -93,6 +94,7 @@ stress::VonMisesMaximum write_stress_file(const std::filesystem::path& path, str
     root.write_dataset("pressure", field_shape(grid), pressure, "Pa");
     maximum = write_stress_group(root, stresses, pressure, depths);
   });
+  write_xdmf_sidecar(path, grid);  // for ParaView (xdmf_writer.hpp)
   return maximum;
 }
 

@@ -16,6 +16,7 @@
 #include "halfspace/io/hdf5_output.hpp"
 #include "halfspace/io/output_file.hpp"
 #include "halfspace/io/result_attributes.hpp"
+#include "halfspace/io/xdmf_writer.hpp"
 #include "md5.hpp"
 #include "sweep_writing.hpp"
 
@@ -116,6 +117,7 @@ void write_sweep_result(const std::filesystem::path& path, const Grid& grid, std
   const std::string csv = sweep_csv_text(steps);
   const OutputBytes files[] = {{path, image}, {sweep_csv_path(path), csv}};
   write_output_set(files);
+  write_xdmf_sidecar(path, grid);  // for ParaView (xdmf_writer.hpp)
 }
 
 void write_sweep_contents(const Hdf5Node& root, const Grid& grid, std::span<const double> height,

@@ -20,6 +20,7 @@
 #include "halfspace/io/hdf5_output.hpp"
 #include "halfspace/io/height_map_writer.hpp"
 #include "halfspace/io/output_file.hpp"
+#include "halfspace/io/xdmf_writer.hpp"
 #include "halfspace/mpi/agreement.hpp"
 
 namespace halfspace::mpi {
@@ -64,6 +65,14 @@ void write_into(io::detail::File& file, const std::filesystem::path& path, const
   if (!file.close()) fail(path, fmt::format("could not write temporary file '{}'", temporary));
 }
 
+// The XDMF sidecar of the complete file, written by the first process alone
+// (a small text file); every process learns of a failure.
+void write_sidecar(const MpiCommunicator& comm, const std::filesystem::path& path, const Grid& grid) {
+  run_agreed(comm, [&] {
+    if (comm.rank() == 0) io::write_xdmf_sidecar(path, grid);
+  });
+}
+
 }  // namespace
 
 void write_file_slabs(const MpiCommunicator& comm, const std::filesystem::path& path, std::uint64_t reserved_bytes,
@@ -102,6 +111,7 @@ void write_result_slabs(const MpiCommunicator& comm, const std::filesystem::path
     io::write_result_root_attributes(root, grid, result, metadata);
     if (metadata.extra_groups) metadata.extra_groups(root);
   });
+  write_sidecar(comm, path, grid);
 }
 
 void write_height_map_slabs(const MpiCommunicator& comm, const std::filesystem::path& path, const Grid& grid,
@@ -112,6 +122,7 @@ void write_height_map_slabs(const MpiCommunicator& comm, const std::filesystem::
   write_file_slabs(comm, path, bound, [&](const io::Hdf5Node& root) {
     io::write_height_map_contents(root, grid, layout.first_row, heights, metadata);
   });
+  write_sidecar(comm, path, grid);
 }
 
 void write_sweep_slabs(const MpiCommunicator& comm, const std::filesystem::path& path, const Grid& grid,
@@ -121,6 +132,7 @@ void write_sweep_slabs(const MpiCommunicator& comm, const std::filesystem::path&
   write_file_slabs(comm, path, io::sweep_file_bound(grid, steps), [&](const io::Hdf5Node& root) {
     io::write_sweep_contents(root, grid, heights, steps, metadata, {layout.first_row, comm.rank() == 0});
   });
+  write_sidecar(comm, path, grid);
 }
 
 }  // namespace halfspace::mpi

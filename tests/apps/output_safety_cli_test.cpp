@@ -187,7 +187,7 @@ TEST(OutputSafetyCliTest, WisdomIsNotSavedOverAFifo) {
                                dir.path(), {{"HALFSPACE_FFTW_WISDOM", (dir / "wisdom").string()}});
   EXPECT_EQ(run.exit_code, testing::kExitOk) << run.err;
   EXPECT_EQ(fs::symlink_status(dir / "wisdom").type(), fs::file_type::fifo);
-  EXPECT_EQ(names_in(dir.path()), (std::vector<std::string>{"out.h5", "wisdom"}));
+  EXPECT_EQ(names_in(dir.path()), (std::vector<std::string>{"out.h5", "out.xdmf", "wisdom"}));
 }
 
 // A child running the program from `directory`, its output discarded;

@@ -47,7 +47,8 @@ TEST(SweepWriterTest, WritesGroupsTableAndExactCsv) {
   ResultMetadata metadata;
   metadata.load_mode = "force";
   write_sweep_result(dir / "s.h5", grid, height, steps, metadata);
-  EXPECT_EQ(dir.entries(), (std::vector<std::string>{"s.csv", "s.h5"})) << "the pair, and no temporary file left";
+  EXPECT_EQ(dir.entries(), (std::vector<std::string>{"s.csv", "s.h5", "s.xdmf"}))
+      << "the pair, its sidecar, and no temporary file left";
 
   const test::H5 file = test::open_file(dir / "s.h5");
   EXPECT_EQ(test::dataset_shape(file.get(), "/steps/002/pressure"), (std::vector<hsize_t>{6}));
