@@ -282,7 +282,7 @@ class Iteration {
       const double in_set = set_.contains(i) ? 1.0 : 0.0;
       return std::array<double, 4>{in_set * r_[i], in_set * t_[i], in_set * (g_[i] * t_[i]), in_set * (r_[i] * t_[i])};
     });
-    const double r_mean = problem_.load_controlled ? r_sum / search_cells_ : 0.0;
+    const double r_mean = problem_.load_controlled && search_cells_ > 0.0 ? r_sum / search_cells_ : 0.0;
     const double curvature = rt - r_mean * t_sum;
     tau_ = gt / curvature;
     if (curvature > 0.0 && std::isfinite(tau_)) return true;
@@ -517,6 +517,27 @@ class Iteration {
     updates_since_exact_ = 0;
   }
 
+  // The approach under load control when every contact cell is at the cap,
+  // from the surface s = g0 + u: the load then fixes no approach, and the
+  // conditions (g <= 0 at the cap, g >= 0 out of contact) hold for any
+  // between the highest cell at the cap and the lowest out of contact,
+  // when the first is not above the second. Between the two, the midpoint:
+  // if the iterate is wrong, cells at the cap then see an open gap (they
+  // join the search set to give up pressure) while cells out of contact
+  // see an overlap (they join it to take that pressure). At the highest
+  // cell at the cap (the smallest approach without an open gap) no cell
+  // at the cap could ever leave: a load of a whole number of cells at the
+  // cap (F / (H dx dy) an integer) put every contact cell there and the
+  // iteration cycled between that and all cells just below the cap. Every
+  // cell at the cap (a load of H times the domain): the highest of them.
+  double all_capped_approach() const {
+    const double highest_capped = linalg::max_of(
+        comm_, n_, [&](std::size_t i) { return p_[i] > 0.0 ? problem_.initial_gap[i] + u_[i] : -kInfinity; });
+    const double lowest_free = linalg::min_of(
+        comm_, n_, [&](std::size_t i) { return p_[i] > 0.0 ? kInfinity : problem_.initial_gap[i] + u_[i]; });
+    return std::isfinite(lowest_free) ? 0.5 * (highest_capped + lowest_free) : highest_capped;
+  }
+
   // Step 1's two passes: the deferred work and the contact set's mean gap
   // (the approach), then g, the residual's sums, G = sum over the search set
   // of g^2 and sum over it of g t_old (Powell's test). With a
@@ -549,10 +570,7 @@ class Iteration {
       if (settled.sums[1] > 0.0) {
         approach_ = settled.sums[0] / settled.sums[1];
       } else {
-        // Every contact cell at the cap: the smallest approach that leaves
-        // none of them with an open gap.
-        approach_ = linalg::max_of(
-            comm_, n_, [&](std::size_t i) { return p_[i] > 0.0 ? problem_.initial_gap[i] + u_[i] : -kInfinity; });
+        approach_ = all_capped_approach();
       }
     }
     const bool store_gap = preconditioner_ != nullptr;

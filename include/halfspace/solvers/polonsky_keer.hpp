@@ -51,8 +51,10 @@
 // with the opposite sign test: a cell at p = H stays out while g <= 0 and
 // joins while g > 0 says its pressure should fall (the projected-gradient
 // set of bound-constrained CG, Vollebregt 2014). The approach under load
-// control is the mean gap over the contact cells below the cap, and the
-// load is restored by the capped scaling min(H, s p). The residual then
+// control is the mean gap over the contact cells below the cap (when every
+// contact cell is at the cap, midway between the highest of them and the
+// lowest cell out of contact, so that misplaced cells can trade places),
+// and the load is restored by the capped scaling min(H, s p). The residual then
 // weighs a cell's overlap by (H - p)/H and takes the positive part of the
 // gap in the pressure-weighted sum, so that it again vanishes exactly at the
 // solution. A load above H times the domain area is refused (InputError).
