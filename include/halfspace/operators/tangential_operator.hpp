@@ -1,0 +1,57 @@
+// The tangential compliance of two elastic bodies as an operator: the
+// relative tangential surface displacement u = C t of the traction t =
+// (t_x, t_y) per cell, matrix-free by FFT like the normal FftInfluenceOperator
+// (plans and symbols made once): periodic grids multiply each mode by the 2x2
+// symbol of kernels/tangential_fourier.hpp; free grids convolve with
+// Cerruti's rectangle (2D) or the tangential strip (1D) coefficients by zero
+// padding (DC-FFT, PaddedRealFft). Built from the ElasticPair, because E*
+// alone does not fix the tangential compliance.
+#pragma once
+
+#include <memory>
+#include <span>
+
+#include "halfspace/elastic_pair.hpp"
+#include "halfspace/fft/fft_planning.hpp"
+#include "halfspace/grid.hpp"
+#include "halfspace/kernels/tangential_coefficients.hpp"
+#include "halfspace/linalg/communicator.hpp"
+
+namespace halfspace::operators {
+
+class TangentialOperator {
+ public:
+  // Throws InputError if the pair is out of range (elastic_pair.hpp).
+  TangentialOperator(const Grid& grid, const ElasticPair& pair, FftPlanning planning = FftPlanning::estimate);
+  ~TangentialOperator();
+  TangentialOperator(const TangentialOperator&) = delete;
+  TangentialOperator& operator=(const TangentialOperator&) = delete;
+
+  const Grid& grid() const;
+  const ElasticPair& pair() const;
+  std::size_t local_size() const { return grid().size(); }
+  const linalg::Communicator& communicator() const { return linalg::serial_communicator(); }
+
+  // (u_x, u_y) = C (t_x, t_y): the relative tangential displacement (m) of
+  // the surfaces under the traction (Pa) body 1 exerts on body 2. Each span
+  // has local_size() entries; the outputs may be the inputs (in place) but
+  // must not overlap otherwise. Periodic grids: the mean mode of u is zero.
+  // Allocates nothing.
+  void apply(std::span<const double> traction_x, std::span<const double> traction_y, std::span<double> displacement_x,
+             std::span<double> displacement_y);
+
+  // The block C_ii (m/Pa) of a cell under unit traction on itself alone, the
+  // same for every cell (xy is zero: the cell is symmetric).
+  kernels::TangentialCoefficients self_influence() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace halfspace::operators
+
+// The library and its front ends name these without the folder's namespace.
+namespace halfspace {
+using operators::TangentialOperator;
+}  // namespace halfspace

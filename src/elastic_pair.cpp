@@ -1,0 +1,63 @@
+// The two bodies' compliance factors (elastic_pair.hpp).
+#include "halfspace/elastic_pair.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <limits>
+
+#include "halfspace/error.hpp"
+
+namespace halfspace {
+namespace {
+
+// 1/G of a body (1/Pa), 0 for a rigid one; `index` names it in messages.
+double inverse_shear_modulus(const ElasticBody& body, int index) {
+  const double e = body.youngs_modulus;
+  const double nu = body.poissons_ratio;
+  const bool rigid = index == 2 && e == std::numeric_limits<double>::infinity();
+  if (!rigid && !(std::isnormal(e) && e > 0.0)) {
+    throw InputError(fmt::format("Young's modulus E{} = {} Pa is invalid: must be positive, finite and not denormal{}",
+                                 index, e, index == 2 ? " (or inf for a rigid body)" : ""));
+  }
+  if (!(std::isfinite(nu) && nu > -1.0 && nu <= 0.5)) {
+    throw InputError(fmt::format("Poisson's ratio nu{} = {} is invalid: allowed range is (-1, 0.5]", index, nu));
+  }
+  return rigid ? 0.0 : 2.0 * (1.0 + nu) / e;
+}
+
+}  // namespace
+
+ElasticPair::ElasticPair(const ElasticBody& body1, const ElasticBody& body2) : body1_(body1), body2_(body2) {
+  const double c1 = inverse_shear_modulus(body1, 1);
+  const double c2 = inverse_shear_modulus(body2, 2);
+  const double nu1 = body1.poissons_ratio;
+  const double nu2 = body2.poissons_ratio;
+  shear_compliance_ = c1 + c2;
+  directional_compliance_ = nu1 * c1 + nu2 * c2;
+  coupling_compliance_ = (1.0 - 2.0 * nu1) * c1 - (1.0 - 2.0 * nu2) * c2;
+  normal_compliance_ = (1.0 - nu1) * c1 + (1.0 - nu2) * c2;
+  if (!(std::isnormal(normal_compliance_) && std::isnormal(shear_compliance_))) {
+    throw InputError(fmt::format(
+        "the compliances of E1 = {} Pa, nu1 = {}, E2 = {} Pa, nu2 = {} are invalid: must be positive and finite",
+        body1.youngs_modulus, nu1, body2.youngs_modulus, nu2));
+  }
+}
+
+ElasticBody ElasticPair::rigid() {
+  return {std::numeric_limits<double>::infinity(), 0.0};
+}
+
+double ElasticPair::composite_modulus() const {
+  return checked_composite_modulus(2.0 / normal_compliance_);
+}
+
+double ElasticPair::dundurs_beta() const {
+  return coupling_compliance_ / (2.0 * normal_compliance_);
+}
+
+bool ElasticPair::similar() const {
+  return std::abs(dundurs_beta()) <= 1e-12;
+}
+
+}  // namespace halfspace

@@ -1,0 +1,216 @@
+// u = C t by FFT, two traction components in, two displacements out: each
+// component transformed once, the 2x2 symbol applied mode by mode,
+//   U_x = C_xx T_x + C_xy T_y,   U_y = C_xy T_x + C_yy T_y,
+// and both transformed back (four transforms, twice a normal product).
+// Periodic grids use the grid's own transform; free grids the pruned padded
+// one (DC-FFT, Liu, Wang & Liu 2000), with the coefficients laid out on the
+// (2ny, 2nx) wrap-around grid as FftInfluenceOperator lays out Love's.
+#include "halfspace/operators/tangential_operator.hpp"
+
+#include <cassert>
+#include <complex>
+#include <cstddef>
+#include <vector>
+
+#include "halfspace/fft/grid_transform.hpp"
+#include "halfspace/fft/padded_real_fft.hpp"
+#include "halfspace/fft/real_fft.hpp"
+#include "halfspace/kernels/cerruti_rectangle.hpp"
+#include "halfspace/kernels/periodic_fourier.hpp"
+#include "halfspace/kernels/tangential_fourier.hpp"
+#include "halfspace/kernels/tangential_strip.hpp"
+#include "halfspace/linalg/parallel.hpp"
+
+namespace halfspace::operators {
+namespace {
+
+// The signed offset (in cells) of wrap-around index k on a 2n-periodic axis:
+// k, then k - 2n for the negative offsets. The middle index n multiplies only
+// padding (it never reaches the first n outputs); it gets offset 0 for the
+// odd xy part, whose spectrum then stays real, and n for the even parts.
+long signed_offset(std::size_t k, std::size_t n) {
+  return k < n ? static_cast<long>(k) : k == n ? 0 : static_cast<long>(k) - 2 * static_cast<long>(n);
+}
+
+}  // namespace
+
+struct TangentialOperator::Impl {
+  Impl(const Grid& g, const ElasticPair& p, FftPlanning planning) : grid(g), pair(p) {
+    const std::size_t rows = g.dimension() == 1 ? 1 : g.ny();
+    if (g.periodic()) {
+      for (auto& t : periodic) t = make_grid_transform(g, planning);
+      spectrum_rows = periodic[0]->rows();
+      spectrum_cols = periodic[0]->spectrum_cols();
+    } else {
+      for (auto& t : padded) t = std::make_unique<PaddedRealFft>(rows, g.nx(), planning);
+      spectrum_rows = padded[0]->spectrum_rows();
+      spectrum_cols = padded[0]->spectrum_cols();
+    }
+    const std::size_t size = spectrum_rows * spectrum_cols;
+    xx.assign(size, 0.0);
+    yy.assign(size, 0.0);
+    xy.assign(size, 0.0);
+    if (g.periodic()) {
+      init_periodic();
+    } else {
+      init_free();
+    }
+  }
+
+  // The symbol with FFTW's 1/N folded in; C_ii is the inverse DFT at zero
+  // offset, (1/N) times the sum over the full spectrum (xy sums to zero).
+  void init_periodic() {
+    const std::size_t nx = grid.nx();
+    const double inverse_n = 1.0 / static_cast<double>(grid.size());
+    const double shear = pair.shear_compliance();
+    const double directional = pair.directional_compliance();
+    double sum_xx = 0.0;
+    double sum_yy = 0.0;
+    for (std::size_t r = 0; r < spectrum_rows; ++r) {
+      const double qy = grid.dimension() == 1 ? 0.0 : kernels::dft_wavenumber(r, spectrum_rows, grid.dy());
+      for (std::size_t c = 0; c < spectrum_cols; ++c) {
+        const double qx = kernels::dft_wavenumber(c, nx, grid.dx());
+        const kernels::TangentialCoefficients s = kernels::tangential_spectrum(qx, qy, shear, directional);
+        const std::size_t k = r * spectrum_cols + c;
+        xx[k] = s.xx * inverse_n;
+        yy[k] = s.yy * inverse_n;
+        xy[k] = s.xy * inverse_n;
+        // Columns other than 0 and nx/2 (even nx) stand for two modes.
+        const double weight = c == 0 || 2 * c == nx ? 1.0 : 2.0;
+        sum_xx += weight * s.xx;
+        sum_yy += weight * s.yy;
+      }
+    }
+    self = {sum_xx * inverse_n, sum_yy * inverse_n, 0.0};
+  }
+
+  // Coefficients on the (2ny, 2nx) wrap-around grid, each part transformed
+  // once; their spectra are real up to rounding (xx, yy even in each axis,
+  // xy odd in each), so only the real parts are kept.
+  void init_free() {
+    const std::size_t nx = grid.nx();
+    const std::size_t ny = grid.ny();
+    const bool line = grid.dimension() == 1;
+    const double a = 0.5 * grid.dx();
+    const double b = 0.5 * grid.dy();
+    const double e_star = pair.composite_modulus();
+    const double shear = pair.shear_compliance();
+    const double directional = pair.directional_compliance();
+    auto coefficient = [&](long di, long dj) {
+      const double x = static_cast<double>(di) * grid.dx();
+      const double y = static_cast<double>(dj) * grid.dy();
+      return line ? kernels::tangential_strip_displacement(x, grid.dx(), e_star, shear)
+                  : kernels::cerruti_rectangle_displacement(x, y, a, b, shear, directional);
+    };
+    self = coefficient(0, 0);
+    std::vector<double>* parts[3] = {&xx, &yy, &xy};
+    for (int part = 0; part < (line ? 2 : 3); ++part) {
+      PaddedRealFft& fft = *padded[0];
+      const bool odd = part == 2;
+      linalg::for_each_row(fft.spectrum_rows(), 2 * nx, [&](std::size_t r) {
+        const long dj = line ? 0 : signed_offset(r, ny);
+        std::span<double> row = fft.padded_row(r);
+        for (std::size_t c = 0; c < row.size(); ++c) {
+          long di = signed_offset(c, nx);
+          long dj_here = dj;
+          if (!odd) {
+            // The even parts take the mirrored distance n at the middle index.
+            if (c == nx) di = static_cast<long>(nx);
+            if (!line && r == ny) dj_here = static_cast<long>(ny);
+          } else if (c == nx || (!line && r == ny)) {
+            row[c] = 0.0;
+            continue;
+          }
+          const kernels::TangentialCoefficients k = coefficient(di, dj_here);
+          row[c] = part == 0 ? k.xx : part == 1 ? k.yy : k.xy;
+        }
+      });
+      fft.forward_all_rows();
+      const double inverse_n = 1.0 / static_cast<double>(fft.padded_size());
+      std::span<const std::complex<double>> spectrum = fft.spectrum();
+      std::vector<double>& target = *parts[part];
+      for (std::size_t k = 0; k < target.size(); ++k) target[k] = spectrum[k].real() * inverse_n;
+    }
+  }
+
+  // The spectrum of component k of `values`.
+  std::span<std::complex<double>> forward(int k, std::span<const double> values) {
+    if (padded[0]) {
+      padded[k]->forward(values);
+      return padded[k]->spectrum();
+    }
+    RealFft& fft = *periodic[k];
+    if (!fft.forward_from(values)) {
+      std::span<double> input = fft.input();
+      linalg::for_each_index(values.size(), [&](std::size_t i) { input[i] = values[i]; });
+      fft.forward();
+    }
+    return fft.spectrum();
+  }
+
+  void backward(int k, std::span<double> values) {
+    if (padded[0]) {
+      padded[k]->backward(values);
+      return;
+    }
+    RealFft& fft = *periodic[k];
+    if (!fft.backward_into(values)) {
+      fft.backward();
+      std::span<const double> output = fft.output();
+      linalg::for_each_index(values.size(), [&](std::size_t i) { values[i] = output[i]; });
+    }
+  }
+
+  Grid grid;
+  ElasticPair pair;
+  std::shared_ptr<RealFft> periodic[2];        // periodic grids: one transform per component
+  std::unique_ptr<PaddedRealFft> padded[2];    // free grids
+  std::size_t spectrum_rows = 0;
+  std::size_t spectrum_cols = 0;
+  std::vector<double> xx, yy, xy;              // the real symbol, (spectrum_rows, spectrum_cols)
+  kernels::TangentialCoefficients self;
+};
+
+TangentialOperator::TangentialOperator(const Grid& grid, const ElasticPair& pair, FftPlanning planning)
+    : impl_(std::make_unique<Impl>(grid, pair, planning)) {}
+
+TangentialOperator::~TangentialOperator() = default;
+
+const Grid& TangentialOperator::grid() const {
+  return impl_->grid;
+}
+
+const ElasticPair& TangentialOperator::pair() const {
+  return impl_->pair;
+}
+
+kernels::TangentialCoefficients TangentialOperator::self_influence() const {
+  return impl_->self;
+}
+
+void TangentialOperator::apply(std::span<const double> traction_x, std::span<const double> traction_y,
+                               std::span<double> displacement_x, std::span<double> displacement_y) {
+  Impl& m = *impl_;
+  assert(traction_x.size() == m.grid.size() && traction_y.size() == m.grid.size());
+  assert(displacement_x.size() == m.grid.size() && displacement_y.size() == m.grid.size());
+  // Both inputs are read into the spectra before either output is written,
+  // so in place is safe.
+  const std::span<std::complex<double>> sx = m.forward(0, traction_x);
+  const std::span<std::complex<double>> sy = m.forward(1, traction_y);
+  const double* xx = m.xx.data();
+  const double* yy = m.yy.data();
+  const double* xy = m.xy.data();
+  linalg::for_each_row(m.spectrum_rows, m.spectrum_cols, [&](std::size_t r) {
+    const std::size_t begin = r * m.spectrum_cols;
+    for (std::size_t k = begin; k < begin + m.spectrum_cols; ++k) {
+      const std::complex<double> tx = sx[k];
+      const std::complex<double> ty = sy[k];
+      sx[k] = xx[k] * tx + xy[k] * ty;
+      sy[k] = xy[k] * tx + yy[k] * ty;
+    }
+  });
+  m.backward(0, displacement_x);
+  m.backward(1, displacement_y);
+}
+
+}  // namespace halfspace::operators

@@ -1,0 +1,153 @@
+// The tangential operator: the FFT product against the dense sum of the
+// kernels' coefficients (free grids, to rounding), a single periodic mode
+// against the symbol, and the periodic symbol against the free operator for
+// a small traction patch (the periodic images change little near it).
+#include "halfspace/operators/tangential_operator.hpp"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Core>
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "halfspace/kernels/cerruti_rectangle.hpp"
+#include "halfspace/kernels/tangential_fourier.hpp"
+#include "halfspace/kernels/tangential_strip.hpp"
+#include "support/grid_fields.hpp"
+
+namespace halfspace {
+namespace {
+
+const ElasticPair kPair({2.1e11, 0.3}, {7e10, 0.33});
+
+Eigen::ArrayXd random_field(std::size_t n, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> value(-1e6, 1e6);
+  Eigen::ArrayXd f(static_cast<Eigen::Index>(n));
+  for (auto& v : f) v = value(rng);
+  return f;
+}
+
+void expect_equals_dense_product(const Grid& grid) {
+  TangentialOperator op(grid, kPair);
+  const std::size_t n = grid.size();
+  const Eigen::ArrayXd tx = random_field(n, 1);
+  const Eigen::ArrayXd ty = random_field(n, 2);
+  Eigen::ArrayXd ux(static_cast<Eigen::Index>(n));
+  Eigen::ArrayXd uy(static_cast<Eigen::Index>(n));
+  op.apply({tx.data(), n}, {ty.data(), n}, {ux.data(), n}, {uy.data(), n});
+  const double a = 0.5 * grid.dx();
+  const double b = 0.5 * grid.dy();
+  double largest = 0.0;
+  double worst = 0.0;
+  for (std::size_t j = 0; j < grid.ny(); ++j) {
+    for (std::size_t i = 0; i < grid.nx(); ++i) {
+      double sx = 0.0;
+      double sy = 0.0;
+      for (std::size_t l = 0; l < grid.ny(); ++l) {
+        for (std::size_t k = 0; k < grid.nx(); ++k) {
+          const double x = (static_cast<double>(i) - static_cast<double>(k)) * grid.dx();
+          const double y = (static_cast<double>(j) - static_cast<double>(l)) * grid.dy();
+          const kernels::TangentialCoefficients c =
+              grid.dimension() == 1
+                  ? kernels::tangential_strip_displacement(x, grid.dx(), kPair.composite_modulus(),
+                                                           kPair.shear_compliance())
+                  : kernels::cerruti_rectangle_displacement(x, y, a, b, kPair.shear_compliance(),
+                                                            kPair.directional_compliance());
+          const std::size_t s = l * grid.nx() + k;
+          sx += c.xx * tx[static_cast<Eigen::Index>(s)] + c.xy * ty[static_cast<Eigen::Index>(s)];
+          sy += c.xy * tx[static_cast<Eigen::Index>(s)] + c.yy * ty[static_cast<Eigen::Index>(s)];
+        }
+      }
+      const auto t = static_cast<Eigen::Index>(j * grid.nx() + i);
+      largest = std::max({largest, std::abs(sx), std::abs(sy)});
+      worst = std::max({worst, std::abs(ux[t] - sx), std::abs(uy[t] - sy)});
+    }
+  }
+  EXPECT_LE(worst, 1e-12 * largest) << grid.shape_string();
+}
+
+TEST(TangentialOperator, FreeProductEqualsTheDenseSumToRounding) {
+  expect_equals_dense_product(Grid::plane(9, 7, 1e-6, 1.5e-6, Boundary::free));
+  expect_equals_dense_product(Grid::plane(8, 8, 1e-6, 1e-6, Boundary::free));
+  expect_equals_dense_product(Grid::line(17, 1e-6, Boundary::free));
+}
+
+TEST(TangentialOperator, FreeSelfInfluenceIsTheCellsOwnCoefficient) {
+  const Grid grid = Grid::plane(6, 5, 1e-6, 2e-6, Boundary::free);
+  TangentialOperator op(grid, kPair);
+  const kernels::TangentialCoefficients c = kernels::cerruti_rectangle_displacement(
+      0.0, 0.0, 0.5e-6, 1e-6, kPair.shear_compliance(), kPair.directional_compliance());
+  EXPECT_EQ(op.self_influence().xx, c.xx);
+  EXPECT_EQ(op.self_influence().yy, c.yy);
+}
+
+TEST(TangentialOperator, PeriodicModeIsMultipliedByTheSymbol) {
+  const Grid grid = Grid::plane(32, 16, 1e-6, 2e-6, Boundary::periodic);
+  TangentialOperator op(grid, kPair);
+  const double qx = 2.0 * std::numbers::pi * 3.0 / (32e-6);
+  const double qy = 2.0 * std::numbers::pi * -2.0 / (32e-6);
+  const std::size_t n = grid.size();
+  Eigen::ArrayXd tx(static_cast<Eigen::Index>(n));
+  Eigen::ArrayXd ty(static_cast<Eigen::Index>(n));
+  for (std::size_t j = 0; j < grid.ny(); ++j) {
+    for (std::size_t i = 0; i < grid.nx(); ++i) {
+      const double phase = qx * static_cast<double>(i) * grid.dx() + qy * static_cast<double>(j) * grid.dy();
+      tx[static_cast<Eigen::Index>(j * grid.nx() + i)] = 2e6 * std::cos(phase);
+      ty[static_cast<Eigen::Index>(j * grid.nx() + i)] = -1e6 * std::cos(phase);
+    }
+  }
+  Eigen::ArrayXd ux = tx;
+  Eigen::ArrayXd uy = ty;
+  op.apply({ux.data(), n}, {uy.data(), n}, {ux.data(), n}, {uy.data(), n});  // in place
+  const kernels::TangentialCoefficients s =
+      kernels::tangential_spectrum(qx, qy, kPair.shear_compliance(), kPair.directional_compliance());
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto i = static_cast<Eigen::Index>(k);
+    EXPECT_NEAR(ux[i], s.xx * tx[i] + s.xy * ty[i], 1e-12 * 2e6 * s.xx);
+    EXPECT_NEAR(uy[i], s.xy * tx[i] + s.yy * ty[i], 1e-12 * 2e6 * s.xx);
+  }
+}
+
+// A smooth traction patch (radius L/16) on a periodic grid of side L and on a
+// free grid of the same cells: near the patch the periodic images add a
+// nearly uniform field (the mean, removed), so the displacement differences
+// from the centre agree to the images' curvature, ~(r/L)^3, and the two
+// discretisations' difference.
+TEST(TangentialOperator, PeriodicSymbolAgreesWithCerrutiNearASmallPatch) {
+  const std::size_t n = 256;
+  const double h = 1e-6;
+  const Grid periodic = Grid::plane(n, n, h, h, Boundary::periodic);
+  const Grid free = Grid::plane(n, n, h, h, Boundary::free);
+  const double radius = 16.0 * h;
+  auto bump = [&](double x, double y) {
+    const double r2 = (x * x + y * y) / (radius * radius);
+    return r2 < 1.0 ? 1e6 * (1.0 - r2) * (1.0 - r2) : 0.0;
+  };
+  const Eigen::ArrayXd tx = testing::field_from(free, bump);
+  const Eigen::ArrayXd ty = 0.5 * tx;
+  Eigen::ArrayXd fx(static_cast<Eigen::Index>(n * n));
+  Eigen::ArrayXd fy(static_cast<Eigen::Index>(n * n));
+  Eigen::ArrayXd px(static_cast<Eigen::Index>(n * n));
+  Eigen::ArrayXd py(static_cast<Eigen::Index>(n * n));
+  TangentialOperator(free, kPair).apply({tx.data(), n * n}, {ty.data(), n * n}, {fx.data(), n * n}, {fy.data(), n * n});
+  TangentialOperator(periodic, kPair)
+      .apply({tx.data(), n * n}, {ty.data(), n * n}, {px.data(), n * n}, {py.data(), n * n});
+  const auto centre = static_cast<Eigen::Index>((n / 2) * n + n / 2);
+  double largest = 0.0;
+  double worst = 0.0;
+  for (std::size_t j = n / 2 - 24; j <= n / 2 + 24; ++j) {
+    for (std::size_t i = n / 2 - 24; i <= n / 2 + 24; ++i) {
+      const auto k = static_cast<Eigen::Index>(j * n + i);
+      largest = std::max(largest, std::abs(fx[k] - fx[centre]));
+      worst = std::max({worst, std::abs((fx[k] - fx[centre]) - (px[k] - px[centre])),
+                        std::abs((fy[k] - fy[centre]) - (py[k] - py[centre]))});
+    }
+  }
+  std::printf("periodic against free near the patch: %.2e of the largest difference\n", worst / largest);
+  EXPECT_LE(worst, 5e-3 * largest);
+}
+
+}  // namespace
+}  // namespace halfspace
