@@ -38,6 +38,29 @@ double smoothed_potential_antiderivative(double x, double y, double s) {
   return x * log_sum(y, x) + y * log_sum(x, y) - s * std::atan(x * y / (s * rho));
 }
 
+// The Bessel function J0(x), x >= 0, by the polynomial approximations of
+// Abramowitz & Stegun 9.4.1 (x <= 3, error below 5e-8) and 9.4.3 (x > 3,
+// modulus and phase to 1.6e-8 and 7e-8). The remainder's radial tables take
+// millions of values; std::cyl_bessel_j's series cost 30 s a table for a
+// stiff layer on a soft substrate (issue 32), these a hundredth of it, and
+// their error is far below the tables' quadrature and interpolation error
+// (1e-4 of the remainder).
+double bessel_j0(double x) {
+  if (x <= 3.0) {
+    const double y = (x / 3.0) * (x / 3.0);
+    return 1.0 +
+           y * (-2.2499997 + y * (1.2656208 + y * (-0.3163866 + y * (0.0444479 + y * (-0.0039444 + y * 0.0002100)))));
+  }
+  const double y = 3.0 / x;
+  const double modulus =
+      0.79788456 +
+      y * (-0.00000077 + y * (-0.00552740 + y * (-0.00009512 + y * (0.00137237 + y * (-0.00072805 + y * 0.00014476)))));
+  const double phase =
+      x - 0.78539816 +
+      y * (-0.04166397 + y * (-0.00003954 + y * (0.00262573 + y * (-0.00054125 + y * (-0.00029333 + y * 0.00013558)))));
+  return modulus * std::cos(phase) / std::sqrt(x);
+}
+
 }  // namespace
 
 LayeredKernel::LayeredKernel(const LayeredMaterial& material)
@@ -52,6 +75,7 @@ LayeredKernel::LayeredKernel(const LayeredMaterial& material)
   one_minus_kappa_ = 4.0 * (1.0 - nu1) / (g + 3.0 - 4.0 * nu1);
   one_minus_lambda_ = 4.0 * (1.0 - nu1) / (1.0 + g * (3.0 - 4.0 * nu2));
   lambda_ = 1.0 - one_minus_lambda_;
+  split_height_ = find_split_height();
   // R(q) -> (2 t / E1*) d/ds [M - 1 - (c - 1) exp(-s)] at s = 0: Richardson
   // extrapolation of the difference quotient, O(h^2) = 1e-8 relative.
   constexpr double h = 1e-4;
@@ -72,6 +96,34 @@ double LayeredKernel::compliance_factor(double q) const {
   return numerator / denominator;
 }
 
+// The height h of the closed-form part's smoothed substrate term (see the
+// header): t, or longer where the compliance factor moves from E1*/E2* to 1
+// over wavenumbers far below 1/t. That is a stiff layer on a soft substrate,
+// a plate whose bending spreads a load over a length growing like
+// t (E1*/E2*)^(1/3): with h = t the remainder then cancels most of the
+// smoothed term near the load and is as large as it, and on a free grid
+// the periodic images of its long tail made the operator indefinite (a
+// negative self-influence from a ratio of about 1e3; issue 32). The h that
+// matches exp(-q h) to (M - 1)/(E1*/E2* - 1) where the latter is 1/2 keeps
+// the remainder a correction on the scale of the bending length. A factor
+// within 2 of 1 keeps h = t (M is near 1 everywhere).
+double LayeredKernel::find_split_height() const {
+  const double t = material_.thickness;
+  const double c = layer_modulus_ / substrate_modulus_;
+  if (!(c > 2.0)) return t;
+  // (M(s/t) - 1)/(c - 1) falls from 1 at s = 0 towards 0: bisection for 1/2.
+  double low = 0.0;
+  double high = 1.0;
+  auto share = [&](double s) { return (compliance_factor(s / t) - 1.0) / (c - 1.0); };
+  while (share(high) > 0.5 && high < 1e3) high *= 2.0;
+  constexpr int kBisections = 60;
+  for (int k = 0; k < kBisections; ++k) {
+    const double middle = 0.5 * (low + high);
+    (share(middle) > 0.5 ? low : high) = middle;
+  }
+  return std::max(t, t * std::numbers::ln2 / high);
+}
+
 double LayeredKernel::spectrum(double q) const {
   return q == 0.0 ? 0.0 : 2.0 * compliance_factor(q) / (layer_modulus_ * std::abs(q));
 }
@@ -80,11 +132,12 @@ double LayeredKernel::remainder(double q) const {
   if (q == 0.0) return remainder_at_zero_;
   const double t = material_.thickness;
   const double s = std::abs(q) * t;
+  const double split = std::abs(q) * split_height_;
   const double c = layer_modulus_ / substrate_modulus_;
-  double bracket;  // M - 1 - (c - 1) exp(-s), divided by s
+  double bracket;  // M - 1 - (c - 1) exp(-q h), divided by s
   if (s < 1.0) {
-    // (M - c) + (c - 1)(1 - exp(-s)): both terms vanish like s.
-    bracket = ((compliance_factor(q) - c) - (c - 1.0) * std::expm1(-s)) / s;
+    // (M - c) + (c - 1)(1 - exp(-q h)): both terms vanish like s.
+    bracket = ((compliance_factor(q) - c) - (c - 1.0) * std::expm1(-split)) / s;
   } else {
     // M - 1 = e (lambda + kappa + 4 kappa s (1 + s) - 2 lambda kappa e) / D,
     // free of the cancellation of M - 1 when M is close to 1.
@@ -94,15 +147,15 @@ double LayeredKernel::remainder(double q) const {
         (one_minus_lambda_ - lambda_ * em1) * (one_minus_kappa_ - kappa_ * em1) - 4.0 * kappa_ * s * s * e;
     const double m_minus_one =
         e * (lambda_ + kappa_ + 4.0 * kappa_ * s * (1.0 + s) - 2.0 * lambda_ * kappa_ * e) / denominator;
-    bracket = (m_minus_one - (c - 1.0) * std::exp(-s)) / s;
+    bracket = (m_minus_one - (c - 1.0) * std::exp(-split)) / s;
   }
   return 2.0 * t * bracket / layer_modulus_;
 }
 
 double LayeredKernel::near_rectangle_displacement(double x, double y, double hx, double hy) const {
-  // 2 exp(-q t)/(E |q|) is, in real space, 1/(pi E sqrt(r^2 + t^2)): its cell
-  // integral is the rectangle potential at height t.
-  const double t = material_.thickness;
+  // 2 exp(-q h)/(E |q|) is, in real space, 1/(pi E sqrt(r^2 + h^2)): its cell
+  // integral is the rectangle potential at height h.
+  const double t = split_height_;
   const double smoothed =
       smoothed_potential_antiderivative(x + hx, y + hy, t) - smoothed_potential_antiderivative(x + hx, y - hy, t) -
       smoothed_potential_antiderivative(x - hx, y + hy, t) + smoothed_potential_antiderivative(x - hx, y - hy, t);
@@ -114,8 +167,8 @@ double LayeredKernel::near_strip_displacement(double x, double h) const {
   // int_{x-h}^{x+h} ln(s^2 + t^2) ds = G(x + h) - G(x - h), G(s) = s ln(s^2 +
   // t^2) - 2 s + 2 t atan(s/t), written as x ln(A/B) + h ln(A B) - 4 h + 2 t
   // (atan((x+h)/t) - atan((x-h)/t)), A, B = (x +- h)^2 + t^2, so that far
-  // away no two large terms cancel.
-  const double t = material_.thickness;
+  // away no two large terms cancel; t here is the split height h.
+  const double t = split_height_;
   const double a = (x + h) * (x + h) + t * t;
   const double b = (x - h) * (x - h) + t * t;
   const double integral = x * std::log1p(4.0 * x * h / b) + h * std::log(a * b) - 4.0 * h +
@@ -172,8 +225,7 @@ std::vector<double> LayeredKernel::remainder_point_table(double r_max, double st
   std::vector<double> weighted(intervals + 1);  // Simpson weight times integrand, without J0
   for (std::size_t k = 0; k <= intervals; ++k) {
     const double q = static_cast<double>(k) * h;
-    const double s = q * t;
-    const double f = k == 0 ? 0.0 : (compliance_factor(q) - 1.0) - (c - 1.0) * std::exp(-s);
+    const double f = k == 0 ? 0.0 : (compliance_factor(q) - 1.0) - (c - 1.0) * std::exp(-q * split_height_);
     const double w = (k == 0 || k == intervals) ? 1.0 : (k % 2 == 1 ? 4.0 : 2.0);
     weighted[k] = w * f * h / 3.0;
   }
@@ -182,8 +234,7 @@ std::vector<double> LayeredKernel::remainder_point_table(double r_max, double st
   linalg::for_each_row(entries, intervals, [&](std::size_t i) {
     const double r = static_cast<double>(i) * step;
     double sum = 0.0;
-    for (std::size_t k = 0; k <= intervals; ++k)
-      sum += weighted[k] * std::cyl_bessel_j(0.0, static_cast<double>(k) * h * r);
+    for (std::size_t k = 0; k <= intervals; ++k) sum += weighted[k] * bessel_j0(static_cast<double>(k) * h * r);
     table[i] = sum / (std::numbers::pi * layer_modulus_);
   });
   return table;

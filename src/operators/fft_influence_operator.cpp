@@ -177,13 +177,15 @@ struct FftInfluenceOperator::Impl {
 
   // Free grids, coated half-space: whether the remainder goes in by DFT, or,
   // when the layer is not thin against the domain (its periodic images would
-  // matter), in real space. The images' share falls like (t / L)^2
-  // (docs/theory.md, "Coated half-space").
-  static constexpr double kSpectralRemainderLimit = 0.125;  // t / shorter domain side
+  // matter), in real space. The images' share falls like (h / L)^2, h the
+  // split height (LayeredKernel::split_height: t, or the longer length a
+  // stiff layer on a soft substrate spreads a load over; docs/theory.md,
+  // "Coated half-space").
+  static constexpr double kSpectralRemainderLimit = 0.125;  // h / shorter domain side
   bool spectral_remainder() const {
     const double length = static_cast<double>(grid.nx()) * grid.dx();
     const double side = grid.dimension() == 1 ? length : std::min(length, static_cast<double>(grid.ny()) * grid.dy());
-    return layered->material().thickness <= kSpectralRemainderLimit * side;
+    return layered->split_height() <= kSpectralRemainderLimit * side;
   }
 
   // The remainder as a point force at each cell's centre, from its radial

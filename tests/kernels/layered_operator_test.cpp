@@ -267,3 +267,69 @@ TEST(LayeredOperatorTest, FreeLineGridMatchesThePeriodicSymbol) {
 
 }  // namespace
 }  // namespace halfspace
+
+namespace halfspace {
+namespace {
+
+// A stiff layer on a soft substrate (a hard coating on a polymer, E1/E2 up
+// to 1e5) on a free grid, against the periodic symbol on a domain 8 times
+// wider in each direction, as for the line above: the coating's effect
+// (coated minus the substrate's half-space) under a Hertz pressure of
+// radius 6 cells, up to a rigid shift. Before the split height
+// (LayeredKernel::split_height) the free operator was indefinite from
+// E1/E2 = 1e3 on: a negative self-influence (issue 32). Measured: 2.3e-3 to
+// 4.2e-3 of the effect's largest value.
+constexpr double kStiffCoatingTolerance = 1e-2;
+
+TEST(LayeredOperatorTest, StiffCoatingOnSoftSubstrateOnAFreeGridMatchesThePeriodicSymbol) {
+  constexpr std::size_t kCells = 32;
+  constexpr std::size_t kPeriod = 8 * kCells;
+  constexpr double kSpacing = 12.5e-6;  // m; the domain is 0.4 mm
+  const Grid free = Grid::plane(kCells, kCells, kSpacing, kSpacing, Boundary::free);
+  const Grid periodic = Grid::plane(kPeriod, kPeriod, kSpacing, kSpacing, Boundary::periodic);
+  const double a = 6.0 * kSpacing;
+  const Eigen::ArrayXd p = field_from(free, [a](double x, double y) {
+    const double r2 = (x * x + y * y) / (a * a);
+    return r2 < 1.0 ? 1e6 * std::sqrt(1.0 - r2) : 0.0;
+  });
+  Eigen::ArrayXd embedded = Eigen::ArrayXd::Zero(static_cast<Eigen::Index>(periodic.size()));
+  const std::size_t offset = (kPeriod - kCells) / 2;
+  for (std::size_t j = 0; j < kCells; ++j) {
+    for (std::size_t i = 0; i < kCells; ++i) {
+      embedded[static_cast<Eigen::Index>((j + offset) * kPeriod + i + offset)] =
+          p[static_cast<Eigen::Index>(j * kCells + i)];
+    }
+  }
+  auto window = [&](const Eigen::ArrayXd& field) {
+    Eigen::ArrayXd out(static_cast<Eigen::Index>(free.size()));
+    for (std::size_t j = 0; j < kCells; ++j) {
+      for (std::size_t i = 0; i < kCells; ++i) {
+        out[static_cast<Eigen::Index>(j * kCells + i)] =
+            field[static_cast<Eigen::Index>((j + offset) * kPeriod + i + offset)];
+      }
+    }
+    return out;
+  };
+  const ElasticBody coating{2e11, 0.3};
+  for (const double ratio : {1e2, 1e3, 1e4, 1e5}) {
+    const ElasticBody substrate{coating.youngs_modulus / ratio, 0.3};
+    const LayeredMaterial material{20e-6, coating, substrate};
+    const double e2 = plane_strain_modulus(substrate);
+    FftInfluenceOperator free_coated(free, material);
+    FftInfluenceOperator free_plain(free, e2);
+    FftInfluenceOperator periodic_coated(periodic, material);
+    FftInfluenceOperator periodic_plain(periodic, e2);
+    const Eigen::ArrayXd free_effect = apply(free_coated, p) - apply(free_plain, p);
+    const Eigen::ArrayXd periodic_effect = window(apply(periodic_coated, embedded) - apply(periodic_plain, embedded));
+    const double error = relative_difference(free_effect, periodic_effect, true);
+    std::printf(
+        "free grid, E1/E2 = %.0e, t = 20 um: self-influence %.3e m/Pa, coating's effect within %.2e of the "
+        "periodic symbol's\n",
+        ratio, free_coated.self_influence(), error);
+    EXPECT_GT(free_coated.self_influence(), 0.0) << "E1/E2 = " << ratio;
+    EXPECT_LE(error, kStiffCoatingTolerance) << "E1/E2 = " << ratio;
+  }
+}
+
+}  // namespace
+}  // namespace halfspace

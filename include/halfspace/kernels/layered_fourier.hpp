@@ -21,6 +21,11 @@ class LayeredKernel {
   const LayeredMaterial& material() const { return material_; }
   double layer_modulus() const { return layer_modulus_; }          // E1*, Pa
   double substrate_modulus() const { return substrate_modulus_; }  // E2*, Pa
+  // The height h (m) of the smoothed substrate term of the free grids' split
+  // below: the thickness t, or for a stiff layer on a soft substrate (E1*/E2*
+  // above 2) the longer length over which the layer spreads a load, where
+  // (M(q t) - 1)/(E1*/E2* - 1) = exp(-q h) = 1/2 (about 11 t at 2e4).
+  double split_height() const { return split_height_; }
 
   // M(q t), dimensionless, for |q| (rad/m); finite and positive for all q.
   double compliance_factor(double q) const;
@@ -32,17 +37,17 @@ class LayeredKernel {
   // Free grids, in two parts (docs/theory.md, "Coated half-space"):
   // near_rectangle_displacement is the displacement (m) at (x, y) under unit
   // pressure on the rectangle |x'| <= hx, |y'| <= hy of the closed-form part
-  // of the kernel, 2/(E1* q) + 2 (1/E2* - 1/E1*) exp(-q t)/q: Love's
+  // of the kernel, 2/(E1* q) + 2 (1/E2* - 1/E1*) exp(-q h)/q: Love's
   // rectangle for E1* plus a smoothed point-load term, so that it has the
   // substrate's 1/(pi E2* r) far away and the layer's Love coefficients near.
   double near_rectangle_displacement(double x, double y, double hx, double hy) const;
   // Free 1D (plane strain) grids, the same split: the displacement (m) at
   // distance x from the centre of the strip |x'| <= h under unit pressure of
   // the same closed-form part, the strip for E1* plus (1/E2* - 1/E1*) times
-  // the cell integral of -(1/pi) ln(x^2 + t^2) (the line-load counterpart of
+  // the cell integral of -(1/pi) ln(x^2 + h^2) (the line-load counterpart of
   // the smoothed term; lengths in metres, datum at 1 m as for the strip).
   double near_strip_displacement(double x, double h) const;
-  // The rest, R(q) = 2 (M(q t) - 1 - (E1*/E2* - 1) exp(-q t)) / (E1* |q|),
+  // The rest, R(q) = 2 (M(q t) - 1 - (E1*/E2* - 1) exp(-q h)) / (E1* |q|),
   // which is finite at q = 0 and decays exponentially for q t >> 1, times the
   // transform of a dx x dy cell divided by its area, summed over the alias
   // images (qx + 2 pi m / dx, qy + 2 pi n / dy), |m|, |n| <= kAliasImages: the
@@ -57,7 +62,7 @@ class LayeredKernel {
   // against t (the DFT above would fold in its periodic images): the
   // displacement (m) at distances 0, step, 2 step, ... <= r_max (m) under a
   // point force of 1 N,
-  //   (1/(pi E1*)) int_0^inf (M(q t) - 1 - (E1*/E2* - 1) exp(-q t)) J0(q r) dq,
+  //   (1/(pi E1*)) int_0^inf (M(q t) - 1 - (E1*/E2* - 1) exp(-q h)) J0(q r) dq,
   // by composite Simpson quadrature (the integrand decays like exp(-q t)).
   std::vector<double> remainder_point_table(double r_max, double step) const;
   // Its plane-strain counterpart, under a line load of 1 N/m:
@@ -66,6 +71,7 @@ class LayeredKernel {
 
  private:
   double remainder(double q) const;  // R(q) above, with its limit at q = 0
+  double find_split_height() const;  // h above, once
 
   LayeredMaterial material_;
   double layer_modulus_;
@@ -75,6 +81,7 @@ class LayeredKernel {
   double one_minus_kappa_;    // 1 - kappa, formed without cancellation
   double one_minus_lambda_;   // 1 - lambda, likewise
   double remainder_at_zero_;  // lim R(q), q -> 0
+  double split_height_;       // h, m
 };
 
 }  // namespace halfspace::kernels
