@@ -15,7 +15,8 @@ usage: parallel_io_test.py MPI_PROGRAM SERIAL_PROGRAM MPIEXEC SOURCE_DIR WORK_DI
   file's datasets, shapes, types, storage (chunks, filters) and attributes;
   fields within kFieldTolerance of their largest value; contact statistics
   equal (clusters exactly, and the count checked against a labelling of
-  the file's contact map done here, across the periodic edges).
+  the file's contact map done here, across the periodic edges); the XDMF
+  sidecar the first process writes equal to the serial one.
 - Failures (a missing dataset, a file that is not HDF5, a non-finite height
   in a later slab, an output that cannot be written, too little memory):
   one error line, the serial program's message and exit code, no output and
@@ -102,6 +103,15 @@ def compare_files(where, got_path, want_path, exact=()):
             if error > kFieldTolerance:
                 fail(f"{where}: /{name} differs by {error:.2e} of its largest value (allowed {kFieldTolerance:.0e})")
         print(f"{where}: same layout and attributes; largest field difference {worst:.2e}")
+    # The XDMF sidecar, written by the first process, is the serial one's but
+    # for the file name it points to.
+    sidecars = [os.path.splitext(path)[0] + ".xdmf" for path in (got_path, want_path)]
+    if not all(os.path.isfile(path) for path in sidecars):
+        fail(f"{where}: no XDMF sidecar beside {got_path} or {want_path}")
+        return
+    got_text, want_text = (open(path).read() for path in sidecars)
+    if got_text.replace(os.path.basename(got_path) + ":", os.path.basename(want_path) + ":") != want_text:
+        fail(f"{where}: the XDMF sidecar {sidecars[0]} differs from the serial {sidecars[1]}")
 
 
 def periodic_clusters(contact):
