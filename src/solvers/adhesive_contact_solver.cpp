@@ -24,6 +24,7 @@
 #include "halfspace/linalg/parallel.hpp"
 #include "halfspace/material.hpp"
 #include "halfspace/solvers/interface_law.hpp"
+#include "halfspace/solvers/solver_options.hpp"
 
 namespace halfspace::solvers {
 namespace {
@@ -53,18 +54,30 @@ std::size_t mirrored(std::size_t k, std::size_t n) {
 }  // namespace
 
 void AdhesiveSolverOptions::validate() const {
-  law.validate();
+  const auto text = [](auto value) { return fmt::format("{}", value); };
+  if (!(std::isfinite(law.work) && law.work > 0.0)) {
+    throw SolverOptionError("law.work", text(law.work), "is invalid: must be positive and finite (J/m^2)");
+  }
+  if (!(std::isfinite(law.range) && law.range > 0.0)) {
+    throw SolverOptionError("law.range", text(law.range), "is invalid: must be positive and finite (m)");
+  }
+  if (!std::isnormal(law.stress()) || !std::isfinite(law.stress())) {
+    throw SolverOptionError("law.range", text(law.range),
+                            fmt::format("is invalid with law.work = {}: the stress work / range = {} Pa must be "
+                                        "finite and normal",
+                                        law.work, law.stress()));
+  }
   if (!(tolerance > 0.0 && tolerance < 1.0)) {
-    throw InputError(fmt::format("tolerance = {} is invalid: allowed range is (0, 1)", tolerance));
+    throw SolverOptionError("tolerance", text(tolerance), "is invalid: allowed range is (0, 1)");
   }
   if (!(force_tolerance > 0.0 && force_tolerance < 1.0)) {
-    throw InputError(fmt::format("force tolerance = {} is invalid: allowed range is (0, 1)", force_tolerance));
+    throw SolverOptionError("force_tolerance", text(force_tolerance), "is invalid: allowed range is (0, 1)");
   }
   if (max_iterations < 1) {
-    throw InputError(fmt::format("max_iterations = {} is invalid: must be at least 1", max_iterations));
+    throw SolverOptionError("max_iterations", text(max_iterations), "is invalid: must be at least 1");
   }
   if (max_load_steps < 1) {
-    throw InputError(fmt::format("max_load_steps = {} is invalid: must be at least 1", max_load_steps));
+    throw SolverOptionError("max_load_steps", text(max_load_steps), "is invalid: must be at least 1");
   }
   InterfaceLaw{hardness}.validate();
 }

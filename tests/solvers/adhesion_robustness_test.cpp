@@ -102,8 +102,8 @@ TEST(AdhesionRobustnessTest, FailedLoadSearchesSayWhy) {
 // "converged" after 0 iterations (the residual measured against sigma0).
 TEST(AdhesionRobustnessTest, UnresolvedCohesiveZoneIsRefusedWithItsLength) {
   const SphereCase c = sphere(64, 2e-4);
-  for (const AdhesionLaw& law : {AdhesionLaw::maugis_dugdale(kWork, 1e-12),
-                                 AdhesionLaw::maugis_dugdale_from_stress(kWork, 1e15)}) {
+  for (const AdhesionLaw& law :
+       {AdhesionLaw::maugis_dugdale(kWork, 1e-12), AdhesionLaw::maugis_dugdale_from_stress(kWork, 1e15)}) {
     try {
       make_solver(c.grid, law);
       ADD_FAILURE() << "no error for range " << law.range;
@@ -148,8 +148,8 @@ ConditionErrors condition_errors(const Grid& grid, std::span<const double> gap, 
     e.displacement = std::max(e.displacement, std::abs(u[i] - result.displacement[k]) / largest_u);
     e.gap = std::max(e.gap, std::abs(gap[i] + result.displacement[k] - result.approach - g) / largest_u);
     e.gap = std::max(e.gap, std::max(-g, 0.0) / largest_u);
-    e.traction = std::max(e.traction, (g > 0.0 ? std::abs(p - law.traction(g)) : std::max(law.traction(0.0) - p, 0.0)) /
-                                          largest_p);
+    e.traction = std::max(e.traction,
+                          (g > 0.0 ? std::abs(p - law.traction(g)) : std::max(law.traction(0.0) - p, 0.0)) / largest_p);
   }
   return e;
 }

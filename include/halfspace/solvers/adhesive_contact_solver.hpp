@@ -115,10 +115,12 @@ struct AdhesiveSolverOptions {
   int max_load_steps = 60;
   std::function<void(int, double)> progress;  // (iteration, residual), may be empty
 
-  // Throws InputError naming the option unless the law is valid,
-  // 0 < tolerance < 1, 0 < force_tolerance < 1, max_iterations >= 1,
-  // max_load_steps >= 1 and a hardness, if set, in InterfaceLaw's range
-  // (SolverOptionError naming "hardness").
+  // Throws SolverOptionError (solver_options.hpp) naming the option
+  // ("law.work", "law.range", "tolerance", "force_tolerance",
+  // "max_iterations", "max_load_steps", "hardness") unless the law is valid
+  // (AdhesionLaw::validate's rules), 0 < tolerance < 1, 0 < force_tolerance
+  // < 1, max_iterations >= 1, max_load_steps >= 1 and a hardness, if set,
+  // in InterfaceLaw's range.
   void validate() const;
 };
 
