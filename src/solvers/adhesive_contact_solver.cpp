@@ -935,7 +935,8 @@ SolveResult AdhesiveContactSolver::Impl::solve_force(std::span<const double> ini
   double least_force = std::numeric_limits<double>::infinity();  // the least force solved, and where
   double least_at = approach;
   bool base_in_contact = false;
-  int reversals = 0;                  // brackets closed on a jump and left from their other end
+  int reversals = 0;  // brackets closed on a jump and left from their other end
+  double least_slope = std::numeric_limits<double>::infinity();  // |dF / d delta| across the bracket
   int streak = 0;                     // the Illinois modification: how often the same end moved
   bool previous_slope_valid = false;  // the expansion's last base state, for its secant
   double previous_approach = 0.0;
@@ -1011,7 +1012,15 @@ SolveResult AdhesiveContactSolver::Impl::solve_force(std::span<const double> ini
       previous_force = base.force;
     } else {
       const double width = std::abs(high.approach - low.approach);
-      if (width <= 1e-4 * probe + 1e-12 * std::abs(approach)) {
+      // A jump: the bracket is narrow against the law's range and its
+      // force difference has stopped shrinking with it (the mean slope
+      // across it 100 times the least seen in this bracket; on a steep but
+      // continuous stretch of a rough contact it stays put), or the
+      // bracket is at rounding.
+      const double slope_across = std::abs(high.force - low.force) / width;
+      least_slope = std::min(least_slope, slope_across);
+      const bool narrow = width <= 1e-4 * probe && slope_across >= 100.0 * least_slope;
+      if (narrow || width <= 1e-13 * std::max(std::abs(approach), probe)) {
         // Closed on a jump: leave the bracket from its other end, along
         // that end's branch the other way.
         if (++reversals > kMaxReversals) {
@@ -1023,6 +1032,7 @@ SolveResult AdhesiveContactSolver::Impl::solve_force(std::span<const double> ini
         }
         loading = !loading;
         (loading ? high : low).set = false;
+        least_slope = std::numeric_limits<double>::infinity();
         previous_slope_valid = false;
         step_size = probe;
         streak = 0;
