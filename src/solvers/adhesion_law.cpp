@@ -35,8 +35,9 @@ double AdhesionLaw::traction_slope(double gap) const {
 }
 
 double AdhesionLaw::cohesive_zone_length(double e_star) const {
-  const double sigma = stress();
-  return std::numbers::pi * e_star * work / (4.0 * sigma * sigma);
+  // pi E* w / (4 sigma0^2) with sigma0 = w / range, written so that no
+  // square overflows.
+  return std::numbers::pi * e_star * (range / 4.0) * (range / work);
 }
 
 bool AdhesionLaw::interacts(double gap) const {

@@ -1059,7 +1059,10 @@ SolveResult AdhesiveContactSolver::Impl::solve_force(std::span<const double> ini
     products += result.operator_applications;
   }
   if (failure.empty() && step >= options.max_load_steps) {
-    result.status = SolveStatus::iteration_limit;
+    // breakdown, not iteration_limit: the last inner solve converged, and
+    // the reason (the force missed) is the message, which front ends show
+    // for a breakdown.
+    result.status = SolveStatus::breakdown;
     failure = fmt::format(
         "the force {:.6g} was not reached in {} approach steps (last: {:.6g} at approach {:.6g} m{})", target,
         options.max_load_steps, result.total_force, approach,

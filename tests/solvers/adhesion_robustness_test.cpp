@@ -92,7 +92,7 @@ TEST(AdhesionRobustnessTest, FailedLoadSearchesSayWhy) {
   options.max_load_steps = 1;
   AdhesiveContactSolver short_search(c.grid, kEStar, options);
   const SolveResult pressed = short_search.solve(c.gap, Loading::force(1e-4));
-  EXPECT_EQ(pressed.status, solvers::SolveStatus::iteration_limit);
+  EXPECT_FALSE(pressed.converged());
   EXPECT_NE(pressed.message.find("was not reached in 1 approach steps"), std::string::npos) << pressed.message;
   EXPECT_EQ(pressed.message.find("pull-off"), std::string::npos) << pressed.message;
 }

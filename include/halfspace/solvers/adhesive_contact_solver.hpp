@@ -150,7 +150,7 @@ class AdhesiveContactSolver final : public ContactSolver {
   // path's last state, to a force tolerance no tighter than the inner
   // solve's residual allows; breakdown when the pull is beyond the pull-off
   // force (the message gives the least force reached) or the target lies in
-  // a jump, iteration_limit after max_load_steps. `initial_pressure` (Pa, signed), if given,
+  // a jump, or (with the bracket) after max_load_steps. `initial_pressure` (Pa, signed), if given,
   // warm-starts from the displacement K p it makes. The result's pressure
   // is signed (negative: attraction); contact_fraction counts the cells at
   // the wall (gap 0; with a cap also those below it, gap < 0 at p = H);
