@@ -453,6 +453,29 @@ struct AdhesiveContactSolver::Impl {
     return linalg::sum(size(), [&](std::size_t i) { return a[i] * b[i]; });
   }
 
+  // What the iterations carry from one step to the next: the energy and
+  // the last kMemory energies (the non-monotone line searches), the
+  // periodic multiplier, the restart flag and rho = (G - shift).D(G -
+  // shift) of the conjugate gradients, and SPG's Barzilai-Borwein step.
+  // Conjugate gradients restart after a step the wall clipped (or a plain
+  // projected gradient step); a change of the held set alone does not
+  // restart (Polak-Ribiere+ resets itself where the new gradient
+  // contradicts the old direction, and restarting there cost 10-35 % more
+  // iterations on the rough benchmark).
+  struct Walk {
+    SolveResult& result;
+    double energy = 0.0;
+    std::array<double, kMemory> recent{};
+    double free_shift = 0.0;
+    bool restart = true;
+    double rho_old = 0.0;
+    double alpha = 0.0;
+  };
+  // One iteration of either minimiser from the state in x, sx and gradient
+  // at `residual`: true if it moved, false if it broke down (the result's
+  // status and message then say why).
+  bool conjugate_gradient_step(Walk& walk, int iteration, double residual);
+  bool spectral_gradient_step(Walk& walk, int iteration, double residual);
   SolveResult solve_displacement(std::span<const double> initial_gap, double approach,
                                  std::span<const double> initial_pressure, bool start_from_last);
   SolveResult solve_force(std::span<const double> initial_gap, double target, std::span<const double> initial_pressure);
@@ -527,23 +550,12 @@ SolveResult AdhesiveContactSolver::Impl::solve_displacement(std::span<const doub
   apply(stiffness, x, sx);
   result.operator_applications = 1;
   make_gradient();
-  double free_shift = mean_shift();  // the preconditioned iteration's multiplier of mean v = 0
-  double energy = 0.5 * dot(x, sx) + interaction_energy(x, nullptr, 0.0);
-  std::array<double, kMemory> recent;
-  recent.fill(energy);
-
+  Walk walk{result};
+  walk.free_shift = mean_shift();
+  walk.energy = 0.5 * dot(x, sx) + interaction_energy(x, nullptr, 0.0);
+  walk.recent.fill(walk.energy);
+  walk.alpha = compliance;
   const double c = compliance;
-  const bool preconditioned = options.precondition;
-  const double alpha_min = 1e-10 * c;
-  const double alpha_max = 1e6 * c;
-  double alpha = c;
-  // Conjugate gradients: restart after a step the wall clipped (or a plain
-  // projected gradient step); a change of the held set alone does not
-  // restart (Polak-Ribiere+ resets itself where the new gradient
-  // contradicts the old direction, and restarting there cost 10-35 % more
-  // iterations on the rough benchmark); rho = (G - shift).D(G - shift).
-  bool restart = true;
-  double rho_old = 0.0;
   result.status = SolveStatus::iteration_limit;
   for (int iteration = 0;; ++iteration) {
     // Residual: the projected gradient step of length c, in pressure.
@@ -566,213 +578,237 @@ SolveResult AdhesiveContactSolver::Impl::solve_displacement(std::span<const doub
                                    residual, options.tolerance);
       break;
     }
-    if (preconditioned) {
-      // Preconditioned non-linear conjugate gradients on the free cells
-      // (Polak-Ribiere+), the wall's cells held, the step the minimiser of
-      // the elastic energy along d, clipped onto the wall and backtracked
-      // until the energy falls (Armijo, monotone). The vector work is fused
-      // into few passes: at these sizes a pass over the fields costs a
-      // fair fraction of an FFT pair.
-      // scaled = D (G - shift) on the cells the wall does not hold, 0 on
-      // those it holds: D is the compliance K's principal block on the free
-      // cells. K inverts the elastic stiffness that makes the plain gradient
-      // ill-conditioned (symbol E*|q|/2). One FFT pair.
-      const double shift = free_shift;
-      linalg::for_each_index(m, [&](std::size_t i) { scaled[i] = binding(i, shift) ? 0.0 : gradient[i] - shift; });
-      apply(kernel, scaled, scaled);
-      ++result.operator_applications;
-      // D (G - shift) vanishes on the held cells; rho and the Polak-Ribiere
-      // numerator in the same pass.
-      const std::array<double, 2> sums = linalg::sums<2>(m, [&](std::size_t i) {
-        if (binding(i, shift)) scaled[i] = 0.0;
-        return std::array<double, 2>{scaled[i] * (gradient[i] - shift),
-                                     restart ? 0.0 : scaled[i] * (gradient[i] - old_gradient[i])};
-      });
-      double beta = 0.0;
-      if (!restart && rho_old > 0.0) beta = std::max(0.0, sums[1] / rho_old);
-      rho_old = sums[0];
-      // d = -D G + b d on the free cells, mean-free on them (periodic: mean
-      // v = 0 holds along the line); returns the slope G.d.
-      const auto make_direction = [&](double b) {
-        // sum of d and count over the free cells, G.d, sum of G over the free cells
-        const std::array<double, 4> parts = linalg::sums<4>(m, [&](std::size_t i) {
-          if (binding(i, shift)) {
-            direction[i] = 0.0;
-            return std::array<double, 4>{0.0, 0.0, 0.0, 0.0};
-          }
-          direction[i] = -scaled[i] + b * direction[i];
-          return std::array<double, 4>{direction[i], 1.0, gradient[i] * direction[i], gradient[i]};
-        });
-        return mean_free_on_free_cells(parts, shift);
-      };
-      double slope = make_direction(beta);
-      if (!(slope < 0.0) && beta != 0.0) {
-        linalg::for_each_index(m, [&](std::size_t i) { direction[i] = 0.0; });
-        slope = make_direction(0.0);
-      }
-      if (capped) slope = keep_released_sides(shift);
-      bool plain = false;
-      if (!(slope < 0.0)) {
-        // The plain projected gradient step always descends.
-        trial = x - c * gradient;
-        project(trial, trial);
-        direction = trial - x;
-        slope = dot(gradient, direction);
-        plain = true;
-      }
-      if (!(slope < 0.0)) {
-        result.status = SolveStatus::breakdown;
-        result.message = fmt::format(
-            "the conjugate direction is no descent direction at iteration {} (residual {:.3g}): rounding limits "
-            "the accuracy; loosen the tolerance",
-            iteration, residual);
-        break;
-      }
-      apply(stiffness, direction, s_direction);
-      ++result.operator_applications;
-      // Energy changes, not energies: near the solution the change is far
-      // below the rounding of the energy itself. Non-monotone as SPG's: the
-      // change is measured against the largest of the last kMemory energies;
-      // monotone with a cap (non-monotone steps cycled there: a rough sweep
-      // alternated between two held sets for 20000 iterations).
-      const double allowance = capped ? 0.0 : *std::max_element(recent.begin(), recent.end()) - energy;
-      const std::array<double, 2> along = linalg::sums<2>(m, [&](std::size_t i) {
-        return std::array<double, 2>{direction[i] * sx[i], direction[i] * s_direction[i]};
-      });
-      const double linear = along[0];
-      const double quadratic = 0.5 * along[1];
-      double step = plain || !(quadratic > 0.0) ? 1.0 : -0.5 * slope / quadratic;
-      double change = 0.0;
-      bool clipped = false;
-      int backtracks = 0;
-      const AdhesionLaw& law = options.law;
-      for (;; ++backtracks) {
-        // The trial point, whether the wall clips it, and (if not) the
-        // interaction energy's change, in one pass.
-        const std::array<double, 2> moved = linalg::sums<2>(m, [&](std::size_t i) {
-          trial[i] = x[i] + step * direction[i];
-          const double cut = (below[i] ? trial[i] > lower[i] : trial[i] < lower[i]) ? 1.0 : 0.0;
-          if (!physical[i]) return std::array<double, 2>{cut, 0.0};
-          const double g = offset[i] + x[i];
-          const double change_i = cell_energy(law, g + step * direction[i]) - cell_energy(law, g);
-          return std::array<double, 2>{cut, change_i};
-        });
-        clipped = moved[0] > 0.0;
-        double decrease = step * slope;
-        if (clipped) {
-          project(trial, trial);
-          apply(stiffness, trial, scaled);  // S of the trial point
-          ++result.operator_applications;
-          // 1/2 t.S t - 1/2 x.S x = 1/2 (t - x).(S t + S x), and the
-          // interaction energy's change.
-          const std::array<double, 3> sums3 = linalg::sums<3>(m, [&](std::size_t i) {
-            const double s_i = trial[i] - x[i];
-            const double g = offset[i] + x[i];
-            const double change_i = physical[i] ? cell_energy(law, offset[i] + trial[i]) - cell_energy(law, g) : 0.0;
-            return std::array<double, 3>{0.5 * s_i * (scaled[i] + sx[i]), gradient[i] * s_i, change_i};
-          });
-          change = sums3[0] + sums3[2];
-          decrease = sums3[1];
-        } else {
-          change = step * linear + step * step * quadratic + moved[1];
-        }
-        if (change <= allowance + kSufficientDecrease * decrease || backtracks >= kMaxBacktracks) break;
-        step *= 0.5;
-      }
-      const double trial_energy = energy + change;
-      if (backtracks >= kMaxBacktracks) {
-        result.status = SolveStatus::breakdown;
-        result.message =
-            fmt::format("the line search found no decrease at iteration {} (residual {:.3g})", iteration, residual);
-        break;
-      }
-      const bool refresh = !clipped && (iteration + 1) % kRefreshEvery == 0;
-      if (refresh) {
-        x = trial;
-        apply(stiffness, x, sx);
-        ++result.operator_applications;
-      }
-      // Accept: the last gradient kept, v and S v updated, the new gradient
-      // and the sums of the mean constraint's multiplier, in one pass.
-      const std::array<double, 2> free_part = linalg::sums<2>(m, [&](std::size_t i) {
-        old_gradient[i] = gradient[i];
-        x[i] = trial[i];
-        if (clipped) {
-          sx[i] = scaled[i];
-        } else if (!refresh) {
-          sx[i] += step * s_direction[i];
-        }
-        gradient[i] = physical[i] ? sx[i] - cell_traction(law, offset[i] + x[i]) : sx[i];
-        return off_wall(i) ? std::array<double, 2>{gradient[i], 1.0} : std::array<double, 2>{0.0, 0.0};
-      });
-      free_shift = padded || !(free_part[1] > 0.0) ? 0.0 : free_part[0] / free_part[1];
-      settle(free_shift);
-      energy = trial_energy;
-      recent[static_cast<std::size_t>(iteration + 1) % kMemory] = energy;
-      restart = clipped || plain;
-      continue;
-    }
-    // The spectral step and the line search along d = P(v - alpha G) - v.
-    trial = x - alpha * gradient;
-    project(trial, trial);
-    direction = trial - x;
-    const double slope = dot(gradient, direction);
-    apply(stiffness, direction, s_direction);
-    ++result.operator_applications;
-    if (!(slope < 0.0)) {
-      result.status = SolveStatus::breakdown;
-      result.message = fmt::format(
-          "the projected gradient step is no descent direction at iteration {} (residual {:.3g}): rounding limits "
-          "the accuracy; loosen the tolerance",
-          iteration, residual);
-      break;
-    }
-    const double elastic = 0.5 * dot(x, sx);
-    const double linear = dot(direction, sx);
-    const double quadratic = 0.5 * dot(direction, s_direction);
-    const double reference = *std::max_element(recent.begin(), recent.end());
-    double step = 1.0;
-    double trial_energy = 0.0;
-    int backtracks = 0;
-    for (;; ++backtracks) {
-      trial_energy = elastic + step * linear + step * step * quadratic + interaction_energy(x, &direction, step);
-      if (trial_energy <= reference + kSufficientDecrease * step * slope || backtracks >= kMaxBacktracks) break;
-      // Safeguarded quadratic interpolation of the energy along the line.
-      const double curvature = trial_energy - energy - step * slope;
-      double next = curvature > 0.0 ? -0.5 * slope * step * step / curvature : 0.5 * step;
-      step = std::clamp(next, 0.1 * step, 0.5 * step);
-    }
-    if (backtracks >= kMaxBacktracks) {
-      result.status = SolveStatus::breakdown;
-      result.message =
-          fmt::format("the line search found no decrease at iteration {} (residual {:.3g})", iteration, residual);
-      break;
-    }
-    // s = step d, y = G_new - G; the Barzilai-Borwein step s.s / s.y.
-    if (step == 1.0) {
-      x = trial;
-    } else {
-      x += step * direction;
-    }
-    if ((iteration + 1) % kRefreshEvery == 0) {
-      apply(stiffness, x, sx);
-      ++result.operator_applications;
-    } else {
-      sx += step * s_direction;
-    }
-    trial = gradient;  // the old gradient
-    make_gradient();
-    const double ss = step * step * dot(direction, direction);
-    const double sy = step * linalg::sum(m, [&](std::size_t i) { return direction[i] * (gradient[i] - trial[i]); });
-    alpha = sy > 0.0 ? std::clamp(ss / sy, alpha_min, alpha_max) : alpha_max;
-    energy = trial_energy;
-    recent[static_cast<std::size_t>(iteration + 1) % kMemory] = energy;
+    const bool stepped = options.precondition ? conjugate_gradient_step(walk, iteration, residual)
+                                              : spectral_gradient_step(walk, iteration, residual);
+    if (!stepped) break;
   }
   have_last = result.converged();
   last_approach = approach;
   fill_result(result, initial_gap, approach);
   result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return result;
+}
+
+bool AdhesiveContactSolver::Impl::conjugate_gradient_step(Walk& walk, int iteration, double residual) {
+  SolveResult& result = walk.result;
+  double& energy = walk.energy;
+  std::array<double, kMemory>& recent = walk.recent;
+  double& free_shift = walk.free_shift;
+  bool& restart = walk.restart;
+  double& rho_old = walk.rho_old;
+  const std::size_t m = size();
+  const double c = compliance;
+  // Preconditioned non-linear conjugate gradients on the free cells
+  // (Polak-Ribiere+), the wall's cells held, the step the minimiser of
+  // the elastic energy along d, clipped onto the wall and backtracked
+  // until the energy falls (Armijo, monotone). The vector work is fused
+  // into few passes: at these sizes a pass over the fields costs a
+  // fair fraction of an FFT pair.
+  // scaled = D (G - shift) on the cells the wall does not hold, 0 on
+  // those it holds: D is the compliance K's principal block on the free
+  // cells. K inverts the elastic stiffness that makes the plain gradient
+  // ill-conditioned (symbol E*|q|/2). One FFT pair.
+  const double shift = free_shift;
+  linalg::for_each_index(m, [&](std::size_t i) { scaled[i] = binding(i, shift) ? 0.0 : gradient[i] - shift; });
+  apply(kernel, scaled, scaled);
+  ++result.operator_applications;
+  // D (G - shift) vanishes on the held cells; rho and the Polak-Ribiere
+  // numerator in the same pass.
+  const std::array<double, 2> sums = linalg::sums<2>(m, [&](std::size_t i) {
+    if (binding(i, shift)) scaled[i] = 0.0;
+    return std::array<double, 2>{scaled[i] * (gradient[i] - shift),
+                                 restart ? 0.0 : scaled[i] * (gradient[i] - old_gradient[i])};
+  });
+  double beta = 0.0;
+  if (!restart && rho_old > 0.0) beta = std::max(0.0, sums[1] / rho_old);
+  rho_old = sums[0];
+  // d = -D G + b d on the free cells, mean-free on them (periodic: mean
+  // v = 0 holds along the line); returns the slope G.d.
+  const auto make_direction = [&](double b) {
+    // sum of d and count over the free cells, G.d, sum of G over the free cells
+    const std::array<double, 4> parts = linalg::sums<4>(m, [&](std::size_t i) {
+      if (binding(i, shift)) {
+        direction[i] = 0.0;
+        return std::array<double, 4>{0.0, 0.0, 0.0, 0.0};
+      }
+      direction[i] = -scaled[i] + b * direction[i];
+      return std::array<double, 4>{direction[i], 1.0, gradient[i] * direction[i], gradient[i]};
+    });
+    return mean_free_on_free_cells(parts, shift);
+  };
+  double slope = make_direction(beta);
+  if (!(slope < 0.0) && beta != 0.0) {
+    linalg::for_each_index(m, [&](std::size_t i) { direction[i] = 0.0; });
+    slope = make_direction(0.0);
+  }
+  if (capped) slope = keep_released_sides(shift);
+  bool plain = false;
+  if (!(slope < 0.0)) {
+    // The plain projected gradient step always descends.
+    trial = x - c * gradient;
+    project(trial, trial);
+    direction = trial - x;
+    slope = dot(gradient, direction);
+    plain = true;
+  }
+  if (!(slope < 0.0)) {
+    result.status = SolveStatus::breakdown;
+    result.message = fmt::format(
+        "the conjugate direction is no descent direction at iteration {} (residual {:.3g}): rounding limits "
+        "the accuracy; loosen the tolerance",
+        iteration, residual);
+    return false;
+  }
+  apply(stiffness, direction, s_direction);
+  ++result.operator_applications;
+  // Energy changes, not energies: near the solution the change is far
+  // below the rounding of the energy itself. Non-monotone as SPG's: the
+  // change is measured against the largest of the last kMemory energies;
+  // monotone with a cap (non-monotone steps cycled there: a rough sweep
+  // alternated between two held sets for 20000 iterations).
+  const double allowance = capped ? 0.0 : *std::max_element(recent.begin(), recent.end()) - energy;
+  const std::array<double, 2> along = linalg::sums<2>(m, [&](std::size_t i) {
+    return std::array<double, 2>{direction[i] * sx[i], direction[i] * s_direction[i]};
+  });
+  const double linear = along[0];
+  const double quadratic = 0.5 * along[1];
+  double step = plain || !(quadratic > 0.0) ? 1.0 : -0.5 * slope / quadratic;
+  double change = 0.0;
+  bool clipped = false;
+  int backtracks = 0;
+  const AdhesionLaw& law = options.law;
+  for (;; ++backtracks) {
+    // The trial point, whether the wall clips it, and (if not) the
+    // interaction energy's change, in one pass.
+    const std::array<double, 2> moved = linalg::sums<2>(m, [&](std::size_t i) {
+      trial[i] = x[i] + step * direction[i];
+      const double cut = (below[i] ? trial[i] > lower[i] : trial[i] < lower[i]) ? 1.0 : 0.0;
+      if (!physical[i]) return std::array<double, 2>{cut, 0.0};
+      const double g = offset[i] + x[i];
+      const double change_i = cell_energy(law, g + step * direction[i]) - cell_energy(law, g);
+      return std::array<double, 2>{cut, change_i};
+    });
+    clipped = moved[0] > 0.0;
+    double decrease = step * slope;
+    if (clipped) {
+      project(trial, trial);
+      apply(stiffness, trial, scaled);  // S of the trial point
+      ++result.operator_applications;
+      // 1/2 t.S t - 1/2 x.S x = 1/2 (t - x).(S t + S x), and the
+      // interaction energy's change.
+      const std::array<double, 3> sums3 = linalg::sums<3>(m, [&](std::size_t i) {
+        const double s_i = trial[i] - x[i];
+        const double g = offset[i] + x[i];
+        const double change_i = physical[i] ? cell_energy(law, offset[i] + trial[i]) - cell_energy(law, g) : 0.0;
+        return std::array<double, 3>{0.5 * s_i * (scaled[i] + sx[i]), gradient[i] * s_i, change_i};
+      });
+      change = sums3[0] + sums3[2];
+      decrease = sums3[1];
+    } else {
+      change = step * linear + step * step * quadratic + moved[1];
+    }
+    if (change <= allowance + kSufficientDecrease * decrease || backtracks >= kMaxBacktracks) break;
+    step *= 0.5;
+  }
+  const double trial_energy = energy + change;
+  if (backtracks >= kMaxBacktracks) {
+    result.status = SolveStatus::breakdown;
+    result.message =
+        fmt::format("the line search found no decrease at iteration {} (residual {:.3g})", iteration, residual);
+    return false;
+  }
+  const bool refresh = !clipped && (iteration + 1) % kRefreshEvery == 0;
+  if (refresh) {
+    x = trial;
+    apply(stiffness, x, sx);
+    ++result.operator_applications;
+  }
+  // Accept: the last gradient kept, v and S v updated, the new gradient
+  // and the sums of the mean constraint's multiplier, in one pass.
+  const std::array<double, 2> free_part = linalg::sums<2>(m, [&](std::size_t i) {
+    old_gradient[i] = gradient[i];
+    x[i] = trial[i];
+    if (clipped) {
+      sx[i] = scaled[i];
+    } else if (!refresh) {
+      sx[i] += step * s_direction[i];
+    }
+    gradient[i] = physical[i] ? sx[i] - cell_traction(law, offset[i] + x[i]) : sx[i];
+    return off_wall(i) ? std::array<double, 2>{gradient[i], 1.0} : std::array<double, 2>{0.0, 0.0};
+  });
+  free_shift = padded || !(free_part[1] > 0.0) ? 0.0 : free_part[0] / free_part[1];
+  settle(free_shift);
+  energy = trial_energy;
+  recent[static_cast<std::size_t>(iteration + 1) % kMemory] = energy;
+  restart = clipped || plain;
+  return true;
+}
+
+bool AdhesiveContactSolver::Impl::spectral_gradient_step(Walk& walk, int iteration, double residual) {
+  SolveResult& result = walk.result;
+  double& energy = walk.energy;
+  std::array<double, kMemory>& recent = walk.recent;
+  double& alpha = walk.alpha;
+  const std::size_t m = size();
+  const double c = compliance;
+  const double alpha_min = 1e-10 * c;
+  const double alpha_max = 1e6 * c;
+  // The spectral step and the line search along d = P(v - alpha G) - v.
+  trial = x - alpha * gradient;
+  project(trial, trial);
+  direction = trial - x;
+  const double slope = dot(gradient, direction);
+  apply(stiffness, direction, s_direction);
+  ++result.operator_applications;
+  if (!(slope < 0.0)) {
+    result.status = SolveStatus::breakdown;
+    result.message = fmt::format(
+        "the projected gradient step is no descent direction at iteration {} (residual {:.3g}): rounding limits "
+        "the accuracy; loosen the tolerance",
+        iteration, residual);
+    return false;
+  }
+  const double elastic = 0.5 * dot(x, sx);
+  const double linear = dot(direction, sx);
+  const double quadratic = 0.5 * dot(direction, s_direction);
+  const double reference = *std::max_element(recent.begin(), recent.end());
+  double step = 1.0;
+  double trial_energy = 0.0;
+  int backtracks = 0;
+  for (;; ++backtracks) {
+    trial_energy = elastic + step * linear + step * step * quadratic + interaction_energy(x, &direction, step);
+    if (trial_energy <= reference + kSufficientDecrease * step * slope || backtracks >= kMaxBacktracks) break;
+    // Safeguarded quadratic interpolation of the energy along the line.
+    const double curvature = trial_energy - energy - step * slope;
+    double next = curvature > 0.0 ? -0.5 * slope * step * step / curvature : 0.5 * step;
+    step = std::clamp(next, 0.1 * step, 0.5 * step);
+  }
+  if (backtracks >= kMaxBacktracks) {
+    result.status = SolveStatus::breakdown;
+    result.message =
+        fmt::format("the line search found no decrease at iteration {} (residual {:.3g})", iteration, residual);
+    return false;
+  }
+  // s = step d, y = G_new - G; the Barzilai-Borwein step s.s / s.y.
+  if (step == 1.0) {
+    x = trial;
+  } else {
+    x += step * direction;
+  }
+  if ((iteration + 1) % kRefreshEvery == 0) {
+    apply(stiffness, x, sx);
+    ++result.operator_applications;
+  } else {
+    sx += step * s_direction;
+  }
+  trial = gradient;  // the old gradient
+  make_gradient();
+  const double ss = step * step * dot(direction, direction);
+  const double sy = step * linalg::sum(m, [&](std::size_t i) { return direction[i] * (gradient[i] - trial[i]); });
+  alpha = sy > 0.0 ? std::clamp(ss / sy, alpha_min, alpha_max) : alpha_max;
+  energy = trial_energy;
+  recent[static_cast<std::size_t>(iteration + 1) % kMemory] = energy;
+  return true;
 }
 
 void AdhesiveContactSolver::Impl::fill_result(SolveResult& result, std::span<const double> initial_gap,
