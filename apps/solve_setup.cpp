@@ -256,12 +256,21 @@ std::optional<solvers::SolverOptions::Adhesion> adhesion_from(const SolveOptions
   }
   const double w = require_positive(o, "work-of-adhesion", *o.work_of_adhesion, "J/m^2");
   solvers::SolverOptions::Adhesion adhesion;
+  // The stress is a pressure and the range a length: given or derived
+  // (w / sigma0, w / range), each stays in the program's range for its kind.
   if (o.adhesion_stress) {
     const double sigma0 = require_positive(o, "adhesion-stress", *o.adhesion_stress, "Pa");
+    require_in_range(o.describe("adhesion-stress"), sigma0, kMinMeanPressure, kMaxMeanPressure, "Pa");
     adhesion.law = AdhesionLaw::maugis_dugdale_from_stress(w, sigma0);
+    require_in_range(fmt::format("the range h0 = w / sigma0 = {:g} m ({} with {})", adhesion.law.range,
+                                 o.describe("work-of-adhesion"), o.describe("adhesion-stress")),
+                     adhesion.law.range, kMinLength, kMaxLength, "m");
   } else {
     const double range = require_length(o, "adhesion-range", *o.adhesion_range);
     adhesion.law = {type, w, range};
+    require_in_range(fmt::format("the adhesion stress w / range = {:g} Pa ({} with {})", adhesion.law.stress(),
+                                 o.describe("work-of-adhesion"), o.describe("adhesion-range")),
+                     adhesion.law.stress(), kMinMeanPressure, kMaxMeanPressure, "Pa");
   }
   if (o.tol) adhesion.tolerance = *o.tol;
   if (o.adhesion_precondition) {

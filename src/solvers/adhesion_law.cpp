@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <numbers>
 
 #include "halfspace/error.hpp"
 
@@ -31,6 +32,12 @@ AdhesionLawType parse_adhesion_law_type(std::string_view name) {
 double AdhesionLaw::traction_slope(double gap) const {
   if (type == AdhesionLawType::maugis_dugdale) return 0.0;
   return stress() / range * std::exp(-gap / range);
+}
+
+double AdhesionLaw::cohesive_zone_length(double e_star) const {
+  // pi E* w / (4 sigma0^2) with sigma0 = w / range, written so that no
+  // square overflows.
+  return std::numbers::pi * e_star * (range / 4.0) * (range / work);
 }
 
 bool AdhesionLaw::interacts(double gap) const {

@@ -128,6 +128,23 @@ TEST(AdhesionCliTest, RefusesInconsistentAdhesionOptions) {
   expect_refused({}, "--approach -1e-6 is invalid", false);
 }
 
+// Issue 32, defects 3 and 4: a derived stress or range keeps the range of
+// the option it replaces (no -inf force, no h0 of 5e-302 m), and a law whose
+// cohesive zone the grid cannot resolve is refused with the numbers.
+TEST(AdhesionCliTest, RefusesAdhesionParametersOutOfRange) {
+  expect_refused({"--adhesion", "md", "--work-of-adhesion", "1e300", "--adhesion-range", "1e-6"},
+                 "the adhesion stress w / range = 1e+306 Pa (--work-of-adhesion 1e300 with --adhesion-range 1e-6) is "
+                 "invalid: allowed range is",
+                 false);
+  expect_refused({"--adhesion-stress", "1e300"}, "--adhesion-stress 1e300 is invalid: allowed range is");
+  expect_refused({"--adhesion-stress", "1e13"},
+                 "the range h0 = w / sigma0 = 5e-15 m (--work-of-adhesion 0.05 with --adhesion-stress 1e13) is "
+                 "invalid: allowed range is");
+  // 16 cells on 1 mm: cells of 62.5 um against a zone of pi E* w / (4 sigma0^2) = 1.6e-17 m.
+  expect_refused({"--adhesion-range", "1e-12"},
+                 "its cohesive zone at a contact edge, pi E* w / (4 sigma0^2) = 1.57e-17 m");
+}
+
 TEST(AdhesionCliTest, RefusesStressForTheExponentialLaw) {
   const TempDir dir;
   std::vector<std::string> arguments = sphere_arguments(dir / "out.h5", "0");

@@ -11,6 +11,7 @@
 
 #include "halfspace/error.hpp"
 #include "halfspace/solvers/adhesive_contact_solver.hpp"
+#include "halfspace/solvers/solver_options.hpp"
 
 namespace halfspace {
 namespace {
@@ -34,16 +35,18 @@ double total_energy(const Grid& grid, const SolveResult& result, const AdhesionL
 }
 
 AdhesiveContactSolver make_solver(const Grid& grid, const AdhesionLaw& law, double tolerance = 1e-6,
-                                  bool precondition = false) {
+                                  bool precondition = false, double e_star = 1.0) {
   AdhesiveSolverOptions options;
   options.law = law;
   options.tolerance = tolerance;
   options.precondition = precondition;
-  return AdhesiveContactSolver(grid, 1.0, options);
+  return AdhesiveContactSolver(grid, e_star, options);
 }
 
+// E* = 1 GPa: the laws' cohesive zones (pi E* w / (4 sigma0^2), 8 nm) are
+// then resolved by the 10 nm cells, as the solver requires.
 void expect_uniform_traction(const Grid& grid, const AdhesionLaw& law, double separation) {
-  AdhesiveContactSolver solver = make_solver(grid, law);
+  AdhesiveContactSolver solver = make_solver(grid, law, 1e-6, false, 1e9);
   const std::vector<double> gap(grid.size(), 0.0);
   const SolveResult result = solver.solve(gap, Loading::approach(-separation));
   ASSERT_TRUE(result.converged()) << result.message;
@@ -193,6 +196,42 @@ TEST(AdhesionEnergyTest, RefusesBadInput) {
   AdhesiveSolverOptions options;
   options.law = AdhesionLaw::exponential(0.0, 1e-9);
   EXPECT_THROW(AdhesiveContactSolver(c.grid, 1.0, options), InputError);
+}
+
+// The options' errors name the option, as SolverOptions' do.
+TEST(AdhesionEnergyTest, OptionErrorsNameTheOption) {
+  const auto option_of = [](const AdhesiveSolverOptions& options) {
+    try {
+      options.validate();
+    } catch (const solvers::SolverOptionError& error) {
+      return error.option();
+    }
+    return std::string("none");
+  };
+  AdhesiveSolverOptions options;
+  options.law = AdhesionLaw::exponential(0.1, 1e-9);
+  EXPECT_EQ(option_of(options), "none");
+  AdhesiveSolverOptions bad = options;
+  bad.law.work = -1.0;
+  EXPECT_EQ(option_of(bad), "law.work");
+  bad = options;
+  bad.law.range = 0.0;
+  EXPECT_EQ(option_of(bad), "law.range");
+  bad = options;
+  bad.tolerance = 1.0;
+  EXPECT_EQ(option_of(bad), "tolerance");
+  bad = options;
+  bad.force_tolerance = 0.0;
+  EXPECT_EQ(option_of(bad), "force_tolerance");
+  bad = options;
+  bad.max_iterations = 0;
+  EXPECT_EQ(option_of(bad), "max_iterations");
+  bad = options;
+  bad.max_load_steps = 0;
+  EXPECT_EQ(option_of(bad), "max_load_steps");
+  bad = options;
+  bad.hardness = -1.0;
+  EXPECT_EQ(option_of(bad), "hardness");
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <string>
 
 #include "halfspace/error.hpp"
@@ -28,6 +29,18 @@ TEST(AdhesionLawTest, MaugisDugdaleHasConstantStressWithinRange) {
   EXPECT_FALSE(law.interacts(2e-9));
   const AdhesionLaw same = AdhesionLaw::maugis_dugdale_from_stress(0.05, 0.05 / 2e-9);
   EXPECT_DOUBLE_EQ(same.range, 2e-9);
+}
+
+// The Dugdale zone pi E* w / (4 sigma0^2): issue 32's h0 = 1e-12 m (sigma0 =
+// 5e10 Pa) on E* = 1 MPa gives 1.57e-17 m; a stress whose square overflows
+// still gives a finite length.
+TEST(AdhesionLawTest, CohesiveZoneLengthIsTheDugdaleZone) {
+  const double sigma0 = 0.05 / 1e-12;
+  EXPECT_NEAR(AdhesionLaw::maugis_dugdale(0.05, 1e-12).cohesive_zone_length(1e6),
+              std::numbers::pi * 1e6 * 0.05 / (4.0 * sigma0 * sigma0), 1e-14 * 1.57e-17);
+  const double huge = AdhesionLaw::maugis_dugdale(1e300, 1e-6).cohesive_zone_length(1e6);
+  EXPECT_TRUE(std::isfinite(huge));
+  EXPECT_LT(huge, 1e-290);
 }
 
 TEST(AdhesionLawTest, ExponentialTractionIsMinusEnergySlope) {

@@ -63,6 +63,14 @@ struct AdhesionLaw {
   bool interacts(double gap) const;
   static constexpr double kInteractionFraction = 0.01;
 
+  // The length (m) of the cohesive zone at a contact edge on a body of
+  // contact modulus e_star (Pa): the Dugdale zone of the edge crack in the
+  // small-zone (JKR) limit, s = pi K^2 / (8 sigma0^2) with K^2 = 2 E* w
+  // (Maugis 1992; Johnson 1985, Contact Mechanics), pi E* w / (4 sigma0^2),
+  // sigma0 the largest attractive stress. A grid resolves the law's
+  // traction at a contact edge only if its cells are not much longer.
+  double cohesive_zone_length(double e_star) const;
+
   // Throws InputError naming the option ("work-of-adhesion",
   // "adhesion-range") and value unless w and range are positive and finite,
   // and the stress w / range is finite and normal.

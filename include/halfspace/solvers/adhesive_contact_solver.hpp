@@ -66,12 +66,20 @@
 //
 // Stopping. residual = max_i |P(v - c G) - v|_i / (c p_ref), with G the
 // gradient, P the projection onto the constraints, c = K_ii (the cell's
-// self-compliance, m/Pa) and p_ref = max(w / range, max |p|): the largest
-// pressure error of the projected gradient step relative to the pressure
-// scale. Zero exactly at a constrained stationary point. With a cap, P
-// projects onto the sides, with the gradient of the side a cell on the
-// kink is released to: zero exactly at a stationary point of the capped
-// energy.
+// self-compliance, m/Pa) and p_ref the largest pressure of the state (|S v|,
+// and the law's traction off the wall), at least min(w / range, range / c):
+// the largest pressure error of the projected gradient step relative to the
+// pressures of the contact (not to the law's stress, which a short range
+// makes larger than all of them). Zero exactly at a constrained stationary
+// point. With a cap, P projects onto the sides, with the gradient of the
+// side a cell on the kink is released to: zero exactly at a stationary
+// point of the capped energy. A cell the projected step puts on the wall is
+// reported on it (its pressure S v).
+//
+// Resolution. The law acts at a contact edge over its cohesive zone, about
+// pi E* w / (4 sigma0^2) (AdhesionLaw::cohesive_zone_length); a zone below
+// 1 % of the cell length is refused (InputError with both lengths), one
+// below 10 % is warned about in results with a contact edge.
 #pragma once
 
 #include <Eigen/Core>
@@ -107,19 +115,22 @@ struct AdhesiveSolverOptions {
   int max_load_steps = 60;
   std::function<void(int, double)> progress;  // (iteration, residual), may be empty
 
-  // Throws InputError naming the option unless the law is valid,
-  // 0 < tolerance < 1, 0 < force_tolerance < 1, max_iterations >= 1,
-  // max_load_steps >= 1 and a hardness, if set, in InterfaceLaw's range
-  // (SolverOptionError naming "hardness").
+  // Throws SolverOptionError (solver_options.hpp) naming the option
+  // ("law.work", "law.range", "tolerance", "force_tolerance",
+  // "max_iterations", "max_load_steps", "hardness") unless the law is valid
+  // (AdhesionLaw::validate's rules), 0 < tolerance < 1, 0 < force_tolerance
+  // < 1, max_iterations >= 1, max_load_steps >= 1 and a hardness, if set,
+  // in InterfaceLaw's range.
   void validate() const;
 };
 
 class AdhesiveContactSolver final : public ContactSolver {
  public:
   // Plans the transforms and the kernel once (options.validate() first).
-  // Throws InputError if the free grid's padded kernel is not positive
-  // definite (no stiffness exists; the 1D strip kernel with its datum at
-  // 1 m can be so on domains longer than about 1 m).
+  // Throws InputError if the law's cohesive zone is below 1 % of a cell
+  // (see Resolution above) or its stress over the grid overflows a force,
+  // and if the free grid's padded kernel is not positive definite (no stiffness exists; the 1D strip kernel with its
+  // datum at 1 m can be so on domains longer than about 1 m).
   AdhesiveContactSolver(const Grid& grid, double e_star, AdhesiveSolverOptions options);
   ~AdhesiveContactSolver() override;
   AdhesiveContactSolver(const AdhesiveContactSolver&) = delete;
@@ -132,10 +143,14 @@ class AdhesiveContactSolver final : public ContactSolver {
   // Displacement control: any finite approach (negative: the surfaces start
   // apart); on a periodic grid it must be below the mean initial gap. Load
   // control (force or mean pressure, which may be negative: a pull): a
-  // secant-bisection search on the approach, each step a displacement-
-  // controlled solve warm-started from the last; it returns iteration_limit
-  // or breakdown when the force is out of reach of the branch it follows
-  // (beyond pull-off). `initial_pressure` (Pa, signed), if given,
+  // search on the approach that follows one path of states (expanding
+  // steps, then regula falsi in the bracket; a bracket closed on a jump of
+  // the force, a snap of the contact edge, is left along the other end's
+  // branch), each step a displacement-controlled solve warm-started from the
+  // path's last state, to a force tolerance no tighter than the inner
+  // solve's residual allows; breakdown when the pull is beyond the pull-off
+  // force (the message gives the least force reached) or the target lies in
+  // a jump, or (with the bracket) after max_load_steps. `initial_pressure` (Pa, signed), if given,
   // warm-starts from the displacement K p it makes. The result's pressure
   // is signed (negative: attraction); contact_fraction counts the cells at
   // the wall (gap 0; with a cap also those below it, gap < 0 at p = H);
