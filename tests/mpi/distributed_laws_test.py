@@ -39,7 +39,8 @@ from mpi_harness import Harness
 # from the serial ones: equal to rounding, not bitwise.
 kTolerance = 1e-12
 # Attributes (and a sweep's datasets) that record the run, not the result.
-kRunAttributes = {"solve_seconds", "seconds", "command_line", "halfspace_version"}
+kRunAttributes = {"solve_seconds", "seconds", "command_line", "halfspace_version",
+                  "summary_csv_md5"}  # the CSV holds the steps' seconds
 # The capped iteration's path (see above).
 kCappedPathAttributes = {"operator_applications"}
 kPaperFormPathAttributes = {"operator_applications", "iterations", "residual"}

@@ -31,7 +31,8 @@ kTolerance = 1e-12
 # Values that record the run rather than the result (present in both, not
 # compared): wall times, the program's path, the version with the build's
 # git hash.
-kRunValues = {"solve_seconds", "seconds", "command_line", "halfspace_version"}
+kRunValues = {"solve_seconds", "seconds", "command_line", "halfspace_version",
+               "summary_csv_md5"}  # the CSV holds the steps' seconds
 # Residuals are relative quantities near rounding at convergence: compared
 # absolutely.
 kAbsoluteValues = {"residual", "residual_history"}
