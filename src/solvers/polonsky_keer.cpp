@@ -16,6 +16,7 @@
 
 #include "halfspace/error.hpp"
 #include "halfspace/linalg/parallel.hpp"
+#include "halfspace/solvers/contact_conditions.hpp"
 #include "halfspace/solvers/interface_law.hpp"
 #include "halfspace/solvers/pressure_bounds.hpp"
 
@@ -717,6 +718,20 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
     it.advance();                                  // 6-9: p = P(p - tau t), u, load
   }
   it.summarise(k);
+  if (result.converged()) {
+    // "Converged" must mean the conditions hold, checked apart from the
+    // residual (contact_conditions.hpp): a false one becomes a breakdown.
+    const ContactConditionReport check =
+        check_contact_conditions(op_, initial_gap, loading, options_.bounds, result,
+                                 ContactConditionTolerances::for_solver_tolerance(options_.tolerance),
+                                 {image_.data(), static_cast<std::size_t>(image_.size())});
+    ++result.operator_applications;
+    if (!check.holds) {
+      result.status = SolveStatus::breakdown;
+      result.message = fmt::format("the residual {:.3e} met the tolerance, but the independent check failed: {}",
+                                   result.residual, check.violation);
+    }
+  }
 
   if (preconditioner_) preconditioner_->report(result);
   result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
