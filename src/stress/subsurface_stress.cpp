@@ -1,13 +1,18 @@
 // Subsurface stresses by FFT.
 //
-// Periodic: sigma_c(q, z) = S_c(q, z) p(q) with the closed-form multipliers
-// S_c of fourier_stress.hpp: one forward FFT of p for all depths, then per
-// depth and component one multiplication and one inverse FFT. Odd multipliers
+// Periodic: sigma_c(q, z) = S_c(q, z) B(q) p(q) with the closed-form
+// multipliers S_c of fourier_stress.hpp and B(q) = sinc(qx dx/2) sinc(qy dy/2)
+// the transform of a cell: the pressure is constant on each cell, as on free
+// grids, so that both boundaries answer the same question (the field's
+// content above the Nyquist wavenumber, whose stresses fall like
+// exp(-pi z/dx), is left out: docs/theory.md). One forward FFT of p for all
+// depths, then per depth and component one multiplication and one inverse
+// FFT. Odd multipliers
 // (xz, yz, xy) are set to zero on a Nyquist row or column: there the sine
 // they stand for vanishes on the grid, and the c2r transform needs a
 // Hermitian spectrum.
 //
-// Coated (periodic): the same, with the multipliers of the bonded layer
+// Coated (periodic): the same (B included), with the multipliers of the bonded layer
 // (layered_fourier_stress.hpp); each mode's six coefficients are solved once
 // when the grid is set up, and each depth evaluates g, g', g'' per mode.
 //
@@ -150,6 +155,12 @@ struct SubsurfaceStress::Impl {
       ky.resize(rows);
       for (std::size_t c = 0; c < kx.size(); ++c) kx[c] = kernels::dft_wavenumber(c, grid.nx(), grid.dx());
       for (std::size_t r = 0; r < rows; ++r) ky[r] = line ? 0.0 : kernels::dft_wavenumber(r, grid.ny(), grid.dy());
+      // The pressure is constant on each cell, as on free grids: its
+      // spectrum is the samples' DFT times the cell's transform.
+      cell_x.resize(kx.size());
+      cell_y.resize(rows);
+      for (std::size_t c = 0; c < kx.size(); ++c) cell_x[c] = sinc(0.5 * kx[c] * grid.dx());
+      for (std::size_t r = 0; r < rows; ++r) cell_y[r] = line ? 1.0 : sinc(0.5 * ky[r] * grid.dy());
       if (layered) solve_modes();
     } else {
       padded = std::make_unique<PaddedRealFft>(rows, grid.nx(), planning);
@@ -254,7 +265,7 @@ struct SubsurfaceStress::Impl {
               zero      ? 0.0
               : layered ? layered_stress_component(kind, kx[c], ky[r], profiles[k], body_nu)
                         : fourier_stress_component(kind, kx[c], ky[r], z, decay[k], nu);
-          spectrum[k] = pressure_spectrum[k] * multiplier * inverse_n;
+          spectrum[k] = pressure_spectrum[k] * (multiplier * (cell_x[c] * cell_y[r] * inverse_n));
         }
       });
       std::span<double> out = fields[component];
@@ -420,6 +431,8 @@ struct SubsurfaceStress::Impl {
   std::vector<double> decay;  // exp(-|q| z) on the half spectrum, for the current depth
   std::vector<double> kx;
   std::vector<double> ky;
+  std::vector<double> cell_x;  // sinc(kx dx / 2): a cell's transform over its width
+  std::vector<double> cell_y;
   // Coated bodies (periodic grids): the solved modes and, per depth, their g, g', g''.
   std::optional<LayeredFourierStress> layered;
   std::vector<LayeredMode> modes;

@@ -50,6 +50,10 @@ TEST(LayeredSubsurfaceStressTest, PeriodicFourierModeMatchesThePerModeSolution) 
     SubsurfaceStress stress(grid, kHardCoating);
     stress.set_pressure(pressure);
     const LayeredMode mode = layered.solve(std::hypot(kx, ky));
+    // The pressure is constant on each cell: the mode's amplitude times the
+    // cell's transform.
+    const double cell = std::sin(0.5 * kx * grid.dx()) / (0.5 * kx * grid.dx()) *
+                        (line ? 1.0 : std::sin(0.5 * ky * grid.dy()) / (0.5 * ky * grid.dy()));
     const LayeredMode uniform_mode = layered.solve(0.0);
     for (const double z : {0.3e-6, 4.0e-6, 5e-6, 9.0e-6}) {
       std::array<std::vector<double>, kComponentCount> values;
@@ -65,8 +69,8 @@ TEST(LayeredSubsurfaceStressTest, PeriodicFourierModeMatchesThePerModeSolution) 
       const auto uniform = layered.stress(0.0, 0.0, layered.profile(uniform_mode, z, body), body);
       for (std::size_t k = 0; k < grid.size(); ++k) {
         for (std::size_t c = 0; c < kComponentCount; ++c) {
-          const double expected =
-              mean * uniform[c].real() + (wave[c] * std::complex<double>(a, -b) * std::polar(1.0, phase_of(k))).real();
+          const double expected = mean * uniform[c].real() +
+                                  cell * (wave[c] * std::complex<double>(a, -b) * std::polar(1.0, phase_of(k))).real();
           ASSERT_NEAR(values[c][k], expected, kRoundoff * a)
               << kComponentNames[c] << " at cell " << k << ", z = " << z << (line ? " (1D)" : " (2D)");
         }
