@@ -94,9 +94,8 @@ class Iteration {
     const double* py = problem_.previous->shear_y.data();
     if (problem_.force_controlled) {
       const auto [sx, sy] = force_shift([&](std::size_t i) { return std::pair{px[i], py[i]}; });
-      for_each_index(n_, [&](std::size_t i) {
-        std::tie(f_.qx[i], f_.qy[i]) = clipped(px[i] + sx, py[i] + sy, radius_[i]);
-      });
+      for_each_index(
+          n_, [&](std::size_t i) { std::tie(f_.qx[i], f_.qy[i]) = clipped(px[i] + sx, py[i] + sy, radius_[i]); });
     } else {
       for_each_index(n_, [&](std::size_t i) { std::tie(f_.qx[i], f_.qy[i]) = clipped(px[i], py[i], radius_[i]); });
     }
@@ -325,8 +324,8 @@ void TangentialLoading::validate() const {
 TangentialState TangentialState::unloaded(std::size_t cells) {
   const auto n = static_cast<Eigen::Index>(cells);
   TangentialState state;
-  for (Eigen::ArrayXd* field : {&state.shear_x, &state.shear_y, &state.displacement_x, &state.displacement_y,
-                                &state.slip_x, &state.slip_y}) {
+  for (Eigen::ArrayXd* field :
+       {&state.shear_x, &state.shear_y, &state.displacement_x, &state.displacement_y, &state.slip_x, &state.slip_y}) {
     field->setZero(n);
   }
   return state;
@@ -334,8 +333,8 @@ TangentialState TangentialState::unloaded(std::size_t cells) {
 
 void TangentialOptions::validate() const {
   if (!(std::isfinite(friction_coefficient) && friction_coefficient >= 0.0)) {
-    throw InputError(fmt::format("friction coefficient mu = {} is invalid: must be finite and non-negative",
-                                 friction_coefficient));
+    throw InputError(
+        fmt::format("friction coefficient mu = {} is invalid: must be finite and non-negative", friction_coefficient));
   }
   if (!(tolerance > 0.0 && tolerance < 1.0)) {
     throw InputError(fmt::format("tolerance = {} is invalid: allowed range is (0, 1)", tolerance));
@@ -413,9 +412,16 @@ TangentialResult TangentialSolver::solve(std::span<const double> pressure, const
   result.residual_history.reserve(static_cast<std::size_t>(std::min(options_.max_iterations, 1024)) + 1);
   TangentialState& state = result.state;
   state = TangentialState::unloaded(n);
-  Fields fields{state.shear_x.data(), state.shear_y.data(), state.displacement_x.data(), state.displacement_y.data(),
-                gx_.data(),           gy_.data(),           tx_.data(),                ty_.data(),
-                rx_.data(),           ry_.data()};
+  Fields fields{state.shear_x.data(),
+                state.shear_y.data(),
+                state.displacement_x.data(),
+                state.displacement_y.data(),
+                gx_.data(),
+                gy_.data(),
+                tx_.data(),
+                ty_.data(),
+                rx_.data(),
+                ry_.data()};
   tx_.setZero();
   ty_.setZero();
   Iteration it(op_, options_, problem, result, fields);

@@ -74,7 +74,8 @@ SphereErrors solve_sphere(std::size_t n, double load_ratio) {
   EXPECT_TRUE(result.converged()) << result.message;
   EXPECT_NEAR(result.force_x, q, 1e-10 * q);
   EXPECT_NEAR(result.force_y, 0.0, 1e-10 * q);
-  testing::expect_coulomb_conditions(op, contact.pressure, kMu, unloaded, result, kSlipTolerance * hertz.approach, kAngleTolerance);
+  testing::expect_coulomb_conditions(op, contact.pressure, kMu, unloaded, result, kSlipTolerance * hertz.approach,
+                                     kAngleTolerance);
 
   // Cattaneo-Mindlin (Johnson 1985, eqs. 7.39-7.42), similar bodies.
   const double a = hertz.radius;
@@ -87,17 +88,18 @@ SphereErrors solve_sphere(std::size_t n, double load_ratio) {
   for (std::size_t j = 0; j < n; ++j) {
     for (std::size_t i = 0; i < n; ++i) {
       const double r2 = std::pow(testing::centred_x(grid, i), 2) + std::pow(testing::centred_y(grid, j), 2);
-      const double exact = kMu * hertz.peak / a *
-                           (std::sqrt(std::max(a * a - r2, 0.0)) - std::sqrt(std::max(c * c - r2, 0.0)));
+      const double exact =
+          kMu * hertz.peak / a * (std::sqrt(std::max(a * a - r2, 0.0)) - std::sqrt(std::max(c * c - r2, 0.0)));
       worst = std::max(worst, std::abs(result.state.shear_x[static_cast<Eigen::Index>(j * n + i)] - exact));
     }
   }
   SphereErrors errors{std::abs(std::sqrt(stick_area / std::numbers::pi) - c) / h, worst / (kMu * hertz.peak),
                       std::abs(result.state.approach_x - delta) / delta, result.iterations};
-  std::printf("Cattaneo-Mindlin n=%zu Q/muP=%.2f: a/dx=%.1f c/dx=%.1f, stick radius error %.2f cells, traction %.2e "
-              "mu p0, approach %.2e, %d iterations, %d products\n",
-              n, load_ratio, a / h, c / h, errors.stick_radius_cells, errors.traction, errors.approach,
-              result.iterations, result.operator_applications);
+  std::printf(
+      "Cattaneo-Mindlin n=%zu Q/muP=%.2f: a/dx=%.1f c/dx=%.1f, stick radius error %.2f cells, traction %.2e "
+      "mu p0, approach %.2e, %d iterations, %d products\n",
+      n, load_ratio, a / h, c / h, errors.stick_radius_cells, errors.traction, errors.approach, result.iterations,
+      result.operator_applications);
   return errors;
 }
 
@@ -141,8 +143,7 @@ TEST(CattaneoMindlin, CylinderStickHalfWidth) {
   // slowly, and at tolerance 1e-6 its stick cells near the stick boundary
   // slipped up to 1e-3 of it: here 1e-8.
   const double scale = result.state.slip_x.abs().maxCoeff();
-  testing::expect_coulomb_conditions(op, contact.pressure, kMu, unloaded, result, 1e-3 * scale,
-                                     kAngleTolerance);
+  testing::expect_coulomb_conditions(op, contact.pressure, kMu, unloaded, result, 1e-3 * scale, kAngleTolerance);
   const double b = hertz.half_width;
   const double c = b * std::sqrt(1.0 - ratio);
   const double stick_half_width = 0.5 * result.stick.sum() * h;
@@ -153,8 +154,8 @@ TEST(CattaneoMindlin, CylinderStickHalfWidth) {
         kMu * hertz.peak / b * (std::sqrt(std::max(b * b - x * x, 0.0)) - std::sqrt(std::max(c * c - x * x, 0.0)));
     worst = std::max(worst, std::abs(result.state.shear_x[static_cast<Eigen::Index>(i)] - exact));
   }
-  std::printf("Cattaneo cylinder: b/dx=%.1f, c/b %.4f (exact %.4f), traction error %.2e mu p0, %d iterations\n",
-              b / h, stick_half_width / b, c / b, worst / (kMu * hertz.peak), result.iterations);
+  std::printf("Cattaneo cylinder: b/dx=%.1f, c/b %.4f (exact %.4f), traction error %.2e mu p0, %d iterations\n", b / h,
+              stick_half_width / b, c / b, worst / (kMu * hertz.peak), result.iterations);
   EXPECT_LE(std::abs(stick_half_width - c), h);
   EXPECT_LE(worst, kTractionTolerance * kMu * hertz.peak);
 }

@@ -41,7 +41,8 @@ inline void expect_coulomb_conditions(TangentialOperator& op, const Eigen::Array
       if (ds > slip_tolerance) ++stick_violations;
     } else {
       if (q < limit * (1.0 - 1e-9)) ++slip_violations;
-      if (ds > 100.0 * slip_tolerance && std::hypot(s.shear_x[i] / q + dx / ds, s.shear_y[i] / q + dy / ds) > angle_tolerance)
+      if (ds > 100.0 * slip_tolerance &&
+          std::hypot(s.shear_x[i] / q + dx / ds, s.shear_y[i] / q + dy / ds) > angle_tolerance)
         ++slip_violations;
     }
   }

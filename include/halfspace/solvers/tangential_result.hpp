@@ -39,14 +39,14 @@ struct TangentialResult {
   double friction_coefficient = 0.0;
   double force_x = 0.0;  // sum of q times cell area, N (N/m in 1D)
   double force_y = 0.0;
-  double normal_force = 0.0;      // sum of p times cell area, the P of mu P
-  double stick_fraction = 0.0;    // stick cells over contact cells
-  double slip_fraction = 0.0;     // slipping cells over contact cells (1 - stick_fraction)
+  double normal_force = 0.0;       // sum of p times cell area, the P of mu P
+  double stick_fraction = 0.0;     // stick cells over contact cells
+  double slip_fraction = 0.0;      // slipping cells over contact cells (1 - stick_fraction)
   double dissipated_energy = 0.0;  // sum over cells of -q . ds times cell area in this step, J (J/m in 1D)
-  bool gross_sliding = false;     // every contact cell at |q| = mu p
+  bool gross_sliding = false;      // every contact cell at |q| = mu p
 
   int iterations = 0;
-  double residual = 0.0;   // the stopping measure (tangential_solver.hpp)
+  double residual = 0.0;  // the stopping measure (tangential_solver.hpp)
   double tolerance = 0.0;
   std::vector<double> residual_history;
   int operator_applications = 0;  // products u = C t
