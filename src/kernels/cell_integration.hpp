@@ -77,8 +77,8 @@ double cell_gauss_integral(double x, double y, double a, double b, const CellGau
     double row = 0.0;
     for (std::size_t j = 0; j < rule.count; ++j) {
       const double sy = b * rule.nodes[j];
-      const double sum = kernel(x - sx, y - sy) + kernel(x + sx, y - sy) + kernel(x - sx, y + sy) +
-                         kernel(x + sx, y + sy);
+      const double sum =
+          kernel(x - sx, y - sy) + kernel(x + sx, y - sy) + kernel(x - sx, y + sy) + kernel(x + sx, y + sy);
       row += rule.weights[j] * sum;
     }
     total += rule.weights[i] * row;

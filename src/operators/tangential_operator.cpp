@@ -7,7 +7,9 @@
 // (2ny, 2nx) wrap-around grid as FftInfluenceOperator lays out Love's.
 #include "halfspace/operators/tangential_operator.hpp"
 
+#include <algorithm>
 #include <cassert>
+#include <cmath>
 #include <complex>
 #include <cstddef>
 #include <vector>
@@ -54,6 +56,12 @@ struct TangentialOperator::Impl {
       init_periodic();
     } else {
       init_free();
+    }
+    const double count = g.periodic() ? static_cast<double>(g.size()) : static_cast<double>(padded[0]->padded_size());
+    for (std::size_t k = 0; k < size; ++k) {
+      const double mean = 0.5 * (xx[k] + yy[k]);
+      const double spread = std::hypot(0.5 * (xx[k] - yy[k]), xy[k]);
+      largest = std::max(largest, count * (mean + spread));
     }
   }
 
@@ -163,12 +171,13 @@ struct TangentialOperator::Impl {
 
   Grid grid;
   ElasticPair pair;
-  std::shared_ptr<RealFft> periodic[2];        // periodic grids: one transform per component
-  std::unique_ptr<PaddedRealFft> padded[2];    // free grids
+  std::shared_ptr<RealFft> periodic[2];      // periodic grids: one transform per component
+  std::unique_ptr<PaddedRealFft> padded[2];  // free grids
   std::size_t spectrum_rows = 0;
   std::size_t spectrum_cols = 0;
-  std::vector<double> xx, yy, xy;              // the real symbol, (spectrum_rows, spectrum_cols)
+  std::vector<double> xx, yy, xy;  // the real symbol, (spectrum_rows, spectrum_cols)
   kernels::TangentialCoefficients self;
+  double largest = 0.0;  // largest_eigenvalue_bound()
 };
 
 TangentialOperator::TangentialOperator(const Grid& grid, const ElasticPair& pair, FftPlanning planning)
@@ -186,6 +195,10 @@ const ElasticPair& TangentialOperator::pair() const {
 
 kernels::TangentialCoefficients TangentialOperator::self_influence() const {
   return impl_->self;
+}
+
+double TangentialOperator::largest_eigenvalue_bound() const {
+  return impl_->largest;
 }
 
 void TangentialOperator::apply(std::span<const double> traction_x, std::span<const double> traction_y,

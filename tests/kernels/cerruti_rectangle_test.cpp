@@ -9,13 +9,13 @@
 #include <numbers>
 
 #include "halfspace/elastic_pair.hpp"
-#include "halfspace/kernels/tangential_strip.hpp"
 #include "halfspace/kernels/plane_strain_strip.hpp"
+#include "halfspace/kernels/tangential_strip.hpp"
 
 namespace halfspace::kernels {
 namespace {
 
-constexpr double kShear = 1.0 / 40e9 + 1.0 / 80e9;      // 1/G1 + 1/G2, 1/Pa
+constexpr double kShear = 1.0 / 40e9 + 1.0 / 80e9;         // 1/G1 + 1/G2, 1/Pa
 constexpr double kDirectional = 0.3 / 40e9 + 0.25 / 80e9;  // nu1/G1 + nu2/G2
 
 // The point-force displacement summed over both bodies (the header's formula).
@@ -33,8 +33,8 @@ TangentialCoefficients point_force(double x, double y) {
 TangentialCoefficients quadrature(double x, double y, double a, double b, int m) {
   static constexpr double kNodes[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831,
                                        0.9061798459386640};
-  static constexpr double kWeights[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889,
-                                         0.4786286704993665, 0.2369268850561891};
+  static constexpr double kWeights[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889, 0.4786286704993665,
+                                         0.2369268850561891};
   TangentialCoefficients total;
   const double hx = 2.0 * a / m;
   const double hy = 2.0 * b / m;
@@ -45,7 +45,8 @@ TangentialCoefficients quadrature(double x, double y, double a, double b, int m)
       for (int k = 0; k < 5; ++k) {
         for (int l = 0; l < 5; ++l) {
           const double w = kWeights[k] * kWeights[l] * 0.25 * hx * hy;
-          const TangentialCoefficients f = point_force(x - (cx + 0.5 * hx * kNodes[k]), y - (cy + 0.5 * hy * kNodes[l]));
+          const TangentialCoefficients f =
+              point_force(x - (cx + 0.5 * hx * kNodes[k]), y - (cy + 0.5 * hy * kNodes[l]));
           total.xx += w * f.xx;
           total.yy += w * f.yy;
           total.xy += w * f.xy;
@@ -62,9 +63,8 @@ TEST(CerrutiRectangle, MatchesQuadratureOfThePointForceOutsideTheCell) {
   // Near (closed form) and far (Gauss rules) offsets in every quadrant, and
   // on both sides of the switch at two half-diagonals.
   const double h = std::hypot(a, b);
-  const double offsets[][2] = {{1.5 * a, 0.3 * b},   {-2.2 * a, 1.4 * b},  {0.4 * a, -3.0 * b},
-                               {-1.9 * h, -0.2 * b}, {2.01 * h, 0.1 * b},  {4.0 * a, 4.0 * b},
-                               {-7.0 * h, 2.0 * h},  {30.0 * h, -50.0 * h}};
+  const double offsets[][2] = {{1.5 * a, 0.3 * b},  {-2.2 * a, 1.4 * b}, {0.4 * a, -3.0 * b}, {-1.9 * h, -0.2 * b},
+                               {2.01 * h, 0.1 * b}, {4.0 * a, 4.0 * b},  {-7.0 * h, 2.0 * h}, {30.0 * h, -50.0 * h}};
   for (const auto& offset : offsets) {
     const double x = offset[0];
     const double y = offset[1];

@@ -50,11 +50,10 @@ void expect_equals_dense_product(const Grid& grid) {
           const double x = (static_cast<double>(i) - static_cast<double>(k)) * grid.dx();
           const double y = (static_cast<double>(j) - static_cast<double>(l)) * grid.dy();
           const kernels::TangentialCoefficients c =
-              grid.dimension() == 1
-                  ? kernels::tangential_strip_displacement(x, grid.dx(), kPair.composite_modulus(),
-                                                           kPair.shear_compliance())
-                  : kernels::cerruti_rectangle_displacement(x, y, a, b, kPair.shear_compliance(),
-                                                            kPair.directional_compliance());
+              grid.dimension() == 1 ? kernels::tangential_strip_displacement(x, grid.dx(), kPair.composite_modulus(),
+                                                                             kPair.shear_compliance())
+                                    : kernels::cerruti_rectangle_displacement(x, y, a, b, kPair.shear_compliance(),
+                                                                              kPair.directional_compliance());
           const std::size_t s = l * grid.nx() + k;
           sx += c.xx * tx[static_cast<Eigen::Index>(s)] + c.xy * ty[static_cast<Eigen::Index>(s)];
           sy += c.xy * tx[static_cast<Eigen::Index>(s)] + c.yy * ty[static_cast<Eigen::Index>(s)];

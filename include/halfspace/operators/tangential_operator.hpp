@@ -43,6 +43,9 @@ class TangentialOperator {
   // The block C_ii (m/Pa) of a cell under unit traction on itself alone, the
   // same for every cell (xy is zero: the cell is symmetric).
   kernels::TangentialCoefficients self_influence() const;
+  // An upper bound (m/Pa) on the largest eigenvalue of C: the largest
+  // eigenvalue of the 2x2 symbol over the modes of its (padded) circulant.
+  double largest_eigenvalue_bound() const;
 
  private:
   struct Impl;

@@ -1,0 +1,80 @@
+// Partial slip under Coulomb friction for elastically similar bodies (Dundurs'
+// beta = 0: the pressure is the normal solve's, unchanged by the shear):
+// given the pressure p, the previous step's state and a tangential load step,
+// the shear q with
+//   |q_i| <= mu p_i in every cell (q = 0 out of contact),
+//   stick: ds_i = 0,  slip: |q_i| = mu p_i and q_i = -mu p_i ds_i / |ds_i|,
+// where ds = C (q - q_prev) - (delta - delta_prev) is the slip increment.
+// These are the optimality conditions of the convex problem on a product of
+// discs (docs/theory.md, "Friction")
+//   minimise 1/2 q.C q - q.(C q_prev + delta - delta_prev)  over |q_i| <= mu p_i,
+// with, under force control, sum_i q_i A_cell = Q and delta its multiplier.
+// It is solved by accelerated projected gradients (FISTA with adaptive
+// restart, step 1/L with L the operator's eigenvalue bound): projection onto
+// the discs and, under force control, onto the force (every cell shifted
+// alike, then clipped: the exact Euclidean projection).
+//
+// Stopping measure (the duality gap of the maximum-dissipation principle,
+// zero exactly when the conditions hold, checked on an exact product):
+//   residual = sum_i (mu p_i |ds_i| + q_i . ds_i) / (sum_i mu p_i  s_ref),
+//   s_ref = max_i |u_i - u_prev_i| + |delta - delta_prev|,
+// each term non-negative for admissible q (stick cells count their slip
+// times their margin below mu p, slip cells the misalignment of q and ds).
+#pragma once
+
+#include <Eigen/Core>
+#include <functional>
+#include <span>
+
+#include "halfspace/operators/tangential_operator.hpp"
+#include "halfspace/solvers/tangential_loading.hpp"
+#include "halfspace/solvers/tangential_result.hpp"
+
+namespace halfspace::solvers {
+
+struct TangentialOptions {
+  double friction_coefficient = 0.0;  // mu, >= 0 and finite
+  double tolerance = 1e-6;            // of the residual above
+  int max_iterations = 10000;
+  // Called once per iteration with (iteration, residual); may be empty.
+  std::function<void(int, double)> progress;
+
+  // Throws InputError naming the option unless mu is finite and >= 0,
+  // 0 < tolerance < 1 and max_iterations >= 1.
+  void validate() const;
+};
+
+class TangentialSolver {
+ public:
+  // Keeps a reference to `op` (which must outlive the solver), allocates the
+  // workspace once; solve() allocates nothing inside its loop. Throws
+  // InputError if the options are invalid or the pair is not elastically
+  // similar (the coupled problem is not solved here).
+  TangentialSolver(TangentialOperator& op, TangentialOptions options);
+
+  // One load step from `previous` (TangentialState::unloaded for the first)
+  // under the pressure `pressure` (Pa, the normal solve's). Throws InputError
+  // if a field has the wrong size, the pressure is negative or not finite,
+  // the loading is not finite, or a force exceeds mu P (the contact slides:
+  // impose a displacement instead). A force of exactly mu P (to 1e-9) is
+  // gross sliding: every contact cell at mu p along Q, delta the smallest
+  // approach at which every cell slips forward.
+  TangentialResult solve(std::span<const double> pressure, const TangentialLoading& loading,
+                         const TangentialState& previous);
+
+  const TangentialOptions& options() const { return options_; }
+
+ private:
+  TangentialOperator& op_;
+  TangentialOptions options_;
+  Eigen::ArrayXd radius_;  // mu p
+  Eigen::ArrayXd gx_, gy_, tx_, ty_, rx_, ry_;
+};
+
+}  // namespace halfspace::solvers
+
+// The library and its front ends name these without the folder's namespace.
+namespace halfspace {
+using solvers::TangentialOptions;
+using solvers::TangentialSolver;
+}  // namespace halfspace

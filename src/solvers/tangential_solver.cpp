@@ -1,0 +1,503 @@
+// The partial-slip problem of tangential_solver.hpp by accelerated projected
+// gradients (Nesterov 1983; Beck & Teboulle 2009, FISTA) with adaptive
+// restart (O'Donoghue & Candes 2015): each iteration evaluates the slip
+// increment ds (the gradient) and the approach, takes a step 1/L from the
+// extrapolated point, projects onto the discs (and the force) and makes
+// u = C q exactly: one product per iteration. A projected conjugate
+// gradient in Polonsky & Keer's manner was tried first and stalled on the
+// curved (disc) constraints (docs/solvers.md).
+#include "halfspace/solvers/tangential_solver.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <utility>
+
+#include "halfspace/error.hpp"
+#include "halfspace/linalg/parallel.hpp"
+
+namespace halfspace::solvers {
+namespace {
+
+using linalg::for_each_index;
+using linalg::sums;
+
+// u is exact after every step; the counter stays for evaluate()'s rule.
+constexpr int kUpdatesBetweenExactProducts = 50;
+// A traction within this relative distance of mu p is at the limit (a
+// projected traction lies on the circle to rounding).
+constexpr double kAtLimit = 1e-12;
+// A force within this relative distance of mu P is gross sliding.
+constexpr double kSlidingForce = 1e-9;
+
+bool at_limit(double qx, double qy, double radius) {
+  return radius > 0.0 && std::hypot(qx, qy) >= radius * (1.0 - kAtLimit);
+}
+
+// The nearest point of the disc |q| <= radius.
+std::pair<double, double> clipped(double x, double y, double radius) {
+  const double m = std::hypot(x, y);
+  if (m <= radius) return {x, y};
+  if (!(radius > 0.0)) return {0.0, 0.0};
+  const double f = radius / m;
+  return {f * x, f * y};
+}
+
+struct Problem {
+  const double* radius = nullptr;  // mu p
+  const TangentialState* previous = nullptr;
+  bool force_controlled = false;
+  double target_x = 0.0;  // sum of q under force control (Q / A_cell)
+  double target_y = 0.0;
+  double delta_x = 0.0;  // delta - delta_prev under displacement control
+  double delta_y = 0.0;
+  double capacity = 0.0;  // sum of mu p
+  double contact_cells = 0.0;
+  double cell_area = 0.0;
+};
+
+struct Fields {
+  double* qx;
+  double* qy;
+  double* ux;
+  double* uy;
+  double* gx;
+  double* gy;
+  double* tx;
+  double* ty;
+  double* rx;
+  double* ry;
+};
+
+class Iteration {
+ public:
+  Iteration(TangentialOperator& op, const TangentialOptions& options, const Problem& problem, TangentialResult& result,
+            Fields f)
+      : op_(op),
+        options_(options),
+        problem_(problem),
+        result_(result),
+        comm_(op.communicator()),
+        n_(op.local_size()),
+        f_(f),
+        up_x_(problem.previous->displacement_x.data()),
+        up_y_(problem.previous->displacement_y.data()),
+        radius_(problem.radius) {}
+
+  // Step 0: the previous traction, clipped to the new discs and, under
+  // force control, projected onto the force.
+  void start() {
+    const double* px = problem_.previous->shear_x.data();
+    const double* py = problem_.previous->shear_y.data();
+    if (problem_.force_controlled) {
+      const auto [sx, sy] = force_shift([&](std::size_t i) { return std::pair{px[i], py[i]}; });
+      for_each_index(
+          n_, [&](std::size_t i) { std::tie(f_.qx[i], f_.qy[i]) = clipped(px[i] + sx, py[i] + sy, radius_[i]); });
+    } else {
+      for_each_index(n_, [&](std::size_t i) { std::tie(f_.qx[i], f_.qy[i]) = clipped(px[i], py[i], radius_[i]); });
+    }
+    exact_displacement();
+  }
+
+  // Step 1: ds, the approach, the residual (from an exact product whenever
+  // it would stop).
+  void evaluate(int iteration) {
+    if (updates_since_exact_ >= kUpdatesBetweenExactProducts) exact_displacement();
+    measure();
+    if (residual_ <= options_.tolerance && updates_since_exact_ > 0) {
+      exact_displacement();
+      measure();
+    }
+    result_.residual_history.push_back(residual_);
+    if (options_.progress) options_.progress(iteration, residual_);
+  }
+
+  bool finished(int iteration) {
+    if (residual_ <= options_.tolerance) {
+      result_.status = SolveStatus::converged;
+    } else if (!std::isfinite(residual_)) {
+      result_.status = SolveStatus::breakdown;
+      result_.message = fmt::format("residual became non-finite at iteration {}", iteration);
+    } else if (iteration == options_.max_iterations) {
+      result_.status = SolveStatus::iteration_limit;
+      result_.message = fmt::format("no convergence after {} iterations: residual {:.3e} > tolerance {:.3e}", iteration,
+                                    residual_, options_.tolerance);
+    } else {
+      return false;
+    }
+    return true;
+  }
+
+  // One accelerated projected-gradient step (Nesterov; Beck & Teboulle's
+  // FISTA) with step 1/L, L >= the largest eigenvalue of C, from the
+  // extrapolated point y = q + beta (q - q_old) (u = C y by linearity):
+  // q = P(y - (C y - u_prev - delta)/L), then u = C q exactly. The momentum
+  // restarts when the step turns against the previous one (O'Donoghue &
+  // Candes 2015's gradient test). t and r hold q_old and u_old.
+  void accelerate(double inverse_lipschitz) {
+    const double beta = momentum_ / (momentum_ + 3.0);
+    const double dx = problem_.force_controlled ? 0.0 : problem_.delta_x;
+    const double dy = problem_.force_controlled ? 0.0 : problem_.delta_y;
+    for_each_index(n_, [&](std::size_t i) {
+      const double yx = f_.qx[i] + beta * (f_.qx[i] - f_.tx[i]);
+      const double yy = f_.qy[i] + beta * (f_.qy[i] - f_.ty[i]);
+      const double vx = f_.ux[i] + beta * (f_.ux[i] - f_.rx[i]);
+      const double vy = f_.uy[i] + beta * (f_.uy[i] - f_.ry[i]);
+      f_.tx[i] = f_.qx[i];
+      f_.ty[i] = f_.qy[i];
+      f_.rx[i] = f_.ux[i];
+      f_.ry[i] = f_.uy[i];
+      // The step's target, held in g until projected.
+      f_.gx[i] = yx - inverse_lipschitz * (vx - up_x_[i] - dx);
+      f_.gy[i] = yy - inverse_lipschitz * (vy - up_y_[i] - dy);
+    });
+    double sx = 0.0;
+    double sy = 0.0;
+    if (problem_.force_controlled) {
+      std::tie(sx, sy) = force_shift([&](std::size_t i) { return std::pair{f_.gx[i], f_.gy[i]}; });
+    }
+    const auto [against] = sums<1>(comm_, n_, [&](std::size_t i) {
+      const auto [qx, qy] = clipped(f_.gx[i] + sx, f_.gy[i] + sy, radius_[i]);
+      f_.qx[i] = qx;
+      f_.qy[i] = qy;
+      // (y - q_new) . (q_new - q_old) > 0: the gradient step points back.
+      const double stepx = qx - f_.tx[i];
+      const double stepy = qy - f_.ty[i];
+      return std::array<double, 1>{(f_.gx[i] - qx) * stepx + (f_.gy[i] - qy) * stepy};
+    });
+    momentum_ = against < 0.0 ? 0.0 : momentum_ + 1.0;
+    exact_displacement();
+  }
+
+  double approach_x() const { return delta_x_; }
+  double approach_y() const { return delta_y_; }
+  double residual() const { return residual_; }
+
+ private:
+  // The uniform shift s with sum_i clip_i(y_i + s) = target (Newton's
+  // method on this monotone map, each step halved until the mismatch
+  // shrinks; a few passes).
+  template <class Moved>
+  std::pair<double, double> force_shift(Moved&& moved) const {
+    auto mismatch = [&](double sx, double sy) {
+      return sums<5>(comm_, n_, [&](std::size_t i) {
+        const double radius = radius_[i];
+        if (!(radius > 0.0)) return std::array<double, 5>{};
+        auto [x, y] = moved(i);
+        x += sx;
+        y += sy;
+        const double m = std::hypot(x, y);
+        if (m <= radius) return std::array<double, 5>{x, y, 1.0, 0.0, 1.0};
+        const double f = radius / m;
+        const double nx = x / m;
+        const double ny = y / m;
+        return std::array<double, 5>{f * x, f * y, f * (1.0 - nx * nx), -f * nx * ny, f * (1.0 - ny * ny)};
+      });
+    };
+    double sx = 0.0;
+    double sy = 0.0;
+    std::array<double, 5> v = mismatch(sx, sy);
+    double fx = v[0] - problem_.target_x;
+    double fy = v[1] - problem_.target_y;
+    double norm = std::hypot(fx, fy);
+    const double tolerance = 1e-15 * problem_.capacity;
+    constexpr int kMaxNewtonSteps = 60;
+    for (int pass = 0; pass < kMaxNewtonSteps && norm > tolerance; ++pass) {
+      const double det = v[2] * v[4] - v[3] * v[3];
+      double dx = 0.0;
+      double dy = 0.0;
+      if (det > 1e-12 * (v[2] + v[4]) * (v[2] + v[4])) {
+        dx = -(v[4] * fx - v[3] * fy) / det;
+        dy = -(-v[3] * fx + v[2] * fy) / det;
+      } else {
+        const double trace = std::max(v[2] + v[4], 1.0);
+        dx = -fx / trace;
+        dy = -fy / trace;
+      }
+      bool accepted = false;
+      for (double step = 1.0; step > 1e-12; step *= 0.5) {
+        const std::array<double, 5> trial = mismatch(sx + step * dx, sy + step * dy);
+        const double tx = trial[0] - problem_.target_x;
+        const double ty = trial[1] - problem_.target_y;
+        if (std::hypot(tx, ty) < norm) {
+          sx += step * dx;
+          sy += step * dy;
+          v = trial;
+          fx = tx;
+          fy = ty;
+          norm = std::hypot(fx, fy);
+          accepted = true;
+          break;
+        }
+      }
+      if (!accepted) break;
+    }
+    return {sx, sy};
+  }
+
+  void exact_displacement() {
+    op_.apply({f_.qx, n_}, {f_.qy, n_}, {f_.ux, n_}, {f_.uy, n_});
+    ++result_.operator_applications;
+    updates_since_exact_ = 0;
+  }
+
+  // Step 1's passes: the approach (under force control the mean of u - u_prev
+  // over the stick cells, where ds vanishes at the solution; over the
+  // contact if none sticks), then ds and the residual's sums.
+  void measure() {
+    if (problem_.force_controlled) {
+      const auto [stick_x, stick_y, stick_cells, contact_x, contact_y] = sums<5>(comm_, n_, [&](std::size_t i) {
+        if (!(radius_[i] > 0.0)) return std::array<double, 5>{};
+        const double dx = f_.ux[i] - up_x_[i];
+        const double dy = f_.uy[i] - up_y_[i];
+        const double stick = at_limit(f_.qx[i], f_.qy[i], radius_[i]) ? 0.0 : 1.0;
+        return std::array<double, 5>{stick * dx, stick * dy, stick, dx, dy};
+      });
+      const double cells = stick_cells > 0.0 ? stick_cells : problem_.contact_cells;
+      delta_x_ = (stick_cells > 0.0 ? stick_x : contact_x) / cells;
+      delta_y_ = (stick_cells > 0.0 ? stick_y : contact_y) / cells;
+    } else {
+      delta_x_ = problem_.delta_x;
+      delta_y_ = problem_.delta_y;
+    }
+    const double delta_x = delta_x_;
+    const double delta_y = delta_y_;
+    const auto settled = linalg::sums_and_range<2>(comm_, n_, [&](std::size_t i) {
+      const double radius = radius_[i];
+      if (!(radius > 0.0)) {
+        f_.gx[i] = 0.0;
+        f_.gy[i] = 0.0;
+        return std::pair{std::array<double, 2>{}, 0.0};
+      }
+      const double dx = f_.ux[i] - up_x_[i];
+      const double dy = f_.uy[i] - up_y_[i];
+      const double gx = dx - delta_x;
+      const double gy = dy - delta_y;
+      f_.gx[i] = gx;
+      f_.gy[i] = gy;
+      const double gap = radius * std::hypot(gx, gy) + f_.qx[i] * gx + f_.qy[i] * gy;
+      return std::pair{std::array<double, 2>{std::max(gap, 0.0), 0.0}, std::hypot(dx, dy)};
+    });
+    const double scale = problem_.capacity * (std::max(settled.max, 0.0) + std::hypot(delta_x, delta_y));
+    residual_ = settled.sums[0] == 0.0 ? 0.0 : settled.sums[0] / scale;
+  }
+
+  TangentialOperator& op_;
+  const TangentialOptions& options_;
+  const Problem& problem_;
+  TangentialResult& result_;
+  const linalg::Communicator& comm_;
+  const std::size_t n_;
+  Fields f_;
+  const double* up_x_;  // the previous step's u
+  const double* up_y_;
+  const double* radius_;
+
+  int updates_since_exact_ = 0;
+  double delta_x_ = 0.0;  // the approach's increment over the step
+  double delta_y_ = 0.0;
+  double residual_ = 0.0;
+  double momentum_ = 0.0;
+};
+
+void check_size(std::string_view what, std::size_t got, std::size_t expected) {
+  if (got != expected) {
+    throw InputError(fmt::format("{} has {} entries, but the grid has {} cells", what, got, expected));
+  }
+}
+
+}  // namespace
+
+std::string_view to_string(TangentialControl control) {
+  return control == TangentialControl::force ? "tangential force" : "tangential displacement";
+}
+
+void TangentialLoading::validate() const {
+  if (!std::isfinite(x) || !std::isfinite(y)) {
+    throw InputError(fmt::format("{} ({}, {}) is invalid: both components must be finite", to_string(control), x, y));
+  }
+}
+
+TangentialState TangentialState::unloaded(std::size_t cells) {
+  const auto n = static_cast<Eigen::Index>(cells);
+  TangentialState state;
+  for (Eigen::ArrayXd* field :
+       {&state.shear_x, &state.shear_y, &state.displacement_x, &state.displacement_y, &state.slip_x, &state.slip_y}) {
+    field->setZero(n);
+  }
+  return state;
+}
+
+void TangentialOptions::validate() const {
+  if (!(std::isfinite(friction_coefficient) && friction_coefficient >= 0.0)) {
+    throw InputError(
+        fmt::format("friction coefficient mu = {} is invalid: must be finite and non-negative", friction_coefficient));
+  }
+  if (!(tolerance > 0.0 && tolerance < 1.0)) {
+    throw InputError(fmt::format("tolerance = {} is invalid: allowed range is (0, 1)", tolerance));
+  }
+  if (max_iterations < 1) {
+    throw InputError(fmt::format("max_iterations = {} is invalid: must be at least 1", max_iterations));
+  }
+}
+
+TangentialSolver::TangentialSolver(TangentialOperator& op, TangentialOptions options)
+    : op_(op), options_(std::move(options)) {
+  options_.validate();
+  if (!op_.pair().similar()) {
+    throw InputError(
+        fmt::format("friction between elastically dissimilar bodies (Dundurs' beta = {:.3g}) couples the normal and "
+                    "tangential problems, which is not supported: give both bodies the same E and nu",
+                    op_.pair().dundurs_beta()));
+  }
+  const auto n = static_cast<Eigen::Index>(op_.local_size());
+  radius_.setZero(n);
+  for (Eigen::ArrayXd* field : {&gx_, &gy_, &tx_, &ty_, &rx_, &ry_}) field->setZero(n);
+}
+
+TangentialResult TangentialSolver::solve(std::span<const double> pressure, const TangentialLoading& loading,
+                                         const TangentialState& previous) {
+  const auto start_time = std::chrono::steady_clock::now();
+  const std::size_t n = op_.local_size();
+  const Grid& grid = op_.grid();
+  const linalg::Communicator& comm = op_.communicator();
+  check_size("pressure", pressure.size(), n);
+  for (const Eigen::ArrayXd* field : {&previous.shear_x, &previous.shear_y, &previous.displacement_x,
+                                      &previous.displacement_y, &previous.slip_x, &previous.slip_y}) {
+    check_size("previous tangential state", static_cast<std::size_t>(field->size()), n);
+  }
+  loading.validate();
+  const double mu = options_.friction_coefficient;
+  const auto [pressure_sum, contact_cells, bad] = sums<3>(comm, n, [&](std::size_t i) {
+    const double p = pressure[i];
+    return std::array<double, 3>{std::isfinite(p) ? p : 0.0, p > 0.0 ? 1.0 : 0.0,
+                                 std::isfinite(p) && p >= 0.0 ? 0.0 : 1.0};
+  });
+  if (bad > 0.0) throw InputError("pressure holds a negative or non-finite value: friction needs a contact pressure");
+  for_each_index(n, [&](std::size_t i) { radius_[static_cast<Eigen::Index>(i)] = mu * pressure[i]; });
+
+  const double area = grid.cell_area();
+  Problem problem;
+  problem.radius = radius_.data();
+  problem.previous = &previous;
+  problem.force_controlled = loading.control == TangentialControl::force;
+  problem.capacity = mu * pressure_sum;
+  problem.contact_cells = contact_cells;
+  problem.cell_area = area;
+  const double limit = problem.capacity * area;  // mu P
+  bool sliding = false;
+  if (problem.force_controlled) {
+    problem.target_x = loading.x / area;
+    problem.target_y = loading.y / area;
+    const double force = std::hypot(loading.x, loading.y);
+    if (force > limit * (1.0 + kSlidingForce)) {
+      throw InputError(fmt::format(
+          "tangential force {:.6g} exceeds the friction limit mu P = {:.6g} (mu = {}, P = {:.6g}): the contact slides; "
+          "impose a tangential displacement to follow sliding",
+          force, limit, mu, pressure_sum * area));
+    }
+    sliding = force > 0.0 && force >= limit * (1.0 - kSlidingForce);
+  } else {
+    problem.delta_x = loading.x - previous.approach_x;
+    problem.delta_y = loading.y - previous.approach_y;
+  }
+
+  TangentialResult result;
+  result.friction_coefficient = mu;
+  result.tolerance = options_.tolerance;
+  result.normal_force = pressure_sum * area;
+  result.residual_history.reserve(static_cast<std::size_t>(std::min(options_.max_iterations, 1024)) + 1);
+  TangentialState& state = result.state;
+  state = TangentialState::unloaded(n);
+  Fields fields{state.shear_x.data(),
+                state.shear_y.data(),
+                state.displacement_x.data(),
+                state.displacement_y.data(),
+                gx_.data(),
+                gy_.data(),
+                tx_.data(),
+                ty_.data(),
+                rx_.data(),
+                ry_.data()};
+  tx_.setZero();
+  ty_.setZero();
+  Iteration it(op_, options_, problem, result, fields);
+  const double inverse_lipschitz = 1.0 / op_.largest_eigenvalue_bound();
+  double delta_x = 0.0;
+  double delta_y = 0.0;
+  int k = 0;
+  if (sliding) {
+    // Gross sliding: every contact cell at mu p along Q; the approach the
+    // smallest at which every cell slips forward along Q.
+    const double force = std::hypot(loading.x, loading.y);
+    const double ex = loading.x / force;
+    const double ey = loading.y / force;
+    for_each_index(n, [&](std::size_t i) {
+      const auto j = static_cast<Eigen::Index>(i);
+      state.shear_x[j] = radius_[j] * ex;
+      state.shear_y[j] = radius_[j] * ey;
+    });
+    op_.apply({fields.qx, n}, {fields.qy, n}, {fields.ux, n}, {fields.uy, n});
+    ++result.operator_applications;
+    const double along = linalg::max_of(comm, n, [&](std::size_t i) {
+      const auto j = static_cast<Eigen::Index>(i);
+      return radius_[j] > 0.0 ? (state.displacement_x[j] - previous.displacement_x[j]) * ex +
+                                    (state.displacement_y[j] - previous.displacement_y[j]) * ey
+                              : -std::numeric_limits<double>::infinity();
+    });
+    delta_x = along * ex;
+    delta_y = along * ey;
+    for_each_index(n, [&](std::size_t i) {
+      const auto j = static_cast<Eigen::Index>(i);
+      const bool contact = radius_[j] > 0.0;
+      gx_[j] = contact ? state.displacement_x[j] - previous.displacement_x[j] - delta_x : 0.0;
+      gy_[j] = contact ? state.displacement_y[j] - previous.displacement_y[j] - delta_y : 0.0;
+    });
+    result.status = SolveStatus::converged;
+    result.message = "gross sliding: the tangential force equals mu P";
+  } else {
+    it.start();
+    for (;; ++k) {
+      it.evaluate(k);
+      if (it.finished(k)) break;
+      it.accelerate(inverse_lipschitz);
+    }
+    delta_x = it.approach_x();
+    delta_y = it.approach_y();
+    result.residual = it.residual();
+  }
+  result.iterations = k;
+
+  // The state and the step's integrals.
+  state.approach_x = previous.approach_x + delta_x;
+  state.approach_y = previous.approach_y + delta_y;
+  result.stick.setZero(static_cast<Eigen::Index>(n));
+  const auto [qx_sum, qy_sum, stick_cells, dissipated] = sums<4>(comm, n, [&](std::size_t i) {
+    const auto j = static_cast<Eigen::Index>(i);
+    if (!(radius_[j] > 0.0)) {
+      state.slip_x[j] = 0.0;
+      state.slip_y[j] = 0.0;
+      return std::array<double, 4>{};
+    }
+    const double qx = state.shear_x[j];
+    const double qy = state.shear_y[j];
+    const bool stick = !at_limit(qx, qy, radius_[j]);
+    result.stick[j] = stick ? 1.0 : 0.0;
+    state.slip_x[j] = previous.slip_x[j] + gx_[j];
+    state.slip_y[j] = previous.slip_y[j] + gy_[j];
+    return std::array<double, 4>{qx, qy, stick ? 1.0 : 0.0, -(qx * gx_[j] + qy * gy_[j])};
+  });
+  result.force_x = qx_sum * area;
+  result.force_y = qy_sum * area;
+  result.stick_fraction = contact_cells > 0.0 ? stick_cells / contact_cells : 0.0;
+  result.slip_fraction = contact_cells > 0.0 ? 1.0 - result.stick_fraction : 0.0;
+  result.gross_sliding = contact_cells > 0.0 && stick_cells == 0.0;
+  result.dissipated_energy = dissipated * area;
+  result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time).count();
+  return result;
+}
+
+}  // namespace halfspace::solvers
