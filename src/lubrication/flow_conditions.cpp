@@ -37,18 +37,18 @@ void FlowConditions::validate(const Grid& grid) const {
   require_finite(sliding_velocity[0], "sliding velocity x");
   require_finite(sliding_velocity[1], "sliding velocity y");
   if (grid.dimension() == 1 && (entrainment_velocity[1] != 0.0 || sliding_velocity[1] != 0.0)) {
-    throw InputError(fmt::format(
-        "entrainment velocity y = {} m/s and sliding velocity y = {} m/s are invalid on a 1D grid: give x "
-        "components only",
-        entrainment_velocity[1], sliding_velocity[1]));
+    throw InputError(
+        fmt::format("entrainment velocity y = {} m/s and sliding velocity y = {} m/s are invalid on a 1D grid: give x "
+                    "components only",
+                    entrainment_velocity[1], sliding_velocity[1]));
   }
   require_pressure(boundary.x_low_pressure, "pressure at x low");
   require_pressure(boundary.x_high_pressure, "pressure at x high");
   require_pressure(boundary.y_low_pressure, "pressure at y low");
   require_pressure(boundary.y_high_pressure, "pressure at y high");
   if (!(boundary.supply_fluid_fraction >= 0.0 && boundary.supply_fluid_fraction <= 1.0)) {
-    throw InputError(fmt::format("supply fluid fraction = {} is invalid: allowed range is 0 to 1",
-                                 boundary.supply_fluid_fraction));
+    throw InputError(
+        fmt::format("supply fluid fraction = {} is invalid: allowed range is 0 to 1", boundary.supply_fluid_fraction));
   }
   const bool x_fixed = boundary.x == AxisBoundary::fixed_pressure;
   const bool y_fixed = grid.dimension() == 2 && boundary.y == AxisBoundary::fixed_pressure;

@@ -24,8 +24,8 @@ FilmSolution solve_film_lemke(const ReynoldsStencil& stencil) {
     if (!stencil.fixed(k)) unknown[k] = count++;
   }
   if (static_cast<std::size_t>(count) > kMaxLemkeFilmNodes) {
-    throw InputError(fmt::format("the dense film path takes at most {} unknown nodes; this grid has {}",
-                                 kMaxLemkeFilmNodes, count));
+    throw InputError(
+        fmt::format("the dense film path takes at most {} unknown nodes; this grid has {}", kMaxLemkeFilmNodes, count));
   }
   const Eigen::ArrayXd& h = stencil.film();
   const double supply = stencil.conditions().boundary.supply_fluid_fraction;
@@ -65,7 +65,8 @@ FilmSolution solve_film_lemke(const ReynoldsStencil& stencil) {
   solvers::LcpProblem problem;
   problem.matrix = lu.solve(g);
   problem.offset = lu.solve(b - g * Eigen::VectorXd::Ones(count));
-  const solvers::LcpSolution lcp = solvers::solve_lcp_lemke(problem, {.max_pivots = 50 * static_cast<int>(count) + 100});
+  const solvers::LcpSolution lcp =
+      solvers::solve_lcp_lemke(problem, {.max_pivots = 50 * static_cast<int>(count) + 100});
 
   FilmSolution solution;
   solution.iterations = lcp.iterations;
@@ -84,10 +85,10 @@ FilmSolution solve_film_lemke(const ReynoldsStencil& stencil) {
   }
   solution.relative_residual = relative_mass_residual(stencil, solution.pressure, solution.fluid_fraction);
   if (!lcp.solved()) {
-    solution.status = lcp.status == solvers::LcpStatus::iteration_limit ? FilmStatus::iteration_limit
-                                                                         : FilmStatus::failure;
-    solution.message = fmt::format("Lemke's method on the film LCP: {} ({})", solvers::to_string(lcp.status),
-                                   lcp.message);
+    solution.status =
+        lcp.status == solvers::LcpStatus::iteration_limit ? FilmStatus::iteration_limit : FilmStatus::failure;
+    solution.message =
+        fmt::format("Lemke's method on the film LCP: {} ({})", solvers::to_string(lcp.status), lcp.message);
     return solution;
   }
   solution.status = FilmStatus::converged;

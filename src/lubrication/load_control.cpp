@@ -21,8 +21,8 @@ void LoadControlOptions::validate() const {
     throw InputError(fmt::format("film load = {} is invalid: it must be positive and finite", load));
   }
   if (!(relative_tolerance > 0.0 && relative_tolerance < 1.0)) {
-    throw InputError(fmt::format("load tolerance = {} is invalid: allowed range is 0 < tolerance < 1",
-                                 relative_tolerance));
+    throw InputError(
+        fmt::format("load tolerance = {} is invalid: allowed range is 0 < tolerance < 1", relative_tolerance));
   }
   if (!(std::isfinite(initial_separation) && initial_separation >= 0.0)) {
     throw InputError(fmt::format("initial separation = {} m is invalid: it must be >= 0 (0: automatic) and finite",

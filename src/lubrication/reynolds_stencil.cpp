@@ -26,9 +26,10 @@ ReynoldsStencil::ReynoldsStencil(const Grid& grid, const Eigen::ArrayXd& film, c
   }
   for (std::size_t k = 0; k < n; ++k) {
     if (!(std::isfinite(film[k]) && film[k] > 0.0)) {
-      throw InputError(fmt::format("film thickness {} m at node (x {}, y {}) is invalid: the film must be positive "
-                                   "and finite everywhere (increase the separation)",
-                                   film[k], k % grid.nx(), k / grid.nx()));
+      throw InputError(
+          fmt::format("film thickness {} m at node (x {}, y {}) is invalid: the film must be positive "
+                      "and finite everywhere (increase the separation)",
+                      film[k], k % grid.nx(), k / grid.nx()));
     }
   }
   const std::size_t nx = grid.nx();
@@ -127,8 +128,7 @@ double ReynoldsStencil::east_flow(std::size_t k, const Eigen::ArrayXd& pressure,
   if (east == Neighbours::kNone) return 0.0;
   const double u = conditions_.entrainment_velocity[0];
   const std::size_t up = u >= 0.0 ? k : east;
-  const double per_width =
-      -east_[k] * grid_.dx() * (pressure[east] - pressure[k]) + u * film_[up] * fluid_fraction[up];
+  const double per_width = -east_[k] * grid_.dx() * (pressure[east] - pressure[k]) + u * film_[up] * fluid_fraction[up];
   return grid_.dimension() == 2 ? per_width * grid_.dy() : per_width;
 }
 
@@ -138,8 +138,7 @@ double ReynoldsStencil::north_flow(std::size_t k, const Eigen::ArrayXd& pressure
   if (north == Neighbours::kNone) return 0.0;
   const double v = conditions_.entrainment_velocity[1];
   const std::size_t up = v >= 0.0 ? k : north;
-  return (-north_[k] * grid_.dy() * (pressure[north] - pressure[k]) + v * film_[up] * fluid_fraction[up]) *
-         grid_.dx();
+  return (-north_[k] * grid_.dy() * (pressure[north] - pressure[k]) + v * film_[up] * fluid_fraction[up]) * grid_.dx();
 }
 
 double ReynoldsStencil::balance_scale(const Eigen::ArrayXd& pressure) const {

@@ -15,8 +15,8 @@
 namespace halfspace::lubrication {
 namespace {
 
-constexpr double kEta = 0.1;   // Pa s
-constexpr double kU = 1.0;     // m/s entrainment
+constexpr double kEta = 0.1;  // Pa s
+constexpr double kU = 1.0;    // m/s entrainment
 // Second-order scheme: 801 nodes resolve the slider's load to ~1e-5.
 constexpr double kSliderLoadTolerance = 1e-4;
 // Rupture is resolved to a cell: load within 0.5% at 1601 nodes.
@@ -63,8 +63,8 @@ TEST(ReynoldsFilmTest, InclinedSliderMatchesClosedForm) {
     if (std::abs(s.pressure[i] - exact) > worst) worst = std::abs(s.pressure[i] - exact), where = i;
   }
   const double w = slider_load(length, ho, k);
-  std::printf("slider: %d sweeps, worst pressure error %.3g of %.3g at node %zu, load %.10g vs %.10g\n",
-              s.iterations, worst, s.pressure.maxCoeff(), where, f.load, w);
+  std::printf("slider: %d sweeps, worst pressure error %.3g of %.3g at node %zu, load %.10g vs %.10g\n", s.iterations,
+              worst, s.pressure.maxCoeff(), where, f.load, w);
   EXPECT_LT(worst, kSliderLoadTolerance * s.pressure.maxCoeff());
   EXPECT_NEAR(f.load, w, kSliderLoadTolerance * w);
   EXPECT_EQ(f.cavitated_fraction, 0.0);
@@ -80,8 +80,8 @@ TEST(ReynoldsFilmTest, InclinedSliderConvergesAtSecondOrder) {
     const FilmSolution s = solve_slider(sizes[level], length, ho, k, film);
     ASSERT_TRUE(s.converged());
     const Grid grid = Grid::line(sizes[level], length / (sizes[level] - 1), Boundary::free);
-    errors[level] = std::abs(film_forces(ReynoldsStencil(grid, film, conditions_along_x()), s).load -
-                             slider_load(length, ho, k));
+    errors[level] =
+        std::abs(film_forces(ReynoldsStencil(grid, film, conditions_along_x()), s).load - slider_load(length, ho, k));
   }
   const double order = std::log2(errors[0] / errors[1]);
   std::printf("slider load errors %.3g, %.3g: order %.3f\n", errors[0], errors[1], order);
@@ -97,7 +97,7 @@ TEST(ReynoldsFilmTest, InclinedSliderConvergesAtSecondOrder) {
 // parts). xi_in -> -inf gives xi_m = 0.4751, W' = 4.895 eta U R / h0
 // (Martin 1916; 2.448 eta (u1 + u2) R / h0).
 struct CylinderReference {
-  double rupture = 0.0;  // xi_m
+  double rupture = 0.0;      // xi_m
   double load_factor = 0.0;  // W' h0 / (eta U R)
 };
 
@@ -178,8 +178,8 @@ TEST(ReynoldsFilmTest, WavyFilmConservesMassThroughReformation) {
   }
   std::printf("wavy film: %d sweeps, lowest theta %.4f, cavitated %.3f, face flow spread %.3g of %.3g\n", s.iterations,
               lowest, f.cavitated_fraction, worst, flow);
-  EXPECT_LT(lowest, 0.9);                 // it cavitates after the first wave
-  EXPECT_GT(reformed_pressure, 0.0);      // and pressure builds again downstream
+  EXPECT_LT(lowest, 0.9);             // it cavitates after the first wave
+  EXPECT_GT(reformed_pressure, 0.0);  // and pressure builds again downstream
   EXPECT_LT(worst, kFlowBalanceTolerance * flow);
 }
 

@@ -19,8 +19,8 @@ std::string_view to_string(AxisBoundary boundary);
 
 struct FlowBoundary {
   AxisBoundary x = AxisBoundary::fixed_pressure;
-  double x_low_pressure = 0.0;   // Pa, at x = 0 (the inlet when the entrainment is along +x)
-  double x_high_pressure = 0.0;  // Pa, at x = (nx - 1) dx
+  double x_low_pressure = 0.0;                    // Pa, at x = 0 (the inlet when the entrainment is along +x)
+  double x_high_pressure = 0.0;                   // Pa, at x = (nx - 1) dx
   AxisBoundary y = AxisBoundary::fixed_pressure;  // 2D grids only
   double y_low_pressure = 0.0;                    // Pa, at y = 0
   double y_high_pressure = 0.0;                   // Pa, at y = (ny - 1) dy

@@ -12,10 +12,10 @@
 namespace halfspace::lubrication {
 
 struct LoadControlOptions {
-  double load = 0.0;                      // N in 2D, N/m in 1D; > 0
-  double relative_tolerance = 1e-8;       // on the load
-  double initial_separation = 0.0;        // m; 0 picks a tenth of the heights' range
-  int max_evaluations = 200;              // film solves
+  double load = 0.0;                 // N in 2D, N/m in 1D; > 0
+  double relative_tolerance = 1e-8;  // on the load
+  double initial_separation = 0.0;   // m; 0 picks a tenth of the heights' range
+  int max_evaluations = 200;         // film solves
 
   // Throws InputError naming the option unless load > 0, 0 < relative_tolerance
   // < 1, initial_separation >= 0 and finite, max_evaluations >= 2.

@@ -56,7 +56,9 @@ class ReynoldsStencil {
   double couette_x() const { return couette_x_; }
   double couette_y() const { return couette_y_; }
   // The upstream neighbour of node k along x and y (kNone without flow).
-  std::size_t upstream_x(const Neighbours& n) const { return conditions_.entrainment_velocity[0] >= 0 ? n.west : n.east; }
+  std::size_t upstream_x(const Neighbours& n) const {
+    return conditions_.entrainment_velocity[0] >= 0 ? n.west : n.east;
+  }
   std::size_t upstream_y(const Neighbours& n) const {
     return conditions_.entrainment_velocity[1] >= 0 ? n.south : n.north;
   }
