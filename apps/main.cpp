@@ -18,6 +18,7 @@
 #include "halfspace/io/output_file.hpp"
 #include "halfspace/memory_estimate.hpp"
 #include "halfspace/version.hpp"
+#include "lubricate_command.hpp"
 #include "openmp_waiting.hpp"
 #include "paper_command.hpp"
 #include "processes.hpp"
@@ -52,6 +53,7 @@ int main(int argc, char** argv) {
   commands.push_back(halfspace::app::add_generate_command(app));
   commands.push_back(halfspace::app::add_paper_command(app));
   commands.push_back(halfspace::app::add_stress_command(app));
+  commands.push_back(halfspace::app::add_lubricate_command(app));
 
   try {
     app.parse(argc, argv);

@@ -1,0 +1,24 @@
+// The rigid film: heights below a flat at a separation.
+#include "halfspace/lubrication/film.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "halfspace/error.hpp"
+
+namespace halfspace::lubrication {
+
+Eigen::ArrayXd film_thickness(const Grid& grid, const Eigen::ArrayXd& heights, double separation) {
+  if (static_cast<std::size_t>(heights.size()) != grid.size()) {
+    throw InputError(fmt::format("heights have {} values, the {} grid has {} cells", heights.size(),
+                                 grid.shape_string(), grid.size()));
+  }
+  if (!(std::isfinite(separation) && separation > 0.0)) {
+    throw InputError(fmt::format("separation = {} m is invalid: it must be positive and finite", separation));
+  }
+  if (!heights.allFinite()) throw InputError("heights are invalid: every height must be finite");
+  return separation + (heights.maxCoeff() - heights);
+}
+
+}  // namespace halfspace::lubrication

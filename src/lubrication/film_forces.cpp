@@ -1,0 +1,77 @@
+// Load, boundary flows and friction of a solved film, by the same nodes and
+// faces the solver balanced: the flows through the fixed-pressure edges are
+// the faces' fluxes, so inflow = outflow is the sum of every control volume's
+// balance (telescoping), a check of the solution's mass conservation.
+#include "halfspace/lubrication/film_forces.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace halfspace::lubrication {
+
+namespace {
+
+// Trapezoidal weight of a node along one axis: half on a fixed-pressure edge.
+double edge_weight(std::size_t index, std::size_t count, AxisBoundary boundary) {
+  return boundary == AxisBoundary::fixed_pressure && (index == 0 || index + 1 == count) ? 0.5 : 1.0;
+}
+
+// dp/dx at node k: central where both neighbours exist, one-sided otherwise.
+double gradient(const Eigen::ArrayXd& p, std::size_t k, std::size_t low, std::size_t high, double spacing) {
+  if (low != Neighbours::kNone && high != Neighbours::kNone) return (p[high] - p[low]) / (2.0 * spacing);
+  if (high != Neighbours::kNone) return (p[high] - p[k]) / spacing;
+  if (low != Neighbours::kNone) return (p[k] - p[low]) / spacing;
+  return 0.0;
+}
+
+}  // namespace
+
+FilmForces film_forces(const ReynoldsStencil& stencil, const FilmSolution& solution) {
+  const Grid& grid = stencil.grid();
+  const FlowConditions& conditions = stencil.conditions();
+  const Eigen::ArrayXd& p = solution.pressure;
+  const Eigen::ArrayXd& theta = solution.fluid_fraction;
+  const Eigen::ArrayXd& h = stencil.film();
+  const bool two_d = grid.dimension() == 2;
+  FilmForces forces;
+  double weight_sum = 0.0;
+  std::size_t cavitated = 0;
+  for (std::size_t k = 0; k < stencil.size(); ++k) {
+    const std::size_t i = k % grid.nx();
+    const std::size_t j = k / grid.nx();
+    double weight = edge_weight(i, grid.nx(), conditions.boundary.x);
+    if (two_d) weight *= edge_weight(j, grid.ny(), conditions.boundary.y);
+    weight_sum += weight;
+    forces.load += weight * p[k];
+    const Neighbours nb = stencil.neighbours(k);
+    const double shear = theta[k] * conditions.viscosity / h[k];
+    forces.friction_force[0] +=
+        weight * (shear * conditions.sliding_velocity[0] - 0.5 * h[k] * gradient(p, k, nb.west, nb.east, grid.dx()));
+    if (two_d) {
+      forces.friction_force[1] += weight * (shear * conditions.sliding_velocity[1] -
+                                            0.5 * h[k] * gradient(p, k, nb.south, nb.north, grid.dy()));
+    }
+    if (theta[k] < 1.0) ++cavitated;
+    // Flows through faces between a fixed node and an unknown one.
+    const auto boundary_face = [&](std::size_t other, double flow_to_other) {
+      if (other == Neighbours::kNone || stencil.fixed(k) == stencil.fixed(other)) return;
+      const double into_domain = stencil.fixed(k) ? flow_to_other : -flow_to_other;
+      forces.inflow += std::max(into_domain, 0.0);
+      forces.outflow += std::max(-into_domain, 0.0);
+    };
+    boundary_face(nb.east, stencil.east_flow(k, p, theta));
+    boundary_face(nb.north, stencil.north_flow(k, p, theta));
+  }
+  const double area = grid.cell_area();
+  forces.load *= area;
+  forces.friction_force[0] *= area;
+  forces.friction_force[1] *= area;
+  forces.mean_pressure = forces.load / (weight_sum * area);
+  const double friction = std::hypot(forces.friction_force[0], forces.friction_force[1]);
+  forces.friction_coefficient = forces.load > 0.0 ? friction / forces.load : 0.0;
+  forces.minimum_film_thickness = h.minCoeff();
+  forces.cavitated_fraction = static_cast<double>(cavitated) / static_cast<double>(stencil.size());
+  return forces;
+}
+
+}  // namespace halfspace::lubrication

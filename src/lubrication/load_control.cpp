@@ -1,0 +1,145 @@
+// The separation that carries a load. A rigid film's load falls
+// monotonically as the separation grows (about as separation^-2 for a
+// converging film), so log load is nearly linear in log separation: a bracket
+// by factors of 4, then the secant in those variables with the Illinois
+// safeguard (Dowell & Jarratt 1971) and bisection when it leaves the bracket.
+#include "halfspace/lubrication/load_control.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "halfspace/error.hpp"
+#include "halfspace/lubrication/film.hpp"
+
+namespace halfspace::lubrication {
+
+void LoadControlOptions::validate() const {
+  if (!(std::isfinite(load) && load > 0.0)) {
+    throw InputError(fmt::format("film load = {} is invalid: it must be positive and finite", load));
+  }
+  if (!(relative_tolerance > 0.0 && relative_tolerance < 1.0)) {
+    throw InputError(
+        fmt::format("load tolerance = {} is invalid: allowed range is 0 < tolerance < 1", relative_tolerance));
+  }
+  if (!(std::isfinite(initial_separation) && initial_separation >= 0.0)) {
+    throw InputError(fmt::format("initial separation = {} m is invalid: it must be >= 0 (0: automatic) and finite",
+                                 initial_separation));
+  }
+  if (max_evaluations < 2) {
+    throw InputError(fmt::format("load max evaluations = {} is invalid: at least 2 film solves", max_evaluations));
+  }
+}
+
+namespace {
+
+LubricatedFilm solve_at(const Grid& grid, const Eigen::ArrayXd& heights, const FlowConditions& conditions,
+                        double separation, const CavitationSolverOptions& solver, const FilmSolution* start) {
+  LubricatedFilm result;
+  result.separation = separation;
+  result.film = film_thickness(grid, heights, separation);
+  const ReynoldsStencil stencil(grid, result.film, conditions);
+  result.solution = solve_cavitating_film(stencil, solver, start);
+  result.forces = film_forces(stencil, result.solution);
+  result.film_solves = 1;
+  return result;
+}
+
+}  // namespace
+
+LubricatedFilm lubricate_at_separation(const Grid& grid, const Eigen::ArrayXd& heights,
+                                       const FlowConditions& conditions, double separation,
+                                       const CavitationSolverOptions& solver) {
+  conditions.validate(grid);
+  solver.validate();
+  return solve_at(grid, heights, conditions, separation, solver, nullptr);
+}
+
+LubricatedFilm lubricate_at_load(const Grid& grid, const Eigen::ArrayXd& heights, const FlowConditions& conditions,
+                                 const LoadControlOptions& load, const CavitationSolverOptions& solver) {
+  conditions.validate(grid);
+  solver.validate();
+  load.validate();
+  const double range = heights.size() > 0 ? heights.maxCoeff() - heights.minCoeff() : 0.0;
+  double separation = load.initial_separation > 0.0 ? load.initial_separation : (range > 0.0 ? 0.1 * range : 1e-6);
+  int solves = 0;
+  LubricatedFilm current;
+  // log(load / target): positive while the film carries too much.
+  const auto excess = [&](const LubricatedFilm& film) {
+    return std::log(std::max(film.forces.load, std::numeric_limits<double>::min()) / load.load);
+  };
+  const auto evaluate = [&](double s) {
+    const FilmSolution* start = solves > 0 ? &current.solution : nullptr;
+    LubricatedFilm next = solve_at(grid, heights, conditions, s, solver, start);
+    ++solves;
+    current = std::move(next);
+    current.film_solves = solves;
+    return current.solution.converged();
+  };
+  const auto give_up = [&](FilmStatus status, std::string message) {
+    current.solution.status = status;
+    current.solution.message = std::move(message);
+    current.film_solves = solves;
+    return current;
+  };
+  if (!evaluate(separation)) return current;
+  if (std::abs(excess(current)) <= std::log1p(load.relative_tolerance)) return current;
+  // Bracket: `high` has too little load at the larger separation, `low` too much.
+  double log_low = 0.0, f_low = 0.0, log_high = 0.0, f_high = 0.0;
+  const double first_excess = excess(current);
+  const double step = first_excess > 0.0 ? 4.0 : 0.25;
+  double previous_load = current.forces.load;
+  (first_excess > 0.0 ? log_low : log_high) = std::log(separation);
+  (first_excess > 0.0 ? f_low : f_high) = first_excess;
+  for (;;) {
+    if (solves >= load.max_evaluations) {
+      return give_up(FilmStatus::iteration_limit,
+                     fmt::format("the load {} could not be bracketed in {} film solves", load.load, solves));
+    }
+    separation *= step;
+    if (!evaluate(separation)) return current;
+    const double f = excess(current);
+    if (std::abs(current.forces.load - previous_load) <= 1e-12 * std::abs(previous_load)) {
+      return give_up(FilmStatus::failure,
+                     fmt::format("the film's load {} does not change with the separation: no separation carries {}",
+                                 current.forces.load, load.load));
+    }
+    previous_load = current.forces.load;
+    if ((f > 0.0) == (first_excess > 0.0)) {
+      (f > 0.0 ? log_low : log_high) = std::log(separation);
+      (f > 0.0 ? f_low : f_high) = f;
+      continue;
+    }
+    (f > 0.0 ? log_low : log_high) = std::log(separation);
+    (f > 0.0 ? f_low : f_high) = f;
+    break;
+  }
+  int stuck_side = 0;  // Illinois: the side kept twice in a row has its value halved
+  while (std::abs(excess(current)) > std::log1p(load.relative_tolerance)) {
+    if (solves >= load.max_evaluations) {
+      return give_up(FilmStatus::iteration_limit,
+                     fmt::format("the load {} was not met in {} film solves: the film carries {}", load.load, solves,
+                                 current.forces.load));
+    }
+    double x = log_high - f_high * (log_high - log_low) / (f_high - f_low);
+    if (!(x > log_low && x < log_high)) x = 0.5 * (log_low + log_high);
+    if (!evaluate(std::exp(x))) return current;
+    const double f = excess(current);
+    if (f > 0.0) {
+      log_low = x;
+      f_low = f;
+      if (stuck_side == -1) f_high *= 0.5;
+      stuck_side = -1;
+    } else {
+      log_high = x;
+      f_high = f;
+      if (stuck_side == 1) f_low *= 0.5;
+      stuck_side = 1;
+    }
+  }
+  return current;
+}
+
+}  // namespace halfspace::lubrication

@@ -1,0 +1,87 @@
+// `halfspace lubricate`: the program's film equals the library's, the load it
+// was asked for is carried, the flows balance, and bad input names the option.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "halfspace/io/height_map_reader.hpp"
+#include "halfspace/lubrication/load_control.hpp"
+#include "io/hdf5_test_support.hpp"
+#include "support/cli_checks.hpp"
+#include "support/program_run.hpp"
+
+namespace halfspace {
+namespace {
+
+namespace fs = std::filesystem;
+using test::TempDir;
+using testing::expect_input_error;
+using testing::kExitOk;
+using testing::ProgramRun;
+using testing::run_program;
+
+// The load control's own tolerance (LoadControlOptions' default, 1e-8) with room.
+constexpr double kLoadTolerance = 1e-7;
+// The program's film is warm-started from the load search's previous one, the
+// library's cold: both converged to 1e-11 of the mass balance.
+constexpr double kWarmVersusCold = 1e-6;
+
+TEST(LubricateCliTest, CarriesTheForceAndWritesTheLibrarysFilm) {
+  const TempDir dir;
+  ASSERT_EQ(run_program({"generate", "--kind", "cylinder", "--grid", "401", "--size", "8e-4", "--radius", "0.01",
+                         "--output", "cylinder.h5", "--quiet"},
+                        dir.path())
+                .exit_code,
+            kExitOk);
+  const ProgramRun run =
+      run_program({"lubricate", "--height-map", "cylinder.h5", "--viscosity", "0.1", "--entrainment-velocity", "1",
+                   "--sliding-velocity", "0.2", "--force", "4000", "--output", "film.h5"},
+                  dir.path());
+  ASSERT_EQ(run.exit_code, kExitOk) << run.err;
+  const test::H5 file = test::open_file(dir / "film.h5");
+  EXPECT_NEAR(test::read_double_attribute(file.get(), "load"), 4000.0, kLoadTolerance * 4000.0);
+  const double inflow = test::read_double_attribute(file.get(), "inflow");
+  EXPECT_NEAR(test::read_double_attribute(file.get(), "outflow"), inflow, 1e-9 * inflow);
+  EXPECT_GT(test::read_double_attribute(file.get(), "cavitated_fraction"), 0.0);
+  const double separation = test::read_double_attribute(file.get(), "separation");
+  const std::vector<double> pressure = test::read_dataset<double>(file.get(), "/pressure", H5T_NATIVE_DOUBLE);
+
+  const HeightMap map = io::read_height_map(dir / "cylinder.h5");
+  lubrication::FlowConditions conditions;
+  conditions.viscosity = 0.1;
+  conditions.entrainment_velocity = {1.0, 0.0};
+  const lubrication::LubricatedFilm film = lubrication::lubricate_at_separation(
+      Grid::line(map.nx, map.dx, Boundary::free), map.heights, conditions, separation);
+  ASSERT_EQ(pressure.size(), static_cast<std::size_t>(film.solution.pressure.size()));
+  double worst = 0.0;
+  for (std::size_t i = 0; i < pressure.size(); ++i) {
+    worst = std::max(worst, std::abs(pressure[i] - film.solution.pressure[i]));
+  }
+  EXPECT_LT(worst, kWarmVersusCold * film.solution.pressure.maxCoeff());
+}
+
+TEST(LubricateCliTest, RejectsBadInputNamingTheOption) {
+  const TempDir dir;
+  ASSERT_EQ(run_program({"generate", "--kind", "cylinder", "--grid", "41", "--size", "8e-4", "--radius", "0.01",
+                         "--output", "c.h5", "--quiet"},
+                        dir.path())
+                .exit_code,
+            kExitOk);
+  expect_input_error(run_program({"lubricate", "--height-map", "c.h5", "--viscosity", "-1", "--entrainment-velocity",
+                                  "1", "--separation", "1e-6", "--output", "f.h5"},
+                                 dir.path()),
+                     {"viscosity = -1"}, dir / "f.h5");
+  expect_input_error(run_program({"lubricate", "--height-map", "c.h5", "--viscosity", "0.1", "--entrainment-velocity",
+                                  "1", "--output", "f.h5"},
+                                 dir.path()),
+                     {"--separation", "--force"}, dir / "f.h5");
+  expect_input_error(run_program({"lubricate", "--height-map", "c.h5", "--viscosity", "0.1", "--entrainment-velocity",
+                                  "1,2", "--separation", "1e-6", "--output", "f.h5"},
+                                 dir.path()),
+                     {"entrainment velocity y = 2"}, dir / "f.h5");
+}
+
+}  // namespace
+}  // namespace halfspace
