@@ -118,8 +118,8 @@ int run_lubricate(const LubricateOptions& o) {
               : lubrication::lubricate_at_separation(grid, map.heights, conditions, *o.separation, solver);
 
   const lubrication::FilmForces& f = film.forces;
-  std::vector<std::size_t> shape = map.dimension == 1 ? std::vector<std::size_t>{map.nx}
-                                                       : std::vector<std::size_t>{map.ny, map.nx};
+  std::vector<std::size_t> shape =
+      map.dimension == 1 ? std::vector<std::size_t>{map.nx} : std::vector<std::size_t>{map.ny, map.nx};
   io::write_hdf5_file(*o.output, [&](const io::Hdf5Node& root) {
     root.write_dataset("pressure", shape, std::span<const double>(film.solution.pressure.data(), grid.size()), "Pa");
     root.write_dataset("film_thickness", shape, std::span<const double>(film.film.data(), grid.size()), "m");

@@ -30,9 +30,10 @@ ContactConditionReport check_contact_conditions(InfluenceOperator& op, std::span
   const auto size = static_cast<std::size_t>(result.pressure.size());
   if (initial_gap.size() != n || size != n || scratch.size() != n ||
       static_cast<std::size_t>(result.displacement.size()) != n) {
-    throw InputError(fmt::format("contact check: the initial gap, the pressure, the displacement and the scratch "
-                                 "have {}, {}, {} and {} entries, but the operator's grid has {} cells",
-                                 initial_gap.size(), size, result.displacement.size(), scratch.size(), n));
+    throw InputError(
+        fmt::format("contact check: the initial gap, the pressure, the displacement and the scratch "
+                    "have {}, {}, {} and {} entries, but the operator's grid has {} cells",
+                    initial_gap.size(), size, result.displacement.size(), scratch.size(), n));
   }
   ContactConditionReport report;
   auto fail = [&](std::string why) {
@@ -46,9 +47,10 @@ ContactConditionReport check_contact_conditions(InfluenceOperator& op, std::span
     return std::isfinite(p[i]) && std::isfinite(u_result[i]) && std::isfinite(initial_gap[i]) ? 0.0 : 1.0;
   });
   if (non_finite > 0.0 || !std::isfinite(result.approach) || !std::isfinite(result.total_force)) {
-    fail(fmt::format("{:g} cells hold a non-finite pressure or displacement, or the approach ({:g} m) or force "
-                     "({:g}) is not finite",
-                     non_finite, result.approach, result.total_force));
+    fail(
+        fmt::format("{:g} cells hold a non-finite pressure or displacement, or the approach ({:g} m) or force "
+                    "({:g}) is not finite",
+                    non_finite, result.approach, result.total_force));
     return report;
   }
   // 2. u = K p afresh.
@@ -62,8 +64,9 @@ ContactConditionReport check_contact_conditions(InfluenceOperator& op, std::span
   });
   // The floor max |K p| keeps the scale from vanishing on a flat punch in
   // full contact, where ptp(g0) = 0 and ptp(K p) is rounding.
-  const double gap_scale = (surface.max - surface.min) +
-                           std::max(response.max - response.min, std::max(std::abs(response.max), std::abs(response.min)));
+  const double gap_scale =
+      (surface.max - surface.min) +
+      std::max(response.max - response.min, std::max(std::abs(response.max), std::abs(response.min)));
   const double scale = gap_scale > 0.0 ? gap_scale : 1.0;
   // 3. Bounds, complementarity (on the frictionless law, lower bound 0) and
   // the displacement the result reports.
@@ -73,9 +76,9 @@ ContactConditionReport check_contact_conditions(InfluenceOperator& op, std::span
     const double g = initial_gap[i] + u[i] - approach;
     double violation = 0.0;
     if (frictionless) {
-      if (p[i] <= 0.0) violation = std::max(-g, 0.0);                          // no interpenetration
-      if (p[i] > 0.0 && !bounds.at_cap(p[i])) violation = std::abs(g);         // closed below the cap
-      if (bounds.at_cap(p[i])) violation = std::max(g, 0.0);                   // not open at the cap
+      if (p[i] <= 0.0) violation = std::max(-g, 0.0);                   // no interpenetration
+      if (p[i] > 0.0 && !bounds.at_cap(p[i])) violation = std::abs(g);  // closed below the cap
+      if (bounds.at_cap(p[i])) violation = std::max(g, 0.0);            // not open at the cap
     }
     return std::pair{std::array<double, 1>{0.0}, violation};
   });
@@ -90,9 +93,10 @@ ContactConditionReport check_contact_conditions(InfluenceOperator& op, std::span
                      std::max(-below, above)));
   }
   if (report.worst_gap > tolerances.gap) {
-    fail(fmt::format("the contact conditions fail by a gap of {:.3e} m, {:.2e} of the gap scale {:.3e} m "
-                     "(tolerance {:.1e})",
-                     worst.max, report.worst_gap, gap_scale, tolerances.gap));
+    fail(
+        fmt::format("the contact conditions fail by a gap of {:.3e} m, {:.2e} of the gap scale {:.3e} m "
+                    "(tolerance {:.1e})",
+                    worst.max, report.worst_gap, gap_scale, tolerances.gap));
   }
   if (report.displacement_error > tolerances.gap) {
     fail(fmt::format("the displacement differs from K p by {:.3e} m, {:.2e} of the gap scale (tolerance {:.1e})",

@@ -89,10 +89,11 @@ TEST(MindlinDeresiewicz, FrettingLoopFollowsMasingAndDissipatesItsArea) {
     }
   }
   const double closing = (state.shear_x - at_peak.shear_x).abs().maxCoeff() / (kMu * hertz.peak);
-  std::printf("Mindlin-Deresiewicz: branch error %.2e of delta*, dissipated %.4e J against loop area %.4e J "
-              "(%.2e), state closes to %.2e mu p0, %.0f iterations per step\n",
-              worst_branch, dissipated, area, std::abs(dissipated - area) / area, closing,
-              static_cast<double>(iterations) / (2 * kStepsPerBranch));
+  std::printf(
+      "Mindlin-Deresiewicz: branch error %.2e of delta*, dissipated %.4e J against loop area %.4e J "
+      "(%.2e), state closes to %.2e mu p0, %.0f iterations per step\n",
+      worst_branch, dissipated, area, std::abs(dissipated - area) / area, closing,
+      static_cast<double>(iterations) / (2 * kStepsPerBranch));
   // Tolerances: Mindlin's closed form at nu = 0.3 and a/dx = 13 (the
   // loading curve is met to 4e-4 at these cells), and the steps' backward
   // Euler dissipation (ds times the traction at the step's end).

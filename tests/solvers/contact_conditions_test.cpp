@@ -36,11 +36,11 @@ struct Problem {
 solvers::ContactConditionReport check(const Problem& run, const SolveResult& result) {
   FftInfluenceOperator op(run.grid, kEStar);
   Eigen::ArrayXd scratch(static_cast<Eigen::Index>(run.grid.size()));
-  const solvers::PressureBounds bounds = run.hardness ? solvers::PressureBounds::capped_at(*run.hardness) : solvers::PressureBounds{};
-  return solvers::check_contact_conditions(
-      op, {run.gap.data(), run.grid.size()}, run.loading, bounds, result,
-      solvers::ContactConditionTolerances::for_solver_tolerance(kSolveTolerance),
-      {scratch.data(), run.grid.size()});
+  const solvers::PressureBounds bounds =
+      run.hardness ? solvers::PressureBounds::capped_at(*run.hardness) : solvers::PressureBounds{};
+  return solvers::check_contact_conditions(op, {run.gap.data(), run.grid.size()}, run.loading, bounds, result,
+                                           solvers::ContactConditionTolerances::for_solver_tolerance(kSolveTolerance),
+                                           {scratch.data(), run.grid.size()});
 }
 
 TEST(ContactConditionsTest, WheneverASolverSaysConvergedTheConditionsHold) {

@@ -33,9 +33,9 @@ struct ContactConditionTolerances {
 
 struct ContactConditionReport {
   bool holds = true;
-  std::string violation;         // the first condition broken, with the numbers; empty if none
-  double worst_gap = 0.0;        // largest gap violation over the gap scale
-  double force_error = 0.0;      // relative force (or approach) error
+  std::string violation;            // the first condition broken, with the numbers; empty if none
+  double worst_gap = 0.0;           // largest gap violation over the gap scale
+  double force_error = 0.0;         // relative force (or approach) error
   double displacement_error = 0.0;  // |K p - result.displacement| over the gap scale
 };
 
