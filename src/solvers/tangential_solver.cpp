@@ -116,19 +116,10 @@ class Iteration {
   }
 
   bool finished(int iteration) {
-    if (residual_ <= options_.tolerance) {
-      result_.status = SolveStatus::converged;
-    } else if (!std::isfinite(residual_)) {
-      result_.status = SolveStatus::breakdown;
-      result_.message = fmt::format("residual became non-finite at iteration {}", iteration);
-    } else if (iteration == options_.max_iterations) {
-      result_.status = SolveStatus::iteration_limit;
-      result_.message = fmt::format("no convergence after {} iterations: residual {:.3e} > tolerance {:.3e}", iteration,
-                                    residual_, options_.tolerance);
-    } else {
-      return false;
-    }
-    return true;
+    const std::optional<SolveStatus> status =
+        stopping_status(residual_, options_.tolerance, iteration, options_.max_iterations, &result_.message);
+    if (status) result_.status = *status;
+    return status.has_value();
   }
 
   // One accelerated projected-gradient step (Nesterov; Beck & Teboulle's

@@ -8,10 +8,32 @@
 #include <Eigen/Core>
 #include <cmath>
 
+#include "halfspace/elastic_pair.hpp"
 #include "halfspace/operators/tangential_operator.hpp"
+#include "halfspace/solvers/solver_factory.hpp"
 #include "halfspace/solvers/tangential_result.hpp"
+#include "support/analytic_solutions.hpp"
+#include "support/grid_fields.hpp"
+#include "support/pk_solvers.hpp"
 
 namespace halfspace::testing {
+
+// The normal contact the sphere tests load tangentially: a sphere of
+// `radius` pressed by `force` into a free n x n grid 2.4 Hertz radii wide,
+// solved by pk-fourier (frictionless: similar bodies, Dundurs' beta = 0).
+struct SphereContact {
+  Grid grid;
+  SolveResult contact;
+};
+
+inline SphereContact hertz_sphere_contact(const ElasticPair& pair, double force, double radius, std::size_t n) {
+  const double h = 2.4 * hertz_point(force, radius, pair.composite_modulus()).radius / static_cast<double>(n);
+  const Grid grid = Grid::plane(n, n, h, h, Boundary::free);
+  const Eigen::ArrayXd gap0 = field_from(grid, [&](double x, double y) { return (x * x + y * y) / (2 * radius); });
+  const auto normal =
+      solvers::make_solver(grid, pair.composite_modulus(), test_options(solvers::SolverType::pk_fourier));
+  return {grid, normal->solve({gap0.data(), grid.size()}, Loading::force(force))};
+}
 
 // slip_tolerance (m) bounds |ds| in stick cells; angle_tolerance the
 // misalignment |q/|q| + ds/|ds|| of slipping cells whose slip exceeds 100

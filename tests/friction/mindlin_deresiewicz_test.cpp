@@ -30,14 +30,7 @@ constexpr int kStepsPerBranch = 12;
 TEST(MindlinDeresiewicz, FrettingLoopFollowsMasingAndDissipatesItsArea) {
   const ElasticPair pair = ElasticPair::similar(kSteel);
   const auto hertz = testing::hertz_point(kForce, kSphereRadius, pair.composite_modulus());
-  const std::size_t n = 32;
-  const double h = 2.4 * hertz.radius / static_cast<double>(n);
-  const Grid grid = Grid::plane(n, n, h, h, Boundary::free);
-  const Eigen::ArrayXd gap0 =
-      testing::field_from(grid, [](double x, double y) { return (x * x + y * y) / (2 * kSphereRadius); });
-  const auto normal =
-      solvers::make_solver(grid, pair.composite_modulus(), testing::test_options(solvers::SolverType::pk_fourier));
-  const SolveResult contact = normal->solve({gap0.data(), grid.size()}, Loading::force(kForce));
+  const auto [grid, contact] = testing::hertz_sphere_contact(pair, kForce, kSphereRadius, 32);
   ASSERT_TRUE(contact.converged());
   TangentialOperator op(grid, pair);
   solvers::TangentialOptions options;

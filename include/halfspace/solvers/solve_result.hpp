@@ -20,6 +20,13 @@ enum class SolveStatus {
 
 std::string_view to_string(SolveStatus status);
 
+// The end of an iterative solve at `iteration` with `residual`, shared by
+// the solvers' loops: converged (residual <= tolerance), breakdown (a
+// non-finite residual) or iteration_limit (at max_iterations), with the
+// message of the last two in *message; nullopt while the iteration goes on.
+std::optional<SolveStatus> stopping_status(double residual, double tolerance, int iteration, int max_iterations,
+                                           std::string* message);
+
 // The coarser grids a MultilevelSolver solved first: how many, their
 // iterations, and their K and M^-1 products each weighted by its grid's
 // cells over the fine grid's (the fine-grid products they cost).
