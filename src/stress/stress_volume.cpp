@@ -52,9 +52,15 @@ void require_finite(const StressSlice& slice, const Grid& grid) {
 VonMisesMaximum stresses_by_depth(SubsurfaceStress& stresses, std::span<const double> pressure,
                                   std::span<const double> depths,
                                   const std::function<void(const StressSlice& slice)>& consume) {
+  return stresses_by_depth(stresses, SurfaceTractions{pressure, {}, {}}, depths, consume);
+}
+
+VonMisesMaximum stresses_by_depth(SubsurfaceStress& stresses, const SurfaceTractions& tractions,
+                                  std::span<const double> depths,
+                                  const std::function<void(const StressSlice& slice)>& consume) {
   const Grid& grid = stresses.grid();
   check_depths(grid, depths);
-  stresses.set_pressure(pressure);
+  stresses.set_tractions(tractions);
   const std::size_t cells = grid.size();
   StressSlice slice;
   for (auto& component : slice.components) component.resize(cells);
@@ -97,7 +103,8 @@ VonMisesMaximum stresses_by_depth(SubsurfaceStress& stresses, std::span<const do
 
 namespace {
 
-StressVolume fill_volume(SubsurfaceStress& stresses, std::span<const double> pressure, std::span<const double> depths) {
+StressVolume fill_volume(SubsurfaceStress& stresses, const SurfaceTractions& tractions,
+                         std::span<const double> depths) {
   const std::size_t cells = stresses.grid().size();
   const std::size_t total = cells * depths.size();
   StressVolume volume;
@@ -109,7 +116,7 @@ StressVolume fill_volume(SubsurfaceStress& stresses, std::span<const double> pre
   const auto keep = [&](const std::vector<double>& field, std::vector<double>& into, std::size_t d) {
     std::copy(field.begin(), field.end(), into.begin() + static_cast<std::ptrdiff_t>(d * cells));
   };
-  volume.max_von_mises = stresses_by_depth(stresses, pressure, depths, [&](const StressSlice& slice) {
+  volume.max_von_mises = stresses_by_depth(stresses, tractions, depths, [&](const StressSlice& slice) {
     for (std::size_t c = 0; c < kComponentCount; ++c) keep(slice.components[c], volume.components[c], slice.index);
     keep(slice.von_mises, volume.von_mises, slice.index);
     keep(slice.max_shear, volume.max_shear, slice.index);
@@ -123,21 +130,27 @@ StressVolume fill_volume(SubsurfaceStress& stresses, std::span<const double> pre
 StressVolume compute_stress_volume(const Grid& grid, std::span<const double> pressure, std::span<const double> depths,
                                    double nu, FftPlanning planning) {
   check_depths(grid, depths);
+  return compute_stress_volume(grid, SurfaceTractions{pressure, {}, {}}, depths, nu, planning);
+}
+
+StressVolume compute_stress_volume(const Grid& grid, const SurfaceTractions& tractions, std::span<const double> depths,
+                                   double nu, FftPlanning planning) {
+  check_depths(grid, depths);
   SubsurfaceStress stresses(grid, nu, planning);
-  return fill_volume(stresses, pressure, depths);
+  return fill_volume(stresses, tractions, depths);
 }
 
 StressVolume compute_stress_volume(const Grid& grid, std::span<const double> pressure, std::span<const double> depths,
                                    const LayeredMaterial& coating, FftPlanning planning) {
   check_depths(grid, depths);
   SubsurfaceStress stresses(grid, coating, planning);
-  StressVolume volume = fill_volume(stresses, pressure, depths);
+  StressVolume volume = fill_volume(stresses, SurfaceTractions{pressure, {}, {}}, depths);
   volume.coating = coating;
   for (const double z : depths) volume.in_layer.push_back(stresses.in_layer(z));
   return volume;
 }
 
-double stress_memory_estimate(const Grid& grid, bool coated) {
+double stress_memory_estimate(const Grid& grid, bool coated, bool shear) {
   const double cells = static_cast<double>(grid.nx()) * static_cast<double>(grid.ny());
   // Periodic: the pressure spectrum, the transform's spectrum and real array,
   // the decay table (about 5 doubles a cell). Free: the padded pressure
@@ -146,7 +159,11 @@ double stress_memory_estimate(const Grid& grid, bool coated) {
   // Coated: each half-spectrum mode's solution (8 doubles) and profile (3)
   // instead of the decay table, about 5.5 more doubles a cell; on a free
   // grid the remainder's six parts on the padded half spectrum (12).
-  const double workspace = (grid.periodic() ? (coated ? 10.5 : 5.0) : (coated ? 38.0 : 26.0)) * 8.0 * cells;
+  // Shear: two more spectra (periodic: about 1 double a cell each; free: the
+  // padded one's 4) and, on free grids, two more sets of six quadrants.
+  const double shear_workspace = shear ? (grid.periodic() ? 2.0 : 20.0) : 0.0;
+  const double workspace =
+      ((grid.periodic() ? (coated ? 10.5 : 5.0) : (coated ? 38.0 : 26.0)) + shear_workspace) * 8.0 * cells;
   // The pressure itself and one depth's nine fields.
   constexpr double kSliceFields = 9.0;
   return 8.0 * cells + workspace + kSliceFields * 8.0 * cells;

@@ -23,6 +23,14 @@
 // bin of the coefficients' spectrum as its DFT on the padded grid (the alias
 // images summed with the cell's transform).
 //
+// Shear tractions (q_x, q_y; surface_traction.hpp) add their own terms:
+// periodic grids the Cerruti multipliers of fourier_shear_stress.hpp times
+// their spectra, free grids the cell coefficients of
+// rectangle_shear_stress.hpp convolved like the pressure's, each term summed
+// in the spectrum before the one inverse transform per component. Their
+// Nyquist rows and columns are zeroed by their own parities. Coated bodies
+// take no shear: the layered solution is solved for a normal traction only.
+//
 // Free: sigma_c(i) = sum_j C_c(x_i - x_j, z) p_j with the exact cell
 // coefficients C_c of rectangle_stress.hpp, a linear convolution done on the
 // (2ny, 2nx) zero-padded grid (Liu, Wang & Liu 2000). The coefficients change
@@ -39,6 +47,7 @@
 #include <complex>
 #include <numbers>
 #include <optional>
+#include <string_view>
 #include <vector>
 
 #include "halfspace/error.hpp"
@@ -48,7 +57,9 @@
 #include "halfspace/kernels/layered_fourier.hpp"
 #include "halfspace/kernels/periodic_fourier.hpp"
 #include "halfspace/linalg/parallel.hpp"
+#include "halfspace/stress/fourier_shear_stress.hpp"
 #include "halfspace/stress/layered_fourier_stress.hpp"
+#include "halfspace/stress/rectangle_shear_stress.hpp"
 #include "halfspace/stress/rectangle_stress.hpp"
 
 namespace halfspace::stress {
@@ -149,7 +160,7 @@ struct SubsurfaceStress::Impl {
     rows = line ? 1 : grid.ny();
     if (grid.periodic()) {
       transform = make_grid_transform(grid, planning);
-      pressure_spectrum.resize(transform->spectrum_size());
+      spectra[0].resize(transform->spectrum_size());
       decay.resize(transform->spectrum_size());
       kx.resize(transform->spectrum_cols());
       ky.resize(rows);
@@ -166,40 +177,75 @@ struct SubsurfaceStress::Impl {
       padded = std::make_unique<PaddedRealFft>(rows, grid.nx(), planning);
       kernel = line ? std::make_unique<RealFft>(2 * grid.nx(), planning, FftOutput::overwrite_input)
                     : std::make_unique<RealFft>(2 * rows, 2 * grid.nx(), planning, FftOutput::overwrite_input);
-      pressure_spectrum.resize(padded->spectrum_size());
+      spectra[0].resize(padded->spectrum_size());
       quadrant_cols = grid.nx() + 1;
       quadrant_rows = line ? 1 : rows + 1;
-      for (auto& q : quadrant) q.resize(quadrant_rows * quadrant_cols);
+      for (auto& q : quadrants[0]) q.resize(quadrant_rows * quadrant_cols);
       if (layered) {
         for (auto& part : remainder) part.resize(kernel->spectrum_size());
       }
     }
   }
 
-  void set_pressure(std::span<const double> pressure) {
-    if (pressure.size() != grid.size()) {
-      throw InputError(fmt::format("subsurface stress: the pressure has {} values but the grid has {} cells ({})",
-                                   pressure.size(), grid.size(), grid.shape_string()));
+  // Throws InputError unless `field` has the grid's size and finite values.
+  void check_field(std::span<const double> field, std::string_view name) const {
+    if (field.size() != grid.size()) {
+      throw InputError(fmt::format("subsurface stress: the {} has {} values but the grid has {} cells ({})", name,
+                                   field.size(), grid.size(), grid.shape_string()));
     }
-    for (std::size_t k = 0; k < pressure.size(); ++k) {
-      if (!std::isfinite(pressure[k])) {
-        throw InputError(fmt::format("subsurface stress: pressure value {} at index {} is not finite", pressure[k], k));
+    for (std::size_t k = 0; k < field.size(); ++k) {
+      if (!std::isfinite(field[k])) {
+        throw InputError(fmt::format("subsurface stress: {} value {} at index {} is not finite", name, field[k], k));
       }
     }
+  }
+
+  void set_tractions(const SurfaceTractions& tractions) {
+    check_field(tractions.pressure, "pressure");
+    if (!tractions.shear_x.empty()) check_field(tractions.shear_x, "shear traction along x");
+    if (!tractions.shear_y.empty()) check_field(tractions.shear_y, "shear traction along y");
+    if (layered && tractions.has_shear()) {
+      throw InputError(
+          "subsurface stress: shear tractions on a coated half-space are not supported: the layered stress solution "
+          "(layered_fourier_stress.hpp) is solved for a normal surface traction only; compute the stresses of the "
+          "pressure alone, or of a homogeneous body");
+    }
+    has_pressure = false;
+    active = {true, !tractions.shear_x.empty(), !tractions.shear_y.empty()};
+    const std::array<std::span<const double>, kTractionCount> fields = {tractions.pressure, tractions.shear_x,
+                                                                        tractions.shear_y};
+    for (std::size_t t = 0; t < kTractionCount; ++t) {
+      if (!active[t]) continue;
+      if (t > 0) allocate_shear(t);
+      transform_field(fields[t], spectra[t]);
+    }
+    has_pressure = true;
+  }
+
+  // The spectrum and (free grids) the coefficient quadrants of a shear, made
+  // once, the first time it is set.
+  void allocate_shear(std::size_t t) {
+    spectra[t].resize(spectra[0].size());
+    if (!transform) {
+      for (auto& q : quadrants[t]) q.resize(quadrant_rows * quadrant_cols);
+    }
+  }
+
+  // The field's spectrum (periodic: its DFT; free: that of the zero-padded field) into `into`.
+  void transform_field(std::span<const double> field, std::vector<std::complex<double>>& into) {
     std::span<const std::complex<double>> spectrum;
     if (transform) {
-      if (!transform->forward_from(pressure)) {
+      if (!transform->forward_from(field)) {
         std::span<double> input = transform->input();
-        linalg::for_each_index(pressure.size(), [&](std::size_t i) { input[i] = pressure[i]; });
+        linalg::for_each_index(field.size(), [&](std::size_t i) { input[i] = field[i]; });
         transform->forward();
       }
       spectrum = transform->spectrum();
     } else {
-      padded->forward(pressure);
+      padded->forward(field);
       spectrum = padded->spectrum();
     }
-    linalg::for_each_index(spectrum.size(), [&](std::size_t k) { pressure_spectrum[k] = spectrum[k]; });
-    has_pressure = true;
+    linalg::for_each_index(spectrum.size(), [&](std::size_t k) { into[k] = spectrum[k]; });
   }
 
   void compute(double depth, const std::array<std::span<double>, kComponentCount>& fields) {
@@ -257,15 +303,21 @@ struct SubsurfaceStress::Impl {
       std::span<std::complex<double>> spectrum = transform->spectrum();
       const auto kind = static_cast<Component>(component);
       linalg::for_each_row(rows, cols, [&](std::size_t r) {
-        const bool zero_row = odd_in_y(kind) && nyquist_row && r == rows / 2;
         for (std::size_t c = 0; c < cols; ++c) {
           const std::size_t k = r * cols + c;
-          const bool zero = zero_row || (odd_in_x(kind) && nyquist_col && c == cols - 1);
-          const std::complex<double> multiplier =
-              zero      ? 0.0
-              : layered ? layered_stress_component(kind, kx[c], ky[r], profiles[k], body_nu)
-                        : fourier_stress_component(kind, kx[c], ky[r], z, decay[k], nu);
-          spectrum[k] = pressure_spectrum[k] * (multiplier * (cell_x[c] * cell_y[r] * inverse_n));
+          std::complex<double> sum = 0.0;
+          for (std::size_t t = 0; t < kTractionCount; ++t) {
+            if (!active[t]) continue;
+            const auto traction = static_cast<Traction>(t);
+            const bool zero = (odd_in_y(kind, traction) && nyquist_row && r == rows / 2) ||
+                              (odd_in_x(kind, traction) && nyquist_col && c == cols - 1);
+            if (zero) continue;
+            const std::complex<double> multiplier =
+                layered ? layered_stress_component(kind, kx[c], ky[r], profiles[k], body_nu)
+                        : fourier_traction_stress_component(kind, traction, kx[c], ky[r], z, decay[k], nu);
+            sum += spectra[t][k] * multiplier;
+          }
+          spectrum[k] = sum * (cell_x[c] * cell_y[r] * inverse_n);
         }
       });
       std::span<double> out = fields[component];
@@ -369,63 +421,97 @@ struct SubsurfaceStress::Impl {
     const double dy = grid.dy();
     const double body_nu = poisson_ratio_at(z);
     if (layered) compute_remainder(z);
+    for (std::size_t t = 0; t < kTractionCount; ++t) {
+      if (active[t]) fill_quadrant(static_cast<Traction>(t), z, body_nu, line, dx, dy);
+    }
+
+    const double inverse_n = 1.0 / static_cast<double>(padded->padded_size());
+    for (std::size_t component = 0; component < kComponentCount; ++component) {
+      const auto kind = static_cast<Component>(component);
+      std::span<std::complex<double>> spectrum = padded->spectrum();
+      bool first = true;
+      for (std::size_t t = 0; t < kTractionCount; ++t) {
+        if (!active[t]) continue;
+        const auto traction = static_cast<Traction>(t);
+        transform_coefficients(quadrants[t][component], odd_in_x(kind, traction), odd_in_y(kind, traction), line);
+        std::span<const std::complex<double>> kernel_spectrum = kernel->spectrum();
+        const std::vector<std::complex<double>>& traction_spectrum = spectra[t];
+        if (layered) {
+          // The remainder's multiplier (pressure only): real, or i times the
+          // stored value for the imaginary ones (xz, yz).
+          const bool imaginary = kind == Component::xz || kind == Component::yz;
+          const std::vector<double>& part = remainder[component];
+          linalg::for_each_index(spectrum.size(), [&](std::size_t k) {
+            const std::complex<double> added = imaginary ? std::complex<double>(0.0, part[k]) : part[k];
+            spectrum[k] = traction_spectrum[k] * (kernel_spectrum[k] + added) * inverse_n;
+          });
+        } else if (first) {
+          linalg::for_each_index(spectrum.size(), [&](std::size_t k) {
+            spectrum[k] = traction_spectrum[k] * kernel_spectrum[k] * inverse_n;
+          });
+        } else {
+          linalg::for_each_index(spectrum.size(), [&](std::size_t k) {
+            spectrum[k] += traction_spectrum[k] * kernel_spectrum[k] * inverse_n;
+          });
+        }
+        first = false;
+      }
+      padded->backward(fields[component]);
+    }
+  }
+
+  // The cell coefficients of one traction at depth z on the quadrant of
+  // non-negative offsets.
+  void fill_quadrant(Traction traction, double z, double body_nu, bool line, double dx, double dy) {
+    auto& quadrant = quadrants[static_cast<std::size_t>(traction)];
     linalg::for_each_row(quadrant_rows, quadrant_cols, [&](std::size_t dj) {
       for (std::size_t di = 0; di < quadrant_cols; ++di) {
         const double x = static_cast<double>(di) * dx;
-        const StressTensor s = line ? strip_stress(x, z, 0.5 * dx, body_nu)
-                                    : rectangle_stress(x, static_cast<double>(dj) * dy, z, 0.5 * dx, 0.5 * dy, body_nu);
+        const double y = static_cast<double>(dj) * dy;
+        StressTensor s;
+        if (traction == Traction::pressure) {
+          s = line ? strip_stress(x, z, 0.5 * dx, body_nu) : rectangle_stress(x, y, z, 0.5 * dx, 0.5 * dy, body_nu);
+        } else {
+          s = line ? strip_shear_stress(traction, x, z, 0.5 * dx, body_nu)
+                   : rectangle_shear_stress(traction, x, y, z, 0.5 * dx, 0.5 * dy, body_nu);
+        }
         const std::size_t k = dj * quadrant_cols + di;
         for (std::size_t c = 0; c < kComponentCount; ++c) quadrant[c][k] = component_of(s, c);
       }
     });
+  }
 
+  // Fills the wrap-around array of the (2ny, 2nx) padded grid from a
+  // quadrant (mirrored with the component's parities) and transforms it.
+  void transform_coefficients(const std::vector<double>& values, bool odd_x, bool odd_y, bool line) {
     const std::size_t nx = grid.nx();
     const std::size_t padded_rows = line ? 1 : 2 * rows;
     const std::size_t padded_cols = 2 * nx;
-    const double inverse_n = 1.0 / static_cast<double>(padded->padded_size());
-    for (std::size_t component = 0; component < kComponentCount; ++component) {
-      std::span<double> coefficients = kernel->input();
-      const std::vector<double>& values = quadrant[component];
-      linalg::for_each_row(padded_rows, padded_cols, [&](std::size_t r) {
-        bool row_valid = true;
-        const std::ptrdiff_t dj = line ? 0 : wrapped_offset(r, rows, row_valid);
-        const double row_sign = odd_in_y(static_cast<Component>(component)) && dj < 0 ? -1.0 : 1.0;
-        const std::size_t row_base = static_cast<std::size_t>(std::abs(dj)) * quadrant_cols;
-        double* row = coefficients.data() + r * padded_cols;
-        for (std::size_t c = 0; c < padded_cols; ++c) {
-          bool col_valid = true;
-          const std::ptrdiff_t di = wrapped_offset(c, nx, col_valid);
-          const double sign = odd_in_x(static_cast<Component>(component)) && di < 0 ? -row_sign : row_sign;
-          row[c] = row_valid && col_valid ? sign * values[row_base + static_cast<std::size_t>(std::abs(di))] : 0.0;
-        }
-      });
-      kernel->forward();
-      std::span<const std::complex<double>> kernel_spectrum = kernel->spectrum();
-      std::span<std::complex<double>> spectrum = padded->spectrum();
-      if (layered) {
-        // The remainder's multiplier: real, or i times the stored value for
-        // the imaginary ones (xz, yz).
-        const auto kind = static_cast<Component>(component);
-        const bool imaginary = kind == Component::xz || kind == Component::yz;
-        const std::vector<double>& part = remainder[component];
-        linalg::for_each_index(spectrum.size(), [&](std::size_t k) {
-          const std::complex<double> added = imaginary ? std::complex<double>(0.0, part[k]) : part[k];
-          spectrum[k] = pressure_spectrum[k] * (kernel_spectrum[k] + added) * inverse_n;
-        });
-      } else {
-        linalg::for_each_index(spectrum.size(), [&](std::size_t k) {
-          spectrum[k] = pressure_spectrum[k] * kernel_spectrum[k] * inverse_n;
-        });
+    std::span<double> coefficients = kernel->input();
+    linalg::for_each_row(padded_rows, padded_cols, [&](std::size_t r) {
+      bool row_valid = true;
+      const std::ptrdiff_t dj = line ? 0 : wrapped_offset(r, rows, row_valid);
+      const double row_sign = odd_y && dj < 0 ? -1.0 : 1.0;
+      const std::size_t row_base = static_cast<std::size_t>(std::abs(dj)) * quadrant_cols;
+      double* row = coefficients.data() + r * padded_cols;
+      for (std::size_t c = 0; c < padded_cols; ++c) {
+        bool col_valid = true;
+        const std::ptrdiff_t di = wrapped_offset(c, nx, col_valid);
+        const double sign = odd_x && di < 0 ? -row_sign : row_sign;
+        row[c] = row_valid && col_valid ? sign * values[row_base + static_cast<std::size_t>(std::abs(di))] : 0.0;
       }
-      padded->backward(fields[component]);
-    }
+    });
+    kernel->forward();
   }
 
   Grid grid;
   double nu;
   std::size_t rows = 1;
   bool has_pressure = false;
-  std::vector<std::complex<double>> pressure_spectrum;
+  // Per traction (Traction order): whether it was set, and its spectrum.
+  static constexpr std::size_t kTractionCount = 3;
+  std::array<bool, kTractionCount> active{true, false, false};
+  std::array<std::vector<std::complex<double>>, kTractionCount> spectra;
   // Periodic grids.
   std::shared_ptr<RealFft> transform;
   std::vector<double> decay;  // exp(-|q| z) on the half spectrum, for the current depth
@@ -442,7 +528,8 @@ struct SubsurfaceStress::Impl {
   std::unique_ptr<RealFft> kernel;  // the (2ny, 2nx) transform of the coefficients
   std::size_t quadrant_rows = 0;
   std::size_t quadrant_cols = 0;
-  std::array<std::vector<double>, kComponentCount> quadrant;  // coefficients at non-negative offsets
+  // Per traction, the coefficients at non-negative offsets (shears' made when first set).
+  std::array<std::array<std::vector<double>, kComponentCount>, 3> quadrants;
   // Coated bodies (free grids): the remainder's spectrum at the current depth
   // (real part, or imaginary for xz and yz), on the coefficients' half spectrum.
   std::array<std::vector<double>, kComponentCount> remainder;
@@ -482,7 +569,11 @@ std::optional<LayeredMaterial> SubsurfaceStress::coating() const {
 }
 
 void SubsurfaceStress::set_pressure(std::span<const double> pressure) {
-  impl_->set_pressure(pressure);
+  impl_->set_tractions({pressure, {}, {}});
+}
+
+void SubsurfaceStress::set_tractions(const SurfaceTractions& tractions) {
+  impl_->set_tractions(tractions);
 }
 
 void SubsurfaceStress::compute(double depth, const std::array<std::span<double>, kComponentCount>& fields) {

@@ -9,6 +9,8 @@
 #include <numbers>
 #include <vector>
 
+#include "support/gauss_legendre.hpp"
+
 namespace halfspace::stress {
 namespace {
 
@@ -16,35 +18,8 @@ namespace {
 // least 0.2 half-widths deep) to about 1e-12 of the largest component.
 constexpr double kQuadratureTolerance = 1e-10;
 
-struct Rule {
-  std::vector<double> nodes;  // on [-1, 1]
-  std::vector<double> weights;
-};
-
-// Gauss-Legendre nodes by Newton's iteration on P_n.
-Rule gauss_legendre(int n) {
-  Rule rule;
-  for (int i = 0; i < n; ++i) {
-    double x = std::cos(std::numbers::pi * (i + 0.75) / (n + 0.5));
-    double derivative = 0.0;
-    for (int iteration = 0; iteration < 100; ++iteration) {
-      double p0 = 1.0;
-      double p1 = x;
-      for (int k = 2; k <= n; ++k) {
-        const double p2 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
-        p0 = p1;
-        p1 = p2;
-      }
-      derivative = n * (x * p1 - p0) / (x * x - 1.0);
-      const double step = p1 / derivative;
-      x -= step;
-      if (std::abs(step) < 1e-16) break;
-    }
-    rule.nodes.push_back(x);
-    rule.weights.push_back(2.0 / ((1.0 - x * x) * derivative * derivative));
-  }
-  return rule;
-}
+using Rule = halfspace::testing::QuadratureRule;
+using halfspace::testing::gauss_legendre;
 
 // Boussinesq's unit point load at the origin, Johnson (1985) eq. 3.21, in
 // cylindrical components rotated to x, y.
@@ -119,7 +94,7 @@ TEST(RectangleStressTest, MatchesIntegratedBoussinesqPointLoads) {
                           {0.2e-6, 1.1e-6, 0.3e-6}};
   for (const double nu : {0.3, 0.0, 0.5, -0.4}) {
     for (const Point& p : points) {
-      SCOPED_TRACE(testing::Message() << "nu = " << nu << " at (" << p.x << ", " << p.y << ", " << p.z << ")");
+      SCOPED_TRACE(::testing::Message() << "nu = " << nu << " at (" << p.x << ", " << p.y << ", " << p.z << ")");
       expect_close(rectangle_stress(p.x, p.y, p.z, a, b, nu), integrated_point_loads(p.x, p.y, p.z, a, b, nu),
                    kQuadratureTolerance);
     }
@@ -175,7 +150,7 @@ TEST(StripStressTest, MatchesIntegratedFlamantLineLoads) {
           }
         }
         expected.yy = nu * (expected.xx + expected.zz);
-        SCOPED_TRACE(testing::Message() << "nu = " << nu << " x = " << x << " z = " << z);
+        SCOPED_TRACE(::testing::Message() << "nu = " << nu << " x = " << x << " z = " << z);
         expect_close(strip_stress(x, z, a, nu), expected, kQuadratureTolerance);
       }
     }

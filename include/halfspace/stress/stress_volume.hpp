@@ -15,6 +15,7 @@
 #include "halfspace/layered_material.hpp"
 #include "halfspace/stress/fourier_stress.hpp"
 #include "halfspace/stress/subsurface_stress.hpp"
+#include "halfspace/stress/surface_traction.hpp"
 
 namespace halfspace::stress {
 
@@ -70,11 +71,20 @@ void check_depths(const Grid& grid, std::span<const double> depths);
 VonMisesMaximum stresses_by_depth(SubsurfaceStress& stresses, std::span<const double> pressure,
                                   std::span<const double> depths,
                                   const std::function<void(const StressSlice& slice)>& consume);
+// The same for the pressure and the shear tractions beside it
+// (surface_traction.hpp; SubsurfaceStress::set_tractions); also throws
+// InputError for a shear on a coated half-space.
+VonMisesMaximum stresses_by_depth(SubsurfaceStress& stresses, const SurfaceTractions& tractions,
+                                  std::span<const double> depths,
+                                  const std::function<void(const StressSlice& slice)>& consume);
 
 // The stress volume of `pressure` (Pa, grid.size() values) on `grid` at
 // `depths`, for a body of Poisson's ratio nu. Throws InputError for bad
 // depths, nu or pressure.
 StressVolume compute_stress_volume(const Grid& grid, std::span<const double> pressure, std::span<const double> depths,
+                                   double nu, FftPlanning planning = FftPlanning::estimate);
+// The same under the pressure and shear tractions (surface_traction.hpp).
+StressVolume compute_stress_volume(const Grid& grid, const SurfaceTractions& tractions, std::span<const double> depths,
                                    double nu, FftPlanning planning = FftPlanning::estimate);
 
 // The same below a coated half-space (require_coated_stress_grid), each depth with
@@ -87,7 +97,8 @@ StressVolume compute_stress_volume(const Grid& grid, std::span<const double> pre
 // for a coated body's solved modes) and one depth's nine fields, whatever the
 // number of depths; an upper bound for the memory check of the command line.
 // compute_stress_volume holds the whole volume besides: nine fields of 8
-// bytes per cell and depth.
-double stress_memory_estimate(const Grid& grid, bool coated = false);
+// bytes per cell and depth. With `shear`, the two shear tractions' spectra
+// and (free grids) coefficients as well.
+double stress_memory_estimate(const Grid& grid, bool coated = false, bool shear = false);
 
 }  // namespace halfspace::stress

@@ -3,6 +3,8 @@
 // closed-form Fourier-space solution (fourier_stress.hpp); free grids convolve
 // the pressure with the exact stress coefficients of a loaded cell
 // (rectangle_stress.hpp) by zero padding (DC-FFT, Liu, Wang & Liu 2000).
+// Shear tractions beside the pressure add Cerruti's solution in the same two
+// forms (fourier_shear_stress.hpp, rectangle_shear_stress.hpp).
 // Cost and memory per depth: docs/theory.md#subsurface-stresses.
 #pragma once
 
@@ -15,6 +17,7 @@
 #include "halfspace/grid.hpp"
 #include "halfspace/layered_material.hpp"
 #include "halfspace/stress/fourier_stress.hpp"
+#include "halfspace/stress/surface_traction.hpp"
 
 namespace halfspace::stress {
 
@@ -84,6 +87,14 @@ class SubsurfaceStress {
   // positive in compression): one forward FFT, kept for every depth. Throws
   // InputError if the size differs from the grid's or a value is not finite.
   void set_pressure(std::span<const double> pressure);
+
+  // Takes the pressure and the shear tractions beside it (surface_traction.hpp:
+  // Pa, the traction on this body, sigma_xz = -q_x and sigma_yz = -q_y at
+  // the surface; an empty span is no shear): one forward FFT each, kept for
+  // every depth; a later set_pressure drops them. Throws InputError as
+  // set_pressure does for each field, and for any shear on a coated
+  // half-space (the layered solution is solved for a normal traction only).
+  void set_tractions(const SurfaceTractions& tractions);
 
   // The stress (Pa, compression negative) at depth z (m, > 0) below every
   // cell centre: fields[c] (grid.size() values each) receives component c in
