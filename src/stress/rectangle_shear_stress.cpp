@@ -42,16 +42,16 @@ namespace {
 
 // Corner primitives at corner (s, t), depth z.
 struct CornerTerms {
-  double log_t = 0.0;         // ln(rho + t)
-  double log_s = 0.0;         // ln(rho + s)
-  double t_over = 0.0;        // t / (rho + z)
-  double s_over = 0.0;        // s / (rho + z)
-  double t_over_rho = 0.0;    // t / (rho (rho + z))
-  double s_over_rho = 0.0;    // s / (rho (rho + z))
-  double r_z = 0.0;           // -atan(s t / (z rho))
-  double r_xx = 0.0;          // s / (rho (rho + t))
-  double r_xz = 0.0;          // z / (rho (rho + t))
-  double r_xy = 0.0;          // 1 / rho
+  double log_t = 0.0;       // ln(rho + t)
+  double log_s = 0.0;       // ln(rho + s)
+  double t_over = 0.0;      // t / (rho + z)
+  double s_over = 0.0;      // s / (rho + z)
+  double t_over_rho = 0.0;  // t / (rho (rho + z))
+  double s_over_rho = 0.0;  // s / (rho (rho + z))
+  double r_z = 0.0;         // -atan(s t / (z rho))
+  double r_xx = 0.0;        // s / (rho (rho + t))
+  double r_xz = 0.0;        // z / (rho (rho + t))
+  double r_xy = 0.0;        // 1 / rho
 };
 
 // ln(rho + u) with rho = sqrt(u^2 + w2), w2 > 0, without the cancellation of

@@ -32,8 +32,7 @@ StressTensor point_force_stress(Traction direction, double x, double y, double z
   return s;
 }
 
-StressTensor integrated_point_forces(Traction direction, double x, double y, double z, double a, double b,
-                                     double nu) {
+StressTensor integrated_point_forces(Traction direction, double x, double y, double z, double a, double b, double nu) {
   const QuadratureRule rule = gauss_legendre(10);
   constexpr int kPanels = 24;
   StressTensor sum;
@@ -83,8 +82,8 @@ TEST(RectangleShearStressTest, MatchesIntegratedCerrutiPointForces) {
   for (const Traction direction : {Traction::shear_x, Traction::shear_y}) {
     for (const double nu : {0.3, 0.0, 0.5, -0.4}) {
       for (const Point& p : points) {
-        SCOPED_TRACE(::testing::Message() << (direction == Traction::shear_x ? "shear x" : "shear y")
-                                          << ", nu = " << nu << " at (" << p.x << ", " << p.y << ", " << p.z << ")");
+        SCOPED_TRACE(::testing::Message() << (direction == Traction::shear_x ? "shear x" : "shear y") << ", nu = " << nu
+                                          << " at (" << p.x << ", " << p.y << ", " << p.z << ")");
         expect_close(rectangle_shear_stress(direction, p.x, p.y, p.z, a, b, nu),
                      integrated_point_forces(direction, p.x, p.y, p.z, a, b, nu), kQuadratureTolerance);
       }

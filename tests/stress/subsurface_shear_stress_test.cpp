@@ -59,8 +59,8 @@ TEST(FourierShearStressTest, SatisfiesEquilibriumCompatibilityAndSurfaceTraction
   const Mode modes[] = {{1.0, 0.0, 0.7}, {0.6, -0.8, 0.3}, {-2.0, 1.5, 0.4}, {0.0, 3.0, 0.2}, {5e5, 2e5, 3e-6}};
   for (const Traction direction : {Traction::shear_x, Traction::shear_y}) {
     for (const Mode& m : modes) {
-      SCOPED_TRACE(::testing::Message() << "shear " << (direction == Traction::shear_x ? "x" : "y") << ", k = ("
-                                        << m.kx << ", " << m.ky << "), z = " << m.z);
+      SCOPED_TRACE(::testing::Message() << "shear " << (direction == Traction::shear_x ? "x" : "y") << ", k = (" << m.kx
+                                        << ", " << m.ky << "), z = " << m.z);
       const double q = std::hypot(m.kx, m.ky);
       const double h = 1e-3 / q;
       const Tensor s = tensor_of(fourier_shear_stress(direction, m.kx, m.ky, m.z, nu));
@@ -73,8 +73,7 @@ TEST(FourierShearStressTest, SatisfiesEquilibriumCompatibilityAndSurfaceTraction
       }
       // Equilibrium.
       for (int j = 0; j < 3; ++j) {
-        const std::complex<double> divergence =
-            ik[0] * s[0][j] + ik[1] * s[1][j] + (down[2][j] - up[2][j]) / (2.0 * h);
+        const std::complex<double> divergence = ik[0] * s[0][j] + ik[1] * s[1][j] + (down[2][j] - up[2][j]) / (2.0 * h);
         EXPECT_LT(std::abs(divergence), kDifferenceError * q * scale) << "equilibrium, row " << j;
       }
       // Compatibility: d_i d_j tr with d_z as the second difference.
@@ -174,8 +173,10 @@ TEST(SubsurfaceShearStressTest, PeriodicMatchesASumOverPeriodicImages) {
           for (int mx = -kImages; mx <= kImages; ++mx) {
             const double xi = x + mx * period;
             const double yi = y + my * period;
-            const StressTensor sx = rectangle_shear_stress(Traction::shear_x, xi, yi, depths[d], 0.5 * dx, 0.5 * dx, nu);
-            const StressTensor sy = rectangle_shear_stress(Traction::shear_y, xi, yi, depths[d], 0.5 * dx, 0.5 * dx, nu);
+            const StressTensor sx =
+                rectangle_shear_stress(Traction::shear_x, xi, yi, depths[d], 0.5 * dx, 0.5 * dx, nu);
+            const StressTensor sy =
+                rectangle_shear_stress(Traction::shear_y, xi, yi, depths[d], 0.5 * dx, 0.5 * dx, nu);
             for (std::size_t c = 0; c < kComponentCount; ++c) {
               sum[c] += shear_x[k] * component(sx, c) + shear_y[k] * component(sy, c);
             }
@@ -190,9 +191,10 @@ TEST(SubsurfaceShearStressTest, PeriodicMatchesASumOverPeriodicImages) {
         }
       }
     }
-    std::printf("shear, periodic vs image sum at %.0f cells depth: largest difference %.3g of the peak shear "
-                "(column %zu)\n",
-                depths[d] / dx, worst, worst_cell);
+    std::printf(
+        "shear, periodic vs image sum at %.0f cells depth: largest difference %.3g of the peak shear "
+        "(column %zu)\n",
+        depths[d] / dx, worst, worst_cell);
     EXPECT_LT(worst, bounds[d]) << "depth " << depths[d];
   }
 }
@@ -232,9 +234,10 @@ TEST(SubsurfaceShearStressTest, PeriodicMatchesFreeForAnIsolatedShear) {
   for (const bool line : {false, true}) {
     const double coarse = periodic_free_difference(12, line);
     const double fine = periodic_free_difference(24, line);
-    std::printf("shear, periodic vs free (%s): largest difference %.3g (12 cells per radius), %.3g (24) of the "
-                "peak shear\n",
-                line ? "line" : "plane", coarse, fine);
+    std::printf(
+        "shear, periodic vs free (%s): largest difference %.3g (12 cells per radius), %.3g (24) of the "
+        "peak shear\n",
+        line ? "line" : "plane", coarse, fine);
     EXPECT_LT(coarse, kSameQuestion);
     EXPECT_LT(fine, kSameQuestion);
   }
@@ -284,8 +287,8 @@ TEST(SubsurfaceShearStressTest, SingleCellFarAwayIsCerrutisPointForce) {
         worst_here = std::max(worst_here, e);
       }
     }
-    std::printf("single cell vs Cerruti's point force at %.0f cells depth: largest difference %.3g of F/z^2\n",
-                z / dx, worst_here);
+    std::printf("single cell vs Cerruti's point force at %.0f cells depth: largest difference %.3g of F/z^2\n", z / dx,
+                worst_here);
     // The cell's second moments, dx^2 / 12 about its centre, times the
     // field's second derivatives: O((dx / z)^2); measured 0.075 (dx / z)^2
     // at each depth.

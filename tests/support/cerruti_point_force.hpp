@@ -22,13 +22,13 @@ inline stress::StressTensor cerruti_point_force_stress(double x, double y, doubl
   const double m = 1.0 - 2.0 * nu;
   const double scale = 1.0 / (2.0 * std::numbers::pi);
   stress::StressTensor s;
-  s.xx = scale * (-3.0 * x * x * x / rho5 + m * (x / rho3 - 3.0 * x / (rho * rz2) + x * x * x / (rho3 * rz2) +
-                                                  2.0 * x * x * x / (rho2 * rz3)));
+  s.xx = scale * (-3.0 * x * x * x / rho5 +
+                  m * (x / rho3 - 3.0 * x / (rho * rz2) + x * x * x / (rho3 * rz2) + 2.0 * x * x * x / (rho2 * rz3)));
   s.yy = scale * (-3.0 * x * y * y / rho5 +
                   m * (x / rho3 - x / (rho * rz2) + x * y * y / (rho3 * rz2) + 2.0 * x * y * y / (rho2 * rz3)));
   s.zz = -3.0 * scale * x * z * z / rho5;
-  s.xy = scale * (-3.0 * x * x * y / rho5 +
-                  m * (-y / (rho * rz2) + x * x * y / (rho3 * rz2) + 2.0 * x * x * y / (rho2 * rz3)));
+  s.xy = scale *
+         (-3.0 * x * x * y / rho5 + m * (-y / (rho * rz2) + x * x * y / (rho3 * rz2) + 2.0 * x * x * y / (rho2 * rz3)));
   s.xz = -3.0 * scale * x * x * z / rho5;
   s.yz = -3.0 * scale * x * y * z / rho5;
   return s;
