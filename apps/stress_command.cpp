@@ -90,6 +90,12 @@ int run_stress(const StressOptions& o, const std::vector<std::string>& argv) {
         *o.nu, o.result, coating->layer.poissons_ratio, coating->substrate.poissons_ratio));
   }
   if (!coating && !o.nu) throw InputError(missing_poisson_ratio_message("--nu"));
+  if (coating && input.has_shear()) {
+    throw InputError(fmt::format(
+        "{} is a coated half-space's result with shear tractions (/shear_x, /shear_y): stresses under shear are "
+        "computed for homogeneous bodies only (the layered stress solution is solved for a normal traction only)",
+        o.result));
+  }
   if (coating) {
     try {
       stress::require_coated_stress_grid(grid, *coating);
@@ -98,10 +104,12 @@ int run_stress(const StressOptions& o, const std::vector<std::string>& argv) {
     }
   }
   const double nu = coating ? coating->layer.poissons_ratio : given_nu;
-  // The pressure read twice (reader and field), the transforms and one
-  // depth's fields: the depths are computed and written one at a time.
-  const double estimate = kProgramBytes + 16.0 * static_cast<double>(grid.size()) +
-                          stress::stress_memory_estimate(grid, coating.has_value());
+  // The pressure (and shear tractions) read twice (reader and field), the
+  // transforms and one depth's fields: the depths are computed and written
+  // one at a time.
+  const bool shear = input.has_shear();
+  const double estimate = kProgramBytes + (shear ? 48.0 : 16.0) * static_cast<double>(grid.size()) +
+                          stress::stress_memory_estimate(grid, coating.has_value(), shear);
   const std::string what = o.max_memory ? fmt::format("--max-memory {}", *o.max_memory) : "--max-memory";
   require_memory(fmt::format("stresses on the {} grid of {} (the transforms and one depth's 9 fields of {} cells "
                              "x 8 bytes at a time)",
@@ -115,7 +123,8 @@ int run_stress(const StressOptions& o, const std::vector<std::string>& argv) {
     std::unique_ptr<stress::SubsurfaceStress> stresses =
         coating ? std::make_unique<stress::SubsurfaceStress>(grid, *coating)
                 : std::make_unique<stress::SubsurfaceStress>(grid, nu);
-    maximum = io::write_stress_file(output, *stresses, input.pressure, depths, {o.result, join_command_line(argv)});
+    const stress::SurfaceTractions tractions{input.pressure, input.shear_x, input.shear_y};
+    maximum = io::write_stress_file(output, *stresses, tractions, depths, {o.result, join_command_line(argv)});
   }
   if (!o.quiet) {
     const auto row = [](std::string_view label, const std::string& value) {
@@ -128,6 +137,7 @@ int run_stress(const StressOptions& o, const std::vector<std::string>& argv) {
                                   grid.shape_string(), to_string(grid.boundary()), coating->thickness,
                                   coating->layer.poissons_ratio, coating->substrate.poissons_ratio)
                     : fmt::format("{} ({}), Poisson's ratio {}", grid.shape_string(), to_string(grid.boundary()), nu));
+    row("tractions", shear ? "pressure and shear (/shear_x, /shear_y)" : "pressure");
     row("depths", fmt::format("{} from {:.6g} m to {:.6g} m", depths.size(), depths.front(), depths.back()));
     const auto& m = maximum;
     row("max von Mises", fmt::format("{:.6g} Pa at x = {:.6g} m, y = {:.6g} m, z = {:.6g} m", m.value, m.x, m.y, m.z));
@@ -210,7 +220,8 @@ Command add_stress_command(CLI::App& program) {
   CLI::App* command =
       program.add_subcommand("stress", "Compute the subsurface stress field of a solved contact from its result file");
   command->footer(
-      "Stresses in Pa, tension positive (compression negative), z positive downwards; see docs/usage.md#stress.");
+      "Stresses in Pa, tension positive (compression negative), z positive downwards; a friction result's shear "
+      "tractions (/shear_x, /shear_y) are applied beside the pressure; see docs/usage.md#stress.");
   auto o = std::make_shared<StressOptions>();
   command->add_option("RESULT", o->result, "a result file of `halfspace solve` (HDF5)")->required();
   command->add_option("--depths", o->depths, "depths below the surface z1,z2,... (m, > 0)")->type_name("LIST");

@@ -113,6 +113,41 @@ std::optional<LayeredMaterial> read_coating(const std::filesystem::path& path) {
   return coating;
 }
 
+bool has_dataset(const std::filesystem::path& path, const char* name) {
+  const detail::ErrorPrintingOff quiet;
+  const detail::File file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
+  if (!file.valid()) fail(path, "it cannot be opened as HDF5");
+  return H5Lexists(file.get(), name, H5P_DEFAULT) > 0;
+}
+
+// A friction result's /shear_x and /shear_y (both or neither), each of the
+// pressure's shape, through the height map reader's checks.
+void read_shear(const std::filesystem::path& path, const HeightMap& pressure, ResultPressure& result) {
+  const bool x = has_dataset(path, "shear_x");
+  const bool y = has_dataset(path, "shear_y");
+  if (!x && !y) return;
+  if (x != y) {
+    fail(path, fmt::format("it has /{} but not /{}: a friction result holds both shear tractions",
+                           x ? "shear_x" : "shear_y", x ? "shear_y" : "shear_x"));
+  }
+  const auto read = [&](const char* name) {
+    HeightMap field;
+    try {
+      field = read_hdf5_height_map(path, fmt::format("/{}", name));
+    } catch (const FileError& error) {
+      fail(path, fmt::format("its {} cannot be read ({})", name, error.what()));
+    }
+    if (field.dimension != pressure.dimension || field.nx != pressure.nx || field.ny != pressure.ny) {
+      fail(path, fmt::format("its /{} has {} x {} values but /pressure has {} x {}: the shear tractions lie on the "
+                             "pressure's grid",
+                             name, field.ny, field.nx, pressure.ny, pressure.nx));
+    }
+    return std::vector<double>(field.heights.data(), field.heights.data() + field.heights.size());
+  };
+  result.shear_x = read("shear_x");
+  result.shear_y = read("shear_y");
+}
+
 }  // namespace
 
 ResultPressure read_result_pressure(const std::filesystem::path& path) {
@@ -145,8 +180,12 @@ ResultPressure read_result_pressure(const std::filesystem::path& path) {
                              field.dx, field.dy, field.heights.size(), error.what()));
     }
   }();
-  ResultPressure result{grid, std::vector<double>(field.heights.data(), field.heights.data() + field.heights.size()),
-                        read_coating(path)};
+  ResultPressure result{grid,
+                        std::vector<double>(field.heights.data(), field.heights.data() + field.heights.size()),
+                        read_coating(path),
+                        {},
+                        {}};
+  read_shear(path, field, result);
   return result;
 }
 

@@ -30,10 +30,17 @@ std::vector<std::size_t> volume_shape(const Grid& grid, std::size_t depth_count)
 
 stress::VonMisesMaximum write_stress_group(const Hdf5Node& root, stress::SubsurfaceStress& stresses,
                                            std::span<const double> pressure, std::span<const double> depths) {
+  return write_stress_group(root, stresses, stress::SurfaceTractions{pressure, {}, {}}, depths);
+}
+
+stress::VonMisesMaximum write_stress_group(const Hdf5Node& root, stress::SubsurfaceStress& stresses,
+                                           const stress::SurfaceTractions& tractions, std::span<const double> depths) {
   const Grid& grid = stresses.grid();
   stress::check_depths(grid, depths);
+  stresses.check_tractions(tractions);  // refused before the group is made
   const Hdf5Node group = root.create_group("stress");
   group.write_double_attribute("poisson_ratio", stresses.poisson_ratio());
+  group.write_string_attribute("tractions", tractions.has_shear() ? "pressure and shear" : "pressure");
   if (const std::optional<LayeredMaterial> coating = stresses.coating()) {
     // Which depths lie in the layer (z <= t), and the constants of each body.
     group.write_double_attribute("layer_thickness", coating->thickness);
@@ -57,7 +64,7 @@ stress::VonMisesMaximum write_stress_group(const Hdf5Node& root, stress::Subsurf
     fields.push_back(group.create_dataset(name, shape, "Pa", Compression::none));
   }
   const stress::VonMisesMaximum maximum =
-      stress::stresses_by_depth(stresses, pressure, depths, [&](const stress::StressSlice& slice) {
+      stress::stresses_by_depth(stresses, tractions, depths, [&](const stress::StressSlice& slice) {
         for (std::size_t c = 0; c < stress::kComponentCount; ++c) {
           fields[c].write_slabs(slice.index, slice.components[c]);
         }
@@ -79,9 +86,21 @@ std::uint64_t stress_group_bound(const Grid& grid, std::size_t depth_count) {
 stress::VonMisesMaximum write_stress_file(const std::filesystem::path& path, stress::SubsurfaceStress& stresses,
                                           std::span<const double> pressure, std::span<const double> depths,
                                           const StressFileMetadata& metadata) {
+  return write_stress_file(path, stresses, stress::SurfaceTractions{pressure, {}, {}}, depths, metadata);
+}
+
+stress::VonMisesMaximum write_stress_file(const std::filesystem::path& path, stress::SubsurfaceStress& stresses,
+                                          const stress::SurfaceTractions& tractions, std::span<const double> depths,
+                                          const StressFileMetadata& metadata) {
   const Grid& grid = stresses.grid();
-  const std::uint64_t bound = kHdf5SmallItemsBound + hdf5_dataset_bound(field_shape(grid), Compression::deflate) +
-                              stress_group_bound(grid, depths.size());
+  const std::span<const double> pressure = tractions.pressure;
+  const bool shear = tractions.has_shear();
+  stresses.check_tractions(tractions);  // refused before the file is made
+  const double surface_fields = shear ? 3.0 : 1.0;
+  const std::uint64_t bound =
+      kHdf5SmallItemsBound +
+      static_cast<std::uint64_t>(surface_fields) * hdf5_dataset_bound(field_shape(grid), Compression::deflate) +
+      stress_group_bound(grid, depths.size());
   stress::VonMisesMaximum maximum;
   write_large_hdf5_file(path, bound, [&](const Hdf5Node& root) {
     root.write_string_attribute("format", "halfspace-stress");
@@ -92,7 +111,12 @@ stress::VonMisesMaximum write_stress_file(const std::filesystem::path& path, str
     root.write_string_attribute("command_line", metadata.command_line);
     root.write_string_attribute("source", metadata.source);
     root.write_dataset("pressure", field_shape(grid), pressure, "Pa");
-    maximum = write_stress_group(root, stresses, pressure, depths);
+    if (shear) {
+      const std::vector<double> zero(tractions.shear_x.empty() || tractions.shear_y.empty() ? grid.size() : 0, 0.0);
+      root.write_dataset("shear_x", field_shape(grid), tractions.shear_x.empty() ? zero : tractions.shear_x, "Pa");
+      root.write_dataset("shear_y", field_shape(grid), tractions.shear_y.empty() ? zero : tractions.shear_y, "Pa");
+    }
+    maximum = write_stress_group(root, stresses, tractions, depths);
   });
   write_xdmf_sidecar(path, grid);  // for ParaView (xdmf_writer.hpp)
   return maximum;

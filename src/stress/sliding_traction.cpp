@@ -13,13 +13,13 @@ namespace halfspace::stress {
 SlidingShear gross_sliding_shear(std::span<const double> pressure, double friction_coefficient, double direction_x,
                                  double direction_y) {
   if (!(std::isfinite(friction_coefficient) && friction_coefficient >= 0.0)) {
-    throw InputError(fmt::format("friction coefficient mu = {} is invalid: it must be finite and >= 0",
-                                 friction_coefficient));
+    throw InputError(
+        fmt::format("friction coefficient mu = {} is invalid: it must be finite and >= 0", friction_coefficient));
   }
   const double length = std::hypot(direction_x, direction_y);
   if (!(std::isfinite(length) && length > 0.0)) {
-    throw InputError(fmt::format("sliding direction ({}, {}) is invalid: it must be finite and not zero", direction_x,
-                                 direction_y));
+    throw InputError(
+        fmt::format("sliding direction ({}, {}) is invalid: it must be finite and not zero", direction_x, direction_y));
   }
   SlidingShear shear{std::vector<double>(pressure.size()), std::vector<double>(pressure.size())};
   const double cx = friction_coefficient * direction_x / length;

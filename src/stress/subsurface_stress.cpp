@@ -200,7 +200,7 @@ struct SubsurfaceStress::Impl {
     }
   }
 
-  void set_tractions(const SurfaceTractions& tractions) {
+  void check_tractions(const SurfaceTractions& tractions) const {
     check_field(tractions.pressure, "pressure");
     if (!tractions.shear_x.empty()) check_field(tractions.shear_x, "shear traction along x");
     if (!tractions.shear_y.empty()) check_field(tractions.shear_y, "shear traction along y");
@@ -210,6 +210,10 @@ struct SubsurfaceStress::Impl {
           "(layered_fourier_stress.hpp) is solved for a normal surface traction only; compute the stresses of the "
           "pressure alone, or of a homogeneous body");
     }
+  }
+
+  void set_tractions(const SurfaceTractions& tractions) {
+    check_tractions(tractions);
     has_pressure = false;
     active = {true, !tractions.shear_x.empty(), !tractions.shear_y.empty()};
     const std::array<std::span<const double>, kTractionCount> fields = {tractions.pressure, tractions.shear_x,
@@ -574,6 +578,10 @@ void SubsurfaceStress::set_pressure(std::span<const double> pressure) {
 
 void SubsurfaceStress::set_tractions(const SurfaceTractions& tractions) {
   impl_->set_tractions(tractions);
+}
+
+void SubsurfaceStress::check_tractions(const SurfaceTractions& tractions) const {
+  impl_->check_tractions(tractions);
 }
 
 void SubsurfaceStress::compute(double depth, const std::array<std::span<double>, kComponentCount>& fields) {

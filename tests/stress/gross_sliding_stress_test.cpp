@@ -44,9 +44,9 @@ Contact cylinder(double load, std::size_t cells_per_half_width) {
   const Grid grid = Grid::line(n, hertz.half_width / static_cast<double>(cells_per_half_width), Boundary::free);
   std::vector<double> heights(n);
   for (std::size_t i = 0; i < n; ++i) heights[i] = -std::pow(centred_x(grid, i), 2) / (2.0 * kRadius);
-  const SolveResult result = solvers::solve_surface(
-      grid, heights, kEStar, Loading::force(load),
-      halfspace::testing::test_options(solvers::SolverType::pk_fourier, 1e-10));
+  const SolveResult result =
+      solvers::solve_surface(grid, heights, kEStar, Loading::force(load),
+                             halfspace::testing::test_options(solvers::SolverType::pk_fourier, 1e-10));
   EXPECT_TRUE(result.converged()) << result.message;
   return {grid, std::vector<double>(result.pressure.begin(), result.pressure.end()), hertz.half_width, hertz.peak};
 }
@@ -62,9 +62,9 @@ Contact sphere(double force, std::size_t cells_per_radius) {
       heights[j * n + i] = -(std::pow(centred_x(grid, i), 2) + std::pow(centred_y(grid, j), 2)) / (2.0 * kRadius);
     }
   }
-  const SolveResult result = solvers::solve_surface(
-      grid, heights, kEStar, Loading::force(force),
-      halfspace::testing::test_options(solvers::SolverType::pk_fourier, 1e-10));
+  const SolveResult result =
+      solvers::solve_surface(grid, heights, kEStar, Loading::force(force),
+                             halfspace::testing::test_options(solvers::SolverType::pk_fourier, 1e-10));
   EXPECT_TRUE(result.converged()) << result.message;
   return {grid, std::vector<double>(result.pressure.begin(), result.pressure.end()), hertz.radius, hertz.peak};
 }
@@ -106,9 +106,10 @@ TEST(GrossSlidingStressTest, CylinderTrailingEdgeStressIsMcEwens) {
     const double e_coarse = trailing_edge_stress(coarse, mu, nu) / coarse.peak;
     const double e_fine = trailing_edge_stress(fine, mu, nu) / fine.peak;
     const double e0 = extrapolated(e_coarse, e_fine, 4.0);
-    std::printf("cylinder, mu = %.1f: trailing-edge sigma_x = %.5f p0 (256 cells/b), %.5f (1024), extrapolated "
-                "%.5f; McEwen 2 mu p0 = %.5f p0\n",
-                mu, e_coarse, e_fine, e0, expected);
+    std::printf(
+        "cylinder, mu = %.1f: trailing-edge sigma_x = %.5f p0 (256 cells/b), %.5f (1024), extrapolated "
+        "%.5f; McEwen 2 mu p0 = %.5f p0\n",
+        mu, e_coarse, e_fine, e0, expected);
     EXPECT_NEAR(e0, expected, kExtrapolated) << "mu = " << mu;
     EXPECT_NEAR(e_fine, expected, kRawAtFine) << "mu = " << mu;
     // The error halves under a fourfold refinement (sqrt(h)).
@@ -122,7 +123,7 @@ TEST(GrossSlidingStressTest, CylinderTrailingEdgeStressIsMcEwens) {
 // sigma_x = p0 ((1 - 2 nu)/3 + (4 + nu) pi mu / 8).
 TEST(GrossSlidingStressTest, SphereTrailingEdgeStressIsHamiltonGoodmans) {
   // Measured: errors of 0.077 and 0.054 p0 at 24 and 48 cells per radius
-  // (mu = 0.3); extrapolated, within 1.5e-4 p0.
+  // (mu = 0.3); extrapolated, within 3e-4 p0.
   constexpr double kExtrapolated = 3e-3;  // of p0: the O(h) left by the extrapolation
   constexpr double kRawAtFine = 0.15;     // of p0 at 48 cells per radius: about sqrt(h)
   const double nu = 0.3;
@@ -133,9 +134,10 @@ TEST(GrossSlidingStressTest, SphereTrailingEdgeStressIsHamiltonGoodmans) {
     const double e_coarse = trailing_edge_stress(coarse, mu, nu) / coarse.peak;
     const double e_fine = trailing_edge_stress(fine, mu, nu) / fine.peak;
     const double e0 = extrapolated(e_coarse, e_fine, 2.0);
-    std::printf("sphere, mu = %.1f: trailing-edge sigma_x = %.5f p0 (24 cells/a), %.5f (48), extrapolated %.5f; "
-                "Hamilton-Goodman %.5f p0\n",
-                mu, e_coarse, e_fine, e0, expected);
+    std::printf(
+        "sphere, mu = %.1f: trailing-edge sigma_x = %.5f p0 (24 cells/a), %.5f (48), extrapolated %.5f; "
+        "Hamilton-Goodman %.5f p0\n",
+        mu, e_coarse, e_fine, e0, expected);
     EXPECT_NEAR(e0, expected, kExtrapolated) << "mu = " << mu;
     EXPECT_NEAR(e_fine, expected, kRawAtFine) << "mu = " << mu;
     EXPECT_LT(std::abs(expected - e_fine), std::abs(expected - e_coarse)) << "mu = " << mu;

@@ -15,6 +15,7 @@
 #include "halfspace/io/hdf5_output.hpp"
 #include "halfspace/stress/stress_volume.hpp"
 #include "halfspace/stress/subsurface_stress.hpp"
+#include "halfspace/stress/surface_traction.hpp"
 
 namespace halfspace::io {
 
@@ -29,6 +30,13 @@ namespace halfspace::io {
 // depth by depth. Returns the largest von Mises stress and its position.
 stress::VonMisesMaximum write_stress_group(const Hdf5Node& root, stress::SubsurfaceStress& stresses,
                                            std::span<const double> pressure, std::span<const double> depths);
+// The same under the pressure and the shear tractions beside it
+// (stress/surface_traction.hpp: q on the body whose stresses these are, Pa;
+// a friction result's /shear_x and /shear_y). The group's string attribute
+// `tractions` says which were used ("pressure" or "pressure and shear").
+// Throws InputError for a shear on a coated half-space.
+stress::VonMisesMaximum write_stress_group(const Hdf5Node& root, stress::SubsurfaceStress& stresses,
+                                           const stress::SurfaceTractions& tractions, std::span<const double> depths);
 
 // An upper bound on the bytes the /stress group adds to a file.
 std::uint64_t stress_group_bound(const Grid& grid, std::size_t depth_count);
@@ -45,6 +53,11 @@ struct StressFileMetadata {
 // output (output_file.hpp); throws FileError naming the path.
 stress::VonMisesMaximum write_stress_file(const std::filesystem::path& path, stress::SubsurfaceStress& stresses,
                                           std::span<const double> pressure, std::span<const double> depths,
+                                          const StressFileMetadata& metadata);
+// The same under the pressure and shear tractions; the file then also holds
+// the `/shear_x` and `/shear_y` they come from (a zero field for an empty span).
+stress::VonMisesMaximum write_stress_file(const std::filesystem::path& path, stress::SubsurfaceStress& stresses,
+                                          const stress::SurfaceTractions& tractions, std::span<const double> depths,
                                           const StressFileMetadata& metadata);
 
 }  // namespace halfspace::io

@@ -95,6 +95,9 @@ class SubsurfaceStress {
   // set_pressure does for each field, and for any shear on a coated
   // half-space (the layered solution is solved for a normal traction only).
   void set_tractions(const SurfaceTractions& tractions);
+  // The checks of set_tractions alone (no transform): what a writer calls
+  // before it creates a file.
+  void check_tractions(const SurfaceTractions& tractions) const;
 
   // The stress (Pa, compression negative) at depth z (m, > 0) below every
   // cell centre: fields[c] (grid.size() values each) receives component c in
