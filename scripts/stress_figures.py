@@ -5,12 +5,14 @@ Solves a Hertz sphere and a self-affine rough contact, runs `halfspace stress`
 on each result and draws: the Hertz cross-section (sigma_zz and von Mises in
 the x-z plane through the centre, with Johnson's axis solution), the rough
 contact's von Mises field (the x-z section through its maximum and the plan
-view at that depth), and a sphere on a hard coating (the interface stresses).
+view at that depth), a sphere on a hard coating (the interface stresses) and
+a sliding cylinder (gross sliding, q = mu p added to the result as a friction
+solve writes it: the surface stress against McEwen and the von Mises field).
 Prints the numbers quoted in docs/validation.md.
 
   scripts/stress_figures.py [--halfspace build/bin/halfspace]
                             [--out docs/figures/validation] [--work DIR]
-                            [--only hertz|rough|coated]
+                            [--only hertz|rough|coated|sliding]
 
 Needs Debian's python3 with matplotlib, h5py and numpy (scripts/install-deps.sh).
 """
@@ -227,19 +229,92 @@ def coated_section(program, work, out):
     save(fig, out, "stress_coated.png")
 
 
+def mcewen_surface_sigma_x(x, mu):
+    """McEwen (1949): sigma_x / p0 on the surface of a sliding cylinder, x in
+    units of b, the traction mu p along +x on the body."""
+    inside = np.abs(x) < 1
+    root = np.sqrt(np.abs(x * x - 1))
+    normal = np.where(inside, -root, 0.0)
+    tangential = np.where(inside, -2 * mu * x, -2 * mu * (x - np.sign(x) * root))
+    return normal + tangential
+
+
+def sliding_section(program, work, out):
+    """Cylinder R = 10 mm, P' = 1e5 N/m on a 1D free grid of 256 cells per
+    half-width; the result's /shear_x set to mu p (gross sliding along +x)."""
+    radius, load, cells = 0.01, 1e5, 256
+    b = np.sqrt(4 * load * radius / (np.pi * E_STAR))
+    p0 = 2 * load / (np.pi * b)
+    n = 4 * cells + 1
+    run(program, work, "solve", "--geometry", "cylinder", "--radius", str(radius), "--grid", str(n), "--size",
+        repr(n * b / cells), "--E-star", str(E_STAR), "--force", str(load), "--output", "cylinder.h5")
+    depths = np.concatenate([[0.01 * b / cells], np.linspace(0.01 * b, 1.2 * b, 120)])
+    fields = {}
+    for mu in (0.0, 0.2, 0.4):
+        name = f"sliding_{mu:.1f}"
+        with h5py.File(os.path.join(work, "cylinder.h5"), "r") as source:
+            pressure = source["pressure"][...]
+        subprocess.run(["cp", os.path.join(work, "cylinder.h5"), os.path.join(work, name + ".h5")], check=True)
+        with h5py.File(os.path.join(work, name + ".h5"), "r+") as f:
+            f["shear_x"] = mu * pressure
+            f["shear_y"] = np.zeros_like(pressure)
+        run(program, work, "stress", name + ".h5", "--depths", ",".join(f"{z:.17g}" for z in depths), "--nu",
+            str(NU), "--output", name + "_stress.h5")
+        fields[mu] = read_stress(os.path.join(work, name + "_stress.h5"))
+    dx = fields[0.0][1]["dx"]
+    x = (np.arange(n) - (n - 1) / 2) * dx / b
+    z = depths / b
+    fig, axes = plt.subplots(1, 4, figsize=(14, 3.6), constrained_layout=True)
+    keep = np.abs(x) <= 2.0
+    vmax = max(float(fields[mu][0]["von_mises"][:, keep].max()) for mu in fields) / p0
+    for panel, mu in zip(axes[:3], fields):
+        s, attrs = fields[mu]
+        vm = s["von_mises"][1:, keep] / p0
+        image = panel.pcolormesh(x[keep], z[1:], vm, cmap="magma", vmin=0, vmax=vmax, shading="nearest")
+        panel.contour(x[keep], z[1:], vm, 8, colors="white", linewidths=0.4, alpha=0.6)
+        xm = attrs["max_von_mises_x"] / b - (n - 1) / 2 * dx / b
+        zm = attrs["max_von_mises_z"] / b
+        panel.plot(xm, max(zm, z[1]), "c+", ms=10)
+        panel.invert_yaxis()
+        panel.set_xlabel("x / b")
+        panel.set_ylabel("z / b")
+        panel.set_title(f"von Mises / p0, μ = {mu}: max {attrs['max_von_mises'] / p0:.3f} at z = {zm:.3f} b",
+                        fontsize="small")
+        print(f"sliding cylinder, mu = {mu}: max von Mises {attrs['max_von_mises'] / p0:.4f} p0 at x = {xm:.3f} b, "
+              f"z = {zm:.4f} b; trailing-edge surface sigma_x "
+              f"{s['sigma_xx'][0, np.argmin(np.abs(x + 1))] / p0:.4f} p0 (McEwen {2 * mu:.4f})")
+    fig.colorbar(image, ax=axes[2], label="von Mises / p0")
+    panel = axes[3]
+    xs = np.linspace(-2, 2, 801)
+    for mu, colour in ((0.2, "tab:blue"), (0.4, "tab:red")):
+        panel.plot(xs, mcewen_surface_sigma_x(xs, mu), "-", color=colour, lw=0.8, label=f"McEwen, μ = {mu}")
+        panel.plot(x[keep][::8], fields[mu][0]["sigma_xx"][0, keep][::8] / p0, "o", ms=2.5, color=colour,
+                   label=f"halfspace, μ = {mu}")
+    panel.axvline(-1, color="0.6", lw=0.6)
+    panel.set_xlabel("x / b")
+    panel.set_ylabel("σxx / p0 at the surface")
+    panel.set_title("surface stress: 2 μ p0 at the trailing edge", fontsize="small")
+    panel.legend(fontsize="x-small")
+    panel.grid(True, alpha=0.3)
+    fig.suptitle(f"sliding cylinder (gross sliding, q = μ p along +x), 1D free grid, b = {cells} cells, ν = {NU}",
+                 fontsize="small")
+    save(fig, out, "stress_sliding.png")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--halfspace", default="build/bin/halfspace")
     parser.add_argument("--out", default="docs/figures/validation")
     parser.add_argument("--work", default=None)
-    parser.add_argument("--only", choices=("hertz", "rough", "coated"), default=None)
+    parser.add_argument("--only", choices=("hertz", "rough", "coated", "sliding"), default=None)
     args = parser.parse_args()
     program = os.path.abspath(args.halfspace)
     os.makedirs(args.out, exist_ok=True)
     with tempfile.TemporaryDirectory() as temporary:
         work = args.work or temporary
         os.makedirs(work, exist_ok=True)
-        for name, figure in (("hertz", hertz_section), ("rough", rough_section), ("coated", coated_section)):
+        for name, figure in (("hertz", hertz_section), ("rough", rough_section), ("coated", coated_section),
+                             ("sliding", sliding_section)):
             if args.only in (None, name):
                 figure(program, work, args.out)
 

@@ -48,9 +48,9 @@ fs::path sliding_sphere(const TempDir& dir, const std::vector<std::string>& data
 TEST(StressShearCliTest, AppliesTheShearTractionsOfAFrictionResult) {
   const TempDir dir;
   const fs::path result = sliding_sphere(dir);
-  const ProgramRun run = run_program({"stress", result.string(), "--depths", "1e-6,5e-6", "--nu", "0.3", "--output",
-                                      "stress.h5", "--threads", "1"},
-                                     dir.path());
+  const ProgramRun run = run_program(
+      {"stress", result.string(), "--depths", "1e-6,5e-6", "--nu", "0.3", "--output", "stress.h5", "--threads", "1"},
+      dir.path());
   ASSERT_EQ(run.exit_code, kExitOk) << run.err;
   EXPECT_NE(run.out.find("pressure and shear (/shear_x, /shear_y)"), std::string::npos) << run.out;
 
@@ -80,9 +80,9 @@ TEST(StressShearCliTest, RefusesShearItCannotTake) {
   {
     const TempDir dir;
     const fs::path result = sliding_sphere(dir, {"shear_x"});
-    expect_input_error(run_program({"stress", result.string(), "--depths", "1e-6", "--nu", "0.3", "--output", "s.h5"},
-                                   dir.path()),
-                       "it has /shear_x but not /shear_y");
+    expect_input_error(
+        run_program({"stress", result.string(), "--depths", "1e-6", "--nu", "0.3", "--output", "s.h5"}, dir.path()),
+        "it has /shear_x but not /shear_y");
   }
   {
     const TempDir dir;
@@ -92,9 +92,9 @@ TEST(StressShearCliTest, RefusesShearItCannotTake) {
       test::add_double_dataset(file.get(), "shear_x", {16, 64}, std::vector<double>(1024, 0.0));
       test::add_double_dataset(file.get(), "shear_y", {16, 64}, std::vector<double>(1024, 0.0));
     }
-    expect_input_error(run_program({"stress", result.string(), "--depths", "1e-6", "--nu", "0.3", "--output", "s.h5"},
-                                   dir.path()),
-                       "its /shear_x has 16 x 64 values but /pressure has 32 x 32");
+    expect_input_error(
+        run_program({"stress", result.string(), "--depths", "1e-6", "--nu", "0.3", "--output", "s.h5"}, dir.path()),
+        "its /shear_x has 16 x 64 values but /pressure has 32 x 32");
   }
   {
     // A coated half-space's result with shear: refused, naming why.
@@ -108,9 +108,8 @@ TEST(StressShearCliTest, RefusesShearItCannotTake) {
       test::add_double_attribute(file.get(), "substrate_E", 1e11);
       test::add_double_attribute(file.get(), "substrate_nu", 0.25);
     }
-    expect_input_error(
-        run_program({"stress", result.string(), "--depths", "1e-6", "--output", "s.h5"}, dir.path()),
-        "stresses under shear are computed for homogeneous bodies only");
+    expect_input_error(run_program({"stress", result.string(), "--depths", "1e-6", "--output", "s.h5"}, dir.path()),
+                       "stresses under shear are computed for homogeneous bodies only");
   }
 }
 
