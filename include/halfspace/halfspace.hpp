@@ -34,6 +34,7 @@
 #include "halfspace/solvers/solver_options.hpp"
 #include "halfspace/solvers/surface_solve.hpp"
 #include "halfspace/solvers/tangential_solver.hpp"
+#include "halfspace/stress/sliding_traction.hpp"
 #include "halfspace/stress/stress_volume.hpp"
 #include "halfspace/surface/preparation.hpp"
 #include "halfspace/surface/self_affine.hpp"

@@ -533,7 +533,7 @@ struct SubsurfaceStress::Impl {
   std::size_t quadrant_rows = 0;
   std::size_t quadrant_cols = 0;
   // Per traction, the coefficients at non-negative offsets (shears' made when first set).
-  std::array<std::array<std::vector<double>, kComponentCount>, 3> quadrants;
+  std::array<std::array<std::vector<double>, kComponentCount>, kTractionCount> quadrants;
   // Coated bodies (free grids): the remainder's spectrum at the current depth
   // (real part, or imaginary for xz and yz), on the coefficients' half spectrum.
   std::array<std::vector<double>, kComponentCount> remainder;
