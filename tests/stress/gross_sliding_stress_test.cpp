@@ -12,8 +12,11 @@
 #include <string>
 #include <vector>
 
+#include "halfspace/elastic_pair.hpp"
 #include "halfspace/error.hpp"
+#include "halfspace/operators/tangential_operator.hpp"
 #include "halfspace/solvers/surface_solve.hpp"
+#include "halfspace/solvers/tangential_solver.hpp"
 #include "halfspace/stress/sliding_traction.hpp"
 #include "halfspace/stress/stress_volume.hpp"
 #include "support/analytic_solutions.hpp"
@@ -181,6 +184,33 @@ TEST(GrossSlidingStressTest, CylinderYieldMovesToTheSurfaceAsFrictionGrows) {
   std::printf("the largest von Mises stress reaches the surface at mu = %.2f\n", surface_mu);
   EXPECT_GE(surface_mu, 0.25);
   EXPECT_LE(surface_mu, 0.3);
+}
+
+// The tangential solver under a force of exactly mu P slides grossly: its
+// shear is the sliding traction's, sign included (q along the force).
+TEST(GrossSlidingStressTest, SlidingTractionIsTheTangentialSolversGrossSliding) {
+  constexpr double kRounding = 1e-12;  // of mu p0
+  const double mu = 0.4;
+  const Contact c = sphere(10.0, 12);
+  const ElasticPair pair = ElasticPair::similar({2.1e11, 0.3});
+  TangentialOperator op(c.grid, pair);
+  solvers::TangentialOptions options;
+  options.friction_coefficient = mu;
+  TangentialSolver solver(op, options);
+  double normal_force = 0.0;
+  for (const double p : c.pressure) normal_force += p * c.grid.dx() * c.grid.dy();
+  const double angle = 0.3;  // a direction off the axes
+  const TangentialResult result = solver.solve(
+      c.pressure, TangentialLoading::force(mu * normal_force * std::cos(angle), mu * normal_force * std::sin(angle)),
+      TangentialState::unloaded(c.grid.size()));
+  ASSERT_TRUE(result.gross_sliding) << result.message;
+  const SlidingShear q = gross_sliding_shear(c.pressure, mu, std::cos(angle), std::sin(angle));
+  double worst = 0.0;
+  for (std::size_t k = 0; k < c.grid.size(); ++k) {
+    worst = std::max(worst, std::hypot(result.state.shear_x[static_cast<Eigen::Index>(k)] - q.x[k],
+                                       result.state.shear_y[static_cast<Eigen::Index>(k)] - q.y[k]));
+  }
+  EXPECT_LT(worst, kRounding * mu * c.peak);
 }
 
 TEST(GrossSlidingStressTest, SlidingTractionIsMuPAlongTheDirection) {
