@@ -31,8 +31,7 @@ std::string describe_tangential(const TangentialLoading& loading, const Grid& gr
   if (loading.control == TangentialControl::displacement) {
     return fmt::format("tangential displacement ({:.6g}, {:.6g}) m", loading.x, loading.y);
   }
-  return fmt::format("tangential force ({:.6g}, {:.6g}) {}", loading.x, loading.y,
-                     grid.dimension() == 1 ? "N/m" : "N");
+  return fmt::format("tangential force ({:.6g}, {:.6g}) {}", loading.x, loading.y, grid.dimension() == 1 ? "N/m" : "N");
 }
 
 void print_friction_summary(std::FILE* out, const SolveSetup& setup, std::span<const TangentialResult> steps) {
@@ -71,9 +70,9 @@ int run_frictional_solve(const SolveSetup& setup) {
       setup.plot ? std::optional<PlotTool>(find_plot_tool({"--plot", "drop --plot", {}})) : std::nullopt;
   const std::span<const double> heights(setup.heights.data(), static_cast<std::size_t>(setup.heights.size()));
 
-  std::optional<Activity> activity(std::in_place, fmt::format("solving the normal contact ({} on the {} grid)",
-                                                              solvers::to_string(setup.solver.type),
-                                                              setup.grid.shape_string()));
+  std::optional<Activity> activity(std::in_place,
+                                   fmt::format("solving the normal contact ({} on the {} grid)",
+                                               solvers::to_string(setup.solver.type), setup.grid.shape_string()));
   FrictionalSolveResult result;
   result.requested_steps = options.steps();
   {
@@ -99,16 +98,15 @@ int run_frictional_solve(const SolveSetup& setup) {
         progress.iteration(iteration, residual);
       };
     }
-    result.steps = solvers::solve_tangential_history(setup.grid, pair, result.normal, friction,
-                                                     setup.solver.fft_planning);
-    loads.assign(options.history.begin(), options.history.begin() + static_cast<std::ptrdiff_t>(
-                                                                         std::min(options.history.size(), result.steps.size())));
+    result.steps =
+        solvers::solve_tangential_history(setup.grid, pair, result.normal, friction, setup.solver.fft_planning);
+    loads.assign(options.history.begin(), options.history.begin() + static_cast<std::ptrdiff_t>(std::min(
+                                                                        options.history.size(), result.steps.size())));
   }
 
   io::ResultMetadata metadata = io::result_metadata(provenance(setup), setup.grid, heights);
-  metadata.contact_statistics =
-      analysis::contact_statistics(setup.grid, {result.normal.pressure.data(), setup.grid.size()},
-                                   {result.normal.gap.data(), setup.grid.size()});
+  metadata.contact_statistics = analysis::contact_statistics(
+      setup.grid, {result.normal.pressure.data(), setup.grid.size()}, {result.normal.gap.data(), setup.grid.size()});
   activity.emplace(fmt::format("writing {}", setup.output.string()));
   const bool history = options.steps() > 1 && !result.steps.empty();
   if (history) {
@@ -126,8 +124,8 @@ int run_frictional_solve(const SolveSetup& setup) {
   }
   bool plotted = true;
   if (plot) {
-    for (const std::string_view figure : history ? std::vector<std::string_view>{"maps", "friction"}
-                                                 : std::vector<std::string_view>{"maps"}) {
+    // The normal maps, then the loop (a history) and the stick/slip map.
+    for (const std::string_view figure : {"maps", "friction"}) {
       const std::string failure = run_plot_tool(*plot, figure, setup.output, setup.quiet);
       if (!failure.empty()) {
         fmt::print(stderr, "error: --plot: {}; the result is written to {}\n", failure, setup.output.string());

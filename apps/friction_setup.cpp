@@ -47,17 +47,17 @@ void with_friction_flags(const SolveOptions& o, Function&& function) {
     function();
   } catch (const solvers::SolverOptionError& error) {
     const std::string& option = error.option();
-    if (option == "tangential_load") throw InputError(fmt::format("{} {}", o.describe(tangential_key(o)), error.rule()));
+    if (option == "tangential_load")
+      throw InputError(fmt::format("{} {}", o.describe(tangential_key(o)), error.rule()));
     if (option == "sliding") throw InputError(fmt::format("{} {}", o.describe("sliding"), error.rule()));
     if (option == "tolerance") throw InputError(fmt::format("{} {}", o.describe("tangential-tol"), error.rule()));
     if (option == "adhesion") {
       throw InputError(fmt::format("{} {} ({})", o.describe("adhesion"), error.rule(), o.describe("friction")));
     }
     if (option == "pair") {
-      const std::string material =
-          o.e_star ? o.describe("E-star")
-                   : fmt::format("{}, {}, {}, {}", o.describe("E1"), o.describe("nu1"), o.describe("E2"),
-                                 o.describe("nu2"));
+      const std::string material = o.e_star ? o.describe("E-star")
+                                            : fmt::format("{}, {}, {}, {}", o.describe("E1"), o.describe("nu1"),
+                                                          o.describe("E2"), o.describe("nu2"));
       throw InputError(fmt::format("{} with {}: {} {}", o.describe("friction"), material, error.value(), error.rule()));
     }
     if (option == "coating") {
@@ -65,8 +65,7 @@ void with_friction_flags(const SolveOptions& o, Function&& function) {
                                    o.describe("friction")));
     }
     if (option == "processes") {
-      throw InputError(
-          fmt::format("{} on {} MPI processes {}", o.describe("friction"), error.value(), error.rule()));
+      throw InputError(fmt::format("{} on {} MPI processes {}", o.describe("friction"), error.value(), error.rule()));
     }
     throw InputError(fmt::format("{} {}", o.describe("friction"), error.rule()));
   }
@@ -85,7 +84,8 @@ std::vector<solvers::TangentialLoading> parse_tangential_steps(std::string_view 
     steps.push_back({control, x, y});
   };
   for (std::string_view part : split(text, ';')) {
-    if (part.empty()) throw InputError(fmt::format("{} is invalid: an empty step (two ';' in a row, or at an end)", what));
+    if (part.empty())
+      throw InputError(fmt::format("{} is invalid: an empty step (two ';' in a row, or at an end)", what));
     const std::vector<std::string_view> range = split(part, ':');
     if (range.size() == 1) {
       const auto [x, y] = parse_step(part, what);
@@ -111,49 +111,53 @@ std::vector<solvers::TangentialLoading> parse_tangential_steps(std::string_view 
   return steps;
 }
 
-std::optional<solvers::FrictionOptions> friction_from(const SolveOptions& o, bool coated,
-                                                      std::size_t normal_load_steps, int processes) {
+std::optional<solvers::FrictionOptions> friction_from(const SolveOptions& o, bool coated, std::size_t normal_load_steps,
+                                                      int processes) {
   const std::vector<std::string_view> tangential = [&] {
     std::vector<std::string_view> keys;
-    for (const auto& [key, given] : {std::pair{"tangential-force", o.tangential_force.has_value()},
-                                     std::pair{"tangential-displacement", o.tangential_displacement.has_value()},
-                                     std::pair{"sliding", o.sliding.has_value()},
-                                     std::pair{"tangential-tol", o.tangential_tol.has_value()}}) {
+    for (const auto& [key, given] :
+         {std::pair{"tangential-force", o.tangential_force.has_value()},
+          std::pair{"tangential-displacement", o.tangential_displacement.has_value()},
+          std::pair{"sliding", o.sliding.has_value()}, std::pair{"tangential-tol", o.tangential_tol.has_value()}}) {
       if (given) keys.emplace_back(key);
     }
     return keys;
   }();
   if (!o.friction) {
     if (!tangential.empty()) {
-      throw InputError(fmt::format("{} needs --friction MU (the Coulomb friction coefficient)",
-                                   o.describe(tangential.front())));
+      throw InputError(
+          fmt::format("{} needs --friction MU (the Coulomb friction coefficient)", o.describe(tangential.front())));
     }
     return std::nullopt;
   }
   const int loads = (o.tangential_force ? 1 : 0) + (o.tangential_displacement ? 1 : 0) + (o.sliding ? 1 : 0);
   if (loads == 0) {
-    throw InputError(fmt::format("{} needs a tangential load: --tangential-force QX[,QY], --tangential-displacement "
-                                 "DX[,DY] or --sliding X,Y",
-                                 o.describe("friction")));
+    throw InputError(
+        fmt::format("{} needs a tangential load: --tangential-force QX[,QY], --tangential-displacement "
+                    "DX[,DY] or --sliding X,Y",
+                    o.describe("friction")));
   }
   if (loads > 1) {
     std::vector<std::string> given;
     for (std::string_view key : {"tangential-force", "tangential-displacement", "sliding"}) {
       if (o.given(key)) given.push_back(o.describe(key));
     }
-    throw InputError(fmt::format("{} cannot be combined: give one of --tangential-force, --tangential-displacement, "
-                                 "--sliding",
-                                 fmt::join(given, " and ")));
+    throw InputError(
+        fmt::format("{} cannot be combined: give one of --tangential-force, --tangential-displacement, "
+                    "--sliding",
+                    fmt::join(given, " and ")));
   }
   if (normal_load_steps > 1) {
-    throw InputError(fmt::format("{} takes one normal load, not a load sweep: give a single --force, --mean-pressure "
-                                 "or --approach",
-                                 o.describe("friction")));
+    throw InputError(
+        fmt::format("{} takes one normal load, not a load sweep: give a single --force, --mean-pressure "
+                    "or --approach",
+                    o.describe("friction")));
   }
   if (o.stress_depths) {
-    throw InputError(fmt::format("{} cannot be combined with {} yet: run `halfspace stress` on the result, which "
-                                 "reads its /shear_x and /shear_y",
-                                 o.describe("stress-depths"), o.name("friction")));
+    throw InputError(
+        fmt::format("{} cannot be combined with {} yet: run `halfspace stress` on the result, which "
+                    "reads its /shear_x and /shear_y",
+                    o.describe("stress-depths"), o.name("friction")));
   }
   solvers::FrictionOptions friction;
   friction.friction_coefficient = *o.friction;

@@ -20,6 +20,25 @@ double normal_force(const Grid& grid, const SolveResult& normal) {
   return normal.pressure.sum() * grid.cell_area();
 }
 
+bool same_load(const TangentialLoading& a, const TangentialLoading& b) {
+  return a.control == b.control && a.x == b.x && a.y == b.y;
+}
+
+// The outcome of a step whose load is the previous step's: its state, no
+// slip increment, no dissipation, no iterations.
+TangentialResult repeated(const TangentialResult& previous) {
+  TangentialResult result = previous;
+  result.status = SolveStatus::converged;
+  result.message.clear();
+  result.dissipated_energy = 0.0;
+  result.iterations = 0;
+  result.residual = 0.0;
+  result.residual_history.clear();
+  result.operator_applications = 0;
+  result.wall_seconds = 0.0;
+  return result;
+}
+
 }  // namespace
 
 bool FrictionalSolveResult::converged() const {
@@ -61,6 +80,7 @@ std::vector<TangentialResult> solve_tangential_history(const Grid& grid, const E
   const std::span<const double> pressure(normal.pressure.data(), static_cast<std::size_t>(normal.pressure.size()));
   std::vector<TangentialResult> steps;
   steps.reserve(friction.steps());
+  std::vector<TangentialLoading> loads;  // what each step imposed
   TangentialState state = TangentialState::unloaded(grid.size());
   for (std::size_t k = 0; k < friction.steps(); ++k) {
     TangentialLoading loading;
@@ -74,7 +94,16 @@ std::vector<TangentialResult> solve_tangential_history(const Grid& grid, const E
       loading = friction.history[k];
     }
     current = k;
-    steps.push_back(solver.solve(pressure, loading, state));
+    if (k > 0 && same_load(loading, loads.back())) {
+      // A step that repeats the previous load (the turning point written at
+      // the end of one branch and the start of the next) leaves the state
+      // as it is: no slip increment anywhere, so the conditions hold as the
+      // previous step left them, and nothing is dissipated.
+      steps.push_back(repeated(steps.back()));
+    } else {
+      steps.push_back(solver.solve(pressure, loading, state));
+    }
+    loads.push_back(loading);
     if (!steps.back().converged()) break;
     state = steps.back().state;
   }

@@ -39,7 +39,7 @@ constexpr double kMu = 0.3;
 struct Hertz {
   double e_star = kE / (2.0 * (1.0 - kNu * kNu));
   double a = std::cbrt(3.0 * kForce * kRadius / (4.0 * e_star));  // contact radius
-  double g = kE / (2.0 * (1.0 + kNu));                             // shear modulus
+  double g = kE / (2.0 * (1.0 + kNu));                            // shear modulus
   // Cattaneo-Mindlin's tangential displacement scale 3 mu P/(16 a) (2 (2 - nu)/G)
   // (Johnson 1985, eq. 7.42; both bodies).
   double delta_scale = 3.0 * kMu * kForce / (16.0 * a) * 2.0 * (2.0 - kNu) / g;
@@ -48,11 +48,29 @@ struct Hertz {
 // The sphere on an n x n free grid 2.4 contact radii wide.
 std::vector<std::string> sphere(std::size_t n, const std::string& output, const std::vector<std::string>& extra) {
   const Hertz hertz;
-  std::vector<std::string> arguments{
-      "solve", "--geometry", "sphere", "--radius", fmt::format("{}", kRadius), "--grid", fmt::format("{}x{}", n, n),
-      "--size", fmt::format("{}", 2.4 * hertz.a), "--E1", fmt::format("{}", kE), "--nu1", fmt::format("{}", kNu),
-      "--E2", fmt::format("{}", kE), "--nu2", fmt::format("{}", kNu), "--force", fmt::format("{}", kForce),
-      "--output", output, "--threads", "1"};
+  std::vector<std::string> arguments{"solve",
+                                     "--geometry",
+                                     "sphere",
+                                     "--radius",
+                                     fmt::format("{}", kRadius),
+                                     "--grid",
+                                     fmt::format("{}x{}", n, n),
+                                     "--size",
+                                     fmt::format("{}", 2.4 * hertz.a),
+                                     "--E1",
+                                     fmt::format("{}", kE),
+                                     "--nu1",
+                                     fmt::format("{}", kNu),
+                                     "--E2",
+                                     fmt::format("{}", kE),
+                                     "--nu2",
+                                     fmt::format("{}", kNu),
+                                     "--force",
+                                     fmt::format("{}", kForce),
+                                     "--output",
+                                     output,
+                                     "--threads",
+                                     "1"};
   arguments.insert(arguments.end(), extra.begin(), extra.end());
   return arguments;
 }
@@ -75,9 +93,9 @@ TEST(FrictionCliTest, CattaneoMindlinSphereMatchesStickRadiusAndDisplacement) {
   const Hertz hertz;
   const double ratio = 0.5;  // Q / (mu P)
   const double q = ratio * kMu * kForce;
-  const ProgramRun run =
-      run_program(sphere(48, "cm.h5", {"--friction", fmt::format("{}", kMu), "--tangential-force", fmt::format("{}", q)}),
-                  dir.path());
+  const ProgramRun run = run_program(
+      sphere(48, "cm.h5", {"--friction", fmt::format("{}", kMu), "--tangential-force", fmt::format("{}", q)}),
+      dir.path());
   ASSERT_EQ(run.exit_code, kExitOk) << run.err;
   EXPECT_NE(run.out.find("stick fraction:"), std::string::npos) << run.out;
   EXPECT_FALSE(fs::exists(dir / "cm.csv"));  // one step: no history
@@ -197,6 +215,19 @@ TEST(FrictionCliTest, DisplacementControlAndGrossSliding) {
                 0.02 * 0.5 * kMu * kForce);
     EXPECT_EQ(test::read_double_attribute(file.get(), "tangential_approach_x"), delta);
   }
+  // A repeated load (a loop's turning point written twice) keeps the state
+  // and dissipates nothing.
+  run = run_program(sphere(32, "twice.h5", {"--friction", "0.3", "--tangential-force", "1.5;1.5;1.0"}), dir.path());
+  ASSERT_EQ(run.exit_code, kExitOk) << run.err;
+  {
+    std::string header;
+    const auto rows = read_csv(dir / "twice.csv", header);
+    ASSERT_EQ(rows.size(), 3u);
+    EXPECT_EQ(rows[1][3], rows[0][3]);
+    EXPECT_EQ(rows[1][6], 0.0);
+    EXPECT_GT(rows[0][6], 0.0);
+    EXPECT_LT(rows[2][3], rows[1][3]);
+  }
   // Gross sliding along y: every contact cell slips, Q = mu P along y.
   run = run_program(sphere(32, "s.h5", {"--friction", "0.3", "--sliding", "0,1"}), dir.path());
   ASSERT_EQ(run.exit_code, kExitOk) << run.err;
@@ -216,9 +247,9 @@ TEST(FrictionCliTest, ConfigKeysAndRigidBodyTwo) {
   // Incompressible body 1 on a rigid body 2: Dundurs' beta = 0, so the
   // problems uncouple and friction is solved (E2 = inf).
   const ProgramRun run =
-      run_program({"solve", "--geometry", "sphere", "--radius", "0.01", "--grid", "32x32", "--size", "4e-4", "--E1",
-                   "1e9", "--nu1", "0.5", "--E2", "inf", "--nu2", "0.3", "--force", "10", "--config", "f.toml",
-                   "--output", "r.h5", "--threads", "1"},
+      run_program({"solve", "--geometry", "sphere", "--radius", "0.01", "--grid",    "32x32", "--size", "4e-4",
+                   "--E1",  "1e9",        "--nu1",  "0.5",      "--E2", "inf",       "--nu2", "0.3",    "--force",
+                   "10",    "--config",   "f.toml", "--output", "r.h5", "--threads", "1"},
                   dir.path());
   ASSERT_EQ(run.exit_code, kExitOk) << run.err;
   const test::H5 file = test::open_file(dir / "r.h5");
@@ -233,9 +264,9 @@ TEST(FrictionCliTest, RefusalsNameTheOptions) {
     std::vector<std::string> arguments;
     std::vector<std::string> message;
   };
-  const std::vector<std::string> sphere_e_star{"solve",  "--geometry", "sphere",   "--radius", "0.01",  "--grid",
-                                               "32x32",  "--size",     "4e-4",     "--E-star", "1e11",  "--force",
-                                               "10",     "--output",   "bad.h5",   "--threads", "1"};
+  const std::vector<std::string> sphere_e_star{"solve", "--geometry", "sphere", "--radius",  "0.01", "--grid",
+                                               "32x32", "--size",     "4e-4",   "--E-star",  "1e11", "--force",
+                                               "10",    "--output",   "bad.h5", "--threads", "1"};
   auto with = [](std::vector<std::string> base, const std::vector<std::string>& extra) {
     base.insert(base.end(), extra.begin(), extra.end());
     return base;
@@ -256,23 +287,44 @@ TEST(FrictionCliTest, RefusalsNameTheOptions) {
       {sphere(16, "bad.h5", {"--friction", "0.3", "--sliding", "0,0"}), {"--sliding 0,0 is invalid", "not zero"}},
       {with(sphere_e_star, {"--friction", "0.3", "--tangential-force", "1"}),
        {"--friction 0.3 with --E-star 1e11", "friction needs each body's E and nu"}},
-      {{"solve", "--geometry", "sphere", "--radius", "0.01", "--grid", "32x32", "--size", "4e-4", "--E1", "2.1e11",
-        "--nu1", "0.3", "--E2", "inf", "--nu2", "0.3", "--force", "10", "--friction", "0.3", "--tangential-force", "1",
-        "--output", "bad.h5"},
+      {{"solve",  "--geometry",
+        "sphere", "--radius",
+        "0.01",   "--grid",
+        "32x32",  "--size",
+        "4e-4",   "--E1",
+        "2.1e11", "--nu1",
+        "0.3",    "--E2",
+        "inf",    "--nu2",
+        "0.3",    "--force",
+        "10",     "--friction",
+        "0.3",    "--tangential-force",
+        "1",      "--output",
+        "bad.h5"},
        {"--E2 inf", "is not elastically similar", "Dundurs' beta"}},
       {sphere(16, "bad.h5",
               {"--friction", "0.3", "--tangential-force", "1", "--adhesion", "md", "--work-of-adhesion", "0.1",
                "--adhesion-range", "1e-8"}),
        {"--adhesion md cannot be combined with friction", "--friction 0.3"}},
-      {{"solve", "--geometry", "sphere", "--radius", "0.01", "--grid", "32x32", "--size", "4e-4", "--layer-thickness",
-        "1e-5", "--layer-E", "1e11", "--layer-nu", "0.3", "--substrate-E", "2e11", "--substrate-nu", "0.3", "--force",
-        "10", "--friction", "0.3", "--tangential-force", "1", "--output", "bad.h5"},
+      {{"solve", "--geometry",        "sphere", "--radius",  "0.01", "--grid",     "32x32", "--size",
+        "4e-4",  "--layer-thickness", "1e-5",   "--layer-E", "1e11", "--layer-nu", "0.3",   "--substrate-E",
+        "2e11",  "--substrate-nu",    "0.3",    "--force",   "10",   "--friction", "0.3",   "--tangential-force",
+        "1",     "--output",          "bad.h5"},
        {"the coated half-space (--layer-*, --substrate-*) cannot be combined with friction", "--friction 0.3"}},
       {sphere(16, "bad.h5", {"--friction", "0.3", "--tangential-force", "1", "--stress-depths", "1e-5"}),
        {"--stress-depths 1e-5 cannot be combined with --friction", "halfspace stress"}},
-      {{"solve", "--geometry", "sphere", "--radius", "0.01", "--grid", "32x32", "--size", "4e-4", "--E1", "2.1e11",
-        "--nu1", "0.3", "--E2", "2.1e11", "--nu2", "0.3", "--force", "5,10", "--friction", "0.3", "--tangential-force",
-        "1", "--output", "bad.h5"},
+      {{"solve",  "--geometry",
+        "sphere", "--radius",
+        "0.01",   "--grid",
+        "32x32",  "--size",
+        "4e-4",   "--E1",
+        "2.1e11", "--nu1",
+        "0.3",    "--E2",
+        "2.1e11", "--nu2",
+        "0.3",    "--force",
+        "5,10",   "--friction",
+        "0.3",    "--tangential-force",
+        "1",      "--output",
+        "bad.h5"},
        {"--friction 0.3 takes one normal load, not a load sweep"}},
       {sphere(16, "bad.h5", {"--friction", "0.3", "--tangential-force", "1", "--tangential-tol", "2"}),
        {"--tangential-tol 2 is invalid"}},

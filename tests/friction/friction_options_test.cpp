@@ -1,11 +1,11 @@
 // FrictionOptions' rules (friction_options.hpp): each broken one a
 // SolverOptionError naming the option the front ends map to their flags.
+#include "halfspace/solvers/friction_options.hpp"
+
 #include <gtest/gtest.h>
 
 #include <limits>
 #include <string>
-
-#include "halfspace/solvers/friction_options.hpp"
 
 namespace halfspace {
 namespace {
@@ -71,28 +71,26 @@ TEST(FrictionOptions, RulesOfTheSolve) {
               history(0.3, {TangentialLoading::force(1.0)}).validate(plane, steel, normal, Loading::mean_pressure(1e6));
             }),
             "tangential_load");
-  EXPECT_EQ(refused_option([&] {
-              history(0.3, {TangentialLoading::force(1.0, 0.5)}).validate(line, steel, normal, ten);
-            }),
-            "tangential_load");
+  EXPECT_EQ(
+      refused_option([&] { history(0.3, {TangentialLoading::force(1.0, 0.5)}).validate(line, steel, normal, ten); }),
+      "tangential_load");
   EXPECT_EQ(refused_option([&] {
               history(0.3, {TangentialLoading::force(1.0)})
                   .validate(plane, ElasticPair::on_rigid({2.1e11, 0.3}), normal, ten);
             }),
             "pair");
   // An incompressible body on a rigid one is similar (beta = 0).
-  EXPECT_EQ(refused_option([&] {
-              history(0.3, {TangentialLoading::force(1.0)})
-                  .validate(plane, ElasticPair::on_rigid({1e9, 0.5}), normal, ten);
-            }),
-            "accepted");
+  EXPECT_EQ(
+      refused_option([&] {
+        history(0.3, {TangentialLoading::force(1.0)}).validate(plane, ElasticPair::on_rigid({1e9, 0.5}), normal, ten);
+      }),
+      "accepted");
   solvers::SolverOptions adhesive;
   adhesive.adhesion = solvers::SolverOptions::Adhesion{};
   adhesive.adhesion->law = AdhesionLaw{AdhesionLawType::maugis_dugdale, 0.1, 1e-8};
-  EXPECT_EQ(refused_option([&] {
-              history(0.3, {TangentialLoading::force(1.0)}).validate(plane, steel, adhesive, ten);
-            }),
-            "adhesion");
+  EXPECT_EQ(
+      refused_option([&] { history(0.3, {TangentialLoading::force(1.0)}).validate(plane, steel, adhesive, ten); }),
+      "adhesion");
   EXPECT_EQ(refused_option([] { FrictionOptions::refuse_coating(); }), "coating");
   EXPECT_EQ(refused_option([] { FrictionOptions::refuse_composite_modulus_only(); }), "pair");
   EXPECT_EQ(refused_option([] { FrictionOptions::refuse_processes(1); }), "accepted");

@@ -45,6 +45,9 @@ FrictionalSolveResult solve_frictional_surface(const Grid& grid, std::span<const
 
 // The tangential steps of `friction` under the converged normal solution
 // `normal` (its pressure), for a front end that made the normal solve itself.
+// A step whose load equals the previous step's (the turning point that ends
+// one branch of a loop and starts the next) is not solved again: its state
+// is the previous one, exactly (no slip increment), with no dissipation.
 std::vector<TangentialResult> solve_tangential_history(const Grid& grid, const ElasticPair& pair,
                                                        const SolveResult& normal, const FrictionOptions& friction,
                                                        FftPlanning planning = FftPlanning::estimate);
