@@ -53,9 +53,11 @@ std::string FrictionalSolveResult::failure() const {
   if (!normal.converged()) return fmt::format("the normal contact did not converge: {}", normal.message);
   for (std::size_t k = 0; k < steps.size(); ++k) {
     if (!steps[k].converged()) {
-      return fmt::format("tangential step {} of {} did not converge ({} iterations, residual {:.3g} > {:.3g}){}{}",
-                         k + 1, requested_steps, steps[k].iterations, steps[k].residual, steps[k].tolerance,
-                         steps[k].message.empty() ? "" : ": ", steps[k].message);
+      return steps[k].message.empty()
+                 ? fmt::format("tangential step {} of {} did not converge ({} iterations, residual {:.3g} > {:.3g})",
+                               k + 1, requested_steps, steps[k].iterations, steps[k].residual, steps[k].tolerance)
+                 : fmt::format("tangential step {} of {} did not converge: {}", k + 1, requested_steps,
+                               steps[k].message);
     }
   }
   if (steps.size() != requested_steps) {

@@ -138,12 +138,12 @@ TEST(FrictionCliTest, CattaneoMindlinSphereMatchesStickRadiusAndDisplacement) {
   const double c_exact = hertz.a * std::cbrt(1.0 - ratio);
   const double c = std::sqrt(stick_cells * dx * dx / std::numbers::pi);
   EXPECT_LE(std::abs(c - c_exact), dx) << "c = " << c << ", exact " << c_exact << ", dx " << dx;
-  // The tangential approach against Cattaneo-Mindlin's, within 2% (the
-  // library's grid convergence tests: 4e-4 at a/dx = 13 for the loading curve
-  // of the force-controlled solve; 2% leaves the discretised Hertz pressure).
+  // The tangential approach against Cattaneo-Mindlin's, within 0.5%
+  // (measured: -3.9e-4 here, -3.6e-4 and -4.0e-4 at a/dx = 13 and 27; the
+  // stick radius is off by 0.2 cells).
   const double delta_exact = hertz.delta_scale * (1.0 - std::pow(1.0 - ratio, 2.0 / 3.0));
   const double delta = test::read_double_attribute(file.get(), "tangential_approach_x");
-  EXPECT_NEAR(delta, delta_exact, 0.02 * delta_exact);
+  EXPECT_NEAR(delta, delta_exact, 5e-3 * delta_exact);
   EXPECT_EQ(test::read_int64_attribute(file.get(), "tangential_converged"), 1);
 }
 
@@ -174,7 +174,7 @@ TEST(FrictionCliTest, FrettingLoopDissipatesMindlinDeresiewiczEnergy) {
   const double loop = 9.0 * kMu * kMu * kForce * kForce / (10.0 * hertz.a) * 2.0 * (2.0 - kNu) / hertz.g *
                       (1.0 - std::pow(1.0 - x, 5.0 / 3.0) - 5.0 * x / 6.0 * (1.0 + std::pow(1.0 - x, 2.0 / 3.0)));
   // Within 5%: 13 cells across the contact radius and the steps' backward
-  // Euler dissipation (measured: 1%, and 0.9% with 24 steps a branch).
+  // Euler dissipation (measured: -0.86%, and -0.88% with 24 steps a branch).
   EXPECT_NEAR(cycle, loop, 0.05 * loop) << "cycle " << cycle << " J, Mindlin-Deresiewicz " << loop << " J";
   // The loop closes: back at Q*, the approach is the first visit's.
   EXPECT_NEAR(rows.back()[3], rows[5][3], 1e-3 * rows[5][3]);

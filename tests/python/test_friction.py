@@ -44,9 +44,9 @@ def test_cattaneo_mindlin_sphere():
     # Stick radius c = a (1 - Q/(mu P))^(1/3), as the radius of the stick cells' disc: within one cell (a/dx = 17).
     c = math.sqrt(stick.sum() * cell / math.pi)
     assert abs(c - A * (1 - ratio) ** (1 / 3)) <= surface.dx
-    # Tangential approach within 2% of Cattaneo-Mindlin's.
+    # Tangential approach within 0.5% of Cattaneo-Mindlin's (the program's test measures 4e-4).
     delta = result.friction["tangential_approach"][0]
-    assert delta == pytest.approx(DELTA_SCALE * (1 - (1 - ratio) ** (2 / 3)), rel=0.02)
+    assert delta == pytest.approx(DELTA_SCALE * (1 - (1 - ratio) ** (2 / 3)), rel=5e-3)
     # stick_fraction is over the contact cells.
     assert result.friction["stick_fraction"] == pytest.approx(stick.sum() / result.contact.sum())
     assert result.attributes["stick_fraction"] == result.friction["stick_fraction"]
