@@ -68,9 +68,10 @@ def test_fretting_history_dissipates_mindlin_deresiewicz_energy(tmp_path):
     x = amplitude
     loop = (9 * MU ** 2 * FORCE ** 2 / (10 * A) * 2 * (2 - NU) / G
             * (1 - (1 - x) ** (5 / 3) - 5 * x / 6 * (1 + (1 - x) ** (2 / 3))))
-    # 8 steps a branch on a 32^2 grid: within 6% of Mindlin-Deresiewicz (the
-    # program's test, 12 steps a branch, is held to 5%).
-    assert cycle == pytest.approx(loop, rel=0.06)
+    # 8 steps a branch on a 32^2 grid (a/dx = 13): within 5% of
+    # Mindlin-Deresiewicz (measured -0.85%; the steps' backward Euler
+    # dissipation and the grid).
+    assert cycle == pytest.approx(loop, rel=0.05)
     # Each step is a Result with that step's shear; the normal fields are shared.
     assert history[3].shear_x.sum() * history[3].dx ** 2 == pytest.approx(peak, rel=1e-9)
     assert history[-1].friction["step"] == len(loads) - 1
