@@ -4,6 +4,8 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
+#include <climits>
 #include <string>
 
 #include "halfspace/error.hpp"
@@ -51,6 +53,9 @@ void with_friction_flags(const SolveOptions& o, Function&& function) {
       throw InputError(fmt::format("{} {}", o.describe(tangential_key(o)), error.rule()));
     if (option == "sliding") throw InputError(fmt::format("{} {}", o.describe("sliding"), error.rule()));
     if (option == "tolerance") throw InputError(fmt::format("{} {}", o.describe("tangential-tol"), error.rule()));
+    if (option == "max_iterations") {
+      throw InputError(fmt::format("{} {}", o.describe("tangential-max-iter"), error.rule()));
+    }
     if (option == "adhesion") {
       throw InputError(fmt::format("{} {} ({})", o.describe("adhesion"), error.rule(), o.describe("friction")));
     }
@@ -118,7 +123,8 @@ std::optional<solvers::FrictionOptions> friction_from(const SolveOptions& o, boo
     for (const auto& [key, given] :
          {std::pair{"tangential-force", o.tangential_force.has_value()},
           std::pair{"tangential-displacement", o.tangential_displacement.has_value()},
-          std::pair{"sliding", o.sliding.has_value()}, std::pair{"tangential-tol", o.tangential_tol.has_value()}}) {
+          std::pair{"sliding", o.sliding.has_value()}, std::pair{"tangential-tol", o.tangential_tol.has_value()},
+          std::pair{"tangential-max-iter", o.tangential_max_iter.has_value()}}) {
       if (given) keys.emplace_back(key);
     }
     return keys;
@@ -176,6 +182,10 @@ std::optional<solvers::FrictionOptions> friction_from(const SolveOptions& o, boo
                                   parse_number(parts[1], o.describe("sliding"))};
   }
   if (o.tangential_tol) friction.tolerance = *o.tangential_tol;
+  // Beyond int, a limit is no limit: validate() sees the nearest int.
+  if (o.tangential_max_iter) {
+    friction.max_iterations = static_cast<int>(std::clamp<long long>(*o.tangential_max_iter, INT_MIN, INT_MAX));
+  }
   with_friction_flags(o, [&] {
     friction.validate();
     if (coated) solvers::FrictionOptions::refuse_coating();

@@ -1,5 +1,5 @@
 // The friction options of `halfspace solve` (--friction, --tangential-force,
-// --tangential-displacement, --sliding, --tangential-tol) mapped onto the
+// --tangential-displacement, --sliding, --tangential-tol, --tangential-max-iter) mapped onto the
 // library's FrictionOptions, whose validate() holds the rules; a broken rule
 // is restated with the flags (or config keys) it came from.
 #pragma once

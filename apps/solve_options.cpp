@@ -140,6 +140,8 @@ const std::array kOptions{
                 "gross sliding along the direction (X, Y): every contact cell at |q| = mu p, total force mu P"},
     SolveOption{"tangential-tol", &SolveOptions::tangential_tol, Kind::number, kFriction, "X",
                 "tolerance of the tangential solver's residual (the duality gap of Coulomb's law) [1e-6]"},
+    SolveOption{"tangential-max-iter", &SolveOptions::tangential_max_iter, Kind::integer, kFriction, "N",
+                "iteration limit of each tangential step [10000]"},
     SolveOption{"output", &SolveOptions::output, Kind::path, kOutput, "FILE",
                 "result file (HDF5), required; replaced if it exists"},
     SolveOption{"quiet", &SolveOptions::quiet, Kind::flag, kOutput, "",

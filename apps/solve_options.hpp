@@ -81,6 +81,7 @@ struct SolveOptions : GivenOptions {
   std::optional<std::string> tangential_displacement;
   std::optional<std::string> sliding;
   std::optional<double> tangential_tol;
+  std::optional<long long> tangential_max_iter;
   // Output.
   std::optional<std::string> output;
   bool quiet = false;

@@ -196,7 +196,8 @@ def sweep(heights: npt.NDArray[np.float64], dx: float, dy: float, boundary: str,
 def friction(heights: npt.NDArray[np.float64], dx: float, dy: float, boundary: str, E1: Optional[float], nu1: float,
              E2: float, nu2: float, coated: bool, mode: str, value: float, solver: dict[str, Any],
              threads: Optional[int], progress: Optional[Callable[[int, float], None]], mu: float, control: str,
-             loads: Sequence[Sequence[float]], tangential_tol: Optional[float], command_line: str,
+             loads: Sequence[Sequence[float]], tangential_tol: Optional[float], tangential_max_iter: Optional[int],
+             command_line: str,
              height_source: str, preparation: Sequence[str]) -> History: ...
 def read_result(path: str, step: int = -1) -> Result: ...
 def paper_reproduce(test: int, load: float) -> dict[str, Any]: ...

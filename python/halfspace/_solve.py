@@ -126,7 +126,8 @@ def solve(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
           coating: Optional[Mapping[str, float]] = None, friction: Optional[float] = None,
           tangential_force: Optional[Union[float, Sequence[float]]] = None,
           tangential_displacement: Optional[Union[float, Sequence[float]]] = None,
-          sliding: Optional[Sequence[float]] = None, tangential_tol: Optional[float] = None) -> _core.Result:
+          sliding: Optional[Sequence[float]] = None, tangential_tol: Optional[float] = None,
+          tangential_max_iter: Optional[int] = None) -> _core.Result:
     """Solves the contact of a rigid rough surface on an elastic half-space, frictionless or with friction.
 
     surface: a HeightMap, or a 1D/2D array of heights (m, peaks positive,
@@ -176,8 +177,9 @@ def solve(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
         with nu1 = 0.5); no adhesion, no coating. The result then has the
         fields ``shear_x``, ``shear_y`` (Pa), ``stick`` (bool), ``slip_x``,
         ``slip_y`` (m), ``tangential_displacement_x``, ``_y`` (m) as views,
-        and ``Result.friction`` the step's record; tangential_tol is the
-        tangential solver's tolerance (None: 1e-6). For several tangential
+        and ``Result.friction`` the step's record; tangential_tol and
+        tangential_max_iter are the tangential solver's tolerance and
+        iteration limit (None: 1e-6 and 10000). For several tangential
         loads in order use :func:`history`.
 
     The GIL is released while solving; Ctrl-C (KeyboardInterrupt) stops the
@@ -185,7 +187,8 @@ def solve(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
     ``Result.converged``, ``.status`` and ``.message``. Raises InputError for
     bad options, naming the keyword, its value and the rule.
     """
-    tangential = _tangential(friction, tangential_force, tangential_displacement, sliding, tangential_tol, plural=False)
+    tangential = _tangential(friction, tangential_force, tangential_displacement, sliding, tangential_tol,
+                             tangential_max_iter, plural=False)
     if tangential is not None:
         if initial_pressure is not None:
             raise _core.InputError("initial_pressure cannot be combined with friction")
@@ -254,14 +257,17 @@ def _pair(value, name: str, plural: bool):
                            (", or a sequence of them" if plural else "; use history() for several steps"))
 
 
-def _tangential(friction, tangential_force, tangential_displacement, sliding, tangential_tol, plural: bool):
-    """(mu, control, [[x, y], ...], tol) of the friction keywords, or None without friction."""
+def _tangential(friction, tangential_force, tangential_displacement, sliding, tangential_tol, tangential_max_iter,
+                plural: bool):
+    """(mu, control, [[x, y], ...], tol, max_iter) of the friction keywords, or None without friction."""
     loads = {"tangential_force": tangential_force, "tangential_displacement": tangential_displacement,
              "sliding": sliding}
     given = [name for name, value in loads.items() if value is not None]
     if friction is None:
-        if given or tangential_tol is not None:
-            raise _core.InputError(f"{(given or ['tangential_tol'])[0]} needs friction=MU (the Coulomb coefficient)")
+        extra = [name for name, value in (("tangential_tol", tangential_tol),
+                                          ("tangential_max_iter", tangential_max_iter)) if value is not None]
+        if given or extra:
+            raise _core.InputError(f"{(given + extra)[0]} needs friction=MU (the Coulomb coefficient)")
         return None
     if not given:
         raise _core.InputError(f"friction={friction!r} needs a tangential load: tangential_force, "
@@ -285,13 +291,13 @@ def _tangential(friction, tangential_force, tangential_displacement, sliding, ta
     else:
         steps = [_pair(value, name, plural)]
     control = {"tangential_force": "force", "tangential_displacement": "displacement", "sliding": "sliding"}[name]
-    return float(friction), control, steps, tangential_tol
+    return float(friction), control, steps, tangential_tol, tangential_max_iter
 
 
 def _friction(name, surface, dx, dy, e_star, E1, nu1, E2, nu2, boundary, force, mean_pressure, approach, solver, tol,
               max_iter, threads, progress, fft_planning, deflation_block, laws, coating, tangential):
     """The frictional solve behind solve(friction=...) and history()."""
-    mu, control, steps, tangential_tol = tangential
+    mu, control, steps, tangential_tol, tangential_max_iter = tangential
     height_map = _surface(surface, dx, dy)
     constants = {"E1": E1, "nu1": nu1, "E2": E2, "nu2": nu2}
     given = [key for key, value in constants.items() if value is not None]
@@ -308,11 +314,13 @@ def _friction(name, surface, dx, dy, e_star, E1, nu1, E2, nu2, boundary, force, 
                                          "threads": threads, "friction": mu,
                                          {"force": "tangential_force", "displacement": "tangential_displacement",
                                           "sliding": "sliding"}[control]: steps if len(steps) > 1 else steps[0],
-                                         "tangential_tol": tangential_tol})
+                                         "tangential_tol": tangential_tol,
+                                         "tangential_max_iter": tangential_max_iter})
     e1 = None if (e_star is not None or coating is not None) else float(E1)
     return _core.friction(height_map.heights, height_map.dx, height_map.dy or 0.0, boundary, e1,
                           float(nu1 or 0.0), float(E2 or 0.0), float(nu2 or 0.0), coating is not None, mode, value,
-                          options, threads, progress, mu, control, steps, tangential_tol, call, height_map.source,
+                          options, threads, progress, mu, control, steps, tangential_tol, tangential_max_iter, call,
+                          height_map.source,
                           list(height_map.preparation))
 
 
@@ -323,7 +331,8 @@ def history(surface: Union[HeightMap, np.ndarray], *, friction: float, dx: Optio
             approach: Optional[float] = None,
             tangential_force: Optional[Sequence[Union[float, Sequence[float]]]] = None,
             tangential_displacement: Optional[Sequence[Union[float, Sequence[float]]]] = None,
-            tangential_tol: Optional[float] = None, solver: str = "pk-multilevel", tol: float = 1e-10,
+            tangential_tol: Optional[float] = None, tangential_max_iter: Optional[int] = None,
+            solver: str = "pk-multilevel", tol: float = 1e-10,
             max_iter: Optional[int] = None, threads: Optional[int] = None,
             progress: Optional[ProgressCallback] = None, fft_planning: str = "measure",
             deflation_block: Optional[int] = None, hardness: Optional[float] = None,
@@ -341,7 +350,8 @@ def history(surface: Union[HeightMap, np.ndarray], *, friction: float, dx: Optio
     stick_fraction, dissipated_energy as numpy arrays, ``.save(path)`` the
     program's history file and CSV. A step that does not converge ends the
     history (see ``.converged``)."""
-    tangential = _tangential(friction, tangential_force, tangential_displacement, None, tangential_tol, plural=True)
+    tangential = _tangential(friction, tangential_force, tangential_displacement, None, tangential_tol,
+                             tangential_max_iter, plural=True)
     return _friction("history", surface, dx, dy, e_star, E1, nu1, E2, nu2, boundary, force, mean_pressure, approach,
                      solver, tol, max_iter, threads, progress, fft_planning, deflation_block,
                      _laws(hardness, None, None, None, None, None, None), coating, tangential)

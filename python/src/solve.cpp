@@ -322,10 +322,11 @@ Sweep sweep(const nb::object& heights, double dx, double dy, const std::string& 
 // A FrictionOptions rule restated with the keyword it came from.
 [[noreturn]] void restate_friction_rule(const solvers::SolverOptionError& error, const std::string& control) {
   const std::string& option = error.option();
-  const std::string keyword = option == "tangential_load" ? "tangential_" + control
-                              : option == "tolerance"     ? "tangential_tol"
-                              : option == "pair"          ? "E1, nu1, E2, nu2"
-                                                          : option;
+  const std::string keyword = option == "tangential_load"  ? "tangential_" + control
+                              : option == "tolerance"      ? "tangential_tol"
+                              : option == "max_iterations" ? "tangential_max_iter"
+                              : option == "pair"           ? "E1, nu1, E2, nu2"
+                                                           : option;
   if (option == "coating" || option == "processes" || (option == "pair" && error.value() == "E* only")) {
     throw InputError(fmt::format("{} {} (friction)", option == "pair" ? "e_star" : option, error.rule()));
   }
@@ -341,8 +342,9 @@ History friction(const nb::object& heights, double dx, double dy, const std::str
                  double nu1, double e2, double nu2, bool coated, const std::string& mode, double value,
                  const nb::dict& solver, std::optional<int> threads, nb::object progress, double mu,
                  const std::string& control, const std::vector<std::vector<double>>& loads,
-                 std::optional<double> tangential_tol, const std::string& command_line,
-                 const std::string& height_source, const std::vector<std::string>& preparation) {
+                 std::optional<double> tangential_tol, std::optional<int> tangential_max_iter,
+                 const std::string& command_line, const std::string& height_source,
+                 const std::vector<std::string>& preparation) {
   Problem problem = problem_from(heights, dx, dy, boundary);
   const Loading loading{control_mode(mode), value};
   solvers::SolverOptions options = solver_options(solver, problem.grid);
@@ -358,6 +360,7 @@ History friction(const nb::object& heights, double dx, double dy, const std::str
     }
   }
   if (tangential_tol) friction.tolerance = *tangential_tol;
+  if (tangential_max_iter) friction.max_iterations = *tangential_max_iter;
   std::optional<ElasticPair> pair;
   try {
     friction.validate();
@@ -410,8 +413,9 @@ void bind_solve(nb::module_& module) {
   module.def("friction", &friction, nb::arg("heights"), nb::arg("dx"), nb::arg("dy"), nb::arg("boundary"),
              nb::arg("E1").none(), nb::arg("nu1"), nb::arg("E2"), nb::arg("nu2"), nb::arg("coated"), nb::arg("mode"),
              nb::arg("value"), nb::arg("solver"), nb::arg("threads").none(), nb::arg("progress").none(), nb::arg("mu"),
-             nb::arg("control"), nb::arg("loads"), nb::arg("tangential_tol").none(), nb::arg("command_line"),
-             nb::arg("height_source"), nb::arg("preparation"));
+             nb::arg("control"), nb::arg("loads"), nb::arg("tangential_tol").none(),
+             nb::arg("tangential_max_iter").none(), nb::arg("command_line"), nb::arg("height_source"),
+             nb::arg("preparation"));
   module.def("solve", &solve, nb::arg("heights"), nb::arg("dx"), nb::arg("dy"), nb::arg("boundary"), nb::arg("e_star"),
              nb::arg("coating").none(), nb::arg("mode"), nb::arg("value"), nb::arg("solver"), nb::arg("threads").none(),
              nb::arg("initial_pressure").none(), nb::arg("progress").none(), nb::arg("command_line"),

@@ -238,6 +238,19 @@ TEST(FrictionCliTest, DisplacementControlAndGrossSliding) {
   EXPECT_NEAR(test::read_double_attribute(file.get(), "tangential_force_x"), 0.0, 1e-12 * kForce);
 }
 
+TEST(FrictionCliTest, AStepThatDoesNotConvergeEndsTheHistoryWithExitTwo) {
+  const TempDir dir;
+  const ProgramRun run = run_program(
+      sphere(16, "nc.h5", {"--friction", "0.3", "--tangential-force", "0.5;1;1.5", "--tangential-max-iter", "2"}),
+      dir.path());
+  EXPECT_EQ(run.exit_code, testing::kExitNotConverged) << run.err;
+  EXPECT_NE(run.err.find("error: tangential step 1 of 3 did not converge"), std::string::npos) << run.err;
+  const test::H5 file = test::open_file(dir / "nc.h5");
+  EXPECT_EQ(test::read_int64_attribute(file.get(), "history_steps"), 1);
+  EXPECT_EQ(test::read_int64_attribute(file.get(), "tangential_converged"), 0);
+  EXPECT_EQ(test::read_int64_attribute(file.get(), "tangential_iterations"), 2);
+}
+
 TEST(FrictionCliTest, ConfigKeysAndRigidBodyTwo) {
   const TempDir dir;
   {
@@ -328,6 +341,9 @@ TEST(FrictionCliTest, RefusalsNameTheOptions) {
        {"--friction 0.3 takes one normal load, not a load sweep"}},
       {sphere(16, "bad.h5", {"--friction", "0.3", "--tangential-force", "1", "--tangential-tol", "2"}),
        {"--tangential-tol 2 is invalid"}},
+      {sphere(16, "bad.h5", {"--friction", "0.3", "--tangential-force", "1", "--tangential-max-iter", "0"}),
+       {"--tangential-max-iter 0 is invalid"}},
+      {sphere(16, "bad.h5", {"--tangential-max-iter", "5"}), {"--tangential-max-iter 5 needs --friction MU"}},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.message.front());

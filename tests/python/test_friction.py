@@ -126,12 +126,21 @@ def test_sliding_and_displacement_control():
     (dict(friction=0.3, tangential_force=1.0, sliding=(1, 0)), "cannot be combined"),
     (dict(friction=0.3, tangential_force=(1.0, 2.0, 3.0)), "use history() for several steps"),
     (dict(friction=0.3, tangential_force=4.0), "tangential_force=4,0 is invalid"),
+    (dict(friction=0.3, tangential_force=1.0, tangential_max_iter=0), "tangential_max_iter=0 is invalid"),
+    (dict(tangential_tol=1e-6), "tangential_tol needs friction=MU"),
     (dict(friction=0.3, tangential_force=1.0, adhesion="md", work_of_adhesion=0.1, adhesion_range=1e-8),
      "adhesion=md cannot be combined with friction"),
 ])
 def test_refusals_name_the_keyword(keywords, message):
     with pytest.raises(hs.InputError, match=message.replace("(", r"\(").replace(")", r"\)")):
         hs.solve(sphere(16), **STEEL, force=FORCE, threads=1, **keywords)
+
+
+def test_a_step_that_does_not_converge_ends_the_history():
+    history = hs.history(sphere(16), **STEEL, force=FORCE, friction=MU, tangential_force=[0.5, 1.0, 1.5],
+                         tangential_max_iter=2, threads=1, fft_planning="estimate")
+    assert not history.converged
+    assert len(history) == 1 and not history[0].friction["converged"] and history[0].friction["iterations"] == 2
 
 
 def test_material_refusals():
