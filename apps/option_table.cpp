@@ -53,7 +53,7 @@ void set_from_text(GivenOptions& options, const BoundOption& spec, const std::st
     case OptionKind::number:
       *std::get<std::optional<double>*>(spec.slot) = parse_number(text, what);
       break;
-    case OptionKind::number_or_infinity:
+    case OptionKind::modulus:
       *std::get<std::optional<double>*>(spec.slot) =
           text == "inf" || text == "+inf" ? std::numeric_limits<double>::infinity() : parse_number(text, what);
       break;
@@ -116,8 +116,8 @@ void set_from_toml(const BoundOption& spec, const toml::node& node, const std::f
   };
   switch (spec.kind) {
     case OptionKind::number:
-    case OptionKind::number_or_infinity: {
-      // TOML's inf is a float: only number_or_infinity's callers accept it.
+    case OptionKind::modulus: {
+      // TOML's inf is a float: a modulus may be it (a rigid body).
       if (!node.is_number()) throw wrong_type("a number");
       *std::get<std::optional<double>*>(spec.slot) = *node.value<double>();
       break;

@@ -22,15 +22,15 @@
 namespace halfspace::app {
 
 enum class OptionKind {
-  number,              // double
-  number_or_infinity,  // double; "inf" too (a rigid body's modulus)
-  numbers,             // doubles: one number, a list "A,B,C" or a range "START:STOP:COUNT"; a TOML array too
-  integer,             // long long
-  text,                // string
-  path,                // string; relative paths in a config file are relative to the file
-  dimensions,          // string "N" or "AxB"; a config file may also give a bare number
-  memory,              // string "8G", "512M" or bytes; a config file may also give a whole number of bytes
-  flag,                // bool, no value
+  number,      // double
+  modulus,     // double; "inf" too (a rigid body's modulus)
+  numbers,     // doubles: one number, a list "A,B,C" or a range "START:STOP:COUNT"; a TOML array too
+  integer,     // long long
+  text,        // string
+  path,        // string; relative paths in a config file are relative to the file
+  dimensions,  // string "N" or "AxB"; a config file may also give a bare number
+  memory,      // string "8G", "512M" or bytes; a config file may also give a whole number of bytes
+  flag,        // bool, no value
 };
 
 // What a subcommand's options record besides their values: where each came

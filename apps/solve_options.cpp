@@ -62,7 +62,7 @@ const std::array kOptions{
     SolveOption{"boundary", &SolveOptions::boundary, Kind::text, kGrid, "TYPE", "periodic or free [free]"},
     SolveOption{"E1", &SolveOptions::e1, Kind::number, kMaterial, "PA", "Young's modulus of body 1 (Pa)"},
     SolveOption{"nu1", &SolveOptions::nu1, Kind::number, kMaterial, "NU", "Poisson's ratio of body 1"},
-    SolveOption{"E2", &SolveOptions::e2, Kind::number_or_infinity, kMaterial, "PA",
+    SolveOption{"E2", &SolveOptions::e2, Kind::modulus, kMaterial, "PA",
                 "Young's modulus of body 2 (Pa); inf for a rigid body 2"},
     SolveOption{"nu2", &SolveOptions::nu2, Kind::number, kMaterial, "NU", "Poisson's ratio of body 2"},
     SolveOption{"E-star", &SolveOptions::e_star, Kind::number, kMaterial, "PA",
