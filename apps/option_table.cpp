@@ -9,6 +9,7 @@
 #include <array>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 
 #include "halfspace/error.hpp"
 #include "value_parsing.hpp"
@@ -51,6 +52,10 @@ void set_from_text(GivenOptions& options, const BoundOption& spec, const std::st
   switch (spec.kind) {
     case OptionKind::number:
       *std::get<std::optional<double>*>(spec.slot) = parse_number(text, what);
+      break;
+    case OptionKind::modulus:
+      *std::get<std::optional<double>*>(spec.slot) =
+          text == "inf" || text == "+inf" ? std::numeric_limits<double>::infinity() : parse_number(text, what);
       break;
     case OptionKind::numbers:
       *std::get<std::optional<std::vector<double>>*>(spec.slot) = parse_number_list(text, what);
@@ -110,7 +115,9 @@ void set_from_toml(const BoundOption& spec, const toml::node& node, const std::f
                                   toml_type_name(node)));
   };
   switch (spec.kind) {
-    case OptionKind::number: {
+    case OptionKind::number:
+    case OptionKind::modulus: {
+      // TOML's inf is a float: a modulus may be it (a rigid body).
       if (!node.is_number()) throw wrong_type("a number");
       *std::get<std::optional<double>*>(spec.slot) = *node.value<double>();
       break;

@@ -23,6 +23,7 @@ namespace halfspace::app {
 
 enum class OptionKind {
   number,      // double
+  modulus,     // double; "inf" too (a rigid body's modulus)
   numbers,     // doubles: one number, a list "A,B,C" or a range "START:STOP:COUNT"; a TOML array too
   integer,     // long long
   text,        // string

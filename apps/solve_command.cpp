@@ -14,6 +14,7 @@
 
 #include "activity.hpp"
 #include "exit_codes.hpp"
+#include "friction_command.hpp"
 #include "halfspace/analysis/contact_statistics.hpp"
 #include "halfspace/io/result_metadata.hpp"
 #include "halfspace/io/result_writer.hpp"
@@ -31,6 +32,8 @@
 namespace halfspace::app {
 
 int run_solve(const SolveSetup& setup) {
+  // Friction: one process (several are refused by make_solve_setup).
+  if (setup.friction) return run_frictional_solve(setup);
   // Several MPI processes, or one MPI process and a solve it distributes.
   if (const std::optional<int> code = run_distributed_solve(setup)) return *code;
   const std::string on_grid =

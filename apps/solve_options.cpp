@@ -24,6 +24,8 @@ constexpr std::string_view kInterface = "Interface law";
 constexpr std::string_view kSolver = "Solver";
 constexpr std::string_view kOutput = "Output";
 constexpr std::string_view kStress = "Subsurface stresses (single solves)";
+constexpr std::string_view kFriction =
+    "Friction (Coulomb; needs E1, nu1, E2, nu2 of elastically similar bodies; one normal load)";
 constexpr std::string_view kAdhesion = "Adhesion (a cohesive law beside the hard wall; --approach may be negative)";
 
 const std::array kOptions{
@@ -60,7 +62,8 @@ const std::array kOptions{
     SolveOption{"boundary", &SolveOptions::boundary, Kind::text, kGrid, "TYPE", "periodic or free [free]"},
     SolveOption{"E1", &SolveOptions::e1, Kind::number, kMaterial, "PA", "Young's modulus of body 1 (Pa)"},
     SolveOption{"nu1", &SolveOptions::nu1, Kind::number, kMaterial, "NU", "Poisson's ratio of body 1"},
-    SolveOption{"E2", &SolveOptions::e2, Kind::number, kMaterial, "PA", "Young's modulus of body 2 (Pa)"},
+    SolveOption{"E2", &SolveOptions::e2, Kind::modulus, kMaterial, "PA",
+                "Young's modulus of body 2 (Pa); inf for a rigid body 2"},
     SolveOption{"nu2", &SolveOptions::nu2, Kind::number, kMaterial, "NU", "Poisson's ratio of body 2"},
     SolveOption{"E-star", &SolveOptions::e_star, Kind::number, kMaterial, "PA",
                 "composite modulus E* (Pa), instead of E1, nu1, E2, nu2"},
@@ -121,6 +124,24 @@ const std::array kOptions{
     SolveOption{"adhesion-precondition", &SolveOptions::adhesion_precondition, Kind::text, kAdhesion, "on|off",
                 "on: the adhesive solver runs conjugate gradients preconditioned by the compliance (adhesive-pcg); "
                 "off: spectral projected gradients (adhesive-spg, 5-15x slower; docs/solvers.md) [on]"},
+    // Friction (docs/usage.md#friction).
+    SolveOption{"friction", &SolveOptions::friction, Kind::number, kFriction, "MU",
+                "Coulomb friction coefficient mu (>= 0): solve the shear tractions, stick and slip under "
+                "--tangential-force, --tangential-displacement or --sliding"},
+    SolveOption{"tangential-force", &SolveOptions::tangential_force, Kind::text, kFriction, "QX[,QY][;...]",
+                "tangential force that body 1 exerts on body 2: N (2D) or N/m (1D, x only); several steps "
+                "separated by ';' (quote them), or START:STOP:COUNT evenly spaced (each end QX or QX,QY), make a "
+                "history applied in order, each step from the previous state"},
+    SolveOption{"tangential-displacement", &SolveOptions::tangential_displacement, Kind::text, kFriction,
+                "DX[,DY][;...]",
+                "tangential rigid-body displacement of body 1 against body 2 (m); steps and ranges as "
+                "--tangential-force"},
+    SolveOption{"sliding", &SolveOptions::sliding, Kind::text, kFriction, "X,Y",
+                "gross sliding along the direction (X, Y): every contact cell at |q| = mu p, total force mu P"},
+    SolveOption{"tangential-tol", &SolveOptions::tangential_tol, Kind::number, kFriction, "X",
+                "tolerance of the tangential solver's residual (the duality gap of Coulomb's law) [1e-6]"},
+    SolveOption{"tangential-max-iter", &SolveOptions::tangential_max_iter, Kind::integer, kFriction, "N",
+                "iteration limit of each tangential step [10000]"},
     SolveOption{"output", &SolveOptions::output, Kind::path, kOutput, "FILE",
                 "result file (HDF5), required; replaced if it exists"},
     SolveOption{"quiet", &SolveOptions::quiet, Kind::flag, kOutput, "",
@@ -138,6 +159,9 @@ const std::vector<AlternativeGroup> kAlternatives{
      {{"E1", "nu1", "E2", "nu2"}, {"E1", "nu1", "E2", "nu2"}},
      {{"layer-thickness", "layer-E", "layer-nu", "substrate-E", "substrate-nu"},
       {"layer-thickness", "layer-E", "layer-nu", "substrate-E", "substrate-nu"}}},
+    {{{"tangential-force"}, {"tangential-force"}},
+     {{"tangential-displacement"}, {"tangential-displacement"}},
+     {{"sliding"}, {"sliding"}}},
     {{{"height-map"}, {"height-map", "dataset", "dx", "dy", "format", "unit", "window", "invalid", "detrend", "pad"}},
      {{"geometry"}, {"geometry", "radius", "wavelength", "amplitude", "grid", "size"}}},
 };

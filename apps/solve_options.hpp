@@ -73,6 +73,15 @@ struct SolveOptions : GivenOptions {
   std::optional<double> adhesion_range;
   std::optional<double> adhesion_stress;
   std::optional<std::string> adhesion_precondition;  // on or off
+  // Friction (docs/usage.md#friction): Coulomb's coefficient and the
+  // tangential load steps ("QX[,QY];..." or ranges, as written) or a sliding
+  // direction "X,Y".
+  std::optional<double> friction;
+  std::optional<std::string> tangential_force;
+  std::optional<std::string> tangential_displacement;
+  std::optional<std::string> sliding;
+  std::optional<double> tangential_tol;
+  std::optional<long long> tangential_max_iter;
   // Output.
   std::optional<std::string> output;
   bool quiet = false;

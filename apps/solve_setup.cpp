@@ -18,7 +18,9 @@
 #include <vector>
 
 #include "activity.hpp"
+#include "friction_setup.hpp"
 #include "grid_options.hpp"
+#include "halfspace/elastic_pair.hpp"
 #include "halfspace/error.hpp"
 #include "halfspace/fft/fft_wisdom.hpp"
 #include "halfspace/geometry/builtin_surface.hpp"
@@ -29,6 +31,7 @@
 #include "halfspace/material.hpp"
 #include "halfspace/memory_estimate.hpp"
 #include "halfspace/solvers/adhesion_law.hpp"
+#include "halfspace/solvers/frictional_solve.hpp"
 #include "halfspace/solvers/solver_factory.hpp"
 #include "halfspace/stress/stress_volume.hpp"
 #include "halfspace/stress/subsurface_stress.hpp"
@@ -37,6 +40,7 @@
 #include "halfspace/threads.hpp"
 #include "memory_check.hpp"
 #include "physical_ranges.hpp"
+#include "processes.hpp"
 #include "stress_command.hpp"
 #include "value_parsing.hpp"
 
@@ -109,8 +113,14 @@ double material_from(const SolveOptions& o) {
     throw InputError(
         fmt::format("incomplete material: missing {} (give all of E1, nu1, E2, nu2, or E-star)", join_names(missing)));
   }
-  const double e_star =
-      composite_modulus({require_modulus(o, "E1", *o.e1), *o.nu1}, {require_modulus(o, "E2", *o.e2), *o.nu2});
+  // A rigid body 2 (--E2 inf) adds no compliance: E* = E1 / (1 - nu1^2).
+  const bool rigid2 = std::isinf(*o.e2) && *o.e2 > 0.0;
+  const double e1 = require_modulus(o, "E1", *o.e1);
+  const double e_star = rigid2 ? in_context(o.describe("E2"),
+                                            [&] {
+                                              return ElasticPair({e1, *o.nu1}, {*o.e2, *o.nu2}).composite_modulus();
+                                            })
+                               : composite_modulus({e1, *o.nu1}, {require_modulus(o, "E2", *o.e2), *o.nu2});
   // nu near -1 makes a body's compliance vanish and E* grow without bound.
   return require_in_range(fmt::format("the composite modulus E* = {:g} Pa of {}, {}, {}, {}", e_star, o.describe("E1"),
                                       o.describe("nu1"), o.describe("E2"), o.describe("nu2")),
@@ -717,6 +727,11 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
   fs::path output = output_from(options);
   const std::optional<MemoryLimit> limit = memory_limit(options.max_memory, options.describe("max-memory"));
   const StressRequest stress = stress_request_from(options, load_values.size(), coating.has_value());
+  // Friction (--friction with a tangential load): its flags and the
+  // combinations it refuses, before the surface is read.
+  const std::optional<solvers::FrictionOptions> friction =
+      friction_from(options, coating.has_value(), load_values.size(), process_count());
+  const std::size_t history_steps = friction ? friction->steps() : 0;
   const GridCheck check_grid = [&](const Grid& grid, const std::string& request) {
     check_load_scale(options, grid, loading.mode, load_values);
     // Hardness cap: no load above H times the domain area.
@@ -727,7 +742,8 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
     }
     const std::string what = fmt::format("{}: {}", request, solve_description(grid, solver, load_values.size()));
     const double estimate = std::max(solve_memory_estimate(grid, solver, load_values.size()),
-                                     stress_peak_memory(grid, stress.depths.size(), coating.has_value()));
+                                     stress_peak_memory(grid, stress.depths.size(), coating.has_value())) +
+                            (friction ? solvers::friction_memory_estimate(grid, history_steps) : 0.0);
     if (share.check_memory) {
       // A process holding some rows runs the distributed solve (what is not
       // distributed is refused on several processes before it starts); a
@@ -743,7 +759,7 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
       require_memory(what, estimate, limit);
     }
   };
-  check_outputs_against_inputs(options, output, load_values.size() > 1, solver.fft_planning);
+  check_outputs_against_inputs(options, output, load_values.size() > 1 || history_steps > 1, solver.fft_planning);
 
   Surface surface = [&] {
     if (options.geometry && share.rows) return builtin_surface(options, boundary, check_grid, share.rows);
@@ -775,6 +791,11 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
       stress::check_depths(surface.grid, stress.depths);
     });
   }
+  std::optional<ElasticPair> pair;
+  if (friction) {
+    pair = friction_pair_from(options);
+    check_friction(options, *friction, surface.grid, *pair, solver, loading);
+  }
   const std::size_t first_row = surface.first_row;
   return SolveSetup{std::move(surface.grid),
                     std::move(surface.heights),
@@ -793,7 +814,9 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
                     options.plot,
                     stress.depths,
                     stress.nu,
-                    coating};
+                    coating,
+                    friction,
+                    pair};
 }
 
 std::string coating_text(const LayeredMaterial& coating) {

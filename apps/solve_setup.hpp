@@ -11,12 +11,14 @@
 #include <utility>
 #include <vector>
 
+#include "halfspace/elastic_pair.hpp"
 #include "halfspace/fft/fft_planning.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/io/hdf5_height_map_reader.hpp"
 #include "halfspace/layered_material.hpp"
 #include "halfspace/linalg/communicator.hpp"
 #include "halfspace/solvers/contact_solver.hpp"
+#include "halfspace/solvers/friction_options.hpp"
 #include "halfspace/solvers/loading.hpp"
 #include "halfspace/solvers/solver_options.hpp"
 #include "memory_check.hpp"
@@ -51,6 +53,11 @@ struct SolveSetup {
   // A coated half-space (--layer-*, --substrate-*); e_star is then the
   // layer's E1/(1 - nu1^2), its modulus against the rigid surface.
   std::optional<LayeredMaterial> coating;
+  // Friction (--friction with --tangential-force, --tangential-displacement
+  // or --sliding): the tangential steps and the pair of bodies (E1, nu1, E2,
+  // nu2), both set or neither.
+  std::optional<solvers::FrictionOptions> friction;
+  std::optional<ElasticPair> pair;
 };
 
 // "t = 1e-06 m, layer E1 = 3e+09 Pa, nu1 = 0.35 on substrate E2 = ... (E* is the layer's)".

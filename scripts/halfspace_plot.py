@@ -13,12 +13,16 @@ Subcommands (PNG files are written next to the input unless --out is given):
   sweep FILE.h5            contact fraction and mean gap (or approach) against
                            the mean pressure of a sweep file (1D datasets
                            /sweep/mean_pressure, /sweep/contact_fraction, ...)
+  friction FILE.h5         a frictional result (solve --friction): the
+                           tangential force Q_x against the approach
+                           delta_x of a history (the fretting loop, from
+                           /history) and the stick/slip map of the last step
   paper DIR                the Table 1 reproduction figures from DIR/testN.h5
                            (written by `halfspace paper`, docs/paper.md)
 
 --out names the output: a file ending in .png for a command that draws one
 figure, else a directory. Also importable: plot_maps, plot_profile,
-plot_sweep and plot_paper take a path and return the PNG paths written.
+plot_sweep, plot_friction and plot_paper take a path and return the PNG paths written.
 
 Needs Debian's python3 with python3-matplotlib, python3-h5py and
 python3-numpy (scripts/install-deps.sh); the shebang names /usr/bin/python3
@@ -223,6 +227,59 @@ def plot_profile(path, row=None, out=None, step=None):
     return [_save(fig, _output_path(path, suffix, out))]
 
 
+# ---------------------------------------------------------------- friction
+
+
+def plot_friction(path, out=None):
+    """The loop Q_x against delta_x of a friction history (if the file is one) and the stick/slip map."""
+    if not os.path.isfile(path):
+        raise PlotError(f"{path}: no such file")
+    with h5py.File(path, "r") as f:
+        if "stick" not in f or "contact" not in f:
+            raise PlotError(f"{path}: not a frictional result (no /stick; solve with --friction)")
+        history = {name: np.asarray(f["history"][name][...]) for name in f["history"]} if "history" in f else None
+        stick = np.asarray(f["stick"][...])
+        contact = np.asarray(f["contact"][...])
+        dx = float(_attr(f, "dx", 1.0))
+        dy = float(_attr(f, "dy", 0.0)) or dx
+        one_d = int(_attr(f, "dimension", stick.ndim)) == 1
+    # 0 out of contact, 1 slip, 2 stick.
+    state = np.where(contact > 0, np.where(stick > 0, 2, 1), 0)
+    fig, axes = plt.subplots(1, 2 if history is not None else 1, figsize=(11 if history is not None else 6, 4.2),
+                             constrained_layout=True)
+    axes = np.atleast_1d(axes)
+    if history is not None:
+        delta = history["delta_x"]
+        lscale, lunit = length_unit(max(float(np.max(np.abs(delta))), 1e-300) * 10)
+        force_unit = "N/m" if one_d else "N"
+        axes[0].plot(np.concatenate([[0.0], delta * lscale]), np.concatenate([[0.0], history["Q_x"]]), "o-",
+                     color="tab:purple", ms=3)
+        axes[0].set_xlabel(f"tangential approach delta_x ({lunit})")
+        axes[0].set_ylabel(f"tangential force Q_x ({force_unit})")
+        axes[0].set_title(f"{len(delta)} steps, dissipated {np.sum(history['dissipated_energy']):.3g} "
+                          f"{'J/m' if one_d else 'J'}", fontsize="small")
+        axes[0].grid(True, alpha=0.3)
+    axis = axes[-1]
+    cmap = matplotlib.colors.ListedColormap(["white", "tab:orange", "tab:blue"])
+    if one_d:
+        scale, unit = length_unit(state.size * dx)
+        axis.step(np.arange(state.size) * dx * scale, state, where="mid", color="black")
+        axis.set_yticks([0, 1, 2], ["out", "slip", "stick"])
+        axis.set_xlabel(f"x ({unit})")
+    else:
+        ny, nx = state.shape
+        scale, unit = length_unit(max(nx * dx, ny * dy))
+        image = axis.imshow(state, origin="lower", extent=(0, nx * dx * scale, 0, ny * dy * scale), cmap=cmap,
+                            vmin=0, vmax=2, interpolation="nearest", aspect="equal")
+        colorbar = fig.colorbar(image, ax=axis, shrink=0.85, ticks=[0, 1, 2])
+        colorbar.ax.set_yticklabels(["out", "slip", "stick"])
+        axis.set_xlabel(f"x ({unit})")
+        axis.set_ylabel(f"y ({unit})")
+    axis.set_title("stick and slip" + (" (last step)" if history is not None else ""), fontsize="small")
+    fig.suptitle(os.path.basename(path), fontsize="small")
+    return [_save(fig, _output_path(path, "_friction", out))]
+
+
 # ---------------------------------------------------------------- sweeps
 
 
@@ -385,6 +442,7 @@ def main(argv=None):
     for name, help_text in (("maps", "height, pressure and contact maps of a result file"),
                             ("profile", "a line profile through a result file"),
                             ("sweep", "contact fraction and mean gap against load"),
+                            ("friction", "the fretting loop and the stick/slip map of a frictional result"),
                             ("paper", "the Table 1 figures from a `halfspace paper` directory")):
         sub = commands.add_parser(name, help=help_text)
         sub.add_argument("path", metavar="DIR" if name == "paper" else "FILE.h5")
@@ -401,6 +459,8 @@ def main(argv=None):
             written = plot_profile(args.path, args.row, args.out, args.step)
         elif args.command == "sweep":
             written = plot_sweep(args.path, args.out)
+        elif args.command == "friction":
+            written = plot_friction(args.path, args.out)
         else:
             written = plot_paper(args.path, args.out)
     except (PlotError, OSError) as error:

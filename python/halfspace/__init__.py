@@ -21,9 +21,9 @@ import os as _os
 _os.environ.setdefault("OMP_WAIT_POLICY", "passive")
 
 from . import _core  # noqa: E402
-from ._core import FileError, InputError, Result, Sweep  # noqa: E402
+from ._core import FileError, History, InputError, Result, Sweep  # noqa: E402
 from ._height_map import HeightMap, read_height_map  # noqa: E402
-from ._solve import composite_modulus, read_result, solve, subsurface_stress, sweep  # noqa: E402
+from ._solve import composite_modulus, history, read_result, solve, subsurface_stress, sweep  # noqa: E402
 from . import generate, paper  # noqa: E402
 
 __version__ = _core.__version__
@@ -31,11 +31,13 @@ __version__ = _core.__version__
 __all__ = [
     "FileError",
     "HeightMap",
+    "History",
     "InputError",
     "Result",
     "Sweep",
     "composite_modulus",
     "generate",
+    "history",
     "paper",
     "read_height_map",
     "read_result",

@@ -116,6 +116,41 @@ class Result:
         """The result file's root attributes."""
     def save(self, path: str) -> None:
         """Writes the HDF5 file `halfspace solve` writes, and its XDMF sidecar (`.xdmf`, for ParaView) beside it."""
+    # Friction: None for a frictionless result.
+    @property
+    def shear_x(self) -> Optional[npt.NDArray[np.float64]]: ...
+    @property
+    def shear_y(self) -> Optional[npt.NDArray[np.float64]]: ...
+    @property
+    def slip_x(self) -> Optional[npt.NDArray[np.float64]]: ...
+    @property
+    def slip_y(self) -> Optional[npt.NDArray[np.float64]]: ...
+    @property
+    def tangential_displacement_x(self) -> Optional[npt.NDArray[np.float64]]: ...
+    @property
+    def tangential_displacement_y(self) -> Optional[npt.NDArray[np.float64]]: ...
+    @property
+    def stick(self) -> Optional[npt.NDArray[np.bool_]]: ...
+    @property
+    def friction(self) -> Optional[dict[str, Any]]:
+        """friction_coefficient, tangential_force, tangential_approach,
+        stick_fraction, slip_fraction, dissipated_energy, gross_sliding,
+        converged, status, message, iterations, residual, step."""
+
+class History:
+    """A tangential load history: one Result per step and the history table."""
+
+    def __len__(self) -> int: ...
+    def __getitem__(self, step: int) -> Result: ...
+    @property
+    def normal(self) -> Result: ...
+    @property
+    def converged(self) -> bool: ...
+    @property
+    def table(self) -> dict[str, npt.NDArray[np.float64]]:
+        """step, Q_x, Q_y, delta_x, delta_y, stick_fraction, dissipated_energy."""
+    def save(self, path: str) -> None:
+        """Writes the history file, its CSV and its XDMF sidecar."""
 
 class Sweep:
     """A load sweep: one Result per step and the summary table."""
@@ -158,5 +193,11 @@ def sweep(heights: npt.NDArray[np.float64], dx: float, dy: float, boundary: str,
           coating: Optional[Sequence[float]], mode: str, values: Sequence[float], solver: dict[str, Any], threads: Optional[int], warm_start: bool,
           progress: Optional[Callable[[int, float], None]], command_line: str, height_source: str,
           preparation: Sequence[str]) -> Sweep: ...
+def friction(heights: npt.NDArray[np.float64], dx: float, dy: float, boundary: str, E1: Optional[float], nu1: float,
+             E2: float, nu2: float, coated: bool, mode: str, value: float, solver: dict[str, Any],
+             threads: Optional[int], progress: Optional[Callable[[int, float], None]], mu: float, control: str,
+             loads: Sequence[Sequence[float]], tangential_tol: Optional[float], tangential_max_iter: Optional[int],
+             command_line: str,
+             height_source: str, preparation: Sequence[str]) -> History: ...
 def read_result(path: str, step: int = -1) -> Result: ...
 def paper_reproduce(test: int, load: float) -> dict[str, Any]: ...

@@ -123,8 +123,12 @@ def solve(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
           adhesion: Optional[str] = None, work_of_adhesion: Optional[float] = None,
           adhesion_range: Optional[float] = None, adhesion_stress: Optional[float] = None,
           adhesion_tol: Optional[float] = None, adhesion_precondition: Optional[bool] = None,
-          coating: Optional[Mapping[str, float]] = None) -> _core.Result:
-    """Solves the frictionless contact of a rigid rough surface on an elastic half-space.
+          coating: Optional[Mapping[str, float]] = None, friction: Optional[float] = None,
+          tangential_force: Optional[Union[float, Sequence[float]]] = None,
+          tangential_displacement: Optional[Union[float, Sequence[float]]] = None,
+          sliding: Optional[Sequence[float]] = None, tangential_tol: Optional[float] = None,
+          tangential_max_iter: Optional[int] = None) -> _core.Result:
+    """Solves the contact of a rigid rough surface on an elastic half-space, frictionless or with friction.
 
     surface: a HeightMap, or a 1D/2D array of heights (m, peaks positive,
         ``(ny, nx)``) with ``dx`` (and ``dy``) in m. float64 C-contiguous
@@ -164,12 +168,34 @@ def solve(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
         E1..nu2 (the indenter is rigid; ``Result.e_star`` is the layer's
         E1*). Solvers pk, pk-fourier, pk-multilevel; no adhesion; any grid
         (profiles too). ``Result.coating`` holds it.
+    friction: Coulomb's coefficient mu (>= 0), with exactly one of
+        tangential_force ``(QX, QY)`` or QX (N, N/m for a profile),
+        tangential_displacement ``(DX, DY)`` or DX (m, the rigid tangential
+        displacement of body 1 against body 2), or sliding ``(X, Y)`` (gross
+        sliding along that direction: every contact cell at mu p). Needs E1,
+        nu1, E2, nu2 of elastically similar bodies (E2 may be ``inf``, rigid,
+        with nu1 = 0.5); no adhesion, no coating. The result then has the
+        fields ``shear_x``, ``shear_y`` (Pa), ``stick`` (bool), ``slip_x``,
+        ``slip_y`` (m), ``tangential_displacement_x``, ``_y`` (m) as views,
+        and ``Result.friction`` the step's record; tangential_tol and
+        tangential_max_iter are the tangential solver's tolerance and
+        iteration limit (None: 1e-6 and 10000). For several tangential
+        loads in order use :func:`history`.
 
     The GIL is released while solving; Ctrl-C (KeyboardInterrupt) stops the
     solve within about 0.1 s. Non-convergence is not an exception: see
     ``Result.converged``, ``.status`` and ``.message``. Raises InputError for
     bad options, naming the keyword, its value and the rule.
     """
+    tangential = _tangential(friction, tangential_force, tangential_displacement, sliding, tangential_tol,
+                             tangential_max_iter, plural=False)
+    if tangential is not None:
+        if initial_pressure is not None:
+            raise _core.InputError("initial_pressure cannot be combined with friction")
+        return _friction("solve", surface, dx, dy, e_star, E1, nu1, E2, nu2, boundary, force, mean_pressure,
+                         approach, solver, tol, max_iter, threads, progress, fft_planning, deflation_block,
+                         _laws(hardness, adhesion, work_of_adhesion, adhesion_range, adhesion_stress, adhesion_tol,
+                               adhesion_precondition), coating, tangential)[0]
     height_map = _surface(surface, dx, dy)
     layers = _coating(coating, e_star, E1, nu1, E2, nu2)
     modulus = 0.0 if layers else _material(e_star, E1, nu1, E2, nu2)
@@ -218,6 +244,117 @@ def sweep(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
     return _core.sweep(height_map.heights, height_map.dx, height_map.dy or 0.0, boundary, modulus, layers, mode,
                        values, options, threads, warm_start, progress, call, height_map.source,
                        list(height_map.preparation))
+
+
+def _pair(value, name: str, plural: bool):
+    """One tangential step (x, y) from a number or a pair."""
+    array = np.asarray(value, dtype=np.float64)
+    if array.ndim == 0:
+        return [float(array), 0.0]
+    if array.shape == (2,):
+        return [float(array[0]), float(array[1])]
+    raise _core.InputError(f"{name} must be a number X or a pair (X, Y)" +
+                           (", or a sequence of them" if plural else "; use history() for several steps"))
+
+
+def _tangential(friction, tangential_force, tangential_displacement, sliding, tangential_tol, tangential_max_iter,
+                plural: bool):
+    """(mu, control, [[x, y], ...], tol, max_iter) of the friction keywords, or None without friction."""
+    loads = {"tangential_force": tangential_force, "tangential_displacement": tangential_displacement,
+             "sliding": sliding}
+    given = [name for name, value in loads.items() if value is not None]
+    if friction is None:
+        extra = [name for name, value in (("tangential_tol", tangential_tol),
+                                          ("tangential_max_iter", tangential_max_iter)) if value is not None]
+        if given or extra:
+            raise _core.InputError(f"{(given + extra)[0]} needs friction=MU (the Coulomb coefficient)")
+        return None
+    if not given:
+        raise _core.InputError(f"friction={friction!r} needs a tangential load: tangential_force, "
+                               "tangential_displacement or sliding")
+    if len(given) > 1:
+        raise _core.InputError(f"{' and '.join(given)} cannot be combined: give one of tangential_force, "
+                               "tangential_displacement, sliding")
+    name = given[0]
+    value = loads[name]
+    if name == "sliding":
+        steps = [_pair(value, name, plural=False)]
+        if np.ndim(value) != 1:
+            raise _core.InputError("sliding must be a direction (X, Y)")
+    elif plural:
+        if np.ndim(value) == 0:
+            steps = [_pair(value, name, plural)]
+        else:
+            steps = [_pair(step, name, plural) for step in value]
+            if not steps:
+                raise _core.InputError(f"{name} must hold at least one step")
+    else:
+        steps = [_pair(value, name, plural)]
+    control = {"tangential_force": "force", "tangential_displacement": "displacement", "sliding": "sliding"}[name]
+    return float(friction), control, steps, tangential_tol, tangential_max_iter
+
+
+def _friction(name, surface, dx, dy, e_star, E1, nu1, E2, nu2, boundary, force, mean_pressure, approach, solver, tol,
+              max_iter, threads, progress, fft_planning, deflation_block, laws, coating, tangential):
+    """The frictional solve behind solve(friction=...) and history()."""
+    mu, control, steps, tangential_tol, tangential_max_iter = tangential
+    height_map = _surface(surface, dx, dy)
+    constants = {"E1": E1, "nu1": nu1, "E2": E2, "nu2": nu2}
+    given = [key for key, value in constants.items() if value is not None]
+    if e_star is None and coating is None and len(given) < 4:
+        missing = [key for key in constants if constants[key] is None]
+        raise _core.InputError(f"friction={mu!r} needs E1, nu1, E2 and nu2 (missing {', '.join(missing)}): E* alone "
+                               "does not fix the tangential compliance")
+    if e_star is not None and given:
+        _material(e_star, E1, nu1, E2, nu2)  # refuses the combination, naming both
+    mode, value = _load(force, mean_pressure, approach, plural=False)
+    options = _solver_options(solver, tol, max_iter, fft_planning, deflation_block, laws)
+    material = {"E1": E1, "nu1": nu1, "E2": E2, "nu2": nu2} if e_star is None else {"e_star": e_star}
+    call = _call_text(name, height_map, {**material, "boundary": boundary, mode: value, **options,
+                                         "threads": threads, "friction": mu,
+                                         {"force": "tangential_force", "displacement": "tangential_displacement",
+                                          "sliding": "sliding"}[control]: steps if len(steps) > 1 else steps[0],
+                                         "tangential_tol": tangential_tol,
+                                         "tangential_max_iter": tangential_max_iter})
+    e1 = None if (e_star is not None or coating is not None) else float(E1)
+    return _core.friction(height_map.heights, height_map.dx, height_map.dy or 0.0, boundary, e1,
+                          float(nu1 or 0.0), float(E2 or 0.0), float(nu2 or 0.0), coating is not None, mode, value,
+                          options, threads, progress, mu, control, steps, tangential_tol, tangential_max_iter, call,
+                          height_map.source,
+                          list(height_map.preparation))
+
+
+def history(surface: Union[HeightMap, np.ndarray], *, friction: float, dx: Optional[float] = None,
+            dy: Optional[float] = None, E1: Optional[float] = None, nu1: Optional[float] = None,
+            E2: Optional[float] = None, nu2: Optional[float] = None, e_star: Optional[float] = None,
+            boundary: str = "free", force: Optional[float] = None, mean_pressure: Optional[float] = None,
+            approach: Optional[float] = None,
+            tangential_force: Optional[Sequence[Union[float, Sequence[float]]]] = None,
+            tangential_displacement: Optional[Sequence[Union[float, Sequence[float]]]] = None,
+            tangential_tol: Optional[float] = None, tangential_max_iter: Optional[int] = None,
+            solver: str = "pk-multilevel", tol: float = 1e-10,
+            max_iter: Optional[int] = None, threads: Optional[int] = None,
+            progress: Optional[ProgressCallback] = None, fft_planning: str = "measure",
+            deflation_block: Optional[int] = None, hardness: Optional[float] = None,
+            coating: Optional[Mapping[str, float]] = None) -> _core.History:
+    """A tangential load history (friction), as ``halfspace solve --friction``
+    with several tangential steps: the normal contact under one load, then
+    each tangential load of the sequence in order, each step starting from
+    the state the previous one left (fretting loops: load, unload, reverse).
+
+    tangential_force / tangential_displacement: a sequence of steps, each a
+    number (along x) or a pair (X, Y): N (N/m for a profile), or m. Takes
+    the other keywords of :func:`solve` with friction. Returns a History:
+    ``history[k]`` is step k's Result (the normal fields and step k's shear,
+    stick and slip), ``.table`` the columns step, Q_x, Q_y, delta_x, delta_y,
+    stick_fraction, dissipated_energy as numpy arrays, ``.save(path)`` the
+    program's history file and CSV. A step that does not converge ends the
+    history (see ``.converged``)."""
+    tangential = _tangential(friction, tangential_force, tangential_displacement, None, tangential_tol,
+                             tangential_max_iter, plural=True)
+    return _friction("history", surface, dx, dy, e_star, E1, nu1, E2, nu2, boundary, force, mean_pressure, approach,
+                     solver, tol, max_iter, threads, progress, fft_planning, deflation_block,
+                     _laws(hardness, None, None, None, None, None, None), coating, tangential)
 
 
 def read_result(path: Union[str, os.PathLike], step: Optional[int] = None) -> _core.Result:

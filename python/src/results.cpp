@@ -16,6 +16,7 @@
 #include "bindings.hpp"
 #include "halfspace/analysis/sweep_table.hpp"
 #include "halfspace/error.hpp"
+#include "halfspace/io/friction_history_writer.hpp"
 #include "halfspace/io/result_attributes.hpp"
 #include "halfspace/io/result_reader.hpp"
 #include "halfspace/io/result_writer.hpp"
@@ -51,6 +52,18 @@ nb::dict statistics_of(const Result& r) {
   return out;
 }
 
+// The tangential step a Result shows, or null for a frictionless one.
+const TangentialResult* tangential_of(const Result& r) {
+  return r.tangential_step < r.run->tangential.size() ? &r.run->tangential[r.tangential_step] : nullptr;
+}
+
+// A friction field of the shown step as a view, or None.
+nb::object tangential_view(const Result& r, Eigen::ArrayXd TangentialState::*field) {
+  const TangentialResult* t = tangential_of(r);
+  if (t == nullptr) return nb::none();
+  return nb::cast(view(t->state.*field, r.run->shape()), nb::rv_policy::reference_internal, nb::cast(r));
+}
+
 // The root attributes a result file holds for this result, as a dict.
 nb::dict attributes_of(const Result& r) {
   if (nb::len(r.run->stored_attributes) > 0) return r.run->stored_attributes;
@@ -58,6 +71,12 @@ nb::dict attributes_of(const Result& r) {
   for (const io::ResultAttribute& attribute : io::result_attributes()) {
     std::visit([&](auto get) { out[nb::str(attribute.name.data(), attribute.name.size())] = get(r.result()); },
                attribute.value);
+  }
+  if (const TangentialResult* t = tangential_of(r)) {
+    for (const io::TangentialAttribute& attribute : io::tangential_attributes()) {
+      std::visit([&](auto get) { out[nb::str(attribute.name.data(), attribute.name.size())] = get(*t); },
+                 attribute.value);
+    }
   }
   return out;
 }
@@ -75,6 +94,7 @@ std::string describe(const Result& r) {
 void save_result(const Result& r, const std::filesystem::path& path) {
   io::ResultMetadata metadata = metadata_of(*r.run);
   metadata.contact_statistics = r.data().statistics;
+  metadata.tangential = tangential_of(r);
   nb::gil_scoped_release release;
   io::write_result(path, r.run->grid, r.run->heights, r.result(), metadata);
 }
@@ -84,6 +104,14 @@ void save_sweep(const Sweep& s, const std::filesystem::path& path) {
   nb::gil_scoped_release release;
   io::write_sweep_result(path, s.run->grid, s.run->heights, s.run->steps, metadata);
   io::write_sweep_csv(io::sweep_csv_path(path), s.run->steps);
+}
+
+void save_history(const History& h, const std::filesystem::path& path) {
+  io::ResultMetadata metadata = metadata_of(*h.run);
+  metadata.contact_statistics = h.run->steps.front().statistics;
+  nb::gil_scoped_release release;
+  io::write_friction_history(path, h.run->grid, h.run->heights, h.run->steps.front().result, h.run->tangential,
+                             h.run->tangential_loads, metadata);
 }
 
 template <class T>
@@ -156,7 +184,7 @@ Result read(const std::filesystem::path& path, int step) {
                                                                          : s.approach;
   data.statistics = contact_statistics_of(grid, s);
 
-  auto run = std::make_shared<Run>(Run{std::move(grid), nb::none(), {}, {}, {}, {}, {}, {}, {}});
+  auto run = std::make_shared<Run>(Run{std::move(grid), nb::none(), {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}});
   io::SolveProvenance& p = run->provenance;
   p.e_star = number("E_star");
   p.load_mode = data.loading.mode;
@@ -285,6 +313,63 @@ void bind_results(nb::module_& module) {
           },
           "Adhesive solves: the law and the attractive part (adhesive_force, interaction_fraction, "
           "repulsive_contact_fraction); None otherwise.")
+      // Friction (solve(friction=...), history()): the shown tangential step's
+      // fields as views and its record; None for a frictionless result.
+      .def_prop_ro(
+          "shear_x", [](const Result& r) { return tangential_view(r, &TangentialState::shear_x); },
+          "Friction: shear traction q_x (Pa) that body 1 exerts on body 2, shaped like the surface; None without.")
+      .def_prop_ro(
+          "shear_y", [](const Result& r) { return tangential_view(r, &TangentialState::shear_y); },
+          "Friction: shear traction q_y (Pa); None without friction.")
+      .def_prop_ro(
+          "slip_x", [](const Result& r) { return tangential_view(r, &TangentialState::slip_x); },
+          "Friction: accumulated slip along x (m); None without friction.")
+      .def_prop_ro(
+          "slip_y", [](const Result& r) { return tangential_view(r, &TangentialState::slip_y); },
+          "Friction: accumulated slip along y (m); None without friction.")
+      .def_prop_ro(
+          "tangential_displacement_x",
+          [](const Result& r) { return tangential_view(r, &TangentialState::displacement_x); },
+          "Friction: relative elastic tangential surface displacement u_x = (C q)_x (m); None without friction.")
+      .def_prop_ro(
+          "tangential_displacement_y",
+          [](const Result& r) { return tangential_view(r, &TangentialState::displacement_y); },
+          "Friction: relative elastic tangential surface displacement u_y (m); None without friction.")
+      .def_prop_ro(
+          "stick",
+          [](const Result& r) -> nb::object {
+            if (tangential_of(r) == nullptr) return nb::none();
+            const std::vector<std::size_t> shape = r.run->shape();
+            return nb::cast(BoolArray(reinterpret_cast<bool*>(r.run->stick[r.tangential_step].data()), shape.size(),
+                                      shape.data(), nb::handle()),
+                            nb::rv_policy::reference_internal, nb::cast(r));
+          },
+          "Friction: True where a contact cell sticks; None without friction.")
+      .def_prop_ro(
+          "friction",
+          [](const Result& r) -> nb::object {
+            const TangentialResult* t = tangential_of(r);
+            if (t == nullptr) return nb::none();
+            nb::dict out;
+            out["friction_coefficient"] = t->friction_coefficient;
+            out["tangential_force"] = nb::make_tuple(t->force_x, t->force_y);
+            out["tangential_approach"] = nb::make_tuple(t->state.approach_x, t->state.approach_y);
+            out["stick_fraction"] = t->stick_fraction;
+            out["slip_fraction"] = t->slip_fraction;
+            out["dissipated_energy"] = t->dissipated_energy;
+            out["gross_sliding"] = t->gross_sliding;
+            out["converged"] = t->converged();
+            out["status"] = std::string(to_string(t->status));
+            out["message"] = t->message;
+            out["iterations"] = t->iterations;
+            out["residual"] = t->residual;
+            out["step"] = r.tangential_step;
+            return out;
+          },
+          "Friction: the tangential step's record: friction_coefficient, tangential_force (x, y) (N, N/m in 1D), "
+          "tangential_approach (x, y) (m), stick_fraction and slip_fraction (of the contact cells), "
+          "dissipated_energy (J, J/m in 1D; in this step), gross_sliding, converged, status, message, iterations, "
+          "residual, step; None without friction.")
       .def_prop_ro("iterations", [](const Result& r) { return r.result().iterations; })
       .def_prop_ro("residual", [](const Result& r) { return r.result().residual; })
       .def_prop_ro("tolerance", [](const Result& r) { return r.result().tolerance; })
@@ -341,6 +426,65 @@ void bind_results(nb::module_& module) {
         return fmt::format("Sweep({} steps of {} on the {} {} grid, {} converged)", s.run->steps.size(),
                            to_string(s.run->provenance.load_mode), s.run->grid.shape_string(),
                            to_string(s.run->grid.boundary()), converged);
+      });
+
+  nb::class_<History>(module, "History",
+                      "A tangential load history (friction): one Result per step (the normal contact with that "
+                      "step's shear) and the history table.")
+      .def("__len__", [](const History& h) { return h.run->tangential.size(); })
+      .def(
+          "__getitem__",
+          [](const History& h, long k) {
+            const long n = static_cast<long>(h.run->tangential.size());
+            if (k < 0) k += n;
+            if (k < 0 || k >= n) throw nb::index_error("history step out of range");
+            return Result{h.run, 0, static_cast<std::size_t>(k)};
+          },
+          nb::arg("step"))
+      .def_prop_ro(
+          "normal",
+          [](const History& h) {
+            return Result{h.run, 0, h.run->tangential.size()};
+          },
+          "The normal contact alone (no friction fields).")
+      .def_prop_ro(
+          "converged",
+          [](const History& h) {
+            if (!h.run->steps.front().result.converged()) return false;
+            for (const TangentialResult& t : h.run->tangential) {
+              if (!t.converged()) return false;
+            }
+            return !h.run->tangential.empty();
+          },
+          "The normal solve and every step solved converged (a history stops at the first step that does not).")
+      .def_prop_ro(
+          "table",
+          [](const History& h) {
+            const std::size_t n = h.run->tangential.size();
+            nb::dict table;
+            const auto column = [&](const char* name, auto get) {
+              Eigen::ArrayXd values(static_cast<Eigen::Index>(n));
+              for (std::size_t k = 0; k < n; ++k) values[static_cast<Eigen::Index>(k)] = get(k, h.run->tangential[k]);
+              table[name] = owning_array(std::move(values), {n});
+            };
+            column("step", [](std::size_t k, const TangentialResult&) { return static_cast<double>(k); });
+            column("Q_x", [](std::size_t, const TangentialResult& t) { return t.force_x; });
+            column("Q_y", [](std::size_t, const TangentialResult& t) { return t.force_y; });
+            column("delta_x", [](std::size_t, const TangentialResult& t) { return t.state.approach_x; });
+            column("delta_y", [](std::size_t, const TangentialResult& t) { return t.state.approach_y; });
+            column("stick_fraction", [](std::size_t, const TangentialResult& t) { return t.stick_fraction; });
+            column("dissipated_energy", [](std::size_t, const TangentialResult& t) { return t.dissipated_energy; });
+            return table;
+          },
+          "The history table (the CSV's columns): step, Q_x, Q_y (N, N/m in 1D), delta_x, delta_y (m), "
+          "stick_fraction, dissipated_energy (J, J/m in 1D, per step).")
+      .def("save", &save_history, nb::arg("path"),
+           "Writes the history file `halfspace solve --friction` writes for several steps, its CSV table (same "
+           "name, .csv) and XDMF sidecar (.xdmf).")
+      .def("__repr__", [](const History& h) {
+        return fmt::format("History({} tangential steps on the {} {} grid, mu = {:g})", h.run->tangential.size(),
+                           h.run->grid.shape_string(), to_string(h.run->grid.boundary()),
+                           h.run->tangential.empty() ? 0.0 : h.run->tangential.front().friction_coefficient);
       });
 
   module.def("read_result", &read, nb::arg("path"), nb::arg("step") = -1);

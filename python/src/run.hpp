@@ -13,9 +13,12 @@
 #include "bindings.hpp"
 #include "halfspace/analysis/contact_statistics.hpp"
 #include "halfspace/analysis/load_sweep.hpp"
+#include "halfspace/elastic_pair.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/io/result_metadata.hpp"
 #include "halfspace/layered_material.hpp"
+#include "halfspace/solvers/tangential_loading.hpp"
+#include "halfspace/solvers/tangential_result.hpp"
 #include "halfspace/surface/statistics.hpp"
 
 namespace halfspace::python {
@@ -32,6 +35,13 @@ struct Run {
   // Attributes of a file the run was read from (read_result); empty for a solve.
   nb::dict stored_attributes;
   std::optional<LayeredMaterial> coating;  // a coated half-space, else none
+  // Friction (halfspace.solve(friction=...), halfspace.history): the pair of
+  // bodies, the tangential steps solved under steps[0]'s pressure, what each
+  // imposed, and per step its stick map (1 where a contact cell sticks).
+  std::optional<ElasticPair> pair;
+  std::vector<TangentialResult> tangential;
+  std::vector<TangentialLoading> tangential_loads;
+  std::vector<std::vector<std::uint8_t>> stick;
 
   std::vector<std::size_t> shape() const;
   // Fills contact from the steps' pressures.
@@ -48,6 +58,7 @@ inline analysis::ContactStatistics contact_statistics_of(const Grid& grid, const
 struct Result {
   std::shared_ptr<Run> run;
   std::size_t step = 0;
+  std::size_t tangential_step = 0;  // the friction step shown, when run->tangential has any
 
   const analysis::SweepStep& data() const { return run->steps[step]; }
   const SolveResult& result() const { return data().result; }
@@ -55,6 +66,11 @@ struct Result {
 
 // Every step of a Run.
 struct Sweep {
+  std::shared_ptr<Run> run;
+};
+
+// Every tangential step of a frictional Run (halfspace.history).
+struct History {
   std::shared_ptr<Run> run;
 };
 

@@ -16,6 +16,7 @@
 #include "halfspace/layered_material.hpp"
 #include "halfspace/material.hpp"
 #include "halfspace/solvers/adhesion_law.hpp"
+#include "halfspace/solvers/frictional_solve.hpp"
 #include "halfspace/solvers/surface_solve.hpp"
 #include "halfspace/threads.hpp"
 #include "run.hpp"
@@ -215,7 +216,11 @@ std::shared_ptr<Run> make_run(Problem&& problem, io::SolveProvenance&& provenanc
                                        {},
                                        {},
                                        {},
-                                       coating});
+                                       coating,
+                                       {},
+                                       {},
+                                       {},
+                                       {}});
   run->steps = std::move(steps);
   run->surface = surface::surface_statistics(run->grid, run->heights);
   run->mark_contact();
@@ -314,9 +319,103 @@ Sweep sweep(const nb::object& heights, double dx, double dy, const std::string& 
                         std::move(steps), coating)};
 }
 
+// A FrictionOptions rule restated with the keyword it came from.
+[[noreturn]] void restate_friction_rule(const solvers::SolverOptionError& error, const std::string& control) {
+  const std::string& option = error.option();
+  const std::string keyword = option == "tangential_load"  ? "tangential_" + control
+                              : option == "tolerance"      ? "tangential_tol"
+                              : option == "max_iterations" ? "tangential_max_iter"
+                              : option == "pair"           ? "E1, nu1, E2, nu2"
+                                                           : option;
+  if (option == "coating" || option == "processes" || (option == "pair" && error.value() == "E* only")) {
+    throw InputError(fmt::format("{} {} (friction)", option == "pair" ? "e_star" : option, error.rule()));
+  }
+  throw InputError(fmt::format("{}={} {}", keyword, error.value(), error.rule()));
+}
+
+// halfspace.solve(friction=...) and halfspace.history: the normal solve, then
+// the tangential steps under its pressure (frictional_solve.hpp), mapped from
+// the keywords onto FrictionOptions, whose validate() holds the rules.
+// `control` is "force", "displacement" or "sliding" (then `loads` holds the
+// one direction); E1 is None when the material was given as e_star.
+History friction(const nb::object& heights, double dx, double dy, const std::string& boundary, std::optional<double> e1,
+                 double nu1, double e2, double nu2, bool coated, const std::string& mode, double value,
+                 const nb::dict& solver, std::optional<int> threads, nb::object progress, double mu,
+                 const std::string& control, const std::vector<std::vector<double>>& loads,
+                 std::optional<double> tangential_tol, std::optional<int> tangential_max_iter,
+                 const std::string& command_line, const std::string& height_source,
+                 const std::vector<std::string>& preparation) {
+  Problem problem = problem_from(heights, dx, dy, boundary);
+  const Loading loading{control_mode(mode), value};
+  solvers::SolverOptions options = solver_options(solver, problem.grid);
+  solvers::FrictionOptions friction;
+  friction.friction_coefficient = mu;
+  for (const std::vector<double>& load : loads) {
+    if (load.size() != 2) throw InputError(fmt::format("tangential_{}: each step is (x, y)", control));
+    if (control == "sliding") {
+      friction.sliding_direction = {{load[0], load[1]}};
+    } else {
+      friction.history.push_back(control == "force" ? TangentialLoading::force(load[0], load[1])
+                                                    : TangentialLoading::displacement(load[0], load[1]));
+    }
+  }
+  if (tangential_tol) friction.tolerance = *tangential_tol;
+  if (tangential_max_iter) friction.max_iterations = *tangential_max_iter;
+  std::optional<ElasticPair> pair;
+  try {
+    friction.validate();
+    if (coated) solvers::FrictionOptions::refuse_coating();
+    if (!e1) solvers::FrictionOptions::refuse_composite_modulus_only();
+    pair.emplace(ElasticBody{*e1, nu1}, ElasticBody{e2, nu2});
+    friction.validate(problem.grid, *pair, options, loading);
+  } catch (const solvers::SolverOptionError& error) {
+    restate_friction_rule(error, control);
+  }
+  if (!options.adhesion) loading.validate();
+  const int thread_number = thread_count(threads);
+  ProgressHook hook(std::move(progress));
+  options.progress = [&hook](int iteration, double residual) { hook(iteration, residual); };
+  friction.progress = [&hook](std::size_t, int iteration, double residual) { hook(iteration, residual); };
+
+  const double e_star = pair->composite_modulus();
+  FrictionalSolveResult solved = run_released([&] {
+    set_threads(thread_number);
+    return solvers::solve_frictional_surface(problem.grid, problem.heights, *pair, loading, options, friction);
+  });
+  analysis::SweepStep step;
+  step.loading = loading;
+  step.result = std::move(solved.normal);
+  step.statistics = contact_statistics_of(problem.grid, step.result);
+  std::vector<analysis::SweepStep> steps;
+  steps.push_back(std::move(step));
+  std::shared_ptr<Run> run =
+      make_run(std::move(problem), {e_star, loading.mode, thread_number, command_line, "", height_source, preparation},
+               std::move(steps), std::nullopt);
+  run->pair = pair;
+  run->tangential = std::move(solved.steps);
+  run->tangential_loads = friction.history;
+  if (friction.sliding_direction && !run->tangential.empty()) {
+    run->tangential_loads = {
+        TangentialLoading::force(run->tangential.front().force_x, run->tangential.front().force_y)};
+  }
+  run->tangential_loads.resize(run->tangential.size());
+  for (const TangentialResult& t : run->tangential) {
+    std::vector<std::uint8_t> marks(static_cast<std::size_t>(t.stick.size()));
+    for (std::size_t k = 0; k < marks.size(); ++k) marks[k] = t.stick[static_cast<Eigen::Index>(k)] > 0.5 ? 1 : 0;
+    run->stick.push_back(std::move(marks));
+  }
+  return History{std::move(run)};
+}
+
 }  // namespace
 
 void bind_solve(nb::module_& module) {
+  module.def("friction", &friction, nb::arg("heights"), nb::arg("dx"), nb::arg("dy"), nb::arg("boundary"),
+             nb::arg("E1").none(), nb::arg("nu1"), nb::arg("E2"), nb::arg("nu2"), nb::arg("coated"), nb::arg("mode"),
+             nb::arg("value"), nb::arg("solver"), nb::arg("threads").none(), nb::arg("progress").none(), nb::arg("mu"),
+             nb::arg("control"), nb::arg("loads"), nb::arg("tangential_tol").none(),
+             nb::arg("tangential_max_iter").none(), nb::arg("command_line"), nb::arg("height_source"),
+             nb::arg("preparation"));
   module.def("solve", &solve, nb::arg("heights"), nb::arg("dx"), nb::arg("dy"), nb::arg("boundary"), nb::arg("e_star"),
              nb::arg("coating").none(), nb::arg("mode"), nb::arg("value"), nb::arg("solver"), nb::arg("threads").none(),
              nb::arg("initial_pressure").none(), nb::arg("progress").none(), nb::arg("command_line"),

@@ -12,6 +12,7 @@
 #include "halfspace/io/hdf5_output.hpp"
 #include "halfspace/io/result_writer.hpp"
 #include "halfspace/solvers/solve_result.hpp"
+#include "halfspace/solvers/tangential_result.hpp"
 
 namespace halfspace::io {
 
@@ -34,6 +35,12 @@ struct FieldRows {
 // contact (uint8, 1 where p > 0) and residual_history under `node`; the
 // result's fields hold the rows `rows` says.
 void write_result_fields(const Hdf5Node& node, const Grid& grid, const SolveResult& result, FieldRows rows = {});
+
+// Friction: shear_x, shear_y (Pa), stick (uint8, 1 where a contact cell
+// sticks), slip_x, slip_y (accumulated slip, m) and
+// tangential_displacement_x, _y (m) of a tangential step under `node`.
+void write_tangential_fields(const Hdf5Node& node, const Grid& grid, const TangentialResult& result,
+                             FieldRows rows = {});
 
 // The root attributes of a result file: format, grid, E*, load mode, every
 // result attribute (result_attributes.hpp), threads, provenance and the

@@ -44,7 +44,51 @@ const std::array<ResultAttribute, 25> kResultAttributes{{
     {"solve_seconds", "s", Number{[](const SolveResult& r) { return r.wall_seconds; }}},
 }};
 
+// Friction (a tangential load step): the coefficient, the step's totals and
+// the state it leaves.
+using TangentialNumber = double (*)(const TangentialResult&);
+using TangentialInteger = std::int64_t (*)(const TangentialResult&);
+using TangentialText = std::string (*)(const TangentialResult&);
+
+const std::array<TangentialAttribute, 14> kTangentialAttributes{{
+    {"friction_coefficient", "", TangentialNumber{[](const TangentialResult& r) { return r.friction_coefficient; }}},
+    {"tangential_force_x", "N (N/m in 1D)", TangentialNumber{[](const TangentialResult& r) { return r.force_x; }}},
+    {"tangential_force_y", "N (N/m in 1D)", TangentialNumber{[](const TangentialResult& r) { return r.force_y; }}},
+    {"tangential_approach_x", "m", TangentialNumber{[](const TangentialResult& r) { return r.state.approach_x; }}},
+    {"tangential_approach_y", "m", TangentialNumber{[](const TangentialResult& r) { return r.state.approach_y; }}},
+    {"stick_fraction", "", TangentialNumber{[](const TangentialResult& r) { return r.stick_fraction; }}},
+    {"slip_fraction", "", TangentialNumber{[](const TangentialResult& r) { return r.slip_fraction; }}},
+    {"dissipated_energy", "J (J/m in 1D)",
+     TangentialNumber{[](const TangentialResult& r) { return r.dissipated_energy; }}},
+    {"gross_sliding", "", TangentialInteger{[](const TangentialResult& r) { return std::int64_t{r.gross_sliding}; }}},
+    {"tangential_status", "",
+     TangentialText{[](const TangentialResult& r) { return std::string(to_string(r.status)); }}},
+    {"tangential_converged", "",
+     TangentialInteger{[](const TangentialResult& r) { return std::int64_t{r.converged() ? 1 : 0}; }}},
+    {"tangential_iterations", "",
+     TangentialInteger{[](const TangentialResult& r) { return std::int64_t{r.iterations}; }}},
+    {"tangential_residual", "", TangentialNumber{[](const TangentialResult& r) { return r.residual; }}},
+    {"tangential_tolerance", "", TangentialNumber{[](const TangentialResult& r) { return r.tolerance; }}},
+}};
+
 }  // namespace
+
+std::span<const TangentialAttribute> tangential_attributes() {
+  return kTangentialAttributes;
+}
+
+void write_tangential_attributes(const Hdf5Node& node, const TangentialResult& result) {
+  for (const TangentialAttribute& attribute : kTangentialAttributes) {
+    const std::string name(attribute.name);
+    if (const auto* number = std::get_if<TangentialNumber>(&attribute.value)) {
+      node.write_double_attribute(name, (*number)(result));
+    } else if (const auto* integer = std::get_if<TangentialInteger>(&attribute.value)) {
+      node.write_int64_attribute(name, (*integer)(result));
+    } else {
+      node.write_string_attribute(name, std::get<TangentialText>(attribute.value)(result));
+    }
+  }
+}
 
 std::span<const ResultAttribute> result_attributes() {
   return kResultAttributes;

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "halfspace/error.hpp"
@@ -23,8 +24,8 @@ namespace {
 
 constexpr std::int64_t kFormatVersion = 1;
 constexpr const char* kUnits =
-    "SI: lengths (dx, dy, approach, height, gap, displacement) in m; pressures and E_star in Pa; "
-    "total_force in N (N/m in 1D); solve_seconds in s";
+    "SI: lengths (dx, dy, approach, height, gap, displacement, slip) in m; pressures, shear and E_star in Pa; "
+    "total_force and tangential_force in N (N/m in 1D); solve_seconds in s";
 
 void check_size(std::string_view field, std::size_t size, const Grid& grid) {
   if (size != grid.size()) {
@@ -69,6 +70,21 @@ void write_result_fields(const Hdf5Node& node, const Grid& grid, const SolveResu
   node.write_dataset_rows("residual_history", {history.size()}, 0, rows.lead ? history : std::span<const double>(), "");
 }
 
+void write_tangential_fields(const Hdf5Node& node, const Grid& grid, const TangentialResult& result, FieldRows rows) {
+  const std::vector<std::size_t> shape = field_shape(grid);
+  const std::size_t first = rows.first_row;
+  const TangentialState& s = result.state;
+  node.write_dataset_rows("shear_x", shape, first, values(s.shear_x), "Pa");
+  node.write_dataset_rows("shear_y", shape, first, values(s.shear_y), "Pa");
+  std::vector<std::uint8_t> stick(static_cast<std::size_t>(result.stick.size()));
+  for (std::size_t k = 0; k < stick.size(); ++k) stick[k] = result.stick[static_cast<Eigen::Index>(k)] > 0.5 ? 1 : 0;
+  node.write_dataset_rows("stick", shape, first, std::span<const std::uint8_t>(stick), "1");
+  node.write_dataset_rows("slip_x", shape, first, values(s.slip_x), "m");
+  node.write_dataset_rows("slip_y", shape, first, values(s.slip_y), "m");
+  node.write_dataset_rows("tangential_displacement_x", shape, first, values(s.displacement_x), "m");
+  node.write_dataset_rows("tangential_displacement_y", shape, first, values(s.displacement_y), "m");
+}
+
 void write_result_root_attributes(const Hdf5Node& root, const Grid& grid, const SolveResult& result,
                                   const ResultMetadata& metadata) {
   root.write_string_attribute("format", "halfspace-result");
@@ -81,6 +97,7 @@ void write_result_root_attributes(const Hdf5Node& root, const Grid& grid, const 
   root.write_string_attribute("load_mode", metadata.load_mode);
 
   write_result_attributes(root, result);
+  if (metadata.tangential) write_tangential_attributes(root, *metadata.tangential);
   root.write_int64_attribute("threads", metadata.threads);
 
   root.write_string_attribute("halfspace_version", fmt::format("{} ({})", kVersion, kGitHash));
@@ -101,9 +118,20 @@ void write_result(const std::filesystem::path& path, const Grid& grid, std::span
   check_size("pressure", static_cast<std::size_t>(result.pressure.size()), grid);
   check_size("gap", static_cast<std::size_t>(result.gap.size()), grid);
   check_size("displacement", static_cast<std::size_t>(result.displacement.size()), grid);
+  if (const TangentialResult* t = metadata.tangential) {
+    for (const auto& [name, size] :
+         {std::pair{"shear_x", t->state.shear_x.size()}, std::pair{"shear_y", t->state.shear_y.size()},
+          std::pair{"stick", t->stick.size()}, std::pair{"slip_x", t->state.slip_x.size()},
+          std::pair{"slip_y", t->state.slip_y.size()},
+          std::pair{"tangential_displacement_x", t->state.displacement_x.size()},
+          std::pair{"tangential_displacement_y", t->state.displacement_y.size()}}) {
+      check_size(name, static_cast<std::size_t>(size), grid);
+    }
+  }
   const auto fill = [&](const Hdf5Node& root) {
     root.write_dataset("height", field_shape(grid), height, "m");
     write_result_fields(root, grid, result);
+    if (metadata.tangential) write_tangential_fields(root, grid, *metadata.tangential);
     write_result_root_attributes(root, grid, result, metadata);
     if (metadata.extra_groups) metadata.extra_groups(root);
   };
@@ -118,8 +146,9 @@ void write_result(const std::filesystem::path& path, const Grid& grid, std::span
 std::uint64_t result_file_bound(const Grid& grid, const SolveResult& result, const ResultMetadata& metadata) {
   // height, pressure, gap, displacement, plastic_displacement, and the uint8
   // contact and plastic within one more float64 field's bound.
-  constexpr std::uint64_t kFields = 6;
-  return kHdf5SmallItemsBound + kFields * hdf5_dataset_bound(field_shape(grid), Compression::deflate) +
+  // Friction: six float64 fields and the uint8 stick map within a seventh.
+  const std::uint64_t fields = metadata.tangential != nullptr ? 13 : 6;
+  return kHdf5SmallItemsBound + fields * hdf5_dataset_bound(field_shape(grid), Compression::deflate) +
          hdf5_dataset_bound({result.residual_history.size()}, Compression::deflate) + metadata.extra_groups_bytes;
 }
 

@@ -15,6 +15,7 @@
 #include "halfspace/io/hdf5_output.hpp"
 #include "halfspace/layered_material.hpp"
 #include "halfspace/solvers/solve_result.hpp"
+#include "halfspace/solvers/tangential_result.hpp"
 
 namespace halfspace::io {
 
@@ -35,6 +36,24 @@ std::span<const ResultAttribute> result_attributes();
 // but those named in `skip` (names a file already uses for another fact).
 void write_result_attributes(const Hdf5Node& node, const SolveResult& result, std::string_view prefix = {},
                              std::span<const std::string_view> skip = {});
+
+// Friction: the attributes of a tangential load step (TangentialResult), in
+// the same way, on a frictional result's root and each history step's group
+// (docs/file-format.md#friction). stick_fraction and slip_fraction are
+// fractions of the contact cells (p > 0), not of the grid.
+struct TangentialAttribute {
+  std::string_view name;
+  std::string_view unit;
+  std::variant<double (*)(const TangentialResult&), std::int64_t (*)(const TangentialResult&),
+               std::string (*)(const TangentialResult&)>
+      value;
+};
+
+// Every attribute of a TangentialResult, in the order they are written.
+std::span<const TangentialAttribute> tangential_attributes();
+
+// Writes every attribute of tangential_attributes() on `node`.
+void write_tangential_attributes(const Hdf5Node& node, const TangentialResult& result);
 
 // mean_gap, rms_gap, free_volume (float64) and clusters (int64): the contact
 // statistics of a solve, on a result's root or a sweep step's group.

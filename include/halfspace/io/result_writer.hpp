@@ -15,6 +15,7 @@
 #include "halfspace/io/hdf5_output.hpp"
 #include "halfspace/layered_material.hpp"
 #include "halfspace/solvers/solve_result.hpp"
+#include "halfspace/solvers/tangential_result.hpp"
 #include "halfspace/surface/statistics.hpp"
 
 namespace halfspace::io {
@@ -42,10 +43,16 @@ struct ResultMetadata {
   // layer_E, layer_nu, substrate_E, substrate_nu); e_star is then the layer's
   // E1/(1 - nu1^2), its modulus against the rigid surface.
   std::optional<LayeredMaterial> coating;
+  // Friction: a tangential load step whose fields (shear_x, shear_y, stick,
+  // slip_x, slip_y, tangential_displacement_x, _y) and attributes
+  // (result_attributes.hpp's tangential table) the result also holds; must
+  // outlive the write. Null: a frictionless result.
+  const TangentialResult* tangential = nullptr;
 };
 
 // Datasets /height, /pressure, /gap, /displacement (float64) and /contact
-// (uint8, 1 where p > 0), shaped like the grid; root attributes as in
+// (uint8, 1 where p > 0), shaped like the grid, with the friction fields and
+// attributes when metadata.tangential is set; root attributes as in
 // docs/file-format.md. Throws FileError naming the path if it cannot be
 // written; no partial file is left behind.
 void write_result(const std::filesystem::path& path, const Grid& grid, std::span<const double> height,

@@ -1,0 +1,145 @@
+// The frictional solve of the program (friction_command.hpp): everything was
+// validated by make_solve_setup (friction_setup.hpp).
+#include "friction_command.hpp"
+
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "activity.hpp"
+#include "exit_codes.hpp"
+#include "halfspace/analysis/contact_statistics.hpp"
+#include "halfspace/io/friction_history_writer.hpp"
+#include "halfspace/io/result_metadata.hpp"
+#include "halfspace/io/result_writer.hpp"
+#include "halfspace/solvers/frictional_solve.hpp"
+#include "halfspace/solvers/surface_solve.hpp"
+#include "halfspace/threads.hpp"
+#include "plot_tool.hpp"
+#include "progress.hpp"
+#include "summary.hpp"
+#include "sweep_command.hpp"
+
+namespace halfspace::app {
+namespace {
+
+std::string describe_tangential(const TangentialLoading& loading, const Grid& grid) {
+  if (loading.control == TangentialControl::displacement) {
+    return fmt::format("tangential displacement ({:.6g}, {:.6g}) m", loading.x, loading.y);
+  }
+  return fmt::format("tangential force ({:.6g}, {:.6g}) {}", loading.x, loading.y, grid.dimension() == 1 ? "N/m" : "N");
+}
+
+void print_friction_summary(std::FILE* out, const SolveSetup& setup, std::span<const TangentialResult> steps) {
+  const Grid& grid = setup.grid;
+  const std::string_view force = grid.dimension() == 1 ? "N/m" : "N";
+  const ElasticPair& pair = *setup.pair;
+  fmt::print(out, "friction:            mu = {:g}; E1 = {:g} Pa, nu1 = {:g}, E2 = {:g} Pa, nu2 = {:g}\n",
+             setup.friction->friction_coefficient, pair.body1().youngs_modulus, pair.body1().poissons_ratio,
+             pair.body2().youngs_modulus, pair.body2().poissons_ratio);
+  if (steps.empty()) return;
+  const TangentialResult& last = steps.back();
+  double dissipated = 0.0;
+  int iterations = 0;
+  for (const TangentialResult& step : steps) {
+    dissipated += step.dissipated_energy;
+    iterations += step.iterations;
+  }
+  fmt::print(out, "tangential steps:    {}{} ({} iterations in all)\n", steps.size(),
+             setup.friction->sliding_direction ? " (gross sliding)" : "", iterations);
+  fmt::print(out, "tangential force:    ({:.6g}, {:.6g}) {} (mu P = {:.6g} {})\n", last.force_x, last.force_y, force,
+             last.friction_coefficient * last.normal_force, force);
+  fmt::print(out, "tangential approach: ({:.6g}, {:.6g}) m\n", last.state.approach_x, last.state.approach_y);
+  fmt::print(out, "stick fraction:      {:.4f} of the contact cells (slip {:.4f})\n", last.stick_fraction,
+             last.slip_fraction);
+  fmt::print(out, "dissipated energy:   {:.6g} {}\n", dissipated, grid.dimension() == 1 ? "J/m" : "J");
+}
+
+}  // namespace
+
+int run_frictional_solve(const SolveSetup& setup) {
+  const solvers::FrictionOptions& options = *setup.friction;
+  const ElasticPair& pair = *setup.pair;
+  // Threads first: the FFT plans use the thread count in force when made.
+  set_threads(setup.threads);
+  const std::optional<PlotTool> plot =
+      setup.plot ? std::optional<PlotTool>(find_plot_tool({"--plot", "drop --plot", {}})) : std::nullopt;
+  const std::span<const double> heights(setup.heights.data(), static_cast<std::size_t>(setup.heights.size()));
+
+  std::optional<Activity> activity(std::in_place,
+                                   fmt::format("solving the normal contact ({} on the {} grid)",
+                                               solvers::to_string(setup.solver.type), setup.grid.shape_string()));
+  FrictionalSolveResult result;
+  result.requested_steps = options.steps();
+  {
+    Progress progress(!setup.quiet, 1, setup.solver.solver_tolerance());
+    solvers::SolverOptions settings = setup.solver;
+    settings.progress = progress.callback();
+    result.normal = solvers::solve_surface(setup.grid, heights, setup.e_star, setup.loading, settings);
+  }
+  std::vector<TangentialLoading> loads;
+  if (result.normal.converged()) {
+    activity.emplace(fmt::format("solving {} tangential step{} on the {} grid", options.steps(),
+                                 options.steps() == 1 ? "" : "s", setup.grid.shape_string()));
+    Progress progress(!setup.quiet, options.steps(), options.tolerance);
+    solvers::FrictionOptions friction = options;
+    std::size_t shown = options.steps();
+    if (progress.active()) {
+      friction.progress = [&](std::size_t step, int iteration, double residual) {
+        if (step != shown) {
+          shown = step;
+          progress.start_step(step, options.sliding_direction ? std::string("gross sliding")
+                                                              : describe_tangential(options.history[step], setup.grid));
+        }
+        progress.iteration(iteration, residual);
+      };
+    }
+    result.steps =
+        solvers::solve_tangential_history(setup.grid, pair, result.normal, friction, setup.solver.fft_planning);
+    loads.assign(options.history.begin(), options.history.begin() + static_cast<std::ptrdiff_t>(std::min(
+                                                                        options.history.size(), result.steps.size())));
+  }
+
+  io::ResultMetadata metadata = io::result_metadata(provenance(setup), setup.grid, heights);
+  metadata.contact_statistics = analysis::contact_statistics(
+      setup.grid, {result.normal.pressure.data(), setup.grid.size()}, {result.normal.gap.data(), setup.grid.size()});
+  activity.emplace(fmt::format("writing {}", setup.output.string()));
+  const bool history = options.steps() > 1 && !result.steps.empty();
+  if (history) {
+    io::write_friction_history(setup.output, setup.grid, heights, result.normal, result.steps, loads, metadata);
+  } else {
+    if (!result.steps.empty()) metadata.tangential = &result.steps.front();
+    io::write_result(setup.output, setup.grid, heights, result.normal, metadata);
+  }
+  activity.reset();
+  if (!setup.quiet) {
+    print_summary(stdout, setup, result.normal);
+    print_friction_summary(stdout, setup, result.steps);
+    if (history) fmt::print("history table:       {}\n", io::history_csv_path(setup.output).string());
+    std::fflush(stdout);
+  }
+  bool plotted = true;
+  if (plot) {
+    // The normal maps, then the loop (a history) and the stick/slip map.
+    for (const std::string_view figure : {"maps", "friction"}) {
+      const std::string failure = run_plot_tool(*plot, figure, setup.output, setup.quiet);
+      if (!failure.empty()) {
+        fmt::print(stderr, "error: --plot: {}; the result is written to {}\n", failure, setup.output.string());
+        plotted = false;
+        break;
+      }
+    }
+  }
+  if (!result.converged()) {
+    fmt::print(stderr, "error: {}; the result is written to {} with the steps solved\n", result.failure(),
+               setup.output.string());
+    return kExitNotConverged;
+  }
+  return plotted ? kExitOk : kExitPlotFailed;
+}
+
+}  // namespace halfspace::app

@@ -1,0 +1,80 @@
+// What a frictional solve asks for beyond the normal contact: Coulomb's
+// coefficient, and either a history of tangential load steps (each starting
+// from the state the previous one left, tangential_solver.hpp) or gross
+// sliding along a direction (every contact cell at |q| = mu p). Every rule a
+// front end must respect is here, once: the program and the Python package
+// map their flags and keywords onto these fields and restate a
+// SolverOptionError with their own spelling of the option.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <functional>
+#include <optional>
+#include <vector>
+
+#include "halfspace/elastic_pair.hpp"
+#include "halfspace/grid.hpp"
+#include "halfspace/solvers/loading.hpp"
+#include "halfspace/solvers/solver_options.hpp"
+#include "halfspace/solvers/tangential_loading.hpp"
+#include "halfspace/solvers/tangential_solver.hpp"
+
+namespace halfspace::solvers {
+
+struct FrictionOptions {
+  double friction_coefficient = 0.0;  // mu, finite and >= 0
+  // The tangential load steps in order (a force, N or N/m in 1D, or a
+  // tangential approach, m); more than one is a history.
+  std::vector<TangentialLoading> history;
+  // Gross sliding along (x, y) (any length but zero) instead of a history:
+  // one step at the force mu P in that direction.
+  std::optional<std::array<double, 2>> sliding_direction;
+  double tolerance = 1e-6;  // of the tangential solver's residual (tangential_solver.hpp)
+  int max_iterations = 10000;
+  // Called once per tangential iteration with (step, iteration, residual); may be empty.
+  std::function<void(std::size_t, int, double)> progress;
+
+  // The number of tangential steps solved: the history's, or 1 when sliding.
+  std::size_t steps() const { return sliding_direction ? 1 : history.size(); }
+  // The tangential solver's options for these.
+  TangentialOptions tangential_options() const;
+
+  // Throws SolverOptionError naming the option unless: mu is finite and
+  // >= 0 ("friction"); exactly one of a non-empty history ("tangential_load")
+  // and a sliding direction ("sliding") is given; every load step is finite;
+  // the direction is finite and not zero, and mu > 0 when sliding; the
+  // tangential tolerance and iteration limit are valid ("tolerance",
+  // "max_iterations").
+  void validate() const;
+
+  // validate(), and the rules of the solve it is part of:
+  //  - the pair must be elastically similar (Dundurs' beta = 0): the coupled
+  //    normal-tangential problem is not solved ("pair");
+  //  - on a 1D grid the y components are zero ("tangential_load", "sliding");
+  //  - no adhesion: the cohesive tractions make negative pressures, where
+  //    Coulomb's bound mu p has no meaning yet ("adhesion");
+  //  - under force or mean-pressure control, every force step is at most
+  //    mu P, P the normal load (beyond it the contact slides: impose a
+  //    displacement or use sliding) ("tangential_load").
+  // Every normal solver is accepted (the dense ones too): for similar
+  // bodies the pressure does not depend on the shear, and the tangential
+  // step has its own operator.
+  void validate(const Grid& grid, const ElasticPair& pair, const SolverOptions& normal, const Loading& loading) const;
+
+  // The refusals of what the friction slice does not support, named for
+  // front ends that find them before they build a pair: a coated half-space
+  // ("coating": the tangential operator is the homogeneous half-space's), a
+  // material given as E* alone ("pair": E* does not fix the tangential
+  // compliance), several processes ("processes": friction is serial for now).
+  static void refuse_coating();
+  static void refuse_composite_modulus_only();
+  static void refuse_processes(int processes);
+};
+
+}  // namespace halfspace::solvers
+
+// The library and its front ends name these without the folder's namespace.
+namespace halfspace {
+using solvers::FrictionOptions;
+}  // namespace halfspace

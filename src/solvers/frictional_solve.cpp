@@ -1,0 +1,136 @@
+// The normal solve, then the tangential history under its pressure
+// (frictional_solve.hpp).
+#include "halfspace/solvers/frictional_solve.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <string>
+
+#include "halfspace/operators/tangential_operator.hpp"
+#include "halfspace/solvers/surface_solve.hpp"
+#include "halfspace/solvers/tangential_solver.hpp"
+
+namespace halfspace::solvers {
+namespace {
+
+// The sum the tangential solver takes as P (sum of p times the cell area),
+// so that the sliding force mu P is its own to rounding.
+double normal_force(const Grid& grid, const SolveResult& normal) {
+  return normal.pressure.sum() * grid.cell_area();
+}
+
+bool same_load(const TangentialLoading& a, const TangentialLoading& b) {
+  return a.control == b.control && a.x == b.x && a.y == b.y;
+}
+
+// The outcome of a step whose load is the previous step's: its state, no
+// slip increment, no dissipation, no iterations.
+TangentialResult repeated(const TangentialResult& previous) {
+  TangentialResult result = previous;
+  result.status = SolveStatus::converged;
+  result.message.clear();
+  result.dissipated_energy = 0.0;
+  result.iterations = 0;
+  result.residual = 0.0;
+  result.residual_history.clear();
+  result.operator_applications = 0;
+  result.wall_seconds = 0.0;
+  return result;
+}
+
+}  // namespace
+
+bool FrictionalSolveResult::converged() const {
+  if (!normal.converged() || steps.size() != requested_steps) return false;
+  for (const TangentialResult& step : steps) {
+    if (!step.converged()) return false;
+  }
+  return true;
+}
+
+std::string FrictionalSolveResult::failure() const {
+  if (!normal.converged()) return fmt::format("the normal contact did not converge: {}", normal.message);
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    if (!steps[k].converged()) {
+      return steps[k].message.empty()
+                 ? fmt::format("tangential step {} of {} did not converge ({} iterations, residual {:.3g} > {:.3g})",
+                               k + 1, requested_steps, steps[k].iterations, steps[k].residual, steps[k].tolerance)
+                 : fmt::format("tangential step {} of {} did not converge: {}", k + 1, requested_steps,
+                               steps[k].message);
+    }
+  }
+  if (steps.size() != requested_steps) {
+    return fmt::format("only {} of {} tangential steps were solved", steps.size(), requested_steps);
+  }
+  return {};
+}
+
+std::vector<TangentialResult> solve_tangential_history(const Grid& grid, const ElasticPair& pair,
+                                                       const SolveResult& normal, const FrictionOptions& friction,
+                                                       FftPlanning planning) {
+  friction.validate();
+  TangentialOperator op(grid, pair, planning);
+  std::size_t current = 0;  // the step the progress callback reports
+  TangentialOptions options = friction.tangential_options();
+  if (friction.progress) {
+    options.progress = [&friction, &current](int iteration, double residual) {
+      friction.progress(current, iteration, residual);
+    };
+  }
+  TangentialSolver solver(op, options);
+  const std::span<const double> pressure(normal.pressure.data(), static_cast<std::size_t>(normal.pressure.size()));
+  std::vector<TangentialResult> steps;
+  steps.reserve(friction.steps());
+  std::vector<TangentialLoading> loads;  // what each step imposed
+  TangentialState state = TangentialState::unloaded(grid.size());
+  for (std::size_t k = 0; k < friction.steps(); ++k) {
+    TangentialLoading loading;
+    if (friction.sliding_direction) {
+      // Gross sliding: the force mu P along the direction, which the solver
+      // meets with every contact cell at mu p.
+      const auto [x, y] = *friction.sliding_direction;
+      const double force = friction.friction_coefficient * normal_force(grid, normal) / std::hypot(x, y);
+      loading = TangentialLoading::force(force * x, force * y);
+    } else {
+      loading = friction.history[k];
+    }
+    current = k;
+    if (k > 0 && same_load(loading, loads.back())) {
+      // A step that repeats the previous load (the turning point written at
+      // the end of one branch and the start of the next) leaves the state
+      // as it is: no slip increment anywhere, so the conditions hold as the
+      // previous step left them, and nothing is dissipated.
+      steps.push_back(repeated(steps.back()));
+    } else {
+      steps.push_back(solver.solve(pressure, loading, state));
+    }
+    loads.push_back(loading);
+    if (!steps.back().converged()) break;
+    state = steps.back().state;
+  }
+  return steps;
+}
+
+FrictionalSolveResult solve_frictional_surface(const Grid& grid, std::span<const double> heights,
+                                               const ElasticPair& pair, const Loading& loading,
+                                               const SolverOptions& normal, const FrictionOptions& friction) {
+  friction.validate(grid, pair, normal, loading);
+  FrictionalSolveResult result;
+  result.requested_steps = friction.steps();
+  result.normal = solve_surface(grid, heights, pair.composite_modulus(), loading, normal);
+  if (!result.normal.converged()) return result;
+  result.steps = solve_tangential_history(grid, pair, result.normal, friction, normal.fft_planning);
+  return result;
+}
+
+double friction_memory_estimate(const Grid& grid, std::size_t steps) {
+  // Per cell: the operator's padded symbols and transforms (about 4 padded
+  // cells of complex values per field on free grids), about 224 bytes; the
+  // solver's workspace (mu p and six pairs of fields) and the step being
+  // solved, about 100; each kept step's six fields and stick map, 56.
+  const auto cells = static_cast<double>(grid.size());
+  return cells * (324.0 + 56.0 * static_cast<double>(steps));
+}
+
+}  // namespace halfspace::solvers

@@ -1,0 +1,101 @@
+// FrictionOptions' rules (friction_options.hpp): each broken one a
+// SolverOptionError naming the option the front ends map to their flags.
+#include "halfspace/solvers/friction_options.hpp"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <string>
+
+namespace halfspace {
+namespace {
+
+std::string refused_option(const std::function<void()>& check) {
+  try {
+    check();
+  } catch (const solvers::SolverOptionError& error) {
+    return error.option();
+  }
+  return "accepted";
+}
+
+FrictionOptions history(double mu, std::vector<TangentialLoading> steps) {
+  FrictionOptions options;
+  options.friction_coefficient = mu;
+  options.history = std::move(steps);
+  return options;
+}
+
+TEST(FrictionOptions, ValidateNamesTheOption) {
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(refused_option([] { history(0.3, {TangentialLoading::force(1.0)}).validate(); }), "accepted");
+  EXPECT_EQ(refused_option([] { history(-0.1, {TangentialLoading::force(1.0)}).validate(); }), "friction");
+  EXPECT_EQ(refused_option([&] { history(inf, {TangentialLoading::force(1.0)}).validate(); }), "friction");
+  EXPECT_EQ(refused_option([] { history(0.3, {}).validate(); }), "friction");
+  EXPECT_EQ(refused_option([&] { history(0.3, {TangentialLoading::force(inf)}).validate(); }), "tangential_load");
+  FrictionOptions sliding = history(0.3, {});
+  sliding.sliding_direction = {{1.0, 0.0}};
+  EXPECT_EQ(refused_option([&] { sliding.validate(); }), "accepted");
+  EXPECT_EQ(sliding.steps(), 1u);
+  sliding.sliding_direction = {{0.0, 0.0}};
+  EXPECT_EQ(refused_option([&] { sliding.validate(); }), "sliding");
+  sliding.sliding_direction = {{1.0, 0.0}};
+  sliding.friction_coefficient = 0.0;
+  EXPECT_EQ(refused_option([&] { sliding.validate(); }), "friction");
+  sliding.friction_coefficient = 0.3;
+  sliding.history = {TangentialLoading::force(1.0)};
+  EXPECT_EQ(refused_option([&] { sliding.validate(); }), "sliding");
+  FrictionOptions loose = history(0.3, {TangentialLoading::force(1.0)});
+  loose.tolerance = 1.0;
+  EXPECT_EQ(refused_option([&] { loose.validate(); }), "tolerance");
+}
+
+TEST(FrictionOptions, RulesOfTheSolve) {
+  const Grid plane = Grid::plane(8, 8, 1e-5, 1e-5, Boundary::free);
+  const Grid line = Grid::line(8, 1e-5, Boundary::free);
+  const ElasticPair steel = ElasticPair::similar({2.1e11, 0.3});
+  const solvers::SolverOptions normal;
+  const Loading ten = Loading::force(10.0);
+  EXPECT_EQ(refused_option([&] { history(0.3, {TangentialLoading::force(3.0)}).validate(plane, steel, normal, ten); }),
+            "accepted");
+  // Beyond mu P under load control.
+  EXPECT_EQ(refused_option([&] { history(0.3, {TangentialLoading::force(3.1)}).validate(plane, steel, normal, ten); }),
+            "tangential_load");
+  // Under approach control P is not known before the solve.
+  EXPECT_EQ(refused_option([&] {
+              history(0.3, {TangentialLoading::force(3.1)}).validate(plane, steel, normal, Loading::approach(1e-6));
+            }),
+            "accepted");
+  // Mean pressure: P = p times the domain area (6.4e-9 m^2 here).
+  EXPECT_EQ(refused_option([&] {
+              history(0.3, {TangentialLoading::force(1.0)}).validate(plane, steel, normal, Loading::mean_pressure(1e6));
+            }),
+            "tangential_load");
+  EXPECT_EQ(
+      refused_option([&] { history(0.3, {TangentialLoading::force(1.0, 0.5)}).validate(line, steel, normal, ten); }),
+      "tangential_load");
+  EXPECT_EQ(refused_option([&] {
+              history(0.3, {TangentialLoading::force(1.0)})
+                  .validate(plane, ElasticPair::on_rigid({2.1e11, 0.3}), normal, ten);
+            }),
+            "pair");
+  // An incompressible body on a rigid one is similar (beta = 0).
+  EXPECT_EQ(
+      refused_option([&] {
+        history(0.3, {TangentialLoading::force(1.0)}).validate(plane, ElasticPair::on_rigid({1e9, 0.5}), normal, ten);
+      }),
+      "accepted");
+  solvers::SolverOptions adhesive;
+  adhesive.adhesion = solvers::SolverOptions::Adhesion{};
+  adhesive.adhesion->law = AdhesionLaw{AdhesionLawType::maugis_dugdale, 0.1, 1e-8};
+  EXPECT_EQ(
+      refused_option([&] { history(0.3, {TangentialLoading::force(1.0)}).validate(plane, steel, adhesive, ten); }),
+      "adhesion");
+  EXPECT_EQ(refused_option([] { FrictionOptions::refuse_coating(); }), "coating");
+  EXPECT_EQ(refused_option([] { FrictionOptions::refuse_composite_modulus_only(); }), "pair");
+  EXPECT_EQ(refused_option([] { FrictionOptions::refuse_processes(1); }), "accepted");
+  EXPECT_EQ(refused_option([] { FrictionOptions::refuse_processes(2); }), "processes");
+}
+
+}  // namespace
+}  // namespace halfspace
