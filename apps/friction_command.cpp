@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <cstdio>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -16,6 +17,7 @@
 #include "halfspace/io/friction_history_writer.hpp"
 #include "halfspace/io/result_metadata.hpp"
 #include "halfspace/io/result_writer.hpp"
+#include "halfspace/io/stress_writer.hpp"
 #include "halfspace/solvers/frictional_solve.hpp"
 #include "halfspace/solvers/surface_solve.hpp"
 #include "halfspace/threads.hpp"
@@ -113,6 +115,22 @@ int run_frictional_solve(const SolveSetup& setup) {
     io::write_friction_history(setup.output, setup.grid, heights, result.normal, result.steps, loads, metadata);
   } else {
     if (!result.steps.empty()) metadata.tangential = &result.steps.front();
+    // Subsurface stresses (--stress-depths) under the pressure and the step's
+    // shear, written while the result is.
+    std::unique_ptr<stress::SubsurfaceStress> stresses;
+    if (!setup.stress_depths.empty() && !result.steps.empty()) {
+      stresses = std::make_unique<stress::SubsurfaceStress>(setup.grid, setup.stress_nu, setup.solver.fft_planning);
+      const TangentialResult& step = result.steps.front();
+      const stress::SurfaceTractions tractions{{result.normal.pressure.data(), setup.grid.size()},
+                                               {step.state.shear_x.data(), setup.grid.size()},
+                                               {step.state.shear_y.data(), setup.grid.size()}};
+      metadata.extra_groups = [&stresses, &setup, tractions](const io::Hdf5Node& root) {
+        io::write_stress_group(root, *stresses, tractions, setup.stress_depths);
+      };
+      metadata.extra_groups_bytes = io::stress_group_bound(setup.grid, setup.stress_depths.size());
+      activity.emplace(fmt::format("computing stresses at {} depths and writing {}", setup.stress_depths.size(),
+                                   setup.output.string()));
+    }
     io::write_result(setup.output, setup.grid, heights, result.normal, metadata);
   }
   activity.reset();

@@ -159,12 +159,6 @@ std::optional<solvers::FrictionOptions> friction_from(const SolveOptions& o, boo
                     "or --approach",
                     o.describe("friction")));
   }
-  if (o.stress_depths) {
-    throw InputError(
-        fmt::format("{} cannot be combined with {} yet: run `halfspace stress` on the result, which "
-                    "reads its /shear_x and /shear_y",
-                    o.describe("stress-depths"), o.name("friction")));
-  }
   solvers::FrictionOptions friction;
   friction.friction_coefficient = *o.friction;
   if (o.tangential_force) {
@@ -180,6 +174,12 @@ std::optional<solvers::FrictionOptions> friction_from(const SolveOptions& o, boo
     }
     friction.sliding_direction = {parse_number(parts[0], o.describe("sliding")),
                                   parse_number(parts[1], o.describe("sliding"))};
+  }
+  if (o.stress_depths && friction.steps() > 1) {
+    throw InputError(
+        fmt::format("{} applies to a single tangential step, not a history of {}: run `halfspace "
+                    "stress` on a result of one step",
+                    o.describe("stress-depths"), friction.steps()));
   }
   if (o.tangential_tol) friction.tolerance = *o.tangential_tol;
   // Beyond int, a limit is no limit: validate() sees the nearest int.

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -238,6 +239,45 @@ TEST(FrictionCliTest, DisplacementControlAndGrossSliding) {
   EXPECT_NEAR(test::read_double_attribute(file.get(), "tangential_force_x"), 0.0, 1e-12 * kForce);
 }
 
+// --stress-depths in a frictional solve takes the step's shear: its /stress
+// group equals what `halfspace stress` computes from the written /shear_x and
+// /shear_y, and the shear raises the largest von Mises stress.
+TEST(FrictionCliTest, StressDepthsUseTheShearOfTheStep) {
+  const TempDir dir;
+  const std::vector<std::string> depths = {"--stress-depths", "2e-6,1e-5", "--stress-nu", "0.3"};
+  std::vector<std::string> extra = {"--friction", "0.3", "--sliding", "1,0"};
+  extra.insert(extra.end(), depths.begin(), depths.end());
+  ProgramRun run = run_program(sphere(24, "s.h5", extra), dir.path());
+  ASSERT_EQ(run.exit_code, kExitOk) << run.err;
+  run = run_program(sphere(24, "n.h5", depths), dir.path());
+  ASSERT_EQ(run.exit_code, kExitOk) << run.err;
+  run = run_program(
+      {"stress", "s.h5", "--depths", "2e-6,1e-5", "--nu", "0.3", "--output", "alone.h5", "--threads", "1"}, dir.path());
+  ASSERT_EQ(run.exit_code, kExitOk) << run.err;
+
+  const test::H5 solved = test::open_file(dir / "s.h5");
+  const test::H5 alone = test::open_file(dir / "alone.h5");
+  const test::H5 frictionless = test::open_file(dir / "n.h5");
+  const test::H5 group(H5Gopen2(solved.get(), "/stress", H5P_DEFAULT), H5Gclose, "open /stress");
+  EXPECT_EQ(test::read_string_attribute(group.get(), "tractions"), "pressure and shear");
+  for (const char* component : {"sigma_xx", "sigma_xz", "von_mises"}) {
+    SCOPED_TRACE(component);
+    const std::string name = std::string("/stress/") + component;
+    const auto a = test::read_dataset<double>(solved.get(), name, H5T_NATIVE_DOUBLE);
+    const auto b = test::read_dataset<double>(alone.get(), name, H5T_NATIVE_DOUBLE);
+    ASSERT_EQ(a.size(), b.size());
+    double scale = 0.0, difference = 0.0;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      scale = std::max(scale, std::abs(b[i]));
+      difference = std::max(difference, std::abs(a[i] - b[i]));
+    }
+    EXPECT_LE(difference, 1e-12 * scale);
+  }
+  const auto sheared = test::read_dataset<double>(solved.get(), "/stress/von_mises", H5T_NATIVE_DOUBLE);
+  const auto plain = test::read_dataset<double>(frictionless.get(), "/stress/von_mises", H5T_NATIVE_DOUBLE);
+  EXPECT_GT(*std::max_element(sheared.begin(), sheared.end()), 1.05 * *std::max_element(plain.begin(), plain.end()));
+}
+
 TEST(FrictionCliTest, AStepThatDoesNotConvergeEndsTheHistoryWithExitTwo) {
   const TempDir dir;
   const ProgramRun run = run_program(
@@ -323,8 +363,8 @@ TEST(FrictionCliTest, RefusalsNameTheOptions) {
         "2e11",  "--substrate-nu",    "0.3",    "--force",   "10",   "--friction", "0.3",   "--tangential-force",
         "1",     "--output",          "bad.h5"},
        {"the coated half-space (--layer-*, --substrate-*) cannot be combined with friction", "--friction 0.3"}},
-      {sphere(16, "bad.h5", {"--friction", "0.3", "--tangential-force", "1", "--stress-depths", "1e-5"}),
-       {"--stress-depths 1e-5 cannot be combined with --friction", "halfspace stress"}},
+      {sphere(16, "bad.h5", {"--friction", "0.3", "--tangential-force", "0.5;1", "--stress-depths", "1e-5"}),
+       {"--stress-depths 1e-5 applies to a single tangential step, not a history of 2", "halfspace stress"}},
       {{"solve",  "--geometry",
         "sphere", "--radius",
         "0.01",   "--grid",
