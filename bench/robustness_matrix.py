@@ -143,29 +143,42 @@ def window_option(path, side):
 
 
 class Runner:
-    def __init__(self, program, work, threads, timeout):
+    def __init__(self, program, work, threads, timeout, reuse=False, no_new_runs=False):
         self.program, self.work, self.threads, self.timeout = program, work, threads, timeout
+        self.reuse, self.no_new_runs = reuse, no_new_runs
         self.environment = dict(os.environ, HALFSPACE_FFTW_WISDOM="off", OMP_NUM_THREADS=str(threads))
 
     def execute(self, run):
-        """Runs one solve and classifies it (run.outcome and the rest)."""
+        """Runs one solve and classifies it (run.outcome and the rest). With
+        reuse, a result file already in the work directory (of an earlier,
+        interrupted matrix) is classified instead, its seconds the solve's
+        own; with no_new_runs a missing one is `not run`."""
         command = [self.program, "solve", *run.args, "--threads", str(self.threads), "--quiet", "--output",
                    run.output]
         run.command = command
-        if os.path.exists(run.output):
-            os.remove(run.output)
-        start = time.perf_counter()
-        try:
-            process = subprocess.run(command, capture_output=True, text=True, timeout=self.timeout,
-                                     env=self.environment)
-        except subprocess.TimeoutExpired:
-            run.seconds = time.perf_counter() - start
-            run.outcome, run.note = "FAILED", f"no answer within {self.timeout:g} s"
+        if self.reuse and os.path.exists(run.output):
+            with h5py.File(run.output, "r") as f:
+                returncode = EXIT_OK if int(f.attrs["converged"]) == 1 else 2
+                run.seconds = float(f.attrs["solve_seconds"])
+            stderr, written = "", True
+        elif self.no_new_runs:
+            run.outcome = "not run"
             return run
-        run.seconds = time.perf_counter() - start
-        stderr = " ".join(process.stderr.split())
-        written = os.path.exists(run.output)
-        if process.returncode == EXIT_INPUT_ERROR:
+        else:
+            if os.path.exists(run.output):
+                os.remove(run.output)
+            start = time.perf_counter()
+            try:
+                process = subprocess.run(command, capture_output=True, text=True, timeout=self.timeout,
+                                         env=self.environment)
+            except subprocess.TimeoutExpired:
+                run.seconds = time.perf_counter() - start
+                run.outcome, run.note = "FAILED", f"no answer within {self.timeout:g} s"
+                return run
+            run.seconds = time.perf_counter() - start
+            returncode, stderr = process.returncode, " ".join(process.stderr.split())
+            written = os.path.exists(run.output)
+        if returncode == EXIT_INPUT_ERROR:
             if written or not stderr:
                 run.outcome = "FAILED"
                 run.note = "exit 1 " + ("after writing a result" if written else "without a message")
@@ -173,7 +186,7 @@ class Runner:
                 run.outcome, run.note = "refused", stderr.removeprefix("error: ")
             return run
         if not written:
-            run.outcome, run.note = "FAILED", f"exit {process.returncode}, no result: {stderr}"
+            run.outcome, run.note = "FAILED", f"exit {returncode}, no result: {stderr}"
             return run
         with h5py.File(run.output, "r") as f:
             run.iterations = str(int(f.attrs["iterations"]))
@@ -182,9 +195,9 @@ class Runner:
                 run.contact += f" ({f.attrs['plastic_fraction']:.3f} plastic)"
             converged = int(f.attrs["converged"]) == 1
             message = str(f.attrs["message"])
-        if process.returncode != EXIT_OK or not converged:
+        if returncode != EXIT_OK or not converged:
             run.outcome = "FAILED"
-            run.note = f"exit {process.returncode}: {message or stderr}"
+            run.note = f"exit {returncode}: {message or stderr}"
             return run
         problems = check_result(run.output, run)
         run.outcome = "FAILED" if problems else "converged"
@@ -290,6 +303,11 @@ def calibrate(runner, name, map_args, boundary, window_cells, targets):
     for target in targets:
         pressure = None
         history = []
+        output = os.path.join(runner.work, f"{name}-{boundary}-elastic-{target}.h5")
+        reused = runner.reuse and os.path.exists(output)
+        if reused:
+            with h5py.File(output, "r") as f:
+                pressure = float(f.attrs["mean_pressure"])
         for attempt in range(6):
             if pressure is None:
                 pressure = 0.5 * target * E_STAR * (slope or 0.1)
@@ -305,7 +323,7 @@ def calibrate(runner, name, map_args, boundary, window_cells, targets):
                 area = float(f.attrs["contact_fraction"])
                 slope = slope or float(f.attrs["surface_rms_slope"])
                 run.law_parameters["approach"] = float(f.attrs["approach"])
-            if run.outcome != "converged":
+            if run.outcome != "converged" or reused:
                 break
             history.append((math.log(pressure), math.log(max(area, 1.0 / window_cells))))
             if abs(math.log(max(area, 1e-12) / target)) < math.log(1.25):
@@ -364,12 +382,13 @@ def matrix_runs(work, name, map_args, boundary, elastic, dx):
 
 
 def markdown(runs, title):
-    lines = [f"### {title}", "", "| law | converged | refused | FAILED |", "|---|---|---|---|"]
+    outcomes = ["converged", "refused", "FAILED"] + (["not run"] if any(r.outcome == "not run" for r in runs) else [])
+    lines = [f"### {title}", "", "| law | " + " | ".join(outcomes) + " |", "|---" * (len(outcomes) + 1) + "|"]
     for law in LAWS:
         mine = [run for run in runs if run.law == law]
         if mine:
-            counts = [sum(run.outcome == outcome for run in mine) for outcome in ("converged", "refused", "FAILED")]
-            lines.append(f"| {law} | {counts[0]} | {counts[1]} | {counts[2]} |")
+            counts = [sum(run.outcome == outcome for run in mine) for outcome in outcomes]
+            lines.append(f"| {law} | " + " | ".join(map(str, counts)) + " |")
     lines += ["", "| map | boundary | law | load | outcome | iterations | seconds | contact fraction | note |",
               "|---|---|---|---|---|---|---|---|---|"]
     for run in runs:
@@ -393,6 +412,9 @@ def main():
     parser.add_argument("--timeout", type=float, default=900.0, help="seconds a solve may take [900]")
     parser.add_argument("--markdown", help="write the matrix as Markdown to this file")
     parser.add_argument("--work", help="keep the result files in this directory [a temporary one]")
+    parser.add_argument("--reuse", action="store_true",
+                        help="classify the result files already in --work instead of solving again (resuming)")
+    parser.add_argument("--no-new-runs", action="store_true", help="with --reuse: mark the missing runs `not run`")
     parser.add_argument("--quick", action="store_true", help="two maps, 64 x 64, the middle load (the ctest)")
     parser.add_argument("--shared", help="the shared data folder [$SHARED, else ../shared beside the project root]")
     args = parser.parse_args()
@@ -412,7 +434,8 @@ def main():
     with tempfile.TemporaryDirectory() as temporary:
         work = args.work or temporary
         os.makedirs(work, exist_ok=True)
-        runner = Runner(os.path.abspath(args.halfspace), work, args.threads, args.timeout)
+        runner = Runner(os.path.abspath(args.halfspace), work, args.threads, args.timeout, args.reuse,
+                        args.no_new_runs)
         cases = []
         for path in maps:
             name = os.path.splitext(os.path.basename(path))[0]
