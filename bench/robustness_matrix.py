@@ -45,8 +45,9 @@ residuals, these are looser by 10^2 or more):
   force       sum p dx dy equals total_force (to 1e-9 of sum |p| dx dy), and
               the prescribed mean pressure or approach is met (mean pressure
               to 1e-5 relative: the adhesive search's force tolerance is 1e-6)
-  bounds      p >= 0 (elastic, coatings); 0 <= p <= H (hardness);
-              p >= -sigma0 (md) or -w/rho (exponential), to 1e-9 relative
+  bounds      p >= 0 (elastic, coatings); 0 <= p <= H (hardness), to 1e-9
+              of p_ref; p >= -sigma0 (md) or -w/rho (exponential), to 1e-5
+              of p_ref (the adhesive solver's residual is 1e-6 of p_ref)
   law         no penetration outside the cap (gap >= -1e-6 g_ref); no
               pressure off the wall: sum p+ |gap| dA / (sum p+ dA g_ref)
               <= 1e-6 (complementarity); the plastic cells are those at
@@ -271,7 +272,11 @@ def check_result(path, run):
         law, parameters = run.law, run.law_parameters
         hardness = float(a["hardness"])
         lower = -parameters["stress"] if adhesive else 0.0
-        if np.min(p) < lower - 1e-9 * p_ref:
+        # Polonsky-Keer projects onto its bounds exactly; the adhesive solver
+        # reports a cell on the wall at its pressure S v, right to its
+        # residual, 1e-6 of the largest |p| (adhesive_contact_solver.hpp):
+        # ten times that.
+        if np.min(p) < lower - (1e-5 if adhesive else 1e-9) * p_ref:
             problems.append(f"pressure {np.min(p):.4e} Pa below its bound {lower:.4e} Pa")
         if hardness > 0 and np.max(p) > hardness * (1 + 1e-9):
             problems.append(f"pressure {np.max(p):.6e} Pa above the hardness {hardness:.6e} Pa")
