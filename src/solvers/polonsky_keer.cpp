@@ -37,6 +37,11 @@ constexpr double kEntriesKept = 0.01;
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
+// A stall of load control (Iteration::evaluate): the residual has not
+// fallen below this share of its least value in this many iterations.
+constexpr double kStallProgress = 0.9;
+constexpr int kStallIterations = 100;
+
 struct Problem {
   std::span<const double> initial_gap;
   bool load_controlled = false;
@@ -185,6 +190,17 @@ class Iteration {
     }
     result_.residual_history.push_back(residual_);
     if (options_.progress) options_.progress(iteration, residual_);
+    // A load-controlled iteration without a cap whose residual has not
+    // fallen by a tenth in kStallIterations restores the load by shifting
+    // from then on (load_shift); the conjugate directions restart.
+    if (residual_ < kStallProgress * best_residual_) {
+      best_residual_ = residual_;
+      best_iteration_ = iteration;
+    } else if (problem_.load_controlled && !bounds_.capped() && !load_by_shift_ &&
+               iteration - best_iteration_ >= kStallIterations) {
+      load_by_shift_ = true;
+      conjugate_ = false;
+    }
   }
 
   // Whether the iteration ends here, with the result's status.
@@ -288,7 +304,8 @@ class Iteration {
   // pressure -tau g. The displacement follows without a new product:
   // K(p - tau t) = u - tau r, plus K c for the correction c that the
   // projection and entries add, zero once the contact set settles. The
-  // load is restored by scaling (K is linear: u scales with p). The
+  // load is restored by scaling (K is linear: u scales with p), or, once
+  // that has stalled, by the shift of load_shift, which joins c. The
   // addition of K c and the scaling are left to the next evaluation's first
   // pass (Deferred).
   void advance() {
@@ -298,23 +315,71 @@ class Iteration {
     }
     const bool entries = !projected_;
     const double tau = tau_;
+    // The cell's pressure after the step, projected, or entered with -tau g.
+    const auto projected = [&](std::size_t i) {
+      const double pi = bounds_.project(p_[i] - tau * t_[i]);
+      return entries && pi == 0.0 && g_[i] < 0.0 && tau > 0.0 ? -tau * g_[i] : pi;
+    };
+    const bool shifted = problem_.load_controlled && load_by_shift_;
+    const double shift = shifted ? load_shift(projected) : 0.0;
     const auto [new_pressure_sum, entered, corrected] = sums<3>(comm_, n_, [&](std::size_t i) {
       const double moved = p_[i] - tau * t_[i];
-      double pi = bounds_.project(moved);
-      double entry = 0.0;
-      if (entries && pi == 0.0 && g_[i] < 0.0 && tau > 0.0) {
-        pi = -tau * g_[i];
-        entry = 1.0;
-      }
+      const double q = projected(i);
+      const double pi = q > 0.0 ? std::max(q + shift, 0.0) : 0.0;
+      const double entry = q > 0.0 && moved <= 0.0 ? 1.0 : 0.0;
       p_[i] = pi;
       u_[i] -= tau * r_[i];
       r_[i] = pi - moved;
-      return std::array<double, 3>{pi, entry, r_[i] != 0.0 ? 1.0 : 0.0};
+      return std::array<double, 3>{pi, entry, q != moved ? 1.0 : 0.0};
     });
     const double entries_kept = projected_ ? kEntriesKept * contact_cells_ : 0.0;
     conjugate_ = entered <= entries_kept && tau > 0.0;
-    finish_step(corrected);
-    if (problem_.load_controlled) deferred_.scale = problem_.target_force / (problem_.cell_area * new_pressure_sum);
+    finish_step(corrected, corrected > 0.0 || shift != 0.0);
+    if (problem_.load_controlled && !shifted) {
+      deferred_.scale = problem_.target_force / (problem_.cell_area * new_pressure_sum);
+    }
+  }
+
+  // The load restored after a step without a cap, once the scaling has
+  // stalled (see evaluate): the shift mu of the pressures q_i > 0 with
+  //
+  //   sum over q_i > 0 of max(q_i + mu, 0)  =  target force / cell area,
+  //
+  // the projection of q onto the admissible pressures carrying the load
+  // that keeps the contact from growing (mu <= 0 unless rounding left the
+  // sum short). Polonsky & Keer's scaling, p -> s p, takes the load off
+  // every cell in proportion to its pressure: on a surface with a few much
+  // higher cells (instrument spikes in measured maps) whose pressure must be
+  // many times the others', each scaling undid the step that had raised
+  // them, and the iteration cycled between two states far from the solution
+  // (sur-2's 256^2 window, every solver, at 1-5 % contact; docs/validation.md,
+  // "Robustness matrix"); the shift takes the same load off every contact
+  // cell and leaves them raised. It is not the default: on a stiff coating
+  // over a soft substrate, whose nearly uniform pressures it clips by the
+  // hundred, it can collapse the contact. The left side is convex and
+  // piecewise linear in mu, so Newton's method from the shift that ignores
+  // the clipping (above the root) falls monotonically onto it, exactly
+  // once the cells it clips stop changing.
+  template <class Pressure>
+  double load_shift(Pressure&& pressure) const {
+    const double target_sum = problem_.target_force / problem_.cell_area;
+    const auto [sum, count] = sums<2>(comm_, n_, [&](std::size_t i) {
+      const double q = pressure(i);
+      return q > 0.0 ? std::array<double, 2>{q, 1.0} : std::array<double, 2>{0.0, 0.0};
+    });
+    if (!(count > 0.0)) return 0.0;
+    double shift = (target_sum - sum) / count;
+    constexpr int kMaxPasses = 100;
+    for (int pass = 0; pass < kMaxPasses; ++pass) {
+      const auto [force_sum, slope] = sums<2>(comm_, n_, [&](std::size_t i) {
+        const double q = pressure(i);
+        return q > 0.0 && q + shift > 0.0 ? std::array<double, 2>{q + shift, 1.0} : std::array<double, 2>{0.0, 0.0};
+      });
+      const double excess = force_sum - target_sum;
+      if (excess <= 1e-15 * target_sum || !(slope > 0.0)) break;
+      shift -= excess / slope;
+    }
+    return shift;
   }
 
   // Steps 6-9 with a hardness cap: p = P(p - tau t) onto [0, H], entries
@@ -371,7 +436,7 @@ class Iteration {
     });
     const double entries_kept = projected_ ? kEntriesKept * contact_cells_ : 0.0;
     conjugate_ = entered <= entries_kept && tau > 0.0 && !filled && (projected_ || reached_cap == 0.0);
-    finish_step(corrected);
+    finish_step(corrected, corrected > 0.0);
     deferred_.scale = scale.factor;
   }
 
@@ -382,9 +447,9 @@ class Iteration {
   // turned into its displacement K c, added to u at the next exact
   // evaluation (g is recomputed from u in step 1, so it can hold K c until
   // then).
-  void finish_step(double corrected) {
+  void finish_step(double corrected, bool correction) {
     if (preconditioner_) preconditioner_->observe_step({corrected, search_cells_});
-    if (corrected > 0.0) {
+    if (correction) {
       op_.apply({r_, n_}, {g_, n_});
       ++result_.operator_applications;
       deferred_.add_correction = true;
@@ -629,9 +694,12 @@ class Iteration {
   double z_mean_ = 0.0;
   double search_cells_ = 0.0;
   double search_gap_sum_ = 0.0;
-  double search_norm_ = 0.0;    // G = sum over the search set of g (z - mean z)
-  double previous_norm_ = 1.0;  // G of the previous step
-  bool conjugate_ = false;      // false right after a restart
+  double search_norm_ = 0.0;          // G = sum over the search set of g (z - mean z)
+  double previous_norm_ = 1.0;        // G of the previous step
+  bool conjugate_ = false;            // false right after a restart
+  double best_residual_ = kInfinity;  // the least residual by a tenth, and when
+  int best_iteration_ = 0;
+  bool load_by_shift_ = false;  // the load restored by load_shift, not by scaling
   double tau_ = 0.0;
 };
 

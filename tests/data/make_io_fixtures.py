@@ -54,6 +54,23 @@ def crop_dektak():
           f"h[0] {h[0]!r}, h[255] {h[255]!r}")
 
 
+def crop_sur2():
+    # The two one-cell spikes of sur-2.h5 (rows 152, columns 259 and 260, 28 rms
+    # heights above the mean) and the rough surface around them: the load-control
+    # stall of Polonsky-Keer's scaling (tests/solvers/spiked_surface_test.cpp).
+    rows, cols = slice(120, 184), slice(230, 294)
+    with h5py.File(os.path.join(TOPOGRAPHY, "sur-2.h5"), "r") as src:
+        h = src["height"][rows, cols]
+        out = os.path.join(HERE, "sur-2-crop-64x64.h5")
+        with h5py.File(out, "w") as dst:
+            dst.create_dataset("height", data=h)
+            copy_attributes(src, dst, nx=np.int64(64), ny=np.int64(64),
+                            cropped=fixed("rows 120:184 and columns 230:294 of sur-2.h5 (0-based, end exclusive), "
+                                          "made by tests/data/make_io_fixtures.py"))
+    print(f"sur-2 crop: shape {h.shape}, rms about mean {np.sqrt(np.mean((h - h.mean()) ** 2))!r}, "
+          f"highest {np.sort(h.ravel())[-3:]!r}")
+
+
 def synthetic():
     # float32 storage; every value exactly representable so the conversion is exact.
     j, i = np.mgrid[0:3, 0:5]
@@ -69,4 +86,5 @@ def synthetic():
 if __name__ == "__main__":
     crop_di5()
     crop_dektak()
+    crop_sur2()
     synthetic()

@@ -20,7 +20,11 @@
 // other contacts ptp(K p) is the larger term. The iteration stops when
 // residual <= tolerance, checked on the final (p, K p) pair, so the returned
 // fields are mutually consistent. Under load control the force equals the
-// target to rounding at every iterate.
+// target to rounding at every iterate: the paper restores it by scaling the
+// pressure after each step; when the residual has not fallen by a tenth in
+// 100 iterations, the rest of the solve shifts the contact pressures by
+// one amount instead (a few one-cell spikes of a measured map, which must
+// carry hundreds of times the mean pressure, made the scaling cycle).
 //
 // The method comes in two forms (PolonskyKeerForm).
 //  - paper: the conjugate directions cover the contact set C; a cell out of
