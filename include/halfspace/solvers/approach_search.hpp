@@ -32,8 +32,8 @@ struct ApproachSearch {
   double target = 0.0;  // the total force (N, signed)
   double probe = 0.0;   // the first step (m): the approach over which the force changes (an adhesive law's range)
   double ceiling = std::numeric_limits<double>::infinity();  // the largest approach allowed (m)
-  double force_tolerance = 1e-6;                              // relative to the forces of the state
-  int max_steps = 60;                                         // displacement-controlled solves
+  double force_tolerance = 1e-6;                             // relative to the forces of the state
+  int max_steps = 60;                                        // displacement-controlled solves
 };
 
 // The search from `result`, the solve already made at `approach`. Returns
@@ -42,7 +42,6 @@ struct ApproachSearch {
 // pull-off force of the branch followed (the message gives the least force
 // reached), lies in a jump of the force on every branch, or was not reached
 // in max_steps; a failed inner solve's status and message otherwise.
-SolveResult search_approach(ApproachDriven& driven, const ApproachSearch& search, double approach,
-                            SolveResult result);
+SolveResult search_approach(ApproachDriven& driven, const ApproachSearch& search, double approach, SolveResult result);
 
 }  // namespace halfspace::solvers
