@@ -110,9 +110,13 @@ void check_distributable(const Grid& grid, const solvers::SolverOptions& options
         "grid", fmt::format("{} ({}D, {})", grid.shape_string(), grid.dimension(), to_string(grid.boundary())),
         fmt::format("{}: only 2D grids are distributed", kNotYet));
   }
-  if (options.adhesion) {
+  if (options.adhesion && !grid.periodic()) {
+    // The adhesive solver's displacement lives on the zero-padded grid,
+    // whose padding rows the slab transforms never hold (slab_padded_fft.hpp).
     throw SolverOptionError("adhesion", std::string(to_string(options.adhesion->law.type)),
-                            fmt::format("{}: solve adhesive contacts on one process", kNotYet));
+                            fmt::format("{} on a free grid: solve free adhesive contacts on one process (periodic "
+                                        "ones are distributed)",
+                                        kNotYet));
   }
   if (options.type != SolverType::pk && options.type != SolverType::pk_fourier &&
       options.type != SolverType::pk_multilevel) {
@@ -140,6 +144,14 @@ std::unique_ptr<solvers::ContactSolver> make_distributed_solver(const Grid& grid
     options.validate(grid);
   }
   check_distributable(grid, options);
+  if (options.adhesion) {
+    // The adhesive solver on the periodic slab operator, as make_solver
+    // builds it on the serial one.
+    auto transform = std::make_shared<SlabRealFft>(grid.nx(), grid.ny(), comm, options.fft_planning);
+    return std::make_unique<solvers::AdhesiveContactSolver>(
+        std::make_unique<SlabFourierOperator>(grid, elasticity, transform), solvers::contact_modulus(elasticity),
+        solvers::adhesive_solver_options(options));
+  }
   if (options.type == SolverType::pk_multilevel) return make_distributed_multilevel(grid, elasticity, options, comm);
   const bool projected = options.type == SolverType::pk_fourier;
   SlabOperator slab = make_slab_operator(grid, elasticity, projected, options.fft_planning, comm);

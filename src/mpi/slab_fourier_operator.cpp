@@ -11,6 +11,7 @@
 #include <cassert>
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <utility>
 
 #include "halfspace/error.hpp"
@@ -82,7 +83,9 @@ void multiply_and_invert(SlabRealFft& fft, const std::vector<double>& multiplier
 
 SlabFourierOperator::SlabFourierOperator(const Grid& grid, const SlabElasticity& elasticity,
                                          std::shared_ptr<SlabRealFft> transform)
-    : grid_(grid), transform_(checked_transform(grid, std::move(transform), "SlabFourierOperator", true)) {
+    : grid_(grid),
+      elasticity_(elasticity),
+      transform_(checked_transform(grid, std::move(transform), "SlabFourierOperator", true)) {
   const std::function<double(double)> spectrum = kernel_of(elasticity);
   // FFTW's transforms are unnormalised: fold 1/N into the kernel.
   const double inverse_n = 1.0 / static_cast<double>(grid.size());
@@ -102,6 +105,47 @@ void SlabFourierOperator::apply(std::span<const double> pressure, std::span<doub
   assert(pressure.size() == local_size() && displacement.size() == local_size());
   transform_->forward(pressure);
   multiply_and_invert(*transform_, kernel_, displacement);
+}
+
+namespace {
+
+// K through the operator, K^-1 on its transform.
+class SlabCirculantForm final : public operators::CirculantForm {
+ public:
+  SlabCirculantForm(SlabFourierOperator& op, std::shared_ptr<SlabRealFft> transform, std::vector<double> stiffness)
+      : CirculantForm(false), op_(op), transform_(std::move(transform)), stiffness_(std::move(stiffness)) {}
+  std::size_t local_size() const override { return op_.local_size(); }
+  std::size_t size() const override { return op_.grid().size(); }
+  std::size_t row_stride() const override { return op_.grid().nx(); }
+  void apply(std::span<const double> in, std::span<double> out) override { op_.apply(in, out); }
+  void apply_inverse(std::span<const double> in, std::span<double> out) override {
+    transform_->forward(in);
+    multiply_and_invert(*transform_, stiffness_, out);
+  }
+
+ private:
+  SlabFourierOperator& op_;
+  std::shared_ptr<SlabRealFft> transform_;
+  std::vector<double> stiffness_;  // 1/(kernel N) on this process's spectrum columns, 0 at q = 0
+};
+
+}  // namespace
+
+CirculantForm& SlabFourierOperator::circulant_form() {
+  if (!circulant_) {
+    // As FftInfluenceOperator's periodic form: E*|q|/2 or the coated
+    // kernel's inverse, over N.
+    const double inverse_n = 1.0 / static_cast<double>(grid_.size());
+    const auto* coating = std::get_if<LayeredMaterial>(&elasticity_);
+    const std::optional<kernels::LayeredKernel> layered =
+        coating ? std::optional<kernels::LayeredKernel>(*coating) : std::nullopt;
+    const double e_star = coating ? 0.0 : std::get<double>(elasticity_);
+    std::vector<double> stiffness = on_local_spectrum(grid_, transform_->layout(), [&](double q) {
+      return q > 0.0 ? (layered ? 1.0 / layered->spectrum(q) : 0.5 * e_star * q) * inverse_n : 0.0;
+    });
+    circulant_ = std::make_unique<SlabCirculantForm>(*this, transform_, std::move(stiffness));
+  }
+  return *circulant_;
 }
 
 SlabFourierPreconditioner::SlabFourierPreconditioner(const Grid& grid, const SlabElasticity& elasticity,

@@ -10,6 +10,7 @@
 #include <cassert>
 #include <cmath>
 #include <complex>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <utility>
@@ -47,6 +48,24 @@ std::size_t mirrored(std::size_t k, std::size_t n) {
   return k <= n ? k : 2 * n - k;
 }
 
+// K and K^-1 as symbols on one transform: the periodic grid's own (shared
+// with the operator), or the whole padded grid's of a free one.
+class SymbolForm final : public CirculantForm {
+ public:
+  SymbolForm(bool padded, std::shared_ptr<RealFft> fft, EvenSymbol kernel, EvenSymbol stiffness)
+      : CirculantForm(padded), fft_(std::move(fft)), kernel_(std::move(kernel)), stiffness_(std::move(stiffness)) {}
+  std::size_t local_size() const override { return fft_->real_size(); }
+  std::size_t size() const override { return fft_->real_size(); }
+  std::size_t row_stride() const override { return fft_->real_size() / fft_->rows(); }
+  void apply(std::span<const double> in, std::span<double> out) override { kernel_.apply(*fft_, in, out); }
+  void apply_inverse(std::span<const double> in, std::span<double> out) override { stiffness_.apply(*fft_, in, out); }
+
+ private:
+  std::shared_ptr<RealFft> fft_;
+  EvenSymbol kernel_;
+  EvenSymbol stiffness_;
+};
+
 }  // namespace
 
 struct FftInfluenceOperator::Impl {
@@ -55,6 +74,8 @@ struct FftInfluenceOperator::Impl {
   Impl(const Grid& g, double e_star, std::optional<kernels::LayeredKernel> layered_kernel,
        std::shared_ptr<RealFft> shared, FftPlanning planning)
       : grid(g),
+        e_star(e_star),
+        planning(planning),
         layered(std::move(layered_kernel)),
         transform(std::move(shared)),
         padded(transform ? nullptr
@@ -64,8 +85,7 @@ struct FftInfluenceOperator::Impl {
     if (grid.periodic()) {
       init_periodic(e_star);
     } else {
-      init_free(e_star);
-      if (layered && spectral_remainder()) add_layered_remainder();
+      init_free();
     }
   }
 
@@ -102,16 +122,15 @@ struct FftInfluenceOperator::Impl {
 
   // Coefficients on the (2ny, 2nx) wrap-around grid, transformed once. They
   // depend on |offset| only (the kernels fold the sign), so the quadrant of
-  // non-negative offsets is evaluated once and mirrored. Being even in each
-  // axis, they have a real spectrum up to rounding: only its real part is kept.
-  void init_free(double e_star) {
+  // non-negative offsets ((ny + 1, nx + 1), or nx + 1 in 1D) is evaluated
+  // once and mirrored.
+  std::vector<double> free_quadrant() const {
     const std::size_t nx = grid.nx();
-    const std::size_t ny = grid.ny();
     const bool line = grid.dimension() == 1;
     const double dx = grid.dx();
     const double dy = grid.dy();
     const std::size_t quadrant_cols = nx + 1;
-    const std::size_t quadrant_rows = line ? 1 : ny + 1;
+    const std::size_t quadrant_rows = line ? 1 : grid.ny() + 1;
     std::vector<double> quadrant(quadrant_rows * quadrant_cols);
     linalg::for_each_row(quadrant_rows, quadrant_cols, [&](std::size_t dj) {
       for (std::size_t di = 0; di < quadrant_cols; ++di) {
@@ -125,19 +144,37 @@ struct FftInfluenceOperator::Impl {
       }
     });
     if (layered && !spectral_remainder()) add_layered_remainder_in_real_space(quadrant, quadrant_rows, quadrant_cols);
-    self = quadrant[0];
+    return quadrant;
+  }
 
-    linalg::for_each_row(padded->spectrum_rows(), 2 * nx, [&](std::size_t r) {
-      const std::size_t dj = line ? 0 : mirrored(r, ny);
-      std::span<double> row = padded->padded_row(r);
-      for (std::size_t c = 0; c < row.size(); ++c) row[c] = quadrant[dj * quadrant_cols + mirrored(c, nx)];
+  // The padded coefficients written into the rows `row(r)` (2nx values each)
+  // of a transform of the padded grid.
+  template <class Row>
+  void write_padded(const std::vector<double>& quadrant, std::size_t rows, Row&& row) const {
+    const std::size_t nx = grid.nx();
+    linalg::for_each_row(rows, 2 * nx, [&](std::size_t r) {
+      const std::size_t dj = grid.dimension() == 1 ? 0 : mirrored(r, grid.ny());
+      std::span<double> values = row(r);
+      for (std::size_t c = 0; c < values.size(); ++c) values[c] = quadrant[dj * (nx + 1) + mirrored(c, nx)];
     });
+  }
+
+  // The coefficients' spectrum through the pruned transform. Being even in
+  // each axis, it is real up to rounding: only its real part is kept.
+  void init_free() {
+    const std::vector<double> quadrant = free_quadrant();
+    self = quadrant[0];
+    write_padded(quadrant, padded->spectrum_rows(), [&](std::size_t r) { return padded->padded_row(r); });
     padded->forward_all_rows();
     const double inverse_n = 1.0 / static_cast<double>(padded->padded_size());
     std::span<const std::complex<double>> spectrum = padded->spectrum();
     for (std::size_t r = 0; r < kernel.stored_rows(); ++r) {
       for (std::size_t c = 0; c < kernel.cols(); ++c)
         kernel.at(r, c) = spectrum[r * kernel.cols() + c].real() * inverse_n;
+    }
+    if (layered && spectral_remainder()) {
+      add_layered_remainder(kernel, inverse_n);
+      self = self_of_padded_kernel();
     }
   }
 
@@ -147,24 +184,28 @@ struct FftInfluenceOperator::Impl {
   // wrap-around grid is, so it enters each bin exactly; their periodic images,
   // which the isolated contact has not, decay like t^2 / r^3 (the |q| term of
   // R at q = 0): docs/theory.md, "Coated half-space".
-  void add_layered_remainder() {
-    const std::size_t rows = padded->spectrum_rows();
+  // (`target`: a padded spectrum, scaled by `scale`.)
+  void add_layered_remainder(EvenSymbol& target, double scale) const {
+    const std::size_t rows = target.rows();
     const std::size_t padded_cols = 2 * grid.nx();
     const double dx = grid.dx();
     const double dy = grid.dy();
-    const double inverse_n = 1.0 / static_cast<double>(padded->padded_size());
     const bool line = grid.dimension() == 1;
-    linalg::for_each_row(kernel.stored_rows(), kernel.cols(), [&](std::size_t r) {
+    linalg::for_each_row(target.stored_rows(), target.cols(), [&](std::size_t r) {
       const double qy = kernels::dft_wavenumber(r, rows, dy);
-      for (std::size_t c = 0; c < kernel.cols(); ++c) {
+      for (std::size_t c = 0; c < target.cols(); ++c) {
         const double qx = kernels::dft_wavenumber(c, padded_cols, dx);
-        kernel.at(r, c) +=
+        target.at(r, c) +=
             (line ? layered->remainder_strip_spectrum(qx, dx) : layered->remainder_cell_spectrum(qx, qy, dx, dy)) *
-            inverse_n;
+            scale;
       }
     });
-    // K_ii: the whole kernel's coefficient at offset 0, the inverse DFT's sum
-    // over the full spectrum (columns other than 0 and nx stand for two).
+  }
+
+  // K_ii: the padded kernel's coefficient at offset 0, the inverse DFT's sum
+  // over the full spectrum (columns other than 0 and nx stand for two).
+  double self_of_padded_kernel() const {
+    const std::size_t rows = kernel.rows();
     double sum = 0.0;
     for (std::size_t r = 0; r < rows; ++r) {
       const std::size_t stored = kernel.folded(r);
@@ -172,7 +213,7 @@ struct FftInfluenceOperator::Impl {
         sum += (c == 0 || c == grid.nx() ? 1.0 : 2.0) * kernel.at(stored, c);
       }
     }
-    self = sum;
+    return sum;
   }
 
   // Free grids, coated half-space: whether the remainder goes in by DFT, or,
@@ -217,12 +258,67 @@ struct FftInfluenceOperator::Impl {
     });
   }
 
+  // The circulant form: periodic grids multiply by the inverse kernel on
+  // their own transform; free ones invert the padded kernel's spectrum on a
+  // transform of the whole padded grid (its padding carries values here).
+  std::unique_ptr<CirculantForm> make_circulant_form() {
+    EvenSymbol stiffness(kernel.rows(), kernel.cols());
+    if (grid.periodic()) {
+      const double inverse_n = 1.0 / static_cast<double>(grid.size());
+      for (std::size_t r = 0; r < kernel.stored_rows(); ++r) {
+        const double qy = grid.dimension() == 1 ? 0.0 : kernels::dft_wavenumber(r, grid.ny(), grid.dy());
+        for (std::size_t c = 0; c < kernel.cols(); ++c) {
+          const double q = std::hypot(kernels::dft_wavenumber(c, grid.nx(), grid.dx()), qy);
+          // The mean mode has no stiffness: solvers hold it by a constraint.
+          if (q > 0.0) stiffness.at(r, c) = (layered ? 1.0 / layered->spectrum(q) : 0.5 * e_star * q) * inverse_n;
+        }
+      }
+      return std::make_unique<SymbolForm>(false, transform, kernel, std::move(stiffness));
+    }
+    // The same coefficients transformed whole (the padding rows too), the
+    // kernel and its inverse from the unnormalised eigenvalues k.
+    const bool line = grid.dimension() == 1;
+    auto fft = line ? std::make_shared<RealFft>(2 * grid.nx(), planning)
+                    : std::make_shared<RealFft>(2 * grid.ny(), 2 * grid.nx(), planning);
+    const std::size_t padded_cols = 2 * grid.nx();
+    write_padded(free_quadrant(), kernel.rows(),
+                 [&](std::size_t r) { return fft->input().subspan(r * padded_cols, padded_cols); });
+    fft->forward();
+    EvenSymbol eigenvalues(kernel.rows(), kernel.cols());
+    const std::span<const std::complex<double>> spectrum = fft->spectrum();
+    for (std::size_t r = 0; r < kernel.stored_rows(); ++r) {
+      for (std::size_t c = 0; c < kernel.cols(); ++c) eigenvalues.at(r, c) = spectrum[r * kernel.cols() + c].real();
+    }
+    if (layered && spectral_remainder()) add_layered_remainder(eigenvalues, 1.0);
+    const double inverse_m = 1.0 / static_cast<double>(padded->padded_size());
+    EvenSymbol whole(kernel.rows(), kernel.cols());
+    double smallest = std::numeric_limits<double>::infinity();
+    for (std::size_t r = 0; r < kernel.stored_rows(); ++r) {
+      for (std::size_t c = 0; c < kernel.cols(); ++c) {
+        const double k = eigenvalues.at(r, c);
+        smallest = std::min(smallest, k);
+        whole.at(r, c) = k * inverse_m;
+        stiffness.at(r, c) = k > 0.0 ? inverse_m / k : 0.0;
+      }
+    }
+    if (!(smallest > 0.0)) {
+      throw InputError(fmt::format(
+          "the free {} grid's padded influence kernel is not positive definite (smallest eigenvalue {:g} m/Pa), so it "
+          "has no inverse (stiffness) to minimise an energy with; use a periodic grid{}",
+          grid.shape_string(), smallest, line ? " or a domain shorter than 1 m (the strip kernel's datum)" : ""));
+    }
+    return std::make_unique<SymbolForm>(true, std::move(fft), std::move(whole), std::move(stiffness));
+  }
+
   Grid grid;
+  double e_star;  // homogeneous half-space (Pa)
+  FftPlanning planning;
   std::optional<kernels::LayeredKernel> layered;
   std::shared_ptr<RealFft> transform;     // periodic grids: own, or shared with a preconditioner
   std::unique_ptr<PaddedRealFft> padded;  // free grids
   EvenSymbol kernel;                      // real kernel spectrum, rows folded (even in qy)
   double self = 0.0;
+  std::unique_ptr<CirculantForm> circulant;  // made on first use
 };
 
 FftInfluenceOperator::FftInfluenceOperator(const Grid& grid, double e_star, FftPlanning planning)
@@ -274,18 +370,13 @@ void FftInfluenceOperator::apply(std::span<const double> pressure, std::span<dou
   }
   // Periodic grids transform the caller's arrays directly when FFTW allows
   // it, else copy through the transform's own buffers.
-  RealFft& fft = *m.transform;
-  if (!fft.forward_from(pressure)) {
-    std::span<double> input = fft.input();
-    linalg::for_each_index(pressure.size(), [&](std::size_t i) { input[i] = pressure[i]; });
-    fft.forward();
-  }
-  m.kernel.multiply(fft.spectrum());
-  if (!fft.backward_into(displacement)) {
-    fft.backward();
-    std::span<const double> output = fft.output();
-    linalg::for_each_index(displacement.size(), [&](std::size_t i) { displacement[i] = output[i]; });
-  }
+  m.kernel.apply(*m.transform, pressure, displacement);
+}
+
+CirculantForm& FftInfluenceOperator::circulant_form() {
+  Impl& m = *impl_;
+  if (!m.circulant) m.circulant = m.make_circulant_form();
+  return *m.circulant;
 }
 
 }  // namespace halfspace::operators

@@ -16,13 +16,10 @@
 #include <vector>
 
 #include "halfspace/error.hpp"
-#include "halfspace/fft/even_symbol.hpp"
-#include "halfspace/fft/real_fft.hpp"
-#include "halfspace/kernels/love_rectangle.hpp"
-#include "halfspace/kernels/periodic_fourier.hpp"
-#include "halfspace/kernels/plane_strain_strip.hpp"
 #include "halfspace/linalg/parallel.hpp"
 #include "halfspace/material.hpp"
+#include "halfspace/operators/fft_influence_operator.hpp"
+#include "halfspace/solvers/approach_search.hpp"
 #include "halfspace/solvers/interface_law.hpp"
 #include "halfspace/solvers/solver_options.hpp"
 
@@ -46,10 +43,6 @@ constexpr int kRefreshEvery = 50;
 // carries a warning.
 constexpr double kUnresolvedZone = 0.01;
 constexpr double kUnderresolvedZone = 0.1;
-
-std::size_t mirrored(std::size_t k, std::size_t n) {
-  return k <= n ? k : 2 * n - k;
-}
 
 }  // namespace
 
@@ -112,19 +105,21 @@ void check_law_on_grid(const AdhesionLaw& law, double e_star, const Grid& grid) 
 }
 
 struct AdhesiveContactSolver::Impl {
-  Impl(const Grid& g, double e, AdhesiveSolverOptions o)
-      : grid((check_law_on_grid(o.law, checked_composite_modulus(e), g), g)),
-        e_star(checked_composite_modulus(e)),
-        options(std::move(o)),
-        padded(!g.periodic()),
+  Impl(std::unique_ptr<InfluenceOperator> own, InfluenceOperator& o, double modulus, AdhesiveSolverOptions opts)
+      : owned(std::move(own)),
+        op(o),
+        grid((check_law_on_grid(opts.law, checked_composite_modulus(modulus), o.grid()), o.grid())),
+        e_star(checked_composite_modulus(modulus)),
+        options(std::move(opts)),
+        form(op.circulant_form()),
+        comm(op.communicator()),
+        padded(form.padded()),
         capped(options.hardness.has_value()),
         hardness(options.hardness.value_or(std::numeric_limits<double>::infinity())),
-        rows(g.dimension() == 1 ? 1 : (padded ? 2 * g.ny() : g.ny())),
-        cols(padded ? 2 * g.nx() : g.nx()),
-        fft(rows == 1 ? RealFft(cols, options.fft_planning) : RealFft(rows, cols, options.fft_planning)),
-        kernel(rows, cols / 2 + 1),
-        stiffness(rows, cols / 2 + 1) {
-    const std::size_t m = rows * cols;
+        cells(op.local_size()),
+        stride(form.row_stride()),
+        total(static_cast<double>(form.size())) {
+    const std::size_t m = size();
     for (Eigen::ArrayXd* a : {&x, &sx, &gradient, &trial, &direction, &s_direction, &offset, &lower}) a->resize(m);
     if (options.precondition) {
       scaled.resize(m);
@@ -132,87 +127,39 @@ struct AdhesiveContactSolver::Impl {
     }
     physical.assign(m, 0);
     below.assign(m, 0);
-    for (std::size_t k = 0; k < grid.size(); ++k) physical[index(k)] = 1;
-    if (padded) {
-      init_free();
-    } else {
-      init_periodic();
-    }
-    // K_ii: the displacement of cell 0 under unit pressure on it alone.
+    for (std::size_t k = 0; k < cells; ++k) physical[index(k)] = 1;
+    // K_ii as the form's products give it: op.self_influence() to rounding,
+    // but the steps and the residual are scaled by it, and the iteration
+    // near its rounding limit (capped, tolerance 1e-8) follows its last bits.
     trial.setZero();
-    trial[0] = 1.0;
-    apply(kernel, trial, direction);
-    compliance = direction[0];
+    if (comm.rank() == 0) trial[0] = 1.0;
+    compliance_times(trial, direction);
+    compliance = linalg::global_sum(comm, std::array<double, 1>{comm.rank() == 0 ? direction[0] : 0.0})[0];
   }
 
-  // Index in the variable's array of grid cell k ((ny, nx) row-major).
-  std::size_t index(std::size_t k) const { return padded ? (k / grid.nx()) * cols + k % grid.nx() : k; }
-  std::size_t size() const { return rows * cols; }
-
-  void init_periodic() {
-    const double inverse_m = 1.0 / static_cast<double>(size());
-    for (std::size_t r = 0; r < kernel.stored_rows(); ++r) {
-      const double qy = grid.dimension() == 1 ? 0.0 : kernels::dft_wavenumber(r, grid.ny(), grid.dy());
-      for (std::size_t c = 0; c < kernel.cols(); ++c) {
-        const double q = std::hypot(kernels::dft_wavenumber(c, grid.nx(), grid.dx()), qy);
-        kernel.at(r, c) = kernels::periodic_kernel_spectrum(q, e_star) * inverse_m;
-        // The mean mode has no stiffness: the mean displacement is held at
-        // 0 by the projection instead.
-        stiffness.at(r, c) = q > 0.0 ? 0.5 * e_star * q * inverse_m : 0.0;
-      }
-    }
+  // sum_k f(values[k]) over every process's cells in cell order (this
+  // process's in order, then the processes in rank order): the sums load
+  // control decides on (forces, the mean gap), whose last bits can change
+  // which branch a search closes on, in the order the serial solver always
+  // summed them.
+  template <class F>
+  double in_cell_order(std::span<const double> values, F&& f) const {
+    double local = 0.0;
+    for (const double v : values) local += f(v);
+    return linalg::global_sum(comm, std::array<double, 1>{local})[0];
   }
 
-  // The circulant of the DC-FFT convolution on the padded grid (as the FFT
-  // operator builds it) and its inverse.
-  void init_free() {
-    const std::size_t nx = grid.nx();
-    const std::size_t ny = grid.ny();
-    const bool line = grid.dimension() == 1;
-    std::span<double> input = fft.input();
-    for (std::size_t r = 0; r < rows; ++r) {
-      const std::size_t dj = line ? 0 : mirrored(r, ny);
-      for (std::size_t c = 0; c < cols; ++c) {
-        const double x_offset = static_cast<double>(mirrored(c, nx)) * grid.dx();
-        input[r * cols + c] = line ? kernels::plane_strain_strip_displacement(x_offset, grid.dx(), e_star)
-                                   : kernels::love_rectangle_displacement(x_offset, static_cast<double>(dj) * grid.dy(),
-                                                                          0.5 * grid.dx(), 0.5 * grid.dy(), e_star);
-      }
-    }
-    fft.forward();
-    const std::span<const std::complex<double>> spectrum = fft.spectrum();
-    const double inverse_m = 1.0 / static_cast<double>(size());
-    double smallest = std::numeric_limits<double>::infinity();
-    for (std::size_t r = 0; r < kernel.stored_rows(); ++r) {
-      for (std::size_t c = 0; c < kernel.cols(); ++c) {
-        const double k = spectrum[r * kernel.cols() + c].real();
-        smallest = std::min(smallest, k);
-        kernel.at(r, c) = k * inverse_m;
-        stiffness.at(r, c) = k > 0.0 ? inverse_m / k : 0.0;
-      }
-    }
-    if (!(smallest > 0.0)) {
-      throw InputError(fmt::format(
-          "adhesion on the free {} grid: the padded influence kernel is not positive definite (smallest eigenvalue "
-          "{:g} m/Pa), so the stiffness the adhesive solver minimises with does not exist; use a periodic grid{}",
-          grid.shape_string(), smallest, line ? " or a domain shorter than 1 m (the strip kernel's datum)" : ""));
-    }
-  }
+  // Index in the variable's array of this process's grid cell k ((rows,
+  // nx) row-major).
+  std::size_t index(std::size_t k) const { return padded ? (k / grid.nx()) * stride + k % grid.nx() : k; }
+  std::size_t size() const { return form.local_size(); }
 
-  // out = symbol applied to in (the unnormalised FFT pair with 1/M folded in).
-  void apply(const EvenSymbol& symbol, const Eigen::ArrayXd& in, Eigen::ArrayXd& out) {
-    const std::size_t m = size();
-    if (!fft.forward_from({in.data(), m})) {
-      std::span<double> input = fft.input();
-      linalg::for_each_index(m, [&](std::size_t i) { input[i] = in[static_cast<Eigen::Index>(i)]; });
-      fft.forward();
-    }
-    symbol.multiply(fft.spectrum());
-    if (!fft.backward_into({out.data(), m})) {
-      fft.backward();
-      std::span<const double> output = fft.output();
-      linalg::for_each_index(m, [&](std::size_t i) { out[static_cast<Eigen::Index>(i)] = output[i]; });
-    }
+  // out = K in, out = S in on the variable's grid (the operator's circulant form).
+  void compliance_times(const Eigen::ArrayXd& in, Eigen::ArrayXd& out) {
+    form.apply({in.data(), size()}, {out.data(), size()});
+  }
+  void stiffness_times(const Eigen::ArrayXd& in, Eigen::ArrayXd& out) {
+    form.apply_inverse({in.data(), size()}, {out.data(), size()});
   }
 
   // The shift tau of the projection of y onto {v >= lower} and (periodic)
@@ -227,12 +174,12 @@ struct AdhesiveContactSolver::Impl {
     if (capped) return capped_projection_shift(y);
     const std::size_t m = size();
     const auto sum_and_free = [&](double tau) {
-      return linalg::sums<2>(m, [&](std::size_t i) {
+      return linalg::sums<2>(comm, m, [&](std::size_t i) {
         const double v = y(i) - tau;
         return v > lower[i] ? std::array<double, 2>{v, 1.0} : std::array<double, 2>{lower[i], 0.0};
       });
     };
-    double tau = linalg::sum(m, [&](std::size_t i) { return y(i); }) / static_cast<double>(m);
+    double tau = linalg::sum(comm, m, [&](std::size_t i) { return y(i); }) / total;
     std::array<double, 2> s = sum_and_free(tau);
     for (int k = 0; k < 1000; ++k) {
       if (s[1] == 0.0) return std::nullopt;
@@ -261,13 +208,13 @@ struct AdhesiveContactSolver::Impl {
     const std::size_t m = size();
     // The sum of P(y), its count of unclipped cells and the sum of |P(y)|.
     const auto sums_at = [&](double tau) {
-      return linalg::sums<3>(m, [&](std::size_t i) {
+      return linalg::sums<3>(comm, m, [&](std::size_t i) {
         const double shifted = y(i) - tau;
         const double z = onto_side(i, shifted);
         return std::array<double, 3>{z, z == shifted ? 1.0 : 0.0, std::abs(z)};
       });
     };
-    double tau = linalg::sum(m, [&](std::size_t i) { return y(i); }) / static_cast<double>(m);
+    double tau = linalg::sum(comm, m, [&](std::size_t i) { return y(i); }) / total;
     double low = -std::numeric_limits<double>::infinity();  // sum above 0
     double high = std::numeric_limits<double>::infinity();  // sum below 0
     std::array<double, 3> s = sums_at(tau);
@@ -285,7 +232,7 @@ struct AdhesiveContactSolver::Impl {
           next = 0.5 * (low + high);
         } else {
           // No slope and no bracket yet: double the step outwards.
-          scale = 2.0 * scale + s[2] / static_cast<double>(m);
+          scale = 2.0 * scale + s[2] / total;
           next = tau + (s[0] > 0.0 ? scale : -scale);
         }
       }
@@ -324,7 +271,7 @@ struct AdhesiveContactSolver::Impl {
     // The two maxima and the count of non-finite entries (which std::max
     // would drop).
     using Maxima = std::array<double, 3>;
-    const Maxima largest = linalg::reduce_in_blocks(
+    Maxima largest = linalg::reduce_in_blocks(
         size(), Maxima{0.0, 0.0, 0.0},
         [&](Maxima& acc, std::size_t i) {
           const double step = std::abs((capped ? onto_side(i, y(i) - tau) : std::max(lower[i], y(i) - tau)) - x[i]);
@@ -333,11 +280,13 @@ struct AdhesiveContactSolver::Impl {
           acc[1] = std::max(acc[1], std::abs(sx[i]));
           if (physical[i] && off_wall(i)) acc[1] = std::max(acc[1], std::abs(cell_traction(law, offset[i] + x[i])));
         },
-        [](Maxima& total, const Maxima& part) {
-          total[0] = std::max(total[0], part[0]);
-          total[1] = std::max(total[1], part[1]);
-          total[2] += part[2];
+        [](Maxima& all, const Maxima& part) {
+          all[0] = std::max(all[0], part[0]);
+          all[1] = std::max(all[1], part[1]);
+          all[2] += part[2];
         });
+    largest = {comm.max(largest[0]), comm.max(largest[1]),
+               linalg::global_sum(comm, std::array<double, 1>{largest[2]})[0]};
     if (!std::isfinite(tau) || largest[2] > 0.0) return std::numeric_limits<double>::quiet_NaN();
     const double floor = std::min(options.law.stress(), options.law.range / c);
     return largest[0] / (c * std::max(largest[1], floor));
@@ -346,7 +295,7 @@ struct AdhesiveContactSolver::Impl {
   // The interaction energy sum_i phi(g_i + step * d_i) over the grid cells.
   double interaction_energy(const Eigen::ArrayXd& v, const Eigen::ArrayXd* d, double step) const {
     const AdhesionLaw& law = options.law;
-    return linalg::sum(size(), [&](std::size_t i) {
+    return linalg::sum(comm, size(), [&](std::size_t i) {
       if (!physical[i]) return 0.0;
       const double g = offset[i] + v[i] + (d ? step * (*d)[i] : 0.0);
       return cell_energy(law, g);
@@ -416,7 +365,7 @@ struct AdhesiveContactSolver::Impl {
     const std::size_t m = size();
     const double c = compliance;
     // sum of d and count over the free cells, G.d, sum of G over them
-    const std::array<double, 4> parts = linalg::sums<4>(m, [&](std::size_t i) {
+    const std::array<double, 4> parts = linalg::sums<4>(comm, m, [&](std::size_t i) {
       if (binding(i, shift)) return std::array<double, 4>{};
       if (x[i] == lower[i] && (below[i] ? direction[i] > 0.0 : direction[i] < 0.0)) {
         direction[i] = -c * (gradient[i] - shift);
@@ -443,14 +392,14 @@ struct AdhesiveContactSolver::Impl {
   // cells off the wall (0 on free grids, which have no such constraint).
   double mean_shift() const {
     if (padded) return 0.0;
-    const std::array<double, 2> free_part = linalg::sums<2>(size(), [&](std::size_t i) {
+    const std::array<double, 2> free_part = linalg::sums<2>(comm, size(), [&](std::size_t i) {
       return off_wall(i) ? std::array<double, 2>{gradient[i], 1.0} : std::array<double, 2>{0.0, 0.0};
     });
     return free_part[1] > 0.0 ? free_part[0] / free_part[1] : 0.0;
   }
 
   double dot(const Eigen::ArrayXd& a, const Eigen::ArrayXd& b) const {
-    return linalg::sum(size(), [&](std::size_t i) { return a[i] * b[i]; });
+    return linalg::sum(comm, size(), [&](std::size_t i) { return a[i] * b[i]; });
   }
 
   // What the iterations carry from one step to the next: the energy and
@@ -479,20 +428,46 @@ struct AdhesiveContactSolver::Impl {
   SolveResult solve_displacement(std::span<const double> initial_gap, double approach,
                                  std::span<const double> initial_pressure, bool start_from_last);
   SolveResult solve_force(std::span<const double> initial_gap, double target, std::span<const double> initial_pressure);
+  // What load control drives: displacement-controlled solves from x, and
+  // x kept at and restored from the bracket's ends.
+  class Driven final : public ApproachDriven {
+   public:
+    Driven(Impl& solver, std::span<const double> initial_gap) : m_(solver), initial_gap_(initial_gap) {
+      m_.saved_low.resize(static_cast<Eigen::Index>(m_.size()));
+      m_.saved_high.resize(static_cast<Eigen::Index>(m_.size()));
+    }
+    SolveResult solve_at(double approach) override { return m_.solve_displacement(initial_gap_, approach, {}, true); }
+    void keep(bool above) override { (above ? m_.saved_high : m_.saved_low) = m_.x; }
+    void restore(bool above) override { m_.x = above ? m_.saved_high : m_.saved_low; }
+    // The inner solve's residual bounds each active cell's pressure error
+    // by tolerance times the largest pressure.
+    double undetermined_force(const SolveResult& r) const override {
+      const double largest = linalg::max_of(
+          m_.comm, m_.cells, [&](std::size_t k) { return std::abs(r.pressure[static_cast<Eigen::Index>(k)]); });
+      const double active = std::max(r.adhesion.interaction_fraction, r.contact_fraction) * m_.grid.domain_area();
+      return m_.options.tolerance * largest * active;
+    }
+
+   private:
+    Impl& m_;
+    std::span<const double> initial_gap_;
+  };
   void fill_result(SolveResult& result, std::span<const double> initial_gap, double approach);
 
-  Grid grid;
-  double e_star;
+  std::unique_ptr<InfluenceOperator> owned;  // the operator, when the solver made it
+  InfluenceOperator& op;
+  const Grid& grid;
+  double e_star;  // the contact's modulus (the cohesive zone's)
   AdhesiveSolverOptions options;
+  operators::CirculantForm& form;    // K and S on the variable's grid
+  const linalg::Communicator& comm;  // the processes the fields are spread over
   bool padded;
-  bool capped;      // a hardness cap is set
-  double hardness;  // H (Pa), infinite without a cap
-  std::size_t rows;
-  std::size_t cols;
-  RealFft fft;
-  EvenSymbol kernel;     // K: the kernel spectrum over M
-  EvenSymbol stiffness;  // S = K^-1 over M (0 at the periodic mean mode)
-  double compliance = 0.0;
+  bool capped;        // a hardness cap is set
+  double hardness;    // H (Pa), infinite without a cap
+  std::size_t cells;  // the grid's cells on this process
+  std::size_t stride;
+  double total;                         // the variable's cells on every process
+  double compliance = 0.0;              // K_ii (m/Pa)
   std::vector<unsigned char> physical;  // 1 on the grid's cells, 0 on the padding
   std::vector<unsigned char> below;     // with a cap: 1 where the cell's side is below the kink (settle())
   // Workspace over the variable's array: v, S v, the gradient, the trial
@@ -513,23 +488,24 @@ SolveResult AdhesiveContactSolver::Impl::solve_displacement(std::span<const doub
   const double inf = std::numeric_limits<double>::infinity();
   offset.setZero();
   lower.setConstant(-inf);
-  for (std::size_t k = 0; k < grid.size(); ++k) {
+  for (std::size_t k = 0; k < cells; ++k) {
     offset[index(k)] = initial_gap[k] - approach;
     lower[index(k)] = approach - initial_gap[k];
   }
-  if (!padded && !(lower.mean() < 0.0)) {
+  const double mean_lower = padded ? 0.0 : linalg::sum(comm, m, [&](std::size_t i) { return lower[i]; }) / total;
+  if (!padded && !(mean_lower < 0.0)) {
     throw InputError(fmt::format(
         "approach = {} m is invalid for a periodic surface: it must be below the mean initial gap {} m (full contact "
         "needs infinite pressure there)",
-        approach, approach - lower.mean()));
+        approach, approach - mean_lower));
   }
   // The start: the last solution's displacement, K p of the given pressure,
   // or 0, projected onto the constraints.
   if (!start_from_last) {
     direction.setZero();
     if (!initial_pressure.empty()) {
-      for (std::size_t k = 0; k < grid.size(); ++k) direction[index(k)] = initial_pressure[k];
-      apply(kernel, direction, direction);
+      for (std::size_t k = 0; k < cells; ++k) direction[index(k)] = initial_pressure[k];
+      compliance_times(direction, direction);
     }
     x = direction;
   }
@@ -547,7 +523,7 @@ SolveResult AdhesiveContactSolver::Impl::solve_displacement(std::span<const doub
     result.message = "no displacement satisfies the constraints";
     return result;
   }
-  apply(stiffness, x, sx);
+  stiffness_times(x, sx);
   result.operator_applications = 1;
   make_gradient();
   Walk walk{result};
@@ -610,11 +586,11 @@ bool AdhesiveContactSolver::Impl::conjugate_gradient_step(Walk& walk, int iterat
   // ill-conditioned (symbol E*|q|/2). One FFT pair.
   const double shift = free_shift;
   linalg::for_each_index(m, [&](std::size_t i) { scaled[i] = binding(i, shift) ? 0.0 : gradient[i] - shift; });
-  apply(kernel, scaled, scaled);
+  compliance_times(scaled, scaled);
   ++result.operator_applications;
   // D (G - shift) vanishes on the held cells; rho and the Polak-Ribiere
   // numerator in the same pass.
-  const std::array<double, 2> sums = linalg::sums<2>(m, [&](std::size_t i) {
+  const std::array<double, 2> sums = linalg::sums<2>(comm, m, [&](std::size_t i) {
     if (binding(i, shift)) scaled[i] = 0.0;
     return std::array<double, 2>{scaled[i] * (gradient[i] - shift),
                                  restart ? 0.0 : scaled[i] * (gradient[i] - old_gradient[i])};
@@ -626,7 +602,7 @@ bool AdhesiveContactSolver::Impl::conjugate_gradient_step(Walk& walk, int iterat
   // v = 0 holds along the line); returns the slope G.d.
   const auto make_direction = [&](double b) {
     // sum of d and count over the free cells, G.d, sum of G over the free cells
-    const std::array<double, 4> parts = linalg::sums<4>(m, [&](std::size_t i) {
+    const std::array<double, 4> parts = linalg::sums<4>(comm, m, [&](std::size_t i) {
       if (binding(i, shift)) {
         direction[i] = 0.0;
         return std::array<double, 4>{0.0, 0.0, 0.0, 0.0};
@@ -659,7 +635,7 @@ bool AdhesiveContactSolver::Impl::conjugate_gradient_step(Walk& walk, int iterat
         iteration, residual);
     return false;
   }
-  apply(stiffness, direction, s_direction);
+  stiffness_times(direction, s_direction);
   ++result.operator_applications;
   // Energy changes, not energies: near the solution the change is far
   // below the rounding of the energy itself. Non-monotone as SPG's: the
@@ -667,7 +643,7 @@ bool AdhesiveContactSolver::Impl::conjugate_gradient_step(Walk& walk, int iterat
   // monotone with a cap (non-monotone steps cycled there: a rough sweep
   // alternated between two held sets for 20000 iterations).
   const double allowance = capped ? 0.0 : *std::max_element(recent.begin(), recent.end()) - energy;
-  const std::array<double, 2> along = linalg::sums<2>(m, [&](std::size_t i) {
+  const std::array<double, 2> along = linalg::sums<2>(comm, m, [&](std::size_t i) {
     return std::array<double, 2>{direction[i] * sx[i], direction[i] * s_direction[i]};
   });
   const double linear = along[0];
@@ -680,7 +656,7 @@ bool AdhesiveContactSolver::Impl::conjugate_gradient_step(Walk& walk, int iterat
   for (;; ++backtracks) {
     // The trial point, whether the wall clips it, and (if not) the
     // interaction energy's change, in one pass.
-    const std::array<double, 2> moved = linalg::sums<2>(m, [&](std::size_t i) {
+    const std::array<double, 2> moved = linalg::sums<2>(comm, m, [&](std::size_t i) {
       trial[i] = x[i] + step * direction[i];
       const double cut = (below[i] ? trial[i] > lower[i] : trial[i] < lower[i]) ? 1.0 : 0.0;
       if (!physical[i]) return std::array<double, 2>{cut, 0.0};
@@ -692,11 +668,11 @@ bool AdhesiveContactSolver::Impl::conjugate_gradient_step(Walk& walk, int iterat
     double decrease = step * slope;
     if (clipped) {
       project(trial, trial);
-      apply(stiffness, trial, scaled);  // S of the trial point
+      stiffness_times(trial, scaled);  // S of the trial point
       ++result.operator_applications;
       // 1/2 t.S t - 1/2 x.S x = 1/2 (t - x).(S t + S x), and the
       // interaction energy's change.
-      const std::array<double, 3> sums3 = linalg::sums<3>(m, [&](std::size_t i) {
+      const std::array<double, 3> sums3 = linalg::sums<3>(comm, m, [&](std::size_t i) {
         const double s_i = trial[i] - x[i];
         const double g = offset[i] + x[i];
         const double change_i = physical[i] ? cell_energy(law, offset[i] + trial[i]) - cell_energy(law, g) : 0.0;
@@ -720,12 +696,12 @@ bool AdhesiveContactSolver::Impl::conjugate_gradient_step(Walk& walk, int iterat
   const bool refresh = !clipped && (iteration + 1) % kRefreshEvery == 0;
   if (refresh) {
     x = trial;
-    apply(stiffness, x, sx);
+    stiffness_times(x, sx);
     ++result.operator_applications;
   }
   // Accept: the last gradient kept, v and S v updated, the new gradient
   // and the sums of the mean constraint's multiplier, in one pass.
-  const std::array<double, 2> free_part = linalg::sums<2>(m, [&](std::size_t i) {
+  const std::array<double, 2> free_part = linalg::sums<2>(comm, m, [&](std::size_t i) {
     old_gradient[i] = gradient[i];
     x[i] = trial[i];
     if (clipped) {
@@ -758,7 +734,7 @@ bool AdhesiveContactSolver::Impl::spectral_gradient_step(Walk& walk, int iterati
   project(trial, trial);
   direction = trial - x;
   const double slope = dot(gradient, direction);
-  apply(stiffness, direction, s_direction);
+  stiffness_times(direction, s_direction);
   ++result.operator_applications;
   if (!(slope < 0.0)) {
     result.status = SolveStatus::breakdown;
@@ -796,7 +772,7 @@ bool AdhesiveContactSolver::Impl::spectral_gradient_step(Walk& walk, int iterati
     x += step * direction;
   }
   if ((iteration + 1) % kRefreshEvery == 0) {
-    apply(stiffness, x, sx);
+    stiffness_times(x, sx);
     ++result.operator_applications;
   } else {
     sx += step * s_direction;
@@ -804,7 +780,7 @@ bool AdhesiveContactSolver::Impl::spectral_gradient_step(Walk& walk, int iterati
   trial = gradient;  // the old gradient
   make_gradient();
   const double ss = step * step * dot(direction, direction);
-  const double sy = step * linalg::sum(m, [&](std::size_t i) { return direction[i] * (gradient[i] - trial[i]); });
+  const double sy = step * linalg::sum(comm, m, [&](std::size_t i) { return direction[i] * (gradient[i] - trial[i]); });
   alpha = sy > 0.0 ? std::clamp(ss / sy, alpha_min, alpha_max) : alpha_max;
   energy = trial_energy;
   recent[static_cast<std::size_t>(iteration + 1) % kMemory] = energy;
@@ -813,7 +789,7 @@ bool AdhesiveContactSolver::Impl::spectral_gradient_step(Walk& walk, int iterati
 
 void AdhesiveContactSolver::Impl::fill_result(SolveResult& result, std::span<const double> initial_gap,
                                               double approach) {
-  const std::size_t n = grid.size();
+  const std::size_t n = cells;
   // A cell the projected step puts on the wall (the kink) is on it: within
   // the residual of it, it carries S v, not the law's traction at a gap of
   // rounding size (a start from the pressure K p lands cells 1e-13 m off
@@ -833,7 +809,7 @@ void AdhesiveContactSolver::Impl::fill_result(SolveResult& result, std::span<con
   // cells off the wall (where the gradient vanishes at the solution).
   double mean_pressure_shift = 0.0;
   if (!padded) {
-    const std::array<double, 2> free_part = linalg::sums<2>(n, [&](std::size_t i) {
+    const std::array<double, 2> free_part = linalg::sums<2>(comm, n, [&](std::size_t i) {
       return off_wall(i) ? std::array<double, 2>{gradient[i], 1.0} : std::array<double, 2>{0.0, 0.0};
     });
     if (free_part[1] > 0.0) mean_pressure_shift = -free_part[0] / free_part[1];
@@ -843,50 +819,53 @@ void AdhesiveContactSolver::Impl::fill_result(SolveResult& result, std::span<con
   result.displacement.resize(static_cast<Eigen::Index>(n));
   result.gap.resize(static_cast<Eigen::Index>(n));
   const AdhesionLaw& law = options.law;
-  double force = 0.0;
-  double adhesive = 0.0;
-  double max_pressure = -std::numeric_limits<double>::infinity();
-  std::size_t at_wall = 0;
-  std::size_t repulsive = 0;
-  std::size_t interacting = 0;
-  std::size_t plastic = 0;
-  for (std::size_t k = 0; k < n; ++k) {
+  linalg::for_each_index(n, [&](std::size_t k) {
     const std::size_t i = index(k);
     // With a cap: on the kink (gap 0), or below it (plastic, gap < 0).
-    const bool wall = x[i] <= lower[i];
-    const bool kink = capped ? x[i] == lower[i] : wall;
+    const bool kink = capped ? x[i] == lower[i] : x[i] <= lower[i];
     const double g =
         kink ? 0.0 : (capped ? initial_gap[k] + x[i] - approach : std::max(initial_gap[k] + x[i] - approach, 0.0));
     // Off the wall the law gives the pressure exactly; S v there differs
     // from it by the residual, which would show as spurious contact. On it,
     // S v may exceed a cap by the residual: the cap holds exactly.
-    const double p = kink ? std::min(sx[i] + mean_pressure_shift, hardness) : cell_traction(law, g);
-    result.pressure[static_cast<Eigen::Index>(k)] = p;
+    result.pressure[static_cast<Eigen::Index>(k)] =
+        kink ? std::min(sx[i] + mean_pressure_shift, hardness) : cell_traction(law, g);
     result.displacement[static_cast<Eigen::Index>(k)] = x[i];
     result.gap[static_cast<Eigen::Index>(k)] = g;
-    force += p;
-    adhesive += std::min(p, 0.0);
-    max_pressure = std::max(max_pressure, p);
-    at_wall += wall ? 1 : 0;
-    repulsive += wall && p > 0.0 ? 1 : 0;
-    interacting += law.interacts(std::max(g, 0.0)) ? 1 : 0;
-    plastic += capped && p >= hardness ? 1 : 0;
-  }
-  const double cells = static_cast<double>(n);
+  });
+  // The cells at the wall, in repulsive contact, interacting and plastic.
+  const std::array<double, 4> counts = linalg::sums<4>(comm, n, [&](std::size_t k) {
+    const double p = result.pressure[static_cast<Eigen::Index>(k)];
+    const std::size_t i = index(k);
+    const bool wall = x[i] <= lower[i];
+    return std::array<double, 4>{wall ? 1.0 : 0.0, wall && p > 0.0 ? 1.0 : 0.0,
+                                 law.interacts(std::max(result.gap[static_cast<Eigen::Index>(k)], 0.0)) ? 1.0 : 0.0,
+                                 capped && p >= hardness ? 1.0 : 0.0};
+  });
+  const double max_pressure =
+      linalg::max_of(comm, n, [&](std::size_t k) { return result.pressure[static_cast<Eigen::Index>(k)]; });
+  const std::span<const double> pressure(result.pressure.data(), n);
+  const double force = in_cell_order(pressure, [](double p) { return p; });
+  const double adhesive = in_cell_order(pressure, [](double p) { return std::min(p, 0.0); });
+  const double at_wall = counts[0];
+  const double repulsive = counts[1];
+  const double interacting = counts[2];
+  const double plastic = counts[3];
+  const double all = static_cast<double>(grid.size());
   result.total_force = force * grid.cell_area();
   result.mean_pressure = result.total_force / grid.domain_area();
   result.max_pressure = max_pressure;
-  result.contact_fraction = static_cast<double>(at_wall) / cells;
+  result.contact_fraction = at_wall / all;
   result.hardness = options.hardness;
-  result.plastic_fraction = static_cast<double>(plastic) / cells;
+  result.plastic_fraction = plastic / all;
   AdhesionRecord& record = result.adhesion;
   record.law = std::string(to_string(law.type));
   record.work = law.work;
   record.range = law.range;
   record.stress = law.stress();
   record.adhesive_force = adhesive * grid.cell_area();
-  record.interaction_fraction = static_cast<double>(interacting) / cells;
-  record.repulsive_contact_fraction = static_cast<double>(repulsive) / cells;
+  record.interaction_fraction = interacting / all;
+  record.repulsive_contact_fraction = repulsive / all;
   // A result is finite, or it is no answer.
   if (!(std::isfinite(result.total_force) && std::isfinite(max_pressure) && std::isfinite(record.adhesive_force))) {
     result.status = SolveStatus::breakdown;
@@ -894,7 +873,7 @@ void AdhesiveContactSolver::Impl::fill_result(SolveResult& result, std::span<con
                                  result.total_force, max_pressure);
   }
   const double zone = law.cohesive_zone_length(e_star);
-  if (at_wall > 0 && at_wall < n && zone < kUnderresolvedZone * cell_length(grid)) {
+  if (at_wall > 0 && at_wall < all && zone < kUnderresolvedZone * cell_length(grid)) {
     result.warnings.push_back(fmt::format(
         "the cohesive zone pi E* w / (4 sigma0^2) = {:.3g} m is {:.3g} of the cell length {:.3g} m: the contact edge "
         "is not resolved, so the result depends on the grid (refine it to at least {:.3g} m cells)",
@@ -902,222 +881,47 @@ void AdhesiveContactSolver::Impl::fill_result(SolveResult& result, std::span<con
   }
 }
 
-// Load control: the approach whose displacement-controlled equilibrium
-// carries `target`. F(delta) is not one function: the contact edge of a
-// cohesive law is trapped by the grid (a cell snaps in or out of contact at
-// a finite jump of the force), so the state at an approach depends on the
-// path to it, and a loaded state and an unloaded one at the same approach
-// differ. The search therefore follows one path: every trial solve starts
-// from the `base`, the last state on the side of the target the search
-// came from, moving the approach one way (towards more force when the
-// force is too small, less when too large). It expands its steps (secant
-// steps where the force grows with the approach, doubling ones otherwise)
-// until the target is bracketed, then closes the bracket by secant steps
-// safeguarded by bisection (the base following the near side). A bracket
-// closing on a jump (the target between the force before and after a
-// snap) is left from its other end, along that branch in the other
-// direction (after a snap-in the contact is larger, and unloading it
-// reaches the target: the state load control snaps to). Unloading past the
-// force minimum detaches the surfaces (the force rises again): then the
-// target is beyond the pull-off force of the branch, which is reported.
-// The force tolerance is the requested relative one or the force the inner
-// solve's residual leaves undetermined, whichever is larger.
+// Load control (approach_search.hpp) from the last solve's state, or from
+// first touch (the least initial gap; periodic grids: the approach stays
+// below the mean gap, where the force is infinite).
 SolveResult AdhesiveContactSolver::Impl::solve_force(std::span<const double> initial_gap, double target,
                                                      std::span<const double> initial_pressure) {
   const auto started = std::chrono::steady_clock::now();
-  double mean_gap = 0.0;
-  double min_gap = std::numeric_limits<double>::infinity();
-  for (const double g : initial_gap) {
-    mean_gap += g;
-    min_gap = std::min(min_gap, g);
-  }
-  mean_gap /= static_cast<double>(initial_gap.size());
-  // Periodic grids: the approach stays below the mean gap (infinite force there).
-  const double ceiling = padded ? std::numeric_limits<double>::infinity() : mean_gap - 1e-9 * (mean_gap - min_gap);
-  double approach = have_last && initial_pressure.empty() ? last_approach : std::min(min_gap, ceiling);
-  SolveResult result =
-      solve_displacement(initial_gap, approach, initial_pressure, have_last && initial_pressure.empty());
-  int iterations = result.iterations;
-  int products = result.operator_applications;
-  const double probe = options.law.range;
-  // The force the inner solve leaves undetermined: its residual bounds
-  // each active cell's pressure error by tolerance times the largest
-  // pressure.
-  const auto tolerance = [&](const SolveResult& r) {
-    const double scale = std::max(
-        {std::abs(target), std::abs(r.adhesion.adhesive_force), std::abs(r.total_force - r.adhesion.adhesive_force)});
-    double largest = 0.0;
-    for (const double p : r.pressure) largest = std::max(largest, std::abs(p));
-    const double active = std::max(r.adhesion.interaction_fraction, r.contact_fraction) * grid.domain_area();
-    return std::max(options.force_tolerance * scale, options.tolerance * largest * active);
-  };
-  // The two ends of the bracket: approaches with the force below and above
-  // the target, and their displacements.
-  struct End {
-    bool set = false;
-    double approach = 0.0;
-    double force = 0.0;
-  };
-  End low;
-  End high;
-  saved_low.resize(static_cast<Eigen::Index>(size()));
-  saved_high.resize(static_cast<Eigen::Index>(size()));
-  const auto keep = [&](End& end, Eigen::ArrayXd& saved) {
-    end = {true, approach, result.total_force};
-    saved = x;
-  };
-  bool loading = true;  // the base is `low` (the search raises the approach) or `high`
-  double step_size = probe;
-  double least_force = std::numeric_limits<double>::infinity();  // the least force solved, and where
-  double least_at = approach;
-  bool base_in_contact = false;
-  int reversals = 0;  // brackets closed on a jump and left from their other end
-  double least_slope = std::numeric_limits<double>::infinity();  // |dF / d delta| across the bracket
-  int streak = 0;                     // the Illinois modification: how often the same end moved
-  bool previous_slope_valid = false;  // the expansion's last base state, for its secant
-  double previous_approach = 0.0;
-  double previous_force = 0.0;
-  constexpr int kMaxReversals = 3;
-  std::string failure;
-  int step = 0;
-  for (; step < options.max_load_steps; ++step) {
-    if (!result.converged()) {
-      failure =
-          fmt::format("the displacement-controlled solve at approach {:.6g} m failed: {}", approach, result.message);
-      break;
-    }
-    const double force = result.total_force;
-    if (std::abs(force - target) <= tolerance(result)) break;
-    if (step == 0) loading = force < target;
-    End& base = loading ? low : high;
-    Eigen::ArrayXd& saved_base = loading ? saved_low : saved_high;
-    End& far = loading ? high : low;
-    Eigen::ArrayXd& saved_far = loading ? saved_high : saved_low;
-    // File the state just solved.
-    const bool on_base_side = loading ? force < target : force > target;
-    if (!loading && on_base_side && base.set && base_in_contact && result.contact_fraction == 0.0) {
-      // Unloading, and the surfaces came apart: the force minimum (the
-      // pull-off) lies between the base and this approach. Back towards the
-      // base with half the step; where the step vanishes, the target is
-      // beyond the pull-off force.
-      const double half = 0.5 * (approach - base.approach);
-      step_size = std::abs(half);
-      if (step_size <= 1e-2 * probe) {
-        failure = fmt::format(
-            "the force {:.6g} is beyond the pull-off force of this branch: unloading reached no less than {:.6g} "
-            "(at approach {:.6g} m) before the surfaces came apart; load control has no equilibrium there: use "
-            "displacement control (an approach sweep)",
-            target, least_force, least_at);
-        break;
-      }
-      if ((loading ? low : high).set) x = loading ? saved_low : saved_high;
-      approach = base.approach + half;
-      result = solve_displacement(initial_gap, approach, {}, true);
-      iterations += result.iterations;
-      products += result.operator_applications;
-      continue;
-    }
-    if (!on_base_side) {
-      keep(far, saved_far);
-    } else {
-      keep(base, saved_base);
-      base_in_contact = result.contact_fraction > 0.0;
-    }
-    // +k: the low end moved k times in a row, -k: the high end.
-    streak = force < target ? (streak > 0 ? streak + 1 : 1) : (streak < 0 ? streak - 1 : -1);
-    if (force < least_force) {
-      least_force = force;
-      least_at = approach;
-    }
-    const double direction = loading ? 1.0 : -1.0;
-    double next = 0.0;
-    if (!far.set) {
-      // Expanding: a secant step from the last two base states where the
-      // force changes the right way, else doubling steps.
-      next = base.approach + direction * step_size;
-      if (previous_slope_valid && base.approach != previous_approach) {
-        const double slope = (base.force - previous_force) / (base.approach - previous_approach);
-        if (slope > 0.0 && std::isfinite(slope)) {
-          const double secant = (target - base.force) / slope;
-          next = base.approach + std::clamp(secant, -4.0 * step_size, 4.0 * step_size);
-        }
-      }
-      step_size = std::abs(next - base.approach) * 2.0;
-      previous_slope_valid = true;
-      previous_approach = base.approach;
-      previous_force = base.force;
-    } else {
-      const double width = std::abs(high.approach - low.approach);
-      // A jump: the bracket is narrow against the law's range and its
-      // force difference has stopped shrinking with it (the mean slope
-      // across it 100 times the least seen in this bracket; on a steep but
-      // continuous stretch of a rough contact it stays put), or the
-      // bracket is at rounding.
-      const double slope_across = std::abs(high.force - low.force) / width;
-      least_slope = std::min(least_slope, slope_across);
-      const bool narrow = width <= 1e-4 * probe && slope_across >= 100.0 * least_slope;
-      if (narrow || width <= 1e-13 * std::max(std::abs(approach), probe)) {
-        // Closed on a jump: leave the bracket from its other end, along
-        // that end's branch the other way.
-        if (++reversals > kMaxReversals) {
-          failure = fmt::format(
-              "the force jumps from {:.6g} to {:.6g} at approach {:.6g} m (cells snapping into or out of contact on "
-              "this grid) and the target {:.6g} lies in the jump on every branch followed ({} reversals)",
-              low.force, high.force, approach, target, kMaxReversals);
-          break;
-        }
-        loading = !loading;
-        (loading ? high : low).set = false;
-        least_slope = std::numeric_limits<double>::infinity();
-        previous_slope_valid = false;
-        step_size = probe;
-        streak = 0;
-        next = (loading ? low : high).approach + (loading ? 1.0 : -1.0) * step_size;
-      } else {
-        // Regula falsi inside the bracket with the Illinois modification
-        // (the retained end's residual halved while the other end moves,
-        // Dowell & Jarratt 1971, BIT 11, 168), bisection where it leaves
-        // the bracket's interior.
-        const double weight = std::ldexp(1.0, -std::min(60, std::max(0, std::abs(streak) - 1)));
-        const double f_low = (low.force - target) * (streak < 0 ? weight : 1.0);
-        const double f_high = (high.force - target) * (streak > 0 ? weight : 1.0);
-        next = low.approach - f_low * (high.approach - low.approach) / (f_high - f_low);
-        const double lo = std::min(low.approach, high.approach);
-        const double hi = std::max(low.approach, high.approach);
-        if (!(next > lo + 1e-3 * width && next < hi - 1e-3 * width)) next = 0.5 * (low.approach + high.approach);
-      }
-    }
-    // Every trial starts from the base (the path the search follows).
-    if ((loading ? low : high).set) x = loading ? saved_low : saved_high;
-    approach = std::min(next, ceiling);
-    result = solve_displacement(initial_gap, approach, {}, true);
-    iterations += result.iterations;
-    products += result.operator_applications;
-  }
-  if (failure.empty() && step >= options.max_load_steps) {
-    // breakdown, not iteration_limit: the last inner solve converged, and
-    // the reason (the force missed) is the message, which front ends show
-    // for a breakdown.
-    result.status = SolveStatus::breakdown;
-    failure = fmt::format(
-        "the force {:.6g} was not reached in {} approach steps (last: {:.6g} at approach {:.6g} m{})", target,
-        options.max_load_steps, result.total_force, approach,
-        low.set && high.set ? fmt::format("; bracket [{:.6g}, {:.6g}] m", low.approach, high.approach) : std::string());
-  }
-  if (!failure.empty()) {
-    if (result.converged()) result.status = SolveStatus::breakdown;
-    result.message = failure;
-  }
-  result.iterations = iterations;
-  result.operator_applications = products;
+  const std::size_t n = initial_gap.size();
+  const double mean_gap = in_cell_order(initial_gap, [](double g) { return g; }) / static_cast<double>(grid.size());
+  const double min_gap = linalg::min_of(comm, n, [&](std::size_t k) { return initial_gap[k]; });
+  ApproachSearch search;
+  search.target = target;
+  search.probe = options.law.range;
+  search.ceiling = padded ? std::numeric_limits<double>::infinity() : mean_gap - 1e-9 * (mean_gap - min_gap);
+  search.force_tolerance = options.force_tolerance;
+  search.max_steps = options.max_load_steps;
+  const bool continuing = have_last && initial_pressure.empty();
+  const double approach = continuing ? last_approach : std::min(min_gap, search.ceiling);
+  SolveResult first = solve_displacement(initial_gap, approach, initial_pressure, continuing);
+  Driven driven(*this, initial_gap);
+  SolveResult result = search_approach(driven, search, approach, std::move(first));
   result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return result;
 }
 
-AdhesiveContactSolver::AdhesiveContactSolver(const Grid& grid, double e_star, AdhesiveSolverOptions options) {
+AdhesiveContactSolver::AdhesiveContactSolver(InfluenceOperator& op, double contact_modulus,
+                                             AdhesiveSolverOptions options) {
   options.validate();
-  impl_ = std::make_unique<Impl>(grid, e_star, std::move(options));
+  impl_ = std::make_unique<Impl>(nullptr, op, contact_modulus, std::move(options));
 }
+
+AdhesiveContactSolver::AdhesiveContactSolver(std::unique_ptr<InfluenceOperator> op, double contact_modulus,
+                                             AdhesiveSolverOptions options) {
+  options.validate();
+  InfluenceOperator& ref = *op;
+  impl_ = std::make_unique<Impl>(std::move(op), ref, contact_modulus, std::move(options));
+}
+
+AdhesiveContactSolver::AdhesiveContactSolver(const Grid& grid, double e_star, AdhesiveSolverOptions options)
+    : AdhesiveContactSolver((options.validate(), std::make_unique<FftInfluenceOperator>(
+                                                     grid, checked_composite_modulus(e_star), options.fft_planning)),
+                            e_star, options) {}
 
 AdhesiveContactSolver::~AdhesiveContactSolver() = default;
 
@@ -1132,7 +936,7 @@ const AdhesiveSolverOptions& AdhesiveContactSolver::options() const {
 SolveResult AdhesiveContactSolver::solve(std::span<const double> initial_gap, const Loading& loading,
                                          std::span<const double> initial_pressure) {
   Impl& m = *impl_;
-  const std::size_t n = m.grid.size();
+  const std::size_t n = m.cells;
   if (initial_gap.size() != n) {
     throw InputError(fmt::format("adhesive solve: the initial gap has {} entries, but the grid has {} cells",
                                  initial_gap.size(), n));

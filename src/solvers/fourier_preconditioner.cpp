@@ -68,21 +68,9 @@ FourierPreconditioner::~FourierPreconditioner() = default;
 
 void FourierPreconditioner::apply(std::span<const double> in, std::span<double> out) {
   Impl& m = *impl_;
-  const std::size_t n = m.grid.size();
-  assert(in.size() == n && out.size() == n);
-  // `in` is read (transformed directly or copied) before `out` is written,
-  // so the two may alias.
-  if (!m.fft.forward_from(in)) {
-    std::span<double> input = m.fft.input();
-    linalg::for_each_index(n, [&](std::size_t i) { input[i] = in[i]; });
-    m.fft.forward();
-  }
-  m.symbol.multiply(m.fft.spectrum());
-  if (!m.fft.backward_into(out)) {
-    m.fft.backward();
-    std::span<const double> output = m.fft.output();
-    linalg::for_each_index(n, [&](std::size_t i) { out[i] = output[i]; });
-  }
+  assert(in.size() == m.grid.size() && out.size() == m.grid.size());
+  // `in` is read before `out` is written, so the two may alias.
+  m.symbol.apply(m.fft, in, out);
 }
 
 }  // namespace halfspace::solvers

@@ -165,16 +165,8 @@ std::unique_ptr<ContactSolver> make_any_solver(const Grid& grid, const Elasticit
                                                const SolverOptions& options) {
   options.validate(grid);
   if (options.adhesion) {
-    // A coated half-space was refused by options.validate(grid, material).
-    AdhesiveSolverOptions adhesive;
-    adhesive.law = options.adhesion->law;
-    adhesive.tolerance = options.adhesion->tolerance;
-    adhesive.precondition = options.adhesion->precondition;
-    adhesive.hardness = options.interface_law.hardness;
-    if (options.max_iterations) adhesive.max_iterations = *options.max_iterations;
-    adhesive.fft_planning = options.fft_planning;
-    adhesive.progress = options.progress;
-    return std::make_unique<AdhesiveContactSolver>(grid, std::get<double>(e_star), std::move(adhesive));
+    return std::make_unique<AdhesiveContactSolver>(make_operator(grid, e_star, options.fft_planning),
+                                                   contact_modulus(e_star), adhesive_solver_options(options));
   }
   switch (options.type) {
     case SolverType::pk:
@@ -201,6 +193,23 @@ PolonskyKeerOptions polonsky_keer_options(const SolverOptions& options, double t
   pk.form = projected ? PolonskyKeerForm::projected : PolonskyKeerForm::paper;
   pk.bounds = options.interface_law.bounds();
   return pk;
+}
+
+AdhesiveSolverOptions adhesive_solver_options(const SolverOptions& options) {
+  AdhesiveSolverOptions adhesive;
+  adhesive.law = options.adhesion.value().law;
+  adhesive.tolerance = options.adhesion->tolerance;
+  adhesive.precondition = options.adhesion->precondition;
+  adhesive.hardness = options.interface_law.hardness;
+  if (options.max_iterations) adhesive.max_iterations = *options.max_iterations;
+  adhesive.fft_planning = options.fft_planning;
+  adhesive.progress = options.progress;
+  return adhesive;
+}
+
+double contact_modulus(const std::variant<double, LayeredMaterial>& elasticity) {
+  if (const auto* coating = std::get_if<LayeredMaterial>(&elasticity)) return plane_strain_modulus(coating->layer);
+  return std::get<double>(elasticity);
 }
 
 bool multilevel_deflates(const Grid& grid, const SolverOptions& options) {

@@ -152,11 +152,6 @@ void SolverOptions::validate(const Grid& grid, const LayeredMaterial& /*coating*
                             "is invalid for a coated half-space (its dense matrix is the homogeneous one): allowed "
                             "are pk, pk-fourier and pk-multilevel");
   }
-  if (adhesion) {
-    throw SolverOptionError("adhesion", std::string(to_string(adhesion->law.type)),
-                            "is not supported for a coated half-space: the adhesive solver works on the "
-                            "homogeneous half-space");
-  }
 }
 
 }  // namespace halfspace::solvers

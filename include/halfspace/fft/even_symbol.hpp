@@ -12,6 +12,8 @@
 
 namespace halfspace::fft {
 
+class RealFft;
+
 class EvenSymbol {
  public:
   // For a spectrum of `rows` rows of `cols` (complex) entries; all zero.
@@ -29,6 +31,12 @@ class EvenSymbol {
   // spectrum[r, c] *= symbol[r, c], in parallel over rows (or over the
   // entries of a single row).
   void multiply(std::span<std::complex<double>> spectrum) const;
+  // out = the multiplier applied to `in` through `fft` (of this symbol's
+  // shape): the forward transform, multiply(), the backward one, each array
+  // transformed directly where FFTW allows it, else copied through the
+  // transform's buffers. `in` is read before `out` is written, so the two
+  // may be the same array. Allocates nothing.
+  void apply(RealFft& fft, std::span<const double> in, std::span<double> out) const;
 
  private:
   std::size_t rows_;

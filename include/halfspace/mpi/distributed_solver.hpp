@@ -17,8 +17,9 @@ namespace halfspace::mpi {
 
 // Whether make_distributed_solver takes `options` on `grid`: a 2D grid
 // (periodic or free), solver pk, pk-fourier or pk-multilevel (block
-// deflation as the serial solvers take it), with or without a hardness cap,
-// no adhesion.
+// deflation as the serial solvers take it), with or without a hardness cap;
+// with adhesion (the adhesive solver, which then replaces the type) on
+// periodic grids.
 bool distributable(const Grid& grid, const solvers::SolverOptions& options);
 
 // Throws SolverOptionError naming the option and what to use instead unless
@@ -37,8 +38,8 @@ void check_distributable(const Grid& grid, const LayeredMaterial& coating);
 // pk-multilevel: distributed_multilevel.hpp, whose distributed levels are
 // made here) on the slab operator of `grid` (periodic: SlabFourierOperator;
 // free: SlabFreeOperator) of the homogeneous or (periodic grids) coated
-// half-space `elasticity`, over `comm`,
-// which must outlive the solver. Fields given to and returned by the solver
+// half-space `elasticity`, over `comm`, or with adhesion the adhesive solver
+// on the periodic slab operator; `comm` must outlive the solver. Fields given to and returned by the solver
 // hold this process's rows (slab_layout). Collective; throws as
 // check_distributable and SolverOptions::validate do (for a coating, as
 // solvers::make_solver's coated overload).

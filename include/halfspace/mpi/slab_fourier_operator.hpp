@@ -37,11 +37,16 @@ class SlabFourierOperator final : public InfluenceOperator {
   // Collective: every process applies the operator together.
   void apply(std::span<const double> pressure, std::span<double> displacement) override;
   double self_influence() const override { return self_; }
+  // The grid itself, this process's rows: K is apply(), K^-1 the inverse
+  // kernel on the same transform (0 at the mean mode). Collective.
+  CirculantForm& circulant_form() override;
 
  private:
   Grid grid_;
+  SlabElasticity elasticity_;
   std::shared_ptr<SlabRealFft> transform_;
-  std::vector<double> kernel_;  // 2/(E*|q|)/N or its coated form, on this process's spectrum columns
+  std::unique_ptr<CirculantForm> circulant_;  // made on first use
+  std::vector<double> kernel_;                // 2/(E*|q|)/N or its coated form, on this process's spectrum columns
   double self_ = 0.0;
 };
 

@@ -38,6 +38,12 @@ class FftInfluenceOperator final : public InfluenceOperator {
   const Grid& grid() const override;
   void apply(std::span<const double> pressure, std::span<double> displacement) override;
   double self_influence() const override;
+  // Periodic: the grid's transform (shared) with the kernel and its inverse.
+  // Free: a transform of the whole padded grid (4 ny nx reals and half as
+  // many complex values more). Throws InputError if the free grid's padded
+  // kernel is not positive definite (the 1D strip kernel, with its datum at
+  // 1 m, can be so on domains longer than about 1 m).
+  CirculantForm& circulant_form() override;
 
   // Free grids: the padded transform's buffer, whose contents matter only
   // inside apply(), for a transform that runs only between products (the

@@ -6,8 +6,10 @@
 
 #include <span>
 
+#include "halfspace/error.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/linalg/communicator.hpp"
+#include "halfspace/operators/circulant_form.hpp"
 
 namespace halfspace::operators {
 
@@ -36,11 +38,22 @@ class InfluenceOperator {
   // K_ii (m/Pa): the displacement of a cell under unit pressure on itself
   // alone. The same for every cell (the operator is translation invariant).
   virtual double self_influence() const = 0;
+
+  // K as a multiplier on its transform grid (circulant_form.hpp), made on the
+  // first call (its transform and the inverse symbol) and owned by the
+  // operator. Throws InputError if the operator has none (this default: an
+  // assembled matrix) or K has no inverse there.
+  virtual CirculantForm& circulant_form() {
+    throw InputError(
+        "this influence operator has no circulant form (K as a multiplier on a transform grid): use the "
+        "FFT operator");
+  }
 };
 
 }  // namespace halfspace::operators
 
 // The library and its front ends name these without the folder's namespace.
 namespace halfspace {
+using operators::CirculantForm;
 using operators::InfluenceOperator;
 }  // namespace halfspace

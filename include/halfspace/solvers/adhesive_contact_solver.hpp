@@ -91,6 +91,7 @@
 
 #include "halfspace/fft/fft_planning.hpp"
 #include "halfspace/grid.hpp"
+#include "halfspace/operators/influence_operator.hpp"
 #include "halfspace/solvers/adhesion_law.hpp"
 #include "halfspace/solvers/contact_solver.hpp"
 
@@ -126,11 +127,20 @@ struct AdhesiveSolverOptions {
 
 class AdhesiveContactSolver final : public ContactSolver {
  public:
-  // Plans the transforms and the kernel once (options.validate() first).
-  // Throws InputError if the law's cohesive zone is below 1 % of a cell
-  // (see Resolution above) or its stress over the grid overflows a force,
-  // and if the free grid's padded kernel is not positive definite (no stiffness exists; the 1D strip kernel with its
-  // datum at 1 m can be so on domains longer than about 1 m).
+  // On `op` (which must outlive the solver), through its circulant form
+  // (K and S on the variable's grid, circulant_form.hpp), on one process or
+  // several (the fields then hold this process's cells). contact_modulus
+  // (Pa): the composite modulus at the contact edge's scale (the body's E*,
+  // a coating's layer's), which sets the cohesive zone (see Resolution
+  // above). Throws SolverOptionError (options.validate()) or InputError if
+  // the law's cohesive zone is below 1 % of a cell or its stress over the
+  // grid overflows a force, and as op.circulant_form() does (no such form,
+  // or no stiffness).
+  AdhesiveContactSolver(InfluenceOperator& op, double contact_modulus, AdhesiveSolverOptions options);
+  // The same, owning `op`.
+  AdhesiveContactSolver(std::unique_ptr<InfluenceOperator> op, double contact_modulus, AdhesiveSolverOptions options);
+  // The homogeneous half-space of composite modulus e_star (Pa) on `grid`:
+  // on an FftInfluenceOperator of its own.
   AdhesiveContactSolver(const Grid& grid, double e_star, AdhesiveSolverOptions options);
   ~AdhesiveContactSolver() override;
   AdhesiveContactSolver(const AdhesiveContactSolver&) = delete;

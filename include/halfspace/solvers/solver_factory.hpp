@@ -3,9 +3,11 @@
 #pragma once
 
 #include <memory>
+#include <variant>
 
 #include "halfspace/grid.hpp"
 #include "halfspace/layered_material.hpp"
+#include "halfspace/solvers/adhesive_contact_solver.hpp"
 #include "halfspace/solvers/contact_solver.hpp"
 #include "halfspace/solvers/polonsky_keer.hpp"
 #include "halfspace/solvers/solver_options.hpp"
@@ -29,6 +31,15 @@ std::unique_ptr<ContactSolver> make_solver(const Grid& grid, const LayeredMateri
 // progress and pressure bounds; the projected form (which takes a
 // preconditioner) if `projected`, else the paper's.
 PolonskyKeerOptions polonsky_keer_options(const SolverOptions& options, double tolerance, bool projected);
+
+// The adhesive solver's options of `options` (which must hold adhesion):
+// its law, tolerance, form, the hardness cap, iteration limit, planning and
+// progress.
+AdhesiveSolverOptions adhesive_solver_options(const SolverOptions& options);
+// The modulus at a contact edge's scale, which sets the adhesive law's
+// cohesive zone: a homogeneous body's E* (Pa), or a coating's layer's plane-
+// strain modulus (the layer meets the rigid surface).
+double contact_modulus(const std::variant<double, LayeredMaterial>& elasticity);
 
 // Whether pk-multilevel on `grid` deflates its finest grid: deflation on,
 // or automatic where DeflationOptions::automatic_applies and there is no

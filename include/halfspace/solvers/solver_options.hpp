@@ -156,8 +156,7 @@ struct SolverOptions {
   void validate(const Grid& grid) const;
   // validate(grid), and the rules of a coated half-space (layered_material.hpp):
   // not a dense solver ("type": lemke and lcpquad assemble the homogeneous
-  // matrix) and no adhesion ("adhesion": the adhesive solver works on the
-  // homogeneous half-space). Every grid is supported.
+  // matrix). Every grid is supported, with adhesion too.
   void validate(const Grid& grid, const LayeredMaterial& coating) const;
 };
 
