@@ -35,8 +35,7 @@ void check_adhesion_law_ranges(const solvers::AdhesionLaw& law, bool given_as_st
     const double sigma0 = law.work / law.range;
     const std::string value = format_number(sigma0) + " Pa";
     if (!inside(sigma0, kMinMeanPressure, kMaxMeanPressure)) {
-      throw OptionError("adhesion.stress", value,
-                        "is invalid: " + allowed(kMinMeanPressure, kMaxMeanPressure, "Pa"));
+      throw OptionError("adhesion.stress", value, "is invalid: " + allowed(kMinMeanPressure, kMaxMeanPressure, "Pa"));
     }
     if (!inside(law.range, kMinLength, kMaxLength)) {
       throw OptionError("adhesion.stress", value,

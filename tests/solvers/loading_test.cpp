@@ -1,13 +1,14 @@
 // The loading's checks: the periodic approach's one check and wording, shared
 // by every solver and sweep (issue 32: it printed 17 digits and named no
 // option a front end could map).
+#include "halfspace/solvers/loading.hpp"
+
 #include <gtest/gtest.h>
 
 #include <span>
 #include <string>
 
 #include "halfspace/error.hpp"
-#include "halfspace/solvers/loading.hpp"
 #include "halfspace/solvers/solver_factory.hpp"
 #include "support/grid_fields.hpp"
 
