@@ -1,29 +1,18 @@
-// The ranges the program accepts for physical quantities. The library takes
-// any positive, finite, normal value (its tests use E* = 1 and unit
-// spacings); a user of the program works in SI units, where values far
-// outside these ranges are typing mistakes, and where they would overflow or
-// underflow inside the solve (an E* of 1e-300 Pa makes every displacement
-// infinite) and end in a NaN breakdown instead of a clear refusal.
+// The ranges the program accepts for physical quantities: the library's
+// table (halfspace/physical_ranges.hpp), shared with the Python package,
+// under the names the program's files use.
 #pragma once
 
-#include <string>
-#include <string_view>
+#include "halfspace/physical_ranges.hpp"
 
 namespace halfspace::app {
 
-// Lengths: spacings, domain sizes, radii, wavelengths, amplitudes (m).
-inline constexpr double kMinLength = 1e-12;
-inline constexpr double kMaxLength = 1e3;
-// Moduli: E1, E2 and E* (Pa); rubbers start near 1e5, diamond is 1.2e12.
-inline constexpr double kMinModulus = 1e3;
-inline constexpr double kMaxModulus = 1e15;
-// Mean contact pressure over the domain (Pa), given or as force / area.
-inline constexpr double kMinMeanPressure = 1e-9;
-inline constexpr double kMaxMeanPressure = 1e13;
-
-// `value` if it lies in [low, high]; otherwise throws InputError
-// "<what> is invalid: allowed range is [low, high] <unit>", so `what` shows
-// the value: "--E-star 1e-300", "spacing dx = 1e-15 m (--size 1e-6 / --grid 1000)".
-double require_in_range(const std::string& what, double value, double low, double high, std::string_view unit);
+using halfspace::kMaxLength;
+using halfspace::kMaxMeanPressure;
+using halfspace::kMaxModulus;
+using halfspace::kMinLength;
+using halfspace::kMinMeanPressure;
+using halfspace::kMinModulus;
+using halfspace::require_in_range;
 
 }  // namespace halfspace::app

@@ -212,7 +212,7 @@ template <class Function>
 auto with_solver_flags(const SolveOptions& o, Function&& function) {
   try {
     return function();
-  } catch (const solvers::SolverOptionError& error) {
+  } catch (const OptionError& error) {
     const std::string& option = error.option();
     const std::string_view key = option == "tolerance"             ? "tol"
                                  : option == "max_iterations"      ? "max-iter"
@@ -222,6 +222,7 @@ auto with_solver_flags(const SolveOptions& o, Function&& function) {
                                  : option == "adhesion.work"       ? "work-of-adhesion"
                                  : option == "adhesion.range"
                                      ? (o.adhesion_stress ? "adhesion-stress" : "adhesion-range")
+                                 : option == "adhesion.stress"    ? "adhesion-stress"
                                  : option == "adhesion.tolerance" ? "tol"
                                                                   : "solver";
     throw InputError(fmt::format("{} {}", o.describe(key), error.rule()));
@@ -264,24 +265,13 @@ std::optional<solvers::SolverOptions::Adhesion> adhesion_from(const SolveOptions
                                  type == AdhesionLawType::maugis_dugdale ? "H0" : "RHO",
                                  type == AdhesionLawType::maugis_dugdale ? " or --adhesion-stress SIGMA0 (Pa)" : ""));
   }
-  const double w = require_positive(o, "work-of-adhesion", *o.work_of_adhesion, "J/m^2");
+  const double w = *o.work_of_adhesion;
   solvers::SolverOptions::Adhesion adhesion;
-  // The stress is a pressure and the range a length: given or derived
-  // (w / sigma0, w / range), each stays in the program's range for its kind.
-  if (o.adhesion_stress) {
-    const double sigma0 = require_positive(o, "adhesion-stress", *o.adhesion_stress, "Pa");
-    require_in_range(o.describe("adhesion-stress"), sigma0, kMinMeanPressure, kMaxMeanPressure, "Pa");
-    adhesion.law = AdhesionLaw::maugis_dugdale_from_stress(w, sigma0);
-    require_in_range(fmt::format("the range h0 = w / sigma0 = {:g} m ({} with {})", adhesion.law.range,
-                                 o.describe("work-of-adhesion"), o.describe("adhesion-stress")),
-                     adhesion.law.range, kMinLength, kMaxLength, "m");
-  } else {
-    const double range = require_length(o, "adhesion-range", *o.adhesion_range);
-    adhesion.law = {type, w, range};
-    require_in_range(fmt::format("the adhesion stress w / range = {:g} Pa ({} with {})", adhesion.law.stress(),
-                                 o.describe("work-of-adhesion"), o.describe("adhesion-range")),
-                     adhesion.law.stress(), kMinMeanPressure, kMaxMeanPressure, "Pa");
-  }
+  adhesion.law = o.adhesion_stress ? AdhesionLaw::maugis_dugdale_from_stress(w, *o.adhesion_stress)
+                                   : AdhesionLaw{type, w, *o.adhesion_range};
+  // Given or derived (w / sigma0, w / range), the stress and the range stay
+  // in the ranges of their kinds (the library's table, shared with Python).
+  check_adhesion_law_ranges(adhesion.law, o.adhesion_stress.has_value());
   if (o.tol) adhesion.tolerance = *o.tol;
   if (o.adhesion_precondition) {
     if (*o.adhesion_precondition != "on" && *o.adhesion_precondition != "off") {
@@ -359,6 +349,22 @@ void check_load_scale(const SolveOptions& o, const Grid& grid, ControlMode mode,
       case ControlMode::approach:
         require_in_range(o.describe("approach") + value_name(k), values[k], kMinLength, kMaxLength, "m");
         break;
+    }
+  }
+}
+
+// Displacement control on a periodic grid: the library's check of every
+// approach against the mean initial gap, restated with the flag.
+void check_periodic_approaches(const SolveOptions& o, const Eigen::ArrayXd& heights,
+                               const std::vector<double>& values) {
+  const double mean_gap = heights.maxCoeff() - heights.mean();
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    try {
+      solvers::check_periodic_approach(values[k], mean_gap);
+    } catch (const OptionError& error) {
+      const std::string which =
+          values.size() == 1 ? std::string() : fmt::format(" (value {}: {} m)", k + 1, format_number(values[k]));
+      throw InputError(fmt::format("{}{} {}", o.describe("approach"), which, error.rule()));
     }
   }
 }
@@ -735,9 +741,12 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
   const GridCheck check_grid = [&](const Grid& grid, const std::string& request) {
     check_load_scale(options, grid, loading.mode, load_values);
     // Hardness cap: no load above H times the domain area.
-    for (const double value : load_values) {
-      in_context(options.describe(loading.mode == ControlMode::force ? "force" : "mean-pressure"), [&] {
-        solver.interface_law.check_load(grid, Loading{loading.mode, value});
+    for (std::size_t k = 0; k < load_values.size(); ++k) {
+      const std::string which = load_values.size() == 1
+                                    ? std::string()
+                                    : fmt::format(" (value {}: {})", k + 1, format_number(load_values[k]));
+      in_context(options.describe(loading.mode == ControlMode::force ? "force" : "mean-pressure") + which, [&] {
+        solver.interface_law.check_load(grid, Loading{loading.mode, load_values[k]});
       });
     }
     const std::string what = fmt::format("{}: {}", request, solve_description(grid, solver, load_values.size()));
@@ -785,6 +794,9 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
       solver.validate(surface.grid);
     }
   });
+  if (loading.mode == ControlMode::approach && surface.grid.periodic() && surface.rows == rows) {
+    check_periodic_approaches(options, surface.heights, load_values);
+  }
   if (!stress.depths.empty()) {
     in_context(options.describe("stress-depths"), [&] {
       if (coating) stress::require_coated_stress_grid(surface.grid, *coating);

@@ -87,7 +87,8 @@ int run_stress(const StressOptions& o, const std::vector<std::string>& argv) {
     throw InputError(fmt::format(
         "--nu {} is not used: {} is a coated half-space's result, whose stresses take its layer_nu = {} in the "
         "layer and substrate_nu = {} below it; drop --nu",
-        *o.nu, o.result, coating->layer.poissons_ratio, coating->substrate.poissons_ratio));
+        *o.nu, o.result, format_number(coating->layer.poissons_ratio),
+        format_number(coating->substrate.poissons_ratio)));
   }
   if (!coating && !o.nu) throw InputError(missing_poisson_ratio_message("--nu"));
   if (coating && input.has_shear()) {

@@ -18,10 +18,11 @@ double inverse_shear_modulus(const ElasticBody& body, int index) {
   const bool rigid = index == 2 && e == std::numeric_limits<double>::infinity();
   if (!rigid && !(std::isnormal(e) && e > 0.0)) {
     throw InputError(fmt::format("Young's modulus E{} = {} Pa is invalid: must be positive, finite and not denormal{}",
-                                 index, e, index == 2 ? " (or inf for a rigid body)" : ""));
+                                 index, format_number(e), index == 2 ? " (or inf for a rigid body)" : ""));
   }
   if (!(std::isfinite(nu) && nu > -1.0 && nu <= 0.5)) {
-    throw InputError(fmt::format("Poisson's ratio nu{} = {} is invalid: allowed range is (-1, 0.5]", index, nu));
+    throw InputError(
+        fmt::format("Poisson's ratio nu{} = {} is invalid: allowed range is (-1, 0.5]", index, format_number(nu)));
   }
   return rigid ? 0.0 : 2.0 * (1.0 + nu) / e;
 }
@@ -40,7 +41,8 @@ ElasticPair::ElasticPair(const ElasticBody& body1, const ElasticBody& body2) : b
   if (!(std::isnormal(normal_compliance_) && std::isnormal(shear_compliance_))) {
     throw InputError(fmt::format(
         "the compliances of E1 = {} Pa, nu1 = {}, E2 = {} Pa, nu2 = {} are invalid: must be positive and finite",
-        body1.youngs_modulus, nu1, body2.youngs_modulus, nu2));
+        format_number(body1.youngs_modulus), format_number(nu1), format_number(body2.youngs_modulus),
+        format_number(nu2)));
   }
 }
 

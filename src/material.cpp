@@ -15,11 +15,12 @@ double compliance(const ElasticBody& body, int index) {
   const double e = body.youngs_modulus;
   const double nu = body.poissons_ratio;
   if (!(std::isnormal(e) && e > 0.0)) {
-    throw InputError(
-        fmt::format("Young's modulus E{} = {} Pa is invalid: must be positive, finite and not denormal", index, e));
+    throw InputError(fmt::format("Young's modulus E{} = {} Pa is invalid: must be positive, finite and not denormal",
+                                 index, format_number(e)));
   }
   if (!(std::isfinite(nu) && nu > -1.0 && nu <= 0.5)) {
-    throw InputError(fmt::format("Poisson's ratio nu{} = {} is invalid: allowed range is (-1, 0.5]", index, nu));
+    throw InputError(
+        fmt::format("Poisson's ratio nu{} = {} is invalid: allowed range is (-1, 0.5]", index, format_number(nu)));
   }
   return (1.0 - nu * nu) / e;
 }
@@ -33,7 +34,8 @@ double composite_modulus(const ElasticBody& body1, const ElasticBody& body2) {
     throw InputError(fmt::format(
         "composite modulus E* = {} Pa of E1 = {} Pa, nu1 = {}, E2 = {} Pa, nu2 = {} is invalid: must be positive, "
         "finite and not denormal",
-        e_star, body1.youngs_modulus, body1.poissons_ratio, body2.youngs_modulus, body2.poissons_ratio));
+        format_number(e_star), format_number(body1.youngs_modulus), format_number(body1.poissons_ratio),
+        format_number(body2.youngs_modulus), format_number(body2.poissons_ratio)));
   }
   return e_star;
 }

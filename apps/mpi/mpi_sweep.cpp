@@ -59,14 +59,7 @@ std::vector<Loading> checked_loads(const SolveSetup& setup, std::span<const doub
   if (setup.loading.mode == ControlMode::approach && setup.grid.periodic()) {
     const double mean_gap =
         linalg::sum(world, gap.size(), [&](std::size_t i) { return gap[i]; }) / static_cast<double>(setup.grid.size());
-    for (const double value : setup.load_values) {
-      if (value >= mean_gap) {
-        throw InputError(
-            fmt::format("approach = {} m is invalid for a periodic surface: it must be below the mean initial gap {} m "
-                        "(full contact needs infinite pressure there)",
-                        value, mean_gap));
-      }
-    }
+    for (const double value : setup.load_values) solvers::check_periodic_approach(value, mean_gap);
   }
   return loads;
 }

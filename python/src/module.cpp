@@ -25,6 +25,10 @@ std::string keyword_for(const std::string& option) {
   if (option == "max_iterations") return "max_iter";
   if (option == "type") return "solver";
   if (option.starts_with("deflation")) return "deflation_block";
+  if (option == "adhesion.work") return "work_of_adhesion";
+  if (option == "adhesion.range") return "adhesion_range";
+  if (option == "adhesion.stress") return "adhesion_stress";
+  if (option == "adhesion.tolerance") return "adhesion_tol";
   return option;
 }
 
@@ -56,7 +60,7 @@ void bind_errors(nb::module_& module) {
       std::rethrow_exception(thrown);
     } catch (const FileError& error) {
       PyErr_SetString(file_error, error.what());
-    } catch (const solvers::SolverOptionError& error) {
+    } catch (const OptionError& error) {
       const std::string message = fmt::format("{}={} {}", keyword_for(error.option()), error.value(), error.rule());
       PyErr_SetString(input_error, message.c_str());
     } catch (const InputError& error) {

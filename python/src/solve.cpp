@@ -15,6 +15,7 @@
 #include "halfspace/error.hpp"
 #include "halfspace/layered_material.hpp"
 #include "halfspace/material.hpp"
+#include "halfspace/physical_ranges.hpp"
 #include "halfspace/solvers/adhesion_law.hpp"
 #include "halfspace/solvers/frictional_solve.hpp"
 #include "halfspace/solvers/surface_solve.hpp"
@@ -110,7 +111,7 @@ solvers::SolverOptions solver_options(const nb::dict& given, const Grid& grid) {
     const auto named = [&](auto&& parse) {
       try {
         return parse();
-      } catch (const solvers::SolverOptionError&) {
+      } catch (const OptionError&) {
         throw;
       } catch (const InputError& error) {
         throw InputError(fmt::format("{}: {}", key, error.what()));
@@ -164,12 +165,11 @@ solvers::SolverOptions solver_options(const nb::dict& given, const Grid& grid) {
       throw InputError("adhesion_stress applies to adhesion='md' only; give adhesion_range (rho, m)");
     }
     if (!range && !stress) throw InputError(fmt::format("adhesion='{}' needs adhesion_range (m)", *adhesion));
-    if (stress && !(std::isfinite(*stress) && *stress > 0.0)) {
-      throw InputError(fmt::format("adhesion_stress={} is invalid: must be positive and finite (Pa)", *stress));
-    }
     solvers::SolverOptions::Adhesion law;
     law.law = stress ? solvers::AdhesionLaw::maugis_dugdale_from_stress(*work, *stress)
                      : solvers::AdhesionLaw{type, *work, *range};
+    // The program's ranges, given or derived (physical_ranges.hpp).
+    check_adhesion_law_ranges(law.law, stress.has_value());
     if (adhesion_tol) law.tolerance = *adhesion_tol;
     if (adhesion_precondition) law.precondition = *adhesion_precondition;
     options.adhesion = law;
@@ -260,7 +260,7 @@ Result solve(const nb::object& heights, double dx, double dy, const std::string&
   if (!options.adhesion) {
     loading.validate();
   } else if (!std::isfinite(value)) {  // adhesive loads are signed (pulling is negative)
-    throw InputError(fmt::format("{} = {} is invalid: must be finite", mode, value));
+    throw InputError(fmt::format("{} = {} is invalid: must be finite", mode, format_number(value)));
   }
   const int thread_number = thread_count(threads);
   std::span<const double> start;

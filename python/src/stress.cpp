@@ -33,7 +33,8 @@ nb::dict subsurface_stress(const Result& result, const std::vector<double>& dept
     throw InputError(fmt::format(
         "nu={} is not used: the result is of a coated half-space, whose stresses take layer_nu = {} in the layer "
         "and substrate_nu = {} below it; drop nu",
-        *nu, coating->layer.poissons_ratio, coating->substrate.poissons_ratio));
+        format_number(*nu), format_number(coating->layer.poissons_ratio),
+        format_number(coating->substrate.poissons_ratio)));
   }
   if (!coating && !nu) {
     throw InputError(

@@ -41,7 +41,7 @@ std::vector<SweepStep> run_load_sweep(ContactSolver& solver, const Grid& grid, s
     if (!options.signed_loads) {
       loading.validate();
     } else if (!std::isfinite(value)) {
-      throw InputError(fmt::format("{} = {} is invalid: must be finite", to_string(mode), value));
+      throw InputError(fmt::format("{} = {} is invalid: must be finite", to_string(mode), format_number(value)));
     }
     loads.push_back(loading);
   }
@@ -51,14 +51,7 @@ std::vector<SweepStep> run_load_sweep(ContactSolver& solver, const Grid& grid, s
     double mean_gap = 0.0;
     for (const double g : initial_gap) mean_gap += g;
     mean_gap /= static_cast<double>(initial_gap.size());
-    for (const double value : values) {
-      if (value >= mean_gap) {
-        throw InputError(
-            fmt::format("approach = {} m is invalid for a periodic surface: it must be below the mean initial gap {} m "
-                        "(full contact needs infinite pressure there)",
-                        value, mean_gap));
-      }
-    }
+    for (const double value : values) solvers::check_periodic_approach(value, mean_gap);
   }
 
   std::vector<SweepStep> steps;

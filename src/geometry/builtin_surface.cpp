@@ -15,7 +15,7 @@ namespace {
 // The parameter must be positive and finite for `shape` to be defined.
 void require_positive(SurfaceShape shape, std::string_view parameter, double value) {
   if (!(std::isfinite(value) && value > 0.0)) {
-    throw InputError(fmt::format("{} needs {} > 0 m (got {})", to_string(shape), parameter, value));
+    throw InputError(fmt::format("{} needs {} > 0 m (got {})", to_string(shape), parameter, format_number(value)));
   }
 }
 

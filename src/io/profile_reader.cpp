@@ -82,12 +82,50 @@ std::optional<DektakLayout> find_dektak_layout(std::string_view text, const Read
   target.fail("the file starts like a Dektak export ('Scan Parameters') but has no 'Scan Data' line");
 }
 
-// The spacing of a uniform x column; throws naming the first line off the grid.
+double median_of(std::vector<double> values) {
+  const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+  std::nth_element(values.begin(), middle, values.end());
+  return *middle;
+}
+
+// Names the line that breaks the spacing, if one step (a missing point) or
+// one point (a displaced x) does, against the median step: unlike the
+// least-squares slope, one bad x cannot move it, so the steps of the other
+// points stay within `tolerance` of it (a rounded step takes one of two
+// adjacent printed values). Returns without failing when no step stands
+// out (a drift, which the caller names).
+void fail_at_the_odd_step(const detail::TextTable& table, const ReadTarget& target, double tolerance) {
+  const std::size_t n = table.rows();
+  std::vector<double> steps(n - 1);
+  for (std::size_t k = 0; k + 1 < n; ++k) steps[k] = table.at(k + 1, 0) - table.at(k, 0);
+  const double typical = median_of(steps);
+  const auto odd = [&](std::size_t k) { return std::abs(steps[k] - typical) > tolerance; };
+  for (std::size_t k = 0; k + 1 < n; ++k) {
+    if (!odd(k)) continue;
+    const auto line = [&](std::size_t row) { return table.line_numbers[row]; };
+    const auto x = [&](std::size_t row) { return table.at(row, 0); };
+    if (k + 2 < n && odd(k + 1) && (steps[k] - typical) * (steps[k + 1] - typical) < 0.0) {
+      // A step too long then one too short (or the reverse): the point between is displaced.
+      target.fail(fmt::format(
+          "x is not uniformly spaced: line {} has x = {:.9g}, {:.6g} after line {} (x = {:.9g}) and {:.6g} before "
+          "line {} (x = {:.9g}), but the other points step by {:.6g} (the median step), within {:.3g}, the "
+          "precision x is printed with (at most half a step); resample the profile to uniform x first",
+          line(k + 1), x(k + 1), steps[k], line(k), x(k), steps[k + 1], line(k + 2), x(k + 2), typical, tolerance));
+    }
+    target.fail(
+        fmt::format("x is not uniformly spaced: from line {} (x = {:.9g}) to line {} (x = {:.9g}) x steps by {:.6g} "
+                    "but the other points step by {:.6g} (the median step), within {:.3g}, the precision x is "
+                    "printed with (at most half a step); resample the profile to uniform x first",
+                    line(k), x(k), line(k + 1), x(k + 1), steps[k], typical, tolerance));
+  }
+}
+
+// The spacing of a uniform x column; throws naming the line off the grid.
 double uniform_spacing(const detail::TextTable& table, const ReadTarget& target, double dektak_length) {
   const std::size_t n = table.rows();
   for (std::size_t k = 0; k < n; ++k) {
     if (!std::isfinite(table.at(k, 0))) {
-      target.fail(fmt::format("line {}: x = {} is not finite", table.line_numbers[k], table.at(k, 0)));
+      target.fail(fmt::format("line {}: x = {:g} is not finite", table.line_numbers[k], table.at(k, 0)));
     }
   }
   // Least squares x_k = a + b k, with k centred for accuracy.
@@ -110,7 +148,7 @@ double uniform_spacing(const detail::TextTable& table, const ReadTarget& target,
   const double intercept = x_mean - slope * k_mean;
   if (!(slope > 0.0)) {
     target.fail(
-        fmt::format("x does not increase (from {} at line {} to {} at line {}); a profile needs x in "
+        fmt::format("x does not increase (from {:.9g} at line {} to {:.9g} at line {}); a profile needs x in "
                     "increasing order",
                     table.at(0, 0), table.line_numbers.front(), table.at(n - 1, 0), table.line_numbers.back()));
   }
@@ -122,8 +160,9 @@ double uniform_spacing(const detail::TextTable& table, const ReadTarget& target,
   for (std::size_t k = 0; k + 1 < n; ++k) {
     const double step = table.at(k + 1, 0) - table.at(k, 0);
     if (std::abs(step - slope) > tolerance) {
+      fail_at_the_odd_step(table, target, tolerance);
       target.fail(
-          fmt::format("x is not uniformly spaced: from line {} (x = {}) to line {} (x = {}) x steps by {:.6g} "
+          fmt::format("x is not uniformly spaced: from line {} (x = {:.9g}) to line {} (x = {:.9g}) x steps by {:.6g} "
                       "but the mean step is {:.6g}, and steps may differ from it only by {:.3g}, the precision "
                       "x is printed with (at most half a step); resample the profile to uniform x first",
                       table.line_numbers[k], table.at(k, 0), table.line_numbers[k + 1], table.at(k + 1, 0), step, slope,
@@ -135,8 +174,9 @@ double uniform_spacing(const detail::TextTable& table, const ReadTarget& target,
     const double expected = intercept + slope * static_cast<double>(k);
     const double deviation = std::abs(table.at(k, 0) - expected);
     if (deviation > tolerance) {
+      fail_at_the_odd_step(table, target, tolerance);
       target.fail(fmt::format(
-          "x is not uniformly spaced: line {} has x = {} but the uniform grid fitted to all {} "
+          "x is not uniformly spaced: line {} has x = {:.9g} but the uniform grid fitted to all {} "
           "points (x = {:.9g} + k * {:.9g}) gives {:.9g} there, {:.3g} away, more than "
           "{:.3g}, the precision x is printed with (at most half a step); resample the profile to uniform x first",
           table.line_numbers[k], table.at(k, 0), n, intercept, slope, expected, deviation, tolerance));

@@ -60,7 +60,18 @@ double printed_step(std::string_view token) {
 std::vector<std::string> split_names(std::string_view line) {
   std::vector<std::string> names;
   if (line.find_first_of(",;\t") == std::string_view::npos) {
-    for (std::string_view field : split_fields(line)) names.emplace_back(field);
+    // Space-separated: a unit in brackets belongs to the name before it
+    // ("x [um] z [nm]" names two columns, x [um] and z [nm]).
+    for (std::string_view field : split_fields(line)) {
+      const bool unit = field.size() >= 2 && ((field.front() == '[' && field.back() == ']') ||
+                                              (field.front() == '(' && field.back() == ')'));
+      if (unit && !names.empty()) {
+        names.back() += ' ';
+        names.back() += field;
+      } else {
+        names.emplace_back(field);
+      }
+    }
     return names;
   }
   std::size_t begin = 0;

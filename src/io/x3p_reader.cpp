@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "halfspace/error.hpp"
 #include "md5.hpp"
 #include "reader_support.hpp"
 
@@ -336,7 +337,8 @@ ZAxis z_axis(const Xml& xml, const ReadTarget& target) {
   z.type = type[0];
   z.increment = xml.number("Record1/Axes/CZ/Increment", 1.0);
   z.offset = xml.number("Record1/Axes/CZ/Offset", 0.0);
-  if (!(z.increment > 0.0)) target.fail(fmt::format("CZ Increment = {} is invalid: must be positive", z.increment));
+  if (!(z.increment > 0.0))
+    target.fail(fmt::format("CZ Increment = {} is invalid: must be positive", format_number(z.increment)));
   return z;
 }
 

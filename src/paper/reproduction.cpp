@@ -54,14 +54,16 @@ ExtraPressure point_load_lemke(const LineContact& contact, const ReproductionOpt
 
 void ReproductionOptions::validate() const {
   if (!(std::isfinite(load) && load > 0.0)) {
-    throw InputError(fmt::format("load = {} N/m is invalid: must be positive and finite", load));
+    throw InputError(fmt::format("load = {} N/m is invalid: must be positive and finite", format_number(load)));
   }
   if (!(pk_tolerance > 0.0 && pk_tolerance < 1.0)) {
-    throw InputError(fmt::format("Polonsky-Keer tolerance = {} is invalid: allowed range is (0, 1)", pk_tolerance));
+    throw InputError(
+        fmt::format("Polonsky-Keer tolerance = {} is invalid: allowed range is (0, 1)", format_number(pk_tolerance)));
   }
   solvers::LcpQuadOptions{lcpquad_tolerance}.validate();
   if (!(dense_tolerance > 0.0 && dense_tolerance < 1.0)) {
-    throw InputError(fmt::format("dense tolerance = {} is invalid: allowed range is (0, 1)", dense_tolerance));
+    throw InputError(
+        fmt::format("dense tolerance = {} is invalid: allowed range is (0, 1)", format_number(dense_tolerance)));
   }
 }
 

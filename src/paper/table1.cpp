@@ -41,7 +41,7 @@ HertzLine hertz_line(double load, double radius, double e_star) {
 
 LineContact line_contact(const PaperTest& test, double load) {
   if (!(std::isfinite(load) && load > 0.0)) {
-    throw InputError(fmt::format("load = {} N/m is invalid: must be positive and finite", load));
+    throw InputError(fmt::format("load = {} N/m is invalid: must be positive and finite", format_number(load)));
   }
   const double dx = 2.0 * kDomainHalfWidth / static_cast<double>(test.nodes - 1);
   const ElasticBody body{test.youngs_modulus, test.poissons_ratio};

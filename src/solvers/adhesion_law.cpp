@@ -47,16 +47,18 @@ bool AdhesionLaw::interacts(double gap) const {
 
 void AdhesionLaw::validate() const {
   if (!(std::isfinite(work) && work > 0.0)) {
-    throw InputError(fmt::format("work-of-adhesion = {} is invalid: must be positive and finite (J/m^2)", work));
+    throw InputError(
+        fmt::format("work-of-adhesion = {} is invalid: must be positive and finite (J/m^2)", format_number(work)));
   }
   if (!(std::isfinite(range) && range > 0.0)) {
-    throw InputError(fmt::format("adhesion-range = {} is invalid: must be positive and finite (m)", range));
+    throw InputError(
+        fmt::format("adhesion-range = {} is invalid: must be positive and finite (m)", format_number(range)));
   }
   const double sigma = stress();
   if (!(std::isfinite(sigma) && std::isnormal(sigma))) {
     throw InputError(fmt::format(
         "adhesion stress = work-of-adhesion / adhesion-range = {} / {} = {} Pa is invalid: must be finite and normal",
-        work, range, sigma));
+        format_number(work), format_number(range), format_number(sigma)));
   }
 }
 

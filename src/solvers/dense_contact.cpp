@@ -12,6 +12,7 @@
 #include "halfspace/error.hpp"
 #include "halfspace/material.hpp"
 #include "halfspace/operators/dense_influence_operator.hpp"
+#include "halfspace/solvers/contact_conditions.hpp"
 #include "halfspace/solvers/interface_law.hpp"
 
 namespace halfspace::solvers {
@@ -46,19 +47,57 @@ double automatic_pressure_unit(const Grid& grid, double self_influence, std::spa
   return widest > 0.0 ? widest / self_influence : 1.0;
 }
 
+// The solver's own matrix K as an InfluenceOperator, for the independent
+// check of a result (check_contact_conditions), without a copy of K.
+class MatrixView final : public InfluenceOperator {
+ public:
+  MatrixView(const Grid& grid, const Eigen::MatrixXd& matrix) : grid_(grid), matrix_(matrix) {}
+  const Grid& grid() const override { return grid_; }
+  void apply(std::span<const double> pressure, std::span<double> displacement) override {
+    const auto n = static_cast<Eigen::Index>(pressure.size());
+    Eigen::Map<Eigen::VectorXd>(displacement.data(), n).noalias() =
+        matrix_ * Eigen::Map<const Eigen::VectorXd>(pressure.data(), n);
+  }
+  double self_influence() const override { return matrix_(0, 0); }
+
+ private:
+  const Grid& grid_;
+  const Eigen::MatrixXd& matrix_;
+};
+
+// A load of H times the domain (to this relative rounding) puts every cell
+// at the cap.
+constexpr double kFullCapRounding = 1e-12;
+
+// The LCP's solution when every cell is at the cap: z at its upper bound and
+// the multiplier (the approach) at the largest M z + q, the smallest that
+// leaves no cell open (w = M z + q - lambda <= 0 everywhere). The problem
+// fixes no approach there (any larger one also holds), and an interior-point
+// method stops with a few cells just short of the cap.
+LcpSolution all_capped_solution(const LcpProblem& problem) {
+  LcpSolution solution;
+  solution.z = problem.upper_bound;
+  const Eigen::VectorXd response = problem.matrix * solution.z + problem.offset;
+  solution.multiplier = response.maxCoeff();
+  solution.w = response.array() - solution.multiplier;
+  solution.objective = solution.z.dot(solution.w);
+  solution.status = LcpStatus::solved;
+  return solution;
+}
+
 }  // namespace
 
 void DenseContactOptions::validate() const {
   if (!(tolerance > 0.0 && tolerance < 1.0)) {
-    throw InputError(fmt::format("tolerance = {} is invalid: allowed range is (0, 1)", tolerance));
+    throw InputError(fmt::format("tolerance = {} is invalid: allowed range is (0, 1)", format_number(tolerance)));
   }
   if (!(std::isfinite(units.length) && units.length >= 0.0)) {
-    throw InputError(
-        fmt::format("length unit = {} m is invalid: must be finite and >= 0 (0: automatic)", units.length));
+    throw InputError(fmt::format("length unit = {} m is invalid: must be finite and >= 0 (0: automatic)",
+                                 format_number(units.length)));
   }
   if (!(std::isfinite(units.pressure) && units.pressure >= 0.0)) {
-    throw InputError(
-        fmt::format("pressure unit = {} Pa is invalid: must be finite and >= 0 (0: automatic)", units.pressure));
+    throw InputError(fmt::format("pressure unit = {} Pa is invalid: must be finite and >= 0 (0: automatic)",
+                                 format_number(units.pressure)));
   }
   InterfaceLaw{hardness}.validate();
 }
@@ -97,12 +136,7 @@ ContactLcp make_contact_lcp(const Grid& grid, double e_star, const Eigen::Matrix
     double mean_gap = 0.0;
     for (double g : initial_gap) mean_gap += g;
     mean_gap /= static_cast<double>(n);
-    if (loading.value >= mean_gap) {
-      throw InputError(
-          fmt::format("approach = {} m is invalid for a periodic surface: it must be below the mean initial gap {} m "
-                      "(full contact needs infinite pressure there)",
-                      loading.value, mean_gap));
-    }
+    check_periodic_approach(loading.value, mean_gap);
   }
 
   ContactLcp contact;
@@ -173,7 +207,10 @@ SolveResult DenseContactSolver::solve(std::span<const double> initial_gap, const
                                       std::span<const double> /*initial_pressure*/) {
   const auto start = std::chrono::steady_clock::now();
   last_lcp_ = make_contact_lcp(grid_, e_star_, influence_, initial_gap, loading, options_);
-  last_solution_ = solve_lcp(last_lcp_.lcp);
+  const bool all_capped =
+      options_.hardness && loading.load_controlled() &&
+      loading.target_force(grid_.domain_area()) >= *options_.hardness * grid_.domain_area() * (1.0 - kFullCapRounding);
+  last_solution_ = all_capped ? all_capped_solution(last_lcp_.lcp) : solve_lcp(last_lcp_.lcp);
   const LcpSolution& lcp = last_solution_;
   const auto n = static_cast<Eigen::Index>(grid_.size());
 
@@ -192,7 +229,9 @@ SolveResult DenseContactSolver::solve(std::span<const double> initial_gap, const
   for (Eigen::Index i = 0; i < n; ++i) {
     const double z = lcp.z[i];
     result.pressure[i] = z > 0.0 && z > lcp.w[i] ? z * last_lcp_.pressure_unit : 0.0;
-    if (capped && last_lcp_.lcp.upper_bound[i] - z < -lcp.w[i]) result.pressure[i] = *options_.hardness;
+    if (capped && (all_capped || last_lcp_.lcp.upper_bound[i] - z < -lcp.w[i])) {
+      result.pressure[i] = *options_.hardness;
+    }
   }
   result.approach = loading.load_controlled() ? lcp.multiplier * last_lcp_.gap_unit : loading.value;
   result.displacement = (influence_ * result.pressure.matrix()).array();
@@ -235,6 +274,24 @@ SolveResult DenseContactSolver::solve(std::span<const double> initial_gap, const
       result.status = SolveStatus::breakdown;
       result.message = lcp.message;
       break;
+  }
+  if (result.status == SolveStatus::converged) {
+    // "Converged" must mean the conditions hold, checked apart from the
+    // contact residual (contact_conditions.hpp), as Polonsky-Keer does.
+    MatrixView op(grid_, influence_);
+    Eigen::ArrayXd scratch(n);
+    const ContactConditionReport check = check_contact_conditions(
+        op, initial_gap, loading, options_.hardness ? PressureBounds::capped_at(*options_.hardness) : PressureBounds{},
+        result, ContactConditionTolerances::for_solver_tolerance(options_.tolerance),
+        {scratch.data(), static_cast<std::size_t>(n)});
+    ++result.operator_applications;
+    if (!check.holds) {
+      result.status = SolveStatus::breakdown;
+      result.message = fmt::format(
+          "{} ended at a solution of its LCP with the contact residual {:.3e}, but the "
+          "independent check failed: {}",
+          name_, result.residual, check.violation);
+    }
   }
   result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

@@ -16,7 +16,7 @@ void InterfaceLaw::validate() const {
   if (!hardness) return;
   const double h = *hardness;
   if (!(std::isfinite(h) && h >= kMinHardness && h <= kMaxHardness)) {
-    throw SolverOptionError("hardness", fmt::format("{}", h),
+    throw SolverOptionError("hardness", format_number(h),
                             fmt::format("Pa is invalid: allowed range is {:g} to {:g} Pa", kMinHardness, kMaxHardness));
   }
 }
@@ -30,8 +30,8 @@ void InterfaceLaw::check_load(const Grid& grid, const Loading& loading) const {
     throw InputError(fmt::format(
         "the load is infeasible with hardness = {} Pa: the force {} {} exceeds the hardness times the domain area "
         "{} {} = {} {} (the largest force a fully plastic surface carries); lower the load or raise the hardness",
-        *hardness, force, grid.dimension() == 1 ? "N/m" : "N", area, grid.dimension() == 1 ? "m" : "m^2",
-        *hardness * area, grid.dimension() == 1 ? "N/m" : "N"));
+        format_number(*hardness), format_number(force), grid.dimension() == 1 ? "N/m" : "N", format_number(area),
+        grid.dimension() == 1 ? "m" : "m^2", format_number(*hardness * area), grid.dimension() == 1 ? "N/m" : "N"));
   }
 }
 

@@ -23,8 +23,17 @@ std::string_view to_string(ControlMode mode) {
 
 void Loading::validate() const {
   if (!(std::isfinite(value) && value > 0.0)) {
-    throw InputError(fmt::format("{} = {} is invalid: must be positive and finite", to_string(mode), value));
+    throw InputError(
+        fmt::format("{} = {} is invalid: must be positive and finite", to_string(mode), format_number(value)));
   }
+}
+
+void check_periodic_approach(double approach, double mean_initial_gap) {
+  if (approach < mean_initial_gap) return;
+  throw OptionError("approach", format_number(approach) + " m",
+                    fmt::format("is invalid for a periodic surface: it must be below the mean initial gap {} m (full "
+                                "contact needs infinite pressure there)",
+                                format_number(mean_initial_gap)));
 }
 
 }  // namespace halfspace::solvers

@@ -82,12 +82,7 @@ Problem make_problem(const InfluenceOperator& op, std::span<const double> initia
     // it cannot be negative: at mean(g0) the pressure is already infinite.
     const double mean_gap =
         linalg::sum(comm, n, [&](std::size_t i) { return initial_gap[i]; }) / static_cast<double>(grid.size());
-    if (problem.approach >= mean_gap) {
-      throw InputError(
-          fmt::format("approach = {} m is invalid for a periodic surface: it must be below the mean initial gap {} m "
-                      "(full contact needs infinite pressure there)",
-                      problem.approach, mean_gap));
-    }
+    check_periodic_approach(problem.approach, mean_gap);
   }
   return problem;
 }
@@ -707,7 +702,7 @@ class Iteration {
 
 void PolonskyKeerOptions::validate() const {
   if (!(tolerance > 0.0 && tolerance < 1.0)) {
-    throw InputError(fmt::format("tolerance = {} is invalid: allowed range is (0, 1)", tolerance));
+    throw InputError(fmt::format("tolerance = {} is invalid: allowed range is (0, 1)", format_number(tolerance)));
   }
   if (max_iterations < 1) {
     throw InputError(fmt::format("max_iterations = {} is invalid: must be at least 1", max_iterations));

@@ -21,16 +21,10 @@ constexpr std::array<std::pair<SolverType, std::string_view>, 5> kSolverNames{{
 }};
 
 std::string text(double value) {
-  return fmt::format("{}", value);
+  return format_number(value);
 }
 
 }  // namespace
-
-SolverOptionError::SolverOptionError(std::string option, std::string value, std::string rule)
-    : InputError(fmt::format("{} = {} {}", option, value, rule)),
-      option_(std::move(option)),
-      value_(std::move(value)),
-      rule_(std::move(rule)) {}
 
 std::string_view to_string(SolverType type) {
   for (const auto& [known, name] : kSolverNames) {

@@ -132,14 +132,19 @@ TEST(AdhesionCliTest, RefusesInconsistentAdhesionOptions) {
 // the option it replaces (no -inf force, no h0 of 5e-302 m), and a law whose
 // cohesive zone the grid cannot resolve is refused with the numbers.
 TEST(AdhesionCliTest, RefusesAdhesionParametersOutOfRange) {
+  // The rules are the library's (check_adhesion_law_ranges, which Python
+  // calls too), restated with the flags.
   expect_refused({"--adhesion", "md", "--work-of-adhesion", "1e300", "--adhesion-range", "1e-6"},
-                 "the adhesion stress w / range = 1e+306 Pa (--work-of-adhesion 1e300 with --adhesion-range 1e-6) is "
-                 "invalid: allowed range is",
+                 "--adhesion-range 1e-6 is invalid with the work of adhesion 1e+300 J/m^2: the adhesive stress work / "
+                 "range = 1e+306 Pa it gives must lie in [1e-09, 1e+13] Pa",
                  false);
-  expect_refused({"--adhesion-stress", "1e300"}, "--adhesion-stress 1e300 is invalid: allowed range is");
+  expect_refused({"--adhesion-stress", "1e300"},
+                 "--adhesion-stress 1e300 is invalid: allowed range is [1e-09, 1e+13] Pa");
   expect_refused({"--adhesion-stress", "1e13"},
-                 "the range h0 = w / sigma0 = 5e-15 m (--work-of-adhesion 0.05 with --adhesion-stress 1e13) is "
-                 "invalid: allowed range is");
+                 "--adhesion-stress 1e13 is invalid with the work of adhesion 0.05 J/m^2: the range h0 = work / stress "
+                 "= 5e-15 m it gives must lie in [1e-12, 1000] m");
+  expect_refused({"--adhesion", "md", "--work-of-adhesion", "-1", "--adhesion-range", "1e-6"},
+                 "--work-of-adhesion -1 is invalid: must be positive and finite", false);
   // 16 cells on 1 mm: cells of 62.5 um against a zone of pi E* w / (4 sigma0^2) = 1.6e-17 m.
   expect_refused({"--adhesion-range", "1e-12"},
                  "its cohesive zone at a contact edge, pi E* w / (4 sigma0^2) = 1.57e-17 m");

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -108,7 +109,7 @@ TEST(HardnessCliTest, RefusesBadValuesWithTheOptionAndTheRule) {
       {{"--hardness", "10"}, "--hardness 10 Pa is invalid: allowed range is 1000 to 1e+13 Pa"},
       {{"--hardness", "2e9", "--solver", "lemke"}, "does not apply to solver 'lemke'"},
       // 32 um x 32 um at 2e7 Pa carries 2.048e-05 N, less than the 0.1 N asked for.
-      {{"--hardness", "2e7"}, "--force 0.1: the load is infeasible with hardness = 20000000 Pa"},
+      {{"--hardness", "2e7"}, "--force 0.1: the load is infeasible with hardness = 2e+07 Pa"},
   };
   for (const Case& c : cases) {
     const ProgramRun run = run_program(sphere("bad.h5", c.extra), dir.path());
@@ -116,6 +117,23 @@ TEST(HardnessCliTest, RefusesBadValuesWithTheOptionAndTheRule) {
     EXPECT_NE(run.err.find(c.message), std::string::npos) << run.err;
     EXPECT_FALSE(fs::exists(dir / "bad.h5")) << c.message;
   }
+}
+
+// A sweep names the value the hardness cannot carry and prints six digits,
+// not the round trip of H times the area (issue 32: "1.3107199999999999 N").
+TEST(HardnessCliTest, InfeasibleSweepNamesTheValueWithSixDigits) {
+  const TempDir dir;
+  std::vector<std::string> arguments = sphere("bad.h5", {"--hardness", "1.28e8"});
+  const auto force = std::find(arguments.begin(), arguments.end(), "--force");
+  ASSERT_NE(force, arguments.end());
+  *(force + 1) = "0.01,0.2,0.1";  // 32 um x 32 um at 1.28e8 Pa carries 0.131072 N
+  const ProgramRun run = run_program(arguments, dir.path());
+  EXPECT_EQ(run.exit_code, kExitInputError);
+  EXPECT_NE(run.err.find("--force 0.01,0.2,0.1 (value 2: 0.2): the load is infeasible with hardness = 1.28e+08 Pa: "
+                         "the force 0.2 N exceeds the hardness times the domain area 1.024e-09 m^2 = 0.131072 N"),
+            std::string::npos)
+      << run.err;
+  EXPECT_FALSE(fs::exists(dir / "bad.h5"));
 }
 
 }  // namespace

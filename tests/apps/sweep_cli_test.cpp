@@ -179,7 +179,13 @@ TEST(SweepCliTest, RejectsBadLoadListsBeforeSolving) {
       {"--force", "1:2", "--force 1:2 is invalid: a range is START:STOP:COUNT"},
       {"--force", "1,2:3:4", "give a list A,B,C or a range START:STOP:COUNT, not both"},
       {"--force", "-1", "--force -1 is invalid: must be positive"},
-      {"--approach", "1e-7,2e-6", "approach = 2e-06 m is invalid for a periodic surface"},
+      // The flag as given, which value, six digits (issue 32).
+      {"--approach", "1e-7,2e-6",
+       "--approach 1e-7,2e-6 (value 2: 2e-06 m) is invalid for a periodic surface: it must be below the mean "
+       "initial gap 9.90393e-07 m"},
+      {"--approach", "2e-6",
+       "--approach 2e-6 is invalid for a periodic surface: it must be below the mean initial gap "
+       "9.90393e-07 m (full contact needs infinite pressure there)"},
   };
   for (const Case& c : cases) {
     const TempDir dir;

@@ -3,6 +3,7 @@
 // check that names the offending line.
 #include "halfspace/io/profile_reader.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -112,6 +113,35 @@ TEST(ProfileReaderTest, ReportsNonUniformSpacingWithTheLine) {
   const fs::path path = write_text(dir, "gap.txt", "x z\n0.0 1\n0.1 2\n0.2 3\n0.5 4\n0.6 5\n0.7 6\n");
   expect_contains(profile_error(path), {path.string(), "not uniformly spaced", "line 4 (x = 0.2) to line 5 (x = 0.5)",
                                         "the precision x is printed with"});
+}
+
+// One displaced x (line 12) moved the least-squares slope by more than the
+// printed precision, and the message blamed the first step, from line 2 to
+// 3 (issue 32); it must name line 12.
+TEST(ProfileReaderTest, NamesTheLineOfOneDisplacedX) {
+  const TempDir dir;
+  std::string text = "x z\n";
+  for (int k = 0; k < 30; ++k) text += fmt::format("{:.6f} {:.3f}\n", 0.5 * k + (k == 10 ? 0.2 : 0.0), 0.1 * k);
+  const fs::path path = write_text(dir, "displaced.txt", text);
+  const std::string message = profile_error(path);
+  expect_contains(message, {path.string(), "not uniformly spaced", "line 12 has x = 5.2", "after line 11 (x = 4.5)",
+                            "before line 13 (x = 5.5)", "step by 0.5 (the median step)"});
+  EXPECT_EQ(message.find("line 2 "), std::string::npos) << message;
+}
+
+// A space-separated header with units in brackets, as docs/usage.md shows
+// it ("x [um]", "z (nm)"), names two columns, and its units are honoured
+// (issue 32: "the header on line 1 names 4 columns but the data have 2").
+TEST(ProfileReaderTest, ReadsBracketedUnitsOfASpaceSeparatedHeader) {
+  const TempDir dir;
+  for (const char* header : {"x [um] z [nm]", "x (um) z (nm)", "x [um]\tz [nm]"}) {
+    SCOPED_TRACE(header);
+    const HeightMap map = read_profile(write_text(dir, "units.txt", std::string(header) + "\n0 1\n0.5 2\n1.0 3\n"));
+    EXPECT_EQ(map.nx, 3u);
+    EXPECT_NEAR(map.dx, 0.5e-6, 1e-21);
+    EXPECT_NEAR(map.heights[2], 3e-9, 1e-24);
+    expect_contains(map.source, {"x in um", "z in nm"});
+  }
 }
 
 TEST(ProfileReaderTest, AcceptsRoundingWithinThePrintedPrecision) {

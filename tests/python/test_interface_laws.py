@@ -49,6 +49,27 @@ def test_maugis_dugdale_holds_a_flat_surface_apart_at_the_dugdale_stress():
     assert record["adhesive_force"] < 0
 
 
+def test_adhesion_parameters_keep_the_programs_ranges():
+    # The ranges of halfspace solve (physical_ranges.hpp), given or derived:
+    # a stress w / range of 1e306 Pa ended "converged" with a force of -inf,
+    # and sigma0 = 1e300 Pa gave h0 = 5e-302 m (issue 32).
+    flat = np.zeros(64)
+    common = dict(dx=1e-6, e_star=E_STAR, approach=-1e-8, adhesion="md", fft_planning="estimate", threads=1)
+    with pytest.raises(hs.InputError, match=r"^adhesion_range=1e-06 m is invalid with the work of adhesion "
+                                            r"1e\+300 J/m\^2: the adhesive stress work / range = 1e\+306 Pa"):
+        hs.solve(flat, work_of_adhesion=1e300, adhesion_range=1e-6, **common)
+    with pytest.raises(hs.InputError, match=r"^adhesion_stress=1e\+300 Pa is invalid: allowed range is "
+                                            r"\[1e-09, 1e\+13\] Pa"):
+        hs.solve(flat, work_of_adhesion=0.05, adhesion_stress=1e300, **common)
+    with pytest.raises(hs.InputError, match=r"^adhesion_stress=1e\+13 Pa is invalid with the work of adhesion "
+                                            r"0.05 J/m\^2: the range h0 = work / stress = 5e-15 m"):
+        hs.solve(flat, work_of_adhesion=0.05, adhesion_stress=1e13, **common)
+    with pytest.raises(hs.InputError, match=r"^adhesion_range=1e-13 m is invalid: allowed range is"):
+        hs.solve(flat, work_of_adhesion=0.05, adhesion_range=1e-13, **common)
+    with pytest.raises(hs.InputError, match=r"^work_of_adhesion=-1 J/m\^2 is invalid"):
+        hs.solve(flat, work_of_adhesion=-1.0, adhesion_range=1e-8, **common)
+
+
 def test_adhesion_keywords_are_checked():
     flat = np.zeros(64)
     with pytest.raises(hs.InputError, match="need adhesion"):

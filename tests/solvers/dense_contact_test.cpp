@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <span>
 #include <string>
@@ -118,6 +119,45 @@ TEST(DenseContactTest, RefusesAnApproachBeyondTheMeanGapOfAPeriodicSurface) {
   } catch (const InputError& error) {
     EXPECT_NE(std::string(error.what()).find("below the mean initial gap"), std::string::npos) << error.what();
   }
+}
+
+// A dense method that reports "solved" for Lemke's answer plus a tiny
+// pressure (kStray of the total) on the cell farthest out of contact, its
+// w set to 0 as if its gap were closed: the contact residual (a p-weighted
+// mean over the cells) and the force barely notice, but one cell carries
+// pressure across an open gap.
+class StrayPressureLemke final : public solvers::DenseContactSolver {
+ public:
+  explicit StrayPressureLemke(const Grid& grid) : DenseContactSolver("stray-pressure", grid, kEStar, {}) {}
+  static constexpr double kStray = 1e-13;
+
+ private:
+  solvers::LcpSolution solve_lcp(const solvers::LcpProblem& problem) override {
+    solvers::LcpSolution solution = solvers::solve_lcp_lemke(problem);
+    Eigen::Index farthest = 0;
+    problem.offset.maxCoeff(&farthest);
+    solution.z[farthest] = kStray * solution.z.sum();
+    solution.w[farthest] = 0.0;
+    return solution;
+  }
+};
+
+// "Converged" on the dense path means the contact conditions hold, checked
+// apart from the contact residual (as for Polonsky-Keer): a method's false
+// "solved" becomes a breakdown naming the broken condition.
+TEST(DenseContactTest, ConvergedMeansTheIndependentCheckHolds) {
+  const Grid grid = Grid::line(kNodes, kLength / static_cast<double>(kNodes - 1), Boundary::free);
+  const Eigen::ArrayXd gap = field_from(grid, [&](double x, double) { return x * x / (2.0 * kRadius); });
+  StrayPressureLemke solver(grid);
+  const SolveResult result = solver.solve(std::span<const double>(gap.data(), kNodes), Loading::force(kLoad));
+  const double solver_tolerance = solvers::DenseContactOptions{}.tolerance;
+  std::printf("force error %.2e of the load; contact residual %.2e; status %s: %s\n",
+              std::abs(result.total_force - kLoad) / kLoad, result.residual,
+              std::string(to_string(result.status)).c_str(), result.message.c_str());
+  EXPECT_LE(result.residual, solver_tolerance) << "the fake must pass the contact residual to test the check";
+  EXPECT_EQ(result.status, SolveStatus::breakdown);
+  EXPECT_NE(result.message.find("independent check failed"), std::string::npos) << result.message;
+  EXPECT_NE(result.message.find("contact conditions fail by a gap"), std::string::npos) << result.message;
 }
 
 TEST(DenseContactTest, RefusesGridsTooLargeForADenseMatrix) {

@@ -32,6 +32,14 @@ struct Loading {
   void validate() const;
 };
 
+// Displacement control on a periodic grid: with a zero-mean displacement the
+// mean gap is mean_initial_gap - approach (m), and full contact needs an
+// infinite pressure, so the approach must stay below the mean initial gap.
+// Throws OptionError (option "approach", the value and the mean gap in the
+// message) otherwise. The one check and wording of every solver and sweep;
+// front ends restate it with their own name of the option.
+void check_periodic_approach(double approach, double mean_initial_gap);
+
 }  // namespace halfspace::solvers
 
 // The library, its writers and front ends name these without the folder's

@@ -40,22 +40,11 @@ std::vector<SolverType> solver_types();
 // so that fft_planning and deflation concern it.
 bool uses_fft(SolverType type);
 
-// A broken rule of SolverOptions. option() is the option as SolverOptions
-// spells it ("tolerance", "deflation.block", ...), value() its value as
-// text and rule() the rest of the sentence ("is invalid: allowed range is
-// (0, 1)"), so that a front end can restate it with its own spelling of the
-// option; what() is "option = value rule".
-class SolverOptionError : public InputError {
+// A broken rule of SolverOptions: an OptionError whose option() is the
+// option as SolverOptions spells it ("tolerance", "deflation.block", ...).
+class SolverOptionError : public OptionError {
  public:
-  SolverOptionError(std::string option, std::string value, std::string rule);
-  const std::string& option() const { return option_; }
-  const std::string& value() const { return value_; }
-  const std::string& rule() const { return rule_; }
-
- private:
-  std::string option_;
-  std::string value_;
-  std::string rule_;
+  using OptionError::OptionError;
 };
 
 // pk_multilevel's coarse-grid start.
