@@ -253,8 +253,7 @@ double elastic_film_residual(const Grid& grid, const FlowConditions& conditions,
 }
 
 ElasticFilm solve_elastic_film(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
-                               const LubricantLaws& laws, const ElasticFilmOptions& options,
-                               const ElasticFilm* start) {
+                               const LubricantLaws& laws, const ElasticFilmOptions& options, const ElasticFilm* start) {
   const auto started = std::chrono::steady_clock::now();
   const Grid& grid = op.grid();
   conditions.validate(grid);
@@ -371,7 +370,8 @@ ElasticFilm solve_elastic_film(InfluenceOperator& op, const Eigen::ArrayXd& gap,
         if (linearise_too) jacobian_t(kk, kk) = 1.0;
         continue;
       }
-      const double balance = linearise(topology, k, coefficients, state.pressure, state.theta, state.film, second_order, terms);
+      const double balance =
+          linearise(topology, k, coefficients, state.pressure, state.theta, state.film, second_order, terms);
       largest = std::max(largest, std::abs(balance));
       out[kk] = balance / mass_scale;
       if (!linearise_too) continue;
@@ -462,8 +462,8 @@ ElasticFilm solve_elastic_film(InfluenceOperator& op, const Eigen::ArrayXd& gap,
     // backtracking on the scaled residual's norm.
     const double largest_change = step.head(ni).cwiseAbs().maxCoeff();
     const double film_change = std::abs(step[ni]) / x.film.minCoeff();
-    double lambda = std::min({1.0, kLargestStep / std::max(largest_change, 1e-300),
-                              kLargestStep / std::max(film_change, 1e-300)});
+    double lambda =
+        std::min({1.0, kLargestStep / std::max(largest_change, 1e-300), kLargestStep / std::max(film_change, 1e-300)});
     bool accepted = false;
     Measure tried;
     for (int halving = 0; halving <= 30; ++halving, lambda *= 0.5) {
@@ -502,7 +502,8 @@ ElasticFilm solve_elastic_film(InfluenceOperator& op, const Eigen::ArrayXd& gap,
   result.max_pressure = x.pressure.maxCoeff();
   // The check apart from the iteration: the flux-form residual, the
   // complementarity and the load.
-  result.relative_residual = elastic_film_residual(grid, conditions, laws, x.film, x.pressure, x.theta, options.couette_scheme);
+  result.relative_residual =
+      elastic_film_residual(grid, conditions, laws, x.film, x.pressure, x.theta, options.couette_scheme);
   result.load_error = std::abs(result.load - w) / w;
   if (result.converged()) {
     if (!(result.relative_residual <= 10.0 * options.tolerance && result.load_error <= 10.0 * options.load_tolerance &&

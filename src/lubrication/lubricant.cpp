@@ -60,8 +60,8 @@ void LubricantLaws::validate(double ambient_viscosity) const {
       throw InputError("Roelands needs its index z > 0 or a pressure-viscosity coefficient alpha > 0 (1/Pa)");
     }
     if (!(std::log(ambient_viscosity) + kRoelandsLogViscosity > 0.0)) {
-      throw InputError(fmt::format(
-          "viscosity = {} Pa s is invalid for Roelands: it must exceed eta_inf = 6.31e-5 Pa s", ambient_viscosity));
+      throw InputError(fmt::format("viscosity = {} Pa s is invalid for Roelands: it must exceed eta_inf = 6.31e-5 Pa s",
+                                   ambient_viscosity));
     }
   }
 }

@@ -3,18 +3,19 @@
 // Hamrock & Dowson (1977), the Hertz limit at high load, the rigid
 // isoviscous limit (Martin 1916) at low load, grid convergence, and the
 // pressure laws.
+#include "halfspace/lubrication/elastic_film.hpp"
+
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <vector>
-#include <array>
 
-#include "support/analytic_solutions.hpp"
 #include "halfspace/error.hpp"
-#include "halfspace/lubrication/elastic_film.hpp"
 #include "halfspace/lubrication/cavitation_solver.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
+#include "support/analytic_solutions.hpp"
 
 namespace halfspace::lubrication {
 namespace {
@@ -33,13 +34,13 @@ struct LineContact {
   CouetteScheme scheme = CouetteScheme::first_order;
 };
 
-constexpr double kEStar = 1.1e11;  // Pa: steel on steel, E' = 2.2e11
-constexpr double kRadius = 0.01;   // m
+constexpr double kEStar = 1.1e11;    // Pa: steel on steel, E' = 2.2e11
+constexpr double kRadius = 0.01;     // m
 constexpr double kViscosity = 0.04;  // Pa s
 
 struct LineFilm {
   ElasticFilm film;
-  double half_width;  // Hertz b
+  double half_width;        // Hertz b
   double central, minimum;  // H = h / R
 };
 
@@ -257,8 +258,8 @@ TEST(ElasticFilmTest, ConvergedFilmHoldsTheConditions) {
   EXPECT_GT(f.film.iterations, 0);
   EXPECT_LE(f.film.iterations, 30);
   // The film is the offset, gap and deformation.
-  EXPECT_NEAR(f.film.film[0], f.film.offset + f.film.deformation[0] +
-                                  std::pow(c.inlet * f.half_width, 2) / (2.0 * kRadius),
+  EXPECT_NEAR(f.film.film[0],
+              f.film.offset + f.film.deformation[0] + std::pow(c.inlet * f.half_width, 2) / (2.0 * kRadius),
               1e-9 * f.film.film[0]);
 }
 
@@ -396,8 +397,9 @@ TEST(ElasticFilmTest, RejectsInvalidInput) {
     }
     return std::string("no error");
   };
-  EXPECT_NE(message([] { LubricantLaws{.piezoviscosity = Piezoviscosity::barus}.validate(0.04); })
-                .find("pressure-viscosity coefficient"),
+  EXPECT_NE(message([] {
+              LubricantLaws{.piezoviscosity = Piezoviscosity::barus}.validate(0.04);
+            }).find("pressure-viscosity coefficient"),
             std::string::npos);
   EXPECT_NE(message([] { LubricantLaws{.pressure_viscosity = -1.0}.validate(0.04); }).find("pressure-viscosity"),
             std::string::npos);
@@ -424,12 +426,14 @@ TEST(ElasticFilmTest, RejectsInvalidInput) {
   const Grid line = Grid::line(20, 1e-6, Boundary::free);
   FftInfluenceOperator line_op(line, kEStar);
   conditions.entrainment_velocity = {0.0, 0.0};
-  EXPECT_NE(message([&] { solve_elastic_film(line_op, Eigen::ArrayXd::Zero(20), conditions, {}, {.load = 1.0}); })
-                .find("entrainment"),
+  EXPECT_NE(message([&] {
+              solve_elastic_film(line_op, Eigen::ArrayXd::Zero(20), conditions, {}, {.load = 1.0});
+            }).find("entrainment"),
             std::string::npos);
   conditions.entrainment_velocity = {1.0, 0.0};
-  EXPECT_NE(message([&] { solve_elastic_film(line_op, Eigen::ArrayXd::Zero(19), conditions, {}, {.load = 1.0}); })
-                .find("gap has 19 values"),
+  EXPECT_NE(message([&] {
+              solve_elastic_film(line_op, Eigen::ArrayXd::Zero(19), conditions, {}, {.load = 1.0});
+            }).find("gap has 19 values"),
             std::string::npos);
 }
 

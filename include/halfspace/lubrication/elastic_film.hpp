@@ -106,7 +106,6 @@ ElasticFilm solve_elastic_film(InfluenceOperator& op, const Eigen::ArrayXd& gap,
 // the largest Couette outflow (the check solve_elastic_film makes).
 double elastic_film_residual(const Grid& grid, const FlowConditions& conditions, const LubricantLaws& laws,
                              const Eigen::ArrayXd& film, const Eigen::ArrayXd& pressure,
-                             const Eigen::ArrayXd& fluid_fraction,
-                             CouetteScheme scheme = CouetteScheme::first_order);
+                             const Eigen::ArrayXd& fluid_fraction, CouetteScheme scheme = CouetteScheme::first_order);
 
 }  // namespace halfspace::lubrication

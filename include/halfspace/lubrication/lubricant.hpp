@@ -25,7 +25,7 @@ std::string_view to_string(Compressibility law);
 Piezoviscosity parse_piezoviscosity(std::string_view text);
 Compressibility parse_compressibility(std::string_view text);
 
-inline constexpr double kRoelandsPressure = 1.96e8;  // Pa, p0
+inline constexpr double kRoelandsPressure = 1.96e8;    // Pa, p0
 inline constexpr double kRoelandsLogViscosity = 9.67;  // -ln(eta_inf / (1 Pa s)), eta_inf = 6.31e-5 Pa s
 
 struct LubricantLaws {
