@@ -61,12 +61,18 @@ void ElasticFilmOptions::validate() const {
 
 namespace {
 
-// The first film tried over the dry contact, in units of the gap at the dry
-// contact's edge.
-constexpr double kStartFilm = 0.5;
+// The start's film over the dry contact, in units of the gap at the dry
+// contact's edge: a thick start converges in fewer steps and where a thin
+// one (0.5) stalls at low loads (bench/ehl/ehl_validation.cpp).
+constexpr double kStartFilm = 8.0;
 // The trust region of a Newton step, in units of the pressure scale (the
 // dry contact's peak) and of the thinnest film.
 constexpr double kLargestStep = 0.5;
+// Nodes within this of the switch s = 0 take the branch their step goes
+// into; the passes that may take.
+constexpr double kSwitchBand = 1e-9;
+constexpr int kBranchPasses = 4;
+constexpr std::size_t kNonMonotoneWindow = 1;
 
 // The nodes' pressure-dependent coefficients for a film: rho / rho0, eps =
 // rho h^3 / (12 eta) and their derivatives.
@@ -344,6 +350,7 @@ ElasticFilm solve_elastic_film(InfluenceOperator& op, const Eigen::ArrayXd& gap,
   Eigen::VectorXd residual(ni + 1), step(ni + 1);
   Eigen::MatrixXd jacobian_t(ni + 1, ni + 1);  // J transposed: row k's derivatives in column k
   Eigen::PartialPivLU<Eigen::MatrixXd> lu(ni + 1);
+  std::vector<char> branch_full(n, 1);
   double mass_scale = 1.0;
 
   // The scaled residual (mass rows over mass_scale, the load row over w)
@@ -395,7 +402,7 @@ ElasticFilm solve_elastic_film(InfluenceOperator& op, const Eigen::ArrayXd& gap,
       for (std::size_t j = 0; j < n; ++j) {
         const auto jj = static_cast<Eigen::Index>(j);
         const bool fixed = topology.fixed(j);
-        const bool full = !fixed && state.s[jj] >= 0.0;
+        const bool full = !fixed && branch_full[j] != 0;
         if (fixed) {
           jacobian_t.row(jj).setZero();
           jacobian_t(jj, jj) = 1.0;
@@ -409,7 +416,7 @@ ElasticFilm solve_elastic_film(InfluenceOperator& op, const Eigen::ArrayXd& gap,
         linearise(topology, k, coefficients, state.pressure, state.theta, state.film, second_order, terms);
         for (const LocalTerm& t : terms) {
           const auto node = static_cast<Eigen::Index>(t.node);
-          if (!topology.fixed(t.node) && state.s[node] < 0.0) {
+          if (!topology.fixed(t.node) && branch_full[t.node] == 0) {
             jacobian_t(node, static_cast<Eigen::Index>(k)) += t.by_fraction / mass_scale;
           }
         }
@@ -430,6 +437,8 @@ ElasticFilm solve_elastic_film(InfluenceOperator& op, const Eigen::ArrayXd& gap,
   State trial = x;
   Eigen::VectorXd trial_residual(ni + 1);
   Measure current = measure(x, residual, false);
+  std::array<double, kNonMonotoneWindow> recent;
+  recent.fill(current.norm);
   for (int iteration = 0;; ++iteration) {
     result.iterations = iteration;
     if (current.mass <= options.tolerance && current.load <= options.load_tolerance) {
@@ -449,10 +458,34 @@ ElasticFilm solve_elastic_film(InfluenceOperator& op, const Eigen::ArrayXd& gap,
           iteration, current.mass, options.tolerance, current.load, options.load_tolerance);
       break;
     }
-    measure(x, residual, true);
-    lu.compute(jacobian_t.transpose());
-    step = lu.solve(-residual);
-    if (!step.allFinite()) {
+    // The generalised Jacobian's branch per node: full where s > 0,
+    // cavitated where s < 0; a node at the switch (s = 0 to rounding, as
+    // the start's unloaded nodes and an inlet's vanishing pressures) takes
+    // the branch the step moves it into, found by re-solving (semi-smooth
+    // Newton with the directional derivative; Qi & Sun 1993).
+    for (std::size_t j = 0; j < n; ++j) branch_full[j] = x.s[static_cast<Eigen::Index>(j)] >= 0.0 ? 1 : 0;
+    bool singular = false;
+    for (int pass = 0; pass < kBranchPasses; ++pass) {
+      measure(x, residual, true);
+      lu.compute(jacobian_t.transpose());
+      step = lu.solve(-residual);
+      if (!step.allFinite()) {
+        singular = true;
+        break;
+      }
+      bool flipped = false;
+      for (std::size_t j = 0; j < n; ++j) {
+        const auto jj = static_cast<Eigen::Index>(j);
+        if (topology.fixed(j) || std::abs(x.s[jj]) > kSwitchBand) continue;
+        const char wanted = step[jj] >= 0.0 ? 1 : 0;
+        if (wanted != branch_full[j]) {
+          branch_full[j] = wanted;
+          flipped = true;
+        }
+      }
+      if (!flipped) break;
+    }
+    if (singular) {
       result.status = FilmStatus::failure;
       result.message = fmt::format("the EHL Newton step {} is singular", iteration + 1);
       break;
@@ -466,12 +499,16 @@ ElasticFilm solve_elastic_film(InfluenceOperator& op, const Eigen::ArrayXd& gap,
         std::min({1.0, kLargestStep / std::max(largest_change, 1e-300), kLargestStep / std::max(film_change, 1e-300)});
     bool accepted = false;
     Measure tried;
+    // Non-monotone (Grippo, Lampariello & Lucidi 1986): against the largest
+    // of the last few norms, so a step across switches may raise the norm
+    // for a while.
+    const double reference = *std::max_element(recent.begin(), recent.end());
     for (int halving = 0; halving <= 30; ++halving, lambda *= 0.5) {
       trial.s = x.s + lambda * step.head(ni).array();
       trial.offset = x.offset + lambda * step[ni];
       if (!evaluate(trial)) continue;
       tried = measure(trial, trial_residual, false);
-      if (std::isfinite(tried.norm) && tried.norm <= (1.0 - 1e-4 * lambda) * current.norm) {
+      if (std::isfinite(tried.norm) && tried.norm <= (1.0 - 1e-4 * lambda) * reference) {
         accepted = true;
         break;
       }
@@ -487,6 +524,7 @@ ElasticFilm solve_elastic_film(InfluenceOperator& op, const Eigen::ArrayXd& gap,
     }
     std::swap(x, trial);
     current = tried;
+    recent[static_cast<std::size_t>(iteration + 1) % recent.size()] = current.norm;
   }
 
   result.pressure = x.pressure;

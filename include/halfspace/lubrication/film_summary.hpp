@@ -9,9 +9,9 @@
 namespace halfspace::lubrication {
 
 struct FilmSummary {
-  std::string model;      // "rigid" or "elastic"
-  std::string status;     // FilmStatus as text
-  std::string message;    // why it did not converge; empty when converged
+  std::string model;           // "rigid" or "elastic"
+  std::string status;          // FilmStatus as text
+  std::string message;         // why it did not converge; empty when converged
   double load = 0.0;           // N (N/m on a profile)
   double mean_pressure = 0.0;  // Pa
   // Rigid: the separation (the minimum film); elastic: h0, the offset of
