@@ -86,7 +86,7 @@ const std::array kOptions{
     LubricateOption{"periodic-y", &LubricateOptions::periodic_y, Kind::flag, kFilm, "",
                     "the film repeats along y instead of having fixed side pressures"},
     LubricateOption{"tolerance", &LubricateOptions::tolerance, Kind::number, kFilm, "TOL",
-                    "relative mass residual at convergence [1e-11]"},
+                    "relative mass residual at convergence [1e-11; 1e-8 for an elastic film]"},
     LubricateOption{"E-star", &LubricateOptions::e_star, Kind::number, kElastic, "PA",
                     "composite modulus E* (Pa): the film is elastic (EHL) and needs --force; or E1, nu1, E2, nu2"},
     LubricateOption{"E1", &LubricateOptions::e1, Kind::number, kElastic, "PA", "Young's modulus of body 1 (Pa)"},

@@ -95,10 +95,14 @@ int main(int argc, char** argv) {
   fmt::print("# line contact vs Pan & Hamrock 1989 (Roelands, Dowson-Higginson; x in [-4.5b, 1.5b])\n");
   fmt::print("{:>8} {:>8} {:>6} {:>6} {:>13} {:>8} {:>8} {:>6} {:>8}\n", "W", "U", "G", "cells", "scheme", "Hc/PH",
              "Hmin/PH", "steps", "seconds");
-  const std::vector<double> loads = low ? std::vector<double>{1e-5} : quick ? std::vector<double>{2e-5, 1e-4} : std::vector<double>{1e-5, 2e-5, 5e-5, 1e-4, 2e-4};
+  const std::vector<double> loads = low     ? std::vector<double>{1e-5}
+                                    : quick ? std::vector<double>{2e-5, 1e-4}
+                                            : std::vector<double>{1e-5, 2e-5, 5e-5, 1e-4, 2e-4};
   const std::vector<double> speeds = quick ? std::vector<double>{1e-11} : std::vector<double>{1e-11, 3e-11};
   const std::vector<double> materials = quick ? std::vector<double>{5000} : std::vector<double>{2500, 5000};
-  const std::vector<double> grids = low ? std::vector<double>{32, 128} : quick ? std::vector<double>{32} : std::vector<double>{16, 32, 64, 128};
+  const std::vector<double> grids = low     ? std::vector<double>{32, 128}
+                                    : quick ? std::vector<double>{32}
+                                            : std::vector<double>{16, 32, 64, 128};
   for (double w : loads) {
     for (double u : speeds) {
       for (double g : materials) {
@@ -125,13 +129,15 @@ int main(int argc, char** argv) {
     const double u = 1e-11, g = 5000;
     const double hd_central =
         2.69 * std::pow(u, 0.67) * std::pow(g, 0.53) * std::pow(w, -0.067) * (1.0 - 0.61 * std::exp(-0.73));
-    const double hd_minimum = 3.63 * std::pow(u, 0.68) * std::pow(g, 0.49) * std::pow(w, -0.073) * (1.0 - std::exp(-0.68));
+    const double hd_minimum =
+        3.63 * std::pow(u, 0.68) * std::pow(g, 0.49) * std::pow(w, -0.073) * (1.0 - std::exp(-0.68));
     for (double cells : point_grids) {
       for (CouetteScheme scheme : {CouetteScheme::first_order, CouetteScheme::second_order}) {
         const Film f = point(w, u, g, cells, scheme);
         fmt::print("{:8.1e} {:8.1e} {:6.0f} {:6.0f} {:8d} {:>13} {:8.4f} {:8.4f} {:6d} {:8.3f}{}\n", w, u, g, cells,
                    f.film.pressure.size(), to_string(scheme), f.central / hd_central, f.minimum / hd_minimum,
-                   f.film.iterations, f.film.wall_seconds, f.film.converged() ? "" : fmt::format("  {}", f.film.message));
+                   f.film.iterations, f.film.wall_seconds,
+                   f.film.converged() ? "" : fmt::format("  {}", f.film.message));
       }
     }
   }

@@ -72,7 +72,6 @@ constexpr double kLargestStep = 0.5;
 // into; the passes that may take.
 constexpr double kSwitchBand = 1e-9;
 constexpr int kBranchPasses = 4;
-constexpr std::size_t kNonMonotoneWindow = 1;
 
 // The nodes' pressure-dependent coefficients for a film: rho / rho0, eps =
 // rho h^3 / (12 eta) and their derivatives.
@@ -437,8 +436,6 @@ ElasticFilm solve_elastic_film(InfluenceOperator& op, const Eigen::ArrayXd& gap,
   State trial = x;
   Eigen::VectorXd trial_residual(ni + 1);
   Measure current = measure(x, residual, false);
-  std::array<double, kNonMonotoneWindow> recent;
-  recent.fill(current.norm);
   for (int iteration = 0;; ++iteration) {
     result.iterations = iteration;
     if (current.mass <= options.tolerance && current.load <= options.load_tolerance) {
@@ -499,16 +496,12 @@ ElasticFilm solve_elastic_film(InfluenceOperator& op, const Eigen::ArrayXd& gap,
         std::min({1.0, kLargestStep / std::max(largest_change, 1e-300), kLargestStep / std::max(film_change, 1e-300)});
     bool accepted = false;
     Measure tried;
-    // Non-monotone (Grippo, Lampariello & Lucidi 1986): against the largest
-    // of the last few norms, so a step across switches may raise the norm
-    // for a while.
-    const double reference = *std::max_element(recent.begin(), recent.end());
     for (int halving = 0; halving <= 30; ++halving, lambda *= 0.5) {
       trial.s = x.s + lambda * step.head(ni).array();
       trial.offset = x.offset + lambda * step[ni];
       if (!evaluate(trial)) continue;
       tried = measure(trial, trial_residual, false);
-      if (std::isfinite(tried.norm) && tried.norm <= (1.0 - 1e-4 * lambda) * reference) {
+      if (std::isfinite(tried.norm) && tried.norm <= (1.0 - 1e-4 * lambda) * current.norm) {
         accepted = true;
         break;
       }
@@ -524,7 +517,6 @@ ElasticFilm solve_elastic_film(InfluenceOperator& op, const Eigen::ArrayXd& gap,
     }
     std::swap(x, trial);
     current = tried;
-    recent[static_cast<std::size_t>(iteration + 1) % recent.size()] = current.norm;
   }
 
   result.pressure = x.pressure;
