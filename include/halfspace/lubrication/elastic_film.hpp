@@ -34,8 +34,9 @@
 
 namespace halfspace::lubrication {
 
-// Nodes up to which the dense Newton path is allowed (its Jacobian is n x n).
-inline constexpr std::size_t kMaxElasticFilmNodes = 6000;
+// Nodes up to which the dense Newton path is allowed: its Jacobian, its LU
+// and K are n x n each (3 x 134 MB at the limit).
+inline constexpr std::size_t kMaxElasticFilmNodes = 4096;
 
 // How the Couette (wedge) flux U rho h theta of a face is taken from
 // upstream: from the upstream node (first order: monotone, robust at any
