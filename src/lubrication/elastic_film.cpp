@@ -61,10 +61,12 @@ void ElasticFilmOptions::validate() const {
 
 namespace {
 
-// The start's film over the dry contact, in units of the gap at the dry
-// contact's edge: a thick start converges in fewer steps and where a thin
-// one (0.5) stalls at low loads (bench/ehl/ehl_validation.cpp).
-constexpr double kStartFilm = 8.0;
+// The start's films over the dry contact, in units of the gap at the dry
+// contact's edge, tried in turn while the Newton iteration fails: a thin
+// one converges fastest at high loads, where a thick one takes up to 5x
+// the steps; at low loads the thin one may stall and the thick one
+// converges (bench/ehl/ehl_validation.cpp).
+constexpr std::array<double, 2> kStartFilms{0.5, 8.0};
 // The trust region of a Newton step, in units of the pressure scale (the
 // dry contact's peak) and of the thinnest film.
 constexpr double kLargestStep = 0.5;
@@ -288,8 +290,10 @@ ElasticFilm solve_elastic_film(InfluenceOperator& op, const Eigen::ArrayXd& gap,
   ElasticFilm result;
   State x;
   // The start: a previous film, or the dry contact at the load with a film
-  // of a tenth of its approach laid over it (Newton then finds h0).
+  // laid over it (Newton then finds h0).
   double pressure_scale = 0.0;
+  double dry_offset = 0.0, edge_gap = 0.0;
+  const bool dry_start = !(start != nullptr && start->pressure.size() == ni && start->fluid_fraction.size() == ni);
   if (start != nullptr && start->pressure.size() == ni && start->fluid_fraction.size() == ni) {
     pressure_scale = std::max(start->max_pressure, w / grid.domain_area());
     x.pressure = start->pressure;
@@ -307,12 +311,12 @@ ElasticFilm solve_elastic_film(InfluenceOperator& op, const Eigen::ArrayXd& gap,
     x.theta = Eigen::ArrayXd::Ones(ni);
     // The undeformed gap at the dry contact's edge (b^2 / 2R for a
     // cylinder or sphere) sets the scale of the elastic film.
-    double edge_gap = 0.0;
     for (Eigen::Index k = 0; k < ni; ++k) {
       if (contact.pressure[k] > 0.0) edge_gap = std::max(edge_gap, gap[k]);
     }
     if (!(edge_gap > 0.0)) edge_gap = std::max(gap.maxCoeff(), 1e-9);
-    x.offset = -contact.approach + kStartFilm * edge_gap;
+    dry_offset = -contact.approach;
+    x.offset = dry_offset + kStartFilms[0] * edge_gap;
   }
   x.s.resize(ni);
   for (Eigen::Index k = 0; k < ni; ++k) {
@@ -425,98 +429,112 @@ ElasticFilm solve_elastic_film(InfluenceOperator& op, const Eigen::ArrayXd& gap,
   };
 
   // The mass rows' scale: the largest Couette outflow of the start.
-  {
+  const auto scale_masses = [&]() {
     double couette = 0.0;
     for (std::size_t k = 0; k < n; ++k) {
       if (!topology.fixed(k)) couette = std::max(couette, (topology.couette_x() + topology.couette_y()) * x.film[k]);
     }
     mass_scale = couette;
-  }
+  };
+  scale_masses();
 
+  const State initial = x;
   State trial = x;
   Eigen::VectorXd trial_residual(ni + 1);
-  Measure current = measure(x, residual, false);
-  for (int iteration = 0;; ++iteration) {
-    result.iterations = iteration;
-    if (current.mass <= options.tolerance && current.load <= options.load_tolerance) {
-      result.status = FilmStatus::converged;
-      break;
-    }
-    if (!std::isfinite(current.norm)) {
-      result.status = FilmStatus::failure;
-      result.message = fmt::format("the EHL Newton iteration diverged after {} steps", iteration);
-      break;
-    }
-    if (iteration == options.max_iterations) {
-      result.status = FilmStatus::iteration_limit;
-      result.message = fmt::format(
-          "the EHL film did not converge in {} Newton steps: relative mass residual {:.3g} (tolerance {:.3g}), "
-          "load error {:.3g} (tolerance {:.3g})",
-          iteration, current.mass, options.tolerance, current.load, options.load_tolerance);
-      break;
-    }
-    // The generalised Jacobian's branch per node: full where s > 0,
-    // cavitated where s < 0; a node at the switch (s = 0 to rounding, as
-    // the start's unloaded nodes and an inlet's vanishing pressures) takes
-    // the branch the step moves it into, found by re-solving (semi-smooth
-    // Newton with the directional derivative; Qi & Sun 1993).
-    for (std::size_t j = 0; j < n; ++j) branch_full[j] = x.s[static_cast<Eigen::Index>(j)] >= 0.0 ? 1 : 0;
-    bool singular = false;
-    for (int pass = 0; pass < kBranchPasses; ++pass) {
-      measure(x, residual, true);
-      lu.compute(jacobian_t.transpose());
-      step = lu.solve(-residual);
-      if (!step.allFinite()) {
-        singular = true;
+  int steps_before = 0;  // Newton steps of failed starts
+  for (std::size_t attempt = 0;; ++attempt) {
+    Measure current = measure(x, residual, false);
+    for (int iteration = 0;; ++iteration) {
+      result.iterations = steps_before + iteration;
+      if (current.mass <= options.tolerance && current.load <= options.load_tolerance) {
+        result.status = FilmStatus::converged;
         break;
       }
-      bool flipped = false;
-      for (std::size_t j = 0; j < n; ++j) {
-        const auto jj = static_cast<Eigen::Index>(j);
-        if (topology.fixed(j) || std::abs(x.s[jj]) > kSwitchBand) continue;
-        const char wanted = step[jj] >= 0.0 ? 1 : 0;
-        if (wanted != branch_full[j]) {
-          branch_full[j] = wanted;
-          flipped = true;
+      if (!std::isfinite(current.norm)) {
+        result.status = FilmStatus::failure;
+        result.message = fmt::format("the EHL Newton iteration diverged after {} steps", iteration);
+        break;
+      }
+      if (steps_before + iteration == options.max_iterations) {
+        result.status = FilmStatus::iteration_limit;
+        result.message = fmt::format(
+            "the EHL film did not converge in {} Newton steps: relative mass residual {:.3g} (tolerance {:.3g}), "
+            "load error {:.3g} (tolerance {:.3g})",
+            steps_before + iteration, current.mass, options.tolerance, current.load, options.load_tolerance);
+        break;
+      }
+      // The generalised Jacobian's branch per node: full where s > 0,
+      // cavitated where s < 0; a node at the switch (s = 0 to rounding, as
+      // the start's unloaded nodes and an inlet's vanishing pressures) takes
+      // the branch the step moves it into, found by re-solving (semi-smooth
+      // Newton with the directional derivative; Qi & Sun 1993).
+      for (std::size_t j = 0; j < n; ++j) branch_full[j] = x.s[static_cast<Eigen::Index>(j)] >= 0.0 ? 1 : 0;
+      bool singular = false;
+      for (int pass = 0; pass < kBranchPasses; ++pass) {
+        measure(x, residual, true);
+        lu.compute(jacobian_t.transpose());
+        step = lu.solve(-residual);
+        if (!step.allFinite()) {
+          singular = true;
+          break;
         }
+        bool flipped = false;
+        for (std::size_t j = 0; j < n; ++j) {
+          const auto jj = static_cast<Eigen::Index>(j);
+          if (topology.fixed(j) || std::abs(x.s[jj]) > kSwitchBand) continue;
+          const char wanted = step[jj] >= 0.0 ? 1 : 0;
+          if (wanted != branch_full[j]) {
+            branch_full[j] = wanted;
+            flipped = true;
+          }
+        }
+        if (!flipped) break;
       }
-      if (!flipped) break;
-    }
-    if (singular) {
-      result.status = FilmStatus::failure;
-      result.message = fmt::format("the EHL Newton step {} is singular", iteration + 1);
-      break;
-    }
-    // A trust region on the step: no pressure changes by more than the
-    // pressure scale, h0 by no more than the thinnest film. Then
-    // backtracking on the scaled residual's norm.
-    const double largest_change = step.head(ni).cwiseAbs().maxCoeff();
-    const double film_change = std::abs(step[ni]) / x.film.minCoeff();
-    double lambda =
-        std::min({1.0, kLargestStep / std::max(largest_change, 1e-300), kLargestStep / std::max(film_change, 1e-300)});
-    bool accepted = false;
-    Measure tried;
-    for (int halving = 0; halving <= 30; ++halving, lambda *= 0.5) {
-      trial.s = x.s + lambda * step.head(ni).array();
-      trial.offset = x.offset + lambda * step[ni];
-      if (!evaluate(trial)) continue;
-      tried = measure(trial, trial_residual, false);
-      if (std::isfinite(tried.norm) && tried.norm <= (1.0 - 1e-4 * lambda) * current.norm) {
-        accepted = true;
+      if (singular) {
+        result.status = FilmStatus::failure;
+        result.message = fmt::format("the EHL Newton step {} is singular", iteration + 1);
         break;
       }
-      ++result.line_search_halvings;
+      // A trust region on the step: no pressure changes by more than the
+      // pressure scale, h0 by no more than the thinnest film. Then
+      // backtracking on the scaled residual's norm.
+      const double largest_change = step.head(ni).cwiseAbs().maxCoeff();
+      const double film_change = std::abs(step[ni]) / x.film.minCoeff();
+      double lambda = std::min(
+          {1.0, kLargestStep / std::max(largest_change, 1e-300), kLargestStep / std::max(film_change, 1e-300)});
+      bool accepted = false;
+      Measure tried;
+      for (int halving = 0; halving <= 30; ++halving, lambda *= 0.5) {
+        trial.s = x.s + lambda * step.head(ni).array();
+        trial.offset = x.offset + lambda * step[ni];
+        if (!evaluate(trial)) continue;
+        tried = measure(trial, trial_residual, false);
+        if (std::isfinite(tried.norm) && tried.norm <= (1.0 - 1e-4 * lambda) * current.norm) {
+          accepted = true;
+          break;
+        }
+        ++result.line_search_halvings;
+      }
+      if (!accepted) {
+        result.status = FilmStatus::failure;
+        result.message = fmt::format(
+            "the EHL Newton iteration stalled at step {}: no step along the Newton direction lowers the residual "
+            "(relative mass residual {:.3g}, load error {:.3g})",
+            iteration + 1, current.mass, current.load);
+        break;
+      }
+      std::swap(x, trial);
+      current = tried;
     }
-    if (!accepted) {
-      result.status = FilmStatus::failure;
-      result.message = fmt::format(
-          "the EHL Newton iteration stalled at step {}: no step along the Newton direction lowers the residual "
-          "(relative mass residual {:.3g}, load error {:.3g})",
-          iteration + 1, current.mass, current.load);
-      break;
-    }
-    std::swap(x, trial);
-    current = tried;
+    if (result.status != FilmStatus::failure || !dry_start || attempt + 1 == kStartFilms.size()) break;
+    // A failed dry start: again from the next start film.
+    steps_before = result.iterations;
+    x = initial;
+    x.offset = dry_offset + kStartFilms[attempt + 1] * edge_gap;
+    if (!evaluate(x)) break;
+    scale_masses();
+    result.status = FilmStatus::failure;
+    result.message.clear();
   }
 
   result.pressure = x.pressure;
