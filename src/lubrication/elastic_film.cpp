@@ -455,6 +455,11 @@ ElasticFilm solve_elastic_film(InfluenceOperator& op, const Eigen::ArrayXd& gap,
         result.message = fmt::format("the EHL Newton iteration diverged after {} steps", iteration);
         break;
       }
+      if (dry_start && attempt + 1 < kStartFilms.size() && iteration > 0 && iteration == options.max_iterations / 2) {
+        // The thin start has used half the steps: leave the rest to the next.
+        result.status = FilmStatus::failure;
+        break;
+      }
       if (steps_before + iteration == options.max_iterations) {
         result.status = FilmStatus::iteration_limit;
         result.message = fmt::format(
