@@ -294,7 +294,7 @@ ElasticFilm solve_elastic_film(InfluenceOperator& op, const Eigen::ArrayXd& gap,
   double pressure_scale = 0.0;
   double dry_offset = 0.0, edge_gap = 0.0;
   const bool dry_start = !(start != nullptr && start->pressure.size() == ni && start->fluid_fraction.size() == ni);
-  if (start != nullptr && start->pressure.size() == ni && start->fluid_fraction.size() == ni) {
+  if (!dry_start) {
     pressure_scale = std::max(start->max_pressure, w / grid.domain_area());
     x.pressure = start->pressure;
     x.theta = start->fluid_fraction;

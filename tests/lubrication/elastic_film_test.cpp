@@ -276,6 +276,33 @@ TEST(ElasticFilmTest, ConvergedFilmHoldsTheConditions) {
               1e-9 * f.film.film[0]);
 }
 
+// A previous film warm-starts the next load's: the same film as from the
+// dry start, in fewer Newton steps.
+TEST(ElasticFilmTest, WarmStartFromAPreviousFilm) {
+  const std::size_t n = 161;
+  const double dx = 1e-6;
+  const Grid grid = Grid::line(n, dx, Boundary::free);
+  Eigen::ArrayXd gap(static_cast<Eigen::Index>(n));
+  for (std::size_t i = 0; i < n; ++i)
+    gap[static_cast<Eigen::Index>(i)] = std::pow((i - 110.0) * dx, 2) / (2.0 * kRadius);
+  FlowConditions conditions;
+  conditions.viscosity = kViscosity;
+  conditions.entrainment_velocity = {0.5, 0.0};
+  const LubricantLaws laws{.piezoviscosity = Piezoviscosity::barus,
+                           .pressure_viscosity = 2e-8,
+                           .compressibility = Compressibility::dowson_higginson};
+  FftInfluenceOperator op(grid, kEStar);
+  const ElasticFilm first = solve_elastic_film(op, gap, conditions, laws, {.load = 1.0e4});
+  ASSERT_TRUE(first.converged()) << first.message;
+  const ElasticFilm cold = solve_elastic_film(op, gap, conditions, laws, {.load = 1.1e4});
+  const ElasticFilm warm = solve_elastic_film(op, gap, conditions, laws, {.load = 1.1e4}, &first);
+  ASSERT_TRUE(cold.converged()) << cold.message;
+  ASSERT_TRUE(warm.converged()) << warm.message;
+  EXPECT_LT(warm.iterations, cold.iterations);
+  EXPECT_NEAR(warm.central_film_thickness / cold.central_film_thickness, 1.0, 1e-6);
+  EXPECT_NEAR(warm.minimum_film_thickness / cold.minimum_film_thickness, 1.0, 1e-6);
+}
+
 TEST(ElasticFilmTest, IterationLimitIsReported) {
   const Grid grid = Grid::line(97, 1e-6, Boundary::free);
   Eigen::ArrayXd gap(97);
