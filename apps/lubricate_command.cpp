@@ -1,13 +1,16 @@
 // The lubricate command: height map -> film at a separation (or the
 // separation carrying a force) -> pressure, film and fluid fraction in an
-// HDF5 file. Flags map onto lubrication::FlowConditions,
-// CavitationSolverOptions and LoadControlOptions, whose validate() holds the
-// rules.
+// HDF5 file; with a material (--E-star or E1, nu1, E2, nu2) the film is
+// elastohydrodynamic (elastic_film.hpp) under the force. Flags map onto
+// lubrication::FlowConditions, CavitationSolverOptions, LoadControlOptions,
+// LubricantLaws and ElasticFilmOptions, whose validate() holds the rules.
 #include "lubricate_command.hpp"
 
 #include <fmt/format.h>
 
 #include <array>
+#include <chrono>
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -18,7 +21,11 @@
 #include "halfspace/io/hdf5_output.hpp"
 #include "halfspace/io/height_map_reader.hpp"
 #include "halfspace/io/output_file.hpp"
+#include "halfspace/io/result_attributes.hpp"
+#include "halfspace/lubrication/elastic_film.hpp"
 #include "halfspace/lubrication/load_control.hpp"
+#include "halfspace/material.hpp"
+#include "halfspace/operators/fft_influence_operator.hpp"
 #include "halfspace/version.hpp"
 #include "option_table.hpp"
 
@@ -37,6 +44,16 @@ struct LubricateOptions : GivenOptions {
   std::optional<double> side_pressure;
   bool periodic_y = false;
   std::optional<double> tolerance;
+  // Elastic film (EHL).
+  std::optional<double> e_star;
+  std::optional<double> e1, nu1, e2, nu2;
+  std::optional<std::string> boundary;
+  std::optional<double> pressure_viscosity;
+  std::optional<std::string> piezoviscosity;
+  std::optional<double> roelands_index;
+  std::optional<std::string> compressibility;
+  std::optional<std::string> couette_scheme;
+  std::optional<long long> max_iterations;
   std::optional<std::string> output;
   bool quiet = false;
 };
@@ -44,6 +61,7 @@ struct LubricateOptions : GivenOptions {
 using LubricateOption = OptionSpec<LubricateOptions>;
 using Kind = OptionKind;
 constexpr std::string_view kFilm = "Film";
+constexpr std::string_view kElastic = "Elastic film (EHL)";
 constexpr std::string_view kOutput = "Output";
 
 const std::array kOptions{
@@ -68,7 +86,27 @@ const std::array kOptions{
     LubricateOption{"periodic-y", &LubricateOptions::periodic_y, Kind::flag, kFilm, "",
                     "the film repeats along y instead of having fixed side pressures"},
     LubricateOption{"tolerance", &LubricateOptions::tolerance, Kind::number, kFilm, "TOL",
-                    "relative mass residual at convergence [1e-11]"},
+                    "relative mass residual at convergence [1e-11; 1e-8 for an elastic film]"},
+    LubricateOption{"E-star", &LubricateOptions::e_star, Kind::number, kElastic, "PA",
+                    "composite modulus E* (Pa): the film is elastic (EHL) and needs --force; or E1, nu1, E2, nu2"},
+    LubricateOption{"E1", &LubricateOptions::e1, Kind::number, kElastic, "PA", "Young's modulus of body 1 (Pa)"},
+    LubricateOption{"nu1", &LubricateOptions::nu1, Kind::number, kElastic, "NU", "Poisson's ratio of body 1"},
+    LubricateOption{"E2", &LubricateOptions::e2, Kind::number, kElastic, "PA", "Young's modulus of body 2 (Pa)"},
+    LubricateOption{"nu2", &LubricateOptions::nu2, Kind::number, kElastic, "NU", "Poisson's ratio of body 2"},
+    LubricateOption{"boundary", &LubricateOptions::boundary, Kind::text, kElastic, "TYPE",
+                    "elastic half-space periodic or free [free]"},
+    LubricateOption{"pressure-viscosity", &LubricateOptions::pressure_viscosity, Kind::number, kElastic, "ALPHA",
+                    "pressure-viscosity coefficient alpha (1/Pa) [0]"},
+    LubricateOption{"piezoviscosity", &LubricateOptions::piezoviscosity, Kind::text, kElastic, "LAW",
+                    "none, barus or roelands [barus with --pressure-viscosity, else none]"},
+    LubricateOption{"roelands-index", &LubricateOptions::roelands_index, Kind::number, kElastic, "Z",
+                    "Roelands' z [from alpha: alpha 1.96e8 / (ln eta0 + 9.67)]"},
+    LubricateOption{"compressibility", &LubricateOptions::compressibility, Kind::text, kElastic, "LAW",
+                    "none or dowson-higginson [dowson-higginson]"},
+    LubricateOption{"couette-scheme", &LubricateOptions::couette_scheme, Kind::text, kElastic, "SCHEME",
+                    "first-order or second-order upwinding of the wedge flux [first-order]"},
+    LubricateOption{"max-iterations", &LubricateOptions::max_iterations, Kind::integer, kElastic, "N",
+                    "Newton steps of the elastic film [100]"},
     LubricateOption{"output", &LubricateOptions::output, Kind::path, kOutput, "FILE.h5", "result file (required)"},
     LubricateOption{"quiet", &LubricateOptions::quiet, Kind::flag, kOutput, "", "print nothing on success"},
 };
@@ -79,6 +117,136 @@ std::array<double, 2> velocity(const std::optional<std::vector<double>>& given, 
     throw InputError(fmt::format("--{} has {} values: give UX or UX,UY (m/s)", flag, given->size()));
   }
   return {(*given)[0], given->size() == 2 ? (*given)[1] : 0.0};
+}
+
+// E* from --E-star or all of E1, nu1, E2, nu2; nothing when neither is
+// given (the rigid film).
+std::optional<double> elastic_modulus(const LubricateOptions& o) {
+  const bool pair = o.e1 || o.nu1 || o.e2 || o.nu2;
+  if (o.e_star && pair) {
+    throw InputError("--E-star cannot be combined with --E1, --nu1, --E2, --nu2: give one or the other");
+  }
+  if (o.e_star) return checked_composite_modulus(*o.e_star);
+  if (!pair) return std::nullopt;
+  if (!(o.e1 && o.nu1 && o.e2 && o.nu2)) {
+    throw InputError("incomplete material: give all of --E1, --nu1, --E2 and --nu2 (or --E-star)");
+  }
+  return checked_composite_modulus(composite_modulus({*o.e1, *o.nu1}, {*o.e2, *o.nu2}));
+}
+
+lubrication::LubricantLaws lubricant_laws(const LubricateOptions& o) {
+  lubrication::LubricantLaws laws;
+  laws.pressure_viscosity = o.pressure_viscosity.value_or(0.0);
+  laws.roelands_index = o.roelands_index.value_or(0.0);
+  laws.piezoviscosity = o.piezoviscosity                ? lubrication::parse_piezoviscosity(*o.piezoviscosity)
+                        : laws.pressure_viscosity > 0.0 ? lubrication::Piezoviscosity::barus
+                                                        : lubrication::Piezoviscosity::none;
+  laws.compressibility = lubrication::parse_compressibility(o.compressibility.value_or("dowson-higginson"));
+  return laws;
+}
+
+void write_film_file(const LubricateOptions& o, const HeightMap& map, const Grid& grid,
+                     const lubrication::FilmSummary& summary, const Eigen::ArrayXd& pressure,
+                     const Eigen::ArrayXd& film, const Eigen::ArrayXd& fluid_fraction,
+                     const std::function<void(const io::Hdf5Node&)>& more) {
+  const std::vector<std::size_t> shape =
+      map.dimension == 1 ? std::vector<std::size_t>{map.nx} : std::vector<std::size_t>{map.ny, map.nx};
+  io::write_hdf5_file(*o.output, [&](const io::Hdf5Node& root) {
+    root.write_dataset("pressure", shape, std::span<const double>(pressure.data(), grid.size()), "Pa");
+    root.write_dataset("film", shape, std::span<const double>(film.data(), grid.size()), "m");
+    root.write_dataset("fluid_fraction", shape, std::span<const double>(fluid_fraction.data(), grid.size()), "");
+    io::write_film_attributes(root, summary);
+    io::write_grid_attributes(root, grid);
+    more(root);
+    root.write_string_attribute("source", map.source);
+    root.write_string_attribute("command_line", o.command_line);
+    root.write_string_attribute("halfspace_version", fmt::format("{} ({})", kVersion, kGitHash));
+  });
+}
+
+int report(const LubricateOptions& o, const lubrication::FilmSummary& summary, bool converged) {
+  if (!converged) {
+    fmt::print(stderr, "warning: {}; the result is written to {}\n", summary.message, *o.output);
+    return kExitNotConverged;
+  }
+  if (o.quiet) return kExitOk;
+  fmt::print("halfspace {} ({}) lubricate\n", kVersion, kGitHash);
+  fmt::print("  {:<15} {}\n", "surface", *o.height_map);
+  fmt::print("  {:<15} {}\n", "film", summary.model);
+  fmt::print("  {:<15} {:.6g} ({} {})\n", "load", summary.load, summary.iterations,
+             summary.model == "elastic" ? "Newton steps" : "sweeps");
+  fmt::print("  {:<15} central {:.6g} m, minimum {:.6g} m\n", "film", summary.central_film_thickness,
+             summary.minimum_film_thickness);
+  fmt::print("  {:<15} {:.6g} Pa\n", "max pressure", summary.max_pressure);
+  if (summary.inflow) fmt::print("  {:<15} in {:.6g}, out {:.6g}\n", "flow", *summary.inflow, *summary.outflow);
+  fmt::print("  {:<15} {:.3g}\n", "cavitated", summary.cavitated_fraction);
+  if (summary.friction_coefficient) fmt::print("  {:<15} {:.6g}\n", "friction coeff", *summary.friction_coefficient);
+  fmt::print("  {:<15} {:.3g} s\n", "solve time", summary.solve_seconds);
+  fmt::print("  {:<15} {}\n", "output", *o.output);
+  return kExitOk;
+}
+
+int run_elastic(const LubricateOptions& o, const HeightMap& map, const lubrication::FlowConditions& conditions,
+                double e_star) {
+  if (!o.force) throw InputError("an elastic film (EHL) is load controlled: pass --force N, not --separation");
+  const Boundary boundary = parse_boundary(o.boundary.value_or("free"));
+  const Grid grid =
+      map.dimension == 1 ? Grid::line(map.nx, map.dx, boundary) : Grid::plane(map.nx, map.ny, map.dx, map.dy, boundary);
+  conditions.validate(grid);
+  const lubrication::LubricantLaws laws = lubricant_laws(o);
+  laws.validate(conditions.viscosity);
+  lubrication::ElasticFilmOptions options;
+  options.load = *o.force;
+  if (o.tolerance) options.tolerance = *o.tolerance;
+  if (o.max_iterations) {
+    if (*o.max_iterations < 1 || *o.max_iterations > 100000) {
+      throw InputError(fmt::format("--max-iterations {} is invalid: allowed range is 1 to 100000", *o.max_iterations));
+    }
+    options.max_iterations = static_cast<int>(*o.max_iterations);
+  }
+  if (o.couette_scheme) options.couette_scheme = lubrication::parse_couette_scheme(*o.couette_scheme);
+  options.validate();
+  if (grid.size() > lubrication::kMaxElasticFilmNodes) {
+    throw InputError(
+        fmt::format("{} has {} points: the elastic film's dense Newton path allows at most {} (coarsen the height map)",
+                    *o.height_map, grid.size(), lubrication::kMaxElasticFilmNodes));
+  }
+  const Eigen::ArrayXd gap = map.heights.maxCoeff() - map.heights;
+  FftInfluenceOperator op(grid, e_star);
+  const lubrication::ElasticFilm film = lubrication::solve_elastic_film(op, gap, conditions, laws, options);
+
+  lubrication::FilmSummary summary;
+  summary.model = "elastic";
+  summary.status = std::string(lubrication::to_string(film.status));
+  summary.message = film.message;
+  summary.load = film.load;
+  summary.mean_pressure = film.load / grid.domain_area();
+  summary.separation = film.offset;
+  summary.central_film_thickness = film.central_film_thickness;
+  summary.minimum_film_thickness = film.minimum_film_thickness;
+  summary.max_pressure = film.max_pressure;
+  summary.cavitated_fraction =
+      static_cast<double>((film.fluid_fraction < 1.0).count()) / static_cast<double>(grid.size());
+  summary.viscosity = conditions.viscosity;
+  summary.iterations = film.iterations;
+  summary.film_solves = 1;
+  summary.relative_residual = film.relative_residual;
+  summary.solve_seconds = film.wall_seconds;
+  write_film_file(o, map, grid, summary, film.pressure, film.film, film.fluid_fraction, [&](const io::Hdf5Node& root) {
+    root.write_dataset("deformation",
+                       map.dimension == 1 ? std::vector<std::size_t>{map.nx} : std::vector<std::size_t>{map.ny, map.nx},
+                       std::span<const double>(film.deformation.data(), grid.size()), "m");
+    root.write_double_attribute("E_star", e_star);
+    root.write_string_attribute("piezoviscosity", lubrication::to_string(laws.piezoviscosity));
+    root.write_double_attribute("pressure_viscosity", laws.pressure_viscosity);
+    root.write_double_attribute("roelands_index", laws.piezoviscosity == lubrication::Piezoviscosity::roelands
+                                                      ? laws.roelands_exponent(conditions.viscosity)
+                                                      : 0.0);
+    root.write_string_attribute("compressibility", lubrication::to_string(laws.compressibility));
+    root.write_string_attribute("couette_scheme", lubrication::to_string(options.couette_scheme));
+    root.write_double_attribute("load_error", film.load_error);
+  });
+  return report(o, summary, film.converged());
 }
 
 int run_lubricate(const LubricateOptions& o) {
@@ -100,8 +268,13 @@ int run_lubricate(const LubricateOptions& o) {
   conditions.boundary.y_low_pressure = o.side_pressure.value_or(0.0);
   conditions.boundary.y_high_pressure = o.side_pressure.value_or(0.0);
   if (o.periodic_y) conditions.boundary.y = lubrication::AxisBoundary::periodic;
-  lubrication::CavitationSolverOptions solver;
-  if (o.tolerance) solver.tolerance = *o.tolerance;
+  const std::optional<double> e_star = elastic_modulus(o);
+  if (!e_star && (o.pressure_viscosity || o.piezoviscosity || o.roelands_index || o.compressibility ||
+                  o.couette_scheme || o.max_iterations || o.boundary)) {
+    throw InputError(
+        "--pressure-viscosity, --piezoviscosity, --roelands-index, --compressibility, --couette-scheme, "
+        "--max-iterations and --boundary need an elastic film: give --E-star (or --E1, --nu1, --E2, --nu2)");
+  }
 
   const HeightMap map = io::read_height_map(*o.height_map);
   if (!map.all_valid()) {
@@ -110,63 +283,53 @@ int run_lubricate(const LubricateOptions& o) {
   if (!(map.dx > 0.0) || (map.dimension == 2 && !(map.dy > 0.0))) {
     throw InputError(fmt::format("{} does not give its spacing: a film needs dx (and dy) in metres", *o.height_map));
   }
+  if (e_star) return run_elastic(o, map, conditions, *e_star);
+
+  lubrication::CavitationSolverOptions solver;
+  if (o.tolerance) solver.tolerance = *o.tolerance;
   const Grid grid = map.dimension == 1 ? Grid::line(map.nx, map.dx, Boundary::free)
                                        : Grid::plane(map.nx, map.ny, map.dx, map.dy, Boundary::free);
   conditions.validate(grid);
+  const auto started = std::chrono::steady_clock::now();
   const lubrication::LubricatedFilm film =
       o.force ? lubrication::lubricate_at_load(grid, map.heights, conditions, {.load = *o.force}, solver)
               : lubrication::lubricate_at_separation(grid, map.heights, conditions, *o.separation, solver);
-
   const lubrication::FilmForces& f = film.forces;
-  std::vector<std::size_t> shape =
-      map.dimension == 1 ? std::vector<std::size_t>{map.nx} : std::vector<std::size_t>{map.ny, map.nx};
-  io::write_hdf5_file(*o.output, [&](const io::Hdf5Node& root) {
-    root.write_dataset("pressure", shape, std::span<const double>(film.solution.pressure.data(), grid.size()), "Pa");
-    root.write_dataset("film_thickness", shape, std::span<const double>(film.film.data(), grid.size()), "m");
-    root.write_dataset("fluid_fraction", shape,
-                       std::span<const double>(film.solution.fluid_fraction.data(), grid.size()), "");
-    root.write_double_attribute("load", f.load);
-    root.write_double_attribute("mean_pressure", f.mean_pressure);
-    root.write_double_attribute("separation", film.separation);
-    root.write_double_attribute("minimum_film_thickness", f.minimum_film_thickness);
-    root.write_double_attribute("inflow", f.inflow);
-    root.write_double_attribute("outflow", f.outflow);
-    root.write_double_attribute("friction_force_x", f.friction_force[0]);
-    root.write_double_attribute("friction_force_y", f.friction_force[1]);
-    root.write_double_attribute("friction_coefficient", f.friction_coefficient);
-    root.write_double_attribute("cavitated_fraction", f.cavitated_fraction);
-    root.write_double_attribute("viscosity", conditions.viscosity);
-    root.write_double_attribute("dx", grid.dx());
-    root.write_double_attribute("dy", grid.dy());
-    root.write_int64_attribute("iterations", film.solution.iterations);
-    root.write_double_attribute("relative_residual", film.solution.relative_residual);
-    root.write_string_attribute("status", lubrication::to_string(film.solution.status));
-    root.write_string_attribute("source", map.source);
-    root.write_string_attribute("command_line", o.command_line);
-    root.write_string_attribute("halfspace_version", fmt::format("{} ({})", kVersion, kGitHash));
-  });
-  if (!film.solution.converged()) {
-    fmt::print(stderr, "warning: {}; the result is written to {}\n", film.solution.message, *o.output);
-    return kExitNotConverged;
-  }
-  if (!o.quiet) {
-    fmt::print("halfspace {} ({}) lubricate\n", kVersion, kGitHash);
-    fmt::print("  {:<15} {}\n", "surface", *o.height_map);
-    fmt::print("  {:<15} {:.6g} m ({} film solves)\n", "separation", film.separation, film.film_solves);
-    fmt::print("  {:<15} {:.6g} ({} sweeps)\n", "load", f.load, film.solution.iterations);
-    fmt::print("  {:<15} in {:.6g}, out {:.6g}\n", "flow", f.inflow, f.outflow);
-    fmt::print("  {:<15} {:.3g}\n", "cavitated", f.cavitated_fraction);
-    fmt::print("  {:<15} {:.6g}\n", "friction coeff", f.friction_coefficient);
-    fmt::print("  {:<15} {}\n", "output", *o.output);
-  }
-  return kExitOk;
+  lubrication::FilmSummary summary;
+  summary.model = "rigid";
+  summary.status = std::string(lubrication::to_string(film.solution.status));
+  summary.message = film.solution.message;
+  summary.load = f.load;
+  summary.mean_pressure = f.mean_pressure;
+  summary.separation = film.separation;
+  Eigen::Index centre = 0;
+  map.heights.maxCoeff(&centre);
+  summary.central_film_thickness = film.film[centre];
+  summary.minimum_film_thickness = f.minimum_film_thickness;
+  summary.max_pressure = film.solution.pressure.maxCoeff();
+  summary.cavitated_fraction = f.cavitated_fraction;
+  summary.viscosity = conditions.viscosity;
+  summary.iterations = film.solution.iterations;
+  summary.film_solves = film.film_solves;
+  summary.relative_residual = film.solution.relative_residual;
+  summary.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  summary.inflow = f.inflow;
+  summary.outflow = f.outflow;
+  summary.friction_force_x = f.friction_force[0];
+  summary.friction_force_y = f.friction_force[1];
+  summary.friction_coefficient = f.friction_coefficient;
+  write_film_file(o, map, grid, summary, film.solution.pressure, film.film, film.solution.fluid_fraction,
+                  [](const io::Hdf5Node&) {});
+  return report(o, summary, film.solution.converged());
 }
 
 }  // namespace
 
 Command add_lubricate_command(CLI::App& program) {
   CLI::App* lubricate = program.add_subcommand(
-      "lubricate", "Solve the rigid Reynolds film with mass-conserving cavitation between a height map and a flat");
+      "lubricate",
+      "Solve the Reynolds film with mass-conserving cavitation between a height map and a flat, rigid or elastic "
+      "(EHL, with --E-star)");
   lubricate->footer("See docs/usage.md#lubricated-films and docs/theory.md.");
   add_config_option(*lubricate, "viscosity = 0.1");
   add_options(*lubricate, std::span<const LubricateOption>(kOptions));

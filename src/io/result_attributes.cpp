@@ -71,6 +71,36 @@ const std::array<TangentialAttribute, 14> kTangentialAttributes{{
     {"tangential_tolerance", "", TangentialNumber{[](const TangentialResult& r) { return r.tolerance; }}},
 }};
 
+using lubrication::FilmSummary;
+using FilmNumber = double (*)(const FilmSummary&);
+using FilmInteger = std::int64_t (*)(const FilmSummary&);
+using FilmText = std::string (*)(const FilmSummary&);
+using FilmOptional = std::optional<double> (*)(const FilmSummary&);
+
+const std::array<FilmAttribute, 21> kFilmAttributes{{
+    {"model", "", FilmText{[](const FilmSummary& f) { return f.model; }}},
+    {"status", "", FilmText{[](const FilmSummary& f) { return f.status; }}},
+    {"message", "", FilmText{[](const FilmSummary& f) { return f.message; }}},
+    {"converged", "", FilmInteger{[](const FilmSummary& f) { return std::int64_t{f.status == "converged" ? 1 : 0}; }}},
+    {"load", "N (N/m in 1D)", FilmNumber{[](const FilmSummary& f) { return f.load; }}},
+    {"mean_pressure", "Pa", FilmNumber{[](const FilmSummary& f) { return f.mean_pressure; }}},
+    {"separation", "m", FilmNumber{[](const FilmSummary& f) { return f.separation; }}},
+    {"central_film_thickness", "m", FilmNumber{[](const FilmSummary& f) { return f.central_film_thickness; }}},
+    {"minimum_film_thickness", "m", FilmNumber{[](const FilmSummary& f) { return f.minimum_film_thickness; }}},
+    {"max_pressure", "Pa", FilmNumber{[](const FilmSummary& f) { return f.max_pressure; }}},
+    {"cavitated_fraction", "", FilmNumber{[](const FilmSummary& f) { return f.cavitated_fraction; }}},
+    {"viscosity", "Pa s", FilmNumber{[](const FilmSummary& f) { return f.viscosity; }}},
+    {"iterations", "", FilmInteger{[](const FilmSummary& f) { return std::int64_t{f.iterations}; }}},
+    {"film_solves", "", FilmInteger{[](const FilmSummary& f) { return std::int64_t{f.film_solves}; }}},
+    {"relative_residual", "", FilmNumber{[](const FilmSummary& f) { return f.relative_residual; }}},
+    {"solve_seconds", "s", FilmNumber{[](const FilmSummary& f) { return f.solve_seconds; }}},
+    {"inflow", "m^3/s (m^2/s in 1D)", FilmOptional{[](const FilmSummary& f) { return f.inflow; }}},
+    {"outflow", "m^3/s (m^2/s in 1D)", FilmOptional{[](const FilmSummary& f) { return f.outflow; }}},
+    {"friction_force_x", "N (N/m in 1D)", FilmOptional{[](const FilmSummary& f) { return f.friction_force_x; }}},
+    {"friction_force_y", "N (N/m in 1D)", FilmOptional{[](const FilmSummary& f) { return f.friction_force_y; }}},
+    {"friction_coefficient", "", FilmOptional{[](const FilmSummary& f) { return f.friction_coefficient; }}},
+}};
+
 }  // namespace
 
 std::span<const TangentialAttribute> tangential_attributes() {
@@ -86,6 +116,21 @@ void write_tangential_attributes(const Hdf5Node& node, const TangentialResult& r
       node.write_int64_attribute(name, (*integer)(result));
     } else {
       node.write_string_attribute(name, std::get<TangentialText>(attribute.value)(result));
+std::span<const FilmAttribute> film_attributes() {
+  return kFilmAttributes;
+}
+
+void write_film_attributes(const Hdf5Node& node, const lubrication::FilmSummary& summary) {
+  for (const FilmAttribute& attribute : kFilmAttributes) {
+    const std::string name(attribute.name);
+    if (const auto* number = std::get_if<FilmNumber>(&attribute.value)) {
+      node.write_double_attribute(name, (*number)(summary));
+    } else if (const auto* integer = std::get_if<FilmInteger>(&attribute.value)) {
+      node.write_int64_attribute(name, (*integer)(summary));
+    } else if (const auto* text = std::get_if<FilmText>(&attribute.value)) {
+      node.write_string_attribute(name, (*text)(summary));
+    } else if (const std::optional<double> value = std::get<FilmOptional>(attribute.value)(summary)) {
+      node.write_double_attribute(name, *value);
     }
   }
 }

@@ -7,7 +7,9 @@
 #include <vector>
 
 #include "halfspace/io/height_map_reader.hpp"
+#include "halfspace/lubrication/elastic_film.hpp"
 #include "halfspace/lubrication/load_control.hpp"
+#include "halfspace/operators/fft_influence_operator.hpp"
 #include "io/hdf5_test_support.hpp"
 #include "support/cli_checks.hpp"
 #include "support/program_run.hpp"
@@ -60,6 +62,86 @@ TEST(LubricateCliTest, CarriesTheForceAndWritesTheLibrarysFilm) {
     worst = std::max(worst, std::abs(pressure[i] - film.solution.pressure[i]));
   }
   EXPECT_LT(worst, kWarmVersusCold * film.solution.pressure.maxCoeff());
+}
+
+// The elastic film: the program's is the library's on the same height map
+// (one deterministic Newton iteration from the same start), carries the
+// force, and the file holds the film, deformation and attributes.
+TEST(LubricateCliTest, ElasticFilmIsTheLibrarys) {
+  const TempDir dir;
+  ASSERT_EQ(run_program({"generate", "--kind", "cylinder", "--grid", "129", "--size", "7e-4", "--radius", "0.01",
+                         "--output", "cylinder.h5", "--quiet"},
+                        dir.path())
+                .exit_code,
+            kExitOk);
+  const ProgramRun run = run_program({"lubricate",   "--height-map",
+                                      "cylinder.h5", "--viscosity",
+                                      "0.04",        "--entrainment-velocity",
+                                      "0.55",        "--force",
+                                      "4.4e4",       "--E1",
+                                      "2.1e11",      "--nu1",
+                                      "0.3",         "--E2",
+                                      "2.1e11",      "--nu2",
+                                      "0.3",         "--pressure-viscosity",
+                                      "2e-8",        "--piezoviscosity",
+                                      "roelands",    "--output",
+                                      "ehl.h5"},
+                                     dir.path());
+  ASSERT_EQ(run.exit_code, kExitOk) << run.err;
+  const test::H5 file = test::open_file(dir / "ehl.h5");
+  EXPECT_EQ(test::read_string_attribute(file.get(), "model"), "elastic");
+  EXPECT_EQ(test::read_string_attribute(file.get(), "compressibility"), "dowson-higginson");
+  EXPECT_NEAR(test::read_double_attribute(file.get(), "load"), 4.4e4, 1e-7 * 4.4e4);
+  const double central = test::read_double_attribute(file.get(), "central_film_thickness");
+  const double minimum = test::read_double_attribute(file.get(), "minimum_film_thickness");
+  EXPECT_LT(minimum, central);
+  const std::vector<double> film = test::read_dataset<double>(file.get(), "/film", H5T_NATIVE_DOUBLE);
+  const std::vector<double> deformation = test::read_dataset<double>(file.get(), "/deformation", H5T_NATIVE_DOUBLE);
+  ASSERT_EQ(film.size(), 129U);
+  ASSERT_EQ(deformation.size(), 129U);
+
+  const HeightMap map = io::read_height_map(dir / "cylinder.h5");
+  const Grid grid = Grid::line(map.nx, map.dx, Boundary::free);
+  lubrication::FlowConditions conditions;
+  conditions.viscosity = 0.04;
+  conditions.entrainment_velocity = {0.55, 0.0};
+  const lubrication::LubricantLaws laws{.piezoviscosity = lubrication::Piezoviscosity::roelands,
+                                        .pressure_viscosity = 2e-8,
+                                        .compressibility = lubrication::Compressibility::dowson_higginson};
+  FftInfluenceOperator op(grid, 2.1e11 / (2.0 * (1.0 - 0.09)));
+  const lubrication::ElasticFilm expected =
+      lubrication::solve_elastic_film(op, map.heights.maxCoeff() - map.heights, conditions, laws, {.load = 4.4e4});
+  ASSERT_TRUE(expected.converged()) << expected.message;
+  EXPECT_NEAR(central, expected.central_film_thickness, 1e-9 * central);
+  EXPECT_NEAR(minimum, expected.minimum_film_thickness, 1e-9 * minimum);
+}
+
+TEST(LubricateCliTest, RejectsBadElasticInputNamingTheOption) {
+  const TempDir dir;
+  ASSERT_EQ(run_program({"generate", "--kind", "cylinder", "--grid", "41", "--size", "8e-4", "--radius", "0.01",
+                         "--output", "c.h5", "--quiet"},
+                        dir.path())
+                .exit_code,
+            kExitOk);
+  const std::vector<std::string> base{
+      "lubricate", "--height-map", "c.h5", "--viscosity", "0.04", "--entrainment-velocity", "1", "--output", "f.h5"};
+  const auto with = [&](std::vector<std::string> more) {
+    std::vector<std::string> args = base;
+    args.insert(args.end(), more.begin(), more.end());
+    return run_program(args, dir.path());
+  };
+  expect_input_error(with({"--separation", "1e-6", "--E-star", "1e11"}), {"--force"}, dir / "f.h5");
+  expect_input_error(with({"--force", "1e3", "--E-star", "1e11", "--piezoviscosity", "exponential"}),
+                     {"piezoviscosity 'exponential'", "barus, roelands"}, dir / "f.h5");
+  expect_input_error(with({"--force", "1e3", "--E-star", "1e11", "--compressibility", "tait"}),
+                     {"compressibility 'tait'"}, dir / "f.h5");
+  expect_input_error(with({"--force", "1e3", "--pressure-viscosity", "2e-8"}), {"--E-star"}, dir / "f.h5");
+  expect_input_error(with({"--force", "1e3", "--E-star", "1e11", "--E1", "2e11"}), {"--E-star", "--E1"}, dir / "f.h5");
+  expect_input_error(with({"--force", "1e3", "--E1", "2e11", "--nu1", "0.3"}), {"incomplete material"}, dir / "f.h5");
+  expect_input_error(with({"--force", "1e3", "--E-star", "1e11", "--piezoviscosity", "barus"}),
+                     {"pressure-viscosity coefficient"}, dir / "f.h5");
+  expect_input_error(with({"--force", "1e3", "--E-star", "1e11", "--max-iterations", "0"}), {"--max-iterations 0"},
+                     dir / "f.h5");
 }
 
 TEST(LubricateCliTest, RejectsBadInputNamingTheOption) {

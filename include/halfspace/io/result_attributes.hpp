@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -14,6 +15,7 @@
 #include "halfspace/analysis/contact_statistics.hpp"
 #include "halfspace/io/hdf5_output.hpp"
 #include "halfspace/layered_material.hpp"
+#include "halfspace/lubrication/film_summary.hpp"
 #include "halfspace/solvers/solve_result.hpp"
 #include "halfspace/solvers/tangential_result.hpp"
 
@@ -66,5 +68,19 @@ void write_grid_attributes(const Hdf5Node& node, const Grid& grid);
 // layer_thickness (m), layer_E (Pa), layer_nu, substrate_E (Pa) and
 // substrate_nu (float64): a coated half-space's constants, on a result's root.
 void write_coating_attributes(const Hdf5Node& node, const LayeredMaterial& coating);
+
+// The root attributes of a lubricated film's file (halfspace lubricate):
+// the same table's form for a FilmSummary, absent optional values skipped.
+struct FilmAttribute {
+  std::string_view name;
+  std::string_view unit;
+  std::variant<double (*)(const lubrication::FilmSummary&), std::int64_t (*)(const lubrication::FilmSummary&),
+               std::string (*)(const lubrication::FilmSummary&),
+               std::optional<double> (*)(const lubrication::FilmSummary&)>
+      value;
+};
+
+std::span<const FilmAttribute> film_attributes();
+void write_film_attributes(const Hdf5Node& node, const lubrication::FilmSummary& summary);
 
 }  // namespace halfspace::io

@@ -1,0 +1,145 @@
+// EHL film thickness against the classical fits, for docs/validation.md:
+// line contacts against Pan & Hamrock (1989) over W, U, G, both Couette
+// schemes and three grids; point contacts against Hamrock & Dowson (1977,
+// k = 1) on three grids; Newton steps and seconds per solve. Run with
+// OMP_NUM_THREADS=1 (the dense LU is serial); `ehl_validation quick` runs a
+// subset.
+#include <fmt/format.h>
+
+#include <cmath>
+#include <string_view>
+#include <vector>
+
+#include "halfspace/grid.hpp"
+#include "halfspace/lubrication/elastic_film.hpp"
+#include "halfspace/operators/fft_influence_operator.hpp"
+
+namespace {
+
+using namespace halfspace;
+using namespace halfspace::lubrication;
+
+constexpr double kEStar = 1.1e11;
+constexpr double kRadius = 0.01;
+constexpr double kViscosity = 0.04;
+
+struct Film {
+  ElasticFilm film;
+  double central, minimum;
+};
+
+LubricantLaws laws_for(double g) {
+  return {.piezoviscosity = Piezoviscosity::roelands,
+          .pressure_viscosity = g / (2.0 * kEStar),
+          .compressibility = Compressibility::dowson_higginson};
+}
+
+// x in [-4.5 b, 1.5 b] on `cells` per Hertz half-width b.
+Film line(double w, double u, double g, double cells, CouetteScheme scheme) {
+  const double e_prime = 2.0 * kEStar;
+  const double load = w * e_prime * kRadius;
+  const double b = std::sqrt(4.0 * load * kRadius / (M_PI * kEStar));
+  const double dx = b / cells;
+  const auto upstream = static_cast<std::size_t>(std::lround(4.5 * cells));
+  const std::size_t n = upstream + static_cast<std::size_t>(std::lround(1.5 * cells)) + 1;
+  const Grid grid = Grid::line(n, dx, Boundary::free);
+  Eigen::ArrayXd gap(static_cast<Eigen::Index>(n));
+  for (std::size_t i = 0; i < n; ++i) {
+    const double x = (static_cast<double>(i) - static_cast<double>(upstream)) * dx;
+    gap[static_cast<Eigen::Index>(i)] = x * x / (2.0 * kRadius);
+  }
+  FlowConditions conditions;
+  conditions.viscosity = kViscosity;
+  conditions.entrainment_velocity = {u * e_prime * kRadius / kViscosity, 0.0};
+  FftInfluenceOperator op(grid, kEStar);
+  Film f{solve_elastic_film(op, gap, conditions, laws_for(g), {.load = load, .couette_scheme = scheme}), 0, 0};
+  f.central = f.film.central_film_thickness / kRadius;
+  f.minimum = f.film.minimum_film_thickness / kRadius;
+  return f;
+}
+
+// x in [-3.5 a, 1.5 a], y in [-2 a, 2 a] on `cells` per Hertz radius a.
+Film point(double w, double u, double g, double cells, CouetteScheme scheme) {
+  const double e_prime = 2.0 * kEStar;
+  const double load = w * e_prime * kRadius * kRadius;
+  const double a = std::cbrt(3.0 * load * kRadius / (4.0 * kEStar));
+  const double dx = a / cells;
+  const auto upstream = static_cast<std::size_t>(std::lround(3.5 * cells));
+  const std::size_t nx = upstream + static_cast<std::size_t>(std::lround(1.5 * cells)) + 1;
+  const auto half = static_cast<std::size_t>(std::lround(2.0 * cells));
+  const std::size_t ny = 2 * half + 1;
+  const Grid grid = Grid::plane(nx, ny, dx, dx, Boundary::free);
+  Eigen::ArrayXd gap(static_cast<Eigen::Index>(nx * ny));
+  for (std::size_t j = 0; j < ny; ++j) {
+    for (std::size_t i = 0; i < nx; ++i) {
+      const double x = (static_cast<double>(i) - static_cast<double>(upstream)) * dx;
+      const double y = (static_cast<double>(j) - static_cast<double>(half)) * dx;
+      gap[static_cast<Eigen::Index>(j * nx + i)] = (x * x + y * y) / (2.0 * kRadius);
+    }
+  }
+  FlowConditions conditions;
+  conditions.viscosity = kViscosity;
+  conditions.entrainment_velocity = {u * e_prime * kRadius / kViscosity, 0.0};
+  FftInfluenceOperator op(grid, kEStar);
+  Film f{solve_elastic_film(op, gap, conditions, laws_for(g), {.load = load, .couette_scheme = scheme}), 0, 0};
+  f.central = f.film.central_film_thickness / kRadius;
+  f.minimum = f.film.minimum_film_thickness / kRadius;
+  return f;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const bool quick = argc > 1 && std::string_view(argv[1]) == "quick";
+  const bool low = argc > 1 && std::string_view(argv[1]) == "low";
+  fmt::print("# line contact vs Pan & Hamrock 1989 (Roelands, Dowson-Higginson; x in [-4.5b, 1.5b])\n");
+  fmt::print("{:>8} {:>8} {:>6} {:>6} {:>13} {:>8} {:>8} {:>6} {:>8}\n", "W", "U", "G", "cells", "scheme", "Hc/PH",
+             "Hmin/PH", "steps", "seconds");
+  const std::vector<double> loads = low     ? std::vector<double>{1e-5}
+                                    : quick ? std::vector<double>{2e-5, 1e-4}
+                                            : std::vector<double>{1e-5, 2e-5, 5e-5, 1e-4, 2e-4};
+  const std::vector<double> speeds = quick ? std::vector<double>{1e-11} : std::vector<double>{1e-11, 3e-11};
+  const std::vector<double> materials = quick ? std::vector<double>{5000} : std::vector<double>{2500, 5000};
+  const std::vector<double> grids = low     ? std::vector<double>{32, 128}
+                                    : quick ? std::vector<double>{32}
+                                            : std::vector<double>{16, 32, 64, 128};
+  for (double w : loads) {
+    for (double u : speeds) {
+      for (double g : materials) {
+        const double pan_central = 2.922 * std::pow(w, -0.166) * std::pow(u, 0.692) * std::pow(g, 0.470);
+        const double pan_minimum = 1.714 * std::pow(w, -0.128) * std::pow(u, 0.694) * std::pow(g, 0.568);
+        for (double cells : grids) {
+          for (CouetteScheme scheme : {CouetteScheme::first_order, CouetteScheme::second_order}) {
+            const Film f = line(w, u, g, cells, scheme);
+            fmt::print("{:8.1e} {:8.1e} {:6.0f} {:6.0f} {:>13} {:8.4f} {:8.4f} {:6d} {:8.3f}{}\n", w, u, g, cells,
+                       to_string(scheme), f.central / pan_central, f.minimum / pan_minimum, f.film.iterations,
+                       f.film.wall_seconds, f.film.converged() ? "" : fmt::format("  {}", f.film.message));
+          }
+        }
+      }
+    }
+  }
+  if (low) return 0;
+  fmt::print("\n# point contact vs Hamrock & Dowson 1977, k = 1 (x in [-3.5a, 1.5a], y in [-2a, 2a])\n");
+  fmt::print("{:>8} {:>8} {:>6} {:>6} {:>8} {:>13} {:>8} {:>8} {:>6} {:>8}\n", "W", "U", "G", "cells", "nodes",
+             "scheme", "Hc/HD", "Hmin/HD", "steps", "seconds");
+  const std::vector<double> point_loads = quick ? std::vector<double>{3e-7} : std::vector<double>{1e-7, 3e-7, 1e-6};
+  const std::vector<double> point_grids = quick ? std::vector<double>{6} : std::vector<double>{6, 8, 10};
+  for (double w : point_loads) {
+    const double u = 1e-11, g = 5000;
+    const double hd_central =
+        2.69 * std::pow(u, 0.67) * std::pow(g, 0.53) * std::pow(w, -0.067) * (1.0 - 0.61 * std::exp(-0.73));
+    const double hd_minimum =
+        3.63 * std::pow(u, 0.68) * std::pow(g, 0.49) * std::pow(w, -0.073) * (1.0 - std::exp(-0.68));
+    for (double cells : point_grids) {
+      for (CouetteScheme scheme : {CouetteScheme::first_order, CouetteScheme::second_order}) {
+        const Film f = point(w, u, g, cells, scheme);
+        fmt::print("{:8.1e} {:8.1e} {:6.0f} {:6.0f} {:8d} {:>13} {:8.4f} {:8.4f} {:6d} {:8.3f}{}\n", w, u, g, cells,
+                   f.film.pressure.size(), to_string(scheme), f.central / hd_central, f.minimum / hd_minimum,
+                   f.film.iterations, f.film.wall_seconds,
+                   f.film.converged() ? "" : fmt::format("  {}", f.film.message));
+      }
+    }
+  }
+  return 0;
+}

@@ -1,0 +1,112 @@
+// Elastohydrodynamic lubrication (EHL): the Reynolds film of
+// reynolds_stencil.hpp between an elastic half-space and a rigid surface,
+// whose film thickness grows with the surface's deformation under the
+// fluid pressure, with a viscosity and density that grow with pressure
+// (lubricant.hpp):
+//
+//   div( rho h^3 / (12 eta) grad p ) = div( U rho h theta ),
+//   h = h0 + g + K p,    sum(p) dA = w,
+//   p >= 0,  0 <= theta <= 1,  p (1 - theta) = 0,
+//
+// g the undeformed surface gap (min 0), K the influence operator
+// (influence_operator.hpp, free or periodic, homogeneous or coated), h0 the
+// offset that load balance fixes. Mass-conserving cavitation (p–theta) as in
+// cavitation_solver.hpp.
+//
+// The solver is Newton's method on all of it at once, as Houpert & Hamrock
+// (1986, J. Tribol. 108, 411) do for line contacts at high loads: the
+// unknowns are one variable s per node (p = p_scale max(s, 0) and theta =
+// 1 + min(s, 0), so the complementarity holds by construction and the
+// method is a semi-smooth Newton) and h0. Its Jacobian couples every node
+// through K and is factorised densely: the path is for line contacts and
+// modest point-contact grids (kMaxElasticFilmNodes).
+#pragma once
+
+#include <Eigen/Core>
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+#include "halfspace/lubrication/film_solution.hpp"
+#include "halfspace/lubrication/flow_conditions.hpp"
+#include "halfspace/lubrication/lubricant.hpp"
+#include "halfspace/operators/influence_operator.hpp"
+
+namespace halfspace::lubrication {
+
+// Nodes up to which the dense Newton path is allowed: its Jacobian, its LU
+// and K are n x n each (3 x 134 MB at the limit).
+inline constexpr std::size_t kMaxElasticFilmNodes = 4096;
+
+// How the Couette (wedge) flux U rho h theta of a face is taken from
+// upstream: from the upstream node (first order: monotone, robust at any
+// load, its artificial diffusion thickens the film by O(dx)), or by linear
+// extrapolation from the two upstream nodes (second order, Venner &
+// Lubrecht 2000: more accurate on a given grid, but at very high loads the
+// Newton iteration may stall in the pressure spike; docs/solvers.md).
+enum class CouetteScheme { first_order, second_order };
+
+std::string_view to_string(CouetteScheme scheme);
+// "first-order" or "second-order"; InputError naming the value otherwise.
+CouetteScheme parse_couette_scheme(std::string_view text);
+
+struct ElasticFilmOptions {
+  double load = 0.0;  // N in 2D, N/m in 1D; > 0: the sum of the cells' pressures times their area
+  // Converged when the largest |mass balance| <= tolerance * the largest
+  // Couette outflow U rho h (as relative_mass_residual) and |load - w| <=
+  // load_tolerance * w.
+  double tolerance = 1e-8;
+  double load_tolerance = 1e-8;
+  int max_iterations = 100;  // Newton steps
+  CouetteScheme couette_scheme = CouetteScheme::first_order;
+
+  // Throws InputError naming the option unless load > 0 and finite, 0 <
+  // tolerance < 1, 0 < load_tolerance < 1, max_iterations >= 1.
+  void validate() const;
+};
+
+struct ElasticFilm {
+  FilmStatus status = FilmStatus::failure;
+  std::string message;            // empty when converged
+  Eigen::ArrayXd pressure;        // Pa, (ny, nx) row-major, on the grid's cells (the film's nodes)
+  Eigen::ArrayXd fluid_fraction;  // theta
+  Eigen::ArrayXd film;            // h (m)
+  Eigen::ArrayXd deformation;     // K p (m, positive away from the rigid surface)
+  double offset = 0.0;            // h0 (m); with a free 1D grid it includes the kernel's datum
+  double load = 0.0;              // sum(p) dA (N, N/m in 1D)
+  // h at the contact's centre (the node of the smallest undeformed gap) and
+  // the smallest h anywhere.
+  double central_film_thickness = 0.0;
+  double minimum_film_thickness = 0.0;
+  double max_pressure = 0.0;
+  int iterations = 0;  // Newton steps
+  int line_search_halvings = 0;
+  double wall_seconds = 0.0;
+  // Measured after the solve with the operator's own product (not the
+  // Newton's factorised Jacobian): the relative mass residual and |load -
+  // w| / w.
+  double relative_residual = 0.0;
+  double load_error = 0.0;
+
+  bool converged() const { return status == FilmStatus::converged; }
+};
+
+// Solves the EHL film on the operator's grid. `gap` is g (m, one value per
+// cell, >= 0 with its minimum at the contact); `conditions` gives the
+// ambient viscosity eta0, the velocities and the flow boundary (validated
+// here); `laws` the pressure laws. Starts from the dry contact (Polonsky &
+// Keer on the same operator) at the load, unless `start` holds a previous
+// film of the same grid. Throws InputError for invalid input or more than
+// kMaxElasticFilmNodes nodes; non-convergence is a status.
+ElasticFilm solve_elastic_film(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
+                               const LubricantLaws& laws, const ElasticFilmOptions& options,
+                               const ElasticFilm* start = nullptr);
+
+// The largest |mass balance| of the compressible, piezoviscous p–theta
+// Reynolds equation over the unknown nodes for the film `film`, relative to
+// the largest Couette outflow (the check solve_elastic_film makes).
+double elastic_film_residual(const Grid& grid, const FlowConditions& conditions, const LubricantLaws& laws,
+                             const Eigen::ArrayXd& film, const Eigen::ArrayXd& pressure,
+                             const Eigen::ArrayXd& fluid_fraction, CouetteScheme scheme = CouetteScheme::first_order);
+
+}  // namespace halfspace::lubrication

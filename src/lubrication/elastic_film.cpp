@@ -1,0 +1,574 @@
+// Newton's method on the whole EHL problem (elastic_film.hpp). Per node the
+// mass balance of the control volume (reynolds_stencil.hpp's finite volumes,
+// with the face conductance the mean of the two nodes' eps = rho h^3 /
+// (12 eta), as Venner & Lubrecht 2000, ch. 8, discretise the piezoviscous
+// equation) depends on the pressures, fluid fractions and films of the node
+// and its neighbours; every film depends on every pressure through K and on
+// h0. The Jacobian is therefore
+//
+//   J = (A_p + A_h K) diag(dp/ds) + A_theta diag(dtheta/ds),
+//
+// A_* the sparse local derivatives, plus the h0 column (the row sums of A_h)
+// and the load row. K is read off one product of the operator with a unit
+// pressure (it is translation invariant), so free and periodic grids and
+// coated half-spaces all use the operator the contact solvers use. A
+// backtracking line search on the scaled residual's norm keeps the films
+// positive and the semi-smooth steps (a node switching between full and
+// cavitated) from diverging.
+#include "halfspace/lubrication/elastic_film.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/LU>
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <vector>
+
+#include "halfspace/error.hpp"
+#include "halfspace/lubrication/cavitation_solver.hpp"
+#include "halfspace/lubrication/reynolds_stencil.hpp"
+#include "halfspace/solvers/polonsky_keer.hpp"
+
+namespace halfspace::lubrication {
+
+std::string_view to_string(CouetteScheme scheme) {
+  return scheme == CouetteScheme::second_order ? "second-order" : "first-order";
+}
+
+CouetteScheme parse_couette_scheme(std::string_view text) {
+  if (text == "first-order") return CouetteScheme::first_order;
+  if (text == "second-order") return CouetteScheme::second_order;
+  throw InputError(fmt::format("Couette scheme '{}' is invalid: allowed are first-order, second-order", text));
+}
+
+void ElasticFilmOptions::validate() const {
+  if (!(std::isfinite(load) && load > 0.0)) {
+    throw InputError(fmt::format("EHL load = {} is invalid: it must be positive and finite", load));
+  }
+  if (!(tolerance > 0.0 && tolerance < 1.0)) {
+    throw InputError(fmt::format("EHL tolerance = {} is invalid: allowed range is 0 < tolerance < 1", tolerance));
+  }
+  if (!(load_tolerance > 0.0 && load_tolerance < 1.0)) {
+    throw InputError(
+        fmt::format("EHL load tolerance = {} is invalid: allowed range is 0 < tolerance < 1", load_tolerance));
+  }
+  if (max_iterations < 1) {
+    throw InputError(fmt::format("EHL max iterations = {} is invalid: at least 1 Newton step", max_iterations));
+  }
+}
+
+namespace {
+
+// The start's films over the dry contact, in units of the gap at the dry
+// contact's edge, tried in turn while the Newton iteration fails: a thin
+// one converges fastest at high loads, where a thick one takes up to 5x
+// the steps; at low loads the thin one may stall and the thick one
+// converges (bench/ehl/ehl_validation.cpp).
+constexpr std::array<double, 2> kStartFilms{0.5, 8.0};
+// The trust region of a Newton step, in units of the pressure scale (the
+// dry contact's peak) and of the thinnest film.
+constexpr double kLargestStep = 0.5;
+// Nodes within this of the switch s = 0 take the branch their step goes
+// into; the passes that may take.
+constexpr double kSwitchBand = 1e-9;
+constexpr int kBranchPasses = 4;
+
+// The nodes' pressure-dependent coefficients for a film: rho / rho0, eps =
+// rho h^3 / (12 eta) and their derivatives.
+struct NodeCoefficients {
+  Eigen::ArrayXd rho, rho_p, eps, eps_p, eps_h;
+
+  void update(const LubricantLaws& laws, double eta0, const Eigen::ArrayXd& p, const Eigen::ArrayXd& h) {
+    const Eigen::Index n = p.size();
+    rho.resize(n);
+    rho_p.resize(n);
+    eps.resize(n);
+    eps_p.resize(n);
+    eps_h.resize(n);
+    for (Eigen::Index k = 0; k < n; ++k) {
+      const double pk = std::max(p[k], 0.0);
+      rho[k] = laws.density_ratio(pk);
+      rho_p[k] = laws.density_ratio_slope(pk);
+      eps[k] = rho[k] * h[k] * h[k] * h[k] / (12.0 * eta0 * laws.viscosity_ratio(pk, eta0));
+      eps_p[k] = eps[k] * (rho_p[k] / rho[k] - laws.viscosity_log_slope(pk, eta0));
+      eps_h[k] = 3.0 * eps[k] / h[k];
+    }
+  }
+};
+
+// One local derivative of a node's balance: d/dp, d/dh, d/dtheta of `node`.
+struct LocalTerm {
+  std::size_t node;
+  double by_pressure, by_film, by_fraction;
+};
+
+// The balance of node k (per unit area, m/s) and its local derivatives
+// (up to 5 faces + 3 Couette terms).
+double linearise(const ReynoldsStencil& topology, std::size_t k, const NodeCoefficients& c, const Eigen::ArrayXd& p,
+                 const Eigen::ArrayXd& theta, const Eigen::ArrayXd& h, bool second_order,
+                 std::vector<LocalTerm>& terms) {
+  terms.clear();
+  const Neighbours nb = topology.neighbours(k);
+  const Grid& grid = topology.grid();
+  double balance = 0.0;
+  double own_p = 0.0, own_h = 0.0;
+  const auto face = [&](std::size_t other, double spacing) {
+    if (other == Neighbours::kNone) return;
+    const double w = 0.5 / (spacing * spacing);
+    const double conductance = w * (c.eps[k] + c.eps[other]);
+    const double drop = p[k] - p[other];
+    balance += conductance * drop;
+    own_p += conductance + drop * w * c.eps_p[k];
+    own_h += drop * w * c.eps_h[k];
+    terms.push_back({other, -conductance + drop * w * c.eps_p[other], drop * w * c.eps_h[other], 0.0});
+  };
+  face(nb.west, grid.dx());
+  face(nb.east, grid.dx());
+  face(nb.south, grid.dy());
+  face(nb.north, grid.dy());
+  terms.push_back({k, own_p, own_h, 0.0});
+  // The Couette flux U rho h theta through a face, taken from the upstream
+  // node (first order), or at second order the linear extrapolation 1.5
+  // m_up - 0.5 m_upup (Venner & Lubrecht 2000's second-order upstream
+  // scheme), first order where the upstream node has no upstream neighbour
+  // (next to a fixed edge).
+  const auto mass = [&](std::size_t node, double coefficient) {
+    balance += coefficient * c.rho[node] * h[node] * theta[node];
+    terms.push_back({node, coefficient * c.rho_p[node] * h[node] * theta[node], coefficient * c.rho[node] * theta[node],
+                     coefficient * c.rho[node] * h[node]});
+  };
+  const auto couette = [&](double coefficient, auto upstream_of) {
+    if (coefficient == 0.0) return;
+    const std::size_t up = upstream_of(nb);
+    // Out through the downstream face.
+    if (up == Neighbours::kNone) {
+      mass(k, coefficient);
+      return;
+    }
+    if (!second_order) {
+      mass(k, coefficient);
+      mass(up, -coefficient);
+      return;
+    }
+    mass(k, 1.5 * coefficient);
+    mass(up, -0.5 * coefficient);
+    // In through the upstream face.
+    const std::size_t up_up = upstream_of(topology.neighbours(up));
+    if (up_up == Neighbours::kNone) {
+      mass(up, -coefficient);
+    } else {
+      mass(up, -1.5 * coefficient);
+      mass(up_up, 0.5 * coefficient);
+    }
+  };
+  couette(topology.couette_x(), [&](const Neighbours& n) { return topology.upstream_x(n); });
+  couette(topology.couette_y(), [&](const Neighbours& n) { return topology.upstream_y(n); });
+  return balance;
+}
+
+// The dense K from one product: K(i, j) depends only on the offset of the
+// two cells, and is even in each axis' offset on free grids.
+Eigen::MatrixXd influence_matrix(InfluenceOperator& op) {
+  const Grid& grid = op.grid();
+  const std::size_t n = grid.size();
+  const std::size_t nx = grid.nx();
+  const std::size_t ny = grid.ny();
+  std::vector<double> unit(n, 0.0), column(n, 0.0);
+  unit[0] = 1.0;
+  op.apply(unit, column);
+  Eigen::MatrixXd k(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+  for (std::size_t j = 0; j < n; ++j) {
+    const std::size_t xj = j % nx, yj = j / nx;
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t xi = i % nx, yi = i / nx;
+      std::size_t dx = 0, dy = 0;
+      if (grid.periodic()) {
+        dx = (xi + nx - xj) % nx;
+        dy = (yi + ny - yj) % ny;
+      } else {
+        dx = xi > xj ? xi - xj : xj - xi;
+        dy = yi > yj ? yi - yj : yj - yi;
+      }
+      k(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = column[dy * nx + dx];
+    }
+  }
+  return k;
+}
+
+// The state of the Newton iteration: s and h0, and what follows from them.
+struct State {
+  Eigen::ArrayXd s, pressure, theta, deformation, film;
+  double offset = 0.0;
+};
+
+}  // namespace
+
+double elastic_film_residual(const Grid& grid, const FlowConditions& conditions, const LubricantLaws& laws,
+                             const Eigen::ArrayXd& film, const Eigen::ArrayXd& pressure,
+                             const Eigen::ArrayXd& fluid_fraction, CouetteScheme scheme) {
+  // Face by face: each face's flux leaves one control volume and enters the
+  // other (the flux form, written apart from the Newton's node form).
+  const ReynoldsStencil topology(grid, Eigen::ArrayXd::Ones(static_cast<Eigen::Index>(grid.size())), conditions);
+  const std::size_t n = grid.size();
+  const double eta0 = conditions.viscosity;
+  Eigen::ArrayXd eps(static_cast<Eigen::Index>(n)), mass(static_cast<Eigen::Index>(n));
+  double couette = 0.0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const double pk = std::max(pressure[k], 0.0);
+    mass[k] = laws.density_ratio(pk) * film[k] * fluid_fraction[k];
+    if (!topology.fixed(k)) {
+      couette = std::max(couette, (topology.couette_x() + topology.couette_y()) * laws.density_ratio(pk) * film[k]);
+    }
+    eps[k] = laws.density_ratio(pk) * std::pow(film[k], 3) / (12.0 * eta0 * laws.viscosity_ratio(pk, eta0));
+  }
+  Eigen::ArrayXd balance = Eigen::ArrayXd::Zero(static_cast<Eigen::Index>(n));
+  const double ux = conditions.entrainment_velocity[0];
+  const double uy = conditions.entrainment_velocity[1];
+  // The upwinded mass flux density through the face downstream of `up`.
+  const auto carried = [&](std::size_t up, std::size_t up_up) {
+    return up_up == Neighbours::kNone || scheme == CouetteScheme::first_order ? mass[up]
+                                                                              : 1.5 * mass[up] - 0.5 * mass[up_up];
+  };
+  for (std::size_t k = 0; k < n; ++k) {
+    const Neighbours nb = topology.neighbours(k);
+    if (nb.east != Neighbours::kNone) {
+      const std::size_t e = nb.east;
+      const std::size_t up = ux >= 0.0 ? k : e;
+      const std::size_t up_up = ux >= 0.0 ? nb.west : topology.neighbours(e).east;
+      const double flux = -0.5 * (eps[k] + eps[e]) * (pressure[e] - pressure[k]) / (grid.dx() * grid.dx()) +
+                          ux / grid.dx() * carried(up, up_up);
+      balance[k] += flux;
+      balance[e] -= flux;
+    }
+    if (nb.north != Neighbours::kNone) {
+      const std::size_t o = nb.north;
+      const std::size_t up = uy >= 0.0 ? k : o;
+      const std::size_t up_up = uy >= 0.0 ? nb.south : topology.neighbours(o).north;
+      const double flux = -0.5 * (eps[k] + eps[o]) * (pressure[o] - pressure[k]) / (grid.dy() * grid.dy()) +
+                          uy / grid.dy() * carried(up, up_up);
+      balance[k] += flux;
+      balance[o] -= flux;
+    }
+  }
+  double largest = 0.0;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (!topology.fixed(k)) largest = std::max(largest, std::abs(balance[k]));
+  }
+  return largest / (couette > 0.0 ? couette : 1.0);
+}
+
+ElasticFilm solve_elastic_film(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
+                               const LubricantLaws& laws, const ElasticFilmOptions& options, const ElasticFilm* start) {
+  const auto started = std::chrono::steady_clock::now();
+  const Grid& grid = op.grid();
+  conditions.validate(grid);
+  laws.validate(conditions.viscosity);
+  options.validate();
+  const std::size_t n = grid.size();
+  if (op.local_size() != n) throw InputError("the EHL film needs a serial influence operator (one process)");
+  if (n > kMaxElasticFilmNodes) {
+    throw InputError(fmt::format("the {} grid has {} nodes: the EHL solver's dense Newton path allows at most {}",
+                                 grid.shape_string(), n, kMaxElasticFilmNodes));
+  }
+  if (static_cast<std::size_t>(gap.size()) != n || !gap.allFinite()) {
+    throw InputError(fmt::format("EHL gap has {} values, the {} grid has {} cells; every value must be finite",
+                                 gap.size(), grid.shape_string(), n));
+  }
+  const auto ni = static_cast<Eigen::Index>(n);
+  const ReynoldsStencil topology(grid, Eigen::ArrayXd::Ones(ni), conditions);
+  const double eta0 = conditions.viscosity;
+  const double area = grid.cell_area();
+  const double w = options.load;
+  const double supply = conditions.boundary.supply_fluid_fraction;
+  if (topology.couette_x() + topology.couette_y() <= 0.0) {
+    throw InputError("EHL entrainment velocity is zero: the film needs entrainment to carry a load");
+  }
+
+  const bool second_order = options.couette_scheme == CouetteScheme::second_order;
+  ElasticFilm result;
+  State x;
+  // The start: a previous film, or the dry contact at the load with a film
+  // laid over it (Newton then finds h0).
+  double pressure_scale = 0.0;
+  double dry_offset = 0.0, edge_gap = 0.0;
+  const bool dry_start = !(start != nullptr && start->pressure.size() == ni && start->fluid_fraction.size() == ni);
+  if (!dry_start) {
+    pressure_scale = std::max(start->max_pressure, w / grid.domain_area());
+    x.pressure = start->pressure;
+    x.theta = start->fluid_fraction;
+    x.offset = start->offset;
+  } else {
+    solvers::PolonskyKeer dry(op);
+    const solvers::SolveResult contact = dry.solve({gap.data(), n}, solvers::Loading::force(w));
+    if (!contact.converged()) {
+      result.message = fmt::format("the dry contact that starts the EHL solve did not converge: {}", contact.message);
+      return result;
+    }
+    pressure_scale = contact.max_pressure;
+    x.pressure = contact.pressure;
+    x.theta = Eigen::ArrayXd::Ones(ni);
+    // The undeformed gap at the dry contact's edge (b^2 / 2R for a
+    // cylinder or sphere) sets the scale of the elastic film.
+    for (Eigen::Index k = 0; k < ni; ++k) {
+      if (contact.pressure[k] > 0.0) edge_gap = std::max(edge_gap, gap[k]);
+    }
+    if (!(edge_gap > 0.0)) edge_gap = std::max(gap.maxCoeff(), 1e-9);
+    dry_offset = -contact.approach;
+    x.offset = dry_offset + kStartFilms[0] * edge_gap;
+  }
+  x.s.resize(ni);
+  for (Eigen::Index k = 0; k < ni; ++k) {
+    x.s[k] = x.pressure[k] > 0.0 ? x.pressure[k] / pressure_scale : x.theta[k] - 1.0;
+  }
+  x.deformation.resize(ni);
+  x.film.resize(ni);
+
+  // p, theta, K p and h of s and h0; false if a film is not positive.
+  const auto evaluate = [&](State& state) {
+    for (Eigen::Index k = 0; k < ni; ++k) {
+      if (topology.fixed(static_cast<std::size_t>(k))) {
+        state.pressure[k] = topology.fixed_pressure(static_cast<std::size_t>(k));
+        state.theta[k] = supply;
+        continue;
+      }
+      state.s[k] = std::max(state.s[k], -1.0);
+      state.pressure[k] = pressure_scale * std::max(state.s[k], 0.0);
+      state.theta[k] = 1.0 + std::min(state.s[k], 0.0);
+    }
+    op.apply({state.pressure.data(), n}, {state.deformation.data(), n});
+    state.film = state.offset + gap + state.deformation;
+    return (state.film > 0.0).all() && state.film.allFinite();
+  };
+  if (!evaluate(x)) {
+    result.message = "the start of the EHL solve has a film that is not positive";
+    return result;
+  }
+
+  const Eigen::MatrixXd k_matrix = influence_matrix(op);
+  NodeCoefficients coefficients;
+  std::vector<LocalTerm> terms;
+  terms.reserve(16);
+  Eigen::VectorXd residual(ni + 1), step(ni + 1);
+  Eigen::MatrixXd jacobian_t(ni + 1, ni + 1);  // J transposed: row k's derivatives in column k
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu(ni + 1);
+  std::vector<char> branch_full(n, 1);
+  double mass_scale = 1.0;
+
+  // The scaled residual (mass rows over mass_scale, the load row over w)
+  // and the measured relative residuals.
+  struct Measure {
+    double norm = 0.0, mass = 0.0, load = 0.0;
+  };
+  const auto measure = [&](const State& state, Eigen::VectorXd& out, bool linearise_too) {
+    coefficients.update(laws, eta0, state.pressure, state.film);
+    double couette = 0.0;
+    for (std::size_t k = 0; k < n; ++k) {
+      if (!topology.fixed(k)) {
+        couette =
+            std::max(couette, (topology.couette_x() + topology.couette_y()) * coefficients.rho[k] * state.film[k]);
+      }
+    }
+    Measure m;
+    double largest = 0.0;
+    if (linearise_too) jacobian_t.setZero();
+    for (std::size_t k = 0; k < n; ++k) {
+      const auto kk = static_cast<Eigen::Index>(k);
+      if (topology.fixed(k)) {
+        out[kk] = 0.0;
+        if (linearise_too) jacobian_t(kk, kk) = 1.0;
+        continue;
+      }
+      const double balance =
+          linearise(topology, k, coefficients, state.pressure, state.theta, state.film, second_order, terms);
+      largest = std::max(largest, std::abs(balance));
+      out[kk] = balance / mass_scale;
+      if (!linearise_too) continue;
+      auto column = jacobian_t.col(kk);
+      double by_offset = 0.0;
+      for (const LocalTerm& t : terms) {
+        const auto node = static_cast<Eigen::Index>(t.node);
+        if (t.by_film != 0.0) column.head(ni) += (t.by_film / mass_scale) * k_matrix.col(node);
+        by_offset += t.by_film;
+        column[node] += t.by_pressure / mass_scale;
+      }
+      column[ni] = by_offset / mass_scale;
+    }
+    const double load = state.pressure.sum() * area;
+    out[ni] = (load - w) / w;
+    m.mass = largest / (couette > 0.0 ? couette : 1.0);
+    m.load = std::abs(load - w) / w;
+    m.norm = out.norm();
+    if (linearise_too) {
+      // Columns of J are rows of J^T: scale by dp/ds, then add d theta / ds.
+      for (std::size_t j = 0; j < n; ++j) {
+        const auto jj = static_cast<Eigen::Index>(j);
+        const bool fixed = topology.fixed(j);
+        const bool full = !fixed && branch_full[j] != 0;
+        if (fixed) {
+          jacobian_t.row(jj).setZero();
+          jacobian_t(jj, jj) = 1.0;
+        } else {
+          jacobian_t.row(jj) *= full ? pressure_scale : 0.0;
+        }
+        jacobian_t(jj, ni) = full ? pressure_scale * area / w : 0.0;
+      }
+      for (std::size_t k = 0; k < n; ++k) {
+        if (topology.fixed(k)) continue;
+        linearise(topology, k, coefficients, state.pressure, state.theta, state.film, second_order, terms);
+        for (const LocalTerm& t : terms) {
+          const auto node = static_cast<Eigen::Index>(t.node);
+          if (!topology.fixed(t.node) && branch_full[t.node] == 0) {
+            jacobian_t(node, static_cast<Eigen::Index>(k)) += t.by_fraction / mass_scale;
+          }
+        }
+      }
+    }
+    return m;
+  };
+
+  // The mass rows' scale: the largest Couette outflow of the start.
+  const auto scale_masses = [&]() {
+    double couette = 0.0;
+    for (std::size_t k = 0; k < n; ++k) {
+      if (!topology.fixed(k)) couette = std::max(couette, (topology.couette_x() + topology.couette_y()) * x.film[k]);
+    }
+    mass_scale = couette;
+  };
+  scale_masses();
+
+  const State initial = x;
+  State trial = x;
+  Eigen::VectorXd trial_residual(ni + 1);
+  int steps_before = 0;  // Newton steps of failed starts
+  for (std::size_t attempt = 0;; ++attempt) {
+    Measure current = measure(x, residual, false);
+    for (int iteration = 0;; ++iteration) {
+      result.iterations = steps_before + iteration;
+      if (current.mass <= options.tolerance && current.load <= options.load_tolerance) {
+        result.status = FilmStatus::converged;
+        break;
+      }
+      if (!std::isfinite(current.norm)) {
+        result.status = FilmStatus::failure;
+        result.message = fmt::format("the EHL Newton iteration diverged after {} steps", iteration);
+        break;
+      }
+      if (dry_start && attempt + 1 < kStartFilms.size() && iteration > 0 && iteration == options.max_iterations / 2) {
+        // The thin start has used half the steps: leave the rest to the next.
+        result.status = FilmStatus::failure;
+        break;
+      }
+      if (steps_before + iteration == options.max_iterations) {
+        result.status = FilmStatus::iteration_limit;
+        result.message = fmt::format(
+            "the EHL film did not converge in {} Newton steps: relative mass residual {:.3g} (tolerance {:.3g}), "
+            "load error {:.3g} (tolerance {:.3g})",
+            steps_before + iteration, current.mass, options.tolerance, current.load, options.load_tolerance);
+        break;
+      }
+      // The generalised Jacobian's branch per node: full where s > 0,
+      // cavitated where s < 0; a node at the switch (s = 0 to rounding, as
+      // the start's unloaded nodes and an inlet's vanishing pressures) takes
+      // the branch the step moves it into, found by re-solving (semi-smooth
+      // Newton with the directional derivative; Qi & Sun 1993).
+      for (std::size_t j = 0; j < n; ++j) branch_full[j] = x.s[static_cast<Eigen::Index>(j)] >= 0.0 ? 1 : 0;
+      bool singular = false;
+      for (int pass = 0; pass < kBranchPasses; ++pass) {
+        measure(x, residual, true);
+        lu.compute(jacobian_t.transpose());
+        step = lu.solve(-residual);
+        if (!step.allFinite()) {
+          singular = true;
+          break;
+        }
+        bool flipped = false;
+        for (std::size_t j = 0; j < n; ++j) {
+          const auto jj = static_cast<Eigen::Index>(j);
+          if (topology.fixed(j) || std::abs(x.s[jj]) > kSwitchBand) continue;
+          const char wanted = step[jj] >= 0.0 ? 1 : 0;
+          if (wanted != branch_full[j]) {
+            branch_full[j] = wanted;
+            flipped = true;
+          }
+        }
+        if (!flipped) break;
+      }
+      if (singular) {
+        result.status = FilmStatus::failure;
+        result.message = fmt::format("the EHL Newton step {} is singular", iteration + 1);
+        break;
+      }
+      // A trust region on the step: no pressure changes by more than the
+      // pressure scale, h0 by no more than the thinnest film. Then
+      // backtracking on the scaled residual's norm.
+      const double largest_change = step.head(ni).cwiseAbs().maxCoeff();
+      const double film_change = std::abs(step[ni]) / x.film.minCoeff();
+      double lambda = std::min(
+          {1.0, kLargestStep / std::max(largest_change, 1e-300), kLargestStep / std::max(film_change, 1e-300)});
+      bool accepted = false;
+      Measure tried;
+      for (int halving = 0; halving <= 30; ++halving, lambda *= 0.5) {
+        trial.s = x.s + lambda * step.head(ni).array();
+        trial.offset = x.offset + lambda * step[ni];
+        if (!evaluate(trial)) continue;
+        tried = measure(trial, trial_residual, false);
+        if (std::isfinite(tried.norm) && tried.norm <= (1.0 - 1e-4 * lambda) * current.norm) {
+          accepted = true;
+          break;
+        }
+        ++result.line_search_halvings;
+      }
+      if (!accepted) {
+        result.status = FilmStatus::failure;
+        result.message = fmt::format(
+            "the EHL Newton iteration stalled at step {}: no step along the Newton direction lowers the residual "
+            "(relative mass residual {:.3g}, load error {:.3g})",
+            iteration + 1, current.mass, current.load);
+        break;
+      }
+      std::swap(x, trial);
+      current = tried;
+    }
+    if (result.status != FilmStatus::failure || !dry_start || attempt + 1 == kStartFilms.size()) break;
+    // A failed dry start: again from the next start film.
+    steps_before = result.iterations;
+    x = initial;
+    x.offset = dry_offset + kStartFilms[attempt + 1] * edge_gap;
+    if (!evaluate(x)) break;
+    scale_masses();
+    result.status = FilmStatus::failure;
+    result.message.clear();
+  }
+
+  result.pressure = x.pressure;
+  result.fluid_fraction = x.theta;
+  result.film = x.film;
+  result.deformation = x.deformation;
+  result.offset = x.offset;
+  result.load = x.pressure.sum() * area;
+  Eigen::Index centre = 0;
+  gap.minCoeff(&centre);
+  result.central_film_thickness = x.film[centre];
+  result.minimum_film_thickness = x.film.minCoeff();
+  result.max_pressure = x.pressure.maxCoeff();
+  // The check apart from the iteration: the flux-form residual, the
+  // complementarity and the load.
+  result.relative_residual =
+      elastic_film_residual(grid, conditions, laws, x.film, x.pressure, x.theta, options.couette_scheme);
+  result.load_error = std::abs(result.load - w) / w;
+  if (result.converged()) {
+    if (!(result.relative_residual <= 10.0 * options.tolerance && result.load_error <= 10.0 * options.load_tolerance &&
+          satisfies_complementarity(x.pressure, x.theta))) {
+      result.status = FilmStatus::failure;
+      result.message = fmt::format(
+          "the EHL check failed after the Newton iteration stopped: relative mass residual {:.3g}, load error {:.3g}",
+          result.relative_residual, result.load_error);
+    }
+  }
+  result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  return result;
+}
+
+}  // namespace halfspace::lubrication
