@@ -116,6 +116,10 @@ void write_tangential_attributes(const Hdf5Node& node, const TangentialResult& r
       node.write_int64_attribute(name, (*integer)(result));
     } else {
       node.write_string_attribute(name, std::get<TangentialText>(attribute.value)(result));
+    }
+  }
+}
+
 std::span<const FilmAttribute> film_attributes() {
   return kFilmAttributes;
 }

@@ -21,6 +21,7 @@
 #include "halfspace/operators/fft_influence_operator.hpp"
 #include "halfspace/solvers/approach_search.hpp"
 #include "halfspace/solvers/interface_law.hpp"
+#include "halfspace/solvers/loading.hpp"
 #include "halfspace/solvers/solver_options.hpp"
 
 namespace halfspace::solvers {
@@ -493,12 +494,7 @@ SolveResult AdhesiveContactSolver::Impl::solve_displacement(std::span<const doub
     lower[index(k)] = approach - initial_gap[k];
   }
   const double mean_lower = padded ? 0.0 : linalg::sum(comm, m, [&](std::size_t i) { return lower[i]; }) / total;
-  if (!padded && !(mean_lower < 0.0)) {
-    throw InputError(fmt::format(
-        "approach = {} m is invalid for a periodic surface: it must be below the mean initial gap {} m (full contact "
-        "needs infinite pressure there)",
-        approach, approach - mean_lower));
-  }
+  if (!padded && !(mean_lower < 0.0)) check_periodic_approach(approach, approach - mean_lower);
   // The start: the last solution's displacement, K p of the given pressure,
   // or 0, projected onto the constraints.
   if (!start_from_last) {

@@ -47,7 +47,9 @@ TEST(SweepTableTest, ContactFractionIsTheSolversCount) {
   step.result.contact_fraction = 0.25;       // at the wall
   step.statistics.contact_fraction = 0.125;  // p > 0
   for (const SummaryColumn& column : summary_columns()) {
-    if (column.name == "contact_fraction") EXPECT_EQ(column.value(step), 0.25);
+    if (column.name == "contact_fraction") {
+      EXPECT_EQ(column.value(step), 0.25);
+    }
   }
 }
 
