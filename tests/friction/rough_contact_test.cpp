@@ -96,8 +96,8 @@ TEST(RoughFriction, ConjugateGradientsMeetCoulombAndAgreeWithProjectedGradients)
       op, contact.pressure, TangentialLoading::force(0.5 * limit, 0.2 * limit), unloaded, "oblique force");
   EXPECT_NEAR(first.force_x, 0.5 * limit, 1e-9 * limit);
   EXPECT_NEAR(first.force_y, 0.2 * limit, 1e-9 * limit);
-  const TangentialResult second = expect_methods_agree(
-      op, contact.pressure, TangentialLoading::force(0.1 * limit, 0.0), first.state, "reversed force");
+  const TangentialResult second = expect_methods_agree(op, contact.pressure, TangentialLoading::force(0.1 * limit, 0.0),
+                                                       first.state, "reversed force");
   EXPECT_NEAR(second.force_x, 0.1 * limit, 1e-9 * limit);
   const double further = second.state.approach_x + 0.3 * (first.state.approach_x - second.state.approach_x);
   expect_methods_agree(op, contact.pressure, TangentialLoading::displacement(further, second.state.approach_y),
