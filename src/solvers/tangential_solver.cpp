@@ -33,6 +33,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include "halfspace/error.hpp"
@@ -50,6 +51,9 @@ constexpr int kUpdatesBetweenExactProducts = 50;
 // linear update misses the circles' second-order pull; 1, 4 and 10 gave
 // 17, 17 and 20 iterations on the rough test contact).
 constexpr int kConjugateUpdatesBetweenExactProducts = 4;
+// Conjugate gradients that do not halve the gap in this many steps stall
+// (sets swinging back and forth): projected gradients take over.
+constexpr int kStalledConjugateSteps = 100;
 // A traction within this relative distance of mu p is at the limit (a
 // projected traction lies on the circle to rounding).
 constexpr double kAtLimit = 1e-12;
@@ -373,6 +377,19 @@ class Iteration {
     } else {
       exact_displacement();
     }
+  }
+
+  // Hands over from conjugate gradients to projected gradients at the
+  // current iterate (no momentum; t and r hold q and u = C q).
+  void begin_projected_gradient() {
+    exact_displacement();
+    for_each_index(n_, [&](std::size_t i) {
+      f_.tx[i] = f_.qx[i];
+      f_.ty[i] = f_.qy[i];
+      f_.rx[i] = f_.ux[i];
+      f_.ry[i] = f_.uy[i];
+    });
+    momentum_ = 0.0;
   }
 
   double approach_x() const { return delta_x_; }
@@ -734,10 +751,24 @@ TangentialResult TangentialSolver::solve(std::span<const double> pressure, const
     result.message = "gross sliding: the tangential force equals mu P";
   } else {
     it.start();
+    bool conjugate = options_.method == TangentialMethod::conjugate_gradient;
+    double best = std::numeric_limits<double>::infinity();
+    int best_at = 0;
     for (;; ++k) {
       it.evaluate(k);
       if (it.finished(k)) break;
-      if (options_.method == TangentialMethod::conjugate_gradient) {
+      if (conjugate) {
+        // A stall (the gap not halved in kStalledConjugateSteps steps) hands
+        // over to projected gradients, which converge whatever the sets do.
+        if (it.residual() < 0.5 * best) {
+          best = it.residual();
+          best_at = k;
+        } else if (k - best_at > kStalledConjugateSteps) {
+          conjugate = false;
+          it.begin_projected_gradient();
+        }
+      }
+      if (conjugate) {
         it.conjugate();
       } else {
         it.accelerate(inverse_lipschitz);

@@ -16,7 +16,8 @@
 // preconditioned by the inverse of C's Fourier symbol
 // (TangentialOperator::apply_approximate_inverse); or accelerated projected
 // gradients (FISTA with adaptive restart, step 1/L with L the operator's
-// eigenvalue bound), slower but with a convergence guarantee. Both project
+// eigenvalue bound), slower but with a convergence guarantee, which also
+// takes over when the conjugate gradients stall. Both project
 // onto the discs and, under force control, onto the force (every cell
 // shifted alike, then clipped: the exact Euclidean projection).
 //
