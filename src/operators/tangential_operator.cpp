@@ -63,6 +63,9 @@ struct TangentialOperator::Impl {
       const double spread = std::hypot(0.5 * (xx[k] - yy[k]), xy[k]);
       largest = std::max(largest, count * (mean + spread));
     }
+    // The stored symbol carries 1/count; so does the inverse's (count^2 / count).
+    largest_stored = largest / count;
+    inverse_scale = 1.0 / (count * count);
   }
 
   // The symbol with FFTW's 1/N folded in; C_ii is the inverse DFT at zero
@@ -177,7 +180,9 @@ struct TangentialOperator::Impl {
   std::size_t spectrum_cols = 0;
   std::vector<double> xx, yy, xy;  // the real symbol, (spectrum_rows, spectrum_cols)
   kernels::TangentialCoefficients self;
-  double largest = 0.0;  // largest_eigenvalue_bound()
+  double largest = 0.0;         // largest_eigenvalue_bound()
+  double largest_stored = 0.0;  // the same in the stored symbol's scale
+  double inverse_scale = 0.0;   // 1/count^2: the inverse symbol's scale
 };
 
 TangentialOperator::TangentialOperator(const Grid& grid, const ElasticPair& pair, FftPlanning planning)
@@ -224,6 +229,48 @@ void TangentialOperator::apply(std::span<const double> traction_x, std::span<con
   });
   m.backward(0, displacement_x);
   m.backward(1, displacement_y);
+}
+
+// The inverse of the symmetric 2x2 block S = m I + D (D traceless, D^2 =
+// s^2 I, eigenvalues m +- s) is f(m + s) P+ + f(m - s) P-, f(x) = 1/x, with
+// the spectral projectors P+- = (I +- D/s)/2.
+void TangentialOperator::apply_approximate_inverse(std::span<const double> displacement_x,
+                                                   std::span<const double> displacement_y, std::span<double> traction_x,
+                                                   std::span<double> traction_y) {
+  Impl& m = *impl_;
+  assert(displacement_x.size() == m.grid.size() && displacement_y.size() == m.grid.size());
+  assert(traction_x.size() == m.grid.size() && traction_y.size() == m.grid.size());
+  const std::span<std::complex<double>> sx = m.forward(0, displacement_x);
+  const std::span<std::complex<double>> sy = m.forward(1, displacement_y);
+  const double* xx = m.xx.data();
+  const double* yy = m.yy.data();
+  const double* xy = m.xy.data();
+  const double largest = m.largest_stored;
+  const double floor = 1e-9 * largest;
+  const double scale = m.inverse_scale;
+  auto inverse = [&](double eigenvalue) { return scale / (eigenvalue > floor ? eigenvalue : largest); };
+  linalg::for_each_row(m.spectrum_rows, m.spectrum_cols, [&](std::size_t r) {
+    const std::size_t begin = r * m.spectrum_cols;
+    for (std::size_t k = begin; k < begin + m.spectrum_cols; ++k) {
+      const double mean = 0.5 * (xx[k] + yy[k]);
+      const double half_difference = 0.5 * (xx[k] - yy[k]);
+      const double spread = std::hypot(half_difference, xy[k]);
+      const double upper = inverse(mean + spread);
+      const double lower = inverse(mean - spread);
+      const double along = 0.5 * (upper + lower);
+      // (f(m + s) - f(m - s)) / (2 s), zero when the block is a multiple of I.
+      const double across = spread > 0.0 ? 0.5 * (upper - lower) / spread : 0.0;
+      const double ixx = along + across * half_difference;
+      const double iyy = along - across * half_difference;
+      const double ixy = across * xy[k];
+      const std::complex<double> ux = sx[k];
+      const std::complex<double> uy = sy[k];
+      sx[k] = ixx * ux + ixy * uy;
+      sy[k] = ixy * ux + iyy * uy;
+    }
+  });
+  m.backward(0, traction_x);
+  m.backward(1, traction_y);
 }
 
 }  // namespace halfspace::operators

@@ -1,11 +1,30 @@
-// The partial-slip problem of tangential_solver.hpp by accelerated projected
-// gradients (Nesterov 1983; Beck & Teboulle 2009, FISTA) with adaptive
-// restart (O'Donoghue & Candes 2015): each iteration evaluates the slip
-// increment ds (the gradient) and the approach, takes a step 1/L from the
-// extrapolated point, projects onto the discs (and the force) and makes
-// u = C q exactly: one product per iteration. A projected conjugate
-// gradient in Polonsky & Keer's manner was tried first and stalled on the
-// curved (disc) constraints (docs/solvers.md).
+// The partial-slip problem of tangential_solver.hpp. Each iteration
+// evaluates the slip increment ds (the gradient) and the approach, measures
+// the duality gap, steps, projects onto the discs (and the force) and makes
+// u = C q exactly.
+//
+// Conjugate gradients (the default): Polonsky & Keer's (1999) active-set
+// conjugate gradients carried from the half-plane p >= 0 to the discs
+// |q| <= mu p, as a Riemannian conjugate gradient on the product of the
+// stick cells' planes and the slipping cells' circles: a slipping cell moves
+// along its circle only, where the objective's second derivative gains the
+// curvature term lambda/r (lambda = -ds.q/r >= 0 its multiplier); it
+// returns to the stick set once ds points outward (lambda < 0) and a stick
+// cell pushed over its disc is clipped onto the circle. The gradient is
+// preconditioned by the inverse of C's Fourier symbol restricted to the
+// sets (as pk-fourier does for the normal problem), scaled on both sides on
+// each slipping cell by sqrt(C_ii / (C_ii + lambda/r)): the curvature, which
+// the symbol does not see, dominates on cells of small mu p, and without
+// the scaling a rough contact takes ten times the iterations (docs/
+// development-log.md). Polak-Ribiere momentum, which restarts
+// whenever a set changes, and under force control the directions are kept
+// orthogonal to the force's constraint. Three FFT products per iteration
+// (C d, the preconditioner, C q).
+//
+// Projected gradients (TangentialMethod::projected_gradient): accelerated
+// (Nesterov 1983; Beck & Teboulle 2009, FISTA) with adaptive restart
+// (O'Donoghue & Candes 2015): a step 1/L from the extrapolated point, one
+// product per iteration, iterations growing with the grid.
 #include "halfspace/solvers/tangential_solver.hpp"
 
 #include <fmt/format.h>
@@ -14,6 +33,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include "halfspace/error.hpp"
@@ -27,19 +47,31 @@ using linalg::sums;
 
 // u is exact after every step; the counter stays for evaluate()'s rule.
 constexpr int kUpdatesBetweenExactProducts = 50;
+// Conjugate gradients: u = C q exactly at least every this many steps (the
+// linear update misses the circles' second-order pull; 1, 4 and 10 gave
+// 17, 17 and 20 iterations on the rough test contact).
+constexpr int kConjugateUpdatesBetweenExactProducts = 4;
+// Conjugate gradients that do not halve the gap in this many steps stall
+// (sets swinging back and forth): projected gradients take over.
+constexpr int kStalledConjugateSteps = 100;
 // A traction within this relative distance of mu p is at the limit (a
 // projected traction lies on the circle to rounding).
 constexpr double kAtLimit = 1e-12;
 // A force within this relative distance of mu P is gross sliding.
 constexpr double kSlidingForce = 1e-9;
 
+// |(x, y)|: hypot's overflow guard is not needed at tractions in Pa.
+double magnitude(double x, double y) {
+  return std::sqrt(x * x + y * y);
+}
+
 bool at_limit(double qx, double qy, double radius) {
-  return radius > 0.0 && std::hypot(qx, qy) >= radius * (1.0 - kAtLimit);
+  return radius > 0.0 && magnitude(qx, qy) >= radius * (1.0 - kAtLimit);
 }
 
 // The nearest point of the disc |q| <= radius.
 std::pair<double, double> clipped(double x, double y, double radius) {
-  const double m = std::hypot(x, y);
+  const double m = magnitude(x, y);
   if (m <= radius) return {x, y};
   if (!(radius > 0.0)) return {0.0, 0.0};
   const double f = radius / m;
@@ -70,7 +102,37 @@ struct Fields {
   double* ty;
   double* rx;
   double* ry;
+  double* wx;  // conjugate gradients only
+  double* wy;
 };
+
+// A 2-vector and a symmetric 2x2 matrix.
+struct Pair {
+  double x = 0.0;
+  double y = 0.0;
+};
+struct Symmetric {
+  double xx = 0.0;
+  double xy = 0.0;
+  double yy = 0.0;
+};
+
+// The pseudo-inverse of s applied to v: s's eigenvalues below 1e-12 of its
+// trace count as zero (the force's constraint is degenerate when every cell
+// slips along one line).
+Pair solve_pseudo(const Symmetric& s, const Pair& v) {
+  const double mean = 0.5 * (s.xx + s.yy);
+  const double half_difference = 0.5 * (s.xx - s.yy);
+  const double spread = std::hypot(half_difference, s.xy);
+  const double floor = 1e-12 * 2.0 * std::abs(mean);
+  auto inverse = [&](double e) { return e > floor ? 1.0 / e : 0.0; };
+  const double upper = inverse(mean + spread);
+  const double lower = inverse(mean - spread);
+  const double along = 0.5 * (upper + lower);
+  const double across = spread > 0.0 ? 0.5 * (upper - lower) / spread : 0.0;
+  return {(along + across * half_difference) * v.x + across * s.xy * v.y,
+          across * s.xy * v.x + (along - across * half_difference) * v.y};
+}
 
 class Iteration {
  public:
@@ -163,6 +225,173 @@ class Iteration {
     exact_displacement();
   }
 
+  // One preconditioned conjugate-gradient step on the stick/slip sets (the
+  // file comment); g holds ds from evaluate(), t the last preconditioned
+  // gradient z, r the last direction d, w is C d.
+  void conjugate() {
+    const bool force = problem_.force_controlled;
+    // The reduced gradient R g (pass A), and the projector onto the force's
+    // constraint: sum over stick cells of v plus over slipping cells of
+    // their tangent part vanishes; Pi v = v - R a with a = Gram^-1 (sum R v).
+    const auto [released, g_dot_z_old, gram_xx, gram_xy, gram_yy, sum_x, sum_y] =
+        sums<7>(comm_, n_, [&](std::size_t i) {
+          const Cell c = cell(i);
+          if (!c.contact) return std::array<double, 7>{};
+          const Pair g = c.tangent(f_.gx[i], f_.gy[i]);
+          return std::array<double, 7>{c.released ? 1.0 : 0.0,
+                                       g.x * f_.tx[i] + g.y * f_.ty[i],
+                                       c.slip ? 1.0 - c.nx * c.nx : 1.0,
+                                       c.slip ? -c.nx * c.ny : 0.0,
+                                       c.slip ? 1.0 - c.ny * c.ny : 1.0,
+                                       g.x,
+                                       g.y};
+        });
+    const Symmetric gram{gram_xx, gram_xy, gram_yy};
+    const Pair shift_g = force ? solve_pseudo(gram, {sum_x, sum_y}) : Pair{};
+    // Pass B: Pi R g into t, then z = M t in place.
+    for_each_index(n_, [&](std::size_t i) {
+      const Pair g = projected_gradient(i, shift_g);
+      const double scale = cell(i).scale;
+      f_.tx[i] = scale * g.x;
+      f_.ty[i] = scale * g.y;
+    });
+    op_.apply_approximate_inverse({f_.tx, n_}, {f_.ty, n_}, {f_.tx, n_}, {f_.ty, n_});
+    ++result_.preconditioner_applications;
+    // Pass C: z = Pi R M Pi R g.
+    const auto [zx, zy] = sums<2>(comm_, n_, [&](std::size_t i) {
+      const Cell c = cell(i);
+      if (!c.contact) return std::array<double, 2>{};
+      const Pair z = c.restrict(f_.tx[i], f_.ty[i]);
+      return std::array<double, 2>{z.x, z.y};
+    });
+    const Pair shift_z = force ? solve_pseudo(gram, {zx, zy}) : Pair{};
+    const auto [rho, g_dot_d_old] = sums<2>(comm_, n_, [&](std::size_t i) {
+      const Cell c = cell(i);
+      if (!c.contact) {
+        f_.tx[i] = 0.0;
+        f_.ty[i] = 0.0;
+        return std::array<double, 2>{};
+      }
+      const Pair z = c.restrict(f_.tx[i], f_.ty[i]);
+      const Pair a = c.tangent(shift_z.x, shift_z.y);
+      f_.tx[i] = z.x - a.x;
+      f_.ty[i] = z.y - a.y;
+      const Pair g = projected_gradient(i, shift_g);
+      const Pair d = c.tangent(f_.rx[i], f_.ry[i]);
+      return std::array<double, 2>{g.x * f_.tx[i] + g.y * f_.ty[i], g.x * d.x + g.y * d.y};
+    });
+    // Polak-Ribiere's momentum (with the changing restriction the flexible
+    // form), none after a set changed or if the direction would not descend.
+    double beta = 0.0;
+    if (sets_unchanged_ && released == 0.0 && rho_old_ > 0.0) {
+      beta = std::max(0.0, (rho - g_dot_z_old) / rho_old_);
+      if (!(rho + beta * g_dot_d_old > 0.0)) beta = 0.0;
+    }
+    rho_old_ = rho;
+    if (!(rho > 0.0)) {
+      sets_unchanged_ = false;
+      return;  // the reduced gradient vanishes: only the sets can move
+    }
+    // Pass D: d = z + beta R d_old.
+    for_each_index(n_, [&](std::size_t i) {
+      const Cell c = cell(i);
+      const Pair d = c.contact ? c.tangent(f_.rx[i], f_.ry[i]) : Pair{};
+      f_.rx[i] = f_.tx[i] + beta * d.x;
+      f_.ry[i] = f_.ty[i] + beta * d.y;
+    });
+    op_.apply({f_.rx, n_}, {f_.ry, n_}, {f_.wx, n_}, {f_.wy, n_});
+    ++result_.operator_applications;
+    // The step minimising the quadratic model along d (curvature included).
+    const auto [descent, model] = sums<2>(comm_, n_, [&](std::size_t i) {
+      const Cell c = cell(i);
+      if (!c.contact) return std::array<double, 2>{};
+      const Pair g = projected_gradient(i, shift_g);
+      const double dx = f_.rx[i];
+      const double dy = f_.ry[i];
+      return std::array<double, 2>{g.x * dx + g.y * dy,
+                                   dx * f_.wx[i] + dy * f_.wy[i] + c.curvature * (dx * dx + dy * dy)};
+    });
+    if (!(descent > 0.0 && model > 0.0)) {
+      sets_unchanged_ = false;
+      return;
+    }
+    const double alpha = descent / model;
+    // Pass E: q -= alpha d, slipping cells back onto their circles, stick
+    // cells over their discs clipped onto them.
+    const auto [clipped_cells, stick_cells, sum_qx, sum_qy] = sums<4>(comm_, n_, [&](std::size_t i) {
+      const Cell c = cell(i);
+      if (!c.contact) return std::array<double, 4>{};
+      const double x = f_.qx[i] - alpha * f_.rx[i];
+      const double y = f_.qy[i] - alpha * f_.ry[i];
+      const double radius = radius_[i];
+      const double m = magnitude(x, y);
+      if (c.slip || m > radius) {
+        const double scale = m > 0.0 ? radius / m : 0.0;
+        f_.qx[i] = scale * x;
+        f_.qy[i] = scale * y;
+        return std::array<double, 4>{c.slip ? 0.0 : 1.0, 0.0, f_.qx[i], f_.qy[i]};
+      }
+      f_.qx[i] = x;
+      f_.qy[i] = y;
+      return std::array<double, 4>{0.0, 1.0, x, y};
+    });
+    sets_unchanged_ = clipped_cells == 0.0 && released == 0.0;
+    bool linear = clipped_cells == 0.0;
+    if (force) {
+      // The directions keep the force; what the circles and clips moved is
+      // given back by the stick cells alike, or, if that pushes one over its
+      // disc, by the exact projection onto the force and the discs.
+      const double ex = problem_.target_x - sum_qx;
+      const double ey = problem_.target_y - sum_qy;
+      bool exact = stick_cells == 0.0;
+      if (!exact && (ex != 0.0 || ey != 0.0)) {
+        const double sx = ex / stick_cells;
+        const double sy = ey / stick_cells;
+        const auto [over] = sums<1>(comm_, n_, [&](std::size_t i) {
+          const double radius = radius_[i];
+          if (!(radius > 0.0) || at_limit(f_.qx[i], f_.qy[i], radius)) return std::array<double, 1>{};
+          f_.qx[i] += sx;
+          f_.qy[i] += sy;
+          return std::array<double, 1>{magnitude(f_.qx[i], f_.qy[i]) > radius ? 1.0 : 0.0};
+        });
+        exact = over > 0.0;
+      }
+      if (exact) {
+        const auto [sx, sy] = force_shift([&](std::size_t i) { return std::pair{f_.qx[i], f_.qy[i]}; });
+        for_each_index(n_, [&](std::size_t i) {
+          std::tie(f_.qx[i], f_.qy[i]) = clipped(f_.qx[i] + sx, f_.qy[i] + sy, radius_[i]);
+        });
+        linear = false;
+        sets_unchanged_ = false;
+      }
+    }
+    // u follows q by the product C d already made, up to the circles'
+    // second-order pull, while no cell was clipped; exactly every few steps
+    // and always before the stop (evaluate()).
+    if (linear && updates_since_exact_ + 1 < kConjugateUpdatesBetweenExactProducts) {
+      for_each_index(n_, [&](std::size_t i) {
+        f_.ux[i] -= alpha * f_.wx[i];
+        f_.uy[i] -= alpha * f_.wy[i];
+      });
+      ++updates_since_exact_;
+    } else {
+      exact_displacement();
+    }
+  }
+
+  // Hands over from conjugate gradients to projected gradients at the
+  // current iterate (no momentum; t and r hold q and u = C q).
+  void begin_projected_gradient() {
+    exact_displacement();
+    for_each_index(n_, [&](std::size_t i) {
+      f_.tx[i] = f_.qx[i];
+      f_.ty[i] = f_.qy[i];
+      f_.rx[i] = f_.ux[i];
+      f_.ry[i] = f_.uy[i];
+    });
+    momentum_ = 0.0;
+  }
+
   double approach_x() const { return delta_x_; }
   double approach_y() const { return delta_y_; }
   double residual() const { return residual_; }
@@ -229,6 +458,63 @@ class Iteration {
     return {sx, sy};
   }
 
+  // A contact cell's part in the reduced problem: stick (both components
+  // free; also a cell at the limit whose slip points outward, `released`) or
+  // slip (only the tangent to its circle free, curvature lambda/r).
+  struct Cell {
+    bool contact = false;
+    bool slip = false;
+    bool released = false;
+    double nx = 0.0;
+    double ny = 0.0;
+    double curvature = 0.0;
+    double scale = 1.0;  // the diagonal scaling of the preconditioner (sqrt)
+    // The cell's restriction of a vector: itself, or its tangent part.
+    Pair restrict(double x, double y) const {
+      if (!slip) return {x, y};
+      const double along = scale * (x * nx + y * ny);
+      return {scale * x - along * nx, scale * y - along * ny};
+    }
+    Pair tangent(double x, double y) const {
+      if (!slip) return {x, y};
+      const double along = x * nx + y * ny;
+      return {x - along * nx, y - along * ny};
+    }
+  };
+
+  Cell cell(std::size_t i) const {
+    const double radius = radius_[i];
+    Cell c;
+    if (!(radius > 0.0)) return c;
+    c.contact = true;
+    const double qx = f_.qx[i];
+    const double qy = f_.qy[i];
+    if (!at_limit(qx, qy, radius)) return c;
+    const double m = magnitude(qx, qy);
+    const double nx = qx / m;
+    const double ny = qy / m;
+    const double lambda = -(f_.gx[i] * nx + f_.gy[i] * ny);
+    if (lambda < 0.0) {
+      c.released = true;
+      return c;
+    }
+    c.slip = true;
+    c.nx = nx;
+    c.ny = ny;
+    c.curvature = lambda / radius;
+    c.scale = std::sqrt(self_ / (self_ + c.curvature));
+    return c;
+  }
+
+  // Pi R g at cell i (zero out of contact).
+  Pair projected_gradient(std::size_t i, const Pair& shift) const {
+    const Cell c = cell(i);
+    if (!c.contact) return {};
+    const Pair g = c.tangent(f_.gx[i], f_.gy[i]);
+    const Pair a = c.tangent(shift.x, shift.y);
+    return {g.x - a.x, g.y - a.y};
+  }
+
   void exact_displacement() {
     op_.apply({f_.qx, n_}, {f_.qy, n_}, {f_.ux, n_}, {f_.uy, n_});
     ++result_.operator_applications;
@@ -269,8 +555,8 @@ class Iteration {
       const double gy = dy - delta_y;
       f_.gx[i] = gx;
       f_.gy[i] = gy;
-      const double gap = radius * std::hypot(gx, gy) + f_.qx[i] * gx + f_.qy[i] * gy;
-      return std::pair{std::array<double, 2>{std::max(gap, 0.0), 0.0}, std::hypot(dx, dy)};
+      const double gap = radius * magnitude(gx, gy) + f_.qx[i] * gx + f_.qy[i] * gy;
+      return std::pair{std::array<double, 2>{std::max(gap, 0.0), 0.0}, magnitude(dx, dy)};
     });
     const double scale = problem_.capacity * (std::max(settled.max, 0.0) + std::hypot(delta_x, delta_y));
     residual_ = settled.sums[0] == 0.0 ? 0.0 : settled.sums[0] / scale;
@@ -287,11 +573,14 @@ class Iteration {
   const double* up_y_;
   const double* radius_;
 
+  const double self_ = op_.self_influence().xx;
   int updates_since_exact_ = 0;
   double delta_x_ = 0.0;  // the approach's increment over the step
   double delta_y_ = 0.0;
   double residual_ = 0.0;
   double momentum_ = 0.0;
+  double rho_old_ = 0.0;         // conjugate gradients: the last z . Pi R g
+  bool sets_unchanged_ = false;  // no cell changed set in the last step
 };
 
 void check_size(std::string_view what, std::size_t got, std::size_t expected) {
@@ -333,6 +622,12 @@ void TangentialOptions::validate() const {
   if (max_iterations < 1) {
     throw InputError(fmt::format("max_iterations = {} is invalid: must be at least 1", max_iterations));
   }
+  if (method != TangentialMethod::conjugate_gradient && method != TangentialMethod::projected_gradient) {
+    throw InputError(
+        fmt::format("tangential method {} is invalid: allowed are conjugate_gradient (0) and "
+                    "projected_gradient (1)",
+                    static_cast<int>(method)));
+  }
 }
 
 TangentialSolver::TangentialSolver(TangentialOperator& op, TangentialOptions options)
@@ -347,6 +642,10 @@ TangentialSolver::TangentialSolver(TangentialOperator& op, TangentialOptions opt
   const auto n = static_cast<Eigen::Index>(op_.local_size());
   radius_.setZero(n);
   for (Eigen::ArrayXd* field : {&gx_, &gy_, &tx_, &ty_, &rx_, &ry_}) field->setZero(n);
+  if (options_.method == TangentialMethod::conjugate_gradient) {
+    wx_.setZero(n);
+    wy_.setZero(n);
+  }
 }
 
 TangentialResult TangentialSolver::solve(std::span<const double> pressure, const TangentialLoading& loading,
@@ -412,9 +711,10 @@ TangentialResult TangentialSolver::solve(std::span<const double> pressure, const
                 tx_.data(),
                 ty_.data(),
                 rx_.data(),
-                ry_.data()};
-  tx_.setZero();
-  ty_.setZero();
+                ry_.data(),
+                wx_.data(),
+                wy_.data()};
+  for (Eigen::ArrayXd* field : {&tx_, &ty_, &rx_, &ry_}) field->setZero();
   Iteration it(op_, options_, problem, result, fields);
   const double inverse_lipschitz = 1.0 / op_.largest_eigenvalue_bound();
   double delta_x = 0.0;
@@ -451,10 +751,28 @@ TangentialResult TangentialSolver::solve(std::span<const double> pressure, const
     result.message = "gross sliding: the tangential force equals mu P";
   } else {
     it.start();
+    bool conjugate = options_.method == TangentialMethod::conjugate_gradient;
+    double best = std::numeric_limits<double>::infinity();
+    int best_at = 0;
     for (;; ++k) {
       it.evaluate(k);
       if (it.finished(k)) break;
-      it.accelerate(inverse_lipschitz);
+      if (conjugate) {
+        // A stall (the gap not halved in kStalledConjugateSteps steps) hands
+        // over to projected gradients, which converge whatever the sets do.
+        if (it.residual() < 0.5 * best) {
+          best = it.residual();
+          best_at = k;
+        } else if (k - best_at > kStalledConjugateSteps) {
+          conjugate = false;
+          it.begin_projected_gradient();
+        }
+      }
+      if (conjugate) {
+        it.conjugate();
+      } else {
+        it.accelerate(inverse_lipschitz);
+      }
     }
     delta_x = it.approach_x();
     delta_y = it.approach_y();

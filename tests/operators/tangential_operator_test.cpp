@@ -109,6 +109,70 @@ TEST(TangentialOperator, PeriodicModeIsMultipliedByTheSymbol) {
   }
 }
 
+// The preconditioner: on a periodic grid the exact inverse of C apart from
+// the mean mode (C's null space, where M keeps the largest eigenvalue's
+// inverse), so M C t returns t less its mean (t made of modes below the
+// Nyquist frequencies, where the odd xy part of a real field's symbol is
+// lost); on a free grid only an approximate inverse, symmetric and positive
+// definite: t . M u = u . M t and t . M t > 0.
+TEST(TangentialOperator, ApproximateInverseInvertsThePeriodicSymbol) {
+  const Grid grid = Grid::plane(32, 16, 1e-6, 2e-6, Boundary::periodic);
+  TangentialOperator op(grid, kPair);
+  const std::size_t n = grid.size();
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> amplitude(-1e6, 1e6);
+  std::uniform_int_distribution<int> kx(-15, 15);
+  std::uniform_int_distribution<int> ky(-7, 7);
+  std::uniform_real_distribution<double> phase(0.0, 2.0 * std::numbers::pi);
+  Eigen::ArrayXd tx = Eigen::ArrayXd::Constant(static_cast<Eigen::Index>(n), 3e5);
+  Eigen::ArrayXd ty = Eigen::ArrayXd::Constant(static_cast<Eigen::Index>(n), -2e5);
+  for (int mode = 0; mode < 12; ++mode) {
+    const double qx = 2.0 * std::numbers::pi * kx(rng) / 32e-6;
+    const double qy = 2.0 * std::numbers::pi * ky(rng) / 32e-6;
+    const double ax = amplitude(rng);
+    const double ay = amplitude(rng);
+    const double shift = phase(rng);
+    for (std::size_t j = 0; j < grid.ny(); ++j) {
+      for (std::size_t i = 0; i < grid.nx(); ++i) {
+        const double angle = qx * static_cast<double>(i) * grid.dx() + qy * static_cast<double>(j) * grid.dy() + shift;
+        tx[static_cast<Eigen::Index>(j * grid.nx() + i)] += ax * std::cos(angle);
+        ty[static_cast<Eigen::Index>(j * grid.nx() + i)] += ay * std::cos(angle);
+      }
+    }
+  }
+  Eigen::ArrayXd ux(static_cast<Eigen::Index>(n));
+  Eigen::ArrayXd uy(static_cast<Eigen::Index>(n));
+  op.apply({tx.data(), n}, {ty.data(), n}, {ux.data(), n}, {uy.data(), n});
+  op.apply_approximate_inverse({ux.data(), n}, {uy.data(), n}, {ux.data(), n}, {uy.data(), n});  // in place
+  const double largest = std::max(tx.abs().maxCoeff(), ty.abs().maxCoeff());
+  EXPECT_LE((ux - (tx - tx.mean())).abs().maxCoeff(), 1e-12 * largest);
+  EXPECT_LE((uy - (ty - ty.mean())).abs().maxCoeff(), 1e-12 * largest);
+}
+
+TEST(TangentialOperator, ApproximateInverseIsSymmetricPositiveOnFreeGrids) {
+  for (const Grid& grid : {Grid::plane(24, 20, 1e-6, 1.5e-6, Boundary::free), Grid::line(40, 1e-6, Boundary::free)}) {
+    TangentialOperator op(grid, kPair);
+    const std::size_t n = grid.size();
+    const Eigen::ArrayXd ax = random_field(n, 5);
+    const Eigen::ArrayXd ay =
+        grid.dimension() == 1 ? Eigen::ArrayXd::Zero(static_cast<Eigen::Index>(n)).eval() : random_field(n, 6);
+    const Eigen::ArrayXd bx = random_field(n, 7);
+    const Eigen::ArrayXd by =
+        grid.dimension() == 1 ? Eigen::ArrayXd::Zero(static_cast<Eigen::Index>(n)).eval() : random_field(n, 8);
+    Eigen::ArrayXd mx(static_cast<Eigen::Index>(n));
+    Eigen::ArrayXd my(static_cast<Eigen::Index>(n));
+    Eigen::ArrayXd nx(static_cast<Eigen::Index>(n));
+    Eigen::ArrayXd ny(static_cast<Eigen::Index>(n));
+    op.apply_approximate_inverse({ax.data(), n}, {ay.data(), n}, {mx.data(), n}, {my.data(), n});
+    op.apply_approximate_inverse({bx.data(), n}, {by.data(), n}, {nx.data(), n}, {ny.data(), n});
+    const double b_m_a = (bx * mx + by * my).sum();
+    const double a_m_b = (ax * nx + ay * ny).sum();
+    EXPECT_NEAR(b_m_a, a_m_b, 1e-10 * std::abs(a_m_b)) << grid.shape_string();
+    EXPECT_GT((ax * mx + ay * my).sum(), 0.0) << grid.shape_string();
+    EXPECT_GT((bx * nx + by * ny).sum(), 0.0) << grid.shape_string();
+  }
+}
+
 // A smooth traction patch (radius L/16) on a periodic grid of side L and on a
 // free grid of the same cells: near the patch the periodic images add a
 // nearly uniform field (the mean, removed), so the displacement differences

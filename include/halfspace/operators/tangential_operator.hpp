@@ -40,6 +40,18 @@ class TangentialOperator {
   void apply(std::span<const double> traction_x, std::span<const double> traction_y, std::span<double> displacement_x,
              std::span<double> displacement_y);
 
+  // (t_x, t_y) = M (u_x, u_y): an approximate inverse of C for
+  // preconditioning, each mode of the operator's own (padded) transform
+  // multiplied by the inverse of its 2x2 symbol (periodic grids: the exact
+  // inverse, q (delta_ab + B/(A - B) n_a n_b)/A of tangential_fourier.hpp,
+  // outside the mean mode). Modes whose eigenvalue is zero or negative (the
+  // periodic mean mode, a padded circulant's) take the largest instead, so M
+  // is symmetric positive definite. Same spans and aliasing rules as
+  // apply(); shares its transforms, so the two must not run at once.
+  // Allocates nothing.
+  void apply_approximate_inverse(std::span<const double> displacement_x, std::span<const double> displacement_y,
+                                 std::span<double> traction_x, std::span<double> traction_y);
+
   // The block C_ii (m/Pa) of a cell under unit traction on itself alone, the
   // same for every cell (xy is zero: the cell is symmetric).
   kernels::TangentialCoefficients self_influence() const;

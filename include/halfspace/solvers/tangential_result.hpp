@@ -49,7 +49,8 @@ struct TangentialResult {
   double residual = 0.0;  // the stopping measure (tangential_solver.hpp)
   double tolerance = 0.0;
   std::vector<double> residual_history;
-  int operator_applications = 0;  // products u = C t
+  int operator_applications = 0;        // products u = C t
+  int preconditioner_applications = 0;  // products t = M u (conjugate gradients)
   double wall_seconds = 0.0;
 
   bool converged() const { return status == SolveStatus::converged; }

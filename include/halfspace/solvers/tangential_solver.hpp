@@ -9,10 +9,17 @@
 // discs (docs/theory.md, "Friction")
 //   minimise 1/2 q.C q - q.(C q_prev + delta - delta_prev)  over |q_i| <= mu p_i,
 // with, under force control, sum_i q_i A_cell = Q and delta its multiplier.
-// It is solved by accelerated projected gradients (FISTA with adaptive
-// restart, step 1/L with L the operator's eigenvalue bound): projection onto
-// the discs and, under force control, onto the force (every cell shifted
-// alike, then clipped: the exact Euclidean projection).
+// Two methods (TangentialMethod): by default preconditioned conjugate
+// gradients on the stick/slip sets in Polonsky & Keer's manner, stick cells
+// free in both components, slipping cells only along their circle (with its
+// curvature), the sets updated every iteration and the directions
+// preconditioned by the inverse of C's Fourier symbol
+// (TangentialOperator::apply_approximate_inverse); or accelerated projected
+// gradients (FISTA with adaptive restart, step 1/L with L the operator's
+// eigenvalue bound), slower but with a convergence guarantee, which also
+// takes over when the conjugate gradients stall. Both project
+// onto the discs and, under force control, onto the force (every cell
+// shifted alike, then clipped: the exact Euclidean projection).
 //
 // Stopping measure (the duality gap of the maximum-dissipation principle,
 // zero exactly when the conditions hold, checked on an exact product):
@@ -32,10 +39,16 @@
 
 namespace halfspace::solvers {
 
+enum class TangentialMethod {
+  conjugate_gradient,  // preconditioned, on the stick/slip sets (default)
+  projected_gradient,  // FISTA with restart, unpreconditioned
+};
+
 struct TangentialOptions {
   double friction_coefficient = 0.0;  // mu, >= 0 and finite
   double tolerance = 1e-6;            // of the residual above
   int max_iterations = 10000;
+  TangentialMethod method = TangentialMethod::conjugate_gradient;
   // Called once per iteration with (iteration, residual); may be empty.
   std::function<void(int, double)> progress;
 
@@ -68,13 +81,16 @@ class TangentialSolver {
   TangentialOperator& op_;
   TangentialOptions options_;
   Eigen::ArrayXd radius_;  // mu p
-  Eigen::ArrayXd gx_, gy_, tx_, ty_, rx_, ry_;
+  // The slip increment, then workspace: the methods' search direction and
+  // previous iterate or preconditioned gradient, C times the direction.
+  Eigen::ArrayXd gx_, gy_, tx_, ty_, rx_, ry_, wx_, wy_;
 };
 
 }  // namespace halfspace::solvers
 
 // The library and its front ends name these without the folder's namespace.
 namespace halfspace {
+using solvers::TangentialMethod;
 using solvers::TangentialOptions;
 using solvers::TangentialSolver;
 }  // namespace halfspace

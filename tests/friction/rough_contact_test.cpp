@@ -1,0 +1,108 @@
+// Tangential steps on a rough periodic contact (many separate spots, some
+// sticking, some slipping), solved by both methods: each result meets the
+// Coulomb conditions, checked by a fresh product apart from the solver's
+// residual, and the two methods (preconditioned conjugate gradients on the
+// stick/slip sets, and projected gradients) agree on the traction, the
+// approach and the stick set.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "friction/friction_checks.hpp"
+#include "halfspace/geometry/builtin_surface.hpp"
+#include "halfspace/solvers/solver_factory.hpp"
+#include "halfspace/solvers/tangential_solver.hpp"
+#include "halfspace/surface/self_affine.hpp"
+#include "support/pk_solvers.hpp"
+
+namespace halfspace {
+namespace {
+
+constexpr ElasticBody kSteel{2.1e11, 0.3};
+constexpr double kMu = 0.3;
+constexpr std::size_t kCells = 64;
+constexpr double kSpacing = 1e-6;  // m
+
+struct RoughContact {
+  Grid grid;
+  SolveResult contact;
+};
+
+RoughContact rough_contact() {
+  const Grid grid = Grid::plane(kCells, kCells, kSpacing, kSpacing, Boundary::periodic);
+  surface::SelfAffineSpec spec;
+  spec.hurst = 0.8;
+  spec.short_cutoff = 4e-6;
+  spec.rms_slope = 0.1;
+  spec.seed = 3;
+  const Eigen::ArrayXd gap = geometry::initial_gap_from_heights(surface::make_self_affine_surface(grid, spec));
+  const double e_star = ElasticPair::similar(kSteel).composite_modulus();
+  const auto normal = solvers::make_solver(grid, e_star, testing::test_options(solvers::SolverType::pk_fourier));
+  return {grid, normal->solve({gap.data(), grid.size()}, Loading::mean_pressure(0.04 * e_star * 0.1))};
+}
+
+TangentialResult step(TangentialOperator& op, solvers::TangentialMethod method, const Eigen::ArrayXd& pressure,
+                      const TangentialLoading& loading, const TangentialState& previous) {
+  solvers::TangentialOptions options;
+  options.friction_coefficient = kMu;
+  options.tolerance = 1e-10;
+  options.max_iterations = 50000;
+  options.method = method;
+  TangentialSolver solver(op, options);
+  return solver.solve({pressure.data(), op.local_size()}, loading, previous);
+}
+
+// Both methods on one step; the conjugate gradients' result checked and
+// compared. Returns the conjugate gradients' result for the next step.
+TangentialResult expect_methods_agree(TangentialOperator& op, const Eigen::ArrayXd& pressure,
+                                      const TangentialLoading& loading, const TangentialState& previous,
+                                      const char* what) {
+  const TangentialResult cg = step(op, solvers::TangentialMethod::conjugate_gradient, pressure, loading, previous);
+  const TangentialResult pg = step(op, solvers::TangentialMethod::projected_gradient, pressure, loading, previous);
+  EXPECT_TRUE(cg.converged()) << what << ": " << cg.message;
+  EXPECT_TRUE(pg.converged()) << what << ": " << pg.message;
+  const double limit = kMu * pressure.maxCoeff();
+  const double traction = std::max((cg.state.shear_x - pg.state.shear_x).abs().maxCoeff(),
+                                   (cg.state.shear_y - pg.state.shear_y).abs().maxCoeff());
+  const double scale = std::max((cg.state.displacement_x - previous.displacement_x).abs().maxCoeff(),
+                                (cg.state.displacement_y - previous.displacement_y).abs().maxCoeff());
+  const double approach =
+      std::hypot(cg.state.approach_x - pg.state.approach_x, cg.state.approach_y - pg.state.approach_y);
+  std::printf(
+      "rough %zu^2, %s: stick %.3f (projected gradients %.3f), traction difference %.2e mu p_max, approach %.2e, "
+      "iterations %d against %d\n",
+      kCells, what, cg.stick_fraction, pg.stick_fraction, traction / limit, approach / scale, cg.iterations,
+      pg.iterations);
+  EXPECT_LE(traction, 1e-3 * limit) << what;
+  EXPECT_LE(approach, 1e-4 * scale) << what;
+  EXPECT_NEAR(cg.stick_fraction, pg.stick_fraction, 0.01) << what;
+  EXPECT_GT(cg.stick_fraction, 0.05) << what;  // partial slip: both sets matter
+  EXPECT_LT(cg.stick_fraction, 0.95) << what;
+  testing::expect_coulomb_conditions(op, pressure, kMu, previous, cg, 1e-6 * scale, 1e-2);
+  return cg;
+}
+
+TEST(RoughFriction, ConjugateGradientsMeetCoulombAndAgreeWithProjectedGradients) {
+  const auto [grid, contact] = rough_contact();
+  ASSERT_TRUE(contact.converged());
+  ASSERT_GT(contact.contact_fraction, 0.02);
+  TangentialOperator op(grid, ElasticPair::similar(kSteel));
+  const double limit = kMu * contact.total_force;
+  const TangentialState unloaded = TangentialState::unloaded(grid.size());
+  // Force control, oblique, from rest; then a reversal; then displacement
+  // control a little further on.
+  const TangentialResult first = expect_methods_agree(
+      op, contact.pressure, TangentialLoading::force(0.5 * limit, 0.2 * limit), unloaded, "oblique force");
+  EXPECT_NEAR(first.force_x, 0.5 * limit, 1e-9 * limit);
+  EXPECT_NEAR(first.force_y, 0.2 * limit, 1e-9 * limit);
+  const TangentialResult second = expect_methods_agree(op, contact.pressure, TangentialLoading::force(0.1 * limit, 0.0),
+                                                       first.state, "reversed force");
+  EXPECT_NEAR(second.force_x, 0.1 * limit, 1e-9 * limit);
+  const double further = second.state.approach_x + 0.3 * (first.state.approach_x - second.state.approach_x);
+  expect_methods_agree(op, contact.pressure, TangentialLoading::displacement(further, second.state.approach_y),
+                       second.state, "displacement");
+}
+
+}  // namespace
+}  // namespace halfspace
