@@ -373,13 +373,15 @@ def subsurface_stress(result: _core.Result, depths: Sequence[float], nu: Optiona
     (docs/theory.md, subsurface stresses). A coated result (solved with
     ``coating=``; periodic grids, or free 2D grids whose shorter side is at
     least 8 layer thicknesses) takes no nu: each depth uses its body's, the
-    layer's for z <= thickness.
+    layer's for z <= thickness. A friction result (``friction=``) applies its
+    shear tractions beside the pressure, as ``halfspace stress`` does.
 
     Returns a dict: ``depths``; ``sigma_xx``, ``sigma_yy``, ``sigma_zz``,
     ``sigma_xy``, ``sigma_xz``, ``sigma_yz``, ``von_mises``, ``max_shear``,
     ``hydrostatic`` (Pa, compression negative), each ``(nz, ny, nx)``
     (``(nz, n)`` for a profile) and owned by numpy without a copy;
     ``max_von_mises`` and its ``max_von_mises_position`` ``(x, y, z)`` in m;
-    for a coated result ``in_layer``, one bool per depth. The GIL is
+    for a coated result ``in_layer``, one bool per depth; ``tractions``
+    (``"pressure"`` or ``"pressure and shear"``). The GIL is
     released while computing."""
     return _core.subsurface_stress(result, [float(z) for z in depths], None if nu is None else float(nu))

@@ -41,8 +41,17 @@ nb::dict subsurface_stress(const Result& result, const std::vector<double>& dept
         "no Poisson's ratio given: pass nu, the Poisson's ratio of the body whose stresses are wanted (E* alone "
         "does not fix it; -1 < nu <= 0.5)");
   }
+  // A friction result's shear tractions act beside the pressure, as in
+  // `halfspace stress` (friction refuses coatings, so nu is given here).
+  const bool sheared = result.tangential_step < result.run->tangential.size();
   stress::StressVolume volume = [&] {
     nb::gil_scoped_release release;
+    if (sheared) {
+      const TangentialState& state = result.run->tangential[result.tangential_step].state;
+      const stress::SurfaceTractions tractions{
+          {pressure.data(), grid.size()}, {state.shear_x.data(), grid.size()}, {state.shear_y.data(), grid.size()}};
+      return stress::compute_stress_volume(grid, tractions, depths, *nu);
+    }
     return coating ? stress::compute_stress_volume(grid, {pressure.data(), grid.size()}, depths, *coating)
                    : stress::compute_stress_volume(grid, {pressure.data(), grid.size()}, depths, *nu);
   }();
@@ -61,6 +70,7 @@ nb::dict subsurface_stress(const Result& result, const std::vector<double>& dept
   const stress::VonMisesMaximum& peak = volume.max_von_mises;
   out["max_von_mises"] = peak.value;
   out["max_von_mises_position"] = nb::make_tuple(peak.x, peak.y, peak.z);
+  out["tractions"] = sheared ? "pressure and shear" : "pressure";
   return out;
 }
 

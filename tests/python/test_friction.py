@@ -152,3 +152,29 @@ def test_material_refusals():
     with pytest.raises(hs.InputError, match="coating cannot be combined with friction"):
         hs.solve(surface, coating=dict(thickness=1e-5, layer_E=E, layer_nu=NU, substrate_E=E, substrate_nu=NU),
                  force=FORCE, friction=MU, tangential_force=1.0)
+
+
+def test_stresses_take_the_shear_as_the_program_does(tmp_path, cli):
+    """subsurface_stress on a friction result applies its shear beside the pressure: the same
+    field as `halfspace stress` on the saved result (to 1e-12 of the largest), and a larger
+    von Mises maximum than the frictionless contact's."""
+    import subprocess
+    surface = sphere(24)
+    depths = [2e-6, 1e-5, 4e-5]
+    sliding = hs.solve(surface, **STEEL, force=FORCE, friction=MU, sliding=(1.0, 0.0), threads=1,
+                       fft_planning="estimate")
+    stresses = hs.subsurface_stress(sliding, depths, nu=NU)
+    assert stresses["tractions"] == "pressure and shear"
+    sliding.save(tmp_path / "s.h5")
+    subprocess.run([cli, "stress", str(tmp_path / "s.h5"), "--depths", ",".join(repr(z) for z in depths), "--nu",
+                    repr(NU), "--output", str(tmp_path / "stress.h5"), "--threads", "1", "--quiet"], check=True)
+    with h5py.File(tmp_path / "stress.h5") as f:
+        tractions = f["stress"].attrs["tractions"]
+        assert (tractions.decode() if isinstance(tractions, bytes) else tractions) == "pressure and shear"
+        for name in ("sigma_xx", "sigma_xz", "von_mises"):
+            program = f["stress"][name][...]
+            np.testing.assert_allclose(stresses[name], program, rtol=0, atol=1e-12 * np.abs(program).max())
+    plain = hs.solve(surface, **STEEL, force=FORCE, threads=1, fft_planning="estimate")
+    frictionless = hs.subsurface_stress(plain, depths, nu=NU)
+    assert frictionless["tractions"] == "pressure"
+    assert stresses["max_von_mises"] > 1.05 * frictionless["max_von_mises"]
