@@ -205,6 +205,38 @@ Result read(const std::filesystem::path& path, int step) {
   for (const auto& [name, value] : stored.attributes) {
     std::visit([&, &key = name](const auto& v) { run->stored_attributes[nb::str(key.c_str())] = v; }, value);
   }
+  // A friction result: its tangential step, so that the fields, `friction`
+  // and stresses under shear come back as they were solved.
+  if (stored.shear_x.size() > 0 && stored.find("tangential_status") != nullptr) {
+    TangentialResult t;
+    const std::string tangential_status = text("tangential_status");
+    for (SolveStatus candidate : {SolveStatus::converged, SolveStatus::iteration_limit, SolveStatus::breakdown}) {
+      if (to_string(candidate) == tangential_status) t.status = candidate;
+    }
+    t.state.shear_x = std::move(stored.shear_x);
+    t.state.shear_y = std::move(stored.shear_y);
+    t.state.slip_x = std::move(stored.slip_x);
+    t.state.slip_y = std::move(stored.slip_y);
+    t.state.displacement_x = std::move(stored.tangential_displacement_x);
+    t.state.displacement_y = std::move(stored.tangential_displacement_y);
+    t.state.approach_x = number("tangential_approach_x");
+    t.state.approach_y = number("tangential_approach_y");
+    t.stick = Eigen::ArrayXd(static_cast<Eigen::Index>(stored.stick.size()));
+    for (std::size_t k = 0; k < stored.stick.size(); ++k) t.stick[static_cast<Eigen::Index>(k)] = stored.stick[k];
+    t.friction_coefficient = number("friction_coefficient");
+    t.force_x = number("tangential_force_x");
+    t.force_y = number("tangential_force_y");
+    t.normal_force = run->steps.front().result.total_force;
+    t.stick_fraction = number("stick_fraction");
+    t.slip_fraction = number("slip_fraction");
+    t.dissipated_energy = number("dissipated_energy");
+    t.gross_sliding = integer("gross_sliding") != 0;
+    t.iterations = static_cast<int>(integer("tangential_iterations"));
+    t.residual = number("tangential_residual");
+    t.tolerance = number("tangential_tolerance");
+    run->stick.push_back(std::move(stored.stick));
+    run->tangential.push_back(std::move(t));
+  }
   if (stored.find("layer_thickness") != nullptr) {
     run->coating = validated(LayeredMaterial{number("layer_thickness"),
                                              {number("layer_E"), number("layer_nu")},

@@ -216,6 +216,18 @@ StoredResult read_result(const std::filesystem::path& path, int step) {
   if (reader.exists(group.get(), "cluster_sizes")) {
     stored.cluster_sizes = reader.read<std::int64_t>(group.get(), "cluster_sizes", H5T_NATIVE_INT64);
   }
+  // Friction: all of the step's fields or none of them.
+  if (reader.exists(group.get(), "shear_x")) {
+    stored.shear_x = reader.field(group.get(), "shear_x", shape);
+    stored.shear_y = reader.field(group.get(), "shear_y", shape);
+    stored.slip_x = reader.field(group.get(), "slip_x", shape);
+    stored.slip_y = reader.field(group.get(), "slip_y", shape);
+    stored.tangential_displacement_x = reader.field(group.get(), "tangential_displacement_x", shape);
+    stored.tangential_displacement_y = reader.field(group.get(), "tangential_displacement_y", shape);
+    std::vector<std::size_t> stick_shape;
+    stored.stick = reader.read<std::uint8_t>(group.get(), "stick", H5T_NATIVE_UINT8, &stick_shape);
+    if (stick_shape != shape) reader.fail("dataset 'stick' does not have the shape of /height");
+  }
   return stored;
 }
 

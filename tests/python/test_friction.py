@@ -178,3 +178,25 @@ def test_stresses_take_the_shear_as_the_program_does(tmp_path, cli):
     frictionless = hs.subsurface_stress(plain, depths, nu=NU)
     assert frictionless["tractions"] == "pressure"
     assert stresses["max_von_mises"] > 1.05 * frictionless["max_von_mises"]
+
+
+def test_read_result_brings_the_friction_step_back(tmp_path):
+    """A saved friction result read back has the same fields, friction attributes and
+    stresses under shear as the result that was solved."""
+    surface = sphere(24)
+    solved = hs.solve(surface, **STEEL, force=FORCE, friction=MU, tangential_force=(1.0, 0.5), threads=1,
+                      fft_planning="estimate")
+    solved.save(tmp_path / "f.h5")
+    read = hs.read_result(tmp_path / "f.h5")
+    for name in ("shear_x", "shear_y", "slip_x", "slip_y", "tangential_displacement_x", "tangential_displacement_y",
+                 "stick"):
+        np.testing.assert_array_equal(getattr(read, name), getattr(solved, name))
+    for key in ("friction_coefficient", "tangential_force", "tangential_approach", "stick_fraction", "slip_fraction",
+                "dissipated_energy", "gross_sliding", "converged", "iterations"):
+        assert read.friction[key] == solved.friction[key], key
+    depths = [5e-6, 2e-5]
+    np.testing.assert_array_equal(hs.subsurface_stress(read, depths, nu=NU)["von_mises"],
+                                  hs.subsurface_stress(solved, depths, nu=NU)["von_mises"])
+    plain = hs.solve(surface, **STEEL, force=FORCE, threads=1, fft_planning="estimate")
+    plain.save(tmp_path / "n.h5")
+    assert hs.read_result(tmp_path / "n.h5").shear_x is None

@@ -29,7 +29,13 @@ struct StoredResult {
   std::vector<std::uint8_t> contact;
   std::vector<double> residual_history;
   std::vector<std::int64_t> cluster_sizes;  // a sweep step's; empty otherwise
-  int steps = 0;                            // a sweep file's number of steps; 0 for a single result
+  // A friction result's tangential step (docs/file-format.md#friction);
+  // empty when the file has none.
+  Eigen::ArrayXd shear_x, shear_y;                                      // Pa
+  Eigen::ArrayXd slip_x, slip_y;                                        // m
+  Eigen::ArrayXd tangential_displacement_x, tangential_displacement_y;  // m
+  std::vector<std::uint8_t> stick;                                      // 1 where a contact cell sticks
+  int steps = 0;  // a sweep file's number of steps; 0 for a single result
 
   // The attribute `name`, or nullptr.
   const AttributeValue* find(const std::string& name) const;
