@@ -45,8 +45,6 @@ namespace {
 using linalg::for_each_index;
 using linalg::sums;
 
-// u is exact after every step; the counter stays for evaluate()'s rule.
-constexpr int kUpdatesBetweenExactProducts = 50;
 // Conjugate gradients: u = C q exactly at least every this many steps (the
 // linear update misses the circles' second-order pull; 1, 4 and 10 gave
 // 17, 17 and 20 iterations on the rough test contact).
@@ -167,7 +165,6 @@ class Iteration {
   // Step 1: ds, the approach, the residual (from an exact product whenever
   // it would stop).
   void evaluate(int iteration) {
-    if (updates_since_exact_ >= kUpdatesBetweenExactProducts) exact_displacement();
     measure();
     if (residual_ <= options_.tolerance && updates_since_exact_ > 0) {
       exact_displacement();

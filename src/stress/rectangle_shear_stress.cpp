@@ -37,6 +37,8 @@
 #include <numbers>
 #include <utility>
 
+#include "corner_distance.hpp"
+
 namespace halfspace::stress {
 namespace {
 
@@ -53,17 +55,6 @@ struct CornerTerms {
   double r_xz = 0.0;        // z / (rho (rho + t))
   double r_xy = 0.0;        // 1 / rho
 };
-
-// ln(rho + u) with rho = sqrt(u^2 + w2), w2 > 0, without the cancellation of
-// rho + u for u < 0: ln(w2 / (rho - u)).
-double log_rho_plus(double rho, double u, double w2) {
-  return u >= 0.0 ? std::log(rho + u) : std::log(w2) - std::log(rho - u);
-}
-
-// 1 / (rho + u), likewise.
-double inverse_rho_plus(double rho, double u, double w2) {
-  return u >= 0.0 ? 1.0 / (rho + u) : (rho - u) / w2;
-}
 
 CornerTerms corner_terms(double s, double t, double z) {
   const double s2 = s * s;

@@ -28,6 +28,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "corner_distance.hpp"
+
 namespace halfspace::stress {
 namespace {
 
@@ -44,12 +46,6 @@ struct CornerTerms {
   double f_yy;    // atan(s t (rho - z) / (t^2 rho + s^2 z))
   double f_xy;    // ln(rho + z)
 };
-
-// 1 / (rho + u) with rho = sqrt(u^2 + w2), w2 > 0: for u < 0 the sum cancels,
-// and (rho - u) / w2 is used instead.
-double inverse_rho_plus(double rho, double u, double w2) {
-  return u >= 0.0 ? 1.0 / (rho + u) : (rho - u) / w2;
-}
 
 CornerTerms corner_terms(double s, double t, double z) {
   const double s2 = s * s;

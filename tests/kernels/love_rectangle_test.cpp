@@ -11,6 +11,8 @@
 #include <numbers>
 #include <vector>
 
+#include "support/gauss_legendre.hpp"
+
 namespace halfspace {
 namespace {
 
@@ -27,36 +29,9 @@ constexpr double kQuadratureTolerance = 1e-14;
 // R = 1e4 a, so the test checks the far-field branch to near rounding.
 constexpr double kMultipoleTolerance = 1e-14;
 
-// 16-point Gauss-Legendre rule on [-1, 1], nodes and weights computed once by
-// Newton iteration on the Legendre polynomial.
-struct GaussRule {
-  std::array<double, 16> nodes{};
-  std::array<double, 16> weights{};
-  GaussRule() {
-    constexpr int n = 16;
-    for (int i = 0; i < n; ++i) {
-      double x = std::cos(kPi * (i + 0.75) / (n + 0.5));
-      double derivative = 1.0;
-      for (int iteration = 0; iteration < 100; ++iteration) {
-        double p0 = 1.0;
-        double p1 = x;
-        for (int k = 2; k <= n; ++k) {
-          const double p2 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
-          p0 = p1;
-          p1 = p2;
-        }
-        derivative = n * (x * p1 - p0) / (x * x - 1.0);
-        const double step = p1 / derivative;
-        x -= step;
-        if (std::abs(step) < 1e-17) break;
-      }
-      nodes[static_cast<std::size_t>(i)] = x;
-      weights[static_cast<std::size_t>(i)] = 2.0 / ((1.0 - x * x) * derivative * derivative);
-    }
-  }
-};
-const GaussRule& gauss() {
-  static const GaussRule rule;
+// The 16-point Gauss-Legendre rule on [-1, 1], computed once.
+const testing::QuadratureRule& gauss() {
+  static const testing::QuadratureRule rule = testing::gauss_legendre(16);
   return rule;
 }
 
