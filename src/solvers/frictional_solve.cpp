@@ -100,7 +100,8 @@ std::vector<TangentialResult> solve_tangential_history(const Grid& grid, const E
       // A step that repeats the previous load (the turning point written at
       // the end of one branch and the start of the next) leaves the state
       // as it is: no slip increment anywhere, so the conditions hold as the
-      // previous step left them, and nothing is dissipated.
+      // previous step left them, and nothing is dissipated. The solver
+      // would find the same state to rounding; the history keeps it exact.
       steps.push_back(repeated(steps.back()));
     } else {
       steps.push_back(solver.solve(pressure, loading, state));

@@ -52,6 +52,10 @@ constexpr int kConjugateUpdatesBetweenExactProducts = 4;
 // Conjugate gradients that do not halve the gap in this many steps stall
 // (sets swinging back and forth): projected gradients take over.
 constexpr int kStalledConjugateSteps = 100;
+// Slip increments below this fraction of the previous step's largest
+// displacement are rounding of the products, not motion (the residual's
+// scale is kept above it).
+constexpr double kResolvedMotion = 1e-9;
 // A traction within this relative distance of mu p is at the limit (a
 // projected traction lies on the circle to rounding).
 constexpr double kAtLimit = 1e-12;
@@ -160,6 +164,13 @@ class Iteration {
       for_each_index(n_, [&](std::size_t i) { std::tie(f_.qx[i], f_.qy[i]) = clipped(px[i], py[i], radius_[i]); });
     }
     exact_displacement();
+    // The slip the products resolve: motion below this fraction of the
+    // previous displacement is rounding (a step repeating the previous load
+    // moves nothing, and the residual would compare rounding with rounding).
+    const auto previous = linalg::sums_and_range<1>(comm_, n_, [&](std::size_t i) {
+      return std::pair{std::array<double, 1>{}, radius_[i] > 0.0 ? magnitude(up_x_[i], up_y_[i]) : 0.0};
+    });
+    motion_floor_ = kResolvedMotion * std::max(previous.max, 0.0);
   }
 
   // Step 1: ds, the approach, the residual (from an exact product whenever
@@ -555,7 +566,8 @@ class Iteration {
       const double gap = radius * magnitude(gx, gy) + f_.qx[i] * gx + f_.qy[i] * gy;
       return std::pair{std::array<double, 2>{std::max(gap, 0.0), 0.0}, magnitude(dx, dy)};
     });
-    const double scale = problem_.capacity * (std::max(settled.max, 0.0) + std::hypot(delta_x, delta_y));
+    const double scale =
+        problem_.capacity * std::max(std::max(settled.max, 0.0) + std::hypot(delta_x, delta_y), motion_floor_);
     residual_ = settled.sums[0] == 0.0 ? 0.0 : settled.sums[0] / scale;
   }
 
@@ -575,6 +587,7 @@ class Iteration {
   double delta_x_ = 0.0;  // the approach's increment over the step
   double delta_y_ = 0.0;
   double residual_ = 0.0;
+  double motion_floor_ = 0.0;  // m, see start()
   double momentum_ = 0.0;
   double rho_old_ = 0.0;         // conjugate gradients: the last z . Pi R g
   bool sets_unchanged_ = false;  // no cell changed set in the last step

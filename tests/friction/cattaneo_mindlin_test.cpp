@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <span>
 
 #include "friction/friction_checks.hpp"
 #include "halfspace/error.hpp"
@@ -157,6 +158,31 @@ TEST(CattaneoMindlin, CylinderStickHalfWidth) {
 
 // Gross sliding: a tangential displacement well beyond the onset of sliding
 // leaves no stick cell and carries exactly mu P along it.
+// A step that repeats the previous load (a loop's turning point written
+// twice) moves nothing: the solver stops at once with the previous state,
+// its residual measured against the motion the products resolve rather
+// than rounding against rounding (it ran to the iteration limit before).
+TEST(CattaneoMindlin, RepeatedLoadLeavesTheStateAsItWas) {
+  const ElasticPair pair = ElasticPair::similar(kSteel);
+  const auto [grid, contact] = testing::hertz_sphere_contact(pair, kForce, kSphereRadius, 32);
+  ASSERT_TRUE(contact.converged());
+  TangentialOperator op(grid, pair);
+  TangentialSolver solver(op, options());
+  const std::span<const double> pressure(contact.pressure.data(), grid.size());
+  for (const TangentialLoading load :
+       {TangentialLoading::force(0.5 * kMu * kForce), TangentialLoading::displacement(2e-7)}) {
+    const TangentialResult first = solver.solve(pressure, load, TangentialState::unloaded(grid.size()));
+    ASSERT_TRUE(first.converged()) << first.message;
+    const TangentialResult again = solver.solve(pressure, load, first.state);
+    ASSERT_TRUE(again.converged()) << again.message;
+    EXPECT_LE(again.iterations, 5);
+    const double scale = kMu * contact.pressure.maxCoeff();
+    EXPECT_LE((again.state.shear_x - first.state.shear_x).abs().maxCoeff(), 1e-9 * scale);
+    EXPECT_LE((again.state.shear_y - first.state.shear_y).abs().maxCoeff(), 1e-9 * scale);
+    EXPECT_LE(std::abs(again.dissipated_energy), 1e-9 * std::abs(first.dissipated_energy));
+  }
+}
+
 TEST(CattaneoMindlin, SphereSlidesUnderALargeDisplacement) {
   const ElasticPair pair = ElasticPair::similar(kSteel);
   const auto hertz = testing::hertz_point(kForce, kSphereRadius, pair.composite_modulus());
