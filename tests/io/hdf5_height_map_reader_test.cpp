@@ -624,7 +624,8 @@ TEST(Hdf5HeightMapReaderTest, DamagedSuperblockFieldsAreNamed) {
     std::string expected;
   };
   for (const Case& c : {Case{8, '\x09', "superblock version 9"}, Case{offsets_at, '\x03', "size of offsets is 3"},
-                        Case{offsets_at + 1, '\x05', "size of lengths is 5"}}) {
+                        Case{offsets_at + 1, '\x05', "size of lengths is 5"},
+                        Case{offsets_at, '\x10', "size of offsets is 16 bytes (2, 4 or 8 are read)"}}) {
     std::string bytes = good;
     bytes[c.at] = c.value;
     const fs::path path = dir / "spoiled.h5";
