@@ -18,6 +18,9 @@
 #include "halfspace/fft/padded_real_fft.hpp"
 #include "halfspace/fft/real_fft.hpp"
 #include "halfspace/kernels/cerruti_rectangle.hpp"
+#include "halfspace/kernels/coupling_fourier.hpp"
+#include "halfspace/kernels/coupling_rectangle.hpp"
+#include "halfspace/kernels/coupling_strip.hpp"
 #include "halfspace/kernels/periodic_fourier.hpp"
 #include "halfspace/kernels/tangential_fourier.hpp"
 #include "halfspace/kernels/tangential_strip.hpp"
@@ -52,10 +55,16 @@ struct TangentialOperator::Impl {
     xx.assign(size, 0.0);
     yy.assign(size, 0.0);
     xy.assign(size, 0.0);
+    coupled = !p.similar();
+    if (coupled) {
+      coupling_x.assign(size, 0.0);
+      coupling_y.assign(size, 0.0);
+    }
     if (g.periodic()) {
       init_periodic();
     } else {
       init_free();
+      if (coupled) init_free_coupling();
     }
     const double count = g.periodic() ? static_cast<double>(g.size()) : static_cast<double>(padded[0]->padded_size());
     for (std::size_t k = 0; k < size; ++k) {
@@ -86,6 +95,16 @@ struct TangentialOperator::Impl {
         xx[k] = s.xx * inverse_n;
         yy[k] = s.yy * inverse_n;
         xy[k] = s.xy * inverse_n;
+        if (coupled) {
+          // The odd symbol's component along an axis vanishes at that axis's
+          // Nyquist frequency (an odd sequence's DFT does), where +q and -q
+          // are the same mode: otherwise the product would not be real.
+          const kernels::CouplingCoefficients odd = kernels::coupling_spectrum(qx, qy, pair.coupling_compliance());
+          const bool nyquist_x = 2 * c == nx;
+          const bool nyquist_y = grid.dimension() == 2 && 2 * r == spectrum_rows;
+          coupling_x[k] = nyquist_x ? 0.0 : odd.x * inverse_n;
+          coupling_y[k] = nyquist_y ? 0.0 : odd.y * inverse_n;
+        }
         // Columns other than 0 and nx/2 (even nx) stand for two modes.
         const double weight = c == 0 || 2 * c == nx ? 1.0 : 2.0;
         sum_xx += weight * s.xx;
@@ -144,6 +163,47 @@ struct TangentialOperator::Impl {
     }
   }
 
+  // The coupling coefficients on the wrap-around grid: the x part odd in x
+  // and even in y, the y part the reverse, so their spectra are imaginary
+  // up to rounding and only the imaginary parts are kept (the symbol c of
+  // coupling_fourier.hpp, with the transform's 1/N).
+  void init_free_coupling() {
+    const std::size_t nx = grid.nx();
+    const std::size_t ny = grid.ny();
+    const bool line = grid.dimension() == 1;
+    const double a = 0.5 * grid.dx();
+    const double b = 0.5 * grid.dy();
+    const double d = pair.coupling_compliance();
+    std::vector<double>* parts[2] = {&coupling_x, &coupling_y};
+    for (int part = 0; part < (line ? 1 : 2); ++part) {
+      PaddedRealFft& fft = *padded[0];
+      linalg::for_each_row(fft.spectrum_rows(), 2 * nx, [&](std::size_t r) {
+        std::span<double> row = fft.padded_row(r);
+        for (std::size_t c = 0; c < row.size(); ++c) {
+          // The odd axis takes offset 0 at its middle index (zero there),
+          // the even one the mirrored distance n.
+          const bool odd_middle = part == 0 ? c == nx : (!line && r == ny);
+          if (odd_middle) {
+            row[c] = 0.0;
+            continue;
+          }
+          const long di = c == nx ? static_cast<long>(nx) : signed_offset(c, nx);
+          const long dj = line ? 0 : r == ny ? static_cast<long>(ny) : signed_offset(r, ny);
+          const double x = static_cast<double>(di) * grid.dx();
+          const double y = static_cast<double>(dj) * grid.dy();
+          const kernels::CouplingCoefficients k = line ? kernels::coupling_strip_displacement(x, grid.dx(), d)
+                                                       : kernels::coupling_rectangle_displacement(x, y, a, b, d);
+          row[c] = part == 0 ? k.x : k.y;
+        }
+      });
+      fft.forward_all_rows();
+      const double inverse_n = 1.0 / static_cast<double>(fft.padded_size());
+      std::span<const std::complex<double>> spectrum = fft.spectrum();
+      std::vector<double>& target = *parts[part];
+      for (std::size_t k = 0; k < target.size(); ++k) target[k] = spectrum[k].imag() * inverse_n;
+    }
+  }
+
   // The spectrum of component k of `values`.
   std::span<std::complex<double>> forward(int k, std::span<const double> values) {
     if (padded[0]) {
@@ -157,6 +217,10 @@ struct TangentialOperator::Impl {
       fft.forward();
     }
     return fft.spectrum();
+  }
+
+  std::span<std::complex<double>> spectrum(int k) {
+    return padded[0] ? padded[k]->spectrum() : periodic[k]->spectrum();
   }
 
   void backward(int k, std::span<double> values) {
@@ -179,6 +243,9 @@ struct TangentialOperator::Impl {
   std::size_t spectrum_rows = 0;
   std::size_t spectrum_cols = 0;
   std::vector<double> xx, yy, xy;  // the real symbol, (spectrum_rows, spectrum_cols)
+  bool coupled = false;
+  // The coupling's imaginary symbol c (coupling_fourier.hpp), empty unless coupled.
+  std::vector<double> coupling_x, coupling_y;
   kernels::TangentialCoefficients self;
   double largest = 0.0;         // largest_eigenvalue_bound()
   double largest_stored = 0.0;  // the same in the stored symbol's scale
@@ -200,6 +267,61 @@ const ElasticPair& TangentialOperator::pair() const {
 
 kernels::TangentialCoefficients TangentialOperator::self_influence() const {
   return impl_->self;
+}
+
+bool TangentialOperator::coupled() const {
+  return impl_->coupled;
+}
+
+void TangentialOperator::apply_pressure_coupling(std::span<const double> pressure, std::span<double> displacement_x,
+                                                 std::span<double> displacement_y) {
+  Impl& m = *impl_;
+  assert(pressure.size() == m.grid.size());
+  assert(displacement_x.size() == m.grid.size() && displacement_y.size() == m.grid.size());
+  if (!m.coupled) {
+    std::fill(displacement_x.begin(), displacement_x.end(), 0.0);
+    std::fill(displacement_y.begin(), displacement_y.end(), 0.0);
+    return;
+  }
+  // U_a = i c_a P: the pressure's spectrum in transform 0, the y part
+  // written into transform 1's.
+  const std::span<std::complex<double>> sx = m.forward(0, pressure);
+  const std::span<std::complex<double>> sy = m.spectrum(1);
+  const double* cx = m.coupling_x.data();
+  const double* cy = m.coupling_y.data();
+  const std::complex<double> i(0.0, 1.0);
+  linalg::for_each_row(m.spectrum_rows, m.spectrum_cols, [&](std::size_t r) {
+    const std::size_t begin = r * m.spectrum_cols;
+    for (std::size_t k = begin; k < begin + m.spectrum_cols; ++k) {
+      const std::complex<double> p = i * sx[k];
+      sx[k] = cx[k] * p;
+      sy[k] = cy[k] * p;
+    }
+  });
+  m.backward(0, displacement_x);
+  m.backward(1, displacement_y);
+}
+
+void TangentialOperator::apply_traction_coupling(std::span<const double> traction_x, std::span<const double> traction_y,
+                                                 std::span<double> normal_displacement) {
+  Impl& m = *impl_;
+  assert(traction_x.size() == m.grid.size() && traction_y.size() == m.grid.size());
+  assert(normal_displacement.size() == m.grid.size());
+  if (!m.coupled) {
+    std::fill(normal_displacement.begin(), normal_displacement.end(), 0.0);
+    return;
+  }
+  // U_n = -i (c_x T_x + c_y T_y): K^T, the odd kernel's negative.
+  const std::span<std::complex<double>> sx = m.forward(0, traction_x);
+  const std::span<std::complex<double>> sy = m.forward(1, traction_y);
+  const double* cx = m.coupling_x.data();
+  const double* cy = m.coupling_y.data();
+  const std::complex<double> minus_i(0.0, -1.0);
+  linalg::for_each_row(m.spectrum_rows, m.spectrum_cols, [&](std::size_t r) {
+    const std::size_t begin = r * m.spectrum_cols;
+    for (std::size_t k = begin; k < begin + m.spectrum_cols; ++k) sx[k] = minus_i * (cx[k] * sx[k] + cy[k] * sy[k]);
+  });
+  m.backward(0, normal_displacement);
 }
 
 double TangentialOperator::largest_eigenvalue_bound() const {

@@ -5,7 +5,11 @@
 // symbol of kernels/tangential_fourier.hpp; free grids convolve with
 // Cerruti's rectangle (2D) or the tangential strip (1D) coefficients by zero
 // padding (DC-FFT, PaddedRealFft). Built from the ElasticPair, because E*
-// alone does not fix the tangential compliance.
+// alone does not fix the tangential compliance. For elastically dissimilar
+// bodies (Dundurs' beta != 0) it also applies the normal-tangential coupling
+// (kernels/coupling_coefficients.hpp): the tangential displacement of a
+// pressure and the normal displacement of a traction, by the same transforms
+// (coupling_fourier, coupling_rectangle, coupling_strip).
 #pragma once
 
 #include <memory>
@@ -51,6 +55,24 @@ class TangentialOperator {
   // Allocates nothing.
   void apply_approximate_inverse(std::span<const double> displacement_x, std::span<const double> displacement_y,
                                  std::span<double> traction_x, std::span<double> traction_y);
+
+  // Whether the pair couples the normal and tangential problems (Dundurs'
+  // beta != 0, ElasticPair::similar() false). The coupling products below
+  // are exactly zero otherwise.
+  bool coupled() const;
+
+  // (v_x, v_y) = K p: the relative tangential displacement (m) of the
+  // surfaces under the pressure p (Pa). Same span rules as apply(); the
+  // outputs must not overlap the input. Periodic grids: no mean mode (the
+  // kernel is odd). Allocates nothing.
+  void apply_pressure_coupling(std::span<const double> pressure, std::span<double> displacement_x,
+                               std::span<double> displacement_y);
+  // w = K^T (t_x, t_y): the normal displacement (m, positive into the
+  // half-space as the normal operator's K p) under the traction (Pa); the
+  // transpose, so that the 3x3 compliance of (p, t) is symmetric (Betti).
+  // The output must not overlap the inputs. Allocates nothing.
+  void apply_traction_coupling(std::span<const double> traction_x, std::span<const double> traction_y,
+                               std::span<double> normal_displacement);
 
   // The block C_ii (m/Pa) of a cell under unit traction on itself alone, the
   // same for every cell (xy is zero: the cell is symmetric).
