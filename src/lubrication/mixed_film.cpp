@@ -145,7 +145,8 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
     if (load_control || -options.offset > 0.0) {
       const solvers::SolveResult contact = dry_solver.solve({gap.data(), n}, loading);
       if (!contact.converged()) {
-        result.message = fmt::format("the dry contact that starts the mixed solve did not converge: {}", contact.message);
+        result.message =
+            fmt::format("the dry contact that starts the mixed solve did not converge: {}", contact.message);
         return result;
       }
       dry_pressure = contact.pressure;
@@ -247,8 +248,8 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
         out[kk] = 0.0;
         continue;
       }
-      const double balance = linearise(topology, k, coefficients, state.fluid, state.theta, state.reynolds_film,
-                                       second_order, terms);
+      const double balance =
+          linearise(topology, k, coefficients, state.fluid, state.theta, state.reynolds_film, second_order, terms);
       largest = std::max(largest, std::abs(balance));
       out[kk] = balance / mass_scale;
       if (!linearise_too) continue;
@@ -332,8 +333,8 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
     double couette = 0.0;
     for (std::size_t k = 0; k < n; ++k) {
       if (!topology.fixed(k)) {
-        couette = std::max(couette, (topology.couette_x() + topology.couette_y()) *
-                                        x.reynolds_film[static_cast<Eigen::Index>(k)]);
+        couette = std::max(
+            couette, (topology.couette_x() + topology.couette_y()) * x.reynolds_film[static_cast<Eigen::Index>(k)]);
       }
     }
     mass_scale = couette;
@@ -355,9 +356,8 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
       scale_masses();
     }
     // Each start but the last gets an equal share of the steps.
-    const int budget = attempt + 1 == attempts
-                           ? options.max_iterations - steps
-                           : std::max(1, options.max_iterations / static_cast<int>(attempts));
+    const int budget = attempt + 1 == attempts ? options.max_iterations - steps
+                                               : std::max(1, options.max_iterations / static_cast<int>(attempts));
     result.status = FilmStatus::failure;
     result.message.clear();
     Measure current = measure(x, residual, false);
@@ -413,8 +413,8 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
       const double largest_change = step.head(2 * ni).cwiseAbs().maxCoeff();
       double lambda = std::min(1.0, kLargestStep / std::max(largest_change, 1e-300));
       if (load_control) {
-        const double thinnest = std::max(x.film.maxCoeff() > 0.0 ? x.reynolds_film.minCoeff() : 0.0,
-                                         kFilmFloorShare * H);
+        const double thinnest =
+            std::max(x.film.maxCoeff() > 0.0 ? x.reynolds_film.minCoeff() : 0.0, kFilmFloorShare * H);
         lambda = std::min(lambda, kLargestStep * thinnest / std::max(std::abs(step[h0]), 1e-300));
       }
       bool accepted = false;
@@ -466,8 +466,6 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
   result.contact_area_fraction = static_cast<double>(in_contact) / static_cast<double>(n);
   Eigen::Index centre = 0;
   gap.minCoeff(&centre);
-  result.central_film_thickness = std::max(result.film[centre], 0.0);
-  result.minimum_film_thickness = std::max(result.film.minCoeff(), 0.0);
   result.max_pressure = result.pressure.maxCoeff();
   result.cavitated_fraction =
       static_cast<double>(((result.fluid_fraction < 1.0) && (result.contact_pressure <= 0.0)).count()) /
@@ -482,9 +480,15 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
     complementarity = std::max({complementarity, -h, -pc, std::abs(std::min(h, pc))});
   }
   result.complementarity_error = complementarity;
+  // The film on contact cells is 0 to the rounding of h0 + g + K p (h0 may be
+  // 1e4 times the film); the check above saw the film as computed.
+  for (Eigen::Index k = 0; k < ni; ++k) {
+    if (result.contact_pressure[k] > 0.0 || result.film[k] < 0.0) result.film[k] = 0.0;
+  }
+  result.central_film_thickness = result.film[centre];
+  result.minimum_film_thickness = result.film.minCoeff();
   if (result.converged()) {
-    if (!(result.relative_residual <= 10.0 * options.tolerance &&
-          result.load_error <= 10.0 * options.load_tolerance &&
+    if (!(result.relative_residual <= 10.0 * options.tolerance && result.load_error <= 10.0 * options.load_tolerance &&
           result.complementarity_error <= 10.0 * options.contact_tolerance &&
           satisfies_complementarity(result.fluid_pressure, result.fluid_fraction))) {
       result.status = FilmStatus::failure;
@@ -498,7 +502,6 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
   result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return result;
 }
-
 
 FlowConditions at_speed_factor(const FlowConditions& conditions, double factor) {
   FlowConditions scaled = conditions;
@@ -519,12 +522,13 @@ constexpr double kSmallestRatio = 1.02;
 constexpr int kContinuationSolves = 60;
 
 MixedFilm continue_in_speed(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
-                            const LubricantLaws& laws, const MixedFilmOptions& options, MixedFilm film,
-                            double factor, int& steps, int& solves) {
+                            const LubricantLaws& laws, const MixedFilmOptions& options, MixedFilm film, double factor,
+                            int& steps, int& solves) {
   double ratio = kContinuationRatio;
   while (factor != 1.0 && solves < kContinuationSolves) {
     const double log_step = std::min(std::abs(std::log(factor)), std::log(ratio));
-    const double next = std::abs(std::log(factor)) <= log_step ? 1.0 : factor * std::exp(factor > 1.0 ? -log_step : log_step);
+    const double next =
+        std::abs(std::log(factor)) <= log_step ? 1.0 : factor * std::exp(factor > 1.0 ? -log_step : log_step);
     MixedFilm trial = solve_once(op, gap, at_speed_factor(conditions, next), laws, options, &film);
     ++solves;
     steps += trial.iterations;
@@ -542,8 +546,8 @@ MixedFilm continue_in_speed(InfluenceOperator& op, const Eigen::ArrayXd& gap, co
   }
   if (factor != 1.0) {
     film.status = FilmStatus::iteration_limit;
-    film.message = fmt::format("speed continuation stopped after {} solves at {:.4g} times the velocities", solves,
-                               factor);
+    film.message =
+        fmt::format("speed continuation stopped after {} solves at {:.4g} times the velocities", solves, factor);
   }
   return film;
 }
@@ -562,8 +566,7 @@ MixedFilm solve_mixed_film(InfluenceOperator& op, const Eigen::ArrayXd& gap, con
   MixedFilm from;
   double factor = 0.0;
   const double speed = std::hypot(conditions.entrainment_velocity[0], conditions.entrainment_velocity[1]);
-  if (start != nullptr && start->converged() && start->entrainment_speed > 0.0 &&
-      start->entrainment_speed != speed) {
+  if (start != nullptr && start->converged() && start->entrainment_speed > 0.0 && start->entrainment_speed != speed) {
     from = *start;
     factor = start->entrainment_speed / speed;
   }

@@ -47,9 +47,9 @@ struct LocalTerm {
 
 // The balance of node k (per unit area, m/s) and its local derivatives
 // (up to 5 faces + 3 Couette terms).
-inline double linearise(const ReynoldsStencil& topology, std::size_t k, const NodeCoefficients& c, const Eigen::ArrayXd& p,
-                 const Eigen::ArrayXd& theta, const Eigen::ArrayXd& h, bool second_order,
-                 std::vector<LocalTerm>& terms) {
+inline double linearise(const ReynoldsStencil& topology, std::size_t k, const NodeCoefficients& c,
+                        const Eigen::ArrayXd& p, const Eigen::ArrayXd& theta, const Eigen::ArrayXd& h,
+                        bool second_order, std::vector<LocalTerm>& terms) {
   terms.clear();
   const Neighbours nb = topology.neighbours(k);
   const Grid& grid = topology.grid();

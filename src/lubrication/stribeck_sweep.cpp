@@ -25,10 +25,9 @@ std::vector<StribeckPoint> stribeck_sweep(InfluenceOperator& op, const Eigen::Ar
   }
   const Grid& grid = op.grid();
   // The load per unit width across the entrainment.
-  const double width = grid.dimension() == 1 ? 1.0
-                       : std::abs(u[0]) >= std::abs(u[1])
-                           ? static_cast<double>(grid.ny()) * grid.dy()
-                           : static_cast<double>(grid.nx()) * grid.dx();
+  const double width = grid.dimension() == 1              ? 1.0
+                       : std::abs(u[0]) >= std::abs(u[1]) ? static_cast<double>(grid.ny()) * grid.dy()
+                                                          : static_cast<double>(grid.nx()) * grid.dx();
   std::vector<StribeckPoint> points;
   points.reserve(speeds.size());
   for (const double s : speeds) {

@@ -45,10 +45,10 @@ RoughLine rough_line(double amplitude, double cells_per_half_width = 24.0) {
   const double b = hertz.half_width;
   for (std::size_t i = 0; i < n; ++i) {
     const double x = (static_cast<double>(i) - static_cast<double>(upstream)) * dx;
-    const double roughness = amplitude / 3.0 *
-                             (std::sin(2.0 * std::numbers::pi * x / (0.37 * b)) +
-                              std::sin(2.0 * std::numbers::pi * x / (0.61 * b) + 1.0) +
-                              std::sin(2.0 * std::numbers::pi * x / (0.23 * b) + 2.0));
+    const double roughness =
+        amplitude / 3.0 *
+        (std::sin(2.0 * std::numbers::pi * x / (0.37 * b)) + std::sin(2.0 * std::numbers::pi * x / (0.61 * b) + 1.0) +
+         std::sin(2.0 * std::numbers::pi * x / (0.23 * b) + 2.0));
     gap[static_cast<Eigen::Index>(i)] = x * x / (2.0 * kRadius) + roughness;
   }
   gap -= gap.minCoeff();

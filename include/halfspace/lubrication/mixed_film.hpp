@@ -56,7 +56,7 @@ struct MixedFilmOptions {
   // Load control: the load w (N in 2D, N/m in 1D) > 0, h0 unknown. Separation
   // control (load 0): h0 = offset is given and the load follows.
   double load = 0.0;
-  double offset = 0.0;  // m; h0 under separation control (ElasticFilm::offset's meaning)
+  double offset = 0.0;          // m; h0 under separation control (ElasticFilm::offset's meaning)
   double boundary_film = 1e-9;  // m, h_b > 0
   // Converged when the largest |mass balance| <= tolerance * the largest
   // Couette outflow, |load - w| <= load_tolerance * w, and the contact rows
@@ -90,9 +90,9 @@ struct MixedFilm {
   double entrainment_speed = 0.0;   // |U| of the solve (m/s)
   double load = 0.0;                // sum(p) dA
   double fluid_load = 0.0, contact_load = 0.0;
-  double contact_load_fraction = 0.0;  // contact_load / load
-  double contact_area = 0.0;           // m^2 (m in 1D): cells with p_c > 0
-  double contact_area_fraction = 0.0;  // of all cells
+  double contact_load_fraction = 0.0;   // contact_load / load
+  double contact_area = 0.0;            // m^2 (m in 1D): cells with p_c > 0
+  double contact_area_fraction = 0.0;   // of all cells
   double central_film_thickness = 0.0;  // h at the undeformed gap's minimum
   double minimum_film_thickness = 0.0;  // the smallest h (0 with contact)
   double max_pressure = 0.0;
