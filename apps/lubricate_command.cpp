@@ -10,6 +10,7 @@
 
 #include <array>
 #include <chrono>
+#include <fstream>
 #include <functional>
 #include <optional>
 #include <span>
@@ -24,6 +25,7 @@
 #include "halfspace/io/result_attributes.hpp"
 #include "halfspace/lubrication/elastic_film.hpp"
 #include "halfspace/lubrication/load_control.hpp"
+#include "halfspace/lubrication/mixed_film.hpp"
 #include "halfspace/material.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
 #include "halfspace/version.hpp"
@@ -54,6 +56,16 @@ struct LubricateOptions : GivenOptions {
   std::optional<std::string> compressibility;
   std::optional<std::string> couette_scheme;
   std::optional<long long> max_iterations;
+  // Mixed lubrication.
+  bool mixed = false;
+  std::optional<std::string> roughness;
+  std::optional<double> offset;
+  std::optional<double> contact_friction;
+  std::optional<double> boundary_film;
+  std::optional<double> limiting_shear_stress;
+  std::optional<double> limiting_shear_slope;
+  std::optional<std::vector<double>> speeds;
+  std::optional<std::string> stribeck;
   std::optional<std::string> output;
   bool quiet = false;
 };
@@ -62,6 +74,7 @@ using LubricateOption = OptionSpec<LubricateOptions>;
 using Kind = OptionKind;
 constexpr std::string_view kFilm = "Film";
 constexpr std::string_view kElastic = "Elastic film (EHL)";
+constexpr std::string_view kMixed = "Mixed lubrication";
 constexpr std::string_view kOutput = "Output";
 
 const std::array kOptions{
@@ -107,6 +120,24 @@ const std::array kOptions{
                     "first-order or second-order upwinding of the wedge flux [first-order]"},
     LubricateOption{"max-iterations", &LubricateOptions::max_iterations, Kind::integer, kElastic, "N",
                     "Newton steps of the elastic film [100]"},
+    LubricateOption{"mixed", &LubricateOptions::mixed, Kind::flag, kMixed, "",
+                    "the elastic film may close: asperities in contact carry a contact pressure (needs --E-star)"},
+    LubricateOption{"roughness", &LubricateOptions::roughness, Kind::path, kMixed, "FILE",
+                    "heights added to --height-map's (same points and spacing): a rough profile on the contact"},
+    LubricateOption{"offset", &LubricateOptions::offset, Kind::number, kMixed, "M",
+                    "separation control of the mixed film: h0 of h = h0 + gap + K p (m), instead of --force"},
+    LubricateOption{"contact-friction", &LubricateOptions::contact_friction, Kind::number, kMixed, "MU",
+                    "Coulomb coefficient on contact cells [0.1]"},
+    LubricateOption{"boundary-film", &LubricateOptions::boundary_film, Kind::number, kMixed, "M",
+                    "the thinnest film the Reynolds equation sees, on contact cells (m) [1e-9]"},
+    LubricateOption{"limiting-shear-stress", &LubricateOptions::limiting_shear_stress, Kind::number, kMixed, "PA",
+                    "tau_0 of the fluid's limiting shear stress tau_0 + gamma p (Pa) [0: no limit]"},
+    LubricateOption{"limiting-shear-slope", &LubricateOptions::limiting_shear_slope, Kind::number, kMixed, "GAMMA",
+                    "gamma of the limiting shear stress tau_0 + gamma p [0]"},
+    LubricateOption{"speeds", &LubricateOptions::speeds, Kind::numbers, kMixed, "U1,U2,...",
+                    "Stribeck sweep: entrainment speeds (m/s), sliding scaled alike; needs --stribeck"},
+    LubricateOption{"stribeck", &LubricateOptions::stribeck, Kind::path, kMixed, "FILE.csv",
+                    "the Stribeck curve of --speeds as CSV"},
     LubricateOption{"output", &LubricateOptions::output, Kind::path, kOutput, "FILE.h5", "result file (required)"},
     LubricateOption{"quiet", &LubricateOptions::quiet, Kind::flag, kOutput, "", "print nothing on success"},
 };
@@ -174,7 +205,7 @@ int report(const LubricateOptions& o, const lubrication::FilmSummary& summary, b
   fmt::print("  {:<15} {}\n", "surface", *o.height_map);
   fmt::print("  {:<15} {}\n", "film", summary.model);
   fmt::print("  {:<15} {:.6g} ({} {})\n", "load", summary.load, summary.iterations,
-             summary.model == "elastic" ? "Newton steps" : "sweeps");
+             summary.model == "rigid" ? "sweeps" : "Newton steps");
   fmt::print("  {:<15} central {:.6g} m, minimum {:.6g} m\n", "film", summary.central_film_thickness,
              summary.minimum_film_thickness);
   fmt::print("  {:<15} {:.6g} Pa\n", "max pressure", summary.max_pressure);
@@ -249,12 +280,187 @@ int run_elastic(const LubricateOptions& o, const HeightMap& map, const lubricati
   return report(o, summary, film.converged());
 }
 
+// The film's fields and the mixed film's own attributes, beyond the summary's.
+void write_mixed_fields(const io::Hdf5Node& root, const std::vector<std::size_t>& shape, std::size_t size,
+                        const lubrication::MixedFilm& film, const lubrication::MixedFilmOptions& options, double e_star,
+                        const lubrication::LubricantLaws& laws, double viscosity) {
+  const auto field = [&](std::string_view name, const Eigen::ArrayXd& values, std::string_view unit) {
+    root.write_dataset(name, shape, std::span<const double>(values.data(), size), unit);
+  };
+  field("fluid_pressure", film.fluid_pressure, "Pa");
+  field("contact_pressure", film.contact_pressure, "Pa");
+  field("deformation", film.deformation, "m");
+  root.write_double_attribute("E_star", e_star);
+  root.write_string_attribute("piezoviscosity", lubrication::to_string(laws.piezoviscosity));
+  root.write_double_attribute("pressure_viscosity", laws.pressure_viscosity);
+  root.write_double_attribute("roelands_index", laws.piezoviscosity == lubrication::Piezoviscosity::roelands
+                                                    ? laws.roelands_exponent(viscosity)
+                                                    : 0.0);
+  root.write_string_attribute("compressibility", lubrication::to_string(laws.compressibility));
+  root.write_string_attribute("couette_scheme", lubrication::to_string(options.couette_scheme));
+  root.write_double_attribute("load_error", film.load_error);
+  root.write_double_attribute("fluid_load", film.fluid_load);
+  root.write_double_attribute("contact_load", film.contact_load);
+  root.write_double_attribute("contact_load_fraction", film.contact_load_fraction);
+  root.write_double_attribute("contact_area", film.contact_area);
+  root.write_double_attribute("contact_area_fraction", film.contact_area_fraction);
+  root.write_double_attribute("fluid_friction_force_x", film.fluid_friction_force[0]);
+  root.write_double_attribute("fluid_friction_force_y", film.fluid_friction_force[1]);
+  root.write_double_attribute("contact_friction_force_x", film.contact_friction_force[0]);
+  root.write_double_attribute("contact_friction_force_y", film.contact_friction_force[1]);
+  root.write_double_attribute("contact_friction", options.friction.contact_friction);
+  root.write_double_attribute("limiting_shear_stress", options.friction.limiting_shear_stress);
+  root.write_double_attribute("limiting_shear_slope", options.friction.limiting_shear_slope);
+  root.write_double_attribute("boundary_film", options.boundary_film);
+  root.write_double_attribute("complementarity_error", film.complementarity_error);
+}
+
+void write_stribeck_csv(const std::string& path, const std::vector<lubrication::StribeckPoint>& points) {
+  std::ofstream out(path, std::ios::trunc);
+  if (!out) throw InputError(fmt::format("cannot write the Stribeck curve to {}", path));
+  out << "entrainment_speed,hersey_number,friction_coefficient,fluid_friction,contact_friction,"
+         "contact_load_fraction,contact_area_fraction,central_film_thickness,minimum_film_thickness,status,"
+         "newton_steps\n";
+  for (const lubrication::StribeckPoint& point : points) {
+    const lubrication::MixedFilm& f = point.film;
+    out << fmt::format("{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{},{}\n",
+                       point.entrainment_speed, point.hersey_number, f.friction_coefficient,
+                       std::hypot(f.fluid_friction_force[0], f.fluid_friction_force[1]),
+                       std::hypot(f.contact_friction_force[0], f.contact_friction_force[1]), f.contact_load_fraction,
+                       f.contact_area_fraction, f.central_film_thickness, f.minimum_film_thickness,
+                       lubrication::to_string(f.status), f.iterations);
+  }
+  if (!out) throw InputError(fmt::format("writing the Stribeck curve to {} failed", path));
+}
+
+int run_mixed(const LubricateOptions& o, const HeightMap& map, const lubrication::FlowConditions& conditions,
+              double e_star) {
+  if (o.separation) {
+    throw InputError("--separation is the rigid film's: the mixed film takes --force N or --offset M");
+  }
+  const Boundary boundary = parse_boundary(o.boundary.value_or("free"));
+  const Grid grid =
+      map.dimension == 1 ? Grid::line(map.nx, map.dx, boundary) : Grid::plane(map.nx, map.ny, map.dx, map.dy, boundary);
+  conditions.validate(grid);
+  const lubrication::LubricantLaws laws = lubricant_laws(o);
+  laws.validate(conditions.viscosity);
+  lubrication::MixedFilmOptions options;
+  options.load = o.force.value_or(0.0);
+  options.offset = o.offset.value_or(0.0);
+  if (o.boundary_film) options.boundary_film = *o.boundary_film;
+  if (o.tolerance) options.tolerance = *o.tolerance;
+  if (o.max_iterations) {
+    if (*o.max_iterations < 1 || *o.max_iterations > 100000) {
+      throw InputError(fmt::format("--max-iterations {} is invalid: allowed range is 1 to 100000", *o.max_iterations));
+    }
+    options.max_iterations = static_cast<int>(*o.max_iterations);
+  }
+  if (o.couette_scheme) options.couette_scheme = lubrication::parse_couette_scheme(*o.couette_scheme);
+  if (o.contact_friction) options.friction.contact_friction = *o.contact_friction;
+  if (o.limiting_shear_stress) options.friction.limiting_shear_stress = *o.limiting_shear_stress;
+  if (o.limiting_shear_slope) options.friction.limiting_shear_slope = *o.limiting_shear_slope;
+  options.validate();
+  if (grid.size() > lubrication::kMaxMixedFilmNodes) {
+    throw InputError(
+        fmt::format("{} has {} points: the mixed film's dense Newton path allows at most {} (coarsen the height map)",
+                    *o.height_map, grid.size(), lubrication::kMaxMixedFilmNodes));
+  }
+  if (o.speeds.has_value() != o.stribeck.has_value()) {
+    throw InputError("--speeds and --stribeck go together: the sweep's speeds and its CSV file");
+  }
+  if (o.speeds && !o.force) throw InputError("a Stribeck sweep (--speeds) is load controlled: pass --force N");
+  if (o.stribeck) io::check_output_path(*o.stribeck);
+  const Eigen::ArrayXd gap = map.heights.maxCoeff() - map.heights;
+  FftInfluenceOperator op(grid, e_star);
+  lubrication::FlowConditions used = conditions;
+  lubrication::MixedFilm film;
+  bool all_converged = true;
+  std::string first_failure;
+  if (o.speeds) {
+    std::vector<lubrication::StribeckPoint> points =
+        lubrication::stribeck_sweep(op, gap, conditions, laws, options, *o.speeds);
+    write_stribeck_csv(*o.stribeck, points);
+    for (const lubrication::StribeckPoint& point : points) {
+      if (!point.film.converged() && all_converged) {
+        all_converged = false;
+        first_failure = fmt::format("at {} m/s: {}", point.entrainment_speed, point.film.message);
+      }
+    }
+    const double speed = std::hypot(conditions.entrainment_velocity[0], conditions.entrainment_velocity[1]);
+    for (int axis = 0; axis < 2; ++axis) {
+      used.entrainment_velocity[axis] *= points.back().entrainment_speed / speed;
+      used.sliding_velocity[axis] *= points.back().entrainment_speed / speed;
+    }
+    film = std::move(points.back().film);
+  } else {
+    film = lubrication::solve_mixed_film(op, gap, conditions, laws, options);
+    all_converged = film.converged();
+    first_failure = film.message;
+  }
+
+  lubrication::FilmSummary summary;
+  summary.model = "mixed";
+  summary.status = std::string(lubrication::to_string(film.status));
+  summary.message = all_converged ? std::string() : first_failure;
+  summary.load = film.load;
+  summary.mean_pressure = film.load / grid.domain_area();
+  summary.separation = film.offset;
+  summary.central_film_thickness = film.central_film_thickness;
+  summary.minimum_film_thickness = film.minimum_film_thickness;
+  summary.max_pressure = film.max_pressure;
+  summary.cavitated_fraction = film.cavitated_fraction;
+  summary.viscosity = conditions.viscosity;
+  summary.iterations = film.iterations;
+  summary.film_solves = o.speeds ? static_cast<long long>(o.speeds->size()) : 1;
+  summary.relative_residual = film.relative_residual;
+  summary.solve_seconds = film.wall_seconds;
+  summary.friction_force_x = film.fluid_friction_force[0] + film.contact_friction_force[0];
+  summary.friction_force_y = film.fluid_friction_force[1] + film.contact_friction_force[1];
+  summary.friction_coefficient = film.friction_coefficient;
+  const std::vector<std::size_t> shape =
+      map.dimension == 1 ? std::vector<std::size_t>{map.nx} : std::vector<std::size_t>{map.ny, map.nx};
+  write_film_file(o, map, grid, summary, film.pressure, film.film, film.fluid_fraction, [&](const io::Hdf5Node& root) {
+    write_mixed_fields(root, shape, grid.size(), film, options, e_star, laws, used.viscosity);
+    root.write_double_attribute("entrainment_speed",
+                                std::hypot(used.entrainment_velocity[0], used.entrainment_velocity[1]));
+  });
+  const int code = report(o, summary, all_converged);
+  if (code == kExitOk && !o.quiet) {
+    fmt::print("  {:<15} {:.4g} of the load, area {:.4g} of the cells\n", "contact", film.contact_load_fraction,
+               film.contact_area_fraction);
+    if (o.stribeck) fmt::print("  {:<15} {} ({} speeds)\n", "stribeck", *o.stribeck, o.speeds->size());
+  }
+  return code;
+}
+
+// --roughness: a second profile's heights added point by point.
+void add_roughness(const std::string& path, HeightMap& map) {
+  const HeightMap rough = io::read_height_map(path);
+  if (rough.nx != map.nx || rough.ny != map.ny || rough.dimension != map.dimension) {
+    throw InputError(fmt::format("--roughness {} has {} x {} points, the height map {} x {}: they must be equal", path,
+                                 rough.nx, rough.ny, map.nx, map.ny));
+  }
+  if (!rough.all_valid()) throw InputError(fmt::format("--roughness {} has invalid points", path));
+  if (rough.dx > 0.0 && std::abs(rough.dx - map.dx) > 1e-9 * map.dx) {
+    throw InputError(fmt::format("--roughness {} has spacing {} m, the height map {} m: they must be equal", path,
+                                 rough.dx, map.dx));
+  }
+  map.heights += rough.heights;
+}
+
 int run_lubricate(const LubricateOptions& o) {
   if (!o.height_map) throw InputError("no surface given: pass --height-map FILE");
   if (!o.viscosity) throw InputError("no viscosity given: pass --viscosity PA_S");
   if (!o.entrainment_velocity) throw InputError("no entrainment velocity given: pass --entrainment-velocity UX[,UY]");
-  if (o.separation.has_value() == o.force.has_value()) {
-    throw InputError("give exactly one of --separation M and --force N");
+  if (o.separation.has_value() + o.force.has_value() + o.offset.has_value() != 1) {
+    throw InputError(o.mixed ? "give exactly one of --force N and --offset M"
+                             : "give exactly one of --separation M and --force N");
+  }
+  if (!o.mixed && (o.offset || o.contact_friction || o.boundary_film || o.limiting_shear_stress ||
+                   o.limiting_shear_slope || o.speeds || o.stribeck)) {
+    throw InputError(
+        "--offset, --contact-friction, --boundary-film, --limiting-shear-stress, --limiting-shear-slope, --speeds and "
+        "--stribeck belong to the mixed film: add --mixed");
   }
   if (!o.output) throw InputError("no output file given: pass --output FILE.h5");
   io::check_output_path(*o.output);
@@ -276,12 +482,17 @@ int run_lubricate(const LubricateOptions& o) {
         "--max-iterations and --boundary need an elastic film: give --E-star (or --E1, --nu1, --E2, --nu2)");
   }
 
-  const HeightMap map = io::read_height_map(*o.height_map);
+  HeightMap map = io::read_height_map(*o.height_map);
   if (!map.all_valid()) {
     throw InputError(fmt::format("{} has invalid points: a film needs every height", *o.height_map));
   }
   if (!(map.dx > 0.0) || (map.dimension == 2 && !(map.dy > 0.0))) {
     throw InputError(fmt::format("{} does not give its spacing: a film needs dx (and dy) in metres", *o.height_map));
+  }
+  if (o.roughness) add_roughness(*o.roughness, map);
+  if (o.mixed) {
+    if (!e_star) throw InputError("--mixed needs an elastic body: give --E-star (or --E1, --nu1, --E2, --nu2)");
+    return run_mixed(o, map, conditions, *e_star);
   }
   if (e_star) return run_elastic(o, map, conditions, *e_star);
 

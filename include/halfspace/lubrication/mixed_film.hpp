@@ -1,0 +1,157 @@
+// Mixed lubrication: the EHL film of elastic_film.hpp where the film may
+// close. Where the gap between the elastic body and the rough rigid surface
+// would become negative the asperities touch and carry a contact pressure
+// p_c; elsewhere the fluid carries the Reynolds pressure p_f. Both deform the
+// one elastic body through the same influence operator K:
+//
+//   div( rho h_R^3 / (12 eta) grad p_f ) = div( U rho h_R theta ),
+//   h = h0 + g + K (p_f + p_c),   h_R = max(h, h_b),   sum(p_f + p_c) dA = w,
+//   p_f >= 0,  0 <= theta <= 1,  p_f (1 - theta) = 0        (cavitation, JFO)
+//   h >= 0,    p_c >= 0,         h p_c = 0                  (contact)
+//
+// h_b is a boundary film (a few molecular layers): the Reynolds equation sees
+// at least h_b, so its rows stay regular in contact cells (fluid pressure is
+// still defined there, and the Poiseuille flow through a contact patch is
+// that of h_b, negligible, as h_b^3) and the fluid's film is the elastic gap
+// wherever that is thicker. At high speeds (no cell below h_b) the equations
+// are the EHL film's exactly. The solver is the EHL solver's semi-smooth
+// Newton with a second unknown per node, the contact pressure, whose
+// complementarity is the row min(p_c / P, h / H) = 0 (an active-set Newton,
+// as the contact solvers' LCP; docs/theory.md#mixed-lubrication). The
+// Jacobian is dense: (2n + 1)^2, so the path allows kMaxMixedFilmNodes nodes.
+#pragma once
+
+#include <Eigen/Core>
+#include <array>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "halfspace/lubrication/elastic_film.hpp"
+#include "halfspace/lubrication/film_solution.hpp"
+#include "halfspace/lubrication/flow_conditions.hpp"
+#include "halfspace/lubrication/lubricant.hpp"
+#include "halfspace/operators/influence_operator.hpp"
+
+namespace halfspace::lubrication {
+
+// Nodes up to which the mixed film's dense Newton path is allowed: its
+// Jacobian and LU are (2n + 1)^2 each (134 MB each at the limit).
+inline constexpr std::size_t kMaxMixedFilmNodes = 2048;
+
+// How the film's shear and the asperities' friction are taken.
+struct MixedFrictionOptions {
+  double contact_friction = 0.1;  // Coulomb coefficient on contact cells, >= 0
+  // The fluid's limiting shear stress tau_L = limiting_shear_stress +
+  // limiting_shear_slope * p_f (Pa; Bair & Winer 1979's linear law): the
+  // Couette shear of a cell is capped at tau_L. Both 0: Newtonian, no cap.
+  double limiting_shear_stress = 0.0;
+  double limiting_shear_slope = 0.0;
+
+  // Throws InputError naming the option unless all three are >= 0 and finite.
+  void validate() const;
+};
+
+struct MixedFilmOptions {
+  // Load control: the load w (N in 2D, N/m in 1D) > 0, h0 unknown. Separation
+  // control (load 0): h0 = offset is given and the load follows.
+  double load = 0.0;
+  double offset = 0.0;          // m; h0 under separation control (ElasticFilm::offset's meaning)
+  double boundary_film = 1e-9;  // m, h_b > 0
+  // Converged when the largest |mass balance| <= tolerance * the largest
+  // Couette outflow, |load - w| <= load_tolerance * w, and the contact rows
+  // |min(p_c / P, h / H)| <= contact_tolerance (P the pressure scale, H the
+  // film scale: the largest gap inside the dry contact).
+  double tolerance = 1e-8;
+  double load_tolerance = 1e-8;
+  double contact_tolerance = 1e-10;
+  int max_iterations = 200;  // Newton steps over all starts
+  CouetteScheme couette_scheme = CouetteScheme::first_order;
+  MixedFrictionOptions friction;
+
+  // Throws InputError naming the option unless load >= 0 and finite, offset
+  // finite, boundary_film > 0 and finite, the tolerances in (0, 1),
+  // max_iterations >= 1 and the friction options valid.
+  void validate() const;
+  bool load_controlled() const { return load > 0.0; }
+};
+
+struct MixedFilm {
+  FilmStatus status = FilmStatus::failure;
+  std::string message;  // empty when converged
+  // (ny, nx) row-major on the grid's cells.
+  Eigen::ArrayXd fluid_pressure;    // p_f (Pa)
+  Eigen::ArrayXd contact_pressure;  // p_c (Pa)
+  Eigen::ArrayXd pressure;          // p_f + p_c
+  Eigen::ArrayXd fluid_fraction;    // theta
+  Eigen::ArrayXd film;              // h (m): the gap, 0 on contact cells
+  Eigen::ArrayXd deformation;       // K (p_f + p_c) (m)
+  double offset = 0.0;              // h0 (m)
+  double entrainment_speed = 0.0;   // |U| of the solve (m/s)
+  double load = 0.0;                // sum(p) dA
+  double fluid_load = 0.0, contact_load = 0.0;
+  double contact_load_fraction = 0.0;   // contact_load / load
+  double contact_area = 0.0;            // m^2 (m in 1D): cells with p_c > 0
+  double contact_area_fraction = 0.0;   // of all cells
+  double central_film_thickness = 0.0;  // h at the undeformed gap's minimum
+  double minimum_film_thickness = 0.0;  // the smallest h (0 with contact)
+  double max_pressure = 0.0;
+  double cavitated_fraction = 0.0;  // cells with theta < 1 and no contact
+  // Friction (N in 2D, N/m in 1D, (x, y)) on the rough surface, along the
+  // sliding velocity: the film's shear (Couette, capped at the limiting
+  // shear stress, and Poiseuille) on cells without contact, and Coulomb's
+  // mu p_c on contact cells; the coefficient is |their sum| / load.
+  std::array<double, 2> fluid_friction_force{0.0, 0.0};
+  std::array<double, 2> contact_friction_force{0.0, 0.0};
+  double friction_coefficient = 0.0;
+  int iterations = 0;  // Newton steps
+  int line_search_halvings = 0;
+  double wall_seconds = 0.0;
+  // Measured after the solve apart from the Newton iteration, with the
+  // operator's own product: the flux-form mass residual (on h_R), |load -
+  // w| / w, and the contact complementarity max over cells of
+  // max(-h, 0) / H, max(-p_c, 0) / P and min(h / H, p_c / P).
+  double relative_residual = 0.0;
+  double load_error = 0.0;
+  double complementarity_error = 0.0;
+
+  bool converged() const { return status == FilmStatus::converged; }
+};
+
+// Solves the mixed film on the operator's grid (serial, at most
+// kMaxMixedFilmNodes cells). `gap` is g (m, >= 0 with its minimum at the
+// contact's centre: the smooth shape plus the roughness, shifted). Starts
+// from `start` (a previous film of the same grid), else tries in turn the
+// EHL start (the dry contact under a thin film), the dry contact itself and
+// a thick film. Under load control a solve that fails from there continues
+// in the speed: from the start's speed, or from a faster film (4, 16, ...
+// times the velocities) that converges, down in steps of at most a factor
+// 2 (halved where a step fails); `iterations` then counts every Newton step.
+// Throws InputError for invalid input; non-convergence is a status.
+MixedFilm solve_mixed_film(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
+                           const LubricantLaws& laws, const MixedFilmOptions& options,
+                           const MixedFilm* start = nullptr);
+
+// The friction forces and coefficient of `film` (filled into it), from its
+// pressures, fluid fraction and film; called by solve_mixed_film.
+void add_mixed_friction(const Grid& grid, const FlowConditions& conditions, const LubricantLaws& laws,
+                        const MixedFrictionOptions& friction, double boundary_film, MixedFilm& film);
+
+// One point of a Stribeck curve.
+struct StribeckPoint {
+  double entrainment_speed = 0.0;  // |U| (m/s)
+  // eta0 |U| / w' with w' the load per unit width (1D: the load; 2D: the load
+  // over the domain's extent across the entrainment).
+  double hersey_number = 0.0;
+  MixedFilm film;
+};
+
+// The mixed film at each entrainment speed (m/s, > 0, in the given order;
+// each warm-started from the previous), the velocities scaled from
+// `conditions` (their direction and slide-to-roll ratio kept; the
+// entrainment velocity must not be zero). Load control only.
+std::vector<StribeckPoint> stribeck_sweep(InfluenceOperator& op, const Eigen::ArrayXd& gap,
+                                          const FlowConditions& conditions, const LubricantLaws& laws,
+                                          const MixedFilmOptions& options, const std::vector<double>& speeds);
+
+}  // namespace halfspace::lubrication

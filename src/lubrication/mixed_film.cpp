@@ -1,0 +1,589 @@
+// Newton's method on the mixed film (mixed_film.hpp): the EHL solver's
+// semi-smooth Newton (elastic_film.cpp) with a contact pressure per node.
+// The unknowns are [s (n), q (n), h0] with p_f = P max(s, 0), theta = 1 +
+// min(s, 0) and p_c = P q; the rows are the n mass balances (on the film h_R
+// = max(h, h_b)), the n contact rows min(q, h / H) and the load. With dh/dp
+// = K for the fluid and the contact pressure alike, the Jacobian's blocks are
+//
+//   d balance / d s = (A_p + A_h D K) diag(P full) + A_theta diag(cavitated)
+//   d balance / d q = A_h D K P,          D = diag(h > h_b)
+//   d contact / d q = I (open rows) or K P / H (closed rows, h = 0 imposed)
+//   d contact / d s = 0 (open) or K diag(P full) / H (closed)
+//
+// plus the h0 column and the load row; the contact rows are the active-set
+// form of the complementarity (Hintermüller, Ito & Kunisch 2003: the
+// primal-dual active set method is a semi-smooth Newton on the min
+// function).
+#include "halfspace/lubrication/mixed_film.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/LU>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <vector>
+
+#include "halfspace/error.hpp"
+#include "halfspace/lubrication/cavitation_solver.hpp"
+#include "halfspace/lubrication/reynolds_stencil.hpp"
+#include "halfspace/solvers/polonsky_keer.hpp"
+#include "reynolds_linearisation.hpp"
+
+namespace halfspace::lubrication {
+
+void MixedFrictionOptions::validate() const {
+  const auto check = [](double value, const char* name) {
+    if (!(std::isfinite(value) && value >= 0.0)) {
+      throw InputError(fmt::format("{} = {} is invalid: it must be >= 0 and finite", name, value));
+    }
+  };
+  check(contact_friction, "contact friction coefficient");
+  check(limiting_shear_stress, "limiting shear stress");
+  check(limiting_shear_slope, "limiting shear stress slope");
+}
+
+void MixedFilmOptions::validate() const {
+  if (!(std::isfinite(load) && load >= 0.0)) {
+    throw InputError(fmt::format(
+        "mixed film load = {} is invalid: it must be positive and finite (or 0 for separation control)", load));
+  }
+  if (!std::isfinite(offset)) throw InputError(fmt::format("mixed film offset = {} is invalid: not finite", offset));
+  if (!(std::isfinite(boundary_film) && boundary_film > 0.0)) {
+    throw InputError(
+        fmt::format("boundary film = {} m is invalid: it must be positive and finite (e.g. 1e-9)", boundary_film));
+  }
+  const auto fraction = [](double value, const char* name) {
+    if (!(value > 0.0 && value < 1.0)) {
+      throw InputError(fmt::format("mixed film {} = {} is invalid: allowed range is 0 < tolerance < 1", name, value));
+    }
+  };
+  fraction(tolerance, "tolerance");
+  fraction(load_tolerance, "load tolerance");
+  fraction(contact_tolerance, "contact tolerance");
+  if (max_iterations < 1) {
+    throw InputError(fmt::format("mixed film max iterations = {} is invalid: at least 1 Newton step", max_iterations));
+  }
+  friction.validate();
+}
+
+namespace {
+
+using detail::influence_matrix;
+using detail::linearise;
+using detail::LocalTerm;
+using detail::NodeCoefficients;
+
+// The starts tried in turn when none is given: the EHL start (the dry
+// contact's pressure as fluid under half an edge gap of film), the dry
+// contact itself (all pressure in contact, no fluid pressure), a thick film.
+enum class Start { thin_film, dry_contact, thick_film };
+constexpr std::array<Start, 3> kStarts{Start::thin_film, Start::dry_contact, Start::thick_film};
+constexpr double kThinFilm = 0.5;
+constexpr double kThickFilm = 8.0;
+// The trust region of a step: s and q by at most this, h0 by at most this
+// times the thinnest fluid film (at least kFilmFloorShare of H).
+constexpr double kLargestStep = 0.5;
+constexpr double kFilmFloorShare = 0.05;
+constexpr double kSwitchBand = 1e-9;
+constexpr int kBranchPasses = 4;
+
+struct State {
+  Eigen::ArrayXd s, q, fluid, theta, contact, deformation, film, reynolds_film;
+  double offset = 0.0;
+};
+
+}  // namespace
+
+namespace {
+
+// One Newton solve from `start` or the standard starts.
+MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
+                     const LubricantLaws& laws, const MixedFilmOptions& options, const MixedFilm* start) {
+  const auto started = std::chrono::steady_clock::now();
+  const Grid& grid = op.grid();
+  conditions.validate(grid);
+  laws.validate(conditions.viscosity);
+  options.validate();
+  const std::size_t n = grid.size();
+  if (op.local_size() != n) throw InputError("the mixed film needs a serial influence operator (one process)");
+  if (n > kMaxMixedFilmNodes) {
+    throw InputError(fmt::format("the {} grid has {} nodes: the mixed film's dense Newton path allows at most {}",
+                                 grid.shape_string(), n, kMaxMixedFilmNodes));
+  }
+  if (static_cast<std::size_t>(gap.size()) != n || !gap.allFinite()) {
+    throw InputError(fmt::format("mixed film gap has {} values, the {} grid has {} cells; every value must be finite",
+                                 gap.size(), grid.shape_string(), n));
+  }
+  const auto ni = static_cast<Eigen::Index>(n);
+  const ReynoldsStencil topology(grid, Eigen::ArrayXd::Ones(ni), conditions);
+  if (topology.couette_x() + topology.couette_y() <= 0.0) {
+    throw InputError(
+        "mixed film entrainment velocity is zero: at zero speed the film carries nothing (solve the dry contact)");
+  }
+  const bool load_control = options.load_controlled();
+  const double eta0 = conditions.viscosity;
+  const double area = grid.cell_area();
+  const double w = options.load;
+  const double supply = conditions.boundary.supply_fluid_fraction;
+  const double hb = options.boundary_film;
+  const bool second_order = options.couette_scheme == CouetteScheme::second_order;
+  const Eigen::Index m = 2 * ni + (load_control ? 1 : 0);  // unknowns
+  const Eigen::Index h0 = 2 * ni;                          // index of h0 (load control)
+
+  MixedFilm result;
+  // The dry contact: the start and the scales P (its peak pressure) and H
+  // (the largest undeformed gap inside it).
+  solvers::PolonskyKeer dry_solver(op);
+  double pressure_scale = 0.0, film_scale = 0.0, dry_offset = options.offset;
+  Eigen::ArrayXd dry_pressure = Eigen::ArrayXd::Zero(ni);
+  const bool given_start = start != nullptr && start->fluid_pressure.size() == ni &&
+                           start->contact_pressure.size() == ni && start->fluid_fraction.size() == ni;
+  if (load_control || !given_start) {
+    const solvers::Loading loading =
+        load_control ? solvers::Loading::force(w) : solvers::Loading::approach(std::max(-options.offset, 0.0));
+    if (load_control || -options.offset > 0.0) {
+      const solvers::SolveResult contact = dry_solver.solve({gap.data(), n}, loading);
+      if (!contact.converged()) {
+        result.message =
+            fmt::format("the dry contact that starts the mixed solve did not converge: {}", contact.message);
+        return result;
+      }
+      dry_pressure = contact.pressure;
+      pressure_scale = contact.max_pressure;
+      if (load_control) dry_offset = -contact.approach;
+    }
+  }
+  for (Eigen::Index k = 0; k < ni; ++k) {
+    if (dry_pressure[k] > 0.0) film_scale = std::max(film_scale, gap[k]);
+  }
+  if (!(film_scale > 0.0)) film_scale = std::max(gap.maxCoeff() - gap.minCoeff(), 1e-9);
+  const Eigen::MatrixXd k_matrix = influence_matrix(op);
+  if (given_start) {
+    pressure_scale = std::max(pressure_scale, (start->fluid_pressure + start->contact_pressure).maxCoeff());
+  }
+  if (!(pressure_scale > 0.0)) pressure_scale = 1e-3 * film_scale / k_matrix(0, 0);
+  if (load_control) pressure_scale = std::max(pressure_scale, w / grid.domain_area());
+  const double P = pressure_scale;
+  const double H = film_scale;
+
+  State x;
+  x.s.resize(ni);
+  x.q.resize(ni);
+  x.fluid.resize(ni);
+  x.theta.resize(ni);
+  x.contact.resize(ni);
+  x.deformation.resize(ni);
+  x.film.resize(ni);
+  x.reynolds_film.resize(ni);
+  const auto set_start = [&](Start kind) {
+    if (kind == Start::dry_contact) {
+      x.s.setZero();
+      x.q = dry_pressure / P;
+      x.offset = dry_offset;
+    } else {
+      x.s = dry_pressure / P;
+      x.q.setZero();
+      x.offset = dry_offset + (kind == Start::thin_film ? kThinFilm : kThickFilm) * H;
+    }
+  };
+  if (given_start) {
+    for (Eigen::Index k = 0; k < ni; ++k) {
+      x.s[k] = start->fluid_pressure[k] > 0.0 ? start->fluid_pressure[k] / P : start->fluid_fraction[k] - 1.0;
+    }
+    x.q = start->contact_pressure / P;
+    x.offset = load_control ? start->offset : options.offset;
+  } else {
+    set_start(load_control ? kStarts[0] : Start::dry_contact);
+  }
+  if (!load_control) x.offset = options.offset;
+
+  const auto evaluate = [&](State& state) {
+    for (Eigen::Index k = 0; k < ni; ++k) {
+      if (topology.fixed(static_cast<std::size_t>(k))) {
+        state.fluid[k] = topology.fixed_pressure(static_cast<std::size_t>(k));
+        state.theta[k] = supply;
+        continue;
+      }
+      state.s[k] = std::max(state.s[k], -1.0);
+      state.fluid[k] = P * std::max(state.s[k], 0.0);
+      state.theta[k] = 1.0 + std::min(state.s[k], 0.0);
+    }
+    state.contact = P * state.q;
+    const Eigen::ArrayXd total = state.fluid + state.contact;
+    op.apply({total.data(), n}, {state.deformation.data(), n});
+    state.film = state.offset + gap + state.deformation;
+    state.reynolds_film = state.film.max(hb);
+    return state.film.allFinite();
+  };
+
+  NodeCoefficients coefficients;
+  std::vector<LocalTerm> terms;
+  terms.reserve(16);
+  Eigen::VectorXd residual(m), step(m), trial_residual(m);
+  Eigen::MatrixXd jacobian_t(m, m);  // J transposed: row r's derivatives in column r
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu(m);
+  std::vector<char> branch_full(n, 1);
+  std::vector<char> closed(n, 0);  // contact rows on the h branch
+  double mass_scale = 1.0;
+
+  struct Measure {
+    double norm = 0.0, mass = 0.0, load = 0.0, contact = 0.0;
+  };
+  const auto measure = [&](const State& state, Eigen::VectorXd& out, bool linearise_too) {
+    coefficients.update(laws, eta0, state.fluid, state.reynolds_film);
+    double couette = 0.0;
+    for (std::size_t k = 0; k < n; ++k) {
+      if (!topology.fixed(k)) {
+        couette = std::max(couette, (topology.couette_x() + topology.couette_y()) * coefficients.rho[k] *
+                                        state.reynolds_film[static_cast<Eigen::Index>(k)]);
+      }
+    }
+    Measure result_measure;
+    double largest = 0.0;
+    if (linearise_too) jacobian_t.setZero();
+    for (std::size_t k = 0; k < n; ++k) {
+      const auto kk = static_cast<Eigen::Index>(k);
+      if (topology.fixed(k)) {
+        out[kk] = 0.0;
+        continue;
+      }
+      const double balance =
+          linearise(topology, k, coefficients, state.fluid, state.theta, state.reynolds_film, second_order, terms);
+      largest = std::max(largest, std::abs(balance));
+      out[kk] = balance / mass_scale;
+      if (!linearise_too) continue;
+      // Per unit pressure: the local d/dp_f in the s block, the film's
+      // d/dp (through K, for p_f and p_c alike) in the q block.
+      auto column = jacobian_t.col(kk);
+      double by_offset = 0.0;
+      for (const LocalTerm& t : terms) {
+        const auto node = static_cast<Eigen::Index>(t.node);
+        column[node] += t.by_pressure / mass_scale;
+        if (t.by_film != 0.0 && state.film[node] > hb) {
+          column.segment(ni, ni) += (t.by_film / mass_scale) * k_matrix.col(node);
+          by_offset += t.by_film;
+        }
+      }
+      if (load_control) column[h0] = by_offset / mass_scale;
+    }
+    double contact = 0.0;
+    for (Eigen::Index k = 0; k < ni; ++k) {
+      const double row = std::min(state.q[k], state.film[k] / H);
+      out[ni + k] = row;
+      contact = std::max(contact, std::abs(row));
+    }
+    const double load = (state.fluid + state.contact).sum() * area;
+    if (load_control) out[h0] = (load - w) / w;
+    result_measure.mass = largest / (couette > 0.0 ? couette : 1.0);
+    result_measure.load = load_control ? std::abs(load - w) / w : 0.0;
+    result_measure.contact = contact;
+    result_measure.norm = out.norm();
+    if (!linearise_too) return result_measure;
+    // Rows of J^T are the unknowns: s_j from the pressure rows (zero where
+    // s_j is cavitated or the node fixed), q_j = P times the film block.
+    for (std::size_t j = 0; j < n; ++j) {
+      const auto jj = static_cast<Eigen::Index>(j);
+      if (topology.fixed(j)) {
+        jacobian_t.row(jj).setZero();
+        jacobian_t(jj, jj) = 1.0;
+      } else {
+        const double scale = branch_full[j] != 0 ? P : 0.0;
+        jacobian_t.row(jj) = (jacobian_t.row(jj) + jacobian_t.row(ni + jj)) * scale;
+      }
+      jacobian_t.row(ni + jj) *= P;
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+      if (topology.fixed(k)) continue;
+      linearise(topology, k, coefficients, state.fluid, state.theta, state.reynolds_film, second_order, terms);
+      for (const LocalTerm& t : terms) {
+        if (!topology.fixed(t.node) && branch_full[t.node] == 0) {
+          jacobian_t(static_cast<Eigen::Index>(t.node), static_cast<Eigen::Index>(k)) += t.by_fraction / mass_scale;
+        }
+      }
+    }
+    // The contact rows: open ones fix q, closed ones the film.
+    for (std::size_t k = 0; k < n; ++k) {
+      const auto kk = static_cast<Eigen::Index>(k);
+      auto column = jacobian_t.col(ni + kk);
+      if (closed[k] == 0) {
+        column[ni + kk] = 1.0;
+        continue;
+      }
+      for (std::size_t j = 0; j < n; ++j) {
+        const auto jj = static_cast<Eigen::Index>(j);
+        const double by_pressure = k_matrix(kk, jj) * P / H;
+        column[ni + jj] = by_pressure;
+        column[jj] = !topology.fixed(j) && branch_full[j] != 0 ? by_pressure : 0.0;
+      }
+      if (load_control) column[h0] = 1.0 / H;
+    }
+    if (load_control) {
+      auto column = jacobian_t.col(h0);
+      for (std::size_t j = 0; j < n; ++j) {
+        const auto jj = static_cast<Eigen::Index>(j);
+        column[jj] = !topology.fixed(j) && branch_full[j] != 0 ? P * area / w : 0.0;
+        column[ni + jj] = P * area / w;
+      }
+    }
+    return result_measure;
+  };
+
+  const auto scale_masses = [&]() {
+    double couette = 0.0;
+    for (std::size_t k = 0; k < n; ++k) {
+      if (!topology.fixed(k)) {
+        couette = std::max(
+            couette, (topology.couette_x() + topology.couette_y()) * x.reynolds_film[static_cast<Eigen::Index>(k)]);
+      }
+    }
+    mass_scale = couette;
+  };
+  const auto converged = [&](const Measure& measured) {
+    return measured.mass <= options.tolerance && measured.load <= options.load_tolerance &&
+           measured.contact <= options.contact_tolerance;
+  };
+
+  evaluate(x);
+  scale_masses();
+  State trial = x;
+  const std::size_t attempts = given_start || !load_control ? 1 : kStarts.size();
+  int steps = 0;
+  for (std::size_t attempt = 0; attempt < attempts; ++attempt) {
+    if (attempt > 0) {
+      set_start(kStarts[attempt]);
+      evaluate(x);
+      scale_masses();
+    }
+    // Each start but the last gets an equal share of the steps.
+    const int budget = attempt + 1 == attempts ? options.max_iterations - steps
+                                               : std::max(1, options.max_iterations / static_cast<int>(attempts));
+    result.status = FilmStatus::failure;
+    result.message.clear();
+    Measure current = measure(x, residual, false);
+    for (int iteration = 0;; ++iteration) {
+      if (converged(current)) {
+        result.status = FilmStatus::converged;
+        break;
+      }
+      if (!std::isfinite(current.norm)) {
+        result.message = fmt::format("the mixed film's Newton iteration diverged after {} steps", steps);
+        break;
+      }
+      if (iteration == budget) {
+        result.status = FilmStatus::iteration_limit;
+        result.message = fmt::format(
+            "the mixed film did not converge in {} Newton steps: relative mass residual {:.3g} (tolerance {:.3g}), "
+            "load error {:.3g} (tolerance {:.3g}), contact residual {:.3g} (tolerance {:.3g})",
+            steps, current.mass, options.tolerance, current.load, options.load_tolerance, current.contact,
+            options.contact_tolerance);
+        break;
+      }
+      for (std::size_t j = 0; j < n; ++j) {
+        const auto jj = static_cast<Eigen::Index>(j);
+        branch_full[j] = x.s[jj] >= 0.0 ? 1 : 0;
+        closed[j] = x.film[jj] / H < x.q[jj] ? 1 : 0;
+      }
+      bool singular = false;
+      for (int pass = 0; pass < kBranchPasses; ++pass) {
+        measure(x, residual, true);
+        lu.compute(jacobian_t.transpose());
+        step = lu.solve(-residual);
+        if (!step.allFinite()) {
+          singular = true;
+          break;
+        }
+        bool flipped = false;
+        for (std::size_t j = 0; j < n; ++j) {
+          const auto jj = static_cast<Eigen::Index>(j);
+          if (topology.fixed(j) || std::abs(x.s[jj]) > kSwitchBand) continue;
+          const char wanted = step[jj] >= 0.0 ? 1 : 0;
+          if (wanted != branch_full[j]) {
+            branch_full[j] = wanted;
+            flipped = true;
+          }
+        }
+        if (!flipped) break;
+      }
+      ++steps;
+      if (singular) {
+        result.message = fmt::format("the mixed film's Newton step {} is singular", steps);
+        break;
+      }
+      const double largest_change = step.head(2 * ni).cwiseAbs().maxCoeff();
+      double lambda = std::min(1.0, kLargestStep / std::max(largest_change, 1e-300));
+      if (load_control) {
+        const double thinnest =
+            std::max(x.film.maxCoeff() > 0.0 ? x.reynolds_film.minCoeff() : 0.0, kFilmFloorShare * H);
+        lambda = std::min(lambda, kLargestStep * thinnest / std::max(std::abs(step[h0]), 1e-300));
+      }
+      bool accepted = false;
+      Measure tried;
+      for (int halving = 0; halving <= 30; ++halving, lambda *= 0.5) {
+        trial.s = x.s + lambda * step.head(ni).array();
+        trial.q = x.q + lambda * step.segment(ni, ni).array();
+        trial.offset = load_control ? x.offset + lambda * step[h0] : x.offset;
+        if (!evaluate(trial)) continue;
+        tried = measure(trial, trial_residual, false);
+        if (std::isfinite(tried.norm) && tried.norm <= (1.0 - 1e-4 * lambda) * current.norm) {
+          accepted = true;
+          break;
+        }
+        ++result.line_search_halvings;
+      }
+      if (!accepted) {
+        result.message = fmt::format(
+            "the mixed film's Newton iteration stalled at step {}: no step along the Newton direction lowers the "
+            "residual (relative mass residual {:.3g}, load error {:.3g}, contact residual {:.3g})",
+            steps, current.mass, current.load, current.contact);
+        break;
+      }
+      std::swap(x, trial);
+      current = tried;
+    }
+    if (result.converged()) break;
+  }
+  result.iterations = steps;
+  result.entrainment_speed = std::hypot(conditions.entrainment_velocity[0], conditions.entrainment_velocity[1]);
+
+  // The result, with the contact pressure's rounding (q below 0 by the
+  // contact tolerance) clipped and the check made apart from the iteration.
+  result.fluid_pressure = x.fluid;
+  result.contact_pressure = x.contact.max(0.0);
+  result.pressure = result.fluid_pressure + result.contact_pressure;
+  result.fluid_fraction = x.theta;
+  result.offset = x.offset;
+  result.deformation.resize(ni);
+  op.apply({result.pressure.data(), n}, {result.deformation.data(), n});
+  result.film = x.offset + gap + result.deformation;
+  const Eigen::ArrayXd reynolds_film = result.film.max(hb);
+  result.fluid_load = result.fluid_pressure.sum() * area;
+  result.contact_load = result.contact_pressure.sum() * area;
+  result.load = result.fluid_load + result.contact_load;
+  result.contact_load_fraction = result.load > 0.0 ? result.contact_load / result.load : 0.0;
+  const auto in_contact = (result.contact_pressure > 0.0).count();
+  result.contact_area = static_cast<double>(in_contact) * area;
+  result.contact_area_fraction = static_cast<double>(in_contact) / static_cast<double>(n);
+  Eigen::Index centre = 0;
+  gap.minCoeff(&centre);
+  result.max_pressure = result.pressure.maxCoeff();
+  result.cavitated_fraction =
+      static_cast<double>(((result.fluid_fraction < 1.0) && (result.contact_pressure <= 0.0)).count()) /
+      static_cast<double>(n);
+  result.relative_residual = elastic_film_residual(grid, conditions, laws, reynolds_film, result.fluid_pressure,
+                                                   result.fluid_fraction, options.couette_scheme);
+  result.load_error = load_control ? std::abs(result.load - w) / w : 0.0;
+  double complementarity = 0.0;
+  for (Eigen::Index k = 0; k < ni; ++k) {
+    const double h = result.film[k] / H;
+    const double pc = x.contact[k] / P;
+    complementarity = std::max({complementarity, -h, -pc, std::abs(std::min(h, pc))});
+  }
+  result.complementarity_error = complementarity;
+  // The film on contact cells is 0 to the rounding of h0 + g + K p (h0 may be
+  // 1e4 times the film); the check above saw the film as computed.
+  for (Eigen::Index k = 0; k < ni; ++k) {
+    if (result.contact_pressure[k] > 0.0 || result.film[k] < 0.0) result.film[k] = 0.0;
+  }
+  result.central_film_thickness = result.film[centre];
+  result.minimum_film_thickness = result.film.minCoeff();
+  if (result.converged()) {
+    if (!(result.relative_residual <= 10.0 * options.tolerance && result.load_error <= 10.0 * options.load_tolerance &&
+          result.complementarity_error <= 10.0 * options.contact_tolerance &&
+          satisfies_complementarity(result.fluid_pressure, result.fluid_fraction))) {
+      result.status = FilmStatus::failure;
+      result.message = fmt::format(
+          "the mixed film's check failed after the Newton iteration stopped: relative mass residual {:.3g}, load "
+          "error {:.3g}, contact complementarity {:.3g}",
+          result.relative_residual, result.load_error, result.complementarity_error);
+    }
+  }
+  add_mixed_friction(grid, conditions, laws, options.friction, hb, result);
+  result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  return result;
+}
+
+FlowConditions at_speed_factor(const FlowConditions& conditions, double factor) {
+  FlowConditions scaled = conditions;
+  for (int axis = 0; axis < 2; ++axis) {
+    scaled.entrainment_velocity[axis] *= factor;
+    scaled.sliding_velocity[axis] *= factor;
+  }
+  return scaled;
+}
+
+// Continuation in the speed: from a film solved at `factor` times the
+// velocities down (or up) to the velocities themselves, in steps of at most
+// kContinuationRatio, each warm-started from the last; a step that fails is
+// halved (in log speed) down to kSmallestRatio. The films between are
+// discarded; the steps are counted into the result's iterations.
+constexpr double kContinuationRatio = 2.0;
+constexpr double kSmallestRatio = 1.02;
+constexpr int kContinuationSolves = 60;
+
+MixedFilm continue_in_speed(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
+                            const LubricantLaws& laws, const MixedFilmOptions& options, MixedFilm film, double factor,
+                            int& steps, int& solves) {
+  double ratio = kContinuationRatio;
+  while (factor != 1.0 && solves < kContinuationSolves) {
+    const double log_step = std::min(std::abs(std::log(factor)), std::log(ratio));
+    const double next =
+        std::abs(std::log(factor)) <= log_step ? 1.0 : factor * std::exp(factor > 1.0 ? -log_step : log_step);
+    MixedFilm trial = solve_once(op, gap, at_speed_factor(conditions, next), laws, options, &film);
+    ++solves;
+    steps += trial.iterations;
+    if (trial.converged()) {
+      film = std::move(trial);
+      factor = next;
+      ratio = std::min(ratio * 1.5, kContinuationRatio);
+      continue;
+    }
+    ratio = std::sqrt(ratio);
+    if (ratio < kSmallestRatio) {
+      trial.message = fmt::format("speed continuation stalled at {:.4g} times the velocities: {}", next, trial.message);
+      return trial;
+    }
+  }
+  if (factor != 1.0) {
+    film.status = FilmStatus::iteration_limit;
+    film.message =
+        fmt::format("speed continuation stopped after {} solves at {:.4g} times the velocities", solves, factor);
+  }
+  return film;
+}
+
+}  // namespace
+
+MixedFilm solve_mixed_film(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
+                           const LubricantLaws& laws, const MixedFilmOptions& options, const MixedFilm* start) {
+  const auto started = std::chrono::steady_clock::now();
+  MixedFilm film = solve_once(op, gap, conditions, laws, options, start);
+  if (film.converged() || !options.load_controlled()) return film;
+  // Where the film does not converge from its starts (the mixed regime, with
+  // contacts coming and going), continue in the speed: from the given film's
+  // speed if it has one, else from a faster film that converges.
+  int steps = film.iterations, solves = 1;
+  MixedFilm from;
+  double factor = 0.0;
+  const double speed = std::hypot(conditions.entrainment_velocity[0], conditions.entrainment_velocity[1]);
+  if (start != nullptr && start->converged() && start->entrainment_speed > 0.0 && start->entrainment_speed != speed) {
+    from = *start;
+    factor = start->entrainment_speed / speed;
+  }
+  for (double faster = 4.0; factor == 0.0 && faster <= 1e4; faster *= 4.0) {
+    MixedFilm trial = solve_once(op, gap, at_speed_factor(conditions, faster), laws, options, nullptr);
+    ++solves;
+    steps += trial.iterations;
+    if (trial.converged()) {
+      from = std::move(trial);
+      factor = faster;
+    }
+  }
+  if (factor == 0.0) return film;
+  MixedFilm continued = continue_in_speed(op, gap, conditions, laws, options, std::move(from), factor, steps, solves);
+  continued.iterations = steps;
+  continued.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  return continued;
+}
+
+}  // namespace halfspace::lubrication

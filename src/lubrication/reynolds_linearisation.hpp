@@ -1,0 +1,141 @@
+// The pieces of a Newton iteration on the piezoviscous, compressible p–theta
+// Reynolds equation that the EHL film (elastic_film.cpp) and the mixed film
+// (mixed_film.cpp) share: the nodes' coefficients, one node's balance with
+// its local derivatives, and the dense influence matrix. Private to the
+// library.
+#pragma once
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <cstddef>
+#include <vector>
+
+#include "halfspace/lubrication/lubricant.hpp"
+#include "halfspace/lubrication/reynolds_stencil.hpp"
+#include "halfspace/operators/influence_operator.hpp"
+
+namespace halfspace::lubrication::detail {
+
+// The nodes' pressure-dependent coefficients for a film: rho / rho0, eps =
+// rho h^3 / (12 eta) and their derivatives.
+struct NodeCoefficients {
+  Eigen::ArrayXd rho, rho_p, eps, eps_p, eps_h;
+
+  void update(const LubricantLaws& laws, double eta0, const Eigen::ArrayXd& p, const Eigen::ArrayXd& h) {
+    const Eigen::Index n = p.size();
+    rho.resize(n);
+    rho_p.resize(n);
+    eps.resize(n);
+    eps_p.resize(n);
+    eps_h.resize(n);
+    for (Eigen::Index k = 0; k < n; ++k) {
+      const double pk = std::max(p[k], 0.0);
+      rho[k] = laws.density_ratio(pk);
+      rho_p[k] = laws.density_ratio_slope(pk);
+      eps[k] = rho[k] * h[k] * h[k] * h[k] / (12.0 * eta0 * laws.viscosity_ratio(pk, eta0));
+      eps_p[k] = eps[k] * (rho_p[k] / rho[k] - laws.viscosity_log_slope(pk, eta0));
+      eps_h[k] = 3.0 * eps[k] / h[k];
+    }
+  }
+};
+
+// One local derivative of a node's balance: d/dp, d/dh, d/dtheta of `node`.
+struct LocalTerm {
+  std::size_t node;
+  double by_pressure, by_film, by_fraction;
+};
+
+// The balance of node k (per unit area, m/s) and its local derivatives
+// (up to 5 faces + 3 Couette terms).
+inline double linearise(const ReynoldsStencil& topology, std::size_t k, const NodeCoefficients& c,
+                        const Eigen::ArrayXd& p, const Eigen::ArrayXd& theta, const Eigen::ArrayXd& h,
+                        bool second_order, std::vector<LocalTerm>& terms) {
+  terms.clear();
+  const Neighbours nb = topology.neighbours(k);
+  const Grid& grid = topology.grid();
+  double balance = 0.0;
+  double own_p = 0.0, own_h = 0.0;
+  const auto face = [&](std::size_t other, double spacing) {
+    if (other == Neighbours::kNone) return;
+    const double w = 0.5 / (spacing * spacing);
+    const double conductance = w * (c.eps[k] + c.eps[other]);
+    const double drop = p[k] - p[other];
+    balance += conductance * drop;
+    own_p += conductance + drop * w * c.eps_p[k];
+    own_h += drop * w * c.eps_h[k];
+    terms.push_back({other, -conductance + drop * w * c.eps_p[other], drop * w * c.eps_h[other], 0.0});
+  };
+  face(nb.west, grid.dx());
+  face(nb.east, grid.dx());
+  face(nb.south, grid.dy());
+  face(nb.north, grid.dy());
+  terms.push_back({k, own_p, own_h, 0.0});
+  // The Couette flux U rho h theta through a face, taken from the upstream
+  // node (first order), or at second order the linear extrapolation 1.5
+  // m_up - 0.5 m_upup (Venner & Lubrecht 2000's second-order upstream
+  // scheme), first order where the upstream node has no upstream neighbour
+  // (next to a fixed edge).
+  const auto mass = [&](std::size_t node, double coefficient) {
+    balance += coefficient * c.rho[node] * h[node] * theta[node];
+    terms.push_back({node, coefficient * c.rho_p[node] * h[node] * theta[node], coefficient * c.rho[node] * theta[node],
+                     coefficient * c.rho[node] * h[node]});
+  };
+  const auto couette = [&](double coefficient, auto upstream_of) {
+    if (coefficient == 0.0) return;
+    const std::size_t up = upstream_of(nb);
+    // Out through the downstream face.
+    if (up == Neighbours::kNone) {
+      mass(k, coefficient);
+      return;
+    }
+    if (!second_order) {
+      mass(k, coefficient);
+      mass(up, -coefficient);
+      return;
+    }
+    mass(k, 1.5 * coefficient);
+    mass(up, -0.5 * coefficient);
+    // In through the upstream face.
+    const std::size_t up_up = upstream_of(topology.neighbours(up));
+    if (up_up == Neighbours::kNone) {
+      mass(up, -coefficient);
+    } else {
+      mass(up, -1.5 * coefficient);
+      mass(up_up, 0.5 * coefficient);
+    }
+  };
+  couette(topology.couette_x(), [&](const Neighbours& n) { return topology.upstream_x(n); });
+  couette(topology.couette_y(), [&](const Neighbours& n) { return topology.upstream_y(n); });
+  return balance;
+}
+
+// The dense K from one product: K(i, j) depends only on the offset of the
+// two cells, and is even in each axis' offset on free grids.
+inline Eigen::MatrixXd influence_matrix(InfluenceOperator& op) {
+  const Grid& grid = op.grid();
+  const std::size_t n = grid.size();
+  const std::size_t nx = grid.nx();
+  const std::size_t ny = grid.ny();
+  std::vector<double> unit(n, 0.0), column(n, 0.0);
+  unit[0] = 1.0;
+  op.apply(unit, column);
+  Eigen::MatrixXd k(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+  for (std::size_t j = 0; j < n; ++j) {
+    const std::size_t xj = j % nx, yj = j / nx;
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t xi = i % nx, yi = i / nx;
+      std::size_t dx = 0, dy = 0;
+      if (grid.periodic()) {
+        dx = (xi + nx - xj) % nx;
+        dy = (yi + ny - yj) % ny;
+      } else {
+        dx = xi > xj ? xi - xj : xj - xi;
+        dy = yi > yj ? yi - yj : yj - yi;
+      }
+      k(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = column[dy * nx + dx];
+    }
+  }
+  return k;
+}
+
+}  // namespace halfspace::lubrication::detail

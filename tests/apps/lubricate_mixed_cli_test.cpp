@@ -1,0 +1,194 @@
+// `halfspace lubricate --mixed`: the program's mixed film equals the
+// library's on the same rough gap, its fields and attributes are written and
+// add up, the Stribeck sweep writes its CSV, and bad input names the option.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "halfspace/io/height_map_reader.hpp"
+#include "halfspace/lubrication/mixed_film.hpp"
+#include "halfspace/operators/fft_influence_operator.hpp"
+#include "io/hdf5_test_support.hpp"
+#include "support/cli_checks.hpp"
+#include "support/program_run.hpp"
+
+namespace halfspace {
+namespace {
+
+using test::TempDir;
+using testing::expect_input_error;
+using testing::kExitOk;
+using testing::ProgramRun;
+using testing::run_program;
+
+// A cylinder (R = 10 mm) with a self-affine roughness of 0.1 um rms on 97
+// points over 0.24 mm, as the generate command makes them.
+void make_rough_line(const TempDir& dir, std::size_t points = 97) {
+  const std::string grid = std::to_string(points);
+  ASSERT_EQ(run_program({"generate", "--kind", "cylinder", "--grid", grid, "--size", "2.4e-4", "--radius", "0.01",
+                         "--output", "cylinder.h5", "--quiet"},
+                        dir.path())
+                .exit_code,
+            kExitOk);
+  ASSERT_EQ(run_program({"generate", "--kind", "self-affine", "--grid", grid, "--size", "2.4e-4", "--rms-height",
+                         "1e-7", "--seed", "3", "--output", "rough.h5", "--quiet"},
+                        dir.path())
+                .exit_code,
+            kExitOk);
+}
+
+const std::vector<std::string> kMixedRun{"lubricate",
+                                         "--height-map",
+                                         "cylinder.h5",
+                                         "--roughness",
+                                         "rough.h5",
+                                         "--mixed",
+                                         "--viscosity",
+                                         "0.04",
+                                         "--force",
+                                         "4.4e4",
+                                         "--E-star",
+                                         "1.1e11",
+                                         "--pressure-viscosity",
+                                         "2.27e-8",
+                                         "--piezoviscosity",
+                                         "roelands",
+                                         "--limiting-shear-slope",
+                                         "0.05"};
+
+std::vector<std::string> mixed_run(std::vector<std::string> more) {
+  std::vector<std::string> args = kMixedRun;
+  args.insert(args.end(), more.begin(), more.end());
+  return args;
+}
+
+TEST(LubricateMixedCliTest, MixedFilmIsTheLibrarys) {
+  const TempDir dir;
+  make_rough_line(dir);
+  const ProgramRun run = run_program(mixed_run({"--entrainment-velocity", "0.001", "--sliding-velocity", "0.0005",
+                                                "--contact-friction", "0.12", "--output", "m.h5"}), dir.path());
+  ASSERT_EQ(run.exit_code, kExitOk) << run.err;
+  const test::H5 file = test::open_file(dir / "m.h5");
+  const auto field = [&](const std::string& name) {
+    return test::read_dataset<double>(file.get(), name, H5T_NATIVE_DOUBLE);
+  };
+  const std::vector<double> fluid = field("/fluid_pressure");
+  const std::vector<double> contact = field("/contact_pressure");
+  const std::vector<double> total = field("/pressure");
+  const std::vector<double> film = field("/film");
+  ASSERT_EQ(fluid.size(), 97u);
+  double contact_sum = 0.0, total_sum = 0.0;
+  for (std::size_t k = 0; k < fluid.size(); ++k) {
+    EXPECT_EQ(total[k], fluid[k] + contact[k]);
+    if (contact[k] > 0.0) {
+      EXPECT_EQ(film[k], 0.0);
+    }
+    contact_sum += contact[k];
+    total_sum += total[k];
+  }
+  EXPECT_EQ(test::read_string_attribute(file.get(), "model"), "mixed");
+  const double share = test::read_double_attribute(file.get(), "contact_load_fraction");
+  EXPECT_NEAR(share, contact_sum / total_sum, 1e-12);
+  EXPECT_GT(share, 0.01);
+  EXPECT_LT(share, 0.99);
+  EXPECT_GT(test::read_double_attribute(file.get(), "contact_area_fraction"), 0.0);
+  EXPECT_EQ(test::read_double_attribute(file.get(), "contact_friction"), 0.12);
+
+  // The library on the same gap.
+  HeightMap map = io::read_height_map(dir / "cylinder.h5");
+  map.heights += io::read_height_map(dir / "rough.h5").heights;
+  const Grid grid = Grid::line(map.nx, map.dx, Boundary::free);
+  FftInfluenceOperator op(grid, 1.1e11);
+  lubrication::FlowConditions conditions;
+  conditions.viscosity = 0.04;
+  conditions.entrainment_velocity = {0.001, 0.0};
+  conditions.sliding_velocity = {0.0005, 0.0};
+  lubrication::LubricantLaws laws;
+  laws.piezoviscosity = lubrication::Piezoviscosity::roelands;
+  laws.pressure_viscosity = 2.27e-8;
+  laws.compressibility = lubrication::Compressibility::dowson_higginson;
+  lubrication::MixedFilmOptions options;
+  options.load = 4.4e4;
+  options.friction.contact_friction = 0.12;
+  options.friction.limiting_shear_slope = 0.05;
+  const lubrication::MixedFilm expected =
+      lubrication::solve_mixed_film(op, map.heights.maxCoeff() - map.heights, conditions, laws, options);
+  ASSERT_TRUE(expected.converged()) << expected.message;
+  for (std::size_t k = 0; k < fluid.size(); ++k) {
+    EXPECT_EQ(contact[k], expected.contact_pressure[static_cast<Eigen::Index>(k)]) << k;
+    EXPECT_EQ(fluid[k], expected.fluid_pressure[static_cast<Eigen::Index>(k)]) << k;
+  }
+  EXPECT_EQ(test::read_double_attribute(file.get(), "friction_coefficient"), expected.friction_coefficient);
+}
+
+TEST(LubricateMixedCliTest, StribeckSweepWritesItsCurve) {
+  const TempDir dir;
+  make_rough_line(dir);
+  const ProgramRun run = run_program(mixed_run({"--entrainment-velocity", "1", "--sliding-velocity", "0.5",
+                                                "--speeds", "1,0.001,0.0001", "--stribeck", "s.csv", "--output",
+                                                "m.h5", "--quiet"}),
+                                     dir.path());
+  ASSERT_EQ(run.exit_code, kExitOk) << run.err;
+  std::ifstream csv(dir / "s.csv");
+  std::string line;
+  ASSERT_TRUE(std::getline(csv, line));
+  EXPECT_EQ(line.rfind("entrainment_speed,hersey_number,friction_coefficient,", 0), 0u) << line;
+  std::vector<std::vector<std::string>> rows;
+  while (std::getline(csv, line)) {
+    std::vector<std::string> cells;
+    std::size_t from = 0;
+    for (std::size_t comma; (comma = line.find(',', from)) != std::string::npos; from = comma + 1) {
+      cells.push_back(line.substr(from, comma - from));
+    }
+    cells.push_back(line.substr(from));
+    rows.push_back(cells);
+  }
+  ASSERT_EQ(rows.size(), 3u);
+  // speed, Hersey number, friction coefficient, ..., contact share (column 5), status (column 9).
+  EXPECT_EQ(std::stod(rows[0][5]), 0.0);
+  EXPECT_GT(std::stod(rows[2][5]), std::stod(rows[1][5]));
+  EXPECT_GT(std::stod(rows[2][5]), 0.5);
+  EXPECT_NEAR(std::stod(rows[1][1]) / (0.04 * 0.001 / 4.4e4), 1.0, 1e-8);  // 9 digits in the CSV
+  for (const auto& row : rows) EXPECT_EQ(row[9], "converged");
+  // The HDF5 file holds the last speed's film.
+  const test::H5 file = test::open_file(dir / "m.h5");
+  EXPECT_EQ(test::read_double_attribute(file.get(), "entrainment_speed"), 0.0001);
+  EXPECT_NEAR(test::read_double_attribute(file.get(), "contact_load_fraction"), std::stod(rows[2][5]), 1e-8);
+}
+
+TEST(LubricateMixedCliTest, RejectsBadMixedInputNamingTheOption) {
+  const TempDir dir;
+  make_rough_line(dir);
+  const auto with = [&](std::vector<std::string> more) {
+    more.insert(more.end(), {"--entrainment-velocity", "1", "--output", "f.h5"});
+    return run_program(mixed_run(more), dir.path());
+  };
+  expect_input_error(with({"--contact-friction", "-1"}), {"contact friction coefficient = -1"}, dir / "f.h5");
+  expect_input_error(with({"--boundary-film", "0"}), {"boundary film = 0"}, dir / "f.h5");
+  expect_input_error(with({"--speeds", "1,0.1"}), {"--speeds and --stribeck"}, dir / "f.h5");
+  expect_input_error(with({"--speeds", "1,-0.1", "--stribeck", "s.csv"}), {"Stribeck speed -0.1"}, dir / "f.h5");
+  const std::vector<std::string> rigid{"lubricate",  "--height-map", "cylinder.h5", "--viscosity", "0.04",
+                                       "--entrainment-velocity", "1", "--force", "1e3", "--output", "f.h5"};
+  const auto rigid_with = [&](std::vector<std::string> more) {
+    std::vector<std::string> args = rigid;
+    args.insert(args.end(), more.begin(), more.end());
+    return run_program(args, dir.path());
+  };
+  expect_input_error(rigid_with({"--contact-friction", "0.1"}), {"--mixed"}, dir / "f.h5");
+  expect_input_error(rigid_with({"--mixed"}), {"--mixed needs an elastic body"}, dir / "f.h5");
+  // A roughness of another size, and a profile beyond the dense path.
+  ASSERT_EQ(run_program({"generate", "--kind", "flat", "--grid", "50", "--size", "2.4e-4", "--output", "small.h5",
+                         "--quiet"},
+                        dir.path())
+                .exit_code,
+            kExitOk);
+  expect_input_error(rigid_with({"--roughness", "small.h5"}), {"--roughness small.h5 has 50"}, dir / "f.h5");
+  make_rough_line(dir, 2049);
+  expect_input_error(with({}), {"2049 points", "at most 2048"}, dir / "f.h5");
+}
+
+}  // namespace
+}  // namespace halfspace
