@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <fstream>
@@ -23,7 +24,9 @@
 #include "halfspace/io/height_map_reader.hpp"
 #include "halfspace/io/output_file.hpp"
 #include "halfspace/io/result_attributes.hpp"
+#include "halfspace/layered_material.hpp"
 #include "halfspace/lubrication/elastic_film.hpp"
+#include "halfspace/lubrication/film_shear.hpp"
 #include "halfspace/lubrication/load_control.hpp"
 #include "halfspace/lubrication/mixed_film.hpp"
 #include "halfspace/material.hpp"
@@ -39,6 +42,7 @@ struct LubricateOptions : GivenOptions {
   std::optional<double> viscosity;
   std::optional<std::vector<double>> entrainment_velocity;
   std::optional<std::vector<double>> sliding_velocity;
+  std::optional<double> eyring_stress, limiting_shear_stress, limiting_shear_slope;
   std::optional<double> separation;
   std::optional<double> force;
   std::optional<double> inlet_pressure;
@@ -49,6 +53,7 @@ struct LubricateOptions : GivenOptions {
   // Elastic film (EHL).
   std::optional<double> e_star;
   std::optional<double> e1, nu1, e2, nu2;
+  std::optional<double> layer_thickness, layer_e, layer_nu, substrate_e, substrate_nu;
   std::optional<std::string> boundary;
   std::optional<double> pressure_viscosity;
   std::optional<std::string> piezoviscosity;
@@ -86,6 +91,12 @@ const std::array kOptions{
                     "mean of the two surfaces' velocities (m/s) (required)"},
     LubricateOption{"sliding-velocity", &LubricateOptions::sliding_velocity, Kind::numbers, kFilm, "UX[,UY]",
                     "upper minus lower surface velocity (m/s), for the friction force [0]"},
+    LubricateOption{"eyring-stress", &LubricateOptions::eyring_stress, Kind::number, kFilm, "PA",
+                    "Eyring stress tau0 (Pa): the film's Couette shear is tau0 asinh(tau / tau0) [Newtonian]"},
+    LubricateOption{"limiting-shear-stress", &LubricateOptions::limiting_shear_stress, Kind::number, kFilm, "PA",
+                    "limiting shear stress tau_L0 (Pa): the Couette shear is at most tau_L0 + gamma p [none]"},
+    LubricateOption{"limiting-shear-slope", &LubricateOptions::limiting_shear_slope, Kind::number, kFilm, "GAMMA",
+                    "the limiting shear stress' growth with pressure gamma [0]"},
     LubricateOption{"separation", &LubricateOptions::separation, Kind::number, kFilm, "M",
                     "minimum film thickness (m); or --force"},
     LubricateOption{"force", &LubricateOptions::force, Kind::number, kFilm, "N",
@@ -106,6 +117,16 @@ const std::array kOptions{
     LubricateOption{"nu1", &LubricateOptions::nu1, Kind::number, kElastic, "NU", "Poisson's ratio of body 1"},
     LubricateOption{"E2", &LubricateOptions::e2, Kind::number, kElastic, "PA", "Young's modulus of body 2 (Pa)"},
     LubricateOption{"nu2", &LubricateOptions::nu2, Kind::number, kElastic, "NU", "Poisson's ratio of body 2"},
+    LubricateOption{"layer-thickness", &LubricateOptions::layer_thickness, Kind::number, kElastic, "M",
+                    "a coated elastic body: the layer's thickness (m), with --layer-E, --layer-nu, --substrate-E, "
+                    "--substrate-nu instead of --E-star (the other surface rigid)"},
+    LubricateOption{"layer-E", &LubricateOptions::layer_e, Kind::number, kElastic, "PA", "the layer's Young's modulus"},
+    LubricateOption{"layer-nu", &LubricateOptions::layer_nu, Kind::number, kElastic, "NU",
+                    "the layer's Poisson's ratio"},
+    LubricateOption{"substrate-E", &LubricateOptions::substrate_e, Kind::number, kElastic, "PA",
+                    "the substrate's Young's modulus"},
+    LubricateOption{"substrate-nu", &LubricateOptions::substrate_nu, Kind::number, kElastic, "NU",
+                    "the substrate's Poisson's ratio"},
     LubricateOption{"boundary", &LubricateOptions::boundary, Kind::text, kElastic, "TYPE",
                     "elastic half-space periodic or free [free]"},
     LubricateOption{"pressure-viscosity", &LubricateOptions::pressure_viscosity, Kind::number, kElastic, "ALPHA",
@@ -176,6 +197,76 @@ lubrication::LubricantLaws lubricant_laws(const LubricateOptions& o) {
   return laws;
 }
 
+// A coated elastic body from all five of --layer-thickness, --layer-E,
+// --layer-nu, --substrate-E, --substrate-nu (validated by the library);
+// nothing when none is given.
+std::optional<LayeredMaterial> coating_of(const LubricateOptions& o) {
+  const std::array given{o.layer_thickness, o.layer_e, o.layer_nu, o.substrate_e, o.substrate_nu};
+  const auto count = std::count_if(given.begin(), given.end(), [](const auto& v) { return v.has_value(); });
+  if (count == 0) return std::nullopt;
+  if (count < 5) {
+    throw InputError(
+        "incomplete coated body: give all of --layer-thickness, --layer-E, --layer-nu, --substrate-E, --substrate-nu");
+  }
+  if (o.e_star || o.e1 || o.nu1 || o.e2 || o.nu2) {
+    throw InputError("a coated body (--layer-*, --substrate-*) replaces --E-star and --E1, --nu1, --E2, --nu2");
+  }
+  return validated(LayeredMaterial{*o.layer_thickness, {*o.layer_e, *o.layer_nu}, {*o.substrate_e, *o.substrate_nu}});
+}
+
+lubrication::ShearLimits shear_limits(const LubricateOptions& o) {
+  const lubrication::ShearLimits limits{o.eyring_stress.value_or(0.0), o.limiting_shear_stress.value_or(0.0),
+                                        o.limiting_shear_slope.value_or(0.0)};
+  limits.validate();
+  return limits;
+}
+
+// The film's shear on the lower surface (film_shear.hpp): its friction in
+// the summary, its fields and the limits in the file.
+void add_shear(lubrication::FilmSummary& summary, const lubrication::FilmShear& shear) {
+  summary.friction_force_x = shear.friction_force[0];
+  summary.friction_force_y = shear.friction_force[1];
+  summary.friction_coefficient = shear.friction_coefficient;
+}
+
+void write_shear(const io::Hdf5Node& root, const std::vector<std::size_t>& shape, const lubrication::FilmShear& shear,
+                 const lubrication::ShearLimits& limits) {
+  root.write_dataset("shear_x", shape, std::span<const double>(shear.shear_x.data(), shear.shear_x.size()), "Pa");
+  root.write_dataset("shear_y", shape, std::span<const double>(shear.shear_y.data(), shear.shear_y.size()), "Pa");
+  root.write_double_attribute("couette_friction_force_x", shear.couette_force[0]);
+  root.write_double_attribute("couette_friction_force_y", shear.couette_force[1]);
+  root.write_double_attribute("eyring_stress", limits.eyring_stress);
+  root.write_double_attribute("limiting_shear_stress", limits.limiting_shear_stress);
+  root.write_double_attribute("limiting_shear_slope", limits.limiting_shear_slope);
+  root.write_double_attribute("limited_fraction", shear.limited_fraction);
+}
+
+// The flag a library option (OptionError::option()) came from.
+std::string flag_for(const std::string& option) {
+  if (option.starts_with("entrainment_velocity")) return "--entrainment-velocity";
+  if (option.starts_with("sliding_velocity")) return "--sliding-velocity";
+  if (option == "boundary.x_low_pressure") return "--inlet-pressure";
+  if (option == "boundary.x_high_pressure") return "--outlet-pressure";
+  if (option == "boundary.y_low_pressure" || option == "boundary.y_high_pressure") return "--side-pressure";
+  if (option == "load") return "--force";
+  std::string flag = "--" + option;  // viscosity, separation, tolerance, max_iterations, pressure_viscosity, ...
+  std::replace(flag.begin(), flag.end(), '_', '-');
+  return flag;
+}
+
+template <class Function>
+int with_lubricate_flags(Function&& function) {
+  try {
+    return function();
+  } catch (const OptionError& error) {
+    const std::string& option = error.option();
+    const std::string component = option.ends_with(".x")   ? " (x component)"
+                                  : option.ends_with(".y") ? " (y component)"
+                                                           : "";
+    throw InputError(fmt::format("{} {}{} {}", flag_for(option), error.value(), component, error.rule()));
+  }
+}
+
 void write_film_file(const LubricateOptions& o, const HeightMap& map, const Grid& grid,
                      const lubrication::FilmSummary& summary, const Eigen::ArrayXd& pressure,
                      const Eigen::ArrayXd& film, const Eigen::ArrayXd& fluid_fraction,
@@ -218,7 +309,7 @@ int report(const LubricateOptions& o, const lubrication::FilmSummary& summary, b
 }
 
 int run_elastic(const LubricateOptions& o, const HeightMap& map, const lubrication::FlowConditions& conditions,
-                double e_star) {
+                double e_star, const std::optional<LayeredMaterial>& coating) {
   if (!o.force) throw InputError("an elastic film (EHL) is load controlled: pass --force N, not --separation");
   const Boundary boundary = parse_boundary(o.boundary.value_or("free"));
   const Grid grid =
@@ -237,14 +328,17 @@ int run_elastic(const LubricateOptions& o, const HeightMap& map, const lubricati
   }
   if (o.couette_scheme) options.couette_scheme = lubrication::parse_couette_scheme(*o.couette_scheme);
   options.validate();
+  const lubrication::ShearLimits limits = shear_limits(o);
   if (grid.size() > lubrication::kMaxElasticFilmNodes) {
     throw InputError(
         fmt::format("{} has {} points: the elastic film's dense Newton path allows at most {} (coarsen the height map)",
                     *o.height_map, grid.size(), lubrication::kMaxElasticFilmNodes));
   }
   const Eigen::ArrayXd gap = map.heights.maxCoeff() - map.heights;
-  FftInfluenceOperator op(grid, e_star);
+  FftInfluenceOperator op = coating ? FftInfluenceOperator(grid, *coating) : FftInfluenceOperator(grid, e_star);
   const lubrication::ElasticFilm film = lubrication::solve_elastic_film(op, gap, conditions, laws, options);
+  const lubrication::FilmShear shear =
+      lubrication::film_shear(grid, conditions, laws, limits, film.film, film.pressure, film.fluid_fraction);
 
   lubrication::FilmSummary summary;
   summary.model = "elastic";
@@ -263,6 +357,7 @@ int run_elastic(const LubricateOptions& o, const HeightMap& map, const lubricati
   summary.film_solves = 1;
   summary.relative_residual = film.relative_residual;
   summary.solve_seconds = film.wall_seconds;
+  add_shear(summary, shear);
   write_film_file(o, map, grid, summary, film.pressure, film.film, film.fluid_fraction, [&](const io::Hdf5Node& root) {
     root.write_dataset("deformation",
                        map.dimension == 1 ? std::vector<std::size_t>{map.nx} : std::vector<std::size_t>{map.ny, map.nx},
@@ -276,6 +371,9 @@ int run_elastic(const LubricateOptions& o, const HeightMap& map, const lubricati
     root.write_string_attribute("compressibility", lubrication::to_string(laws.compressibility));
     root.write_string_attribute("couette_scheme", lubrication::to_string(options.couette_scheme));
     root.write_double_attribute("load_error", film.load_error);
+    if (coating) io::write_coating_attributes(root, *coating);
+    write_shear(root, map.dimension == 1 ? std::vector<std::size_t>{map.nx} : std::vector<std::size_t>{map.ny, map.nx},
+                shear, limits);
   });
   return report(o, summary, film.converged());
 }
@@ -474,7 +572,8 @@ int run_lubricate(const LubricateOptions& o) {
   conditions.boundary.y_low_pressure = o.side_pressure.value_or(0.0);
   conditions.boundary.y_high_pressure = o.side_pressure.value_or(0.0);
   if (o.periodic_y) conditions.boundary.y = lubrication::AxisBoundary::periodic;
-  const std::optional<double> e_star = elastic_modulus(o);
+  const std::optional<LayeredMaterial> coating = coating_of(o);
+  const std::optional<double> e_star = coating ? plane_strain_modulus(coating->layer) : elastic_modulus(o);
   if (!e_star && (o.pressure_viscosity || o.piezoviscosity || o.roelands_index || o.compressibility ||
                   o.couette_scheme || o.max_iterations || o.boundary)) {
     throw InputError(
@@ -492,9 +591,11 @@ int run_lubricate(const LubricateOptions& o) {
   if (o.roughness) add_roughness(*o.roughness, map);
   if (o.mixed) {
     if (!e_star) throw InputError("--mixed needs an elastic body: give --E-star (or --E1, --nu1, --E2, --nu2)");
+    if (coating) throw InputError("--mixed takes a homogeneous body: a coating (--coating-*) is not supported by the mixed film yet");
     return run_mixed(o, map, conditions, *e_star);
   }
-  if (e_star) return run_elastic(o, map, conditions, *e_star);
+  if (e_star) return run_elastic(o, map, conditions, *e_star, coating);
+  const lubrication::ShearLimits limits = shear_limits(o);
 
   lubrication::CavitationSolverOptions solver;
   if (o.tolerance) solver.tolerance = *o.tolerance;
@@ -526,11 +627,16 @@ int run_lubricate(const LubricateOptions& o) {
   summary.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   summary.inflow = f.inflow;
   summary.outflow = f.outflow;
-  summary.friction_force_x = f.friction_force[0];
-  summary.friction_force_y = f.friction_force[1];
-  summary.friction_coefficient = f.friction_coefficient;
-  write_film_file(o, map, grid, summary, film.solution.pressure, film.film, film.solution.fluid_fraction,
-                  [](const io::Hdf5Node&) {});
+  const lubrication::FilmShear shear = lubrication::film_shear(grid, conditions, {}, limits, film.film,
+                                                               film.solution.pressure, film.solution.fluid_fraction);
+  add_shear(summary, shear);
+  write_film_file(
+      o, map, grid, summary, film.solution.pressure, film.film, film.solution.fluid_fraction,
+      [&](const io::Hdf5Node& root) {
+        write_shear(root,
+                    map.dimension == 1 ? std::vector<std::size_t>{map.nx} : std::vector<std::size_t>{map.ny, map.nx},
+                    shear, limits);
+      });
   return report(o, summary, film.solution.converged());
 }
 
@@ -549,7 +655,7 @@ Command add_lubricate_command(CLI::App& program) {
             const std::vector<BoundOption> bound = bind_options(std::span<const LubricateOption>(kOptions), options);
             read_command_line(*lubricate, argv, bound, options);
             merge_config_file(bound, {}, "lubricate", options);
-            return run_lubricate(options);
+            return with_lubricate_flags([&] { return run_lubricate(options); });
           }};
 }
 

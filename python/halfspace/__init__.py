@@ -23,6 +23,7 @@ _os.environ.setdefault("OMP_WAIT_POLICY", "passive")
 from . import _core  # noqa: E402
 from ._core import FileError, History, InputError, Result, Sweep  # noqa: E402
 from ._height_map import HeightMap, read_height_map  # noqa: E402
+from ._lubricate import Film, lubricate  # noqa: E402
 from ._solve import composite_modulus, history, read_result, solve, subsurface_stress, sweep  # noqa: E402
 from . import generate, paper  # noqa: E402
 
@@ -30,6 +31,7 @@ __version__ = _core.__version__
 
 __all__ = [
     "FileError",
+    "Film",
     "HeightMap",
     "History",
     "InputError",
@@ -38,6 +40,7 @@ __all__ = [
     "composite_modulus",
     "generate",
     "history",
+    "lubricate",
     "paper",
     "read_height_map",
     "read_result",

@@ -37,5 +37,6 @@ void bind_results(nb::module_& module);
 void bind_solve(nb::module_& module);
 void bind_paper(nb::module_& module);
 void bind_stress(nb::module_& module);
+void bind_lubricate(nb::module_& module);
 
 }  // namespace halfspace::python

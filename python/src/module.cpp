@@ -96,4 +96,5 @@ NB_MODULE(_core, module) {
   bind_solve(module);
   bind_paper(module);
   bind_stress(module);
+  bind_lubricate(module);
 }

@@ -22,18 +22,17 @@ namespace halfspace::lubrication {
 
 void CavitationSolverOptions::validate() const {
   if (!(tolerance > 0.0 && tolerance < 1.0)) {
-    throw InputError(fmt::format("film tolerance = {} is invalid: allowed range is 0 < tolerance < 1", tolerance));
+    throw OptionError("tolerance", format_number(tolerance), "is invalid: allowed range is 0 < tolerance < 1");
   }
   if (max_iterations < 1) {
-    throw InputError(fmt::format("film max iterations = {} is invalid: at least 1 sweep", max_iterations));
+    throw OptionError("max_iterations", fmt::format("{}", max_iterations), "is invalid: at least 1 sweep");
   }
   if (!(relaxation == 0.0 || (relaxation > 0.0 && relaxation < 2.0))) {
-    throw InputError(fmt::format(
-        "film relaxation = {} is invalid: allowed range is 0 < relaxation < 2 (or 0 for the automatic factor)",
-        relaxation));
+    throw OptionError("relaxation", format_number(relaxation),
+                      "is invalid: allowed range is 0 < relaxation < 2 (or 0 for the automatic factor)");
   }
   if (check_every < 1) {
-    throw InputError(fmt::format("film check every = {} is invalid: at least 1 sweep", check_every));
+    throw OptionError("check_every", fmt::format("{}", check_every), "is invalid: at least 1 sweep");
   }
 }
 

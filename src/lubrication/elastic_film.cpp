@@ -46,17 +46,17 @@ CouetteScheme parse_couette_scheme(std::string_view text) {
 
 void ElasticFilmOptions::validate() const {
   if (!(std::isfinite(load) && load > 0.0)) {
-    throw InputError(fmt::format("EHL load = {} is invalid: it must be positive and finite", load));
+    throw OptionError("load", format_number(load), "is invalid: the EHL load must be positive and finite");
   }
   if (!(tolerance > 0.0 && tolerance < 1.0)) {
-    throw InputError(fmt::format("EHL tolerance = {} is invalid: allowed range is 0 < tolerance < 1", tolerance));
+    throw OptionError("tolerance", format_number(tolerance), "is invalid: the EHL tolerance must be in (0, 1)");
   }
   if (!(load_tolerance > 0.0 && load_tolerance < 1.0)) {
-    throw InputError(
-        fmt::format("EHL load tolerance = {} is invalid: allowed range is 0 < tolerance < 1", load_tolerance));
+    throw OptionError("load_tolerance", format_number(load_tolerance),
+                      "is invalid: allowed range is 0 < tolerance < 1");
   }
   if (max_iterations < 1) {
-    throw InputError(fmt::format("EHL max iterations = {} is invalid: at least 1 Newton step", max_iterations));
+    throw OptionError("max_iterations", fmt::format("{}", max_iterations), "is invalid: at least 1 Newton step");
   }
 }
 

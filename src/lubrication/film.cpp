@@ -15,7 +15,7 @@ Eigen::ArrayXd film_thickness(const Grid& grid, const Eigen::ArrayXd& heights, d
                                  grid.shape_string(), grid.size()));
   }
   if (!(std::isfinite(separation) && separation > 0.0)) {
-    throw InputError(fmt::format("separation = {} m is invalid: it must be positive and finite", separation));
+    throw OptionError("separation", format_number(separation) + " m", "is invalid: it must be positive and finite");
   }
   if (!heights.allFinite()) throw InputError("heights are invalid: every height must be finite");
   return separation + (heights.maxCoeff() - heights);

@@ -18,18 +18,18 @@ namespace halfspace::lubrication {
 
 void LoadControlOptions::validate() const {
   if (!(std::isfinite(load) && load > 0.0)) {
-    throw InputError(fmt::format("film load = {} is invalid: it must be positive and finite", load));
+    throw OptionError("load", format_number(load), "is invalid: the film's load must be positive and finite");
   }
   if (!(relative_tolerance > 0.0 && relative_tolerance < 1.0)) {
-    throw InputError(
-        fmt::format("load tolerance = {} is invalid: allowed range is 0 < tolerance < 1", relative_tolerance));
+    throw OptionError("relative_tolerance", format_number(relative_tolerance),
+                      "is invalid: allowed range is 0 < tolerance < 1");
   }
   if (!(std::isfinite(initial_separation) && initial_separation >= 0.0)) {
-    throw InputError(fmt::format("initial separation = {} m is invalid: it must be >= 0 (0: automatic) and finite",
-                                 initial_separation));
+    throw OptionError("initial_separation", format_number(initial_separation) + " m",
+                      "is invalid: it must be >= 0 (0: automatic) and finite");
   }
   if (max_evaluations < 2) {
-    throw InputError(fmt::format("load max evaluations = {} is invalid: at least 2 film solves", max_evaluations));
+    throw OptionError("max_evaluations", fmt::format("{}", max_evaluations), "is invalid: at least 2 film solves");
   }
 }
 

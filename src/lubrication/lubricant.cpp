@@ -46,22 +46,25 @@ Compressibility parse_compressibility(std::string_view text) {
 
 void LubricantLaws::validate(double ambient_viscosity) const {
   if (!(std::isfinite(pressure_viscosity) && pressure_viscosity >= 0.0)) {
-    throw InputError(fmt::format("pressure-viscosity coefficient = {} 1/Pa is invalid: it must be >= 0 and finite",
-                                 pressure_viscosity));
+    throw OptionError("pressure_viscosity", format_number(pressure_viscosity) + " 1/Pa",
+                      "is invalid: the pressure-viscosity coefficient must be >= 0 and finite");
   }
   if (!(std::isfinite(roelands_index) && roelands_index >= 0.0)) {
-    throw InputError(fmt::format("Roelands index = {} is invalid: it must be >= 0 and finite", roelands_index));
+    throw OptionError("roelands_index", format_number(roelands_index), "is invalid: it must be >= 0 and finite");
   }
   if (piezoviscosity == Piezoviscosity::barus && pressure_viscosity <= 0.0) {
-    throw InputError("pressure-viscosity coefficient = 0 is invalid for Barus: give alpha > 0 (1/Pa)");
+    throw OptionError("pressure_viscosity", "0 1/Pa",
+                      "is invalid for Barus: give the pressure-viscosity coefficient alpha > 0 (1/Pa)");
   }
   if (piezoviscosity == Piezoviscosity::roelands) {
     if (roelands_index <= 0.0 && pressure_viscosity <= 0.0) {
-      throw InputError("Roelands needs its index z > 0 or a pressure-viscosity coefficient alpha > 0 (1/Pa)");
+      throw OptionError("roelands_index", "0",
+                        "is invalid without a pressure-viscosity coefficient: Roelands needs its index z > 0 or "
+                        "alpha > 0 (1/Pa)");
     }
     if (!(std::log(ambient_viscosity) + kRoelandsLogViscosity > 0.0)) {
-      throw InputError(fmt::format("viscosity = {} Pa s is invalid for Roelands: it must exceed eta_inf = 6.31e-5 Pa s",
-                                   ambient_viscosity));
+      throw OptionError("viscosity", format_number(ambient_viscosity) + " Pa s",
+                        "is invalid for Roelands: it must exceed eta_inf = 6.31e-5 Pa s");
     }
   }
 }

@@ -154,7 +154,7 @@ TEST(LubricateCliTest, RejectsBadInputNamingTheOption) {
   expect_input_error(run_program({"lubricate", "--height-map", "c.h5", "--viscosity", "-1", "--entrainment-velocity",
                                   "1", "--separation", "1e-6", "--output", "f.h5"},
                                  dir.path()),
-                     {"viscosity = -1"}, dir / "f.h5");
+                     {"--viscosity -1 Pa s is invalid"}, dir / "f.h5");
   expect_input_error(run_program({"lubricate", "--height-map", "c.h5", "--viscosity", "0.1", "--entrainment-velocity",
                                   "1", "--output", "f.h5"},
                                  dir.path()),
@@ -162,7 +162,7 @@ TEST(LubricateCliTest, RejectsBadInputNamingTheOption) {
   expect_input_error(run_program({"lubricate", "--height-map", "c.h5", "--viscosity", "0.1", "--entrainment-velocity",
                                   "1,2", "--separation", "1e-6", "--output", "f.h5"},
                                  dir.path()),
-                     {"entrainment velocity y = 2"}, dir / "f.h5");
+                     {"--entrainment-velocity 2 m/s (y component) is invalid on a 1D grid"}, dir / "f.h5");
 }
 
 }  // namespace

@@ -453,7 +453,7 @@ TEST(ElasticFilmTest, RejectsInvalidInput) {
   EXPECT_NE(message([] { ElasticFilmOptions{.load = 0.0}.validate(); }).find("EHL load"), std::string::npos);
   EXPECT_NE(message([] { ElasticFilmOptions{.load = 1.0, .tolerance = 2.0}.validate(); }).find("EHL tolerance"),
             std::string::npos);
-  EXPECT_NE(message([] { ElasticFilmOptions{.load = 1.0, .max_iterations = 0}.validate(); }).find("max iterations"),
+  EXPECT_NE(message([] { ElasticFilmOptions{.load = 1.0, .max_iterations = 0}.validate(); }).find("max_iterations"),
             std::string::npos);
   const Grid big = Grid::plane(100, 100, 1e-6, 1e-6, Boundary::free);
   FftInfluenceOperator op(big, kEStar);

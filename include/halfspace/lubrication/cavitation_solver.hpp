@@ -27,7 +27,7 @@ struct CavitationSolverOptions {
   double relaxation = 0.0;
   int check_every = 10;  // sweeps between measurements of the residual
 
-  // Throws InputError naming the option unless 0 < tolerance < 1,
+  // Throws OptionError naming the option unless 0 < tolerance < 1,
   // max_iterations >= 1, relaxation is 0 or in (0, 2), check_every >= 1.
   void validate() const;
 };

@@ -60,7 +60,7 @@ struct ElasticFilmOptions {
   int max_iterations = 100;  // Newton steps
   CouetteScheme couette_scheme = CouetteScheme::first_order;
 
-  // Throws InputError naming the option unless load > 0 and finite, 0 <
+  // Throws OptionError naming the option unless load > 0 and finite, 0 <
   // tolerance < 1, 0 < load_tolerance < 1, max_iterations >= 1.
   void validate() const;
 };

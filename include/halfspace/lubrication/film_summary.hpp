@@ -26,9 +26,8 @@ struct FilmSummary {
   long long film_solves = 0;            // films solved by the load search (1 elastic)
   double relative_residual = 0.0;       // the mass balance measured after the solve
   double solve_seconds = 0.0;
-  // The rigid film's flows and friction (an isoviscous film's shear);
-  // absent for the elastic one, whose piezoviscous shear needs a
-  // rheology beyond Newton's.
+  // The rigid film's flows (absent for the elastic one), and the film's
+  // friction (film_shear.hpp; both films).
   std::optional<double> inflow, outflow, friction_force_x, friction_force_y, friction_coefficient;
 };
 

@@ -40,7 +40,7 @@ struct FlowConditions {
   std::array<double, 2> sliding_velocity{0.0, 0.0};
   FlowBoundary boundary;
 
-  // Throws InputError naming the option unless the viscosity is positive and
+  // Throws OptionError naming the option unless the viscosity is positive and
   // finite, the velocities and pressures finite, the pressures non-negative
   // (the cavitation pressure is 0), 0 <= supply_fluid_fraction <= 1, the y
   // velocity components 0 on a 1D grid, and some axis has fixed pressures

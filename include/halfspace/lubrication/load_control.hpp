@@ -17,7 +17,7 @@ struct LoadControlOptions {
   double initial_separation = 0.0;   // m; 0 picks a tenth of the heights' range
   int max_evaluations = 200;         // film solves
 
-  // Throws InputError naming the option unless load > 0, 0 < relative_tolerance
+  // Throws OptionError naming the option unless load > 0, 0 < relative_tolerance
   // < 1, initial_separation >= 0 and finite, max_evaluations >= 2.
   void validate() const;
 };

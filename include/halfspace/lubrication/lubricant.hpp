@@ -34,7 +34,7 @@ struct LubricantLaws {
   double roelands_index = 0.0;      // z (Roelands only); 0 derives it from alpha
   Compressibility compressibility = Compressibility::none;
 
-  // Throws InputError naming the option unless alpha >= 0 and finite (> 0
+  // Throws OptionError naming the option unless alpha >= 0 and finite (> 0
   // for Barus), z >= 0 and finite, Roelands has z > 0 or alpha > 0, and
   // Roelands' ambient viscosity is above eta_inf = 6.31e-5 Pa s.
   void validate(double ambient_viscosity) const;

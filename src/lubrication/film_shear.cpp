@@ -1,0 +1,116 @@
+// The film's shear on its lower surface (film_shear.hpp), node by node with
+// the nodes, weights and gradients film_forces uses, so that a Newtonian,
+// isoviscous film gives film_forces' friction to rounding.
+#include "halfspace/lubrication/film_shear.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <string>
+
+#include "halfspace/error.hpp"
+#include "halfspace/lubrication/reynolds_stencil.hpp"
+
+namespace halfspace::lubrication {
+
+void ShearLimits::validate() const {
+  const auto require = [](double value, const char* name, const char* unit) {
+    if (!(std::isfinite(value) && value >= 0.0)) {
+      throw OptionError(name, format_number(value) + unit, "is invalid: it must be >= 0 (0: off) and finite");
+    }
+  };
+  require(eyring_stress, "eyring_stress", " Pa");
+  require(limiting_shear_stress, "limiting_shear_stress", " Pa");
+  require(limiting_shear_slope, "limiting_shear_slope", "");
+  if (limiting_shear_slope > 0.0 && limiting_shear_stress <= 0.0) {
+    throw OptionError("limiting_shear_slope", format_number(limiting_shear_slope),
+                      "needs a limiting shear stress tau_L0 > 0 (Pa): the cap is tau_L0 + gamma p");
+  }
+}
+
+namespace {
+
+// Trapezoidal weight of a node along one axis: half on a fixed-pressure edge.
+double edge_weight(std::size_t index, std::size_t count, AxisBoundary boundary) {
+  return boundary == AxisBoundary::fixed_pressure && (index == 0 || index + 1 == count) ? 0.5 : 1.0;
+}
+
+// dp/dx at node k: central where both neighbours exist, one-sided otherwise.
+double gradient(const Eigen::ArrayXd& p, std::size_t k, std::size_t low, std::size_t high, double spacing) {
+  if (low != Neighbours::kNone && high != Neighbours::kNone) return (p[high] - p[low]) / (2.0 * spacing);
+  if (high != Neighbours::kNone) return (p[high] - p[k]) / spacing;
+  if (low != Neighbours::kNone) return (p[k] - p[low]) / spacing;
+  return 0.0;
+}
+
+// The limited magnitude of a Newtonian Couette stress tau_n >= 0 at pressure p.
+double limited_stress(const ShearLimits& limits, double tau_n, double p) {
+  double tau = limits.eyring() ? limits.eyring_stress * std::asinh(tau_n / limits.eyring_stress) : tau_n;
+  if (limits.capped()) tau = std::min(tau, limits.limiting_shear_stress + limits.limiting_shear_slope * p);
+  return tau;
+}
+
+}  // namespace
+
+FilmShear film_shear(const Grid& grid, const FlowConditions& conditions, const LubricantLaws& laws,
+                     const ShearLimits& limits, const Eigen::ArrayXd& film, const Eigen::ArrayXd& pressure,
+                     const Eigen::ArrayXd& fluid_fraction) {
+  conditions.validate(grid);
+  laws.validate(conditions.viscosity);
+  limits.validate();
+  const std::size_t n = grid.size();
+  if (static_cast<std::size_t>(pressure.size()) != n || static_cast<std::size_t>(fluid_fraction.size()) != n) {
+    throw InputError(fmt::format("film shear: pressure has {} values and fluid fraction {}, the {} grid has {} nodes",
+                                 pressure.size(), fluid_fraction.size(), grid.shape_string(), n));
+  }
+  const ReynoldsStencil stencil(grid, film, conditions);  // checks the film
+  const bool two_d = grid.dimension() == 2;
+  const double eta0 = conditions.viscosity;
+  const std::array<double, 2>& slide = conditions.sliding_velocity;
+  const double sliding_speed = std::hypot(slide[0], slide[1]);
+  const bool limited = limits.eyring() || limits.capped();
+  FilmShear result;
+  result.shear_x.resize(static_cast<Eigen::Index>(n));
+  result.shear_y = Eigen::ArrayXd::Zero(static_cast<Eigen::Index>(n));
+  std::size_t lowered = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto kk = static_cast<Eigen::Index>(k);
+    const std::size_t i = k % grid.nx();
+    const std::size_t j = k / grid.nx();
+    double weight = edge_weight(i, grid.nx(), conditions.boundary.x);
+    if (two_d) weight *= edge_weight(j, grid.ny(), conditions.boundary.y);
+    const double p = std::max(pressure[kk], 0.0);
+    const double h = film[kk];
+    // theta eta / h: the Couette stress per unit sliding speed.
+    double shear = fluid_fraction[kk] * (eta0 * laws.viscosity_ratio(p, eta0)) / h;
+    if (limited && sliding_speed > 0.0) {
+      const double newtonian = eta0 * laws.viscosity_ratio(p, eta0) * sliding_speed / h;
+      const double tau = limited_stress(limits, newtonian, p);
+      if (tau < 0.99 * newtonian) ++lowered;
+      shear = fluid_fraction[kk] * tau / sliding_speed;
+    }
+    const Neighbours nb = stencil.neighbours(k);
+    const double couette_x = shear * slide[0];
+    result.shear_x[kk] = couette_x - 0.5 * h * gradient(pressure, k, nb.west, nb.east, grid.dx());
+    result.friction_force[0] += weight * result.shear_x[kk];
+    result.couette_force[0] += weight * couette_x;
+    if (two_d) {
+      const double couette_y = shear * slide[1];
+      result.shear_y[kk] = couette_y - 0.5 * h * gradient(pressure, k, nb.south, nb.north, grid.dy());
+      result.friction_force[1] += weight * result.shear_y[kk];
+      result.couette_force[1] += weight * couette_y;
+    }
+    result.load += weight * pressure[kk];
+  }
+  const double area = grid.cell_area();
+  for (double* value : {&result.friction_force[0], &result.friction_force[1], &result.couette_force[0],
+                        &result.couette_force[1], &result.load}) {
+    *value *= area;
+  }
+  const double friction = std::hypot(result.friction_force[0], result.friction_force[1]);
+  result.friction_coefficient = result.load > 0.0 ? friction / result.load : 0.0;
+  result.limited_fraction = static_cast<double>(lowered) / static_cast<double>(n);
+  return result;
+}
+
+}  // namespace halfspace::lubrication
