@@ -5,7 +5,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
+#include <cctype>
 #include <span>
 
 namespace halfspace::app {
@@ -181,6 +183,39 @@ SolveOptions solve_options_from_command_line(const CLI::App& solve, const std::v
 
 void merge_config_file(SolveOptions& options) {
   merge_config_file(bind_options(std::span<const SolveOption>(kOptions), options), kAlternatives, "solve", options);
+}
+
+ProblemOptions problem_options(const SolveOptions& options) {
+  ProblemOptions problem = options;
+  if (problem.adhesion) problem.adhesion_tol = problem.tol;
+  return problem;
+}
+
+namespace {
+
+// The key of the table's option that `option` names: the same words with '-'
+// for '_' ("E-star" for "e_star").
+std::string_view flag(std::string_view option) {
+  if (option == "adhesion_tol") return "tol";
+  for (const SolveOption& spec : kOptions) {
+    const bool same = std::ranges::equal(spec.key, option, [](char a, char b) {
+      return std::tolower(static_cast<unsigned char>(a)) ==
+             std::tolower(static_cast<unsigned char>(b == '_' ? '-' : b));
+    });
+    if (same) return spec.key;
+  }
+  return option;
+}
+
+}  // namespace
+
+std::string FlagSpelling::name(std::string_view option) const {
+  return options_.name(flag(option));
+}
+
+std::string FlagSpelling::describe(std::string_view option, std::string_view value) const {
+  const std::string_view key = flag(option);
+  return options_.given(key) ? options_.describe(key) : fmt::format("--{} {}", key, value);
 }
 
 }  // namespace halfspace::app

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "halfspace/problem.hpp"
 #include "option_table.hpp"
 
 namespace halfspace::app {
@@ -16,7 +17,7 @@ namespace halfspace::app {
 // Everything `halfspace solve` accepts. An empty optional was given neither on
 // the command line nor in the config file; defaults are applied later, in
 // make_solve_setup, so that "not given" stays distinguishable from "default".
-struct SolveOptions : GivenOptions {
+struct SolveOptions : GivenOptions, ProblemOptions {
   // Surface: a height map file, or a built-in geometry.
   std::optional<std::string> height_map;
   std::optional<std::string> dataset;
@@ -37,42 +38,12 @@ struct SolveOptions : GivenOptions {
   std::optional<std::string> grid;
   std::optional<std::string> size;
   std::optional<std::string> boundary;
-  // Material: four constants, or E* directly.
-  std::optional<double> e1;
-  std::optional<double> nu1;
-  std::optional<double> e2;
-  std::optional<double> nu2;
-  std::optional<double> e_star;
-  // Coated half-space (all five, instead of the material above): a layer
-  // bonded to a substrate, against a rigid surface.
-  std::optional<double> layer_thickness;
-  std::optional<double> layer_e;
-  std::optional<double> layer_nu;
-  std::optional<double> substrate_e;
-  std::optional<double> substrate_nu;
-  // Interface law: a hardness cap p <= H (Pa).
-  std::optional<double> hardness;
-  // Load: exactly one; more than one value makes a load sweep.
-  std::optional<std::vector<double>> force;
-  std::optional<std::vector<double>> mean_pressure;
-  std::optional<std::vector<double>> approach;
-  // Solver.
-  std::optional<std::string> solver;
-  std::optional<double> tol;
-  std::optional<long long> max_iter;
-  std::optional<long long> threads;
-  std::optional<std::string> fft_planning;
-  std::optional<long long> deflation_block;
+  // The body, interface law, loads and solver settings are ProblemOptions'
+  // (halfspace/problem.hpp), under the same names.
   std::optional<std::string> max_memory;  // "8G", "512M" or bytes, as written
   // Subsurface stresses written into the result (docs/usage.md#stress).
   std::optional<std::string> stress_depths;  // "z1,z2,..." or "START:STOP:COUNT" (m), as written
   std::optional<double> stress_nu;
-  // Adhesion (docs/usage.md#adhesion): a cohesive law beside the hard wall.
-  std::optional<std::string> adhesion;  // md or exponential
-  std::optional<double> work_of_adhesion;
-  std::optional<double> adhesion_range;
-  std::optional<double> adhesion_stress;
-  std::optional<std::string> adhesion_precondition;  // on or off
   // Friction (docs/usage.md#friction): Coulomb's coefficient and the
   // tangential load steps ("QX[,QY];..." or ranges, as written) or a sliding
   // direction "X,Y".
@@ -102,5 +73,21 @@ SolveOptions solve_options_from_command_line(const CLI::App& solve, const std::v
 // TOML syntax error, an unknown key or a value of the wrong type, naming the
 // key and the file.
 void merge_config_file(SolveOptions& options);
+
+// The problem as given: the ProblemOptions part of `options`, where --tol
+// is the adhesive solver's tolerance too.
+ProblemOptions problem_options(const SolveOptions& options);
+
+// The program's spelling of the problem's options (problem.hpp): the flag or
+// config key of each ("adhesion_tol" is --tol) and its value as written.
+class FlagSpelling : public OptionSpelling {
+ public:
+  explicit FlagSpelling(const SolveOptions& options) : options_(options) {}
+  std::string name(std::string_view option) const override;
+  std::string describe(std::string_view option, std::string_view value) const override;
+
+ private:
+  const SolveOptions& options_;
+};
 
 }  // namespace halfspace::app

@@ -60,10 +60,6 @@ std::vector<std::string> given_names(const SolveOptions& options, Presence keys)
   return names;
 }
 
-std::string join_names(const std::vector<std::string>& names) {
-  return fmt::format("{}", fmt::join(names, ", "));
-}
-
 double require_positive(const SolveOptions& options, std::string_view key, double value, std::string_view unit) {
   if (!(std::isfinite(value) && value > 0.0)) {
     throw InputError(fmt::format("{} is invalid: must be positive ({})", options.describe(key), unit));
@@ -78,11 +74,6 @@ double require_length(const SolveOptions& options, std::string_view key, double 
   return require_in_range(options.describe(key), value, kMinLength, kMaxLength, "m");
 }
 
-double require_modulus(const SolveOptions& options, std::string_view key, double value) {
-  require_positive(options, key, value, "Pa");
-  return require_in_range(options.describe(key), value, kMinModulus, kMaxModulus, "Pa");
-}
-
 void check_surface_choice(const SolveOptions& options) {
   if (options.height_map && options.geometry) {
     throw InputError(fmt::format("{} and {} cannot be combined: give exactly one surface", options.name("height-map"),
@@ -90,282 +81,6 @@ void check_surface_choice(const SolveOptions& options) {
   }
   if (!options.height_map && !options.geometry) {
     throw InputError("no surface given: pass --height-map FILE or --geometry sphere|cylinder|flat|wavy");
-  }
-}
-
-double material_from(const SolveOptions& o) {
-  const Presence constants{
-      {"E1", o.e1.has_value()}, {"nu1", o.nu1.has_value()}, {"E2", o.e2.has_value()}, {"nu2", o.nu2.has_value()}};
-  const std::vector<std::string> given = given_names(o, constants);
-  if (o.e_star && !given.empty()) {
-    throw InputError(fmt::format("{} cannot be combined with {}: give either E-star or all of E1, nu1, E2, nu2",
-                                 o.name("E-star"), join_names(given)));
-  }
-  if (o.e_star) return checked_composite_modulus(require_modulus(o, "E-star", *o.e_star));
-  if (given.empty()) {
-    throw InputError("no material given: pass --E-star, or --E1, --nu1, --E2 and --nu2");
-  }
-  if (given.size() < 4) {
-    std::vector<std::string> missing;
-    for (const auto& [key, present] : constants) {
-      if (!present) missing.push_back(fmt::format("--{}", key));
-    }
-    throw InputError(
-        fmt::format("incomplete material: missing {} (give all of E1, nu1, E2, nu2, or E-star)", join_names(missing)));
-  }
-  // A rigid body 2 (--E2 inf) adds no compliance: E* = E1 / (1 - nu1^2).
-  const bool rigid2 = std::isinf(*o.e2) && *o.e2 > 0.0;
-  const double e1 = require_modulus(o, "E1", *o.e1);
-  const double e_star = rigid2 ? in_context(o.describe("E2"),
-                                            [&] {
-                                              return ElasticPair({e1, *o.nu1}, {*o.e2, *o.nu2}).composite_modulus();
-                                            })
-                               : composite_modulus({e1, *o.nu1}, {require_modulus(o, "E2", *o.e2), *o.nu2});
-  // nu near -1 makes a body's compliance vanish and E* grow without bound.
-  return require_in_range(fmt::format("the composite modulus E* = {:g} Pa of {}, {}, {}, {}", e_star, o.describe("E1"),
-                                      o.describe("nu1"), o.describe("E2"), o.describe("nu2")),
-                          e_star, kMinModulus, kMaxModulus, "Pa");
-}
-
-// Coated half-space: all five of --layer-thickness, --layer-E, --layer-nu,
-// --substrate-E, --substrate-nu, instead of the material options.
-std::optional<LayeredMaterial> coating_from(const SolveOptions& o) {
-  const Presence keys{{"layer-thickness", o.layer_thickness.has_value()},
-                      {"layer-E", o.layer_e.has_value()},
-                      {"layer-nu", o.layer_nu.has_value()},
-                      {"substrate-E", o.substrate_e.has_value()},
-                      {"substrate-nu", o.substrate_nu.has_value()}};
-  const std::vector<std::string> given = given_names(o, keys);
-  if (given.empty()) return std::nullopt;
-  const std::vector<std::string> material = given_names(o, {{"E-star", o.e_star.has_value()},
-                                                            {"E1", o.e1.has_value()},
-                                                            {"nu1", o.nu1.has_value()},
-                                                            {"E2", o.e2.has_value()},
-                                                            {"nu2", o.nu2.has_value()}});
-  if (!material.empty()) {
-    throw InputError(
-        fmt::format("{} cannot be combined with {}: a coated half-space (--layer-*, --substrate-*) "
-                    "against a rigid surface replaces the material options",
-                    join_names(given), join_names(material)));
-  }
-  if (given.size() < 5) {
-    std::vector<std::string> missing;
-    for (const auto& [key, present] : keys) {
-      if (!present) missing.push_back(fmt::format("--{}", key));
-    }
-    throw InputError(fmt::format(
-        "incomplete coated half-space: missing {} (give all of layer-thickness, layer-E, layer-nu, substrate-E, "
-        "substrate-nu)",
-        join_names(missing)));
-  }
-  auto poisson = [&o](std::string_view key, double nu) {
-    if (!(nu > -1.0 && nu <= 0.5)) {
-      throw InputError(fmt::format("{} is invalid: allowed range is (-1, 0.5]", o.describe(key)));
-    }
-    return nu;
-  };
-  return LayeredMaterial{require_length(o, "layer-thickness", *o.layer_thickness),
-                         {require_modulus(o, "layer-E", *o.layer_e), poisson("layer-nu", *o.layer_nu)},
-                         {require_modulus(o, "substrate-E", *o.substrate_e), poisson("substrate-nu", *o.substrate_nu)}};
-}
-
-// The load mode and every value of the load (one for a single solve, more for
-// a sweep); a single value keeps the message "--force -1 is invalid: ...".
-std::pair<Loading, std::vector<double>> loading_from(const SolveOptions& o) {
-  const std::vector<std::string> given = given_names(o, {{"force", o.force.has_value()},
-                                                         {"mean-pressure", o.mean_pressure.has_value()},
-                                                         {"approach", o.approach.has_value()}});
-  if (given.empty()) {
-    throw InputError("no load given: pass one of --force, --mean-pressure, --approach");
-  }
-  if (given.size() > 1) {
-    throw InputError(fmt::format("{} cannot be combined: give exactly one of --force, --mean-pressure, --approach",
-                                 fmt::join(given, " and ")));
-  }
-  const auto [key, mode, unit, values] =
-      o.force           ? std::tuple{"force", ControlMode::force, "N in 2D, N/m in 1D", *o.force}
-      : o.mean_pressure ? std::tuple{"mean-pressure", ControlMode::mean_pressure, "Pa", *o.mean_pressure}
-                        : std::tuple{"approach", ControlMode::approach, "m", *o.approach};
-  // With adhesion any finite value is a load: the approach of surfaces
-  // apart (negative), or a pull (a negative force).
-  const bool adhesive = o.adhesion.has_value();
-  for (std::size_t k = 0; k < values.size(); ++k) {
-    if (adhesive) {
-      if (!std::isfinite(values[k])) {
-        throw InputError(fmt::format("{} is invalid: every value must be finite ({})", o.describe(key), unit));
-      }
-    } else if (values.size() == 1) {
-      require_positive(o, key, values[k], unit);
-    } else if (!(std::isfinite(values[k]) && values[k] > 0.0)) {
-      throw InputError(fmt::format("{} is invalid: every value must be positive ({}); value {} is {}", o.describe(key),
-                                   unit, k + 1, values[k]));
-    }
-  }
-  const Loading loading{mode, values.front()};
-  if (!adhesive) loading.validate();
-  return {loading, values};
-}
-
-// The solver flags mapped onto SolverOptions, whose validate() holds every
-// rule; a broken one is restated with the flag (or config key) it came from.
-template <class Function>
-auto with_solver_flags(const SolveOptions& o, Function&& function) {
-  try {
-    return function();
-  } catch (const OptionError& error) {
-    const std::string& option = error.option();
-    const std::string_view key = option == "tolerance"             ? "tol"
-                                 : option == "max_iterations"      ? "max-iter"
-                                 : option.starts_with("deflation") ? "deflation-block"
-                                 : option == "hardness"            ? "hardness"
-                                 : option == "adhesion"            ? "adhesion"
-                                 : option == "adhesion.work"       ? "work-of-adhesion"
-                                 : option == "adhesion.range"
-                                     ? (o.adhesion_stress ? "adhesion-stress" : "adhesion-range")
-                                 : option == "adhesion.stress"    ? "adhesion-stress"
-                                 : option == "adhesion.tolerance" ? "tol"
-                                                                  : "solver";
-    throw InputError(fmt::format("{} {}", o.describe(key), error.rule()));
-  }
-}
-
-// --- Adhesion: --adhesion md|exponential with --work-of-adhesion and
-// --adhesion-range (or --adhesion-stress for md) become SolverOptions::adhesion,
-// whose validate() holds the law's rules.
-void reject_given(const SolveOptions& o, Presence keys, std::string_view reason);
-
-std::optional<solvers::SolverOptions::Adhesion> adhesion_from(const SolveOptions& o) {
-  if (!o.adhesion) {
-    reject_given(o,
-                 {{"work-of-adhesion", o.work_of_adhesion.has_value()},
-                  {"adhesion-range", o.adhesion_range.has_value()},
-                  {"adhesion-stress", o.adhesion_stress.has_value()},
-                  {"adhesion-precondition", o.adhesion_precondition.has_value()}},
-                 "needs --adhesion md|exponential");
-    return std::nullopt;
-  }
-  const AdhesionLawType type =
-      in_context(o.name("adhesion"), [&] { return solvers::parse_adhesion_law_type(*o.adhesion); });
-  if (o.solver) {
-    throw InputError(fmt::format("{} cannot be combined with {}: adhesion has its own solver (adhesive-pcg)",
-                                 o.describe("solver"), o.describe("adhesion")));
-  }
-  if (!o.work_of_adhesion)
-    throw InputError(fmt::format("{} needs --work-of-adhesion W (J/m^2)", o.describe("adhesion")));
-  if (o.adhesion_stress && type != AdhesionLawType::maugis_dugdale) {
-    throw InputError(fmt::format("{} applies only to --adhesion md; give --adhesion-range RHO (m) for {}",
-                                 o.describe("adhesion-stress"), o.describe("adhesion")));
-  }
-  if (o.adhesion_stress && o.adhesion_range) {
-    throw InputError(fmt::format("{} and {} cannot be combined: give the range h0 or the stress sigma0 = w / h0",
-                                 o.describe("adhesion-range"), o.describe("adhesion-stress")));
-  }
-  if (!o.adhesion_stress && !o.adhesion_range) {
-    throw InputError(fmt::format("{} needs --adhesion-range {} (m){}", o.describe("adhesion"),
-                                 type == AdhesionLawType::maugis_dugdale ? "H0" : "RHO",
-                                 type == AdhesionLawType::maugis_dugdale ? " or --adhesion-stress SIGMA0 (Pa)" : ""));
-  }
-  const double w = *o.work_of_adhesion;
-  solvers::SolverOptions::Adhesion adhesion;
-  adhesion.law = o.adhesion_stress ? AdhesionLaw::maugis_dugdale_from_stress(w, *o.adhesion_stress)
-                                   : AdhesionLaw{type, w, *o.adhesion_range};
-  // Given or derived (w / sigma0, w / range), the stress and the range stay
-  // in the ranges of their kinds (the library's table, shared with Python).
-  check_adhesion_law_ranges(adhesion.law, o.adhesion_stress.has_value());
-  if (o.tol) adhesion.tolerance = *o.tol;
-  if (o.adhesion_precondition) {
-    if (*o.adhesion_precondition != "on" && *o.adhesion_precondition != "off") {
-      throw InputError(
-          fmt::format("{} is invalid: allowed values are on and off", o.describe("adhesion-precondition")));
-    }
-    adhesion.precondition = *o.adhesion_precondition == "on";
-  }
-  return adhesion;
-}
-
-solvers::SolverOptions solver_options_from(const SolveOptions& o) {
-  solvers::SolverOptions solver;
-  with_solver_flags(o, [&] {
-    solver.adhesion = adhesion_from(o);
-    if (o.solver) solver.type = solvers::parse_solver_type(*o.solver);
-    if (o.tol) solver.tolerance = *o.tol;
-    // Beyond int, a limit is no limit: validate() sees the nearest int.
-    if (o.max_iter) solver.max_iterations = static_cast<int>(std::clamp<long long>(*o.max_iter, INT_MIN, INT_MAX));
-    if (o.deflation_block) {
-      // 0 turns the correction off; a negative B wraps to a size validate() refuses.
-      solver.deflation.mode =
-          *o.deflation_block == 0 ? solvers::DeflationOptions::Mode::off : solvers::DeflationOptions::Mode::on;
-      if (*o.deflation_block != 0) solver.deflation.block = static_cast<std::size_t>(*o.deflation_block);
-    }
-    if (o.hardness) solver.interface_law.hardness = *o.hardness;  // hardness cap
-    solver.validate();
-  });
-  return solver;
-}
-
-int threads_from(const SolveOptions& o) {
-  if (!o.threads) return default_threads();
-  if (*o.threads < 1 || *o.threads > max_threads()) {
-    throw InputError(fmt::format("{} is invalid: allowed range is 1 to {} threads ({} x the {} hardware threads)",
-                                 o.describe("threads"), max_threads(), kThreadsPerHardwareThread, hardware_threads()));
-  }
-  return static_cast<int>(*o.threads);
-}
-
-// The mean pressure each load makes on `grid`, within the program's range:
-// a force of 1e300 N on a 1 mm^2 domain, or a mean pressure of 1e-300 Pa,
-// would overflow or underflow inside the solve.
-void check_load_scale(const SolveOptions& o, const Grid& grid, ControlMode mode, const std::vector<double>& values) {
-  const auto value_name = [&](std::size_t k) {
-    return values.size() == 1 ? std::string() : fmt::format(" (value {}: {:g})", k + 1, values[k]);
-  };
-  for (std::size_t k = 0; k < values.size(); ++k) {
-    if (o.adhesion) {
-      // Adhesive loads are signed: only their size is checked.
-      const double size = std::abs(mode == ControlMode::force ? values[k] / grid.domain_area() : values[k]);
-      const double high = mode == ControlMode::approach ? kMaxLength : kMaxMeanPressure;
-      require_in_range(o.describe(mode == ControlMode::force      ? "force"
-                                  : mode == ControlMode::approach ? "approach"
-                                                                  : "mean-pressure") +
-                           value_name(k),
-                       size, 0.0, high, mode == ControlMode::approach ? "m (in size)" : "Pa (in size)");
-      continue;
-    }
-    switch (mode) {
-      case ControlMode::force: {
-        const double pressure = values[k] / grid.domain_area();
-        require_in_range(
-            fmt::format("{}{} on the {} grid of {} {:g} {}: the mean pressure force / {} = {:g} Pa",
-                        o.describe("force"), value_name(k), grid.shape_string(),
-                        grid.dimension() == 1 ? "length" : "area", grid.domain_area(),
-                        grid.dimension() == 1 ? "m" : "m^2", grid.dimension() == 1 ? "length" : "area", pressure),
-            pressure, kMinMeanPressure, kMaxMeanPressure, "Pa");
-        break;
-      }
-      case ControlMode::mean_pressure:
-        require_in_range(o.describe("mean-pressure") + value_name(k), values[k], kMinMeanPressure, kMaxMeanPressure,
-                         "Pa");
-        break;
-      case ControlMode::approach:
-        require_in_range(o.describe("approach") + value_name(k), values[k], kMinLength, kMaxLength, "m");
-        break;
-    }
-  }
-}
-
-// Displacement control on a periodic grid: the library's check of every
-// approach against the mean initial gap, restated with the flag.
-void check_periodic_approaches(const SolveOptions& o, const Eigen::ArrayXd& heights,
-                               const std::vector<double>& values) {
-  const double mean_gap = heights.maxCoeff() - heights.mean();
-  for (std::size_t k = 0; k < values.size(); ++k) {
-    try {
-      solvers::check_periodic_approach(values[k], mean_gap);
-    } catch (const OptionError& error) {
-      const std::string which =
-          values.size() == 1 ? std::string() : fmt::format(" (value {}: {} m)", k + 1, format_number(values[k]));
-      throw InputError(fmt::format("{}{} {}", o.describe("approach"), which, error.rule()));
-    }
   }
 }
 
@@ -719,15 +434,11 @@ bool reads_height_map_in_slabs(const SolveOptions& o) {
 
 SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& share) {
   check_surface_choice(options);
-  const std::optional<LayeredMaterial> coating = coating_from(options);
-  const double e_star = coating ? plane_strain_modulus(coating->layer) : material_from(options);
-  auto [loading, load_values] = loading_from(options);
-  solvers::SolverOptions solver = solver_options_from(options);
-  const int threads = threads_from(options);
-  if (options.fft_planning) {
-    solver.fft_planning =
-        in_context(options.name("fft-planning"), [&] { return parse_fft_planning(*options.fft_planning); });
-  }
+  const FlagSpelling flags(options);
+  Problem problem = make_problem(problem_options(options), flags);
+  const std::optional<LayeredMaterial>& coating = problem.coating;
+  const std::vector<double>& load_values = problem.load_values;
+  const solvers::SolverOptions& solver = problem.solver;
   const Boundary boundary =
       in_context(options.name("boundary"), [&] { return parse_boundary(options.boundary.value_or("free")); });
   fs::path output = output_from(options);
@@ -739,16 +450,7 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
       friction_from(options, coating.has_value(), load_values.size(), process_count());
   const std::size_t history_steps = friction ? friction->steps() : 0;
   const GridCheck check_grid = [&](const Grid& grid, const std::string& request) {
-    check_load_scale(options, grid, loading.mode, load_values);
-    // Hardness cap: no load above H times the domain area.
-    for (std::size_t k = 0; k < load_values.size(); ++k) {
-      const std::string which = load_values.size() == 1
-                                    ? std::string()
-                                    : fmt::format(" (value {}: {})", k + 1, format_number(load_values[k]));
-      in_context(options.describe(loading.mode == ControlMode::force ? "force" : "mean-pressure") + which, [&] {
-        solver.interface_law.check_load(grid, Loading{loading.mode, load_values[k]});
-      });
-    }
+    problem.check_grid(grid, flags);
     const std::string what = fmt::format("{}: {}", request, solve_description(grid, solver, load_values.size()));
     const double estimate = std::max(solve_memory_estimate(grid, solver, load_values.size()),
                                      stress_peak_memory(grid, stress.depths.size(), coating.has_value())) +
@@ -787,15 +489,9 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
     throw InputError(fmt::format("surface {} has {} heights for a {} grid", surface.source, surface.heights.size(),
                                  surface.grid.shape_string()));
   }
-  with_solver_flags(options, [&] {
-    if (coating) {
-      solver.validate(surface.grid, *coating);
-    } else {
-      solver.validate(surface.grid);
-    }
-  });
-  if (loading.mode == ControlMode::approach && surface.grid.periodic() && surface.rows == rows) {
-    check_periodic_approaches(options, surface.heights, load_values);
+  if (surface.rows == rows) {
+    problem.check_heights(surface.grid, {surface.heights.data(), static_cast<std::size_t>(surface.heights.size())},
+                          flags);
   }
   if (!stress.depths.empty()) {
     in_context(options.describe("stress-depths"), [&] {
@@ -806,7 +502,7 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
   std::optional<ElasticPair> pair;
   if (friction) {
     pair = friction_pair_from(options);
-    check_friction(options, *friction, surface.grid, *pair, solver, loading);
+    check_friction(options, *friction, surface.grid, *pair, solver, problem.loading);
   }
   const std::size_t first_row = surface.first_row;
   return SolveSetup{std::move(surface.grid),
@@ -814,19 +510,19 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
                     first_row,
                     std::move(surface.source),
                     std::move(surface.preparation),
-                    e_star,
-                    loading,
-                    std::move(solver),
-                    threads,
+                    problem.e_star,
+                    problem.loading,
+                    std::move(problem.solver),
+                    problem.threads,
                     std::move(output),
                     options.quiet,
                     options.command_line,
                     options.config_text,
-                    std::move(load_values),
+                    std::move(problem.load_values),
                     options.plot,
                     stress.depths,
                     stress.nu,
-                    coating,
+                    std::move(problem.coating),
                     friction,
                     pair};
 }

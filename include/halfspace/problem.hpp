@@ -1,0 +1,113 @@
+// A contact problem as a front end states it, and the one place its rules
+// live: the elastic body (E*, both bodies' E and nu, or a coated half-space),
+// the interface law (a hardness cap; a cohesive law made from its
+// parameters), the loads (one, or a sweep; signed with adhesion), the
+// solver's settings and the threads. The program maps its flags onto
+// ProblemOptions and Python its keywords; make_problem checks them and every
+// message names the option as the front end spells it (OptionSpelling).
+#pragma once
+
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "halfspace/grid.hpp"
+#include "halfspace/layered_material.hpp"
+#include "halfspace/solvers/loading.hpp"
+#include "halfspace/solvers/solver_options.hpp"
+
+namespace halfspace {
+
+// How a front end writes an option in messages. `option` is the problem's
+// name of it (problem_option_names: "e_star", "work_of_adhesion", "tol").
+// The defaults are the library's: the name itself, and "name=value".
+class OptionSpelling {
+ public:
+  virtual ~OptionSpelling() = default;
+  // The option by itself: "--work-of-adhesion", "work_of_adhesion".
+  virtual std::string name(std::string_view option) const;
+  // The option with its value; `value` as the library shows it, which a
+  // front end may replace by what the user wrote: "--force 1,-2", "force=-1".
+  virtual std::string describe(std::string_view option, std::string_view value) const;
+};
+
+// Everything a contact problem is, as given: unset means not given, so that
+// make_problem can tell a default from a choice and name what is missing.
+struct ProblemOptions {
+  // The elastic body: e_star; or E1, nu1, E2 (inf: a rigid body 2), nu2; or
+  // a coated half-space (all five layer_ and substrate_ constants) against a
+  // rigid surface. Pa, m.
+  std::optional<double> e_star;
+  std::optional<double> e1;
+  std::optional<double> nu1;
+  std::optional<double> e2;
+  std::optional<double> nu2;
+  std::optional<double> layer_thickness;
+  std::optional<double> layer_e;
+  std::optional<double> layer_nu;
+  std::optional<double> substrate_e;
+  std::optional<double> substrate_nu;
+  // The interface law: a hardness cap p <= H (Pa); a cohesive law ("md" or
+  // "exponential") of work w (J/m^2) and range (m) or, for md, stress (Pa).
+  std::optional<double> hardness;
+  std::optional<std::string> adhesion;
+  std::optional<double> work_of_adhesion;
+  std::optional<double> adhesion_range;
+  std::optional<double> adhesion_stress;
+  std::optional<double> adhesion_tol;
+  std::optional<std::string> adhesion_precondition;  // "on" or "off"
+  // The load: exactly one; more than one value is a sweep, solved in order.
+  std::optional<std::vector<double>> force;          // N in 2D, N/m in 1D
+  std::optional<std::vector<double>> mean_pressure;  // Pa
+  std::optional<std::vector<double>> approach;       // m
+  // The solver (solver_options.hpp) and the threads.
+  std::optional<std::string> solver;
+  std::optional<double> tol;
+  std::optional<long long> max_iter;
+  std::optional<std::string> fft_planning;
+  std::optional<long long> deflation_block;  // 0: off
+  std::optional<long long> threads;
+};
+
+// The problem's name of each option of ProblemOptions and where it is held:
+// Python's keyword; the program's flag is the name with '-' for '_'.
+using ProblemOptionField =
+    std::variant<std::optional<double> ProblemOptions::*, std::optional<long long> ProblemOptions::*,
+                 std::optional<std::string> ProblemOptions::*, std::optional<std::vector<double>> ProblemOptions::*>;
+struct ProblemOptionName {
+  std::string_view name;
+  ProblemOptionField field;
+};
+std::span<const ProblemOptionName> problem_option_names();
+
+// A checked problem. The grid and the heights come later (a front end reads
+// or builds them), so the rules that need them are methods.
+struct Problem {
+  double e_star = 0.0;                     // Pa; a coating's is the layer's E1 / (1 - nu1^2)
+  std::optional<LayeredMaterial> coating;  // a coated half-space, else homogeneous
+  Loading loading;                         // the first load; its mode is every load's
+  std::vector<double> load_values;         // every load, in loading.mode's unit
+  solvers::SolverOptions solver;
+  int threads = 1;
+
+  bool sweep() const { return load_values.size() > 1; }
+  // The rules that need the grid: each load's scale (the mean pressure it
+  // makes within the range of pressures; signed loads by size), the hardness
+  // cap against each load, and the solver's (SolverOptions::validate(grid),
+  // with the coating's). Throws InputError naming the option.
+  void check_grid(const Grid& grid, const OptionSpelling& spelling = {}) const;
+  // Displacement control on a periodic grid: each approach below the mean
+  // initial gap of `heights` (check_periodic_approach), named as an option.
+  void check_heights(const Grid& grid, std::span<const double> heights, const OptionSpelling& spelling = {}) const;
+};
+
+// Applies the defaults and checks every option and their combinations that
+// need no grid. Throws InputError (OptionError for one option's value) with
+// a message naming the option as `spelling` writes it, its value and the
+// rule it broke.
+Problem make_problem(const ProblemOptions& options, const OptionSpelling& spelling = {});
+
+}  // namespace halfspace

@@ -1,0 +1,463 @@
+// The rules of a contact problem, checked in the order a reader scans a
+// command line (body, interface law, load, solver), so the first mistake is
+// the one reported. Numbers are shown with six digits (format_number).
+#include "halfspace/problem.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <array>
+#include <climits>
+#include <cmath>
+#include <initializer_list>
+#include <tuple>
+#include <utility>
+
+#include "halfspace/elastic_pair.hpp"
+#include "halfspace/error.hpp"
+#include "halfspace/material.hpp"
+#include "halfspace/physical_ranges.hpp"
+#include "halfspace/solvers/adhesion_law.hpp"
+#include "halfspace/threads.hpp"
+
+namespace halfspace {
+namespace {
+
+using P = ProblemOptions;
+
+constexpr std::array kNames{
+    ProblemOptionName{"e_star", &P::e_star},
+    ProblemOptionName{"E1", &P::e1},
+    ProblemOptionName{"nu1", &P::nu1},
+    ProblemOptionName{"E2", &P::e2},
+    ProblemOptionName{"nu2", &P::nu2},
+    ProblemOptionName{"layer_thickness", &P::layer_thickness},
+    ProblemOptionName{"layer_E", &P::layer_e},
+    ProblemOptionName{"layer_nu", &P::layer_nu},
+    ProblemOptionName{"substrate_E", &P::substrate_e},
+    ProblemOptionName{"substrate_nu", &P::substrate_nu},
+    ProblemOptionName{"hardness", &P::hardness},
+    ProblemOptionName{"adhesion", &P::adhesion},
+    ProblemOptionName{"work_of_adhesion", &P::work_of_adhesion},
+    ProblemOptionName{"adhesion_range", &P::adhesion_range},
+    ProblemOptionName{"adhesion_stress", &P::adhesion_stress},
+    ProblemOptionName{"adhesion_tol", &P::adhesion_tol},
+    ProblemOptionName{"adhesion_precondition", &P::adhesion_precondition},
+    ProblemOptionName{"force", &P::force},
+    ProblemOptionName{"mean_pressure", &P::mean_pressure},
+    ProblemOptionName{"approach", &P::approach},
+    ProblemOptionName{"solver", &P::solver},
+    ProblemOptionName{"tol", &P::tol},
+    ProblemOptionName{"max_iter", &P::max_iter},
+    ProblemOptionName{"fft_planning", &P::fft_planning},
+    ProblemOptionName{"deflation_block", &P::deflation_block},
+    ProblemOptionName{"threads", &P::threads},
+};
+
+// The option of ProblemOptions that sets each SolverOptions member a
+// SolverOptionError (or the adhesion law's ranges) names.
+std::string_view problem_name(std::string_view member, bool stress_given) {
+  static constexpr std::array<std::pair<std::string_view, std::string_view>, 8> kMembers{{
+      {"tolerance", "tol"},
+      {"max_iterations", "max_iter"},
+      {"type", "solver"},
+      {"adhesion.work", "work_of_adhesion"},
+      {"adhesion.stress", "adhesion_stress"},
+      {"adhesion.tolerance", "adhesion_tol"},
+      {"hardness", "hardness"},
+      {"adhesion", "adhesion"},
+  }};
+  if (member.starts_with("deflation")) return "deflation_block";
+  if (member == "adhesion.range") return stress_given ? "adhesion_stress" : "adhesion_range";
+  for (const auto& [known, name] : kMembers) {
+    if (known == member) return name;
+  }
+  return "solver";
+}
+
+// The text of a given list of numbers: "1, -2".
+std::string text(const std::vector<double>& values) {
+  std::vector<std::string> parts;
+  for (const double value : values) parts.push_back(format_number(value));
+  return fmt::format("{}", fmt::join(parts, ","));
+}
+
+// The rules of one problem's options, written with the front end's spelling.
+class Rules {
+ public:
+  Rules(const ProblemOptions& options, const OptionSpelling& spelling) : o_(options), s_(spelling) {}
+
+  std::string name(std::string_view option) const { return s_.name(option); }
+  std::string describe(std::string_view option, double value) const {
+    return s_.describe(option, format_number(value));
+  }
+  // The names of the options given among `options`.
+  std::vector<std::string> given(std::initializer_list<std::pair<std::string_view, bool>> options) const {
+    std::vector<std::string> names;
+    for (const auto& [option, present] : options) {
+      if (present) names.push_back(name(option));
+    }
+    return names;
+  }
+  std::vector<std::string> missing(std::initializer_list<std::pair<std::string_view, bool>> options) const {
+    std::vector<std::string> names;
+    for (const auto& [option, present] : options) {
+      if (!present) names.push_back(name(option));
+    }
+    return names;
+  }
+  double positive(std::string_view option, double value, std::string_view unit) const {
+    if (!(std::isfinite(value) && value > 0.0)) {
+      throw OptionError(std::string(option), format_number(value), fmt::format("is invalid: must be positive ({})", unit));
+    }
+    return value;
+  }
+  double length(std::string_view option, double value) const {
+    positive(option, value, "m");
+    return require_in_range(describe(option, value), value, kMinLength, kMaxLength, "m");
+  }
+  double modulus(std::string_view option, double value) const {
+    positive(option, value, "Pa");
+    return require_in_range(describe(option, value), value, kMinModulus, kMaxModulus, "Pa");
+  }
+  double poisson(std::string_view option, double nu) const {
+    if (!(nu > -1.0 && nu <= 0.5)) {
+      throw OptionError(std::string(option), format_number(nu), "is invalid: allowed range is (-1, 0.5]");
+    }
+    return nu;
+  }
+
+  // Runs `function`; an OptionError it throws (a SolverOptions rule, the
+  // adhesion law's ranges) is named by the option of the problem that set it.
+  template <class Function>
+  auto restated(Function&& function) const {
+    try {
+      return function();
+    } catch (const OptionError& error) {
+      const std::string_view option = problem_name(error.option(), o_.adhesion_stress.has_value());
+      throw OptionError(std::string(option), error.value(), error.rule());
+    }
+  }
+
+  double body() const;
+  std::optional<LayeredMaterial> coating() const;
+  std::pair<Loading, std::vector<double>> loads() const;
+  std::optional<solvers::SolverOptions::Adhesion> adhesion() const;
+  solvers::SolverOptions solver() const;
+  int threads() const;
+
+ private:
+  const ProblemOptions& o_;
+  const OptionSpelling& s_;
+};
+
+double Rules::body() const {
+  const auto constants = {std::pair<std::string_view, bool>{"E1", o_.e1.has_value()},
+                          {"nu1", o_.nu1.has_value()},
+                          {"E2", o_.e2.has_value()},
+                          {"nu2", o_.nu2.has_value()}};
+  const std::vector<std::string> present = given(constants);
+  if (o_.e_star && !present.empty()) {
+    throw InputError(fmt::format("{} cannot be combined with {}: give either {} or all of {}, {}, {}, {}",
+                                 name("e_star"), fmt::join(present, ", "), name("e_star"), name("E1"), name("nu1"),
+                                 name("E2"), name("nu2")));
+  }
+  if (o_.e_star) return checked_composite_modulus(modulus("e_star", *o_.e_star));
+  if (present.empty()) {
+    throw InputError(fmt::format("no material given: pass {}, or {}, {}, {} and {}", name("e_star"), name("E1"),
+                                 name("nu1"), name("E2"), name("nu2")));
+  }
+  if (present.size() < 4) {
+    throw InputError(fmt::format("incomplete material: missing {} (give all of {}, {}, {}, {}, or {})",
+                                 fmt::join(missing(constants), ", "), name("E1"), name("nu1"), name("E2"), name("nu2"),
+                                 name("e_star")));
+  }
+  // A rigid body 2 (E2 = inf) adds no compliance: E* = E1 / (1 - nu1^2).
+  const bool rigid2 = std::isinf(*o_.e2) && *o_.e2 > 0.0;
+  const double e1 = modulus("E1", *o_.e1);
+  double e_star = 0.0;
+  if (rigid2) {
+    try {
+      e_star = ElasticPair({e1, *o_.nu1}, {*o_.e2, *o_.nu2}).composite_modulus();
+    } catch (const InputError& error) {
+      throw InputError(fmt::format("{}: {}", describe("E2", *o_.e2), error.what()));
+    }
+  } else {
+    e_star = composite_modulus({e1, *o_.nu1}, {modulus("E2", *o_.e2), *o_.nu2});
+  }
+  // nu near -1 makes a body's compliance vanish and E* grow without bound.
+  return require_in_range(fmt::format("the composite modulus E* = {:g} Pa of {}, {}, {}, {}", e_star,
+                                      describe("E1", *o_.e1), describe("nu1", *o_.nu1), describe("E2", *o_.e2),
+                                      describe("nu2", *o_.nu2)),
+                          e_star, kMinModulus, kMaxModulus, "Pa");
+}
+
+std::optional<LayeredMaterial> Rules::coating() const {
+  const auto constants = {std::pair<std::string_view, bool>{"layer_thickness", o_.layer_thickness.has_value()},
+                          {"layer_E", o_.layer_e.has_value()},
+                          {"layer_nu", o_.layer_nu.has_value()},
+                          {"substrate_E", o_.substrate_e.has_value()},
+                          {"substrate_nu", o_.substrate_nu.has_value()}};
+  const std::vector<std::string> present = given(constants);
+  if (present.empty()) return std::nullopt;
+  const std::vector<std::string> material = given({{"e_star", o_.e_star.has_value()},
+                                                   {"E1", o_.e1.has_value()},
+                                                   {"nu1", o_.nu1.has_value()},
+                                                   {"E2", o_.e2.has_value()},
+                                                   {"nu2", o_.nu2.has_value()}});
+  if (!material.empty()) {
+    throw InputError(fmt::format(
+        "{} cannot be combined with {}: a coated half-space against a rigid surface replaces the material options",
+        fmt::join(present, ", "), fmt::join(material, ", ")));
+  }
+  if (present.size() < 5) {
+    std::vector<std::string> all;
+    for (const auto& [option, _] : constants) all.push_back(name(option));
+    throw InputError(fmt::format("incomplete coated half-space: missing {} (give all of {})",
+                                 fmt::join(missing(constants), ", "), fmt::join(all, ", ")));
+  }
+  return LayeredMaterial{length("layer_thickness", *o_.layer_thickness),
+                         {modulus("layer_E", *o_.layer_e), poisson("layer_nu", *o_.layer_nu)},
+                         {modulus("substrate_E", *o_.substrate_e), poisson("substrate_nu", *o_.substrate_nu)}};
+}
+
+// The load mode and every value of the load (one for a single solve, more
+// for a sweep).
+std::pair<Loading, std::vector<double>> Rules::loads() const {
+  const std::vector<std::string> present = given({{"force", o_.force.has_value()},
+                                                  {"mean_pressure", o_.mean_pressure.has_value()},
+                                                  {"approach", o_.approach.has_value()}});
+  if (present.empty()) {
+    throw InputError(fmt::format("no load given: pass one of {}, {}, {}", name("force"), name("mean_pressure"),
+                                 name("approach")));
+  }
+  if (present.size() > 1) {
+    throw InputError(fmt::format("{} cannot be combined: give exactly one of {}, {}, {}", fmt::join(present, " and "),
+                                 name("force"), name("mean_pressure"), name("approach")));
+  }
+  const auto [option, mode, unit, values] =
+      o_.force           ? std::tuple{"force", ControlMode::force, "N in 2D, N/m in 1D", *o_.force}
+      : o_.mean_pressure ? std::tuple{"mean_pressure", ControlMode::mean_pressure, "Pa", *o_.mean_pressure}
+                         : std::tuple{"approach", ControlMode::approach, "m", *o_.approach};
+  if (values.empty()) throw OptionError(option, "", "is invalid: give at least one value");
+  // With adhesion any finite value is a load: the approach of surfaces
+  // apart (negative), or a pull (a negative force).
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    if (o_.adhesion) {
+      if (!std::isfinite(values[k])) {
+        throw OptionError(option, text(values), fmt::format("is invalid: every value must be finite ({})", unit));
+      }
+    } else if (values.size() == 1) {
+      positive(option, values[k], unit);
+    } else if (!(std::isfinite(values[k]) && values[k] > 0.0)) {
+      throw OptionError(option, text(values),
+                        fmt::format("is invalid: every value must be positive ({}); value {} is {}", unit, k + 1,
+                                    format_number(values[k])));
+    }
+  }
+  return {Loading{mode, values.front()}, values};
+}
+
+// The cohesive law made from its parameters: the work and the range or,
+// for Maugis-Dugdale, the stress sigma0 = w / h0.
+std::optional<solvers::SolverOptions::Adhesion> Rules::adhesion() const {
+  if (!o_.adhesion) {
+    const std::vector<std::string> present = given({{"work_of_adhesion", o_.work_of_adhesion.has_value()},
+                                                    {"adhesion_range", o_.adhesion_range.has_value()},
+                                                    {"adhesion_stress", o_.adhesion_stress.has_value()},
+                                                    {"adhesion_tol", o_.adhesion_tol.has_value()},
+                                                    {"adhesion_precondition", o_.adhesion_precondition.has_value()}});
+    if (!present.empty()) throw InputError(fmt::format("{} needs {} md|exponential", present.front(), name("adhesion")));
+    return std::nullopt;
+  }
+  const std::string adhesion = s_.describe("adhesion", *o_.adhesion);
+  AdhesionLawType type{};
+  try {
+    type = solvers::parse_adhesion_law_type(*o_.adhesion);
+  } catch (const InputError& error) {
+    throw InputError(fmt::format("{}: {}", name("adhesion"), error.what()));
+  }
+  if (o_.solver) {
+    throw InputError(fmt::format("{} cannot be combined with {}: adhesion has its own solver (adhesive-pcg)",
+                                 s_.describe("solver", *o_.solver), adhesion));
+  }
+  const bool md = type == AdhesionLawType::maugis_dugdale;
+  if (!o_.work_of_adhesion) throw InputError(fmt::format("{} needs {} W (J/m^2)", adhesion, name("work_of_adhesion")));
+  if (o_.adhesion_stress && !md) {
+    throw InputError(fmt::format("{} applies only to {} md; give {} RHO (m) for {}",
+                                 describe("adhesion_stress", *o_.adhesion_stress), name("adhesion"),
+                                 name("adhesion_range"), adhesion));
+  }
+  if (o_.adhesion_stress && o_.adhesion_range) {
+    throw InputError(fmt::format("{} and {} cannot be combined: give the range h0 or the stress sigma0 = w / h0",
+                                 describe("adhesion_range", *o_.adhesion_range),
+                                 describe("adhesion_stress", *o_.adhesion_stress)));
+  }
+  if (!o_.adhesion_stress && !o_.adhesion_range) {
+    throw InputError(fmt::format("{} needs {} {} (m){}", adhesion, name("adhesion_range"), md ? "H0" : "RHO",
+                                 md ? fmt::format(" or {} SIGMA0 (Pa)", name("adhesion_stress")) : std::string()));
+  }
+  const double w = *o_.work_of_adhesion;
+  solvers::SolverOptions::Adhesion made;
+  made.law = o_.adhesion_stress ? AdhesionLaw::maugis_dugdale_from_stress(w, *o_.adhesion_stress)
+                                : AdhesionLaw{type, w, *o_.adhesion_range};
+  // Given or derived (w / sigma0, w / range), the stress and the range stay
+  // in the ranges of their kinds.
+  restated([&] { check_adhesion_law_ranges(made.law, o_.adhesion_stress.has_value()); });
+  if (o_.adhesion_tol) made.tolerance = *o_.adhesion_tol;
+  if (o_.adhesion_precondition) {
+    if (*o_.adhesion_precondition != "on" && *o_.adhesion_precondition != "off") {
+      throw OptionError("adhesion_precondition", *o_.adhesion_precondition,
+                        "is invalid: allowed values are on and off");
+    }
+    made.precondition = *o_.adhesion_precondition == "on";
+  }
+  return made;
+}
+
+solvers::SolverOptions Rules::solver() const {
+  solvers::SolverOptions solver;
+  solver.adhesion = adhesion();
+  restated([&] {
+    if (o_.solver) solver.type = solvers::parse_solver_type(*o_.solver);
+    if (o_.tol) solver.tolerance = *o_.tol;
+    // Beyond int, a limit is no limit: validate() sees the nearest int.
+    if (o_.max_iter) solver.max_iterations = static_cast<int>(std::clamp<long long>(*o_.max_iter, INT_MIN, INT_MAX));
+    if (o_.deflation_block) {
+      const long long block = *o_.deflation_block;
+      if (block < 0) {
+        throw OptionError("deflation_block", fmt::format("{}", block), "is invalid: give 0 (off) or a block size");
+      }
+      solver.deflation.mode =
+          block == 0 ? solvers::DeflationOptions::Mode::off : solvers::DeflationOptions::Mode::on;
+      if (block != 0) solver.deflation.block = static_cast<std::size_t>(block);
+    }
+    if (o_.hardness) solver.interface_law.hardness = *o_.hardness;
+    solver.validate();
+  });
+  if (o_.fft_planning) {
+    try {
+      solver.fft_planning = parse_fft_planning(*o_.fft_planning);
+    } catch (const InputError& error) {
+      throw InputError(fmt::format("{}: {}", name("fft_planning"), error.what()));
+    }
+  }
+  return solver;
+}
+
+int Rules::threads() const {
+  if (!o_.threads) return default_threads();
+  if (*o_.threads < 1 || *o_.threads > max_threads()) {
+    throw OptionError("threads", fmt::format("{}", *o_.threads),
+                      fmt::format("is invalid: allowed range is 1 to {} threads ({} x the {} hardware threads)",
+                                  max_threads(), kThreadsPerHardwareThread, hardware_threads()));
+  }
+  return static_cast<int>(*o_.threads);
+}
+
+// One option's broken rule as the front end writes it: "--tol 2 is invalid: ...".
+InputError spelled(const OptionError& error, const OptionSpelling& spelling) {
+  return InputError(fmt::format("{} {}", spelling.describe(error.option(), error.value()), error.rule()));
+}
+
+// The option a load of `mode` is given by.
+std::string_view load_option(ControlMode mode) {
+  return mode == ControlMode::force ? "force" : mode == ControlMode::approach ? "approach" : "mean_pressure";
+}
+
+}  // namespace
+
+std::string OptionSpelling::name(std::string_view option) const {
+  return std::string(option);
+}
+
+std::string OptionSpelling::describe(std::string_view option, std::string_view value) const {
+  return fmt::format("{}={}", option, value);
+}
+
+std::span<const ProblemOptionName> problem_option_names() {
+  return kNames;
+}
+
+Problem make_problem(const ProblemOptions& options, const OptionSpelling& spelling) {
+  const Rules rules(options, spelling);
+  try {
+    Problem problem;
+    problem.coating = rules.coating();
+    problem.e_star = problem.coating ? plane_strain_modulus(problem.coating->layer) : rules.body();
+    std::tie(problem.loading, problem.load_values) = rules.loads();
+    problem.solver = rules.solver();
+    problem.threads = rules.threads();
+    return problem;
+  } catch (const OptionError& error) {
+    throw spelled(error, spelling);
+  }
+}
+
+void Problem::check_grid(const Grid& grid, const OptionSpelling& spelling) const {
+  const std::string_view option = load_option(loading.mode);
+  const std::vector<double>& values = load_values;
+  const std::string given = spelling.describe(option, text(values));
+  const auto which = [&](std::size_t k) {
+    return values.size() == 1 ? std::string() : fmt::format(" (value {}: {})", k + 1, format_number(values[k]));
+  };
+  const bool area = grid.dimension() == 2;
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    // The mean pressure each load makes on `grid`, within the range of
+    // pressures: a force of 1e300 N on a 1 mm^2 domain, or a mean pressure
+    // of 1e-300 Pa, would overflow or underflow inside the solve.
+    if (solver.adhesion) {
+      // Adhesive loads are signed: only their size is checked.
+      const bool approach = loading.mode == ControlMode::approach;
+      const double size = std::abs(loading.mode == ControlMode::force ? values[k] / grid.domain_area() : values[k]);
+      require_in_range(given + which(k), size, 0.0, approach ? kMaxLength : kMaxMeanPressure,
+                       approach ? "m (in size)" : "Pa (in size)");
+    } else if (loading.mode == ControlMode::force) {
+      const double pressure = values[k] / grid.domain_area();
+      require_in_range(fmt::format("{}{} on the {} grid of {} {:g} {}: the mean pressure force / {} = {:g} Pa", given,
+                                   which(k), grid.shape_string(), area ? "area" : "length", grid.domain_area(),
+                                   area ? "m^2" : "m", area ? "area" : "length", pressure),
+                       pressure, kMinMeanPressure, kMaxMeanPressure, "Pa");
+    } else if (loading.mode == ControlMode::mean_pressure) {
+      require_in_range(given + which(k), values[k], kMinMeanPressure, kMaxMeanPressure, "Pa");
+    } else {
+      require_in_range(given + which(k), values[k], kMinLength, kMaxLength, "m");
+    }
+    // Hardness cap: no load above H times the domain area.
+    try {
+      solver.interface_law.check_load(grid, Loading{loading.mode, values[k]});
+    } catch (const InputError& error) {
+      throw InputError(fmt::format("{}{}: {}", given, which(k), error.what()));
+    }
+  }
+  try {
+    if (coating) {
+      solver.validate(grid, *coating);
+    } else {
+      solver.validate(grid);
+    }
+  } catch (const OptionError& error) {
+    throw spelled(OptionError(std::string(problem_name(error.option(), false)), error.value(), error.rule()), spelling);
+  }
+}
+
+void Problem::check_heights(const Grid& grid, std::span<const double> heights,
+                            const OptionSpelling& spelling) const {
+  if (loading.mode != ControlMode::approach || !grid.periodic() || heights.empty()) return;
+  const Eigen::Map<const Eigen::ArrayXd> h(heights.data(), static_cast<Eigen::Index>(heights.size()));
+  const double mean_gap = h.maxCoeff() - h.mean();
+  for (std::size_t k = 0; k < load_values.size(); ++k) {
+    try {
+      solvers::check_periodic_approach(load_values[k], mean_gap);
+    } catch (const OptionError& error) {
+      const std::string which = load_values.size() == 1
+                                    ? std::string()
+                                    : fmt::format(" (value {}: {} m)", k + 1, format_number(load_values[k]));
+      throw InputError(fmt::format("{}{} {}", spelling.describe("approach", text(load_values)), which, error.rule()));
+    }
+  }
+}
+
+}  // namespace halfspace
