@@ -591,7 +591,7 @@ int run_lubricate(const LubricateOptions& o) {
   if (o.roughness) add_roughness(*o.roughness, map);
   if (o.mixed) {
     if (!e_star) throw InputError("--mixed needs an elastic body: give --E-star (or --E1, --nu1, --E2, --nu2)");
-    if (coating) throw InputError("--mixed takes a homogeneous body: a coating (--coating-*) is not supported by the mixed film yet");
+    if (coating) throw InputError("--mixed takes a homogeneous body: a coating (--layer-*, --substrate-*) is not supported by the mixed film yet");
     return run_mixed(o, map, conditions, *e_star);
   }
   if (e_star) return run_elastic(o, map, conditions, *e_star, coating);
