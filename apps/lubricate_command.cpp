@@ -67,8 +67,6 @@ struct LubricateOptions : GivenOptions {
   std::optional<double> offset;
   std::optional<double> contact_friction;
   std::optional<double> boundary_film;
-  std::optional<double> limiting_shear_stress;
-  std::optional<double> limiting_shear_slope;
   std::optional<std::vector<double>> speeds;
   std::optional<std::string> stribeck;
   std::optional<std::string> output;
@@ -151,10 +149,6 @@ const std::array kOptions{
                     "Coulomb coefficient on contact cells [0.1]"},
     LubricateOption{"boundary-film", &LubricateOptions::boundary_film, Kind::number, kMixed, "M",
                     "the thinnest film the Reynolds equation sees, on contact cells (m) [1e-9]"},
-    LubricateOption{"limiting-shear-stress", &LubricateOptions::limiting_shear_stress, Kind::number, kMixed, "PA",
-                    "tau_0 of the fluid's limiting shear stress tau_0 + gamma p (Pa) [0: no limit]"},
-    LubricateOption{"limiting-shear-slope", &LubricateOptions::limiting_shear_slope, Kind::number, kMixed, "GAMMA",
-                    "gamma of the limiting shear stress tau_0 + gamma p [0]"},
     LubricateOption{"speeds", &LubricateOptions::speeds, Kind::numbers, kMixed, "U1,U2,...",
                     "Stribeck sweep: entrainment speeds (m/s), sliding scaled alike; needs --stribeck"},
     LubricateOption{"stribeck", &LubricateOptions::stribeck, Kind::path, kMixed, "FILE.csv",
@@ -554,11 +548,9 @@ int run_lubricate(const LubricateOptions& o) {
     throw InputError(o.mixed ? "give exactly one of --force N and --offset M"
                              : "give exactly one of --separation M and --force N");
   }
-  if (!o.mixed && (o.offset || o.contact_friction || o.boundary_film || o.limiting_shear_stress ||
-                   o.limiting_shear_slope || o.speeds || o.stribeck)) {
+  if (!o.mixed && (o.offset || o.contact_friction || o.boundary_film || o.speeds || o.stribeck)) {
     throw InputError(
-        "--offset, --contact-friction, --boundary-film, --limiting-shear-stress, --limiting-shear-slope, --speeds and "
-        "--stribeck belong to the mixed film: add --mixed");
+        "--offset, --contact-friction, --boundary-film, --speeds and --stribeck belong to the mixed film: add --mixed");
   }
   if (!o.output) throw InputError("no output file given: pass --output FILE.h5");
   io::check_output_path(*o.output);
@@ -591,7 +583,10 @@ int run_lubricate(const LubricateOptions& o) {
   if (o.roughness) add_roughness(*o.roughness, map);
   if (o.mixed) {
     if (!e_star) throw InputError("--mixed needs an elastic body: give --E-star (or --E1, --nu1, --E2, --nu2)");
-    if (coating) throw InputError("--mixed takes a homogeneous body: a coating (--layer-*, --substrate-*) is not supported by the mixed film yet");
+    if (coating)
+      throw InputError(
+          "--mixed takes a homogeneous body: a coating (--layer-*, --substrate-*) is not supported by the mixed film "
+          "yet");
     return run_mixed(o, map, conditions, *e_star);
   }
   if (e_star) return run_elastic(o, map, conditions, *e_star, coating);
