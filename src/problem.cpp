@@ -110,8 +110,7 @@ class Rules {
   }
   double positive(std::string_view option, double value, std::string_view unit) const {
     if (!(std::isfinite(value) && value > 0.0)) {
-      throw OptionError(std::string(option), format_number(value),
-                        fmt::format("is invalid: must be positive ({})", unit));
+      throw OptionError(std::string(option), format_number(value), fmt::format("is invalid: must be positive ({})", unit));
     }
     return value;
   }
@@ -189,10 +188,10 @@ double Rules::body() const {
     e_star = composite_modulus({e1, *o_.nu1}, {modulus("E2", *o_.e2), *o_.nu2});
   }
   // nu near -1 makes a body's compliance vanish and E* grow without bound.
-  return require_in_range(
-      fmt::format("the composite modulus E* = {:g} Pa of {}, {}, {}, {}", e_star, describe("E1", *o_.e1),
-                  describe("nu1", *o_.nu1), describe("E2", *o_.e2), describe("nu2", *o_.nu2)),
-      e_star, kMinModulus, kMaxModulus, "Pa");
+  return require_in_range(fmt::format("the composite modulus E* = {:g} Pa of {}, {}, {}, {}", e_star,
+                                      describe("E1", *o_.e1), describe("nu1", *o_.nu1), describe("E2", *o_.e2),
+                                      describe("nu2", *o_.nu2)),
+                          e_star, kMinModulus, kMaxModulus, "Pa");
 }
 
 std::optional<LayeredMaterial> Rules::coating() const {
@@ -231,8 +230,8 @@ std::pair<Loading, std::vector<double>> Rules::loads() const {
                                                   {"mean_pressure", o_.mean_pressure.has_value()},
                                                   {"approach", o_.approach.has_value()}});
   if (present.empty()) {
-    throw InputError(
-        fmt::format("no load given: pass one of {}, {}, {}", name("force"), name("mean_pressure"), name("approach")));
+    throw InputError(fmt::format("no load given: pass one of {}, {}, {}", name("force"), name("mean_pressure"),
+                                 name("approach")));
   }
   if (present.size() > 1) {
     throw InputError(fmt::format("{} cannot be combined: give exactly one of {}, {}, {}", fmt::join(present, " and "),
@@ -270,8 +269,7 @@ std::optional<solvers::SolverOptions::Adhesion> Rules::adhesion() const {
                                                     {"adhesion_stress", o_.adhesion_stress.has_value()},
                                                     {"adhesion_tol", o_.adhesion_tol.has_value()},
                                                     {"adhesion_precondition", o_.adhesion_precondition.has_value()}});
-    if (!present.empty())
-      throw InputError(fmt::format("{} needs {} md|exponential", present.front(), name("adhesion")));
+    if (!present.empty()) throw InputError(fmt::format("{} needs {} md|exponential", present.front(), name("adhesion")));
     return std::nullopt;
   }
   const std::string adhesion = s_.describe("adhesion", *o_.adhesion);
@@ -332,7 +330,8 @@ solvers::SolverOptions Rules::solver() const {
       if (block < 0) {
         throw OptionError("deflation_block", fmt::format("{}", block), "is invalid: give 0 (off) or a block size");
       }
-      solver.deflation.mode = block == 0 ? solvers::DeflationOptions::Mode::off : solvers::DeflationOptions::Mode::on;
+      solver.deflation.mode =
+          block == 0 ? solvers::DeflationOptions::Mode::off : solvers::DeflationOptions::Mode::on;
       if (block != 0) solver.deflation.block = static_cast<std::size_t>(block);
     }
     if (o_.hardness) solver.interface_law.hardness = *o_.hardness;
@@ -444,7 +443,8 @@ void Problem::check_grid(const Grid& grid, const OptionSpelling& spelling) const
   }
 }
 
-void Problem::check_heights(const Grid& grid, std::span<const double> heights, const OptionSpelling& spelling) const {
+void Problem::check_heights(const Grid& grid, std::span<const double> heights,
+                            const OptionSpelling& spelling) const {
   if (loading.mode != ControlMode::approach || !grid.periodic() || heights.empty()) return;
   const Eigen::Map<const Eigen::ArrayXd> h(heights.data(), static_cast<Eigen::Index>(heights.size()));
   const double mean_gap = h.maxCoeff() - h.mean();

@@ -60,10 +60,9 @@ TEST(LubricateShearCliTest, CoatingOfTheSubstratesMaterialIsTheHomogeneousBody) 
                         dir.path())
                 .exit_code,
             kExitOk);
-  const std::vector<std::string> base{
-      "lubricate", "--height-map",       "sphere.h5", "--viscosity", "0.04", "--entrainment-velocity",
-      "0.55",      "--sliding-velocity", "0.3",       "--force",     "6.6",  "--pressure-viscosity",
-      "1e-8"};
+  const std::vector<std::string> base{"lubricate", "--height-map", "sphere.h5", "--viscosity", "0.04",
+                                      "--entrainment-velocity", "0.55", "--sliding-velocity", "0.3", "--force", "6.6",
+                                      "--pressure-viscosity", "1e-8"};
   const auto with = [&](std::vector<std::string> more) {
     std::vector<std::string> args = base;
     args.insert(args.end(), more.begin(), more.end());

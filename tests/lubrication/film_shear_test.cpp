@@ -172,7 +172,8 @@ TEST(FilmShearTest, EhlTractionReachesTheLimitingShearSlope) {
     EXPECT_LE(sliding.couette_force[0], gamma * sliding.load + 1.0 * length);
     EXPECT_LT(sliding.friction_coefficient, newtonian.friction_coefficient);
     // The Poiseuille part is the rolling one, whatever the sliding.
-    EXPECT_NEAR(sliding.friction_force[0] - sliding.couette_force[0], rolling.friction_force[0], 1e-12 * sliding.load);
+    EXPECT_NEAR(sliding.friction_force[0] - sliding.couette_force[0], rolling.friction_force[0],
+                1e-12 * sliding.load);
     previous = couette;
   }
   EXPECT_GT(previous, 0.97 * gamma);  // at du = 50 u the cap holds wherever p > 0
