@@ -570,7 +570,8 @@ int run_lubricate(const LubricateOptions& o) {
                   o.couette_scheme || o.max_iterations || o.boundary)) {
     throw InputError(
         "--pressure-viscosity, --piezoviscosity, --roelands-index, --compressibility, --couette-scheme, "
-        "--max-iterations and --boundary need an elastic film: give --E-star (or --E1, --nu1, --E2, --nu2)");
+        "--max-iterations and --boundary need an elastic film: give --E-star (or --E1, --nu1, --E2, --nu2, or a "
+        "coated body, --layer-*)");
   }
 
   HeightMap map = io::read_height_map(*o.height_map);

@@ -50,8 +50,9 @@ auto with_keywords(Work&& work) {
     return work();
   } catch (const OptionError& error) {
     const std::string& option = error.option();
-    const std::string component =
-        option.ends_with(".x") ? " (x component)" : option.ends_with(".y") ? " (y component)" : "";
+    const std::string component = option.ends_with(".x")   ? " (x component)"
+                                  : option.ends_with(".y") ? " (y component)"
+                                                           : "";
     throw InputError(fmt::format("{}={}{} {}", keyword_for(option), error.value(), component, error.rule()));
   }
 }
@@ -145,9 +146,8 @@ nb::dict solve_rigid(const Grid& grid, const Eigen::ArrayXd& heights, const Flow
                    : lubricate_at_separation(grid, heights, conditions, *k.separation, solver);
   });
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  const FilmShear shear =
-      film_shear(grid, conditions, LubricantLaws{}, k.limits, film.film, film.solution.pressure,
-                 film.solution.fluid_fraction);
+  const FilmShear shear = film_shear(grid, conditions, LubricantLaws{}, k.limits, film.film, film.solution.pressure,
+                                     film.solution.fluid_fraction);
   const FilmForces& f = film.forces;
   nb::dict out;
   out["model"] = "rigid";
@@ -191,9 +191,9 @@ nb::dict solve_elastic(const Grid& grid, const Eigen::ArrayXd& heights, const Fl
     k.limits.validate();
   });
   if (grid.size() > kMaxElasticFilmNodes) {
-    throw InputError(fmt::format(
-        "the surface has {} points: the elastic film's dense Newton path allows at most {} (coarsen it)", grid.size(),
-        kMaxElasticFilmNodes));
+    throw InputError(
+        fmt::format("the surface has {} points: the elastic film's dense Newton path allows at most {} (coarsen it)",
+                    grid.size(), kMaxElasticFilmNodes));
   }
   const Eigen::ArrayXd gap = heights.maxCoeff() - heights;
   ElasticFilm film = with_keywords([&] {
@@ -244,7 +244,8 @@ nb::dict lubricate(const nb::object& heights_object, double dx, double dy, const
   }
   const Eigen::ArrayXd z = Eigen::Map<const Eigen::ArrayXd>(heights.data(), static_cast<Eigen::Index>(heights.size()));
   if (!z.allFinite()) {
-    throw InputError("the surface has non-finite heights: a film needs every height (HeightMap.prepare(invalid='fill'))");
+    throw InputError(
+        "the surface has non-finite heights: a film needs every height (HeightMap.prepare(invalid='fill'))");
   }
   if (k.separation.has_value() == k.force.has_value()) throw InputError("give exactly one of separation= and force=");
   const bool elastic = k.e_star.has_value() || k.coating.has_value();

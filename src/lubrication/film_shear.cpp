@@ -22,10 +22,6 @@ void ShearLimits::validate() const {
   require(eyring_stress, "eyring_stress", " Pa");
   require(limiting_shear_stress, "limiting_shear_stress", " Pa");
   require(limiting_shear_slope, "limiting_shear_slope", "");
-  if (limiting_shear_slope > 0.0 && limiting_shear_stress <= 0.0) {
-    throw OptionError("limiting_shear_slope", format_number(limiting_shear_slope),
-                      "needs a limiting shear stress tau_L0 > 0 (Pa): the cap is tau_L0 + gamma p");
-  }
 }
 
 namespace {

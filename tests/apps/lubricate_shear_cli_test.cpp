@@ -60,9 +60,10 @@ TEST(LubricateShearCliTest, CoatingOfTheSubstratesMaterialIsTheHomogeneousBody) 
                         dir.path())
                 .exit_code,
             kExitOk);
-  const std::vector<std::string> base{"lubricate", "--height-map", "sphere.h5", "--viscosity", "0.04",
-                                      "--entrainment-velocity", "0.55", "--sliding-velocity", "0.3", "--force", "6.6",
-                                      "--pressure-viscosity", "1e-8"};
+  const std::vector<std::string> base{
+      "lubricate", "--height-map",       "sphere.h5", "--viscosity", "0.04", "--entrainment-velocity",
+      "0.55",      "--sliding-velocity", "0.3",       "--force",     "6.6",  "--pressure-viscosity",
+      "1e-8"};
   const auto with = [&](std::vector<std::string> more) {
     std::vector<std::string> args = base;
     args.insert(args.end(), more.begin(), more.end());
@@ -109,8 +110,8 @@ TEST(LubricateShearCliTest, RejectsBadShearAndCoatingFlags) {
   };
   expect_input_error(with({"--separation", "1e-6", "--eyring-stress", "-1"}), {"--eyring-stress -1 Pa is invalid"},
                      dir / "f.h5");
-  expect_input_error(with({"--separation", "1e-6", "--limiting-shear-slope", "0.05"}),
-                     {"--limiting-shear-slope 0.05 needs a limiting shear stress"}, dir / "f.h5");
+  expect_input_error(with({"--separation", "1e-6", "--limiting-shear-slope", "-0.05"}),
+                     {"--limiting-shear-slope -0.05 is invalid"}, dir / "f.h5");
   expect_input_error(with({"--force", "1e3", "--layer-thickness", "1e-5"}), {"incomplete coated body"}, dir / "f.h5");
   expect_input_error(with({"--force", "1e3", "--E-star", "1e11", "--layer-thickness", "1e-5", "--layer-E", "1e11",
                            "--layer-nu", "0.3", "--substrate-E", "1e11", "--substrate-nu", "0.3"}),

@@ -115,6 +115,9 @@ TEST(FilmShearTest, EyringAndLimitingShearOnAUniformFilm) {
   EXPECT_NEAR(capped.friction_force[0], -limit * length, 1e-12 * limit * length);
   EXPECT_NEAR(capped.friction_coefficient, limit / pressure, 1e-12);
   EXPECT_EQ(capped.shear_y.abs().maxCoeff(), 0.0);
+  const FilmShear proportional =
+      film_shear(grid, conditions, barus, {.limiting_shear_slope = 0.07}, film, p, theta);  // tau_L = gamma p
+  EXPECT_NEAR(proportional.friction_coefficient, 0.07, 1e-12);
 }
 
 // EHL line contact (Roelands, Dowson–Higginson; W = 2e-5, U = 1e-11,
@@ -172,8 +175,7 @@ TEST(FilmShearTest, EhlTractionReachesTheLimitingShearSlope) {
     EXPECT_LE(sliding.couette_force[0], gamma * sliding.load + 1.0 * length);
     EXPECT_LT(sliding.friction_coefficient, newtonian.friction_coefficient);
     // The Poiseuille part is the rolling one, whatever the sliding.
-    EXPECT_NEAR(sliding.friction_force[0] - sliding.couette_force[0], rolling.friction_force[0],
-                1e-12 * sliding.load);
+    EXPECT_NEAR(sliding.friction_force[0] - sliding.couette_force[0], rolling.friction_force[0], 1e-12 * sliding.load);
     previous = couette;
   }
   EXPECT_GT(previous, 0.97 * gamma);  // at du = 50 u the cap holds wherever p > 0
@@ -190,7 +192,9 @@ TEST(FilmShearTest, RejectsInvalidLimits) {
   };
   EXPECT_NE(message({.eyring_stress = -1.0}).find("eyring_stress"), std::string::npos);
   EXPECT_NE(message({.limiting_shear_stress = NAN}).find("limiting_shear_stress"), std::string::npos);
-  EXPECT_NE(message({.limiting_shear_slope = 0.05}).find("tau_L0 > 0"), std::string::npos);
+  EXPECT_NE(message({.limiting_shear_slope = -0.05}).find("limiting_shear_slope = -0.05 is invalid"),
+            std::string::npos);
+  EXPECT_EQ(message({.limiting_shear_slope = 0.05}), "no error");  // tau_L = gamma p
   EXPECT_EQ(message({.eyring_stress = 1e6, .limiting_shear_stress = 1e7, .limiting_shear_slope = 0.05}), "no error");
 }
 

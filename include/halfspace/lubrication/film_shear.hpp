@@ -33,14 +33,14 @@ namespace halfspace::lubrication {
 
 struct ShearLimits {
   double eyring_stress = 0.0;          // tau0 (Pa); 0: no Eyring law
-  double limiting_shear_stress = 0.0;  // tau_L0 (Pa); 0 with slope 0: no cap
+  double limiting_shear_stress = 0.0;  // tau_L0 (Pa); both 0: no cap
   double limiting_shear_slope = 0.0;   // gamma (-), the cap's growth with pressure
 
   bool eyring() const { return eyring_stress > 0.0; }
-  bool capped() const { return limiting_shear_stress > 0.0; }
+  bool capped() const { return limiting_shear_stress > 0.0 || limiting_shear_slope > 0.0; }
 
   // Throws OptionError naming the option unless every value is >= 0 and
-  // finite, and a slope comes with a limiting shear stress (tau_L0 > 0).
+  // finite.
   void validate() const;
 };
 
