@@ -82,6 +82,8 @@ struct SolveOptions : GivenOptions {
   std::optional<std::string> sliding;
   std::optional<double> tangential_tol;
   std::optional<long long> tangential_max_iter;
+  bool no_coupling = false;                    // dissimilar bodies: ignore the normal-tangential coupling
+  std::optional<long long> normal_load_steps;  // coupled: increments of the normal loading
   // Output.
   std::optional<std::string> output;
   bool quiet = false;
