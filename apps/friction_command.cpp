@@ -36,13 +36,22 @@ std::string describe_tangential(const TangentialLoading& loading, const Grid& gr
   return fmt::format("tangential force ({:.6g}, {:.6g}) {}", loading.x, loading.y, grid.dimension() == 1 ? "N/m" : "N");
 }
 
-void print_friction_summary(std::FILE* out, const SolveSetup& setup, std::span<const TangentialResult> steps) {
+void print_friction_summary(std::FILE* out, const SolveSetup& setup, const FrictionalSolveResult& result) {
+  const std::span<const TangentialResult> steps = result.steps;
   const Grid& grid = setup.grid;
   const std::string_view force = grid.dimension() == 1 ? "N/m" : "N";
   const ElasticPair& pair = *setup.pair;
   fmt::print(out, "friction:            mu = {:g}; E1 = {:g} Pa, nu1 = {:g}, E2 = {:g} Pa, nu2 = {:g}\n",
              setup.friction->friction_coefficient, pair.body1().youngs_modulus, pair.body1().poissons_ratio,
              pair.body2().youngs_modulus, pair.body2().poissons_ratio);
+  if (!pair.similar()) {
+    int alternations = 0;
+    for (const TangentialResult& step : steps) alternations += step.coupling_alternations;
+    fmt::print(out, "coupling:            Dundurs' beta = {:.4g}; {}\n", result.dundurs_beta,
+               result.coupled
+                   ? fmt::format("normal and tangential solved together ({} alternations in the steps)", alternations)
+                   : std::string("ignored (--no-coupling): the frictionless pressure"));
+  }
   if (steps.empty()) return;
   const TangentialResult& last = steps.back();
   double dissipated = 0.0;
@@ -77,14 +86,25 @@ int run_frictional_solve(const SolveSetup& setup) {
                                                solvers::to_string(setup.solver.type), setup.grid.shape_string()));
   FrictionalSolveResult result;
   result.requested_steps = options.steps();
-  {
+  std::vector<TangentialLoading> loads;
+  if (options.coupled(pair)) {
+    // Dissimilar bodies: every step solves the normal and tangential
+    // problems together (coupled_step.hpp), each step with its own pressure.
+    activity.emplace(
+        fmt::format("solving the coupled normal and tangential contact (Dundurs' beta = {:.3g}, {} "
+                    "step{}) on the {} grid",
+                    pair.dundurs_beta(), options.steps(), options.steps() == 1 ? "" : "s", setup.grid.shape_string()));
+    result = solvers::solve_frictional_surface(setup.grid, heights, pair, setup.loading, setup.solver, options);
+    loads.assign(options.history.begin(), options.history.begin() + static_cast<std::ptrdiff_t>(std::min(
+                                                                        options.history.size(), result.steps.size())));
+  } else {
     Progress progress(!setup.quiet, 1, setup.solver.solver_tolerance());
     solvers::SolverOptions settings = setup.solver;
     settings.progress = progress.callback();
     result.normal = solvers::solve_surface(setup.grid, heights, setup.e_star, setup.loading, settings);
   }
-  std::vector<TangentialLoading> loads;
-  if (result.normal.converged()) {
+  if (result.normal.converged() && !options.coupled(pair)) {
+    result.dundurs_beta = pair.dundurs_beta();
     activity.emplace(fmt::format("solving {} tangential step{} on the {} grid", options.steps(),
                                  options.steps() == 1 ? "" : "s", setup.grid.shape_string()));
     Progress progress(!setup.quiet, options.steps(), options.tolerance);
@@ -106,11 +126,15 @@ int run_frictional_solve(const SolveSetup& setup) {
                                                                         options.history.size(), result.steps.size())));
   }
 
-  io::ResultMetadata metadata = io::result_metadata(provenance(setup), setup.grid, heights);
-  metadata.contact_statistics = analysis::contact_statistics(
-      setup.grid, {result.normal.pressure.data(), setup.grid.size()}, {result.normal.gap.data(), setup.grid.size()});
-  activity.emplace(fmt::format("writing {}", setup.output.string()));
+  // A coupled single step writes its own pressure (under its shear); a
+  // history the normal loading's (each step's pressure is not written yet).
   const bool history = options.steps() > 1 && !result.steps.empty();
+  const SolveResult& normal =
+      result.coupled && !history && !result.step_normals.empty() ? result.step_normals.front() : result.normal;
+  io::ResultMetadata metadata = io::result_metadata(provenance(setup), setup.grid, heights);
+  metadata.contact_statistics = analysis::contact_statistics(setup.grid, {normal.pressure.data(), setup.grid.size()},
+                                                             {normal.gap.data(), setup.grid.size()});
+  activity.emplace(fmt::format("writing {}", setup.output.string()));
   if (history) {
     io::write_friction_history(setup.output, setup.grid, heights, result.normal, result.steps, loads, metadata);
   } else {
@@ -121,7 +145,7 @@ int run_frictional_solve(const SolveSetup& setup) {
     if (!setup.stress_depths.empty() && !result.steps.empty()) {
       stresses = std::make_unique<stress::SubsurfaceStress>(setup.grid, setup.stress_nu, setup.solver.fft_planning);
       const TangentialResult& step = result.steps.front();
-      const stress::SurfaceTractions tractions{{result.normal.pressure.data(), setup.grid.size()},
+      const stress::SurfaceTractions tractions{{normal.pressure.data(), setup.grid.size()},
                                                {step.state.shear_x.data(), setup.grid.size()},
                                                {step.state.shear_y.data(), setup.grid.size()}};
       metadata.extra_groups = [&stresses, &setup, tractions](const io::Hdf5Node& root) {
@@ -131,12 +155,12 @@ int run_frictional_solve(const SolveSetup& setup) {
       activity.emplace(fmt::format("computing stresses at {} depths and writing {}", setup.stress_depths.size(),
                                    setup.output.string()));
     }
-    io::write_result(setup.output, setup.grid, heights, result.normal, metadata);
+    io::write_result(setup.output, setup.grid, heights, normal, metadata);
   }
   activity.reset();
   if (!setup.quiet) {
-    print_summary(stdout, setup, result.normal);
-    print_friction_summary(stdout, setup, result.steps);
+    print_summary(stdout, setup, normal);
+    print_friction_summary(stdout, setup, result);
     if (history) fmt::print("history table:       {}\n", io::history_csv_path(setup.output).string());
     std::fflush(stdout);
   }

@@ -56,6 +56,9 @@ void with_friction_flags(const SolveOptions& o, Function&& function) {
     if (option == "max_iterations") {
       throw InputError(fmt::format("{} {}", o.describe("tangential-max-iter"), error.rule()));
     }
+    if (option == "normal_load_steps") {
+      throw InputError(fmt::format("{} {}", o.describe("normal-load-steps"), error.rule()));
+    }
     if (option == "adhesion") {
       throw InputError(fmt::format("{} {} ({})", o.describe("adhesion"), error.rule(), o.describe("friction")));
     }
@@ -124,7 +127,8 @@ std::optional<solvers::FrictionOptions> friction_from(const SolveOptions& o, boo
          {std::pair{"tangential-force", o.tangential_force.has_value()},
           std::pair{"tangential-displacement", o.tangential_displacement.has_value()},
           std::pair{"sliding", o.sliding.has_value()}, std::pair{"tangential-tol", o.tangential_tol.has_value()},
-          std::pair{"tangential-max-iter", o.tangential_max_iter.has_value()}}) {
+          std::pair{"tangential-max-iter", o.tangential_max_iter.has_value()}, std::pair{"no-coupling", o.no_coupling},
+          std::pair{"normal-load-steps", o.normal_load_steps.has_value()}}) {
       if (given) keys.emplace_back(key);
     }
     return keys;
@@ -185,6 +189,10 @@ std::optional<solvers::FrictionOptions> friction_from(const SolveOptions& o, boo
   // Beyond int, a limit is no limit: validate() sees the nearest int.
   if (o.tangential_max_iter) {
     friction.max_iterations = static_cast<int>(std::clamp<long long>(*o.tangential_max_iter, INT_MIN, INT_MAX));
+  }
+  friction.coupling = !o.no_coupling;
+  if (o.normal_load_steps) {
+    friction.normal_load_steps = static_cast<int>(std::clamp<long long>(*o.normal_load_steps, INT_MIN, INT_MAX));
   }
   with_friction_flags(o, [&] {
     friction.validate();

@@ -144,6 +144,12 @@ const std::array kOptions{
                 "tolerance of the tangential solver's residual (the duality gap of Coulomb's law) [1e-6]"},
     SolveOption{"tangential-max-iter", &SolveOptions::tangential_max_iter, Kind::integer, kFriction, "N",
                 "iteration limit of each tangential step [10000]"},
+    SolveOption{"no-coupling", &SolveOptions::no_coupling, Kind::flag, kFriction, "",
+                "dissimilar bodies (Dundurs' beta != 0): ignore the normal-tangential coupling (the pressure of the "
+                "frictionless solve, for comparison); by default the coupled problem is solved"},
+    SolveOption{"normal-load-steps", &SolveOptions::normal_load_steps, Kind::integer, kFriction, "N",
+                "coupled friction: apply the normal load in N equal increments at zero tangential load before the "
+                "tangential steps (the shear it leaves depends on the path) [1]"},
     SolveOption{"output", &SolveOptions::output, Kind::path, kOutput, "FILE",
                 "result file (HDF5), required; replaced if it exists"},
     SolveOption{"quiet", &SolveOptions::quiet, Kind::flag, kOutput, "",

@@ -53,6 +53,8 @@ struct SolveOptions : GivenOptions, ProblemOptions {
   std::optional<std::string> sliding;
   std::optional<double> tangential_tol;
   std::optional<long long> tangential_max_iter;
+  bool no_coupling = false;                    // dissimilar bodies: ignore the normal-tangential coupling
+  std::optional<long long> normal_load_steps;  // coupled: increments of the normal loading
   // Output.
   std::optional<std::string> output;
   bool quiet = false;

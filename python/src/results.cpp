@@ -396,6 +396,9 @@ void bind_results(nb::module_& module) {
             out["iterations"] = t->iterations;
             out["residual"] = t->residual;
             out["step"] = r.tangential_step;
+            out["dundurs_beta"] = t->dundurs_beta;
+            out["coupled"] = t->coupled;
+            out["coupling_alternations"] = t->coupling_alternations;
             return out;
           },
           "Friction: the tangential step's record: friction_coefficient, tangential_force (x, y) (N, N/m in 1D), "

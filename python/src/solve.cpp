@@ -384,7 +384,10 @@ History friction(const nb::object& heights, double dx, double dy, const std::str
   });
   analysis::SweepStep step;
   step.loading = loading;
-  step.result = std::move(solved.normal);
+  // A coupled single step (dissimilar bodies) carries its own pressure, under
+  // its shear; a history the normal loading's.
+  const bool own_pressure = solved.coupled && solved.steps.size() == 1 && solved.step_normals.size() == 1;
+  step.result = own_pressure ? std::move(solved.step_normals.front()) : std::move(solved.normal);
   step.statistics = contact_statistics_of(problem.grid, step.result);
   std::vector<analysis::SweepStep> steps;
   steps.push_back(std::move(step));

@@ -50,7 +50,7 @@ using TangentialNumber = double (*)(const TangentialResult&);
 using TangentialInteger = std::int64_t (*)(const TangentialResult&);
 using TangentialText = std::string (*)(const TangentialResult&);
 
-const std::array<TangentialAttribute, 14> kTangentialAttributes{{
+const std::array<TangentialAttribute, 17> kTangentialAttributes{{
     {"friction_coefficient", "", TangentialNumber{[](const TangentialResult& r) { return r.friction_coefficient; }}},
     {"tangential_force_x", "N (N/m in 1D)", TangentialNumber{[](const TangentialResult& r) { return r.force_x; }}},
     {"tangential_force_y", "N (N/m in 1D)", TangentialNumber{[](const TangentialResult& r) { return r.force_y; }}},
@@ -69,6 +69,11 @@ const std::array<TangentialAttribute, 14> kTangentialAttributes{{
      TangentialInteger{[](const TangentialResult& r) { return std::int64_t{r.iterations}; }}},
     {"tangential_residual", "", TangentialNumber{[](const TangentialResult& r) { return r.residual; }}},
     {"tangential_tolerance", "", TangentialNumber{[](const TangentialResult& r) { return r.tolerance; }}},
+    {"dundurs_beta", "", TangentialNumber{[](const TangentialResult& r) { return r.dundurs_beta; }}},
+    {"normal_tangential_coupling", "",
+     TangentialInteger{[](const TangentialResult& r) { return std::int64_t{r.coupled ? 1 : 0}; }}},
+    {"coupling_alternations", "",
+     TangentialInteger{[](const TangentialResult& r) { return std::int64_t{r.coupling_alternations}; }}},
 }};
 
 using lubrication::FilmSummary;

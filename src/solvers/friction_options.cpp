@@ -74,6 +74,16 @@ void FrictionOptions::validate() const {
   if (max_iterations < 1) {
     throw SolverOptionError("max_iterations", fmt::format("{}", max_iterations), "is invalid: must be at least 1");
   }
+  if (normal_load_steps < 1) {
+    throw SolverOptionError("normal_load_steps", fmt::format("{}", normal_load_steps),
+                            "is invalid: must be at least 1");
+  }
+  if (!(coupling_tolerance > 0.0 && coupling_tolerance < 1.0)) {
+    throw SolverOptionError("coupling_tolerance", number(coupling_tolerance), "is invalid: allowed range is (0, 1)");
+  }
+  if (max_alternations < 1) {
+    throw SolverOptionError("max_alternations", fmt::format("{}", max_alternations), "is invalid: must be at least 1");
+  }
 }
 
 void FrictionOptions::validate(const Grid& grid, const ElasticPair& pair, const SolverOptions& normal,
@@ -83,15 +93,6 @@ void FrictionOptions::validate(const Grid& grid, const ElasticPair& pair, const 
     throw SolverOptionError("adhesion", std::string(to_string(normal.adhesion->law.type)),
                             "cannot be combined with friction: Coulomb's bound mu p needs a compressive pressure, "
                             "and the cohesive law's tensile tractions are not yet coupled with the shear");
-  }
-  if (!pair.similar()) {
-    throw SolverOptionError(
-        "pair",
-        fmt::format("E1 = {:g} Pa, nu1 = {:g}, E2 = {:g} Pa, nu2 = {:g}", pair.body1().youngs_modulus,
-                    pair.body1().poissons_ratio, pair.body2().youngs_modulus, pair.body2().poissons_ratio),
-        fmt::format("is not elastically similar (Dundurs' beta = {:.3g}): friction between dissimilar bodies couples "
-                    "the normal and tangential problems, which is not solved yet; give both bodies the same E and nu",
-                    pair.dundurs_beta()));
   }
   if (grid.dimension() == 1) {
     for (const TangentialLoading& step : history) {

@@ -8,6 +8,8 @@
 #include <string>
 
 #include "halfspace/operators/tangential_operator.hpp"
+#include "halfspace/solvers/coupled_step.hpp"
+#include "halfspace/solvers/solver_factory.hpp"
 #include "halfspace/solvers/surface_solve.hpp"
 #include "halfspace/solvers/tangential_solver.hpp"
 
@@ -39,10 +41,88 @@ TangentialResult repeated(const TangentialResult& previous) {
   return result;
 }
 
+// A coupled step's tangential result with the alternation's record, its
+// status the whole step's.
+TangentialResult recorded(const CoupledStepResult& step) {
+  TangentialResult t = step.tangential;
+  t.coupling_alternations = step.alternations;
+  t.coupling_residual = step.coupling_residual;
+  t.coupled = true;
+  if (!step.converged()) {
+    t.status = step.status;
+    t.message = step.message;
+  }
+  return t;
+}
+
+// The coupled history (frictional_solve.hpp): the normal loading in
+// increments at zero tangential load, then the steps, each a coupled step
+// from the state the previous left, the normal solves warm-started from the
+// previous pressure.
+void solve_coupled(const Grid& grid, std::span<const double> heights, const ElasticPair& pair, const Loading& loading,
+                   const SolverOptions& normal, const FrictionOptions& friction, FrictionalSolveResult& result) {
+  result.coupled = true;
+  const Eigen::ArrayXd gap0 = initial_gap(grid, heights);
+  const std::span<const double> gap(gap0.data(), grid.size());
+  const std::unique_ptr<ContactSolver> normal_solver = make_solver(grid, pair.composite_modulus(), normal);
+  TangentialOperator op(grid, pair, normal.fft_planning);
+  std::size_t current = 0;
+  TangentialOptions options = friction.tangential_options();
+  if (friction.progress) {
+    options.progress = [&friction, &current](int iteration, double residual) {
+      friction.progress(current, iteration, residual);
+    };
+  }
+  TangentialSolver tangential(op, options);
+  CoupledStepSolver coupled(*normal_solver, op, tangential, {friction.coupling_tolerance, friction.max_alternations});
+  TangentialState state = TangentialState::unloaded(grid.size());
+  // At rest tangentially while the normal load grows: the history's control at zero.
+  const bool force = friction.sliding_direction || friction.history.front().control == TangentialControl::force;
+  const TangentialLoading rest = force ? TangentialLoading::force(0.0) : TangentialLoading::displacement(0.0);
+  Eigen::ArrayXd warm;
+  auto warm_span = [&] { return std::span<const double>(warm.data(), static_cast<std::size_t>(warm.size())); };
+  const int increments = friction.normal_load_steps;
+  for (int k = 1; k <= increments; ++k) {
+    Loading part = loading;
+    part.value = k == increments ? loading.value : loading.value * k / increments;
+    CoupledStepResult step = coupled.solve(gap, part, rest, state, warm_span());
+    result.normal = std::move(step.normal);
+    if (!step.converged()) {
+      result.normal.status = step.status;
+      result.normal.message = step.message;
+    }
+    result.loading_steps.push_back(recorded(step));
+    if (!step.converged()) return;
+    state = result.loading_steps.back().state;
+    warm = result.normal.pressure;
+  }
+  std::vector<TangentialLoading> loads;
+  for (std::size_t k = 0; k < friction.steps(); ++k) {
+    current = k;
+    const TangentialLoading load = friction.sliding_direction ? TangentialLoading{} : friction.history[k];
+    if (k > 0 && !friction.sliding_direction && same_load(load, loads.back())) {
+      // As the uncoupled history: a repeated load leaves the state as it is.
+      result.steps.push_back(repeated(result.steps.back()));
+      result.step_normals.push_back(result.step_normals.back());
+    } else {
+      CoupledStepResult step = coupled.solve(gap, loading, load, state, warm_span(), friction.sliding_direction);
+      result.steps.push_back(recorded(step));
+      result.step_normals.push_back(std::move(step.normal));
+    }
+    loads.push_back(load);
+    if (!result.steps.back().converged()) return;
+    state = result.steps.back().state;
+    warm = result.step_normals.back().pressure;
+  }
+}
+
 }  // namespace
 
 bool FrictionalSolveResult::converged() const {
   if (!normal.converged() || steps.size() != requested_steps) return false;
+  for (const TangentialResult& step : loading_steps) {
+    if (!step.converged()) return false;
+  }
   for (const TangentialResult& step : steps) {
     if (!step.converged()) return false;
   }
@@ -51,6 +131,11 @@ bool FrictionalSolveResult::converged() const {
 
 std::string FrictionalSolveResult::failure() const {
   if (!normal.converged()) return fmt::format("the normal contact did not converge: {}", normal.message);
+  for (std::size_t k = 0; k < loading_steps.size(); ++k) {
+    if (!loading_steps[k].converged()) {
+      return fmt::format("normal loading increment {} did not converge: {}", k + 1, loading_steps[k].message);
+    }
+  }
   for (std::size_t k = 0; k < steps.size(); ++k) {
     if (!steps[k].converged()) {
       return steps[k].message.empty()
@@ -119,6 +204,11 @@ FrictionalSolveResult solve_frictional_surface(const Grid& grid, std::span<const
   friction.validate(grid, pair, normal, loading);
   FrictionalSolveResult result;
   result.requested_steps = friction.steps();
+  result.dundurs_beta = pair.dundurs_beta();
+  if (friction.coupled(pair)) {
+    solve_coupled(grid, heights, pair, loading, normal, friction, result);
+    return result;
+  }
   result.normal = solve_surface(grid, heights, pair.composite_modulus(), loading, normal);
   if (!result.normal.converged()) return result;
   result.steps = solve_tangential_history(grid, pair, result.normal, friction, normal.fft_planning);

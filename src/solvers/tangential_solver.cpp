@@ -83,6 +83,10 @@ std::pair<double, double> clipped(double x, double y, double radius) {
 struct Problem {
   const double* radius = nullptr;  // mu p
   const TangentialState* previous = nullptr;
+  // The previous displacement less the step's fixed part (the pressure's
+  // coupling displacement; the previous one itself without coupling).
+  const double* previous_x = nullptr;
+  const double* previous_y = nullptr;
   bool force_controlled = false;
   double target_x = 0.0;  // sum of q under force control (Q / A_cell)
   double target_y = 0.0;
@@ -147,8 +151,8 @@ class Iteration {
         comm_(op.communicator()),
         n_(op.local_size()),
         f_(f),
-        up_x_(problem.previous->displacement_x.data()),
-        up_y_(problem.previous->displacement_y.data()),
+        up_x_(problem.previous_x),
+        up_y_(problem.previous_y),
         radius_(problem.radius) {}
 
   // Step 0: the previous traction, clipped to the new discs and, under
@@ -643,12 +647,6 @@ void TangentialOptions::validate() const {
 TangentialSolver::TangentialSolver(TangentialOperator& op, TangentialOptions options)
     : op_(op), options_(std::move(options)) {
   options_.validate();
-  if (!op_.pair().similar()) {
-    throw InputError(
-        fmt::format("friction between elastically dissimilar bodies (Dundurs' beta = {:.3g}) couples the normal and "
-                    "tangential problems, which is not supported: give both bodies the same E and nu",
-                    op_.pair().dundurs_beta()));
-  }
   const auto n = static_cast<Eigen::Index>(op_.local_size());
   radius_.setZero(n);
   for (Eigen::ArrayXd* field : {&gx_, &gy_, &tx_, &ty_, &rx_, &ry_}) field->setZero(n);
@@ -660,6 +658,12 @@ TangentialSolver::TangentialSolver(TangentialOperator& op, TangentialOptions opt
 
 TangentialResult TangentialSolver::solve(std::span<const double> pressure, const TangentialLoading& loading,
                                          const TangentialState& previous) {
+  return solve(pressure, loading, previous, {}, {});
+}
+
+TangentialResult TangentialSolver::solve(std::span<const double> pressure, const TangentialLoading& loading,
+                                         const TangentialState& previous, std::span<const double> fixed_x,
+                                         std::span<const double> fixed_y) {
   const auto start_time = std::chrono::steady_clock::now();
   const std::size_t n = op_.local_size();
   const Grid& grid = op_.grid();
@@ -683,6 +687,25 @@ TangentialResult TangentialSolver::solve(std::span<const double> pressure, const
   Problem problem;
   problem.radius = radius_.data();
   problem.previous = &previous;
+  const bool fixed = !fixed_x.empty() || !fixed_y.empty();
+  if (fixed) {
+    check_size("fixed tangential displacement x", fixed_x.size(), n);
+    check_size("fixed tangential displacement y", fixed_y.size(), n);
+    if (fx_.size() != static_cast<Eigen::Index>(n)) {
+      fx_.setZero(static_cast<Eigen::Index>(n));
+      fy_.setZero(static_cast<Eigen::Index>(n));
+    }
+    for_each_index(n, [&](std::size_t i) {
+      const auto j = static_cast<Eigen::Index>(i);
+      fx_[j] = previous.displacement_x[j] - fixed_x[i];
+      fy_[j] = previous.displacement_y[j] - fixed_y[i];
+    });
+    problem.previous_x = fx_.data();
+    problem.previous_y = fy_.data();
+  } else {
+    problem.previous_x = previous.displacement_x.data();
+    problem.previous_y = previous.displacement_y.data();
+  }
   problem.force_controlled = loading.control == TangentialControl::force;
   problem.capacity = mu * pressure_sum;
   problem.contact_cells = contact_cells;
@@ -707,6 +730,7 @@ TangentialResult TangentialSolver::solve(std::span<const double> pressure, const
 
   TangentialResult result;
   result.friction_coefficient = mu;
+  result.dundurs_beta = op_.pair().dundurs_beta();
   result.tolerance = options_.tolerance;
   result.normal_force = pressure_sum * area;
   result.residual_history.reserve(static_cast<std::size_t>(std::min(options_.max_iterations, 1024)) + 1);
@@ -745,8 +769,8 @@ TangentialResult TangentialSolver::solve(std::span<const double> pressure, const
     ++result.operator_applications;
     const double along = linalg::max_of(comm, n, [&](std::size_t i) {
       const auto j = static_cast<Eigen::Index>(i);
-      return radius_[j] > 0.0 ? (state.displacement_x[j] - previous.displacement_x[j]) * ex +
-                                    (state.displacement_y[j] - previous.displacement_y[j]) * ey
+      return radius_[j] > 0.0 ? (state.displacement_x[j] - problem.previous_x[i]) * ex +
+                                    (state.displacement_y[j] - problem.previous_y[i]) * ey
                               : -std::numeric_limits<double>::infinity();
     });
     delta_x = along * ex;
@@ -754,8 +778,8 @@ TangentialResult TangentialSolver::solve(std::span<const double> pressure, const
     for_each_index(n, [&](std::size_t i) {
       const auto j = static_cast<Eigen::Index>(i);
       const bool contact = radius_[j] > 0.0;
-      gx_[j] = contact ? state.displacement_x[j] - previous.displacement_x[j] - delta_x : 0.0;
-      gy_[j] = contact ? state.displacement_y[j] - previous.displacement_y[j] - delta_y : 0.0;
+      gx_[j] = contact ? state.displacement_x[j] - problem.previous_x[i] - delta_x : 0.0;
+      gy_[j] = contact ? state.displacement_y[j] - problem.previous_y[i] - delta_y : 0.0;
     });
     result.status = SolveStatus::converged;
     result.message = "gross sliding: the tangential force equals mu P";
@@ -791,6 +815,14 @@ TangentialResult TangentialSolver::solve(std::span<const double> pressure, const
   result.iterations = k;
 
   // The state and the step's integrals.
+  if (fixed) {
+    // The state's displacement is the whole: C q and the fixed part.
+    for_each_index(n, [&](std::size_t i) {
+      const auto j = static_cast<Eigen::Index>(i);
+      state.displacement_x[j] += fixed_x[i];
+      state.displacement_y[j] += fixed_y[i];
+    });
+  }
   state.approach_x = previous.approach_x + delta_x;
   state.approach_y = previous.approach_y + delta_y;
   result.stick.setZero(static_cast<Eigen::Index>(n));

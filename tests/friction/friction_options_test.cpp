@@ -78,7 +78,16 @@ TEST(FrictionOptions, RulesOfTheSolve) {
               history(0.3, {TangentialLoading::force(1.0)})
                   .validate(plane, ElasticPair::on_rigid({2.1e11, 0.3}), normal, ten);
             }),
-            "pair");
+            "accepted");  // dissimilar bodies: solved coupled (coupled_step.hpp)
+  solvers::FrictionOptions ramp = history(0.3, {TangentialLoading::force(1.0)});
+  ramp.normal_load_steps = 0;
+  EXPECT_EQ(refused_option([&] { ramp.validate(); }), "normal_load_steps");
+  ramp.normal_load_steps = 4;
+  ramp.coupling_tolerance = 0.0;
+  EXPECT_EQ(refused_option([&] { ramp.validate(); }), "coupling_tolerance");
+  ramp.coupling_tolerance = 1e-6;
+  ramp.max_alternations = 0;
+  EXPECT_EQ(refused_option([&] { ramp.validate(); }), "max_alternations");
   // An incompressible body on a rigid one is similar (beta = 0).
   EXPECT_EQ(
       refused_option([&] {

@@ -43,8 +43,8 @@ void expect_equals_dense_products(const Grid& grid) {
   const std::size_t n = grid.size();
   const Eigen::ArrayXd p = random_field(n, 1).abs();
   const Eigen::ArrayXd tx = random_field(n, 2);
-  const Eigen::ArrayXd ty = grid.dimension() == 1 ? Eigen::ArrayXd::Zero(static_cast<Eigen::Index>(n)).eval()
-                                                  : random_field(n, 3);
+  const Eigen::ArrayXd ty =
+      grid.dimension() == 1 ? Eigen::ArrayXd::Zero(static_cast<Eigen::Index>(n)).eval() : random_field(n, 3);
   Eigen::ArrayXd vx(static_cast<Eigen::Index>(n));
   Eigen::ArrayXd vy(static_cast<Eigen::Index>(n));
   Eigen::ArrayXd w(static_cast<Eigen::Index>(n));
@@ -90,15 +90,15 @@ TEST(CouplingOperator, FreeProductsEqualTheDenseSumsToRounding) {
 
 // p . (K^T t) = t . (K p) on every grid kind: the 3x3 compliance is symmetric.
 TEST(CouplingOperator, TheTwoProductsAreEachOthersTransposes) {
-  for (const Grid& grid : {Grid::plane(24, 20, 1e-6, 1.5e-6, Boundary::free), Grid::line(40, 1e-6, Boundary::free),
-                           Grid::plane(32, 16, 1e-6, 2e-6, Boundary::periodic),
-                           Grid::line(64, 1e-6, Boundary::periodic)}) {
+  for (const Grid& grid :
+       {Grid::plane(24, 20, 1e-6, 1.5e-6, Boundary::free), Grid::line(40, 1e-6, Boundary::free),
+        Grid::plane(32, 16, 1e-6, 2e-6, Boundary::periodic), Grid::line(64, 1e-6, Boundary::periodic)}) {
     TangentialOperator op(grid, kPair);
     const std::size_t n = grid.size();
     const Eigen::ArrayXd p = random_field(n, 4);
     const Eigen::ArrayXd tx = random_field(n, 5);
-    const Eigen::ArrayXd ty = grid.dimension() == 1 ? Eigen::ArrayXd::Zero(static_cast<Eigen::Index>(n)).eval()
-                                                    : random_field(n, 6);
+    const Eigen::ArrayXd ty =
+        grid.dimension() == 1 ? Eigen::ArrayXd::Zero(static_cast<Eigen::Index>(n)).eval() : random_field(n, 6);
     Eigen::ArrayXd vx(static_cast<Eigen::Index>(n));
     Eigen::ArrayXd vy(static_cast<Eigen::Index>(n));
     Eigen::ArrayXd w(static_cast<Eigen::Index>(n));
@@ -116,7 +116,8 @@ TEST(CouplingOperator, TheTwoProductsAreEachOthersTransposes) {
 // (U = i c P with c odd in q), a traction mode cos(q.x) t normally by
 // c.t sin(q.x).
 TEST(CouplingOperator, PeriodicModeIsMultipliedByTheSymbol) {
-  for (const Grid& grid : {Grid::plane(32, 16, 1e-6, 2e-6, Boundary::periodic), Grid::line(64, 1e-6, Boundary::periodic)}) {
+  for (const Grid& grid :
+       {Grid::plane(32, 16, 1e-6, 2e-6, Boundary::periodic), Grid::line(64, 1e-6, Boundary::periodic)}) {
     TangentialOperator op(grid, kPair);
     const double qx = 2.0 * std::numbers::pi * 3.0 / (static_cast<double>(grid.nx()) * grid.dx());
     const double qy = grid.dimension() == 1 ? 0.0 : 2.0 * std::numbers::pi * -2.0 / (16.0 * 2e-6);
@@ -235,10 +236,11 @@ TEST(CouplingOperator, PeriodicSymbolAgreesWithTheFreeKernelNearASmallPatch) {
                         std::abs(dw + image * force * (0.5 * x - 0.25 * y))});
     }
   }
-  std::printf("coupling, periodic against free near the patch: %.2e of the largest difference (%.2e without the "
-              "images' linear field)\n",
-              worst / largest, worst_without_images / largest);
-  EXPECT_LE(worst, 5e-3 * largest);  // the discretisations differ (point symbol, cell coefficients)
+  std::printf(
+      "coupling, periodic against free near the patch: %.2e of the largest difference (%.2e without the "
+      "images' linear field)\n",
+      worst / largest, worst_without_images / largest);
+  EXPECT_LE(worst, 5e-3 * largest);                 // the discretisations differ (point symbol, cell coefficients)
   EXPECT_GT(worst_without_images, 1e-2 * largest);  // the images' field is really there
 }
 

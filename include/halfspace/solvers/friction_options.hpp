@@ -32,6 +32,18 @@ struct FrictionOptions {
   std::optional<std::array<double, 2>> sliding_direction;
   double tolerance = 1e-6;  // of the tangential solver's residual (tangential_solver.hpp)
   int max_iterations = 10000;
+  // Elastically dissimilar bodies (Dundurs' beta != 0): solve the coupled
+  // normal-tangential problem (coupled_step.hpp), or, false, ignore the
+  // coupling (the uncoupled approximation, for comparison). No effect for
+  // similar bodies, which do not couple.
+  bool coupling = true;
+  // Coupled only: the normal load is applied in this many equal increments
+  // before the tangential history, each a coupled step at zero tangential
+  // load (the shear the normal loading leaves depends on the path: a
+  // growing contact sticks where it lands).
+  int normal_load_steps = 1;
+  double coupling_tolerance = 1e-6;  // CoupledStepOptions::tolerance
+  int max_alternations = 100;        // CoupledStepOptions::max_alternations
   // Called once per tangential iteration with (step, iteration, residual); may be empty.
   std::function<void(std::size_t, int, double)> progress;
 
@@ -39,18 +51,19 @@ struct FrictionOptions {
   std::size_t steps() const { return sliding_direction ? 1 : history.size(); }
   // The tangential solver's options for these.
   TangentialOptions tangential_options() const;
+  // Whether a solve on `pair` is coupled: coupling on and beta != 0.
+  bool coupled(const ElasticPair& pair) const { return coupling && !pair.similar(); }
 
   // Throws SolverOptionError naming the option unless: mu is finite and
   // >= 0 ("friction"); exactly one of a non-empty history ("tangential_load")
   // and a sliding direction ("sliding") is given; every load step is finite;
   // the direction is finite and not zero, and mu > 0 when sliding; the
   // tangential tolerance and iteration limit are valid ("tolerance",
-  // "max_iterations").
+  // "max_iterations"); normal_load_steps, coupling_tolerance and
+  // max_alternations are valid (their names).
   void validate() const;
 
   // validate(), and the rules of the solve it is part of:
-  //  - the pair must be elastically similar (Dundurs' beta = 0): the coupled
-  //    normal-tangential problem is not solved ("pair");
   //  - on a 1D grid the y components are zero ("tangential_load", "sliding");
   //  - no adhesion: the cohesive tractions make negative pressures, where
   //    Coulomb's bound mu p has no meaning yet ("adhesion");
@@ -59,7 +72,8 @@ struct FrictionOptions {
   //    displacement or use sliding) ("tangential_load").
   // Every normal solver is accepted (the dense ones too): for similar
   // bodies the pressure does not depend on the shear, and the tangential
-  // step has its own operator.
+  // step has its own operator; the coupled alternation calls the normal
+  // solver as a black box.
   void validate(const Grid& grid, const ElasticPair& pair, const SolverOptions& normal, const Loading& loading) const;
 
   // The refusals of what the friction slice does not support, named for

@@ -3,7 +3,11 @@
 // then the tangential load steps in order under its pressure, each from the
 // state the previous one left (tangential_solver.hpp). For elastically
 // similar bodies (Dundurs' beta = 0) the pressure does not depend on the
-// shear, so the normal problem is solved once.
+// shear, so the normal problem is solved once. For dissimilar ones (unless
+// FrictionOptions::coupling is off) every step is a coupled step
+// (coupled_step.hpp): the normal loading first, in
+// FrictionOptions::normal_load_steps increments at zero tangential load,
+// then the tangential steps, each with its own pressure.
 #pragma once
 
 #include <span>
@@ -26,6 +30,13 @@ struct FrictionalSolveResult {
   // not one), and is empty when the normal solve did not converge.
   std::vector<TangentialResult> steps;
   std::size_t requested_steps = 0;
+  double dundurs_beta = 0.0;  // of the pair
+  bool coupled = false;       // the coupled problem was solved (beta != 0 and FrictionOptions::coupling)
+  // Coupled only: the shear each normal loading increment left (the last
+  // one's state starts the history; `normal` is its normal solution), and
+  // each tangential step's normal solution (its pressure under its shear).
+  std::vector<TangentialResult> loading_steps;
+  std::vector<SolveResult> step_normals;
 
   // The normal solve and every requested step converged.
   bool converged() const;
@@ -35,7 +46,8 @@ struct FrictionalSolveResult {
 
 // Solves the rigid surface `heights` (m, one per cell) pressed under
 // `loading` into the pair's half-space (E* of the pair), then the
-// tangential steps of `friction`. Throws SolverOptionError as
+// tangential steps of `friction`; coupled for dissimilar bodies (the file
+// comment). Throws SolverOptionError as
 // FrictionOptions::validate(grid, pair, normal, loading) does, InputError
 // for sizes that do not match the grid, and the tangential solver's
 // InputError when, under approach control, a force step exceeds mu P.
@@ -44,7 +56,8 @@ FrictionalSolveResult solve_frictional_surface(const Grid& grid, std::span<const
                                                const SolverOptions& normal, const FrictionOptions& friction);
 
 // The tangential steps of `friction` under the converged normal solution
-// `normal` (its pressure), for a front end that made the normal solve itself.
+// `normal` (its pressure), for a front end that made the normal solve itself;
+// uncoupled (the pressure fixed) whatever the pair.
 // A step whose load equals the previous step's (the turning point that ends
 // one branch of a loop and starts the next) is not solved again: its state
 // is the previous one, exactly (no slip increment), with no dissipation.

@@ -52,6 +52,13 @@ struct TangentialResult {
   int operator_applications = 0;        // products u = C t
   int preconditioner_applications = 0;  // products t = M u (conjugate gradients)
   double wall_seconds = 0.0;
+  // Coupled steps of dissimilar bodies (coupled_step.hpp): the normal and
+  // tangential solves alternated, and the last pass's change (zero both
+  // when uncoupled; iterations and products above are the last pass's).
+  int coupling_alternations = 0;
+  double coupling_residual = 0.0;
+  double dundurs_beta = 0.0;  // of the pair the step was solved for
+  bool coupled = false;       // solved coupled with the normal problem (beta != 0 and coupling on)
 
   bool converged() const { return status == SolveStatus::converged; }
 };

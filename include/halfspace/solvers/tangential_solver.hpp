@@ -1,10 +1,14 @@
-// Partial slip under Coulomb friction for elastically similar bodies (Dundurs'
-// beta = 0: the pressure is the normal solve's, unchanged by the shear):
-// given the pressure p, the previous step's state and a tangential load step,
+// Partial slip under Coulomb friction under a given pressure p (for
+// elastically similar bodies, Dundurs' beta = 0, the normal solve's; for
+// dissimilar ones one half of the alternation of coupled_step.hpp, which
+// passes the pressure's tangential displacement K p as the step's fixed
+// part): given p, the previous step's state and a tangential load step,
 // the shear q with
 //   |q_i| <= mu p_i in every cell (q = 0 out of contact),
 //   stick: ds_i = 0,  slip: |q_i| = mu p_i and q_i = -mu p_i ds_i / |ds_i|,
-// where ds = C (q - q_prev) - (delta - delta_prev) is the slip increment.
+// where ds = C q + v - u_prev - (delta - delta_prev) is the slip increment
+// (u_prev the previous step's whole displacement, v the fixed part, zero
+// without coupling, so that ds = C (q - q_prev) - (delta - delta_prev)).
 // These are the optimality conditions of the convex problem on a product of
 // discs (docs/theory.md, "Friction")
 //   minimise 1/2 q.C q - q.(C q_prev + delta - delta_prev)  over |q_i| <= mu p_i,
@@ -61,8 +65,8 @@ class TangentialSolver {
  public:
   // Keeps a reference to `op` (which must outlive the solver), allocates the
   // workspace once; solve() allocates nothing inside its loop. Throws
-  // InputError if the options are invalid or the pair is not elastically
-  // similar (the coupled problem is not solved here).
+  // InputError if the options are invalid. For a dissimilar pair it solves
+  // the tangential half of the coupled problem (the pressure given).
   TangentialSolver(TangentialOperator& op, TangentialOptions options);
 
   // One load step from `previous` (TangentialState::unloaded for the first)
@@ -74,6 +78,13 @@ class TangentialSolver {
   // approach at which every cell slips forward.
   TangentialResult solve(std::span<const double> pressure, const TangentialLoading& loading,
                          const TangentialState& previous);
+  // The same with a fixed tangential displacement (fixed_x, fixed_y) (m, one
+  // per cell, or both empty for none) added to C q: the coupling
+  // displacement K p of the pressure (TangentialOperator::
+  // apply_pressure_coupling). The result's displacement is then C q plus it.
+  TangentialResult solve(std::span<const double> pressure, const TangentialLoading& loading,
+                         const TangentialState& previous, std::span<const double> fixed_x,
+                         std::span<const double> fixed_y);
 
   const TangentialOptions& options() const { return options_; }
 
@@ -84,6 +95,7 @@ class TangentialSolver {
   // The slip increment, then workspace: the methods' search direction and
   // previous iterate or preconditioned gradient, C times the direction.
   Eigen::ArrayXd gx_, gy_, tx_, ty_, rx_, ry_, wx_, wy_;
+  Eigen::ArrayXd fx_, fy_;  // the previous displacement less the fixed part (made on the first coupled solve)
 };
 
 }  // namespace halfspace::solvers

@@ -1,0 +1,166 @@
+// The coupled normal-tangential problem of dissimilar bodies (Dundurs'
+// beta != 0; coupled_step.hpp): for similar bodies exactly the uncoupled
+// answers; a small cylinder against an independent dense solve (the
+// influence matrices assembled from the closed-form coefficients, the
+// complementarity conditions solved by projected Gauss-Seidel, no FFT, no
+// alternation); and what the coupling changes for a rigid cylinder and a
+// rigid sphere pressed into an elastic half-space (docs/validation.md).
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <cstdio>
+
+#include "halfspace/kernels/coupling_strip.hpp"
+#include "halfspace/kernels/plane_strain_strip.hpp"
+#include "halfspace/kernels/tangential_strip.hpp"
+#include "halfspace/operators/tangential_operator.hpp"
+#include "halfspace/solvers/coupled_step.hpp"
+#include "halfspace/solvers/frictional_solve.hpp"
+#include "halfspace/solvers/solver_factory.hpp"
+#include "halfspace/solvers/surface_solve.hpp"
+#include "support/analytic_solutions.hpp"
+#include "support/grid_fields.hpp"
+#include "support/pk_solvers.hpp"
+
+namespace halfspace {
+namespace {
+
+const ElasticBody kSteel{2.1e11, 0.3};
+constexpr double kRadius = 0.01;  // m
+
+solvers::SolverOptions normal_options() {
+  return testing::test_options(solvers::SolverType::pk_fourier, 1e-12);
+}
+
+// Similar bodies: the coupling products are exactly zero, so a coupled step
+// is the normal solve and the tangential step of today, bit for bit.
+TEST(CoupledContact, SimilarBodiesGiveExactlyTheUncoupledAnswer) {
+  const ElasticPair pair = ElasticPair::similar(kSteel);
+  const std::size_t n = 24;
+  const double h = 5e-6;
+  const Grid grid = Grid::plane(n, n, h, h, Boundary::free);
+  const Eigen::ArrayXd gap0 = testing::field_from(grid, [](double x, double y) { return (x * x + y * y) / (2 * kRadius); });
+  const std::span<const double> gap(gap0.data(), grid.size());
+  const Loading load = Loading::force(5.0);
+  const auto normal = solvers::make_solver(grid, pair.composite_modulus(), normal_options());
+  TangentialOperator op(grid, pair);
+  solvers::TangentialOptions options;
+  options.friction_coefficient = 0.3;
+  TangentialSolver tangential(op, options);
+  const TangentialState unloaded = TangentialState::unloaded(grid.size());
+  const SolveResult contact = normal->solve(gap, load);
+  const TangentialResult plain =
+      tangential.solve({contact.pressure.data(), grid.size()}, TangentialLoading::force(0.6), unloaded);
+  CoupledStepSolver coupled(*normal, op, tangential, {});
+  const CoupledStepResult step = coupled.solve(gap, load, TangentialLoading::force(0.6), unloaded, {});
+  ASSERT_TRUE(step.converged()) << step.message;
+  EXPECT_EQ(step.alternations, 1);
+  EXPECT_TRUE((step.normal.pressure == contact.pressure).all());
+  EXPECT_TRUE((step.tangential.state.shear_x == plain.state.shear_x).all());
+  EXPECT_TRUE((step.tangential.state.shear_y == plain.state.shear_y).all());
+  EXPECT_EQ(step.tangential.state.approach_x, plain.state.approach_x);
+}
+
+// The dense reference: a rigid cylinder (body 2) on an elastic body 1,
+// plane strain, free grid. N, T, Kc assembled from the strip coefficients;
+// projected Gauss-Seidel over the cells, each cell's p projected on p >= 0
+// and its q on |q| <= mu p, until nothing moves (1e-14 of the largest
+// value), under an imposed approach and tangential displacement.
+struct DenseState {
+  Eigen::VectorXd p, q, u;  // u: the whole tangential displacement T q + Kc p
+  bool converged = false;
+};
+
+DenseState dense_coupled_step(const Grid& grid, const ElasticPair& pair, const Eigen::VectorXd& gap0, double approach,
+                              double mu, double tangential_step, const DenseState& previous) {
+  const auto n = static_cast<Eigen::Index>(grid.size());
+  Eigen::MatrixXd normal(n, n), shear(n, n), coupling(n, n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    for (Eigen::Index j = 0; j < n; ++j) {
+      const double d = static_cast<double>(i - j) * grid.dx();
+      normal(i, j) = kernels::plane_strain_strip_displacement(d, grid.dx(), pair.composite_modulus());
+      shear(i, j) =
+          kernels::tangential_strip_displacement(d, grid.dx(), pair.composite_modulus(), pair.shear_compliance()).xx;
+      coupling(i, j) = kernels::coupling_strip_displacement(d, grid.dx(), pair.coupling_compliance()).x;
+    }
+  }
+  DenseState s = previous;
+  for (int sweep = 0; sweep < 200000; ++sweep) {
+    double moved = 0.0;
+    for (Eigen::Index i = 0; i < n; ++i) {
+      // The gap: g0 + N p + Kc^T q - approach.
+      const double g = gap0[i] + normal.row(i).dot(s.p) + coupling.col(i).dot(s.q) - approach;
+      const double p = std::max(0.0, s.p[i] - g / normal(i, i));
+      moved = std::max(moved, std::abs(p - s.p[i]));
+      s.p[i] = p;
+      const double slip = shear.row(i).dot(s.q) + coupling.row(i).dot(s.p) - previous.u[i] - tangential_step;
+      const double q = std::clamp(s.q[i] - slip / shear(i, i), -mu * s.p[i], mu * s.p[i]);
+      moved = std::max(moved, std::abs(q - s.q[i]));
+      s.q[i] = q;
+    }
+    if (moved <= 1e-14 * s.p.maxCoeff()) {
+      s.converged = true;
+      break;
+    }
+  }
+  s.u = shear * s.q + coupling * s.p;
+  return s;
+}
+
+TEST(CoupledContact, CylinderAgreesWithADenseProjectedGaussSeidelSolve) {
+  const ElasticPair pair = ElasticPair::on_rigid(kSteel);  // beta = 0.286
+  const std::size_t n = 48;
+  const double load = 2e5;  // N/m, for the grid's scale
+  const auto hertz = testing::hertz_line(load, kRadius, pair.composite_modulus());
+  const double h = 2.4 * hertz.half_width / static_cast<double>(n);
+  const Grid grid = Grid::line(n, h, Boundary::free);
+  // The cylinder's heights (peaks positive), and the gap the solvers make of them.
+  const Eigen::ArrayXd heights = testing::field_from(grid, [](double x, double) { return -x * x / (2 * kRadius); });
+  const Eigen::ArrayXd gap0 = solvers::initial_gap(grid, {heights.data(), n});
+  const double mu = 0.5;
+  // The approach that carries about `load` frictionless, then the history:
+  // pressed at zero tangential displacement, then displaced by a little.
+  const double approach =
+      solvers::solve_surface(grid, {heights.data(), n}, pair.composite_modulus(), Loading::force(load), normal_options())
+          .approach;
+  const double displacement = 2e-7;
+  solvers::FrictionOptions friction;
+  friction.friction_coefficient = mu;
+  friction.history = {TangentialLoading::displacement(displacement)};
+  friction.tolerance = 1e-10;
+  friction.max_iterations = 200000;
+  friction.coupling_tolerance = 1e-10;
+  const FrictionalSolveResult result =
+      solvers::solve_frictional_surface(grid, {heights.data(), n}, pair, Loading::approach(approach), normal_options(), friction);
+  ASSERT_TRUE(result.converged()) << result.failure();
+  ASSERT_TRUE(result.coupled);
+  ASSERT_EQ(result.step_normals.size(), 1u);
+
+  const Eigen::VectorXd g0 = gap0.matrix();
+  DenseState start{Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n)), Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n)),
+                   Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n))};
+  const DenseState pressed = dense_coupled_step(grid, pair, g0, approach, mu, 0.0, start);
+  const DenseState displaced = dense_coupled_step(grid, pair, g0, approach, mu, displacement, pressed);
+
+  ASSERT_TRUE(pressed.converged && displaced.converged);
+  const double p_scale = displaced.p.maxCoeff();
+  const double pressed_p = (result.normal.pressure.matrix() - pressed.p).cwiseAbs().maxCoeff();
+  const double pressed_q = (result.loading_steps.back().state.shear_x.matrix() - pressed.q).cwiseAbs().maxCoeff();
+  const double p_error = (result.step_normals.back().pressure.matrix() - displaced.p).cwiseAbs().maxCoeff();
+  const double q_error = (result.steps.back().state.shear_x.matrix() - displaced.q).cwiseAbs().maxCoeff();
+  std::printf(
+      "coupled cylinder (beta %.3f, mu %.1f, %zu cells): against dense PGS, pressed p %.2e q %.2e, displaced p %.2e "
+      "q %.2e of p_max; %d + %d alternations; q under pressing alone up to %.3f mu p\n",
+      pair.dundurs_beta(), mu, n, pressed_p / p_scale, pressed_q / p_scale, p_error / p_scale, q_error / p_scale,
+      result.loading_steps.back().coupling_alternations, result.steps.back().coupling_alternations,
+      (pressed.q.cwiseAbs().array() / (mu * pressed.p.array().max(1e-300))).maxCoeff());
+  EXPECT_GT(pressed.q.cwiseAbs().maxCoeff(), 0.05 * mu * p_scale);  // the coupling really shears
+  EXPECT_LE(pressed_p, 1e-6 * p_scale);
+  EXPECT_LE(pressed_q, 1e-6 * p_scale);
+  EXPECT_LE(p_error, 1e-6 * p_scale);
+  EXPECT_LE(q_error, 1e-6 * p_scale);
+}
+
+}  // namespace
+}  // namespace halfspace
