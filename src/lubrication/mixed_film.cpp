@@ -554,11 +554,78 @@ MixedFilm continue_in_speed(InfluenceOperator& op, const Eigen::ArrayXd& gap, co
 
 }  // namespace
 
+namespace {
+
+// Separation control where the Newton iteration fails from its start: from
+// the given film, or else from the load-controlled film at the load of the
+// dry contact at the approach -h0, walk h0 to the target in steps halved
+// where one fails.
+constexpr int kOffsetSolves = 40;
+constexpr double kSmallestOffsetStep = 1.0 / 256.0;
+
+MixedFilm continue_in_offset(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
+                             const LubricantLaws& laws, const MixedFilmOptions& options, const MixedFilm* start,
+                             MixedFilm failed) {
+  MixedFilm from;
+  int steps = failed.iterations, solves = 1;
+  if (start != nullptr && start->converged() && start->fluid_pressure.size() == gap.size()) {
+    from = *start;
+  } else {
+    if (!(-options.offset > 0.0)) return failed;
+    solvers::PolonskyKeer dry_solver(op);
+    const solvers::SolveResult dry =
+        dry_solver.solve({gap.data(), op.grid().size()}, solvers::Loading::approach(-options.offset));
+    if (!dry.converged() || !(dry.total_force > 0.0)) return failed;
+    MixedFilmOptions by_load = options;
+    by_load.load = dry.total_force;
+    from = solve_mixed_film(op, gap, conditions, laws, by_load);
+    steps += from.iterations;
+    ++solves;
+    if (!from.converged()) return failed;
+  }
+  const double first = from.offset;
+  double done = 0.0, step = 1.0;
+  while (done < 1.0 && solves < kOffsetSolves) {
+    const double next = std::min(1.0, done + step);
+    MixedFilmOptions at = options;
+    at.offset = first + next * (options.offset - first);
+    MixedFilm trial = solve_once(op, gap, conditions, laws, at, &from);
+    ++solves;
+    steps += trial.iterations;
+    if (trial.converged()) {
+      from = std::move(trial);
+      done = next;
+      step = std::min(2.0 * step, 1.0);
+      continue;
+    }
+    step *= 0.5;
+    if (step < kSmallestOffsetStep) {
+      trial.message = fmt::format("separation continuation stalled at h0 = {:.6g} m: {}", at.offset, trial.message);
+      trial.iterations = steps;
+      return trial;
+    }
+  }
+  if (done < 1.0) {
+    from.status = FilmStatus::iteration_limit;
+    from.message = fmt::format("separation continuation stopped after {} solves at h0 = {:.6g} m", solves,
+                               first + done * (options.offset - first));
+  }
+  from.iterations = steps;
+  return from;
+}
+
+}  // namespace
+
 MixedFilm solve_mixed_film(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
                            const LubricantLaws& laws, const MixedFilmOptions& options, const MixedFilm* start) {
   const auto started = std::chrono::steady_clock::now();
   MixedFilm film = solve_once(op, gap, conditions, laws, options, start);
-  if (film.converged() || !options.load_controlled()) return film;
+  if (film.converged()) return film;
+  if (!options.load_controlled()) {
+    MixedFilm continued = continue_in_offset(op, gap, conditions, laws, options, start, std::move(film));
+    continued.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    return continued;
+  }
   // Where the film does not converge from its starts (the mixed regime, with
   // contacts coming and going), continue in the speed: from the given film's
   // speed if it has one, else from a faster film that converges.

@@ -69,7 +69,8 @@ TEST(LubricateMixedCliTest, MixedFilmIsTheLibrarys) {
   const TempDir dir;
   make_rough_line(dir);
   const ProgramRun run = run_program(mixed_run({"--entrainment-velocity", "0.001", "--sliding-velocity", "0.0005",
-                                                "--contact-friction", "0.12", "--output", "m.h5"}), dir.path());
+                                                "--contact-friction", "0.12", "--output", "m.h5"}),
+                                     dir.path());
   ASSERT_EQ(run.exit_code, kExitOk) << run.err;
   const test::H5 file = test::open_file(dir / "m.h5");
   const auto field = [&](const std::string& name) {
@@ -127,10 +128,10 @@ TEST(LubricateMixedCliTest, MixedFilmIsTheLibrarys) {
 TEST(LubricateMixedCliTest, StribeckSweepWritesItsCurve) {
   const TempDir dir;
   make_rough_line(dir);
-  const ProgramRun run = run_program(mixed_run({"--entrainment-velocity", "1", "--sliding-velocity", "0.5",
-                                                "--speeds", "1,0.001,0.0001", "--stribeck", "s.csv", "--output",
-                                                "m.h5", "--quiet"}),
-                                     dir.path());
+  const ProgramRun run =
+      run_program(mixed_run({"--entrainment-velocity", "1", "--sliding-velocity", "0.5", "--speeds", "1,0.001,0.0001",
+                             "--stribeck", "s.csv", "--output", "m.h5", "--quiet"}),
+                  dir.path());
   ASSERT_EQ(run.exit_code, kExitOk) << run.err;
   std::ifstream csv(dir / "s.csv");
   std::string line;
@@ -170,8 +171,9 @@ TEST(LubricateMixedCliTest, RejectsBadMixedInputNamingTheOption) {
   expect_input_error(with({"--boundary-film", "0"}), {"boundary film = 0"}, dir / "f.h5");
   expect_input_error(with({"--speeds", "1,0.1"}), {"--speeds and --stribeck"}, dir / "f.h5");
   expect_input_error(with({"--speeds", "1,-0.1", "--stribeck", "s.csv"}), {"Stribeck speed -0.1"}, dir / "f.h5");
-  const std::vector<std::string> rigid{"lubricate",  "--height-map", "cylinder.h5", "--viscosity", "0.04",
-                                       "--entrainment-velocity", "1", "--force", "1e3", "--output", "f.h5"};
+  const std::vector<std::string> rigid{
+      "lubricate", "--height-map", "cylinder.h5", "--viscosity", "0.04", "--entrainment-velocity",
+      "1",         "--force",      "1e3",         "--output",    "f.h5"};
   const auto rigid_with = [&](std::vector<std::string> more) {
     std::vector<std::string> args = rigid;
     args.insert(args.end(), more.begin(), more.end());
@@ -180,11 +182,11 @@ TEST(LubricateMixedCliTest, RejectsBadMixedInputNamingTheOption) {
   expect_input_error(rigid_with({"--contact-friction", "0.1"}), {"--mixed"}, dir / "f.h5");
   expect_input_error(rigid_with({"--mixed"}), {"--mixed needs an elastic body"}, dir / "f.h5");
   // A roughness of another size, and a profile beyond the dense path.
-  ASSERT_EQ(run_program({"generate", "--kind", "flat", "--grid", "50", "--size", "2.4e-4", "--output", "small.h5",
-                         "--quiet"},
-                        dir.path())
-                .exit_code,
-            kExitOk);
+  ASSERT_EQ(
+      run_program({"generate", "--kind", "flat", "--grid", "50", "--size", "2.4e-4", "--output", "small.h5", "--quiet"},
+                  dir.path())
+          .exit_code,
+      kExitOk);
   expect_input_error(rigid_with({"--roughness", "small.h5"}), {"--roughness small.h5 has 50"}, dir / "f.h5");
   make_rough_line(dir, 2049);
   expect_input_error(with({}), {"2049 points", "at most 2048"}, dir / "f.h5");

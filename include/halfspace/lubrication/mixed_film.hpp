@@ -126,7 +126,10 @@ struct MixedFilm {
 // a thick film. Under load control a solve that fails from there continues
 // in the speed: from the start's speed, or from a faster film (4, 16, ...
 // times the velocities) that converges, down in steps of at most a factor
-// 2 (halved where a step fails); `iterations` then counts every Newton step.
+// 2 (halved where a step fails); under separation control one continues in
+// h0: from the start, or from the load-controlled film at the load of the
+// dry contact at the approach -h0 (so a cold start needs h0 < 0: contact
+// when dry). `iterations` then counts every Newton step.
 // Throws InputError for invalid input; non-convergence is a status.
 MixedFilm solve_mixed_film(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
                            const LubricantLaws& laws, const MixedFilmOptions& options,
