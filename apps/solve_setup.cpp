@@ -8,7 +8,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <climits>
 #include <cmath>
 #include <functional>
 #include <initializer_list>
@@ -28,18 +27,14 @@
 #include "halfspace/io/output_file.hpp"
 #include "halfspace/io/sweep_writer.hpp"
 #include "halfspace/io/xdmf_writer.hpp"
-#include "halfspace/material.hpp"
 #include "halfspace/memory_estimate.hpp"
-#include "halfspace/solvers/adhesion_law.hpp"
+#include "halfspace/physical_ranges.hpp"
 #include "halfspace/solvers/frictional_solve.hpp"
-#include "halfspace/solvers/solver_factory.hpp"
 #include "halfspace/stress/stress_volume.hpp"
 #include "halfspace/stress/subsurface_stress.hpp"
 #include "halfspace/surface/padding.hpp"
 #include "halfspace/surface/preparation.hpp"
-#include "halfspace/threads.hpp"
 #include "memory_check.hpp"
-#include "physical_ranges.hpp"
 #include "processes.hpp"
 #include "stress_command.hpp"
 #include "value_parsing.hpp"
@@ -505,24 +500,19 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
     check_friction(options, *friction, surface.grid, *pair, solver, problem.loading);
   }
   const std::size_t first_row = surface.first_row;
-  return SolveSetup{std::move(surface.grid),
+  return SolveSetup{std::move(problem),
+                    std::move(surface.grid),
                     std::move(surface.heights),
                     first_row,
                     std::move(surface.source),
                     std::move(surface.preparation),
-                    problem.e_star,
-                    problem.loading,
-                    std::move(problem.solver),
-                    problem.threads,
                     std::move(output),
                     options.quiet,
                     options.command_line,
                     options.config_text,
-                    std::move(problem.load_values),
                     options.plot,
                     stress.depths,
                     stress.nu,
-                    std::move(problem.coating),
                     friction,
                     pair};
 }

@@ -1,6 +1,6 @@
-// The rules of a contact problem, checked in the order a reader scans a
-// command line (body, interface law, load, solver), so the first mistake is
-// the one reported. Numbers are shown with six digits (format_number).
+// The rules of a contact problem, checked in the order body, interface law
+// and solver, load, threads (the law decides whether loads are signed). Numbers are shown with six digits
+// (format_number).
 #include "halfspace/problem.hpp"
 
 #include <fmt/format.h>
@@ -93,24 +93,19 @@ class Rules {
   std::string describe(std::string_view option, double value) const {
     return s_.describe(option, format_number(value));
   }
-  // The names of the options given among `options`.
-  std::vector<std::string> given(std::initializer_list<std::pair<std::string_view, bool>> options) const {
+  // The names of the options among `options` that were given (or not).
+  std::vector<std::string> given(std::initializer_list<std::pair<std::string_view, bool>> options,
+                                 bool present = true) const {
     std::vector<std::string> names;
-    for (const auto& [option, present] : options) {
-      if (present) names.push_back(name(option));
-    }
-    return names;
-  }
-  std::vector<std::string> missing(std::initializer_list<std::pair<std::string_view, bool>> options) const {
-    std::vector<std::string> names;
-    for (const auto& [option, present] : options) {
-      if (!present) names.push_back(name(option));
+    for (const auto& [option, is_given] : options) {
+      if (is_given == present) names.push_back(name(option));
     }
     return names;
   }
   double positive(std::string_view option, double value, std::string_view unit) const {
     if (!(std::isfinite(value) && value > 0.0)) {
-      throw OptionError(std::string(option), format_number(value), fmt::format("is invalid: must be positive ({})", unit));
+      throw OptionError(std::string(option), format_number(value),
+                        fmt::format("is invalid: must be positive ({})", unit));
     }
     return value;
   }
@@ -171,8 +166,8 @@ double Rules::body() const {
   }
   if (present.size() < 4) {
     throw InputError(fmt::format("incomplete material: missing {} (give all of {}, {}, {}, {}, or {})",
-                                 fmt::join(missing(constants), ", "), name("E1"), name("nu1"), name("E2"), name("nu2"),
-                                 name("e_star")));
+                                 fmt::join(given(constants, false), ", "), name("E1"), name("nu1"), name("E2"),
+                                 name("nu2"), name("e_star")));
   }
   // A rigid body 2 (E2 = inf) adds no compliance: E* = E1 / (1 - nu1^2).
   const bool rigid2 = std::isinf(*o_.e2) && *o_.e2 > 0.0;
@@ -188,10 +183,10 @@ double Rules::body() const {
     e_star = composite_modulus({e1, *o_.nu1}, {modulus("E2", *o_.e2), *o_.nu2});
   }
   // nu near -1 makes a body's compliance vanish and E* grow without bound.
-  return require_in_range(fmt::format("the composite modulus E* = {:g} Pa of {}, {}, {}, {}", e_star,
-                                      describe("E1", *o_.e1), describe("nu1", *o_.nu1), describe("E2", *o_.e2),
-                                      describe("nu2", *o_.nu2)),
-                          e_star, kMinModulus, kMaxModulus, "Pa");
+  return require_in_range(
+      fmt::format("the composite modulus E* = {:g} Pa of {}, {}, {}, {}", e_star, describe("E1", *o_.e1),
+                  describe("nu1", *o_.nu1), describe("E2", *o_.e2), describe("nu2", *o_.nu2)),
+      e_star, kMinModulus, kMaxModulus, "Pa");
 }
 
 std::optional<LayeredMaterial> Rules::coating() const {
@@ -216,7 +211,7 @@ std::optional<LayeredMaterial> Rules::coating() const {
     std::vector<std::string> all;
     for (const auto& [option, _] : constants) all.push_back(name(option));
     throw InputError(fmt::format("incomplete coated half-space: missing {} (give all of {})",
-                                 fmt::join(missing(constants), ", "), fmt::join(all, ", ")));
+                                 fmt::join(given(constants, false), ", "), fmt::join(all, ", ")));
   }
   return LayeredMaterial{length("layer_thickness", *o_.layer_thickness),
                          {modulus("layer_E", *o_.layer_e), poisson("layer_nu", *o_.layer_nu)},
@@ -230,8 +225,8 @@ std::pair<Loading, std::vector<double>> Rules::loads() const {
                                                   {"mean_pressure", o_.mean_pressure.has_value()},
                                                   {"approach", o_.approach.has_value()}});
   if (present.empty()) {
-    throw InputError(fmt::format("no load given: pass one of {}, {}, {}", name("force"), name("mean_pressure"),
-                                 name("approach")));
+    throw InputError(
+        fmt::format("no load given: pass one of {}, {}, {}", name("force"), name("mean_pressure"), name("approach")));
   }
   if (present.size() > 1) {
     throw InputError(fmt::format("{} cannot be combined: give exactly one of {}, {}, {}", fmt::join(present, " and "),
@@ -269,7 +264,8 @@ std::optional<solvers::SolverOptions::Adhesion> Rules::adhesion() const {
                                                     {"adhesion_stress", o_.adhesion_stress.has_value()},
                                                     {"adhesion_tol", o_.adhesion_tol.has_value()},
                                                     {"adhesion_precondition", o_.adhesion_precondition.has_value()}});
-    if (!present.empty()) throw InputError(fmt::format("{} needs {} md|exponential", present.front(), name("adhesion")));
+    if (!present.empty())
+      throw InputError(fmt::format("{} needs {} md|exponential", present.front(), name("adhesion")));
     return std::nullopt;
   }
   const std::string adhesion = s_.describe("adhesion", *o_.adhesion);
@@ -330,8 +326,7 @@ solvers::SolverOptions Rules::solver() const {
       if (block < 0) {
         throw OptionError("deflation_block", fmt::format("{}", block), "is invalid: give 0 (off) or a block size");
       }
-      solver.deflation.mode =
-          block == 0 ? solvers::DeflationOptions::Mode::off : solvers::DeflationOptions::Mode::on;
+      solver.deflation.mode = block == 0 ? solvers::DeflationOptions::Mode::off : solvers::DeflationOptions::Mode::on;
       if (block != 0) solver.deflation.block = static_cast<std::size_t>(block);
     }
     if (o_.hardness) solver.interface_law.hardness = *o_.hardness;
@@ -387,8 +382,8 @@ Problem make_problem(const ProblemOptions& options, const OptionSpelling& spelli
     Problem problem;
     problem.coating = rules.coating();
     problem.e_star = problem.coating ? plane_strain_modulus(problem.coating->layer) : rules.body();
+    problem.solver = rules.solver();  // the interface law first: adhesion makes loads signed
     std::tie(problem.loading, problem.load_values) = rules.loads();
-    problem.solver = rules.solver();
     problem.threads = rules.threads();
     return problem;
   } catch (const OptionError& error) {
@@ -443,8 +438,7 @@ void Problem::check_grid(const Grid& grid, const OptionSpelling& spelling) const
   }
 }
 
-void Problem::check_heights(const Grid& grid, std::span<const double> heights,
-                            const OptionSpelling& spelling) const {
+void Problem::check_heights(const Grid& grid, std::span<const double> heights, const OptionSpelling& spelling) const {
   if (loading.mode != ControlMode::approach || !grid.periodic() || heights.empty()) return;
   const Eigen::Map<const Eigen::ArrayXd> h(heights.data(), static_cast<Eigen::Index>(heights.size()));
   const double mean_gap = h.maxCoeff() - h.mean();
