@@ -55,17 +55,12 @@ std::vector<std::string> given_names(const SolveOptions& options, Presence keys)
   return names;
 }
 
-double require_positive(const SolveOptions& options, std::string_view key, double value, std::string_view unit) {
-  if (!(std::isfinite(value) && value > 0.0)) {
-    throw InputError(fmt::format("{} is invalid: must be positive ({})", options.describe(key), unit));
-  }
-  return value;
-}
-
-// A length option (radius, wavelength, amplitude, spacing) within the
-// program's range of lengths.
+// A length option (radius, wavelength, amplitude, spacing): positive, and
+// within the program's range of lengths.
 double require_length(const SolveOptions& options, std::string_view key, double value) {
-  require_positive(options, key, value, "m");
+  if (!(std::isfinite(value) && value > 0.0)) {
+    throw InputError(fmt::format("{} is invalid: must be positive (m)", options.describe(key)));
+  }
   return require_in_range(options.describe(key), value, kMinLength, kMaxLength, "m");
 }
 
@@ -496,7 +491,7 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
   }
   std::optional<ElasticPair> pair;
   if (friction) {
-    pair = friction_pair_from(options);
+    pair.emplace(ElasticBody{*options.e1, *options.nu1}, ElasticBody{*options.e2, *options.nu2});
     check_friction(options, *friction, surface.grid, *pair, solver, problem.loading);
   }
   const std::size_t first_row = surface.first_row;

@@ -57,20 +57,18 @@ constexpr std::array kNames{
 };
 
 // The option of ProblemOptions that sets each SolverOptions member a
-// SolverOptionError (or the adhesion law's ranges) names.
-std::string_view problem_name(std::string_view member, bool stress_given) {
-  static constexpr std::array<std::pair<std::string_view, std::string_view>, 8> kMembers{{
+// SolverOptionError names.
+std::string_view problem_name(std::string_view member) {
+  static constexpr std::array<std::pair<std::string_view, std::string_view>, 7> kMembers{{
       {"tolerance", "tol"},
       {"max_iterations", "max_iter"},
       {"type", "solver"},
       {"adhesion.work", "work_of_adhesion"},
-      {"adhesion.stress", "adhesion_stress"},
+      {"adhesion.range", "adhesion_range"},
       {"adhesion.tolerance", "adhesion_tol"},
       {"hardness", "hardness"},
-      {"adhesion", "adhesion"},
   }};
   if (member.starts_with("deflation")) return "deflation_block";
-  if (member == "adhesion.range") return stress_given ? "adhesion_stress" : "adhesion_range";
   for (const auto& [known, name] : kMembers) {
     if (known == member) return name;
   }
@@ -84,6 +82,9 @@ std::string text(const std::vector<double>& values) {
   return fmt::format("{}", fmt::join(parts, ","));
 }
 
+// Options paired with whether they were given.
+using Presence = std::vector<std::pair<std::string_view, bool>>;
+
 // The rules of one problem's options, written with the front end's spelling.
 class Rules {
  public:
@@ -93,9 +94,13 @@ class Rules {
   std::string describe(std::string_view option, double value) const {
     return s_.describe(option, format_number(value));
   }
+  // E1, nu1, E2, nu2, each with whether it was given.
+  Presence body_constants() const {
+    return {
+        {"E1", o_.e1.has_value()}, {"nu1", o_.nu1.has_value()}, {"E2", o_.e2.has_value()}, {"nu2", o_.nu2.has_value()}};
+  }
   // The names of the options among `options` that were given (or not).
-  std::vector<std::string> given(std::initializer_list<std::pair<std::string_view, bool>> options,
-                                 bool present = true) const {
+  std::vector<std::string> given(const Presence& options, bool present = true) const {
     std::vector<std::string> names;
     for (const auto& [option, is_given] : options) {
       if (is_given == present) names.push_back(name(option));
@@ -124,16 +129,49 @@ class Rules {
     return nu;
   }
 
-  // Runs `function`; an OptionError it throws (a SolverOptions rule, the
-  // adhesion law's ranges) is named by the option of the problem that set it.
+  // Runs `function`; an OptionError it throws (a SolverOptions rule) is
+  // named by the option of the problem that set it.
   template <class Function>
   auto restated(Function&& function) const {
     try {
       return function();
     } catch (const OptionError& error) {
-      const std::string_view option = problem_name(error.option(), o_.adhesion_stress.has_value());
+      const std::string_view option = problem_name(error.option());
       throw OptionError(std::string(option), error.value(), error.rule());
     }
+  }
+
+  // The law's given and derived quantities in the ranges of their kinds: a
+  // derived one obeys the range of the option it replaces (a stress w / range
+  // of 1e306 Pa ended "converged" with a force of -inf, issue 32).
+  void law_ranges(const AdhesionLaw& law) const {
+    if (!(std::isfinite(law.work) && law.work > 0.0)) {
+      throw OptionError("work_of_adhesion", format_number(law.work) + " J/m^2",
+                        "is invalid: must be positive and finite");
+    }
+    const std::string work = fmt::format("the work of adhesion {} J/m^2", format_number(law.work));
+    const auto outside = [](double value, double low, double high) { return !(value >= low && value <= high); };
+    if (o_.adhesion_stress) {  // sigma0 given; the range h0 = w / sigma0 derived
+      const double sigma0 = law.work / law.range;
+      const std::string given = s_.describe("adhesion_stress", format_number(sigma0) + " Pa");
+      require_in_range(given, sigma0, kMinMeanPressure, kMaxMeanPressure, "Pa");
+      if (outside(law.range, kMinLength, kMaxLength)) {
+        throw InputError(
+            fmt::format("{} is invalid with {}: the range h0 = work / stress = {} m it gives must lie in "
+                        "[{:g}, {:g}] m, the range of lengths",
+                        given, work, format_number(law.range), kMinLength, kMaxLength));
+      }
+    } else {
+      const std::string given = s_.describe("adhesion_range", format_number(law.range) + " m");
+      require_in_range(given, law.range, kMinLength, kMaxLength, "m");
+      if (outside(law.stress(), kMinMeanPressure, kMaxMeanPressure)) {
+        throw InputError(
+            fmt::format("{} is invalid with {}: the adhesive stress work / range = {} Pa it gives must "
+                        "lie in [{:g}, {:g}] Pa, the range of stresses",
+                        given, work, format_number(law.stress()), kMinMeanPressure, kMaxMeanPressure));
+      }
+    }
+    law.validate();
   }
 
   double body() const;
@@ -149,10 +187,7 @@ class Rules {
 };
 
 double Rules::body() const {
-  const auto constants = {std::pair<std::string_view, bool>{"E1", o_.e1.has_value()},
-                          {"nu1", o_.nu1.has_value()},
-                          {"E2", o_.e2.has_value()},
-                          {"nu2", o_.nu2.has_value()}};
+  const Presence constants = body_constants();
   const std::vector<std::string> present = given(constants);
   if (o_.e_star && !present.empty()) {
     throw InputError(fmt::format("{} cannot be combined with {}: give either {} or all of {}, {}, {}, {}",
@@ -190,18 +225,15 @@ double Rules::body() const {
 }
 
 std::optional<LayeredMaterial> Rules::coating() const {
-  const auto constants = {std::pair<std::string_view, bool>{"layer_thickness", o_.layer_thickness.has_value()},
-                          {"layer_E", o_.layer_e.has_value()},
-                          {"layer_nu", o_.layer_nu.has_value()},
-                          {"substrate_E", o_.substrate_e.has_value()},
-                          {"substrate_nu", o_.substrate_nu.has_value()}};
+  const Presence constants{{"layer_thickness", o_.layer_thickness.has_value()},
+                           {"layer_E", o_.layer_e.has_value()},
+                           {"layer_nu", o_.layer_nu.has_value()},
+                           {"substrate_E", o_.substrate_e.has_value()},
+                           {"substrate_nu", o_.substrate_nu.has_value()}};
   const std::vector<std::string> present = given(constants);
   if (present.empty()) return std::nullopt;
-  const std::vector<std::string> material = given({{"e_star", o_.e_star.has_value()},
-                                                   {"E1", o_.e1.has_value()},
-                                                   {"nu1", o_.nu1.has_value()},
-                                                   {"E2", o_.e2.has_value()},
-                                                   {"nu2", o_.nu2.has_value()}});
+  std::vector<std::string> material = given(body_constants());
+  if (o_.e_star) material.insert(material.begin(), name("e_star"));
   if (!material.empty()) {
     throw InputError(fmt::format(
         "{} cannot be combined with {}: a coated half-space against a rigid surface replaces the material options",
@@ -301,7 +333,7 @@ std::optional<solvers::SolverOptions::Adhesion> Rules::adhesion() const {
                                 : AdhesionLaw{type, w, *o_.adhesion_range};
   // Given or derived (w / sigma0, w / range), the stress and the range stay
   // in the ranges of their kinds.
-  restated([&] { check_adhesion_law_ranges(made.law, o_.adhesion_stress.has_value()); });
+  law_ranges(made.law);
   if (o_.adhesion_tol) made.tolerance = *o_.adhesion_tol;
   if (o_.adhesion_precondition) {
     if (*o_.adhesion_precondition != "on" && *o_.adhesion_precondition != "off") {
@@ -434,7 +466,7 @@ void Problem::check_grid(const Grid& grid, const OptionSpelling& spelling) const
       solver.validate(grid);
     }
   } catch (const OptionError& error) {
-    throw spelled(OptionError(std::string(problem_name(error.option(), false)), error.value(), error.rule()), spelling);
+    throw spelled(OptionError(std::string(problem_name(error.option())), error.value(), error.rule()), spelling);
   }
 }
 

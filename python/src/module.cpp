@@ -76,7 +76,6 @@ NB_MODULE(_core, module) {
       },
       nb::arg("E1"), nb::arg("nu1"), nb::arg("E2"), nb::arg("nu2"),
       "E* (Pa) from 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2.");
-  module.def("checked_composite_modulus", &checked_composite_modulus, nb::arg("e_star"));
 
   bind_surfaces(module);
   bind_results(module);

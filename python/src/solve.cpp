@@ -108,10 +108,10 @@ class KeywordSpelling : public OptionSpelling {
 };
 
 // The problem's keywords (halfspace/problem.hpp: the keyword is the name in
-// problem_option_names) set from `given`, and checked on `grid` by the
+// problem_option_names) set from `given`, and checked on `surface` by the
 // library's make_problem. A keyword not listed is refused, so a misspelt one
 // never passes silently.
-Problem checked_problem(const nb::dict& given, const Grid& grid) {
+Problem checked_problem(const nb::dict& given, const ArraySurface& surface) {
   ProblemOptions options;
   const std::span<const ProblemOptionName> names = problem_option_names();
   for (const auto& [key_object, value] : given) {
@@ -128,7 +128,8 @@ Problem checked_problem(const nb::dict& given, const Grid& grid) {
   }
   const KeywordSpelling keywords;
   Problem problem = make_problem(options, keywords);
-  problem.check_grid(grid, keywords);
+  problem.check_grid(surface.grid, keywords);
+  problem.check_heights(surface.grid, surface.heights, keywords);
   return problem;
 }
 
@@ -173,8 +174,7 @@ Result solve(const nb::object& heights, double dx, double dy, const std::string&
              const std::string& command_line, const std::string& height_source,
              const std::vector<std::string>& preparation) {
   ArraySurface surface = surface_from(heights, dx, dy, boundary);
-  Problem problem = checked_problem(problem_keywords, surface.grid);
-  problem.check_heights(surface.grid, surface.heights);
+  Problem problem = checked_problem(problem_keywords, surface);
   std::span<const double> start;
   if (initial_pressure) {
     start = values(*initial_pressure);
@@ -208,8 +208,7 @@ Sweep sweep(const nb::object& heights, double dx, double dy, const std::string& 
             const nb::dict& problem_keywords, bool warm_start, nb::object progress, const std::string& command_line,
             const std::string& height_source, const std::vector<std::string>& preparation) {
   ArraySurface surface = surface_from(heights, dx, dy, boundary);
-  Problem problem = checked_problem(problem_keywords, surface.grid);
-  problem.check_heights(surface.grid, surface.heights);
+  Problem problem = checked_problem(problem_keywords, surface);
   ProgressHook hook(std::move(progress));
   problem.solver.progress = [&hook](int iteration, double residual) { hook(iteration, residual); };
   analysis::LoadSweepOptions sweep_options;
@@ -275,7 +274,7 @@ History friction(const nb::object& heights, double dx, double dy, const std::str
     friction.validate();
     if (given("layer_thickness")) solvers::FrictionOptions::refuse_coating();
     if (!given("E1")) solvers::FrictionOptions::refuse_composite_modulus_only();
-    problem.emplace(checked_problem(problem_keywords, surface.grid));
+    problem.emplace(checked_problem(problem_keywords, surface));
     const auto constant = [&](const char* key) { return nb::cast<double>(problem_keywords[key]); };
     pair.emplace(ElasticBody{constant("E1"), constant("nu1")}, ElasticBody{constant("E2"), constant("nu2")});
     friction.validate(surface.grid, *pair, problem->solver, problem->loading);
