@@ -60,8 +60,8 @@ TEST(ProblemTest, BodyIsECompositeOrBothBodiesOrACoating) {
   EXPECT_TRUE(starts_with(refusal([&] { make_problem(pair, Flags{}); }),
                           "incomplete material: missing --nu2 (give all of --E1, --nu1, --E2, --nu2, or --e_star)"));
   pair.e_star = 1e9;
-  EXPECT_TRUE(starts_with(refusal([&] { make_problem(pair, Flags{}); }),
-                          "--e_star cannot be combined with --E1, --nu1, --E2"));
+  EXPECT_TRUE(
+      starts_with(refusal([&] { make_problem(pair, Flags{}); }), "--e_star cannot be combined with --E1, --nu1, --E2"));
 
   ProblemOptions coated = sphere_problem();
   coated.e_star.reset();
@@ -122,7 +122,9 @@ TEST(ProblemTest, EachLoadIsCheckedOnTheGridAgainstTheHardnessCap) {
   EXPECT_TRUE(starts_with(message, "--force 0.1,0.3 (value 2: 0.3): the load is infeasible with hardness = 1e+09 Pa"))
       << message;
   options.force = std::vector<double>{1e300};  // a mean pressure beyond the range of pressures
-  EXPECT_NE(refusal([&] { make_problem(options).check_grid(grid); }).find("the mean pressure force / area = inf Pa is invalid"),
+  EXPECT_NE(refusal([&] {
+              make_problem(options).check_grid(grid);
+            }).find("the mean pressure force / area = inf Pa is invalid"),
             std::string::npos);
 }
 
