@@ -203,10 +203,6 @@ std::optional<solvers::FrictionOptions> friction_from(const SolveOptions& o, boo
   return friction;
 }
 
-ElasticPair friction_pair_from(const SolveOptions& o) {
-  return ElasticPair({*o.e1, *o.nu1}, {*o.e2, *o.nu2});
-}
-
 void check_friction(const SolveOptions& o, const solvers::FrictionOptions& friction, const Grid& grid,
                     const ElasticPair& pair, const solvers::SolverOptions& normal, const Loading& loading) {
   with_friction_flags(o, [&] { friction.validate(grid, pair, normal, loading); });

@@ -33,10 +33,9 @@ std::vector<solvers::TangentialLoading> parse_tangential_steps(std::string_view 
 std::optional<solvers::FrictionOptions> friction_from(const SolveOptions& options, bool coated,
                                                       std::size_t normal_load_steps, int processes);
 
-// The pair of bodies of a frictional solve (E1, nu1, E2, nu2, checked by
-// then), and the checks that need the grid and the normal solve's settings
+// The checks that need the grid, the pair of bodies (E1, nu1, E2, nu2,
+// checked by then) and the normal solve's settings
 // (FrictionOptions::validate(grid, pair, normal, loading)).
-ElasticPair friction_pair_from(const SolveOptions& options);
 void check_friction(const SolveOptions& options, const solvers::FrictionOptions& friction, const Grid& grid,
                     const ElasticPair& pair, const solvers::SolverOptions& normal, const Loading& loading);
 

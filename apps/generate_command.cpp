@@ -21,12 +21,12 @@
 #include "halfspace/io/output_file.hpp"
 #include "halfspace/io/xdmf_writer.hpp"
 #include "halfspace/memory_estimate.hpp"
+#include "halfspace/physical_ranges.hpp"
 #include "halfspace/surface/self_affine.hpp"
 #include "halfspace/surface/statistics.hpp"
 #include "halfspace/version.hpp"
 #include "memory_check.hpp"
 #include "option_table.hpp"
-#include "physical_ranges.hpp"
 #include "processes.hpp"
 
 namespace halfspace::app {

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "halfspace/error.hpp"
-#include "physical_ranges.hpp"
+#include "halfspace/physical_ranges.hpp"
 #include "value_parsing.hpp"
 
 namespace halfspace::app {

@@ -8,7 +8,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <climits>
 #include <cmath>
 #include <functional>
 #include <initializer_list>
@@ -28,18 +27,14 @@
 #include "halfspace/io/output_file.hpp"
 #include "halfspace/io/sweep_writer.hpp"
 #include "halfspace/io/xdmf_writer.hpp"
-#include "halfspace/material.hpp"
 #include "halfspace/memory_estimate.hpp"
-#include "halfspace/solvers/adhesion_law.hpp"
+#include "halfspace/physical_ranges.hpp"
 #include "halfspace/solvers/frictional_solve.hpp"
-#include "halfspace/solvers/solver_factory.hpp"
 #include "halfspace/stress/stress_volume.hpp"
 #include "halfspace/stress/subsurface_stress.hpp"
 #include "halfspace/surface/padding.hpp"
 #include "halfspace/surface/preparation.hpp"
-#include "halfspace/threads.hpp"
 #include "memory_check.hpp"
-#include "physical_ranges.hpp"
 #include "processes.hpp"
 #include "stress_command.hpp"
 #include "value_parsing.hpp"
@@ -60,17 +55,12 @@ std::vector<std::string> given_names(const SolveOptions& options, Presence keys)
   return names;
 }
 
-double require_positive(const SolveOptions& options, std::string_view key, double value, std::string_view unit) {
-  if (!(std::isfinite(value) && value > 0.0)) {
-    throw InputError(fmt::format("{} is invalid: must be positive ({})", options.describe(key), unit));
-  }
-  return value;
-}
-
-// A length option (radius, wavelength, amplitude, spacing) within the
-// program's range of lengths.
+// A length option (radius, wavelength, amplitude, spacing): positive, and
+// within the program's range of lengths.
 double require_length(const SolveOptions& options, std::string_view key, double value) {
-  require_positive(options, key, value, "m");
+  if (!(std::isfinite(value) && value > 0.0)) {
+    throw InputError(fmt::format("{} is invalid: must be positive (m)", options.describe(key)));
+  }
   return require_in_range(options.describe(key), value, kMinLength, kMaxLength, "m");
 }
 
@@ -501,28 +491,23 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
   }
   std::optional<ElasticPair> pair;
   if (friction) {
-    pair = friction_pair_from(options);
+    pair.emplace(ElasticBody{*options.e1, *options.nu1}, ElasticBody{*options.e2, *options.nu2});
     check_friction(options, *friction, surface.grid, *pair, solver, problem.loading);
   }
   const std::size_t first_row = surface.first_row;
-  return SolveSetup{std::move(surface.grid),
+  return SolveSetup{std::move(problem),
+                    std::move(surface.grid),
                     std::move(surface.heights),
                     first_row,
                     std::move(surface.source),
                     std::move(surface.preparation),
-                    problem.e_star,
-                    problem.loading,
-                    std::move(problem.solver),
-                    problem.threads,
                     std::move(output),
                     options.quiet,
                     options.command_line,
                     options.config_text,
-                    std::move(problem.load_values),
                     options.plot,
                     stress.depths,
                     stress.nu,
-                    std::move(problem.coating),
                     friction,
                     pair};
 }

@@ -5,30 +5,26 @@
 #include <Eigen/Core>
 #include <filesystem>
 #include <functional>
-#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "halfspace/elastic_pair.hpp"
-#include "halfspace/fft/fft_planning.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/io/hdf5_height_map_reader.hpp"
-#include "halfspace/layered_material.hpp"
 #include "halfspace/linalg/communicator.hpp"
+#include "halfspace/problem.hpp"
 #include "halfspace/solvers/contact_solver.hpp"
 #include "halfspace/solvers/friction_options.hpp"
-#include "halfspace/solvers/loading.hpp"
-#include "halfspace/solvers/solver_options.hpp"
 #include "memory_check.hpp"
 #include "solve_options.hpp"
 
 namespace halfspace::app {
 
-// A fully checked solve: the surface on its grid, material, load, solver
-// settings and where the result goes.
-struct SolveSetup {
+// A fully checked solve: the problem (body, interface law, loads, solver,
+// threads), the surface on its grid and where the result goes.
+struct SolveSetup : Problem {
   Grid grid;
   // m, (ny, nx) row-major: every row, or (on an MPI process other than the
   // first) the rows from first_row on that this process solves.
@@ -37,22 +33,14 @@ struct SolveSetup {
   std::string height_source;  // "file.h5:/height" or "sphere (radius = 0.01 m)"
   // Height-map preparation steps, one line each; empty if none.
   std::vector<std::string> preparation;
-  double e_star = 0.0;            // Pa
-  Loading loading;                // a single solve's load; the first step of a sweep
-  solvers::SolverOptions solver;  // type, tolerance, iterations, FFT planning, deflation
-  int threads = 1;
   std::filesystem::path output;
   bool quiet = false;
   std::string command_line;
   std::string config_text;
-  std::vector<double> load_values;  // every load in order, in loading.mode's unit; more than one: a sweep
-  bool plot = false;                // draw figures with the plotting tool after writing
+  bool plot = false;  // draw figures with the plotting tool after writing
   // Subsurface stresses to write into the result: none when empty.
   std::vector<double> stress_depths;  // m
   double stress_nu = 0.0;
-  // A coated half-space (--layer-*, --substrate-*); e_star is then the
-  // layer's E1/(1 - nu1^2), its modulus against the rigid surface.
-  std::optional<LayeredMaterial> coating;
   // Friction (--friction with --tangential-force, --tangential-displacement
   // or --sliding): the tangential steps and the pair of bodies (E1, nu1, E2,
   // nu2), both set or neither.

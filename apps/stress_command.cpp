@@ -17,13 +17,13 @@
 #include "halfspace/io/stress_writer.hpp"
 #include "halfspace/io/xdmf_writer.hpp"
 #include "halfspace/memory_estimate.hpp"
+#include "halfspace/physical_ranges.hpp"
 #include "halfspace/stress/stress_volume.hpp"
 #include "halfspace/stress/subsurface_stress.hpp"
 #include "halfspace/threads.hpp"
 #include "halfspace/version.hpp"
 #include "memory_check.hpp"
 #include "option_table.hpp"
-#include "physical_ranges.hpp"
 #include "value_parsing.hpp"
 
 namespace halfspace::app {

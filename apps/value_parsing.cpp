@@ -12,7 +12,7 @@
 
 #include "halfspace/checked_size.hpp"
 #include "halfspace/error.hpp"
-#include "physical_ranges.hpp"
+#include "halfspace/physical_ranges.hpp"
 
 namespace halfspace::app {
 namespace {

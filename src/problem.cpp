@@ -1,6 +1,6 @@
-// The rules of a contact problem, checked in the order a reader scans a
-// command line (body, interface law, load, solver), so the first mistake is
-// the one reported. Numbers are shown with six digits (format_number).
+// The rules of a contact problem, checked in the order body, interface law
+// and solver, load, threads (the law decides whether loads are signed). Numbers are shown with six digits
+// (format_number).
 #include "halfspace/problem.hpp"
 
 #include <fmt/format.h>
@@ -57,20 +57,18 @@ constexpr std::array kNames{
 };
 
 // The option of ProblemOptions that sets each SolverOptions member a
-// SolverOptionError (or the adhesion law's ranges) names.
-std::string_view problem_name(std::string_view member, bool stress_given) {
-  static constexpr std::array<std::pair<std::string_view, std::string_view>, 8> kMembers{{
+// SolverOptionError names.
+std::string_view problem_name(std::string_view member) {
+  static constexpr std::array<std::pair<std::string_view, std::string_view>, 7> kMembers{{
       {"tolerance", "tol"},
       {"max_iterations", "max_iter"},
       {"type", "solver"},
       {"adhesion.work", "work_of_adhesion"},
-      {"adhesion.stress", "adhesion_stress"},
+      {"adhesion.range", "adhesion_range"},
       {"adhesion.tolerance", "adhesion_tol"},
       {"hardness", "hardness"},
-      {"adhesion", "adhesion"},
   }};
   if (member.starts_with("deflation")) return "deflation_block";
-  if (member == "adhesion.range") return stress_given ? "adhesion_stress" : "adhesion_range";
   for (const auto& [known, name] : kMembers) {
     if (known == member) return name;
   }
@@ -84,6 +82,9 @@ std::string text(const std::vector<double>& values) {
   return fmt::format("{}", fmt::join(parts, ","));
 }
 
+// Options paired with whether they were given.
+using Presence = std::vector<std::pair<std::string_view, bool>>;
+
 // The rules of one problem's options, written with the front end's spelling.
 class Rules {
  public:
@@ -93,24 +94,23 @@ class Rules {
   std::string describe(std::string_view option, double value) const {
     return s_.describe(option, format_number(value));
   }
-  // The names of the options given among `options`.
-  std::vector<std::string> given(std::initializer_list<std::pair<std::string_view, bool>> options) const {
-    std::vector<std::string> names;
-    for (const auto& [option, present] : options) {
-      if (present) names.push_back(name(option));
-    }
-    return names;
+  // E1, nu1, E2, nu2, each with whether it was given.
+  Presence body_constants() const {
+    return {
+        {"E1", o_.e1.has_value()}, {"nu1", o_.nu1.has_value()}, {"E2", o_.e2.has_value()}, {"nu2", o_.nu2.has_value()}};
   }
-  std::vector<std::string> missing(std::initializer_list<std::pair<std::string_view, bool>> options) const {
+  // The names of the options among `options` that were given (or not).
+  std::vector<std::string> given(const Presence& options, bool present = true) const {
     std::vector<std::string> names;
-    for (const auto& [option, present] : options) {
-      if (!present) names.push_back(name(option));
+    for (const auto& [option, is_given] : options) {
+      if (is_given == present) names.push_back(name(option));
     }
     return names;
   }
   double positive(std::string_view option, double value, std::string_view unit) const {
     if (!(std::isfinite(value) && value > 0.0)) {
-      throw OptionError(std::string(option), format_number(value), fmt::format("is invalid: must be positive ({})", unit));
+      throw OptionError(std::string(option), format_number(value),
+                        fmt::format("is invalid: must be positive ({})", unit));
     }
     return value;
   }
@@ -129,16 +129,49 @@ class Rules {
     return nu;
   }
 
-  // Runs `function`; an OptionError it throws (a SolverOptions rule, the
-  // adhesion law's ranges) is named by the option of the problem that set it.
+  // Runs `function`; an OptionError it throws (a SolverOptions rule) is
+  // named by the option of the problem that set it.
   template <class Function>
   auto restated(Function&& function) const {
     try {
       return function();
     } catch (const OptionError& error) {
-      const std::string_view option = problem_name(error.option(), o_.adhesion_stress.has_value());
+      const std::string_view option = problem_name(error.option());
       throw OptionError(std::string(option), error.value(), error.rule());
     }
+  }
+
+  // The law's given and derived quantities in the ranges of their kinds: a
+  // derived one obeys the range of the option it replaces (a stress w / range
+  // of 1e306 Pa ended "converged" with a force of -inf, issue 32).
+  void law_ranges(const AdhesionLaw& law) const {
+    if (!(std::isfinite(law.work) && law.work > 0.0)) {
+      throw OptionError("work_of_adhesion", format_number(law.work) + " J/m^2",
+                        "is invalid: must be positive and finite");
+    }
+    const std::string work = fmt::format("the work of adhesion {} J/m^2", format_number(law.work));
+    const auto outside = [](double value, double low, double high) { return !(value >= low && value <= high); };
+    if (o_.adhesion_stress) {  // sigma0 given; the range h0 = w / sigma0 derived
+      const double sigma0 = law.work / law.range;
+      const std::string given = s_.describe("adhesion_stress", format_number(sigma0) + " Pa");
+      require_in_range(given, sigma0, kMinMeanPressure, kMaxMeanPressure, "Pa");
+      if (outside(law.range, kMinLength, kMaxLength)) {
+        throw InputError(
+            fmt::format("{} is invalid with {}: the range h0 = work / stress = {} m it gives must lie in "
+                        "[{:g}, {:g}] m, the range of lengths",
+                        given, work, format_number(law.range), kMinLength, kMaxLength));
+      }
+    } else {
+      const std::string given = s_.describe("adhesion_range", format_number(law.range) + " m");
+      require_in_range(given, law.range, kMinLength, kMaxLength, "m");
+      if (outside(law.stress(), kMinMeanPressure, kMaxMeanPressure)) {
+        throw InputError(
+            fmt::format("{} is invalid with {}: the adhesive stress work / range = {} Pa it gives must "
+                        "lie in [{:g}, {:g}] Pa, the range of stresses",
+                        given, work, format_number(law.stress()), kMinMeanPressure, kMaxMeanPressure));
+      }
+    }
+    law.validate();
   }
 
   double body() const;
@@ -154,10 +187,7 @@ class Rules {
 };
 
 double Rules::body() const {
-  const auto constants = {std::pair<std::string_view, bool>{"E1", o_.e1.has_value()},
-                          {"nu1", o_.nu1.has_value()},
-                          {"E2", o_.e2.has_value()},
-                          {"nu2", o_.nu2.has_value()}};
+  const Presence constants = body_constants();
   const std::vector<std::string> present = given(constants);
   if (o_.e_star && !present.empty()) {
     throw InputError(fmt::format("{} cannot be combined with {}: give either {} or all of {}, {}, {}, {}",
@@ -171,8 +201,8 @@ double Rules::body() const {
   }
   if (present.size() < 4) {
     throw InputError(fmt::format("incomplete material: missing {} (give all of {}, {}, {}, {}, or {})",
-                                 fmt::join(missing(constants), ", "), name("E1"), name("nu1"), name("E2"), name("nu2"),
-                                 name("e_star")));
+                                 fmt::join(given(constants, false), ", "), name("E1"), name("nu1"), name("E2"),
+                                 name("nu2"), name("e_star")));
   }
   // A rigid body 2 (E2 = inf) adds no compliance: E* = E1 / (1 - nu1^2).
   const bool rigid2 = std::isinf(*o_.e2) && *o_.e2 > 0.0;
@@ -188,25 +218,22 @@ double Rules::body() const {
     e_star = composite_modulus({e1, *o_.nu1}, {modulus("E2", *o_.e2), *o_.nu2});
   }
   // nu near -1 makes a body's compliance vanish and E* grow without bound.
-  return require_in_range(fmt::format("the composite modulus E* = {:g} Pa of {}, {}, {}, {}", e_star,
-                                      describe("E1", *o_.e1), describe("nu1", *o_.nu1), describe("E2", *o_.e2),
-                                      describe("nu2", *o_.nu2)),
-                          e_star, kMinModulus, kMaxModulus, "Pa");
+  return require_in_range(
+      fmt::format("the composite modulus E* = {:g} Pa of {}, {}, {}, {}", e_star, describe("E1", *o_.e1),
+                  describe("nu1", *o_.nu1), describe("E2", *o_.e2), describe("nu2", *o_.nu2)),
+      e_star, kMinModulus, kMaxModulus, "Pa");
 }
 
 std::optional<LayeredMaterial> Rules::coating() const {
-  const auto constants = {std::pair<std::string_view, bool>{"layer_thickness", o_.layer_thickness.has_value()},
-                          {"layer_E", o_.layer_e.has_value()},
-                          {"layer_nu", o_.layer_nu.has_value()},
-                          {"substrate_E", o_.substrate_e.has_value()},
-                          {"substrate_nu", o_.substrate_nu.has_value()}};
+  const Presence constants{{"layer_thickness", o_.layer_thickness.has_value()},
+                           {"layer_E", o_.layer_e.has_value()},
+                           {"layer_nu", o_.layer_nu.has_value()},
+                           {"substrate_E", o_.substrate_e.has_value()},
+                           {"substrate_nu", o_.substrate_nu.has_value()}};
   const std::vector<std::string> present = given(constants);
   if (present.empty()) return std::nullopt;
-  const std::vector<std::string> material = given({{"e_star", o_.e_star.has_value()},
-                                                   {"E1", o_.e1.has_value()},
-                                                   {"nu1", o_.nu1.has_value()},
-                                                   {"E2", o_.e2.has_value()},
-                                                   {"nu2", o_.nu2.has_value()}});
+  std::vector<std::string> material = given(body_constants());
+  if (o_.e_star) material.insert(material.begin(), name("e_star"));
   if (!material.empty()) {
     throw InputError(fmt::format(
         "{} cannot be combined with {}: a coated half-space against a rigid surface replaces the material options",
@@ -216,7 +243,7 @@ std::optional<LayeredMaterial> Rules::coating() const {
     std::vector<std::string> all;
     for (const auto& [option, _] : constants) all.push_back(name(option));
     throw InputError(fmt::format("incomplete coated half-space: missing {} (give all of {})",
-                                 fmt::join(missing(constants), ", "), fmt::join(all, ", ")));
+                                 fmt::join(given(constants, false), ", "), fmt::join(all, ", ")));
   }
   return LayeredMaterial{length("layer_thickness", *o_.layer_thickness),
                          {modulus("layer_E", *o_.layer_e), poisson("layer_nu", *o_.layer_nu)},
@@ -230,8 +257,8 @@ std::pair<Loading, std::vector<double>> Rules::loads() const {
                                                   {"mean_pressure", o_.mean_pressure.has_value()},
                                                   {"approach", o_.approach.has_value()}});
   if (present.empty()) {
-    throw InputError(fmt::format("no load given: pass one of {}, {}, {}", name("force"), name("mean_pressure"),
-                                 name("approach")));
+    throw InputError(
+        fmt::format("no load given: pass one of {}, {}, {}", name("force"), name("mean_pressure"), name("approach")));
   }
   if (present.size() > 1) {
     throw InputError(fmt::format("{} cannot be combined: give exactly one of {}, {}, {}", fmt::join(present, " and "),
@@ -269,7 +296,8 @@ std::optional<solvers::SolverOptions::Adhesion> Rules::adhesion() const {
                                                     {"adhesion_stress", o_.adhesion_stress.has_value()},
                                                     {"adhesion_tol", o_.adhesion_tol.has_value()},
                                                     {"adhesion_precondition", o_.adhesion_precondition.has_value()}});
-    if (!present.empty()) throw InputError(fmt::format("{} needs {} md|exponential", present.front(), name("adhesion")));
+    if (!present.empty())
+      throw InputError(fmt::format("{} needs {} md|exponential", present.front(), name("adhesion")));
     return std::nullopt;
   }
   const std::string adhesion = s_.describe("adhesion", *o_.adhesion);
@@ -305,7 +333,7 @@ std::optional<solvers::SolverOptions::Adhesion> Rules::adhesion() const {
                                 : AdhesionLaw{type, w, *o_.adhesion_range};
   // Given or derived (w / sigma0, w / range), the stress and the range stay
   // in the ranges of their kinds.
-  restated([&] { check_adhesion_law_ranges(made.law, o_.adhesion_stress.has_value()); });
+  law_ranges(made.law);
   if (o_.adhesion_tol) made.tolerance = *o_.adhesion_tol;
   if (o_.adhesion_precondition) {
     if (*o_.adhesion_precondition != "on" && *o_.adhesion_precondition != "off") {
@@ -330,8 +358,7 @@ solvers::SolverOptions Rules::solver() const {
       if (block < 0) {
         throw OptionError("deflation_block", fmt::format("{}", block), "is invalid: give 0 (off) or a block size");
       }
-      solver.deflation.mode =
-          block == 0 ? solvers::DeflationOptions::Mode::off : solvers::DeflationOptions::Mode::on;
+      solver.deflation.mode = block == 0 ? solvers::DeflationOptions::Mode::off : solvers::DeflationOptions::Mode::on;
       if (block != 0) solver.deflation.block = static_cast<std::size_t>(block);
     }
     if (o_.hardness) solver.interface_law.hardness = *o_.hardness;
@@ -387,8 +414,8 @@ Problem make_problem(const ProblemOptions& options, const OptionSpelling& spelli
     Problem problem;
     problem.coating = rules.coating();
     problem.e_star = problem.coating ? plane_strain_modulus(problem.coating->layer) : rules.body();
+    problem.solver = rules.solver();  // the interface law first: adhesion makes loads signed
     std::tie(problem.loading, problem.load_values) = rules.loads();
-    problem.solver = rules.solver();
     problem.threads = rules.threads();
     return problem;
   } catch (const OptionError& error) {
@@ -439,12 +466,11 @@ void Problem::check_grid(const Grid& grid, const OptionSpelling& spelling) const
       solver.validate(grid);
     }
   } catch (const OptionError& error) {
-    throw spelled(OptionError(std::string(problem_name(error.option(), false)), error.value(), error.rule()), spelling);
+    throw spelled(OptionError(std::string(problem_name(error.option())), error.value(), error.rule()), spelling);
   }
 }
 
-void Problem::check_heights(const Grid& grid, std::span<const double> heights,
-                            const OptionSpelling& spelling) const {
+void Problem::check_heights(const Grid& grid, std::span<const double> heights, const OptionSpelling& spelling) const {
   if (loading.mode != ControlMode::approach || !grid.periodic() || heights.empty()) return;
   const Eigen::Map<const Eigen::ArrayXd> h(heights.data(), static_cast<Eigen::Index>(heights.size()));
   const double mean_gap = h.maxCoeff() - h.mean();

@@ -1,5 +1,5 @@
 // The ranges the front ends (the program and the Python package) accept for
-// physical quantities, and the checks of the quantities they derive. The
+// physical quantities (make_problem, problem.hpp, checks them). The
 // solvers take any positive, finite, normal value (their tests use E* = 1
 // and unit spacings); a user works in SI units, where values far outside
 // these ranges are typing mistakes, and where they would overflow or
@@ -10,8 +10,6 @@
 
 #include <string>
 #include <string_view>
-
-#include "halfspace/solvers/adhesion_law.hpp"
 
 namespace halfspace {
 
@@ -31,15 +29,5 @@ inline constexpr double kMaxMeanPressure = 1e13;
 // "<what> is invalid: allowed range is [low, high] <unit>", so `what` shows
 // the value: "--E-star 1e-300", "spacing dx = 1e-15 m (--size 1e-6 / --grid 1000)".
 double require_in_range(const std::string& what, double value, double low, double high, std::string_view unit);
-
-// An adhesion law a user gave as the work of adhesion w and the range
-// (adhesion.range), or, for Maugis-Dugdale, as w and the stress sigma0
-// (adhesion.stress, `given_as_stress`; the law's range is then w / sigma0).
-// The given range or stress and the one derived from it must both lie in
-// the ranges above: a derived quantity obeys the range of the option it
-// replaces. Throws OptionError whose option() is "adhesion.work",
-// "adhesion.range" or "adhesion.stress" (the front end's names are mapped
-// from these), after law.validate()'s rules.
-void check_adhesion_law_ranges(const solvers::AdhesionLaw& law, bool given_as_stress);
 
 }  // namespace halfspace

@@ -185,20 +185,16 @@ def self_affine(nx: int, ny: int, dimension: int, dx: float, dy: float, hurst: f
                 rolloff: float, cutoff_long: float, rms_height: Optional[float], rms_slope: Optional[float],
                 seed: int) -> Tuple[npt.NDArray[np.float64], dict[str, float]]: ...
 def surface_statistics(heights: npt.NDArray[np.float64], dx: float, dy: float, periodic: bool) -> dict[str, float]: ...
-def solve(heights: npt.NDArray[np.float64], dx: float, dy: float, boundary: str, e_star: float,
-          coating: Optional[Sequence[float]], mode: str, value: float, solver: dict[str, Any], threads: Optional[int], initial_pressure: Optional[np.ndarray],
-          progress: Optional[Callable[[int, float], None]], command_line: str, height_source: str,
-          preparation: Sequence[str]) -> Result: ...
-def sweep(heights: npt.NDArray[np.float64], dx: float, dy: float, boundary: str, e_star: float,
-          coating: Optional[Sequence[float]], mode: str, values: Sequence[float], solver: dict[str, Any], threads: Optional[int], warm_start: bool,
-          progress: Optional[Callable[[int, float], None]], command_line: str, height_source: str,
+def solve(heights: npt.NDArray[np.float64], dx: float, dy: float, boundary: str, problem: dict[str, Any],
+          initial_pressure: Optional[np.ndarray], progress: Optional[Callable[[int, float], None]],
+          command_line: str, height_source: str, preparation: Sequence[str]) -> Result: ...
+def sweep(heights: npt.NDArray[np.float64], dx: float, dy: float, boundary: str, problem: dict[str, Any],
+          warm_start: bool, progress: Optional[Callable[[int, float], None]], command_line: str, height_source: str,
           preparation: Sequence[str]) -> Sweep: ...
-def friction(heights: npt.NDArray[np.float64], dx: float, dy: float, boundary: str, E1: Optional[float], nu1: float,
-             E2: float, nu2: float, coated: bool, mode: str, value: float, solver: dict[str, Any],
-             threads: Optional[int], progress: Optional[Callable[[int, float], None]], mu: float, control: str,
+def friction(heights: npt.NDArray[np.float64], dx: float, dy: float, boundary: str, problem: dict[str, Any],
+             progress: Optional[Callable[[int, float], None]], mu: float, control: str,
              loads: Sequence[Sequence[float]], tangential_tol: Optional[float], tangential_max_iter: Optional[int],
-             command_line: str,
-             height_source: str, preparation: Sequence[str]) -> History: ...
+             command_line: str, height_source: str, preparation: Sequence[str]) -> History: ...
 def read_result(path: str, step: int = -1) -> Result: ...
 def lubricate(heights: npt.NDArray[np.float64], dx: float, dy: float, viscosity: float,
               entrainment_velocity: Sequence[float], sliding_velocity: Sequence[float], separation: Optional[float],

@@ -20,23 +20,6 @@ def composite_modulus(E1: float, nu1: float, E2: float, nu2: float) -> float:
     return _core.composite_modulus(E1, nu1, E2, nu2)
 
 
-def _material(e_star, E1, nu1, E2, nu2) -> float:
-    constants = {"E1": E1, "nu1": nu1, "E2": E2, "nu2": nu2}
-    given = [name for name, value in constants.items() if value is not None]
-    if e_star is not None and given:
-        raise _core.InputError(f"e_star cannot be combined with {', '.join(given)}: give either e_star or all of "
-                               "E1, nu1, E2, nu2")
-    if e_star is not None:
-        return float(e_star)
-    if not given:
-        raise _core.InputError("no material given: pass e_star, or E1, nu1, E2 and nu2")
-    if len(given) < 4:
-        missing = [name for name in constants if constants[name] is None]
-        raise _core.InputError(f"incomplete material: missing {', '.join(missing)} (give all of E1, nu1, E2, nu2, "
-                               "or e_star)")
-    return _core.composite_modulus(E1, nu1, E2, nu2)
-
-
 _COATING_KEYS = ("thickness", "layer_E", "layer_nu", "substrate_E", "substrate_nu")
 
 
@@ -60,24 +43,19 @@ def _coating(coating, e_star, E1, nu1, E2, nu2) -> Optional[list]:
     return [float(coating[key]) for key in _COATING_KEYS]
 
 
-def _load(force, mean_pressure, approach, plural: bool):
-    values = {"force": force, "mean_pressure": mean_pressure, "approach": approach}
-    given = [name for name, value in values.items() if value is not None]
-    if not given:
-        raise _core.InputError("no load given: pass one of force, mean_pressure, approach")
-    if len(given) > 1:
-        raise _core.InputError(f"{' and '.join(given)} cannot be combined: give exactly one of force, "
-                               "mean_pressure, approach")
-    mode = given[0]
-    value = values[mode]
-    if plural:
-        loads = np.atleast_1d(np.asarray(value, dtype=np.float64))
-        if loads.ndim != 1 or loads.size == 0:
+def _loads(force, mean_pressure, approach, plural: bool) -> dict:
+    """The load keywords given, each as a list of values (the library checks that exactly one is)."""
+    loads = {}
+    for mode, value in (("force", force), ("mean_pressure", mean_pressure), ("approach", approach)):
+        if value is None:
+            continue
+        values = np.atleast_1d(np.asarray(value, dtype=np.float64))
+        if plural and (values.ndim != 1 or values.size == 0):
             raise _core.InputError(f"{mode} must be a non-empty sequence of values for a sweep")
-        return mode, [float(v) for v in loads]
-    if np.ndim(value) != 0:
-        raise _core.InputError(f"{mode} must be one number for solve(); use sweep() for several loads")
-    return mode, float(value)
+        if not plural and np.ndim(value) != 0:
+            raise _core.InputError(f"{mode} must be one number for solve(); use sweep() for several loads")
+        loads[mode] = [float(v) for v in values]
+    return loads
 
 
 def _surface(surface, dx, dy) -> HeightMap:
@@ -97,26 +75,39 @@ def _call_text(name: str, surface: HeightMap, keywords: dict) -> str:
     return f"python: halfspace.{name}(<{grid} surface>, {shown})"
 
 
-def _solver_options(solver, tol, max_iter, fft_planning, deflation_block, laws) -> dict:
-    # Keys are the keywords; _core maps each onto SolverOptions (python/src/solve.cpp).
-    return {"solver": solver, "tol": tol, "max_iter": max_iter, "fft_planning": fft_planning,
-            "deflation_block": deflation_block, **laws}
+# The names make_problem gives the coating's constants (halfspace/problem.hpp).
+_LAYER_NAMES = ("layer_thickness", "layer_E", "layer_nu", "substrate_E", "substrate_nu")
+
+
+def _problem(e_star, E1, nu1, E2, nu2, coating, loads, solver, tol, max_iter, fft_planning, deflation_block, threads,
+             laws) -> dict:
+    """The problem's keywords that were given; _core's make_problem (halfspace/problem.hpp) holds their rules."""
+    layers = _coating(coating, e_star, E1, nu1, E2, nu2)
+    keywords = {"e_star": e_star, "E1": E1, "nu1": nu1, "E2": E2, "nu2": nu2, **dict(zip(_LAYER_NAMES, layers or ())),
+                **loads, "solver": solver, "tol": tol, "max_iter": max_iter, "fft_planning": fft_planning,
+                "deflation_block": deflation_block, "threads": threads, **laws}
+    return {key: value for key, value in keywords.items() if value is not None}
+
+
+def _shown(problem: dict, single: bool) -> dict:
+    """The problem's keywords as the call shows them: a single solve's load as one number."""
+    return {key: value[0] if single and key in _LOADS else value for key, value in problem.items()}
 
 
 def _laws(hardness, adhesion, work_of_adhesion, adhesion_range, adhesion_stress, adhesion_tol,
           adhesion_precondition) -> dict:
     """The interface-law keywords that were given."""
-    given = {"hardness": hardness, "adhesion": adhesion, "work_of_adhesion": work_of_adhesion,
-             "adhesion_range": adhesion_range, "adhesion_stress": adhesion_stress, "adhesion_tol": adhesion_tol,
-             "adhesion_precondition": adhesion_precondition}
-    return {key: value for key, value in given.items() if value is not None}
+    precondition = None if adhesion_precondition is None else ("on" if adhesion_precondition else "off")
+    return {"hardness": hardness, "adhesion": adhesion, "work_of_adhesion": work_of_adhesion,
+            "adhesion_range": adhesion_range, "adhesion_stress": adhesion_stress, "adhesion_tol": adhesion_tol,
+            "adhesion_precondition": precondition}
 
 
 def solve(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, dy: Optional[float] = None,
           e_star: Optional[float] = None, E1: Optional[float] = None, nu1: Optional[float] = None,
           E2: Optional[float] = None, nu2: Optional[float] = None, boundary: str = "free",
           force: Optional[float] = None, mean_pressure: Optional[float] = None, approach: Optional[float] = None,
-          solver: str = "pk-multilevel", tol: float = 1e-10, max_iter: Optional[int] = None,
+          solver: Optional[str] = None, tol: float = 1e-10, max_iter: Optional[int] = None,
           threads: Optional[int] = None, initial_pressure: Optional[np.ndarray] = None,
           progress: Optional[ProgressCallback] = None, fft_planning: str = "measure",
           deflation_block: Optional[int] = None, hardness: Optional[float] = None,
@@ -137,7 +128,7 @@ def solve(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
     boundary: "free" (an isolated patch) or "periodic" (the surface repeats).
     force / mean_pressure / approach: exactly one load: total force (N, N/m
         for a profile), mean pressure (Pa) or rigid-body approach (m).
-    solver: "pk-multilevel" (default), "pk-fourier", "pk", "lemke", "lcpquad".
+    solver: "pk-multilevel" (None: the default), "pk-fourier", "pk", "lemke", "lcpquad".
     tol: relative residual at which the solve stops; max_iter: iteration
         limit (None: the library's 10000; lcpquad takes none).
     threads: threads of the solve (None: the CPUs this process may use). It
@@ -197,26 +188,21 @@ def solve(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
                          _laws(hardness, adhesion, work_of_adhesion, adhesion_range, adhesion_stress, adhesion_tol,
                                adhesion_precondition), coating, tangential)[0]
     height_map = _surface(surface, dx, dy)
-    layers = _coating(coating, e_star, E1, nu1, E2, nu2)
-    modulus = 0.0 if layers else _material(e_star, E1, nu1, E2, nu2)
-    mode, value = _load(force, mean_pressure, approach, plural=False)
     start = None if initial_pressure is None else np.ascontiguousarray(initial_pressure, dtype=np.float64)
-    options = _solver_options(solver, tol, max_iter, fft_planning, deflation_block,
-                              _laws(hardness, adhesion, work_of_adhesion, adhesion_range, adhesion_stress,
-                                    adhesion_tol, adhesion_precondition))
-    material = {"coating": dict(zip(_COATING_KEYS, layers))} if layers else {"e_star": modulus}
-    call = _call_text("solve", height_map, {**material, "boundary": boundary, mode: value, **options,
-                                            "threads": threads})
-    return _core.solve(height_map.heights, height_map.dx, height_map.dy or 0.0, boundary, modulus, layers, mode,
-                       value, options, threads, start, progress, call, height_map.source,
-                       list(height_map.preparation))
+    problem = _problem(e_star, E1, nu1, E2, nu2, coating, _loads(force, mean_pressure, approach, plural=False), solver,
+                       tol, max_iter, fft_planning, deflation_block, threads,
+                       _laws(hardness, adhesion, work_of_adhesion, adhesion_range, adhesion_stress, adhesion_tol,
+                             adhesion_precondition))
+    call = _call_text("solve", height_map, {"boundary": boundary, **_shown(problem, single=True)})
+    return _core.solve(height_map.heights, height_map.dx, height_map.dy or 0.0, boundary, problem, start, progress,
+                       call, height_map.source, list(height_map.preparation))
 
 
 def sweep(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, dy: Optional[float] = None,
           e_star: Optional[float] = None, E1: Optional[float] = None, nu1: Optional[float] = None,
           E2: Optional[float] = None, nu2: Optional[float] = None, boundary: str = "free",
           force: Optional[Sequence[float]] = None, mean_pressure: Optional[Sequence[float]] = None,
-          approach: Optional[Sequence[float]] = None, solver: str = "pk-multilevel", tol: float = 1e-10,
+          approach: Optional[Sequence[float]] = None, solver: Optional[str] = None, tol: float = 1e-10,
           max_iter: Optional[int] = None, threads: Optional[int] = None, warm_start: bool = True,
           progress: Optional[ProgressCallback] = None, fft_planning: str = "measure",
           deflation_block: Optional[int] = None, hardness: Optional[float] = None,
@@ -232,18 +218,14 @@ def sweep(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
     ``.to_pandas()`` a DataFrame, ``.save(path)`` the program's HDF5 and CSV.
     A step that does not converge is kept with its status."""
     height_map = _surface(surface, dx, dy)
-    layers = _coating(coating, e_star, E1, nu1, E2, nu2)
-    modulus = 0.0 if layers else _material(e_star, E1, nu1, E2, nu2)
-    mode, values = _load(force, mean_pressure, approach, plural=True)
-    options = _solver_options(solver, tol, max_iter, fft_planning, deflation_block,
-                              _laws(hardness, adhesion, work_of_adhesion, adhesion_range, adhesion_stress,
-                                    adhesion_tol, adhesion_precondition))
-    material = {"coating": dict(zip(_COATING_KEYS, layers))} if layers else {"e_star": modulus}
-    call = _call_text("sweep", height_map, {**material, "boundary": boundary, mode: values, **options,
-                                            "threads": threads, "warm_start": warm_start})
-    return _core.sweep(height_map.heights, height_map.dx, height_map.dy or 0.0, boundary, modulus, layers, mode,
-                       values, options, threads, warm_start, progress, call, height_map.source,
-                       list(height_map.preparation))
+    problem = _problem(e_star, E1, nu1, E2, nu2, coating, _loads(force, mean_pressure, approach, plural=True), solver,
+                       tol, max_iter, fft_planning, deflation_block, threads,
+                       _laws(hardness, adhesion, work_of_adhesion, adhesion_range, adhesion_stress, adhesion_tol,
+                             adhesion_precondition))
+    call = _call_text("sweep", height_map, {"boundary": boundary, **_shown(problem, single=False),
+                                            "warm_start": warm_start})
+    return _core.sweep(height_map.heights, height_map.dx, height_map.dy or 0.0, boundary, problem, warm_start,
+                       progress, call, height_map.source, list(height_map.preparation))
 
 
 def _pair(value, name: str, plural: bool):
@@ -305,22 +287,16 @@ def _friction(name, surface, dx, dy, e_star, E1, nu1, E2, nu2, boundary, force, 
         missing = [key for key in constants if constants[key] is None]
         raise _core.InputError(f"friction={mu!r} needs E1, nu1, E2 and nu2 (missing {', '.join(missing)}): E* alone "
                                "does not fix the tangential compliance")
-    if e_star is not None and given:
-        _material(e_star, E1, nu1, E2, nu2)  # refuses the combination, naming both
-    mode, value = _load(force, mean_pressure, approach, plural=False)
-    options = _solver_options(solver, tol, max_iter, fft_planning, deflation_block, laws)
-    material = {"E1": E1, "nu1": nu1, "E2": E2, "nu2": nu2} if e_star is None else {"e_star": e_star}
-    call = _call_text(name, height_map, {**material, "boundary": boundary, mode: value, **options,
-                                         "threads": threads, "friction": mu,
+    problem = _problem(e_star, E1, nu1, E2, nu2, coating, _loads(force, mean_pressure, approach, plural=False), solver,
+                       tol, max_iter, fft_planning, deflation_block, threads, laws)
+    shown = steps if len(steps) > 1 else steps[0]
+    call = _call_text(name, height_map, {"boundary": boundary, **_shown(problem, single=True), "friction": mu,
                                          {"force": "tangential_force", "displacement": "tangential_displacement",
-                                          "sliding": "sliding"}[control]: steps if len(steps) > 1 else steps[0],
+                                          "sliding": "sliding"}[control]: shown,
                                          "tangential_tol": tangential_tol,
                                          "tangential_max_iter": tangential_max_iter})
-    e1 = None if (e_star is not None or coating is not None) else float(E1)
-    return _core.friction(height_map.heights, height_map.dx, height_map.dy or 0.0, boundary, e1,
-                          float(nu1 or 0.0), float(E2 or 0.0), float(nu2 or 0.0), coating is not None, mode, value,
-                          options, threads, progress, mu, control, steps, tangential_tol, tangential_max_iter, call,
-                          height_map.source,
+    return _core.friction(height_map.heights, height_map.dx, height_map.dy or 0.0, boundary, problem, progress, mu,
+                          control, steps, tangential_tol, tangential_max_iter, call, height_map.source,
                           list(height_map.preparation))
 
 
@@ -332,7 +308,7 @@ def history(surface: Union[HeightMap, np.ndarray], *, friction: float, dx: Optio
             tangential_force: Optional[Sequence[Union[float, Sequence[float]]]] = None,
             tangential_displacement: Optional[Sequence[Union[float, Sequence[float]]]] = None,
             tangential_tol: Optional[float] = None, tangential_max_iter: Optional[int] = None,
-            solver: str = "pk-multilevel", tol: float = 1e-10,
+            solver: Optional[str] = None, tol: float = 1e-10,
             max_iter: Optional[int] = None, threads: Optional[int] = None,
             progress: Optional[ProgressCallback] = None, fft_planning: str = "measure",
             deflation_block: Optional[int] = None, hardness: Optional[float] = None,

@@ -7,7 +7,6 @@
 #include "bindings.hpp"
 #include "halfspace/error.hpp"
 #include "halfspace/material.hpp"
-#include "halfspace/solvers/solver_options.hpp"
 #include "halfspace/threads.hpp"
 #include "halfspace/version.hpp"
 
@@ -18,19 +17,6 @@ namespace {
 // released after the interpreter has shut down.
 PyObject* input_error = nullptr;
 PyObject* file_error = nullptr;
-
-// The keyword of halfspace.solve that sets each SolverOptions member.
-std::string keyword_for(const std::string& option) {
-  if (option == "tolerance") return "tol";
-  if (option == "max_iterations") return "max_iter";
-  if (option == "type") return "solver";
-  if (option.starts_with("deflation")) return "deflation_block";
-  if (option == "adhesion.work") return "work_of_adhesion";
-  if (option == "adhesion.range") return "adhesion_range";
-  if (option == "adhesion.stress") return "adhesion_stress";
-  if (option == "adhesion.tolerance") return "adhesion_tol";
-  return option;
-}
 
 }  // namespace
 
@@ -61,7 +47,8 @@ void bind_errors(nb::module_& module) {
     } catch (const FileError& error) {
       PyErr_SetString(file_error, error.what());
     } catch (const OptionError& error) {
-      const std::string message = fmt::format("{}={} {}", keyword_for(error.option()), error.value(), error.rule());
+      // Named as the keyword (make_problem spells the problem's own).
+      const std::string message = fmt::format("{}={} {}", error.option(), error.value(), error.rule());
       PyErr_SetString(input_error, message.c_str());
     } catch (const InputError& error) {
       PyErr_SetString(input_error, error.what());
@@ -89,7 +76,6 @@ NB_MODULE(_core, module) {
       },
       nb::arg("E1"), nb::arg("nu1"), nb::arg("E2"), nb::arg("nu2"),
       "E* (Pa) from 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2.");
-  module.def("checked_composite_modulus", &checked_composite_modulus, nb::arg("e_star"));
 
   bind_surfaces(module);
   bind_results(module);

@@ -132,8 +132,8 @@ TEST(AdhesionCliTest, RefusesInconsistentAdhesionOptions) {
 // the option it replaces (no -inf force, no h0 of 5e-302 m), and a law whose
 // cohesive zone the grid cannot resolve is refused with the numbers.
 TEST(AdhesionCliTest, RefusesAdhesionParametersOutOfRange) {
-  // The rules are the library's (check_adhesion_law_ranges, which Python
-  // calls too), restated with the flags.
+  // The rules are the library's (make_problem, which Python calls too),
+  // written with the flags.
   expect_refused({"--adhesion", "md", "--work-of-adhesion", "1e300", "--adhesion-range", "1e-6"},
                  "--adhesion-range 1e-6 is invalid with the work of adhesion 1e+300 J/m^2: the adhesive stress work / "
                  "range = 1e+306 Pa it gives must lie in [1e-09, 1e+13] Pa",

@@ -69,7 +69,7 @@ def test_coating_keyword_is_checked():
     with pytest.raises(hs.InputError, match="missing substrate_nu"):
         hs.solve(surface, dx=1e-6, coating={k: v for k, v in HARD_COATING.items() if k != "substrate_nu"},
                  force=1.0)
-    with pytest.raises(hs.InputError, match="layer thickness t = -1 m is invalid"):
+    with pytest.raises(hs.InputError, match=r"coating\['thickness'\]=-1 is invalid: must be positive \(m\)"):
         hs.solve(surface, dx=1e-6, coating={**HARD_COATING, "thickness": -1.0}, force=1.0)
     with pytest.raises(hs.InputError, match="coated half-space"):
         hs.solve(surface, dx=1e-6, coating=HARD_COATING, force=1.0, solver="lemke")

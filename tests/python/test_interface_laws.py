@@ -72,7 +72,7 @@ def test_adhesion_parameters_keep_the_programs_ranges():
 
 def test_adhesion_keywords_are_checked():
     flat = np.zeros(64)
-    with pytest.raises(hs.InputError, match="need adhesion"):
+    with pytest.raises(hs.InputError, match="work_of_adhesion needs adhesion"):
         hs.solve(flat, dx=1e-6, e_star=E_STAR, approach=0.0, work_of_adhesion=0.05)
     with pytest.raises(hs.InputError, match="work_of_adhesion"):
         hs.solve(flat, dx=1e-6, e_star=E_STAR, approach=0.0, adhesion="md", adhesion_range=1e-8)

@@ -1,0 +1,143 @@
+// The problem builder (problem.hpp): the rules the program and Python share,
+// each message naming the option as the front end spells it.
+#include "halfspace/problem.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "halfspace/error.hpp"
+#include "halfspace/material.hpp"
+
+namespace halfspace {
+namespace {
+
+// A front end that writes options as flags, for the messages below.
+class Flags : public OptionSpelling {
+ public:
+  std::string name(std::string_view option) const override { return "--" + std::string(option); }
+  std::string describe(std::string_view option, std::string_view value) const override {
+    return name(option) + " " + std::string(value);
+  }
+};
+
+ProblemOptions sphere_problem() {
+  ProblemOptions options;
+  options.e_star = 1e9;
+  options.force = std::vector<double>{0.1};
+  return options;
+}
+
+// The message of the InputError `make` throws; empty (and a failure) if none.
+template <class Make>
+std::string refusal(Make make) {
+  try {
+    make();
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  ADD_FAILURE() << "accepted";
+  return {};
+}
+
+bool starts_with(const std::string& text, const std::string& start) {
+  return text.rfind(start, 0) == 0;
+}
+
+TEST(ProblemTest, BodyIsECompositeOrBothBodiesOrACoating) {
+  EXPECT_EQ(make_problem(sphere_problem()).e_star, 1e9);
+  ProblemOptions pair = sphere_problem();
+  pair.e_star.reset();
+  pair.e1 = 2e11;
+  pair.nu1 = 0.3;
+  pair.e2 = std::numeric_limits<double>::infinity();  // rigid body 2: E* = E1 / (1 - nu1^2)
+  pair.nu2 = 0.3;
+  EXPECT_DOUBLE_EQ(make_problem(pair).e_star, 2e11 / (1.0 - 0.09));
+  pair.nu2.reset();
+  EXPECT_TRUE(starts_with(refusal([&] { make_problem(pair, Flags{}); }),
+                          "incomplete material: missing --nu2 (give all of --E1, --nu1, --E2, --nu2, or --e_star)"));
+  pair.e_star = 1e9;
+  EXPECT_TRUE(
+      starts_with(refusal([&] { make_problem(pair, Flags{}); }), "--e_star cannot be combined with --E1, --nu1, --E2"));
+
+  ProblemOptions coated = sphere_problem();
+  coated.e_star.reset();
+  coated.layer_thickness = 1e-6;
+  coated.layer_e = 3e9;
+  coated.layer_nu = 0.35;
+  coated.substrate_e = 2e11;
+  coated.substrate_nu = 0.3;
+  const Problem problem = make_problem(coated);
+  ASSERT_TRUE(problem.coating.has_value());
+  EXPECT_DOUBLE_EQ(problem.e_star, 3e9 / (1.0 - 0.35 * 0.35));  // the layer's plane-strain modulus
+  coated.layer_thickness = -1.0;
+  EXPECT_EQ(refusal([&] { make_problem(coated, Flags{}); }), "--layer_thickness -1 is invalid: must be positive (m)");
+}
+
+TEST(ProblemTest, AdhesionMakesItsLawAndSignsTheLoads) {
+  ProblemOptions options = sphere_problem();
+  options.force = std::vector<double>{-1e-3, 2e-3};
+  EXPECT_EQ(refusal([&] { make_problem(options); }),
+            "force=-0.001,0.002 is invalid: every value must be positive (N in 2D, N/m in 1D); value 1 is -0.001");
+  options.adhesion = "md";
+  options.work_of_adhesion = 0.05;
+  EXPECT_EQ(refusal([&] { make_problem(options, Flags{}); }),
+            "--adhesion md needs --adhesion_range H0 (m) or --adhesion_stress SIGMA0 (Pa)");
+  options.adhesion_stress = 1e6;  // h0 = w / sigma0 = 5e-8 m
+  const Problem problem = make_problem(options);
+  ASSERT_TRUE(problem.solver.adhesion.has_value());
+  EXPECT_DOUBLE_EQ(problem.solver.adhesion->law.range, 0.05 / 1e6);
+  EXPECT_EQ(problem.load_values, (std::vector<double>{-1e-3, 2e-3}));  // a pull is a load
+  options.adhesion_stress = 1e13;                                      // h0 = 5e-15 m: below the range of lengths
+  EXPECT_TRUE(starts_with(refusal([&] { make_problem(options, Flags{}); }),
+                          "--adhesion_stress 1e+13 Pa is invalid with the work of adhesion 0.05 J/m^2"));
+  options.adhesion_stress.reset();
+  ProblemOptions unused = sphere_problem();
+  unused.work_of_adhesion = 0.05;
+  EXPECT_EQ(refusal([&] { make_problem(unused); }), "work_of_adhesion needs adhesion md|exponential");
+}
+
+TEST(ProblemTest, SolverRulesAreNamedByTheProblemsOption) {
+  ProblemOptions options = sphere_problem();
+  options.tol = 2.0;  // SolverOptions' "tolerance"
+  EXPECT_EQ(refusal([&] { make_problem(options); }), "tol=2 is invalid: the tolerance must be in (0, 1)");
+  options.tol.reset();
+  options.deflation_block = -1;
+  EXPECT_EQ(refusal([&] { make_problem(options); }), "deflation_block=-1 is invalid: give 0 (off) or a block size");
+  options.deflation_block.reset();
+  options.threads = 0;
+  EXPECT_TRUE(starts_with(refusal([&] { make_problem(options); }), "threads=0 is invalid: allowed range is 1 to"));
+}
+
+TEST(ProblemTest, EachLoadIsCheckedOnTheGridAgainstTheHardnessCap) {
+  const Grid grid = Grid::plane(16, 16, 1e-6, 1e-6, Boundary::periodic);  // 2.56e-10 m^2
+  ProblemOptions options = sphere_problem();
+  options.hardness = 1e9;  // carries at most 0.256 N on this grid
+  options.force = std::vector<double>{0.1, 0.3};
+  const Problem problem = make_problem(options, Flags{});
+  const std::string message = refusal([&] { problem.check_grid(grid, Flags{}); });
+  EXPECT_TRUE(starts_with(message, "--force 0.1,0.3 (value 2: 0.3): the load is infeasible with hardness = 1e+09 Pa"))
+      << message;
+  options.force = std::vector<double>{1e300};  // a mean pressure beyond the range of pressures
+  EXPECT_NE(refusal([&] {
+              make_problem(options).check_grid(grid);
+            }).find("the mean pressure force / area = inf Pa is invalid"),
+            std::string::npos);
+}
+
+TEST(ProblemTest, PeriodicApproachesStayBelowTheMeanGap) {
+  const Grid grid = Grid::line(4, 1e-6, Boundary::periodic);
+  const std::vector<double> heights{0.0, 1e-6, 0.0, 1e-6};  // mean initial gap 5e-7 m
+  ProblemOptions options = sphere_problem();
+  options.force.reset();
+  options.approach = std::vector<double>{1e-7, 6e-7};
+  const Problem problem = make_problem(options);
+  EXPECT_TRUE(starts_with(refusal([&] { problem.check_heights(grid, heights); }),
+                          "approach=1e-07,6e-07 (value 2: 6e-07 m) is invalid for a periodic surface"));
+}
+
+}  // namespace
+}  // namespace halfspace
