@@ -89,7 +89,7 @@ constexpr double kSwitchBand = 1e-9;
 constexpr int kBranchPasses = 4;
 
 struct State {
-  Eigen::ArrayXd s, q, fluid, theta, contact, deformation, film, reynolds_film;
+  Eigen::ArrayXd s, q, fluid, theta, contact, total, deformation, film, reynolds_film;
   double offset = 0.0;
 };
 
@@ -107,6 +107,12 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
   options.validate();
   const std::size_t n = grid.size();
   if (op.local_size() != n) throw InputError("the mixed film needs a serial influence operator (one process)");
+  if (grid.dimension() != 1) {
+    throw InputError(fmt::format(
+        "the mixed film is for line contacts (a 1D profile): the {} grid is 2D, which the dense Newton path does not "
+        "solve in reasonable time (docs/theory.md#mixed-lubrication)",
+        grid.shape_string()));
+  }
   if (n > kMaxMixedFilmNodes) {
     throw InputError(fmt::format("the {} grid has {} nodes: the mixed film's dense Newton path allows at most {}",
                                  grid.shape_string(), n, kMaxMixedFilmNodes));
@@ -173,6 +179,7 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
   x.fluid.resize(ni);
   x.theta.resize(ni);
   x.contact.resize(ni);
+  x.total.resize(ni);
   x.deformation.resize(ni);
   x.film.resize(ni);
   x.reynolds_film.resize(ni);
@@ -210,8 +217,8 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
       state.theta[k] = 1.0 + std::min(state.s[k], 0.0);
     }
     state.contact = P * state.q;
-    const Eigen::ArrayXd total = state.fluid + state.contact;
-    op.apply({total.data(), n}, {state.deformation.data(), n});
+    state.total = state.fluid + state.contact;
+    op.apply({state.total.data(), n}, {state.deformation.data(), n});
     state.film = state.offset + gap + state.deformation;
     state.reynolds_film = state.film.max(hb);
     return state.film.allFinite();

@@ -273,6 +273,15 @@ TEST(MixedFilmTest, RefusesInvalidOptionsNamingThem) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("at most 2048"), std::string::npos) << e.what();
   }
+  // A 2D grid (the path is for line contacts).
+  const Grid plane = Grid::plane(9, 9, 1e-6, 1e-6, Boundary::free);
+  FftInfluenceOperator plane_op(plane, kEStar);
+  try {
+    (void)solve_mixed_film(plane_op, Eigen::ArrayXd::Zero(81), flow(1.0), laws(), mixed_options());
+    ADD_FAILURE() << "no error for a 2D grid";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("line contacts"), std::string::npos) << e.what();
+  }
   EXPECT_THROW((void)stribeck_sweep(op, line.gap, flow(1.0), laws(), mixed_options(), {1.0, -2.0}), InputError);
 }
 

@@ -118,8 +118,8 @@ struct MixedFilm {
   bool converged() const { return status == FilmStatus::converged; }
 };
 
-// Solves the mixed film on the operator's grid (serial, at most
-// kMaxMixedFilmNodes cells). `gap` is g (m, >= 0 with its minimum at the
+// Solves the mixed film on the operator's grid (serial, 1D: a line contact,
+// at most kMaxMixedFilmNodes cells; 2D grids are refused). `gap` is g (m, >= 0 with its minimum at the
 // contact's centre: the smooth shape plus the roughness, shifted). Starts
 // from `start` (a previous film of the same grid), else tries in turn the
 // EHL start (the dry contact under a thin film), the dry contact itself and
