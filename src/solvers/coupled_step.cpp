@@ -41,15 +41,18 @@ CoupledStepResult CoupledStepSolver::solve(std::span<const double> initial_gap, 
   op_.apply_traction_coupling(cspan(previous.shear_x), cspan(previous.shear_y), span(w_));
   CoupledStepResult result;
   Eigen::ArrayXd warm;
-  if (!start_pressure.empty()) warm = Eigen::Map<const Eigen::ArrayXd>(start_pressure.data(), static_cast<Eigen::Index>(n));
+  if (!start_pressure.empty())
+    warm = Eigen::Map<const Eigen::ArrayXd>(start_pressure.data(), static_cast<Eigen::Index>(n));
   for (int pass = 1; pass <= options_.max_alternations; ++pass) {
     result.alternations = pass;
-    for (std::size_t i = 0; i < n; ++i) gap_[static_cast<Eigen::Index>(i)] = initial_gap[i] + w_[static_cast<Eigen::Index>(i)];
-    result.normal = normal_.solve(cspan(gap_), normal_loading,
-                                  warm.size() == 0 ? std::span<const double>{} : cspan(warm));
+    for (std::size_t i = 0; i < n; ++i)
+      gap_[static_cast<Eigen::Index>(i)] = initial_gap[i] + w_[static_cast<Eigen::Index>(i)];
+    result.normal =
+        normal_.solve(cspan(gap_), normal_loading, warm.size() == 0 ? std::span<const double>{} : cspan(warm));
     if (!result.normal.converged()) {
       result.status = result.normal.status;
-      result.message = fmt::format("the normal solve of alternation {} did not converge: {}", pass, result.normal.message);
+      result.message =
+          fmt::format("the normal solve of alternation {} did not converge: {}", pass, result.normal.message);
       return result;
     }
     warm = result.normal.pressure;

@@ -40,7 +40,8 @@ TEST(CoupledContact, SimilarBodiesGiveExactlyTheUncoupledAnswer) {
   const std::size_t n = 24;
   const double h = 5e-6;
   const Grid grid = Grid::plane(n, n, h, h, Boundary::free);
-  const Eigen::ArrayXd gap0 = testing::field_from(grid, [](double x, double y) { return (x * x + y * y) / (2 * kRadius); });
+  const Eigen::ArrayXd gap0 =
+      testing::field_from(grid, [](double x, double y) { return (x * x + y * y) / (2 * kRadius); });
   const std::span<const double> gap(gap0.data(), grid.size());
   const Loading load = Loading::force(5.0);
   const auto normal = solvers::make_solver(grid, pair.composite_modulus(), normal_options());
@@ -121,9 +122,9 @@ TEST(CoupledContact, CylinderAgreesWithADenseProjectedGaussSeidelSolve) {
   const double mu = 0.5;
   // The approach that carries about `load` frictionless, then the history:
   // pressed at zero tangential displacement, then displaced by a little.
-  const double approach =
-      solvers::solve_surface(grid, {heights.data(), n}, pair.composite_modulus(), Loading::force(load), normal_options())
-          .approach;
+  const double approach = solvers::solve_surface(grid, {heights.data(), n}, pair.composite_modulus(),
+                                                 Loading::force(load), normal_options())
+                              .approach;
   const double displacement = 2e-7;
   solvers::FrictionOptions friction;
   friction.friction_coefficient = mu;
@@ -131,14 +132,15 @@ TEST(CoupledContact, CylinderAgreesWithADenseProjectedGaussSeidelSolve) {
   friction.tolerance = 1e-10;
   friction.max_iterations = 200000;
   friction.coupling_tolerance = 1e-10;
-  const FrictionalSolveResult result =
-      solvers::solve_frictional_surface(grid, {heights.data(), n}, pair, Loading::approach(approach), normal_options(), friction);
+  const FrictionalSolveResult result = solvers::solve_frictional_surface(
+      grid, {heights.data(), n}, pair, Loading::approach(approach), normal_options(), friction);
   ASSERT_TRUE(result.converged()) << result.failure();
   ASSERT_TRUE(result.coupled);
   ASSERT_EQ(result.step_normals.size(), 1u);
 
   const Eigen::VectorXd g0 = gap0.matrix();
-  DenseState start{Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n)), Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n)),
+  DenseState start{Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n)),
+                   Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n)),
                    Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n))};
   const DenseState pressed = dense_coupled_step(grid, pair, g0, approach, mu, 0.0, start);
   const DenseState displaced = dense_coupled_step(grid, pair, g0, approach, mu, displacement, pressed);
@@ -160,6 +162,87 @@ TEST(CoupledContact, CylinderAgreesWithADenseProjectedGaussSeidelSolve) {
   EXPECT_LE(pressed_q, 1e-6 * p_scale);
   EXPECT_LE(p_error, 1e-6 * p_scale);
   EXPECT_LE(q_error, 1e-6 * p_scale);
+}
+
+// A rigid sphere (body 2) pressed by 10 N into a steel half-space (body 1,
+// nu = 0.3, beta = 0.286), the load applied in 4 increments, coupled against
+// the uncoupled (frictionless) answer, with mu = 0.3 and with mu = 2 (nearly
+// full stick; q/p grows without bound at the edge, so an annulus always
+// slips). The facts of Spence (1975) and Johnson (1985, sec. 5.6): the
+// elastic surface, pulled inwards by the pressure, is held back, so the
+// shear on it points outwards (on the rigid sphere, q, inwards); the peak
+// pressure changes by a few per cent; the approach at the load hardly.
+struct PressedSphere {
+  double peak = 0.0;
+  double approach = 0.0;
+  double stick_fraction = 0.0;
+  double inward = 0.0;  // sum of -q . r/|r| over the contact over sum of |q|
+  double largest_ratio = 0.0;
+  int alternations = 0;
+};
+
+PressedSphere pressed_sphere(double mu, bool coupling) {
+  const ElasticPair pair = ElasticPair::on_rigid(kSteel);
+  const double force = 10.0;
+  const std::size_t n = 32;
+  const double a = testing::hertz_point(force, kRadius, pair.composite_modulus()).radius;
+  const double h = 2.4 * a / static_cast<double>(n);
+  const Grid grid = Grid::plane(n, n, h, h, Boundary::free);
+  const Eigen::ArrayXd heights =
+      testing::field_from(grid, [](double x, double y) { return -(x * x + y * y) / (2 * kRadius); });
+  solvers::FrictionOptions friction;
+  friction.friction_coefficient = mu;
+  friction.history = {TangentialLoading::force(0.0)};
+  friction.coupling = coupling;
+  friction.normal_load_steps = 4;
+  const FrictionalSolveResult r = solvers::solve_frictional_surface(grid, {heights.data(), grid.size()}, pair,
+                                                                    Loading::force(force), normal_options(), friction);
+  EXPECT_TRUE(r.converged()) << r.failure();
+  const SolveResult& normal = coupling ? r.step_normals.back() : r.normal;
+  const TangentialResult& step = r.steps.back();
+  PressedSphere out;
+  out.peak = normal.pressure.maxCoeff();
+  out.approach = normal.approach;
+  out.stick_fraction = step.stick_fraction;
+  double along = 0.0;
+  double total = 0.0;
+  for (std::size_t j = 0; j < n; ++j) {
+    for (std::size_t i = 0; i < n; ++i) {
+      const auto k = static_cast<Eigen::Index>(j * n + i);
+      const double x = testing::centred_x(grid, i);
+      const double y = testing::centred_y(grid, j);
+      const double qx = step.state.shear_x[k];
+      const double qy = step.state.shear_y[k];
+      along -= (qx * x + qy * y) / std::hypot(x, y);
+      total += std::hypot(qx, qy);
+      if (normal.pressure[k] > 0.0) {
+        out.largest_ratio = std::max(out.largest_ratio, std::hypot(qx, qy) / (mu * normal.pressure[k]));
+      }
+    }
+  }
+  out.inward = total > 0.0 ? along / total : 0.0;
+  for (const TangentialResult& t : r.loading_steps) out.alternations += t.coupling_alternations;
+  return out;
+}
+
+TEST(CoupledContact, RigidSpherePressedIntoAnElasticHalfSpace) {
+  const PressedSphere plain = pressed_sphere(0.3, false);
+  for (const double mu : {0.3, 2.0}) {
+    const PressedSphere coupled = pressed_sphere(mu, true);
+    std::printf(
+        "rigid sphere, beta 0.286, mu %.1f: peak pressure %+.2f %%, approach %+.3f %%, stick fraction %.3f, shear "
+        "on the sphere inwards %.3f of its magnitude, largest |q|/(mu p) %.4f, %d alternations over 4 increments\n",
+        mu, 100.0 * (coupled.peak / plain.peak - 1.0), 100.0 * (coupled.approach / plain.approach - 1.0),
+        coupled.stick_fraction, coupled.inward, coupled.largest_ratio, coupled.alternations);
+    EXPECT_GT(std::abs(coupled.peak / plain.peak - 1.0), 1e-3);
+    EXPECT_LT(std::abs(coupled.peak / plain.peak - 1.0), 0.1);
+    EXPECT_LT(std::abs(coupled.approach / plain.approach - 1.0), 0.02);
+    EXPECT_GT(coupled.inward, 0.9);
+    EXPECT_LE(coupled.largest_ratio, 1.0 + 1e-9);
+    EXPECT_GT(coupled.stick_fraction, 0.1);
+  }
+  // Uncoupled, the pressure leaves the surfaces at rest tangentially: no shear.
+  EXPECT_EQ(plain.inward, 0.0);
 }
 
 }  // namespace

@@ -33,7 +33,7 @@
 namespace halfspace::solvers {
 
 struct CoupledStepOptions {
-  double tolerance = 1e-6;    // of the normal displacement the shear's last change makes, relative
+  double tolerance = 1e-6;  // of the normal displacement the shear's last change makes, relative
   int max_alternations = 100;
   // Throws InputError naming the option unless 0 < tolerance < 1 and max_alternations >= 1.
   void validate() const;

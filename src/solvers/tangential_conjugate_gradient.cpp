@@ -1,0 +1,178 @@
+// Conjugate gradients (the default): Polonsky & Keer's (1999) active-set
+// conjugate gradients carried from the half-plane p >= 0 to the discs
+// |q| <= mu p, as a Riemannian conjugate gradient on the product of the
+// stick cells' planes and the slipping cells' circles: a slipping cell moves
+// along its circle only, where the objective's second derivative gains the
+// curvature term lambda/r (lambda = -ds.q/r >= 0 its multiplier); it
+// returns to the stick set once ds points outward (lambda < 0) and a stick
+// cell pushed over its disc is clipped onto the circle. The gradient is
+// preconditioned by the inverse of C's Fourier symbol restricted to the
+// sets (as pk-fourier does for the normal problem), scaled on both sides on
+// each slipping cell by sqrt(C_ii / (C_ii + lambda/r)): the curvature, which
+// the symbol does not see, dominates on cells of small mu p, and without
+// the scaling a rough contact takes ten times the iterations (docs/
+// development-log.md). Polak-Ribiere momentum, which restarts
+// whenever a set changes, and under force control the directions are kept
+// orthogonal to the force's constraint. Three FFT products per iteration
+// (C d, the preconditioner, C q).
+#include "tangential_conjugate_gradient.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace halfspace::solvers::tangential {
+
+void ConjugateGradientMethod::step() {
+  const bool force = problem_.force_controlled;
+  // The reduced gradient R g (pass A), and the projector onto the force's
+  // constraint: sum over stick cells of v plus over slipping cells of
+  // their tangent part vanishes; Pi v = v - R a with a = Gram^-1 (sum R v).
+  const auto [released, g_dot_z_old, gram_xx, gram_xy, gram_yy, sum_x, sum_y] =
+      sums<7>(comm_, n_, [&](std::size_t i) {
+        const Cell c = cell(i);
+        if (!c.contact) return std::array<double, 7>{};
+        const Pair g = c.tangent(f_.gx[i], f_.gy[i]);
+        return std::array<double, 7>{c.released ? 1.0 : 0.0,
+                                     g.x * f_.tx[i] + g.y * f_.ty[i],
+                                     c.slip ? 1.0 - c.nx * c.nx : 1.0,
+                                     c.slip ? -c.nx * c.ny : 0.0,
+                                     c.slip ? 1.0 - c.ny * c.ny : 1.0,
+                                     g.x,
+                                     g.y};
+      });
+  const Symmetric gram{gram_xx, gram_xy, gram_yy};
+  const Pair shift_g = force ? solve_pseudo(gram, {sum_x, sum_y}) : Pair{};
+  // Pass B: Pi R g into t, then z = M t in place.
+  for_each_index(n_, [&](std::size_t i) {
+    const Pair g = projected_gradient(i, shift_g);
+    const double scale = cell(i).scale;
+    f_.tx[i] = scale * g.x;
+    f_.ty[i] = scale * g.y;
+  });
+  op_.apply_approximate_inverse({f_.tx, n_}, {f_.ty, n_}, {f_.tx, n_}, {f_.ty, n_});
+  ++result_.preconditioner_applications;
+  // Pass C: z = Pi R M Pi R g.
+  const auto [zx, zy] = sums<2>(comm_, n_, [&](std::size_t i) {
+    const Cell c = cell(i);
+    if (!c.contact) return std::array<double, 2>{};
+    const Pair z = c.restrict(f_.tx[i], f_.ty[i]);
+    return std::array<double, 2>{z.x, z.y};
+  });
+  const Pair shift_z = force ? solve_pseudo(gram, {zx, zy}) : Pair{};
+  const auto [rho, g_dot_d_old] = sums<2>(comm_, n_, [&](std::size_t i) {
+    const Cell c = cell(i);
+    if (!c.contact) {
+      f_.tx[i] = 0.0;
+      f_.ty[i] = 0.0;
+      return std::array<double, 2>{};
+    }
+    const Pair z = c.restrict(f_.tx[i], f_.ty[i]);
+    const Pair a = c.tangent(shift_z.x, shift_z.y);
+    f_.tx[i] = z.x - a.x;
+    f_.ty[i] = z.y - a.y;
+    const Pair g = projected_gradient(i, shift_g);
+    const Pair d = c.tangent(f_.rx[i], f_.ry[i]);
+    return std::array<double, 2>{g.x * f_.tx[i] + g.y * f_.ty[i], g.x * d.x + g.y * d.y};
+  });
+  // Polak-Ribiere's momentum (with the changing restriction the flexible
+  // form), none after a set changed or if the direction would not descend.
+  double beta = 0.0;
+  if (sets_unchanged_ && released == 0.0 && rho_old_ > 0.0) {
+    beta = std::max(0.0, (rho - g_dot_z_old) / rho_old_);
+    if (!(rho + beta * g_dot_d_old > 0.0)) beta = 0.0;
+  }
+  rho_old_ = rho;
+  if (!(rho > 0.0)) {
+    sets_unchanged_ = false;
+    return;  // the reduced gradient vanishes: only the sets can move
+  }
+  // Pass D: d = z + beta R d_old.
+  for_each_index(n_, [&](std::size_t i) {
+    const Cell c = cell(i);
+    const Pair d = c.contact ? c.tangent(f_.rx[i], f_.ry[i]) : Pair{};
+    f_.rx[i] = f_.tx[i] + beta * d.x;
+    f_.ry[i] = f_.ty[i] + beta * d.y;
+  });
+  op_.apply({f_.rx, n_}, {f_.ry, n_}, {f_.wx, n_}, {f_.wy, n_});
+  ++result_.operator_applications;
+  // The step minimising the quadratic model along d (curvature included).
+  const auto [descent, model] = sums<2>(comm_, n_, [&](std::size_t i) {
+    const Cell c = cell(i);
+    if (!c.contact) return std::array<double, 2>{};
+    const Pair g = projected_gradient(i, shift_g);
+    const double dx = f_.rx[i];
+    const double dy = f_.ry[i];
+    return std::array<double, 2>{g.x * dx + g.y * dy,
+                                 dx * f_.wx[i] + dy * f_.wy[i] + c.curvature * (dx * dx + dy * dy)};
+  });
+  if (!(descent > 0.0 && model > 0.0)) {
+    sets_unchanged_ = false;
+    return;
+  }
+  const double alpha = descent / model;
+  // Pass E: q -= alpha d, slipping cells back onto their circles, stick
+  // cells over their discs clipped onto them.
+  const auto [clipped_cells, stick_cells, sum_qx, sum_qy] = sums<4>(comm_, n_, [&](std::size_t i) {
+    const Cell c = cell(i);
+    if (!c.contact) return std::array<double, 4>{};
+    const double x = f_.qx[i] - alpha * f_.rx[i];
+    const double y = f_.qy[i] - alpha * f_.ry[i];
+    const double radius = radius_[i];
+    const double m = magnitude(x, y);
+    if (c.slip || m > radius) {
+      const double scale = m > 0.0 ? radius / m : 0.0;
+      f_.qx[i] = scale * x;
+      f_.qy[i] = scale * y;
+      return std::array<double, 4>{c.slip ? 0.0 : 1.0, 0.0, f_.qx[i], f_.qy[i]};
+    }
+    f_.qx[i] = x;
+    f_.qy[i] = y;
+    return std::array<double, 4>{0.0, 1.0, x, y};
+  });
+  sets_unchanged_ = clipped_cells == 0.0 && released == 0.0;
+  bool linear = clipped_cells == 0.0;
+  if (force) {
+    // The directions keep the force; what the circles and clips moved is
+    // given back by the stick cells alike, or, if that pushes one over its
+    // disc, by the exact projection onto the force and the discs.
+    const double ex = problem_.target_x - sum_qx;
+    const double ey = problem_.target_y - sum_qy;
+    bool exact = stick_cells == 0.0;
+    if (!exact && (ex != 0.0 || ey != 0.0)) {
+      const double sx = ex / stick_cells;
+      const double sy = ey / stick_cells;
+      const auto [over] = sums<1>(comm_, n_, [&](std::size_t i) {
+        const double radius = radius_[i];
+        if (!(radius > 0.0) || at_limit(f_.qx[i], f_.qy[i], radius)) return std::array<double, 1>{};
+        f_.qx[i] += sx;
+        f_.qy[i] += sy;
+        return std::array<double, 1>{magnitude(f_.qx[i], f_.qy[i]) > radius ? 1.0 : 0.0};
+      });
+      exact = over > 0.0;
+    }
+    if (exact) {
+      const auto [sx, sy] = it_.force_shift([&](std::size_t i) { return std::pair{f_.qx[i], f_.qy[i]}; });
+      for_each_index(n_, [&](std::size_t i) {
+        std::tie(f_.qx[i], f_.qy[i]) = clipped(f_.qx[i] + sx, f_.qy[i] + sy, radius_[i]);
+      });
+      linear = false;
+      sets_unchanged_ = false;
+    }
+  }
+  // u follows q by the product C d already made, up to the circles'
+  // second-order pull, while no cell was clipped; exactly every few steps
+  // and always before the stop (evaluate()).
+  if (linear && updates_since_exact_ + 1 < kConjugateUpdatesBetweenExactProducts) {
+    for_each_index(n_, [&](std::size_t i) {
+      f_.ux[i] -= alpha * f_.wx[i];
+      f_.uy[i] -= alpha * f_.wy[i];
+    });
+    ++updates_since_exact_;
+  } else {
+    it_.exact_displacement();
+  }
+}
+
+
+}  // namespace halfspace::solvers::tangential

@@ -1,0 +1,105 @@
+// One preconditioned conjugate-gradient step on the stick/slip sets of a
+// tangential step (tangential_solver.hpp, TangentialMethod::
+// conjugate_gradient): Polonsky & Keer's (1999) active-set conjugate
+// gradients carried from the half-plane p >= 0 to the discs |q| <= mu p, as
+// a Riemannian conjugate gradient on the product of the stick cells' planes
+// and the slipping cells' circles (the file comment of
+// tangential_conjugate_gradient.cpp). Internal to src/solvers.
+#pragma once
+
+#include "tangential_iteration.hpp"
+
+namespace halfspace::solvers::tangential {
+
+class ConjugateGradientMethod {
+ public:
+  explicit ConjugateGradientMethod(TangentialIteration& it)
+      : it_(it),
+        op_(it.op_),
+        problem_(it.problem_),
+        result_(it.result_),
+        comm_(it.comm_),
+        n_(it.n_),
+        f_(it.f_),
+        radius_(it.radius_),
+        updates_since_exact_(it.updates_since_exact_) {}
+
+  // One preconditioned conjugate-gradient step on the stick/slip sets (the
+  // file comment); g holds ds from evaluate(), t the last preconditioned
+  // gradient z, r the last direction d, w is C d.
+  void step();
+
+ private:
+  // A contact cell's part in the reduced problem: stick (both components
+  // free; also a cell at the limit whose slip points outward, `released`) or
+  // slip (only the tangent to its circle free, curvature lambda/r).
+  struct Cell {
+    bool contact = false;
+    bool slip = false;
+    bool released = false;
+    double nx = 0.0;
+    double ny = 0.0;
+    double curvature = 0.0;
+    double scale = 1.0;  // the diagonal scaling of the preconditioner (sqrt)
+    // The cell's restriction of a vector: itself, or its tangent part.
+    Pair restrict(double x, double y) const {
+      if (!slip) return {x, y};
+      const double along = scale * (x * nx + y * ny);
+      return {scale * x - along * nx, scale * y - along * ny};
+    }
+    Pair tangent(double x, double y) const {
+      if (!slip) return {x, y};
+      const double along = x * nx + y * ny;
+      return {x - along * nx, y - along * ny};
+    }
+  };
+
+  Cell cell(std::size_t i) const {
+    const double radius = radius_[i];
+    Cell c;
+    if (!(radius > 0.0)) return c;
+    c.contact = true;
+    const double qx = f_.qx[i];
+    const double qy = f_.qy[i];
+    if (!at_limit(qx, qy, radius)) return c;
+    const double m = magnitude(qx, qy);
+    const double nx = qx / m;
+    const double ny = qy / m;
+    const double lambda = -(f_.gx[i] * nx + f_.gy[i] * ny);
+    if (lambda < 0.0) {
+      c.released = true;
+      return c;
+    }
+    c.slip = true;
+    c.nx = nx;
+    c.ny = ny;
+    c.curvature = lambda / radius;
+    c.scale = std::sqrt(self_ / (self_ + c.curvature));
+    return c;
+  }
+
+  // Pi R g at cell i (zero out of contact).
+  Pair projected_gradient(std::size_t i, const Pair& shift) const {
+    const Cell c = cell(i);
+    if (!c.contact) return {};
+    const Pair g = c.tangent(f_.gx[i], f_.gy[i]);
+    const Pair a = c.tangent(shift.x, shift.y);
+    return {g.x - a.x, g.y - a.y};
+  }
+
+
+  TangentialIteration& it_;
+  TangentialOperator& op_;
+  const Problem& problem_;
+  TangentialResult& result_;
+  const linalg::Communicator& comm_;
+  const std::size_t n_;
+  Fields f_;
+  const double* radius_;
+  int& updates_since_exact_;  // the iteration's: products since u = C q was exact
+  const double self_ = op_.self_influence().xx;
+  double rho_old_ = 0.0;         // the last z . Pi R g
+  bool sets_unchanged_ = false;  // no cell changed set in the last step
+};
+
+}  // namespace halfspace::solvers::tangential

@@ -1,0 +1,314 @@
+// The state and the shared passes of one tangential load step's iteration
+// (tangential_solver.hpp): the problem's data, step 0 (the start), step 1
+// (ds, the approach and the duality gap), the stop, the exact product u = C q
+// and the exact projection onto the force. The two methods step it:
+// ConjugateGradientMethod (tangential_conjugate_gradient.hpp, the default)
+// and ProjectedGradientMethod (tangential_projected_gradient.hpp), as
+// TangentialSolver::solve drives them. Internal to src/solvers.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <optional>
+#include <utility>
+
+#include "halfspace/linalg/parallel.hpp"
+#include "halfspace/operators/tangential_operator.hpp"
+#include "halfspace/solvers/tangential_result.hpp"
+#include "halfspace/solvers/tangential_solver.hpp"
+
+namespace halfspace::solvers::tangential {
+
+using linalg::for_each_index;
+using linalg::sums;
+
+// Conjugate gradients: u = C q exactly at least every this many steps (the
+// linear update misses the circles' second-order pull; 1, 4 and 10 gave
+// 17, 17 and 20 iterations on the rough test contact).
+inline constexpr int kConjugateUpdatesBetweenExactProducts = 4;
+// Conjugate gradients that do not halve the gap in this many steps stall
+// (sets swinging back and forth): projected gradients take over.
+inline constexpr int kStalledConjugateSteps = 100;
+// Slip increments below this fraction of the previous step's largest
+// displacement are rounding of the products, not motion (the residual's
+// scale is kept above it).
+inline constexpr double kResolvedMotion = 1e-9;
+// A traction within this relative distance of mu p is at the limit (a
+// projected traction lies on the circle to rounding).
+inline constexpr double kAtLimit = 1e-12;
+// A force within this relative distance of mu P is gross sliding.
+inline constexpr double kSlidingForce = 1e-9;
+
+// |(x, y)|: hypot's overflow guard is not needed at tractions in Pa.
+inline double magnitude(double x, double y) {
+  return std::sqrt(x * x + y * y);
+}
+
+inline bool at_limit(double qx, double qy, double radius) {
+  return radius > 0.0 && magnitude(qx, qy) >= radius * (1.0 - kAtLimit);
+}
+
+// The nearest point of the disc |q| <= radius.
+inline std::pair<double, double> clipped(double x, double y, double radius) {
+  const double m = magnitude(x, y);
+  if (m <= radius) return {x, y};
+  if (!(radius > 0.0)) return {0.0, 0.0};
+  const double f = radius / m;
+  return {f * x, f * y};
+}
+
+struct Problem {
+  const double* radius = nullptr;  // mu p
+  const TangentialState* previous = nullptr;
+  // The previous displacement less the step's fixed part (the pressure's
+  // coupling displacement; the previous one itself without coupling).
+  const double* previous_x = nullptr;
+  const double* previous_y = nullptr;
+  bool force_controlled = false;
+  double target_x = 0.0;  // sum of q under force control (Q / A_cell)
+  double target_y = 0.0;
+  double delta_x = 0.0;  // delta - delta_prev under displacement control
+  double delta_y = 0.0;
+  double capacity = 0.0;  // sum of mu p
+  double contact_cells = 0.0;
+  double cell_area = 0.0;
+};
+
+struct Fields {
+  double* qx;
+  double* qy;
+  double* ux;
+  double* uy;
+  double* gx;
+  double* gy;
+  double* tx;
+  double* ty;
+  double* rx;
+  double* ry;
+  double* wx;  // conjugate gradients only
+  double* wy;
+};
+
+// A 2-vector and a symmetric 2x2 matrix.
+struct Pair {
+  double x = 0.0;
+  double y = 0.0;
+};
+struct Symmetric {
+  double xx = 0.0;
+  double xy = 0.0;
+  double yy = 0.0;
+};
+
+// The pseudo-inverse of s applied to v: s's eigenvalues below 1e-12 of its
+// trace count as zero (the force's constraint is degenerate when every cell
+// slips along one line).
+inline Pair solve_pseudo(const Symmetric& s, const Pair& v) {
+  const double mean = 0.5 * (s.xx + s.yy);
+  const double half_difference = 0.5 * (s.xx - s.yy);
+  const double spread = std::hypot(half_difference, s.xy);
+  const double floor = 1e-12 * 2.0 * std::abs(mean);
+  auto inverse = [&](double e) { return e > floor ? 1.0 / e : 0.0; };
+  const double upper = inverse(mean + spread);
+  const double lower = inverse(mean - spread);
+  const double along = 0.5 * (upper + lower);
+  const double across = spread > 0.0 ? 0.5 * (upper - lower) / spread : 0.0;
+  return {(along + across * half_difference) * v.x + across * s.xy * v.y,
+          across * s.xy * v.x + (along - across * half_difference) * v.y};
+}
+
+
+class TangentialIteration {
+ public:
+  TangentialIteration(TangentialOperator& op, const TangentialOptions& options, const Problem& problem, TangentialResult& result,
+            Fields f)
+      : op_(op),
+        options_(options),
+        problem_(problem),
+        result_(result),
+        comm_(op.communicator()),
+        n_(op.local_size()),
+        f_(f),
+        up_x_(problem.previous_x),
+        up_y_(problem.previous_y),
+        radius_(problem.radius) {}
+
+  // Step 0: the previous traction, clipped to the new discs and, under
+  // force control, projected onto the force.
+  void start() {
+    const double* px = problem_.previous->shear_x.data();
+    const double* py = problem_.previous->shear_y.data();
+    if (problem_.force_controlled) {
+      const auto [sx, sy] = force_shift([&](std::size_t i) { return std::pair{px[i], py[i]}; });
+      for_each_index(
+          n_, [&](std::size_t i) { std::tie(f_.qx[i], f_.qy[i]) = clipped(px[i] + sx, py[i] + sy, radius_[i]); });
+    } else {
+      for_each_index(n_, [&](std::size_t i) { std::tie(f_.qx[i], f_.qy[i]) = clipped(px[i], py[i], radius_[i]); });
+    }
+    exact_displacement();
+    // The slip the products resolve: motion below this fraction of the
+    // previous displacement is rounding (a step repeating the previous load
+    // moves nothing, and the residual would compare rounding with rounding).
+    const auto previous = linalg::sums_and_range<1>(comm_, n_, [&](std::size_t i) {
+      return std::pair{std::array<double, 1>{}, radius_[i] > 0.0 ? magnitude(up_x_[i], up_y_[i]) : 0.0};
+    });
+    motion_floor_ = kResolvedMotion * std::max(previous.max, 0.0);
+  }
+
+  // Step 1: ds, the approach, the residual (from an exact product whenever
+  // it would stop).
+  void evaluate(int iteration) {
+    measure();
+    if (residual_ <= options_.tolerance && updates_since_exact_ > 0) {
+      exact_displacement();
+      measure();
+    }
+    result_.residual_history.push_back(residual_);
+    if (options_.progress) options_.progress(iteration, residual_);
+  }
+
+  bool finished(int iteration) {
+    const std::optional<SolveStatus> status =
+        stopping_status(residual_, options_.tolerance, iteration, options_.max_iterations, &result_.message);
+    if (status) result_.status = *status;
+    return status.has_value();
+  }
+
+  double approach_x() const { return delta_x_; }
+  double approach_y() const { return delta_y_; }
+  double residual() const { return residual_; }
+
+  // The uniform shift s with sum_i clip_i(y_i + s) = target (Newton's
+  // method on this monotone map, each step halved until the mismatch
+  // shrinks; a few passes).
+  template <class Moved>
+  std::pair<double, double> force_shift(Moved&& moved) const {
+    auto mismatch = [&](double sx, double sy) {
+      return sums<5>(comm_, n_, [&](std::size_t i) {
+        const double radius = radius_[i];
+        if (!(radius > 0.0)) return std::array<double, 5>{};
+        auto [x, y] = moved(i);
+        x += sx;
+        y += sy;
+        const double m = std::hypot(x, y);
+        if (m <= radius) return std::array<double, 5>{x, y, 1.0, 0.0, 1.0};
+        const double f = radius / m;
+        const double nx = x / m;
+        const double ny = y / m;
+        return std::array<double, 5>{f * x, f * y, f * (1.0 - nx * nx), -f * nx * ny, f * (1.0 - ny * ny)};
+      });
+    };
+    double sx = 0.0;
+    double sy = 0.0;
+    std::array<double, 5> v = mismatch(sx, sy);
+    double fx = v[0] - problem_.target_x;
+    double fy = v[1] - problem_.target_y;
+    double norm = std::hypot(fx, fy);
+    const double tolerance = 1e-15 * problem_.capacity;
+    constexpr int kMaxNewtonSteps = 60;
+    for (int pass = 0; pass < kMaxNewtonSteps && norm > tolerance; ++pass) {
+      const double det = v[2] * v[4] - v[3] * v[3];
+      double dx = 0.0;
+      double dy = 0.0;
+      if (det > 1e-12 * (v[2] + v[4]) * (v[2] + v[4])) {
+        dx = -(v[4] * fx - v[3] * fy) / det;
+        dy = -(-v[3] * fx + v[2] * fy) / det;
+      } else {
+        const double trace = std::max(v[2] + v[4], 1.0);
+        dx = -fx / trace;
+        dy = -fy / trace;
+      }
+      bool accepted = false;
+      for (double step = 1.0; step > 1e-12; step *= 0.5) {
+        const std::array<double, 5> trial = mismatch(sx + step * dx, sy + step * dy);
+        const double tx = trial[0] - problem_.target_x;
+        const double ty = trial[1] - problem_.target_y;
+        if (std::hypot(tx, ty) < norm) {
+          sx += step * dx;
+          sy += step * dy;
+          v = trial;
+          fx = tx;
+          fy = ty;
+          norm = std::hypot(fx, fy);
+          accepted = true;
+          break;
+        }
+      }
+      if (!accepted) break;
+    }
+    return {sx, sy};
+  }
+
+  void exact_displacement() {
+    op_.apply({f_.qx, n_}, {f_.qy, n_}, {f_.ux, n_}, {f_.uy, n_});
+    ++result_.operator_applications;
+    updates_since_exact_ = 0;
+  }
+
+  // Step 1's passes: the approach (under force control the mean of u - u_prev
+  // over the stick cells, where ds vanishes at the solution; over the
+  // contact if none sticks), then ds and the residual's sums.
+  void measure() {
+    if (problem_.force_controlled) {
+      const auto [stick_x, stick_y, stick_cells, contact_x, contact_y] = sums<5>(comm_, n_, [&](std::size_t i) {
+        if (!(radius_[i] > 0.0)) return std::array<double, 5>{};
+        const double dx = f_.ux[i] - up_x_[i];
+        const double dy = f_.uy[i] - up_y_[i];
+        const double stick = at_limit(f_.qx[i], f_.qy[i], radius_[i]) ? 0.0 : 1.0;
+        return std::array<double, 5>{stick * dx, stick * dy, stick, dx, dy};
+      });
+      const double cells = stick_cells > 0.0 ? stick_cells : problem_.contact_cells;
+      delta_x_ = (stick_cells > 0.0 ? stick_x : contact_x) / cells;
+      delta_y_ = (stick_cells > 0.0 ? stick_y : contact_y) / cells;
+    } else {
+      delta_x_ = problem_.delta_x;
+      delta_y_ = problem_.delta_y;
+    }
+    const double delta_x = delta_x_;
+    const double delta_y = delta_y_;
+    const auto settled = linalg::sums_and_range<2>(comm_, n_, [&](std::size_t i) {
+      const double radius = radius_[i];
+      if (!(radius > 0.0)) {
+        f_.gx[i] = 0.0;
+        f_.gy[i] = 0.0;
+        return std::pair{std::array<double, 2>{}, 0.0};
+      }
+      const double dx = f_.ux[i] - up_x_[i];
+      const double dy = f_.uy[i] - up_y_[i];
+      const double gx = dx - delta_x;
+      const double gy = dy - delta_y;
+      f_.gx[i] = gx;
+      f_.gy[i] = gy;
+      const double gap = radius * magnitude(gx, gy) + f_.qx[i] * gx + f_.qy[i] * gy;
+      return std::pair{std::array<double, 2>{std::max(gap, 0.0), 0.0}, magnitude(dx, dy)};
+    });
+    const double scale =
+        problem_.capacity * std::max(std::max(settled.max, 0.0) + std::hypot(delta_x, delta_y), motion_floor_);
+    residual_ = settled.sums[0] == 0.0 ? 0.0 : settled.sums[0] / scale;
+  }
+
+ private:
+  friend class ConjugateGradientMethod;
+  friend class ProjectedGradientMethod;
+
+  // The methods step the iteration's fields and count its products.
+  TangentialOperator& op_;
+  const TangentialOptions& options_;
+  const Problem& problem_;
+  TangentialResult& result_;
+  const linalg::Communicator& comm_;
+  const std::size_t n_;
+  Fields f_;
+  const double* up_x_;  // the previous step's u
+  const double* up_y_;
+  const double* radius_;
+
+  int updates_since_exact_ = 0;
+  double delta_x_ = 0.0;  // the approach's increment over the step
+  double delta_y_ = 0.0;
+  double residual_ = 0.0;
+  double motion_floor_ = 0.0;  // m, see start()
+};
+
+}  // namespace halfspace::solvers::tangential
