@@ -401,8 +401,9 @@ void write_mixed_fields(const io::Hdf5Node& root, const std::vector<std::size_t>
   root.write_double_attribute("contact_friction_force_x", film.contact_friction_force[0]);
   root.write_double_attribute("contact_friction_force_y", film.contact_friction_force[1]);
   root.write_double_attribute("contact_friction", options.friction.contact_friction);
-  root.write_double_attribute("limiting_shear_stress", options.friction.limiting_shear_stress);
-  root.write_double_attribute("limiting_shear_slope", options.friction.limiting_shear_slope);
+  root.write_double_attribute("eyring_stress", options.friction.shear.eyring_stress);
+  root.write_double_attribute("limiting_shear_stress", options.friction.shear.limiting_shear_stress);
+  root.write_double_attribute("limiting_shear_slope", options.friction.shear.limiting_shear_slope);
   root.write_double_attribute("boundary_film", options.boundary_film);
   root.write_double_attribute("complementarity_error", film.complementarity_error);
 }
@@ -449,8 +450,7 @@ int run_mixed(const LubricateOptions& o, const HeightMap& map, const lubrication
   }
   if (o.couette_scheme) options.couette_scheme = lubrication::parse_couette_scheme(*o.couette_scheme);
   if (o.contact_friction) options.friction.contact_friction = *o.contact_friction;
-  if (o.limiting_shear_stress) options.friction.limiting_shear_stress = *o.limiting_shear_stress;
-  if (o.limiting_shear_slope) options.friction.limiting_shear_slope = *o.limiting_shear_slope;
+  options.friction.shear = shear_limits(o);
   options.validate();
   if (grid.size() > lubrication::kMaxMixedFilmNodes) {
     throw InputError(

@@ -50,12 +50,13 @@ double limited_stress(const ShearLimits& limits, double tau_n, double p) {
 
 FilmShear film_shear(const Grid& grid, const FlowConditions& conditions, const LubricantLaws& laws,
                      const ShearLimits& limits, const Eigen::ArrayXd& film, const Eigen::ArrayXd& pressure,
-                     const Eigen::ArrayXd& fluid_fraction) {
+                     const Eigen::ArrayXd& fluid_fraction, const Eigen::ArrayXd* contact_pressure) {
   conditions.validate(grid);
   laws.validate(conditions.viscosity);
   limits.validate();
   const std::size_t n = grid.size();
-  if (static_cast<std::size_t>(pressure.size()) != n || static_cast<std::size_t>(fluid_fraction.size()) != n) {
+  if (static_cast<std::size_t>(pressure.size()) != n || static_cast<std::size_t>(fluid_fraction.size()) != n ||
+      (contact_pressure && static_cast<std::size_t>(contact_pressure->size()) != n)) {
     throw InputError(fmt::format("film shear: pressure has {} values and fluid fraction {}, the {} grid has {} nodes",
                                  pressure.size(), fluid_fraction.size(), grid.shape_string(), n));
   }
@@ -66,7 +67,7 @@ FilmShear film_shear(const Grid& grid, const FlowConditions& conditions, const L
   const double sliding_speed = std::hypot(slide[0], slide[1]);
   const bool limited = limits.eyring() || limits.capped();
   FilmShear result;
-  result.shear_x.resize(static_cast<Eigen::Index>(n));
+  result.shear_x = Eigen::ArrayXd::Zero(static_cast<Eigen::Index>(n));
   result.shear_y = Eigen::ArrayXd::Zero(static_cast<Eigen::Index>(n));
   std::size_t lowered = 0;
   for (std::size_t k = 0; k < n; ++k) {
@@ -75,6 +76,7 @@ FilmShear film_shear(const Grid& grid, const FlowConditions& conditions, const L
     const std::size_t j = k / grid.nx();
     double weight = edge_weight(i, grid.nx(), conditions.boundary.x);
     if (two_d) weight *= edge_weight(j, grid.ny(), conditions.boundary.y);
+    if (contact_pressure && (*contact_pressure)[kk] > 0.0) continue;
     const double p = std::max(pressure[kk], 0.0);
     const double h = film[kk];
     // theta eta / h: the Couette stress per unit sliding speed.

@@ -33,14 +33,10 @@
 namespace halfspace::lubrication {
 
 void MixedFrictionOptions::validate() const {
-  const auto check = [](double value, const char* name) {
-    if (!(std::isfinite(value) && value >= 0.0)) {
-      throw InputError(fmt::format("{} = {} is invalid: it must be >= 0 and finite", name, value));
-    }
-  };
-  check(contact_friction, "contact friction coefficient");
-  check(limiting_shear_stress, "limiting shear stress");
-  check(limiting_shear_slope, "limiting shear stress slope");
+  if (!(std::isfinite(contact_friction) && contact_friction >= 0.0)) {
+    throw OptionError("contact_friction", format_number(contact_friction), "is invalid: it must be >= 0 and finite");
+  }
+  shear.validate();
 }
 
 void MixedFilmOptions::validate() const {

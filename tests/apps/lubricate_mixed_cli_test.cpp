@@ -114,7 +114,7 @@ TEST(LubricateMixedCliTest, MixedFilmIsTheLibrarys) {
   lubrication::MixedFilmOptions options;
   options.load = 4.4e4;
   options.friction.contact_friction = 0.12;
-  options.friction.limiting_shear_slope = 0.05;
+  options.friction.shear.limiting_shear_slope = 0.05;
   const lubrication::MixedFilm expected =
       lubrication::solve_mixed_film(op, map.heights.maxCoeff() - map.heights, conditions, laws, options);
   ASSERT_TRUE(expected.converged()) << expected.message;
@@ -167,7 +167,7 @@ TEST(LubricateMixedCliTest, RejectsBadMixedInputNamingTheOption) {
     more.insert(more.end(), {"--entrainment-velocity", "1", "--output", "f.h5"});
     return run_program(mixed_run(more), dir.path());
   };
-  expect_input_error(with({"--contact-friction", "-1"}), {"contact friction coefficient = -1"}, dir / "f.h5");
+  expect_input_error(with({"--contact-friction", "-1"}), {"--contact-friction -1 is invalid"}, dir / "f.h5");
   expect_input_error(with({"--boundary-film", "0"}), {"boundary film = 0"}, dir / "f.h5");
   expect_input_error(with({"--speeds", "1,0.1"}), {"--speeds and --stribeck"}, dir / "f.h5");
   expect_input_error(with({"--speeds", "1,-0.1", "--stribeck", "s.csv"}), {"Stribeck speed -0.1"}, dir / "f.h5");

@@ -75,7 +75,7 @@ MixedFilmOptions mixed_options(double load = kLoad) {
   MixedFilmOptions options;
   options.load = load;
   options.friction.contact_friction = 0.1;
-  options.friction.limiting_shear_slope = 0.05;
+  options.friction.shear.limiting_shear_slope = 0.05;
   return options;
 }
 
@@ -252,10 +252,10 @@ TEST(MixedFilmTest, RefusesInvalidOptionsNamingThem) {
   EXPECT_NE(message(options).find("boundary film"), std::string::npos);
   options = mixed_options();
   options.friction.contact_friction = -0.1;
-  EXPECT_NE(message(options).find("contact friction"), std::string::npos);
+  EXPECT_NE(message(options).find("contact_friction"), std::string::npos);
   options = mixed_options();
-  options.friction.limiting_shear_slope = std::nan("");
-  EXPECT_NE(message(options).find("limiting shear stress slope"), std::string::npos);
+  options.friction.shear.limiting_shear_slope = std::nan("");
+  EXPECT_NE(message(options).find("limiting_shear_slope"), std::string::npos);
   options = mixed_options();
   options.load = -1.0;
   EXPECT_NE(message(options).find("load"), std::string::npos);

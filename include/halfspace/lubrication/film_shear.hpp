@@ -63,9 +63,11 @@ struct FilmShear {
 // on `grid` under `conditions` (its viscosity, sliding velocity and flow
 // boundary), with the viscosity law of `laws`. Validates the conditions,
 // the laws and the limits; throws InputError for arrays of the wrong size
-// or a film that is not positive.
+// or a film that is not positive. Nodes where `contact_pressure` (if given)
+// is positive carry no film shear: a mixed film's asperities take them
+// (their friction is the caller's).
 FilmShear film_shear(const Grid& grid, const FlowConditions& conditions, const LubricantLaws& laws,
                      const ShearLimits& limits, const Eigen::ArrayXd& film, const Eigen::ArrayXd& pressure,
-                     const Eigen::ArrayXd& fluid_fraction);
+                     const Eigen::ArrayXd& fluid_fraction, const Eigen::ArrayXd* contact_pressure = nullptr);
 
 }  // namespace halfspace::lubrication

@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "halfspace/lubrication/elastic_film.hpp"
+#include "halfspace/lubrication/film_shear.hpp"
 #include "halfspace/lubrication/film_solution.hpp"
 #include "halfspace/lubrication/flow_conditions.hpp"
 #include "halfspace/lubrication/lubricant.hpp"
@@ -42,13 +43,12 @@ inline constexpr std::size_t kMaxMixedFilmNodes = 2048;
 // How the film's shear and the asperities' friction are taken.
 struct MixedFrictionOptions {
   double contact_friction = 0.1;  // Coulomb coefficient on contact cells, >= 0
-  // The fluid's limiting shear stress tau_L = limiting_shear_stress +
-  // limiting_shear_slope * p_f (Pa; Bair & Winer 1979's linear law): the
-  // Couette shear of a cell is capped at tau_L. Both 0: Newtonian, no cap.
-  double limiting_shear_stress = 0.0;
-  double limiting_shear_slope = 0.0;
+  // The fluid's shear on cells without contact: film_shear's laws (Eyring,
+  // limiting shear stress tau_L0 + gamma p_f); all 0: Newtonian.
+  ShearLimits shear;
 
-  // Throws InputError naming the option unless all three are >= 0 and finite.
+  // Throws OptionError naming the option unless contact_friction is >= 0
+  // and finite and the shear limits are valid.
   void validate() const;
 };
 
