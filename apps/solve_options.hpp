@@ -63,6 +63,7 @@ struct SolveOptions : GivenOptions {
   std::optional<long long> threads;
   std::optional<std::string> fft_planning;
   std::optional<long long> deflation_block;
+  std::optional<std::string> active_set;  // on or off
   std::optional<std::string> max_memory;  // "8G", "512M" or bytes, as written
   // Subsurface stresses written into the result (docs/usage.md#stress).
   std::optional<std::string> stress_depths;  // "z1,z2,..." or "START:STOP:COUNT" (m), as written

@@ -298,6 +298,12 @@ solvers::SolverOptions solver_options_from(const SolveOptions& o) {
       if (*o.deflation_block != 0) solver.deflation.block = static_cast<std::size_t>(*o.deflation_block);
     }
     if (o.hardness) solver.interface_law.hardness = *o.hardness;  // hardness cap
+    if (o.active_set) {
+      if (*o.active_set != "on" && *o.active_set != "off") {
+        throw InputError(fmt::format("{} is invalid: allowed values are on and off", o.describe("active-set")));
+      }
+      solver.multilevel.active_set = *o.active_set == "on";
+    }
     solver.validate();
   });
   return solver;
