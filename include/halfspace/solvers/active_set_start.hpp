@@ -18,7 +18,7 @@
 // nothing is clipped there, so an adapting preconditioner (block deflation,
 // balancing_preconditioner.hpp) serves from the first iteration, where in
 // Polonsky-Keer it must wait until the set has settled
-// (docs/development-log.md, "Issue 31: the moving-set phase").
+// (docs/development-log.md, "2026-11-28: issue 31, the moving-set phase").
 //
 // The phase stops once an update changes at most settled_changes of the
 // set, when the changes stop falling (the method need not converge for a
