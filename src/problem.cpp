@@ -53,6 +53,7 @@ constexpr std::array kNames{
     ProblemOptionName{"max_iter", &P::max_iter},
     ProblemOptionName{"fft_planning", &P::fft_planning},
     ProblemOptionName{"deflation_block", &P::deflation_block},
+    ProblemOptionName{"active_set", &P::active_set},
     ProblemOptionName{"threads", &P::threads},
 };
 
@@ -69,6 +70,7 @@ std::string_view problem_name(std::string_view member) {
       {"hardness", "hardness"},
   }};
   if (member.starts_with("deflation")) return "deflation_block";
+  if (member.starts_with("active_set")) return "active_set";
   for (const auto& [known, name] : kMembers) {
     if (known == member) return name;
   }
@@ -362,6 +364,12 @@ solvers::SolverOptions Rules::solver() const {
       if (block != 0) solver.deflation.block = static_cast<std::size_t>(block);
     }
     if (o_.hardness) solver.interface_law.hardness = *o_.hardness;
+    if (o_.active_set) {
+      if (*o_.active_set != "on" && *o_.active_set != "off") {
+        throw OptionError("active_set", *o_.active_set, "is invalid: allowed values are on and off");
+      }
+      solver.multilevel.active_set = *o_.active_set == "on";
+    }
     solver.validate();
   });
   if (o_.fft_planning) {

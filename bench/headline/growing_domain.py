@@ -63,6 +63,11 @@ def solve(program, height_map, result, solver_args):
         raise StudyError(f"solving {height_map.name} failed (exit {done.returncode}): {done.stderr.strip()}")
     with h5py.File(result, "r") as f:
         row = {key: f.attrs[key] for key in ("iterations", "deflated_iterations", "converged")}
+        # FFT pairs of the whole solve: K and M^-1 products of the fine grid
+        # and the coarse levels' work in fine-grid products.
+        row["pairs"] = sum(float(f.attrs[key]) for key in ("operator_applications", "preconditioner_applications",
+                                                            "coarse_operator_work", "coarse_preconditioner_work")
+                           if key in f.attrs)
     result.unlink()
     return row
 
@@ -106,27 +111,31 @@ def main():
 
         rows = []
         for side in sides:
-            counts, deflated, failures = [], [], 0
+            counts, deflated, pairs, failures = [], [], [], 0
             for seed in seeds:
                 result = solve(program, surface(program, args.work_dir, side, seed),
                                args.work_dir / f"result-{side}-{seed}.h5", solver_args)
                 counts.append(int(result["iterations"]))
                 deflated.append(int(result["deflated_iterations"]))
+                pairs.append(float(result["pairs"]))
                 failures += 0 if int(result["converged"]) else 1
-                print(f"{side}^2 seed {seed}: {counts[-1]} iterations ({deflated[-1]} deflated)", file=sys.stderr)
-            rows.append((side, counts, deflated, failures))
+                print(f"{side}^2 seed {seed}: {counts[-1]} iterations ({deflated[-1]} deflated), "
+                      f"{pairs[-1]:.1f} FFT pairs", file=sys.stderr)
+            rows.append((side, counts, deflated, failures, pairs))
     except StudyError as error:
         print(f"growing-domain: error: {error}", file=sys.stderr)
         return 1
 
-    means = [sum(c) / len(c) for _, c, _, _ in rows]
-    lines = ["| grid | iterations per seed | mean | deflated (mean) | not converged | fit residual | "
-             "mean increase over the previous size |", "|---|---|--:|--:|--:|--:|--:|"]
+    means = [sum(c) / len(c) for _, c, _, _, _ in rows]
+    lines = ["| grid | iterations per seed | mean | deflated (mean) | FFT pairs (mean; K, M^-1 and coarse) | "
+             "not converged | fit residual | mean increase over the previous size |",
+             "|---|---|--:|--:|--:|--:|--:|--:|"]
     a, b, residuals = log_fit([r[0] for r in rows], means)
-    for k, ((side, counts, deflated, failures), mean, residual) in enumerate(zip(rows, means, residuals)):
+    for k, ((side, counts, deflated, failures, pairs), mean, residual) in enumerate(zip(rows, means, residuals)):
         step = f"{mean - means[k - 1]:+.1f}" if k > 0 else ""
         lines.append(f"| {side}x{side} | {', '.join(map(str, counts))} | {mean:.1f} | "
-                     f"{sum(deflated) / len(deflated):.1f} | {failures} | {residual:+.1f} | {step} |")
+                     f"{sum(deflated) / len(deflated):.1f} | {sum(pairs) / len(pairs):.1f} | {failures} | "
+                     f"{residual:+.1f} | {step} |")
     now = datetime.datetime.now(datetime.timezone.utc)
     uname = platform.uname()
     text = "\n".join([

@@ -69,6 +69,7 @@ struct ProblemOptions {
   std::optional<long long> max_iter;
   std::optional<std::string> fft_planning;
   std::optional<long long> deflation_block;  // 0: off
+  std::optional<std::string> active_set;     // on or off (pk-multilevel's active-set phase)
   std::optional<long long> threads;
 };
 

@@ -10,6 +10,7 @@
 #include "halfspace/error.hpp"
 #include "halfspace/fft/grid_transform.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
+#include "halfspace/solvers/active_set_start.hpp"
 #include "halfspace/solvers/adhesive_contact_solver.hpp"
 #include "halfspace/solvers/balancing_preconditioner.hpp"
 #include "halfspace/solvers/block_deflation.hpp"
@@ -96,10 +97,11 @@ bool stiff_coating_on_free_grid(const Grid& grid, const Elasticity& elasticity) 
 
 // Polonsky-Keer on an FFT operator: the paper's form, or the projected
 // form with the Fourier preconditioner (and the coarse correction if
-// `deflated`) when `projected`.
+// `deflated`) when `projected`; begun by the primal-dual active-set phase
+// if `active_set` and the preconditioner applies.
 std::unique_ptr<ContactSolver> make_polonsky_keer(const Grid& grid, const Elasticity& e_star,
                                                   const SolverOptions& options, double tolerance, bool fine,
-                                                  bool projected, bool deflated) {
+                                                  bool projected, bool deflated, bool active_set = false) {
   // A stiff layer on a soft substrate on a free grid: the paper's form
   // (see stiff_coating_on_free_grid).
   if (stiff_coating_on_free_grid(grid, e_star)) projected = false;
@@ -133,7 +135,15 @@ std::unique_ptr<ContactSolver> make_polonsky_keer(const Grid& grid, const Elasti
     deflation = std::make_unique<BlockDeflation>(grid, options.deflation);
     balancing = std::make_unique<BalancingPreconditioner>(*op, *preconditioner, *deflation);
   }
-  auto solver = std::make_unique<PolonskyKeer>(*op, pk, balancing ? balancing.get() : preconditioner.get());
+  Preconditioner* used = balancing ? balancing.get() : preconditioner.get();
+  auto polonsky_keer = std::make_unique<PolonskyKeer>(*op, pk, used);
+  std::unique_ptr<ContactSolver> solver;
+  if (active_set && used && !options.interface_law.hardness) {
+    solver =
+        std::make_unique<ActiveSetStart>(*op, *used, std::move(polonsky_keer), options.multilevel.active_set_options);
+  } else {
+    solver = std::move(polonsky_keer);
+  }
   return std::make_unique<SolverWithOperator>(std::move(op), std::move(preconditioner), std::move(deflation),
                                               std::move(balancing), std::move(solver));
 }
@@ -142,9 +152,15 @@ std::unique_ptr<ContactSolver> make_polonsky_keer(const Grid& grid, const Elasti
 // correction on the finest grid only, where the contact has the most spots.
 std::unique_ptr<ContactSolver> make_multilevel(const Grid& grid, const Elasticity& e_star,
                                                const SolverOptions& options) {
-  const bool deflated = multilevel_deflates(grid, options);
-  auto make_level = [e_star, options, deflated](const Grid& level, double tolerance, bool fine) {
-    return make_polonsky_keer(level, e_star, options, tolerance, fine, true, fine && deflated);
+  // With the active-set phase, block deflation (unless turned off) wherever
+  // its block covers the grid: the phase's linear solves on a fixed set
+  // need no settling before the correction joins.
+  const bool active_set = options.multilevel.active_set && !options.interface_law.hardness;
+  const bool deflated = multilevel_deflates(grid, options) ||
+                        (active_set && options.deflation.mode == DeflationOptions::Mode::automatic &&
+                         BlockDeflation::covers(grid, options.deflation.block));
+  auto make_level = [e_star, options, deflated, active_set](const Grid& level, double tolerance, bool fine) {
+    return make_polonsky_keer(level, e_star, options, tolerance, fine, true, fine && deflated, fine && active_set);
   };
   return std::make_unique<MultilevelSolver>(grid, options.tolerance, make_level, options.multilevel);
 }

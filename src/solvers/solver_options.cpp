@@ -82,6 +82,7 @@ void MultilevelOptions::validate() const {
     throw SolverOptionError("multilevel.warm_start_max_load_ratio", text(warm_start_max_load_ratio),
                             "is invalid: must be at least 1");
   }
+  active_set_options.validate();
 }
 
 void SolverOptions::validate() const {

@@ -110,6 +110,14 @@ class PolonskyKeer final : public ContactSolver {
   // Iterates in `start` itself (it becomes the result's pressure).
   SolveResult solve_from(std::span<const double> initial_gap, const Loading& loading, Eigen::ArrayXd&& start) override;
 
+  // Workspace field 0 or 1 (one entry per cell): free between solves, so
+  // that a phase run before solve_from (active_set_start.hpp) needs no
+  // fields of its own for them.
+  std::span<double> workspace(int which) {
+    Eigen::ArrayXd& field = which == 0 ? direction_ : image_;
+    return {field.data(), static_cast<std::size_t>(field.size())};
+  }
+
  private:
   // The iteration from `pressure`: a warm start if `warm`, else any values
   // (step 0 chooses the start).

@@ -86,8 +86,13 @@ struct SolveResult {
   int operator_applications = 0;         // number of K*p products
   int preconditioner_applications = 0;   // number of M^-1 g products (each one FFT pair)
   CoarseStart coarse;                    // coarse-grid start (MultilevelSolver); zero otherwise
-  DeflationRecord deflation;             // coarse-grid correction of the fine solve; block 0 without
-  AdhesionRecord adhesion;               // adhesive solves only
+  // The primal-dual active-set phase before Polonsky-Keer (active_set_start.hpp):
+  // its set updates and conjugate-gradient iterations (the latter are also
+  // in `iterations`, its products in the counts above); zero without it.
+  int active_set_outer = 0;
+  int active_set_inner = 0;
+  DeflationRecord deflation;  // coarse-grid correction of the fine solve; block 0 without
+  AdhesionRecord adhesion;    // adhesive solves only
 
   double approach = 0.0;          // rigid-body approach (m)
   double total_force = 0.0;       // N in 2D, N/m in 1D

@@ -43,7 +43,8 @@ double contact_modulus(const std::variant<double, LayeredMaterial>& elasticity);
 
 // Whether pk-multilevel on `grid` deflates its finest grid: deflation on,
 // or automatic where DeflationOptions::automatic_applies and there is no
-// hardness cap.
+// hardness cap. (With MultilevelOptions::active_set the serial solver
+// also deflates wherever the block covers the grid.)
 bool multilevel_deflates(const Grid& grid, const SolverOptions& options);
 
 }  // namespace halfspace::solvers

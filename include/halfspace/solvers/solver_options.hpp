@@ -15,6 +15,7 @@
 #include "halfspace/fft/fft_planning.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/layered_material.hpp"
+#include "halfspace/solvers/active_set_options.hpp"
 #include "halfspace/solvers/adhesion_law.hpp"
 #include "halfspace/solvers/block_deflation_options.hpp"
 #include "halfspace/solvers/interface_law.hpp"
@@ -59,10 +60,16 @@ struct MultilevelOptions {
   // within this factor of the start's force; further off, the coarse grids
   // give the better start (docs/solvers.md, warm starts).
   double warm_start_max_load_ratio = 1.5;
+  // The fine grid's solve begins with a primal-dual active-set phase from
+  // the prolonged start (active_set_start.hpp) on 2D grids without a
+  // hardness cap; block deflation then applies wherever its block covers
+  // the grid, unless turned off.
+  bool active_set = false;
+  ActiveSetOptions active_set_options;
 
   // Throws SolverOptionError naming the option ("multilevel.coarse_tolerance",
-  // ...) unless 0 < coarse_tolerance < 1, min_cells_per_axis >= 2 and
-  // warm_start_max_load_ratio >= 1.
+  // ...) unless 0 < coarse_tolerance < 1, min_cells_per_axis >= 2,
+  // warm_start_max_load_ratio >= 1 and active_set_options are valid.
   void validate() const;
 };
 
