@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #ifdef HALFSPACE_MPI
+#include "halfspace/mpi/session.hpp"
 #include "mpi/mpi_generate.hpp"
 #include "mpi/mpi_program.hpp"
 #endif
@@ -13,12 +14,12 @@ namespace halfspace::app {
 
 #ifdef HALFSPACE_MPI
 
-Processes::Processes(int& argc, char**& argv) {
-  start_mpi(argc, argv);
-}
-Processes::~Processes() {
-  stop_mpi();
-}
+struct Processes::Session {
+  Session(int& argc, char**& argv) : mpi(argc, argv) {}
+  mpi::Session mpi;
+};
+Processes::Processes(int& argc, char**& argv) : session_(std::make_unique<Session>(argc, argv)) {}
+Processes::~Processes() = default;
 int process_count() {
   return mpi_world().size();
 }
@@ -41,6 +42,7 @@ surface::SurfaceStatistics generate_distributed(const Grid& grid, const surface:
 
 #else
 
+struct Processes::Session {};
 Processes::Processes(int& /*argc*/, char**& /*argv*/) {}
 Processes::~Processes() = default;
 int process_count() {

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <optional>
 
 #include "halfspace/io/height_map_writer.hpp"
@@ -22,6 +23,10 @@ class Processes {
   ~Processes();
   Processes(const Processes&) = delete;
   Processes& operator=(const Processes&) = delete;
+
+ private:
+  struct Session;  // MPI's (mpi::Session) in an MPI build, empty otherwise
+  std::unique_ptr<Session> session_;
 };
 
 // How many processes run the program (1 in the serial build).

@@ -31,6 +31,11 @@
 
 namespace halfspace::app {
 
+HalfSpace half_space(const SolveSetup& setup) {
+  if (setup.coating) return *setup.coating;
+  return setup.e_star;
+}
+
 int run_solve(const SolveSetup& setup) {
   // Friction: one process (several are refused by make_solve_setup).
   if (setup.friction) return run_frictional_solve(setup);
@@ -54,9 +59,7 @@ int run_solve(const SolveSetup& setup) {
   // solve's (docs/development-log.md).
   std::optional<Activity> activity(std::in_place, fmt::format("solving ({})", on_grid));
   const std::span<const double> heights(setup.heights.data(), static_cast<std::size_t>(setup.heights.size()));
-  const SolveResult result = setup.coating
-                                 ? solvers::solve_surface(setup.grid, heights, *setup.coating, setup.loading, settings)
-                                 : solvers::solve_surface(setup.grid, heights, setup.e_star, setup.loading, settings);
+  const SolveResult result = solvers::solve_surface(setup.grid, heights, half_space(setup), setup.loading, settings);
   progress.clear();
 
   activity.emplace(fmt::format("computing the statistics of the {} grid", setup.grid.shape_string()));

@@ -3,9 +3,13 @@
 #pragma once
 
 #include "command.hpp"
+#include "halfspace/half_space.hpp"
 #include "solve_setup.hpp"
 
 namespace halfspace::app {
+
+// The half-space of `setup`: its coating, or the homogeneous E*.
+HalfSpace half_space(const SolveSetup& setup);
 
 // Solves, writes setup.output (also when not converged) and prints the
 // summary unless setup.quiet. Returns kExitOk when converged, else

@@ -18,7 +18,7 @@ void run_agreed_everywhere(const std::function<void()>& step) {
 
 surface::SurfaceStatistics generate_on_slabs(const Grid& grid, const surface::SelfAffineSpec& spec,
                                              io::HeightMapMetadata& metadata, const std::filesystem::path& output) {
-  const mpi::MpiCommunicator& world = mpi_world();
+  const mpi::MpiCommunicator world = mpi_world();
   const mpi::SlabLayout layout = mpi::slab_layout(grid.nx(), grid.ny(), world);
   // The spec was resolved by every process alike: the synthesis fails on all
   // or none.

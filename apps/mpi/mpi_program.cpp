@@ -25,13 +25,14 @@
 #include "../exit_codes.hpp"
 #include "../memory_check.hpp"
 #include "../progress.hpp"
+#include "../solve_command.hpp"
 #include "../summary.hpp"
 #include "../sweep_command.hpp"
 #include "halfspace/analysis/contact_statistics.hpp"
 #include "halfspace/error.hpp"
 #include "halfspace/io/result_metadata.hpp"
 #include "halfspace/io/result_writer.hpp"
-#include "halfspace/mpi/distributed_solver.hpp"
+#include "halfspace/mpi/distributed_layout.hpp"
 #include "halfspace/mpi/node_memory.hpp"
 #include "halfspace/mpi/parallel_height_map_reader.hpp"
 #include "halfspace/mpi/parallel_result_writer.hpp"
@@ -40,27 +41,25 @@
 #include "halfspace/mpi/slab_fft.hpp"
 #include "halfspace/mpi/slab_gather.hpp"
 #include "halfspace/mpi/slab_surface_statistics.hpp"
+#include "halfspace/solvers/surface_solve.hpp"
 #include "halfspace/threads.hpp"
 #include "mpi_sweep.hpp"
 
 namespace halfspace::app {
 namespace {
 
-std::unique_ptr<mpi::Session> session;
-std::unique_ptr<mpi::MpiCommunicator> world;
-
 constexpr const char* kNotYet = "is not available with more than one process yet";
 
 // `text` on the first process, to every process.
-void broadcast(std::string& text) {
+void broadcast(const mpi::MpiCommunicator& world, std::string& text) {
   std::uint64_t size = text.size();
-  mpi::check(MPI_Bcast(&size, 1, MPI_UINT64_T, 0, world->get()), "MPI_Bcast");
+  mpi::check(MPI_Bcast(&size, 1, MPI_UINT64_T, 0, world.get()), "MPI_Bcast");
   text.resize(size);
-  mpi::check(MPI_Bcast(text.data(), static_cast<int>(size), MPI_CHAR, 0, world->get()), "MPI_Bcast");
+  mpi::check(MPI_Bcast(text.data(), static_cast<int>(size), MPI_CHAR, 0, world.get()), "MPI_Bcast");
 }
 
 // The grid of the first process, to every process.
-Grid broadcast(const std::optional<Grid>& grid) {
+Grid broadcast(const mpi::MpiCommunicator& world, const std::optional<Grid>& grid) {
   std::uint64_t shape[4] = {0, 0, 0, 0};  // dimension, nx, ny, periodic
   double spacing[2] = {0.0, 0.0};
   if (grid) {
@@ -71,8 +70,8 @@ Grid broadcast(const std::optional<Grid>& grid) {
     spacing[0] = grid->dx();
     spacing[1] = grid->dy();
   }
-  mpi::check(MPI_Bcast(shape, 4, MPI_UINT64_T, 0, world->get()), "MPI_Bcast");
-  mpi::check(MPI_Bcast(spacing, 2, MPI_DOUBLE, 0, world->get()), "MPI_Bcast");
+  mpi::check(MPI_Bcast(shape, 4, MPI_UINT64_T, 0, world.get()), "MPI_Bcast");
+  mpi::check(MPI_Bcast(spacing, 2, MPI_DOUBLE, 0, world.get()), "MPI_Bcast");
   const Boundary boundary = shape[3] == 1 ? Boundary::periodic : Boundary::free;
   return shape[0] == 1 ? Grid::line(shape[1], spacing[0], boundary)
                        : Grid::plane(shape[1], shape[2], spacing[0], spacing[1], boundary);
@@ -92,24 +91,15 @@ std::optional<std::string> unsupported_by_program(const SolveSetup& setup) {
 // The solve on this process's rows; a failure that only some processes
 // meet in the middle of collective work ends them all (MPI_Abort), since the
 // others wait in a transform or a reduction and cannot learn of it.
-SolveResult solve_slab(const SolveSetup& setup, const mpi::SlabLayout& layout, const solvers::SolverOptions& settings) {
+SolveResult solve_slab(const SolveSetup& setup, std::span<const double> heights, const mpi::DistributedLayout& layout,
+                       const mpi::MpiCommunicator& world, const solvers::SolverOptions& settings) {
   try {
-    // The initial gap max(h) - h of the whole surface, this process's rows
-    // (the first process holds all rows, the others their own).
-    const Eigen::Map<const Eigen::ArrayXd> local_heights(
-        setup.heights.data() + (layout.first_row - setup.first_row) * layout.nx,
-        static_cast<Eigen::Index>(layout.local_size()));
-    const double highest =
-        world->max(local_heights.size() > 0 ? local_heights.maxCoeff() : -std::numeric_limits<double>::infinity());
-    const Eigen::ArrayXd gap = highest - local_heights;
-    const std::unique_ptr<solvers::ContactSolver> solver =
-        mpi::make_distributed_solver(setup.grid, slab_elasticity(setup), settings, *world);
-    return solver->solve({gap.data(), static_cast<std::size_t>(gap.size())}, setup.loading, {});
+    return solvers::solve_surface(setup.grid, heights, half_space(setup), setup.loading, settings, {}, layout);
   } catch (const InputError&) {
     throw;  // found by every process alike (options, reduced values)
   } catch (const std::exception& error) {
     fmt::print(stderr, "error: {} (while {}, on process {} of {})\n", error.what(), Activity::failed_while(),
-               world->rank(), world->size());
+               world.rank(), world.size());
     std::fflush(stderr);
     mpi::Session::abort(kExitInputError);
   }
@@ -117,23 +107,8 @@ SolveResult solve_slab(const SolveSetup& setup, const mpi::SlabLayout& layout, c
 
 }  // namespace
 
-mpi::SlabElasticity slab_elasticity(const SolveSetup& setup) {
-  if (setup.coating) return *setup.coating;
-  return setup.e_star;
-}
-
-void start_mpi(int& argc, char**& argv) {
-  session = std::make_unique<mpi::Session>(argc, argv);
-  world = std::make_unique<mpi::MpiCommunicator>(MPI_COMM_WORLD);
-}
-
-void stop_mpi() {
-  world.reset();
-  session.reset();
-}
-
-const mpi::MpiCommunicator& mpi_world() {
-  return *world;
+mpi::MpiCommunicator mpi_world() {
+  return mpi::MpiCommunicator(MPI_COMM_WORLD);
 }
 
 namespace {
@@ -142,100 +117,110 @@ namespace {
 // made.
 struct SurfaceDeferred {};
 
-// Set while the first process reads or builds a whole surface alone.
-bool whole_on_first = false;
+// How the processes make one setup's surface: the hooks of SurfaceSharing
+// over MPI_COMM_WORLD, and what they know of each other meanwhile.
+class DistributedSurface {
+ public:
+  DistributedSurface() : processes_on_node_(mpi::share_of_node(world_, 0.0).processes) {}
 
-// The first process reads or builds the surface whole and keeps its own
-// rows; every other gets its slab of rows. Collective.
-Surface share_surface(const std::function<Surface()>& make_whole) {
-  const bool root = world->rank() == 0;
-  std::optional<Surface> whole;
-  mpi::run_agreed(*world, [&] {
-    if (!root) return;
-    whole_on_first = true;
-    try {
-      whole.emplace(make_whole());
-    } catch (...) {
-      whole_on_first = false;
-      throw;
+  SurfaceSharing sharing() {
+    SurfaceSharing share;
+    share.whole = [this](const std::function<Surface()>& make_whole) { return share_surface(make_whole); };
+    share.rows = [this](const Grid& grid) {
+      const mpi::SlabLayout layout = mpi::slab_layout(grid.nx(), grid.ny(), world_);
+      return RowRange{layout.first_row, layout.rows};
+    };
+    share.read_hdf5_rows = [this](const std::filesystem::path& path, const std::string& dataset) {
+      return mpi::read_height_map_slab(world_, path, dataset);
+    };
+    share.communicator = &world_;
+    share.check_memory =
+        [this](const std::string& request, const Grid& grid, const std::function<double(std::size_t rows)>& estimate,
+               const std::optional<MemoryLimit>& limit) { check_process_memory(request, grid, estimate, limit); };
+    return share;
+  }
+
+ private:
+  // The first process reads or builds the surface whole and keeps its own
+  // rows; every other gets its slab of rows. Collective.
+  Surface share_surface(const std::function<Surface()>& make_whole) {
+    const bool root = world_.rank() == 0;
+    std::optional<Surface> whole;
+    mpi::run_agreed(world_, [&] {
+      if (!root) return;
+      whole_on_first_ = true;
+      try {
+        whole.emplace(make_whole());
+      } catch (...) {
+        whole_on_first_ = false;
+        throw;
+      }
+      whole_on_first_ = false;
+    });
+    if (world_.size() == 1) return std::move(*whole);
+    const Grid grid = broadcast(world_, whole ? std::optional<Grid>(whole->grid) : std::nullopt);
+    std::string source = whole ? whole->source : std::string();
+    broadcast(world_, source);
+    std::string steps;
+    if (whole) {
+      for (const std::string& step : whole->preparation) steps += step + '\n';
     }
-    whole_on_first = false;
-  });
-  if (world->size() == 1) return std::move(*whole);
-  const Grid grid = broadcast(whole ? std::optional<Grid>(whole->grid) : std::nullopt);
-  std::string source = whole ? whole->source : std::string();
-  broadcast(source);
-  std::string steps;
-  if (whole) {
-    for (const std::string& step : whole->preparation) steps += step + '\n';
-  }
-  broadcast(steps);
-  // A 1D grid is not distributed: the first process keeps it, the others
-  // hold no rows (the run is refused before they would need any).
-  if (grid.dimension() == 1) {
-    if (root) return std::move(*whole);
-    return {grid, Eigen::ArrayXd(), std::move(source), {}, 0, 0};
-  }
-  const mpi::SlabLayout layout = mpi::slab_layout(grid.nx(), grid.ny(), *world);
-  Eigen::ArrayXd local(static_cast<Eigen::Index>(layout.local_size()));
-  mpi::scatter_rows(*world, layout,
-                    root ? std::span<const double>(whole->heights.data(), grid.size()) : std::span<const double>(),
-                    {local.data(), layout.local_size()});
-  whole.reset();  // the first process too keeps only its rows
-  std::vector<std::string> preparation;
-  for (std::size_t begin = 0, end; (end = steps.find('\n', begin)) != std::string::npos; begin = end + 1) {
-    preparation.push_back(steps.substr(begin, end - begin));
-  }
-  return {grid, std::move(local), std::move(source), std::move(preparation), layout.first_row, layout.rows};
-}
-
-// The memory check of a distributed run: what one process needs for the
-// largest slab (slab_solve_memory_estimate), against what its machine has,
-// where the needs of the processes on one machine add up (they share its
-// memory); --max-memory bounds each process. Collective, except while the
-// first process reads a surface alone: it then also holds the whole map
-// (read and prepared), and counts the other processes on its machine as
-// needing as much as it does for its slab.
-int processes_on_node = 1;
-void check_process_memory(const std::string& request, const Grid& grid,
-                          const std::function<double(std::size_t rows)>& estimate,
-                          const std::optional<MemoryLimit>& limit) {
-  const auto processes = static_cast<std::size_t>(world->size());
-  const std::size_t rows = grid.dimension() == 1 ? 1 : grid.ny();
-  const double mine = estimate(grid.dimension() == 1 ? rows : (rows + processes - 1) / processes);
-  const bool per_process = limit && limit->given;
-  const auto check = [&](double together, int on_node, double extra) {
-    if (per_process) {
-      require_memory(fmt::format("{}, per process of {}", request, processes), mine + extra, limit);
-    } else {
-      require_memory(fmt::format("{}, on {} processes ({} on this machine, together)", request, processes, on_node),
-                     together + extra, limit);
+    broadcast(world_, steps);
+    // A 1D grid is not distributed: the first process keeps it, the others
+    // hold no rows (the run is refused before they would need any).
+    if (grid.dimension() == 1) {
+      if (root) return std::move(*whole);
+      return {grid, Eigen::ArrayXd(), std::move(source), {}, 0, 0};
     }
-  };
-  if (whole_on_first) {
-    check(mine * processes_on_node, processes_on_node, 2.0 * 8.0 * static_cast<double>(grid.size()));
-    return;
+    const mpi::SlabLayout layout = mpi::slab_layout(grid.nx(), grid.ny(), world_);
+    Eigen::ArrayXd local(static_cast<Eigen::Index>(layout.local_size()));
+    mpi::scatter_rows(world_, layout,
+                      root ? std::span<const double>(whole->heights.data(), grid.size()) : std::span<const double>(),
+                      {local.data(), layout.local_size()});
+    whole.reset();  // the first process too keeps only its rows
+    std::vector<std::string> preparation;
+    for (std::size_t begin = 0, end; (end = steps.find('\n', begin)) != std::string::npos; begin = end + 1) {
+      preparation.push_back(steps.substr(begin, end - begin));
+    }
+    return {grid, std::move(local), std::move(source), std::move(preparation), layout.first_row, layout.rows};
   }
-  mpi::run_agreed(*world, [&] {
-    const mpi::NodeShare node = mpi::share_of_node(*world, mine);
-    check(node.bytes, node.processes, 0.0);
-  });
-}
 
-SurfaceSharing distributed_sharing() {
-  SurfaceSharing share;
-  share.whole = share_surface;
-  share.rows = [](const Grid& grid) {
-    const mpi::SlabLayout layout = mpi::slab_layout(grid.nx(), grid.ny(), *world);
-    return RowRange{layout.first_row, layout.rows};
-  };
-  share.read_hdf5_rows = [](const std::filesystem::path& path, const std::string& dataset) {
-    return mpi::read_height_map_slab(*world, path, dataset);
-  };
-  share.communicator = world.get();
-  share.check_memory = check_process_memory;
-  return share;
-}
+  // The memory check of a distributed run: what one process needs for the
+  // largest slab (slab_solve_memory_estimate), against what its machine has,
+  // where the needs of the processes on one machine add up (they share its
+  // memory); --max-memory bounds each process. Collective, except while the
+  // first process reads a surface alone: it then also holds the whole map
+  // (read and prepared), and counts the other processes on its machine as
+  // needing as much as it does for its slab.
+  void check_process_memory(const std::string& request, const Grid& grid,
+                            const std::function<double(std::size_t rows)>& estimate,
+                            const std::optional<MemoryLimit>& limit) const {
+    const auto processes = static_cast<std::size_t>(world_.size());
+    const std::size_t rows = grid.dimension() == 1 ? 1 : grid.ny();
+    const double mine = estimate(grid.dimension() == 1 ? rows : (rows + processes - 1) / processes);
+    const bool per_process = limit && limit->given;
+    const auto check = [&](double together, int on_node, double extra) {
+      if (per_process) {
+        require_memory(fmt::format("{}, per process of {}", request, processes), mine + extra, limit);
+      } else {
+        require_memory(fmt::format("{}, on {} processes ({} on this machine, together)", request, processes, on_node),
+                       together + extra, limit);
+      }
+    };
+    if (whole_on_first_) {
+      check(mine * processes_on_node_, processes_on_node_, 2.0 * 8.0 * static_cast<double>(grid.size()));
+      return;
+    }
+    mpi::run_agreed(world_, [&] {
+      const mpi::NodeShare node = mpi::share_of_node(world_, mine);
+      check(node.bytes, node.processes, 0.0);
+    });
+  }
+
+  const mpi::MpiCommunicator world_ = mpi_world();
+  int processes_on_node_ = 1;
+  bool whole_on_first_ = false;  // while the first process reads or builds a whole surface alone
+};
 
 // The first pass: no process communicates, so every hook stops it.
 SurfaceSharing deferred_sharing() {
@@ -253,60 +238,64 @@ SurfaceSharing deferred_sharing() {
 }  // namespace
 
 SolveSetup make_distributed_setup(const std::function<SolveSetup(const SurfaceSharing& share)>& make) {
-  processes_on_node = mpi::share_of_node(*world, 0.0).processes;
+  DistributedSurface surface;
+  const mpi::MpiCommunicator world = mpi_world();
   // Twice: first every process checks the options up to the surface without
   // any communication, and all agree on the outcome; only then do they
   // meet in the surface's collectives, which a process that failed before
   // them would never reach (the others would wait for it forever).
-  mpi::run_agreed(*world, [&] {
+  mpi::run_agreed(world, [&] {
     try {
       make(deferred_sharing());
     } catch (const SurfaceDeferred&) {
     }
   });
   std::optional<SolveSetup> setup;
-  mpi::run_agreed(*world, [&] { setup.emplace(make(distributed_sharing())); });
+  mpi::run_agreed(world, [&] { setup.emplace(make(surface.sharing())); });
   return std::move(*setup);
 }
 
 std::optional<int> run_solve_on_slabs(const SolveSetup& setup) {
+  const mpi::MpiCommunicator world = mpi_world();
+  const mpi::DistributedLayout layout(world);
   const std::optional<std::string> unsupported = unsupported_by_program(setup);
-  const bool root = world->rank() == 0;
-  if (world->size() == 1 && (unsupported || !mpi::distributable(setup.grid, setup.solver))) return std::nullopt;
+  const bool root = world.rank() == 0;
+  if (world.size() == 1 && (unsupported || !layout.takes(setup.grid, half_space(setup), setup.solver))) {
+    return std::nullopt;
+  }
   if (unsupported) throw InputError(*unsupported + ": solve it on one process");
-  mpi::check_distributable(setup.grid, setup.solver);
+  layout.check(setup.grid, half_space(setup), setup.solver);
 
   // Threads first: the FFT plans use the thread count in force when made.
   set_threads(setup.threads);
-  if (setup.load_values.size() > 1) return run_sweep_on_slabs(setup, *world);
+  const mpi::SlabLayout slab = mpi::slab_layout(setup.grid.nx(), setup.grid.ny(), world);
+  // This process's rows of the surface (the first process may hold all).
+  const std::span<const double> heights(setup.heights.data() + (slab.first_row - setup.first_row) * slab.nx,
+                                        slab.local_size());
+  if (setup.load_values.size() > 1) return run_sweep_on_slabs(setup, heights, layout);
   Progress progress(!setup.quiet && root, 1, setup.solver.tolerance);
   solvers::SolverOptions settings = setup.solver;
   settings.progress = progress.callback();
-  const mpi::SlabLayout layout = mpi::slab_layout(setup.grid.nx(), setup.grid.ny(), *world);
   std::optional<Activity> activity(
       std::in_place, fmt::format("solving ({} on the {} grid, {} processes)", solvers::to_string(setup.solver.type),
-                                 setup.grid.shape_string(), world->size()));
-  SolveResult result = solve_slab(setup, layout, settings);
+                                 setup.grid.shape_string(), world.size()));
+  SolveResult result = solve_slab(setup, heights, layout, world, settings);
   progress.clear();
 
   // Statistics and the file from the slabs: no process holds a whole field.
   const auto span_of = [](const Eigen::ArrayXd& a) {
     return std::span<const double>(a.data(), static_cast<std::size_t>(a.size()));
   };
-  const Eigen::Map<const Eigen::ArrayXd> local_heights(
-      setup.heights.data() + (layout.first_row - setup.first_row) * layout.nx,
-      static_cast<Eigen::Index>(layout.local_size()));
-  const std::span<const double> heights(local_heights.data(), layout.local_size());
   io::ResultMetadata metadata = io::provenance_metadata(provenance(setup));
   metadata.coating = setup.coating;
-  mpi::run_agreed(*world, [&] {
+  mpi::run_agreed(world, [&] {
     activity.emplace(fmt::format("computing the statistics of the {} grid", setup.grid.shape_string()));
-    metadata.surface_statistics = mpi::slab_surface_statistics(setup.grid, layout, heights, *world);
+    metadata.surface_statistics = mpi::slab_surface_statistics(setup.grid, slab, heights, world);
     metadata.contact_statistics =
-        mpi::slab_contact_statistics(setup.grid, layout, span_of(result.pressure), span_of(result.gap), *world);
+        mpi::slab_contact_statistics(setup.grid, slab, span_of(result.pressure), span_of(result.gap), world);
   });
   activity.emplace(fmt::format("writing {}", setup.output.string()));
-  mpi::write_result_slabs(*world, setup.output, setup.grid, layout, heights, result, metadata);
+  mpi::write_result_slabs(world, setup.output, setup.grid, slab, heights, result, metadata);
   activity.reset();
   if (root && !setup.quiet) {
     print_summary(stdout, setup, result);

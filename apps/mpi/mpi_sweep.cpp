@@ -23,6 +23,7 @@
 #include "../activity.hpp"
 #include "../exit_codes.hpp"
 #include "../progress.hpp"
+#include "../solve_command.hpp"
 #include "../sweep_command.hpp"
 #include "halfspace/analysis/contact_statistics.hpp"
 #include "halfspace/analysis/load_sweep.hpp"
@@ -31,12 +32,13 @@
 #include "halfspace/io/sweep_writer.hpp"
 #include "halfspace/linalg/parallel.hpp"
 #include "halfspace/mpi/agreement.hpp"
-#include "halfspace/mpi/distributed_solver.hpp"
 #include "halfspace/mpi/parallel_result_writer.hpp"
 #include "halfspace/mpi/session.hpp"
 #include "halfspace/mpi/slab_contact_statistics.hpp"
 #include "halfspace/mpi/slab_fft.hpp"
 #include "halfspace/mpi/slab_surface_statistics.hpp"
+#include "halfspace/solvers/solver_factory.hpp"
+#include "halfspace/solvers/surface_solve.hpp"
 #include "mpi_program.hpp"
 
 namespace halfspace::app {
@@ -68,22 +70,20 @@ std::vector<Loading> checked_loads(const SolveSetup& setup, std::span<const doub
 // their statistics (from the slabs) the same on every process. A failure that only
 // some processes meet in the middle of collective work ends them all
 // (MPI_Abort), as in the single solve.
-std::vector<analysis::SweepStep> solve_steps(const SolveSetup& setup, const mpi::SlabLayout& layout,
-                                             std::span<const double> heights, const mpi::MpiCommunicator& world) {
+std::vector<analysis::SweepStep> solve_steps(const SolveSetup& setup, const mpi::SlabLayout& slab,
+                                             std::span<const double> heights, const mpi::DistributedLayout& layout,
+                                             const mpi::MpiCommunicator& world) {
   const bool root = world.rank() == 0;
   try {
     const Grid& grid = setup.grid;
-    const Eigen::Map<const Eigen::ArrayXd> local_heights(heights.data(), static_cast<Eigen::Index>(heights.size()));
-    const double highest =
-        world.max(local_heights.size() > 0 ? local_heights.maxCoeff() : -std::numeric_limits<double>::infinity());
-    const Eigen::ArrayXd gap = highest - local_heights;
+    const Eigen::ArrayXd gap = solvers::initial_gap(grid, heights, layout);
     const std::vector<Loading> loads = checked_loads(setup, span_of(gap), world);
 
     Progress progress(!setup.quiet && root, loads.size(), setup.solver.tolerance);
     solvers::SolverOptions settings = setup.solver;
     settings.progress = progress.callback();
     const std::unique_ptr<solvers::ContactSolver> solver =
-        mpi::make_distributed_solver(grid, slab_elasticity(setup), settings, world);
+        solvers::make_solver(grid, half_space(setup), settings, layout);
 
     std::vector<analysis::SweepStep> steps;
     Eigen::ArrayXd previous;  // this process's rows of the last step's pressure
@@ -98,7 +98,7 @@ std::vector<analysis::SweepStep> solve_steps(const SolveSetup& setup, const mpi:
       previous = step.result.pressure;
       previous_converged = step.result.converged();
       step.statistics =
-          mpi::slab_contact_statistics(grid, layout, span_of(step.result.pressure), span_of(step.result.gap), world);
+          mpi::slab_contact_statistics(grid, slab, span_of(step.result.pressure), span_of(step.result.gap), world);
       steps.push_back(std::move(step));
     }
     progress.clear();
@@ -115,15 +115,15 @@ std::vector<analysis::SweepStep> solve_steps(const SolveSetup& setup, const mpi:
 
 }  // namespace
 
-int run_sweep_on_slabs(const SolveSetup& setup, const mpi::MpiCommunicator& world) {
+int run_sweep_on_slabs(const SolveSetup& setup, std::span<const double> heights,
+                       const mpi::DistributedLayout& distributed) {
+  const mpi::MpiCommunicator world = mpi_world();
   const bool root = world.rank() == 0;
   const mpi::SlabLayout layout = mpi::slab_layout(setup.grid.nx(), setup.grid.ny(), world);
-  const std::span<const double> heights(setup.heights.data() + (layout.first_row - setup.first_row) * layout.nx,
-                                        layout.local_size());
   std::optional<Activity> activity(
       std::in_place, fmt::format("solving a load sweep ({} on the {} grid, {} processes)",
                                  solvers::to_string(setup.solver.type), setup.grid.shape_string(), world.size()));
-  const std::vector<analysis::SweepStep> steps = solve_steps(setup, layout, heights, world);
+  const std::vector<analysis::SweepStep> steps = solve_steps(setup, layout, heights, distributed, world);
   io::ResultMetadata metadata = io::provenance_metadata(provenance(setup));
   metadata.coating = setup.coating;
   mpi::run_agreed(world, [&] {

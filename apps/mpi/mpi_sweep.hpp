@@ -2,8 +2,10 @@
 // of rows (HALFSPACE_MPI builds only).
 #pragma once
 
+#include <span>
+
 #include "../solve_setup.hpp"
-#include "halfspace/mpi/mpi_communicator.hpp"
+#include "halfspace/mpi/distributed_layout.hpp"
 
 namespace halfspace::app {
 
@@ -14,6 +16,7 @@ namespace halfspace::app {
 // (mpi::write_sweep_slabs), the first process then the CSV and the summary
 // (report_sweep). Returns the serial run_sweep's exit code on every process.
 // Collective; throws InputError alike on every process for an invalid load.
-int run_sweep_on_slabs(const SolveSetup& setup, const mpi::MpiCommunicator& world);
+// `heights` are this process's rows of the surface, `layout` the processes'.
+int run_sweep_on_slabs(const SolveSetup& setup, std::span<const double> heights, const mpi::DistributedLayout& layout);
 
 }  // namespace halfspace::app

@@ -10,15 +10,11 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
-#include <functional>
-#include <optional>
 #include <utility>
 
 #include "halfspace/error.hpp"
-#include "halfspace/kernels/layered_fourier.hpp"
 #include "halfspace/kernels/periodic_fourier.hpp"
 #include "halfspace/linalg/parallel.hpp"
-#include "halfspace/material.hpp"
 
 namespace halfspace::mpi {
 namespace {
@@ -40,36 +36,15 @@ std::shared_ptr<SlabRealFft> checked_transform(const Grid& grid, std::shared_ptr
 
 // f(|q|) on this process's spectrum columns, [c * ny + r] (SlabRealFft).
 template <class Multiplier>
-std::vector<double> on_local_spectrum(const Grid& grid, const SlabLayout& layout, Multiplier&& multiplier) {
+std::vector<double> on_local_spectrum(const kernels::NormalKernel& kernel, const SlabLayout& layout,
+                                      Multiplier&& multiplier) {
   std::vector<double> values(layout.columns * layout.ny);
   linalg::for_each_row(layout.columns, layout.ny, [&](std::size_t c) {
-    const double qx = kernels::dft_wavenumber(layout.first_column + c, grid.nx(), grid.dx());
     for (std::size_t r = 0; r < layout.ny; ++r) {
-      values[c * layout.ny + r] = multiplier(std::hypot(qx, kernels::dft_wavenumber(r, grid.ny(), grid.dy())));
+      values[c * layout.ny + r] = multiplier(kernel.wavenumber(r, layout.first_column + c));
     }
   });
   return values;
-}
-
-// The kernel u(q)/p(q) of `elasticity` (m/Pa), 0 at q = 0, as
-// FftInfluenceOperator's periodic kernel.
-std::function<double(double)> kernel_of(const SlabElasticity& elasticity) {
-  if (const auto* material = std::get_if<LayeredMaterial>(&elasticity)) {
-    return [layered = kernels::LayeredKernel(*material)](double q) { return layered.spectrum(q); };
-  }
-  const double e_star = checked_composite_modulus(std::get<double>(elasticity));
-  return [e_star](double q) { return kernels::periodic_kernel_spectrum(q, e_star); };
-}
-
-// The preconditioner's symbol 1/(kernel N) as FourierPreconditioner forms
-// it: E*|q|/(2N) for the homogeneous half-space, 1/(kernel(q) N) coated.
-std::function<double(double)> inverse_kernel_of(const SlabElasticity& elasticity, double cells) {
-  if (const auto* material = std::get_if<LayeredMaterial>(&elasticity)) {
-    return
-        [layered = kernels::LayeredKernel(*material), cells](double q) { return 1.0 / (layered.spectrum(q) * cells); };
-  }
-  const double scale = 0.5 * checked_composite_modulus(std::get<double>(elasticity)) / cells;
-  return [scale](double q) { return q * scale; };
 }
 
 // spectrum *= multiplier, then the inverse transform into `out`.
@@ -81,24 +56,15 @@ void multiply_and_invert(SlabRealFft& fft, const std::vector<double>& multiplier
 
 }  // namespace
 
-SlabFourierOperator::SlabFourierOperator(const Grid& grid, const SlabElasticity& elasticity,
+SlabFourierOperator::SlabFourierOperator(const Grid& grid, const HalfSpace& half_space,
                                          std::shared_ptr<SlabRealFft> transform)
     : grid_(grid),
-      elasticity_(elasticity),
+      normal_(grid, half_space),
       transform_(checked_transform(grid, std::move(transform), "SlabFourierOperator", true)) {
-  const std::function<double(double)> spectrum = kernel_of(elasticity);
   // FFTW's transforms are unnormalised: fold 1/N into the kernel.
   const double inverse_n = 1.0 / static_cast<double>(grid.size());
-  kernel_ = on_local_spectrum(grid, transform_->layout(), [&](double q) { return spectrum(q) * inverse_n; });
-  // K_ii = (1/N) sum over the whole spectrum, in FftInfluenceOperator's order.
-  double sum = 0.0;
-  for (std::size_t r = 0; r < grid.ny(); ++r) {
-    const double qy = kernels::dft_wavenumber(r, grid.ny(), grid.dy());
-    for (std::size_t c = 0; c < grid.nx(); ++c) {
-      sum += spectrum(std::hypot(kernels::dft_wavenumber(c, grid.nx(), grid.dx()), qy));
-    }
-  }
-  self_ = sum * inverse_n;
+  kernel_ = on_local_spectrum(normal_, transform_->layout(), [&](double q) { return normal_.symbol(q) * inverse_n; });
+  self_ = normal_.self_influence();
 }
 
 void SlabFourierOperator::apply(std::span<const double> pressure, std::span<double> displacement) {
@@ -133,34 +99,29 @@ class SlabCirculantForm final : public operators::CirculantForm {
 
 CirculantForm& SlabFourierOperator::circulant_form() {
   if (!circulant_) {
-    // As FftInfluenceOperator's periodic form: E*|q|/2 or the coated
-    // kernel's inverse, over N.
+    // As FftInfluenceOperator's periodic form: the inverse kernel over N.
     const double inverse_n = 1.0 / static_cast<double>(grid_.size());
-    const auto* coating = std::get_if<LayeredMaterial>(&elasticity_);
-    const std::optional<kernels::LayeredKernel> layered =
-        coating ? std::optional<kernels::LayeredKernel>(*coating) : std::nullopt;
-    const double e_star = coating ? 0.0 : std::get<double>(elasticity_);
-    std::vector<double> stiffness = on_local_spectrum(grid_, transform_->layout(), [&](double q) {
-      return q > 0.0 ? (layered ? 1.0 / layered->spectrum(q) : 0.5 * e_star * q) * inverse_n : 0.0;
-    });
+    std::vector<double> stiffness = on_local_spectrum(
+        normal_, transform_->layout(), [&](double q) { return q > 0.0 ? normal_.stiffness(q) * inverse_n : 0.0; });
     circulant_ = std::make_unique<SlabCirculantForm>(*this, transform_, std::move(stiffness));
   }
   return *circulant_;
 }
 
-SlabFourierPreconditioner::SlabFourierPreconditioner(const Grid& grid, const SlabElasticity& elasticity,
+SlabFourierPreconditioner::SlabFourierPreconditioner(const Grid& grid, const HalfSpace& half_space,
                                                      std::shared_ptr<SlabRealFft> transform)
     : transform_(checked_transform(grid, std::move(transform), "SlabFourierPreconditioner", false)) {
-  const std::function<double(double)> inverse_kernel = inverse_kernel_of(elasticity, static_cast<double>(grid.size()));
-  symbol_ = on_local_spectrum(grid, transform_->layout(), inverse_kernel);
-  // The mean mode (zero above) gets the smallest non-zero |q|, the first
+  const kernels::NormalKernel kernel(grid, half_space);
+  const auto cells = static_cast<double>(grid.size());
+  symbol_ = on_local_spectrum(kernel, transform_->layout(), [&](double q) { return kernel.inverse_symbol(q, cells); });
+  // The mean mode (unset above) gets the smallest non-zero |q|, the first
   // harmonic along x or y (hypot(q, 0) = q exactly, as FourierPreconditioner
   // finds it).
   const SlabLayout& layout = transform_->layout();
   if (layout.first_column == 0 && layout.columns > 0) {
     const double q_min =
         std::min(kernels::dft_wavenumber(1, grid.nx(), grid.dx()), kernels::dft_wavenumber(1, grid.ny(), grid.dy()));
-    symbol_[0] = inverse_kernel(q_min);
+    symbol_[0] = kernel.inverse_symbol(q_min, cells);
   }
 }
 

@@ -1,6 +1,6 @@
 // Love's coefficients k(|i|, |j|) on the (2ny, 2nx) wrap-around grid are the
-// quadrant 0 <= i <= nx, 0 <= j <= ny mirrored in both axes (as
-// FftInfluenceOperator builds them), so their DFT is real and is the 2D
+// quadrant 0 <= i <= nx, 0 <= j <= ny mirrored in both axes
+// (NormalKernel::write_padded), so their DFT is real and is the 2D
 // DCT-I (FFTW's REDFT00) of the quadrant: kx = 0 .. nx, ky = 0 .. ny, and
 // ky > ny reads 2ny - ky. Each process evaluates the quadrant rows FFTW-MPI
 // gives it, transforms them along x, FFTW-MPI transposes the quadrant to the
@@ -22,9 +22,8 @@
 
 #include "../fft/fftw_planner.hpp"
 #include "halfspace/error.hpp"
-#include "halfspace/kernels/love_rectangle.hpp"
+#include "halfspace/kernels/normal_kernel.hpp"
 #include "halfspace/linalg/parallel.hpp"
-#include "halfspace/material.hpp"
 #include "halfspace/threads.hpp"
 
 namespace halfspace::mpi {
@@ -79,13 +78,11 @@ fftw_plan dct_rows(QuadrantTransform& buffer, std::size_t n, std::size_t howmany
 
 SlabFreeOperator::SlabFreeOperator(const Grid& grid, double e_star, const MpiCommunicator& comm, FftPlanning planning)
     : grid_(checked_free_grid(grid)) {
-  e_star = checked_composite_modulus(e_star);
+  const kernels::NormalKernel kernel(grid, e_star);
   fft_ = std::make_unique<SlabPaddedRealFft>(grid.nx(), grid.ny(), comm, planning);
   const SlabLayout& layout = fft_->layout();
   const std::size_t nx = grid.nx();
   const std::size_t ny = grid.ny();
-  const double dx = grid.dx();
-  const double dy = grid.dy();
 
   // The quadrant's rows here, and after the transpose its columns, which
   // must be the padded transform's (both FFTW-MPI's default block of nx + 1).
@@ -102,13 +99,9 @@ SlabFreeOperator::SlabFreeOperator(const Grid& grid, double e_star, const MpiCom
   }
   QuadrantTransform quadrant(static_cast<std::size_t>(allocation));
   double* values = quadrant.values();
-  linalg::for_each_row(static_cast<std::size_t>(rows), nx + 1, [&](std::size_t j) {
-    const double y = static_cast<double>(static_cast<std::size_t>(first_row) + j) * dy;
-    for (std::size_t i = 0; i <= nx; ++i) {
-      values[j * (nx + 1) + i] =
-          kernels::love_rectangle_displacement(static_cast<double>(i) * dx, y, 0.5 * dx, 0.5 * dy, e_star);
-    }
-  });
+  const std::vector<double> rows_here =
+      kernel.free_quadrant(static_cast<std::size_t>(first_row), static_cast<std::size_t>(rows));
+  std::copy(rows_here.begin(), rows_here.end(), values);
   fftw_plan along_x = nullptr;
   fftw_plan transpose = nullptr;
   fftw_plan along_y = nullptr;
@@ -127,8 +120,7 @@ SlabFreeOperator::SlabFreeOperator(const Grid& grid, double e_star, const MpiCom
   const double inverse_n = 1.0 / fft_->padded_size();
   symbol_.resize(layout.columns * (ny + 1));
   linalg::for_each_index(symbol_.size(), [&](std::size_t k) { symbol_[k] = values[k] * inverse_n; });
-  // K_ii: the coefficient at offset 0, as the serial operator takes it.
-  self_ = kernels::love_rectangle_displacement(0.0, 0.0, 0.5 * dx, 0.5 * dy, e_star);
+  self_ = kernel.self_influence();
 }
 
 void SlabFreeOperator::apply(std::span<const double> pressure, std::span<double> displacement) {

@@ -10,39 +10,32 @@
 #include <complex>
 #include <limits>
 #include <memory>
-#include <optional>
 #include <utility>
 #include <vector>
 
 #include "halfspace/fft/even_symbol.hpp"
 #include "halfspace/fft/grid_transform.hpp"
 #include "halfspace/fft/real_fft.hpp"
-#include "halfspace/kernels/layered_fourier.hpp"
-#include "halfspace/kernels/periodic_fourier.hpp"
-#include "halfspace/linalg/parallel.hpp"
-#include "halfspace/material.hpp"
+#include "halfspace/kernels/normal_kernel.hpp"
 
 namespace halfspace::solvers {
 struct FourierPreconditioner::Impl {
-  Impl(const Grid& g, double e_star, const std::optional<kernels::LayeredKernel>& layered,
-       std::shared_ptr<RealFft> shared)
+  Impl(const Grid& g, const HalfSpace& half_space, std::shared_ptr<RealFft> shared)
       : grid(g), transform(std::move(shared)), fft(*transform), symbol(fft.rows(), fft.spectrum_cols()) {
     // FFTW's transforms are unnormalised: fold 1/N into the symbol.
-    const double n = static_cast<double>(grid.size());
-    const double scale = 0.5 * e_star / n;
-    auto inverse_kernel = [&](double q) { return layered ? 1.0 / (layered->spectrum(q) * n) : q * scale; };
+    const kernels::NormalKernel kernel(g, half_space);
+    const auto cells = static_cast<double>(grid.size());
     double q_min = std::numeric_limits<double>::infinity();
     for (std::size_t r = 0; r < symbol.stored_rows(); ++r) {
-      const double qy = grid.dimension() == 1 ? 0.0 : kernels::dft_wavenumber(r, grid.ny(), grid.dy());
       for (std::size_t c = 0; c < symbol.cols(); ++c) {
-        const double q = std::hypot(kernels::dft_wavenumber(c, grid.nx(), grid.dx()), qy);
+        const double q = kernel.wavenumber(r, c);
         if (q > 0.0) {
-          symbol.at(r, c) = inverse_kernel(q);
+          symbol.at(r, c) = kernel.inverse_symbol(q, cells);
           q_min = std::min(q_min, q);
         }
       }
     }
-    symbol.at(0, 0) = inverse_kernel(q_min);
+    symbol.at(0, 0) = kernel.inverse_symbol(q_min, cells);
   }
 
   Grid grid;
@@ -51,17 +44,12 @@ struct FourierPreconditioner::Impl {
   EvenSymbol symbol;  // E*|q|/(2N) or its layered form, rows folded (even in qy)
 };
 
-FourierPreconditioner::FourierPreconditioner(const Grid& grid, double e_star, FftPlanning planning)
-    : impl_(std::make_unique<Impl>(grid, checked_composite_modulus(e_star), std::nullopt,
-                                   make_grid_transform(grid, planning))) {}
+FourierPreconditioner::FourierPreconditioner(const Grid& grid, const HalfSpace& half_space, FftPlanning planning)
+    : impl_(std::make_unique<Impl>(grid, half_space, make_grid_transform(grid, planning))) {}
 
-FourierPreconditioner::FourierPreconditioner(const Grid& grid, double e_star, std::shared_ptr<RealFft> transform)
-    : impl_(std::make_unique<Impl>(grid, checked_composite_modulus(e_star), std::nullopt,
-                                   checked_grid_transform(grid, std::move(transform), "FourierPreconditioner"))) {}
-
-FourierPreconditioner::FourierPreconditioner(const Grid& grid, const LayeredMaterial& material,
+FourierPreconditioner::FourierPreconditioner(const Grid& grid, const HalfSpace& half_space,
                                              std::shared_ptr<RealFft> transform)
-    : impl_(std::make_unique<Impl>(grid, 1.0, kernels::LayeredKernel(material),
+    : impl_(std::make_unique<Impl>(grid, half_space,
                                    checked_grid_transform(grid, std::move(transform), "FourierPreconditioner"))) {}
 
 FourierPreconditioner::~FourierPreconditioner() = default;

@@ -1,5 +1,6 @@
-// Solver construction from SolverOptions. Each solver is stored with the operator it
-// references, so the pair lives and dies together.
+// Solver construction from SolverOptions, on the operators of any layout.
+// Each solver is stored with the operator it references, so the pair lives
+// and dies together.
 #include "halfspace/solvers/solver_factory.hpp"
 
 #include <fmt/format.h>
@@ -8,13 +9,10 @@
 #include <variant>
 
 #include "halfspace/error.hpp"
-#include "halfspace/fft/grid_transform.hpp"
-#include "halfspace/operators/fft_influence_operator.hpp"
 #include "halfspace/solvers/active_set_start.hpp"
 #include "halfspace/solvers/adhesive_contact_solver.hpp"
 #include "halfspace/solvers/balancing_preconditioner.hpp"
 #include "halfspace/solvers/block_deflation.hpp"
-#include "halfspace/solvers/fourier_preconditioner.hpp"
 #include "halfspace/solvers/lcp_quad.hpp"
 #include "halfspace/solvers/lemke.hpp"
 #include "halfspace/solvers/multilevel_solver.hpp"
@@ -23,17 +21,29 @@
 namespace halfspace::solvers {
 namespace {
 
-// A solver together with the operator and preconditioners it was built on.
+// A solver together with the operator and preconditioners it was built on,
+// on any layout.
 class SolverWithOperator final : public ContactSolver {
  public:
-  SolverWithOperator(std::unique_ptr<InfluenceOperator> op, std::unique_ptr<Preconditioner> fourier,
-                     std::unique_ptr<BlockDeflation> deflation, std::unique_ptr<Preconditioner> balancing,
-                     std::unique_ptr<ContactSolver> solver)
-      : op_(std::move(op)),
-        fourier_(std::move(fourier)),
+  // With `deflation`, the block-deflation coarse correction around the
+  // Fourier preconditioner (which `operators` must then have); with
+  // `active_set`, Polonsky-Keer begun by the primal-dual active-set phase
+  // (where a preconditioner applies).
+  SolverWithOperator(ElasticOperators operators, std::unique_ptr<BlockDeflation> deflation,
+                     const PolonskyKeerOptions& options, const ActiveSetOptions* active_set = nullptr)
+      : operators_(std::move(operators)),
         deflation_(std::move(deflation)),
-        balancing_(std::move(balancing)),
-        solver_(std::move(solver)) {}
+        balancing_(deflation_
+                       ? std::make_unique<BalancingPreconditioner>(*operators_.op, *operators_.fourier, *deflation_)
+                       : nullptr) {
+    Preconditioner* used = balancing_ ? static_cast<Preconditioner*>(balancing_.get()) : operators_.fourier.get();
+    auto polonsky_keer = std::make_unique<PolonskyKeer>(*operators_.op, options, used);
+    if (active_set && used) {
+      solver_ = std::make_unique<ActiveSetStart>(*operators_.op, *used, std::move(polonsky_keer), *active_set);
+    } else {
+      solver_ = std::move(polonsky_keer);
+    }
+  }
 
   std::string_view name() const override { return solver_->name(); }
   SolveResult solve(std::span<const double> initial_gap, const Loading& loading,
@@ -45,36 +55,11 @@ class SolverWithOperator final : public ContactSolver {
   }
 
  private:
-  std::unique_ptr<InfluenceOperator> op_;
-  std::unique_ptr<Preconditioner> fourier_;
+  ElasticOperators operators_;
   std::unique_ptr<BlockDeflation> deflation_;
-  std::unique_ptr<Preconditioner> balancing_;  // around fourier_ and deflation_
-  std::unique_ptr<ContactSolver> solver_;
+  std::unique_ptr<BalancingPreconditioner> balancing_;  // around the Fourier preconditioner and deflation_
+  std::unique_ptr<ContactSolver> solver_;  // Polonsky-Keer, or the active-set phase owning it
 };
-
-// The half-space: homogeneous with composite modulus E* (Pa), or coated. The
-// operator and the Fourier preconditioner take the same one, so the
-// preconditioner inverts the kernel in use, on every multilevel level.
-using Elasticity = std::variant<double, LayeredMaterial>;
-
-template <class Transform>
-std::unique_ptr<FftInfluenceOperator> make_operator(const Grid& grid, const Elasticity& elasticity,
-                                                    Transform&& transform) {
-  return std::visit(
-      [&](const auto& material) {
-        return std::make_unique<FftInfluenceOperator>(grid, material, std::forward<Transform>(transform));
-      },
-      elasticity);
-}
-
-std::unique_ptr<Preconditioner> make_fourier(const Grid& grid, const Elasticity& elasticity,
-                                             std::shared_ptr<RealFft> transform) {
-  return std::visit(
-      [&](const auto& material) -> std::unique_ptr<Preconditioner> {
-        return std::make_unique<FourierPreconditioner>(grid, material, std::move(transform));
-      },
-      elasticity);
-}
 
 // Nor on free grids under a layer much stiffer than its substrate: the
 // layer spreads a load over a bending length that grows like
@@ -88,23 +73,24 @@ std::unique_ptr<Preconditioner> make_fourier(const Grid& grid, const Elasticity&
 // Beyond, every Polonsky-Keer type solves in the paper's form.
 constexpr double kMaxPreconditionedCoatingRatio = 1e4;
 
-bool stiff_coating_on_free_grid(const Grid& grid, const Elasticity& elasticity) {
-  const auto* material = std::get_if<LayeredMaterial>(&elasticity);
+bool stiff_coating_on_free_grid(const Grid& grid, const HalfSpace& half_space) {
+  const auto* material = std::get_if<LayeredMaterial>(&half_space);
   return material && !grid.periodic() &&
          plane_strain_modulus(material->layer) >
              kMaxPreconditionedCoatingRatio * plane_strain_modulus(material->substrate);
 }
 
-// Polonsky-Keer on an FFT operator: the paper's form, or the projected
-// form with the Fourier preconditioner (and the coarse correction if
-// `deflated`) when `projected`; begun by the primal-dual active-set phase
+// Polonsky-Keer on the layout's operator: the paper's form, or the
+// projected form with the Fourier preconditioner (and the coarse correction
+// if `deflated`) when `projected`; begun by the primal-dual active-set phase
 // if `active_set` and the preconditioner applies.
-std::unique_ptr<ContactSolver> make_polonsky_keer(const Grid& grid, const Elasticity& e_star,
+std::unique_ptr<ContactSolver> make_polonsky_keer(const Grid& grid, const HalfSpace& half_space,
                                                   const SolverOptions& options, double tolerance, bool fine,
-                                                  bool projected, bool deflated, bool active_set = false) {
+                                                  bool projected, bool deflated, const Layout& layout,
+                                                  bool active_set = false) {
   // A stiff layer on a soft substrate on a free grid: the paper's form
   // (see stiff_coating_on_free_grid).
-  if (stiff_coating_on_free_grid(grid, e_star)) projected = false;
+  if (stiff_coating_on_free_grid(grid, half_space)) projected = false;
   PolonskyKeerOptions pk = polonsky_keer_options(options, tolerance, projected);
   if (!fine) pk.progress = nullptr;  // progress reports the fine solve only
   // The preconditioner not on 1D grids: there the preconditioned steps clip
@@ -112,46 +98,26 @@ std::unique_ptr<ContactSolver> make_polonsky_keer(const Grid& grid, const Elasti
   // under moderate loads, while the projected form alone converges at every
   // load (docs/validation.md, "Measured profiles").
   const bool preconditioned = projected && grid.dimension() == 2;
-  std::unique_ptr<FftInfluenceOperator> op;
-  std::unique_ptr<Preconditioner> preconditioner;
-  if (preconditioned && grid.periodic()) {
-    // Both transform the unpadded grid, and Polonsky-Keer applies them one
-    // after the other: one transform serves both, which saves a real and a
-    // complex array per cell.
-    auto transform = make_grid_transform(grid, options.fft_planning);
-    op = make_operator(grid, e_star, transform);
-    preconditioner = make_fourier(grid, e_star, transform);
-  } else {
-    // Free grids: the preconditioner's unpadded transform works in the
-    // operator's padded buffer, idle between products (16 B per cell less).
-    op = make_operator(grid, e_star, options.fft_planning);
-    if (preconditioned) {
-      preconditioner = make_fourier(grid, e_star, make_grid_transform(grid, options.fft_planning, op->scratch()));
-    }
-  }
+  ElasticOperators operators = layout.make_operators(grid, half_space, preconditioned, options.fft_planning);
+  // Block deflation on the rows this process holds.
   std::unique_ptr<BlockDeflation> deflation;
-  std::unique_ptr<Preconditioner> balancing;
-  if (deflated && preconditioner) {
-    deflation = std::make_unique<BlockDeflation>(grid, options.deflation);
-    balancing = std::make_unique<BalancingPreconditioner>(*op, *preconditioner, *deflation);
+  if (deflated && operators.fourier) {
+    const RowSlab rows = layout.rows(grid);
+    deflation =
+        std::make_unique<BlockDeflation>(grid, options.deflation, rows.first, rows.count, operators.op->communicator());
   }
-  Preconditioner* used = balancing ? balancing.get() : preconditioner.get();
-  auto polonsky_keer = std::make_unique<PolonskyKeer>(*op, pk, used);
-  std::unique_ptr<ContactSolver> solver;
-  if (active_set && used && !options.interface_law.hardness) {
-    solver =
-        std::make_unique<ActiveSetStart>(*op, *used, std::move(polonsky_keer), options.multilevel.active_set_options);
-  } else {
-    solver = std::move(polonsky_keer);
+  if (active_set && operators.op->communicator().size() > 1) {
+    throw SolverOptionError("multilevel.active_set", "on", "is not available on several processes yet: leave it off");
   }
-  return std::make_unique<SolverWithOperator>(std::move(op), std::move(preconditioner), std::move(deflation),
-                                              std::move(balancing), std::move(solver));
+  return std::make_unique<SolverWithOperator>(std::move(operators), std::move(deflation), pk,
+                                              active_set ? &options.multilevel.active_set_options : nullptr);
 }
 
-// Fourier-preconditioned Polonsky-Keer on every level; the coarse-grid
-// correction on the finest grid only, where the contact has the most spots.
-std::unique_ptr<ContactSolver> make_multilevel(const Grid& grid, const Elasticity& e_star,
-                                               const SolverOptions& options) {
+// Fourier-preconditioned Polonsky-Keer on every level, each in the layout
+// the level transfer gives it; the coarse-grid correction on the finest grid
+// only, where the contact has the most spots.
+std::unique_ptr<ContactSolver> make_multilevel(const Grid& grid, const HalfSpace& half_space,
+                                               const SolverOptions& options, const Layout& layout) {
   // With the active-set phase, block deflation (unless turned off) wherever
   // its block covers the grid: the phase's linear solves on a fixed set
   // need no settling before the correction joins.
@@ -159,10 +125,15 @@ std::unique_ptr<ContactSolver> make_multilevel(const Grid& grid, const Elasticit
   const bool deflated = multilevel_deflates(grid, options) ||
                         (active_set && options.deflation.mode == DeflationOptions::Mode::automatic &&
                          BlockDeflation::covers(grid, options.deflation.block));
-  auto make_level = [e_star, options, deflated, active_set](const Grid& level, double tolerance, bool fine) {
-    return make_polonsky_keer(level, e_star, options, tolerance, fine, true, fine && deflated, fine && active_set);
+  std::unique_ptr<LevelTransfer> transfer = layout.level_transfer(grid, options.multilevel.min_cells_per_axis);
+  const LevelTransfer* levels = transfer.get();  // owned by the solver, as is this factory
+  auto make_level = [half_space, options, deflated, active_set, levels, &layout](const Grid& level, double tolerance,
+                                                                                 bool fine) {
+    return make_polonsky_keer(level, half_space, options, tolerance, fine, true, fine && deflated,
+                              levels ? layout.level_layout(*levels, level) : layout, fine && active_set);
   };
-  return std::make_unique<MultilevelSolver>(grid, options.tolerance, make_level, options.multilevel);
+  return std::make_unique<MultilevelSolver>(grid, options.tolerance, make_level, options.multilevel,
+                                            std::move(transfer));
 }
 
 // The dense LCP solvers own their assembled matrix; they refuse grids over
@@ -175,28 +146,6 @@ std::unique_ptr<ContactSolver> make_dense(const Grid& grid, double e_star, const
     return std::make_unique<Lemke>(grid, e_star, LemkeOptions{options.iteration_limit()}, contact);
   }
   return std::make_unique<LcpQuad>(grid, e_star, LcpQuadOptions{}, contact);
-}
-
-std::unique_ptr<ContactSolver> make_any_solver(const Grid& grid, const Elasticity& e_star,
-                                               const SolverOptions& options) {
-  options.validate(grid);
-  if (options.adhesion) {
-    return std::make_unique<AdhesiveContactSolver>(make_operator(grid, e_star, options.fft_planning),
-                                                   contact_modulus(e_star), adhesive_solver_options(options));
-  }
-  switch (options.type) {
-    case SolverType::pk:
-      return make_polonsky_keer(grid, e_star, options, options.tolerance, true, false, false);
-    case SolverType::pk_fourier:
-      return make_polonsky_keer(grid, e_star, options, options.tolerance, true, true,
-                                options.deflation.mode == DeflationOptions::Mode::on);
-    case SolverType::pk_multilevel:
-      return make_multilevel(grid, e_star, options);
-    case SolverType::lemke:
-    case SolverType::lcpquad:
-      return make_dense(grid, std::get<double>(e_star), options);
-  }
-  throw InputError(fmt::format("solver type {} is not known", static_cast<int>(options.type)));
 }
 
 }  // namespace
@@ -223,11 +172,6 @@ AdhesiveSolverOptions adhesive_solver_options(const SolverOptions& options) {
   return adhesive;
 }
 
-double contact_modulus(const std::variant<double, LayeredMaterial>& elasticity) {
-  if (const auto* coating = std::get_if<LayeredMaterial>(&elasticity)) return plane_strain_modulus(coating->layer);
-  return std::get<double>(elasticity);
-}
-
 bool multilevel_deflates(const Grid& grid, const SolverOptions& options) {
   using Mode = DeflationOptions::Mode;
   // Not by default with a hardness cap: its steps keep clipping cells at the
@@ -239,15 +183,32 @@ bool multilevel_deflates(const Grid& grid, const SolverOptions& options) {
           !options.interface_law.hardness);
 }
 
-std::unique_ptr<ContactSolver> make_solver(const Grid& grid, double e_star, const SolverOptions& options) {
-  return make_any_solver(grid, Elasticity{e_star}, options);
-}
-
-std::unique_ptr<ContactSolver> make_solver(const Grid& grid, const LayeredMaterial& material,
-                                           const SolverOptions& options) {
-  validated(material);
-  options.validate(grid, material);
-  return make_any_solver(grid, Elasticity{material}, options);
+std::unique_ptr<ContactSolver> make_solver(const Grid& grid, const HalfSpace& half_space, const SolverOptions& options,
+                                           const Layout& layout) {
+  if (const auto* coating = std::get_if<LayeredMaterial>(&half_space)) {
+    options.validate(grid, validated(*coating));
+  } else {
+    options.validate(grid);
+  }
+  layout.check(grid, half_space, options);
+  if (options.adhesion) {
+    return std::make_unique<AdhesiveContactSolver>(
+        layout.make_operators(grid, half_space, false, options.fft_planning).op, contact_modulus(half_space),
+        adhesive_solver_options(options));
+  }
+  switch (options.type) {
+    case SolverType::pk:
+      return make_polonsky_keer(grid, half_space, options, options.tolerance, true, false, false, layout);
+    case SolverType::pk_fourier:
+      return make_polonsky_keer(grid, half_space, options, options.tolerance, true, true,
+                                options.deflation.mode == DeflationOptions::Mode::on, layout);
+    case SolverType::pk_multilevel:
+      return make_multilevel(grid, half_space, options, layout);
+    case SolverType::lemke:
+    case SolverType::lcpquad:
+      return make_dense(grid, std::get<double>(half_space), options);
+  }
+  throw InputError(fmt::format("solver type {} is not known", static_cast<int>(options.type)));
 }
 
 }  // namespace halfspace::solvers

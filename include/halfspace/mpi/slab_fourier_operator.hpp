@@ -7,20 +7,16 @@
 #pragma once
 
 #include <memory>
-#include <variant>
 #include <vector>
 
 #include "halfspace/grid.hpp"
-#include "halfspace/layered_material.hpp"
+#include "halfspace/half_space.hpp"
+#include "halfspace/kernels/normal_kernel.hpp"
 #include "halfspace/mpi/slab_fft.hpp"
 #include "halfspace/operators/influence_operator.hpp"
 #include "halfspace/solvers/preconditioner.hpp"
 
 namespace halfspace::mpi {
-
-// The half-space: homogeneous with composite modulus E* (Pa), or coated (a
-// layer bonded to a substrate), as the serial solvers take either.
-using SlabElasticity = std::variant<double, LayeredMaterial>;
 
 class SlabFourierOperator final : public InfluenceOperator {
  public:
@@ -29,7 +25,7 @@ class SlabFourierOperator final : public InfluenceOperator {
   // between products). Throws InputError unless the grid is 2D and periodic
   // and the transform is its own, or as checked_composite_modulus and
   // kernels::LayeredKernel for an invalid modulus or coating.
-  SlabFourierOperator(const Grid& grid, const SlabElasticity& elasticity, std::shared_ptr<SlabRealFft> transform);
+  SlabFourierOperator(const Grid& grid, const HalfSpace& half_space, std::shared_ptr<SlabRealFft> transform);
 
   const Grid& grid() const override { return grid_; }
   std::size_t local_size() const override { return transform_->layout().local_size(); }
@@ -43,7 +39,7 @@ class SlabFourierOperator final : public InfluenceOperator {
 
  private:
   Grid grid_;
-  SlabElasticity elasticity_;
+  kernels::NormalKernel normal_;
   std::shared_ptr<SlabRealFft> transform_;
   std::unique_ptr<CirculantForm> circulant_;  // made on first use
   std::vector<double> kernel_;                // 2/(E*|q|)/N or its coated form, on this process's spectrum columns
@@ -57,7 +53,7 @@ class SlabFourierPreconditioner final : public solvers::Preconditioner {
   // too (with a transform of its own), as the serial solvers precondition
   // the padded operator with the unpadded grid's symbol. Throws InputError
   // unless the grid is 2D and the transform its own.
-  SlabFourierPreconditioner(const Grid& grid, const SlabElasticity& elasticity, std::shared_ptr<SlabRealFft> transform);
+  SlabFourierPreconditioner(const Grid& grid, const HalfSpace& half_space, std::shared_ptr<SlabRealFft> transform);
   // Collective.
   void apply(std::span<const double> in, std::span<double> out) override;
 

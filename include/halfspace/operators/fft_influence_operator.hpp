@@ -9,28 +9,24 @@
 
 #include "halfspace/fft/fft_planning.hpp"
 #include "halfspace/fft/real_fft.hpp"
-#include "halfspace/layered_material.hpp"
+#include "halfspace/half_space.hpp"
 #include "halfspace/operators/influence_operator.hpp"
 
 namespace halfspace::operators {
 
 class FftInfluenceOperator final : public InfluenceOperator {
  public:
-  // e_star: composite modulus (Pa). Makes the plans and the kernel spectrum;
-  // the threads in force (set_threads) are used by the plans.
-  FftInfluenceOperator(const Grid& grid, double e_star, FftPlanning planning = FftPlanning::estimate);
+  // The half-space's kernel (kernels/normal_kernel.hpp): homogeneous (E*,
+  // Pa) or coated. Makes the plans and the kernel spectrum; the threads in
+  // force (set_threads) are used by the plans. Throws InputError for an
+  // invalid modulus or coating.
+  FftInfluenceOperator(const Grid& grid, const HalfSpace& half_space, FftPlanning planning = FftPlanning::estimate);
   // The same on a periodic grid, with `transform` (the grid's own (ny, nx),
   // or nx in 1D, transform; FftOutput::overwrite_input saves most) instead
   // of a transform of its own, so that a FourierPreconditioner can share its
   // buffers. Nothing sharing it may run while apply() does. Throws InputError
   // if the grid is not periodic or the transform's shape is not the grid's.
-  FftInfluenceOperator(const Grid& grid, double e_star, std::shared_ptr<RealFft> transform);
-  // A coated half-space (an elastic layer bonded to a substrate) under a
-  // rigid indenter: the same two forms with its kernel (layered_fourier.hpp).
-  // Throws InputError if `material` is out of range (layered_material.hpp)
-  // or the grid is free and 1D (not supported).
-  FftInfluenceOperator(const Grid& grid, const LayeredMaterial& material, FftPlanning planning = FftPlanning::estimate);
-  FftInfluenceOperator(const Grid& grid, const LayeredMaterial& material, std::shared_ptr<RealFft> transform);
+  FftInfluenceOperator(const Grid& grid, const HalfSpace& half_space, std::shared_ptr<RealFft> transform);
   ~FftInfluenceOperator() override;
   FftInfluenceOperator(const FftInfluenceOperator&) = delete;
   FftInfluenceOperator& operator=(const FftInfluenceOperator&) = delete;

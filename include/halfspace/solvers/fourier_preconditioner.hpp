@@ -1,5 +1,6 @@
 // The Fourier preconditioner E*|q|/2: the exact inverse of the periodic
-// half-space kernel 2/(E*|q|), used as an approximate inverse of K on any grid.
+// half-space kernel 2/(E*|q|) (or a coated one's), used as an approximate
+// inverse of K on any grid.
 #pragma once
 
 #include <memory>
@@ -7,28 +8,27 @@
 #include "halfspace/fft/fft_planning.hpp"
 #include "halfspace/fft/real_fft.hpp"
 #include "halfspace/grid.hpp"
-#include "halfspace/layered_material.hpp"
+#include "halfspace/half_space.hpp"
 #include "halfspace/solvers/preconditioner.hpp"
 
 namespace halfspace::solvers {
 
 class FourierPreconditioner final : public Preconditioner {
  public:
-  // Plans an unpadded transform of the grid (free grids too: the
-  // preconditioner need only be close to K^-1, not equal to it). The mean
-  // mode, where E*|q|/2 vanishes, gets the value of the smallest non-zero
-  // wavenumber so that M^-1 stays positive definite.
-  FourierPreconditioner(const Grid& grid, double e_star, FftPlanning planning = FftPlanning::estimate);
+  // The inverse of the half-space's kernel (kernels/normal_kernel.hpp),
+  // E*|q|/2 homogeneous, E1*|q| / (2 M(q t)) coated. Plans an unpadded
+  // transform of the grid (free grids too: the preconditioner need only be
+  // close to K^-1, not equal to it). The mean mode, where the inverse
+  // vanishes, gets the value of the smallest non-zero wavenumber so that
+  // M^-1 stays positive definite. Throws InputError for an invalid modulus
+  // or coating.
+  FourierPreconditioner(const Grid& grid, const HalfSpace& half_space, FftPlanning planning = FftPlanning::estimate);
   // The same with `transform` (the grid's (ny, nx), or nx in 1D, transform)
   // instead of one of its own, e.g. the one a periodic FftInfluenceOperator
   // uses: the solver applies the two one after the other, so one set of
   // buffers serves both. Nothing sharing it may run while apply() does.
   // Throws InputError if the transform's shape is not the grid's.
-  FourierPreconditioner(const Grid& grid, double e_star, std::shared_ptr<RealFft> transform);
-  // A coated half-space: the inverse of its kernel, E1*|q| / (2 M(q t))
-  // (layered_fourier.hpp), with `transform` as above. Throws InputError if
-  // `material` is out of range.
-  FourierPreconditioner(const Grid& grid, const LayeredMaterial& material, std::shared_ptr<RealFft> transform);
+  FourierPreconditioner(const Grid& grid, const HalfSpace& half_space, std::shared_ptr<RealFft> transform);
   ~FourierPreconditioner() override;
 
   void apply(std::span<const double> in, std::span<double> out) override;

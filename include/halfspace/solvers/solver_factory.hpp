@@ -1,31 +1,34 @@
-// Builds the solver SolverOptions describe, with the operator it needs, so
-// front ends (the CLI, sweeps) handle every solver the same way.
+// Builds the solver SolverOptions describe, with the operator it needs on
+// the layout given (serial or distributed), so front ends (the CLI, sweeps,
+// the MPI program) handle every solver the same way.
 #pragma once
 
 #include <memory>
-#include <variant>
 
 #include "halfspace/grid.hpp"
-#include "halfspace/layered_material.hpp"
+#include "halfspace/half_space.hpp"
 #include "halfspace/solvers/adhesive_contact_solver.hpp"
 #include "halfspace/solvers/contact_solver.hpp"
+#include "halfspace/solvers/layout.hpp"
 #include "halfspace/solvers/polonsky_keer.hpp"
 #include "halfspace/solvers/solver_options.hpp"
 
 namespace halfspace::solvers {
 
-// A solver for contacts on `grid` with composite modulus e_star (Pa), owning
-// its influence operator. Uses the threads in force (set_threads) for FFT
-// plans. Throws SolverOptionError (an InputError) naming the option if
-// options.validate(grid) does.
-std::unique_ptr<ContactSolver> make_solver(const Grid& grid, double e_star, const SolverOptions& options = {});
-
-// The same for a coated half-space under a rigid indenter (layered_material.hpp):
-// its kernel in the operator, the Fourier preconditioner and every multilevel
-// level. Throws InputError if `material` is out of range, SolverOptionError
-// for the dense solvers (lemke, lcpquad), whose matrix is the homogeneous one.
-std::unique_ptr<ContactSolver> make_solver(const Grid& grid, const LayeredMaterial& material,
-                                           const SolverOptions& options = {});
+// A solver for contacts on `grid` of `half_space` (homogeneous E* in Pa, or
+// a coated half-space, layered_material.hpp), owning its influence
+// operator, made by `layout` (serial_layout(): the whole grid here; a
+// distributed one: fields given to and returned by the solver hold this
+// process's rows), which must outlive the solver. A coating's kernel goes
+// into the operator, the Fourier preconditioner and every multilevel level.
+// Uses the threads in force (set_threads) for FFT plans. Collective on a
+// distributed layout. Throws SolverOptionError (an InputError) naming the
+// option if options.validate does (with a coating, validate(grid, coating):
+// the dense solvers lemke and lcpquad take the homogeneous matrix only) or
+// the layout refuses it (Layout::check), InputError for an invalid modulus
+// or coating.
+std::unique_ptr<ContactSolver> make_solver(const Grid& grid, const HalfSpace& half_space,
+                                           const SolverOptions& options = {}, const Layout& layout = serial_layout());
 
 // The Polonsky-Keer options of `options` at `tolerance`: its iteration limit,
 // progress and pressure bounds; the projected form (which takes a
@@ -36,10 +39,6 @@ PolonskyKeerOptions polonsky_keer_options(const SolverOptions& options, double t
 // its law, tolerance, form, the hardness cap, iteration limit, planning and
 // progress.
 AdhesiveSolverOptions adhesive_solver_options(const SolverOptions& options);
-// The modulus at a contact edge's scale, which sets the adhesive law's
-// cohesive zone: a homogeneous body's E* (Pa), or a coating's layer's plane-
-// strain modulus (the layer meets the rigid surface).
-double contact_modulus(const std::variant<double, LayeredMaterial>& elasticity);
 
 // Whether pk-multilevel on `grid` deflates its finest grid: deflation on,
 // or automatic where DeflationOptions::automatic_applies and there is no

@@ -1,0 +1,54 @@
+// A grid spread over MPI processes in FFTW-MPI's slabs of rows, as a
+// solvers::Layout: its operators are the slab ones (periodic:
+// SlabFourierOperator, homogeneous or coated; free: SlabFreeOperator), its
+// multilevel levels SlabLevelTransfer's (small ones gathered, solved whole
+// on every process), and what it does not run yet is refused with a message
+// that names the alternative, never solved wrongly. Compiled only with
+// HALFSPACE_MPI.
+#pragma once
+
+#include <memory>
+
+#include "halfspace/mpi/mpi_communicator.hpp"
+#include "halfspace/solvers/layout.hpp"
+#include "halfspace/solvers/solver_options.hpp"
+
+namespace halfspace::mpi {
+
+class DistributedLayout final : public solvers::Layout {
+ public:
+  // Over `comm`, which must outlive the layout and everything it makes.
+  explicit DistributedLayout(const MpiCommunicator& comm) : comm_(comm) {}
+
+  // Periodic: the kernel on the grid's transform, which the preconditioner
+  // shares (Polonsky-Keer applies them one after the other); free: the
+  // padded convolution, the preconditioner (the unpadded periodic symbol, as
+  // the serial solvers use on free grids) on a transform of its own working
+  // in the operator's padded buffer, idle between products. Collective.
+  solvers::ElasticOperators make_operators(const Grid& grid, const HalfSpace& half_space, bool fourier,
+                                           FftPlanning planning) const override;
+  solvers::RowSlab rows(const Grid& grid) const override;
+  const linalg::Communicator& communicator() const override { return comm_; }
+  // Takes a 2D grid (periodic or free; coated periodic only: the padded
+  // operator would need the coated coefficients on the slabs), solver pk,
+  // pk-fourier or pk-multilevel (block deflation as the serial solvers take
+  // it), with or without a hardness cap; with adhesion (the adhesive
+  // solver, which then replaces the type) on periodic grids. Throws
+  // SolverOptionError naming the option and what to use instead, e.g.
+  // "type = lemke is not available with more than one process yet: use
+  // solver pk-multilevel, pk-fourier or pk".
+  void check(const Grid& grid, const HalfSpace& half_space, const solvers::SolverOptions& options) const override;
+  // Whether check passes.
+  bool takes(const Grid& grid, const HalfSpace& half_space, const solvers::SolverOptions& options) const;
+  // SlabLevelTransfer. Collective.
+  std::unique_ptr<solvers::LevelTransfer> level_transfer(const Grid& fine,
+                                                         std::size_t min_cells_per_axis) const override;
+  // This layout for a distributed level, solvers::redundant_layout() for a
+  // gathered one.
+  const Layout& level_layout(const solvers::LevelTransfer& transfer, const Grid& level) const override;
+
+ private:
+  const MpiCommunicator& comm_;
+};
+
+}  // namespace halfspace::mpi

@@ -1,0 +1,75 @@
+// Where a solve's fields live and which operators act on them: the whole
+// grid on this process (serial_layout(): one slab holding every row), or
+// this process's slab of rows of a grid spread over MPI processes
+// (mpi/distributed_layout.hpp). make_solver builds every solver type on the
+// operators a layout makes, so each is written once for both.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+
+#include "halfspace/fft/fft_planning.hpp"
+#include "halfspace/grid.hpp"
+#include "halfspace/half_space.hpp"
+#include "halfspace/linalg/communicator.hpp"
+#include "halfspace/operators/influence_operator.hpp"
+#include "halfspace/solvers/level_transfer.hpp"
+#include "halfspace/solvers/preconditioner.hpp"
+
+namespace halfspace::solvers {
+
+struct SolverOptions;
+
+// An influence operator and, if asked for, the Fourier preconditioner made
+// with it (they may share a transform or a buffer: the operator lives as
+// long as the preconditioner).
+struct ElasticOperators {
+  std::unique_ptr<InfluenceOperator> op;
+  std::unique_ptr<Preconditioner> fourier;  // null unless asked for
+};
+
+// This process's rows of a grid: [first, first + count).
+struct RowSlab {
+  std::size_t first = 0;
+  std::size_t count = 0;
+};
+
+class Layout {
+ public:
+  virtual ~Layout() = default;
+
+  // The operator u = K p of `half_space` on `grid` for fields held as this
+  // layout holds them, with `planning` for its transforms, and with
+  // `fourier` the Fourier preconditioner (FourierPreconditioner's symbol).
+  // Collective; throws as the operators do.
+  virtual ElasticOperators make_operators(const Grid& grid, const HalfSpace& half_space, bool fourier,
+                                          FftPlanning planning) const = 0;
+  // The rows of `grid` this process holds (a 1D grid: its one row).
+  virtual RowSlab rows(const Grid& grid) const = 0;
+  // The processes a field is spread over.
+  virtual const linalg::Communicator& communicator() const = 0;
+  // Throws SolverOptionError naming the option and what to use instead
+  // unless this layout solves `options` on `grid` for `half_space` (called
+  // by make_solver after options.validate).
+  virtual void check(const Grid& /*grid*/, const HalfSpace& /*half_space*/, const SolverOptions& /*options*/) const {}
+  // Where pk-multilevel's levels of `fine` live: null, all whole here (the
+  // MultilevelSolver's default). Collective.
+  virtual std::unique_ptr<LevelTransfer> level_transfer(const Grid& /*fine*/,
+                                                        std::size_t /*min_cells_per_axis*/) const {
+    return nullptr;
+  }
+  // The layout of `level`, one of the levels of `transfer` (made by
+  // level_transfer).
+  virtual const Layout& level_layout(const LevelTransfer& /*transfer*/, const Grid& /*level*/) const { return *this; }
+};
+
+// The whole grid on this process: FftInfluenceOperator and
+// FourierPreconditioner.
+const Layout& serial_layout();
+// The same for a small grid solved whole on every process of a distributed
+// solve (a gathered multilevel level): estimated plans, whatever the
+// options say, since measured ones may differ between processes and so
+// round differently.
+const Layout& redundant_layout();
+
+}  // namespace halfspace::solvers

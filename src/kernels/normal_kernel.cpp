@@ -1,0 +1,159 @@
+// The half-space's normal kernel on a grid. Periodic: the symbol 2/(E* |q|)
+// (Stanley & Kato 1997) or a coated half-space's 2 M(q t)/(E1* |q|). Free:
+// Love's (2D) or the plane-strain strip's (1D) cell coefficients, laid out on
+// the zero-padded wrap-around grid of the DC-FFT (Liu, Wang & Liu 2000); a
+// coated body's closed-form part plus its remainder (docs/theory.md, "Coated
+// half-space").
+#include "halfspace/kernels/normal_kernel.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <variant>
+
+#include "halfspace/kernels/love_rectangle.hpp"
+#include "halfspace/kernels/periodic_fourier.hpp"
+#include "halfspace/kernels/plane_strain_strip.hpp"
+#include "halfspace/material.hpp"
+
+namespace halfspace::kernels {
+namespace {
+
+// Free grids, coated half-space: the remainder goes in by DFT unless the
+// layer is not thin against the domain (its periodic images would matter).
+// The images' share falls like (h / L)^2, h the split height
+// (LayeredKernel::split_height: t, or the longer length a stiff layer on a
+// soft substrate spreads a load over; docs/theory.md, "Coated half-space").
+constexpr double kSpectralRemainderLimit = 0.125;  // h / shorter domain side
+
+}  // namespace
+
+NormalKernel::NormalKernel(const Grid& grid, const HalfSpace& half_space) : grid_(grid) {
+  if (const auto* coating = std::get_if<LayeredMaterial>(&half_space)) {
+    layered_.emplace(*coating);
+  } else {
+    e_star_ = checked_composite_modulus(std::get<double>(half_space));
+  }
+}
+
+double NormalKernel::wavenumber(std::size_t row, std::size_t col) const {
+  const double qy = grid_.dimension() == 1 ? 0.0 : dft_wavenumber(row, grid_.ny(), grid_.dy());
+  return std::hypot(dft_wavenumber(col, grid_.nx(), grid_.dx()), qy);
+}
+
+double NormalKernel::symbol(double q) const {
+  return layered_ ? layered_->spectrum(q) : periodic_kernel_spectrum(q, e_star_);
+}
+
+double NormalKernel::stiffness(double q) const {
+  return layered_ ? 1.0 / layered_->spectrum(q) : 0.5 * e_star_ * q;
+}
+
+double NormalKernel::inverse_symbol(double q, double cells) const {
+  return layered_ ? 1.0 / (layered_->spectrum(q) * cells) : q * (0.5 * e_star_ / cells);
+}
+
+double NormalKernel::self_influence() const {
+  if (!grid_.periodic()) return free_quadrant(0, 1)[0];
+  const std::size_t rows = grid_.dimension() == 1 ? 1 : grid_.ny();
+  double sum = 0.0;
+  for (std::size_t r = 0; r < rows; ++r) {
+    for (std::size_t c = 0; c < grid_.nx(); ++c) sum += symbol(wavenumber(r, c));
+  }
+  return sum * (1.0 / static_cast<double>(grid_.size()));
+}
+
+std::vector<double> NormalKernel::free_quadrant(std::size_t first_row, std::size_t rows) const {
+  const bool line = grid_.dimension() == 1;
+  const std::size_t cols = grid_.nx() + 1;
+  const double dx = grid_.dx();
+  const double dy = grid_.dy();
+  std::vector<double> quadrant(rows * cols);
+  linalg::for_each_row(rows, cols, [&](std::size_t j) {
+    const double y = static_cast<double>(first_row + j) * dy;
+    for (std::size_t i = 0; i < cols; ++i) {
+      const double x = static_cast<double>(i) * dx;
+      quadrant[j * cols + i] = line       ? (layered_ ? layered_->near_strip_displacement(x, 0.5 * dx)
+                                                      : plane_strain_strip_displacement(x, dx, e_star_))
+                               : layered_ ? layered_->near_rectangle_displacement(x, y, 0.5 * dx, 0.5 * dy)
+                                          : love_rectangle_displacement(x, y, 0.5 * dx, 0.5 * dy, e_star_);
+    }
+  });
+  if (layered_ && !spectral_remainder()) add_real_space_remainder(quadrant, first_row, rows);
+  return quadrant;
+}
+
+// The remainder as a point force at each cell's centre, from its radial
+// profile tabulated every t/100 up to the quadrant's far corner (linear
+// interpolation; the profile varies on the scale t >= L/8, so both the
+// point-force and the interpolation error are below 1e-4 of the remainder).
+void NormalKernel::add_real_space_remainder(std::vector<double>& quadrant, std::size_t first_row,
+                                            std::size_t rows) const {
+  const std::size_t cols = grid_.nx() + 1;
+  const double dx = grid_.dx();
+  if (grid_.dimension() == 1) {
+    // A line load of dx times the pressure at each cell's centre, the
+    // profile tabulated at the cells' own offsets (n values: no
+    // interpolation, whose kink at 0 would show at the 1e-9 level).
+    const std::vector<double> table = layered_->remainder_line_table(static_cast<double>(cols - 1) * dx, dx);
+    for (std::size_t di = 0; di < cols; ++di) quadrant[di] += dx * table[di];
+    return;
+  }
+  const double dy = grid_.dy();
+  const double step = 0.01 * layered_->material().thickness;
+  const double r_max = std::hypot(static_cast<double>(cols - 1) * dx, static_cast<double>(grid_.ny()) * dy);
+  const std::vector<double> table = layered_->remainder_point_table(r_max, step);
+  const double cell_area = grid_.cell_area();
+  linalg::for_each_row(rows, cols, [&](std::size_t j) {
+    const double y = static_cast<double>(first_row + j) * dy;
+    for (std::size_t di = 0; di < cols; ++di) {
+      const double position = std::hypot(static_cast<double>(di) * dx, y) / step;
+      const auto k = std::min(static_cast<std::size_t>(position), table.size() - 2);
+      const double f = position - static_cast<double>(k);
+      quadrant[j * cols + di] += cell_area * ((1.0 - f) * table[k] + f * table[k + 1]);
+    }
+  });
+}
+
+bool NormalKernel::spectral_remainder() const {
+  if (!layered_) return false;
+  const double length = static_cast<double>(grid_.nx()) * grid_.dx();
+  const double side = grid_.dimension() == 1 ? length : std::min(length, static_cast<double>(grid_.ny()) * grid_.dy());
+  return layered_->split_height() <= kSpectralRemainderLimit * side;
+}
+
+// The remainder R (layered_fourier.hpp) is smooth and decays in q. Its
+// coefficients are 2n-periodic, as the DC-FFT's wrap-around grid is, so it
+// enters each bin exactly; their periodic images, which the isolated contact
+// has not, decay like t^2 / r^3 (the |q| term of R at q = 0).
+void NormalKernel::add_spectral_remainder(EvenSymbol& padded, double scale) const {
+  if (!spectral_remainder()) return;
+  const std::size_t rows = padded.rows();
+  const std::size_t padded_cols = 2 * grid_.nx();
+  const double dx = grid_.dx();
+  const double dy = grid_.dy();
+  const bool line = grid_.dimension() == 1;
+  linalg::for_each_row(padded.stored_rows(), padded.cols(), [&](std::size_t r) {
+    const double qy = dft_wavenumber(r, rows, dy);
+    for (std::size_t c = 0; c < padded.cols(); ++c) {
+      const double qx = dft_wavenumber(c, padded_cols, dx);
+      padded.at(r, c) +=
+          (line ? layered_->remainder_strip_spectrum(qx, dx) : layered_->remainder_cell_spectrum(qx, qy, dx, dy)) *
+          scale;
+    }
+  });
+}
+
+// The inverse DFT's sum over the full spectrum (columns other than 0 and nx
+// stand for two).
+double NormalKernel::padded_self_influence(const EvenSymbol& padded) const {
+  double sum = 0.0;
+  for (std::size_t r = 0; r < padded.rows(); ++r) {
+    const std::size_t stored = padded.folded(r);
+    for (std::size_t c = 0; c < padded.cols(); ++c) {
+      sum += (c == 0 || c == grid_.nx() ? 1.0 : 2.0) * padded.at(stored, c);
+    }
+  }
+  return sum;
+}
+
+}  // namespace halfspace::kernels

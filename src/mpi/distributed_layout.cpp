@@ -1,0 +1,104 @@
+// The slab operators behind solvers::Layout: make_solver runs the serial
+// solver loops (polonsky_keer.cpp, the multilevel and adhesive solvers)
+// unchanged over them, their reductions going through the operator's
+// communicator. A hardness cap is elementwise (the projection onto [0, H])
+// apart from its load-restoring scale and fill, whose sums and searches are
+// reductions over that communicator too.
+#include "halfspace/mpi/distributed_layout.hpp"
+
+#include <fmt/format.h>
+
+#include <string>
+#include <utility>
+#include <variant>
+
+#include "halfspace/mpi/slab_fft.hpp"
+#include "halfspace/mpi/slab_fourier_operator.hpp"
+#include "halfspace/mpi/slab_free_operator.hpp"
+#include "halfspace/mpi/slab_level_transfer.hpp"
+
+namespace halfspace::mpi {
+namespace {
+
+using solvers::SolverOptionError;
+using solvers::SolverType;
+
+constexpr const char* kNotYet = "is not available with more than one process yet";
+
+}  // namespace
+
+solvers::ElasticOperators DistributedLayout::make_operators(const Grid& grid, const HalfSpace& half_space, bool fourier,
+                                                            FftPlanning planning) const {
+  solvers::ElasticOperators made;
+  if (grid.periodic()) {
+    auto transform = std::make_shared<SlabRealFft>(grid.nx(), grid.ny(), comm_, planning);
+    made.op = std::make_unique<SlabFourierOperator>(grid, half_space, transform);
+    if (fourier) made.fourier = std::make_unique<SlabFourierPreconditioner>(grid, half_space, transform);
+    return made;
+  }
+  const double e_star = std::get<double>(half_space);
+  auto op = std::make_unique<SlabFreeOperator>(grid, e_star, comm_, planning);
+  if (fourier) {
+    made.fourier = std::make_unique<SlabFourierPreconditioner>(
+        grid, e_star, std::make_shared<SlabRealFft>(grid.nx(), grid.ny(), comm_, planning, op->scratch()));
+  }
+  made.op = std::move(op);
+  return made;
+}
+
+solvers::RowSlab DistributedLayout::rows(const Grid& grid) const {
+  const SlabLayout layout = slab_layout(grid.nx(), grid.ny(), comm_);
+  return {layout.first_row, layout.rows};
+}
+
+void DistributedLayout::check(const Grid& grid, const HalfSpace& half_space,
+                              const solvers::SolverOptions& options) const {
+  if (std::holds_alternative<LayeredMaterial>(half_space) && !grid.periodic()) {
+    throw SolverOptionError("boundary", std::string(to_string(grid.boundary())),
+                            fmt::format("with a coated half-space {}: solve coated free grids on one process "
+                                        "(coated periodic grids are distributed)",
+                                        kNotYet));
+  }
+  if (grid.dimension() != 2) {
+    throw SolverOptionError(
+        "grid", fmt::format("{} ({}D, {})", grid.shape_string(), grid.dimension(), to_string(grid.boundary())),
+        fmt::format("{}: only 2D grids are distributed", kNotYet));
+  }
+  if (options.adhesion && !grid.periodic()) {
+    // The adhesive solver's displacement lives on the zero-padded grid,
+    // whose padding rows the slab transforms never hold (slab_padded_fft.hpp).
+    throw SolverOptionError("adhesion", std::string(to_string(options.adhesion->law.type)),
+                            fmt::format("{} on a free grid: solve free adhesive contacts on one process (periodic "
+                                        "ones are distributed)",
+                                        kNotYet));
+  }
+  if (options.type != SolverType::pk && options.type != SolverType::pk_fourier &&
+      options.type != SolverType::pk_multilevel) {
+    throw SolverOptionError("type", std::string(to_string(options.type)),
+                            fmt::format("{}: use solver pk-multilevel, pk-fourier or pk", kNotYet));
+  }
+}
+
+bool DistributedLayout::takes(const Grid& grid, const HalfSpace& half_space,
+                              const solvers::SolverOptions& options) const {
+  try {
+    check(grid, half_space, options);
+  } catch (const SolverOptionError&) {
+    return false;
+  }
+  return true;
+}
+
+std::unique_ptr<solvers::LevelTransfer> DistributedLayout::level_transfer(const Grid& fine,
+                                                                          std::size_t min_cells_per_axis) const {
+  return std::make_unique<SlabLevelTransfer>(fine, min_cells_per_axis, comm_);
+}
+
+const solvers::Layout& DistributedLayout::level_layout(const solvers::LevelTransfer& transfer,
+                                                       const Grid& level) const {
+  // Gathered levels are solved on every process alike.
+  if (static_cast<const SlabLevelTransfer&>(transfer).gathered(level)) return solvers::redundant_layout();
+  return *this;
+}
+
+}  // namespace halfspace::mpi
