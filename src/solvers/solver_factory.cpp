@@ -58,7 +58,7 @@ class SolverWithOperator final : public ContactSolver {
   ElasticOperators operators_;
   std::unique_ptr<BlockDeflation> deflation_;
   std::unique_ptr<BalancingPreconditioner> balancing_;  // around the Fourier preconditioner and deflation_
-  std::unique_ptr<ContactSolver> solver_;  // Polonsky-Keer, or the active-set phase owning it
+  std::unique_ptr<ContactSolver> solver_;               // Polonsky-Keer, or the active-set phase owning it
 };
 
 // Nor on free grids under a layer much stiffer than its substrate: the

@@ -28,19 +28,18 @@ void ConjugateGradientMethod::step() {
   // The reduced gradient R g (pass A), and the projector onto the force's
   // constraint: sum over stick cells of v plus over slipping cells of
   // their tangent part vanishes; Pi v = v - R a with a = Gram^-1 (sum R v).
-  const auto [released, g_dot_z_old, gram_xx, gram_xy, gram_yy, sum_x, sum_y] =
-      sums<7>(comm_, n_, [&](std::size_t i) {
-        const Cell c = cell(i);
-        if (!c.contact) return std::array<double, 7>{};
-        const Pair g = c.tangent(f_.gx[i], f_.gy[i]);
-        return std::array<double, 7>{c.released ? 1.0 : 0.0,
-                                     g.x * f_.tx[i] + g.y * f_.ty[i],
-                                     c.slip ? 1.0 - c.nx * c.nx : 1.0,
-                                     c.slip ? -c.nx * c.ny : 0.0,
-                                     c.slip ? 1.0 - c.ny * c.ny : 1.0,
-                                     g.x,
-                                     g.y};
-      });
+  const auto [released, g_dot_z_old, gram_xx, gram_xy, gram_yy, sum_x, sum_y] = sums<7>(comm_, n_, [&](std::size_t i) {
+    const Cell c = cell(i);
+    if (!c.contact) return std::array<double, 7>{};
+    const Pair g = c.tangent(f_.gx[i], f_.gy[i]);
+    return std::array<double, 7>{c.released ? 1.0 : 0.0,
+                                 g.x * f_.tx[i] + g.y * f_.ty[i],
+                                 c.slip ? 1.0 - c.nx * c.nx : 1.0,
+                                 c.slip ? -c.nx * c.ny : 0.0,
+                                 c.slip ? 1.0 - c.ny * c.ny : 1.0,
+                                 g.x,
+                                 g.y};
+  });
   const Symmetric gram{gram_xx, gram_xy, gram_yy};
   const Pair shift_g = force ? solve_pseudo(gram, {sum_x, sum_y}) : Pair{};
   // Pass B: Pi R g into t, then z = M t in place.
@@ -153,9 +152,8 @@ void ConjugateGradientMethod::step() {
     }
     if (exact) {
       const auto [sx, sy] = it_.force_shift([&](std::size_t i) { return std::pair{f_.qx[i], f_.qy[i]}; });
-      for_each_index(n_, [&](std::size_t i) {
-        std::tie(f_.qx[i], f_.qy[i]) = clipped(f_.qx[i] + sx, f_.qy[i] + sy, radius_[i]);
-      });
+      for_each_index(
+          n_, [&](std::size_t i) { std::tie(f_.qx[i], f_.qy[i]) = clipped(f_.qx[i] + sx, f_.qy[i] + sy, radius_[i]); });
       linear = false;
       sets_unchanged_ = false;
     }
@@ -173,6 +171,5 @@ void ConjugateGradientMethod::step() {
     it_.exact_displacement();
   }
 }
-
 
 }  // namespace halfspace::solvers::tangential

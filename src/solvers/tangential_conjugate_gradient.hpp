@@ -87,7 +87,6 @@ class ConjugateGradientMethod {
     return {g.x - a.x, g.y - a.y};
   }
 
-
   TangentialIteration& it_;
   TangentialOperator& op_;
   const Problem& problem_;

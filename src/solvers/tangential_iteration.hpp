@@ -118,11 +118,10 @@ inline Pair solve_pseudo(const Symmetric& s, const Pair& v) {
           across * s.xy * v.x + (along - across * half_difference) * v.y};
 }
 
-
 class TangentialIteration {
  public:
-  TangentialIteration(TangentialOperator& op, const TangentialOptions& options, const Problem& problem, TangentialResult& result,
-            Fields f)
+  TangentialIteration(TangentialOperator& op, const TangentialOptions& options, const Problem& problem,
+                      TangentialResult& result, Fields f)
       : op_(op),
         options_(options),
         problem_(problem),

@@ -17,7 +17,6 @@ void ProjectedGradientMethod::begin() {
   momentum_ = 0.0;
 }
 
-
 void ProjectedGradientMethod::step(double inverse_lipschitz) {
   const double beta = momentum_ / (momentum_ + 3.0);
   const double dx = problem_.force_controlled ? 0.0 : problem_.delta_x;
@@ -52,6 +51,5 @@ void ProjectedGradientMethod::step(double inverse_lipschitz) {
   momentum_ = against < 0.0 ? 0.0 : momentum_ + 1.0;
   it_.exact_displacement();
 }
-
 
 }  // namespace halfspace::solvers::tangential

@@ -13,7 +13,13 @@ namespace halfspace::solvers::tangential {
 class ProjectedGradientMethod {
  public:
   explicit ProjectedGradientMethod(TangentialIteration& it)
-      : it_(it), problem_(it.problem_), comm_(it.comm_), n_(it.n_), f_(it.f_), up_x_(it.up_x_), up_y_(it.up_y_),
+      : it_(it),
+        problem_(it.problem_),
+        comm_(it.comm_),
+        n_(it.n_),
+        f_(it.f_),
+        up_x_(it.up_x_),
+        up_y_(it.up_y_),
         radius_(it.radius_) {}
 
   // Hands over from conjugate gradients to projected gradients at the
