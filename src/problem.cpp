@@ -404,14 +404,6 @@ std::string_view load_option(ControlMode mode) {
 
 }  // namespace
 
-std::string OptionSpelling::name(std::string_view option) const {
-  return std::string(option);
-}
-
-std::string OptionSpelling::describe(std::string_view option, std::string_view value) const {
-  return fmt::format("{}={}", option, value);
-}
-
 std::span<const ProblemOptionName> problem_option_names() {
   return kNames;
 }

@@ -28,10 +28,14 @@ class OptionSpelling {
  public:
   virtual ~OptionSpelling() = default;
   // The option by itself: "--work-of-adhesion", "work_of_adhesion".
-  virtual std::string name(std::string_view option) const;
+  // Inline, as the whole class: front ends (and the config fuzzer, which
+  // links no library) derive from it without the builder's object file.
+  virtual std::string name(std::string_view option) const { return std::string(option); }
   // The option with its value; `value` as the library shows it, which a
   // front end may replace by what the user wrote: "--force 1,-2", "force=-1".
-  virtual std::string describe(std::string_view option, std::string_view value) const;
+  virtual std::string describe(std::string_view option, std::string_view value) const {
+    return std::string(option) + "=" + std::string(value);
+  }
 };
 
 // Everything a contact problem is, as given: unset means not given, so that
