@@ -9,9 +9,26 @@ import numpy.typing as npt
 
 from . import _core
 from ._height_map import HeightMap
-from ._solve import _coating, _material, _surface
+from ._solve import _coating, _surface
 
 Velocity = Union[float, Sequence[float]]
+
+
+# E* of the elastic film's body. The contact solves take the body through
+# the library's problem builder; the lubrication binding takes E* itself.
+def _material(e_star, E1, nu1, E2, nu2) -> float:
+    constants = {"E1": E1, "nu1": nu1, "E2": E2, "nu2": nu2}
+    given = [name for name, value in constants.items() if value is not None]
+    if e_star is not None and given:
+        raise _core.InputError(f"e_star cannot be combined with {', '.join(given)}: give either e_star or all of "
+                               "E1, nu1, E2, nu2")
+    if e_star is not None:
+        return float(e_star)
+    if len(given) < 4:
+        missing = [name for name in constants if constants[name] is None]
+        raise _core.InputError(f"incomplete material: missing {', '.join(missing)} (give all of E1, nu1, E2, nu2, "
+                               "or e_star)")
+    return _core.composite_modulus(E1, nu1, E2, nu2)
 
 
 class Film:
