@@ -103,6 +103,15 @@ def _laws(hardness, adhesion, work_of_adhesion, adhesion_range, adhesion_stress,
             "adhesion_precondition": precondition}
 
 
+def _with_active_set(keywords: dict, active_set: Optional[bool]) -> dict:
+    """The problem keywords with pk-multilevel's active-set phase, when given."""
+    if active_set is None:
+        return keywords
+    if not isinstance(active_set, bool):
+        raise _core.InputError(f"active_set={active_set!r} is invalid: give True or False")
+    return {**keywords, "active_set": "on" if active_set else "off"}
+
+
 def solve(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, dy: Optional[float] = None,
           e_star: Optional[float] = None, E1: Optional[float] = None, nu1: Optional[float] = None,
           E2: Optional[float] = None, nu2: Optional[float] = None, boundary: str = "free",
@@ -118,7 +127,7 @@ def solve(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
           tangential_force: Optional[Union[float, Sequence[float]]] = None,
           tangential_displacement: Optional[Union[float, Sequence[float]]] = None,
           sliding: Optional[Sequence[float]] = None, tangential_tol: Optional[float] = None,
-          tangential_max_iter: Optional[int] = None) -> _core.Result:
+          tangential_max_iter: Optional[int] = None, active_set: Optional[bool] = None) -> _core.Result:
     """Solves the contact of a rigid rough surface on an elastic half-space, frictionless or with friction.
 
     surface: a HeightMap, or a 1D/2D array of heights (m, peaks positive,
@@ -133,6 +142,8 @@ def solve(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
         limit (None: the library's 10000; lcpquad takes none).
     threads: threads of the solve (None: the CPUs this process may use). It
         is process-wide: it also sets the threads of later FFT plans.
+    active_set: pk-multilevel begins its finest grid with primal-dual
+        active-set steps (``--active-set on``; None: off).
     initial_pressure: a warm start (Pa), shaped like the surface.
     progress: ``callable(iteration, residual)`` called after each iteration
         of the fine solve, on the calling thread; an exception it raises
@@ -185,14 +196,15 @@ def solve(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
             raise _core.InputError("initial_pressure cannot be combined with friction")
         return _friction("solve", surface, dx, dy, e_star, E1, nu1, E2, nu2, boundary, force, mean_pressure,
                          approach, solver, tol, max_iter, threads, progress, fft_planning, deflation_block,
-                         _laws(hardness, adhesion, work_of_adhesion, adhesion_range, adhesion_stress, adhesion_tol,
-                               adhesion_precondition), coating, tangential)[0]
+                         _with_active_set(_laws(hardness, adhesion, work_of_adhesion, adhesion_range,
+                                                adhesion_stress, adhesion_tol, adhesion_precondition), active_set),
+                         coating, tangential)[0]
     height_map = _surface(surface, dx, dy)
     start = None if initial_pressure is None else np.ascontiguousarray(initial_pressure, dtype=np.float64)
     problem = _problem(e_star, E1, nu1, E2, nu2, coating, _loads(force, mean_pressure, approach, plural=False), solver,
                        tol, max_iter, fft_planning, deflation_block, threads,
-                       _laws(hardness, adhesion, work_of_adhesion, adhesion_range, adhesion_stress, adhesion_tol,
-                             adhesion_precondition))
+                       _with_active_set(_laws(hardness, adhesion, work_of_adhesion, adhesion_range, adhesion_stress,
+                                              adhesion_tol, adhesion_precondition), active_set))
     call = _call_text("solve", height_map, {"boundary": boundary, **_shown(problem, single=True)})
     return _core.solve(height_map.heights, height_map.dx, height_map.dy or 0.0, boundary, problem, start, progress,
                        call, height_map.source, list(height_map.preparation))
@@ -209,7 +221,7 @@ def sweep(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
           adhesion: Optional[str] = None, work_of_adhesion: Optional[float] = None,
           adhesion_range: Optional[float] = None, adhesion_stress: Optional[float] = None,
           adhesion_tol: Optional[float] = None, adhesion_precondition: Optional[bool] = None,
-          coating: Optional[Mapping[str, float]] = None) -> _core.Sweep:
+          coating: Optional[Mapping[str, float]] = None, active_set: Optional[bool] = None) -> _core.Sweep:
     """Solves the surface under each load of a sequence, in order, each step
     warm-started from the previous one (as ``halfspace solve`` with several
     loads). Takes the keywords of :func:`solve`, with ``force``,
@@ -220,8 +232,8 @@ def sweep(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
     height_map = _surface(surface, dx, dy)
     problem = _problem(e_star, E1, nu1, E2, nu2, coating, _loads(force, mean_pressure, approach, plural=True), solver,
                        tol, max_iter, fft_planning, deflation_block, threads,
-                       _laws(hardness, adhesion, work_of_adhesion, adhesion_range, adhesion_stress, adhesion_tol,
-                             adhesion_precondition))
+                       _with_active_set(_laws(hardness, adhesion, work_of_adhesion, adhesion_range, adhesion_stress,
+                                              adhesion_tol, adhesion_precondition), active_set))
     call = _call_text("sweep", height_map, {"boundary": boundary, **_shown(problem, single=False),
                                             "warm_start": warm_start})
     return _core.sweep(height_map.heights, height_map.dx, height_map.dy or 0.0, boundary, problem, warm_start,
