@@ -34,6 +34,18 @@ import h5py
 # The headline script's helpers: its directory is this script's.
 from headline import EXIT_NOT_CONVERGED, EXIT_OK, ROOT, git, integer_list, run, size_list
 
+
+def shown_path(argument: str) -> str:
+    """An argument as the results file records it: a path outside the
+    project as '<dir>/name' (machine paths do not belong in results)."""
+    path = Path(argument)
+    if not path.is_absolute():
+        return argument
+    try:
+        return str(path.resolve().relative_to(ROOT.resolve()))
+    except ValueError:
+        return f"<dir>/{path.name}"
+
 CELL = 1e-6  # m
 
 
@@ -142,7 +154,7 @@ def main():
         f"## Growing-domain iterations, {now.strftime('%Y-%m-%dT%H:%M:%SZ')}", "",
         f"- commit: `{git('describe', '--always', '--dirty')}`",
         f"- machine: {uname.system} {uname.release} {uname.machine}, nproc {os.cpu_count()}",
-        f"- command: `{shlex.join(['growing_domain.py'] + sys.argv[1:])}`",
+        f"- command: `{shlex.join(['growing_domain.py'] + [shown_path(a) for a in sys.argv[1:]])}`",
         f"- solve options: `{shlex.join(solver_args)}`", "",
         *lines, "",
         f"- fit: mean = {a:.2f} + {b:.2f} log2(side / {rows[0][0]}); "

@@ -71,10 +71,6 @@ constexpr std::array<double, 2> kStartFilms{0.5, 8.0};
 // The trust region of a Newton step, in units of the pressure scale (the
 // dry contact's peak) and of the thinnest film.
 constexpr double kLargestStep = 0.5;
-// Nodes within this of the switch s = 0 take the branch their step goes
-// into; the passes that may take.
-constexpr double kSwitchBand = 1e-9;
-constexpr int kBranchPasses = 4;
 
 // The state of the Newton iteration: s and h0, and what follows from them.
 struct State {
@@ -352,33 +348,11 @@ ElasticFilm solve_elastic_film(InfluenceOperator& op, const Eigen::ArrayXd& gap,
             steps_before + iteration, current.mass, options.tolerance, current.load, options.load_tolerance);
         break;
       }
-      // The generalised Jacobian's branch per node: full where s > 0,
-      // cavitated where s < 0; a node at the switch (s = 0 to rounding, as
-      // the start's unloaded nodes and an inlet's vanishing pressures) takes
-      // the branch the step moves it into, found by re-solving (semi-smooth
-      // Newton with the directional derivative; Qi & Sun 1993).
+      // The generalised Jacobian's branch per node: full where s >= 0,
+      // cavitated below (branch_consistent_step settles the nodes at s = 0).
       for (std::size_t j = 0; j < n; ++j) branch_full[j] = x.s[static_cast<Eigen::Index>(j)] >= 0.0 ? 1 : 0;
-      bool singular = false;
-      for (int pass = 0; pass < kBranchPasses; ++pass) {
-        measure(x, residual, true);
-        lu.compute(jacobian_t.transpose());
-        step = lu.solve(-residual);
-        if (!step.allFinite()) {
-          singular = true;
-          break;
-        }
-        bool flipped = false;
-        for (std::size_t j = 0; j < n; ++j) {
-          const auto jj = static_cast<Eigen::Index>(j);
-          if (topology.fixed(j) || std::abs(x.s[jj]) > kSwitchBand) continue;
-          const char wanted = step[jj] >= 0.0 ? 1 : 0;
-          if (wanted != branch_full[j]) {
-            branch_full[j] = wanted;
-            flipped = true;
-          }
-        }
-        if (!flipped) break;
-      }
+      const bool singular = !detail::branch_consistent_step([&] { measure(x, residual, true); }, topology, x.s,
+                                                            jacobian_t, residual, lu, step, branch_full);
       if (singular) {
         result.status = FilmStatus::failure;
         result.message = fmt::format("the EHL Newton step {} is singular", iteration + 1);

@@ -81,8 +81,6 @@ constexpr double kThickFilm = 8.0;
 // times the thinnest fluid film (at least kFilmFloorShare of H).
 constexpr double kLargestStep = 0.5;
 constexpr double kFilmFloorShare = 0.05;
-constexpr double kSwitchBand = 1e-9;
-constexpr int kBranchPasses = 4;
 
 struct State {
   Eigen::ArrayXd s, q, fluid, theta, contact, total, deformation, film, reynolds_film;
@@ -387,27 +385,8 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
         branch_full[j] = x.s[jj] >= 0.0 ? 1 : 0;
         closed[j] = x.film[jj] / H < x.q[jj] ? 1 : 0;
       }
-      bool singular = false;
-      for (int pass = 0; pass < kBranchPasses; ++pass) {
-        measure(x, residual, true);
-        lu.compute(jacobian_t.transpose());
-        step = lu.solve(-residual);
-        if (!step.allFinite()) {
-          singular = true;
-          break;
-        }
-        bool flipped = false;
-        for (std::size_t j = 0; j < n; ++j) {
-          const auto jj = static_cast<Eigen::Index>(j);
-          if (topology.fixed(j) || std::abs(x.s[jj]) > kSwitchBand) continue;
-          const char wanted = step[jj] >= 0.0 ? 1 : 0;
-          if (wanted != branch_full[j]) {
-            branch_full[j] = wanted;
-            flipped = true;
-          }
-        }
-        if (!flipped) break;
-      }
+      const bool singular = !detail::branch_consistent_step([&] { measure(x, residual, true); }, topology, x.s,
+                                                            jacobian_t, residual, lu, step, branch_full);
       ++steps;
       if (singular) {
         result.message = fmt::format("the mixed film's Newton step {} is singular", steps);

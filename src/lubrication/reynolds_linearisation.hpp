@@ -6,7 +6,9 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/LU>
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -15,6 +17,43 @@
 #include "halfspace/operators/influence_operator.hpp"
 
 namespace halfspace::lubrication::detail {
+
+// Nodes within this of the switch s = 0 take the branch their step goes
+// into; the passes that may take.
+inline constexpr double kSwitchBand = 1e-9;
+inline constexpr int kBranchPasses = 4;
+
+// One semi-smooth Newton step on the generalised Jacobian's branches
+// (`branch_full[j]`: 1 for the full-film branch of node j): `linearise()`
+// fills `jacobian_t` (J transposed) and `residual` for the current
+// branches; a node at the switch (|s| <= kSwitchBand, as the start's
+// unloaded nodes and an inlet's vanishing pressures) takes the branch the
+// step moves it into, found by re-solving (the directional derivative;
+// Qi & Sun 1993). Returns false when the step is not finite (J singular).
+template <class Linearise>
+bool branch_consistent_step(Linearise&& linearise, const ReynoldsStencil& topology, const Eigen::ArrayXd& s,
+                            const Eigen::MatrixXd& jacobian_t, const Eigen::VectorXd& residual,
+                            Eigen::PartialPivLU<Eigen::MatrixXd>& lu, Eigen::VectorXd& step,
+                            std::vector<char>& branch_full) {
+  for (int pass = 0; pass < kBranchPasses; ++pass) {
+    linearise();
+    lu.compute(jacobian_t.transpose());
+    step = lu.solve(-residual);
+    if (!step.allFinite()) return false;
+    bool flipped = false;
+    for (std::size_t j = 0; j < branch_full.size(); ++j) {
+      const auto jj = static_cast<Eigen::Index>(j);
+      if (topology.fixed(j) || std::abs(s[jj]) > kSwitchBand) continue;
+      const char wanted = step[jj] >= 0.0 ? 1 : 0;
+      if (wanted != branch_full[j]) {
+        branch_full[j] = wanted;
+        flipped = true;
+      }
+    }
+    if (!flipped) break;
+  }
+  return true;
+}
 
 // The nodes' pressure-dependent coefficients for a film: rho / rho0, eps =
 // rho h^3 / (12 eta) and their derivatives.
