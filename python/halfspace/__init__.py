@@ -1,4 +1,5 @@
-"""halfspace: frictionless elastic contact of rough surfaces, from Python.
+"""halfspace: elastic contact of rough surfaces (normal, adhesive, frictional)
+and lubricated films, from Python.
 
 The engine is the C++ library of this repository (Polonsky-Keer with
 FFT-based influence operators); this package hands it numpy arrays and gives
