@@ -16,6 +16,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "exit_codes.hpp"
@@ -33,6 +34,7 @@
 #include "halfspace/operators/fft_influence_operator.hpp"
 #include "halfspace/version.hpp"
 #include "option_table.hpp"
+#include "plot_tool.hpp"
 
 namespace halfspace::app {
 namespace {
@@ -70,6 +72,7 @@ struct LubricateOptions : GivenOptions {
   std::optional<std::vector<double>> speeds;
   std::optional<std::string> stribeck;
   std::optional<std::string> output;
+  bool plot = false;
   bool quiet = false;
 };
 
@@ -154,6 +157,9 @@ const std::array kOptions{
     LubricateOption{"stribeck", &LubricateOptions::stribeck, Kind::path, kMixed, "FILE.csv",
                     "the Stribeck curve of --speeds as CSV"},
     LubricateOption{"output", &LubricateOptions::output, Kind::path, kOutput, "FILE.h5", "result file (required)"},
+    LubricateOption{"plot", &LubricateOptions::plot, Kind::flag, kOutput, "",
+                    "draw PNG figures next to the output with scripts/halfspace_plot.py (pressure and film along the "
+                    "centre line, maps of a 2D film; the Stribeck curve of --stribeck)"},
     LubricateOption{"quiet", &LubricateOptions::quiet, Kind::flag, kOutput, "", "print nothing on success"},
 };
 
@@ -540,7 +546,7 @@ void add_roughness(const std::string& path, HeightMap& map) {
   map.heights += rough.heights;
 }
 
-int run_lubricate(const LubricateOptions& o) {
+int solve_film(const LubricateOptions& o) {
   if (!o.height_map) throw InputError("no surface given: pass --height-map FILE");
   if (!o.viscosity) throw InputError("no viscosity given: pass --viscosity PA_S");
   if (!o.entrainment_velocity) throw InputError("no entrainment velocity given: pass --entrainment-velocity UX[,UY]");
@@ -634,6 +640,27 @@ int run_lubricate(const LubricateOptions& o) {
                     shear, limits);
       });
   return report(o, summary, film.solution.converged());
+}
+
+// --plot: the tool is found (and its packages checked) before the solve; the
+// figures are drawn from the files written, also for a film that did not
+// converge (as solve --plot does).
+int run_lubricate(const LubricateOptions& o) {
+  const std::optional<PlotTool> plot =
+      o.plot ? std::optional<PlotTool>(find_plot_tool({"--plot", "drop --plot", {}})) : std::nullopt;
+  const int code = solve_film(o);
+  if (!plot || (code != kExitOk && code != kExitNotConverged)) return code;
+  std::vector<std::pair<std::string_view, std::string>> figures{{"film", *o.output}};
+  if (o.stribeck) figures.emplace_back("stribeck", *o.stribeck);
+  bool plotted = true;
+  for (const auto& [subcommand, file] : figures) {
+    const std::string failure = run_plot_tool(*plot, subcommand, file, o.quiet);
+    if (!failure.empty()) {
+      fmt::print(stderr, "error: --plot: {}; the result is written to {}\n", failure, file);
+      plotted = false;
+    }
+  }
+  return plotted || code != kExitOk ? code : kExitPlotFailed;
 }
 
 }  // namespace
