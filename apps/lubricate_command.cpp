@@ -7,6 +7,7 @@
 #include "lubricate_command.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <array>
@@ -32,6 +33,7 @@
 #include "halfspace/lubrication/mixed_film.hpp"
 #include "halfspace/material.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
+#include "halfspace/surface/preparation.hpp"
 #include "halfspace/version.hpp"
 #include "option_table.hpp"
 #include "plot_tool.hpp"
@@ -41,6 +43,7 @@ namespace {
 
 struct LubricateOptions : GivenOptions {
   std::optional<std::string> height_map;
+  std::optional<std::string> window, invalid, detrend;
   std::optional<double> viscosity;
   std::optional<std::vector<double>> entrainment_velocity;
   std::optional<std::vector<double>> sliding_velocity;
@@ -86,6 +89,14 @@ constexpr std::string_view kOutput = "Output";
 const std::array kOptions{
     LubricateOption{"height-map", &LubricateOptions::height_map, Kind::path, kFilm, "FILE",
                     "the rigid surface's heights (any format solve reads; spacing from the file) (required)"},
+    LubricateOption{"window", &LubricateOptions::window, Kind::text, kFilm, "I0,J0,NX,NY",
+                    "use only columns I0..I0+NX-1 and rows J0..J0+NY-1 of --height-map (0-based; I0,NX for a "
+                    "profile), as solve's"},
+    LubricateOption{"invalid", &LubricateOptions::invalid, Kind::text, kFilm, "MODE",
+                    "invalid points of --height-map: refuse, fill (harmonic) or crop [refuse]"},
+    LubricateOption{"detrend", &LubricateOptions::detrend, Kind::text, kFilm, "MODE",
+                    "subtract a least-squares fit from --height-map (after --window): none, mean, plane or "
+                    "curvature [none]"},
     LubricateOption{"viscosity", &LubricateOptions::viscosity, Kind::number, kFilm, "PA_S",
                     "lubricant viscosity (Pa s) (required)"},
     LubricateOption{"entrainment-velocity", &LubricateOptions::entrainment_velocity, Kind::numbers, kFilm, "UX[,UY]",
@@ -281,6 +292,8 @@ void write_film_file(const LubricateOptions& o, const HeightMap& map, const Grid
     io::write_grid_attributes(root, grid);
     more(root);
     root.write_string_attribute("source", map.source);
+    if (!map.preparation.empty())
+      root.write_string_attribute("preparation", fmt::format("{}", fmt::join(map.preparation, "\n")));
     root.write_string_attribute("command_line", o.command_line);
     root.write_string_attribute("halfspace_version", fmt::format("{} ({})", kVersion, kGitHash));
   });
@@ -581,8 +594,24 @@ int solve_film(const LubricateOptions& o) {
   }
 
   HeightMap map = io::read_height_map(*o.height_map);
+  if (o.window || o.invalid || o.detrend) {
+    // The library's preparation (solve's): window, invalid points, detrending.
+    const auto flagged = [](std::string_view flag, const auto& parse) {
+      try {
+        return parse();
+      } catch (const InputError& error) {
+        throw InputError(fmt::format("--{}: {}", flag, error.what()));
+      }
+    };
+    surface::PreparationOptions prepare;
+    if (o.window) prepare.window = flagged("window", [&] { return surface::parse_window(*o.window); });
+    if (o.invalid) prepare.invalid = flagged("invalid", [&] { return surface::parse_invalid_points(*o.invalid); });
+    if (o.detrend) prepare.detrend = flagged("detrend", [&] { return surface::parse_detrend(*o.detrend); });
+    surface::prepare_height_map(map, prepare);
+  }
   if (!map.all_valid()) {
-    throw InputError(fmt::format("{} has invalid points: a film needs every height", *o.height_map));
+    throw InputError(
+        fmt::format("{} has invalid points: a film needs every height (or pass --invalid fill)", *o.height_map));
   }
   if (!(map.dx > 0.0) || (map.dimension == 2 && !(map.dy > 0.0))) {
     throw InputError(fmt::format("{} does not give its spacing: a film needs dx (and dy) in metres", *o.height_map));
