@@ -87,7 +87,7 @@ def test_mixed_film_equals_cli(tmp_path, cli, rough_line):
 def test_separation_controlled_mixed_film_equals_cli(tmp_path, cli, rough_line):
     """offset= (h0) instead of force=, as --offset."""
     cylinder, rough, heights, dx = rough_line
-    flags = [flag for flag in MIXED_FLAGS]
+    flags = list(MIXED_FLAGS)
     flags[flags.index("--force"):flags.index("--force") + 2] = ["--offset", "-5e-7"]
     subprocess.run([cli, "lubricate", "--height-map", str(cylinder), "--roughness", str(rough), *flags,
                     "--entrainment-velocity", "0.001", "--output", str(tmp_path / "o.h5"), "--quiet"], check=True)
