@@ -205,7 +205,7 @@ def lubricate(heights: npt.NDArray[np.float64], dx: float, dy: float, viscosity:
               compressibility: Optional[str], couette_scheme: Optional[str], eyring_stress: float,
               limiting_shear_stress: float, limiting_shear_slope: float, mixed: bool, offset: Optional[float],
               contact_friction: Optional[float], boundary_film: Optional[float],
-              speeds: Optional[Sequence[float]]) -> Any:
+              speeds: Optional[Sequence[float]], threads: Optional[int]) -> Any:
     """The film's fields (numpy arrays) and numbers, as halfspace.Film holds them, or with speeds a list of
     them, one per speed (python/src/lubricate.cpp)."""
 def paper_reproduce(test: int, load: float) -> dict[str, Any]: ...

@@ -222,7 +222,8 @@ def _arguments(surface, *, viscosity: float, entrainment_velocity: Velocity,
               couette_scheme: Optional[str] = None, eyring_stress: Optional[float] = None,
               limiting_shear_stress: Optional[float] = None,
               limiting_shear_slope: Optional[float] = None, mixed: bool = False, offset: Optional[float] = None,
-              contact_friction: Optional[float] = None, boundary_film: Optional[float] = None, speeds=None) -> tuple:
+              contact_friction: Optional[float] = None, boundary_film: Optional[float] = None,
+              threads: Optional[int] = None, speeds=None) -> tuple:
     height_map = _surface(surface, dx, dy)
     elastic_given = any(value is not None for value in (e_star, E1, nu1, E2, nu2, coating))
     layers = _coating(coating, e_star, E1, nu1, E2, nu2)
@@ -243,7 +244,7 @@ def _arguments(surface, *, viscosity: float, entrainment_velocity: Velocity,
         modulus, layers, boundary, _optional_float(pressure_viscosity, "pressure_viscosity"), piezoviscosity,
         _optional_float(roelands_index, "roelands_index"), compressibility, couette_scheme, *limit_values,
         bool(mixed), _optional_float(offset, "offset"), _optional_float(contact_friction, "contact_friction"),
-        _optional_float(boundary_film, "boundary_film"), _speeds(speeds))
+        _optional_float(boundary_film, "boundary_film"), _speeds(speeds), None if threads is None else int(threads))
 
 
 def lubricate(surface: Union[HeightMap, np.ndarray], *, viscosity: float, entrainment_velocity: Velocity,
@@ -259,7 +260,8 @@ def lubricate(surface: Union[HeightMap, np.ndarray], *, viscosity: float, entrai
               couette_scheme: Optional[str] = None, eyring_stress: Optional[float] = None,
               limiting_shear_stress: Optional[float] = None,
               limiting_shear_slope: Optional[float] = None, mixed: bool = False, offset: Optional[float] = None,
-              contact_friction: Optional[float] = None, boundary_film: Optional[float] = None) -> Film:
+              contact_friction: Optional[float] = None, boundary_film: Optional[float] = None,
+              threads: Optional[int] = None) -> Film:
     """Solves the Reynolds film between a surface and a flat, as ``halfspace lubricate``.
 
     surface: a HeightMap, or a 1D/2D array of heights (m, ``(ny, nx)``) with
@@ -303,6 +305,9 @@ def lubricate(surface: Union[HeightMap, np.ndarray], *, viscosity: float, entrai
         Reynolds equation sees, m; None: 1e-9); tol, max_iter (None: 1e-8,
         200 Newton steps). A rough line contact is the smooth profile's
         heights plus the roughness's (as ``--roughness`` adds them).
+    threads: threads of an elastic or mixed film's solve (None: the CPUs
+        this process may use, as the program). Process-wide, as in
+        :func:`solve`.
 
     Returns a :class:`Film`. Non-convergence is not an exception (see
     ``Film.converged`` and ``.message``); bad options raise InputError naming
@@ -317,7 +322,7 @@ def lubricate(surface: Union[HeightMap, np.ndarray], *, viscosity: float, entrai
         piezoviscosity=piezoviscosity, roelands_index=roelands_index, compressibility=compressibility,
         couette_scheme=couette_scheme, eyring_stress=eyring_stress, limiting_shear_stress=limiting_shear_stress,
         limiting_shear_slope=limiting_shear_slope, mixed=mixed, offset=offset, contact_friction=contact_friction,
-        boundary_film=boundary_film)))
+        boundary_film=boundary_film, threads=threads)))
 
 
 def stribeck(surface: Union[HeightMap, np.ndarray], speeds: Sequence[float], **keywords: Any) -> StribeckCurve:

@@ -26,6 +26,7 @@
 #include "halfspace/lubrication/mixed_film.hpp"
 #include "halfspace/material.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
+#include "halfspace/threads.hpp"
 
 namespace halfspace::python {
 namespace {
@@ -85,6 +86,7 @@ struct Keywords {
   bool mixed = false;
   std::optional<double> offset, contact_friction, boundary_film;
   std::optional<std::vector<double>> speeds;
+  std::optional<int> threads;  // None: default_threads(), as the program
 };
 
 std::array<double, 2> velocity(const std::vector<double>& given, const char* keyword) {
@@ -403,6 +405,14 @@ nb::object lubricate(const nb::object& heights_object, double dx, double dy, con
   conditions.boundary.supply_fluid_fraction = k.supply_fluid_fraction;
   with_keywords([&] { conditions.validate(grid); });
   if (!elastic) return solve_rigid(grid, z, conditions, k);
+  // The elastic films' FFT plans take the threads in force (process-wide; a
+  // solve(threads=) before may have changed them): the program's unless
+  // threads= says otherwise, so that the rounding is the program's too.
+  try {
+    set_threads(k.threads.value_or(default_threads()));
+  } catch (const InputError& error) {
+    throw InputError(fmt::format("threads={}: {}", k.threads.value_or(0), error.what()));
+  }
   if (k.mixed) return solve_mixed(grid, z, conditions, k, checked_composite_modulus(*k.e_star));
 
   std::optional<LayeredMaterial> coating;
@@ -439,7 +449,7 @@ void bind_lubricate(nb::module_& module) {
          std::optional<double> roelands_index, std::optional<std::string> compressibility,
          std::optional<std::string> couette_scheme, double eyring_stress, double limiting_shear_stress,
          double limiting_shear_slope, bool mixed, std::optional<double> offset, std::optional<double> contact_friction,
-         std::optional<double> boundary_film, std::optional<std::vector<double>> speeds) {
+         std::optional<double> boundary_film, std::optional<std::vector<double>> speeds, std::optional<int> threads) {
         Keywords k;
         k.viscosity = viscosity;
         k.entrainment_velocity = entrainment;
@@ -468,6 +478,7 @@ void bind_lubricate(nb::module_& module) {
         k.contact_friction = contact_friction;
         k.boundary_film = boundary_film;
         k.speeds = std::move(speeds);
+        k.threads = threads;
         return lubricate(heights, dx, dy, k);
       },
       nb::arg("heights"), nb::arg("dx"), nb::arg("dy"), nb::arg("viscosity"), nb::arg("entrainment_velocity"),
@@ -478,7 +489,7 @@ void bind_lubricate(nb::module_& module) {
       nb::arg("piezoviscosity").none(), nb::arg("roelands_index").none(), nb::arg("compressibility").none(),
       nb::arg("couette_scheme").none(), nb::arg("eyring_stress"), nb::arg("limiting_shear_stress"),
       nb::arg("limiting_shear_slope"), nb::arg("mixed"), nb::arg("offset").none(), nb::arg("contact_friction").none(),
-      nb::arg("boundary_film").none(), nb::arg("speeds").none());
+      nb::arg("boundary_film").none(), nb::arg("speeds").none(), nb::arg("threads").none());
 }
 
 }  // namespace halfspace::python

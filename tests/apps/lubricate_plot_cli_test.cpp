@@ -38,10 +38,10 @@ void expect_figure(const fs::path& path) {
 TEST(LubricatePlotCliTest, RigidMapDrawsCentreLineAndMaps) {
   const TempDir dir;
   generate(dir, {"--kind", "sphere", "--grid", "48x48", "--size", "1e-3", "--radius", "0.01", "--output", "s.h5"});
-  const ProgramRun run = run_program({"lubricate", "--height-map", "s.h5", "--viscosity", "0.1",
-                                      "--entrainment-velocity", "1", "--force", "10", "--output", "film.h5", "--plot",
-                                      "--quiet"},
-                                     dir.path());
+  const ProgramRun run =
+      run_program({"lubricate", "--height-map", "s.h5", "--viscosity", "0.1", "--entrainment-velocity", "1", "--force",
+                   "10", "--output", "film.h5", "--plot", "--quiet"},
+                  dir.path());
   ASSERT_EQ(run.exit_code, kExitOk) << run.err;
   expect_figure(dir / "film_film.png");
   expect_figure(dir / "film_film_maps.png");
@@ -52,12 +52,34 @@ TEST(LubricatePlotCliTest, MixedStribeckSweepDrawsFilmAndCurve) {
   generate(dir, {"--kind", "cylinder", "--grid", "65", "--size", "2.4e-4", "--radius", "0.01", "--output", "c.h5"});
   generate(dir, {"--kind", "self-affine", "--grid", "65", "--size", "2.4e-4", "--rms-height", "1e-7", "--seed", "3",
                  "--output", "r.h5"});
-  const ProgramRun run = run_program(
-      {"lubricate", "--height-map", "c.h5", "--roughness", "r.h5", "--mixed", "--viscosity", "0.04", "--force", "4.4e4",
-       "--E-star", "1.1e11", "--pressure-viscosity", "2.27e-8", "--limiting-shear-slope", "0.05",
-       "--entrainment-velocity", "1", "--sliding-velocity", "0.5", "--speeds", "1,0.001", "--stribeck", "curve.csv",
-       "--output", "last.h5", "--plot"},
-      dir.path());
+  const ProgramRun run = run_program({"lubricate",
+                                      "--height-map",
+                                      "c.h5",
+                                      "--roughness",
+                                      "r.h5",
+                                      "--mixed",
+                                      "--viscosity",
+                                      "0.04",
+                                      "--force",
+                                      "4.4e4",
+                                      "--E-star",
+                                      "1.1e11",
+                                      "--pressure-viscosity",
+                                      "2.27e-8",
+                                      "--limiting-shear-slope",
+                                      "0.05",
+                                      "--entrainment-velocity",
+                                      "1",
+                                      "--sliding-velocity",
+                                      "0.5",
+                                      "--speeds",
+                                      "1,0.001",
+                                      "--stribeck",
+                                      "curve.csv",
+                                      "--output",
+                                      "last.h5",
+                                      "--plot"},
+                                     dir.path());
   ASSERT_EQ(run.exit_code, kExitOk) << run.err;
   expect_figure(dir / "last_film.png");
   EXPECT_FALSE(fs::exists(dir / "last_film_maps.png")) << "a profile has no maps";
@@ -69,8 +91,9 @@ TEST(LubricatePlotCliTest, MixedStribeckSweepDrawsFilmAndCurve) {
 TEST(LubricatePlotCliTest, UnusableToolIsRefusedBeforeTheSolve) {
   const TempDir dir;
   generate(dir, {"--kind", "cylinder", "--grid", "65", "--size", "1e-3", "--radius", "0.01", "--output", "c.h5"});
-  const std::vector<std::string> film{"lubricate", "--height-map", "c.h5", "--viscosity", "0.1",
-                                      "--entrainment-velocity", "1", "--force", "100", "--output", "film.h5", "--plot"};
+  const std::vector<std::string> film{
+      "lubricate", "--height-map", "c.h5", "--viscosity", "0.1",     "--entrainment-velocity",
+      "1",         "--force",      "100",  "--output",    "film.h5", "--plot"};
   const ProgramRun python = run_program(film, dir.path(), {{"HALFSPACE_PYTHON", "/nonexistent/python3"}});
   testing::expect_input_error(
       python, {"error: --plot: the plotting tool's interpreter /nonexistent/python3 cannot be run", "drop --plot"},
