@@ -7,6 +7,7 @@
 #include "lubricate_command.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <array>
@@ -16,6 +17,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "exit_codes.hpp"
@@ -31,14 +33,17 @@
 #include "halfspace/lubrication/mixed_film.hpp"
 #include "halfspace/material.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
+#include "halfspace/surface/preparation.hpp"
 #include "halfspace/version.hpp"
 #include "option_table.hpp"
+#include "plot_tool.hpp"
 
 namespace halfspace::app {
 namespace {
 
 struct LubricateOptions : GivenOptions {
   std::optional<std::string> height_map;
+  std::optional<std::string> window, invalid, detrend;
   std::optional<double> viscosity;
   std::optional<std::vector<double>> entrainment_velocity;
   std::optional<std::vector<double>> sliding_velocity;
@@ -70,6 +75,7 @@ struct LubricateOptions : GivenOptions {
   std::optional<std::vector<double>> speeds;
   std::optional<std::string> stribeck;
   std::optional<std::string> output;
+  bool plot = false;
   bool quiet = false;
 };
 
@@ -83,6 +89,14 @@ constexpr std::string_view kOutput = "Output";
 const std::array kOptions{
     LubricateOption{"height-map", &LubricateOptions::height_map, Kind::path, kFilm, "FILE",
                     "the rigid surface's heights (any format solve reads; spacing from the file) (required)"},
+    LubricateOption{"window", &LubricateOptions::window, Kind::text, kFilm, "I0,J0,NX,NY",
+                    "use only columns I0..I0+NX-1 and rows J0..J0+NY-1 of --height-map (0-based; I0,NX for a "
+                    "profile), as solve's"},
+    LubricateOption{"invalid", &LubricateOptions::invalid, Kind::text, kFilm, "MODE",
+                    "invalid points of --height-map: refuse, fill (harmonic) or crop [refuse]"},
+    LubricateOption{"detrend", &LubricateOptions::detrend, Kind::text, kFilm, "MODE",
+                    "subtract a least-squares fit from --height-map (after --window): none, mean, plane or "
+                    "curvature [none]"},
     LubricateOption{"viscosity", &LubricateOptions::viscosity, Kind::number, kFilm, "PA_S",
                     "lubricant viscosity (Pa s) (required)"},
     LubricateOption{"entrainment-velocity", &LubricateOptions::entrainment_velocity, Kind::numbers, kFilm, "UX[,UY]",
@@ -154,6 +168,9 @@ const std::array kOptions{
     LubricateOption{"stribeck", &LubricateOptions::stribeck, Kind::path, kMixed, "FILE.csv",
                     "the Stribeck curve of --speeds as CSV"},
     LubricateOption{"output", &LubricateOptions::output, Kind::path, kOutput, "FILE.h5", "result file (required)"},
+    LubricateOption{"plot", &LubricateOptions::plot, Kind::flag, kOutput, "",
+                    "draw PNG figures next to the output with scripts/halfspace_plot.py (pressure and film along the "
+                    "centre line, maps of a 2D film; the Stribeck curve of --stribeck)"},
     LubricateOption{"quiet", &LubricateOptions::quiet, Kind::flag, kOutput, "", "print nothing on success"},
 };
 
@@ -275,6 +292,8 @@ void write_film_file(const LubricateOptions& o, const HeightMap& map, const Grid
     io::write_grid_attributes(root, grid);
     more(root);
     root.write_string_attribute("source", map.source);
+    if (!map.preparation.empty())
+      root.write_string_attribute("preparation", fmt::format("{}", fmt::join(map.preparation, "\n")));
     root.write_string_attribute("command_line", o.command_line);
     root.write_string_attribute("halfspace_version", fmt::format("{} ({})", kVersion, kGitHash));
   });
@@ -540,7 +559,7 @@ void add_roughness(const std::string& path, HeightMap& map) {
   map.heights += rough.heights;
 }
 
-int run_lubricate(const LubricateOptions& o) {
+int solve_film(const LubricateOptions& o) {
   if (!o.height_map) throw InputError("no surface given: pass --height-map FILE");
   if (!o.viscosity) throw InputError("no viscosity given: pass --viscosity PA_S");
   if (!o.entrainment_velocity) throw InputError("no entrainment velocity given: pass --entrainment-velocity UX[,UY]");
@@ -575,8 +594,24 @@ int run_lubricate(const LubricateOptions& o) {
   }
 
   HeightMap map = io::read_height_map(*o.height_map);
+  if (o.window || o.invalid || o.detrend) {
+    // The library's preparation (solve's): window, invalid points, detrending.
+    const auto flagged = [](std::string_view flag, const auto& parse) {
+      try {
+        return parse();
+      } catch (const InputError& error) {
+        throw InputError(fmt::format("--{}: {}", flag, error.what()));
+      }
+    };
+    surface::PreparationOptions prepare;
+    if (o.window) prepare.window = flagged("window", [&] { return surface::parse_window(*o.window); });
+    if (o.invalid) prepare.invalid = flagged("invalid", [&] { return surface::parse_invalid_points(*o.invalid); });
+    if (o.detrend) prepare.detrend = flagged("detrend", [&] { return surface::parse_detrend(*o.detrend); });
+    surface::prepare_height_map(map, prepare);
+  }
   if (!map.all_valid()) {
-    throw InputError(fmt::format("{} has invalid points: a film needs every height", *o.height_map));
+    throw InputError(
+        fmt::format("{} has invalid points: a film needs every height (or pass --invalid fill)", *o.height_map));
   }
   if (!(map.dx > 0.0) || (map.dimension == 2 && !(map.dy > 0.0))) {
     throw InputError(fmt::format("{} does not give its spacing: a film needs dx (and dy) in metres", *o.height_map));
@@ -634,6 +669,27 @@ int run_lubricate(const LubricateOptions& o) {
                     shear, limits);
       });
   return report(o, summary, film.solution.converged());
+}
+
+// --plot: the tool is found (and its packages checked) before the solve; the
+// figures are drawn from the files written, also for a film that did not
+// converge (as solve --plot does).
+int run_lubricate(const LubricateOptions& o) {
+  const std::optional<PlotTool> plot =
+      o.plot ? std::optional<PlotTool>(find_plot_tool({"--plot", "drop --plot", {}})) : std::nullopt;
+  const int code = solve_film(o);
+  if (!plot || (code != kExitOk && code != kExitNotConverged)) return code;
+  std::vector<std::pair<std::string_view, std::string>> figures{{"film", *o.output}};
+  if (o.stribeck) figures.emplace_back("stribeck", *o.stribeck);
+  bool plotted = true;
+  for (const auto& [subcommand, file] : figures) {
+    const std::string failure = run_plot_tool(*plot, subcommand, file, o.quiet);
+    if (!failure.empty()) {
+      fmt::print(stderr, "error: --plot: {}; the result is written to {}\n", failure, file);
+      plotted = false;
+    }
+  }
+  return plotted || code != kExitOk ? code : kExitPlotFailed;
 }
 
 }  // namespace

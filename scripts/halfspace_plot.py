@@ -19,10 +19,19 @@ Subcommands (PNG files are written next to the input unless --out is given):
                            /history) and the stick/slip map of the last step
   paper DIR                the Table 1 reproduction figures from DIR/testN.h5
                            (written by `halfspace paper`, docs/paper.md)
+  film FILE.h5             a lubricated film (`halfspace lubricate`): pressure
+                           and film thickness along the centre line (the
+                           profile, or the middle row of a map; a mixed film's
+                           fluid and contact pressures apart), and for a map
+                           also the pressure, film and fluid fraction maps
+  stribeck FILE.csv        a Stribeck curve (`lubricate --speeds --stribeck`):
+                           the friction coefficient and the contact's share
+                           of the load against the entrainment speed and the
+                           Hersey number
 
 --out names the output: a file ending in .png for a command that draws one
 figure, else a directory. Also importable: plot_maps, plot_profile,
-plot_sweep, plot_friction and plot_paper take a path and return the PNG paths written.
+plot_sweep, plot_friction, plot_paper, plot_film and plot_stribeck take a path and return the PNG paths written.
 
 Needs Debian's python3 with python3-matplotlib, python3-h5py and
 python3-numpy (scripts/install-deps.sh); the shebang names /usr/bin/python3
@@ -319,6 +328,144 @@ def plot_sweep(path, out=None):
     return [_save(fig, _output_path(path, "_sweep", out))]
 
 
+# ---------------------------------------------------------------- lubricated films
+
+
+def read_film(path):
+    """A `halfspace lubricate` file as a dict of numpy arrays and attributes."""
+    if not os.path.isfile(path):
+        raise PlotError(f"{path}: no such file")
+    with h5py.File(path, "r") as f:
+        missing = [name for name in ("pressure", "film", "fluid_fraction") if name not in f]
+        if missing:
+            raise PlotError(f"{path}: not a lubricated film file (no dataset {', '.join('/' + m for m in missing)})")
+        film = {name: f[name][...] for name in ("pressure", "film", "fluid_fraction", "fluid_pressure",
+                                                "contact_pressure", "deformation") if name in f}
+        film["attrs"] = {key: _attr(f, key) for key in f.attrs}
+    attrs = film["attrs"]
+    film["dimension"] = int(attrs.get("dimension", film["pressure"].ndim))
+    film["dx"] = float(attrs.get("dx", 1.0))
+    film["dy"] = float(attrs.get("dy", 0.0))
+    return film
+
+
+def _film_title(film, path):
+    a = film["attrs"]
+    parts = [os.path.basename(path), f"{a.get('model', 'film')} film"]
+    if "entrainment_speed" in a:
+        parts.append(f"U {float(a['entrainment_speed']):.3g} m/s")
+    if "central_film_thickness" in a:
+        parts.append(f"h_c {float(a['central_film_thickness']):.3g} m")
+    if "contact_load_fraction" in a:
+        parts.append(f"contact {100 * float(a['contact_load_fraction']):.1f} % of the load")
+    if "friction_coefficient" in a:
+        parts.append(f"mu {float(a['friction_coefficient']):.3g}")
+    return ", ".join(parts)
+
+
+def plot_film(path, out=None):
+    """Pressure and film along the centre line (fluid and contact pressure apart for a mixed film); maps for 2D."""
+    film = read_film(path)
+    line = {name: (values if film["dimension"] == 1 else values[values.shape[0] // 2])
+            for name, values in film.items() if isinstance(values, np.ndarray)}
+    n = line["pressure"].shape[0]
+    xscale, xunit = length_unit(n * film["dx"])
+    x = np.arange(n) * film["dx"] * xscale
+    pscale, punit = pressure_unit(max(float(np.max(film["pressure"])), 1e-300))
+    lscale, lunit = length_unit(max(float(np.max(line["film"])), 1e-300) * 10)
+    fig, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(7, 5.5), constrained_layout=True)
+    if "contact_pressure" in line:
+        top.plot(x, line["fluid_pressure"] * pscale, color="tab:blue", label="fluid pressure")
+        top.plot(x, line["contact_pressure"] * pscale, color="tab:red", label="contact pressure")
+        top.plot(x, line["pressure"] * pscale, color="0.3", linewidth=0.8, linestyle="--", label="total")
+        top.legend(loc="best", fontsize="small")
+    else:
+        top.plot(x, line["pressure"] * pscale, color="tab:red")
+    top.set_ylabel(f"pressure ({punit})")
+    top.grid(True, alpha=0.3)
+    bottom.plot(x, line["film"] * lscale, color="tab:blue")
+    bottom.set_ylabel(f"film thickness h ({lunit})")
+    where = "x" if film["dimension"] == 1 else f"x along the middle row (row {film['pressure'].shape[0] // 2})"
+    bottom.set_xlabel(f"{where} ({xunit})")
+    bottom.grid(True, alpha=0.3)
+    fig.suptitle(_film_title(film, path), fontsize="small")
+    written = [_save(fig, _output_path(path, "_film", out, single=film["dimension"] == 1))]
+    if film["dimension"] == 1:
+        return written
+
+    ny, nx = film["pressure"].shape
+    dx, dy = film["dx"], film["dy"] or film["dx"]
+    scale, unit = length_unit(max(nx * dx, ny * dy))
+    extent = (0, nx * dx * scale, 0, ny * dy * scale)
+    hscale, hunit = length_unit(max(float(np.max(film["film"])), 1e-300) * 10)
+    if "contact_pressure" in film:
+        panels = ((film["fluid_pressure"] * pscale, f"fluid pressure ({punit})", "magma"),
+                  (film["contact_pressure"] * pscale, f"contact pressure ({punit})", "magma"),
+                  (film["film"] * hscale, f"film thickness ({hunit})", "viridis"))
+    else:
+        panels = ((film["pressure"] * pscale, f"pressure ({punit})", "magma"),
+                  (film["film"] * hscale, f"film thickness ({hunit})", "viridis"),
+                  (film["fluid_fraction"], "fluid fraction theta", "Blues"))
+    fig, axes = plt.subplots(1, 3, figsize=(13, 4.2), constrained_layout=True)
+    for axis, (field, label, cmap) in zip(axes, panels):
+        image = axis.imshow(field, origin="lower", extent=extent, cmap=cmap, interpolation="nearest", aspect="equal")
+        axis.set_xlabel(f"x ({unit})")
+        axis.set_ylabel(f"y ({unit})")
+        fig.colorbar(image, ax=axis, shrink=0.85, label=label)
+    fig.suptitle(_film_title(film, path), fontsize="small")
+    written.append(_save(fig, _output_path(path, "_film_maps", out, single=False)))
+    return written
+
+
+def read_stribeck(path):
+    """A Stribeck curve CSV (`halfspace lubricate --stribeck`) as a dict of columns."""
+    if not os.path.isfile(path):
+        raise PlotError(f"{path}: no such file")
+    with open(path, newline="") as file:
+        header = file.readline().strip().split(",")
+        rows = [line.strip().split(",") for line in file if line.strip()]
+    needed = ("entrainment_speed", "hersey_number", "friction_coefficient", "contact_load_fraction")
+    missing = [name for name in needed if name not in header]
+    if missing:
+        raise PlotError(f"{path}: not a Stribeck curve (no column {', '.join(missing)})")
+    if not rows:
+        raise PlotError(f"{path}: the Stribeck curve has no points")
+    columns = {name: [row[k] for row in rows] for k, name in enumerate(header)}
+    curve = {name: np.array(columns[name], dtype=float) for name in needed}
+    curve["status"] = columns.get("status", ["converged"] * len(rows))
+    return curve
+
+
+def plot_stribeck(path, out=None):
+    """The friction coefficient and the contact's load share against the speed and the Hersey number."""
+    curve = read_stribeck(path)
+    order = np.argsort(curve["entrainment_speed"])
+    failed = np.array([status != "converged" for status in curve["status"]])[order]
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.2), constrained_layout=True)
+    for axis, name, label in ((axes[0], "entrainment_speed", "entrainment speed U (m/s)"),
+                              (axes[1], "hersey_number", "Hersey number eta0 U / w'")):
+        x = curve[name][order]
+        axis.plot(x, curve["friction_coefficient"][order], "o-", color="tab:red", ms=3, label="friction coefficient")
+        if failed.any():
+            axis.plot(x[failed], curve["friction_coefficient"][order][failed], "x", color="k", ms=7,
+                      label="not converged")
+        axis.set_xscale("log")
+        mu = curve["friction_coefficient"]
+        if np.all(mu > 0) and np.max(mu) > 50 * np.min(mu):
+            axis.set_yscale("log")
+        axis.set_xlabel(label)
+        axis.set_ylabel("friction coefficient mu", color="tab:red")
+        axis.grid(True, alpha=0.3, which="both")
+        twin = axis.twinx()
+        twin.plot(x, curve["contact_load_fraction"][order], "s--", color="tab:blue", ms=3)
+        twin.set_ylabel("contact share of the load", color="tab:blue")
+        twin.set_ylim(-0.02, 1.02)
+        if failed.any():
+            axis.legend(loc="best", fontsize="small")
+    fig.suptitle(f"{os.path.basename(path)}: Stribeck curve", fontsize="small")
+    return [_save(fig, _output_path(path, "_stribeck", out))]
+
+
 # ---------------------------------------------------------------- paper
 
 _METHODS = (
@@ -443,9 +590,11 @@ def main(argv=None):
                             ("profile", "a line profile through a result file"),
                             ("sweep", "contact fraction and mean gap against load"),
                             ("friction", "the fretting loop and the stick/slip map of a frictional result"),
-                            ("paper", "the Table 1 figures from a `halfspace paper` directory")):
+                            ("paper", "the Table 1 figures from a `halfspace paper` directory"),
+                            ("film", "pressure and film of a lubricated film (`halfspace lubricate`)"),
+                            ("stribeck", "a Stribeck curve (`halfspace lubricate --stribeck`)")):
         sub = commands.add_parser(name, help=help_text)
-        sub.add_argument("path", metavar="DIR" if name == "paper" else "FILE.h5")
+        sub.add_argument("path", metavar={"paper": "DIR", "stribeck": "FILE.csv"}.get(name, "FILE.h5"))
         sub.add_argument("--out", help="output .png file or directory [next to the input]")
         if name == "profile":
             sub.add_argument("--row", type=int, help="row index j of a 2D map [middle row]")
@@ -461,6 +610,10 @@ def main(argv=None):
             written = plot_sweep(args.path, args.out)
         elif args.command == "friction":
             written = plot_friction(args.path, args.out)
+        elif args.command == "film":
+            written = plot_film(args.path, args.out)
+        elif args.command == "stribeck":
+            written = plot_stribeck(args.path, args.out)
         else:
             written = plot_paper(args.path, args.out)
     except (PlotError, OSError) as error:

@@ -24,7 +24,7 @@ _os.environ.setdefault("OMP_WAIT_POLICY", "passive")
 from . import _core  # noqa: E402
 from ._core import FileError, History, InputError, Result, Sweep  # noqa: E402
 from ._height_map import HeightMap, read_height_map  # noqa: E402
-from ._lubricate import Film, lubricate  # noqa: E402
+from ._lubricate import Film, StribeckCurve, lubricate, stribeck  # noqa: E402
 from ._solve import composite_modulus, history, read_result, solve, subsurface_stress, sweep  # noqa: E402
 from . import generate, paper  # noqa: E402
 
@@ -37,6 +37,7 @@ __all__ = [
     "History",
     "InputError",
     "Result",
+    "StribeckCurve",
     "Sweep",
     "composite_modulus",
     "generate",
@@ -46,6 +47,7 @@ __all__ = [
     "read_height_map",
     "read_result",
     "solve",
+    "stribeck",
     "subsurface_stress",
     "sweep",
 ]

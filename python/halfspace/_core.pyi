@@ -203,6 +203,9 @@ def lubricate(heights: npt.NDArray[np.float64], dx: float, dy: float, viscosity:
               max_iter: Optional[int], e_star: Optional[float], coating: Optional[Sequence[float]], boundary: str,
               pressure_viscosity: Optional[float], piezoviscosity: Optional[str], roelands_index: Optional[float],
               compressibility: Optional[str], couette_scheme: Optional[str], eyring_stress: float,
-              limiting_shear_stress: float, limiting_shear_slope: float) -> dict[str, Any]:
-    """The film's fields (numpy arrays) and numbers, as halfspace.Film holds them (python/src/lubricate.cpp)."""
+              limiting_shear_stress: float, limiting_shear_slope: float, mixed: bool, offset: Optional[float],
+              contact_friction: Optional[float], boundary_film: Optional[float],
+              speeds: Optional[Sequence[float]], threads: Optional[int]) -> Any:
+    """The film's fields (numpy arrays) and numbers, as halfspace.Film holds them, or with speeds a list of
+    them, one per speed (python/src/lubricate.cpp)."""
 def paper_reproduce(test: int, load: float) -> dict[str, Any]: ...

@@ -1,4 +1,5 @@
-"""lubricate: a lubricated film (rigid Reynolds or EHL) from Python, as ``halfspace lubricate``."""
+"""lubricate: a lubricated film (rigid Reynolds, EHL or mixed) from Python, as ``halfspace lubricate``;
+stribeck: the mixed film's Stribeck curve, as ``halfspace lubricate --mixed --speeds``."""
 
 from __future__ import annotations
 
@@ -35,7 +36,7 @@ class Film:
     """A solved lubricated film. Field arrays are numpy arrays shaped like the
     surface ((ny, nx) or (n,)); numbers are SI.
 
-    Attributes: ``model`` ("rigid" or "elastic"), ``converged``, ``status``
+    Attributes: ``model`` ("rigid", "elastic" or "mixed"), ``converged``, ``status``
     ("converged", "iteration_limit" or "failure"), ``message``; fields
     ``pressure`` (Pa), ``film`` (h, m), ``fluid_fraction`` (theta),
     ``deformation`` (m, elastic only, else None), ``shear_x``, ``shear_y``
@@ -50,7 +51,18 @@ class Film:
     ``friction_coefficient``, ``limited_fraction`` (nodes whose Couette
     stress a shear limit lowered); elastic films also ``e_star``,
     ``piezoviscosity``, ``roelands_index`` (the z in force),
-    ``compressibility`` and ``couette_scheme`` (None for a rigid film)."""
+    ``compressibility`` and ``couette_scheme`` (None for a rigid film).
+
+    A mixed film (``mixed=True``) also has the fields ``fluid_pressure`` and
+    ``contact_pressure`` (Pa; ``pressure`` is their sum) and the numbers
+    ``contact_load_fraction``, ``fluid_load``, ``contact_load``,
+    ``contact_area`` (m^2; m on a profile), ``contact_area_fraction``,
+    ``fluid_friction_force`` and ``contact_friction_force`` ((x, y), their
+    sum is ``friction_force``), ``contact_friction`` (Coulomb mu),
+    ``boundary_film`` (m), ``complementarity_error`` and
+    ``entrainment_speed`` (m/s); its friction is given as forces only
+    (``shear_x``, ``shear_y``, ``couette_friction_force`` and
+    ``limited_fraction`` are None). ``separation`` is its offset h0."""
 
     model: str
     status: str
@@ -81,6 +93,22 @@ class Film:
     friction_coefficient: float
     limited_fraction: float
 
+    # Mixed films only (None otherwise).
+    fluid_pressure: Optional[npt.NDArray[np.float64]] = None
+    contact_pressure: Optional[npt.NDArray[np.float64]] = None
+    contact_load_fraction: Optional[float] = None
+    fluid_load: Optional[float] = None
+    contact_load: Optional[float] = None
+    contact_area: Optional[float] = None
+    contact_area_fraction: Optional[float] = None
+    fluid_friction_force: Optional[Tuple[float, float]] = None
+    contact_friction_force: Optional[Tuple[float, float]] = None
+    contact_friction: Optional[float] = None
+    boundary_film: Optional[float] = None
+    complementarity_error: Optional[float] = None
+    entrainment_speed: Optional[float] = None
+    hersey_number: Optional[float] = None  # a Stribeck curve's films only
+
     # Elastic films only (None for a rigid one).
     e_star: Optional[float] = None
     piezoviscosity: Optional[str] = None
@@ -92,8 +120,65 @@ class Film:
         self.__dict__.update(values)
 
     def __repr__(self) -> str:
+        contact = "" if self.contact_load_fraction is None else f", contact share {self.contact_load_fraction:.4g}"
         return (f"<halfspace.Film {self.model} {self.status}: load {self.load:.6g}, "
-                f"central film {self.central_film_thickness:.6g} m, minimum {self.minimum_film_thickness:.6g} m>")
+                f"central film {self.central_film_thickness:.6g} m, minimum {self.minimum_film_thickness:.6g} m"
+                f"{contact}>")
+
+
+class StribeckCurve:
+    """A Stribeck curve: the mixed film at each entrainment speed, in the
+    order given (each solve starting from the previous film), as the CSV of
+    ``halfspace lubricate --mixed --speeds ... --stribeck FILE``.
+
+    Columns (numpy arrays, one value per speed): ``entrainment_speed`` (m/s),
+    ``hersey_number`` (eta0 |U| / w', w' the load per unit width),
+    ``friction_coefficient``, ``fluid_friction`` and ``contact_friction``
+    (|force|, N/m on a profile), ``contact_load_fraction``,
+    ``contact_area_fraction``, ``central_film_thickness``,
+    ``minimum_film_thickness`` (m), ``newton_steps``; ``status`` (a list of
+    str); ``films`` (one :class:`Film` per speed); ``converged`` (every
+    film converged)."""
+
+    COLUMNS = ("entrainment_speed", "hersey_number", "friction_coefficient", "fluid_friction", "contact_friction",
+               "contact_load_fraction", "contact_area_fraction", "central_film_thickness", "minimum_film_thickness",
+               "status", "newton_steps")
+
+    def __init__(self, films: Sequence[Mapping[str, Any]]):
+        self.films = [Film(values) for values in films]
+        f = self.films
+        self.entrainment_speed = np.array([film.entrainment_speed for film in f])
+        self.hersey_number = np.array([film.hersey_number for film in f])
+        self.friction_coefficient = np.array([film.friction_coefficient for film in f])
+        self.fluid_friction = np.array([np.hypot(*film.fluid_friction_force) for film in f])
+        self.contact_friction = np.array([np.hypot(*film.contact_friction_force) for film in f])
+        self.contact_load_fraction = np.array([film.contact_load_fraction for film in f])
+        self.contact_area_fraction = np.array([film.contact_area_fraction for film in f])
+        self.central_film_thickness = np.array([film.central_film_thickness for film in f])
+        self.minimum_film_thickness = np.array([film.minimum_film_thickness for film in f])
+        self.newton_steps = np.array([film.iterations for film in f], dtype=np.int64)
+        self.status = [film.status for film in f]
+        self.converged = all(film.converged for film in f)
+
+    def __len__(self) -> int:
+        return len(self.films)
+
+    @property
+    def table(self) -> dict:
+        """The columns by name (the CSV's header)."""
+        return {name: getattr(self, name) for name in self.COLUMNS}
+
+    def to_pandas(self):
+        """The curve as a pandas DataFrame (needs pandas)."""
+        try:
+            import pandas
+        except ImportError as error:
+            raise ImportError("StribeckCurve.to_pandas needs pandas: pip install pandas") from error
+        return pandas.DataFrame(self.table)
+
+    def __repr__(self) -> str:
+        return (f"<halfspace.StribeckCurve {len(self)} speeds, friction coefficient "
+                f"{self.friction_coefficient.min():.4g} to {self.friction_coefficient.max():.4g}>")
 
 
 def _velocity(value: Optional[Velocity], name: str) -> list:
@@ -113,6 +198,55 @@ def _optional_float(value, name: str) -> Optional[float]:
     return float(value)
 
 
+def _speeds(speeds) -> Optional[list]:
+    if speeds is None:
+        return None
+    array = np.atleast_1d(np.asarray(speeds, dtype=np.float64))
+    if array.ndim != 1 or array.size == 0:
+        raise _core.InputError("speeds must be a sequence of entrainment speeds (m/s)")
+    return [float(v) for v in array]
+
+
+# The arguments of _core.lubricate from the keywords of lubricate and
+# stribeck (one list, so that both map them alike).
+def _arguments(surface, *, viscosity: float, entrainment_velocity: Velocity,
+              dx: Optional[float] = None, dy: Optional[float] = None, sliding_velocity: Optional[Velocity] = None,
+              separation: Optional[float] = None, force: Optional[float] = None, inlet_pressure: float = 0.0,
+              outlet_pressure: float = 0.0, side_pressure: float = 0.0, periodic_x: bool = False,
+              periodic_y: bool = False, supply_fluid_fraction: float = 1.0, tol: Optional[float] = None,
+              max_iter: Optional[int] = None, e_star: Optional[float] = None, E1: Optional[float] = None,
+              nu1: Optional[float] = None, E2: Optional[float] = None, nu2: Optional[float] = None,
+              coating: Optional[Mapping[str, float]] = None, boundary: str = "free",
+              pressure_viscosity: Optional[float] = None, piezoviscosity: Optional[str] = None,
+              roelands_index: Optional[float] = None, compressibility: Optional[str] = None,
+              couette_scheme: Optional[str] = None, eyring_stress: Optional[float] = None,
+              limiting_shear_stress: Optional[float] = None,
+              limiting_shear_slope: Optional[float] = None, mixed: bool = False, offset: Optional[float] = None,
+              contact_friction: Optional[float] = None, boundary_film: Optional[float] = None,
+              threads: Optional[int] = None, speeds=None) -> tuple:
+    height_map = _surface(surface, dx, dy)
+    elastic_given = any(value is not None for value in (e_star, E1, nu1, E2, nu2, coating))
+    layers = _coating(coating, e_star, E1, nu1, E2, nu2)
+    modulus = None
+    if elastic_given and layers is None:
+        modulus = _material(e_star, E1, nu1, E2, nu2)
+    if entrainment_velocity is None:
+        raise _core.InputError("entrainment_velocity= is needed: UX or (UX, UY) in m/s")
+    limits = {"eyring_stress": eyring_stress, "limiting_shear_stress": limiting_shear_stress,
+              "limiting_shear_slope": limiting_shear_slope}
+    limit_values = [0.0 if value is None else _optional_float(value, name) for name, value in limits.items()]
+    return (
+        height_map.heights, height_map.dx, height_map.dy or 0.0, float(viscosity),
+        _velocity(entrainment_velocity, "entrainment_velocity"), _velocity(sliding_velocity, "sliding_velocity"),
+        _optional_float(separation, "separation"), _optional_float(force, "force"), float(inlet_pressure),
+        float(outlet_pressure), float(side_pressure), bool(periodic_x), bool(periodic_y),
+        float(supply_fluid_fraction), _optional_float(tol, "tol"), None if max_iter is None else int(max_iter),
+        modulus, layers, boundary, _optional_float(pressure_viscosity, "pressure_viscosity"), piezoviscosity,
+        _optional_float(roelands_index, "roelands_index"), compressibility, couette_scheme, *limit_values,
+        bool(mixed), _optional_float(offset, "offset"), _optional_float(contact_friction, "contact_friction"),
+        _optional_float(boundary_film, "boundary_film"), _speeds(speeds), None if threads is None else int(threads))
+
+
 def lubricate(surface: Union[HeightMap, np.ndarray], *, viscosity: float, entrainment_velocity: Velocity,
               dx: Optional[float] = None, dy: Optional[float] = None, sliding_velocity: Optional[Velocity] = None,
               separation: Optional[float] = None, force: Optional[float] = None, inlet_pressure: float = 0.0,
@@ -125,7 +259,9 @@ def lubricate(surface: Union[HeightMap, np.ndarray], *, viscosity: float, entrai
               roelands_index: Optional[float] = None, compressibility: Optional[str] = None,
               couette_scheme: Optional[str] = None, eyring_stress: Optional[float] = None,
               limiting_shear_stress: Optional[float] = None,
-              limiting_shear_slope: Optional[float] = None) -> Film:
+              limiting_shear_slope: Optional[float] = None, mixed: bool = False, offset: Optional[float] = None,
+              contact_friction: Optional[float] = None, boundary_film: Optional[float] = None,
+              threads: Optional[int] = None) -> Film:
     """Solves the Reynolds film between a surface and a flat, as ``halfspace lubricate``.
 
     surface: a HeightMap, or a 1D/2D array of heights (m, ``(ny, nx)``) with
@@ -160,27 +296,53 @@ def lubricate(surface: Union[HeightMap, np.ndarray], *, viscosity: float, entrai
         tau0 asinh(tau_N / tau0) (Eyring) and/or at most tau_L0 + gamma p;
         the pressure and film stay the Newtonian solution.
 
+    mixed: the elastic film may close (``--mixed``; a homogeneous body,
+        e_star or E1, nu1, E2, nu2; profiles of at most 2048 points): where
+        the gap would be negative the asperities carry a contact pressure
+        beside the fluid's. Its load is force= or, separation controlled,
+        offset= (h0 of h = h0 + gap + K p, m); contact_friction (Coulomb mu
+        on contact cells; None: 0.1), boundary_film (the thinnest film the
+        Reynolds equation sees, m; None: 1e-9); tol, max_iter (None: 1e-8,
+        200 Newton steps). A rough line contact is the smooth profile's
+        heights plus the roughness's (as ``--roughness`` adds them).
+    threads: threads of an elastic or mixed film's solve (None: the CPUs
+        this process may use, as the program). Process-wide, as in
+        :func:`solve`.
+
     Returns a :class:`Film`. Non-convergence is not an exception (see
     ``Film.converged`` and ``.message``); bad options raise InputError naming
     the keyword, its value and the rule. The GIL is released while solving.
     """
-    height_map = _surface(surface, dx, dy)
-    elastic_given = any(value is not None for value in (e_star, E1, nu1, E2, nu2, coating))
-    layers = _coating(coating, e_star, E1, nu1, E2, nu2)
-    modulus = None
-    if elastic_given and layers is None:
-        modulus = _material(e_star, E1, nu1, E2, nu2)
-    if entrainment_velocity is None:
-        raise _core.InputError("entrainment_velocity= is needed: UX or (UX, UY) in m/s")
-    limits = {"eyring_stress": eyring_stress, "limiting_shear_stress": limiting_shear_stress,
-              "limiting_shear_slope": limiting_shear_slope}
-    limit_values = [0.0 if value is None else _optional_float(value, name) for name, value in limits.items()]
-    values = _core.lubricate(
-        height_map.heights, height_map.dx, height_map.dy or 0.0, float(viscosity),
-        _velocity(entrainment_velocity, "entrainment_velocity"), _velocity(sliding_velocity, "sliding_velocity"),
-        _optional_float(separation, "separation"), _optional_float(force, "force"), float(inlet_pressure),
-        float(outlet_pressure), float(side_pressure), bool(periodic_x), bool(periodic_y),
-        float(supply_fluid_fraction), _optional_float(tol, "tol"), None if max_iter is None else int(max_iter),
-        modulus, layers, boundary, _optional_float(pressure_viscosity, "pressure_viscosity"), piezoviscosity,
-        _optional_float(roelands_index, "roelands_index"), compressibility, couette_scheme, *limit_values)
-    return Film(values)
+    return Film(_core.lubricate(*_arguments(surface, speeds=None, viscosity=viscosity,
+        entrainment_velocity=entrainment_velocity, dx=dx, dy=dy, sliding_velocity=sliding_velocity,
+        separation=separation, force=force, inlet_pressure=inlet_pressure, outlet_pressure=outlet_pressure,
+        side_pressure=side_pressure, periodic_x=periodic_x, periodic_y=periodic_y,
+        supply_fluid_fraction=supply_fluid_fraction, tol=tol, max_iter=max_iter, e_star=e_star, E1=E1, nu1=nu1,
+        E2=E2, nu2=nu2, coating=coating, boundary=boundary, pressure_viscosity=pressure_viscosity,
+        piezoviscosity=piezoviscosity, roelands_index=roelands_index, compressibility=compressibility,
+        couette_scheme=couette_scheme, eyring_stress=eyring_stress, limiting_shear_stress=limiting_shear_stress,
+        limiting_shear_slope=limiting_shear_slope, mixed=mixed, offset=offset, contact_friction=contact_friction,
+        boundary_film=boundary_film, threads=threads)))
+
+
+def stribeck(surface: Union[HeightMap, np.ndarray], speeds: Sequence[float], **keywords: Any) -> StribeckCurve:
+    """The mixed film's Stribeck curve, as ``halfspace lubricate --mixed
+    --speeds U1,U2,... --stribeck FILE.csv``.
+
+    speeds: entrainment speeds (m/s, > 0), solved in the given order, each
+        film starting from the previous one (a sweep from fast to slow
+        follows the film into contact). The velocities are those of
+        entrainment_velocity and sliding_velocity scaled to each speed
+        (their directions and the slide-to-roll ratio kept).
+    keywords: those of :func:`lubricate` for a mixed film (mixed=True is
+        implied; load controlled: force=).
+
+    Returns a :class:`StribeckCurve`. Bad keywords raise InputError (a value)
+    or TypeError (an unknown keyword), naming it."""
+    if "mixed" in keywords:
+        raise TypeError("stribeck() takes no keyword 'mixed': the Stribeck curve is the mixed film's")
+    try:
+        arguments = _arguments(surface, speeds=speeds, mixed=True, **keywords)
+    except TypeError as error:
+        raise TypeError(str(error).replace("_arguments()", "stribeck()")) from None
+    return StribeckCurve(_core.lubricate(*arguments))

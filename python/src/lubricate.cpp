@@ -3,7 +3,9 @@
 // LubricantLaws, ElasticFilmOptions, ShearLimits), whose validate() holds
 // the rules; a broken rule (OptionError) is restated with the keyword it
 // came from. The film is solved as `halfspace lubricate` solves it, with the
-// GIL released, and handed back as numpy arrays and numbers.
+// GIL released, and handed back as numpy arrays and numbers. With mixed=
+// the film may close (mixed_film.hpp, `halfspace lubricate --mixed`); with
+// speeds= it is a Stribeck sweep (a list of films, as --speeds).
 #include <fmt/format.h>
 #include <nanobind/stl/optional.h>
 #include <nanobind/stl/string.h>
@@ -21,8 +23,10 @@
 #include "halfspace/lubrication/elastic_film.hpp"
 #include "halfspace/lubrication/film_shear.hpp"
 #include "halfspace/lubrication/load_control.hpp"
+#include "halfspace/lubrication/mixed_film.hpp"
 #include "halfspace/material.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
+#include "halfspace/threads.hpp"
 
 namespace halfspace::python {
 namespace {
@@ -40,7 +44,7 @@ std::string keyword_for(const std::string& option) {
   if (option == "tolerance") return "tol";
   if (option == "max_iterations") return "max_iter";
   if (option == "load") return "force";
-  return option;  // viscosity, separation, pressure_viscosity, roelands_index, eyring_stress, ...
+  return option;  // viscosity, separation, offset, boundary_film, contact_friction, speeds, pressure_viscosity, ...
 }
 
 // Runs `work`, restating an OptionError as "keyword=value rule".
@@ -77,6 +81,12 @@ struct Keywords {
   std::optional<std::string> compressibility;
   std::optional<std::string> couette_scheme;
   ShearLimits limits;
+  // Mixed film: the film may close; offset (separation control) instead of
+  // force; a Stribeck sweep over speeds.
+  bool mixed = false;
+  std::optional<double> offset, contact_friction, boundary_film;
+  std::optional<std::vector<double>> speeds;
+  std::optional<int> threads;  // None: default_threads(), as the program
 };
 
 std::array<double, 2> velocity(const std::vector<double>& given, const char* keyword) {
@@ -237,7 +247,116 @@ nb::dict solve_elastic(const Grid& grid, const Eigen::ArrayXd& heights, const Fl
   return out;
 }
 
-nb::dict lubricate(const nb::object& heights_object, double dx, double dy, const Keywords& k) {
+// A mixed film's numbers and fields, as `halfspace lubricate --mixed` writes
+// them (its summary and write_mixed_fields).
+nb::dict mixed_dict(const Grid& grid, MixedFilm film, const MixedFilmOptions& options, const LubricantLaws& laws,
+                    double viscosity, double e_star, long long film_solves) {
+  nb::dict out;
+  out["model"] = "mixed";
+  out["status"] = std::string(to_string(film.status));
+  out["message"] = film.message;
+  out["converged"] = film.converged();
+  out["load"] = film.load;
+  out["mean_pressure"] = film.load / grid.domain_area();
+  out["separation"] = film.offset;
+  out["central_film_thickness"] = film.central_film_thickness;
+  out["minimum_film_thickness"] = film.minimum_film_thickness;
+  out["max_pressure"] = film.max_pressure;
+  out["cavitated_fraction"] = film.cavitated_fraction;
+  out["iterations"] = film.iterations;
+  out["film_solves"] = film_solves;
+  out["relative_residual"] = film.relative_residual;
+  out["solve_seconds"] = film.wall_seconds;
+  out["inflow"] = nb::none();
+  out["outflow"] = nb::none();
+  out["load_error"] = film.load_error;
+  out["e_star"] = e_star;
+  out["piezoviscosity"] = std::string(to_string(laws.piezoviscosity));
+  out["roelands_index"] = laws.piezoviscosity == Piezoviscosity::roelands ? laws.roelands_exponent(viscosity) : 0.0;
+  out["compressibility"] = std::string(to_string(laws.compressibility));
+  out["couette_scheme"] = std::string(to_string(options.couette_scheme));
+  out["entrainment_speed"] = film.entrainment_speed;
+  out["fluid_load"] = film.fluid_load;
+  out["contact_load"] = film.contact_load;
+  out["contact_load_fraction"] = film.contact_load_fraction;
+  out["contact_area"] = film.contact_area;
+  out["contact_area_fraction"] = film.contact_area_fraction;
+  out["complementarity_error"] = film.complementarity_error;
+  out["contact_friction"] = options.friction.contact_friction;
+  out["boundary_film"] = options.boundary_film;
+  out["fluid_friction_force"] = nb::make_tuple(film.fluid_friction_force[0], film.fluid_friction_force[1]);
+  out["contact_friction_force"] = nb::make_tuple(film.contact_friction_force[0], film.contact_friction_force[1]);
+  out["friction_force"] = nb::make_tuple(film.fluid_friction_force[0] + film.contact_friction_force[0],
+                                         film.fluid_friction_force[1] + film.contact_friction_force[1]);
+  out["friction_coefficient"] = film.friction_coefficient;
+  // The film's shear fields are the rigid and EHL films' (film_shear.hpp);
+  // the mixed film reports its friction as forces only.
+  out["shear_x"] = nb::none();
+  out["shear_y"] = nb::none();
+  out["couette_friction_force"] = nb::none();
+  out["limited_fraction"] = nb::none();
+  const std::vector<std::size_t> shape = shape_of(grid);
+  out["fluid_pressure"] = owning_array(std::move(film.fluid_pressure), shape);
+  out["contact_pressure"] = owning_array(std::move(film.contact_pressure), shape);
+  out["pressure"] = owning_array(std::move(film.pressure), shape);
+  out["film"] = owning_array(std::move(film.film), shape);
+  out["fluid_fraction"] = owning_array(std::move(film.fluid_fraction), shape);
+  out["deformation"] = owning_array(std::move(film.deformation), shape);
+  return out;
+}
+
+// The mixed film (one dict), or with speeds= the Stribeck sweep (a list of
+// dicts, each with its speed and Hersey number), as run_mixed in
+// apps/lubricate_command.cpp.
+nb::object solve_mixed(const Grid& grid, const Eigen::ArrayXd& heights, const FlowConditions& conditions,
+                       const Keywords& k, double e_star) {
+  if (k.separation) {
+    throw InputError("separation= is the rigid film's: the mixed film takes force= (N/m) or offset= (m)");
+  }
+  if (k.speeds && !k.force) throw InputError("a Stribeck sweep (speeds=) is load controlled: pass force=");
+  const LubricantLaws laws = lubricant_laws(k);
+  MixedFilmOptions options;
+  options.load = k.force.value_or(0.0);
+  options.offset = k.offset.value_or(0.0);
+  if (k.boundary_film) options.boundary_film = *k.boundary_film;
+  if (k.tol) options.tolerance = *k.tol;
+  if (k.max_iter) options.max_iterations = *k.max_iter;
+  if (k.couette_scheme) options.couette_scheme = named("couette_scheme", *k.couette_scheme, parse_couette_scheme);
+  if (k.contact_friction) options.friction.contact_friction = *k.contact_friction;
+  options.friction.shear = k.limits;
+  with_keywords([&] {
+    laws.validate(conditions.viscosity);
+    options.validate();
+  });
+  if (grid.size() > kMaxMixedFilmNodes) {
+    throw InputError(
+        fmt::format("the surface has {} points: the mixed film's dense Newton path allows at most {} (coarsen it)",
+                    grid.size(), kMaxMixedFilmNodes));
+  }
+  const Eigen::ArrayXd gap = heights.maxCoeff() - heights;
+  FftInfluenceOperator op(grid, e_star);
+  if (!k.speeds) {
+    MixedFilm film = with_keywords([&] {
+      nb::gil_scoped_release release;
+      return solve_mixed_film(op, gap, conditions, laws, options);
+    });
+    return mixed_dict(grid, std::move(film), options, laws, conditions.viscosity, e_star, 1);
+  }
+  std::vector<StribeckPoint> points = with_keywords([&] {
+    nb::gil_scoped_release release;
+    return stribeck_sweep(op, gap, conditions, laws, options, *k.speeds);
+  });
+  nb::list curve;
+  for (StribeckPoint& point : points) {
+    nb::dict film = mixed_dict(grid, std::move(point.film), options, laws, conditions.viscosity, e_star, 1);
+    film["hersey_number"] = point.hersey_number;
+    film["entrainment_speed"] = point.entrainment_speed;
+    curve.append(film);
+  }
+  return curve;
+}
+
+nb::object lubricate(const nb::object& heights_object, double dx, double dy, const Keywords& k) {
   const auto heights = nb::cast<InputArray>(heights_object, false);
   if (heights.ndim() != 1 && heights.ndim() != 2) {
     throw InputError(fmt::format("the surface must be a 1D or 2D array, got {} dimensions", heights.ndim()));
@@ -247,8 +366,17 @@ nb::dict lubricate(const nb::object& heights_object, double dx, double dy, const
     throw InputError(
         "the surface has non-finite heights: a film needs every height (HeightMap.prepare(invalid='fill'))");
   }
-  if (k.separation.has_value() == k.force.has_value()) throw InputError("give exactly one of separation= and force=");
+  if (k.separation.has_value() + k.force.has_value() + k.offset.has_value() != 1) {
+    throw InputError(k.mixed ? "give exactly one of force= and offset=" : "give exactly one of separation= and force=");
+  }
+  if (!k.mixed && (k.offset || k.contact_friction || k.boundary_film || k.speeds)) {
+    throw InputError("offset, contact_friction, boundary_film and speeds belong to the mixed film: add mixed=True");
+  }
   const bool elastic = k.e_star.has_value() || k.coating.has_value();
+  if (k.mixed && !elastic) throw InputError("mixed=True needs an elastic body: give e_star (or E1, nu1, E2, nu2)");
+  if (k.mixed && k.coating) {
+    throw InputError("mixed=True takes a homogeneous body: a coating is not supported by the mixed film yet");
+  }
   if (!elastic && (k.pressure_viscosity || k.piezoviscosity || k.roelands_index || k.compressibility ||
                    k.couette_scheme || k.boundary != "free")) {
     throw InputError(
@@ -277,6 +405,15 @@ nb::dict lubricate(const nb::object& heights_object, double dx, double dy, const
   conditions.boundary.supply_fluid_fraction = k.supply_fluid_fraction;
   with_keywords([&] { conditions.validate(grid); });
   if (!elastic) return solve_rigid(grid, z, conditions, k);
+  // The elastic films' FFT plans take the threads in force (process-wide; a
+  // solve(threads=) before may have changed them): the program's unless
+  // threads= says otherwise, so that the rounding is the program's too.
+  try {
+    set_threads(k.threads.value_or(default_threads()));
+  } catch (const InputError& error) {
+    throw InputError(fmt::format("threads={}: {}", k.threads.value_or(0), error.what()));
+  }
+  if (k.mixed) return solve_mixed(grid, z, conditions, k, checked_composite_modulus(*k.e_star));
 
   std::optional<LayeredMaterial> coating;
   double e_star = 0.0;
@@ -311,7 +448,8 @@ void bind_lubricate(nb::module_& module) {
          std::optional<double> pressure_viscosity, std::optional<std::string> piezoviscosity,
          std::optional<double> roelands_index, std::optional<std::string> compressibility,
          std::optional<std::string> couette_scheme, double eyring_stress, double limiting_shear_stress,
-         double limiting_shear_slope) {
+         double limiting_shear_slope, bool mixed, std::optional<double> offset, std::optional<double> contact_friction,
+         std::optional<double> boundary_film, std::optional<std::vector<double>> speeds, std::optional<int> threads) {
         Keywords k;
         k.viscosity = viscosity;
         k.entrainment_velocity = entrainment;
@@ -335,6 +473,12 @@ void bind_lubricate(nb::module_& module) {
         k.compressibility = std::move(compressibility);
         k.couette_scheme = std::move(couette_scheme);
         k.limits = {eyring_stress, limiting_shear_stress, limiting_shear_slope};
+        k.mixed = mixed;
+        k.offset = offset;
+        k.contact_friction = contact_friction;
+        k.boundary_film = boundary_film;
+        k.speeds = std::move(speeds);
+        k.threads = threads;
         return lubricate(heights, dx, dy, k);
       },
       nb::arg("heights"), nb::arg("dx"), nb::arg("dy"), nb::arg("viscosity"), nb::arg("entrainment_velocity"),
@@ -344,7 +488,8 @@ void bind_lubricate(nb::module_& module) {
       nb::arg("coating").none(), nb::arg("boundary"), nb::arg("pressure_viscosity").none(),
       nb::arg("piezoviscosity").none(), nb::arg("roelands_index").none(), nb::arg("compressibility").none(),
       nb::arg("couette_scheme").none(), nb::arg("eyring_stress"), nb::arg("limiting_shear_stress"),
-      nb::arg("limiting_shear_slope"));
+      nb::arg("limiting_shear_slope"), nb::arg("mixed"), nb::arg("offset").none(), nb::arg("contact_friction").none(),
+      nb::arg("boundary_film").none(), nb::arg("speeds").none(), nb::arg("threads").none());
 }
 
 }  // namespace halfspace::python

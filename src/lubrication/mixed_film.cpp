@@ -40,25 +40,26 @@ void MixedFrictionOptions::validate() const {
 }
 
 void MixedFilmOptions::validate() const {
+  // OptionError: the front ends restate the option as their flag or keyword.
   if (!(std::isfinite(load) && load >= 0.0)) {
-    throw InputError(fmt::format(
-        "mixed film load = {} is invalid: it must be positive and finite (or 0 for separation control)", load));
+    throw OptionError("load", format_number(load),
+                      "is invalid: it must be positive and finite (or 0 for separation control)");
   }
-  if (!std::isfinite(offset)) throw InputError(fmt::format("mixed film offset = {} is invalid: not finite", offset));
+  if (!std::isfinite(offset)) throw OptionError("offset", format_number(offset) + " m", "is invalid: not finite");
   if (!(std::isfinite(boundary_film) && boundary_film > 0.0)) {
-    throw InputError(
-        fmt::format("boundary film = {} m is invalid: it must be positive and finite (e.g. 1e-9)", boundary_film));
+    throw OptionError("boundary_film", format_number(boundary_film) + " m",
+                      "is invalid: it must be positive and finite (e.g. 1e-9)");
   }
   const auto fraction = [](double value, const char* name) {
     if (!(value > 0.0 && value < 1.0)) {
-      throw InputError(fmt::format("mixed film {} = {} is invalid: allowed range is 0 < tolerance < 1", name, value));
+      throw OptionError(name, format_number(value), "is invalid: allowed range is 0 < tolerance < 1");
     }
   };
   fraction(tolerance, "tolerance");
-  fraction(load_tolerance, "load tolerance");
-  fraction(contact_tolerance, "contact tolerance");
+  fraction(load_tolerance, "load_tolerance");
+  fraction(contact_tolerance, "contact_tolerance");
   if (max_iterations < 1) {
-    throw InputError(fmt::format("mixed film max iterations = {} is invalid: at least 1 Newton step", max_iterations));
+    throw OptionError("max_iterations", std::to_string(max_iterations), "is invalid: at least 1 Newton step");
   }
   friction.validate();
 }

@@ -20,7 +20,7 @@ std::vector<StribeckPoint> stribeck_sweep(InfluenceOperator& op, const Eigen::Ar
   if (speeds.empty()) throw InputError("a Stribeck sweep needs at least one speed");
   for (const double s : speeds) {
     if (!(std::isfinite(s) && s > 0.0)) {
-      throw InputError(fmt::format("Stribeck speed {} m/s is invalid: speeds must be positive and finite", s));
+      throw OptionError("speeds", format_number(s) + " m/s", "is invalid: speeds must be positive and finite");
     }
   }
   const Grid& grid = op.grid();

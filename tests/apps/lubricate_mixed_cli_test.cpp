@@ -168,9 +168,10 @@ TEST(LubricateMixedCliTest, RejectsBadMixedInputNamingTheOption) {
     return run_program(mixed_run(more), dir.path());
   };
   expect_input_error(with({"--contact-friction", "-1"}), {"--contact-friction -1 is invalid"}, dir / "f.h5");
-  expect_input_error(with({"--boundary-film", "0"}), {"boundary film = 0"}, dir / "f.h5");
+  expect_input_error(with({"--boundary-film", "0"}), {"--boundary-film 0 m is invalid"}, dir / "f.h5");
   expect_input_error(with({"--speeds", "1,0.1"}), {"--speeds and --stribeck"}, dir / "f.h5");
-  expect_input_error(with({"--speeds", "1,-0.1", "--stribeck", "s.csv"}), {"Stribeck speed -0.1"}, dir / "f.h5");
+  expect_input_error(with({"--speeds", "1,-0.1", "--stribeck", "s.csv"}), {"--speeds -0.1 m/s is invalid"},
+                     dir / "f.h5");
   const std::vector<std::string> rigid{
       "lubricate", "--height-map", "cylinder.h5", "--viscosity", "0.04", "--entrainment-velocity",
       "1",         "--force",      "1e3",         "--output",    "f.h5"};

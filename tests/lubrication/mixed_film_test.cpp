@@ -249,7 +249,7 @@ TEST(MixedFilmTest, RefusesInvalidOptionsNamingThem) {
   };
   MixedFilmOptions options = mixed_options();
   options.boundary_film = 0.0;
-  EXPECT_NE(message(options).find("boundary film"), std::string::npos);
+  EXPECT_NE(message(options).find("boundary_film = 0 m"), std::string::npos);
   options = mixed_options();
   options.friction.contact_friction = -0.1;
   EXPECT_NE(message(options).find("contact_friction"), std::string::npos);
@@ -261,7 +261,7 @@ TEST(MixedFilmTest, RefusesInvalidOptionsNamingThem) {
   EXPECT_NE(message(options).find("load"), std::string::npos);
   options = mixed_options();
   options.contact_tolerance = 2.0;
-  EXPECT_NE(message(options).find("contact tolerance"), std::string::npos);
+  EXPECT_NE(message(options).find("contact_tolerance = 2"), std::string::npos);
   EXPECT_NE(message(mixed_options(), flow(0.0)).find("entrainment velocity is zero"), std::string::npos);
   // Beyond the dense path's node limit.
   const Grid big = Grid::line(kMaxMixedFilmNodes + 1, 1e-6, Boundary::free);
