@@ -22,7 +22,6 @@
 #include "halfspace/solvers/surface_solve.hpp"
 #include "halfspace/threads.hpp"
 #include "plot_tool.hpp"
-#include "processes.hpp"
 #include "progress.hpp"
 #include "summary.hpp"
 #include "sweep_command.hpp"
@@ -81,7 +80,7 @@ int run_frictional_solve(const SolveSetup& setup, const FrictionPlace& place) {
   // The first process plots (from the file, once written); every process
   // learns whether the tool is there before the solve.
   std::optional<PlotTool> plot;
-  agree_everywhere([&] {
+  place.agree([&] {
     if (setup.plot && place.first) plot = find_plot_tool({"--plot", "drop --plot", {}});
   });
   const std::span<const double> heights = place.heights;
@@ -184,7 +183,7 @@ int run_frictional_solve(const SolveSetup& setup, const FrictionPlace& place) {
       }
     }
   }
-  plotted = first_process_value(plotted ? 1 : 0) != 0;
+  plotted = place.first_value(plotted ? 1 : 0) != 0;
   if (!result.converged()) {
     if (place.first) {
       fmt::print(stderr, "error: {}; the result is written to {} with the steps solved\n", result.failure(),

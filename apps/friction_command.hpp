@@ -29,6 +29,11 @@ struct FrictionPlace {
   std::function<void(const SolveResult& normal, std::span<const TangentialResult> steps,
                      std::span<const TangentialLoading> loads, const io::ResultMetadata& metadata)>
       write_history;
+  // Runs a step everywhere, every process learning of a failure on any;
+  // the first process's value on every process (one process: the step, the
+  // value).
+  std::function<void(const std::function<void()>& step)> agree = [](const std::function<void()>& step) { step(); };
+  std::function<int(int value)> first_value = [](int value) { return value; };
 };
 
 // Runs the frictional solve of `setup` (setup.friction and setup.pair set)

@@ -35,10 +35,6 @@ std::optional<int> run_distributed_solve(const SolveSetup& setup) {
 void agree_everywhere(const std::function<void()>& step) {
   run_agreed_everywhere(step);
 }
-int first_process_value(int value) {
-  mpi::check(MPI_Bcast(&value, 1, MPI_INT, 0, mpi_world().get()), "MPI_Bcast");
-  return value;
-}
 surface::SurfaceStatistics generate_distributed(const Grid& grid, const surface::SelfAffineSpec& spec,
                                                 io::HeightMapMetadata& metadata, const std::filesystem::path& output) {
   return generate_on_slabs(grid, spec, metadata, output);
@@ -63,9 +59,6 @@ std::optional<int> run_distributed_solve(const SolveSetup& /*setup*/) {
 }
 void agree_everywhere(const std::function<void()>& step) {
   step();
-}
-int first_process_value(int value) {
-  return value;
 }
 surface::SurfaceStatistics generate_distributed(const Grid& /*grid*/, const surface::SelfAffineSpec& /*spec*/,
                                                 io::HeightMapMetadata& /*metadata*/,

@@ -55,8 +55,6 @@ std::optional<int> run_distributed_solve(const SolveSetup& setup);
 // Runs `step` on every process; if it failed on any, throws on all the
 // error of the first process that failed (the serial build: step()).
 void agree_everywhere(const std::function<void()>& step);
-// The first process's `value`, on every process (the serial build: value).
-int first_process_value(int value);
 
 // On several MPI processes: the self-affine surface of `spec` on the 2D
 // `grid`, each process its rows, written into `output` by all at once

@@ -40,6 +40,10 @@ int run_solve(const SolveSetup& setup) {
   // Several MPI processes, or one MPI process and a solve it distributes
   // (friction too, on several).
   if (const std::optional<int> code = run_distributed_solve(setup)) return *code;
+  return run_solve_here(setup);
+}
+
+int run_solve_here(const SolveSetup& setup) {
   if (setup.friction) return run_frictional_solve(setup);
   const std::string on_grid =
       fmt::format("{} on the {} grid", solvers::to_string(setup.solver.type), setup.grid.shape_string());

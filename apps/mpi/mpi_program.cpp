@@ -132,6 +132,11 @@ int run_friction_on_slabs(const SolveSetup& setup, std::span<const double> heigh
   place.write_result = [&](const SolveResult& normal, const io::ResultMetadata& metadata) {
     mpi::write_result_slabs(world, setup.output, setup.grid, slab, heights, normal, metadata);
   };
+  place.agree = [&](const std::function<void()>& step) { mpi::run_agreed(world, step); };
+  place.first_value = [&](int value) {
+    mpi::check(MPI_Bcast(&value, 1, MPI_INT, 0, world.get()), "MPI_Bcast");
+    return value;
+  };
   place.write_history = [&](const SolveResult& normal, std::span<const TangentialResult> steps,
                             std::span<const TangentialLoading> loads, const io::ResultMetadata& metadata) {
     mpi::write_friction_history_slabs(world, setup.output, setup.grid, slab, heights, normal, steps, loads, metadata);
@@ -303,6 +308,18 @@ std::optional<int> run_solve_on_slabs(const SolveSetup& setup) {
   const mpi::DistributedLayout layout(world);
   const std::optional<std::string> unsupported = unsupported_by_program(setup);
   const bool root = world.rank() == 0;
+  if (setup.grid.dimension() == 1 && world.size() > 1) {
+    // A 1D grid is one row, which slabs of rows cannot split (and at most a
+    // few million cells, which one process solves): the first process,
+    // which holds the surface, runs the serial program (stresses, coatings
+    // and plots included) while the others wait for its exit code.
+    int code = kExitOk;
+    mpi::run_agreed(world, [&] {
+      if (root) code = run_solve_here(setup);
+    });
+    mpi::check(MPI_Bcast(&code, 1, MPI_INT, 0, world.get()), "MPI_Bcast");
+    return code;
+  }
   // One process solves friction serially (with stresses and plots).
   if (world.size() == 1 &&
       (setup.friction || unsupported || !layout.takes(setup.grid, half_space(setup), setup.solver))) {

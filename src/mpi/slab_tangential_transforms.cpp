@@ -137,8 +137,8 @@ std::unique_ptr<operators::TangentialTransforms> make_slab_tangential_transforms
                                                                                  const MpiCommunicator& comm,
                                                                                  FftPlanning planning) {
   if (grid.dimension() != 2) {
-    throw InputError(fmt::format("the distributed tangential operator needs a 2D grid, not a {}D one",
-                                 grid.dimension()));
+    throw InputError(
+        fmt::format("the distributed tangential operator needs a 2D grid, not a {}D one", grid.dimension()));
   }
   if (grid.periodic()) return std::make_unique<PeriodicSlabTransforms>(grid, comm, planning);
   return std::make_unique<FreeSlabTransforms>(grid, comm, planning);

@@ -4,7 +4,8 @@
 usage: distributed_friction_test.py MPI_PROGRAM SERIAL_PROGRAM MPIEXEC SOURCE_DIR WORK_DIR
 
 `mpiexec -np 1, 2 and 3 MPI_PROGRAM solve --friction ...` (3 gives uneven
-slabs) on a sphere with a ripple, periodic and free grids: a single step
+slabs) on a sphere with a ripple, periodic and free grids (and a cylinder
+on a 1D grid, which the first process solves alone): a single step
 under a tangential force, a fretting history under force and one under
 displacement, gross sliding, and elastically dissimilar bodies (the coupled
 normal-tangential alternation), must write the serial program's files: the
@@ -180,6 +181,11 @@ for boundary in ("periodic", "free"):
                                                                   "--normal-load-steps", "2"], fields + history)
     friction_case(f"{boundary}-dissimilar-single", sphere + dissimilar + ["--tangential-force", "0.9"], fields)
 
+# A 1D grid: solved by the first process as the serial program does.
+friction_case("line-fretting", ["--geometry", "cylinder", "--radius", "0.01", "--grid", "128", "--size", "1e-3",
+                                "--force", "1e3", "--friction", "0.3", "--tangential-force", "100;200;-100",
+                                "--threads", "1", "--quiet", "--fft-planning", "estimate"] + steel, fields)
+
 # --plot on several processes: the first process runs the plotting tool on
 # the written file, once per figure, as the serial program does. A stand-in
 # interpreter (HALFSPACE_PYTHON) records each run (and passes the package
@@ -232,9 +238,6 @@ plot_case("failing-tool", plain + ["--force", "5"], tool_fails=True)
 base = ["--geometry", "sphere", "--radius", "0.01", "--force", "5", "--friction", "0.3",
         "--tangential-force", "0.6", "--threads", "1", "--quiet"] + steel
 refused = os.path.join(work_dir, "refused.h5")
-harness.refusal_case("friction on a 1D grid", 2,
-                     ["--geometry", "cylinder"] + base[2:] + ["--grid", "64", "--size", "4e-4"],
-                     "only 2D grids are distributed", refused)
 harness.refusal_case("friction with lemke", 2, base + ["--grid", "16x16", "--size", "4e-4x4e-4", "--solver", "lemke"],
                      "lemke is not available with more than one process", refused)
 

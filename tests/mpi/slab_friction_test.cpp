@@ -65,9 +65,9 @@ void expect_value(const std::string& where, const std::string& what, double got,
 }
 
 void check(const Grid& grid, const ElasticPair& pair, bool sliding, const mpi::MpiCommunicator& comm) {
-  const std::string where = fmt::format("{} {} grid, beta = {:.3f}{}, {} processes", grid.shape_string(),
-                                        grid.periodic() ? "periodic" : "free", pair.dundurs_beta(),
-                                        sliding ? ", sliding" : "", comm.size());
+  const std::string where =
+      fmt::format("{} {} grid, beta = {:.3f}{}, {} processes", grid.shape_string(),
+                  grid.periodic() ? "periodic" : "free", pair.dundurs_beta(), sliding ? ", sliding" : "", comm.size());
   // A sphere with a ripple: contact patches that cross the slabs' edges.
   const double radius = 0.01;
   Eigen::ArrayXd heights(static_cast<Eigen::Index>(grid.size()));
@@ -101,8 +101,8 @@ void check(const Grid& grid, const ElasticPair& pair, bool sliding, const mpi::M
   const mpi::DistributedLayout layout(comm);
   const mpi::SlabLayout slab = mpi::slab_layout(grid.nx(), grid.ny(), comm);
   const std::size_t begin = slab.first_row * grid.nx();
-  const FrictionalSolveResult got = solvers::solve_frictional_surface(
-      grid, {heights.data() + begin, slab.local_size()}, pair, loading, normal, friction, layout);
+  const FrictionalSolveResult got = solvers::solve_frictional_surface(grid, {heights.data() + begin, slab.local_size()},
+                                                                      pair, loading, normal, friction, layout);
   if (!want.converged() || !got.converged() || got.steps.size() != want.steps.size()) {
     report(false, where, fmt::format("convergence (serial: {}; slabs: {})", want.failure(), got.failure()), 0.0,
            comm.rank());
@@ -125,8 +125,7 @@ void check(const Grid& grid, const ElasticPair& pair, bool sliding, const mpi::M
     expect_field(where, step + "tangential displacement y", g.state.displacement_y, w.state.displacement_y, begin,
                  comm);
     if (want.coupled) {
-      expect_field(where, step + "pressure", got.step_normals[k].pressure, want.step_normals[k].pressure, begin,
-                   comm);
+      expect_field(where, step + "pressure", got.step_normals[k].pressure, want.step_normals[k].pressure, begin, comm);
     }
     const double force = std::hypot(w.force_x, w.force_y);
     expect_value(where, step + "force x", g.force_x, w.force_x, force, comm);
