@@ -72,14 +72,19 @@ void print_friction_summary(std::FILE* out, const SolveSetup& setup, const Frict
 
 }  // namespace
 
-int run_frictional_solve(const SolveSetup& setup) {
+int run_frictional_solve(const SolveSetup& setup, const FrictionPlace& place) {
   const solvers::FrictionOptions& options = *setup.friction;
   const ElasticPair& pair = *setup.pair;
   // Threads first: the FFT plans use the thread count in force when made.
   set_threads(setup.threads);
-  const std::optional<PlotTool> plot =
-      setup.plot ? std::optional<PlotTool>(find_plot_tool({"--plot", "drop --plot", {}})) : std::nullopt;
-  const std::span<const double> heights(setup.heights.data(), static_cast<std::size_t>(setup.heights.size()));
+  // The first process plots (from the file, once written); every process
+  // learns whether the tool is there before the solve.
+  std::optional<PlotTool> plot;
+  place.agree([&] {
+    if (setup.plot && place.first) plot = find_plot_tool({"--plot", "drop --plot", {}});
+  });
+  const std::span<const double> heights = place.heights;
+  const bool prints = !setup.quiet && place.first;
 
   std::optional<Activity> activity(std::in_place,
                                    fmt::format("solving the normal contact ({} on the {} grid)",
@@ -94,20 +99,22 @@ int run_frictional_solve(const SolveSetup& setup) {
         fmt::format("solving the coupled normal and tangential contact (Dundurs' beta = {:.3g}, {} "
                     "step{}) on the {} grid",
                     pair.dundurs_beta(), options.steps(), options.steps() == 1 ? "" : "s", setup.grid.shape_string()));
-    result = solvers::solve_frictional_surface(setup.grid, heights, pair, setup.loading, setup.solver, options);
+    result = solvers::solve_frictional_surface(setup.grid, heights, pair, setup.loading, setup.solver, options,
+                                               place.layout);
     loads.assign(options.history.begin(), options.history.begin() + static_cast<std::ptrdiff_t>(std::min(
                                                                         options.history.size(), result.steps.size())));
   } else {
-    Progress progress(!setup.quiet, 1, setup.solver.solver_tolerance());
+    Progress progress(prints, 1, setup.solver.solver_tolerance());
     solvers::SolverOptions settings = setup.solver;
     settings.progress = progress.callback();
-    result.normal = solvers::solve_surface(setup.grid, heights, setup.e_star, setup.loading, settings);
+    result.normal =
+        solvers::solve_surface(setup.grid, heights, setup.e_star, setup.loading, settings, {}, place.layout);
   }
   if (result.normal.converged() && !options.coupled(pair)) {
     result.dundurs_beta = pair.dundurs_beta();
     activity.emplace(fmt::format("solving {} tangential step{} on the {} grid", options.steps(),
                                  options.steps() == 1 ? "" : "s", setup.grid.shape_string()));
-    Progress progress(!setup.quiet, options.steps(), options.tolerance);
+    Progress progress(prints, options.steps(), options.tolerance);
     solvers::FrictionOptions friction = options;
     std::size_t shown = options.steps();
     if (progress.active()) {
@@ -120,8 +127,8 @@ int run_frictional_solve(const SolveSetup& setup) {
         progress.iteration(iteration, residual);
       };
     }
-    result.steps =
-        solvers::solve_tangential_history(setup.grid, pair, result.normal, friction, setup.solver.fft_planning);
+    result.steps = solvers::solve_tangential_history(setup.grid, pair, result.normal, friction,
+                                                     setup.solver.fft_planning, place.layout);
     loads.assign(options.history.begin(), options.history.begin() + static_cast<std::ptrdiff_t>(std::min(
                                                                         options.history.size(), result.steps.size())));
   }
@@ -131,16 +138,16 @@ int run_frictional_solve(const SolveSetup& setup) {
   const bool history = options.steps() > 1 && !result.steps.empty();
   const SolveResult& normal =
       result.coupled && !history && !result.step_normals.empty() ? result.step_normals.front() : result.normal;
-  io::ResultMetadata metadata = io::result_metadata(provenance(setup), setup.grid, heights);
-  metadata.contact_statistics = analysis::contact_statistics(setup.grid, {normal.pressure.data(), setup.grid.size()},
-                                                             {normal.gap.data(), setup.grid.size()});
+  activity.emplace(fmt::format("computing the statistics of the {} grid", setup.grid.shape_string()));
+  io::ResultMetadata metadata = place.metadata();
+  metadata.contact_statistics = place.contact_statistics(normal);
   activity.emplace(fmt::format("writing {}", setup.output.string()));
   if (history) {
-    io::write_friction_history(setup.output, setup.grid, heights, result.normal, result.steps, loads, metadata);
+    place.write_history(result.normal, result.steps, loads, metadata);
   } else {
     if (!result.steps.empty()) metadata.tangential = &result.steps.front();
     // Subsurface stresses (--stress-depths) under the pressure and the step's
-    // shear, written while the result is.
+    // shear, written while the result is (one process: refused on several).
     std::unique_ptr<stress::SubsurfaceStress> stresses;
     if (!setup.stress_depths.empty() && !result.steps.empty()) {
       stresses = std::make_unique<stress::SubsurfaceStress>(setup.grid, setup.stress_nu, setup.solver.fft_planning);
@@ -155,10 +162,10 @@ int run_frictional_solve(const SolveSetup& setup) {
       activity.emplace(fmt::format("computing stresses at {} depths and writing {}", setup.stress_depths.size(),
                                    setup.output.string()));
     }
-    io::write_result(setup.output, setup.grid, heights, normal, metadata);
+    place.write_result(normal, metadata);
   }
   activity.reset();
-  if (!setup.quiet) {
+  if (prints) {
     print_summary(stdout, setup, normal);
     print_friction_summary(stdout, setup, result);
     if (history) fmt::print("history table:       {}\n", io::history_csv_path(setup.output).string());
@@ -176,12 +183,33 @@ int run_frictional_solve(const SolveSetup& setup) {
       }
     }
   }
+  plotted = place.first_value(plotted ? 1 : 0) != 0;
   if (!result.converged()) {
-    fmt::print(stderr, "error: {}; the result is written to {} with the steps solved\n", result.failure(),
-               setup.output.string());
+    if (place.first) {
+      fmt::print(stderr, "error: {}; the result is written to {} with the steps solved\n", result.failure(),
+                 setup.output.string());
+    }
     return kExitNotConverged;
   }
   return plotted ? kExitOk : kExitPlotFailed;
+}
+
+int run_frictional_solve(const SolveSetup& setup) {
+  const Grid& grid = setup.grid;
+  const std::span<const double> heights(setup.heights.data(), static_cast<std::size_t>(setup.heights.size()));
+  FrictionPlace place{solvers::serial_layout(), heights, true, {}, {}, {}, {}};
+  place.metadata = [&] { return io::result_metadata(provenance(setup), grid, heights); };
+  place.contact_statistics = [&](const SolveResult& normal) {
+    return analysis::contact_statistics(grid, {normal.pressure.data(), grid.size()}, {normal.gap.data(), grid.size()});
+  };
+  place.write_result = [&](const SolveResult& normal, const io::ResultMetadata& metadata) {
+    io::write_result(setup.output, grid, heights, normal, metadata);
+  };
+  place.write_history = [&](const SolveResult& normal, std::span<const TangentialResult> steps,
+                            std::span<const TangentialLoading> loads, const io::ResultMetadata& metadata) {
+    io::write_friction_history(setup.output, grid, heights, normal, steps, loads, metadata);
+  };
+  return run_frictional_solve(setup, place);
 }
 
 }  // namespace halfspace::app

@@ -72,9 +72,6 @@ void with_friction_flags(const SolveOptions& o, Function&& function) {
       throw InputError(fmt::format("the coated half-space (--layer-*, --substrate-*) {} ({})", error.rule(),
                                    o.describe("friction")));
     }
-    if (option == "processes") {
-      throw InputError(fmt::format("{} on {} MPI processes {}", o.describe("friction"), error.value(), error.rule()));
-    }
     throw InputError(fmt::format("{} {}", o.describe("friction"), error.rule()));
   }
 }
@@ -119,8 +116,8 @@ std::vector<solvers::TangentialLoading> parse_tangential_steps(std::string_view 
   return steps;
 }
 
-std::optional<solvers::FrictionOptions> friction_from(const SolveOptions& o, bool coated, std::size_t normal_load_steps,
-                                                      int processes) {
+std::optional<solvers::FrictionOptions> friction_from(const SolveOptions& o, bool coated,
+                                                      std::size_t normal_load_steps) {
   const std::vector<std::string_view> tangential = [&] {
     std::vector<std::string_view> keys;
     for (const auto& [key, given] :
@@ -198,7 +195,6 @@ std::optional<solvers::FrictionOptions> friction_from(const SolveOptions& o, boo
     friction.validate();
     if (coated) solvers::FrictionOptions::refuse_coating();
     if (o.e_star) solvers::FrictionOptions::refuse_composite_modulus_only();
-    solvers::FrictionOptions::refuse_processes(processes);
   });
   return friction;
 }

@@ -29,9 +29,10 @@ std::vector<solvers::TangentialLoading> parse_tangential_steps(std::string_view 
 // friction flag is refused). Checks what needs no surface: the flags given
 // together, the steps' syntax, FrictionOptions::validate(), and the
 // combinations the slice refuses (coating, E* alone, a load sweep, stress
-// depths, several processes, adhesion).
+// depths with a history, adhesion). On several processes the distributed
+// layout refuses what it cannot run (mpi/distributed_layout.hpp).
 std::optional<solvers::FrictionOptions> friction_from(const SolveOptions& options, bool coated,
-                                                      std::size_t normal_load_steps, int processes);
+                                                      std::size_t normal_load_steps);
 
 // The checks that need the grid, the pair of bodies (E1, nu1, E2, nu2,
 // checked by then) and the normal solve's settings

@@ -37,10 +37,14 @@ HalfSpace half_space(const SolveSetup& setup) {
 }
 
 int run_solve(const SolveSetup& setup) {
-  // Friction: one process (several are refused by make_solve_setup).
-  if (setup.friction) return run_frictional_solve(setup);
-  // Several MPI processes, or one MPI process and a solve it distributes.
+  // Several MPI processes, or one MPI process and a solve it distributes
+  // (friction too, on several).
   if (const std::optional<int> code = run_distributed_solve(setup)) return *code;
+  return run_solve_here(setup);
+}
+
+int run_solve_here(const SolveSetup& setup) {
+  if (setup.friction) return run_frictional_solve(setup);
   const std::string on_grid =
       fmt::format("{} on the {} grid", solvers::to_string(setup.solver.type), setup.grid.shape_string());
   if (setup.load_values.size() > 1) {

@@ -16,6 +16,10 @@ HalfSpace half_space(const SolveSetup& setup);
 // kExitNotConverged after printing the reason to stderr. Throws InputError
 // (FileError) when the result cannot be written.
 int run_solve(const SolveSetup& setup);
+// The same on this process alone, setup.heights the whole surface (the
+// serial program; the first MPI process for a grid not split into slabs).
+// Makes no collective call.
+int run_solve_here(const SolveSetup& setup);
 
 // Registers `solve` on the program's parser.
 Command add_solve_command(CLI::App& program);

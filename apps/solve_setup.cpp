@@ -437,7 +437,7 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
   // Friction (--friction with a tangential load): its flags and the
   // combinations it refuses, before the surface is read.
   const std::optional<solvers::FrictionOptions> friction =
-      friction_from(options, coating.has_value(), load_values.size(), process_count());
+      friction_from(options, coating.has_value(), load_values.size());
   const std::size_t history_steps = friction ? friction->steps() : 0;
   const GridCheck check_grid = [&](const Grid& grid, const std::string& request) {
     problem.check_grid(grid, flags);
@@ -453,7 +453,12 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
       share.check_memory(
           what, grid,
           [&](std::size_t rows) {
-            return rows >= all_rows ? estimate : slab_solve_memory_estimate(grid, solver, rows, load_values.size());
+            if (rows >= all_rows) return estimate;
+            // Friction's fields and operator are spread over the slabs as the normal solve's are.
+            const double friction_share = friction ? solvers::friction_memory_estimate(grid, history_steps) *
+                                                         static_cast<double>(rows) / static_cast<double>(all_rows)
+                                                   : 0.0;
+            return slab_solve_memory_estimate(grid, solver, rows, load_values.size()) + friction_share;
           },
           limit);
     } else {

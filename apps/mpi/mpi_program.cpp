@@ -23,7 +23,9 @@
 
 #include "../activity.hpp"
 #include "../exit_codes.hpp"
+#include "../friction_command.hpp"
 #include "../memory_check.hpp"
+#include "../plot_tool.hpp"
 #include "../progress.hpp"
 #include "../solve_command.hpp"
 #include "../summary.hpp"
@@ -84,7 +86,6 @@ std::optional<std::string> unsupported_by_program(const SolveSetup& setup) {
   if (setup.coating && !setup.grid.periodic()) {
     return fmt::format("a coated half-space on a free grid {} (on periodic grids it is)", kNotYet);
   }
-  if (setup.plot) return fmt::format("plot {}", kNotYet);
   return std::nullopt;
 }
 
@@ -95,6 +96,53 @@ SolveResult solve_slab(const SolveSetup& setup, std::span<const double> heights,
                        const mpi::MpiCommunicator& world, const solvers::SolverOptions& settings) {
   try {
     return solvers::solve_surface(setup.grid, heights, half_space(setup), setup.loading, settings, {}, layout);
+  } catch (const InputError&) {
+    throw;  // found by every process alike (options, reduced values)
+  } catch (const std::exception& error) {
+    fmt::print(stderr, "error: {} (while {}, on process {} of {})\n", error.what(), Activity::failed_while(),
+               world.rank(), world.size());
+    std::fflush(stderr);
+    mpi::Session::abort(kExitInputError);
+  }
+}
+
+// The frictional solve on this process's rows (friction_command.cpp's, at
+// a place whose hooks are the slab statistics and the parallel writers);
+// failures as solve_slab's.
+int run_friction_on_slabs(const SolveSetup& setup, std::span<const double> heights,
+                          const mpi::DistributedLayout& layout, const mpi::MpiCommunicator& world,
+                          const mpi::SlabLayout& slab) {
+  const auto span_of = [](const Eigen::ArrayXd& a) {
+    return std::span<const double>(a.data(), static_cast<std::size_t>(a.size()));
+  };
+  FrictionPlace place{layout, heights, world.rank() == 0, {}, {}, {}, {}};
+  place.metadata = [&] {
+    io::ResultMetadata metadata = io::provenance_metadata(provenance(setup));
+    mpi::run_agreed(
+        world, [&] { metadata.surface_statistics = mpi::slab_surface_statistics(setup.grid, slab, heights, world); });
+    return metadata;
+  };
+  place.contact_statistics = [&](const SolveResult& normal) {
+    std::optional<analysis::ContactStatistics> statistics;
+    mpi::run_agreed(world, [&] {
+      statistics = mpi::slab_contact_statistics(setup.grid, slab, span_of(normal.pressure), span_of(normal.gap), world);
+    });
+    return *statistics;
+  };
+  place.write_result = [&](const SolveResult& normal, const io::ResultMetadata& metadata) {
+    mpi::write_result_slabs(world, setup.output, setup.grid, slab, heights, normal, metadata);
+  };
+  place.agree = [&](const std::function<void()>& step) { mpi::run_agreed(world, step); };
+  place.first_value = [&](int value) {
+    mpi::check(MPI_Bcast(&value, 1, MPI_INT, 0, world.get()), "MPI_Bcast");
+    return value;
+  };
+  place.write_history = [&](const SolveResult& normal, std::span<const TangentialResult> steps,
+                            std::span<const TangentialLoading> loads, const io::ResultMetadata& metadata) {
+    mpi::write_friction_history_slabs(world, setup.output, setup.grid, slab, heights, normal, steps, loads, metadata);
+  };
+  try {
+    return run_frictional_solve(setup, place);
   } catch (const InputError&) {
     throw;  // found by every process alike (options, reduced values)
   } catch (const std::exception& error) {
@@ -260,7 +308,21 @@ std::optional<int> run_solve_on_slabs(const SolveSetup& setup) {
   const mpi::DistributedLayout layout(world);
   const std::optional<std::string> unsupported = unsupported_by_program(setup);
   const bool root = world.rank() == 0;
-  if (world.size() == 1 && (unsupported || !layout.takes(setup.grid, half_space(setup), setup.solver))) {
+  if (setup.grid.dimension() == 1 && world.size() > 1) {
+    // A 1D grid is one row, which slabs of rows cannot split (and at most a
+    // few million cells, which one process solves): the first process,
+    // which holds the surface, runs the serial program (stresses, coatings
+    // and plots included) while the others wait for its exit code.
+    int code = kExitOk;
+    mpi::run_agreed(world, [&] {
+      if (root) code = run_solve_here(setup);
+    });
+    mpi::check(MPI_Bcast(&code, 1, MPI_INT, 0, world.get()), "MPI_Bcast");
+    return code;
+  }
+  // One process solves friction serially (with stresses and plots).
+  if (world.size() == 1 &&
+      (setup.friction || unsupported || !layout.takes(setup.grid, half_space(setup), setup.solver))) {
     return std::nullopt;
   }
   if (unsupported) throw InputError(*unsupported + ": solve it on one process");
@@ -272,7 +334,15 @@ std::optional<int> run_solve_on_slabs(const SolveSetup& setup) {
   // This process's rows of the surface (the first process may hold all).
   const std::span<const double> heights(setup.heights.data() + (slab.first_row - setup.first_row) * slab.nx,
                                         slab.local_size());
-  if (setup.load_values.size() > 1) return run_sweep_on_slabs(setup, heights, layout);
+  if (setup.friction) return run_friction_on_slabs(setup, heights, layout, world, slab);
+  // --plot: the first process draws the figures from the written file, as
+  // the serial program does (nothing is gathered); all learn first whether
+  // the tool is there.
+  std::optional<PlotTool> plot;
+  mpi::run_agreed(world, [&] {
+    if (setup.plot && root) plot = find_plot_tool({"--plot", "drop --plot", {}});
+  });
+  if (setup.load_values.size() > 1) return run_sweep_on_slabs(setup, heights, layout, plot);
   Progress progress(!setup.quiet && root, 1, setup.solver.tolerance);
   solvers::SolverOptions settings = setup.solver;
   settings.progress = progress.callback();
@@ -301,11 +371,20 @@ std::optional<int> run_solve_on_slabs(const SolveSetup& setup) {
     print_summary(stdout, setup, result);
     std::fflush(stdout);
   }
+  int plotted = 1;
+  if (plot) {
+    const std::string failure = run_plot_tool(*plot, "maps", setup.output, setup.quiet);
+    if (!failure.empty()) {
+      fmt::print(stderr, "error: --plot: {}; the result is written to {}\n", failure, setup.output.string());
+      plotted = 0;
+    }
+  }
+  mpi::check(MPI_Bcast(&plotted, 1, MPI_INT, 0, world.get()), "MPI_Bcast");
   if (!result.converged()) {
     if (root) fmt::print(stderr, "{}\n", non_convergence_message(setup, result));
     return kExitNotConverged;
   }
-  return kExitOk;
+  return plotted != 0 ? kExitOk : kExitPlotFailed;
 }
 
 }  // namespace halfspace::app

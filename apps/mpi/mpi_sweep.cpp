@@ -116,7 +116,7 @@ std::vector<analysis::SweepStep> solve_steps(const SolveSetup& setup, const mpi:
 }  // namespace
 
 int run_sweep_on_slabs(const SolveSetup& setup, std::span<const double> heights,
-                       const mpi::DistributedLayout& distributed) {
+                       const mpi::DistributedLayout& distributed, const std::optional<PlotTool>& plot) {
   const mpi::MpiCommunicator world = mpi_world();
   const bool root = world.rank() == 0;
   const mpi::SlabLayout layout = mpi::slab_layout(setup.grid.nx(), setup.grid.ny(), world);
@@ -143,7 +143,7 @@ int run_sweep_on_slabs(const SolveSetup& setup, std::span<const double> heights,
     if (!root) return;
     activity.emplace(fmt::format("writing {}", io::sweep_csv_path(setup.output).string()));
     io::write_sweep_csv(io::sweep_csv_path(setup.output), steps);
-    code = report_sweep(setup, steps, std::nullopt);
+    code = report_sweep(setup, steps, plot);
   });
   mpi::check(MPI_Bcast(&code, 1, MPI_INT, 0, world.get()), "MPI_Bcast");
   return code;

@@ -80,6 +80,45 @@ std::filesystem::path history_csv_path(const std::filesystem::path& result_path)
   return csv;
 }
 
+void write_friction_history_contents(const Hdf5Node& root, const Grid& grid, std::span<const double> height,
+                                     const SolveResult& normal, std::span<const TangentialResult> steps,
+                                     std::span<const TangentialLoading> loads, const ResultMetadata& metadata,
+                                     const std::string& csv, FieldRows rows) {
+  root.write_dataset_rows("height", field_shape(grid), rows.first_row, height, "m");
+  write_result_fields(root, grid, normal, rows);
+  write_tangential_fields(root, grid, steps.back(), rows);
+  {
+    const Hdf5Node group = root.create_group("steps");
+    for (std::size_t k = 0; k < steps.size(); ++k) {
+      const Hdf5Node step = group.create_group(step_name(k, steps.size()));
+      write_tangential_fields(step, grid, steps[k], rows);
+      write_tangential_attributes(step, steps[k]);
+      step.write_string_attribute("tangential_control",
+                                  loads[k].control == TangentialControl::force ? "force" : "displacement");
+      step.write_double_attribute("tangential_load_x", loads[k].x);
+      step.write_double_attribute("tangential_load_y", loads[k].y);
+    }
+  }
+  {
+    const Hdf5Node table = root.create_group("history");
+    for (const HistoryColumn& column : kColumns) {
+      std::vector<double> values;
+      for (std::size_t k = 0; k < steps.size(); ++k) values.push_back(column.value(k, steps[k]));
+      table.write_dataset_rows(column.name, {values.size()}, 0,
+                               rows.lead ? std::span<const double>(values) : std::span<const double>(),
+                               column_unit(column, grid));
+    }
+  }
+  ResultMetadata root_metadata = metadata;
+  root_metadata.tangential = &steps.back();
+  write_result_root_attributes(root, grid, normal, root_metadata);
+  root.write_int64_attribute("history_steps", static_cast<std::int64_t>(steps.size()));
+  // The digest of the .csv written with this file: a .csv beside it with
+  // another digest belongs to another history.
+  root.write_string_attribute("history_csv_md5", detail::md5_hex(csv));
+  if (metadata.extra_groups) metadata.extra_groups(root);
+}
+
 void write_friction_history(const std::filesystem::path& path, const Grid& grid, std::span<const double> height,
                             const SolveResult& normal, std::span<const TangentialResult> steps,
                             std::span<const TangentialLoading> loads, const ResultMetadata& metadata) {
@@ -101,37 +140,7 @@ void write_friction_history(const std::filesystem::path& path, const Grid& grid,
   }
   const std::string csv = friction_history_csv(steps);
   const std::vector<char> image = hdf5_file_image(path, [&](const Hdf5Node& root) {
-    root.write_dataset("height", field_shape(grid), height, "m");
-    write_result_fields(root, grid, normal);
-    write_tangential_fields(root, grid, steps.back());
-    {
-      const Hdf5Node group = root.create_group("steps");
-      for (std::size_t k = 0; k < steps.size(); ++k) {
-        const Hdf5Node step = group.create_group(step_name(k, steps.size()));
-        write_tangential_fields(step, grid, steps[k]);
-        write_tangential_attributes(step, steps[k]);
-        step.write_string_attribute("tangential_control",
-                                    loads[k].control == TangentialControl::force ? "force" : "displacement");
-        step.write_double_attribute("tangential_load_x", loads[k].x);
-        step.write_double_attribute("tangential_load_y", loads[k].y);
-      }
-    }
-    {
-      const Hdf5Node table = root.create_group("history");
-      for (const HistoryColumn& column : kColumns) {
-        std::vector<double> values;
-        for (std::size_t k = 0; k < steps.size(); ++k) values.push_back(column.value(k, steps[k]));
-        table.write_dataset(column.name, {values.size()}, values, column_unit(column, grid));
-      }
-    }
-    ResultMetadata root_metadata = metadata;
-    root_metadata.tangential = &steps.back();
-    write_result_root_attributes(root, grid, normal, root_metadata);
-    root.write_int64_attribute("history_steps", static_cast<std::int64_t>(steps.size()));
-    // The digest of the .csv written with this file: a .csv beside it with
-    // another digest belongs to another history.
-    root.write_string_attribute("history_csv_md5", detail::md5_hex(csv));
-    if (metadata.extra_groups) metadata.extra_groups(root);
+    write_friction_history_contents(root, grid, height, normal, steps, loads, metadata, csv);
   });
   const OutputBytes files[] = {{path, image}, {history_csv_path(path), csv}};
   write_output_set(files);

@@ -6,12 +6,14 @@
 
 #include <filesystem>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "halfspace/grid.hpp"
 #include "halfspace/io/hdf5_output.hpp"
 #include "halfspace/io/result_writer.hpp"
 #include "halfspace/solvers/solve_result.hpp"
+#include "halfspace/solvers/tangential_loading.hpp"
 #include "halfspace/solvers/tangential_result.hpp"
 
 namespace halfspace::io {
@@ -47,5 +49,19 @@ void write_tangential_fields(const Hdf5Node& node, const Grid& grid, const Tange
 // statistics given in `metadata`.
 void write_result_root_attributes(const Hdf5Node& root, const Grid& grid, const SolveResult& result,
                                   const ResultMetadata& metadata);
+
+// A single result's datasets and attributes (write_result's file; with
+// metadata.tangential the friction fields and attributes too), `height` and
+// the fields holding the rows `rows` says.
+void write_result_contents(const Hdf5Node& root, const Grid& grid, std::span<const double> height,
+                           const SolveResult& result, const ResultMetadata& metadata, FieldRows rows = {});
+
+// A friction history's datasets and attributes (write_friction_history's
+// file without its CSV, whose text is `csv`), the fields holding the rows
+// `rows` says.
+void write_friction_history_contents(const Hdf5Node& root, const Grid& grid, std::span<const double> height,
+                                     const SolveResult& normal, std::span<const TangentialResult> steps,
+                                     std::span<const TangentialLoading> loads, const ResultMetadata& metadata,
+                                     const std::string& csv, FieldRows rows = {});
 
 }  // namespace halfspace::io

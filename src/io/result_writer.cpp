@@ -112,6 +112,15 @@ void write_result_root_attributes(const Hdf5Node& root, const Grid& grid, const 
   }
 }
 
+void write_result_contents(const Hdf5Node& root, const Grid& grid, std::span<const double> height,
+                           const SolveResult& result, const ResultMetadata& metadata, FieldRows rows) {
+  root.write_dataset_rows("height", field_shape(grid), rows.first_row, height, "m");
+  write_result_fields(root, grid, result, rows);
+  if (metadata.tangential) write_tangential_fields(root, grid, *metadata.tangential, rows);
+  write_result_root_attributes(root, grid, result, metadata);
+  if (metadata.extra_groups) metadata.extra_groups(root);
+}
+
 void write_result(const std::filesystem::path& path, const Grid& grid, std::span<const double> height,
                   const SolveResult& result, const ResultMetadata& metadata) {
   check_size("height", height.size(), grid);
@@ -128,13 +137,7 @@ void write_result(const std::filesystem::path& path, const Grid& grid, std::span
       check_size(name, static_cast<std::size_t>(size), grid);
     }
   }
-  const auto fill = [&](const Hdf5Node& root) {
-    root.write_dataset("height", field_shape(grid), height, "m");
-    write_result_fields(root, grid, result);
-    if (metadata.tangential) write_tangential_fields(root, grid, *metadata.tangential);
-    write_result_root_attributes(root, grid, result, metadata);
-    if (metadata.extra_groups) metadata.extra_groups(root);
-  };
+  const auto fill = [&](const Hdf5Node& root) { write_result_contents(root, grid, height, result, metadata); };
   if (metadata.extra_groups_bytes == 0) {
     write_hdf5_file(path, fill);
   } else {

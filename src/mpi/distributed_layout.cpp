@@ -16,6 +16,7 @@
 #include "halfspace/mpi/slab_fourier_operator.hpp"
 #include "halfspace/mpi/slab_free_operator.hpp"
 #include "halfspace/mpi/slab_level_transfer.hpp"
+#include "halfspace/mpi/slab_tangential_transforms.hpp"
 
 namespace halfspace::mpi {
 namespace {
@@ -44,6 +45,12 @@ solvers::ElasticOperators DistributedLayout::make_operators(const Grid& grid, co
   }
   made.op = std::move(op);
   return made;
+}
+
+std::unique_ptr<TangentialOperator> DistributedLayout::make_tangential_operator(const Grid& grid,
+                                                                                const ElasticPair& pair,
+                                                                                FftPlanning planning) const {
+  return std::make_unique<TangentialOperator>(grid, pair, make_slab_tangential_transforms(grid, comm_, planning));
 }
 
 solvers::RowSlab DistributedLayout::rows(const Grid& grid) const {

@@ -12,11 +12,13 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <system_error>
 
 #include "../io/hdf5_handle.hpp"
 #include "../io/hdf5_writing.hpp"
 #include "../io/sweep_writing.hpp"
 #include "halfspace/error.hpp"
+#include "halfspace/io/friction_history_writer.hpp"
 #include "halfspace/io/hdf5_output.hpp"
 #include "halfspace/io/height_map_writer.hpp"
 #include "halfspace/io/output_file.hpp"
@@ -106,10 +108,40 @@ void write_result_slabs(const MpiCommunicator& comm, const std::filesystem::path
                         const SlabLayout& layout, std::span<const double> heights, const solvers::SolveResult& result,
                         const io::ResultMetadata& metadata) {
   write_file_slabs(comm, path, io::result_file_bound(grid, result, metadata), [&](const io::Hdf5Node& root) {
-    root.write_dataset_rows("height", io::field_shape(grid), layout.first_row, heights, "m");
-    io::write_result_fields(root, grid, result, {layout.first_row, comm.rank() == 0});
-    io::write_result_root_attributes(root, grid, result, metadata);
-    if (metadata.extra_groups) metadata.extra_groups(root);
+    io::write_result_contents(root, grid, heights, result, metadata, {layout.first_row, comm.rank() == 0});
+  });
+  write_sidecar(comm, path, grid);
+}
+
+void write_friction_history_slabs(const MpiCommunicator& comm, const std::filesystem::path& path, const Grid& grid,
+                                  const SlabLayout& layout, std::span<const double> heights,
+                                  const solvers::SolveResult& normal, std::span<const TangentialResult> steps,
+                                  std::span<const TangentialLoading> loads, const io::ResultMetadata& metadata) {
+  if (steps.empty() || loads.size() != steps.size()) {
+    throw InputError(fmt::format("write_friction_history_slabs: {} loads for {} steps", loads.size(), steps.size()));
+  }
+  const std::string csv = io::friction_history_csv(steps);
+  const std::filesystem::path csv_path = io::history_csv_path(path);
+  // A previous history's table would not match the new file: removed first,
+  // so that an interrupted write leaves no mismatched pair.
+  run_agreed(comm, [&] {
+    std::error_code ignored;
+    if (comm.rank() == 0) std::filesystem::remove(csv_path, ignored);
+  });
+  // The file holds the step fields and the normal ones: about 7 fields per
+  // step beside the single result's.
+  io::ResultMetadata root_metadata = metadata;
+  root_metadata.tangential = &steps.back();
+  const std::uint64_t bound =
+      io::result_file_bound(grid, normal, root_metadata) +
+      steps.size() *
+          (io::kHdf5SmallItemsBound + 7 * io::hdf5_dataset_bound(io::field_shape(grid), io::Compression::deflate));
+  write_file_slabs(comm, path, bound, [&](const io::Hdf5Node& root) {
+    io::write_friction_history_contents(root, grid, heights, normal, steps, loads, metadata, csv,
+                                        {layout.first_row, comm.rank() == 0});
+  });
+  run_agreed(comm, [&] {
+    if (comm.rank() == 0) io::write_output_file(csv_path, csv);
   });
   write_sidecar(comm, path, grid);
 }

@@ -12,6 +12,8 @@
 #include <cmath>
 #include <complex>
 #include <cstddef>
+#include <functional>
+#include <utility>
 #include <vector>
 
 #include "halfspace/fft/grid_transform.hpp"
@@ -37,20 +39,86 @@ long signed_offset(std::size_t k, std::size_t n) {
   return k < n ? static_cast<long>(k) : k == n ? 0 : static_cast<long>(k) - 2 * static_cast<long>(n);
 }
 
+// The serial transforms: the grid's own transform per component on
+// periodic grids (shared with nothing), the pruned padded one on free grids.
+class SerialTangentialTransforms final : public TangentialTransforms {
+ public:
+  SerialTangentialTransforms(const Grid& grid, FftPlanning planning) : size_(grid.size()) {
+    if (grid.periodic()) {
+      for (auto& t : periodic_) t = make_grid_transform(grid, planning);
+    } else {
+      for (auto& t : padded_)
+        t = std::make_unique<PaddedRealFft>(grid.dimension() == 1 ? 1 : grid.ny(), grid.nx(), planning);
+    }
+  }
+
+  std::size_t local_size() const override { return size_; }
+  const linalg::Communicator& communicator() const override { return linalg::serial_communicator(); }
+  std::size_t spectrum_blocks() const override { return spectrum_rows(); }
+  std::size_t spectrum_length() const override {
+    return padded_[0] ? padded_[0]->spectrum_cols() : periodic_[0]->spectrum_cols();
+  }
+  SpectrumMode mode(std::size_t k) const override { return {k / spectrum_length(), k % spectrum_length()}; }
+  std::size_t spectrum_rows() const override { return padded_[0] ? padded_[0]->spectrum_rows() : periodic_[0]->rows(); }
+  double transform_size() const override {
+    return padded_[0] ? static_cast<double>(padded_[0]->padded_size()) : static_cast<double>(size_);
+  }
+
+  std::span<std::complex<double>> forward(int k, std::span<const double> values) override {
+    if (padded_[0]) {
+      padded_[k]->forward(values);
+      return padded_[k]->spectrum();
+    }
+    RealFft& fft = *periodic_[k];
+    if (!fft.forward_from(values)) {
+      std::span<double> input = fft.input();
+      linalg::for_each_index(values.size(), [&](std::size_t i) { input[i] = values[i]; });
+      fft.forward();
+    }
+    return fft.spectrum();
+  }
+
+  std::span<std::complex<double>> spectrum(int k) override {
+    return padded_[0] ? padded_[k]->spectrum() : periodic_[k]->spectrum();
+  }
+
+  void backward(int k, std::span<double> values) override {
+    if (padded_[0]) {
+      padded_[k]->backward(values);
+      return;
+    }
+    RealFft& fft = *periodic_[k];
+    if (!fft.backward_into(values)) {
+      fft.backward();
+      std::span<const double> output = fft.output();
+      linalg::for_each_index(values.size(), [&](std::size_t i) { values[i] = output[i]; });
+    }
+  }
+
+  std::span<const std::complex<double>> transform_wraparound(
+      const std::function<double(std::size_t row, std::size_t col)>& value) override {
+    PaddedRealFft& fft = *padded_[0];
+    linalg::for_each_row(fft.spectrum_rows(), fft.spectrum_cols(), [&](std::size_t r) {
+      std::span<double> row = fft.padded_row(r);
+      for (std::size_t c = 0; c < row.size(); ++c) row[c] = value(r, c);
+    });
+    fft.forward_all_rows();
+    return fft.spectrum();
+  }
+
+ private:
+  std::size_t size_;
+  std::shared_ptr<RealFft> periodic_[2];      // periodic grids: one transform per component
+  std::unique_ptr<PaddedRealFft> padded_[2];  // free grids
+};
+
 }  // namespace
 
 struct TangentialOperator::Impl {
-  Impl(const Grid& g, const ElasticPair& p, FftPlanning planning) : grid(g), pair(p) {
-    const std::size_t rows = g.dimension() == 1 ? 1 : g.ny();
-    if (g.periodic()) {
-      for (auto& t : periodic) t = make_grid_transform(g, planning);
-      spectrum_rows = periodic[0]->rows();
-      spectrum_cols = periodic[0]->spectrum_cols();
-    } else {
-      for (auto& t : padded) t = std::make_unique<PaddedRealFft>(rows, g.nx(), planning);
-      spectrum_rows = padded[0]->spectrum_rows();
-      spectrum_cols = padded[0]->spectrum_cols();
-    }
+  Impl(const Grid& g, const ElasticPair& p, std::unique_ptr<TangentialTransforms> t)
+      : grid(g), pair(p), transforms(std::move(t)) {
+    spectrum_rows = transforms->spectrum_blocks();
+    spectrum_cols = transforms->spectrum_length();
     const std::size_t size = spectrum_rows * spectrum_cols;
     xx.assign(size, 0.0);
     yy.assign(size, 0.0);
@@ -66,45 +134,55 @@ struct TangentialOperator::Impl {
       init_free();
       if (coupled) init_free_coupling();
     }
-    const double count = g.periodic() ? static_cast<double>(g.size()) : static_cast<double>(padded[0]->padded_size());
+    const double count = transforms->transform_size();
     for (std::size_t k = 0; k < size; ++k) {
       const double mean = 0.5 * (xx[k] + yy[k]);
       const double spread = std::hypot(0.5 * (xx[k] - yy[k]), xy[k]);
       largest = std::max(largest, count * (mean + spread));
     }
+    largest = transforms->communicator().max(largest);
     // The stored symbol carries 1/count; so does the inverse's (count^2 / count).
     largest_stored = largest / count;
     inverse_scale = 1.0 / (count * count);
   }
 
-  // The symbol with FFTW's 1/N folded in; C_ii is the inverse DFT at zero
-  // offset, (1/N) times the sum over the full spectrum (xy sums to zero).
+  // The symbol with FFTW's 1/N folded in, on the modes held here; C_ii is the
+  // inverse DFT at zero offset, (1/N) times the sum over the full spectrum
+  // (xy sums to zero), summed over every mode in one order on every process.
   void init_periodic() {
     const std::size_t nx = grid.nx();
+    const std::size_t rows = transforms->spectrum_rows();
     const double inverse_n = 1.0 / static_cast<double>(grid.size());
     const double shear = pair.shear_compliance();
     const double directional = pair.directional_compliance();
+    auto wavenumbers = [&](std::size_t r, std::size_t c) {
+      return std::pair{kernels::dft_wavenumber(c, nx, grid.dx()),
+                       grid.dimension() == 1 ? 0.0 : kernels::dft_wavenumber(r, rows, grid.dy())};
+    };
+    for (std::size_t k = 0; k < xx.size(); ++k) {
+      const auto [r, c] = transforms->mode(k);
+      const auto [qx, qy] = wavenumbers(r, c);
+      const kernels::TangentialCoefficients s = kernels::tangential_spectrum(qx, qy, shear, directional);
+      xx[k] = s.xx * inverse_n;
+      yy[k] = s.yy * inverse_n;
+      xy[k] = s.xy * inverse_n;
+      if (coupled) {
+        // The odd symbol's component along an axis vanishes at that axis's
+        // Nyquist frequency (an odd sequence's DFT does), where +q and -q
+        // are the same mode: otherwise the product would not be real.
+        const kernels::CouplingCoefficients odd = kernels::coupling_spectrum(qx, qy, pair.coupling_compliance());
+        const bool nyquist_x = 2 * c == nx;
+        const bool nyquist_y = grid.dimension() == 2 && 2 * r == rows;
+        coupling_x[k] = nyquist_x ? 0.0 : odd.x * inverse_n;
+        coupling_y[k] = nyquist_y ? 0.0 : odd.y * inverse_n;
+      }
+    }
     double sum_xx = 0.0;
     double sum_yy = 0.0;
-    for (std::size_t r = 0; r < spectrum_rows; ++r) {
-      const double qy = grid.dimension() == 1 ? 0.0 : kernels::dft_wavenumber(r, spectrum_rows, grid.dy());
-      for (std::size_t c = 0; c < spectrum_cols; ++c) {
-        const double qx = kernels::dft_wavenumber(c, nx, grid.dx());
+    for (std::size_t r = 0; r < rows; ++r) {
+      for (std::size_t c = 0; c <= nx / 2; ++c) {
+        const auto [qx, qy] = wavenumbers(r, c);
         const kernels::TangentialCoefficients s = kernels::tangential_spectrum(qx, qy, shear, directional);
-        const std::size_t k = r * spectrum_cols + c;
-        xx[k] = s.xx * inverse_n;
-        yy[k] = s.yy * inverse_n;
-        xy[k] = s.xy * inverse_n;
-        if (coupled) {
-          // The odd symbol's component along an axis vanishes at that axis's
-          // Nyquist frequency (an odd sequence's DFT does), where +q and -q
-          // are the same mode: otherwise the product would not be real.
-          const kernels::CouplingCoefficients odd = kernels::coupling_spectrum(qx, qy, pair.coupling_compliance());
-          const bool nyquist_x = 2 * c == nx;
-          const bool nyquist_y = grid.dimension() == 2 && 2 * r == spectrum_rows;
-          coupling_x[k] = nyquist_x ? 0.0 : odd.x * inverse_n;
-          coupling_y[k] = nyquist_y ? 0.0 : odd.y * inverse_n;
-        }
         // Columns other than 0 and nx/2 (even nx) stand for two modes.
         const double weight = c == 0 || 2 * c == nx ? 1.0 : 2.0;
         sum_xx += weight * s.xx;
@@ -135,29 +213,22 @@ struct TangentialOperator::Impl {
     self = coefficient(0, 0);
     std::vector<double>* parts[3] = {&xx, &yy, &xy};
     for (int part = 0; part < (line ? 2 : 3); ++part) {
-      PaddedRealFft& fft = *padded[0];
       const bool odd = part == 2;
-      linalg::for_each_row(fft.spectrum_rows(), 2 * nx, [&](std::size_t r) {
-        const long dj = line ? 0 : signed_offset(r, ny);
-        std::span<double> row = fft.padded_row(r);
-        for (std::size_t c = 0; c < row.size(); ++c) {
-          long di = signed_offset(c, nx);
-          long dj_here = dj;
-          if (!odd) {
-            // The even parts take the mirrored distance n at the middle index.
-            if (c == nx) di = static_cast<long>(nx);
-            if (!line && r == ny) dj_here = static_cast<long>(ny);
-          } else if (c == nx || (!line && r == ny)) {
-            row[c] = 0.0;
-            continue;
-          }
-          const kernels::TangentialCoefficients k = coefficient(di, dj_here);
-          row[c] = part == 0 ? k.xx : part == 1 ? k.yy : k.xy;
-        }
-      });
-      fft.forward_all_rows();
-      const double inverse_n = 1.0 / static_cast<double>(fft.padded_size());
-      std::span<const std::complex<double>> spectrum = fft.spectrum();
+      const std::span<const std::complex<double>> spectrum =
+          transforms->transform_wraparound([&](std::size_t r, std::size_t c) {
+            long di = signed_offset(c, nx);
+            long dj = line ? 0 : signed_offset(r, ny);
+            if (!odd) {
+              // The even parts take the mirrored distance n at the middle index.
+              if (c == nx) di = static_cast<long>(nx);
+              if (!line && r == ny) dj = static_cast<long>(ny);
+            } else if (c == nx || (!line && r == ny)) {
+              return 0.0;
+            }
+            const kernels::TangentialCoefficients k = coefficient(di, dj);
+            return part == 0 ? k.xx : part == 1 ? k.yy : k.xy;
+          });
+      const double inverse_n = 1.0 / transforms->transform_size();
       std::vector<double>& target = *parts[part];
       for (std::size_t k = 0; k < target.size(); ++k) target[k] = spectrum[k].real() * inverse_n;
     }
@@ -176,73 +247,39 @@ struct TangentialOperator::Impl {
     const double d = pair.coupling_compliance();
     std::vector<double>* parts[2] = {&coupling_x, &coupling_y};
     for (int part = 0; part < (line ? 1 : 2); ++part) {
-      PaddedRealFft& fft = *padded[0];
-      linalg::for_each_row(fft.spectrum_rows(), 2 * nx, [&](std::size_t r) {
-        std::span<double> row = fft.padded_row(r);
-        for (std::size_t c = 0; c < row.size(); ++c) {
-          // The odd axis takes offset 0 at its middle index (zero there),
-          // the even one the mirrored distance n.
-          const bool odd_middle = part == 0 ? c == nx : (!line && r == ny);
-          if (odd_middle) {
-            row[c] = 0.0;
-            continue;
-          }
-          const long di = c == nx ? static_cast<long>(nx) : signed_offset(c, nx);
-          const long dj = line ? 0 : r == ny ? static_cast<long>(ny) : signed_offset(r, ny);
-          const double x = static_cast<double>(di) * grid.dx();
-          const double y = static_cast<double>(dj) * grid.dy();
-          const kernels::CouplingCoefficients k = line ? kernels::coupling_strip_displacement(x, grid.dx(), d)
-                                                       : kernels::coupling_rectangle_displacement(x, y, a, b, d);
-          row[c] = part == 0 ? k.x : k.y;
-        }
-      });
-      fft.forward_all_rows();
-      const double inverse_n = 1.0 / static_cast<double>(fft.padded_size());
-      std::span<const std::complex<double>> spectrum = fft.spectrum();
+      const std::span<const std::complex<double>> spectrum =
+          transforms->transform_wraparound([&](std::size_t r, std::size_t c) {
+            // The odd axis takes offset 0 at its middle index (zero there),
+            // the even one the mirrored distance n.
+            const bool odd_middle = part == 0 ? c == nx : (!line && r == ny);
+            if (odd_middle) return 0.0;
+            const long di = c == nx ? static_cast<long>(nx) : signed_offset(c, nx);
+            const long dj = line ? 0 : r == ny ? static_cast<long>(ny) : signed_offset(r, ny);
+            const double x = static_cast<double>(di) * grid.dx();
+            const double y = static_cast<double>(dj) * grid.dy();
+            const kernels::CouplingCoefficients k = line ? kernels::coupling_strip_displacement(x, grid.dx(), d)
+                                                         : kernels::coupling_rectangle_displacement(x, y, a, b, d);
+            return part == 0 ? k.x : k.y;
+          });
+      const double inverse_n = 1.0 / transforms->transform_size();
       std::vector<double>& target = *parts[part];
       for (std::size_t k = 0; k < target.size(); ++k) target[k] = spectrum[k].imag() * inverse_n;
     }
   }
 
-  // The spectrum of component k of `values`.
   std::span<std::complex<double>> forward(int k, std::span<const double> values) {
-    if (padded[0]) {
-      padded[k]->forward(values);
-      return padded[k]->spectrum();
-    }
-    RealFft& fft = *periodic[k];
-    if (!fft.forward_from(values)) {
-      std::span<double> input = fft.input();
-      linalg::for_each_index(values.size(), [&](std::size_t i) { input[i] = values[i]; });
-      fft.forward();
-    }
-    return fft.spectrum();
+    return transforms->forward(k, values);
   }
-
-  std::span<std::complex<double>> spectrum(int k) {
-    return padded[0] ? padded[k]->spectrum() : periodic[k]->spectrum();
-  }
-
-  void backward(int k, std::span<double> values) {
-    if (padded[0]) {
-      padded[k]->backward(values);
-      return;
-    }
-    RealFft& fft = *periodic[k];
-    if (!fft.backward_into(values)) {
-      fft.backward();
-      std::span<const double> output = fft.output();
-      linalg::for_each_index(values.size(), [&](std::size_t i) { values[i] = output[i]; });
-    }
-  }
+  std::span<std::complex<double>> spectrum(int k) { return transforms->spectrum(k); }
+  void backward(int k, std::span<double> values) { transforms->backward(k, values); }
+  std::size_t local_size() const { return transforms->local_size(); }
 
   Grid grid;
   ElasticPair pair;
-  std::shared_ptr<RealFft> periodic[2];      // periodic grids: one transform per component
-  std::unique_ptr<PaddedRealFft> padded[2];  // free grids
-  std::size_t spectrum_rows = 0;
+  std::unique_ptr<TangentialTransforms> transforms;
+  std::size_t spectrum_rows = 0;  // the entries held here, as blocks x length
   std::size_t spectrum_cols = 0;
-  std::vector<double> xx, yy, xy;  // the real symbol, (spectrum_rows, spectrum_cols)
+  std::vector<double> xx, yy, xy;  // the real symbol, one per entry held here
   bool coupled = false;
   // The coupling's imaginary symbol c (coupling_fourier.hpp), empty unless coupled.
   std::vector<double> coupling_x, coupling_y;
@@ -253,7 +290,19 @@ struct TangentialOperator::Impl {
 };
 
 TangentialOperator::TangentialOperator(const Grid& grid, const ElasticPair& pair, FftPlanning planning)
-    : impl_(std::make_unique<Impl>(grid, pair, planning)) {}
+    : TangentialOperator(grid, pair, std::make_unique<SerialTangentialTransforms>(grid, planning)) {}
+
+TangentialOperator::TangentialOperator(const Grid& grid, const ElasticPair& pair,
+                                       std::unique_ptr<TangentialTransforms> transforms)
+    : impl_(std::make_unique<Impl>(grid, pair, std::move(transforms))) {}
+
+std::size_t TangentialOperator::local_size() const {
+  return impl_->local_size();
+}
+
+const linalg::Communicator& TangentialOperator::communicator() const {
+  return impl_->transforms->communicator();
+}
 
 TangentialOperator::~TangentialOperator() = default;
 
@@ -276,8 +325,8 @@ bool TangentialOperator::coupled() const {
 void TangentialOperator::apply_pressure_coupling(std::span<const double> pressure, std::span<double> displacement_x,
                                                  std::span<double> displacement_y) {
   Impl& m = *impl_;
-  assert(pressure.size() == m.grid.size());
-  assert(displacement_x.size() == m.grid.size() && displacement_y.size() == m.grid.size());
+  assert(pressure.size() == m.local_size());
+  assert(displacement_x.size() == m.local_size() && displacement_y.size() == m.local_size());
   if (!m.coupled) {
     std::fill(displacement_x.begin(), displacement_x.end(), 0.0);
     std::fill(displacement_y.begin(), displacement_y.end(), 0.0);
@@ -305,8 +354,8 @@ void TangentialOperator::apply_pressure_coupling(std::span<const double> pressur
 void TangentialOperator::apply_traction_coupling(std::span<const double> traction_x, std::span<const double> traction_y,
                                                  std::span<double> normal_displacement) {
   Impl& m = *impl_;
-  assert(traction_x.size() == m.grid.size() && traction_y.size() == m.grid.size());
-  assert(normal_displacement.size() == m.grid.size());
+  assert(traction_x.size() == m.local_size() && traction_y.size() == m.local_size());
+  assert(normal_displacement.size() == m.local_size());
   if (!m.coupled) {
     std::fill(normal_displacement.begin(), normal_displacement.end(), 0.0);
     return;
@@ -331,8 +380,8 @@ double TangentialOperator::largest_eigenvalue_bound() const {
 void TangentialOperator::apply(std::span<const double> traction_x, std::span<const double> traction_y,
                                std::span<double> displacement_x, std::span<double> displacement_y) {
   Impl& m = *impl_;
-  assert(traction_x.size() == m.grid.size() && traction_y.size() == m.grid.size());
-  assert(displacement_x.size() == m.grid.size() && displacement_y.size() == m.grid.size());
+  assert(traction_x.size() == m.local_size() && traction_y.size() == m.local_size());
+  assert(displacement_x.size() == m.local_size() && displacement_y.size() == m.local_size());
   // Both inputs are read into the spectra before either output is written,
   // so in place is safe.
   const std::span<std::complex<double>> sx = m.forward(0, traction_x);
@@ -360,8 +409,8 @@ void TangentialOperator::apply_approximate_inverse(std::span<const double> displ
                                                    std::span<const double> displacement_y, std::span<double> traction_x,
                                                    std::span<double> traction_y) {
   Impl& m = *impl_;
-  assert(displacement_x.size() == m.grid.size() && displacement_y.size() == m.grid.size());
-  assert(traction_x.size() == m.grid.size() && traction_y.size() == m.grid.size());
+  assert(displacement_x.size() == m.local_size() && displacement_y.size() == m.local_size());
+  assert(traction_x.size() == m.local_size() && traction_y.size() == m.local_size());
   const std::span<std::complex<double>> sx = m.forward(0, displacement_x);
   const std::span<std::complex<double>> sy = m.forward(1, displacement_y);
   const double* xx = m.xx.data();

@@ -3,9 +3,11 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <cmath>
 
 #include "halfspace/error.hpp"
+#include "halfspace/linalg/parallel.hpp"
 
 namespace halfspace::solvers {
 
@@ -36,6 +38,7 @@ CoupledStepResult CoupledStepSolver::solve(std::span<const double> initial_gap, 
   }
   const double mu = tangential_.options().friction_coefficient;
   const double cell_area = op_.grid().cell_area();
+  const linalg::Communicator& comm = op_.communicator();
   auto span = [n](Eigen::ArrayXd& a) { return std::span<double>(a.data(), n); };
   auto cspan = [n](const Eigen::ArrayXd& a) { return std::span<const double>(a.data(), n); };
   op_.apply_traction_coupling(cspan(previous.shear_x), cspan(previous.shear_y), span(w_));
@@ -60,7 +63,9 @@ CoupledStepResult CoupledStepSolver::solve(std::span<const double> initial_gap, 
     op_.apply_pressure_coupling(pressure, span(vx_), span(vy_));
     TangentialLoading step = loading;
     if (sliding) {
-      const double force = mu * result.normal.pressure.sum() * cell_area / std::hypot((*sliding)[0], (*sliding)[1]);
+      const double total =
+          linalg::sums<1>(comm, n, [&](std::size_t i) { return std::array<double, 1>{pressure[i]}; })[0];
+      const double force = mu * total * cell_area / std::hypot((*sliding)[0], (*sliding)[1]);
       step = TangentialLoading::force(force * (*sliding)[0], force * (*sliding)[1]);
     }
     result.tangential = tangential_.solve(pressure, step, previous, cspan(vx_), cspan(vy_));
@@ -74,8 +79,12 @@ CoupledStepResult CoupledStepSolver::solve(std::span<const double> initial_gap, 
     // normal solve saw.
     const TangentialState& s = result.tangential.state;
     op_.apply_traction_coupling(cspan(s.shear_x), cspan(s.shear_y), span(w_new_));
-    const double scale = result.normal.displacement.abs().maxCoeff();
-    const double change = (w_new_ - w_).abs().maxCoeff();
+    const double scale = linalg::max_of(
+        comm, n, [&](std::size_t i) { return std::abs(result.normal.displacement[static_cast<Eigen::Index>(i)]); });
+    const double change = linalg::max_of(comm, n, [&](std::size_t i) {
+      const auto j = static_cast<Eigen::Index>(i);
+      return std::abs(w_new_[j] - w_[j]);
+    });
     result.coupling_residual = scale > 0.0 ? change / scale : change;
     // The returned normal solution carries the shear's displacement it was solved with.
     if (result.coupling_residual <= options_.tolerance) {

@@ -137,11 +137,4 @@ void FrictionOptions::refuse_composite_modulus_only() {
                           "nu2; a rigid body 2 is E2 = inf)");
 }
 
-void FrictionOptions::refuse_processes(int processes) {
-  if (processes <= 1) return;
-  throw SolverOptionError("processes", fmt::format("{}", processes),
-                          "cannot solve friction: the frictional solve runs on one process for now (MPI friction is "
-                          "later work); run it without mpiexec");
-}
-
 }  // namespace halfspace::solvers

@@ -4,9 +4,11 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <cmath>
 #include <string>
 
+#include "halfspace/linalg/parallel.hpp"
 #include "halfspace/operators/tangential_operator.hpp"
 #include "halfspace/solvers/coupled_step.hpp"
 #include "halfspace/solvers/solver_factory.hpp"
@@ -16,10 +18,16 @@
 namespace halfspace::solvers {
 namespace {
 
-// The sum the tangential solver takes as P (sum of p times the cell area),
-// so that the sliding force mu P is its own to rounding.
-double normal_force(const Grid& grid, const SolveResult& normal) {
-  return normal.pressure.sum() * grid.cell_area();
+// The sum the tangential solver takes as P (sum of p times the cell area,
+// over every process), so that the sliding force mu P is its own to rounding.
+double normal_force(const Grid& grid, const SolveResult& normal, const linalg::Communicator& comm) {
+  const Eigen::ArrayXd& p = normal.pressure;
+  return linalg::sums<1>(comm, static_cast<std::size_t>(p.size()),
+                         [&](std::size_t i) {
+                           const double value = p[static_cast<Eigen::Index>(i)];
+                           return std::array<double, 1>{std::isfinite(value) ? value : 0.0};
+                         })[0] *
+         grid.cell_area();
 }
 
 bool same_load(const TangentialLoading& a, const TangentialLoading& b) {
@@ -60,12 +68,14 @@ TangentialResult recorded(const CoupledStepResult& step) {
 // from the state the previous left, the normal solves warm-started from the
 // previous pressure.
 void solve_coupled(const Grid& grid, std::span<const double> heights, const ElasticPair& pair, const Loading& loading,
-                   const SolverOptions& normal, const FrictionOptions& friction, FrictionalSolveResult& result) {
+                   const SolverOptions& normal, const FrictionOptions& friction, const Layout& layout,
+                   FrictionalSolveResult& result) {
   result.coupled = true;
-  const Eigen::ArrayXd gap0 = initial_gap(grid, heights);
-  const std::span<const double> gap(gap0.data(), grid.size());
-  const std::unique_ptr<ContactSolver> normal_solver = make_solver(grid, pair.composite_modulus(), normal);
-  TangentialOperator op(grid, pair, normal.fft_planning);
+  const Eigen::ArrayXd gap0 = initial_gap(grid, heights, layout);
+  const std::span<const double> gap(gap0.data(), static_cast<std::size_t>(gap0.size()));
+  const std::unique_ptr<ContactSolver> normal_solver = make_solver(grid, pair.composite_modulus(), normal, layout);
+  const std::unique_ptr<TangentialOperator> made = layout.make_tangential_operator(grid, pair, normal.fft_planning);
+  TangentialOperator& op = *made;
   std::size_t current = 0;
   TangentialOptions options = friction.tangential_options();
   if (friction.progress) {
@@ -75,7 +85,7 @@ void solve_coupled(const Grid& grid, std::span<const double> heights, const Elas
   }
   TangentialSolver tangential(op, options);
   CoupledStepSolver coupled(*normal_solver, op, tangential, {friction.coupling_tolerance, friction.max_alternations});
-  TangentialState state = TangentialState::unloaded(grid.size());
+  TangentialState state = TangentialState::unloaded(op.local_size());
   // At rest tangentially while the normal load grows: the history's control at zero.
   const bool force = friction.sliding_direction || friction.history.front().control == TangentialControl::force;
   const TangentialLoading rest = force ? TangentialLoading::force(0.0) : TangentialLoading::displacement(0.0);
@@ -153,9 +163,10 @@ std::string FrictionalSolveResult::failure() const {
 
 std::vector<TangentialResult> solve_tangential_history(const Grid& grid, const ElasticPair& pair,
                                                        const SolveResult& normal, const FrictionOptions& friction,
-                                                       FftPlanning planning) {
+                                                       FftPlanning planning, const Layout& layout) {
   friction.validate();
-  TangentialOperator op(grid, pair, planning);
+  const std::unique_ptr<TangentialOperator> made = layout.make_tangential_operator(grid, pair, planning);
+  TangentialOperator& op = *made;
   std::size_t current = 0;  // the step the progress callback reports
   TangentialOptions options = friction.tangential_options();
   if (friction.progress) {
@@ -168,14 +179,15 @@ std::vector<TangentialResult> solve_tangential_history(const Grid& grid, const E
   std::vector<TangentialResult> steps;
   steps.reserve(friction.steps());
   std::vector<TangentialLoading> loads;  // what each step imposed
-  TangentialState state = TangentialState::unloaded(grid.size());
+  TangentialState state = TangentialState::unloaded(op.local_size());
   for (std::size_t k = 0; k < friction.steps(); ++k) {
     TangentialLoading loading;
     if (friction.sliding_direction) {
       // Gross sliding: the force mu P along the direction, which the solver
       // meets with every contact cell at mu p.
       const auto [x, y] = *friction.sliding_direction;
-      const double force = friction.friction_coefficient * normal_force(grid, normal) / std::hypot(x, y);
+      const double force =
+          friction.friction_coefficient * normal_force(grid, normal, op.communicator()) / std::hypot(x, y);
       loading = TangentialLoading::force(force * x, force * y);
     } else {
       loading = friction.history[k];
@@ -200,18 +212,19 @@ std::vector<TangentialResult> solve_tangential_history(const Grid& grid, const E
 
 FrictionalSolveResult solve_frictional_surface(const Grid& grid, std::span<const double> heights,
                                                const ElasticPair& pair, const Loading& loading,
-                                               const SolverOptions& normal, const FrictionOptions& friction) {
+                                               const SolverOptions& normal, const FrictionOptions& friction,
+                                               const Layout& layout) {
   friction.validate(grid, pair, normal, loading);
   FrictionalSolveResult result;
   result.requested_steps = friction.steps();
   result.dundurs_beta = pair.dundurs_beta();
   if (friction.coupled(pair)) {
-    solve_coupled(grid, heights, pair, loading, normal, friction, result);
+    solve_coupled(grid, heights, pair, loading, normal, friction, layout, result);
     return result;
   }
-  result.normal = solve_surface(grid, heights, pair.composite_modulus(), loading, normal);
+  result.normal = solve_surface(grid, heights, pair.composite_modulus(), loading, normal, {}, layout);
   if (!result.normal.converged()) return result;
-  result.steps = solve_tangential_history(grid, pair, result.normal, friction, normal.fft_planning);
+  result.steps = solve_tangential_history(grid, pair, result.normal, friction, normal.fft_planning, layout);
   return result;
 }
 

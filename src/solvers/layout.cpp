@@ -36,6 +36,10 @@ class SerialLayout final : public Layout {
     made.op = std::move(op);
     return made;
   }
+  std::unique_ptr<TangentialOperator> make_tangential_operator(const Grid& grid, const ElasticPair& pair,
+                                                               FftPlanning planning) const override {
+    return std::make_unique<TangentialOperator>(grid, pair, estimated_plans_ ? FftPlanning::estimate : planning);
+  }
   RowSlab rows(const Grid& grid) const override { return {0, grid.dimension() == 1 ? 1 : grid.ny()}; }
   const linalg::Communicator& communicator() const override { return linalg::serial_communicator(); }
 

@@ -102,8 +102,6 @@ TEST(FrictionOptions, RulesOfTheSolve) {
       "adhesion");
   EXPECT_EQ(refused_option([] { FrictionOptions::refuse_coating(); }), "coating");
   EXPECT_EQ(refused_option([] { FrictionOptions::refuse_composite_modulus_only(); }), "pair");
-  EXPECT_EQ(refused_option([] { FrictionOptions::refuse_processes(1); }), "accepted");
-  EXPECT_EQ(refused_option([] { FrictionOptions::refuse_processes(2); }), "processes");
 }
 
 }  // namespace

@@ -141,6 +141,18 @@ solve_case("free-rough-pk-approach", free_rough + ["--solver", "pk", "--approach
 # serial program does: the default solver on one process equals the serial one.
 solve_case("hertz-one-process-multilevel", hertz + ["--solver", "pk-multilevel", "--tol", "1e-12"], (1,))
 
+# A 1D grid (one row, not split into slabs) on several processes: the first
+# process solves it as the serial program does, with what the slabs do not
+# run (subsurface stresses, a coated free half-space), the others waiting.
+line = ["--geometry", "cylinder", "--radius", "0.01", "--grid", "64", "--size", "1e-3", "--force", "1e3",
+        "--solver", "pk-fourier"] + common
+solve_case("line-periodic", line + ["--boundary", "periodic"], (2, 3))
+solve_case("line-free-stresses", line + ["--boundary", "free", "--stress-depths", "1e-5,3e-5", "--stress-nu", "0.3"],
+           (2, 3))
+solve_case("line-free-coated", line[:-len(common)] + common[2:] + [
+    "--boundary", "free", "--layer-thickness", "2e-5", "--layer-E", "3e11", "--layer-nu", "0.25",
+    "--substrate-E", "7e10", "--substrate-nu", "0.33"], (2, 3))
+
 missing = os.path.join(work_dir, "failure.h5")
 for processes in (2, 3):
     failure_case("bad file", processes, ["--height-map", os.path.join(work_dir, "no-such-map.h5"), "--boundary",
@@ -153,10 +165,6 @@ for processes in (2, 3):
                  free_hertz + ["--force", "5", "--adhesion", "exponential", "--work-of-adhesion", "0.1",
                                "--adhesion-range", "1e-8"],
                  "adhesion = exponential is not available with more than one process yet", missing)
-    failure_case("1D not distributed yet", processes,
-                 ["--geometry", "cylinder", "--radius", "0.01", "--grid", "64", "--size", "1e-3", "--boundary",
-                  "periodic", "--force", "1e3", "--solver", "pk-fourier"] + common,
-                 "is not available with more than one process yet", missing)
 
 if failures:
     print(f"{len(failures)} failure(s)")

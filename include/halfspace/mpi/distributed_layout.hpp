@@ -27,6 +27,9 @@ class DistributedLayout final : public solvers::Layout {
   // in the operator's padded buffer, idle between products. Collective.
   solvers::ElasticOperators make_operators(const Grid& grid, const HalfSpace& half_space, bool fourier,
                                            FftPlanning planning) const override;
+  // The slab transforms' tangential operator (2D grids, periodic or free).
+  std::unique_ptr<TangentialOperator> make_tangential_operator(const Grid& grid, const ElasticPair& pair,
+                                                               FftPlanning planning) const override;
   solvers::RowSlab rows(const Grid& grid) const override;
   const linalg::Communicator& communicator() const override { return comm_; }
   // Takes a 2D grid (periodic or free; coated periodic only: the padded

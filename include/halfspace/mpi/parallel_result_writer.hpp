@@ -16,6 +16,8 @@
 #include "halfspace/mpi/mpi_communicator.hpp"
 #include "halfspace/mpi/slab_fft.hpp"
 #include "halfspace/solvers/solve_result.hpp"
+#include "halfspace/solvers/tangential_loading.hpp"
+#include "halfspace/solvers/tangential_result.hpp"
 
 namespace halfspace::mpi {
 
@@ -29,6 +31,18 @@ namespace halfspace::mpi {
 void write_result_slabs(const MpiCommunicator& comm, const std::filesystem::path& path, const Grid& grid,
                         const SlabLayout& layout, std::span<const double> heights, const solvers::SolveResult& result,
                         const io::ResultMetadata& metadata);
+
+// A friction history (io::write_friction_history's file and its CSV
+// beside it) written the same way: `heights`, the normal result's and every
+// step's fields hold this process's rows; the steps' integrals, `loads` and
+// `metadata` are the same on every process. The CSV, written by the first
+// process once the file is complete, is removed first, so an interrupted
+// write leaves no mismatched pair. Throws InputError if `steps` is empty or
+// `loads` has another length. Collective.
+void write_friction_history_slabs(const MpiCommunicator& comm, const std::filesystem::path& path, const Grid& grid,
+                                  const SlabLayout& layout, std::span<const double> heights,
+                                  const solvers::SolveResult& normal, std::span<const TangentialResult> steps,
+                                  std::span<const TangentialLoading> loads, const io::ResultMetadata& metadata);
 
 // A height map (io::write_height_map's file) written the same way, each
 // process its rows of the 2D `grid`'s heights. Collective.

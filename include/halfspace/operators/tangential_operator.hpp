@@ -20,6 +20,7 @@
 #include "halfspace/grid.hpp"
 #include "halfspace/kernels/tangential_coefficients.hpp"
 #include "halfspace/linalg/communicator.hpp"
+#include "halfspace/operators/tangential_transforms.hpp"
 
 namespace halfspace::operators {
 
@@ -27,14 +28,20 @@ class TangentialOperator {
  public:
   // Throws InputError if the pair is out of range (elastic_pair.hpp).
   TangentialOperator(const Grid& grid, const ElasticPair& pair, FftPlanning planning = FftPlanning::estimate);
+  // The same on `transforms` (a distributed layout's slab transforms of
+  // `grid`): fields hold this process's cells, reductions go over its
+  // communicator. Collective.
+  TangentialOperator(const Grid& grid, const ElasticPair& pair, std::unique_ptr<TangentialTransforms> transforms);
   ~TangentialOperator();
   TangentialOperator(const TangentialOperator&) = delete;
   TangentialOperator& operator=(const TangentialOperator&) = delete;
 
   const Grid& grid() const;
   const ElasticPair& pair() const;
-  std::size_t local_size() const { return grid().size(); }
-  const linalg::Communicator& communicator() const { return linalg::serial_communicator(); }
+  // The cells held here (all of the grid's serially) and the processes the
+  // fields are spread over.
+  std::size_t local_size() const;
+  const linalg::Communicator& communicator() const;
 
   // (u_x, u_y) = C (t_x, t_y): the relative tangential displacement (m) of
   // the surfaces under the traction (Pa) body 1 exerts on body 2. Each span

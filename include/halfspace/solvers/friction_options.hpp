@@ -80,10 +80,9 @@ struct FrictionOptions {
   // front ends that find them before they build a pair: a coated half-space
   // ("coating": the tangential operator is the homogeneous half-space's), a
   // material given as E* alone ("pair": E* does not fix the tangential
-  // compliance), several processes ("processes": friction is serial for now).
+  // compliance).
   static void refuse_coating();
   static void refuse_composite_modulus_only();
-  static void refuse_processes(int processes);
 };
 
 }  // namespace halfspace::solvers

@@ -16,6 +16,7 @@
 #include "halfspace/elastic_pair.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/solvers/friction_options.hpp"
+#include "halfspace/solvers/layout.hpp"
 #include "halfspace/solvers/loading.hpp"
 #include "halfspace/solvers/solve_result.hpp"
 #include "halfspace/solvers/solver_options.hpp"
@@ -50,10 +51,14 @@ struct FrictionalSolveResult {
 // comment). Throws SolverOptionError as
 // FrictionOptions::validate(grid, pair, normal, loading) does, InputError
 // for sizes that do not match the grid, and the tangential solver's
-// InputError when, under approach control, a force step exceeds mu P.
+// InputError when, under approach control, a force step exceeds mu P. On a
+// distributed `layout` the heights and the result's fields are this
+// process's cells, every sum and maximum is over its communicator, and the
+// call is collective.
 FrictionalSolveResult solve_frictional_surface(const Grid& grid, std::span<const double> heights,
                                                const ElasticPair& pair, const Loading& loading,
-                                               const SolverOptions& normal, const FrictionOptions& friction);
+                                               const SolverOptions& normal, const FrictionOptions& friction,
+                                               const Layout& layout = serial_layout());
 
 // The tangential steps of `friction` under the converged normal solution
 // `normal` (its pressure), for a front end that made the normal solve itself;
@@ -61,9 +66,11 @@ FrictionalSolveResult solve_frictional_surface(const Grid& grid, std::span<const
 // A step whose load equals the previous step's (the turning point that ends
 // one branch of a loop and starts the next) is not solved again: its state
 // is the previous one, exactly (no slip increment), with no dissipation.
+// On `layout` as solve_frictional_surface.
 std::vector<TangentialResult> solve_tangential_history(const Grid& grid, const ElasticPair& pair,
                                                        const SolveResult& normal, const FrictionOptions& friction,
-                                                       FftPlanning planning = FftPlanning::estimate);
+                                                       FftPlanning planning = FftPlanning::estimate,
+                                                       const Layout& layout = serial_layout());
 
 // Bytes a frictional solve adds to the normal one's peak on `grid` with
 // `steps` tangential steps kept for writing: the tangential operator's padded

@@ -8,11 +8,13 @@
 #include <cstddef>
 #include <memory>
 
+#include "halfspace/elastic_pair.hpp"
 #include "halfspace/fft/fft_planning.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/half_space.hpp"
 #include "halfspace/linalg/communicator.hpp"
 #include "halfspace/operators/influence_operator.hpp"
+#include "halfspace/operators/tangential_operator.hpp"
 #include "halfspace/solvers/level_transfer.hpp"
 #include "halfspace/solvers/preconditioner.hpp"
 
@@ -44,6 +46,11 @@ class Layout {
   // Collective; throws as the operators do.
   virtual ElasticOperators make_operators(const Grid& grid, const HalfSpace& half_space, bool fourier,
                                           FftPlanning planning) const = 0;
+  // The tangential compliance (and the normal-tangential coupling) of
+  // `pair` on `grid` for fields held as this layout holds them, for the
+  // frictional solve. Collective; throws as the operator does.
+  virtual std::unique_ptr<TangentialOperator> make_tangential_operator(const Grid& grid, const ElasticPair& pair,
+                                                                       FftPlanning planning) const = 0;
   // The rows of `grid` this process holds (a 1D grid: its one row).
   virtual RowSlab rows(const Grid& grid) const = 0;
   // The processes a field is spread over.
