@@ -97,8 +97,8 @@ class ConjugateGradientMethod {
   const double* radius_;
   int& updates_since_exact_;  // the iteration's: products since u = C q was exact
   const double self_ = op_.self_influence().xx;
-  double rho_old_ = 0.0;         // the last z . Pi R g
-  bool sets_unchanged_ = false;  // no cell changed set in the last step
+  double rho_old_ = 0.0;   // the last z . Pi R g
+  bool momentum_ = false;  // the last step was taken: its direction may carry over
 };
 
 }  // namespace halfspace::solvers::tangential
