@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <optional>
 #include <utility>
 
@@ -86,8 +87,9 @@ struct Fields {
   double* ty;
   double* rx;
   double* ry;
-  double* wx;  // conjugate gradients only
-  double* wy;
+  // Conjugate gradients only: each contact cell's set within a step, while
+  // gx, gy hold C d (tangential_conjugate_gradient.cpp).
+  std::uint8_t* kind;
 };
 
 // A 2-vector and a symmetric 2x2 matrix.
