@@ -12,11 +12,13 @@
 // HALFSPACE_BENCH_LARGE=1 adds 2048^2 and 4096^2.
 #include <benchmark/benchmark.h>
 #include <sys/resource.h>
+#include <unistd.h>
 
 #include <Eigen/Core>
 #include <chrono>
 #include <cstddef>
 #include <exception>
+#include <fstream>
 #include <memory>
 #include <span>
 #include <string>
@@ -50,6 +52,16 @@ constexpr double kSecondLoad = 0.25;  // back again
 
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// The process's resident bytes now (Linux: /proc/self/statm's second
+// field, in pages).
+double resident_bytes() {
+  std::ifstream statm("/proc/self/statm");
+  double pages_total = 0.0;
+  double pages_resident = 0.0;
+  statm >> pages_total >> pages_resident;
+  return pages_resident * static_cast<double>(sysconf(_SC_PAGESIZE));
 }
 
 double peak_bytes() {
@@ -93,13 +105,6 @@ StepSetup& step_setup(std::size_t n, solvers::TangentialMethod method) {
   setup->multilevel = solvers::make_solver(*setup->grid, e_star, settings);  // the default type
   settings.type = solvers::SolverType::pk_fourier;
   setup->fourier = solvers::make_solver(*setup->grid, e_star, settings);
-  setup->op = std::make_unique<TangentialOperator>(*setup->grid, setup->pair);
-  solvers::TangentialOptions options;
-  options.friction_coefficient = kMu;
-  options.tolerance = kTolerance;
-  options.max_iterations = 20000;
-  options.method = method;
-  setup->tangential = std::make_unique<TangentialSolver>(*setup->op, options);
   slot = std::move(setup);
   return *slot;
 }
@@ -123,7 +128,8 @@ void tangential_step(benchmark::State& state, std::size_t n, solvers::Tangential
   SolveResult fourier;
   TangentialResult first;
   TangentialResult second;
-  const TangentialState unloaded = TangentialState::unloaded(cells);
+  TangentialState unloaded;
+  double tangential_bytes = 0.0;
   for (auto _ : state) {
     auto start = Clock::now();
     multilevel = setup->multilevel->solve(gap, setup->loading);
@@ -131,6 +137,19 @@ void tangential_step(benchmark::State& state, std::size_t n, solvers::Tangential
     start = Clock::now();
     fourier = setup->fourier->solve(gap, setup->loading);
     fourier_seconds += seconds_since(start);
+    if (!setup->tangential) {
+      // The friction's own memory: what the process gains from here on
+      // (made after the normal solves, so none of their work is counted).
+      tangential_bytes = -resident_bytes();
+      setup->op = std::make_unique<TangentialOperator>(*setup->grid, setup->pair);
+      solvers::TangentialOptions options;
+      options.friction_coefficient = kMu;
+      options.tolerance = kTolerance;
+      options.max_iterations = 20000;
+      options.method = method;
+      setup->tangential = std::make_unique<TangentialSolver>(*setup->op, options);
+    }
+    if (unloaded.size() != cells) unloaded = TangentialState::unloaded(cells);
     const std::span<const double> pressure(multilevel.pressure.data(), cells);
     const double limit = kMu * multilevel.total_force;
     start = Clock::now();
@@ -140,6 +159,7 @@ void tangential_step(benchmark::State& state, std::size_t n, solvers::Tangential
     second = setup->tangential->solve(pressure, TangentialLoading::force(kSecondLoad * limit), first.state);
     second_seconds += seconds_since(start);
     state.SetIterationTime(first_seconds);
+    if (tangential_bytes < 0.0) tangential_bytes += resident_bytes();
   }
   const double runs = static_cast<double>(state.iterations());
   state.counters["contact_fraction"] = multilevel.contact_fraction;
@@ -157,6 +177,9 @@ void tangential_step(benchmark::State& state, std::size_t n, solvers::Tangential
   state.counters["stick_fraction"] = first.stick_fraction;
   state.counters["products_first"] = first.operator_applications + first.preconditioner_applications;
   state.counters["peak_B_per_point"] = peak_bytes() / static_cast<double>(cells);
+  // The operator, the solver and three states (at rest, step 1, step 2),
+  // measured on the first run; a step holds two (previous and its own).
+  state.counters["friction_B_per_point"] = tangential_bytes / static_cast<double>(cells);
   const bool converged = multilevel.converged() && fourier.converged() && first.converged() && second.converged();
   state.counters["converged"] = converged ? 1.0 : 0.0;
   if (!converged) state.SetLabel(first.message + " " + second.message);

@@ -27,8 +27,9 @@ import json, statistics, sys
 work, sizes, method = sys.argv[1], sys.argv[2].split(","), sys.argv[3]
 print(f"method {method}; medians of the runs; times in s")
 print("| grid | contact | normal iterations (pk-multilevel / pk-fourier) | tangential iterations (step 1 / step 2) "
-      "| normal s | step 1 s | step 1 / normal | step 2 / normal | step 1 / pk-fourier | peak B/point | converged |")
-print("|---|---|---|---|---|---|---|---|---|---|---|")
+      "| normal s | step 1 s | step 1 / normal | step 2 / normal | step 1 / pk-fourier | peak B/point | friction B/point "
+      "| converged |")
+print("|---|---|---|---|---|---|---|---|---|---|---|---|")
 for n in sizes:
     runs = [b for b in json.load(open(f"{work}/{n}.json"))["benchmarks"] if b.get("run_type") == "iteration"]
     med = lambda key: statistics.median(r[key] for r in runs)
@@ -36,5 +37,6 @@ for n in sizes:
           f"| {med('first_iterations'):.0f} / {med('second_iterations'):.0f} | {med('normal_s'):.3g} "
           f"| {med('first_s'):.3g} | {med('first_over_normal'):.2f} | {med('second_over_normal'):.2f} "
           f"| {med('first_over_fourier'):.2f} | {max(r['peak_B_per_point'] for r in runs):.0f} "
+          f"| {max(r['friction_B_per_point'] for r in runs):.0f} "
           f"| {min(r['converged'] for r in runs):.0f} |")
 PY

@@ -50,8 +50,12 @@ CoupledStepResult CoupledStepSolver::solve(std::span<const double> initial_gap, 
     result.alternations = pass;
     for (std::size_t i = 0; i < n; ++i)
       gap_[static_cast<Eigen::Index>(i)] = initial_gap[i] + w_[static_cast<Eigen::Index>(i)];
+    // The step's solve times are its alternations' together (the last
+    // alternation's warm-started normal solve alone may take no time).
+    const double normal_seconds = result.normal.wall_seconds;
     result.normal =
         normal_.solve(cspan(gap_), normal_loading, warm.size() == 0 ? std::span<const double>{} : cspan(warm));
+    result.normal.wall_seconds += normal_seconds;
     if (!result.normal.converged()) {
       result.status = result.normal.status;
       result.message =
@@ -68,7 +72,13 @@ CoupledStepResult CoupledStepSolver::solve(std::span<const double> initial_gap, 
       const double force = mu * total * cell_area / std::hypot((*sliding)[0], (*sliding)[1]);
       step = TangentialLoading::force(force * (*sliding)[0], force * (*sliding)[1]);
     }
+    // Each alternation's tangential solve starts from the step's start: from
+    // the last alternation's traction it took as many iterations (docs/
+    // development-log.md, a faster tangential step).
+    const double tangential_seconds = result.tangential.wall_seconds;
     result.tangential = tangential_.solve(pressure, step, previous, cspan(vx_), cspan(vy_));
+    result.tangential.wall_seconds += tangential_seconds;
+    result.tangential_iterations += result.tangential.iterations;
     if (!result.tangential.converged()) {
       result.status = result.tangential.status;
       result.message =

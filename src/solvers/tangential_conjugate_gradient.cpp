@@ -11,15 +11,18 @@
 // each slipping cell by sqrt(C_ii / (C_ii + lambda/r)): the curvature, which
 // the symbol does not see, dominates on cells of small mu p, and without
 // the scaling a rough contact takes ten times the iterations (docs/
-// development-log.md). Polak-Ribiere momentum, which restarts
-// whenever a set changes, and under force control the directions are kept
+// development-log.md). Polak-Ribiere momentum, kept (restricted) when a
+// set changes, and under force control the directions are kept
 // orthogonal to the force's constraint. Three FFT products per iteration
-// (C d, the preconditioner, C q).
+// (C d, the preconditioner, C q). C d is kept in the slip increment's
+// fields (made again from u at the next iteration's start), each cell's set
+// in a byte: the solver holds 56 B per point, not 72.
 #include "tangential_conjugate_gradient.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 
 namespace halfspace::solvers::tangential {
 
@@ -28,12 +31,11 @@ void ConjugateGradientMethod::step() {
   // The reduced gradient R g (pass A), and the projector onto the force's
   // constraint: sum over stick cells of v plus over slipping cells of
   // their tangent part vanishes; Pi v = v - R a with a = Gram^-1 (sum R v).
-  const auto [released, g_dot_z_old, gram_xx, gram_xy, gram_yy, sum_x, sum_y] = sums<7>(comm_, n_, [&](std::size_t i) {
+  const auto [g_dot_z_old, gram_xx, gram_xy, gram_yy, sum_x, sum_y] = sums<6>(comm_, n_, [&](std::size_t i) {
     const Cell c = cell(i);
-    if (!c.contact) return std::array<double, 7>{};
+    if (!c.contact) return std::array<double, 6>{};
     const Pair g = c.tangent(f_.gx[i], f_.gy[i]);
-    return std::array<double, 7>{c.released ? 1.0 : 0.0,
-                                 g.x * f_.tx[i] + g.y * f_.ty[i],
+    return std::array<double, 6>{g.x * f_.tx[i] + g.y * f_.ty[i],
                                  c.slip ? 1.0 - c.nx * c.nx : 1.0,
                                  c.slip ? -c.nx * c.ny : 0.0,
                                  c.slip ? 1.0 - c.ny * c.ny : 1.0,
@@ -75,61 +77,77 @@ void ConjugateGradientMethod::step() {
     return std::array<double, 2>{g.x * f_.tx[i] + g.y * f_.ty[i], g.x * d.x + g.y * d.y};
   });
   // Polak-Ribiere's momentum (with the changing restriction the flexible
-  // form), none after a set changed or if the direction would not descend.
+  // form), carried through set changes restricted to the new sets; none
+  // after a step that was not taken or if the direction would not descend.
+  // Restarting on every change (as Polonsky & Keer do on cells entering)
+  // left a rough contact's step near steepest descent, since some spot
+  // changes set in almost every iteration: 149 iterations at 1024^2 and a
+  // stall at 512^2, against 104 and 37 carried (docs/development-log.md).
   double beta = 0.0;
-  if (sets_unchanged_ && released == 0.0 && rho_old_ > 0.0) {
+  if (momentum_ && rho_old_ > 0.0) {
     beta = std::max(0.0, (rho - g_dot_z_old) / rho_old_);
     if (!(rho + beta * g_dot_d_old > 0.0)) beta = 0.0;
   }
   rho_old_ = rho;
   if (!(rho > 0.0)) {
-    sets_unchanged_ = false;
+    momentum_ = false;
     return;  // the reduced gradient vanishes: only the sets can move
   }
-  // Pass D: d = z + beta R d_old.
-  for_each_index(n_, [&](std::size_t i) {
+  // Pass D: d = z + beta R d_old, with the step's model along it but for
+  // C d: the descent Pi R g . d and the circles' curvature term; each
+  // cell's set is kept, since C d then overwrites g (one field pair less).
+  const auto [descent, bending] = sums<2>(comm_, n_, [&](std::size_t i) {
     const Cell c = cell(i);
-    const Pair d = c.contact ? c.tangent(f_.rx[i], f_.ry[i]) : Pair{};
-    f_.rx[i] = f_.tx[i] + beta * d.x;
-    f_.ry[i] = f_.ty[i] + beta * d.y;
+    f_.kind[i] = !c.contact ? kOutside : (c.slip ? kSlip : kStick);
+    if (!c.contact) {
+      f_.rx[i] = 0.0;
+      f_.ry[i] = 0.0;
+      return std::array<double, 2>{};
+    }
+    const Pair d = c.tangent(f_.rx[i], f_.ry[i]);
+    const double dx = f_.tx[i] + beta * d.x;
+    const double dy = f_.ty[i] + beta * d.y;
+    f_.rx[i] = dx;
+    f_.ry[i] = dy;
+    const Pair g = projected_gradient(i, shift_g);
+    return std::array<double, 2>{g.x * dx + g.y * dy, c.curvature * (dx * dx + dy * dy)};
   });
-  op_.apply({f_.rx, n_}, {f_.ry, n_}, {f_.wx, n_}, {f_.wy, n_});
+  // w = C d into g's fields.
+  double* const wx = f_.gx;
+  double* const wy = f_.gy;
+  op_.apply({f_.rx, n_}, {f_.ry, n_}, {wx, n_}, {wy, n_});
   ++result_.operator_applications;
   // The step minimising the quadratic model along d (curvature included).
-  const auto [descent, model] = sums<2>(comm_, n_, [&](std::size_t i) {
-    const Cell c = cell(i);
-    if (!c.contact) return std::array<double, 2>{};
-    const Pair g = projected_gradient(i, shift_g);
-    const double dx = f_.rx[i];
-    const double dy = f_.ry[i];
-    return std::array<double, 2>{g.x * dx + g.y * dy,
-                                 dx * f_.wx[i] + dy * f_.wy[i] + c.curvature * (dx * dx + dy * dy)};
-  });
+  const auto [stiffness] =
+      sums<1>(comm_, n_, [&](std::size_t i) { return std::array<double, 1>{f_.rx[i] * wx[i] + f_.ry[i] * wy[i]}; });
+  const double model = stiffness + bending;
   if (!(descent > 0.0 && model > 0.0)) {
-    sets_unchanged_ = false;
+    // Not taken (the next evaluate() makes g again from u).
+    momentum_ = false;
     return;
   }
   const double alpha = descent / model;
   // Pass E: q -= alpha d, slipping cells back onto their circles, stick
   // cells over their discs clipped onto them.
   const auto [clipped_cells, stick_cells, sum_qx, sum_qy] = sums<4>(comm_, n_, [&](std::size_t i) {
-    const Cell c = cell(i);
-    if (!c.contact) return std::array<double, 4>{};
+    const std::uint8_t kind = f_.kind[i];
+    if (kind == kOutside) return std::array<double, 4>{};
+    const bool slip = kind == kSlip;
     const double x = f_.qx[i] - alpha * f_.rx[i];
     const double y = f_.qy[i] - alpha * f_.ry[i];
     const double radius = radius_[i];
     const double m = magnitude(x, y);
-    if (c.slip || m > radius) {
+    if (slip || m > radius) {
       const double scale = m > 0.0 ? radius / m : 0.0;
       f_.qx[i] = scale * x;
       f_.qy[i] = scale * y;
-      return std::array<double, 4>{c.slip ? 0.0 : 1.0, 0.0, f_.qx[i], f_.qy[i]};
+      return std::array<double, 4>{slip ? 0.0 : 1.0, 0.0, f_.qx[i], f_.qy[i]};
     }
     f_.qx[i] = x;
     f_.qy[i] = y;
     return std::array<double, 4>{0.0, 1.0, x, y};
   });
-  sets_unchanged_ = clipped_cells == 0.0 && released == 0.0;
+  momentum_ = true;
   bool linear = clipped_cells == 0.0;
   if (force) {
     // The directions keep the force; what the circles and clips moved is
@@ -155,7 +173,6 @@ void ConjugateGradientMethod::step() {
       for_each_index(
           n_, [&](std::size_t i) { std::tie(f_.qx[i], f_.qy[i]) = clipped(f_.qx[i] + sx, f_.qy[i] + sy, radius_[i]); });
       linear = false;
-      sets_unchanged_ = false;
     }
   }
   // u follows q by the product C d already made, up to the circles'
@@ -163,8 +180,8 @@ void ConjugateGradientMethod::step() {
   // and always before the stop (evaluate()).
   if (linear && updates_since_exact_ + 1 < kConjugateUpdatesBetweenExactProducts) {
     for_each_index(n_, [&](std::size_t i) {
-      f_.ux[i] -= alpha * f_.wx[i];
-      f_.uy[i] -= alpha * f_.wy[i];
+      f_.ux[i] -= alpha * wx[i];
+      f_.uy[i] -= alpha * wy[i];
     });
     ++updates_since_exact_;
   } else {

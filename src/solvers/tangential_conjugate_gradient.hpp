@@ -7,6 +7,8 @@
 // tangential_conjugate_gradient.cpp). Internal to src/solvers.
 #pragma once
 
+#include <cstdint>
+
 #include "tangential_iteration.hpp"
 
 namespace halfspace::solvers::tangential {
@@ -26,10 +28,15 @@ class ConjugateGradientMethod {
 
   // One preconditioned conjugate-gradient step on the stick/slip sets (the
   // file comment); g holds ds from evaluate(), t the last preconditioned
-  // gradient z, r the last direction d, w is C d.
+  // gradient z, r the last direction d; g holds C d within the step.
   void step();
 
  private:
+  // Fields::kind's values.
+  static constexpr std::uint8_t kOutside = 0;
+  static constexpr std::uint8_t kStick = 1;  // stick or released
+  static constexpr std::uint8_t kSlip = 2;
+
   // A contact cell's part in the reduced problem: stick (both components
   // free; also a cell at the limit whose slip points outward, `released`) or
   // slip (only the tangent to its circle free, curvature lambda/r).
@@ -97,8 +104,8 @@ class ConjugateGradientMethod {
   const double* radius_;
   int& updates_since_exact_;  // the iteration's: products since u = C q was exact
   const double self_ = op_.self_influence().xx;
-  double rho_old_ = 0.0;         // the last z . Pi R g
-  bool sets_unchanged_ = false;  // no cell changed set in the last step
+  double rho_old_ = 0.0;   // the last z . Pi R g
+  bool momentum_ = false;  // the last step was taken: its direction may carry over
 };
 
 }  // namespace halfspace::solvers::tangential

@@ -82,8 +82,7 @@ TangentialSolver::TangentialSolver(TangentialOperator& op, TangentialOptions opt
   radius_.setZero(n);
   for (Eigen::ArrayXd* field : {&gx_, &gy_, &tx_, &ty_, &rx_, &ry_}) field->setZero(n);
   if (options_.method == TangentialMethod::conjugate_gradient) {
-    wx_.setZero(n);
-    wy_.setZero(n);
+    kind_.assign(op_.local_size(), 0);
   }
 }
 
@@ -177,8 +176,7 @@ TangentialResult TangentialSolver::solve(std::span<const double> pressure, const
                 ty_.data(),
                 rx_.data(),
                 ry_.data(),
-                wx_.data(),
-                wy_.data()};
+                kind_.data()};
   for (Eigen::ArrayXd* field : {&tx_, &ty_, &rx_, &ry_}) field->setZero();
   TangentialIteration it(op_, options_, problem, result, fields);
   ConjugateGradientMethod conjugate_gradient(it);

@@ -44,6 +44,7 @@ struct CoupledStepResult {
   TangentialResult tangential;
   int alternations = 0;
   double coupling_residual = 0.0;  // the last pass's change of K_c^T q over max |K p|
+  int tangential_iterations = 0;   // over all alternations (tangential.iterations is the last one's)
   SolveStatus status = SolveStatus::breakdown;
   std::string message;  // why it stopped, empty when converged
 

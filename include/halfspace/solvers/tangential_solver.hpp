@@ -34,8 +34,10 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <functional>
 #include <span>
+#include <vector>
 
 #include "halfspace/operators/tangential_operator.hpp"
 #include "halfspace/solvers/tangential_loading.hpp"
@@ -92,10 +94,12 @@ class TangentialSolver {
   TangentialOperator& op_;
   TangentialOptions options_;
   Eigen::ArrayXd radius_;  // mu p
-  // The slip increment, then workspace: the methods' search direction and
-  // previous iterate or preconditioned gradient, C times the direction.
-  Eigen::ArrayXd gx_, gy_, tx_, ty_, rx_, ry_, wx_, wy_;
-  Eigen::ArrayXd fx_, fy_;  // the previous displacement less the fixed part (made on the first coupled solve)
+  // The slip increment (and, within a conjugate-gradient step, C times the
+  // direction), then workspace: the methods' search direction and previous
+  // iterate or preconditioned gradient.
+  Eigen::ArrayXd gx_, gy_, tx_, ty_, rx_, ry_;
+  std::vector<std::uint8_t> kind_;  // conjugate gradients: each cell's set within a step
+  Eigen::ArrayXd fx_, fy_;          // the previous displacement less the fixed part (made on the first coupled solve)
 };
 
 }  // namespace halfspace::solvers
