@@ -118,6 +118,7 @@ int run_frictional_solve(const SolveSetup& setup) {
                                                               : describe_tangential(options.history[step], setup.grid));
         }
         progress.iteration(iteration, residual);
+        return solvers::IterationDecision::proceed;
       };
     }
     result.steps =
