@@ -35,34 +35,34 @@ class ProgressHook {
  public:
   explicit ProgressHook(nb::object callback) : callback_(std::move(callback)) {}
 
-  IterationDecision operator()(int iteration, double residual) {
-    if (error_pending_) return IterationDecision::stop;
+  solvers::IterationDecision operator()(int iteration, double residual) {
+    if (error_pending_) return solvers::IterationDecision::stop;
     const bool call = !callback_.is_none();
     if (!call) {
       const auto now = std::chrono::steady_clock::now();
-      if (now < next_check_) return IterationDecision::proceed;
+      if (now < next_check_) return solvers::IterationDecision::proceed;
       next_check_ = now + kSignalCheckInterval;
     }
     nb::gil_scoped_acquire gil;
     if (PyErr_CheckSignals() != 0) return stop_with_error();
-    if (!call) return IterationDecision::proceed;
+    if (!call) return solvers::IterationDecision::proceed;
     try {
       const nb::object answer = callback_(iteration, residual);
-      return answer.ptr() == Py_False ? IterationDecision::stop : IterationDecision::proceed;
+      return answer.ptr() == Py_False ? solvers::IterationDecision::stop : solvers::IterationDecision::proceed;
     } catch (nb::python_error& error) {
       error.restore();
       return stop_with_error();
     }
   }
-  ProgressCallback callback() {
+  solvers::ProgressCallback callback() {
     return [this](int iteration, double residual) { return (*this)(iteration, residual); };
   }
   bool error_pending() const { return error_pending_; }
 
  private:
-  IterationDecision stop_with_error() {
+  solvers::IterationDecision stop_with_error() {
     error_pending_ = true;
-    return IterationDecision::stop;
+    return solvers::IterationDecision::stop;
   }
   // Short enough that Ctrl-C feels immediate, long enough that the GIL is
   // taken a negligible number of times.

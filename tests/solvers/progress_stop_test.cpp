@@ -12,8 +12,8 @@
 #include "halfspace/analysis/load_sweep.hpp"
 #include "halfspace/geometry/builtin_surface.hpp"
 #include "halfspace/solvers/surface_solve.hpp"
-#include "halfspace/surface/self_affine.hpp"
 #include "halfspace/solvers/tangential_solver.hpp"
+#include "halfspace/surface/self_affine.hpp"
 #include "support/pk_solvers.hpp"
 
 namespace halfspace::solvers {
@@ -69,14 +69,12 @@ TEST(ProgressStopTest, StopsTheAdhesiveSolver) {
   const Grid grid = Grid::plane(64, 64, 1e-8, 1e-8, Boundary::periodic);
   // A sphere of radius 1 um; Maugis-Dugdale with w = 0.01 J/m^2 and h0 = 2 nm
   // (sigma0 = 5 MPa: the cohesive zone spans many 10 nm cells at E* = 1 GPa).
-  const Eigen::ArrayXd heights =
-      geometry::make_surface_heights(grid, {geometry::SurfaceShape::sphere, 1e-6, 0.0, 0.0});
+  const Eigen::ArrayXd heights = geometry::make_surface_heights(grid, {geometry::SurfaceShape::sphere, 1e-6, 0.0, 0.0});
   SolverOptions options = testing::test_options(SolverType::pk);
   options.adhesion = SolverOptions::Adhesion{AdhesionLaw::maugis_dugdale(0.01, 2e-9), kUnreachableTolerance};
   std::vector<int> seen;
   options.progress = stop_at(kStopAt, seen);
-  const SolveResult result =
-      solve_surface(grid, {heights.data(), grid.size()}, 1e9, Loading::approach(1e-9), options);
+  const SolveResult result = solve_surface(grid, {heights.data(), grid.size()}, 1e9, Loading::approach(1e-9), options);
   expect_stopped_at(result, seen, kStopAt);
 }
 
@@ -108,8 +106,8 @@ TEST(ProgressStopTest, EndsASweepAtTheStoppedStep) {
     return solves == 2 && iteration == 1 ? IterationDecision::stop : IterationDecision::proceed;
   };
   const std::vector<double> loads{1e7, 2e7, 3e7};
-  const std::vector<analysis::SweepStep> steps = analysis::sweep_surface(
-      grid, {heights.data(), grid.size()}, 1e9, ControlMode::mean_pressure, loads, options);
+  const std::vector<analysis::SweepStep> steps =
+      analysis::sweep_surface(grid, {heights.data(), grid.size()}, 1e9, ControlMode::mean_pressure, loads, options);
   ASSERT_EQ(steps.size(), 2U);
   EXPECT_TRUE(steps[0].result.converged()) << steps[0].result.message;
   EXPECT_EQ(steps[1].result.status, SolveStatus::stopped);

@@ -138,8 +138,6 @@ namespace halfspace {
 using solvers::AdhesionRecord;
 using solvers::CoarseStart;
 using solvers::DeflationRecord;
-using solvers::IterationDecision;
-using solvers::ProgressCallback;
 using solvers::SolveResult;
 using solvers::SolveStatus;
 using solvers::to_string;
