@@ -1,11 +1,12 @@
 // The public face of halfspace in one include: the types a user of the
 // library calls (grid, height maps and their readers and writers, the elastic
-// bodies, loads, solver options and the solve, results and their statistics,
-// load sweeps, subsurface stresses, the tangential (friction) step and the
-// lubricated film). The other headers under halfspace/ are
-// the engine's parts (transforms, kernels, preconditioners, level transfer):
-// stable enough to include, but a program that only solves contacts should
-// not need them. docs/architecture.md says which folder holds what.
+// bodies, the problem builder, loads, solver options, the progress callback
+// and the solve, results and their statistics, load sweeps, subsurface
+// stresses, the tangential (friction) step and the lubricated film). Exactly
+// the headers this one reaches are installed (CMakeLists.txt); the others
+// under halfspace/ are the engine's parts (transforms, kernels,
+// preconditioners, level transfer), for the library's own code and tests.
+// docs/architecture.md says which folder holds what.
 #pragma once
 
 #include "halfspace/analysis/adhesion_sweep.hpp"
