@@ -125,6 +125,7 @@ int run_frictional_solve(const SolveSetup& setup, const FrictionPlace& place) {
                                                               : describe_tangential(options.history[step], setup.grid));
         }
         progress.iteration(iteration, residual);
+        return solvers::IterationDecision::proceed;
       };
     }
     result.steps = solvers::solve_tangential_history(setup.grid, pair, result.normal, friction,

@@ -90,9 +90,12 @@ void Progress::clear() {
   drawn_ = false;
 }
 
-std::function<void(int, double)> Progress::callback() {
+solvers::ProgressCallback Progress::callback() {
   if (!active_) return {};
-  return [this](int iteration, double residual) { this->iteration(iteration, residual); };
+  return [this](int iteration, double residual) {
+    this->iteration(iteration, residual);
+    return solvers::IterationDecision::proceed;
+  };
 }
 
 }  // namespace halfspace::app

@@ -4,8 +4,9 @@
 
 #include <chrono>
 #include <cstddef>
-#include <functional>
 #include <string>
+
+#include "halfspace/solvers/solve_result.hpp"
 
 namespace halfspace::app {
 
@@ -30,9 +31,9 @@ class Progress {
   // Removes the line (before the summary is printed).
   void clear();
 
-  // A callback for SolverOptions::progress that feeds iteration(); empty
-  // when inactive, so the solver does not even call it.
-  std::function<void(int, double)> callback();
+  // A callback for SolverOptions::progress that feeds iteration() and never
+  // stops the solve; empty when inactive, so the solver does not even call it.
+  solvers::ProgressCallback callback();
 
  private:
   using Clock = std::chrono::steady_clock;

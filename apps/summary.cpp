@@ -47,6 +47,8 @@ std::string stop_reason(const SolveResult& result) {
       return "converged";
     case SolveStatus::iteration_limit:
       return "iteration limit reached";
+    case SolveStatus::stopped:
+      return "stopped";
     case SolveStatus::breakdown:
       return result.message.empty() ? std::string("breakdown") : fmt::format("breakdown ({})", result.message);
   }

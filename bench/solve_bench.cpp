@@ -29,6 +29,7 @@
 #include "halfspace/operators/fft_influence_operator.hpp"
 #include "halfspace/solvers/fourier_preconditioner.hpp"
 #include "halfspace/solvers/solver_factory.hpp"
+#include "halfspace/solvers/surface_solve.hpp"
 #include "halfspace/surface/self_affine.hpp"
 #include "halfspace/threads.hpp"
 
@@ -166,7 +167,7 @@ SolveSetup& solve_setup(const SolveCase& solve_case, std::size_t n, int threads)
     const double dx = kBoxSize / static_cast<double>(n);
     setup->grid = std::make_unique<Grid>(Grid::plane(n, n, dx, dx, Boundary::periodic));
     const RoughSurface surface = self_affine_surface(n);
-    setup->initial_gap = geometry::initial_gap_from_heights(surface.heights);
+    setup->initial_gap = solvers::initial_gap(*setup->grid, {surface.heights.data(), setup->grid->size()});
     setup->loading = Loading::mean_pressure(kReducedPressure * kEStar * surface.rms_slope);
   } else if (solve_case.shape == "rough_domain_2d") {
     setup->grid = std::make_unique<Grid>(Grid::plane(n, n, kDomainSpacing, kDomainSpacing, Boundary::periodic));
@@ -175,7 +176,8 @@ SolveSetup& solve_setup(const SolveCase& solve_case, std::size_t n, int threads)
     spec.short_cutoff = kDomainShortCutoff;
     spec.rms_slope = kDomainRmsSlope;
     spec.seed = 1;
-    setup->initial_gap = geometry::initial_gap_from_heights(surface::make_self_affine_surface(*setup->grid, spec));
+    const Eigen::ArrayXd heights = surface::make_self_affine_surface(*setup->grid, spec);
+    setup->initial_gap = solvers::initial_gap(*setup->grid, {heights.data(), setup->grid->size()});
     setup->loading = Loading::mean_pressure(kDomainReducedPressure * kEStar * kDomainRmsSlope);
   } else {
     const double contact_radius = std::cbrt(3.0 * kForce * kSphereRadius / (4.0 * kEStar));
@@ -184,7 +186,8 @@ SolveSetup& solve_setup(const SolveCase& solve_case, std::size_t n, int threads)
     geometry::SurfaceSpec sphere;
     sphere.shape = geometry::SurfaceShape::sphere;
     sphere.radius = kSphereRadius;
-    setup->initial_gap = geometry::initial_gap_from_heights(geometry::make_surface_heights(*setup->grid, sphere));
+    const Eigen::ArrayXd heights = geometry::make_surface_heights(*setup->grid, sphere);
+    setup->initial_gap = solvers::initial_gap(*setup->grid, {heights.data(), setup->grid->size()});
     setup->loading = Loading::force(kForce);
   }
   solvers::SolverOptions settings;

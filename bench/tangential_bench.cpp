@@ -30,6 +30,7 @@
 #include "halfspace/grid.hpp"
 #include "halfspace/operators/tangential_operator.hpp"
 #include "halfspace/solvers/solver_factory.hpp"
+#include "halfspace/solvers/surface_solve.hpp"
 #include "halfspace/solvers/tangential_solver.hpp"
 #include "halfspace/surface/self_affine.hpp"
 #include "halfspace/threads.hpp"
@@ -96,7 +97,8 @@ StepSetup& step_setup(std::size_t n, solvers::TangentialMethod method) {
   spec.short_cutoff = kShortCutoff;
   spec.rms_slope = kRmsSlope;
   spec.seed = 1;
-  setup->gap = geometry::initial_gap_from_heights(surface::make_self_affine_surface(*setup->grid, spec));
+  const Eigen::ArrayXd heights = surface::make_self_affine_surface(*setup->grid, spec);
+  setup->gap = solvers::initial_gap(*setup->grid, {heights.data(), setup->grid->size()});
   const double e_star = setup->pair.composite_modulus();
   setup->loading = Loading::mean_pressure(kReducedPressure * e_star * kRmsSlope);
   solvers::SolverOptions settings;

@@ -14,6 +14,7 @@
 #include "halfspace/geometry/builtin_surface.hpp"
 #include "halfspace/io/sweep_writer.hpp"
 #include "halfspace/solvers/solver_factory.hpp"
+#include "halfspace/solvers/surface_solve.hpp"
 #include "halfspace/surface/self_affine.hpp"
 #include "halfspace/surface/statistics.hpp"
 
@@ -41,7 +42,7 @@ int main(int argc, char** argv) {
     //    order, each step warm-started from the previous one.
     std::vector<double> pressures;
     for (const double x : {0.005, 0.01, 0.02, 0.05}) pressures.push_back(x * e_star * roughness.rms_slope);
-    const Eigen::ArrayXd gap = geometry::initial_gap_from_heights(heights);
+    const Eigen::ArrayXd gap = solvers::initial_gap(grid, {heights.data(), grid.size()});
     const std::vector<analysis::SweepStep> steps =
         analysis::run_load_sweep(*solver, grid, {gap.data(), grid.size()}, ControlMode::mean_pressure, pressures);
 

@@ -10,7 +10,7 @@ import numpy as np
 from . import _core
 from ._height_map import HeightMap
 
-ProgressCallback = Callable[[int, float], None]
+ProgressCallback = Callable[[int, float], Optional[bool]]
 
 _LOADS = ("force", "mean_pressure", "approach")
 
@@ -146,8 +146,9 @@ def solve(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
         active-set steps (``--active-set on``; None: off).
     initial_pressure: a warm start (Pa), shaped like the surface.
     progress: ``callable(iteration, residual)`` called after each iteration
-        of the fine solve, on the calling thread; an exception it raises
-        stops the solve and propagates.
+        of the fine solve, on the calling thread; returning False stops the
+        solve (status "stopped"), an exception it raises stops the solve and
+        propagates.
     fft_planning: "estimate", "measure" (default, as the program) or
         "patient"; deflation_block: 0 turns the block-deflation correction
         off, B > 0 forces blocks of B x B cells (None: automatic).

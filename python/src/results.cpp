@@ -153,9 +153,7 @@ Result read(const std::filesystem::path& path, int step) {
   analysis::SweepStep data;
   SolveResult& s = data.result;
   const std::string status = text("status");
-  for (SolveStatus candidate : {SolveStatus::converged, SolveStatus::iteration_limit, SolveStatus::breakdown}) {
-    if (to_string(candidate) == status) s.status = candidate;
-  }
+  if (const auto parsed = solvers::parse_solve_status(status)) s.status = *parsed;
   s.message = text("message");
   s.solver = text("solver");
   s.iterations = static_cast<int>(integer("iterations"));
@@ -210,9 +208,7 @@ Result read(const std::filesystem::path& path, int step) {
   if (stored.shear_x.size() > 0 && stored.find("tangential_status") != nullptr) {
     TangentialResult t;
     const std::string tangential_status = text("tangential_status");
-    for (SolveStatus candidate : {SolveStatus::converged, SolveStatus::iteration_limit, SolveStatus::breakdown}) {
-      if (to_string(candidate) == tangential_status) t.status = candidate;
-    }
+    if (const auto parsed = solvers::parse_solve_status(tangential_status)) t.status = *parsed;
     t.state.shear_x = std::move(stored.shear_x);
     t.state.shear_y = std::move(stored.shear_y);
     t.state.slip_x = std::move(stored.slip_x);

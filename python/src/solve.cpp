@@ -24,45 +24,52 @@
 namespace halfspace::python {
 namespace {
 
-// Thrown from the progress hook when a Python error (KeyboardInterrupt from
-// Ctrl-C, or an exception of the user's progress callable) is pending: it
-// unwinds the solve, whose state is all RAII, and the binding re-raises the
-// Python error once the GIL is back.
-struct PythonErrorPending {};
-
 // SolverOptions::progress while the GIL is released. It runs on the calling
 // thread between iterations; it takes the GIL to check for signals every
 // kSignalCheckInterval, or at every iteration when the user gave a callable
-// (calling it needs the GIL anyway).
+// (calling it needs the GIL anyway). The solve stops (status "stopped") when
+// the callable returns False, or when a Python error is pending
+// (KeyboardInterrupt from Ctrl-C, or the callable's exception): run_released
+// then raises it.
 class ProgressHook {
  public:
   explicit ProgressHook(nb::object callback) : callback_(std::move(callback)) {}
 
-  void operator()(int iteration, double residual) {
+  solvers::IterationDecision operator()(int iteration, double residual) {
+    if (error_pending_) return solvers::IterationDecision::stop;
     const bool call = !callback_.is_none();
     if (!call) {
       const auto now = std::chrono::steady_clock::now();
-      if (now < next_check_) return;
+      if (now < next_check_) return solvers::IterationDecision::proceed;
       next_check_ = now + kSignalCheckInterval;
     }
     nb::gil_scoped_acquire gil;
-    if (PyErr_CheckSignals() != 0) throw PythonErrorPending{};
-    if (call) {
-      try {
-        callback_(iteration, residual);
-      } catch (nb::python_error& error) {
-        error.restore();
-        throw PythonErrorPending{};
-      }
+    if (PyErr_CheckSignals() != 0) return stop_with_error();
+    if (!call) return solvers::IterationDecision::proceed;
+    try {
+      const nb::object answer = callback_(iteration, residual);
+      return answer.ptr() == Py_False ? solvers::IterationDecision::stop : solvers::IterationDecision::proceed;
+    } catch (nb::python_error& error) {
+      error.restore();
+      return stop_with_error();
     }
   }
+  solvers::ProgressCallback callback() {
+    return [this](int iteration, double residual) { return (*this)(iteration, residual); };
+  }
+  bool error_pending() const { return error_pending_; }
 
  private:
+  solvers::IterationDecision stop_with_error() {
+    error_pending_ = true;
+    return solvers::IterationDecision::stop;
+  }
   // Short enough that Ctrl-C feels immediate, long enough that the GIL is
   // taken a negligible number of times.
   static constexpr std::chrono::milliseconds kSignalCheckInterval{100};
   nb::object callback_;
   std::chrono::steady_clock::time_point next_check_ = std::chrono::steady_clock::now() + kSignalCheckInterval;
+  bool error_pending_ = false;
 };
 
 struct ArraySurface {
@@ -134,15 +141,15 @@ Problem checked_problem(const nb::dict& given, const ArraySurface& surface) {
 }
 
 // Runs `work` with the GIL released and `hook` as the solver's progress;
-// re-raises a Python error the hook left pending.
+// raises the Python error the hook stopped the solve for.
 template <class Work>
-auto run_released(Work&& work) {
-  try {
+auto run_released(const ProgressHook& hook, Work&& work) {
+  auto result = [&] {
     nb::gil_scoped_release release;
     return work();
-  } catch (const PythonErrorPending&) {
-    throw nb::python_error();
-  }
+  }();
+  if (hook.error_pending()) throw nb::python_error();
+  return result;
 }
 
 std::shared_ptr<Run> make_run(ArraySurface&& surface, const Problem& problem, io::SolveProvenance&& provenance,
@@ -184,12 +191,12 @@ Result solve(const nb::object& heights, double dx, double dy, const std::string&
     }
   }
   ProgressHook hook(std::move(progress));
-  problem.solver.progress = [&hook](int iteration, double residual) { hook(iteration, residual); };
+  problem.solver.progress = hook.callback();
 
   analysis::SweepStep step;
   step.loading = problem.loading;
   step.warm_started = !start.empty();
-  step.result = run_released([&] {
+  step.result = run_released(hook, [&] {
     set_threads(problem.threads);
     return problem.coating ? solvers::solve_surface(surface.grid, surface.heights, *problem.coating, problem.loading,
                                                     problem.solver, start)
@@ -210,13 +217,13 @@ Sweep sweep(const nb::object& heights, double dx, double dy, const std::string& 
   ArraySurface surface = surface_from(heights, dx, dy, boundary);
   Problem problem = checked_problem(problem_keywords, surface);
   ProgressHook hook(std::move(progress));
-  problem.solver.progress = [&hook](int iteration, double residual) { hook(iteration, residual); };
+  problem.solver.progress = hook.callback();
   analysis::LoadSweepOptions sweep_options;
   sweep_options.warm_start = warm_start;
   sweep_options.signed_loads = problem.solver.adhesion.has_value();  // pulling is a negative load
 
   const ControlMode mode = problem.loading.mode;
-  std::vector<analysis::SweepStep> steps = run_released([&] {
+  std::vector<analysis::SweepStep> steps = run_released(hook, [&] {
     set_threads(problem.threads);
     return problem.coating ? analysis::sweep_surface(surface.grid, surface.heights, *problem.coating, mode,
                                                      problem.load_values, problem.solver, sweep_options)
@@ -282,10 +289,10 @@ History friction(const nb::object& heights, double dx, double dy, const std::str
     restate_friction_rule(error, control);
   }
   ProgressHook hook(std::move(progress));
-  problem->solver.progress = [&hook](int iteration, double residual) { hook(iteration, residual); };
-  friction.progress = [&hook](std::size_t, int iteration, double residual) { hook(iteration, residual); };
+  problem->solver.progress = hook.callback();
+  friction.progress = [&hook](std::size_t, int iteration, double residual) { return hook(iteration, residual); };
 
-  FrictionalSolveResult solved = run_released([&] {
+  FrictionalSolveResult solved = run_released(hook, [&] {
     set_threads(problem->threads);
     return solvers::solve_frictional_surface(surface.grid, surface.heights, *pair, problem->loading, problem->solver,
                                              friction);

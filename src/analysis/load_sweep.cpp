@@ -69,6 +69,7 @@ std::vector<SweepStep> run_load_sweep(ContactSolver& solver, const Grid& grid, s
         contact_statistics(grid, {step.result.pressure.data(), grid.size()}, {step.result.gap.data(), grid.size()});
     steps.push_back(std::move(step));
     if (options.on_step_done) options.on_step_done(k, loads.size(), steps.back());
+    if (steps.back().result.status == solvers::SolveStatus::stopped) break;  // the caller's progress said so
   }
   return steps;
 }

@@ -101,9 +101,4 @@ Eigen::ArrayXd make_surface_rows(const Grid& grid, const SurfaceSpec& spec, std:
   return heights;
 }
 
-Eigen::ArrayXd initial_gap_from_heights(const Eigen::ArrayXd& heights) {
-  if (heights.size() == 0) return heights;
-  return heights.maxCoeff() - heights;
-}
-
 }  // namespace halfspace::geometry

@@ -535,19 +535,10 @@ SolveResult AdhesiveContactSolver::Impl::solve_displacement(std::span<const doub
     result.residual = residual;
     result.iterations = iteration;
     if (result.residual_history.size() < 100000) result.residual_history.push_back(residual);
-    if (options.progress) options.progress(iteration, residual);
-    if (!std::isfinite(residual)) {
-      result.status = SolveStatus::breakdown;
-      result.message = fmt::format("the residual is not finite at iteration {}", iteration);
-      break;
-    }
-    if (residual <= options.tolerance) {
-      result.status = SolveStatus::converged;
-      break;
-    }
-    if (iteration >= options.max_iterations) {
-      result.message = fmt::format("no convergence in {} iterations: residual {:.3g} > tolerance {:.3g}", iteration,
-                                   residual, options.tolerance);
+    const bool stop = stop_requested(options.progress, iteration, residual);
+    if (const std::optional<SolveStatus> status =
+            stopping_status(residual, options.tolerance, iteration, options.max_iterations, &result.message, stop)) {
+      result.status = *status;
       break;
     }
     const bool stepped = options.precondition ? conjugate_gradient_step(walk, iteration, residual)

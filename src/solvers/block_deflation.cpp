@@ -1,3 +1,6 @@
+// The block-deflation coarse correction (block_deflation.hpp derives it): the
+// kernel pair sums of b x b blocks, the coarse matrix A = Z^T K Z kept up to
+// date as the contact set changes, and its projected CG solve.
 #include "halfspace/solvers/block_deflation.hpp"
 
 #include <fmt/format.h>

@@ -80,7 +80,7 @@ void solve_coupled(const Grid& grid, std::span<const double> heights, const Elas
   TangentialOptions options = friction.tangential_options();
   if (friction.progress) {
     options.progress = [&friction, &current](int iteration, double residual) {
-      friction.progress(current, iteration, residual);
+      return friction.progress(current, iteration, residual);
     };
   }
   TangentialSolver tangential(op, options);
@@ -171,7 +171,7 @@ std::vector<TangentialResult> solve_tangential_history(const Grid& grid, const E
   TangentialOptions options = friction.tangential_options();
   if (friction.progress) {
     options.progress = [&friction, &current](int iteration, double residual) {
-      friction.progress(current, iteration, residual);
+      return friction.progress(current, iteration, residual);
     };
   }
   TangentialSolver solver(op, options);

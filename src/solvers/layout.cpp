@@ -5,6 +5,7 @@
 #include "halfspace/fft/grid_transform.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
 #include "halfspace/solvers/fourier_preconditioner.hpp"
+#include "halfspace/solvers/level_transfer.hpp"
 
 namespace halfspace::solvers {
 namespace {
@@ -48,6 +49,11 @@ class SerialLayout final : public Layout {
 };
 
 }  // namespace
+
+// Every level whole here (the MultilevelSolver's default).
+std::unique_ptr<LevelTransfer> Layout::level_transfer(const Grid& /*fine*/, std::size_t /*min_cells_per_axis*/) const {
+  return nullptr;
+}
 
 const Layout& serial_layout() {
   static const SerialLayout serial(false);

@@ -184,7 +184,7 @@ class Iteration {
       measure();
     }
     result_.residual_history.push_back(residual_);
-    if (options_.progress) options_.progress(iteration, residual_);
+    stop_ = stop_requested(options_.progress, iteration, residual_);
     // A load-controlled iteration without a cap whose residual has not
     // fallen by a tenth in kStallIterations restores the load by shifting
     // from then on (load_shift); the conjugate directions restart.
@@ -201,7 +201,7 @@ class Iteration {
   // Whether the iteration ends here, with the result's status.
   bool finished(int iteration) {
     const std::optional<SolveStatus> status =
-        stopping_status(residual_, options_.tolerance, iteration, options_.max_iterations, &result_.message);
+        stopping_status(residual_, options_.tolerance, iteration, options_.max_iterations, &result_.message, stop_);
     if (status) result_.status = *status;
     return status.has_value();
   }
@@ -695,6 +695,7 @@ class Iteration {
   double best_residual_ = kInfinity;  // the least residual by a tenth, and when
   int best_iteration_ = 0;
   bool load_by_shift_ = false;  // the load restored by load_shift, not by scaling
+  bool stop_ = false;           // the progress callback asked to stop
   double tau_ = 0.0;
 };
 

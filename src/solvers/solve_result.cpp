@@ -15,12 +15,30 @@ std::string_view to_string(SolveStatus status) {
       return "iteration_limit";
     case SolveStatus::breakdown:
       return "breakdown";
+    case SolveStatus::stopped:
+      return "stopped";
   }
   return "unknown";
 }
 
+std::optional<SolveStatus> parse_solve_status(std::string_view name) {
+  for (const SolveStatus status :
+       {SolveStatus::converged, SolveStatus::iteration_limit, SolveStatus::breakdown, SolveStatus::stopped}) {
+    if (to_string(status) == name) return status;
+  }
+  return std::nullopt;
+}
+
+bool stop_requested(const ProgressCallback& progress, int iteration, double residual) {
+  return progress && progress(iteration, residual) == IterationDecision::stop;
+}
+
 std::optional<SolveStatus> stopping_status(double residual, double tolerance, int iteration, int max_iterations,
-                                           std::string* message) {
+                                           std::string* message, bool stop) {
+  if (stop) {
+    *message = fmt::format("stopped by the caller at iteration {} (residual {:.3e})", iteration, residual);
+    return SolveStatus::stopped;
+  }
   if (residual <= tolerance) return SolveStatus::converged;
   if (!std::isfinite(residual)) {
     *message = fmt::format("residual became non-finite at iteration {}", iteration);

@@ -181,12 +181,12 @@ class TangentialIteration {
       measure();
     }
     result_.residual_history.push_back(residual_);
-    if (options_.progress) options_.progress(iteration, residual_);
+    stop_ = stop_requested(options_.progress, iteration, residual_);
   }
 
   bool finished(int iteration) {
     const std::optional<SolveStatus> status =
-        stopping_status(residual_, options_.tolerance, iteration, options_.max_iterations, &result_.message);
+        stopping_status(residual_, options_.tolerance, iteration, options_.max_iterations, &result_.message, stop_);
     if (status) result_.status = *status;
     return status.has_value();
   }
@@ -324,6 +324,7 @@ class TangentialIteration {
   double delta_x_ = 0.0;  // the approach's increment over the step
   double delta_y_ = 0.0;
   double residual_ = 0.0;
+  bool stop_ = false;          // the progress callback asked to stop
   double motion_floor_ = 0.0;  // m, see start()
 };
 

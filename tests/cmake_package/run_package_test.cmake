@@ -23,6 +23,20 @@ file(REMOVE_RECURSE "${WORK_DIR}")
 
 run_step("cmake --install ${BUILD_DIR}" "${CMAKE_COMMAND}" --install "${BUILD_DIR}" --prefix "${prefix}")
 
+# The umbrella header is installed, the engine's internals are not.
+foreach(header halfspace/halfspace.hpp halfspace/solvers/solve_result.hpp)
+  if(NOT EXISTS "${prefix}/include/${header}")
+    message(FATAL_ERROR "the public header ${header} is not installed")
+  endif()
+endforeach()
+foreach(internal halfspace/fft/real_fft.hpp halfspace/linalg/parallel.hpp halfspace/checked_size.hpp
+                 halfspace/solvers/deflation_schedule.hpp halfspace/solvers/grid_transfer.hpp
+                 halfspace/solvers/level_transfer.hpp halfspace/mpi)
+  if(EXISTS "${prefix}/include/${internal}")
+    message(FATAL_ERROR "the internal ${internal} is installed: only what halfspace/halfspace.hpp reaches should be")
+  endif()
+endforeach()
+
 file(GLOB package_files "${prefix}/lib*/cmake/halfspace/*.cmake")
 if(NOT package_files)
   message(FATAL_ERROR "no CMake package files under ${prefix}/lib*/cmake/halfspace")

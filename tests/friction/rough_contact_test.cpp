@@ -12,6 +12,7 @@
 #include "friction/friction_checks.hpp"
 #include "halfspace/geometry/builtin_surface.hpp"
 #include "halfspace/solvers/solver_factory.hpp"
+#include "halfspace/solvers/surface_solve.hpp"
 #include "halfspace/solvers/tangential_solver.hpp"
 #include "halfspace/surface/self_affine.hpp"
 #include "support/pk_solvers.hpp"
@@ -36,7 +37,8 @@ RoughContact rough_contact() {
   spec.short_cutoff = 4e-6;
   spec.rms_slope = 0.1;
   spec.seed = 3;
-  const Eigen::ArrayXd gap = geometry::initial_gap_from_heights(surface::make_self_affine_surface(grid, spec));
+  const Eigen::ArrayXd heights = surface::make_self_affine_surface(grid, spec);
+  const Eigen::ArrayXd gap = solvers::initial_gap(grid, {heights.data(), grid.size()});
   const double e_star = ElasticPair::similar(kSteel).composite_modulus();
   const auto normal = solvers::make_solver(grid, e_star, testing::test_options(solvers::SolverType::pk_fourier));
   return {grid, normal->solve({gap.data(), grid.size()}, Loading::mean_pressure(0.04 * e_star * 0.1))};

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "halfspace/error.hpp"
+#include "halfspace/solvers/surface_solve.hpp"
 
 namespace halfspace::geometry {
 namespace {
@@ -132,7 +133,8 @@ TEST(GeometryTest, ParsesShapeNamesAndRejectsOthers) {
 TEST(GeometryTest, InitialGapIsZeroAtHighestPoint) {
   const Grid grid = Grid::plane(7, 5, 1e-6, 2e-6, Boundary::free);
   const Eigen::ArrayXd h = make_surface_heights(grid, {SurfaceShape::sphere, 1e-3, 0.0, 0.0});
-  const Eigen::ArrayXd gap = initial_gap_from_heights(h + 5e-9);
+  const Eigen::ArrayXd raised = h + 5e-9;
+  const Eigen::ArrayXd gap = solvers::initial_gap(grid, {raised.data(), grid.size()});
   EXPECT_EQ(gap.minCoeff(), 0.0);
   EXPECT_EQ(at(gap, grid, 3, 2), 0.0);
   // max(h) - h: the gap grows away from the apex exactly as the height falls.

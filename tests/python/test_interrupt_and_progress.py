@@ -1,5 +1,5 @@
 """Ctrl-C stops a running solve, the GIL is free during a solve, and the
-progress callable is called between iterations."""
+progress callable is called between iterations and can stop the solve."""
 
 import _thread
 import signal
@@ -96,3 +96,39 @@ def test_exception_in_progress_stops_the_solve(rough):
 
     with pytest.raises(Enough, match="stopped at 5"):
         hs.solve(rough, **LONG, progress=progress)
+
+
+def test_progress_returning_false_stops_the_solve(rough):
+    seen = []
+
+    def progress(iteration, residual):
+        seen.append(iteration)
+        return iteration != 5
+
+    result = hs.solve(rough, **LONG, progress=progress)
+    assert result.status == "stopped"
+    assert not result.converged
+    assert result.iterations == 5
+    assert seen == list(range(6))
+    assert "stopped by the caller" in result.message
+
+
+def test_progress_returning_none_goes_on():
+    surface = hs.generate.self_affine(grid=(64, 64), size=1e-3, rms_slope=0.1, seed=1)
+    result = hs.solve(surface, e_star=1e9, mean_pressure=1e6, boundary="periodic", solver="pk-fourier",
+                      fft_planning="estimate", threads=1, progress=lambda k, r: None)
+    assert result.converged
+
+
+def test_progress_returning_false_ends_a_sweep(rough):
+    solves = []
+
+    def progress(iteration, residual):
+        if iteration == 0:
+            solves.append(0)
+        return not (len(solves) == 2 and iteration == 3)
+
+    sweep = hs.sweep(rough, e_star=1e9, mean_pressure=[1e6, 2e6, 3e6], boundary="periodic", solver="pk-fourier",
+                     fft_planning="estimate", threads=1, progress=progress)
+    statuses = [step.status for step in sweep.steps]
+    assert statuses == ["converged", "stopped"], statuses

@@ -86,7 +86,8 @@ TEST(ActiveSetStartHertzTest, ReproducesTheHertzContactRadius) {
   const Grid grid = Grid::plane(256, 256, cell, cell, Boundary::free);
   geometry::SurfaceSpec sphere;
   sphere.radius = 1e-4;
-  const Eigen::ArrayXd gap = geometry::initial_gap_from_heights(geometry::make_surface_heights(grid, sphere));
+  const Eigen::ArrayXd heights = geometry::make_surface_heights(grid, sphere);
+  const Eigen::ArrayXd gap = solvers::initial_gap(grid, {heights.data(), grid.size()});
   const double force = 2.1e-10;
   const SolveResult result =
       make_solver(grid, kEStar, settings(true))->solve({gap.data(), grid.size()}, Loading::force(force));

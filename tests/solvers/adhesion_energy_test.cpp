@@ -178,7 +178,7 @@ TEST(AdhesionEnergyTest, ReportsTheIterationLimitAsStatus) {
   AdhesiveContactSolver solver(c.grid, 1.0, options);
   const SolveResult result = solver.solve(c.gap, Loading::approach(0.5 * c.law.range));
   EXPECT_EQ(result.status, SolveStatus::iteration_limit);
-  EXPECT_NE(result.message.find("no convergence in 3 iterations"), std::string::npos) << result.message;
+  EXPECT_NE(result.message.find("no convergence after 3 iterations"), std::string::npos) << result.message;
 }
 
 TEST(AdhesionEnergyTest, RefusesBadInput) {

@@ -86,7 +86,8 @@ TEST(DeflatedSolverRateTest, StaysOffWhereTheIterationIsFastWithoutIt) {
   const Grid grid = Grid::plane(256, 256, 1e-6 / 3.0, 1e-6 / 3.0, Boundary::free);
   geometry::SurfaceSpec sphere;
   sphere.radius = 1e-4;
-  const Eigen::ArrayXd gap = geometry::initial_gap_from_heights(geometry::make_surface_heights(grid, sphere));
+  const Eigen::ArrayXd heights = geometry::make_surface_heights(grid, sphere);
+  const Eigen::ArrayXd gap = solvers::initial_gap(grid, {heights.data(), grid.size()});
   // Contact radius (3 F R / 4 E*)^(1/3) = 25 um: a third of the domain.
   const Loading load = Loading::force(2.1e-10);
   const SolveResult plain =

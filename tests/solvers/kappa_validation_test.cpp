@@ -14,6 +14,7 @@
 #include "halfspace/analysis/load_sweep.hpp"
 #include "halfspace/geometry/builtin_surface.hpp"
 #include "halfspace/solvers/solver_factory.hpp"
+#include "halfspace/solvers/surface_solve.hpp"
 #include "halfspace/surface/self_affine.hpp"
 #include "halfspace/surface/statistics.hpp"
 #include "halfspace/threads.hpp"
@@ -75,7 +76,7 @@ TEST(KappaValidationTest, ContactAreaIsProportionalToLoadWithLiteratureKappa) {
     spec.seed = static_cast<std::uint64_t>(seed);
     const Eigen::ArrayXd heights = surface::make_self_affine_surface(grid, spec);
     const double slope = surface::rms_slope(grid, {heights.data(), grid.size()});
-    const Eigen::ArrayXd gap = geometry::initial_gap_from_heights(heights);
+    const Eigen::ArrayXd gap = solvers::initial_gap(grid, {heights.data(), grid.size()});
 
     std::vector<double> pressures;
     for (const double x : kReducedPressures) pressures.push_back(x * e_star * slope);

@@ -14,6 +14,7 @@
 #include "halfspace/geometry/builtin_surface.hpp"
 #include "halfspace/io/height_map_reader.hpp"
 #include "halfspace/solvers/solver_factory.hpp"
+#include "halfspace/solvers/surface_solve.hpp"
 #include "halfspace/surface/detrend.hpp"
 #include "io/hdf5_test_support.hpp"
 #include "support/contact_checks.hpp"
@@ -42,7 +43,7 @@ Surface measured(const std::string& file, Boundary boundary) {
   surface::detrend(map, surface::Detrend::curvature);
   const Grid grid =
       map.dimension == 1 ? Grid::line(map.nx, map.dx, boundary) : Grid::plane(map.nx, map.ny, map.dx, map.dy, boundary);
-  return {grid, geometry::initial_gap_from_heights(map.heights)};
+  return {grid, solvers::initial_gap(grid, {map.heights.data(), grid.size()})};
 }
 
 SolveResult solve(const std::string& solver, const Surface& s, double mean_pressure, int max_iterations = 10000) {

@@ -24,6 +24,7 @@
 #include "halfspace/solvers/multilevel_solver.hpp"
 #include "halfspace/solvers/polonsky_keer.hpp"
 #include "halfspace/solvers/solver_factory.hpp"
+#include "halfspace/solvers/surface_solve.hpp"
 #include "halfspace/surface/detrend.hpp"
 #include "support/contact_checks.hpp"
 #include "support/pk_solvers.hpp"
@@ -102,7 +103,7 @@ TEST(PolonskyKeerRoundingTest, DektakProfileConvergesWhateverTheRoundingOfThePro
   HeightMap map = io::read_height_map(kDataDir / "dektak-1.csv");
   surface::detrend(map, surface::Detrend::curvature);
   const Grid grid = Grid::line(map.nx, map.dx, Boundary::free);
-  const Eigen::ArrayXd gap = geometry::initial_gap_from_heights(map.heights);
+  const Eigen::ArrayXd gap = solvers::initial_gap(grid, {map.heights.data(), grid.size()});
   // The default with seeds enough that directions with a mean broke down
   // (seed 32 at 2.9e5 Pa, seed 28 at 2.99e5 Pa, here); plain pk is slower.
   struct Case {

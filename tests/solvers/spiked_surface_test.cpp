@@ -16,6 +16,7 @@
 #include "halfspace/geometry/builtin_surface.hpp"
 #include "halfspace/io/height_map_reader.hpp"
 #include "halfspace/solvers/solver_factory.hpp"
+#include "halfspace/solvers/surface_solve.hpp"
 #include "halfspace/surface/detrend.hpp"
 #include "halfspace/surface/self_affine.hpp"
 #include "support/contact_checks.hpp"
@@ -56,8 +57,8 @@ class SpikedSurfaceTest : public ::testing::TestWithParam<SolverType> {};
 TEST_P(SpikedSurfaceTest, MeasuredSpikesUnderLoadControl) {
   HeightMap map = io::read_height_map(std::filesystem::path(HALFSPACE_TEST_DATA_DIR) / "sur-2-crop-64x64.h5");
   surface::detrend(map, surface::Detrend::plane);
-  const Surface s{Grid::plane(map.nx, map.ny, map.dx, map.dy, Boundary::periodic),
-                  geometry::initial_gap_from_heights(map.heights)};
+  const Grid grid = Grid::plane(map.nx, map.ny, map.dx, map.dy, Boundary::periodic);
+  const Surface s{grid, solvers::initial_gap(grid, {map.heights.data(), grid.size()})};
   expect_every_load_converges(GetParam(), s, {3e4, 4e4, 5e4, 8e4});
 }
 
@@ -76,7 +77,7 @@ TEST_P(SpikedSurfaceTest, SyntheticSpikesUnderLoadControl) {
   const double rms = std::sqrt((heights - mean).square().mean());
   heights[20 * 64 + 40] = mean + 26.0 * rms;
   heights[20 * 64 + 41] = mean + 28.0 * rms;
-  const Surface s{grid, geometry::initial_gap_from_heights(heights)};
+  const Surface s{grid, solvers::initial_gap(grid, {heights.data(), grid.size()})};
   expect_every_load_converges(GetParam(), s, {0.05 * kEStar * 0.1, 0.07 * kEStar * 0.1, 0.1 * kEStar * 0.1});
 }
 

@@ -21,26 +21,12 @@ TEST(SurfaceSolveTest, EqualsTheSolverBuiltByHand) {
   SolverOptions options;
   options.fft_planning = FftPlanning::estimate;
   const SolveResult front_door = solve_surface(grid, {heights.data(), grid.size()}, 1e9, Loading::force(0.05), options);
-  const Eigen::ArrayXd gap = geometry::initial_gap_from_heights(heights);
+  const Eigen::ArrayXd gap = initial_gap(grid, {heights.data(), grid.size()});
   const SolveResult by_hand = make_solver(grid, 1e9, options)->solve({gap.data(), grid.size()}, Loading::force(0.05));
   ASSERT_TRUE(front_door.converged());
   EXPECT_TRUE((front_door.pressure == by_hand.pressure).all());
   EXPECT_EQ(front_door.iterations, by_hand.iterations);
   EXPECT_GT(front_door.wall_seconds, 0.0);
-}
-
-TEST(SurfaceSolveTest, ProgressExceptionsPassThrough) {
-  const Grid grid = Grid::plane(32, 32, 1e-5, 1e-5, Boundary::periodic);
-  const Eigen::ArrayXd heights =
-      geometry::make_surface_heights(grid, {geometry::SurfaceShape::wavy, 0.0, 1.6e-4, 1e-7});
-  SolverOptions options;
-  options.fft_planning = FftPlanning::estimate;
-  options.type = SolverType::pk;
-  options.progress = [](int iteration, double) {
-    if (iteration == 2) throw std::runtime_error("stop");
-  };
-  EXPECT_THROW(solve_surface(grid, {heights.data(), grid.size()}, 1e9, Loading::mean_pressure(1e5), options),
-               std::runtime_error);
 }
 
 TEST(SurfaceSolveTest, RefusesHeightsOfAnotherSize) {

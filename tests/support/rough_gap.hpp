@@ -5,8 +5,8 @@
 #include <Eigen/Core>
 #include <cstdint>
 
-#include "halfspace/geometry/builtin_surface.hpp"
 #include "halfspace/grid.hpp"
+#include "halfspace/solvers/surface_solve.hpp"
 #include "halfspace/surface/self_affine.hpp"
 
 namespace halfspace::testing {
@@ -17,7 +17,8 @@ inline Eigen::ArrayXd self_affine_gap(const Grid& grid, std::uint64_t seed) {
   spec.short_cutoff = 4.0 * grid.dx();
   spec.rms_slope = 0.1;
   spec.seed = seed;
-  return geometry::initial_gap_from_heights(surface::make_self_affine_surface(grid, spec));
+  const Eigen::ArrayXd heights = surface::make_self_affine_surface(grid, spec);
+  return solvers::initial_gap(grid, {heights.data(), grid.size()});
 }
 
 }  // namespace halfspace::testing

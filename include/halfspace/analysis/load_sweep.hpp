@@ -40,8 +40,9 @@ struct LoadSweepOptions {
 // Solves `initial_gap` (m, one entry per cell of `grid`, which must be the
 // solver's grid) under loads `values` (in the unit of `mode`) in the given
 // order. A step that does not converge is kept, with its status, and the
-// sweep goes on (cold-started). The solver's own per-iteration progress is
-// whatever it was built with (SolverOptions::progress). Throws InputError if
+// sweep goes on (cold-started); one its progress callback stopped is the
+// last. The solver's own per-iteration progress is whatever it was built
+// with (SolverOptions::progress). Throws InputError if
 // `values` is empty or a value is invalid for `mode` (checked before the
 // first solve), or if the solver rejects the problem.
 std::vector<SweepStep> run_load_sweep(ContactSolver& solver, const Grid& grid, std::span<const double> initial_gap,

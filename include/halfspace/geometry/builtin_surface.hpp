@@ -39,7 +39,4 @@ Eigen::ArrayXd make_surface_heights(const Grid& grid, const SurfaceSpec& spec);
 // values. Throws InputError as above, or for rows beyond the grid.
 Eigen::ArrayXd make_surface_rows(const Grid& grid, const SurfaceSpec& spec, std::size_t first_row, std::size_t rows);
 
-// The separation at zero approach: max(h) - h, zero at the highest point.
-Eigen::ArrayXd initial_gap_from_heights(const Eigen::ArrayXd& heights);
-
 }  // namespace halfspace::geometry

@@ -114,7 +114,7 @@ struct AdhesiveSolverOptions {
   // and its limit of displacement-controlled solves.
   double force_tolerance = 1e-6;
   int max_load_steps = 60;
-  std::function<void(int, double)> progress;  // (iteration, residual), may be empty
+  ProgressCallback progress;  // (iteration, residual), may be empty or stop the solve
 
   // Throws SolverOptionError (solver_options.hpp) naming the option
   // ("law.work", "law.range", "tolerance", "force_tolerance",

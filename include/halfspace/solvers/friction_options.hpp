@@ -44,8 +44,9 @@ struct FrictionOptions {
   int normal_load_steps = 1;
   double coupling_tolerance = 1e-6;  // CoupledStepOptions::tolerance
   int max_alternations = 100;        // CoupledStepOptions::max_alternations
-  // Called once per tangential iteration with (step, iteration, residual); may be empty.
-  std::function<void(std::size_t, int, double)> progress;
+  // Called once per tangential iteration with (step, iteration, residual);
+  // may be empty or stop the solve (solve_result.hpp's IterationDecision).
+  std::function<IterationDecision(std::size_t, int, double)> progress;
 
   // The number of tangential steps solved: the history's, or 1 when sliding.
   std::size_t steps() const { return sliding_direction ? 1 : history.size(); }

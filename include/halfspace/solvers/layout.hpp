@@ -15,10 +15,11 @@
 #include "halfspace/linalg/communicator.hpp"
 #include "halfspace/operators/influence_operator.hpp"
 #include "halfspace/operators/tangential_operator.hpp"
-#include "halfspace/solvers/level_transfer.hpp"
 #include "halfspace/solvers/preconditioner.hpp"
 
 namespace halfspace::solvers {
+
+class LevelTransfer;  // level_transfer.hpp (the engine's, not installed)
 
 struct SolverOptions;
 
@@ -61,10 +62,7 @@ class Layout {
   virtual void check(const Grid& /*grid*/, const HalfSpace& /*half_space*/, const SolverOptions& /*options*/) const {}
   // Where pk-multilevel's levels of `fine` live: null, all whole here (the
   // MultilevelSolver's default). Collective.
-  virtual std::unique_ptr<LevelTransfer> level_transfer(const Grid& /*fine*/,
-                                                        std::size_t /*min_cells_per_axis*/) const {
-    return nullptr;
-  }
+  virtual std::unique_ptr<LevelTransfer> level_transfer(const Grid& fine, std::size_t min_cells_per_axis) const;
   // The layout of `level`, one of the levels of `transfer` (made by
   // level_transfer).
   virtual const Layout& level_layout(const LevelTransfer& /*transfer*/, const Grid& /*level*/) const { return *this; }

@@ -86,8 +86,9 @@ struct PolonskyKeerOptions {
   // The admissible pressures: [0, inf), or [0, H] with a hardness cap.
   PressureBounds bounds;
   // Called once per iteration with (iteration, residual); may be empty. It
-  // runs on the calling thread between iterations, so it may print.
-  std::function<void(int, double)> progress;
+  // runs on the calling thread between iterations, so it may print; its
+  // IterationDecision::stop ends the solve with status `stopped`.
+  ProgressCallback progress;
 
   // Throws InputError naming the option unless 0 < tolerance < 1,
   // max_iterations >= 1 and the bounds are [0, upper] with upper > 0.

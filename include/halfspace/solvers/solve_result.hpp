@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -16,16 +17,31 @@ enum class SolveStatus {
   converged,        // residual below tolerance
   iteration_limit,  // stopped at max_iterations with residual above tolerance
   breakdown,        // the iteration could not continue (message says why)
+  stopped,          // the caller's progress callback asked to stop (never converged)
 };
 
 std::string_view to_string(SolveStatus status);
+// The status whose to_string is `name` (as result files store it), if any.
+std::optional<SolveStatus> parse_solve_status(std::string_view name);
+
+// What a progress callback tells the iteration (as Ceres' IterationCallback):
+// go on, or stop cleanly with status `stopped`.
+enum class IterationDecision { proceed, stop };
+// Called once per iteration with (iteration, residual) on the calling thread,
+// between iterations (so it may print); may be empty.
+using ProgressCallback = std::function<IterationDecision(int iteration, double residual)>;
+
+// Calls `progress` (if set) with (iteration, residual); true when it asked
+// to stop.
+bool stop_requested(const ProgressCallback& progress, int iteration, double residual);
 
 // The end of an iterative solve at `iteration` with `residual`, shared by
-// the solvers' loops: converged (residual <= tolerance), breakdown (a
-// non-finite residual) or iteration_limit (at max_iterations), with the
-// message of the last two in *message; nullopt while the iteration goes on.
+// the solvers' loops: stopped (the caller asked, `stop`), converged
+// (residual <= tolerance), breakdown (a non-finite residual) or
+// iteration_limit (at max_iterations), with the message of all but converged
+// in *message; nullopt while the iteration goes on.
 std::optional<SolveStatus> stopping_status(double residual, double tolerance, int iteration, int max_iterations,
-                                           std::string* message);
+                                           std::string* message, bool stop = false);
 
 // The coarser grids a MultilevelSolver solved first: how many, their
 // iterations, and their K and M^-1 products each weighted by its grid's
@@ -107,7 +123,7 @@ struct SolveResult {
   double wall_seconds = 0.0;
 
   // Fields with one entry per cell, (ny, nx) row-major.
-  Eigen::ArrayXd pressure;      // Pa, >= 0
+  Eigen::ArrayXd pressure;      // Pa, >= 0 (signed under an adhesion law: negative is tensile)
   Eigen::ArrayXd displacement;  // m, K * pressure
   Eigen::ArrayXd gap;           // m, initial_gap + displacement - approach
 

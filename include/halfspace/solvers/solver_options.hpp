@@ -19,6 +19,7 @@
 #include "halfspace/solvers/adhesion_law.hpp"
 #include "halfspace/solvers/block_deflation_options.hpp"
 #include "halfspace/solvers/interface_law.hpp"
+#include "halfspace/solvers/solve_result.hpp"
 
 namespace halfspace::solvers {
 
@@ -112,8 +113,9 @@ struct SolverOptions {
   // grids (docs/solvers.md).
   FftPlanning fft_planning = FftPlanning::measure;
   // Called once per iteration of the fine solve with (iteration, residual);
-  // may be empty. It runs on the calling thread between iterations.
-  std::function<void(int, double)> progress;
+  // may be empty. It runs on the calling thread between iterations; its
+  // IterationDecision::stop ends the solve with status `stopped`.
+  ProgressCallback progress;
 
   // The interface law: a hardness cap 0 <= p <= H (every solver but lemke,
   // whose pivoting solves the plain LCP only).

@@ -55,8 +55,8 @@ struct TangentialOptions {
   double tolerance = 1e-6;            // of the residual above
   int max_iterations = 10000;
   TangentialMethod method = TangentialMethod::conjugate_gradient;
-  // Called once per iteration with (iteration, residual); may be empty.
-  std::function<void(int, double)> progress;
+  // Called once per iteration with (iteration, residual); may be empty or stop the solve.
+  ProgressCallback progress;
 
   // Throws InputError naming the option unless mu is finite and >= 0,
   // 0 < tolerance < 1 and max_iterations >= 1.
