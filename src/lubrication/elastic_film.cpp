@@ -109,6 +109,8 @@ constexpr std::array<double, 2> kStartFilms{0.5, 8.0};
 // The trust region of a Newton step, in units of the pressure scale (the
 // dry contact's peak) and of the thinnest film.
 constexpr double kLargestStep = 0.5;
+// The loosest relative tolerance of a GMRES step (far from the solution).
+constexpr double kLargestForcing = 1e-2;
 
 // The state of the Newton iteration: s and h0, and what follows from them.
 struct State {
@@ -424,9 +426,14 @@ ElasticFilm solve_elastic_film(InfluenceOperator& op, const Eigen::ArrayXd& gap,
         measure(x, residual, true);
         int step_iterations = 0;
         std::string krylov_message;
+        // An inexact Newton step (Dembo, Eisenstat & Steihaug 1982): GMRES
+        // to a relative residual of the order of the Newton residual keeps
+        // the quadratic convergence near the solution and spares
+        // iterations far from it.
+        const double forcing = std::min(kLargestForcing, current.norm);
         const auto gmres_solve = [&] {
           const detail::FilmKrylovOutcome outcome =
-              krylov_solver->solve(rows, branch_full, pressure_scale, mass_scale, area / w, residual, step);
+              krylov_solver->solve(rows, branch_full, pressure_scale, mass_scale, area / w, forcing, residual, step);
           step_iterations += outcome.iterations;
           krylov_message = outcome.message;
           return outcome.converged;

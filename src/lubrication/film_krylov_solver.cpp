@@ -15,6 +15,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <span>
 
@@ -25,19 +26,23 @@ namespace {
 // derivatives each spread over the (2r + 1)^2 truncated K, of which the
 // neighbouring nodes' overlap (a 5 x 3 cross of terms) leaves about
 // (2r + 3)(2r + 5) distinct columns.
-double preconditioner_row_entries(int r) { return (2.0 * r + 3.0) * (2.0 * r + 5.0); }
+double preconditioner_row_entries(int r) {
+  return (2.0 * r + 3.0) * (2.0 * r + 5.0);
+}
 // SparseLU's fill of the preconditioner relative to its entries, a
 // measured allowance (64^2 to 256^2 point contacts; docs/performance.md).
 constexpr double kFillAllowance = 12.0;
+// GMRES iterations above which the next step refactorises the preconditioner.
+constexpr int kRefactoriseAfter = 15;
 }  // namespace
 
 double film_krylov_memory_estimate(std::size_t nodes, const FilmKrylovSettings& settings) {
   const double per_row = preconditioner_row_entries(settings.neighbourhood);
-  const double per_node = 8.0 * (settings.restart + 1)       // GMRES basis
+  const double per_node = 8.0 * (settings.restart + 1)            // GMRES basis
                           + 8.0 * 16.0 * sizeof(LocalTerm) / 8.0  // local rows (up to 16 terms)
-                          + per_row * (16.0 + 12.0)          // triplets and the compressed matrix
-                          + per_row * kFillAllowance * 12.0  // the LU's supernodes
-                          + 8.0 * 40.0;                      // the Newton state and work vectors
+                          + per_row * (16.0 + 12.0)               // triplets and the compressed matrix
+                          + per_row * kFillAllowance * 12.0       // the LU's supernodes
+                          + 8.0 * 40.0;                           // the Newton state and work vectors
   return per_node * static_cast<double>(nodes);
 }
 
@@ -70,6 +75,7 @@ FilmKrylovSolver::FilmKrylovSolver(InfluenceOperator& op, const ReynoldsStencil&
   const auto ni = static_cast<Eigen::Index>(n_);
   const auto m = static_cast<Eigen::Index>(settings_.restart);
   dp_ds_.resize(ni);
+  load_row_.resize(ni);
   dtheta_ds_.resize(ni);
   product_in_.resize(ni);
   product_out_.resize(ni);
@@ -163,7 +169,8 @@ bool FilmKrylovSolver::factorise(std::string& message) {
     return false;
   }
   border_solved_ = lu_.solve(border_column_);
-  border_pivot_ = area_over_load_ * dp_ds_.dot(border_solved_);
+  load_row_ = area_over_load_ * dp_ds_;
+  border_pivot_ = load_row_.dot(border_solved_);
   if (!(std::isfinite(border_pivot_) && border_pivot_ != 0.0)) {
     message = "the EHL preconditioner is singular: no node carries pressure to balance the load";
     return false;
@@ -175,46 +182,32 @@ void FilmKrylovSolver::apply_preconditioner(const Eigen::VectorXd& v, Eigen::Vec
   const auto ni = static_cast<Eigen::Index>(n_);
   head_in_ = v.head(ni);
   head_out_ = lu_.solve(head_in_);
-  const double z = (area_over_load_ * dp_ds_.dot(head_out_) - v[ni]) / border_pivot_;
+  const double z = (load_row_.dot(head_out_) - v[ni]) / border_pivot_;
   out.head(ni) = head_out_ - z * border_solved_;
   out[ni] = z;
 }
 
-FilmKrylovOutcome FilmKrylovSolver::solve(const LocalRows& rows, const std::vector<char>& branch_full,
-                                          double pressure_scale, double mass_scale, double area_over_load,
-                                          const Eigen::VectorXd& residual, Eigen::VectorXd& step) {
-  rows_ = &rows;
-  mass_scale_ = mass_scale;
-  area_over_load_ = area_over_load;
-  for (std::size_t j = 0; j < n_; ++j) {
-    const auto jj = static_cast<Eigen::Index>(j);
-    const bool fixed = topology_.fixed(j);
-    dp_ds_[jj] = !fixed && branch_full[j] != 0 ? pressure_scale : 0.0;
-    dtheta_ds_[jj] = !fixed && branch_full[j] == 0 ? 1.0 : 0.0;
-  }
-  FilmKrylovOutcome outcome;
+int FilmKrylovSolver::gmres(double tolerance, int max_iterations, const Eigen::VectorXd& residual,
+                            Eigen::VectorXd& step) {
+  int iterations = 0;
   step.setZero();
-  if (!factorise(outcome.message)) return outcome;
   const double b_norm = residual.norm();
-  if (b_norm == 0.0) {
-    outcome.converged = true;
-    return outcome;
-  }
+  if (b_norm == 0.0) return 0;
   const int m = settings_.restart;
   double relative = 1.0;
   // Restarted GMRES with right preconditioning (Saad 2003, alg. 9.5): the
   // least-squares residual |g_{j+1}| tracks ||b - J x|| without forming it.
-  while (outcome.iterations < settings_.max_iterations) {
+  while (iterations < max_iterations) {
     apply_jacobian(step, work_);
     work_ = -residual - work_;
     const double beta = work_.norm();
     relative = beta / b_norm;
-    if (relative <= settings_.tolerance) break;
+    if (relative <= tolerance) break;
     basis_.col(0) = work_ / beta;
     g_.setZero();
     g_[0] = beta;
     int used = 0;
-    for (int j = 0; j < m && outcome.iterations < settings_.max_iterations; ++j) {
+    for (int j = 0; j < m && iterations < max_iterations; ++j) {
       work_ = basis_.col(j);
       apply_preconditioner(work_, preconditioned_);
       apply_jacobian(preconditioned_, work_);
@@ -237,9 +230,9 @@ FilmKrylovOutcome FilmKrylovSolver::solve(const LocalRows& rows, const std::vect
       hessenberg_(j + 1, j) = 0.0;
       g_[j + 1] = -givens_s_[j] * g_[j];
       g_[j] = givens_c_[j] * g_[j];
-      ++outcome.iterations;
+      ++iterations;
       used = j + 1;
-      if (std::abs(g_[j + 1]) / b_norm <= settings_.tolerance || next == 0.0) break;
+      if (std::abs(g_[j + 1]) / b_norm <= tolerance || next == 0.0) break;
     }
     y_.head(used) = g_.head(used);
     hessenberg_.topLeftCorner(used, used).triangularView<Eigen::Upper>().solveInPlace(y_.head(used));
@@ -248,16 +241,61 @@ FilmKrylovOutcome FilmKrylovSolver::solve(const LocalRows& rows, const std::vect
     step += preconditioned_;
     if (!step.allFinite()) break;
   }
+  return iterations;
+}
+
+FilmKrylovOutcome FilmKrylovSolver::solve(const LocalRows& rows, const std::vector<char>& branch_full,
+                                          double pressure_scale, double mass_scale, double area_over_load,
+                                          double forcing, const Eigen::VectorXd& residual, Eigen::VectorXd& step) {
+  const double tolerance = std::max(settings_.tolerance, forcing);
+  rows_ = &rows;
+  mass_scale_ = mass_scale;
+  area_over_load_ = area_over_load;
+  for (std::size_t j = 0; j < n_; ++j) {
+    const auto jj = static_cast<Eigen::Index>(j);
+    const bool fixed = topology_.fixed(j);
+    dp_ds_[jj] = !fixed && branch_full[j] != 0 ? pressure_scale : 0.0;
+    dtheta_ds_[jj] = !fixed && branch_full[j] == 0 ? 1.0 : 0.0;
+  }
+  FilmKrylovOutcome outcome;
+  const double b_norm = residual.norm();
+  if (b_norm == 0.0) {
+    step.setZero();
+    outcome.converged = true;
+    return outcome;
+  }
+  // The preconditioner of an earlier step serves while GMRES converges in
+  // few iterations with it (the Jacobian changes little between late
+  // Newton steps): refactorised when a node changed branch, when the last
+  // solve took more than kRefactoriseAfter iterations, or when GMRES with
+  // the old one does not converge in twice that.
+  bool fresh = false;
+  const bool same_branches = factorised_ && (dp_ds_.array() == load_row_.array() / area_over_load_).all();
+  if (!same_branches || last_iterations_ > kRefactoriseAfter) {
+    factorised_ = factorise(outcome.message);
+    if (!factorised_) return outcome;
+    fresh = true;
+  }
+  const int stale_limit = std::min(settings_.max_iterations, 2 * kRefactoriseAfter);
+  int iterations = gmres(tolerance, fresh ? settings_.max_iterations : stale_limit, residual, step);
+  outcome.iterations = iterations;
+  if (!fresh && !(step.allFinite() && iterations < stale_limit)) {
+    factorised_ = factorise(outcome.message);
+    if (!factorised_) return outcome;
+    iterations = gmres(tolerance, settings_.max_iterations, residual, step);
+    outcome.iterations += iterations;
+  }
+  last_iterations_ = iterations;
   // The residual measured with the operator, not GMRES's estimate.
   apply_jacobian(step, work_);
   work_ += residual;
   outcome.relative_residual = work_.norm() / b_norm;
-  outcome.converged = std::isfinite(outcome.relative_residual) && outcome.relative_residual <= settings_.tolerance;
+  outcome.converged = std::isfinite(outcome.relative_residual) && outcome.relative_residual <= tolerance;
   if (!outcome.converged) {
     outcome.message = fmt::format(
         "the EHL Newton step's GMRES solve did not converge: relative residual {:.3g} (tolerance {:.3g}) after {} "
         "iterations",
-        outcome.relative_residual, settings_.tolerance, outcome.iterations);
+        outcome.relative_residual, tolerance, outcome.iterations);
   }
   return outcome;
 }

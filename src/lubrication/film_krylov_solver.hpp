@@ -20,10 +20,10 @@
 namespace halfspace::lubrication::detail {
 
 struct FilmKrylovSettings {
-  int restart = 40;            // GMRES(m) basis size
-  int max_iterations = 400;    // GMRES iterations per solve, all restarts
-  double tolerance = 1e-9;     // on ||J x + r|| / ||r||
-  int neighbourhood = 0;       // K kept within this many cells (Chebyshev) in the preconditioner
+  int restart = 40;          // GMRES(m) basis size
+  int max_iterations = 400;  // GMRES iterations per solve, all restarts
+  double tolerance = 1e-9;   // on ||J x + r|| / ||r||
+  int neighbourhood = 0;     // K kept within this many cells (Chebyshev) in the preconditioner
 };
 
 struct FilmKrylovOutcome {
@@ -51,16 +51,21 @@ class FilmKrylovSolver {
 
   // Solves J step = -residual for the Newton system of the rows `rows`
   // (mass rows over `mass_scale`), the nodes' branches `branch_full`, the
-  // pressure scale dp/ds and the load row's `area / load`. Factorises the
-  // preconditioner first; its failure and GMRES's are returned.
+  // pressure scale dp/ds and the load row's `area / load`, to the relative
+  // residual max(settings.tolerance, forcing) (an inexact Newton step).
+  // Factorises the preconditioner first; its failure and GMRES's are
+  // returned.
   FilmKrylovOutcome solve(const LocalRows& rows, const std::vector<char>& branch_full, double pressure_scale,
-                          double mass_scale, double area_over_load, const Eigen::VectorXd& residual,
+                          double mass_scale, double area_over_load, double forcing, const Eigen::VectorXd& residual,
                           Eigen::VectorXd& step);
 
  private:
   void apply_jacobian(const Eigen::VectorXd& v, Eigen::VectorXd& out);
   bool factorise(std::string& message);
   void apply_preconditioner(const Eigen::VectorXd& v, Eigen::VectorXd& out);
+  // GMRES from step = 0 to the relative residual `tolerance` (GMRES's own
+  // estimate); the iterations taken.
+  int gmres(double tolerance, int max_iterations, const Eigen::VectorXd& residual, Eigen::VectorXd& step);
 
   InfluenceOperator& op_;
   const ReynoldsStencil& topology_;
@@ -76,7 +81,9 @@ class FilmKrylovSolver {
   std::vector<Eigen::Triplet<double>> triplets_;
   Eigen::SparseMatrix<double> sparse_;
   Eigen::SparseLU<Eigen::SparseMatrix<double>> lu_;
-  bool analysed_ = false;
+  bool analysed_ = false, factorised_ = false;
+  int last_iterations_ = 0;
+  Eigen::VectorXd load_row_;  // the load row of the factorised preconditioner
   Eigen::VectorXd border_column_, border_solved_, head_in_, head_out_;
   double border_pivot_ = 0.0;
   // GMRES workspace.
