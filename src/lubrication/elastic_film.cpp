@@ -14,7 +14,9 @@
 // coated half-spaces all use the operator the contact solvers use. A
 // backtracking line search on the scaled residual's norm keeps the films
 // positive and the semi-smooth steps (a node switching between full and
-// cavitated) from diverging.
+// cavitated) from diverging. Each step's linear system is solved by the
+// dense LU of J, or on larger grids by GMRES with K applied by the
+// operator (film_krylov_solver.hpp), which never forms K.
 #include "halfspace/lubrication/elastic_film.hpp"
 
 #include <fmt/format.h>
@@ -24,11 +26,14 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <vector>
 
+#include "film_krylov_solver.hpp"
 #include "halfspace/error.hpp"
 #include "halfspace/lubrication/cavitation_solver.hpp"
 #include "halfspace/lubrication/reynolds_stencil.hpp"
+#include "halfspace/memory_estimate.hpp"
 #include "halfspace/solvers/polonsky_keer.hpp"
 #include "reynolds_linearisation.hpp"
 
@@ -42,6 +47,24 @@ CouetteScheme parse_couette_scheme(std::string_view text) {
   if (text == "first-order") return CouetteScheme::first_order;
   if (text == "second-order") return CouetteScheme::second_order;
   throw InputError(fmt::format("Couette scheme '{}' is invalid: allowed are first-order, second-order", text));
+}
+
+std::string_view to_string(FilmLinearSolve solve) {
+  switch (solve) {
+    case FilmLinearSolve::dense:
+      return "dense";
+    case FilmLinearSolve::gmres:
+      return "gmres";
+    default:
+      return "automatic";
+  }
+}
+
+FilmLinearSolve parse_film_linear_solve(std::string_view text) {
+  if (text == "automatic") return FilmLinearSolve::automatic;
+  if (text == "dense") return FilmLinearSolve::dense;
+  if (text == "gmres") return FilmLinearSolve::gmres;
+  throw InputError(fmt::format("EHL linear solve '{}' is invalid: allowed are automatic, dense, gmres", text));
 }
 
 void ElasticFilmOptions::validate() const {
@@ -58,6 +81,21 @@ void ElasticFilmOptions::validate() const {
   if (max_iterations < 1) {
     throw OptionError("max_iterations", fmt::format("{}", max_iterations), "is invalid: at least 1 Newton step");
   }
+  if (krylov_restart < 2 || krylov_restart > 500) {
+    throw OptionError("krylov_restart", fmt::format("{}", krylov_restart), "is invalid: allowed range is 2 to 500");
+  }
+  if (krylov_max_iterations < 1) {
+    throw OptionError("krylov_max_iterations", fmt::format("{}", krylov_max_iterations),
+                      "is invalid: at least 1 GMRES iteration");
+  }
+  if (!(krylov_tolerance > 0.0 && krylov_tolerance < 1.0)) {
+    throw OptionError("krylov_tolerance", format_number(krylov_tolerance),
+                      "is invalid: allowed range is 0 < tolerance < 1");
+  }
+  if (preconditioner_neighbourhood < 0 || preconditioner_neighbourhood > 8) {
+    throw OptionError("preconditioner_neighbourhood", fmt::format("{}", preconditioner_neighbourhood),
+                      "is invalid: allowed range is 0 to 8 cells");
+  }
 }
 
 namespace {
@@ -71,6 +109,8 @@ constexpr std::array<double, 2> kStartFilms{0.5, 8.0};
 // The trust region of a Newton step, in units of the pressure scale (the
 // dry contact's peak) and of the thinnest film.
 constexpr double kLargestStep = 0.5;
+// The loosest relative tolerance of a GMRES step (far from the solution).
+constexpr double kLargestForcing = 1e-2;
 
 // The state of the Newton iteration: s and h0, and what follows from them.
 struct State {
@@ -148,9 +188,25 @@ ElasticFilm solve_elastic_film(InfluenceOperator& op, const Eigen::ArrayXd& gap,
   options.validate();
   const std::size_t n = grid.size();
   if (op.local_size() != n) throw InputError("the EHL film needs a serial influence operator (one process)");
-  if (n > kMaxElasticFilmNodes) {
-    throw InputError(fmt::format("the {} grid has {} nodes: the EHL solver's dense Newton path allows at most {}",
-                                 grid.shape_string(), n, kMaxElasticFilmNodes));
+  const bool krylov = options.linear_solve == FilmLinearSolve::gmres ||
+                      (options.linear_solve == FilmLinearSolve::automatic && n > kAutomaticKrylovNodes);
+  if (!krylov && n > kMaxElasticFilmNodes) {
+    throw InputError(fmt::format(
+        "the {} grid has {} nodes: the EHL solver's dense linear solve allows at most {} (use the gmres solve)",
+        grid.shape_string(), n, kMaxElasticFilmNodes));
+  }
+  const detail::FilmKrylovSettings krylov_settings{.restart = options.krylov_restart,
+                                                   .max_iterations = options.krylov_max_iterations,
+                                                   .tolerance = options.krylov_tolerance,
+                                                   .neighbourhood = options.preconditioner_neighbourhood};
+  if (krylov) {
+    const double needed = detail::film_krylov_memory_estimate(n, krylov_settings);
+    const auto available = available_memory();
+    if (available && needed > available->bytes) {
+      throw InputError(fmt::format("the EHL solve on the {} grid needs about {}, more than the {} available ({})",
+                                   grid.shape_string(), format_bytes(needed), format_bytes(available->bytes),
+                                   available->source));
+    }
   }
   if (static_cast<std::size_t>(gap.size()) != n || !gap.allFinite()) {
     throw InputError(fmt::format("EHL gap has {} values, the {} grid has {} cells; every value must be finite",
@@ -226,13 +282,21 @@ ElasticFilm solve_elastic_film(InfluenceOperator& op, const Eigen::ArrayXd& gap,
     return result;
   }
 
-  const Eigen::MatrixXd k_matrix = influence_matrix(op);
+  // The dense path's K, J and LU; the GMRES path's local rows and solver.
+  const Eigen::MatrixXd k_matrix = krylov ? Eigen::MatrixXd() : influence_matrix(op);
   NodeCoefficients coefficients;
   std::vector<LocalTerm> terms;
   terms.reserve(16);
   Eigen::VectorXd residual(ni + 1), step(ni + 1);
-  Eigen::MatrixXd jacobian_t(ni + 1, ni + 1);  // J transposed: row k's derivatives in column k
-  Eigen::PartialPivLU<Eigen::MatrixXd> lu(ni + 1);
+  Eigen::MatrixXd jacobian_t(krylov ? 0 : ni + 1, krylov ? 0 : ni + 1);  // J transposed: row k's in column k
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu(krylov ? 0 : ni + 1);
+  detail::LocalRows rows;
+  std::optional<detail::FilmKrylovSolver> krylov_solver;
+  if (krylov) {
+    rows.start.resize(n + 1);
+    rows.terms.reserve(16 * n);
+    krylov_solver.emplace(op, topology, krylov_settings);
+  }
   std::vector<char> branch_full(n, 1);
   double mass_scale = 1.0;
 
@@ -252,19 +316,23 @@ ElasticFilm solve_elastic_film(InfluenceOperator& op, const Eigen::ArrayXd& gap,
     }
     Measure m;
     double largest = 0.0;
-    if (linearise_too) jacobian_t.setZero();
+    const bool dense_too = linearise_too && !krylov;
+    if (dense_too) jacobian_t.setZero();
+    if (linearise_too && krylov) rows.terms.clear();
     for (std::size_t k = 0; k < n; ++k) {
       const auto kk = static_cast<Eigen::Index>(k);
+      if (linearise_too && krylov) rows.start[k] = rows.terms.size();
       if (topology.fixed(k)) {
         out[kk] = 0.0;
-        if (linearise_too) jacobian_t(kk, kk) = 1.0;
+        if (dense_too) jacobian_t(kk, kk) = 1.0;
         continue;
       }
       const double balance =
           linearise(topology, k, coefficients, state.pressure, state.theta, state.film, second_order, terms);
       largest = std::max(largest, std::abs(balance));
       out[kk] = balance / mass_scale;
-      if (!linearise_too) continue;
+      if (linearise_too && krylov) rows.terms.insert(rows.terms.end(), terms.begin(), terms.end());
+      if (!dense_too) continue;
       auto column = jacobian_t.col(kk);
       double by_offset = 0.0;
       for (const LocalTerm& t : terms) {
@@ -280,7 +348,8 @@ ElasticFilm solve_elastic_film(InfluenceOperator& op, const Eigen::ArrayXd& gap,
     m.mass = largest / (couette > 0.0 ? couette : 1.0);
     m.load = std::abs(load - w) / w;
     m.norm = out.norm();
-    if (linearise_too) {
+    if (linearise_too && krylov) rows.start[n] = rows.terms.size();
+    if (dense_too) {
       // Columns of J are rows of J^T: scale by dp/ds, then add d theta / ds.
       for (std::size_t j = 0; j < n; ++j) {
         const auto jj = static_cast<Eigen::Index>(j);
@@ -351,9 +420,34 @@ ElasticFilm solve_elastic_film(InfluenceOperator& op, const Eigen::ArrayXd& gap,
       // The generalised Jacobian's branch per node: full where s >= 0,
       // cavitated below (branch_consistent_step settles the nodes at s = 0).
       for (std::size_t j = 0; j < n; ++j) branch_full[j] = x.s[static_cast<Eigen::Index>(j)] >= 0.0 ? 1 : 0;
-      const bool singular = !detail::branch_consistent_step([&] { measure(x, residual, true); }, topology, x.s,
-                                                            jacobian_t, residual, lu, step, branch_full);
-      if (singular) {
+      if (krylov) {
+        // The linearisation does not depend on the branches: once, then
+        // one GMRES solve per branch pass.
+        measure(x, residual, true);
+        int step_iterations = 0;
+        std::string krylov_message;
+        // An inexact Newton step (Dembo, Eisenstat & Steihaug 1982): GMRES
+        // to a relative residual of the order of the Newton residual keeps
+        // the quadratic convergence near the solution and spares
+        // iterations far from it.
+        const double forcing = std::min(kLargestForcing, current.norm);
+        const auto gmres_solve = [&] {
+          const detail::FilmKrylovOutcome outcome =
+              krylov_solver->solve(rows, branch_full, pressure_scale, mass_scale, area / w, forcing, residual, step);
+          step_iterations += outcome.iterations;
+          krylov_message = outcome.message;
+          return outcome.converged;
+        };
+        const bool solved = detail::branch_consistent_step_with(gmres_solve, topology, x.s, step, branch_full);
+        result.krylov_iterations += step_iterations;
+        result.max_krylov_iterations_per_step = std::max(result.max_krylov_iterations_per_step, step_iterations);
+        if (!solved) {
+          result.status = FilmStatus::failure;
+          result.message = fmt::format("Newton step {}: {}", iteration + 1, krylov_message);
+          break;
+        }
+      } else if (!detail::branch_consistent_step([&] { measure(x, residual, true); }, topology, x.s, jacobian_t,
+                                                 residual, lu, step, branch_full)) {
         result.status = FilmStatus::failure;
         result.message = fmt::format("the EHL Newton step {} is singular", iteration + 1);
         break;
@@ -400,6 +494,7 @@ ElasticFilm solve_elastic_film(InfluenceOperator& op, const Eigen::ArrayXd& gap,
     result.message.clear();
   }
 
+  result.used_krylov = krylov;
   result.pressure = x.pressure;
   result.fluid_fraction = x.theta;
   result.film = x.film;

@@ -30,16 +30,13 @@ inline constexpr int kBranchPasses = 4;
 // unloaded nodes and an inlet's vanishing pressures) takes the branch the
 // step moves it into, found by re-solving (the directional derivative;
 // Qi & Sun 1993). Returns false when the step is not finite (J singular).
-template <class Linearise>
-bool branch_consistent_step(Linearise&& linearise, const ReynoldsStencil& topology, const Eigen::ArrayXd& s,
-                            const Eigen::MatrixXd& jacobian_t, const Eigen::VectorXd& residual,
-                            Eigen::PartialPivLU<Eigen::MatrixXd>& lu, Eigen::VectorXd& step,
-                            std::vector<char>& branch_full) {
+// The same with any linear solve: `solve()` fills `step` for the current
+// branches and returns false when it cannot (reported by the caller).
+template <class Solve>
+bool branch_consistent_step_with(Solve&& solve, const ReynoldsStencil& topology, const Eigen::ArrayXd& s,
+                                 const Eigen::VectorXd& step, std::vector<char>& branch_full) {
   for (int pass = 0; pass < kBranchPasses; ++pass) {
-    linearise();
-    lu.compute(jacobian_t.transpose());
-    step = lu.solve(-residual);
-    if (!step.allFinite()) return false;
+    if (!solve()) return false;
     bool flipped = false;
     for (std::size_t j = 0; j < branch_full.size(); ++j) {
       const auto jj = static_cast<Eigen::Index>(j);
@@ -53,6 +50,20 @@ bool branch_consistent_step(Linearise&& linearise, const ReynoldsStencil& topolo
     if (!flipped) break;
   }
   return true;
+}
+
+template <class Linearise>
+bool branch_consistent_step(Linearise&& linearise, const ReynoldsStencil& topology, const Eigen::ArrayXd& s,
+                            const Eigen::MatrixXd& jacobian_t, const Eigen::VectorXd& residual,
+                            Eigen::PartialPivLU<Eigen::MatrixXd>& lu, Eigen::VectorXd& step,
+                            std::vector<char>& branch_full) {
+  const auto dense_solve = [&] {
+    linearise();
+    lu.compute(jacobian_t.transpose());
+    step = lu.solve(-residual);
+    return step.allFinite();
+  };
+  return branch_consistent_step_with(dense_solve, topology, s, step, branch_full);
 }
 
 // The nodes' pressure-dependent coefficients for a film: rho / rho0, eps =

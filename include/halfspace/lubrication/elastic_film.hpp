@@ -18,8 +18,10 @@
 // unknowns are one variable s per node (p = p_scale max(s, 0) and theta =
 // 1 + min(s, 0), so the complementarity holds by construction and the
 // method is a semi-smooth Newton) and h0. Its Jacobian couples every node
-// through K and is factorised densely: the path is for line contacts and
-// modest point-contact grids (kMaxElasticFilmNodes).
+// through K. Each Newton step's linear system is solved either densely (K
+// and J formed, LU; line contacts and modest point-contact grids up to
+// kMaxElasticFilmNodes) or by restarted GMRES with K applied by the
+// operator and a sparse preconditioner (any grid that fits in memory).
 #pragma once
 
 #include <Eigen/Core>
@@ -37,6 +39,18 @@ namespace halfspace::lubrication {
 // Nodes up to which the dense Newton path is allowed: its Jacobian, its LU
 // and K are n x n each (3 x 134 MB at the limit).
 inline constexpr std::size_t kMaxElasticFilmNodes = 4096;
+
+// Above this many nodes FilmLinearSolve::automatic takes GMRES.
+inline constexpr std::size_t kAutomaticKrylovNodes = 1024;
+
+// The linear solve of each Newton step: the dense LU (K formed), restarted
+// GMRES matrix-free with a sparse preconditioner, or the dense one up to
+// kAutomaticKrylovNodes nodes and GMRES above.
+enum class FilmLinearSolve { automatic, dense, gmres };
+
+std::string_view to_string(FilmLinearSolve solve);
+// "automatic", "dense" or "gmres"; InputError naming the value otherwise.
+FilmLinearSolve parse_film_linear_solve(std::string_view text);
 
 // How the Couette (wedge) flux U rho h theta of a face is taken from
 // upstream: from the upstream node (first order: monotone, robust at any
@@ -59,9 +73,19 @@ struct ElasticFilmOptions {
   double load_tolerance = 1e-8;
   int max_iterations = 100;  // Newton steps
   CouetteScheme couette_scheme = CouetteScheme::first_order;
+  FilmLinearSolve linear_solve = FilmLinearSolve::automatic;
+  // GMRES: the restart length, the iterations per Newton step (all
+  // restarts), the relative residual ||J dx + r|| / ||r|| it must reach,
+  // and how many cells around a node the preconditioner keeps of K.
+  int krylov_restart = 40;
+  int krylov_max_iterations = 400;
+  double krylov_tolerance = 1e-9;
+  int preconditioner_neighbourhood = 0;
 
   // Throws OptionError naming the option unless load > 0 and finite, 0 <
-  // tolerance < 1, 0 < load_tolerance < 1, max_iterations >= 1.
+  // tolerance < 1, 0 < load_tolerance < 1, max_iterations >= 1, 2 <=
+  // krylov_restart <= 500, krylov_max_iterations >= 1, 0 <
+  // krylov_tolerance < 1, 0 <= preconditioner_neighbourhood <= 8.
   void validate() const;
 };
 
@@ -81,6 +105,11 @@ struct ElasticFilm {
   double max_pressure = 0.0;
   int iterations = 0;  // Newton steps
   int line_search_halvings = 0;
+  // The GMRES path: whether it was taken, its iterations in all and the
+  // most in one Newton step's linear solve (all branch passes).
+  bool used_krylov = false;
+  int krylov_iterations = 0;
+  int max_krylov_iterations_per_step = 0;
   double wall_seconds = 0.0;
   // Measured after the solve with the operator's own product (not the
   // Newton's factorised Jacobian): the relative mass residual and |load -
@@ -96,8 +125,10 @@ struct ElasticFilm {
 // ambient viscosity eta0, the velocities and the flow boundary (validated
 // here); `laws` the pressure laws. Starts from the dry contact (Polonsky &
 // Keer on the same operator) at the load, unless `start` holds a previous
-// film of the same grid. Throws InputError for invalid input or more than
-// kMaxElasticFilmNodes nodes; non-convergence is a status.
+// film of the same grid. Throws InputError for invalid input, for the
+// dense solve on more than kMaxElasticFilmNodes nodes, and for a GMRES
+// solve whose memory estimate exceeds the memory available; non-convergence
+// (of the Newton iteration or of a step's GMRES) is a status.
 ElasticFilm solve_elastic_film(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
                                const LubricantLaws& laws, const ElasticFilmOptions& options,
                                const ElasticFilm* start = nullptr);

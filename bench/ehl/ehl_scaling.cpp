@@ -1,0 +1,76 @@
+// EHL point contacts on N x N grids with the GMRES linear solve (and the
+// dense one where it fits): Newton steps, GMRES iterations per step,
+// seconds, peak resident bytes per node, and the films against Hamrock &
+// Dowson (1977, k = 1). Usage: ehl_scaling N [gmres|dense] [neighbourhood].
+// One solve per process, so that the peak resident size is the solve's.
+#include <fmt/format.h>
+#include <sys/resource.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <string_view>
+
+#include "halfspace/grid.hpp"
+#include "halfspace/lubrication/elastic_film.hpp"
+#include "halfspace/operators/fft_influence_operator.hpp"
+
+namespace {
+
+using namespace halfspace;
+using namespace halfspace::lubrication;
+
+constexpr double kEStar = 1.1e11;
+constexpr double kRadius = 0.01;
+constexpr double kViscosity = 0.04;
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2) {
+    fmt::print(stderr, "usage: ehl_scaling N [gmres|dense] [neighbourhood]\n");
+    return 2;
+  }
+  const auto n = static_cast<std::size_t>(std::atol(argv[1]));
+  const FilmLinearSolve solve = argc > 2 ? parse_film_linear_solve(argv[2]) : FilmLinearSolve::gmres;
+  const int neighbourhood = argc > 3 ? std::atoi(argv[3]) : 0;
+  const double w = 3e-7, u = 1e-11, g = 5000;
+  const double e_prime = 2.0 * kEStar;
+  const double load = w * e_prime * kRadius * kRadius;
+  const double a = std::cbrt(3.0 * load * kRadius / (4.0 * kEStar));
+  // x in [-3.5a, 1.5a], y in [-2.5a, 2.5a]: the contact's centre on a node.
+  const double dx = 5.0 * a / static_cast<double>(n - 1);
+  const auto upstream = static_cast<std::size_t>(std::lround(3.5 * a / dx));
+  const std::size_t half = (n - 1) / 2;
+  const Grid grid = Grid::plane(n, n, dx, dx, Boundary::free);
+  Eigen::ArrayXd gap(static_cast<Eigen::Index>(n * n));
+  for (std::size_t j = 0; j < n; ++j) {
+    for (std::size_t i = 0; i < n; ++i) {
+      const double x = (static_cast<double>(i) - static_cast<double>(upstream)) * dx;
+      const double y = (static_cast<double>(j) - static_cast<double>(half)) * dx;
+      gap[static_cast<Eigen::Index>(j * n + i)] = (x * x + y * y) / (2.0 * kRadius);
+    }
+  }
+  FlowConditions conditions;
+  conditions.viscosity = kViscosity;
+  conditions.entrainment_velocity = {u * e_prime * kRadius / kViscosity, 0.0};
+  const LubricantLaws laws{.piezoviscosity = Piezoviscosity::roelands,
+                           .pressure_viscosity = g / (2.0 * kEStar),
+                           .compressibility = Compressibility::dowson_higginson};
+  FftInfluenceOperator op(grid, kEStar);
+  ElasticFilmOptions options{.load = load, .linear_solve = solve, .preconditioner_neighbourhood = neighbourhood};
+  const ElasticFilm f = solve_elastic_film(op, gap, conditions, laws, options);
+  const double hd_central =
+      2.69 * std::pow(u, 0.67) * std::pow(g, 0.53) * std::pow(w, -0.067) * (1.0 - 0.61 * std::exp(-0.73));
+  const double hd_minimum =
+      3.63 * std::pow(u, 0.68) * std::pow(g, 0.49) * std::pow(w, -0.073) * (1.0 - std::exp(-0.68));
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  const double peak = static_cast<double>(usage.ru_maxrss) * 1024.0;
+  fmt::print(
+      "N {} solve {} r {} cells/a {:.1f}: {} steps, {} GMRES its ({} most per step), {:.2f} s, {:.0f} B/node, "
+      "Hc/HD {:.4f} Hmin/HD {:.4f}, h0 {:.6e} {}\n",
+      n, to_string(solve), neighbourhood, a / dx, f.iterations, f.krylov_iterations, f.max_krylov_iterations_per_step,
+      f.wall_seconds, peak / static_cast<double>(n * n), f.central_film_thickness / kRadius / hd_central,
+      f.minimum_film_thickness / kRadius / hd_minimum, f.offset, f.converged() ? "converged" : f.message);
+  return f.converged() ? 0 : 1;
+}

@@ -1,0 +1,303 @@
+// GMRES on the EHL Newton system (film_krylov_solver.hpp). The Jacobian,
+//
+//   J = (A_p + A_h K) diag(dp/ds) + A_theta diag(dtheta/ds)  (+ h0 column, load row),
+//
+// is applied with one product of the influence operator per iteration. The
+// preconditioner keeps K only within a few cells of each node: at high
+// loads the mass rows are dominated by the Couette difference of the film,
+// A_h K, a difference of K across neighbouring nodes that decays much
+// faster than K itself (the observation behind Venner & Lubrecht's 2000
+// "differential deflection"), so the truncated operator captures the stiff
+// part and GMRES the smooth far field in few iterations. The bordered
+// system (h0 column c, load row r) is solved with B's LU by the Schur
+// complement: z = (r^T B^-1 f - g) / (r^T B^-1 c), y = B^-1 f - z B^-1 c.
+#include "film_krylov_solver.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <span>
+
+namespace halfspace::lubrication::detail {
+
+namespace {
+// Entries per row of the preconditioner: the (up to 8) local terms' film
+// derivatives each spread over the (2r + 1)^2 truncated K, of which the
+// neighbouring nodes' overlap (a 5 x 3 cross of terms) leaves about
+// (2r + 3)(2r + 5) distinct columns.
+double preconditioner_row_entries(int r) {
+  return (2.0 * r + 3.0) * (2.0 * r + 5.0);
+}
+// SparseLU's fill of the preconditioner relative to its entries, a
+// measured allowance (64^2 to 256^2 point contacts; docs/performance.md).
+constexpr double kFillAllowance = 12.0;
+// GMRES iterations above which the next step refactorises the preconditioner.
+constexpr int kRefactoriseAfter = 15;
+}  // namespace
+
+double film_krylov_memory_estimate(std::size_t nodes, const FilmKrylovSettings& settings) {
+  const double per_row = preconditioner_row_entries(settings.neighbourhood);
+  const double per_node = 8.0 * (settings.restart + 1)            // GMRES basis
+                          + 8.0 * 16.0 * sizeof(LocalTerm) / 8.0  // local rows (up to 16 terms)
+                          + per_row * (16.0 + 12.0)               // triplets and the compressed matrix
+                          + per_row * kFillAllowance * 12.0       // the LU's supernodes
+                          + 8.0 * 40.0;                           // the Newton state and work vectors
+  return per_node * static_cast<double>(nodes);
+}
+
+FilmKrylovSolver::FilmKrylovSolver(InfluenceOperator& op, const ReynoldsStencil& topology,
+                                   const FilmKrylovSettings& settings)
+    : op_(op), topology_(topology), settings_(settings), n_(op.grid().size()) {
+  const Grid& grid = op.grid();
+  const int r = settings_.neighbourhood;
+  std::vector<double> unit(n_, 0.0), column(n_, 0.0);
+  unit[0] = 1.0;
+  op_.apply(unit, column);
+  const auto nx = static_cast<long>(grid.nx());
+  const auto ny = static_cast<long>(grid.ny());
+  local_k_.assign(static_cast<std::size_t>((2 * r + 1) * (2 * r + 1)), 0.0);
+  for (long oy = -r; oy <= r; ++oy) {
+    for (long ox = -r; ox <= r; ++ox) {
+      long cx = 0, cy = 0;
+      if (grid.periodic()) {
+        cx = ((ox % nx) + nx) % nx;
+        cy = ((oy % ny) + ny) % ny;
+      } else {
+        cx = std::abs(ox);
+        cy = std::abs(oy);
+        if (cx >= nx || cy >= ny) continue;
+      }
+      local_k_[static_cast<std::size_t>((oy + r) * (2 * r + 1) + (ox + r))] =
+          column[static_cast<std::size_t>(cy * nx + cx)];
+    }
+  }
+  const auto ni = static_cast<Eigen::Index>(n_);
+  const auto m = static_cast<Eigen::Index>(settings_.restart);
+  dp_ds_.resize(ni);
+  load_row_.resize(ni);
+  dtheta_ds_.resize(ni);
+  product_in_.resize(ni);
+  product_out_.resize(ni);
+  border_column_.resize(ni);
+  border_solved_.resize(ni);
+  head_in_.resize(ni);
+  head_out_.resize(ni);
+  basis_.resize(ni + 1, m + 1);
+  hessenberg_.resize(m + 1, m);
+  givens_c_.resize(m);
+  givens_s_.resize(m);
+  g_.resize(m + 1);
+  y_.resize(m);
+  work_.resize(ni + 1);
+  preconditioned_.resize(ni + 1);
+}
+
+void FilmKrylovSolver::apply_jacobian(const Eigen::VectorXd& v, Eigen::VectorXd& out) {
+  const auto ni = static_cast<Eigen::Index>(n_);
+  product_in_ = dp_ds_.cwiseProduct(v.head(ni));
+  op_.apply(std::span<const double>(product_in_.data(), n_), std::span<double>(product_out_.data(), n_));
+  const double by_offset = v[ni];
+  for (std::size_t k = 0; k < n_; ++k) {
+    const auto kk = static_cast<Eigen::Index>(k);
+    if (topology_.fixed(k)) {
+      out[kk] = v[kk];
+      continue;
+    }
+    double sum = 0.0;
+    for (std::size_t t = rows_->start[k]; t < rows_->start[k + 1]; ++t) {
+      const LocalTerm& term = rows_->terms[t];
+      const auto j = static_cast<Eigen::Index>(term.node);
+      sum += (term.by_pressure * dp_ds_[j] + term.by_fraction * dtheta_ds_[j]) * v[j] +
+             term.by_film * (product_out_[j] + by_offset);
+    }
+    out[kk] = sum / mass_scale_;
+  }
+  out[ni] = area_over_load_ * dp_ds_.dot(v.head(ni));
+}
+
+bool FilmKrylovSolver::factorise(std::string& message) {
+  const Grid& grid = op_.grid();
+  const auto nx = static_cast<long>(grid.nx());
+  const auto ny = static_cast<long>(grid.ny());
+  const int r = settings_.neighbourhood;
+  triplets_.clear();
+  // Every entry of the pattern is written, zero or not, so that the
+  // pattern is the same at every Newton step and analysed once.
+  for (std::size_t k = 0; k < n_; ++k) {
+    const auto row = static_cast<int>(k);
+    const auto kk = static_cast<Eigen::Index>(k);
+    border_column_[kk] = 0.0;
+    if (topology_.fixed(k)) {
+      triplets_.emplace_back(row, row, 1.0);
+      continue;
+    }
+    for (std::size_t t = rows_->start[k]; t < rows_->start[k + 1]; ++t) {
+      const LocalTerm& term = rows_->terms[t];
+      const auto j = static_cast<Eigen::Index>(term.node);
+      triplets_.emplace_back(row, static_cast<int>(j),
+                             (term.by_pressure * dp_ds_[j] + term.by_fraction * dtheta_ds_[j]) / mass_scale_);
+      border_column_[kk] += term.by_film / mass_scale_;
+      const long x = static_cast<long>(term.node) % nx;
+      const long y = static_cast<long>(term.node) / nx;
+      for (long oy = -r; oy <= r; ++oy) {
+        for (long ox = -r; ox <= r; ++ox) {
+          long mx = x + ox, my = y + oy;
+          if (grid.periodic()) {
+            mx = (mx + nx) % nx;
+            my = (my + ny) % ny;
+          } else if (mx < 0 || mx >= nx || my < 0 || my >= ny) {
+            continue;
+          }
+          const auto m = static_cast<Eigen::Index>(my * nx + mx);
+          const double k_value = local_k_[static_cast<std::size_t>((oy + r) * (2 * r + 1) + (ox + r))];
+          triplets_.emplace_back(row, static_cast<int>(m), term.by_film / mass_scale_ * k_value * dp_ds_[m]);
+        }
+      }
+    }
+  }
+  const auto ni = static_cast<Eigen::Index>(n_);
+  sparse_.resize(ni, ni);
+  sparse_.setFromTriplets(triplets_.begin(), triplets_.end());
+  if (!analysed_) {
+    lu_.analyzePattern(sparse_);
+    analysed_ = true;
+  }
+  lu_.factorize(sparse_);
+  if (lu_.info() != Eigen::Success) {
+    message = fmt::format("the EHL preconditioner's sparse LU failed: {}", lu_.lastErrorMessage());
+    return false;
+  }
+  border_solved_ = lu_.solve(border_column_);
+  load_row_ = area_over_load_ * dp_ds_;
+  border_pivot_ = load_row_.dot(border_solved_);
+  if (!(std::isfinite(border_pivot_) && border_pivot_ != 0.0)) {
+    message = "the EHL preconditioner is singular: no node carries pressure to balance the load";
+    return false;
+  }
+  return true;
+}
+
+void FilmKrylovSolver::apply_preconditioner(const Eigen::VectorXd& v, Eigen::VectorXd& out) {
+  const auto ni = static_cast<Eigen::Index>(n_);
+  head_in_ = v.head(ni);
+  head_out_ = lu_.solve(head_in_);
+  const double z = (load_row_.dot(head_out_) - v[ni]) / border_pivot_;
+  out.head(ni) = head_out_ - z * border_solved_;
+  out[ni] = z;
+}
+
+int FilmKrylovSolver::gmres(double tolerance, int max_iterations, const Eigen::VectorXd& residual,
+                            Eigen::VectorXd& step) {
+  int iterations = 0;
+  step.setZero();
+  const double b_norm = residual.norm();
+  if (b_norm == 0.0) return 0;
+  const int m = settings_.restart;
+  double relative = 1.0;
+  // Restarted GMRES with right preconditioning (Saad 2003, alg. 9.5): the
+  // least-squares residual |g_{j+1}| tracks ||b - J x|| without forming it.
+  while (iterations < max_iterations) {
+    apply_jacobian(step, work_);
+    work_ = -residual - work_;
+    const double beta = work_.norm();
+    relative = beta / b_norm;
+    if (relative <= tolerance) break;
+    basis_.col(0) = work_ / beta;
+    g_.setZero();
+    g_[0] = beta;
+    int used = 0;
+    for (int j = 0; j < m && iterations < max_iterations; ++j) {
+      work_ = basis_.col(j);
+      apply_preconditioner(work_, preconditioned_);
+      apply_jacobian(preconditioned_, work_);
+      for (int i = 0; i <= j; ++i) {
+        hessenberg_(i, j) = basis_.col(i).dot(work_);
+        work_ -= hessenberg_(i, j) * basis_.col(i);
+      }
+      const double next = work_.norm();
+      hessenberg_(j + 1, j) = next;
+      if (next > 0.0) basis_.col(j + 1) = work_ / next;
+      for (int i = 0; i < j; ++i) {
+        const double a = hessenberg_(i, j), b = hessenberg_(i + 1, j);
+        hessenberg_(i, j) = givens_c_[i] * a + givens_s_[i] * b;
+        hessenberg_(i + 1, j) = -givens_s_[i] * a + givens_c_[i] * b;
+      }
+      const double radius = std::hypot(hessenberg_(j, j), hessenberg_(j + 1, j));
+      givens_c_[j] = radius > 0.0 ? hessenberg_(j, j) / radius : 1.0;
+      givens_s_[j] = radius > 0.0 ? hessenberg_(j + 1, j) / radius : 0.0;
+      hessenberg_(j, j) = radius;
+      hessenberg_(j + 1, j) = 0.0;
+      g_[j + 1] = -givens_s_[j] * g_[j];
+      g_[j] = givens_c_[j] * g_[j];
+      ++iterations;
+      used = j + 1;
+      if (std::abs(g_[j + 1]) / b_norm <= tolerance || next == 0.0) break;
+    }
+    y_.head(used) = g_.head(used);
+    hessenberg_.topLeftCorner(used, used).triangularView<Eigen::Upper>().solveInPlace(y_.head(used));
+    work_.noalias() = basis_.leftCols(used) * y_.head(used);
+    apply_preconditioner(work_, preconditioned_);
+    step += preconditioned_;
+    if (!step.allFinite()) break;
+  }
+  return iterations;
+}
+
+FilmKrylovOutcome FilmKrylovSolver::solve(const LocalRows& rows, const std::vector<char>& branch_full,
+                                          double pressure_scale, double mass_scale, double area_over_load,
+                                          double forcing, const Eigen::VectorXd& residual, Eigen::VectorXd& step) {
+  const double tolerance = std::max(settings_.tolerance, forcing);
+  rows_ = &rows;
+  mass_scale_ = mass_scale;
+  area_over_load_ = area_over_load;
+  for (std::size_t j = 0; j < n_; ++j) {
+    const auto jj = static_cast<Eigen::Index>(j);
+    const bool fixed = topology_.fixed(j);
+    dp_ds_[jj] = !fixed && branch_full[j] != 0 ? pressure_scale : 0.0;
+    dtheta_ds_[jj] = !fixed && branch_full[j] == 0 ? 1.0 : 0.0;
+  }
+  FilmKrylovOutcome outcome;
+  const double b_norm = residual.norm();
+  if (b_norm == 0.0) {
+    step.setZero();
+    outcome.converged = true;
+    return outcome;
+  }
+  // The preconditioner of an earlier step serves while GMRES converges in
+  // few iterations with it (the Jacobian changes little between late
+  // Newton steps): refactorised when a node changed branch, when the last
+  // solve took more than kRefactoriseAfter iterations, or when GMRES with
+  // the old one does not converge in twice that.
+  bool fresh = false;
+  const bool same_branches = factorised_ && (dp_ds_.array() == load_row_.array() / area_over_load_).all();
+  if (!same_branches || last_iterations_ > kRefactoriseAfter) {
+    factorised_ = factorise(outcome.message);
+    if (!factorised_) return outcome;
+    fresh = true;
+  }
+  const int stale_limit = std::min(settings_.max_iterations, 2 * kRefactoriseAfter);
+  int iterations = gmres(tolerance, fresh ? settings_.max_iterations : stale_limit, residual, step);
+  outcome.iterations = iterations;
+  if (!fresh && !(step.allFinite() && iterations < stale_limit)) {
+    factorised_ = factorise(outcome.message);
+    if (!factorised_) return outcome;
+    iterations = gmres(tolerance, settings_.max_iterations, residual, step);
+    outcome.iterations += iterations;
+  }
+  last_iterations_ = iterations;
+  // The residual measured with the operator, not GMRES's estimate.
+  apply_jacobian(step, work_);
+  work_ += residual;
+  outcome.relative_residual = work_.norm() / b_norm;
+  outcome.converged = std::isfinite(outcome.relative_residual) && outcome.relative_residual <= tolerance;
+  if (!outcome.converged) {
+    outcome.message = fmt::format(
+        "the EHL Newton step's GMRES solve did not converge: relative residual {:.3g} (tolerance {:.3g}) after {} "
+        "iterations",
+        outcome.relative_residual, tolerance, outcome.iterations);
+  }
+  return outcome;
+}
+
+}  // namespace halfspace::lubrication::detail

@@ -1,0 +1,94 @@
+// The EHL Newton step's linear solve for grids the dense LU cannot hold:
+// restarted GMRES (Saad & Schultz 1986) on the Jacobian applied matrix-free
+// (the elastic coupling through the influence operator, K never formed),
+// right-preconditioned by a sparse approximation of the Jacobian (the
+// Reynolds stencil with K truncated to a few cells around each node)
+// factorised by Eigen's SparseLU. Private to the library.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <Eigen/SparseLU>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "halfspace/lubrication/reynolds_stencil.hpp"
+#include "halfspace/operators/influence_operator.hpp"
+#include "reynolds_linearisation.hpp"
+
+namespace halfspace::lubrication::detail {
+
+struct FilmKrylovSettings {
+  int restart = 40;          // GMRES(m) basis size
+  int max_iterations = 400;  // GMRES iterations per solve, all restarts
+  double tolerance = 1e-9;   // on ||J x + r|| / ||r||
+  int neighbourhood = 0;     // K kept within this many cells (Chebyshev) in the preconditioner
+};
+
+struct FilmKrylovOutcome {
+  bool converged = false;
+  int iterations = 0;
+  double relative_residual = 0.0;  // ||J x + r|| / ||r||, recomputed at the end with the operator
+  std::string message;             // empty when converged
+};
+
+// The local derivatives of the Newton rows, one row per node in CSR form
+// (the terms of detail::linearise), filled by the Newton's linearisation.
+struct LocalRows {
+  std::vector<std::size_t> start;  // n + 1 offsets into terms
+  std::vector<LocalTerm> terms;
+};
+
+// Peak bytes the Krylov path needs on an n-node grid (the GMRES basis, the
+// local rows, the preconditioner with a fill allowance, the Newton state).
+double film_krylov_memory_estimate(std::size_t nodes, const FilmKrylovSettings& settings);
+
+class FilmKrylovSolver {
+ public:
+  // Reads the translation-invariant K around a node off one product of `op`.
+  FilmKrylovSolver(InfluenceOperator& op, const ReynoldsStencil& topology, const FilmKrylovSettings& settings);
+
+  // Solves J step = -residual for the Newton system of the rows `rows`
+  // (mass rows over `mass_scale`), the nodes' branches `branch_full`, the
+  // pressure scale dp/ds and the load row's `area / load`, to the relative
+  // residual max(settings.tolerance, forcing) (an inexact Newton step).
+  // Factorises the preconditioner first; its failure and GMRES's are
+  // returned.
+  FilmKrylovOutcome solve(const LocalRows& rows, const std::vector<char>& branch_full, double pressure_scale,
+                          double mass_scale, double area_over_load, double forcing, const Eigen::VectorXd& residual,
+                          Eigen::VectorXd& step);
+
+ private:
+  void apply_jacobian(const Eigen::VectorXd& v, Eigen::VectorXd& out);
+  bool factorise(std::string& message);
+  void apply_preconditioner(const Eigen::VectorXd& v, Eigen::VectorXd& out);
+  // GMRES from step = 0 to the relative residual `tolerance` (GMRES's own
+  // estimate); the iterations taken.
+  int gmres(double tolerance, int max_iterations, const Eigen::VectorXd& residual, Eigen::VectorXd& step);
+
+  InfluenceOperator& op_;
+  const ReynoldsStencil& topology_;
+  FilmKrylovSettings settings_;
+  std::size_t n_;
+  std::vector<double> local_k_;  // K at offsets (dx, dy) in [-r, r]^2, row-major
+  // The current linear system.
+  const LocalRows* rows_ = nullptr;
+  double mass_scale_ = 1.0, area_over_load_ = 1.0;
+  Eigen::VectorXd dp_ds_, dtheta_ds_, product_in_, product_out_;
+  // The preconditioner: B (the n x n sparse part) bordered by the h0
+  // column and the load row, solved through B's LU and B^-1 c.
+  std::vector<Eigen::Triplet<double>> triplets_;
+  Eigen::SparseMatrix<double> sparse_;
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> lu_;
+  bool analysed_ = false, factorised_ = false;
+  int last_iterations_ = 0;
+  Eigen::VectorXd load_row_;  // the load row of the factorised preconditioner
+  Eigen::VectorXd border_column_, border_solved_, head_in_, head_out_;
+  double border_pivot_ = 0.0;
+  // GMRES workspace.
+  Eigen::MatrixXd basis_, hessenberg_;
+  Eigen::VectorXd givens_c_, givens_s_, g_, y_, work_, preconditioned_;
+};
+
+}  // namespace halfspace::lubrication::detail
