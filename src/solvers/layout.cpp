@@ -4,7 +4,9 @@
 
 #include "halfspace/fft/grid_transform.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
+#include "halfspace/operators/single_precision_fft_operator.hpp"
 #include "halfspace/solvers/fourier_preconditioner.hpp"
+#include "halfspace/solvers/solver_options.hpp"
 
 namespace halfspace::solvers {
 namespace {
@@ -36,6 +38,33 @@ class SerialLayout final : public Layout {
     made.op = std::move(op);
     return made;
   }
+  // Periodic grids: the double transform for the products K p, and one in
+  // single precision for the step's products and M^-1, living in the double
+  // transform's spectrum (idle between the products K p, and it holds
+  // exactly the single transform's spectrum and real array), so the mixed
+  // solve holds no more memory than the double one. Free grids: the
+  // products stay double (they need the zero-padded transform); M^-1 in
+  // single precision in the padded buffer.
+  ElasticOperators make_mixed_operators(const Grid& grid, const HalfSpace& half_space, bool fourier,
+                                        FftPlanning planning) const override {
+    if (estimated_plans_) planning = FftPlanning::estimate;
+    ElasticOperators made;
+    if (grid.periodic()) {
+      auto transform = make_grid_transform(grid, planning);
+      made.op = std::make_unique<FftInfluenceOperator>(grid, half_space, transform);
+      auto single = make_single_grid_transform(grid, planning, transform->spectrum());
+      made.inner = std::make_unique<SinglePrecisionFftOperator>(grid, half_space, single);
+      if (fourier) made.fourier = std::make_unique<FourierPreconditioner>(grid, half_space, single);
+      return made;
+    }
+    auto op = std::make_unique<FftInfluenceOperator>(grid, half_space, planning);
+    if (fourier) {
+      made.fourier = std::make_unique<FourierPreconditioner>(grid, half_space,
+                                                             make_single_grid_transform(grid, planning, op->scratch()));
+    }
+    made.op = std::move(op);
+    return made;
+  }
   RowSlab rows(const Grid& grid) const override { return {0, grid.dimension() == 1 ? 1 : grid.ny()}; }
   const linalg::Communicator& communicator() const override { return linalg::serial_communicator(); }
 
@@ -44,6 +73,13 @@ class SerialLayout final : public Layout {
 };
 
 }  // namespace
+
+ElasticOperators Layout::make_mixed_operators(const Grid& /*grid*/, const HalfSpace& /*half_space*/, bool /*fourier*/,
+                                              FftPlanning /*planning*/) const {
+  throw SolverOptionError("precision", "mixed",
+                          "is not available with more than one process yet: use precision double (one process "
+                          "solves mixed)");
+}
 
 const Layout& serial_layout() {
   static const SerialLayout serial(false);

@@ -29,6 +29,13 @@ using linalg::sums;
 // The displacement is updated incrementally between exact products K p; an
 // exact one every this many updates keeps rounding from accumulating.
 constexpr int kUpdatesBetweenExactProducts = 50;
+// With single-precision inner products (mixed precision) the updates also
+// carry the products' rounding, about 1e-7 of each step: the large early
+// steps leave an error that the later, smaller residual would not show.
+// An exact product whenever the residual has fallen by this factor since
+// the last one keeps that error below the residual (the outer correction
+// of iterative refinement, see the header).
+constexpr double kRefinementFactor = 1e-2;
 
 // Powell's restart threshold, and the share of the contact cells that may
 // enter in one step without a restart (preconditioned form, see the header).
@@ -105,10 +112,12 @@ struct CappedScale {
 // step's correction c).
 class Iteration {
  public:
-  Iteration(InfluenceOperator& op, Preconditioner* preconditioner, const PolonskyKeerOptions& options,
-            const Problem& problem, SolveResult& result, Eigen::ArrayXd& direction, Eigen::ArrayXd& image,
-            double& uniform_response_range)
+  Iteration(InfluenceOperator& op, InfluenceOperator& inner, Preconditioner* preconditioner,
+            const PolonskyKeerOptions& options, const Problem& problem, SolveResult& result, Eigen::ArrayXd& direction,
+            Eigen::ArrayXd& image, double& uniform_response_range)
       : op_(op),
+        inner_(inner),
+        refined_(&inner != &op),
         preconditioner_(preconditioner),
         options_(options),
         problem_(problem),
@@ -176,13 +185,17 @@ class Iteration {
   // control, and the residual (see the header), from an exact product every
   // kUpdatesBetweenExactProducts updates and whenever it would stop.
   void evaluate(int iteration) {
-    if (updates_since_exact_ >= kUpdatesBetweenExactProducts) exact_displacement();
+    if (updates_since_exact_ >= kUpdatesBetweenExactProducts ||
+        (refined_ && updates_since_exact_ > 0 && residual_ < kRefinementFactor * exact_residual_)) {
+      exact_displacement();
+    }
     measure();
     if (residual_ <= options_.tolerance && updates_since_exact_ > 0) {
       // Convergence is judged on the exact product only.
       exact_displacement();
       measure();
     }
+    if (updates_since_exact_ == 0) exact_residual_ = residual_;
     result_.residual_history.push_back(residual_);
     if (options_.progress) options_.progress(iteration, residual_);
     // A load-controlled iteration without a cap whose residual has not
@@ -279,7 +292,7 @@ class Iteration {
   // the set, as conjugate() keeps them under load control (the curvature
   // t.Kt - mean(Kt) sum(t) of a direction with a mean can vanish).
   bool step_length(int iteration) {
-    op_.apply({t_, n_}, {r_, n_});
+    inner_.apply({t_, n_}, {r_, n_});
     ++result_.operator_applications;
     const auto [r_sum, t_sum, gt, rt] = sums<4>(comm_, n_, [&](std::size_t i) {
       const double in_set = set_.contains(i) ? 1.0 : 0.0;
@@ -445,7 +458,7 @@ class Iteration {
   void finish_step(double corrected, bool correction) {
     if (preconditioner_) preconditioner_->observe_step({corrected, search_cells_});
     if (correction) {
-      op_.apply({r_, n_}, {g_, n_});
+      inner_.apply({r_, n_}, {g_, n_});
       ++result_.operator_applications;
       deferred_.add_correction = true;
     }
@@ -659,6 +672,8 @@ class Iteration {
   }
 
   InfluenceOperator& op_;
+  InfluenceOperator& inner_;  // the step's products K t and K c (see the header)
+  const bool refined_;        // inner_ is not op_: refine (kRefinementFactor)
   Preconditioner* preconditioner_;
   const PolonskyKeerOptions& options_;
   const Problem& problem_;
@@ -677,6 +692,7 @@ class Iteration {
   double& uniform_response_range_;  // ptp(K 1), the solver's
 
   int updates_since_exact_ = 0;
+  double exact_residual_ = kInfinity;  // the residual at the last exact product
   Deferred deferred_;
   double approach_;
   double residual_ = 0.0;
@@ -713,12 +729,18 @@ void PolonskyKeerOptions::validate() const {
   }
 }
 
-PolonskyKeer::PolonskyKeer(InfluenceOperator& op, PolonskyKeerOptions options, Preconditioner* preconditioner)
+PolonskyKeer::PolonskyKeer(InfluenceOperator& op, PolonskyKeerOptions options, Preconditioner* preconditioner,
+                           InfluenceOperator* inner)
     : op_(op),
+      inner_(inner ? *inner : op),
       options_(std::move(options)),
       preconditioner_(preconditioner),
       name_(preconditioner ? fmt::format("{}-polonsky-keer", preconditioner->kind()) : "polonsky-keer") {
   options_.validate();
+  if (inner_.local_size() != op_.local_size()) {
+    throw InputError(
+        fmt::format("the inner operator holds {} cells, but the operator {}", inner_.local_size(), op_.local_size()));
+  }
   if (preconditioner_ && options_.form != PolonskyKeerForm::projected) {
     throw InputError("a preconditioner needs the projected form of Polonsky-Keer (PolonskyKeerForm::projected)");
   }
@@ -759,7 +781,7 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
   result.gap.setZero(n);
   if (preconditioner_) preconditioner_->begin_solve();
 
-  Iteration it(op_, preconditioner_, options_, problem, result, direction_, image_, uniform_response_range_);
+  Iteration it(op_, inner_, preconditioner_, options_, problem, result, direction_, image_, uniform_response_range_);
   it.start(warm);  // 0: starting pressure
   int k = 0;
   for (;; ++k) {

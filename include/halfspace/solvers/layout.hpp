@@ -26,6 +26,10 @@ struct SolverOptions;
 struct ElasticOperators {
   std::unique_ptr<InfluenceOperator> op;
   std::unique_ptr<Preconditioner> fourier;  // null unless asked for
+  // Mixed precision: K in single precision for the step's products (null
+  // where they stay double); it acts on op's fields and may share its
+  // buffers, so the two never run at once.
+  std::unique_ptr<InfluenceOperator> inner;
 };
 
 // This process's rows of a grid: [first, first + count).
@@ -44,6 +48,13 @@ class Layout {
   // Collective; throws as the operators do.
   virtual ElasticOperators make_operators(const Grid& grid, const HalfSpace& half_space, bool fourier,
                                           FftPlanning planning) const = 0;
+  // The same for a mixed-precision solve (solver_options.hpp's Precision):
+  // the operator in double, and where this layout can, the Fourier
+  // preconditioner and `inner` in single precision. This default (a layout
+  // that solves in double only) throws SolverOptionError naming the option
+  // "precision".
+  virtual ElasticOperators make_mixed_operators(const Grid& grid, const HalfSpace& half_space, bool fourier,
+                                                FftPlanning planning) const;
   // The rows of `grid` this process holds (a 1D grid: its one row).
   virtual RowSlab rows(const Grid& grid) const = 0;
   // The processes a field is spread over.

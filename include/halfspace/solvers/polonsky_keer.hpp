@@ -47,6 +47,21 @@
 //    when it changes.
 // docs/solvers.md says what each form costs and saves.
 //
+// Mixed precision. Given an `inner` operator (K in single precision,
+// single_precision_fft_operator.hpp), the step's images K t and the
+// projection's corrections K c come from it, while the displacement K p is
+// recomputed with the exact operator every 50 updates, whenever the
+// residual has fallen 100-fold since the last exact product, and before
+// the residual may stop the iteration; the independent check uses the
+// exact operator too. The residual, the contact set and "converged" are so
+// judged in double: iterative refinement, the inner corrections in single
+// precision (Higham 2002, Accuracy and Stability of Numerical Algorithms,
+// ch. 12), in the manner of inexact Krylov methods, whose products may be
+// as inexact as the step is small against the residual (Simoncini & Szyld
+// 2003, SIAM J. Sci. Comput. 25, 454). A tolerance the inner products
+// cannot resolve costs iterations, or ends in a reported iteration limit,
+// never in a false "converged".
+//
 // Hardness cap. With PressureBounds' upper bound H (interface_law.hpp) the
 // problem is the bound-constrained one, 0 <= p <= H, whose conditions at a
 // cell at the cap are g <= 0: the rigid surface penetrates the elastic one
@@ -99,9 +114,11 @@ class PolonskyKeer final : public ContactSolver {
   // Keeps a reference to `op` (which must outlive the solver) and allocates
   // the workspace once; solve() then allocates nothing inside its loop.
   // `preconditioner`, if given, must outlive the solver too; it needs the
-  // projected form (InputError otherwise).
+  // projected form (InputError otherwise). `inner`, if given, takes the
+  // step's products (see "Mixed precision" above), acts on op's fields and
+  // must outlive the solver too.
   explicit PolonskyKeer(InfluenceOperator& op, PolonskyKeerOptions options = {},
-                        Preconditioner* preconditioner = nullptr);
+                        Preconditioner* preconditioner = nullptr, InfluenceOperator* inner = nullptr);
 
   std::string_view name() const override { return name_; }
 
@@ -124,6 +141,7 @@ class PolonskyKeer final : public ContactSolver {
   SolveResult run(std::span<const double> initial_gap, const Loading& loading, Eigen::ArrayXd pressure, bool warm);
 
   InfluenceOperator& op_;
+  InfluenceOperator& inner_;  // the step's products: op_ unless given
   PolonskyKeerOptions options_;
   Preconditioner* preconditioner_;
   std::string name_;
