@@ -107,9 +107,10 @@ struct CappedScale {
 };
 
 // One solve: the iterate and the paper's steps, each one or two passes over
-// the cells. The fields live in the result (p, u = K p, g) and in the
-// solver's workspace (t, and r, which holds z = M^-1 g, then K t, then the
-// step's correction c).
+// the cells. The fields live in the result (pressure p, displacement
+// u = K p, gap g) and in the solver's workspace (the direction t, and one
+// array that holds z = M^-1 g, then the image K t, then the step's
+// correction c).
 class Iteration {
  public:
   Iteration(InfluenceOperator& op, InfluenceOperator& inner, Preconditioner* preconditioner,
@@ -125,18 +126,20 @@ class Iteration {
         comm_(op.communicator()),
         n_(op.local_size()),
         cells_(static_cast<double>(op.grid().size())),
-        p_(result.pressure.data()),
-        u_(result.displacement.data()),
-        g_(result.gap.data()),
-        t_(direction.data()),
-        r_(image.data()),
+        pressure_(result.pressure.data()),
+        displacement_(result.displacement.data()),
+        gap_(result.gap.data()),
+        direction_(direction.data()),
+        preconditioned_gap_(image.data()),
+        image_(image.data()),
+        correction_(image.data()),
         projected_(options.form == PolonskyKeerForm::projected),
         // With a cap the paper's form searches the projected set too: its
         // entries alone stall once the cells below the cap are too few to
         // move the load among them (the mean-free direction on one cell is
         // zero), and its set holds the cells leaving the cap, whose gaps the
         // approach (the mean over the contact below the cap) does not balance.
-        set_{p_, g_, projected_ || options.bounds.capped(),
+        set_{pressure_, gap_, projected_ || options.bounds.capped(),
              problem.load_controlled && (projected_ || options.bounds.capped()), options.bounds.upper},
         bounds_(options.bounds),
         uniform_response_range_(uniform_response_range),
@@ -145,10 +148,10 @@ class Iteration {
       // ptp(K 1) for the gap scale (see the header), once per solver; t and
       // r are free until the iteration starts.
       direction.setOnes();
-      op_.apply({t_, n_}, {r_, n_});
+      op_.apply({direction_, n_}, {image_, n_});
       ++result_.operator_applications;
-      uniform_response_range_ = linalg::max_of(comm_, n_, [&](std::size_t i) { return r_[i]; }) -
-                                linalg::min_of(comm_, n_, [&](std::size_t i) { return r_[i]; });
+      uniform_response_range_ = linalg::max_of(comm_, n_, [&](std::size_t i) { return image_[i]; }) -
+                                linalg::min_of(comm_, n_, [&](std::size_t i) { return image_[i]; });
     }
     direction.setZero();
   }
@@ -157,25 +160,26 @@ class Iteration {
   // the warm start or a uniform pressure, scaled to the target force.
   // Displacement control: the warm start or the local-overlap guess.
   void start(bool warm) {
-    for_each_index(n_, [&](std::size_t i) { p_[i] = warm ? bounds_.project(p_[i]) : 0.0; });
+    for_each_index(n_, [&](std::size_t i) { pressure_[i] = warm ? bounds_.project(pressure_[i]) : 0.0; });
     if (problem_.load_controlled) {
-      double force = problem_.cell_area * linalg::sum(comm_, n_, [&](std::size_t i) { return p_[i]; });
+      double force = problem_.cell_area * linalg::sum(comm_, n_, [&](std::size_t i) { return pressure_[i]; });
       if (!(force > 0.0)) {
-        for_each_index(n_, [&](std::size_t i) { p_[i] = 1.0; });
+        for_each_index(n_, [&](std::size_t i) { pressure_[i] = 1.0; });
         force = problem_.cell_area * cells_;
       }
       CappedScale scale{problem_.target_force / force, false};
       if (bounds_.capped()) {
         // Scaled and capped; a start too concentrated to carry the load
         // below the cap gives way to the uniform pressure, which does.
-        const std::optional<CappedScale> capped = capped_scale([&](std::size_t i) { return p_[i]; });
-        if (!capped) for_each_index(n_, [&](std::size_t i) { p_[i] = 1.0; });
+        const std::optional<CappedScale> capped = capped_scale([&](std::size_t i) { return pressure_[i]; });
+        if (!capped) for_each_index(n_, [&](std::size_t i) { pressure_[i] = 1.0; });
         scale = capped ? *capped : CappedScale{problem_.target_force / (problem_.cell_area * cells_), false};
       }
-      for_each_index(n_,
-                     [&](std::size_t i) { p_[i] = bounds_.snap(scale.stored(p_[i], bounds_.upper) * scale.factor); });
+      for_each_index(n_, [&](std::size_t i) {
+        pressure_[i] = bounds_.snap(scale.stored(pressure_[i], bounds_.upper) * scale.factor);
+      });
     } else if (!warm) {
-      for_each_index(n_, [&](std::size_t i) { g_[i] = problem_.initial_gap[i] - problem_.approach; });
+      for_each_index(n_, [&](std::size_t i) { gap_[i] = problem_.initial_gap[i] - problem_.approach; });
       local_overlap_pressure();
     }
     exact_displacement();
@@ -234,7 +238,7 @@ class Iteration {
   // mean-free already: the approach makes it so). G = sum over the set of
   // g z. An adapting M^-1 that changed restarts the conjugate directions.
   void precondition() {
-    z_ = g_;
+    z_ = gap_;
     if (!projected_ && !set_.mean_free) {
       search_cells_ = contact_cells_;
       search_gap_sum_ = 0.0;
@@ -243,15 +247,15 @@ class Iteration {
       return;
     }
     if (preconditioner_) {
-      z_ = r_;  // evaluate() left g on the search set there
+      z_ = preconditioned_gap_;  // evaluate() left g on the search set there
       if (preconditioner_->adapt(set_, result_.residual_history)) conjugate_ = false;
-      preconditioner_->apply({r_, n_}, {r_, n_});
+      preconditioner_->apply({preconditioned_gap_, n_}, {preconditioned_gap_, n_});
       ++result_.preconditioner_applications;
     }
     const double* z = z_;
     const auto [z_sum, gz, cells, gap_sum] = sums<4>(comm_, n_, [&](std::size_t i) {
       const double in_set = set_.contains(i) ? 1.0 : 0.0;
-      return std::array<double, 4>{in_set * z[i], in_set * (g_[i] * z[i]), in_set, in_set * g_[i]};
+      return std::array<double, 4>{in_set * z[i], in_set * (gap_[i] * z[i]), in_set, in_set * gap_[i]};
     });
     search_cells_ = cells;
     search_gap_sum_ = gap_sum;
@@ -278,12 +282,13 @@ class Iteration {
     // iterations it saves.
     const double t_mean =
         problem_.load_controlled && beta != 0.0 && search_cells_ > 0.0 ? direction_sum_ / search_cells_ : 0.0;
-    for_each_index(n_,
-                   [&](std::size_t i) { t_[i] = set_.contains(i) ? (z[i] - z_mean) + beta * (t_[i] - t_mean) : 0.0; });
+    for_each_index(n_, [&](std::size_t i) {
+      direction_[i] = set_.contains(i) ? (z[i] - z_mean) + beta * (direction_[i] - t_mean) : 0.0;
+    });
     previous_norm_ = search_norm_;
   }
 
-  // Steps 4-5: the image r = K t, mean-corrected on the search set under
+  // Steps 4-5: the image K t, mean-corrected on the search set under
   // load control, and the step length tau, the exact minimiser along t on
   // the current set. After a restart tau is positive; a conjugate direction
   // can give a negative one, which is still a valid step, but then no cell
@@ -292,14 +297,15 @@ class Iteration {
   // the set, as conjugate() keeps them under load control (the curvature
   // t.Kt - mean(Kt) sum(t) of a direction with a mean can vanish).
   bool step_length(int iteration) {
-    inner_.apply({t_, n_}, {r_, n_});
+    inner_.apply({direction_, n_}, {image_, n_});
     ++result_.operator_applications;
-    const auto [r_sum, t_sum, gt, rt] = sums<4>(comm_, n_, [&](std::size_t i) {
+    const auto [image_sum, t_sum, gt, t_image] = sums<4>(comm_, n_, [&](std::size_t i) {
       const double in_set = set_.contains(i) ? 1.0 : 0.0;
-      return std::array<double, 4>{in_set * r_[i], in_set * t_[i], in_set * (g_[i] * t_[i]), in_set * (r_[i] * t_[i])};
+      return std::array<double, 4>{in_set * image_[i], in_set * direction_[i], in_set * (gap_[i] * direction_[i]),
+                                   in_set * (image_[i] * direction_[i])};
     });
-    const double r_mean = problem_.load_controlled && search_cells_ > 0.0 ? r_sum / search_cells_ : 0.0;
-    const double curvature = rt - r_mean * t_sum;
+    const double image_mean = problem_.load_controlled && search_cells_ > 0.0 ? image_sum / search_cells_ : 0.0;
+    const double curvature = t_image - image_mean * t_sum;
     tau_ = gt / curvature;
     if (curvature > 0.0 && std::isfinite(tau_)) return true;
     result_.status = SolveStatus::breakdown;
@@ -325,19 +331,19 @@ class Iteration {
     const double tau = tau_;
     // The cell's pressure after the step, projected, or entered with -tau g.
     const auto projected = [&](std::size_t i) {
-      const double pi = bounds_.project(p_[i] - tau * t_[i]);
-      return entries && pi == 0.0 && g_[i] < 0.0 && tau > 0.0 ? -tau * g_[i] : pi;
+      const double pi = bounds_.project(pressure_[i] - tau * direction_[i]);
+      return entries && pi == 0.0 && gap_[i] < 0.0 && tau > 0.0 ? -tau * gap_[i] : pi;
     };
     const bool shifted = problem_.load_controlled && load_by_shift_;
     const double shift = shifted ? load_shift(projected) : 0.0;
     const auto [new_pressure_sum, entered, corrected] = sums<3>(comm_, n_, [&](std::size_t i) {
-      const double moved = p_[i] - tau * t_[i];
+      const double moved = pressure_[i] - tau * direction_[i];
       const double q = projected(i);
       const double pi = q > 0.0 ? std::max(q + shift, 0.0) : 0.0;
       const double entry = q > 0.0 && moved <= 0.0 ? 1.0 : 0.0;
-      p_[i] = pi;
-      u_[i] -= tau * r_[i];
-      r_[i] = pi - moved;
+      pressure_[i] = pi;
+      displacement_[i] -= tau * image_[i];
+      correction_[i] = pi - moved;
       return std::array<double, 3>{pi, entry, q != moved ? 1.0 : 0.0};
     });
     const double entries_kept = projected_ ? kEntriesKept * contact_cells_ : 0.0;
@@ -405,7 +411,7 @@ class Iteration {
     const double upper = bounds_.upper;
     auto lower = [&](std::size_t i, double moved) {
       double pi = std::max(moved, bounds_.lower);
-      if (entries && pi == 0.0 && g_[i] < 0.0 && tau > 0.0) pi = -tau * g_[i];
+      if (entries && pi == 0.0 && gap_[i] < 0.0 && tau > 0.0) pi = -tau * gap_[i];
       return pi;
     };
     CappedScale scale{1.0, true};
@@ -415,32 +421,33 @@ class Iteration {
     if (problem_.load_controlled) {
       const double target_sum = problem_.target_force / problem_.cell_area;
       const std::optional<CappedScale> capped =
-          capped_scale([&](std::size_t i) { return lower(i, p_[i] - tau * t_[i]); });
+          capped_scale([&](std::size_t i) { return lower(i, pressure_[i] - tau * direction_[i]); });
       if (capped) {
         scale = *capped;
       } else {
         // The cells at the cap cannot carry the load: the next cells to
         // touch, those out of contact with the smallest gaps, take the rest.
         filled = true;
-        const double positive =
-            linalg::sum(comm_, n_, [&](std::size_t i) { return lower(i, p_[i] - tau * t_[i]) > 0.0 ? 1.0 : 0.0; });
+        const double positive = linalg::sum(
+            comm_, n_, [&](std::size_t i) { return lower(i, pressure_[i] - tau * direction_[i]) > 0.0 ? 1.0 : 0.0; });
         const double deficit = target_sum - upper * positive;
-        const auto [below, count] = smallest_gaps([&](std::size_t i) { return lower(i, p_[i] - tau * t_[i]) == 0.0; },
-                                                  std::ceil(deficit / upper));
+        const auto [below, count] =
+            smallest_gaps([&](std::size_t i) { return lower(i, pressure_[i] - tau * direction_[i]) == 0.0; },
+                          std::ceil(deficit / upper));
         fill_below = below;
         fill = deficit / count;
       }
     }
     const auto [entered, corrected, reached_cap] = sums<3>(comm_, n_, [&](std::size_t i) {
-      const double moved = p_[i] - tau * t_[i];
+      const double moved = pressure_[i] - tau * direction_[i];
       const double pre = lower(i, moved);
       double pi = scale.stored(pre, upper);
-      if (filled) pi = pre > 0.0 ? upper : (g_[i] < fill_below ? fill : 0.0);
+      if (filled) pi = pre > 0.0 ? upper : (gap_[i] < fill_below ? fill : 0.0);
       const double entry = entries && moved <= 0.0 && pre > 0.0 ? 1.0 : 0.0;
-      p_[i] = pi;
-      u_[i] -= tau * r_[i];
-      r_[i] = pi - moved;
-      return std::array<double, 3>{entry, r_[i] != 0.0 ? 1.0 : 0.0, pre * scale.factor >= upper ? 1.0 : 0.0};
+      pressure_[i] = pi;
+      displacement_[i] -= tau * image_[i];
+      correction_[i] = pi - moved;
+      return std::array<double, 3>{entry, correction_[i] != 0.0 ? 1.0 : 0.0, pre * scale.factor >= upper ? 1.0 : 0.0};
     });
     const double entries_kept = projected_ ? kEntriesKept * contact_cells_ : 0.0;
     conjugate_ = entered <= entries_kept && tau > 0.0 && !filled && (projected_ || reached_cap == 0.0);
@@ -448,26 +455,27 @@ class Iteration {
     deferred_.scale = scale.factor;
   }
 
-  // The result's summary of the final iterate, whose displacement and gap
-  // are current.
   // The end of steps 6-9 shared by both projections: the preconditioner
-  // sees how much the projection moved, and the moved part c (in r) is
+  // sees how much the projection moved, and the moved part c (correction_) is
   // turned into its displacement K c, added to u at the next exact
   // evaluation (g is recomputed from u in step 1, so it can hold K c until
   // then).
   void finish_step(double corrected, bool correction) {
     if (preconditioner_) preconditioner_->observe_step({corrected, search_cells_});
     if (correction) {
-      inner_.apply({r_, n_}, {g_, n_});
+      inner_.apply({correction_, n_}, {gap_, n_});
       ++result_.operator_applications;
       deferred_.add_correction = true;
     }
     ++updates_since_exact_;
   }
 
+  // The result's summary of the final iterate, whose displacement and gap
+  // are current.
   void summarise(int iterations) {
     const auto [pressure_total, contact_total, plastic_total] = sums<3>(comm_, n_, [&](std::size_t i) {
-      return std::array<double, 3>{p_[i], p_[i] > 0.0 ? 1.0 : 0.0, bounds_.at_cap(p_[i]) ? 1.0 : 0.0};
+      return std::array<double, 3>{pressure_[i], pressure_[i] > 0.0 ? 1.0 : 0.0,
+                                   bounds_.at_cap(pressure_[i]) ? 1.0 : 0.0};
     });
     if (bounds_.capped()) result_.hardness = bounds_.upper;
     result_.plastic_fraction = plastic_total / cells_;
@@ -477,7 +485,7 @@ class Iteration {
     result_.approach = approach_;
     result_.total_force = problem_.cell_area * pressure_total;
     result_.mean_pressure = result_.total_force / grid.domain_area();
-    result_.max_pressure = linalg::max_of(comm_, n_, [&](std::size_t i) { return p_[i]; });
+    result_.max_pressure = linalg::max_of(comm_, n_, [&](std::size_t i) { return pressure_[i]; });
     result_.contact_fraction = contact_total / cells_;
   }
 
@@ -494,7 +502,8 @@ class Iteration {
   // local overlap alone, p = max(-g, 0) / K_ii, projected onto the bounds.
   void local_overlap_pressure() {
     const double self_influence = op_.self_influence();
-    for_each_index(n_, [&](std::size_t i) { p_[i] = bounds_.project(std::max(-g_[i], 0.0) / self_influence); });
+    for_each_index(n_,
+                   [&](std::size_t i) { pressure_[i] = bounds_.project(std::max(-gap_[i], 0.0) / self_influence); });
   }
 
   // The bound b such that `wanted` cells or a few more (ties) of those with
@@ -503,14 +512,14 @@ class Iteration {
   template <class Candidate>
   std::pair<double, double> smallest_gaps(Candidate&& candidate, double wanted) const {
     auto count_below = [&](double bound) {
-      return linalg::sum(comm_, n_, [&](std::size_t i) { return candidate(i) && g_[i] < bound ? 1.0 : 0.0; });
+      return linalg::sum(comm_, n_, [&](std::size_t i) { return candidate(i) && gap_[i] < bound ? 1.0 : 0.0; });
     };
     const double candidates = count_below(kInfinity);
     wanted = std::min(wanted, candidates);
     // count_below(low) < wanted <= count_below(high) = candidates.
-    double low = linalg::min_of(comm_, n_, [&](std::size_t i) { return candidate(i) ? g_[i] : kInfinity; });
+    double low = linalg::min_of(comm_, n_, [&](std::size_t i) { return candidate(i) ? gap_[i] : kInfinity; });
     double high = std::nextafter(
-        linalg::max_of(comm_, n_, [&](std::size_t i) { return candidate(i) ? g_[i] : -kInfinity; }), kInfinity);
+        linalg::max_of(comm_, n_, [&](std::size_t i) { return candidate(i) ? gap_[i] : -kInfinity; }), kInfinity);
     double count = candidates;
     constexpr int kMaxPasses = 64;
     for (int pass = 0; pass < kMaxPasses && count != wanted; ++pass) {
@@ -574,10 +583,10 @@ class Iteration {
   void exact_displacement() {
     if (deferred_.scale != 1.0) {
       const double scale = deferred_.scale;
-      for_each_index(n_, [&](std::size_t i) { p_[i] = bounds_.snap(p_[i] * scale); });
+      for_each_index(n_, [&](std::size_t i) { pressure_[i] = bounds_.snap(pressure_[i] * scale); });
     }
     deferred_ = {};
-    op_.apply({p_, n_}, {u_, n_});
+    op_.apply({pressure_, n_}, {displacement_, n_});
     ++result_.operator_applications;
     updates_since_exact_ = 0;
   }
@@ -596,32 +605,34 @@ class Iteration {
   // iteration cycled between that and all cells just below the cap. Every
   // cell at the cap (a load of H times the domain): the highest of them.
   double all_capped_approach() const {
-    const double highest_capped = linalg::max_of(
-        comm_, n_, [&](std::size_t i) { return p_[i] > 0.0 ? problem_.initial_gap[i] + u_[i] : -kInfinity; });
-    const double lowest_free = linalg::min_of(
-        comm_, n_, [&](std::size_t i) { return p_[i] > 0.0 ? kInfinity : problem_.initial_gap[i] + u_[i]; });
+    const double highest_capped = linalg::max_of(comm_, n_, [&](std::size_t i) {
+      return pressure_[i] > 0.0 ? problem_.initial_gap[i] + displacement_[i] : -kInfinity;
+    });
+    const double lowest_free = linalg::min_of(comm_, n_, [&](std::size_t i) {
+      return pressure_[i] > 0.0 ? kInfinity : problem_.initial_gap[i] + displacement_[i];
+    });
     return std::isfinite(lowest_free) ? 0.5 * (highest_capped + lowest_free) : highest_capped;
   }
 
   // Step 1's two passes: the deferred work and the contact set's mean gap
   // (the approach), then g, the residual's sums, G = sum over the search set
   // of g^2 and sum over it of g t_old (Powell's test). With a
-  // preconditioner, r receives g on the search set.
+  // preconditioner, preconditioned_gap_ receives g on the search set.
   void measure() {
     const Deferred deferred = std::exchange(deferred_, Deferred{});
     const double scale = deferred.scale;
     const bool add = deferred.add_correction;
     const auto settled = linalg::sums_and_range<3>(comm_, n_, [&](std::size_t i) {
-      double ui = u_[i];
-      double pi = p_[i];
-      if (add) ui += g_[i];
+      double ui = displacement_[i];
+      double pi = pressure_[i];
+      if (add) ui += gap_[i];
       if (scale != 1.0) {
         ui *= scale;
         pi = bounds_.snap(pi * scale);
       }
       if (add || scale != 1.0) {
-        u_[i] = ui;
-        p_[i] = pi;
+        displacement_[i] = ui;
+        pressure_[i] = pi;
       }
       const double in_contact = pi > 0.0 ? 1.0 : 0.0;
       const double below_cap = set_.in_contact(i) ? 1.0 : 0.0;
@@ -647,16 +658,20 @@ class Iteration {
     const double upper = bounds_.upper;
     const auto [weighted_gap, overlap, pressure_sum, gap_norm, gap_along, released, direction_sum] =
         sums<7>(comm_, n_, [&](std::size_t i) {
-          g_[i] = problem_.initial_gap[i] + u_[i] - approach;
+          gap_[i] = problem_.initial_gap[i] + displacement_[i] - approach;
           const double in_set = set_.contains(i) ? 1.0 : 0.0;  // a mask, not a branch
-          if (store_gap) r_[i] = in_set * g_[i];
-          const double over = std::max(-g_[i], 0.0);
-          const double weighted = capped ? p_[i] * std::max(g_[i], 0.0) : p_[i] * std::abs(g_[i]);
-          const double overlap_weight = capped ? (upper - p_[i]) / upper : 1.0;
-          const double release = capped && bounds_.at_cap(p_[i]) && g_[i] > 0.0 ? 1.0 : 0.0;
-          return std::array<double, 7>{
-              weighted, overlap_weight * over, p_[i], in_set * (g_[i] * g_[i]), in_set * (g_[i] * t_[i]),
-              release,  in_set * t_[i]};
+          if (store_gap) preconditioned_gap_[i] = in_set * gap_[i];
+          const double over = std::max(-gap_[i], 0.0);
+          const double weighted = capped ? pressure_[i] * std::max(gap_[i], 0.0) : pressure_[i] * std::abs(gap_[i]);
+          const double overlap_weight = capped ? (upper - pressure_[i]) / upper : 1.0;
+          const double release = capped && bounds_.at_cap(pressure_[i]) && gap_[i] > 0.0 ? 1.0 : 0.0;
+          return std::array<double, 7>{weighted,
+                                       overlap_weight * over,
+                                       pressure_[i],
+                                       in_set * (gap_[i] * gap_[i]),
+                                       in_set * (gap_[i] * direction_[i]),
+                                       release,
+                                       in_set * direction_[i]};
         });
     released_cells_ = released;
     direction_sum_ = direction_sum;
@@ -681,12 +696,17 @@ class Iteration {
   const linalg::Communicator& comm_;  // the processes the fields are spread over
   const std::size_t n_;               // the cells this process holds
   const double cells_;                // the cells of the whole grid
-  double* p_;                         // pressure
-  double* u_;                         // displacement K p
-  double* g_;                         // gap; K c between steps 8 and 1
-  double* t_;                         // conjugate direction
-  double* r_;                         // M^-1 g, then K t, then c
-  const bool projected_;              // the form (see the header)
+  double* pressure_;                  // p
+  double* displacement_;              // u = K p
+  double* gap_;                       // g; K c between steps 8 and 1
+  double* direction_;                 // the conjugate direction t
+  // One array of the solver's workspace in three successive roles: g on
+  // the search set, made z = M^-1 g in place (steps 1-2); the image K t of
+  // the direction (steps 4-5); the step's correction c (steps 6-9).
+  double* preconditioned_gap_;
+  double* image_;
+  double* correction_;
+  const bool projected_;  // the form (see the header)
   const SearchSet set_;
   const PressureBounds bounds_;
   double& uniform_response_range_;  // ptp(K 1), the solver's
@@ -701,7 +721,7 @@ class Iteration {
   double gap_norm_ = 0.0;             // sum over the search set of g^2
   double gap_along_direction_ = 0.0;  // sum over the search set of g t_old
   double direction_sum_ = 0.0;        // sum over the search set of t_old
-  const double* z_ = nullptr;         // z: g itself, or M^-1 g in r
+  const double* z_ = nullptr;         // z: g itself, or M^-1 g (preconditioned_gap_)
   double z_mean_ = 0.0;
   double search_cells_ = 0.0;
   double search_gap_sum_ = 0.0;
