@@ -64,4 +64,19 @@ void EvenSymbol::apply(SingleRealFft& fft, std::span<const double> in, std::span
   linalg::for_each_index(out.size(), [&](std::size_t i) { out[i] = output[i]; });
 }
 
+void EvenSymbol::apply(SingleRealFft& fft, std::span<const float> in, std::span<float> out) const {
+  assert(fft.rows() == rows_ && fft.spectrum_cols() == cols_);
+  if (!fft.forward_from(in)) {
+    std::span<float> input = fft.input();
+    linalg::for_each_index(in.size(), [&](std::size_t i) { input[i] = in[i]; });
+    fft.forward();
+  }
+  multiply(fft.spectrum());
+  if (!fft.backward_into(out)) {
+    fft.backward();
+    std::span<const float> output = fft.output();
+    linalg::for_each_index(out.size(), [&](std::size_t i) { out[i] = output[i]; });
+  }
+}
+
 }  // namespace halfspace::fft

@@ -36,4 +36,9 @@ void SinglePrecisionFftOperator::apply(std::span<const double> pressure, std::sp
   kernel_.apply(*transform_, pressure, displacement);
 }
 
+void SinglePrecisionFftOperator::apply(std::span<const float> pressure, std::span<float> displacement) {
+  assert(pressure.size() == grid_.size() && displacement.size() == grid_.size());
+  kernel_.apply(*transform_, pressure, displacement);
+}
+
 }  // namespace halfspace::operators

@@ -8,6 +8,7 @@
 #include <cassert>
 #include <complex>
 #include <memory>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -56,6 +57,13 @@ void FourierPreconditioner::apply(std::span<const double> in, std::span<double> 
   } else {
     m.symbol.apply(*m.transform, in, out);
   }
+}
+
+void FourierPreconditioner::apply(std::span<const float> in, std::span<float> out) {
+  Impl& m = *impl_;
+  assert(in.size() == m.grid.size() && out.size() == m.grid.size());
+  if (!m.single) throw std::logic_error("FourierPreconditioner: single-precision vectors need its single transform");
+  m.symbol.apply(*m.single, in, out);
 }
 
 }  // namespace halfspace::solvers

@@ -53,8 +53,16 @@ class SerialLayout final : public Layout {
       auto transform = make_grid_transform(grid, planning);
       made.op = std::make_unique<FftInfluenceOperator>(grid, half_space, transform);
       auto single = make_single_grid_transform(grid, planning, transform->spectrum());
-      made.inner = std::make_unique<SinglePrecisionFftOperator>(grid, half_space, single);
-      if (fourier) made.fourier = std::make_unique<FourierPreconditioner>(grid, half_space, single);
+      auto inner = std::make_unique<SinglePrecisionFftOperator>(grid, half_space, single);
+      made.single.kernel = [op = inner.get()](std::span<const float> in, std::span<float> out) { op->apply(in, out); };
+      made.inner = std::move(inner);
+      if (fourier) {
+        auto preconditioner = std::make_unique<FourierPreconditioner>(grid, half_space, single);
+        made.single.precondition = [m = preconditioner.get()](std::span<const float> in, std::span<float> out) {
+          m->apply(in, out);
+        };
+        made.fourier = std::move(preconditioner);
+      }
       return made;
     }
     auto op = std::make_unique<FftInfluenceOperator>(grid, half_space, planning);

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <type_traits>
 #include <utility>
 
 #include "halfspace/error.hpp"
@@ -110,15 +111,20 @@ struct CappedScale {
 // the cells. The fields live in the result (pressure p, displacement
 // u = K p, gap g) and in the solver's workspace (the direction t, and one
 // array that holds z = M^-1 g, then the image K t, then the step's
-// correction c).
+// correction c, then K c). Work is their precision: double, or float with
+// mixed precision's SinglePrecisionProducts (see the header).
+template <class Work>
 class Iteration {
  public:
-  Iteration(InfluenceOperator& op, InfluenceOperator& inner, Preconditioner* preconditioner,
-            const PolonskyKeerOptions& options, const Problem& problem, SolveResult& result, Eigen::ArrayXd& direction,
-            Eigen::ArrayXd& image, double& uniform_response_range)
+  static constexpr bool kSingle = std::is_same_v<Work, float>;
+
+  Iteration(InfluenceOperator& op, InfluenceOperator& inner, const SinglePrecisionProducts& single,
+            Preconditioner* preconditioner, const PolonskyKeerOptions& options, const Problem& problem,
+            SolveResult& result, Work* direction, Work* image, double& uniform_response_range)
       : op_(op),
         inner_(inner),
-        refined_(&inner != &op),
+        single_(single),
+        refined_(&inner != &op || kSingle),
         preconditioner_(preconditioner),
         options_(options),
         problem_(problem),
@@ -129,10 +135,11 @@ class Iteration {
         pressure_(result.pressure.data()),
         displacement_(result.displacement.data()),
         gap_(result.gap.data()),
-        direction_(direction.data()),
-        preconditioned_gap_(image.data()),
-        image_(image.data()),
-        correction_(image.data()),
+        direction_(direction),
+        preconditioned_gap_(image),
+        image_(image),
+        correction_(image),
+        correction_image_(image),
         projected_(options.form == PolonskyKeerForm::projected),
         // With a cap the paper's form searches the projected set too: its
         // entries alone stall once the cells below the cap are too few to
@@ -145,15 +152,19 @@ class Iteration {
         uniform_response_range_(uniform_response_range),
         approach_(problem.approach) {
     if (uniform_response_range_ < 0.0) {
-      // ptp(K 1) for the gap scale (see the header), once per solver; t and
-      // r are free until the iteration starts.
-      direction.setOnes();
-      op_.apply({direction_, n_}, {image_, n_});
+      // ptp(K 1) for the gap scale (see the header), once per solver; the
+      // work vectors are free until the iteration starts.
+      for_each_index(n_, [&](std::size_t i) { direction_[i] = 1; });
+      if constexpr (kSingle) {
+        single_.kernel({direction_, n_}, {image_, n_});
+      } else {
+        op_.apply({direction_, n_}, {image_, n_});
+      }
       ++result_.operator_applications;
-      uniform_response_range_ = linalg::max_of(comm_, n_, [&](std::size_t i) { return image_[i]; }) -
-                                linalg::min_of(comm_, n_, [&](std::size_t i) { return image_[i]; });
+      uniform_response_range_ = linalg::max_of(comm_, n_, [&](std::size_t i) -> double { return image_[i]; }) -
+                                linalg::min_of(comm_, n_, [&](std::size_t i) -> double { return image_[i]; });
     }
-    direction.setZero();
+    for_each_index(n_, [&](std::size_t i) { direction_[i] = 0; });
   }
 
   // Step 0: the starting pressure, projected onto the bounds. Load control:
@@ -238,7 +249,7 @@ class Iteration {
   // mean-free already: the approach makes it so). G = sum over the set of
   // g z. An adapting M^-1 that changed restarts the conjugate directions.
   void precondition() {
-    z_ = gap_;
+    z_is_gap_ = true;
     if (!projected_ && !set_.mean_free) {
       search_cells_ = contact_cells_;
       search_gap_sum_ = 0.0;
@@ -247,15 +258,21 @@ class Iteration {
       return;
     }
     if (preconditioner_) {
-      z_ = preconditioned_gap_;  // evaluate() left g on the search set there
+      z_is_gap_ = false;  // evaluate() left g on the search set in preconditioned_gap_
       if (preconditioner_->adapt(set_, result_.residual_history)) conjugate_ = false;
-      preconditioner_->apply({preconditioned_gap_, n_}, {preconditioned_gap_, n_});
+      if constexpr (kSingle) {
+        single_.precondition({preconditioned_gap_, n_}, {preconditioned_gap_, n_});
+      } else {
+        preconditioner_->apply({preconditioned_gap_, n_}, {preconditioned_gap_, n_});
+      }
       ++result_.preconditioner_applications;
     }
-    const double* z = z_;
-    const auto [z_sum, gz, cells, gap_sum] = sums<4>(comm_, n_, [&](std::size_t i) {
-      const double in_set = set_.contains(i) ? 1.0 : 0.0;
-      return std::array<double, 4>{in_set * z[i], in_set * (gap_[i] * z[i]), in_set, in_set * gap_[i]};
+    const auto [z_sum, gz, cells, gap_sum] = with_z([&](const auto* z) {
+      return sums<4>(comm_, n_, [&](std::size_t i) {
+        const double in_set = set_.contains(i) ? 1.0 : 0.0;
+        const double zi = z[i];
+        return std::array<double, 4>{in_set * zi, in_set * (gap_[i] * zi), in_set, in_set * gap_[i]};
+      });
     });
     search_cells_ = cells;
     search_gap_sum_ = gap_sum;
@@ -271,7 +288,6 @@ class Iteration {
     // cap join it as entering cells do.
     if (!projected_ && released_cells_ > 0.0) conjugate_ = false;
     const double beta = conjugate_ ? search_norm_ / previous_norm_ : 0.0;
-    const double* z = z_;
     const double z_mean = z_mean_;
     // Under load control the carried-over direction is made mean-free on the
     // current set too: cells that left the set took part of it with them.
@@ -282,8 +298,10 @@ class Iteration {
     // iterations it saves.
     const double t_mean =
         problem_.load_controlled && beta != 0.0 && search_cells_ > 0.0 ? direction_sum_ / search_cells_ : 0.0;
-    for_each_index(n_, [&](std::size_t i) {
-      direction_[i] = set_.contains(i) ? (z[i] - z_mean) + beta * (direction_[i] - t_mean) : 0.0;
+    with_z([&](const auto* z) {
+      for_each_index(n_, [&](std::size_t i) {
+        direction_[i] = static_cast<Work>(set_.contains(i) ? (z[i] - z_mean) + beta * (direction_[i] - t_mean) : 0.0);
+      });
     });
     previous_norm_ = search_norm_;
   }
@@ -297,7 +315,7 @@ class Iteration {
   // the set, as conjugate() keeps them under load control (the curvature
   // t.Kt - mean(Kt) sum(t) of a direction with a mean can vanish).
   bool step_length(int iteration) {
-    inner_.apply({direction_, n_}, {image_, n_});
+    kernel_product(direction_, image_);
     ++result_.operator_applications;
     const auto [image_sum, t_sum, gt, t_image] = sums<4>(comm_, n_, [&](std::size_t i) {
       const double in_set = set_.contains(i) ? 1.0 : 0.0;
@@ -343,7 +361,7 @@ class Iteration {
       const double entry = q > 0.0 && moved <= 0.0 ? 1.0 : 0.0;
       pressure_[i] = pi;
       displacement_[i] -= tau * image_[i];
-      correction_[i] = pi - moved;
+      correction_[i] = static_cast<Work>(pi - moved);
       return std::array<double, 3>{pi, entry, q != moved ? 1.0 : 0.0};
     });
     const double entries_kept = projected_ ? kEntriesKept * contact_cells_ : 0.0;
@@ -446,7 +464,7 @@ class Iteration {
       const double entry = entries && moved <= 0.0 && pre > 0.0 ? 1.0 : 0.0;
       pressure_[i] = pi;
       displacement_[i] -= tau * image_[i];
-      correction_[i] = pi - moved;
+      correction_[i] = static_cast<Work>(pi - moved);
       return std::array<double, 3>{entry, correction_[i] != 0.0 ? 1.0 : 0.0, pre * scale.factor >= upper ? 1.0 : 0.0};
     });
     const double entries_kept = projected_ ? kEntriesKept * contact_cells_ : 0.0;
@@ -456,14 +474,13 @@ class Iteration {
   }
 
   // The end of steps 6-9 shared by both projections: the preconditioner
-  // sees how much the projection moved, and the moved part c (correction_) is
-  // turned into its displacement K c, added to u at the next exact
-  // evaluation (g is recomputed from u in step 1, so it can hold K c until
-  // then).
+  // sees how much the projection moved, and the moved part c (correction_)
+  // is turned into its displacement K c in place (correction_image_), added
+  // to u in the next evaluation's first pass.
   void finish_step(double corrected, bool correction) {
     if (preconditioner_) preconditioner_->observe_step({corrected, search_cells_});
     if (correction) {
-      inner_.apply({correction_, n_}, {gap_, n_});
+      kernel_product(correction_, correction_image_);
       ++result_.operator_applications;
       deferred_.add_correction = true;
     }
@@ -497,6 +514,21 @@ class Iteration {
     double scale = 1.0;
     bool add_correction = false;
   };
+
+  // f(z), z the step's search gradient: g itself or M^-1 g (precondition()).
+  template <class Function>
+  auto with_z(Function&& f) const {
+    return z_is_gap_ ? f(static_cast<const double*>(gap_)) : f(static_cast<const Work*>(preconditioned_gap_));
+  }
+
+  // out = K in on the work vectors, by the inner products (see the header).
+  void kernel_product(const Work* in, Work* out) {
+    if constexpr (kSingle) {
+      single_.kernel({in, n_}, {out, n_});
+    } else {
+      inner_.apply({in, n_}, {out, n_});
+    }
+  }
 
   // Starting pressure from the overlap in g: each cell pushed in by the
   // local overlap alone, p = max(-g, 0) / K_ii, projected onto the bounds.
@@ -625,7 +657,7 @@ class Iteration {
     const auto settled = linalg::sums_and_range<3>(comm_, n_, [&](std::size_t i) {
       double ui = displacement_[i];
       double pi = pressure_[i];
-      if (add) ui += gap_[i];
+      if (add) ui += correction_image_[i];
       if (scale != 1.0) {
         ui *= scale;
         pi = bounds_.snap(pi * scale);
@@ -660,7 +692,7 @@ class Iteration {
         sums<7>(comm_, n_, [&](std::size_t i) {
           gap_[i] = problem_.initial_gap[i] + displacement_[i] - approach;
           const double in_set = set_.contains(i) ? 1.0 : 0.0;  // a mask, not a branch
-          if (store_gap) preconditioned_gap_[i] = in_set * gap_[i];
+          if (store_gap) preconditioned_gap_[i] = static_cast<Work>(in_set * gap_[i]);
           const double over = std::max(-gap_[i], 0.0);
           const double weighted = capped ? pressure_[i] * std::max(gap_[i], 0.0) : pressure_[i] * std::abs(gap_[i]);
           const double overlap_weight = capped ? (upper - pressure_[i]) / upper : 1.0;
@@ -687,8 +719,9 @@ class Iteration {
   }
 
   InfluenceOperator& op_;
-  InfluenceOperator& inner_;  // the step's products K t and K c (see the header)
-  const bool refined_;        // inner_ is not op_: refine (kRefinementFactor)
+  InfluenceOperator& inner_;               // the step's products K t and K c (see the header)
+  const SinglePrecisionProducts& single_;  // the same on single-precision work vectors
+  const bool refined_;                     // inner_ is not op_: refine (kRefinementFactor)
   Preconditioner* preconditioner_;
   const PolonskyKeerOptions& options_;
   const Problem& problem_;
@@ -698,14 +731,16 @@ class Iteration {
   const double cells_;                // the cells of the whole grid
   double* pressure_;                  // p
   double* displacement_;              // u = K p
-  double* gap_;                       // g; K c between steps 8 and 1
-  double* direction_;                 // the conjugate direction t
-  // One array of the solver's workspace in three successive roles: g on
-  // the search set, made z = M^-1 g in place (steps 1-2); the image K t of
-  // the direction (steps 4-5); the step's correction c (steps 6-9).
-  double* preconditioned_gap_;
-  double* image_;
-  double* correction_;
+  double* gap_;                       // g
+  Work* direction_;                   // the conjugate direction t
+  // One array of the solver's workspace in four successive roles: g on the
+  // search set, made z = M^-1 g in place (steps 1-2); the image K t of the
+  // direction (steps 4-5); the step's correction c (steps 6-9), made K c in
+  // place (added to u at step 1).
+  Work* preconditioned_gap_;
+  Work* image_;
+  Work* correction_;
+  Work* correction_image_;
   const bool projected_;  // the form (see the header)
   const SearchSet set_;
   const PressureBounds bounds_;
@@ -721,7 +756,7 @@ class Iteration {
   double gap_norm_ = 0.0;             // sum over the search set of g^2
   double gap_along_direction_ = 0.0;  // sum over the search set of g t_old
   double direction_sum_ = 0.0;        // sum over the search set of t_old
-  const double* z_ = nullptr;         // z: g itself, or M^-1 g (preconditioned_gap_)
+  bool z_is_gap_ = true;              // z: g itself, or M^-1 g (preconditioned_gap_)
   double z_mean_ = 0.0;
   double search_cells_ = 0.0;
   double search_gap_sum_ = 0.0;
@@ -733,6 +768,23 @@ class Iteration {
   bool load_by_shift_ = false;  // the load restored by load_shift, not by scaling
   double tau_ = 0.0;
 };
+
+// Steps 0 to 9 until the iteration ends, then the result's summary.
+template <class Work>
+void iterate(Iteration<Work>& it, bool warm) {
+  it.start(warm);  // 0: starting pressure
+  int k = 0;
+  for (;; ++k) {
+    it.evaluate(k);                                // 1: gap, approach, residual
+    if (it.finished(k)) break;                     //    converged or stopped
+    if (it.restarted_without_contact()) continue;  //    (displacement control)
+    it.precondition();                             // 2: z = M^-1 g on the search set
+    it.conjugate();                                // 3: t = z + beta t
+    if (!it.step_length(k)) break;                 // 4-5: K t, tau
+    it.advance();                                  // 6-9: p = P(p - tau t), u, load
+  }
+  it.summarise(k);
+}
 
 }  // namespace
 
@@ -750,12 +802,13 @@ void PolonskyKeerOptions::validate() const {
 }
 
 PolonskyKeer::PolonskyKeer(InfluenceOperator& op, PolonskyKeerOptions options, Preconditioner* preconditioner,
-                           InfluenceOperator* inner)
+                           InfluenceOperator* inner, SinglePrecisionProducts single)
     : op_(op),
       inner_(inner ? *inner : op),
       options_(std::move(options)),
       preconditioner_(preconditioner),
-      name_(preconditioner ? fmt::format("{}-polonsky-keer", preconditioner->kind()) : "polonsky-keer") {
+      name_(preconditioner ? fmt::format("{}-polonsky-keer", preconditioner->kind()) : "polonsky-keer"),
+      single_(std::move(single)) {
   options_.validate();
   if (inner_.local_size() != op_.local_size()) {
     throw InputError(
@@ -764,9 +817,24 @@ PolonskyKeer::PolonskyKeer(InfluenceOperator& op, PolonskyKeerOptions options, P
   if (preconditioner_ && options_.form != PolonskyKeerForm::projected) {
     throw InputError("a preconditioner needs the projected form of Polonsky-Keer (PolonskyKeerForm::projected)");
   }
+  if (single_ && preconditioner_ && !single_.precondition) {
+    throw InputError("single-precision work vectors with a preconditioner need its single-precision M^-1");
+  }
   const auto n = static_cast<Eigen::Index>(op_.local_size());
-  direction_.setZero(n);
-  image_.setZero(n);
+  if (single_) {
+    single_direction_.setZero(n);
+    single_image_.setZero(n);
+  } else {
+    direction_.setZero(n);
+    image_.setZero(n);
+  }
+}
+
+std::span<double> PolonskyKeer::workspace(int which) {
+  Eigen::ArrayXd& field = which == 0 ? direction_ : image_;
+  const auto n = static_cast<Eigen::Index>(op_.local_size());
+  if (field.size() != n) field.setZero(n);  // single-precision work vectors: made on first use
+  return {field.data(), static_cast<std::size_t>(field.size())};
 }
 
 SolveResult PolonskyKeer::solve(std::span<const double> initial_gap, const Loading& loading,
@@ -801,26 +869,33 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
   result.gap.setZero(n);
   if (preconditioner_) preconditioner_->begin_solve();
 
-  Iteration it(op_, inner_, preconditioner_, options_, problem, result, direction_, image_, uniform_response_range_);
-  it.start(warm);  // 0: starting pressure
-  int k = 0;
-  for (;; ++k) {
-    it.evaluate(k);                                // 1: gap, approach, residual
-    if (it.finished(k)) break;                     //    converged or stopped
-    if (it.restarted_without_contact()) continue;  //    (displacement control)
-    it.precondition();                             // 2: z = M^-1 g on the search set
-    it.conjugate();                                // 3: t = z + beta t
-    if (!it.step_length(k)) break;                 // 4-5: K t, tau
-    it.advance();                                  // 6-9: p = P(p - tau t), u, load
+  if (single_) {
+    Iteration<float> it(op_, inner_, single_, preconditioner_, options_, problem, result, single_direction_.data(),
+                        single_image_.data(), uniform_response_range_);
+    iterate(it, warm);
+  } else {
+    Iteration<double> it(op_, inner_, single_, preconditioner_, options_, problem, result, direction_.data(),
+                         image_.data(), uniform_response_range_);
+    iterate(it, warm);
   }
-  it.summarise(k);
   if (result.converged()) {
     // "Converged" must mean the conditions hold, checked apart from the
     // residual (contact_conditions.hpp): a false one becomes a breakdown.
+    // The check's K p goes into a double work vector, or with
+    // single-precision ones into the gap, given back afterwards as the
+    // iteration computed it (g0 + u - approach).
+    std::span<double> scratch = single_ ? std::span<double>(result.gap.data(), static_cast<std::size_t>(n))
+                                        : std::span<double>(image_.data(), static_cast<std::size_t>(n));
     const ContactConditionReport check =
         check_contact_conditions(op_, initial_gap, loading, options_.bounds, result,
-                                 ContactConditionTolerances::for_solver_tolerance(options_.tolerance),
-                                 {image_.data(), static_cast<std::size_t>(image_.size())});
+                                 ContactConditionTolerances::for_solver_tolerance(options_.tolerance), scratch);
+    if (single_) {
+      const double approach = result.approach;
+      double* gap = result.gap.data();
+      const double* displacement = result.displacement.data();
+      for_each_index(static_cast<std::size_t>(n),
+                     [&](std::size_t i) { gap[i] = initial_gap[i] + displacement[i] - approach; });
+    }
     ++result.operator_applications;
     if (!check.holds) {
       result.status = SolveStatus::breakdown;

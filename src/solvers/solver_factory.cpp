@@ -40,7 +40,11 @@ class SolverWithOperator final : public ContactSolver {
                              operators_.inner ? *operators_.inner : *operators_.op, *operators_.fourier, *deflation_)
                        : nullptr) {
     Preconditioner* used = balancing_ ? static_cast<Preconditioner*>(balancing_.get()) : operators_.fourier.get();
-    auto polonsky_keer = std::make_unique<PolonskyKeer>(*operators_.op, options, used, operators_.inner.get());
+    // Single-precision work vectors where every product has a
+    // single-precision form (not around the coarse correction's, which
+    // works in double).
+    auto polonsky_keer = std::make_unique<PolonskyKeer>(*operators_.op, options, used, operators_.inner.get(),
+                                                        balancing_ ? SinglePrecisionProducts{} : operators_.single);
     if (active_set && used) {
       solver_ = std::make_unique<ActiveSetStart>(*operators_.op, *used, std::move(polonsky_keer), *active_set);
     } else {

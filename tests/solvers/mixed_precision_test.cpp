@@ -103,6 +103,31 @@ TEST(MixedPrecisionTest, GivesTheDoublePressureWithinTenTimesTheTolerance) {
   }
 }
 
+// With the block-deflation coarse correction (which works in double, so the
+// work vectors stay double and the inner products single).
+TEST(MixedPrecisionTest, GivesTheDoublePressureWithBlockDeflation) {
+  constexpr double kTolerance = 1e-10;
+  for (const Boundary boundary : {Boundary::periodic, Boundary::free}) {
+    const Grid grid = Grid::plane(256, 256, 1.0, 1.0, boundary);
+    const Eigen::ArrayXd gap = self_affine_gap(grid, 3);
+    // pk-multilevel's fine solve, started from the coarse grids, settles
+    // slowly enough for the correction to join.
+    SolverOptions exact = options_for(SolverType::pk_multilevel, kTolerance, Precision::double_precision);
+    exact.deflation.mode = DeflationOptions::Mode::on;
+    exact.deflation.block = 32;
+    SolverOptions mixed = exact;
+    mixed.precision = Precision::mixed;
+    const Loading loading = Loading::mean_pressure(0.004);
+    const Pair pair{make_solver(grid, kEStar, exact)->solve({gap.data(), grid.size()}, loading),
+                    make_solver(grid, kEStar, mixed)->solve({gap.data(), grid.size()}, loading)};
+    ASSERT_TRUE(pair.exact.converged()) << pair.exact.message;
+    ASSERT_TRUE(pair.mixed.converged()) << pair.mixed.message;
+    ASSERT_GT(pair.mixed.deflation.deflated_iterations, 0) << "the correction must join for this test to mean anything";
+    expect_conditions_hold(grid, gap, pair.mixed, 1e-8 * (gap.maxCoeff() - gap.minCoeff()));
+    EXPECT_LE(pressure_difference(pair), 10.0 * kTolerance) << to_string(boundary);
+  }
+}
+
 // Displacement control too: the approach is given, the load follows.
 TEST(MixedPrecisionTest, GivesTheDoublePressureUnderDisplacementControl) {
   constexpr double kTolerance = 1e-10;

@@ -42,6 +42,9 @@ class EvenSymbol {
   // a mixed-precision solve; relative error about 1e-7 of the product).
   void multiply(std::span<std::complex<float>> spectrum) const;
   void apply(SingleRealFft& fft, std::span<const double> in, std::span<double> out) const;
+  // And on single-precision arrays, transformed directly where FFTW allows
+  // it (mixed precision's work vectors).
+  void apply(SingleRealFft& fft, std::span<const float> in, std::span<float> out) const;
 
  private:
   std::size_t rows_;

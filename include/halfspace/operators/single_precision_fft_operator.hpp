@@ -30,6 +30,9 @@ class SinglePrecisionFftOperator final : public InfluenceOperator {
   const Grid& grid() const override { return grid_; }
   // Allocates nothing; `pressure` and `displacement` may be the same array.
   void apply(std::span<const double> pressure, std::span<double> displacement) override;
+  // The same on single-precision arrays, transformed directly where FFTW
+  // allows it.
+  void apply(std::span<const float> pressure, std::span<float> displacement);
   // K_ii in double (the operator's diagonal, not a product).
   double self_influence() const override { return self_influence_; }
 

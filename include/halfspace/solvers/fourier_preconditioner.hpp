@@ -36,6 +36,10 @@ class FourierPreconditioner final : public Preconditioner {
   ~FourierPreconditioner() override;
 
   void apply(std::span<const double> in, std::span<double> out) override;
+  // The same on single-precision arrays (mixed precision's work vectors),
+  // through the single-precision transform it was made with. Throws
+  // std::logic_error if it was made with a double one.
+  void apply(std::span<const float> in, std::span<float> out);
 
  private:
   struct Impl;

@@ -15,6 +15,7 @@
 #include "halfspace/operators/influence_operator.hpp"
 #include "halfspace/solvers/level_transfer.hpp"
 #include "halfspace/solvers/preconditioner.hpp"
+#include "halfspace/solvers/single_precision_products.hpp"
 
 namespace halfspace::solvers {
 
@@ -30,6 +31,9 @@ struct ElasticOperators {
   // where they stay double); it acts on op's fields and may share its
   // buffers, so the two never run at once.
   std::unique_ptr<InfluenceOperator> inner;
+  // Mixed precision where this layout has them: inner's K and fourier's
+  // M^-1 on single-precision vectors (they reference the two above).
+  SinglePrecisionProducts single;
 };
 
 // This process's rows of a grid: [first, first + count).

@@ -49,7 +49,10 @@
 //
 // Mixed precision. Given an `inner` operator (K in single precision,
 // single_precision_fft_operator.hpp), the step's images K t and the
-// projection's corrections K c come from it, while the displacement K p is
+// projection's corrections K c come from it; given SinglePrecisionProducts
+// instead, the direction, its image and the correction are themselves
+// single-precision vectors (half the bytes stored and moved per pass),
+// while the pressure, displacement and gap stay double. Either way the displacement K p is
 // recomputed with the exact operator every 50 updates, whenever the
 // residual has fallen 100-fold since the last exact product, and before
 // the residual may stop the iteration; the independent check uses the
@@ -89,6 +92,7 @@
 #include "halfspace/solvers/contact_solver.hpp"
 #include "halfspace/solvers/preconditioner.hpp"
 #include "halfspace/solvers/pressure_bounds.hpp"
+#include "halfspace/solvers/single_precision_products.hpp"
 
 namespace halfspace::solvers {
 
@@ -117,8 +121,12 @@ class PolonskyKeer final : public ContactSolver {
   // projected form (InputError otherwise). `inner`, if given, takes the
   // step's products (see "Mixed precision" above), acts on op's fields and
   // must outlive the solver too.
+  // `single`, if given, takes the step's products on single-precision work
+  // vectors (and then M^-1 too, for which it needs its precondition when a
+  // preconditioner is given: InputError otherwise); `inner` is then unused.
   explicit PolonskyKeer(InfluenceOperator& op, PolonskyKeerOptions options = {},
-                        Preconditioner* preconditioner = nullptr, InfluenceOperator* inner = nullptr);
+                        Preconditioner* preconditioner = nullptr, InfluenceOperator* inner = nullptr,
+                        SinglePrecisionProducts single = {});
 
   std::string_view name() const override { return name_; }
 
@@ -129,11 +137,9 @@ class PolonskyKeer final : public ContactSolver {
 
   // Workspace field 0 or 1 (one entry per cell): free between solves, so
   // that a phase run before solve_from (active_set_start.hpp) needs no
-  // fields of its own for them.
-  std::span<double> workspace(int which) {
-    Eigen::ArrayXd& field = which == 0 ? direction_ : image_;
-    return {field.data(), static_cast<std::size_t>(field.size())};
-  }
+  // fields of its own for them. With single-precision work vectors they
+  // are made (in double) on the first call.
+  std::span<double> workspace(int which);
 
  private:
   // The iteration from `pressure`: a warm start if `warm`, else any values
@@ -145,11 +151,15 @@ class PolonskyKeer final : public ContactSolver {
   PolonskyKeerOptions options_;
   Preconditioner* preconditioner_;
   std::string name_;
+  SinglePrecisionProducts single_;
   // Workspace, one entry per cell: the conjugate direction t, and the
   // preconditioned gap z, then its image K t, then the step's correction
-  // c (each needed only until the next is made).
+  // c, then K c (each needed only until the next is made); in double, or
+  // in single precision with single_.
   Eigen::ArrayXd direction_;
   Eigen::ArrayXd image_;
+  Eigen::ArrayXf single_direction_;
+  Eigen::ArrayXf single_image_;
   // ptp(K 1), the displacement range of a unit uniform pressure (the gap
   // scale's floor); negative until the first solve computes it.
   double uniform_response_range_ = -1.0;
