@@ -100,6 +100,10 @@ const std::array kOptions{
                 "threads for loops and FFTs [all cores]"},
     SolveOption{"fft-planning", &SolveOptions::fft_planning, Kind::text, kSolver, "MODE",
                 "FFTW planning effort: estimate, measure or patient [measure]"},
+    SolveOption{"precision", &SolveOptions::precision, Kind::text, kSolver, "MODE",
+                "arithmetic of the Polonsky-Keer solvers: double, or mixed (the step's products and the "
+                "preconditioner in single precision; the residual, contact decisions and convergence check in "
+                "double; one process, not the dense solvers or adhesion) [double]"},
     SolveOption{"deflation-block", &SolveOptions::deflation_block, Kind::integer, kSolver, "B",
                 "coarse-grid correction on B x B blocks of the contact (pk-fourier, pk-multilevel's finest grid; "
                 "2D grids whose nx and ny B divides, at least 3 blocks per axis); 0 for none "

@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config git clang-format
   libeigen3-dev
-  libfftw3-dev
+  libfftw3-dev  # double and single precision (fftw3, fftw3f) with their OpenMP libraries
   libhdf5-dev
   libgtest-dev libgmock-dev
   libbenchmark-dev

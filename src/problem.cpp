@@ -52,6 +52,7 @@ constexpr std::array kNames{
     ProblemOptionName{"tol", &P::tol},
     ProblemOptionName{"max_iter", &P::max_iter},
     ProblemOptionName{"fft_planning", &P::fft_planning},
+    ProblemOptionName{"precision", &P::precision},
     ProblemOptionName{"deflation_block", &P::deflation_block},
     ProblemOptionName{"active_set", &P::active_set},
     ProblemOptionName{"threads", &P::threads},
@@ -60,7 +61,7 @@ constexpr std::array kNames{
 // The option of ProblemOptions that sets each SolverOptions member a
 // SolverOptionError names.
 std::string_view problem_name(std::string_view member) {
-  static constexpr std::array<std::pair<std::string_view, std::string_view>, 7> kMembers{{
+  static constexpr std::array<std::pair<std::string_view, std::string_view>, 8> kMembers{{
       {"tolerance", "tol"},
       {"max_iterations", "max_iter"},
       {"type", "solver"},
@@ -68,6 +69,7 @@ std::string_view problem_name(std::string_view member) {
       {"adhesion.range", "adhesion_range"},
       {"adhesion.tolerance", "adhesion_tol"},
       {"hardness", "hardness"},
+      {"precision", "precision"},
   }};
   if (member.starts_with("deflation")) return "deflation_block";
   if (member.starts_with("active_set")) return "active_set";
@@ -353,6 +355,7 @@ solvers::SolverOptions Rules::solver() const {
   restated([&] {
     if (o_.solver) solver.type = solvers::parse_solver_type(*o_.solver);
     if (o_.tol) solver.tolerance = *o_.tol;
+    if (o_.precision) solver.precision = solvers::parse_precision(*o_.precision);
     // Beyond int, a limit is no limit: validate() sees the nearest int.
     if (o_.max_iter) solver.max_iterations = static_cast<int>(std::clamp<long long>(*o_.max_iter, INT_MIN, INT_MAX));
     if (o_.deflation_block) {

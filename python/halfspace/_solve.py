@@ -127,7 +127,8 @@ def solve(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
           tangential_force: Optional[Union[float, Sequence[float]]] = None,
           tangential_displacement: Optional[Union[float, Sequence[float]]] = None,
           sliding: Optional[Sequence[float]] = None, tangential_tol: Optional[float] = None,
-          tangential_max_iter: Optional[int] = None, active_set: Optional[bool] = None) -> _core.Result:
+          tangential_max_iter: Optional[int] = None, active_set: Optional[bool] = None,
+          precision: Optional[str] = None) -> _core.Result:
     """Solves the contact of a rigid rough surface on an elastic half-space, frictionless or with friction.
 
     surface: a HeightMap, or a 1D/2D array of heights (m, peaks positive,
@@ -152,6 +153,11 @@ def solve(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
     fft_planning: "estimate", "measure" (default, as the program) or
         "patient"; deflation_block: 0 turns the block-deflation correction
         off, B > 0 forces blocks of B x B cells (None: automatic).
+    precision: "double" (None: the library's default, double) or "mixed"
+        (``--precision``): the step's products and the preconditioner in
+        single precision, the residual, contact decisions and convergence
+        check in double; the Polonsky-Keer solvers on one process, not with
+        adhesion (docs/solvers.md, "Mixed precision").
     hardness: a hardness cap H (Pa): 0 <= p <= H, cells at H flow
         plastically (``Result.plastic_fraction``); every solver but lemke,
         and the adhesive one (with ``adhesion``).
@@ -197,15 +203,17 @@ def solve(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
             raise _core.InputError("initial_pressure cannot be combined with friction")
         return _friction("solve", surface, dx, dy, e_star, E1, nu1, E2, nu2, boundary, force, mean_pressure,
                          approach, solver, tol, max_iter, threads, progress, fft_planning, deflation_block,
-                         _with_active_set(_laws(hardness, adhesion, work_of_adhesion, adhesion_range,
-                                                adhesion_stress, adhesion_tol, adhesion_precondition), active_set),
+                         {**_with_active_set(_laws(hardness, adhesion, work_of_adhesion, adhesion_range,
+                                                  adhesion_stress, adhesion_tol, adhesion_precondition), active_set),
+                          "precision": precision},
                          coating, tangential)[0]
     height_map = _surface(surface, dx, dy)
     start = None if initial_pressure is None else np.ascontiguousarray(initial_pressure, dtype=np.float64)
     problem = _problem(e_star, E1, nu1, E2, nu2, coating, _loads(force, mean_pressure, approach, plural=False), solver,
                        tol, max_iter, fft_planning, deflation_block, threads,
-                       _with_active_set(_laws(hardness, adhesion, work_of_adhesion, adhesion_range, adhesion_stress,
-                                              adhesion_tol, adhesion_precondition), active_set))
+                       {**_with_active_set(_laws(hardness, adhesion, work_of_adhesion, adhesion_range,
+                                                adhesion_stress, adhesion_tol, adhesion_precondition), active_set),
+                        "precision": precision})
     call = _call_text("solve", height_map, {"boundary": boundary, **_shown(problem, single=True)})
     return _core.solve(height_map.heights, height_map.dx, height_map.dy or 0.0, boundary, problem, start, progress,
                        call, height_map.source, list(height_map.preparation))
@@ -222,7 +230,8 @@ def sweep(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
           adhesion: Optional[str] = None, work_of_adhesion: Optional[float] = None,
           adhesion_range: Optional[float] = None, adhesion_stress: Optional[float] = None,
           adhesion_tol: Optional[float] = None, adhesion_precondition: Optional[bool] = None,
-          coating: Optional[Mapping[str, float]] = None, active_set: Optional[bool] = None) -> _core.Sweep:
+          coating: Optional[Mapping[str, float]] = None, active_set: Optional[bool] = None,
+          precision: Optional[str] = None) -> _core.Sweep:
     """Solves the surface under each load of a sequence, in order, each step
     warm-started from the previous one (as ``halfspace solve`` with several
     loads). Takes the keywords of :func:`solve`, with ``force``,
@@ -233,8 +242,9 @@ def sweep(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
     height_map = _surface(surface, dx, dy)
     problem = _problem(e_star, E1, nu1, E2, nu2, coating, _loads(force, mean_pressure, approach, plural=True), solver,
                        tol, max_iter, fft_planning, deflation_block, threads,
-                       _with_active_set(_laws(hardness, adhesion, work_of_adhesion, adhesion_range, adhesion_stress,
-                                              adhesion_tol, adhesion_precondition), active_set))
+                       {**_with_active_set(_laws(hardness, adhesion, work_of_adhesion, adhesion_range,
+                                                adhesion_stress, adhesion_tol, adhesion_precondition), active_set),
+                        "precision": precision})
     call = _call_text("sweep", height_map, {"boundary": boundary, **_shown(problem, single=False),
                                             "warm_start": warm_start})
     return _core.sweep(height_map.heights, height_map.dx, height_map.dy or 0.0, boundary, problem, warm_start,

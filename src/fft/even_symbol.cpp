@@ -7,17 +7,35 @@
 
 namespace halfspace::fft {
 
-void EvenSymbol::multiply(std::span<std::complex<double>> spectrum) const {
-  assert(spectrum.size() == rows_ * cols_);
-  if (rows_ == 1) {
-    linalg::for_each_index(cols_, [&](std::size_t c) { spectrum[c] *= values_[c]; });
+namespace {
+
+// spectrum[r, c] *= symbol[r, c] for either precision of the spectrum (the
+// symbol stays double; a float spectrum is multiplied by its rounded value).
+template <class Real>
+void multiply_spectrum(const EvenSymbol& symbol, const std::vector<double>& values,
+                       std::span<std::complex<Real>> spectrum) {
+  const std::size_t rows = symbol.rows();
+  const std::size_t cols = symbol.cols();
+  assert(spectrum.size() == rows * cols);
+  if (rows == 1) {
+    linalg::for_each_index(cols, [&](std::size_t c) { spectrum[c] *= static_cast<Real>(values[c]); });
     return;
   }
-  linalg::for_each_row(rows_, cols_, [&](std::size_t r) {
-    std::complex<double>* row = spectrum.data() + r * cols_;
-    const double* symbol = values_.data() + folded(r) * cols_;
-    for (std::size_t c = 0; c < cols_; ++c) row[c] *= symbol[c];
+  linalg::for_each_row(rows, cols, [&](std::size_t r) {
+    std::complex<Real>* row = spectrum.data() + r * cols;
+    const double* factor = values.data() + symbol.folded(r) * cols;
+    for (std::size_t c = 0; c < cols; ++c) row[c] *= static_cast<Real>(factor[c]);
   });
+}
+
+}  // namespace
+
+void EvenSymbol::multiply(std::span<std::complex<double>> spectrum) const {
+  multiply_spectrum(*this, values_, spectrum);
+}
+
+void EvenSymbol::multiply(std::span<std::complex<float>> spectrum) const {
+  multiply_spectrum(*this, values_, spectrum);
 }
 
 void EvenSymbol::apply(RealFft& fft, std::span<const double> in, std::span<double> out) const {
@@ -31,6 +49,32 @@ void EvenSymbol::apply(RealFft& fft, std::span<const double> in, std::span<doubl
   if (!fft.backward_into(out)) {
     fft.backward();
     std::span<const double> output = fft.output();
+    linalg::for_each_index(out.size(), [&](std::size_t i) { out[i] = output[i]; });
+  }
+}
+
+void EvenSymbol::apply(SingleRealFft& fft, std::span<const double> in, std::span<double> out) const {
+  assert(fft.rows() == rows_ && fft.spectrum_cols() == cols_);
+  std::span<float> input = fft.input();
+  linalg::for_each_index(in.size(), [&](std::size_t i) { input[i] = static_cast<float>(in[i]); });
+  fft.forward();
+  multiply(fft.spectrum());
+  fft.backward();
+  std::span<const float> output = fft.output();
+  linalg::for_each_index(out.size(), [&](std::size_t i) { out[i] = output[i]; });
+}
+
+void EvenSymbol::apply(SingleRealFft& fft, std::span<const float> in, std::span<float> out) const {
+  assert(fft.rows() == rows_ && fft.spectrum_cols() == cols_);
+  if (!fft.forward_from(in)) {
+    std::span<float> input = fft.input();
+    linalg::for_each_index(in.size(), [&](std::size_t i) { input[i] = in[i]; });
+    fft.forward();
+  }
+  multiply(fft.spectrum());
+  if (!fft.backward_into(out)) {
+    fft.backward();
+    std::span<const float> output = fft.output();
     linalg::for_each_index(out.size(), [&](std::size_t i) { out[i] = output[i]; });
   }
 }

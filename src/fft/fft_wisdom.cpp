@@ -43,9 +43,18 @@ struct WisdomState {
   std::string known;  // FFTW's wisdom when last loaded or saved
 };
 
-WisdomState& wisdom_state() {
-  static WisdomState state;
-  return state;
+// One state per precision: FFTW keeps double (fftw_) and single (fftwf_)
+// wisdom apart, and so do the files.
+WisdomState& wisdom_state(bool single = false) {
+  static WisdomState states[2];
+  return states[single ? 1 : 0];
+}
+
+// The single-precision plans' file beside the double ones'.
+fs::path single_precision_path(const fs::path& path) {
+  fs::path single = path;
+  single += "-single";
+  return single;
 }
 
 enum class ReadOutcome { loaded, missing, failed };
@@ -56,14 +65,15 @@ void set_problem(std::string* problem, std::string text) {
 
 // FFTW's accumulated wisdom as text; empty if it cannot be exported. FFTW
 // allocates the string with malloc (FFTW 3.3 manual, section 4.7.2).
-std::string exported_wisdom() {
-  const std::unique_ptr<char, decltype(&std::free)> text(fftw_export_wisdom_to_string(), &std::free);
+std::string exported_wisdom(bool single = false) {
+  const std::unique_ptr<char, decltype(&std::free)> text(
+      single ? fftwf_export_wisdom_to_string() : fftw_export_wisdom_to_string(), &std::free);
   return text ? std::string(text.get()) : std::string();
 }
 
 // The lock held. FFTW rejects text that is not its wisdom, or wisdom of
 // another FFTW version or build, as a whole and keeps what it had.
-ReadOutcome import_locked(const fs::path& path, std::string* problem) {
+ReadOutcome import_locked(const fs::path& path, std::string* problem, bool single = false) {
   const std::string shown = path.string();
   std::error_code error;
   const fs::file_status status = fs::status(path, error);
@@ -96,7 +106,9 @@ ReadOutcome import_locked(const fs::path& path, std::string* problem) {
   }
   // An embedded NUL would hide the rest of the file from FFTW's C-string
   // parser, which could then accept a truncated prefix.
-  if (wisdom.find('\0') != std::string::npos || fftw_import_wisdom_from_string(wisdom.c_str()) == 0) {
+  const int imported =
+      single ? fftwf_import_wisdom_from_string(wisdom.c_str()) : fftw_import_wisdom_from_string(wisdom.c_str());
+  if (wisdom.find('\0') != std::string::npos || imported == 0) {
     set_problem(problem, fmt::format("wisdom file '{}' is not wisdom of this FFTW build (corrupt, or written by "
                                      "another FFTW version)",
                                      shown));
@@ -108,8 +120,8 @@ ReadOutcome import_locked(const fs::path& path, std::string* problem) {
 // The lock held. Written like every output (io/output_file.hpp): under a
 // temporary name and renamed, so runs side by side never see a partial file,
 // and never onto a device, FIFO or directory.
-bool export_locked(const fs::path& path, std::string* problem) {
-  const std::string wisdom = exported_wisdom();
+bool export_locked(const fs::path& path, std::string* problem, bool single = false) {
+  const std::string wisdom = exported_wisdom(single);
   if (wisdom.empty()) {
     set_problem(problem, "FFTW could not export its wisdom");
     return false;
@@ -169,43 +181,44 @@ bool export_fft_wisdom(const fs::path& path, std::string* problem) {
 
 namespace detail {
 
-void before_planning(FftPlanning planning) noexcept {
+void before_planning(FftPlanning planning, bool single) noexcept {
   if (planning == FftPlanning::estimate) return;
-  WisdomState& state = wisdom_state();
+  WisdomState& state = wisdom_state(single);
   if (state.resolved) return;
   try {
     state.resolved = true;
     state.path = fft_wisdom_path();
     if (!state.path) return;
+    if (single) state.path = single_precision_path(*state.path);
     std::string problem;
-    const ReadOutcome outcome = import_locked(*state.path, &problem);
+    const ReadOutcome outcome = import_locked(*state.path, &problem, single);
     state.loaded = outcome == ReadOutcome::loaded;
     // A missing file is the normal first run, not a problem.
     if (outcome == ReadOutcome::failed) state.problem = std::move(problem);
-    state.known = exported_wisdom();
+    state.known = exported_wisdom(single);
   } catch (...) {
     state.problem = "the wisdom file could not be loaded (out of memory)";
   }
 }
 
-void after_planning(FftPlanning planning) noexcept {
+void after_planning(FftPlanning planning, bool single) noexcept {
   if (planning == FftPlanning::estimate) return;
-  WisdomState& state = wisdom_state();
+  WisdomState& state = wisdom_state(single);
   if (!state.path) return;
   try {
-    if (exported_wisdom() == state.known) return;
+    if (exported_wisdom(single) == state.known) return;
     // Merge what other runs saved since this one loaded the file, so that
     // concurrent runs do not drop each other's wisdom; a file that fails to
     // read now is simply replaced.
-    import_locked(*state.path, nullptr);
+    import_locked(*state.path, nullptr, single);
     std::string problem;
-    if (export_locked(*state.path, &problem)) {
+    if (export_locked(*state.path, &problem, single)) {
       state.saved = true;
     } else {
       state.problem = std::move(problem);
     }
     // Also after a failed save: retrying at every plan would not help.
-    state.known = exported_wisdom();
+    state.known = exported_wisdom(single);
   } catch (...) {
     state.problem = "the wisdom file could not be saved (out of memory)";
   }

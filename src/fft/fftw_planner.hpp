@@ -23,11 +23,47 @@ int checked_extent(std::size_t n);
 inline fftw_complex* as_fftw(std::complex<double>* z) {
   return reinterpret_cast<fftw_complex*>(z);
 }
+inline fftwf_complex* as_fftw(std::complex<float>* z) {
+  return reinterpret_cast<fftwf_complex*>(z);
+}
+
+// FFTW's calls for each precision (fftw_ for double, fftwf_ for float), so
+// that one template serves both.
+template <class Real>
+struct Fftw;
+template <>
+struct Fftw<double> {
+  using plan = fftw_plan;
+  static constexpr auto alloc_real = fftw_alloc_real;
+  static constexpr auto alloc_complex = fftw_alloc_complex;
+  static constexpr auto free = fftw_free;
+  static constexpr auto plan_with_nthreads = fftw_plan_with_nthreads;
+  static constexpr auto plan_r2c = fftw_plan_dft_r2c;
+  static constexpr auto plan_c2r = fftw_plan_dft_c2r;
+  static constexpr auto execute_r2c = fftw_execute_dft_r2c;
+  static constexpr auto execute_c2r = fftw_execute_dft_c2r;
+  static constexpr auto destroy_plan = fftw_destroy_plan;
+  static constexpr auto alignment_of = fftw_alignment_of;
+};
+template <>
+struct Fftw<float> {
+  using plan = fftwf_plan;
+  static constexpr auto alloc_real = fftwf_alloc_real;
+  static constexpr auto alloc_complex = fftwf_alloc_complex;
+  static constexpr auto free = fftwf_free;
+  static constexpr auto plan_with_nthreads = fftwf_plan_with_nthreads;
+  static constexpr auto plan_r2c = fftwf_plan_dft_r2c;
+  static constexpr auto plan_c2r = fftwf_plan_dft_c2r;
+  static constexpr auto execute_r2c = fftwf_execute_dft_r2c;
+  static constexpr auto execute_c2r = fftwf_execute_dft_c2r;
+  static constexpr auto destroy_plan = fftwf_destroy_plan;
+  static constexpr auto alignment_of = fftwf_alignment_of;
+};
 
 // Held for every call into FFTW other than fftw_execute.
 std::mutex& fftw_planner_mutex();
 
-// The lock held: sets up FFTW's thread support, once per process. Must come
+// The lock held: sets up FFTW's thread support (both precisions), once per process. Must come
 // before planning and before importing wisdom (wisdom names the threaded
 // solvers, which exist only after it). Throws std::runtime_error on failure.
 void init_fftw_threads();
@@ -36,7 +72,9 @@ void init_fftw_threads();
 // plans load the wisdom file (fft_wisdom_path) once per process before
 // planning and save FFTW's wisdom after planning if it grew; estimate plans
 // leave the file alone, so they are the same from run to run. Never throw.
-void before_planning(FftPlanning planning) noexcept;
-void after_planning(FftPlanning planning) noexcept;
+// Single-precision plans (`single`) keep their wisdom in a file of their own
+// beside it (fft_wisdom.hpp): FFTW holds the two precisions' wisdom apart.
+void before_planning(FftPlanning planning, bool single = false) noexcept;
+void after_planning(FftPlanning planning, bool single = false) noexcept;
 
 }  // namespace halfspace::fft::detail

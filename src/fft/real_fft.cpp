@@ -1,7 +1,9 @@
-// RAII plan pair for real FFTs. FFTW's planner (and plan destruction) is not
-// thread-safe, so every call into it here is serialised by one mutex; only
-// fftw_execute runs unlocked. Measured planning loads and saves wisdom
-// (fft_wisdom.cpp) under the same lock.
+// RAII plan pair for real FFTs, in double and single precision (one
+// template over FFTW's fftw_ and fftwf_ calls, fftw_planner.hpp). FFTW's
+// planner (and plan destruction) is not thread-safe, so every call into it
+// here is serialised by one mutex; only the execution runs unlocked.
+// Measured planning loads and saves wisdom (fft_wisdom.cpp) under the same
+// lock.
 #include "halfspace/fft/real_fft.hpp"
 
 #include <fftw3.h>
@@ -13,6 +15,7 @@
 #include <mutex>
 #include <new>
 #include <stdexcept>
+#include <type_traits>
 #include <utility>
 
 #include "fftw_planner.hpp"
@@ -30,7 +33,9 @@ std::mutex& fftw_planner_mutex() {
 void init_fftw_threads() {
   static bool initialised = false;
   if (!initialised) {
-    if (fftw_init_threads() == 0) throw std::runtime_error("FFTW thread support could not be initialised");
+    if (fftw_init_threads() == 0 || fftwf_init_threads() == 0) {
+      throw std::runtime_error("FFTW thread support could not be initialised");
+    }
     initialised = true;
   }
 }
@@ -60,18 +65,28 @@ using detail::as_fftw;
 using detail::checked_extent;
 using detail::planner_flags;
 
-RealFft::RealFft(std::size_t n, FftPlanning planning, FftOutput output) : rows_(1), cols_(n) {
+// Whether Real is single precision (its wisdom is kept apart).
+template <class Real>
+constexpr bool kSingle = std::is_same_v<Real, float>;
+template <class Real>
+using F = detail::Fftw<Real>;
+
+template <class Real>
+BasicRealFft<Real>::BasicRealFft(std::size_t n, FftPlanning planning, FftOutput output) : rows_(1), cols_(n) {
   const int dims[1] = {checked_extent(n)};
   make_plans(1, dims, planning, output);
 }
 
-RealFft::RealFft(std::size_t rows, std::size_t cols, FftPlanning planning, FftOutput output)
+template <class Real>
+BasicRealFft<Real>::BasicRealFft(std::size_t rows, std::size_t cols, FftPlanning planning, FftOutput output)
     : rows_(rows), cols_(cols) {
   const int dims[2] = {checked_extent(rows), checked_extent(cols)};
   make_plans(2, dims, planning, output);
 }
 
-RealFft::RealFft(std::size_t rows, std::size_t cols, FftPlanning planning, std::span<std::complex<double>> workspace)
+template <class Real>
+BasicRealFft<Real>::BasicRealFft(std::size_t rows, std::size_t cols, FftPlanning planning,
+                                 std::span<std::complex<Real>> workspace)
     : rows_(rows), cols_(cols) {
   const std::size_t needed = workspace_size(rows, cols);
   if (workspace.size() < needed) {
@@ -86,11 +101,13 @@ RealFft::RealFft(std::size_t rows, std::size_t cols, FftPlanning planning, std::
   }
 }
 
-RealFft::~RealFft() {
+template <class Real>
+BasicRealFft<Real>::~BasicRealFft() {
   release();
 }
 
-RealFft::RealFft(RealFft&& other) noexcept
+template <class Real>
+BasicRealFft<Real>::BasicRealFft(BasicRealFft&& other) noexcept
     : rows_(std::exchange(other.rows_, 0)),
       cols_(std::exchange(other.cols_, 0)),
       input_(std::exchange(other.input_, nullptr)),
@@ -103,7 +120,8 @@ RealFft::RealFft(RealFft&& other) noexcept
       input_alignment_(other.input_alignment_),
       output_alignment_(other.output_alignment_) {}
 
-RealFft& RealFft::operator=(RealFft&& other) noexcept {
+template <class Real>
+BasicRealFft<Real>& BasicRealFft<Real>::operator=(BasicRealFft&& other) noexcept {
   if (this != &other) {
     release();
     rows_ = std::exchange(other.rows_, 0);
@@ -121,8 +139,9 @@ RealFft& RealFft::operator=(RealFft&& other) noexcept {
   return *this;
 }
 
-void RealFft::make_plans(int rank, const int* dims, FftPlanning planning, FftOutput output,
-                         std::complex<double>* workspace) {
+template <class Real>
+void BasicRealFft<Real>::make_plans(int rank, const int* dims, FftPlanning planning, FftOutput output,
+                                    std::complex<Real>* workspace) {
   bool allocated = false;
   bool planned = false;
   {
@@ -130,24 +149,24 @@ void RealFft::make_plans(int rank, const int* dims, FftPlanning planning, FftOut
     detail::init_fftw_threads();
     owns_buffers_ = workspace == nullptr;
     if (owns_buffers_) {
-      spectrum_ = reinterpret_cast<std::complex<double>*>(fftw_alloc_complex(spectrum_size()));
-      input_ = fftw_alloc_real(real_size());
+      spectrum_ = reinterpret_cast<std::complex<Real>*>(F<Real>::alloc_complex(spectrum_size()));
+      input_ = F<Real>::alloc_real(real_size());
     } else {
       spectrum_ = workspace;
-      input_ = reinterpret_cast<double*>(workspace + spectrum_size());
+      input_ = reinterpret_cast<Real*>(workspace + spectrum_size());
     }
-    output_ = output == FftOutput::separate ? fftw_alloc_real(real_size()) : input_;
+    output_ = output == FftOutput::separate ? F<Real>::alloc_real(real_size()) : input_;
     allocated = input_ != nullptr && output_ != nullptr && spectrum_ != nullptr;
     if (allocated) {
-      fftw_plan_with_nthreads(threads());
-      detail::before_planning(planning);
+      F<Real>::plan_with_nthreads(threads());
+      detail::before_planning(planning, kSingle<Real>);
       const unsigned flags = planner_flags(planning);
       // Out of place both ways: r2c keeps its input (forward_from() relies on
       // it); c2r may destroy the spectrum, which every forward() rewrites.
-      forward_plan_ = fftw_plan_dft_r2c(rank, dims, input_, as_fftw(spectrum_), flags | FFTW_PRESERVE_INPUT);
-      backward_plan_ = fftw_plan_dft_c2r(rank, dims, as_fftw(spectrum_), output_, flags | FFTW_DESTROY_INPUT);
+      forward_plan_ = F<Real>::plan_r2c(rank, dims, input_, as_fftw(spectrum_), flags | FFTW_PRESERVE_INPUT);
+      backward_plan_ = F<Real>::plan_c2r(rank, dims, as_fftw(spectrum_), output_, flags | FFTW_DESTROY_INPUT);
       planned = forward_plan_ != nullptr && backward_plan_ != nullptr;
-      if (planned) detail::after_planning(planning);
+      if (planned) detail::after_planning(planning, kSingle<Real>);
     }
   }
   if (!allocated) {
@@ -158,33 +177,34 @@ void RealFft::make_plans(int rank, const int* dims, FftPlanning planning, FftOut
     release();
     throw std::runtime_error(fmt::format("FFTW could not plan a real FFT of size {}x{}", rows_, cols_));
   }
-  input_alignment_ = fftw_alignment_of(input_);
-  output_alignment_ = fftw_alignment_of(output_);
+  input_alignment_ = F<Real>::alignment_of(input_);
+  output_alignment_ = F<Real>::alignment_of(output_);
   // Measuring planners run trial transforms over the buffers.
-  std::fill_n(spectrum_, spectrum_size(), std::complex<double>(0.0, 0.0));
+  std::fill_n(spectrum_, spectrum_size(), std::complex<Real>(0, 0));
   if (owns_buffers_ && output == FftOutput::overwrite_input) {
     // The solvers transform their own arrays: the real array, planned over,
     // is given back until something asks for it (real_input()).
     const std::lock_guard<std::mutex> lock(detail::fftw_planner_mutex());
-    fftw_free(input_);
+    F<Real>::free(input_);
     input_ = nullptr;
     output_ = nullptr;
     lazy_input_ = true;
     return;
   }
-  std::fill_n(input_, real_size(), 0.0);
-  if (output_ != input_) std::fill_n(output_, real_size(), 0.0);
+  std::fill_n(input_, real_size(), Real{0});
+  if (output_ != input_) std::fill_n(output_, real_size(), Real{0});
 }
 
-double* RealFft::real_input() {
+template <class Real>
+Real* BasicRealFft<Real>::real_input() {
   if (input_ == nullptr && lazy_input_) {
-    double* made = nullptr;
+    Real* made = nullptr;
     {
       const std::lock_guard<std::mutex> lock(detail::fftw_planner_mutex());
-      made = fftw_alloc_real(real_size());
+      made = F<Real>::alloc_real(real_size());
     }
     if (made == nullptr) throw std::bad_alloc();
-    std::fill_n(made, real_size(), 0.0);
+    std::fill_n(made, real_size(), Real{0});
     input_ = made;
     output_ = made;
   }
@@ -193,48 +213,53 @@ double* RealFft::real_input() {
 
 // New-array execution throughout: the real array may not be the one planned
 // over (it is made on first use with FftOutput::overwrite_input), and FFTW
-// allows any arrays of the planned alignment; fftw_alloc_real gives that.
-void RealFft::forward() {
+// allows any arrays of the planned alignment; FFTW's allocation gives that.
+template <class Real>
+void BasicRealFft<Real>::forward() {
   assert(forward_plan_ != nullptr);
-  fftw_execute_dft_r2c(forward_plan_, real_input(), as_fftw(spectrum_));
+  F<Real>::execute_r2c(forward_plan_, real_input(), as_fftw(spectrum_));
 }
 
-void RealFft::backward() {
+template <class Real>
+void BasicRealFft<Real>::backward() {
   assert(backward_plan_ != nullptr);
   real_input();
-  fftw_execute_dft_c2r(backward_plan_, as_fftw(spectrum_), output_);
+  F<Real>::execute_c2r(backward_plan_, as_fftw(spectrum_), output_);
 }
 
-bool RealFft::forward_from(std::span<const double> values) {
+template <class Real>
+bool BasicRealFft<Real>::forward_from(std::span<const Real> values) {
   assert(forward_plan_ != nullptr);
   // The plan was made with FFTW_PRESERVE_INPUT, so the const_cast is never written through.
-  double* data = const_cast<double*>(values.data());
-  if (values.size() != real_size() || fftw_alignment_of(data) != input_alignment_) return false;
-  fftw_execute_dft_r2c(forward_plan_, data, as_fftw(spectrum_));
+  Real* data = const_cast<Real*>(values.data());
+  if (values.size() != real_size() || F<Real>::alignment_of(data) != input_alignment_) return false;
+  F<Real>::execute_r2c(forward_plan_, data, as_fftw(spectrum_));
   return true;
 }
 
-bool RealFft::backward_into(std::span<double> values) {
+template <class Real>
+bool BasicRealFft<Real>::backward_into(std::span<Real> values) {
   assert(backward_plan_ != nullptr);
-  if (values.size() != real_size() || fftw_alignment_of(values.data()) != output_alignment_) {
+  if (values.size() != real_size() || F<Real>::alignment_of(values.data()) != output_alignment_) {
     return false;
   }
-  fftw_execute_dft_c2r(backward_plan_, as_fftw(spectrum_), values.data());
+  F<Real>::execute_c2r(backward_plan_, as_fftw(spectrum_), values.data());
   return true;
 }
 
-void RealFft::release() noexcept {
+template <class Real>
+void BasicRealFft<Real>::release() noexcept {
   if (input_ == nullptr && output_ == nullptr && spectrum_ == nullptr && forward_plan_ == nullptr &&
       backward_plan_ == nullptr) {
     return;
   }
   const std::lock_guard<std::mutex> lock(detail::fftw_planner_mutex());
-  if (forward_plan_ != nullptr) fftw_destroy_plan(forward_plan_);
-  if (backward_plan_ != nullptr) fftw_destroy_plan(backward_plan_);
-  if (output_ != input_) fftw_free(output_);
+  if (forward_plan_ != nullptr) F<Real>::destroy_plan(forward_plan_);
+  if (backward_plan_ != nullptr) F<Real>::destroy_plan(backward_plan_);
+  if (output_ != input_) F<Real>::free(output_);
   if (owns_buffers_) {
-    fftw_free(input_);
-    fftw_free(spectrum_);
+    F<Real>::free(input_);
+    F<Real>::free(spectrum_);
   }
   forward_plan_ = nullptr;
   backward_plan_ = nullptr;
@@ -242,5 +267,8 @@ void RealFft::release() noexcept {
   output_ = nullptr;
   spectrum_ = nullptr;
 }
+
+template class BasicRealFft<double>;
+template class BasicRealFft<float>;
 
 }  // namespace halfspace::fft

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <variant>
 
 #include "halfspace/kernels/love_rectangle.hpp"
@@ -50,6 +51,32 @@ double NormalKernel::stiffness(double q) const {
 
 double NormalKernel::inverse_symbol(double q, double cells) const {
   return layered_ ? 1.0 / (layered_->spectrum(q) * cells) : q * (0.5 * e_star_ / cells);
+}
+
+EvenSymbol NormalKernel::periodic_symbol() const {
+  EvenSymbol kernel(grid_.dimension() == 1 ? 1 : grid_.ny(), grid_.nx() / 2 + 1);
+  const double inverse_n = 1.0 / static_cast<double>(grid_.size());
+  for (std::size_t r = 0; r < kernel.stored_rows(); ++r) {
+    for (std::size_t c = 0; c < kernel.cols(); ++c) kernel.at(r, c) = symbol(wavenumber(r, c)) * inverse_n;
+  }
+  return kernel;
+}
+
+EvenSymbol NormalKernel::preconditioner_symbol() const {
+  EvenSymbol inverse(grid_.dimension() == 1 ? 1 : grid_.ny(), grid_.nx() / 2 + 1);
+  const auto cells = static_cast<double>(grid_.size());
+  double q_min = std::numeric_limits<double>::infinity();
+  for (std::size_t r = 0; r < inverse.stored_rows(); ++r) {
+    for (std::size_t c = 0; c < inverse.cols(); ++c) {
+      const double q = wavenumber(r, c);
+      if (q > 0.0) {
+        inverse.at(r, c) = inverse_symbol(q, cells);
+        q_min = std::min(q_min, q);
+      }
+    }
+  }
+  inverse.at(0, 0) = inverse_symbol(q_min, cells);
+  return inverse;
 }
 
 double NormalKernel::self_influence() const {

@@ -79,6 +79,10 @@ void DistributedLayout::check(const Grid& grid, const HalfSpace& half_space,
                                         "ones are distributed)",
                                         kNotYet));
   }
+  if (options.precision == solvers::Precision::mixed) {
+    throw SolverOptionError("precision", "mixed",
+                            fmt::format("{}: use precision double (one process solves mixed)", kNotYet));
+  }
   if (options.type != SolverType::pk && options.type != SolverType::pk_fourier &&
       options.type != SolverType::pk_multilevel) {
     throw SolverOptionError("type", std::string(to_string(options.type)),

@@ -76,11 +76,7 @@ struct FftInfluenceOperator::Impl {
 
   // The symbol with FFTW's 1/N folded in.
   void init_periodic() {
-    const double inverse_n = 1.0 / static_cast<double>(grid().size());
-    for (std::size_t r = 0; r < kernel.stored_rows(); ++r) {
-      for (std::size_t c = 0; c < kernel.cols(); ++c)
-        kernel.at(r, c) = normal.symbol(normal.wavenumber(r, c)) * inverse_n;
-    }
+    kernel = normal.periodic_symbol();
     self = normal.self_influence();
   }
 

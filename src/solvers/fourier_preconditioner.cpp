@@ -6,10 +6,9 @@
 #include "halfspace/solvers/fourier_preconditioner.hpp"
 
 #include <cassert>
-#include <cmath>
 #include <complex>
-#include <limits>
 #include <memory>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -20,28 +19,18 @@
 
 namespace halfspace::solvers {
 struct FourierPreconditioner::Impl {
-  Impl(const Grid& g, const HalfSpace& half_space, std::shared_ptr<RealFft> shared)
-      : grid(g), transform(std::move(shared)), fft(*transform), symbol(fft.rows(), fft.spectrum_cols()) {
-    // FFTW's transforms are unnormalised: fold 1/N into the symbol.
-    const kernels::NormalKernel kernel(g, half_space);
-    const auto cells = static_cast<double>(grid.size());
-    double q_min = std::numeric_limits<double>::infinity();
-    for (std::size_t r = 0; r < symbol.stored_rows(); ++r) {
-      for (std::size_t c = 0; c < symbol.cols(); ++c) {
-        const double q = kernel.wavenumber(r, c);
-        if (q > 0.0) {
-          symbol.at(r, c) = kernel.inverse_symbol(q, cells);
-          q_min = std::min(q_min, q);
-        }
-      }
-    }
-    symbol.at(0, 0) = kernel.inverse_symbol(q_min, cells);
-  }
+  // One of the two transforms: double or single precision.
+  Impl(const Grid& g, const HalfSpace& half_space, std::shared_ptr<RealFft> shared,
+       std::shared_ptr<SingleRealFft> single_shared = nullptr)
+      : grid(g),
+        transform(std::move(shared)),
+        single(std::move(single_shared)),
+        symbol(kernels::NormalKernel(g, half_space).preconditioner_symbol()) {}
 
   Grid grid;
-  std::shared_ptr<RealFft> transform;  // own, or shared with the operator
-  RealFft& fft;
-  EvenSymbol symbol;  // E*|q|/(2N) or its layered form, rows folded (even in qy)
+  std::shared_ptr<RealFft> transform;     // own, or shared with the operator
+  std::shared_ptr<SingleRealFft> single;  // instead of `transform`: mixed precision
+  EvenSymbol symbol;                      // E*|q|/(2N) or its layered form, rows folded (even in qy)
 };
 
 FourierPreconditioner::FourierPreconditioner(const Grid& grid, const HalfSpace& half_space, FftPlanning planning)
@@ -52,13 +41,29 @@ FourierPreconditioner::FourierPreconditioner(const Grid& grid, const HalfSpace& 
     : impl_(std::make_unique<Impl>(grid, half_space,
                                    checked_grid_transform(grid, std::move(transform), "FourierPreconditioner"))) {}
 
+FourierPreconditioner::FourierPreconditioner(const Grid& grid, const HalfSpace& half_space,
+                                             std::shared_ptr<SingleRealFft> transform)
+    : impl_(std::make_unique<Impl>(grid, half_space, nullptr,
+                                   checked_grid_transform(grid, std::move(transform), "FourierPreconditioner"))) {}
+
 FourierPreconditioner::~FourierPreconditioner() = default;
 
 void FourierPreconditioner::apply(std::span<const double> in, std::span<double> out) {
   Impl& m = *impl_;
   assert(in.size() == m.grid.size() && out.size() == m.grid.size());
   // `in` is read before `out` is written, so the two may alias.
-  m.symbol.apply(m.fft, in, out);
+  if (m.single) {
+    m.symbol.apply(*m.single, in, out);
+  } else {
+    m.symbol.apply(*m.transform, in, out);
+  }
+}
+
+void FourierPreconditioner::apply(std::span<const float> in, std::span<float> out) {
+  Impl& m = *impl_;
+  assert(in.size() == m.grid.size() && out.size() == m.grid.size());
+  if (!m.single) throw std::logic_error("FourierPreconditioner: single-precision vectors need its single transform");
+  m.symbol.apply(*m.single, in, out);
 }
 
 }  // namespace halfspace::solvers

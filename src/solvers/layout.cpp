@@ -4,8 +4,10 @@
 
 #include "halfspace/fft/grid_transform.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
+#include "halfspace/operators/single_precision_fft_operator.hpp"
 #include "halfspace/solvers/fourier_preconditioner.hpp"
 #include "halfspace/solvers/level_transfer.hpp"
+#include "halfspace/solvers/solver_options.hpp"
 
 namespace halfspace::solvers {
 namespace {
@@ -41,6 +43,41 @@ class SerialLayout final : public Layout {
                                                                FftPlanning planning) const override {
     return std::make_unique<TangentialOperator>(grid, pair, estimated_plans_ ? FftPlanning::estimate : planning);
   }
+  // Periodic grids: the double transform for the products K p, and one in
+  // single precision for the step's products and M^-1, living in the double
+  // transform's spectrum (idle between the products K p, and it holds
+  // exactly the single transform's spectrum and real array), so the mixed
+  // solve holds no more memory than the double one. Free grids: the
+  // products stay double (they need the zero-padded transform); M^-1 in
+  // single precision in the padded buffer.
+  ElasticOperators make_mixed_operators(const Grid& grid, const HalfSpace& half_space, bool fourier,
+                                        FftPlanning planning) const override {
+    if (estimated_plans_) planning = FftPlanning::estimate;
+    ElasticOperators made;
+    if (grid.periodic()) {
+      auto transform = make_grid_transform(grid, planning);
+      made.op = std::make_unique<FftInfluenceOperator>(grid, half_space, transform);
+      auto single = make_single_grid_transform(grid, planning, transform->spectrum());
+      auto inner = std::make_unique<SinglePrecisionFftOperator>(grid, half_space, single);
+      made.single.kernel = [op = inner.get()](std::span<const float> in, std::span<float> out) { op->apply(in, out); };
+      made.inner = std::move(inner);
+      if (fourier) {
+        auto preconditioner = std::make_unique<FourierPreconditioner>(grid, half_space, single);
+        made.single.precondition = [m = preconditioner.get()](std::span<const float> in, std::span<float> out) {
+          m->apply(in, out);
+        };
+        made.fourier = std::move(preconditioner);
+      }
+      return made;
+    }
+    auto op = std::make_unique<FftInfluenceOperator>(grid, half_space, planning);
+    if (fourier) {
+      made.fourier = std::make_unique<FourierPreconditioner>(grid, half_space,
+                                                             make_single_grid_transform(grid, planning, op->scratch()));
+    }
+    made.op = std::move(op);
+    return made;
+  }
   RowSlab rows(const Grid& grid) const override { return {0, grid.dimension() == 1 ? 1 : grid.ny()}; }
   const linalg::Communicator& communicator() const override { return linalg::serial_communicator(); }
 
@@ -53,6 +90,13 @@ class SerialLayout final : public Layout {
 // Every level whole here (the MultilevelSolver's default).
 std::unique_ptr<LevelTransfer> Layout::level_transfer(const Grid& /*fine*/, std::size_t /*min_cells_per_axis*/) const {
   return nullptr;
+}
+
+ElasticOperators Layout::make_mixed_operators(const Grid& /*grid*/, const HalfSpace& /*half_space*/, bool /*fourier*/,
+                                              FftPlanning /*planning*/) const {
+  throw SolverOptionError("precision", "mixed",
+                          "is not available with more than one process yet: use precision double (one process "
+                          "solves mixed)");
 }
 
 const Layout& serial_layout() {

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <type_traits>
 #include <utility>
 
 #include "halfspace/error.hpp"
@@ -29,6 +30,13 @@ using linalg::sums;
 // The displacement is updated incrementally between exact products K p; an
 // exact one every this many updates keeps rounding from accumulating.
 constexpr int kUpdatesBetweenExactProducts = 50;
+// With single-precision inner products (mixed precision) the updates also
+// carry the products' rounding, about 1e-7 of each step: the large early
+// steps leave an error that the later, smaller residual would not show.
+// An exact product whenever the residual has fallen by this factor since
+// the last one keeps that error below the residual (the outer correction
+// of iterative refinement, see the header).
+constexpr double kRefinementFactor = 1e-2;
 
 // Powell's restart threshold, and the share of the contact cells that may
 // enter in one step without a restart (preconditioned form, see the header).
@@ -100,15 +108,23 @@ struct CappedScale {
 };
 
 // One solve: the iterate and the paper's steps, each one or two passes over
-// the cells. The fields live in the result (p, u = K p, g) and in the
-// solver's workspace (t, and r, which holds z = M^-1 g, then K t, then the
-// step's correction c).
+// the cells. The fields live in the result (pressure p, displacement
+// u = K p, gap g) and in the solver's workspace (the direction t, and one
+// array that holds z = M^-1 g, then the image K t, then the step's
+// correction c, then K c). Work is their precision: double, or float with
+// mixed precision's SinglePrecisionProducts (see the header).
+template <class Work>
 class Iteration {
  public:
-  Iteration(InfluenceOperator& op, Preconditioner* preconditioner, const PolonskyKeerOptions& options,
-            const Problem& problem, SolveResult& result, Eigen::ArrayXd& direction, Eigen::ArrayXd& image,
-            double& uniform_response_range)
+  static constexpr bool kSingle = std::is_same_v<Work, float>;
+
+  Iteration(InfluenceOperator& op, InfluenceOperator& inner, const SinglePrecisionProducts& single,
+            Preconditioner* preconditioner, const PolonskyKeerOptions& options, const Problem& problem,
+            SolveResult& result, Work* direction, Work* image, double& uniform_response_range)
       : op_(op),
+        inner_(inner),
+        single_(single),
+        refined_(&inner != &op || kSingle),
         preconditioner_(preconditioner),
         options_(options),
         problem_(problem),
@@ -116,57 +132,65 @@ class Iteration {
         comm_(op.communicator()),
         n_(op.local_size()),
         cells_(static_cast<double>(op.grid().size())),
-        p_(result.pressure.data()),
-        u_(result.displacement.data()),
-        g_(result.gap.data()),
-        t_(direction.data()),
-        r_(image.data()),
+        pressure_(result.pressure.data()),
+        displacement_(result.displacement.data()),
+        gap_(result.gap.data()),
+        direction_(direction),
+        preconditioned_gap_(image),
+        image_(image),
+        correction_(image),
+        correction_image_(image),
         projected_(options.form == PolonskyKeerForm::projected),
         // With a cap the paper's form searches the projected set too: its
         // entries alone stall once the cells below the cap are too few to
         // move the load among them (the mean-free direction on one cell is
         // zero), and its set holds the cells leaving the cap, whose gaps the
         // approach (the mean over the contact below the cap) does not balance.
-        set_{p_, g_, projected_ || options.bounds.capped(),
+        set_{pressure_, gap_, projected_ || options.bounds.capped(),
              problem.load_controlled && (projected_ || options.bounds.capped()), options.bounds.upper},
         bounds_(options.bounds),
         uniform_response_range_(uniform_response_range),
         approach_(problem.approach) {
     if (uniform_response_range_ < 0.0) {
-      // ptp(K 1) for the gap scale (see the header), once per solver; t and
-      // r are free until the iteration starts.
-      direction.setOnes();
-      op_.apply({t_, n_}, {r_, n_});
+      // ptp(K 1) for the gap scale (see the header), once per solver; the
+      // work vectors are free until the iteration starts.
+      for_each_index(n_, [&](std::size_t i) { direction_[i] = 1; });
+      if constexpr (kSingle) {
+        single_.kernel({direction_, n_}, {image_, n_});
+      } else {
+        op_.apply({direction_, n_}, {image_, n_});
+      }
       ++result_.operator_applications;
-      uniform_response_range_ = linalg::max_of(comm_, n_, [&](std::size_t i) { return r_[i]; }) -
-                                linalg::min_of(comm_, n_, [&](std::size_t i) { return r_[i]; });
+      uniform_response_range_ = linalg::max_of(comm_, n_, [&](std::size_t i) -> double { return image_[i]; }) -
+                                linalg::min_of(comm_, n_, [&](std::size_t i) -> double { return image_[i]; });
     }
-    direction.setZero();
+    for_each_index(n_, [&](std::size_t i) { direction_[i] = 0; });
   }
 
   // Step 0: the starting pressure, projected onto the bounds. Load control:
   // the warm start or a uniform pressure, scaled to the target force.
   // Displacement control: the warm start or the local-overlap guess.
   void start(bool warm) {
-    for_each_index(n_, [&](std::size_t i) { p_[i] = warm ? bounds_.project(p_[i]) : 0.0; });
+    for_each_index(n_, [&](std::size_t i) { pressure_[i] = warm ? bounds_.project(pressure_[i]) : 0.0; });
     if (problem_.load_controlled) {
-      double force = problem_.cell_area * linalg::sum(comm_, n_, [&](std::size_t i) { return p_[i]; });
+      double force = problem_.cell_area * linalg::sum(comm_, n_, [&](std::size_t i) { return pressure_[i]; });
       if (!(force > 0.0)) {
-        for_each_index(n_, [&](std::size_t i) { p_[i] = 1.0; });
+        for_each_index(n_, [&](std::size_t i) { pressure_[i] = 1.0; });
         force = problem_.cell_area * cells_;
       }
       CappedScale scale{problem_.target_force / force, false};
       if (bounds_.capped()) {
         // Scaled and capped; a start too concentrated to carry the load
         // below the cap gives way to the uniform pressure, which does.
-        const std::optional<CappedScale> capped = capped_scale([&](std::size_t i) { return p_[i]; });
-        if (!capped) for_each_index(n_, [&](std::size_t i) { p_[i] = 1.0; });
+        const std::optional<CappedScale> capped = capped_scale([&](std::size_t i) { return pressure_[i]; });
+        if (!capped) for_each_index(n_, [&](std::size_t i) { pressure_[i] = 1.0; });
         scale = capped ? *capped : CappedScale{problem_.target_force / (problem_.cell_area * cells_), false};
       }
-      for_each_index(n_,
-                     [&](std::size_t i) { p_[i] = bounds_.snap(scale.stored(p_[i], bounds_.upper) * scale.factor); });
+      for_each_index(n_, [&](std::size_t i) {
+        pressure_[i] = bounds_.snap(scale.stored(pressure_[i], bounds_.upper) * scale.factor);
+      });
     } else if (!warm) {
-      for_each_index(n_, [&](std::size_t i) { g_[i] = problem_.initial_gap[i] - problem_.approach; });
+      for_each_index(n_, [&](std::size_t i) { gap_[i] = problem_.initial_gap[i] - problem_.approach; });
       local_overlap_pressure();
     }
     exact_displacement();
@@ -176,13 +200,17 @@ class Iteration {
   // control, and the residual (see the header), from an exact product every
   // kUpdatesBetweenExactProducts updates and whenever it would stop.
   void evaluate(int iteration) {
-    if (updates_since_exact_ >= kUpdatesBetweenExactProducts) exact_displacement();
+    if (updates_since_exact_ >= kUpdatesBetweenExactProducts ||
+        (refined_ && updates_since_exact_ > 0 && residual_ < kRefinementFactor * exact_residual_)) {
+      exact_displacement();
+    }
     measure();
     if (residual_ <= options_.tolerance && updates_since_exact_ > 0) {
       // Convergence is judged on the exact product only.
       exact_displacement();
       measure();
     }
+    if (updates_since_exact_ == 0) exact_residual_ = residual_;
     result_.residual_history.push_back(residual_);
     stop_ = stop_requested(options_.progress, iteration, residual_);
     // A load-controlled iteration without a cap whose residual has not
@@ -221,7 +249,7 @@ class Iteration {
   // mean-free already: the approach makes it so). G = sum over the set of
   // g z. An adapting M^-1 that changed restarts the conjugate directions.
   void precondition() {
-    z_ = g_;
+    z_is_gap_ = true;
     if (!projected_ && !set_.mean_free) {
       search_cells_ = contact_cells_;
       search_gap_sum_ = 0.0;
@@ -230,15 +258,21 @@ class Iteration {
       return;
     }
     if (preconditioner_) {
-      z_ = r_;  // evaluate() left g on the search set there
+      z_is_gap_ = false;  // evaluate() left g on the search set in preconditioned_gap_
       if (preconditioner_->adapt(set_, result_.residual_history)) conjugate_ = false;
-      preconditioner_->apply({r_, n_}, {r_, n_});
+      if constexpr (kSingle) {
+        single_.precondition({preconditioned_gap_, n_}, {preconditioned_gap_, n_});
+      } else {
+        preconditioner_->apply({preconditioned_gap_, n_}, {preconditioned_gap_, n_});
+      }
       ++result_.preconditioner_applications;
     }
-    const double* z = z_;
-    const auto [z_sum, gz, cells, gap_sum] = sums<4>(comm_, n_, [&](std::size_t i) {
-      const double in_set = set_.contains(i) ? 1.0 : 0.0;
-      return std::array<double, 4>{in_set * z[i], in_set * (g_[i] * z[i]), in_set, in_set * g_[i]};
+    const auto [z_sum, gz, cells, gap_sum] = with_z([&](const auto* z) {
+      return sums<4>(comm_, n_, [&](std::size_t i) {
+        const double in_set = set_.contains(i) ? 1.0 : 0.0;
+        const double zi = z[i];
+        return std::array<double, 4>{in_set * zi, in_set * (gap_[i] * zi), in_set, in_set * gap_[i]};
+      });
     });
     search_cells_ = cells;
     search_gap_sum_ = gap_sum;
@@ -254,7 +288,6 @@ class Iteration {
     // cap join it as entering cells do.
     if (!projected_ && released_cells_ > 0.0) conjugate_ = false;
     const double beta = conjugate_ ? search_norm_ / previous_norm_ : 0.0;
-    const double* z = z_;
     const double z_mean = z_mean_;
     // Under load control the carried-over direction is made mean-free on the
     // current set too: cells that left the set took part of it with them.
@@ -265,12 +298,15 @@ class Iteration {
     // iterations it saves.
     const double t_mean =
         problem_.load_controlled && beta != 0.0 && search_cells_ > 0.0 ? direction_sum_ / search_cells_ : 0.0;
-    for_each_index(n_,
-                   [&](std::size_t i) { t_[i] = set_.contains(i) ? (z[i] - z_mean) + beta * (t_[i] - t_mean) : 0.0; });
+    with_z([&](const auto* z) {
+      for_each_index(n_, [&](std::size_t i) {
+        direction_[i] = static_cast<Work>(set_.contains(i) ? (z[i] - z_mean) + beta * (direction_[i] - t_mean) : 0.0);
+      });
+    });
     previous_norm_ = search_norm_;
   }
 
-  // Steps 4-5: the image r = K t, mean-corrected on the search set under
+  // Steps 4-5: the image K t, mean-corrected on the search set under
   // load control, and the step length tau, the exact minimiser along t on
   // the current set. After a restart tau is positive; a conjugate direction
   // can give a negative one, which is still a valid step, but then no cell
@@ -279,14 +315,15 @@ class Iteration {
   // the set, as conjugate() keeps them under load control (the curvature
   // t.Kt - mean(Kt) sum(t) of a direction with a mean can vanish).
   bool step_length(int iteration) {
-    op_.apply({t_, n_}, {r_, n_});
+    kernel_product(direction_, image_);
     ++result_.operator_applications;
-    const auto [r_sum, t_sum, gt, rt] = sums<4>(comm_, n_, [&](std::size_t i) {
+    const auto [image_sum, t_sum, gt, t_image] = sums<4>(comm_, n_, [&](std::size_t i) {
       const double in_set = set_.contains(i) ? 1.0 : 0.0;
-      return std::array<double, 4>{in_set * r_[i], in_set * t_[i], in_set * (g_[i] * t_[i]), in_set * (r_[i] * t_[i])};
+      return std::array<double, 4>{in_set * image_[i], in_set * direction_[i], in_set * (gap_[i] * direction_[i]),
+                                   in_set * (image_[i] * direction_[i])};
     });
-    const double r_mean = problem_.load_controlled && search_cells_ > 0.0 ? r_sum / search_cells_ : 0.0;
-    const double curvature = rt - r_mean * t_sum;
+    const double image_mean = problem_.load_controlled && search_cells_ > 0.0 ? image_sum / search_cells_ : 0.0;
+    const double curvature = t_image - image_mean * t_sum;
     tau_ = gt / curvature;
     if (curvature > 0.0 && std::isfinite(tau_)) return true;
     result_.status = SolveStatus::breakdown;
@@ -312,19 +349,19 @@ class Iteration {
     const double tau = tau_;
     // The cell's pressure after the step, projected, or entered with -tau g.
     const auto projected = [&](std::size_t i) {
-      const double pi = bounds_.project(p_[i] - tau * t_[i]);
-      return entries && pi == 0.0 && g_[i] < 0.0 && tau > 0.0 ? -tau * g_[i] : pi;
+      const double pi = bounds_.project(pressure_[i] - tau * direction_[i]);
+      return entries && pi == 0.0 && gap_[i] < 0.0 && tau > 0.0 ? -tau * gap_[i] : pi;
     };
     const bool shifted = problem_.load_controlled && load_by_shift_;
     const double shift = shifted ? load_shift(projected) : 0.0;
     const auto [new_pressure_sum, entered, corrected] = sums<3>(comm_, n_, [&](std::size_t i) {
-      const double moved = p_[i] - tau * t_[i];
+      const double moved = pressure_[i] - tau * direction_[i];
       const double q = projected(i);
       const double pi = q > 0.0 ? std::max(q + shift, 0.0) : 0.0;
       const double entry = q > 0.0 && moved <= 0.0 ? 1.0 : 0.0;
-      p_[i] = pi;
-      u_[i] -= tau * r_[i];
-      r_[i] = pi - moved;
+      pressure_[i] = pi;
+      displacement_[i] -= tau * image_[i];
+      correction_[i] = static_cast<Work>(pi - moved);
       return std::array<double, 3>{pi, entry, q != moved ? 1.0 : 0.0};
     });
     const double entries_kept = projected_ ? kEntriesKept * contact_cells_ : 0.0;
@@ -392,7 +429,7 @@ class Iteration {
     const double upper = bounds_.upper;
     auto lower = [&](std::size_t i, double moved) {
       double pi = std::max(moved, bounds_.lower);
-      if (entries && pi == 0.0 && g_[i] < 0.0 && tau > 0.0) pi = -tau * g_[i];
+      if (entries && pi == 0.0 && gap_[i] < 0.0 && tau > 0.0) pi = -tau * gap_[i];
       return pi;
     };
     CappedScale scale{1.0, true};
@@ -402,32 +439,33 @@ class Iteration {
     if (problem_.load_controlled) {
       const double target_sum = problem_.target_force / problem_.cell_area;
       const std::optional<CappedScale> capped =
-          capped_scale([&](std::size_t i) { return lower(i, p_[i] - tau * t_[i]); });
+          capped_scale([&](std::size_t i) { return lower(i, pressure_[i] - tau * direction_[i]); });
       if (capped) {
         scale = *capped;
       } else {
         // The cells at the cap cannot carry the load: the next cells to
         // touch, those out of contact with the smallest gaps, take the rest.
         filled = true;
-        const double positive =
-            linalg::sum(comm_, n_, [&](std::size_t i) { return lower(i, p_[i] - tau * t_[i]) > 0.0 ? 1.0 : 0.0; });
+        const double positive = linalg::sum(
+            comm_, n_, [&](std::size_t i) { return lower(i, pressure_[i] - tau * direction_[i]) > 0.0 ? 1.0 : 0.0; });
         const double deficit = target_sum - upper * positive;
-        const auto [below, count] = smallest_gaps([&](std::size_t i) { return lower(i, p_[i] - tau * t_[i]) == 0.0; },
-                                                  std::ceil(deficit / upper));
+        const auto [below, count] =
+            smallest_gaps([&](std::size_t i) { return lower(i, pressure_[i] - tau * direction_[i]) == 0.0; },
+                          std::ceil(deficit / upper));
         fill_below = below;
         fill = deficit / count;
       }
     }
     const auto [entered, corrected, reached_cap] = sums<3>(comm_, n_, [&](std::size_t i) {
-      const double moved = p_[i] - tau * t_[i];
+      const double moved = pressure_[i] - tau * direction_[i];
       const double pre = lower(i, moved);
       double pi = scale.stored(pre, upper);
-      if (filled) pi = pre > 0.0 ? upper : (g_[i] < fill_below ? fill : 0.0);
+      if (filled) pi = pre > 0.0 ? upper : (gap_[i] < fill_below ? fill : 0.0);
       const double entry = entries && moved <= 0.0 && pre > 0.0 ? 1.0 : 0.0;
-      p_[i] = pi;
-      u_[i] -= tau * r_[i];
-      r_[i] = pi - moved;
-      return std::array<double, 3>{entry, r_[i] != 0.0 ? 1.0 : 0.0, pre * scale.factor >= upper ? 1.0 : 0.0};
+      pressure_[i] = pi;
+      displacement_[i] -= tau * image_[i];
+      correction_[i] = static_cast<Work>(pi - moved);
+      return std::array<double, 3>{entry, correction_[i] != 0.0 ? 1.0 : 0.0, pre * scale.factor >= upper ? 1.0 : 0.0};
     });
     const double entries_kept = projected_ ? kEntriesKept * contact_cells_ : 0.0;
     conjugate_ = entered <= entries_kept && tau > 0.0 && !filled && (projected_ || reached_cap == 0.0);
@@ -435,26 +473,26 @@ class Iteration {
     deferred_.scale = scale.factor;
   }
 
-  // The result's summary of the final iterate, whose displacement and gap
-  // are current.
   // The end of steps 6-9 shared by both projections: the preconditioner
-  // sees how much the projection moved, and the moved part c (in r) is
-  // turned into its displacement K c, added to u at the next exact
-  // evaluation (g is recomputed from u in step 1, so it can hold K c until
-  // then).
+  // sees how much the projection moved, and the moved part c (correction_)
+  // is turned into its displacement K c in place (correction_image_), added
+  // to u in the next evaluation's first pass.
   void finish_step(double corrected, bool correction) {
     if (preconditioner_) preconditioner_->observe_step({corrected, search_cells_});
     if (correction) {
-      op_.apply({r_, n_}, {g_, n_});
+      kernel_product(correction_, correction_image_);
       ++result_.operator_applications;
       deferred_.add_correction = true;
     }
     ++updates_since_exact_;
   }
 
+  // The result's summary of the final iterate, whose displacement and gap
+  // are current.
   void summarise(int iterations) {
     const auto [pressure_total, contact_total, plastic_total] = sums<3>(comm_, n_, [&](std::size_t i) {
-      return std::array<double, 3>{p_[i], p_[i] > 0.0 ? 1.0 : 0.0, bounds_.at_cap(p_[i]) ? 1.0 : 0.0};
+      return std::array<double, 3>{pressure_[i], pressure_[i] > 0.0 ? 1.0 : 0.0,
+                                   bounds_.at_cap(pressure_[i]) ? 1.0 : 0.0};
     });
     if (bounds_.capped()) result_.hardness = bounds_.upper;
     result_.plastic_fraction = plastic_total / cells_;
@@ -464,7 +502,7 @@ class Iteration {
     result_.approach = approach_;
     result_.total_force = problem_.cell_area * pressure_total;
     result_.mean_pressure = result_.total_force / grid.domain_area();
-    result_.max_pressure = linalg::max_of(comm_, n_, [&](std::size_t i) { return p_[i]; });
+    result_.max_pressure = linalg::max_of(comm_, n_, [&](std::size_t i) { return pressure_[i]; });
     result_.contact_fraction = contact_total / cells_;
   }
 
@@ -477,11 +515,27 @@ class Iteration {
     bool add_correction = false;
   };
 
+  // f(z), z the step's search gradient: g itself or M^-1 g (precondition()).
+  template <class Function>
+  auto with_z(Function&& f) const {
+    return z_is_gap_ ? f(static_cast<const double*>(gap_)) : f(static_cast<const Work*>(preconditioned_gap_));
+  }
+
+  // out = K in on the work vectors, by the inner products (see the header).
+  void kernel_product(const Work* in, Work* out) {
+    if constexpr (kSingle) {
+      single_.kernel({in, n_}, {out, n_});
+    } else {
+      inner_.apply({in, n_}, {out, n_});
+    }
+  }
+
   // Starting pressure from the overlap in g: each cell pushed in by the
   // local overlap alone, p = max(-g, 0) / K_ii, projected onto the bounds.
   void local_overlap_pressure() {
     const double self_influence = op_.self_influence();
-    for_each_index(n_, [&](std::size_t i) { p_[i] = bounds_.project(std::max(-g_[i], 0.0) / self_influence); });
+    for_each_index(n_,
+                   [&](std::size_t i) { pressure_[i] = bounds_.project(std::max(-gap_[i], 0.0) / self_influence); });
   }
 
   // The bound b such that `wanted` cells or a few more (ties) of those with
@@ -490,14 +544,14 @@ class Iteration {
   template <class Candidate>
   std::pair<double, double> smallest_gaps(Candidate&& candidate, double wanted) const {
     auto count_below = [&](double bound) {
-      return linalg::sum(comm_, n_, [&](std::size_t i) { return candidate(i) && g_[i] < bound ? 1.0 : 0.0; });
+      return linalg::sum(comm_, n_, [&](std::size_t i) { return candidate(i) && gap_[i] < bound ? 1.0 : 0.0; });
     };
     const double candidates = count_below(kInfinity);
     wanted = std::min(wanted, candidates);
     // count_below(low) < wanted <= count_below(high) = candidates.
-    double low = linalg::min_of(comm_, n_, [&](std::size_t i) { return candidate(i) ? g_[i] : kInfinity; });
+    double low = linalg::min_of(comm_, n_, [&](std::size_t i) { return candidate(i) ? gap_[i] : kInfinity; });
     double high = std::nextafter(
-        linalg::max_of(comm_, n_, [&](std::size_t i) { return candidate(i) ? g_[i] : -kInfinity; }), kInfinity);
+        linalg::max_of(comm_, n_, [&](std::size_t i) { return candidate(i) ? gap_[i] : -kInfinity; }), kInfinity);
     double count = candidates;
     constexpr int kMaxPasses = 64;
     for (int pass = 0; pass < kMaxPasses && count != wanted; ++pass) {
@@ -561,10 +615,10 @@ class Iteration {
   void exact_displacement() {
     if (deferred_.scale != 1.0) {
       const double scale = deferred_.scale;
-      for_each_index(n_, [&](std::size_t i) { p_[i] = bounds_.snap(p_[i] * scale); });
+      for_each_index(n_, [&](std::size_t i) { pressure_[i] = bounds_.snap(pressure_[i] * scale); });
     }
     deferred_ = {};
-    op_.apply({p_, n_}, {u_, n_});
+    op_.apply({pressure_, n_}, {displacement_, n_});
     ++result_.operator_applications;
     updates_since_exact_ = 0;
   }
@@ -583,32 +637,34 @@ class Iteration {
   // iteration cycled between that and all cells just below the cap. Every
   // cell at the cap (a load of H times the domain): the highest of them.
   double all_capped_approach() const {
-    const double highest_capped = linalg::max_of(
-        comm_, n_, [&](std::size_t i) { return p_[i] > 0.0 ? problem_.initial_gap[i] + u_[i] : -kInfinity; });
-    const double lowest_free = linalg::min_of(
-        comm_, n_, [&](std::size_t i) { return p_[i] > 0.0 ? kInfinity : problem_.initial_gap[i] + u_[i]; });
+    const double highest_capped = linalg::max_of(comm_, n_, [&](std::size_t i) {
+      return pressure_[i] > 0.0 ? problem_.initial_gap[i] + displacement_[i] : -kInfinity;
+    });
+    const double lowest_free = linalg::min_of(comm_, n_, [&](std::size_t i) {
+      return pressure_[i] > 0.0 ? kInfinity : problem_.initial_gap[i] + displacement_[i];
+    });
     return std::isfinite(lowest_free) ? 0.5 * (highest_capped + lowest_free) : highest_capped;
   }
 
   // Step 1's two passes: the deferred work and the contact set's mean gap
   // (the approach), then g, the residual's sums, G = sum over the search set
   // of g^2 and sum over it of g t_old (Powell's test). With a
-  // preconditioner, r receives g on the search set.
+  // preconditioner, preconditioned_gap_ receives g on the search set.
   void measure() {
     const Deferred deferred = std::exchange(deferred_, Deferred{});
     const double scale = deferred.scale;
     const bool add = deferred.add_correction;
     const auto settled = linalg::sums_and_range<3>(comm_, n_, [&](std::size_t i) {
-      double ui = u_[i];
-      double pi = p_[i];
-      if (add) ui += g_[i];
+      double ui = displacement_[i];
+      double pi = pressure_[i];
+      if (add) ui += correction_image_[i];
       if (scale != 1.0) {
         ui *= scale;
         pi = bounds_.snap(pi * scale);
       }
       if (add || scale != 1.0) {
-        u_[i] = ui;
-        p_[i] = pi;
+        displacement_[i] = ui;
+        pressure_[i] = pi;
       }
       const double in_contact = pi > 0.0 ? 1.0 : 0.0;
       const double below_cap = set_.in_contact(i) ? 1.0 : 0.0;
@@ -634,16 +690,20 @@ class Iteration {
     const double upper = bounds_.upper;
     const auto [weighted_gap, overlap, pressure_sum, gap_norm, gap_along, released, direction_sum] =
         sums<7>(comm_, n_, [&](std::size_t i) {
-          g_[i] = problem_.initial_gap[i] + u_[i] - approach;
+          gap_[i] = problem_.initial_gap[i] + displacement_[i] - approach;
           const double in_set = set_.contains(i) ? 1.0 : 0.0;  // a mask, not a branch
-          if (store_gap) r_[i] = in_set * g_[i];
-          const double over = std::max(-g_[i], 0.0);
-          const double weighted = capped ? p_[i] * std::max(g_[i], 0.0) : p_[i] * std::abs(g_[i]);
-          const double overlap_weight = capped ? (upper - p_[i]) / upper : 1.0;
-          const double release = capped && bounds_.at_cap(p_[i]) && g_[i] > 0.0 ? 1.0 : 0.0;
-          return std::array<double, 7>{
-              weighted, overlap_weight * over, p_[i], in_set * (g_[i] * g_[i]), in_set * (g_[i] * t_[i]),
-              release,  in_set * t_[i]};
+          if (store_gap) preconditioned_gap_[i] = static_cast<Work>(in_set * gap_[i]);
+          const double over = std::max(-gap_[i], 0.0);
+          const double weighted = capped ? pressure_[i] * std::max(gap_[i], 0.0) : pressure_[i] * std::abs(gap_[i]);
+          const double overlap_weight = capped ? (upper - pressure_[i]) / upper : 1.0;
+          const double release = capped && bounds_.at_cap(pressure_[i]) && gap_[i] > 0.0 ? 1.0 : 0.0;
+          return std::array<double, 7>{weighted,
+                                       overlap_weight * over,
+                                       pressure_[i],
+                                       in_set * (gap_[i] * gap_[i]),
+                                       in_set * (gap_[i] * direction_[i]),
+                                       release,
+                                       in_set * direction_[i]};
         });
     released_cells_ = released;
     direction_sum_ = direction_sum;
@@ -659,6 +719,9 @@ class Iteration {
   }
 
   InfluenceOperator& op_;
+  InfluenceOperator& inner_;               // the step's products K t and K c (see the header)
+  const SinglePrecisionProducts& single_;  // the same on single-precision work vectors
+  const bool refined_;                     // inner_ is not op_: refine (kRefinementFactor)
   Preconditioner* preconditioner_;
   const PolonskyKeerOptions& options_;
   const Problem& problem_;
@@ -666,17 +729,25 @@ class Iteration {
   const linalg::Communicator& comm_;  // the processes the fields are spread over
   const std::size_t n_;               // the cells this process holds
   const double cells_;                // the cells of the whole grid
-  double* p_;                         // pressure
-  double* u_;                         // displacement K p
-  double* g_;                         // gap; K c between steps 8 and 1
-  double* t_;                         // conjugate direction
-  double* r_;                         // M^-1 g, then K t, then c
-  const bool projected_;              // the form (see the header)
+  double* pressure_;                  // p
+  double* displacement_;              // u = K p
+  double* gap_;                       // g
+  Work* direction_;                   // the conjugate direction t
+  // One array of the solver's workspace in four successive roles: g on the
+  // search set, made z = M^-1 g in place (steps 1-2); the image K t of the
+  // direction (steps 4-5); the step's correction c (steps 6-9), made K c in
+  // place (added to u at step 1).
+  Work* preconditioned_gap_;
+  Work* image_;
+  Work* correction_;
+  Work* correction_image_;
+  const bool projected_;  // the form (see the header)
   const SearchSet set_;
   const PressureBounds bounds_;
   double& uniform_response_range_;  // ptp(K 1), the solver's
 
   int updates_since_exact_ = 0;
+  double exact_residual_ = kInfinity;  // the residual at the last exact product
   Deferred deferred_;
   double approach_;
   double residual_ = 0.0;
@@ -685,7 +756,7 @@ class Iteration {
   double gap_norm_ = 0.0;             // sum over the search set of g^2
   double gap_along_direction_ = 0.0;  // sum over the search set of g t_old
   double direction_sum_ = 0.0;        // sum over the search set of t_old
-  const double* z_ = nullptr;         // z: g itself, or M^-1 g in r
+  bool z_is_gap_ = true;              // z: g itself, or M^-1 g (preconditioned_gap_)
   double z_mean_ = 0.0;
   double search_cells_ = 0.0;
   double search_gap_sum_ = 0.0;
@@ -698,6 +769,23 @@ class Iteration {
   bool stop_ = false;           // the progress callback asked to stop
   double tau_ = 0.0;
 };
+
+// Steps 0 to 9 until the iteration ends, then the result's summary.
+template <class Work>
+void iterate(Iteration<Work>& it, bool warm) {
+  it.start(warm);  // 0: starting pressure
+  int k = 0;
+  for (;; ++k) {
+    it.evaluate(k);                                // 1: gap, approach, residual
+    if (it.finished(k)) break;                     //    converged or stopped
+    if (it.restarted_without_contact()) continue;  //    (displacement control)
+    it.precondition();                             // 2: z = M^-1 g on the search set
+    it.conjugate();                                // 3: t = z + beta t
+    if (!it.step_length(k)) break;                 // 4-5: K t, tau
+    it.advance();                                  // 6-9: p = P(p - tau t), u, load
+  }
+  it.summarise(k);
+}
 
 }  // namespace
 
@@ -714,18 +802,40 @@ void PolonskyKeerOptions::validate() const {
   }
 }
 
-PolonskyKeer::PolonskyKeer(InfluenceOperator& op, PolonskyKeerOptions options, Preconditioner* preconditioner)
+PolonskyKeer::PolonskyKeer(InfluenceOperator& op, PolonskyKeerOptions options, Preconditioner* preconditioner,
+                           InfluenceOperator* inner, SinglePrecisionProducts single)
     : op_(op),
+      inner_(inner ? *inner : op),
       options_(std::move(options)),
       preconditioner_(preconditioner),
-      name_(preconditioner ? fmt::format("{}-polonsky-keer", preconditioner->kind()) : "polonsky-keer") {
+      name_(preconditioner ? fmt::format("{}-polonsky-keer", preconditioner->kind()) : "polonsky-keer"),
+      single_(std::move(single)) {
   options_.validate();
+  if (inner_.local_size() != op_.local_size()) {
+    throw InputError(
+        fmt::format("the inner operator holds {} cells, but the operator {}", inner_.local_size(), op_.local_size()));
+  }
   if (preconditioner_ && options_.form != PolonskyKeerForm::projected) {
     throw InputError("a preconditioner needs the projected form of Polonsky-Keer (PolonskyKeerForm::projected)");
   }
+  if (single_ && preconditioner_ && !single_.precondition) {
+    throw InputError("single-precision work vectors with a preconditioner need its single-precision M^-1");
+  }
   const auto n = static_cast<Eigen::Index>(op_.local_size());
-  direction_.setZero(n);
-  image_.setZero(n);
+  if (single_) {
+    single_direction_.setZero(n);
+    single_image_.setZero(n);
+  } else {
+    direction_.setZero(n);
+    image_.setZero(n);
+  }
+}
+
+std::span<double> PolonskyKeer::workspace(int which) {
+  Eigen::ArrayXd& field = which == 0 ? direction_ : image_;
+  const auto n = static_cast<Eigen::Index>(op_.local_size());
+  if (field.size() != n) field.setZero(n);  // single-precision work vectors: made on first use
+  return {field.data(), static_cast<std::size_t>(field.size())};
 }
 
 SolveResult PolonskyKeer::solve(std::span<const double> initial_gap, const Loading& loading,
@@ -760,26 +870,33 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
   result.gap.setZero(n);
   if (preconditioner_) preconditioner_->begin_solve();
 
-  Iteration it(op_, preconditioner_, options_, problem, result, direction_, image_, uniform_response_range_);
-  it.start(warm);  // 0: starting pressure
-  int k = 0;
-  for (;; ++k) {
-    it.evaluate(k);                                // 1: gap, approach, residual
-    if (it.finished(k)) break;                     //    converged or stopped
-    if (it.restarted_without_contact()) continue;  //    (displacement control)
-    it.precondition();                             // 2: z = M^-1 g on the search set
-    it.conjugate();                                // 3: t = z + beta t
-    if (!it.step_length(k)) break;                 // 4-5: K t, tau
-    it.advance();                                  // 6-9: p = P(p - tau t), u, load
+  if (single_) {
+    Iteration<float> it(op_, inner_, single_, preconditioner_, options_, problem, result, single_direction_.data(),
+                        single_image_.data(), uniform_response_range_);
+    iterate(it, warm);
+  } else {
+    Iteration<double> it(op_, inner_, single_, preconditioner_, options_, problem, result, direction_.data(),
+                         image_.data(), uniform_response_range_);
+    iterate(it, warm);
   }
-  it.summarise(k);
   if (result.converged()) {
     // "Converged" must mean the conditions hold, checked apart from the
     // residual (contact_conditions.hpp): a false one becomes a breakdown.
+    // The check's K p goes into a double work vector, or with
+    // single-precision ones into the gap, given back afterwards as the
+    // iteration computed it (g0 + u - approach).
+    std::span<double> scratch = single_ ? std::span<double>(result.gap.data(), static_cast<std::size_t>(n))
+                                        : std::span<double>(image_.data(), static_cast<std::size_t>(n));
     const ContactConditionReport check =
         check_contact_conditions(op_, initial_gap, loading, options_.bounds, result,
-                                 ContactConditionTolerances::for_solver_tolerance(options_.tolerance),
-                                 {image_.data(), static_cast<std::size_t>(image_.size())});
+                                 ContactConditionTolerances::for_solver_tolerance(options_.tolerance), scratch);
+    if (single_) {
+      const double approach = result.approach;
+      double* gap = result.gap.data();
+      const double* displacement = result.displacement.data();
+      for_each_index(static_cast<std::size_t>(n),
+                     [&](std::size_t i) { gap[i] = initial_gap[i] + displacement[i] - approach; });
+    }
     ++result.operator_applications;
     if (!check.holds) {
       result.status = SolveStatus::breakdown;

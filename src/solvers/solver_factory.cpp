@@ -33,11 +33,18 @@ class SolverWithOperator final : public ContactSolver {
                      const PolonskyKeerOptions& options, const ActiveSetOptions* active_set = nullptr)
       : operators_(std::move(operators)),
         deflation_(std::move(deflation)),
+        // The coarse correction is part of M^-1: with mixed precision its
+        // products may be the single-precision ones too.
         balancing_(deflation_
-                       ? std::make_unique<BalancingPreconditioner>(*operators_.op, *operators_.fourier, *deflation_)
+                       ? std::make_unique<BalancingPreconditioner>(
+                             operators_.inner ? *operators_.inner : *operators_.op, *operators_.fourier, *deflation_)
                        : nullptr) {
     Preconditioner* used = balancing_ ? static_cast<Preconditioner*>(balancing_.get()) : operators_.fourier.get();
-    auto polonsky_keer = std::make_unique<PolonskyKeer>(*operators_.op, options, used);
+    // Single-precision work vectors where every product has a
+    // single-precision form (not around the coarse correction's, which
+    // works in double).
+    auto polonsky_keer = std::make_unique<PolonskyKeer>(*operators_.op, options, used, operators_.inner.get(),
+                                                        balancing_ ? SinglePrecisionProducts{} : operators_.single);
     if (active_set && used) {
       solver_ = std::make_unique<ActiveSetStart>(*operators_.op, *used, std::move(polonsky_keer), *active_set);
     } else {
@@ -98,7 +105,9 @@ std::unique_ptr<ContactSolver> make_polonsky_keer(const Grid& grid, const HalfSp
   // under moderate loads, while the projected form alone converges at every
   // load (docs/validation.md, "Measured profiles").
   const bool preconditioned = projected && grid.dimension() == 2;
-  ElasticOperators operators = layout.make_operators(grid, half_space, preconditioned, options.fft_planning);
+  ElasticOperators operators = options.precision == Precision::mixed
+                                   ? layout.make_mixed_operators(grid, half_space, preconditioned, options.fft_planning)
+                                   : layout.make_operators(grid, half_space, preconditioned, options.fft_planning);
   // Block deflation on the rows this process holds.
   std::unique_ptr<BlockDeflation> deflation;
   if (deflated && operators.fourier) {

@@ -20,6 +20,11 @@ constexpr std::array<std::pair<SolverType, std::string_view>, 5> kSolverNames{{
     {SolverType::lcpquad, "lcpquad"},
 }};
 
+constexpr std::array<std::pair<Precision, std::string_view>, 2> kPrecisionNames{{
+    {Precision::double_precision, "double"},
+    {Precision::mixed, "mixed"},
+}};
+
 std::string text(double value) {
   return format_number(value);
 }
@@ -41,6 +46,23 @@ SolverType parse_solver_type(std::string_view name) {
   }
   throw SolverOptionError("solver", std::string(name),
                           fmt::format("is invalid: the solver must be one of {}", fmt::join(names, ", ")));
+}
+
+std::string_view to_string(Precision precision) {
+  for (const auto& [known, name] : kPrecisionNames) {
+    if (known == precision) return name;
+  }
+  return "unknown";
+}
+
+Precision parse_precision(std::string_view name) {
+  std::vector<std::string_view> names;
+  for (const auto& [precision, known] : kPrecisionNames) {
+    if (known == name) return precision;
+    names.push_back(known);
+  }
+  throw SolverOptionError("precision", std::string(name),
+                          fmt::format("is invalid: the precision must be one of {}", fmt::join(names, ", ")));
 }
 
 std::vector<SolverType> solver_types() {
@@ -114,6 +136,18 @@ void SolverOptions::validate() const {
     throw SolverOptionError(
         "deflation.mode", std::string(to_string(deflation.mode)),
         fmt::format("does not apply to solver '{}': deflation needs pk-fourier or pk-multilevel", to_string(type)));
+  }
+  if (precision == Precision::mixed && !uses_fft(type)) {
+    throw SolverOptionError("precision", "mixed",
+                            fmt::format("does not apply to solver '{}': the dense path assembles and solves in double "
+                                        "only; use precision double, or a Polonsky-Keer solver (pk, pk-fourier, "
+                                        "pk-multilevel) for mixed",
+                                        to_string(type)));
+  }
+  if (precision == Precision::mixed && adhesion) {
+    throw SolverOptionError("precision", "mixed",
+                            "does not apply to the adhesive solver (its energy minimisation runs in double only); "
+                            "use precision double");
   }
   if (adhesion) {
     // The law's own rules, restated with the option's name here.

@@ -5,6 +5,7 @@
 #include <fftw3.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <numbers>
@@ -184,6 +185,36 @@ TEST(RealFftTest, IsMoveable) {
   c = std::move(b);
   EXPECT_EQ(c.input().data(), buffer);
   expect_forward_matches_dft(c, 4);
+}
+
+// The single-precision transform (mixed precision's inner products) against
+// the double one: the same spectrum to float rounding, which grows like
+// eps_float log N (eps_float = 6e-8), and the same round trip.
+TEST(RealFftTest, SinglePrecisionMatchesDoubleToFloatRounding) {
+  constexpr std::size_t rows = 24;
+  constexpr std::size_t cols = 20;
+  const std::vector<double> x = random_values(rows * cols, 17);
+  RealFft exact(rows, cols, FftPlanning::estimate);
+  SingleRealFft single(rows, cols, FftPlanning::estimate);
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    exact.input()[i] = x[i];
+    single.input()[i] = static_cast<float>(x[i]);
+  }
+  exact.forward();
+  single.forward();
+  double largest = 0.0;
+  double error = 0.0;
+  for (std::size_t k = 0; k < exact.spectrum_size(); ++k) {
+    const std::complex<double> z(single.spectrum()[k].real(), single.spectrum()[k].imag());
+    largest = std::max(largest, std::abs(exact.spectrum()[k]));
+    error = std::max(error, std::abs(z - exact.spectrum()[k]));
+  }
+  EXPECT_LT(error, 1e-6 * largest);
+  EXPECT_GT(error, 1e-12 * largest) << "not single precision";
+  single.backward();
+  const double n = static_cast<double>(rows * cols);
+  for (std::size_t i = 0; i < x.size(); ++i) EXPECT_NEAR(single.output()[i] / n, x[i], 1e-6) << i;
+  EXPECT_THROW(SingleRealFft(0, FftPlanning::estimate), InputError);
 }
 
 TEST(RealFftTest, RejectsEmptySize) {

@@ -161,6 +161,9 @@ for processes in (2, 3):
     failure_case("invalid option", processes, hertz + ["--solver", "pk-fourier", "--tol", "2"], "tol", missing)
     failure_case("not distributed yet", processes, hertz + ["--solver", "lemke"],
                  "type = lemke is not available with more than one process yet", missing)
+    failure_case("mixed precision not distributed yet", processes,
+                 hertz + ["--solver", "pk-fourier", "--precision", "mixed"],
+                 "precision = mixed is not available with more than one process yet", missing)
     failure_case("free adhesion not distributed yet", processes,
                  free_hertz + ["--force", "5", "--adhesion", "exponential", "--work-of-adhesion", "0.1",
                                "--adhesion-range", "1e-8"],

@@ -24,6 +24,8 @@ def test_exception_types():
     ({"fft_planning": "fast"}, "fft_planning"),
     ({"threads": 0}, "threads=0 is invalid"),
     ({"deflation_block": -1}, "deflation_block=-1"),
+    ({"precision": "half"}, "precision=half is invalid"),
+    ({"precision": "mixed", "solver": "lemke"}, "precision=mixed does not apply to solver 'lemke'"),
 ])
 def test_bad_option_names_keyword(keywords, message):
     with pytest.raises(hs.InputError, match=message):

@@ -13,9 +13,12 @@ namespace halfspace::fft {
 //   $HALFSPACE_FFTW_WISDOM if set ("" or "off": no wisdom file, nullopt);
 //   else $XDG_CACHE_HOME/halfspace/fftw-wisdom if XDG_CACHE_HOME is absolute;
 //   else $HOME/.cache/halfspace/fftw-wisdom; nullopt if HOME is unset too.
+// Single-precision plans (SingleRealFft) keep theirs in the same path with
+// "-single" appended (FFTW holds the two precisions' wisdom apart).
 std::optional<std::filesystem::path> fft_wisdom_path();
 
-// What the automatic wisdom handling of this process did. RealFft loads the
+// What the automatic wisdom handling of this process did (for the
+// double-precision file). RealFft loads the
 // file once, before its first measure or patient plan, and saves FFTW's
 // wisdom back (merged with the file's current contents) after any such plan
 // that added to it. Failures never throw and never change a result: a

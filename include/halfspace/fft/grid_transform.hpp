@@ -21,14 +21,24 @@ std::shared_ptr<RealFft> make_grid_transform(const Grid& grid, FftPlanning plann
 std::shared_ptr<RealFft> make_grid_transform(const Grid& grid, FftPlanning planning,
                                              std::span<std::complex<double>> workspace);
 
+// The grid's transform in single precision (a mixed-precision solve's inner
+// products), over `workspace`: idle double-precision memory such as another
+// transform's spectrum, read as floats (it holds twice as many); throws
+// InputError if it is smaller than SingleRealFft::workspace_size.
+std::shared_ptr<SingleRealFft> make_single_grid_transform(const Grid& grid, FftPlanning planning,
+                                                          std::span<std::complex<double>> workspace);
+
 // Returns `transform` if it has the grid's shape; throws InputError naming
 // `user` (the class receiving it) and both shapes otherwise, or if it is null.
-std::shared_ptr<RealFft> checked_grid_transform(const Grid& grid, std::shared_ptr<RealFft> transform,
-                                                std::string_view user);
+template <class Real>
+std::shared_ptr<BasicRealFft<Real>> checked_grid_transform(const Grid& grid,
+                                                           std::shared_ptr<BasicRealFft<Real>> transform,
+                                                           std::string_view user);
 
 }  // namespace halfspace::fft
 
 // The library and its front ends name these without the folder's namespace.
 namespace halfspace {
 using fft::make_grid_transform;
+using fft::make_single_grid_transform;
 }  // namespace halfspace

@@ -8,7 +8,8 @@
 
 #include "halfspace/fft/fft_planning.hpp"
 
-struct fftw_plan_s;  // FFTW's opaque plan type, so that <fftw3.h> stays private
+struct fftw_plan_s;   // FFTW's opaque plan types (double and single precision),
+struct fftwf_plan_s;  // so that <fftw3.h> stays private
 
 namespace halfspace::fft {
 
@@ -18,35 +19,52 @@ namespace halfspace::fft {
 // PaddedRealFft's.)
 enum class FftOutput { separate, overwrite_input };
 
+// FFTW's plan type for each precision.
+template <class Real>
+struct FftwPlanOf;
+template <>
+struct FftwPlanOf<double> {
+  using type = fftw_plan_s*;
+};
+template <>
+struct FftwPlanOf<float> {
+  using type = fftwf_plan_s*;
+};
+
 // Forward (r2c) and backward (c2r) transforms of a 1D (n) or 2D (rows, cols,
-// row-major) real array. The buffers are FFTW-aligned and owned here; the plans
+// row-major) real array, in double (RealFft) or single precision
+// (SingleRealFft: FFTW's fftwf_ interface, for the inner products of a
+// mixed-precision solve, solver_options.hpp's Precision). The buffers are FFTW-aligned and owned here; the plans
 // are made once, under a process-wide lock (FFTW's planner is not thread-safe),
 // with the thread count in force (set_threads); measure and patient plans
 // read and extend the wisdom file of fft_wisdom.hpp. Executing is thread-safe
 // for distinct objects. Transforms are unnormalised: backward(forward(x)) = N x
 // with N = rows * cols.
-class RealFft {
+template <class Real>
+class BasicRealFft {
  public:
+  using value_type = Real;
+
   // 1D transform of n real values; the spectrum has n/2 + 1 entries.
   // Throws InputError if a length is 0 or exceeds INT_MAX (FFTW's limit).
-  RealFft(std::size_t n, FftPlanning planning, FftOutput output = FftOutput::separate);
+  BasicRealFft(std::size_t n, FftPlanning planning, FftOutput output = FftOutput::separate);
   // 2D transform of a (rows, cols) real array; the spectrum is (rows, cols/2 + 1).
-  RealFft(std::size_t rows, std::size_t cols, FftPlanning planning, FftOutput output = FftOutput::separate);
+  BasicRealFft(std::size_t rows, std::size_t cols, FftPlanning planning, FftOutput output = FftOutput::separate);
   // The 2D (rows > 1) or 1D (rows = 1) transform with FftOutput::overwrite_input
   // over `workspace`, memory it does not own (FFTW-aligned, at least
   // workspace_size(rows, cols) values): the spectrum, then the real array.
   // For memory that is idle while this transform runs, such as another
   // transform's buffer; planning and every transform overwrite it. Throws
   // InputError if the workspace is too small.
-  RealFft(std::size_t rows, std::size_t cols, FftPlanning planning, std::span<std::complex<double>> workspace);
+  BasicRealFft(std::size_t rows, std::size_t cols, FftPlanning planning, std::span<std::complex<Real>> workspace);
   static std::size_t workspace_size(std::size_t rows, std::size_t cols) {
     return rows * (cols / 2 + 1) + (rows * cols + 1) / 2;
   }
-  ~RealFft();
-  RealFft(RealFft&& other) noexcept;
-  RealFft& operator=(RealFft&& other) noexcept;
-  RealFft(const RealFft&) = delete;
-  RealFft& operator=(const RealFft&) = delete;
+  ~BasicRealFft();
+  BasicRealFft(BasicRealFft&& other) noexcept;
+  BasicRealFft& operator=(BasicRealFft&& other) noexcept;
+  BasicRealFft(const BasicRealFft&) = delete;
+  BasicRealFft& operator=(const BasicRealFft&) = delete;
 
   std::size_t rows() const { return rows_; }
   std::size_t cols() const { return cols_; }
@@ -61,11 +79,11 @@ class RealFft {
   // is only made on the first call of input(), output(), forward() or
   // backward(): users that only transform their own arrays (forward_from,
   // backward_into) never hold it.
-  std::span<double> input() { return {real_input(), real_size()}; }
+  std::span<Real> input() { return {real_input(), real_size()}; }
   // Written by forward(), read (and destroyed) by backward(); (rows, cols/2 + 1).
-  std::span<std::complex<double>> spectrum() { return {spectrum_, spectrum_size()}; }
+  std::span<std::complex<Real>> spectrum() { return {spectrum_, spectrum_size()}; }
   // Written by backward(); the input buffer itself with FftOutput::overwrite_input.
-  std::span<double> output() {
+  std::span<Real> output() {
     real_input();
     return {output_, real_size()};
   }
@@ -80,23 +98,23 @@ class RealFft {
   // length is real_size() and its alignment is that of the planned buffers;
   // otherwise they do nothing and return false, and the caller copies.
   // `values` must not overlap spectrum().
-  bool forward_from(std::span<const double> values);
-  bool backward_into(std::span<double> values);
+  bool forward_from(std::span<const Real> values);
+  bool backward_into(std::span<Real> values);
 
  private:
   void make_plans(int rank, const int* dims, FftPlanning planning, FftOutput output,
-                  std::complex<double>* workspace = nullptr);
+                  std::complex<Real>* workspace = nullptr);
   void release() noexcept;
   // input_, made (zeroed, FFTW-aligned) if it was left to first use.
-  double* real_input();
+  Real* real_input();
 
   std::size_t rows_ = 0;
   std::size_t cols_ = 0;
-  double* input_ = nullptr;
-  std::complex<double>* spectrum_ = nullptr;
-  double* output_ = nullptr;
-  fftw_plan_s* forward_plan_ = nullptr;
-  fftw_plan_s* backward_plan_ = nullptr;
+  Real* input_ = nullptr;
+  std::complex<Real>* spectrum_ = nullptr;
+  Real* output_ = nullptr;
+  typename FftwPlanOf<Real>::type forward_plan_ = nullptr;
+  typename FftwPlanOf<Real>::type backward_plan_ = nullptr;
   bool owns_buffers_ = true;
   bool lazy_input_ = false;  // overwrite_input, own buffers: input_ made on first use
   // fftw_alignment_of the planned real arrays: new-array execution needs the same.
@@ -104,10 +122,16 @@ class RealFft {
   int output_alignment_ = 0;
 };
 
+using RealFft = BasicRealFft<double>;
+using SingleRealFft = BasicRealFft<float>;
+extern template class BasicRealFft<double>;
+extern template class BasicRealFft<float>;
+
 }  // namespace halfspace::fft
 
 // The library and its front ends name these without the folder's namespace.
 namespace halfspace {
 using fft::FftOutput;
 using fft::RealFft;
+using fft::SingleRealFft;
 }  // namespace halfspace

@@ -38,6 +38,14 @@ class NormalKernel {
   // The same over `cells` (a transform's 1/N folded in), rounded as the
   // Fourier preconditioner has always formed it.
   double inverse_symbol(double q, double cells) const;
+  // On the spectrum of the grid's own transform ((ny, nx/2 + 1), one row in
+  // 1D), FFTW's 1/N folded in: symbol(q) / N, 0 at q = 0 (K on a periodic
+  // grid); and inverse_symbol(q, N), the mean mode given the smallest
+  // non-zero wavenumber's value so that it stays positive definite (the
+  // Fourier preconditioner, an approximate K^-1 on any grid). The serial
+  // operators of either precision multiply by these.
+  EvenSymbol periodic_symbol() const;
+  EvenSymbol preconditioner_symbol() const;
   // K_ii (m/Pa), the displacement of a cell under unit pressure on itself.
   // Periodic: the inverse DFT at offset 0, (1/N) sum of symbol() over the
   // whole spectrum. Free: free_quadrant's coefficient at offset 0; where a

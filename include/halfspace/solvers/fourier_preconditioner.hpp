@@ -29,9 +29,17 @@ class FourierPreconditioner final : public Preconditioner {
   // buffers serves both. Nothing sharing it may run while apply() does.
   // Throws InputError if the transform's shape is not the grid's.
   FourierPreconditioner(const Grid& grid, const HalfSpace& half_space, std::shared_ptr<RealFft> transform);
+  // The same through a single-precision transform (a mixed-precision
+  // solve, solver_options.hpp's Precision): M^-1 need only approximate
+  // K^-1, so rounding it to float costs no accuracy of the solution.
+  FourierPreconditioner(const Grid& grid, const HalfSpace& half_space, std::shared_ptr<SingleRealFft> transform);
   ~FourierPreconditioner() override;
 
   void apply(std::span<const double> in, std::span<double> out) override;
+  // The same on single-precision arrays (mixed precision's work vectors),
+  // through the single-precision transform it was made with. Throws
+  // std::logic_error if it was made with a double one.
+  void apply(std::span<const float> in, std::span<float> out);
 
  private:
   struct Impl;

@@ -16,6 +16,7 @@
 #include "halfspace/operators/influence_operator.hpp"
 #include "halfspace/operators/tangential_operator.hpp"
 #include "halfspace/solvers/preconditioner.hpp"
+#include "halfspace/solvers/single_precision_products.hpp"
 
 namespace halfspace::solvers {
 
@@ -29,6 +30,13 @@ struct SolverOptions;
 struct ElasticOperators {
   std::unique_ptr<InfluenceOperator> op;
   std::unique_ptr<Preconditioner> fourier;  // null unless asked for
+  // Mixed precision: K in single precision for the step's products (null
+  // where they stay double); it acts on op's fields and may share its
+  // buffers, so the two never run at once.
+  std::unique_ptr<InfluenceOperator> inner;
+  // Mixed precision where this layout has them: inner's K and fourier's
+  // M^-1 on single-precision vectors (they reference the two above).
+  SinglePrecisionProducts single;
 };
 
 // This process's rows of a grid: [first, first + count).
@@ -52,6 +60,13 @@ class Layout {
   // frictional solve. Collective; throws as the operator does.
   virtual std::unique_ptr<TangentialOperator> make_tangential_operator(const Grid& grid, const ElasticPair& pair,
                                                                        FftPlanning planning) const = 0;
+  // The same for a mixed-precision solve (solver_options.hpp's Precision):
+  // the operator in double, and where this layout can, the Fourier
+  // preconditioner and `inner` in single precision. This default (a layout
+  // that solves in double only) throws SolverOptionError naming the option
+  // "precision".
+  virtual ElasticOperators make_mixed_operators(const Grid& grid, const HalfSpace& half_space, bool fourier,
+                                                FftPlanning planning) const;
   // The rows of `grid` this process holds (a 1D grid: its one row).
   virtual RowSlab rows(const Grid& grid) const = 0;
   // The processes a field is spread over.

@@ -47,6 +47,24 @@
 //    when it changes.
 // docs/solvers.md says what each form costs and saves.
 //
+// Mixed precision. Given an `inner` operator (K in single precision,
+// single_precision_fft_operator.hpp), the step's images K t and the
+// projection's corrections K c come from it; given SinglePrecisionProducts
+// instead, the direction, its image and the correction are themselves
+// single-precision vectors (half the bytes stored and moved per pass),
+// while the pressure, displacement and gap stay double. Either way the displacement K p is
+// recomputed with the exact operator every 50 updates, whenever the
+// residual has fallen 100-fold since the last exact product, and before
+// the residual may stop the iteration; the independent check uses the
+// exact operator too. The residual, the contact set and "converged" are so
+// judged in double: iterative refinement, the inner corrections in single
+// precision (Higham 2002, Accuracy and Stability of Numerical Algorithms,
+// ch. 12), in the manner of inexact Krylov methods, whose products may be
+// as inexact as the step is small against the residual (Simoncini & Szyld
+// 2003, SIAM J. Sci. Comput. 25, 454). A tolerance the inner products
+// cannot resolve costs iterations, or ends in a reported iteration limit,
+// never in a false "converged".
+//
 // Hardness cap. With PressureBounds' upper bound H (interface_law.hpp) the
 // problem is the bound-constrained one, 0 <= p <= H, whose conditions at a
 // cell at the cap are g <= 0: the rigid surface penetrates the elastic one
@@ -74,6 +92,7 @@
 #include "halfspace/solvers/contact_solver.hpp"
 #include "halfspace/solvers/preconditioner.hpp"
 #include "halfspace/solvers/pressure_bounds.hpp"
+#include "halfspace/solvers/single_precision_products.hpp"
 
 namespace halfspace::solvers {
 
@@ -100,9 +119,15 @@ class PolonskyKeer final : public ContactSolver {
   // Keeps a reference to `op` (which must outlive the solver) and allocates
   // the workspace once; solve() then allocates nothing inside its loop.
   // `preconditioner`, if given, must outlive the solver too; it needs the
-  // projected form (InputError otherwise).
+  // projected form (InputError otherwise). `inner`, if given, takes the
+  // step's products (see "Mixed precision" above), acts on op's fields and
+  // must outlive the solver too.
+  // `single`, if given, takes the step's products on single-precision work
+  // vectors (and then M^-1 too, for which it needs its precondition when a
+  // preconditioner is given: InputError otherwise); `inner` is then unused.
   explicit PolonskyKeer(InfluenceOperator& op, PolonskyKeerOptions options = {},
-                        Preconditioner* preconditioner = nullptr);
+                        Preconditioner* preconditioner = nullptr, InfluenceOperator* inner = nullptr,
+                        SinglePrecisionProducts single = {});
 
   std::string_view name() const override { return name_; }
 
@@ -113,11 +138,9 @@ class PolonskyKeer final : public ContactSolver {
 
   // Workspace field 0 or 1 (one entry per cell): free between solves, so
   // that a phase run before solve_from (active_set_start.hpp) needs no
-  // fields of its own for them.
-  std::span<double> workspace(int which) {
-    Eigen::ArrayXd& field = which == 0 ? direction_ : image_;
-    return {field.data(), static_cast<std::size_t>(field.size())};
-  }
+  // fields of its own for them. With single-precision work vectors they
+  // are made (in double) on the first call.
+  std::span<double> workspace(int which);
 
  private:
   // The iteration from `pressure`: a warm start if `warm`, else any values
@@ -125,14 +148,19 @@ class PolonskyKeer final : public ContactSolver {
   SolveResult run(std::span<const double> initial_gap, const Loading& loading, Eigen::ArrayXd pressure, bool warm);
 
   InfluenceOperator& op_;
+  InfluenceOperator& inner_;  // the step's products: op_ unless given
   PolonskyKeerOptions options_;
   Preconditioner* preconditioner_;
   std::string name_;
+  SinglePrecisionProducts single_;
   // Workspace, one entry per cell: the conjugate direction t, and the
   // preconditioned gap z, then its image K t, then the step's correction
-  // c (each needed only until the next is made).
+  // c, then K c (each needed only until the next is made); in double, or
+  // in single precision with single_.
   Eigen::ArrayXd direction_;
   Eigen::ArrayXd image_;
+  Eigen::ArrayXf single_direction_;
+  Eigen::ArrayXf single_image_;
   // ptp(K 1), the displacement range of a unit uniform pressure (the gap
   // scale's floor); negative until the first solve computes it.
   double uniform_response_range_ = -1.0;

@@ -42,6 +42,25 @@ std::vector<SolverType> solver_types();
 // so that fft_planning and deflation concern it.
 bool uses_fft(SolverType type);
 
+// The arithmetic of the Polonsky-Keer solvers (docs/solvers.md, "Mixed
+// precision").
+enum class Precision {
+  double_precision,  // every transform and field in double
+  // The step's products K t and K c (periodic grids) and the Fourier
+  // preconditioner through single-precision transforms; the displacement
+  // K p refreshed in double (iterative refinement), the residual, the
+  // contact decisions and the independent convergence check in double
+  // (polonsky_keer.hpp, "Mixed precision"), so the requested tolerance is
+  // met in double or the solve says it was not.
+  mixed,
+};
+
+// "double", "mixed".
+std::string_view to_string(Precision precision);
+// The inverse of to_string(Precision); throws SolverOptionError naming the
+// option "precision", the value and the allowed names otherwise.
+Precision parse_precision(std::string_view name);
+
 // A broken rule of SolverOptions: an OptionError whose option() is the
 // option as SolverOptions spells it ("tolerance", "deflation.block", ...).
 class SolverOptionError : public OptionError {
@@ -112,6 +131,11 @@ struct SolverOptions {
   // grid size (FFTW's wisdom keeps it) and buys faster transforms on large
   // grids (docs/solvers.md).
   FftPlanning fft_planning = FftPlanning::measure;
+  // The arithmetic of the Polonsky-Keer solvers; mixed is refused by the
+  // dense solvers, the adhesive solver and solves on several processes.
+  // The default was chosen by measurement (docs/performance.md, "Mixed
+  // precision").
+  Precision precision = Precision::double_precision;
   // Called once per iteration of the fine solve with (iteration, residual);
   // may be empty. It runs on the calling thread between iterations; its
   // IterationDecision::stop ends the solve with status `stopped`.
@@ -147,7 +171,8 @@ struct SolverOptions {
   // valid; deflation is on only for pk_fourier or pk_multilevel; a hardness
   // is in its range and not asked of lemke; with adhesion, the law is valid
   // ("adhesion.work", "adhesion.range"), its tolerance in (0, 1) and
-  // deflation not on.
+  // deflation not on; precision mixed only with the Polonsky-Keer solvers
+  // and without adhesion.
   void validate() const;
   // validate(), and the rules that depend on the grid: deflation on needs a
   // grid its block covers.

@@ -1,0 +1,258 @@
+// Mixed precision (SolverOptions::precision): the step's products and the
+// preconditioner in single precision; the displacement refreshed in double,
+// the residual, contact decisions and the convergence check in double. The
+// mixed solve must give the double solve's pressure within 10x the
+// tolerance (issue 31) on periodic and free rough surfaces, its contact
+// conditions must hold by a product of the pressure it returns taken here,
+// apart from the solver's own fields; a tolerance single precision alone
+// cannot reach must still be reached (or reported as not), and the inner
+// products must really be single precision (else the option would be a
+// no-op this suite could not tell from the real thing).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "halfspace/error.hpp"
+#include "halfspace/fft/grid_transform.hpp"
+#include "halfspace/operators/fft_influence_operator.hpp"
+#include "halfspace/operators/single_precision_fft_operator.hpp"
+#include "halfspace/solvers/layout.hpp"
+#include "halfspace/solvers/solver_factory.hpp"
+#include "halfspace/solvers/solver_options.hpp"
+#include "support/pk_solvers.hpp"
+#include "support/rough_gap.hpp"
+
+namespace halfspace::solvers {
+namespace {
+
+using testing::self_affine_gap;
+
+constexpr double kEStar = 1.0;
+
+SolverOptions options_for(SolverType type, double tolerance, Precision precision) {
+  SolverOptions options = testing::test_options(type, tolerance);
+  options.precision = precision;
+  return options;
+}
+
+struct Pair {
+  SolveResult exact;
+  SolveResult mixed;
+};
+
+Pair solve_both(const Grid& grid, const Eigen::ArrayXd& gap, const Loading& loading, SolverType type,
+                double tolerance) {
+  Pair pair;
+  pair.exact = make_solver(grid, kEStar, options_for(type, tolerance, Precision::double_precision))
+                   ->solve({gap.data(), grid.size()}, loading);
+  pair.mixed = make_solver(grid, kEStar, options_for(type, tolerance, Precision::mixed))
+                   ->solve({gap.data(), grid.size()}, loading);
+  return pair;
+}
+
+// max |p_mixed - p_double| / max p_double.
+double pressure_difference(const Pair& pair) {
+  return (pair.mixed.pressure - pair.exact.pressure).abs().maxCoeff() / pair.exact.max_pressure;
+}
+
+// The contact conditions of `result`'s pressure and approach, from a gap
+// computed here with a double-precision operator of its own: p >= 0, the
+// gap within `gap_tolerance` of 0 where p > 0 and not below -gap_tolerance
+// elsewhere.
+void expect_conditions_hold(const Grid& grid, const Eigen::ArrayXd& initial_gap, const SolveResult& result,
+                            double gap_tolerance) {
+  FftInfluenceOperator op(grid, kEStar);
+  Eigen::ArrayXd displacement(static_cast<Eigen::Index>(grid.size()));
+  op.apply({result.pressure.data(), grid.size()}, {displacement.data(), grid.size()});
+  const Eigen::ArrayXd gap = initial_gap + displacement - result.approach;
+  double open_in_contact = 0.0;
+  double overlap = 0.0;
+  for (Eigen::Index i = 0; i < gap.size(); ++i) {
+    ASSERT_GE(result.pressure[i], 0.0) << i;
+    if (result.pressure[i] > 0.0) open_in_contact = std::max(open_in_contact, std::abs(gap[i]));
+    overlap = std::max(overlap, -gap[i]);
+  }
+  EXPECT_LE(open_in_contact, gap_tolerance);
+  EXPECT_LE(overlap, gap_tolerance);
+}
+
+TEST(MixedPrecisionTest, GivesTheDoublePressureWithinTenTimesTheTolerance) {
+  constexpr double kTolerance = 1e-10;
+  for (const Boundary boundary : {Boundary::periodic, Boundary::free}) {
+    const Grid grid = Grid::plane(128, 128, 1.0, 1.0, boundary);
+    const Eigen::ArrayXd gap = self_affine_gap(grid, 11);
+    const double gap_range = gap.maxCoeff() - gap.minCoeff();
+    for (const SolverType type : {SolverType::pk_fourier, SolverType::pk_multilevel, SolverType::pk}) {
+      const Pair pair = solve_both(grid, gap, Loading::mean_pressure(0.004), type, kTolerance);
+      ASSERT_TRUE(pair.exact.converged()) << pair.exact.message;
+      ASSERT_TRUE(pair.mixed.converged()) << pair.mixed.message;
+      EXPECT_LE(pair.mixed.residual, kTolerance);
+      expect_conditions_hold(grid, gap, pair.mixed, 1e-8 * gap_range);
+      const double difference = pressure_difference(pair);
+      std::printf("%s %s: double %d iterations, mixed %d; max |dp| / max p = %.1e\n",
+                  std::string(to_string(boundary)).c_str(), std::string(to_string(type)).c_str(), pair.exact.iterations,
+                  pair.mixed.iterations, difference);
+      EXPECT_LE(difference, 10.0 * kTolerance) << to_string(boundary) << ' ' << to_string(type);
+      EXPECT_NEAR(pair.mixed.total_force, pair.exact.total_force, 1e-12 * pair.exact.total_force);
+    }
+  }
+}
+
+// With the block-deflation coarse correction (which works in double, so the
+// work vectors stay double and the inner products single).
+TEST(MixedPrecisionTest, GivesTheDoublePressureWithBlockDeflation) {
+  constexpr double kTolerance = 1e-10;
+  for (const Boundary boundary : {Boundary::periodic, Boundary::free}) {
+    const Grid grid = Grid::plane(256, 256, 1.0, 1.0, boundary);
+    const Eigen::ArrayXd gap = self_affine_gap(grid, 3);
+    // pk-multilevel's fine solve, started from the coarse grids, settles
+    // slowly enough for the correction to join.
+    SolverOptions exact = options_for(SolverType::pk_multilevel, kTolerance, Precision::double_precision);
+    exact.deflation.mode = DeflationOptions::Mode::on;
+    exact.deflation.block = 32;
+    SolverOptions mixed = exact;
+    mixed.precision = Precision::mixed;
+    const Loading loading = Loading::mean_pressure(0.004);
+    const Pair pair{make_solver(grid, kEStar, exact)->solve({gap.data(), grid.size()}, loading),
+                    make_solver(grid, kEStar, mixed)->solve({gap.data(), grid.size()}, loading)};
+    ASSERT_TRUE(pair.exact.converged()) << pair.exact.message;
+    ASSERT_TRUE(pair.mixed.converged()) << pair.mixed.message;
+    ASSERT_GT(pair.mixed.deflation.deflated_iterations, 0) << "the correction must join for this test to mean anything";
+    expect_conditions_hold(grid, gap, pair.mixed, 1e-8 * (gap.maxCoeff() - gap.minCoeff()));
+    EXPECT_LE(pressure_difference(pair), 10.0 * kTolerance) << to_string(boundary);
+  }
+}
+
+// Displacement control too: the approach is given, the load follows.
+TEST(MixedPrecisionTest, GivesTheDoublePressureUnderDisplacementControl) {
+  constexpr double kTolerance = 1e-10;
+  const Grid grid = Grid::plane(96, 96, 1.0, 1.0, Boundary::periodic);
+  const Eigen::ArrayXd gap = self_affine_gap(grid, 7);
+  const double approach = gap.minCoeff() + 0.05 * (gap.maxCoeff() - gap.minCoeff());
+  const Pair pair = solve_both(grid, gap, Loading::approach(approach), SolverType::pk_fourier, kTolerance);
+  ASSERT_TRUE(pair.exact.converged()) << pair.exact.message;
+  ASSERT_TRUE(pair.mixed.converged()) << pair.mixed.message;
+  expect_conditions_hold(grid, gap, pair.mixed, 1e-8 * (gap.maxCoeff() - gap.minCoeff()));
+  EXPECT_LE(pressure_difference(pair), 10.0 * kTolerance);
+}
+
+// 1e-13 lies far below what single-precision products resolve (float's
+// epsilon is 6e-8): a solve run wholly in float would stall near 1e-7. The
+// double products carry the mixed solve there, or it reports that they did
+// not; "converged" must hold in double either way.
+TEST(MixedPrecisionTest, ReachesAToleranceBeyondSinglePrecisionThroughTheDoubleProducts) {
+  constexpr double kTolerance = 1e-13;
+  for (const Boundary boundary : {Boundary::periodic, Boundary::free}) {
+    const Grid grid = Grid::plane(64, 64, 1.0, 1.0, boundary);
+    const Eigen::ArrayXd gap = self_affine_gap(grid, 5);
+    const Pair pair = solve_both(grid, gap, Loading::mean_pressure(0.006), SolverType::pk_fourier, kTolerance);
+    ASSERT_TRUE(pair.exact.converged()) << pair.exact.message;
+    ASSERT_TRUE(pair.mixed.converged()) << pair.mixed.message;
+    EXPECT_LE(pair.mixed.residual, kTolerance);
+    expect_conditions_hold(grid, gap, pair.mixed, 1e-10 * (gap.maxCoeff() - gap.minCoeff()));
+    EXPECT_LE(pressure_difference(pair), 10.0 * kTolerance) << to_string(boundary);
+  }
+}
+
+// A limit too small to get there: reported as the iteration limit, never as
+// converged.
+TEST(MixedPrecisionTest, ReportsNonConvergenceInsteadOfHidingIt) {
+  const Grid grid = Grid::plane(64, 64, 1.0, 1.0, Boundary::periodic);
+  const Eigen::ArrayXd gap = self_affine_gap(grid, 5);
+  SolverOptions options = options_for(SolverType::pk_fourier, 1e-13, Precision::mixed);
+  options.max_iterations = 3;
+  const SolveResult result =
+      make_solver(grid, kEStar, options)->solve({gap.data(), grid.size()}, Loading::mean_pressure(0.006));
+  EXPECT_FALSE(result.converged());
+  EXPECT_EQ(result.status, SolveStatus::iteration_limit);
+  EXPECT_GT(result.residual, 1e-13);
+}
+
+// The inner product is K in single precision: off the double product by
+// float rounding (neither exact, which would make the option a no-op, nor
+// wrong by more than the transform's rounding).
+TEST(MixedPrecisionTest, InnerProductIsSinglePrecision) {
+  const Grid grid = Grid::plane(64, 48, 1.0, 1.0, Boundary::periodic);
+  const Eigen::ArrayXd pressure = self_affine_gap(grid, 3) + 1.0;
+  auto transform = make_grid_transform(grid, FftPlanning::estimate);
+  FftInfluenceOperator exact(grid, kEStar, transform);
+  SinglePrecisionFftOperator single(grid, kEStar,
+                                    make_single_grid_transform(grid, FftPlanning::estimate, transform->spectrum()));
+  Eigen::ArrayXd u_exact(static_cast<Eigen::Index>(grid.size()));
+  Eigen::ArrayXd u_single(static_cast<Eigen::Index>(grid.size()));
+  exact.apply({pressure.data(), grid.size()}, {u_exact.data(), grid.size()});
+  single.apply({pressure.data(), grid.size()}, {u_single.data(), grid.size()});
+  const double error = (u_single - u_exact).abs().maxCoeff() / u_exact.abs().maxCoeff();
+  EXPECT_GT(error, 1e-12) << "the product is not single precision";
+  EXPECT_LT(error, 1e-5);
+  EXPECT_DOUBLE_EQ(single.self_influence(), exact.self_influence());
+  // Free grids need the padded transform: refused with a message.
+  const Grid free = Grid::plane(64, 48, 1.0, 1.0, Boundary::free);
+  EXPECT_THROW(SinglePrecisionFftOperator(
+                   free, kEStar, make_single_grid_transform(free, FftPlanning::estimate, transform->spectrum())),
+               InputError);
+}
+
+// The option named in every refusal: an unknown value, the dense solvers,
+// adhesion, and a layout without single-precision operators (a solve on
+// several processes, tests/mpi for the program).
+void expect_refused(const std::function<void()>& action, const std::string& wanted) {
+  try {
+    action();
+    ADD_FAILURE() << "no error; wanted " << wanted;
+  } catch (const SolverOptionError& error) {
+    EXPECT_EQ(error.option(), "precision");
+    EXPECT_NE(std::string(error.what()).find(wanted), std::string::npos) << error.what();
+  }
+}
+
+// The serial operators in double only, as a layout that has no
+// single-precision ones.
+class DoubleOnlyLayout final : public Layout {
+ public:
+  ElasticOperators make_operators(const Grid& grid, const HalfSpace& half_space, bool fourier,
+                                  FftPlanning planning) const override {
+    return serial_layout().make_operators(grid, half_space, fourier, planning);
+  }
+  std::unique_ptr<TangentialOperator> make_tangential_operator(const Grid& grid, const ElasticPair& pair,
+                                                               FftPlanning planning) const override {
+    return serial_layout().make_tangential_operator(grid, pair, planning);
+  }
+  RowSlab rows(const Grid& grid) const override { return serial_layout().rows(grid); }
+  const linalg::Communicator& communicator() const override { return serial_layout().communicator(); }
+};
+
+TEST(MixedPrecisionTest, OptionIsParsedAndRefusedWhereItDoesNotApply) {
+  EXPECT_EQ(parse_precision("double"), Precision::double_precision);
+  EXPECT_EQ(parse_precision("mixed"), Precision::mixed);
+  EXPECT_EQ(to_string(Precision::mixed), "mixed");
+  EXPECT_EQ(to_string(Precision::double_precision), "double");
+  expect_refused([] { parse_precision("half"); }, "one of double, mixed");
+  for (const SolverType dense : {SolverType::lemke, SolverType::lcpquad}) {
+    SolverOptions options;
+    options.type = dense;
+    options.precision = Precision::mixed;
+    expect_refused([&] { options.validate(); }, "dense path");
+  }
+  SolverOptions adhesive;
+  adhesive.precision = Precision::mixed;
+  adhesive.adhesion = SolverOptions::Adhesion{AdhesionLaw::maugis_dugdale(0.05, 1e-6), 1e-6, true};
+  expect_refused([&] { adhesive.validate(); }, "adhesive solver");
+  SolverOptions fine;
+  fine.precision = Precision::mixed;
+  EXPECT_NO_THROW(fine.validate());
+  const Grid grid = Grid::plane(32, 32, 1.0, 1.0, Boundary::periodic);
+  const DoubleOnlyLayout double_only;
+  for (const SolverType type : {SolverType::pk, SolverType::pk_fourier, SolverType::pk_multilevel}) {
+    expect_refused([&] { make_solver(grid, kEStar, options_for(type, 1e-8, Precision::mixed), double_only); },
+                   "more than one process");
+  }
+}
+
+}  // namespace
+}  // namespace halfspace::solvers
