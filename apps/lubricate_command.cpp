@@ -342,11 +342,6 @@ int run_elastic(const LubricateOptions& o, const HeightMap& map, const lubricati
   if (o.couette_scheme) options.couette_scheme = lubrication::parse_couette_scheme(*o.couette_scheme);
   options.validate();
   const lubrication::ShearLimits limits = shear_limits(o);
-  if (grid.size() > lubrication::kMaxElasticFilmNodes) {
-    throw InputError(
-        fmt::format("{} has {} points: the elastic film's dense Newton path allows at most {} (coarsen the height map)",
-                    *o.height_map, grid.size(), lubrication::kMaxElasticFilmNodes));
-  }
   const Eigen::ArrayXd gap = map.heights.maxCoeff() - map.heights;
   FftInfluenceOperator op = coating ? FftInfluenceOperator(grid, *coating) : FftInfluenceOperator(grid, e_star);
   const lubrication::ElasticFilm film = lubrication::solve_elastic_film(op, gap, conditions, laws, options);

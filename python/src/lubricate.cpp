@@ -200,11 +200,6 @@ nb::dict solve_elastic(const Grid& grid, const Eigen::ArrayXd& heights, const Fl
     options.validate();
     k.limits.validate();
   });
-  if (grid.size() > kMaxElasticFilmNodes) {
-    throw InputError(
-        fmt::format("the surface has {} points: the elastic film's dense Newton path allows at most {} (coarsen it)",
-                    grid.size(), kMaxElasticFilmNodes));
-  }
   const Eigen::ArrayXd gap = heights.maxCoeff() - heights;
   ElasticFilm film = with_keywords([&] {
     nb::gil_scoped_release release;

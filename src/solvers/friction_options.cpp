@@ -86,7 +86,7 @@ void FrictionOptions::validate() const {
   }
 }
 
-void FrictionOptions::validate(const Grid& grid, const ElasticPair& pair, const SolverOptions& normal,
+void FrictionOptions::validate(const Grid& grid, const ElasticPair& /*pair*/, const SolverOptions& normal,
                                const Loading& loading) const {
   validate();
   if (normal.adhesion) {
