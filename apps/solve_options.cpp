@@ -10,6 +10,8 @@
 #include <cctype>
 #include <span>
 
+#include "value_parsing.hpp"
+
 namespace halfspace::app {
 namespace {
 
@@ -27,7 +29,7 @@ constexpr std::string_view kSolver = "Solver";
 constexpr std::string_view kOutput = "Output";
 constexpr std::string_view kStress = "Subsurface stresses (single solves)";
 constexpr std::string_view kFriction =
-    "Friction (Coulomb; needs E1, nu1, E2, nu2 of elastically similar bodies; one normal load)";
+    "Friction (Coulomb; needs E1, nu1, E2, nu2, dissimilar bodies solved coupled; one normal load)";
 constexpr std::string_view kAdhesion = "Adhesion (a cohesive law beside the hard wall; --approach may be negative)";
 
 const std::array kOptions{
@@ -138,15 +140,15 @@ const std::array kOptions{
     SolveOption{"friction", &SolveOptions::friction, Kind::number, kFriction, "MU",
                 "Coulomb friction coefficient mu (>= 0): solve the shear tractions, stick and slip under "
                 "--tangential-force, --tangential-displacement or --sliding"},
-    SolveOption{"tangential-force", &SolveOptions::tangential_force, Kind::text, kFriction, "QX[,QY][;...]",
+    SolveOption{"tangential-force", &SolveOptions::tangential_force_text, Kind::text, kFriction, "QX[,QY][;...]",
                 "tangential force that body 1 exerts on body 2: N (2D) or N/m (1D, x only); several steps "
                 "separated by ';' (quote them), or START:STOP:COUNT evenly spaced (each end QX or QX,QY), make a "
                 "history applied in order, each step from the previous state"},
-    SolveOption{"tangential-displacement", &SolveOptions::tangential_displacement, Kind::text, kFriction,
+    SolveOption{"tangential-displacement", &SolveOptions::tangential_displacement_text, Kind::text, kFriction,
                 "DX[,DY][;...]",
                 "tangential rigid-body displacement of body 1 against body 2 (m); steps and ranges as "
                 "--tangential-force"},
-    SolveOption{"sliding", &SolveOptions::sliding, Kind::text, kFriction, "X,Y",
+    SolveOption{"sliding", &SolveOptions::sliding, Kind::numbers, kFriction, "X,Y",
                 "gross sliding along the direction (X, Y): every contact cell at |q| = mu p, total force mu P"},
     SolveOption{"tangential-tol", &SolveOptions::tangential_tol, Kind::number, kFriction, "X",
                 "tolerance of the tangential solver's residual (the duality gap of Coulomb's law) [1e-6]"},
@@ -202,6 +204,15 @@ void merge_config_file(SolveOptions& options) {
 ProblemOptions problem_options(const SolveOptions& options) {
   ProblemOptions problem = options;
   if (problem.adhesion) problem.adhesion_tol = problem.tol;
+  if (options.tangential_force_text) {
+    problem.tangential_force =
+        parse_tangential_steps(*options.tangential_force_text, options.describe("tangential-force"));
+  }
+  if (options.tangential_displacement_text) {
+    problem.tangential_displacement =
+        parse_tangential_steps(*options.tangential_displacement_text, options.describe("tangential-displacement"));
+  }
+  if (options.no_coupling) problem.coupling = "off";
   return problem;
 }
 
@@ -211,6 +222,7 @@ namespace {
 // for '_' ("E-star" for "e_star").
 std::string_view flag(std::string_view option) {
   if (option == "adhesion_tol") return "tol";
+  if (option == "coupling") return "no-coupling";
   for (const SolveOption& spec : kOptions) {
     const bool same = std::ranges::equal(spec.key, option, [](char a, char b) {
       return std::tolower(static_cast<unsigned char>(a)) ==
@@ -229,7 +241,10 @@ std::string FlagSpelling::name(std::string_view option) const {
 
 std::string FlagSpelling::describe(std::string_view option, std::string_view value) const {
   const std::string_view key = flag(option);
-  return options_.given(key) ? options_.describe(key) : fmt::format("--{} {}", key, value);
+  if (!options_.given(key)) return fmt::format("--{} {}", key, value);
+  std::string given = options_.describe(key);
+  if (given.ends_with(' ')) given.pop_back();  // a flag, which has no value
+  return given;
 }
 
 }  // namespace halfspace::app

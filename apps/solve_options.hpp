@@ -44,17 +44,13 @@ struct SolveOptions : GivenOptions, ProblemOptions {
   // Subsurface stresses written into the result (docs/usage.md#stress).
   std::optional<std::string> stress_depths;  // "z1,z2,..." or "START:STOP:COUNT" (m), as written
   std::optional<double> stress_nu;
-  // Friction (docs/usage.md#friction): Coulomb's coefficient and the
-  // tangential load steps ("QX[,QY];..." or ranges, as written) or a sliding
-  // direction "X,Y".
-  std::optional<double> friction;
-  std::optional<std::string> tangential_force;
-  std::optional<std::string> tangential_displacement;
-  std::optional<std::string> sliding;
-  std::optional<double> tangential_tol;
-  std::optional<long long> tangential_max_iter;
-  bool no_coupling = false;                    // dissimilar bodies: ignore the normal-tangential coupling
-  std::optional<long long> normal_load_steps;  // coupled: increments of the normal loading
+  // Friction's tangential load steps as written ("QX[,QY];..." or ranges,
+  // parsed into ProblemOptions' tangential_force and tangential_displacement
+  // by problem_options), and --no-coupling (ProblemOptions' coupling "off");
+  // mu, --sliding and the rest are ProblemOptions' (docs/usage.md#friction).
+  std::optional<std::string> tangential_force_text;
+  std::optional<std::string> tangential_displacement_text;
+  bool no_coupling = false;
   // Output.
   std::optional<std::string> output;
   bool quiet = false;
@@ -77,7 +73,9 @@ SolveOptions solve_options_from_command_line(const CLI::App& solve, const std::v
 void merge_config_file(SolveOptions& options);
 
 // The problem as given: the ProblemOptions part of `options`, where --tol
-// is the adhesive solver's tolerance too.
+// is the adhesive solver's tolerance too, the tangential steps are parsed
+// (throws InputError naming the flag for their syntax) and --no-coupling is
+// coupling "off".
 ProblemOptions problem_options(const SolveOptions& options);
 
 // The program's spelling of the problem's options (problem.hpp): the flag or

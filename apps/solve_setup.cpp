@@ -434,10 +434,8 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
   fs::path output = output_from(options);
   const std::optional<MemoryLimit> limit = memory_limit(options.max_memory, options.describe("max-memory"));
   const StressRequest stress = stress_request_from(options, load_values.size(), coating.has_value());
-  // Friction (--friction with a tangential load): its flags and the
-  // combinations it refuses, before the surface is read.
-  const std::optional<solvers::FrictionOptions> friction =
-      friction_from(options, coating.has_value(), load_values.size());
+  // Friction (--friction with a tangential load), checked by make_problem.
+  const std::optional<solvers::FrictionOptions> friction = friction_from(options, problem);
   const std::size_t history_steps = friction ? friction->steps() : 0;
   const GridCheck check_grid = [&](const Grid& grid, const std::string& request) {
     problem.check_grid(grid, flags);
@@ -494,11 +492,8 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
       stress::check_depths(surface.grid, stress.depths);
     });
   }
-  std::optional<ElasticPair> pair;
-  if (friction) {
-    pair.emplace(ElasticBody{*options.e1, *options.nu1}, ElasticBody{*options.e2, *options.nu2});
-    check_friction(options, *friction, surface.grid, *pair, solver, problem.loading);
-  }
+  // Its rules on the grid are check_grid's (Problem::check_grid).
+  const std::optional<ElasticPair> pair = friction ? problem.pair : std::nullopt;
   const std::size_t first_row = surface.first_row;
   return SolveSetup{std::move(problem),
                     std::move(surface.grid),

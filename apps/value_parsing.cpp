@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <optional>
@@ -34,6 +35,31 @@ std::vector<std::string_view> split_dimensions(std::string_view text) {
     }
   }
   return parts;
+}
+
+// The parts of `text` between `separator`s (one part when there is none).
+std::vector<std::string_view> split(std::string_view text, char separator) {
+  std::vector<std::string_view> parts;
+  std::size_t start = 0;
+  for (std::size_t k = 0; k <= text.size(); ++k) {
+    if (k == text.size() || text[k] == separator) {
+      parts.push_back(text.substr(start, k - start));
+      start = k + 1;
+    }
+  }
+  return parts;
+}
+
+// One step "X" or "X,Y" of a tangential load.
+std::array<double, 2> parse_step(std::string_view text, std::string_view what) {
+  const std::vector<std::string_view> parts = split(text, ',');
+  if (parts.size() > 2) {
+    throw InputError(fmt::format(
+        "{} is invalid: step '{}' has more than two components; a step is X or X,Y, and the steps of a history are "
+        "separated by ';' (e.g. '0;0.5;1' along x, quoted for the shell)",
+        what, text));
+  }
+  return {parse_number(parts[0], what), parts.size() == 2 ? parse_number(parts[1], what) : 0.0};
 }
 
 bool is_shell_safe(char c) {
@@ -150,17 +176,6 @@ std::vector<double> parse_number_list(std::string_view text, std::string_view wh
     while (!part.empty() && part.back() == ' ') part.remove_suffix(1);
     return part;
   };
-  const auto split = [](std::string_view whole, char separator) {
-    std::vector<std::string_view> parts;
-    std::size_t start = 0;
-    for (std::size_t k = 0; k <= whole.size(); ++k) {
-      if (k == whole.size() || whole[k] == separator) {
-        parts.push_back(whole.substr(start, k - start));
-        start = k + 1;
-      }
-    }
-    return parts;
-  };
   const auto number = [&](std::string_view part) {
     const std::string_view value = trimmed(part);
     const std::string_view digits = without_plus(value);
@@ -207,6 +222,42 @@ std::vector<double> parse_number_list(std::string_view text, std::string_view wh
   values.front() = start;
   values.back() = stop;
   return values;
+}
+
+std::vector<std::array<double, 2>> parse_tangential_steps(std::string_view text, std::string_view what) {
+  std::vector<std::array<double, 2>> steps;
+  const auto add = [&](double x, double y) {
+    if (static_cast<long long>(steps.size()) >= kMaxListValues) {
+      throw InputError(fmt::format("{} is invalid: more than {} steps", what, kMaxListValues));
+    }
+    steps.push_back({x, y});
+  };
+  for (std::string_view part : split(text, ';')) {
+    if (part.empty())
+      throw InputError(fmt::format("{} is invalid: an empty step (two ';' in a row, or at an end)", what));
+    const std::vector<std::string_view> range = split(part, ':');
+    if (range.size() == 1) {
+      const auto [x, y] = parse_step(part, what);
+      add(x, y);
+      continue;
+    }
+    if (range.size() != 3) {
+      throw InputError(fmt::format("{} is invalid: '{}' is not a range START:STOP:COUNT", what, part));
+    }
+    const auto [x0, y0] = parse_step(range[0], what);
+    const auto [x1, y1] = parse_step(range[1], what);
+    const long long count = parse_integer(range[2], what);
+    if (count < 2 || count > kMaxListValues) {
+      throw InputError(
+          fmt::format("{} is invalid: the COUNT of range '{}' must be 2 to {}", what, part, kMaxListValues));
+    }
+    for (long long k = 0; k < count; ++k) {
+      const double t = static_cast<double>(k) / static_cast<double>(count - 1);
+      // The ends exactly, the steps between evenly spaced.
+      add(k + 1 == count ? x1 : x0 + t * (x1 - x0), k + 1 == count ? y1 : y0 + t * (y1 - y0));
+    }
+  }
+  return steps;
 }
 
 std::string join_command_line(const std::vector<std::string>& arguments) {

@@ -1,7 +1,9 @@
-// Strict parsers for command-line values (numbers, grid shapes, domain sizes)
-// and shell quoting of the command line recorded in output files.
+// Strict parsers for command-line values (numbers, grid shapes, domain sizes,
+// tangential load steps) and shell quoting of the command line recorded in
+// output files.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <string>
 #include <string_view>
@@ -43,6 +45,13 @@ inline constexpr long long kMaxListValues = 10000;
 // otherwise. A single number fails exactly as parse_number does. Throws
 // InputError naming `what` and the offending part.
 std::vector<double> parse_number_list(std::string_view text, std::string_view what);
+
+// Tangential load steps as written: steps separated by ';', each "X" or
+// "X,Y" (y = 0 when omitted), or a range "START:STOP:COUNT" of COUNT >= 2
+// evenly spaced steps from START to STOP, both included, whose ends are "X"
+// or "X,Y" ("0:1:5;1:-1:9"). Returns each step's (x, y). Throws InputError
+// naming `what` and the offending part.
+std::vector<std::array<double, 2>> parse_tangential_steps(std::string_view text, std::string_view what);
 
 // `arguments` joined by spaces, each quoted for a POSIX shell where needed,
 // so that the recorded command line can be pasted back into a terminal.

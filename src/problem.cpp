@@ -1,6 +1,7 @@
 // The rules of a contact problem, checked in the order body, interface law
-// and solver, load, threads (the law decides whether loads are signed). Numbers are shown with six digits
-// (format_number).
+// and solver, load, friction, threads (the law decides whether loads are
+// signed; friction needs the solver and the loads). Numbers are shown with
+// six digits (format_number).
 #include "halfspace/problem.hpp"
 
 #include <fmt/format.h>
@@ -48,6 +49,14 @@ constexpr std::array kNames{
     ProblemOptionName{"force", &P::force},
     ProblemOptionName{"mean_pressure", &P::mean_pressure},
     ProblemOptionName{"approach", &P::approach},
+    ProblemOptionName{"friction", &P::friction},
+    ProblemOptionName{"tangential_force", &P::tangential_force},
+    ProblemOptionName{"tangential_displacement", &P::tangential_displacement},
+    ProblemOptionName{"sliding", &P::sliding},
+    ProblemOptionName{"tangential_tol", &P::tangential_tol},
+    ProblemOptionName{"tangential_max_iter", &P::tangential_max_iter},
+    ProblemOptionName{"coupling", &P::coupling},
+    ProblemOptionName{"normal_load_steps", &P::normal_load_steps},
     ProblemOptionName{"solver", &P::solver},
     ProblemOptionName{"tol", &P::tol},
     ProblemOptionName{"max_iter", &P::max_iter},
@@ -79,11 +88,47 @@ std::string_view problem_name(std::string_view member) {
   return "solver";
 }
 
-// The text of a given list of numbers: "1, -2".
+// The text of a given value as the library shows it: "1,-2" for a list,
+// "1,0;2,0" for steps (x, y).
+std::string text(double value) {
+  return format_number(value);
+}
+std::string text(long long value) {
+  return fmt::format("{}", value);
+}
+std::string text(const std::string& value) {
+  return value;
+}
 std::string text(const std::vector<double>& values) {
   std::vector<std::string> parts;
   for (const double value : values) parts.push_back(format_number(value));
   return fmt::format("{}", fmt::join(parts, ","));
+}
+std::string text(const std::vector<std::array<double, 2>>& steps) {
+  std::vector<std::string> parts;
+  for (const auto& [x, y] : steps) parts.push_back(format_number(x) + "," + format_number(y));
+  return fmt::format("{}", fmt::join(parts, ";"));
+}
+
+// The option of ProblemOptions that sets each FrictionOptions member a
+// SolverOptionError names; a tangential load is the force or displacement
+// steps `friction` holds.
+std::string_view friction_name(std::string_view member, const solvers::FrictionOptions& friction) {
+  static constexpr std::array<std::pair<std::string_view, std::string_view>, 4> kMembers{{
+      {"sliding", "sliding"},
+      {"tolerance", "tangential_tol"},
+      {"max_iterations", "tangential_max_iter"},
+      {"normal_load_steps", "normal_load_steps"},
+  }};
+  if (member == "tangential_load") {
+    const bool displacement =
+        !friction.history.empty() && friction.history.front().control == solvers::TangentialControl::displacement;
+    return displacement ? "tangential_displacement" : "tangential_force";
+  }
+  for (const auto& [known, name] : kMembers) {
+    if (known == member) return name;
+  }
+  return "friction";
 }
 
 // Options paired with whether they were given.
@@ -131,6 +176,24 @@ class Rules {
       throw OptionError(std::string(option), format_number(nu), "is invalid: allowed range is (-1, 0.5]");
     }
     return nu;
+  }
+
+  // The text of the option's value if it was given, else none.
+  std::optional<std::string> value(std::string_view option) const {
+    const auto found = std::ranges::find(kNames, option, &ProblemOptionName::name);
+    return std::visit(
+        [&](auto member) -> std::optional<std::string> {
+          const auto& field = o_.*member;
+          if (!field) return std::nullopt;
+          return text(*field);
+        },
+        found->field);
+  }
+  // Options paired with whether they were given.
+  Presence presence(std::initializer_list<std::string_view> options) const {
+    Presence pairs;
+    for (const std::string_view option : options) pairs.emplace_back(option, value(option).has_value());
+    return pairs;
   }
 
   // Runs `function`; an OptionError it throws (a SolverOptions rule) is
@@ -183,6 +246,9 @@ class Rules {
   std::pair<Loading, std::vector<double>> loads() const;
   std::optional<solvers::SolverOptions::Adhesion> adhesion() const;
   solvers::SolverOptions solver() const;
+  std::optional<ElasticPair> pair() const;
+  std::optional<solvers::FrictionOptions> friction(const solvers::SolverOptions& normal, std::size_t loads,
+                                                   bool coated) const;
   int threads() const;
 
  private:
@@ -385,6 +451,99 @@ solvers::SolverOptions Rules::solver() const {
   return solver;
 }
 
+// Both bodies, when they were given (body() has checked them).
+std::optional<ElasticPair> Rules::pair() const {
+  if (!(o_.e1 && o_.nu1 && o_.e2 && o_.nu2)) return std::nullopt;
+  return ElasticPair(ElasticBody{*o_.e1, *o_.nu1}, ElasticBody{*o_.e2, *o_.nu2});
+}
+
+// Friction: the tangential loads and the settings need mu; exactly one
+// tangential load; one normal load; each body's constants; then
+// FrictionOptions::validate(normal), named by the problem's options.
+std::optional<solvers::FrictionOptions> Rules::friction(const solvers::SolverOptions& normal, std::size_t loads,
+                                                        bool coated) const {
+  const Presence tangential = presence({"tangential_force", "tangential_displacement", "sliding"});
+  const Presence settings = presence({"tangential_tol", "tangential_max_iter", "coupling", "normal_load_steps"});
+  const std::string mu = o_.friction ? describe("friction", *o_.friction) : std::string();
+  if (!o_.friction) {
+    for (const Presence& options : {tangential, settings}) {
+      const std::vector<std::string> present = given(options);
+      if (present.empty()) continue;
+      const std::string_view first = std::ranges::find(options, true, &Presence::value_type::second)->first;
+      throw InputError(fmt::format("{} needs {} (the Coulomb friction coefficient)", s_.describe(first, *value(first)),
+                                   s_.describe("friction", "MU")));
+    }
+    return std::nullopt;
+  }
+  std::vector<std::string> loads_given;
+  for (const auto& [option, is_given] : tangential) {
+    if (is_given) loads_given.push_back(s_.describe(option, *value(option)));
+  }
+  if (loads_given.empty()) {
+    throw InputError(fmt::format("{} needs a tangential load: {} QX[,QY], {} DX[,DY] or {} X,Y", mu,
+                                 name("tangential_force"), name("tangential_displacement"), name("sliding")));
+  }
+  if (loads_given.size() > 1) {
+    throw InputError(fmt::format("{} cannot be combined: give one of {}, {}, {}", fmt::join(loads_given, " and "),
+                                 name("tangential_force"), name("tangential_displacement"), name("sliding")));
+  }
+  if (loads > 1) {
+    throw InputError(fmt::format("{} takes one normal load, not a load sweep: give a single {}, {} or {}", mu,
+                                 name("force"), name("mean_pressure"), name("approach")));
+  }
+  // What the friction slice does not support, refused before the options
+  // are read.
+  try {
+    if (coated) solvers::FrictionOptions::refuse_coating();
+  } catch (const solvers::SolverOptionError& error) {
+    std::vector<std::string> layers;
+    for (const std::string_view option : {"layer_thickness", "layer_E", "layer_nu", "substrate_E", "substrate_nu"})
+      layers.push_back(name(option));
+    throw InputError(fmt::format("the coated half-space ({}) {} ({})", fmt::join(layers, ", "), error.rule(), mu));
+  }
+  try {
+    if (o_.e_star) solvers::FrictionOptions::refuse_composite_modulus_only();
+  } catch (const solvers::SolverOptionError& error) {
+    throw InputError(fmt::format("{} with {}: {} {}", mu, describe("e_star", *o_.e_star), error.value(), error.rule()));
+  }
+  solvers::FrictionOptions friction;
+  friction.friction_coefficient = *o_.friction;
+  const auto steps = [&](std::string_view option, const std::vector<std::array<double, 2>>& given,
+                         solvers::TangentialControl control) {
+    if (given.empty()) throw OptionError(std::string(option), "", "is invalid: give at least one step");
+    for (const auto& [x, y] : given) friction.history.push_back({control, x, y});
+  };
+  if (o_.tangential_force) steps("tangential_force", *o_.tangential_force, solvers::TangentialControl::force);
+  if (o_.tangential_displacement) {
+    steps("tangential_displacement", *o_.tangential_displacement, solvers::TangentialControl::displacement);
+  }
+  if (o_.sliding) {
+    if (o_.sliding->size() != 2)
+      throw OptionError("sliding", text(*o_.sliding), "is invalid: expected a direction X,Y");
+    friction.sliding_direction = {(*o_.sliding)[0], (*o_.sliding)[1]};
+  }
+  if (o_.tangential_tol) friction.tolerance = *o_.tangential_tol;
+  // Beyond int, a limit is no limit: validate() sees the nearest int.
+  const auto clamped = [](long long value) { return static_cast<int>(std::clamp<long long>(value, INT_MIN, INT_MAX)); };
+  if (o_.tangential_max_iter) friction.max_iterations = clamped(*o_.tangential_max_iter);
+  if (o_.normal_load_steps) friction.normal_load_steps = clamped(*o_.normal_load_steps);
+  if (o_.coupling) {
+    if (*o_.coupling != "on" && *o_.coupling != "off") {
+      throw OptionError("coupling", *o_.coupling, "is invalid: allowed values are on and off");
+    }
+    friction.coupling = *o_.coupling == "on";
+  }
+  try {
+    friction.validate(normal);
+  } catch (const solvers::SolverOptionError& error) {
+    if (error.option() == "adhesion") {
+      throw InputError(fmt::format("{} {} ({})", s_.describe("adhesion", *o_.adhesion), error.rule(), mu));
+    }
+    throw OptionError(std::string(friction_name(error.option(), friction)), error.value(), error.rule());
+  }
+  return friction;
+}
+
 int Rules::threads() const {
   if (!o_.threads) return default_threads();
   if (*o_.threads < 1 || *o_.threads > max_threads()) {
@@ -417,8 +576,10 @@ Problem make_problem(const ProblemOptions& options, const OptionSpelling& spelli
     Problem problem;
     problem.coating = rules.coating();
     problem.e_star = problem.coating ? plane_strain_modulus(problem.coating->layer) : rules.body();
+    problem.pair = rules.pair();
     problem.solver = rules.solver();  // the interface law first: adhesion makes loads signed
     std::tie(problem.loading, problem.load_values) = rules.loads();
+    problem.friction = rules.friction(problem.solver, problem.load_values.size(), problem.coating.has_value());
     problem.threads = rules.threads();
     return problem;
   } catch (const OptionError& error) {
@@ -460,6 +621,14 @@ void Problem::check_grid(const Grid& grid, const OptionSpelling& spelling) const
       solver.interface_law.check_load(grid, Loading{loading.mode, values[k]});
     } catch (const InputError& error) {
       throw InputError(fmt::format("{}{}: {}", given, which(k), error.what()));
+    }
+  }
+  if (friction) {
+    try {
+      friction->validate(grid, solver, loading);
+    } catch (const solvers::SolverOptionError& error) {
+      throw spelled(OptionError(std::string(friction_name(error.option(), *friction)), error.value(), error.rule()),
+                    spelling);
     }
   }
   try {

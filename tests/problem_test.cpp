@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -137,6 +138,112 @@ TEST(ProblemTest, PeriodicApproachesStayBelowTheMeanGap) {
   const Problem problem = make_problem(options);
   EXPECT_TRUE(starts_with(refusal([&] { problem.check_heights(grid, heights); }),
                           "approach=1e-07,6e-07 (value 2: 6e-07 m) is invalid for a periodic surface"));
+}
+
+// Both steel bodies, a force and friction with one tangential force step.
+ProblemOptions friction_problem() {
+  ProblemOptions options;
+  options.e1 = 2.1e11;
+  options.nu1 = 0.3;
+  options.e2 = 2.1e11;
+  options.nu2 = 0.3;
+  options.force = std::vector<double>{10.0};
+  options.friction = 0.3;
+  options.tangential_force = std::vector<std::array<double, 2>>{{1.0, 0.0}, {2.0, 0.5}};
+  return options;
+}
+
+TEST(ProblemTest, FrictionIsMadeFromItsOptions) {
+  ProblemOptions options = friction_problem();
+  options.tangential_tol = 1e-8;
+  options.tangential_max_iter = 50;
+  options.coupling = "off";
+  options.normal_load_steps = 3;
+  const Problem problem = make_problem(options);
+  ASSERT_TRUE(problem.friction.has_value() && problem.pair.has_value());
+  EXPECT_EQ(problem.friction->friction_coefficient, 0.3);
+  ASSERT_EQ(problem.friction->history.size(), 2u);
+  EXPECT_EQ(problem.friction->history[1].control, TangentialControl::force);
+  EXPECT_EQ(problem.friction->history[1].x, 2.0);
+  EXPECT_EQ(problem.friction->history[1].y, 0.5);
+  EXPECT_EQ(problem.friction->tolerance, 1e-8);
+  EXPECT_EQ(problem.friction->max_iterations, 50);
+  EXPECT_FALSE(problem.friction->coupling);
+  EXPECT_EQ(problem.friction->normal_load_steps, 3);
+  EXPECT_TRUE(problem.pair->similar());
+  options.tangential_force.reset();
+  options.sliding = std::vector<double>{1.0, -1.0};
+  const Problem sliding = make_problem(options);
+  ASSERT_TRUE(sliding.friction->sliding_direction.has_value());
+  EXPECT_EQ((*sliding.friction->sliding_direction)[1], -1.0);
+  EXPECT_FALSE(make_problem(sphere_problem()).friction.has_value());
+}
+
+TEST(ProblemTest, FrictionRulesNameTheOption) {
+  const auto refused = [](const ProblemOptions& options) { return refusal([&] { make_problem(options, Flags{}); }); };
+  ProblemOptions options = friction_problem();
+  options.friction.reset();
+  EXPECT_EQ(refused(options), "--tangential_force 1,0;2,0.5 needs --friction MU (the Coulomb friction coefficient)");
+  options.tangential_force.reset();
+  options.tangential_max_iter = 5;
+  EXPECT_EQ(refused(options), "--tangential_max_iter 5 needs --friction MU (the Coulomb friction coefficient)");
+  options = friction_problem();
+  options.friction = -0.1;
+  EXPECT_TRUE(starts_with(refused(options), "--friction -0.1 is invalid: the friction coefficient mu must be finite"));
+  options = friction_problem();
+  options.tangential_force.reset();
+  EXPECT_EQ(refused(options),
+            "--friction 0.3 needs a tangential load: --tangential_force QX[,QY], --tangential_displacement DX[,DY] "
+            "or --sliding X,Y");
+  options.tangential_displacement = std::vector<std::array<double, 2>>{{1e-6, 0.0}};
+  options.sliding = std::vector<double>{1.0, 0.0};
+  EXPECT_EQ(refused(options),
+            "--tangential_displacement 1e-06,0 and --sliding 1,0 cannot be combined: give one of --tangential_force, "
+            "--tangential_displacement, --sliding");
+  options.tangential_displacement = std::vector<std::array<double, 2>>{};
+  options.sliding.reset();
+  EXPECT_EQ(refused(options), "--tangential_displacement  is invalid: give at least one step");
+  options = friction_problem();
+  options.tangential_force.reset();
+  options.sliding = std::vector<double>{1.0};
+  EXPECT_EQ(refused(options), "--sliding 1 is invalid: expected a direction X,Y");
+  options.sliding = std::vector<double>{0.0, 0.0};
+  EXPECT_EQ(refused(options), "--sliding 0,0 is invalid: the direction must be finite and not zero");
+  options = friction_problem();
+  options.tangential_tol = 2.0;  // FrictionOptions' "tolerance"
+  EXPECT_EQ(refused(options), "--tangential_tol 2 is invalid: allowed range is (0, 1)");
+  options.tangential_tol.reset();
+  options.coupling = "maybe";
+  EXPECT_EQ(refused(options), "--coupling maybe is invalid: allowed values are on and off");
+  options.coupling.reset();
+  options.force = std::vector<double>{5.0, 10.0};
+  EXPECT_TRUE(starts_with(refused(options), "--friction 0.3 takes one normal load, not a load sweep"));
+  options = friction_problem();
+  options.adhesion = "md";
+  options.work_of_adhesion = 0.1;
+  options.adhesion_range = 1e-8;
+  EXPECT_TRUE(starts_with(refused(options), "--adhesion md cannot be combined with friction"));
+  options = friction_problem();
+  options.e1.reset();
+  options.nu1.reset();
+  options.e2.reset();
+  options.nu2.reset();
+  options.e_star = 1e11;
+  EXPECT_TRUE(starts_with(refused(options),
+                          "--friction 0.3 with --e_star 1e+11: E* only does not fix the tangential compliance"));
+}
+
+TEST(ProblemTest, FrictionIsCheckedOnTheGrid) {
+  const Grid plane = Grid::plane(8, 8, 1e-5, 1e-5, Boundary::free);
+  const Grid line = Grid::line(8, 1e-5, Boundary::free);
+  ProblemOptions options = friction_problem();
+  EXPECT_NO_THROW(make_problem(options).check_grid(plane));
+  // The second step has y = 0.5: not on a line contact.
+  EXPECT_TRUE(starts_with(refusal([&] { make_problem(options).check_grid(line, Flags{}); }),
+                          "--tangential_force 2,0.5 is invalid on a 1D grid"));
+  options.tangential_force = std::vector<std::array<double, 2>>{{3.5, 0.0}};  // beyond mu P = 3 N
+  EXPECT_TRUE(starts_with(refusal([&] { make_problem(options).check_grid(plane, Flags{}); }),
+                          "--tangential_force 3.5,0 is invalid: step 1 asks for |Q| = 3.5 N beyond mu P = 3 N"));
 }
 
 }  // namespace

@@ -1,12 +1,14 @@
 // A contact problem as a front end states it, and the one place its rules
 // live: the elastic body (E*, both bodies' E and nu, or a coated half-space),
 // the interface law (a hardness cap; a cohesive law made from its
-// parameters), the loads (one, or a sweep; signed with adhesion), the
-// solver's settings and the threads. The program maps its flags onto
+// parameters), the loads (one, or a sweep; signed with adhesion), friction
+// (Coulomb's coefficient and the tangential loads), the solver's settings
+// and the threads. The program maps its flags onto
 // ProblemOptions and Python its keywords; make_problem checks them and every
 // message names the option as the front end spells it (OptionSpelling).
 #pragma once
 
+#include <array>
 #include <optional>
 #include <span>
 #include <string>
@@ -14,8 +16,10 @@
 #include <variant>
 #include <vector>
 
+#include "halfspace/elastic_pair.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/layered_material.hpp"
+#include "halfspace/solvers/friction_options.hpp"
 #include "halfspace/solvers/loading.hpp"
 #include "halfspace/solvers/solver_options.hpp"
 
@@ -67,6 +71,20 @@ struct ProblemOptions {
   std::optional<std::vector<double>> force;          // N in 2D, N/m in 1D
   std::optional<std::vector<double>> mean_pressure;  // Pa
   std::optional<std::vector<double>> approach;       // m
+  // Friction (solvers/friction_options.hpp): Coulomb's coefficient mu and
+  // exactly one tangential load: steps (x, y) of force (N, N/m in 1D) or of
+  // tangential displacement (m), more than one a history applied in order,
+  // or a sliding direction (x, y). The tangential solver's tolerance and
+  // iteration limit; dissimilar bodies: coupling "on" or "off" and the
+  // normal load's increments.
+  std::optional<double> friction;
+  std::optional<std::vector<std::array<double, 2>>> tangential_force;
+  std::optional<std::vector<std::array<double, 2>>> tangential_displacement;
+  std::optional<std::vector<double>> sliding;  // (x, y)
+  std::optional<double> tangential_tol;
+  std::optional<long long> tangential_max_iter;
+  std::optional<std::string> coupling;
+  std::optional<long long> normal_load_steps;
   // The solver (solver_options.hpp) and the threads.
   std::optional<std::string> solver;
   std::optional<double> tol;
@@ -82,7 +100,8 @@ struct ProblemOptions {
 // Python's keyword; the program's flag is the name with '-' for '_'.
 using ProblemOptionField =
     std::variant<std::optional<double> ProblemOptions::*, std::optional<long long> ProblemOptions::*,
-                 std::optional<std::string> ProblemOptions::*, std::optional<std::vector<double>> ProblemOptions::*>;
+                 std::optional<std::string> ProblemOptions::*, std::optional<std::vector<double>> ProblemOptions::*,
+                 std::optional<std::vector<std::array<double, 2>>> ProblemOptions::*>;
 struct ProblemOptionName {
   std::string_view name;
   ProblemOptionField field;
@@ -94,16 +113,21 @@ std::span<const ProblemOptionName> problem_option_names();
 struct Problem {
   double e_star = 0.0;                     // Pa; a coating's is the layer's E1 / (1 - nu1^2)
   std::optional<LayeredMaterial> coating;  // a coated half-space, else homogeneous
+  std::optional<ElasticPair> pair;         // both bodies, when E1, nu1, E2, nu2 were given
   Loading loading;                         // the first load; its mode is every load's
   std::vector<double> load_values;         // every load, in loading.mode's unit
   solvers::SolverOptions solver;
+  // With friction: one normal load, both bodies given (pair), no coating.
+  std::optional<solvers::FrictionOptions> friction;
   int threads = 1;
 
   bool sweep() const { return load_values.size() > 1; }
   // The rules that need the grid: each load's scale (the mean pressure it
   // makes within the range of pressures; signed loads by size), the hardness
-  // cap against each load, and the solver's (SolverOptions::validate(grid),
-  // with the coating's). Throws InputError naming the option.
+  // cap against each load, the solver's (SolverOptions::validate(grid),
+  // with the coating's) and friction's (FrictionOptions::validate(grid,
+  // normal, loading): a force step beyond mu P, y components on a 1D grid).
+  // Throws InputError naming the option.
   void check_grid(const Grid& grid, const OptionSpelling& spelling = {}) const;
   // Displacement control on a periodic grid: each approach below the mean
   // initial gap of `heights` (check_periodic_approach), named as an option.

@@ -13,6 +13,7 @@ from ._height_map import HeightMap
 ProgressCallback = Callable[[int, float], Optional[bool]]
 
 _LOADS = ("force", "mean_pressure", "approach")
+_TANGENTIAL = ("tangential_force", "tangential_displacement")
 
 
 def composite_modulus(E1: float, nu1: float, E2: float, nu2: float) -> float:
@@ -182,8 +183,8 @@ def solve(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
         tangential_displacement ``(DX, DY)`` or DX (m, the rigid tangential
         displacement of body 1 against body 2), or sliding ``(X, Y)`` (gross
         sliding along that direction: every contact cell at mu p). Needs E1,
-        nu1, E2, nu2 of elastically similar bodies (E2 may be ``inf``, rigid,
-        with nu1 = 0.5); no adhesion, no coating. The result then has the
+        nu1, E2, nu2 (E2 may be ``inf``, a rigid body 2; dissimilar bodies
+        are solved coupled); no adhesion, no coating. The result then has the
         fields ``shear_x``, ``shear_y`` (Pa), ``stick`` (bool), ``slip_x``,
         ``slip_y`` (m), ``tangential_displacement_x``, ``_y`` (m) as views,
         and ``Result.friction`` the step's record; tangential_tol and
@@ -196,9 +197,9 @@ def solve(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
     ``Result.converged``, ``.status`` and ``.message``. Raises InputError for
     bad options, naming the keyword, its value and the rule.
     """
-    tangential = _tangential(friction, tangential_force, tangential_displacement, sliding, tangential_tol,
-                             tangential_max_iter, plural=False)
-    if tangential is not None:
+    friction_keywords = _friction_keywords(friction, tangential_force, tangential_displacement, sliding,
+                                           tangential_tol, tangential_max_iter, plural=False)
+    if friction_keywords:
         if initial_pressure is not None:
             raise _core.InputError("initial_pressure cannot be combined with friction")
         return _friction("solve", surface, dx, dy, e_star, E1, nu1, E2, nu2, boundary, force, mean_pressure,
@@ -206,7 +207,7 @@ def solve(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
                          {**_with_active_set(_laws(hardness, adhesion, work_of_adhesion, adhesion_range,
                                                   adhesion_stress, adhesion_tol, adhesion_precondition), active_set),
                           "precision": precision},
-                         coating, tangential)[0]
+                         coating, friction_keywords)[0]
     height_map = _surface(surface, dx, dy)
     start = None if initial_pressure is None else np.ascontiguousarray(initial_pressure, dtype=np.float64)
     problem = _problem(e_star, E1, nu1, E2, nu2, coating, _loads(force, mean_pressure, approach, plural=False), solver,
@@ -262,65 +263,31 @@ def _pair(value, name: str, plural: bool):
                            (", or a sequence of them" if plural else "; use history() for several steps"))
 
 
-def _tangential(friction, tangential_force, tangential_displacement, sliding, tangential_tol, tangential_max_iter,
-                plural: bool):
-    """(mu, control, [[x, y], ...], tol, max_iter) of the friction keywords, or None without friction."""
-    loads = {"tangential_force": tangential_force, "tangential_displacement": tangential_displacement,
-             "sliding": sliding}
-    given = [name for name, value in loads.items() if value is not None]
-    if friction is None:
-        extra = [name for name, value in (("tangential_tol", tangential_tol),
-                                          ("tangential_max_iter", tangential_max_iter)) if value is not None]
-        if given or extra:
-            raise _core.InputError(f"{(given + extra)[0]} needs friction=MU (the Coulomb coefficient)")
-        return None
-    if not given:
-        raise _core.InputError(f"friction={friction!r} needs a tangential load: tangential_force, "
-                               "tangential_displacement or sliding")
-    if len(given) > 1:
-        raise _core.InputError(f"{' and '.join(given)} cannot be combined: give one of tangential_force, "
-                               "tangential_displacement, sliding")
-    name = given[0]
-    value = loads[name]
-    if name == "sliding":
-        steps = [_pair(value, name, plural=False)]
-        if np.ndim(value) != 1:
-            raise _core.InputError("sliding must be a direction (X, Y)")
-    elif plural:
-        if np.ndim(value) == 0:
-            steps = [_pair(value, name, plural)]
-        else:
-            steps = [_pair(step, name, plural) for step in value]
-            if not steps:
-                raise _core.InputError(f"{name} must hold at least one step")
-    else:
-        steps = [_pair(value, name, plural)]
-    control = {"tangential_force": "force", "tangential_displacement": "displacement", "sliding": "sliding"}[name]
-    return float(friction), control, steps, tangential_tol, tangential_max_iter
+def _friction_keywords(friction, tangential_force, tangential_displacement, sliding, tangential_tol,
+                       tangential_max_iter, plural: bool) -> dict:
+    """The friction keywords that were given, a tangential load as steps [x, y] and a sliding direction as a
+    list; _core's make_problem (halfspace/problem.hpp) holds their rules."""
+    keywords = {"friction": friction, "tangential_tol": tangential_tol, "tangential_max_iter": tangential_max_iter}
+    for name, value in (("tangential_force", tangential_force), ("tangential_displacement", tangential_displacement)):
+        if value is not None:
+            many = plural and np.ndim(value) != 0
+            keywords[name] = [_pair(step, name, plural) for step in value] if many else [_pair(value, name, plural)]
+    if sliding is not None:
+        keywords["sliding"] = [float(v) for v in np.asarray(sliding, dtype=np.float64).ravel()]
+    return {key: value for key, value in keywords.items() if value is not None}
 
 
 def _friction(name, surface, dx, dy, e_star, E1, nu1, E2, nu2, boundary, force, mean_pressure, approach, solver, tol,
-              max_iter, threads, progress, fft_planning, deflation_block, laws, coating, tangential):
-    """The frictional solve behind solve(friction=...) and history()."""
-    mu, control, steps, tangential_tol, tangential_max_iter = tangential
+              max_iter, threads, progress, fft_planning, deflation_block, laws, coating, friction):
+    """The frictional solve behind solve(friction=...) and history(); `friction` the friction keywords given."""
     height_map = _surface(surface, dx, dy)
-    constants = {"E1": E1, "nu1": nu1, "E2": E2, "nu2": nu2}
-    given = [key for key, value in constants.items() if value is not None]
-    if e_star is None and coating is None and len(given) < 4:
-        missing = [key for key in constants if constants[key] is None]
-        raise _core.InputError(f"friction={mu!r} needs E1, nu1, E2 and nu2 (missing {', '.join(missing)}): E* alone "
-                               "does not fix the tangential compliance")
-    problem = _problem(e_star, E1, nu1, E2, nu2, coating, _loads(force, mean_pressure, approach, plural=False), solver,
-                       tol, max_iter, fft_planning, deflation_block, threads, laws)
-    shown = steps if len(steps) > 1 else steps[0]
-    call = _call_text(name, height_map, {"boundary": boundary, **_shown(problem, single=True), "friction": mu,
-                                         {"force": "tangential_force", "displacement": "tangential_displacement",
-                                          "sliding": "sliding"}[control]: shown,
-                                         "tangential_tol": tangential_tol,
-                                         "tangential_max_iter": tangential_max_iter})
-    return _core.friction(height_map.heights, height_map.dx, height_map.dy or 0.0, boundary, problem, progress, mu,
-                          control, steps, tangential_tol, tangential_max_iter, call, height_map.source,
-                          list(height_map.preparation))
+    problem = {**_problem(e_star, E1, nu1, E2, nu2, coating, _loads(force, mean_pressure, approach, plural=False),
+                          solver, tol, max_iter, fft_planning, deflation_block, threads, laws), **friction}
+    shown = {key: value[0] if key in _TANGENTIAL and len(value) == 1 else value
+             for key, value in _shown(problem, single=True).items()}
+    call = _call_text(name, height_map, {"boundary": boundary, **shown})
+    return _core.friction(height_map.heights, height_map.dx, height_map.dy or 0.0, boundary, problem, progress, call,
+                          height_map.source, list(height_map.preparation))
 
 
 def history(surface: Union[HeightMap, np.ndarray], *, friction: float, dx: Optional[float] = None,
@@ -349,11 +316,11 @@ def history(surface: Union[HeightMap, np.ndarray], *, friction: float, dx: Optio
     stick_fraction, dissipated_energy as numpy arrays, ``.save(path)`` the
     program's history file and CSV. A step that does not converge ends the
     history (see ``.converged``)."""
-    tangential = _tangential(friction, tangential_force, tangential_displacement, None, tangential_tol,
-                             tangential_max_iter, plural=True)
+    friction_keywords = _friction_keywords(friction, tangential_force, tangential_displacement, None, tangential_tol,
+                                           tangential_max_iter, plural=True)
     return _friction("history", surface, dx, dy, e_star, E1, nu1, E2, nu2, boundary, force, mean_pressure, approach,
                      solver, tol, max_iter, threads, progress, fft_planning, deflation_block,
-                     _laws(hardness, None, None, None, None, None, None), coating, tangential)
+                     _laws(hardness, None, None, None, None, None, None), coating, friction_keywords)
 
 
 def read_result(path: Union[str, os.PathLike], step: Optional[int] = None) -> _core.Result:

@@ -2,6 +2,7 @@
 // problem (problem.hpp, whose make_problem holds every rule), the solve run with the GIL
 // released, and Ctrl-C and the progress callable served between iterations.
 #include <fmt/format.h>
+#include <nanobind/stl/array.h>
 #include <nanobind/stl/optional.h>
 #include <nanobind/stl/string.h>
 #include <nanobind/stl/vector.h>
@@ -234,71 +235,31 @@ Sweep sweep(const nb::object& heights, double dx, double dy, const std::string& 
   return Sweep{make_run(std::move(surface), problem, std::move(provenance), std::move(steps))};
 }
 
-// A FrictionOptions rule restated with the keyword it came from.
-[[noreturn]] void restate_friction_rule(const solvers::SolverOptionError& error, const std::string& control) {
-  const std::string& option = error.option();
-  const std::string keyword = option == "tangential_load"  ? "tangential_" + control
-                              : option == "tolerance"      ? "tangential_tol"
-                              : option == "max_iterations" ? "tangential_max_iter"
-                              : option == "pair"           ? "E1, nu1, E2, nu2"
-                                                           : option;
-  if (option == "coating" || option == "processes" || (option == "pair" && error.value() == "E* only")) {
-    throw InputError(fmt::format("{} {} (friction)", option == "pair" ? "e_star" : option, error.rule()));
-  }
-  throw InputError(fmt::format("{}={} {}", keyword, error.value(), error.rule()));
-}
-
 // halfspace.solve(friction=...) and halfspace.history: the normal solve, then
-// the tangential steps under its pressure (frictional_solve.hpp), mapped from
-// the keywords onto FrictionOptions, whose validate() holds the rules.
-// `control` is "force", "displacement" or "sliding" (then `loads` holds the
-// one direction); `problem_keywords` as for solve, with E1, nu1, E2, nu2.
+// the tangential steps under its pressure (frictional_solve.hpp).
+// `problem_keywords` as for solve, with friction's (problem.hpp: friction,
+// tangential_force or tangential_displacement as steps (x, y), or sliding,
+// tangential_tol, tangential_max_iter); make_problem holds their rules.
 History friction(const nb::object& heights, double dx, double dy, const std::string& boundary,
-                 const nb::dict& problem_keywords, nb::object progress, double mu, const std::string& control,
-                 const std::vector<std::vector<double>>& loads, std::optional<double> tangential_tol,
-                 std::optional<int> tangential_max_iter, const std::string& command_line,
+                 const nb::dict& problem_keywords, nb::object progress, const std::string& command_line,
                  const std::string& height_source, const std::vector<std::string>& preparation) {
   ArraySurface surface = surface_from(heights, dx, dy, boundary);
-  solvers::FrictionOptions friction;
-  friction.friction_coefficient = mu;
-  for (const std::vector<double>& load : loads) {
-    if (load.size() != 2) throw InputError(fmt::format("tangential_{}: each step is (x, y)", control));
-    if (control == "sliding") {
-      friction.sliding_direction = {{load[0], load[1]}};
-    } else {
-      friction.history.push_back(control == "force" ? TangentialLoading::force(load[0], load[1])
-                                                    : TangentialLoading::displacement(load[0], load[1]));
-    }
-  }
-  if (tangential_tol) friction.tolerance = *tangential_tol;
-  if (tangential_max_iter) friction.max_iterations = *tangential_max_iter;
-  const auto given = [&](const char* key) {
-    return problem_keywords.contains(key) && !problem_keywords[key].is_none();
-  };
-  std::optional<Problem> problem;
-  std::optional<ElasticPair> pair;
-  try {
-    friction.validate();
-    if (given("layer_thickness")) solvers::FrictionOptions::refuse_coating();
-    if (!given("E1")) solvers::FrictionOptions::refuse_composite_modulus_only();
-    problem.emplace(checked_problem(problem_keywords, surface));
-    const auto constant = [&](const char* key) { return nb::cast<double>(problem_keywords[key]); };
-    pair.emplace(ElasticBody{constant("E1"), constant("nu1")}, ElasticBody{constant("E2"), constant("nu2")});
-    friction.validate(surface.grid, *pair, problem->solver, problem->loading);
-  } catch (const solvers::SolverOptionError& error) {
-    restate_friction_rule(error, control);
-  }
+  Problem problem = checked_problem(problem_keywords, surface);
+  if (!problem.friction) throw InputError("the frictional solve needs friction=MU (the Coulomb friction coefficient)");
+  // With friction make_problem has both bodies.
+  solvers::FrictionOptions& friction = *problem.friction;
+  const ElasticPair& pair = *problem.pair;
   ProgressHook hook(std::move(progress));
-  problem->solver.progress = hook.callback();
+  problem.solver.progress = hook.callback();
   friction.progress = [&hook](std::size_t, int iteration, double residual) { return hook(iteration, residual); };
 
   FrictionalSolveResult solved = run_released(hook, [&] {
-    set_threads(problem->threads);
-    return solvers::solve_frictional_surface(surface.grid, surface.heights, *pair, problem->loading, problem->solver,
+    set_threads(problem.threads);
+    return solvers::solve_frictional_surface(surface.grid, surface.heights, pair, problem.loading, problem.solver,
                                              friction);
   });
   analysis::SweepStep step;
-  step.loading = problem->loading;
+  step.loading = problem.loading;
   // A coupled single step (dissimilar bodies) carries its own pressure, under
   // its shear; a history the normal loading's.
   const bool own_pressure = solved.coupled && solved.steps.size() == 1 && solved.step_normals.size() == 1;
@@ -307,9 +268,9 @@ History friction(const nb::object& heights, double dx, double dy, const std::str
   std::vector<analysis::SweepStep> steps;
   steps.push_back(std::move(step));
   io::SolveProvenance provenance{
-      pair->composite_modulus(), problem->loading.mode, problem->threads, command_line, "", height_source, preparation};
-  std::shared_ptr<Run> run = make_run(std::move(surface), *problem, std::move(provenance), std::move(steps));
-  run->pair = pair;
+      pair.composite_modulus(), problem.loading.mode, problem.threads, command_line, "", height_source, preparation};
+  std::shared_ptr<Run> run = make_run(std::move(surface), problem, std::move(provenance), std::move(steps));
+  run->pair = problem.pair;
   run->tangential = std::move(solved.steps);
   run->tangential_loads = friction.history;
   if (friction.sliding_direction && !run->tangential.empty()) {
@@ -329,9 +290,8 @@ History friction(const nb::object& heights, double dx, double dy, const std::str
 
 void bind_solve(nb::module_& module) {
   module.def("friction", &friction, nb::arg("heights"), nb::arg("dx"), nb::arg("dy"), nb::arg("boundary"),
-             nb::arg("problem"), nb::arg("progress").none(), nb::arg("mu"), nb::arg("control"), nb::arg("loads"),
-             nb::arg("tangential_tol").none(), nb::arg("tangential_max_iter").none(), nb::arg("command_line"),
-             nb::arg("height_source"), nb::arg("preparation"));
+             nb::arg("problem"), nb::arg("progress").none(), nb::arg("command_line"), nb::arg("height_source"),
+             nb::arg("preparation"));
   module.def("solve", &solve, nb::arg("heights"), nb::arg("dx"), nb::arg("dy"), nb::arg("boundary"), nb::arg("problem"),
              nb::arg("initial_pressure").none(), nb::arg("progress").none(), nb::arg("command_line"),
              nb::arg("height_source"), nb::arg("preparation"));

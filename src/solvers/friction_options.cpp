@@ -86,14 +86,17 @@ void FrictionOptions::validate() const {
   }
 }
 
-void FrictionOptions::validate(const Grid& grid, const ElasticPair& /*pair*/, const SolverOptions& normal,
-                               const Loading& loading) const {
+void FrictionOptions::validate(const SolverOptions& normal) const {
   validate();
   if (normal.adhesion) {
     throw SolverOptionError("adhesion", std::string(to_string(normal.adhesion->law.type)),
                             "cannot be combined with friction: Coulomb's bound mu p needs a compressive pressure, "
                             "and the cohesive law's tensile tractions are not yet coupled with the shear");
   }
+}
+
+void FrictionOptions::validate(const Grid& grid, const SolverOptions& normal, const Loading& loading) const {
+  validate(normal);
   if (grid.dimension() == 1) {
     for (const TangentialLoading& step : history) {
       if (step.y != 0.0) {

@@ -214,7 +214,7 @@ FrictionalSolveResult solve_frictional_surface(const Grid& grid, std::span<const
                                                const ElasticPair& pair, const Loading& loading,
                                                const SolverOptions& normal, const FrictionOptions& friction,
                                                const Layout& layout) {
-  friction.validate(grid, pair, normal, loading);
+  friction.validate(grid, normal, loading);
   FrictionalSolveResult result;
   result.requested_steps = friction.steps();
   result.dundurs_beta = pair.dundurs_beta();

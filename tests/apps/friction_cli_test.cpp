@@ -386,7 +386,9 @@ TEST(FrictionCliTest, RefusalsNameTheOptions) {
         "4e-4",  "--layer-thickness", "1e-5",   "--layer-E", "1e11", "--layer-nu", "0.3",   "--substrate-E",
         "2e11",  "--substrate-nu",    "0.3",    "--force",   "10",   "--friction", "0.3",   "--tangential-force",
         "1",     "--output",          "bad.h5"},
-       {"the coated half-space (--layer-*, --substrate-*) cannot be combined with friction", "--friction 0.3"}},
+       {"the coated half-space (--layer-thickness, --layer-E, --layer-nu, --substrate-E, --substrate-nu) cannot be "
+        "combined with friction",
+        "--friction 0.3"}},
       {sphere(16, "bad.h5", {"--friction", "0.3", "--tangential-force", "0.5;1", "--stress-depths", "1e-5"}),
        {"--stress-depths 1e-5 applies to a single tangential step, not a history of 2", "halfspace stress"}},
       {{"solve",  "--geometry",

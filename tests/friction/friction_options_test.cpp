@@ -53,32 +53,25 @@ TEST(FrictionOptions, ValidateNamesTheOption) {
 TEST(FrictionOptions, RulesOfTheSolve) {
   const Grid plane = Grid::plane(8, 8, 1e-5, 1e-5, Boundary::free);
   const Grid line = Grid::line(8, 1e-5, Boundary::free);
-  const ElasticPair steel = ElasticPair::similar({2.1e11, 0.3});
   const solvers::SolverOptions normal;
   const Loading ten = Loading::force(10.0);
-  EXPECT_EQ(refused_option([&] { history(0.3, {TangentialLoading::force(3.0)}).validate(plane, steel, normal, ten); }),
+  EXPECT_EQ(refused_option([&] { history(0.3, {TangentialLoading::force(3.0)}).validate(plane, normal, ten); }),
             "accepted");
   // Beyond mu P under load control.
-  EXPECT_EQ(refused_option([&] { history(0.3, {TangentialLoading::force(3.1)}).validate(plane, steel, normal, ten); }),
+  EXPECT_EQ(refused_option([&] { history(0.3, {TangentialLoading::force(3.1)}).validate(plane, normal, ten); }),
             "tangential_load");
   // Under approach control P is not known before the solve.
   EXPECT_EQ(refused_option([&] {
-              history(0.3, {TangentialLoading::force(3.1)}).validate(plane, steel, normal, Loading::approach(1e-6));
+              history(0.3, {TangentialLoading::force(3.1)}).validate(plane, normal, Loading::approach(1e-6));
             }),
             "accepted");
   // Mean pressure: P = p times the domain area (6.4e-9 m^2 here).
   EXPECT_EQ(refused_option([&] {
-              history(0.3, {TangentialLoading::force(1.0)}).validate(plane, steel, normal, Loading::mean_pressure(1e6));
+              history(0.3, {TangentialLoading::force(1.0)}).validate(plane, normal, Loading::mean_pressure(1e6));
             }),
             "tangential_load");
-  EXPECT_EQ(
-      refused_option([&] { history(0.3, {TangentialLoading::force(1.0, 0.5)}).validate(line, steel, normal, ten); }),
-      "tangential_load");
-  EXPECT_EQ(refused_option([&] {
-              history(0.3, {TangentialLoading::force(1.0)})
-                  .validate(plane, ElasticPair::on_rigid({2.1e11, 0.3}), normal, ten);
-            }),
-            "accepted");  // dissimilar bodies: solved coupled (coupled_step.hpp)
+  EXPECT_EQ(refused_option([&] { history(0.3, {TangentialLoading::force(1.0, 0.5)}).validate(line, normal, ten); }),
+            "tangential_load");
   solvers::FrictionOptions ramp = history(0.3, {TangentialLoading::force(1.0)});
   ramp.normal_load_steps = 0;
   EXPECT_EQ(refused_option([&] { ramp.validate(); }), "normal_load_steps");
@@ -88,18 +81,12 @@ TEST(FrictionOptions, RulesOfTheSolve) {
   ramp.coupling_tolerance = 1e-6;
   ramp.max_alternations = 0;
   EXPECT_EQ(refused_option([&] { ramp.validate(); }), "max_alternations");
-  // An incompressible body on a rigid one is similar (beta = 0).
-  EXPECT_EQ(
-      refused_option([&] {
-        history(0.3, {TangentialLoading::force(1.0)}).validate(plane, ElasticPair::on_rigid({1e9, 0.5}), normal, ten);
-      }),
-      "accepted");
   solvers::SolverOptions adhesive;
   adhesive.adhesion = solvers::SolverOptions::Adhesion{};
   adhesive.adhesion->law = AdhesionLaw{AdhesionLawType::maugis_dugdale, 0.1, 1e-8};
-  EXPECT_EQ(
-      refused_option([&] { history(0.3, {TangentialLoading::force(1.0)}).validate(plane, steel, adhesive, ten); }),
-      "adhesion");
+  EXPECT_EQ(refused_option([&] { history(0.3, {TangentialLoading::force(1.0)}).validate(plane, adhesive, ten); }),
+            "adhesion");
+  EXPECT_EQ(refused_option([&] { history(0.3, {TangentialLoading::force(1.0)}).validate(adhesive); }), "adhesion");
   EXPECT_EQ(refused_option([] { FrictionOptions::refuse_coating(); }), "coating");
   EXPECT_EQ(refused_option([] { FrictionOptions::refuse_composite_modulus_only(); }), "pair");
 }

@@ -2,9 +2,9 @@
 // coefficient, and either a history of tangential load steps (each starting
 // from the state the previous one left, tangential_solver.hpp) or gross
 // sliding along a direction (every contact cell at |q| = mu p). Every rule a
-// front end must respect is here, once: the program and the Python package
-// map their flags and keywords onto these fields and restate a
-// SolverOptionError with their own spelling of the option.
+// front end must respect is here, once: the problem builder (problem.hpp)
+// maps the program's flags and Python's keywords onto these fields and names
+// a SolverOptionError by the front end's spelling of the option.
 #pragma once
 
 #include <array>
@@ -64,18 +64,22 @@ struct FrictionOptions {
   // max_alternations are valid (their names).
   void validate() const;
 
-  // validate(), and the rules of the solve it is part of:
+  // validate(), and no adhesion in `normal`: the cohesive tractions make
+  // negative pressures, where Coulomb's bound mu p has no meaning yet
+  // ("adhesion").
+  void validate(const SolverOptions& normal) const;
+
+  // validate(normal), and the rules of the solve on `grid`:
   //  - on a 1D grid the y components are zero ("tangential_load", "sliding");
-  //  - no adhesion: the cohesive tractions make negative pressures, where
-  //    Coulomb's bound mu p has no meaning yet ("adhesion");
   //  - under force or mean-pressure control, every force step is at most
   //    mu P, P the normal load (beyond it the contact slides: impose a
   //    displacement or use sliding) ("tangential_load").
   // Every normal solver is accepted (the dense ones too): for similar
   // bodies the pressure does not depend on the shear, and the tangential
   // step has its own operator; the coupled alternation calls the normal
-  // solver as a black box.
-  void validate(const Grid& grid, const ElasticPair& pair, const SolverOptions& normal, const Loading& loading) const;
+  // solver as a black box. Any pair of bodies is accepted (dissimilar ones
+  // are solved coupled, coupled_step.hpp).
+  void validate(const Grid& grid, const SolverOptions& normal, const Loading& loading) const;
 
   // The refusals of what the friction slice does not support, named for
   // front ends that find them before they build a pair: a coated half-space

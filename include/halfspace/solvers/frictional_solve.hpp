@@ -49,7 +49,7 @@ struct FrictionalSolveResult {
 // `loading` into the pair's half-space (E* of the pair), then the
 // tangential steps of `friction`; coupled for dissimilar bodies (the file
 // comment). Throws SolverOptionError as
-// FrictionOptions::validate(grid, pair, normal, loading) does, InputError
+// FrictionOptions::validate(grid, normal, loading) does, InputError
 // for sizes that do not match the grid, and the tangential solver's
 // InputError when, under approach control, a force step exceeds mu P. On a
 // distributed `layout` the heights and the result's fields are this
