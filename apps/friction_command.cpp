@@ -135,7 +135,8 @@ int run_frictional_solve(const SolveSetup& setup, const FrictionPlace& place) {
   }
 
   // A coupled single step writes its own pressure (under its shear); a
-  // history the normal loading's (each step's pressure is not written yet).
+  // history the normal loading's at the root and, coupled, each step's own
+  // in the step's group.
   const bool history = options.steps() > 1 && !result.steps.empty();
   const SolveResult& normal =
       result.coupled && !history && !result.step_normals.empty() ? result.step_normals.front() : result.normal;
@@ -144,6 +145,7 @@ int run_frictional_solve(const SolveSetup& setup, const FrictionPlace& place) {
   metadata.contact_statistics = place.contact_statistics(normal);
   activity.emplace(fmt::format("writing {}", setup.output.string()));
   if (history) {
+    for (const SolveResult& step : result.step_normals) metadata.step_normals.push_back(&step);
     place.write_history(result.normal, result.steps, loads, metadata);
   } else {
     if (!result.steps.empty()) metadata.tangential = &result.steps.front();

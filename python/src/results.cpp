@@ -109,6 +109,11 @@ void save_sweep(const Sweep& s, const std::filesystem::path& path) {
 void save_history(const History& h, const std::filesystem::path& path) {
   io::ResultMetadata metadata = metadata_of(*h.run);
   metadata.contact_statistics = h.run->steps.front().statistics;
+  if (h.run->steps.size() > 1) {  // coupled: each step's own normal solution
+    for (std::size_t k = 0; k < h.run->tangential.size(); ++k) {
+      metadata.step_normals.push_back(&h.run->steps[h.run->normal_of_tangential(k)].result);
+    }
+  }
   nb::gil_scoped_release release;
   io::write_friction_history(path, h.run->grid, h.run->heights, h.run->steps.front().result, h.run->tangential,
                              h.run->tangential_loads, metadata);
@@ -461,7 +466,7 @@ void bind_results(nb::module_& module) {
 
   nb::class_<History>(module, "History",
                       "A tangential load history (friction): one Result per step (the normal contact with that "
-                      "step's shear) and the history table.")
+                      "step's shear; coupled, dissimilar bodies: the step's own pressure) and the history table.")
       .def("__len__", [](const History& h) { return h.run->tangential.size(); })
       .def(
           "__getitem__",
@@ -469,7 +474,8 @@ void bind_results(nb::module_& module) {
             const long n = static_cast<long>(h.run->tangential.size());
             if (k < 0) k += n;
             if (k < 0 || k >= n) throw nb::index_error("history step out of range");
-            return Result{h.run, 0, static_cast<std::size_t>(k)};
+            const auto step = static_cast<std::size_t>(k);
+            return Result{h.run, h.run->normal_of_tangential(step), step};
           },
           nb::arg("step"))
       .def_prop_ro(

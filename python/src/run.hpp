@@ -36,12 +36,17 @@ struct Run {
   nb::dict stored_attributes;
   std::optional<LayeredMaterial> coating;  // a coated half-space, else none
   // Friction (halfspace.solve(friction=...), halfspace.history): the pair of
-  // bodies, the tangential steps solved under steps[0]'s pressure, what each
-  // imposed, and per step its stick map (1 where a contact cell sticks).
+  // bodies, the tangential steps solved, what each imposed, and per step its
+  // stick map (1 where a contact cell sticks). The steps are solved under
+  // steps[0]'s pressure, or, a coupled history (dissimilar bodies), step k
+  // under its own, steps[k + 1] (steps[0] is then the normal loading's).
   std::optional<ElasticPair> pair;
   std::vector<TangentialResult> tangential;
   std::vector<TangentialLoading> tangential_loads;
   std::vector<std::vector<std::uint8_t>> stick;
+
+  // The index into `steps` of tangential step k's normal solution.
+  std::size_t normal_of_tangential(std::size_t k) const { return steps.size() == tangential.size() + 1 ? k + 1 : 0; }
 
   std::vector<std::size_t> shape() const;
   // Fills contact from the steps' pressures.

@@ -258,15 +258,21 @@ History friction(const nb::object& heights, double dx, double dy, const std::str
     return solvers::solve_frictional_surface(surface.grid, surface.heights, pair, problem.loading, problem.solver,
                                              friction);
   });
-  analysis::SweepStep step;
-  step.loading = problem.loading;
-  // A coupled single step (dissimilar bodies) carries its own pressure, under
-  // its shear; a history the normal loading's.
+  // The normal contact first (Run's steps[0]). A coupled single step
+  // (dissimilar bodies) carries its own pressure, under its shear; a coupled
+  // history has the normal loading's and then each step's own (Run).
   const bool own_pressure = solved.coupled && solved.steps.size() == 1 && solved.step_normals.size() == 1;
-  step.result = own_pressure ? std::move(solved.step_normals.front()) : std::move(solved.normal);
-  step.statistics = contact_statistics_of(surface.grid, step.result);
   std::vector<analysis::SweepStep> steps;
-  steps.push_back(std::move(step));
+  const auto add = [&](SolveResult&& result) {
+    analysis::SweepStep& step = steps.emplace_back();
+    step.loading = problem.loading;
+    step.result = std::move(result);
+    step.statistics = contact_statistics_of(surface.grid, step.result);
+  };
+  add(own_pressure ? std::move(solved.step_normals.front()) : std::move(solved.normal));
+  if (solved.coupled && solved.steps.size() > 1) {
+    for (SolveResult& normal : solved.step_normals) add(std::move(normal));
+  }
   io::SolveProvenance provenance{
       pair.composite_modulus(), problem.loading.mode, problem.threads, command_line, "", height_source, preparation};
   std::shared_ptr<Run> run = make_run(std::move(surface), problem, std::move(provenance), std::move(steps));

@@ -93,6 +93,11 @@ void write_friction_history_contents(const Hdf5Node& root, const Grid& grid, std
       const Hdf5Node step = group.create_group(step_name(k, steps.size()));
       write_tangential_fields(step, grid, steps[k], rows);
       write_tangential_attributes(step, steps[k]);
+      if (!metadata.step_normals.empty()) {
+        // Coupled: the step's own pressure, gap, displacement and contact, and its normal solve's record.
+        write_result_fields(step, grid, *metadata.step_normals[k], rows);
+        write_result_attributes(step, *metadata.step_normals[k]);
+      }
       step.write_string_attribute("tangential_control",
                                   loads[k].control == TangentialControl::force ? "force" : "displacement");
       step.write_double_attribute("tangential_load_x", loads[k].x);
@@ -137,6 +142,17 @@ void write_friction_history(const std::filesystem::path& path, const Grid& grid,
     check_field("slip_y", k, s.state.slip_y.size(), grid);
     check_field("tangential_displacement_x", k, s.state.displacement_x.size(), grid);
     check_field("tangential_displacement_y", k, s.state.displacement_y.size(), grid);
+  }
+  if (!metadata.step_normals.empty()) {
+    if (metadata.step_normals.size() != steps.size()) {
+      throw InputError(fmt::format("write_friction_history: {} step normal solutions for {} steps",
+                                   metadata.step_normals.size(), steps.size()));
+    }
+    for (std::size_t k = 0; k < steps.size(); ++k) {
+      check_field("pressure", k, metadata.step_normals[k]->pressure.size(), grid);
+      check_field("gap", k, metadata.step_normals[k]->gap.size(), grid);
+      check_field("displacement", k, metadata.step_normals[k]->displacement.size(), grid);
+    }
   }
   const std::string csv = friction_history_csv(steps);
   const std::vector<char> image = hdf5_file_image(path, [&](const Hdf5Node& root) {

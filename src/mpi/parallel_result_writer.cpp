@@ -129,13 +129,14 @@ void write_friction_history_slabs(const MpiCommunicator& comm, const std::filesy
     if (comm.rank() == 0) std::filesystem::remove(csv_path, ignored);
   });
   // The file holds the step fields and the normal ones: about 7 fields per
-  // step beside the single result's.
+  // step beside the single result's, and a coupled step's own normal
+  // fields (a single result's without the height and friction fields).
   io::ResultMetadata root_metadata = metadata;
   root_metadata.tangential = &steps.back();
-  const std::uint64_t bound =
-      io::result_file_bound(grid, normal, root_metadata) +
-      steps.size() *
-          (io::kHdf5SmallItemsBound + 7 * io::hdf5_dataset_bound(io::field_shape(grid), io::Compression::deflate));
+  std::uint64_t bound = io::result_file_bound(grid, normal, root_metadata) +
+                        steps.size() * (io::kHdf5SmallItemsBound +
+                                        7 * io::hdf5_dataset_bound(io::field_shape(grid), io::Compression::deflate));
+  for (const solvers::SolveResult* step : metadata.step_normals) bound += io::result_file_bound(grid, *step, {});
   write_file_slabs(comm, path, bound, [&](const io::Hdf5Node& root) {
     io::write_friction_history_contents(root, grid, heights, normal, steps, loads, metadata, csv,
                                         {layout.first_row, comm.rank() == 0});

@@ -347,6 +347,47 @@ TEST(FrictionCliTest, DissimilarBodiesAreSolvedCoupledUnlessSwitchedOff) {
   EXPECT_NEAR(test::read_double_attribute(c.get(), "total_force"), kForce, 1e-6 * kForce);
 }
 
+// A coupled history (steel on a rigid body 2): each step's group holds the
+// step's own pressure, which the growing shear moves, under the same load;
+// uncoupled, the steps have the root's pressure and no pressure of their own.
+TEST(FrictionCliTest, ACoupledHistoryWritesEachStepsPressure) {
+  const TempDir dir;
+  auto arguments = [](const std::string& output, bool coupled) {
+    std::vector<std::string> a = sphere(16, output, {"--friction", "0.3", "--tangential-force", "0.5;2"});
+    const auto e2 = std::find(a.begin(), a.end(), "--E2");
+    *(e2 + 1) = "inf";
+    if (!coupled) a.emplace_back("--no-coupling");
+    return a;
+  };
+  const ProgramRun coupled = run_program(arguments("c.h5", true), dir.path());
+  ASSERT_EQ(coupled.exit_code, kExitOk) << coupled.err;
+  const test::H5 c = test::open_file(dir / "c.h5");
+  const auto p0 = test::read_dataset<double>(c.get(), "/steps/000/pressure", H5T_NATIVE_DOUBLE);
+  const auto p1 = test::read_dataset<double>(c.get(), "/steps/001/pressure", H5T_NATIVE_DOUBLE);
+  ASSERT_EQ(p0.size(), 16u * 16u);
+  ASSERT_EQ(p1.size(), p0.size());
+  double change = 0.0;
+  for (std::size_t i = 0; i < p0.size(); ++i) change = std::max(change, std::abs(p1[i] - p0[i]));
+  const double peak = *std::max_element(p1.begin(), p1.end());
+  EXPECT_GT(change, 1e-4 * peak) << "largest change " << change << " Pa";
+  for (const std::string step : {"/steps/000", "/steps/001"}) {
+    const hid_t group = H5Gopen2(c.get(), step.c_str(), H5P_DEFAULT);
+    ASSERT_GE(group, 0);
+    EXPECT_NEAR(test::read_double_attribute(group, "total_force"), kForce, 1e-6 * kForce) << step;
+    EXPECT_EQ(test::read_int64_attribute(group, "normal_tangential_coupling"), 1) << step;
+    H5Gclose(group);
+  }
+  EXPECT_EQ(test::dataset_shape(c.get(), "/steps/001/contact"), (std::vector<hsize_t>{16, 16}));
+  std::ifstream sidecar(dir / "c.xdmf");
+  const std::string xdmf((std::istreambuf_iterator<char>(sidecar)), std::istreambuf_iterator<char>());
+  EXPECT_NE(xdmf.find("c.h5:/steps/001/pressure"), std::string::npos);
+
+  const ProgramRun plain = run_program(arguments("u.h5", false), dir.path());
+  ASSERT_EQ(plain.exit_code, kExitOk) << plain.err;
+  const test::H5 u = test::open_file(dir / "u.h5");
+  EXPECT_LT(H5Lexists(u.get(), "/steps/001/pressure", H5P_DEFAULT), 1);
+}
+
 TEST(FrictionCliTest, RefusalsNameTheOptions) {
   const TempDir dir;
   struct Case {

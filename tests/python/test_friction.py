@@ -153,11 +153,31 @@ def test_dissimilar_bodies_are_solved_coupled():
     assert r.friction["coupling_alternations"] >= 2
 
 
+def test_a_coupled_history_keeps_each_steps_pressure(tmp_path):
+    """Dissimilar bodies (a rigid body 2): each step of a history has its own pressure, moved by its
+    shear under the same load; history[k] shows it, and save() writes it into the step's group, equal
+    to the one in memory."""
+    history = hs.history(sphere(16), E1=E, nu1=NU, E2=math.inf, nu2=NU, force=FORCE, friction=MU,
+                         tangential_force=[0.5, 2.0], threads=1, fft_planning="estimate")
+    assert history.converged and history[1].friction["coupled"]
+    p0, p1 = np.array(history[0].pressure), np.array(history[1].pressure)
+    assert np.abs(p1 - p0).max() > 1e-4 * p1.max()
+    assert history[1].total_force == pytest.approx(FORCE, rel=1e-6)
+    assert history.normal.shear_x is None  # the normal loading's contact, before the first step
+    history.save(tmp_path / "h.h5")
+    with h5py.File(tmp_path / "h.h5") as f:
+        np.testing.assert_array_equal(f["steps/000/pressure"][...], p0)
+        np.testing.assert_array_equal(f["steps/001/pressure"][...], p1)
+        assert f["steps/001"].attrs["total_force"] == history[1].total_force
+        np.testing.assert_array_equal(f["pressure"][...], history.normal.pressure)
+
+
 def test_material_refusals():
     surface = sphere(16)
     with pytest.raises(hs.InputError, match=r"friction=0.3 with e_star=.*: E\* only does not fix the tangential"):
         hs.solve(surface, e_star=E_STAR, force=FORCE, friction=MU, tangential_force=1.0)
-    with pytest.raises(hs.InputError, match=r"coated half-space \(coating\['thickness'\].*\) cannot be combined with fri"):
+    coated = r"the coated half-space \(coating\['thickness'\].*\) cannot be combined with friction"
+    with pytest.raises(hs.InputError, match=coated):
         hs.solve(surface, coating=dict(thickness=1e-5, layer_E=E, layer_nu=NU, substrate_E=E, substrate_nu=NU),
                  force=FORCE, friction=MU, tangential_force=1.0)
 

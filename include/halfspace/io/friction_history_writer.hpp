@@ -22,13 +22,17 @@ namespace halfspace::io {
 // history_steps and history_csv_md5 (the MD5 of the CSV);
 // /steps/NNN (zero-padded, at least 3 digits): the step's friction fields
 // and attributes, and tangential_control ("force" or "displacement"),
-// tangential_load_x, _y (what was imposed); /history/<column> (float64, one
+// tangential_load_x, _y (what was imposed), and with metadata.step_normals
+// (a coupled history) the step's own normal fields and attributes (pressure,
+// gap, displacement, contact, residual_history, total_force, ...) as a
+// single result's root holds them; /history/<column> (float64, one
 // entry per step) for every column of the CSV. The CSV, at
 // history_csv_path(path), has the columns step, Q_x, Q_y, delta_x, delta_y,
 // stick_fraction, dissipated_energy (N or N/m, m, J or J/m in 1D; the
 // dissipated energy is the sum over cells of -q . ds times the cell area in
 // that step). metadata.tangential is ignored. Throws InputError if `steps`
-// is empty, `loads` has another length, or a field does not match the grid;
+// is empty, `loads` or metadata.step_normals (when given) has another
+// length, or a field does not match the grid;
 // FileError naming the path if a file cannot be written.
 void write_friction_history(const std::filesystem::path& path, const Grid& grid, std::span<const double> height,
                             const SolveResult& normal, std::span<const TangentialResult> steps,

@@ -48,6 +48,11 @@ struct ResultMetadata {
   // (result_attributes.hpp's tangential table) the result also holds; must
   // outlive the write. Null: a frictionless result.
   const TangentialResult* tangential = nullptr;
+  // A coupled friction history (dissimilar bodies): each step's own normal
+  // solution (its pressure under its shear), one per step, written into the
+  // step's group (write_friction_history); must outlive the write. Empty:
+  // every step has the root's pressure.
+  std::vector<const SolveResult*> step_normals;
 };
 
 // Datasets /height, /pressure, /gap, /displacement (float64) and /contact

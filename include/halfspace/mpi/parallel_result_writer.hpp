@@ -34,7 +34,7 @@ void write_result_slabs(const MpiCommunicator& comm, const std::filesystem::path
 
 // A friction history (io::write_friction_history's file and its CSV
 // beside it) written the same way: `heights`, the normal result's and every
-// step's fields hold this process's rows; the steps' integrals, `loads` and
+// step's fields (metadata.step_normals' too) hold this process's rows; the steps' integrals, `loads` and
 // `metadata` are the same on every process. The CSV, written by the first
 // process once the file is complete, is removed first, so an interrupted
 // write leaves no mismatched pair. Throws InputError if `steps` is empty or
