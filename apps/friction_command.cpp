@@ -1,5 +1,5 @@
 // The frictional solve of the program (friction_command.hpp): everything was
-// validated by make_solve_setup (friction_setup.hpp).
+// validated by make_solve_setup (the problem builder, halfspace/problem.hpp).
 #include "friction_command.hpp"
 
 #include <fmt/format.h>

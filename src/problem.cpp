@@ -467,11 +467,10 @@ std::optional<solvers::FrictionOptions> Rules::friction(const solvers::SolverOpt
   const std::string mu = o_.friction ? describe("friction", *o_.friction) : std::string();
   if (!o_.friction) {
     for (const Presence& options : {tangential, settings}) {
-      const std::vector<std::string> present = given(options);
-      if (present.empty()) continue;
-      const std::string_view first = std::ranges::find(options, true, &Presence::value_type::second)->first;
-      throw InputError(fmt::format("{} needs {} (the Coulomb friction coefficient)", s_.describe(first, *value(first)),
-                                   s_.describe("friction", "MU")));
+      const auto first = std::ranges::find(options, true, &Presence::value_type::second);
+      if (first == options.end()) continue;
+      throw InputError(fmt::format("{} needs {} (the Coulomb friction coefficient)",
+                                   s_.describe(first->first, *value(first->first)), s_.describe("friction", "MU")));
     }
     return std::nullopt;
   }
