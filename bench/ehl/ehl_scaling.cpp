@@ -10,20 +10,15 @@
 #include <cstdlib>
 #include <string_view>
 
+#include "ehl_case.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/lubrication/elastic_film.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
 
-namespace {
-
 using namespace halfspace;
 using namespace halfspace::lubrication;
-
-constexpr double kEStar = 1.1e11;
-constexpr double kRadius = 0.01;
-constexpr double kViscosity = 0.04;
-
-}  // namespace
+using bench::kEStar;
+using bench::kRadius;
 
 int main(int argc, char** argv) {
   if (argc < 2) {
@@ -42,23 +37,10 @@ int main(int argc, char** argv) {
   const auto upstream = static_cast<std::size_t>(std::lround(3.5 * a / dx));
   const std::size_t half = (n - 1) / 2;
   const Grid grid = Grid::plane(n, n, dx, dx, Boundary::free);
-  Eigen::ArrayXd gap(static_cast<Eigen::Index>(n * n));
-  for (std::size_t j = 0; j < n; ++j) {
-    for (std::size_t i = 0; i < n; ++i) {
-      const double x = (static_cast<double>(i) - static_cast<double>(upstream)) * dx;
-      const double y = (static_cast<double>(j) - static_cast<double>(half)) * dx;
-      gap[static_cast<Eigen::Index>(j * n + i)] = (x * x + y * y) / (2.0 * kRadius);
-    }
-  }
-  FlowConditions conditions;
-  conditions.viscosity = kViscosity;
-  conditions.entrainment_velocity = {u * e_prime * kRadius / kViscosity, 0.0};
-  const LubricantLaws laws{.piezoviscosity = Piezoviscosity::roelands,
-                           .pressure_viscosity = g / (2.0 * kEStar),
-                           .compressibility = Compressibility::dowson_higginson};
   FftInfluenceOperator op(grid, kEStar);
   ElasticFilmOptions options{.load = load, .linear_solve = solve, .preconditioner_neighbourhood = neighbourhood};
-  const ElasticFilm f = solve_elastic_film(op, gap, conditions, laws, options);
+  const ElasticFilm f = solve_elastic_film(op, bench::parabolic_gap(grid, upstream, half), bench::rolling(u),
+                                           bench::roelands_laws(g), options);
   const double hd_central =
       2.69 * std::pow(u, 0.67) * std::pow(g, 0.53) * std::pow(w, -0.067) * (1.0 - 0.61 * std::exp(-0.73));
   const double hd_minimum =

@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "ehl_case.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/lubrication/elastic_film.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
@@ -18,20 +19,25 @@ namespace {
 
 using namespace halfspace;
 using namespace halfspace::lubrication;
-
-constexpr double kEStar = 1.1e11;
-constexpr double kRadius = 0.01;
-constexpr double kViscosity = 0.04;
+using bench::kEStar;
+using bench::kRadius;
 
 struct Film {
   ElasticFilm film;
   double central, minimum;
 };
 
-LubricantLaws laws_for(double g) {
-  return {.piezoviscosity = Piezoviscosity::roelands,
-          .pressure_viscosity = g / (2.0 * kEStar),
-          .compressibility = Compressibility::dowson_higginson};
+// The film on `grid` whose gap has its vertex at node (upstream, centre_row);
+// its thicknesses in units of R.
+Film solved(const Grid& grid, std::size_t upstream, std::size_t centre_row, double load, double u, double g,
+            CouetteScheme scheme) {
+  FftInfluenceOperator op(grid, kEStar);
+  Film f{solve_elastic_film(op, bench::parabolic_gap(grid, upstream, centre_row), bench::rolling(u),
+                            bench::roelands_laws(g), {.load = load, .couette_scheme = scheme}),
+         0, 0};
+  f.central = f.film.central_film_thickness / kRadius;
+  f.minimum = f.film.minimum_film_thickness / kRadius;
+  return f;
 }
 
 // x in [-4.5 b, 1.5 b] on `cells` per Hertz half-width b.
@@ -43,19 +49,7 @@ Film line(double w, double u, double g, double cells, CouetteScheme scheme) {
   const auto upstream = static_cast<std::size_t>(std::lround(4.5 * cells));
   const std::size_t n = upstream + static_cast<std::size_t>(std::lround(1.5 * cells)) + 1;
   const Grid grid = Grid::line(n, dx, Boundary::free);
-  Eigen::ArrayXd gap(static_cast<Eigen::Index>(n));
-  for (std::size_t i = 0; i < n; ++i) {
-    const double x = (static_cast<double>(i) - static_cast<double>(upstream)) * dx;
-    gap[static_cast<Eigen::Index>(i)] = x * x / (2.0 * kRadius);
-  }
-  FlowConditions conditions;
-  conditions.viscosity = kViscosity;
-  conditions.entrainment_velocity = {u * e_prime * kRadius / kViscosity, 0.0};
-  FftInfluenceOperator op(grid, kEStar);
-  Film f{solve_elastic_film(op, gap, conditions, laws_for(g), {.load = load, .couette_scheme = scheme}), 0, 0};
-  f.central = f.film.central_film_thickness / kRadius;
-  f.minimum = f.film.minimum_film_thickness / kRadius;
-  return f;
+  return solved(grid, upstream, 0, load, u, g, scheme);
 }
 
 // x in [-3.5 a, 1.5 a], y in [-2 a, 2 a] on `cells` per Hertz radius a.
@@ -69,22 +63,7 @@ Film point(double w, double u, double g, double cells, CouetteScheme scheme) {
   const auto half = static_cast<std::size_t>(std::lround(2.0 * cells));
   const std::size_t ny = 2 * half + 1;
   const Grid grid = Grid::plane(nx, ny, dx, dx, Boundary::free);
-  Eigen::ArrayXd gap(static_cast<Eigen::Index>(nx * ny));
-  for (std::size_t j = 0; j < ny; ++j) {
-    for (std::size_t i = 0; i < nx; ++i) {
-      const double x = (static_cast<double>(i) - static_cast<double>(upstream)) * dx;
-      const double y = (static_cast<double>(j) - static_cast<double>(half)) * dx;
-      gap[static_cast<Eigen::Index>(j * nx + i)] = (x * x + y * y) / (2.0 * kRadius);
-    }
-  }
-  FlowConditions conditions;
-  conditions.viscosity = kViscosity;
-  conditions.entrainment_velocity = {u * e_prime * kRadius / kViscosity, 0.0};
-  FftInfluenceOperator op(grid, kEStar);
-  Film f{solve_elastic_film(op, gap, conditions, laws_for(g), {.load = load, .couette_scheme = scheme}), 0, 0};
-  f.central = f.film.central_film_thickness / kRadius;
-  f.minimum = f.film.minimum_film_thickness / kRadius;
-  return f;
+  return solved(grid, upstream, half, load, u, g, scheme);
 }
 
 }  // namespace

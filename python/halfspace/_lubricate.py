@@ -3,6 +3,7 @@ stribeck: the mixed film's Stribeck curve, as ``halfspace lubricate --mixed --sp
 
 from __future__ import annotations
 
+import inspect
 from typing import Any, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy as np
@@ -247,21 +248,17 @@ def _arguments(surface, *, viscosity: float, entrainment_velocity: Velocity,
         _optional_float(boundary_film, "boundary_film"), _speeds(speeds), None if threads is None else int(threads))
 
 
-def lubricate(surface: Union[HeightMap, np.ndarray], *, viscosity: float, entrainment_velocity: Velocity,
-              dx: Optional[float] = None, dy: Optional[float] = None, sliding_velocity: Optional[Velocity] = None,
-              separation: Optional[float] = None, force: Optional[float] = None, inlet_pressure: float = 0.0,
-              outlet_pressure: float = 0.0, side_pressure: float = 0.0, periodic_x: bool = False,
-              periodic_y: bool = False, supply_fluid_fraction: float = 1.0, tol: Optional[float] = None,
-              max_iter: Optional[int] = None, e_star: Optional[float] = None, E1: Optional[float] = None,
-              nu1: Optional[float] = None, E2: Optional[float] = None, nu2: Optional[float] = None,
-              coating: Optional[Mapping[str, float]] = None, boundary: str = "free",
-              pressure_viscosity: Optional[float] = None, piezoviscosity: Optional[str] = None,
-              roelands_index: Optional[float] = None, compressibility: Optional[str] = None,
-              couette_scheme: Optional[str] = None, eyring_stress: Optional[float] = None,
-              limiting_shear_stress: Optional[float] = None,
-              limiting_shear_slope: Optional[float] = None, mixed: bool = False, offset: Optional[float] = None,
-              contact_friction: Optional[float] = None, boundary_film: Optional[float] = None,
-              threads: Optional[int] = None) -> Film:
+def _called(name: str, surface, keywords: dict, speeds=None, **fixed) -> tuple:
+    """_arguments for the public function `name`: a wrong keyword's TypeError names `name`."""
+    if "speeds" in keywords:
+        raise TypeError(f"{name}() got an unexpected keyword argument 'speeds'")
+    try:
+        return _arguments(surface, speeds=speeds, **fixed, **keywords)
+    except TypeError as error:
+        raise TypeError(str(error).replace("_arguments()", f"{name}()")) from None
+
+
+def lubricate(surface: Union[HeightMap, np.ndarray], **keywords: Any) -> Film:
     """Solves the Reynolds film between a surface and a flat, as ``halfspace lubricate``.
 
     surface: a HeightMap, or a 1D/2D array of heights (m, ``(ny, nx)``) with
@@ -313,16 +310,13 @@ def lubricate(surface: Union[HeightMap, np.ndarray], *, viscosity: float, entrai
     ``Film.converged`` and ``.message``); bad options raise InputError naming
     the keyword, its value and the rule. The GIL is released while solving.
     """
-    return Film(_core.lubricate(*_arguments(surface, speeds=None, viscosity=viscosity,
-        entrainment_velocity=entrainment_velocity, dx=dx, dy=dy, sliding_velocity=sliding_velocity,
-        separation=separation, force=force, inlet_pressure=inlet_pressure, outlet_pressure=outlet_pressure,
-        side_pressure=side_pressure, periodic_x=periodic_x, periodic_y=periodic_y,
-        supply_fluid_fraction=supply_fluid_fraction, tol=tol, max_iter=max_iter, e_star=e_star, E1=E1, nu1=nu1,
-        E2=E2, nu2=nu2, coating=coating, boundary=boundary, pressure_viscosity=pressure_viscosity,
-        piezoviscosity=piezoviscosity, roelands_index=roelands_index, compressibility=compressibility,
-        couette_scheme=couette_scheme, eyring_stress=eyring_stress, limiting_shear_stress=limiting_shear_stress,
-        limiting_shear_slope=limiting_shear_slope, mixed=mixed, offset=offset, contact_friction=contact_friction,
-        boundary_film=boundary_film, threads=threads)))
+    return Film(_core.lubricate(*_called("lubricate", surface, keywords)))
+
+
+# lubricate's keywords are _arguments' (one list): help() and inspect show them.
+lubricate.__signature__ = inspect.signature(_arguments).replace(
+    parameters=[p for p in inspect.signature(_arguments).parameters.values() if p.name != "speeds"],
+    return_annotation=Film)
 
 
 def stribeck(surface: Union[HeightMap, np.ndarray], speeds: Sequence[float], **keywords: Any) -> StribeckCurve:
@@ -341,8 +335,4 @@ def stribeck(surface: Union[HeightMap, np.ndarray], speeds: Sequence[float], **k
     or TypeError (an unknown keyword), naming it."""
     if "mixed" in keywords:
         raise TypeError("stribeck() takes no keyword 'mixed': the Stribeck curve is the mixed film's")
-    try:
-        arguments = _arguments(surface, speeds=speeds, mixed=True, **keywords)
-    except TypeError as error:
-        raise TypeError(str(error).replace("_arguments()", "stribeck()")) from None
-    return StribeckCurve(_core.lubricate(*arguments))
+    return StribeckCurve(_core.lubricate(*_called("stribeck", surface, keywords, speeds=speeds, mixed=True)))

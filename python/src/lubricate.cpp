@@ -186,6 +186,37 @@ nb::dict solve_rigid(const Grid& grid, const Eigen::ArrayXd& heights, const Flow
   return out;
 }
 
+// The numbers an elastic and a mixed film report alike, under the keys of
+// the program's summary, in its order.
+template <class Film>
+void put_elastic_summary(nb::dict& out, const char* model, const Grid& grid, const Film& film,
+                         double cavitated_fraction, long long film_solves, const LubricantLaws& laws, double viscosity,
+                         CouetteScheme couette_scheme, double e_star) {
+  out["model"] = model;
+  out["status"] = std::string(to_string(film.status));
+  out["message"] = film.message;
+  out["converged"] = film.converged();
+  out["load"] = film.load;
+  out["mean_pressure"] = film.load / grid.domain_area();
+  out["separation"] = film.offset;
+  out["central_film_thickness"] = film.central_film_thickness;
+  out["minimum_film_thickness"] = film.minimum_film_thickness;
+  out["max_pressure"] = film.max_pressure;
+  out["cavitated_fraction"] = cavitated_fraction;
+  out["iterations"] = film.iterations;
+  out["film_solves"] = film_solves;
+  out["relative_residual"] = film.relative_residual;
+  out["solve_seconds"] = film.wall_seconds;
+  out["inflow"] = nb::none();
+  out["outflow"] = nb::none();
+  out["load_error"] = film.load_error;
+  out["e_star"] = e_star;
+  out["piezoviscosity"] = std::string(to_string(laws.piezoviscosity));
+  out["roelands_index"] = laws.piezoviscosity == Piezoviscosity::roelands ? laws.roelands_exponent(viscosity) : 0.0;
+  out["compressibility"] = std::string(to_string(laws.compressibility));
+  out["couette_scheme"] = std::string(to_string(couette_scheme));
+}
+
 nb::dict solve_elastic(const Grid& grid, const Eigen::ArrayXd& heights, const FlowConditions& conditions,
                        const Keywords& k, const std::optional<LayeredMaterial>& coating, double e_star) {
   if (!k.force) throw InputError("an elastic film (EHL) is load controlled: pass force=, not separation=");
@@ -212,31 +243,9 @@ nb::dict solve_elastic(const Grid& grid, const Eigen::ArrayXd& heights, const Fl
   });
   const FilmShear shear = film_shear(grid, conditions, laws, k.limits, film.film, film.pressure, film.fluid_fraction);
   nb::dict out;
-  out["model"] = "elastic";
-  out["status"] = std::string(to_string(film.status));
-  out["message"] = film.message;
-  out["converged"] = film.converged();
-  out["load"] = film.load;
-  out["mean_pressure"] = film.load / grid.domain_area();
-  out["separation"] = film.offset;
-  out["central_film_thickness"] = film.central_film_thickness;
-  out["minimum_film_thickness"] = film.minimum_film_thickness;
-  out["max_pressure"] = film.max_pressure;
-  out["cavitated_fraction"] =
-      static_cast<double>((film.fluid_fraction < 1.0).count()) / static_cast<double>(grid.size());
-  out["iterations"] = film.iterations;
-  out["film_solves"] = 1;
-  out["relative_residual"] = film.relative_residual;
-  out["solve_seconds"] = film.wall_seconds;
-  out["inflow"] = nb::none();
-  out["outflow"] = nb::none();
-  out["load_error"] = film.load_error;
-  out["e_star"] = e_star;
-  out["piezoviscosity"] = std::string(to_string(laws.piezoviscosity));
-  out["roelands_index"] =
-      laws.piezoviscosity == Piezoviscosity::roelands ? laws.roelands_exponent(conditions.viscosity) : 0.0;
-  out["compressibility"] = std::string(to_string(laws.compressibility));
-  out["couette_scheme"] = std::string(to_string(options.couette_scheme));
+  const double cavitated = static_cast<double>((film.fluid_fraction < 1.0).count()) / static_cast<double>(grid.size());
+  put_elastic_summary(out, "elastic", grid, film, cavitated, 1, laws, conditions.viscosity, options.couette_scheme,
+                      e_star);
   out["deformation"] = owning_array(std::move(film.deformation), shape_of(grid));
   put_fields(out, grid, std::move(film.pressure), std::move(film.film), std::move(film.fluid_fraction), shear);
   return out;
@@ -247,29 +256,8 @@ nb::dict solve_elastic(const Grid& grid, const Eigen::ArrayXd& heights, const Fl
 nb::dict mixed_dict(const Grid& grid, MixedFilm film, const MixedFilmOptions& options, const LubricantLaws& laws,
                     double viscosity, double e_star, long long film_solves) {
   nb::dict out;
-  out["model"] = "mixed";
-  out["status"] = std::string(to_string(film.status));
-  out["message"] = film.message;
-  out["converged"] = film.converged();
-  out["load"] = film.load;
-  out["mean_pressure"] = film.load / grid.domain_area();
-  out["separation"] = film.offset;
-  out["central_film_thickness"] = film.central_film_thickness;
-  out["minimum_film_thickness"] = film.minimum_film_thickness;
-  out["max_pressure"] = film.max_pressure;
-  out["cavitated_fraction"] = film.cavitated_fraction;
-  out["iterations"] = film.iterations;
-  out["film_solves"] = film_solves;
-  out["relative_residual"] = film.relative_residual;
-  out["solve_seconds"] = film.wall_seconds;
-  out["inflow"] = nb::none();
-  out["outflow"] = nb::none();
-  out["load_error"] = film.load_error;
-  out["e_star"] = e_star;
-  out["piezoviscosity"] = std::string(to_string(laws.piezoviscosity));
-  out["roelands_index"] = laws.piezoviscosity == Piezoviscosity::roelands ? laws.roelands_exponent(viscosity) : 0.0;
-  out["compressibility"] = std::string(to_string(laws.compressibility));
-  out["couette_scheme"] = std::string(to_string(options.couette_scheme));
+  put_elastic_summary(out, "mixed", grid, film, film.cavitated_fraction, film_solves, laws, viscosity,
+                      options.couette_scheme, e_star);
   out["entrainment_speed"] = film.entrainment_speed;
   out["fluid_load"] = film.fluid_load;
   out["contact_load"] = film.contact_load;

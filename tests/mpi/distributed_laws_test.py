@@ -53,41 +53,19 @@ kProcessCounts = (1, 2, 3)
 
 harness = Harness(sys.argv)
 mpi_program, serial_program, mpiexec, source_dir, work_dir = harness.arguments
-environment = harness.environment
-failures = harness.failures
-run = harness.run
-run_mpi = harness.run_mpi
 fail = harness.fail
 
 
 def compare_attributes(where, got, want, tolerance, skipped):
-    if set(got.keys()) != set(want.keys()):
-        fail(f"{where}: attributes differ: only distributed {sorted(set(got.keys()) - set(want.keys()))}, "
-             f"only serial {sorted(set(want.keys()) - set(got.keys()))}")
-    for name in sorted(set(got.keys()) & set(want.keys())):
-        if name in kRunAttributes or name in skipped:
-            continue
-        a, b = got[name], want[name]
-        if isinstance(b, (float, np.floating)):
-            scale = 1.0 if name in kAbsoluteAttributes else max(abs(float(b)), 1e-300)
-            if abs(float(a) - float(b)) > tolerance * scale:
-                fail(f"{where}: attribute {name} = {a!r}, serial {b!r} (relative {abs(a - b) / scale:.2e})")
-        elif not np.array_equal(np.asarray(a), np.asarray(b)):
-            fail(f"{where}: attribute {name} = {a!r}, serial {b!r}")
+    harness.compare_attributes(where, got, want, kRunAttributes | skipped, tolerance, kAbsoluteAttributes)
 
 
 def compare_files(where, got_path, want_path, required, tolerance, skipped):
     with h5py.File(got_path, "r") as got, h5py.File(want_path, "r") as want:
         compare_attributes(where + " /", got.attrs, want.attrs, tolerance, skipped)
-        names, got_names = [], []
-        want.visit(names.append)
-        got.visit(got_names.append)
-        if sorted(names) != sorted(got_names):
-            fail(f"{where}: objects differ: {sorted(got_names)} vs serial {sorted(names)}")
+        names = harness.same_objects(where, got, want, required)
+        if names is None:
             return
-        missing = [name for name in required if name not in names]
-        if missing:
-            fail(f"{where}: the serial file lacks {missing}: the case does not test what it should")
         worst = 0.0
         for name in names:
             compare_attributes(f"{where} /{name}", got[name].attrs, want[name].attrs, tolerance, skipped)
@@ -97,21 +75,10 @@ def compare_files(where, got_path, want_path, required, tolerance, skipped):
             if base in kRunAttributes or base in skipped or (
                     base in ("residual_history", "residual") and "residual" in skipped):
                 continue  # the run's, or the path's (a sweep's iterations, the residual)
-            a, b = got[name], want[name]
-            if a.shape != b.shape or a.dtype != b.dtype:
-                fail(f"{where}: /{name} is {a.shape} {a.dtype}, serial {b.shape} {b.dtype}")
-                continue
-            x, y = a[()], b[()]
-            if np.issubdtype(y.dtype, np.floating):
-                scale = max(float(np.max(np.abs(y))), 1e-300) if y.size else 1.0
-                if base in kAbsoluteAttributes:
-                    scale = 1.0  # a sweep's residuals: rounding themselves
-                error = float(np.max(np.abs(x - y))) / scale if y.size else 0.0
-                worst = max(worst, error)
-                if error > tolerance:
-                    fail(f"{where}: /{name} differs by {error:.2e} of its largest value (allowed {tolerance:.0e})")
-            elif not np.array_equal(x, y):
-                fail(f"{where}: /{name} differs in {int(np.count_nonzero(x != y))} cells")
+            # A sweep's residuals are rounding themselves: compared absolutely.
+            absolute = base in kAbsoluteAttributes
+            worst = max(worst, harness.compare_dataset(where, name, got[name], want[name], tolerance,
+                                                       lambda y: 1.0 if absolute else None))
         print(f"{where}: largest field difference {worst:.2e} of the field's largest value")
 
 
@@ -218,7 +185,7 @@ for processes in (2, 3):
              "--kind sphere is not available with more than one process yet"),
             (["--kind", "self-affine", "--grid", "64", "--size", "64e-6", "--rms-height", "1e-6"],
              "a 1D profile is not available with more than one process yet")):
-        result = run_mpi(processes, ["generate"] + arguments + ["--output", refused])
+        result = harness.run_mpi(processes, ["generate"] + arguments + ["--output", refused])
         errors = [line for line in result.stderr.splitlines() if line.startswith("error:")]
         if result.returncode != 1 or len(errors) != 1 or expected not in errors[0] or os.path.exists(refused):
             fail(f"generate {arguments[1]}, {processes} processes: exit {result.returncode}, errors {errors}, "
@@ -229,8 +196,8 @@ for processes in (2, 3):
 # Still refused on several processes (free coated grids): one error line,
 # exit 1, nothing written.
 for processes in (2, 3):
-    result = run_mpi(processes, ["solve"] + coated[:3] + ["free"] + coated[4:] +
-                     ["--mean-pressure", "2e8", "--output", refused])
+    result = harness.run_mpi(processes, ["solve"] + coated[:3] + ["free"] + coated[4:] +
+                             ["--mean-pressure", "2e8", "--output", refused])
     errors = [line for line in result.stderr.splitlines() if line.startswith("error:")]
     expected = "a coated half-space on a free grid is not available with more than one process yet"
     if result.returncode != 1 or len(errors) != 1 or expected not in errors[0] or os.path.exists(refused):
@@ -239,7 +206,5 @@ for processes in (2, 3):
     else:
         print(f"free coated, {processes} processes: {errors[0]}")
 
-if failures:
-    print(f"{len(failures)} failure(s)")
-    sys.exit(1)
+harness.finish()
 print("all distributed solves match the serial program")

@@ -40,10 +40,6 @@ kProcessCounts = (1, 2, 3)
 
 harness = Harness(sys.argv)
 mpi_program, serial_program, mpiexec, source_dir, work_dir = harness.arguments
-environment = harness.environment
-failures = harness.failures
-run = harness.run
-run_mpi = harness.run_mpi
 fail = harness.fail
 
 
@@ -57,30 +53,15 @@ def close(name, got, want):
 
 
 def compare_attributes(where, got, want):
-    if set(got.attrs) != set(want.attrs):
-        fail(f"{where}: attributes differ: only distributed {sorted(set(got.attrs) - set(want.attrs))}, "
-             f"only serial {sorted(set(want.attrs) - set(got.attrs))}")
-    for name in sorted(set(got.attrs) & set(want.attrs)):
-        if name in kRunValues:
-            continue
-        a, b = got.attrs[name], want.attrs[name]
-        if isinstance(b, (float, np.floating)):
-            ok, error = close(name, a, b)
-            if not ok:
-                fail(f"{where}: attribute {name} = {a!r}, serial {b!r} (difference {error:.2e})")
-        elif not np.array_equal(np.asarray(a), np.asarray(b)):
-            fail(f"{where}: attribute {name} = {a!r}, serial {b!r}")
+    harness.compare_attributes(where, got.attrs, want.attrs, kRunValues, kTolerance, kAbsoluteValues)
 
 
 def compare_files(where, got_path, want_path):
     worst = 0.0
     with h5py.File(got_path, "r") as got, h5py.File(want_path, "r") as want:
         compare_attributes(where + " /", got, want)
-        names, got_names = [], []
-        want.visit(names.append)
-        got.visit(got_names.append)
-        if sorted(names) != sorted(got_names):
-            fail(f"{where}: objects differ: {sorted(got_names)} vs serial {sorted(names)}")
+        names = harness.same_objects(where, got, want)
+        if names is None:
             return
         for name in names:
             compare_attributes(f"{where} /{name}", got[name], want[name])
@@ -175,8 +156,9 @@ solve_case("hertz-sweep-approach", hertz + ["--approach", "2e-6,3e-6,3.5e-6"], s
 # iterations: 32-row blocks straddle the slabs of 3 processes (118, 118 and
 # 116 rows).
 surface = os.path.join(work_dir, "rough-512x352.h5")
-generated = run([serial_program, "generate", "--kind", "self-affine", "--grid", "512x352", "--size", "1e-3x0.6875e-3",
-                 "--hurst", "0.8", "--rms-slope", "0.1", "--seed", "3", "--output", surface, "--quiet"])
+generated = harness.run([serial_program, "generate", "--kind", "self-affine", "--grid", "512x352", "--size",
+                         "1e-3x0.6875e-3", "--hurst", "0.8", "--rms-slope", "0.1", "--seed", "3", "--output", surface,
+                         "--quiet"])
 if generated.returncode != 0:
     fail(f"generating the deflation case's surface failed: {generated.stderr.strip()}")
 else:
@@ -213,8 +195,8 @@ for processes in (2, 3):
                  os.path.join(work_dir, "no-such-directory", "sweep.h5"))
     limited = os.path.join(work_dir, "limited-sweep.h5")
     command = " ".join([mpi_program, "solve"] + rough + sweep_loads + ["--output", limited])
-    result = run([mpiexec, "--oversubscribe", "--mca", "btl", "self,tcp", "-np", str(processes), "sh", "-c",
-                  "ulimit -f 64; exec " + command])
+    result = harness.run([mpiexec, "--oversubscribe", "--mca", "btl", "self,tcp", "-np", str(processes), "sh", "-c",
+                          "ulimit -f 64; exec " + command])
     where = f"sweep under a file-size limit, {processes} processes"
     errors = [line for line in result.stderr.splitlines() if line.startswith("error:")]
     if result.returncode != kExitInputError:
@@ -238,8 +220,8 @@ if os.path.exists("/usr/bin/time"):
     command = " ".join([mpi_program, "solve", "--geometry", "sphere", "--radius", "0.01", "--grid", "1024x1024",
                         "--size", "1e-3x1e-3", "--boundary", "periodic", "--approach", "2e-6,3e-6,3.5e-6",
                         "--tol", "1e-8", "--output", big_sweep] + common)
-    result = run([mpiexec, "--oversubscribe", "-np", "2", "sh", "-c",
-                  f"exec /usr/bin/time -v -o {peaks_dir}/rank$OMPI_COMM_WORLD_RANK {command}"])
+    result = harness.run([mpiexec, "--oversubscribe", "-np", "2", "sh", "-c",
+                          f"exec /usr/bin/time -v -o {peaks_dir}/rank$OMPI_COMM_WORLD_RANK {command}"])
     where = "1024^2 sweep on 2 processes"
     if result.returncode != 0:
         fail(f"{where}: exit {result.returncode}: {result.stderr.strip()}")
@@ -259,7 +241,5 @@ if os.path.exists("/usr/bin/time"):
         if os.path.exists(path):
             os.remove(path)
 
-if failures:
-    print(f"{len(failures)} failure(s)")
-    sys.exit(1)
+harness.finish()
 print("all distributed multilevel solves and sweeps match the serial program")

@@ -17,28 +17,14 @@ import sys
 
 import h5py
 import numpy as np
-from mpi_harness import Harness
+from mpi_harness import Harness, kFieldTolerance, kProcessCounts, kRunAttributes
 
-# The distributed reductions add the processes' partial sums in another order
-# than the serial fixed blocks, and FFTW-MPI's transforms round differently
-# from the serial ones: equal to rounding, not bitwise.
-kFieldTolerance = 1e-12
-# Attributes that record the run rather than the result (present in both,
-# values not compared): the solve's wall time, the program's path in the
-# command line, and the version with the git hash of the build, which differs
-# when the two builds were made at different commits.
-kRunAttributes = {"solve_seconds", "command_line", "halfspace_version"}
 # The residual at convergence is rounding itself (1e-19 here): compared as
 # the relative quantity it is, not relative to itself.
 kAbsoluteAttributes = {"residual"}
-kProcessCounts = (1, 2, 3)
 
 harness = Harness(sys.argv)
 mpi_program, serial_program, mpiexec, source_dir, work_dir = harness.arguments
-environment = harness.environment
-failures = harness.failures
-run = harness.run
-run_mpi = harness.run_mpi
 fail = harness.fail
 
 
@@ -47,30 +33,14 @@ def attributes(node):
 
 
 def compare_attributes(where, got, want):
-    if set(got) != set(want):
-        fail(f"{where}: attributes differ: only distributed {sorted(set(got) - set(want))}, "
-             f"only serial {sorted(set(want) - set(got))}")
-    for name in sorted(set(got) & set(want)):
-        if name in kRunAttributes:
-            continue
-        a, b = got[name], want[name]
-        if isinstance(b, (float, np.floating)) and not isinstance(b, (bool, np.bool_)):
-            scale = 1.0 if name in kAbsoluteAttributes else max(abs(float(b)), 1e-300)
-            if abs(float(a) - float(b)) > kFieldTolerance * scale:
-                fail(f"{where}: attribute {name} = {a!r}, serial {b!r} (relative {abs(a - b) / scale:.2e})")
-        elif not np.array_equal(np.asarray(a), np.asarray(b)):
-            fail(f"{where}: attribute {name} = {a!r}, serial {b!r}")
+    harness.compare_attributes(where, got, want, kRunAttributes, kFieldTolerance, kAbsoluteAttributes)
 
 
 def compare_files(where, got_path, want_path):
     with h5py.File(got_path, "r") as got, h5py.File(want_path, "r") as want:
         compare_attributes(where + " /", attributes(got), attributes(want))
-        names = []
-        want.visit(names.append)
-        got_names = []
-        got.visit(got_names.append)
-        if sorted(names) != sorted(got_names):
-            fail(f"{where}: objects differ: {sorted(got_names)} vs serial {sorted(names)}")
+        names = harness.same_objects(where, got, want)
+        if names is None:
             return
         worst = 0.0
         for name in names:
@@ -169,7 +139,5 @@ for processes in (2, 3):
                                "--adhesion-range", "1e-8"],
                  "adhesion = exponential is not available with more than one process yet", missing)
 
-if failures:
-    print(f"{len(failures)} failure(s)")
-    sys.exit(1)
+harness.finish()
 print("all distributed solves match the serial program")

@@ -1,15 +1,30 @@
 """What every MPI test script shares: its arguments, the environment the
 programs run in (one OpenMP thread, Open MPI allowed to run as root and to
 oversubscribe the cores, no FFTW wisdom file, so that plans and results do
-not depend on an earlier run), running the serial and the MPI program, and
-the list of failures the script reports at its end.
+not depend on an earlier run), running the serial and the MPI program,
+comparing the attributes and the objects of their files, and the list of
+failures the script reports at its end (finish).
 
 usage in a script: SCRIPT MPI_PROGRAM SERIAL_PROGRAM MPIEXEC SOURCE_DIR WORK_DIR
 """
 import os
 import subprocess
+import sys
+
+import numpy as np
 
 kExitInputError = 1  # the program's exit code for bad input
+# The distributed reductions add the processes' partial sums in another order
+# than the serial fixed blocks, and FFTW-MPI's transforms round differently
+# from the serial ones: equal to rounding, not bitwise.
+kFieldTolerance = 1e-12
+# Attributes that record the run rather than the result (present in both,
+# values not compared): the solve's wall time, the program's path in the
+# command line, and the version with the git hash of the build, which differs
+# when the two builds were made at different commits.
+kRunAttributes = frozenset({"solve_seconds", "command_line", "halfspace_version"})
+# One process, two, and three (uneven slabs).
+kProcessCounts = (1, 2, 3)
 
 
 class Harness:
@@ -79,3 +94,71 @@ class Harness:
             yield where, output
             if self.temporaries():
                 self.fail(f"{where}: temporaries left behind: {self.temporaries()}")
+
+    def compare_attributes(self, where, got, want, skip, tolerance, absolute=frozenset(), scale=None):
+        """Records how the attributes `got` (the distributed file's, a
+        mapping) differ from the serial file's `want`: other names; a
+        floating-point value beyond `tolerance` times its scale (1 for the
+        names in `absolute`, else scale(name) when that gives one, else the
+        serial value's size); any other value, or its type, unequal. Names
+        in `skip` (the run's, not the result's) are compared by presence."""
+        if set(got.keys()) != set(want.keys()):
+            self.fail(f"{where}: attributes differ: only distributed {sorted(set(got.keys()) - set(want.keys()))}, "
+                      f"only serial {sorted(set(want.keys()) - set(got.keys()))}")
+        for name in sorted(set(got.keys()) & set(want.keys())):
+            if name in skip:
+                continue
+            a, b = got[name], want[name]
+            if isinstance(b, (float, np.floating)):
+                size = 1.0 if name in absolute else (scale(name) if scale else None)
+                size = max(abs(float(b)), 1e-300) if size is None else size
+                if abs(float(a) - float(b)) > tolerance * size:
+                    self.fail(f"{where}: attribute {name} = {a!r}, serial {b!r} (relative {abs(a - b) / size:.2e})")
+            elif type(a) is not type(b) or not np.array_equal(np.asarray(a), np.asarray(b)):
+                self.fail(f"{where}: attribute {name} = {a!r} ({type(a).__name__}), serial {b!r} "
+                          f"({type(b).__name__})")
+
+    def compare_dataset(self, where, name, got, want, tolerance, scale=None):
+        """Records how the dataset `got` (h5py, the distributed file's)
+        differs from the serial `want`: its shape or type; floating-point
+        values beyond `tolerance` times their scale (scale(serial values)
+        when that gives one, else the serial values' largest size); other
+        values unequal. Returns the floating-point difference over the
+        scale (0 for other values)."""
+        if got.shape != want.shape or got.dtype != want.dtype:
+            self.fail(f"{where}: /{name} is {got.shape} {got.dtype}, serial {want.shape} {want.dtype}")
+            return 0.0
+        x, y = got[()], want[()]
+        if np.issubdtype(y.dtype, np.floating):
+            size = scale(y) if scale else None
+            if size is None:
+                size = max(float(np.max(np.abs(y))), 1e-300) if y.size else 1.0
+            error = float(np.max(np.abs(x - y))) / size if y.size else 0.0
+            if error > tolerance:
+                self.fail(f"{where}: /{name} differs by {error:.2e} of its largest value (allowed {tolerance:.0e})")
+            return error
+        if not np.array_equal(x, y):
+            self.fail(f"{where}: /{name} differs in {int(np.count_nonzero(x != y))} cells")
+        return 0.0
+
+    def same_objects(self, where, got, want, required=()):
+        """The names of the objects (groups and datasets) of the serial file
+        `want` (h5py), or None after recording that the distributed file
+        `got` holds others; records the `required` names the serial file
+        lacks (the case would not test what it should)."""
+        names, got_names = [], []
+        want.visit(names.append)
+        got.visit(got_names.append)
+        if sorted(names) != sorted(got_names):
+            self.fail(f"{where}: objects differ: {sorted(got_names)} vs serial {sorted(names)}")
+            return None
+        missing = [name for name in required if name not in names]
+        if missing:
+            self.fail(f"{where}: the serial file lacks {missing}: the case does not test what it should")
+        return names
+
+    def finish(self):
+        """Exits with 1 after counting the failures recorded, if any."""
+        if self.failures:
+            print(f"{len(self.failures)} failure(s)")
+            sys.exit(1)

@@ -28,23 +28,13 @@ from collections import deque
 
 import h5py
 import numpy as np
-from mpi_harness import Harness
+from mpi_harness import Harness, kFieldTolerance, kProcessCounts, kRunAttributes
 
-# Distributed sums are added in another order than the serial fixed blocks
-# and FFTW-MPI rounds differently: equal to rounding, not bitwise.
-kFieldTolerance = 1e-12
-# Attributes that record the run, not the result: not compared.
-kRunAttributes = {"solve_seconds", "command_line", "halfspace_version"}
 # The residual at convergence is rounding itself: compared absolutely.
 kAbsoluteAttributes = {"residual"}
-kProcessCounts = (1, 2, 3)
 
 harness = Harness(sys.argv)
 mpi_program, serial_program, mpiexec, source_dir, work_dir = harness.arguments
-environment = harness.environment
-failures = harness.failures
-run = harness.run
-run_mpi = harness.run_mpi
 fail = harness.fail
 
 
@@ -53,19 +43,7 @@ def leftovers():
 
 
 def compare_attributes(where, got, want):
-    if set(got) != set(want):
-        fail(f"{where}: attributes differ: only distributed {sorted(set(got) - set(want))}, "
-             f"only serial {sorted(set(want) - set(got))}")
-    for name in sorted(set(got) & set(want)):
-        if name in kRunAttributes:
-            continue
-        a, b = got[name], want[name]
-        if isinstance(b, (float, np.floating)):
-            scale = 1.0 if name in kAbsoluteAttributes else max(abs(float(b)), 1e-300)
-            if abs(float(a) - float(b)) > kFieldTolerance * scale:
-                fail(f"{where}: attribute {name} = {a!r}, serial {b!r}")
-        elif type(a) is not type(b) or not np.array_equal(np.asarray(a), np.asarray(b)):
-            fail(f"{where}: attribute {name} = {a!r} ({type(a).__name__}), serial {b!r} ({type(b).__name__})")
+    harness.compare_attributes(where, got, want, kRunAttributes, kFieldTolerance, kAbsoluteAttributes)
 
 
 def storage(dataset):
@@ -75,11 +53,8 @@ def storage(dataset):
 def compare_files(where, got_path, want_path, exact=()):
     with h5py.File(got_path, "r") as got, h5py.File(want_path, "r") as want:
         compare_attributes(where + " /", dict(got.attrs), dict(want.attrs))
-        names, got_names = [], []
-        want.visit(names.append)
-        got.visit(got_names.append)
-        if sorted(names) != sorted(got_names):
-            fail(f"{where}: objects differ: {sorted(got_names)} vs serial {sorted(names)}")
+        names = harness.same_objects(where, got, want)
+        if names is None:
             return
         worst = 0.0
         for name in names:
@@ -156,8 +131,8 @@ def failure_case(name, processes, arguments, message, output, same_message=True)
     """The MPI program must fail as the serial one does: same exit code, the
     same one error line (unless it names a process id), no output, no
     temporary."""
-    serial = run([serial_program, "solve"] + arguments + ["--output", output])
-    result = run_mpi(processes, ["solve"] + arguments + ["--output", output])
+    serial = harness.run([serial_program, "solve"] + arguments + ["--output", output])
+    result = harness.run_mpi(processes, ["solve"] + arguments + ["--output", output])
     where = f"{name}, {processes} processes"
     serial_errors = [line for line in serial.stderr.splitlines() if line.startswith("error:")]
     errors = [line for line in result.stderr.splitlines() if line.startswith("error:")]
@@ -289,8 +264,8 @@ for processes in (2, 3):
 for processes in (2, 3):
     limited = os.path.join(work_dir, "limited.h5")
     command = " ".join([mpi_program, "solve"] + hertz + ["--output", limited])
-    result = run([mpiexec, "--oversubscribe", "--mca", "btl", "self,tcp", "-np", str(processes), "sh", "-c",
-                  "ulimit -f 64; exec " + command])
+    result = harness.run([mpiexec, "--oversubscribe", "--mca", "btl", "self,tcp", "-np", str(processes), "sh", "-c",
+                          "ulimit -f 64; exec " + command])
     where = f"file-size limit, {processes} processes"
     errors = [line for line in result.stderr.splitlines() if line.startswith("error:")]
     if result.returncode != 1:
@@ -301,7 +276,5 @@ for processes in (2, 3):
         fail(f"{where}: output or temporaries left behind: {leftovers()}")
     print(f"{where}: {errors[0] if errors else result.stderr.strip()}")
 
-if failures:
-    print(f"{len(failures)} failure(s)")
-    sys.exit(1)
+harness.finish()
 print("parallel reading and writing match the serial program")
