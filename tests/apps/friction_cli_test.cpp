@@ -311,18 +311,22 @@ TEST(FrictionCliTest, ConfigKeysAndRigidBodyTwo) {
   EXPECT_TRUE(fs::exists(dir / "r.csv"));
 }
 
+// Steel on a rigid body 2 (Dundurs' beta = 0.29) under the tangential
+// forces `steps`, solved coupled or not (--no-coupling).
+std::vector<std::string> on_rigid_body(const std::string& output, const std::string& steps, bool coupled) {
+  std::vector<std::string> a = sphere(16, output, {"--friction", "0.3", "--tangential-force", steps});
+  const auto e2 = std::find(a.begin(), a.end(), "--E2");
+  *(e2 + 1) = "inf";
+  if (!coupled) a.emplace_back("--no-coupling");
+  return a;
+}
+
 // Dissimilar bodies (steel on a rigid body 2, beta = 0.29): coupled by
 // default, the record says so and the shear the pressing leaves is in the
 // step's state; --no-coupling gives the frictionless pressure's step.
 TEST(FrictionCliTest, DissimilarBodiesAreSolvedCoupledUnlessSwitchedOff) {
   const TempDir dir;
-  auto arguments = [](const std::string& output, bool coupled) {
-    std::vector<std::string> a = sphere(16, output, {"--friction", "0.3", "--tangential-force", "1"});
-    const auto e2 = std::find(a.begin(), a.end(), "--E2");
-    *(e2 + 1) = "inf";
-    if (!coupled) a.emplace_back("--no-coupling");
-    return a;
-  };
+  auto arguments = [](const std::string& output, bool coupled) { return on_rigid_body(output, "1", coupled); };
   const ProgramRun coupled = run_program(arguments("c.h5", true), dir.path());
   ASSERT_EQ(coupled.exit_code, kExitOk) << coupled.err;
   EXPECT_NE(coupled.out.find("Dundurs' beta = 0.2857"), std::string::npos) << coupled.out;
@@ -352,13 +356,7 @@ TEST(FrictionCliTest, DissimilarBodiesAreSolvedCoupledUnlessSwitchedOff) {
 // uncoupled, the steps have the root's pressure and no pressure of their own.
 TEST(FrictionCliTest, ACoupledHistoryWritesEachStepsPressure) {
   const TempDir dir;
-  auto arguments = [](const std::string& output, bool coupled) {
-    std::vector<std::string> a = sphere(16, output, {"--friction", "0.3", "--tangential-force", "0.5;2"});
-    const auto e2 = std::find(a.begin(), a.end(), "--E2");
-    *(e2 + 1) = "inf";
-    if (!coupled) a.emplace_back("--no-coupling");
-    return a;
-  };
+  auto arguments = [](const std::string& output, bool coupled) { return on_rigid_body(output, "0.5;2", coupled); };
   const ProgramRun coupled = run_program(arguments("c.h5", true), dir.path());
   ASSERT_EQ(coupled.exit_code, kExitOk) << coupled.err;
   const test::H5 c = test::open_file(dir / "c.h5");
