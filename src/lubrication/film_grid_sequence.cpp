@@ -128,8 +128,8 @@ ElasticFilm solve_elastic_film(InfluenceOperator& op, const Eigen::ArrayXd& gap,
   if (!sequence) return detail::solve_film_newton(op, gap, conditions, laws, options, start);
   ElasticFilm record;
   const std::optional<ElasticFilm> coarse_start = sequenced_start(op, gap, conditions, laws, options, record);
-  ElasticFilm result = detail::solve_film_newton(op, gap, conditions, laws, options,
-                                                 coarse_start ? &*coarse_start : nullptr);
+  ElasticFilm result =
+      detail::solve_film_newton(op, gap, conditions, laws, options, coarse_start ? &*coarse_start : nullptr);
   if (coarse_start && !result.converged()) {
     // A start that failed: the cold start's dry contact and start films.
     const int sequenced_steps = result.iterations;

@@ -19,8 +19,7 @@ namespace halfspace::lubrication::detail {
 // (no grid sequencing): from `start` if it holds a film of this grid, else
 // from the dry contact (elastic_film.cpp).
 ElasticFilm solve_film_newton(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
-                              const LubricantLaws& laws, const ElasticFilmOptions& options,
-                              const ElasticFilm* start);
+                              const LubricantLaws& laws, const ElasticFilmOptions& options, const ElasticFilm* start);
 
 // K on the grid of twice the spacing as seen through a finer operator:
 // R K P with P the piecewise-constant prolongation of a coarse pressure
