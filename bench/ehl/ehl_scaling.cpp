@@ -1,7 +1,8 @@
 // EHL point contacts on N x N grids with the GMRES linear solve (and the
 // dense one where it fits): Newton steps, GMRES iterations per step,
 // seconds, peak resident bytes per node, and the films against Hamrock &
-// Dowson (1977, k = 1). Usage: ehl_scaling N [gmres|dense] [neighbourhood].
+// Dowson (1977, k = 1). Usage: ehl_scaling N [gmres|dense] [neighbourhood]
+// [cold] ("cold": no grid sequencing).
 // One solve per process, so that the peak resident size is the solve's.
 #include <fmt/format.h>
 #include <sys/resource.h>
@@ -22,12 +23,13 @@ using bench::kRadius;
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    fmt::print(stderr, "usage: ehl_scaling N [gmres|dense] [neighbourhood]\n");
+    fmt::print(stderr, "usage: ehl_scaling N [gmres|dense] [neighbourhood] [cold]\n");
     return 2;
   }
   const auto n = static_cast<std::size_t>(std::atol(argv[1]));
   const FilmLinearSolve solve = argc > 2 ? parse_film_linear_solve(argv[2]) : FilmLinearSolve::gmres;
   const int neighbourhood = argc > 3 ? std::atoi(argv[3]) : 0;
+  const bool sequencing = !(argc > 4 && std::string_view(argv[4]) == "cold");
   const double w = 3e-7, u = 1e-11, g = 5000;
   const double e_prime = 2.0 * kEStar;
   const double load = w * e_prime * kRadius * kRadius;
@@ -38,7 +40,10 @@ int main(int argc, char** argv) {
   const std::size_t half = (n - 1) / 2;
   const Grid grid = Grid::plane(n, n, dx, dx, Boundary::free);
   FftInfluenceOperator op(grid, kEStar);
-  ElasticFilmOptions options{.load = load, .linear_solve = solve, .preconditioner_neighbourhood = neighbourhood};
+  ElasticFilmOptions options{.load = load,
+                             .linear_solve = solve,
+                             .preconditioner_neighbourhood = neighbourhood,
+                             .grid_sequencing = sequencing};
   const ElasticFilm f = solve_elastic_film(op, bench::parabolic_gap(grid, upstream, half), bench::rolling(u),
                                            bench::roelands_laws(g), options);
   const double hd_central =
@@ -49,10 +54,12 @@ int main(int argc, char** argv) {
   getrusage(RUSAGE_SELF, &usage);
   const double peak = static_cast<double>(usage.ru_maxrss) * 1024.0;
   fmt::print(
-      "N {} solve {} r {} cells/a {:.1f}: {} steps, {} GMRES its ({} most per step), {:.2f} s, {:.0f} B/node, "
-      "Hc/HD {:.4f} Hmin/HD {:.4f}, h0 {:.6e} {}\n",
-      n, to_string(solve), neighbourhood, a / dx, f.iterations, f.krylov_iterations, f.max_krylov_iterations_per_step,
-      f.wall_seconds, peak / static_cast<double>(n * n), f.central_film_thickness / kRadius / hd_central,
-      f.minimum_film_thickness / kRadius / hd_minimum, f.offset, f.converged() ? "converged" : f.message);
+      "N {} solve {} r {} cells/a {:.1f}: {} coarse levels ({} steps, {} GMRES its{}), {} steps, {} GMRES its ({} "
+      "most per step), {:.2f} s, {:.0f} B/node, Hc/HD {:.6f} Hmin/HD {:.6f}, h0 {:.9e} {}\n",
+      n, to_string(solve), neighbourhood, a / dx, f.coarse_levels, f.coarse_iterations, f.coarse_krylov_iterations,
+      f.sequencing_fell_back ? ", fell back to cold" : "", f.iterations, f.krylov_iterations,
+      f.max_krylov_iterations_per_step, f.wall_seconds, peak / static_cast<double>(n * n),
+      f.central_film_thickness / kRadius / hd_central, f.minimum_film_thickness / kRadius / hd_minimum, f.offset,
+      f.converged() ? "converged" : f.message);
   return f.converged() ? 0 : 1;
 }

@@ -29,6 +29,7 @@
 #include <optional>
 #include <vector>
 
+#include "film_grid_sequence.hpp"
 #include "film_krylov_solver.hpp"
 #include "halfspace/error.hpp"
 #include "halfspace/lubrication/cavitation_solver.hpp"
@@ -179,8 +180,9 @@ double elastic_film_residual(const Grid& grid, const FlowConditions& conditions,
   return largest / (couette > 0.0 ? couette : 1.0);
 }
 
-ElasticFilm solve_elastic_film(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
-                               const LubricantLaws& laws, const ElasticFilmOptions& options, const ElasticFilm* start) {
+ElasticFilm detail::solve_film_newton(InfluenceOperator& op, const Eigen::ArrayXd& gap,
+                                      const FlowConditions& conditions, const LubricantLaws& laws,
+                                      const ElasticFilmOptions& options, const ElasticFilm* start) {
   const auto started = std::chrono::steady_clock::now();
   const Grid& grid = op.grid();
   conditions.validate(grid);

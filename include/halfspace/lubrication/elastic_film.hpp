@@ -40,8 +40,15 @@ namespace halfspace::lubrication {
 // and K are n x n each (3 x 134 MB at the limit).
 inline constexpr std::size_t kMaxElasticFilmNodes = 4096;
 
-// Above this many nodes FilmLinearSolve::automatic takes GMRES.
+// Above this many nodes FilmLinearSolve::automatic takes GMRES, and grid
+// sequencing (ElasticFilmOptions::grid_sequencing) starts from a coarser
+// grid.
 inline constexpr std::size_t kAutomaticKrylovNodes = 1024;
+
+// The relative mass residual and load error to which the coarse grids of
+// grid sequencing are solved: their films are only a start, and differ from
+// the fine one by the discretisation error, far above this.
+inline constexpr double kSequencingCoarseTolerance = 1e-6;
 
 // The linear solve of each Newton step: the dense LU (K formed), restarted
 // GMRES matrix-free with a sparse preconditioner, or the dense one up to
@@ -81,6 +88,13 @@ struct ElasticFilmOptions {
   int krylov_max_iterations = 400;
   double krylov_tolerance = 1e-9;
   int preconditioner_neighbourhood = 0;
+  // Grid sequencing: on a grid of more than kAutomaticKrylovNodes nodes
+  // with an even number of cells per axis, and without a `start`, the film
+  // is first solved on the grid of twice the spacing (recursively, the
+  // coarse influence operator seen through this one) to the coarse
+  // tolerance max(tolerance, kSequencingCoarseTolerance), and interpolated
+  // as the Newton start; if that start fails, the solve starts again cold.
+  bool grid_sequencing = true;
 
   // Throws OptionError naming the option unless load > 0 and finite, 0 <
   // tolerance < 1, 0 < load_tolerance < 1, max_iterations >= 1, 2 <=
@@ -110,7 +124,15 @@ struct ElasticFilm {
   bool used_krylov = false;
   int krylov_iterations = 0;
   int max_krylov_iterations_per_step = 0;
-  double wall_seconds = 0.0;
+  // Grid sequencing: the coarser grids solved for the start, their Newton
+  // steps and GMRES iterations in all (not in iterations and
+  // krylov_iterations), and whether the sequenced start failed and the
+  // solve started again cold (iterations then counts both).
+  int coarse_levels = 0;
+  int coarse_iterations = 0;
+  int coarse_krylov_iterations = 0;
+  bool sequencing_fell_back = false;
+  double wall_seconds = 0.0;  // all of it, coarse grids included
   // Measured after the solve with the operator's own product (not the
   // Newton's factorised Jacobian): the relative mass residual and |load -
   // w| / w.
@@ -125,7 +147,7 @@ struct ElasticFilm {
 // ambient viscosity eta0, the velocities and the flow boundary (validated
 // here); `laws` the pressure laws. Starts from the dry contact (Polonsky &
 // Keer on the same operator) at the load, unless `start` holds a previous
-// film of the same grid. Throws InputError for invalid input, for the
+// film of the same grid or grid sequencing applies (options). Throws InputError for invalid input, for the
 // dense solve on more than kMaxElasticFilmNodes nodes, and for a GMRES
 // solve whose memory estimate exceeds the memory available; non-convergence
 // (of the Newton iteration or of a step's GMRES) is a status.
