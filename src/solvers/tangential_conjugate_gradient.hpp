@@ -75,6 +75,8 @@ class ConjugateGradientMethod {
     const double lambda = -(f_.gx[i] * nx + f_.gy[i] * ny);
     if (lambda < 0.0) {
       c.released = true;
+      c.nx = nx;
+      c.ny = ny;
       return c;
     }
     c.slip = true;
