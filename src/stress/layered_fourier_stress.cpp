@@ -9,15 +9,17 @@
 // Timoshenko & Goodier 1951, sec. 25). With s = q t:
 //   substrate:  g = (a2 + b2 eta) e^{-eta},  eta = zeta - s (decaying only);
 //   layer:      g = (a + b zeta) e^{-zeta} + (c + d eta) e^{eta}   (s > 1), or
-//               g = Phi0 + g''(0) Phi2 + g'''(0) Phi3               (s <= 1),
+//               g = g(0) Phi0 + g'(0) Phi1 + g''(0) Phi2 + g'''(0) Phi3   (s <= 1),
 // with Phi_j the solutions of unit j-th initial derivative (Phi0 = cosh -
-// zeta sinh/2, Phi2 = zeta sinh/2, Phi3 = (zeta cosh - sinh)/2), which stay
+// zeta sinh/2, Phi1 = (3 sinh - zeta cosh)/2, Phi2 = zeta sinh/2, Phi3 =
+// (zeta cosh - sinh)/2), which stay
 // well conditioned as s -> 0, where the exponential basis degenerates; the
 // exponential one keeps every term bounded by 1 + s for large s, where
 // Phi_j grow like e^s and would cancel.
 // Conditions: on the surface g(0) = 1 (sigma_zz = -p) and g'(0) = 0 (no
-// shear); at zeta = s, g and g' continuous (sigma_zz, sigma_xz), and u_x and
-// u_z continuous. For one mode these are the continuity of
+// shear), or, for a shear traction (docs/theory.md, "Tangential compliance
+// of a coated half-space"), other values of the two; at zeta = s, g and g'
+// continuous (sigma_zz, sigma_xz), and u_x and u_z continuous. For one mode these are the continuity of
 //   2 mu eps_x'x' / p = (1 - nu) g'' + nu g            (u_x' = eps_x'x' / (i q))
 //   2 mu q u_z / p    = (1 - nu) g''' - (2 - nu) g'    (from eps_x'z and eps_x'x')
 // divided by mu; the surface displacement is then u_z = (1 - nu1) g'''(0) p /
@@ -57,17 +59,18 @@ struct LayerInterface {
   double constants[4] = {};
 };
 
-LayerInterface layer_interface(double s, bool thin) {
+LayerInterface layer_interface(double s, bool thin, double value, double slope) {
   LayerInterface layer;
   if (thin) {
-    layer.unknowns = 2;  // g''(0), g'''(0); g(0) = 1 and g'(0) = 0 are built in
+    layer.unknowns = 2;  // g''(0), g'''(0); g(0) and g'(0) are built in
     const double c = std::cosh(s);
     const double sh = std::sinh(s);
     const double phi0[4] = {c - 0.5 * s * sh, 0.5 * (sh - s * c), -0.5 * s * sh, -0.5 * (sh + s * c)};
+    const double phi1[4] = {0.5 * (3.0 * sh - s * c), c - 0.5 * s * sh, 0.5 * (sh - s * c), -0.5 * s * sh};
     const double phi2[4] = {0.5 * s * sh, 0.5 * (sh + s * c), c + 0.5 * s * sh, 0.5 * (3.0 * sh + s * c)};
     const double phi3[4] = {0.5 * (s * c - sh), 0.5 * s * sh, 0.5 * (sh + s * c), c + 0.5 * s * sh};
     for (int j = 0; j < 4; ++j) {
-      layer.constants[j] = phi0[j];
+      layer.constants[j] = value * phi0[j] + slope * phi1[j];
       layer.values[j][0] = phi2[j];
       layer.values[j][1] = phi3[j];
     }
@@ -101,14 +104,16 @@ ConditionRows condition_rows(double nu, double weight) {
 
 }  // namespace
 
-LayeredMode LayeredFourierStress::solve(double q) const {
+LayeredMode LayeredFourierStress::solve(double q, double value, double slope) const {
   LayeredMode mode;
   mode.q = std::abs(q);
+  mode.surface_value = value;
+  mode.surface_slope = slope;
   if (mode.q == 0.0) return mode;
   const double s = mode.q * material_.thickness;
   mode.thin = s <= 1.0;
   // 1. The layer's values at the interface over its unknowns.
-  const LayerInterface layer = layer_interface(s, mode.thin);
+  const LayerInterface layer = layer_interface(s, mode.thin, value, slope);
   const int n = layer.unknowns + 2;
 
   // 2. The interface conditions. The strain and displacement rows are
@@ -130,17 +135,19 @@ LayeredMode LayeredFourierStress::solve(double q) const {
     }
   }
   // 3. The surface, in the exponential basis (the other has it built in):
-  // g(0) = a + (c - d s) e^{-s} = 1, g'(0) = b - a + (c + d - d s) e^{-s} = 0.
+  // g(0) = a + (c - d s) e^{-s} = value, g'(0) = b - a + (c + d - d s)
+  // e^{-s} = slope.
   if (!mode.thin) {
     const double e = std::exp(-s);
     matrix(4, 0) = 1.0;
     matrix(4, 2) = e;
     matrix(4, 3) = -s * e;
-    rhs(4) = 1.0;
+    rhs(4) = value;
     matrix(5, 0) = -1.0;
     matrix(5, 1) = 1.0;
     matrix(5, 2) = e;
     matrix(5, 3) = (1.0 - s) * e;
+    rhs(5) = slope;
   }
   // 4. Full-pivoting LU of the 4 x 4 or 6 x 6 system.
   Eigen::Matrix<double, 6, 1> x;
@@ -157,7 +164,7 @@ LayeredMode LayeredFourierStress::solve(double q) const {
 }
 
 AiryProfile LayeredFourierStress::profile(const LayeredMode& mode, double z, Body body) const {
-  if (mode.q == 0.0) return {1.0, 0.0, 0.0};
+  if (mode.q == 0.0) return {mode.surface_value, 0.0, 0.0};
   const double zeta = mode.q * z;
   const double s = mode.q * material_.thickness;
   if (body == Body::substrate) {
@@ -169,11 +176,16 @@ AiryProfile LayeredFourierStress::profile(const LayeredMode& mode, double z, Bod
   if (mode.thin) {
     const double c = std::cosh(zeta);
     const double sh = std::sinh(zeta);
+    const double value = mode.surface_value;
+    const double slope = mode.surface_slope;
     const double second = mode.layer[0];
     const double third = mode.layer[1];
-    return {c - 0.5 * zeta * sh + second * 0.5 * zeta * sh + third * 0.5 * (zeta * c - sh),
-            0.5 * (sh - zeta * c) + second * 0.5 * (sh + zeta * c) + third * 0.5 * zeta * sh,
-            -0.5 * zeta * sh + second * (c + 0.5 * zeta * sh) + third * 0.5 * (sh + zeta * c)};
+    return {value * (c - 0.5 * zeta * sh) + slope * 0.5 * (3.0 * sh - zeta * c) + second * 0.5 * zeta * sh +
+                third * 0.5 * (zeta * c - sh),
+            value * 0.5 * (sh - zeta * c) + slope * (c - 0.5 * zeta * sh) + second * 0.5 * (sh + zeta * c) +
+                third * 0.5 * zeta * sh,
+            value * -0.5 * zeta * sh + slope * 0.5 * (sh - zeta * c) + second * (c + 0.5 * zeta * sh) +
+                third * 0.5 * (sh + zeta * c)};
   }
   const auto [a, b, c, d] = mode.layer;
   const double eta = zeta - s;
@@ -193,15 +205,16 @@ std::array<std::complex<double>, kComponentCount> LayeredFourierStress::stress(d
   return result;
 }
 
-double LayeredFourierStress::surface_displacement(const LayeredMode& mode) const {
+SurfaceDerivatives LayeredFourierStress::surface_derivatives(const LayeredMode& mode) const {
+  if (mode.thin) return {mode.layer[0], mode.layer[1]};
   const double s = mode.q * material_.thickness;
-  double third = 0.0;  // g'''(0)
-  if (mode.thin) {
-    third = mode.layer[1];
-  } else {
-    const auto [a, b, c, d] = mode.layer;
-    third = 3.0 * b - a + (c + 3.0 * d - d * s) * std::exp(-s);
-  }
+  const auto [a, b, c, d] = mode.layer;
+  const double e = std::exp(-s);
+  return {a - 2.0 * b + (c + 2.0 * d - d * s) * e, 3.0 * b - a + (c + 3.0 * d - d * s) * e};
+}
+
+double LayeredFourierStress::surface_displacement(const LayeredMode& mode) const {
+  const double third = surface_derivatives(mode).third;
   const ElasticBody& layer = material_.layer;
   const double mu1 = layer.youngs_modulus / (2.0 * (1.0 + layer.poissons_ratio));
   return (1.0 - layer.poissons_ratio) * third / (2.0 * mu1 * mode.q);

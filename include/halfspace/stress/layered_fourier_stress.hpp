@@ -23,6 +23,17 @@ struct LayeredMode {
   bool thin = false;                  // s = q t <= 1: the layer in the basis of its initial values
   std::array<double, 4> layer{};      // thin: (g''(0), g'''(0), 0, 0); else (a, b, c, d)
   std::array<double, 2> substrate{};  // (a2, b2)
+  // The surface conditions it was solved for: g(0) (the normal traction,
+  // sigma_zz = -g) and g'(0) (the shear, sigma_x'z = -i g'); (1, 0) is a
+  // unit pressure without shear.
+  double surface_value = 1.0;
+  double surface_slope = 0.0;
+};
+
+// g''(0) and g'''(0) of a solved mode: what its surface displacements need.
+struct SurfaceDerivatives {
+  double second = 0.0;
+  double third = 0.0;
 };
 
 // g, g' and g'' (derivatives in q z) at one depth: sigma_zz = -g p,
@@ -50,7 +61,14 @@ class LayeredFourierStress {
   // shear and unit pressure on the surface, continuous displacements and
   // tractions at z = t) for the four coefficients of the layer and the two of
   // the substrate.
-  LayeredMode solve(double q) const;
+  LayeredMode solve(double q) const { return solve(q, 1.0, 0.0); }
+  // The same mode under the surface conditions g(0) = value and g'(0) =
+  // slope: a normal traction sigma_zz = -value and a shear traction
+  // sigma_x'z = -i slope per unit of the spectrum's scale (a shear traction
+  // T on the surface along k, whose outward normal is -z, is slope = -i T).
+  LayeredMode solve(double q, double value, double slope) const;
+  // g''(0) and g'''(0) of `mode`.
+  SurfaceDerivatives surface_derivatives(const LayeredMode& mode) const;
 
   // g, g', g'' of `mode` at depth z (m, >= 0) in `body`.
   AiryProfile profile(const LayeredMode& mode, double z, Body body) const;
