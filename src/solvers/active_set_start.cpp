@@ -51,14 +51,14 @@ ActiveSetStart::ActiveSetStart(InfluenceOperator& op, Preconditioner& preconditi
   inner_norms_.reserve(static_cast<std::size_t>(options_.max_inner) + 1);
 }
 
-SolveResult ActiveSetStart::solve(std::span<const double> initial_gap, const Loading& loading,
-                                  std::span<const double> initial_pressure) {
+SolveResult ActiveSetStart::do_solve(std::span<const double> initial_gap, const Loading& loading,
+                                     std::span<const double> initial_pressure) {
   record_ = {};
   return finish_->solve(initial_gap, loading, initial_pressure);
 }
 
-SolveResult ActiveSetStart::solve_from(std::span<const double> initial_gap, const Loading& loading,
-                                       Eigen::ArrayXd&& start) {
+SolveResult ActiveSetStart::do_solve_from(std::span<const double> initial_gap, const Loading& loading,
+                                          Eigen::ArrayXd&& start) {
   const std::size_t n = op_.local_size();
   if (initial_gap.size() != n || static_cast<std::size_t>(start.size()) != n) {
     // Polonsky-Keer names the wrong size.

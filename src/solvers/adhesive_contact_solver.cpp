@@ -893,13 +893,15 @@ SolveResult AdhesiveContactSolver::Impl::solve_force(std::span<const double> ini
 }
 
 AdhesiveContactSolver::AdhesiveContactSolver(InfluenceOperator& op, double contact_modulus,
-                                             AdhesiveSolverOptions options) {
+                                             AdhesiveSolverOptions options)
+    : ContactSolver(op.grid(), InterfaceLaw{options.hardness}) {
   options.validate();
   impl_ = std::make_unique<Impl>(nullptr, op, contact_modulus, std::move(options));
 }
 
 AdhesiveContactSolver::AdhesiveContactSolver(std::unique_ptr<InfluenceOperator> op, double contact_modulus,
-                                             AdhesiveSolverOptions options) {
+                                             AdhesiveSolverOptions options)
+    : ContactSolver(op->grid(), InterfaceLaw{options.hardness}) {
   options.validate();
   InfluenceOperator& ref = *op;
   impl_ = std::make_unique<Impl>(std::move(op), ref, contact_modulus, std::move(options));
@@ -920,8 +922,8 @@ const AdhesiveSolverOptions& AdhesiveContactSolver::options() const {
   return impl_->options;
 }
 
-SolveResult AdhesiveContactSolver::solve(std::span<const double> initial_gap, const Loading& loading,
-                                         std::span<const double> initial_pressure) {
+SolveResult AdhesiveContactSolver::do_solve(std::span<const double> initial_gap, const Loading& loading,
+                                            std::span<const double> initial_pressure) {
   Impl& m = *impl_;
   const std::size_t n = m.cells;
   if (initial_gap.size() != n) {
@@ -935,7 +937,6 @@ SolveResult AdhesiveContactSolver::solve(std::span<const double> initial_gap, co
   if (!std::isfinite(loading.value)) {
     throw InputError(fmt::format("{} = {} is invalid: must be finite", to_string(loading.mode), loading.value));
   }
-  InterfaceLaw{m.options.hardness}.check_load(m.grid, loading);
   if (loading.mode == ControlMode::approach) {
     return m.solve_displacement(initial_gap, loading.value, initial_pressure, false);
   }

@@ -129,7 +129,6 @@ ContactLcp make_contact_lcp(const Grid& grid, double e_star, const Eigen::Matrix
   for (double g : initial_gap) {
     if (!std::isfinite(g)) throw InputError("initial gap holds a non-finite value");
   }
-  InterfaceLaw{options.hardness}.check_load(grid, loading);
   if (grid.periodic() && !loading.load_controlled()) {
     // As for Polonsky-Keer: with zero-mean displacements the mean gap is
     // mean(g0) - approach, which cannot be negative.
@@ -182,7 +181,11 @@ double contact_residual(std::span<const double> initial_gap, const Eigen::ArrayX
 
 DenseContactSolver::DenseContactSolver(std::string_view name, const Grid& grid, double e_star,
                                        DenseContactOptions options)
-    : name_(name), grid_(grid), e_star_(checked_composite_modulus(e_star)), options_(std::move(options)) {
+    : ContactSolver(grid, InterfaceLaw{options.hardness}),
+      name_(name),
+      grid_(grid),
+      e_star_(checked_composite_modulus(e_star)),
+      options_(std::move(options)) {
   options_.validate();
   check_dense_grid(grid_, name_);
   influence_ = assemble_influence_matrix(grid_, e_star_);
@@ -190,7 +193,8 @@ DenseContactSolver::DenseContactSolver(std::string_view name, const Grid& grid, 
 
 DenseContactSolver::DenseContactSolver(std::string_view name, const Grid& grid, double e_star,
                                        Eigen::MatrixXd influence, DenseContactOptions options)
-    : name_(name),
+    : ContactSolver(grid, InterfaceLaw{options.hardness}),
+      name_(name),
       grid_(grid),
       e_star_(checked_composite_modulus(e_star)),
       influence_(std::move(influence)),
@@ -203,8 +207,8 @@ DenseContactSolver::DenseContactSolver(std::string_view name, const Grid& grid, 
   }
 }
 
-SolveResult DenseContactSolver::solve(std::span<const double> initial_gap, const Loading& loading,
-                                      std::span<const double> /*initial_pressure*/) {
+SolveResult DenseContactSolver::do_solve(std::span<const double> initial_gap, const Loading& loading,
+                                         std::span<const double> /*initial_pressure*/) {
   const auto start = std::chrono::steady_clock::now();
   last_lcp_ = make_contact_lcp(grid_, e_star_, influence_, initial_gap, loading, options_);
   const bool all_capped =

@@ -92,8 +92,8 @@ Eigen::ArrayXd MultilevelSolver::coarse_start(const Grid& grid, std::span<const 
   return fine_start;
 }
 
-SolveResult MultilevelSolver::solve(std::span<const double> initial_gap, const Loading& loading,
-                                    std::span<const double> initial_pressure) {
+SolveResult MultilevelSolver::do_solve(std::span<const double> initial_gap, const Loading& loading,
+                                       std::span<const double> initial_pressure) {
   const auto start_time = std::chrono::steady_clock::now();
   // Given if given on any process (one without cells of a distributed grid
   // holds none), so that the processes decide alike.

@@ -66,14 +66,12 @@ void check_size(std::string_view what, std::size_t got, std::size_t expected) {
 }
 
 // The problem of a solve, checked.
-Problem make_problem(const InfluenceOperator& op, std::span<const double> initial_gap, const Loading& loading,
-                     const PressureBounds& bounds) {
+Problem make_problem(const InfluenceOperator& op, std::span<const double> initial_gap, const Loading& loading) {
   const Grid& grid = op.grid();
   const linalg::Communicator& comm = op.communicator();
   const std::size_t n = op.local_size();
   check_size("initial gap", initial_gap.size(), n);
   loading.validate();
-  if (bounds.capped()) InterfaceLaw{bounds.upper}.check_load(grid, loading);
   const double gap_max = linalg::max_of(comm, n, [&](std::size_t i) { return initial_gap[i]; });
   const double gap_min = linalg::min_of(comm, n, [&](std::size_t i) { return initial_gap[i]; });
   if (!std::isfinite(gap_max) || !std::isfinite(gap_min)) {
@@ -804,7 +802,9 @@ void PolonskyKeerOptions::validate() const {
 
 PolonskyKeer::PolonskyKeer(InfluenceOperator& op, PolonskyKeerOptions options, Preconditioner* preconditioner,
                            InfluenceOperator* inner, SinglePrecisionProducts single)
-    : op_(op),
+    : ContactSolver(op.grid(),
+                    InterfaceLaw{options.bounds.capped() ? std::optional(options.bounds.upper) : std::nullopt}),
+      op_(op),
       inner_(inner ? *inner : op),
       options_(std::move(options)),
       preconditioner_(preconditioner),
@@ -838,8 +838,8 @@ std::span<double> PolonskyKeer::workspace(int which) {
   return {field.data(), static_cast<std::size_t>(field.size())};
 }
 
-SolveResult PolonskyKeer::solve(std::span<const double> initial_gap, const Loading& loading,
-                                std::span<const double> initial_pressure) {
+SolveResult PolonskyKeer::do_solve(std::span<const double> initial_gap, const Loading& loading,
+                                   std::span<const double> initial_pressure) {
   const std::size_t n = op_.local_size();
   if (initial_pressure.empty()) return run(initial_gap, loading, Eigen::ArrayXd(static_cast<Eigen::Index>(n)), false);
   check_size("initial pressure", initial_pressure.size(), n);
@@ -847,8 +847,8 @@ SolveResult PolonskyKeer::solve(std::span<const double> initial_gap, const Loadi
              Eigen::Map<const Eigen::ArrayXd>(initial_pressure.data(), static_cast<Eigen::Index>(n)), true);
 }
 
-SolveResult PolonskyKeer::solve_from(std::span<const double> initial_gap, const Loading& loading,
-                                     Eigen::ArrayXd&& start) {
+SolveResult PolonskyKeer::do_solve_from(std::span<const double> initial_gap, const Loading& loading,
+                                        Eigen::ArrayXd&& start) {
   check_size("initial pressure", static_cast<std::size_t>(start.size()), op_.local_size());
   return run(initial_gap, loading, std::move(start), true);
 }
@@ -856,7 +856,7 @@ SolveResult PolonskyKeer::solve_from(std::span<const double> initial_gap, const 
 SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading& loading, Eigen::ArrayXd pressure,
                               bool warm) {
   const auto start = std::chrono::steady_clock::now();
-  const Problem problem = make_problem(op_, initial_gap, loading, options_.bounds);
+  const Problem problem = make_problem(op_, initial_gap, loading);
   const auto n = static_cast<Eigen::Index>(op_.local_size());
   SolveResult result;
   result.solver = name_;

@@ -53,11 +53,14 @@ class SolverWithOperator final : public ContactSolver {
   }
 
   std::string_view name() const override { return solver_->name(); }
-  SolveResult solve(std::span<const double> initial_gap, const Loading& loading,
-                    std::span<const double> initial_pressure) override {
+
+ protected:
+  SolveResult do_solve(std::span<const double> initial_gap, const Loading& loading,
+                       std::span<const double> initial_pressure) override {
     return solver_->solve(initial_gap, loading, initial_pressure);
   }
-  SolveResult solve_from(std::span<const double> initial_gap, const Loading& loading, Eigen::ArrayXd&& start) override {
+  SolveResult do_solve_from(std::span<const double> initial_gap, const Loading& loading,
+                            Eigen::ArrayXd&& start) override {
     return solver_->solve_from(initial_gap, loading, std::move(start));
   }
 

@@ -29,8 +29,8 @@ class RecordingSolver final : public ContactSolver {
   explicit RecordingSolver(std::size_t cells) : cells_(cells) {}
 
   std::string_view name() const override { return "recording"; }
-  SolveResult solve(std::span<const double>, const Loading& loading,
-                    std::span<const double> initial_pressure) override {
+  SolveResult do_solve(std::span<const double>, const Loading& loading,
+                       std::span<const double> initial_pressure) override {
     loads.push_back(loading.value);
     warm.push_back(initial_pressure.empty() ? std::vector<double>{}
                                             : std::vector<double>(initial_pressure.begin(), initial_pressure.end()));

@@ -75,8 +75,8 @@ class PerturbedPolonskyKeer final : public ContactSolver {
   PerturbedPolonskyKeer(const Grid& grid, std::uint64_t seed, const PolonskyKeerOptions& options)
       : op_(grid, seed), solver_(op_, options) {}
   std::string_view name() const override { return solver_.name(); }
-  SolveResult solve(std::span<const double> gap, const Loading& loading,
-                    std::span<const double> initial_pressure = {}) override {
+  SolveResult do_solve(std::span<const double> gap, const Loading& loading,
+                       std::span<const double> initial_pressure) override {
     return solver_.solve(gap, loading, initial_pressure);
   }
 

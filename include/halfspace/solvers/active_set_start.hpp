@@ -63,15 +63,17 @@ class ActiveSetStart final : public ContactSolver {
 
   std::string_view name() const override { return name_; }
 
-  // Without a start: Polonsky-Keer alone.
-  SolveResult solve(std::span<const double> initial_gap, const Loading& loading,
-                    std::span<const double> initial_pressure = {}) override;
-  // The phase from `start`, then Polonsky-Keer from its pressure; the
-  // phase's iterations and products are added to the result's.
-  SolveResult solve_from(std::span<const double> initial_gap, const Loading& loading, Eigen::ArrayXd&& start) override;
-
   // The last solve's phase.
   const ActiveSetRecord& record() const { return record_; }
+
+ protected:
+  // Without a start: Polonsky-Keer alone.
+  SolveResult do_solve(std::span<const double> initial_gap, const Loading& loading,
+                       std::span<const double> initial_pressure) override;
+  // The phase from `start`, then Polonsky-Keer from its pressure; the
+  // phase's iterations and products are added to the result's.
+  SolveResult do_solve_from(std::span<const double> initial_gap, const Loading& loading,
+                            Eigen::ArrayXd&& start) override;
 
  private:
   // The phase on `pressure` (in place): returns its record.

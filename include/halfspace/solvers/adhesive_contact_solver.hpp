@@ -166,9 +166,10 @@ class AdhesiveContactSolver final : public ContactSolver {
   // the wall (gap 0; with a cap also those below it, gap < 0 at p = H);
   // result.adhesion holds the adhesive quantities, result.hardness and
   // plastic_fraction the cap's. With a cap, a load above H times the domain
-  // area throws InputError (InterfaceLaw::check_load).
-  SolveResult solve(std::span<const double> initial_gap, const Loading& loading,
-                    std::span<const double> initial_pressure = {}) override;
+  // area throws InputError (ContactSolver::solve).
+ protected:
+  SolveResult do_solve(std::span<const double> initial_gap, const Loading& loading,
+                       std::span<const double> initial_pressure) override;
 
  private:
   struct Impl;

@@ -101,8 +101,6 @@ class DenseContactSolver : public ContactSolver {
                      DenseContactOptions options);
 
   std::string_view name() const final { return name_; }
-  SolveResult solve(std::span<const double> initial_gap, const Loading& loading,
-                    std::span<const double> initial_pressure = {}) final;
 
   const Grid& grid() const { return grid_; }
   const Eigen::MatrixXd& influence_matrix() const { return influence_; }
@@ -112,6 +110,8 @@ class DenseContactSolver : public ContactSolver {
   const LcpSolution& last_solution() const { return last_solution_; }
 
  protected:
+  SolveResult do_solve(std::span<const double> initial_gap, const Loading& loading,
+                       std::span<const double> initial_pressure) final;
   virtual LcpSolution solve_lcp(const LcpProblem& problem) = 0;
 
  private:

@@ -43,8 +43,9 @@ class MultilevelSolver final : public ContactSolver {
   // levels are skipped: the warm start is already a good start, unless under
   // load control its force is off the target by more than
   // warm_start_max_load_ratio, in which case it is set aside.
-  SolveResult solve(std::span<const double> initial_gap, const Loading& loading,
-                    std::span<const double> initial_pressure = {}) override;
+ protected:
+  SolveResult do_solve(std::span<const double> initial_gap, const Loading& loading,
+                       std::span<const double> initial_pressure) override;
 
  private:
   // Whether a warm start is close enough to the load to beat the coarse grids.

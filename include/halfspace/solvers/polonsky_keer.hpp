@@ -131,16 +131,18 @@ class PolonskyKeer final : public ContactSolver {
 
   std::string_view name() const override { return name_; }
 
-  SolveResult solve(std::span<const double> initial_gap, const Loading& loading,
-                    std::span<const double> initial_pressure = {}) override;
-  // Iterates in `start` itself (it becomes the result's pressure).
-  SolveResult solve_from(std::span<const double> initial_gap, const Loading& loading, Eigen::ArrayXd&& start) override;
-
   // Workspace field 0 or 1 (one entry per cell): free between solves, so
   // that a phase run before solve_from (active_set_start.hpp) needs no
   // fields of its own for them. With single-precision work vectors they
   // are made (in double) on the first call.
   std::span<double> workspace(int which);
+
+ protected:
+  SolveResult do_solve(std::span<const double> initial_gap, const Loading& loading,
+                       std::span<const double> initial_pressure) override;
+  // Iterates in `start` itself (it becomes the result's pressure).
+  SolveResult do_solve_from(std::span<const double> initial_gap, const Loading& loading,
+                            Eigen::ArrayXd&& start) override;
 
  private:
   // The iteration from `pressure`: a warm start if `warm`, else any values
