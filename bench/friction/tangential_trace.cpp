@@ -63,7 +63,8 @@ Eigen::ArrayXd normal_pressure(const Grid& grid, const ElasticPair& pair, const 
   pressure = normal.pressure;
   if (!file.empty()) {
     std::ofstream out(file, std::ios::binary);
-    out.write(reinterpret_cast<const char*>(pressure.data()), static_cast<std::streamsize>(grid.size() * sizeof(double)));
+    out.write(reinterpret_cast<const char*>(pressure.data()),
+              static_cast<std::streamsize>(grid.size() * sizeof(double)));
   }
   return pressure;
 }

@@ -55,11 +55,11 @@ std::array<double, 2> direct_surface_displacement(const LayeredMaterial& m, doub
     const double d = std::exp(-q * z);
     const double g = std::exp(q * (z - t));
     Eigen::Matrix4d f;
-    f << d, z * d, g, z * g,                                                                            //
-        d, (l * q * z + l + mu * q * z + 3 * mu) * d / (q * (l + mu)), -g,                              //
-        -(l * q * z - l + mu * q * z - 3 * mu) * g / (q * (l + mu)),                                    //
+    f << d, z * d, g, z * g,                                                                               //
+        d, (l * q * z + l + mu * q * z + 3 * mu) * d / (q * (l + mu)), -g,                                 //
+        -(l * q * z - l + mu * q * z - 3 * mu) * g / (q * (l + mu)),                                       //
         -2 * mu * q * d, -2 * mu * (l * q * z + l + mu * q * z + 2 * mu) * d / (l + mu), -2 * mu * q * g,  //
-        -2 * mu * (l * q * z - l + mu * q * z - 2 * mu) * g / (l + mu),                                 //
+        -2 * mu * (l * q * z - l + mu * q * z - 2 * mu) * g / (l + mu),                                    //
         -2 * mu * q * d, -2 * mu * (l * q * z + mu * q * z + mu) * d / (l + mu), 2 * mu * q * g,           //
         2 * mu * (l * q * z + mu * q * z - mu) * g / (l + mu);
     return f;
