@@ -15,6 +15,7 @@
 #include "halfspace/grid.hpp"
 #include "halfspace/lubrication/elastic_film.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
+#include "support/analytic_solutions.hpp"
 
 using namespace halfspace;
 using namespace halfspace::lubrication;
@@ -46,10 +47,7 @@ int main(int argc, char** argv) {
                              .grid_sequencing = sequencing};
   const ElasticFilm f = solve_elastic_film(op, bench::parabolic_gap(grid, upstream, half), bench::rolling(u),
                                            bench::roelands_laws(g), options);
-  const double hd_central =
-      2.69 * std::pow(u, 0.67) * std::pow(g, 0.53) * std::pow(w, -0.067) * (1.0 - 0.61 * std::exp(-0.73));
-  const double hd_minimum =
-      3.63 * std::pow(u, 0.68) * std::pow(g, 0.49) * std::pow(w, -0.073) * (1.0 - std::exp(-0.68));
+  const auto [hd_central, hd_minimum] = testing::hamrock_dowson_point(u, g, w);
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   const double peak = static_cast<double>(usage.ru_maxrss) * 1024.0;

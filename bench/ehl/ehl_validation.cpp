@@ -14,6 +14,7 @@
 #include "halfspace/grid.hpp"
 #include "halfspace/lubrication/elastic_film.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
+#include "support/analytic_solutions.hpp"
 
 namespace {
 
@@ -106,10 +107,7 @@ int main(int argc, char** argv) {
   const std::vector<double> point_grids = quick ? std::vector<double>{6} : std::vector<double>{6, 8, 10};
   for (double w : point_loads) {
     const double u = 1e-11, g = 5000;
-    const double hd_central =
-        2.69 * std::pow(u, 0.67) * std::pow(g, 0.53) * std::pow(w, -0.067) * (1.0 - 0.61 * std::exp(-0.73));
-    const double hd_minimum =
-        3.63 * std::pow(u, 0.68) * std::pow(g, 0.49) * std::pow(w, -0.073) * (1.0 - std::exp(-0.68));
+    const auto [hd_central, hd_minimum] = testing::hamrock_dowson_point(u, g, w);
     for (double cells : point_grids) {
       for (CouetteScheme scheme : {CouetteScheme::first_order, CouetteScheme::second_order}) {
         const Film f = point(w, u, g, cells, scheme);

@@ -28,49 +28,6 @@ void CoarsenedInfluenceOperator::apply(std::span<const double> pressure, std::sp
   solvers::restrict_by_average(fine_grid, fine_displacement_, displacement);
 }
 
-namespace {
-
-// The two coarse indices and the weight of the second for a fine index
-// `i` on an axis of `coarse_count` coarse nodes.
-struct Bracket {
-  std::size_t low = 0, high = 0;
-  double weight = 0.0;
-};
-
-Bracket bracket(std::size_t i, std::size_t coarse_count, bool periodic) {
-  const double t = 0.5 * static_cast<double>(i) - 0.25;
-  if (coarse_count == 1) return {};
-  if (periodic) {
-    const double low = std::floor(t);
-    const auto n = static_cast<long>(coarse_count);
-    const long l = ((static_cast<long>(low) % n) + n) % n;
-    return {static_cast<std::size_t>(l), static_cast<std::size_t>((l + 1) % n), t - low};
-  }
-  const double clamped = std::clamp(t, 0.0, static_cast<double>(coarse_count - 1));
-  const auto low = std::min(static_cast<std::size_t>(clamped), coarse_count - 2);
-  return {low, low + 1, clamped - static_cast<double>(low)};
-}
-
-}  // namespace
-
-void interpolate_to_fine(const Grid& fine, std::span<const double> coarse_values, std::span<double> fine_values) {
-  const bool line = fine.dimension() == 1;
-  const std::size_t nx = fine.nx(), ny = line ? 1 : fine.ny();
-  const std::size_t cx = nx / 2, cy = line ? 1 : ny / 2;
-  assert(fine_values.size() == nx * ny && coarse_values.size() == cx * cy);
-  const bool periodic = fine.periodic();
-  for (std::size_t j = 0; j < ny; ++j) {
-    const Bracket y = line ? Bracket{} : bracket(j, cy, periodic);
-    for (std::size_t i = 0; i < nx; ++i) {
-      const Bracket x = bracket(i, cx, periodic);
-      const auto at = [&](std::size_t row, std::size_t column) { return coarse_values[row * cx + column]; };
-      const double low = (1.0 - x.weight) * at(y.low, x.low) + x.weight * at(y.low, x.high);
-      const double high = (1.0 - x.weight) * at(y.high, x.low) + x.weight * at(y.high, x.high);
-      fine_values[j * nx + i] = (1.0 - y.weight) * low + y.weight * high;
-    }
-  }
-}
-
 }  // namespace halfspace::lubrication::detail
 
 namespace halfspace::lubrication {
@@ -103,9 +60,9 @@ std::optional<ElasticFilm> sequenced_start(InfluenceOperator& op, const Eigen::A
   ElasticFilm start;
   start.pressure.resize(static_cast<Eigen::Index>(grid.size()));
   start.fluid_fraction.resize(start.pressure.size());
-  detail::interpolate_to_fine(grid, {film.pressure.data(), coarse->size()}, {start.pressure.data(), grid.size()});
-  detail::interpolate_to_fine(grid, {film.fluid_fraction.data(), coarse->size()},
-                              {start.fluid_fraction.data(), grid.size()});
+  solvers::prolong_bilinear(grid, {film.pressure.data(), coarse->size()}, {start.pressure.data(), grid.size()});
+  solvers::prolong_bilinear(grid, {film.fluid_fraction.data(), coarse->size()},
+                            {start.fluid_fraction.data(), grid.size()});
   // The coarse film's h0 carries over: the coarse gap is the fine one's
   // block average and the coarse K the fine one's.
   start.offset = film.offset;

@@ -44,11 +44,4 @@ class CoarsenedInfluenceOperator final : public InfluenceOperator {
   double self_influence_ = 0.0;
 };
 
-// Values on the nodes of `fine` interpolated (bilinearly, linearly in 1D)
-// from the nodes of the grid of twice its spacing (solvers::coarser_grid),
-// node (i, j) of `fine` lying at coarse coordinates (i / 2 - 1/4, j / 2 -
-// 1/4); wrapped around on periodic grids, held constant beyond the outer
-// coarse nodes otherwise.
-void interpolate_to_fine(const Grid& fine, std::span<const double> coarse_values, std::span<double> fine_values);
-
 }  // namespace halfspace::lubrication::detail

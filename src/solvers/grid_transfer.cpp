@@ -1,6 +1,8 @@
 #include "halfspace/solvers/grid_transfer.hpp"
 
+#include <algorithm>
 #include <cassert>
+#include <cmath>
 
 #include "halfspace/linalg/parallel.hpp"
 
@@ -45,6 +47,49 @@ void prolong_constant(const Grid& fine, std::span<const double> coarse_values, s
     double* fine_row = fine_values.data() + j * nx;
     for (std::size_t i = 0; i < nx; ++i) fine_row[i] = coarse_row[i / 2];
   });
+}
+
+namespace {
+
+// The two coarse indices and the weight of the second for a fine index
+// `i` on an axis of `coarse_count` coarse nodes.
+struct Bracket {
+  std::size_t low = 0, high = 0;
+  double weight = 0.0;
+};
+
+Bracket bracket(std::size_t i, std::size_t coarse_count, bool periodic) {
+  const double t = 0.5 * static_cast<double>(i) - 0.25;
+  if (coarse_count == 1) return {};
+  if (periodic) {
+    const double low = std::floor(t);
+    const auto n = static_cast<long>(coarse_count);
+    const long l = ((static_cast<long>(low) % n) + n) % n;
+    return {static_cast<std::size_t>(l), static_cast<std::size_t>((l + 1) % n), t - low};
+  }
+  const double clamped = std::clamp(t, 0.0, static_cast<double>(coarse_count - 1));
+  const auto low = std::min(static_cast<std::size_t>(clamped), coarse_count - 2);
+  return {low, low + 1, clamped - static_cast<double>(low)};
+}
+
+}  // namespace
+
+void prolong_bilinear(const Grid& fine, std::span<const double> coarse_values, std::span<double> fine_values) {
+  const bool line = fine.dimension() == 1;
+  const std::size_t nx = fine.nx(), ny = line ? 1 : fine.ny();
+  const std::size_t cx = nx / 2, cy = line ? 1 : ny / 2;
+  assert(fine_values.size() == nx * ny && coarse_values.size() == cx * cy);
+  const bool periodic = fine.periodic();
+  for (std::size_t j = 0; j < ny; ++j) {
+    const Bracket y = line ? Bracket{} : bracket(j, cy, periodic);
+    for (std::size_t i = 0; i < nx; ++i) {
+      const Bracket x = bracket(i, cx, periodic);
+      const auto at = [&](std::size_t row, std::size_t column) { return coarse_values[row * cx + column]; };
+      const double low = (1.0 - x.weight) * at(y.low, x.low) + x.weight * at(y.low, x.high);
+      const double high = (1.0 - x.weight) * at(y.high, x.low) + x.weight * at(y.high, x.high);
+      fine_values[j * nx + i] = (1.0 - y.weight) * low + y.weight * high;
+    }
+  }
 }
 
 }  // namespace halfspace::solvers

@@ -110,8 +110,7 @@ void ConjugateGradientMethod::step() {
     // A released cell the direction would push outward stays on its circle
     // (moving along it only) for this step: the preconditioner's reach
     // pushes many released cells straight back out, to be clipped again
-    // (about 10^4 a step at 2048^2). The 1024^2 benchmark's first step: 62
-    // iterations, not 69 (docs/development-log.md).
+    // (docs/development-log.md, "the tangential step at 2048^2").
     const double outward = c.released ? -(dx * c.nx + dy * c.ny) : 0.0;
     if (outward > 0.0) {
       dx += outward * c.nx;

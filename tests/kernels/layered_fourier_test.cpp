@@ -11,6 +11,7 @@
 #include <string>
 
 #include "halfspace/error.hpp"
+#include "support/layered_navier_solve.hpp"
 
 namespace halfspace {
 namespace {
@@ -21,53 +22,11 @@ LayeredMaterial coating(double t, double e1, double nu1, double e2, double nu2) 
   return LayeredMaterial{t, ElasticBody{e1, nu1}, ElasticBody{e2, nu2}};
 }
 
-// The surface displacement of the bonded layer under p cos(q x), solved
-// directly from Navier's equations in plane strain: in each body
-// u_x = U(z) sin(qx), u_z = W(z) cos(qx) with U = (a1 + a2 z) e^{-qz} +
-// (a3 + a4 z) e^{q(z - t)} and W, sigma_zz, sigma_xz following from it (z
-// down); the substrate keeps the decaying terms only. (The growing terms are
-// taken relative to z = t and the stress rows divided by mu1, which keeps the
-// 6 x 6 system's condition number below 1e5 for q t <= 5.) Six conditions: sigma_zz = -p
-// and sigma_xz = 0 on the surface, and U, W, sigma_zz, sigma_xz continuous at
-// z = t. Returns M = W(0) E1* q / (2 p), with q = 1/m, p = 1 Pa.
+// The compliance factor M = W(0) E1* q / (2 p) of the direct plane-strain
+// solve (support/layered_navier_solve.hpp), q = 1/m, p = 1 Pa.
 double direct_compliance_factor(double t, double e1, double nu1, double e2, double nu2) {
-  struct Body {
-    double lam, mu;
-  };
-  auto body = [](double e, double nu) { return Body{e * nu / ((1 + nu) * (1 - 2 * nu)), e / (2 * (1 + nu))}; };
-  const double q = 1.0;
-  // Rows U, W, sigma_zz, sigma_xz; columns a1..a4 at depth z.
-  auto fields = [q, t](const Body& b, double z) {
-    const double l = b.lam;
-    const double m = b.mu;
-    const double d = std::exp(-q * z);
-    const double g = std::exp(q * (z - t));
-    Eigen::Matrix4d f;
-    f << d, z * d, g, z * g,                                                                         //
-        d, (l * q * z + l + m * q * z + 3 * m) * d / (q * (l + m)), -g,                              //
-        -(l * q * z - l + m * q * z - 3 * m) * g / (q * (l + m)),                                    //
-        -2 * m * q * d, -2 * m * (l * q * z + l + m * q * z + 2 * m) * d / (l + m), -2 * m * q * g,  //
-        -2 * m * (l * q * z - l + m * q * z - 2 * m) * g / (l + m),                                  //
-        -2 * m * q * d, -2 * m * (l * q * z + m * q * z + m) * d / (l + m), 2 * m * q * g,           //
-        2 * m * (l * q * z + m * q * z - m) * g / (l + m);
-    return f;
-  };
-  const Body layer = body(e1, nu1);
-  const Body substrate = body(e2, nu2);
-  Eigen::Matrix<double, 6, 6> a = Eigen::Matrix<double, 6, 6>::Zero();
-  Eigen::Matrix<double, 6, 1> rhs = Eigen::Matrix<double, 6, 1>::Zero();
-  const Eigen::Matrix4d top = fields(layer, 0.0);
-  a.block<2, 4>(0, 0) = top.block<2, 4>(2, 0);  // sigma_zz, sigma_xz at z = 0
-  rhs(0) = -1.0;
-  a.block<4, 4>(2, 0) = fields(layer, t);
-  a.block<4, 2>(2, 4) = -fields(substrate, t).block<4, 2>(0, 0);
-  for (const int row : {0, 1, 4, 5}) {
-    a.row(row) /= layer.mu;
-    rhs(row) /= layer.mu;
-  }
-  const Eigen::Matrix<double, 6, 1> coefficients = a.fullPivLu().solve(rhs);
-  const double surface_w = top.row(1).dot(coefficients.head<4>());
-  return surface_w * e1 / (1 - nu1 * nu1) * q / 2.0;
+  const double surface_w = testing::layered_surface_displacement(coating(t, e1, nu1, e2, nu2), 1.0, 0.0)[1];
+  return surface_w * e1 / (1 - nu1 * nu1) / 2.0;
 }
 
 // The direct 6 x 6 solve, condition number up to 1e5: 1e-11 at worst.

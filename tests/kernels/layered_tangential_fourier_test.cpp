@@ -16,6 +16,7 @@
 #include "halfspace/kernels/coupling_fourier.hpp"
 #include "halfspace/kernels/layered_fourier.hpp"
 #include "halfspace/kernels/tangential_fourier.hpp"
+#include "support/layered_navier_solve.hpp"
 
 namespace halfspace {
 namespace {
@@ -28,58 +29,6 @@ LayeredMaterial coating(double t, double e1, double nu1, double e2, double nu2) 
 
 double shear_modulus(double e, double nu) {
   return e / (2.0 * (1.0 + nu));
-}
-
-// The bonded layer under a surface traction of one mode (q = 1/m), solved
-// from Navier's equations in plane strain, a method apart from the kernel's
-// Airy functions: u_x = U(z) sin(qx), u_z = W(z) cos(qx), U = (a1 + a2 z)
-// e^{-qz} + (a3 + a4 z) e^{q(z - t)} in the layer, the decaying terms in the
-// substrate (z down); sigma_zz = -p cos(qx), sigma_xz = -s sin(qx) on the
-// surface, U, W, sigma_zz, sigma_xz continuous at z = t. Returns (U(0),
-// W(0)) in metres for p, s in Pa.
-std::array<double, 2> direct_surface_displacement(const LayeredMaterial& m, double p, double s) {
-  struct Body {
-    double lam, mu;
-  };
-  auto body = [](const ElasticBody& b) {
-    const double e = b.youngs_modulus;
-    const double nu = b.poissons_ratio;
-    return Body{e * nu / ((1 + nu) * (1 - 2 * nu)), e / (2 * (1 + nu))};
-  };
-  const double q = 1.0;
-  const double t = m.thickness;
-  // Rows U, W, sigma_zz, sigma_xz; columns a1..a4 at depth z.
-  auto fields = [q, t](const Body& b, double z) {
-    const double l = b.lam;
-    const double mu = b.mu;
-    const double d = std::exp(-q * z);
-    const double g = std::exp(q * (z - t));
-    Eigen::Matrix4d f;
-    f << d, z * d, g, z * g,                                                                               //
-        d, (l * q * z + l + mu * q * z + 3 * mu) * d / (q * (l + mu)), -g,                                 //
-        -(l * q * z - l + mu * q * z - 3 * mu) * g / (q * (l + mu)),                                       //
-        -2 * mu * q * d, -2 * mu * (l * q * z + l + mu * q * z + 2 * mu) * d / (l + mu), -2 * mu * q * g,  //
-        -2 * mu * (l * q * z - l + mu * q * z - 2 * mu) * g / (l + mu),                                    //
-        -2 * mu * q * d, -2 * mu * (l * q * z + mu * q * z + mu) * d / (l + mu), 2 * mu * q * g,           //
-        2 * mu * (l * q * z + mu * q * z - mu) * g / (l + mu);
-    return f;
-  };
-  const Body layer = body(m.layer);
-  const Body substrate = body(m.substrate);
-  Eigen::Matrix<double, 6, 6> a = Eigen::Matrix<double, 6, 6>::Zero();
-  Eigen::Matrix<double, 6, 1> rhs = Eigen::Matrix<double, 6, 1>::Zero();
-  const Eigen::Matrix4d top = fields(layer, 0.0);
-  a.block<2, 4>(0, 0) = top.block<2, 4>(2, 0);
-  rhs(0) = -p;
-  rhs(1) = -s;
-  a.block<4, 4>(2, 0) = fields(layer, t);
-  a.block<4, 2>(2, 4) = -fields(substrate, t).block<4, 2>(0, 0);
-  for (const int row : {0, 1, 4, 5}) {
-    a.row(row) /= layer.mu;
-    rhs(row) /= layer.mu;
-  }
-  const Eigen::Matrix<double, 6, 1> x = a.fullPivLu().solve(rhs);
-  return {top.row(0).dot(x.head<4>()), top.row(1).dot(x.head<4>())};
 }
 
 // The antiplane mode (q = 1/m) by its 3 x 3 system: u_y = a e^{-z} + b
@@ -133,8 +82,10 @@ TEST(LayeredTangentialFourierTest, DirectSolverGivesCerrutiForAHomogeneousBody) 
   // the reverse of coupling_fourier.hpp's relative sense).
   const ElasticBody b{2e11, 0.3};
   const double g = shear_modulus(b.youngs_modulus, b.poissons_ratio);
-  const auto pressure = direct_surface_displacement(coating(0.5, b.youngs_modulus, 0.3, b.youngs_modulus, 0.3), 1, 0);
-  const auto shear = direct_surface_displacement(coating(0.5, b.youngs_modulus, 0.3, b.youngs_modulus, 0.3), 0, 1);
+  const auto pressure =
+      testing::layered_surface_displacement(coating(0.5, b.youngs_modulus, 0.3, b.youngs_modulus, 0.3), 1, 0);
+  const auto shear =
+      testing::layered_surface_displacement(coating(0.5, b.youngs_modulus, 0.3, b.youngs_modulus, 0.3), 0, 1);
   EXPECT_NEAR(pressure[1], 0.7 / g, kDirectSolveTolerance / g);
   EXPECT_NEAR(shear[0], 0.7 / g, kDirectSolveTolerance / g);
   EXPECT_NEAR(pressure[0], -0.2 / g, kDirectSolveTolerance / g);
@@ -149,8 +100,8 @@ TEST(LayeredTangentialFourierTest, ModeCompliancesMatchADirectSolutionOfNavierEq
       const LayeredMaterial material = coating(t, m[0], m[1], m[2], m[3]);
       const LayeredTangentialKernel kernel(material);
       const kernels::LayeredModeCompliance c = kernel.mode_compliance(1.0);
-      const auto pressure = direct_surface_displacement(material, 1.0, 0.0);
-      const auto shear = direct_surface_displacement(material, 0.0, 1.0);
+      const auto pressure = testing::layered_surface_displacement(material, 1.0, 0.0);
+      const auto shear = testing::layered_surface_displacement(material, 0.0, 1.0);
       // The cross terms in the reference's convention are -D_eff/2 (see the homogeneous test).
       const kernels::LayeredModeCompliance direct{pressure[1], shear[0], direct_antiplane_displacement(material),
                                                   -2.0 * pressure[0], -2.0 * shear[1]};

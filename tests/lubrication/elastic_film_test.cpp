@@ -136,12 +136,10 @@ PointFilm solve_point(const PointContact& c) {
 }
 
 double hamrock_dowson_central(const PointContact& c) {
-  return 2.69 * std::pow(c.speed_parameter, 0.67) * std::pow(c.material_parameter, 0.53) *
-         std::pow(c.load_parameter, -0.067) * (1.0 - 0.61 * std::exp(-0.73));
+  return testing::hamrock_dowson_point(c.speed_parameter, c.material_parameter, c.load_parameter).central;
 }
 double hamrock_dowson_minimum(const PointContact& c) {
-  return 3.63 * std::pow(c.speed_parameter, 0.68) * std::pow(c.material_parameter, 0.49) *
-         std::pow(c.load_parameter, -0.073) * (1.0 - std::exp(-0.68));
+  return testing::hamrock_dowson_point(c.speed_parameter, c.material_parameter, c.load_parameter).minimum;
 }
 
 // Pan & Hamrock's fit to their numerical solutions (Roelands, Dowson–

@@ -55,12 +55,10 @@ ElasticFilm solve_point(std::size_t n, bool sequencing) {
 // deviates from their own films by a few percent; the minimum, in the side
 // lobes, converges slowly with the grid.
 double hamrock_dowson_central() {
-  return 2.69 * std::pow(kSpeedParameter, 0.67) * std::pow(kMaterialParameter, 0.53) *
-         std::pow(kLoadParameter, -0.067) * (1.0 - 0.61 * std::exp(-0.73));
+  return testing::hamrock_dowson_point(kSpeedParameter, kMaterialParameter, kLoadParameter).central;
 }
 double hamrock_dowson_minimum() {
-  return 3.63 * std::pow(kSpeedParameter, 0.68) * std::pow(kMaterialParameter, 0.49) *
-         std::pow(kLoadParameter, -0.073) * (1.0 - std::exp(-0.68));
+  return testing::hamrock_dowson_point(kSpeedParameter, kMaterialParameter, kLoadParameter).minimum;
 }
 constexpr double kHamrockDowsonCentralTolerance = 0.05;
 constexpr double kHamrockDowsonMinimumTolerance = 0.12;

@@ -1,9 +1,11 @@
-// Coarsening, block averages and piecewise-constant prolongation between a grid
-// and the grid of twice its spacing (the coarse-grid start of pk-multilevel).
+// Coarsening, block averages, piecewise-constant and bilinear prolongation
+// between a grid and the grid of twice its spacing (the coarse-grid start of
+// pk-multilevel, the EHL film's grid sequencing).
 #include "halfspace/solvers/grid_transfer.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <vector>
 
 namespace halfspace::solvers {
@@ -60,6 +62,33 @@ TEST(GridTransferTest, ProlongationCopiesEachCoarseValueToItsBlockAndRestriction
   std::vector<double> back(coarse.size());
   restrict_by_average(fine, values, back);
   EXPECT_EQ(back, coarse);
+}
+
+// A coarse field linear in the node indices comes back exact wherever the
+// fine node lies between coarse nodes (coarse coordinates i/2 - 1/4, j/2 -
+// 1/4) and held at the edge value beyond; on a periodic grid the weights of
+// every fine node sum to one, so a constant stays constant.
+TEST(GridTransferTest, BilinearProlongationIsExactForLinearFields) {
+  const Grid fine = Grid::plane(8, 6, 1.0, 1.0, Boundary::free);
+  const std::size_t cx = 4, cy = 3;
+  std::vector<double> coarse(cx * cy);
+  const auto linear = [](double x, double y) { return 1.0 + 2.0 * x - 3.0 * y; };
+  for (std::size_t j = 0; j < cy; ++j) {
+    for (std::size_t i = 0; i < cx; ++i) coarse[j * cx + i] = linear(static_cast<double>(i), static_cast<double>(j));
+  }
+  std::vector<double> values(fine.size());
+  prolong_bilinear(fine, coarse, values);
+  for (std::size_t j = 0; j < fine.ny(); ++j) {
+    for (std::size_t i = 0; i < fine.nx(); ++i) {
+      const double x = std::clamp(0.5 * static_cast<double>(i) - 0.25, 0.0, static_cast<double>(cx - 1));
+      const double y = std::clamp(0.5 * static_cast<double>(j) - 0.25, 0.0, static_cast<double>(cy - 1));
+      EXPECT_NEAR(values[j * fine.nx() + i], linear(x, y), 1e-12) << "node " << i << ", " << j;
+    }
+  }
+  const Grid periodic = Grid::plane(8, 6, 1.0, 1.0, Boundary::periodic);
+  std::vector<double> constant(cx * cy, 2.5);
+  prolong_bilinear(periodic, constant, values);
+  for (double v : values) EXPECT_NEAR(v, 2.5, 1e-14);
 }
 
 }  // namespace

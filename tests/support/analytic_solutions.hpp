@@ -39,6 +39,18 @@ inline HertzPoint hertz_point(double force, double sphere_radius, double e_star)
   return {a, 3.0 * force / (2.0 * std::numbers::pi * a * a), a * a / sphere_radius};
 }
 
+// Hamrock & Dowson's (1977) fit of the central and minimum film of a
+// circular (k = 1) EHL point contact, H = h / R, in the speed, material and
+// load parameters U = eta0 u / (E' R), G = alpha E', W = F / (E' R^2).
+struct HamrockDowsonFilm {
+  double central, minimum;
+};
+
+inline HamrockDowsonFilm hamrock_dowson_point(double u, double g, double w) {
+  return {2.69 * std::pow(u, 0.67) * std::pow(g, 0.53) * std::pow(w, -0.067) * (1.0 - 0.61 * std::exp(-0.73)),
+          3.63 * std::pow(u, 0.68) * std::pow(g, 0.49) * std::pow(w, -0.073) * (1.0 - std::exp(-0.68))};
+}
+
 // Westergaard's periodic wave g0 = amplitude (1 - cos(2 pi x / wavelength)).
 struct Westergaard {
   double wavelength;

@@ -1,6 +1,6 @@
 // Moving fields between a grid and the grid of twice its spacing, for the
-// coarse-grid start of MultilevelSolver: block averages down, piecewise
-// constant values up.
+// coarse-grid start of MultilevelSolver and the EHL film's grid sequencing:
+// block averages down, piecewise constant or bilinear values up.
 #pragma once
 
 #include <optional>
@@ -21,5 +21,11 @@ void restrict_by_average(const Grid& fine, std::span<const double> fine_values, 
 
 // fine(j, i) = coarse(j / 2, i / 2).
 void prolong_constant(const Grid& fine, std::span<const double> coarse_values, std::span<double> fine_values);
+
+// fine(j, i) interpolated bilinearly (linearly in 1D) from the coarse
+// nodes, fine node (i, j) lying at coarse coordinates (i / 2 - 1/4, j / 2 -
+// 1/4); wrapped around on periodic grids, held constant beyond the outer
+// coarse nodes otherwise.
+void prolong_bilinear(const Grid& fine, std::span<const double> coarse_values, std::span<double> fine_values);
 
 }  // namespace halfspace::solvers
