@@ -6,6 +6,9 @@
 # Inputs that crash are written to $HALFSPACE_FUZZ_DIR/crashes/<reader>/ and
 # make the script fail. New corpus entries go to $HALFSPACE_FUZZ_DIR/corpus/,
 # not into the repository.
+# HALFSPACE_FUZZ_SEED fixes libFuzzer's seed (scripts/test.sh sets it, so a
+# short run in CI repeats the run checked before committing); unset, each
+# run explores from a new random seed.
 #   scripts/fuzz.sh [SECONDS] [harness ...]     harnesses: hdf5 npy text_matrix profile x3p gsf result toml_config
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -49,6 +52,8 @@ asan_options() {
   local common=detect_leaks=1:allocator_may_return_null=1
   if [ "$1" = hdf5 ] || [ "$1" = result ]; then echo "$common:max_allocation_size_mb=2048"; else echo "$common"; fi
 }
+seed_flag=()
+if [ -n "${HALFSPACE_FUZZ_SEED:-}" ]; then seed_flag=(-seed="$HALFSPACE_FUZZ_SEED"); fi
 status=0
 printf '%-12s %10s %8s %8s %8s  %s\n' harness "exec/s" cov ft corpus result
 for h in "${harnesses[@]}"; do
@@ -61,7 +66,7 @@ for h in "${harnesses[@]}"; do
     LSAN_OPTIONS="suppressions=$root/fuzz/lsan-suppressions.txt:print_suppressions=0" \
     UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
     "$build/fuzz_$h" "$corpus" "$root/fuzz/corpus/$h" -max_total_time="$seconds" -rss_limit_mb=2048 \
-    -malloc_limit_mb="$(malloc_limit_mb "$h")" -max_len=65536 -timeout=10 -print_final_stats=1 -artifact_prefix="$crashes/" \
+    -malloc_limit_mb="$(malloc_limit_mb "$h")" -max_len=65536 -timeout=10 -print_final_stats=1 -artifact_prefix="$crashes/" "${seed_flag[@]}" \
     >"$log" 2>&1
   rc=$?
   set -e

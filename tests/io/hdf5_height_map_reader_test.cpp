@@ -541,6 +541,57 @@ TEST(Hdf5HeightMapReaderTest, RefusesDatasetsWhoseDataAreNotStoredInTheFile) {
   expect_contains(read_error(external), {external.string(), "external files"});
 }
 
+TEST(Hdf5HeightMapReaderTest, RefusesAChunkedDatasetOfWhichOnlySomeChunksWereWritten) {
+  const TempDir dir;
+  // 16000 x 16000 points in 4 x 4 chunks, one of them written: a 4 KB file
+  // on which libhdf5's per-chunk bookkeeping used more than 20 GB.
+  const fs::path partial = dir / "partial.h5";
+  {
+    const test::H5 file = create_file(partial);
+    const test::H5 creation(H5Pcreate(H5P_DATASET_CREATE), H5Pclose, "dcpl");
+    const hsize_t chunk[2] = {4, 4};
+    test::check(H5Pset_chunk(creation.get(), 2, chunk), "chunk");
+    const hsize_t dims[2] = {16000, 16000};
+    const test::H5 space(H5Screate_simple(2, dims, nullptr), H5Sclose, "space");
+    const test::H5 data(
+        H5Dcreate2(file.get(), "height", H5T_IEEE_F64LE, space.get(), H5P_DEFAULT, creation.get(), H5P_DEFAULT),
+        H5Dclose, "create");
+    const hsize_t start[2] = {0, 0};
+    test::check(H5Sselect_hyperslab(space.get(), H5S_SELECT_SET, start, nullptr, chunk, nullptr), "select");
+    const test::H5 memory(H5Screate_simple(2, chunk, nullptr), H5Sclose, "memory");
+    const std::vector<double> values(16, 1.0);
+    test::check(H5Dwrite(data.get(), H5T_NATIVE_DOUBLE, memory.get(), space.get(), H5P_DEFAULT, values.data()),
+                "write");
+  }
+  const std::size_t before = test::peak_resident_bytes();
+  expect_contains(read_error(partial), {partial.string(), "only partly written", "1 of its 16000000 chunks"});
+  EXPECT_LT(test::peak_resident_bytes(), before + test::kRefusalMemoryAllowance);
+}
+
+TEST(Hdf5HeightMapReaderTest, ReadsAChunkedCompressedDatasetWithEveryChunkWritten) {
+  const TempDir dir;
+  const fs::path path = dir / "chunked.h5";
+  const hsize_t dims[2] = {5, 7};
+  std::vector<double> values(35);
+  for (std::size_t k = 0; k < values.size(); ++k) values[k] = 1e-6 * static_cast<double>(k % 11);
+  {
+    const test::H5 file = create_file(path);
+    const test::H5 creation(H5Pcreate(H5P_DATASET_CREATE), H5Pclose, "dcpl");
+    const hsize_t chunk[2] = {2, 3};  // partial chunks at the edges
+    test::check(H5Pset_chunk(creation.get(), 2, chunk), "chunk");
+    test::check(H5Pset_deflate(creation.get(), 4), "deflate");
+    const test::H5 space(H5Screate_simple(2, dims, nullptr), H5Sclose, "space");
+    const test::H5 data(
+        H5Dcreate2(file.get(), "height", H5T_IEEE_F64LE, space.get(), H5P_DEFAULT, creation.get(), H5P_DEFAULT),
+        H5Dclose, "create");
+    test::check(H5Dwrite(data.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "write");
+  }
+  const HeightMap map = read_hdf5_height_map(path);
+  ASSERT_EQ(map.nx, 7u);
+  ASSERT_EQ(map.ny, 5u);
+  for (std::size_t k = 0; k < values.size(); ++k) EXPECT_EQ(map.heights[static_cast<Eigen::Index>(k)], values[k]);
+}
+
 TEST(Hdf5HeightMapReaderTest, ADamagedFileLeavesHdf5ErrorPrintingOff) {
   // One byte of an object address changed: H5Fopen fails ("addr overflow")
   // and leaves HDF5 unable to close its internals, so that at exit it printed
