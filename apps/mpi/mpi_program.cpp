@@ -83,9 +83,6 @@ Grid broadcast(const mpi::MpiCommunicator& world, const std::optional<Grid>& gri
 // it is distributed; on one process the serial program does it.
 std::optional<std::string> unsupported_by_program(const SolveSetup& setup) {
   if (!setup.stress_depths.empty()) return fmt::format("subsurface stresses (stress depths) {}", kNotYet);
-  if (setup.coating && !setup.grid.periodic()) {
-    return fmt::format("a coated half-space on a free grid {} (on periodic grids it is)", kNotYet);
-  }
   return std::nullopt;
 }
 

@@ -154,20 +154,17 @@ bool NormalKernel::spectral_remainder() const {
 // has not, decay like t^2 / r^3 (the |q| term of R at q = 0).
 void NormalKernel::add_spectral_remainder(EvenSymbol& padded, double scale) const {
   if (!spectral_remainder()) return;
-  const std::size_t rows = padded.rows();
-  const std::size_t padded_cols = 2 * grid_.nx();
-  const double dx = grid_.dx();
-  const double dy = grid_.dy();
-  const bool line = grid_.dimension() == 1;
   linalg::for_each_row(padded.stored_rows(), padded.cols(), [&](std::size_t r) {
-    const double qy = dft_wavenumber(r, rows, dy);
-    for (std::size_t c = 0; c < padded.cols(); ++c) {
-      const double qx = dft_wavenumber(c, padded_cols, dx);
-      padded.at(r, c) +=
-          (line ? layered_->remainder_strip_spectrum(qx, dx) : layered_->remainder_cell_spectrum(qx, qy, dx, dy)) *
-          scale;
-    }
+    for (std::size_t c = 0; c < padded.cols(); ++c) padded.at(r, c) += padded_remainder(r, c) * scale;
   });
+}
+
+double NormalKernel::padded_remainder(std::size_t row, std::size_t col) const {
+  const double dx = grid_.dx();
+  const double qx = dft_wavenumber(col, 2 * grid_.nx(), dx);
+  if (grid_.dimension() == 1) return layered_->remainder_strip_spectrum(qx, dx);
+  const double qy = dft_wavenumber(row, 2 * grid_.ny(), grid_.dy());
+  return layered_->remainder_cell_spectrum(qx, qy, dx, grid_.dy());
 }
 
 // The inverse DFT's sum over the full spectrum (columns other than 0 and nx

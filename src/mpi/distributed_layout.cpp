@@ -37,11 +37,10 @@ solvers::ElasticOperators DistributedLayout::make_operators(const Grid& grid, co
     if (fourier) made.fourier = std::make_unique<SlabFourierPreconditioner>(grid, half_space, transform);
     return made;
   }
-  const double e_star = std::get<double>(half_space);
-  auto op = std::make_unique<SlabFreeOperator>(grid, e_star, comm_, planning);
+  auto op = std::make_unique<SlabFreeOperator>(grid, half_space, comm_, planning);
   if (fourier) {
     made.fourier = std::make_unique<SlabFourierPreconditioner>(
-        grid, e_star, std::make_shared<SlabRealFft>(grid.nx(), grid.ny(), comm_, planning, op->scratch()));
+        grid, half_space, std::make_shared<SlabRealFft>(grid.nx(), grid.ny(), comm_, planning, op->scratch()));
   }
   made.op = std::move(op);
   return made;
@@ -60,12 +59,6 @@ solvers::RowSlab DistributedLayout::rows(const Grid& grid) const {
 
 void DistributedLayout::check(const Grid& grid, const HalfSpace& half_space,
                               const solvers::SolverOptions& options) const {
-  if (std::holds_alternative<LayeredMaterial>(half_space) && !grid.periodic()) {
-    throw SolverOptionError("boundary", std::string(to_string(grid.boundary())),
-                            fmt::format("with a coated half-space {}: solve coated free grids on one process "
-                                        "(coated periodic grids are distributed)",
-                                        kNotYet));
-  }
   if (grid.dimension() != 2) {
     throw SolverOptionError(
         "grid", fmt::format("{} ({}D, {})", grid.shape_string(), grid.dimension(), to_string(grid.boundary())),

@@ -5,13 +5,17 @@
 // ky > ny reads 2ny - ky. Each process evaluates the quadrant rows FFTW-MPI
 // gives it, transforms them along x, FFTW-MPI transposes the quadrant to the
 // padded transform's columns, and each process transforms its columns along
-// y: it never holds more than its share of the quadrant.
+// y: it never holds more than its share of the quadrant. A coated body whose
+// remainder goes in spectrally (NormalKernel::spectral_remainder) adds it
+// to its columns' bins, and K_ii is then the inverse DFT at offset 0, summed
+// over the processes' columns.
 #include "halfspace/mpi/slab_free_operator.hpp"
 
 #include <fftw3-mpi.h>
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <complex>
 #include <mutex>
@@ -76,9 +80,10 @@ fftw_plan dct_rows(QuadrantTransform& buffer, std::size_t n, std::size_t howmany
 
 }  // namespace
 
-SlabFreeOperator::SlabFreeOperator(const Grid& grid, double e_star, const MpiCommunicator& comm, FftPlanning planning)
+SlabFreeOperator::SlabFreeOperator(const Grid& grid, const HalfSpace& half_space, const MpiCommunicator& comm,
+                                   FftPlanning planning)
     : grid_(checked_free_grid(grid)) {
-  const kernels::NormalKernel kernel(grid, e_star);
+  const kernels::NormalKernel kernel(grid, half_space);
   fft_ = std::make_unique<SlabPaddedRealFft>(grid.nx(), grid.ny(), comm, planning);
   const SlabLayout& layout = fft_->layout();
   const std::size_t nx = grid.nx();
@@ -120,7 +125,28 @@ SlabFreeOperator::SlabFreeOperator(const Grid& grid, double e_star, const MpiCom
   const double inverse_n = 1.0 / fft_->padded_size();
   symbol_.resize(layout.columns * (ny + 1));
   linalg::for_each_index(symbol_.size(), [&](std::size_t k) { symbol_[k] = values[k] * inverse_n; });
-  self_ = kernel.self_influence();
+  if (!kernel.spectral_remainder()) {
+    self_ = kernel.self_influence();
+    return;
+  }
+  linalg::for_each_row(layout.columns, ny + 1, [&](std::size_t c) {
+    for (std::size_t r = 0; r <= ny; ++r) {
+      symbol_[c * (ny + 1) + r] += kernel.padded_remainder(r, layout.first_column + c) * inverse_n;
+    }
+  });
+  // The inverse DFT at offset 0: every bin of the (2ny, 2nx) spectrum, the
+  // columns other than kx = 0 and nx and the rows other than ky = 0 and ny
+  // standing for two each.
+  double sum = 0.0;
+  for (std::size_t c = 0; c < layout.columns; ++c) {
+    const std::size_t kx = layout.first_column + c;
+    double column = 0.0;
+    for (std::size_t r = 0; r <= ny; ++r) column += (r == 0 || r == ny ? 1.0 : 2.0) * symbol_[c * (ny + 1) + r];
+    sum += (kx == 0 || kx == nx ? 1.0 : 2.0) * column;
+  }
+  std::array<double, 1> total{sum};
+  comm.sum(total);
+  self_ = total[0];
 }
 
 void SlabFreeOperator::apply(std::span<const double> pressure, std::span<double> displacement) {

@@ -193,18 +193,16 @@ for processes in (2, 3):
         else:
             print(f"generate {arguments[1]}, {processes} processes: {errors[0]}")
 
-# Still refused on several processes (free coated grids): one error line,
-# exit 1, nothing written.
-for processes in (2, 3):
-    result = harness.run_mpi(processes, ["solve"] + coated[:3] + ["free"] + coated[4:] +
-                             ["--mean-pressure", "2e8", "--output", refused])
-    errors = [line for line in result.stderr.splitlines() if line.startswith("error:")]
-    expected = "a coated half-space on a free grid is not available with more than one process yet"
-    if result.returncode != 1 or len(errors) != 1 or expected not in errors[0] or os.path.exists(refused):
-        fail(f"free coated, {processes} processes: exit {result.returncode}, errors {errors}, "
-             f"written {os.path.exists(refused)}")
-    else:
-        print(f"free coated, {processes} processes: {errors[0]}")
+# Coated free grids: a thin layer, whose remainder goes into the padded
+# spectrum bin by bin, and a thick one, whose remainder is in the cell
+# coefficients (kernels::NormalKernel::spectral_remainder).
+free_coated = coated[:3] + ["free"] + coated[4:] + ["--tol", "1e-12"]
+solve_case("coated-free-thin-pk-fourier-force", free_coated + ["--solver", "pk-fourier", "--mean-pressure", "2e8"])
+solve_case("coated-free-thin-pk-multilevel-force",
+           free_coated + ["--solver", "pk-multilevel", "--mean-pressure", "2e8"])
+thick = list(free_coated)
+thick[thick.index("--layer-thickness") + 1] = "1e-4"
+solve_case("coated-free-thick-pk-fourier-approach", thick + ["--solver", "pk-fourier", "--approach", "1e-6"])
 
 harness.finish()
 print("all distributed solves match the serial program")

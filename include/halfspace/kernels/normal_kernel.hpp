@@ -83,6 +83,10 @@ class NormalKernel {
   // (2ny, 2nx) grid's symbol, rows folded); does nothing unless
   // spectral_remainder().
   void add_spectral_remainder(EvenSymbol& padded, double scale) const;
+  // The remainder's value in bin (row, col) of the padded grid's spectrum
+  // (ky and kx indices of the (2ny, 2nx) transform; row 0 in 1D), for a
+  // coated body only.
+  double padded_remainder(std::size_t row, std::size_t col) const;
   // K_ii of a padded symbol (1/N folded in): its inverse DFT at offset 0.
   double padded_self_influence(const EvenSymbol& padded) const;
 

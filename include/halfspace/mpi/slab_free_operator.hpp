@@ -1,7 +1,7 @@
 // The free (non-periodic) half-space's influence operator on a 2D grid
 // spread over MPI processes in slabs of rows: the distributed counterpart of
 // FftInfluenceOperator on a free grid, the linear convolution with Love's
-// rectangle coefficients by zero padding to (2ny, 2nx) (DC-FFT, Liu, Wang &
+// rectangle coefficients (a coated body's: kernels::NormalKernel) by zero padding to (2ny, 2nx) (DC-FFT, Liu, Wang &
 // Liu 2000) through SlabPaddedRealFft. Fields hold this process's rows only.
 // Compiled only with HALFSPACE_MPI.
 #pragma once
@@ -13,6 +13,7 @@
 
 #include "halfspace/fft/fft_planning.hpp"
 #include "halfspace/grid.hpp"
+#include "halfspace/half_space.hpp"
 #include "halfspace/mpi/slab_padded_fft.hpp"
 #include "halfspace/operators/influence_operator.hpp"
 
@@ -20,11 +21,12 @@ namespace halfspace::mpi {
 
 class SlabFreeOperator final : public InfluenceOperator {
  public:
-  // u = K p on the free 2D `grid` for composite modulus e_star (Pa), over
-  // `comm` (which must outlive the operator). Each process computes the
-  // coefficients' spectrum of its own columns only. Collective; throws
-  // InputError unless the grid is 2D and free.
-  SlabFreeOperator(const Grid& grid, double e_star, const MpiCommunicator& comm,
+  // u = K p on the free 2D `grid` for the half-space (a composite modulus
+  // E* in Pa, or a coated body), over `comm` (which must outlive the
+  // operator). Each process computes the coefficients' spectrum of its own
+  // columns only. Collective; throws InputError unless the grid is 2D and
+  // free.
+  SlabFreeOperator(const Grid& grid, const HalfSpace& half_space, const MpiCommunicator& comm,
                    FftPlanning planning = FftPlanning::estimate);
 
   const Grid& grid() const override { return grid_; }
