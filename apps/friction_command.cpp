@@ -16,7 +16,6 @@
 #include "halfspace/analysis/contact_statistics.hpp"
 #include "halfspace/io/friction_history_writer.hpp"
 #include "halfspace/io/result_metadata.hpp"
-#include "halfspace/io/result_writer.hpp"
 #include "halfspace/io/stress_writer.hpp"
 #include "halfspace/solvers/frictional_solve.hpp"
 #include "halfspace/solvers/surface_solve.hpp"
@@ -72,7 +71,7 @@ void print_friction_summary(std::FILE* out, const SolveSetup& setup, const Frict
 
 }  // namespace
 
-int run_frictional_solve(const SolveSetup& setup, const FrictionPlace& place) {
+int run_frictional_solve(const SolveSetup& setup, const SolvePlace& place) {
   const solvers::FrictionOptions& options = *setup.friction;
   const ElasticPair& pair = *setup.pair;
   // Threads first: the FFT plans use the thread count in force when made.
@@ -198,21 +197,7 @@ int run_frictional_solve(const SolveSetup& setup, const FrictionPlace& place) {
 }
 
 int run_frictional_solve(const SolveSetup& setup) {
-  const Grid& grid = setup.grid;
-  const std::span<const double> heights(setup.heights.data(), static_cast<std::size_t>(setup.heights.size()));
-  FrictionPlace place{solvers::serial_layout(), heights, true, {}, {}, {}, {}};
-  place.metadata = [&] { return io::result_metadata(provenance(setup), grid, heights); };
-  place.contact_statistics = [&](const SolveResult& normal) {
-    return analysis::contact_statistics(grid, {normal.pressure.data(), grid.size()}, {normal.gap.data(), grid.size()});
-  };
-  place.write_result = [&](const SolveResult& normal, const io::ResultMetadata& metadata) {
-    io::write_result(setup.output, grid, heights, normal, metadata);
-  };
-  place.write_history = [&](const SolveResult& normal, std::span<const TangentialResult> steps,
-                            std::span<const TangentialLoading> loads, const io::ResultMetadata& metadata) {
-    io::write_friction_history(setup.output, grid, heights, normal, steps, loads, metadata);
-  };
-  return run_frictional_solve(setup, place);
+  return run_frictional_solve(setup, serial_place(setup));
 }
 
 }  // namespace halfspace::app

@@ -51,28 +51,39 @@ int run_solve_here(const SolveSetup& setup) {
     const Activity sweep(fmt::format("running the load sweep ({}, {} steps)", on_grid, setup.load_values.size()));
     return run_sweep(setup);
   }
+  return run_solve_at(setup, serial_place(setup));
+}
+
+int run_solve_at(const SolveSetup& setup, const SolvePlace& place) {
   // Threads first: the FFT plans use the thread count in force when made.
   set_threads(setup.threads);
-  const std::optional<PlotTool> plot =
-      setup.plot ? std::optional<PlotTool>(find_plot_tool({"--plot", "drop --plot", {}})) : std::nullopt;
-  Progress progress(!setup.quiet, 1, setup.solver.solver_tolerance());
+  // The first process plots (from the file, once written); every process
+  // learns whether the tool is there before the solve.
+  std::optional<PlotTool> plot;
+  place.agree([&] {
+    if (setup.plot && place.first) plot = find_plot_tool({"--plot", "drop --plot", {}});
+  });
+  const bool prints = !setup.quiet && place.first;
+  Progress progress(prints, 1, setup.solver.solver_tolerance());
   solvers::SolverOptions settings = setup.solver;
   settings.progress = progress.callback();
   // The solver and its operator are freed inside solve_surface, before the
   // statistics and the result file are made, so that the peak memory is the
   // solve's (docs/development-log.md).
-  std::optional<Activity> activity(std::in_place, fmt::format("solving ({})", on_grid));
-  const std::span<const double> heights(setup.heights.data(), static_cast<std::size_t>(setup.heights.size()));
-  const SolveResult result = solvers::solve_surface(setup.grid, heights, half_space(setup), setup.loading, settings);
+  const std::string processes = place.processes > 1 ? fmt::format(", {} processes", place.processes) : "";
+  std::optional<Activity> activity(std::in_place,
+                                   fmt::format("solving ({} on the {} grid{})", solvers::to_string(setup.solver.type),
+                                               setup.grid.shape_string(), processes));
+  const SolveResult result =
+      solvers::solve_surface(setup.grid, place.heights, half_space(setup), setup.loading, settings, {}, place.layout);
   progress.clear();
 
   activity.emplace(fmt::format("computing the statistics of the {} grid", setup.grid.shape_string()));
-  io::ResultMetadata metadata = io::result_metadata(provenance(setup), setup.grid, heights);
+  io::ResultMetadata metadata = place.metadata();
   metadata.coating = setup.coating;
-  metadata.contact_statistics = analysis::contact_statistics(setup.grid, {result.pressure.data(), setup.grid.size()},
-                                                             {result.gap.data(), setup.grid.size()});
+  metadata.contact_statistics = place.contact_statistics(result);
   // Subsurface stresses (--stress-depths), computed depth by depth while the
-  // result's /stress group is written.
+  // result's /stress group is written (one process: refused on several).
   std::unique_ptr<stress::SubsurfaceStress> stresses;
   if (!setup.stress_depths.empty()) {
     stresses = setup.coating
@@ -88,10 +99,10 @@ int run_solve_here(const SolveSetup& setup) {
   } else {
     activity.emplace(fmt::format("writing {}", setup.output.string()));
   }
-  io::write_result(setup.output, setup.grid, heights, result, metadata);
+  place.write_result(result, metadata);
 
   activity.reset();
-  if (!setup.quiet) {
+  if (prints) {
     print_summary(stdout, setup, result);
     std::fflush(stdout);
   }
@@ -103,8 +114,9 @@ int run_solve_here(const SolveSetup& setup) {
       plotted = false;
     }
   }
+  plotted = place.first_value(plotted ? 1 : 0) != 0;
   if (!result.converged()) {
-    fmt::print(stderr, "{}\n", non_convergence_message(setup, result));
+    if (place.first) fmt::print(stderr, "{}\n", non_convergence_message(setup, result));
     return kExitNotConverged;
   }
   return plotted ? kExitOk : kExitPlotFailed;

@@ -4,6 +4,7 @@
 
 #include "command.hpp"
 #include "halfspace/half_space.hpp"
+#include "solve_place.hpp"
 #include "solve_setup.hpp"
 
 namespace halfspace::app {
@@ -20,6 +21,9 @@ int run_solve(const SolveSetup& setup);
 // serial program; the first MPI process for a grid not split into slabs).
 // Makes no collective call.
 int run_solve_here(const SolveSetup& setup);
+// One normal solve (no friction, no sweep) at `place`: the serial program's
+// or this process's slab (collective then).
+int run_solve_at(const SolveSetup& setup, const SolvePlace& place);
 
 // Registers `solve` on the program's parser.
 Command add_solve_command(CLI::App& program);

@@ -86,60 +86,50 @@ std::optional<std::string> unsupported_by_program(const SolveSetup& setup) {
   return std::nullopt;
 }
 
-// The solve on this process's rows; a failure that only some processes
-// meet in the middle of collective work ends them all (MPI_Abort), since the
-// others wait in a transform or a reduction and cannot learn of it.
-SolveResult solve_slab(const SolveSetup& setup, std::span<const double> heights, const mpi::DistributedLayout& layout,
-                       const mpi::MpiCommunicator& world, const solvers::SolverOptions& settings) {
-  try {
-    return solvers::solve_surface(setup.grid, heights, half_space(setup), setup.loading, settings, {}, layout);
-  } catch (const InputError&) {
-    throw;  // found by every process alike (options, reduced values)
-  } catch (const std::exception& error) {
-    fmt::print(stderr, "error: {} (while {}, on process {} of {})\n", error.what(), Activity::failed_while(),
-               world.rank(), world.size());
-    std::fflush(stderr);
-    mpi::Session::abort(kExitInputError);
-  }
-}
-
-// The frictional solve on this process's rows (friction_command.cpp's, at
-// a place whose hooks are the slab statistics and the parallel writers);
-// failures as solve_slab's.
-int run_friction_on_slabs(const SolveSetup& setup, std::span<const double> heights,
-                          const mpi::DistributedLayout& layout, const mpi::MpiCommunicator& world,
-                          const mpi::SlabLayout& slab) {
+// The place of a solve on this process's rows: the slab statistics and the
+// parallel writers, every hook collective. `setup`, `world` and `slab` must
+// outlive it.
+SolvePlace slab_place(const SolveSetup& setup, std::span<const double> heights, const mpi::DistributedLayout& layout,
+                      const mpi::MpiCommunicator& world, const mpi::SlabLayout& slab) {
   const auto span_of = [](const Eigen::ArrayXd& a) {
     return std::span<const double>(a.data(), static_cast<std::size_t>(a.size()));
   };
-  FrictionPlace place{layout, heights, world.rank() == 0, {}, {}, {}, {}};
-  place.metadata = [&] {
+  SolvePlace place{.layout = layout, .heights = heights, .first = world.rank() == 0, .processes = world.size()};
+  place.metadata = [&setup, &world, &slab, heights] {
     io::ResultMetadata metadata = io::provenance_metadata(provenance(setup));
     mpi::run_agreed(
         world, [&] { metadata.surface_statistics = mpi::slab_surface_statistics(setup.grid, slab, heights, world); });
     return metadata;
   };
-  place.contact_statistics = [&](const SolveResult& normal) {
+  place.contact_statistics = [&setup, &world, &slab, span_of](const SolveResult& normal) {
     std::optional<analysis::ContactStatistics> statistics;
     mpi::run_agreed(world, [&] {
       statistics = mpi::slab_contact_statistics(setup.grid, slab, span_of(normal.pressure), span_of(normal.gap), world);
     });
     return *statistics;
   };
-  place.write_result = [&](const SolveResult& normal, const io::ResultMetadata& metadata) {
+  place.write_result = [&setup, &world, &slab, heights](const SolveResult& normal, const io::ResultMetadata& metadata) {
     mpi::write_result_slabs(world, setup.output, setup.grid, slab, heights, normal, metadata);
   };
-  place.agree = [&](const std::function<void()>& step) { mpi::run_agreed(world, step); };
-  place.first_value = [&](int value) {
-    mpi::check(MPI_Bcast(&value, 1, MPI_INT, 0, world.get()), "MPI_Bcast");
-    return value;
-  };
-  place.write_history = [&](const SolveResult& normal, std::span<const TangentialResult> steps,
+  place.write_history = [&setup, &world, &slab, heights](
+                            const SolveResult& normal, std::span<const TangentialResult> steps,
                             std::span<const TangentialLoading> loads, const io::ResultMetadata& metadata) {
     mpi::write_friction_history_slabs(world, setup.output, setup.grid, slab, heights, normal, steps, loads, metadata);
   };
+  place.agree = [&world](const std::function<void()>& step) { mpi::run_agreed(world, step); };
+  place.first_value = [&world](int value) {
+    mpi::check(MPI_Bcast(&value, 1, MPI_INT, 0, world.get()), "MPI_Bcast");
+    return value;
+  };
+  return place;
+}
+
+// Runs `run` on every process; a failure that only some processes meet in
+// the middle of collective work ends them all (MPI_Abort), since the others
+// wait in a transform or a reduction and cannot learn of it.
+int run_on_slabs(const mpi::MpiCommunicator& world, const std::function<int()>& run) {
   try {
-    return run_frictional_solve(setup, place);
+    return run();
   } catch (const InputError&) {
     throw;  // found by every process alike (options, reduced values)
   } catch (const std::exception& error) {
@@ -331,57 +321,19 @@ std::optional<int> run_solve_on_slabs(const SolveSetup& setup) {
   // This process's rows of the surface (the first process may hold all).
   const std::span<const double> heights(setup.heights.data() + (slab.first_row - setup.first_row) * slab.nx,
                                         slab.local_size());
-  if (setup.friction) return run_friction_on_slabs(setup, heights, layout, world, slab);
-  // --plot: the first process draws the figures from the written file, as
-  // the serial program does (nothing is gathered); all learn first whether
-  // the tool is there.
-  std::optional<PlotTool> plot;
-  mpi::run_agreed(world, [&] {
-    if (setup.plot && root) plot = find_plot_tool({"--plot", "drop --plot", {}});
-  });
-  if (setup.load_values.size() > 1) return run_sweep_on_slabs(setup, heights, layout, plot);
-  Progress progress(!setup.quiet && root, 1, setup.solver.tolerance);
-  solvers::SolverOptions settings = setup.solver;
-  settings.progress = progress.callback();
-  std::optional<Activity> activity(
-      std::in_place, fmt::format("solving ({} on the {} grid, {} processes)", solvers::to_string(setup.solver.type),
-                                 setup.grid.shape_string(), world.size()));
-  SolveResult result = solve_slab(setup, heights, layout, world, settings);
-  progress.clear();
-
-  // Statistics and the file from the slabs: no process holds a whole field.
-  const auto span_of = [](const Eigen::ArrayXd& a) {
-    return std::span<const double>(a.data(), static_cast<std::size_t>(a.size()));
-  };
-  io::ResultMetadata metadata = io::provenance_metadata(provenance(setup));
-  metadata.coating = setup.coating;
-  mpi::run_agreed(world, [&] {
-    activity.emplace(fmt::format("computing the statistics of the {} grid", setup.grid.shape_string()));
-    metadata.surface_statistics = mpi::slab_surface_statistics(setup.grid, slab, heights, world);
-    metadata.contact_statistics =
-        mpi::slab_contact_statistics(setup.grid, slab, span_of(result.pressure), span_of(result.gap), world);
-  });
-  activity.emplace(fmt::format("writing {}", setup.output.string()));
-  mpi::write_result_slabs(world, setup.output, setup.grid, slab, heights, result, metadata);
-  activity.reset();
-  if (root && !setup.quiet) {
-    print_summary(stdout, setup, result);
-    std::fflush(stdout);
+  if (setup.load_values.size() > 1 && !setup.friction) {
+    // --plot: the first process draws the figures from the written file, as
+    // the serial program does (nothing is gathered); all learn first whether
+    // the tool is there.
+    std::optional<PlotTool> plot;
+    mpi::run_agreed(world, [&] {
+      if (setup.plot && root) plot = find_plot_tool({"--plot", "drop --plot", {}});
+    });
+    return run_sweep_on_slabs(setup, heights, layout, plot);
   }
-  int plotted = 1;
-  if (plot) {
-    const std::string failure = run_plot_tool(*plot, "maps", setup.output, setup.quiet);
-    if (!failure.empty()) {
-      fmt::print(stderr, "error: --plot: {}; the result is written to {}\n", failure, setup.output.string());
-      plotted = 0;
-    }
-  }
-  mpi::check(MPI_Bcast(&plotted, 1, MPI_INT, 0, world.get()), "MPI_Bcast");
-  if (!result.converged()) {
-    if (root) fmt::print(stderr, "{}\n", non_convergence_message(setup, result));
-    return kExitNotConverged;
-  }
-  return plotted != 0 ? kExitOk : kExitPlotFailed;
+  const SolvePlace place = slab_place(setup, heights, layout, world, slab);
+  return run_on_slabs(world,
+                      [&] { return setup.friction ? run_frictional_solve(setup, place) : run_solve_at(setup, place); });
 }
 
 }  // namespace halfspace::app

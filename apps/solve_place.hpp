@@ -1,0 +1,42 @@
+// Where a solve runs and how its statistics and files are made: the whole
+// grid on this process (serial_place), or this process's slab of rows
+// (apps/mpi/mpi_program.cpp), every hook then collective. The normal and the
+// frictional pipelines (solve_command.cpp, friction_command.cpp) run
+// unchanged at either.
+#pragma once
+
+#include <functional>
+#include <span>
+
+#include "halfspace/analysis/contact_statistics.hpp"
+#include "halfspace/io/result_metadata.hpp"
+#include "halfspace/solvers/layout.hpp"
+#include "halfspace/solvers/solve_result.hpp"
+#include "halfspace/solvers/tangential_loading.hpp"
+#include "halfspace/solvers/tangential_result.hpp"
+#include "solve_setup.hpp"
+
+namespace halfspace::app {
+
+struct SolvePlace {
+  const solvers::Layout& layout;
+  std::span<const double> heights;               // the cells `layout` holds here
+  bool first = true;                             // the first (or only) process: it prints and plots
+  int processes = 1;                             // how many share the grid
+  std::function<io::ResultMetadata()> metadata{};  // provenance and surface statistics
+  std::function<analysis::ContactStatistics(const SolveResult& normal)> contact_statistics{};
+  std::function<void(const SolveResult& normal, const io::ResultMetadata& metadata)> write_result{};
+  std::function<void(const SolveResult& normal, std::span<const TangentialResult> steps,
+                     std::span<const TangentialLoading> loads, const io::ResultMetadata& metadata)>
+      write_history{};
+  // Runs a step everywhere, every process learning of a failure on any;
+  // the first process's value on every process (one process: the step, the
+  // value).
+  std::function<void(const std::function<void()>& step)> agree = [](const std::function<void()>& step) { step(); };
+  std::function<int(int value)> first_value = [](int value) { return value; };
+};
+
+// The whole of setup's grid on this process.
+SolvePlace serial_place(const SolveSetup& setup);
+
+}  // namespace halfspace::app
