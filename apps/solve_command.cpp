@@ -49,7 +49,7 @@ int run_solve_here(const SolveSetup& setup) {
       fmt::format("{} on the {} grid", solvers::to_string(setup.solver.type), setup.grid.shape_string());
   if (setup.load_values.size() > 1) {
     const Activity sweep(fmt::format("running the load sweep ({}, {} steps)", on_grid, setup.load_values.size()));
-    return run_sweep(setup);
+    return run_sweep_at(setup, serial_place(setup));
   }
   return run_solve_at(setup, serial_place(setup));
 }

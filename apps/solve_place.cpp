@@ -1,10 +1,10 @@
 // The serial place: the library's whole-grid statistics and writers.
 #include "solve_place.hpp"
 
-#include "sweep_command.hpp"
-
 #include "halfspace/io/friction_history_writer.hpp"
 #include "halfspace/io/result_writer.hpp"
+#include "halfspace/io/sweep_writer.hpp"
+#include "sweep_command.hpp"
 
 namespace halfspace::app {
 
@@ -23,6 +23,10 @@ SolvePlace serial_place(const SolveSetup& setup) {
                                           std::span<const TangentialLoading> loads,
                                           const io::ResultMetadata& metadata) {
     io::write_friction_history(setup.output, setup.grid, heights, normal, steps, loads, metadata);
+  };
+  place.write_sweep = [&setup, heights](std::span<const analysis::SweepStep> steps,
+                                        const io::ResultMetadata& metadata) {
+    io::write_sweep_result(setup.output, setup.grid, heights, steps, metadata);
   };
   return place;
 }

@@ -9,6 +9,7 @@
 #include <span>
 
 #include "halfspace/analysis/contact_statistics.hpp"
+#include "halfspace/analysis/load_sweep.hpp"
 #include "halfspace/io/result_metadata.hpp"
 #include "halfspace/solvers/layout.hpp"
 #include "halfspace/solvers/solve_result.hpp"
@@ -20,15 +21,17 @@ namespace halfspace::app {
 
 struct SolvePlace {
   const solvers::Layout& layout;
-  std::span<const double> heights;               // the cells `layout` holds here
-  bool first = true;                             // the first (or only) process: it prints and plots
-  int processes = 1;                             // how many share the grid
+  std::span<const double> heights;                 // the cells `layout` holds here
+  bool first = true;                               // the first (or only) process: it prints and plots
+  int processes = 1;                               // how many share the grid
   std::function<io::ResultMetadata()> metadata{};  // provenance and surface statistics
   std::function<analysis::ContactStatistics(const SolveResult& normal)> contact_statistics{};
   std::function<void(const SolveResult& normal, const io::ResultMetadata& metadata)> write_result{};
   std::function<void(const SolveResult& normal, std::span<const TangentialResult> steps,
                      std::span<const TangentialLoading> loads, const io::ResultMetadata& metadata)>
       write_history{};
+  // A load sweep's HDF5 file and its CSV table.
+  std::function<void(std::span<const analysis::SweepStep> steps, const io::ResultMetadata& metadata)> write_sweep{};
   // Runs a step everywhere, every process learning of a failure on any;
   // the first process's value on every process (one process: the step, the
   // value).

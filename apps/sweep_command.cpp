@@ -21,6 +21,7 @@
 #include "halfspace/version.hpp"
 #include "plot_tool.hpp"
 #include "progress.hpp"
+#include "solve_command.hpp"
 
 namespace halfspace::app {
 namespace {
@@ -97,45 +98,37 @@ std::string describe_load(ControlMode mode, double value, const Grid& grid) {
   return fmt::format("{} {:.6g} {}", load_name(mode), value, load_unit(mode, grid));
 }
 
-namespace {
-
-std::vector<analysis::SweepStep> solve_sweep(const SolveSetup& setup) {
-  Progress progress(!setup.quiet, setup.load_values.size(), setup.solver.solver_tolerance());
+int run_sweep_at(const SolveSetup& setup, const SolvePlace& place) {
+  // Threads first: the FFT plans use the thread count in force when made.
+  set_threads(setup.threads);
+  // The first process plots (from the files, once written); every process
+  // learns whether the tool is there before the solves.
+  std::optional<PlotTool> plot;
+  place.agree([&] {
+    if (setup.plot && place.first) plot = find_plot_tool({"--plot", "drop --plot", {}});
+  });
+  Progress progress(!setup.quiet && place.first, setup.load_values.size(), setup.solver.solver_tolerance());
   solvers::SolverOptions settings = setup.solver;
   settings.progress = progress.callback();
-  const std::span<const double> heights(setup.heights.data(), static_cast<std::size_t>(setup.heights.size()));
   analysis::LoadSweepOptions options;
   options.signed_loads = setup.solver.adhesion.has_value();
   options.on_step_start = [&](std::size_t step, std::size_t, const Loading& loading) {
     progress.start_step(step, describe_load(loading.mode, loading.value, setup.grid));
   };
+  options.statistics = place.contact_statistics;
   const std::vector<analysis::SweepStep> steps =
-      setup.coating ? analysis::sweep_surface(setup.grid, heights, *setup.coating, setup.loading.mode,
-                                              setup.load_values, settings, options)
-                    : analysis::sweep_surface(setup.grid, heights, setup.e_star, setup.loading.mode, setup.load_values,
-                                              settings, options);
+      analysis::sweep_surface(setup.grid, place.heights, half_space(setup), setup.loading.mode, setup.load_values,
+                              settings, options, place.layout);
   progress.clear();
-  return steps;
-}
 
-}  // namespace
-
-int run_sweep(const SolveSetup& setup) {
-  // Threads first: the FFT plans use the thread count in force when made.
-  set_threads(setup.threads);
-  const std::optional<PlotTool> plot =
-      setup.plot ? std::optional<PlotTool>(find_plot_tool({"--plot", "drop --plot", {}})) : std::nullopt;
-  const std::vector<analysis::SweepStep> steps = solve_sweep(setup);
-  return finish_sweep(setup, steps, plot);
-}
-
-int finish_sweep(const SolveSetup& setup, std::span<const analysis::SweepStep> steps,
-                 const std::optional<PlotTool>& plot) {
-  const std::span<const double> heights(setup.heights.data(), static_cast<std::size_t>(setup.heights.size()));
-  io::ResultMetadata metadata = io::result_metadata(provenance(setup), setup.grid, heights);
+  io::ResultMetadata metadata = place.metadata();
   metadata.coating = setup.coating;
-  io::write_sweep_result(setup.output, setup.grid, heights, steps, metadata);
-  return report_sweep(setup, steps, plot);
+  place.write_sweep(steps, metadata);
+  int code = kExitOk;
+  place.agree([&] {
+    if (place.first) code = report_sweep(setup, steps, plot);
+  });
+  return place.first_value(code);
 }
 
 int report_sweep(const SolveSetup& setup, std::span<const analysis::SweepStep> steps,

@@ -10,29 +10,22 @@
 #include "halfspace/io/result_metadata.hpp"
 #include "halfspace/solvers/loading.hpp"
 #include "plot_tool.hpp"
+#include "solve_place.hpp"
 #include "solve_setup.hpp"
 
 namespace halfspace::app {
 
-// Solves setup.load_values in order (warm starts), writes setup.output and
-// the CSV beside it (also when a step did not converge), prints the summary
-// table unless setup.quiet and draws the figures if setup.plot. Returns
-// kExitOk when every step converged, kExitNotConverged otherwise (after
-// printing the failed steps to stderr), kExitPlotFailed when only the
-// figures failed. Throws InputError (FileError) for bad input or when a file
-// cannot be written.
-int run_sweep(const SolveSetup& setup);
+// Solves setup.load_values in order (warm starts) at `place`, writes
+// setup.output and the CSV beside it (also when a step did not converge),
+// prints the summary table unless setup.quiet and draws the figures if
+// setup.plot (the first process). Returns kExitOk when every step
+// converged, kExitNotConverged otherwise (after printing the failed steps
+// to stderr), kExitPlotFailed when only the figures failed. Throws
+// InputError (FileError) for bad input or when a file cannot be written.
+int run_sweep_at(const SolveSetup& setup, const SolvePlace& place);
 
-// run_sweep after the solves: writes the files of the solved `steps`,
-// prints the summary table and the failed steps, draws the figures with
-// `plot` if given; returns and throws as run_sweep.
-int finish_sweep(const SolveSetup& setup, std::span<const analysis::SweepStep> steps,
-                 const std::optional<PlotTool>& plot);
-
-// finish_sweep after the HDF5 file and its CSV are written (serially as one
-// set by io::write_sweep_result; the MPI program writes the CSV on the first
-// process once every process has written its rows of the HDF5 file): the
-// summary table, the figures and the failed steps.
+// After the HDF5 file and its CSV are written: the summary table, the
+// figures and the failed steps (the first process).
 int report_sweep(const SolveSetup& setup, std::span<const analysis::SweepStep> steps,
                  const std::optional<PlotTool>& plot);
 

@@ -15,11 +15,13 @@
 #include <cstdint>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <limits>
 #include <memory>
 #include <optional>
 #include <span>
 #include <string>
+#include <system_error>
 
 #include "../activity.hpp"
 #include "../exit_codes.hpp"
@@ -34,6 +36,7 @@
 #include "halfspace/error.hpp"
 #include "halfspace/io/result_metadata.hpp"
 #include "halfspace/io/result_writer.hpp"
+#include "halfspace/io/sweep_writer.hpp"
 #include "halfspace/mpi/distributed_layout.hpp"
 #include "halfspace/mpi/node_memory.hpp"
 #include "halfspace/mpi/parallel_height_map_reader.hpp"
@@ -45,7 +48,6 @@
 #include "halfspace/mpi/slab_surface_statistics.hpp"
 #include "halfspace/solvers/surface_solve.hpp"
 #include "halfspace/threads.hpp"
-#include "mpi_sweep.hpp"
 
 namespace halfspace::app {
 namespace {
@@ -115,6 +117,23 @@ SolvePlace slab_place(const SolveSetup& setup, std::span<const double> heights, 
                             const SolveResult& normal, std::span<const TangentialResult> steps,
                             std::span<const TangentialLoading> loads, const io::ResultMetadata& metadata) {
     mpi::write_friction_history_slabs(world, setup.output, setup.grid, slab, heights, normal, steps, loads, metadata);
+  };
+  place.write_sweep = [&setup, &world, &slab, heights](std::span<const analysis::SweepStep> steps,
+                                                       const io::ResultMetadata& metadata) {
+    const bool root = world.rank() == 0;
+    const std::filesystem::path csv = io::sweep_csv_path(setup.output);
+    // A previous sweep's table would not match the new file: removed first,
+    // so that an interrupted write leaves no mismatched pair
+    // (file-format.md); the first process writes the table once every
+    // process has written its rows of the file.
+    mpi::run_agreed(world, [&] {
+      std::error_code ignored;
+      if (root) std::filesystem::remove(csv, ignored);
+    });
+    mpi::write_sweep_slabs(world, setup.output, setup.grid, slab, heights, steps, metadata);
+    mpi::run_agreed(world, [&] {
+      if (root) io::write_sweep_csv(csv, steps);
+    });
   };
   place.agree = [&world](const std::function<void()>& step) { mpi::run_agreed(world, step); };
   place.first_value = [&world](int value) {
@@ -321,19 +340,12 @@ std::optional<int> run_solve_on_slabs(const SolveSetup& setup) {
   // This process's rows of the surface (the first process may hold all).
   const std::span<const double> heights(setup.heights.data() + (slab.first_row - setup.first_row) * slab.nx,
                                         slab.local_size());
-  if (setup.load_values.size() > 1 && !setup.friction) {
-    // --plot: the first process draws the figures from the written file, as
-    // the serial program does (nothing is gathered); all learn first whether
-    // the tool is there.
-    std::optional<PlotTool> plot;
-    mpi::run_agreed(world, [&] {
-      if (setup.plot && root) plot = find_plot_tool({"--plot", "drop --plot", {}});
-    });
-    return run_sweep_on_slabs(setup, heights, layout, plot);
-  }
   const SolvePlace place = slab_place(setup, heights, layout, world, slab);
-  return run_on_slabs(world,
-                      [&] { return setup.friction ? run_frictional_solve(setup, place) : run_solve_at(setup, place); });
+  return run_on_slabs(world, [&] {
+    if (setup.friction) return run_frictional_solve(setup, place);
+    if (setup.load_values.size() > 1) return run_sweep_at(setup, place);
+    return run_solve_at(setup, place);
+  });
 }
 
 }  // namespace halfspace::app

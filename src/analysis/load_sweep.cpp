@@ -10,30 +10,20 @@
 #include <memory>
 
 #include "halfspace/error.hpp"
+#include "halfspace/linalg/parallel.hpp"
 #include "halfspace/solvers/solver_factory.hpp"
 #include "halfspace/solvers/surface_solve.hpp"
 
 namespace halfspace::analysis {
-namespace {
-
-// The sweep with the solver `make` builds, freed before returning.
-template <typename MakeSolver>
-std::vector<SweepStep> sweep_with(const Grid& grid, std::span<const double> heights, MakeSolver make, ControlMode mode,
-                                  std::span<const double> values, const LoadSweepOptions& sweep) {
-  const Eigen::ArrayXd gap = solvers::initial_gap(grid, heights);
-  const std::unique_ptr<ContactSolver> solver = make();
-  return run_load_sweep(*solver, grid, {gap.data(), grid.size()}, mode, values, sweep);
-}
-
-}  // namespace
 
 std::vector<SweepStep> run_load_sweep(ContactSolver& solver, const Grid& grid, std::span<const double> initial_gap,
-                                      ControlMode mode, std::span<const double> values,
-                                      const LoadSweepOptions& options) {
+                                      ControlMode mode, std::span<const double> values, const LoadSweepOptions& options,
+                                      const solvers::Layout& layout) {
   if (values.empty()) throw InputError("load sweep: no load given");
-  if (initial_gap.size() != grid.size()) {
-    throw InputError(fmt::format("load sweep: the initial gap has {} entries, but the grid has {} cells",
-                                 initial_gap.size(), grid.size()));
+  const std::size_t cells = layout.rows(grid).count * grid.nx();
+  if (initial_gap.size() != cells) {
+    throw InputError(fmt::format("load sweep: the initial gap has {} entries, but the grid has {} cells here",
+                                 initial_gap.size(), cells));
   }
   std::vector<Loading> loads;
   for (const double value : values) {
@@ -48,11 +38,14 @@ std::vector<SweepStep> run_load_sweep(ContactSolver& solver, const Grid& grid, s
   if (mode == ControlMode::approach && grid.periodic()) {
     // Checked up front rather than by the solver at the failing step, so that
     // a bad list does not cost the steps before it.
-    double mean_gap = 0.0;
-    for (const double g : initial_gap) mean_gap += g;
-    mean_gap /= static_cast<double>(initial_gap.size());
+    const double mean_gap = linalg::sum(layout.communicator(), cells, [&](std::size_t i) { return initial_gap[i]; }) /
+                            static_cast<double>(grid.size());
     for (const double value : values) solvers::check_periodic_approach(value, mean_gap);
   }
+  const auto statistics = [&](const SolveResult& result) {
+    if (options.statistics) return options.statistics(result);
+    return contact_statistics(grid, {result.pressure.data(), cells}, {result.gap.data(), cells});
+  };
 
   std::vector<SweepStep> steps;
   steps.reserve(loads.size());
@@ -63,10 +56,9 @@ std::vector<SweepStep> run_load_sweep(ContactSolver& solver, const Grid& grid, s
     const SweepStep* previous = steps.empty() ? nullptr : &steps.back();
     step.warm_started = options.warm_start && previous != nullptr && previous->result.converged();
     std::span<const double> start;
-    if (step.warm_started) start = {previous->result.pressure.data(), grid.size()};
+    if (step.warm_started) start = {previous->result.pressure.data(), cells};
     step.result = solver.solve(initial_gap, loads[k], start);
-    step.statistics =
-        contact_statistics(grid, {step.result.pressure.data(), grid.size()}, {step.result.gap.data(), grid.size()});
+    step.statistics = statistics(step.result);
     steps.push_back(std::move(step));
     if (options.on_step_done) options.on_step_done(k, loads.size(), steps.back());
     if (steps.back().result.status == solvers::SolveStatus::stopped) break;  // the caller's progress said so
@@ -74,18 +66,14 @@ std::vector<SweepStep> run_load_sweep(ContactSolver& solver, const Grid& grid, s
   return steps;
 }
 
-std::vector<SweepStep> sweep_surface(const Grid& grid, std::span<const double> heights, double e_star, ControlMode mode,
-                                     std::span<const double> values, const solvers::SolverOptions& options,
-                                     const LoadSweepOptions& sweep) {
-  return sweep_with(
-      grid, heights, [&] { return solvers::make_solver(grid, e_star, options); }, mode, values, sweep);
-}
-
-std::vector<SweepStep> sweep_surface(const Grid& grid, std::span<const double> heights, const LayeredMaterial& coating,
+std::vector<SweepStep> sweep_surface(const Grid& grid, std::span<const double> heights, const HalfSpace& half_space,
                                      ControlMode mode, std::span<const double> values,
-                                     const solvers::SolverOptions& options, const LoadSweepOptions& sweep) {
-  return sweep_with(
-      grid, heights, [&] { return solvers::make_solver(grid, coating, options); }, mode, values, sweep);
+                                     const solvers::SolverOptions& options, const LoadSweepOptions& sweep,
+                                     const solvers::Layout& layout) {
+  const Eigen::ArrayXd gap = solvers::initial_gap(grid, heights, layout);
+  // The solver is freed before returning.
+  const std::unique_ptr<ContactSolver> solver = solvers::make_solver(grid, half_space, options, layout);
+  return run_load_sweep(*solver, grid, {gap.data(), static_cast<std::size_t>(gap.size())}, mode, values, sweep, layout);
 }
 
 }  // namespace halfspace::analysis
