@@ -59,7 +59,16 @@ std::optional<std::string> unstored_data_problem(hid_t dataset) {
   if (H5Pget_external_count(creation.get()) != 0) {
     return "the dataset's data are in external files; store the data in this file";
   }
-  if (H5Dget_storage_size(dataset) == 0) return "the dataset holds no stored data (it was created but never written)";
+  const hsize_t stored = H5Dget_storage_size(dataset);
+  if (stored == 0) return "the dataset holds no stored data (it was created but never written)";
+  // Data the file cannot hold: a damaged header declaring more than there is
+  // (the read would fail only after the buffer for it was made).
+  const File file(H5Iget_file_id(dataset));
+  hsize_t file_size = 0;
+  if (file.valid() && H5Fget_filesize(file.get(), &file_size) >= 0 && stored > file_size) {
+    return fmt::format("the dataset declares {} bytes of stored data, but the file has only {} bytes", stored,
+                       file_size);
+  }
   if (H5Pget_layout(creation.get()) == H5D_CHUNKED) return partly_written_problem(dataset, creation.get());
   return std::nullopt;
 }

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <string>
 #include <vector>
@@ -565,6 +566,62 @@ TEST(Hdf5HeightMapReaderTest, RefusesAChunkedDatasetOfWhichOnlySomeChunksWereWri
   }
   const std::size_t before = test::peak_resident_bytes();
   expect_contains(read_error(partial), {partial.string(), "only partly written", "1 of its 16000000 chunks"});
+  EXPECT_LT(test::peak_resident_bytes(), before + test::kRefusalMemoryAllowance);
+}
+
+TEST(Hdf5HeightMapReaderTest, RefusesADatasetDeclaringMoreDataThanTheFileHolds) {
+  const TempDir dir;
+  // A 3 x 3 contiguous dataset whose header is then made to declare
+  // 16000 x 16000 points and 2 GB of data at the same address: named before
+  // any buffer for it is made.
+  const fs::path path = dir / "declares-more.h5";
+  haddr_t address = 0;
+  {
+    const test::H5 file = create_file(path);
+    const hsize_t dims[2] = {3, 3};
+    const test::H5 space(H5Screate_simple(2, dims, nullptr), H5Sclose, "space");
+    const test::H5 data(
+        H5Dcreate2(file.get(), "height", H5T_IEEE_F64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose,
+        "create");
+    const std::vector<double> values(9, 1e-6);
+    test::check(H5Dwrite(data.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "write");
+    address = H5Dget_offset(data.get());
+  }
+  std::vector<char> bytes;
+  {
+    std::ifstream in(path, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  const auto u64 = [&](std::size_t at) {
+    std::uint64_t value = 0;
+    for (std::size_t k = 0; k < 8; ++k) value |= std::uint64_t(static_cast<unsigned char>(bytes[at + k])) << (8 * k);
+    return value;
+  };
+  const auto put = [&](std::size_t at, std::uint64_t value) {
+    for (std::size_t k = 0; k < 8; ++k) bytes[at + k] = static_cast<char>((value >> (8 * k)) & 0xff);
+  };
+  std::size_t patched_dims = 0;
+  std::size_t patched_size = 0;
+  for (std::size_t at = 0; at + 8 <= bytes.size(); ++at) {
+    // The dataspace's dimensions (and maximum dimensions), 3 each; the
+    // layout's size of the data, 72 bytes, after its address.
+    if (u64(at) == 3 && at + 16 <= bytes.size() && u64(at + 8) == 3) {
+      put(at, 16000);
+      put(at + 8, 16000);
+      patched_dims += 2;
+      at += 15;
+    } else if (u64(at) == 72 && at >= 8 && u64(at - 8) == address) {
+      put(at, std::uint64_t{16000} * 16000 * 8);
+      ++patched_size;
+      at += 7;
+    }
+  }
+  ASSERT_GE(patched_dims, 2u);
+  ASSERT_EQ(patched_size, 1u);
+  std::ofstream(path, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  const std::size_t before = test::peak_resident_bytes();
+  expect_contains(read_error(path), {path.string(), "declares 2048000000 bytes of stored data",
+                                     fmt::format("the file has only {} bytes", bytes.size())});
   EXPECT_LT(test::peak_resident_bytes(), before + test::kRefusalMemoryAllowance);
 }
 
