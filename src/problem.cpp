@@ -16,12 +16,11 @@
 #include <tuple>
 #include <utility>
 
-#include "halfspace/elastic_pair.hpp"
 #include "halfspace/error.hpp"
 #include "halfspace/material.hpp"
 #include "halfspace/physical_ranges.hpp"
-#include "halfspace/solvers/adhesion_law.hpp"
 #include "halfspace/threads.hpp"
+#include "problem_rules.hpp"
 
 namespace halfspace {
 namespace {
@@ -67,8 +66,10 @@ constexpr std::array kNames{
     ProblemOptionName{"threads", &P::threads},
 };
 
-// The option of ProblemOptions that sets each SolverOptions member a
-// SolverOptionError names.
+}  // namespace
+
+namespace detail {
+
 std::string_view problem_name(std::string_view member) {
   static constexpr std::array<std::pair<std::string_view, std::string_view>, 8> kMembers{{
       {"tolerance", "tol"},
@@ -88,8 +89,6 @@ std::string_view problem_name(std::string_view member) {
   return "solver";
 }
 
-// The text of a given value as the library shows it: "1,-2" for a list,
-// "1,0;2,0" for steps (x, y).
 std::string text(double value) {
   return format_number(value);
 }
@@ -110,151 +109,16 @@ std::string text(const std::vector<std::array<double, 2>>& steps) {
   return fmt::format("{}", fmt::join(parts, ";"));
 }
 
-// The option of ProblemOptions that sets each FrictionOptions member a
-// SolverOptionError names; a tangential load is the force or displacement
-// steps `friction` holds.
-std::string_view friction_name(std::string_view member, const solvers::FrictionOptions& friction) {
-  static constexpr std::array<std::pair<std::string_view, std::string_view>, 4> kMembers{{
-      {"sliding", "sliding"},
-      {"tolerance", "tangential_tol"},
-      {"max_iterations", "tangential_max_iter"},
-      {"normal_load_steps", "normal_load_steps"},
-  }};
-  if (member == "tangential_load") {
-    const bool displacement =
-        !friction.history.empty() && friction.history.front().control == solvers::TangentialControl::displacement;
-    return displacement ? "tangential_displacement" : "tangential_force";
-  }
-  for (const auto& [known, name] : kMembers) {
-    if (known == member) return name;
-  }
-  return "friction";
+std::optional<std::string> Rules::value(std::string_view option) const {
+  const auto found = std::ranges::find(kNames, option, &ProblemOptionName::name);
+  return std::visit(
+      [&](auto member) -> std::optional<std::string> {
+        const auto& field = o_.*member;
+        if (!field) return std::nullopt;
+        return text(*field);
+      },
+      found->field);
 }
-
-// Options paired with whether they were given.
-using Presence = std::vector<std::pair<std::string_view, bool>>;
-
-// The rules of one problem's options, written with the front end's spelling.
-class Rules {
- public:
-  Rules(const ProblemOptions& options, const OptionSpelling& spelling) : o_(options), s_(spelling) {}
-
-  std::string name(std::string_view option) const { return s_.name(option); }
-  std::string describe(std::string_view option, double value) const {
-    return s_.describe(option, format_number(value));
-  }
-  // E1, nu1, E2, nu2, each with whether it was given.
-  Presence body_constants() const {
-    return {
-        {"E1", o_.e1.has_value()}, {"nu1", o_.nu1.has_value()}, {"E2", o_.e2.has_value()}, {"nu2", o_.nu2.has_value()}};
-  }
-  // The names of the options among `options` that were given (or not).
-  std::vector<std::string> given(const Presence& options, bool present = true) const {
-    std::vector<std::string> names;
-    for (const auto& [option, is_given] : options) {
-      if (is_given == present) names.push_back(name(option));
-    }
-    return names;
-  }
-  double positive(std::string_view option, double value, std::string_view unit) const {
-    if (!(std::isfinite(value) && value > 0.0)) {
-      throw OptionError(std::string(option), format_number(value),
-                        fmt::format("is invalid: must be positive ({})", unit));
-    }
-    return value;
-  }
-  double length(std::string_view option, double value) const {
-    positive(option, value, "m");
-    return require_in_range(describe(option, value), value, kMinLength, kMaxLength, "m");
-  }
-  double modulus(std::string_view option, double value) const {
-    positive(option, value, "Pa");
-    return require_in_range(describe(option, value), value, kMinModulus, kMaxModulus, "Pa");
-  }
-  double poisson(std::string_view option, double nu) const {
-    if (!(nu > -1.0 && nu <= 0.5)) {
-      throw OptionError(std::string(option), format_number(nu), "is invalid: allowed range is (-1, 0.5]");
-    }
-    return nu;
-  }
-
-  // The text of the option's value if it was given, else none.
-  std::optional<std::string> value(std::string_view option) const {
-    const auto found = std::ranges::find(kNames, option, &ProblemOptionName::name);
-    return std::visit(
-        [&](auto member) -> std::optional<std::string> {
-          const auto& field = o_.*member;
-          if (!field) return std::nullopt;
-          return text(*field);
-        },
-        found->field);
-  }
-  // Options paired with whether they were given.
-  Presence presence(std::initializer_list<std::string_view> options) const {
-    Presence pairs;
-    for (const std::string_view option : options) pairs.emplace_back(option, value(option).has_value());
-    return pairs;
-  }
-
-  // Runs `function`; an OptionError it throws (a SolverOptions rule) is
-  // named by the option of the problem that set it.
-  template <class Function>
-  auto restated(Function&& function) const {
-    try {
-      return function();
-    } catch (const OptionError& error) {
-      const std::string_view option = problem_name(error.option());
-      throw OptionError(std::string(option), error.value(), error.rule());
-    }
-  }
-
-  // The law's given and derived quantities in the ranges of their kinds: a
-  // derived one obeys the range of the option it replaces (a stress w / range
-  // of 1e306 Pa ended "converged" with a force of -inf, issue 32).
-  void law_ranges(const AdhesionLaw& law) const {
-    if (!(std::isfinite(law.work) && law.work > 0.0)) {
-      throw OptionError("work_of_adhesion", format_number(law.work) + " J/m^2",
-                        "is invalid: must be positive and finite");
-    }
-    const std::string work = fmt::format("the work of adhesion {} J/m^2", format_number(law.work));
-    const auto outside = [](double value, double low, double high) { return !(value >= low && value <= high); };
-    if (o_.adhesion_stress) {  // sigma0 given; the range h0 = w / sigma0 derived
-      const double sigma0 = law.work / law.range;
-      const std::string given = s_.describe("adhesion_stress", format_number(sigma0) + " Pa");
-      require_in_range(given, sigma0, kMinMeanPressure, kMaxMeanPressure, "Pa");
-      if (outside(law.range, kMinLength, kMaxLength)) {
-        throw InputError(
-            fmt::format("{} is invalid with {}: the range h0 = work / stress = {} m it gives must lie in "
-                        "[{:g}, {:g}] m, the range of lengths",
-                        given, work, format_number(law.range), kMinLength, kMaxLength));
-      }
-    } else {
-      const std::string given = s_.describe("adhesion_range", format_number(law.range) + " m");
-      require_in_range(given, law.range, kMinLength, kMaxLength, "m");
-      if (outside(law.stress(), kMinMeanPressure, kMaxMeanPressure)) {
-        throw InputError(
-            fmt::format("{} is invalid with {}: the adhesive stress work / range = {} Pa it gives must "
-                        "lie in [{:g}, {:g}] Pa, the range of stresses",
-                        given, work, format_number(law.stress()), kMinMeanPressure, kMaxMeanPressure));
-      }
-    }
-    law.validate();
-  }
-
-  double body() const;
-  std::optional<LayeredMaterial> coating() const;
-  std::pair<Loading, std::vector<double>> loads() const;
-  std::optional<solvers::SolverOptions::Adhesion> adhesion() const;
-  solvers::SolverOptions solver() const;
-  std::optional<ElasticPair> pair() const;
-  std::optional<solvers::FrictionOptions> friction(const solvers::SolverOptions& normal, std::size_t loads,
-                                                   bool coated) const;
-  int threads() const;
-
- private:
-  const ProblemOptions& o_;
-  const OptionSpelling& s_;
-};
 
 double Rules::body() const {
   const Presence constants = body_constants();
@@ -457,92 +321,6 @@ std::optional<ElasticPair> Rules::pair() const {
   return ElasticPair(ElasticBody{*o_.e1, *o_.nu1}, ElasticBody{*o_.e2, *o_.nu2});
 }
 
-// Friction: the tangential loads and the settings need mu; exactly one
-// tangential load; one normal load; each body's constants; then
-// FrictionOptions::validate(normal), named by the problem's options.
-std::optional<solvers::FrictionOptions> Rules::friction(const solvers::SolverOptions& normal, std::size_t loads,
-                                                        bool coated) const {
-  const Presence tangential = presence({"tangential_force", "tangential_displacement", "sliding"});
-  const Presence settings = presence({"tangential_tol", "tangential_max_iter", "coupling", "normal_load_steps"});
-  const std::string mu = o_.friction ? describe("friction", *o_.friction) : std::string();
-  if (!o_.friction) {
-    for (const Presence& options : {tangential, settings}) {
-      const auto first = std::ranges::find(options, true, &Presence::value_type::second);
-      if (first == options.end()) continue;
-      throw InputError(fmt::format("{} needs {} (the Coulomb friction coefficient)",
-                                   s_.describe(first->first, *value(first->first)), s_.describe("friction", "MU")));
-    }
-    return std::nullopt;
-  }
-  std::vector<std::string> loads_given;
-  for (const auto& [option, is_given] : tangential) {
-    if (is_given) loads_given.push_back(s_.describe(option, *value(option)));
-  }
-  if (loads_given.empty()) {
-    throw InputError(fmt::format("{} needs a tangential load: {} QX[,QY], {} DX[,DY] or {} X,Y", mu,
-                                 name("tangential_force"), name("tangential_displacement"), name("sliding")));
-  }
-  if (loads_given.size() > 1) {
-    throw InputError(fmt::format("{} cannot be combined: give one of {}, {}, {}", fmt::join(loads_given, " and "),
-                                 name("tangential_force"), name("tangential_displacement"), name("sliding")));
-  }
-  if (loads > 1) {
-    throw InputError(fmt::format("{} takes one normal load, not a load sweep: give a single {}, {} or {}", mu,
-                                 name("force"), name("mean_pressure"), name("approach")));
-  }
-  // What the friction slice does not support, refused before the options
-  // are read.
-  try {
-    if (coated) solvers::FrictionOptions::refuse_coating();
-  } catch (const solvers::SolverOptionError& error) {
-    std::vector<std::string> layers;
-    for (const std::string_view option : {"layer_thickness", "layer_E", "layer_nu", "substrate_E", "substrate_nu"})
-      layers.push_back(name(option));
-    throw InputError(fmt::format("the coated half-space ({}) {} ({})", fmt::join(layers, ", "), error.rule(), mu));
-  }
-  try {
-    if (o_.e_star) solvers::FrictionOptions::refuse_composite_modulus_only();
-  } catch (const solvers::SolverOptionError& error) {
-    throw InputError(fmt::format("{} with {}: {} {}", mu, describe("e_star", *o_.e_star), error.value(), error.rule()));
-  }
-  solvers::FrictionOptions friction;
-  friction.friction_coefficient = *o_.friction;
-  const auto steps = [&](std::string_view option, const std::vector<std::array<double, 2>>& given,
-                         solvers::TangentialControl control) {
-    if (given.empty()) throw OptionError(std::string(option), "", "is invalid: give at least one step");
-    for (const auto& [x, y] : given) friction.history.push_back({control, x, y});
-  };
-  if (o_.tangential_force) steps("tangential_force", *o_.tangential_force, solvers::TangentialControl::force);
-  if (o_.tangential_displacement) {
-    steps("tangential_displacement", *o_.tangential_displacement, solvers::TangentialControl::displacement);
-  }
-  if (o_.sliding) {
-    if (o_.sliding->size() != 2)
-      throw OptionError("sliding", text(*o_.sliding), "is invalid: expected a direction X,Y");
-    friction.sliding_direction = {(*o_.sliding)[0], (*o_.sliding)[1]};
-  }
-  if (o_.tangential_tol) friction.tolerance = *o_.tangential_tol;
-  // Beyond int, a limit is no limit: validate() sees the nearest int.
-  const auto clamped = [](long long value) { return static_cast<int>(std::clamp<long long>(value, INT_MIN, INT_MAX)); };
-  if (o_.tangential_max_iter) friction.max_iterations = clamped(*o_.tangential_max_iter);
-  if (o_.normal_load_steps) friction.normal_load_steps = clamped(*o_.normal_load_steps);
-  if (o_.coupling) {
-    if (*o_.coupling != "on" && *o_.coupling != "off") {
-      throw OptionError("coupling", *o_.coupling, "is invalid: allowed values are on and off");
-    }
-    friction.coupling = *o_.coupling == "on";
-  }
-  try {
-    friction.validate(normal);
-  } catch (const solvers::SolverOptionError& error) {
-    if (error.option() == "adhesion") {
-      throw InputError(fmt::format("{} {} ({})", s_.describe("adhesion", *o_.adhesion), error.rule(), mu));
-    }
-    throw OptionError(std::string(friction_name(error.option(), friction)), error.value(), error.rule());
-  }
-  return friction;
-}
-
 int Rules::threads() const {
   if (!o_.threads) return default_threads();
   if (*o_.threads < 1 || *o_.threads > max_threads()) {
@@ -552,6 +330,15 @@ int Rules::threads() const {
   }
   return static_cast<int>(*o_.threads);
 }
+
+}  // namespace detail
+
+namespace {
+
+using detail::friction_name;
+using detail::problem_name;
+using detail::Rules;
+using detail::text;
 
 // One option's broken rule as the front end writes it: "--tol 2 is invalid: ...".
 InputError spelled(const OptionError& error, const OptionSpelling& spelling) {

@@ -229,19 +229,4 @@ LcpSolution solve_lcp_quad(const LcpProblem& problem, const LcpQuadOptions& opti
   return solution;
 }
 
-LcpQuad::LcpQuad(const Grid& grid, double e_star, LcpQuadOptions options, DenseContactOptions contact)
-    : DenseContactSolver("lcpquad", grid, e_star, std::move(contact)), options_(options) {
-  options_.validate();
-}
-
-LcpQuad::LcpQuad(const Grid& grid, double e_star, Eigen::MatrixXd influence, LcpQuadOptions options,
-                 DenseContactOptions contact)
-    : DenseContactSolver("lcpquad", grid, e_star, std::move(influence), std::move(contact)), options_(options) {
-  options_.validate();
-}
-
-LcpSolution LcpQuad::solve_lcp(const LcpProblem& problem) {
-  return solve_lcp_quad(problem, options_);
-}
-
 }  // namespace halfspace::solvers

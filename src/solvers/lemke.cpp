@@ -142,19 +142,4 @@ LcpSolution solve_lcp_lemke(const LcpProblem& problem, const LemkeOptions& optio
   return solution;
 }
 
-Lemke::Lemke(const Grid& grid, double e_star, LemkeOptions options, DenseContactOptions contact)
-    : DenseContactSolver("lemke", grid, e_star, std::move(contact)), options_(options) {
-  options_.validate();
-}
-
-Lemke::Lemke(const Grid& grid, double e_star, Eigen::MatrixXd influence, LemkeOptions options,
-             DenseContactOptions contact)
-    : DenseContactSolver("lemke", grid, e_star, std::move(influence), std::move(contact)), options_(options) {
-  options_.validate();
-}
-
-LcpSolution Lemke::solve_lcp(const LcpProblem& problem) {
-  return solve_lcp_lemke(problem, options_);
-}
-
 }  // namespace halfspace::solvers

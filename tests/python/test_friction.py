@@ -128,6 +128,8 @@ def test_sliding_and_displacement_control():
     (dict(friction=0.3, tangential_force=4.0), "tangential_force=4,0 is invalid"),
     (dict(friction=0.3, tangential_force=1.0, tangential_max_iter=0), "tangential_max_iter=0 is invalid"),
     (dict(tangential_tol=1e-6), "tangential_tol=1e-06 needs friction=MU"),
+    (dict(friction=0.3, tangential_force=1.0, normal_load_steps=0), "normal_load_steps=0 is invalid"),
+    (dict(friction=0.3, tangential_force=1.0, coupling="off"), "coupling='off' is invalid: give True or False"),
     (dict(friction=0.3, tangential_force=1.0, adhesion="md", work_of_adhesion=0.1, adhesion_range=1e-8),
      "adhesion=md cannot be combined with friction"),
 ])
@@ -151,6 +153,26 @@ def test_dissimilar_bodies_are_solved_coupled():
     assert r.friction["converged"] and r.friction["coupled"]
     assert r.friction["dundurs_beta"] == pytest.approx(0.4 / 1.4, rel=1e-12)
     assert r.friction["coupling_alternations"] >= 2
+
+
+def test_coupling_off_keeps_the_frictionless_pressure():
+    """coupling=False (the program's --no-coupling) on dissimilar bodies: the step is not coupled and
+    its pressure is the frictionless solve's under the same load."""
+    bodies = dict(E1=E, nu1=NU, E2=math.inf, nu2=NU)
+    r = hs.solve(sphere(16), **bodies, force=FORCE, friction=MU, tangential_force=1.0, coupling=False,
+                 threads=1, fft_planning="estimate")
+    plain = hs.solve(sphere(16), **bodies, force=FORCE, threads=1, fft_planning="estimate")
+    assert r.friction["converged"] and not r.friction["coupled"]
+    np.testing.assert_allclose(r.pressure, plain.pressure, rtol=0, atol=1e-12 * np.max(plain.pressure))
+
+
+def test_normal_load_steps_reach_the_load_asked_for():
+    """normal_load_steps (the program's --normal-load-steps): the coupled normal load applied in
+    increments still ends at the force asked for, converged."""
+    history = hs.history(sphere(16), E1=E, nu1=NU, E2=math.inf, nu2=NU, force=FORCE, friction=MU,
+                         tangential_force=[0.5], normal_load_steps=3, threads=1, fft_planning="estimate")
+    assert history.converged and history[0].friction["coupled"]
+    assert history[0].total_force == pytest.approx(FORCE, rel=1e-6)
 
 
 def test_a_coupled_history_keeps_each_steps_pressure(tmp_path):

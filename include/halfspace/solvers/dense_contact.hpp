@@ -31,6 +31,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 
 #include "halfspace/grid.hpp"
 #include "halfspace/solvers/contact_solver.hpp"
@@ -122,6 +123,29 @@ class DenseContactSolver : public ContactSolver {
   DenseContactOptions options_;
   ContactLcp last_lcp_;
   LcpSolution last_solution_;
+};
+
+// A dense contact solver whose LCP method is `Method` with its options
+// (Lemke, LcpQuad): the options validated after the base's checks.
+template <class MethodOptions, LcpSolution (*Method)(const LcpProblem&, const MethodOptions&)>
+class DenseLcpMethod : public DenseContactSolver {
+ protected:
+  DenseLcpMethod(std::string_view name, const Grid& grid, double e_star, MethodOptions options,
+                 DenseContactOptions contact)
+      : DenseContactSolver(name, grid, e_star, std::move(contact)), options_(validated(std::move(options))) {}
+  DenseLcpMethod(std::string_view name, const Grid& grid, double e_star, Eigen::MatrixXd influence,
+                 MethodOptions options, DenseContactOptions contact)
+      : DenseContactSolver(name, grid, e_star, std::move(influence), std::move(contact)),
+        options_(validated(std::move(options))) {}
+
+ private:
+  static MethodOptions validated(MethodOptions options) {
+    options.validate();
+    return options;
+  }
+  LcpSolution solve_lcp(const LcpProblem& problem) final { return Method(problem, options_); }
+
+  MethodOptions options_;
 };
 
 // Throws InputError unless the dense matrix of `grid` fits (kMaxDenseCells),

@@ -40,16 +40,13 @@ struct LcpQuadOptions {
 LcpSolution solve_lcp_quad(const LcpProblem& problem, const LcpQuadOptions& options = {});
 
 // Contact solver "lcpquad": LCPquad on the contact LCP of dense_contact.hpp.
-class LcpQuad final : public DenseContactSolver {
+class LcpQuad final : public DenseLcpMethod<LcpQuadOptions, solve_lcp_quad> {
  public:
-  LcpQuad(const Grid& grid, double e_star, LcpQuadOptions options = {}, DenseContactOptions contact = {});
+  LcpQuad(const Grid& grid, double e_star, LcpQuadOptions options = {}, DenseContactOptions contact = {})
+      : DenseLcpMethod("lcpquad", grid, e_star, options, std::move(contact)) {}
   LcpQuad(const Grid& grid, double e_star, Eigen::MatrixXd influence, LcpQuadOptions options = {},
-          DenseContactOptions contact = {});
-
- private:
-  LcpSolution solve_lcp(const LcpProblem& problem) override;
-
-  LcpQuadOptions options_;
+          DenseContactOptions contact = {})
+      : DenseLcpMethod("lcpquad", grid, e_star, std::move(influence), options, std::move(contact)) {}
 };
 
 }  // namespace halfspace::solvers

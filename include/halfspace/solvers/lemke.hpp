@@ -32,16 +32,13 @@ LcpSolution solve_lcp_lemke(const LcpProblem& problem, const LemkeOptions& optio
 // Contact solver "lemke": Lemke's method on the contact LCP of
 // dense_contact.hpp (displacement control: a plain LCP; load control: the
 // mixed LCP with the force as an equality). Grids up to kMaxDenseCells.
-class Lemke final : public DenseContactSolver {
+class Lemke final : public DenseLcpMethod<LemkeOptions, solve_lcp_lemke> {
  public:
-  Lemke(const Grid& grid, double e_star, LemkeOptions options = {}, DenseContactOptions contact = {});
+  Lemke(const Grid& grid, double e_star, LemkeOptions options = {}, DenseContactOptions contact = {})
+      : DenseLcpMethod("lemke", grid, e_star, options, std::move(contact)) {}
   Lemke(const Grid& grid, double e_star, Eigen::MatrixXd influence, LemkeOptions options = {},
-        DenseContactOptions contact = {});
-
- private:
-  LcpSolution solve_lcp(const LcpProblem& problem) override;
-
-  LemkeOptions options_;
+        DenseContactOptions contact = {})
+      : DenseLcpMethod("lemke", grid, e_star, std::move(influence), options, std::move(contact)) {}
 };
 
 }  // namespace halfspace::solvers
