@@ -247,8 +247,7 @@ class Rules {
   std::optional<solvers::SolverOptions::Adhesion> adhesion() const;
   solvers::SolverOptions solver() const;
   std::optional<ElasticPair> pair() const;
-  std::optional<solvers::FrictionOptions> friction(const solvers::SolverOptions& normal, std::size_t loads,
-                                                   bool coated) const;
+  std::optional<solvers::FrictionOptions> friction(const solvers::SolverOptions& normal, std::size_t loads) const;
   int threads() const;
 
  private:
@@ -460,8 +459,7 @@ std::optional<ElasticPair> Rules::pair() const {
 // Friction: the tangential loads and the settings need mu; exactly one
 // tangential load; one normal load; each body's constants; then
 // FrictionOptions::validate(normal), named by the problem's options.
-std::optional<solvers::FrictionOptions> Rules::friction(const solvers::SolverOptions& normal, std::size_t loads,
-                                                        bool coated) const {
+std::optional<solvers::FrictionOptions> Rules::friction(const solvers::SolverOptions& normal, std::size_t loads) const {
   const Presence tangential = presence({"tangential_force", "tangential_displacement", "sliding"});
   const Presence settings = presence({"tangential_tol", "tangential_max_iter", "coupling", "normal_load_steps"});
   const std::string mu = o_.friction ? describe("friction", *o_.friction) : std::string();
@@ -491,15 +489,7 @@ std::optional<solvers::FrictionOptions> Rules::friction(const solvers::SolverOpt
                                  name("force"), name("mean_pressure"), name("approach")));
   }
   // What the friction slice does not support, refused before the options
-  // are read.
-  try {
-    if (coated) solvers::FrictionOptions::refuse_coating();
-  } catch (const solvers::SolverOptionError& error) {
-    std::vector<std::string> layers;
-    for (const std::string_view option : {"layer_thickness", "layer_E", "layer_nu", "substrate_E", "substrate_nu"})
-      layers.push_back(name(option));
-    throw InputError(fmt::format("the coated half-space ({}) {} ({})", fmt::join(layers, ", "), error.rule(), mu));
-  }
+  // are read (a coating's rule needs the grid: check_grid).
   try {
     if (o_.e_star) solvers::FrictionOptions::refuse_composite_modulus_only();
   } catch (const solvers::SolverOptionError& error) {
@@ -575,10 +565,10 @@ Problem make_problem(const ProblemOptions& options, const OptionSpelling& spelli
     Problem problem;
     problem.coating = rules.coating();
     problem.e_star = problem.coating ? plane_strain_modulus(problem.coating->layer) : rules.body();
-    problem.pair = rules.pair();
+    problem.pair = problem.coating ? std::optional(ElasticPair::coated(*problem.coating)) : rules.pair();
     problem.solver = rules.solver();  // the interface law first: adhesion makes loads signed
     std::tie(problem.loading, problem.load_values) = rules.loads();
-    problem.friction = rules.friction(problem.solver, problem.load_values.size(), problem.coating.has_value());
+    problem.friction = rules.friction(problem.solver, problem.load_values.size());
     problem.threads = rules.threads();
     return problem;
   } catch (const OptionError& error) {
@@ -623,6 +613,15 @@ void Problem::check_grid(const Grid& grid, const OptionSpelling& spelling) const
     }
   }
   if (friction) {
+    try {
+      if (pair) solvers::FrictionOptions::check_body(grid, *pair);
+    } catch (const solvers::SolverOptionError& error) {
+      std::vector<std::string> layers;
+      for (const std::string_view option : {"layer_thickness", "layer_E", "layer_nu", "substrate_E", "substrate_nu"})
+        layers.push_back(spelling.name(option));
+      throw InputError(fmt::format("the coated half-space ({}) {} ({})", fmt::join(layers, ", "), error.rule(),
+                                   spelling.describe("friction", text(friction->friction_coefficient))));
+    }
     try {
       friction->validate(grid, solver, loading);
     } catch (const solvers::SolverOptionError& error) {
