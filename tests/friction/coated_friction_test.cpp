@@ -316,9 +316,9 @@ TEST(CoatedFriction, ThinStiffLayerAgreesWithADenseSolveAndStiffensTheContact) {
   options.friction_coefficient = kMu;
   options.tolerance = 1e-13;
   TangentialSolver solver(op, options);
-  const TangentialResult step = solver.solve({pressure.data(), grid.size()},
-                                             TangentialLoading::displacement(delta_x, delta_y),
-                                             TangentialState::unloaded(grid.size()));
+  const TangentialResult step =
+      solver.solve({pressure.data(), grid.size()}, TangentialLoading::displacement(delta_x, delta_y),
+                   TangentialState::unloaded(grid.size()));
   ASSERT_TRUE(step.converged()) << step.message;
   bool converged = false;
   const Eigen::VectorXd q = dense_stick_slip(dense.tangential, pressure, delta_x, delta_y, converged);
@@ -326,13 +326,15 @@ TEST(CoatedFriction, ThinStiffLayerAgreesWithADenseSolveAndStiffensTheContact) {
   double worst = 0.0;
   long slipping = 0;
   for (Eigen::Index i = 0; i < cells; ++i) {
-    worst = std::max({worst, std::abs(step.state.shear_x[i] - q[2 * i]), std::abs(step.state.shear_y[i] - q[2 * i + 1])});
+    worst =
+        std::max({worst, std::abs(step.state.shear_x[i] - q[2 * i]), std::abs(step.state.shear_y[i] - q[2 * i + 1])});
     if (pressure[i] > 0.0 && step.stick[i] != 1.0) ++slipping;
   }
   worst /= kMu * pressure.maxCoeff();
-  std::printf("thin stiff layer: shear against dense Gauss-Seidel %.3g of mu p_max; stick fraction %.3f, %ld cells "
-              "slip\n",
-              worst, step.stick_fraction, slipping);
+  std::printf(
+      "thin stiff layer: shear against dense Gauss-Seidel %.3g of mu p_max; stick fraction %.3f, %ld cells "
+      "slip\n",
+      worst, step.stick_fraction, slipping);
   EXPECT_LT(worst, kStepTolerance);
   EXPECT_GT(slipping, 0);             // partial slip: the test reaches the circle
   EXPECT_GT(step.stick_fraction, 0);  // and the stick zone
@@ -351,8 +353,8 @@ TEST(CoatedFriction, ThinStiffLayerAgreesWithADenseSolveAndStiffensTheContact) {
   const double substrate = approach(ElasticPair::on_rigid(kSteel));
   const double layered = approach(coated);
   const double layer = approach(ElasticPair::on_rigid(kCeramic));
-  std::printf("tangential approach at Q = mu P/2: substrate %.4g m, coated %.4g m, layer material %.4g m\n",
-              substrate, layered, layer);
+  std::printf("tangential approach at Q = mu P/2: substrate %.4g m, coated %.4g m, layer material %.4g m\n", substrate,
+              layered, layer);
   EXPECT_LT(layered, substrate);
   EXPECT_GT(layered, layer);
 }
