@@ -40,13 +40,19 @@ void print_friction_summary(std::FILE* out, const SolveSetup& setup, const Frict
   const Grid& grid = setup.grid;
   const std::string_view force = grid.dimension() == 1 ? "N/m" : "N";
   const ElasticPair& pair = *setup.pair;
-  fmt::print(out, "friction:            mu = {:g}; E1 = {:g} Pa, nu1 = {:g}, E2 = {:g} Pa, nu2 = {:g}\n",
-             setup.friction->friction_coefficient, pair.body1().youngs_modulus, pair.body1().poissons_ratio,
-             pair.body2().youngs_modulus, pair.body2().poissons_ratio);
+  if (pair.coating()) {
+    fmt::print(out, "friction:            mu = {:g}; the coated half-space against the rigid surface\n",
+               setup.friction->friction_coefficient);
+  } else {
+    fmt::print(out, "friction:            mu = {:g}; E1 = {:g} Pa, nu1 = {:g}, E2 = {:g} Pa, nu2 = {:g}\n",
+               setup.friction->friction_coefficient, pair.body1().youngs_modulus, pair.body1().poissons_ratio,
+               pair.body2().youngs_modulus, pair.body2().poissons_ratio);
+  }
   if (!pair.similar()) {
     int alternations = 0;
     for (const TangentialResult& step : steps) alternations += step.coupling_alternations;
-    fmt::print(out, "coupling:            Dundurs' beta = {:.4g}; {}\n", result.dundurs_beta,
+    fmt::print(out, "coupling:            Dundurs' beta = {:.4g}{}; {}\n", result.dundurs_beta,
+               pair.coating() ? " (the layer's)" : "",
                result.coupled
                    ? fmt::format("normal and tangential solved together ({} alternations in the steps)", alternations)
                    : std::string("ignored (--no-coupling): the frictionless pressure"));
@@ -107,7 +113,7 @@ int run_frictional_solve(const SolveSetup& setup, const SolvePlace& place) {
     solvers::SolverOptions settings = setup.solver;
     settings.progress = progress.callback();
     result.normal =
-        solvers::solve_surface(setup.grid, heights, setup.e_star, setup.loading, settings, {}, place.layout);
+        solvers::solve_surface(setup.grid, heights, pair.half_space(), setup.loading, settings, {}, place.layout);
   }
   if (result.normal.converged() && !options.coupled(pair)) {
     result.dundurs_beta = pair.dundurs_beta();
@@ -141,6 +147,7 @@ int run_frictional_solve(const SolveSetup& setup, const SolvePlace& place) {
       result.coupled && !history && !result.step_normals.empty() ? result.step_normals.front() : result.normal;
   activity.emplace(fmt::format("computing the statistics of the {} grid", setup.grid.shape_string()));
   io::ResultMetadata metadata = place.metadata();
+  metadata.coating = setup.coating;
   metadata.contact_statistics = place.contact_statistics(normal);
   activity.emplace(fmt::format("writing {}", setup.output.string()));
   if (history) {

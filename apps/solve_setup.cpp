@@ -437,6 +437,14 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
   // Friction (--friction with a tangential load), checked by make_problem.
   const std::optional<solvers::FrictionOptions> friction = friction_from(options, problem);
   const std::size_t history_steps = friction ? friction->steps() : 0;
+  if (friction && coating && !stress.depths.empty()) {
+    throw InputError(fmt::format(
+        "{} cannot be combined with {} on a coated half-space: the layered stress solution is solved for a normal "
+        "surface traction only, not the shear tractions of friction (drop {}, or compute the frictionless "
+        "stresses without {})",
+        options.describe("stress-depths"), options.name("friction"), options.name("stress-depths"),
+        options.name("friction")));
+  }
   const GridCheck check_grid = [&](const Grid& grid, const std::string& request) {
     problem.check_grid(grid, flags);
     const std::string what = fmt::format("{}: {}", request, solve_description(grid, solver, load_values.size()));

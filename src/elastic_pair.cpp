@@ -7,6 +7,9 @@
 #include <limits>
 
 #include "halfspace/error.hpp"
+#include "halfspace/kernels/coupling_fourier.hpp"
+#include "halfspace/kernels/layered_tangential_fourier.hpp"
+#include "halfspace/kernels/tangential_fourier.hpp"
 
 namespace halfspace {
 namespace {
@@ -50,6 +53,39 @@ ElasticBody ElasticPair::rigid() {
   return {std::numeric_limits<double>::infinity(), 0.0};
 }
 
+ElasticPair ElasticPair::coated(const LayeredMaterial& coating) {
+  ElasticPair pair(validated(coating).layer, rigid());
+  pair.coating_ = coating;
+  return pair;
+}
+
+HalfSpace ElasticPair::half_space() const {
+  if (coating_) return *coating_;
+  return composite_modulus();
+}
+
+void ElasticPair::symbols(double qx, double qy, kernels::TangentialCoefficients& tangential,
+                          kernels::CouplingCoefficients& coupling) const {
+  // The layered kernel holds the material and two ratios: made per call,
+  // it costs nothing beside its two solves.
+  if (coating_) {
+    kernels::LayeredTangentialKernel(*coating_).symbols(qx, qy, tangential, coupling);
+    return;
+  }
+  tangential = kernels::tangential_spectrum(qx, qy, shear_compliance_, directional_compliance_);
+  coupling = kernels::coupling_spectrum(qx, qy, coupling_compliance_);
+}
+
+kernels::TangentialCoefficients ElasticPair::tangential_symbol(double qx, double qy) const {
+  if (coating_) return kernels::LayeredTangentialKernel(*coating_).tangential(qx, qy);
+  return kernels::tangential_spectrum(qx, qy, shear_compliance_, directional_compliance_);
+}
+
+kernels::CouplingCoefficients ElasticPair::coupling_symbol(double qx, double qy) const {
+  if (coating_) return kernels::LayeredTangentialKernel(*coating_).coupling(qx, qy);
+  return kernels::coupling_spectrum(qx, qy, coupling_compliance_);
+}
+
 double ElasticPair::composite_modulus() const {
   return checked_composite_modulus(2.0 / normal_compliance_);
 }
@@ -59,6 +95,13 @@ double ElasticPair::dundurs_beta() const {
 }
 
 bool ElasticPair::similar() const {
+  if (coating_) {
+    const ElasticBody& layer = coating_->layer;
+    const ElasticBody& substrate = coating_->substrate;
+    const bool one_material =
+        layer.youngs_modulus == substrate.youngs_modulus && layer.poissons_ratio == substrate.poissons_ratio;
+    if (!one_material) return false;
+  }
   return std::abs(dundurs_beta()) <= 1e-12;
 }
 

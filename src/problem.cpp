@@ -362,10 +362,10 @@ Problem make_problem(const ProblemOptions& options, const OptionSpelling& spelli
     Problem problem;
     problem.coating = rules.coating();
     problem.e_star = problem.coating ? plane_strain_modulus(problem.coating->layer) : rules.body();
-    problem.pair = rules.pair();
+    problem.pair = problem.coating ? std::optional(ElasticPair::coated(*problem.coating)) : rules.pair();
     problem.solver = rules.solver();  // the interface law first: adhesion makes loads signed
     std::tie(problem.loading, problem.load_values) = rules.loads();
-    problem.friction = rules.friction(problem.solver, problem.load_values.size(), problem.coating.has_value());
+    problem.friction = rules.friction(problem.solver, problem.load_values.size());
     problem.threads = rules.threads();
     return problem;
   } catch (const OptionError& error) {
@@ -410,6 +410,15 @@ void Problem::check_grid(const Grid& grid, const OptionSpelling& spelling) const
     }
   }
   if (friction) {
+    try {
+      if (pair) solvers::FrictionOptions::check_body(grid, *pair);
+    } catch (const solvers::SolverOptionError& error) {
+      std::vector<std::string> layers;
+      for (const std::string_view option : {"layer_thickness", "layer_E", "layer_nu", "substrate_E", "substrate_nu"})
+        layers.push_back(spelling.name(option));
+      throw InputError(fmt::format("the coated half-space ({}) {} ({})", fmt::join(layers, ", "), error.rule(),
+                                   spelling.describe("friction", text(friction->friction_coefficient))));
+    }
     try {
       friction->validate(grid, solver, loading);
     } catch (const solvers::SolverOptionError& error) {

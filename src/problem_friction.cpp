@@ -32,8 +32,7 @@ std::string_view friction_name(std::string_view member, const solvers::FrictionO
 // Friction: the tangential loads and the settings need mu; exactly one
 // tangential load; one normal load; each body's constants; then
 // FrictionOptions::validate(normal), named by the problem's options.
-std::optional<solvers::FrictionOptions> Rules::friction(const solvers::SolverOptions& normal, std::size_t loads,
-                                                        bool coated) const {
+std::optional<solvers::FrictionOptions> Rules::friction(const solvers::SolverOptions& normal, std::size_t loads) const {
   const Presence tangential = presence({"tangential_force", "tangential_displacement", "sliding"});
   const Presence settings = presence({"tangential_tol", "tangential_max_iter", "coupling", "normal_load_steps"});
   const std::string mu = o_.friction ? describe("friction", *o_.friction) : std::string();
@@ -63,15 +62,7 @@ std::optional<solvers::FrictionOptions> Rules::friction(const solvers::SolverOpt
                                  name("force"), name("mean_pressure"), name("approach")));
   }
   // What the friction slice does not support, refused before the options
-  // are read.
-  try {
-    if (coated) solvers::FrictionOptions::refuse_coating();
-  } catch (const solvers::SolverOptionError& error) {
-    std::vector<std::string> layers;
-    for (const std::string_view option : {"layer_thickness", "layer_E", "layer_nu", "substrate_E", "substrate_nu"})
-      layers.push_back(name(option));
-    throw InputError(fmt::format("the coated half-space ({}) {} ({})", fmt::join(layers, ", "), error.rule(), mu));
-  }
+  // are read (a coating's rule needs the grid: Problem::check_grid).
   try {
     if (o_.e_star) solvers::FrictionOptions::refuse_composite_modulus_only();
   } catch (const solvers::SolverOptionError& error) {

@@ -148,8 +148,7 @@ class Rules {
   std::optional<solvers::SolverOptions::Adhesion> adhesion() const;
   solvers::SolverOptions solver() const;
   std::optional<ElasticPair> pair() const;
-  std::optional<solvers::FrictionOptions> friction(const solvers::SolverOptions& normal, std::size_t loads,
-                                                   bool coated) const;
+  std::optional<solvers::FrictionOptions> friction(const solvers::SolverOptions& normal, std::size_t loads) const;
   int threads() const;
 
  private:

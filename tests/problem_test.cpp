@@ -179,6 +179,31 @@ TEST(ProblemTest, FrictionIsMadeFromItsOptions) {
   EXPECT_FALSE(make_problem(sphere_problem()).friction.has_value());
 }
 
+// A coated half-space with friction: the pair is the coated body against the
+// rigid surface; periodic grids are accepted, free ones refused by check_grid.
+TEST(ProblemTest, FrictionOnACoatingNeedsAPeriodicGrid) {
+  ProblemOptions options = friction_problem();
+  options.e1.reset();
+  options.nu1.reset();
+  options.e2.reset();
+  options.nu2.reset();
+  options.layer_thickness = 1e-6;
+  options.layer_e = 4.2e11;
+  options.layer_nu = 0.22;
+  options.substrate_e = 2.1e11;
+  options.substrate_nu = 0.3;
+  const Problem problem = make_problem(options, Flags{});
+  ASSERT_TRUE(problem.pair.has_value() && problem.pair->coating().has_value());
+  EXPECT_EQ(problem.pair->coating()->thickness, 1e-6);
+  EXPECT_EQ(std::get<LayeredMaterial>(problem.pair->half_space()).layer.youngs_modulus, 4.2e11);
+  EXPECT_FALSE(problem.pair->similar());
+  problem.check_grid(Grid::plane(32, 32, 1e-5, 1e-5, Boundary::periodic), Flags{});
+  EXPECT_TRUE(starts_with(
+      refusal([&] { problem.check_grid(Grid::plane(32, 32, 1e-5, 1e-5, Boundary::free), Flags{}); }),
+      "the coated half-space (--layer_thickness, --layer_E, --layer_nu, --substrate_E, --substrate_nu) cannot be "
+      "combined with friction on the 32x32 grid (free)"));
+}
+
 TEST(ProblemTest, FrictionRulesNameTheOption) {
   const auto refused = [](const ProblemOptions& options) { return refusal([&] { make_problem(options, Flags{}); }); };
   ProblemOptions options = friction_problem();

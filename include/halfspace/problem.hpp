@@ -113,11 +113,13 @@ std::span<const ProblemOptionName> problem_option_names();
 struct Problem {
   double e_star = 0.0;                     // Pa; a coating's is the layer's E1 / (1 - nu1^2)
   std::optional<LayeredMaterial> coating;  // a coated half-space, else homogeneous
-  std::optional<ElasticPair> pair;         // both bodies, when E1, nu1, E2, nu2 were given
-  Loading loading;                         // the first load; its mode is every load's
-  std::vector<double> load_values;         // every load, in loading.mode's unit
+  // Both bodies, when E1, nu1, E2, nu2 were given; the coated body against
+  // the rigid surface (ElasticPair::coated) with a coating.
+  std::optional<ElasticPair> pair;
+  Loading loading;                  // the first load; its mode is every load's
+  std::vector<double> load_values;  // every load, in loading.mode's unit
   solvers::SolverOptions solver;
-  // With friction: one normal load, both bodies given (pair), no coating.
+  // With friction: one normal load, both bodies given or a coating (pair).
   std::optional<solvers::FrictionOptions> friction;
   int threads = 1;
 
@@ -126,7 +128,8 @@ struct Problem {
   // makes within the range of pressures; signed loads by size), the hardness
   // cap against each load, the solver's (SolverOptions::validate(grid),
   // with the coating's) and friction's (FrictionOptions::validate(grid,
-  // normal, loading): a force step beyond mu P, y components on a 1D grid).
+  // normal, loading): a force step beyond mu P, y components on a 1D grid;
+  // FrictionOptions::check_body: a coating on a periodic grid).
   // Throws InputError naming the option.
   void check_grid(const Grid& grid, const OptionSpelling& spelling = {}) const;
   // Displacement control on a periodic grid: each approach below the mean

@@ -42,8 +42,14 @@ nb::dict subsurface_stress(const Result& result, const std::vector<double>& dept
         "does not fix it; -1 < nu <= 0.5)");
   }
   // A friction result's shear tractions act beside the pressure, as in
-  // `halfspace stress` (friction refuses coatings, so nu is given here).
+  // `halfspace stress`; a coated one's are refused as there.
   const bool sheared = result.tangential_step < result.run->tangential.size();
+  if (sheared && coating) {
+    throw InputError(
+        "the result is a coated half-space's with shear tractions (friction): stresses under shear are not "
+        "supported in a coated half-space, whose layered stress solution is solved for a normal surface traction "
+        "only");
+  }
   stress::StressVolume volume = [&] {
     nb::gil_scoped_release release;
     if (sheared) {

@@ -7,6 +7,8 @@
 // (2ny, 2nx) wrap-around grid as FftInfluenceOperator lays out Love's.
 #include "halfspace/operators/tangential_operator.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cassert>
 #include <cmath>
@@ -16,15 +18,14 @@
 #include <utility>
 #include <vector>
 
+#include "halfspace/error.hpp"
 #include "halfspace/fft/grid_transform.hpp"
 #include "halfspace/fft/padded_real_fft.hpp"
 #include "halfspace/fft/real_fft.hpp"
 #include "halfspace/kernels/cerruti_rectangle.hpp"
-#include "halfspace/kernels/coupling_fourier.hpp"
 #include "halfspace/kernels/coupling_rectangle.hpp"
 #include "halfspace/kernels/coupling_strip.hpp"
 #include "halfspace/kernels/periodic_fourier.hpp"
-#include "halfspace/kernels/tangential_fourier.hpp"
 #include "halfspace/kernels/tangential_strip.hpp"
 #include "halfspace/linalg/parallel.hpp"
 
@@ -112,6 +113,18 @@ class SerialTangentialTransforms final : public TangentialTransforms {
   std::unique_ptr<PaddedRealFft> padded_[2];  // free grids
 };
 
+// A coated body's compliance is known per Fourier mode only: free grids
+// would need its cell coefficients in real space (Cerruti's rectangle plus a
+// remainder, as the normal kernel has), which are not built.
+void check_body(const Grid& grid, const ElasticPair& pair) {
+  if (pair.coating() && !grid.periodic()) {
+    throw InputError(
+        fmt::format("a coated half-space's tangential compliance on the {} grid ({}) is not supported: "
+                    "it is built per Fourier mode, for periodic grids only",
+                    grid.shape_string(), to_string(grid.boundary())));
+  }
+}
+
 }  // namespace
 
 struct TangentialOperator::Impl {
@@ -153,8 +166,6 @@ struct TangentialOperator::Impl {
     const std::size_t nx = grid.nx();
     const std::size_t rows = transforms->spectrum_rows();
     const double inverse_n = 1.0 / static_cast<double>(grid.size());
-    const double shear = pair.shear_compliance();
-    const double directional = pair.directional_compliance();
     auto wavenumbers = [&](std::size_t r, std::size_t c) {
       return std::pair{kernels::dft_wavenumber(c, nx, grid.dx()),
                        grid.dimension() == 1 ? 0.0 : kernels::dft_wavenumber(r, rows, grid.dy())};
@@ -162,7 +173,9 @@ struct TangentialOperator::Impl {
     for (std::size_t k = 0; k < xx.size(); ++k) {
       const auto [r, c] = transforms->mode(k);
       const auto [qx, qy] = wavenumbers(r, c);
-      const kernels::TangentialCoefficients s = kernels::tangential_spectrum(qx, qy, shear, directional);
+      kernels::TangentialCoefficients s;
+      kernels::CouplingCoefficients odd;
+      pair.symbols(qx, qy, s, odd);
       xx[k] = s.xx * inverse_n;
       yy[k] = s.yy * inverse_n;
       xy[k] = s.xy * inverse_n;
@@ -170,7 +183,6 @@ struct TangentialOperator::Impl {
         // The odd symbol's component along an axis vanishes at that axis's
         // Nyquist frequency (an odd sequence's DFT does), where +q and -q
         // are the same mode: otherwise the product would not be real.
-        const kernels::CouplingCoefficients odd = kernels::coupling_spectrum(qx, qy, pair.coupling_compliance());
         const bool nyquist_x = 2 * c == nx;
         const bool nyquist_y = grid.dimension() == 2 && 2 * r == rows;
         coupling_x[k] = nyquist_x ? 0.0 : odd.x * inverse_n;
@@ -182,7 +194,7 @@ struct TangentialOperator::Impl {
     for (std::size_t r = 0; r < rows; ++r) {
       for (std::size_t c = 0; c <= nx / 2; ++c) {
         const auto [qx, qy] = wavenumbers(r, c);
-        const kernels::TangentialCoefficients s = kernels::tangential_spectrum(qx, qy, shear, directional);
+        const kernels::TangentialCoefficients s = pair.tangential_symbol(qx, qy);
         // Columns other than 0 and nx/2 (even nx) stand for two modes.
         const double weight = c == 0 || 2 * c == nx ? 1.0 : 2.0;
         sum_xx += weight * s.xx;
@@ -294,7 +306,7 @@ TangentialOperator::TangentialOperator(const Grid& grid, const ElasticPair& pair
 
 TangentialOperator::TangentialOperator(const Grid& grid, const ElasticPair& pair,
                                        std::unique_ptr<TangentialTransforms> transforms)
-    : impl_(std::make_unique<Impl>(grid, pair, std::move(transforms))) {}
+    : impl_((check_body(grid, pair), std::make_unique<Impl>(grid, pair, std::move(transforms)))) {}
 
 std::size_t TangentialOperator::local_size() const {
   return impl_->local_size();

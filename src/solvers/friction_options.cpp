@@ -128,10 +128,14 @@ void FrictionOptions::validate(const Grid& grid, const SolverOptions& normal, co
   }
 }
 
-void FrictionOptions::refuse_coating() {
-  throw SolverOptionError("coating", "given",
-                          "cannot be combined with friction: the tangential compliance is the homogeneous "
-                          "half-space's (Cerruti), not yet a coated body's");
+void FrictionOptions::check_body(const Grid& grid, const ElasticPair& pair) {
+  if (pair.coating() && !grid.periodic()) {
+    throw SolverOptionError("coating", "given",
+                            fmt::format("cannot be combined with friction on the {} grid ({}): a coated half-space's "
+                                        "tangential compliance is built per Fourier mode, for periodic grids only "
+                                        "(use a periodic boundary)",
+                                        grid.shape_string(), to_string(grid.boundary())));
+  }
 }
 
 void FrictionOptions::refuse_composite_modulus_only() {

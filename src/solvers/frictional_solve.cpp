@@ -73,7 +73,7 @@ void solve_coupled(const Grid& grid, std::span<const double> heights, const Elas
   result.coupled = true;
   const Eigen::ArrayXd gap0 = initial_gap(grid, heights, layout);
   const std::span<const double> gap(gap0.data(), static_cast<std::size_t>(gap0.size()));
-  const std::unique_ptr<ContactSolver> normal_solver = make_solver(grid, pair.composite_modulus(), normal, layout);
+  const std::unique_ptr<ContactSolver> normal_solver = make_solver(grid, pair.half_space(), normal, layout);
   const std::unique_ptr<TangentialOperator> made = layout.make_tangential_operator(grid, pair, normal.fft_planning);
   TangentialOperator& op = *made;
   std::size_t current = 0;
@@ -165,6 +165,7 @@ std::vector<TangentialResult> solve_tangential_history(const Grid& grid, const E
                                                        const SolveResult& normal, const FrictionOptions& friction,
                                                        FftPlanning planning, const Layout& layout) {
   friction.validate();
+  FrictionOptions::check_body(grid, pair);
   const std::unique_ptr<TangentialOperator> made = layout.make_tangential_operator(grid, pair, planning);
   TangentialOperator& op = *made;
   std::size_t current = 0;  // the step the progress callback reports
@@ -215,6 +216,7 @@ FrictionalSolveResult solve_frictional_surface(const Grid& grid, std::span<const
                                                const SolverOptions& normal, const FrictionOptions& friction,
                                                const Layout& layout) {
   friction.validate(grid, normal, loading);
+  FrictionOptions::check_body(grid, pair);
   FrictionalSolveResult result;
   result.requested_steps = friction.steps();
   result.dundurs_beta = pair.dundurs_beta();
@@ -222,7 +224,7 @@ FrictionalSolveResult solve_frictional_surface(const Grid& grid, std::span<const
     solve_coupled(grid, heights, pair, loading, normal, friction, layout, result);
     return result;
   }
-  result.normal = solve_surface(grid, heights, pair.composite_modulus(), loading, normal, {}, layout);
+  result.normal = solve_surface(grid, heights, pair.half_space(), loading, normal, {}, layout);
   if (!result.normal.converged()) return result;
   result.steps = solve_tangential_history(grid, pair, result.normal, friction, normal.fft_planning, layout);
   return result;

@@ -87,7 +87,13 @@ TEST(FrictionOptions, RulesOfTheSolve) {
   EXPECT_EQ(refused_option([&] { history(0.3, {TangentialLoading::force(1.0)}).validate(plane, adhesive, ten); }),
             "adhesion");
   EXPECT_EQ(refused_option([&] { history(0.3, {TangentialLoading::force(1.0)}).validate(adhesive); }), "adhesion");
-  EXPECT_EQ(refused_option([] { FrictionOptions::refuse_coating(); }), "coating");
+  // A coated body: periodic grids only (its compliance is known per mode).
+  const ElasticPair coated = ElasticPair::coated({1e-6, {2e11, 0.3}, {7e10, 0.33}});
+  const Grid free = Grid::plane(8, 8, 1e-6, 1e-6, Boundary::free);
+  const Grid periodic = Grid::plane(8, 8, 1e-6, 1e-6, Boundary::periodic);
+  EXPECT_EQ(refused_option([&] { FrictionOptions::check_body(free, coated); }), "coating");
+  EXPECT_EQ(refused_option([&] { FrictionOptions::check_body(periodic, coated); }), "accepted");
+  EXPECT_EQ(refused_option([&] { FrictionOptions::check_body(free, ElasticPair::on_rigid({2e11, 0.3})); }), "accepted");
   EXPECT_EQ(refused_option([] { FrictionOptions::refuse_composite_modulus_only(); }), "pair");
 }
 

@@ -8,7 +8,7 @@
 // approach, stick fraction, dissipated energy) within 1e-12 relative: on
 // periodic and free grids, for similar bodies (the pressure solved once)
 // and dissimilar ones (the coupled normal-tangential alternation), with a
-// gross sliding step too. Exits non-zero on a mismatch, printing it.
+// gross sliding step too, and a coated body on a periodic grid. Exits non-zero on a mismatch, printing it.
 #include <fmt/format.h>
 
 #include <Eigen/Core>
@@ -160,6 +160,9 @@ int main(int argc, char** argv) {
       check(grid, ElasticPair(steel, aluminium), false, world);
       check(grid, ElasticPair::similar(steel), true, world);
     }
+    // A coated body (a stiff layer on steel; periodic grids only): coupled.
+    const ElasticPair coated = ElasticPair::coated({1e-5, {4.2e11, 0.22}, steel});
+    check(Grid::plane(32, 26, 4e-6, 5e-6, Boundary::periodic), coated, false, world);
     int total = failures;
     MPI_Allreduce(&failures, &total, 1, MPI_INT, MPI_SUM, world.get());
     failures = total;

@@ -198,10 +198,31 @@ def test_material_refusals():
     surface = sphere(16)
     with pytest.raises(hs.InputError, match=r"friction=0.3 with e_star=.*: E\* only does not fix the tangential"):
         hs.solve(surface, e_star=E_STAR, force=FORCE, friction=MU, tangential_force=1.0)
-    coated = r"the coated half-space \(coating\['thickness'\].*\) cannot be combined with friction"
+    coated = (r"the coated half-space \(coating\['thickness'\].*\) cannot be combined with friction on the "
+              r"16x16 grid \(free\).*periodic grids only")
     with pytest.raises(hs.InputError, match=coated):
         hs.solve(surface, coating=dict(thickness=1e-5, layer_E=E, layer_nu=NU, substrate_E=E, substrate_nu=NU),
                  force=FORCE, friction=MU, tangential_force=1.0)
+
+
+def test_coated_half_space_on_a_periodic_grid():
+    """A coating whose layer is the substrate's material gives the homogeneous body's shear and
+    approach (a rigid body 2); the stresses under its shear are refused, naming why."""
+    surface = sphere(24)
+    coating = dict(thickness=2e-5, layer_E=E, layer_nu=NU, substrate_E=E, substrate_nu=NU)
+    coated = hs.solve(surface, coating=coating, boundary="periodic", force=FORCE, friction=MU,
+                      tangential_force=1.0, threads=1, fft_planning="estimate")
+    plain = hs.solve(surface, E1=E, nu1=NU, E2=math.inf, nu2=NU, boundary="periodic", force=FORCE, friction=MU,
+                     tangential_force=1.0, threads=1, fft_planning="estimate")
+    assert coated.converged and coated.friction["converged"], coated.friction["message"]
+    assert coated.coating is not None
+    scale = MU * np.abs(np.array(plain.pressure)).max()
+    np.testing.assert_allclose(coated.shear_x, plain.shear_x, rtol=0, atol=1e-9 * scale)
+    np.testing.assert_array_equal(coated.stick, plain.stick)
+    assert coated.friction["tangential_approach"][0] == pytest.approx(plain.friction["tangential_approach"][0],
+                                                                      rel=1e-9)
+    with pytest.raises(hs.InputError, match="coated half-space's with shear tractions"):
+        hs.subsurface_stress(coated, [1e-5])
 
 
 def test_stresses_take_the_shear_as_the_program_does(tmp_path, cli):

@@ -9,7 +9,9 @@
 // bodies (Dundurs' beta != 0) it also applies the normal-tangential coupling
 // (kernels/coupling_coefficients.hpp): the tangential displacement of a
 // pressure and the normal displacement of a traction, by the same transforms
-// (coupling_fourier, coupling_rectangle, coupling_strip).
+// (coupling_fourier, coupling_rectangle, coupling_strip). A coated body
+// (ElasticPair::coated) takes its symbols per mode from the pair, on
+// periodic grids only.
 #pragma once
 
 #include <memory>
@@ -26,7 +28,7 @@ namespace halfspace::operators {
 
 class TangentialOperator {
  public:
-  // Throws InputError if the pair is out of range (elastic_pair.hpp).
+  // Throws InputError if the pair is coated and the grid not periodic.
   TangentialOperator(const Grid& grid, const ElasticPair& pair, FftPlanning planning = FftPlanning::estimate);
   // The same on `transforms` (a distributed layout's slab transforms of
   // `grid`): fields hold this process's cells, reductions go over its

@@ -81,12 +81,15 @@ struct FrictionOptions {
   // are solved coupled, coupled_step.hpp).
   void validate(const Grid& grid, const SolverOptions& normal, const Loading& loading) const;
 
-  // The refusals of what the friction slice does not support, named for
-  // front ends that find them before they build a pair: a coated half-space
-  // ("coating": the tangential operator is the homogeneous half-space's), a
-  // material given as E* alone ("pair": E* does not fix the tangential
-  // compliance).
-  static void refuse_coating();
+  // The rule of the bodies on `grid`: a coated half-space
+  // (ElasticPair::coated) is solved on periodic grids only ("coating": its
+  // tangential compliance is known per Fourier mode,
+  // kernels/layered_tangential_fourier.hpp, not as free-grid cell
+  // coefficients). Throws SolverOptionError.
+  static void check_body(const Grid& grid, const ElasticPair& pair);
+  // The refusal of a material given as E* alone ("pair": E* does not fix
+  // the tangential compliance), named for front ends that find it before
+  // they build a pair.
   static void refuse_composite_modulus_only();
 };
 

@@ -46,7 +46,8 @@ struct FrictionalSolveResult {
 };
 
 // Solves the rigid surface `heights` (m, one per cell) pressed under
-// `loading` into the pair's half-space (E* of the pair), then the
+// `loading` into the pair's half-space (ElasticPair::half_space: E* of the
+// pair, or body 1's coating), then the
 // tangential steps of `friction`; coupled for dissimilar bodies (the file
 // comment). Throws SolverOptionError as
 // FrictionOptions::validate(grid, normal, loading) does, InputError
