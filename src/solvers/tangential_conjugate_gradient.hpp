@@ -7,6 +7,8 @@
 // tangential_conjugate_gradient.cpp). Internal to src/solvers.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 #include "tangential_iteration.hpp"
@@ -30,6 +32,12 @@ class ConjugateGradientMethod {
   // file comment); g holds ds from evaluate(), t the last preconditioned
   // gradient z, r the last direction d; g holds C d within the step.
   void step();
+
+  // Whether a slipping cell whose multiplier turned negative leaves its
+  // circle in this step (released to the stick set). Held (false), the
+  // sets change only by clips: the inner loop of an active-set outer loop
+  // on frozen releases (tangential_solver.cpp).
+  void allow_release(bool allowed) { release_ = allowed; }
 
  private:
   // Fields::kind's values.
@@ -73,7 +81,7 @@ class ConjugateGradientMethod {
     const double nx = qx / m;
     const double ny = qy / m;
     const double lambda = -(f_.gx[i] * nx + f_.gy[i] * ny);
-    if (lambda < 0.0) {
+    if (lambda < 0.0 && release_) {
       c.released = true;
       c.nx = nx;
       c.ny = ny;
@@ -82,7 +90,7 @@ class ConjugateGradientMethod {
     c.slip = true;
     c.nx = nx;
     c.ny = ny;
-    c.curvature = lambda / radius;
+    c.curvature = std::max(lambda, 0.0) / radius;
     c.scale = std::sqrt(self_ / (self_ + c.curvature));
     return c;
   }
@@ -108,6 +116,7 @@ class ConjugateGradientMethod {
   const double self_ = op_.self_influence().xx;
   double rho_old_ = 0.0;   // the last z . Pi R g
   bool momentum_ = false;  // the last step was taken: its direction may carry over
+  bool release_ = true;    // allow_release()
 };
 
 }  // namespace halfspace::solvers::tangential

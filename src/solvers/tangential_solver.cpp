@@ -23,6 +23,9 @@
 #include "tangential_iteration.hpp"
 #include "tangential_projected_gradient.hpp"
 
+#ifndef HOLD_PERIOD
+#define HOLD_PERIOD 5
+#endif
 namespace halfspace::solvers {
 namespace {
 
@@ -66,6 +69,9 @@ void TangentialOptions::validate() const {
   }
   if (max_iterations < 1) {
     throw InputError(fmt::format("max_iterations = {} is invalid: must be at least 1", max_iterations));
+  }
+  if (release_period < 1) {
+    throw InputError(fmt::format("release_period = {} is invalid: must be at least 1", release_period));
   }
   if (method != TangentialMethod::conjugate_gradient && method != TangentialMethod::projected_gradient) {
     throw InputError(
@@ -234,6 +240,10 @@ TangentialResult TangentialSolver::solve(std::span<const double> pressure, const
         }
       }
       if (conjugate) {
+        // Releases only every release_period iterations: an active-set
+        // outer loop whose inner conjugate gradients run on frozen releases
+        // (Hintermueller, Ito & Kunisch 2002 update the sets between solves).
+        conjugate_gradient.allow_release(k % options_.release_period == 0);
         conjugate_gradient.step();
       } else {
         projected_gradient.step(inverse_lipschitz);

@@ -8,8 +8,10 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "friction/friction_checks.hpp"
+#include "halfspace/error.hpp"
 #include "halfspace/geometry/builtin_surface.hpp"
 #include "halfspace/solvers/solver_factory.hpp"
 #include "halfspace/solvers/surface_solve.hpp"
@@ -45,12 +47,13 @@ RoughContact rough_contact() {
 }
 
 TangentialResult step(TangentialOperator& op, solvers::TangentialMethod method, const Eigen::ArrayXd& pressure,
-                      const TangentialLoading& loading, const TangentialState& previous) {
+                      const TangentialLoading& loading, const TangentialState& previous, int release_period = 5) {
   solvers::TangentialOptions options;
   options.friction_coefficient = kMu;
   options.tolerance = 1e-10;
   options.max_iterations = 50000;
   options.method = method;
+  options.release_period = release_period;
   TangentialSolver solver(op, options);
   return solver.solve({pressure.data(), op.local_size()}, loading, previous);
 }
@@ -104,6 +107,56 @@ TEST(RoughFriction, ConjugateGradientsMeetCoulombAndAgreeWithProjectedGradients)
   const double further = second.state.approach_x + 0.3 * (first.state.approach_x - second.state.approach_x);
   expect_methods_agree(op, contact.pressure, TangentialLoading::displacement(further, second.state.approach_y),
                        second.state, "displacement");
+}
+
+// Releases held between set updates (the default, release_period 5) and
+// released at every iteration (1, the earlier conjugate gradients) reach
+// the same state: both meet the Coulomb conditions by a fresh product and
+// agree on the traction, the approach and the stick set, on a step from
+// rest and on a reversal, where cells leave the slip set.
+TEST(RoughFriction, HeldReleasesGiveTheSameStepAsReleasingEveryIteration) {
+  const auto [grid, contact] = rough_contact();
+  ASSERT_TRUE(contact.converged());
+  TangentialOperator op(grid, ElasticPair::similar(kSteel));
+  const double limit = kMu * contact.total_force;
+  const TangentialState unloaded = TangentialState::unloaded(grid.size());
+  const Eigen::ArrayXd& pressure = contact.pressure;
+  const TangentialLoading loadings[] = {TangentialLoading::force(0.5 * limit, 0.2 * limit),
+                                        TangentialLoading::force(0.1 * limit, 0.0)};
+  TangentialState previous = unloaded;
+  for (const TangentialLoading& loading : loadings) {
+    const TangentialResult held =
+        step(op, solvers::TangentialMethod::conjugate_gradient, pressure, loading, previous, 5);
+    const TangentialResult every =
+        step(op, solvers::TangentialMethod::conjugate_gradient, pressure, loading, previous, 1);
+    ASSERT_TRUE(held.converged()) << held.message;
+    ASSERT_TRUE(every.converged()) << every.message;
+    const double traction = std::max((held.state.shear_x - every.state.shear_x).abs().maxCoeff(),
+                                     (held.state.shear_y - every.state.shear_y).abs().maxCoeff());
+    const double scale = std::max((held.state.displacement_x - previous.displacement_x).abs().maxCoeff(),
+                                  (held.state.displacement_y - previous.displacement_y).abs().maxCoeff());
+    std::printf("rough %zu^2, releases held / every iteration: %d / %d iterations, traction difference %.2e mu p_max\n",
+                kCells, held.iterations, every.iterations, traction / (kMu * pressure.maxCoeff()));
+    EXPECT_LE(traction, 1e-3 * kMu * pressure.maxCoeff());
+    EXPECT_LE(
+        std::hypot(held.state.approach_x - every.state.approach_x, held.state.approach_y - every.state.approach_y),
+        1e-4 * scale);
+    EXPECT_NEAR(held.stick_fraction, every.stick_fraction, 0.01);
+    testing::expect_coulomb_conditions(op, pressure, kMu, previous, held, 1e-6 * scale, 1e-2);
+    previous = held.state;
+  }
+}
+
+TEST(RoughFriction, ReleasePeriodBelowOneIsRefused) {
+  solvers::TangentialOptions options;
+  options.friction_coefficient = kMu;
+  options.release_period = 0;
+  try {
+    options.validate();
+    ADD_FAILURE() << "release_period 0 accepted";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("release_period"), std::string::npos) << error.what();
+  }
 }
 
 }  // namespace

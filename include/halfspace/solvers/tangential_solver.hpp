@@ -55,11 +55,18 @@ struct TangentialOptions {
   double tolerance = 1e-6;            // of the residual above
   int max_iterations = 10000;
   TangentialMethod method = TangentialMethod::conjugate_gradient;
+  // Conjugate gradients: a slipping cell whose multiplier turned negative is
+  // released to the stick set only every this many iterations and held on
+  // its circle between (1: every iteration). Releasing at every iteration,
+  // cells whose multiplier flips sign from one iteration to the next swing
+  // between the sets and the iteration cycles on large rough contacts
+  // (docs/development-log.md, "releases held"). >= 1.
+  int release_period = 5;
   // Called once per iteration with (iteration, residual); may be empty or stop the solve.
   ProgressCallback progress;
 
   // Throws InputError naming the option unless mu is finite and >= 0,
-  // 0 < tolerance < 1 and max_iterations >= 1.
+  // 0 < tolerance < 1, max_iterations >= 1 and release_period >= 1.
   void validate() const;
 };
 
