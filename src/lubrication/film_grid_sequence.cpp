@@ -19,11 +19,13 @@ namespace {
 constexpr std::size_t kSequencingMinCells = 8;
 
 // The film on the grid of twice the spacing, interpolated onto op's grid as
-// a Newton start, or nothing if there is no coarser grid or its film did not
-// converge. Adds the coarse work to `record`.
+// a Newton start, or nothing if there is no coarser grid, its film did not
+// converge and `converged_only`, or its fields are not finite. Adds the
+// coarse work to `record`, and a failed coarse film's message.
 std::optional<ElasticFilm> sequenced_start(InfluenceOperator& op, const Eigen::ArrayXd& gap,
                                            const FlowConditions& conditions, const LubricantLaws& laws,
-                                           const ElasticFilmOptions& options, ElasticFilm& record) {
+                                           const ElasticFilmOptions& options, bool converged_only,
+                                           ElasticFilm& record) {
   const Grid& grid = op.grid();
   const std::optional<Grid> coarse = solvers::coarser_grid(grid, kSequencingMinCells);
   if (!coarse) return std::nullopt;
@@ -38,7 +40,11 @@ std::optional<ElasticFilm> sequenced_start(InfluenceOperator& op, const Eigen::A
   if (!film.converged()) record.message = film.message;
   record.coarse_iterations = film.iterations + film.coarse_iterations;
   record.coarse_krylov_iterations = film.krylov_iterations + film.coarse_krylov_iterations;
-  if (!film.converged()) return std::nullopt;
+  if (converged_only && !film.converged()) return std::nullopt;
+  if (film.pressure.size() != coarse_gap.size() || !film.pressure.allFinite() ||
+      film.fluid_fraction.size() != coarse_gap.size() || !film.fluid_fraction.allFinite()) {
+    return std::nullopt;
+  }
   ElasticFilm start;
   start.pressure.resize(static_cast<Eigen::Index>(grid.size()));
   start.fluid_fraction.resize(start.pressure.size());
@@ -69,20 +75,14 @@ ElasticFilm solve_elastic_film(InfluenceOperator& op, const Eigen::ArrayXd& gap,
   // grid the fine solve cannot hold.
   detail::require_film_memory(grid, options);
   ElasticFilm record;
-  const std::optional<Grid> coarse = solvers::coarser_grid(grid, kSequencingMinCells);
-  const std::optional<ElasticFilm> coarse_start = sequenced_start(op, gap, conditions, laws, options, record);
+  // Up to kMaxColdRestartNodes a failed coarse film is dropped for the cold
+  // start; above, the cold start cannot be expected to converge, and a
+  // coarse film short of its tolerance is still the best start there is.
   const bool cold_allowed = grid.size() <= kMaxColdRestartNodes;
-  ElasticFilm result;
-  if (coarse && !coarse_start && !cold_allowed) {
-    // The coarse film failed, and the cold start cannot be expected to
-    // converge on this grid: reported, not tried.
-    result.message = fmt::format(
-        "the EHL film on the coarser {} grid that starts the {} solve did not converge: {}; no cold restart above {} "
-        "nodes",
-        coarse->shape_string(), grid.shape_string(), record.message, kMaxColdRestartNodes);
-  } else {
-    result = detail::solve_film_newton(op, gap, conditions, laws, options, coarse_start ? &*coarse_start : nullptr);
-  }
+  const std::optional<ElasticFilm> coarse_start =
+      sequenced_start(op, gap, conditions, laws, options, cold_allowed, record);
+  ElasticFilm result =
+      detail::solve_film_newton(op, gap, conditions, laws, options, coarse_start ? &*coarse_start : nullptr);
   if (coarse_start && !result.converged() && cold_allowed) {
     // A start that failed: the cold start's dry contact and start films.
     const int sequenced_steps = result.iterations;
@@ -93,7 +93,8 @@ ElasticFilm solve_elastic_film(InfluenceOperator& op, const Eigen::ArrayXd& gap,
     result.sequencing_fell_back = true;
   } else if (coarse_start && !result.converged()) {
     result.message +=
-        fmt::format(" (from the coarser grids' start; no cold restart above {} nodes)", kMaxColdRestartNodes);
+        fmt::format(" (started from the coarser grids' film{}{}; no cold restart above {} nodes)",
+                    record.message.empty() ? "" : ", which did not converge: ", record.message, kMaxColdRestartNodes);
   }
   result.coarse_levels = record.coarse_levels;
   result.coarse_iterations = record.coarse_iterations;

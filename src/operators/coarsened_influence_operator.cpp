@@ -74,7 +74,8 @@ CoarsenedInfluenceOperator::CoarsenedInfluenceOperator(InfluenceOperator& fine, 
   const double inverse_n = 1.0 / static_cast<double>(padded_->padded_size());
   const std::span<const std::complex<double>> spectrum = padded_->spectrum();
   for (std::size_t r = 0; r < kernel_.stored_rows(); ++r) {
-    for (std::size_t c = 0; c < kernel_.cols(); ++c) kernel_.at(r, c) = spectrum[r * kernel_.cols() + c].real() * inverse_n;
+    for (std::size_t c = 0; c < kernel_.cols(); ++c)
+      kernel_.at(r, c) = spectrum[r * kernel_.cols() + c].real() * inverse_n;
   }
 }
 

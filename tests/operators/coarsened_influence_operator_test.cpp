@@ -2,6 +2,8 @@
 // (CoarsenedInfluenceOperator) against R K P applied through the fine
 // operator (constant prolongation, the fine product, block average), on
 // free and periodic, 1D and 2D, homogeneous and coated half-spaces.
+#include "halfspace/operators/coarsened_influence_operator.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cstddef>
@@ -10,7 +12,6 @@
 
 #include "halfspace/grid.hpp"
 #include "halfspace/layered_material.hpp"
-#include "halfspace/operators/coarsened_influence_operator.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
 #include "halfspace/solvers/grid_transfer.hpp"
 #include "operator_test_support.hpp"
