@@ -52,10 +52,11 @@ int main(int argc, char** argv) {
   getrusage(RUSAGE_SELF, &usage);
   const double peak = static_cast<double>(usage.ru_maxrss) * 1024.0;
   fmt::print(
-      "N {} solve {} r {} cells/a {:.1f}: {} coarse levels ({} steps, {} GMRES its{}), {} steps, {} GMRES its ({} "
-      "most per step), {:.2f} s, {:.0f} B/node, Hc/HD {:.6f} Hmin/HD {:.6f}, h0 {:.9e} {}\n",
+      "N {} solve {} r {} cells/a {:.1f}: {} coarse levels ({} steps, {} GMRES its{}), {} steps ({} tight retries), {} "
+      "GMRES its "
+      "({} most per step), {:.2f} s, {:.0f} B/node, Hc/HD {:.6f} Hmin/HD {:.6f}, h0 {:.9e} {}\n",
       n, to_string(solve), neighbourhood, a / dx, f.coarse_levels, f.coarse_iterations, f.coarse_krylov_iterations,
-      f.sequencing_fell_back ? ", fell back to cold" : "", f.iterations, f.krylov_iterations,
+      f.sequencing_fell_back ? ", fell back to cold" : "", f.iterations, f.tight_retries, f.krylov_iterations,
       f.max_krylov_iterations_per_step, f.wall_seconds, peak / static_cast<double>(n * n),
       f.central_film_thickness / kRadius / hd_central, f.minimum_film_thickness / kRadius / hd_minimum, f.offset,
       f.converged() ? "converged" : f.message);

@@ -180,6 +180,23 @@ double elastic_film_residual(const Grid& grid, const FlowConditions& conditions,
   return largest / (couette > 0.0 ? couette : 1.0);
 }
 
+detail::FilmKrylovSettings detail::film_krylov_settings(const ElasticFilmOptions& options) {
+  return {.restart = options.krylov_restart,
+          .max_iterations = options.krylov_max_iterations,
+          .tolerance = options.krylov_tolerance,
+          .neighbourhood = options.preconditioner_neighbourhood};
+}
+
+void detail::require_film_memory(const Grid& grid, const ElasticFilmOptions& options) {
+  const double needed = detail::film_krylov_memory_estimate(grid.size(), film_krylov_settings(options));
+  const auto available = available_memory();
+  if (available && needed > available->bytes) {
+    throw InputError(fmt::format("the EHL solve on the {} grid needs about {}, more than the {} available ({})",
+                                 grid.shape_string(), format_bytes(needed), format_bytes(available->bytes),
+                                 available->source));
+  }
+}
+
 ElasticFilm detail::solve_film_newton(InfluenceOperator& op, const Eigen::ArrayXd& gap,
                                       const FlowConditions& conditions, const LubricantLaws& laws,
                                       const ElasticFilmOptions& options, const ElasticFilm* start) {
@@ -197,19 +214,8 @@ ElasticFilm detail::solve_film_newton(InfluenceOperator& op, const Eigen::ArrayX
         "the {} grid has {} nodes: the EHL solver's dense linear solve allows at most {} (use the gmres solve)",
         grid.shape_string(), n, kMaxElasticFilmNodes));
   }
-  const detail::FilmKrylovSettings krylov_settings{.restart = options.krylov_restart,
-                                                   .max_iterations = options.krylov_max_iterations,
-                                                   .tolerance = options.krylov_tolerance,
-                                                   .neighbourhood = options.preconditioner_neighbourhood};
-  if (krylov) {
-    const double needed = detail::film_krylov_memory_estimate(n, krylov_settings);
-    const auto available = available_memory();
-    if (available && needed > available->bytes) {
-      throw InputError(fmt::format("the EHL solve on the {} grid needs about {}, more than the {} available ({})",
-                                   grid.shape_string(), format_bytes(needed), format_bytes(available->bytes),
-                                   available->source));
-    }
-  }
+  const detail::FilmKrylovSettings krylov_settings = detail::film_krylov_settings(options);
+  if (krylov) detail::require_film_memory(grid, options);
   if (static_cast<std::size_t>(gap.size()) != n || !gap.allFinite()) {
     throw InputError(fmt::format("EHL gap has {} values, the {} grid has {} cells; every value must be finite",
                                  gap.size(), grid.shape_string(), n));
@@ -419,61 +425,73 @@ ElasticFilm detail::solve_film_newton(InfluenceOperator& op, const Eigen::ArrayX
             steps_before + iteration, current.mass, options.tolerance, current.load, options.load_tolerance);
         break;
       }
-      // The generalised Jacobian's branch per node: full where s >= 0,
-      // cavitated below (branch_consistent_step settles the nodes at s = 0).
-      for (std::size_t j = 0; j < n; ++j) branch_full[j] = x.s[static_cast<Eigen::Index>(j)] >= 0.0 ? 1 : 0;
-      if (krylov) {
-        // The linearisation does not depend on the branches: once, then
-        // one GMRES solve per branch pass.
-        measure(x, residual, true);
-        int step_iterations = 0;
-        std::string krylov_message;
-        // An inexact Newton step (Dembo, Eisenstat & Steihaug 1982): GMRES
-        // to a relative residual of the order of the Newton residual keeps
-        // the quadratic convergence near the solution and spares
-        // iterations far from it.
-        const double forcing = std::min(kLargestForcing, current.norm);
-        const auto gmres_solve = [&] {
-          const detail::FilmKrylovOutcome outcome =
-              krylov_solver->solve(rows, branch_full, pressure_scale, mass_scale, area / w, forcing, residual, step);
-          step_iterations += outcome.iterations;
-          krylov_message = outcome.message;
-          return outcome.converged;
-        };
-        const bool solved = detail::branch_consistent_step_with(gmres_solve, topology, x.s, step, branch_full);
-        result.krylov_iterations += step_iterations;
-        result.max_krylov_iterations_per_step = std::max(result.max_krylov_iterations_per_step, step_iterations);
-        if (!solved) {
-          result.status = FilmStatus::failure;
-          result.message = fmt::format("Newton step {}: {}", iteration + 1, krylov_message);
-          break;
-        }
-      } else if (!detail::branch_consistent_step([&] { measure(x, residual, true); }, topology, x.s, jacobian_t,
-                                                 residual, lu, step, branch_full)) {
-        result.status = FilmStatus::failure;
-        result.message = fmt::format("the EHL Newton step {} is singular", iteration + 1);
-        break;
-      }
-      // A trust region on the step: no pressure changes by more than the
-      // pressure scale, h0 by no more than the thinnest film. Then
-      // backtracking on the scaled residual's norm.
-      const double largest_change = step.head(ni).cwiseAbs().maxCoeff();
-      const double film_change = std::abs(step[ni]) / x.film.minCoeff();
-      double lambda = std::min(
-          {1.0, kLargestStep / std::max(largest_change, 1e-300), kLargestStep / std::max(film_change, 1e-300)});
-      bool accepted = false;
+      // An inexact Newton step (Dembo, Eisenstat & Steihaug 1982): GMRES to
+      // a relative residual of the order of the Newton residual keeps the
+      // quadratic convergence near the solution and spares iterations far
+      // from it. When no step along that direction lowers the residual,
+      // the direction is solved again to krylov_tolerance before the
+      // iteration gives up: near the solution the loose direction's error
+      // can outweigh the descent it promises.
+      const double loose_forcing = std::min(kLargestForcing, current.norm);
+      bool accepted = false, failed = false;
       Measure tried;
-      for (int halving = 0; halving <= 30; ++halving, lambda *= 0.5) {
-        trial.s = x.s + lambda * step.head(ni).array();
-        trial.offset = x.offset + lambda * step[ni];
-        if (!evaluate(trial)) continue;
-        tried = measure(trial, trial_residual, false);
-        if (std::isfinite(tried.norm) && tried.norm <= (1.0 - 1e-4 * lambda) * current.norm) {
-          accepted = true;
+      for (const bool tight : {false, true}) {
+        if (tight && !(krylov && loose_forcing > options.krylov_tolerance)) break;
+        if (tight) ++result.tight_retries;
+        // The generalised Jacobian's branch per node: full where s >= 0,
+        // cavitated below (branch_consistent_step settles the nodes at s = 0).
+        for (std::size_t j = 0; j < n; ++j) branch_full[j] = x.s[static_cast<Eigen::Index>(j)] >= 0.0 ? 1 : 0;
+        if (krylov) {
+          // The linearisation does not depend on the branches: once, then
+          // one GMRES solve per branch pass.
+          measure(x, residual, true);
+          int step_iterations = 0;
+          std::string krylov_message;
+          const double forcing = tight ? 0.0 : loose_forcing;
+          const auto gmres_solve = [&] {
+            const detail::FilmKrylovOutcome outcome =
+                krylov_solver->solve(rows, branch_full, pressure_scale, mass_scale, area / w, forcing, residual, step);
+            step_iterations += outcome.iterations;
+            krylov_message = outcome.message;
+            return outcome.converged;
+          };
+          const bool solved = detail::branch_consistent_step_with(gmres_solve, topology, x.s, step, branch_full);
+          result.krylov_iterations += step_iterations;
+          result.max_krylov_iterations_per_step = std::max(result.max_krylov_iterations_per_step, step_iterations);
+          if (!solved) {
+            result.status = FilmStatus::failure;
+            result.message = fmt::format("Newton step {}: {}", iteration + 1, krylov_message);
+            failed = true;
+            break;
+          }
+        } else if (!detail::branch_consistent_step([&] { measure(x, residual, true); }, topology, x.s, jacobian_t,
+                                                   residual, lu, step, branch_full)) {
+          result.status = FilmStatus::failure;
+          result.message = fmt::format("the EHL Newton step {} is singular", iteration + 1);
+          failed = true;
           break;
         }
-        ++result.line_search_halvings;
+        // A trust region on the step: no pressure changes by more than the
+        // pressure scale, h0 by no more than the thinnest film. Then
+        // backtracking on the scaled residual's norm.
+        const double largest_change = step.head(ni).cwiseAbs().maxCoeff();
+        const double film_change = std::abs(step[ni]) / x.film.minCoeff();
+        double lambda = std::min(
+            {1.0, kLargestStep / std::max(largest_change, 1e-300), kLargestStep / std::max(film_change, 1e-300)});
+        for (int halving = 0; halving <= 30; ++halving, lambda *= 0.5) {
+          trial.s = x.s + lambda * step.head(ni).array();
+          trial.offset = x.offset + lambda * step[ni];
+          if (!evaluate(trial)) continue;
+          tried = measure(trial, trial_residual, false);
+          if (std::isfinite(tried.norm) && tried.norm <= (1.0 - 1e-4 * lambda) * current.norm) {
+            accepted = true;
+            break;
+          }
+          ++result.line_search_halvings;
+        }
+        if (accepted) break;
       }
+      if (failed) break;
       if (!accepted) {
         result.status = FilmStatus::failure;
         result.message = fmt::format(

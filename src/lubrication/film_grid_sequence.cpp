@@ -1,34 +1,15 @@
-// The coarse operator and the interpolation of grid sequencing
-// (film_grid_sequence.hpp).
+// Grid sequencing of the EHL film (film_grid_sequence.hpp).
 #include "film_grid_sequence.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
-#include <cassert>
 #include <chrono>
 #include <cmath>
 #include <optional>
 
+#include "halfspace/operators/coarsened_influence_operator.hpp"
 #include "halfspace/solvers/grid_transfer.hpp"
-
-namespace halfspace::lubrication::detail {
-
-CoarsenedInfluenceOperator::CoarsenedInfluenceOperator(InfluenceOperator& fine, const Grid& coarse)
-    : fine_(fine), coarse_(coarse), fine_pressure_(fine.grid().size()), fine_displacement_(fine.grid().size()) {
-  // A unit pressure on one coarse cell: its own displacement is K_ii.
-  std::vector<double> unit(coarse_.size(), 0.0), column(coarse_.size(), 0.0);
-  unit[0] = 1.0;
-  apply(unit, column);
-  self_influence_ = column[0];
-}
-
-void CoarsenedInfluenceOperator::apply(std::span<const double> pressure, std::span<double> displacement) {
-  const Grid& fine_grid = fine_.grid();
-  solvers::prolong_constant(fine_grid, pressure, fine_pressure_);
-  fine_.apply(fine_pressure_, fine_displacement_);
-  solvers::restrict_by_average(fine_grid, fine_displacement_, displacement);
-}
-
-}  // namespace halfspace::lubrication::detail
 
 namespace halfspace::lubrication {
 
@@ -38,15 +19,17 @@ namespace {
 constexpr std::size_t kSequencingMinCells = 8;
 
 // The film on the grid of twice the spacing, interpolated onto op's grid as
-// a Newton start, or nothing if there is no coarser grid or its film did not
-// converge. Adds the coarse work to `record`.
+// a Newton start, or nothing if there is no coarser grid, its film did not
+// converge and `converged_only`, or its fields are not finite. Adds the
+// coarse work to `record`, and a failed coarse film's message.
 std::optional<ElasticFilm> sequenced_start(InfluenceOperator& op, const Eigen::ArrayXd& gap,
                                            const FlowConditions& conditions, const LubricantLaws& laws,
-                                           const ElasticFilmOptions& options, ElasticFilm& record) {
+                                           const ElasticFilmOptions& options, bool converged_only,
+                                           ElasticFilm& record) {
   const Grid& grid = op.grid();
   const std::optional<Grid> coarse = solvers::coarser_grid(grid, kSequencingMinCells);
   if (!coarse) return std::nullopt;
-  detail::CoarsenedInfluenceOperator coarse_op(op, *coarse);
+  CoarsenedInfluenceOperator coarse_op(op, *coarse);
   Eigen::ArrayXd coarse_gap(static_cast<Eigen::Index>(coarse->size()));
   solvers::restrict_by_average(grid, {gap.data(), grid.size()}, {coarse_gap.data(), coarse->size()});
   ElasticFilmOptions coarse_options = options;
@@ -54,9 +37,14 @@ std::optional<ElasticFilm> sequenced_start(InfluenceOperator& op, const Eigen::A
   coarse_options.load_tolerance = std::max(options.load_tolerance, kSequencingCoarseTolerance);
   const ElasticFilm film = solve_elastic_film(coarse_op, coarse_gap, conditions, laws, coarse_options);
   record.coarse_levels = 1 + film.coarse_levels;
+  if (!film.converged()) record.message = film.message;
   record.coarse_iterations = film.iterations + film.coarse_iterations;
   record.coarse_krylov_iterations = film.krylov_iterations + film.coarse_krylov_iterations;
-  if (!film.converged()) return std::nullopt;
+  if (converged_only && !film.converged()) return std::nullopt;
+  if (film.pressure.size() != coarse_gap.size() || !film.pressure.allFinite() ||
+      film.fluid_fraction.size() != coarse_gap.size() || !film.fluid_fraction.allFinite()) {
+    return std::nullopt;
+  }
   ElasticFilm start;
   start.pressure.resize(static_cast<Eigen::Index>(grid.size()));
   start.fluid_fraction.resize(start.pressure.size());
@@ -83,11 +71,19 @@ ElasticFilm solve_elastic_film(InfluenceOperator& op, const Eigen::ArrayXd& gap,
                         grid.size() > kAutomaticKrylovNodes && op.local_size() == grid.size() &&
                         static_cast<std::size_t>(gap.size()) == grid.size() && gap.allFinite();
   if (!sequence) return detail::solve_film_newton(op, gap, conditions, laws, options, start);
+  // The fine grid's memory first: the coarse grids would take minutes on a
+  // grid the fine solve cannot hold.
+  detail::require_film_memory(grid, options);
   ElasticFilm record;
-  const std::optional<ElasticFilm> coarse_start = sequenced_start(op, gap, conditions, laws, options, record);
+  // Up to kMaxColdRestartNodes a failed coarse film is dropped for the cold
+  // start; above, the cold start cannot be expected to converge, and a
+  // coarse film short of its tolerance is still the best start there is.
+  const bool cold_allowed = grid.size() <= kMaxColdRestartNodes;
+  const std::optional<ElasticFilm> coarse_start =
+      sequenced_start(op, gap, conditions, laws, options, cold_allowed, record);
   ElasticFilm result =
       detail::solve_film_newton(op, gap, conditions, laws, options, coarse_start ? &*coarse_start : nullptr);
-  if (coarse_start && !result.converged()) {
+  if (coarse_start && !result.converged() && cold_allowed) {
     // A start that failed: the cold start's dry contact and start films.
     const int sequenced_steps = result.iterations;
     const int sequenced_krylov = result.krylov_iterations;
@@ -95,6 +91,10 @@ ElasticFilm solve_elastic_film(InfluenceOperator& op, const Eigen::ArrayXd& gap,
     result.iterations += sequenced_steps;
     result.krylov_iterations += sequenced_krylov;
     result.sequencing_fell_back = true;
+  } else if (coarse_start && !result.converged()) {
+    result.message +=
+        fmt::format(" (started from the coarser grids' film{}{}; no cold restart above {} nodes)",
+                    record.message.empty() ? "" : ", which did not converge: ", record.message, kMaxColdRestartNodes);
   }
   result.coarse_levels = record.coarse_levels;
   result.coarse_iterations = record.coarse_iterations;

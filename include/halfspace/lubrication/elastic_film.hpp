@@ -50,6 +50,13 @@ inline constexpr std::size_t kAutomaticKrylovNodes = 1024;
 // the fine one by the discretisation error, far above this.
 inline constexpr double kSequencingCoarseTolerance = 1e-6;
 
+// Nodes up to which a sequenced solve whose coarse start failed, or that
+// failed from it, starts again cold (from the dry contact). Above, the cold
+// start does not converge in the default Newton steps (a 512^2 point
+// contact at 100 cells per Hertz radius: 100 steps, ten minutes; see
+// docs/development-log.md) and the failure is reported instead.
+inline constexpr std::size_t kMaxColdRestartNodes = 256 * 256;
+
 // The linear solve of each Newton step: the dense LU (K formed), restarted
 // GMRES matrix-free with a sparse preconditioner, or the dense one up to
 // kAutomaticKrylovNodes nodes and GMRES above.
@@ -93,7 +100,9 @@ struct ElasticFilmOptions {
   // is first solved on the grid of twice the spacing (recursively, the
   // coarse influence operator seen through this one) to the coarse
   // tolerance max(tolerance, kSequencingCoarseTolerance), and interpolated
-  // as the Newton start; if that start fails, the solve starts again cold.
+  // as the Newton start; if that start fails, the solve starts again cold
+  // on grids of at most kMaxColdRestartNodes nodes and reports the failure
+  // on larger ones.
   bool grid_sequencing = true;
 
   // Throws OptionError naming the option unless load > 0 and finite, 0 <
@@ -119,6 +128,10 @@ struct ElasticFilm {
   double max_pressure = 0.0;
   int iterations = 0;  // Newton steps
   int line_search_halvings = 0;
+  // Newton steps whose GMRES direction was solved again to
+  // krylov_tolerance because no step along the inexact one lowered the
+  // residual.
+  int tight_retries = 0;
   // The GMRES path: whether it was taken, its iterations in all and the
   // most in one Newton step's linear solve (all branch passes).
   bool used_krylov = false;
@@ -127,7 +140,8 @@ struct ElasticFilm {
   // Grid sequencing: the coarser grids solved for the start, their Newton
   // steps and GMRES iterations in all (not in iterations and
   // krylov_iterations), and whether the sequenced start failed and the
-  // solve started again cold (iterations then counts both).
+  // solve started again cold (iterations then counts both;
+  // kMaxColdRestartNodes).
   int coarse_levels = 0;
   int coarse_iterations = 0;
   int coarse_krylov_iterations = 0;

@@ -1,0 +1,52 @@
+// The influence operator of the grid of twice the spacing, for grid
+// sequencing and other coarse-grid work on a solver that only holds a fine
+// operator.
+#pragma once
+
+#include <memory>
+#include <span>
+
+#include "halfspace/fft/even_symbol.hpp"
+#include "halfspace/fft/padded_real_fft.hpp"
+#include "halfspace/fft/real_fft.hpp"
+#include "halfspace/grid.hpp"
+#include "halfspace/operators/influence_operator.hpp"
+
+namespace halfspace::operators {
+
+// K on the grid of twice the spacing as seen through a finer operator:
+// R K P with P the piecewise-constant prolongation of a coarse pressure
+// onto the 2 (1D) or 2 x 2 (2D) fine cells of each coarse cell and R the
+// block average of the displacement. Translation invariant and even in
+// each axis' offset when K is (as every half-space kernel, free or
+// periodic, homogeneous or coated, is), so it is a convolution on the
+// coarse grid: its coefficients are read off one fine product (a unit
+// pressure on one coarse cell) and each product then costs an FFT of the
+// coarse grid (zero-padded on free grids), not of the fine one.
+class CoarsenedInfluenceOperator final : public InfluenceOperator {
+ public:
+  // `coarse` must be solvers::coarser_grid(fine.grid(), ...). `fine` is
+  // used only here (one product). Throws InputError if `fine` is
+  // distributed.
+  CoarsenedInfluenceOperator(InfluenceOperator& fine, const Grid& coarse);
+  ~CoarsenedInfluenceOperator() override;
+  CoarsenedInfluenceOperator(const CoarsenedInfluenceOperator&) = delete;
+  CoarsenedInfluenceOperator& operator=(const CoarsenedInfluenceOperator&) = delete;
+
+  const Grid& grid() const override { return coarse_; }
+  void apply(std::span<const double> pressure, std::span<double> displacement) override;
+  double self_influence() const override { return self_influence_; }
+
+ private:
+  Grid coarse_;
+  double self_influence_ = 0.0;
+  std::unique_ptr<PaddedRealFft> padded_;  // free grids
+  std::unique_ptr<RealFft> transform_;     // periodic grids
+  EvenSymbol kernel_;                      // the coefficients' spectrum, FFTW's 1/N folded in
+};
+
+}  // namespace halfspace::operators
+
+namespace halfspace {
+using operators::CoarsenedInfluenceOperator;
+}  // namespace halfspace
