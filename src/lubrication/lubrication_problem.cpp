@@ -47,7 +47,8 @@ class Rules {
             {"substrate_nu", o_.substrate_nu.has_value()}};
   }
   Presence pair() const {
-    return {{"E1", o_.e1.has_value()}, {"nu1", o_.nu1.has_value()}, {"E2", o_.e2.has_value()}, {"nu2", o_.nu2.has_value()}};
+    return {
+        {"E1", o_.e1.has_value()}, {"nu1", o_.nu1.has_value()}, {"E2", o_.e2.has_value()}, {"nu2", o_.nu2.has_value()}};
   }
   // A library parse of a named option's text, its error prefixed by the
   // option and its value.
@@ -78,10 +79,10 @@ class Rules {
 void Rules::control() const {
   const int controls = o_.separation.has_value() + o_.force.has_value() + o_.offset.has_value();
   if (controls != 1) {
-    throw InputError(o_.mixed ? fmt::format("give exactly one of {} and {}", s_.describe("force", "N"),
-                                            s_.describe("offset", "M"))
-                              : fmt::format("give exactly one of {} and {}", s_.describe("separation", "M"),
-                                            s_.describe("force", "N")));
+    throw InputError(
+        o_.mixed
+            ? fmt::format("give exactly one of {} and {}", s_.describe("force", "N"), s_.describe("offset", "M"))
+            : fmt::format("give exactly one of {} and {}", s_.describe("separation", "M"), s_.describe("force", "N")));
   }
   if (!o_.mixed && (o_.offset || o_.contact_friction || o_.boundary_film || o_.speeds)) {
     throw InputError(fmt::format("{} belong to the mixed film: add {}",
@@ -96,9 +97,9 @@ std::optional<LayeredMaterial> Rules::coating() const {
   const std::vector<std::string> present = given(constants);
   if (present.empty()) return std::nullopt;
   if (present.size() < 5) {
-    throw InputError(fmt::format("incomplete coated body: missing {} (give all of {})",
-                                 fmt::join(given(constants, false), ", "),
-                                 fmt::join(names({"layer_thickness", "layer_E", "layer_nu", "substrate_E", "substrate_nu"}), ", ")));
+    throw InputError(
+        fmt::format("incomplete coated body: missing {} (give all of {})", fmt::join(given(constants, false), ", "),
+                    fmt::join(names({"layer_thickness", "layer_E", "layer_nu", "substrate_E", "substrate_nu"}), ", ")));
   }
   std::vector<std::string> material = given(pair());
   if (o_.e_star) material.insert(material.begin(), name("e_star"));
@@ -120,7 +121,8 @@ std::optional<double> Rules::body() const {
   const std::vector<std::string> present = given(constants);
   if (o_.e_star && !present.empty()) {
     throw InputError(fmt::format("{} cannot be combined with {}: give either {} or all of {}", name("e_star"),
-                                 fmt::join(present, ", "), name("e_star"), fmt::join(names({"E1", "nu1", "E2", "nu2"}), ", ")));
+                                 fmt::join(present, ", "), name("e_star"),
+                                 fmt::join(names({"E1", "nu1", "E2", "nu2"}), ", ")));
   }
   try {
     if (o_.e_star) return checked_composite_modulus(*o_.e_star);
@@ -147,9 +149,10 @@ FilmKind Rules::kind(bool elastic, bool coated) const {
   if (o_.mixed) {
     if (!elastic) throw InputError(fmt::format("{} needs an elastic body: give {}", name("mixed"), bodies));
     if (coated) {
-      throw InputError(fmt::format("{} takes a homogeneous body: a coating is not supported by the mixed film yet "
-                                   "(drop {})",
-                                   name("mixed"), fmt::join(given(layers()), ", ")));
+      throw InputError(
+          fmt::format("{} takes a homogeneous body: a coating is not supported by the mixed film yet "
+                      "(drop {})",
+                      name("mixed"), fmt::join(given(layers()), ", ")));
     }
   }
   if (!elastic) {
@@ -160,12 +163,10 @@ FilmKind Rules::kind(bool elastic, bool coated) const {
                                                     {"couette_scheme", o_.couette_scheme.has_value()},
                                                     {"boundary", o_.boundary.has_value()}});
     if (!present.empty()) {
-      throw InputError(fmt::format("{} need an elastic film: give {} (or {}, or a coated body, {})",
-                                   fmt::join(present, ", "), name("e_star"),
-                                   fmt::join(names({"E1", "nu1", "E2", "nu2"}), ", "),
-                                   fmt::join(names({"layer_thickness", "layer_E", "layer_nu", "substrate_E",
-                                                    "substrate_nu"}),
-                                             ", ")));
+      throw InputError(fmt::format(
+          "{} need an elastic film: give {} (or {}, or a coated body, {})", fmt::join(present, ", "), name("e_star"),
+          fmt::join(names({"E1", "nu1", "E2", "nu2"}), ", "),
+          fmt::join(names({"layer_thickness", "layer_E", "layer_nu", "substrate_E", "substrate_nu"}), ", ")));
     }
     return FilmKind::rigid;
   }
@@ -175,8 +176,8 @@ FilmKind Rules::kind(bool elastic, bool coated) const {
                                    s_.describe("force", "N"), s_.describe("offset", "M")));
     }
     if (o_.speeds && !o_.force) {
-      throw InputError(fmt::format("a Stribeck sweep ({}) is load controlled: pass {}", name("speeds"),
-                                   s_.describe("force", "N")));
+      throw InputError(
+          fmt::format("a Stribeck sweep ({}) is load controlled: pass {}", name("speeds"), s_.describe("force", "N")));
     }
     return FilmKind::mixed;
   }
@@ -223,9 +224,8 @@ LubricantLaws Rules::laws() const {
   laws.piezoviscosity = o_.piezoviscosity ? parsed("piezoviscosity", *o_.piezoviscosity, parse_piezoviscosity)
                         : laws.pressure_viscosity > 0.0 ? Piezoviscosity::barus
                                                         : Piezoviscosity::none;
-  laws.compressibility =
-      o_.compressibility ? parsed("compressibility", *o_.compressibility, parse_compressibility)
-                         : Compressibility::dowson_higginson;
+  laws.compressibility = o_.compressibility ? parsed("compressibility", *o_.compressibility, parse_compressibility)
+                                            : Compressibility::dowson_higginson;
   return laws;
 }
 

@@ -68,8 +68,13 @@ TEST(LubricationProblemTest, EachRuleIsRefusedNamingTheOptionInBothSpellings) {
   const std::vector<Rule> rules{
       {"two controls", [](auto& o) { o.force = 1.0; }, rigid_film, "give exactly one of separation=M and force=N",
        "give exactly one of --separation M and --force N"},
-      {"no control", [](auto& o) { o.offset = 1e-7; o.force.reset(); o.offset.reset(); }, mixed_film,
-       "give exactly one of force=N and offset=M", "give exactly one of --force N and --offset M"},
+      {"no control",
+       [](auto& o) {
+         o.offset = 1e-7;
+         o.force.reset();
+         o.offset.reset();
+       },
+       mixed_film, "give exactly one of force=N and offset=M", "give exactly one of --force N and --offset M"},
       {"mixed extras", [](auto& o) { o.contact_friction = 0.1; }, rigid_film,
        "offset, contact_friction, boundary_film, speeds belong to the mixed film: add mixed",
        "--offset, --contact_friction, --boundary_film, --speeds belong to the mixed film: add --mixed"},
@@ -78,15 +83,27 @@ TEST(LubricationProblemTest, EachRuleIsRefusedNamingTheOptionInBothSpellings) {
       {"no entrainment", [](auto& o) { o.entrainment_velocity.reset(); }, rigid_film,
        "no entrainment velocity given: pass entrainment_velocity=UX[,UY]",
        "no entrainment velocity given: pass --entrainment_velocity UX[,UY]"},
-      {"three velocity components", [](auto& o) { o.sliding_velocity = std::vector<double>{1, 2, 3}; }, rigid_film,
-       "sliding_velocity has 3 values", "--sliding_velocity has 3 values"},
+      {"three velocity components",
+       [](auto& o) {
+         o.sliding_velocity = std::vector<double>{1, 2, 3};
+       },
+       rigid_film, "sliding_velocity has 3 values", "--sliding_velocity has 3 values"},
       {"E* and E1", [](auto& o) { o.e1 = 2e11; }, elastic_film, "e_star cannot be combined with E1",
        "--e_star cannot be combined with --E1"},
-      {"incomplete pair", [](auto& o) { o.e_star.reset(); o.e1 = 2e11; o.nu1 = 0.3; }, elastic_film,
-       "incomplete material: missing E2, nu2", "incomplete material: missing --E2, --nu2"},
+      {"incomplete pair",
+       [](auto& o) {
+         o.e_star.reset();
+         o.e1 = 2e11;
+         o.nu1 = 0.3;
+       },
+       elastic_film, "incomplete material: missing E2, nu2", "incomplete material: missing --E2, --nu2"},
       {"bad E*", [](auto& o) { o.e_star = -1.0; }, elastic_film, "e_star=-1 Pa: ", "--e_star -1 Pa: "},
-      {"incomplete coating", [](auto& o) { o.e_star.reset(); o.layer_thickness = 1e-5; }, elastic_film,
-       "incomplete coated body: missing layer_E", "incomplete coated body: missing --layer_E"},
+      {"incomplete coating",
+       [](auto& o) {
+         o.e_star.reset();
+         o.layer_thickness = 1e-5;
+       },
+       elastic_film, "incomplete coated body: missing layer_E", "incomplete coated body: missing --layer_E"},
       {"coating and E*",
        [](auto& o) {
          o.layer_thickness = 1e-5;
@@ -97,7 +114,8 @@ TEST(LubricationProblemTest, EachRuleIsRefusedNamingTheOptionInBothSpellings) {
        },
        elastic_film, "replaces e_star", "replaces --e_star"},
       {"rigid with a lubricant law", [](auto& o) { o.pressure_viscosity = 2e-8; }, rigid_film,
-       "pressure_viscosity need an elastic film: give e_star", "--pressure_viscosity need an elastic film: give --e_star"},
+       "pressure_viscosity need an elastic film: give e_star",
+       "--pressure_viscosity need an elastic film: give --e_star"},
       {"rigid with a boundary", [](auto& o) { o.boundary = "periodic"; }, rigid_film, "boundary need an elastic film",
        "--boundary need an elastic film"},
       {"mixed without a body", [](auto& o) { o.e_star.reset(); }, mixed_film, "mixed needs an elastic body",
@@ -113,14 +131,27 @@ TEST(LubricationProblemTest, EachRuleIsRefusedNamingTheOptionInBothSpellings) {
        },
        mixed_film, "mixed takes a homogeneous body: a coating is not supported",
        "--mixed takes a homogeneous body: a coating is not supported"},
-      {"mixed at a separation", [](auto& o) { o.force.reset(); o.separation = 1e-6; }, mixed_film,
-       "separation is the rigid film's: the mixed film takes force=N or offset=M",
+      {"mixed at a separation",
+       [](auto& o) {
+         o.force.reset();
+         o.separation = 1e-6;
+       },
+       mixed_film, "separation is the rigid film's: the mixed film takes force=N or offset=M",
        "--separation is the rigid film's: the mixed film takes --force N or --offset M"},
-      {"Stribeck at an offset", [](auto& o) { o.force.reset(); o.offset = 1e-7; o.speeds = std::vector<double>{1}; },
+      {"Stribeck at an offset",
+       [](auto& o) {
+         o.force.reset();
+         o.offset = 1e-7;
+         o.speeds = std::vector<double>{1};
+       },
        mixed_film, "a Stribeck sweep (speeds) is load controlled: pass force=N",
        "a Stribeck sweep (--speeds) is load controlled: pass --force N"},
-      {"EHL at a separation", [](auto& o) { o.force.reset(); o.separation = 1e-6; }, elastic_film,
-       "an elastic film (EHL) is load controlled: pass force=N, not separation",
+      {"EHL at a separation",
+       [](auto& o) {
+         o.force.reset();
+         o.separation = 1e-6;
+       },
+       elastic_film, "an elastic film (EHL) is load controlled: pass force=N, not separation",
        "an elastic film (EHL) is load controlled: pass --force N, not --separation"},
       {"unknown law", [](auto& o) { o.piezoviscosity = "exponential"; }, elastic_film,
        "piezoviscosity='exponential': ", "--piezoviscosity 'exponential': "},
@@ -131,12 +162,16 @@ TEST(LubricationProblemTest, EachRuleIsRefusedNamingTheOptionInBothSpellings) {
        "max_iterations=0 is invalid: allowed range is 1 to 100000", "--max_iterations 0 is invalid"},
       {"mixed Newton steps", [](auto& o) { o.max_iterations = 100001; }, mixed_film, "max_iterations=100001 is invalid",
        "--max_iterations 100001 is invalid"},
-      {"rigid sweeps", [](auto& o) { o.max_iterations = 0; }, rigid_film, "max_iterations=0 is invalid: at least 1 sweep",
-       "--max_iterations 0 is invalid: at least 1 sweep"},
+      {"rigid sweeps", [](auto& o) { o.max_iterations = 0; }, rigid_film,
+       "max_iterations=0 is invalid: at least 1 sweep", "--max_iterations 0 is invalid: at least 1 sweep"},
       {"rigid tolerance", [](auto& o) { o.tolerance = 2.0; }, rigid_film, "tolerance=2 is invalid",
        "--tolerance 2 is invalid"},
-      {"rigid load", [](auto& o) { o.separation.reset(); o.force = -1.0; }, rigid_film, "force=-1 is invalid",
-       "--force -1 is invalid"},
+      {"rigid load",
+       [](auto& o) {
+         o.separation.reset();
+         o.force = -1.0;
+       },
+       rigid_film, "force=-1 is invalid", "--force -1 is invalid"},
       {"EHL load", [](auto& o) { o.force = -1.0; }, elastic_film, "force=-1 is invalid", "--force -1 is invalid"},
       {"shear limit", [](auto& o) { o.eyring_stress = -1.0; }, rigid_film, "eyring_stress=-1 Pa is invalid",
        "--eyring_stress -1 Pa is invalid"},
@@ -144,8 +179,12 @@ TEST(LubricationProblemTest, EachRuleIsRefusedNamingTheOptionInBothSpellings) {
        "--contact_friction -1 is invalid"},
       {"boundary film", [](auto& o) { o.boundary_film = 0.0; }, mixed_film, "boundary_film=0 m is invalid",
        "--boundary_film 0 m is invalid"},
-      {"offset", [](auto& o) { o.force.reset(); o.offset = 1.0 / 0.0; }, mixed_film, "offset=inf m is invalid",
-       "--offset inf m is invalid"},
+      {"offset",
+       [](auto& o) {
+         o.force.reset();
+         o.offset = 1.0 / 0.0;
+       },
+       mixed_film, "offset=inf m is invalid", "--offset inf m is invalid"},
   };
   for (const Rule& rule : rules) {
     LubricationProblemOptions options = rule.base();

@@ -81,8 +81,8 @@ struct LubricationProblem {
   CavitationSolverOptions cavitation;
   std::optional<double> separation;
   std::optional<LoadControlOptions> load_control;
-  ElasticFilmOptions elastic;             // FilmKind::elastic
-  MixedFilmOptions mixed;                 // FilmKind::mixed (load 0: offset control)
+  ElasticFilmOptions elastic;                 // FilmKind::elastic
+  MixedFilmOptions mixed;                     // FilmKind::mixed (load 0: offset control)
   std::optional<std::vector<double>> speeds;  // the mixed film's Stribeck sweep
 
   // The grid's rules: the flow's (FlowConditions::validate(grid)) and the
