@@ -151,8 +151,8 @@ ELASTIC = {"dx": 1e-5, "viscosity": 0.04, "entrainment_velocity": 1.0, "force": 
     ({"sliding_velocity": math.inf}, r"sliding_velocity=inf m/s \(x component\)"),
     ({"eyring_stress": -1.0}, "eyring_stress=-1 Pa is invalid"),
     ({"limiting_shear_slope": -0.05}, "limiting_shear_slope=-0.05 is invalid"),
-    ({"separation": None}, "give exactly one of separation= and force="),
-    ({"force": 1.0}, "give exactly one of separation= and force="),
+    ({"separation": None}, "give exactly one of separation=M and force=N"),
+    ({"force": 1.0}, "give exactly one of separation=M and force=N"),
     ({"pressure_viscosity": 2e-8}, "need an elastic film"),
     ({"periodic_x": True}, "periodic along every axis"),
 ])
