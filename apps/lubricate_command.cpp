@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <chrono>
 #include <fstream>
 #include <functional>
@@ -30,6 +31,7 @@
 #include "halfspace/lubrication/elastic_film.hpp"
 #include "halfspace/lubrication/film_shear.hpp"
 #include "halfspace/lubrication/load_control.hpp"
+#include "halfspace/lubrication/lubrication_problem.hpp"
 #include "halfspace/lubrication/mixed_film.hpp"
 #include "halfspace/material.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
@@ -41,38 +43,12 @@
 namespace halfspace::app {
 namespace {
 
-struct LubricateOptions : GivenOptions {
+// The film's options (LubricationProblemOptions, which make_lubrication_problem
+// checks) and the program's own: the files and how to report.
+struct LubricateOptions : GivenOptions, lubrication::LubricationProblemOptions {
   std::optional<std::string> height_map;
   std::optional<std::string> window, invalid, detrend;
-  std::optional<double> viscosity;
-  std::optional<std::vector<double>> entrainment_velocity;
-  std::optional<std::vector<double>> sliding_velocity;
-  std::optional<double> eyring_stress, limiting_shear_stress, limiting_shear_slope;
-  std::optional<double> separation;
-  std::optional<double> force;
-  std::optional<double> inlet_pressure;
-  std::optional<double> outlet_pressure;
-  std::optional<double> side_pressure;
-  bool periodic_y = false;
-  std::optional<double> tolerance;
-  // Elastic film (EHL).
-  std::optional<double> e_star;
-  std::optional<double> e1, nu1, e2, nu2;
-  std::optional<double> layer_thickness, layer_e, layer_nu, substrate_e, substrate_nu;
-  std::optional<std::string> boundary;
-  std::optional<double> pressure_viscosity;
-  std::optional<std::string> piezoviscosity;
-  std::optional<double> roelands_index;
-  std::optional<std::string> compressibility;
-  std::optional<std::string> couette_scheme;
-  std::optional<long long> max_iterations;
-  // Mixed lubrication.
-  bool mixed = false;
   std::optional<std::string> roughness;
-  std::optional<double> offset;
-  std::optional<double> contact_friction;
-  std::optional<double> boundary_film;
-  std::optional<std::vector<double>> speeds;
   std::optional<std::string> stribeck;
   std::optional<std::string> output;
   bool plot = false;
@@ -151,8 +127,8 @@ const std::array kOptions{
                     "none or dowson-higginson [dowson-higginson]"},
     LubricateOption{"couette-scheme", &LubricateOptions::couette_scheme, Kind::text, kElastic, "SCHEME",
                     "first-order or second-order upwinding of the wedge flux [first-order]"},
-    LubricateOption{"max-iterations", &LubricateOptions::max_iterations, Kind::integer, kElastic, "N",
-                    "Newton steps of the elastic film [100]"},
+    LubricateOption{"max-iterations", &LubricateOptions::max_iterations, Kind::integer, kFilm, "N",
+                    "Newton steps of an elastic film, 1 to 100000 [100; 200 mixed]; sweeps of a rigid one [2e6]"},
     LubricateOption{"mixed", &LubricateOptions::mixed, Kind::flag, kMixed, "",
                     "the elastic film may close: asperities in contact carry a contact pressure (needs --E-star)"},
     LubricateOption{"roughness", &LubricateOptions::roughness, Kind::path, kMixed, "FILE",
@@ -174,63 +150,36 @@ const std::array kOptions{
     LubricateOption{"quiet", &LubricateOptions::quiet, Kind::flag, kOutput, "", "print nothing on success"},
 };
 
-std::array<double, 2> velocity(const std::optional<std::vector<double>>& given, std::string_view flag) {
-  if (!given) return {0.0, 0.0};
-  if (given->empty() || given->size() > 2) {
-    throw InputError(fmt::format("--{} has {} values: give UX or UX,UY (m/s)", flag, given->size()));
+// The program's spelling of the film's options: the flag (or the config
+// file's key) of each, with the value the library shows.
+class LubricateSpelling : public OptionSpelling {
+ public:
+  explicit LubricateSpelling(const LubricateOptions& options) : options_(options) {}
+  std::string name(std::string_view option) const override { return options_.name(key(option)); }
+  std::string describe(std::string_view option, std::string_view value) const override {
+    const std::string flag = key(option);
+    if (options_.from_config.contains(flag)) return fmt::format("{} = {} in {}", flag, value, *options_.config);
+    return fmt::format("--{} {}", flag, value);
   }
-  return {(*given)[0], given->size() == 2 ? (*given)[1] : 0.0};
-}
 
-// E* from --E-star or all of E1, nu1, E2, nu2; nothing when neither is
-// given (the rigid film).
-std::optional<double> elastic_modulus(const LubricateOptions& o) {
-  const bool pair = o.e1 || o.nu1 || o.e2 || o.nu2;
-  if (o.e_star && pair) {
-    throw InputError("--E-star cannot be combined with --E1, --nu1, --E2, --nu2: give one or the other");
+ private:
+  // The table's key of a problem option: its name with '-' for '_'
+  // ("layer_E" is --layer-E, "e_star" --E-star).
+  static std::string key(std::string_view option) {
+    for (const LubricateOption& spec : kOptions) {
+      const bool same = std::ranges::equal(spec.key, option, [](char a, char b) {
+        return std::tolower(static_cast<unsigned char>(a)) ==
+               std::tolower(static_cast<unsigned char>(b == '_' ? '-' : b));
+      });
+      if (same) return std::string(spec.key);
+    }
+    std::string flag(option);
+    std::ranges::replace(flag, '_', '-');
+    return flag;
   }
-  if (o.e_star) return checked_composite_modulus(*o.e_star);
-  if (!pair) return std::nullopt;
-  if (!(o.e1 && o.nu1 && o.e2 && o.nu2)) {
-    throw InputError("incomplete material: give all of --E1, --nu1, --E2 and --nu2 (or --E-star)");
-  }
-  return checked_composite_modulus(composite_modulus({*o.e1, *o.nu1}, {*o.e2, *o.nu2}));
-}
 
-lubrication::LubricantLaws lubricant_laws(const LubricateOptions& o) {
-  lubrication::LubricantLaws laws;
-  laws.pressure_viscosity = o.pressure_viscosity.value_or(0.0);
-  laws.roelands_index = o.roelands_index.value_or(0.0);
-  laws.piezoviscosity = o.piezoviscosity                ? lubrication::parse_piezoviscosity(*o.piezoviscosity)
-                        : laws.pressure_viscosity > 0.0 ? lubrication::Piezoviscosity::barus
-                                                        : lubrication::Piezoviscosity::none;
-  laws.compressibility = lubrication::parse_compressibility(o.compressibility.value_or("dowson-higginson"));
-  return laws;
-}
-
-// A coated elastic body from all five of --layer-thickness, --layer-E,
-// --layer-nu, --substrate-E, --substrate-nu (validated by the library);
-// nothing when none is given.
-std::optional<LayeredMaterial> coating_of(const LubricateOptions& o) {
-  const std::array given{o.layer_thickness, o.layer_e, o.layer_nu, o.substrate_e, o.substrate_nu};
-  const auto count = std::count_if(given.begin(), given.end(), [](const auto& v) { return v.has_value(); });
-  if (count == 0) return std::nullopt;
-  if (count < 5) {
-    throw InputError(
-        "incomplete coated body: give all of --layer-thickness, --layer-E, --layer-nu, --substrate-E, --substrate-nu");
-  }
-  if (o.e_star || o.e1 || o.nu1 || o.e2 || o.nu2) {
-    throw InputError("a coated body (--layer-*, --substrate-*) replaces --E-star and --E1, --nu1, --E2, --nu2");
-  }
-  return validated(LayeredMaterial{*o.layer_thickness, {*o.layer_e, *o.layer_nu}, {*o.substrate_e, *o.substrate_nu}});
-}
-
-lubrication::ShearLimits shear_limits(const LubricateOptions& o) {
-  const lubrication::ShearLimits limits{o.eyring_stress.value_or(0.0), o.limiting_shear_stress.value_or(0.0),
-                                        o.limiting_shear_slope.value_or(0.0)};
-  limits.validate();
-  return limits;
-}
+  const LubricateOptions& options_;
+};
 
 // The film's shear on the lower surface (film_shear.hpp): its friction in
 // the summary, its fields and the limits in the file.
@@ -252,29 +201,14 @@ void write_shear(const io::Hdf5Node& root, const std::vector<std::size_t>& shape
   root.write_double_attribute("limited_fraction", shear.limited_fraction);
 }
 
-// The flag a library option (OptionError::option()) came from.
-std::string flag_for(const std::string& option) {
-  if (option.starts_with("entrainment_velocity")) return "--entrainment-velocity";
-  if (option.starts_with("sliding_velocity")) return "--sliding-velocity";
-  if (option == "boundary.x_low_pressure") return "--inlet-pressure";
-  if (option == "boundary.x_high_pressure") return "--outlet-pressure";
-  if (option == "boundary.y_low_pressure" || option == "boundary.y_high_pressure") return "--side-pressure";
-  if (option == "load") return "--force";
-  std::string flag = "--" + option;  // viscosity, separation, tolerance, max_iterations, pressure_viscosity, ...
-  std::replace(flag.begin(), flag.end(), '_', '-');
-  return flag;
-}
-
+// Runs `function`; a film option's broken rule found by a solver (the
+// separation, the speeds) is named by its flag.
 template <class Function>
-int with_lubricate_flags(Function&& function) {
+int with_lubricate_flags(const LubricateOptions& o, Function&& function) {
   try {
     return function();
   } catch (const OptionError& error) {
-    const std::string& option = error.option();
-    const std::string component = option.ends_with(".x")   ? " (x component)"
-                                  : option.ends_with(".y") ? " (y component)"
-                                                           : "";
-    throw InputError(fmt::format("{} {}{} {}", flag_for(option), error.value(), component, error.rule()));
+    throw lubrication::spelled_film_error(error, LubricateSpelling(o));
   }
 }
 
@@ -321,27 +255,14 @@ int report(const LubricateOptions& o, const lubrication::FilmSummary& summary, b
   return kExitOk;
 }
 
-int run_elastic(const LubricateOptions& o, const HeightMap& map, const lubrication::FlowConditions& conditions,
-                double e_star, const std::optional<LayeredMaterial>& coating) {
-  if (!o.force) throw InputError("an elastic film (EHL) is load controlled: pass --force N, not --separation");
-  const Boundary boundary = parse_boundary(o.boundary.value_or("free"));
-  const Grid grid =
-      map.dimension == 1 ? Grid::line(map.nx, map.dx, boundary) : Grid::plane(map.nx, map.ny, map.dx, map.dy, boundary);
-  conditions.validate(grid);
-  const lubrication::LubricantLaws laws = lubricant_laws(o);
-  laws.validate(conditions.viscosity);
-  lubrication::ElasticFilmOptions options;
-  options.load = *o.force;
-  if (o.tolerance) options.tolerance = *o.tolerance;
-  if (o.max_iterations) {
-    if (*o.max_iterations < 1 || *o.max_iterations > 100000) {
-      throw InputError(fmt::format("--max-iterations {} is invalid: allowed range is 1 to 100000", *o.max_iterations));
-    }
-    options.max_iterations = static_cast<int>(*o.max_iterations);
-  }
-  if (o.couette_scheme) options.couette_scheme = lubrication::parse_couette_scheme(*o.couette_scheme);
-  options.validate();
-  const lubrication::ShearLimits limits = shear_limits(o);
+int run_elastic(const LubricateOptions& o, const HeightMap& map, const Grid& grid,
+                const lubrication::LubricationProblem& problem) {
+  const lubrication::FlowConditions& conditions = problem.conditions;
+  const lubrication::LubricantLaws& laws = problem.laws;
+  const lubrication::ElasticFilmOptions& options = problem.elastic;
+  const lubrication::ShearLimits& limits = problem.limits;
+  const std::optional<LayeredMaterial>& coating = problem.coating;
+  const double e_star = problem.e_star;
   const Eigen::ArrayXd gap = map.heights.maxCoeff() - map.heights;
   FftInfluenceOperator op = coating ? FftInfluenceOperator(grid, *coating) : FftInfluenceOperator(grid, e_star);
   const lubrication::ElasticFilm film = lubrication::solve_elastic_film(op, gap, conditions, laws, options);
@@ -440,41 +361,12 @@ void write_stribeck_csv(const std::string& path, const std::vector<lubrication::
   if (!out) throw InputError(fmt::format("writing the Stribeck curve to {} failed", path));
 }
 
-int run_mixed(const LubricateOptions& o, const HeightMap& map, const lubrication::FlowConditions& conditions,
-              double e_star) {
-  if (o.separation) {
-    throw InputError("--separation is the rigid film's: the mixed film takes --force N or --offset M");
-  }
-  const Boundary boundary = parse_boundary(o.boundary.value_or("free"));
-  const Grid grid =
-      map.dimension == 1 ? Grid::line(map.nx, map.dx, boundary) : Grid::plane(map.nx, map.ny, map.dx, map.dy, boundary);
-  conditions.validate(grid);
-  const lubrication::LubricantLaws laws = lubricant_laws(o);
-  laws.validate(conditions.viscosity);
-  lubrication::MixedFilmOptions options;
-  options.load = o.force.value_or(0.0);
-  options.offset = o.offset.value_or(0.0);
-  if (o.boundary_film) options.boundary_film = *o.boundary_film;
-  if (o.tolerance) options.tolerance = *o.tolerance;
-  if (o.max_iterations) {
-    if (*o.max_iterations < 1 || *o.max_iterations > 100000) {
-      throw InputError(fmt::format("--max-iterations {} is invalid: allowed range is 1 to 100000", *o.max_iterations));
-    }
-    options.max_iterations = static_cast<int>(*o.max_iterations);
-  }
-  if (o.couette_scheme) options.couette_scheme = lubrication::parse_couette_scheme(*o.couette_scheme);
-  if (o.contact_friction) options.friction.contact_friction = *o.contact_friction;
-  options.friction.shear = shear_limits(o);
-  options.validate();
-  if (grid.size() > lubrication::kMaxMixedFilmNodes) {
-    throw InputError(
-        fmt::format("{} has {} points: the mixed film's dense Newton path allows at most {} (coarsen the height map)",
-                    *o.height_map, grid.size(), lubrication::kMaxMixedFilmNodes));
-  }
-  if (o.speeds.has_value() != o.stribeck.has_value()) {
-    throw InputError("--speeds and --stribeck go together: the sweep's speeds and its CSV file");
-  }
-  if (o.speeds && !o.force) throw InputError("a Stribeck sweep (--speeds) is load controlled: pass --force N");
+int run_mixed(const LubricateOptions& o, const HeightMap& map, const Grid& grid,
+              const lubrication::LubricationProblem& problem) {
+  const lubrication::FlowConditions& conditions = problem.conditions;
+  const lubrication::LubricantLaws& laws = problem.laws;
+  const lubrication::MixedFilmOptions& options = problem.mixed;
+  const double e_star = problem.e_star;
   if (o.stribeck) io::check_output_path(*o.stribeck);
   const Eigen::ArrayXd gap = map.heights.maxCoeff() - map.heights;
   FftInfluenceOperator op(grid, e_star);
@@ -482,9 +374,9 @@ int run_mixed(const LubricateOptions& o, const HeightMap& map, const lubrication
   lubrication::MixedFilm film;
   bool all_converged = true;
   std::string first_failure;
-  if (o.speeds) {
+  if (problem.speeds) {
     std::vector<lubrication::StribeckPoint> points =
-        lubrication::stribeck_sweep(op, gap, conditions, laws, options, *o.speeds);
+        lubrication::stribeck_sweep(op, gap, conditions, laws, options, *problem.speeds);
     write_stribeck_csv(*o.stribeck, points);
     for (const lubrication::StribeckPoint& point : points) {
       if (!point.film.converged() && all_converged) {
@@ -517,7 +409,7 @@ int run_mixed(const LubricateOptions& o, const HeightMap& map, const lubrication
   summary.cavitated_fraction = film.cavitated_fraction;
   summary.viscosity = conditions.viscosity;
   summary.iterations = film.iterations;
-  summary.film_solves = o.speeds ? static_cast<long long>(o.speeds->size()) : 1;
+  summary.film_solves = problem.speeds ? static_cast<long long>(problem.speeds->size()) : 1;
   summary.relative_residual = film.relative_residual;
   summary.solve_seconds = film.wall_seconds;
   summary.friction_force_x = film.fluid_friction_force[0] + film.contact_friction_force[0];
@@ -534,7 +426,7 @@ int run_mixed(const LubricateOptions& o, const HeightMap& map, const lubrication
   if (code == kExitOk && !o.quiet) {
     fmt::print("  {:<15} {:.4g} of the load, area {:.4g} of the cells\n", "contact", film.contact_load_fraction,
                film.contact_area_fraction);
-    if (o.stribeck) fmt::print("  {:<15} {} ({} speeds)\n", "stribeck", *o.stribeck, o.speeds->size());
+    if (o.stribeck) fmt::print("  {:<15} {} ({} speeds)\n", "stribeck", *o.stribeck, problem.speeds->size());
   }
   return code;
 }
@@ -556,37 +448,14 @@ void add_roughness(const std::string& path, HeightMap& map) {
 
 int solve_film(const LubricateOptions& o) {
   if (!o.height_map) throw InputError("no surface given: pass --height-map FILE");
-  if (!o.viscosity) throw InputError("no viscosity given: pass --viscosity PA_S");
-  if (!o.entrainment_velocity) throw InputError("no entrainment velocity given: pass --entrainment-velocity UX[,UY]");
-  if (o.separation.has_value() + o.force.has_value() + o.offset.has_value() != 1) {
-    throw InputError(o.mixed ? "give exactly one of --force N and --offset M"
-                             : "give exactly one of --separation M and --force N");
-  }
-  if (!o.mixed && (o.offset || o.contact_friction || o.boundary_film || o.speeds || o.stribeck)) {
-    throw InputError(
-        "--offset, --contact-friction, --boundary-film, --speeds and --stribeck belong to the mixed film: add --mixed");
+  const LubricateSpelling flags(o);
+  const lubrication::LubricationProblem problem = lubrication::make_lubrication_problem(o, flags);
+  if (o.speeds.has_value() != o.stribeck.has_value()) {
+    throw InputError("--speeds and --stribeck go together: the sweep's speeds and its CSV file");
   }
   if (!o.output) throw InputError("no output file given: pass --output FILE.h5");
   io::check_output_path(*o.output);
-
-  lubrication::FlowConditions conditions;
-  conditions.viscosity = *o.viscosity;
-  conditions.entrainment_velocity = velocity(o.entrainment_velocity, "entrainment-velocity");
-  conditions.sliding_velocity = velocity(o.sliding_velocity, "sliding-velocity");
-  conditions.boundary.x_low_pressure = o.inlet_pressure.value_or(0.0);
-  conditions.boundary.x_high_pressure = o.outlet_pressure.value_or(0.0);
-  conditions.boundary.y_low_pressure = o.side_pressure.value_or(0.0);
-  conditions.boundary.y_high_pressure = o.side_pressure.value_or(0.0);
-  if (o.periodic_y) conditions.boundary.y = lubrication::AxisBoundary::periodic;
-  const std::optional<LayeredMaterial> coating = coating_of(o);
-  const std::optional<double> e_star = coating ? plane_strain_modulus(coating->layer) : elastic_modulus(o);
-  if (!e_star && (o.pressure_viscosity || o.piezoviscosity || o.roelands_index || o.compressibility ||
-                  o.couette_scheme || o.max_iterations || o.boundary)) {
-    throw InputError(
-        "--pressure-viscosity, --piezoviscosity, --roelands-index, --compressibility, --couette-scheme, "
-        "--max-iterations and --boundary need an elastic film: give --E-star (or --E1, --nu1, --E2, --nu2, or a "
-        "coated body, --layer-*)");
-  }
+  if (o.stribeck) io::check_output_path(*o.stribeck);
 
   HeightMap map = io::read_height_map(*o.height_map);
   if (o.window || o.invalid || o.detrend) {
@@ -612,26 +481,19 @@ int solve_film(const LubricateOptions& o) {
     throw InputError(fmt::format("{} does not give its spacing: a film needs dx (and dy) in metres", *o.height_map));
   }
   if (o.roughness) add_roughness(*o.roughness, map);
-  if (o.mixed) {
-    if (!e_star) throw InputError("--mixed needs an elastic body: give --E-star (or --E1, --nu1, --E2, --nu2)");
-    if (coating)
-      throw InputError(
-          "--mixed takes a homogeneous body: a coating (--layer-*, --substrate-*) is not supported by the mixed film "
-          "yet");
-    return run_mixed(o, map, conditions, *e_star);
-  }
-  if (e_star) return run_elastic(o, map, conditions, *e_star, coating);
-  const lubrication::ShearLimits limits = shear_limits(o);
-
-  lubrication::CavitationSolverOptions solver;
-  if (o.tolerance) solver.tolerance = *o.tolerance;
-  const Grid grid = map.dimension == 1 ? Grid::line(map.nx, map.dx, Boundary::free)
-                                       : Grid::plane(map.nx, map.ny, map.dx, map.dy, Boundary::free);
-  conditions.validate(grid);
+  const Grid grid = map.dimension == 1 ? Grid::line(map.nx, map.dx, problem.boundary)
+                                       : Grid::plane(map.nx, map.ny, map.dx, map.dy, problem.boundary);
+  problem.check_grid(grid, flags, *o.height_map);
+  if (problem.kind == lubrication::FilmKind::mixed) return run_mixed(o, map, grid, problem);
+  if (problem.kind == lubrication::FilmKind::elastic) return run_elastic(o, map, grid, problem);
+  const lubrication::FlowConditions& conditions = problem.conditions;
+  const lubrication::ShearLimits& limits = problem.limits;
   const auto started = std::chrono::steady_clock::now();
   const lubrication::LubricatedFilm film =
-      o.force ? lubrication::lubricate_at_load(grid, map.heights, conditions, {.load = *o.force}, solver)
-              : lubrication::lubricate_at_separation(grid, map.heights, conditions, *o.separation, solver);
+      problem.load_control
+          ? lubrication::lubricate_at_load(grid, map.heights, conditions, *problem.load_control, problem.cavitation)
+          : lubrication::lubricate_at_separation(grid, map.heights, conditions, *problem.separation,
+                                                 problem.cavitation);
   const lubrication::FilmForces& f = film.forces;
   lubrication::FilmSummary summary;
   summary.model = "rigid";
@@ -702,7 +564,7 @@ Command add_lubricate_command(CLI::App& program) {
             const std::vector<BoundOption> bound = bind_options(std::span<const LubricateOption>(kOptions), options);
             read_command_line(*lubricate, argv, bound, options);
             merge_config_file(bound, {}, "lubricate", options);
-            return with_lubricate_flags([&] { return run_lubricate(options); });
+            return with_lubricate_flags(options, [&] { return run_lubricate(options); });
           }};
 }
 

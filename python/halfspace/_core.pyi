@@ -197,13 +197,15 @@ def friction(heights: npt.NDArray[np.float64], dx: float, dy: float, boundary: s
              command_line: str, height_source: str, preparation: Sequence[str]) -> History: ...
 def read_result(path: str, step: int = -1) -> Result: ...
 def lubricate(heights: npt.NDArray[np.float64], dx: float, dy: float, viscosity: float,
-              entrainment_velocity: Sequence[float], sliding_velocity: Sequence[float], separation: Optional[float],
-              force: Optional[float], inlet_pressure: float, outlet_pressure: float, side_pressure: float,
-              periodic_x: bool, periodic_y: bool, supply_fluid_fraction: float, tol: Optional[float],
-              max_iter: Optional[int], e_star: Optional[float], coating: Optional[Sequence[float]], boundary: str,
-              pressure_viscosity: Optional[float], piezoviscosity: Optional[str], roelands_index: Optional[float],
-              compressibility: Optional[str], couette_scheme: Optional[str], eyring_stress: float,
-              limiting_shear_stress: float, limiting_shear_slope: float, mixed: bool, offset: Optional[float],
+              entrainment_velocity: Sequence[float], sliding_velocity: Optional[Sequence[float]],
+              separation: Optional[float], force: Optional[float], inlet_pressure: float, outlet_pressure: float,
+              side_pressure: float, periodic_x: bool, periodic_y: bool, supply_fluid_fraction: float,
+              tol: Optional[float], max_iter: Optional[int], e_star: Optional[float], E1: Optional[float],
+              nu1: Optional[float], E2: Optional[float], nu2: Optional[float], coating: Optional[Sequence[float]],
+              boundary: Optional[str], pressure_viscosity: Optional[float], piezoviscosity: Optional[str],
+              roelands_index: Optional[float], compressibility: Optional[str], couette_scheme: Optional[str],
+              eyring_stress: Optional[float], limiting_shear_stress: Optional[float],
+              limiting_shear_slope: Optional[float], mixed: bool, offset: Optional[float],
               contact_friction: Optional[float], boundary_film: Optional[float],
               speeds: Optional[Sequence[float]], threads: Optional[int]) -> Any:
     """The film's fields (numpy arrays) and numbers, as halfspace.Film holds them, or with speeds a list of

@@ -16,23 +16,6 @@ from ._solve import _coating, _surface
 Velocity = Union[float, Sequence[float]]
 
 
-# E* of the elastic film's body. The contact solves take the body through
-# the library's problem builder; the lubrication binding takes E* itself.
-def _material(e_star, E1, nu1, E2, nu2) -> float:
-    constants = {"E1": E1, "nu1": nu1, "E2": E2, "nu2": nu2}
-    given = [name for name, value in constants.items() if value is not None]
-    if e_star is not None and given:
-        raise _core.InputError(f"e_star cannot be combined with {', '.join(given)}: give either e_star or all of "
-                               "E1, nu1, E2, nu2")
-    if e_star is not None:
-        return float(e_star)
-    if len(given) < 4:
-        missing = [name for name in constants if constants[name] is None]
-        raise _core.InputError(f"incomplete material: missing {', '.join(missing)} (give all of E1, nu1, E2, nu2, "
-                               "or e_star)")
-    return _core.composite_modulus(E1, nu1, E2, nu2)
-
-
 class Film:
     """A solved lubricated film. Field arrays are numpy arrays shaped like the
     surface ((ny, nx) or (n,)); numbers are SI.
@@ -217,7 +200,7 @@ def _arguments(surface, *, viscosity: float, entrainment_velocity: Velocity,
               periodic_y: bool = False, supply_fluid_fraction: float = 1.0, tol: Optional[float] = None,
               max_iter: Optional[int] = None, e_star: Optional[float] = None, E1: Optional[float] = None,
               nu1: Optional[float] = None, E2: Optional[float] = None, nu2: Optional[float] = None,
-              coating: Optional[Mapping[str, float]] = None, boundary: str = "free",
+              coating: Optional[Mapping[str, float]] = None, boundary: Optional[str] = None,
               pressure_viscosity: Optional[float] = None, piezoviscosity: Optional[str] = None,
               roelands_index: Optional[float] = None, compressibility: Optional[str] = None,
               couette_scheme: Optional[str] = None, eyring_stress: Optional[float] = None,
@@ -226,24 +209,24 @@ def _arguments(surface, *, viscosity: float, entrainment_velocity: Velocity,
               contact_friction: Optional[float] = None, boundary_film: Optional[float] = None,
               threads: Optional[int] = None, speeds=None) -> tuple:
     height_map = _surface(surface, dx, dy)
-    elastic_given = any(value is not None for value in (e_star, E1, nu1, E2, nu2, coating))
+    # The rules are the library's (make_lubrication_problem); here the
+    # keywords only become the binding's arguments.
     layers = _coating(coating, e_star, E1, nu1, E2, nu2)
-    modulus = None
-    if elastic_given and layers is None:
-        modulus = _material(e_star, E1, nu1, E2, nu2)
     if entrainment_velocity is None:
         raise _core.InputError("entrainment_velocity= is needed: UX or (UX, UY) in m/s")
-    limits = {"eyring_stress": eyring_stress, "limiting_shear_stress": limiting_shear_stress,
-              "limiting_shear_slope": limiting_shear_slope}
-    limit_values = [0.0 if value is None else _optional_float(value, name) for name, value in limits.items()]
     return (
         height_map.heights, height_map.dx, height_map.dy or 0.0, float(viscosity),
-        _velocity(entrainment_velocity, "entrainment_velocity"), _velocity(sliding_velocity, "sliding_velocity"),
+        _velocity(entrainment_velocity, "entrainment_velocity"),
+        None if sliding_velocity is None else _velocity(sliding_velocity, "sliding_velocity"),
         _optional_float(separation, "separation"), _optional_float(force, "force"), float(inlet_pressure),
         float(outlet_pressure), float(side_pressure), bool(periodic_x), bool(periodic_y),
         float(supply_fluid_fraction), _optional_float(tol, "tol"), None if max_iter is None else int(max_iter),
-        modulus, layers, boundary, _optional_float(pressure_viscosity, "pressure_viscosity"), piezoviscosity,
-        _optional_float(roelands_index, "roelands_index"), compressibility, couette_scheme, *limit_values,
+        *[_optional_float(value, name) for name, value in
+          (("e_star", e_star), ("E1", E1), ("nu1", nu1), ("E2", E2), ("nu2", nu2))],
+        layers, boundary, _optional_float(pressure_viscosity, "pressure_viscosity"), piezoviscosity,
+        _optional_float(roelands_index, "roelands_index"), compressibility, couette_scheme,
+        _optional_float(eyring_stress, "eyring_stress"), _optional_float(limiting_shear_stress, "limiting_shear_stress"),
+        _optional_float(limiting_shear_slope, "limiting_shear_slope"),
         bool(mixed), _optional_float(offset, "offset"), _optional_float(contact_friction, "contact_friction"),
         _optional_float(boundary_film, "boundary_film"), _speeds(speeds), None if threads is None else int(threads))
 

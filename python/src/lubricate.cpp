@@ -1,10 +1,9 @@
 // halfspace.lubricate: the keywords mapped onto the library's lubrication
-// options (FlowConditions, CavitationSolverOptions, LoadControlOptions,
-// LubricantLaws, ElasticFilmOptions, ShearLimits), whose validate() holds
-// the rules; a broken rule (OptionError) is restated with the keyword it
-// came from. The film is solved as `halfspace lubricate` solves it, with the
-// GIL released, and handed back as numpy arrays and numbers. With mixed=
-// the film may close (mixed_film.hpp, `halfspace lubricate --mixed`); with
+// problem (LubricationProblemOptions), whose builder make_lubrication_problem
+// holds the rules and names a broken one by its keyword (KeywordSpelling).
+// The film is solved as `halfspace lubricate` solves it, with the GIL
+// released, and handed back as numpy arrays and numbers. With mixed= the
+// film may close (mixed_film.hpp, `halfspace lubricate --mixed`); with
 // speeds= it is a Stribeck sweep (a list of films, as --speeds).
 #include <fmt/format.h>
 #include <nanobind/stl/optional.h>
@@ -23,6 +22,7 @@
 #include "halfspace/lubrication/elastic_film.hpp"
 #include "halfspace/lubrication/film_shear.hpp"
 #include "halfspace/lubrication/load_control.hpp"
+#include "halfspace/lubrication/lubrication_problem.hpp"
 #include "halfspace/lubrication/mixed_film.hpp"
 #include "halfspace/material.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
@@ -33,89 +33,33 @@ namespace {
 
 using namespace halfspace::lubrication;
 
-// The keyword of halfspace.lubricate that sets each library option.
-std::string keyword_for(const std::string& option) {
-  if (option.starts_with("entrainment_velocity")) return "entrainment_velocity";
-  if (option.starts_with("sliding_velocity")) return "sliding_velocity";
-  if (option == "boundary.x_low_pressure") return "inlet_pressure";
-  if (option == "boundary.x_high_pressure") return "outlet_pressure";
-  if (option == "boundary.y_low_pressure" || option == "boundary.y_high_pressure") return "side_pressure";
-  if (option == "boundary.supply_fluid_fraction") return "supply_fluid_fraction";
-  if (option == "tolerance") return "tol";
-  if (option == "max_iterations") return "max_iter";
-  if (option == "load") return "force";
-  return option;  // viscosity, separation, offset, boundary_film, contact_friction, speeds, pressure_viscosity, ...
-}
+// Python's spelling of the film's options: the keyword ("tol" is the
+// problem's tolerance), the coating's constants as the keys of the
+// `coating` mapping.
+class KeywordSpelling : public OptionSpelling {
+ public:
+  std::string name(std::string_view option) const override {
+    if (option == "tolerance") return "tol";
+    if (option == "max_iterations") return "max_iter";
+    if (option == "mixed") return "mixed=True";
+    if (option == "layer_thickness") return "coating['thickness']";
+    if (option.starts_with("layer_") || option.starts_with("substrate_")) return fmt::format("coating['{}']", option);
+    return std::string(option);
+  }
+  std::string describe(std::string_view option, std::string_view value) const override {
+    return fmt::format("{}={}", name(option), value);
+  }
+};
 
-// Runs `work`, restating an OptionError as "keyword=value rule".
+// Runs `work`, restating a film option's broken rule found by a solver (the
+// separation, the speeds) with its keyword.
 template <class Work>
 auto with_keywords(Work&& work) {
   try {
     return work();
   } catch (const OptionError& error) {
-    const std::string& option = error.option();
-    const std::string component = option.ends_with(".x")   ? " (x component)"
-                                  : option.ends_with(".y") ? " (y component)"
-                                                           : "";
-    throw InputError(fmt::format("{}={}{} {}", keyword_for(option), error.value(), component, error.rule()));
+    throw spelled_film_error(error, KeywordSpelling());
   }
-}
-
-// What the keywords give, as _lubricate.py passes them (None: not given).
-struct Keywords {
-  double viscosity = 0.0;
-  std::vector<double> entrainment_velocity, sliding_velocity;
-  std::optional<double> separation, force;
-  double inlet_pressure = 0.0, outlet_pressure = 0.0, side_pressure = 0.0;
-  bool periodic_x = false, periodic_y = false;
-  double supply_fluid_fraction = 1.0;
-  std::optional<double> tol;
-  std::optional<int> max_iter;
-  // Elastic film (EHL): E* or a coated half-space.
-  std::optional<double> e_star;
-  std::optional<std::vector<double>> coating;
-  std::string boundary = "free";
-  std::optional<double> pressure_viscosity;
-  std::optional<std::string> piezoviscosity;
-  std::optional<double> roelands_index;
-  std::optional<std::string> compressibility;
-  std::optional<std::string> couette_scheme;
-  ShearLimits limits;
-  // Mixed film: the film may close; offset (separation control) instead of
-  // force; a Stribeck sweep over speeds.
-  bool mixed = false;
-  std::optional<double> offset, contact_friction, boundary_film;
-  std::optional<std::vector<double>> speeds;
-  std::optional<int> threads;  // None: default_threads(), as the program
-};
-
-std::array<double, 2> velocity(const std::vector<double>& given, const char* keyword) {
-  if (given.empty() || given.size() > 2) {
-    throw InputError(fmt::format("{} has {} values: give UX or (UX, UY) in m/s", keyword, given.size()));
-  }
-  return {given[0], given.size() == 2 ? given[1] : 0.0};
-}
-
-// The keyword's name prefixed to a parse error ("piezoviscosity='x': ...").
-template <class Parse>
-auto named(const char* keyword, const std::string& value, Parse&& parse) {
-  try {
-    return parse(value);
-  } catch (const InputError& error) {
-    throw InputError(fmt::format("{}='{}': {}", keyword, value, error.what()));
-  }
-}
-
-LubricantLaws lubricant_laws(const Keywords& k) {
-  LubricantLaws laws;
-  laws.pressure_viscosity = k.pressure_viscosity.value_or(0.0);
-  laws.roelands_index = k.roelands_index.value_or(0.0);
-  laws.piezoviscosity = k.piezoviscosity ? named("piezoviscosity", *k.piezoviscosity, parse_piezoviscosity)
-                        : laws.pressure_viscosity > 0.0 ? Piezoviscosity::barus
-                                                        : Piezoviscosity::none;
-  laws.compressibility =
-      named("compressibility", k.compressibility.value_or("dowson-higginson"), parse_compressibility);
-  return laws;
 }
 
 std::vector<std::size_t> shape_of(const Grid& grid) {
@@ -137,27 +81,18 @@ void put_fields(nb::dict& out, const Grid& grid, Eigen::ArrayXd pressure, Eigen:
   out["limited_fraction"] = shear.limited_fraction;
 }
 
-nb::dict solve_rigid(const Grid& grid, const Eigen::ArrayXd& heights, const FlowConditions& conditions,
-                     const Keywords& k) {
-  CavitationSolverOptions solver;
-  if (k.tol) solver.tolerance = *k.tol;
-  if (k.max_iter) solver.max_iterations = *k.max_iter;
-  LoadControlOptions load;
-  if (k.force) load.load = *k.force;
-  with_keywords([&] {
-    solver.validate();
-    if (k.force) load.validate();
-    k.limits.validate();
-  });
+nb::dict solve_rigid(const Grid& grid, const Eigen::ArrayXd& heights, const LubricationProblem& problem) {
+  const FlowConditions& conditions = problem.conditions;
   const auto started = std::chrono::steady_clock::now();
   LubricatedFilm film = with_keywords([&] {
     nb::gil_scoped_release release;
-    return k.force ? lubricate_at_load(grid, heights, conditions, load, solver)
-                   : lubricate_at_separation(grid, heights, conditions, *k.separation, solver);
+    return problem.load_control
+               ? lubricate_at_load(grid, heights, conditions, *problem.load_control, problem.cavitation)
+               : lubricate_at_separation(grid, heights, conditions, *problem.separation, problem.cavitation);
   });
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  const FilmShear shear = film_shear(grid, conditions, LubricantLaws{}, k.limits, film.film, film.solution.pressure,
-                                     film.solution.fluid_fraction);
+  const FilmShear shear = film_shear(grid, conditions, LubricantLaws{}, problem.limits, film.film,
+                                     film.solution.pressure, film.solution.fluid_fraction);
   const FilmForces& f = film.forces;
   nb::dict out;
   out["model"] = "rigid";
@@ -217,20 +152,12 @@ void put_elastic_summary(nb::dict& out, const char* model, const Grid& grid, con
   out["couette_scheme"] = std::string(to_string(couette_scheme));
 }
 
-nb::dict solve_elastic(const Grid& grid, const Eigen::ArrayXd& heights, const FlowConditions& conditions,
-                       const Keywords& k, const std::optional<LayeredMaterial>& coating, double e_star) {
-  if (!k.force) throw InputError("an elastic film (EHL) is load controlled: pass force=, not separation=");
-  const LubricantLaws laws = lubricant_laws(k);
-  ElasticFilmOptions options;
-  options.load = *k.force;
-  if (k.tol) options.tolerance = *k.tol;
-  if (k.max_iter) options.max_iterations = *k.max_iter;
-  if (k.couette_scheme) options.couette_scheme = named("couette_scheme", *k.couette_scheme, parse_couette_scheme);
-  with_keywords([&] {
-    laws.validate(conditions.viscosity);
-    options.validate();
-    k.limits.validate();
-  });
+nb::dict solve_elastic(const Grid& grid, const Eigen::ArrayXd& heights, const LubricationProblem& problem) {
+  const FlowConditions& conditions = problem.conditions;
+  const LubricantLaws& laws = problem.laws;
+  const ElasticFilmOptions& options = problem.elastic;
+  const std::optional<LayeredMaterial>& coating = problem.coating;
+  const double e_star = problem.e_star;
   const Eigen::ArrayXd gap = heights.maxCoeff() - heights;
   ElasticFilm film = with_keywords([&] {
     nb::gil_scoped_release release;
@@ -241,7 +168,8 @@ nb::dict solve_elastic(const Grid& grid, const Eigen::ArrayXd& heights, const Fl
     FftInfluenceOperator op(grid, e_star);
     return solve_elastic_film(op, gap, conditions, laws, options);
   });
-  const FilmShear shear = film_shear(grid, conditions, laws, k.limits, film.film, film.pressure, film.fluid_fraction);
+  const FilmShear shear =
+      film_shear(grid, conditions, laws, problem.limits, film.film, film.pressure, film.fluid_fraction);
   nb::dict out;
   const double cavitated = static_cast<double>((film.fluid_fraction < 1.0).count()) / static_cast<double>(grid.size());
   put_elastic_summary(out, "elastic", grid, film, cavitated, 1, laws, conditions.viscosity, options.couette_scheme,
@@ -291,34 +219,14 @@ nb::dict mixed_dict(const Grid& grid, MixedFilm film, const MixedFilmOptions& op
 // The mixed film (one dict), or with speeds= the Stribeck sweep (a list of
 // dicts, each with its speed and Hersey number), as run_mixed in
 // apps/lubricate_command.cpp.
-nb::object solve_mixed(const Grid& grid, const Eigen::ArrayXd& heights, const FlowConditions& conditions,
-                       const Keywords& k, double e_star) {
-  if (k.separation) {
-    throw InputError("separation= is the rigid film's: the mixed film takes force= (N/m) or offset= (m)");
-  }
-  if (k.speeds && !k.force) throw InputError("a Stribeck sweep (speeds=) is load controlled: pass force=");
-  const LubricantLaws laws = lubricant_laws(k);
-  MixedFilmOptions options;
-  options.load = k.force.value_or(0.0);
-  options.offset = k.offset.value_or(0.0);
-  if (k.boundary_film) options.boundary_film = *k.boundary_film;
-  if (k.tol) options.tolerance = *k.tol;
-  if (k.max_iter) options.max_iterations = *k.max_iter;
-  if (k.couette_scheme) options.couette_scheme = named("couette_scheme", *k.couette_scheme, parse_couette_scheme);
-  if (k.contact_friction) options.friction.contact_friction = *k.contact_friction;
-  options.friction.shear = k.limits;
-  with_keywords([&] {
-    laws.validate(conditions.viscosity);
-    options.validate();
-  });
-  if (grid.size() > kMaxMixedFilmNodes) {
-    throw InputError(
-        fmt::format("the surface has {} points: the mixed film's dense Newton path allows at most {} (coarsen it)",
-                    grid.size(), kMaxMixedFilmNodes));
-  }
+nb::object solve_mixed(const Grid& grid, const Eigen::ArrayXd& heights, const LubricationProblem& problem) {
+  const FlowConditions& conditions = problem.conditions;
+  const LubricantLaws& laws = problem.laws;
+  const MixedFilmOptions& options = problem.mixed;
+  const double e_star = problem.e_star;
   const Eigen::ArrayXd gap = heights.maxCoeff() - heights;
   FftInfluenceOperator op(grid, e_star);
-  if (!k.speeds) {
+  if (!problem.speeds) {
     MixedFilm film = with_keywords([&] {
       nb::gil_scoped_release release;
       return solve_mixed_film(op, gap, conditions, laws, options);
@@ -327,7 +235,7 @@ nb::object solve_mixed(const Grid& grid, const Eigen::ArrayXd& heights, const Fl
   }
   std::vector<StribeckPoint> points = with_keywords([&] {
     nb::gil_scoped_release release;
-    return stribeck_sweep(op, gap, conditions, laws, options, *k.speeds);
+    return stribeck_sweep(op, gap, conditions, laws, options, *problem.speeds);
   });
   nb::list curve;
   for (StribeckPoint& point : points) {
@@ -339,7 +247,8 @@ nb::object solve_mixed(const Grid& grid, const Eigen::ArrayXd& heights, const Fl
   return curve;
 }
 
-nb::object lubricate(const nb::object& heights_object, double dx, double dy, const Keywords& k) {
+nb::object lubricate(const nb::object& heights_object, double dx, double dy, const LubricationProblemOptions& options,
+                     std::optional<int> threads) {
   const auto heights = nb::cast<InputArray>(heights_object, false);
   if (heights.ndim() != 1 && heights.ndim() != 2) {
     throw InputError(fmt::format("the surface must be a 1D or 2D array, got {} dimensions", heights.ndim()));
@@ -349,73 +258,22 @@ nb::object lubricate(const nb::object& heights_object, double dx, double dy, con
     throw InputError(
         "the surface has non-finite heights: a film needs every height (HeightMap.prepare(invalid='fill'))");
   }
-  if (k.separation.has_value() + k.force.has_value() + k.offset.has_value() != 1) {
-    throw InputError(k.mixed ? "give exactly one of force= and offset=" : "give exactly one of separation= and force=");
-  }
-  if (!k.mixed && (k.offset || k.contact_friction || k.boundary_film || k.speeds)) {
-    throw InputError("offset, contact_friction, boundary_film and speeds belong to the mixed film: add mixed=True");
-  }
-  const bool elastic = k.e_star.has_value() || k.coating.has_value();
-  if (k.mixed && !elastic) throw InputError("mixed=True needs an elastic body: give e_star (or E1, nu1, E2, nu2)");
-  if (k.mixed && k.coating) {
-    throw InputError("mixed=True takes a homogeneous body: a coating is not supported by the mixed film yet");
-  }
-  if (!elastic && (k.pressure_viscosity || k.piezoviscosity || k.roelands_index || k.compressibility ||
-                   k.couette_scheme || k.boundary != "free")) {
-    throw InputError(
-        "pressure_viscosity, piezoviscosity, roelands_index, compressibility, couette_scheme and boundary need an "
-        "elastic film: give e_star (or E1, nu1, E2, nu2, or coating)");
-  }
-  Boundary boundary = Boundary::free;
-  try {
-    boundary = parse_boundary(k.boundary);
-  } catch (const InputError& error) {
-    throw InputError(fmt::format("boundary: {}", error.what()));
-  }
-  const Grid grid = heights.ndim() == 1 ? Grid::line(heights.shape(0), dx, boundary)
-                                        : Grid::plane(heights.shape(1), heights.shape(0), dx, dy, boundary);
-  FlowConditions conditions;
-  conditions.viscosity = k.viscosity;
-  conditions.entrainment_velocity = velocity(k.entrainment_velocity, "entrainment_velocity");
-  conditions.sliding_velocity =
-      k.sliding_velocity.empty() ? std::array<double, 2>{0.0, 0.0} : velocity(k.sliding_velocity, "sliding_velocity");
-  conditions.boundary.x = k.periodic_x ? AxisBoundary::periodic : AxisBoundary::fixed_pressure;
-  conditions.boundary.y = k.periodic_y ? AxisBoundary::periodic : AxisBoundary::fixed_pressure;
-  conditions.boundary.x_low_pressure = k.inlet_pressure;
-  conditions.boundary.x_high_pressure = k.outlet_pressure;
-  conditions.boundary.y_low_pressure = k.side_pressure;
-  conditions.boundary.y_high_pressure = k.side_pressure;
-  conditions.boundary.supply_fluid_fraction = k.supply_fluid_fraction;
-  with_keywords([&] { conditions.validate(grid); });
-  if (!elastic) return solve_rigid(grid, z, conditions, k);
+  const KeywordSpelling keywords;
+  const LubricationProblem problem = make_lubrication_problem(options, keywords);
+  const Grid grid = heights.ndim() == 1 ? Grid::line(heights.shape(0), dx, problem.boundary)
+                                        : Grid::plane(heights.shape(1), heights.shape(0), dx, dy, problem.boundary);
+  problem.check_grid(grid, keywords);
+  if (problem.kind == FilmKind::rigid) return solve_rigid(grid, z, problem);
   // The elastic films' FFT plans take the threads in force (process-wide; a
   // solve(threads=) before may have changed them): the program's unless
   // threads= says otherwise, so that the rounding is the program's too.
   try {
-    set_threads(k.threads.value_or(default_threads()));
+    set_threads(threads.value_or(default_threads()));
   } catch (const InputError& error) {
-    throw InputError(fmt::format("threads={}: {}", k.threads.value_or(0), error.what()));
+    throw InputError(fmt::format("threads={}: {}", threads.value_or(0), error.what()));
   }
-  if (k.mixed) return solve_mixed(grid, z, conditions, k, checked_composite_modulus(*k.e_star));
-
-  std::optional<LayeredMaterial> coating;
-  double e_star = 0.0;
-  if (k.coating) {
-    const std::vector<double>& v = *k.coating;
-    if (v.size() != 5) {
-      throw InputError("coating needs five values: thickness, layer_E, layer_nu, substrate_E, substrate_nu");
-    }
-    coating = LayeredMaterial{v[0], {v[1], v[2]}, {v[3], v[4]}};
-    try {
-      validated(*coating);
-    } catch (const InputError& error) {
-      throw InputError(fmt::format("coating: {}", error.what()));
-    }
-    e_star = plane_strain_modulus(coating->layer);
-  } else {
-    e_star = checked_composite_modulus(*k.e_star);
-  }
-  return solve_elastic(grid, z, conditions, k, coating, e_star);
+  if (problem.kind == FilmKind::mixed) return solve_mixed(grid, z, problem);
+  return solve_elastic(grid, z, problem);
 }
 
 }  // namespace
@@ -424,55 +282,73 @@ void bind_lubricate(nb::module_& module) {
   module.def(
       "lubricate",
       [](const nb::object& heights, double dx, double dy, double viscosity, const std::vector<double>& entrainment,
-         const std::vector<double>& sliding, std::optional<double> separation, std::optional<double> force,
+         std::optional<std::vector<double>> sliding, std::optional<double> separation, std::optional<double> force,
          double inlet_pressure, double outlet_pressure, double side_pressure, bool periodic_x, bool periodic_y,
-         double supply_fluid_fraction, std::optional<double> tol, std::optional<int> max_iter,
-         std::optional<double> e_star, std::optional<std::vector<double>> coating, const std::string& boundary,
+         double supply_fluid_fraction, std::optional<double> tol, std::optional<long long> max_iter,
+         std::optional<double> e_star, std::optional<double> e1, std::optional<double> nu1, std::optional<double> e2,
+         std::optional<double> nu2, std::optional<std::vector<double>> coating, std::optional<std::string> boundary,
          std::optional<double> pressure_viscosity, std::optional<std::string> piezoviscosity,
          std::optional<double> roelands_index, std::optional<std::string> compressibility,
-         std::optional<std::string> couette_scheme, double eyring_stress, double limiting_shear_stress,
-         double limiting_shear_slope, bool mixed, std::optional<double> offset, std::optional<double> contact_friction,
-         std::optional<double> boundary_film, std::optional<std::vector<double>> speeds, std::optional<int> threads) {
-        Keywords k;
-        k.viscosity = viscosity;
-        k.entrainment_velocity = entrainment;
-        k.sliding_velocity = sliding;
-        k.separation = separation;
-        k.force = force;
-        k.inlet_pressure = inlet_pressure;
-        k.outlet_pressure = outlet_pressure;
-        k.side_pressure = side_pressure;
-        k.periodic_x = periodic_x;
-        k.periodic_y = periodic_y;
-        k.supply_fluid_fraction = supply_fluid_fraction;
-        k.tol = tol;
-        k.max_iter = max_iter;
-        k.e_star = e_star;
-        k.coating = std::move(coating);
-        k.boundary = boundary;
-        k.pressure_viscosity = pressure_viscosity;
-        k.piezoviscosity = std::move(piezoviscosity);
-        k.roelands_index = roelands_index;
-        k.compressibility = std::move(compressibility);
-        k.couette_scheme = std::move(couette_scheme);
-        k.limits = {eyring_stress, limiting_shear_stress, limiting_shear_slope};
-        k.mixed = mixed;
-        k.offset = offset;
-        k.contact_friction = contact_friction;
-        k.boundary_film = boundary_film;
-        k.speeds = std::move(speeds);
-        k.threads = threads;
-        return lubricate(heights, dx, dy, k);
+         std::optional<std::string> couette_scheme, std::optional<double> eyring_stress,
+         std::optional<double> limiting_shear_stress, std::optional<double> limiting_shear_slope, bool mixed,
+         std::optional<double> offset, std::optional<double> contact_friction, std::optional<double> boundary_film,
+         std::optional<std::vector<double>> speeds, std::optional<int> threads) {
+        LubricationProblemOptions o;
+        o.viscosity = viscosity;
+        o.entrainment_velocity = entrainment;
+        o.sliding_velocity = std::move(sliding);
+        o.separation = separation;
+        o.force = force;
+        o.inlet_pressure = inlet_pressure;
+        o.outlet_pressure = outlet_pressure;
+        o.side_pressure = side_pressure;
+        o.periodic_x = periodic_x;
+        o.periodic_y = periodic_y;
+        o.supply_fluid_fraction = supply_fluid_fraction;
+        o.tolerance = tol;
+        o.max_iterations = max_iter;
+        o.e_star = e_star;
+        o.e1 = e1;
+        o.nu1 = nu1;
+        o.e2 = e2;
+        o.nu2 = nu2;
+        if (coating) {  // _solve._coating's five constants, in its order
+          if (coating->size() != 5) {
+            throw InputError("coating needs five values: thickness, layer_E, layer_nu, substrate_E, substrate_nu");
+          }
+          o.layer_thickness = (*coating)[0];
+          o.layer_e = (*coating)[1];
+          o.layer_nu = (*coating)[2];
+          o.substrate_e = (*coating)[3];
+          o.substrate_nu = (*coating)[4];
+        }
+        o.boundary = std::move(boundary);
+        o.pressure_viscosity = pressure_viscosity;
+        o.piezoviscosity = std::move(piezoviscosity);
+        o.roelands_index = roelands_index;
+        o.compressibility = std::move(compressibility);
+        o.couette_scheme = std::move(couette_scheme);
+        o.eyring_stress = eyring_stress;
+        o.limiting_shear_stress = limiting_shear_stress;
+        o.limiting_shear_slope = limiting_shear_slope;
+        o.mixed = mixed;
+        o.offset = offset;
+        o.contact_friction = contact_friction;
+        o.boundary_film = boundary_film;
+        o.speeds = std::move(speeds);
+        return lubricate(heights, dx, dy, o, threads);
       },
       nb::arg("heights"), nb::arg("dx"), nb::arg("dy"), nb::arg("viscosity"), nb::arg("entrainment_velocity"),
-      nb::arg("sliding_velocity"), nb::arg("separation").none(), nb::arg("force").none(), nb::arg("inlet_pressure"),
-      nb::arg("outlet_pressure"), nb::arg("side_pressure"), nb::arg("periodic_x"), nb::arg("periodic_y"),
-      nb::arg("supply_fluid_fraction"), nb::arg("tol").none(), nb::arg("max_iter").none(), nb::arg("e_star").none(),
-      nb::arg("coating").none(), nb::arg("boundary"), nb::arg("pressure_viscosity").none(),
-      nb::arg("piezoviscosity").none(), nb::arg("roelands_index").none(), nb::arg("compressibility").none(),
-      nb::arg("couette_scheme").none(), nb::arg("eyring_stress"), nb::arg("limiting_shear_stress"),
-      nb::arg("limiting_shear_slope"), nb::arg("mixed"), nb::arg("offset").none(), nb::arg("contact_friction").none(),
-      nb::arg("boundary_film").none(), nb::arg("speeds").none(), nb::arg("threads").none());
+      nb::arg("sliding_velocity").none(), nb::arg("separation").none(), nb::arg("force").none(),
+      nb::arg("inlet_pressure"), nb::arg("outlet_pressure"), nb::arg("side_pressure"), nb::arg("periodic_x"),
+      nb::arg("periodic_y"), nb::arg("supply_fluid_fraction"), nb::arg("tol").none(), nb::arg("max_iter").none(),
+      nb::arg("e_star").none(), nb::arg("E1").none(), nb::arg("nu1").none(), nb::arg("E2").none(),
+      nb::arg("nu2").none(), nb::arg("coating").none(), nb::arg("boundary").none(),
+      nb::arg("pressure_viscosity").none(), nb::arg("piezoviscosity").none(), nb::arg("roelands_index").none(),
+      nb::arg("compressibility").none(), nb::arg("couette_scheme").none(), nb::arg("eyring_stress").none(),
+      nb::arg("limiting_shear_stress").none(), nb::arg("limiting_shear_slope").none(), nb::arg("mixed"),
+      nb::arg("offset").none(), nb::arg("contact_friction").none(), nb::arg("boundary_film").none(),
+      nb::arg("speeds").none(), nb::arg("threads").none());
 }
 
 }  // namespace halfspace::python

@@ -151,8 +151,8 @@ ELASTIC = {"dx": 1e-5, "viscosity": 0.04, "entrainment_velocity": 1.0, "force": 
     ({"sliding_velocity": math.inf}, r"sliding_velocity=inf m/s \(x component\)"),
     ({"eyring_stress": -1.0}, "eyring_stress=-1 Pa is invalid"),
     ({"limiting_shear_slope": -0.05}, "limiting_shear_slope=-0.05 is invalid"),
-    ({"separation": None}, "give exactly one of separation= and force="),
-    ({"force": 1.0}, "give exactly one of separation= and force="),
+    ({"separation": None}, "give exactly one of separation=M and force=N"),
+    ({"force": 1.0}, "give exactly one of separation=M and force=N"),
     ({"pressure_viscosity": 2e-8}, "need an elastic film"),
     ({"periodic_x": True}, "periodic along every axis"),
 ])
@@ -173,10 +173,19 @@ def test_bad_rigid_keyword_is_named(keywords, message):
     ({"boundary": "open"}, "boundary:"),
     ({"e_star": -1.0}, "E\\*|e_star|modulus"),
     ({"E1": 2e11}, "e_star cannot be combined with E1"),
+    ({"e_star": None, "E1": 2e11, "nu1": 0.3}, "incomplete material: missing E2, nu2"),
 ])
 def test_bad_elastic_keyword_is_named(keywords, message):
     with pytest.raises(hs.InputError, match=message):
         hs.lubricate(PROFILE, **{**ELASTIC, **keywords})
+
+
+def test_both_bodies_make_the_composite_modulus():
+    pair = hs.lubricate(PROFILE, **{**ELASTIC, "e_star": None, "E1": 2e11, "nu1": 0.3, "E2": 1e11, "nu2": 0.25})
+    e_star = 1.0 / ((1 - 0.3**2) / 2e11 + (1 - 0.25**2) / 1e11)
+    single = hs.lubricate(PROFILE, **{**ELASTIC, "e_star": e_star})
+    assert pair.e_star == pytest.approx(e_star, rel=1e-14)
+    np.testing.assert_allclose(pair.pressure, single.pressure, rtol=0, atol=1e-9 * single.max_pressure)
 
 
 def test_unknown_keyword_is_refused():

@@ -1,0 +1,106 @@
+// A lubricated film as a front end states it, and the one place its rules
+// live (issue 28): the body (none: a rigid film; E*, both bodies' E and nu,
+// or a coated half-space: an elastic film, EHL), whether the film may close
+// (mixed), the load or separation, the flow, the lubricant's laws, the
+// solvers' settings, the shear limits and the mixed film's extras. The
+// program maps its flags onto LubricationProblemOptions and Python its
+// keywords; make_lubrication_problem checks them and every message names
+// the option as the front end spells it (OptionSpelling, problem.hpp).
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "halfspace/error.hpp"
+#include "halfspace/grid.hpp"
+#include "halfspace/layered_material.hpp"
+#include "halfspace/lubrication/cavitation_solver.hpp"
+#include "halfspace/lubrication/elastic_film.hpp"
+#include "halfspace/lubrication/film_shear.hpp"
+#include "halfspace/lubrication/flow_conditions.hpp"
+#include "halfspace/lubrication/load_control.hpp"
+#include "halfspace/lubrication/lubricant.hpp"
+#include "halfspace/lubrication/mixed_film.hpp"
+#include "halfspace/problem.hpp"
+
+namespace halfspace::lubrication {
+
+// Everything a film is, as given; unset means not given. Each member's
+// name is the option's name in messages ("e_star", "layer_E",
+// "tolerance"), which the front end's OptionSpelling respells.
+struct LubricationProblemOptions {
+  // The body: e_star; or E1, nu1, E2, nu2; or a coated half-space (all five
+  // layer_ and substrate_ constants) against a rigid surface. None: rigid.
+  std::optional<double> e_star, e1, nu1, e2, nu2;
+  std::optional<double> layer_thickness, layer_e, layer_nu, substrate_e, substrate_nu;
+  bool mixed = false;  // the elastic film may close (mixed_film.hpp)
+  // Exactly one: the rigid film's minimum film (separation, m), the load
+  // (force; N, N/m on a profile) or the mixed film's offset h0 (m).
+  std::optional<double> separation, force, offset;
+  // The flow (FlowConditions): Pa s; (x) or (x, y) m/s; Pa.
+  std::optional<double> viscosity;
+  std::optional<std::vector<double>> entrainment_velocity, sliding_velocity;
+  std::optional<double> inlet_pressure, outlet_pressure, side_pressure;
+  bool periodic_x = false, periodic_y = false;
+  std::optional<double> supply_fluid_fraction;
+  // The elastic half-space's boundary ("free" or "periodic"), elastic only.
+  std::optional<std::string> boundary;
+  // The lubricant (LubricantLaws) and the Couette scheme, elastic only.
+  std::optional<double> pressure_viscosity;
+  std::optional<std::string> piezoviscosity;
+  std::optional<double> roelands_index;
+  std::optional<std::string> compressibility;
+  std::optional<std::string> couette_scheme;
+  // The solver of the film in force.
+  std::optional<double> tolerance;
+  std::optional<long long> max_iterations;
+  // The shear (ShearLimits).
+  std::optional<double> eyring_stress, limiting_shear_stress, limiting_shear_slope;
+  // The mixed film: Coulomb's coefficient on contact cells, the thinnest
+  // film the Reynolds equation sees, and a Stribeck sweep's speeds (m/s).
+  std::optional<double> contact_friction, boundary_film;
+  std::optional<std::vector<double>> speeds;
+};
+
+enum class FilmKind { rigid, elastic, mixed };
+
+// A checked film. The grid comes later (a front end reads or builds it), so
+// the rules that need it are a method.
+struct LubricationProblem {
+  FilmKind kind = FilmKind::rigid;
+  double e_star = 0.0;                     // Pa, elastic and mixed; a coating's is its layer's E1 / (1 - nu1^2)
+  std::optional<LayeredMaterial> coating;  // the elastic film's coated half-space
+  Boundary boundary = Boundary::free;      // the elastic half-space's
+  FlowConditions conditions;               // checked on the grid by check_grid
+  LubricantLaws laws;                      // none for the rigid film
+  ShearLimits limits;
+  // The rigid film's solver and its control: the separation, or the load.
+  CavitationSolverOptions cavitation;
+  std::optional<double> separation;
+  std::optional<LoadControlOptions> load_control;
+  ElasticFilmOptions elastic;                 // FilmKind::elastic
+  MixedFilmOptions mixed;                     // FilmKind::mixed (load 0: offset control)
+  std::optional<std::vector<double>> speeds;  // the mixed film's Stribeck sweep
+
+  // The grid's rules: the flow's (FlowConditions::validate(grid)) and the
+  // mixed film's node limit; `surface` names the heights in messages.
+  // Throws InputError naming the option.
+  void check_grid(const Grid& grid, const OptionSpelling& spelling = {},
+                  std::string_view surface = "the surface") const;
+};
+
+// Applies the defaults and checks every option and their combinations that
+// need no grid. Throws InputError with a message naming the option as
+// `spelling` writes it, its value and the rule it broke.
+LubricationProblem make_lubrication_problem(const LubricationProblemOptions& options,
+                                            const OptionSpelling& spelling = {});
+
+// A lubrication option's broken rule (OptionError from the film's options
+// or its solvers: "entrainment_velocity.y", "boundary.x_low_pressure",
+// "load") as the front end writes it: "--inlet-pressure -5 Pa is invalid ...".
+InputError spelled_film_error(const OptionError& error, const OptionSpelling& spelling);
+
+}  // namespace halfspace::lubrication

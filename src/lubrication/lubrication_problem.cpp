@@ -1,0 +1,347 @@
+// The rules of a lubricated film, checked in the order control, body, film
+// kind, lubricant and solver (the body decides the film; the film which
+// options it takes). Numbers are shown with six digits (format_number).
+#include "halfspace/lubrication/lubrication_problem.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <climits>
+#include <utility>
+
+#include "halfspace/material.hpp"
+
+namespace halfspace::lubrication {
+namespace {
+
+// Options paired with whether they were given.
+using Presence = std::vector<std::pair<std::string_view, bool>>;
+
+// The Newton steps an elastic or mixed film may take: beyond, a dense
+// Jacobian's steps would run for days.
+constexpr long long kMaxNewtonSteps = 100000;
+
+class Rules {
+ public:
+  Rules(const LubricationProblemOptions& options, const OptionSpelling& spelling) : o_(options), s_(spelling) {}
+
+  std::string name(std::string_view option) const { return s_.name(option); }
+  std::vector<std::string> given(const Presence& options, bool present = true) const {
+    std::vector<std::string> names;
+    for (const auto& [option, is_given] : options) {
+      if (is_given == present) names.push_back(name(option));
+    }
+    return names;
+  }
+  std::vector<std::string> names(std::initializer_list<std::string_view> options) const {
+    std::vector<std::string> all;
+    for (const std::string_view option : options) all.push_back(name(option));
+    return all;
+  }
+  Presence layers() const {
+    return {{"layer_thickness", o_.layer_thickness.has_value()},
+            {"layer_E", o_.layer_e.has_value()},
+            {"layer_nu", o_.layer_nu.has_value()},
+            {"substrate_E", o_.substrate_e.has_value()},
+            {"substrate_nu", o_.substrate_nu.has_value()}};
+  }
+  Presence pair() const {
+    return {
+        {"E1", o_.e1.has_value()}, {"nu1", o_.nu1.has_value()}, {"E2", o_.e2.has_value()}, {"nu2", o_.nu2.has_value()}};
+  }
+  // A library parse of a named option's text, its error prefixed by the
+  // option and its value.
+  template <class Parse>
+  auto parsed(std::string_view option, const std::string& value, Parse&& parse) const {
+    try {
+      return parse(value);
+    } catch (const InputError& error) {
+      throw InputError(fmt::format("{}: {}", s_.describe(option, "'" + value + "'"), error.what()));
+    }
+  }
+
+  void control() const;
+  std::optional<LayeredMaterial> coating() const;
+  std::optional<double> body() const;
+  FilmKind kind(bool elastic, bool coated) const;
+  FlowConditions conditions() const;
+  LubricantLaws laws() const;
+  int max_iterations(bool newton) const;
+
+ private:
+  const LubricationProblemOptions& o_;
+  const OptionSpelling& s_;
+};
+
+// Exactly one of the separation (rigid), the force and the offset (mixed);
+// the mixed film's options only with it.
+void Rules::control() const {
+  const int controls = o_.separation.has_value() + o_.force.has_value() + o_.offset.has_value();
+  if (controls != 1) {
+    throw InputError(
+        o_.mixed
+            ? fmt::format("give exactly one of {} and {}", s_.describe("force", "N"), s_.describe("offset", "M"))
+            : fmt::format("give exactly one of {} and {}", s_.describe("separation", "M"), s_.describe("force", "N")));
+  }
+  if (!o_.mixed && (o_.offset || o_.contact_friction || o_.boundary_film || o_.speeds)) {
+    throw InputError(fmt::format("{} belong to the mixed film: add {}",
+                                 fmt::join(names({"offset", "contact_friction", "boundary_film", "speeds"}), ", "),
+                                 name("mixed")));
+  }
+}
+
+// A coated half-space from all five constants, or none.
+std::optional<LayeredMaterial> Rules::coating() const {
+  const Presence constants = layers();
+  const std::vector<std::string> present = given(constants);
+  if (present.empty()) return std::nullopt;
+  if (present.size() < 5) {
+    throw InputError(
+        fmt::format("incomplete coated body: missing {} (give all of {})", fmt::join(given(constants, false), ", "),
+                    fmt::join(names({"layer_thickness", "layer_E", "layer_nu", "substrate_E", "substrate_nu"}), ", ")));
+  }
+  std::vector<std::string> material = given(pair());
+  if (o_.e_star) material.insert(material.begin(), name("e_star"));
+  if (!material.empty()) {
+    throw InputError(fmt::format("a coated body ({}) replaces {}: the other surface is rigid", fmt::join(present, ", "),
+                                 fmt::join(material, ", ")));
+  }
+  const LayeredMaterial coating{*o_.layer_thickness, {*o_.layer_e, *o_.layer_nu}, {*o_.substrate_e, *o_.substrate_nu}};
+  try {
+    return validated(coating);
+  } catch (const InputError& error) {
+    throw InputError(fmt::format("the coated body ({}): {}", fmt::join(present, ", "), error.what()));
+  }
+}
+
+// E* of e_star or of E1, nu1, E2, nu2; none for a rigid film.
+std::optional<double> Rules::body() const {
+  const Presence constants = pair();
+  const std::vector<std::string> present = given(constants);
+  if (o_.e_star && !present.empty()) {
+    throw InputError(fmt::format("{} cannot be combined with {}: give either {} or all of {}", name("e_star"),
+                                 fmt::join(present, ", "), name("e_star"),
+                                 fmt::join(names({"E1", "nu1", "E2", "nu2"}), ", ")));
+  }
+  try {
+    if (o_.e_star) return checked_composite_modulus(*o_.e_star);
+  } catch (const InputError& error) {
+    throw InputError(fmt::format("{}: {}", s_.describe("e_star", format_number(*o_.e_star) + " Pa"), error.what()));
+  }
+  if (present.empty()) return std::nullopt;
+  if (present.size() < 4) {
+    throw InputError(fmt::format("incomplete material: missing {} (give all of {}, or {})",
+                                 fmt::join(given(constants, false), ", "),
+                                 fmt::join(names({"E1", "nu1", "E2", "nu2"}), ", "), name("e_star")));
+  }
+  try {
+    return checked_composite_modulus(composite_modulus({*o_.e1, *o_.nu1}, {*o_.e2, *o_.nu2}));
+  } catch (const InputError& error) {
+    throw InputError(fmt::format("{}: {}", fmt::join(present, ", "), error.what()));
+  }
+}
+
+// The film the body makes, and the options only an elastic film takes.
+FilmKind Rules::kind(bool elastic, bool coated) const {
+  const std::string bodies =
+      fmt::format("{} (or {})", name("e_star"), fmt::join(names({"E1", "nu1", "E2", "nu2"}), ", "));
+  if (o_.mixed) {
+    if (!elastic) throw InputError(fmt::format("{} needs an elastic body: give {}", name("mixed"), bodies));
+    if (coated) {
+      throw InputError(
+          fmt::format("{} takes a homogeneous body: a coating is not supported by the mixed film yet "
+                      "(drop {})",
+                      name("mixed"), fmt::join(given(layers()), ", ")));
+    }
+  }
+  if (!elastic) {
+    const std::vector<std::string> present = given({{"pressure_viscosity", o_.pressure_viscosity.has_value()},
+                                                    {"piezoviscosity", o_.piezoviscosity.has_value()},
+                                                    {"roelands_index", o_.roelands_index.has_value()},
+                                                    {"compressibility", o_.compressibility.has_value()},
+                                                    {"couette_scheme", o_.couette_scheme.has_value()},
+                                                    {"boundary", o_.boundary.has_value()}});
+    if (!present.empty()) {
+      throw InputError(fmt::format(
+          "{} need an elastic film: give {} (or {}, or a coated body, {})", fmt::join(present, ", "), name("e_star"),
+          fmt::join(names({"E1", "nu1", "E2", "nu2"}), ", "),
+          fmt::join(names({"layer_thickness", "layer_E", "layer_nu", "substrate_E", "substrate_nu"}), ", ")));
+    }
+    return FilmKind::rigid;
+  }
+  if (o_.mixed) {
+    if (o_.separation) {
+      throw InputError(fmt::format("{} is the rigid film's: the mixed film takes {} or {}", name("separation"),
+                                   s_.describe("force", "N"), s_.describe("offset", "M")));
+    }
+    if (o_.speeds && !o_.force) {
+      throw InputError(
+          fmt::format("a Stribeck sweep ({}) is load controlled: pass {}", name("speeds"), s_.describe("force", "N")));
+    }
+    return FilmKind::mixed;
+  }
+  if (!o_.force) {
+    throw InputError(fmt::format("an elastic film (EHL) is load controlled: pass {}, not {}", s_.describe("force", "N"),
+                                 name("separation")));
+  }
+  return FilmKind::elastic;
+}
+
+FlowConditions Rules::conditions() const {
+  if (!o_.viscosity) throw InputError(fmt::format("no viscosity given: pass {}", s_.describe("viscosity", "PA_S")));
+  if (!o_.entrainment_velocity) {
+    throw InputError(
+        fmt::format("no entrainment velocity given: pass {}", s_.describe("entrainment_velocity", "UX[,UY]")));
+  }
+  const auto velocity = [&](std::string_view option, const std::optional<std::vector<double>>& given) {
+    if (!given) return std::array<double, 2>{0.0, 0.0};
+    if (given->empty() || given->size() > 2) {
+      throw InputError(fmt::format("{} has {} values: give UX or UX,UY (m/s)", name(option), given->size()));
+    }
+    return std::array<double, 2>{(*given)[0], given->size() == 2 ? (*given)[1] : 0.0};
+  };
+  FlowConditions conditions;
+  conditions.viscosity = *o_.viscosity;
+  conditions.entrainment_velocity = velocity("entrainment_velocity", o_.entrainment_velocity);
+  conditions.sliding_velocity = velocity("sliding_velocity", o_.sliding_velocity);
+  FlowBoundary& boundary = conditions.boundary;
+  boundary.x = o_.periodic_x ? AxisBoundary::periodic : AxisBoundary::fixed_pressure;
+  boundary.y = o_.periodic_y ? AxisBoundary::periodic : AxisBoundary::fixed_pressure;
+  boundary.x_low_pressure = o_.inlet_pressure.value_or(0.0);
+  boundary.x_high_pressure = o_.outlet_pressure.value_or(0.0);
+  boundary.y_low_pressure = o_.side_pressure.value_or(0.0);
+  boundary.y_high_pressure = o_.side_pressure.value_or(0.0);
+  boundary.supply_fluid_fraction = o_.supply_fluid_fraction.value_or(1.0);
+  return conditions;
+}
+
+// Barus when alpha is given without a law; Dowson-Higginson unless told.
+LubricantLaws Rules::laws() const {
+  LubricantLaws laws;
+  laws.pressure_viscosity = o_.pressure_viscosity.value_or(0.0);
+  laws.roelands_index = o_.roelands_index.value_or(0.0);
+  laws.piezoviscosity = o_.piezoviscosity ? parsed("piezoviscosity", *o_.piezoviscosity, parse_piezoviscosity)
+                        : laws.pressure_viscosity > 0.0 ? Piezoviscosity::barus
+                                                        : Piezoviscosity::none;
+  laws.compressibility = o_.compressibility ? parsed("compressibility", *o_.compressibility, parse_compressibility)
+                                            : Compressibility::dowson_higginson;
+  return laws;
+}
+
+// The film solver's limit: sweeps of the rigid film (beyond int, no limit:
+// validate() sees the nearest int), Newton steps of the others.
+int Rules::max_iterations(bool newton) const {
+  const long long given = *o_.max_iterations;
+  if (newton && (given < 1 || given > kMaxNewtonSteps)) {
+    throw OptionError("max_iterations", fmt::format("{}", given),
+                      fmt::format("is invalid: allowed range is 1 to {}", kMaxNewtonSteps));
+  }
+  return static_cast<int>(std::clamp<long long>(given, INT_MIN, INT_MAX));
+}
+
+// The option of LubricationProblemOptions that sets each member a film's
+// OptionError names, and the component of a velocity.
+std::pair<std::string_view, std::string_view> problem_name(std::string_view member) {
+  static constexpr std::array<std::pair<std::string_view, std::string_view>, 6> kMembers{{
+      {"boundary.x_low_pressure", "inlet_pressure"},
+      {"boundary.x_high_pressure", "outlet_pressure"},
+      {"boundary.y_low_pressure", "side_pressure"},
+      {"boundary.y_high_pressure", "side_pressure"},
+      {"boundary.supply_fluid_fraction", "supply_fluid_fraction"},
+      {"load", "force"},
+  }};
+  for (const std::string_view velocity : {"entrainment_velocity", "sliding_velocity"}) {
+    if (!member.starts_with(velocity)) continue;
+    return {velocity, member.ends_with(".x") ? " (x component)" : member.ends_with(".y") ? " (y component)" : ""};
+  }
+  for (const auto& [known, option] : kMembers) {
+    if (known == member) return {option, ""};
+  }
+  return {member, ""};  // viscosity, separation, tolerance, max_iterations, offset, speeds, ...
+}
+
+}  // namespace
+
+InputError spelled_film_error(const OptionError& error, const OptionSpelling& spelling) {
+  const auto [option, component] = problem_name(error.option());
+  return InputError(fmt::format("{}{} {}", spelling.describe(option, error.value()), component, error.rule()));
+}
+
+LubricationProblem make_lubrication_problem(const LubricationProblemOptions& options, const OptionSpelling& spelling) {
+  const Rules rules(options, spelling);
+  const LubricationProblemOptions& o = options;
+  try {
+    LubricationProblem problem;
+    rules.control();
+    problem.conditions = rules.conditions();
+    problem.coating = rules.coating();
+    const std::optional<double> e_star =
+        problem.coating ? std::optional<double>(plane_strain_modulus(problem.coating->layer)) : rules.body();
+    problem.kind = rules.kind(e_star.has_value(), problem.coating.has_value());
+    problem.e_star = e_star.value_or(0.0);
+    problem.limits = {o.eyring_stress.value_or(0.0), o.limiting_shear_stress.value_or(0.0),
+                      o.limiting_shear_slope.value_or(0.0)};
+    problem.limits.validate();
+    if (problem.kind == FilmKind::rigid) {
+      if (o.tolerance) problem.cavitation.tolerance = *o.tolerance;
+      if (o.max_iterations) problem.cavitation.max_iterations = rules.max_iterations(false);
+      problem.cavitation.validate();
+      problem.separation = o.separation;
+      if (o.force) {
+        problem.load_control = LoadControlOptions{.load = *o.force};
+        problem.load_control->validate();
+      }
+      return problem;
+    }
+    if (o.boundary) {
+      try {
+        problem.boundary = parse_boundary(*o.boundary);
+      } catch (const InputError& error) {
+        throw InputError(fmt::format("{}: {}", rules.name("boundary"), error.what()));
+      }
+    }
+    problem.laws = rules.laws();
+    const std::optional<CouetteScheme> scheme =
+        o.couette_scheme ? std::optional(rules.parsed("couette_scheme", *o.couette_scheme, parse_couette_scheme))
+                         : std::nullopt;
+    if (problem.kind == FilmKind::elastic) {
+      ElasticFilmOptions& elastic = problem.elastic;
+      elastic.load = *o.force;
+      if (o.tolerance) elastic.tolerance = *o.tolerance;
+      if (o.max_iterations) elastic.max_iterations = rules.max_iterations(true);
+      if (scheme) elastic.couette_scheme = *scheme;
+      elastic.validate();
+      return problem;
+    }
+    MixedFilmOptions& mixed = problem.mixed;
+    mixed.load = o.force.value_or(0.0);
+    mixed.offset = o.offset.value_or(0.0);
+    if (o.boundary_film) mixed.boundary_film = *o.boundary_film;
+    if (o.tolerance) mixed.tolerance = *o.tolerance;
+    if (o.max_iterations) mixed.max_iterations = rules.max_iterations(true);
+    if (scheme) mixed.couette_scheme = *scheme;
+    if (o.contact_friction) mixed.friction.contact_friction = *o.contact_friction;
+    mixed.friction.shear = problem.limits;
+    mixed.validate();
+    problem.speeds = o.speeds;
+    return problem;
+  } catch (const OptionError& error) {
+    throw spelled_film_error(error, spelling);
+  }
+}
+
+void LubricationProblem::check_grid(const Grid& grid, const OptionSpelling& spelling, std::string_view surface) const {
+  try {
+    conditions.validate(grid);
+    if (kind != FilmKind::rigid) laws.validate(conditions.viscosity);
+  } catch (const OptionError& error) {
+    throw spelled_film_error(error, spelling);
+  }
+  if (kind == FilmKind::mixed && grid.size() > kMaxMixedFilmNodes) {
+    throw InputError(fmt::format("{} has {} points: the mixed film's dense Newton path allows at most {} (coarsen it)",
+                                 surface, grid.size(), kMaxMixedFilmNodes));
+  }
+}
+
+}  // namespace halfspace::lubrication
