@@ -4,21 +4,14 @@
 // six digits (format_number).
 #include "halfspace/problem.hpp"
 
-#include <fmt/format.h>
 #include <fmt/ranges.h>
 
 #include <Eigen/Core>
 #include <algorithm>
-#include <array>
 #include <climits>
-#include <cmath>
-#include <initializer_list>
 #include <tuple>
-#include <utility>
 
-#include "halfspace/error.hpp"
 #include "halfspace/material.hpp"
-#include "halfspace/physical_ranges.hpp"
 #include "halfspace/threads.hpp"
 #include "problem_rules.hpp"
 
@@ -89,15 +82,6 @@ std::string_view problem_name(std::string_view member) {
   return "solver";
 }
 
-std::string text(double value) {
-  return format_number(value);
-}
-std::string text(long long value) {
-  return fmt::format("{}", value);
-}
-std::string text(const std::string& value) {
-  return value;
-}
 std::string text(const std::vector<double>& values) {
   std::vector<std::string> parts;
   for (const double value : values) parts.push_back(format_number(value));

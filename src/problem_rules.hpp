@@ -30,9 +30,15 @@ std::string_view problem_name(std::string_view member);
 
 // The text of a given value as the library shows it: "1,-2" for a list,
 // "1,0;2,0" for steps (x, y).
-std::string text(double value);
-std::string text(long long value);
-std::string text(const std::string& value);
+inline std::string text(double value) {
+  return format_number(value);
+}
+inline std::string text(long long value) {
+  return fmt::format("{}", value);
+}
+inline std::string text(const std::string& value) {
+  return value;
+}
 std::string text(const std::vector<double>& values);
 std::string text(const std::vector<std::array<double, 2>>& steps);
 
