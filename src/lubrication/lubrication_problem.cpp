@@ -1,14 +1,19 @@
-// The rules of a lubricated film, checked in the order control, body, film
-// kind, lubricant and solver (the body decides the film; the film which
-// options it takes). Numbers are shown with six digits (format_number).
+// The rules of a lubricated film, checked in the order control, flow, body,
+// film kind, shear, lubricant and solver (the body decides the film; the
+// film which options it takes). Numbers are shown with six digits
+// (format_number).
 #include "halfspace/lubrication/lubrication_problem.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <array>
 #include <climits>
+#include <initializer_list>
+#include <string>
 #include <utility>
+#include <vector>
 
 #include "halfspace/material.hpp"
 
@@ -18,8 +23,8 @@ namespace {
 // Options paired with whether they were given.
 using Presence = std::vector<std::pair<std::string_view, bool>>;
 
-// The Newton steps an elastic or mixed film may take: beyond, a dense
-// Jacobian's steps would run for days.
+// The Newton steps an elastic or mixed film may be given: the range
+// `halfspace lubricate` has always held (Python now shares it).
 constexpr long long kMaxNewtonSteps = 100000;
 
 class Rules {
