@@ -131,7 +131,15 @@ ActiveSetRecord ActiveSetStart::run(std::span<const double> initial_gap, const L
       if (load_controlled) {
         approach = linalg::sum(comm, n, [&](std::size_t i) { return in_set[i] * (g0[i] + u[i]); }) / set_size;
       }
-      for_each_index(n, [&](std::size_t i) { kt[i] = in_set[i] * (g0[i] + u[i] - approach); });
+      // The residual r on C and its norm, tested before M^-1 is applied:
+      // the application that would only confirm the end is not made.
+      const double rr = linalg::sum(comm, n, [&](std::size_t i) {
+        kt[i] = in_set[i] * (g0[i] + u[i] - approach);
+        return kt[i] * kt[i];
+      });
+      inner_norms_.push_back(std::sqrt(rr));
+      if (inner == 0) first_norm = rr;
+      if (!(rr > options_.inner_reduction * options_.inner_reduction * first_norm)) break;
       if (preconditioner_.adapt(set, inner_norms_)) conjugate = false;
       preconditioner_.apply({kt, n}, {kt, n});
       ++record.preconditioner_applications;
@@ -141,9 +149,6 @@ ActiveSetRecord ActiveSetStart::run(std::span<const double> initial_gap, const L
       const double z_mean = load_controlled ? z_sum / set_size : 0.0;
       // The gap is mean-free on C, so sum g (z - mean z) = sum g z.
       const double norm = gz;
-      inner_norms_.push_back(std::sqrt(std::max(norm, 0.0)));
-      if (inner == 0) first_norm = norm;
-      if (!(norm > options_.inner_reduction * options_.inner_reduction * first_norm)) break;
       const double beta = conjugate ? norm / previous_norm : 0.0;
       previous_norm = norm;
       for_each_index(n, [&](std::size_t i) { t[i] = in_set[i] * ((kt[i] - z_mean) + beta * t[i]); });
@@ -191,6 +196,9 @@ ActiveSetRecord ActiveSetStart::run(std::span<const double> initial_gap, const L
   SolveResult preconditioner_work;
   preconditioner_.report(preconditioner_work);
   record.operator_applications += preconditioner_work.operator_applications;
+  // Polonsky-Keer continues on the set the phase found: whether the
+  // correction pays was measured here already.
+  preconditioner_.continue_next_solve();
   return record;
 }
 

@@ -21,7 +21,8 @@ BalancingPreconditioner::BalancingPreconditioner(InfluenceOperator& op, Precondi
 }
 
 void BalancingPreconditioner::begin_solve() {
-  schedule_.begin_solve();
+  if (!continuing_) schedule_.begin_solve();
+  continuing_ = false;
   active_ = false;
   operator_applications_ = 0;
   deflated_iterations_ = 0;

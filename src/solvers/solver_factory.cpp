@@ -130,13 +130,13 @@ std::unique_ptr<ContactSolver> make_polonsky_keer(const Grid& grid, const HalfSp
 // only, where the contact has the most spots.
 std::unique_ptr<ContactSolver> make_multilevel(const Grid& grid, const HalfSpace& half_space,
                                                const SolverOptions& options, const Layout& layout) {
-  // With the active-set phase, block deflation (unless turned off) wherever
-  // its block covers the grid: the phase's linear solves on a fixed set
-  // need no settling before the correction joins.
+  // With the active-set phase, block deflation (unless turned off) from a
+  // smaller grid on: the phase's linear solves on a fixed set need no
+  // settling before the correction joins.
   const bool active_set = options.multilevel.active_set && !options.interface_law.hardness;
   const bool deflated = multilevel_deflates(grid, options) ||
                         (active_set && options.deflation.mode == DeflationOptions::Mode::automatic &&
-                         BlockDeflation::covers(grid, options.deflation.block));
+                         options.deflation.automatic_applies_with_active_set(grid));
   std::unique_ptr<LevelTransfer> transfer = layout.level_transfer(grid, options.multilevel.min_cells_per_axis);
   const LevelTransfer* levels = transfer.get();  // owned by the solver, as is this factory
   auto make_level = [half_space, options, deflated, active_set, levels, &layout](const Grid& level, double tolerance,

@@ -91,6 +91,10 @@ bool DeflationOptions::automatic_applies(const Grid& grid) const {
   return grid.size() >= kAutomaticFromCells && BlockDeflation::covers(grid, block);
 }
 
+bool DeflationOptions::automatic_applies_with_active_set(const Grid& grid) const {
+  return grid.size() >= kAutomaticWithActiveSetFromCells && BlockDeflation::covers(grid, block);
+}
+
 void MultilevelOptions::validate() const {
   if (!(coarse_tolerance > 0.0 && coarse_tolerance < 1.0)) {
     throw SolverOptionError("multilevel.coarse_tolerance", text(coarse_tolerance),

@@ -79,6 +79,25 @@ TEST_P(ActiveSetStartTest, MatchesTheDefaultSolverAndCountsItsWork) {
 INSTANTIATE_TEST_SUITE_P(Boundaries, ActiveSetStartTest, ::testing::Values(Boundary::periodic, Boundary::free),
                          testing::boundary_param_name);
 
+// Whether block deflation pays is measured in the phase; Polonsky-Keer,
+// finishing on the same contact, keeps that verdict instead of spending
+// undeflated iterations measuring it again.
+TEST(ActiveSetStartDeflationTest, PolonskyKeerKeepsThePhasesVerdict) {
+  const Grid grid = Grid::plane(256, 256, 1.0, 1.0, Boundary::periodic);
+  const Eigen::ArrayXd gap = self_affine_gap(grid, 3);
+  SolverOptions options = settings(true);
+  options.deflation.mode = DeflationOptions::Mode::on;
+  const SolveResult result =
+      make_solver(grid, kEStar, options)->solve({gap.data(), grid.size()}, Loading::mean_pressure(0.004));
+  ASSERT_TRUE(result.converged()) << result.message;
+  const int finish = result.iterations - result.active_set_inner;
+  std::printf("%d iterations (%d in %d set updates), Polonsky-Keer %d, of them deflated %d, fast rate %g\n",
+              result.iterations, result.active_set_inner, result.active_set_outer, finish,
+              result.deflation.deflated_iterations, result.deflation.fast_rate);
+  ASSERT_EQ(result.deflation.fast_rate, 0.0) << "the correction pays on this contact";
+  EXPECT_EQ(result.deflation.deflated_iterations, finish) << "every Polonsky-Keer iteration deflated";
+}
+
 // Hertz on a free grid: the contact radius (3 F R / 4 E*)^(1/3) within the
 // discretisation error, as the default solver has it.
 TEST(ActiveSetStartHertzTest, ReproducesTheHertzContactRadius) {

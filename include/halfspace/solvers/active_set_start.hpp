@@ -24,7 +24,10 @@
 // set, when the changes stop falling (the method need not converge for a
 // dense K, which is no M-matrix), or after max_outer updates; the pressure,
 // max(p, 0), is then the start of the Polonsky-Keer solve, which checks the
-// contact conditions as every solve does. Without a start, or with a
+// contact conditions as every solve does. An adapting preconditioner carries
+// its verdict over (Preconditioner::continue_next_solve): whether block
+// deflation pays was measured in the phase, on the same contact, so
+// Polonsky-Keer does not spend undeflated iterations measuring it again. Without a start, or with a
 // hardness cap, the solve is Polonsky-Keer's alone (the factory does not
 // build this phase for capped contacts).
 #pragma once

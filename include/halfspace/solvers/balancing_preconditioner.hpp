@@ -31,7 +31,9 @@ class BalancingPreconditioner final : public Preconditioner {
   void apply(std::span<const double> in, std::span<double> out) override;
 
   std::string_view kind() const override { return "deflated"; }
+  // Forgets the schedule's verdict unless continue_next_solve() came first.
   void begin_solve() override;
+  void continue_next_solve() override { continuing_ = true; }
   // Asks the schedule, and brings the coarse matrix up to the contact set
   // when the correction applies (the first time in this object's life, also
   // the kernel K e_0: one product, and the correction's field).
@@ -50,6 +52,7 @@ class BalancingPreconditioner final : public Preconditioner {
   DeflationSchedule schedule_;
   SearchSet set_;
   bool active_ = false;        // the correction applies in this iteration
+  bool continuing_ = false;    // the next begin_solve() keeps the schedule
   bool kernel_known_ = false;  // deflation_ has the kernel (one product, when first needed)
   // Made when the correction first applies: Z y as a field, then K of it,
   // then K of M^-1's output (8 B per cell, none for a solve that never

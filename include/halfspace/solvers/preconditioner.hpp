@@ -57,6 +57,10 @@ class Preconditioner {
   virtual std::string_view kind() const { return "preconditioned"; }
   // A contact solve begins.
   virtual void begin_solve() {}
+  // The next begin_solve() continues the iteration of the current solve on
+  // the same contact (a phase handing over to the solver that finishes):
+  // an adapting M^-1 keeps what it has learned about the iteration.
+  virtual void continue_next_solve() {}
   // Before an application in a contact solve: the iterate's search set
   // (valid until the application) and the residuals so far. Returns whether
   // M^-1 changed since the last application, so that the solver restarts

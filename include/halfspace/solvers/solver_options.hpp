@@ -82,8 +82,8 @@ struct MultilevelOptions {
   double warm_start_max_load_ratio = 1.5;
   // The fine grid's solve begins with a primal-dual active-set phase from
   // the prolonged start (active_set_start.hpp) on 2D grids without a
-  // hardness cap; block deflation then applies wherever its block covers
-  // the grid, unless turned off.
+  // hardness cap; block deflation then applies from
+  // DeflationOptions::kAutomaticWithActiveSetFromCells on, unless turned off.
   bool active_set = false;
   ActiveSetOptions active_set_options;
 
@@ -112,6 +112,15 @@ struct DeflationOptions : BlockDeflationOptions {
   // least kAutomaticFromCells cells, and `block` dividing it into at least
   // 3 blocks per axis (BlockDeflation::covers).
   bool automatic_applies(const Grid& grid) const;
+  // With pk_multilevel's active-set phase the correction joins the phase's
+  // linear solves on a fixed set and pays from this many cells; below, the
+  // phase's solves are short enough without it (rough surfaces, 256^2 and
+  // 512^2: 8 % fewer FFT pairs without it, 1024^2: 11 % more;
+  // docs/development-log.md, "fewer FFT pairs per solve").
+  static constexpr std::size_t kAutomaticWithActiveSetFromCells = std::size_t{1} << 20;
+  // Whether automatic mode deflates the active-set phase and its finish on
+  // `grid`: as automatic_applies, from kAutomaticWithActiveSetFromCells.
+  bool automatic_applies_with_active_set(const Grid& grid) const;
 };
 
 std::string_view to_string(DeflationOptions::Mode mode);
