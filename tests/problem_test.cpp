@@ -12,18 +12,12 @@
 
 #include "halfspace/error.hpp"
 #include "halfspace/material.hpp"
+#include "support/flag_spelling.hpp"
 
 namespace halfspace {
 namespace {
 
-// A front end that writes options as flags, for the messages below.
-class Flags : public OptionSpelling {
- public:
-  std::string name(std::string_view option) const override { return "--" + std::string(option); }
-  std::string describe(std::string_view option, std::string_view value) const override {
-    return name(option) + " " + std::string(value);
-  }
-};
+using Flags = testing::FlagSpelling;  // a program's spelling ("--name value")
 
 ProblemOptions sphere_problem() {
   ProblemOptions options;

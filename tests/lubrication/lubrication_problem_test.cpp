@@ -10,18 +10,12 @@
 #include <vector>
 
 #include "halfspace/error.hpp"
+#include "support/flag_spelling.hpp"
 
 namespace halfspace::lubrication {
 namespace {
 
-// The library's spelling ("name=value") and a program's ("--name value").
-class Flags : public OptionSpelling {
- public:
-  std::string name(std::string_view option) const override { return "--" + std::string(option); }
-  std::string describe(std::string_view option, std::string_view value) const override {
-    return name(option) + " " + std::string(value);
-  }
-};
+using Flags = testing::FlagSpelling;  // a program's spelling ("--name value")
 
 LubricationProblemOptions rigid_film() {
   LubricationProblemOptions options;
