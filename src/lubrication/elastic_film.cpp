@@ -248,6 +248,13 @@ ElasticFilm detail::solve_film_newton(InfluenceOperator& op, const Eigen::ArrayX
     const solvers::SolveResult contact = dry.solve({gap.data(), n}, solvers::Loading::force(w));
     if (!contact.converged()) {
       result.message = fmt::format("the dry contact that starts the EHL solve did not converge: {}", contact.message);
+      // Fields of the grid's size all the same, so that the failure is
+      // written and reported like any other: no pressure, the undeformed
+      // film, full of fluid.
+      result.pressure = Eigen::ArrayXd::Zero(ni);
+      result.fluid_fraction = Eigen::ArrayXd::Ones(ni);
+      result.film = gap;
+      result.deformation = Eigen::ArrayXd::Zero(ni);
       return result;
     }
     pressure_scale = contact.max_pressure;
