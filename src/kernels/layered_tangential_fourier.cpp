@@ -13,10 +13,10 @@
 // coupling_fourier.hpp's relative ones (there the traction is the one body 1
 // exerts on body 2): D_eff is written in the latter's sign, which gives
 // (1 - 2 nu)/G for a homogeneous body.
-// Antiplane: u_y = a e^{-q z} + b e^{q z} in the layer, c e^{-q (z - t)} in
-// the substrate, continuous u_y and mu du_y/dz at z = t, mu1 du_y/dz = -T at
-// the surface: u_y(0) = (T/(mu1 q)) (1 + k e^{-2 s})/(1 - k e^{-2 s}),
-// k = (mu1 - mu2)/(mu1 + mu2), s = q t (1/mu2 for s -> 0, 1/mu1 for s -> inf).
+// Antiplane: u_y(0) = (T/(mu1 q)) (1 + k e^{-2 s})/(1 - k e^{-2 s}),
+// k = (mu1 - mu2)/(mu1 + mu2), s = q t (1/mu2 for s -> 0, 1/mu1 for s -> inf),
+// the surface value of the antiplane field of
+// stress/layered_fourier_shear_stress.cpp.
 #include "halfspace/kernels/layered_tangential_fourier.hpp"
 
 #include <cmath>
@@ -26,25 +26,21 @@
 
 namespace halfspace::kernels {
 
-LayeredTangentialKernel::LayeredTangentialKernel(const LayeredMaterial& material) : modes_(material) {
+LayeredTangentialKernel::LayeredTangentialKernel(const LayeredMaterial& material)
+    : modes_(material), antiplane_(material) {
   const ElasticBody& layer = material.layer;
-  const ElasticBody& substrate = material.substrate;
   layer_shear_modulus_ = layer.youngs_modulus / (2.0 * (1.0 + layer.poissons_ratio));
-  const double mu2 = substrate.youngs_modulus / (2.0 * (1.0 + substrate.poissons_ratio));
-  antiplane_ratio_ = (layer_shear_modulus_ - mu2) / (layer_shear_modulus_ + mu2);
 }
 
 LayeredModeCompliance LayeredTangentialKernel::mode_compliance(double q) const {
   const double nu1 = modes_.material().layer.poissons_ratio;
   const double mu1 = layer_shear_modulus_;
   const stress::SurfaceDerivatives pressure = modes_.surface_derivatives(modes_.solve(q, 1.0, 0.0));
-  const stress::SurfaceDerivatives shear = modes_.surface_derivatives(modes_.solve(q, 0.0, 1.0));
-  const double e = std::exp(-2.0 * std::abs(q) * modes_.thickness());
-  const double k = antiplane_ratio_;
+  const stress::SurfaceDerivatives shear = modes_.surface_derivatives(modes_.solve_shear(q));
   LayeredModeCompliance c;
   c.normal = (1.0 - nu1) * pressure.third / (2.0 * mu1);
   c.longitudinal = -(1.0 - nu1) * shear.second / (2.0 * mu1);
-  c.transverse = (1.0 + k * e) / ((1.0 - k * e) * mu1);
+  c.transverse = antiplane_.surface_displacement(q) / mu1;
   c.coupling = -((1.0 - nu1) * pressure.second + nu1) / mu1;
   c.coupling_transpose = ((1.0 - nu1) * shear.third - (2.0 - nu1)) / mu1;
   return c;

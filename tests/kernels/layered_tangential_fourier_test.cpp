@@ -31,20 +31,9 @@ double shear_modulus(double e, double nu) {
   return e / (2.0 * (1.0 + nu));
 }
 
-// The antiplane mode (q = 1/m) by its 3 x 3 system: u_y = a e^{-z} + b
-// e^{z - t} in the layer, c e^{-(z - t)} below; mu1 u_y'(0) = -1 Pa,
-// continuous u_y and mu u_y' at z = t. Returns u_y(0) (m).
+// The antiplane mode's u_y(0) (m) under a unit shear across q (q = 1/m).
 double direct_antiplane_displacement(const LayeredMaterial& m) {
-  const double mu1 = shear_modulus(m.layer.youngs_modulus, m.layer.poissons_ratio);
-  const double mu2 = shear_modulus(m.substrate.youngs_modulus, m.substrate.poissons_ratio);
-  const double e = std::exp(-m.thickness);
-  Eigen::Matrix3d a;
-  a << -1.0, e, 0.0,  //
-      e, 1.0, -1.0,   //
-      -e, 1.0, mu2 / mu1;
-  const Eigen::Vector3d rhs(-1.0 / mu1, 0.0, 0.0);
-  const Eigen::Vector3d x = a.fullPivLu().solve(rhs);
-  return x(0) + x(1) * e;
+  return testing::solve_layered_antiplane(m, 1.0).at(0.0, true)[0];
 }
 
 // A homogeneous body's four compliances times q (layered_tangential_fourier.hpp).

@@ -13,6 +13,7 @@
 #include "halfspace/kernels/coupling_coefficients.hpp"
 #include "halfspace/kernels/tangential_coefficients.hpp"
 #include "halfspace/layered_material.hpp"
+#include "halfspace/stress/layered_fourier_shear_stress.hpp"
 #include "halfspace/stress/layered_fourier_stress.hpp"
 
 namespace halfspace::kernels {
@@ -52,8 +53,8 @@ class LayeredTangentialKernel {
 
  private:
   stress::LayeredFourierStress modes_;
+  stress::LayeredAntiplane antiplane_;
   double layer_shear_modulus_;  // mu1, Pa
-  double antiplane_ratio_;      // (mu1 - mu2)/(mu1 + mu2)
 };
 
 }  // namespace halfspace::kernels

@@ -67,6 +67,10 @@ class LayeredFourierStress {
   // sigma_x'z = -i slope per unit of the spectrum's scale (a shear traction
   // T on the surface along k, whose outward normal is -z, is slope = -i T).
   LayeredMode solve(double q, double value, double slope) const;
+  // The mode of a unit shear along k, g(0) = 0 and g'(0) = 1 (its stresses
+  // are -i T times this mode's for a shear T along k:
+  // layered_fourier_shear_stress.hpp).
+  LayeredMode solve_shear(double q) const { return solve(q, 0.0, 1.0); }
   // g''(0) and g'''(0) of `mode`.
   SurfaceDerivatives surface_derivatives(const LayeredMode& mode) const;
 
