@@ -405,9 +405,13 @@ StressRequest stress_request_from(const SolveOptions& o, std::size_t load_steps,
 // The peak while the stresses are computed and written after the solve: the
 // heights and the result's fields (5 arrays) kept, the transforms and one
 // depth's fields (the depths are computed and written one at a time).
-double stress_peak_memory(const Grid& grid, std::size_t depth_count, bool coated) {
+// With friction, the shear tractions' transforms too and, below a coating,
+// the coated body's tractions (-q, stress::make_traction_on_body1).
+double stress_peak_memory(const Grid& grid, std::size_t depth_count, bool coated, bool shear) {
   if (depth_count == 0) return 0.0;
-  return kProgramBytes + 6.0 * 8.0 * static_cast<double>(grid.size()) + stress::stress_memory_estimate(grid, coated);
+  const double body1_shear = coated && shear ? 16.0 * static_cast<double>(grid.size()) : 0.0;
+  return kProgramBytes + 6.0 * 8.0 * static_cast<double>(grid.size()) + body1_shear +
+         stress::stress_memory_estimate(grid, coated, shear);
 }
 
 }  // namespace
@@ -437,20 +441,13 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
   // Friction (--friction with a tangential load), checked by make_problem.
   const std::optional<solvers::FrictionOptions> friction = friction_from(options, problem);
   const std::size_t history_steps = friction ? friction->steps() : 0;
-  if (friction && coating && !stress.depths.empty()) {
-    throw InputError(fmt::format(
-        "{} cannot be combined with {} on a coated half-space: the layered stress solution is solved for a normal "
-        "surface traction only, not the shear tractions of friction (drop {}, or compute the frictionless "
-        "stresses without {})",
-        options.describe("stress-depths"), options.name("friction"), options.name("stress-depths"),
-        options.name("friction")));
-  }
   const GridCheck check_grid = [&](const Grid& grid, const std::string& request) {
     problem.check_grid(grid, flags);
     const std::string what = fmt::format("{}: {}", request, solve_description(grid, solver, load_values.size()));
-    const double estimate = std::max(solve_memory_estimate(grid, solver, load_values.size()),
-                                     stress_peak_memory(grid, stress.depths.size(), coating.has_value())) +
-                            (friction ? solvers::friction_memory_estimate(grid, history_steps) : 0.0);
+    const double estimate =
+        std::max(solve_memory_estimate(grid, solver, load_values.size()),
+                 stress_peak_memory(grid, stress.depths.size(), coating.has_value(), friction.has_value())) +
+        (friction ? solvers::friction_memory_estimate(grid, history_steps) : 0.0);
     if (share.check_memory) {
       // A process holding some rows runs the distributed solve (what is not
       // distributed is refused on several processes before it starts); a
@@ -497,6 +494,7 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
   if (!stress.depths.empty()) {
     in_context(options.describe("stress-depths"), [&] {
       if (coating) stress::require_coated_stress_grid(surface.grid, *coating);
+      if (coating && friction) stress::require_coated_shear_stress_grid(surface.grid, *coating);
       stress::check_depths(surface.grid, stress.depths);
     });
   }

@@ -91,15 +91,10 @@ int run_stress(const StressOptions& o, const std::vector<std::string>& argv) {
         format_number(coating->substrate.poissons_ratio)));
   }
   if (!coating && !o.nu) throw InputError(missing_poisson_ratio_message("--nu"));
-  if (coating && input.has_shear()) {
-    throw InputError(fmt::format(
-        "{} is a coated half-space's result with shear tractions (/shear_x, /shear_y): stresses under shear are "
-        "computed for homogeneous bodies only (the layered stress solution is solved for a normal traction only)",
-        o.result));
-  }
   if (coating) {
     try {
       stress::require_coated_stress_grid(grid, *coating);
+      if (input.has_shear()) stress::require_coated_shear_stress_grid(grid, *coating);
     } catch (const InputError& error) {
       throw InputError(fmt::format("{} is a coated half-space's result: {}", o.result, error.what()));
     }
@@ -124,6 +119,12 @@ int run_stress(const StressOptions& o, const std::vector<std::string>& argv) {
     std::unique_ptr<stress::SubsurfaceStress> stresses =
         coating ? std::make_unique<stress::SubsurfaceStress>(grid, *coating)
                 : std::make_unique<stress::SubsurfaceStress>(grid, nu);
+    // A coated result's body is body 1 (ElasticPair::coated): its stresses
+    // take the traction on it, -q of the file's /shear_x, /shear_y.
+    if (coating) {
+      stress::make_traction_on_body1(input.shear_x);
+      stress::make_traction_on_body1(input.shear_y);
+    }
     const stress::SurfaceTractions tractions{input.pressure, input.shear_x, input.shear_y};
     maximum = io::write_stress_file(output, *stresses, tractions, depths, {o.result, join_command_line(argv)});
   }

@@ -28,6 +28,8 @@
 
 #include <cmath>
 
+#include "halfspace/linalg/parallel.hpp"
+
 namespace halfspace::stress {
 namespace {
 
@@ -106,10 +108,35 @@ std::array<std::complex<double>, kComponentCount> layered_shear_stress(Traction 
                                                                        const AntiplaneProfile& transverse, double nu) {
   std::array<std::complex<double>, kComponentCount> result;
   for (std::size_t k = 0; k < kComponentCount; ++k) {
-    result[k] = layered_shear_stress_component(static_cast<Component>(k), direction, kx, ky, longitudinal,
-                                               transverse, nu);
+    result[k] =
+        layered_shear_stress_component(static_cast<Component>(k), direction, kx, ky, longitudinal, transverse, nu);
   }
   return result;
+}
+
+LayeredShearModes::LayeredShearModes(const LayeredMaterial& material, std::span<const double> kx,
+                                     std::span<const double> ky)
+    : modes_(material), antiplane_(material), kx_(kx.begin(), kx.end()), ky_(ky.begin(), ky.end()) {
+  const std::size_t rows = ky_.size();
+  const std::size_t cols = kx_.size();
+  solved_.resize(rows * cols);
+  longitudinal_.resize(rows * cols);
+  transverse_.resize(rows * cols);
+  linalg::for_each_row(rows, cols, [&](std::size_t r) {
+    for (std::size_t c = 0; c < cols; ++c) solved_[r * cols + c] = modes_.solve_shear(std::hypot(kx_[c], ky_[r]));
+  });
+}
+
+void LayeredShearModes::evaluate(double z, Body body) {
+  const std::size_t cols = kx_.size();
+  linalg::for_each_row(ky_.size(), cols, [&](std::size_t r) {
+    for (std::size_t c = 0; c < cols; ++c) {
+      const std::size_t k = r * cols + c;
+      const double q = solved_[k].q;
+      longitudinal_[k] = modes_.profile(solved_[k], z, body);
+      transverse_[k] = q > 0.0 ? antiplane_.profile(q, z, body) : AntiplaneProfile{};
+    }
+  });
 }
 
 }  // namespace halfspace::stress

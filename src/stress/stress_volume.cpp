@@ -142,9 +142,14 @@ StressVolume compute_stress_volume(const Grid& grid, const SurfaceTractions& tra
 
 StressVolume compute_stress_volume(const Grid& grid, std::span<const double> pressure, std::span<const double> depths,
                                    const LayeredMaterial& coating, FftPlanning planning) {
+  return compute_stress_volume(grid, SurfaceTractions{pressure, {}, {}}, depths, coating, planning);
+}
+
+StressVolume compute_stress_volume(const Grid& grid, const SurfaceTractions& tractions, std::span<const double> depths,
+                                   const LayeredMaterial& coating, FftPlanning planning) {
   check_depths(grid, depths);
   SubsurfaceStress stresses(grid, coating, planning);
-  StressVolume volume = fill_volume(stresses, SurfaceTractions{pressure, {}, {}}, depths);
+  StressVolume volume = fill_volume(stresses, tractions, depths);
   volume.coating = coating;
   for (const double z : depths) volume.in_layer.push_back(stresses.in_layer(z));
   return volume;
@@ -160,8 +165,11 @@ double stress_memory_estimate(const Grid& grid, bool coated, bool shear) {
   // instead of the decay table, about 5.5 more doubles a cell; on a free
   // grid the remainder's six parts on the padded half spectrum (12).
   // Shear: two more spectra (periodic: about 1 double a cell each; free: the
-  // padded one's 4) and, on free grids, two more sets of six quadrants.
-  const double shear_workspace = shear ? (grid.periodic() ? 2.0 : 20.0) : 0.0;
+  // padded one's 4) and, on free grids, two more sets of six quadrants;
+  // below a coating (periodic only) each half-spectrum mode's shear
+  // solution and its two profiles (15 doubles, 7.5 a cell).
+  const double coated_shear = coated && grid.periodic() ? 7.5 : 0.0;
+  const double shear_workspace = shear ? (grid.periodic() ? 2.0 + coated_shear : 20.0) : 0.0;
   const double workspace =
       ((grid.periodic() ? (coated ? 10.5 : 5.0) : (coated ? 38.0 : 26.0)) + shear_workspace) * 8.0 * cells;
   // The pressure itself and one depth's nine fields.

@@ -29,7 +29,9 @@
 // rectangle_shear_stress.hpp convolved like the pressure's, each term summed
 // in the spectrum before the one inverse transform per component. Their
 // Nyquist rows and columns are zeroed by their own parities. Coated bodies
-// take no shear: the layered solution is solved for a normal traction only.
+// (periodic grids) take the layered shear multipliers of
+// layered_fourier_shear_stress.hpp (LayeredShearModes); free coated grids
+// take no shear (the coating's cell coefficients under shear are not built).
 //
 // Free: sigma_c(i) = sum_j C_c(x_i - x_j, z) p_j with the exact cell
 // coefficients C_c of rectangle_stress.hpp, a linear convolution done on the
@@ -58,6 +60,7 @@
 #include "halfspace/kernels/periodic_fourier.hpp"
 #include "halfspace/linalg/parallel.hpp"
 #include "halfspace/stress/fourier_shear_stress.hpp"
+#include "halfspace/stress/layered_fourier_shear_stress.hpp"
 #include "halfspace/stress/layered_fourier_stress.hpp"
 #include "halfspace/stress/rectangle_shear_stress.hpp"
 #include "halfspace/stress/rectangle_stress.hpp"
@@ -115,6 +118,15 @@ void require_coated_stress_grid(const Grid& grid, const LayeredMaterial& coating
         "shorter side: t = {:.6g} m, L = {:.6g} m on the free {} grid (use --boundary periodic, or a larger domain)",
         coating.thickness, side, grid.shape_string()));
   }
+}
+
+void require_coated_shear_stress_grid(const Grid& grid, const LayeredMaterial& coating) {
+  if (grid.periodic()) return;
+  throw InputError(fmt::format(
+      "subsurface stresses under shear tractions on a coated half-space (layer t = {:.6g} m, E1 = {:.6g} Pa on E2 = "
+      "{:.6g} Pa) are computed on periodic grids only, not on the free {} grid: the coating's stress coefficients "
+      "of a sheared cell are not built (use --boundary periodic, or the stresses of the pressure alone)",
+      coating.thickness, coating.layer.youngs_modulus, coating.substrate.youngs_modulus, grid.shape_string()));
 }
 
 double checked_depth(double depth) {
@@ -204,12 +216,7 @@ struct SubsurfaceStress::Impl {
     check_field(tractions.pressure, "pressure");
     if (!tractions.shear_x.empty()) check_field(tractions.shear_x, "shear traction along x");
     if (!tractions.shear_y.empty()) check_field(tractions.shear_y, "shear traction along y");
-    if (layered && tractions.has_shear()) {
-      throw InputError(
-          "subsurface stress: shear tractions on a coated half-space are not supported: the layered stress solution "
-          "(layered_fourier_stress.hpp) is solved for a normal surface traction only; compute the stresses of the "
-          "pressure alone, or of a homogeneous body");
-    }
+    if (layered && tractions.has_shear() && !transform) require_coated_shear_stress_grid(grid, layered->material());
   }
 
   void set_tractions(const SurfaceTractions& tractions) {
@@ -222,6 +229,9 @@ struct SubsurfaceStress::Impl {
       if (!active[t]) continue;
       if (t > 0) allocate_shear(t);
       transform_field(fields[t], spectra[t]);
+    }
+    if (layered && transform && (active[1] || active[2]) && !layered_shear) {
+      layered_shear.emplace(layered->material(), kx, ky);
     }
     has_pressure = true;
   }
@@ -298,6 +308,7 @@ struct SubsurfaceStress::Impl {
           profiles[r * cols + c] = layered->profile(modes[r * cols + c], z, body);
         }
       });
+      if (layered_shear && (active[1] || active[2])) layered_shear->evaluate(z, body);
     } else {
       linalg::for_each_row(rows, cols, [&](std::size_t r) {
         for (std::size_t c = 0; c < cols; ++c) decay[r * cols + c] = std::exp(-std::hypot(kx[c], ky[r]) * z);
@@ -317,8 +328,9 @@ struct SubsurfaceStress::Impl {
                               (odd_in_x(kind, traction) && nyquist_col && c == cols - 1);
             if (zero) continue;
             const std::complex<double> multiplier =
-                layered ? layered_stress_component(kind, kx[c], ky[r], profiles[k], body_nu)
-                        : fourier_traction_stress_component(kind, traction, kx[c], ky[r], z, decay[k], nu);
+                !layered ? fourier_traction_stress_component(kind, traction, kx[c], ky[r], z, decay[k], nu)
+                : traction == Traction::pressure ? layered_stress_component(kind, kx[c], ky[r], profiles[k], body_nu)
+                                                 : layered_shear->component(kind, traction, r, c, body_nu);
             sum += spectra[t][k] * multiplier;
           }
           spectrum[k] = sum * (cell_x[c] * cell_y[r] * inverse_n);
@@ -527,6 +539,8 @@ struct SubsurfaceStress::Impl {
   std::optional<LayeredFourierStress> layered;
   std::vector<LayeredMode> modes;
   std::vector<AiryProfile> profiles;
+  // ...and under shear, made when a shear is first set.
+  std::optional<LayeredShearModes> layered_shear;
   // Free grids.
   std::unique_ptr<PaddedRealFft> padded;
   std::unique_ptr<RealFft> kernel;  // the (2ny, 2nx) transform of the coefficients

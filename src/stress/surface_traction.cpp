@@ -6,6 +6,10 @@
 
 namespace halfspace::stress {
 
+void make_traction_on_body1(std::span<double> shear) {
+  for (double& value : shear) value = -value;
+}
+
 bool odd_in_x(Component component, Traction traction) {
   return odd_in_x(component) != (traction == Traction::shear_x);
 }

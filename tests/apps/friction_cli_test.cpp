@@ -480,12 +480,6 @@ TEST(FrictionCliTest, RefusalsNameTheOptions) {
        {"the coated half-space (--layer-thickness, --layer-E, --layer-nu, --substrate-E, --substrate-nu) cannot be "
         "combined with friction on the 32x32 grid (free)",
         "for periodic grids only", "--friction 0.3"}},
-      {{"solve", "--geometry",         "sphere",   "--radius",          "0.01", "--grid",    "32x32", "--size",
-        "4e-4",  "--boundary",         "periodic", "--layer-thickness", "1e-5", "--layer-E", "1e11",  "--layer-nu",
-        "0.3",   "--substrate-E",      "2e11",     "--substrate-nu",    "0.3",  "--force",   "10",    "--friction",
-        "0.3",   "--tangential-force", "1",        "--stress-depths",   "1e-5", "--output",  "bad.h5"},
-       {"--stress-depths 1e-5 cannot be combined with --friction on a coated half-space",
-        "normal surface traction only"}},
       {sphere(16, "bad.h5", {"--friction", "0.3", "--tangential-force", "0.5;1", "--stress-depths", "1e-5"}),
        {"--stress-depths 1e-5 applies to a single tangential step, not a history of 2", "halfspace stress"}},
       {{"solve",  "--geometry",

@@ -97,7 +97,8 @@ TEST(StressShearCliTest, RefusesShearItCannotTake) {
         "its /shear_x has 16 x 64 values but /pressure has 32 x 32");
   }
   {
-    // A coated half-space's result with shear: refused, naming why.
+    // A coated half-space's result with shear on a free grid: refused,
+    // naming the file, the coating and the boundary.
     const TempDir dir;
     const fs::path result = sliding_sphere(dir);
     {
@@ -109,7 +110,9 @@ TEST(StressShearCliTest, RefusesShearItCannotTake) {
       test::add_double_attribute(file.get(), "substrate_nu", 0.25);
     }
     expect_input_error(run_program({"stress", result.string(), "--depths", "1e-6", "--output", "s.h5"}, dir.path()),
-                       "stresses under shear are computed for homogeneous bodies only");
+                       "result.h5 is a coated half-space's result: subsurface stresses under shear tractions on a "
+                       "coated half-space (layer t = 1e-05 m, E1 = 2e+11 Pa on E2 = 1e+11 Pa) are computed on "
+                       "periodic grids only, not on the free 32x32 grid");
   }
 }
 

@@ -99,8 +99,8 @@ TEST(LayeredFourierShearStressTest, IdenticalMaterialsGiveCerrutisStresses) {
             for (std::size_t c = 0; c < kComponentCount; ++c) {
               const double error = std::abs(got[c] - expected[c]);
               worst = std::max(worst, error);
-              EXPECT_LT(error, kRoundoff) << kComponentNames[c] << ", nu = " << nu << ", q t = " << s
-                                          << ", z/t = " << depth_ratio;
+              EXPECT_LT(error, kRoundoff)
+                  << kComponentNames[c] << ", nu = " << nu << ", q t = " << s << ", z/t = " << depth_ratio;
             }
           }
         }
@@ -294,7 +294,8 @@ TEST(LayeredFourierShearStressTest, SurfaceDisplacementIsTheFrictionSolversCompl
       const double scale = std::max({std::abs(compliance.longitudinal), std::abs(compliance.transverse),
                                      std::abs(compliance.coupling)}) /
                            q;
-      for (const auto& [kx, ky] : {std::array<double, 2>{0.6 * q, -0.8 * q}, std::array<double, 2>{-0.28 * q, 0.96 * q}}) {
+      for (const auto& [kx, ky] :
+           {std::array<double, 2>{0.6 * q, -0.8 * q}, std::array<double, 2>{-0.28 * q, 0.96 * q}}) {
         const kernels::TangentialCoefficients symbol = kernel.tangential(kx, ky);
         for (const Traction direction : kShears) {
           const bool along_x = direction == Traction::shear_x;

@@ -6,6 +6,9 @@
 
 #include <array>
 #include <complex>
+#include <cstddef>
+#include <span>
+#include <vector>
 
 #include "halfspace/layered_material.hpp"
 #include "halfspace/stress/layered_fourier_stress.hpp"
@@ -40,8 +43,8 @@ class LayeredAntiplane {
 
  private:
   double thickness_;
-  double reflection_;          // k = (mu1 - mu2)/(mu1 + mu2)
-  double transmission_;        // 1 - k = 2 mu2/(mu1 + mu2), formed without cancellation
+  double reflection_;           // k = (mu1 - mu2)/(mu1 + mu2)
+  double transmission_;         // 1 - k = 2 mu2/(mu1 + mu2), formed without cancellation
   double substrate_stiffness_;  // mu2/mu1
 };
 
@@ -60,5 +63,34 @@ std::complex<double> layered_shear_stress_component(Component component, Tractio
 std::array<std::complex<double>, kComponentCount> layered_shear_stress(Traction direction, double kx, double ky,
                                                                        const AiryProfile& longitudinal,
                                                                        const AntiplaneProfile& transverse, double nu);
+
+// The shear multipliers of a periodic grid's half spectrum (SubsurfaceStress
+// below a coating): each mode's in-plane solution, solved once (kx.size()
+// columns by ky.size() rows, wavenumbers in rad/m), and per depth each
+// mode's in-plane and antiplane profiles; about 120 bytes per mode.
+class LayeredShearModes {
+ public:
+  LayeredShearModes(const LayeredMaterial& material, std::span<const double> kx, std::span<const double> ky);
+
+  // The profiles at depth z (m) in `body`, for component().
+  void evaluate(double z, Body body);
+  // The multiplier of `component` under a unit shear along `direction` for
+  // the mode (row, col) at the last evaluated depth, nu that body's.
+  std::complex<double> component(Component component, Traction direction, std::size_t row, std::size_t col,
+                                 double nu) const {
+    const std::size_t k = row * kx_.size() + col;
+    return layered_shear_stress_component(component, direction, kx_[col], ky_[row], longitudinal_[k], transverse_[k],
+                                          nu);
+  }
+
+ private:
+  LayeredFourierStress modes_;
+  LayeredAntiplane antiplane_;
+  std::vector<double> kx_;
+  std::vector<double> ky_;
+  std::vector<LayeredMode> solved_;
+  std::vector<AiryProfile> longitudinal_;
+  std::vector<AntiplaneProfile> transverse_;
+};
 
 }  // namespace halfspace::stress

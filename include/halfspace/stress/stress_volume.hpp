@@ -92,6 +92,10 @@ StressVolume compute_stress_volume(const Grid& grid, const SurfaceTractions& tra
 // material or pressure.
 StressVolume compute_stress_volume(const Grid& grid, std::span<const double> pressure, std::span<const double> depths,
                                    const LayeredMaterial& coating, FftPlanning planning = FftPlanning::estimate);
+// The same under the pressure and shear tractions (periodic grids for a
+// shear: require_coated_shear_stress_grid).
+StressVolume compute_stress_volume(const Grid& grid, const SurfaceTractions& tractions, std::span<const double> depths,
+                                   const LayeredMaterial& coating, FftPlanning planning = FftPlanning::estimate);
 
 // Peak bytes of stresses_by_depth on `grid`: the transforms' workspace (more
 // for a coated body's solved modes) and one depth's nine fields, whatever the

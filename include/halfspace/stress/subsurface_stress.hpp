@@ -34,6 +34,12 @@ inline constexpr double kFreeCoatedStressThicknessRatio = 0.125;
 // domain's shorter side, or its length in 1D).
 void require_coated_stress_grid(const Grid& grid, const LayeredMaterial& coating);
 
+// Throws InputError naming the coating and the free grid unless the stresses
+// of shear tractions on `coating` can be computed on `grid`: periodic grids
+// only (the layered shear field is built per Fourier mode; a free grid would
+// need the coating's cell coefficients under shear).
+void require_coated_shear_stress_grid(const Grid& grid, const LayeredMaterial& coating);
+
 // Throws InputError unless depth is finite and > 0 (m); returns it.
 double checked_depth(double depth);
 
@@ -91,9 +97,11 @@ class SubsurfaceStress {
   // Takes the pressure and the shear tractions beside it (surface_traction.hpp:
   // Pa, the traction on this body, sigma_xz = -q_x and sigma_yz = -q_y at
   // the surface; an empty span is no shear): one forward FFT each, kept for
-  // every depth; a later set_pressure drops them. Throws InputError as
-  // set_pressure does for each field, and for any shear on a coated
-  // half-space (the layered solution is solved for a normal traction only).
+  // every depth; a later set_pressure drops them. A coated half-space takes
+  // the layered shear field (layered_fourier_shear_stress.hpp; its modes
+  // solved when a shear is first set, about 60 bytes per cell). Throws
+  // InputError as set_pressure does for each field, and for a shear on a
+  // coated half-space on a free grid (require_coated_shear_stress_grid).
   void set_tractions(const SurfaceTractions& tractions);
   // The checks of set_tractions alone (no transform): what a writer calls
   // before it creates a file.

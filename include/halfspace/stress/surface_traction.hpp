@@ -26,6 +26,12 @@ struct SurfaceTractions {
   bool has_shear() const { return !shear_x.empty() || !shear_y.empty(); }
 };
 
+// Turns a friction result's shear q (one component, in place) into the
+// traction on body 1, -q: what the stresses of body 1 take (in its own
+// frame, z into it), among them those of a coated result, whose coated body
+// is body 1 (ElasticPair::coated).
+void make_traction_on_body1(std::span<double> shear);
+
 // Whether the stress component `component` under traction `traction` is odd
 // in x (in y): the pressure's parity (odd_in_x, odd_in_y) with x (y) flipped
 // for a shear along x (y), which is itself odd under that reflection.
