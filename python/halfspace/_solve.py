@@ -352,7 +352,9 @@ def subsurface_stress(result: _core.Result, depths: Sequence[float], nu: Optiona
     ``coating=``; periodic grids, or free 2D grids whose shorter side is at
     least 8 layer thicknesses) takes no nu: each depth uses its body's, the
     layer's for z <= thickness. A friction result (``friction=``) applies its
-    shear tractions beside the pressure, as ``halfspace stress`` does.
+    shear tractions beside the pressure, as ``halfspace stress`` does: q on
+    a homogeneous body, -q (the traction on it) on a coated one (body 1;
+    periodic grids).
 
     Returns a dict: ``depths``; ``sigma_xx``, ``sigma_yy``, ``sigma_zz``,
     ``sigma_xy``, ``sigma_xz``, ``sigma_yz``, ``von_mises``, ``max_shear``,

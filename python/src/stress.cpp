@@ -42,18 +42,20 @@ nb::dict subsurface_stress(const Result& result, const std::vector<double>& dept
         "does not fix it; -1 < nu <= 0.5)");
   }
   // A friction result's shear tractions act beside the pressure, as in
-  // `halfspace stress`; a coated one's are refused as there.
+  // `halfspace stress`; a coated body is body 1 and carries -q.
   const bool sheared = result.tangential_step < result.run->tangential.size();
-  if (sheared && coating) {
-    throw InputError(
-        "the result is a coated half-space's with shear tractions (friction): stresses under shear are not "
-        "supported in a coated half-space, whose layered stress solution is solved for a normal surface traction "
-        "only");
-  }
   stress::StressVolume volume = [&] {
     nb::gil_scoped_release release;
     if (sheared) {
       const TangentialState& state = result.run->tangential[result.tangential_step].state;
+      if (coating) {
+        std::vector<double> shear_x(state.shear_x.data(), state.shear_x.data() + grid.size());
+        std::vector<double> shear_y(state.shear_y.data(), state.shear_y.data() + grid.size());
+        stress::make_traction_on_body1(shear_x);
+        stress::make_traction_on_body1(shear_y);
+        const stress::SurfaceTractions tractions{{pressure.data(), grid.size()}, shear_x, shear_y};
+        return stress::compute_stress_volume(grid, tractions, depths, *coating);
+      }
       const stress::SurfaceTractions tractions{
           {pressure.data(), grid.size()}, {state.shear_x.data(), grid.size()}, {state.shear_y.data(), grid.size()}};
       return stress::compute_stress_volume(grid, tractions, depths, *nu);

@@ -207,7 +207,8 @@ def test_material_refusals():
 
 def test_coated_half_space_on_a_periodic_grid():
     """A coating whose layer is the substrate's material gives the homogeneous body's shear and
-    approach (a rigid body 2); the stresses under its shear are refused, naming why."""
+    approach (a rigid body 2); its stresses under the shear are the coated body's (body 1, under
+    -q), which for this layer are the homogeneous body's under -q."""
     surface = sphere(24)
     coating = dict(thickness=2e-5, layer_E=E, layer_nu=NU, substrate_E=E, substrate_nu=NU)
     coated = hs.solve(surface, coating=coating, boundary="periodic", force=FORCE, friction=MU,
@@ -221,8 +222,34 @@ def test_coated_half_space_on_a_periodic_grid():
     np.testing.assert_array_equal(coated.stick, plain.stick)
     assert coated.friction["tangential_approach"][0] == pytest.approx(plain.friction["tangential_approach"][0],
                                                                       rel=1e-9)
-    with pytest.raises(hs.InputError, match="coated half-space's with shear tractions"):
-        hs.subsurface_stress(coated, [1e-5])
+
+
+def test_coated_stresses_take_the_coated_bodys_shear_as_the_program_does(tmp_path, cli):
+    """subsurface_stress on a coated friction result (periodic) gives the coated body's field
+    under the traction on it, -q, as `halfspace stress` does on the saved result (to 1e-12 of the
+    largest); near the surface sigma_xz is then +q_x where the contact slides."""
+    import subprocess
+    surface = sphere(24)
+    coating = dict(thickness=2e-5, layer_E=2 * E, layer_nu=0.22, substrate_E=E, substrate_nu=NU)
+    coated = hs.solve(surface, coating=coating, boundary="periodic", force=FORCE, friction=MU, sliding=(1.0, 0.0),
+                      threads=1, fft_planning="estimate")
+    assert coated.converged and coated.friction["converged"], coated.friction["message"]
+    depths = [2e-6, 1e-5, 4e-5]
+    stresses = hs.subsurface_stress(coated, depths)
+    assert stresses["tractions"] == "pressure and shear"
+    assert list(stresses["in_layer"]) == [True, True, False]
+    coated.save(tmp_path / "c.h5")
+    subprocess.run([cli, "stress", str(tmp_path / "c.h5"), "--depths", ",".join(repr(z) for z in depths),
+                    "--output", str(tmp_path / "stress.h5"), "--threads", "1", "--quiet"], check=True)
+    with h5py.File(tmp_path / "stress.h5") as f:
+        for name in ("sigma_xx", "sigma_xz", "von_mises"):
+            program = f["stress"][name][...]
+            np.testing.assert_allclose(stresses[name], program, rtol=0, atol=1e-12 * np.abs(program).max())
+    # The shear changes the field; its sign is the coated body's (sigma_xz follows +q_x).
+    shallow = hs.subsurface_stress(coated, [1e-3 * surface.dx])["sigma_xz"][0]
+    inside = np.array(coated.pressure) > 0.5 * np.array(coated.pressure).max()
+    shear_x = np.array(coated.shear_x)
+    assert np.abs(shallow[inside] - shear_x[inside]).max() < 0.1 * np.abs(shear_x).max()
 
 
 def test_stresses_take_the_shear_as_the_program_does(tmp_path, cli):

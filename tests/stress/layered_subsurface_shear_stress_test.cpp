@@ -96,18 +96,17 @@ TEST(LayeredSubsurfaceShearStressTest, PeriodicFourierModesMatchThePerModeSoluti
           const double mean = pressure_mode.mean * normal_mean[c].real() -
                               (kind == Component::xz ? shear_x_mode.mean : 0.0) -
                               (kind == Component::yz ? shear_y_mode.mean : 0.0);
-          const std::complex<double> wave =
-              normal_wave[c] * std::complex<double>(pressure_mode.a, -pressure_mode.b) +
-              x_wave[c] * std::complex<double>(shear_x_mode.a, -shear_x_mode.b) +
-              y_wave[c] * std::complex<double>(shear_y_mode.a, -shear_y_mode.b);
+          const std::complex<double> wave = normal_wave[c] * std::complex<double>(pressure_mode.a, -pressure_mode.b) +
+                                            x_wave[c] * std::complex<double>(shear_x_mode.a, -shear_x_mode.b) +
+                                            y_wave[c] * std::complex<double>(shear_y_mode.a, -shear_y_mode.b);
           const double expected = mean + cell * (wave * phase).real();
           worst = std::max(worst, std::abs(values[c][k] - expected));
           ASSERT_NEAR(values[c][k], expected, kRoundoff * pressure_mode.a)
               << kComponentNames[c] << " at cell " << k << ", z = " << z << (line ? " (1D)" : " (2D)");
         }
       }
-      std::printf("coated shear mode on the %s grid at z = %.2g m: largest difference %.2e Pa\n",
-                  line ? "1D" : "2D", z, worst);
+      std::printf("coated shear mode on the %s grid at z = %.2g m: largest difference %.2e Pa\n", line ? "1D" : "2D", z,
+                  worst);
     }
   }
 }

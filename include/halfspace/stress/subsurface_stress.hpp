@@ -4,7 +4,8 @@
 // the pressure with the exact stress coefficients of a loaded cell
 // (rectangle_stress.hpp) by zero padding (DC-FFT, Liu, Wang & Liu 2000).
 // Shear tractions beside the pressure add Cerruti's solution in the same two
-// forms (fourier_shear_stress.hpp, rectangle_shear_stress.hpp).
+// forms (fourier_shear_stress.hpp, rectangle_shear_stress.hpp); below a
+// coating, the layered field of layered_fourier_shear_stress.hpp (periodic).
 // Cost and memory per depth: docs/theory.md#subsurface-stresses.
 #pragma once
 
