@@ -156,14 +156,15 @@ int run_frictional_solve(const SolveSetup& setup, const SolvePlace& place) {
   } else {
     if (!result.steps.empty()) metadata.tangential = &result.steps.front();
     // Subsurface stresses (--stress-depths) under the pressure and the step's
-    // shear, written while the result is (one process: refused on several).
+    // shear, written while the result is (on several processes each its rows).
     std::unique_ptr<stress::SubsurfaceStress> stresses;
     if (!setup.stress_depths.empty() && !result.steps.empty()) {
-      stresses = std::make_unique<stress::SubsurfaceStress>(setup.grid, setup.stress_nu, setup.solver.fft_planning);
+      stresses = std::make_unique<stress::SubsurfaceStress>(setup.grid, setup.stress_nu, place.layout,
+                                                            setup.solver.fft_planning);
       const TangentialResult& step = result.steps.front();
-      const stress::SurfaceTractions tractions{{normal.pressure.data(), setup.grid.size()},
-                                               {step.state.shear_x.data(), setup.grid.size()},
-                                               {step.state.shear_y.data(), setup.grid.size()}};
+      const std::size_t cells = stresses->local_size();
+      const stress::SurfaceTractions tractions{
+          {normal.pressure.data(), cells}, {step.state.shear_x.data(), cells}, {step.state.shear_y.data(), cells}};
       metadata.extra_groups = [&stresses, &setup, tractions](const io::Hdf5Node& root) {
         io::write_stress_group(root, *stresses, tractions, setup.stress_depths);
       };
