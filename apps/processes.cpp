@@ -2,8 +2,12 @@
 // live in apps/mpi/.
 #include "processes.hpp"
 
+#include <fmt/format.h>
+
 #include <stdexcept>
 #include <utility>
+
+#include "activity.hpp"
 
 #ifdef HALFSPACE_MPI
 #include "halfspace/mpi/session.hpp"
@@ -13,6 +17,11 @@
 #endif
 
 namespace halfspace::app {
+
+io::ResultPressure read_stress_input(const std::filesystem::path& path) {
+  const Activity activity(fmt::format("reading {}", path.string()));
+  return io::read_result_pressure(path);
+}
 
 StressPlace whole_stress_place(io::ResultPressure input) {
   StressPlace place{.layout = solvers::serial_layout(), .input = std::move(input)};
@@ -81,7 +90,7 @@ surface::SurfaceStatistics generate_distributed(const Grid& /*grid*/, const surf
   throw std::logic_error("generate_distributed: the serial build runs one process");
 }
 int run_stress_everywhere(const std::filesystem::path& path, const std::function<int(StressPlace& place)>& run) {
-  StressPlace place = whole_stress_place(io::read_result_pressure(path));
+  StressPlace place = whole_stress_place(read_stress_input(path));
   return run(place);
 }
 

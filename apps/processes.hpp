@@ -84,6 +84,8 @@ struct StressPlace {
   std::function<void(const std::function<void()>& step)> agree = [](const std::function<void()>& step) { step(); };
 };
 
+// The stress command's input, read whole (io::read_result_pressure).
+io::ResultPressure read_stress_input(const std::filesystem::path& path);
 // The whole of `input` on this process: serial_layout(), io::write_stress_file.
 StressPlace whole_stress_place(io::ResultPressure input);
 

@@ -31,8 +31,13 @@ void broadcast_details(const mpi::MpiCommunicator& world, std::optional<io::Resu
   if (whole) {
     if (whole->coating) {
       const LayeredMaterial& c = *whole->coating;
-      details = {1.0, c.thickness, c.layer.youngs_modulus, c.layer.poissons_ratio, c.substrate.youngs_modulus,
-                 c.substrate.poissons_ratio, 0.0};
+      details = {1.0,
+                 c.thickness,
+                 c.layer.youngs_modulus,
+                 c.layer.poissons_ratio,
+                 c.substrate.youngs_modulus,
+                 c.substrate.poissons_ratio,
+                 0.0};
     }
     details[6] = whole->has_shear() ? 1.0 : 0.0;
   }
@@ -58,7 +63,7 @@ int run_stress_on_slabs(const std::filesystem::path& path, const std::function<i
   const bool root = world.rank() == 0;
   std::optional<io::ResultPressure> whole;
   mpi::run_agreed(world, [&] {
-    if (root) whole.emplace(io::read_result_pressure(path));
+    if (root) whole.emplace(read_stress_input(path));
   });
   if (world.size() == 1) {
     StressPlace place = whole_stress_place(std::move(*whole));

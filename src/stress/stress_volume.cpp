@@ -190,10 +190,12 @@ StressVolume compute_stress_volume(const Grid& grid, std::span<const double> pre
 
 double stress_memory_estimate(const Grid& grid, bool coated, bool shear) {
   const double cells = static_cast<double>(grid.nx()) * static_cast<double>(grid.ny());
-  // Periodic: the pressure spectrum, the transform's spectrum and real array,
-  // the decay table (about 5 doubles a cell). Free: the padded pressure
-  // spectrum and transform, the padded coefficient transform (4 cells each
-  // of spectrum and real array) and the six coefficient quadrants (about 26).
+  // Periodic: the pressure spectrum, the layout's two transforms (spectra,
+  // and the real array of the one used), the decay table (about 6 doubles a
+  // cell). Free: the padded pressure spectrum, the layout's two padded
+  // transforms (one for the fields, one for the coefficients' wrap-around
+  // array), a component's spectrum summed over the tractions (4 doubles a
+  // cell each) and the six coefficient quadrants (about 26).
   // Coated: each half-spectrum mode's solution (8 doubles) and profile (3)
   // instead of the decay table, about 5.5 more doubles a cell; on a free
   // grid the remainder's six parts on the padded half spectrum (12).
@@ -201,7 +203,7 @@ double stress_memory_estimate(const Grid& grid, bool coated, bool shear) {
   // padded one's 4) and, on free grids, two more sets of six quadrants.
   const double shear_workspace = shear ? (grid.periodic() ? 2.0 : 20.0) : 0.0;
   const double workspace =
-      ((grid.periodic() ? (coated ? 10.5 : 5.0) : (coated ? 38.0 : 26.0)) + shear_workspace) * 8.0 * cells;
+      ((grid.periodic() ? (coated ? 11.5 : 6.0) : (coated ? 38.0 : 26.0)) + shear_workspace) * 8.0 * cells;
   // The pressure itself and one depth's nine fields.
   constexpr double kSliceFields = 9.0;
   return 8.0 * cells + workspace + kSliceFields * 8.0 * cells;

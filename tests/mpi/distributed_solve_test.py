@@ -19,7 +19,7 @@ import sys
 
 import h5py
 import numpy as np
-from mpi_harness import Harness, kFieldTolerance, kProcessCounts, kRunAttributes, kVonMisesPosition
+from mpi_harness import Harness, kExitInputError as harness_exit_input_error, kFieldTolerance, kProcessCounts, kRunAttributes, kVonMisesPosition
 
 # The residual at convergence is rounding itself (1e-19 here): compared as
 # the relative quantity it is, not relative to itself.
@@ -193,6 +193,18 @@ for boundary in ("periodic", "free"):
                         ["--depths", "1e-5,3e-5,9e-5", "--nu", "0.3"])
 stress_command_case("line", os.path.join(work_dir, "line-free-stresses-serial.h5"),
                     ["--depths", "1e-5,3e-5", "--nu", "0.3"], (2, 3))
+# Options checked against the result (read by the first process) fail on
+# every process alike: one message, the serial exit code, no file.
+for processes in (2, 3):
+    refused = os.path.join(work_dir, "stress-refused.h5")
+    result = harness.run_mpi(processes, ["stress", os.path.join(work_dir, "hertz-pk-fourier-serial.h5"), "--depths",
+                                         "1e-5", "--output", refused])
+    errors = [line for line in result.stderr.splitlines() if line.startswith("error:")]
+    where = f"stress without --nu, {processes} processes"
+    if result.returncode != harness_exit_input_error or len(errors) != 1 or "Poisson's ratio" not in errors[0]:
+        fail(f"{where}: exit {result.returncode}, errors {errors}")
+    if os.path.exists(refused):
+        fail(f"{where}: {refused} was written")
 
 missing = os.path.join(work_dir, "failure.h5")
 for processes in (2, 3):

@@ -89,8 +89,7 @@ Fields stresses_of(stress::SubsurfaceStress& stresses, const stress::SurfaceTrac
     for (std::size_t c = 0; c < stress::kComponentCount; ++c) {
       fields.values[c].insert(fields.values[c].end(), slice.components[c].begin(), slice.components[c].end());
     }
-    const std::array<const std::vector<double>*, 3> derived = {&slice.von_mises, &slice.max_shear,
-                                                               &slice.hydrostatic};
+    const std::array<const std::vector<double>*, 3> derived = {&slice.von_mises, &slice.max_shear, &slice.hydrostatic};
     for (std::size_t f = 0; f < 3; ++f) {
       std::vector<double>& into = fields.values[stress::kComponentCount + f];
       into.insert(into.end(), derived[f]->begin(), derived[f]->end());
@@ -101,9 +100,9 @@ Fields stresses_of(stress::SubsurfaceStress& stresses, const stress::SurfaceTrac
 
 void check(const Grid& grid, const std::optional<LayeredMaterial>& coating, bool shear,
            const mpi::MpiCommunicator& comm) {
-  const std::string where = fmt::format("{} {} grid{}{}, {} processes", grid.shape_string(),
-                                        grid.periodic() ? "periodic" : "free", coating ? ", coated" : "",
-                                        shear ? ", pressure and shear" : ", pressure", comm.size());
+  const std::string where =
+      fmt::format("{} {} grid{}{}, {} processes", grid.shape_string(), grid.periodic() ? "periodic" : "free",
+                  coating ? ", coated" : "", shear ? ", pressure and shear" : ", pressure", comm.size());
   const Tractions whole = make_tractions(grid);
   const double side = std::min(static_cast<double>(grid.nx()) * grid.dx(), static_cast<double>(grid.ny()) * grid.dy());
   // Near the surface, about the layer's thickness, and deep.
@@ -120,9 +119,9 @@ void check(const Grid& grid, const std::optional<LayeredMaterial>& coating, bool
   const auto rows_of = [&](const std::vector<double>& field) {
     return std::span<const double>(field.data() + begin, cells);
   };
-  const stress::SurfaceTractions mine = shear ? stress::SurfaceTractions{rows_of(whole.pressure),
-                                                                         rows_of(whole.shear_x), rows_of(whole.shear_y)}
-                                              : stress::SurfaceTractions{rows_of(whole.pressure), {}, {}};
+  const stress::SurfaceTractions mine =
+      shear ? stress::SurfaceTractions{rows_of(whole.pressure), rows_of(whole.shear_x), rows_of(whole.shear_y)}
+            : stress::SurfaceTractions{rows_of(whole.pressure), {}, {}};
   Fields want;
   Fields got;
   if (coating) {
@@ -179,8 +178,7 @@ int main(int argc, char** argv) {
     for (const Boundary boundary : {Boundary::periodic, Boundary::free}) {
       // Rows not a multiple of the process counts: slabs of unequal height;
       // an odd row count too.
-      for (const Grid& grid :
-           {Grid::plane(32, 26, 4e-6, 5e-6, boundary), Grid::plane(24, 19, 5e-6, 4e-6, boundary)}) {
+      for (const Grid& grid : {Grid::plane(32, 26, 4e-6, 5e-6, boundary), Grid::plane(24, 19, 5e-6, 4e-6, boundary)}) {
         check(grid, std::nullopt, false, world);
         check(grid, std::nullopt, true, world);
         check(grid, coating, false, world);
