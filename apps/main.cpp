@@ -67,12 +67,13 @@ int main(int argc, char** argv) {
   for (const auto& command : commands) {
     if (!command.parser->parsed()) continue;
     try {
-      // Only solve and generate are distributed; several processes of
-      // another command would write one file side by side.
+      // Only solve, generate and stress are distributed; several processes
+      // of another command would write one file side by side.
       const std::string& name = command.parser->get_name();
-      if (halfspace::app::process_count() > 1 && name != "solve" && name != "generate") {
+      if (halfspace::app::process_count() > 1 && name != "solve" && name != "generate" && name != "stress") {
         throw halfspace::InputError(fmt::format(
-            "{} is not available with more than one process: run it without mpirun (solve and generate are)", name));
+            "{} is not available with more than one process: run it without mpirun (solve, generate and stress are)",
+            name));
       }
       return command.run(std::vector<std::string>(argv, argv + argc));
     } catch (const halfspace::InputError& error) {

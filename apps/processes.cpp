@@ -2,15 +2,36 @@
 // live in apps/mpi/.
 #include "processes.hpp"
 
+#include <fmt/format.h>
+
 #include <stdexcept>
+#include <utility>
+
+#include "activity.hpp"
 
 #ifdef HALFSPACE_MPI
 #include "halfspace/mpi/session.hpp"
 #include "mpi/mpi_generate.hpp"
 #include "mpi/mpi_program.hpp"
+#include "mpi/mpi_stress.hpp"
 #endif
 
 namespace halfspace::app {
+
+io::ResultPressure read_stress_input(const std::filesystem::path& path) {
+  const Activity activity(fmt::format("reading {}", path.string()));
+  return io::read_result_pressure(path);
+}
+
+StressPlace whole_stress_place(io::ResultPressure input) {
+  StressPlace place{.layout = solvers::serial_layout(), .input = std::move(input)};
+  place.write_file = [](const std::filesystem::path& path, stress::SubsurfaceStress& stresses,
+                        const stress::SurfaceTractions& tractions, std::span<const double> depths,
+                        const io::StressFileMetadata& metadata) {
+    return io::write_stress_file(path, stresses, tractions, depths, metadata);
+  };
+  return place;
+}
 
 #ifdef HALFSPACE_MPI
 
@@ -39,6 +60,9 @@ surface::SurfaceStatistics generate_distributed(const Grid& grid, const surface:
                                                 io::HeightMapMetadata& metadata, const std::filesystem::path& output) {
   return generate_on_slabs(grid, spec, metadata, output);
 }
+int run_stress_everywhere(const std::filesystem::path& path, const std::function<int(StressPlace& place)>& run) {
+  return run_stress_on_slabs(path, run);
+}
 
 #else
 
@@ -64,6 +88,10 @@ surface::SurfaceStatistics generate_distributed(const Grid& /*grid*/, const surf
                                                 io::HeightMapMetadata& /*metadata*/,
                                                 const std::filesystem::path& /*output*/) {
   throw std::logic_error("generate_distributed: the serial build runs one process");
+}
+int run_stress_everywhere(const std::filesystem::path& path, const std::function<int(StressPlace& place)>& run) {
+  StressPlace place = whole_stress_place(read_stress_input(path));
+  return run(place);
 }
 
 #endif

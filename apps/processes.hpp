@@ -9,6 +9,10 @@
 #include <optional>
 
 #include "halfspace/io/height_map_writer.hpp"
+#include "halfspace/io/result_pressure_reader.hpp"
+#include "halfspace/io/stress_writer.hpp"
+#include "halfspace/solvers/layout.hpp"
+#include "halfspace/stress/subsurface_stress.hpp"
 #include "halfspace/surface/self_affine.hpp"
 #include "halfspace/surface/statistics.hpp"
 #include "solve_setup.hpp"
@@ -63,5 +67,34 @@ void agree_everywhere(const std::function<void()>& step);
 // Throws std::logic_error in the serial build (process_count() is 1 there).
 surface::SurfaceStatistics generate_distributed(const Grid& grid, const surface::SelfAffineSpec& spec,
                                                 io::HeightMapMetadata& metadata, const std::filesystem::path& output);
+
+// Where the stress command runs: the whole result on this process, or on
+// several MPI processes each process's rows of a 2D result's fields, the
+// hooks then collective.
+struct StressPlace {
+  const solvers::Layout& layout;  // what SubsurfaceStress is made on
+  io::ResultPressure input;       // grid and coating whole; the fields the rows `layout` holds here
+  bool first = true;              // the first (or only) process: it prints
+  // Writes the stress file (io::write_stress_file's) of the rows held here.
+  std::function<stress::VonMisesMaximum(const std::filesystem::path& path, stress::SubsurfaceStress& stresses,
+                                        const stress::SurfaceTractions& tractions, std::span<const double> depths,
+                                        const io::StressFileMetadata& metadata)>
+      write_file{};
+  // Runs a step everywhere, every process learning of a failure on any.
+  std::function<void(const std::function<void()>& step)> agree = [](const std::function<void()>& step) { step(); };
+};
+
+// The stress command's input, read whole (io::read_result_pressure).
+io::ResultPressure read_stress_input(const std::filesystem::path& path);
+// The whole of `input` on this process: serial_layout(), io::write_stress_file.
+StressPlace whole_stress_place(io::ResultPressure input);
+
+// Reads the result file `path` and returns run(place) at the place of its
+// stresses. One process (and the serial build): the whole result here. Several
+// MPI processes: the first reads the file and hands every process the grid,
+// the coating and its rows of the fields (a 1D result, one row, is run by the
+// first process alone as one process runs it, the others waiting); a
+// failure on any process throws on all (the first failure's error).
+int run_stress_everywhere(const std::filesystem::path& path, const std::function<int(StressPlace& place)>& run);
 
 }  // namespace halfspace::app

@@ -83,12 +83,13 @@ int run_solve_at(const SolveSetup& setup, const SolvePlace& place) {
   metadata.coating = setup.coating;
   metadata.contact_statistics = place.contact_statistics(result);
   // Subsurface stresses (--stress-depths), computed depth by depth while the
-  // result's /stress group is written (one process: refused on several).
+  // result's /stress group is written (on several processes each its rows).
   std::unique_ptr<stress::SubsurfaceStress> stresses;
   if (!setup.stress_depths.empty()) {
-    stresses = setup.coating
-                   ? std::make_unique<stress::SubsurfaceStress>(setup.grid, *setup.coating, setup.solver.fft_planning)
-                   : std::make_unique<stress::SubsurfaceStress>(setup.grid, setup.stress_nu, setup.solver.fft_planning);
+    stresses = setup.coating ? std::make_unique<stress::SubsurfaceStress>(setup.grid, *setup.coating, place.layout,
+                                                                          setup.solver.fft_planning)
+                             : std::make_unique<stress::SubsurfaceStress>(setup.grid, setup.stress_nu, place.layout,
+                                                                          setup.solver.fft_planning);
     const std::span<const double> pressure(result.pressure.data(), static_cast<std::size_t>(result.pressure.size()));
     metadata.extra_groups = [&stresses, &setup, pressure](const io::Hdf5Node& root) {
       io::write_stress_group(root, *stresses, pressure, setup.stress_depths);

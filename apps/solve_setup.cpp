@@ -461,7 +461,12 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
             const double friction_share = friction ? solvers::friction_memory_estimate(grid, history_steps) *
                                                          static_cast<double>(rows) / static_cast<double>(all_rows)
                                                    : 0.0;
-            return slab_solve_memory_estimate(grid, solver, rows, load_values.size()) + friction_share;
+            // The stresses' transforms and one depth's fields too (computed after the solve).
+            const double stress_share =
+                stress_peak_memory(grid, stress.depths.size(), coating.has_value(), friction.has_value()) *
+                static_cast<double>(rows) / static_cast<double>(all_rows);
+            return std::max(slab_solve_memory_estimate(grid, solver, rows, load_values.size()), stress_share) +
+                   friction_share;
           },
           limit);
     } else {

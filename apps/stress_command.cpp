@@ -24,6 +24,7 @@
 #include "halfspace/version.hpp"
 #include "memory_check.hpp"
 #include "option_table.hpp"
+#include "processes.hpp"
 #include "value_parsing.hpp"
 
 namespace halfspace::app {
@@ -49,28 +50,13 @@ int threads_from(const std::optional<std::string>& text) {
   return static_cast<int>(threads);
 }
 
-int run_stress(const StressOptions& o, const std::vector<std::string>& argv) {
-  // A coated result brings each body's Poisson's ratio; --nu is checked
-  // against the file once it is read.
+// The stresses of `place`'s result at `depths` into the stress file, after
+// checking the options against the result (every process alike).
+int stresses_at(StressPlace& place, const StressOptions& o, const std::vector<double>& depths,
+                const std::vector<std::string>& argv) {
   const double given_nu = o.nu ? parse_stress_poisson_ratio(*o.nu, "--nu") : 0.0;
-  const std::vector<double> depths =
-      parse_stress_depths(o.depths ? &*o.depths : nullptr, o.depth_range ? &*o.depth_range : nullptr);
-  if (!o.output) throw InputError("no output file given: pass --output FILE.h5");
   const std::string& output = *o.output;
-  if (io::same_file(output, o.result)) {
-    throw InputError(
-        fmt::format("--output {} is the input result file: the stresses go to a new file, pass "
-                    "another --output",
-                    output));
-  }
-  io::check_output_path(output);
-  io::check_xdmf_sidecar_path(output);
-  set_threads(threads_from(o.threads));
-
-  io::ResultPressure input = [&] {
-    const Activity activity(fmt::format("reading {}", o.result));
-    return io::read_result_pressure(o.result);
-  }();
+  io::ResultPressure& input = place.input;
   const Grid& grid = input.grid;
   // The spacings SI lengths may take (physical_ranges.hpp): beyond them the
   // stress coefficients overflow.
@@ -104,21 +90,26 @@ int run_stress(const StressOptions& o, const std::vector<std::string>& argv) {
   // transforms and one depth's fields: the depths are computed and written
   // one at a time.
   const bool shear = input.has_shear();
-  const double estimate = kProgramBytes + (shear ? 48.0 : 16.0) * static_cast<double>(grid.size()) +
-                          stress::stress_memory_estimate(grid, coating.has_value(), shear);
+  // On several processes each holds its share of the fields and transforms
+  // (the first process has read the whole result besides, and freed it).
+  const double share = static_cast<double>(input.pressure.size()) / static_cast<double>(grid.size());
+  const double estimate = kProgramBytes + share * ((shear ? 48.0 : 16.0) * static_cast<double>(grid.size()) +
+                                                   stress::stress_memory_estimate(grid, coating.has_value(), shear));
   const std::string what = o.max_memory ? fmt::format("--max-memory {}", *o.max_memory) : "--max-memory";
-  require_memory(fmt::format("stresses on the {} grid of {} (the transforms and one depth's 9 fields of {} cells "
-                             "x 8 bytes at a time)",
-                             grid.shape_string(), o.result, grid.size()),
-                 estimate, memory_limit(o.max_memory, what));
+  place.agree([&] {
+    require_memory(fmt::format("stresses on the {} grid of {} (the transforms and one depth's 9 fields of {} cells "
+                               "x 8 bytes at a time{})",
+                               grid.shape_string(), o.result, grid.size(), share < 1.0 ? ", per process" : ""),
+                   estimate, memory_limit(o.max_memory, what));
+  });
 
   stress::VonMisesMaximum maximum;
   {
     const Activity activity(fmt::format("computing stresses at {} depths on the {} grid and writing {}", depths.size(),
                                         grid.shape_string(), output));
     std::unique_ptr<stress::SubsurfaceStress> stresses =
-        coating ? std::make_unique<stress::SubsurfaceStress>(grid, *coating)
-                : std::make_unique<stress::SubsurfaceStress>(grid, nu);
+        coating ? std::make_unique<stress::SubsurfaceStress>(grid, *coating, place.layout)
+                : std::make_unique<stress::SubsurfaceStress>(grid, nu, place.layout);
     // A coated result's body is body 1 (ElasticPair::coated): its stresses
     // take the traction on it, -q of the file's /shear_x, /shear_y.
     if (coating) {
@@ -126,9 +117,9 @@ int run_stress(const StressOptions& o, const std::vector<std::string>& argv) {
       stress::make_traction_on_body1(input.shear_y);
     }
     const stress::SurfaceTractions tractions{input.pressure, input.shear_x, input.shear_y};
-    maximum = io::write_stress_file(output, *stresses, tractions, depths, {o.result, join_command_line(argv)});
+    maximum = place.write_file(output, *stresses, tractions, depths, {o.result, join_command_line(argv)});
   }
-  if (!o.quiet) {
+  if (!o.quiet && place.first) {
     const auto row = [](std::string_view label, const std::string& value) {
       fmt::print("  {:<15} {}\n", label, value);
     };
@@ -146,6 +137,27 @@ int run_stress(const StressOptions& o, const std::vector<std::string>& argv) {
     row("output", output);
   }
   return kExitOk;
+}
+
+int run_stress(const StressOptions& o, const std::vector<std::string>& argv) {
+  // A coated result brings each body's Poisson's ratio; --nu is checked
+  // against the file once it is read.
+  if (o.nu) parse_stress_poisson_ratio(*o.nu, "--nu");
+  const std::vector<double> depths =
+      parse_stress_depths(o.depths ? &*o.depths : nullptr, o.depth_range ? &*o.depth_range : nullptr);
+  if (!o.output) throw InputError("no output file given: pass --output FILE.h5");
+  const std::string& output = *o.output;
+  if (io::same_file(output, o.result)) {
+    throw InputError(
+        fmt::format("--output {} is the input result file: the stresses go to a new file, pass "
+                    "another --output",
+                    output));
+  }
+  io::check_output_path(output);
+  io::check_xdmf_sidecar_path(output);
+  set_threads(threads_from(o.threads));
+
+  return run_stress_everywhere(o.result, [&](StressPlace& place) { return stresses_at(place, o, depths, argv); });
 }
 
 }  // namespace

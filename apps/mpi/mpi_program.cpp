@@ -50,20 +50,9 @@
 #include "halfspace/threads.hpp"
 
 namespace halfspace::app {
-namespace {
-
-constexpr const char* kNotYet = "is not available with more than one process yet";
-
-// `text` on the first process, to every process.
-void broadcast(const mpi::MpiCommunicator& world, std::string& text) {
-  std::uint64_t size = text.size();
-  mpi::check(MPI_Bcast(&size, 1, MPI_UINT64_T, 0, world.get()), "MPI_Bcast");
-  text.resize(size);
-  mpi::check(MPI_Bcast(text.data(), static_cast<int>(size), MPI_CHAR, 0, world.get()), "MPI_Bcast");
-}
 
 // The grid of the first process, to every process.
-Grid broadcast(const mpi::MpiCommunicator& world, const std::optional<Grid>& grid) {
+Grid broadcast_grid(const mpi::MpiCommunicator& world, const std::optional<Grid>& grid) {
   std::uint64_t shape[4] = {0, 0, 0, 0};  // dimension, nx, ny, periodic
   double spacing[2] = {0.0, 0.0};
   if (grid) {
@@ -81,11 +70,14 @@ Grid broadcast(const mpi::MpiCommunicator& world, const std::optional<Grid>& gri
                        : Grid::plane(shape[1], shape[2], spacing[0], spacing[1], boundary);
 }
 
-// What the program adds to the solver: refused on several processes until
-// it is distributed; on one process the serial program does it.
-std::optional<std::string> unsupported_by_program(const SolveSetup& setup) {
-  if (!setup.stress_depths.empty()) return fmt::format("subsurface stresses (stress depths) {}", kNotYet);
-  return std::nullopt;
+namespace {
+
+// `text` on the first process, to every process.
+void broadcast(const mpi::MpiCommunicator& world, std::string& text) {
+  std::uint64_t size = text.size();
+  mpi::check(MPI_Bcast(&size, 1, MPI_UINT64_T, 0, world.get()), "MPI_Bcast");
+  text.resize(size);
+  mpi::check(MPI_Bcast(text.data(), static_cast<int>(size), MPI_CHAR, 0, world.get()), "MPI_Bcast");
 }
 
 // The place of a solve on this process's rows: the slab statistics and the
@@ -212,7 +204,7 @@ class DistributedSurface {
       whole_on_first_ = false;
     });
     if (world_.size() == 1) return std::move(*whole);
-    const Grid grid = broadcast(world_, whole ? std::optional<Grid>(whole->grid) : std::nullopt);
+    const Grid grid = broadcast_grid(world_, whole ? std::optional<Grid>(whole->grid) : std::nullopt);
     std::string source = whole ? whole->source : std::string();
     broadcast(world_, source);
     std::string steps;
@@ -312,7 +304,6 @@ SolveSetup make_distributed_setup(const std::function<SolveSetup(const SurfaceSh
 std::optional<int> run_solve_on_slabs(const SolveSetup& setup) {
   const mpi::MpiCommunicator world = mpi_world();
   const mpi::DistributedLayout layout(world);
-  const std::optional<std::string> unsupported = unsupported_by_program(setup);
   const bool root = world.rank() == 0;
   if (setup.grid.dimension() == 1 && world.size() > 1) {
     // A 1D grid is one row, which slabs of rows cannot split (and at most a
@@ -327,11 +318,9 @@ std::optional<int> run_solve_on_slabs(const SolveSetup& setup) {
     return code;
   }
   // One process solves friction serially (with stresses and plots).
-  if (world.size() == 1 &&
-      (setup.friction || unsupported || !layout.takes(setup.grid, half_space(setup), setup.solver))) {
+  if (world.size() == 1 && (setup.friction || !layout.takes(setup.grid, half_space(setup), setup.solver))) {
     return std::nullopt;
   }
-  if (unsupported) throw InputError(*unsupported + ": solve it on one process");
   layout.check(setup.grid, half_space(setup), setup.solver);
 
   // Threads first: the FFT plans use the thread count in force when made.

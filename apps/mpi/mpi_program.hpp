@@ -16,6 +16,10 @@ namespace halfspace::app {
 // and end, which processes.cpp's Processes owns).
 mpi::MpiCommunicator mpi_world();
 
+// The grid of the first process (whole on it, nullopt elsewhere), to every
+// process. Collective.
+Grid broadcast_grid(const mpi::MpiCommunicator& world, const std::optional<Grid>& grid);
+
 // processes.hpp's make_setup_everywhere.
 SolveSetup make_distributed_setup(const std::function<SolveSetup(const SurfaceSharing& share)>& make);
 

@@ -121,19 +121,16 @@ void PaddedRealFft::forward(std::span<const double> block) {
 void PaddedRealFft::forward_all_rows() {
   // The two values past each row's end pad it to the in-place stride.
   for (std::size_t r = 0; r < spectrum_rows(); ++r) std::fill_n(real_row(r) + 2 * block_cols_, 2, 0.0);
-  fftw_plan all_rows = nullptr;
-  {
+  // Planned on the first call and kept: a user that transforms coefficients
+  // at every depth (the subsurface stresses) plans once.
+  if (all_rows_forward_ == nullptr) {
     const std::lock_guard<std::mutex> lock(detail::fftw_planner_mutex());
     fftw_plan_with_nthreads(threads());
-    all_rows = row_plan(true, static_cast<int>(2 * block_cols_), static_cast<int>(spectrum_rows()), real_,
-                        static_cast<int>(real_stride()), spectrum_, FFTW_ESTIMATE | FFTW_DESTROY_INPUT);
+    all_rows_forward_ = row_plan(true, static_cast<int>(2 * block_cols_), static_cast<int>(spectrum_rows()), real_,
+                                 static_cast<int>(real_stride()), spectrum_, FFTW_ESTIMATE | FFTW_DESTROY_INPUT);
   }
-  if (all_rows == nullptr) throw std::runtime_error("FFTW could not plan the rows of a padded real FFT");
-  fftw_execute(all_rows);
-  {
-    const std::lock_guard<std::mutex> lock(detail::fftw_planner_mutex());
-    fftw_destroy_plan(all_rows);
-  }
+  if (all_rows_forward_ == nullptr) throw std::runtime_error("FFTW could not plan the rows of a padded real FFT");
+  fftw_execute(all_rows_forward_);
   if (columns_forward_ != nullptr) fftw_execute(columns_forward_);
 }
 
@@ -151,7 +148,8 @@ void PaddedRealFft::backward(std::span<double> block) {
 
 void PaddedRealFft::release() noexcept {
   const std::lock_guard<std::mutex> lock(detail::fftw_planner_mutex());
-  for (fftw_plan_s** plan : {&rows_forward_, &rows_backward_, &columns_forward_, &columns_backward_}) {
+  for (fftw_plan_s** plan :
+       {&rows_forward_, &rows_backward_, &columns_forward_, &columns_backward_, &all_rows_forward_}) {
     if (*plan != nullptr) fftw_destroy_plan(*plan);
     *plan = nullptr;
   }

@@ -344,6 +344,40 @@ void Hdf5Node::write_slabs(std::size_t first, std::span<const double> values) co
   }
 }
 
+void Hdf5Node::write_slab_rows(std::size_t slab, std::size_t first_row, std::span<const double> values) const {
+  const Dataspace file_space(H5Dget_space(id_));
+  const int rank = file_space.valid() ? H5Sget_simple_extent_ndims(file_space.get()) : -1;
+  if (rank < 2) fail_hdf5("could not read the shape of the dataset being written");
+  std::vector<hsize_t> dims(static_cast<std::size_t>(rank));
+  H5Sget_simple_extent_dims(file_space.get(), dims.data(), nullptr);
+  hsize_t row = 1;
+  for (std::size_t k = 2; k < dims.size(); ++k) row *= dims[k];
+  const hsize_t count = values.size() / row;
+  if (count * row != values.size() || slab >= dims[0] || first_row + count > dims[1]) {
+    throw InputError(
+        fmt::format("dataset rows: {} values from row {} of slab {} do not fit a dataset of {} slabs of {} "
+                    "rows of {} values",
+                    values.size(), first_row, slab, dims[0], dims[1], row));
+  }
+  // A process without rows still takes part (the write is collective).
+  std::vector<hsize_t> start(dims.size(), 0);
+  std::vector<hsize_t> extent = dims;
+  start[0] = slab;
+  start[1] = first_row;
+  extent[0] = 1;
+  extent[1] = count;
+  const hsize_t memory_count = std::max<hsize_t>(values.size(), 1);
+  const Dataspace memory_space(H5Screate_simple(1, &memory_count, nullptr));
+  const herr_t selected = !memory_space.valid() ? -1
+                          : count == 0 ? std::min(H5Sselect_none(file_space.get()), H5Sselect_none(memory_space.get()))
+                                       : H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start.data(), nullptr,
+                                                             extent.data(), nullptr);
+  if (selected < 0 ||
+      H5Dwrite(id_, H5T_NATIVE_DOUBLE, memory_space.get(), file_space.get(), transfer_, values.data()) < 0) {
+    fail_hdf5(fmt::format("could not write rows {} to {} of slab {} of a dataset", first_row, first_row + count, slab));
+  }
+}
+
 Hdf5Node Hdf5Node::create_group(std::string_view name) const {
   const std::string key(name);
   const hid_t group = H5Gcreate2(id_, key.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);

@@ -38,6 +38,11 @@ stress::VonMisesMaximum write_stress_group(const Hdf5Node& root, stress::Subsurf
   const Grid& grid = stresses.grid();
   stress::check_depths(grid, depths);
   stresses.check_tractions(tractions);  // refused before the group is made
+  // On a distributed layout every process writes its rows of each field
+  // (the file's processes are the layout's), and the first the small
+  // datasets.
+  const bool lead = stresses.communicator().rank() == 0;
+  const std::size_t first_row = stresses.rows().first;
   const Hdf5Node group = root.create_group("stress");
   group.write_double_attribute("poisson_ratio", stresses.poisson_ratio());
   group.write_string_attribute("tractions", tractions.has_shear() ? "pressure and shear" : "pressure");
@@ -48,11 +53,13 @@ stress::VonMisesMaximum write_stress_group(const Hdf5Node& root, stress::Subsurf
     group.write_double_attribute("substrate_poisson_ratio", coating->substrate.poissons_ratio);
     std::vector<std::uint8_t> in_layer;
     for (const double z : depths) in_layer.push_back(stresses.in_layer(z) ? 1 : 0);
-    group.write_dataset("in_layer", {in_layer.size()}, std::span<const std::uint8_t>(in_layer), "")
+    group
+        .write_dataset_rows("in_layer", {in_layer.size()}, 0,
+                            lead ? std::span<const std::uint8_t>(in_layer) : std::span<const std::uint8_t>(), "")
         .write_string_attribute("meaning", "1: the depth is in the layer (z <= layer_thickness); 0: in the substrate");
   }
   group.write_string_attribute("sign_convention", "tension positive (compression negative); z positive downwards");
-  group.write_dataset("depths", {depths.size()}, depths, "m");
+  group.write_dataset_rows("depths", {depths.size()}, 0, lead ? depths : std::span<const double>(), "m");
   // Without deflate: the fields' float64 mantissas barely compress (23% at
   // 512^2) at 15 times the time of the plain write (docs/performance.md).
   const std::vector<std::size_t> shape = volume_shape(grid, depths.size());
@@ -66,11 +73,11 @@ stress::VonMisesMaximum write_stress_group(const Hdf5Node& root, stress::Subsurf
   const stress::VonMisesMaximum maximum =
       stress::stresses_by_depth(stresses, tractions, depths, [&](const stress::StressSlice& slice) {
         for (std::size_t c = 0; c < stress::kComponentCount; ++c) {
-          fields[c].write_slabs(slice.index, slice.components[c]);
+          fields[c].write_slab_rows(slice.index, first_row, slice.components[c]);
         }
-        fields[stress::kComponentCount].write_slabs(slice.index, slice.von_mises);
-        fields[stress::kComponentCount + 1].write_slabs(slice.index, slice.max_shear);
-        fields[stress::kComponentCount + 2].write_slabs(slice.index, slice.hydrostatic);
+        fields[stress::kComponentCount].write_slab_rows(slice.index, first_row, slice.von_mises);
+        fields[stress::kComponentCount + 1].write_slab_rows(slice.index, first_row, slice.max_shear);
+        fields[stress::kComponentCount + 2].write_slab_rows(slice.index, first_row, slice.hydrostatic);
       });
   root.write_double_attribute("max_von_mises", maximum.value);
   root.write_double_attribute("max_von_mises_x", maximum.x);
@@ -93,33 +100,45 @@ stress::VonMisesMaximum write_stress_file(const std::filesystem::path& path, str
                                           const stress::SurfaceTractions& tractions, std::span<const double> depths,
                                           const StressFileMetadata& metadata) {
   const Grid& grid = stresses.grid();
-  const std::span<const double> pressure = tractions.pressure;
-  const bool shear = tractions.has_shear();
   stresses.check_tractions(tractions);  // refused before the file is made
-  const double surface_fields = shear ? 3.0 : 1.0;
-  const std::uint64_t bound =
-      kHdf5SmallItemsBound +
-      static_cast<std::uint64_t>(surface_fields) * hdf5_dataset_bound(field_shape(grid), Compression::deflate) +
-      stress_group_bound(grid, depths.size());
   stress::VonMisesMaximum maximum;
-  write_large_hdf5_file(path, bound, [&](const Hdf5Node& root) {
-    root.write_string_attribute("format", "halfspace-stress");
-    root.write_int64_attribute("format_version", kStressFormatVersion);
-    root.write_string_attribute("units", "SI: depths, dx, dy and positions in m; stresses and pressure in Pa");
-    write_grid_attributes(root, grid);
-    root.write_string_attribute("halfspace_version", fmt::format("{} ({})", kVersion, kGitHash));
-    root.write_string_attribute("command_line", metadata.command_line);
-    root.write_string_attribute("source", metadata.source);
-    root.write_dataset("pressure", field_shape(grid), pressure, "Pa");
-    if (shear) {
-      const std::vector<double> zero(tractions.shear_x.empty() || tractions.shear_y.empty() ? grid.size() : 0, 0.0);
-      root.write_dataset("shear_x", field_shape(grid), tractions.shear_x.empty() ? zero : tractions.shear_x, "Pa");
-      root.write_dataset("shear_y", field_shape(grid), tractions.shear_y.empty() ? zero : tractions.shear_y, "Pa");
-    }
-    maximum = write_stress_group(root, stresses, tractions, depths);
+  write_large_hdf5_file(path, stress_file_bound(grid, tractions.has_shear(), depths.size()), [&](const Hdf5Node& root) {
+    maximum = write_stress_file_contents(root, stresses, tractions, depths, metadata);
   });
   write_xdmf_sidecar(path, grid);  // for ParaView (xdmf_writer.hpp)
   return maximum;
+}
+
+std::uint64_t stress_file_bound(const Grid& grid, bool shear, std::size_t depth_count) {
+  const std::uint64_t surface_fields = shear ? 3 : 1;
+  return kHdf5SmallItemsBound + surface_fields * hdf5_dataset_bound(field_shape(grid), Compression::deflate) +
+         stress_group_bound(grid, depth_count);
+}
+
+stress::VonMisesMaximum write_stress_file_contents(const Hdf5Node& root, stress::SubsurfaceStress& stresses,
+                                                   const stress::SurfaceTractions& tractions,
+                                                   std::span<const double> depths, const StressFileMetadata& metadata) {
+  const Grid& grid = stresses.grid();
+  stresses.check_tractions(tractions);
+  // A 1D grid's one row is its cells: its rows of a field are the cells.
+  const std::size_t first_row = grid.dimension() == 1 ? 0 : stresses.rows().first;
+  root.write_string_attribute("format", "halfspace-stress");
+  root.write_int64_attribute("format_version", kStressFormatVersion);
+  root.write_string_attribute("units", "SI: depths, dx, dy and positions in m; stresses and pressure in Pa");
+  write_grid_attributes(root, grid);
+  root.write_string_attribute("halfspace_version", fmt::format("{} ({})", kVersion, kGitHash));
+  root.write_string_attribute("command_line", metadata.command_line);
+  root.write_string_attribute("source", metadata.source);
+  root.write_dataset_rows("pressure", field_shape(grid), first_row, tractions.pressure, "Pa");
+  if (tractions.has_shear()) {
+    const std::size_t cells = stresses.local_size();
+    const std::vector<double> zero(tractions.shear_x.empty() || tractions.shear_y.empty() ? cells : 0, 0.0);
+    root.write_dataset_rows("shear_x", field_shape(grid), first_row,
+                            tractions.shear_x.empty() ? zero : tractions.shear_x, "Pa");
+    root.write_dataset_rows("shear_y", field_shape(grid), first_row,
+                            tractions.shear_y.empty() ? zero : tractions.shear_y, "Pa");
+  }
+  return write_stress_group(root, stresses, tractions, depths);
 }
 
 }  // namespace halfspace::io

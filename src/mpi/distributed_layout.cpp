@@ -52,6 +52,11 @@ std::unique_ptr<TangentialOperator> DistributedLayout::make_tangential_operator(
   return std::make_unique<TangentialOperator>(grid, pair, make_slab_tangential_transforms(grid, comm_, planning));
 }
 
+std::unique_ptr<operators::TangentialTransforms> DistributedLayout::make_transforms(const Grid& grid,
+                                                                                    FftPlanning planning) const {
+  return make_slab_tangential_transforms(grid, comm_, planning);
+}
+
 solvers::RowSlab DistributedLayout::rows(const Grid& grid) const {
   const SlabLayout layout = slab_layout(grid.nx(), grid.ny(), comm_);
   return {layout.first_row, layout.rows};

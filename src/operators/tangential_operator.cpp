@@ -113,6 +113,14 @@ class SerialTangentialTransforms final : public TangentialTransforms {
   std::unique_ptr<PaddedRealFft> padded_[2];  // free grids
 };
 
+}  // namespace
+
+std::unique_ptr<TangentialTransforms> make_serial_transforms(const Grid& grid, FftPlanning planning) {
+  return std::make_unique<SerialTangentialTransforms>(grid, planning);
+}
+
+namespace {
+
 // A coated body's compliance is known per Fourier mode only: free grids
 // would need its cell coefficients in real space (Cerruti's rectangle plus a
 // remainder, as the normal kernel has), which are not built.
@@ -302,7 +310,7 @@ struct TangentialOperator::Impl {
 };
 
 TangentialOperator::TangentialOperator(const Grid& grid, const ElasticPair& pair, FftPlanning planning)
-    : TangentialOperator(grid, pair, std::make_unique<SerialTangentialTransforms>(grid, planning)) {}
+    : TangentialOperator(grid, pair, make_serial_transforms(grid, planning)) {}
 
 TangentialOperator::TangentialOperator(const Grid& grid, const ElasticPair& pair,
                                        std::unique_ptr<TangentialTransforms> transforms)

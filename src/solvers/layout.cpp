@@ -92,6 +92,11 @@ std::unique_ptr<LevelTransfer> Layout::level_transfer(const Grid& /*fine*/, std:
   return nullptr;
 }
 
+// The whole grid here.
+std::unique_ptr<operators::TangentialTransforms> Layout::make_transforms(const Grid& grid, FftPlanning planning) const {
+  return operators::make_serial_transforms(grid, planning);
+}
+
 ElasticOperators Layout::make_mixed_operators(const Grid& /*grid*/, const HalfSpace& /*half_space*/, bool /*fourier*/,
                                               FftPlanning /*planning*/) const {
   throw SolverOptionError("precision", "mixed",

@@ -29,22 +29,51 @@ void check_depths(const Grid& grid, std::span<const double> depths) {
 
 namespace {
 
+// The first process (in rank order, hence row order) whose `found` is true,
+// or -1 if none is: the same on every process.
+int first_process_with(bool found, const linalg::Communicator& comm) {
+  const double none = static_cast<double>(comm.size());
+  const double first = comm.min(found ? static_cast<double>(comm.rank()) : none);
+  return first == none ? -1 : static_cast<int>(first);
+}
+
+// `values` of process `from` on every process (the others give zeros).
+void share_from(int from, std::span<double> values, const linalg::Communicator& comm) {
+  if (comm.rank() != from) std::fill(values.begin(), values.end(), 0.0);
+  comm.sum(values);
+}
+
 // Throws InputError at the first value of the slice's nine fields (in storage
 // order) that is not finite: nothing that overflowed is handed to a writer.
-void require_finite(const StressSlice& slice, const Grid& grid) {
-  const auto check = [&](const std::vector<double>& field, std::string_view name) {
+// On several processes, every process throws the one of the first that
+// meets such a value. `first_row`: the grid's row of the slice's first.
+void require_finite(const StressSlice& slice, const Grid& grid, std::size_t first_row,
+                    const linalg::Communicator& comm) {
+  const std::array<const std::vector<double>*, kComponentCount + 3> fields = {
+      &slice.components[0], &slice.components[1], &slice.components[2], &slice.components[3], &slice.components[4],
+      &slice.components[5], &slice.von_mises,     &slice.max_shear,     &slice.hydrostatic};
+  // field, cell (of the grid) and value of the first found here
+  std::array<double, 3> first{};
+  bool found = false;
+  for (std::size_t f = 0; f < fields.size() && !found; ++f) {
+    const std::vector<double>& field = *fields[f];
     const auto bad = std::find_if(field.begin(), field.end(), [](double v) { return !std::isfinite(v); });
-    if (bad == field.end()) return;
-    const auto cell = static_cast<std::size_t>(bad - field.begin());
-    throw InputError(fmt::format(
-        "the stress {} at depth z = {:.6g} m, cell (row {}, column {}) of the {} grid, is {}: the pressure or the "
-        "grid's spacing is too large for the stresses to be represented; nothing was written",
-        name, slice.depth, cell / grid.nx(), cell % grid.nx(), grid.shape_string(), *bad));
-  };
-  for (std::size_t c = 0; c < kComponentCount; ++c) check(slice.components[c], kComponentNames[c]);
-  check(slice.von_mises, "von_mises");
-  check(slice.max_shear, "max_shear");
-  check(slice.hydrostatic, "hydrostatic");
+    if (bad == field.end()) continue;
+    found = true;
+    first = {static_cast<double>(f),
+             static_cast<double>(static_cast<std::size_t>(bad - field.begin()) + first_row * grid.nx()), *bad};
+  }
+  const int from = first_process_with(found, comm);
+  if (from < 0) return;
+  share_from(from, first, comm);
+  const auto f = static_cast<std::size_t>(first[0]);
+  const auto cell = static_cast<std::size_t>(first[1]);
+  constexpr std::array<const char*, 3> kDerived = {"von_mises", "max_shear", "hydrostatic"};
+  const char* name = f < kComponentCount ? kComponentNames[f] : kDerived[f - kComponentCount];
+  throw InputError(fmt::format(
+      "the stress {} at depth z = {:.6g} m, cell (row {}, column {}) of the {} grid, is {}: the pressure or the "
+      "grid's spacing is too large for the stresses to be represented; nothing was written",
+      name, slice.depth, cell / grid.nx(), cell % grid.nx(), grid.shape_string(), first[2]));
 }
 
 }  // namespace
@@ -61,7 +90,9 @@ VonMisesMaximum stresses_by_depth(SubsurfaceStress& stresses, const SurfaceTract
   const Grid& grid = stresses.grid();
   check_depths(grid, depths);
   stresses.set_tractions(tractions);
-  const std::size_t cells = grid.size();
+  const std::size_t cells = stresses.local_size();
+  const std::size_t first_row = stresses.rows().first;
+  const linalg::Communicator& comm = stresses.communicator();
   StressSlice slice;
   for (auto& component : slice.components) component.resize(cells);
   slice.von_mises.resize(cells);
@@ -84,16 +115,23 @@ VonMisesMaximum stresses_by_depth(SubsurfaceStress& stresses, const SurfaceTract
       slice.max_shear[k] = max_shear(tensor);
       slice.hydrostatic[k] = hydrostatic(tensor);
     });
-    require_finite(slice, grid);
+    require_finite(slice, grid, first_row, comm);
     // The first maximum in storage order (depth, then row), so that the
-    // reported point does not depend on the thread count.
+    // reported point depends neither on the thread count nor on the
+    // processes: this depth's largest over them, at the first process (in
+    // row order) holding it.
     const auto largest = std::max_element(slice.von_mises.begin(), slice.von_mises.end());
-    if (first || *largest > maximum.value) {
-      const auto cell = static_cast<std::size_t>(largest - slice.von_mises.begin());
-      maximum.value = *largest;
-      maximum.x = static_cast<double>(cell % grid.nx()) * grid.dx();
-      maximum.y = grid.dimension() == 1 ? 0.0 : static_cast<double>(cell / grid.nx()) * grid.dy();
-      maximum.z = depths[d];
+    const double here = largest == slice.von_mises.end() ? -1.0 : *largest;  // a process without rows
+    const double value = comm.max(here);
+    if (first || value > maximum.value) {
+      std::array<double, 2> position{};
+      if (here == value) {
+        const auto cell = static_cast<std::size_t>(largest - slice.von_mises.begin());
+        position[0] = static_cast<double>(cell % grid.nx()) * grid.dx();
+        position[1] = grid.dimension() == 1 ? 0.0 : static_cast<double>(first_row + cell / grid.nx()) * grid.dy();
+      }
+      share_from(first_process_with(here == value, comm), position, comm);
+      maximum = {value, position[0], position[1], depths[d]};
       first = false;
     }
     consume(slice);
@@ -105,7 +143,7 @@ namespace {
 
 StressVolume fill_volume(SubsurfaceStress& stresses, const SurfaceTractions& tractions,
                          std::span<const double> depths) {
-  const std::size_t cells = stresses.grid().size();
+  const std::size_t cells = stresses.local_size();
   const std::size_t total = cells * depths.size();
   StressVolume volume;
   volume.depths.assign(depths.begin(), depths.end());
@@ -157,10 +195,12 @@ StressVolume compute_stress_volume(const Grid& grid, const SurfaceTractions& tra
 
 double stress_memory_estimate(const Grid& grid, bool coated, bool shear) {
   const double cells = static_cast<double>(grid.nx()) * static_cast<double>(grid.ny());
-  // Periodic: the pressure spectrum, the transform's spectrum and real array,
-  // the decay table (about 5 doubles a cell). Free: the padded pressure
-  // spectrum and transform, the padded coefficient transform (4 cells each
-  // of spectrum and real array) and the six coefficient quadrants (about 26).
+  // Periodic: the pressure spectrum, the layout's two transforms (spectra,
+  // and the real array of the one used), the decay table (about 6 doubles a
+  // cell). Free: the padded pressure spectrum, the layout's two padded
+  // transforms (one for the fields, one for the coefficients' wrap-around
+  // array), a component's spectrum summed over the tractions (4 doubles a
+  // cell each) and the six coefficient quadrants (about 26).
   // Coated: each half-spectrum mode's solution (8 doubles) and profile (3)
   // instead of the decay table, about 5.5 more doubles a cell; on a free
   // grid the remainder's six parts on the padded half spectrum (12).
@@ -171,7 +211,7 @@ double stress_memory_estimate(const Grid& grid, bool coated, bool shear) {
   const double coated_shear = coated && grid.periodic() ? 7.5 : 0.0;
   const double shear_workspace = shear ? (grid.periodic() ? 2.0 + coated_shear : 20.0) : 0.0;
   const double workspace =
-      ((grid.periodic() ? (coated ? 10.5 : 5.0) : (coated ? 38.0 : 26.0)) + shear_workspace) * 8.0 * cells;
+      ((grid.periodic() ? (coated ? 11.5 : 6.0) : (coated ? 38.0 : 26.0)) + shear_workspace) * 8.0 * cells;
   // The pressure itself and one depth's nine fields.
   constexpr double kSliceFields = 9.0;
   return 8.0 * cells + workspace + kSliceFields * 8.0 * cells;

@@ -40,6 +40,15 @@
 // non-negative offsets (each component is even or odd in each axis), and each
 // component fills the wrap-around array, transforms it and multiplies it
 // into the kept pressure spectrum before the pruned inverse transform.
+//
+// The transforms are a layout's (solvers/layout.hpp): the whole grid here
+// (serial), or this process's slab of rows with the spectrum's columns it
+// holds (mpi::DistributedLayout). Every loop runs over the spectrum entries
+// held here, each naming its mode (row ky, column kx of the whole
+// spectrum), so the same code serves both; the coefficients of a free grid
+// are evaluated on the quadrant rows this process's slab meets, and the
+// largest von Mises stress is reduced over the processes
+// (stress_volume.cpp).
 #include "halfspace/stress/subsurface_stress.hpp"
 
 #include <fmt/format.h>
@@ -53,9 +62,6 @@
 #include <vector>
 
 #include "halfspace/error.hpp"
-#include "halfspace/fft/grid_transform.hpp"
-#include "halfspace/fft/padded_real_fft.hpp"
-#include "halfspace/fft/real_fft.hpp"
 #include "halfspace/kernels/layered_fourier.hpp"
 #include "halfspace/kernels/periodic_fourier.hpp"
 #include "halfspace/linalg/parallel.hpp"
@@ -159,10 +165,11 @@ double checked_depth(const Grid& grid, double depth) {
 }
 
 struct SubsurfaceStress::Impl {
-  Impl(const Grid& g, const LayeredMaterial& coating, FftPlanning planning)
-      : Impl(g, coating.layer.poissons_ratio, planning, &coating) {}
+  Impl(const Grid& g, const LayeredMaterial& coating, const solvers::Layout& layout, FftPlanning planning)
+      : Impl(g, coating.layer.poissons_ratio, layout, planning, &coating) {}
 
-  Impl(const Grid& g, double poisson, FftPlanning planning, const LayeredMaterial* coating = nullptr)
+  Impl(const Grid& g, double poisson, const solvers::Layout& layout, FftPlanning planning,
+       const LayeredMaterial* coating = nullptr)
       : grid(g), nu(checked_poisson_ratio(poisson)) {
     if (coating) {
       require_coated_stress_grid(grid, *coating);
@@ -170,11 +177,13 @@ struct SubsurfaceStress::Impl {
     }
     const bool line = grid.dimension() == 1;
     rows = line ? 1 : grid.ny();
+    slab = layout.rows(grid);
+    transforms = layout.make_transforms(grid, planning);
+    held = transforms->spectrum_blocks() * transforms->spectrum_length();
+    spectra[0].resize(held);
     if (grid.periodic()) {
-      transform = make_grid_transform(grid, planning);
-      spectra[0].resize(transform->spectrum_size());
-      decay.resize(transform->spectrum_size());
-      kx.resize(transform->spectrum_cols());
+      decay.resize(held);
+      kx.resize(grid.nx() / 2 + 1);
       ky.resize(rows);
       for (std::size_t c = 0; c < kx.size(); ++c) kx[c] = kernels::dft_wavenumber(c, grid.nx(), grid.dx());
       for (std::size_t r = 0; r < rows; ++r) ky[r] = line ? 0.0 : kernels::dft_wavenumber(r, grid.ny(), grid.dy());
@@ -186,37 +195,66 @@ struct SubsurfaceStress::Impl {
       for (std::size_t r = 0; r < rows; ++r) cell_y[r] = line ? 1.0 : sinc(0.5 * ky[r] * grid.dy());
       if (layered) solve_modes();
     } else {
-      padded = std::make_unique<PaddedRealFft>(rows, grid.nx(), planning);
-      kernel = line ? std::make_unique<RealFft>(2 * grid.nx(), planning, FftOutput::overwrite_input)
-                    : std::make_unique<RealFft>(2 * rows, 2 * grid.nx(), planning, FftOutput::overwrite_input);
-      spectra[0].resize(padded->spectrum_size());
+      summed.resize(held);
       quadrant_cols = grid.nx() + 1;
-      quadrant_rows = line ? 1 : rows + 1;
-      for (auto& q : quadrants[0]) q.resize(quadrant_rows * quadrant_cols);
+      choose_quadrant_rows(line);
+      for (auto& q : quadrants[0]) q.resize(quadrant_rows.size() * quadrant_cols);
       if (layered) {
-        for (auto& part : remainder) part.resize(kernel->spectrum_size());
+        for (auto& part : remainder) part.resize(held);
       }
     }
   }
 
-  // Throws InputError unless `field` has the grid's size and finite values.
-  void check_field(std::span<const double> field, std::string_view name) const {
-    if (field.size() != grid.size()) {
-      throw InputError(fmt::format("subsurface stress: the {} has {} values but the grid has {} cells ({})", name,
-                                   field.size(), grid.size(), grid.shape_string()));
-    }
-    for (std::size_t k = 0; k < field.size(); ++k) {
-      if (!std::isfinite(field[k])) {
-        throw InputError(fmt::format("subsurface stress: {} value {} at index {} is not finite", name, field[k], k));
+  // The quadrant rows |dj| the wrap-around rows of this process's slab read:
+  // its rows j (offsets j) and the padding rows ny + j (offsets ny - j).
+  // Serially every row 0 .. ny.
+  void choose_quadrant_rows(bool line) {
+    const std::size_t none = rows + 1;
+    quadrant_slot.assign(line ? 1 : rows + 1, none);
+    const auto use = [&](std::size_t offset) {
+      if (quadrant_slot[offset] == none) quadrant_slot[offset] = 0;
+    };
+    if (line) {
+      use(0);
+    } else {
+      for (std::size_t j = slab.first; j < slab.first + slab.count; ++j) {
+        use(j);
+        use(rows - j);
       }
     }
+    quadrant_rows.clear();
+    for (std::size_t offset = 0; offset < quadrant_slot.size(); ++offset) {
+      if (quadrant_slot[offset] == none) continue;
+      quadrant_slot[offset] = quadrant_rows.size();
+      quadrant_rows.push_back(offset);
+    }
+  }
+
+  // The field values held here: this process's rows.
+  std::size_t local_size() const { return transforms->local_size(); }
+  const linalg::Communicator& communicator() const { return transforms->communicator(); }
+
+  // Throws InputError unless `field` has the size of the cells held here
+  // and finite values; on every process if any process's are not finite.
+  void check_field(std::span<const double> field, std::string_view name) const {
+    if (field.size() != local_size()) {
+      throw InputError(fmt::format("subsurface stress: the {} has {} values but {} cells of the {} grid are held here",
+                                   name, field.size(), local_size(), grid.shape_string()));
+    }
+    const auto bad = std::find_if(field.begin(), field.end(), [](double v) { return !std::isfinite(v); });
+    const bool here = bad != field.end();
+    if (communicator().max(here ? 1.0 : 0.0) == 0.0) return;
+    if (!here) throw InputError(fmt::format("subsurface stress: a {} value on another process is not finite", name));
+    const auto k = static_cast<std::size_t>(bad - field.begin()) + slab.first * grid.nx();
+    throw InputError(fmt::format("subsurface stress: {} value {} at index {} is not finite", name, *bad, k));
   }
 
   void check_tractions(const SurfaceTractions& tractions) const {
     check_field(tractions.pressure, "pressure");
     if (!tractions.shear_x.empty()) check_field(tractions.shear_x, "shear traction along x");
     if (!tractions.shear_y.empty()) check_field(tractions.shear_y, "shear traction along y");
-    if (layered && tractions.has_shear() && !transform) require_coated_shear_stress_grid(grid, layered->material());
+    if (layered && tractions.has_shear() && !grid.periodic())
+      require_coated_shear_stress_grid(grid, layered->material());
   }
 
   void set_tractions(const SurfaceTractions& tractions) {
@@ -230,7 +268,7 @@ struct SubsurfaceStress::Impl {
       if (t > 0) allocate_shear(t);
       transform_field(fields[t], spectra[t]);
     }
-    if (layered && transform && (active[1] || active[2]) && !layered_shear) {
+    if (layered && grid.periodic() && (active[1] || active[2]) && !layered_shear) {
       layered_shear.emplace(layered->material(), kx, ky);
     }
     has_pressure = true;
@@ -240,38 +278,27 @@ struct SubsurfaceStress::Impl {
   // once, the first time it is set.
   void allocate_shear(std::size_t t) {
     spectra[t].resize(spectra[0].size());
-    if (!transform) {
-      for (auto& q : quadrants[t]) q.resize(quadrant_rows * quadrant_cols);
+    if (!grid.periodic()) {
+      for (auto& q : quadrants[t]) q.resize(quadrant_rows.size() * quadrant_cols);
     }
   }
 
   // The field's spectrum (periodic: its DFT; free: that of the zero-padded field) into `into`.
   void transform_field(std::span<const double> field, std::vector<std::complex<double>>& into) {
-    std::span<const std::complex<double>> spectrum;
-    if (transform) {
-      if (!transform->forward_from(field)) {
-        std::span<double> input = transform->input();
-        linalg::for_each_index(field.size(), [&](std::size_t i) { input[i] = field[i]; });
-        transform->forward();
-      }
-      spectrum = transform->spectrum();
-    } else {
-      padded->forward(field);
-      spectrum = padded->spectrum();
-    }
-    linalg::for_each_index(spectrum.size(), [&](std::size_t k) { into[k] = spectrum[k]; });
+    const std::span<const std::complex<double>> spectrum = transforms->forward(0, field);
+    linalg::for_each_index(held, [&](std::size_t k) { into[k] = spectrum[k]; });
   }
 
   void compute(double depth, const std::array<std::span<double>, kComponentCount>& fields) {
     checked_depth(grid, depth);
     if (!has_pressure) throw InputError("subsurface stress: no pressure was set before computing stresses");
     for (std::size_t c = 0; c < kComponentCount; ++c) {
-      if (fields[c].size() != grid.size()) {
-        throw InputError(fmt::format("subsurface stress: the {} field has {} values but the grid has {} cells",
-                                     kComponentNames[c], fields[c].size(), grid.size()));
+      if (fields[c].size() != local_size()) {
+        throw InputError(fmt::format("subsurface stress: the {} field has {} values but {} cells are held here",
+                                     kComponentNames[c], fields[c].size(), local_size()));
       }
     }
-    if (transform) {
+    if (grid.periodic()) {
       compute_periodic(depth, fields);
     } else {
       compute_free(depth, fields);
@@ -280,13 +307,24 @@ struct SubsurfaceStress::Impl {
 
   // Each mode's layer and substrate coefficients, for every depth.
   void solve_modes() {
-    const std::size_t cols = transform->spectrum_cols();
-    modes.resize(rows * cols);
-    profiles.resize(rows * cols);
+    modes.resize(held);
+    profiles.resize(held);
     decay.clear();
     decay.shrink_to_fit();
-    linalg::for_each_row(rows, cols, [&](std::size_t r) {
-      for (std::size_t c = 0; c < cols; ++c) modes[r * cols + c] = layered->solve(std::hypot(kx[c], ky[r]));
+    for_each_mode(
+        [&](std::size_t k, std::size_t r, std::size_t c) { modes[k] = layered->solve(std::hypot(kx[c], ky[r])); });
+  }
+
+  // f(k, row, col) for each spectrum entry k held here, in parallel over
+  // its blocks (serially the spectrum's rows, on slabs its columns).
+  template <class F>
+  void for_each_mode(const F& f) const {
+    const std::size_t length = transforms->spectrum_length();
+    linalg::for_each_row(transforms->spectrum_blocks(), length, [&](std::size_t block) {
+      for (std::size_t k = block * length; k < (block + 1) * length; ++k) {
+        const operators::SpectrumMode mode = transforms->mode(k);
+        f(k, mode.row, mode.col);
+      }
     });
   }
 
@@ -296,30 +334,25 @@ struct SubsurfaceStress::Impl {
   }
 
   void compute_periodic(double z, const std::array<std::span<double>, kComponentCount>& fields) {
-    const std::size_t cols = transform->spectrum_cols();
+    const std::size_t cols = grid.nx() / 2 + 1;
     const bool nyquist_col = grid.nx() % 2 == 0;
     const bool nyquist_row = rows > 1 && rows % 2 == 0;
     const double inverse_n = 1.0 / static_cast<double>(grid.size());
     const double body_nu = poisson_ratio_at(z);
     if (layered) {
       const Body body = layered->body_at(z);
-      linalg::for_each_row(rows, cols, [&](std::size_t r) {
-        for (std::size_t c = 0; c < cols; ++c) {
-          profiles[r * cols + c] = layered->profile(modes[r * cols + c], z, body);
-        }
-      });
+      for_each_mode(
+          [&](std::size_t k, std::size_t, std::size_t) { profiles[k] = layered->profile(modes[k], z, body); });
       if (layered_shear && (active[1] || active[2])) layered_shear->evaluate(z, body);
     } else {
-      linalg::for_each_row(rows, cols, [&](std::size_t r) {
-        for (std::size_t c = 0; c < cols; ++c) decay[r * cols + c] = std::exp(-std::hypot(kx[c], ky[r]) * z);
-      });
+      for_each_mode(
+          [&](std::size_t k, std::size_t r, std::size_t c) { decay[k] = std::exp(-std::hypot(kx[c], ky[r]) * z); });
     }
     for (std::size_t component = 0; component < kComponentCount; ++component) {
-      std::span<std::complex<double>> spectrum = transform->spectrum();
+      std::span<std::complex<double>> spectrum = transforms->spectrum(0);
       const auto kind = static_cast<Component>(component);
-      linalg::for_each_row(rows, cols, [&](std::size_t r) {
-        for (std::size_t c = 0; c < cols; ++c) {
-          const std::size_t k = r * cols + c;
+      for_each_mode([&](std::size_t k, std::size_t r, std::size_t c) {
+        {
           std::complex<double> sum = 0.0;
           for (std::size_t t = 0; t < kTractionCount; ++t) {
             if (!active[t]) continue;
@@ -336,12 +369,7 @@ struct SubsurfaceStress::Impl {
           spectrum[k] = sum * (cell_x[c] * cell_y[r] * inverse_n);
         }
       });
-      std::span<double> out = fields[component];
-      if (!transform->backward_into(out)) {
-        transform->backward();
-        std::span<const double> output = transform->output();
-        linalg::for_each_index(out.size(), [&](std::size_t i) { out[i] = output[i]; });
-      }
+      transforms->backward(0, fields[component]);
     }
   }
 
@@ -392,16 +420,15 @@ struct SubsurfaceStress::Impl {
     const std::size_t padded_rows = line ? 1 : 2 * rows;
     const int images_y = line ? 0 : kernels::LayeredKernel::kAliasImages;
     const std::size_t padded_cols = 2 * grid.nx();
-    const std::size_t cols = kernel->spectrum_cols();
     const double dx = grid.dx();
     const double dy = grid.dy();
     const double period_x = 2.0 * std::numbers::pi / dx;
     const double period_y = 2.0 * std::numbers::pi / dy;
     constexpr int kImages = kernels::LayeredKernel::kAliasImages;
-    linalg::for_each_row(padded_rows, cols, [&](std::size_t r) {
+    for_each_mode([&](std::size_t bin, std::size_t r, std::size_t c) {
       const double qy = line ? 0.0 : kernels::dft_wavenumber(r, padded_rows, dy);
       std::array<double, kComponentCount> d{};
-      for (std::size_t c = 0; c < cols; ++c) {
+      {
         const double qx = kernels::dft_wavenumber(c, padded_cols, dx);
         std::array<double, kComponentCount> sum{};
         for (int my = -images_y; my <= images_y; ++my) {
@@ -425,7 +452,7 @@ struct SubsurfaceStress::Impl {
         for (std::size_t k = 0; k < kComponentCount; ++k) {
           const auto kind = static_cast<Component>(k);
           const bool zero = (nyquist_col && odd_in_x(kind)) || (nyquist_row && odd_in_y(kind));
-          remainder[k][r * cols + c] = zero ? 0.0 : sum[k];
+          remainder[k][bin] = zero ? 0.0 : sum[k];
         }
       }
     });
@@ -441,16 +468,16 @@ struct SubsurfaceStress::Impl {
       if (active[t]) fill_quadrant(static_cast<Traction>(t), z, body_nu, line, dx, dy);
     }
 
-    const double inverse_n = 1.0 / static_cast<double>(padded->padded_size());
+    const double inverse_n = 1.0 / transforms->transform_size();
     for (std::size_t component = 0; component < kComponentCount; ++component) {
       const auto kind = static_cast<Component>(component);
-      std::span<std::complex<double>> spectrum = padded->spectrum();
+      std::span<std::complex<double>> spectrum = summed;
       bool first = true;
       for (std::size_t t = 0; t < kTractionCount; ++t) {
         if (!active[t]) continue;
         const auto traction = static_cast<Traction>(t);
-        transform_coefficients(quadrants[t][component], odd_in_x(kind, traction), odd_in_y(kind, traction), line);
-        std::span<const std::complex<double>> kernel_spectrum = kernel->spectrum();
+        std::span<const std::complex<double>> kernel_spectrum =
+            transform_coefficients(quadrants[t][component], odd_in_x(kind, traction), odd_in_y(kind, traction), line);
         const std::vector<std::complex<double>>& traction_spectrum = spectra[t];
         if (layered) {
           // The remainder's multiplier (pressure only): real, or i times the
@@ -472,7 +499,10 @@ struct SubsurfaceStress::Impl {
         }
         first = false;
       }
-      padded->backward(fields[component]);
+      // The transforms' own spectrum, free again once the coefficients are in.
+      const std::span<std::complex<double>> into = transforms->spectrum(0);
+      linalg::for_each_index(held, [&](std::size_t k) { into[k] = summed[k]; });
+      transforms->backward(0, fields[component]);
     }
   }
 
@@ -480,7 +510,8 @@ struct SubsurfaceStress::Impl {
   // non-negative offsets.
   void fill_quadrant(Traction traction, double z, double body_nu, bool line, double dx, double dy) {
     auto& quadrant = quadrants[static_cast<std::size_t>(traction)];
-    linalg::for_each_row(quadrant_rows, quadrant_cols, [&](std::size_t dj) {
+    linalg::for_each_row(quadrant_rows.size(), quadrant_cols, [&](std::size_t slot) {
+      const std::size_t dj = quadrant_rows[slot];
       for (std::size_t di = 0; di < quadrant_cols; ++di) {
         const double x = static_cast<double>(di) * dx;
         const double y = static_cast<double>(dj) * dy;
@@ -491,45 +522,45 @@ struct SubsurfaceStress::Impl {
           s = line ? strip_shear_stress(traction, x, z, 0.5 * dx, body_nu)
                    : rectangle_shear_stress(traction, x, y, z, 0.5 * dx, 0.5 * dy, body_nu);
         }
-        const std::size_t k = dj * quadrant_cols + di;
+        const std::size_t k = slot * quadrant_cols + di;
         for (std::size_t c = 0; c < kComponentCount; ++c) quadrant[c][k] = component_of(s, c);
       }
     });
   }
 
-  // Fills the wrap-around array of the (2ny, 2nx) padded grid from a
-  // quadrant (mirrored with the component's parities) and transforms it.
-  void transform_coefficients(const std::vector<double>& values, bool odd_x, bool odd_y, bool line) {
+  // The DFT of the wrap-around array of the (2ny, 2nx) padded grid filled
+  // from a quadrant (mirrored with the component's parities), on the
+  // spectrum entries held here.
+  std::span<const std::complex<double>> transform_coefficients(const std::vector<double>& values, bool odd_x,
+                                                               bool odd_y, bool line) {
     const std::size_t nx = grid.nx();
-    const std::size_t padded_rows = line ? 1 : 2 * rows;
-    const std::size_t padded_cols = 2 * nx;
-    std::span<double> coefficients = kernel->input();
-    linalg::for_each_row(padded_rows, padded_cols, [&](std::size_t r) {
+    return transforms->transform_wraparound([&](std::size_t r, std::size_t c) {
       bool row_valid = true;
       const std::ptrdiff_t dj = line ? 0 : wrapped_offset(r, rows, row_valid);
+      bool col_valid = true;
+      const std::ptrdiff_t di = wrapped_offset(c, nx, col_valid);
+      if (!row_valid || !col_valid) return 0.0;
       const double row_sign = odd_y && dj < 0 ? -1.0 : 1.0;
-      const std::size_t row_base = static_cast<std::size_t>(std::abs(dj)) * quadrant_cols;
-      double* row = coefficients.data() + r * padded_cols;
-      for (std::size_t c = 0; c < padded_cols; ++c) {
-        bool col_valid = true;
-        const std::ptrdiff_t di = wrapped_offset(c, nx, col_valid);
-        const double sign = odd_x && di < 0 ? -row_sign : row_sign;
-        row[c] = row_valid && col_valid ? sign * values[row_base + static_cast<std::size_t>(std::abs(di))] : 0.0;
-      }
+      const double sign = odd_x && di < 0 ? -row_sign : row_sign;
+      const std::size_t row_base = quadrant_slot[static_cast<std::size_t>(std::abs(dj))] * quadrant_cols;
+      return sign * values[row_base + static_cast<std::size_t>(std::abs(di))];
     });
-    kernel->forward();
   }
 
   Grid grid;
   double nu;
   std::size_t rows = 1;
   bool has_pressure = false;
+  // The rows of the grid held here, and the layout's transforms of its
+  // fields, whose spectrum entries held here number `held`.
+  solvers::RowSlab slab;
+  std::unique_ptr<operators::TangentialTransforms> transforms;
+  std::size_t held = 0;
   // Per traction (Traction order): whether it was set, and its spectrum.
   static constexpr std::size_t kTractionCount = 3;
   std::array<bool, kTractionCount> active{true, false, false};
   std::array<std::vector<std::complex<double>>, kTractionCount> spectra;
   // Periodic grids.
-  std::shared_ptr<RealFft> transform;
   std::vector<double> decay;  // exp(-|q| z) on the half spectrum, for the current depth
   std::vector<double> kx;
   std::vector<double> ky;
@@ -539,12 +570,14 @@ struct SubsurfaceStress::Impl {
   std::optional<LayeredFourierStress> layered;
   std::vector<LayeredMode> modes;
   std::vector<AiryProfile> profiles;
-  // ...and under shear, made when a shear is first set.
+  // ...and under shear, made when a shear is first set (every mode of the
+  // grid, on each process).
   std::optional<LayeredShearModes> layered_shear;
-  // Free grids.
-  std::unique_ptr<PaddedRealFft> padded;
-  std::unique_ptr<RealFft> kernel;  // the (2ny, 2nx) transform of the coefficients
-  std::size_t quadrant_rows = 0;
+  // Free grids: a component's spectrum summed over the tractions, and the
+  // quadrant rows (offsets |dj|) evaluated here, each row's slot among them.
+  std::vector<std::complex<double>> summed;
+  std::vector<std::size_t> quadrant_rows;
+  std::vector<std::size_t> quadrant_slot;
   std::size_t quadrant_cols = 0;
   // Per traction, the coefficients at non-negative offsets (shears' made when first set).
   std::array<std::array<std::vector<double>, kComponentCount>, kTractionCount> quadrants;
@@ -554,15 +587,34 @@ struct SubsurfaceStress::Impl {
 };
 
 SubsurfaceStress::SubsurfaceStress(const Grid& grid, double nu, FftPlanning planning)
-    : impl_(std::make_unique<Impl>(grid, nu, planning)) {}
+    : SubsurfaceStress(grid, nu, solvers::serial_layout(), planning) {}
 
 SubsurfaceStress::SubsurfaceStress(const Grid& grid, const LayeredMaterial& coating, FftPlanning planning)
-    : impl_(std::make_unique<Impl>(grid, coating, planning)) {}
+    : SubsurfaceStress(grid, coating, solvers::serial_layout(), planning) {}
+
+SubsurfaceStress::SubsurfaceStress(const Grid& grid, double nu, const solvers::Layout& layout, FftPlanning planning)
+    : impl_(std::make_unique<Impl>(grid, nu, layout, planning)) {}
+
+SubsurfaceStress::SubsurfaceStress(const Grid& grid, const LayeredMaterial& coating, const solvers::Layout& layout,
+                                   FftPlanning planning)
+    : impl_(std::make_unique<Impl>(grid, coating, layout, planning)) {}
 
 SubsurfaceStress::~SubsurfaceStress() = default;
 
 const Grid& SubsurfaceStress::grid() const {
   return impl_->grid;
+}
+
+solvers::RowSlab SubsurfaceStress::rows() const {
+  return impl_->slab;
+}
+
+std::size_t SubsurfaceStress::local_size() const {
+  return impl_->local_size();
+}
+
+const linalg::Communicator& SubsurfaceStress::communicator() const {
+  return impl_->communicator();
 }
 
 double SubsurfaceStress::poisson_ratio() const {

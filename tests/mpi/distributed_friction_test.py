@@ -35,7 +35,7 @@ import sys
 
 import h5py
 import numpy as np
-from mpi_harness import Harness
+from mpi_harness import Harness, kVonMisesPosition
 
 # FFTW-MPI's transforms and the sums over the processes round differently
 # from the serial ones: equal to rounding, not bitwise.
@@ -82,15 +82,16 @@ def field_scale(name, group, values):
     return max(float(np.max(np.abs(values))), 1e-300) if values.size else 1.0
 
 
-def compare_attributes(where, got, want, scales):
-    harness.compare_attributes(where, got, want, kRunAttributes, kTolerance, kAbsolute,
+def compare_attributes(where, got, want, scales, skip=kRunAttributes):
+    harness.compare_attributes(where, got, want, skip, kTolerance, kAbsolute,
                                lambda name: vector_scale(name, scales))
 
 
 def compare_files(where, got_path, want_path, required):
     with h5py.File(got_path, "r") as got, h5py.File(want_path, "r") as want:
         scales = vector_scales(want)
-        compare_attributes(where + " /", got.attrs, want.attrs, scales)
+        compare_attributes(where + " /", got.attrs, want.attrs, scales, kRunAttributes | kVonMisesPosition)
+        harness.check_von_mises_position(where, got, want)
         names = harness.same_objects(where, got, want, required)
         if names is None:
             return
@@ -144,6 +145,11 @@ for boundary in ("periodic", "free"):
               "--solver", "pk-fourier"]
     history = ("steps/000/shear_x", "steps/003/stick", "history/Q_x", "history/dissipated_energy")
     friction_case(f"{boundary}-single-step", sphere + steel + ["--tangential-force", "0.6,0.2"], fields)
+    # Subsurface stresses under the step's pressure and shear, each process
+    # its rows of /stress.
+    friction_case(f"{boundary}-single-step-stresses",
+                  sphere + steel + ["--tangential-force", "0.6,0.2", "--stress-depths", "1e-5,3e-5,9e-5"],
+                  fields + ("stress/von_mises", "stress/sigma_xz"))
     friction_case(f"{boundary}-fretting-force", sphere + steel + ["--tangential-force", "0:1.2:3;0.4;-0.8;0"],
                   fields + history)
     friction_case(f"{boundary}-fretting-displacement",

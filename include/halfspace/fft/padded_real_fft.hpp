@@ -43,7 +43,7 @@ class PaddedRealFft {
   // For one-off transforms of a full padded array (a kernel's coefficients):
   // row r (0 <= r < spectrum_rows()) of 2 block_cols() real values to fill,
   // then forward_all_rows() = the DFT of all of them, every row transformed
-  // (its row plan is made on the spot, with estimate planning).
+  // (its row plan is made on the first call, with estimate planning, and kept).
   std::span<double> padded_row(std::size_t r) { return {real_row(r), 2 * block_cols_}; }
   void forward_all_rows();
   // `block` = the block part of the unnormalised inverse DFT of the spectrum,
@@ -63,6 +63,7 @@ class PaddedRealFft {
   fftw_plan_s* rows_backward_ = nullptr;    // c2r of the same rows
   fftw_plan_s* columns_forward_ = nullptr;  // c2c down all spectrum_rows(); none in 1D
   fftw_plan_s* columns_backward_ = nullptr;
+  fftw_plan_s* all_rows_forward_ = nullptr;  // r2c of all spectrum_rows() rows: forward_all_rows
 };
 
 }  // namespace halfspace::fft

@@ -73,6 +73,11 @@ class Hdf5Node {
   // On a dataset made by create_dataset: writes `values`, whole slabs of the
   // first axis, starting at slab `first`.
   void write_slabs(std::size_t first, std::span<const double> values) const;
+  // The same for part of one slab: its rows (indices along the second axis)
+  // first_row .. first_row + r - 1, `values` holding them (r times the
+  // product of the remaining extents; r may be 0): in a file several
+  // processes write, each its rows, every process calling it alike.
+  void write_slab_rows(std::size_t slab, std::size_t first_row, std::span<const double> values) const;
 
   Hdf5Node create_group(std::string_view name) const;
 

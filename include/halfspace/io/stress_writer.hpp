@@ -60,4 +60,14 @@ stress::VonMisesMaximum write_stress_file(const std::filesystem::path& path, str
                                           const stress::SurfaceTractions& tractions, std::span<const double> depths,
                                           const StressFileMetadata& metadata);
 
+// What write_stress_file writes under `root`: on a distributed layout each
+// process its rows() of every field (the tractions hold them), the file
+// being written by all of them at once (mpi::write_file_slabs). Returns the
+// largest von Mises stress and its position.
+stress::VonMisesMaximum write_stress_file_contents(const Hdf5Node& root, stress::SubsurfaceStress& stresses,
+                                                   const stress::SurfaceTractions& tractions,
+                                                   std::span<const double> depths, const StressFileMetadata& metadata);
+// An upper bound on the bytes of write_stress_file's file.
+std::uint64_t stress_file_bound(const Grid& grid, bool shear, std::size_t depth_count);
+
 }  // namespace halfspace::io

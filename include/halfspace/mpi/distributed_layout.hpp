@@ -30,6 +30,10 @@ class DistributedLayout final : public solvers::Layout {
   // The slab transforms' tangential operator (2D grids, periodic or free).
   std::unique_ptr<TangentialOperator> make_tangential_operator(const Grid& grid, const ElasticPair& pair,
                                                                FftPlanning planning) const override;
+  // The slab transforms (2D grids, periodic or free): this process's rows
+  // and spectrum columns. Collective.
+  std::unique_ptr<operators::TangentialTransforms> make_transforms(const Grid& grid,
+                                                                   FftPlanning planning) const override;
   solvers::RowSlab rows(const Grid& grid) const override;
   const linalg::Communicator& communicator() const override { return comm_; }
   // Takes a 2D grid (periodic or free; coated periodic only: the padded

@@ -9,8 +9,11 @@
 #include <complex>
 #include <cstddef>
 #include <functional>
+#include <memory>
 #include <span>
 
+#include "halfspace/fft/fft_planning.hpp"
+#include "halfspace/grid.hpp"
 #include "halfspace/linalg/communicator.hpp"
 
 namespace halfspace::operators {
@@ -52,5 +55,9 @@ class TangentialTransforms {
   virtual std::span<const std::complex<double>> transform_wraparound(
       const std::function<double(std::size_t row, std::size_t col)>& value) = 0;
 };
+
+// The serial transforms: the whole of `grid` on this process, two of the
+// grid's own transforms (periodic) or two pruned padded ones (free; 1D or 2D).
+std::unique_ptr<TangentialTransforms> make_serial_transforms(const Grid& grid, FftPlanning planning);
 
 }  // namespace halfspace::operators

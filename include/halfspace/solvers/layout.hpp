@@ -15,6 +15,7 @@
 #include "halfspace/linalg/communicator.hpp"
 #include "halfspace/operators/influence_operator.hpp"
 #include "halfspace/operators/tangential_operator.hpp"
+#include "halfspace/operators/tangential_transforms.hpp"
 #include "halfspace/solvers/preconditioner.hpp"
 #include "halfspace/solvers/single_precision_products.hpp"
 
@@ -60,6 +61,13 @@ class Layout {
   // frictional solve. Collective; throws as the operator does.
   virtual std::unique_ptr<TangentialOperator> make_tangential_operator(const Grid& grid, const ElasticPair& pair,
                                                                        FftPlanning planning) const = 0;
+  // The transforms of `grid`'s fields as this layout holds them (periodic:
+  // the grid's own; free: the zero-padded DC-FFT pair), for code that
+  // multiplies its own symbols on whichever spectrum entries are held here
+  // (the subsurface stresses). This default holds the whole grid here (the
+  // serial transforms, operators::make_serial_transforms). Collective.
+  virtual std::unique_ptr<operators::TangentialTransforms> make_transforms(const Grid& grid,
+                                                                           FftPlanning planning) const;
   // The same for a mixed-precision solve (solver_options.hpp's Precision):
   // the operator in double, and where this layout can, the Fourier
   // preconditioner and `inner` in single precision. This default (a layout

@@ -48,7 +48,8 @@ struct StressSlice {
   std::size_t index = 0;  // of the depth in the request
   double depth = 0.0;     // m
   bool in_layer = false;  // a coated half-space: the depth is in the layer (z <= t)
-  // grid.size() values each, (ny, nx) row-major, Pa.
+  // SubsurfaceStress::local_size() values each (all of the grid serially,
+  // this process's rows on a distributed layout), (ny, nx) row-major, Pa.
   std::array<std::vector<double>, kComponentCount> components;
   std::vector<double> von_mises;
   std::vector<double> max_shear;
@@ -61,11 +62,12 @@ void check_depths(std::span<const double> depths);
 // The same, and each depth in allowed_depth_range(grid).
 void check_depths(const Grid& grid, std::span<const double> depths);
 
-// The stresses of `pressure` (Pa, grid.size() values) below `stresses`' grid
-// at each of `depths` in turn: `consume` receives each depth's fields before
-// the next depth is computed, so that only one depth is ever held (the
-// streaming writer, io/stress_writer.hpp). Returns the largest von Mises
-// stress and its position. Throws InputError for bad depths (check_depths on
+// The stresses of `pressure` (Pa, stresses.local_size() values) below
+// `stresses`' grid at each of `depths` in turn: `consume` receives each
+// depth's fields before the next depth is computed, so that only one depth is
+// ever held (the streaming writer, io/stress_writer.hpp). Returns the largest
+// von Mises stress and its position, reduced over the processes of a
+// distributed layout (the same on every process; collective there). Throws InputError for bad depths (check_depths on
 // the grid) or pressure, and for a field that is not finite (a pressure or
 // grid whose stresses overflow) before that depth is handed over.
 VonMisesMaximum stresses_by_depth(SubsurfaceStress& stresses, std::span<const double> pressure,

@@ -17,6 +17,8 @@
 #include "halfspace/fft/fft_planning.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/layered_material.hpp"
+#include "halfspace/linalg/communicator.hpp"
+#include "halfspace/solvers/layout.hpp"
 #include "halfspace/stress/fourier_stress.hpp"
 #include "halfspace/stress/surface_traction.hpp"
 
@@ -76,11 +78,27 @@ class SubsurfaceStress {
   // Throws InputError for a grid require_coated_stress_grid refuses, or for
   // a bad material.
   SubsurfaceStress(const Grid& grid, const LayeredMaterial& coating, FftPlanning planning = FftPlanning::estimate);
+  // The same on `layout`'s transforms (solvers/layout.hpp; the two above are
+  // serial_layout()'s): on a distributed layout (mpi::DistributedLayout, 2D
+  // grids) every field holds this process's rows() of the grid, the
+  // spectra and coefficients its share, and compute() and the checks are
+  // collective. `layout` need not outlive the object (its communicator
+  // must).
+  SubsurfaceStress(const Grid& grid, double nu, const solvers::Layout& layout,
+                   FftPlanning planning = FftPlanning::estimate);
+  SubsurfaceStress(const Grid& grid, const LayeredMaterial& coating, const solvers::Layout& layout,
+                   FftPlanning planning = FftPlanning::estimate);
   ~SubsurfaceStress();
   SubsurfaceStress(const SubsurfaceStress&) = delete;
   SubsurfaceStress& operator=(const SubsurfaceStress&) = delete;
 
   const Grid& grid() const;
+  // The rows of the grid held here (all of them serially; a 1D grid's one
+  // row), the cells they hold (the size of every field given or filled),
+  // and the processes the fields are spread over.
+  solvers::RowSlab rows() const;
+  std::size_t local_size() const;
+  const linalg::Communicator& communicator() const;
   // The Poisson's ratio of a homogeneous body, or of the body at `depth`.
   double poisson_ratio() const;
   double poisson_ratio(double depth) const;
@@ -90,7 +108,7 @@ class SubsurfaceStress {
   // The coated half-space's layer and substrate; nullopt for a homogeneous body.
   std::optional<LayeredMaterial> coating() const;
 
-  // Takes the surface pressure (Pa, grid.size() values, (ny, nx) row-major,
+  // Takes the surface pressure (Pa, local_size() values, (ny, nx) row-major,
   // positive in compression): one forward FFT, kept for every depth. Throws
   // InputError if the size differs from the grid's or a value is not finite.
   void set_pressure(std::span<const double> pressure);
@@ -109,7 +127,7 @@ class SubsurfaceStress {
   void check_tractions(const SurfaceTractions& tractions) const;
 
   // The stress (Pa, compression negative) at depth z (m, > 0) below every
-  // cell centre: fields[c] (grid.size() values each) receives component c in
+  // cell centre: fields[c] (local_size() values each) receives component c in
   // Component order. One inverse FFT per component (free grids: also one
   // forward FFT of the padded coefficients per component). Throws InputError
   // for a depth outside allowed_depth_range(grid()), a field of the wrong

@@ -1,0 +1,117 @@
+// The stress command on several processes: the first process reads the
+// result whole (the stress command's reader) and scatters the rows of its
+// fields; the grid, the coating and whether there is shear go to every
+// process, so that every process checks the options against the same
+// result and fails alike.
+#include "mpi_stress.hpp"
+
+#include <array>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "../exit_codes.hpp"
+#include "halfspace/io/xdmf_writer.hpp"
+#include "halfspace/mpi/agreement.hpp"
+#include "halfspace/mpi/distributed_layout.hpp"
+#include "halfspace/mpi/parallel_result_writer.hpp"
+#include "halfspace/mpi/slab_fft.hpp"
+#include "halfspace/mpi/slab_gather.hpp"
+#include "mpi_program.hpp"
+
+namespace halfspace::app {
+namespace {
+
+// The coating and whether the result has shear, from the first process to
+// every process.
+void broadcast_details(const mpi::MpiCommunicator& world, std::optional<io::ResultPressure>& whole,
+                       std::optional<LayeredMaterial>& coating, bool& shear) {
+  // has coating, t, E1, nu1, E2, nu2, has shear
+  std::array<double, 7> details{};
+  if (whole) {
+    if (whole->coating) {
+      const LayeredMaterial& c = *whole->coating;
+      details = {1.0,
+                 c.thickness,
+                 c.layer.youngs_modulus,
+                 c.layer.poissons_ratio,
+                 c.substrate.youngs_modulus,
+                 c.substrate.poissons_ratio,
+                 0.0};
+    }
+    details[6] = whole->has_shear() ? 1.0 : 0.0;
+  }
+  mpi::check(MPI_Bcast(details.data(), static_cast<int>(details.size()), MPI_DOUBLE, 0, world.get()), "MPI_Bcast");
+  if (details[0] == 1.0) {
+    coating = LayeredMaterial{details[1], {details[2], details[3]}, {details[4], details[5]}};
+  }
+  shear = details[6] == 1.0;
+}
+
+// This process's rows of the first process's `whole` field.
+std::vector<double> rows_of(const mpi::MpiCommunicator& world, const mpi::SlabLayout& slab,
+                            const std::vector<double>* whole) {
+  std::vector<double> local(slab.local_size());
+  mpi::scatter_rows(world, slab, whole ? std::span<const double>(*whole) : std::span<const double>(), local);
+  return local;
+}
+
+}  // namespace
+
+int run_stress_on_slabs(const std::filesystem::path& path, const std::function<int(StressPlace& place)>& run) {
+  const mpi::MpiCommunicator world = mpi_world();
+  const bool root = world.rank() == 0;
+  std::optional<io::ResultPressure> whole;
+  mpi::run_agreed(world, [&] {
+    if (root) whole.emplace(read_stress_input(path));
+  });
+  if (world.size() == 1) {
+    StressPlace place = whole_stress_place(std::move(*whole));
+    return run(place);
+  }
+  const Grid grid = broadcast_grid(world, whole ? std::optional<Grid>(whole->grid) : std::nullopt);
+  if (grid.dimension() == 1) {
+    // One row, which slabs of rows cannot split: the first process, which
+    // holds the result, runs the command as one process does.
+    int code = kExitOk;
+    mpi::run_agreed(world, [&] {
+      if (!root) return;
+      StressPlace place = whole_stress_place(std::move(*whole));
+      code = run(place);
+    });
+    mpi::check(MPI_Bcast(&code, 1, MPI_INT, 0, world.get()), "MPI_Bcast");
+    return code;
+  }
+  std::optional<LayeredMaterial> coating;
+  bool shear = false;
+  broadcast_details(world, whole, coating, shear);
+  const mpi::SlabLayout slab = mpi::slab_layout(grid.nx(), grid.ny(), world);
+  io::ResultPressure local{grid, rows_of(world, slab, whole ? &whole->pressure : nullptr), coating, {}, {}};
+  if (shear) {
+    local.shear_x = rows_of(world, slab, whole ? &whole->shear_x : nullptr);
+    local.shear_y = rows_of(world, slab, whole ? &whole->shear_y : nullptr);
+  }
+  whole.reset();  // the first process too keeps only its rows
+
+  const mpi::DistributedLayout layout(world);
+  StressPlace place{.layout = layout, .input = std::move(local), .first = root};
+  place.write_file = [&world, &grid](const std::filesystem::path& output, stress::SubsurfaceStress& stresses,
+                                     const stress::SurfaceTractions& tractions, std::span<const double> depths,
+                                     const io::StressFileMetadata& metadata) {
+    stresses.check_tractions(tractions);  // refused before the file is made
+    stress::VonMisesMaximum maximum;
+    mpi::write_file_slabs(world, output, io::stress_file_bound(grid, tractions.has_shear(), depths.size()),
+                          [&](const io::Hdf5Node& root_node) {
+                            maximum = io::write_stress_file_contents(root_node, stresses, tractions, depths, metadata);
+                          });
+    // The sidecar of the complete file (for ParaView), by the first process.
+    mpi::run_agreed(world, [&] {
+      if (world.rank() == 0) io::write_xdmf_sidecar(output, grid);
+    });
+    return maximum;
+  };
+  place.agree = [&world](const std::function<void()>& step) { mpi::run_agreed(world, step); };
+  return run(place);
+}
+
+}  // namespace halfspace::app
