@@ -15,6 +15,7 @@
 #include "exit_codes.hpp"
 #include "generate_command.hpp"
 #include "halfspace/error.hpp"
+#include "halfspace/io/fft_wisdom_file.hpp"
 #include "halfspace/io/output_file.hpp"
 #include "halfspace/memory_estimate.hpp"
 #include "halfspace/version.hpp"
@@ -41,6 +42,8 @@ int main(int argc, char** argv) {
   // Ctrl-C or a kill while an output is being written removes its temporary
   // file (docs/usage.md#output-files).
   halfspace::io::install_output_cleanup_on_signals();
+  // Measured plans keep their wisdom in the user's cache (docs/usage.md#fftw-wisdom).
+  halfspace::io::use_fft_wisdom_file();
   CLI::App app{"halfspace: frictionless normal contact of an elastic half-space with a rigid rough surface",
                "halfspace"};
   app.set_version_flag("--version", fmt::format("halfspace {} ({})", halfspace::kVersion, halfspace::kGitHash));

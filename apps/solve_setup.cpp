@@ -21,8 +21,8 @@
 #include "grid_options.hpp"
 #include "halfspace/elastic_pair.hpp"
 #include "halfspace/error.hpp"
-#include "halfspace/fft/fft_wisdom.hpp"
 #include "halfspace/geometry/builtin_surface.hpp"
+#include "halfspace/io/fft_wisdom_file.hpp"
 #include "halfspace/io/height_map_reader.hpp"
 #include "halfspace/io/output_file.hpp"
 #include "halfspace/io/sweep_writer.hpp"
@@ -132,7 +132,7 @@ void check_outputs_against_inputs(const SolveOptions& o, const fs::path& output,
                                  o.name("output")),
                      io::xdmf_sidecar_path(output)});
   if (planning != FftPlanning::estimate) {
-    if (const std::optional<fs::path> wisdom = fft_wisdom_path()) {
+    if (const std::optional<fs::path> wisdom = io::fft_wisdom_path()) {
       outputs.push_back({fmt::format("the FFTW wisdom file {}", wisdom->string()), *wisdom});
     }
   }

@@ -22,6 +22,7 @@
 #include "halfspace/fft/fft_wisdom.hpp"
 #include "halfspace/fft/padded_real_fft.hpp"
 #include "halfspace/fft/real_fft.hpp"
+#include "halfspace/io/fft_wisdom_file.hpp"
 #include "halfspace/threads.hpp"
 
 namespace {
@@ -72,6 +73,7 @@ int main(int argc, char** argv) {
     halfspace::set_threads(std::stoi(argv[4]));
     const int pairs = argc > 5 ? std::stoi(argv[5]) : 10;
 
+    halfspace::io::use_fft_wisdom_file();
     const auto start = Clock::now();
     std::unique_ptr<halfspace::PaddedRealFft> padded;
     if (!periodic) padded = std::make_unique<halfspace::PaddedRealFft>(n, n, planning);

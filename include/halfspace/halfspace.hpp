@@ -18,6 +18,7 @@
 #include "halfspace/geometry/builtin_surface.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/height_map.hpp"
+#include "halfspace/io/fft_wisdom_file.hpp"
 #include "halfspace/io/friction_history_writer.hpp"
 #include "halfspace/io/height_map_reader.hpp"
 #include "halfspace/io/height_map_writer.hpp"

@@ -11,7 +11,7 @@ import numpy.typing as npt
 
 from . import _core
 from ._height_map import HeightMap
-from ._solve import _coating, _surface
+from ._solve import _LAYER_NAMES, _coating, _surface
 
 Velocity = Union[float, Sequence[float]]
 
@@ -211,7 +211,8 @@ def _arguments(surface, *, viscosity: float, entrainment_velocity: Velocity,
     height_map = _surface(surface, dx, dy)
     # The rules are the library's (make_lubrication_problem); here the
     # keywords only become the binding's arguments.
-    layers = _coating(coating, e_star, E1, nu1, E2, nu2)
+    given = _coating(coating)
+    layers = [given.get(name) for name in _LAYER_NAMES] if given else None
     if entrainment_velocity is None:
         raise _core.InputError("entrainment_velocity= is needed: UX or (UX, UY) in m/s")
     return (

@@ -22,26 +22,22 @@ def composite_modulus(E1: float, nu1: float, E2: float, nu2: float) -> float:
 
 
 _COATING_KEYS = ("thickness", "layer_E", "layer_nu", "substrate_E", "substrate_nu")
+# The names make_problem gives the coating's constants (halfspace/problem.hpp).
+_LAYER_NAMES = ("layer_thickness", "layer_E", "layer_nu", "substrate_E", "substrate_nu")
 
 
-def _coating(coating, e_star, E1, nu1, E2, nu2) -> Optional[list]:
-    """The five constants of a coated half-space, in _core's order, or None."""
+def _coating(coating) -> dict:
+    """The coating mapping's constants as the problem's layer_ and substrate_ keywords. The rules (all five given,
+    no other material keyword, the ranges) are the library's problem builders'."""
     if coating is None:
-        return None
-    given = [name for name, value in {"e_star": e_star, "E1": E1, "nu1": nu1, "E2": E2, "nu2": nu2}.items()
-             if value is not None]
-    if given:
-        raise _core.InputError(f"coating cannot be combined with {', '.join(given)}: a coated half-space takes its "
-                               "moduli from the coating (the indenter is rigid)")
+        return {}
     if not isinstance(coating, Mapping):
         raise _core.InputError("coating must be a mapping with the keys " + ", ".join(_COATING_KEYS))
-    missing = [key for key in _COATING_KEYS if key not in coating]
     unknown = [str(key) for key in coating if key not in _COATING_KEYS]
-    if missing or unknown:
-        raise _core.InputError(f"coating: missing {', '.join(missing) or 'nothing'}, unknown "
-                               f"{', '.join(unknown) or 'nothing'}; the keys are {', '.join(_COATING_KEYS)} "
+    if unknown:
+        raise _core.InputError(f"coating: unknown {', '.join(unknown)}; the keys are {', '.join(_COATING_KEYS)} "
                                "(m, Pa, -, Pa, -)")
-    return [float(coating[key]) for key in _COATING_KEYS]
+    return {_LAYER_NAMES[_COATING_KEYS.index(key)]: float(value) for key, value in coating.items()}
 
 
 def _loads(force, mean_pressure, approach, plural: bool) -> dict:
@@ -76,15 +72,10 @@ def _call_text(name: str, surface: HeightMap, keywords: dict) -> str:
     return f"python: halfspace.{name}(<{grid} surface>, {shown})"
 
 
-# The names make_problem gives the coating's constants (halfspace/problem.hpp).
-_LAYER_NAMES = ("layer_thickness", "layer_E", "layer_nu", "substrate_E", "substrate_nu")
-
-
 def _problem(e_star, E1, nu1, E2, nu2, coating, loads, solver, tol, max_iter, fft_planning, deflation_block, threads,
              laws) -> dict:
     """The problem's keywords that were given; _core's make_problem (halfspace/problem.hpp) holds their rules."""
-    layers = _coating(coating, e_star, E1, nu1, E2, nu2)
-    keywords = {"e_star": e_star, "E1": E1, "nu1": nu1, "E2": E2, "nu2": nu2, **dict(zip(_LAYER_NAMES, layers or ())),
+    keywords = {"e_star": e_star, "E1": E1, "nu1": nu1, "E2": E2, "nu2": nu2, **_coating(coating),
                 **loads, "solver": solver, "tol": tol, "max_iter": max_iter, "fft_planning": fft_planning,
                 "deflation_block": deflation_block, "threads": threads, **laws}
     return {key: value for key, value in keywords.items() if value is not None}

@@ -286,12 +286,13 @@ void bind_lubricate(nb::module_& module) {
          double inlet_pressure, double outlet_pressure, double side_pressure, bool periodic_x, bool periodic_y,
          double supply_fluid_fraction, std::optional<double> tol, std::optional<long long> max_iter,
          std::optional<double> e_star, std::optional<double> e1, std::optional<double> nu1, std::optional<double> e2,
-         std::optional<double> nu2, std::optional<std::vector<double>> coating, std::optional<std::string> boundary,
-         std::optional<double> pressure_viscosity, std::optional<std::string> piezoviscosity,
-         std::optional<double> roelands_index, std::optional<std::string> compressibility,
-         std::optional<std::string> couette_scheme, std::optional<double> eyring_stress,
-         std::optional<double> limiting_shear_stress, std::optional<double> limiting_shear_slope, bool mixed,
-         std::optional<double> offset, std::optional<double> contact_friction, std::optional<double> boundary_film,
+         std::optional<double> nu2, std::optional<std::vector<std::optional<double>>> coating,
+         std::optional<std::string> boundary, std::optional<double> pressure_viscosity,
+         std::optional<std::string> piezoviscosity, std::optional<double> roelands_index,
+         std::optional<std::string> compressibility, std::optional<std::string> couette_scheme,
+         std::optional<double> eyring_stress, std::optional<double> limiting_shear_stress,
+         std::optional<double> limiting_shear_slope, bool mixed, std::optional<double> offset,
+         std::optional<double> contact_friction, std::optional<double> boundary_film,
          std::optional<std::vector<double>> speeds, std::optional<int> threads) {
         LubricationProblemOptions o;
         o.viscosity = viscosity;
@@ -312,7 +313,7 @@ void bind_lubricate(nb::module_& module) {
         o.nu1 = nu1;
         o.e2 = e2;
         o.nu2 = nu2;
-        if (coating) {  // _solve._coating's five constants, in its order
+        if (coating) {  // the five layer_ and substrate_ constants in _solve._LAYER_NAMES's order, None if not given
           if (coating->size() != 5) {
             throw InputError("coating needs five values: thickness, layer_E, layer_nu, substrate_E, substrate_nu");
           }

@@ -6,6 +6,7 @@
 
 #include "bindings.hpp"
 #include "halfspace/error.hpp"
+#include "halfspace/io/fft_wisdom_file.hpp"
 #include "halfspace/material.hpp"
 #include "halfspace/threads.hpp"
 #include "halfspace/version.hpp"
@@ -65,6 +66,8 @@ NB_MODULE(_core, module) {
   module.attr("__version__") = kVersion;
   module.attr("git_hash") = kGitHash;
   bind_errors(module);
+  // Measured plans keep their wisdom in the user's cache, as the program's do.
+  io::use_fft_wisdom_file();
 
   module.def("default_threads", &default_threads,
              "The threads a solve uses when none is asked for (affinity, cgroup quota, OMP_NUM_THREADS).");

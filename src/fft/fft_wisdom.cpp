@@ -1,42 +1,30 @@
-// FFTW wisdom between runs: where the file lives, reading it (any failure
-// ignored), writing it atomically, and the load-once, save-when-grown
-// handling that RealFft's measured planning calls under the planner lock.
+// FFTW wisdom between runs: the load-once, save-when-grown handling that
+// RealFft's measured planning calls under the planner lock, on the store a
+// front end installed (the planning itself knows no files).
 //
-// Why failures are silent. Wisdom is a cache of planner timings: a missing,
-// unreadable or corrupt file costs only the planning time that wisdom would
+// Why failures are silent. Wisdom is a cache of planner timings: missing,
+// unreadable or corrupt wisdom costs only the planning time that wisdom would
 // have saved, never the accuracy of a transform, and the next measured plan
-// replaces a bad file with good wisdom. So the library neither throws nor
-// prints; fft_wisdom_status() keeps the reason for a front end that wants it.
+// replaces bad wisdom with good. So the library neither throws nor prints;
+// fft_wisdom_status() keeps the reason for a front end that wants it.
 #include "halfspace/fft/fft_wisdom.hpp"
 
 #include <fftw3.h>
 #include <fmt/format.h>
 
 #include <cstdlib>
-#include <fstream>
 #include <memory>
-#include <sstream>
-#include <string_view>
-#include <system_error>
 #include <utility>
 
 #include "fftw_planner.hpp"
-#include "halfspace/error.hpp"
-#include "halfspace/io/output_file.hpp"
 
 namespace halfspace::fft {
 namespace {
 
-namespace fs = std::filesystem;
-
-// Wisdom for a handful of sizes is a few kilobytes; a file this large is not
-// wisdom, and is not read into memory.
-constexpr std::uintmax_t kMaxWisdomBytes = std::uintmax_t{16} << 20;
-
 // The automatic handling's state; guarded by the planner lock.
 struct WisdomState {
-  bool resolved = false;  // the path was looked up and the file read (or not)
-  std::optional<fs::path> path;
+  bool resolved = false;  // the store was asked for its wisdom (or there is none)
+  std::optional<std::filesystem::path> path;
   bool loaded = false;
   bool saved = false;
   std::string problem;
@@ -44,23 +32,16 @@ struct WisdomState {
 };
 
 // One state per precision: FFTW keeps double (fftw_) and single (fftwf_)
-// wisdom apart, and so do the files.
+// wisdom apart, and so does the store.
 WisdomState& wisdom_state(bool single = false) {
   static WisdomState states[2];
   return states[single ? 1 : 0];
 }
 
-// The single-precision plans' file beside the double ones'.
-fs::path single_precision_path(const fs::path& path) {
-  fs::path single = path;
-  single += "-single";
-  return single;
-}
-
-enum class ReadOutcome { loaded, missing, failed };
-
-void set_problem(std::string* problem, std::string text) {
-  if (problem != nullptr) *problem = std::move(text);
+// The installed store; guarded by the planner lock.
+std::shared_ptr<const FftWisdomStore>& installed_store() {
+  static std::shared_ptr<const FftWisdomStore> store;
+  return store;
 }
 
 // FFTW's accumulated wisdom as text; empty if it cannot be exported. FFTW
@@ -73,94 +54,42 @@ std::string exported_wisdom(bool single = false) {
 
 // The lock held. FFTW rejects text that is not its wisdom, or wisdom of
 // another FFTW version or build, as a whole and keeps what it had.
-ReadOutcome import_locked(const fs::path& path, std::string* problem, bool single = false) {
-  const std::string shown = path.string();
-  std::error_code error;
-  const fs::file_status status = fs::status(path, error);
-  if (!fs::exists(status)) {
-    set_problem(problem, fmt::format("wisdom file '{}' does not exist", shown));
-    return ReadOutcome::missing;
-  }
-  if (!fs::is_regular_file(status)) {
-    set_problem(problem, fmt::format("wisdom file '{}' is not a regular file", shown));
-    return ReadOutcome::failed;
-  }
-  const std::uintmax_t size = fs::file_size(path, error);
-  if (error || size > kMaxWisdomBytes) {
-    set_problem(problem, fmt::format("wisdom file '{}' is larger than {} bytes", shown, kMaxWisdomBytes));
-    return ReadOutcome::failed;
-  }
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  if (in) text << in.rdbuf();
-  if (!in || in.bad()) {
-    set_problem(problem, fmt::format("wisdom file '{}' cannot be read", shown));
-    return ReadOutcome::failed;
-  }
-  const std::string wisdom = text.str();
+bool import_locked(const std::string& wisdom, std::string_view source, std::string* problem, bool single = false) {
   try {
     detail::init_fftw_threads();
   } catch (const std::exception& failure) {
-    set_problem(problem, failure.what());
-    return ReadOutcome::failed;
+    if (problem != nullptr) *problem = failure.what();
+    return false;
   }
-  // An embedded NUL would hide the rest of the file from FFTW's C-string
+  // An embedded NUL would hide the rest of the text from FFTW's C-string
   // parser, which could then accept a truncated prefix.
   const int imported =
       single ? fftwf_import_wisdom_from_string(wisdom.c_str()) : fftw_import_wisdom_from_string(wisdom.c_str());
   if (wisdom.find('\0') != std::string::npos || imported == 0) {
-    set_problem(problem, fmt::format("wisdom file '{}' is not wisdom of this FFTW build (corrupt, or written by "
-                                     "another FFTW version)",
-                                     shown));
-    return ReadOutcome::failed;
-  }
-  return ReadOutcome::loaded;
-}
-
-// The lock held. Written like every output (io/output_file.hpp): under a
-// temporary name and renamed, so runs side by side never see a partial file,
-// and never onto a device, FIFO or directory.
-bool export_locked(const fs::path& path, std::string* problem, bool single = false) {
-  const std::string wisdom = exported_wisdom(single);
-  if (wisdom.empty()) {
-    set_problem(problem, "FFTW could not export its wisdom");
-    return false;
-  }
-  std::error_code error;
-  if (path.has_parent_path()) {
-    fs::create_directories(path.parent_path(), error);
-    if (error) {
-      set_problem(problem, fmt::format("cannot create directory '{}' for the wisdom file: {}",
-                                       path.parent_path().string(), error.message()));
-      return false;
+    if (problem != nullptr) {
+      *problem =
+          fmt::format("{} is not wisdom of this FFTW build (corrupt, or written by another FFTW version)", source);
     }
-  }
-  try {
-    io::write_output_file(path, wisdom);
-  } catch (const FileError& failure) {
-    set_problem(problem, fmt::format("wisdom not saved: {}", failure.what()));
     return false;
   }
   return true;
 }
 
+// The lock held: the store's wisdom merged into FFTW's. False with `problem`
+// if it could not be read or was rejected; false with `problem` empty if the
+// store has none yet.
+bool load_locked(const FftWisdomStore& store, bool single, std::string& problem) {
+  const std::optional<std::string> text = store.load(single, problem);
+  return text &&
+         import_locked(*text, fmt::format("wisdom file '{}'", store.location(single).string()), &problem, single);
+}
+
 }  // namespace
 
-std::optional<fs::path> fft_wisdom_path() {
-  if (const char* chosen = std::getenv("HALFSPACE_FFTW_WISDOM")) {
-    const std::string_view text(chosen);
-    if (text.empty() || text == "off") return std::nullopt;
-    return fs::path(text);
-  }
-  // XDG Base Directory Specification: a relative XDG_CACHE_HOME is invalid
-  // and must be ignored.
-  if (const char* cache = std::getenv("XDG_CACHE_HOME"); cache != nullptr && fs::path(cache).is_absolute()) {
-    return fs::path(cache) / "halfspace" / "fftw-wisdom";
-  }
-  if (const char* home = std::getenv("HOME"); home != nullptr && *home != '\0') {
-    return fs::path(home) / ".cache" / "halfspace" / "fftw-wisdom";
-  }
-  return std::nullopt;
+void set_fft_wisdom_store(std::shared_ptr<const FftWisdomStore> store) {
+  const std::lock_guard<std::mutex> lock(detail::fftw_planner_mutex());
+  installed_store() = std::move(store);
+  for (const bool single : {false, true}) wisdom_state(single) = {};
 }
 
 FftWisdomStatus fft_wisdom_status() {
@@ -169,14 +98,14 @@ FftWisdomStatus fft_wisdom_status() {
   return {state.path, state.loaded, state.saved, state.problem};
 }
 
-bool import_fft_wisdom(const fs::path& path, std::string* problem) {
+bool import_fft_wisdom_text(const std::string& text, std::string_view source, std::string* problem) {
   const std::lock_guard<std::mutex> lock(detail::fftw_planner_mutex());
-  return import_locked(path, problem) == ReadOutcome::loaded;
+  return import_locked(text, source, problem);
 }
 
-bool export_fft_wisdom(const fs::path& path, std::string* problem) {
+std::string export_fft_wisdom_text() {
   const std::lock_guard<std::mutex> lock(detail::fftw_planner_mutex());
-  return export_locked(path, problem);
+  return exported_wisdom();
 }
 
 namespace detail {
@@ -187,14 +116,13 @@ void before_planning(FftPlanning planning, bool single) noexcept {
   if (state.resolved) return;
   try {
     state.resolved = true;
-    state.path = fft_wisdom_path();
-    if (!state.path) return;
-    if (single) state.path = single_precision_path(*state.path);
+    const std::shared_ptr<const FftWisdomStore>& store = installed_store();
+    if (!store) return;
+    state.path = store->location(single);
     std::string problem;
-    const ReadOutcome outcome = import_locked(*state.path, &problem, single);
-    state.loaded = outcome == ReadOutcome::loaded;
-    // A missing file is the normal first run, not a problem.
-    if (outcome == ReadOutcome::failed) state.problem = std::move(problem);
+    state.loaded = load_locked(*store, single, problem);
+    // No wisdom yet is the normal first run, not a problem.
+    if (!state.loaded && !problem.empty()) state.problem = std::move(problem);
     state.known = exported_wisdom(single);
   } catch (...) {
     state.problem = "the wisdom file could not be loaded (out of memory)";
@@ -204,15 +132,20 @@ void before_planning(FftPlanning planning, bool single) noexcept {
 void after_planning(FftPlanning planning, bool single) noexcept {
   if (planning == FftPlanning::estimate) return;
   WisdomState& state = wisdom_state(single);
-  if (!state.path) return;
+  const std::shared_ptr<const FftWisdomStore>& store = installed_store();
+  if (!state.path || !store) return;
   try {
     if (exported_wisdom(single) == state.known) return;
-    // Merge what other runs saved since this one loaded the file, so that
-    // concurrent runs do not drop each other's wisdom; a file that fails to
+    // Merge what other runs saved since this one loaded the store, so that
+    // concurrent runs do not drop each other's wisdom; wisdom that fails to
     // read now is simply replaced.
-    import_locked(*state.path, nullptr, single);
     std::string problem;
-    if (export_locked(*state.path, &problem, single)) {
+    load_locked(*store, single, problem);
+    problem.clear();
+    const std::string wisdom = exported_wisdom(single);
+    if (wisdom.empty()) {
+      state.problem = "FFTW could not export its wisdom";
+    } else if (store->save(single, wisdom, problem)) {
       state.saved = true;
     } else {
       state.problem = std::move(problem);

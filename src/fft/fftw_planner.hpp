@@ -69,11 +69,11 @@ std::mutex& fftw_planner_mutex();
 void init_fftw_threads();
 
 // The lock held, around making plans at `planning`. Measure and patient
-// plans load the wisdom file (fft_wisdom_path) once per process before
-// planning and save FFTW's wisdom after planning if it grew; estimate plans
-// leave the file alone, so they are the same from run to run. Never throw.
-// Single-precision plans (`single`) keep their wisdom in a file of their own
-// beside it (fft_wisdom.hpp): FFTW holds the two precisions' wisdom apart.
+// plans load the installed wisdom store's text (fft_wisdom.hpp) once per
+// process before planning and save FFTW's wisdom to it after planning if it
+// grew; estimate plans leave the store alone, so they are the same from run
+// to run. Never throw. Single-precision plans (`single`) keep their wisdom
+// apart: FFTW holds the two precisions' wisdom apart.
 void before_planning(FftPlanning planning, bool single = false) noexcept;
 void after_planning(FftPlanning planning, bool single = false) noexcept;
 

@@ -73,7 +73,6 @@ void AdhesiveSolverOptions::validate() const {
   if (max_load_steps < 1) {
     throw SolverOptionError("max_load_steps", text(max_load_steps), "is invalid: must be at least 1");
   }
-  InterfaceLaw{hardness}.validate();
 }
 
 double cell_length(const Grid& grid) {
@@ -106,7 +105,8 @@ void check_law_on_grid(const AdhesionLaw& law, double e_star, const Grid& grid) 
 }
 
 struct AdhesiveContactSolver::Impl {
-  Impl(std::unique_ptr<InfluenceOperator> own, InfluenceOperator& o, double modulus, AdhesiveSolverOptions opts)
+  Impl(std::unique_ptr<InfluenceOperator> own, InfluenceOperator& o, double modulus, AdhesiveSolverOptions opts,
+       std::optional<double> cap)
       : owned(std::move(own)),
         op(o),
         grid((check_law_on_grid(opts.law, checked_composite_modulus(modulus), o.grid()), o.grid())),
@@ -115,8 +115,8 @@ struct AdhesiveContactSolver::Impl {
         form(op.circulant_form()),
         comm(op.communicator()),
         padded(form.padded()),
-        capped(options.hardness.has_value()),
-        hardness(options.hardness.value_or(std::numeric_limits<double>::infinity())),
+        capped(cap.has_value()),
+        hardness(cap.value_or(std::numeric_limits<double>::infinity())),
         cells(op.local_size()),
         stride(form.row_stride()),
         total(static_cast<double>(form.size())) {
@@ -843,7 +843,7 @@ void AdhesiveContactSolver::Impl::fill_result(SolveResult& result, std::span<con
   result.mean_pressure = result.total_force / grid.domain_area();
   result.max_pressure = max_pressure;
   result.contact_fraction = at_wall / all;
-  result.hardness = options.hardness;
+  if (capped) result.hardness = hardness;
   result.plastic_fraction = plastic / all;
   AdhesionRecord& record = result.adhesion;
   record.law = std::string(to_string(law.type));
@@ -893,24 +893,26 @@ SolveResult AdhesiveContactSolver::Impl::solve_force(std::span<const double> ini
 }
 
 AdhesiveContactSolver::AdhesiveContactSolver(InfluenceOperator& op, double contact_modulus,
-                                             AdhesiveSolverOptions options)
-    : ContactSolver(op.grid(), InterfaceLaw{options.hardness}) {
+                                             AdhesiveSolverOptions options, const InterfaceLaw& law)
+    : ContactSolver(op.grid(), law) {
   options.validate();
-  impl_ = std::make_unique<Impl>(nullptr, op, contact_modulus, std::move(options));
+  impl_ = std::make_unique<Impl>(nullptr, op, contact_modulus, std::move(options), law.hardness);
 }
 
 AdhesiveContactSolver::AdhesiveContactSolver(std::unique_ptr<InfluenceOperator> op, double contact_modulus,
-                                             AdhesiveSolverOptions options)
-    : ContactSolver(op->grid(), InterfaceLaw{options.hardness}) {
+                                             AdhesiveSolverOptions options, const InterfaceLaw& law)
+    : ContactSolver(op->grid(), law) {
   options.validate();
   InfluenceOperator& ref = *op;
-  impl_ = std::make_unique<Impl>(std::move(op), ref, contact_modulus, std::move(options));
+  impl_ = std::make_unique<Impl>(std::move(op), ref, contact_modulus, std::move(options), law.hardness);
 }
 
-AdhesiveContactSolver::AdhesiveContactSolver(const Grid& grid, double e_star, AdhesiveSolverOptions options)
-    : AdhesiveContactSolver((options.validate(), std::make_unique<FftInfluenceOperator>(
-                                                     grid, checked_composite_modulus(e_star), options.fft_planning)),
-                            e_star, options) {}
+AdhesiveContactSolver::AdhesiveContactSolver(const Grid& grid, double e_star, AdhesiveSolverOptions options,
+                                             const InterfaceLaw& law)
+    : AdhesiveContactSolver(
+          (options.validate(), law.validate(),
+           std::make_unique<FftInfluenceOperator>(grid, checked_composite_modulus(e_star), options.fft_planning)),
+          e_star, options, law) {}
 
 AdhesiveContactSolver::~AdhesiveContactSolver() = default;
 

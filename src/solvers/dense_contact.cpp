@@ -99,7 +99,6 @@ void DenseContactOptions::validate() const {
     throw InputError(fmt::format("pressure unit = {} Pa is invalid: must be finite and >= 0 (0: automatic)",
                                  format_number(units.pressure)));
   }
-  InterfaceLaw{hardness}.validate();
 }
 
 void check_dense_grid(const Grid& grid, std::string_view solver) {
@@ -115,7 +114,7 @@ void check_dense_grid(const Grid& grid, std::string_view solver) {
 
 ContactLcp make_contact_lcp(const Grid& grid, double e_star, const Eigen::MatrixXd& influence,
                             std::span<const double> initial_gap, const Loading& loading,
-                            const DenseContactOptions& options) {
+                            const DenseContactOptions& options, const InterfaceLaw& law) {
   const std::size_t n = grid.size();
   const auto size = static_cast<Eigen::Index>(n);
   checked_composite_modulus(e_star);
@@ -160,7 +159,7 @@ ContactLcp make_contact_lcp(const Grid& grid, double e_star, const Eigen::Matrix
     lcp.equality_row = Eigen::VectorXd::Ones(size);
     lcp.equality_value = loading.target_force(grid.domain_area()) / (grid.cell_area() * contact.pressure_unit);
   }
-  if (options.hardness) lcp.upper_bound = Eigen::VectorXd::Constant(size, *options.hardness / contact.pressure_unit);
+  if (law.hardness) lcp.upper_bound = Eigen::VectorXd::Constant(size, *law.hardness / contact.pressure_unit);
   return contact;
 }
 
@@ -180,8 +179,8 @@ double contact_residual(std::span<const double> initial_gap, const Eigen::ArrayX
 }
 
 DenseContactSolver::DenseContactSolver(std::string_view name, const Grid& grid, double e_star,
-                                       DenseContactOptions options)
-    : ContactSolver(grid, InterfaceLaw{options.hardness}),
+                                       DenseContactOptions options, const InterfaceLaw& law)
+    : ContactSolver(grid, law),
       name_(name),
       grid_(grid),
       e_star_(checked_composite_modulus(e_star)),
@@ -192,8 +191,8 @@ DenseContactSolver::DenseContactSolver(std::string_view name, const Grid& grid, 
 }
 
 DenseContactSolver::DenseContactSolver(std::string_view name, const Grid& grid, double e_star,
-                                       Eigen::MatrixXd influence, DenseContactOptions options)
-    : ContactSolver(grid, InterfaceLaw{options.hardness}),
+                                       Eigen::MatrixXd influence, DenseContactOptions options, const InterfaceLaw& law)
+    : ContactSolver(grid, law),
       name_(name),
       grid_(grid),
       e_star_(checked_composite_modulus(e_star)),
@@ -210,10 +209,11 @@ DenseContactSolver::DenseContactSolver(std::string_view name, const Grid& grid, 
 SolveResult DenseContactSolver::do_solve(std::span<const double> initial_gap, const Loading& loading,
                                          std::span<const double> /*initial_pressure*/) {
   const auto start = std::chrono::steady_clock::now();
-  last_lcp_ = make_contact_lcp(grid_, e_star_, influence_, initial_gap, loading, options_);
+  const std::optional<double> hardness = interface_law().hardness;
+  last_lcp_ = make_contact_lcp(grid_, e_star_, influence_, initial_gap, loading, options_, interface_law());
   const bool all_capped =
-      options_.hardness && loading.load_controlled() &&
-      loading.target_force(grid_.domain_area()) >= *options_.hardness * grid_.domain_area() * (1.0 - kFullCapRounding);
+      hardness && loading.load_controlled() &&
+      loading.target_force(grid_.domain_area()) >= *hardness * grid_.domain_area() * (1.0 - kFullCapRounding);
   last_solution_ = all_capped ? all_capped_solution(last_lcp_.lcp) : solve_lcp(last_lcp_.lcp);
   const LcpSolution& lcp = last_solution_;
   const auto n = static_cast<Eigen::Index>(grid_.size());
@@ -234,7 +234,7 @@ SolveResult DenseContactSolver::do_solve(std::span<const double> initial_gap, co
     const double z = lcp.z[i];
     result.pressure[i] = z > 0.0 && z > lcp.w[i] ? z * last_lcp_.pressure_unit : 0.0;
     if (capped && (all_capped || last_lcp_.lcp.upper_bound[i] - z < -lcp.w[i])) {
-      result.pressure[i] = *options_.hardness;
+      result.pressure[i] = *hardness;
     }
   }
   result.approach = loading.load_controlled() ? lcp.multiplier * last_lcp_.gap_unit : loading.value;
@@ -248,13 +248,12 @@ SolveResult DenseContactSolver::do_solve(std::span<const double> initial_gap, co
   result.max_pressure = result.pressure.maxCoeff();
   result.contact_fraction = static_cast<double>((result.pressure > 0.0).count()) / static_cast<double>(n);
   if (capped) {
-    result.hardness = options_.hardness;
-    result.plastic_fraction =
-        static_cast<double>((result.pressure >= *options_.hardness).count()) / static_cast<double>(n);
+    result.hardness = hardness;
+    result.plastic_fraction = static_cast<double>((result.pressure >= *hardness).count()) / static_cast<double>(n);
   }
   const Eigen::VectorXd uniform_response = influence_.rowwise().sum();  // K 1
   result.residual = contact_residual(initial_gap, result.pressure, result.displacement, result.gap,
-                                     uniform_response.maxCoeff() - uniform_response.minCoeff(), options_.hardness);
+                                     uniform_response.maxCoeff() - uniform_response.minCoeff(), hardness);
   result.residual_history = {result.residual};
 
   switch (lcp.status) {
@@ -284,10 +283,10 @@ SolveResult DenseContactSolver::do_solve(std::span<const double> initial_gap, co
     // contact residual (contact_conditions.hpp), as Polonsky-Keer does.
     MatrixView op(grid_, influence_);
     Eigen::ArrayXd scratch(n);
-    const ContactConditionReport check = check_contact_conditions(
-        op, initial_gap, loading, options_.hardness ? PressureBounds::capped_at(*options_.hardness) : PressureBounds{},
-        result, ContactConditionTolerances::for_solver_tolerance(options_.tolerance),
-        {scratch.data(), static_cast<std::size_t>(n)});
+    const ContactConditionReport check =
+        check_contact_conditions(op, initial_gap, loading, interface_law().bounds(), result,
+                                 ContactConditionTolerances::for_solver_tolerance(options_.tolerance),
+                                 {scratch.data(), static_cast<std::size_t>(n)});
     ++result.operator_applications;
     if (!check.holds) {
       result.status = SolveStatus::breakdown;

@@ -57,6 +57,7 @@ struct Problem {
   double approach = 0.0;      // displacement control only
   double cell_area = 0.0;
   double initial_gap_range = 0.0;  // ptp(initial_gap)
+  PressureBounds bounds;           // the interface law's admissible pressures
 };
 
 void check_size(std::string_view what, std::size_t got, std::size_t expected) {
@@ -66,7 +67,8 @@ void check_size(std::string_view what, std::size_t got, std::size_t expected) {
 }
 
 // The problem of a solve, checked.
-Problem make_problem(const InfluenceOperator& op, std::span<const double> initial_gap, const Loading& loading) {
+Problem make_problem(const InfluenceOperator& op, std::span<const double> initial_gap, const Loading& loading,
+                     const PressureBounds& bounds) {
   const Grid& grid = op.grid();
   const linalg::Communicator& comm = op.communicator();
   const std::size_t n = op.local_size();
@@ -77,7 +79,7 @@ Problem make_problem(const InfluenceOperator& op, std::span<const double> initia
   if (!std::isfinite(gap_max) || !std::isfinite(gap_min)) {
     throw InputError("initial gap holds a non-finite value");
   }
-  Problem problem{initial_gap, loading.load_controlled(), 0.0, 0.0, grid.cell_area(), gap_max - gap_min};
+  Problem problem{initial_gap, loading.load_controlled(), 0.0, 0.0, grid.cell_area(), gap_max - gap_min, bounds};
   if (problem.load_controlled) {
     problem.target_force = loading.target_force(grid.domain_area());
   } else {
@@ -144,9 +146,9 @@ class Iteration {
         // move the load among them (the mean-free direction on one cell is
         // zero), and its set holds the cells leaving the cap, whose gaps the
         // approach (the mean over the contact below the cap) does not balance.
-        set_{pressure_, gap_, projected_ || options.bounds.capped(),
-             problem.load_controlled && (projected_ || options.bounds.capped()), options.bounds.upper},
-        bounds_(options.bounds),
+        set_{pressure_, gap_, projected_ || problem.bounds.capped(),
+             problem.load_controlled && (projected_ || problem.bounds.capped()), problem.bounds.upper},
+        bounds_(problem.bounds),
         uniform_response_range_(uniform_response_range),
         approach_(problem.approach) {
     if (uniform_response_range_ < 0.0) {
@@ -794,16 +796,11 @@ void PolonskyKeerOptions::validate() const {
   if (max_iterations < 1) {
     throw InputError(fmt::format("max_iterations = {} is invalid: must be at least 1", max_iterations));
   }
-  if (!(bounds.lower == 0.0 && bounds.upper > 0.0)) {
-    throw InputError(fmt::format("pressure bounds [{}, {}] Pa are invalid: the lower must be 0 and the upper positive",
-                                 bounds.lower, bounds.upper));
-  }
 }
 
-PolonskyKeer::PolonskyKeer(InfluenceOperator& op, PolonskyKeerOptions options, Preconditioner* preconditioner,
-                           InfluenceOperator* inner, SinglePrecisionProducts single)
-    : ContactSolver(op.grid(),
-                    InterfaceLaw{options.bounds.capped() ? std::optional(options.bounds.upper) : std::nullopt}),
+PolonskyKeer::PolonskyKeer(InfluenceOperator& op, PolonskyKeerOptions options, const InterfaceLaw& law,
+                           Preconditioner* preconditioner, InfluenceOperator* inner, SinglePrecisionProducts single)
+    : ContactSolver(op.grid(), law),
       op_(op),
       inner_(inner ? *inner : op),
       options_(std::move(options)),
@@ -856,7 +853,7 @@ SolveResult PolonskyKeer::do_solve_from(std::span<const double> initial_gap, con
 SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading& loading, Eigen::ArrayXd pressure,
                               bool warm) {
   const auto start = std::chrono::steady_clock::now();
-  const Problem problem = make_problem(op_, initial_gap, loading);
+  const Problem problem = make_problem(op_, initial_gap, loading, interface_law().bounds());
   const auto n = static_cast<Eigen::Index>(op_.local_size());
   SolveResult result;
   result.solver = name_;
@@ -888,7 +885,7 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
     std::span<double> scratch = single_ ? std::span<double>(result.gap.data(), static_cast<std::size_t>(n))
                                         : std::span<double>(image_.data(), static_cast<std::size_t>(n));
     const ContactConditionReport check =
-        check_contact_conditions(op_, initial_gap, loading, options_.bounds, result,
+        check_contact_conditions(op_, initial_gap, loading, problem.bounds, result,
                                  ContactConditionTolerances::for_solver_tolerance(options_.tolerance), scratch);
     if (single_) {
       const double approach = result.approach;

@@ -30,7 +30,8 @@ class SolverWithOperator final : public ContactSolver {
   // `active_set`, Polonsky-Keer begun by the primal-dual active-set phase
   // (where a preconditioner applies).
   SolverWithOperator(ElasticOperators operators, std::unique_ptr<BlockDeflation> deflation,
-                     const PolonskyKeerOptions& options, const ActiveSetOptions* active_set = nullptr)
+                     const PolonskyKeerOptions& options, const InterfaceLaw& law,
+                     const ActiveSetOptions* active_set = nullptr)
       : operators_(std::move(operators)),
         deflation_(std::move(deflation)),
         // The coarse correction is part of M^-1: with mixed precision its
@@ -43,7 +44,7 @@ class SolverWithOperator final : public ContactSolver {
     // Single-precision work vectors where every product has a
     // single-precision form (not around the coarse correction's, which
     // works in double).
-    auto polonsky_keer = std::make_unique<PolonskyKeer>(*operators_.op, options, used, operators_.inner.get(),
+    auto polonsky_keer = std::make_unique<PolonskyKeer>(*operators_.op, options, law, used, operators_.inner.get(),
                                                         balancing_ ? SinglePrecisionProducts{} : operators_.single);
     if (active_set && used) {
       solver_ = std::make_unique<ActiveSetStart>(*operators_.op, *used, std::move(polonsky_keer), *active_set);
@@ -121,7 +122,7 @@ std::unique_ptr<ContactSolver> make_polonsky_keer(const Grid& grid, const HalfSp
   if (active_set && operators.op->communicator().size() > 1) {
     throw SolverOptionError("multilevel.active_set", "on", "is not available on several processes yet: leave it off");
   }
-  return std::make_unique<SolverWithOperator>(std::move(operators), std::move(deflation), pk,
+  return std::make_unique<SolverWithOperator>(std::move(operators), std::move(deflation), pk, options.interface_law,
                                               active_set ? &options.multilevel.active_set_options : nullptr);
 }
 
@@ -153,11 +154,11 @@ std::unique_ptr<ContactSolver> make_multilevel(const Grid& grid, const HalfSpace
 std::unique_ptr<ContactSolver> make_dense(const Grid& grid, double e_star, const SolverOptions& options) {
   DenseContactOptions contact;
   contact.tolerance = options.tolerance;
-  contact.hardness = options.interface_law.hardness;
   if (options.type == SolverType::lemke) {
-    return std::make_unique<Lemke>(grid, e_star, LemkeOptions{options.iteration_limit()}, contact);
+    return std::make_unique<Lemke>(grid, e_star, LemkeOptions{options.iteration_limit()}, contact,
+                                   options.interface_law);
   }
-  return std::make_unique<LcpQuad>(grid, e_star, LcpQuadOptions{}, contact);
+  return std::make_unique<LcpQuad>(grid, e_star, LcpQuadOptions{}, contact, options.interface_law);
 }
 
 }  // namespace
@@ -168,7 +169,6 @@ PolonskyKeerOptions polonsky_keer_options(const SolverOptions& options, double t
   pk.max_iterations = options.iteration_limit();
   pk.progress = options.progress;
   pk.form = projected ? PolonskyKeerForm::projected : PolonskyKeerForm::paper;
-  pk.bounds = options.interface_law.bounds();
   return pk;
 }
 
@@ -177,7 +177,6 @@ AdhesiveSolverOptions adhesive_solver_options(const SolverOptions& options) {
   adhesive.law = options.adhesion.value().law;
   adhesive.tolerance = options.adhesion->tolerance;
   adhesive.precondition = options.adhesion->precondition;
-  adhesive.hardness = options.interface_law.hardness;
   if (options.max_iterations) adhesive.max_iterations = *options.max_iterations;
   adhesive.fft_planning = options.fft_planning;
   adhesive.progress = options.progress;
@@ -206,7 +205,7 @@ std::unique_ptr<ContactSolver> make_solver(const Grid& grid, const HalfSpace& ha
   if (options.adhesion) {
     return std::make_unique<AdhesiveContactSolver>(
         layout.make_operators(grid, half_space, false, options.fft_planning).op, contact_modulus(half_space),
-        adhesive_solver_options(options));
+        adhesive_solver_options(options), options.interface_law);
   }
   switch (options.type) {
     case SolverType::pk:

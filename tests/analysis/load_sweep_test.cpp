@@ -151,7 +151,8 @@ TEST(LoadSweepTest, WestergaardSweepMatchesColdSolvesWithFewerIterations) {
   solvers::FourierPreconditioner preconditioner(grid, e_star);
   solvers::PolonskyKeerOptions options;
   options.form = solvers::PolonskyKeerForm::projected;
-  const std::unique_ptr<ContactSolver> solver = std::make_unique<solvers::PolonskyKeer>(op, options, &preconditioner);
+  const std::unique_ptr<ContactSolver> solver =
+      std::make_unique<solvers::PolonskyKeer>(op, options, solvers::InterfaceLaw{}, &preconditioner);
   const std::vector<SweepStep> steps =
       run_load_sweep(*solver, grid, {gap0.data(), n}, ControlMode::mean_pressure, loads);
 

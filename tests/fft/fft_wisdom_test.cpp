@@ -2,8 +2,6 @@
 // corrupt or missing files rejected with a reason while FFTW's wisdom stays
 // as it was. The automatic load and save are tested through the program
 // (tests/apps/fft_wisdom_cli_test.cpp), one process per run.
-#include "halfspace/fft/fft_wisdom.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -15,12 +13,16 @@
 #include <vector>
 
 #include "halfspace/fft/real_fft.hpp"
+#include "halfspace/io/fft_wisdom_file.hpp"
 #include "io/hdf5_test_support.hpp"
 
 namespace halfspace {
 namespace {
 
 namespace fs = std::filesystem;
+using io::export_fft_wisdom;
+using io::fft_wisdom_path;
+using io::import_fft_wisdom;
 using test::TempDir;
 
 // Every FFTW 3 wisdom export starts so (the version follows).

@@ -64,9 +64,9 @@ def test_coated_solve_equals_cli_and_its_stresses_equal_the_stress_command(tmp_p
 
 def test_coating_keyword_is_checked():
     surface = np.zeros((16, 16))
-    with pytest.raises(hs.InputError, match="coating cannot be combined with e_star"):
+    with pytest.raises(hs.InputError, match=r"coating\['substrate_nu'\] cannot be combined with e_star"):
         hs.solve(surface, dx=1e-6, e_star=1e9, coating=HARD_COATING, force=1.0)
-    with pytest.raises(hs.InputError, match="missing substrate_nu"):
+    with pytest.raises(hs.InputError, match=r"missing coating\['substrate_nu'\]"):
         hs.solve(surface, dx=1e-6, coating={k: v for k, v in HARD_COATING.items() if k != "substrate_nu"},
                  force=1.0)
     with pytest.raises(hs.InputError, match=r"coating\['thickness'\]=-1 is invalid: must be positive \(m\)"):

@@ -229,9 +229,6 @@ TEST(AdhesionEnergyTest, OptionErrorsNameTheOption) {
   bad = options;
   bad.max_load_steps = 0;
   EXPECT_EQ(option_of(bad), "max_load_steps");
-  bad = options;
-  bad.hardness = -1.0;
-  EXPECT_EQ(option_of(bad), "hardness");
 }
 
 }  // namespace

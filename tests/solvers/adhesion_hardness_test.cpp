@@ -68,8 +68,7 @@ AdhesiveContactSolver adhesive_solver(const Sphere& s, std::optional<double> har
   // SPG's rounding limit lies near 1e-7 on the periodic grids: its default.
   options.tolerance = precondition ? kSolveTolerance : 1e-6;
   options.precondition = precondition;
-  options.hardness = hardness;
-  return AdhesiveContactSolver(s.grid, kEStar, options);
+  return AdhesiveContactSolver(s.grid, kEStar, options, solvers::InterfaceLaw{hardness});
 }
 
 std::span<const double> view(const Eigen::ArrayXd& a) {
@@ -303,8 +302,7 @@ void expect_plastic_fraction_grows(const Grid& grid, int steps) {
   AdhesiveSolverOptions options;
   options.law = AdhesionLaw::exponential(1e-3 * kEStar * rms, 0.05 * rms);
   options.tolerance = 1e-8;
-  options.hardness = hardness;
-  AdhesiveContactSolver solver(grid, kEStar, options);
+  AdhesiveContactSolver solver(grid, kEStar, options, solvers::InterfaceLaw{hardness});
   double previous = 0.0;
   for (int k = 1; k <= steps; ++k) {
     const double approach = gap.minCoeff() + 1.5 * rms * k / steps;
@@ -373,8 +371,8 @@ TEST(AdhesionHardnessTest, RefusesALoadAboveTheFullyPlasticForce) {
   EXPECT_THROW(solver.solve(view(s.gap), Loading::force(2.0 * hardness * s.grid.domain_area())), InputError);
   AdhesiveSolverOptions options;
   options.law = s.law;
-  options.hardness = 1.0;  // below InterfaceLaw::kMinHardness
-  EXPECT_THROW(AdhesiveContactSolver(s.grid, kEStar, options), InputError);
+  // A hardness below InterfaceLaw::kMinHardness, refused when the solver is made.
+  EXPECT_THROW(AdhesiveContactSolver(s.grid, kEStar, options, solvers::InterfaceLaw{1.0}), InputError);
 }
 
 }  // namespace

@@ -279,7 +279,7 @@ SolveResult deflated_fine_solve(int coarse_max_iterations) {
   BalancingPreconditioner balancing(op, preconditioner, deflation);
   PolonskyKeerOptions options;
   options.form = PolonskyKeerForm::projected;
-  PolonskyKeer solver(op, options, &balancing);
+  PolonskyKeer solver(op, options, {}, &balancing);
   return solver.solve({gap.data(), grid.size()}, load, {start.data(), grid.size()});
 }
 

@@ -49,9 +49,7 @@ struct Case {
 
 void expect_dense_agrees_with_pk(const Case& c) {
   const std::span<const double> g0(c.gap.data(), c.grid.size());
-  solvers::DenseContactOptions dense_options;
-  dense_options.hardness = kHardness;
-  solvers::LcpQuad lcpquad(c.grid, kEStar, solvers::LcpQuadOptions{}, dense_options);
+  solvers::LcpQuad lcpquad(c.grid, kEStar, solvers::LcpQuadOptions{}, {}, solvers::InterfaceLaw{kHardness});
   const SolveResult dense = lcpquad.solve(g0, c.loading);
   solvers::SolverOptions options = test_options(SolverType::pk, kPkTolerance);
   options.interface_law.hardness = kHardness;

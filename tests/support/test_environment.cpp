@@ -6,8 +6,11 @@
 // consulted only at the first measured plan.
 #include <cstdlib>
 
+#include "halfspace/io/fft_wisdom_file.hpp"
+
 namespace {
 
-const bool kWisdomInBuildTree = ::setenv("HALFSPACE_FFTW_WISDOM", HALFSPACE_TEST_WISDOM_FILE, 1) == 0;
+const bool kWisdomInBuildTree = ::setenv("HALFSPACE_FFTW_WISDOM", HALFSPACE_TEST_WISDOM_FILE, 1) == 0 &&
+                                (halfspace::io::use_fft_wisdom_file(), true);
 
 }  // namespace

@@ -37,7 +37,7 @@ struct FftwPlanOf<float> {
 // mixed-precision solve, solver_options.hpp's Precision). The buffers are FFTW-aligned and owned here; the plans
 // are made once, under a process-wide lock (FFTW's planner is not thread-safe),
 // with the thread count in force (set_threads); measure and patient plans
-// read and extend the wisdom file of fft_wisdom.hpp. Executing is thread-safe
+// read and extend the wisdom store of fft_wisdom.hpp. Executing is thread-safe
 // for distinct objects. Transforms are unnormalised: backward(forward(x)) = N x
 // with N = rows * cols.
 template <class Real>

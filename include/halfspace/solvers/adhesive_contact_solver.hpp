@@ -106,10 +106,6 @@ struct AdhesiveSolverOptions {
   // fewer operator products than SPG on rough contacts, the same pull-off
   // on a quasi-static sweep), or SPG with false.
   bool precondition = true;
-  // Hardness cap H (Pa, interface_law.hpp): a cell pressed onto the wall
-  // carries at most H and beyond it flows (see Hardness cap above). Unset:
-  // the rigid wall.
-  std::optional<double> hardness;
   // Load control: relative force tolerance of the search on the approach,
   // and its limit of displacement-controlled solves.
   double force_tolerance = 1e-6;
@@ -118,10 +114,9 @@ struct AdhesiveSolverOptions {
 
   // Throws SolverOptionError (solver_options.hpp) naming the option
   // ("law.work", "law.range", "tolerance", "force_tolerance",
-  // "max_iterations", "max_load_steps", "hardness") unless the law is valid
+  // "max_iterations", "max_load_steps") unless the law is valid
   // (AdhesionLaw::validate's rules), 0 < tolerance < 1, 0 < force_tolerance
-  // < 1, max_iterations >= 1, max_load_steps >= 1 and a hardness, if set,
-  // in InterfaceLaw's range.
+  // < 1, max_iterations >= 1 and max_load_steps >= 1.
   void validate() const;
 };
 
@@ -132,16 +127,19 @@ class AdhesiveContactSolver final : public ContactSolver {
   // several (the fields then hold this process's cells). contact_modulus
   // (Pa): the composite modulus at the contact edge's scale (the body's E*,
   // a coating's layer's), which sets the cohesive zone (see Resolution
-  // above). Throws SolverOptionError (options.validate()) or InputError if
-  // the law's cohesive zone is below 1 % of a cell or its stress over the
-  // grid overflows a force, and as op.circulant_form() does (no such form,
-  // or no stiffness).
-  AdhesiveContactSolver(InfluenceOperator& op, double contact_modulus, AdhesiveSolverOptions options);
+  // above). `law`'s hardness, if set, caps the pressure at the wall (see
+  // Hardness cap above). Throws SolverOptionError (options.validate(),
+  // law.validate()) or InputError if the law's cohesive zone is below 1 % of
+  // a cell or its stress over the grid overflows a force, and as
+  // op.circulant_form() does (no such form, or no stiffness).
+  AdhesiveContactSolver(InfluenceOperator& op, double contact_modulus, AdhesiveSolverOptions options,
+                        const InterfaceLaw& law = {});
   // The same, owning `op`.
-  AdhesiveContactSolver(std::unique_ptr<InfluenceOperator> op, double contact_modulus, AdhesiveSolverOptions options);
+  AdhesiveContactSolver(std::unique_ptr<InfluenceOperator> op, double contact_modulus, AdhesiveSolverOptions options,
+                        const InterfaceLaw& law = {});
   // The homogeneous half-space of composite modulus e_star (Pa) on `grid`:
   // on an FftInfluenceOperator of its own.
-  AdhesiveContactSolver(const Grid& grid, double e_star, AdhesiveSolverOptions options);
+  AdhesiveContactSolver(const Grid& grid, double e_star, AdhesiveSolverOptions options, const InterfaceLaw& law = {});
   ~AdhesiveContactSolver() override;
   AdhesiveContactSolver(const AdhesiveContactSolver&) = delete;
   AdhesiveContactSolver& operator=(const AdhesiveContactSolver&) = delete;

@@ -45,9 +45,12 @@ class ContactSolver {
  protected:
   // A solver that delegates to another (which checks the load).
   ContactSolver() = default;
-  // A solver of the problem on `grid` under `law`, whose loads solve()
-  // checks against the law.
-  ContactSolver(const Grid& grid, const InterfaceLaw& law) : grid_(grid), law_(law) {}
+  // A solver of the problem on `grid` under `law`, the one object every
+  // solver takes unchanged and checks here once: its values when the solver
+  // is made (InterfaceLaw::validate), each load when solve() is called.
+  ContactSolver(const Grid& grid, const InterfaceLaw& law) : grid_(grid), law_((law.validate(), law)) {}
+
+  const InterfaceLaw& interface_law() const { return law_; }
 
   virtual SolveResult do_solve(std::span<const double> initial_gap, const Loading& loading,
                                std::span<const double> initial_pressure) = 0;

@@ -54,13 +54,9 @@ struct DenseContactOptions {
   // The result counts as converged when the method succeeded and the contact
   // residual (the Polonsky-Keer stopping measure) is at most this.
   double tolerance = 1e-10;
-  // A hardness cap p <= H (Pa, interface_law.hpp): the LCP becomes the
-  // box-constrained one, z <= H / P (LcpProblem::upper_bound). Unset:
-  // none.
-  std::optional<double> hardness;
 
-  // Throws InputError naming the option unless 0 < tolerance < 1, the
-  // units are finite and >= 0 and the hardness (if set) is valid.
+  // Throws InputError naming the option unless 0 < tolerance < 1 and the
+  // units are finite and >= 0.
   void validate() const;
 };
 
@@ -73,10 +69,12 @@ struct ContactLcp {
 };
 
 // Poses the contact problem (influence matrix K in m/Pa, initial gap g0 in m,
-// loading) as the LCP above. Throws InputError for invalid loading or sizes.
+// loading) as the LCP above; a hardness cap p <= H in `law` makes it the
+// box-constrained one, z <= H / P (LcpProblem::upper_bound). Throws
+// InputError for invalid loading or sizes.
 ContactLcp make_contact_lcp(const Grid& grid, double e_star, const Eigen::MatrixXd& influence,
                             std::span<const double> initial_gap, const Loading& loading,
-                            const DenseContactOptions& options);
+                            const DenseContactOptions& options, const InterfaceLaw& law = {});
 
 // The Polonsky-Keer stopping measure of a contact state (polonsky_keer.hpp):
 // ( sum_i (p_i / pbar) |g_i| + sum_i max(-g_i, 0) ) / (N g_ref), with
@@ -96,10 +94,11 @@ class DenseContactSolver : public ContactSolver {
   // `name` is the solver's name (results, messages). Assembles K for `grid`;
   // throws InputError naming the grid size and pointing to the FFT solver if
   // it exceeds kMaxDenseCells.
-  DenseContactSolver(std::string_view name, const Grid& grid, double e_star, DenseContactOptions options);
+  DenseContactSolver(std::string_view name, const Grid& grid, double e_star, DenseContactOptions options,
+                     const InterfaceLaw& law = {});
   // Uses a given n x n matrix (m/Pa), n = grid.size(), e.g. another kernel.
   DenseContactSolver(std::string_view name, const Grid& grid, double e_star, Eigen::MatrixXd influence,
-                     DenseContactOptions options);
+                     DenseContactOptions options, const InterfaceLaw& law = {});
 
   std::string_view name() const final { return name_; }
 
@@ -131,11 +130,11 @@ template <class MethodOptions, LcpSolution (*Method)(const LcpProblem&, const Me
 class DenseLcpMethod : public DenseContactSolver {
  protected:
   DenseLcpMethod(std::string_view name, const Grid& grid, double e_star, MethodOptions options,
-                 DenseContactOptions contact)
-      : DenseContactSolver(name, grid, e_star, std::move(contact)), options_(validated(std::move(options))) {}
+                 DenseContactOptions contact, const InterfaceLaw& law)
+      : DenseContactSolver(name, grid, e_star, std::move(contact), law), options_(validated(std::move(options))) {}
   DenseLcpMethod(std::string_view name, const Grid& grid, double e_star, Eigen::MatrixXd influence,
-                 MethodOptions options, DenseContactOptions contact)
-      : DenseContactSolver(name, grid, e_star, std::move(influence), std::move(contact)),
+                 MethodOptions options, DenseContactOptions contact, const InterfaceLaw& law)
+      : DenseContactSolver(name, grid, e_star, std::move(influence), std::move(contact), law),
         options_(validated(std::move(options))) {}
 
  private:

@@ -42,11 +42,12 @@ LcpSolution solve_lcp_quad(const LcpProblem& problem, const LcpQuadOptions& opti
 // Contact solver "lcpquad": LCPquad on the contact LCP of dense_contact.hpp.
 class LcpQuad final : public DenseLcpMethod<LcpQuadOptions, solve_lcp_quad> {
  public:
-  LcpQuad(const Grid& grid, double e_star, LcpQuadOptions options = {}, DenseContactOptions contact = {})
-      : DenseLcpMethod("lcpquad", grid, e_star, options, std::move(contact)) {}
+  LcpQuad(const Grid& grid, double e_star, LcpQuadOptions options = {}, DenseContactOptions contact = {},
+          InterfaceLaw law = {})
+      : DenseLcpMethod("lcpquad", grid, e_star, options, std::move(contact), law) {}
   LcpQuad(const Grid& grid, double e_star, Eigen::MatrixXd influence, LcpQuadOptions options = {},
-          DenseContactOptions contact = {})
-      : DenseLcpMethod("lcpquad", grid, e_star, std::move(influence), options, std::move(contact)) {}
+          DenseContactOptions contact = {}, InterfaceLaw law = {})
+      : DenseLcpMethod("lcpquad", grid, e_star, std::move(influence), options, std::move(contact), law) {}
 };
 
 }  // namespace halfspace::solvers

@@ -34,11 +34,12 @@ LcpSolution solve_lcp_lemke(const LcpProblem& problem, const LemkeOptions& optio
 // mixed LCP with the force as an equality). Grids up to kMaxDenseCells.
 class Lemke final : public DenseLcpMethod<LemkeOptions, solve_lcp_lemke> {
  public:
-  Lemke(const Grid& grid, double e_star, LemkeOptions options = {}, DenseContactOptions contact = {})
-      : DenseLcpMethod("lemke", grid, e_star, options, std::move(contact)) {}
+  Lemke(const Grid& grid, double e_star, LemkeOptions options = {}, DenseContactOptions contact = {},
+        InterfaceLaw law = {})
+      : DenseLcpMethod("lemke", grid, e_star, options, std::move(contact), law) {}
   Lemke(const Grid& grid, double e_star, Eigen::MatrixXd influence, LemkeOptions options = {},
-        DenseContactOptions contact = {})
-      : DenseLcpMethod("lemke", grid, e_star, std::move(influence), options, std::move(contact)) {}
+        DenseContactOptions contact = {}, InterfaceLaw law = {})
+      : DenseLcpMethod("lemke", grid, e_star, std::move(influence), options, std::move(contact), law) {}
 };
 
 }  // namespace halfspace::solvers

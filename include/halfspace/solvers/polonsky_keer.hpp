@@ -102,15 +102,13 @@ struct PolonskyKeerOptions {
   double tolerance = 1e-10;    // relative residual, see the stopping criterion above
   int max_iterations = 10000;  // status iteration_limit when reached
   PolonskyKeerForm form = PolonskyKeerForm::paper;
-  // The admissible pressures: [0, inf), or [0, H] with a hardness cap.
-  PressureBounds bounds;
   // Called once per iteration with (iteration, residual); may be empty. It
   // runs on the calling thread between iterations, so it may print; its
   // IterationDecision::stop ends the solve with status `stopped`.
   ProgressCallback progress;
 
-  // Throws InputError naming the option unless 0 < tolerance < 1,
-  // max_iterations >= 1 and the bounds are [0, upper] with upper > 0.
+  // Throws InputError naming the option unless 0 < tolerance < 1 and
+  // max_iterations >= 1.
   void validate() const;
 };
 
@@ -118,6 +116,8 @@ class PolonskyKeer final : public ContactSolver {
  public:
   // Keeps a reference to `op` (which must outlive the solver) and allocates
   // the workspace once; solve() then allocates nothing inside its loop.
+  // The pressures admitted are `law`'s bounds: [0, inf), or [0, H] with a
+  // hardness cap.
   // `preconditioner`, if given, must outlive the solver too; it needs the
   // projected form (InputError otherwise). `inner`, if given, takes the
   // step's products (see "Mixed precision" above), acts on op's fields and
@@ -125,7 +125,7 @@ class PolonskyKeer final : public ContactSolver {
   // `single`, if given, takes the step's products on single-precision work
   // vectors (and then M^-1 too, for which it needs its precondition when a
   // preconditioner is given: InputError otherwise); `inner` is then unused.
-  explicit PolonskyKeer(InfluenceOperator& op, PolonskyKeerOptions options = {},
+  explicit PolonskyKeer(InfluenceOperator& op, PolonskyKeerOptions options = {}, const InterfaceLaw& law = {},
                         Preconditioner* preconditioner = nullptr, InfluenceOperator* inner = nullptr,
                         SinglePrecisionProducts single = {});
 
