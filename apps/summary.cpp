@@ -85,6 +85,11 @@ void print_summary(std::FILE* out, const SolveSetup& setup, const SolveResult& r
                     result.coarse.levels, result.coarse.iterations, result.coarse.operator_work,
                     result.coarse.preconditioner_work));
   }
+  if (result.active_set_outer > 0) {
+    row(out, "active set",
+        fmt::format("{} set updates, {} of the {} iterations", result.active_set_outer, result.active_set_inner,
+                    result.iterations));
+  }
   if (result.deflation.block > 0) {
     const DeflationRecord& d = result.deflation;
     row(out, "deflation",

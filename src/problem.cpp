@@ -75,7 +75,7 @@ std::string_view problem_name(std::string_view member) {
       {"precision", "precision"},
   }};
   if (member.starts_with("deflation")) return "deflation_block";
-  if (member.starts_with("active_set")) return "active_set";
+  if (member.starts_with("active_set") || member == "multilevel.active_set") return "active_set";
   for (const auto& [known, name] : kMembers) {
     if (known == member) return name;
   }
@@ -281,12 +281,7 @@ solvers::SolverOptions Rules::solver() const {
       if (block != 0) solver.deflation.block = static_cast<std::size_t>(block);
     }
     if (o_.hardness) solver.interface_law.hardness = *o_.hardness;
-    if (o_.active_set) {
-      if (*o_.active_set != "on" && *o_.active_set != "off") {
-        throw OptionError("active_set", *o_.active_set, "is invalid: allowed values are on and off");
-      }
-      solver.multilevel.active_set = *o_.active_set == "on";
-    }
+    if (o_.active_set) solver.multilevel.active_set = solvers::parse_active_set(*o_.active_set);
     solver.validate();
   });
   if (o_.fft_planning) {

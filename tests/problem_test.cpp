@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "halfspace/error.hpp"
@@ -105,6 +106,22 @@ TEST(ProblemTest, SolverRulesAreNamedByTheProblemsOption) {
   options.deflation_block.reset();
   options.threads = 0;
   EXPECT_TRUE(starts_with(refusal([&] { make_problem(options); }), "threads=0 is invalid: allowed range is 1 to"));
+}
+
+TEST(ProblemTest, ActiveSetIsOnOffOrAutomatic) {
+  using Mode = solvers::MultilevelOptions::ActiveSet;
+  ProblemOptions options = sphere_problem();
+  EXPECT_EQ(make_problem(options).solver.multilevel.active_set, Mode::automatic);
+  for (const auto& [name, mode] : std::array<std::pair<const char*, Mode>, 3>{
+           {{"on", Mode::on}, {"off", Mode::off}, {"automatic", Mode::automatic}}}) {
+    options.active_set = name;
+    EXPECT_EQ(make_problem(options).solver.multilevel.active_set, mode) << name;
+  }
+  options.active_set = "yes";
+  EXPECT_EQ(refusal([&] { make_problem(options); }),
+            "active_set=yes is invalid: allowed values are on, off, automatic");
+  EXPECT_EQ(refusal([&] { make_problem(options, Flags{}); }),
+            "--active_set yes is invalid: allowed values are on, off, automatic");
 }
 
 TEST(ProblemTest, EachLoadIsCheckedOnTheGridAgainstTheHardnessCap) {

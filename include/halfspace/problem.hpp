@@ -92,7 +92,7 @@ struct ProblemOptions {
   std::optional<std::string> fft_planning;
   std::optional<std::string> precision;      // double or mixed (SolverOptions::precision)
   std::optional<long long> deflation_block;  // 0: off
-  std::optional<std::string> active_set;     // on or off (pk-multilevel's active-set phase)
+  std::optional<std::string> active_set;     // on, off or automatic (pk-multilevel's active-set phase)
   std::optional<long long> threads;
 };
 

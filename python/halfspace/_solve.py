@@ -95,12 +95,14 @@ def _laws(hardness, adhesion, work_of_adhesion, adhesion_range, adhesion_stress,
             "adhesion_precondition": precondition}
 
 
-def _with_active_set(keywords: dict, active_set: Optional[bool]) -> dict:
+def _with_active_set(keywords: dict, active_set: Optional[Union[bool, str]]) -> dict:
     """The problem keywords with pk-multilevel's active-set phase, when given."""
     if active_set is None:
         return keywords
+    if active_set == "automatic":
+        return {**keywords, "active_set": "automatic"}
     if not isinstance(active_set, bool):
-        raise _core.InputError(f"active_set={active_set!r} is invalid: give True or False")
+        raise _core.InputError(f"active_set={active_set!r} is invalid: give True, False or \"automatic\"")
     return {**keywords, "active_set": "on" if active_set else "off"}
 
 
@@ -120,7 +122,7 @@ def solve(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
           tangential_displacement: Optional[Union[float, Sequence[float]]] = None,
           sliding: Optional[Sequence[float]] = None, tangential_tol: Optional[float] = None,
           tangential_max_iter: Optional[int] = None, coupling: Optional[bool] = None,
-          normal_load_steps: Optional[int] = None, active_set: Optional[bool] = None,
+          normal_load_steps: Optional[int] = None, active_set: Optional[Union[bool, str]] = None,
           precision: Optional[str] = None) -> _core.Result:
     """Solves the contact of a rigid rough surface on an elastic half-space, frictionless or with friction.
 
@@ -137,7 +139,9 @@ def solve(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
     threads: threads of the solve (None: the CPUs this process may use). It
         is process-wide: it also sets the threads of later FFT plans.
     active_set: pk-multilevel begins its finest grid with primal-dual
-        active-set steps (``--active-set on``; None: off).
+        active-set steps: True (``--active-set on``), False, or "automatic"
+        (None: the library's default, automatic: on for periodic grids from
+        4096^2 cells on a homogeneous half-space, else off).
     initial_pressure: a warm start (Pa), shaped like the surface.
     progress: ``callable(iteration, residual)`` called after each iteration
         of the fine solve, on the calling thread; returning False stops the
@@ -229,7 +233,7 @@ def sweep(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
           adhesion: Optional[str] = None, work_of_adhesion: Optional[float] = None,
           adhesion_range: Optional[float] = None, adhesion_stress: Optional[float] = None,
           adhesion_tol: Optional[float] = None, adhesion_precondition: Optional[bool] = None,
-          coating: Optional[Mapping[str, float]] = None, active_set: Optional[bool] = None,
+          coating: Optional[Mapping[str, float]] = None, active_set: Optional[Union[bool, str]] = None,
           precision: Optional[str] = None) -> _core.Sweep:
     """Solves the surface under each load of a sequence, in order, each step
     warm-started from the previous one (as ``halfspace solve`` with several

@@ -119,9 +119,6 @@ std::unique_ptr<ContactSolver> make_polonsky_keer(const Grid& grid, const HalfSp
     deflation =
         std::make_unique<BlockDeflation>(grid, options.deflation, rows.first, rows.count, operators.op->communicator());
   }
-  if (active_set && operators.op->communicator().size() > 1) {
-    throw SolverOptionError("multilevel.active_set", "on", "is not available on several processes yet: leave it off");
-  }
   return std::make_unique<SolverWithOperator>(std::move(operators), std::move(deflation), pk, options.interface_law,
                                               active_set ? &options.multilevel.active_set_options : nullptr);
 }
@@ -134,7 +131,9 @@ std::unique_ptr<ContactSolver> make_multilevel(const Grid& grid, const HalfSpace
   // With the active-set phase, block deflation (unless turned off) from a
   // smaller grid on: the phase's linear solves on a fixed set need no
   // settling before the correction joins.
-  const bool active_set = options.multilevel.active_set && !options.interface_law.hardness;
+  const bool active_set = options.multilevel.active_set_applies(grid, options.interface_law.hardness.has_value(),
+                                                                std::holds_alternative<LayeredMaterial>(half_space),
+                                                                layout.communicator().size());
   const bool deflated = multilevel_deflates(grid, options) ||
                         (active_set && options.deflation.mode == DeflationOptions::Mode::automatic &&
                          options.deflation.automatic_applies_with_active_set(grid));

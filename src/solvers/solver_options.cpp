@@ -25,6 +25,12 @@ constexpr std::array<std::pair<Precision, std::string_view>, 2> kPrecisionNames{
     {Precision::mixed, "mixed"},
 }};
 
+constexpr std::array<std::pair<MultilevelOptions::ActiveSet, std::string_view>, 3> kActiveSetNames{{
+    {MultilevelOptions::ActiveSet::on, "on"},
+    {MultilevelOptions::ActiveSet::off, "off"},
+    {MultilevelOptions::ActiveSet::automatic, "automatic"},
+}};
+
 std::string text(double value) {
   return format_number(value);
 }
@@ -65,6 +71,23 @@ Precision parse_precision(std::string_view name) {
                           fmt::format("is invalid: the precision must be one of {}", fmt::join(names, ", ")));
 }
 
+std::string_view to_string(MultilevelOptions::ActiveSet mode) {
+  for (const auto& [known, name] : kActiveSetNames) {
+    if (known == mode) return name;
+  }
+  return "unknown";
+}
+
+MultilevelOptions::ActiveSet parse_active_set(std::string_view name) {
+  std::vector<std::string_view> names;
+  for (const auto& [mode, known] : kActiveSetNames) {
+    if (known == name) return mode;
+    names.push_back(known);
+  }
+  throw SolverOptionError("multilevel.active_set", std::string(name),
+                          fmt::format("is invalid: allowed values are {}", fmt::join(names, ", ")));
+}
+
 std::vector<SolverType> solver_types() {
   std::vector<SolverType> types;
   for (const auto& [type, name] : kSolverNames) types.push_back(type);
@@ -93,6 +116,16 @@ bool DeflationOptions::automatic_applies(const Grid& grid) const {
 
 bool DeflationOptions::automatic_applies_with_active_set(const Grid& grid) const {
   return grid.size() >= kAutomaticWithActiveSetFromCells && BlockDeflation::covers(grid, block);
+}
+
+bool MultilevelOptions::active_set_applies(const Grid& grid, bool capped, bool coated, int processes) const {
+  if (active_set == ActiveSet::on && processes > 1) {
+    throw SolverOptionError("multilevel.active_set", "on",
+                            "is not available on several processes yet: leave it automatic (off there) or off");
+  }
+  if (active_set == ActiveSet::off || grid.dimension() != 2 || capped) return false;
+  return active_set == ActiveSet::on ||
+         (processes == 1 && !coated && grid.periodic() && grid.size() >= kActiveSetAutomaticFromCells);
 }
 
 void MultilevelOptions::validate() const {

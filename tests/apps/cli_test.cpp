@@ -136,6 +136,26 @@ TEST(CliTest, SphereSolveConvergesWritesFileAndPrintsSummary) {
   EXPECT_EQ(test::read_string_attribute(file.get(), "config"), "");
 }
 
+// The summary says when pk-multilevel's active-set phase ran: asked for
+// with --active-set on, and not by default on a grid this small
+// (automatic: from 4096^2 cells).
+TEST(CliTest, SummaryReportsTheActiveSetPhaseWhenItRuns) {
+  const TempDir dir;
+  for (const char* mode : {"on", ""}) {
+    auto options = sphere_options(dir / "phase.h5");
+    std::erase_if(options, [](const auto& option) { return option.first == "--grid"; });
+    options.emplace_back("--grid", "128x128");  // a contact radius of 13 cells, 2 coarse grids
+    if (*mode != '\0') options.emplace_back("--active-set", mode);
+    const ProgramRun result = run(solve_arguments(options), dir);
+    ASSERT_EQ(result.exit_code, kExitOk) << result.err;
+    const bool reported = result.out.find("active set") != std::string::npos;
+    EXPECT_EQ(reported, *mode != '\0') << mode << ":\n" << result.out;
+    if (reported) {
+      EXPECT_NE(result.out.find("set updates"), std::string::npos) << result.out;
+    }
+  }
+}
+
 TEST(CliTest, QuietSolvePrintsNothing) {
   const TempDir dir;
   const fs::path output = dir / "quiet.h5";
@@ -278,6 +298,10 @@ INSTANTIATE_TEST_SUITE_P(
                  {},
                  {{"--solver", "lcpquad"}, {"--max-iter", "5"}},
                  "--max-iter 5 does not apply to solver 'lcpquad'"},
+        BadInput{"UnknownActiveSet",
+                 {},
+                 {{"--active-set", "yes"}},
+                 "--active-set yes is invalid: allowed values are on, off, automatic"},
         BadInput{"NegativeDeflationBlock", {}, {{"--deflation-block", "-1"}}, "--deflation-block -1 is invalid"},
         BadInput{"DeflationBlockNotDividing", {}, {{"--deflation-block", "12"}}, "it must divide nx and ny"},
         BadInput{"DeflationWithPlainPk",

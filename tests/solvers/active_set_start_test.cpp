@@ -30,9 +30,11 @@ constexpr double kEStar = 1.0;
 // relative to the largest pressure.
 constexpr double kSameSolution = 1e-8;
 
+using ActiveSet = MultilevelOptions::ActiveSet;
+
 SolverOptions settings(bool active_set) {
   SolverOptions s = testing::test_options(SolverType::pk_multilevel, 1e-12);
-  s.multilevel.active_set = active_set;
+  s.multilevel.active_set = active_set ? ActiveSet::on : ActiveSet::off;
   return s;
 }
 
@@ -142,6 +144,72 @@ TEST(ActiveSetStartScopeTest, CappedContactsAndLinesRunPolonskyKeerAlone) {
       make_solver(line, kEStar, settings(true))->solve({line_gap.data(), line.size()}, Loading::mean_pressure(0.01));
   ASSERT_TRUE(one_d.converged()) << one_d.message;
   EXPECT_EQ(one_d.active_set_outer, 0);
+}
+
+// The automatic rule (MultilevelOptions::active_set_applies): on from
+// 4096^2 cells on one process for a homogeneous, uncapped, periodic 2D
+// contact, where it was measured to pay; off below, on free and 1D grids,
+// with a cap, a coating or several processes; on and off as asked, on
+// refused on several processes.
+TEST(ActiveSetRuleTest, AutomaticRunsThePhaseWhereItPays) {
+  MultilevelOptions options;
+  EXPECT_EQ(options.active_set, ActiveSet::automatic);
+  const Grid large = Grid::plane(4096, 4096, 1e-6, 1e-6, Boundary::periodic);
+  const Grid large_free = Grid::plane(4096, 4096, 1e-6, 1e-6, Boundary::free);
+  const Grid oblong = Grid::plane(8192, 2048, 1e-6, 1e-6, Boundary::periodic);
+  const Grid below = Grid::plane(4096, 2048, 1e-6, 1e-6, Boundary::periodic);
+  const Grid small = Grid::plane(256, 256, 1e-6, 1e-6, Boundary::periodic);
+  const Grid line = Grid::line(std::size_t{1} << 24, 1e-6, Boundary::periodic);
+  EXPECT_TRUE(options.active_set_applies(large, false, false, 1));
+  EXPECT_FALSE(options.active_set_applies(large_free, false, false, 1)) << "free grid";
+  EXPECT_TRUE(options.active_set_applies(oblong, false, false, 1));
+  EXPECT_FALSE(options.active_set_applies(below, false, false, 1));
+  EXPECT_FALSE(options.active_set_applies(small, false, false, 1));
+  EXPECT_FALSE(options.active_set_applies(line, false, false, 1));
+  EXPECT_FALSE(options.active_set_applies(large, true, false, 1)) << "hardness cap";
+  EXPECT_FALSE(options.active_set_applies(large, false, true, 1)) << "coating";
+  EXPECT_FALSE(options.active_set_applies(large, false, false, 2)) << "several processes";
+
+  options.active_set = ActiveSet::off;
+  EXPECT_FALSE(options.active_set_applies(large, false, false, 1));
+  EXPECT_FALSE(options.active_set_applies(large, false, false, 2));
+
+  options.active_set = ActiveSet::on;
+  EXPECT_TRUE(options.active_set_applies(small, false, false, 1));
+  EXPECT_TRUE(options.active_set_applies(small, false, true, 1)) << "asked for on a coating";
+  EXPECT_TRUE(options.active_set_applies(large_free, false, false, 1)) << "asked for on a free grid";
+  EXPECT_FALSE(options.active_set_applies(small, true, false, 1)) << "hardness cap";
+  EXPECT_FALSE(options.active_set_applies(line, false, false, 1));
+  try {
+    options.active_set_applies(small, false, false, 2);
+    ADD_FAILURE() << "on accepted on two processes";
+  } catch (const SolverOptionError& error) {
+    EXPECT_EQ(error.option(), "multilevel.active_set");
+    EXPECT_NE(std::string(error.what()).find("several processes"), std::string::npos) << error.what();
+  }
+
+  EXPECT_EQ(parse_active_set("automatic"), ActiveSet::automatic);
+  EXPECT_EQ(to_string(ActiveSet::on), "on");
+  EXPECT_THROW(parse_active_set("yes"), SolverOptionError);
+}
+
+// Below the threshold the default (automatic) is the solve without the
+// phase, product for product; asked for, the phase runs there too.
+TEST(ActiveSetRuleTest, TheDefaultBelowTheThresholdIsTheSolveWithoutThePhase) {
+  const Grid grid = Grid::plane(256, 256, 1.0, 1.0, Boundary::periodic);
+  const Eigen::ArrayXd gap = self_affine_gap(grid, 3);
+  const Loading load = Loading::mean_pressure(0.004);
+  SolverOptions automatic = testing::test_options(SolverType::pk_multilevel, 1e-12);
+  ASSERT_EQ(automatic.multilevel.active_set, ActiveSet::automatic);
+  const SolveResult by_default = make_solver(grid, kEStar, automatic)->solve({gap.data(), grid.size()}, load);
+  const SolveResult off = make_solver(grid, kEStar, settings(false))->solve({gap.data(), grid.size()}, load);
+  const SolveResult on = make_solver(grid, kEStar, settings(true))->solve({gap.data(), grid.size()}, load);
+  ASSERT_TRUE(by_default.converged() && off.converged() && on.converged()) << by_default.message;
+  EXPECT_EQ(by_default.active_set_outer, 0);
+  EXPECT_EQ(by_default.iterations, off.iterations);
+  EXPECT_EQ(by_default.operator_applications, off.operator_applications);
+  EXPECT_EQ(by_default.preconditioner_applications, off.preconditioner_applications);
+  EXPECT_GE(on.active_set_outer, 1);
 }
 
 TEST(ActiveSetOptionsTest, NamesTheOptionItRefuses) {

@@ -42,8 +42,8 @@ AdhesiveSolverOptions adhesive_solver_options(const SolverOptions& options);
 
 // Whether pk-multilevel on `grid` deflates its finest grid: deflation on,
 // or automatic where DeflationOptions::automatic_applies and there is no
-// hardness cap. (With MultilevelOptions::active_set the serial solver
-// also deflates wherever the block covers the grid.)
+// hardness cap. (Where MultilevelOptions::active_set_applies, the solver
+// also deflates from DeflationOptions::kAutomaticWithActiveSetFromCells.)
 bool multilevel_deflates(const Grid& grid, const SolverOptions& options);
 
 }  // namespace halfspace::solvers

@@ -80,18 +80,44 @@ struct MultilevelOptions {
   // within this factor of the start's force; further off, the coarse grids
   // give the better start (docs/solvers.md, warm starts).
   double warm_start_max_load_ratio = 1.5;
-  // The fine grid's solve begins with a primal-dual active-set phase from
-  // the prolonged start (active_set_start.hpp) on 2D grids without a
-  // hardness cap; block deflation then applies from
-  // DeflationOptions::kAutomaticWithActiveSetFromCells on, unless turned off.
-  bool active_set = false;
+  // Whether the fine grid's solve begins with a primal-dual active-set
+  // phase from the prolonged start (active_set_start.hpp); block deflation
+  // then applies from DeflationOptions::kAutomaticWithActiveSetFromCells on,
+  // unless turned off. on: on 2D grids without a hardness cap, on one
+  // process (make_solver refuses it on several); automatic: where
+  // active_set_applies says it pays.
+  enum class ActiveSet { off, on, automatic };
+  ActiveSet active_set = ActiveSet::automatic;
   ActiveSetOptions active_set_options;
+
+  // The automatic rule: the phase cuts the FFT pairs per solve from 1024^2
+  // on, but each of its deflated iterations costs more than a pair, and the
+  // time falls only from this many cells (rough periodic surfaces, 3 seeds:
+  // 1024^2 and 2048^2 4 % more CPU time, 4096^2 7-15 % less, 8192^2 half the
+  // iterations; docs/development-log.md, "the active-set phase made
+  // automatic").
+  static constexpr std::size_t kActiveSetAutomaticFromCells = std::size_t{1} << 24;
+  // Whether the phase runs on the finest grid `grid` of a solve on
+  // `processes` processes: on, or automatic on a periodic grid of at least
+  // kActiveSetAutomaticFromCells cells, one process and a homogeneous
+  // half-space (`coated` false; free grids and coatings were not measured
+  // at that size); never on 1D grids or with a hardness cap (`capped`).
+  // Throws SolverOptionError naming "multilevel.active_set" for on with
+  // several processes.
+  bool active_set_applies(const Grid& grid, bool capped, bool coated, int processes) const;
 
   // Throws SolverOptionError naming the option ("multilevel.coarse_tolerance",
   // ...) unless 0 < coarse_tolerance < 1, min_cells_per_axis >= 2,
   // warm_start_max_load_ratio >= 1 and active_set_options are valid.
   void validate() const;
 };
+
+// "on", "off", "automatic".
+std::string_view to_string(MultilevelOptions::ActiveSet mode);
+// The inverse of to_string(MultilevelOptions::ActiveSet); throws
+// SolverOptionError naming the option "multilevel.active_set", the value and
+// the allowed names otherwise.
+MultilevelOptions::ActiveSet parse_active_set(std::string_view name);
 
 // The coarse-grid correction by block deflation (block_deflation.hpp) of
 // pk_fourier and of pk_multilevel's finest grid; the block size and the
