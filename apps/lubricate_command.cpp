@@ -95,8 +95,14 @@ const std::array kOptions{
                     "pressure at the last x (Pa) [0]"},
     LubricateOption{"side-pressure", &LubricateOptions::side_pressure, Kind::number, kFilm, "PA",
                     "pressure at y = 0 and the last y of a map (Pa) [0]"},
+    LubricateOption{"periodic-x", &LubricateOptions::periodic_x, Kind::flag, kFilm, "",
+                    "the film repeats along x instead of having inlet and outlet pressures (a map; needs fixed "
+                    "sides)"},
     LubricateOption{"periodic-y", &LubricateOptions::periodic_y, Kind::flag, kFilm, "",
                     "the film repeats along y instead of having fixed side pressures"},
+    LubricateOption{"supply-fluid-fraction", &LubricateOptions::supply_fluid_fraction, Kind::number, kFilm, "THETA",
+                    "fluid fraction of the lubricant at the fixed-pressure edges, 0 to 1 (below 1: a starved "
+                    "supply) [1]"},
     LubricateOption{"tolerance", &LubricateOptions::tolerance, Kind::number, kFilm, "TOL",
                     "relative mass residual at convergence [1e-11; 1e-8 for an elastic film]"},
     LubricateOption{"E-star", &LubricateOptions::e_star, Kind::number, kElastic, "PA",

@@ -2,7 +2,8 @@
 // dense one where it fits): Newton steps, GMRES iterations per step,
 // seconds, peak resident bytes per node, and the films against Hamrock &
 // Dowson (1977, k = 1). Usage: ehl_scaling N [gmres|dense] [neighbourhood]
-// [cold] ("cold": no grid sequencing).
+// [cold|sequenced] [tolerance] ("cold": no grid sequencing; the relative
+// mass residual and load error to reach, 1e-8 by default).
 // One solve per process, so that the peak resident size is the solve's.
 #include <fmt/format.h>
 #include <sys/resource.h>
@@ -24,13 +25,14 @@ using bench::kRadius;
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    fmt::print(stderr, "usage: ehl_scaling N [gmres|dense] [neighbourhood] [cold]\n");
+    fmt::print(stderr, "usage: ehl_scaling N [gmres|dense] [neighbourhood] [cold|sequenced] [tolerance]\n");
     return 2;
   }
   const auto n = static_cast<std::size_t>(std::atol(argv[1]));
   const FilmLinearSolve solve = argc > 2 ? parse_film_linear_solve(argv[2]) : FilmLinearSolve::gmres;
   const int neighbourhood = argc > 3 ? std::atoi(argv[3]) : 0;
   const bool sequencing = !(argc > 4 && std::string_view(argv[4]) == "cold");
+  const double tolerance = argc > 5 ? std::atof(argv[5]) : 1e-8;
   const double w = 3e-7, u = 1e-11, g = 5000;
   const double e_prime = 2.0 * kEStar;
   const double load = w * e_prime * kRadius * kRadius;
@@ -42,6 +44,8 @@ int main(int argc, char** argv) {
   const Grid grid = Grid::plane(n, n, dx, dx, Boundary::free);
   FftInfluenceOperator op(grid, kEStar);
   ElasticFilmOptions options{.load = load,
+                             .tolerance = tolerance,
+                             .load_tolerance = tolerance,
                              .linear_solve = solve,
                              .preconditioner_neighbourhood = neighbourhood,
                              .grid_sequencing = sequencing};

@@ -112,6 +112,16 @@ constexpr std::array<double, 2> kStartFilms{0.5, 8.0};
 constexpr double kLargestStep = 0.5;
 // The loosest relative tolerance of a GMRES step (far from the solution).
 constexpr double kLargestForcing = 1e-2;
+// Only nodes exactly on the cavitation switch (s = 0: the dry start's
+// unloaded nodes) take the branch their step goes into; every other node
+// takes the branch of its side, whose derivative is exact for short steps,
+// so that the Newton direction descends. A band around the switch (1e-9 in
+// s before 2026-11-29) is 1e-9 of the pressure scale on the pressure side,
+// which the scaled residual sees 1e5 times more strongly than 1e-9 of
+// theta: a node at p = 2.3e-10 p_scale given the cavitated branch stalled
+// the 1024^2 point contact at a mass residual of 6.65e-6
+// (docs/development-log.md).
+constexpr double kBranchChoiceBand = 0.0;
 
 // The state of the Newton iteration: s and h0, and what follows from them.
 struct State {
@@ -462,7 +472,8 @@ ElasticFilm detail::solve_film_newton(InfluenceOperator& op, const Eigen::ArrayX
             krylov_message = outcome.message;
             return outcome.converged;
           };
-          const bool solved = detail::branch_consistent_step_with(gmres_solve, topology, x.s, step, branch_full);
+          const bool solved =
+              detail::branch_consistent_step_with(gmres_solve, topology, x.s, step, branch_full, kBranchChoiceBand);
           result.krylov_iterations += step_iterations;
           result.max_krylov_iterations_per_step = std::max(result.max_krylov_iterations_per_step, step_iterations);
           if (!solved) {
@@ -472,7 +483,7 @@ ElasticFilm detail::solve_film_newton(InfluenceOperator& op, const Eigen::ArrayX
             break;
           }
         } else if (!detail::branch_consistent_step([&] { measure(x, residual, true); }, topology, x.s, jacobian_t,
-                                                   residual, lu, step, branch_full)) {
+                                                   residual, lu, step, branch_full, kBranchChoiceBand)) {
           result.status = FilmStatus::failure;
           result.message = fmt::format("the EHL Newton step {} is singular", iteration + 1);
           failed = true;

@@ -337,6 +337,18 @@ LubricationProblem make_lubrication_problem(const LubricationProblemOptions& opt
 }
 
 void LubricationProblem::check_grid(const Grid& grid, const OptionSpelling& spelling, std::string_view surface) const {
+  // A film periodic along every axis has no pressure level and no supply:
+  // named here by the options that made it so (FlowConditions::validate
+  // cannot name them).
+  const FlowBoundary& flow = conditions.boundary;
+  const bool y_periodic = grid.dimension() == 1 || flow.y == AxisBoundary::periodic;
+  if (flow.x == AxisBoundary::periodic && y_periodic) {
+    throw InputError(fmt::format(
+        "{}: the film is periodic along every axis: fix the pressures along one axis (a film periodic in every "
+        "direction has no pressure level and no supply)",
+        grid.dimension() == 1 ? fmt::format("{} on a 1D grid", spelling.name("periodic_x"))
+                              : fmt::format("{} with {}", spelling.name("periodic_x"), spelling.name("periodic_y"))));
+  }
   try {
     conditions.validate(grid);
     if (kind != FilmKind::rigid) laws.validate(conditions.viscosity);

@@ -19,14 +19,15 @@
 namespace halfspace::lubrication::detail {
 
 // Nodes within this of the switch s = 0 take the branch their step goes
-// into; the passes that may take.
+// into (the mixed film's band; the EHL film passes its own, 0: see
+// elastic_film.cpp); the passes that may take.
 inline constexpr double kSwitchBand = 1e-9;
 inline constexpr int kBranchPasses = 4;
 
 // One semi-smooth Newton step on the generalised Jacobian's branches
 // (`branch_full[j]`: 1 for the full-film branch of node j): `linearise()`
 // fills `jacobian_t` (J transposed) and `residual` for the current
-// branches; a node at the switch (|s| <= kSwitchBand, as the start's
+// branches; a node at the switch (|s| <= switch_band, as the start's
 // unloaded nodes and an inlet's vanishing pressures) takes the branch the
 // step moves it into, found by re-solving (the directional derivative;
 // Qi & Sun 1993). Returns false when the step is not finite (J singular).
@@ -34,13 +35,14 @@ inline constexpr int kBranchPasses = 4;
 // branches and returns false when it cannot (reported by the caller).
 template <class Solve>
 bool branch_consistent_step_with(Solve&& solve, const ReynoldsStencil& topology, const Eigen::ArrayXd& s,
-                                 const Eigen::VectorXd& step, std::vector<char>& branch_full) {
+                                 const Eigen::VectorXd& step, std::vector<char>& branch_full,
+                                 double switch_band = kSwitchBand) {
   for (int pass = 0; pass < kBranchPasses; ++pass) {
     if (!solve()) return false;
     bool flipped = false;
     for (std::size_t j = 0; j < branch_full.size(); ++j) {
       const auto jj = static_cast<Eigen::Index>(j);
-      if (topology.fixed(j) || std::abs(s[jj]) > kSwitchBand) continue;
+      if (topology.fixed(j) || std::abs(s[jj]) > switch_band) continue;
       const char wanted = step[jj] >= 0.0 ? 1 : 0;
       if (wanted != branch_full[j]) {
         branch_full[j] = wanted;
@@ -56,14 +58,14 @@ template <class Linearise>
 bool branch_consistent_step(Linearise&& linearise, const ReynoldsStencil& topology, const Eigen::ArrayXd& s,
                             const Eigen::MatrixXd& jacobian_t, const Eigen::VectorXd& residual,
                             Eigen::PartialPivLU<Eigen::MatrixXd>& lu, Eigen::VectorXd& step,
-                            std::vector<char>& branch_full) {
+                            std::vector<char>& branch_full, double switch_band = kSwitchBand) {
   const auto dense_solve = [&] {
     linearise();
     lu.compute(jacobian_t.transpose());
     step = lu.solve(-residual);
     return step.allFinite();
   };
-  return branch_consistent_step_with(dense_solve, topology, s, step, branch_full);
+  return branch_consistent_step_with(dense_solve, topology, s, step, branch_full, switch_band);
 }
 
 // The nodes' pressure-dependent coefficients for a film: rho / rho0, eps =

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "halfspace/io/height_map_reader.hpp"
@@ -163,6 +164,55 @@ TEST(LubricateCliTest, RejectsBadInputNamingTheOption) {
                                   "1,2", "--separation", "1e-6", "--output", "f.h5"},
                                  dir.path()),
                      {"--entrainment-velocity 2 m/s (y component) is invalid on a 1D grid"}, dir / "f.h5");
+  expect_input_error(run_program({"lubricate", "--height-map", "c.h5", "--viscosity", "0.1", "--entrainment-velocity",
+                                  "1", "--separation", "1e-6", "--supply-fluid-fraction", "1.5", "--output", "f.h5"},
+                                 dir.path()),
+                     {"--supply-fluid-fraction 1.5 is invalid: allowed range is 0 to 1"}, dir / "f.h5");
+  expect_input_error(run_program({"lubricate", "--height-map", "c.h5", "--viscosity", "0.1", "--entrainment-velocity",
+                                  "1", "--separation", "1e-6", "--periodic-x", "--output", "f.h5"},
+                                 dir.path()),
+                     {"--periodic-x on a 1D grid: the film is periodic along every axis"}, dir / "f.h5");
+}
+
+// A starved supply: the program passes --supply-fluid-fraction to the film
+// (the library's film at the same separation, and less lubricant flows in
+// than with a full supply).
+TEST(LubricateCliTest, StarvedSupplyIsTheLibrarys) {
+  const TempDir dir;
+  ASSERT_EQ(run_program({"generate", "--kind", "cylinder", "--grid", "201", "--size", "8e-4", "--radius", "0.01",
+                         "--output", "cylinder.h5", "--quiet"},
+                        dir.path())
+                .exit_code,
+            kExitOk);
+  const auto run_with = [&](std::string_view supply, std::string_view output) {
+    return run_program(
+        {"lubricate", "--height-map", "cylinder.h5", "--viscosity", "0.1", "--entrainment-velocity", "1",
+         "--separation", "2e-6", "--supply-fluid-fraction", std::string(supply), "--output", std::string(output)},
+        dir.path());
+  };
+  const ProgramRun starved = run_with("0.3", "starved.h5");
+  ASSERT_EQ(starved.exit_code, kExitOk) << starved.err;
+  const ProgramRun flooded = run_with("1", "flooded.h5");
+  ASSERT_EQ(flooded.exit_code, kExitOk) << flooded.err;
+  const test::H5 file = test::open_file(dir / "starved.h5");
+  const std::vector<double> pressure = test::read_dataset<double>(file.get(), "/pressure", H5T_NATIVE_DOUBLE);
+  const double inflow = test::read_double_attribute(file.get(), "inflow");
+  EXPECT_LT(inflow, test::read_double_attribute(test::open_file(dir / "flooded.h5").get(), "inflow"));
+
+  const HeightMap map = io::read_height_map(dir / "cylinder.h5");
+  lubrication::FlowConditions conditions;
+  conditions.viscosity = 0.1;
+  conditions.entrainment_velocity = {1.0, 0.0};
+  conditions.boundary.supply_fluid_fraction = 0.3;
+  const lubrication::LubricatedFilm film =
+      lubrication::lubricate_at_separation(Grid::line(map.nx, map.dx, Boundary::free), map.heights, conditions, 2e-6);
+  ASSERT_EQ(pressure.size(), static_cast<std::size_t>(film.solution.pressure.size()));
+  double worst = 0.0;
+  for (std::size_t i = 0; i < pressure.size(); ++i) {
+    worst = std::max(worst, std::abs(pressure[i] - film.solution.pressure[i]));
+  }
+  EXPECT_GT(film.solution.pressure.maxCoeff(), 0.0);
+  EXPECT_LT(worst, 1e-9 * film.solution.pressure.maxCoeff());
 }
 
 }  // namespace

@@ -7,6 +7,8 @@
 
 #include <functional>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "halfspace/error.hpp"
@@ -16,6 +18,8 @@ namespace halfspace::lubrication {
 namespace {
 
 using Flags = testing::FlagSpelling;  // a program's spelling ("--name value")
+const OptionSpelling kLibrary;
+const Flags kFlags;
 
 LubricationProblemOptions rigid_film() {
   LubricationProblemOptions options;
@@ -219,6 +223,37 @@ TEST(LubricationProblemTest, GridRulesNameTheFlowOptionAndTheSurface) {
     EXPECT_NE(std::string(error.what()).find("pressure_viscosity=0 1/Pa is invalid"), std::string::npos)
         << error.what();
   }
+  // The boundary's options, in both spellings.
+  LubricationProblemOptions starved = rigid_film();
+  starved.supply_fluid_fraction = 1.5;
+  const Grid profile = Grid::line(41, 1e-5, Boundary::free);
+  const Grid map = Grid::plane(9, 9, 1e-5, 1e-5, Boundary::free);
+  LubricationProblemOptions along_x = rigid_film();
+  along_x.periodic_x = true;
+  LubricationProblemOptions both = along_x;
+  both.periodic_y = true;
+  const std::vector<std::tuple<LubricationProblemOptions, Grid, std::string, std::string>> boundaries{
+      {starved, profile, "supply_fluid_fraction=1.5 is invalid: allowed range is 0 to 1",
+       "--supply_fluid_fraction 1.5 is invalid: allowed range is 0 to 1"},
+      {along_x, profile, "periodic_x on a 1D grid: the film is periodic along every axis",
+       "--periodic_x on a 1D grid: the film is periodic along every axis"},
+      {both, map, "periodic_x with periodic_y: the film is periodic along every axis",
+       "--periodic_x with --periodic_y: the film is periodic along every axis"},
+  };
+  for (const auto& [given, grid, library, flags] : boundaries) {
+    for (const auto& [spelling, expected] :
+         std::vector<std::pair<const OptionSpelling*, std::string>>{{&kLibrary, library}, {&kFlags, flags}}) {
+      try {
+        make_lubrication_problem(given, *spelling).check_grid(grid, *spelling);
+        ADD_FAILURE() << expected << ": accepted";
+      } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find(expected), std::string::npos) << error.what();
+      }
+    }
+  }
+  // Periodic along x with fixed sides is a film.
+  EXPECT_NO_THROW(make_lubrication_problem(along_x).check_grid(map));
+
   const LubricationProblem mixed = make_lubrication_problem(mixed_film());
   EXPECT_NO_THROW(mixed.check_grid(Grid::line(kMaxMixedFilmNodes, 1e-6, Boundary::free)));
   try {
