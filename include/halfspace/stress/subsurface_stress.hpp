@@ -113,6 +113,10 @@ class SubsurfaceStress {
   // set_pressure does for each field, and for any shear on a coated
   // half-space (the layered solution is solved for a normal traction only).
   void set_tractions(const SurfaceTractions& tractions);
+  // Whether `tractions` hold a shear on any process (SurfaceTractions::
+  // has_shear, reduced: a process without rows holds empty spans either
+  // way). Collective.
+  bool has_shear(const SurfaceTractions& tractions) const;
   // The checks of set_tractions alone (no transform): what a writer calls
   // before it creates a file.
   void check_tractions(const SurfaceTractions& tractions) const;
