@@ -100,7 +100,7 @@ int run_stress_on_slabs(const std::filesystem::path& path, const std::function<i
                                      const io::StressFileMetadata& metadata) {
     stresses.check_tractions(tractions);  // refused before the file is made
     stress::VonMisesMaximum maximum;
-    mpi::write_file_slabs(world, output, io::stress_file_bound(grid, tractions.has_shear(), depths.size()),
+    mpi::write_file_slabs(world, output, io::stress_file_bound(grid, stresses.has_shear(tractions), depths.size()),
                           [&](const io::Hdf5Node& root_node) {
                             maximum = io::write_stress_file_contents(root_node, stresses, tractions, depths, metadata);
                           });

@@ -366,8 +366,11 @@ void Hdf5Node::write_slab_rows(std::size_t slab, std::size_t first_row, std::spa
   start[1] = first_row;
   extent[0] = 1;
   extent[1] = count;
-  const hsize_t memory_count = std::max<hsize_t>(values.size(), 1);
-  const Dataspace memory_space(H5Screate_simple(1, &memory_count, nullptr));
+  // The memory space shaped like the selection (HDF5's contiguous fast path);
+  // one element, selecting none, for a process without rows.
+  std::vector<hsize_t> memory_extent = extent;
+  if (count == 0) memory_extent.assign(1, 1);
+  const Dataspace memory_space(H5Screate_simple(static_cast<int>(memory_extent.size()), memory_extent.data(), nullptr));
   const herr_t selected = !memory_space.valid() ? -1
                           : count == 0 ? std::min(H5Sselect_none(file_space.get()), H5Sselect_none(memory_space.get()))
                                        : H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start.data(), nullptr,

@@ -45,7 +45,7 @@ stress::VonMisesMaximum write_stress_group(const Hdf5Node& root, stress::Subsurf
   const std::size_t first_row = stresses.rows().first;
   const Hdf5Node group = root.create_group("stress");
   group.write_double_attribute("poisson_ratio", stresses.poisson_ratio());
-  group.write_string_attribute("tractions", tractions.has_shear() ? "pressure and shear" : "pressure");
+  group.write_string_attribute("tractions", stresses.has_shear(tractions) ? "pressure and shear" : "pressure");
   if (const std::optional<LayeredMaterial> coating = stresses.coating()) {
     // Which depths lie in the layer (z <= t), and the constants of each body.
     group.write_double_attribute("layer_thickness", coating->thickness);
@@ -130,7 +130,7 @@ stress::VonMisesMaximum write_stress_file_contents(const Hdf5Node& root, stress:
   root.write_string_attribute("command_line", metadata.command_line);
   root.write_string_attribute("source", metadata.source);
   root.write_dataset_rows("pressure", field_shape(grid), first_row, tractions.pressure, "Pa");
-  if (tractions.has_shear()) {
+  if (stresses.has_shear(tractions)) {
     const std::size_t cells = stresses.local_size();
     const std::vector<double> zero(tractions.shear_x.empty() || tractions.shear_y.empty() ? cells : 0, 0.0);
     root.write_dataset_rows("shear_x", field_shape(grid), first_row,

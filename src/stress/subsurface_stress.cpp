@@ -249,18 +249,28 @@ struct SubsurfaceStress::Impl {
     throw InputError(fmt::format("subsurface stress: {} value {} at index {} is not finite", name, *bad, k));
   }
 
+  // Whether a shear along x and one along y are given on any process: a
+  // process without rows holds empty spans either way.
+  std::array<bool, 2> shears_given(const SurfaceTractions& tractions) const {
+    return {communicator().max(tractions.shear_x.empty() ? 0.0 : 1.0) > 0.0,
+            communicator().max(tractions.shear_y.empty() ? 0.0 : 1.0) > 0.0};
+  }
+
   void check_tractions(const SurfaceTractions& tractions) const {
+    const std::array<bool, 2> shear = shears_given(tractions);
     check_field(tractions.pressure, "pressure");
-    if (!tractions.shear_x.empty()) check_field(tractions.shear_x, "shear traction along x");
-    if (!tractions.shear_y.empty()) check_field(tractions.shear_y, "shear traction along y");
-    if (layered && tractions.has_shear() && !grid.periodic())
+    if (shear[0]) check_field(tractions.shear_x, "shear traction along x");
+    if (shear[1]) check_field(tractions.shear_y, "shear traction along y");
+    if (layered && (shear[0] || shear[1]) && !grid.periodic()) {
       require_coated_shear_stress_grid(grid, layered->material());
+    }
   }
 
   void set_tractions(const SurfaceTractions& tractions) {
     check_tractions(tractions);
     has_pressure = false;
-    active = {true, !tractions.shear_x.empty(), !tractions.shear_y.empty()};
+    const std::array<bool, 2> shear = shears_given(tractions);
+    active = {true, shear[0], shear[1]};
     const std::array<std::span<const double>, kTractionCount> fields = {tractions.pressure, tractions.shear_x,
                                                                         tractions.shear_y};
     for (std::size_t t = 0; t < kTractionCount; ++t) {
@@ -644,6 +654,11 @@ void SubsurfaceStress::set_pressure(std::span<const double> pressure) {
 
 void SubsurfaceStress::set_tractions(const SurfaceTractions& tractions) {
   impl_->set_tractions(tractions);
+}
+
+bool SubsurfaceStress::has_shear(const SurfaceTractions& tractions) const {
+  const std::array<bool, 2> shear = impl_->shears_given(tractions);
+  return shear[0] || shear[1];
 }
 
 void SubsurfaceStress::check_tractions(const SurfaceTractions& tractions) const {

@@ -6,7 +6,8 @@
 // 1e-12 of the serial field's largest magnitude, the largest von Mises stress
 // within 1e-12 relative and at the same cell: on periodic and free grids,
 // under a pressure alone and under a pressure with the shear tractions of a
-// frictional contact, and below a coated body (periodic and free).
+// frictional contact, and below a coated body (periodic and free; with the
+// shear, periodic only); a grid of two rows leaves a process without rows.
 // Exits non-zero on a mismatch, printing it.
 #include <fmt/format.h>
 
@@ -182,7 +183,12 @@ int main(int argc, char** argv) {
         check(grid, std::nullopt, false, world);
         check(grid, std::nullopt, true, world);
         check(grid, coating, false, world);
+        // Shear below a coating: periodic grids only (layered_fourier_shear_stress.hpp).
+        if (boundary == Boundary::periodic) check(grid, coating, true, world);
       }
+      // Two rows: on three processes one holds none (it still takes part in
+      // every transform, reduction and write).
+      check(Grid::plane(24, 2, 5e-6, 4e-6, boundary), std::nullopt, true, world);
     }
     int total = failures;
     MPI_Allreduce(&failures, &total, 1, MPI_INT, MPI_SUM, world.get());

@@ -122,6 +122,10 @@ class SubsurfaceStress {
   // InputError as set_pressure does for each field, and for a shear on a
   // coated half-space on a free grid (require_coated_shear_stress_grid).
   void set_tractions(const SurfaceTractions& tractions);
+  // Whether `tractions` hold a shear on any process (SurfaceTractions::
+  // has_shear, reduced: a process without rows holds empty spans either
+  // way). Collective.
+  bool has_shear(const SurfaceTractions& tractions) const;
   // The checks of set_tractions alone (no transform): what a writer calls
   // before it creates a file.
   void check_tractions(const SurfaceTractions& tractions) const;
