@@ -23,9 +23,6 @@
 #include "tangential_iteration.hpp"
 #include "tangential_projected_gradient.hpp"
 
-#ifndef HOLD_PERIOD
-#define HOLD_PERIOD 5
-#endif
 namespace halfspace::solvers {
 namespace {
 
