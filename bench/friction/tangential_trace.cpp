@@ -73,6 +73,10 @@ void report(const char* name, const TangentialResult& r) {
   fmt::print("{}: {} iterations, {} C products, {} M products, residual {:.3e}, stick {:.4f}, force {:.6g}, {}\n", name,
              r.iterations, r.operator_applications, r.preconditioner_applications, r.residual, r.stick_fraction,
              r.force_x, r.converged() ? "converged" : r.message);
+  fmt::print(
+      "  coarse: {} levels, {} iterations, worth {:.1f} C and {:.1f} M products; all products {:.1f}\n",
+      r.coarse.levels, r.coarse.iterations, r.coarse.operator_work, r.coarse.preconditioner_work,
+      r.operator_applications + r.preconditioner_applications + r.coarse.operator_work + r.coarse.preconditioner_work);
   std::fflush(stdout);
 }
 
