@@ -149,8 +149,8 @@ TEST(RoughFriction, HeldReleasesGiveTheSameStepAsReleasingEveryIteration) {
   }
 }
 
-// The coarse-grid start (the default: the step solved first on the 32^2
-// grid, its fraction q / mu p prolonged) and a start from the previous
+// The coarse-grid start (TangentialOptions::coarse_start: the step solved
+// first on the 32^2 grid, its fraction q / mu p prolonged) and a start from the previous
 // traction reach the same state: both meet the Coulomb conditions by a
 // fresh product and agree on the traction, the approach and the stick set,
 // from rest, on a reversal and under displacement control.

@@ -67,8 +67,11 @@ struct TangentialOptions {
   // axis, to coarse_tolerance), its traction prolonged as the fraction of
   // the disc each coarse cell uses (q / mu p, so that slip directions carry
   // over and the fine start is admissible), as pk-multilevel starts the
-  // normal problem. Serial even grids without a fixed displacement.
-  bool coarse_start = true;
+  // normal problem. Serial even grids without a fixed displacement. Off
+  // by default: at 1024^2 it saves 17 % of a step's products, but at
+  // 2048^2 the fine step from it cycled between the sets for about 80
+  // iterations (docs/development-log.md, 2026-11-29).
+  bool coarse_start = false;
   // Of the coarse solves (the fine one's if tighter), in (0, 1): on the
   // benchmark's 1024^2 contact 1e-2, 1e-3, 1e-4 gave 139, 132, 154 fine
   // products' worth for the first step (docs/development-log.md).
