@@ -155,6 +155,9 @@ const std::array kOptions{
                 "tolerance of the tangential solver's residual (the duality gap of Coulomb's law) [1e-6]"},
     SolveOption{"tangential-max-iter", &SolveOptions::tangential_max_iter, Kind::integer, kFriction, "N",
                 "iteration limit of each tangential step [10000]"},
+    SolveOption{"tangential-release-period", &SolveOptions::tangential_release_period, Kind::integer, kFriction, "N",
+                "tangential conjugate gradients: slipping cells whose slip turned back inward return to the stick "
+                "set only every N iterations, held on their circle between (1: every iteration) [5]"},
     SolveOption{"no-coupling", &SolveOptions::no_coupling, Kind::flag, kFriction, "",
                 "dissimilar bodies (Dundurs' beta != 0): ignore the normal-tangential coupling (the pressure of the "
                 "frictionless solve, for comparison); by default the coupled problem is solved"},

@@ -47,6 +47,7 @@ constexpr std::array kNames{
     ProblemOptionName{"sliding", &P::sliding},
     ProblemOptionName{"tangential_tol", &P::tangential_tol},
     ProblemOptionName{"tangential_max_iter", &P::tangential_max_iter},
+    ProblemOptionName{"tangential_release_period", &P::tangential_release_period},
     ProblemOptionName{"coupling", &P::coupling},
     ProblemOptionName{"normal_load_steps", &P::normal_load_steps},
     ProblemOptionName{"solver", &P::solver},

@@ -12,10 +12,11 @@
 namespace halfspace::detail {
 
 std::string_view friction_name(std::string_view member, const solvers::FrictionOptions& friction) {
-  static constexpr std::array<std::pair<std::string_view, std::string_view>, 4> kMembers{{
+  static constexpr std::array<std::pair<std::string_view, std::string_view>, 5> kMembers{{
       {"sliding", "sliding"},
       {"tolerance", "tangential_tol"},
       {"max_iterations", "tangential_max_iter"},
+      {"release_period", "tangential_release_period"},
       {"normal_load_steps", "normal_load_steps"},
   }};
   if (member == "tangential_load") {
@@ -34,7 +35,8 @@ std::string_view friction_name(std::string_view member, const solvers::FrictionO
 // FrictionOptions::validate(normal), named by the problem's options.
 std::optional<solvers::FrictionOptions> Rules::friction(const solvers::SolverOptions& normal, std::size_t loads) const {
   const Presence tangential = presence({"tangential_force", "tangential_displacement", "sliding"});
-  const Presence settings = presence({"tangential_tol", "tangential_max_iter", "coupling", "normal_load_steps"});
+  const Presence settings =
+      presence({"tangential_tol", "tangential_max_iter", "tangential_release_period", "coupling", "normal_load_steps"});
   const std::string mu = o_.friction ? describe("friction", *o_.friction) : std::string();
   if (!o_.friction) {
     for (const Presence& options : {tangential, settings}) {
@@ -88,6 +90,7 @@ std::optional<solvers::FrictionOptions> Rules::friction(const solvers::SolverOpt
   // Beyond int, a limit is no limit: validate() sees the nearest int.
   const auto clamped = [](long long value) { return static_cast<int>(std::clamp<long long>(value, INT_MIN, INT_MAX)); };
   if (o_.tangential_max_iter) friction.max_iterations = clamped(*o_.tangential_max_iter);
+  if (o_.tangential_release_period) friction.release_period = clamped(*o_.tangential_release_period);
   if (o_.normal_load_steps) friction.normal_load_steps = clamped(*o_.normal_load_steps);
   if (o_.coupling) {
     if (*o_.coupling != "on" && *o_.coupling != "off") {

@@ -168,6 +168,7 @@ TEST(ProblemTest, FrictionIsMadeFromItsOptions) {
   ProblemOptions options = friction_problem();
   options.tangential_tol = 1e-8;
   options.tangential_max_iter = 50;
+  options.tangential_release_period = 3;
   options.coupling = "off";
   options.normal_load_steps = 3;
   const Problem problem = make_problem(options);
@@ -179,6 +180,8 @@ TEST(ProblemTest, FrictionIsMadeFromItsOptions) {
   EXPECT_EQ(problem.friction->history[1].y, 0.5);
   EXPECT_EQ(problem.friction->tolerance, 1e-8);
   EXPECT_EQ(problem.friction->max_iterations, 50);
+  EXPECT_EQ(problem.friction->release_period, 3);
+  EXPECT_EQ(problem.friction->tangential_options().release_period, 3);
   EXPECT_FALSE(problem.friction->coupling);
   EXPECT_EQ(problem.friction->normal_load_steps, 3);
   EXPECT_TRUE(problem.pair->similar());
@@ -223,6 +226,15 @@ TEST(ProblemTest, FrictionRulesNameTheOption) {
   options.tangential_force.reset();
   options.tangential_max_iter = 5;
   EXPECT_EQ(refused(options), "--tangential_max_iter 5 needs --friction MU (the Coulomb friction coefficient)");
+  options.tangential_max_iter.reset();
+  options.tangential_release_period = 2;
+  EXPECT_EQ(refused(options), "--tangential_release_period 2 needs --friction MU (the Coulomb friction coefficient)");
+  EXPECT_EQ(refusal([&] { make_problem(options); }),
+            "tangential_release_period=2 needs friction=MU (the Coulomb friction coefficient)");
+  options = friction_problem();
+  options.tangential_release_period = 0;
+  EXPECT_EQ(refused(options), "--tangential_release_period 0 is invalid: must be at least 1");
+  EXPECT_EQ(refusal([&] { make_problem(options); }), "tangential_release_period=0 is invalid: must be at least 1");
   options = friction_problem();
   options.friction = -0.1;
   EXPECT_TRUE(starts_with(refused(options), "--friction -0.1 is invalid: the friction coefficient mu must be finite"));

@@ -3,7 +3,8 @@
 // rest, then back to 0.25 mu P), traced: the residual of every iteration,
 // the products, the stick fraction. The pressure of the normal solve is
 // kept in a file (the third argument) so that a second run skips it.
-// Usage: tangential_trace N [MAX_ITERATIONS] [PRESSURE_FILE] [EVERY]
+// Usage: tangential_trace N [MAX_ITERATIONS] [PRESSURE_FILE] [EVERY] [coarse]
+// (coarse: TangentialOptions::coarse_start on).
 // One thread; iteration and product counts, not times, are what it is for.
 #include <fmt/format.h>
 
@@ -73,6 +74,10 @@ void report(const char* name, const TangentialResult& r) {
   fmt::print("{}: {} iterations, {} C products, {} M products, residual {:.3e}, stick {:.4f}, force {:.6g}, {}\n", name,
              r.iterations, r.operator_applications, r.preconditioner_applications, r.residual, r.stick_fraction,
              r.force_x, r.converged() ? "converged" : r.message);
+  fmt::print(
+      "  coarse: {} levels, {} iterations, worth {:.1f} C and {:.1f} M products; all products {:.1f}\n",
+      r.coarse.levels, r.coarse.iterations, r.coarse.operator_work, r.coarse.preconditioner_work,
+      r.operator_applications + r.preconditioner_applications + r.coarse.operator_work + r.coarse.preconditioner_work);
   std::fflush(stdout);
 }
 
@@ -81,13 +86,14 @@ void report(const char* name, const TangentialResult& r) {
 int main(int argc, char** argv) {
   try {
     if (argc < 2) {
-      std::fprintf(stderr, "usage: tangential_trace N [MAX_ITERATIONS] [PRESSURE_FILE] [EVERY]\n");
+      std::fprintf(stderr, "usage: tangential_trace N [MAX_ITERATIONS] [PRESSURE_FILE] [EVERY] [coarse]\n");
       return 2;
     }
     const auto n = static_cast<std::size_t>(std::stoul(argv[1]));
     const int cap = argc > 2 ? std::stoi(argv[2]) : 20000;
     const std::string file = argc > 3 ? argv[3] : "";
     const int every = argc > 4 ? std::stoi(argv[4]) : 1;
+    const bool coarse = argc > 5 && std::string(argv[5]) == "coarse";
     set_threads(1);
     const Grid grid = Grid::plane(n, n, kSpacing, kSpacing, Boundary::periodic);
     const ElasticPair pair = ElasticPair::similar(kSteel);
@@ -98,6 +104,7 @@ int main(int argc, char** argv) {
     options.friction_coefficient = kMu;
     options.tolerance = kTolerance;
     options.max_iterations = cap;
+    options.coarse_start = coarse;
     options.progress = [every](int iteration, double residual) {
       if (iteration % every == 0) fmt::print("  {:5d} {:.3e}\n", iteration, residual);
       std::fflush(stdout);

@@ -74,8 +74,8 @@ struct ProblemOptions {
   // Friction (solvers/friction_options.hpp): Coulomb's coefficient mu and
   // exactly one tangential load: steps (x, y) of force (N, N/m in 1D) or of
   // tangential displacement (m), more than one a history applied in order,
-  // or a sliding direction (x, y). The tangential solver's tolerance and
-  // iteration limit; dissimilar bodies: coupling "on" or "off" and the
+  // or a sliding direction (x, y). The tangential solver's tolerance,
+  // iteration limit and release period; dissimilar bodies: coupling "on" or "off" and the
   // normal load's increments.
   std::optional<double> friction;
   std::optional<std::vector<std::array<double, 2>>> tangential_force;
@@ -83,6 +83,7 @@ struct ProblemOptions {
   std::optional<std::vector<double>> sliding;  // (x, y)
   std::optional<double> tangential_tol;
   std::optional<long long> tangential_max_iter;
+  std::optional<long long> tangential_release_period;  // TangentialOptions::release_period
   std::optional<std::string> coupling;
   std::optional<long long> normal_load_steps;
   // The solver (solver_options.hpp) and the threads.

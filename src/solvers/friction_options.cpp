@@ -33,6 +33,7 @@ TangentialOptions FrictionOptions::tangential_options() const {
   options.friction_coefficient = friction_coefficient;
   options.tolerance = tolerance;
   options.max_iterations = max_iterations;
+  options.release_period = release_period;
   return options;
 }
 
@@ -73,6 +74,9 @@ void FrictionOptions::validate() const {
   }
   if (max_iterations < 1) {
     throw SolverOptionError("max_iterations", fmt::format("{}", max_iterations), "is invalid: must be at least 1");
+  }
+  if (release_period < 1) {
+    throw SolverOptionError("release_period", fmt::format("{}", release_period), "is invalid: must be at least 1");
   }
   if (normal_load_steps < 1) {
     throw SolverOptionError("normal_load_steps", fmt::format("{}", normal_load_steps),

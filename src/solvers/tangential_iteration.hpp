@@ -142,9 +142,11 @@ class TangentialIteration {
   // the first step of the 1024^2 benchmark took 69 iterations instead of
   // 104, 512^2 42 instead of 37, 256^2 25 instead of 24: docs/
   // development-log.md.)
-  void start() {
-    const double* px = problem_.previous->shear_x.data();
-    const double* py = problem_.previous->shear_y.data();
+  // From `given`, the traction already in q (the coarse-grid start), in
+  // place of the previous one.
+  void start(bool given = false) {
+    const double* px = given ? f_.qx : problem_.previous->shear_x.data();
+    const double* py = given ? f_.qy : problem_.previous->shear_y.data();
     if (problem_.force_controlled) {
       const auto [held_x, held_y] = sums<2>(comm_, n_, [&](std::size_t i) {
         return radius_[i] > 0.0 ? std::array<double, 2>{px[i], py[i]} : std::array<double, 2>{};

@@ -19,13 +19,11 @@
 
 #include "halfspace/error.hpp"
 #include "halfspace/linalg/parallel.hpp"
+#include "halfspace/solvers/grid_transfer.hpp"
 #include "tangential_conjugate_gradient.hpp"
 #include "tangential_iteration.hpp"
 #include "tangential_projected_gradient.hpp"
 
-#ifndef HOLD_PERIOD
-#define HOLD_PERIOD 5
-#endif
 namespace halfspace::solvers {
 namespace {
 
@@ -73,6 +71,9 @@ void TangentialOptions::validate() const {
   if (release_period < 1) {
     throw InputError(fmt::format("release_period = {} is invalid: must be at least 1", release_period));
   }
+  if (!(coarse_tolerance > 0.0 && coarse_tolerance < 1.0)) {
+    throw InputError(fmt::format("coarse_tolerance = {} is invalid: allowed range is (0, 1)", coarse_tolerance));
+  }
   if (method != TangentialMethod::conjugate_gradient && method != TangentialMethod::projected_gradient) {
     throw InputError(
         fmt::format("tangential method {} is invalid: allowed are conjugate_gradient (0) and "
@@ -95,6 +96,60 @@ TangentialSolver::TangentialSolver(TangentialOperator& op, TangentialOptions opt
 TangentialResult TangentialSolver::solve(std::span<const double> pressure, const TangentialLoading& loading,
                                          const TangentialState& previous) {
   return solve(pressure, loading, previous, {}, {});
+}
+
+bool TangentialSolver::coarse_start(std::span<const double> pressure, const TangentialLoading& loading,
+                                    const TangentialState& previous, CoarseStart& record) {
+  const Grid& grid = op_.grid();
+  const std::optional<Grid> coarse = coarser_grid(grid, kCoarseStartMinCellsPerAxis);
+  if (!coarse) return false;
+  const std::size_t m = coarse->size();
+  const auto cells = static_cast<Eigen::Index>(m);
+  // The coarse contact: block-averaged pressure and previous traction (the
+  // force kept), the previous displacement made by the coarse operator so
+  // that the coarse step starts from rest where the fine one does.
+  Eigen::ArrayXd coarse_pressure(cells);
+  restrict_by_average(grid, pressure, {coarse_pressure.data(), m});
+  TangentialState coarse_previous = TangentialState::unloaded(m);
+  restrict_by_average(grid, {previous.shear_x.data(), grid.size()}, {coarse_previous.shear_x.data(), m});
+  restrict_by_average(grid, {previous.shear_y.data(), grid.size()}, {coarse_previous.shear_y.data(), m});
+  coarse_previous.approach_x = previous.approach_x;
+  coarse_previous.approach_y = previous.approach_y;
+  TangentialOperator coarse_op(*coarse, op_.pair());
+  TangentialResult solved;
+  try {
+    if (coarse_previous.shear_x.matrix().squaredNorm() + coarse_previous.shear_y.matrix().squaredNorm() > 0.0) {
+      coarse_op.apply({coarse_previous.shear_x.data(), m}, {coarse_previous.shear_y.data(), m},
+                      {coarse_previous.displacement_x.data(), m}, {coarse_previous.displacement_y.data(), m});
+      record.operator_work += 0.25;
+    }
+    TangentialOptions options = options_;
+    options.tolerance = std::max(options_.coarse_tolerance, options_.tolerance);
+    options.progress = {};
+    TangentialSolver level(coarse_op, options);
+    solved = level.solve({coarse_pressure.data(), m}, loading, coarse_previous);
+  } catch (const InputError&) {
+    // Checked on the fine grid; the coarse one can differ only by rounding
+    // (a force a hair above the averaged mu P). Go without a start.
+    return false;
+  }
+  const double weight = static_cast<double>(m) / static_cast<double>(grid.size());
+  record.levels += 1 + solved.coarse.levels;
+  record.iterations += solved.iterations + solved.coarse.iterations;
+  record.operator_work += weight * (solved.operator_applications + solved.coarse.operator_work);
+  record.preconditioner_work += weight * (solved.preconditioner_applications + solved.coarse.preconditioner_work);
+  // Only a start: short of its tolerance it still helps, broken down not.
+  if (!(solved.state.shear_x.allFinite() && solved.state.shear_y.allFinite())) return false;
+  const double mu = options_.friction_coefficient;
+  for (Eigen::Index j = 0; j < cells; ++j) {
+    const double radius = mu * coarse_pressure[j];
+    const double inverse = radius > 0.0 ? 1.0 / radius : 0.0;
+    solved.state.shear_x[j] *= inverse;
+    solved.state.shear_y[j] *= inverse;
+  }
+  prolong_constant(grid, {solved.state.shear_x.data(), m}, {tx_.data(), grid.size()});
+  prolong_constant(grid, {solved.state.shear_y.data(), m}, {ty_.data(), grid.size()});
+  return true;
 }
 
 TangentialResult TangentialSolver::solve(std::span<const double> pressure, const TangentialLoading& loading,
@@ -164,7 +219,17 @@ TangentialResult TangentialSolver::solve(std::span<const double> pressure, const
     problem.delta_y = loading.y - previous.approach_y;
   }
 
+  // The coarse-grid start (serial, no fixed part): the fraction of each
+  // disc in tx_, ty_ (workspace not yet in use), before the result's
+  // fields exist, so that the coarse levels do not add to the peak.
+  CoarseStart coarse;
+  const bool serial = comm.size() == 1 && n == grid.size();
+  const bool coarse_started = !sliding && serial && !fixed && options_.coarse_start &&
+                              options_.method == TangentialMethod::conjugate_gradient && mu > 0.0 &&
+                              coarse_start(pressure, loading, previous, coarse);
+
   TangentialResult result;
+  result.coarse = coarse;
   result.friction_coefficient = mu;
   result.dundurs_beta = op_.pair().dundurs_beta();
   result.tolerance = options_.tolerance;
@@ -183,6 +248,13 @@ TangentialResult TangentialSolver::solve(std::span<const double> pressure, const
                 rx_.data(),
                 ry_.data(),
                 kind_.data()};
+  if (coarse_started) {
+    for_each_index(n, [&](std::size_t i) {
+      const auto j = static_cast<Eigen::Index>(i);
+      state.shear_x[j] = tx_[j] * radius_[j];
+      state.shear_y[j] = ty_[j] * radius_[j];
+    });
+  }
   for (Eigen::ArrayXd* field : {&tx_, &ty_, &rx_, &ry_}) field->setZero();
   TangentialIteration it(op_, options_, problem, result, fields);
   ConjugateGradientMethod conjugate_gradient(it);
@@ -221,7 +293,7 @@ TangentialResult TangentialSolver::solve(std::span<const double> pressure, const
     result.status = SolveStatus::converged;
     result.message = "gross sliding: the tangential force equals mu P";
   } else {
-    it.start();
+    it.start(coarse_started);
     bool conjugate = options_.method == TangentialMethod::conjugate_gradient;
     double best = std::numeric_limits<double>::infinity();
     int best_at = 0;

@@ -501,6 +501,10 @@ TEST(FrictionCliTest, RefusalsNameTheOptions) {
       {sphere(16, "bad.h5", {"--friction", "0.3", "--tangential-force", "1", "--tangential-max-iter", "0"}),
        {"--tangential-max-iter 0 is invalid"}},
       {sphere(16, "bad.h5", {"--tangential-max-iter", "5"}), {"--tangential-max-iter 5 needs --friction MU"}},
+      {sphere(16, "bad.h5", {"--friction", "0.3", "--tangential-force", "1", "--tangential-release-period", "0"}),
+       {"--tangential-release-period 0 is invalid: must be at least 1"}},
+      {sphere(16, "bad.h5", {"--tangential-release-period", "2"}),
+       {"--tangential-release-period 2 needs --friction MU"}},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.message.front());

@@ -48,6 +48,9 @@ TEST(FrictionOptions, ValidateNamesTheOption) {
   FrictionOptions loose = history(0.3, {TangentialLoading::force(1.0)});
   loose.tolerance = 1.0;
   EXPECT_EQ(refused_option([&] { loose.validate(); }), "tolerance");
+  FrictionOptions eager = history(0.3, {TangentialLoading::force(1.0)});
+  eager.release_period = 0;
+  EXPECT_EQ(refused_option([&] { eager.validate(); }), "release_period");
 }
 
 TEST(FrictionOptions, RulesOfTheSolve) {

@@ -47,13 +47,15 @@ RoughContact rough_contact() {
 }
 
 TangentialResult step(TangentialOperator& op, solvers::TangentialMethod method, const Eigen::ArrayXd& pressure,
-                      const TangentialLoading& loading, const TangentialState& previous, int release_period = 5) {
+                      const TangentialLoading& loading, const TangentialState& previous, int release_period = 5,
+                      bool coarse_start = true) {
   solvers::TangentialOptions options;
   options.friction_coefficient = kMu;
   options.tolerance = 1e-10;
   options.max_iterations = 50000;
   options.method = method;
   options.release_period = release_period;
+  options.coarse_start = coarse_start;
   TangentialSolver solver(op, options);
   return solver.solve({pressure.data(), op.local_size()}, loading, previous);
 }
@@ -144,6 +146,72 @@ TEST(RoughFriction, HeldReleasesGiveTheSameStepAsReleasingEveryIteration) {
     EXPECT_NEAR(held.stick_fraction, every.stick_fraction, 0.01);
     testing::expect_coulomb_conditions(op, pressure, kMu, previous, held, 1e-6 * scale, 1e-2);
     previous = held.state;
+  }
+}
+
+// The coarse-grid start (TangentialOptions::coarse_start: the step solved
+// first on the 32^2 grid, its fraction q / mu p prolonged) and a start from the previous
+// traction reach the same state: both meet the Coulomb conditions by a
+// fresh product and agree on the traction, the approach and the stick set,
+// from rest, on a reversal and under displacement control.
+TEST(RoughFriction, CoarseStartGivesTheSameStepAsTheFineStart) {
+  const auto [grid, contact] = rough_contact();
+  ASSERT_TRUE(contact.converged());
+  TangentialOperator op(grid, ElasticPair::similar(kSteel));
+  const double limit = kMu * contact.total_force;
+  const Eigen::ArrayXd& pressure = contact.pressure;
+  TangentialState previous = TangentialState::unloaded(grid.size());
+  double first_approach = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    // As the test above: force from rest, reversed, then 30 % of the way
+    // back under displacement control.
+    const double further = previous.approach_x + 0.3 * (first_approach - previous.approach_x);
+    const TangentialLoading loading = k == 0   ? TangentialLoading::force(0.5 * limit, 0.2 * limit)
+                                      : k == 1 ? TangentialLoading::force(0.1 * limit, 0.0)
+                                               : TangentialLoading::displacement(further, previous.approach_y);
+    const TangentialResult coarse =
+        step(op, solvers::TangentialMethod::conjugate_gradient, pressure, loading, previous, 5, true);
+    const TangentialResult fine =
+        step(op, solvers::TangentialMethod::conjugate_gradient, pressure, loading, previous, 5, false);
+    ASSERT_TRUE(coarse.converged()) << coarse.message;
+    ASSERT_TRUE(fine.converged()) << fine.message;
+    EXPECT_EQ(coarse.coarse.levels, 1);  // 64^2 -> 32^2
+    EXPECT_GT(coarse.coarse.iterations, 0);
+    EXPECT_GT(coarse.coarse.operator_work, 0.0);
+    EXPECT_EQ(fine.coarse.levels, 0);
+    const double traction = std::max((coarse.state.shear_x - fine.state.shear_x).abs().maxCoeff(),
+                                     (coarse.state.shear_y - fine.state.shear_y).abs().maxCoeff());
+    const double scale = std::max((coarse.state.displacement_x - previous.displacement_x).abs().maxCoeff(),
+                                  (coarse.state.displacement_y - previous.displacement_y).abs().maxCoeff());
+    std::printf(
+        "rough %zu^2, step %d, coarse / fine start: %d (+%d coarse) / %d iterations, traction difference %.2e mu "
+        "p_max\n",
+        kCells, k + 1, coarse.iterations, coarse.coarse.iterations, fine.iterations,
+        traction / (kMu * pressure.maxCoeff()));
+    EXPECT_LE(traction, 1e-3 * kMu * pressure.maxCoeff());
+    EXPECT_LE(
+        std::hypot(coarse.state.approach_x - fine.state.approach_x, coarse.state.approach_y - fine.state.approach_y),
+        1e-4 * scale);
+    EXPECT_NEAR(coarse.stick_fraction, fine.stick_fraction, 0.01);
+    EXPECT_GT(coarse.stick_fraction, 0.05);  // partial slip: both sets matter
+    EXPECT_LT(coarse.stick_fraction, 0.95);
+    testing::expect_coulomb_conditions(op, pressure, kMu, previous, coarse, 1e-6 * scale, 1e-2);
+    if (k == 0) first_approach = coarse.state.approach_x;
+    previous = coarse.state;
+  }
+}
+
+TEST(RoughFriction, CoarseToleranceOutsideTheUnitIntervalIsRefused) {
+  solvers::TangentialOptions options;
+  options.friction_coefficient = kMu;
+  for (const double tolerance : {0.0, 1.0}) {
+    options.coarse_tolerance = tolerance;
+    try {
+      options.validate();
+      ADD_FAILURE() << "coarse_tolerance " << tolerance << " accepted";
+    } catch (const InputError& error) {
+      EXPECT_NE(std::string(error.what()).find("coarse_tolerance"), std::string::npos) << error.what();
+    }
   }
 }
 

@@ -51,6 +51,10 @@ struct TangentialResult {
   std::vector<double> residual_history;
   int operator_applications = 0;        // products u = C t
   int preconditioner_applications = 0;  // products t = M u (conjugate gradients)
+  // The coarser grids solved first (TangentialOptions::coarse_start): their
+  // iterations, and their products C and M weighted by their cells over
+  // this grid's (the fine products they cost); not in the counts above.
+  CoarseStart coarse;
   double wall_seconds = 0.0;
   // Coupled steps of dissimilar bodies (coupled_step.hpp): the normal and
   // tangential solves alternated, and the last pass's change (zero both

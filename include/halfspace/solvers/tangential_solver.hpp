@@ -62,11 +62,26 @@ struct TangentialOptions {
   // between the sets and the iteration cycles on large rough contacts
   // (docs/development-log.md, "releases held"). >= 1.
   int release_period = 5;
+  // Conjugate gradients: each step is first solved on the grid of twice the
+  // spacing (recursively, down to kCoarseStartMinCellsPerAxis cells per
+  // axis, to coarse_tolerance), its traction prolonged as the fraction of
+  // the disc each coarse cell uses (q / mu p, so that slip directions carry
+  // over and the fine start is admissible), as pk-multilevel starts the
+  // normal problem. Serial even grids without a fixed displacement. Off
+  // by default: at 1024^2 it saves 17 % of a step's products, but at
+  // 2048^2 the fine step from it cycled between the sets for about 80
+  // iterations (docs/development-log.md, 2026-11-29).
+  bool coarse_start = false;
+  // Of the coarse solves (the fine one's if tighter), in (0, 1): on the
+  // benchmark's 1024^2 contact 1e-2, 1e-3, 1e-4 gave 139, 132, 154 fine
+  // products' worth for the first step (docs/development-log.md).
+  double coarse_tolerance = 1e-3;
   // Called once per iteration with (iteration, residual); may be empty or stop the solve.
   ProgressCallback progress;
 
   // Throws InputError naming the option unless mu is finite and >= 0,
-  // 0 < tolerance < 1, max_iterations >= 1 and release_period >= 1.
+  // 0 < tolerance < 1, max_iterations >= 1, release_period >= 1 and
+  // 0 < coarse_tolerance < 1.
   void validate() const;
 };
 
@@ -97,7 +112,17 @@ class TangentialSolver {
 
   const TangentialOptions& options() const { return options_; }
 
+  // No coarse grid is made with fewer cells than this along an axis.
+  static constexpr std::size_t kCoarseStartMinCellsPerAxis = 32;
+
  private:
+  // TangentialOptions::coarse_start: solves the step on the coarser grid
+  // (itself started so) and leaves the prolonged fraction q / mu p in
+  // tx_, ty_; false (and nothing written) if there is no coarser grid or
+  // its solve failed. Adds the coarse work to `record`.
+  bool coarse_start(std::span<const double> pressure, const TangentialLoading& loading, const TangentialState& previous,
+                    CoarseStart& record);
+
   TangentialOperator& op_;
   TangentialOptions options_;
   Eigen::ArrayXd radius_;  // mu p
