@@ -18,6 +18,7 @@
 
 #include "halfspace/kernels/layered_tangential_fourier.hpp"
 #include "halfspace/stress/fourier_shear_stress.hpp"
+#include "support/gauss_legendre.hpp"
 #include "support/layered_navier_solve.hpp"
 
 namespace halfspace::stress {
@@ -219,40 +220,12 @@ TEST(LayeredFourierShearStressTest, AgreesWithADirectSolutionOfNaviersEquations)
   std::printf("coated shear stresses vs Navier solve: worst %.2e (of a unit traction)\n", worst);
 }
 
-// The 16-point Gauss-Legendre rule on [-1, 1] (Newton on P_16).
-struct GaussRule {
-  std::array<double, 16> nodes{};
-  std::array<double, 16> weights{};
-  GaussRule() {
-    constexpr int n = 16;
-    for (int i = 0; i < n; ++i) {
-      double x = std::cos(std::numbers::pi * (i + 0.75) / (n + 0.5));
-      double derivative = 0.0;
-      for (int iteration = 0; iteration < 100; ++iteration) {
-        double p0 = 1.0;
-        double p1 = x;
-        for (int k = 2; k <= n; ++k) {
-          const double p2 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
-          p0 = p1;
-          p1 = p2;
-        }
-        derivative = n * (x * p1 - p0) / (x * x - 1.0);
-        const double step = p1 / derivative;
-        x -= step;
-        if (std::abs(step) < 1e-16) break;
-      }
-      nodes[static_cast<std::size_t>(i)] = x;
-      weights[static_cast<std::size_t>(i)] = 2.0 / ((1.0 - x * x) * derivative * derivative);
-    }
-  }
-};
-
 // u_z(0) = -int_0^inf eps_zz dz (u_z positive into the body, zero at depth),
 // by composite Gauss-Legendre on panels of a quarter decay length, to 60
 // decay lengths below the interface.
 std::complex<double> surface_normal_displacement(const CoatedShear& coated, const LayeredMaterial& material,
                                                  Traction direction, double kx, double ky) {
-  static const GaussRule rule;
+  static const testing::QuadratureRule rule = testing::gauss_legendre(16);
   const double q = std::hypot(kx, ky);
   std::complex<double> sum = 0.0;
   const auto integrate = [&](double from, double to, Body body) {
