@@ -27,6 +27,7 @@
 #include "halfspace/stress/layered_fourier_shear_stress.hpp"
 
 #include <cmath>
+#include <utility>
 
 #include "halfspace/linalg/parallel.hpp"
 
@@ -114,28 +115,20 @@ std::array<std::complex<double>, kComponentCount> layered_shear_stress(Traction 
   return result;
 }
 
-LayeredShearModes::LayeredShearModes(const LayeredMaterial& material, std::span<const double> kx,
-                                     std::span<const double> ky)
-    : modes_(material), antiplane_(material), kx_(kx.begin(), kx.end()), ky_(ky.begin(), ky.end()) {
-  const std::size_t rows = ky_.size();
-  const std::size_t cols = kx_.size();
-  solved_.resize(rows * cols);
-  longitudinal_.resize(rows * cols);
-  transverse_.resize(rows * cols);
-  linalg::for_each_row(rows, cols, [&](std::size_t r) {
-    for (std::size_t c = 0; c < cols; ++c) solved_[r * cols + c] = modes_.solve_shear(std::hypot(kx_[c], ky_[r]));
-  });
+LayeredShearModes::LayeredShearModes(const LayeredMaterial& material, std::vector<double> kx, std::vector<double> ky)
+    : modes_(material), antiplane_(material), kx_(std::move(kx)), ky_(std::move(ky)) {
+  solved_.resize(kx_.size());
+  longitudinal_.resize(kx_.size());
+  transverse_.resize(kx_.size());
+  linalg::for_each_index(kx_.size(),
+                         [&](std::size_t k) { solved_[k] = modes_.solve_shear(std::hypot(kx_[k], ky_[k])); });
 }
 
 void LayeredShearModes::evaluate(double z, Body body) {
-  const std::size_t cols = kx_.size();
-  linalg::for_each_row(ky_.size(), cols, [&](std::size_t r) {
-    for (std::size_t c = 0; c < cols; ++c) {
-      const std::size_t k = r * cols + c;
-      const double q = solved_[k].q;
-      longitudinal_[k] = modes_.profile(solved_[k], z, body);
-      transverse_[k] = q > 0.0 ? antiplane_.profile(q, z, body) : AntiplaneProfile{};
-    }
+  linalg::for_each_index(kx_.size(), [&](std::size_t k) {
+    const double q = solved_[k].q;
+    longitudinal_[k] = modes_.profile(solved_[k], z, body);
+    transverse_[k] = q > 0.0 ? antiplane_.profile(q, z, body) : AntiplaneProfile{};
   });
 }
 

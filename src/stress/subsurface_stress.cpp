@@ -279,7 +279,13 @@ struct SubsurfaceStress::Impl {
       transform_field(fields[t], spectra[t]);
     }
     if (layered && grid.periodic() && (active[1] || active[2]) && !layered_shear) {
-      layered_shear.emplace(layered->material(), kx, ky);
+      std::vector<double> mode_kx(held);
+      std::vector<double> mode_ky(held);
+      for_each_mode([&](std::size_t k, std::size_t r, std::size_t c) {
+        mode_kx[k] = kx[c];
+        mode_ky[k] = ky[r];
+      });
+      layered_shear.emplace(layered->material(), std::move(mode_kx), std::move(mode_ky));
     }
     has_pressure = true;
   }
@@ -373,7 +379,7 @@ struct SubsurfaceStress::Impl {
             const std::complex<double> multiplier =
                 !layered ? fourier_traction_stress_component(kind, traction, kx[c], ky[r], z, decay[k], nu)
                 : traction == Traction::pressure ? layered_stress_component(kind, kx[c], ky[r], profiles[k], body_nu)
-                                                 : layered_shear->component(kind, traction, r, c, body_nu);
+                                                 : layered_shear->component(kind, traction, k, body_nu);
             sum += spectra[t][k] * multiplier;
           }
           spectrum[k] = sum * (cell_x[c] * cell_y[r] * inverse_n);
@@ -580,8 +586,7 @@ struct SubsurfaceStress::Impl {
   std::optional<LayeredFourierStress> layered;
   std::vector<LayeredMode> modes;
   std::vector<AiryProfile> profiles;
-  // ...and under shear, made when a shear is first set (every mode of the
-  // grid, on each process).
+  // ...and under shear, made when a shear is first set (the entries held here).
   std::optional<LayeredShearModes> layered_shear;
   // Free grids: a component's spectrum summed over the tractions, and the
   // quadrant rows (offsets |dj|) evaluated here, each row's slot among them.

@@ -7,7 +7,6 @@
 #include <array>
 #include <complex>
 #include <cstddef>
-#include <span>
 #include <vector>
 
 #include "halfspace/layered_material.hpp"
@@ -64,23 +63,21 @@ std::array<std::complex<double>, kComponentCount> layered_shear_stress(Traction 
                                                                        const AiryProfile& longitudinal,
                                                                        const AntiplaneProfile& transverse, double nu);
 
-// The shear multipliers of a periodic grid's half spectrum (SubsurfaceStress
-// below a coating): each mode's in-plane solution, solved once (kx.size()
-// columns by ky.size() rows, wavenumbers in rad/m), and per depth each
-// mode's in-plane and antiplane profiles; about 120 bytes per mode.
+// The shear multipliers of the spectrum entries a periodic grid holds here
+// (SubsurfaceStress below a coating; on slabs, this process's entries):
+// entry k's wavenumbers kx[k], ky[k] (rad/m), its in-plane solution solved
+// once, and per depth its in-plane and antiplane profiles; about 120 bytes
+// per entry.
 class LayeredShearModes {
  public:
-  LayeredShearModes(const LayeredMaterial& material, std::span<const double> kx, std::span<const double> ky);
+  LayeredShearModes(const LayeredMaterial& material, std::vector<double> kx, std::vector<double> ky);
 
   // The profiles at depth z (m) in `body`, for component().
   void evaluate(double z, Body body);
   // The multiplier of `component` under a unit shear along `direction` for
-  // the mode (row, col) at the last evaluated depth, nu that body's.
-  std::complex<double> component(Component component, Traction direction, std::size_t row, std::size_t col,
-                                 double nu) const {
-    const std::size_t k = row * kx_.size() + col;
-    return layered_shear_stress_component(component, direction, kx_[col], ky_[row], longitudinal_[k], transverse_[k],
-                                          nu);
+  // entry k at the last evaluated depth, nu that body's.
+  std::complex<double> component(Component component, Traction direction, std::size_t k, double nu) const {
+    return layered_shear_stress_component(component, direction, kx_[k], ky_[k], longitudinal_[k], transverse_[k], nu);
   }
 
  private:
