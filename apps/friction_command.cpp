@@ -149,6 +149,7 @@ int run_frictional_solve(const SolveSetup& setup, const SolvePlace& place) {
   activity.emplace(fmt::format("computing the statistics of the {} grid", setup.grid.shape_string()));
   io::ResultMetadata metadata = place.metadata();
   metadata.coating = setup.coating;
+  metadata.bodies = setup.pair;
   metadata.contact_statistics = place.contact_statistics(normal);
   activity.emplace(fmt::format("writing {}", setup.output.string()));
   if (history) {
@@ -158,26 +159,19 @@ int run_frictional_solve(const SolveSetup& setup, const SolvePlace& place) {
     if (!result.steps.empty()) metadata.tangential = &result.steps.front();
     // Subsurface stresses (--stress-depths) under the pressure and the step's
     // shear, written while the result is (on several processes each its rows).
-    // A coated body is body 1: its stresses take the traction on it, -q.
+    // Body 1 (a coated body, or --stress-body 1) takes the traction on it, -q.
     std::unique_ptr<stress::SubsurfaceStress> stresses;
     std::array<std::vector<double>, 2> body1_shear;
     if (!setup.stress_depths.empty() && !result.steps.empty()) {
       stresses = setup.coating ? std::make_unique<stress::SubsurfaceStress>(setup.grid, *setup.coating, place.layout,
                                                                             setup.solver.fft_planning)
-                               : std::make_unique<stress::SubsurfaceStress>(setup.grid, setup.stress_nu, place.layout,
-                                                                            setup.solver.fft_planning);
+                               : std::make_unique<stress::SubsurfaceStress>(setup.grid, setup.stress_body.poisson_ratio,
+                                                                            place.layout, setup.solver.fft_planning);
       const TangentialResult& step = result.steps.front();
       const std::size_t cells = stresses->local_size();
-      std::span<const double> shear_x(step.state.shear_x.data(), cells);
-      std::span<const double> shear_y(step.state.shear_y.data(), cells);
-      if (setup.coating) {
-        body1_shear = {std::vector<double>(shear_x.begin(), shear_x.end()),
-                       std::vector<double>(shear_y.begin(), shear_y.end())};
-        for (std::vector<double>& shear : body1_shear) stress::make_traction_on_body1(shear);
-        shear_x = body1_shear[0];
-        shear_y = body1_shear[1];
-      }
-      const stress::SurfaceTractions tractions{{normal.pressure.data(), cells}, shear_x, shear_y};
+      const stress::SurfaceTractions on_body2{
+          {normal.pressure.data(), cells}, {step.state.shear_x.data(), cells}, {step.state.shear_y.data(), cells}};
+      const stress::SurfaceTractions tractions = stress::tractions_on(setup.stress_body.body, on_body2, body1_shear);
       metadata.extra_groups = [&stresses, &setup, tractions](const io::Hdf5Node& root) {
         io::write_stress_group(root, *stresses, tractions, setup.stress_depths);
       };

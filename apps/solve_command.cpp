@@ -81,6 +81,7 @@ int run_solve_at(const SolveSetup& setup, const SolvePlace& place) {
   activity.emplace(fmt::format("computing the statistics of the {} grid", setup.grid.shape_string()));
   io::ResultMetadata metadata = place.metadata();
   metadata.coating = setup.coating;
+  metadata.bodies = setup.pair;
   metadata.contact_statistics = place.contact_statistics(result);
   // Subsurface stresses (--stress-depths), computed depth by depth while the
   // result's /stress group is written (on several processes each its rows).
@@ -88,11 +89,12 @@ int run_solve_at(const SolveSetup& setup, const SolvePlace& place) {
   if (!setup.stress_depths.empty()) {
     stresses = setup.coating ? std::make_unique<stress::SubsurfaceStress>(setup.grid, *setup.coating, place.layout,
                                                                           setup.solver.fft_planning)
-                             : std::make_unique<stress::SubsurfaceStress>(setup.grid, setup.stress_nu, place.layout,
-                                                                          setup.solver.fft_planning);
+                             : std::make_unique<stress::SubsurfaceStress>(setup.grid, setup.stress_body.poisson_ratio,
+                                                                          place.layout, setup.solver.fft_planning);
     const std::span<const double> pressure(result.pressure.data(), static_cast<std::size_t>(result.pressure.size()));
-    metadata.extra_groups = [&stresses, &setup, pressure](const io::Hdf5Node& root) {
-      io::write_stress_group(root, *stresses, pressure, setup.stress_depths);
+    const stress::SurfaceTractions tractions{pressure, {}, {}, setup.stress_body.body};
+    metadata.extra_groups = [&stresses, &setup, tractions](const io::Hdf5Node& root) {
+      io::write_stress_group(root, *stresses, tractions, setup.stress_depths);
     };
     metadata.extra_groups_bytes = io::stress_group_bound(setup.grid, setup.stress_depths.size());
     activity.emplace(fmt::format("computing stresses at {} depths and writing {}", setup.stress_depths.size(),

@@ -123,7 +123,10 @@ const std::array kOptions{
                 "also write the stresses below the contact at these depths (m, > 0): z1,z2,... or COUNT evenly "
                 "spaced from START to STOP"},
     SolveOption{"stress-nu", &SolveOptions::stress_nu, Kind::number, kStress, "NU",
-                "Poisson's ratio of the body whose stresses are wanted [nu1 when --nu1 and --nu2 are equal]"},
+                "Poisson's ratio of the body whose stresses are wanted [that body's, from E1, nu1, E2, nu2]"},
+    SolveOption{"stress-body", &SolveOptions::stress_body, Kind::text, kStress, "1|2",
+                "whose stresses: body 1 takes the shear traction -q, body 2 q [the one that deforms: 1 when coated "
+                "or E2 = inf, else 2]"},
     // Adhesion.
     SolveOption{"adhesion", &SolveOptions::adhesion, Kind::text, kAdhesion, "LAW",
                 "cohesive law: md (Maugis-Dugdale: stress sigma0 = w/h0 where 0 <= gap < h0) or exponential "

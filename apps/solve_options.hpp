@@ -44,6 +44,7 @@ struct SolveOptions : GivenOptions, ProblemOptions {
   // Subsurface stresses written into the result (docs/usage.md#stress).
   std::optional<std::string> stress_depths;  // "z1,z2,..." or "START:STOP:COUNT" (m), as written
   std::optional<double> stress_nu;
+  std::optional<std::string> stress_body;  // "1" or "2"
   // Friction's tangential load steps as written ("QX[,QY];..." or ranges,
   // parsed into ProblemOptions' tangential_force and tangential_displacement
   // by problem_options), and --no-coupling (ProblemOptions' coupling "off");

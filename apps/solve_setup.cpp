@@ -31,6 +31,7 @@
 #include "halfspace/physical_ranges.hpp"
 #include "halfspace/solvers/frictional_solve.hpp"
 #include "halfspace/stress/stress_volume.hpp"
+#include "halfspace/stress/stressed_body.hpp"
 #include "halfspace/stress/subsurface_stress.hpp"
 #include "halfspace/surface/padding.hpp"
 #include "halfspace/surface/preparation.hpp"
@@ -363,17 +364,18 @@ Surface height_map_surface(const SolveOptions& o, Boundary boundary, const GridC
   return {std::move(grid), std::move(map.heights), std::move(source), std::move(map.preparation), first_row, rows};
 }
 
-// Subsurface stresses (--stress-depths, --stress-nu): the depths and Poisson's
-// ratio, or none. Poisson's ratio is --stress-nu, else nu1 when the two bodies'
-// are equal (E* alone does not fix it).
+// Subsurface stresses (--stress-depths, --stress-body, --stress-nu): the
+// depths and whose stresses with which Poisson's ratio (the library's rule,
+// stress/stressed_body.hpp), or none.
 struct StressRequest {
   std::vector<double> depths;
-  double nu = 0.0;
+  stress::StressedBodyChoice body;
 };
 
-StressRequest stress_request_from(const SolveOptions& o, std::size_t load_steps, bool coated) {
+StressRequest stress_request_from(const SolveOptions& o, std::size_t load_steps, const Problem& problem) {
   if (!o.stress_depths) {
     if (o.stress_nu) throw InputError(fmt::format("{} needs --stress-depths", o.describe("stress-nu")));
+    if (o.stress_body) throw InputError(fmt::format("{} needs --stress-depths", o.describe("stress-body")));
     return {};
   }
   if (load_steps > 1) {
@@ -384,32 +386,31 @@ StressRequest stress_request_from(const SolveOptions& o, std::size_t load_steps,
   StressRequest request;
   const std::string what = o.describe("stress-depths");
   request.depths = range ? parse_depth_range(*o.stress_depths, what) : parse_depth_list(*o.stress_depths, what);
-  if (coated) {
+  if (problem.coating && o.stress_nu) {
     // Each body's own Poisson's ratio: --layer-nu and --substrate-nu.
-    if (o.stress_nu) {
-      throw InputError(fmt::format(
-          "{} is not used for a coated half-space: the stresses take --layer-nu in the layer and --substrate-nu "
-          "below it; drop --stress-nu",
-          o.describe("stress-nu")));
-    }
-  } else if (o.stress_nu) {
-    request.nu = parse_stress_poisson_ratio(fmt::format("{}", *o.stress_nu), "--stress-nu");
-  } else if (o.nu1 && o.nu2 && *o.nu1 == *o.nu2) {
-    request.nu = parse_stress_poisson_ratio(fmt::format("{}", *o.nu1), "--nu1");
-  } else {
-    throw InputError(missing_poisson_ratio_message("--stress-nu") + " (or equal --nu1 and --nu2)");
+    throw InputError(fmt::format(
+        "{} is not used for a coated half-space: the stresses take --layer-nu in the layer and --substrate-nu "
+        "below it; drop --stress-nu",
+        o.describe("stress-nu")));
   }
+  const std::optional<stress::StressedBody> body =
+      o.stress_body ? std::optional(stress::parse_stressed_body(*o.stress_body, "--stress-body")) : std::nullopt;
+  const std::optional<ElasticPair> bodies =
+      problem.coating ? std::optional(ElasticPair::coated(*problem.coating)) : problem.pair;
+  request.body = stress::choose_stressed_body(body, o.stress_nu, bodies, "--stress-body", "--stress-nu");
   return request;
 }
 
 // The peak while the stresses are computed and written after the solve: the
 // heights and the result's fields (5 arrays) kept, the transforms and one
 // depth's fields (the depths are computed and written one at a time).
-// With friction, the shear tractions' transforms too and, below a coating,
-// the coated body's tractions (-q, stress::make_traction_on_body1).
-double stress_peak_memory(const Grid& grid, std::size_t depth_count, bool coated, bool shear) {
+// With friction, the shear tractions' transforms too and, for body 1 (a
+// coated body, or --stress-body 1), its tractions (-q, stress::tractions_on).
+double stress_peak_memory(const Grid& grid, const StressRequest& stress, bool coated, bool shear) {
+  const std::size_t depth_count = stress.depths.size();
   if (depth_count == 0) return 0.0;
-  const double body1_shear = coated && shear ? 16.0 * static_cast<double>(grid.size()) : 0.0;
+  const bool body1 = stress.body.body == stress::StressedBody::body1;
+  const double body1_shear = body1 && shear ? 16.0 * static_cast<double>(grid.size()) : 0.0;
   return kProgramBytes + 6.0 * 8.0 * static_cast<double>(grid.size()) + body1_shear +
          stress::stress_memory_estimate(grid, coated, shear);
 }
@@ -437,17 +438,16 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
       in_context(options.name("boundary"), [&] { return parse_boundary(options.boundary.value_or("free")); });
   fs::path output = output_from(options);
   const std::optional<MemoryLimit> limit = memory_limit(options.max_memory, options.describe("max-memory"));
-  const StressRequest stress = stress_request_from(options, load_values.size(), coating.has_value());
+  const StressRequest stress = stress_request_from(options, load_values.size(), problem);
   // Friction (--friction with a tangential load), checked by make_problem.
   const std::optional<solvers::FrictionOptions> friction = friction_from(options, problem);
   const std::size_t history_steps = friction ? friction->steps() : 0;
   const GridCheck check_grid = [&](const Grid& grid, const std::string& request) {
     problem.check_grid(grid, flags);
     const std::string what = fmt::format("{}: {}", request, solve_description(grid, solver, load_values.size()));
-    const double estimate =
-        std::max(solve_memory_estimate(grid, solver, load_values.size()),
-                 stress_peak_memory(grid, stress.depths.size(), coating.has_value(), friction.has_value())) +
-        (friction ? solvers::friction_memory_estimate(grid, history_steps) : 0.0);
+    const double estimate = std::max(solve_memory_estimate(grid, solver, load_values.size()),
+                                     stress_peak_memory(grid, stress, coating.has_value(), friction.has_value())) +
+                            (friction ? solvers::friction_memory_estimate(grid, history_steps) : 0.0);
     if (share.check_memory) {
       // A process holding some rows runs the distributed solve (what is not
       // distributed is refused on several processes before it starts); a
@@ -462,9 +462,8 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
                                                          static_cast<double>(rows) / static_cast<double>(all_rows)
                                                    : 0.0;
             // The stresses' transforms and one depth's fields too (computed after the solve).
-            const double stress_share =
-                stress_peak_memory(grid, stress.depths.size(), coating.has_value(), friction.has_value()) *
-                static_cast<double>(rows) / static_cast<double>(all_rows);
+            const double stress_share = stress_peak_memory(grid, stress, coating.has_value(), friction.has_value()) *
+                                        static_cast<double>(rows) / static_cast<double>(all_rows);
             return std::max(slab_solve_memory_estimate(grid, solver, rows, load_values.size()), stress_share) +
                    friction_share;
           },
@@ -504,7 +503,6 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
     });
   }
   // Its rules on the grid are check_grid's (Problem::check_grid).
-  const std::optional<ElasticPair> pair = friction ? problem.pair : std::nullopt;
   const std::size_t first_row = surface.first_row;
   return SolveSetup{std::move(problem),
                     std::move(surface.grid),
@@ -518,9 +516,8 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
                     options.config_text,
                     options.plot,
                     stress.depths,
-                    stress.nu,
-                    friction,
-                    pair};
+                    stress.body,
+                    friction};
 }
 
 std::string coating_text(const LayeredMaterial& coating) {

@@ -17,6 +17,7 @@
 #include "halfspace/problem.hpp"
 #include "halfspace/solvers/contact_solver.hpp"
 #include "halfspace/solvers/friction_options.hpp"
+#include "halfspace/stress/stressed_body.hpp"
 #include "memory_check.hpp"
 #include "solve_options.hpp"
 
@@ -40,12 +41,10 @@ struct SolveSetup : Problem {
   bool plot = false;  // draw figures with the plotting tool after writing
   // Subsurface stresses to write into the result: none when empty.
   std::vector<double> stress_depths;  // m
-  double stress_nu = 0.0;
+  stress::StressedBodyChoice stress_body;
   // Friction (--friction with --tangential-force, --tangential-displacement
-  // or --sliding): the tangential steps and the pair of bodies (E1, nu1, E2,
-  // nu2), both set or neither.
+  // or --sliding): the tangential steps (the bodies are Problem::pair).
   std::optional<solvers::FrictionOptions> friction;
-  std::optional<ElasticPair> pair;
 };
 
 // "t = 1e-06 m, layer E1 = 3e+09 Pa, nu1 = 0.35 on substrate E2 = ... (E* is the layer's)".

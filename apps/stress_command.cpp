@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -19,6 +20,7 @@
 #include "halfspace/memory_estimate.hpp"
 #include "halfspace/physical_ranges.hpp"
 #include "halfspace/stress/stress_volume.hpp"
+#include "halfspace/stress/stressed_body.hpp"
 #include "halfspace/stress/subsurface_stress.hpp"
 #include "halfspace/threads.hpp"
 #include "halfspace/version.hpp"
@@ -35,6 +37,7 @@ struct StressOptions {
   std::optional<std::string> depths;
   std::optional<std::string> depth_range;
   std::optional<std::string> nu;
+  std::optional<std::string> body;
   std::optional<std::string> output;
   std::optional<std::string> max_memory;
   std::optional<std::string> threads;
@@ -54,7 +57,7 @@ int threads_from(const std::optional<std::string>& text) {
 // checking the options against the result (every process alike).
 int stresses_at(StressPlace& place, const StressOptions& o, const std::vector<double>& depths,
                 const std::vector<std::string>& argv) {
-  const double given_nu = o.nu ? parse_stress_poisson_ratio(*o.nu, "--nu") : 0.0;
+  const std::optional<double> given_nu = o.nu ? std::optional(parse_stress_poisson_ratio(*o.nu, "--nu")) : std::nullopt;
   const std::string& output = *o.output;
   io::ResultPressure& input = place.input;
   const Grid& grid = input.grid;
@@ -76,7 +79,6 @@ int stresses_at(StressPlace& place, const StressOptions& o, const std::vector<do
         *o.nu, o.result, format_number(coating->layer.poissons_ratio),
         format_number(coating->substrate.poissons_ratio)));
   }
-  if (!coating && !o.nu) throw InputError(missing_poisson_ratio_message("--nu"));
   if (coating) {
     try {
       stress::require_coated_stress_grid(grid, *coating);
@@ -85,7 +87,15 @@ int stresses_at(StressPlace& place, const StressOptions& o, const std::vector<do
       throw InputError(fmt::format("{} is a coated half-space's result: {}", o.result, error.what()));
     }
   }
-  const double nu = coating ? coating->layer.poissons_ratio : given_nu;
+  // Whose stresses (the file's bodies or coating give the default and the
+  // Poisson's ratio, stress/stressed_body.hpp).
+  const std::optional<stress::StressedBody> requested =
+      o.body ? std::optional(stress::parse_stressed_body(*o.body, "--body")) : std::nullopt;
+  const std::optional<ElasticPair> bodies = coating ? std::optional(ElasticPair::coated(*coating)) : input.bodies;
+  const stress::StressedBodyChoice body = in_context(fmt::format("result file '{}'", o.result), [&] {
+    return stress::choose_stressed_body(requested, given_nu, bodies, "--body", "--nu");
+  });
+  const double nu = body.poisson_ratio;
   // The pressure (and shear tractions) read twice (reader and field), the
   // transforms and one depth's fields: the depths are computed and written
   // one at a time.
@@ -93,7 +103,7 @@ int stresses_at(StressPlace& place, const StressOptions& o, const std::vector<do
   // On several processes each holds its share of the fields and transforms
   // (the first process has read the whole result besides, and freed it).
   const double share = static_cast<double>(input.pressure.size()) / static_cast<double>(grid.size());
-  const double estimate = kProgramBytes + share * ((shear ? 48.0 : 16.0) * static_cast<double>(grid.size()) +
+  const double estimate = kProgramBytes + share * ((shear ? 64.0 : 16.0) * static_cast<double>(grid.size()) +
                                                    stress::stress_memory_estimate(grid, coating.has_value(), shear));
   const std::string what = o.max_memory ? fmt::format("--max-memory {}", *o.max_memory) : "--max-memory";
   place.agree([&] {
@@ -110,13 +120,11 @@ int stresses_at(StressPlace& place, const StressOptions& o, const std::vector<do
     std::unique_ptr<stress::SubsurfaceStress> stresses =
         coating ? std::make_unique<stress::SubsurfaceStress>(grid, *coating, place.layout)
                 : std::make_unique<stress::SubsurfaceStress>(grid, nu, place.layout);
-    // A coated result's body is body 1 (ElasticPair::coated): its stresses
-    // take the traction on it, -q of the file's /shear_x, /shear_y.
-    if (coating) {
-      stress::make_traction_on_body1(input.shear_x);
-      stress::make_traction_on_body1(input.shear_y);
-    }
-    const stress::SurfaceTractions tractions{input.pressure, input.shear_x, input.shear_y};
+    // Body 1 (a coated result's body, ElasticPair::coated) takes the
+    // traction on it, -q of the file's /shear_x, /shear_y.
+    std::array<std::vector<double>, 2> body1_shear;
+    const stress::SurfaceTractions tractions =
+        stress::tractions_on(body.body, {input.pressure, input.shear_x, input.shear_y}, body1_shear);
     maximum = place.write_file(output, *stresses, tractions, depths, {o.result, join_command_line(argv)});
   }
   if (!o.quiet && place.first) {
@@ -125,11 +133,11 @@ int stresses_at(StressPlace& place, const StressOptions& o, const std::vector<do
     };
     fmt::print("halfspace {} ({}) stress\n", kVersion, kGitHash);
     row("result", o.result);
-    row("grid", coating
-                    ? fmt::format("{} ({}), coated: layer t = {:.6g} m, nu1 = {}; substrate nu2 = {}",
-                                  grid.shape_string(), to_string(grid.boundary()), coating->thickness,
-                                  coating->layer.poissons_ratio, coating->substrate.poissons_ratio)
-                    : fmt::format("{} ({}), Poisson's ratio {}", grid.shape_string(), to_string(grid.boundary()), nu));
+    row("grid", coating ? fmt::format("{} ({}), coated: layer t = {:.6g} m, nu1 = {}; substrate nu2 = {}",
+                                      grid.shape_string(), to_string(grid.boundary()), coating->thickness,
+                                      coating->layer.poissons_ratio, coating->substrate.poissons_ratio)
+                        : fmt::format("{} ({}), body {}, Poisson's ratio {}", grid.shape_string(),
+                                      to_string(grid.boundary()), stress::body_number(body.body), nu));
     row("tractions", shear ? "pressure and shear (/shear_x, /shear_y)" : "pressure");
     row("depths", fmt::format("{} from {:.6g} m to {:.6g} m", depths.size(), depths.front(), depths.back()));
     const auto& m = maximum;
@@ -161,13 +169,6 @@ int run_stress(const StressOptions& o, const std::vector<std::string>& argv) {
 }
 
 }  // namespace
-
-std::string missing_poisson_ratio_message(std::string_view option) {
-  return fmt::format(
-      "no Poisson's ratio given: pass {} NU, the Poisson's ratio of the body whose stresses are wanted (E* alone "
-      "does not fix it; -1 < NU <= 0.5)",
-      option);
-}
 
 double parse_stress_poisson_ratio(const std::string& text, std::string_view option) {
   const std::string what = fmt::format("{} {}", option, text);
@@ -244,8 +245,13 @@ Command add_stress_command(CLI::App& program) {
   command
       ->add_option("--nu", o->nu,
                    "Poisson's ratio of the body whose stresses are wanted, -1 < NU <= 0.5 (required, except for "
-                   "a coated result, which records its own)")
+                   "a result that records its bodies or coating)")
       ->type_name("NU");
+  command
+      ->add_option("--body", o->body,
+                   "whose stresses: body 1 takes the shear traction -q, body 2 q [the one that deforms: 1 for a "
+                   "coated result or a rigid body 2, else 2]")
+      ->type_name("1|2");
   command->add_option("--output", o->output, "the stress file (HDF5), required; replaced if it exists")
       ->type_name("FILE");
   command->add_option("--max-memory", o->max_memory, "refuse to start above this estimated peak memory [available]")

@@ -31,7 +31,4 @@ std::vector<double> parse_depth_range(const std::string& text, const std::string
 // unless -1 < nu <= 0.5.
 double parse_stress_poisson_ratio(const std::string& text, std::string_view option);
 
-// The message when Poisson's ratio is missing.
-std::string missing_poisson_ratio_message(std::string_view option);
-
 }  // namespace halfspace::app

@@ -123,6 +123,7 @@ int run_sweep_at(const SolveSetup& setup, const SolvePlace& place) {
 
   io::ResultMetadata metadata = place.metadata();
   metadata.coating = setup.coating;
+  metadata.bodies = setup.pair;
   place.write_sweep(steps, metadata);
   int code = kExitOk;
   place.agree([&] {

@@ -5,6 +5,7 @@
 // result and fails alike.
 #include "mpi_stress.hpp"
 
+#include <algorithm>
 #include <array>
 #include <optional>
 #include <utility>
@@ -22,22 +23,30 @@
 namespace halfspace::app {
 namespace {
 
-// The coating and whether the result has shear, from the first process to
-// every process.
+// The coating, both bodies and whether the result has shear, from the first
+// process to every process.
 void broadcast_details(const mpi::MpiCommunicator& world, std::optional<io::ResultPressure>& whole,
-                       std::optional<LayeredMaterial>& coating, bool& shear) {
-  // has coating, t, E1, nu1, E2, nu2, has shear
-  std::array<double, 7> details{};
+                       std::optional<LayeredMaterial>& coating, std::optional<ElasticPair>& bodies, bool& shear) {
+  // has coating, t, E1, nu1, E2, nu2, has shear, has bodies, E1, nu1, E2, nu2
+  std::array<double, 12> details{};
   if (whole) {
+    if (whole->bodies) {
+      const ElasticPair& b = *whole->bodies;
+      details[7] = 1.0;
+      details[8] = b.body1().youngs_modulus;
+      details[9] = b.body1().poissons_ratio;
+      details[10] = b.body2().youngs_modulus;
+      details[11] = b.body2().poissons_ratio;
+    }
     if (whole->coating) {
       const LayeredMaterial& c = *whole->coating;
-      details = {1.0,
-                 c.thickness,
-                 c.layer.youngs_modulus,
-                 c.layer.poissons_ratio,
-                 c.substrate.youngs_modulus,
-                 c.substrate.poissons_ratio,
-                 0.0};
+      const std::array<double, 6> constants{1.0,
+                                            c.thickness,
+                                            c.layer.youngs_modulus,
+                                            c.layer.poissons_ratio,
+                                            c.substrate.youngs_modulus,
+                                            c.substrate.poissons_ratio};
+      std::copy(constants.begin(), constants.end(), details.begin());
     }
     details[6] = whole->has_shear() ? 1.0 : 0.0;
   }
@@ -46,6 +55,7 @@ void broadcast_details(const mpi::MpiCommunicator& world, std::optional<io::Resu
     coating = LayeredMaterial{details[1], {details[2], details[3]}, {details[4], details[5]}};
   }
   shear = details[6] == 1.0;
+  if (details[7] == 1.0) bodies = ElasticPair({details[8], details[9]}, {details[10], details[11]});
 }
 
 // This process's rows of the first process's `whole` field.
@@ -83,10 +93,11 @@ int run_stress_on_slabs(const std::filesystem::path& path, const std::function<i
     return code;
   }
   std::optional<LayeredMaterial> coating;
+  std::optional<ElasticPair> bodies;
   bool shear = false;
-  broadcast_details(world, whole, coating, shear);
+  broadcast_details(world, whole, coating, bodies, shear);
   const mpi::SlabLayout slab = mpi::slab_layout(grid.nx(), grid.ny(), world);
-  io::ResultPressure local{grid, rows_of(world, slab, whole ? &whole->pressure : nullptr), coating, {}, {}};
+  io::ResultPressure local{grid, rows_of(world, slab, whole ? &whole->pressure : nullptr), coating, bodies, {}, {}};
   if (shear) {
     local.shear_x = rows_of(world, slab, whole ? &whole->shear_x : nullptr);
     local.shear_y = rows_of(world, slab, whole ? &whole->shear_y : nullptr);

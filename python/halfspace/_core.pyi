@@ -14,7 +14,9 @@ class InputError(ValueError):
 class FileError(OSError):
     """A file that cannot be read or written: missing, unreadable, wrong layout."""
 
-def subsurface_stress(result: "Result", depths: Sequence[float], nu: Optional[float]) -> dict: ...
+def subsurface_stress(
+    result: "Result", depths: Sequence[float], nu: Optional[float], body: Optional[str]
+) -> dict: ...
 
 class Result:
     """The outcome of a solve. Field arrays are views of memory this object

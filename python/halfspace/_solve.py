@@ -343,19 +343,23 @@ def read_result(path: Union[str, os.PathLike], step: Optional[int] = None) -> _c
     return _core.read_result(os.fspath(path), -1 if step is None else int(step))
 
 
-def subsurface_stress(result: _core.Result, depths: Sequence[float], nu: Optional[float] = None) -> dict:
+def subsurface_stress(
+    result: _core.Result, depths: Sequence[float], nu: Optional[float] = None, body: Optional[int] = None
+) -> dict:
     """The stress field below a solved contact, as ``halfspace stress``.
 
     result: a Result (its pressure and grid); depths: depths below the
-    surface (m, > 0); nu: Poisson's ratio of the body whose stresses are
-    wanted (E* alone does not fix it). Periodic grids use the Fourier-space
+    surface (m, > 0); body: whose stresses, 1 or 2 (default: the one that
+    deforms, body 1 for a coated result or a rigid body 2, else body 2);
+    nu: Poisson's ratio of that body (default: its own, when the result was
+    solved with E1, nu1, E2, nu2; E* alone does not fix it). Periodic grids use the Fourier-space
     half-space solution, free grids Love's rectangle coefficients by DC-FFT
     (docs/theory.md, subsurface stresses). A coated result (solved with
     ``coating=``; periodic grids, or free 2D grids whose shorter side is at
     least 8 layer thicknesses) takes no nu: each depth uses its body's, the
     layer's for z <= thickness. A friction result (``friction=``) applies its
     shear tractions beside the pressure, as ``halfspace stress`` does: q on
-    a homogeneous body, -q (the traction on it) on a coated one (body 1;
+    body 2, -q (the traction on it) on body 1 (a coated body is body 1;
     periodic grids).
 
     Returns a dict: ``depths``; ``sigma_xx``, ``sigma_yy``, ``sigma_zz``,
@@ -364,6 +368,11 @@ def subsurface_stress(result: _core.Result, depths: Sequence[float], nu: Optiona
     (``(nz, n)`` for a profile) and owned by numpy without a copy;
     ``max_von_mises`` and its ``max_von_mises_position`` ``(x, y, z)`` in m;
     for a coated result ``in_layer``, one bool per depth; ``tractions``
-    (``"pressure"`` or ``"pressure and shear"``). The GIL is
+    (``"pressure"`` or ``"pressure and shear"``); ``body`` (1 or 2). The GIL is
     released while computing."""
-    return _core.subsurface_stress(result, [float(z) for z in depths], None if nu is None else float(nu))
+    return _core.subsurface_stress(
+        result,
+        [float(z) for z in depths],
+        None if nu is None else float(nu),
+        None if body is None else str(body),
+    )

@@ -35,6 +35,7 @@ OutputArray view(const Eigen::ArrayXd& field, const std::vector<std::size_t>& sh
 io::ResultMetadata metadata_of(const Run& run) {
   io::ResultMetadata metadata = io::result_metadata(run.provenance, run.grid, run.heights);
   metadata.coating = run.coating;
+  metadata.bodies = run.pair;
   return metadata;
 }
 
@@ -237,6 +238,9 @@ Result read(const std::filesystem::path& path, int step) {
     t.tolerance = number("tangential_tolerance");
     run->stick.push_back(std::move(stored.stick));
     run->tangential.push_back(std::move(t));
+  }
+  if (stored.find("body1_E") != nullptr) {
+    run->pair = ElasticPair({number("body1_E"), number("body1_nu")}, {number("body2_E"), number("body2_nu")});
   }
   if (stored.find("layer_thickness") != nullptr) {
     run->coating = validated(LayeredMaterial{number("layer_thickness"),

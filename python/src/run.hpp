@@ -35,8 +35,10 @@ struct Run {
   // Attributes of a file the run was read from (read_result); empty for a solve.
   nb::dict stored_attributes;
   std::optional<LayeredMaterial> coating;  // a coated half-space, else none
-  // Friction (halfspace.solve(friction=...), halfspace.history): the pair of
-  // bodies, the tangential steps solved, what each imposed, and per step its
+  // Both bodies, when E1, nu1, E2, nu2 were given (or read from the file's
+  // body1_E ... body2_nu), and with friction the coated body too.
+  // Friction (halfspace.solve(friction=...), halfspace.history): the
+  // tangential steps solved, what each imposed, and per step its
   // stick map (1 where a contact cell sticks). The steps are solved under
   // steps[0]'s pressure, or, a coupled history (dissimilar bodies), step k
   // under its own, steps[k + 1] (steps[0] is then the normal loading's).

@@ -168,6 +168,7 @@ std::shared_ptr<Run> make_run(ArraySurface&& surface, const Problem& problem, io
                                        {},
                                        {},
                                        {}});
+  if (!problem.coating) run->pair = problem.pair;  // both bodies, when given (whose stresses)
   run->steps = std::move(steps);
   run->surface = surface::surface_statistics(run->grid, run->heights);
   run->mark_contact();
@@ -277,7 +278,7 @@ History friction(const nb::object& heights, double dx, double dy, const std::str
   io::SolveProvenance provenance{
       pair.composite_modulus(), problem.loading.mode, problem.threads, command_line, "", height_source, preparation};
   std::shared_ptr<Run> run = make_run(std::move(surface), problem, std::move(provenance), std::move(steps));
-  run->pair = problem.pair;
+  run->pair = problem.pair;  // the coated body too (ElasticPair::coated)
   run->tangential = std::move(solved.steps);
   run->tangential_loads = friction.history;
   if (friction.sliding_direction && !run->tangential.empty()) {

@@ -6,6 +6,7 @@
 #include <nanobind/stl/string.h>
 #include <nanobind/stl/vector.h>
 
+#include <array>
 #include <cstddef>
 #include <optional>
 #include <vector>
@@ -13,6 +14,7 @@
 #include "bindings.hpp"
 #include "halfspace/error.hpp"
 #include "halfspace/stress/stress_volume.hpp"
+#include "halfspace/stress/stressed_body.hpp"
 #include "run.hpp"
 
 namespace halfspace::python {
@@ -25,7 +27,8 @@ OutputArray volume_array(std::vector<double>&& field, const std::vector<std::siz
   return OutputArray(owned->data(), shape.size(), shape.data(), owner);
 }
 
-nb::dict subsurface_stress(const Result& result, const std::vector<double>& depths, std::optional<double> nu) {
+nb::dict subsurface_stress(const Result& result, const std::vector<double>& depths, std::optional<double> nu,
+                           std::optional<std::string> body) {
   const Grid& grid = result.run->grid;
   const Eigen::ArrayXd& pressure = result.result().pressure;
   const std::optional<LayeredMaterial>& coating = result.run->coating;
@@ -36,32 +39,27 @@ nb::dict subsurface_stress(const Result& result, const std::vector<double>& dept
         format_number(*nu), format_number(coating->layer.poissons_ratio),
         format_number(coating->substrate.poissons_ratio)));
   }
-  if (!coating && !nu) {
-    throw InputError(
-        "no Poisson's ratio given: pass nu, the Poisson's ratio of the body whose stresses are wanted (E* alone "
-        "does not fix it; -1 < nu <= 0.5)");
-  }
+  // Whose stresses: the library's rule (stress/stressed_body.hpp), with the
+  // result's bodies or coating.
+  const std::optional<stress::StressedBody> requested =
+      body ? std::optional(stress::parse_stressed_body(*body, "body=")) : std::nullopt;
+  const std::optional<ElasticPair> bodies = coating ? std::optional(ElasticPair::coated(*coating)) : result.run->pair;
+  const stress::StressedBodyChoice choice = stress::choose_stressed_body(requested, nu, bodies, "body=", "nu=");
   // A friction result's shear tractions act beside the pressure, as in
-  // `halfspace stress`; a coated body is body 1 and carries -q.
+  // `halfspace stress`; body 1 (a coated body) carries -q.
   const bool sheared = result.tangential_step < result.run->tangential.size();
   stress::StressVolume volume = [&] {
     nb::gil_scoped_release release;
+    stress::SurfaceTractions tractions{{pressure.data(), grid.size()}, {}, {}};
+    std::array<std::vector<double>, 2> body1_shear;
     if (sheared) {
       const TangentialState& state = result.run->tangential[result.tangential_step].state;
-      if (coating) {
-        std::vector<double> shear_x(state.shear_x.data(), state.shear_x.data() + grid.size());
-        std::vector<double> shear_y(state.shear_y.data(), state.shear_y.data() + grid.size());
-        stress::make_traction_on_body1(shear_x);
-        stress::make_traction_on_body1(shear_y);
-        const stress::SurfaceTractions tractions{{pressure.data(), grid.size()}, shear_x, shear_y};
-        return stress::compute_stress_volume(grid, tractions, depths, *coating);
-      }
-      const stress::SurfaceTractions tractions{
-          {pressure.data(), grid.size()}, {state.shear_x.data(), grid.size()}, {state.shear_y.data(), grid.size()}};
-      return stress::compute_stress_volume(grid, tractions, depths, *nu);
+      tractions = stress::tractions_on(
+          choice.body, {tractions.pressure, {state.shear_x.data(), grid.size()}, {state.shear_y.data(), grid.size()}},
+          body1_shear);
     }
-    return coating ? stress::compute_stress_volume(grid, {pressure.data(), grid.size()}, depths, *coating)
-                   : stress::compute_stress_volume(grid, {pressure.data(), grid.size()}, depths, *nu);
+    return coating ? stress::compute_stress_volume(grid, tractions, depths, *coating)
+                   : stress::compute_stress_volume(grid, tractions, depths, choice.poisson_ratio);
   }();
   std::vector<std::size_t> shape{depths.size()};
   if (grid.dimension() == 2) shape.push_back(grid.ny());
@@ -79,13 +77,15 @@ nb::dict subsurface_stress(const Result& result, const std::vector<double>& dept
   out["max_von_mises"] = peak.value;
   out["max_von_mises_position"] = nb::make_tuple(peak.x, peak.y, peak.z);
   out["tractions"] = sheared ? "pressure and shear" : "pressure";
+  out["body"] = stress::body_number(choice.body);
   return out;
 }
 
 }  // namespace
 
 void bind_stress(nb::module_& module) {
-  module.def("subsurface_stress", &subsurface_stress, nb::arg("result"), nb::arg("depths"), nb::arg("nu").none());
+  module.def("subsurface_stress", &subsurface_stress, nb::arg("result"), nb::arg("depths"), nb::arg("nu").none(),
+             nb::arg("body").none());
 }
 
 }  // namespace halfspace::python

@@ -200,4 +200,11 @@ void write_coating_attributes(const Hdf5Node& node, const LayeredMaterial& coati
   node.write_double_attribute("substrate_nu", coating.substrate.poissons_ratio);
 }
 
+void write_body_attributes(const Hdf5Node& node, const ElasticPair& bodies) {
+  node.write_double_attribute("body1_E", bodies.body1().youngs_modulus);
+  node.write_double_attribute("body1_nu", bodies.body1().poissons_ratio);
+  node.write_double_attribute("body2_E", bodies.body2().youngs_modulus);
+  node.write_double_attribute("body2_nu", bodies.body2().poissons_ratio);
+}
+
 }  // namespace halfspace::io

@@ -4,10 +4,14 @@
 #include "halfspace/io/result_pressure_reader.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <hdf5.h>
 
+#include <array>
 #include <optional>
+#include <span>
 #include <string>
+#include <string_view>
 
 #include "halfspace/error.hpp"
 #include "halfspace/io/hdf5_height_map_reader.hpp"
@@ -81,36 +85,55 @@ void require_result_kind(const std::filesystem::path& path) {
   }
 }
 
-// The coating's five root attributes (result_attributes.hpp), if the result
-// is of a coated half-space: all five or none.
-std::optional<LayeredMaterial> read_coating(const std::filesystem::path& path) {
+// Root attributes that come all together or not at all (a coating's five,
+// both bodies' four): their values, or none.
+std::optional<std::vector<double>> read_attribute_set(const std::filesystem::path& path,
+                                                      std::span<const char* const> names, std::string_view what) {
   const detail::ErrorPrintingOff quiet;
   const detail::File file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
   if (!file.valid()) fail(path, "it cannot be opened as HDF5");
-  constexpr const char* kNames[] = {"layer_thickness", "layer_E", "layer_nu", "substrate_E", "substrate_nu"};
-  double values[5] = {};
-  int found = 0;
-  for (int k = 0; k < 5; ++k) {
-    if (H5Aexists(file.get(), kNames[k]) <= 0) continue;
-    const detail::Attribute attribute(H5Aopen(file.get(), kNames[k], H5P_DEFAULT));
+  std::vector<double> values(names.size());
+  std::size_t found = 0;
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    if (H5Aexists(file.get(), names[k]) <= 0) continue;
+    const detail::Attribute attribute(H5Aopen(file.get(), names[k], H5P_DEFAULT));
     if (!attribute.valid() || H5Aread(attribute.get(), H5T_NATIVE_DOUBLE, &values[k]) < 0) {
-      fail(path, fmt::format("its root attribute '{}' cannot be read as a number", kNames[k]));
+      fail(path, fmt::format("its root attribute '{}' cannot be read as a number", names[k]));
     }
     ++found;
   }
   if (found == 0) return std::nullopt;
-  if (found != 5) {
-    fail(path,
-         "it has some but not all of the coating's attributes (layer_thickness, layer_E, layer_nu, "
-         "substrate_E, substrate_nu)");
+  if (found != names.size()) {
+    fail(path, fmt::format("it has some but not all of {} attributes ({})", what, fmt::join(names, ", ")));
   }
-  LayeredMaterial coating{values[0], {values[1], values[2]}, {values[3], values[4]}};
+  return values;
+}
+
+// The coating's five root attributes (result_attributes.hpp), if the result
+// is of a coated half-space.
+std::optional<LayeredMaterial> read_coating(const std::filesystem::path& path) {
+  constexpr std::array<const char*, 5> kNames{"layer_thickness", "layer_E", "layer_nu", "substrate_E", "substrate_nu"};
+  const std::optional<std::vector<double>> v = read_attribute_set(path, kNames, "the coating's");
+  if (!v) return std::nullopt;
+  LayeredMaterial coating{(*v)[0], {(*v)[1], (*v)[2]}, {(*v)[3], (*v)[4]}};
   try {
     validated(coating);
   } catch (const InputError& error) {
     fail(path, fmt::format("its coating attributes are invalid ({})", error.what()));
   }
   return coating;
+}
+
+// Both bodies' four root attributes (result_attributes.hpp), if recorded.
+std::optional<ElasticPair> read_bodies(const std::filesystem::path& path) {
+  constexpr std::array<const char*, 4> kNames{"body1_E", "body1_nu", "body2_E", "body2_nu"};
+  const std::optional<std::vector<double>> v = read_attribute_set(path, kNames, "both bodies'");
+  if (!v) return std::nullopt;
+  try {
+    return ElasticPair({(*v)[0], (*v)[1]}, {(*v)[2], (*v)[3]});
+  } catch (const InputError& error) {
+    fail(path, fmt::format("its attributes body1_E, body1_nu, body2_E, body2_nu are invalid ({})", error.what()));
+  }
 }
 
 bool has_dataset(const std::filesystem::path& path, const char* name) {
@@ -183,6 +206,7 @@ ResultPressure read_result_pressure(const std::filesystem::path& path) {
   ResultPressure result{grid,
                         std::vector<double>(field.heights.data(), field.heights.data() + field.heights.size()),
                         read_coating(path),
+                        read_bodies(path),
                         {},
                         {}};
   read_shear(path, field, result);

@@ -94,6 +94,7 @@ void write_result_root_attributes(const Hdf5Node& root, const Grid& grid, const 
   write_grid_attributes(root, grid);
   root.write_double_attribute("E_star", metadata.e_star);
   if (metadata.coating) write_coating_attributes(root, *metadata.coating);
+  if (metadata.bodies && !metadata.bodies->coating()) write_body_attributes(root, *metadata.bodies);
   root.write_string_attribute("load_mode", metadata.load_mode);
 
   write_result_attributes(root, result);

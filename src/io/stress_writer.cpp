@@ -10,6 +10,7 @@
 
 #include "halfspace/io/result_attributes.hpp"
 #include "halfspace/io/xdmf_writer.hpp"
+#include "halfspace/stress/stressed_body.hpp"
 #include "halfspace/version.hpp"
 
 namespace halfspace::io {
@@ -46,6 +47,7 @@ stress::VonMisesMaximum write_stress_group(const Hdf5Node& root, stress::Subsurf
   const Hdf5Node group = root.create_group("stress");
   group.write_double_attribute("poisson_ratio", stresses.poisson_ratio());
   group.write_string_attribute("tractions", stresses.has_shear(tractions) ? "pressure and shear" : "pressure");
+  group.write_int64_attribute("body", stress::body_number(tractions.body));
   if (const std::optional<LayeredMaterial> coating = stresses.coating()) {
     // Which depths lie in the layer (z <= t), and the constants of each body.
     group.write_double_attribute("layer_thickness", coating->thickness);

@@ -6,8 +6,19 @@
 
 namespace halfspace::stress {
 
-void make_traction_on_body1(std::span<double> shear) {
-  for (double& value : shear) value = -value;
+SurfaceTractions tractions_on(StressedBody body, const SurfaceTractions& result,
+                              std::array<std::vector<double>, 2>& scratch) {
+  SurfaceTractions on = result;
+  on.body = body;
+  if (body == StressedBody::body2) return on;
+  const std::array<std::span<const double>, 2> shear{result.shear_x, result.shear_y};
+  for (std::size_t c = 0; c < 2; ++c) {
+    scratch[c].resize(shear[c].size());
+    for (std::size_t i = 0; i < shear[c].size(); ++i) scratch[c][i] = -shear[c][i];
+  }
+  on.shear_x = scratch[0];
+  on.shear_y = scratch[1];
+  return on;
 }
 
 bool odd_in_x(Component component, Traction traction) {

@@ -98,8 +98,8 @@ TEST(CoatedFrictionStressCliTest, StressDepthsAndTheStressCommandTakeTheCoatedBo
   // The coated body carries -q: the library's field under it.
   std::vector<double> on_body1_x = input.shear_x;
   std::vector<double> on_body1_y = input.shear_y;
-  stress::make_traction_on_body1(on_body1_x);
-  stress::make_traction_on_body1(on_body1_y);
+  for (double& q : on_body1_x) q = -q;
+  for (double& q : on_body1_y) q = -q;
   const stress::StressVolume expected = stress::compute_stress_volume(
       input.grid, stress::SurfaceTractions{input.pressure, on_body1_x, on_body1_y}, depths, *input.coating);
   const stress::StressVolume pressure_only =
@@ -109,6 +109,7 @@ TEST(CoatedFrictionStressCliTest, StressDepthsAndTheStressCommandTakeTheCoatedBo
   const test::H5 alone = test::open_file(dir / "alone.h5");
   const test::H5 group(H5Gopen2(solved.get(), "/stress", H5P_DEFAULT), H5Gclose, "open /stress");
   EXPECT_EQ(test::read_string_attribute(group.get(), "tractions"), "pressure and shear");
+  EXPECT_EQ(test::read_int64_attribute(group.get(), "body"), 1);
   EXPECT_EQ(test::read_dataset<std::uint8_t>(solved.get(), "/stress/in_layer", H5T_NATIVE_UINT8),
             (std::vector<std::uint8_t>{1, 1, 0}));
   const double p_max = *std::max_element(input.pressure.begin(), input.pressure.end());

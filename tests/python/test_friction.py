@@ -301,3 +301,43 @@ def test_read_result_brings_the_friction_step_back(tmp_path):
     plain = hs.solve(surface, **STEEL, force=FORCE, threads=1, fft_planning="estimate")
     plain.save(tmp_path / "n.h5")
     assert hs.read_result(tmp_path / "n.h5").shear_x is None
+
+
+def test_stresses_of_either_body(tmp_path, cli):
+    """On a rigid body 2 the stresses are body 1's by default: under -q and with nu1, as
+    `halfspace stress` computes them from the saved file (which records both bodies);
+    body=2 gives body 2's field under q; two elastic bodies of different ratios must be named."""
+    import subprocess
+    surface = sphere(24)
+    depths = [2e-6, 1e-5]
+    rigid = dict(E1=1e9, nu1=0.5, E2=math.inf, nu2=0.5)
+    sliding = hs.solve(surface, **rigid, force=FORCE, friction=MU, sliding=(1.0, 0.0), threads=1,
+                       fft_planning="estimate")
+    body1 = hs.subsurface_stress(sliding, depths)
+    body2 = hs.subsurface_stress(sliding, depths, body=2)
+    assert body1["body"] == 1 and body2["body"] == 2
+    # Near the surface sigma_xz is the traction on the body: -q for body 1, +q for body 2 (z into each).
+    shallow1 = hs.subsurface_stress(sliding, [1e-3 * surface.dx])["sigma_xz"][0]
+    shallow2 = hs.subsurface_stress(sliding, [1e-3 * surface.dx], body=2)["sigma_xz"][0]
+    inside = sliding.pressure > 0.1 * sliding.pressure.max()
+    q = sliding.shear_x
+    assert np.abs(shallow1[inside] - q[inside]).max() < 0.1 * np.abs(q).max()
+    assert np.abs(shallow2[inside] + q[inside]).max() < 0.1 * np.abs(q).max()
+    sliding.save(tmp_path / "s.h5")
+    with h5py.File(tmp_path / "s.h5") as f:
+        assert f.attrs["body1_nu"] == 0.5 and math.isinf(f.attrs["body2_E"])
+    subprocess.run([cli, "stress", str(tmp_path / "s.h5"), "--depths", ",".join(repr(z) for z in depths),
+                    "--output", str(tmp_path / "stress.h5"), "--threads", "1", "--quiet"], check=True)
+    with h5py.File(tmp_path / "stress.h5") as f:
+        assert f["stress"].attrs["body"] == 1
+        program = f["stress"]["sigma_xz"][...]
+        np.testing.assert_allclose(body1["sigma_xz"], program, rtol=0, atol=1e-12 * np.abs(program).max())
+    read = hs.read_result(tmp_path / "s.h5")
+    np.testing.assert_array_equal(hs.subsurface_stress(read, depths)["sigma_xz"], body1["sigma_xz"])
+    with pytest.raises(hs.InputError, match="body= 3 is invalid"):
+        hs.subsurface_stress(sliding, depths, body=3)
+    dissimilar = hs.solve(surface, E1=1e9, nu1=0.3, E2=2e9, nu2=0.25, force=FORCE, threads=1,
+                          fft_planning="estimate")
+    with pytest.raises(hs.InputError, match="pass body= 1 or 2, or nu= NU"):
+        hs.subsurface_stress(dissimilar, depths)
+    assert hs.subsurface_stress(dissimilar, depths, body=1)["body"] == 1

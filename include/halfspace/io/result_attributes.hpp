@@ -13,6 +13,7 @@
 #include <variant>
 
 #include "halfspace/analysis/contact_statistics.hpp"
+#include "halfspace/elastic_pair.hpp"
 #include "halfspace/io/hdf5_output.hpp"
 #include "halfspace/layered_material.hpp"
 #include "halfspace/lubrication/film_summary.hpp"
@@ -68,6 +69,10 @@ void write_grid_attributes(const Hdf5Node& node, const Grid& grid);
 // layer_thickness (m), layer_E (Pa), layer_nu, substrate_E (Pa) and
 // substrate_nu (float64): a coated half-space's constants, on a result's root.
 void write_coating_attributes(const Hdf5Node& node, const LayeredMaterial& coating);
+
+// body1_E (Pa), body1_nu, body2_E (Pa, inf for a rigid body 2) and body2_nu
+// (float64): both bodies of a homogeneous pair, on a result's root.
+void write_body_attributes(const Hdf5Node& node, const ElasticPair& bodies);
 
 // The root attributes of a lubricated film's file (halfspace lubricate):
 // the same table's form for a FilmSummary, absent optional values skipped.

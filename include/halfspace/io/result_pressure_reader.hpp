@@ -7,6 +7,7 @@
 #include <optional>
 #include <vector>
 
+#include "halfspace/elastic_pair.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/layered_material.hpp"
 
@@ -16,6 +17,7 @@ struct ResultPressure {
   Grid grid;                     // shape and spacing from /pressure and dx, dy; boundary from the root attribute
   std::vector<double> pressure;  // Pa, (ny, nx) row-major
   std::optional<LayeredMaterial> coating;  // a coated half-space's five root attributes, if recorded
+  std::optional<ElasticPair> bodies;       // both bodies' four root attributes, if recorded
   // A friction result's shear tractions /shear_x, /shear_y (Pa, the traction
   // body 1 exerts on body 2, like the pressure's layout); empty if absent.
   std::vector<double> shear_x;
@@ -27,7 +29,8 @@ struct ResultPressure {
 // Throws FileError naming the file and what is missing or wrong: not HDF5,
 // no /pressure (rank 1 or 2, finite), no positive dx (and dy in 2D), no
 // root attribute 'boundary' ("periodic" or "free"), some but not all of the
-// coating's attributes, or coating attributes out of range; and for one of
+// coating's attributes, or coating attributes out of range (likewise both
+// bodies' body1_E, body1_nu, body2_E, body2_nu); and for one of
 // /shear_x, /shear_y without the other, or either not finite or not of the
 // pressure's shape.
 ResultPressure read_result_pressure(const std::filesystem::path& path);

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "halfspace/analysis/contact_statistics.hpp"
+#include "halfspace/elastic_pair.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/io/hdf5_output.hpp"
 #include "halfspace/layered_material.hpp"
@@ -43,6 +44,11 @@ struct ResultMetadata {
   // layer_E, layer_nu, substrate_E, substrate_nu); e_star is then the layer's
   // E1/(1 - nu1^2), its modulus against the rigid surface.
   std::optional<LayeredMaterial> coating;
+  // Both bodies, when they were given (E1, nu1, E2, nu2; not a coated one):
+  // root attributes body1_E, body1_nu, body2_E, body2_nu (E2 = inf for a
+  // rigid body 2), from which `halfspace stress` takes whose stresses and
+  // the Poisson's ratio.
+  std::optional<ElasticPair> bodies;
   // Friction: a tangential load step whose fields (shear_x, shear_y, stick,
   // slip_x, slip_y, tangential_displacement_x, _y) and attributes
   // (result_attributes.hpp's tangential table) the result also holds; must
