@@ -12,6 +12,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <stdexcept>
 #include <type_traits>
 #include <utility>
 
@@ -836,6 +837,16 @@ std::span<double> PolonskyKeer::workspace(int which) {
     single_image_.resize(0);
   }
   if (field.size() != n) field.setZero(n);  // single-precision work vectors: made on first use
+  return {field.data(), static_cast<std::size_t>(field.size())};
+}
+
+std::span<float> PolonskyKeer::single_workspace(int which) {
+  if (!single_) throw std::logic_error("PolonskyKeer::single_workspace without single-precision work vectors");
+  direction_.resize(0);
+  image_.resize(0);
+  Eigen::ArrayXf& field = which == 0 ? single_direction_ : single_image_;
+  const auto n = static_cast<Eigen::Index>(op_.local_size());
+  if (field.size() != n) field.setZero(n);
   return {field.data(), static_cast<std::size_t>(field.size())};
 }
 
