@@ -19,6 +19,7 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr double kDouble = 8.0;
+constexpr double kFloat = 4.0;
 constexpr double kComplex = 16.0;
 
 // A grid's extents as doubles, so that no product of them can overflow.
@@ -71,19 +72,27 @@ double preconditioner_bytes(const Extents& g) {
   return kDouble * stored_rows(rows) * (std::floor(g.nx / 2.0) + 1.0);
 }
 
-// The coarse-grid correction (block_deflation.hpp): its field, the set's
-// flags and three lists of 8-byte cells (current, previous, changed), each
-// at most one entry per cell.
-double deflation_bytes(const Extents& g) {
-  return (kDouble + 1.0 + 3.0 * kDouble) * g.cells();
+// The coarse-grid correction (block_deflation.hpp): its field (a float
+// one on single-precision work vectors), the set's flags and three lists
+// of 8-byte cells (current, previous, changed), each at most one entry per
+// cell.
+double deflation_bytes(const Extents& g, double field) {
+  return (field + 1.0 + 3.0 * kDouble) * g.cells();
 }
 
 // One Polonsky-Keer solver with its operator: the operator, the
 // preconditioner, two workspace fields and the residual history, reserved
-// for the iteration limit.
-double level_bytes(const Extents& g, bool preconditioned, bool deflated, double history) {
-  return operator_bytes(g) + (preconditioned ? preconditioner_bytes(g) : 0.0) + 2.0 * kDouble * g.cells() + history +
-         (deflated ? deflation_bytes(g) : 0.0);
+// for the iteration limit. With mixed precision on a periodic grid
+// (layout.cpp's make_mixed_operators) the work vectors and the coarse
+// correction's field are floats, and the single-precision K keeps a symbol
+// of its own; its transform lives in the double one's spectrum.
+double level_bytes(const Extents& g, bool preconditioned, bool deflated, double history, bool mixed) {
+  const bool single = mixed && g.periodic;
+  const double work = single ? kFloat : kDouble;
+  const double inner_symbol =
+      single ? kDouble * stored_rows(g.line ? 1.0 : g.ny) * (std::floor(g.nx / 2.0) + 1.0) : 0.0;
+  return operator_bytes(g) + inner_symbol + (preconditioned ? preconditioner_bytes(g) : 0.0) + 2.0 * work * g.cells() +
+         history + (deflated ? deflation_bytes(g, work) : 0.0);
 }
 
 // A solve's result: pressure, displacement and gap, and the residual history.
@@ -133,22 +142,25 @@ double adhesive_bytes(const Extents& g, const solvers::SolverOptions& settings) 
 double solver_peak(const Grid& grid, const solvers::SolverOptions& settings) {
   const Extents g(grid);
   const double history = kDouble * (static_cast<double>(std::max(settings.iteration_limit(), 0)) + 1.0);
+  const bool mixed = settings.precision == solvers::Precision::mixed;
   if (settings.adhesion) return adhesive_bytes(g, settings) + result_bytes(g, history);
   if (is_dense(settings.type)) return dense_bytes(g) + result_bytes(g, history);
-  if (settings.type == solvers::SolverType::pk) return level_bytes(g, false, false, history) + result_bytes(g, history);
+  if (settings.type == solvers::SolverType::pk) {
+    return level_bytes(g, false, false, history, mixed) + result_bytes(g, history);
+  }
   if (settings.type == solvers::SolverType::pk_fourier) {
-    return level_bytes(g, true, deflated(grid, settings), history) + result_bytes(g, history);
+    return level_bytes(g, true, deflated(grid, settings), history, mixed) + result_bytes(g, history);
   }
   // pk-multilevel: the fine solver is built first and kept. Its fine solve
   // adds the result; before that the coarse start holds the averaged gap of
   // every coarser level, the first coarser level's solver and result, and
   // the prolonged start on the fine grid.
-  const double fine = level_bytes(g, true, deflated(grid, settings), history);
+  const double fine = level_bytes(g, true, deflated(grid, settings), history, mixed);
   const Extents coarse = g.coarser();
   const double shrink = g.line ? 0.5 : 0.25;
   const double coarse_gaps = kDouble * g.cells() * shrink / (1.0 - shrink);
-  const double coarse_start =
-      coarse_gaps + level_bytes(coarse, true, false, history) + result_bytes(coarse, history) + kDouble * g.cells();
+  const double coarse_start = coarse_gaps + level_bytes(coarse, true, false, history, mixed) +
+                              result_bytes(coarse, history) + kDouble * g.cells();
   return fine + std::max(result_bytes(g, history), coarse_start);
 }
 

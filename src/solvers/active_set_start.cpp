@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 #include <utility>
 
 #include "halfspace/error.hpp"
@@ -82,6 +83,14 @@ SolveResult ActiveSetStart::do_solve_from(std::span<const double> initial_gap, c
 // is not stored: it is recomputed from u when needed.
 ActiveSetRecord ActiveSetStart::run(std::span<const double> initial_gap, const Loading& loading,
                                     Eigen::ArrayXd& pressure) {
+  if (finish_->single_products()) return run_on<float>(initial_gap, loading, pressure);
+  return run_on<double>(initial_gap, loading, pressure);
+}
+
+template <class Work>
+ActiveSetRecord ActiveSetStart::run_on(std::span<const double> initial_gap, const Loading& loading,
+                                       Eigen::ArrayXd& pressure) {
+  constexpr bool kSingle = std::is_same_v<Work, float>;
   ActiveSetRecord record;
   const linalg::Communicator& comm = op_.communicator();
   const Grid& grid = op_.grid();
@@ -90,10 +99,18 @@ ActiveSetRecord ActiveSetStart::run(std::span<const double> initial_gap, const L
   const double target_sum = load_controlled ? loading.target_force(grid.domain_area()) / grid.cell_area() : 0.0;
   const double* g0 = initial_gap.data();
   double* p = pressure.data();
-  const std::span<double> direction = finish_->workspace(0);
-  const std::span<double> image = finish_->workspace(1);
-  double* t = direction.data();
-  double* kt = image.data();
+  std::span<Work> direction;
+  std::span<Work> image;
+  if constexpr (kSingle) {
+    direction = finish_->single_workspace(0);
+    image = finish_->single_workspace(1);
+  } else {
+    direction = finish_->workspace(0);
+    image = finish_->workspace(1);
+  }
+  Work* t = direction.data();
+  Work* kt = image.data();
+  const SinglePrecisionProducts& single = finish_->single_products();
   Eigen::ArrayXd displacement(static_cast<Eigen::Index>(n));
   Eigen::ArrayXd mask(static_cast<Eigen::Index>(n));
   double* u = displacement.data();
@@ -134,29 +151,41 @@ ActiveSetRecord ActiveSetStart::run(std::span<const double> initial_gap, const L
       // The residual r on C and its norm, tested before M^-1 is applied:
       // the application that would only confirm the end is not made.
       const double rr = linalg::sum(comm, n, [&](std::size_t i) {
-        kt[i] = in_set[i] * (g0[i] + u[i] - approach);
-        return kt[i] * kt[i];
+        const double r = in_set[i] * (g0[i] + u[i] - approach);
+        kt[i] = static_cast<Work>(r);
+        return r * r;
       });
       inner_norms_.push_back(std::sqrt(rr));
       if (inner == 0) first_norm = rr;
       if (!(rr > options_.inner_reduction * options_.inner_reduction * first_norm)) break;
       if (preconditioner_.adapt(set, inner_norms_)) conjugate = false;
-      preconditioner_.apply({kt, n}, {kt, n});
+      if constexpr (kSingle) {
+        single.precondition({kt, n}, {kt, n});
+      } else {
+        preconditioner_.apply({kt, n}, {kt, n});
+      }
       ++record.preconditioner_applications;
       const auto [z_sum, gz] = sums<2>(comm, n, [&](std::size_t i) {
-        return std::array<double, 2>{in_set[i] * kt[i], in_set[i] * (g0[i] + u[i] - approach) * kt[i]};
+        const double z = kt[i];
+        return std::array<double, 2>{in_set[i] * z, in_set[i] * (g0[i] + u[i] - approach) * z};
       });
       const double z_mean = load_controlled ? z_sum / set_size : 0.0;
       // The gap is mean-free on C, so sum g (z - mean z) = sum g z.
       const double norm = gz;
       const double beta = conjugate ? norm / previous_norm : 0.0;
       previous_norm = norm;
-      for_each_index(n, [&](std::size_t i) { t[i] = in_set[i] * ((kt[i] - z_mean) + beta * t[i]); });
-      op_.apply({t, n}, {kt, n});
+      for_each_index(n, [&](std::size_t i) { t[i] = static_cast<Work>(in_set[i] * ((kt[i] - z_mean) + beta * t[i])); });
+      if constexpr (kSingle) {
+        single.kernel({t, n}, {kt, n});
+      } else {
+        op_.apply({t, n}, {kt, n});
+      }
       ++record.operator_applications;
       const auto [kt_sum, t_sum, gt, tkt] = sums<4>(comm, n, [&](std::size_t i) {
         const double c = in_set[i];
-        return std::array<double, 4>{c * kt[i], c * t[i], c * (g0[i] + u[i] - approach) * t[i], c * t[i] * kt[i]};
+        const double ti = t[i];
+        const double kti = kt[i];
+        return std::array<double, 4>{c * kti, c * ti, c * (g0[i] + u[i] - approach) * ti, c * ti * kti};
       });
       const double kt_mean = load_controlled ? kt_sum / set_size : 0.0;
       const double curvature = tkt - kt_mean * t_sum;

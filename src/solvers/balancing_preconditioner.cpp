@@ -2,7 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
+#include <stdexcept>
+#include <type_traits>
+#include <utility>
 
 #include "halfspace/error.hpp"
 #include "halfspace/linalg/parallel.hpp"
@@ -13,10 +17,27 @@ using linalg::for_each_index;
 using linalg::sums;
 
 BalancingPreconditioner::BalancingPreconditioner(InfluenceOperator& op, Preconditioner& fourier,
-                                                 BlockDeflation& deflation)
-    : op_(op), fourier_(fourier), deflation_(deflation) {
+                                                 BlockDeflation& deflation, SinglePrecisionProducts single)
+    : op_(op), fourier_(fourier), deflation_(deflation), single_(std::move(single)) {
   if (deflation_.grid().size() != op_.grid().size() || deflation_.local_size() != op_.local_size()) {
     throw InputError("block deflation was built for a different grid than the operator's");
+  }
+  if (single_ && !single_.precondition) {
+    throw InputError("the single-precision coarse correction needs the single-precision M^-1");
+  }
+}
+
+template <class T>
+T* BalancingPreconditioner::field() {
+  const auto n = static_cast<Eigen::Index>(op_.local_size());
+  if constexpr (std::is_same_v<T, float>) {
+    coarse_field_.resize(0);
+    if (single_field_.size() != n) single_field_.setZero(n);
+    return single_field_.data();
+  } else {
+    single_field_.resize(0);
+    if (coarse_field_.size() != n) coarse_field_.setZero(n);
+    return coarse_field_.data();
   }
 }
 
@@ -39,13 +60,22 @@ bool BalancingPreconditioner::adapt(const SearchSet& set, std::span<const double
     schedule_.decline();
   }
   if (deflate && !kernel_known_) {
-    // The kernel in real space, K e_0, for the coarse matrix.
-    coarse_field_.setZero(static_cast<Eigen::Index>(n));
-    if (deflation_.holds_first_cell()) coarse_field_[0] = 1.0;
-    double* unit = coarse_field_.data();
-    op_.apply({unit, n}, {unit, n});
+    // The kernel in real space, K e_0, for the coarse matrix (in the
+    // precision of the work vectors, in the correction's field).
+    if (single_) {
+      float* unit = field<float>();
+      std::fill(unit, unit + n, 0.0F);
+      if (deflation_.holds_first_cell()) unit[0] = 1.0F;
+      single_.kernel({unit, n}, {unit, n});
+      deflation_.set_kernel(std::span<const float>(unit, n));
+    } else {
+      double* unit = field<double>();
+      std::fill(unit, unit + n, 0.0);
+      if (deflation_.holds_first_cell()) unit[0] = 1.0;
+      op_.apply({unit, n}, {unit, n});
+      deflation_.set_kernel(std::span<const double>(unit, n));
+    }
     ++operator_applications_;
-    deflation_.set_kernel({unit, n});
     kernel_known_ = true;
   }
   if (deflate) {
@@ -67,48 +97,73 @@ void BalancingPreconditioner::apply(std::span<const double> in, std::span<double
     fourier_.apply(in, out);
     return;
   }
-  apply_balancing(in, out);
+  apply_balancing<double>(in, out);
+  ++deflated_iterations_;
+}
+
+void BalancingPreconditioner::apply_single(std::span<const float> in, std::span<float> out) {
+  if (!single_) throw std::logic_error("BalancingPreconditioner::apply_single without single-precision products");
+  if (!active_) {
+    single_.precondition(in, out);
+    return;
+  }
+  apply_balancing<float>(in, out);
   ++deflated_iterations_;
 }
 
 // B r with r = in on the search set (less its mean there under load
 // control); pre_correction and post_correction are B's two halves around
 // M^-1 (block_deflation.hpp).
-void BalancingPreconditioner::apply_balancing(std::span<const double> in, std::span<double> out) {
+template <class T>
+void BalancingPreconditioner::apply_balancing(std::span<const T> in, std::span<T> out) {
   const std::size_t n = op_.local_size();
   const linalg::Communicator& comm = op_.communicator();
   const SearchSet& set = set_;
   const bool mean_free = set.mean_free;
-  double* z = out.data();
+  T* z = out.data();
   // One field holds Z y1, then its image (K in place), then K of M^-1's
   // output: post_correction needs the coarse y1 alone, which it keeps.
-  double* field = coarse_field_.data();
+  T* coarse = field<T>();
+  auto kernel = [&](const T* from, T* to) {
+    if constexpr (std::is_same_v<T, float>) {
+      single_.kernel({from, n}, {to, n});
+    } else {
+      op_.apply({from, n}, {to, n});
+    }
+  };
   const auto [count, in_sum] = sums<2>(comm, n, [&](std::size_t i) {
     const double inside = set.contains(i) ? 1.0 : 0.0;
-    return std::array<double, 2>{inside, inside * in[i]};
+    return std::array<double, 2>{inside, inside * static_cast<double>(in[i])};
   });
   const double shift = mean_free ? in_sum / count : 0.0;
-  for_each_index(n, [&](std::size_t i) { z[i] = set.contains(i) ? in[i] - shift : 0.0; });
+  for_each_index(n, [&](std::size_t i) { z[i] = static_cast<T>(set.contains(i) ? in[i] - shift : 0.0); });
   // values = values - minus on the set, zero elsewhere, mean-free on the set
-  // under load control.
-  auto onto_set = [&](double* values, const double* minus) {
+  // under load control (the mean summed in double).
+  auto onto_set = [&](T* values, const T* minus) {
     double mean = 0.0;
     if (mean_free) {
       mean = linalg::sum(comm, n,
-                         [&](std::size_t i) { return set.contains(i) ? values[i] - (minus ? minus[i] : 0.0) : 0.0; }) /
+                         [&](std::size_t i) -> double {
+                           return set.contains(i) ? static_cast<double>(values[i]) - (minus ? minus[i] : 0.0) : 0.0;
+                         }) /
              count;
     }
-    for_each_index(
-        n, [&](std::size_t i) { values[i] = set.contains(i) ? values[i] - (minus ? minus[i] : 0.0) - mean : 0.0; });
+    for_each_index(n, [&](std::size_t i) {
+      values[i] = static_cast<T>(set.contains(i) ? values[i] - (minus ? minus[i] : 0.0) - mean : 0.0);
+    });
   };
-  deflation_.pre_correction({z, n}, {field, n}, mean_free);
-  op_.apply({field, n}, {field, n});
-  onto_set(z, field);
-  fourier_.apply({z, n}, {z, n});
+  deflation_.pre_correction(std::span<const T>(z, n), std::span<T>(coarse, n), mean_free);
+  kernel(coarse, coarse);
+  onto_set(z, coarse);
+  if constexpr (std::is_same_v<T, float>) {
+    single_.precondition({z, n}, {z, n});
+  } else {
+    fourier_.apply({z, n}, {z, n});
+  }
   onto_set(z, nullptr);
-  op_.apply({z, n}, {field, n});
+  kernel(z, coarse);
   operator_applications_ += 2;
-  deflation_.post_correction({field, n}, {z, n}, mean_free);
+  deflation_.post_correction(std::span<const T>(coarse, n), std::span<T>(z, n), mean_free);
 }
 
 void BalancingPreconditioner::report(SolveResult& result) const {

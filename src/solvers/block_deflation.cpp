@@ -151,7 +151,16 @@ BlockDeflation::BlockDeflation(const Grid& grid, BlockDeflationOptions options, 
 
 BlockDeflation::~BlockDeflation() = default;
 
-void BlockDeflation::set_kernel(std::span<const double> local_response) {
+void BlockDeflation::set_kernel(std::span<const double> unit_response) {
+  set_kernel_from(unit_response);
+}
+
+void BlockDeflation::set_kernel(std::span<const float> unit_response) {
+  set_kernel_from(unit_response);
+}
+
+template <class T>
+void BlockDeflation::set_kernel_from(std::span<const T> local_response) {
   assert(local_response.size() == local_size());
   // k at offset (dy, dx) cells: read from K e_0 across the period on a
   // periodic grid; on a free one K e_0 holds the offsets >= 0 and k is even
@@ -167,7 +176,7 @@ void BlockDeflation::set_kernel(std::span<const double> local_response) {
     const std::size_t row = periodic ? wrapped(0, static_cast<int>(dy), ny) : static_cast<std::size_t>(std::abs(dy));
     const std::size_t column = periodic ? wrapped(0, static_cast<int>(dx), nx) : static_cast<std::size_t>(std::abs(dx));
     if (row < first_row_ || row >= first_row_ + rows_) return 0.0;
-    return local_response[(row - first_row_) * nx + column];
+    return static_cast<double>(local_response[(row - first_row_) * nx + column]);
   };
   const auto b = static_cast<std::ptrdiff_t>(options_.block);
   const std::ptrdiff_t reach = 2 * b - 1;
@@ -472,7 +481,8 @@ void BlockDeflation::solve_coarse(bool fixed_load) {
   ++stats_.unconverged_coarse_solves;
 }
 
-void BlockDeflation::restrict_to_blocks(std::span<const double> field) {
+template <class T>
+void BlockDeflation::restrict_to_blocks(std::span<const T> field) {
   const std::size_t b = options_.block;
   const std::size_t nx = grid_.nx();
   // This process's rows of each block (a block may straddle two processes).
@@ -484,8 +494,8 @@ void BlockDeflation::restrict_to_blocks(std::span<const double> field) {
       double total = 0.0;
       for (std::size_t row = first; row < last; ++row) {
         const std::uint8_t* set = set_.data() + held_row(row) * nx + bx * b;
-        const double* values = field.data() + (row - first_row_) * nx + bx * b;
-        for (std::size_t c = 0; c < b; ++c) total += (set[c] & 1U) ? values[c] : 0.0;
+        const T* values = field.data() + (row - first_row_) * nx + bx * b;
+        for (std::size_t c = 0; c < b; ++c) total += (set[c] & 1U) ? static_cast<double>(values[c]) : 0.0;
       }
       rhs_[by * blocks_x_ + bx] = total;
     }
@@ -493,7 +503,8 @@ void BlockDeflation::restrict_to_blocks(std::span<const double> field) {
   comm_->sum(rhs_);
 }
 
-void BlockDeflation::prolong(const std::vector<double>& y, std::span<double> z, bool add) const {
+template <class T>
+void BlockDeflation::prolong(const std::vector<double>& y, std::span<T> z, bool add) const {
   const std::size_t b = options_.block;
   const std::size_t nx = grid_.nx();
   linalg::for_each_row(rows_, nx, [&](std::size_t local_row) {
@@ -502,28 +513,46 @@ void BlockDeflation::prolong(const std::vector<double>& y, std::span<double> z, 
     for (std::size_t bx = 0; bx < blocks_x_; ++bx) {
       const double value = y[by * blocks_x_ + bx];
       const std::uint8_t* set = set_.data() + held_row(row) * nx + bx * b;
-      double* values = z.data() + local_row * nx + bx * b;
+      T* values = z.data() + local_row * nx + bx * b;
       if (add) {
-        for (std::size_t c = 0; c < b; ++c) values[c] += (set[c] & 1U) ? value : 0.0;
+        for (std::size_t c = 0; c < b; ++c) values[c] = static_cast<T>(values[c] + ((set[c] & 1U) ? value : 0.0));
       } else {
-        for (std::size_t c = 0; c < b; ++c) values[c] = (set[c] & 1U) ? value : 0.0;
+        for (std::size_t c = 0; c < b; ++c) values[c] = static_cast<T>((set[c] & 1U) ? value : 0.0);
       }
     }
   });
 }
 
-void BlockDeflation::pre_correction(std::span<const double> g, std::span<double> field, bool fixed_load) {
+template <class T>
+void BlockDeflation::pre_correction_of(std::span<const T> g, std::span<T> field, bool fixed_load) {
   restrict_to_blocks(g);
   solve_coarse(fixed_load);
   first_ = y_;
   prolong(first_, field, false);
 }
 
-void BlockDeflation::post_correction(std::span<const double> image, std::span<double> z, bool fixed_load) {
+template <class T>
+void BlockDeflation::post_correction_of(std::span<const T> image, std::span<T> z, bool fixed_load) {
   restrict_to_blocks(image);
   solve_coarse(fixed_load);
   for (std::size_t k = 0; k < coarse_size(); ++k) y_[k] = first_[k] - y_[k];
   prolong(y_, z, true);
+}
+
+void BlockDeflation::pre_correction(std::span<const double> g, std::span<double> field, bool fixed_load) {
+  pre_correction_of(g, field, fixed_load);
+}
+
+void BlockDeflation::post_correction(std::span<const double> image, std::span<double> z, bool fixed_load) {
+  post_correction_of(image, z, fixed_load);
+}
+
+void BlockDeflation::pre_correction(std::span<const float> g, std::span<float> field, bool fixed_load) {
+  pre_correction_of(g, field, fixed_load);
+}
+
+void BlockDeflation::post_correction(std::span<const float> image, std::span<float> z, bool fixed_load) {
+  post_correction_of(image, z, fixed_load);
 }
 
 }  // namespace halfspace::solvers

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <stdexcept>
 #include <type_traits>
 #include <utility>
 
@@ -818,11 +819,10 @@ PolonskyKeer::PolonskyKeer(InfluenceOperator& op, PolonskyKeerOptions options, c
   if (single_ && preconditioner_ && !single_.precondition) {
     throw InputError("single-precision work vectors with a preconditioner need its single-precision M^-1");
   }
-  const auto n = static_cast<Eigen::Index>(op_.local_size());
-  if (single_) {
-    single_direction_.setZero(n);
-    single_image_.setZero(n);
-  } else {
+  // Single-precision work vectors are made when a solve begins (run), so
+  // that a phase before it (workspace) holds no float ones beside its own.
+  if (!single_) {
+    const auto n = static_cast<Eigen::Index>(op_.local_size());
     direction_.setZero(n);
     image_.setZero(n);
   }
@@ -831,7 +831,22 @@ PolonskyKeer::PolonskyKeer(InfluenceOperator& op, PolonskyKeerOptions options, c
 std::span<double> PolonskyKeer::workspace(int which) {
   Eigen::ArrayXd& field = which == 0 ? direction_ : image_;
   const auto n = static_cast<Eigen::Index>(op_.local_size());
+  if (single_) {
+    // The float ones of an earlier solve are not needed during the phase.
+    single_direction_.resize(0);
+    single_image_.resize(0);
+  }
   if (field.size() != n) field.setZero(n);  // single-precision work vectors: made on first use
+  return {field.data(), static_cast<std::size_t>(field.size())};
+}
+
+std::span<float> PolonskyKeer::single_workspace(int which) {
+  if (!single_) throw std::logic_error("PolonskyKeer::single_workspace without single-precision work vectors");
+  direction_.resize(0);
+  image_.resize(0);
+  Eigen::ArrayXf& field = which == 0 ? single_direction_ : single_image_;
+  const auto n = static_cast<Eigen::Index>(op_.local_size());
+  if (field.size() != n) field.setZero(n);
   return {field.data(), static_cast<std::size_t>(field.size())};
 }
 
@@ -855,6 +870,14 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
   const auto start = std::chrono::steady_clock::now();
   const Problem problem = make_problem(op_, initial_gap, loading, interface_law().bounds());
   const auto n = static_cast<Eigen::Index>(op_.local_size());
+  if (single_) {
+    // The double workspace of a phase before this solve is given back
+    // before the float work vectors and the result's fields are made.
+    direction_.resize(0);
+    image_.resize(0);
+    if (single_direction_.size() != n) single_direction_.setZero(n);
+    if (single_image_.size() != n) single_image_.setZero(n);
+  }
   SolveResult result;
   result.solver = name_;
   result.tolerance = options_.tolerance;

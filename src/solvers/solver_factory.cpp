@@ -35,17 +35,26 @@ class SolverWithOperator final : public ContactSolver {
       : operators_(std::move(operators)),
         deflation_(std::move(deflation)),
         // The coarse correction is part of M^-1: with mixed precision its
-        // products may be the single-precision ones too.
+        // products are the single-precision ones too, on float work
+        // vectors where the layout has them.
         balancing_(deflation_
                        ? std::make_unique<BalancingPreconditioner>(
-                             operators_.inner ? *operators_.inner : *operators_.op, *operators_.fourier, *deflation_)
+                             operators_.inner ? *operators_.inner : *operators_.op, *operators_.fourier, *deflation_,
+                             operators_.single.precondition ? operators_.single : SinglePrecisionProducts{})
                        : nullptr) {
     Preconditioner* used = balancing_ ? static_cast<Preconditioner*>(balancing_.get()) : operators_.fourier.get();
     // Single-precision work vectors where every product has a
-    // single-precision form (not around the coarse correction's, which
-    // works in double).
-    auto polonsky_keer = std::make_unique<PolonskyKeer>(*operators_.op, options, law, used, operators_.inner.get(),
-                                                        balancing_ ? SinglePrecisionProducts{} : operators_.single);
+    // single-precision form, the coarse correction's included.
+    SinglePrecisionProducts single = operators_.single;
+    if (balancing_) {
+      single.precondition =
+          operators_.single.precondition
+              ? [b = balancing_.get()](std::span<const float> in, std::span<float> out) { b->apply_single(in, out); }
+              : std::function<void(std::span<const float>, std::span<float>)>{};
+      if (!single.precondition) single = {};
+    }
+    auto polonsky_keer =
+        std::make_unique<PolonskyKeer>(*operators_.op, options, law, used, operators_.inner.get(), std::move(single));
     if (active_set && used) {
       solver_ = std::make_unique<ActiveSetStart>(*operators_.op, *used, std::move(polonsky_keer), *active_set);
     } else {

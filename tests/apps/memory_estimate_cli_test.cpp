@@ -83,6 +83,12 @@ solvers::SolverOptions solver(const std::string& name, std::optional<std::size_t
   return settings;
 }
 
+// The same with --precision mixed.
+solvers::SolverOptions mixed(solvers::SolverOptions settings) {
+  settings.precision = solvers::Precision::mixed;
+  return settings;
+}
+
 // Maugis-Dugdale, w = 0.05 J/m^2, h0 = 10 nm, as the adhesive cases ask.
 solvers::SolverOptions adhesive(bool precondition) {
   solvers::SolverOptions settings;
@@ -106,6 +112,11 @@ TEST(MemoryEstimateCliTest, EstimateBoundsTheMeasuredPeakWithinAFactorOfThree) {
         "--boundary", "periodic", "--mean-pressure", "1e7", "--solver", "pk-fourier", "--deflation-block", "32"},
        Grid::plane(512, 512, 1e-3 / 512, 1e-3 / 512, Boundary::periodic),
        solver("pk-fourier", 32)},
+      {"periodic 2D wavy, pk-multilevel with block deflation, mixed precision",
+       {"--geometry", "wavy", "--wavelength", "2.5e-4", "--amplitude", "1e-6", "--grid", "512x512", "--size", "1e-3",
+        "--boundary", "periodic", "--mean-pressure", "1e7", "--deflation-block", "32", "--precision", "mixed"},
+       Grid::plane(512, 512, 1e-3 / 512, 1e-3 / 512, Boundary::periodic),
+       mixed(solver("pk-multilevel", 32))},
       {"free 1D cylinder, pk",
        {"--geometry", "cylinder", "--radius", "0.01", "--grid", "262144", "--size", "1e-3", "--force", "1e4",
         "--solver", "pk"},

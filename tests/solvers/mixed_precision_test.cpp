@@ -8,6 +8,7 @@
 // cannot reach must still be reached (or reported as not), and the inner
 // products must really be single precision (else the option would be a
 // no-op this suite could not tell from the real thing).
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -16,11 +17,14 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "halfspace/error.hpp"
 #include "halfspace/fft/grid_transform.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
 #include "halfspace/operators/single_precision_fft_operator.hpp"
+#include "halfspace/solvers/balancing_preconditioner.hpp"
+#include "halfspace/solvers/block_deflation.hpp"
 #include "halfspace/solvers/layout.hpp"
 #include "halfspace/solvers/solver_factory.hpp"
 #include "halfspace/solvers/solver_options.hpp"
@@ -103,29 +107,100 @@ TEST(MixedPrecisionTest, GivesTheDoublePressureWithinTenTimesTheTolerance) {
   }
 }
 
-// With the block-deflation coarse correction (which works in double, so the
-// work vectors stay double and the inner products single).
+// With the block-deflation coarse correction, which runs on the float work
+// vectors too (BalancingPreconditioner::apply_single), with and without
+// the active-set phase before Polonsky-Keer (the phase applies it in
+// double, Polonsky-Keer then in float).
 TEST(MixedPrecisionTest, GivesTheDoublePressureWithBlockDeflation) {
   constexpr double kTolerance = 1e-10;
+  using ActiveSet = MultilevelOptions::ActiveSet;
   for (const Boundary boundary : {Boundary::periodic, Boundary::free}) {
-    const Grid grid = Grid::plane(256, 256, 1.0, 1.0, boundary);
-    const Eigen::ArrayXd gap = self_affine_gap(grid, 3);
-    // pk-multilevel's fine solve, started from the coarse grids, settles
-    // slowly enough for the correction to join.
-    SolverOptions exact = options_for(SolverType::pk_multilevel, kTolerance, Precision::double_precision);
-    exact.deflation.mode = DeflationOptions::Mode::on;
-    exact.deflation.block = 32;
-    SolverOptions mixed = exact;
-    mixed.precision = Precision::mixed;
-    const Loading loading = Loading::mean_pressure(0.004);
-    const Pair pair{make_solver(grid, kEStar, exact)->solve({gap.data(), grid.size()}, loading),
-                    make_solver(grid, kEStar, mixed)->solve({gap.data(), grid.size()}, loading)};
-    ASSERT_TRUE(pair.exact.converged()) << pair.exact.message;
-    ASSERT_TRUE(pair.mixed.converged()) << pair.mixed.message;
-    ASSERT_GT(pair.mixed.deflation.deflated_iterations, 0) << "the correction must join for this test to mean anything";
-    expect_conditions_hold(grid, gap, pair.mixed, 1e-8 * (gap.maxCoeff() - gap.minCoeff()));
-    EXPECT_LE(pressure_difference(pair), 10.0 * kTolerance) << to_string(boundary);
+    for (const ActiveSet phase : {ActiveSet::off, ActiveSet::on}) {
+      const Grid grid = Grid::plane(256, 256, 1.0, 1.0, boundary);
+      const Eigen::ArrayXd gap = self_affine_gap(grid, 3);
+      // pk-multilevel's fine solve, started from the coarse grids, settles
+      // slowly enough for the correction to join.
+      SolverOptions exact = options_for(SolverType::pk_multilevel, kTolerance, Precision::double_precision);
+      exact.deflation.mode = DeflationOptions::Mode::on;
+      exact.deflation.block = 32;
+      exact.multilevel.active_set = phase;
+      SolverOptions mixed = exact;
+      mixed.precision = Precision::mixed;
+      const Loading loading = Loading::mean_pressure(0.004);
+      const Pair pair{make_solver(grid, kEStar, exact)->solve({gap.data(), grid.size()}, loading),
+                      make_solver(grid, kEStar, mixed)->solve({gap.data(), grid.size()}, loading)};
+      const std::string what = fmt::format("{}, active set {}", to_string(boundary), phase == ActiveSet::on);
+      ASSERT_TRUE(pair.exact.converged()) << what << ": " << pair.exact.message;
+      ASSERT_TRUE(pair.mixed.converged()) << what << ": " << pair.mixed.message;
+      ASSERT_GT(pair.mixed.deflation.deflated_iterations, 0)
+          << what << ": the correction must join for this test to mean anything";
+      if (phase == ActiveSet::on) ASSERT_GT(pair.mixed.active_set_outer, 0) << what;
+      expect_conditions_hold(grid, gap, pair.mixed, 1e-8 * (gap.maxCoeff() - gap.minCoeff()));
+      const double difference = pressure_difference(pair);
+      std::printf("%s: double %d iterations, mixed %d (%d deflated); max |dp| / max p = %.1e\n", what.c_str(),
+                  pair.exact.iterations, pair.mixed.iterations, pair.mixed.deflation.deflated_iterations, difference);
+      EXPECT_LE(difference, 10.0 * kTolerance) << what;
+    }
   }
+}
+
+// The coarse correction on float vectors is the double one to float
+// rounding: B r of the same rough contact set through apply_single (float
+// fields, single-precision K and M^-1, the coarse solve in double) against
+// apply on double operators. Neither equal (the float path would be
+// unused) nor off by more than single precision's products allow; and the
+// correction must change M^-1 r by far more, or the comparison would not
+// see it.
+TEST(MixedPrecisionTest, CoarseCorrectionOnFloatVectorsIsTheDoubleOneToFloatRounding) {
+  const Grid grid = Grid::plane(128, 128, 1.0, 1.0, Boundary::periodic);
+  const auto n = static_cast<Eigen::Index>(grid.size());
+  const Eigen::ArrayXd gap = self_affine_gap(grid, 5);
+  const double threshold = gap.minCoeff() + 0.2 * (gap.maxCoeff() - gap.minCoeff());
+  const Eigen::ArrayXd in_set = (gap < threshold).cast<double>();
+  const SearchSet set{in_set.data(), in_set.data(), false, true};
+  const Eigen::ArrayXd r = in_set * (gap - gap.mean());
+  const std::vector<double> residuals{1.0, 0.9, 0.81};
+  BlockDeflationOptions block;
+  block.block = 16;
+
+  ElasticOperators exact = serial_layout().make_operators(grid, kEStar, true, FftPlanning::estimate);
+  BlockDeflation exact_deflation(grid, block);
+  BalancingPreconditioner exact_b(*exact.op, *exact.fourier, exact_deflation);
+  ElasticOperators mixed = serial_layout().make_mixed_operators(grid, kEStar, true, FftPlanning::estimate);
+  ASSERT_TRUE(mixed.single.precondition);
+  BlockDeflation mixed_deflation(grid, block);
+  BalancingPreconditioner mixed_b(*mixed.inner, *mixed.fourier, mixed_deflation, mixed.single);
+  for (BalancingPreconditioner* b : {&exact_b, &mixed_b}) {
+    b->begin_solve();
+    b->observe_step({0.0, in_set.sum()});
+    b->observe_step({0.0, in_set.sum()});
+    ASSERT_TRUE(b->adapt(set, residuals)) << "the correction must apply";
+  }
+  Eigen::ArrayXd out(n);
+  exact_b.apply({r.data(), grid.size()}, {out.data(), grid.size()});
+  Eigen::ArrayXf single_out = r.cast<float>();
+  mixed_b.apply_single({single_out.data(), grid.size()}, {single_out.data(), grid.size()});
+  Eigen::ArrayXd plain(n);
+  exact.fourier->apply({r.data(), grid.size()}, {plain.data(), grid.size()});
+  // M^-1 alone on the set, mean-free there, for the size of the correction.
+  const double plain_mean = (in_set * plain).sum() / in_set.sum();
+  plain = in_set * (plain - plain_mean);
+
+  const double scale = out.abs().maxCoeff();
+  const double error = (single_out.cast<double>() - out).abs().maxCoeff() / scale;
+  const double correction = (out - plain).abs().maxCoeff() / scale;
+  std::printf("float against double B r: %.1e of max |B r|; the correction changes M^-1 r by %.2f\n", error,
+              correction);
+  EXPECT_GT(error, 0.0) << "the float path was not taken";
+  EXPECT_LT(error, 1e-4);
+  EXPECT_GT(correction, 1e-2);
+  // Off the set the correction is zero in both.
+  for (Eigen::Index i = 0; i < n; ++i) {
+    if (in_set[i] == 0.0) ASSERT_EQ(single_out[i], 0.0F) << i;
+  }
+  SolveResult report;
+  mixed_b.report(report);
+  EXPECT_EQ(report.deflation.deflated_iterations, 1);
 }
 
 // Displacement control too: the approach is given, the load follows.

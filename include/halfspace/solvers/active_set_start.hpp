@@ -79,8 +79,13 @@ class ActiveSetStart final : public ContactSolver {
                             Eigen::ArrayXd&& start) override;
 
  private:
-  // The phase on `pressure` (in place): returns its record.
+  // The phase on `pressure` (in place): returns its record. Its work
+  // vectors t and K t are those of Polonsky-Keer: float with mixed
+  // precision's single-precision work vectors (K t and M^-1 then in single
+  // precision; K p, the set and the approach stay double).
   ActiveSetRecord run(std::span<const double> initial_gap, const Loading& loading, Eigen::ArrayXd& pressure);
+  template <class Work>
+  ActiveSetRecord run_on(std::span<const double> initial_gap, const Loading& loading, Eigen::ArrayXd& pressure);
 
   InfluenceOperator& op_;
   Preconditioner& preconditioner_;

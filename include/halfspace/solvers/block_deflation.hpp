@@ -81,8 +81,12 @@ class BlockDeflation {
 
   // The kernel in real space: `unit_response` = K e_0, the displacement of
   // every cell under unit pressure on cell 0 (this process's rows).
-  // Collective; must be called before update().
+  // Collective; must be called before update(). In single precision (a
+  // mixed-precision solve's float work vectors) its rounding, about 1e-7
+  // of k(0), only perturbs the preconditioner: the coarse matrix is summed
+  // in double either way.
   void set_kernel(std::span<const double> unit_response);
+  void set_kernel(std::span<const float> unit_response);
 
   // Records the coarse set, in_set(i) for each cell, and brings A up to
   // date if the set changed since A was last (or A was never built): from
@@ -149,8 +153,13 @@ class BlockDeflation {
   // caller subtracts from r before M^-1; post_correction, given K v of the
   // result v, solves y2 = A^-1 Z^T K v and adds Z (y1 - y2) to z = v.
   // Fields hold this process's rows; collective on several processes.
+  // The float forms serve single-precision work vectors (mixed precision):
+  // the fields are read and written in float, the block sums and the small
+  // coarse solve stay double.
   void pre_correction(std::span<const double> r, std::span<double> field, bool fixed_load);
   void post_correction(std::span<const double> image, std::span<double> z, bool fixed_load);
+  void pre_correction(std::span<const float> r, std::span<float> field, bool fixed_load);
+  void post_correction(std::span<const float> image, std::span<float> z, bool fixed_load);
 
   const BlockDeflationStats& stats() const { return stats_; }
 
@@ -195,10 +204,19 @@ class BlockDeflation {
   double pair_sum(const ListedCell* first, const ListedCell* first_end, const ListedCell* second,
                   const ListedCell* second_end, int dy, int dx) const;
   void solve_coarse(bool fixed_load);
-  // rhs_ = Z^T field over the current set, summed over the processes.
-  void restrict_to_blocks(std::span<const double> field);
+  // set_kernel, pre_correction and post_correction on fields of T (double or float).
+  template <class T>
+  void set_kernel_from(std::span<const T> unit_response);
+  template <class T>
+  void pre_correction_of(std::span<const T> r, std::span<T> field, bool fixed_load);
+  template <class T>
+  void post_correction_of(std::span<const T> image, std::span<T> z, bool fixed_load);
+  // rhs_ = Z^T field over the current set, summed (in double) over the processes.
+  template <class T>
+  void restrict_to_blocks(std::span<const T> field);
   // z = Z y, or z += Z y, over the current set.
-  void prolong(const std::vector<double>& y, std::span<double> z, bool add) const;
+  template <class T>
+  void prolong(const std::vector<double>& y, std::span<T> z, bool add) const;
 
   Grid grid_;
   BlockDeflationOptions options_;

@@ -136,6 +136,10 @@ class PolonskyKeer final : public ContactSolver {
   // fields of its own for them. With single-precision work vectors they
   // are made (in double) on the first call.
   std::span<double> workspace(int which);
+  // The same in float for a solver with single-precision work vectors
+  // (then the double ones are given back); the products on them.
+  std::span<float> single_workspace(int which);
+  const SinglePrecisionProducts& single_products() const { return single_; }
 
  protected:
   SolveResult do_solve(std::span<const double> initial_gap, const Loading& loading,
