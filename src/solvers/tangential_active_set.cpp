@@ -160,9 +160,8 @@ int TangentialActiveSet::solve_frozen(int budget) {
     });
     op_.apply({f_.rx, n_}, {f_.ry, n_}, {wx, n_}, {wy, n_});
     ++result_.operator_applications;
-    const auto [stiffness] = sums<1>(comm_, n_, [&](std::size_t i) {
-      return std::array<double, 1>{f_.rx[i] * wx[i] + f_.ry[i] * wy[i]};
-    });
+    const auto [stiffness] =
+        sums<1>(comm_, n_, [&](std::size_t i) { return std::array<double, 1>{f_.rx[i] * wx[i] + f_.ry[i] * wy[i]}; });
     const double model = stiffness + bending;
     if (!(model > 0.0)) break;
     const double alpha = rho / model;
@@ -261,9 +260,7 @@ ActiveSetPhase TangentialActiveSet::run(int max_updates, int max_iterations) {
     if (outer + 1 < max_updates) prepare();
   }
   // An admissible traction (the force is the caller's to restore).
-  for_each_index(n_, [&](std::size_t i) {
-    std::tie(f_.qx[i], f_.qy[i]) = clipped(f_.qx[i], f_.qy[i], radius_[i]);
-  });
+  for_each_index(n_, [&](std::size_t i) { std::tie(f_.qx[i], f_.qy[i]) = clipped(f_.qx[i], f_.qy[i], radius_[i]); });
   return phase;
 }
 

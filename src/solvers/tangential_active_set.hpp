@@ -109,9 +109,7 @@ class TangentialActiveSet {
   Frame frame(std::size_t i) const;
   // ds without the approach under force control (the projection removes
   // it), with the prescribed one under displacement control.
-  Pair slip_increment(std::size_t i) const {
-    return {f_.ux[i] - up_x_[i] - fixed_.x, f_.uy[i] - up_y_[i] - fixed_.y};
-  }
+  Pair slip_increment(std::size_t i) const { return {f_.ux[i] - up_x_[i] - fixed_.x, f_.uy[i] - up_y_[i] - fixed_.y}; }
   // The model's gradient restricted to the cell's frame.
   Pair reduced_gradient(std::size_t i, const Frame& c) const;
 

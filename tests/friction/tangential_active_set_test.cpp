@@ -58,11 +58,10 @@ Pair solve_both(TangentialOperator& op, const Eigen::ArrayXd& pressure, const Ta
   EXPECT_GT(r.active.active_set_iterations, 0) << what;
   EXPECT_EQ(r.plain.active_set_updates, 0) << what;
   std::printf(
-      "%s: active set %d updates, %d + %d iterations, %d C + %d M products; default %d iterations, %d C + %d M\n",
-      what, r.active.active_set_updates, r.active.active_set_iterations,
-      r.active.iterations - r.active.active_set_iterations, r.active.operator_applications,
-      r.active.preconditioner_applications, r.plain.iterations, r.plain.operator_applications,
-      r.plain.preconditioner_applications);
+      "%s: active set %d updates, %d + %d iterations, %d C + %d M products; default %d iterations, %d C + %d M\n", what,
+      r.active.active_set_updates, r.active.active_set_iterations, r.active.iterations - r.active.active_set_iterations,
+      r.active.operator_applications, r.active.preconditioner_applications, r.plain.iterations,
+      r.plain.operator_applications, r.plain.preconditioner_applications);
   return r;
 }
 
@@ -89,8 +88,8 @@ void expect_same_step(const Pair& r, const Eigen::ArrayXd& pressure, const Tange
 // set and the annulus slips backwards.
 TEST(TangentialActiveSet, SphereMatchesCattaneoMindlinAndTheDefaultSolver) {
   const ElasticPair pair = ElasticPair::similar(kSteel);
-  constexpr double kForce = 10.0;          // N
-  constexpr double kSphereRadius = 0.01;   // m
+  constexpr double kForce = 10.0;         // N
+  constexpr double kSphereRadius = 0.01;  // m
   const auto hertz = testing::hertz_point(kForce, kSphereRadius, pair.composite_modulus());
   const std::size_t n = 48;
   const auto [grid, contact] = testing::hertz_sphere_contact(pair, kForce, kSphereRadius, n);
@@ -98,8 +97,8 @@ TEST(TangentialActiveSet, SphereMatchesCattaneoMindlinAndTheDefaultSolver) {
   TangentialOperator op(grid, pair);
   const TangentialState unloaded = TangentialState::unloaded(grid.size());
   const double ratio = 0.5;
-  const Pair loaded = solve_both(op, contact.pressure, TangentialLoading::force(ratio * kMu * kForce), unloaded,
-                                 1e-10, "sphere, Q = 0.5 mu P");
+  const Pair loaded = solve_both(op, contact.pressure, TangentialLoading::force(ratio * kMu * kForce), unloaded, 1e-10,
+                                 "sphere, Q = 0.5 mu P");
   expect_same_step(loaded, contact.pressure, unloaded, "sphere, Q = 0.5 mu P");
   const TangentialResult& r = loaded.active;
   EXPECT_NEAR(r.force_x, ratio * kMu * kForce, 1e-10 * kForce);
@@ -124,11 +123,10 @@ TEST(TangentialActiveSet, SphereMatchesCattaneoMindlinAndTheDefaultSolver) {
   EXPECT_LE(std::abs(stick_radius - c), grid.dx());
   EXPECT_LE(worst, 0.06 * kMu * hertz.peak);
 
-  const Pair unloading = solve_both(op, contact.pressure, TangentialLoading::force(0.25 * kMu * kForce), r.state,
-                                    1e-10, "sphere, unloaded to 0.25 mu P");
+  const Pair unloading = solve_both(op, contact.pressure, TangentialLoading::force(0.25 * kMu * kForce), r.state, 1e-10,
+                                    "sphere, unloaded to 0.25 mu P");
   expect_same_step(unloading, contact.pressure, r.state, "sphere, unloaded to 0.25 mu P");
-  testing::expect_coulomb_conditions(op, contact.pressure, kMu, r.state, unloading.active, 1e-7 * hertz.approach,
-                                     1e-2);
+  testing::expect_coulomb_conditions(op, contact.pressure, kMu, r.state, unloading.active, 1e-7 * hertz.approach, 1e-2);
 }
 
 // Cattaneo's cylinder (plane strain, 1D free grid): c/b = sqrt(1 - Q/(mu P)).
@@ -215,8 +213,8 @@ TEST(TangentialActiveSet, StepShortOfItsIterationsIsReported) {
   o.max_iterations = 4;
   TangentialSolver solver(op, o);
   const TangentialResult r =
-      solver.solve({contact.pressure.data(), grid.size()},
-                   TangentialLoading::force(0.5 * kMu * contact.total_force), TangentialState::unloaded(grid.size()));
+      solver.solve({contact.pressure.data(), grid.size()}, TangentialLoading::force(0.5 * kMu * contact.total_force),
+                   TangentialState::unloaded(grid.size()));
   EXPECT_FALSE(r.converged());
   EXPECT_EQ(r.status, SolveStatus::iteration_limit);
   EXPECT_EQ(r.iterations, 4);

@@ -82,7 +82,10 @@ struct TangentialOptions {
   // gradients solve the linear problem on the stick cells, then the sets
   // and directions updated from the slip increment; the conjugate
   // gradients finish from where the sets settle (tangential_active_set.hpp).
-  // >= 0.
+  // Off by default: on the benchmark's rough contact it cost 65, 104, 165
+  // products for the first step at 256^2, 512^2, 1024^2 against 66, 100,
+  // 159 without, and 439 against 273 at 2048^2, where the sets took 27
+  // updates to settle (docs/development-log.md, 2026-11-29, tang4). >= 0.
   int active_set_updates = 0;
   // Called once per iteration with (iteration, residual); may be empty or stop the solve.
   ProgressCallback progress;
