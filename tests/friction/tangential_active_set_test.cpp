@@ -129,6 +129,29 @@ TEST(TangentialActiveSet, SphereMatchesCattaneoMindlinAndTheDefaultSolver) {
   testing::expect_coulomb_conditions(op, contact.pressure, kMu, r.state, unloading.active, 1e-7 * hertz.approach, 1e-2);
 }
 
+// A tangential displacement three times the onset of sliding: no cell
+// sticks (the phase's stick set empties), the force is mu P to within
+// the sideways turn of the slips, as the default solver finds.
+TEST(TangentialActiveSet, SphereSlidesUnderALargeDisplacement) {
+  const ElasticPair pair = ElasticPair::similar(kSteel);
+  constexpr double kForce = 10.0;         // N
+  constexpr double kSphereRadius = 0.01;  // m
+  const auto hertz = testing::hertz_point(kForce, kSphereRadius, pair.composite_modulus());
+  const auto [grid, contact] = testing::hertz_sphere_contact(pair, kForce, kSphereRadius, 32);
+  ASSERT_TRUE(contact.converged());
+  TangentialOperator op(grid, pair);
+  const double g = kSteel.youngs_modulus / (2.0 * (1.0 + kSteel.poissons_ratio));
+  const double onset = 3.0 * kMu * kForce / (16.0 * hertz.radius) * 2.0 * (2.0 - kSteel.poissons_ratio) / g;
+  const TangentialState unloaded = TangentialState::unloaded(grid.size());
+  const Pair r = solve_both(op, contact.pressure, TangentialLoading::displacement(3.0 * onset), unloaded, 1e-8,
+                            "sphere, sliding by displacement");
+  expect_same_step(r, contact.pressure, unloaded, "sphere, sliding by displacement");
+  EXPECT_EQ(r.active.stick_fraction, 0.0);
+  EXPECT_TRUE(r.active.gross_sliding);
+  EXPECT_LE(r.active.force_x, kMu * contact.total_force * (1.0 + 1e-12));
+  EXPECT_GE(r.active.force_x, 0.999 * kMu * contact.total_force);
+}
+
 // Cattaneo's cylinder (plane strain, 1D free grid): c/b = sqrt(1 - Q/(mu P)).
 TEST(TangentialActiveSet, CylinderStickHalfWidth) {
   const ElasticPair pair = ElasticPair::similar(kSteel);
