@@ -161,6 +161,10 @@ const std::array kOptions{
     SolveOption{"tangential-release-period", &SolveOptions::tangential_release_period, Kind::integer, kFriction, "N",
                 "tangential conjugate gradients: slipping cells whose slip turned back inward return to the stick "
                 "set only every N iterations, held on their circle between (1: every iteration) [5]"},
+    SolveOption{"tangential-active-set", &SolveOptions::tangential_active_set, Kind::integer, kFriction, "N",
+                "tangential step: at most N semi-smooth Newton updates of the stick/slip sets and slip directions "
+                "(conjugate gradients on the frozen sets between) before the conjugate gradients finish (0: none) "
+                "[0]"},
     SolveOption{"no-coupling", &SolveOptions::no_coupling, Kind::flag, kFriction, "",
                 "dissimilar bodies (Dundurs' beta != 0): ignore the normal-tangential coupling (the pressure of the "
                 "frictionless solve, for comparison); by default the coupled problem is solved"},

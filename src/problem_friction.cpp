@@ -12,11 +12,12 @@
 namespace halfspace::detail {
 
 std::string_view friction_name(std::string_view member, const solvers::FrictionOptions& friction) {
-  static constexpr std::array<std::pair<std::string_view, std::string_view>, 5> kMembers{{
+  static constexpr std::array<std::pair<std::string_view, std::string_view>, 6> kMembers{{
       {"sliding", "sliding"},
       {"tolerance", "tangential_tol"},
       {"max_iterations", "tangential_max_iter"},
       {"release_period", "tangential_release_period"},
+      {"active_set_updates", "tangential_active_set"},
       {"normal_load_steps", "normal_load_steps"},
   }};
   if (member == "tangential_load") {
@@ -35,8 +36,8 @@ std::string_view friction_name(std::string_view member, const solvers::FrictionO
 // FrictionOptions::validate(normal), named by the problem's options.
 std::optional<solvers::FrictionOptions> Rules::friction(const solvers::SolverOptions& normal, std::size_t loads) const {
   const Presence tangential = presence({"tangential_force", "tangential_displacement", "sliding"});
-  const Presence settings =
-      presence({"tangential_tol", "tangential_max_iter", "tangential_release_period", "coupling", "normal_load_steps"});
+  const Presence settings = presence({"tangential_tol", "tangential_max_iter", "tangential_release_period",
+                                      "tangential_active_set", "coupling", "normal_load_steps"});
   const std::string mu = o_.friction ? describe("friction", *o_.friction) : std::string();
   if (!o_.friction) {
     for (const Presence& options : {tangential, settings}) {
@@ -91,6 +92,7 @@ std::optional<solvers::FrictionOptions> Rules::friction(const solvers::SolverOpt
   const auto clamped = [](long long value) { return static_cast<int>(std::clamp<long long>(value, INT_MIN, INT_MAX)); };
   if (o_.tangential_max_iter) friction.max_iterations = clamped(*o_.tangential_max_iter);
   if (o_.tangential_release_period) friction.release_period = clamped(*o_.tangential_release_period);
+  if (o_.tangential_active_set) friction.active_set_updates = clamped(*o_.tangential_active_set);
   if (o_.normal_load_steps) friction.normal_load_steps = clamped(*o_.normal_load_steps);
   if (o_.coupling) {
     if (*o_.coupling != "on" && *o_.coupling != "off") {

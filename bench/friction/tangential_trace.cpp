@@ -4,7 +4,8 @@
 // the products, the stick fraction. The pressure of the normal solve is
 // kept in a file (the third argument) so that a second run skips it.
 // Usage: tangential_trace N [MAX_ITERATIONS] [PRESSURE_FILE] [EVERY] [coarse]
-// (coarse: TangentialOptions::coarse_start on).
+// [active=UPDATES] (coarse: TangentialOptions::coarse_start on; active:
+// TangentialOptions::active_set_updates, 10 if no number is given).
 // One thread; iteration and product counts, not times, are what it is for.
 #include <fmt/format.h>
 
@@ -14,6 +15,7 @@
 #include <exception>
 #include <fstream>
 #include <span>
+#include <stdexcept>
 #include <string>
 
 #include "halfspace/elastic_pair.hpp"
@@ -74,6 +76,7 @@ void report(const char* name, const TangentialResult& r) {
   fmt::print("{}: {} iterations, {} C products, {} M products, residual {:.3e}, stick {:.4f}, force {:.6g}, {}\n", name,
              r.iterations, r.operator_applications, r.preconditioner_applications, r.residual, r.stick_fraction,
              r.force_x, r.converged() ? "converged" : r.message);
+  fmt::print("  active-set phase: {} updates, {} inner iterations\n", r.active_set_updates, r.active_set_iterations);
   fmt::print(
       "  coarse: {} levels, {} iterations, worth {:.1f} C and {:.1f} M products; all products {:.1f}\n",
       r.coarse.levels, r.coarse.iterations, r.coarse.operator_work, r.coarse.preconditioner_work,
@@ -86,14 +89,26 @@ void report(const char* name, const TangentialResult& r) {
 int main(int argc, char** argv) {
   try {
     if (argc < 2) {
-      std::fprintf(stderr, "usage: tangential_trace N [MAX_ITERATIONS] [PRESSURE_FILE] [EVERY] [coarse]\n");
+      std::fprintf(stderr,
+                   "usage: tangential_trace N [MAX_ITERATIONS] [PRESSURE_FILE] [EVERY] [coarse] [active=UPDATES]\n");
       return 2;
     }
     const auto n = static_cast<std::size_t>(std::stoul(argv[1]));
     const int cap = argc > 2 ? std::stoi(argv[2]) : 20000;
     const std::string file = argc > 3 ? argv[3] : "";
     const int every = argc > 4 ? std::stoi(argv[4]) : 1;
-    const bool coarse = argc > 5 && std::string(argv[5]) == "coarse";
+    bool coarse = false;
+    int active_set_updates = 0;
+    for (int a = 5; a < argc; ++a) {
+      const std::string arg = argv[a];
+      if (arg == "coarse") {
+        coarse = true;
+      } else if (arg.starts_with("active")) {
+        active_set_updates = arg.size() > 7 ? std::stoi(arg.substr(7)) : 10;
+      } else {
+        throw std::invalid_argument("unknown argument " + arg + ": allowed are coarse and active[=UPDATES]");
+      }
+    }
     set_threads(1);
     const Grid grid = Grid::plane(n, n, kSpacing, kSpacing, Boundary::periodic);
     const ElasticPair pair = ElasticPair::similar(kSteel);
@@ -105,6 +120,7 @@ int main(int argc, char** argv) {
     options.tolerance = kTolerance;
     options.max_iterations = cap;
     options.coarse_start = coarse;
+    options.active_set_updates = active_set_updates;
     options.progress = [every](int iteration, double residual) {
       if (iteration % every == 0) fmt::print("  {:5d} {:.3e}\n", iteration, residual);
       std::fflush(stdout);

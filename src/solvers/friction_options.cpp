@@ -34,6 +34,7 @@ TangentialOptions FrictionOptions::tangential_options() const {
   options.tolerance = tolerance;
   options.max_iterations = max_iterations;
   options.release_period = release_period;
+  options.active_set_updates = active_set_updates;
   return options;
 }
 
@@ -77,6 +78,10 @@ void FrictionOptions::validate() const {
   }
   if (release_period < 1) {
     throw SolverOptionError("release_period", fmt::format("{}", release_period), "is invalid: must be at least 1");
+  }
+  if (active_set_updates < 0) {
+    throw SolverOptionError("active_set_updates", fmt::format("{}", active_set_updates),
+                            "is invalid: must be at least 0 (0: no active-set phase)");
   }
   if (normal_load_steps < 1) {
     throw SolverOptionError("normal_load_steps", fmt::format("{}", normal_load_steps),

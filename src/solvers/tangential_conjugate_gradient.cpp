@@ -46,10 +46,10 @@ void ConjugateGradientMethod::step() {
   const Pair shift_g = force ? solve_pseudo(gram, {sum_x, sum_y}) : Pair{};
   // Pass B: Pi R g into t, then z = M t in place.
   for_each_index(n_, [&](std::size_t i) {
-    const Pair g = projected_gradient(i, shift_g);
-    const double scale = cell(i).scale;
-    f_.tx[i] = scale * g.x;
-    f_.ty[i] = scale * g.y;
+    const Cell c = cell(i);
+    const Pair g = projected_gradient(i, c, shift_g);
+    f_.tx[i] = c.scale * g.x;
+    f_.ty[i] = c.scale * g.y;
   });
   op_.apply_approximate_inverse({f_.tx, n_}, {f_.ty, n_}, {f_.tx, n_}, {f_.ty, n_});
   ++result_.preconditioner_applications;
@@ -72,7 +72,7 @@ void ConjugateGradientMethod::step() {
     const Pair a = c.tangent(shift_z.x, shift_z.y);
     f_.tx[i] = z.x - a.x;
     f_.ty[i] = z.y - a.y;
-    const Pair g = projected_gradient(i, shift_g);
+    const Pair g = projected_gradient(i, c, shift_g);
     const Pair d = c.tangent(f_.rx[i], f_.ry[i]);
     return std::array<double, 2>{g.x * f_.tx[i] + g.y * f_.ty[i], g.x * d.x + g.y * d.y};
   });
@@ -119,7 +119,7 @@ void ConjugateGradientMethod::step() {
     }
     f_.rx[i] = dx;
     f_.ry[i] = dy;
-    const Pair g = projected_gradient(i, shift_g);
+    const Pair g = projected_gradient(i, c, shift_g);
     return std::array<double, 2>{g.x * dx + g.y * dy, c.curvature * (dx * dx + dy * dy)};
   });
   // w = C d into g's fields.
@@ -138,8 +138,11 @@ void ConjugateGradientMethod::step() {
   }
   const double alpha = descent / model;
   // Pass E: q -= alpha d, slipping cells back onto their circles, stick
-  // cells over their discs clipped onto them.
+  // cells over their discs clipped onto them; u -= alpha C d in the same
+  // pass (replaced below by the exact product where that is due).
   const auto [clipped_cells, stick_cells, sum_qx, sum_qy] = sums<4>(comm_, n_, [&](std::size_t i) {
+    f_.ux[i] -= alpha * wx[i];
+    f_.uy[i] -= alpha * wy[i];
     const std::uint8_t kind = f_.kind[i];
     if (kind == kOutside) return std::array<double, 4>{};
     const bool slip = kind == kSlip;
@@ -189,11 +192,7 @@ void ConjugateGradientMethod::step() {
   // second-order pull, while no cell was clipped; exactly every few steps
   // and always before the stop (evaluate()).
   if (linear && updates_since_exact_ + 1 < kConjugateUpdatesBetweenExactProducts) {
-    for_each_index(n_, [&](std::size_t i) {
-      f_.ux[i] -= alpha * wx[i];
-      f_.uy[i] -= alpha * wy[i];
-    });
-    ++updates_since_exact_;
+    ++updates_since_exact_;  // u followed in pass E
   } else {
     it_.exact_displacement();
   }

@@ -95,9 +95,8 @@ class ConjugateGradientMethod {
     return c;
   }
 
-  // Pi R g at cell i (zero out of contact).
-  Pair projected_gradient(std::size_t i, const Pair& shift) const {
-    const Cell c = cell(i);
+  // Pi R g at cell i, c its cell(i) (zero out of contact).
+  Pair projected_gradient(std::size_t i, const Cell& c, const Pair& shift) const {
     if (!c.contact) return {};
     const Pair g = c.tangent(f_.gx[i], f_.gy[i]);
     const Pair a = c.tangent(shift.x, shift.y);

@@ -20,6 +20,7 @@
 #include "halfspace/error.hpp"
 #include "halfspace/linalg/parallel.hpp"
 #include "halfspace/solvers/grid_transfer.hpp"
+#include "tangential_active_set.hpp"
 #include "tangential_conjugate_gradient.hpp"
 #include "tangential_iteration.hpp"
 #include "tangential_projected_gradient.hpp"
@@ -71,6 +72,9 @@ void TangentialOptions::validate() const {
   if (release_period < 1) {
     throw InputError(fmt::format("release_period = {} is invalid: must be at least 1", release_period));
   }
+  if (active_set_updates < 0) {
+    throw InputError(fmt::format("active_set_updates = {} is invalid: must be at least 0", active_set_updates));
+  }
   if (!(coarse_tolerance > 0.0 && coarse_tolerance < 1.0)) {
     throw InputError(fmt::format("coarse_tolerance = {} is invalid: allowed range is (0, 1)", coarse_tolerance));
   }
@@ -90,6 +94,10 @@ TangentialSolver::TangentialSolver(TangentialOperator& op, TangentialOptions opt
   for (Eigen::ArrayXd* field : {&gx_, &gy_, &tx_, &ty_, &rx_, &ry_}) field->setZero(n);
   if (options_.method == TangentialMethod::conjugate_gradient) {
     kind_.assign(op_.local_size(), 0);
+    if (options_.active_set_updates > 0) {
+      tangent_motion_.assign(op_.local_size(), 0.0F);
+      curvature_.assign(op_.local_size(), 0.0F);
+    }
   }
 }
 
@@ -295,11 +303,22 @@ TangentialResult TangentialSolver::solve(std::span<const double> pressure, const
   } else {
     it.start(coarse_started);
     bool conjugate = options_.method == TangentialMethod::conjugate_gradient;
+    if (conjugate && options_.active_set_updates > 0) {
+      // The sets settled by the active-set phase, then its traction projected
+      // onto the force, from which the conjugate gradients finish (and
+      // first check the duality gap on an exact product).
+      TangentialActiveSet active_set(it, tangent_motion_, curvature_);
+      const ActiveSetPhase phase = active_set.run(options_.active_set_updates, options_.max_iterations);
+      result.active_set_updates = phase.updates;
+      result.active_set_iterations = phase.iterations;
+      it.resume();
+    }
+    const int offset = result.active_set_iterations;
     double best = std::numeric_limits<double>::infinity();
     int best_at = 0;
     for (;; ++k) {
-      it.evaluate(k);
-      if (it.finished(k)) break;
+      it.evaluate(offset + k);
+      if (it.finished(offset + k)) break;
       if (conjugate) {
         // A stall (the gap not halved in kStalledConjugateSteps steps) hands
         // over to projected gradients, which converge whatever the sets do.
@@ -325,7 +344,7 @@ TangentialResult TangentialSolver::solve(std::span<const double> pressure, const
     delta_y = it.approach_y();
     result.residual = it.residual();
   }
-  result.iterations = k;
+  result.iterations = k + result.active_set_iterations;
 
   // The state and the step's integrals.
   if (fixed) {

@@ -505,6 +505,9 @@ TEST(FrictionCliTest, RefusalsNameTheOptions) {
        {"--tangential-release-period 0 is invalid: must be at least 1"}},
       {sphere(16, "bad.h5", {"--tangential-release-period", "2"}),
        {"--tangential-release-period 2 needs --friction MU"}},
+      {sphere(16, "bad.h5", {"--friction", "0.3", "--tangential-force", "1", "--tangential-active-set", "-1"}),
+       {"--tangential-active-set -1 is invalid: must be at least 0"}},
+      {sphere(16, "bad.h5", {"--tangential-active-set", "10"}), {"--tangential-active-set 10 needs --friction MU"}},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.message.front());

@@ -53,6 +53,24 @@ def test_cattaneo_mindlin_sphere():
     assert result.attributes["tangential_force_x"] == pytest.approx(ratio * MU * FORCE, rel=1e-9)
 
 
+def test_active_set_phase_gives_the_same_step():
+    # tangential_active_set (--tangential-active-set): the same traction and approach as the default solver.
+    ratio = 0.5
+    surface = sphere(24)
+    results = [hs.solve(surface, **STEEL, force=FORCE, friction=MU, tangential_force=(ratio * MU * FORCE, 0.0),
+                        tangential_tol=1e-10, tangential_active_set=updates, threads=1, fft_planning="estimate")
+               for updates in (None, 20)]
+    for result in results:
+        assert result.converged and result.friction["converged"], result.friction["message"]
+    plain, active = results
+    limit = MU * plain.pressure.max()
+    assert np.max(np.abs(active.shear_x - plain.shear_x)) <= 1e-3 * limit
+    assert np.max(np.abs(active.shear_y - plain.shear_y)) <= 1e-3 * limit
+    assert active.friction["tangential_approach"][0] == pytest.approx(plain.friction["tangential_approach"][0],
+                                                                      rel=1e-4)
+    assert active.friction["stick_fraction"] == pytest.approx(plain.friction["stick_fraction"], abs=0.01)
+
+
 def test_fretting_history_dissipates_mindlin_deresiewicz_energy(tmp_path):
     amplitude = 0.6  # Q*/(mu P)
     peak = amplitude * MU * FORCE
@@ -131,6 +149,9 @@ def test_sliding_and_displacement_control():
     (dict(friction=0.3, tangential_force=1.0, tangential_release_period=0),
      "tangential_release_period=0 is invalid: must be at least 1"),
     (dict(tangential_release_period=2), "tangential_release_period=2 needs friction=MU"),
+    (dict(friction=0.3, tangential_force=1.0, tangential_active_set=-1),
+     "tangential_active_set=-1 is invalid: must be at least 0"),
+    (dict(tangential_active_set=10), "tangential_active_set=10 needs friction=MU"),
     (dict(friction=0.3, tangential_force=1.0, normal_load_steps=0), "normal_load_steps=0 is invalid"),
     (dict(friction=0.3, tangential_force=1.0, coupling="off"), "coupling='off' is invalid: give True or False"),
     (dict(friction=0.3, tangential_force=1.0, adhesion="md", work_of_adhesion=0.1, adhesion_range=1e-8),

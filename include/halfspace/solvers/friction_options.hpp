@@ -32,7 +32,8 @@ struct FrictionOptions {
   std::optional<std::array<double, 2>> sliding_direction;
   double tolerance = 1e-6;  // of the tangential solver's residual (tangential_solver.hpp)
   int max_iterations = 10000;
-  int release_period = 5;  // TangentialOptions::release_period
+  int release_period = 5;      // TangentialOptions::release_period
+  int active_set_updates = 0;  // TangentialOptions::active_set_updates (0: no active-set phase)
   // Elastically dissimilar bodies (Dundurs' beta != 0): solve the coupled
   // normal-tangential problem (coupled_step.hpp), or, false, ignore the
   // coupling (the uncoupled approximation, for comparison). No effect for
@@ -60,8 +61,9 @@ struct FrictionOptions {
   // >= 0 ("friction"); exactly one of a non-empty history ("tangential_load")
   // and a sliding direction ("sliding") is given; every load step is finite;
   // the direction is finite and not zero, and mu > 0 when sliding; the
-  // tangential tolerance, iteration limit and release period are valid
-  // ("tolerance", "max_iterations", "release_period"); normal_load_steps, coupling_tolerance and
+  // tangential tolerance, iteration limit, release period and active-set
+  // updates are valid ("tolerance", "max_iterations", "release_period",
+  // "active_set_updates"); normal_load_steps, coupling_tolerance and
   // max_alternations are valid (their names).
   void validate() const;
 

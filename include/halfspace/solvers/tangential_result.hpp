@@ -55,6 +55,11 @@ struct TangentialResult {
   // iterations, and their products C and M weighted by their cells over
   // this grid's (the fine products they cost); not in the counts above.
   CoarseStart coarse;
+  // The active-set phase (TangentialOptions::active_set_updates): its set
+  // updates and inner conjugate-gradient iterations (the latter counted in
+  // `iterations`, its products in the counts above).
+  int active_set_updates = 0;
+  int active_set_iterations = 0;
   double wall_seconds = 0.0;
   // Coupled steps of dissimilar bodies (coupled_step.hpp): the normal and
   // tangential solves alternated, and the last pass's change (zero both

@@ -76,12 +76,23 @@ struct TangentialOptions {
   // benchmark's 1024^2 contact 1e-2, 1e-3, 1e-4 gave 139, 132, 154 fine
   // products' worth for the first step (docs/development-log.md).
   double coarse_tolerance = 1e-3;
+  // Conjugate gradients: at most this many updates of an active-set
+  // (semi-smooth Newton) phase before them, 0 for none: the stick set and
+  // the slipping cells' directions held while preconditioned conjugate
+  // gradients solve the linear problem on the stick cells, then the sets
+  // and directions updated from the slip increment; the conjugate
+  // gradients finish from where the sets settle (tangential_active_set.hpp).
+  // Off by default: on the benchmark's rough contact it cost 65, 104, 165
+  // products for the first step at 256^2, 512^2, 1024^2 against 66, 100,
+  // 159 without, and 439 against 273 at 2048^2, where the sets took 27
+  // updates to settle (docs/development-log.md, 2026-11-29, tang4). >= 0.
+  int active_set_updates = 0;
   // Called once per iteration with (iteration, residual); may be empty or stop the solve.
   ProgressCallback progress;
 
   // Throws InputError naming the option unless mu is finite and >= 0,
-  // 0 < tolerance < 1, max_iterations >= 1, release_period >= 1 and
-  // 0 < coarse_tolerance < 1.
+  // 0 < tolerance < 1, max_iterations >= 1, release_period >= 1,
+  // 0 < coarse_tolerance < 1 and active_set_updates >= 0.
   void validate() const;
 };
 
@@ -131,7 +142,10 @@ class TangentialSolver {
   // iterate or preconditioned gradient.
   Eigen::ArrayXd gx_, gy_, tx_, ty_, rx_, ry_;
   std::vector<std::uint8_t> kind_;  // conjugate gradients: each cell's set within a step
-  Eigen::ArrayXd fx_, fy_;          // the previous displacement less the fixed part (made on the first coupled solve)
+  // The active-set phase (active_set_updates > 0): each slipping cell's
+  // tangential motion and curvature within an outer iteration.
+  std::vector<float> tangent_motion_, curvature_;
+  Eigen::ArrayXd fx_, fy_;  // the previous displacement less the fixed part (made on the first coupled solve)
 };
 
 }  // namespace halfspace::solvers
