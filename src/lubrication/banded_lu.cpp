@@ -36,8 +36,7 @@ bool banded_lu_factorise(std::span<double> band, std::span<int> pivots, int kl, 
   return true;
 }
 
-void banded_lu_solve(std::span<const double> band, std::span<const int> pivots, int kl, int ku,
-                     std::span<double> rhs) {
+void banded_lu_solve(std::span<const double> band, std::span<const int> pivots, int kl, int ku, std::span<double> rhs) {
   const std::size_t n = pivots.size();
   const auto at = [&](std::size_t i, std::size_t j) { return band[banded_index(kl, ku, i, j)]; };
   // L y = P b, the interchanges applied as the factorisation made them.

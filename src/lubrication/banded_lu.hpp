@@ -11,7 +11,9 @@ namespace halfspace::lubrication::detail {
 
 // Doubles of band storage per row of an n x n matrix with kl sub- and ku
 // super-diagonals: the band plus kl rows for the pivoting's fill.
-inline std::size_t banded_lu_stride(int kl, int ku) { return static_cast<std::size_t>(2 * kl + ku + 1); }
+inline std::size_t banded_lu_stride(int kl, int ku) {
+  return static_cast<std::size_t>(2 * kl + ku + 1);
+}
 
 // A(i, j) for |i - j| within the band lives at band[j * stride + kl + ku + i - j].
 inline std::size_t banded_index(int kl, int ku, std::size_t i, std::size_t j) {
@@ -24,7 +26,6 @@ inline std::size_t banded_index(int kl, int ku, std::size_t i, std::size_t j) {
 bool banded_lu_factorise(std::span<double> band, std::span<int> pivots, int kl, int ku);
 
 // Solves A x = rhs in place with the factors of banded_lu_factorise.
-void banded_lu_solve(std::span<const double> band, std::span<const int> pivots, int kl, int ku,
-                     std::span<double> rhs);
+void banded_lu_solve(std::span<const double> band, std::span<const int> pivots, int kl, int ku, std::span<double> rhs);
 
 }  // namespace halfspace::lubrication::detail

@@ -4,8 +4,8 @@
 // coarse correction prolongated by P, a backward sweep (the sweeps in
 // opposite orders so that flow across the lines, whichever its sign, is
 // met downstream once). The coarse operators are Galerkin's, P^T A P
-// (Wesseling 1992, "An Introduction to Multigrid Methods", ch. 6; Trottenberg,
-// Oosterlee & Schüller 2001, sec. 7.7 on cell-centred transfers): they need
+// (Wesseling 1992, "An Introduction to Multigrid Methods"; Trottenberg,
+// Oosterlee & Schüller 2001, "Multigrid", on cell-centred transfers): they need
 // nothing of the physics, so cavitated rows, fixed-pressure edges and the
 // elastic diagonal coarsen alike.
 #include "film_multigrid.hpp"
@@ -115,8 +115,12 @@ FilmMultigrid::FilmMultigrid(const Grid& grid, int line_axis, bool scale_columns
   line_rhs_.resize(std::max(levels_[0].nx, levels_[0].ny));
 }
 
-std::size_t FilmMultigrid::line_count(const Level& level) const { return line_axis_ == 0 ? level.ny : level.nx; }
-std::size_t FilmMultigrid::line_length(const Level& level) const { return line_axis_ == 0 ? level.nx : level.ny; }
+std::size_t FilmMultigrid::line_count(const Level& level) const {
+  return line_axis_ == 0 ? level.ny : level.nx;
+}
+std::size_t FilmMultigrid::line_length(const Level& level) const {
+  return line_axis_ == 0 ? level.nx : level.ny;
+}
 std::size_t FilmMultigrid::node(const Level& level, std::size_t line, std::size_t t) const {
   return line_axis_ == 0 ? line * level.nx + t : t * level.nx + line;
 }
@@ -198,8 +202,8 @@ void FilmMultigrid::galerkin(const Level& fine, Level& coarse) {
     const long xi = static_cast<long>(i) % fnx, yi = static_cast<long>(i) / fnx;
     for (int e = a.start[i]; e < a.start[i + 1]; ++e) {
       const long j = a.column[e];
-      reach = std::max({reach, std::abs(offset(xi, j % fnx, fnx, periodic_)),
-                        std::abs(offset(yi, j / fnx, fny, periodic_))});
+      reach = std::max(
+          {reach, std::abs(offset(xi, j % fnx, fnx, periodic_)), std::abs(offset(yi, j / fnx, fny, periodic_))});
     }
   }
   const long w = (reach + 3) / 2;
@@ -300,11 +304,7 @@ bool FilmMultigrid::factorise(const CsrMatrix& matrix, std::string& message) {
     const Eigen::Map<const Eigen::SparseMatrix<double, Eigen::RowMajor, int>> rows(
         n, n, static_cast<Eigen::Index>(a.entries()), a.start.data(), a.column.data(), a.value.data());
     coarsest_ = rows;
-    if (!coarsest_analysed_) {
-      coarsest_lu_.analyzePattern(coarsest_);
-      coarsest_analysed_ = true;
-    }
-    coarsest_lu_.factorize(coarsest_);
+    coarsest_lu_.compute(coarsest_);  // at most kDirectNodes nodes: analysed afresh, whatever the pattern
     if (coarsest_lu_.info() != Eigen::Success) {
       message = fmt::format("the EHL multigrid preconditioner's coarsest grid ({} x {}) is singular: {}",
                             levels_.back().nx, levels_.back().ny, coarsest_lu_.lastErrorMessage());

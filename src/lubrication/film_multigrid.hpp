@@ -4,7 +4,7 @@
 // exactly), Galerkin coarse operators P^T A P with cell-centred bilinear
 // prolongation P, and a sparse LU on the coarsest grid, optionally on the
 // matrix with its unknowns scaled by the diagonal (A D^-1). Venner & Lubrecht
-// (2000, "Multilevel Methods in Lubrication", ch. 7-8) solve the EHL film
+// (2000, "Multilevel Methods in Lubrication") solve the EHL film
 // with line relaxation for the same reason: where the pressure is high the
 // Poiseuille term vanishes and each row is an upwind difference along the
 // flow, which a line solve inverts exactly. Private to the library.
@@ -110,7 +110,6 @@ class FilmMultigrid final : public FilmPreconditioner {
   std::vector<std::pair<int, double>> row_entries_;
   Eigen::SparseMatrix<double> coarsest_;
   Eigen::SparseLU<Eigen::SparseMatrix<double>> coarsest_lu_;
-  bool coarsest_analysed_ = false;
 };
 
 }  // namespace halfspace::lubrication::detail

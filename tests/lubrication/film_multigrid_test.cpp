@@ -3,16 +3,17 @@
 // Reynolds operators (diffusion with an upwind convection along x, the
 // diffusion switched off where the film is piezoviscous), whose residual it
 // must contract at a rate that does not grow with the grid.
+#include "../../src/lubrication/film_multigrid.hpp"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/LU>
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <random>
 #include <vector>
 
 #include "../../src/lubrication/banded_lu.hpp"
-#include "../../src/lubrication/film_multigrid.hpp"
 #include "halfspace/grid.hpp"
 
 namespace halfspace::lubrication::detail {
@@ -121,7 +122,8 @@ TEST(FilmMultigridTest, VCycleContractsModelReynoldsOperatorsAtEveryGridSize) {
 TEST(FilmMultigridTest, DiagonalScalingUndoesTheScaleOfTheUnknowns) {
   const std::size_t n = 128;
   const Grid grid = Grid::plane(n, n, 1.0, 1.0, Boundary::free);
-  CsrMatrix a = model_operator(grid, [](std::size_t, std::size_t) { return 1.0; }, 1.0);
+  CsrMatrix a = model_operator(
+      grid, [](std::size_t, std::size_t) { return 1.0; }, 1.0);
   for (std::size_t e = 0; e < a.entries(); ++e) {
     if ((a.column[e] / static_cast<int>(n)) % 2 == 1) a.value[e] *= 1e5;
   }
@@ -134,13 +136,15 @@ TEST(FilmMultigridTest, DiagonalScalingUndoesTheScaleOfTheUnknowns) {
 TEST(FilmMultigridTest, LinesFollowTheEntrainmentAlongY) {
   const std::size_t n = 128;
   const Grid grid = Grid::plane(n, n, 1.0, 1.0, Boundary::free);
-  const CsrMatrix along_x =
-      model_operator(grid, [&](std::size_t x, std::size_t) { return x < n / 2 ? 100.0 : 1e-6; }, 1.0);
+  const CsrMatrix along_x = model_operator(
+      grid, [&](std::size_t x, std::size_t) { return x < n / 2 ? 100.0 : 1e-6; }, 1.0);
   // Node (x, y) of the transposed operator is node (y, x) of this one.
   CsrMatrix along_y;
   along_y.rows = along_x.rows;
   along_y.start.push_back(0);
-  const auto swap = [n](int k) { return static_cast<int>((k % static_cast<int>(n)) * static_cast<int>(n) + k / static_cast<int>(n)); };
+  const auto swap = [n](int k) {
+    return static_cast<int>((k % static_cast<int>(n)) * static_cast<int>(n) + k / static_cast<int>(n));
+  };
   for (std::size_t k = 0; k < along_x.rows; ++k) {
     const auto source = static_cast<std::size_t>(swap(static_cast<int>(k)));
     std::vector<std::pair<int, double>> row;
@@ -163,7 +167,8 @@ TEST(FilmMultigridTest, LinesFollowTheEntrainmentAlongY) {
 TEST(FilmMultigridTest, VCycleContractsOnAPeriodicGrid) {
   const std::size_t n = 128;
   const Grid grid = Grid::plane(n, n, 1.0, 1.0, Boundary::periodic);
-  CsrMatrix a = model_operator(grid, [&](std::size_t x, std::size_t) { return x < n / 2 ? 100.0 : 1e-6; }, 1.0);
+  CsrMatrix a = model_operator(
+      grid, [&](std::size_t x, std::size_t) { return x < n / 2 ? 100.0 : 1e-6; }, 1.0);
   for (std::size_t k = 0; k < a.rows; ++k) {
     for (int e = a.start[k]; e < a.start[k + 1]; ++e) {
       if (a.column[e] == static_cast<int>(k)) a.value[e] += 1e-2;
@@ -197,7 +202,8 @@ TEST(BandedLuTest, SolvesABandThatNeedsPivoting) {
   std::vector<double> x(rhs.data(), rhs.data() + n);
   banded_lu_solve(band, pivots, kl, ku, x);
   for (int i = 0; i < n; ++i) {
-    EXPECT_NEAR(x[static_cast<std::size_t>(i)], expected[i], kRounding * expected.cwiseAbs().maxCoeff()) << "entry " << i;
+    EXPECT_NEAR(x[static_cast<std::size_t>(i)], expected[i], kRounding * expected.cwiseAbs().maxCoeff())
+        << "entry " << i;
   }
 }
 
