@@ -2,8 +2,9 @@
 // dense one where it fits): Newton steps, GMRES iterations per step,
 // seconds, peak resident bytes per node, and the films against Hamrock &
 // Dowson (1977, k = 1). Usage: ehl_scaling N [gmres|dense] [neighbourhood]
-// [cold|sequenced] [tolerance] ("cold": no grid sequencing; the relative
-// mass residual and load error to reach, 1e-8 by default).
+// [cold|sequenced] [tolerance] [multigrid|sparse-lu] ("cold": no grid
+// sequencing; the relative mass residual and load error to reach, 1e-8 by
+// default; the GMRES preconditioner, multigrid by default).
 // One solve per process, so that the peak resident size is the solve's.
 #include <fmt/format.h>
 #include <sys/resource.h>
@@ -25,7 +26,9 @@ using bench::kRadius;
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    fmt::print(stderr, "usage: ehl_scaling N [gmres|dense] [neighbourhood] [cold|sequenced] [tolerance]\n");
+    fmt::print(stderr,
+               "usage: ehl_scaling N [gmres|dense] [neighbourhood] [cold|sequenced] [tolerance] "
+               "[multigrid|sparse-lu]\n");
     return 2;
   }
   const auto n = static_cast<std::size_t>(std::atol(argv[1]));
@@ -33,6 +36,8 @@ int main(int argc, char** argv) {
   const int neighbourhood = argc > 3 ? std::atoi(argv[3]) : 0;
   const bool sequencing = !(argc > 4 && std::string_view(argv[4]) == "cold");
   const double tolerance = argc > 5 ? std::atof(argv[5]) : 1e-8;
+  const KrylovPreconditioner preconditioner =
+      argc > 6 ? parse_krylov_preconditioner(argv[6]) : KrylovPreconditioner::multigrid;
   const double w = 3e-7, u = 1e-11, g = 5000;
   const double e_prime = 2.0 * kEStar;
   const double load = w * e_prime * kRadius * kRadius;
@@ -48,6 +53,7 @@ int main(int argc, char** argv) {
                              .load_tolerance = tolerance,
                              .linear_solve = solve,
                              .preconditioner_neighbourhood = neighbourhood,
+                             .preconditioner = preconditioner,
                              .grid_sequencing = sequencing};
   const ElasticFilm f = solve_elastic_film(op, bench::parabolic_gap(grid, upstream, half), bench::rolling(u),
                                            bench::roelands_laws(g), options);
@@ -56,12 +62,13 @@ int main(int argc, char** argv) {
   getrusage(RUSAGE_SELF, &usage);
   const double peak = static_cast<double>(usage.ru_maxrss) * 1024.0;
   fmt::print(
-      "N {} solve {} r {} cells/a {:.1f}: {} coarse levels ({} steps, {} GMRES its{}), {} steps ({} tight retries), {} "
+      "N {} solve {} {} r {} cells/a {:.1f}: {} coarse levels ({} steps, {} GMRES its{}), {} steps ({} tight retries), "
+      "{} "
       "GMRES its "
       "({} most per step), {:.2f} s, {:.0f} B/node, Hc/HD {:.6f} Hmin/HD {:.6f}, h0 {:.9e} {}\n",
-      n, to_string(solve), neighbourhood, a / dx, f.coarse_levels, f.coarse_iterations, f.coarse_krylov_iterations,
-      f.sequencing_fell_back ? ", fell back to cold" : "", f.iterations, f.tight_retries, f.krylov_iterations,
-      f.max_krylov_iterations_per_step, f.wall_seconds, peak / static_cast<double>(n * n),
+      n, to_string(solve), to_string(preconditioner), neighbourhood, a / dx, f.coarse_levels, f.coarse_iterations,
+      f.coarse_krylov_iterations, f.sequencing_fell_back ? ", fell back to cold" : "", f.iterations, f.tight_retries,
+      f.krylov_iterations, f.max_krylov_iterations_per_step, f.wall_seconds, peak / static_cast<double>(n * n),
       f.central_film_thickness / kRadius / hd_central, f.minimum_film_thickness / kRadius / hd_minimum, f.offset,
       f.converged() ? "converged" : f.message);
   return f.converged() ? 0 : 1;

@@ -68,6 +68,16 @@ FilmLinearSolve parse_film_linear_solve(std::string_view text) {
   throw InputError(fmt::format("EHL linear solve '{}' is invalid: allowed are automatic, dense, gmres", text));
 }
 
+std::string_view to_string(KrylovPreconditioner preconditioner) {
+  return preconditioner == KrylovPreconditioner::sparse_lu ? "sparse-lu" : "multigrid";
+}
+
+KrylovPreconditioner parse_krylov_preconditioner(std::string_view text) {
+  if (text == "multigrid") return KrylovPreconditioner::multigrid;
+  if (text == "sparse-lu") return KrylovPreconditioner::sparse_lu;
+  throw InputError(fmt::format("EHL preconditioner '{}' is invalid: allowed are multigrid, sparse-lu", text));
+}
+
 void ElasticFilmOptions::validate() const {
   if (!(std::isfinite(load) && load > 0.0)) {
     throw OptionError("load", format_number(load), "is invalid: the EHL load must be positive and finite");
@@ -96,6 +106,10 @@ void ElasticFilmOptions::validate() const {
   if (preconditioner_neighbourhood < 0 || preconditioner_neighbourhood > 8) {
     throw OptionError("preconditioner_neighbourhood", fmt::format("{}", preconditioner_neighbourhood),
                       "is invalid: allowed range is 0 to 8 cells");
+  }
+  if (preconditioner != KrylovPreconditioner::multigrid && preconditioner != KrylovPreconditioner::sparse_lu) {
+    throw OptionError("preconditioner", fmt::format("{}", static_cast<int>(preconditioner)),
+                      "is invalid: allowed are multigrid, sparse-lu");
   }
 }
 
@@ -194,7 +208,8 @@ detail::FilmKrylovSettings detail::film_krylov_settings(const ElasticFilmOptions
   return {.restart = options.krylov_restart,
           .max_iterations = options.krylov_max_iterations,
           .tolerance = options.krylov_tolerance,
-          .neighbourhood = options.preconditioner_neighbourhood};
+          .neighbourhood = options.preconditioner_neighbourhood,
+          .preconditioner = options.preconditioner};
 }
 
 void detail::require_film_memory(const Grid& grid, const ElasticFilmOptions& options) {

@@ -1,18 +1,19 @@
 // The EHL Newton step's linear solve for grids the dense LU cannot hold:
 // restarted GMRES (Saad & Schultz 1986) on the Jacobian applied matrix-free
 // (the elastic coupling through the influence operator, K never formed),
-// right-preconditioned by a sparse approximation of the Jacobian (the
-// Reynolds stencil with K truncated to a few cells around each node)
-// factorised by Eigen's SparseLU. Private to the library.
+// right-preconditioned by an approximate inverse of the Jacobian's sparse
+// part (the Reynolds stencil with K truncated to a few cells around each
+// node): a multigrid V-cycle or a sparse LU (film_preconditioner.hpp).
+// Private to the library.
 #pragma once
 
 #include <Eigen/Core>
-#include <Eigen/SparseCore>
-#include <Eigen/SparseLU>
 #include <cstddef>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "film_preconditioner.hpp"
 #include "halfspace/lubrication/reynolds_stencil.hpp"
 #include "halfspace/operators/influence_operator.hpp"
 #include "reynolds_linearisation.hpp"
@@ -24,6 +25,7 @@ struct FilmKrylovSettings {
   int max_iterations = 400;  // GMRES iterations per solve, all restarts
   double tolerance = 1e-9;   // on ||J x + r|| / ||r||
   int neighbourhood = 0;     // K kept within this many cells (Chebyshev) in the preconditioner
+  KrylovPreconditioner preconditioner = KrylovPreconditioner::multigrid;
 };
 
 struct FilmKrylovOutcome {
@@ -48,6 +50,11 @@ class FilmKrylovSolver {
  public:
   // Reads the translation-invariant K around a node off one product of `op`.
   FilmKrylovSolver(InfluenceOperator& op, const ReynoldsStencil& topology, const FilmKrylovSettings& settings);
+
+  // The sparse part of the last factorised system (rows of the mass
+  // balances over mass_scale, the unknowns s; no h0 column or load row),
+  // for tests of the preconditioner.
+  const CsrMatrix& preconditioner_matrix() const { return matrix_; }
 
   // Solves J step = -residual for the Newton system of the rows `rows`
   // (mass rows over `mass_scale`), the nodes' branches `branch_full`, the
@@ -77,11 +84,11 @@ class FilmKrylovSolver {
   double mass_scale_ = 1.0, area_over_load_ = 1.0;
   Eigen::VectorXd dp_ds_, dtheta_ds_, product_in_, product_out_;
   // The preconditioner: B (the n x n sparse part) bordered by the h0
-  // column and the load row, solved through B's LU and B^-1 c.
-  std::vector<Eigen::Triplet<double>> triplets_;
-  Eigen::SparseMatrix<double> sparse_;
-  Eigen::SparseLU<Eigen::SparseMatrix<double>> lu_;
-  bool analysed_ = false, factorised_ = false;
+  // column and the load row, solved through M ~ B^-1 and M c.
+  CsrMatrix matrix_;
+  std::vector<std::pair<int, double>> row_scratch_;
+  std::unique_ptr<FilmPreconditioner> preconditioner_;
+  bool factorised_ = false;
   int last_iterations_ = 0;
   Eigen::VectorXd load_row_;  // the load row of the factorised preconditioner
   Eigen::VectorXd border_column_, border_solved_, head_in_, head_out_;

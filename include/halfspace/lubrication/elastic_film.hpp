@@ -66,6 +66,18 @@ std::string_view to_string(FilmLinearSolve solve);
 // "automatic", "dense" or "gmres"; InputError naming the value otherwise.
 FilmLinearSolve parse_film_linear_solve(std::string_view text);
 
+// The preconditioner of the GMRES solve, an approximate inverse of the
+// Jacobian's sparse part (the Reynolds stencil's derivatives with K's
+// diagonal): a geometric multigrid V-cycle (line relaxation along the
+// entrainment, Galerkin coarse grids; its cost grows as the nodes), or
+// that part's sparse LU (exact, but its fill grows as n^1.5: kept for
+// cross-checks).
+enum class KrylovPreconditioner { multigrid, sparse_lu };
+
+std::string_view to_string(KrylovPreconditioner preconditioner);
+// "multigrid" or "sparse-lu"; InputError naming the value otherwise.
+KrylovPreconditioner parse_krylov_preconditioner(std::string_view text);
+
 // How the Couette (wedge) flux U rho h theta of a face is taken from
 // upstream: from the upstream node (first order: monotone, robust at any
 // load, its artificial diffusion thickens the film by O(dx)), or by linear
@@ -95,6 +107,7 @@ struct ElasticFilmOptions {
   int krylov_max_iterations = 400;
   double krylov_tolerance = 1e-9;
   int preconditioner_neighbourhood = 0;
+  KrylovPreconditioner preconditioner = KrylovPreconditioner::multigrid;
   // Grid sequencing: on a grid of more than kAutomaticKrylovNodes nodes
   // with an even number of cells per axis, and without a `start`, the film
   // is first solved on the grid of twice the spacing (recursively, the
@@ -108,7 +121,8 @@ struct ElasticFilmOptions {
   // Throws OptionError naming the option unless load > 0 and finite, 0 <
   // tolerance < 1, 0 < load_tolerance < 1, max_iterations >= 1, 2 <=
   // krylov_restart <= 500, krylov_max_iterations >= 1, 0 <
-  // krylov_tolerance < 1, 0 <= preconditioner_neighbourhood <= 8.
+  // krylov_tolerance < 1, 0 <= preconditioner_neighbourhood <= 8, and
+  // preconditioner one of KrylovPreconditioner's values.
   void validate() const;
 };
 

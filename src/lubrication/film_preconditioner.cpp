@@ -1,0 +1,64 @@
+// The EHL GMRES preconditioners (film_preconditioner.hpp): the sparse LU
+// here, the multigrid in film_multigrid.cpp.
+#include "film_preconditioner.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/SparseCore>
+#include <Eigen/SparseLU>
+
+#include "film_multigrid.hpp"
+
+namespace halfspace::lubrication::detail {
+
+namespace {
+
+// SparseLU's fill relative to the matrix's entries, a measured allowance
+// (64^2 to 256^2 point contacts with COLAMD; docs/performance.md).
+constexpr double kFillAllowance = 12.0;
+
+// Eigen's supernodal LU with the COLAMD ordering; the pattern is the same
+// at every Newton step (every entry written, zero or not), so it is
+// analysed once.
+class SparseLuPreconditioner final : public FilmPreconditioner {
+ public:
+  bool factorise(const CsrMatrix& matrix, std::string& message) override {
+    const auto n = static_cast<Eigen::Index>(matrix.rows);
+    const Eigen::Map<const Eigen::SparseMatrix<double, Eigen::RowMajor, int>> rows(
+        n, n, static_cast<Eigen::Index>(matrix.entries()), matrix.start.data(), matrix.column.data(),
+        matrix.value.data());
+    sparse_ = rows;
+    if (!analysed_) {
+      lu_.analyzePattern(sparse_);
+      analysed_ = true;
+    }
+    lu_.factorize(sparse_);
+    if (lu_.info() != Eigen::Success) {
+      message = fmt::format("the EHL preconditioner's sparse LU failed: {}", lu_.lastErrorMessage());
+      return false;
+    }
+    return true;
+  }
+
+  void apply(const Eigen::VectorXd& in, Eigen::VectorXd& out) override { out = lu_.solve(in); }
+
+ private:
+  Eigen::SparseMatrix<double> sparse_;
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> lu_;
+  bool analysed_ = false;
+};
+
+}  // namespace
+
+std::unique_ptr<FilmPreconditioner> make_film_preconditioner(KrylovPreconditioner kind, const Grid& grid,
+                                                             int line_axis) {
+  if (kind == KrylovPreconditioner::sparse_lu) return std::make_unique<SparseLuPreconditioner>();
+  return std::make_unique<FilmMultigrid>(grid, line_axis, true);
+}
+
+double film_preconditioner_bytes_per_node(KrylovPreconditioner kind, double row_entries) {
+  if (kind == KrylovPreconditioner::sparse_lu) return row_entries * 12.0 * (1.0 + kFillAllowance);
+  return FilmMultigrid::bytes_per_node(row_entries);
+}
+
+}  // namespace halfspace::lubrication::detail
