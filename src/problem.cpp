@@ -220,7 +220,13 @@ solvers::SolverOptions Rules::solver() const {
       solver.deflation.mode = block == 0 ? solvers::DeflationOptions::Mode::off : solvers::DeflationOptions::Mode::on;
       if (block != 0) solver.deflation.block = static_cast<std::size_t>(block);
     }
-    if (o_.hardness) solver.interface_law.hardness = *o_.hardness;
+    // The law made from its option is checked as the option here, so that
+    // the front end names it before any file is read; every solver checks
+    // the law it is given (ContactSolver) for the library's other callers.
+    if (o_.hardness) {
+      solver.interface_law.hardness = *o_.hardness;
+      solver.interface_law.validate();
+    }
     if (o_.active_set) solver.multilevel.active_set = solvers::parse_active_set(*o_.active_set);
     solver.validate();
   });

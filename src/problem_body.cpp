@@ -73,10 +73,9 @@ class BodyRules : public detail::Checks {
     const ElasticBody body2{rigid2 ? *o_.e2 : modulus("E2", *o_.e2), poisson("nu2", *o_.nu2)};
     const double e_star = rigid2 ? ElasticPair(body1, body2).composite_modulus() : composite_modulus(body1, body2);
     // nu near -1 makes a body's compliance vanish and E* grow without bound.
-    require_in_range(
-        fmt::format("the composite modulus E* = {:g} Pa of {}, {}, {}, {}", e_star, describe("E1", *o_.e1),
-                    describe("nu1", *o_.nu1), describe("E2", *o_.e2), describe("nu2", *o_.nu2)),
-        e_star, kMinModulus, kMaxModulus, "Pa");
+    require_in_range(fmt::format("the composite modulus E* = {:g} Pa of {}, {}, {}, {}", e_star, describe("E1", *o_.e1),
+                                 describe("nu1", *o_.nu1), describe("E2", *o_.e2), describe("nu2", *o_.nu2)),
+                     e_star, kMinModulus, kMaxModulus, "Pa");
     return ProblemBody{e_star, {}, ElasticPair(body1, body2)};
   }
 

@@ -162,7 +162,8 @@ void SolverOptions::validate() const {
   }
   multilevel.validate();
   deflation.validate();
-  interface_law.validate();
+  // The law's own values are checked by every solver when it is made
+  // (ContactSolver); here only whether this solver takes it.
   if (interface_law.hardness && type == SolverType::lemke) {
     throw SolverOptionError("hardness", text(*interface_law.hardness),
                             "does not apply to solver 'lemke': Lemke's pivoting solves the plain LCP without an "
