@@ -1,6 +1,7 @@
 // Private: the rules of a contact problem's options (problem.cpp), shared
-// with the friction rules (problem_friction.cpp) and the elastic body's
-// (problem_body.cpp, which the lubrication problem uses too).
+// with the friction rules (problem_friction.cpp), the elastic body's
+// (problem_body.cpp) and, for the checks of single options, the lubricated
+// film's (lubrication/lubrication_problem.cpp).
 #pragma once
 
 #include <fmt/format.h>
@@ -71,6 +72,12 @@ class Checks {
       if (is_given == present) out.push_back(name(option));
     }
     return out;
+  }
+  // The names of all of `options`.
+  std::vector<std::string> names(std::initializer_list<std::string_view> options) const {
+    std::vector<std::string> all;
+    for (const std::string_view option : options) all.push_back(name(option));
+    return all;
   }
   std::vector<std::string> names(const Presence& options) const {
     std::vector<std::string> all;

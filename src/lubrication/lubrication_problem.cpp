@@ -15,33 +15,19 @@
 #include <utility>
 #include <vector>
 
+#include "../problem_rules.hpp"
+
 namespace halfspace::lubrication {
 namespace {
-
-// Options paired with whether they were given.
-using Presence = std::vector<std::pair<std::string_view, bool>>;
 
 // The Newton steps an elastic or mixed film may be given: the range
 // `halfspace lubricate` has always held (Python now shares it).
 constexpr long long kMaxNewtonSteps = 100000;
 
-class Rules {
+class Rules : public halfspace::detail::Checks {
  public:
-  Rules(const LubricationProblemOptions& options, const OptionSpelling& spelling) : o_(options), s_(spelling) {}
+  Rules(const LubricationProblemOptions& options, const OptionSpelling& spelling) : Checks(spelling), o_(options) {}
 
-  std::string name(std::string_view option) const { return s_.name(option); }
-  std::vector<std::string> given(const Presence& options, bool present = true) const {
-    std::vector<std::string> names;
-    for (const auto& [option, is_given] : options) {
-      if (is_given == present) names.push_back(name(option));
-    }
-    return names;
-  }
-  std::vector<std::string> names(std::initializer_list<std::string_view> options) const {
-    std::vector<std::string> all;
-    for (const std::string_view option : options) all.push_back(name(option));
-    return all;
-  }
   // A library parse of a named option's text, its error prefixed by the
   // option and its value.
   template <class Parse>
@@ -61,7 +47,6 @@ class Rules {
 
  private:
   const LubricationProblemOptions& o_;
-  const OptionSpelling& s_;
 };
 
 // Exactly one of the separation (rigid), the force and the offset (mixed);
