@@ -11,7 +11,6 @@
 #include <climits>
 #include <tuple>
 
-#include "halfspace/material.hpp"
 #include "halfspace/threads.hpp"
 #include "problem_rules.hpp"
 
@@ -65,6 +64,10 @@ constexpr std::array kNames{
 
 namespace detail {
 
+InputError spelled(const OptionError& error, const OptionSpelling& spelling) {
+  return InputError(fmt::format("{} {}", spelling.describe(error.option(), error.value()), error.rule()));
+}
+
 std::string_view problem_name(std::string_view member) {
   static constexpr std::array<std::pair<std::string_view, std::string_view>, 8> kMembers{{
       {"tolerance", "tol"},
@@ -104,70 +107,6 @@ std::optional<std::string> Rules::value(std::string_view option) const {
         return text(*field);
       },
       found->field);
-}
-
-double Rules::body() const {
-  const Presence constants = body_constants();
-  const std::vector<std::string> present = given(constants);
-  if (o_.e_star && !present.empty()) {
-    throw InputError(fmt::format("{} cannot be combined with {}: give either {} or all of {}, {}, {}, {}",
-                                 name("e_star"), fmt::join(present, ", "), name("e_star"), name("E1"), name("nu1"),
-                                 name("E2"), name("nu2")));
-  }
-  if (o_.e_star) return checked_composite_modulus(modulus("e_star", *o_.e_star));
-  if (present.empty()) {
-    throw InputError(fmt::format("no material given: pass {}, or {}, {}, {} and {}", name("e_star"), name("E1"),
-                                 name("nu1"), name("E2"), name("nu2")));
-  }
-  if (present.size() < 4) {
-    throw InputError(fmt::format("incomplete material: missing {} (give all of {}, {}, {}, {}, or {})",
-                                 fmt::join(given(constants, false), ", "), name("E1"), name("nu1"), name("E2"),
-                                 name("nu2"), name("e_star")));
-  }
-  // A rigid body 2 (E2 = inf) adds no compliance: E* = E1 / (1 - nu1^2).
-  const bool rigid2 = std::isinf(*o_.e2) && *o_.e2 > 0.0;
-  const double e1 = modulus("E1", *o_.e1);
-  double e_star = 0.0;
-  if (rigid2) {
-    try {
-      e_star = ElasticPair({e1, *o_.nu1}, {*o_.e2, *o_.nu2}).composite_modulus();
-    } catch (const InputError& error) {
-      throw InputError(fmt::format("{}: {}", describe("E2", *o_.e2), error.what()));
-    }
-  } else {
-    e_star = composite_modulus({e1, *o_.nu1}, {modulus("E2", *o_.e2), *o_.nu2});
-  }
-  // nu near -1 makes a body's compliance vanish and E* grow without bound.
-  return require_in_range(
-      fmt::format("the composite modulus E* = {:g} Pa of {}, {}, {}, {}", e_star, describe("E1", *o_.e1),
-                  describe("nu1", *o_.nu1), describe("E2", *o_.e2), describe("nu2", *o_.nu2)),
-      e_star, kMinModulus, kMaxModulus, "Pa");
-}
-
-std::optional<LayeredMaterial> Rules::coating() const {
-  const Presence constants{{"layer_thickness", o_.layer_thickness.has_value()},
-                           {"layer_E", o_.layer_e.has_value()},
-                           {"layer_nu", o_.layer_nu.has_value()},
-                           {"substrate_E", o_.substrate_e.has_value()},
-                           {"substrate_nu", o_.substrate_nu.has_value()}};
-  const std::vector<std::string> present = given(constants);
-  if (present.empty()) return std::nullopt;
-  std::vector<std::string> material = given(body_constants());
-  if (o_.e_star) material.insert(material.begin(), name("e_star"));
-  if (!material.empty()) {
-    throw InputError(fmt::format(
-        "{} cannot be combined with {}: a coated half-space against a rigid surface replaces the material options",
-        fmt::join(present, ", "), fmt::join(material, ", ")));
-  }
-  if (present.size() < 5) {
-    std::vector<std::string> all;
-    for (const auto& [option, _] : constants) all.push_back(name(option));
-    throw InputError(fmt::format("incomplete coated half-space: missing {} (give all of {})",
-                                 fmt::join(given(constants, false), ", "), fmt::join(all, ", ")));
-  }
-  return LayeredMaterial{length("layer_thickness", *o_.layer_thickness),
-                         {modulus("layer_E", *o_.layer_e), poisson("layer_nu", *o_.layer_nu)},
-                         {modulus("substrate_E", *o_.substrate_e), poisson("substrate_nu", *o_.substrate_nu)}};
 }
 
 // The load mode and every value of the load (one for a single solve, more
@@ -282,7 +221,13 @@ solvers::SolverOptions Rules::solver() const {
       solver.deflation.mode = block == 0 ? solvers::DeflationOptions::Mode::off : solvers::DeflationOptions::Mode::on;
       if (block != 0) solver.deflation.block = static_cast<std::size_t>(block);
     }
-    if (o_.hardness) solver.interface_law.hardness = *o_.hardness;
+    // The law made from its option is checked as the option here, so that
+    // the front end names it before any file is read; every solver checks
+    // the law it is given (ContactSolver) for the library's other callers.
+    if (o_.hardness) {
+      solver.interface_law.hardness = *o_.hardness;
+      solver.interface_law.validate();
+    }
     if (o_.active_set) solver.multilevel.active_set = solvers::parse_active_set(*o_.active_set);
     solver.validate();
   });
@@ -294,12 +239,6 @@ solvers::SolverOptions Rules::solver() const {
     }
   }
   return solver;
-}
-
-// Both bodies, when they were given (body() has checked them).
-std::optional<ElasticPair> Rules::pair() const {
-  if (!(o_.e1 && o_.nu1 && o_.e2 && o_.nu2)) return std::nullopt;
-  return ElasticPair(ElasticBody{*o_.e1, *o_.nu1}, ElasticBody{*o_.e2, *o_.nu2});
 }
 
 int Rules::threads() const {
@@ -319,12 +258,8 @@ namespace {
 using detail::friction_name;
 using detail::problem_name;
 using detail::Rules;
+using detail::spelled;
 using detail::text;
-
-// One option's broken rule as the front end writes it: "--tol 2 is invalid: ...".
-InputError spelled(const OptionError& error, const OptionSpelling& spelling) {
-  return InputError(fmt::format("{} {}", spelling.describe(error.option(), error.value()), error.rule()));
-}
 
 // The option a load of `mode` is given by.
 std::string_view load_option(ControlMode mode) {
@@ -340,10 +275,13 @@ std::span<const ProblemOptionName> problem_option_names() {
 Problem make_problem(const ProblemOptions& options, const OptionSpelling& spelling) {
   const Rules rules(options, spelling);
   try {
+    std::optional<ProblemBody> body = make_body(options, spelling);
+    if (!body) {
+      throw InputError(fmt::format("no material given: pass {}, or {}, {}, {} and {}", rules.name("e_star"),
+                                   rules.name("E1"), rules.name("nu1"), rules.name("E2"), rules.name("nu2")));
+    }
     Problem problem;
-    problem.coating = rules.coating();
-    problem.e_star = problem.coating ? plane_strain_modulus(problem.coating->layer) : rules.body();
-    problem.pair = problem.coating ? std::optional(ElasticPair::coated(*problem.coating)) : rules.pair();
+    static_cast<ProblemBody&>(problem) = std::move(*body);
     problem.solver = rules.solver();  // the interface law first: adhesion makes loads signed
     std::tie(problem.loading, problem.load_values) = rules.loads();
     problem.friction = rules.friction(problem.solver, problem.load_values.size());

@@ -1,5 +1,7 @@
 // Private: the rules of a contact problem's options (problem.cpp), shared
-// with the friction rules (problem_friction.cpp).
+// with the friction rules (problem_friction.cpp), the elastic body's
+// (problem_body.cpp) and, for the checks of single options, the lubricated
+// film's (lubrication/lubrication_problem.cpp).
 #pragma once
 
 #include <fmt/format.h>
@@ -50,27 +52,37 @@ std::string_view friction_name(std::string_view member, const solvers::FrictionO
 // Options paired with whether they were given.
 using Presence = std::vector<std::pair<std::string_view, bool>>;
 
-// The rules of one problem's options, written with the front end's spelling.
-class Rules {
+// One option's broken rule as the front end writes it: "--tol 2 is invalid: ...".
+InputError spelled(const OptionError& error, const OptionSpelling& spelling);
+
+// The checks of single options, written with the front end's spelling; each
+// throws OptionError naming the option, its value and its allowed range.
+class Checks {
  public:
-  Rules(const ProblemOptions& options, const OptionSpelling& spelling) : o_(options), s_(spelling) {}
+  explicit Checks(const OptionSpelling& spelling) : s_(spelling) {}
 
   std::string name(std::string_view option) const { return s_.name(option); }
   std::string describe(std::string_view option, double value) const {
     return s_.describe(option, format_number(value));
   }
-  // E1, nu1, E2, nu2, each with whether it was given.
-  Presence body_constants() const {
-    return {
-        {"E1", o_.e1.has_value()}, {"nu1", o_.nu1.has_value()}, {"E2", o_.e2.has_value()}, {"nu2", o_.nu2.has_value()}};
-  }
   // The names of the options among `options` that were given (or not).
   std::vector<std::string> given(const Presence& options, bool present = true) const {
-    std::vector<std::string> names;
+    std::vector<std::string> out;
     for (const auto& [option, is_given] : options) {
-      if (is_given == present) names.push_back(name(option));
+      if (is_given == present) out.push_back(name(option));
     }
-    return names;
+    return out;
+  }
+  // The names of all of `options`.
+  std::vector<std::string> names(std::initializer_list<std::string_view> options) const {
+    std::vector<std::string> all;
+    for (const std::string_view option : options) all.push_back(name(option));
+    return all;
+  }
+  std::vector<std::string> names(const Presence& options) const {
+    std::vector<std::string> all;
+    for (const auto& [option, _] : options) all.push_back(name(option));
+    return all;
   }
   double positive(std::string_view option, double value, std::string_view unit) const {
     if (!(std::isfinite(value) && value > 0.0)) {
@@ -93,6 +105,15 @@ class Rules {
     }
     return nu;
   }
+
+ protected:
+  const OptionSpelling& s_;
+};
+
+// The rules of one problem's options, written with the front end's spelling.
+class Rules : public Checks {
+ public:
+  Rules(const ProblemOptions& options, const OptionSpelling& spelling) : Checks(spelling), o_(options) {}
 
   // The text of the option's value if it was given, else none.
   std::optional<std::string> value(std::string_view option) const;
@@ -148,18 +169,14 @@ class Rules {
     law.validate();
   }
 
-  double body() const;
-  std::optional<LayeredMaterial> coating() const;
   std::pair<Loading, std::vector<double>> loads() const;
   std::optional<solvers::SolverOptions::Adhesion> adhesion() const;
   solvers::SolverOptions solver() const;
-  std::optional<ElasticPair> pair() const;
   std::optional<solvers::FrictionOptions> friction(const solvers::SolverOptions& normal, std::size_t loads) const;
   int threads() const;
 
  private:
   const ProblemOptions& o_;
-  const OptionSpelling& s_;
 };
 
 }  // namespace halfspace::detail

@@ -42,12 +42,11 @@ class OptionSpelling {
   }
 };
 
-// Everything a contact problem is, as given: unset means not given, so that
-// make_problem can tell a default from a choice and name what is missing.
-struct ProblemOptions {
-  // The elastic body: e_star; or E1, nu1, E2 (inf: a rigid body 2), nu2; or
-  // a coated half-space (all five layer_ and substrate_ constants) against a
-  // rigid surface. Pa, m.
+// The elastic body as a front end gives it, in a contact problem and in a
+// lubricated film alike: e_star; or E1, nu1, E2 (inf: a rigid body 2), nu2;
+// or a coated half-space (all five layer_ and substrate_ constants) against
+// a rigid surface. Pa, m; unset means not given.
+struct BodyOptions {
   std::optional<double> e_star;
   std::optional<double> e1;
   std::optional<double> nu1;
@@ -58,6 +57,28 @@ struct ProblemOptions {
   std::optional<double> layer_nu;
   std::optional<double> substrate_e;
   std::optional<double> substrate_nu;
+};
+
+// The elastic body BodyOptions give.
+struct ProblemBody {
+  double e_star = 0.0;                     // Pa; a coating's is the layer's E1 / (1 - nu1^2)
+  std::optional<LayeredMaterial> coating;  // a coated half-space, else homogeneous
+  // Both bodies, when E1, nu1, E2, nu2 were given; the coated body against
+  // the rigid surface (ElasticPair::coated) with a coating.
+  std::optional<ElasticPair> pair;
+};
+
+// The one rule of the elastic body, for every problem: none when no
+// constant was given. Throws InputError naming the options as `spelling`
+// writes them: a coating with a material, an incomplete coating or pair,
+// e_star with E1..nu2, a value outside its range (moduli and lengths in the
+// ranges of physical_ranges.hpp, nu in (-1, 0.5]).
+std::optional<ProblemBody> make_body(const BodyOptions& options, const OptionSpelling& spelling = {});
+
+// Everything a contact problem is, as given: unset means not given, so that
+// make_problem can tell a default from a choice and name what is missing.
+// The elastic body (BodyOptions) is required.
+struct ProblemOptions : BodyOptions {
   // The interface law: a hardness cap p <= H (Pa); a cohesive law ("md" or
   // "exponential") of work w (J/m^2) and range (m) or, for md, stress (Pa).
   std::optional<double> hardness;
@@ -112,12 +133,7 @@ std::span<const ProblemOptionName> problem_option_names();
 
 // A checked problem. The grid and the heights come later (a front end reads
 // or builds them), so the rules that need them are methods.
-struct Problem {
-  double e_star = 0.0;                     // Pa; a coating's is the layer's E1 / (1 - nu1^2)
-  std::optional<LayeredMaterial> coating;  // a coated half-space, else homogeneous
-  // Both bodies, when E1, nu1, E2, nu2 were given; the coated body against
-  // the rigid surface (ElasticPair::coated) with a coating.
-  std::optional<ElasticPair> pair;
+struct Problem : ProblemBody {
   Loading loading;                  // the first load; its mode is every load's
   std::vector<double> load_values;  // every load, in loading.mode's unit
   solvers::SolverOptions solver;

@@ -8,7 +8,11 @@
 #include <Eigen/Core>
 #include <cstddef>
 #include <span>
+#include <string>
+#include <string_view>
 #include <vector>
+
+#include "halfspace/problem.hpp"
 
 namespace halfspace::python {
 
@@ -28,8 +32,14 @@ inline std::span<const double> values(const InputArray& array) {
 // A new numpy array owning `field` (moved, not copied), shaped `shape`.
 OutputArray owning_array(Eigen::ArrayXd&& field, const std::vector<std::size_t>& shape);
 
-// The Python exception types (halfspace.InputError, halfspace.FileError).
-nb::handle input_error_type();
+// Python's spelling of the options of a problem or a film (problem.hpp):
+// the keyword ("tol" for a film's tolerance), the coating's constants as
+// the keys of the `coating` mapping.
+class KeywordSpelling : public OptionSpelling {
+ public:
+  std::string name(std::string_view option) const override;
+  std::string describe(std::string_view option, std::string_view value) const override;
+};
 
 void bind_errors(nb::module_& module);
 void bind_surfaces(nb::module_& module);

@@ -33,24 +33,6 @@ namespace {
 
 using namespace halfspace::lubrication;
 
-// Python's spelling of the film's options: the keyword ("tol" is the
-// problem's tolerance), the coating's constants as the keys of the
-// `coating` mapping.
-class KeywordSpelling : public OptionSpelling {
- public:
-  std::string name(std::string_view option) const override {
-    if (option == "tolerance") return "tol";
-    if (option == "max_iterations") return "max_iter";
-    if (option == "mixed") return "mixed=True";
-    if (option == "layer_thickness") return "coating['thickness']";
-    if (option.starts_with("layer_") || option.starts_with("substrate_")) return fmt::format("coating['{}']", option);
-    return std::string(option);
-  }
-  std::string describe(std::string_view option, std::string_view value) const override {
-    return fmt::format("{}={}", name(option), value);
-  }
-};
-
 // Runs `work`, restating a film option's broken rule found by a solver (the
 // separation, the speeds) with its keyword.
 template <class Work>

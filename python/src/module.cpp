@@ -21,8 +21,17 @@ PyObject* file_error = nullptr;
 
 }  // namespace
 
-nb::handle input_error_type() {
-  return nb::handle(input_error);
+std::string KeywordSpelling::name(std::string_view option) const {
+  if (option == "tolerance") return "tol";
+  if (option == "max_iterations") return "max_iter";
+  if (option == "mixed") return "mixed=True";
+  if (option == "layer_thickness") return "coating['thickness']";
+  if (option.starts_with("layer_") || option.starts_with("substrate_")) return fmt::format("coating['{}']", option);
+  return std::string(option);
+}
+
+std::string KeywordSpelling::describe(std::string_view option, std::string_view value) const {
+  return fmt::format("{}={}", name(option), value);
 }
 
 OutputArray owning_array(Eigen::ArrayXd&& field, const std::vector<std::size_t>& shape) {

@@ -101,20 +101,6 @@ ArraySurface surface_from(const nb::object& heights_object, double dx, double dy
   return {std::move(grid), heights_object, values(heights)};
 }
 
-// Python's spelling of the problem's options: the keyword, and the coating's
-// constants as the keys of the `coating` mapping.
-class KeywordSpelling : public OptionSpelling {
- public:
-  std::string name(std::string_view option) const override {
-    if (option == "layer_thickness") return "coating['thickness']";
-    if (option.starts_with("layer_") || option.starts_with("substrate_")) return fmt::format("coating['{}']", option);
-    return std::string(option);
-  }
-  std::string describe(std::string_view option, std::string_view value) const override {
-    return fmt::format("{}={}", name(option), value);
-  }
-};
-
 // The problem's keywords (halfspace/problem.hpp: the keyword is the name in
 // problem_option_names) set from `given`, and checked on `surface` by the
 // library's make_problem. A keyword not listed is refused, so a misspelt one

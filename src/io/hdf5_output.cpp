@@ -42,6 +42,16 @@ constexpr std::size_t kImageIncrement = std::size_t{4} << 20;
   throw FileError(fmt::format("{}: {}", what, detail::error_reason()));
 }
 
+// The dimensions of a dataset written in slabs (at least two), from its
+// dataspace.
+std::vector<hsize_t> slab_dims(const Dataspace& space) {
+  const int rank = space.valid() ? H5Sget_simple_extent_ndims(space.get()) : -1;
+  if (rank < 2) fail_hdf5("could not read the shape of the dataset being written");
+  std::vector<hsize_t> dims(static_cast<std::size_t>(rank));
+  H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr);
+  return dims;
+}
+
 // HDF5 stores variable-length strings as C strings and h5py decodes UTF-8
 // strictly, so invalid bytes (a Latin-1 file name on the command line) and
 // embedded NULs are replaced by U+FFFD instead of making the attribute
@@ -320,10 +330,7 @@ Hdf5Node Hdf5Node::create_dataset(std::string_view name, const std::vector<std::
 
 void Hdf5Node::write_slabs(std::size_t first, std::span<const double> values) const {
   const Dataspace file_space(H5Dget_space(id_));
-  const int rank = file_space.valid() ? H5Sget_simple_extent_ndims(file_space.get()) : -1;
-  if (rank < 2) fail_hdf5("could not read the shape of the dataset being written");
-  std::vector<hsize_t> dims(static_cast<std::size_t>(rank));
-  H5Sget_simple_extent_dims(file_space.get(), dims.data(), nullptr);
+  const std::vector<hsize_t> dims = slab_dims(file_space);
   hsize_t slab = 1;
   for (std::size_t k = 1; k < dims.size(); ++k) slab *= dims[k];
   const hsize_t count = slab > 0 ? values.size() / slab : 0;
@@ -336,7 +343,7 @@ void Hdf5Node::write_slabs(std::size_t first, std::span<const double> values) co
   std::vector<hsize_t> extent = dims;
   start[0] = first;
   extent[0] = count;
-  const Dataspace memory_space(H5Screate_simple(rank, extent.data(), nullptr));
+  const Dataspace memory_space(H5Screate_simple(static_cast<int>(extent.size()), extent.data(), nullptr));
   if (!memory_space.valid() ||
       H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start.data(), nullptr, extent.data(), nullptr) < 0 ||
       H5Dwrite(id_, H5T_NATIVE_DOUBLE, memory_space.get(), file_space.get(), transfer_, values.data()) < 0) {
@@ -346,10 +353,7 @@ void Hdf5Node::write_slabs(std::size_t first, std::span<const double> values) co
 
 void Hdf5Node::write_slab_rows(std::size_t slab, std::size_t first_row, std::span<const double> values) const {
   const Dataspace file_space(H5Dget_space(id_));
-  const int rank = file_space.valid() ? H5Sget_simple_extent_ndims(file_space.get()) : -1;
-  if (rank < 2) fail_hdf5("could not read the shape of the dataset being written");
-  std::vector<hsize_t> dims(static_cast<std::size_t>(rank));
-  H5Sget_simple_extent_dims(file_space.get(), dims.data(), nullptr);
+  const std::vector<hsize_t> dims = slab_dims(file_space);
   hsize_t row = 1;
   for (std::size_t k = 2; k < dims.size(); ++k) row *= dims[k];
   const hsize_t count = values.size() / row;

@@ -283,11 +283,6 @@ std::uint64_t checked_product(std::uint64_t a, std::uint64_t b, std::string_view
   return *product;
 }
 
-std::string point_text(std::size_t index, std::size_t nx, int dimension) {
-  if (dimension == 1) return fmt::format("i = {}", index);
-  return fmt::format("(j, i) = ({}, {})", index / nx, index % nx);
-}
-
 std::string byte_size_text(std::uint64_t bytes) {
   constexpr std::array<const char*, 4> kUnits{"KiB", "MiB", "GiB", "TiB"};
   if (bytes < 1024) return fmt::format("{} bytes", bytes);

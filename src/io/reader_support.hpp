@@ -109,9 +109,6 @@ std::uint64_t physical_memory_bytes();
 // a * b, or a FileError naming `what` when the product overflows 64 bits.
 std::uint64_t checked_product(std::uint64_t a, std::uint64_t b, std::string_view what, const ReadTarget& target);
 
-// "(j, i) = (3, 7)" for a map, "i = 7" for a profile.
-std::string point_text(std::size_t index, std::size_t nx, int dimension);
-
 // "1.5 GiB", "300 MiB", "12 bytes": sizes in messages.
 std::string byte_size_text(std::uint64_t bytes);
 

@@ -125,10 +125,6 @@ void write_tangential_attributes(const Hdf5Node& node, const TangentialResult& r
   }
 }
 
-std::span<const FilmAttribute> film_attributes() {
-  return kFilmAttributes;
-}
-
 void write_film_attributes(const Hdf5Node& node, const lubrication::FilmSummary& summary) {
   for (const FilmAttribute& attribute : kFilmAttributes) {
     const std::string name(attribute.name);

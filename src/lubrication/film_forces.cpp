@@ -8,7 +8,6 @@
 #include <cmath>
 
 namespace halfspace::lubrication {
-
 namespace {
 
 // Trapezoidal weight of a node along one axis: half on a fixed-pressure edge.
@@ -26,6 +25,20 @@ double gradient(const Eigen::ArrayXd& p, std::size_t k, std::size_t low, std::si
 
 }  // namespace
 
+double node_weight(const ReynoldsStencil& stencil, std::size_t k) {
+  const Grid& grid = stencil.grid();
+  const FlowBoundary& boundary = stencil.conditions().boundary;
+  const double weight = edge_weight(k % grid.nx(), grid.nx(), boundary.x);
+  return grid.dimension() == 2 ? weight * edge_weight(k / grid.nx(), grid.ny(), boundary.y) : weight;
+}
+
+std::array<double, 2> pressure_gradient(const ReynoldsStencil& stencil, const Eigen::ArrayXd& p, std::size_t k) {
+  const Grid& grid = stencil.grid();
+  const Neighbours nb = stencil.neighbours(k);
+  return {gradient(p, k, nb.west, nb.east, grid.dx()),
+          grid.dimension() == 2 ? gradient(p, k, nb.south, nb.north, grid.dy()) : 0.0};
+}
+
 FilmForces film_forces(const ReynoldsStencil& stencil, const FilmSolution& solution) {
   const Grid& grid = stencil.grid();
   const FlowConditions& conditions = stencil.conditions();
@@ -37,20 +50,14 @@ FilmForces film_forces(const ReynoldsStencil& stencil, const FilmSolution& solut
   double weight_sum = 0.0;
   std::size_t cavitated = 0;
   for (std::size_t k = 0; k < stencil.size(); ++k) {
-    const std::size_t i = k % grid.nx();
-    const std::size_t j = k / grid.nx();
-    double weight = edge_weight(i, grid.nx(), conditions.boundary.x);
-    if (two_d) weight *= edge_weight(j, grid.ny(), conditions.boundary.y);
+    const double weight = node_weight(stencil, k);
     weight_sum += weight;
     forces.load += weight * p[k];
     const Neighbours nb = stencil.neighbours(k);
     const double shear = theta[k] * conditions.viscosity / h[k];
-    forces.friction_force[0] +=
-        weight * (shear * conditions.sliding_velocity[0] - 0.5 * h[k] * gradient(p, k, nb.west, nb.east, grid.dx()));
-    if (two_d) {
-      forces.friction_force[1] += weight * (shear * conditions.sliding_velocity[1] -
-                                            0.5 * h[k] * gradient(p, k, nb.south, nb.north, grid.dy()));
-    }
+    const std::array<double, 2> dp = pressure_gradient(stencil, p, k);
+    forces.friction_force[0] += weight * (shear * conditions.sliding_velocity[0] - 0.5 * h[k] * dp[0]);
+    if (two_d) forces.friction_force[1] += weight * (shear * conditions.sliding_velocity[1] - 0.5 * h[k] * dp[1]);
     if (theta[k] < 1.0) ++cavitated;
     // Flows through faces between a fixed node and an unknown one.
     const auto boundary_face = [&](std::size_t other, double flow_to_other) {

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "halfspace/error.hpp"
-#include "halfspace/lubrication/reynolds_stencil.hpp"
+#include "halfspace/lubrication/film_forces.hpp"
 
 namespace halfspace::lubrication {
 
@@ -25,19 +25,6 @@ void ShearLimits::validate() const {
 }
 
 namespace {
-
-// Trapezoidal weight of a node along one axis: half on a fixed-pressure edge.
-double edge_weight(std::size_t index, std::size_t count, AxisBoundary boundary) {
-  return boundary == AxisBoundary::fixed_pressure && (index == 0 || index + 1 == count) ? 0.5 : 1.0;
-}
-
-// dp/dx at node k: central where both neighbours exist, one-sided otherwise.
-double gradient(const Eigen::ArrayXd& p, std::size_t k, std::size_t low, std::size_t high, double spacing) {
-  if (low != Neighbours::kNone && high != Neighbours::kNone) return (p[high] - p[low]) / (2.0 * spacing);
-  if (high != Neighbours::kNone) return (p[high] - p[k]) / spacing;
-  if (low != Neighbours::kNone) return (p[k] - p[low]) / spacing;
-  return 0.0;
-}
 
 // The limited magnitude of a Newtonian Couette stress tau_n >= 0 at pressure p.
 double limited_stress(const ShearLimits& limits, double tau_n, double p) {
@@ -72,10 +59,7 @@ FilmShear film_shear(const Grid& grid, const FlowConditions& conditions, const L
   std::size_t lowered = 0;
   for (std::size_t k = 0; k < n; ++k) {
     const auto kk = static_cast<Eigen::Index>(k);
-    const std::size_t i = k % grid.nx();
-    const std::size_t j = k / grid.nx();
-    double weight = edge_weight(i, grid.nx(), conditions.boundary.x);
-    if (two_d) weight *= edge_weight(j, grid.ny(), conditions.boundary.y);
+    const double weight = node_weight(stencil, k);
     if (contact_pressure && (*contact_pressure)[kk] > 0.0) continue;
     const double p = std::max(pressure[kk], 0.0);
     const double h = film[kk];
@@ -87,14 +71,14 @@ FilmShear film_shear(const Grid& grid, const FlowConditions& conditions, const L
       if (tau < 0.99 * newtonian) ++lowered;
       shear = fluid_fraction[kk] * tau / sliding_speed;
     }
-    const Neighbours nb = stencil.neighbours(k);
+    const std::array<double, 2> dp = pressure_gradient(stencil, pressure, k);
     const double couette_x = shear * slide[0];
-    result.shear_x[kk] = couette_x - 0.5 * h * gradient(pressure, k, nb.west, nb.east, grid.dx());
+    result.shear_x[kk] = couette_x - 0.5 * h * dp[0];
     result.friction_force[0] += weight * result.shear_x[kk];
     result.couette_force[0] += weight * couette_x;
     if (two_d) {
       const double couette_y = shear * slide[1];
-      result.shear_y[kk] = couette_y - 0.5 * h * gradient(pressure, k, nb.south, nb.north, grid.dy());
+      result.shear_y[kk] = couette_y - 0.5 * h * dp[1];
       result.friction_force[1] += weight * result.shear_y[kk];
       result.couette_force[1] += weight * couette_y;
     }

@@ -15,46 +15,19 @@
 #include <utility>
 #include <vector>
 
-#include "halfspace/material.hpp"
+#include "../problem_rules.hpp"
 
 namespace halfspace::lubrication {
 namespace {
-
-// Options paired with whether they were given.
-using Presence = std::vector<std::pair<std::string_view, bool>>;
 
 // The Newton steps an elastic or mixed film may be given: the range
 // `halfspace lubricate` has always held (Python now shares it).
 constexpr long long kMaxNewtonSteps = 100000;
 
-class Rules {
+class Rules : public halfspace::detail::Checks {
  public:
-  Rules(const LubricationProblemOptions& options, const OptionSpelling& spelling) : o_(options), s_(spelling) {}
+  Rules(const LubricationProblemOptions& options, const OptionSpelling& spelling) : Checks(spelling), o_(options) {}
 
-  std::string name(std::string_view option) const { return s_.name(option); }
-  std::vector<std::string> given(const Presence& options, bool present = true) const {
-    std::vector<std::string> names;
-    for (const auto& [option, is_given] : options) {
-      if (is_given == present) names.push_back(name(option));
-    }
-    return names;
-  }
-  std::vector<std::string> names(std::initializer_list<std::string_view> options) const {
-    std::vector<std::string> all;
-    for (const std::string_view option : options) all.push_back(name(option));
-    return all;
-  }
-  Presence layers() const {
-    return {{"layer_thickness", o_.layer_thickness.has_value()},
-            {"layer_E", o_.layer_e.has_value()},
-            {"layer_nu", o_.layer_nu.has_value()},
-            {"substrate_E", o_.substrate_e.has_value()},
-            {"substrate_nu", o_.substrate_nu.has_value()}};
-  }
-  Presence pair() const {
-    return {
-        {"E1", o_.e1.has_value()}, {"nu1", o_.nu1.has_value()}, {"E2", o_.e2.has_value()}, {"nu2", o_.nu2.has_value()}};
-  }
   // A library parse of a named option's text, its error prefixed by the
   // option and its value.
   template <class Parse>
@@ -67,8 +40,6 @@ class Rules {
   }
 
   void control() const;
-  std::optional<LayeredMaterial> coating() const;
-  std::optional<double> body() const;
   FilmKind kind(bool elastic, bool coated) const;
   FlowConditions conditions() const;
   LubricantLaws laws() const;
@@ -76,7 +47,6 @@ class Rules {
 
  private:
   const LubricationProblemOptions& o_;
-  const OptionSpelling& s_;
 };
 
 // Exactly one of the separation (rigid), the force and the offset (mixed);
@@ -96,57 +66,6 @@ void Rules::control() const {
   }
 }
 
-// A coated half-space from all five constants, or none.
-std::optional<LayeredMaterial> Rules::coating() const {
-  const Presence constants = layers();
-  const std::vector<std::string> present = given(constants);
-  if (present.empty()) return std::nullopt;
-  if (present.size() < 5) {
-    throw InputError(
-        fmt::format("incomplete coated body: missing {} (give all of {})", fmt::join(given(constants, false), ", "),
-                    fmt::join(names({"layer_thickness", "layer_E", "layer_nu", "substrate_E", "substrate_nu"}), ", ")));
-  }
-  std::vector<std::string> material = given(pair());
-  if (o_.e_star) material.insert(material.begin(), name("e_star"));
-  if (!material.empty()) {
-    throw InputError(fmt::format("a coated body ({}) replaces {}: the other surface is rigid", fmt::join(present, ", "),
-                                 fmt::join(material, ", ")));
-  }
-  const LayeredMaterial coating{*o_.layer_thickness, {*o_.layer_e, *o_.layer_nu}, {*o_.substrate_e, *o_.substrate_nu}};
-  try {
-    return validated(coating);
-  } catch (const InputError& error) {
-    throw InputError(fmt::format("the coated body ({}): {}", fmt::join(present, ", "), error.what()));
-  }
-}
-
-// E* of e_star or of E1, nu1, E2, nu2; none for a rigid film.
-std::optional<double> Rules::body() const {
-  const Presence constants = pair();
-  const std::vector<std::string> present = given(constants);
-  if (o_.e_star && !present.empty()) {
-    throw InputError(fmt::format("{} cannot be combined with {}: give either {} or all of {}", name("e_star"),
-                                 fmt::join(present, ", "), name("e_star"),
-                                 fmt::join(names({"E1", "nu1", "E2", "nu2"}), ", ")));
-  }
-  try {
-    if (o_.e_star) return checked_composite_modulus(*o_.e_star);
-  } catch (const InputError& error) {
-    throw InputError(fmt::format("{}: {}", s_.describe("e_star", format_number(*o_.e_star) + " Pa"), error.what()));
-  }
-  if (present.empty()) return std::nullopt;
-  if (present.size() < 4) {
-    throw InputError(fmt::format("incomplete material: missing {} (give all of {}, or {})",
-                                 fmt::join(given(constants, false), ", "),
-                                 fmt::join(names({"E1", "nu1", "E2", "nu2"}), ", "), name("e_star")));
-  }
-  try {
-    return checked_composite_modulus(composite_modulus({*o_.e1, *o_.nu1}, {*o_.e2, *o_.nu2}));
-  } catch (const InputError& error) {
-    throw InputError(fmt::format("{}: {}", fmt::join(present, ", "), error.what()));
-  }
-}
-
 // The film the body makes, and the options only an elastic film takes.
 FilmKind Rules::kind(bool elastic, bool coated) const {
   const std::string bodies =
@@ -154,10 +73,11 @@ FilmKind Rules::kind(bool elastic, bool coated) const {
   if (o_.mixed) {
     if (!elastic) throw InputError(fmt::format("{} needs an elastic body: give {}", name("mixed"), bodies));
     if (coated) {
-      throw InputError(
-          fmt::format("{} takes a homogeneous body: a coating is not supported by the mixed film yet "
-                      "(drop {})",
-                      name("mixed"), fmt::join(given(layers()), ", ")));
+      throw InputError(fmt::format(
+          "{} takes a homogeneous body: a coating is not supported by the mixed film yet "
+          "(drop {})",
+          name("mixed"),
+          fmt::join(names({"layer_thickness", "layer_E", "layer_nu", "substrate_E", "substrate_nu"}), ", ")));
     }
   }
   if (!elastic) {
@@ -280,11 +200,12 @@ LubricationProblem make_lubrication_problem(const LubricationProblemOptions& opt
     LubricationProblem problem;
     rules.control();
     problem.conditions = rules.conditions();
-    problem.coating = rules.coating();
-    const std::optional<double> e_star =
-        problem.coating ? std::optional<double>(plane_strain_modulus(problem.coating->layer)) : rules.body();
-    problem.kind = rules.kind(e_star.has_value(), problem.coating.has_value());
-    problem.e_star = e_star.value_or(0.0);
+    const std::optional<ProblemBody> body = make_body(o, spelling);  // none: a rigid film
+    if (body) {
+      problem.e_star = body->e_star;
+      problem.coating = body->coating;
+    }
+    problem.kind = rules.kind(body.has_value(), problem.coating.has_value());
     problem.limits = {o.eyring_stress.value_or(0.0), o.limiting_shear_stress.value_or(0.0),
                       o.limiting_shear_slope.value_or(0.0)};
     problem.limits.validate();

@@ -31,61 +31,63 @@ constexpr std::array<std::pair<MultilevelOptions::ActiveSet, std::string_view>, 
     {MultilevelOptions::ActiveSet::automatic, "automatic"},
 }};
 
+constexpr std::array<std::pair<DeflationOptions::Mode, std::string_view>, 3> kDeflationModeNames{{
+    {DeflationOptions::Mode::off, "off"},
+    {DeflationOptions::Mode::on, "on"},
+    {DeflationOptions::Mode::automatic, "automatic"},
+}};
+
 std::string text(double value) {
   return format_number(value);
+}
+
+// The name of `value` in `names`.
+template <class Value, std::size_t N>
+std::string_view name_of(const std::array<std::pair<Value, std::string_view>, N>& names, Value value) {
+  for (const auto& [known, name] : names) {
+    if (known == value) return name;
+  }
+  return "unknown";
+}
+
+// The value named `name` in `names`; else SolverOptionError naming `option`
+// and listing the allowed names after `allowed`.
+template <class Value, std::size_t N>
+Value parse(const std::array<std::pair<Value, std::string_view>, N>& names, std::string_view name,
+            std::string_view option, std::string_view allowed) {
+  std::vector<std::string_view> all;
+  for (const auto& [value, known] : names) {
+    if (known == name) return value;
+    all.push_back(known);
+  }
+  throw SolverOptionError(std::string(option), std::string(name),
+                          fmt::format("is invalid: {} {}", allowed, fmt::join(all, ", ")));
 }
 
 }  // namespace
 
 std::string_view to_string(SolverType type) {
-  for (const auto& [known, name] : kSolverNames) {
-    if (known == type) return name;
-  }
-  return "unknown";
+  return name_of(kSolverNames, type);
 }
 
 SolverType parse_solver_type(std::string_view name) {
-  std::vector<std::string_view> names;
-  for (const auto& [type, known] : kSolverNames) {
-    if (known == name) return type;
-    names.push_back(known);
-  }
-  throw SolverOptionError("solver", std::string(name),
-                          fmt::format("is invalid: the solver must be one of {}", fmt::join(names, ", ")));
+  return parse(kSolverNames, name, "solver", "the solver must be one of");
 }
 
 std::string_view to_string(Precision precision) {
-  for (const auto& [known, name] : kPrecisionNames) {
-    if (known == precision) return name;
-  }
-  return "unknown";
+  return name_of(kPrecisionNames, precision);
 }
 
 Precision parse_precision(std::string_view name) {
-  std::vector<std::string_view> names;
-  for (const auto& [precision, known] : kPrecisionNames) {
-    if (known == name) return precision;
-    names.push_back(known);
-  }
-  throw SolverOptionError("precision", std::string(name),
-                          fmt::format("is invalid: the precision must be one of {}", fmt::join(names, ", ")));
+  return parse(kPrecisionNames, name, "precision", "the precision must be one of");
 }
 
 std::string_view to_string(MultilevelOptions::ActiveSet mode) {
-  for (const auto& [known, name] : kActiveSetNames) {
-    if (known == mode) return name;
-  }
-  return "unknown";
+  return name_of(kActiveSetNames, mode);
 }
 
 MultilevelOptions::ActiveSet parse_active_set(std::string_view name) {
-  std::vector<std::string_view> names;
-  for (const auto& [mode, known] : kActiveSetNames) {
-    if (known == name) return mode;
-    names.push_back(known);
-  }
-  throw SolverOptionError("multilevel.active_set", std::string(name),
-                          fmt::format("is invalid: allowed values are {}", fmt::join(names, ", ")));
+  return parse(kActiveSetNames, name, "multilevel.active_set", "allowed values are");
 }
 
 std::vector<SolverType> solver_types() {
@@ -99,15 +101,7 @@ bool uses_fft(SolverType type) {
 }
 
 std::string_view to_string(DeflationOptions::Mode mode) {
-  switch (mode) {
-    case DeflationOptions::Mode::off:
-      return "off";
-    case DeflationOptions::Mode::on:
-      return "on";
-    case DeflationOptions::Mode::automatic:
-      return "automatic";
-  }
-  return "unknown";
+  return name_of(kDeflationModeNames, mode);
 }
 
 bool DeflationOptions::automatic_applies(const Grid& grid) const {
@@ -162,7 +156,8 @@ void SolverOptions::validate() const {
   }
   multilevel.validate();
   deflation.validate();
-  interface_law.validate();
+  // The law's own values are checked by every solver when it is made
+  // (ContactSolver); here only whether this solver takes it.
   if (interface_law.hardness && type == SolverType::lemke) {
     throw SolverOptionError("hardness", text(*interface_law.hardness),
                             "does not apply to solver 'lemke': Lemke's pivoting solves the plain LCP without an "

@@ -112,10 +112,11 @@ TEST(LubricateShearCliTest, RejectsBadShearAndCoatingFlags) {
                      dir / "f.h5");
   expect_input_error(with({"--separation", "1e-6", "--limiting-shear-slope", "-0.05"}),
                      {"--limiting-shear-slope -0.05 is invalid"}, dir / "f.h5");
-  expect_input_error(with({"--force", "1e3", "--layer-thickness", "1e-5"}), {"incomplete coated body"}, dir / "f.h5");
+  expect_input_error(with({"--force", "1e3", "--layer-thickness", "1e-5"}), {"incomplete coated half-space"},
+                     dir / "f.h5");
   expect_input_error(with({"--force", "1e3", "--E-star", "1e11", "--layer-thickness", "1e-5", "--layer-E", "1e11",
                            "--layer-nu", "0.3", "--substrate-E", "1e11", "--substrate-nu", "0.3"}),
-                     {"replaces --E-star"}, dir / "f.h5");
+                     {"--substrate-nu cannot be combined with --E-star"}, dir / "f.h5");
   expect_input_error(with({"--force", "-1", "--E-star", "1e11"}), {"--force -1 is invalid"}, dir / "f.h5");
   expect_input_error(with({"--separation", "1e-6", "--inlet-pressure", "-5"}), {"--inlet-pressure -5 Pa is invalid"},
                      dir / "f.h5");

@@ -95,13 +95,15 @@ TEST(LubricationProblemTest, EachRuleIsRefusedNamingTheOptionInBothSpellings) {
          o.nu1 = 0.3;
        },
        elastic_film, "incomplete material: missing E2, nu2", "incomplete material: missing --E2, --nu2"},
-      {"bad E*", [](auto& o) { o.e_star = -1.0; }, elastic_film, "e_star=-1 Pa: ", "--e_star -1 Pa: "},
+      {"bad E*", [](auto& o) { o.e_star = -1.0; }, elastic_film, "e_star=-1 is invalid: must be positive (Pa)",
+       "--e_star -1 is invalid: must be positive (Pa)"},
       {"incomplete coating",
        [](auto& o) {
          o.e_star.reset();
          o.layer_thickness = 1e-5;
        },
-       elastic_film, "incomplete coated body: missing layer_E", "incomplete coated body: missing --layer_E"},
+       elastic_film, "incomplete coated half-space: missing layer_E",
+       "incomplete coated half-space: missing --layer_E"},
       {"coating and E*",
        [](auto& o) {
          o.layer_thickness = 1e-5;
@@ -110,7 +112,7 @@ TEST(LubricationProblemTest, EachRuleIsRefusedNamingTheOptionInBothSpellings) {
          o.substrate_e = 2e11;
          o.substrate_nu = 0.3;
        },
-       elastic_film, "replaces e_star", "replaces --e_star"},
+       elastic_film, "substrate_nu cannot be combined with e_star", "--substrate_nu cannot be combined with --e_star"},
       {"rigid with a lubricant law", [](auto& o) { o.pressure_viscosity = 2e-8; }, rigid_film,
        "pressure_viscosity need an elastic film: give e_star",
        "--pressure_viscosity need an elastic film: give --e_star"},
@@ -191,6 +193,97 @@ TEST(LubricationProblemTest, EachRuleIsRefusedNamingTheOptionInBothSpellings) {
         << rule.what << ": " << refusal(options, OptionSpelling{});
     EXPECT_NE(refusal(options, Flags{}).find(rule.flags), std::string::npos)
         << rule.what << ": " << refusal(options, Flags{});
+  }
+}
+
+// The body's rule is the library's one (make_body): a film and a contact
+// problem refuse the same bad body with the same message, in both spellings.
+TEST(LubricationProblemTest, AFilmAndAContactRefuseABadBodyAlike) {
+  const auto coated = [](BodyOptions& o) {
+    o.layer_thickness = 1e-5;
+    o.layer_e = 1e11;
+    o.layer_nu = 0.3;
+    o.substrate_e = 2e11;
+    o.substrate_nu = 0.3;
+  };
+  const auto pair = [](BodyOptions& o) {
+    o.e1 = 2e11;
+    o.nu1 = 0.3;
+    o.e2 = 1e11;
+    o.nu2 = 0.25;
+  };
+  const std::vector<std::pair<std::string, std::function<void(BodyOptions&)>>> bodies{
+      {"incomplete coating", [](BodyOptions& o) { o.layer_e = 1e11; }},
+      {"coating and E*",
+       [&](BodyOptions& o) {
+         coated(o);
+         o.e_star = 1e11;
+       }},
+      {"coating and E1",
+       [&](BodyOptions& o) {
+         coated(o);
+         o.e1 = 2e11;
+       }},
+      {"layer nu",
+       [&](BodyOptions& o) {
+         coated(o);
+         o.layer_nu = 0.7;
+       }},
+      {"thickness",
+       [&](BodyOptions& o) {
+         coated(o);
+         o.layer_thickness = -1e-5;
+       }},
+      {"substrate E",
+       [&](BodyOptions& o) {
+         coated(o);
+         o.substrate_e = 1e16;
+       }},
+      {"E* and E1",
+       [](BodyOptions& o) {
+         o.e_star = 1e11;
+         o.e1 = 2e11;
+       }},
+      {"E* negative", [](BodyOptions& o) { o.e_star = -1.0; }},
+      {"E* beyond the moduli", [](BodyOptions& o) { o.e_star = 1e16; }},
+      {"incomplete pair", [](BodyOptions& o) { o.nu2 = 0.3; }},
+      {"E1 zero",
+       [&](BodyOptions& o) {
+         pair(o);
+         o.e1 = 0.0;
+       }},
+      {"nu2 beyond 0.5",
+       [&](BodyOptions& o) {
+         pair(o);
+         o.nu2 = 0.7;
+       }},
+      {"E* beyond the moduli from nu near -1",
+       [&](BodyOptions& o) {
+         pair(o);
+         o.e1 = 2e14;
+         o.e2 = 2e14;
+         o.nu1 = -0.99999999;
+         o.nu2 = -0.99999999;
+       }},
+  };
+  const Flags flags;
+  for (const auto& [what, change] : bodies) {
+    for (const OptionSpelling* spelling : {&kLibrary, static_cast<const OptionSpelling*>(&flags)}) {
+      LubricationProblemOptions film = elastic_film();
+      film.e_star.reset();
+      change(film);
+      ProblemOptions contact;
+      contact.force = std::vector<double>{1.0};
+      change(contact);
+      std::string contact_refusal;
+      try {
+        make_problem(contact, *spelling);
+      } catch (const InputError& error) {
+        contact_refusal = error.what();
+      }
+      EXPECT_FALSE(contact_refusal.empty()) << what << ": accepted";
+      EXPECT_EQ(refusal(film, *spelling), contact_refusal) << what;
+    }
   }
 }
 

@@ -131,9 +131,9 @@ def test_coated_body():
     np.testing.assert_allclose(same.pressure, plain.pressure, rtol=0, atol=1e-9 * plain.max_pressure)
     assert same.e_star == pytest.approx(plain.e_star, rel=1e-15)
     assert soft.max_pressure < 0.9 * plain.max_pressure
-    with pytest.raises(hs.InputError, match=r"incomplete coated body: missing coating\['layer_E'\]"):
+    with pytest.raises(hs.InputError, match=r"incomplete coated half-space: missing coating\['layer_E'\]"):
         hs.lubricate(cylinder, coating={"thickness": 2e-5}, **keywords)
-    with pytest.raises(hs.InputError, match=r"coating\['substrate_nu'\]\) replaces e_star"):
+    with pytest.raises(hs.InputError, match=r"coating\['substrate_nu'\] cannot be combined with e_star"):
         hs.lubricate(cylinder, e_star=1e11, coating={"thickness": 2e-5, "layer_E": 7e10, "layer_nu": 0.3,
                                                      "substrate_E": 2.1e11, "substrate_nu": 0.3}, **keywords)
 

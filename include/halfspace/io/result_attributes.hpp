@@ -85,7 +85,6 @@ struct FilmAttribute {
       value;
 };
 
-std::span<const FilmAttribute> film_attributes();
 void write_film_attributes(const Hdf5Node& node, const lubrication::FilmSummary& summary);
 
 }  // namespace halfspace::io

@@ -30,4 +30,11 @@ struct FilmForces {
 
 FilmForces film_forces(const ReynoldsStencil& stencil, const FilmSolution& solution);
 
+// What the film's sums (here and film_shear.hpp) take at node k: its
+// trapezoidal weight (half on each fixed-pressure edge it lies on), and the
+// pressure gradient (central where both neighbours exist, one-sided
+// otherwise; y zero on a profile).
+double node_weight(const ReynoldsStencil& stencil, std::size_t k);
+std::array<double, 2> pressure_gradient(const ReynoldsStencil& stencil, const Eigen::ArrayXd& p, std::size_t k);
+
 }  // namespace halfspace::lubrication

@@ -31,11 +31,8 @@ namespace halfspace::lubrication {
 // Everything a film is, as given; unset means not given. Each member's
 // name is the option's name in messages ("e_star", "layer_E",
 // "tolerance"), which the front end's OptionSpelling respells.
-struct LubricationProblemOptions {
-  // The body: e_star; or E1, nu1, E2, nu2; or a coated half-space (all five
-  // layer_ and substrate_ constants) against a rigid surface. None: rigid.
-  std::optional<double> e_star, e1, nu1, e2, nu2;
-  std::optional<double> layer_thickness, layer_e, layer_nu, substrate_e, substrate_nu;
+// The body (BodyOptions, make_body): none makes a rigid film.
+struct LubricationProblemOptions : BodyOptions {
   bool mixed = false;  // the elastic film may close (mixed_film.hpp)
   // Exactly one: the rigid film's minimum film (separation, m), the load
   // (force; N, N/m on a profile) or the mixed film's offset h0 (m).

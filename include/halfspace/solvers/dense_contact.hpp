@@ -103,10 +103,8 @@ class DenseContactSolver : public ContactSolver {
   std::string_view name() const final { return name_; }
 
   const Grid& grid() const { return grid_; }
-  const Eigen::MatrixXd& influence_matrix() const { return influence_; }
-  // The LCP of the last solve and the method's own report on it (pivots,
-  // ray termination, QP objective), in internal units.
-  const ContactLcp& last_lcp() const { return last_lcp_; }
+  // The method's own report on the last solve (pivots, ray termination, QP
+  // objective), in internal units.
   const LcpSolution& last_solution() const { return last_solution_; }
 
  protected:

@@ -204,7 +204,8 @@ struct SolverOptions {
   // Throws SolverOptionError naming the option unless: 0 < tolerance < 1;
   // max_iterations >= 1, and unset for lcpquad; the nested options are
   // valid; deflation is on only for pk_fourier or pk_multilevel; a hardness
-  // is in its range and not asked of lemke; with adhesion, the law is valid
+  // is not asked of lemke (its range every solver checks when it is made:
+  // ContactSolver); with adhesion, the law is valid
   // ("adhesion.work", "adhesion.range"), its tolerance in (0, 1) and
   // deflation not on; precision mixed only with the Polonsky-Keer solvers
   // and without adhesion.
