@@ -7,7 +7,7 @@ usage: distributed_laws_test.py MPI_PROGRAM SERIAL_PROGRAM MPIEXEC SOURCE_DIR WO
 hardness cap (periodic and free grids; pk, pk-fourier, pk-multilevel; load
 and displacement control), and on a coated half-space (periodic grids: the
 layered kernel and preconditioner; every distributed solver, a load sweep),
-and with adhesion (periodic grids, homogeneous and coated), must write the
+and with adhesion (periodic grids, homogeneous and coated; free grids), must write the
 serial program's file; so must `generate` on 2D grids (the height map:
 self-affine, each process its rows of the spectrum, the transform and the
 file; a built-in shape, each process its rows from their coordinates;
@@ -161,6 +161,20 @@ solve_case("adhesion-periodic-md-spg", adhesive[:-4] + ["--adhesion", "md", "--w
 solve_case("adhesion-coated-approach", coated + ["--adhesion", "exponential", "--work-of-adhesion", "0.5",
                                                  "--adhesion-range", "2e-9", "--tol", "1e-11", "--approach", "1e-6"],
            (), kAdhesiveLooseTolerance, kAdhesivePathAttributes)
+
+# Adhesion on free grids: the energy on the whole zero-padded grid, each
+# process its rows j and ny + j (SlabFreeOperator's circulant form), under
+# displacement and load control and with Maugis-Dugdale by SPG, compared as
+# the periodic ones are. Under load control at 1e-10 the serial solve breaks
+# down (no decrease in the line search at a residual of 3.8e-10): 1e-9.
+free_exponential = exponential[:3] + ["free"] + exponential[4:]
+solve_case("adhesion-free-approach", free_exponential + ["--approach", "2e-7"], skipped=kAdhesivePathAttributes)
+solve_case("adhesion-free-force", free_exponential[:-1] + ["1e-9", "--mean-pressure", "1e6"], (),
+           kAdhesiveLooseTolerance, kAdhesivePathAttributes)
+solve_case("adhesion-free-md-spg", adhesive[:3] + ["free"] + adhesive[4:-4] +
+           ["--adhesion", "md", "--work-of-adhesion", "0.05", "--adhesion-stress", "5e6",
+            "--adhesion-precondition", "off", "--tol", "1e-8", "--approach", "2e-7"],
+           (), kPaperFormTolerance, kPaperFormPathAttributes)
 
 def generate_case(name, arguments):
     serial_output = harness.serial_output(name, "generate", arguments)

@@ -82,10 +82,9 @@ void check(const Grid& grid, bool deflated, const mpi::MpiCommunicator& comm) {
   const Loading load = Loading::mean_pressure(0.004);
   const SolveResult loaded = solvers::solve_surface(grid, {heights.data(), grid.size()}, kEStar, load, options);
   for (const Loading& loading : {load, Loading::approach(loaded.approach)}) {
-    const std::string where =
-        fmt::format("{} {} grid, {}, deflation {}, {} processes", grid.shape_string(),
-                    grid.periodic() ? "periodic" : "free", loading.load_controlled() ? "load control" : "approach",
-                    deflated ? "on" : "off", comm.size());
+    const std::string where = fmt::format(
+        "{} {} grid, {}, deflation {}, {} processes", grid.shape_string(), grid.periodic() ? "periodic" : "free",
+        loading.load_controlled() ? "load control" : "approach", deflated ? "on" : "off", comm.size());
     const SolveResult want = solvers::solve_surface(grid, {heights.data(), grid.size()}, kEStar, loading, options);
     const SolveResult got = solvers::solve_surface(grid, rows, kEStar, loading, options, {}, layout);
     if (!want.converged() || !got.converged()) {
@@ -95,9 +94,9 @@ void check(const Grid& grid, bool deflated, const mpi::MpiCommunicator& comm) {
     }
     // The phase ran in both (forced on) and Polonsky-Keer finished.
     if (want.active_set_outer < 1 || got.active_set_outer < 1) {
-      report(false, where, fmt::format("the phase ran ({} / {} set updates)", got.active_set_outer,
-                                       want.active_set_outer),
-             0.0, comm.rank());
+      report(false, where,
+             fmt::format("the phase ran ({} / {} set updates)", got.active_set_outer, want.active_set_outer), 0.0,
+             comm.rank());
     }
     const double scale = want.max_pressure;
     double error = 0.0;
