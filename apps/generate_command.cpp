@@ -96,12 +96,12 @@ constexpr const char* kSelfAffineKeys[] = {"hurst",      "cutoff-short", "rollof
                                            "rms-height", "rms-slope",    "seed"};
 
 // The heights are made here on one process; on several, each makes and
-// writes its rows later (generate_distributed), from `self_affine`.
+// writes its rows later (generate_distributed), from `source`.
 struct Generated {
   Grid grid;
   Eigen::ArrayXd heights;
   io::HeightMapMetadata metadata;
-  std::optional<surface::SelfAffineSpec> self_affine;
+  SurfaceSource source;
 };
 
 // A positive length within the program's range of lengths, if given.
@@ -120,6 +120,17 @@ double required_length(const GenerateOptions& o, std::string_view key, const std
 void reject(const GenerateOptions& o, std::initializer_list<const char*> keys, std::string_view reason) {
   for (const char* key : keys) {
     if (o.given(key)) throw InputError(fmt::format("{} {}", o.name(key), reason));
+  }
+}
+
+// Several processes make a map in slabs of rows, which a profile's one row
+// cannot be split into.
+void require_map_on_several_processes(const GenerateOptions& o, const Grid& grid) {
+  if (process_count() > 1 && grid.dimension() != 2) {
+    throw InputError(
+        fmt::format("{}: a 1D profile is not available with more than one process yet: run it without "
+                    "mpirun (2D maps are)",
+                    o.describe("grid")));
   }
 }
 
@@ -156,12 +167,7 @@ Generated self_affine(const GenerateOptions& o) {
   }
 
   Grid grid = grid_from(o, Boundary::periodic);
-  if (process_count() > 1 && grid.dimension() != 2) {
-    throw InputError(
-        fmt::format("{}: a 1D profile is not available with more than one process yet: run it without "
-                    "mpirun (2D maps are)",
-                    o.describe("grid")));
-  }
+  require_map_on_several_processes(o, grid);
   const surface::SelfAffineSpec resolved = spec.resolved(grid);
   Eigen::ArrayXd heights;
   if (process_count() == 1) {
@@ -222,8 +228,12 @@ Generated builtin(const GenerateOptions& o, geometry::SurfaceShape shape) {
   Grid probe = grid_from(o, Boundary::free);
   const bool periodic = shape == geometry::SurfaceShape::wavy && whole_periods(probe, spec.wavelength);
   Grid grid = grid_from(o, periodic ? Boundary::periodic : Boundary::free);
-  const Activity activity(fmt::format("generating the {} surface on the {} grid", kind, grid.shape_string()));
-  Eigen::ArrayXd heights = geometry::make_surface_heights(grid, spec);
+  require_map_on_several_processes(o, grid);
+  Eigen::ArrayXd heights;
+  if (process_count() == 1) {
+    const Activity activity(fmt::format("generating the {} surface on the {} grid", kind, grid.shape_string()));
+    heights = geometry::make_surface_heights(grid, spec);
+  }
   io::HeightMapMetadata metadata;
   metadata.periodic = periodic;
   metadata.source = source;
@@ -231,7 +241,7 @@ Generated builtin(const GenerateOptions& o, geometry::SurfaceShape shape) {
   if (spec.radius > 0.0) metadata.numbers.emplace_back("radius", spec.radius);
   if (spec.wavelength > 0.0) metadata.numbers.emplace_back("wavelength", spec.wavelength);
   if (spec.amplitude > 0.0) metadata.numbers.emplace_back("amplitude", spec.amplitude);
-  return {std::move(grid), std::move(heights), std::move(metadata), std::nullopt};
+  return {std::move(grid), std::move(heights), std::move(metadata), spec};
 }
 
 int run_generate(const GenerateOptions& o) {
@@ -253,12 +263,6 @@ int run_generate(const GenerateOptions& o) {
         throw InputError(fmt::format("{} is invalid: the kind must be self-affine, sphere, cylinder, wavy or flat",
                                      o.describe("kind")));
       }
-      if (process_count() > 1) {
-        throw InputError(
-            fmt::format("{} is not available with more than one process yet: run it without mpirun "
-                        "(--kind self-affine is)",
-                        o.describe("kind")));
-      }
     }
     made.emplace(shape ? builtin(o, *shape) : self_affine(o));
   });
@@ -269,9 +273,9 @@ int run_generate(const GenerateOptions& o) {
   surface::SurfaceStatistics statistics;
   if (process_count() > 1) {
     // Each process its rows, made, measured and written at once.
-    const Activity activity(fmt::format("generating the self-affine surface on the {} grid and writing {}",
+    const Activity activity(fmt::format("generating the {} surface on the {} grid and writing {}", kind,
                                         surface.grid.shape_string(), output));
-    statistics = generate_distributed(surface.grid, *surface.self_affine, surface.metadata, output);
+    statistics = generate_distributed(surface.grid, surface.source, surface.metadata, output);
   } else {
     const std::span<const double> heights(surface.heights.data(), static_cast<std::size_t>(surface.heights.size()));
     std::optional<Activity> activity(

@@ -56,9 +56,9 @@ std::optional<int> run_distributed_solve(const SolveSetup& setup) {
 void agree_everywhere(const std::function<void()>& step) {
   run_agreed_everywhere(step);
 }
-surface::SurfaceStatistics generate_distributed(const Grid& grid, const surface::SelfAffineSpec& spec,
+surface::SurfaceStatistics generate_distributed(const Grid& grid, const SurfaceSource& source,
                                                 io::HeightMapMetadata& metadata, const std::filesystem::path& output) {
-  return generate_on_slabs(grid, spec, metadata, output);
+  return generate_on_slabs(grid, source, metadata, output);
 }
 int run_stress_everywhere(const std::filesystem::path& path, const std::function<int(StressPlace& place)>& run) {
   return run_stress_on_slabs(path, run);
@@ -84,7 +84,7 @@ std::optional<int> run_distributed_solve(const SolveSetup& /*setup*/) {
 void agree_everywhere(const std::function<void()>& step) {
   step();
 }
-surface::SurfaceStatistics generate_distributed(const Grid& /*grid*/, const surface::SelfAffineSpec& /*spec*/,
+surface::SurfaceStatistics generate_distributed(const Grid& /*grid*/, const SurfaceSource& /*source*/,
                                                 io::HeightMapMetadata& /*metadata*/,
                                                 const std::filesystem::path& /*output*/) {
   throw std::logic_error("generate_distributed: the serial build runs one process");

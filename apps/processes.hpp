@@ -7,7 +7,9 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <variant>
 
+#include "halfspace/geometry/builtin_surface.hpp"
 #include "halfspace/io/height_map_writer.hpp"
 #include "halfspace/io/result_pressure_reader.hpp"
 #include "halfspace/io/stress_writer.hpp"
@@ -60,12 +62,15 @@ std::optional<int> run_distributed_solve(const SolveSetup& setup);
 // error of the first process that failed (the serial build: step()).
 void agree_everywhere(const std::function<void()>& step);
 
-// On several MPI processes: the self-affine surface of `spec` on the 2D
-// `grid`, each process its rows, written into `output` by all at once
-// with `metadata` and the statistics (rms_height, rms_slope, appended to
-// its numbers as the serial generate appends them), which it returns.
-// Throws std::logic_error in the serial build (process_count() is 1 there).
-surface::SurfaceStatistics generate_distributed(const Grid& grid, const surface::SelfAffineSpec& spec,
+// What `halfspace generate` makes: a self-affine surface or a built-in shape.
+using SurfaceSource = std::variant<surface::SelfAffineSpec, geometry::SurfaceSpec>;
+
+// On several MPI processes: the surface of `source` on the 2D `grid`, each
+// process its rows, written into `output` by all at once with `metadata`
+// and the statistics (rms_height, rms_slope, appended to its numbers as the
+// serial generate appends them), which it returns. Throws std::logic_error
+// in the serial build (process_count() is 1 there).
+surface::SurfaceStatistics generate_distributed(const Grid& grid, const SurfaceSource& source,
                                                 io::HeightMapMetadata& metadata, const std::filesystem::path& output);
 
 // Where the stress command runs: the whole result on this process, or on

@@ -113,8 +113,8 @@ const std::array kOptions{
     SolveOption{"active-set", &SolveOptions::active_set, Kind::text, kSolver, "on|off|automatic",
                 "pk-multilevel: begin the finest grid's solve with primal-dual active-set steps (whole-set "
                 "updates, each a deflated linear solve on a fixed set), then Polonsky-Keer; 2D grids without "
-                "--hardness, one process; automatic: on for periodic grids from 4096^2 cells without a coating, "
-                "else off [automatic]"},
+                "--hardness; automatic: on for periodic grids from 4096^2 cells without a coating, else off "
+                "[automatic]"},
     SolveOption{"max-memory", &SolveOptions::max_memory, Kind::memory, kSolver, "SIZE",
                 "refuse to start when the run's estimated peak memory exceeds SIZE: bytes, or K, M, G, T (powers of "
                 "1024), e.g. 512M or 8G [the memory available: MemAvailable, or a cgroup's limit if lower]"},

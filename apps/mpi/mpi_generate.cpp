@@ -2,6 +2,7 @@
 
 #include <Eigen/Core>
 #include <span>
+#include <variant>
 
 #include "halfspace/mpi/agreement.hpp"
 #include "halfspace/mpi/parallel_result_writer.hpp"
@@ -16,14 +17,21 @@ void run_agreed_everywhere(const std::function<void()>& step) {
   mpi::run_agreed(mpi_world(), step);
 }
 
-surface::SurfaceStatistics generate_on_slabs(const Grid& grid, const surface::SelfAffineSpec& spec,
+surface::SurfaceStatistics generate_on_slabs(const Grid& grid, const SurfaceSource& source,
                                              io::HeightMapMetadata& metadata, const std::filesystem::path& output) {
   const mpi::MpiCommunicator world = mpi_world();
   const mpi::SlabLayout layout = mpi::slab_layout(grid.nx(), grid.ny(), world);
-  // The spec was resolved by every process alike: the synthesis fails on all
+  // The spec was checked by every process alike: the synthesis fails on all
   // or none.
   Eigen::ArrayXd heights;
-  mpi::run_agreed(world, [&] { heights = mpi::make_self_affine_slab(grid, spec, world); });
+  mpi::run_agreed(world, [&] {
+    if (const auto* self_affine = std::get_if<surface::SelfAffineSpec>(&source)) {
+      heights = mpi::make_self_affine_slab(grid, *self_affine, world);
+    } else {
+      heights =
+          geometry::make_surface_rows(grid, std::get<geometry::SurfaceSpec>(source), layout.first_row, layout.rows);
+    }
+  });
   const std::span<const double> rows(heights.data(), layout.local_size());
   const surface::SurfaceStatistics statistics = mpi::slab_surface_statistics(grid, layout, rows, world);
   metadata.numbers.emplace_back("rms_height", statistics.rms_height);

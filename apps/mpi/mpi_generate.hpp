@@ -1,15 +1,17 @@
-// `mpirun -np N halfspace generate --kind self-affine ...`: every process
-// makes its rows of the surface (mpi::make_self_affine_slab) and writes them
-// into one height-map file at once (the parallel HDF5), so no process holds
-// the whole map. HALFSPACE_MPI builds only.
+// `mpirun -np N halfspace generate ...`: every process makes its rows of the
+// surface (a self-affine one from its spectrum columns,
+// mpi::make_self_affine_slab; a built-in shape from its rows' coordinates,
+// geometry::make_surface_rows) and writes them into one height-map file at
+// once (the parallel HDF5), so no process holds the whole map.
+// HALFSPACE_MPI builds only.
 #pragma once
 
 #include <filesystem>
 #include <functional>
 
+#include "../processes.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/io/height_map_writer.hpp"
-#include "halfspace/surface/self_affine.hpp"
 #include "halfspace/surface/statistics.hpp"
 
 namespace halfspace::app {
@@ -18,7 +20,7 @@ namespace halfspace::app {
 void run_agreed_everywhere(const std::function<void()>& step);
 
 // processes.hpp's generate_distributed.
-surface::SurfaceStatistics generate_on_slabs(const Grid& grid, const surface::SelfAffineSpec& spec,
+surface::SurfaceStatistics generate_on_slabs(const Grid& grid, const SurfaceSource& source,
                                              io::HeightMapMetadata& metadata, const std::filesystem::path& output);
 
 }  // namespace halfspace::app

@@ -62,20 +62,12 @@ solvers::RowSlab DistributedLayout::rows(const Grid& grid) const {
   return {layout.first_row, layout.rows};
 }
 
-void DistributedLayout::check(const Grid& grid, const HalfSpace& half_space,
+void DistributedLayout::check(const Grid& grid, const HalfSpace& /*half_space*/,
                               const solvers::SolverOptions& options) const {
   if (grid.dimension() != 2) {
     throw SolverOptionError(
         "grid", fmt::format("{} ({}D, {})", grid.shape_string(), grid.dimension(), to_string(grid.boundary())),
         fmt::format("{}: only 2D grids are distributed", kNotYet));
-  }
-  if (options.adhesion && !grid.periodic()) {
-    // The adhesive solver's displacement lives on the zero-padded grid,
-    // whose padding rows the slab transforms never hold (slab_padded_fft.hpp).
-    throw SolverOptionError("adhesion", std::string(to_string(options.adhesion->law.type)),
-                            fmt::format("{} on a free grid: solve free adhesive contacts on one process (periodic "
-                                        "ones are distributed)",
-                                        kNotYet));
   }
   if (options.precision == solvers::Precision::mixed) {
     throw SolverOptionError("precision", "mixed",

@@ -9,6 +9,13 @@
 // remainder goes in spectrally (NormalKernel::spectral_remainder) adds it
 // to its columns' bins, and K_ii is then the inverse DFT at offset 0, summed
 // over the processes' columns.
+//
+// The circulant form (the adhesive energy's grid) is the whole (2ny, 2nx)
+// wrap-around grid, its padding rows ny + j held by the process holding row
+// j: each half is transformed as a top half by the pruned transform, and a
+// shift by ny rows multiplies the spectrum by (-1)^ky, so the whole
+// spectrum is A + (-1)^ky B, and the bottom half of an inverse is the top
+// half of the inverse of (-1)^ky times the spectrum.
 #include "halfspace/mpi/slab_free_operator.hpp"
 
 #include <fftw3-mpi.h>
@@ -18,6 +25,8 @@
 #include <array>
 #include <cassert>
 #include <complex>
+#include <limits>
+#include <memory>
 #include <mutex>
 #include <new>
 #include <stdexcept>
@@ -28,6 +37,7 @@
 #include "halfspace/error.hpp"
 #include "halfspace/kernels/normal_kernel.hpp"
 #include "halfspace/linalg/parallel.hpp"
+#include "halfspace/operators/circulant_form.hpp"
 #include "halfspace/threads.hpp"
 
 namespace halfspace::mpi {
@@ -78,11 +88,64 @@ fftw_plan dct_rows(QuadrantTransform& buffer, std::size_t n, std::size_t howmany
                                         FFTW_ESTIMATE | FFTW_DESTROY_INPUT));
 }
 
+// K and K^-1 on the whole padded grid, this process's rows j and ny + j,
+// each 2nx wide: local arrays [the rows j | the rows ny + j].
+class SlabPaddedCirculantForm final : public operators::CirculantForm {
+ public:
+  // `top` is the operator's transform (its buffer used only inside a
+  // product); `kernel` and `stiffness` on this process's columns, folded in
+  // ky as SlabFreeOperator's symbol, with 1/N of one transform pair in.
+  SlabPaddedCirculantForm(SlabPaddedRealFft& top, std::unique_ptr<SlabPaddedRealFft> bottom, std::vector<double> kernel,
+                          std::vector<double> stiffness)
+      : CirculantForm(true),
+        top_(top),
+        bottom_(std::move(bottom)),
+        kernel_(std::move(kernel)),
+        stiffness_(std::move(stiffness)) {}
+  std::size_t local_size() const override { return 4 * top_.layout().local_size(); }
+  std::size_t size() const override { return static_cast<std::size_t>(top_.padded_size()); }
+  std::size_t row_stride() const override { return 2 * top_.layout().nx; }
+  void apply(std::span<const double> in, std::span<double> out) override { multiply(in, out, kernel_); }
+  void apply_inverse(std::span<const double> in, std::span<double> out) override { multiply(in, out, stiffness_); }
+
+ private:
+  void multiply(std::span<const double> in, std::span<double> out, const std::vector<double>& symbol) {
+    assert(in.size() == local_size() && out.size() == local_size());
+    const std::size_t half = local_size() / 2;
+    // In place is safe: both halves are read before either is written.
+    top_.forward_wide(in.first(half));
+    bottom_->forward_wide(in.subspan(half));
+    const std::size_t ny = top_.layout().ny;
+    const std::size_t padded_rows = 2 * ny;
+    std::complex<double>* a = top_.spectrum().data();
+    std::complex<double>* b = bottom_->spectrum().data();
+    linalg::for_each_row(top_.layout().columns, padded_rows, [&](std::size_t c) {
+      const double* column = symbol.data() + c * (ny + 1);
+      for (std::size_t r = 0; r < padded_rows; ++r) {
+        const std::size_t k = c * padded_rows + r;
+        const double sign = r % 2 == 0 ? 1.0 : -1.0;
+        const std::complex<double> product = (a[k] + sign * b[k]) * column[r <= ny ? r : padded_rows - r];
+        a[k] = product;
+        b[k] = sign * product;
+      }
+    });
+    top_.backward_wide(out.first(half));
+    bottom_->backward_wide(out.subspan(half));
+  }
+
+  SlabPaddedRealFft& top_;
+  std::unique_ptr<SlabPaddedRealFft> bottom_;
+  std::vector<double> kernel_;
+  std::vector<double> stiffness_;
+};
+
 }  // namespace
+
+SlabFreeOperator::~SlabFreeOperator() = default;
 
 SlabFreeOperator::SlabFreeOperator(const Grid& grid, const HalfSpace& half_space, const MpiCommunicator& comm,
                                    FftPlanning planning)
-    : grid_(checked_free_grid(grid)) {
+    : grid_(checked_free_grid(grid)), planning_(planning) {
   const kernels::NormalKernel kernel(grid, half_space);
   fft_ = std::make_unique<SlabPaddedRealFft>(grid.nx(), grid.ny(), comm, planning);
   const SlabLayout& layout = fft_->layout();
@@ -164,6 +227,29 @@ void SlabFreeOperator::apply(std::span<const double> pressure, std::span<double>
     for (std::size_t r = ny + 1; r < padded_rows; ++r) column[r] *= symbol[padded_rows - r];
   });
   fft_->backward(displacement);
+}
+
+CirculantForm& SlabFreeOperator::circulant_form() {
+  if (!circulant_) {
+    // As FftInfluenceOperator's padded form: the kernel's eigenvalues k =
+    // N symbol must be positive, and K^-1 is 1/(N k) with 1/N of the pair.
+    const double n = fft_->padded_size();
+    double smallest = std::numeric_limits<double>::infinity();
+    for (const double value : symbol_) smallest = std::min(smallest, value * n);
+    smallest = -fft_->communicator().max(-smallest);
+    if (!(smallest > 0.0)) {
+      throw InputError(
+          fmt::format("the free {} grid's padded influence kernel is not positive definite (smallest eigenvalue {:g} "
+                      "m/Pa), so it has no inverse (stiffness) to minimise an energy with; use a periodic grid",
+                      grid_.shape_string(), smallest));
+    }
+    std::vector<double> stiffness(symbol_.size());
+    linalg::for_each_index(symbol_.size(), [&](std::size_t k) { stiffness[k] = 1.0 / (n * (n * symbol_[k])); });
+    circulant_ = std::make_unique<SlabPaddedCirculantForm>(
+        *fft_, std::make_unique<SlabPaddedRealFft>(grid_.nx(), grid_.ny(), fft_->communicator(), planning_), symbol_,
+        std::move(stiffness));
+  }
+  return *circulant_;
 }
 
 }  // namespace halfspace::mpi

@@ -5,7 +5,8 @@
 // each, which are spread in place to stride 2ny with zeros below and
 // transformed (c2c, 2ny long). Backward: the columns back, their first ny
 // values gathered to stride ny, the transpose back, the rows back (c2r),
-// the first nx values of each row out.
+// the first nx values of each row out. The wide forms take and give all 2nx
+// values of each row.
 #include "halfspace/mpi/slab_padded_fft.hpp"
 
 #include <fftw3-mpi.h>
@@ -131,14 +132,22 @@ void SlabPaddedRealFft::release() noexcept {
 
 void SlabPaddedRealFft::forward(std::span<const double> block) {
   assert(block.size() == layout_.local_size());
-  const std::size_t nx = layout_.nx;
+  forward_rows(block.data(), layout_.nx);
+}
+
+void SlabPaddedRealFft::forward_wide(std::span<const double> block) {
+  assert(block.size() == 2 * layout_.local_size());
+  forward_rows(block.data(), 2 * layout_.nx);
+}
+
+void SlabPaddedRealFft::forward_rows(const double* block, std::size_t width) {
   const std::size_t ny = layout_.ny;
-  const std::size_t stride = 2 * (nx + 1);
+  const std::size_t stride = 2 * (layout_.nx + 1);
   double* real = reinterpret_cast<double*>(buffer_);
   linalg::for_each_row(layout_.rows, stride, [&](std::size_t j) {
     double* row = real + j * stride;
-    std::copy_n(block.data() + j * nx, nx, row);
-    std::fill(row + nx, row + stride, 0.0);
+    std::copy_n(block + j * width, width, row);
+    std::fill(row + width, row + stride, 0.0);
   });
   if (rows_forward_ != nullptr) fftw_execute(static_cast<fftw_plan>(rows_forward_));
   fftw_execute(static_cast<fftw_plan>(to_columns_));
@@ -164,6 +173,15 @@ std::span<std::complex<double>> SlabPaddedRealFft::spectrum() {
 
 void SlabPaddedRealFft::backward(std::span<double> block) {
   assert(block.size() == layout_.local_size());
+  backward_rows(block.data(), layout_.nx);
+}
+
+void SlabPaddedRealFft::backward_wide(std::span<double> block) {
+  assert(block.size() == 2 * layout_.local_size());
+  backward_rows(block.data(), 2 * layout_.nx);
+}
+
+void SlabPaddedRealFft::backward_rows(double* block, std::size_t width) {
   const std::size_t nx = layout_.nx;
   const std::size_t ny = layout_.ny;
   if (columns_backward_ != nullptr) fftw_execute(static_cast<fftw_plan>(columns_backward_));
@@ -181,8 +199,8 @@ void SlabPaddedRealFft::backward(std::span<double> block) {
   if (rows_backward_ != nullptr) fftw_execute(static_cast<fftw_plan>(rows_backward_));
   const std::size_t stride = 2 * (nx + 1);
   const double* real = reinterpret_cast<const double*>(buffer_);
-  linalg::for_each_row(layout_.rows, nx,
-                       [&](std::size_t j) { std::copy_n(real + j * stride, nx, block.data() + j * nx); });
+  linalg::for_each_row(layout_.rows, width,
+                       [&](std::size_t j) { std::copy_n(real + j * stride, width, block + j * width); });
 }
 
 }  // namespace halfspace::mpi

@@ -141,8 +141,7 @@ std::unique_ptr<ContactSolver> make_multilevel(const Grid& grid, const HalfSpace
   // smaller grid on: the phase's linear solves on a fixed set need no
   // settling before the correction joins.
   const bool active_set = options.multilevel.active_set_applies(grid, options.interface_law.hardness.has_value(),
-                                                                std::holds_alternative<LayeredMaterial>(half_space),
-                                                                layout.communicator().size());
+                                                                std::holds_alternative<LayeredMaterial>(half_space));
   const bool deflated = multilevel_deflates(grid, options) ||
                         (active_set && options.deflation.mode == DeflationOptions::Mode::automatic &&
                          options.deflation.automatic_applies_with_active_set(grid));

@@ -112,14 +112,9 @@ bool DeflationOptions::automatic_applies_with_active_set(const Grid& grid) const
   return grid.size() >= kAutomaticWithActiveSetFromCells && BlockDeflation::covers(grid, block);
 }
 
-bool MultilevelOptions::active_set_applies(const Grid& grid, bool capped, bool coated, int processes) const {
-  if (active_set == ActiveSet::on && processes > 1) {
-    throw SolverOptionError("multilevel.active_set", "on",
-                            "is not available on several processes yet: leave it automatic (off there) or off");
-  }
+bool MultilevelOptions::active_set_applies(const Grid& grid, bool capped, bool coated) const {
   if (active_set == ActiveSet::off || grid.dimension() != 2 || capped) return false;
-  return active_set == ActiveSet::on ||
-         (processes == 1 && !coated && grid.periodic() && grid.size() >= kActiveSetAutomaticFromCells);
+  return active_set == ActiveSet::on || (!coated && grid.periodic() && grid.size() >= kActiveSetAutomaticFromCells);
 }
 
 void MultilevelOptions::validate() const {

@@ -217,10 +217,6 @@ for processes in (2, 3):
     failure_case("mixed precision not distributed yet", processes,
                  hertz + ["--solver", "pk-fourier", "--precision", "mixed"],
                  "precision = mixed is not available with more than one process yet", missing)
-    failure_case("free adhesion not distributed yet", processes,
-                 free_hertz + ["--force", "5", "--adhesion", "exponential", "--work-of-adhesion", "0.1",
-                               "--adhesion-range", "1e-8"],
-                 "adhesion = exponential is not available with more than one process yet", missing)
 
 harness.finish()
 print("all distributed solves match the serial program")

@@ -5,7 +5,11 @@
 // equal FftInfluenceOperator's rows within kTolerance of the largest
 // displacement, in place too, with the same K_ii; the Fourier
 // preconditioner on a free grid, in the operator's buffer, likewise against
-// FourierPreconditioner.
+// FourierPreconditioner; the circulant form (K and K^-1 on the whole
+// zero-padded grid, the adhesive solver's) of a random field on the padded
+// grid against FftInfluenceOperator's form, each process's rows j and
+// ny + j, in place too (or both refusing a kernel that is not positive
+// definite).
 // Every process builds the whole random field and the serial product and
 // compares its own rows.
 #include <fmt/format.h>
@@ -21,6 +25,7 @@
 #include <variant>
 #include <vector>
 
+#include "halfspace/error.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/half_space.hpp"
 #include "halfspace/material.hpp"
@@ -53,6 +58,24 @@ struct Checker {
     double worst = 0.0;
     for (std::size_t k = 0; k < got.size(); ++k) {
       worst = std::max(worst, std::abs(got[k] - whole[layout.first_row * layout.nx + k]));
+    }
+    worst = comm.max(worst) / largest;
+    report(worst <= kTolerance, fmt::format("{} on the {} grid: largest difference {:.2e} of the largest value", what,
+                                            grid.shape_string(), worst));
+  }
+
+  // The same for a field on the padded (2ny, 2nx) grid: this process's
+  // `got` holds its rows j, then its rows ny + j, each 2nx wide.
+  void padded_rows(const std::string& what, const Grid& grid, const mpi::SlabLayout& layout,
+                   std::span<const double> got, const std::vector<double>& whole) {
+    double largest = 0.0;
+    for (double v : whole) largest = std::max(largest, std::abs(v));
+    const std::size_t width = 2 * layout.nx;
+    const std::size_t half = layout.rows * width;
+    double worst = got.size() == 2 * half ? 0.0 : INFINITY;
+    for (std::size_t k = 0; k < std::min(got.size(), 2 * half); ++k) {
+      const std::size_t row = layout.first_row + (k % half) / width + (k < half ? 0 : layout.ny);
+      worst = std::max(worst, std::abs(got[k] - whole[row * width + k % width]));
     }
     worst = comm.max(worst) / largest;
     report(worst <= kTolerance, fmt::format("{} on the {} grid: largest difference {:.2e} of the largest value", what,
@@ -113,6 +136,46 @@ void check_grid(Checker& check, std::size_t nx, std::size_t ny, const HalfSpace&
   check.rows("Fourier preconditioner", grid, layout, got, preconditioned);
   distributed.apply(mine, got);
   check.rows("K p after the preconditioner", grid, layout, got, expected);
+
+  // The circulant form on the whole padded grid.
+  std::vector<double> field(4 * grid.size());
+  for (double& v : field) v = uniform(random);
+  operators::CirculantForm* serial_form = nullptr;
+  try {
+    serial_form = &serial.circulant_form();
+  } catch (const InputError&) {
+  }
+  operators::CirculantForm* form = nullptr;
+  try {
+    form = &distributed.circulant_form();
+  } catch (const InputError&) {
+  }
+  if (!serial_form || !form) {
+    check.report(!serial_form && !form,
+                 fmt::format("circulant form, {}, on the {} grid: {} (serial: {})", what, grid.shape_string(),
+                             form ? "made" : "refused", serial_form ? "made" : "refused"));
+    return;
+  }
+  const std::size_t width = 2 * nx;
+  std::vector<double> local;
+  for (const std::size_t first : {layout.first_row, ny + layout.first_row}) {
+    local.insert(local.end(), field.begin() + static_cast<std::ptrdiff_t>(first * width),
+                 field.begin() + static_cast<std::ptrdiff_t>((first + layout.rows) * width));
+  }
+  check.report(form->padded() && form->local_size() == local.size() && form->size() == field.size() &&
+                   form->row_stride() == width,
+               fmt::format("circulant form, {}, on the {} grid: {} cells here of {}, rows of {}", what,
+                           grid.shape_string(), form->local_size(), form->size(), form->row_stride()));
+  std::vector<double> whole(field.size());
+  std::vector<double> out(local.size());
+  serial_form->apply(field, whole);
+  form->apply(local, out);
+  check.padded_rows(fmt::format("circulant K, {},", what), grid, layout, out, whole);
+  serial_form->apply_inverse(field, whole);
+  form->apply_inverse(local, out);
+  check.padded_rows(fmt::format("circulant K^-1, {},", what), grid, layout, out, whole);
+  form->apply_inverse(local, local);
+  check.padded_rows("circulant K^-1 in place", grid, layout, local, whole);
 }
 
 }  // namespace

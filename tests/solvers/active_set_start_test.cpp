@@ -147,10 +147,10 @@ TEST(ActiveSetStartScopeTest, CappedContactsAndLinesRunPolonskyKeerAlone) {
 }
 
 // The automatic rule (MultilevelOptions::active_set_applies): on from
-// 4096^2 cells on one process for a homogeneous, uncapped, periodic 2D
-// contact, where it was measured to pay; off below, on free and 1D grids,
-// with a cap, a coating or several processes; on and off as asked, on
-// refused on several processes.
+// 4096^2 cells for a homogeneous, uncapped, periodic 2D contact, where it
+// was measured to pay (on one process and on slabs alike: the rule knows no
+// layout); off below, on free and 1D grids, with a cap or a coating; on and
+// off as asked.
 TEST(ActiveSetRuleTest, AutomaticRunsThePhaseWhereItPays) {
   MultilevelOptions options;
   EXPECT_EQ(options.active_set, ActiveSet::automatic);
@@ -160,33 +160,24 @@ TEST(ActiveSetRuleTest, AutomaticRunsThePhaseWhereItPays) {
   const Grid below = Grid::plane(4096, 2048, 1e-6, 1e-6, Boundary::periodic);
   const Grid small = Grid::plane(256, 256, 1e-6, 1e-6, Boundary::periodic);
   const Grid line = Grid::line(std::size_t{1} << 24, 1e-6, Boundary::periodic);
-  EXPECT_TRUE(options.active_set_applies(large, false, false, 1));
-  EXPECT_FALSE(options.active_set_applies(large_free, false, false, 1)) << "free grid";
-  EXPECT_TRUE(options.active_set_applies(oblong, false, false, 1));
-  EXPECT_FALSE(options.active_set_applies(below, false, false, 1));
-  EXPECT_FALSE(options.active_set_applies(small, false, false, 1));
-  EXPECT_FALSE(options.active_set_applies(line, false, false, 1));
-  EXPECT_FALSE(options.active_set_applies(large, true, false, 1)) << "hardness cap";
-  EXPECT_FALSE(options.active_set_applies(large, false, true, 1)) << "coating";
-  EXPECT_FALSE(options.active_set_applies(large, false, false, 2)) << "several processes";
+  EXPECT_TRUE(options.active_set_applies(large, false, false));
+  EXPECT_FALSE(options.active_set_applies(large_free, false, false)) << "free grid";
+  EXPECT_TRUE(options.active_set_applies(oblong, false, false));
+  EXPECT_FALSE(options.active_set_applies(below, false, false));
+  EXPECT_FALSE(options.active_set_applies(small, false, false));
+  EXPECT_FALSE(options.active_set_applies(line, false, false));
+  EXPECT_FALSE(options.active_set_applies(large, true, false)) << "hardness cap";
+  EXPECT_FALSE(options.active_set_applies(large, false, true)) << "coating";
 
   options.active_set = ActiveSet::off;
-  EXPECT_FALSE(options.active_set_applies(large, false, false, 1));
-  EXPECT_FALSE(options.active_set_applies(large, false, false, 2));
+  EXPECT_FALSE(options.active_set_applies(large, false, false));
 
   options.active_set = ActiveSet::on;
-  EXPECT_TRUE(options.active_set_applies(small, false, false, 1));
-  EXPECT_TRUE(options.active_set_applies(small, false, true, 1)) << "asked for on a coating";
-  EXPECT_TRUE(options.active_set_applies(large_free, false, false, 1)) << "asked for on a free grid";
-  EXPECT_FALSE(options.active_set_applies(small, true, false, 1)) << "hardness cap";
-  EXPECT_FALSE(options.active_set_applies(line, false, false, 1));
-  try {
-    options.active_set_applies(small, false, false, 2);
-    ADD_FAILURE() << "on accepted on two processes";
-  } catch (const SolverOptionError& error) {
-    EXPECT_EQ(error.option(), "multilevel.active_set");
-    EXPECT_NE(std::string(error.what()).find("several processes"), std::string::npos) << error.what();
-  }
+  EXPECT_TRUE(options.active_set_applies(small, false, false));
+  EXPECT_TRUE(options.active_set_applies(small, false, true)) << "asked for on a coating";
+  EXPECT_TRUE(options.active_set_applies(large_free, false, false)) << "asked for on a free grid";
+  EXPECT_FALSE(options.active_set_applies(small, true, false)) << "hardness cap";
+  EXPECT_FALSE(options.active_set_applies(line, false, false));
 
   EXPECT_EQ(parse_active_set("automatic"), ActiveSet::automatic);
   EXPECT_EQ(to_string(ActiveSet::on), "on");

@@ -36,11 +36,11 @@ class DistributedLayout final : public solvers::Layout {
                                                                    FftPlanning planning) const override;
   solvers::RowSlab rows(const Grid& grid) const override;
   const linalg::Communicator& communicator() const override { return comm_; }
-  // Takes a 2D grid (periodic or free; coated periodic only: the padded
-  // operator would need the coated coefficients on the slabs), solver pk,
-  // pk-fourier or pk-multilevel (block deflation as the serial solvers take
-  // it), with or without a hardness cap; with adhesion (the adhesive
-  // solver, which then replaces the type) on periodic grids. Throws
+  // Takes a 2D grid (periodic or free, homogeneous or coated), solver pk,
+  // pk-fourier or pk-multilevel (block deflation and the active-set phase
+  // as the serial solvers take them), with or without a hardness cap; with
+  // adhesion (the adhesive solver, which then replaces the type; on free
+  // grids on SlabFreeOperator's padded circulant form). Throws
   // SolverOptionError naming the option and what to use instead, e.g.
   // "type = lemke is not available with more than one process yet: use
   // solver pk-multilevel, pk-fourier or pk".

@@ -28,6 +28,7 @@ class SlabFreeOperator final : public InfluenceOperator {
   // free.
   SlabFreeOperator(const Grid& grid, const HalfSpace& half_space, const MpiCommunicator& comm,
                    FftPlanning planning = FftPlanning::estimate);
+  ~SlabFreeOperator() override;
 
   const Grid& grid() const override { return grid_; }
   std::size_t local_size() const override { return fft_->layout().local_size(); }
@@ -35,6 +36,13 @@ class SlabFreeOperator final : public InfluenceOperator {
   // Collective: every process applies the operator together.
   void apply(std::span<const double> pressure, std::span<double> displacement) override;
   double self_influence() const override { return self_; }
+  // The whole (2ny, 2nx) wrap-around grid, as FftInfluenceOperator's free
+  // form: this process holds its rows j and the padding rows ny + j, each
+  // 2nx wide, as [rows j | rows ny + j] (row_stride() 2nx), so its grid
+  // cells come first, at (k / nx) 2nx + k % nx. Made on first use, with a
+  // second padded transform. Collective; throws InputError (on every
+  // process) if the padded kernel is not positive definite.
+  CirculantForm& circulant_form() override;
   // The padded transform's buffer, whose contents matter only inside
   // apply(): a workspace for a transform that runs only between products
   // (the Fourier preconditioner's SlabRealFft), as FftInfluenceOperator's
@@ -43,11 +51,13 @@ class SlabFreeOperator final : public InfluenceOperator {
 
  private:
   Grid grid_;
+  FftPlanning planning_;
   std::unique_ptr<SlabPaddedRealFft> fft_;
   // The coefficients' (real) spectrum over the padded size on this
   // process's columns, [c * (ny + 1) + r]: even in ky, so ky = 0 .. ny only.
   std::vector<double> symbol_;
   double self_ = 0.0;
+  std::unique_ptr<CirculantForm> circulant_;  // made on first use
 };
 
 }  // namespace halfspace::mpi

@@ -55,12 +55,22 @@ class SlabPaddedRealFft {
   // transform of spectrum() (`block` may be the array given to forward()).
   // Collective.
   void backward(std::span<double> block);
+  // The same for this process's rows of the padded grid's top half, all 2nx
+  // values of each (layout().rows * 2nx values; the padding columns need
+  // not be zero): the transforms of a field living on the padded grid
+  // (SlabFreeOperator's circulant form), whose padding rows ny .. 2ny - 1
+  // the form transforms as a second top half. Collective.
+  void forward_wide(std::span<const double> block);
+  void backward_wide(std::span<double> block);
   // The whole buffer (at least spectrum()), FFTW-aligned; its contents
   // matter only from forward() to backward().
   std::span<std::complex<double>> buffer() { return {buffer_, buffer_size_}; }
 
  private:
   void release() noexcept;
+  // forward() and backward() on rows `width` values long (nx or 2nx).
+  void forward_rows(const double* block, std::size_t width);
+  void backward_rows(double* block, std::size_t width);
 
   SlabLayout layout_;
   const MpiCommunicator& comm_;

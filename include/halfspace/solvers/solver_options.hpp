@@ -83,9 +83,9 @@ struct MultilevelOptions {
   // Whether the fine grid's solve begins with a primal-dual active-set
   // phase from the prolonged start (active_set_start.hpp); block deflation
   // then applies from DeflationOptions::kAutomaticWithActiveSetFromCells on,
-  // unless turned off. on: on 2D grids without a hardness cap, on one
-  // process (make_solver refuses it on several); automatic: where
-  // active_set_applies says it pays.
+  // unless turned off. on: on 2D grids without a hardness cap, on any
+  // layout (serial or slabs); automatic: where active_set_applies says it
+  // pays.
   enum class ActiveSet { off, on, automatic };
   ActiveSet active_set = ActiveSet::automatic;
   ActiveSetOptions active_set_options;
@@ -97,14 +97,12 @@ struct MultilevelOptions {
   // iterations; docs/development-log.md, "the active-set phase made
   // automatic").
   static constexpr std::size_t kActiveSetAutomaticFromCells = std::size_t{1} << 24;
-  // Whether the phase runs on the finest grid `grid` of a solve on
-  // `processes` processes: on, or automatic on a periodic grid of at least
-  // kActiveSetAutomaticFromCells cells, one process and a homogeneous
-  // half-space (`coated` false; free grids and coatings were not measured
-  // at that size); never on 1D grids or with a hardness cap (`capped`).
-  // Throws SolverOptionError naming "multilevel.active_set" for on with
-  // several processes.
-  bool active_set_applies(const Grid& grid, bool capped, bool coated, int processes) const;
+  // Whether the phase runs on the finest grid `grid` of a solve (on one
+  // process or on slabs alike): on, or automatic on a periodic grid of at
+  // least kActiveSetAutomaticFromCells cells and a homogeneous half-space
+  // (`coated` false; free grids and coatings were not measured at that
+  // size); never on 1D grids or with a hardness cap (`capped`).
+  bool active_set_applies(const Grid& grid, bool capped, bool coated) const;
 
   // Throws SolverOptionError naming the option ("multilevel.coarse_tolerance",
   // ...) unless 0 < coarse_tolerance < 1, min_cells_per_axis >= 2,
