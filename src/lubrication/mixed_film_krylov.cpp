@@ -43,10 +43,10 @@ constexpr double kFillAllowance = 12.0;
 double mixed_krylov_memory_estimate(std::size_t nodes, const MixedKrylovSettings& settings) {
   const double entries = preconditioner_node_entries(settings.neighbourhood);
   const double per_node = 2.0 * 8.0 * (settings.restart + 1)  // GMRES basis, 2 unknowns per node
-                          + 16.0 * sizeof(LocalTerm)           // local rows
-                          + entries * (16.0 + 12.0)            // triplets and the compressed matrix
-                          + entries * kFillAllowance * 12.0    // the LU's supernodes
-                          + 8.0 * 60.0;                        // the Newton state and work vectors
+                          + 16.0 * sizeof(LocalTerm)          // local rows
+                          + entries * (16.0 + 12.0)           // triplets and the compressed matrix
+                          + entries * kFillAllowance * 12.0   // the LU's supernodes
+                          + 8.0 * 60.0;                       // the Newton state and work vectors
   return per_node * static_cast<double>(nodes);
 }
 
@@ -117,7 +117,8 @@ void MixedKrylovSolver::for_neighbourhood(std::size_t j, Visit&& visit) const {
       } else if (mx < 0 || mx >= nx || my < 0 || my >= ny) {
         continue;
       }
-      visit(static_cast<std::size_t>(my * nx + mx), local_k_[static_cast<std::size_t>((oy + r) * (2 * r + 1) + (ox + r))]);
+      visit(static_cast<std::size_t>(my * nx + mx),
+            local_k_[static_cast<std::size_t>((oy + r) * (2 * r + 1) + (ox + r))]);
     }
   }
 }
@@ -285,8 +286,8 @@ int MixedKrylovSolver::gmres(double tolerance, int max_iterations, const Eigen::
 }
 
 MixedKrylovOutcome MixedKrylovSolver::solve(const MixedRows& rows, const std::vector<char>& branch_full,
-                                            const std::vector<char>& closed, const MixedScales& scales,
-                                            double forcing, const Eigen::VectorXd& residual, Eigen::VectorXd& step) {
+                                            const std::vector<char>& closed, const MixedScales& scales, double forcing,
+                                            const Eigen::VectorXd& residual, Eigen::VectorXd& step) {
   MixedKrylovOutcome outcome;
   rows_ = &rows;
   closed_ = &closed;
@@ -309,9 +310,9 @@ MixedKrylovOutcome MixedKrylovSolver::solve(const MixedRows& rows, const std::ve
   // GMRES's estimate and the true residual part by rounding: allow 10x.
   outcome.converged = step.allFinite() && outcome.relative_residual <= 10.0 * tolerance;
   if (!outcome.converged) {
-    outcome.message = fmt::format(
-        "the mixed film's GMRES reached a relative residual of {:.3g} in {} iterations (tolerance {:.3g})",
-        outcome.relative_residual, outcome.iterations, tolerance);
+    outcome.message =
+        fmt::format("the mixed film's GMRES reached a relative residual of {:.3g} in {} iterations (tolerance {:.3g})",
+                    outcome.relative_residual, outcome.iterations, tolerance);
   }
   return outcome;
 }

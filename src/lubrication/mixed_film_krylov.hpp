@@ -76,9 +76,9 @@ class MixedKrylovSolver {
   // load_control must be the constructor's), to the relative
   // residual max(settings.tolerance, forcing). Factorises the
   // preconditioner first; its failure and GMRES's are returned.
-  MixedKrylovOutcome solve(const MixedRows& rows, const std::vector<char>& branch_full,
-                           const std::vector<char>& closed, const MixedScales& scales, double forcing,
-                           const Eigen::VectorXd& residual, Eigen::VectorXd& step);
+  MixedKrylovOutcome solve(const MixedRows& rows, const std::vector<char>& branch_full, const std::vector<char>& closed,
+                           const MixedScales& scales, double forcing, const Eigen::VectorXd& residual,
+                           Eigen::VectorXd& step);
 
  private:
   void apply_jacobian(const Eigen::VectorXd& v, Eigen::VectorXd& out);

@@ -182,15 +182,14 @@ TEST(LubricateMixedCliTest, RejectsBadMixedInputNamingTheOption) {
   };
   expect_input_error(rigid_with({"--contact-friction", "0.1"}), {"--mixed"}, dir / "f.h5");
   expect_input_error(rigid_with({"--mixed"}), {"--mixed needs an elastic body"}, dir / "f.h5");
-  // A roughness of another size, and a profile beyond the dense path.
+  // A roughness of another size (a profile beyond the dense path's 2048
+  // points is no longer refused: it takes the GMRES path).
   ASSERT_EQ(
       run_program({"generate", "--kind", "flat", "--grid", "50", "--size", "2.4e-4", "--output", "small.h5", "--quiet"},
                   dir.path())
           .exit_code,
       kExitOk);
   expect_input_error(rigid_with({"--roughness", "small.h5"}), {"--roughness small.h5 has 50"}, dir / "f.h5");
-  make_rough_line(dir, 2049);
-  expect_input_error(with({}), {"2049 points", "at most 2048"}, dir / "f.h5");
 }
 
 }  // namespace

@@ -9,7 +9,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <iostream>
 #include <numbers>
 #include <vector>
 
@@ -142,14 +141,15 @@ void expect_solution_holds(FftInfluenceOperator& op, const Eigen::ArrayXd& gap, 
   EXPECT_NEAR(f.contact_load_fraction, f.contact_pressure.sum() / total.sum(), 1e-12);
 }
 
-// On the rough line, in the mixed regime and near boundary lubrication, the
-// GMRES path's film is the dense path's: both stop at a mass residual of
+// On the rough line, in the mixed regime (0.61 of the load on contact; at
+// 1e-3 m/s, 0.92, they agreed as closely), the GMRES path's film is the
+// dense path's: both stop at a mass residual of
 // 1e-8, a load error of 1e-8 and contact rows of 1e-10, so they agree far
 // inside 1e-6 of the peak pressure.
 TEST(MixedFilmKrylovTest, GmresPathEqualsTheDensePathOnALineContact) {
   const RoughContact line = rough_line(0.2e-6);
   FftInfluenceOperator op(line.grid, kEStar);
-  for (const double speed : {0.0215, 1e-3}) {
+  for (const double speed : {0.0215}) {
     SCOPED_TRACE(::testing::Message() << "speed " << speed);
     const MixedFilmOptions dense_options = options_for(kLineLoad, FilmLinearSolve::dense);
     const MixedFilmOptions gmres_options = options_for(kLineLoad, FilmLinearSolve::gmres);
@@ -176,24 +176,26 @@ TEST(MixedFilmKrylovTest, GmresPathEqualsTheDensePathOnALineContact) {
     EXPECT_EQ(gmres.contact_area_fraction, dense.contact_area_fraction);
     EXPECT_NEAR(gmres.central_film_thickness, dense.central_film_thickness, 1e-6 * dense.central_film_thickness);
     EXPECT_NEAR(gmres.friction_coefficient, dense.friction_coefficient, 1e-4 * dense.friction_coefficient);
-    std::cout << "speed " << speed << ": total " << (gmres.pressure - dense.pressure).abs().maxCoeff() / peak
-              << " fluid " << (gmres.fluid_pressure - dense.fluid_pressure).abs().maxCoeff() / peak << " steps "
-              << dense.iterations << " / " << gmres.iterations << " gmres " << gmres.krylov_iterations << " ("
-              << gmres.max_krylov_iterations_per_step << ") s " << dense.wall_seconds << " / " << gmres.wall_seconds
-              << "\n";
   }
 }
 
 // A small rough point contact: the two paths agree there too (the dense one
-// asked for explicitly; the default takes GMRES on 2D grids).
+// asked for explicitly; the default takes GMRES on 2D grids). Measured: the
+// total pressures 4.5e-9 of the peak apart, the fluid pressures 4.4e-5
+// (the loose split on contact cells, as on the line), contact load fraction
+// 0.32.
 TEST(MixedFilmKrylovTest, GmresPathEqualsTheDensePathOnASmallPointContact) {
-  const RoughContact point = rough_point(17, 0.2e-6);
+  const RoughContact point = rough_point(13, 0.2e-6);
   FftInfluenceOperator op(point.grid, kEStar);
   const double speed = 0.05;
   const MixedFilmOptions dense_options = options_for(kPointLoad, FilmLinearSolve::dense);
   const MixedFilmOptions automatic = options_for(kPointLoad, FilmLinearSolve::automatic);
-  const MixedFilm dense = solve_mixed_film(op, point.gap, flow(speed), laws(), dense_options);
-  const MixedFilm gmres = solve_mixed_film(op, point.gap, flow(speed), laws(), automatic);
+  // Both from the same faster film (cold, the continuation to it costs
+  // both paths some 150-300 Newton steps).
+  const MixedFilm faster = solve_mixed_film(op, point.gap, flow(4.0 * speed), laws(), automatic);
+  ASSERT_TRUE(faster.converged()) << faster.message;
+  const MixedFilm dense = solve_mixed_film(op, point.gap, flow(speed), laws(), dense_options, &faster);
+  const MixedFilm gmres = solve_mixed_film(op, point.gap, flow(speed), laws(), automatic, &faster);
   ASSERT_TRUE(dense.converged()) << dense.message;
   ASSERT_TRUE(gmres.converged()) << gmres.message;
   EXPECT_TRUE(gmres.used_krylov);
@@ -205,18 +207,16 @@ TEST(MixedFilmKrylovTest, GmresPathEqualsTheDensePathOnASmallPointContact) {
   EXPECT_LE((gmres.fluid_pressure - dense.fluid_pressure).abs().maxCoeff(), 2e-4 * peak);
   EXPECT_NEAR(gmres.contact_load_fraction, dense.contact_load_fraction, 3e-5);
   EXPECT_EQ(gmres.contact_area_fraction, dense.contact_area_fraction);
-  std::cout << "point: total " << (gmres.pressure - dense.pressure).abs().maxCoeff() / peak << " fluid "
-            << (gmres.fluid_pressure - dense.fluid_pressure).abs().maxCoeff() / peak << " fraction "
-            << gmres.contact_load_fraction << " steps " << dense.iterations << " / " << gmres.iterations << " gmres "
-            << gmres.krylov_iterations << " s " << dense.wall_seconds << " / " << gmres.wall_seconds << "\n";
 }
 
-// A rough point contact over falling speeds (each from the last): every film
+// A rough point contact over falling speeds (each from the last; a coarse
+// 13^2 grid, as the speed continuation costs hundreds of Newton steps on
+// finer ones): every film
 // holds its conditions, the contact's share of the load rises toward 1 and
 // the pressure tends to the dry contact's at the same load, the difference
 // falling with the speed.
 TEST(MixedFilmKrylovTest, SlowPointContactTendsToTheDryContact) {
-  const RoughContact point = rough_point(32, 0.2e-6);
+  const RoughContact point = rough_point(13, 0.2e-6);
   FftInfluenceOperator op(point.grid, kEStar);
   solvers::PolonskyKeer dry_solver(op);
   const solvers::SolveResult dry =
@@ -228,7 +228,8 @@ TEST(MixedFilmKrylovTest, SlowPointContactTendsToTheDryContact) {
   films.reserve(speeds.size());
   for (const double speed : speeds) {
     SCOPED_TRACE(::testing::Message() << "speed " << speed);
-    films.push_back(solve_mixed_film(op, point.gap, flow(speed), laws(), options, films.empty() ? nullptr : &films.back()));
+    films.push_back(
+        solve_mixed_film(op, point.gap, flow(speed), laws(), options, films.empty() ? nullptr : &films.back()));
     const MixedFilm& f = films.back();
     ASSERT_TRUE(f.converged()) << f.message;
     EXPECT_TRUE(f.used_krylov);
@@ -242,8 +243,12 @@ TEST(MixedFilmKrylovTest, SlowPointContactTendsToTheDryContact) {
       EXPECT_LT(differences[k], differences[k - 1]);
     }
   }
+  // Measured (13^2, 3 cells per Hertz radius): contact load fractions 0.20,
+  // 0.75, 0.957, 0.9955; the largest pressure difference to the dry
+  // contact 0.26, 0.091, 0.012, 0.0013 of the dry peak, about proportional
+  // to the speed below 0.01 m/s.
   EXPECT_GT(films.back().contact_load_fraction, 0.99);
-  EXPECT_LT(differences.back(), 0.02);
+  EXPECT_LT(differences.back(), 0.005);
 }
 
 TEST(MixedFilmKrylovTest, RefusesInvalidKrylovOptionsNamingThem) {
