@@ -36,8 +36,10 @@ double preconditioner_node_entries(int r) {
   const double patch = (2.0 * r + 1.0) * (2.0 * r + 1.0);
   return 2.0 * (2.0 * r + 3.0) * (2.0 * r + 5.0) + 2.0 * patch;
 }
-// SparseLU's fill relative to the entries: an allowance.
-constexpr double kFillAllowance = 12.0;
+// SparseLU's fill relative to the entries: an allowance (measured peaks,
+// the program's own 30 MB taken off: 10.9 kB per node at 64^2, 21.8 kB at
+// 128^2 on a rough point contact, against 25 kB estimated with this).
+constexpr double kFillAllowance = 20.0;
 }  // namespace
 
 double mixed_krylov_memory_estimate(std::size_t nodes, const MixedKrylovSettings& settings) {
