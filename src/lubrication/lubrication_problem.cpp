@@ -276,10 +276,7 @@ void LubricationProblem::check_grid(const Grid& grid, const OptionSpelling& spel
   } catch (const OptionError& error) {
     throw spelled_film_error(error, spelling);
   }
-  if (kind == FilmKind::mixed && grid.size() > kMaxMixedFilmNodes) {
-    throw InputError(fmt::format("{} has {} points: the mixed film's dense Newton path allows at most {} (coarsen it)",
-                                 surface, grid.size(), kMaxMixedFilmNodes));
-  }
+  if (kind == FilmKind::mixed) require_mixed_film_fits(grid, mixed, surface);
 }
 
 }  // namespace halfspace::lubrication

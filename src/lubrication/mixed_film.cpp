@@ -22,12 +22,15 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include "halfspace/error.hpp"
 #include "halfspace/lubrication/cavitation_solver.hpp"
 #include "halfspace/lubrication/reynolds_stencil.hpp"
+#include "halfspace/memory_estimate.hpp"
 #include "halfspace/solvers/polonsky_keer.hpp"
+#include "mixed_film_krylov.hpp"
 #include "reynolds_linearisation.hpp"
 
 namespace halfspace::lubrication {
@@ -61,7 +64,56 @@ void MixedFilmOptions::validate() const {
   if (max_iterations < 1) {
     throw OptionError("max_iterations", std::to_string(max_iterations), "is invalid: at least 1 Newton step");
   }
+  if (krylov_restart < 2 || krylov_restart > 500) {
+    throw OptionError("krylov_restart", std::to_string(krylov_restart), "is invalid: allowed range is 2 to 500");
+  }
+  if (krylov_max_iterations < 1) {
+    throw OptionError("krylov_max_iterations", std::to_string(krylov_max_iterations),
+                      "is invalid: at least 1 GMRES iteration");
+  }
+  fraction(krylov_tolerance, "krylov_tolerance");
+  if (preconditioner_neighbourhood < 0 || preconditioner_neighbourhood > 8) {
+    throw OptionError("preconditioner_neighbourhood", std::to_string(preconditioner_neighbourhood),
+                      "is invalid: allowed range is 0 to 8 cells");
+  }
   friction.validate();
+}
+
+namespace {
+
+// FilmLinearSolve::automatic: dense on line contacts within the dense
+// path's limit, GMRES otherwise.
+bool takes_krylov(const Grid& grid, const MixedFilmOptions& options) {
+  return options.linear_solve == FilmLinearSolve::gmres ||
+         (options.linear_solve == FilmLinearSolve::automatic &&
+          (grid.dimension() != 1 || grid.size() > kMaxMixedFilmNodes));
+}
+
+detail::MixedKrylovSettings mixed_krylov_settings(const MixedFilmOptions& options) {
+  return {options.krylov_restart, options.krylov_max_iterations, options.krylov_tolerance,
+          options.preconditioner_neighbourhood};
+}
+
+}  // namespace
+
+void require_mixed_film_fits(const Grid& grid, const MixedFilmOptions& options, std::string_view surface) {
+  const std::size_t n = grid.size();
+  if (!takes_krylov(grid, options)) {
+    if (n > kMaxMixedFilmNodes) {
+      throw InputError(fmt::format(
+          "{} ({} grid) has {} points: the mixed film's dense Newton path allows at most {} (use the gmres linear "
+          "solve)",
+          surface, grid.shape_string(), n, kMaxMixedFilmNodes));
+    }
+    return;
+  }
+  const double needed = detail::mixed_krylov_memory_estimate(n, mixed_krylov_settings(options));
+  const auto available = available_memory();
+  if (available && needed > available->bytes) {
+    throw InputError(fmt::format("{}: the mixed film on the {} grid needs about {}, more than the {} available ({})",
+                                 surface, grid.shape_string(), format_bytes(needed), format_bytes(available->bytes),
+                                 available->source));
+  }
 }
 
 namespace {
@@ -82,6 +134,10 @@ constexpr double kThickFilm = 8.0;
 // times the thinnest fluid film (at least kFilmFloorShare of H).
 constexpr double kLargestStep = 0.5;
 constexpr double kFilmFloorShare = 0.05;
+// The loosest relative tolerance of a GMRES step (far from the solution).
+constexpr double kLargestForcing = 1e-2;
+// The share of the Newton steps (1 / this) a cold start gets on the GMRES path.
+constexpr int kKrylovColdShare = 4;
 
 struct State {
   Eigen::ArrayXd s, q, fluid, theta, contact, total, deformation, film, reynolds_film;
@@ -102,16 +158,9 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
   options.validate();
   const std::size_t n = grid.size();
   if (op.local_size() != n) throw InputError("the mixed film needs a serial influence operator (one process)");
-  if (grid.dimension() != 1) {
-    throw InputError(fmt::format(
-        "the mixed film is for line contacts (a 1D profile): the {} grid is 2D, which the dense Newton path does not "
-        "solve in reasonable time (docs/theory.md#mixed-lubrication)",
-        grid.shape_string()));
-  }
-  if (n > kMaxMixedFilmNodes) {
-    throw InputError(fmt::format("the {} grid has {} nodes: the mixed film's dense Newton path allows at most {}",
-                                 grid.shape_string(), n, kMaxMixedFilmNodes));
-  }
+  require_mixed_film_fits(grid, options, "the mixed film");
+  const bool krylov = takes_krylov(grid, options);
+  const detail::MixedKrylovSettings krylov_settings = mixed_krylov_settings(options);
   if (static_cast<std::size_t>(gap.size()) != n || !gap.allFinite()) {
     throw InputError(fmt::format("mixed film gap has {} values, the {} grid has {} cells; every value must be finite",
                                  gap.size(), grid.shape_string(), n));
@@ -159,11 +208,15 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
     if (dry_pressure[k] > 0.0) film_scale = std::max(film_scale, gap[k]);
   }
   if (!(film_scale > 0.0)) film_scale = std::max(gap.maxCoeff() - gap.minCoeff(), 1e-9);
-  const Eigen::MatrixXd k_matrix = influence_matrix(op);
+  // The dense path's K; the GMRES path's solver (which reads K_00).
+  const Eigen::MatrixXd k_matrix = krylov ? Eigen::MatrixXd() : influence_matrix(op);
+  std::optional<detail::MixedKrylovSolver> krylov_solver;
+  if (krylov) krylov_solver.emplace(op, topology, krylov_settings, load_control);
+  const double self_influence = krylov ? krylov_solver->self_influence() : k_matrix(0, 0);
   if (given_start) {
     pressure_scale = std::max(pressure_scale, (start->fluid_pressure + start->contact_pressure).maxCoeff());
   }
-  if (!(pressure_scale > 0.0)) pressure_scale = 1e-3 * film_scale / k_matrix(0, 0);
+  if (!(pressure_scale > 0.0)) pressure_scale = 1e-3 * film_scale / self_influence;
   if (load_control) pressure_scale = std::max(pressure_scale, w / grid.domain_area());
   const double P = pressure_scale;
   const double H = film_scale;
@@ -223,8 +276,15 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
   std::vector<LocalTerm> terms;
   terms.reserve(16);
   Eigen::VectorXd residual(m), step(m), trial_residual(m);
-  Eigen::MatrixXd jacobian_t(m, m);  // J transposed: row r's derivatives in column r
-  Eigen::PartialPivLU<Eigen::MatrixXd> lu(m);
+  const Eigen::Index dense_size = krylov ? 0 : m;
+  Eigen::MatrixXd jacobian_t(dense_size, dense_size);  // J transposed: row r's derivatives in column r
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu(dense_size);
+  detail::MixedRows rows;
+  if (krylov) {
+    rows.start.resize(n + 1);
+    rows.terms.reserve(16 * n);
+    rows.open_film.resize(n);
+  }
   std::vector<char> branch_full(n, 1);
   std::vector<char> closed(n, 0);  // contact rows on the h branch
   double mass_scale = 1.0;
@@ -243,9 +303,16 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
     }
     Measure result_measure;
     double largest = 0.0;
-    if (linearise_too) jacobian_t.setZero();
+    const bool dense_too = linearise_too && !krylov;
+    const bool rows_too = linearise_too && krylov;
+    if (dense_too) jacobian_t.setZero();
+    if (rows_too) {
+      rows.terms.clear();
+      for (std::size_t k = 0; k < n; ++k) rows.open_film[k] = state.film[static_cast<Eigen::Index>(k)] > hb ? 1 : 0;
+    }
     for (std::size_t k = 0; k < n; ++k) {
       const auto kk = static_cast<Eigen::Index>(k);
+      if (rows_too) rows.start[k] = rows.terms.size();
       if (topology.fixed(k)) {
         out[kk] = 0.0;
         continue;
@@ -254,7 +321,8 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
           linearise(topology, k, coefficients, state.fluid, state.theta, state.reynolds_film, second_order, terms);
       largest = std::max(largest, std::abs(balance));
       out[kk] = balance / mass_scale;
-      if (!linearise_too) continue;
+      if (rows_too) rows.terms.insert(rows.terms.end(), terms.begin(), terms.end());
+      if (!dense_too) continue;
       // Per unit pressure: the local d/dp_f in the s block, the film's
       // d/dp (through K, for p_f and p_c alike) in the q block.
       auto column = jacobian_t.col(kk);
@@ -281,7 +349,8 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
     result_measure.load = load_control ? std::abs(load - w) / w : 0.0;
     result_measure.contact = contact;
     result_measure.norm = out.norm();
-    if (!linearise_too) return result_measure;
+    if (rows_too) rows.start[n] = rows.terms.size();
+    if (!dense_too) return result_measure;
     // Rows of J^T are the unknowns: s_j from the pressure rows (zero where
     // s_j is cavitated or the node fixed), q_j = P times the film block.
     for (std::size_t j = 0; j < n; ++j) {
@@ -349,7 +418,15 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
   evaluate(x);
   scale_masses();
   State trial = x;
-  const std::size_t attempts = given_start || !load_control ? 1 : kStarts.size();
+  // On the GMRES path (point contacts) only the thin-film start is tried
+  // cold, with a quarter of the steps: where it fails the dry and thick
+  // starts failed too on the rough point contacts measured (32^2, 64^2:
+  // 134 steps spent), and the speed continuation from a faster film is the
+  // cheaper way on (solve_mixed_film).
+  const std::size_t attempts = given_start || !load_control || krylov ? 1 : kStarts.size();
+  const int cold_budget = krylov && !given_start && load_control
+                              ? std::max(1, options.max_iterations / kKrylovColdShare)
+                              : options.max_iterations;
   int steps = 0;
   for (std::size_t attempt = 0; attempt < attempts; ++attempt) {
     if (attempt > 0) {
@@ -358,7 +435,7 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
       scale_masses();
     }
     // Each start but the last gets an equal share of the steps.
-    const int budget = attempt + 1 == attempts ? options.max_iterations - steps
+    const int budget = attempt + 1 == attempts ? cold_budget - steps
                                                : std::max(1, options.max_iterations / static_cast<int>(attempts));
     result.status = FilmStatus::failure;
     result.message.clear();
@@ -381,39 +458,72 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
             options.contact_tolerance);
         break;
       }
-      for (std::size_t j = 0; j < n; ++j) {
-        const auto jj = static_cast<Eigen::Index>(j);
-        branch_full[j] = x.s[jj] >= 0.0 ? 1 : 0;
-        closed[j] = x.film[jj] / H < x.q[jj] ? 1 : 0;
-      }
-      const bool singular = !detail::branch_consistent_step([&] { measure(x, residual, true); }, topology, x.s,
-                                                            jacobian_t, residual, lu, step, branch_full);
-      ++steps;
-      if (singular) {
-        result.message = fmt::format("the mixed film's Newton step {} is singular", steps);
-        break;
-      }
-      const double largest_change = step.head(2 * ni).cwiseAbs().maxCoeff();
-      double lambda = std::min(1.0, kLargestStep / std::max(largest_change, 1e-300));
-      if (load_control) {
-        const double thinnest =
-            std::max(x.film.maxCoeff() > 0.0 ? x.reynolds_film.minCoeff() : 0.0, kFilmFloorShare * H);
-        lambda = std::min(lambda, kLargestStep * thinnest / std::max(std::abs(step[h0]), 1e-300));
-      }
-      bool accepted = false;
+      // An inexact Newton step on the GMRES path (Dembo, Eisenstat &
+      // Steihaug 1982): GMRES to a relative residual of the order of the
+      // Newton residual, solved again to krylov_tolerance when no step along
+      // the loose direction lowers the residual (as the EHL film does).
+      const double loose_forcing = std::min(kLargestForcing, current.norm);
+      bool accepted = false, failed = false;
       Measure tried;
-      for (int halving = 0; halving <= 30; ++halving, lambda *= 0.5) {
-        trial.s = x.s + lambda * step.head(ni).array();
-        trial.q = x.q + lambda * step.segment(ni, ni).array();
-        trial.offset = load_control ? x.offset + lambda * step[h0] : x.offset;
-        if (!evaluate(trial)) continue;
-        tried = measure(trial, trial_residual, false);
-        if (std::isfinite(tried.norm) && tried.norm <= (1.0 - 1e-4 * lambda) * current.norm) {
-          accepted = true;
+      for (const bool tight : {false, true}) {
+        if (tight && !(krylov && loose_forcing > options.krylov_tolerance)) break;
+        for (std::size_t j = 0; j < n; ++j) {
+          const auto jj = static_cast<Eigen::Index>(j);
+          branch_full[j] = x.s[jj] >= 0.0 ? 1 : 0;
+          closed[j] = x.film[jj] / H < x.q[jj] ? 1 : 0;
+        }
+        if (krylov) {
+          // The rows do not depend on the branches: linearised once, then
+          // one GMRES solve per branch pass.
+          measure(x, residual, true);
+          const detail::MixedScales scales{P, H, mass_scale, load_control ? area / w : 0.0, load_control};
+          int step_iterations = 0;
+          std::string krylov_message;
+          const double forcing = tight ? 0.0 : loose_forcing;
+          const auto gmres_solve = [&] {
+            const detail::MixedKrylovOutcome outcome =
+                krylov_solver->solve(rows, branch_full, closed, scales, forcing, residual, step);
+            step_iterations += outcome.iterations;
+            krylov_message = outcome.message;
+            return outcome.converged;
+          };
+          const bool solved = detail::branch_consistent_step_with(gmres_solve, topology, x.s, step, branch_full);
+          result.krylov_iterations += step_iterations;
+          result.max_krylov_iterations_per_step = std::max(result.max_krylov_iterations_per_step, step_iterations);
+          if (!solved) {
+            result.message = fmt::format("the mixed film's Newton step {}: {}", steps + 1, krylov_message);
+            failed = true;
+            break;
+          }
+        } else if (!detail::branch_consistent_step([&] { measure(x, residual, true); }, topology, x.s, jacobian_t,
+                                                   residual, lu, step, branch_full)) {
+          result.message = fmt::format("the mixed film's Newton step {} is singular", steps + 1);
+          failed = true;
           break;
         }
-        ++result.line_search_halvings;
+        const double largest_change = step.head(2 * ni).cwiseAbs().maxCoeff();
+        double lambda = std::min(1.0, kLargestStep / std::max(largest_change, 1e-300));
+        if (load_control) {
+          const double thinnest =
+              std::max(x.film.maxCoeff() > 0.0 ? x.reynolds_film.minCoeff() : 0.0, kFilmFloorShare * H);
+          lambda = std::min(lambda, kLargestStep * thinnest / std::max(std::abs(step[h0]), 1e-300));
+        }
+        for (int halving = 0; halving <= 30; ++halving, lambda *= 0.5) {
+          trial.s = x.s + lambda * step.head(ni).array();
+          trial.q = x.q + lambda * step.segment(ni, ni).array();
+          trial.offset = load_control ? x.offset + lambda * step[h0] : x.offset;
+          if (!evaluate(trial)) continue;
+          tried = measure(trial, trial_residual, false);
+          if (std::isfinite(tried.norm) && tried.norm <= (1.0 - 1e-4 * lambda) * current.norm) {
+            accepted = true;
+            break;
+          }
+          ++result.line_search_halvings;
+        }
+        if (accepted) break;
       }
+      ++steps;
+      if (failed) break;
       if (!accepted) {
         result.message = fmt::format(
             "the mixed film's Newton iteration stalled at step {}: no step along the Newton direction lowers the "
@@ -427,12 +537,16 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
     if (result.converged()) break;
   }
   result.iterations = steps;
+  result.used_krylov = krylov;
   result.entrainment_speed = std::hypot(conditions.entrainment_velocity[0], conditions.entrainment_velocity[1]);
 
-  // The result, with the contact pressure's rounding (q below 0 by the
-  // contact tolerance) clipped and the check made apart from the iteration.
+  // The result, with the contact pressure's rounding clipped (q below 0 by
+  // the contact tolerance, and on open cells, h / H >= q, q within the
+  // tolerance of 0: the dense LU's step sets it to 0 exactly, the inexact
+  // GMRES step only to its residual) and the check made apart from the
+  // iteration.
   result.fluid_pressure = x.fluid;
-  result.contact_pressure = x.contact.max(0.0);
+  result.contact_pressure = (x.film / H < x.q).select(x.contact.max(0.0), 0.0);
   result.pressure = result.fluid_pressure + result.contact_pressure;
   result.fluid_fraction = x.theta;
   result.offset = x.offset;
@@ -486,6 +600,12 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
   return result;
 }
 
+// The GMRES work of `from` added into `into` (continuations count every solve).
+void add_krylov_work(const MixedFilm& from, int& iterations, int& most_per_step) {
+  iterations += from.krylov_iterations;
+  most_per_step = std::max(most_per_step, from.max_krylov_iterations_per_step);
+}
+
 FlowConditions at_speed_factor(const FlowConditions& conditions, double factor) {
   FlowConditions scaled = conditions;
   for (int axis = 0; axis < 2; ++axis) {
@@ -506,7 +626,7 @@ constexpr int kContinuationSolves = 60;
 
 MixedFilm continue_in_speed(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
                             const LubricantLaws& laws, const MixedFilmOptions& options, MixedFilm film, double factor,
-                            int& steps, int& solves) {
+                            int& steps, int& solves, int& krylov, int& most_krylov) {
   double ratio = kContinuationRatio;
   while (factor != 1.0 && solves < kContinuationSolves) {
     const double log_step = std::min(std::abs(std::log(factor)), std::log(ratio));
@@ -515,6 +635,7 @@ MixedFilm continue_in_speed(InfluenceOperator& op, const Eigen::ArrayXd& gap, co
     MixedFilm trial = solve_once(op, gap, at_speed_factor(conditions, next), laws, options, &film);
     ++solves;
     steps += trial.iterations;
+    add_krylov_work(trial, krylov, most_krylov);
     if (trial.converged()) {
       film = std::move(trial);
       factor = next;
@@ -550,7 +671,8 @@ MixedFilm continue_in_offset(InfluenceOperator& op, const Eigen::ArrayXd& gap, c
                              const LubricantLaws& laws, const MixedFilmOptions& options, const MixedFilm* start,
                              MixedFilm failed) {
   MixedFilm from;
-  int steps = failed.iterations, solves = 1;
+  int steps = failed.iterations, solves = 1, krylov = failed.krylov_iterations,
+      most_krylov = failed.max_krylov_iterations_per_step;
   if (start != nullptr && start->converged() && start->fluid_pressure.size() == gap.size()) {
     from = *start;
   } else {
@@ -563,6 +685,7 @@ MixedFilm continue_in_offset(InfluenceOperator& op, const Eigen::ArrayXd& gap, c
     by_load.load = dry.total_force;
     from = solve_mixed_film(op, gap, conditions, laws, by_load);
     steps += from.iterations;
+    add_krylov_work(from, krylov, most_krylov);
     ++solves;
     if (!from.converged()) return failed;
   }
@@ -575,6 +698,7 @@ MixedFilm continue_in_offset(InfluenceOperator& op, const Eigen::ArrayXd& gap, c
     MixedFilm trial = solve_once(op, gap, conditions, laws, at, &from);
     ++solves;
     steps += trial.iterations;
+    add_krylov_work(trial, krylov, most_krylov);
     if (trial.converged()) {
       from = std::move(trial);
       done = next;
@@ -585,6 +709,8 @@ MixedFilm continue_in_offset(InfluenceOperator& op, const Eigen::ArrayXd& gap, c
     if (step < kSmallestOffsetStep) {
       trial.message = fmt::format("separation continuation stalled at h0 = {:.6g} m: {}", at.offset, trial.message);
       trial.iterations = steps;
+      trial.krylov_iterations = krylov;
+      trial.max_krylov_iterations_per_step = most_krylov;
       return trial;
     }
   }
@@ -594,6 +720,8 @@ MixedFilm continue_in_offset(InfluenceOperator& op, const Eigen::ArrayXd& gap, c
                                first + done * (options.offset - first));
   }
   from.iterations = steps;
+  from.krylov_iterations = krylov;
+  from.max_krylov_iterations_per_step = most_krylov;
   return from;
 }
 
@@ -612,7 +740,8 @@ MixedFilm solve_mixed_film(InfluenceOperator& op, const Eigen::ArrayXd& gap, con
   // Where the film does not converge from its starts (the mixed regime, with
   // contacts coming and going), continue in the speed: from the given film's
   // speed if it has one, else from a faster film that converges.
-  int steps = film.iterations, solves = 1;
+  int steps = film.iterations, solves = 1, krylov = film.krylov_iterations,
+      most_krylov = film.max_krylov_iterations_per_step;
   MixedFilm from;
   double factor = 0.0;
   const double speed = std::hypot(conditions.entrainment_velocity[0], conditions.entrainment_velocity[1]);
@@ -624,14 +753,23 @@ MixedFilm solve_mixed_film(InfluenceOperator& op, const Eigen::ArrayXd& gap, con
     MixedFilm trial = solve_once(op, gap, at_speed_factor(conditions, faster), laws, options, nullptr);
     ++solves;
     steps += trial.iterations;
+    add_krylov_work(trial, krylov, most_krylov);
     if (trial.converged()) {
       from = std::move(trial);
       factor = faster;
     }
   }
-  if (factor == 0.0) return film;
-  MixedFilm continued = continue_in_speed(op, gap, conditions, laws, options, std::move(from), factor, steps, solves);
+  if (factor == 0.0) {
+    film.iterations = steps;
+    film.krylov_iterations = krylov;
+    film.max_krylov_iterations_per_step = most_krylov;
+    return film;
+  }
+  MixedFilm continued = continue_in_speed(op, gap, conditions, laws, options, std::move(from), factor, steps, solves,
+                                          krylov, most_krylov);
   continued.iterations = steps;
+  continued.krylov_iterations = krylov;
+  continued.max_krylov_iterations_per_step = most_krylov;
   continued.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return continued;
 }

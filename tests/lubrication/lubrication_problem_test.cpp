@@ -348,13 +348,10 @@ TEST(LubricationProblemTest, GridRulesNameTheFlowOptionAndTheSurface) {
   EXPECT_NO_THROW(make_lubrication_problem(along_x).check_grid(map));
 
   const LubricationProblem mixed = make_lubrication_problem(mixed_film());
+  // Beyond the dense path's nodes and on 2D grids the mixed film takes GMRES.
   EXPECT_NO_THROW(mixed.check_grid(Grid::line(kMaxMixedFilmNodes, 1e-6, Boundary::free)));
-  try {
-    mixed.check_grid(Grid::line(kMaxMixedFilmNodes + 1, 1e-6, Boundary::free), {}, "rough.h5");
-    ADD_FAILURE() << "accepted";
-  } catch (const InputError& error) {
-    EXPECT_NE(std::string(error.what()).find("rough.h5 has 2049 points"), std::string::npos) << error.what();
-  }
+  EXPECT_NO_THROW(mixed.check_grid(Grid::line(kMaxMixedFilmNodes + 1, 1e-6, Boundary::free)));
+  EXPECT_NO_THROW(mixed.check_grid(Grid::plane(64, 64, 1e-6, 1e-6, Boundary::free)));
 }
 
 TEST(LubricationProblemTest, ValidOptionsMakeTheTypedFilm) {

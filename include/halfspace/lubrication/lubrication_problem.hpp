@@ -83,7 +83,8 @@ struct LubricationProblem {
   std::optional<std::vector<double>> speeds;  // the mixed film's Stribeck sweep
 
   // The grid's rules: the flow's (FlowConditions::validate(grid)) and the
-  // mixed film's node limit; `surface` names the heights in messages.
+  // mixed film's (require_mixed_film_fits); `surface` names the heights in
+  // messages.
   // Throws InputError naming the option.
   void check_grid(const Grid& grid, const OptionSpelling& spelling = {},
                   std::string_view surface = "the surface") const;

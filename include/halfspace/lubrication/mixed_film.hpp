@@ -17,14 +17,18 @@
 // are the EHL film's exactly. The solver is the EHL solver's semi-smooth
 // Newton with a second unknown per node, the contact pressure, whose
 // complementarity is the row min(p_c / P, h / H) = 0 (an active-set Newton,
-// as the contact solvers' LCP; docs/theory.md#mixed-lubrication). The
-// Jacobian is dense: (2n + 1)^2, so the path allows kMaxMixedFilmNodes nodes.
+// as the contact solvers' LCP; docs/theory.md#mixed-lubrication). Each
+// Newton step's linear system is solved densely ((2n + 1)^2: line contacts
+// of at most kMaxMixedFilmNodes nodes) or by GMRES with K applied by the
+// operator to the total pressure and a sparse preconditioner (any grid,
+// point contacts included).
 #pragma once
 
 #include <Eigen/Core>
 #include <array>
 #include <cstddef>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "halfspace/lubrication/elastic_film.hpp"
@@ -37,7 +41,9 @@
 namespace halfspace::lubrication {
 
 // Nodes up to which the mixed film's dense Newton path is allowed: its
-// Jacobian and LU are (2n + 1)^2 each (134 MB each at the limit).
+// Jacobian and LU are (2n + 1)^2 each (134 MB each at the limit). Line
+// contacts up to this take it by default; the GMRES path has no limit but
+// memory.
 inline constexpr std::size_t kMaxMixedFilmNodes = 2048;
 
 // How the film's shear and the asperities' friction are taken.
@@ -67,11 +73,25 @@ struct MixedFilmOptions {
   double contact_tolerance = 1e-10;
   int max_iterations = 200;  // Newton steps over all starts
   CouetteScheme couette_scheme = CouetteScheme::first_order;
+  // The Newton step's linear solve: dense (the (2n + 1)^2 LU), GMRES
+  // (matrix-free), or automatic: dense on line contacts of at most
+  // kMaxMixedFilmNodes nodes, GMRES otherwise (2D grids).
+  FilmLinearSolve linear_solve = FilmLinearSolve::automatic;
+  // GMRES: the restart length, the iterations per Newton step, the
+  // relative residual it must reach (looser far from the solution: an
+  // inexact Newton) and how many cells around a node the preconditioner
+  // keeps of K.
+  int krylov_restart = 40;
+  int krylov_max_iterations = 800;
+  double krylov_tolerance = 1e-9;
+  int preconditioner_neighbourhood = 1;
   MixedFrictionOptions friction;
 
   // Throws InputError naming the option unless load >= 0 and finite, offset
   // finite, boundary_film > 0 and finite, the tolerances in (0, 1),
-  // max_iterations >= 1 and the friction options valid.
+  // max_iterations >= 1, 2 <= krylov_restart <= 500, krylov_max_iterations
+  // >= 1, 0 <= preconditioner_neighbourhood <= 8 and the friction options
+  // valid.
   void validate() const;
   bool load_controlled() const { return load > 0.0; }
 };
@@ -106,6 +126,11 @@ struct MixedFilm {
   double friction_coefficient = 0.0;
   int iterations = 0;  // Newton steps
   int line_search_halvings = 0;
+  // The GMRES path: whether it was taken, its iterations in all and the
+  // most in one Newton step (all branch passes).
+  bool used_krylov = false;
+  int krylov_iterations = 0;
+  int max_krylov_iterations_per_step = 0;
   double wall_seconds = 0.0;
   // Measured after the solve apart from the Newton iteration, with the
   // operator's own product: the flux-form mass residual (on h_R), |load -
@@ -118,8 +143,9 @@ struct MixedFilm {
   bool converged() const { return status == FilmStatus::converged; }
 };
 
-// Solves the mixed film on the operator's grid (serial, 1D: a line contact,
-// at most kMaxMixedFilmNodes cells; 2D grids are refused). `gap` is g (m, >= 0 with its minimum at the
+// Solves the mixed film on the operator's grid (serial; the dense path on
+// line contacts of at most kMaxMixedFilmNodes cells, GMRES on any grid:
+// options.linear_solve). `gap` is g (m, >= 0 with its minimum at the
 // contact's centre: the smooth shape plus the roughness, shifted). Starts
 // from `start` (a previous film of the same grid), else tries in turn the
 // EHL start (the dry contact under a thin film), the dry contact itself and
@@ -134,6 +160,13 @@ struct MixedFilm {
 MixedFilm solve_mixed_film(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
                            const LubricantLaws& laws, const MixedFilmOptions& options,
                            const MixedFilm* start = nullptr);
+
+// Throws InputError naming `surface` and the grid if the linear solve
+// `options` choose for `grid` cannot take it: the dense path beyond
+// kMaxMixedFilmNodes nodes, or the GMRES path's memory estimate above the
+// memory available. solve_mixed_film checks the same.
+void require_mixed_film_fits(const Grid& grid, const MixedFilmOptions& options,
+                             std::string_view surface = "the surface");
 
 // The friction forces and coefficient of `film` (filled into it), from its
 // pressures, fluid fraction and film; called by solve_mixed_film.

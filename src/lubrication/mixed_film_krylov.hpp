@@ -1,0 +1,117 @@
+// The mixed film's Newton step on grids the dense (2n + 1)^2 LU cannot
+// hold, point contacts above all: restarted GMRES (Saad & Schultz 1986) on
+// the Jacobian of mixed_film.cpp applied matrix-free (one product of the
+// influence operator per iteration, on the total pressure: K is never
+// formed), right-preconditioned by a sparse approximation of it (the
+// Reynolds stencil and the closed contact rows with K truncated to a few
+// cells around each node) factorised by Eigen's SparseLU. Private to the
+// library.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <Eigen/SparseLU>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "halfspace/lubrication/reynolds_stencil.hpp"
+#include "halfspace/operators/influence_operator.hpp"
+#include "reynolds_linearisation.hpp"
+
+namespace halfspace::lubrication::detail {
+
+struct MixedKrylovSettings {
+  int restart = 40;          // GMRES(m) basis size
+  int max_iterations = 800;  // GMRES iterations per solve, all restarts
+  double tolerance = 1e-9;   // on ||J x + r|| / ||r||
+  int neighbourhood = 1;     // K kept within this many cells (Chebyshev) in the preconditioner
+};
+
+struct MixedKrylovOutcome {
+  bool converged = false;
+  int iterations = 0;
+  double relative_residual = 0.0;  // ||J x + r|| / ||r||, recomputed at the end with the operator
+  std::string message;             // empty when converged
+};
+
+// The Newton system's state at one step: the mass rows' local derivatives
+// in CSR form (detail::linearise's terms, one row per node), which nodes are
+// on the full-film branch, which contact rows are closed (impose h = 0), and
+// which films are above the boundary film (their derivative reaches the
+// Reynolds equation).
+struct MixedRows {
+  std::vector<std::size_t> start;  // n + 1 offsets into terms
+  std::vector<LocalTerm> terms;
+  std::vector<char> open_film;  // h > h_b
+};
+
+// The system's scales: the unknowns are [s, q, h0] with p_f = P max(s, 0),
+// p_c = P q; the mass rows are divided by mass_scale, the closed contact rows
+// are h / H and the load row (load - w) / w (absent under separation
+// control).
+struct MixedScales {
+  double pressure = 1.0;  // P
+  double film = 1.0;      // H
+  double mass = 1.0;
+  double area_over_load = 0.0;  // dA / w
+  bool load_control = true;
+};
+
+// Peak bytes the GMRES path needs on an n-node grid.
+double mixed_krylov_memory_estimate(std::size_t nodes, const MixedKrylovSettings& settings);
+
+class MixedKrylovSolver {
+ public:
+  // Reads the translation-invariant K around a node off one product of `op`;
+  // the system has the h0 column and load row under load control.
+  MixedKrylovSolver(InfluenceOperator& op, const ReynoldsStencil& topology, const MixedKrylovSettings& settings,
+                    bool load_control);
+
+  // K_00: a cell's displacement under unit pressure on itself.
+  double self_influence() const { return self_influence_; }
+
+  // Solves J step = -residual (2n + 1 or 2n entries) for the rows `rows`,
+  // the branches `branch_full` and `closed` and the scales (whose
+  // load_control must be the constructor's), to the relative
+  // residual max(settings.tolerance, forcing). Factorises the
+  // preconditioner first; its failure and GMRES's are returned.
+  MixedKrylovOutcome solve(const MixedRows& rows, const std::vector<char>& branch_full, const std::vector<char>& closed,
+                           const MixedScales& scales, double forcing, const Eigen::VectorXd& residual,
+                           Eigen::VectorXd& step);
+
+ private:
+  void apply_jacobian(const Eigen::VectorXd& v, Eigen::VectorXd& out);
+  bool factorise(std::string& message);
+  void apply_preconditioner(const Eigen::VectorXd& v, Eigen::VectorXd& out);
+  int gmres(double tolerance, int max_iterations, const Eigen::VectorXd& residual, Eigen::VectorXd& step);
+  // Calls visit(m, k_value) for the nodes m within the neighbourhood of node j.
+  template <class Visit>
+  void for_neighbourhood(std::size_t j, Visit&& visit) const;
+
+  InfluenceOperator& op_;
+  const ReynoldsStencil& topology_;
+  MixedKrylovSettings settings_;
+  std::size_t n_;
+  Eigen::Index m_;  // unknowns: 2n (+ 1 with h0)
+  double self_influence_ = 0.0;
+  std::vector<double> local_k_;  // K at offsets (dx, dy) in [-r, r]^2, row-major
+  // The current linear system.
+  const MixedRows* rows_ = nullptr;
+  const std::vector<char>* closed_ = nullptr;
+  MixedScales scales_;
+  Eigen::VectorXd dp_ds_, dtheta_ds_, total_, deflection_;
+  // The preconditioner: B (2n x 2n, sparse) bordered by the h0 column and
+  // the load row under load control.
+  std::vector<Eigen::Triplet<double>> triplets_;
+  Eigen::SparseMatrix<double> sparse_;
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> lu_;
+  bool analysed_ = false;
+  Eigen::VectorXd load_row_, border_column_, border_solved_, head_in_, head_out_;
+  double border_pivot_ = 0.0;
+  // GMRES workspace.
+  Eigen::MatrixXd basis_, hessenberg_;
+  Eigen::VectorXd givens_c_, givens_s_, g_, y_, work_, preconditioned_;
+};
+
+}  // namespace halfspace::lubrication::detail

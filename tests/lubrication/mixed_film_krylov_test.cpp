@@ -1,0 +1,277 @@
+// The mixed film's GMRES path (FilmLinearSolve::gmres: K applied by the
+// operator to the total pressure, never formed): on a rough line contact it
+// finds the dense path's film; on a rough point contact, which the dense
+// path cannot take in reasonable time, it converges with the load balance,
+// both complementarities and the mass balance holding when checked apart
+// from the solver, and as the speed falls the contact's share of the load
+// rises toward 1 and the pressure tends to the dry contact's (Polonsky–Keer
+// on the same rough gap at the same load).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "halfspace/lubrication/cavitation_solver.hpp"
+#include "halfspace/lubrication/elastic_film.hpp"
+#include "halfspace/lubrication/mixed_film.hpp"
+#include "halfspace/operators/fft_influence_operator.hpp"
+#include "halfspace/solvers/polonsky_keer.hpp"
+#include "support/analytic_solutions.hpp"
+
+namespace halfspace::lubrication {
+namespace {
+
+constexpr double kEStar = 1.1e11;    // Pa
+constexpr double kRadius = 0.01;     // m
+constexpr double kViscosity = 0.04;  // Pa s
+constexpr double kLineLoad = 4.4e4;  // N/m: W = 2e-5
+// The point contact: W = F / (E' R^2) = 3e-7, Hertz radius a = 77 um,
+// peak 0.54 GPa, undeformed gap at the Hertz edge a^2 / 2R = 0.29 um.
+constexpr double kPointLoad = 3e-7 * 2.0 * kEStar * kRadius * kRadius;
+constexpr double kAlpha = 5000.0 / (2.0 * kEStar);
+
+LubricantLaws laws() {
+  LubricantLaws l;
+  l.piezoviscosity = Piezoviscosity::roelands;
+  l.pressure_viscosity = kAlpha;
+  l.compressibility = Compressibility::dowson_higginson;
+  return l;
+}
+
+FlowConditions flow(double speed) {
+  FlowConditions c;
+  c.viscosity = kViscosity;
+  c.entrainment_velocity = {speed, 0.0};
+  c.sliding_velocity = {0.5 * speed, 0.0};
+  return c;
+}
+
+MixedFilmOptions options_for(double load, FilmLinearSolve solve) {
+  MixedFilmOptions options;
+  options.load = load;
+  options.linear_solve = solve;
+  options.friction.contact_friction = 0.1;
+  options.friction.shear.limiting_shear_slope = 0.05;
+  return options;
+}
+
+// Three incommensurate waves of `amplitude` in all at wavelengths that are
+// fractions of `length`.
+double waves(double x, double length, double amplitude, double phase) {
+  return amplitude / 3.0 *
+         (std::sin(2.0 * std::numbers::pi * x / (0.37 * length) + phase) +
+          std::sin(2.0 * std::numbers::pi * x / (0.61 * length) + 1.0 + phase) +
+          std::sin(2.0 * std::numbers::pi * x / (0.23 * length) + 2.0 + phase));
+}
+
+struct RoughContact {
+  Grid grid;
+  Eigen::ArrayXd gap;
+};
+
+// mixed_film_test.cpp's rough line: a cylinder with transverse roughness,
+// 24 cells per Hertz half-width.
+RoughContact rough_line(double amplitude) {
+  const double b = testing::hertz_line(kLineLoad, kRadius, kEStar).half_width;
+  const double dx = b / 24.0;
+  const std::size_t upstream = 72, n = 72 + 36 + 1;
+  Eigen::ArrayXd gap(static_cast<Eigen::Index>(n));
+  for (std::size_t i = 0; i < n; ++i) {
+    const double x = (static_cast<double>(i) - static_cast<double>(upstream)) * dx;
+    gap[static_cast<Eigen::Index>(i)] = x * x / (2.0 * kRadius) + waves(x, b, amplitude, 0.0);
+  }
+  gap -= gap.minCoeff();
+  return {Grid::line(n, dx, Boundary::free), gap};
+}
+
+// A sphere with roughness in both directions on an n x n grid over x in
+// [-2.5a, 1.5a], y in [-2a, 2a].
+RoughContact rough_point(std::size_t n, double amplitude) {
+  const double a = testing::hertz_point(kPointLoad, kRadius, kEStar).radius;
+  const double dx = 4.0 * a / static_cast<double>(n - 1);
+  const auto upstream = static_cast<std::size_t>(std::lround(2.5 * a / dx));
+  const std::size_t half = (n - 1) / 2;
+  Eigen::ArrayXd gap(static_cast<Eigen::Index>(n * n));
+  for (std::size_t j = 0; j < n; ++j) {
+    for (std::size_t i = 0; i < n; ++i) {
+      const double x = (static_cast<double>(i) - static_cast<double>(upstream)) * dx;
+      const double y = (static_cast<double>(j) - static_cast<double>(half)) * dx;
+      gap[static_cast<Eigen::Index>(j * n + i)] = (x * x + y * y) / (2.0 * kRadius) +
+                                                  0.5 * waves(x, a, amplitude, 0.0) +
+                                                  0.5 * waves(y + 0.3 * x, a, amplitude, 0.7);
+    }
+  }
+  gap -= gap.minCoeff();
+  return {Grid::plane(n, n, dx, dx, Boundary::free), gap};
+}
+
+// The conditions checked apart from the solver: the film rebuilt from the
+// pressures with the operator's own product, the load, h >= 0, p_c >= 0
+// and p_c h = 0 (to 1e-9 of the film scale, the gap's range inside the
+// contact), the fluid's p–theta complementarity (p_f >= 0, theta in [0, 1],
+// p_f (1 - theta) = 0) and the flux-form mass balance on h_R = max(h, h_b).
+void expect_solution_holds(FftInfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
+                           const MixedFilmOptions& options, const MixedFilm& f) {
+  const std::size_t n = op.grid().size();
+  const Eigen::ArrayXd total = f.fluid_pressure + f.contact_pressure;
+  Eigen::ArrayXd deformation(static_cast<Eigen::Index>(n));
+  op.apply({total.data(), n}, {deformation.data(), n});
+  const Eigen::ArrayXd film = f.offset + gap + deformation;
+  double film_scale = 0.0;
+  for (Eigen::Index k = 0; k < film.size(); ++k) {
+    if (f.contact_pressure[k] > 0.0) film_scale = std::max(film_scale, gap[k]);
+  }
+  if (!(film_scale > 0.0)) film_scale = gap.maxCoeff();
+  EXPECT_GE(film.minCoeff(), -1e-9 * film_scale);
+  EXPECT_GE(f.contact_pressure.minCoeff(), 0.0);
+  EXPECT_GE(f.fluid_pressure.minCoeff(), 0.0);
+  EXPECT_GE(f.fluid_fraction.minCoeff(), 0.0);
+  EXPECT_LE(f.fluid_fraction.maxCoeff(), 1.0);
+  for (Eigen::Index k = 0; k < film.size(); ++k) {
+    if (f.contact_pressure[k] > 0.0) {
+      EXPECT_LE(std::abs(film[k]), 1e-9 * film_scale) << "cell " << k;
+    }
+  }
+  EXPECT_NEAR(total.sum() * op.grid().cell_area() / options.load, 1.0, 1e-8);
+  EXPECT_TRUE(satisfies_complementarity(f.fluid_pressure, f.fluid_fraction));
+  EXPECT_LE(elastic_film_residual(op.grid(), conditions, laws(), film.max(options.boundary_film), f.fluid_pressure,
+                                  f.fluid_fraction),
+            1e-7);
+  EXPECT_NEAR(f.contact_load_fraction, f.contact_pressure.sum() / total.sum(), 1e-12);
+}
+
+// On the rough line in the mixed regime (0.61 of the load on contact) the
+// GMRES path's film is the dense path's (at 1e-3 m/s too, measured once
+// to the same tolerances): both stop at a mass residual of 1e-8, a load
+// error of 1e-8 and contact rows of 1e-10.
+TEST(MixedFilmKrylovTest, GmresPathEqualsTheDensePathOnALineContact) {
+  const RoughContact line = rough_line(0.2e-6);
+  FftInfluenceOperator op(line.grid, kEStar);
+  for (const double speed : {0.0215}) {
+    SCOPED_TRACE(::testing::Message() << "speed " << speed);
+    const MixedFilmOptions dense_options = options_for(kLineLoad, FilmLinearSolve::dense);
+    const MixedFilmOptions gmres_options = options_for(kLineLoad, FilmLinearSolve::gmres);
+    const MixedFilm dense = solve_mixed_film(op, line.gap, flow(speed), laws(), dense_options);
+    const MixedFilm gmres = solve_mixed_film(op, line.gap, flow(speed), laws(), gmres_options);
+    ASSERT_TRUE(dense.converged()) << dense.message;
+    ASSERT_TRUE(gmres.converged()) << gmres.message;
+    EXPECT_FALSE(dense.used_krylov);
+    EXPECT_TRUE(gmres.used_krylov);
+    EXPECT_GT(gmres.krylov_iterations, 0);
+    EXPECT_GT(gmres.contact_load_fraction, 0.1);
+    expect_solution_holds(op, line.gap, flow(speed), gmres_options, gmres);
+    // The total pressure agrees to the tolerances (measured 1e-9 of the
+    // peak). Its split into fluid and contact pressure on contact cells is
+    // set only loosely: there the fluid pressure's mass balance runs through
+    // the boundary film's conductance, h_b^3 at a viscosity of GPa, so that
+    // the mass tolerance admits fluid pressures 1e-4 of the peak apart
+    // (measured 4.2e-5 at 0.0215 m/s, 6.3e-6 in the contact load fraction
+    // and 1e-5 in the friction coefficient through Coulomb's share).
+    const double peak = dense.max_pressure;
+    EXPECT_LE((gmres.pressure - dense.pressure).abs().maxCoeff(), 1e-6 * peak);
+    EXPECT_LE((gmres.fluid_pressure - dense.fluid_pressure).abs().maxCoeff(), 2e-4 * peak);
+    EXPECT_NEAR(gmres.contact_load_fraction, dense.contact_load_fraction, 3e-5);
+    EXPECT_EQ(gmres.contact_area_fraction, dense.contact_area_fraction);
+    EXPECT_NEAR(gmres.central_film_thickness, dense.central_film_thickness, 1e-6 * dense.central_film_thickness);
+    EXPECT_NEAR(gmres.friction_coefficient, dense.friction_coefficient, 1e-4 * dense.friction_coefficient);
+  }
+}
+
+// A small rough point contact: the two paths agree there too (the dense one
+// asked for explicitly; the default takes GMRES on 2D grids). Measured: the
+// total pressures 4.5e-9 of the peak apart, the fluid pressures 4.4e-5
+// (the loose split on contact cells, as on the line), contact load fraction
+// 0.32.
+TEST(MixedFilmKrylovTest, GmresPathEqualsTheDensePathOnASmallPointContact) {
+  const RoughContact point = rough_point(13, 0.2e-6);
+  FftInfluenceOperator op(point.grid, kEStar);
+  const double speed = 0.05;
+  const MixedFilmOptions dense_options = options_for(kPointLoad, FilmLinearSolve::dense);
+  const MixedFilmOptions automatic = options_for(kPointLoad, FilmLinearSolve::automatic);
+  // Both from the same faster film (cold, the continuation to it costs
+  // both paths some 150-300 Newton steps).
+  const MixedFilm faster = solve_mixed_film(op, point.gap, flow(4.0 * speed), laws(), automatic);
+  ASSERT_TRUE(faster.converged()) << faster.message;
+  const MixedFilm dense = solve_mixed_film(op, point.gap, flow(speed), laws(), dense_options, &faster);
+  const MixedFilm gmres = solve_mixed_film(op, point.gap, flow(speed), laws(), automatic, &faster);
+  ASSERT_TRUE(dense.converged()) << dense.message;
+  ASSERT_TRUE(gmres.converged()) << gmres.message;
+  EXPECT_TRUE(gmres.used_krylov);
+  EXPECT_GT(gmres.contact_load_fraction, 0.05);
+  EXPECT_LT(gmres.contact_load_fraction, 0.95);
+  expect_solution_holds(op, point.gap, flow(speed), automatic, gmres);
+  const double peak = dense.max_pressure;
+  EXPECT_LE((gmres.pressure - dense.pressure).abs().maxCoeff(), 1e-6 * peak);
+  EXPECT_LE((gmres.fluid_pressure - dense.fluid_pressure).abs().maxCoeff(), 2e-4 * peak);
+  EXPECT_NEAR(gmres.contact_load_fraction, dense.contact_load_fraction, 3e-5);
+  EXPECT_EQ(gmres.contact_area_fraction, dense.contact_area_fraction);
+}
+
+// A rough point contact over falling speeds (each from the last; a coarse
+// 13^2 grid, as the speed continuation costs hundreds of Newton steps on
+// finer ones): every film
+// holds its conditions, the contact's share of the load rises toward 1 and
+// the pressure tends to the dry contact's at the same load, the difference
+// falling with the speed.
+TEST(MixedFilmKrylovTest, SlowPointContactTendsToTheDryContact) {
+  const RoughContact point = rough_point(13, 0.2e-6);
+  FftInfluenceOperator op(point.grid, kEStar);
+  solvers::PolonskyKeer dry_solver(op);
+  const solvers::SolveResult dry =
+      dry_solver.solve({point.gap.data(), point.grid.size()}, solvers::Loading::force(kPointLoad));
+  ASSERT_TRUE(dry.converged()) << dry.message;
+  const MixedFilmOptions options = options_for(kPointLoad, FilmLinearSolve::automatic);
+  std::vector<MixedFilm> films;
+  const std::vector<double> speeds{0.1, 0.01, 1e-3, 1e-4};
+  films.reserve(speeds.size());
+  for (const double speed : speeds) {
+    SCOPED_TRACE(::testing::Message() << "speed " << speed);
+    films.push_back(
+        solve_mixed_film(op, point.gap, flow(speed), laws(), options, films.empty() ? nullptr : &films.back()));
+    const MixedFilm& f = films.back();
+    ASSERT_TRUE(f.converged()) << f.message;
+    EXPECT_TRUE(f.used_krylov);
+    expect_solution_holds(op, point.gap, flow(speed), options, f);
+  }
+  std::vector<double> differences;
+  for (std::size_t k = 0; k < films.size(); ++k) {
+    differences.push_back((films[k].pressure - dry.pressure).abs().maxCoeff() / dry.max_pressure);
+    if (k > 0) {
+      EXPECT_GT(films[k].contact_load_fraction, films[k - 1].contact_load_fraction);
+      EXPECT_LT(differences[k], differences[k - 1]);
+    }
+  }
+  // Measured (13^2, 3 cells per Hertz radius): contact load fractions 0.20,
+  // 0.75, 0.957, 0.9955; the largest pressure difference to the dry
+  // contact 0.26, 0.091, 0.012, 0.0013 of the dry peak, about proportional
+  // to the speed below 0.01 m/s.
+  EXPECT_GT(films.back().contact_load_fraction, 0.99);
+  EXPECT_LT(differences.back(), 0.005);
+}
+
+TEST(MixedFilmKrylovTest, RefusesInvalidKrylovOptionsNamingThem) {
+  const auto message = [](const MixedFilmOptions& options) {
+    try {
+      options.validate();
+    } catch (const std::exception& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  MixedFilmOptions options = options_for(kPointLoad, FilmLinearSolve::gmres);
+  options.krylov_restart = 1;
+  EXPECT_NE(message(options).find("krylov_restart"), std::string::npos);
+  options = options_for(kPointLoad, FilmLinearSolve::gmres);
+  options.krylov_tolerance = 0.0;
+  EXPECT_NE(message(options).find("krylov_tolerance"), std::string::npos);
+  options = options_for(kPointLoad, FilmLinearSolve::gmres);
+  options.preconditioner_neighbourhood = 9;
+  EXPECT_NE(message(options).find("preconditioner_neighbourhood"), std::string::npos);
+  options = options_for(kPointLoad, FilmLinearSolve::gmres);
+  options.krylov_max_iterations = 0;
+  EXPECT_NE(message(options).find("krylov_max_iterations"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace halfspace::lubrication
