@@ -133,6 +133,9 @@ const std::array kOptions{
                     "none or dowson-higginson [dowson-higginson]"},
     LubricateOption{"couette-scheme", &LubricateOptions::couette_scheme, Kind::text, kElastic, "SCHEME",
                     "first-order or second-order upwinding of the wedge flux [first-order]"},
+    LubricateOption{"film-preconditioner", &LubricateOptions::film_preconditioner, Kind::text, kElastic, "NAME",
+                    "the EHL film's GMRES preconditioner: multigrid or sparse-lu (exact, for cross-checks) "
+                    "[multigrid]"},
     LubricateOption{"max-iterations", &LubricateOptions::max_iterations, Kind::integer, kFilm, "N",
                     "Newton steps of an elastic film, 1 to 100000 [100; 200 mixed]; sweeps of a rigid one [2e6]"},
     LubricateOption{"mixed", &LubricateOptions::mixed, Kind::flag, kMixed, "",

@@ -206,7 +206,7 @@ def lubricate(heights: npt.NDArray[np.float64], dx: float, dy: float, viscosity:
               coating: Optional[Sequence[Optional[float]]], boundary: Optional[str],
               pressure_viscosity: Optional[float], piezoviscosity: Optional[str],
               roelands_index: Optional[float], compressibility: Optional[str], couette_scheme: Optional[str],
-              eyring_stress: Optional[float], limiting_shear_stress: Optional[float],
+              film_preconditioner: Optional[str], eyring_stress: Optional[float], limiting_shear_stress: Optional[float],
               limiting_shear_slope: Optional[float], mixed: bool, offset: Optional[float],
               contact_friction: Optional[float], boundary_film: Optional[float],
               speeds: Optional[Sequence[float]], threads: Optional[int]) -> Any:

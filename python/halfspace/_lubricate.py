@@ -203,7 +203,8 @@ def _arguments(surface, *, viscosity: float, entrainment_velocity: Velocity,
               coating: Optional[Mapping[str, float]] = None, boundary: Optional[str] = None,
               pressure_viscosity: Optional[float] = None, piezoviscosity: Optional[str] = None,
               roelands_index: Optional[float] = None, compressibility: Optional[str] = None,
-              couette_scheme: Optional[str] = None, eyring_stress: Optional[float] = None,
+              couette_scheme: Optional[str] = None, film_preconditioner: Optional[str] = None,
+              eyring_stress: Optional[float] = None,
               limiting_shear_stress: Optional[float] = None,
               limiting_shear_slope: Optional[float] = None, mixed: bool = False, offset: Optional[float] = None,
               contact_friction: Optional[float] = None, boundary_film: Optional[float] = None,
@@ -225,7 +226,7 @@ def _arguments(surface, *, viscosity: float, entrainment_velocity: Velocity,
         *[_optional_float(value, name) for name, value in
           (("e_star", e_star), ("E1", E1), ("nu1", nu1), ("E2", E2), ("nu2", nu2))],
         layers, boundary, _optional_float(pressure_viscosity, "pressure_viscosity"), piezoviscosity,
-        _optional_float(roelands_index, "roelands_index"), compressibility, couette_scheme,
+        _optional_float(roelands_index, "roelands_index"), compressibility, couette_scheme, film_preconditioner,
         _optional_float(eyring_stress, "eyring_stress"), _optional_float(limiting_shear_stress, "limiting_shear_stress"),
         _optional_float(limiting_shear_slope, "limiting_shear_slope"),
         bool(mixed), _optional_float(offset, "offset"), _optional_float(contact_friction, "contact_friction"),
@@ -271,14 +272,17 @@ def lubricate(surface: Union[HeightMap, np.ndarray], **keywords: Any) -> Film:
         (1/Pa), piezoviscosity ("none", "barus", "roelands"; None: barus
         when alpha is given), roelands_index (z; None: from alpha),
         compressibility ("none", "dowson-higginson"; None: Dowson-Higginson),
-        couette_scheme ("first-order", "second-order").
+        couette_scheme ("first-order", "second-order"); film_preconditioner
+        (the GMRES preconditioner: "multigrid", the default, or "sparse-lu",
+        exact, for cross-checks).
     eyring_stress (tau0, Pa), limiting_shear_stress (tau_L0, Pa),
         limiting_shear_slope (gamma): the film's Couette shear stress is
         tau0 asinh(tau_N / tau0) (Eyring) and/or at most tau_L0 + gamma p;
         the pressure and film stay the Newtonian solution.
 
     mixed: the elastic film may close (``--mixed``; a homogeneous body,
-        e_star or E1, nu1, E2, nu2; profiles of at most 2048 points): where
+        e_star or E1, nu1, E2, nu2; profiles solved densely up to 2048 points,
+        longer profiles and 2D maps by Newton-GMRES, docs/solvers.md): where
         the gap would be negative the asperities carry a contact pressure
         beside the fluid's. Its load is force= or, separation controlled,
         offset= (h0 of h = h0 + gap + K p, m); contact_friction (Coulomb mu

@@ -272,9 +272,9 @@ void bind_lubricate(nb::module_& module) {
          std::optional<std::string> boundary, std::optional<double> pressure_viscosity,
          std::optional<std::string> piezoviscosity, std::optional<double> roelands_index,
          std::optional<std::string> compressibility, std::optional<std::string> couette_scheme,
-         std::optional<double> eyring_stress, std::optional<double> limiting_shear_stress,
-         std::optional<double> limiting_shear_slope, bool mixed, std::optional<double> offset,
-         std::optional<double> contact_friction, std::optional<double> boundary_film,
+         std::optional<std::string> film_preconditioner, std::optional<double> eyring_stress,
+         std::optional<double> limiting_shear_stress, std::optional<double> limiting_shear_slope, bool mixed,
+         std::optional<double> offset, std::optional<double> contact_friction, std::optional<double> boundary_film,
          std::optional<std::vector<double>> speeds, std::optional<int> threads) {
         LubricationProblemOptions o;
         o.viscosity = viscosity;
@@ -311,6 +311,7 @@ void bind_lubricate(nb::module_& module) {
         o.roelands_index = roelands_index;
         o.compressibility = std::move(compressibility);
         o.couette_scheme = std::move(couette_scheme);
+        o.film_preconditioner = std::move(film_preconditioner);
         o.eyring_stress = eyring_stress;
         o.limiting_shear_stress = limiting_shear_stress;
         o.limiting_shear_slope = limiting_shear_slope;
@@ -328,9 +329,9 @@ void bind_lubricate(nb::module_& module) {
       nb::arg("e_star").none(), nb::arg("E1").none(), nb::arg("nu1").none(), nb::arg("E2").none(),
       nb::arg("nu2").none(), nb::arg("coating").none(), nb::arg("boundary").none(),
       nb::arg("pressure_viscosity").none(), nb::arg("piezoviscosity").none(), nb::arg("roelands_index").none(),
-      nb::arg("compressibility").none(), nb::arg("couette_scheme").none(), nb::arg("eyring_stress").none(),
-      nb::arg("limiting_shear_stress").none(), nb::arg("limiting_shear_slope").none(), nb::arg("mixed"),
-      nb::arg("offset").none(), nb::arg("contact_friction").none(), nb::arg("boundary_film").none(),
+      nb::arg("compressibility").none(), nb::arg("couette_scheme").none(), nb::arg("film_preconditioner").none(),
+      nb::arg("eyring_stress").none(), nb::arg("limiting_shear_stress").none(), nb::arg("limiting_shear_slope").none(),
+      nb::arg("mixed"), nb::arg("offset").none(), nb::arg("contact_friction").none(), nb::arg("boundary_film").none(),
       nb::arg("speeds").none(), nb::arg("threads").none());
 }
 

@@ -86,6 +86,7 @@ FilmKind Rules::kind(bool elastic, bool coated) const {
                                                     {"roelands_index", o_.roelands_index.has_value()},
                                                     {"compressibility", o_.compressibility.has_value()},
                                                     {"couette_scheme", o_.couette_scheme.has_value()},
+                                                    {"film_preconditioner", o_.film_preconditioner.has_value()},
                                                     {"boundary", o_.boundary.has_value()}});
     if (!present.empty()) {
       throw InputError(fmt::format(
@@ -96,6 +97,12 @@ FilmKind Rules::kind(bool elastic, bool coated) const {
     return FilmKind::rigid;
   }
   if (o_.mixed) {
+    if (o_.film_preconditioner) {
+      throw InputError(
+          fmt::format("{} applies to the EHL film without {}: the mixed film's preconditioner is "
+                      "its sparse LU with the contact rows",
+                      s_.describe("film_preconditioner", *o_.film_preconditioner), name("mixed")));
+    }
     if (o_.separation) {
       throw InputError(fmt::format("{} is the rigid film's: the mixed film takes {} or {}", name("separation"),
                                    s_.describe("force", "N"), s_.describe("offset", "M")));
@@ -237,6 +244,10 @@ LubricationProblem make_lubrication_problem(const LubricationProblemOptions& opt
       if (o.tolerance) elastic.tolerance = *o.tolerance;
       if (o.max_iterations) elastic.max_iterations = rules.max_iterations(true);
       if (scheme) elastic.couette_scheme = *scheme;
+      if (o.film_preconditioner) {
+        elastic.preconditioner =
+            rules.parsed("film_preconditioner", *o.film_preconditioner, parse_krylov_preconditioner);
+      }
       elastic.validate();
       return problem;
     }

@@ -16,7 +16,9 @@ StressedBody parse_stressed_body(std::string_view text, std::string_view option)
   throw InputError(fmt::format("{} {} is invalid: allowed values are 1 (body 1) and 2 (body 2)", option, text));
 }
 
-int body_number(StressedBody body) { return body == StressedBody::body1 ? 1 : 2; }
+int body_number(StressedBody body) {
+  return body == StressedBody::body1 ? 1 : 2;
+}
 
 StressedBody default_stressed_body(const std::optional<ElasticPair>& bodies) {
   if (!bodies) return StressedBody::body2;

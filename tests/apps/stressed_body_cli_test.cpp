@@ -31,10 +31,10 @@ using testing::run_program;
 // beta = 0: uncoupled), on a free 24 x 24 grid.
 std::vector<std::string> sliding_on_rigid(const std::string& output, const std::string& e2,
                                           const std::vector<std::string>& extra) {
-  std::vector<std::string> a{"solve", "--geometry", "sphere", "--radius", "0.01",  "--grid",     "24x24",
-                             "--size", "4e-4",      "--E1",   "1e9",      "--nu1", "0.5",        "--E2",
-                             e2,       "--nu2",     "0.5",    "--force",  "10",    "--friction", "0.3",
-                             "--sliding", "1,0",    "--output", output,  "--threads", "1",     "--quiet"};
+  std::vector<std::string> a{"solve",     "--geometry", "sphere",   "--radius", "0.01",      "--grid",     "24x24",
+                             "--size",    "4e-4",       "--E1",     "1e9",      "--nu1",     "0.5",        "--E2",
+                             e2,          "--nu2",      "0.5",      "--force",  "10",        "--friction", "0.3",
+                             "--sliding", "1,0",        "--output", output,     "--threads", "1",          "--quiet"};
   a.insert(a.end(), extra.begin(), extra.end());
   return a;
 }
@@ -91,15 +91,15 @@ TEST(StressedBodyCliTest, ARigidBodyTwoGivesBodyOnesStressesUnderMinusQ) {
   ASSERT_EQ(run.exit_code, kExitOk) << run.err;
   EXPECT_NE(run.out.find("body 1, Poisson's ratio 0.5"), std::string::npos) << run.out;
   EXPECT_LE(largest_difference(field(dir / "one.h5", "/stress/sigma_xz"), xz), 1e-12 * largest(xz));
-  run = run_program(
-      {"stress", "s.h5", "--depths", "2e-6,1e-5", "--body", "2", "--output", "two.h5", "--threads", "1"}, dir.path());
+  run = run_program({"stress", "s.h5", "--depths", "2e-6,1e-5", "--body", "2", "--output", "two.h5", "--threads", "1"},
+                    dir.path());
   ASSERT_EQ(run.exit_code, kExitOk) << run.err;
   EXPECT_LE(largest_difference(field(dir / "two.h5", "/stress/sigma_xz"), body2.components[4]),
             1e-12 * largest(body2.components[4]));
 
   // --stress-body 2 in the solve: body 2's field.
-  run = run_program(sliding_on_rigid("b2.h5", "inf", {"--stress-depths", "2e-6,1e-5", "--stress-body", "2"}),
-                    dir.path());
+  run =
+      run_program(sliding_on_rigid("b2.h5", "inf", {"--stress-depths", "2e-6,1e-5", "--stress-body", "2"}), dir.path());
   ASSERT_EQ(run.exit_code, kExitOk) << run.err;
   EXPECT_LE(largest_difference(field(dir / "b2.h5", "/stress/sigma_xz"), body2.components[4]),
             1e-12 * largest(body2.components[4]));
@@ -118,9 +118,10 @@ TEST(StressedBodyCliTest, SimilarBodiesGiveBodyTwoWithTheirRatio) {
 TEST(StressedBodyCliTest, RefusalsNameTheOptions) {
   const TempDir dir;
   // Two elastic bodies of different Poisson's ratios: which is meant?
-  std::vector<std::string> dissimilar = {"solve", "--geometry", "sphere", "--radius", "0.01", "--grid", "16x16",
-                                         "--size", "4e-4", "--E1", "1e9", "--nu1", "0.3", "--E2", "2e9", "--nu2",
-                                         "0.25", "--force", "10", "--stress-depths", "1e-5", "--output", "bad.h5"};
+  std::vector<std::string> dissimilar = {
+      "solve", "--geometry", "sphere", "--radius",        "0.01", "--grid",   "16x16", "--size",
+      "4e-4",  "--E1",       "1e9",    "--nu1",           "0.3",  "--E2",     "2e9",   "--nu2",
+      "0.25",  "--force",    "10",     "--stress-depths", "1e-5", "--output", "bad.h5"};
   expect_input_error(run_program(dissimilar, dir.path()), "pass --stress-body 1 or 2, or --stress-nu NU",
                      dir / "bad.h5");
   dissimilar.insert(dissimilar.end(), {"--stress-body", "3"});
@@ -129,10 +130,10 @@ TEST(StressedBodyCliTest, RefusalsNameTheOptions) {
                      "needs --stress-depths", dir / "bad.h5");
   // A coated result has no body 2 to give.
   const std::vector<std::string> coated = {
-      "solve",  "--geometry", "sphere",          "--radius", "0.01", "--grid", "16x16", "--size", "4e-4",
-      "--boundary", "periodic", "--layer-thickness", "2e-5", "--layer-E", "1e9", "--layer-nu", "0.3",
-      "--substrate-E", "2e9", "--substrate-nu", "0.3", "--force", "1", "--stress-depths", "1e-5",
-      "--stress-body", "2", "--output", "bad.h5"};
+      "solve", "--geometry",    "sphere",   "--radius",          "0.01",  "--grid",    "16x16", "--size",
+      "4e-4",  "--boundary",    "periodic", "--layer-thickness", "2e-5",  "--layer-E", "1e9",   "--layer-nu",
+      "0.3",   "--substrate-E", "2e9",      "--substrate-nu",    "0.3",   "--force",   "1",     "--stress-depths",
+      "1e-5",  "--stress-body", "2",        "--output",          "bad.h5"};
   expect_input_error(run_program(coated, dir.path()), "--stress-body 2 is not available for a coated half-space",
                      dir / "bad.h5");
 }

@@ -157,6 +157,12 @@ TEST(LubricationProblemTest, EachRuleIsRefusedNamingTheOptionInBothSpellings) {
        "piezoviscosity='exponential': ", "--piezoviscosity 'exponential': "},
       {"unknown scheme", [](auto& o) { o.couette_scheme = "third-order"; }, elastic_film,
        "couette_scheme='third-order': ", "--couette_scheme 'third-order': "},
+      {"unknown preconditioner", [](auto& o) { o.film_preconditioner = "jacobi"; }, elastic_film,
+       "film_preconditioner='jacobi': ", "--film_preconditioner 'jacobi': "},
+      {"preconditioner of a mixed film", [](auto& o) { o.film_preconditioner = "sparse-lu"; }, mixed_film,
+       "applies to the EHL film without mixed", "applies to the EHL film without --mixed"},
+      {"preconditioner of a rigid film", [](auto& o) { o.film_preconditioner = "sparse-lu"; }, rigid_film,
+       "film_preconditioner need an elastic film", "--film_preconditioner need an elastic film"},
       {"unknown boundary", [](auto& o) { o.boundary = "open"; }, elastic_film, "boundary: ", "--boundary: "},
       {"Newton steps", [](auto& o) { o.max_iterations = 0; }, elastic_film,
        "max_iterations=0 is invalid: allowed range is 1 to 100000", "--max_iterations 0 is invalid"},
@@ -392,6 +398,7 @@ TEST(LubricationProblemTest, ValidOptionsMakeTheTypedFilm) {
   pair.pressure_viscosity = 2e-8;
   pair.boundary = "periodic";
   pair.couette_scheme = "second-order";
+  pair.film_preconditioner = "sparse-lu";
   pair.max_iterations = 30;
   const LubricationProblem ehl = make_lubrication_problem(pair);
   EXPECT_EQ(ehl.kind, FilmKind::elastic);
@@ -403,6 +410,8 @@ TEST(LubricationProblemTest, ValidOptionsMakeTheTypedFilm) {
   EXPECT_EQ(ehl.elastic.load, 1e4);
   EXPECT_EQ(ehl.elastic.max_iterations, 30);
   EXPECT_EQ(ehl.elastic.couette_scheme, CouetteScheme::second_order);
+  EXPECT_EQ(ehl.elastic.preconditioner, KrylovPreconditioner::sparse_lu);
+  EXPECT_EQ(make_lubrication_problem(elastic_film()).elastic.preconditioner, KrylovPreconditioner::multigrid);
 
   LubricationProblemOptions coated = elastic_film();
   coated.e_star.reset();

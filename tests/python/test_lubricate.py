@@ -173,6 +173,7 @@ def test_bad_rigid_keyword_is_named(keywords, message):
     ({"piezoviscosity": "roelands", "roelands_index": -1.0}, "roelands_index=-1 is invalid"),
     ({"compressibility": "tait"}, "compressibility='tait'"),
     ({"couette_scheme": "third-order"}, "couette_scheme='third-order'"),
+    ({"film_preconditioner": "jacobi"}, "film_preconditioner='jacobi'"),
     ({"boundary": "open"}, "boundary:"),
     ({"e_star": -1.0}, "E\\*|e_star|modulus"),
     ({"E1": 2e11}, "e_star cannot be combined with E1"),

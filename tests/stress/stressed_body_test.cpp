@@ -57,7 +57,8 @@ TEST(StressedBodyTest, TakesThePoissonRatioOfTheChosenBody) {
   // Unknown bodies: body 2 with the given ratio, or a message naming the option.
   c = choose_stressed_body(std::nullopt, 0.3, std::nullopt, "--body", "--nu");
   EXPECT_EQ(c.body, StressedBody::body2);
-  std::string message = error_of([] { choose_stressed_body(std::nullopt, std::nullopt, std::nullopt, "--body", "--nu"); });
+  std::string message =
+      error_of([] { choose_stressed_body(std::nullopt, std::nullopt, std::nullopt, "--body", "--nu"); });
   EXPECT_NE(message.find("pass --nu NU"), std::string::npos) << message;
   message = error_of([] { choose_stressed_body(std::nullopt, 0.7, std::nullopt, "--body", "--nu"); });
   EXPECT_FALSE(message.empty());

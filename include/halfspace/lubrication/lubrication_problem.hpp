@@ -51,6 +51,8 @@ struct LubricationProblemOptions : BodyOptions {
   std::optional<double> roelands_index;
   std::optional<std::string> compressibility;
   std::optional<std::string> couette_scheme;
+  // The EHL film's GMRES preconditioner ("multigrid" or "sparse-lu"), elastic only.
+  std::optional<std::string> film_preconditioner;
   // The solver of the film in force.
   std::optional<double> tolerance;
   std::optional<long long> max_iterations;
