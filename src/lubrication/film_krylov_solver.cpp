@@ -73,7 +73,7 @@ FilmKrylovSolver::FilmKrylovSolver(InfluenceOperator& op, const ReynoldsStencil&
     }
   }
   const auto ni = static_cast<Eigen::Index>(n_);
-  const auto m = static_cast<Eigen::Index>(settings_.restart);
+  const int m = settings_.restart;
   dp_ds_.resize(ni);
   load_row_.resize(ni);
   dtheta_ds_.resize(ni);
@@ -83,14 +83,8 @@ FilmKrylovSolver::FilmKrylovSolver(InfluenceOperator& op, const ReynoldsStencil&
   border_solved_.resize(ni);
   head_in_.resize(ni);
   head_out_.resize(ni);
-  basis_.resize(ni + 1, m + 1);
-  hessenberg_.resize(m + 1, m);
-  givens_c_.resize(m);
-  givens_s_.resize(m);
-  g_.resize(m + 1);
-  y_.resize(m);
+  gmres_.resize(ni + 1, m);
   work_.resize(ni + 1);
-  preconditioned_.resize(ni + 1);
   const int line_axis = topology.couette_y() > topology.couette_x() ? 1 : 0;
   preconditioner_ = make_film_preconditioner(settings_.preconditioner, grid, line_axis);
 }
@@ -195,59 +189,9 @@ void FilmKrylovSolver::apply_preconditioner(const Eigen::VectorXd& v, Eigen::Vec
 
 int FilmKrylovSolver::gmres(double tolerance, int max_iterations, const Eigen::VectorXd& residual,
                             Eigen::VectorXd& step) {
-  int iterations = 0;
-  step.setZero();
-  const double b_norm = residual.norm();
-  if (b_norm == 0.0) return 0;
-  const int m = settings_.restart;
-  double relative = 1.0;
-  // Restarted GMRES with right preconditioning (Saad 2003, alg. 9.5): the
-  // least-squares residual |g_{j+1}| tracks ||b - J x|| without forming it.
-  while (iterations < max_iterations) {
-    apply_jacobian(step, work_);
-    work_ = -residual - work_;
-    const double beta = work_.norm();
-    relative = beta / b_norm;
-    if (relative <= tolerance) break;
-    basis_.col(0) = work_ / beta;
-    g_.setZero();
-    g_[0] = beta;
-    int used = 0;
-    for (int j = 0; j < m && iterations < max_iterations; ++j) {
-      work_ = basis_.col(j);
-      apply_preconditioner(work_, preconditioned_);
-      apply_jacobian(preconditioned_, work_);
-      for (int i = 0; i <= j; ++i) {
-        hessenberg_(i, j) = basis_.col(i).dot(work_);
-        work_ -= hessenberg_(i, j) * basis_.col(i);
-      }
-      const double next = work_.norm();
-      hessenberg_(j + 1, j) = next;
-      if (next > 0.0) basis_.col(j + 1) = work_ / next;
-      for (int i = 0; i < j; ++i) {
-        const double a = hessenberg_(i, j), b = hessenberg_(i + 1, j);
-        hessenberg_(i, j) = givens_c_[i] * a + givens_s_[i] * b;
-        hessenberg_(i + 1, j) = -givens_s_[i] * a + givens_c_[i] * b;
-      }
-      const double radius = std::hypot(hessenberg_(j, j), hessenberg_(j + 1, j));
-      givens_c_[j] = radius > 0.0 ? hessenberg_(j, j) / radius : 1.0;
-      givens_s_[j] = radius > 0.0 ? hessenberg_(j + 1, j) / radius : 0.0;
-      hessenberg_(j, j) = radius;
-      hessenberg_(j + 1, j) = 0.0;
-      g_[j + 1] = -givens_s_[j] * g_[j];
-      g_[j] = givens_c_[j] * g_[j];
-      ++iterations;
-      used = j + 1;
-      if (std::abs(g_[j + 1]) / b_norm <= tolerance || next == 0.0) break;
-    }
-    y_.head(used) = g_.head(used);
-    hessenberg_.topLeftCorner(used, used).triangularView<Eigen::Upper>().solveInPlace(y_.head(used));
-    work_.noalias() = basis_.leftCols(used) * y_.head(used);
-    apply_preconditioner(work_, preconditioned_);
-    step += preconditioned_;
-    if (!step.allFinite()) break;
-  }
-  return iterations;
+  return gmres_.solve([this](const Eigen::VectorXd& v, Eigen::VectorXd& out) { apply_jacobian(v, out); },
+                      [this](const Eigen::VectorXd& v, Eigen::VectorXd& out) { apply_preconditioner(v, out); },
+                      residual, tolerance, max_iterations, step);
 }
 
 FilmKrylovOutcome FilmKrylovSolver::solve(const LocalRows& rows, const std::vector<char>& branch_full,

@@ -16,6 +16,7 @@
 #include "film_preconditioner.hpp"
 #include "halfspace/lubrication/reynolds_stencil.hpp"
 #include "halfspace/operators/influence_operator.hpp"
+#include "restarted_gmres.hpp"
 #include "reynolds_linearisation.hpp"
 
 namespace halfspace::lubrication::detail {
@@ -94,8 +95,8 @@ class FilmKrylovSolver {
   Eigen::VectorXd border_column_, border_solved_, head_in_, head_out_;
   double border_pivot_ = 0.0;
   // GMRES workspace.
-  Eigen::MatrixXd basis_, hessenberg_;
-  Eigen::VectorXd givens_c_, givens_s_, g_, y_, work_, preconditioned_;
+  RestartedGmres gmres_;
+  Eigen::VectorXd work_;
 };
 
 }  // namespace halfspace::lubrication::detail

@@ -82,7 +82,6 @@ MixedKrylovSolver::MixedKrylovSolver(InfluenceOperator& op, const ReynoldsStenci
   const auto ni = static_cast<Eigen::Index>(n_);
   m_ = 2 * ni + (load_control ? 1 : 0);
   scales_.load_control = load_control;
-  const auto restart = static_cast<Eigen::Index>(settings_.restart);
   dp_ds_.resize(ni);
   dtheta_ds_.resize(ni);
   total_.resize(ni);
@@ -92,14 +91,8 @@ MixedKrylovSolver::MixedKrylovSolver(InfluenceOperator& op, const ReynoldsStenci
   border_solved_.resize(2 * ni);
   head_in_.resize(2 * ni);
   head_out_.resize(2 * ni);
-  basis_.resize(m_, restart + 1);
-  hessenberg_.resize(restart + 1, restart);
-  givens_c_.resize(restart);
-  givens_s_.resize(restart);
-  g_.resize(restart + 1);
-  y_.resize(restart);
+  gmres_.resize(m_, settings_.restart);
   work_.resize(m_);
-  preconditioned_.resize(m_);
 }
 
 template <class Visit>
@@ -231,60 +224,11 @@ void MixedKrylovSolver::apply_preconditioner(const Eigen::VectorXd& v, Eigen::Ve
   out[two_n] = z;
 }
 
-// Restarted, right-preconditioned GMRES (Saad 2003, alg. 9.5) from step = 0;
-// the Givens-rotated least-squares residual tracks ||b - J x||.
 int MixedKrylovSolver::gmres(double tolerance, int max_iterations, const Eigen::VectorXd& residual,
                              Eigen::VectorXd& step) {
-  int iterations = 0;
-  step.setZero();
-  const double b_norm = residual.norm();
-  if (b_norm == 0.0) return 0;
-  const int restart = settings_.restart;
-  while (iterations < max_iterations) {
-    apply_jacobian(step, work_);
-    work_ = -residual - work_;
-    const double beta = work_.norm();
-    if (beta <= tolerance * b_norm) break;
-    basis_.col(0) = work_ / beta;
-    g_.setZero();
-    g_[0] = beta;
-    int size = 0;
-    for (int j = 0; j < restart && iterations < max_iterations; ++j) {
-      work_ = basis_.col(j);
-      apply_preconditioner(work_, preconditioned_);
-      apply_jacobian(preconditioned_, work_);
-      // Modified Gram–Schmidt.
-      for (int i = 0; i <= j; ++i) {
-        hessenberg_(i, j) = basis_.col(i).dot(work_);
-        work_ -= hessenberg_(i, j) * basis_.col(i);
-      }
-      const double norm = work_.norm();
-      hessenberg_(j + 1, j) = norm;
-      if (norm > 0.0) basis_.col(j + 1) = work_ / norm;
-      for (int i = 0; i < j; ++i) {
-        const double upper = hessenberg_(i, j), lower = hessenberg_(i + 1, j);
-        hessenberg_(i, j) = givens_c_[i] * upper + givens_s_[i] * lower;
-        hessenberg_(i + 1, j) = givens_c_[i] * lower - givens_s_[i] * upper;
-      }
-      const double radius = std::hypot(hessenberg_(j, j), hessenberg_(j + 1, j));
-      givens_c_[j] = radius > 0.0 ? hessenberg_(j, j) / radius : 1.0;
-      givens_s_[j] = radius > 0.0 ? hessenberg_(j + 1, j) / radius : 0.0;
-      hessenberg_(j, j) = radius;
-      hessenberg_(j + 1, j) = 0.0;
-      g_[j + 1] = -givens_s_[j] * g_[j];
-      g_[j] *= givens_c_[j];
-      ++iterations;
-      size = j + 1;
-      if (std::abs(g_[j + 1]) <= tolerance * b_norm || norm == 0.0) break;
-    }
-    y_.head(size) = g_.head(size);
-    hessenberg_.topLeftCorner(size, size).triangularView<Eigen::Upper>().solveInPlace(y_.head(size));
-    work_.noalias() = basis_.leftCols(size) * y_.head(size);
-    apply_preconditioner(work_, preconditioned_);
-    step += preconditioned_;
-    if (!step.allFinite()) break;
-  }
-  return iterations;
+  return gmres_.solve([this](const Eigen::VectorXd& v, Eigen::VectorXd& out) { apply_jacobian(v, out); },
+                      [this](const Eigen::VectorXd& v, Eigen::VectorXd& out) { apply_preconditioner(v, out); },
+                      residual, tolerance, max_iterations, step);
 }
 
 MixedKrylovOutcome MixedKrylovSolver::solve(const MixedRows& rows, const std::vector<char>& branch_full,

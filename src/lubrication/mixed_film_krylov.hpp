@@ -17,6 +17,7 @@
 
 #include "halfspace/lubrication/reynolds_stencil.hpp"
 #include "halfspace/operators/influence_operator.hpp"
+#include "restarted_gmres.hpp"
 #include "reynolds_linearisation.hpp"
 
 namespace halfspace::lubrication::detail {
@@ -109,9 +110,8 @@ class MixedKrylovSolver {
   bool analysed_ = false;
   Eigen::VectorXd load_row_, border_column_, border_solved_, head_in_, head_out_;
   double border_pivot_ = 0.0;
-  // GMRES workspace.
-  Eigen::MatrixXd basis_, hessenberg_;
-  Eigen::VectorXd givens_c_, givens_s_, g_, y_, work_, preconditioned_;
+  RestartedGmres gmres_;
+  Eigen::VectorXd work_;
 };
 
 }  // namespace halfspace::lubrication::detail

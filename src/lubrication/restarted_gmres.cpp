@@ -1,0 +1,74 @@
+// Restarted, right-preconditioned GMRES (restarted_gmres.hpp): Arnoldi by
+// modified Gram-Schmidt, the Hessenberg matrix reduced by Givens rotations
+// as it grows, so that |g_{j+1}| is the residual norm of the current iterate.
+#include "restarted_gmres.hpp"
+
+#include <cmath>
+
+namespace halfspace::lubrication::detail {
+
+void RestartedGmres::resize(Eigen::Index size, int restart) {
+  restart_ = restart;
+  basis_.resize(size, restart + 1);
+  hessenberg_.resize(restart + 1, restart);
+  givens_c_.resize(restart);
+  givens_s_.resize(restart);
+  g_.resize(restart + 1);
+  y_.resize(restart);
+  work_.resize(size);
+  preconditioned_.resize(size);
+}
+
+int RestartedGmres::solve(const Apply& apply, const Apply& precondition, const Eigen::VectorXd& residual,
+                          double tolerance, int max_iterations, Eigen::VectorXd& x) {
+  int iterations = 0;
+  x.setZero();
+  const double b_norm = residual.norm();
+  if (b_norm == 0.0) return 0;
+  while (iterations < max_iterations) {
+    apply(x, work_);
+    work_ = -residual - work_;
+    const double beta = work_.norm();
+    if (beta <= tolerance * b_norm) break;
+    basis_.col(0) = work_ / beta;
+    g_.setZero();
+    g_[0] = beta;
+    int size = 0;
+    for (int j = 0; j < restart_ && iterations < max_iterations; ++j) {
+      work_ = basis_.col(j);
+      precondition(work_, preconditioned_);
+      apply(preconditioned_, work_);
+      for (int i = 0; i <= j; ++i) {
+        hessenberg_(i, j) = basis_.col(i).dot(work_);
+        work_ -= hessenberg_(i, j) * basis_.col(i);
+      }
+      const double norm = work_.norm();
+      hessenberg_(j + 1, j) = norm;
+      if (norm > 0.0) basis_.col(j + 1) = work_ / norm;
+      for (int i = 0; i < j; ++i) {
+        const double upper = hessenberg_(i, j), lower = hessenberg_(i + 1, j);
+        hessenberg_(i, j) = givens_c_[i] * upper + givens_s_[i] * lower;
+        hessenberg_(i + 1, j) = givens_c_[i] * lower - givens_s_[i] * upper;
+      }
+      const double radius = std::hypot(hessenberg_(j, j), hessenberg_(j + 1, j));
+      givens_c_[j] = radius > 0.0 ? hessenberg_(j, j) / radius : 1.0;
+      givens_s_[j] = radius > 0.0 ? hessenberg_(j + 1, j) / radius : 0.0;
+      hessenberg_(j, j) = radius;
+      hessenberg_(j + 1, j) = 0.0;
+      g_[j + 1] = -givens_s_[j] * g_[j];
+      g_[j] *= givens_c_[j];
+      ++iterations;
+      size = j + 1;
+      if (std::abs(g_[j + 1]) <= tolerance * b_norm || norm == 0.0) break;
+    }
+    y_.head(size) = g_.head(size);
+    hessenberg_.topLeftCorner(size, size).triangularView<Eigen::Upper>().solveInPlace(y_.head(size));
+    work_.noalias() = basis_.leftCols(size) * y_.head(size);
+    precondition(work_, preconditioned_);
+    x += preconditioned_;
+    if (!x.allFinite()) break;
+  }
+  return iterations;
+}
+
+}  // namespace halfspace::lubrication::detail
