@@ -48,30 +48,7 @@ double film_krylov_memory_estimate(std::size_t nodes, const FilmKrylovSettings& 
 
 FilmKrylovSolver::FilmKrylovSolver(InfluenceOperator& op, const ReynoldsStencil& topology,
                                    const FilmKrylovSettings& settings)
-    : op_(op), topology_(topology), settings_(settings), n_(op.grid().size()) {
-  const Grid& grid = op.grid();
-  const int r = settings_.neighbourhood;
-  std::vector<double> unit(n_, 0.0), column(n_, 0.0);
-  unit[0] = 1.0;
-  op_.apply(unit, column);
-  const auto nx = static_cast<long>(grid.nx());
-  const auto ny = static_cast<long>(grid.ny());
-  local_k_.assign(static_cast<std::size_t>((2 * r + 1) * (2 * r + 1)), 0.0);
-  for (long oy = -r; oy <= r; ++oy) {
-    for (long ox = -r; ox <= r; ++ox) {
-      long cx = 0, cy = 0;
-      if (grid.periodic()) {
-        cx = ((ox % nx) + nx) % nx;
-        cy = ((oy % ny) + ny) % ny;
-      } else {
-        cx = std::abs(ox);
-        cy = std::abs(oy);
-        if (cx >= nx || cy >= ny) continue;
-      }
-      local_k_[static_cast<std::size_t>((oy + r) * (2 * r + 1) + (ox + r))] =
-          column[static_cast<std::size_t>(cy * nx + cx)];
-    }
-  }
+    : op_(op), topology_(topology), settings_(settings), n_(op.grid().size()), local_(op, settings.neighbourhood) {
   const auto ni = static_cast<Eigen::Index>(n_);
   const int m = settings_.restart;
   dp_ds_.resize(ni);
@@ -86,7 +63,7 @@ FilmKrylovSolver::FilmKrylovSolver(InfluenceOperator& op, const ReynoldsStencil&
   gmres_.resize(ni + 1, m);
   work_.resize(ni + 1);
   const int line_axis = topology.couette_y() > topology.couette_x() ? 1 : 0;
-  preconditioner_ = make_film_preconditioner(settings_.preconditioner, grid, line_axis);
+  preconditioner_ = make_film_preconditioner(settings_.preconditioner, op_.grid(), line_axis);
 }
 
 void FilmKrylovSolver::apply_jacobian(const Eigen::VectorXd& v, Eigen::VectorXd& out) {
@@ -113,10 +90,6 @@ void FilmKrylovSolver::apply_jacobian(const Eigen::VectorXd& v, Eigen::VectorXd&
 }
 
 bool FilmKrylovSolver::factorise(std::string& message) {
-  const Grid& grid = op_.grid();
-  const auto nx = static_cast<long>(grid.nx());
-  const auto ny = static_cast<long>(grid.ny());
-  const int r = settings_.neighbourhood;
   // Rows in compressed form, each row's entries gathered, sorted and
   // summed. Every entry of the pattern is kept, zero or not, so that the
   // pattern is the same at every Newton step (the LU analyses it once).
@@ -138,22 +111,10 @@ bool FilmKrylovSolver::factorise(std::string& message) {
         row_scratch_.emplace_back(static_cast<int>(j),
                                   (term.by_pressure * dp_ds_[j] + term.by_fraction * dtheta_ds_[j]) / mass_scale_);
         border_column_[kk] += term.by_film / mass_scale_;
-        const long x = static_cast<long>(term.node) % nx;
-        const long y = static_cast<long>(term.node) / nx;
-        for (long oy = -r; oy <= r; ++oy) {
-          for (long ox = -r; ox <= r; ++ox) {
-            long mx = x + ox, my = y + oy;
-            if (grid.periodic()) {
-              mx = (mx + nx) % nx;
-              my = (my + ny) % ny;
-            } else if (mx < 0 || mx >= nx || my < 0 || my >= ny) {
-              continue;
-            }
-            const auto m = static_cast<Eigen::Index>(my * nx + mx);
-            const double k_value = local_k_[static_cast<std::size_t>((oy + r) * (2 * r + 1) + (ox + r))];
-            row_scratch_.emplace_back(static_cast<int>(m), term.by_film / mass_scale_ * k_value * dp_ds_[m]);
-          }
-        }
+        local_.for_each(term.node, [&](std::size_t m, double k_value) {
+          row_scratch_.emplace_back(static_cast<int>(m),
+                                    term.by_film / mass_scale_ * k_value * dp_ds_[static_cast<Eigen::Index>(m)]);
+        });
       }
     }
     std::sort(row_scratch_.begin(), row_scratch_.end(), [](const auto& a, const auto& b) { return a.first < b.first; });

@@ -16,6 +16,7 @@
 #include "film_preconditioner.hpp"
 #include "halfspace/lubrication/reynolds_stencil.hpp"
 #include "halfspace/operators/influence_operator.hpp"
+#include "local_influence.hpp"
 #include "restarted_gmres.hpp"
 #include "reynolds_linearisation.hpp"
 
@@ -79,7 +80,7 @@ class FilmKrylovSolver {
   const ReynoldsStencil& topology_;
   FilmKrylovSettings settings_;
   std::size_t n_;
-  std::vector<double> local_k_;  // K at offsets (dx, dy) in [-r, r]^2, row-major
+  LocalInfluence local_;  // K within settings.neighbourhood cells, for the preconditioner
   // The current linear system.
   const LocalRows* rows_ = nullptr;
   double mass_scale_ = 1.0, area_over_load_ = 1.0;

@@ -54,31 +54,7 @@ double mixed_krylov_memory_estimate(std::size_t nodes, const MixedKrylovSettings
 
 MixedKrylovSolver::MixedKrylovSolver(InfluenceOperator& op, const ReynoldsStencil& topology,
                                      const MixedKrylovSettings& settings, bool load_control)
-    : op_(op), topology_(topology), settings_(settings), n_(op.grid().size()) {
-  const Grid& grid = op.grid();
-  const int r = settings_.neighbourhood;
-  std::vector<double> unit(n_, 0.0), column(n_, 0.0);
-  unit[0] = 1.0;
-  op_.apply(unit, column);
-  self_influence_ = column[0];
-  const auto nx = static_cast<long>(grid.nx());
-  const auto ny = static_cast<long>(grid.ny());
-  local_k_.assign(static_cast<std::size_t>((2 * r + 1) * (2 * r + 1)), 0.0);
-  for (long oy = -r; oy <= r; ++oy) {
-    for (long ox = -r; ox <= r; ++ox) {
-      long cx = 0, cy = 0;
-      if (grid.periodic()) {
-        cx = ((ox % nx) + nx) % nx;
-        cy = ((oy % ny) + ny) % ny;
-      } else {
-        cx = std::abs(ox);
-        cy = std::abs(oy);
-        if (cx >= nx || cy >= ny) continue;
-      }
-      local_k_[static_cast<std::size_t>((oy + r) * (2 * r + 1) + (ox + r))] =
-          column[static_cast<std::size_t>(cy * nx + cx)];
-    }
-  }
+    : op_(op), topology_(topology), settings_(settings), n_(op.grid().size()), local_(op, settings.neighbourhood) {
   const auto ni = static_cast<Eigen::Index>(n_);
   m_ = 2 * ni + (load_control ? 1 : 0);
   scales_.load_control = load_control;
@@ -93,29 +69,6 @@ MixedKrylovSolver::MixedKrylovSolver(InfluenceOperator& op, const ReynoldsStenci
   head_out_.resize(2 * ni);
   gmres_.resize(m_, settings_.restart);
   work_.resize(m_);
-}
-
-template <class Visit>
-void MixedKrylovSolver::for_neighbourhood(std::size_t j, Visit&& visit) const {
-  const Grid& grid = op_.grid();
-  const auto nx = static_cast<long>(grid.nx());
-  const auto ny = static_cast<long>(grid.ny());
-  const int r = settings_.neighbourhood;
-  const long x = static_cast<long>(j) % nx;
-  const long y = static_cast<long>(j) / nx;
-  for (long oy = -r; oy <= r; ++oy) {
-    for (long ox = -r; ox <= r; ++ox) {
-      long mx = x + ox, my = y + oy;
-      if (grid.periodic()) {
-        mx = ((mx % nx) + nx) % nx;
-        my = ((my % ny) + ny) % ny;
-      } else if (mx < 0 || mx >= nx || my < 0 || my >= ny) {
-        continue;
-      }
-      visit(static_cast<std::size_t>(my * nx + mx),
-            local_k_[static_cast<std::size_t>((oy + r) * (2 * r + 1) + (ox + r))]);
-    }
-  }
 }
 
 void MixedKrylovSolver::apply_jacobian(const Eigen::VectorXd& v, Eigen::VectorXd& out) {
@@ -170,7 +123,7 @@ bool MixedKrylovSolver::factorise(std::string& message) {
                                (term.by_pressure * dp_ds_[j] + term.by_fraction * dtheta_ds_[j]) / mass);
         const double by_film = open_film[term.node] != 0 ? term.by_film / mass : 0.0;
         border_column_[kk] += by_film;
-        for_neighbourhood(term.node, [&](std::size_t node, double k_value) {
+        local_.for_each(term.node, [&](std::size_t node, double k_value) {
           const auto mm = static_cast<Eigen::Index>(node);
           triplets_.emplace_back(row, static_cast<int>(node), by_film * k_value * dp_ds_[mm]);
           triplets_.emplace_back(row, static_cast<int>(n_ + node), by_film * k_value * P);
@@ -181,7 +134,7 @@ bool MixedKrylovSolver::factorise(std::string& message) {
     const auto contact_row = static_cast<int>(n_ + k);
     const bool is_closed = closed[k] != 0;
     triplets_.emplace_back(contact_row, contact_row, is_closed ? 0.0 : 1.0);
-    for_neighbourhood(k, [&](std::size_t node, double k_value) {
+    local_.for_each(k, [&](std::size_t node, double k_value) {
       const auto mm = static_cast<Eigen::Index>(node);
       triplets_.emplace_back(contact_row, static_cast<int>(node), is_closed ? k_value * dp_ds_[mm] / H : 0.0);
       triplets_.emplace_back(contact_row, static_cast<int>(n_ + node), is_closed ? k_value * P / H : 0.0);

@@ -17,6 +17,7 @@
 
 #include "halfspace/lubrication/reynolds_stencil.hpp"
 #include "halfspace/operators/influence_operator.hpp"
+#include "local_influence.hpp"
 #include "restarted_gmres.hpp"
 #include "reynolds_linearisation.hpp"
 
@@ -70,7 +71,7 @@ class MixedKrylovSolver {
                     bool load_control);
 
   // K_00: a cell's displacement under unit pressure on itself.
-  double self_influence() const { return self_influence_; }
+  double self_influence() const { return local_.self(); }
 
   // Solves J step = -residual (2n + 1 or 2n entries) for the rows `rows`,
   // the branches `branch_full` and `closed` and the scales (whose
@@ -86,17 +87,13 @@ class MixedKrylovSolver {
   bool factorise(std::string& message);
   void apply_preconditioner(const Eigen::VectorXd& v, Eigen::VectorXd& out);
   int gmres(double tolerance, int max_iterations, const Eigen::VectorXd& residual, Eigen::VectorXd& step);
-  // Calls visit(m, k_value) for the nodes m within the neighbourhood of node j.
-  template <class Visit>
-  void for_neighbourhood(std::size_t j, Visit&& visit) const;
 
   InfluenceOperator& op_;
   const ReynoldsStencil& topology_;
   MixedKrylovSettings settings_;
   std::size_t n_;
-  Eigen::Index m_;  // unknowns: 2n (+ 1 with h0)
-  double self_influence_ = 0.0;
-  std::vector<double> local_k_;  // K at offsets (dx, dy) in [-r, r]^2, row-major
+  Eigen::Index m_;        // unknowns: 2n (+ 1 with h0)
+  LocalInfluence local_;  // K within settings.neighbourhood cells, for the preconditioner
   // The current linear system.
   const MixedRows* rows_ = nullptr;
   const std::vector<char>* closed_ = nullptr;
