@@ -166,27 +166,7 @@ void ConjugateGradientMethod::step() {
     // The directions keep the force; what the circles and clips moved is
     // given back by the stick cells alike, or, if that pushes one over its
     // disc, by the exact projection onto the force and the discs.
-    const double ex = problem_.target_x - sum_qx;
-    const double ey = problem_.target_y - sum_qy;
-    bool exact = stick_cells == 0.0;
-    if (!exact && (ex != 0.0 || ey != 0.0)) {
-      const double sx = ex / stick_cells;
-      const double sy = ey / stick_cells;
-      const auto [over] = sums<1>(comm_, n_, [&](std::size_t i) {
-        const double radius = radius_[i];
-        if (!(radius > 0.0) || at_limit(f_.qx[i], f_.qy[i], radius)) return std::array<double, 1>{};
-        f_.qx[i] += sx;
-        f_.qy[i] += sy;
-        return std::array<double, 1>{magnitude(f_.qx[i], f_.qy[i]) > radius ? 1.0 : 0.0};
-      });
-      exact = over > 0.0;
-    }
-    if (exact) {
-      const auto [sx, sy] = it_.force_shift([&](std::size_t i) { return std::pair{f_.qx[i], f_.qy[i]}; });
-      for_each_index(
-          n_, [&](std::size_t i) { std::tie(f_.qx[i], f_.qy[i]) = clipped(f_.qx[i] + sx, f_.qy[i] + sy, radius_[i]); });
-      linear = false;
-    }
+    if (it_.restore_force(sum_qx, sum_qy, stick_cells)) linear = false;
   }
   // u follows q by the product C d already made, up to the circles'
   // second-order pull, while no cell was clipped; exactly every few steps

@@ -175,35 +175,42 @@ class TangentialIteration {
     if (problem_.force_controlled) {
       // Given back by the stick cells alike (a shift of every cell would
       // move the slipping ones off their circles by a hair, and the
-      // approach, measured over the stick cells, with them), or, if that
-      // pushes one over its disc, by the exact projection.
+      // approach, measured over the stick cells, with them).
       const auto [held_x, held_y, stick_cells] = sums<3>(comm_, n_, [&](std::size_t i) {
         if (!(radius_[i] > 0.0)) return std::array<double, 3>{};
         return std::array<double, 3>{f_.qx[i], f_.qy[i], at_limit(f_.qx[i], f_.qy[i], radius_[i]) ? 0.0 : 1.0};
       });
-      const double ex = problem_.target_x - held_x;
-      const double ey = problem_.target_y - held_y;
-      bool exact = stick_cells == 0.0;
-      if (!exact && (ex != 0.0 || ey != 0.0)) {
-        const double sx = ex / stick_cells;
-        const double sy = ey / stick_cells;
-        const auto [over] = sums<1>(comm_, n_, [&](std::size_t i) {
-          const double radius = radius_[i];
-          if (!(radius > 0.0) || at_limit(f_.qx[i], f_.qy[i], radius)) return std::array<double, 1>{};
-          f_.qx[i] += sx;
-          f_.qy[i] += sy;
-          return std::array<double, 1>{magnitude(f_.qx[i], f_.qy[i]) > radius ? 1.0 : 0.0};
-        });
-        exact = over > 0.0;
-      }
-      if (exact) {
-        const auto [sx, sy] = force_shift([&](std::size_t i) { return std::pair{f_.qx[i], f_.qy[i]}; });
-        for_each_index(n_, [&](std::size_t i) {
-          std::tie(f_.qx[i], f_.qy[i]) = clipped(f_.qx[i] + sx, f_.qy[i] + sy, radius_[i]);
-        });
-      }
+      restore_force(held_x, held_y, stick_cells);
     }
     exact_displacement();
+  }
+
+  // Gives q the force it lacks, target - (held_x, held_y), through its
+  // `stick_cells` alike; if there are none, or that pushes one over its
+  // disc, by the exact projection onto the force and the discs. Returns
+  // whether the projection was taken.
+  bool restore_force(double held_x, double held_y, double stick_cells) {
+    const double ex = problem_.target_x - held_x;
+    const double ey = problem_.target_y - held_y;
+    bool exact = stick_cells == 0.0;
+    if (!exact && (ex != 0.0 || ey != 0.0)) {
+      const double sx = ex / stick_cells;
+      const double sy = ey / stick_cells;
+      const auto [over] = sums<1>(comm_, n_, [&](std::size_t i) {
+        const double radius = radius_[i];
+        if (!(radius > 0.0) || at_limit(f_.qx[i], f_.qy[i], radius)) return std::array<double, 1>{};
+        f_.qx[i] += sx;
+        f_.qy[i] += sy;
+        return std::array<double, 1>{magnitude(f_.qx[i], f_.qy[i]) > radius ? 1.0 : 0.0};
+      });
+      exact = over > 0.0;
+    }
+    if (exact) {
+      const auto [sx, sy] = force_shift([&](std::size_t i) { return std::pair{f_.qx[i], f_.qy[i]}; });
+      for_each_index(
+          n_, [&](std::size_t i) { std::tie(f_.qx[i], f_.qy[i]) = clipped(f_.qx[i] + sx, f_.qy[i] + sy, radius_[i]); });
+    }
+    return exact;
   }
 
   // The slip the products resolve: motion below this fraction of the
