@@ -91,7 +91,12 @@ int stresses_at(StressPlace& place, const StressOptions& o, const std::vector<do
   // Poisson's ratio, stress/stressed_body.hpp).
   const std::optional<stress::StressedBody> requested =
       o.body ? std::optional(stress::parse_stressed_body(*o.body, "--body")) : std::nullopt;
-  const std::optional<ElasticPair> bodies = coating ? std::optional(ElasticPair::coated(*coating)) : input.bodies;
+  std::optional<ElasticPair> bodies;
+  if (coating) {
+    bodies = ElasticPair::coated(*coating);
+  } else if (input.bodies) {
+    bodies = ElasticPair((*input.bodies)[0], (*input.bodies)[1]);
+  }
   const stress::StressedBodyChoice body = in_context(fmt::format("result file '{}'", o.result), [&] {
     return stress::choose_stressed_body(requested, given_nu, bodies, "--body", "--nu");
   });

@@ -16,18 +16,9 @@ namespace {
 
 // 1/G of a body (1/Pa), 0 for a rigid one; `index` names it in messages.
 double inverse_shear_modulus(const ElasticBody& body, int index) {
+  checked_body(body, index, index == 2);
   const double e = body.youngs_modulus;
-  const double nu = body.poissons_ratio;
-  const bool rigid = index == 2 && e == std::numeric_limits<double>::infinity();
-  if (!rigid && !(std::isnormal(e) && e > 0.0)) {
-    throw InputError(fmt::format("Young's modulus E{} = {} Pa is invalid: must be positive, finite and not denormal{}",
-                                 index, format_number(e), index == 2 ? " (or inf for a rigid body)" : ""));
-  }
-  if (!(std::isfinite(nu) && nu > -1.0 && nu <= 0.5)) {
-    throw InputError(
-        fmt::format("Poisson's ratio nu{} = {} is invalid: allowed range is (-1, 0.5]", index, format_number(nu)));
-  }
-  return rigid ? 0.0 : 2.0 * (1.0 + nu) / e;
+  return std::isinf(e) ? 0.0 : 2.0 * (1.0 + body.poissons_ratio) / e;
 }
 
 }  // namespace

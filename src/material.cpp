@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <limits>
 
 #include "halfspace/error.hpp"
 
@@ -12,20 +13,26 @@ namespace {
 
 // Compliance (1 - nu^2)/E of one body; `index` names it in messages (E1, nu1...).
 double compliance(const ElasticBody& body, int index) {
+  checked_body(body, index);
+  return (1.0 - body.poissons_ratio * body.poissons_ratio) / body.youngs_modulus;
+}
+
+}  // namespace
+
+const ElasticBody& checked_body(const ElasticBody& body, int index, bool rigid_allowed) {
   const double e = body.youngs_modulus;
   const double nu = body.poissons_ratio;
-  if (!(std::isnormal(e) && e > 0.0)) {
-    throw InputError(fmt::format("Young's modulus E{} = {} Pa is invalid: must be positive, finite and not denormal",
-                                 index, format_number(e)));
+  const bool rigid = rigid_allowed && e == std::numeric_limits<double>::infinity();
+  if (!rigid && !(std::isnormal(e) && e > 0.0)) {
+    throw InputError(fmt::format("Young's modulus E{} = {} Pa is invalid: must be positive, finite and not denormal{}",
+                                 index, format_number(e), rigid_allowed ? " (or inf for a rigid body)" : ""));
   }
   if (!(std::isfinite(nu) && nu > -1.0 && nu <= 0.5)) {
     throw InputError(
         fmt::format("Poisson's ratio nu{} = {} is invalid: allowed range is (-1, 0.5]", index, format_number(nu)));
   }
-  return (1.0 - nu * nu) / e;
+  return body;
 }
-
-}  // namespace
 
 double composite_modulus(const ElasticBody& body1, const ElasticBody& body2) {
   // Each compliance may be fine and their sum still overflow or vanish.

@@ -26,17 +26,18 @@ namespace {
 // The coating, both bodies and whether the result has shear, from the first
 // process to every process.
 void broadcast_details(const mpi::MpiCommunicator& world, std::optional<io::ResultPressure>& whole,
-                       std::optional<LayeredMaterial>& coating, std::optional<ElasticPair>& bodies, bool& shear) {
+                       std::optional<LayeredMaterial>& coating, std::optional<std::array<ElasticBody, 2>>& bodies,
+                       bool& shear) {
   // has coating, t, E1, nu1, E2, nu2, has shear, has bodies, E1, nu1, E2, nu2
   std::array<double, 12> details{};
   if (whole) {
     if (whole->bodies) {
-      const ElasticPair& b = *whole->bodies;
+      const std::array<ElasticBody, 2>& b = *whole->bodies;
       details[7] = 1.0;
-      details[8] = b.body1().youngs_modulus;
-      details[9] = b.body1().poissons_ratio;
-      details[10] = b.body2().youngs_modulus;
-      details[11] = b.body2().poissons_ratio;
+      details[8] = b[0].youngs_modulus;
+      details[9] = b[0].poissons_ratio;
+      details[10] = b[1].youngs_modulus;
+      details[11] = b[1].poissons_ratio;
     }
     if (whole->coating) {
       const LayeredMaterial& c = *whole->coating;
@@ -55,7 +56,9 @@ void broadcast_details(const mpi::MpiCommunicator& world, std::optional<io::Resu
     coating = LayeredMaterial{details[1], {details[2], details[3]}, {details[4], details[5]}};
   }
   shear = details[6] == 1.0;
-  if (details[7] == 1.0) bodies = ElasticPair({details[8], details[9]}, {details[10], details[11]});
+  if (details[7] == 1.0) {
+    bodies = std::array<ElasticBody, 2>{ElasticBody{details[8], details[9]}, ElasticBody{details[10], details[11]}};
+  }
 }
 
 // This process's rows of the first process's `whole` field.
@@ -93,7 +96,7 @@ int run_stress_on_slabs(const std::filesystem::path& path, const std::function<i
     return code;
   }
   std::optional<LayeredMaterial> coating;
-  std::optional<ElasticPair> bodies;
+  std::optional<std::array<ElasticBody, 2>> bodies;
   bool shear = false;
   broadcast_details(world, whole, coating, bodies, shear);
   const mpi::SlabLayout slab = mpi::slab_layout(grid.nx(), grid.ny(), world);

@@ -9,6 +9,11 @@ struct ElasticBody {
   double poissons_ratio = 0.0;  // nu, dimensionless
 };
 
+// Throws InputError naming the body (E1, nu1 for index 1, ...) unless E is
+// positive, finite and normal (not denormal; or +inf, a rigid body, where
+// `rigid_allowed`) and nu is in (-1, 0.5]; returns `body`.
+const ElasticBody& checked_body(const ElasticBody& body, int index, bool rigid_allowed = false);
+
 // Composite modulus E* (Pa) of two bodies. Throws InputError naming the body
 // when E is not positive, finite and normal (not denormal), or nu is outside
 // (-1, 0.5], and naming all four when E* itself is not.

@@ -125,12 +125,12 @@ std::optional<LayeredMaterial> read_coating(const std::filesystem::path& path) {
 }
 
 // Both bodies' four root attributes (result_attributes.hpp), if recorded.
-std::optional<ElasticPair> read_bodies(const std::filesystem::path& path) {
+std::optional<std::array<ElasticBody, 2>> read_bodies(const std::filesystem::path& path) {
   constexpr std::array<const char*, 4> kNames{"body1_E", "body1_nu", "body2_E", "body2_nu"};
   const std::optional<std::vector<double>> v = read_attribute_set(path, kNames, "both bodies'");
   if (!v) return std::nullopt;
   try {
-    return ElasticPair({(*v)[0], (*v)[1]}, {(*v)[2], (*v)[3]});
+    return std::array<ElasticBody, 2>{checked_body({(*v)[0], (*v)[1]}, 1), checked_body({(*v)[2], (*v)[3]}, 2, true)};
   } catch (const InputError& error) {
     fail(path, fmt::format("its attributes body1_E, body1_nu, body2_E, body2_nu are invalid ({})", error.what()));
   }

@@ -3,21 +3,22 @@
 // friction solve, the shear tractions.
 #pragma once
 
+#include <array>
 #include <filesystem>
 #include <optional>
 #include <vector>
 
-#include "halfspace/elastic_pair.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/layered_material.hpp"
+#include "halfspace/material.hpp"
 
 namespace halfspace::io {
 
 struct ResultPressure {
   Grid grid;                     // shape and spacing from /pressure and dx, dy; boundary from the root attribute
   std::vector<double> pressure;  // Pa, (ny, nx) row-major
-  std::optional<LayeredMaterial> coating;  // a coated half-space's five root attributes, if recorded
-  std::optional<ElasticPair> bodies;       // both bodies' four root attributes, if recorded
+  std::optional<LayeredMaterial> coating;            // a coated half-space's five root attributes, if recorded
+  std::optional<std::array<ElasticBody, 2>> bodies;  // both bodies' four root attributes, if recorded
   // A friction result's shear tractions /shear_x, /shear_y (Pa, the traction
   // body 1 exerts on body 2, like the pressure's layout); empty if absent.
   std::vector<double> shear_x;
