@@ -481,7 +481,7 @@ ElasticFilm detail::solve_film_newton(InfluenceOperator& op, const Eigen::ArrayX
           std::string krylov_message;
           const double forcing = tight ? 0.0 : loose_forcing;
           const auto gmres_solve = [&] {
-            const detail::FilmKrylovOutcome outcome =
+            const detail::KrylovOutcome outcome =
                 krylov_solver->solve(rows, branch_full, pressure_scale, mass_scale, area / w, forcing, residual, step);
             step_iterations += outcome.iterations;
             krylov_message = outcome.message;

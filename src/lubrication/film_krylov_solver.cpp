@@ -155,9 +155,9 @@ int FilmKrylovSolver::gmres(double tolerance, int max_iterations, const Eigen::V
                       residual, tolerance, max_iterations, step);
 }
 
-FilmKrylovOutcome FilmKrylovSolver::solve(const LocalRows& rows, const std::vector<char>& branch_full,
-                                          double pressure_scale, double mass_scale, double area_over_load,
-                                          double forcing, const Eigen::VectorXd& residual, Eigen::VectorXd& step) {
+KrylovOutcome FilmKrylovSolver::solve(const LocalRows& rows, const std::vector<char>& branch_full,
+                                      double pressure_scale, double mass_scale, double area_over_load, double forcing,
+                                      const Eigen::VectorXd& residual, Eigen::VectorXd& step) {
   // With the multigrid the loosest steps are solved to 1e-3 instead of the
   // caller's forcing (at most 1e-2): its approximate local inverse leaves
   // the early GMRES iterates' errors spread over many nodes, and directions
@@ -175,7 +175,7 @@ FilmKrylovOutcome FilmKrylovSolver::solve(const LocalRows& rows, const std::vect
     dp_ds_[jj] = !fixed && branch_full[j] != 0 ? pressure_scale : 0.0;
     dtheta_ds_[jj] = !fixed && branch_full[j] == 0 ? 1.0 : 0.0;
   }
-  FilmKrylovOutcome outcome;
+  KrylovOutcome outcome;
   const double b_norm = residual.norm();
   if (b_norm == 0.0) {
     step.setZero();

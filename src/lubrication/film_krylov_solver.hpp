@@ -30,13 +30,6 @@ struct FilmKrylovSettings {
   KrylovPreconditioner preconditioner = KrylovPreconditioner::multigrid;
 };
 
-struct FilmKrylovOutcome {
-  bool converged = false;
-  int iterations = 0;
-  double relative_residual = 0.0;  // ||J x + r|| / ||r||, recomputed at the end with the operator
-  std::string message;             // empty when converged
-};
-
 // The local derivatives of the Newton rows, one row per node in CSR form
 // (the terms of detail::linearise), filled by the Newton's linearisation.
 struct LocalRows {
@@ -64,9 +57,9 @@ class FilmKrylovSolver {
   // residual max(settings.tolerance, forcing) (an inexact Newton step).
   // Factorises the preconditioner first; its failure and GMRES's are
   // returned.
-  FilmKrylovOutcome solve(const LocalRows& rows, const std::vector<char>& branch_full, double pressure_scale,
-                          double mass_scale, double area_over_load, double forcing, const Eigen::VectorXd& residual,
-                          Eigen::VectorXd& step);
+  KrylovOutcome solve(const LocalRows& rows, const std::vector<char>& branch_full, double pressure_scale,
+                      double mass_scale, double area_over_load, double forcing, const Eigen::VectorXd& residual,
+                      Eigen::VectorXd& step);
 
  private:
   void apply_jacobian(const Eigen::VectorXd& v, Eigen::VectorXd& out);

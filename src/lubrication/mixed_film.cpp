@@ -481,7 +481,7 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
           std::string krylov_message;
           const double forcing = tight ? 0.0 : loose_forcing;
           const auto gmres_solve = [&] {
-            const detail::MixedKrylovOutcome outcome =
+            const detail::KrylovOutcome outcome =
                 krylov_solver->solve(rows, branch_full, closed, scales, forcing, residual, step);
             step_iterations += outcome.iterations;
             krylov_message = outcome.message;

@@ -184,10 +184,10 @@ int MixedKrylovSolver::gmres(double tolerance, int max_iterations, const Eigen::
                       residual, tolerance, max_iterations, step);
 }
 
-MixedKrylovOutcome MixedKrylovSolver::solve(const MixedRows& rows, const std::vector<char>& branch_full,
-                                            const std::vector<char>& closed, const MixedScales& scales, double forcing,
-                                            const Eigen::VectorXd& residual, Eigen::VectorXd& step) {
-  MixedKrylovOutcome outcome;
+KrylovOutcome MixedKrylovSolver::solve(const MixedRows& rows, const std::vector<char>& branch_full,
+                                       const std::vector<char>& closed, const MixedScales& scales, double forcing,
+                                       const Eigen::VectorXd& residual, Eigen::VectorXd& step) {
+  KrylovOutcome outcome;
   rows_ = &rows;
   closed_ = &closed;
   const bool load_control = scales_.load_control;

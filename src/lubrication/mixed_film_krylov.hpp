@@ -30,13 +30,6 @@ struct MixedKrylovSettings {
   int neighbourhood = 1;     // K kept within this many cells (Chebyshev) in the preconditioner
 };
 
-struct MixedKrylovOutcome {
-  bool converged = false;
-  int iterations = 0;
-  double relative_residual = 0.0;  // ||J x + r|| / ||r||, recomputed at the end with the operator
-  std::string message;             // empty when converged
-};
-
 // The Newton system's state at one step: the mass rows' local derivatives
 // in CSR form (detail::linearise's terms, one row per node), which nodes are
 // on the full-film branch, which contact rows are closed (impose h = 0), and
@@ -78,9 +71,9 @@ class MixedKrylovSolver {
   // load_control must be the constructor's), to the relative
   // residual max(settings.tolerance, forcing). Factorises the
   // preconditioner first; its failure and GMRES's are returned.
-  MixedKrylovOutcome solve(const MixedRows& rows, const std::vector<char>& branch_full, const std::vector<char>& closed,
-                           const MixedScales& scales, double forcing, const Eigen::VectorXd& residual,
-                           Eigen::VectorXd& step);
+  KrylovOutcome solve(const MixedRows& rows, const std::vector<char>& branch_full, const std::vector<char>& closed,
+                      const MixedScales& scales, double forcing, const Eigen::VectorXd& residual,
+                      Eigen::VectorXd& step);
 
  private:
   void apply_jacobian(const Eigen::VectorXd& v, Eigen::VectorXd& out);

@@ -6,8 +6,17 @@
 
 #include <Eigen/Core>
 #include <functional>
+#include <string>
 
 namespace halfspace::lubrication::detail {
+
+// How a Newton step's linear solve ended.
+struct KrylovOutcome {
+  bool converged = false;
+  int iterations = 0;
+  double relative_residual = 0.0;  // ||J x + r|| / ||r||, recomputed at the end with the operator
+  std::string message;             // empty when converged
+};
 
 class RestartedGmres {
  public:
