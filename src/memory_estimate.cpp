@@ -80,24 +80,35 @@ double deflation_bytes(const Extents& g, double field) {
   return (field + 1.0 + 3.0 * kDouble) * g.cells();
 }
 
-// One Polonsky-Keer solver with its operator: the operator, the
-// preconditioner, two workspace fields and the residual history, reserved
-// for the iteration limit. With mixed precision on a periodic grid
-// (layout.cpp's make_mixed_operators) the work vectors and the coarse
-// correction's field are floats, and the single-precision K keeps a symbol
-// of its own; its transform lives in the double one's spectrum.
-double level_bytes(const Extents& g, bool preconditioned, bool deflated, double history, bool mixed) {
-  const bool single = mixed && g.periodic;
-  const double work = single ? kFloat : kDouble;
-  const double inner_symbol =
-      single ? kDouble * stored_rows(g.line ? 1.0 : g.ny) * (std::floor(g.nx / 2.0) + 1.0) : 0.0;
-  return operator_bytes(g) + inner_symbol + (preconditioned ? preconditioner_bytes(g) : 0.0) + 2.0 * work * g.cells() +
-         history + (deflated ? deflation_bytes(g, work) : 0.0);
+// The precision of Polonsky-Keer's work vectors: float with mixed
+// precision on a periodic grid (layout.cpp's make_mixed_operators).
+double work_bytes(const Extents& g, bool mixed) {
+  return mixed && g.periodic ? kFloat : kDouble;
+}
+
+// One Polonsky-Keer solver with its operator, between solves: the
+// operator, the preconditioner and the coarse correction (its field in the
+// work vectors' precision). With mixed precision on a periodic grid the
+// single-precision K shares the double one's symbol and its transform
+// lives in the double one's spectrum.
+double level_bytes(const Extents& g, bool preconditioned, bool deflated, bool mixed) {
+  return operator_bytes(g) + (preconditioned ? preconditioner_bytes(g) : 0.0) +
+         (deflated ? deflation_bytes(g, work_bytes(g, mixed)) : 0.0);
 }
 
 // A solve's result: pressure, displacement and gap, and the residual history.
 double result_bytes(const Extents& g, double history) {
   return 3.0 * kDouble * g.cells() + history;
+}
+
+// The fields of a Polonsky-Keer solve: the pressure and displacement, the
+// two work vectors (the gap, not stored during the iteration, takes their
+// place at the end: never more than they), the residual history reserved
+// for the iteration limit; and a byte per cell for the active-set phase
+// before it (active_set_start.cpp), whose displacement takes the place of
+// the solve's and whose byte mask is the one field more.
+double solve_bytes(const Extents& g, double history, bool mixed) {
+  return (2.0 * kDouble + 2.0 * work_bytes(g, mixed) + 1.0) * g.cells() + history;
 }
 
 // The dense LCP solvers (lemke, lcpquad) on N <= kMaxDenseCells cells: the
@@ -146,22 +157,22 @@ double solver_peak(const Grid& grid, const solvers::SolverOptions& settings) {
   if (settings.adhesion) return adhesive_bytes(g, settings) + result_bytes(g, history);
   if (is_dense(settings.type)) return dense_bytes(g) + result_bytes(g, history);
   if (settings.type == solvers::SolverType::pk) {
-    return level_bytes(g, false, false, history, mixed) + result_bytes(g, history);
+    return level_bytes(g, false, false, mixed) + solve_bytes(g, history, mixed);
   }
   if (settings.type == solvers::SolverType::pk_fourier) {
-    return level_bytes(g, true, deflated(grid, settings), history, mixed) + result_bytes(g, history);
+    return level_bytes(g, true, deflated(grid, settings), mixed) + solve_bytes(g, history, mixed);
   }
   // pk-multilevel: the fine solver is built first and kept. Its fine solve
-  // adds the result; before that the coarse start holds the averaged gap of
-  // every coarser level, the first coarser level's solver and result, and
+  // adds its fields; before that the coarse start holds the averaged gap of
+  // every coarser level, the first coarser level's solver and solve, and
   // the prolonged start on the fine grid.
-  const double fine = level_bytes(g, true, deflated(grid, settings), history, mixed);
+  const double fine = level_bytes(g, true, deflated(grid, settings), mixed);
   const Extents coarse = g.coarser();
   const double shrink = g.line ? 0.5 : 0.25;
   const double coarse_gaps = kDouble * g.cells() * shrink / (1.0 - shrink);
-  const double coarse_start = coarse_gaps + level_bytes(coarse, true, false, history, mixed) +
-                              result_bytes(coarse, history) + kDouble * g.cells();
-  return fine + std::max(result_bytes(g, history), coarse_start);
+  const double coarse_start =
+      coarse_gaps + level_bytes(coarse, true, false, mixed) + solve_bytes(coarse, history, mixed) + kDouble * g.cells();
+  return fine + std::max(solve_bytes(g, history, mixed), coarse_start);
 }
 
 }  // namespace
@@ -212,7 +223,16 @@ double slab_solve_memory_estimate(const Grid& grid, const solvers::SolverOptions
     const double held_cells = (static_cast<double>(rows) + halo_rows) * g.nx;
     halo_deflation = (1.0 + 3.0 * kDouble) * halo_rows * g.nx + 2.0 * held_cells;
   }
-  return kProgramBytes + share * (2.0 * kDouble * g.cells() + solver_peak(grid, settings) + unfolded_symbols) +
+  // The adhesive energy's circulant form on a free 2D grid transforms the
+  // padding rows through a second pruned padded transform of its own
+  // (slab_free_operator.cpp: its buffer, 2ny complex values per held
+  // column) and keeps a copy of the kernel's folded multiplier beside its
+  // stiffness; the serial form has one whole transform.
+  const double adhesive_form = settings.adhesion && !g.periodic && !g.line
+                                   ? kComplex * 2.0 * g.ny * (g.nx + 1.0) + kDouble * (g.ny + 1.0) * (g.nx + 1.0)
+                                   : 0.0;
+  return kProgramBytes +
+         share * (2.0 * kDouble * g.cells() + solver_peak(grid, settings) + unfolded_symbols + adhesive_form) +
          halo_deflation + kept_steps;
 }
 

@@ -109,6 +109,19 @@ TEST(MemoryEstimateTest, SlabSweepKeepsItsRowsOfEveryStepAndEveryStepsClusterSiz
   EXPECT_LT(quarter_excess, half_excess);
 }
 
+TEST(MemoryEstimateTest, SlabAdhesionOnAFreeGridCountsItsSecondPaddedTransform) {
+  // The adhesive energy's form on a free grid: the serial one transforms
+  // the whole padded grid once; on slabs (slab_free_operator.cpp) the
+  // padding rows go through a second pruned padded transform (2ny complex
+  // values per column), so one process holding every row needs that much
+  // more than the serial solve.
+  const Grid grid = Grid::plane(1024, 512, 1e-6, 1e-6, Boundary::free);
+  solvers::SolverOptions settings;
+  settings.adhesion = solvers::SolverOptions::Adhesion{AdhesionLaw::maugis_dugdale(0.05, 1e-8), 1e-6, false};
+  const double second_transform = 16.0 * 2.0 * 512.0 * (1024.0 + 1.0);
+  EXPECT_GE(slab_solve_memory_estimate(grid, settings, 512) - solve_memory_estimate(grid, settings), second_transform);
+}
+
 TEST(MemoryEstimateTest, AvailableMemoryIsMemAvailableWithoutACgroupLimit) {
   const TempDir dir;
   write(dir / "proc" / "meminfo", "MemTotal:       24683656 kB\nMemFree:  100 kB\nMemAvailable:   2000 kB\n");

@@ -202,6 +202,11 @@ void FftInfluenceOperator::apply(std::span<const double> pressure, std::span<dou
   m.kernel.apply(*m.transform, pressure, displacement);
 }
 
+const EvenSymbol& FftInfluenceOperator::periodic_symbol() const {
+  if (impl_->padded) throw InputError("FftInfluenceOperator: a free grid's symbol is its padded grid's, not periodic");
+  return impl_->kernel;
+}
+
 CirculantForm& FftInfluenceOperator::circulant_form() {
   Impl& m = *impl_;
   if (!m.circulant) m.circulant = m.make_circulant_form();

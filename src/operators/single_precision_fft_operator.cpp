@@ -5,7 +5,6 @@
 
 #include "halfspace/error.hpp"
 #include "halfspace/fft/grid_transform.hpp"
-#include "halfspace/kernels/normal_kernel.hpp"
 
 namespace halfspace::operators {
 namespace {
@@ -20,16 +19,12 @@ const Grid& checked_periodic(const Grid& grid) {
 
 }  // namespace
 
-SinglePrecisionFftOperator::SinglePrecisionFftOperator(const Grid& grid, const HalfSpace& half_space,
+SinglePrecisionFftOperator::SinglePrecisionFftOperator(const FftInfluenceOperator& exact,
                                                        std::shared_ptr<SingleRealFft> transform)
-    : grid_(checked_periodic(grid)),
-      transform_(checked_grid_transform(grid, std::move(transform), "SinglePrecisionFftOperator")),
-      kernel_(1, 1),
-      self_influence_(0.0) {
-  const kernels::NormalKernel normal(grid, half_space);
-  kernel_ = normal.periodic_symbol();
-  self_influence_ = normal.self_influence();
-}
+    : grid_(checked_periodic(exact.grid())),
+      transform_(checked_grid_transform(grid_, std::move(transform), "SinglePrecisionFftOperator")),
+      kernel_(exact.periodic_symbol()),
+      self_influence_(exact.self_influence()) {}
 
 void SinglePrecisionFftOperator::apply(std::span<const double> pressure, std::span<double> displacement) {
   assert(pressure.size() == grid_.size() && displacement.size() == grid_.size());

@@ -8,9 +8,11 @@
 
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 #include "halfspace/error.hpp"
 #include "halfspace/linalg/parallel.hpp"
@@ -112,16 +114,18 @@ ActiveSetRecord ActiveSetStart::run_on(std::span<const double> initial_gap, cons
   Work* kt = image.data();
   const SinglePrecisionProducts& single = finish_->single_products();
   Eigen::ArrayXd displacement(static_cast<Eigen::Index>(n));
-  Eigen::ArrayXd mask(static_cast<Eigen::Index>(n));
+  // A byte per cell: the phase holds u besides what Polonsky-Keer's
+  // iteration holds, so that its mask must stay small for the phase not to
+  // set the solve's peak.
+  std::vector<std::uint8_t> mask(n);
   double* u = displacement.data();
-  double* in_set = mask.data();  // 1 on the set C, 0 elsewhere
+  std::uint8_t* in_set = mask.data();  // 1 on the set C, 0 elsewhere
 
   // 0. The set of the start: its cells with positive pressure.
-  for_each_index(n, [&](std::size_t i) { in_set[i] = p[i] > 0.0 && std::isfinite(p[i]) ? 1.0 : 0.0; });
-  double set_size = linalg::sum(comm, n, [&](std::size_t i) { return in_set[i]; });
+  for_each_index(n, [&](std::size_t i) { in_set[i] = p[i] > 0.0 && std::isfinite(p[i]) ? 1 : 0; });
+  double set_size = linalg::sum(comm, n, [&](std::size_t i) { return static_cast<double>(in_set[i]); });
   if (!(set_size > 0.0)) return record;
-  // The mask serves as both fields of the set: contains(i) = mask > 0.
-  const SearchSet set{in_set, in_set, false, load_controlled};
+  const SearchSet set = SearchSet::of_mask(in_set, load_controlled);
   preconditioner_.begin_solve();
   double previous_changes = std::numeric_limits<double>::infinity();
   double approach = load_controlled ? 0.0 : loading.value;
@@ -182,7 +186,7 @@ ActiveSetRecord ActiveSetStart::run_on(std::span<const double> initial_gap, cons
       }
       ++record.operator_applications;
       const auto [kt_sum, t_sum, gt, tkt] = sums<4>(comm, n, [&](std::size_t i) {
-        const double c = in_set[i];
+        const double c = static_cast<double>(in_set[i]);
         const double ti = t[i];
         const double kti = kt[i];
         return std::array<double, 4>{c * kti, c * ti, c * (g0[i] + u[i] - approach) * ti, c * ti * kti};
@@ -205,9 +209,9 @@ ActiveSetRecord ActiveSetStart::run_on(std::span<const double> initial_gap, cons
       approach = linalg::sum(comm, n, [&](std::size_t i) { return in_set[i] * (g0[i] + u[i]); }) / set_size;
     }
     const auto [changes, new_size] = sums<2>(comm, n, [&](std::size_t i) {
-      const bool now = in_set[i] > 0.0 ? p[i] > 0.0 : g0[i] + u[i] - approach < 0.0;
-      const double changed = (now ? 1.0 : 0.0) != in_set[i] ? 1.0 : 0.0;
-      in_set[i] = now ? 1.0 : 0.0;
+      const bool now = in_set[i] != 0 ? p[i] > 0.0 : g0[i] + u[i] - approach < 0.0;
+      const double changed = now != (in_set[i] != 0) ? 1.0 : 0.0;
+      in_set[i] = now ? 1 : 0;
       return std::array<double, 2>{changed, now ? 1.0 : 0.0};
     });
     record.outer = outer;

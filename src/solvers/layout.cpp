@@ -46,8 +46,8 @@ class SerialLayout final : public Layout {
   // Periodic grids: the double transform for the products K p, and one in
   // single precision for the step's products and M^-1, living in the double
   // transform's spectrum (idle between the products K p, and it holds
-  // exactly the single transform's spectrum and real array), so the mixed
-  // solve holds no more memory than the double one. Free grids: the
+  // exactly the single transform's spectrum and real array), and the
+  // single-precision K multiplying by the double one's symbol. Free grids: the
   // products stay double (they need the zero-padded transform); M^-1 in
   // single precision in the padded buffer.
   ElasticOperators make_mixed_operators(const Grid& grid, const HalfSpace& half_space, bool fourier,
@@ -56,9 +56,10 @@ class SerialLayout final : public Layout {
     ElasticOperators made;
     if (grid.periodic()) {
       auto transform = make_grid_transform(grid, planning);
-      made.op = std::make_unique<FftInfluenceOperator>(grid, half_space, transform);
+      auto exact = std::make_unique<FftInfluenceOperator>(grid, half_space, transform);
       auto single = make_single_grid_transform(grid, planning, transform->spectrum());
-      auto inner = std::make_unique<SinglePrecisionFftOperator>(grid, half_space, single);
+      auto inner = std::make_unique<SinglePrecisionFftOperator>(*exact, single);
+      made.op = std::move(exact);
       made.single.kernel = [op = inner.get()](std::span<const float> in, std::span<float> out) { op->apply(in, out); };
       made.inner = std::move(inner);
       if (fourier) {

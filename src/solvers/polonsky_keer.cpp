@@ -110,7 +110,8 @@ struct CappedScale {
 
 // One solve: the iterate and the paper's steps, each one or two passes over
 // the cells. The fields live in the result (pressure p, displacement
-// u = K p, gap g) and in the solver's workspace (the direction t, and one
+// u = K p; the gap g = g0 + u - approach is computed where read, not
+// stored: a field less, one more read per pass) and in the solver's workspace (the direction t, and one
 // array that holds z = M^-1 g, then the image K t, then the step's
 // correction c, then K c). Work is their precision: double, or float with
 // mixed precision's SinglePrecisionProducts (see the header).
@@ -135,7 +136,6 @@ class Iteration {
         cells_(static_cast<double>(op.grid().size())),
         pressure_(result.pressure.data()),
         displacement_(result.displacement.data()),
-        gap_(result.gap.data()),
         direction_(direction),
         preconditioned_gap_(image),
         image_(image),
@@ -147,8 +147,13 @@ class Iteration {
         // move the load among them (the mean-free direction on one cell is
         // zero), and its set holds the cells leaving the cap, whose gaps the
         // approach (the mean over the contact below the cap) does not balance.
-        set_{pressure_, gap_, projected_ || problem.bounds.capped(),
-             problem.load_controlled && (projected_ || problem.bounds.capped()), problem.bounds.upper},
+        set_{pressure_,
+             problem.initial_gap.data(),
+             displacement_,
+             &approach_,
+             projected_ || problem.bounds.capped(),
+             problem.load_controlled && (projected_ || problem.bounds.capped()),
+             problem.bounds.upper},
         bounds_(problem.bounds),
         uniform_response_range_(uniform_response_range),
         approach_(problem.approach) {
@@ -191,8 +196,7 @@ class Iteration {
         pressure_[i] = bounds_.snap(scale.stored(pressure_[i], bounds_.upper) * scale.factor);
       });
     } else if (!warm) {
-      for_each_index(n_, [&](std::size_t i) { gap_[i] = problem_.initial_gap[i] - problem_.approach; });
-      local_overlap_pressure();
+      local_overlap_pressure();  // u = 0 here: g = g0 - approach
     }
     exact_displacement();
   }
@@ -268,11 +272,12 @@ class Iteration {
       }
       ++result_.preconditioner_applications;
     }
-    const auto [z_sum, gz, cells, gap_sum] = with_z([&](const auto* z) {
+    const auto [z_sum, gz, cells, gap_sum] = with_z([&](auto z) {
       return sums<4>(comm_, n_, [&](std::size_t i) {
-        const double in_set = set_.contains(i) ? 1.0 : 0.0;
-        const double zi = z[i];
-        return std::array<double, 4>{in_set * zi, in_set * (gap_[i] * zi), in_set, in_set * gap_[i]};
+        const double g = gap(i);
+        const double in_set = set_.contains(i, g) ? 1.0 : 0.0;
+        const double zi = z(i);
+        return std::array<double, 4>{in_set * zi, in_set * (g * zi), in_set, in_set * g};
       });
     });
     search_cells_ = cells;
@@ -299,9 +304,10 @@ class Iteration {
     // iterations it saves.
     const double t_mean =
         problem_.load_controlled && beta != 0.0 && search_cells_ > 0.0 ? direction_sum_ / search_cells_ : 0.0;
-    with_z([&](const auto* z) {
+    with_z([&](auto z) {
       for_each_index(n_, [&](std::size_t i) {
-        direction_[i] = static_cast<Work>(set_.contains(i) ? (z[i] - z_mean) + beta * (direction_[i] - t_mean) : 0.0);
+        direction_[i] =
+            static_cast<Work>(set_.contains(i, gap(i)) ? (z(i) - z_mean) + beta * (direction_[i] - t_mean) : 0.0);
       });
     });
     previous_norm_ = search_norm_;
@@ -319,8 +325,9 @@ class Iteration {
     kernel_product(direction_, image_);
     ++result_.operator_applications;
     const auto [image_sum, t_sum, gt, t_image] = sums<4>(comm_, n_, [&](std::size_t i) {
-      const double in_set = set_.contains(i) ? 1.0 : 0.0;
-      return std::array<double, 4>{in_set * image_[i], in_set * direction_[i], in_set * (gap_[i] * direction_[i]),
+      const double g = gap(i);
+      const double in_set = set_.contains(i, g) ? 1.0 : 0.0;
+      return std::array<double, 4>{in_set * image_[i], in_set * direction_[i], in_set * (g * direction_[i]),
                                    in_set * (image_[i] * direction_[i])};
     });
     const double image_mean = problem_.load_controlled && search_cells_ > 0.0 ? image_sum / search_cells_ : 0.0;
@@ -348,10 +355,13 @@ class Iteration {
     }
     const bool entries = !projected_;
     const double tau = tau_;
-    // The cell's pressure after the step, projected, or entered with -tau g.
+    // The cell's pressure after the step, projected, or entered with -tau g
+    // (read before the step moves the cell's u).
     const auto projected = [&](std::size_t i) {
       const double pi = bounds_.project(pressure_[i] - tau * direction_[i]);
-      return entries && pi == 0.0 && gap_[i] < 0.0 && tau > 0.0 ? -tau * gap_[i] : pi;
+      if (!entries) return pi;
+      const double g = gap(i);
+      return pi == 0.0 && g < 0.0 && tau > 0.0 ? -tau * g : pi;
     };
     const bool shifted = problem_.load_controlled && load_by_shift_;
     const double shift = shifted ? load_shift(projected) : 0.0;
@@ -428,9 +438,13 @@ class Iteration {
     const bool entries = !projected_;
     const double tau = tau_;
     const double upper = bounds_.upper;
+    // The gap is read before the step moves the cell's u.
     auto lower = [&](std::size_t i, double moved) {
       double pi = std::max(moved, bounds_.lower);
-      if (entries && pi == 0.0 && gap_[i] < 0.0 && tau > 0.0) pi = -tau * gap_[i];
+      if (entries && pi == 0.0 && tau > 0.0) {
+        const double g = gap(i);
+        if (g < 0.0) pi = -tau * g;
+      }
       return pi;
     };
     CappedScale scale{1.0, true};
@@ -461,7 +475,7 @@ class Iteration {
       const double moved = pressure_[i] - tau * direction_[i];
       const double pre = lower(i, moved);
       double pi = scale.stored(pre, upper);
-      if (filled) pi = pre > 0.0 ? upper : (gap_[i] < fill_below ? fill : 0.0);
+      if (filled) pi = pre > 0.0 ? upper : (gap(i) < fill_below ? fill : 0.0);
       const double entry = entries && moved <= 0.0 && pre > 0.0 ? 1.0 : 0.0;
       pressure_[i] = pi;
       displacement_[i] -= tau * image_[i];
@@ -519,8 +533,13 @@ class Iteration {
   // f(z), z the step's search gradient: g itself or M^-1 g (precondition()).
   template <class Function>
   auto with_z(Function&& f) const {
-    return z_is_gap_ ? f(static_cast<const double*>(gap_)) : f(static_cast<const Work*>(preconditioned_gap_));
+    if (z_is_gap_) return f([this](std::size_t i) { return gap(i); });
+    const Work* z = preconditioned_gap_;
+    return f([z](std::size_t i) -> double { return z[i]; });
   }
+
+  // The gap of the cell (see the class comment).
+  double gap(std::size_t i) const { return problem_.initial_gap[i] + displacement_[i] - approach_; }
 
   // out = K in on the work vectors, by the inner products (see the header).
   void kernel_product(const Work* in, Work* out) {
@@ -535,8 +554,7 @@ class Iteration {
   // local overlap alone, p = max(-g, 0) / K_ii, projected onto the bounds.
   void local_overlap_pressure() {
     const double self_influence = op_.self_influence();
-    for_each_index(n_,
-                   [&](std::size_t i) { pressure_[i] = bounds_.project(std::max(-gap_[i], 0.0) / self_influence); });
+    for_each_index(n_, [&](std::size_t i) { pressure_[i] = bounds_.project(std::max(-gap(i), 0.0) / self_influence); });
   }
 
   // The bound b such that `wanted` cells or a few more (ties) of those with
@@ -545,14 +563,14 @@ class Iteration {
   template <class Candidate>
   std::pair<double, double> smallest_gaps(Candidate&& candidate, double wanted) const {
     auto count_below = [&](double bound) {
-      return linalg::sum(comm_, n_, [&](std::size_t i) { return candidate(i) && gap_[i] < bound ? 1.0 : 0.0; });
+      return linalg::sum(comm_, n_, [&](std::size_t i) { return candidate(i) && gap(i) < bound ? 1.0 : 0.0; });
     };
     const double candidates = count_below(kInfinity);
     wanted = std::min(wanted, candidates);
     // count_below(low) < wanted <= count_below(high) = candidates.
-    double low = linalg::min_of(comm_, n_, [&](std::size_t i) { return candidate(i) ? gap_[i] : kInfinity; });
+    double low = linalg::min_of(comm_, n_, [&](std::size_t i) { return candidate(i) ? gap(i) : kInfinity; });
     double high = std::nextafter(
-        linalg::max_of(comm_, n_, [&](std::size_t i) { return candidate(i) ? gap_[i] : -kInfinity; }), kInfinity);
+        linalg::max_of(comm_, n_, [&](std::size_t i) { return candidate(i) ? gap(i) : -kInfinity; }), kInfinity);
     double count = candidates;
     constexpr int kMaxPasses = 64;
     for (int pass = 0; pass < kMaxPasses && count != wanted; ++pass) {
@@ -648,7 +666,7 @@ class Iteration {
   }
 
   // Step 1's two passes: the deferred work and the contact set's mean gap
-  // (the approach), then g, the residual's sums, G = sum over the search set
+  // (the approach), then g (not stored), the residual's sums, G = sum over the search set
   // of g^2 and sum over it of g t_old (Powell's test). With a
   // preconditioner, preconditioned_gap_ receives g on the search set.
   void measure() {
@@ -691,20 +709,16 @@ class Iteration {
     const double upper = bounds_.upper;
     const auto [weighted_gap, overlap, pressure_sum, gap_norm, gap_along, released, direction_sum] =
         sums<7>(comm_, n_, [&](std::size_t i) {
-          gap_[i] = problem_.initial_gap[i] + displacement_[i] - approach;
-          const double in_set = set_.contains(i) ? 1.0 : 0.0;  // a mask, not a branch
-          if (store_gap) preconditioned_gap_[i] = static_cast<Work>(in_set * gap_[i]);
-          const double over = std::max(-gap_[i], 0.0);
-          const double weighted = capped ? pressure_[i] * std::max(gap_[i], 0.0) : pressure_[i] * std::abs(gap_[i]);
+          const double g = problem_.initial_gap[i] + displacement_[i] - approach;
+          const double in_set = set_.contains(i, g) ? 1.0 : 0.0;  // a mask, not a branch
+          if (store_gap) preconditioned_gap_[i] = static_cast<Work>(in_set * g);
+          const double over = std::max(-g, 0.0);
+          const double weighted = capped ? pressure_[i] * std::max(g, 0.0) : pressure_[i] * std::abs(g);
           const double overlap_weight = capped ? (upper - pressure_[i]) / upper : 1.0;
-          const double release = capped && bounds_.at_cap(pressure_[i]) && gap_[i] > 0.0 ? 1.0 : 0.0;
-          return std::array<double, 7>{weighted,
-                                       overlap_weight * over,
-                                       pressure_[i],
-                                       in_set * (gap_[i] * gap_[i]),
-                                       in_set * (gap_[i] * direction_[i]),
-                                       release,
-                                       in_set * direction_[i]};
+          const double release = capped && bounds_.at_cap(pressure_[i]) && g > 0.0 ? 1.0 : 0.0;
+          return std::array<double, 7>{
+              weighted, overlap_weight * over, pressure_[i], in_set * (g * g), in_set * (g * direction_[i]),
+              release,  in_set * direction_[i]};
         });
     released_cells_ = released;
     direction_sum_ = direction_sum;
@@ -732,7 +746,6 @@ class Iteration {
   const double cells_;                // the cells of the whole grid
   double* pressure_;                  // p
   double* displacement_;              // u = K p
-  double* gap_;                       // g
   Work* direction_;                   // the conjugate direction t
   // One array of the solver's workspace in four successive roles: g on the
   // search set, made z = M^-1 g in place (steps 1-2); the image K t of the
@@ -819,13 +832,9 @@ PolonskyKeer::PolonskyKeer(InfluenceOperator& op, PolonskyKeerOptions options, c
   if (single_ && preconditioner_ && !single_.precondition) {
     throw InputError("single-precision work vectors with a preconditioner need its single-precision M^-1");
   }
-  // Single-precision work vectors are made when a solve begins (run), so
-  // that a phase before it (workspace) holds no float ones beside its own.
-  if (!single_) {
-    const auto n = static_cast<Eigen::Index>(op_.local_size());
-    direction_.setZero(n);
-    image_.setZero(n);
-  }
+  // The work vectors are made when a solve begins (run) and given back
+  // when it ends, so that a phase before it (workspace) holds no float ones
+  // beside its own, and the result's gap takes their place at the end.
 }
 
 std::span<double> PolonskyKeer::workspace(int which) {
@@ -877,6 +886,9 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
     image_.resize(0);
     if (single_direction_.size() != n) single_direction_.setZero(n);
     if (single_image_.size() != n) single_image_.setZero(n);
+  } else {
+    if (direction_.size() != n) direction_.setZero(n);
+    if (image_.size() != n) image_.setZero(n);
   }
   SolveResult result;
   result.solver = name_;
@@ -887,7 +899,6 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
   result.residual_history.reserve(static_cast<std::size_t>(std::min(options_.max_iterations, 1024)) + 1);
   result.pressure = std::move(pressure);
   result.displacement.setZero(n);
-  result.gap.setZero(n);
   if (preconditioner_) preconditioner_->begin_solve();
 
   if (single_) {
@@ -899,24 +910,21 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
                          image_.data(), uniform_response_range_);
     iterate(it, warm);
   }
+  // The work vectors are given back and the gap takes their place: the
+  // scratch of the independent check first, then g0 + u - approach as the
+  // iteration computed it.
+  direction_.resize(0);
+  image_.resize(0);
+  single_direction_.resize(0);
+  single_image_.resize(0);
+  result.gap.resize(n);
   if (result.converged()) {
     // "Converged" must mean the conditions hold, checked apart from the
     // residual (contact_conditions.hpp): a false one becomes a breakdown.
-    // The check's K p goes into a double work vector, or with
-    // single-precision ones into the gap, given back afterwards as the
-    // iteration computed it (g0 + u - approach).
-    std::span<double> scratch = single_ ? std::span<double>(result.gap.data(), static_cast<std::size_t>(n))
-                                        : std::span<double>(image_.data(), static_cast<std::size_t>(n));
     const ContactConditionReport check =
         check_contact_conditions(op_, initial_gap, loading, problem.bounds, result,
-                                 ContactConditionTolerances::for_solver_tolerance(options_.tolerance), scratch);
-    if (single_) {
-      const double approach = result.approach;
-      double* gap = result.gap.data();
-      const double* displacement = result.displacement.data();
-      for_each_index(static_cast<std::size_t>(n),
-                     [&](std::size_t i) { gap[i] = initial_gap[i] + displacement[i] - approach; });
-    }
+                                 ContactConditionTolerances::for_solver_tolerance(options_.tolerance),
+                                 std::span<double>(result.gap.data(), static_cast<std::size_t>(n)));
     ++result.operator_applications;
     if (!check.holds) {
       result.status = SolveStatus::breakdown;
@@ -924,6 +932,11 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
                                    result.residual, check.violation);
     }
   }
+  const double approach = result.approach;
+  double* gap = result.gap.data();
+  const double* displacement = result.displacement.data();
+  for_each_index(static_cast<std::size_t>(n),
+                 [&](std::size_t i) { gap[i] = initial_gap[i] + displacement[i] - approach; });
 
   if (preconditioner_) preconditioner_->report(result);
   result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

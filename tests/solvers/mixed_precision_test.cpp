@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <functional>
 #include <memory>
@@ -157,7 +158,8 @@ TEST(MixedPrecisionTest, CoarseCorrectionOnFloatVectorsIsTheDoubleOneToFloatRoun
   const Eigen::ArrayXd gap = self_affine_gap(grid, 5);
   const double threshold = gap.minCoeff() + 0.2 * (gap.maxCoeff() - gap.minCoeff());
   const Eigen::ArrayXd in_set = (gap < threshold).cast<double>();
-  const SearchSet set{in_set.data(), in_set.data(), false, true};
+  const Eigen::Array<std::uint8_t, Eigen::Dynamic, 1> mask = (gap < threshold).cast<std::uint8_t>();
+  const SearchSet set = SearchSet::of_mask(mask.data(), true);
   const Eigen::ArrayXd r = in_set * (gap - gap.mean());
   const std::vector<double> residuals{1.0, 0.9, 0.81};
   BlockDeflationOptions block;
@@ -256,7 +258,7 @@ TEST(MixedPrecisionTest, InnerProductIsSinglePrecision) {
   const Eigen::ArrayXd pressure = self_affine_gap(grid, 3) + 1.0;
   auto transform = make_grid_transform(grid, FftPlanning::estimate);
   FftInfluenceOperator exact(grid, kEStar, transform);
-  SinglePrecisionFftOperator single(grid, kEStar,
+  SinglePrecisionFftOperator single(exact,
                                     make_single_grid_transform(grid, FftPlanning::estimate, transform->spectrum()));
   Eigen::ArrayXd u_exact(static_cast<Eigen::Index>(grid.size()));
   Eigen::ArrayXd u_single(static_cast<Eigen::Index>(grid.size()));
@@ -268,8 +270,9 @@ TEST(MixedPrecisionTest, InnerProductIsSinglePrecision) {
   EXPECT_DOUBLE_EQ(single.self_influence(), exact.self_influence());
   // Free grids need the padded transform: refused with a message.
   const Grid free = Grid::plane(64, 48, 1.0, 1.0, Boundary::free);
+  const FftInfluenceOperator free_exact(free, kEStar);
   EXPECT_THROW(SinglePrecisionFftOperator(
-                   free, kEStar, make_single_grid_transform(free, FftPlanning::estimate, transform->spectrum())),
+                   free_exact, make_single_grid_transform(free, FftPlanning::estimate, transform->spectrum())),
                InputError);
 }
 

@@ -7,6 +7,7 @@
 #include <complex>
 #include <memory>
 
+#include "halfspace/fft/even_symbol.hpp"
 #include "halfspace/fft/fft_planning.hpp"
 #include "halfspace/fft/real_fft.hpp"
 #include "halfspace/half_space.hpp"
@@ -47,6 +48,13 @@ class FftInfluenceOperator final : public InfluenceOperator {
   // that transform's own arrays. Empty on periodic grids (their transform
   // can be shared whole instead). Lives as long as the operator.
   std::span<std::complex<double>> scratch();
+
+  // Periodic grids: the kernel's symbol (FFTW's 1/N folded in, rows
+  // folded), which a single-precision product on the same grid multiplies
+  // by too (single_precision_fft_operator.hpp). Lives as long as the
+  // operator. Throws InputError on a free grid (its symbol is the padded
+  // grid's).
+  const EvenSymbol& periodic_symbol() const;
 
  private:
   struct Impl;

@@ -13,19 +13,19 @@
 #include "halfspace/fft/even_symbol.hpp"
 #include "halfspace/fft/real_fft.hpp"
 #include "halfspace/grid.hpp"
-#include "halfspace/half_space.hpp"
+#include "halfspace/operators/fft_influence_operator.hpp"
 #include "halfspace/operators/influence_operator.hpp"
 
 namespace halfspace::operators {
 
 class SinglePrecisionFftOperator final : public InfluenceOperator {
  public:
-  // The half-space's kernel on `transform`, the periodic grid's own
+  // The products of `exact` (which must outlive this operator: its symbol
+  // is shared, not copied) on `transform`, the periodic grid's own
   // single-precision transform (make_single_grid_transform). Throws
   // InputError if the grid is free (its products need the padded
-  // transform), the transform's shape is not the grid's, or the modulus or
-  // coating is invalid.
-  SinglePrecisionFftOperator(const Grid& grid, const HalfSpace& half_space, std::shared_ptr<SingleRealFft> transform);
+  // transform) or the transform's shape is not the grid's.
+  SinglePrecisionFftOperator(const FftInfluenceOperator& exact, std::shared_ptr<SingleRealFft> transform);
 
   const Grid& grid() const override { return grid_; }
   // Allocates nothing; `pressure` and `displacement` may be the same array.
@@ -39,7 +39,7 @@ class SinglePrecisionFftOperator final : public InfluenceOperator {
  private:
   Grid grid_;
   std::shared_ptr<SingleRealFft> transform_;
-  EvenSymbol kernel_;  // symbol / N, rows folded
+  const EvenSymbol& kernel_;  // exact's: symbol / N, rows folded
   double self_influence_;
 };
 

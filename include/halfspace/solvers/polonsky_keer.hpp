@@ -52,7 +52,7 @@
 // projection's corrections K c come from it; given SinglePrecisionProducts
 // instead, the direction, its image and the correction are themselves
 // single-precision vectors (half the bytes stored and moved per pass),
-// while the pressure, displacement and gap stay double. Either way the displacement K p is
+// while the pressure and the displacement (and the gap made from them) stay double. Either way the displacement K p is
 // recomputed with the exact operator every 50 updates, whenever the
 // residual has fallen 100-fold since the last exact product, and before
 // the residual may stop the iteration; the independent check uses the
@@ -114,8 +114,10 @@ struct PolonskyKeerOptions {
 
 class PolonskyKeer final : public ContactSolver {
  public:
-  // Keeps a reference to `op` (which must outlive the solver) and allocates
-  // the workspace once; solve() then allocates nothing inside its loop.
+  // Keeps a reference to `op` (which must outlive the solver). solve()
+  // makes its two work vectors when it begins and gives them back when it
+  // ends (the result's gap, which the iteration does not store, takes
+  // their place); it allocates nothing inside its loop.
   // The pressures admitted are `law`'s bounds: [0, inf), or [0, H] with a
   // hardness cap.
   // `preconditioner`, if given, must outlive the solver too; it needs the
@@ -131,10 +133,9 @@ class PolonskyKeer final : public ContactSolver {
 
   std::string_view name() const override { return name_; }
 
-  // Workspace field 0 or 1 (one entry per cell): free between solves, so
-  // that a phase run before solve_from (active_set_start.hpp) needs no
-  // fields of its own for them. With single-precision work vectors they
-  // are made (in double) on the first call.
+  // Workspace field 0 or 1 (one entry per cell), made on the first call,
+  // free until the next solve, so that a phase run before solve_from
+  // (active_set_start.hpp) needs no fields of its own for them.
   std::span<double> workspace(int which);
   // The same in float for a solver with single-precision work vectors
   // (then the double ones are given back); the products on them.
@@ -159,10 +160,11 @@ class PolonskyKeer final : public ContactSolver {
   Preconditioner* preconditioner_;
   std::string name_;
   SinglePrecisionProducts single_;
-  // Workspace, one entry per cell: the conjugate direction t, and the
-  // preconditioned gap z, then its image K t, then the step's correction
-  // c, then K c (each needed only until the next is made); in double, or
-  // in single precision with single_.
+  // Workspace, one entry per cell, held during a solve (or lent to a phase
+  // before one): the conjugate direction t, and the preconditioned gap z,
+  // then its image K t, then the step's correction c, then K c (each
+  // needed only until the next is made); in double, or in single
+  // precision with single_.
   Eigen::ArrayXd direction_;
   Eigen::ArrayXd image_;
   Eigen::ArrayXf single_direction_;

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <span>
 #include <string_view>
@@ -22,20 +23,40 @@ namespace halfspace::solvers {
 // it while the gap says its pressure should fall, the mirror of the cells
 // out of contact. Under `mean_free` (load control) directions must be
 // mean-free on the set, so that a step keeps the force.
+//
+// The gap g = g0 + u - approach is computed where read, from the initial
+// gap g0, the displacement u and the approach (which the solver updates in
+// place), as Polonsky-Keer computes it: the solver stores no gap field.
 struct SearchSet {
   const double* pressure = nullptr;
-  const double* gap = nullptr;
+  const double* initial_gap = nullptr;
+  const double* displacement = nullptr;
+  const double* approach = nullptr;
   bool overlap = false;
   bool mean_free = false;
   double upper = std::numeric_limits<double>::infinity();  // the cap (Pa)
+  // Instead of the fields above: the set {mask != 0} of a byte mask (the
+  // active-set phase's fixed set, active_set_start.hpp), every cell of it
+  // in contact below the cap.
+  const std::uint8_t* mask = nullptr;
 
+  static SearchSet of_mask(const std::uint8_t* mask, bool mean_free) {
+    SearchSet set;
+    set.mean_free = mean_free;
+    set.mask = mask;
+    return set;
+  }
+
+  double gap(std::size_t i) const { return initial_gap[i] + displacement[i] - *approach; }
   // In contact and below the cap: the cells whose gap vanishes at the
   // solution (the elastic part of the contact).
-  bool in_contact(std::size_t i) const { return (pressure[i] > 0.0) & (pressure[i] < upper); }
-  // Bitwise, not short-circuit, so that masks over the cells stay free of
-  // branches (contact edges are everywhere).
-  bool contains(std::size_t i) const {
-    return ((pressure[i] > 0.0) | (overlap & (gap[i] < 0.0))) & ((pressure[i] < upper) | (gap[i] > 0.0));
+  bool in_contact(std::size_t i) const { return mask ? mask[i] != 0 : (pressure[i] > 0.0) & (pressure[i] < upper); }
+  bool contains(std::size_t i) const { return mask ? mask[i] != 0 : contains(i, gap(i)); }
+  // The same for a set of the fields (no mask) and a cell whose gap g the
+  // caller has at hand. Bitwise, not short-circuit, so that masks over the
+  // cells stay free of branches (contact edges are everywhere).
+  bool contains(std::size_t i, double g) const {
+    return ((pressure[i] > 0.0) | (overlap & (g < 0.0))) & ((pressure[i] < upper) | (g > 0.0));
   }
 };
 
