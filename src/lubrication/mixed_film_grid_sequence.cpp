@@ -92,10 +92,12 @@ std::optional<MixedFilm> sequenced_start(InfluenceOperator& op, const Eigen::Arr
   return start;
 }
 
-}  // namespace
-
-MixedFilm solve_mixed_film(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
-                           const LubricantLaws& laws, const MixedFilmOptions& options, const MixedFilm* start) {
+// solve_mixed_film, where a failed fine iteration tries faster films only
+// if `faster_allowed` (the faster films themselves do not: the speeds
+// stay bounded).
+MixedFilm solve_sequenced(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
+                          const LubricantLaws& laws, const MixedFilmOptions& options, const MixedFilm* start,
+                          bool faster_allowed) {
   const auto started = std::chrono::steady_clock::now();
   const Grid& grid = op.grid();
   options.validate();
@@ -122,31 +124,32 @@ MixedFilm solve_mixed_film(InfluenceOperator& op, const Eigen::ArrayXd& gap, con
   // the film at a faster speed, grid-sequenced in turn (4, 16, ... times the
   // velocities: the faster, the further from contact and the easier), and
   // the continuation in the speed from it on this grid.
-  for (double faster = kSequencedSpeedUp; !result.converged() && faster <= kSequencedFastest;
+  for (double faster = kSequencedSpeedUp; faster_allowed && !result.converged() && faster <= kSequencedFastest;
        faster *= kSequencedSpeedUp) {
-    const MixedFilm fast = solve_mixed_film(op, gap, detail::at_speed_factor(conditions, faster), laws, options);
+    const MixedFilm fast =
+        solve_sequenced(op, gap, detail::at_speed_factor(conditions, faster), laws, options, nullptr, false);
     steps += fast.iterations;
     krylov += fast.krylov_iterations;
     record.coarse_iterations += fast.coarse_iterations;
     record.coarse_krylov_iterations += fast.coarse_krylov_iterations;
     if (!fast.converged()) continue;
-    result =
-        detail::solve_mixed_film_on_grid(op, gap, conditions, laws, options, &fast, detail::MixedStartUse::continue_only);
+    result = detail::solve_mixed_film_on_grid(op, gap, conditions, laws, options, &fast,
+                                              detail::MixedStartUse::continue_only);
     steps += result.iterations;
     krylov += result.krylov_iterations;
     result.sequencing_fell_back = true;
     break;
   }
-  if (!result.converged() && grid.size() <= kMaxMixedColdRestartNodes) {
+  if (!result.converged() && faster_allowed && grid.size() <= kMaxMixedColdRestartNodes) {
     // The last resort on small grids: the cold start with its continuations.
     result = detail::solve_mixed_film_on_grid(op, gap, conditions, laws, options, nullptr);
     steps += result.iterations;
     krylov += result.krylov_iterations;
     result.sequencing_fell_back = true;
   } else if (!result.converged()) {
-    result.message = fmt::format("{} (grid-sequenced; no cold restart above {} nodes){}", result.message,
-                                 kMaxMixedColdRestartNodes,
-                                 record.message.empty() ? "" : fmt::format("; the coarser grids: {}", record.message));
+    result.message =
+        fmt::format("{} (grid-sequenced; no cold restart above {} nodes){}", result.message, kMaxMixedColdRestartNodes,
+                    record.message.empty() ? "" : fmt::format("; the coarser grids: {}", record.message));
   }
   result.iterations = steps;
   result.krylov_iterations = krylov;
@@ -155,6 +158,13 @@ MixedFilm solve_mixed_film(InfluenceOperator& op, const Eigen::ArrayXd& gap, con
   result.coarse_krylov_iterations = record.coarse_krylov_iterations;
   result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return result;
+}
+
+}  // namespace
+
+MixedFilm solve_mixed_film(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
+                           const LubricantLaws& laws, const MixedFilmOptions& options, const MixedFilm* start) {
+  return solve_sequenced(op, gap, conditions, laws, options, start, true);
 }
 
 }  // namespace halfspace::lubrication
