@@ -30,6 +30,7 @@
 #include "halfspace/lubrication/reynolds_stencil.hpp"
 #include "halfspace/memory_estimate.hpp"
 #include "halfspace/solvers/polonsky_keer.hpp"
+#include "mixed_film_grid_sequence.hpp"
 #include "mixed_film_krylov.hpp"
 #include "reynolds_linearisation.hpp"
 
@@ -606,7 +607,9 @@ void add_krylov_work(const MixedFilm& from, int& iterations, int& most_per_step)
   most_per_step = std::max(most_per_step, from.max_krylov_iterations_per_step);
 }
 
-FlowConditions at_speed_factor(const FlowConditions& conditions, double factor) {
+}  // namespace
+
+FlowConditions detail::at_speed_factor(const FlowConditions& conditions, double factor) {
   FlowConditions scaled = conditions;
   for (int axis = 0; axis < 2; ++axis) {
     scaled.entrainment_velocity[axis] *= factor;
@@ -614,6 +617,9 @@ FlowConditions at_speed_factor(const FlowConditions& conditions, double factor) 
   }
   return scaled;
 }
+
+namespace {
+using detail::at_speed_factor;
 
 // Continuation in the speed: from a film solved at `factor` times the
 // velocities down (or up) to the velocities themselves, in steps of at most
@@ -727,11 +733,15 @@ MixedFilm continue_in_offset(InfluenceOperator& op, const Eigen::ArrayXd& gap, c
 
 }  // namespace
 
-MixedFilm solve_mixed_film(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
-                           const LubricantLaws& laws, const MixedFilmOptions& options, const MixedFilm* start) {
+MixedFilm detail::solve_mixed_film_on_grid(InfluenceOperator& op, const Eigen::ArrayXd& gap,
+                                           const FlowConditions& conditions, const LubricantLaws& laws,
+                                           const MixedFilmOptions& options, const MixedFilm* start, MixedStartUse use) {
   const auto started = std::chrono::steady_clock::now();
-  MixedFilm film = solve_once(op, gap, conditions, laws, options, start);
-  if (film.converged()) return film;
+  MixedFilm film;
+  if (use != MixedStartUse::continue_only) {
+    film = solve_once(op, gap, conditions, laws, options, start);
+    if (film.converged() || use == MixedStartUse::solve_only) return film;
+  }
   if (!options.load_controlled()) {
     MixedFilm continued = continue_in_offset(op, gap, conditions, laws, options, start, std::move(film));
     continued.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
@@ -740,7 +750,7 @@ MixedFilm solve_mixed_film(InfluenceOperator& op, const Eigen::ArrayXd& gap, con
   // Where the film does not converge from its starts (the mixed regime, with
   // contacts coming and going), continue in the speed: from the given film's
   // speed if it has one, else from a faster film that converges.
-  int steps = film.iterations, solves = 1, krylov = film.krylov_iterations,
+  int steps = film.iterations, solves = use == MixedStartUse::continue_only ? 0 : 1, krylov = film.krylov_iterations,
       most_krylov = film.max_krylov_iterations_per_step;
   MixedFilm from;
   double factor = 0.0;

@@ -250,6 +250,33 @@ TEST(MixedFilmKrylovTest, SlowPointContactTendsToTheDryContact) {
   EXPECT_LT(differences.back(), 0.005);
 }
 
+// Grid sequencing: a rough point contact on 34^2 (8 cells per Hertz
+// radius) started from the 17^2 film finds the film of the cold start
+// with its speed continuation, in fewer Newton steps on the fine grid.
+TEST(MixedFilmKrylovTest, GridSequencedFilmEqualsTheColdOne) {
+  const RoughContact point = rough_point(34, 0.2e-6);
+  FftInfluenceOperator op(point.grid, kEStar);
+  const double speed = 0.1;
+  MixedFilmOptions sequenced_options = options_for(kPointLoad, FilmLinearSolve::automatic);
+  MixedFilmOptions cold_options = sequenced_options;
+  cold_options.grid_sequencing = false;
+  const MixedFilm sequenced = solve_mixed_film(op, point.gap, flow(speed), laws(), sequenced_options);
+  const MixedFilm cold = solve_mixed_film(op, point.gap, flow(speed), laws(), cold_options);
+  ASSERT_TRUE(sequenced.converged()) << sequenced.message;
+  ASSERT_TRUE(cold.converged()) << cold.message;
+  EXPECT_EQ(sequenced.coarse_levels, 1);
+  EXPECT_GT(sequenced.coarse_iterations, 0);
+  EXPECT_FALSE(sequenced.sequencing_fell_back);
+  EXPECT_EQ(cold.coarse_levels, 0);
+  EXPECT_LT(sequenced.iterations, cold.iterations);
+  EXPECT_GT(sequenced.contact_load_fraction, 0.05);
+  expect_solution_holds(op, point.gap, flow(speed), sequenced_options, sequenced);
+  const double peak = cold.max_pressure;
+  EXPECT_LE((sequenced.pressure - cold.pressure).abs().maxCoeff(), 1e-6 * peak);
+  EXPECT_NEAR(sequenced.contact_load_fraction, cold.contact_load_fraction, 3e-5);
+  EXPECT_EQ(sequenced.contact_area_fraction, cold.contact_area_fraction);
+}
+
 TEST(MixedFilmKrylovTest, RefusesInvalidKrylovOptionsNamingThem) {
   const auto message = [](const MixedFilmOptions& options) {
     try {

@@ -46,6 +46,18 @@ namespace halfspace::lubrication {
 // memory.
 inline constexpr std::size_t kMaxMixedFilmNodes = 2048;
 
+// Above this many nodes a load-controlled point contact solved without a
+// start is grid-sequenced (MixedFilmOptions::grid_sequencing): solved first
+// on the grid of twice the spacing, recursively, to
+// kSequencingCoarseTolerance, and interpolated as the Newton start.
+inline constexpr std::size_t kMixedSequencingNodes = 1024;
+
+// Nodes up to which a sequenced solve whose coarse film failed, or that
+// failed from it, starts again cold and continues in the speed; above, that
+// takes hours (a 128^2 rough point contact did not finish in 30 minutes;
+// docs/development-log.md) and the failure is reported instead.
+inline constexpr std::size_t kMaxMixedColdRestartNodes = 64 * 64;
+
 // How the film's shear and the asperities' friction are taken.
 struct MixedFrictionOptions {
   double contact_friction = 0.1;  // Coulomb coefficient on contact cells, >= 0
@@ -85,6 +97,9 @@ struct MixedFilmOptions {
   int krylov_max_iterations = 800;
   double krylov_tolerance = 1e-9;
   int preconditioner_neighbourhood = 1;
+  // Grid sequencing on 2D grids of more than kMixedSequencingNodes nodes
+  // with even cell counts, under load control without a start.
+  bool grid_sequencing = true;
   MixedFrictionOptions friction;
 
   // Throws InputError naming the option unless load >= 0 and finite, offset
@@ -131,7 +146,14 @@ struct MixedFilm {
   bool used_krylov = false;
   int krylov_iterations = 0;
   int max_krylov_iterations_per_step = 0;
-  double wall_seconds = 0.0;
+  // Grid sequencing: the coarser grids solved for the start, their Newton
+  // steps and GMRES iterations (all levels), and whether the fine grid
+  // started cold after all (kMaxMixedColdRestartNodes).
+  int coarse_levels = 0;
+  int coarse_iterations = 0;
+  int coarse_krylov_iterations = 0;
+  bool sequencing_fell_back = false;
+  double wall_seconds = 0.0;  // all of it, coarse grids included
   // Measured after the solve apart from the Newton iteration, with the
   // operator's own product: the flux-form mass residual (on h_R), |load -
   // w| / w, and the contact complementarity max over cells of
@@ -155,7 +177,10 @@ struct MixedFilm {
 // 2 (halved where a step fails); under separation control one continues in
 // h0: from the start, or from the load-controlled film at the load of the
 // dry contact at the approach -h0 (so a cold start needs h0 < 0: contact
-// when dry). `iterations` then counts every Newton step.
+// when dry). `iterations` then counts every Newton step. Without a start,
+// a load-controlled point contact of more than kMixedSequencingNodes nodes
+// starts from the film of the grid of twice the spacing instead
+// (options.grid_sequencing; its steps in coarse_iterations).
 // Throws InputError for invalid input; non-convergence is a status.
 MixedFilm solve_mixed_film(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
                            const LubricantLaws& laws, const MixedFilmOptions& options,

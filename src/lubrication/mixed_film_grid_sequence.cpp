@@ -1,0 +1,170 @@
+// Grid sequencing of the mixed film (nested iteration, Venner & Lubrecht
+// 2000, ch. 3), as the EHL film's (film_grid_sequence.cpp): the coarse
+// grid's film (its influence operator R K P seen through the fine one, its
+// gap the fine gap's block average) interpolated bilinearly, fluid and
+// contact pressure and fluid fraction apart, with its h0, as the fine
+// Newton start. The speed continuation a cold start needs in the mixed
+// regime is then paid on the coarsest grid only.
+#include "mixed_film_grid_sequence.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <optional>
+
+#include "halfspace/operators/coarsened_influence_operator.hpp"
+#include "halfspace/solvers/grid_transfer.hpp"
+#include "halfspace/solvers/polonsky_keer.hpp"
+
+namespace halfspace::lubrication {
+
+namespace {
+
+// Cells per axis below which no coarser grid is made.
+constexpr std::size_t kSequencingMinCells = 8;
+// The faster films tried where the fine iteration fails from the coarse one.
+constexpr double kSequencedSpeedUp = 4.0;
+constexpr double kSequencedFastest = 64.0;
+// The Newton steps the fine grid gets from the coarse film before the
+// faster film is tried (a rough point contact at 64^2: 55 steps; with 25,
+// every level gave up and the solve took 200 steps; docs/development-log.md).
+constexpr int kSequencedFirstSteps = 60;
+
+// The film on the grid of twice the spacing, interpolated onto op's grid, or
+// nothing if there is no coarser grid or its film did not converge. Adds the
+// coarse work to `record`, and a failed coarse film's message.
+std::optional<MixedFilm> sequenced_start(InfluenceOperator& op, const Eigen::ArrayXd& gap,
+                                         const FlowConditions& conditions, const LubricantLaws& laws,
+                                         const MixedFilmOptions& options, MixedFilm& record) {
+  const Grid& grid = op.grid();
+  const std::optional<Grid> coarse = solvers::coarser_grid(grid, kSequencingMinCells);
+  if (!coarse) return std::nullopt;
+  CoarsenedInfluenceOperator coarse_op(op, *coarse);
+  const auto coarse_n = static_cast<Eigen::Index>(coarse->size());
+  Eigen::ArrayXd coarse_gap(coarse_n);
+  solvers::restrict_by_average(grid, {gap.data(), grid.size()}, {coarse_gap.data(), coarse->size()});
+  MixedFilmOptions coarse_options = options;
+  coarse_options.tolerance = std::max(options.tolerance, kSequencingCoarseTolerance);
+  coarse_options.load_tolerance = std::max(options.load_tolerance, kSequencingCoarseTolerance);
+  const MixedFilm film = solve_mixed_film(coarse_op, coarse_gap, conditions, laws, coarse_options);
+  record.coarse_levels = 1 + film.coarse_levels;
+  record.coarse_iterations = film.iterations + film.coarse_iterations;
+  record.coarse_krylov_iterations = film.krylov_iterations + film.coarse_krylov_iterations;
+  if (!film.converged()) {
+    record.message = film.message;
+    return std::nullopt;
+  }
+  MixedFilm start;
+  const auto prolong = [&](const Eigen::ArrayXd& coarse_values, Eigen::ArrayXd& fine_values) {
+    fine_values.resize(static_cast<Eigen::Index>(grid.size()));
+    solvers::prolong_bilinear(grid, {coarse_values.data(), coarse->size()}, {fine_values.data(), grid.size()});
+  };
+  prolong(film.fluid_pressure, start.fluid_pressure);
+  prolong(film.fluid_fraction, start.fluid_fraction);
+  // The contact pressure is not interpolated: the fine roughness puts the
+  // contacts elsewhere than its block average does, and an interpolated one
+  // closes cells that are open on the fine grid (at 64^2: 184 contact rows
+  // closed, 46 at the solution, and no Newton step descends from there). It
+  // is the fine dry contact's under the interpolated fluid pressure instead,
+  // carrying what the fluid does not: the contact rows then hold and the
+  // load balances at the start, the Newton iteration corrects the fluid.
+  const std::size_t n = grid.size();
+  const double fluid_load = start.fluid_pressure.sum() * grid.cell_area();
+  Eigen::ArrayXd loaded_gap(static_cast<Eigen::Index>(n));
+  op.apply({start.fluid_pressure.data(), n}, {loaded_gap.data(), n});
+  loaded_gap += gap;
+  start.contact_pressure = Eigen::ArrayXd::Zero(static_cast<Eigen::Index>(n));
+  // The coarse h0 where no contact remains: the coarse gap is the fine one's
+  // block average and the coarse K the fine one's.
+  start.offset = film.offset;
+  if (options.load - fluid_load > 0.0) {
+    solvers::PolonskyKeer contact_solver(op);
+    const solvers::SolveResult contact =
+        contact_solver.solve({loaded_gap.data(), n}, solvers::Loading::force(options.load - fluid_load));
+    if (contact.converged()) {
+      start.contact_pressure = contact.pressure;
+      start.offset = -contact.approach;
+    }
+  }
+  start.entrainment_speed = film.entrainment_speed;
+  start.status = FilmStatus::converged;
+  return start;
+}
+
+// solve_mixed_film, where a failed fine iteration tries faster films only
+// if `faster_allowed` (the faster films themselves do not: the speeds
+// stay bounded).
+MixedFilm solve_sequenced(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
+                          const LubricantLaws& laws, const MixedFilmOptions& options, const MixedFilm* start,
+                          bool faster_allowed) {
+  const auto started = std::chrono::steady_clock::now();
+  const Grid& grid = op.grid();
+  options.validate();
+  const bool sequence = options.grid_sequencing && start == nullptr && options.load_controlled() &&
+                        grid.dimension() == 2 && options.linear_solve != FilmLinearSolve::dense &&
+                        grid.size() > kMixedSequencingNodes && op.local_size() == grid.size() &&
+                        static_cast<std::size_t>(gap.size()) == grid.size() && gap.allFinite();
+  if (!sequence) return detail::solve_mixed_film_on_grid(op, gap, conditions, laws, options, start);
+  // The fine grid's memory first: the coarse grids would take minutes on a
+  // grid the fine solve cannot hold.
+  require_mixed_film_fits(grid, options, "the mixed film");
+  MixedFilm record;
+  const std::optional<MixedFilm> coarse_start = sequenced_start(op, gap, conditions, laws, options, record);
+  MixedFilm result;
+  if (coarse_start) {
+    MixedFilmOptions first = options;
+    first.max_iterations = std::min(options.max_iterations, kSequencedFirstSteps);
+    result = detail::solve_mixed_film_on_grid(op, gap, conditions, laws, first, &*coarse_start,
+                                              detail::MixedStartUse::solve_only);
+  }
+  int steps = result.iterations, krylov = result.krylov_iterations;
+  // A fine Newton iteration that failed from the coarse film (its steps
+  // creep where cells cross the contact and the film floor h_b at once):
+  // the film at a faster speed, grid-sequenced in turn (4, 16, ... times the
+  // velocities: the faster, the further from contact and the easier), and
+  // the continuation in the speed from it on this grid.
+  for (double faster = kSequencedSpeedUp; faster_allowed && !result.converged() && faster <= kSequencedFastest;
+       faster *= kSequencedSpeedUp) {
+    const MixedFilm fast =
+        solve_sequenced(op, gap, detail::at_speed_factor(conditions, faster), laws, options, nullptr, false);
+    steps += fast.iterations;
+    krylov += fast.krylov_iterations;
+    record.coarse_iterations += fast.coarse_iterations;
+    record.coarse_krylov_iterations += fast.coarse_krylov_iterations;
+    if (!fast.converged()) continue;
+    result = detail::solve_mixed_film_on_grid(op, gap, conditions, laws, options, &fast,
+                                              detail::MixedStartUse::continue_only);
+    steps += result.iterations;
+    krylov += result.krylov_iterations;
+    result.sequencing_fell_back = true;
+    break;
+  }
+  if (!result.converged() && faster_allowed && grid.size() <= kMaxMixedColdRestartNodes) {
+    // The last resort on small grids: the cold start with its continuations.
+    result = detail::solve_mixed_film_on_grid(op, gap, conditions, laws, options, nullptr);
+    steps += result.iterations;
+    krylov += result.krylov_iterations;
+    result.sequencing_fell_back = true;
+  } else if (!result.converged()) {
+    result.message =
+        fmt::format("{} (grid-sequenced; no cold restart above {} nodes){}", result.message, kMaxMixedColdRestartNodes,
+                    record.message.empty() ? "" : fmt::format("; the coarser grids: {}", record.message));
+  }
+  result.iterations = steps;
+  result.krylov_iterations = krylov;
+  result.coarse_levels = record.coarse_levels;
+  result.coarse_iterations = record.coarse_iterations;
+  result.coarse_krylov_iterations = record.coarse_krylov_iterations;
+  result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  return result;
+}
+
+}  // namespace
+
+MixedFilm solve_mixed_film(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
+                           const LubricantLaws& laws, const MixedFilmOptions& options, const MixedFilm* start) {
+  return solve_sequenced(op, gap, conditions, laws, options, start, true);
+}
+
+}  // namespace halfspace::lubrication

@@ -1,0 +1,29 @@
+// Grid sequencing for the mixed film (mixed_film_grid_sequence.cpp): the
+// film on a grid solved first on the grid of twice the spacing and
+// interpolated as the fine Newton start. Private to the library.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "halfspace/lubrication/mixed_film.hpp"
+#include "halfspace/operators/influence_operator.hpp"
+
+namespace halfspace::lubrication::detail {
+
+// How solve_mixed_film_on_grid uses its start: the Newton iteration from it
+// and, where that fails, the continuations solve_mixed_film documents; the
+// Newton iteration alone; or (a converged start at another speed) the
+// continuation in the speed from it alone.
+enum class MixedStartUse { solve_then_continue, solve_only, continue_only };
+
+// The mixed film on the operator's grid alone (no coarser grid): the Newton
+// iteration from `start` or the standard starts (mixed_film.cpp) and the
+// continuations, as `use` says.
+MixedFilm solve_mixed_film_on_grid(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
+                                   const LubricantLaws& laws, const MixedFilmOptions& options, const MixedFilm* start,
+                                   MixedStartUse use = MixedStartUse::solve_then_continue);
+
+// `conditions` with the entrainment and sliding velocities times `factor`.
+FlowConditions at_speed_factor(const FlowConditions& conditions, double factor);
+
+}  // namespace halfspace::lubrication::detail
