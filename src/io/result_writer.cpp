@@ -139,10 +139,11 @@ void write_result(const std::filesystem::path& path, const Grid& grid, std::span
     }
   }
   const auto fill = [&](const Hdf5Node& root) { write_result_contents(root, grid, height, result, metadata); };
-  if (metadata.extra_groups_bytes == 0) {
+  const std::uint64_t bound = result_file_bound(grid, result, metadata);
+  if (metadata.extra_groups_bytes == 0 && bound <= kInMemoryResultBytes) {
     write_hdf5_file(path, fill);
   } else {
-    write_large_hdf5_file(path, result_file_bound(grid, result, metadata), fill);
+    write_large_hdf5_file(path, bound, fill);
   }
   write_xdmf_sidecar(path, grid);  // for ParaView (xdmf_writer.hpp)
 }

@@ -270,6 +270,25 @@ TEST(ResultWriterTest, ChunksLargeProfileInEqualPieces) {
   EXPECT_EQ(storage.chunk, std::vector<hsize_t>{35000});
 }
 
+// Above kInMemoryResultBytes the file is written in place rather than
+// assembled in memory: the same fields, attributes and layout, and no
+// temporary left beside it.
+TEST(ResultWriterTest, WritesAResultAboveTheInMemoryLimitInPlace) {
+  const TempDir dir;
+  const Grid grid = Grid::plane(1200, 1100, 1e-6, 1e-6, Boundary::periodic);
+  const SolveResult result = make_result(grid, 3);
+  const ResultMetadata metadata = make_metadata();
+  ASSERT_GT(result_file_bound(grid, result, metadata), kInMemoryResultBytes);
+  const std::vector<double> height = make_height(grid);
+  write_result(dir / "large.h5", grid, height, result, metadata);
+
+  const auto file = test::open_file(dir / "large.h5");
+  expect_fields(file.get(), grid, height, result);
+  expect_attributes(file.get(), grid, result, metadata);
+  EXPECT_EQ(storage_of(file.get(), "/pressure").filter_count, 2) << "shuffle and deflate";
+  EXPECT_EQ(dir.entries(), (std::vector<std::string>{"large.h5", "large.xdmf"}));
+}
+
 TEST(ResultWriterTest, WritesEmptyResidualHistoryAsZeroLengthDataset) {
   const TempDir dir;
   const Grid grid = Grid::line(8, 1e-6, Boundary::periodic);

@@ -75,4 +75,10 @@ void write_result(const std::filesystem::path& path, const Grid& grid, std::span
 // where a process failing alone in mid-write would leave the others waiting).
 std::uint64_t result_file_bound(const Grid& grid, const SolveResult& result, const ResultMetadata& metadata);
 
+// Files whose bound (result_file_bound) is at most this are assembled in
+// memory and written in one piece; larger ones are written in place, since
+// assembling in memory holds the file twice (HDF5's buffer and its image),
+// which would set the peak memory of a large solve.
+inline constexpr std::uint64_t kInMemoryResultBytes = std::uint64_t{64} << 20;
+
 }  // namespace halfspace::io
