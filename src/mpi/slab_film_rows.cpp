@@ -193,8 +193,8 @@ lubrication::FilmSolution solve_cavitating_film_on_slabs(const Grid& whole, std:
     conditions.validate(whole);
     options.validate();
     if (film_rows.size() != slab.local_size()) {
-      throw InputError(fmt::format("{} film values for a slab of {} rows of {}", film_rows.size(), slab.rows,
-                                   whole.shape_string()));
+      throw InputError(
+          fmt::format("{} film values for a slab of {} rows of {}", film_rows.size(), slab.rows, whole.shape_string()));
     }
   });
   SlabFilmRows rows(whole, conditions, slab, comm);

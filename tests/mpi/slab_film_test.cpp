@@ -72,10 +72,11 @@ void check(const std::string& name, const Grid& grid, const lubrication::FlowCon
   const bool ok = serial.converged() && cavitated && slabs.status == serial.status &&
                   slabs.iterations == serial.iterations && pressure_difference == 0.0 && fraction_difference == 0.0;
   if (comm.rank() == 0) {
-    std::printf("%s %s: %d sweeps (serial %d), residual %.3g, largest pressure %.4g Pa, least fluid fraction %.3f, "
-                "differences %.3g Pa and %.3g\n",
-                ok ? "ok" : "FAIL", where.c_str(), slabs.iterations, serial.iterations, slabs.relative_residual,
-                serial.pressure.maxCoeff(), serial.fluid_fraction.minCoeff(), pressure_difference, fraction_difference);
+    std::printf(
+        "%s %s: %d sweeps (serial %d), residual %.3g, largest pressure %.4g Pa, least fluid fraction %.3f, "
+        "differences %.3g Pa and %.3g\n",
+        ok ? "ok" : "FAIL", where.c_str(), slabs.iterations, serial.iterations, slabs.relative_residual,
+        serial.pressure.maxCoeff(), serial.fluid_fraction.minCoeff(), pressure_difference, fraction_difference);
   }
   if (!ok) ++failures;
 }
