@@ -36,13 +36,22 @@ void CavitationSolverOptions::validate() const {
   }
 }
 
-double relative_mass_residual(const ReynoldsStencil& stencil, const Eigen::ArrayXd& pressure,
-                              const Eigen::ArrayXd& fluid_fraction) {
+namespace {
+
+double largest_mass_balance(const ReynoldsStencil& stencil, const Eigen::ArrayXd& pressure,
+                            const Eigen::ArrayXd& fluid_fraction) {
   double largest = 0.0;
   for (std::size_t k = 0; k < stencil.size(); ++k) {
     largest = std::max(largest, std::abs(stencil.mass_balance(k, pressure, fluid_fraction)));
   }
-  return largest / stencil.balance_scale(pressure);
+  return largest;
+}
+
+}  // namespace
+
+double relative_mass_residual(const ReynoldsStencil& stencil, const Eigen::ArrayXd& pressure,
+                              const Eigen::ArrayXd& fluid_fraction) {
+  return largest_mass_balance(stencil, pressure, fluid_fraction) / stencil.balance_scale(pressure);
 }
 
 bool satisfies_complementarity(const Eigen::ArrayXd& pressure, const Eigen::ArrayXd& fluid_fraction,
@@ -109,7 +118,7 @@ void sweep(const ReynoldsStencil& s, double omega, Eigen::ArrayXd& p, Eigen::Arr
 }  // namespace
 
 FilmSolution solve_cavitating_film(const ReynoldsStencil& stencil, const CavitationSolverOptions& options,
-                                   const FilmSolution* start) {
+                                   const FilmSolution* start, FilmRows* rows) {
   options.validate();
   const auto n = static_cast<Eigen::Index>(stencil.size());
   FilmSolution solution;
@@ -126,19 +135,31 @@ FilmSolution solve_cavitating_film(const ReynoldsStencil& stencil, const Cavitat
     solution.pressure[k] = stencil.fixed_pressure(static_cast<std::size_t>(k));
     solution.fluid_fraction[k] = supply;
   }
-  const double omega = options.relaxation > 0.0 ? options.relaxation : automatic_relaxation(stencil.grid());
+  const Grid& whole = rows != nullptr ? rows->whole_grid() : stencil.grid();
+  const double omega = options.relaxation > 0.0 ? options.relaxation : automatic_relaxation(whole);
+  if (rows != nullptr) rows->start(solution.pressure, solution.fluid_fraction);
   for (int iteration = 1; iteration <= options.max_iterations; ++iteration) {
+    if (rows != nullptr) rows->before_sweep(solution.pressure, solution.fluid_fraction);
     sweep(stencil, omega, solution.pressure, solution.fluid_fraction);
+    if (rows != nullptr) rows->after_sweep(solution.pressure, solution.fluid_fraction);
     if (iteration % options.check_every != 0 && iteration != options.max_iterations) continue;
     solution.iterations = iteration;
-    solution.relative_residual = relative_mass_residual(stencil, solution.pressure, solution.fluid_fraction);
+    if (rows != nullptr) {
+      rows->complete(solution.pressure, solution.fluid_fraction);
+      solution.relative_residual =
+          rows->max(largest_mass_balance(stencil, solution.pressure, solution.fluid_fraction)) /
+          rows->max(stencil.balance_scale(solution.pressure));
+    } else {
+      solution.relative_residual = relative_mass_residual(stencil, solution.pressure, solution.fluid_fraction);
+    }
     if (!std::isfinite(solution.relative_residual)) {
       solution.status = FilmStatus::failure;
       solution.message = fmt::format("the film solve diverged after {} sweeps (relaxation {})", iteration, omega);
       return solution;
     }
+    const bool complementary = satisfies_complementarity(solution.pressure, solution.fluid_fraction);
     if (solution.relative_residual <= options.tolerance &&
-        satisfies_complementarity(solution.pressure, solution.fluid_fraction)) {
+        (rows != nullptr ? rows->all(complementary) : complementary)) {
       solution.status = FilmStatus::converged;
       return solution;
     }

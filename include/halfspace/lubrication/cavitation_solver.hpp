@@ -11,6 +11,7 @@
 
 #include <Eigen/Core>
 
+#include "halfspace/lubrication/film_rows.hpp"
 #include "halfspace/lubrication/film_solution.hpp"
 #include "halfspace/lubrication/reynolds_stencil.hpp"
 
@@ -37,8 +38,11 @@ struct CavitationSolverOptions {
 // boundary pressures' mean of fixed nodes, 0 elsewhere, theta = 1). Allocates
 // the result once; the sweeps allocate nothing. Throws InputError for invalid
 // options or a start of the wrong size.
+// With `rows`, the stencil is this process's rows of a film and their halo
+// rows (film_rows.hpp): the sweeps and the convergence measures are the
+// whole film's; collective over the processes `rows` joins.
 FilmSolution solve_cavitating_film(const ReynoldsStencil& stencil, const CavitationSolverOptions& options = {},
-                                   const FilmSolution* start = nullptr);
+                                   const FilmSolution* start = nullptr, FilmRows* rows = nullptr);
 
 // The largest |mass balance| over the unknown nodes, relative to the
 // balance scale, and whether p >= 0, 0 <= theta <= 1 and p (1 - theta) = 0

@@ -1,0 +1,95 @@
+// The rigid Reynolds film with mass-conserving cavitation on slabs of rows:
+// each process sweeps its rows of the 2D film with the serial solver
+// (cavitation_solver.hpp) on a stencil over its rows and one halo row each
+// side, which this object exchanges with the neighbouring processes between
+// the sweeps (lubrication/film_rows.hpp says which sweep's values), and the
+// convergence measures are reduced over the communicator. The iterates are
+// the serial ones, so the solution equals the serial program's (to the last
+// bit, tests/mpi/slab_film_test.cpp). A sweep reads the row that the
+// process before it has just swept, so the processes follow each other as
+// a wavefront along the entrainment's y component: with fixed pressures on
+// the y edges they sweep at once, one sweep apart; on a y-periodic film
+// each sweep waits for the wrap-around row, so the processes take turns.
+#pragma once
+
+#include <mpi.h>
+
+#include <Eigen/Core>
+#include <span>
+#include <vector>
+
+#include "halfspace/grid.hpp"
+#include "halfspace/lubrication/cavitation_solver.hpp"
+#include "halfspace/lubrication/film_rows.hpp"
+#include "halfspace/lubrication/flow_conditions.hpp"
+#include "halfspace/mpi/mpi_communicator.hpp"
+#include "halfspace/mpi/slab_fft.hpp"
+
+namespace halfspace::mpi {
+
+class SlabFilmRows final : public lubrication::FilmRows {
+ public:
+  // This process's rows `slab` of the 2D film on `whole` with `conditions`.
+  // Collective; throws InputError (on every process alike) for a 1D grid or
+  // when some process holds no row. `comm` must outlive this object.
+  SlabFilmRows(const Grid& whole, const lubrication::FlowConditions& conditions, const SlabLayout& slab,
+               const MpiCommunicator& comm);
+  ~SlabFilmRows() override;
+  SlabFilmRows(const SlabFilmRows&) = delete;
+  SlabFilmRows& operator=(const SlabFilmRows&) = delete;
+
+  // The stencil's grid and conditions: this process's rows and its halo
+  // rows, which are fixed-pressure edges there (the sweeps pass over them).
+  const Grid& stencil_grid() const { return stencil_grid_; }
+  const lubrication::FlowConditions& stencil_conditions() const { return stencil_conditions_; }
+  // A field on the stencil's rows from this process's rows of it (the halo
+  // rows from the neighbours). Collective.
+  Eigen::ArrayXd stencil_field(std::span<const double> rows) const;
+  // This process's rows of a field on the stencil's rows.
+  Eigen::ArrayXd own_rows(const Eigen::ArrayXd& field) const;
+
+  const Grid& whole_grid() const override { return whole_; }
+  void start(const Eigen::ArrayXd& pressure, const Eigen::ArrayXd& fluid_fraction) override;
+  void before_sweep(Eigen::ArrayXd& pressure, Eigen::ArrayXd& fluid_fraction) override;
+  void after_sweep(const Eigen::ArrayXd& pressure, const Eigen::ArrayXd& fluid_fraction) override;
+  void complete(Eigen::ArrayXd& pressure, Eigen::ArrayXd& fluid_fraction) override;
+  double max(double value) const override;
+  bool all(bool value) const override;
+
+ private:
+  // One neighbour: the halo row it fills and the boundary row it is sent.
+  struct Link {
+    int rank = -1;
+    std::size_t halo_row = 0;  // rows of the stencil
+    std::size_t sent_row = 0;
+    int receive_tag = 0;
+    int send_tag = 0;
+    bool current = false;  // the halo holds this sweep's values (else the previous sweep's)
+    long received = -1;    // the last sweep whose row has arrived
+    std::vector<double> in;
+    std::vector<double> out;
+    MPI_Request request = MPI_REQUEST_NULL;
+  };
+
+  void receive_until(Link& link, long sweep, Eigen::ArrayXd& pressure, Eigen::ArrayXd& fluid_fraction) const;
+  void send(Link& link, const Eigen::ArrayXd& pressure, const Eigen::ArrayXd& fluid_fraction) const;
+
+  Grid whole_;
+  const MpiCommunicator& comm_;
+  std::size_t own_first_ = 0;  // the first of this process's rows in the stencil
+  std::size_t own_rows_ = 0;
+  Grid stencil_grid_;
+  lubrication::FlowConditions stencil_conditions_;
+  std::vector<Link> links_;
+  long sweep_ = 0;
+};
+
+// The rigid film of this process's rows `film_rows` (slab.local_size()
+// values) solved on slabs: the pressure and fluid fraction of these rows,
+// the sweeps, residual and status of the whole film. Collective.
+lubrication::FilmSolution solve_cavitating_film_on_slabs(const Grid& whole, std::span<const double> film_rows,
+                                                         const lubrication::FlowConditions& conditions,
+                                                         const lubrication::CavitationSolverOptions& options,
+                                                         const SlabLayout& slab, const MpiCommunicator& comm);
+
+}  // namespace halfspace::mpi
