@@ -99,9 +99,9 @@ double fluid_volume(const Grid& grid, const ReynoldsStencil& topology, const Eig
 
 }  // namespace
 
-TransientOutcome lubricate_transient(const Grid& grid, const Eigen::ArrayXd& heights,
-                                     const FlowConditions& conditions, const TransientFilmOptions& options,
-                                     const CavitationSolverOptions& solver, const TransientObserver& observer) {
+TransientOutcome lubricate_transient(const Grid& grid, const Eigen::ArrayXd& heights, const FlowConditions& conditions,
+                                     const TransientFilmOptions& options, const CavitationSolverOptions& solver,
+                                     const TransientObserver& observer) {
   conditions.validate(grid);
   solver.validate();
   options.validate();
@@ -156,8 +156,8 @@ TransientOutcome lubricate_transient(const Grid& grid, const Eigen::ArrayXd& hei
     observer(current);
     if (!current.film.solution.converged()) {
       outcome.status = current.film.solution.status;
-      outcome.message = fmt::format("step {} (t = {} s): {}", step, format_number(current.time),
-                                    current.film.solution.message);
+      outcome.message =
+          fmt::format("step {} (t = {} s): {}", step, format_number(current.time), current.film.solution.message);
       return outcome;
     }
     outcome.steps_done = step;

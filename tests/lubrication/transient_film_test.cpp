@@ -30,10 +30,8 @@ std::vector<TransientStep> run(const Grid& grid, const Eigen::ArrayXd& heights, 
                                const TransientFilmOptions& options, TransientOutcome* outcome = nullptr,
                                CavitationSolverOptions solver = {}) {
   std::vector<TransientStep> steps;
-  const TransientOutcome o =
-      lubricate_transient(grid, heights, conditions, options, solver, [&](const TransientStep& s) {
-        steps.push_back(s);
-      });
+  const TransientOutcome o = lubricate_transient(grid, heights, conditions, options, solver,
+                                                 [&](const TransientStep& s) { steps.push_back(s); });
   if (outcome != nullptr) *outcome = o;
   EXPECT_EQ(o.status, FilmStatus::converged) << o.message;
   return steps;
@@ -171,7 +169,8 @@ TEST(TransientFilmTest, OscillatingSqueezeConservesMassThroughCavitation) {
   options.initial_separation = h0;
   options.scheme = TimeScheme::backward_euler;
   std::vector<double> history;
-  for (int k = 1; k <= options.steps; ++k) history.push_back(h0 * (1.0 + 0.6 * std::sin(2.0 * std::numbers::pi * k / 20.0)));
+  for (int k = 1; k <= options.steps; ++k)
+    history.push_back(h0 * (1.0 + 0.6 * std::sin(2.0 * std::numbers::pi * k / 20.0)));
   options.separation_history = history;
   CavitationSolverOptions solver;
   solver.tolerance = 1e-13;
@@ -201,7 +200,8 @@ TEST(TransientFilmTest, PartingPlatesKeepTheirFluid) {
   options.separation_history = std::vector<double>{1.5e-5, 2e-5, 1.5e-5, 1e-5};
   const std::vector<TransientStep> steps = run(grid, Eigen::ArrayXd::Zero(n), still_film(), options);
   ASSERT_EQ(steps.size(), 5u);
-  for (const TransientStep& s : steps) EXPECT_NEAR(s.fluid_volume, steps[0].fluid_volume, 1e-12 * steps[0].fluid_volume);
+  for (const TransientStep& s : steps)
+    EXPECT_NEAR(s.fluid_volume, steps[0].fluid_volume, 1e-12 * steps[0].fluid_volume);
   EXPECT_NEAR(steps[2].film.solution.fluid_fraction[n / 2], 0.5, 1e-12);
   EXPECT_EQ(steps[2].film.forces.load, 0.0);
   EXPECT_NEAR(steps[4].film.solution.fluid_fraction[n / 2], 1.0, 1e-12);

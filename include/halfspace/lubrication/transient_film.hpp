@@ -87,8 +87,8 @@ using TransientObserver = std::function<void(const TransientStep&)>;
 // steady film at options.initial_separation. Stops at the first step whose
 // film does not converge (its state is observed, with its status). Throws
 // InputError for invalid options.
-TransientOutcome lubricate_transient(const Grid& grid, const Eigen::ArrayXd& heights,
-                                     const FlowConditions& conditions, const TransientFilmOptions& options,
-                                     const CavitationSolverOptions& solver, const TransientObserver& observer);
+TransientOutcome lubricate_transient(const Grid& grid, const Eigen::ArrayXd& heights, const FlowConditions& conditions,
+                                     const TransientFilmOptions& options, const CavitationSolverOptions& solver,
+                                     const TransientObserver& observer);
 
 }  // namespace halfspace::lubrication
