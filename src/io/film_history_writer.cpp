@@ -51,8 +51,9 @@ std::string column_unit(const HistoryColumn& column, const Grid& grid) {
 
 void check_field(std::string_view field, const Step& step, Eigen::Index size, const Grid& grid) {
   if (static_cast<std::size_t>(size) != grid.size()) {
-    throw InputError(fmt::format("write_film_history: field '{}' of step {} has {} values but the grid has {} nodes ({})",
-                                 field, step.step, size, grid.size(), grid.shape_string()));
+    throw InputError(
+        fmt::format("write_film_history: field '{}' of step {} has {} values but the grid has {} nodes ({})", field,
+                    step.step, size, grid.size(), grid.shape_string()));
   }
 }
 
