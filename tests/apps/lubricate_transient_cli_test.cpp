@@ -24,8 +24,9 @@ using testing::ProgramRun;
 using testing::run_program;
 
 std::vector<std::string> lubricate(std::vector<std::string> extra) {
-  std::vector<std::string> args{"lubricate",  "--height-map", "cylinder.h5", "--viscosity", "0.1",
-                                "--entrainment-velocity", "1", "--output", "t.h5", "--quiet"};
+  std::vector<std::string> args{
+      "lubricate", "--height-map", "cylinder.h5", "--viscosity", "0.1", "--entrainment-velocity",
+      "1",         "--output",     "t.h5",        "--quiet"};
   args.insert(args.end(), extra.begin(), extra.end());
   return args;
 }
@@ -37,10 +38,9 @@ TEST(LubricateTransientCliTest, StepsAreTheLibrarysWithAHistory) {
                         dir.path())
                 .exit_code,
             kExitOk);
-  const ProgramRun run = run_program(
-      lubricate({"--separation", "1e-5", "--time-step", "1e-4", "--separation-history", "9e-6,1.2e-5,1e-5",
-                 "--time-scheme", "backward-euler"}),
-      dir.path());
+  const ProgramRun run = run_program(lubricate({"--separation", "1e-5", "--time-step", "1e-4", "--separation-history",
+                                                "9e-6,1.2e-5,1e-5", "--time-scheme", "backward-euler"}),
+                                     dir.path());
   ASSERT_EQ(run.exit_code, kExitOk) << run.err;
 
   const HeightMap map = io::read_height_map(dir / "cylinder.h5");
@@ -55,8 +55,8 @@ TEST(LubricateTransientCliTest, StepsAreTheLibrarysWithAHistory) {
   options.scheme = lubrication::TimeScheme::backward_euler;
   std::vector<lubrication::TransientStep> expected;
   const lubrication::TransientOutcome outcome =
-      lubrication::lubricate_transient(Grid::line(map.nx, map.dx, Boundary::free), map.heights, conditions, options,
-                                       {}, [&](const lubrication::TransientStep& s) { expected.push_back(s); });
+      lubrication::lubricate_transient(Grid::line(map.nx, map.dx, Boundary::free), map.heights, conditions, options, {},
+                                       [&](const lubrication::TransientStep& s) { expected.push_back(s); });
   ASSERT_EQ(outcome.status, lubrication::FilmStatus::converged) << outcome.message;
   ASSERT_EQ(expected.size(), 4u);
 
