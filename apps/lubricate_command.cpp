@@ -23,6 +23,8 @@
 
 #include "exit_codes.hpp"
 #include "halfspace/error.hpp"
+#include "halfspace/io/film_history_writer.hpp"
+#include "halfspace/io/friction_history_writer.hpp"
 #include "halfspace/io/hdf5_output.hpp"
 #include "halfspace/io/height_map_reader.hpp"
 #include "halfspace/io/output_file.hpp"
@@ -33,6 +35,7 @@
 #include "halfspace/lubrication/load_control.hpp"
 #include "halfspace/lubrication/lubrication_problem.hpp"
 #include "halfspace/lubrication/mixed_film.hpp"
+#include "halfspace/lubrication/transient_film.hpp"
 #include "halfspace/material.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
 #include "halfspace/surface/preparation.hpp"
@@ -60,6 +63,7 @@ using Kind = OptionKind;
 constexpr std::string_view kFilm = "Film";
 constexpr std::string_view kElastic = "Elastic film (EHL)";
 constexpr std::string_view kMixed = "Mixed lubrication";
+constexpr std::string_view kTransient = "Transient film (rigid)";
 constexpr std::string_view kOutput = "Output";
 
 const std::array kOptions{
@@ -152,6 +156,18 @@ const std::array kOptions{
                     "Stribeck sweep: entrainment speeds (m/s), sliding scaled alike; needs --stribeck"},
     LubricateOption{"stribeck", &LubricateOptions::stribeck, Kind::path, kMixed, "FILE.csv",
                     "the Stribeck curve of --speeds as CSV"},
+    LubricateOption{"time-step", &LubricateOptions::time_step, Kind::number, kTransient, "DT",
+                    "step the rigid film in time (s): the squeeze term d(h theta)/dt from --separation at t = 0, "
+                    "moved by --approach-velocity, --separation-history or --force; writes /steps and a CSV "
+                    "history beside --output"},
+    LubricateOption{"steps", &LubricateOptions::steps, Kind::integer, kTransient, "N",
+                    "time steps, 1 to 10000000 [the length of --separation-history]"},
+    LubricateOption{"time-scheme", &LubricateOptions::time_scheme, Kind::text, kTransient, "SCHEME",
+                    "bdf2 or backward-euler [bdf2]"},
+    LubricateOption{"approach-velocity", &LubricateOptions::approach_velocity, Kind::number, kTransient, "V",
+                    "the separation falls at V (m/s; negative: the surfaces part)"},
+    LubricateOption{"separation-history", &LubricateOptions::separation_history, Kind::numbers, kTransient, "S1,S2,...",
+                    "the separation at the end of each step (m)"},
     LubricateOption{"output", &LubricateOptions::output, Kind::path, kOutput, "FILE.h5", "result file (required)"},
     LubricateOption{"plot", &LubricateOptions::plot, Kind::flag, kOutput, "",
                     "draw PNG figures next to the output with scripts/halfspace_plot.py (pressure and film along the "
@@ -440,6 +456,87 @@ int run_mixed(const LubricateOptions& o, const HeightMap& map, const Grid& grid,
   return code;
 }
 
+// The rigid film stepped in time: each step's fields under /steps, the
+// last step as the file's single film, the history as CSV beside it.
+int run_transient(const LubricateOptions& o, const HeightMap& map, const Grid& grid,
+                  const lubrication::LubricationProblem& problem) {
+  const lubrication::FlowConditions& conditions = problem.conditions;
+  const lubrication::TransientFilmOptions& transient = *problem.transient;
+  const auto started = std::chrono::steady_clock::now();
+  lubrication::TransientOutcome outcome;
+  lubrication::TransientStep last;
+  long long sweeps = 0, solves = 0;
+  io::write_film_history(
+      *o.output, grid, static_cast<std::size_t>(transient.steps),
+      [&](const io::FilmStepSink& sink) {
+        outcome = lubrication::lubricate_transient(grid, map.heights, conditions, transient, problem.cavitation,
+                                                   [&](const lubrication::TransientStep& step) {
+                                                     sink(step);
+                                                     sweeps += step.film.solution.iterations;
+                                                     solves += step.film.film_solves;
+                                                     last = step;
+                                                   });
+      },
+      [&](const io::Hdf5Node& root) {
+        const lubrication::LubricatedFilm& film = last.film;
+        const lubrication::FilmForces& f = film.forces;
+        lubrication::FilmSummary summary;
+        summary.model = "rigid";
+        summary.status = std::string(lubrication::to_string(outcome.status));
+        summary.message = outcome.message;
+        summary.load = f.load;
+        summary.mean_pressure = f.mean_pressure;
+        summary.separation = film.separation;
+        Eigen::Index centre = 0;
+        map.heights.maxCoeff(&centre);
+        summary.central_film_thickness = film.film[centre];
+        summary.minimum_film_thickness = f.minimum_film_thickness;
+        summary.max_pressure = film.solution.pressure.maxCoeff();
+        summary.cavitated_fraction = f.cavitated_fraction;
+        summary.viscosity = conditions.viscosity;
+        summary.iterations = sweeps;
+        summary.film_solves = solves;
+        summary.relative_residual = film.solution.relative_residual;
+        summary.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+        summary.inflow = f.inflow;
+        summary.outflow = f.outflow;
+        const lubrication::FilmShear shear = lubrication::film_shear(
+            grid, conditions, {}, problem.limits, film.film, film.solution.pressure, film.solution.fluid_fraction);
+        add_shear(summary, shear);
+        const std::vector<std::size_t> shape = io::field_shape(grid);
+        root.write_dataset("pressure", shape, std::span<const double>(film.solution.pressure.data(), grid.size()),
+                           "Pa");
+        root.write_dataset("film", shape, std::span<const double>(film.film.data(), grid.size()), "m");
+        root.write_dataset("fluid_fraction", shape,
+                           std::span<const double>(film.solution.fluid_fraction.data(), grid.size()), "");
+        io::write_film_attributes(root, summary);
+        io::write_grid_attributes(root, grid);
+        write_shear(root, shape, shear, problem.limits);
+        root.write_double_attribute("time_step", transient.time_step);
+        root.write_int64_attribute("time_steps", transient.steps);
+        root.write_string_attribute("time_scheme", lubrication::to_string(transient.scheme));
+        root.write_double_attribute("time", last.time);
+        root.write_string_attribute("source", map.source);
+        root.write_string_attribute("command_line", o.command_line);
+        root.write_string_attribute("halfspace_version", fmt::format("{} ({})", kVersion, kGitHash));
+      });
+  const bool converged = outcome.status == lubrication::FilmStatus::converged;
+  if (!converged) {
+    fmt::print(stderr, "warning: {}; the steps solved are written to {}\n", outcome.message, *o.output);
+    return kExitNotConverged;
+  }
+  if (o.quiet) return kExitOk;
+  fmt::print("halfspace {} ({}) lubricate\n", kVersion, kGitHash);
+  fmt::print("  {:<15} {}\n", "surface", *o.height_map);
+  fmt::print("  {:<15} rigid, {} steps of {:.6g} s ({})\n", "film", transient.steps, transient.time_step,
+             lubrication::to_string(transient.scheme));
+  fmt::print("  {:<15} t {:.6g} s: separation {:.6g} m, load {:.6g}\n", "last step", last.time, last.film.separation,
+             last.film.forces.load);
+  fmt::print("  {:<15} {} film solves, {} sweeps\n", "work", solves, sweeps);
+  fmt::print("  {:<15} {} and {}\n", "output", *o.output, io::history_csv_path(*o.output).string());
+  return kExitOk;
+}
+
 // --roughness: a second profile's heights added point by point.
 void add_roughness(const std::string& path, HeightMap& map) {
   const HeightMap rough = io::read_height_map(path);
@@ -495,6 +592,7 @@ int solve_film(const LubricateOptions& o) {
   problem.check_grid(grid, flags, *o.height_map);
   if (problem.kind == lubrication::FilmKind::mixed) return run_mixed(o, map, grid, problem);
   if (problem.kind == lubrication::FilmKind::elastic) return run_elastic(o, map, grid, problem);
+  if (problem.transient) return run_transient(o, map, grid, problem);
   const lubrication::FlowConditions& conditions = problem.conditions;
   const lubrication::ShearLimits& limits = problem.limits;
   const auto started = std::chrono::steady_clock::now();

@@ -24,7 +24,7 @@ _os.environ.setdefault("OMP_WAIT_POLICY", "passive")
 from . import _core  # noqa: E402
 from ._core import FileError, History, InputError, Result, Sweep  # noqa: E402
 from ._height_map import HeightMap, read_height_map  # noqa: E402
-from ._lubricate import Film, StribeckCurve, lubricate, stribeck  # noqa: E402
+from ._lubricate import Film, FilmHistory, StribeckCurve, lubricate, stribeck  # noqa: E402
 from ._solve import composite_modulus, history, read_result, solve, subsurface_stress, sweep  # noqa: E402
 from . import generate, paper  # noqa: E402
 
@@ -33,6 +33,7 @@ __version__ = _core.__version__
 __all__ = [
     "FileError",
     "Film",
+    "FilmHistory",
     "HeightMap",
     "History",
     "InputError",

@@ -209,7 +209,10 @@ def lubricate(heights: npt.NDArray[np.float64], dx: float, dy: float, viscosity:
               film_preconditioner: Optional[str], eyring_stress: Optional[float], limiting_shear_stress: Optional[float],
               limiting_shear_slope: Optional[float], mixed: bool, offset: Optional[float],
               contact_friction: Optional[float], boundary_film: Optional[float],
-              speeds: Optional[Sequence[float]], threads: Optional[int]) -> Any:
+              speeds: Optional[Sequence[float]], time_step: Optional[float], steps: Optional[int],
+              time_scheme: Optional[str], approach_velocity: Optional[float],
+              separation_history: Optional[Sequence[float]], threads: Optional[int]) -> Any:
     """The film's fields (numpy arrays) and numbers, as halfspace.Film holds them, or with speeds a list of
-    them, one per speed (python/src/lubricate.cpp)."""
+    them, one per speed, or with time_step a dict of the steps' films and the run's status
+    (python/src/lubricate.cpp)."""
 def paper_reproduce(test: int, load: float) -> dict[str, Any]: ...

@@ -165,6 +165,47 @@ class StribeckCurve:
                 f"{self.friction_coefficient.min():.4g} to {self.friction_coefficient.max():.4g}>")
 
 
+class FilmHistory:
+    """A transient rigid film (``time_step=``): the film at each step, the
+    initial (steady) state first, as ``halfspace lubricate --time-step``
+    writes them (its /steps groups and CSV history).
+
+    ``films`` (one :class:`Film` per step, each with ``step``, ``time`` (s)
+    and ``fluid_volume`` (m^3; m^2 on a profile: the fluid the unknown
+    nodes hold)); columns (numpy arrays, one value per step) ``step``,
+    ``time``, ``separation``, ``load``, ``minimum_film_thickness``,
+    ``max_pressure``, ``cavitated_fraction``, ``fluid_volume``, ``inflow``,
+    ``outflow``, ``film_solves``; ``converged``, ``status`` and ``message``
+    of the run (the first step that failed), ``steps_done``, ``time_step``,
+    ``time_scheme``."""
+
+    COLUMNS = ("step", "time", "separation", "load", "minimum_film_thickness", "max_pressure",
+               "cavitated_fraction", "fluid_volume", "inflow", "outflow", "film_solves")
+
+    def __init__(self, values: Mapping[str, Any]):
+        self.films = [Film(film) for film in values["films"]]
+        for name in self.COLUMNS:
+            setattr(self, name, np.array([getattr(film, name) for film in self.films]))
+        self.converged = bool(values["converged"])
+        self.status = values["status"]
+        self.message = values["message"]
+        self.steps_done = int(values["steps_done"])
+        self.time_step = float(values["time_step"])
+        self.time_scheme = values["time_scheme"]
+
+    def __len__(self) -> int:
+        return len(self.films)
+
+    @property
+    def table(self) -> dict:
+        """The columns by name (the CSV's header)."""
+        return {name: getattr(self, name) for name in self.COLUMNS}
+
+    def __repr__(self) -> str:
+        return (f"<halfspace.FilmHistory {self.status}: {len(self) - 1} steps of {self.time_step:.6g} s, "
+                f"separation {self.separation[0]:.6g} -> {self.separation[-1]:.6g} m>")
+
+
 def _velocity(value: Optional[Velocity], name: str) -> list:
     if value is None:
         return []
@@ -191,6 +232,15 @@ def _speeds(speeds) -> Optional[list]:
     return [float(v) for v in array]
 
 
+def _separations(history) -> Optional[list]:
+    if history is None:
+        return None
+    array = np.atleast_1d(np.asarray(history, dtype=np.float64))
+    if array.ndim != 1 or array.size == 0:
+        raise _core.InputError("separation_history must be a sequence of separations (m), one a step")
+    return [float(v) for v in array]
+
+
 # The arguments of _core.lubricate from the keywords of lubricate and
 # stribeck (one list, so that both map them alike).
 def _arguments(surface, *, viscosity: float, entrainment_velocity: Velocity,
@@ -208,6 +258,8 @@ def _arguments(surface, *, viscosity: float, entrainment_velocity: Velocity,
               limiting_shear_stress: Optional[float] = None,
               limiting_shear_slope: Optional[float] = None, mixed: bool = False, offset: Optional[float] = None,
               contact_friction: Optional[float] = None, boundary_film: Optional[float] = None,
+              time_step: Optional[float] = None, steps: Optional[int] = None, time_scheme: Optional[str] = None,
+              approach_velocity: Optional[float] = None, separation_history: Optional[Sequence[float]] = None,
               threads: Optional[int] = None, speeds=None) -> tuple:
     height_map = _surface(surface, dx, dy)
     # The rules are the library's (make_lubrication_problem); here the
@@ -230,7 +282,9 @@ def _arguments(surface, *, viscosity: float, entrainment_velocity: Velocity,
         _optional_float(eyring_stress, "eyring_stress"), _optional_float(limiting_shear_stress, "limiting_shear_stress"),
         _optional_float(limiting_shear_slope, "limiting_shear_slope"),
         bool(mixed), _optional_float(offset, "offset"), _optional_float(contact_friction, "contact_friction"),
-        _optional_float(boundary_film, "boundary_film"), _speeds(speeds), None if threads is None else int(threads))
+        _optional_float(boundary_film, "boundary_film"), _speeds(speeds), _optional_float(time_step, "time_step"),
+        None if steps is None else int(steps), time_scheme, _optional_float(approach_velocity, "approach_velocity"),
+        _separations(separation_history), None if threads is None else int(threads))
 
 
 def _called(name: str, surface, keywords: dict, speeds=None, **fixed) -> tuple:
@@ -243,7 +297,7 @@ def _called(name: str, surface, keywords: dict, speeds=None, **fixed) -> tuple:
         raise TypeError(str(error).replace("_arguments()", f"{name}()")) from None
 
 
-def lubricate(surface: Union[HeightMap, np.ndarray], **keywords: Any) -> Film:
+def lubricate(surface: Union[HeightMap, np.ndarray], **keywords: Any) -> Union[Film, FilmHistory]:
     """Solves the Reynolds film between a surface and a flat, as ``halfspace lubricate``.
 
     surface: a HeightMap, or a 1D/2D array of heights (m, ``(ny, nx)``) with
@@ -290,6 +344,15 @@ def lubricate(surface: Union[HeightMap, np.ndarray], **keywords: Any) -> Film:
         Reynolds equation sees, m; None: 1e-9); tol, max_iter (None: 1e-8,
         200 Newton steps). A rough line contact is the smooth profile's
         heights plus the roughness's (as ``--roughness`` adds them).
+    time_step: steps the rigid film in time (s; ``--time-step``): the
+        transient Reynolds equation with the squeeze term d(h theta)/dt,
+        from the steady film at separation= (t = 0), the separation moved
+        by exactly one of approach_velocity (m/s, the separation falls as
+        separation - V t; negative: the surfaces part), separation_history
+        (the separation at the end of each step, m) or force (each step's
+        separation carries it, the body's inertia neglected); steps (None
+        with a history: its length); time_scheme ("bdf2", the default, or
+        "backward-euler"). Returns a :class:`FilmHistory`.
     threads: threads of an elastic or mixed film's solve (None: the CPUs
         this process may use, as the program). Process-wide, as in
         :func:`solve`.
@@ -298,13 +361,14 @@ def lubricate(surface: Union[HeightMap, np.ndarray], **keywords: Any) -> Film:
     ``Film.converged`` and ``.message``); bad options raise InputError naming
     the keyword, its value and the rule. The GIL is released while solving.
     """
-    return Film(_core.lubricate(*_called("lubricate", surface, keywords)))
+    result = _core.lubricate(*_called("lubricate", surface, keywords))
+    return FilmHistory(result) if keywords.get("time_step") is not None else Film(result)
 
 
 # lubricate's keywords are _arguments' (one list): help() and inspect show them.
 lubricate.__signature__ = inspect.signature(_arguments).replace(
     parameters=[p for p in inspect.signature(_arguments).parameters.values() if p.name != "speeds"],
-    return_annotation=Film)
+    return_annotation=Union[Film, FilmHistory])
 
 
 def stribeck(surface: Union[HeightMap, np.ndarray], speeds: Sequence[float], **keywords: Any) -> StribeckCurve:

@@ -24,6 +24,7 @@
 #include "halfspace/lubrication/load_control.hpp"
 #include "halfspace/lubrication/lubrication_problem.hpp"
 #include "halfspace/lubrication/mixed_film.hpp"
+#include "halfspace/lubrication/transient_film.hpp"
 #include "halfspace/material.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
 #include "halfspace/threads.hpp"
@@ -63,16 +64,10 @@ void put_fields(nb::dict& out, const Grid& grid, Eigen::ArrayXd pressure, Eigen:
   out["limited_fraction"] = shear.limited_fraction;
 }
 
-nb::dict solve_rigid(const Grid& grid, const Eigen::ArrayXd& heights, const LubricationProblem& problem) {
+// A rigid film's numbers and fields, as the program's summary.
+nb::dict rigid_dict(const Grid& grid, const Eigen::ArrayXd& heights, const LubricationProblem& problem,
+                    LubricatedFilm film, double seconds) {
   const FlowConditions& conditions = problem.conditions;
-  const auto started = std::chrono::steady_clock::now();
-  LubricatedFilm film = with_keywords([&] {
-    nb::gil_scoped_release release;
-    return problem.load_control
-               ? lubricate_at_load(grid, heights, conditions, *problem.load_control, problem.cavitation)
-               : lubricate_at_separation(grid, heights, conditions, *problem.separation, problem.cavitation);
-  });
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   const FilmShear shear = film_shear(grid, conditions, LubricantLaws{}, problem.limits, film.film,
                                      film.solution.pressure, film.solution.fluid_fraction);
   const FilmForces& f = film.forces;
@@ -100,6 +95,54 @@ nb::dict solve_rigid(const Grid& grid, const Eigen::ArrayXd& heights, const Lubr
   out["load_error"] = nb::none();
   put_fields(out, grid, std::move(film.solution.pressure), std::move(film.film),
              std::move(film.solution.fluid_fraction), shear);
+  return out;
+}
+
+nb::dict solve_rigid(const Grid& grid, const Eigen::ArrayXd& heights, const LubricationProblem& problem) {
+  const auto started = std::chrono::steady_clock::now();
+  LubricatedFilm film = with_keywords([&] {
+    nb::gil_scoped_release release;
+    return problem.load_control
+               ? lubricate_at_load(grid, heights, problem.conditions, *problem.load_control, problem.cavitation)
+               : lubricate_at_separation(grid, heights, problem.conditions, *problem.separation, problem.cavitation);
+  });
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  return rigid_dict(grid, heights, problem, std::move(film), seconds);
+}
+
+// The transient rigid film (time_step=): every step's film (the initial
+// state first) with its step, time and fluid volume, and how the run ended,
+// as `halfspace lubricate --time-step` writes them.
+nb::dict solve_transient(const Grid& grid, const Eigen::ArrayXd& heights, const LubricationProblem& problem) {
+  std::vector<TransientStep> steps;
+  std::vector<double> seconds;
+  auto started = std::chrono::steady_clock::now();
+  const TransientOutcome outcome = with_keywords([&] {
+    nb::gil_scoped_release release;
+    return lubricate_transient(grid, heights, problem.conditions, *problem.transient, problem.cavitation,
+                               [&](const TransientStep& step) {
+                                 const auto now = std::chrono::steady_clock::now();
+                                 seconds.push_back(std::chrono::duration<double>(now - started).count());
+                                 started = now;
+                                 steps.push_back(step);
+                               });
+  });
+  nb::list films;
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    nb::dict film = rigid_dict(grid, heights, problem, std::move(steps[k].film), seconds[k]);
+    film["step"] = steps[k].step;
+    film["time"] = steps[k].time;
+    film["fluid_volume"] = steps[k].fluid_volume;
+    films.append(film);
+  }
+  nb::dict out;
+  out["films"] = films;
+  out["status"] = std::string(to_string(outcome.status));
+  out["message"] = outcome.message;
+  out["converged"] = outcome.status == FilmStatus::converged;
+  out["steps_done"] = outcome.steps_done;
+  out["time_step"] = problem.transient->time_step;
+  out["time_scheme"] = std::string(to_string(problem.transient->scheme));
   return out;
 }
 
@@ -245,6 +288,7 @@ nb::object lubricate(const nb::object& heights_object, double dx, double dy, con
   const Grid grid = heights.ndim() == 1 ? Grid::line(heights.shape(0), dx, problem.boundary)
                                         : Grid::plane(heights.shape(1), heights.shape(0), dx, dy, problem.boundary);
   problem.check_grid(grid, keywords);
+  if (problem.transient) return solve_transient(grid, z, problem);
   if (problem.kind == FilmKind::rigid) return solve_rigid(grid, z, problem);
   // The elastic films' FFT plans take the threads in force (process-wide; a
   // solve(threads=) before may have changed them): the program's unless
@@ -275,7 +319,9 @@ void bind_lubricate(nb::module_& module) {
          std::optional<std::string> film_preconditioner, std::optional<double> eyring_stress,
          std::optional<double> limiting_shear_stress, std::optional<double> limiting_shear_slope, bool mixed,
          std::optional<double> offset, std::optional<double> contact_friction, std::optional<double> boundary_film,
-         std::optional<std::vector<double>> speeds, std::optional<int> threads) {
+         std::optional<std::vector<double>> speeds, std::optional<double> time_step, std::optional<long long> steps,
+         std::optional<std::string> time_scheme, std::optional<double> approach_velocity,
+         std::optional<std::vector<double>> separation_history, std::optional<int> threads) {
         LubricationProblemOptions o;
         o.viscosity = viscosity;
         o.entrainment_velocity = entrainment;
@@ -320,6 +366,11 @@ void bind_lubricate(nb::module_& module) {
         o.contact_friction = contact_friction;
         o.boundary_film = boundary_film;
         o.speeds = std::move(speeds);
+        o.time_step = time_step;
+        o.steps = steps;
+        o.time_scheme = std::move(time_scheme);
+        o.approach_velocity = approach_velocity;
+        o.separation_history = std::move(separation_history);
         return lubricate(heights, dx, dy, o, threads);
       },
       nb::arg("heights"), nb::arg("dx"), nb::arg("dy"), nb::arg("viscosity"), nb::arg("entrainment_velocity"),
@@ -332,7 +383,8 @@ void bind_lubricate(nb::module_& module) {
       nb::arg("compressibility").none(), nb::arg("couette_scheme").none(), nb::arg("film_preconditioner").none(),
       nb::arg("eyring_stress").none(), nb::arg("limiting_shear_stress").none(), nb::arg("limiting_shear_slope").none(),
       nb::arg("mixed"), nb::arg("offset").none(), nb::arg("contact_friction").none(), nb::arg("boundary_film").none(),
-      nb::arg("speeds").none(), nb::arg("threads").none());
+      nb::arg("speeds").none(), nb::arg("time_step").none(), nb::arg("steps").none(), nb::arg("time_scheme").none(),
+      nb::arg("approach_velocity").none(), nb::arg("separation_history").none(), nb::arg("threads").none());
 }
 
 }  // namespace halfspace::python

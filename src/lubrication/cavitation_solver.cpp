@@ -6,7 +6,8 @@
 // otherwise cavitated (p = 0, theta = R / (B h) in [0, 1), since R >= 0).
 // Over-relaxation acts on the pressure of full nodes and is projected onto
 // p >= 0. Sweeping along the entrainment makes the cavitated zone's
-// transport exact in one sweep. Convergence is measured apart from the
+// transport exact in one sweep. The transient term c h theta - s joins the
+// Couette diagonal (B + c) and the right-hand side (+ s) of the same switch. Convergence is measured apart from the
 // sweeps, as the mass balance of every node after a sweep.
 #include "halfspace/lubrication/cavitation_solver.hpp"
 
@@ -79,7 +80,7 @@ void sweep(const ReynoldsStencil& s, double omega, Eigen::ArrayXd& p, Eigen::Arr
   const bool forward_x = s.conditions().entrainment_velocity[0] >= 0.0;
   const bool forward_y = s.conditions().entrainment_velocity[1] >= 0.0;
   const Eigen::ArrayXd& h = s.film();
-  const double b = s.couette_x() + s.couette_y();
+  const double b = s.couette_x() + s.couette_y() + s.time_rate();
   for (std::size_t jj = 0; jj < ny; ++jj) {
     const std::size_t j = forward_y ? jj : ny - 1 - jj;
     for (std::size_t ii = 0; ii < nx; ++ii) {
@@ -102,6 +103,7 @@ void sweep(const ReynoldsStencil& s, double omega, Eigen::ArrayXd& p, Eigen::Arr
       const std::size_t up_y = s.upstream_y(nb);
       if (up_x != Neighbours::kNone) r += s.couette_x() * h[up_x] * theta[up_x];
       if (up_y != Neighbours::kNone) r += s.couette_y() * h[up_y] * theta[up_y];
+      r += s.stored(k);  // the transient term's previous steps (0 when steady)
       const double couette = b * h[k];
       if (r >= couette) {
         const double full = (r - couette) / a;

@@ -17,6 +17,7 @@
 namespace halfspace::lubrication {
 
 FilmSolution solve_film_lemke(const ReynoldsStencil& stencil) {
+  if (stencil.time_rate() > 0.0) throw InputError("the dense film path solves the steady film only (no time term)");
   const std::size_t n = stencil.size();
   std::vector<Eigen::Index> unknown(n, -1);
   Eigen::Index count = 0;

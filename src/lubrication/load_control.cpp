@@ -13,6 +13,7 @@
 
 #include "halfspace/error.hpp"
 #include "halfspace/lubrication/film.hpp"
+#include "load_search.hpp"
 
 namespace halfspace::lubrication {
 
@@ -63,7 +64,16 @@ LubricatedFilm lubricate_at_load(const Grid& grid, const Eigen::ArrayXd& heights
   solver.validate();
   load.validate();
   const double range = heights.size() > 0 ? heights.maxCoeff() - heights.minCoeff() : 0.0;
-  double separation = load.initial_separation > 0.0 ? load.initial_separation : (range > 0.0 ? 0.1 * range : 1e-6);
+  const double separation =
+      load.initial_separation > 0.0 ? load.initial_separation : (range > 0.0 ? 0.1 * range : 1e-6);
+  return search_separation_for_load(load, separation, [&](double s, const FilmSolution* start) {
+    return solve_at(grid, heights, conditions, s, solver, start);
+  });
+}
+
+LubricatedFilm search_separation_for_load(const LoadControlOptions& load, double initial_separation,
+                                          const FilmAtSeparation& solve) {
+  double separation = initial_separation;
   int solves = 0;
   LubricatedFilm current;
   // log(load / target): positive while the film carries too much.
@@ -72,7 +82,7 @@ LubricatedFilm lubricate_at_load(const Grid& grid, const Eigen::ArrayXd& heights
   };
   const auto evaluate = [&](double s) {
     const FilmSolution* start = solves > 0 ? &current.solution : nullptr;
-    LubricatedFilm next = solve_at(grid, heights, conditions, s, solver, start);
+    LubricatedFilm next = solve(s, start);
     ++solves;
     current = std::move(next);
     current.film_solves = solves;

@@ -23,6 +23,8 @@ namespace {
 // The Newton steps an elastic or mixed film may be given: the range
 // `halfspace lubricate` has always held (Python now shares it).
 constexpr long long kMaxNewtonSteps = 100000;
+// The time steps of a transient film: each is at least one film solve.
+constexpr long long kMaxTimeSteps = 10'000'000;
 
 class Rules : public halfspace::detail::Checks {
  public:
@@ -40,6 +42,7 @@ class Rules : public halfspace::detail::Checks {
   }
 
   void control() const;
+  std::optional<TransientFilmOptions> transient() const;
   FilmKind kind(bool elastic, bool coated) const;
   FlowConditions conditions() const;
   LubricantLaws laws() const;
@@ -53,7 +56,13 @@ class Rules : public halfspace::detail::Checks {
 // the mixed film's options only with it.
 void Rules::control() const {
   const int controls = o_.separation.has_value() + o_.force.has_value() + o_.offset.has_value();
-  if (controls != 1) {
+  if (o_.time_step && !o_.mixed) {
+    // Its driver (the force among them) is checked by transient().
+    if (!o_.separation) {
+      throw InputError(fmt::format("a transient film ({}) starts at a separation: pass {}", name("time_step"),
+                                   s_.describe("separation", "M")));
+    }
+  } else if (controls != 1) {
     throw InputError(
         o_.mixed
             ? fmt::format("give exactly one of {} and {}", s_.describe("force", "N"), s_.describe("offset", "M"))
@@ -66,10 +75,64 @@ void Rules::control() const {
   }
 }
 
+// The transient rigid film: the time step and one driver of the separation
+// (the approach velocity, the history or the force), the steps unless the
+// history counts them.
+std::optional<TransientFilmOptions> Rules::transient() const {
+  const std::vector<std::string> present = given({{"steps", o_.steps.has_value()},
+                                                  {"time_scheme", o_.time_scheme.has_value()},
+                                                  {"approach_velocity", o_.approach_velocity.has_value()},
+                                                  {"separation_history", o_.separation_history.has_value()}});
+  if (!o_.time_step) {
+    if (!present.empty()) {
+      throw InputError(fmt::format("{} belong to a transient film: add {}", fmt::join(present, ", "),
+                                   s_.describe("time_step", "DT")));
+    }
+    return std::nullopt;
+  }
+  const int drivers = o_.approach_velocity.has_value() + o_.separation_history.has_value() + o_.force.has_value();
+  if (drivers != 1) {
+    throw InputError(fmt::format("a transient film takes exactly one of {}, {} and {}",
+                                 s_.describe("approach_velocity", "V"), s_.describe("separation_history", "S1,S2,..."),
+                                 s_.describe("force", "N")));
+  }
+  TransientFilmOptions t;
+  t.time_step = *o_.time_step;
+  t.initial_separation = *o_.separation;
+  if (o_.time_scheme) t.scheme = parsed("time_scheme", *o_.time_scheme, parse_time_scheme);
+  t.approach_velocity = o_.approach_velocity;
+  t.separation_history = o_.separation_history;
+  if (o_.separation_history) {
+    const auto count = static_cast<long long>(o_.separation_history->size());
+    if (o_.steps && *o_.steps != count) {
+      throw InputError(fmt::format("{} has {} separations but {}: give one separation a step (or drop {})",
+                                   name("separation_history"), count,
+                                   s_.describe("steps", fmt::format("{}", *o_.steps)), name("steps")));
+    }
+    t.steps = static_cast<int>(std::min<long long>(count, INT_MAX));
+  } else {
+    if (!o_.steps) throw InputError(fmt::format("a transient film needs {}", s_.describe("steps", "N")));
+    if (*o_.steps < 1 || *o_.steps > kMaxTimeSteps) {
+      throw OptionError("steps", fmt::format("{}", *o_.steps),
+                        fmt::format("is invalid: allowed range is 1 to {}", kMaxTimeSteps));
+    }
+    t.steps = static_cast<int>(*o_.steps);
+  }
+  if (o_.force) t.load = LoadControlOptions{.load = *o_.force};
+  t.validate();
+  return t;
+}
+
 // The film the body makes, and the options only an elastic film takes.
 FilmKind Rules::kind(bool elastic, bool coated) const {
   const std::string bodies =
       fmt::format("{} (or {})", name("e_star"), fmt::join(names({"E1", "nu1", "E2", "nu2"}), ", "));
+  if (o_.time_step && (elastic || o_.mixed)) {
+    throw InputError(
+        fmt::format("{} steps a rigid film only: the elastic and mixed films are steady (drop {}, "
+                    "or {} and the body's moduli)",
+                    name("time_step"), name("time_step"), name("mixed")));
+  }
   if (o_.mixed) {
     if (!elastic) throw InputError(fmt::format("{} needs an elastic body: give {}", name("mixed"), bodies));
     if (coated) {
@@ -175,7 +238,8 @@ int Rules::max_iterations(bool newton) const {
 // The option of LubricationProblemOptions that sets each member a film's
 // OptionError names, and the component of a velocity.
 std::pair<std::string_view, std::string_view> problem_name(std::string_view member) {
-  static constexpr std::array<std::pair<std::string_view, std::string_view>, 6> kMembers{{
+  static constexpr std::array<std::pair<std::string_view, std::string_view>, 7> kMembers{{
+      {"initial_separation", "separation"},
       {"boundary.x_low_pressure", "inlet_pressure"},
       {"boundary.x_high_pressure", "outlet_pressure"},
       {"boundary.y_low_pressure", "side_pressure"},
@@ -213,6 +277,7 @@ LubricationProblem make_lubrication_problem(const LubricationProblemOptions& opt
       problem.coating = body->coating;
     }
     problem.kind = rules.kind(body.has_value(), problem.coating.has_value());
+    problem.transient = rules.transient();
     problem.limits = {o.eyring_stress.value_or(0.0), o.limiting_shear_stress.value_or(0.0),
                       o.limiting_shear_slope.value_or(0.0)};
     problem.limits.validate();
@@ -221,7 +286,7 @@ LubricationProblem make_lubrication_problem(const LubricationProblemOptions& opt
       if (o.max_iterations) problem.cavitation.max_iterations = rules.max_iterations(false);
       problem.cavitation.validate();
       problem.separation = o.separation;
-      if (o.force) {
+      if (o.force && !problem.transient) {
         problem.load_control = LoadControlOptions{.load = *o.force};
         problem.load_control->validate();
       }

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "halfspace/error.hpp"
 
@@ -119,6 +120,7 @@ double ReynoldsStencil::mass_balance(std::size_t k, const Eigen::ArrayXd& pressu
   const std::size_t up_y = upstream_y(nb);
   if (up_x != Neighbours::kNone) couette -= couette_x_ * film_[up_x] * fluid_fraction[up_x];
   if (up_y != Neighbours::kNone) couette -= couette_y_ * film_[up_y] * fluid_fraction[up_y];
+  if (time_rate_ > 0.0) couette += time_rate_ * film_[k] * fluid_fraction[k] - stored_[k];
   return poiseuille + couette;
 }
 
@@ -153,8 +155,23 @@ double ReynoldsStencil::balance_scale(const Eigen::ArrayXd& pressure) const {
     if (nb.south != Neighbours::kNone) conductance += north_[nb.south];
     poiseuille = std::max(poiseuille, conductance * std::abs(pressure[k]));
   }
-  const double scale = couette > 0.0 ? couette : poiseuille;
+  // The time term's storage rate * h joins the Couette scale (the transient
+  // balance is a difference of such terms); the steady scale is unchanged.
+  const double storage = time_rate_ * film_.maxCoeff();
+  const double scale = storage > 0.0 ? std::max(couette + storage, poiseuille) : couette > 0.0 ? couette : poiseuille;
   return scale > 0.0 ? scale : std::numeric_limits<double>::min();
+}
+
+void ReynoldsStencil::set_time_term(double rate, Eigen::ArrayXd stored) {
+  if (!(std::isfinite(rate) && rate >= 0.0)) {
+    throw InputError(fmt::format("time term rate {} 1/s is invalid: it must be >= 0 and finite", rate));
+  }
+  if (static_cast<std::size_t>(stored.size()) != size() || !stored.allFinite() || (stored < 0.0).any()) {
+    throw InputError(fmt::format("time term: the stored fluid needs {} finite values >= 0 (one a node), got {}", size(),
+                                 stored.size()));
+  }
+  time_rate_ = rate;
+  stored_ = std::move(stored);
 }
 
 }  // namespace halfspace::lubrication

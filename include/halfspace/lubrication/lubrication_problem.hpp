@@ -24,6 +24,7 @@
 #include "halfspace/lubrication/load_control.hpp"
 #include "halfspace/lubrication/lubricant.hpp"
 #include "halfspace/lubrication/mixed_film.hpp"
+#include "halfspace/lubrication/transient_film.hpp"
 #include "halfspace/problem.hpp"
 
 namespace halfspace::lubrication {
@@ -62,6 +63,15 @@ struct LubricationProblemOptions : BodyOptions {
   // film the Reynolds equation sees, and a Stribeck sweep's speeds (m/s).
   std::optional<double> contact_friction, boundary_film;
   std::optional<std::vector<double>> speeds;
+  // The transient rigid film (transient_film.hpp): the time step (s), the
+  // steps, the scheme ("bdf2" or "backward-euler"), and what moves the
+  // separation from `separation` at t = 0: an approach velocity (m/s), the
+  // separations at the ends of the steps (m), or `force`.
+  std::optional<double> time_step;
+  std::optional<long long> steps;
+  std::optional<std::string> time_scheme;
+  std::optional<double> approach_velocity;
+  std::optional<std::vector<double>> separation_history;
 };
 
 enum class FilmKind { rigid, elastic, mixed };
@@ -83,6 +93,9 @@ struct LubricationProblem {
   ElasticFilmOptions elastic;                 // FilmKind::elastic
   MixedFilmOptions mixed;                     // FilmKind::mixed (load 0: offset control)
   std::optional<std::vector<double>> speeds;  // the mixed film's Stribeck sweep
+  // The rigid film stepped in time (the separation above is its initial
+  // one; its load control, if any, is transient->load).
+  std::optional<TransientFilmOptions> transient;
 
   // The grid's rules: the flow's (FlowConditions::validate(grid)) and the
   // mixed film's (require_mixed_film_fits); `surface` names the heights in

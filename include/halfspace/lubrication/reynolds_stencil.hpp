@@ -12,6 +12,8 @@
 // with face conductances a = h_f^3 / (12 eta d^2) (h_f the mean of the two
 // nodes' films), A_P their sum, the Couette flux upwinded (b = |U_x| / dx,
 // |U_y| / dy from the node upstream; B_P = |U_x| / dx + |U_y| / dy).
+// The transient equation adds d(h theta)/dt to the balance as
+// c h_P theta_P - s_P (set_time_term; transient_film.hpp).
 #pragma once
 
 #include <Eigen/Core>
@@ -76,6 +78,15 @@ class ReynoldsStencil {
   // Poiseuille outflow A_P p_P of `pressure`.
   double balance_scale(const Eigen::ArrayXd& pressure) const;
 
+  // The time term of the transient equation: d(h theta)/dt at node k as
+  // rate * h_k theta_k - stored_k (1/s; m/s), a backward difference whose
+  // previous steps make `stored` (transient_film.hpp). rate 0 (the default)
+  // is the steady equation. Throws InputError unless rate >= 0 and finite
+  // and `stored` is finite, >= 0 and one value a node.
+  void set_time_term(double rate, Eigen::ArrayXd stored);
+  double time_rate() const { return time_rate_; }
+  double stored(std::size_t k) const { return time_rate_ > 0.0 ? stored_[k] : 0.0; }
+
  private:
   Grid grid_;
   Eigen::ArrayXd film_;
@@ -86,6 +97,8 @@ class ReynoldsStencil {
   Eigen::ArrayXd north_;
   double couette_x_ = 0.0;
   double couette_y_ = 0.0;
+  double time_rate_ = 0.0;
+  Eigen::ArrayXd stored_;
 };
 
 }  // namespace halfspace::lubrication
