@@ -44,9 +44,10 @@ int main(int argc, char** argv) {
   halfspace::io::install_output_cleanup_on_signals();
   // Measured plans keep their wisdom in the user's cache (docs/usage.md#fftw-wisdom).
   halfspace::io::use_fft_wisdom_file();
-  CLI::App app{"halfspace: elastic contact of rough surfaces: normal, adhesive and frictional contact, subsurface stresses, "
-               "lubricated (Reynolds, EHL and mixed) films",
-               "halfspace"};
+  CLI::App app{
+      "halfspace: elastic contact of rough surfaces: normal, adhesive and frictional contact, subsurface stresses, "
+      "lubricated (Reynolds, EHL and mixed) films",
+      "halfspace"};
   app.set_version_flag("--version", fmt::format("halfspace {} ({})", halfspace::kVersion, halfspace::kGitHash));
   app.footer("Exit codes: 0 converged, 1 bad input or file error, 2 solved but not converged, 3 --plot failed.");
   app.require_subcommand(0, 1);

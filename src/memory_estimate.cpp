@@ -2,7 +2,6 @@
 // (docs/performance.md measures the same runs: 70-86 B per cell for periodic
 // 2D solves, 100-120 for free ones), and the memory the machine has left.
 #include "halfspace/memory_estimate.hpp"
-#include "halfspace/io/result_writer.hpp"
 
 #include <fmt/format.h>
 
@@ -13,6 +12,8 @@
 #include <sstream>
 #include <string_view>
 #include <vector>
+
+#include "halfspace/io/result_writer.hpp"
 
 namespace halfspace {
 namespace {
