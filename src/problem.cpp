@@ -48,6 +48,7 @@ constexpr std::array kNames{
     ProblemOptionName{"tangential_max_iter", &P::tangential_max_iter},
     ProblemOptionName{"tangential_release_period", &P::tangential_release_period},
     ProblemOptionName{"tangential_active_set", &P::tangential_active_set},
+    ProblemOptionName{"tangential_coarse_start", &P::tangential_coarse_start},
     ProblemOptionName{"coupling", &P::coupling},
     ProblemOptionName{"normal_load_steps", &P::normal_load_steps},
     ProblemOptionName{"solver", &P::solver},

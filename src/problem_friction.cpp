@@ -36,8 +36,9 @@ std::string_view friction_name(std::string_view member, const solvers::FrictionO
 // FrictionOptions::validate(normal), named by the problem's options.
 std::optional<solvers::FrictionOptions> Rules::friction(const solvers::SolverOptions& normal, std::size_t loads) const {
   const Presence tangential = presence({"tangential_force", "tangential_displacement", "sliding"});
-  const Presence settings = presence({"tangential_tol", "tangential_max_iter", "tangential_release_period",
-                                      "tangential_active_set", "coupling", "normal_load_steps"});
+  const Presence settings =
+      presence({"tangential_tol", "tangential_max_iter", "tangential_release_period", "tangential_active_set",
+                "tangential_coarse_start", "coupling", "normal_load_steps"});
   const std::string mu = o_.friction ? describe("friction", *o_.friction) : std::string();
   if (!o_.friction) {
     for (const Presence& options : {tangential, settings}) {
@@ -94,6 +95,13 @@ std::optional<solvers::FrictionOptions> Rules::friction(const solvers::SolverOpt
   if (o_.tangential_release_period) friction.release_period = clamped(*o_.tangential_release_period);
   if (o_.tangential_active_set) friction.active_set_updates = clamped(*o_.tangential_active_set);
   if (o_.normal_load_steps) friction.normal_load_steps = clamped(*o_.normal_load_steps);
+  if (o_.tangential_coarse_start) {
+    if (*o_.tangential_coarse_start != "on" && *o_.tangential_coarse_start != "off") {
+      throw OptionError("tangential_coarse_start", *o_.tangential_coarse_start,
+                        "is invalid: allowed values are on and off");
+    }
+    friction.coarse_start = *o_.tangential_coarse_start == "on";
+  }
   if (o_.coupling) {
     if (*o_.coupling != "on" && *o_.coupling != "off") {
       throw OptionError("coupling", *o_.coupling, "is invalid: allowed values are on and off");

@@ -169,6 +169,7 @@ TEST(ProblemTest, FrictionIsMadeFromItsOptions) {
   options.tangential_tol = 1e-8;
   options.tangential_max_iter = 50;
   options.tangential_release_period = 3;
+  options.tangential_coarse_start = "on";
   options.coupling = "off";
   options.normal_load_steps = 3;
   const Problem problem = make_problem(options);
@@ -182,6 +183,7 @@ TEST(ProblemTest, FrictionIsMadeFromItsOptions) {
   EXPECT_EQ(problem.friction->max_iterations, 50);
   EXPECT_EQ(problem.friction->release_period, 3);
   EXPECT_EQ(problem.friction->tangential_options().release_period, 3);
+  EXPECT_TRUE(problem.friction->tangential_options().coarse_start);
   EXPECT_FALSE(problem.friction->coupling);
   EXPECT_EQ(problem.friction->normal_load_steps, 3);
   EXPECT_TRUE(problem.pair->similar());
@@ -235,6 +237,11 @@ TEST(ProblemTest, FrictionRulesNameTheOption) {
   options.tangential_release_period = 0;
   EXPECT_EQ(refused(options), "--tangential_release_period 0 is invalid: must be at least 1");
   EXPECT_EQ(refusal([&] { make_problem(options); }), "tangential_release_period=0 is invalid: must be at least 1");
+  options = friction_problem();
+  options.tangential_coarse_start = "maybe";
+  EXPECT_EQ(refused(options), "--tangential_coarse_start maybe is invalid: allowed values are on and off");
+  options = friction_problem();
+  EXPECT_FALSE(make_problem(options).friction->tangential_options().coarse_start);
   options = friction_problem();
   options.friction = -0.1;
   EXPECT_TRUE(starts_with(refused(options), "--friction -0.1 is invalid: the friction coefficient mu must be finite"));

@@ -96,8 +96,8 @@ struct ProblemOptions : BodyOptions {
   // exactly one tangential load: steps (x, y) of force (N, N/m in 1D) or of
   // tangential displacement (m), more than one a history applied in order,
   // or a sliding direction (x, y). The tangential solver's tolerance,
-  // iteration limit and release period; dissimilar bodies: coupling "on" or "off" and the
-  // normal load's increments.
+  // iteration limit, release period, active-set updates and coarse start; dissimilar bodies: coupling "on" or "off" and
+  // the normal load's increments.
   std::optional<double> friction;
   std::optional<std::vector<std::array<double, 2>>> tangential_force;
   std::optional<std::vector<std::array<double, 2>>> tangential_displacement;
@@ -106,6 +106,7 @@ struct ProblemOptions : BodyOptions {
   std::optional<long long> tangential_max_iter;
   std::optional<long long> tangential_release_period;  // TangentialOptions::release_period
   std::optional<long long> tangential_active_set;      // TangentialOptions::active_set_updates
+  std::optional<std::string> tangential_coarse_start;  // "on" or "off" (TangentialOptions::coarse_start)
   std::optional<std::string> coupling;
   std::optional<long long> normal_load_steps;
   // The solver (solver_options.hpp) and the threads.

@@ -122,7 +122,7 @@ def solve(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
           tangential_displacement: Optional[Union[float, Sequence[float]]] = None,
           sliding: Optional[Sequence[float]] = None, tangential_tol: Optional[float] = None,
           tangential_max_iter: Optional[int] = None, tangential_release_period: Optional[int] = None,
-          tangential_active_set: Optional[int] = None,
+          tangential_active_set: Optional[int] = None, tangential_coarse_start: Optional[bool] = None,
           coupling: Optional[bool] = None, normal_load_steps: Optional[int] = None,
           active_set: Optional[Union[bool, str]] = None,
           precision: Optional[str] = None) -> _core.Result:
@@ -193,7 +193,10 @@ def solve(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
         iterations (``--tangential-release-period``; None: 5),
         tangential_active_set N runs at most N active-set (semi-smooth
         Newton) updates of the stick/slip sets before the conjugate
-        gradients (``--tangential-active-set``; None: 0, none). Dissimilar bodies: coupling
+        gradients (``--tangential-active-set``; None: 0, none),
+        tangential_coarse_start True solves each step first on grids of
+        twice, four times, ... the spacing and starts from the prolonged
+        traction (``--tangential-coarse-start on``; None: off). Dissimilar bodies: coupling
         False ignores the normal-tangential coupling (``--no-coupling``: the
         frictionless pressure; None: coupled), normal_load_steps N applies
         the normal load in N increments before the tangential steps
@@ -207,7 +210,8 @@ def solve(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
     """
     friction_keywords = _friction_keywords(friction, tangential_force, tangential_displacement, sliding,
                                            tangential_tol, tangential_max_iter, tangential_release_period,
-                                           tangential_active_set, coupling, normal_load_steps, plural=False)
+                                           tangential_active_set, tangential_coarse_start, coupling,
+                                           normal_load_steps, plural=False)
     if friction_keywords:
         if initial_pressure is not None:
             raise _core.InputError("initial_pressure cannot be combined with friction")
@@ -273,16 +277,19 @@ def _pair(value, name: str, plural: bool):
 
 
 def _friction_keywords(friction, tangential_force, tangential_displacement, sliding, tangential_tol,
-                       tangential_max_iter, tangential_release_period, tangential_active_set, coupling,
-                       normal_load_steps, plural: bool) -> dict:
+                       tangential_max_iter, tangential_release_period, tangential_active_set,
+                       tangential_coarse_start, coupling, normal_load_steps, plural: bool) -> dict:
     """The friction keywords that were given, a tangential load as steps [x, y], a sliding direction as a
-    list and coupling as "on" or "off"; _core's make_problem (halfspace/problem.hpp) holds their rules."""
-    if coupling is not None and not isinstance(coupling, bool):
-        raise _core.InputError(f"coupling={coupling!r} is invalid: give True or False")
+    list, tangential_coarse_start and coupling as "on" or "off"; _core's make_problem (halfspace/problem.hpp)
+    holds their rules."""
+    switches = {"tangential_coarse_start": tangential_coarse_start, "coupling": coupling}
+    for name, value in switches.items():
+        if value is not None and not isinstance(value, bool):
+            raise _core.InputError(f"{name}={value!r} is invalid: give True or False")
     keywords = {"friction": friction, "tangential_tol": tangential_tol, "tangential_max_iter": tangential_max_iter,
                 "tangential_release_period": tangential_release_period,
                 "tangential_active_set": tangential_active_set,
-                "coupling": None if coupling is None else ("on" if coupling else "off"),
+                **{name: "on" if value else "off" for name, value in switches.items() if value is not None},
                 "normal_load_steps": normal_load_steps}
     for name, value in (("tangential_force", tangential_force), ("tangential_displacement", tangential_displacement)):
         if value is not None:
@@ -315,7 +322,7 @@ def history(surface: Union[HeightMap, np.ndarray], *, friction: float, dx: Optio
             tangential_displacement: Optional[Sequence[Union[float, Sequence[float]]]] = None,
             tangential_tol: Optional[float] = None, tangential_max_iter: Optional[int] = None,
             tangential_release_period: Optional[int] = None, tangential_active_set: Optional[int] = None,
-            coupling: Optional[bool] = None, normal_load_steps: Optional[int] = None,
+            tangential_coarse_start: Optional[bool] = None, coupling: Optional[bool] = None, normal_load_steps: Optional[int] = None,
             solver: Optional[str] = None, tol: float = 1e-10,
             max_iter: Optional[int] = None, threads: Optional[int] = None,
             progress: Optional[ProgressCallback] = None, fft_planning: str = "measure",
@@ -336,7 +343,7 @@ def history(surface: Union[HeightMap, np.ndarray], *, friction: float, dx: Optio
     history (see ``.converged``)."""
     friction_keywords = _friction_keywords(friction, tangential_force, tangential_displacement, None, tangential_tol,
                                            tangential_max_iter, tangential_release_period, tangential_active_set,
-                                           coupling, normal_load_steps, plural=True)
+                                           tangential_coarse_start, coupling, normal_load_steps, plural=True)
     return _friction("history", surface, dx, dy, e_star, E1, nu1, E2, nu2, boundary, force, mean_pressure, approach,
                      solver, tol, max_iter, threads, progress, fft_planning, deflation_block,
                      _laws(hardness, None, None, None, None, None, None), coating, friction_keywords)

@@ -400,6 +400,7 @@ void bind_results(nb::module_& module) {
             out["message"] = t->message;
             out["iterations"] = t->iterations;
             out["residual"] = t->residual;
+            out["coarse_levels"] = t->coarse.levels;
             out["step"] = r.tangential_step;
             out["dundurs_beta"] = t->dundurs_beta;
             out["coupled"] = t->coupled;
@@ -409,7 +410,7 @@ void bind_results(nb::module_& module) {
           "Friction: the tangential step's record: friction_coefficient, tangential_force (x, y) (N, N/m in 1D), "
           "tangential_approach (x, y) (m), stick_fraction and slip_fraction (of the contact cells), "
           "dissipated_energy (J, J/m in 1D; in this step), gross_sliding, converged, status, message, iterations, "
-          "residual, step; None without friction.")
+          "residual, coarse_levels (coarser grids that started the step), step; None without friction.")
       .def_prop_ro("iterations", [](const Result& r) { return r.result().iterations; })
       .def_prop_ro("residual", [](const Result& r) { return r.result().residual; })
       .def_prop_ro("tolerance", [](const Result& r) { return r.result().tolerance; })

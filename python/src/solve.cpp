@@ -227,7 +227,7 @@ Sweep sweep(const nb::object& heights, double dx, double dy, const std::string& 
 // `problem_keywords` as for solve, with friction's (problem.hpp: friction,
 // tangential_force or tangential_displacement as steps (x, y), or sliding,
 // tangential_tol, tangential_max_iter, tangential_release_period,
-// tangential_active_set);
+// tangential_active_set, tangential_coarse_start);
 // make_problem holds their rules.
 History friction(const nb::object& heights, double dx, double dy, const std::string& boundary,
                  const nb::dict& problem_keywords, nb::object progress, const std::string& command_line,

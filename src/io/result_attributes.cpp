@@ -50,7 +50,7 @@ using TangentialNumber = double (*)(const TangentialResult&);
 using TangentialInteger = std::int64_t (*)(const TangentialResult&);
 using TangentialText = std::string (*)(const TangentialResult&);
 
-const std::array<TangentialAttribute, 17> kTangentialAttributes{{
+const std::array<TangentialAttribute, 18> kTangentialAttributes{{
     {"friction_coefficient", "", TangentialNumber{[](const TangentialResult& r) { return r.friction_coefficient; }}},
     {"tangential_force_x", "N (N/m in 1D)", TangentialNumber{[](const TangentialResult& r) { return r.force_x; }}},
     {"tangential_force_y", "N (N/m in 1D)", TangentialNumber{[](const TangentialResult& r) { return r.force_y; }}},
@@ -67,6 +67,8 @@ const std::array<TangentialAttribute, 17> kTangentialAttributes{{
      TangentialInteger{[](const TangentialResult& r) { return std::int64_t{r.converged() ? 1 : 0}; }}},
     {"tangential_iterations", "",
      TangentialInteger{[](const TangentialResult& r) { return std::int64_t{r.iterations}; }}},
+    {"tangential_coarse_levels", "",
+     TangentialInteger{[](const TangentialResult& r) { return std::int64_t{r.coarse.levels}; }}},
     {"tangential_residual", "", TangentialNumber{[](const TangentialResult& r) { return r.residual; }}},
     {"tangential_tolerance", "", TangentialNumber{[](const TangentialResult& r) { return r.tolerance; }}},
     {"dundurs_beta", "", TangentialNumber{[](const TangentialResult& r) { return r.dundurs_beta; }}},

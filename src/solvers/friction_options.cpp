@@ -35,6 +35,7 @@ TangentialOptions FrictionOptions::tangential_options() const {
   options.max_iterations = max_iterations;
   options.release_period = release_period;
   options.active_set_updates = active_set_updates;
+  options.coarse_start = coarse_start;
   return options;
 }
 

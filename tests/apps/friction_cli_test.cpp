@@ -148,6 +148,52 @@ TEST(FrictionCliTest, CattaneoMindlinSphereMatchesStickRadiusAndDisplacement) {
   EXPECT_EQ(test::read_int64_attribute(file.get(), "tangential_converged"), 1);
 }
 
+// --tangential-coarse-start on reaches the solver (the result records the
+// coarser grid that started the step: 64^2 has one of at least 32 cells per
+// axis) and leaves the solution of the default start: the same force, stick
+// set within a few edge cells and shear within 1e-4 mu p0 (the two converge
+// to a duality gap of 1e-10 from different starts).
+TEST(FrictionCliTest, CoarseStartGivesTheDefaultSolution) {
+  const TempDir dir;
+  const double q = 0.5 * kMu * kForce;
+  const std::vector<std::string> step{"--friction",         fmt::format("{}", kMu), "--tangential-force",
+                                      fmt::format("{}", q), "--tangential-tol",     "1e-10"};
+  std::vector<std::string> coarse = step;
+  coarse.insert(coarse.end(), {"--tangential-coarse-start", "on"});
+  std::vector<std::string> plain = step;
+  plain.insert(plain.end(), {"--tangential-coarse-start", "off"});
+  const ProgramRun with = run_program(sphere(64, "coarse.h5", coarse), dir.path());
+  ASSERT_EQ(with.exit_code, kExitOk) << with.err;
+  const ProgramRun without = run_program(sphere(64, "plain.h5", plain), dir.path());
+  ASSERT_EQ(without.exit_code, kExitOk) << without.err;
+
+  const test::H5 a = test::open_file(dir / "coarse.h5");
+  const test::H5 b = test::open_file(dir / "plain.h5");
+  EXPECT_EQ(test::read_int64_attribute(a.get(), "tangential_coarse_levels"), 1);
+  EXPECT_EQ(test::read_int64_attribute(b.get(), "tangential_coarse_levels"), 0);
+  for (const test::H5* file : {&a, &b}) {
+    EXPECT_EQ(test::read_int64_attribute(file->get(), "tangential_converged"), 1);
+    EXPECT_NEAR(test::read_double_attribute(file->get(), "tangential_force_x"), q, 1e-9 * q);
+  }
+  const auto pressure = test::read_dataset<double>(b.get(), "/pressure", H5T_NATIVE_DOUBLE);
+  const double p0 = *std::ranges::max_element(pressure);
+  double largest = 0.0;
+  for (const char* name : {"/shear_x", "/shear_y"}) {
+    const auto x = test::read_dataset<double>(a.get(), name, H5T_NATIVE_DOUBLE);
+    const auto y = test::read_dataset<double>(b.get(), name, H5T_NATIVE_DOUBLE);
+    for (std::size_t i = 0; i < x.size(); ++i) largest = std::max(largest, std::abs(x[i] - y[i]));
+  }
+  EXPECT_LT(largest, 1e-4 * kMu * p0);
+  const auto stick_a = test::read_dataset<std::uint8_t>(a.get(), "/stick", H5T_NATIVE_UINT8);
+  const auto stick_b = test::read_dataset<std::uint8_t>(b.get(), "/stick", H5T_NATIVE_UINT8);
+  int differing = 0;
+  for (std::size_t i = 0; i < stick_a.size(); ++i) differing += stick_a[i] != stick_b[i] ? 1 : 0;
+  EXPECT_LE(differing, 4);
+  const double delta_a = test::read_double_attribute(a.get(), "tangential_approach_x");
+  const double delta_b = test::read_double_attribute(b.get(), "tangential_approach_x");
+  EXPECT_NEAR(delta_a, delta_b, 1e-6 * std::abs(delta_b));
+}
+
 TEST(FrictionCliTest, FrettingLoopDissipatesMindlinDeresiewiczEnergy) {
   const TempDir dir;
   const Hertz hertz;
@@ -508,6 +554,9 @@ TEST(FrictionCliTest, RefusalsNameTheOptions) {
       {sphere(16, "bad.h5", {"--friction", "0.3", "--tangential-force", "1", "--tangential-active-set", "-1"}),
        {"--tangential-active-set -1 is invalid: must be at least 0"}},
       {sphere(16, "bad.h5", {"--tangential-active-set", "10"}), {"--tangential-active-set 10 needs --friction MU"}},
+      {sphere(16, "bad.h5", {"--friction", "0.3", "--tangential-force", "1", "--tangential-coarse-start", "yes"}),
+       {"--tangential-coarse-start yes is invalid: allowed values are on and off"}},
+      {sphere(16, "bad.h5", {"--tangential-coarse-start", "on"}), {"--tangential-coarse-start on needs --friction MU"}},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.message.front());

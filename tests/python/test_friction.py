@@ -71,6 +71,26 @@ def test_active_set_phase_gives_the_same_step():
     assert active.friction["stick_fraction"] == pytest.approx(plain.friction["stick_fraction"], abs=0.01)
 
 
+def test_coarse_start_gives_the_same_step():
+    # tangential_coarse_start (--tangential-coarse-start): one coarser grid (32^2) starts the 64^2 step, which
+    # converges to the default start's traction and approach (both to a duality gap of 1e-10).
+    ratio = 0.5
+    surface = sphere(64)
+    results = [hs.solve(surface, **STEEL, force=FORCE, friction=MU, tangential_force=(ratio * MU * FORCE, 0.0),
+                        tangential_tol=1e-10, tangential_coarse_start=start, threads=1, fft_planning="estimate")
+               for start in (None, True)]
+    for result in results:
+        assert result.converged and result.friction["converged"], result.friction["message"]
+    plain, coarse = results
+    assert plain.friction["coarse_levels"] == 0 and coarse.friction["coarse_levels"] == 1
+    assert coarse.attributes["tangential_coarse_levels"] == 1
+    limit = MU * plain.pressure.max()
+    assert np.max(np.abs(coarse.shear_x - plain.shear_x)) <= 1e-4 * limit
+    assert np.max(np.abs(coarse.shear_y - plain.shear_y)) <= 1e-4 * limit
+    assert coarse.friction["tangential_approach"][0] == pytest.approx(plain.friction["tangential_approach"][0],
+                                                                      rel=1e-6)
+
+
 def test_fretting_history_dissipates_mindlin_deresiewicz_energy(tmp_path):
     amplitude = 0.6  # Q*/(mu P)
     peak = amplitude * MU * FORCE
@@ -152,6 +172,9 @@ def test_sliding_and_displacement_control():
     (dict(friction=0.3, tangential_force=1.0, tangential_active_set=-1),
      "tangential_active_set=-1 is invalid: must be at least 0"),
     (dict(tangential_active_set=10), "tangential_active_set=10 needs friction=MU"),
+    (dict(friction=0.3, tangential_force=1.0, tangential_coarse_start="on"),
+     "tangential_coarse_start='on' is invalid: give True or False"),
+    (dict(tangential_coarse_start=True), "tangential_coarse_start=on needs friction=MU"),
     (dict(friction=0.3, tangential_force=1.0, normal_load_steps=0), "normal_load_steps=0 is invalid"),
     (dict(friction=0.3, tangential_force=1.0, coupling="off"), "coupling='off' is invalid: give True or False"),
     (dict(friction=0.3, tangential_force=1.0, adhesion="md", work_of_adhesion=0.1, adhesion_range=1e-8),

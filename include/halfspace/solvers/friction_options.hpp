@@ -34,6 +34,7 @@ struct FrictionOptions {
   int max_iterations = 10000;
   int release_period = 5;      // TangentialOptions::release_period
   int active_set_updates = 0;  // TangentialOptions::active_set_updates (0: no active-set phase)
+  bool coarse_start = false;   // TangentialOptions::coarse_start (each step started on coarser grids)
   // Elastically dissimilar bodies (Dundurs' beta != 0): solve the coupled
   // normal-tangential problem (coupled_step.hpp), or, false, ignore the
   // coupling (the uncoupled approximation, for comparison). No effect for
