@@ -188,7 +188,7 @@ Result read(const std::filesystem::path& path, int step) {
                                                                          : s.approach;
   data.statistics = contact_statistics_of(grid, s);
 
-  auto run = std::make_shared<Run>(Run{.grid = std::move(grid), .heights_owner = nb::none()});
+  auto run = std::make_shared<Run>(Run{std::move(grid), nb::none(), {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}});
   io::SolveProvenance& p = run->provenance;
   p.e_star = number("E_star");
   p.load_mode = data.loading.mode;

@@ -141,11 +141,19 @@ auto run_released(const ProgressHook& hook, Work&& work) {
 
 std::shared_ptr<Run> make_run(ArraySurface&& surface, const Problem& problem, io::SolveProvenance&& provenance,
                               std::vector<analysis::SweepStep>&& steps) {
-  auto run = std::make_shared<Run>(Run{.grid = std::move(surface.grid),
-                                       .heights_owner = std::move(surface.heights_owner),
-                                       .heights = surface.heights,
-                                       .provenance = std::move(provenance),
-                                       .coating = problem.coating});
+  auto run = std::make_shared<Run>(Run{std::move(surface.grid),
+                                       std::move(surface.heights_owner),
+                                       surface.heights,
+                                       std::move(provenance),
+                                       {},
+                                       {},
+                                       {},
+                                       {},
+                                       problem.coating,
+                                       {},
+                                       {},
+                                       {},
+                                       {}});
   if (!problem.coating) run->pair = problem.pair;  // both bodies, when given (whose stresses)
   run->steps = std::move(steps);
   run->surface = surface::surface_statistics(run->grid, run->heights);
