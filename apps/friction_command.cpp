@@ -81,14 +81,8 @@ void print_friction_summary(std::FILE* out, const SolveSetup& setup, const Frict
 int run_frictional_solve(const SolveSetup& setup, const SolvePlace& place) {
   const solvers::FrictionOptions& options = *setup.friction;
   const ElasticPair& pair = *setup.pair;
-  // Threads first: the FFT plans use the thread count in force when made.
-  set_threads(setup.threads);
-  // The first process plots (from the file, once written); every process
-  // learns whether the tool is there before the solve.
-  std::optional<PlotTool> plot;
-  place.agree([&] {
-    if (setup.plot && place.first) plot = find_plot_tool({"--plot", "drop --plot", {}});
-  });
+  // The first process plots, from the file once written.
+  const std::optional<PlotTool> plot = start_solve(setup, place);
   const std::span<const double> heights = place.heights;
   const bool prints = !setup.quiet && place.first;
 
@@ -97,7 +91,6 @@ int run_frictional_solve(const SolveSetup& setup, const SolvePlace& place) {
                                                solvers::to_string(setup.solver.type), setup.grid.shape_string()));
   FrictionalSolveResult result;
   result.requested_steps = options.steps();
-  std::vector<TangentialLoading> loads;
   if (options.coupled(pair)) {
     // Dissimilar bodies: every step solves the normal and tangential
     // problems together (coupled_step.hpp), each step with its own pressure.
@@ -107,8 +100,6 @@ int run_frictional_solve(const SolveSetup& setup, const SolvePlace& place) {
                     pair.dundurs_beta(), options.steps(), options.steps() == 1 ? "" : "s", setup.grid.shape_string()));
     result = solvers::solve_frictional_surface(setup.grid, heights, pair, setup.loading, setup.solver, options,
                                                place.layout);
-    loads.assign(options.history.begin(), options.history.begin() + static_cast<std::ptrdiff_t>(std::min(
-                                                                        options.history.size(), result.steps.size())));
   } else {
     Progress progress(prints, 1, setup.solver.solver_tolerance());
     solvers::SolverOptions settings = setup.solver;
@@ -136,9 +127,11 @@ int run_frictional_solve(const SolveSetup& setup, const SolvePlace& place) {
     }
     result.steps = solvers::solve_tangential_history(setup.grid, pair, result.normal, friction,
                                                      setup.solver.fft_planning, place.layout);
-    loads.assign(options.history.begin(), options.history.begin() + static_cast<std::ptrdiff_t>(std::min(
-                                                                        options.history.size(), result.steps.size())));
   }
+  // The loads of the steps solved.
+  const std::vector<TangentialLoading> loads(
+      options.history.begin(),
+      options.history.begin() + static_cast<std::ptrdiff_t>(std::min(options.history.size(), result.steps.size())));
 
   // A coupled single step writes its own pressure (under its shear); a
   // history the normal loading's at the root and, coupled, each step's own
@@ -188,19 +181,9 @@ int run_frictional_solve(const SolveSetup& setup, const SolvePlace& place) {
     if (history) fmt::print("history table:       {}\n", io::history_csv_path(setup.output).string());
     std::fflush(stdout);
   }
-  bool plotted = true;
-  if (plot) {
-    // The normal maps, then the loop (a history) and the stick/slip map.
-    for (const std::string_view figure : {"maps", "friction"}) {
-      const std::string failure = run_plot_tool(*plot, figure, setup.output, setup.quiet);
-      if (!failure.empty()) {
-        fmt::print(stderr, "error: --plot: {}; the result is written to {}\n", failure, setup.output.string());
-        plotted = false;
-        break;
-      }
-    }
-  }
-  plotted = place.first_value(plotted ? 1 : 0) != 0;
+  // The normal maps, then the loop (a history) and the stick/slip map.
+  const bool plotted =
+      place.first_value(draw_figures(plot, {"maps", "friction"}, setup, "the result is written to") ? 1 : 0) != 0;
   if (!result.converged()) {
     if (place.first) {
       fmt::print(stderr, "error: {}; the result is written to {} with the steps solved\n", result.failure(),
@@ -209,10 +192,6 @@ int run_frictional_solve(const SolveSetup& setup, const SolvePlace& place) {
     return kExitNotConverged;
   }
   return plotted ? kExitOk : kExitPlotFailed;
-}
-
-int run_frictional_solve(const SolveSetup& setup) {
-  return run_frictional_solve(setup, serial_place(setup));
 }
 
 }  // namespace halfspace::app

@@ -9,10 +9,8 @@
 namespace halfspace::app {
 
 // Runs the frictional solve of `setup` (setup.friction and setup.pair set)
-// and returns the exit code: kExitOk, kExitNotConverged (the result is
-// still written, with the steps solved) or kExitPlotFailed.
-int run_frictional_solve(const SolveSetup& setup);
-// The same at `place`.
+// at `place` and returns the exit code: kExitOk, kExitNotConverged (the
+// result is still written, with the steps solved) or kExitPlotFailed.
 int run_frictional_solve(const SolveSetup& setup, const SolvePlace& place);
 
 }  // namespace halfspace::app

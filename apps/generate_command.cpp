@@ -95,8 +95,9 @@ const std::array kOptions{
 constexpr const char* kSelfAffineKeys[] = {"hurst",      "cutoff-short", "rolloff", "cutoff-long",
                                            "rms-height", "rms-slope",    "seed"};
 
-// The heights are made here on one process; on several, each makes and
-// writes its rows later (generate_distributed), from `source`.
+// The heights are made here by the process that makes them whole
+// (makes_whole); on several processes a 2D map's rows are made and written
+// by each later (generate_distributed), from `source`.
 struct Generated {
   Grid grid;
   Eigen::ArrayXd heights;
@@ -104,17 +105,10 @@ struct Generated {
   SurfaceSource source;
 };
 
-// A positive length within the program's range of lengths, if given.
+// A length option (require_length), if given.
 std::optional<double> length(const GenerateOptions& o, std::string_view key, const std::optional<double>& value) {
   if (!value) return std::nullopt;
-  if (!(*value > 0.0)) throw InputError(fmt::format("{} is invalid: must be positive (m)", o.describe(key)));
-  return require_in_range(o.describe(key), *value, kMinLength, kMaxLength, "m");
-}
-
-// A length option a built-in shape needs.
-double required_length(const GenerateOptions& o, std::string_view key, const std::optional<double>& value) {
-  if (!value) throw InputError(fmt::format("{} needs {} (m)", o.describe("kind"), o.name(key)));
-  return *length(o, key, value);
+  return require_length(o, key, *value);
 }
 
 void reject(const GenerateOptions& o, std::initializer_list<const char*> keys, std::string_view reason) {
@@ -123,15 +117,11 @@ void reject(const GenerateOptions& o, std::initializer_list<const char*> keys, s
   }
 }
 
-// Several processes make a map in slabs of rows, which a profile's one row
-// cannot be split into.
-void require_map_on_several_processes(const GenerateOptions& o, const Grid& grid) {
-  if (process_count() > 1 && grid.dimension() != 2) {
-    throw InputError(
-        fmt::format("{}: a 1D profile is not available with more than one process yet: run it without "
-                    "mpirun (2D maps are)",
-                    o.describe("grid")));
-  }
+// Whether this process makes the heights whole: the only one; on several,
+// the first for a 1D profile (one row, which slabs of rows cannot split),
+// while a 2D map is made in slabs later (generate_distributed).
+bool makes_whole(const Grid& grid) {
+  return process_count() == 1 || (grid.dimension() == 1 && prints_messages());
 }
 
 // The grid, once its generation is known to fit in memory.
@@ -167,10 +157,9 @@ Generated self_affine(const GenerateOptions& o) {
   }
 
   Grid grid = grid_from(o, Boundary::periodic);
-  require_map_on_several_processes(o, grid);
   const surface::SelfAffineSpec resolved = spec.resolved(grid);
   Eigen::ArrayXd heights;
-  if (process_count() == 1) {
+  if (makes_whole(grid)) {
     const Activity activity(fmt::format("generating the self-affine surface on the {} grid", grid.shape_string()));
     heights = surface::make_self_affine_surface(grid, spec);
   }
@@ -204,33 +193,13 @@ Generated builtin(const GenerateOptions& o, geometry::SurfaceShape shape) {
   for (const char* key : kSelfAffineKeys) {
     if (o.given(key)) throw InputError(fmt::format("{} does not apply to --kind {}", o.name(key), kind));
   }
-  geometry::SurfaceSpec spec;
-  spec.shape = shape;
-  std::string source(geometry::to_string(shape));
-  switch (shape) {
-    case geometry::SurfaceShape::sphere:
-    case geometry::SurfaceShape::cylinder:
-      reject(o, {"wavelength", "amplitude"}, fmt::format("does not apply to --kind {}", kind));
-      spec.radius = required_length(o, "radius", o.radius);
-      source += fmt::format(" (radius = {} m)", spec.radius);
-      break;
-    case geometry::SurfaceShape::wavy:
-      reject(o, {"radius"}, "does not apply to --kind wavy");
-      spec.wavelength = required_length(o, "wavelength", o.wavelength);
-      spec.amplitude = required_length(o, "amplitude", o.amplitude);
-      source += fmt::format(" (wavelength = {} m, amplitude = {} m)", spec.wavelength, spec.amplitude);
-      break;
-    case geometry::SurfaceShape::flat:
-      reject(o, {"radius", "wavelength", "amplitude"}, "does not apply to --kind flat");
-      break;
-  }
+  auto [spec, source] = builtin_shape_from(o, "kind", shape, o.radius, o.wavelength, o.amplitude);
   // Only a wavy surface with whole periods repeats with the domain.
   Grid probe = grid_from(o, Boundary::free);
   const bool periodic = shape == geometry::SurfaceShape::wavy && whole_periods(probe, spec.wavelength);
   Grid grid = grid_from(o, periodic ? Boundary::periodic : Boundary::free);
-  require_map_on_several_processes(o, grid);
   Eigen::ArrayXd heights;
-  if (process_count() == 1) {
+  if (makes_whole(grid)) {
     const Activity activity(fmt::format("generating the {} surface on the {} grid", kind, grid.shape_string()));
     heights = geometry::make_surface_heights(grid, spec);
   }
@@ -271,21 +240,25 @@ int run_generate(const GenerateOptions& o) {
   const std::string& output = *o.output;
 
   surface::SurfaceStatistics statistics;
-  if (process_count() > 1) {
+  if (process_count() > 1 && surface.grid.dimension() == 2) {
     // Each process its rows, made, measured and written at once.
     const Activity activity(fmt::format("generating the {} surface on the {} grid and writing {}", kind,
                                         surface.grid.shape_string(), output));
     statistics = generate_distributed(surface.grid, surface.source, surface.metadata, output);
   } else {
-    const std::span<const double> heights(surface.heights.data(), static_cast<std::size_t>(surface.heights.size()));
-    std::optional<Activity> activity(
-        std::in_place, fmt::format("computing the statistics of the {} grid", surface.grid.shape_string()));
-    statistics = surface::surface_statistics(surface.grid, heights);
-    activity.reset();
-    surface.metadata.numbers.emplace_back("rms_height", statistics.rms_height);
-    surface.metadata.numbers.emplace_back("rms_slope", statistics.rms_slope);
-    const Activity writing(fmt::format("writing {}", output));
-    io::write_height_map(output, surface.grid, heights, surface.metadata);
+    // The process that made the heights measures and writes them, any other waiting.
+    agree_everywhere([&] {
+      if (!makes_whole(surface.grid)) return;
+      const std::span<const double> heights(surface.heights.data(), static_cast<std::size_t>(surface.heights.size()));
+      std::optional<Activity> activity(
+          std::in_place, fmt::format("computing the statistics of the {} grid", surface.grid.shape_string()));
+      statistics = surface::surface_statistics(surface.grid, heights);
+      activity.reset();
+      surface.metadata.numbers.emplace_back("rms_height", statistics.rms_height);
+      surface.metadata.numbers.emplace_back("rms_slope", statistics.rms_slope);
+      const Activity writing(fmt::format("writing {}", output));
+      io::write_height_map(output, surface.grid, heights, surface.metadata);
+    });
   }
 
   if (!o.quiet && prints_messages()) {

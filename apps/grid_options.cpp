@@ -1,9 +1,13 @@
 // --grid and --size into a Grid, with the spacing checked against the same
-// range as the lengths: 1e-3 m over 1e9 cells is a spacing of 1e-12 m.
+// range as the lengths: 1e-3 m over 1e9 cells is a spacing of 1e-12 m; a
+// built-in shape's lengths.
 #include "grid_options.hpp"
 
 #include <fmt/format.h>
 
+#include <cmath>
+#include <initializer_list>
+#include <utility>
 #include <vector>
 
 #include "halfspace/error.hpp"
@@ -35,6 +39,50 @@ Grid grid_from_options(std::string_view grid_text, const std::string& grid_what,
   const double length_y = lengths.size() == 2 ? lengths[1] : lengths[0];
   return Grid::plane(cells[0], cells[1], spacing("dx", lengths[0], cells[0], grid_what, size_what),
                      spacing("dy", length_y, cells[1], grid_what, size_what), boundary);
+}
+
+double require_length(const GivenOptions& o, std::string_view key, double value) {
+  if (!(std::isfinite(value) && value > 0.0)) {
+    throw InputError(fmt::format("{} is invalid: must be positive (m)", o.describe(key)));
+  }
+  return require_in_range(o.describe(key), value, kMinLength, kMaxLength, "m");
+}
+
+BuiltinShape builtin_shape_from(const GivenOptions& o, std::string_view shape_key, geometry::SurfaceShape shape,
+                                const std::optional<double>& radius, const std::optional<double>& wavelength,
+                                const std::optional<double>& amplitude) {
+  const std::string shape_text = o.describe(shape_key);
+  const auto refuse = [&](std::initializer_list<std::pair<std::string_view, bool>> keys) {
+    for (const auto& [key, given] : keys) {
+      if (given) throw InputError(fmt::format("{} does not apply to {}", o.name(key), shape_text));
+    }
+  };
+  const auto require = [&](std::string_view key, const std::optional<double>& value) {
+    if (!value) throw InputError(fmt::format("{} needs --{} (m)", shape_text, key));
+    return require_length(o, key, *value);
+  };
+  BuiltinShape made{{.shape = shape}, std::string(geometry::to_string(shape))};
+  geometry::SurfaceSpec& spec = made.spec;
+  switch (shape) {
+    case geometry::SurfaceShape::sphere:
+    case geometry::SurfaceShape::cylinder:
+      refuse({{"wavelength", wavelength.has_value()}, {"amplitude", amplitude.has_value()}});
+      spec.radius = require("radius", radius);
+      made.source += fmt::format(" (radius = {} m)", spec.radius);
+      break;
+    case geometry::SurfaceShape::wavy:
+      refuse({{"radius", radius.has_value()}});
+      spec.wavelength = require("wavelength", wavelength);
+      spec.amplitude = require("amplitude", amplitude);
+      made.source += fmt::format(" (wavelength = {} m, amplitude = {} m)", spec.wavelength, spec.amplitude);
+      break;
+    case geometry::SurfaceShape::flat:
+      refuse({{"radius", radius.has_value()},
+              {"wavelength", wavelength.has_value()},
+              {"amplitude", amplitude.has_value()}});
+      break;
+  }
+  return made;
 }
 
 }  // namespace halfspace::app

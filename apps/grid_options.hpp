@@ -1,11 +1,14 @@
 // The grid of a built-in surface from --grid (cells) and --size (domain, m),
-// shared by `solve --geometry` and `generate`.
+// and its shape's lengths, shared by `solve --geometry` and `generate`.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 
+#include "halfspace/geometry/builtin_surface.hpp"
 #include "halfspace/grid.hpp"
+#include "option_table.hpp"
 
 namespace halfspace::app {
 
@@ -17,5 +20,22 @@ namespace halfspace::app {
 // InputError naming them.
 Grid grid_from_options(std::string_view grid_text, const std::string& grid_what, std::string_view size_text,
                        const std::string& size_what, Boundary boundary);
+
+// The length option `key` (m): positive and finite, and within the program's
+// range of lengths (physical_ranges.hpp). Throws InputError naming it.
+double require_length(const GivenOptions& o, std::string_view key, double value);
+
+// A built-in shape and its source text ("sphere (radius = 0.01 m)").
+struct BuiltinShape {
+  geometry::SurfaceSpec spec;
+  std::string source;
+};
+
+// The lengths `shape` needs from the options radius, wavelength and amplitude
+// (require_length), the others refused; `shape_key` is the option that chose
+// it (geometry, kind), named in the messages.
+BuiltinShape builtin_shape_from(const GivenOptions& o, std::string_view shape_key, geometry::SurfaceShape shape,
+                                const std::optional<double>& radius, const std::optional<double>& wavelength,
+                                const std::optional<double>& amplitude);
 
 }  // namespace halfspace::app

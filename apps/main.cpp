@@ -72,8 +72,10 @@ int main(int argc, char** argv) {
   for (const auto& command : commands) {
     if (!command.parser->parsed()) continue;
     try {
-      // Only solve, generate and stress are distributed; several processes
-      // of another command would write one file side by side.
+      // Only solve, generate and stress are distributed; the paper's four
+      // small line contacts are computed by the first process alone, the
+      // others waiting; several processes of another command would write
+      // one file side by side.
       const std::string& name = command.parser->get_name();
       if (halfspace::app::process_count() > 1 && name == "lubricate") {
         // The rigid film's solver runs on slabs (mpi/slab_film_rows.hpp);
@@ -84,12 +86,15 @@ int main(int argc, char** argv) {
             "and its result file run on one process (only the rigid film's solver runs on slabs, in the library): "
             "run it without mpirun");
       }
+      const std::vector<std::string> arguments(argv, argv + argc);
+      if (name == "paper") return halfspace::app::run_on_first_process([&] { return command.run(arguments); });
       if (halfspace::app::process_count() > 1 && name != "solve" && name != "generate" && name != "stress") {
-        throw halfspace::InputError(fmt::format(
-            "{} is not available with more than one process: run it without mpirun (solve, generate and stress are)",
-            name));
+        throw halfspace::InputError(
+            fmt::format("{} is not available with more than one process: run it without mpirun (solve, generate, "
+                        "stress and paper are)",
+                        name));
       }
-      return command.run(std::vector<std::string>(argv, argv + argc));
+      return command.run(arguments);
     } catch (const halfspace::InputError& error) {
       if (prints) fmt::print(stderr, "error: {}\n", error.what());
     } catch (const std::bad_alloc&) {

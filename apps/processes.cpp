@@ -1,5 +1,5 @@
-// The serial program runs as one process; with HALFSPACE_MPI the MPI parts
-// live in apps/mpi/.
+// The serial program runs as one process; with HALFSPACE_MPI the functions
+// of processes.hpp that differ are apps/mpi/'s.
 #include "processes.hpp"
 
 #include <fmt/format.h>
@@ -8,13 +8,6 @@
 #include <utility>
 
 #include "activity.hpp"
-
-#ifdef HALFSPACE_MPI
-#include "halfspace/mpi/session.hpp"
-#include "mpi/mpi_generate.hpp"
-#include "mpi/mpi_program.hpp"
-#include "mpi/mpi_stress.hpp"
-#endif
 
 namespace halfspace::app {
 
@@ -33,38 +26,7 @@ StressPlace whole_stress_place(io::ResultPressure input) {
   return place;
 }
 
-#ifdef HALFSPACE_MPI
-
-struct Processes::Session {
-  Session(int& argc, char**& argv) : mpi(argc, argv) {}
-  mpi::Session mpi;
-};
-Processes::Processes(int& argc, char**& argv) : session_(std::make_unique<Session>(argc, argv)) {}
-Processes::~Processes() = default;
-int process_count() {
-  return mpi_world().size();
-}
-bool prints_messages() {
-  return mpi_world().rank() == 0;
-}
-SolveSetup make_setup_everywhere(const std::function<SolveSetup(const SurfaceSharing& share)>& make) {
-  return make_distributed_setup(make);
-}
-std::optional<int> run_distributed_solve(const SolveSetup& setup) {
-  return run_solve_on_slabs(setup);
-}
-void agree_everywhere(const std::function<void()>& step) {
-  run_agreed_everywhere(step);
-}
-surface::SurfaceStatistics generate_distributed(const Grid& grid, const SurfaceSource& source,
-                                                io::HeightMapMetadata& metadata, const std::filesystem::path& output) {
-  return generate_on_slabs(grid, source, metadata, output);
-}
-int run_stress_everywhere(const std::filesystem::path& path, const std::function<int(StressPlace& place)>& run) {
-  return run_stress_on_slabs(path, run);
-}
-
-#else
+#ifndef HALFSPACE_MPI
 
 struct Processes::Session {};
 Processes::Processes(int& /*argc*/, char**& /*argv*/) {}
@@ -83,6 +45,9 @@ std::optional<int> run_distributed_solve(const SolveSetup& /*setup*/) {
 }
 void agree_everywhere(const std::function<void()>& step) {
   step();
+}
+int run_on_first_process(const std::function<int()>& run) {
+  return run();
 }
 surface::SurfaceStatistics generate_distributed(const Grid& /*grid*/, const SurfaceSource& /*source*/,
                                                 io::HeightMapMetadata& /*metadata*/,

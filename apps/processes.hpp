@@ -1,6 +1,7 @@
 // The processes the program runs as: one, or (built with HALFSPACE_MPI) the
 // MPI processes mpirun starts, which all run the same command. Only here and
-// in apps/mpi/ does the program know the difference.
+// in apps/mpi/ (which defines these functions in an MPI build,
+// processes.cpp in a serial one) does the program know the difference.
 #pragma once
 
 #include <filesystem>
@@ -61,6 +62,13 @@ std::optional<int> run_distributed_solve(const SolveSetup& setup);
 // Runs `step` on every process; if it failed on any, throws on all the
 // error of the first process that failed (the serial build: step()).
 void agree_everywhere(const std::function<void()>& step);
+
+// Runs `run` on the first process alone and returns its exit code on every
+// process, the others waiting: for what one process does whole (a 1D grid,
+// one row, which slabs of rows cannot split; the paper's small line
+// contacts). A failure throws on all, as agree_everywhere (the serial build:
+// run()).
+int run_on_first_process(const std::function<int()>& run);
 
 // What `halfspace generate` makes: a self-affine surface or a built-in shape.
 using SurfaceSource = std::variant<surface::SelfAffineSpec, geometry::SurfaceSpec>;

@@ -44,25 +44,15 @@ int run_solve(const SolveSetup& setup) {
 }
 
 int run_solve_here(const SolveSetup& setup) {
-  if (setup.friction) return run_frictional_solve(setup);
-  const std::string on_grid =
-      fmt::format("{} on the {} grid", solvers::to_string(setup.solver.type), setup.grid.shape_string());
-  if (setup.load_values.size() > 1) {
-    const Activity sweep(fmt::format("running the load sweep ({}, {} steps)", on_grid, setup.load_values.size()));
-    return run_sweep_at(setup, serial_place(setup));
-  }
   return run_solve_at(setup, serial_place(setup));
 }
 
-int run_solve_at(const SolveSetup& setup, const SolvePlace& place) {
-  // Threads first: the FFT plans use the thread count in force when made.
-  set_threads(setup.threads);
-  // The first process plots (from the file, once written); every process
-  // learns whether the tool is there before the solve.
-  std::optional<PlotTool> plot;
-  place.agree([&] {
-    if (setup.plot && place.first) plot = find_plot_tool({"--plot", "drop --plot", {}});
-  });
+namespace {
+
+// One normal solve (no friction, no sweep) at `place`.
+int run_single_solve_at(const SolveSetup& setup, const SolvePlace& place) {
+  // The first process plots, from the file once written.
+  const std::optional<PlotTool> plot = start_solve(setup, place);
   const bool prints = !setup.quiet && place.first;
   Progress progress(prints, 1, setup.solver.solver_tolerance());
   solvers::SolverOptions settings = setup.solver;
@@ -109,20 +99,25 @@ int run_solve_at(const SolveSetup& setup, const SolvePlace& place) {
     print_summary(stdout, setup, result);
     std::fflush(stdout);
   }
-  bool plotted = true;
-  if (plot) {
-    const std::string failure = run_plot_tool(*plot, "maps", setup.output, setup.quiet);
-    if (!failure.empty()) {
-      fmt::print(stderr, "error: --plot: {}; the result is written to {}\n", failure, setup.output.string());
-      plotted = false;
-    }
-  }
-  plotted = place.first_value(plotted ? 1 : 0) != 0;
+  const bool plotted = place.first_value(draw_figures(plot, {"maps"}, setup, "the result is written to") ? 1 : 0) != 0;
   if (!result.converged()) {
     if (place.first) fmt::print(stderr, "{}\n", non_convergence_message(setup, result));
     return kExitNotConverged;
   }
   return plotted ? kExitOk : kExitPlotFailed;
+}
+
+}  // namespace
+
+int run_solve_at(const SolveSetup& setup, const SolvePlace& place) {
+  if (setup.friction) return run_frictional_solve(setup, place);
+  if (setup.load_values.size() > 1) {
+    const Activity sweep(fmt::format("running the load sweep ({} on the {} grid, {} steps)",
+                                     solvers::to_string(setup.solver.type), setup.grid.shape_string(),
+                                     setup.load_values.size()));
+    return run_sweep_at(setup, place);
+  }
+  return run_single_solve_at(setup, place);
 }
 
 Command add_solve_command(CLI::App& program) {

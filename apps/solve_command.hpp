@@ -21,8 +21,9 @@ int run_solve(const SolveSetup& setup);
 // serial program; the first MPI process for a grid not split into slabs).
 // Makes no collective call.
 int run_solve_here(const SolveSetup& setup);
-// One normal solve (no friction, no sweep) at `place`: the serial program's
-// or this process's slab (collective then).
+// The same at `place`, the serial program's or this process's slab
+// (collective then): the frictional solve, the load sweep or one normal
+// solve.
 int run_solve_at(const SolveSetup& setup, const SolvePlace& place);
 
 // Registers `solve` on the program's parser.

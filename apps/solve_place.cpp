@@ -1,9 +1,15 @@
-// The serial place: the library's whole-grid statistics and writers.
+// The serial place: the library's whole-grid statistics and writers; the
+// start and the figures of every pipeline.
 #include "solve_place.hpp"
+
+#include <fmt/format.h>
+
+#include <cstdio>
 
 #include "halfspace/io/friction_history_writer.hpp"
 #include "halfspace/io/result_writer.hpp"
 #include "halfspace/io/sweep_writer.hpp"
+#include "halfspace/threads.hpp"
 #include "sweep_command.hpp"
 
 namespace halfspace::app {
@@ -29,6 +35,28 @@ SolvePlace serial_place(const SolveSetup& setup) {
     io::write_sweep_result(setup.output, setup.grid, heights, steps, metadata);
   };
   return place;
+}
+
+std::optional<PlotTool> start_solve(const SolveSetup& setup, const SolvePlace& place) {
+  set_threads(setup.threads);
+  std::optional<PlotTool> plot;
+  place.agree([&] {
+    if (setup.plot && place.first) plot = find_plot_tool({"--plot", "drop --plot", {}});
+  });
+  return plot;
+}
+
+bool draw_figures(const std::optional<PlotTool>& plot, std::initializer_list<std::string_view> figures,
+                  const SolveSetup& setup, std::string_view written) {
+  if (!plot) return true;
+  for (const std::string_view figure : figures) {
+    const std::string failure = run_plot_tool(*plot, figure, setup.output, setup.quiet);
+    if (!failure.empty()) {
+      fmt::print(stderr, "error: --plot: {}; {} {}\n", failure, written, setup.output.string());
+      return false;
+    }
+  }
+  return true;
 }
 
 }  // namespace halfspace::app

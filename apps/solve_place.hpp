@@ -6,6 +6,8 @@
 #pragma once
 
 #include <functional>
+#include <initializer_list>
+#include <optional>
 #include <span>
 
 #include "halfspace/analysis/contact_statistics.hpp"
@@ -15,6 +17,7 @@
 #include "halfspace/solvers/solve_result.hpp"
 #include "halfspace/solvers/tangential_loading.hpp"
 #include "halfspace/solvers/tangential_result.hpp"
+#include "plot_tool.hpp"
 #include "solve_setup.hpp"
 
 namespace halfspace::app {
@@ -41,5 +44,17 @@ struct SolvePlace {
 
 // The whole of setup's grid on this process.
 SolvePlace serial_place(const SolveSetup& setup);
+
+// The start of a solve at `place`: the threads set (the FFT plans use the
+// thread count in force when made) and, with setup.plot, the plotting tool
+// found by the first process, every process learning before the solve
+// whether it is there.
+std::optional<PlotTool> start_solve(const SolveSetup& setup, const SolvePlace& place);
+
+// Draws `figures` from setup.output with `plot` (if found), stopping at the
+// first that fails (its error printed, then `written`, e.g. "the result is
+// written to"): whether every one was drawn.
+bool draw_figures(const std::optional<PlotTool>& plot, std::initializer_list<std::string_view> figures,
+                  const SolveSetup& setup, std::string_view written);
 
 }  // namespace halfspace::app

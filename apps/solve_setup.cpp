@@ -56,15 +56,6 @@ std::vector<std::string> given_names(const SolveOptions& options, Presence keys)
   return names;
 }
 
-// A length option (radius, wavelength, amplitude, spacing): positive, and
-// within the program's range of lengths.
-double require_length(const SolveOptions& options, std::string_view key, double value) {
-  if (!(std::isfinite(value) && value > 0.0)) {
-    throw InputError(fmt::format("{} is invalid: must be positive (m)", options.describe(key)));
-  }
-  return require_in_range(options.describe(key), value, kMinLength, kMaxLength, "m");
-}
-
 void check_surface_choice(const SolveOptions& options) {
   if (options.height_map && options.geometry) {
     throw InputError(fmt::format("{} and {} cannot be combined: give exactly one surface", options.name("height-map"),
@@ -198,39 +189,15 @@ Surface builtin_surface(const SolveOptions& o, Boundary boundary, const GridChec
                 {"detrend", o.detrend.has_value()},
                 {"pad", o.pad.has_value()}},
                "applies only to --height-map; a built-in geometry takes its spacing from --grid and --size");
-  geometry::SurfaceSpec spec;
-  spec.shape = in_context(o.name("geometry"), [&] { return geometry::parse_surface_shape(*o.geometry); });
-  const std::string shape_name = o.describe("geometry");
-  const auto require = [&](std::string_view key, const std::optional<double>& value) {
-    if (!value) throw InputError(fmt::format("{} needs --{} (m)", shape_name, key));
-    return require_length(o, key, *value);
-  };
-  const auto unused = [&](Presence keys) { reject_given(o, keys, fmt::format("does not apply to {}", shape_name)); };
-  std::string source = std::string(geometry::to_string(spec.shape));
-  switch (spec.shape) {
-    case geometry::SurfaceShape::sphere:
-    case geometry::SurfaceShape::cylinder:
-      unused({{"wavelength", o.wavelength.has_value()}, {"amplitude", o.amplitude.has_value()}});
-      spec.radius = require("radius", o.radius);
-      source += fmt::format(" (radius = {} m)", spec.radius);
-      break;
-    case geometry::SurfaceShape::wavy:
-      unused({{"radius", o.radius.has_value()}});
-      spec.wavelength = require("wavelength", o.wavelength);
-      spec.amplitude = require("amplitude", o.amplitude);
-      source += fmt::format(" (wavelength = {} m, amplitude = {} m)", spec.wavelength, spec.amplitude);
-      break;
-    case geometry::SurfaceShape::flat:
-      unused({{"radius", o.radius.has_value()},
-              {"wavelength", o.wavelength.has_value()},
-              {"amplitude", o.amplitude.has_value()}});
-      break;
-  }
+  const geometry::SurfaceShape shape =
+      in_context(o.name("geometry"), [&] { return geometry::parse_surface_shape(*o.geometry); });
+  auto [spec, source] = builtin_shape_from(o, "geometry", shape, o.radius, o.wavelength, o.amplitude);
   Grid grid = grid_for_geometry(o, boundary);
   check_grid(grid, o.describe("grid"));
   // Each process its own rows, from their global coordinates.
   const auto [first_row, rows] = rows_of && grid.dimension() == 2 ? rows_of(grid) : RowRange{0, grid.ny()};
-  const Activity activity(fmt::format("making the {} surface on the {} grid", shape_name, grid.shape_string()));
+  const Activity activity(
+      fmt::format("making the {} surface on the {} grid", o.describe("geometry"), grid.shape_string()));
   Eigen::ArrayXd heights = geometry::make_surface_rows(grid, spec, first_row, rows);
   return {std::move(grid), std::move(heights), std::move(source), {}, first_row, rows};
 }

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "halfspace/version.hpp"
+#include "sweep_command.hpp"
 
 namespace halfspace::app {
 namespace {
@@ -17,18 +18,6 @@ void row(std::FILE* out, std::string_view label, const std::string& value) {
 
 std::string_view force_unit(const Grid& grid) {
   return grid.dimension() == 1 ? "N/m" : "N";
-}
-
-std::string load_text(const SolveSetup& setup) {
-  switch (setup.loading.mode) {
-    case ControlMode::force:
-      return fmt::format("force {:.6g} {}", setup.loading.value, force_unit(setup.grid));
-    case ControlMode::mean_pressure:
-      return fmt::format("mean pressure {:.6g} Pa", setup.loading.value);
-    case ControlMode::approach:
-      return fmt::format("approach {:.6g} m", setup.loading.value);
-  }
-  return "";
 }
 
 std::string grid_text(const Grid& grid) {
@@ -68,7 +57,7 @@ void print_summary(std::FILE* out, const SolveSetup& setup, const SolveResult& r
   row(out, "grid", grid_text(grid));
   row(out, "E*", fmt::format("{:.6g} Pa", setup.e_star));
   if (const auto& c = setup.coating) row(out, "coating", coating_text(*c));
-  row(out, "load", load_text(setup));
+  row(out, "load", describe_load(setup.loading.mode, setup.loading.value, grid));
   const bool uses_fft = solvers::uses_fft(setup.solver.type);
   row(out, "solver",
       fmt::format("{}, {} thread{}{}", result.solver, setup.threads, setup.threads == 1 ? "" : "s",

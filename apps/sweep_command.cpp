@@ -99,14 +99,8 @@ std::string describe_load(ControlMode mode, double value, const Grid& grid) {
 }
 
 int run_sweep_at(const SolveSetup& setup, const SolvePlace& place) {
-  // Threads first: the FFT plans use the thread count in force when made.
-  set_threads(setup.threads);
-  // The first process plots (from the files, once written); every process
-  // learns whether the tool is there before the solves.
-  std::optional<PlotTool> plot;
-  place.agree([&] {
-    if (setup.plot && place.first) plot = find_plot_tool({"--plot", "drop --plot", {}});
-  });
+  // The first process plots, from the file once written.
+  const std::optional<PlotTool> plot = start_solve(setup, place);
   Progress progress(!setup.quiet && place.first, setup.load_values.size(), setup.solver.solver_tolerance());
   solvers::SolverOptions settings = setup.solver;
   settings.progress = progress.callback();
@@ -141,16 +135,7 @@ int report_sweep(const SolveSetup& setup, std::span<const analysis::SweepStep> s
     std::fflush(stdout);
   }
   // The maps of the last step, and the sweep's curves.
-  bool plotted = true;
-  if (plot) {
-    for (const char* subcommand : {"maps", "sweep"}) {
-      const std::string failure = run_plot_tool(*plot, subcommand, setup.output, setup.quiet);
-      if (!failure.empty()) {
-        fmt::print(stderr, "error: --plot: {}; the results are written to {}\n", failure, setup.output.string());
-        plotted = false;
-      }
-    }
-  }
+  const bool plotted = draw_figures(plot, {"maps", "sweep"}, setup, "the results are written to");
 
   std::vector<std::size_t> failed;
   for (std::size_t k = 0; k < steps.size(); ++k) {

@@ -1,5 +1,9 @@
-#include "mpi_generate.hpp"
-
+// `mpirun -np N halfspace generate ...` (processes.hpp's
+// generate_distributed): every process makes its rows of the surface (a
+// self-affine one from its spectrum columns, mpi::make_self_affine_slab; a
+// built-in shape from its rows' coordinates, geometry::make_surface_rows)
+// and writes them into one height-map file at once (the parallel HDF5), so
+// no process holds the whole map.
 #include <Eigen/Core>
 #include <span>
 #include <variant>
@@ -13,12 +17,8 @@
 
 namespace halfspace::app {
 
-void run_agreed_everywhere(const std::function<void()>& step) {
-  mpi::run_agreed(mpi_world(), step);
-}
-
-surface::SurfaceStatistics generate_on_slabs(const Grid& grid, const SurfaceSource& source,
-                                             io::HeightMapMetadata& metadata, const std::filesystem::path& output) {
+surface::SurfaceStatistics generate_distributed(const Grid& grid, const SurfaceSource& source,
+                                                io::HeightMapMetadata& metadata, const std::filesystem::path& output) {
   const mpi::MpiCommunicator world = mpi_world();
   const mpi::SlabLayout layout = mpi::slab_layout(grid.nx(), grid.ny(), world);
   // The spec was checked by every process alike: the synthesis fails on all

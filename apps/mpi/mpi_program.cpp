@@ -25,7 +25,6 @@
 
 #include "../activity.hpp"
 #include "../exit_codes.hpp"
-#include "../friction_command.hpp"
 #include "../memory_check.hpp"
 #include "../plot_tool.hpp"
 #include "../progress.hpp"
@@ -41,10 +40,10 @@
 #include "halfspace/mpi/node_memory.hpp"
 #include "halfspace/mpi/parallel_height_map_reader.hpp"
 #include "halfspace/mpi/parallel_result_writer.hpp"
+#include "halfspace/mpi/row_exchange.hpp"
 #include "halfspace/mpi/session.hpp"
 #include "halfspace/mpi/slab_contact_statistics.hpp"
 #include "halfspace/mpi/slab_fft.hpp"
-#include "halfspace/mpi/slab_gather.hpp"
 #include "halfspace/mpi/slab_surface_statistics.hpp"
 #include "halfspace/solvers/surface_solve.hpp"
 #include "halfspace/threads.hpp"
@@ -71,14 +70,6 @@ Grid broadcast_grid(const mpi::MpiCommunicator& world, const std::optional<Grid>
 }
 
 namespace {
-
-// `text` on the first process, to every process.
-void broadcast(const mpi::MpiCommunicator& world, std::string& text) {
-  std::uint64_t size = text.size();
-  mpi::check(MPI_Bcast(&size, 1, MPI_UINT64_T, 0, world.get()), "MPI_Bcast");
-  text.resize(size);
-  mpi::check(MPI_Bcast(text.data(), static_cast<int>(size), MPI_CHAR, 0, world.get()), "MPI_Bcast");
-}
 
 // The place of a solve on this process's rows: the slab statistics and the
 // parallel writers, every hook collective. `setup`, `world` and `slab` must
@@ -157,9 +148,38 @@ mpi::MpiCommunicator mpi_world() {
   return mpi::MpiCommunicator(MPI_COMM_WORLD);
 }
 
+struct Processes::Session {
+  Session(int& argc, char**& argv) : mpi(argc, argv) {}
+  mpi::Session mpi;
+};
+Processes::Processes(int& argc, char**& argv) : session_(std::make_unique<Session>(argc, argv)) {}
+Processes::~Processes() = default;
+
+int process_count() {
+  return mpi_world().size();
+}
+
+bool prints_messages() {
+  return mpi_world().rank() == 0;
+}
+
+void agree_everywhere(const std::function<void()>& step) {
+  mpi::run_agreed(mpi_world(), step);
+}
+
+int run_on_first_process(const std::function<int()>& run) {
+  const mpi::MpiCommunicator world = mpi_world();
+  int code = kExitOk;
+  mpi::run_agreed(world, [&] {
+    if (world.rank() == 0) code = run();
+  });
+  mpi::check(MPI_Bcast(&code, 1, MPI_INT, 0, world.get()), "MPI_Bcast");
+  return code;
+}
+
 namespace {
 
-// The first pass of make_distributed_setup stops where the surface would be
+// The first pass of make_setup_everywhere stops where the surface would be
 // made.
 struct SurfaceDeferred {};
 
@@ -206,12 +226,12 @@ class DistributedSurface {
     if (world_.size() == 1) return std::move(*whole);
     const Grid grid = broadcast_grid(world_, whole ? std::optional<Grid>(whole->grid) : std::nullopt);
     std::string source = whole ? whole->source : std::string();
-    broadcast(world_, source);
+    mpi::broadcast(world_, source);
     std::string steps;
     if (whole) {
       for (const std::string& step : whole->preparation) steps += step + '\n';
     }
-    broadcast(world_, steps);
+    mpi::broadcast(world_, steps);
     // A 1D grid is not distributed: the first process keeps it, the others
     // hold no rows (the run is refused before they would need any).
     if (grid.dimension() == 1) {
@@ -220,9 +240,9 @@ class DistributedSurface {
     }
     const mpi::SlabLayout layout = mpi::slab_layout(grid.nx(), grid.ny(), world_);
     Eigen::ArrayXd local(static_cast<Eigen::Index>(layout.local_size()));
-    mpi::scatter_rows(world_, layout,
+    mpi::scatter_rows(world_, grid.nx(),
                       root ? std::span<const double>(whole->heights.data(), grid.size()) : std::span<const double>(),
-                      {local.data(), layout.local_size()});
+                      layout.first_row, {local.data(), layout.local_size()});
     whole.reset();  // the first process too keeps only its rows
     std::vector<std::string> preparation;
     for (std::size_t begin = 0, end; (end = steps.find('\n', begin)) != std::string::npos; begin = end + 1) {
@@ -283,7 +303,7 @@ SurfaceSharing deferred_sharing() {
 
 }  // namespace
 
-SolveSetup make_distributed_setup(const std::function<SolveSetup(const SurfaceSharing& share)>& make) {
+SolveSetup make_setup_everywhere(const std::function<SolveSetup(const SurfaceSharing& share)>& make) {
   DistributedSurface surface;
   const mpi::MpiCommunicator world = mpi_world();
   // Twice: first every process checks the options up to the surface without
@@ -301,21 +321,14 @@ SolveSetup make_distributed_setup(const std::function<SolveSetup(const SurfaceSh
   return std::move(*setup);
 }
 
-std::optional<int> run_solve_on_slabs(const SolveSetup& setup) {
+std::optional<int> run_distributed_solve(const SolveSetup& setup) {
   const mpi::MpiCommunicator world = mpi_world();
   const mpi::DistributedLayout layout(world);
-  const bool root = world.rank() == 0;
   if (setup.grid.dimension() == 1 && world.size() > 1) {
-    // A 1D grid is one row, which slabs of rows cannot split (and at most a
-    // few million cells, which one process solves): the first process,
+    // A 1D grid is one row (at most a few million cells): the first process,
     // which holds the surface, runs the serial program (stresses, coatings
-    // and plots included) while the others wait for its exit code.
-    int code = kExitOk;
-    mpi::run_agreed(world, [&] {
-      if (root) code = run_solve_here(setup);
-    });
-    mpi::check(MPI_Bcast(&code, 1, MPI_INT, 0, world.get()), "MPI_Bcast");
-    return code;
+    // and plots included).
+    return run_on_first_process([&] { return run_solve_here(setup); });
   }
   // One process solves friction serially (with stresses and plots).
   if (world.size() == 1 && (setup.friction || !layout.takes(setup.grid, half_space(setup), setup.solver))) {
@@ -330,11 +343,7 @@ std::optional<int> run_solve_on_slabs(const SolveSetup& setup) {
   const std::span<const double> heights(setup.heights.data() + (slab.first_row - setup.first_row) * slab.nx,
                                         slab.local_size());
   const SolvePlace place = slab_place(setup, heights, layout, world, slab);
-  return run_on_slabs(world, [&] {
-    if (setup.friction) return run_frictional_solve(setup, place);
-    if (setup.load_values.size() > 1) return run_sweep_at(setup, place);
-    return run_solve_at(setup, place);
-  });
+  return run_on_slabs(world, [&] { return run_solve_at(setup, place); });
 }
 
 }  // namespace halfspace::app

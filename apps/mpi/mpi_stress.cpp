@@ -1,23 +1,23 @@
-// The stress command on several processes: the first process reads the
-// result whole (the stress command's reader) and scatters the rows of its
-// fields; the grid, the coating and whether there is shear go to every
-// process, so that every process checks the options against the same
-// result and fails alike.
-#include "mpi_stress.hpp"
-
+// `mpirun -np N halfspace stress RESULT ...` (processes.hpp's
+// run_stress_everywhere): the first process reads the result whole (the
+// stress command's reader) and scatters the rows of its fields; the grid,
+// the coating and whether there is shear go to every process, so that every
+// process checks the options against the same result and fails alike; every
+// process computes the stresses of its rows of a 2D result
+// (mpi::DistributedLayout) and all write their rows of the stress file at
+// once (the parallel HDF5), as the solve command's --stress-depths does.
 #include <algorithm>
 #include <array>
 #include <optional>
 #include <utility>
 #include <vector>
 
-#include "../exit_codes.hpp"
 #include "halfspace/io/xdmf_writer.hpp"
 #include "halfspace/mpi/agreement.hpp"
 #include "halfspace/mpi/distributed_layout.hpp"
 #include "halfspace/mpi/parallel_result_writer.hpp"
+#include "halfspace/mpi/row_exchange.hpp"
 #include "halfspace/mpi/slab_fft.hpp"
-#include "halfspace/mpi/slab_gather.hpp"
 #include "mpi_program.hpp"
 
 namespace halfspace::app {
@@ -65,13 +65,14 @@ void broadcast_details(const mpi::MpiCommunicator& world, std::optional<io::Resu
 std::vector<double> rows_of(const mpi::MpiCommunicator& world, const mpi::SlabLayout& slab,
                             const std::vector<double>* whole) {
   std::vector<double> local(slab.local_size());
-  mpi::scatter_rows(world, slab, whole ? std::span<const double>(*whole) : std::span<const double>(), local);
+  mpi::scatter_rows(world, slab.nx, whole ? std::span<const double>(*whole) : std::span<const double>(), slab.first_row,
+                    local);
   return local;
 }
 
 }  // namespace
 
-int run_stress_on_slabs(const std::filesystem::path& path, const std::function<int(StressPlace& place)>& run) {
+int run_stress_everywhere(const std::filesystem::path& path, const std::function<int(StressPlace& place)>& run) {
   const mpi::MpiCommunicator world = mpi_world();
   const bool root = world.rank() == 0;
   std::optional<io::ResultPressure> whole;
@@ -84,16 +85,12 @@ int run_stress_on_slabs(const std::filesystem::path& path, const std::function<i
   }
   const Grid grid = broadcast_grid(world, whole ? std::optional<Grid>(whole->grid) : std::nullopt);
   if (grid.dimension() == 1) {
-    // One row, which slabs of rows cannot split: the first process, which
-    // holds the result, runs the command as one process does.
-    int code = kExitOk;
-    mpi::run_agreed(world, [&] {
-      if (!root) return;
+    // The first process, which holds the result, runs the command as one
+    // process does.
+    return run_on_first_process([&] {
       StressPlace place = whole_stress_place(std::move(*whole));
-      code = run(place);
+      return run(place);
     });
-    mpi::check(MPI_Bcast(&code, 1, MPI_INT, 0, world.get()), "MPI_Bcast");
-    return code;
   }
   std::optional<LayeredMaterial> coating;
   std::optional<std::array<ElasticBody, 2>> bodies;

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <functional>
 #include <numeric>
+#include <utility>
 
 #include "halfspace/analysis/disjoint_sets.hpp"
 #include "halfspace/error.hpp"
@@ -67,11 +68,16 @@ std::vector<std::int64_t> contact_cluster_sizes(const Grid& grid, std::span<cons
 ContactStatistics contact_statistics(const Grid& grid, std::span<const double> pressure, std::span<const double> gap) {
   check_size("contact_statistics: the pressure", pressure.size(), grid);
   check_size("contact_statistics: the gap", gap.size(), grid);
+  return contact_statistics(grid, pressure, gap, linalg::serial_communicator(), contact_cluster_sizes(grid, pressure));
+}
+
+ContactStatistics contact_statistics(const Grid& grid, std::span<const double> pressure, std::span<const double> gap,
+                                     const linalg::Communicator& comm, std::vector<std::int64_t> cluster_sizes) {
   const double* p = pressure.data();
   const double* g = gap.data();
-  const auto [contact, gap_sum, gap_square] = linalg::sums<3>(grid.size(), [&](std::size_t i) {
-    const double gap = std::max(g[i], 0.0);
-    return std::array<double, 3>{p[i] > 0.0 ? 1.0 : 0.0, gap, gap * gap};
+  const auto [contact, gap_sum, gap_square] = linalg::sums<3>(comm, pressure.size(), [&](std::size_t i) {
+    const double clipped = std::max(g[i], 0.0);
+    return std::array<double, 3>{p[i] > 0.0 ? 1.0 : 0.0, clipped, clipped * clipped};
   });
   const double cells = static_cast<double>(grid.size());
   ContactStatistics statistics;
@@ -79,7 +85,7 @@ ContactStatistics contact_statistics(const Grid& grid, std::span<const double> p
   statistics.mean_gap = gap_sum / cells;
   statistics.rms_gap = std::sqrt(gap_square / cells);
   statistics.free_volume = gap_sum * grid.cell_area();
-  statistics.cluster_sizes = contact_cluster_sizes(grid, {p, grid.size()});
+  statistics.cluster_sizes = std::move(cluster_sizes);
   return statistics;
 }
 

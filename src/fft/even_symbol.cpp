@@ -28,6 +28,25 @@ void multiply_spectrum(const EvenSymbol& symbol, const std::vector<double>& valu
   });
 }
 
+// symbol.apply in the transform's own precision: the fields pass straight
+// through the transform's arrays where it allows (forward_from,
+// backward_into), else through copies.
+template <class Fft, class Real>
+void apply_in_precision(const EvenSymbol& symbol, Fft& fft, std::span<const Real> in, std::span<Real> out) {
+  assert(fft.rows() == symbol.rows() && fft.spectrum_cols() == symbol.cols());
+  if (!fft.forward_from(in)) {
+    std::span<Real> input = fft.input();
+    linalg::for_each_index(in.size(), [&](std::size_t i) { input[i] = in[i]; });
+    fft.forward();
+  }
+  symbol.multiply(fft.spectrum());
+  if (!fft.backward_into(out)) {
+    fft.backward();
+    std::span<const Real> output = fft.output();
+    linalg::for_each_index(out.size(), [&](std::size_t i) { out[i] = output[i]; });
+  }
+}
+
 }  // namespace
 
 void EvenSymbol::multiply(std::span<std::complex<double>> spectrum) const {
@@ -39,18 +58,7 @@ void EvenSymbol::multiply(std::span<std::complex<float>> spectrum) const {
 }
 
 void EvenSymbol::apply(RealFft& fft, std::span<const double> in, std::span<double> out) const {
-  assert(fft.rows() == rows_ && fft.spectrum_cols() == cols_);
-  if (!fft.forward_from(in)) {
-    std::span<double> input = fft.input();
-    linalg::for_each_index(in.size(), [&](std::size_t i) { input[i] = in[i]; });
-    fft.forward();
-  }
-  multiply(fft.spectrum());
-  if (!fft.backward_into(out)) {
-    fft.backward();
-    std::span<const double> output = fft.output();
-    linalg::for_each_index(out.size(), [&](std::size_t i) { out[i] = output[i]; });
-  }
+  apply_in_precision(*this, fft, in, out);
 }
 
 void EvenSymbol::apply(SingleRealFft& fft, std::span<const double> in, std::span<double> out) const {
@@ -65,18 +73,7 @@ void EvenSymbol::apply(SingleRealFft& fft, std::span<const double> in, std::span
 }
 
 void EvenSymbol::apply(SingleRealFft& fft, std::span<const float> in, std::span<float> out) const {
-  assert(fft.rows() == rows_ && fft.spectrum_cols() == cols_);
-  if (!fft.forward_from(in)) {
-    std::span<float> input = fft.input();
-    linalg::for_each_index(in.size(), [&](std::size_t i) { input[i] = in[i]; });
-    fft.forward();
-  }
-  multiply(fft.spectrum());
-  if (!fft.backward_into(out)) {
-    fft.backward();
-    std::span<const float> output = fft.output();
-    linalg::for_each_index(out.size(), [&](std::size_t i) { out[i] = output[i]; });
-  }
+  apply_in_precision(*this, fft, in, out);
 }
 
 }  // namespace halfspace::fft

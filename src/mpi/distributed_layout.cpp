@@ -75,8 +75,11 @@ void DistributedLayout::check(const Grid& grid, const HalfSpace& /*half_space*/,
   }
   if (options.type != SolverType::pk && options.type != SolverType::pk_fourier &&
       options.type != SolverType::pk_multilevel) {
+    // A 1D grid runs on the first process (apps/mpi); a 2D one is in slabs.
     throw SolverOptionError("type", std::string(to_string(options.type)),
-                            fmt::format("{}: use solver pk-multilevel, pk-fourier or pk", kNotYet));
+                            "is not available on slabs of a 2D grid: the dense solvers assemble the whole influence "
+                            "matrix (at most 8192 cells) on one process; run it without mpirun, or use solver "
+                            "pk-multilevel, pk-fourier or pk");
   }
 }
 

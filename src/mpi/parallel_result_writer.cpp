@@ -28,13 +28,6 @@
 namespace halfspace::mpi {
 namespace {
 
-void broadcast(std::string& text, const MpiCommunicator& comm) {
-  std::uint64_t size = text.size();
-  check(MPI_Bcast(&size, 1, MPI_UINT64_T, 0, comm.get()), "MPI_Bcast");
-  text.resize(size);
-  check(MPI_Bcast(text.data(), static_cast<int>(size), MPI_CHAR, 0, comm.get()), "MPI_Bcast");
-}
-
 [[noreturn]] void fail(const std::filesystem::path& path, const std::string& what) {
   throw FileError(fmt::format("cannot write output '{}': {}: {}", path.string(), what, io::detail::error_reason()));
 }
@@ -87,7 +80,7 @@ void write_file_slabs(const MpiCommunicator& comm, const std::filesystem::path& 
     output = std::make_unique<io::OutputTemporary>(path);
     temporary = output->temporary().string();
   });
-  broadcast(temporary, comm);
+  broadcast(comm, temporary);
   std::optional<io::detail::File> file;
   run_agreed(comm, [&] { file.emplace(create_collectively(comm, path, temporary)); });
   // The file's space before any field is written: a full disk or a file-size

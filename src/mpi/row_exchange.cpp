@@ -1,5 +1,6 @@
-// One MPI_Alltoallv of whole rows (an MPI datatype of nx doubles, as in
-// slab_gather, so that counts count rows): each process sends the part of
+// One MPI_Alltoallv of whole rows (an MPI datatype of nx doubles, so that
+// counts count rows and stay within MPI's int for slabs of more than 2^31
+// values): each process sends the part of
 // every other's wanted range that it holds, and receives its wanted range
 // from the holders in rank order, straight into place.
 #include "halfspace/mpi/row_exchange.hpp"
@@ -77,6 +78,12 @@ void fetch_rows(const MpiCommunicator& comm, std::size_t nx, const RowRanges& he
                                  receive_counts.data(), receive_offsets.data(), row, comm.get());
   MPI_Type_free(&row);
   check(code, "MPI_Alltoallv");
+}
+
+void scatter_rows(const MpiCommunicator& comm, std::size_t nx, std::span<const double> whole, std::size_t first_row,
+                  std::span<double> local) {
+  fetch_rows(comm, nx, RowRanges::gather(comm, 0, whole.size() / nx), whole,
+             RowRanges::gather(comm, first_row, local.size() / nx), local);
 }
 
 }  // namespace halfspace::mpi

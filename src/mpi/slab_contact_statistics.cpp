@@ -10,8 +10,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <array>
-#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <limits>
@@ -20,7 +18,6 @@
 
 #include "halfspace/analysis/disjoint_sets.hpp"
 #include "halfspace/error.hpp"
-#include "halfspace/linalg/parallel.hpp"
 
 namespace halfspace::mpi {
 namespace {
@@ -150,20 +147,7 @@ analysis::ContactStatistics slab_contact_statistics(const Grid& grid, const Slab
     throw InputError(fmt::format("slab_contact_statistics: {} pressures and {} gaps for {} rows of the {} grid",
                                  pressure.size(), gap.size(), layout.rows, grid.shape_string()));
   }
-  const double* p = pressure.data();
-  const double* g = gap.data();
-  const auto [contact, gap_sum, gap_square] = linalg::sums<3>(comm, pressure.size(), [&](std::size_t i) {
-    const double clipped = std::max(g[i], 0.0);
-    return std::array<double, 3>{p[i] > 0.0 ? 1.0 : 0.0, clipped, clipped * clipped};
-  });
-  const double cells = static_cast<double>(grid.size());
-  analysis::ContactStatistics statistics;
-  statistics.contact_fraction = contact / cells;
-  statistics.mean_gap = gap_sum / cells;
-  statistics.rms_gap = std::sqrt(gap_square / cells);
-  statistics.free_volume = gap_sum * grid.cell_area();
-  statistics.cluster_sizes = slab_cluster_sizes(grid, layout, pressure, comm);
-  return statistics;
+  return analysis::contact_statistics(grid, pressure, gap, comm, slab_cluster_sizes(grid, layout, pressure, comm));
 }
 
 }  // namespace halfspace::mpi

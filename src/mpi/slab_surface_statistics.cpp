@@ -1,11 +1,12 @@
 // Surface statistics on slabs: the sums of surface/statistics.cpp over the
 // processes; the spectral slope from the slab transform's (transposed) half
 // spectrum, the finite-difference slope with the neighbouring processes'
-// edge rows.
+// edge rows (fetch_rows).
 #include "halfspace/mpi/slab_surface_statistics.hpp"
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <numbers>
@@ -13,6 +14,7 @@
 
 #include "halfspace/error.hpp"
 #include "halfspace/linalg/parallel.hpp"
+#include "halfspace/mpi/row_exchange.hpp"
 
 namespace halfspace::mpi {
 namespace {
@@ -49,41 +51,6 @@ double spectral_slope_sq(const Grid& grid, std::span<const double> heights, cons
   return sum / (cells * cells);
 }
 
-// This slab with the row above and the row below it (where the grid has
-// them), from the processes that hold them.
-std::vector<double> with_neighbour_rows(const Grid& grid, const SlabLayout& layout, std::span<const double> heights,
-                                        const MpiCommunicator& comm) {
-  const std::size_t nx = grid.nx();
-  const auto processes = static_cast<std::size_t>(comm.size());
-  std::vector<unsigned long long> ranges(2 * processes);
-  const unsigned long long mine[2] = {layout.first_row, layout.rows};
-  check(MPI_Allgather(mine, 2, MPI_UNSIGNED_LONG_LONG, ranges.data(), 2, MPI_UNSIGNED_LONG_LONG, comm.get()),
-        "MPI_Allgather");
-  const auto owner = [&](std::size_t row) {
-    for (std::size_t p = 0; p < processes; ++p) {
-      if (ranges[2 * p + 1] > 0 && row >= ranges[2 * p] && row < ranges[2 * p] + ranges[2 * p + 1]) {
-        return static_cast<int>(p);
-      }
-    }
-    return MPI_PROC_NULL;
-  };
-  std::vector<double> extended((layout.rows + 2) * nx, 0.0);
-  std::copy(heights.begin(), heights.end(), extended.begin() + static_cast<std::ptrdiff_t>(nx));
-  if (layout.rows == 0) return extended;
-  const int above = layout.first_row > 0 ? owner(layout.first_row - 1) : MPI_PROC_NULL;
-  const int below = layout.first_row + layout.rows < grid.ny() ? owner(layout.first_row + layout.rows) : MPI_PROC_NULL;
-  const int count = static_cast<int>(nx);
-  MPI_Request requests[4];
-  check(MPI_Irecv(extended.data(), count, MPI_DOUBLE, above, 2, comm.get(), &requests[0]), "MPI_Irecv");
-  check(MPI_Irecv(extended.data() + (layout.rows + 1) * nx, count, MPI_DOUBLE, below, 1, comm.get(), &requests[1]),
-        "MPI_Irecv");
-  check(MPI_Isend(heights.data(), count, MPI_DOUBLE, above, 1, comm.get(), &requests[2]), "MPI_Isend");
-  check(MPI_Isend(heights.data() + (layout.rows - 1) * nx, count, MPI_DOUBLE, below, 2, comm.get(), &requests[3]),
-        "MPI_Isend");
-  check(MPI_Waitall(4, requests, MPI_STATUSES_IGNORE), "MPI_Waitall");
-  return extended;
-}
-
 // numpy.gradient: central inside, one-sided at the grid's two ends.
 double difference(const double* h, std::size_t position, std::size_t n, std::ptrdiff_t stride, double spacing) {
   if (position == 0) return (h[stride] - h[0]) / spacing;
@@ -94,12 +61,17 @@ double difference(const double* h, std::size_t position, std::size_t n, std::ptr
 double finite_difference_slope_sq(const Grid& grid, const SlabLayout& layout, std::span<const double> heights,
                                   const MpiCommunicator& comm) {
   const std::size_t nx = grid.nx();
-  const std::vector<double> extended = with_neighbour_rows(grid, layout, heights, comm);
+  // This slab with the row above and the row below it, where the grid has them.
+  const std::size_t first = layout.rows > 0 && layout.first_row > 0 ? layout.first_row - 1 : layout.first_row;
+  const std::size_t end = layout.rows > 0 ? std::min(layout.first_row + layout.rows + 1, grid.ny()) : first;
+  std::vector<double> extended((end - first) * nx);
+  fetch_rows(comm, nx, RowRanges::gather(comm, layout.first_row, layout.rows), heights,
+             RowRanges::gather(comm, first, end - first), extended);
   const auto stride = static_cast<std::ptrdiff_t>(nx);
   const double sum = linalg::sum(comm, layout.local_size(), [&](std::size_t k) {
     const std::size_t i = k % nx;
     const std::size_t j = layout.first_row + k / nx;
-    const double* h = extended.data() + nx + k;
+    const double* h = extended.data() + (layout.first_row - first) * nx + k;
     const double gx = difference(h, i, nx, 1, grid.dx());
     const double gy = difference(h, j, grid.ny(), stride, grid.dy());
     return gx * gx + gy * gy;

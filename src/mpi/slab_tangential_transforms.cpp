@@ -34,78 +34,72 @@ struct Columns {
   SpectrumMode mode(std::size_t k) const { return {k % length, first_column + k / length}; }
 };
 
-class PeriodicSlabTransforms final : public operators::TangentialTransforms {
+// What both kinds share: two transforms of the grid's slab (`Fft`, periodic
+// or padded), their spectra held as columns `length` rows long.
+template <class Fft>
+class SlabTransforms : public operators::TangentialTransforms {
  public:
-  PeriodicSlabTransforms(const Grid& grid, const MpiCommunicator& comm, FftPlanning planning) : comm_(comm) {
-    for (auto& t : fft_) t = std::make_unique<SlabRealFft>(grid.nx(), grid.ny(), comm, planning);
-    const SlabLayout& layout = fft_[0]->layout();
-    held_ = {layout.first_column, layout.columns, grid.ny()};
-    size_ = layout.local_size();
-    cells_ = static_cast<double>(grid.size());
+  SlabTransforms(const Grid& grid, const MpiCommunicator& comm, FftPlanning planning, std::size_t length)
+      : comm_(comm) {
+    for (auto& t : fft_) t = std::make_unique<Fft>(grid.nx(), grid.ny(), comm, planning);
+    held_ = {fft_[0]->layout().first_column, fft_[0]->layout().columns, length};
   }
 
-  std::size_t local_size() const override { return size_; }
   const linalg::Communicator& communicator() const override { return comm_; }
   std::size_t spectrum_blocks() const override { return held_.columns; }
   std::size_t spectrum_length() const override { return held_.length; }
   SpectrumMode mode(std::size_t k) const override { return held_.mode(k); }
   std::size_t spectrum_rows() const override { return held_.length; }
-  double transform_size() const override { return cells_; }
   std::span<std::complex<double>> forward(int k, std::span<const double> values) override {
     fft_[k]->forward(values);
     return fft_[k]->spectrum();
   }
   std::span<std::complex<double>> spectrum(int k) override { return fft_[k]->spectrum(); }
   void backward(int k, std::span<double> values) override { fft_[k]->backward(values); }
+
+ protected:
+  const MpiCommunicator& comm_;
+  std::unique_ptr<Fft> fft_[2];
+  Columns held_;
+};
+
+class PeriodicSlabTransforms final : public SlabTransforms<SlabRealFft> {
+ public:
+  PeriodicSlabTransforms(const Grid& grid, const MpiCommunicator& comm, FftPlanning planning)
+      : SlabTransforms(grid, comm, planning, grid.ny()), cells_(static_cast<double>(grid.size())) {}
+
+  std::size_t local_size() const override { return fft_[0]->layout().local_size(); }
+  double transform_size() const override { return cells_; }
   std::span<const std::complex<double>> transform_wraparound(
       const std::function<double(std::size_t, std::size_t)>& /*value*/) override {
     throw std::logic_error("a periodic grid's tangential symbol is analytic: no wrap-around coefficients");
   }
 
  private:
-  const MpiCommunicator& comm_;
-  std::unique_ptr<SlabRealFft> fft_[2];
-  Columns held_;
-  std::size_t size_ = 0;
-  double cells_ = 0.0;
+  double cells_;
 };
 
-class FreeSlabTransforms final : public operators::TangentialTransforms {
+class FreeSlabTransforms final : public SlabTransforms<SlabPaddedRealFft> {
  public:
   FreeSlabTransforms(const Grid& grid, const MpiCommunicator& comm, FftPlanning planning)
-      : comm_(comm), nx_(grid.nx()), ny_(grid.ny()) {
-    for (auto& t : fft_) t = std::make_unique<SlabPaddedRealFft>(grid.nx(), grid.ny(), comm, planning);
-    const SlabLayout& layout = fft_[0]->layout();
-    held_ = {layout.first_column, layout.columns, fft_[0]->spectrum_rows()};
-    first_row_ = layout.first_row;
-    rows_ = layout.rows;
-  }
+      : SlabTransforms(grid, comm, planning, 2 * grid.ny()), nx_(grid.nx()), ny_(grid.ny()) {}
 
-  std::size_t local_size() const override { return rows_ * nx_; }
-  const linalg::Communicator& communicator() const override { return comm_; }
-  std::size_t spectrum_blocks() const override { return held_.columns; }
-  std::size_t spectrum_length() const override { return held_.length; }
-  SpectrumMode mode(std::size_t k) const override { return held_.mode(k); }
-  std::size_t spectrum_rows() const override { return held_.length; }
+  std::size_t local_size() const override { return fft_[0]->layout().rows * nx_; }
   double transform_size() const override { return fft_[0]->padded_size(); }
-  std::span<std::complex<double>> forward(int k, std::span<const double> values) override {
-    fft_[k]->forward(values);
-    return fft_[k]->spectrum();
-  }
-  std::span<std::complex<double>> spectrum(int k) override { return fft_[k]->spectrum(); }
-  void backward(int k, std::span<double> values) override { fft_[k]->backward(values); }
 
   // The quadrants' shifted spectra added up in transform 1's spectrum, idle
   // while the operator is made.
   std::span<const std::complex<double>> transform_wraparound(
       const std::function<double(std::size_t, std::size_t)>& value) override {
-    std::vector<double> quadrant(rows_ * nx_);
+    const std::size_t first_row = fft_[0]->layout().first_row;
+    const std::size_t rows = fft_[0]->layout().rows;
+    std::vector<double> quadrant(rows * nx_);
     const std::span<std::complex<double>> sum = fft_[1]->spectrum();
     const std::size_t held = held_.columns * held_.length;
     for (std::size_t a = 0; a < 2; ++a) {
       for (std::size_t b = 0; b < 2; ++b) {
-        linalg::for_each_row(rows_, nx_, [&](std::size_t i) {
-          for (std::size_t c = 0; c < nx_; ++c) quadrant[i * nx_ + c] = value(first_row_ + i + a * ny_, c + b * nx_);
+        linalg::for_each_row(rows, nx_, [&](std::size_t i) {
+          for (std::size_t c = 0; c < nx_; ++c) quadrant[i * nx_ + c] = value(first_row + i + a * ny_, c + b * nx_);
         });
         fft_[0]->forward(quadrant);
         const std::span<const std::complex<double>> part = fft_[0]->spectrum();
@@ -122,13 +116,8 @@ class FreeSlabTransforms final : public operators::TangentialTransforms {
   }
 
  private:
-  const MpiCommunicator& comm_;
   std::size_t nx_;
   std::size_t ny_;
-  std::unique_ptr<SlabPaddedRealFft> fft_[2];
-  Columns held_;
-  std::size_t first_row_ = 0;
-  std::size_t rows_ = 0;
 };
 
 }  // namespace

@@ -3,7 +3,7 @@
 // Reynolds operators (diffusion with an upwind convection along x, the
 // diffusion switched off where the film is piezoviscous), whose residual it
 // must contract at a rate that does not grow with the grid.
-#include "../../src/lubrication/film_multigrid.hpp"
+#include "lubrication/film_multigrid.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,8 +13,8 @@
 #include <random>
 #include <vector>
 
-#include "../../src/lubrication/banded_lu.hpp"
 #include "halfspace/grid.hpp"
+#include "lubrication/banded_lu.hpp"
 
 namespace halfspace::lubrication::detail {
 namespace {

@@ -140,6 +140,36 @@ solve_case("line-free-stresses", line + ["--boundary", "free", "--stress-depths"
 solve_case("line-free-coated", line[:-len(common)] + common[2:] + [
     "--boundary", "free", "--layer-thickness", "2e-5", "--layer-E", "3e11", "--layer-nu", "0.25",
     "--substrate-E", "7e10", "--substrate-nu", "0.33"], (2, 3))
+# The dense solvers too, on a 1D grid (on a 2D one they are refused below).
+solve_case("line-free-lemke", line[:10] + ["--boundary", "free", "--solver", "lemke", "--E-star", "1e11", "--quiet"],
+           (2, 3))
+
+# The paper command (its four small line contacts): the first process runs
+# it as the serial program does, the others waiting; every column of its
+# table equals the serial one within kFieldTolerance of the column's largest
+# value.
+paper = ["paper", "--test", "4", "--no-figures", "--quiet", "--output-dir"]
+serial_paper = os.path.join(work_dir, "paper-serial")
+if harness.run([serial_program] + paper + [serial_paper]).returncode != 0:
+    fail("paper: the serial program failed")
+for processes in (2, 3):
+    paper_dir = os.path.join(work_dir, f"paper-np{processes}")
+    result = harness.run_mpi(processes, paper + [paper_dir])
+    where = f"paper, {processes} processes"
+    written = os.path.join(paper_dir, "test4.csv")
+    if result.returncode != 0 or not os.path.isfile(written):
+        fail(f"{where}: exit {result.returncode}: {result.stderr.strip()}")
+        continue
+    want = np.genfromtxt(os.path.join(serial_paper, "test4.csv"), delimiter=",", names=True)
+    got = np.genfromtxt(written, delimiter=",", names=True)
+    if got.dtype.names != want.dtype.names or got.shape != want.shape:
+        fail(f"{where}: columns {got.dtype.names} {got.shape}, serial {want.dtype.names} {want.shape}")
+        continue
+    for column in want.dtype.names:
+        scale = max(float(np.max(np.abs(want[column]))), 1e-300)
+        if float(np.max(np.abs(got[column] - want[column]))) > kFieldTolerance * scale:
+            fail(f"{where}: column {column} differs from the serial table")
+    print(f"{where}: test4.csv equals the serial program's")
 
 
 # The stress command on several processes: the first process reads the
@@ -212,8 +242,9 @@ for processes in (2, 3):
                                          "periodic", "--mean-pressure", "1e6", "--solver", "pk-fourier"] + common,
                  "no-such-map.h5", missing)
     failure_case("invalid option", processes, hertz + ["--solver", "pk-fourier", "--tol", "2"], "tol", missing)
-    failure_case("not distributed yet", processes, hertz + ["--solver", "lemke"],
-                 "type = lemke is not available with more than one process yet", missing)
+    failure_case("dense solver on slabs", processes, hertz + ["--solver", "lemke"],
+                 "type = lemke is not available on slabs of a 2D grid: the dense solvers assemble the whole "
+                 "influence matrix", missing)
     failure_case("mixed precision not distributed yet", processes,
                  hertz + ["--solver", "pk-fourier", "--precision", "mixed"],
                  "precision = mixed is not available with more than one process yet", missing)

@@ -8,6 +8,7 @@ failures the script reports at its end (finish).
 usage in a script: SCRIPT MPI_PROGRAM SERIAL_PROGRAM MPIEXEC SOURCE_DIR WORK_DIR
 """
 import os
+import shutil
 import subprocess
 import sys
 
@@ -36,7 +37,11 @@ class Harness:
     def __init__(self, argv):
         self.arguments = argv[1:6]
         self.mpi_program, self.serial_program, self.mpiexec, self.source_dir, self.work_dir = self.arguments
-        os.makedirs(self.work_dir, exist_ok=True)
+        # A fresh directory each run: a file an earlier, failed run left
+        # behind (the output a refusal case must not write) would fail this
+        # run's cases too.
+        shutil.rmtree(self.work_dir, ignore_errors=True)
+        os.makedirs(self.work_dir)
         self.environment = dict(os.environ, OMP_NUM_THREADS="1", OMPI_ALLOW_RUN_AS_ROOT="1",
                                 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1", OMPI_MCA_rmaps_base_oversubscribe="1",
                                 HALFSPACE_FFTW_WISDOM="off")
@@ -65,6 +70,7 @@ class Harness:
             self.fail(f"{where}: expected one error line containing {message!r}, got {errors}")
         if os.path.exists(output):
             self.fail(f"{where}: the output {output} was written")
+            os.remove(output)  # so that the next case is judged on its own
         print(f"{where}: {errors[0] if errors else result.stderr.strip()}")
 
     def temporaries(self):

@@ -144,6 +144,7 @@ def failure_case(name, processes, arguments, message, output, same_message=True)
         fail(f"{where}: error {errors}, serial {serial_errors}")
     if os.path.isfile(output):
         fail(f"{where}: the output {output} was written")
+        os.remove(output)  # so that the next case is judged on its own
     if leftovers():
         fail(f"{where}: temporaries left behind: {leftovers()}")
     print(f"{where}: {errors[0] if errors else result.stderr.strip()}")

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "halfspace/grid.hpp"
+#include "halfspace/linalg/communicator.hpp"
 
 namespace halfspace::analysis {
 
@@ -32,5 +33,11 @@ std::vector<std::int64_t> contact_cluster_sizes(const Grid& grid, std::span<cons
 // converged solve leaves rounding-level negative gaps in contact). Throws
 // InputError if the fields do not match the grid.
 ContactStatistics contact_statistics(const Grid& grid, std::span<const double> pressure, std::span<const double> gap);
+
+// The same from this process's part of the fields (its cells of a grid
+// spread over the processes of `comm`, the sums reduced over them) and the
+// `cluster_sizes` found by the caller.
+ContactStatistics contact_statistics(const Grid& grid, std::span<const double> pressure, std::span<const double> gap,
+                                     const linalg::Communicator& comm, std::vector<std::int64_t> cluster_sizes);
 
 }  // namespace halfspace::analysis

@@ -7,6 +7,7 @@
 #include <mpi.h>
 
 #include <span>
+#include <string>
 #include <vector>
 
 #include "halfspace/linalg/communicator.hpp"
@@ -43,5 +44,8 @@ class MpiCommunicator final : public linalg::Communicator {
 // Throws std::runtime_error naming `call` unless `code` is MPI_SUCCESS (MPI's
 // default handler aborts first; this is for communicators that return).
 void check(int code, const char* call);
+
+// The first process's `text` on every process. Collective.
+void broadcast(const MpiCommunicator& comm, std::string& text);
 
 }  // namespace halfspace::mpi

@@ -1,8 +1,9 @@
 // Rows of a distributed (ny, nx) field fetched by the processes that need
 // them from those that hold them: the restriction and prolongation between
 // the slabs of two grids of a multilevel solve, whose row boundaries need
-// not line up, move only the rows a process does not hold itself. Compiled
-// only with HALFSPACE_MPI.
+// not line up, move only the rows a process does not hold itself; a whole
+// field on the first process handed out in slabs; a slab's neighbouring
+// rows. Compiled only with HALFSPACE_MPI.
 #pragma once
 
 #include <cstddef>
@@ -30,5 +31,11 @@ struct RowRanges {
 // slabs in rank order, or all rows on every process (then nothing travels).
 void fetch_rows(const MpiCommunicator& comm, std::size_t nx, const RowRanges& held, std::span<const double> local,
                 const RowRanges& wanted, std::span<double> out);
+
+// Collective. The first process's `whole` field (every row, nx values each;
+// empty elsewhere) handed out: each process receives its rows from
+// `first_row` on into `local`.
+void scatter_rows(const MpiCommunicator& comm, std::size_t nx, std::span<const double> whole, std::size_t first_row,
+                  std::span<double> local);
 
 }  // namespace halfspace::mpi
