@@ -456,6 +456,35 @@ int run_mixed(const LubricateOptions& o, const HeightMap& map, const Grid& grid,
   return code;
 }
 
+// The summary of a rigid film (its own solve's status and counts; a
+// transient run replaces them with the whole run's).
+lubrication::FilmSummary rigid_summary(const lubrication::LubricatedFilm& film, const HeightMap& map,
+                                       const lubrication::FlowConditions& conditions,
+                                       std::chrono::steady_clock::time_point started) {
+  const lubrication::FilmForces& f = film.forces;
+  lubrication::FilmSummary summary;
+  summary.model = "rigid";
+  summary.status = std::string(lubrication::to_string(film.solution.status));
+  summary.message = film.solution.message;
+  summary.load = f.load;
+  summary.mean_pressure = f.mean_pressure;
+  summary.separation = film.separation;
+  Eigen::Index centre = 0;
+  map.heights.maxCoeff(&centre);
+  summary.central_film_thickness = film.film[centre];
+  summary.minimum_film_thickness = f.minimum_film_thickness;
+  summary.max_pressure = film.solution.pressure.maxCoeff();
+  summary.cavitated_fraction = f.cavitated_fraction;
+  summary.viscosity = conditions.viscosity;
+  summary.iterations = film.solution.iterations;
+  summary.film_solves = film.film_solves;
+  summary.relative_residual = film.solution.relative_residual;
+  summary.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  summary.inflow = f.inflow;
+  summary.outflow = f.outflow;
+  return summary;
+}
+
 // The rigid film stepped in time: each step's fields under /steps, the
 // last step as the file's single film, the history as CSV beside it.
 int run_transient(const LubricateOptions& o, const HeightMap& map, const Grid& grid,
@@ -479,27 +508,11 @@ int run_transient(const LubricateOptions& o, const HeightMap& map, const Grid& g
       },
       [&](const io::Hdf5Node& root) {
         const lubrication::LubricatedFilm& film = last.film;
-        const lubrication::FilmForces& f = film.forces;
-        lubrication::FilmSummary summary;
-        summary.model = "rigid";
+        lubrication::FilmSummary summary = rigid_summary(film, map, conditions, started);
         summary.status = std::string(lubrication::to_string(outcome.status));
         summary.message = outcome.message;
-        summary.load = f.load;
-        summary.mean_pressure = f.mean_pressure;
-        summary.separation = film.separation;
-        Eigen::Index centre = 0;
-        map.heights.maxCoeff(&centre);
-        summary.central_film_thickness = film.film[centre];
-        summary.minimum_film_thickness = f.minimum_film_thickness;
-        summary.max_pressure = film.solution.pressure.maxCoeff();
-        summary.cavitated_fraction = f.cavitated_fraction;
-        summary.viscosity = conditions.viscosity;
         summary.iterations = sweeps;
         summary.film_solves = solves;
-        summary.relative_residual = film.solution.relative_residual;
-        summary.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-        summary.inflow = f.inflow;
-        summary.outflow = f.outflow;
         const lubrication::FilmShear shear = lubrication::film_shear(
             grid, conditions, {}, problem.limits, film.film, film.solution.pressure, film.solution.fluid_fraction);
         add_shear(summary, shear);
@@ -601,27 +614,7 @@ int solve_film(const LubricateOptions& o) {
           ? lubrication::lubricate_at_load(grid, map.heights, conditions, *problem.load_control, problem.cavitation)
           : lubrication::lubricate_at_separation(grid, map.heights, conditions, *problem.separation,
                                                  problem.cavitation);
-  const lubrication::FilmForces& f = film.forces;
-  lubrication::FilmSummary summary;
-  summary.model = "rigid";
-  summary.status = std::string(lubrication::to_string(film.solution.status));
-  summary.message = film.solution.message;
-  summary.load = f.load;
-  summary.mean_pressure = f.mean_pressure;
-  summary.separation = film.separation;
-  Eigen::Index centre = 0;
-  map.heights.maxCoeff(&centre);
-  summary.central_film_thickness = film.film[centre];
-  summary.minimum_film_thickness = f.minimum_film_thickness;
-  summary.max_pressure = film.solution.pressure.maxCoeff();
-  summary.cavitated_fraction = f.cavitated_fraction;
-  summary.viscosity = conditions.viscosity;
-  summary.iterations = film.solution.iterations;
-  summary.film_solves = film.film_solves;
-  summary.relative_residual = film.solution.relative_residual;
-  summary.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  summary.inflow = f.inflow;
-  summary.outflow = f.outflow;
+  lubrication::FilmSummary summary = rigid_summary(film, map, conditions, started);
   const lubrication::FilmShear shear = lubrication::film_shear(grid, conditions, {}, limits, film.film,
                                                                film.solution.pressure, film.solution.fluid_fraction);
   add_shear(summary, shear);

@@ -223,21 +223,13 @@ def _optional_float(value, name: str) -> Optional[float]:
     return float(value)
 
 
-def _speeds(speeds) -> Optional[list]:
-    if speeds is None:
+def _sequence(values, message: str) -> Optional[list]:
+    """A non-empty 1D sequence of floats, or None; InputError(message) otherwise."""
+    if values is None:
         return None
-    array = np.atleast_1d(np.asarray(speeds, dtype=np.float64))
+    array = np.atleast_1d(np.asarray(values, dtype=np.float64))
     if array.ndim != 1 or array.size == 0:
-        raise _core.InputError("speeds must be a sequence of entrainment speeds (m/s)")
-    return [float(v) for v in array]
-
-
-def _separations(history) -> Optional[list]:
-    if history is None:
-        return None
-    array = np.atleast_1d(np.asarray(history, dtype=np.float64))
-    if array.ndim != 1 or array.size == 0:
-        raise _core.InputError("separation_history must be a sequence of separations (m), one a step")
+        raise _core.InputError(message)
     return [float(v) for v in array]
 
 
@@ -282,9 +274,12 @@ def _arguments(surface, *, viscosity: float, entrainment_velocity: Velocity,
         _optional_float(eyring_stress, "eyring_stress"), _optional_float(limiting_shear_stress, "limiting_shear_stress"),
         _optional_float(limiting_shear_slope, "limiting_shear_slope"),
         bool(mixed), _optional_float(offset, "offset"), _optional_float(contact_friction, "contact_friction"),
-        _optional_float(boundary_film, "boundary_film"), _speeds(speeds), _optional_float(time_step, "time_step"),
-        None if steps is None else int(steps), time_scheme, _optional_float(approach_velocity, "approach_velocity"),
-        _separations(separation_history), None if threads is None else int(threads))
+        _optional_float(boundary_film, "boundary_film"),
+        _sequence(speeds, "speeds must be a sequence of entrainment speeds (m/s)"),
+        _optional_float(time_step, "time_step"), None if steps is None else int(steps), time_scheme,
+        _optional_float(approach_velocity, "approach_velocity"),
+        _sequence(separation_history, "separation_history must be a sequence of separations (m), one a step"),
+        None if threads is None else int(threads))
 
 
 def _called(name: str, surface, keywords: dict, speeds=None, **fixed) -> tuple:

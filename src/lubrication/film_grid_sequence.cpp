@@ -8,15 +8,11 @@
 #include <cmath>
 #include <optional>
 
-#include "halfspace/operators/coarsened_influence_operator.hpp"
 #include "halfspace/solvers/grid_transfer.hpp"
 
 namespace halfspace::lubrication {
 
 namespace {
-
-// Cells per axis below which no coarser grid is made.
-constexpr std::size_t kSequencingMinCells = 8;
 
 // The film on the grid of twice the spacing, interpolated onto op's grid as
 // a Newton start, or nothing if there is no coarser grid, its film did not
@@ -26,30 +22,27 @@ std::optional<ElasticFilm> sequenced_start(InfluenceOperator& op, const Eigen::A
                                            const FlowConditions& conditions, const LubricantLaws& laws,
                                            const ElasticFilmOptions& options, bool converged_only,
                                            ElasticFilm& record) {
-  const Grid& grid = op.grid();
-  const std::optional<Grid> coarse = solvers::coarser_grid(grid, kSequencingMinCells);
+  const std::optional<ElasticFilm> coarse = detail::solve_on_coarser_grid(
+      op, gap, options,
+      [&](InfluenceOperator& coarse_op, const Eigen::ArrayXd& coarse_gap, const ElasticFilmOptions& coarse_options) {
+        return solve_elastic_film(coarse_op, coarse_gap, conditions, laws, coarse_options);
+      },
+      record);
   if (!coarse) return std::nullopt;
-  CoarsenedInfluenceOperator coarse_op(op, *coarse);
-  Eigen::ArrayXd coarse_gap(static_cast<Eigen::Index>(coarse->size()));
-  solvers::restrict_by_average(grid, {gap.data(), grid.size()}, {coarse_gap.data(), coarse->size()});
-  ElasticFilmOptions coarse_options = options;
-  coarse_options.tolerance = std::max(options.tolerance, kSequencingCoarseTolerance);
-  coarse_options.load_tolerance = std::max(options.load_tolerance, kSequencingCoarseTolerance);
-  const ElasticFilm film = solve_elastic_film(coarse_op, coarse_gap, conditions, laws, coarse_options);
-  record.coarse_levels = 1 + film.coarse_levels;
-  if (!film.converged()) record.message = film.message;
-  record.coarse_iterations = film.iterations + film.coarse_iterations;
-  record.coarse_krylov_iterations = film.krylov_iterations + film.coarse_krylov_iterations;
+  const ElasticFilm& film = *coarse;
+  const Grid& grid = op.grid();
+  const auto coarse_size = solvers::coarser_grid(grid, detail::kSequencingMinCells)->size();
+  const auto coarse_n = static_cast<Eigen::Index>(coarse_size);
   if (converged_only && !film.converged()) return std::nullopt;
-  if (film.pressure.size() != coarse_gap.size() || !film.pressure.allFinite() ||
-      film.fluid_fraction.size() != coarse_gap.size() || !film.fluid_fraction.allFinite()) {
+  if (film.pressure.size() != coarse_n || !film.pressure.allFinite() || film.fluid_fraction.size() != coarse_n ||
+      !film.fluid_fraction.allFinite()) {
     return std::nullopt;
   }
   ElasticFilm start;
   start.pressure.resize(static_cast<Eigen::Index>(grid.size()));
   start.fluid_fraction.resize(start.pressure.size());
-  solvers::prolong_bilinear(grid, {film.pressure.data(), coarse->size()}, {start.pressure.data(), grid.size()});
-  solvers::prolong_bilinear(grid, {film.fluid_fraction.data(), coarse->size()},
+  solvers::prolong_bilinear(grid, {film.pressure.data(), coarse_size}, {start.pressure.data(), grid.size()});
+  solvers::prolong_bilinear(grid, {film.fluid_fraction.data(), coarse_size},
                             {start.fluid_fraction.data(), grid.size()});
   // The coarse film's h0 carries over: the coarse gap is the fine one's
   // block average and the coarse K the fine one's.

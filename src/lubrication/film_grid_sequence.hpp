@@ -6,14 +6,46 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <algorithm>
+#include <optional>
 #include <span>
 
 #include "film_krylov_solver.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/lubrication/elastic_film.hpp"
+#include "halfspace/operators/coarsened_influence_operator.hpp"
 #include "halfspace/operators/influence_operator.hpp"
+#include "halfspace/solvers/grid_transfer.hpp"
 
 namespace halfspace::lubrication::detail {
+
+// Cells per axis below which no coarser grid is made.
+inline constexpr std::size_t kSequencingMinCells = 8;
+
+// The film `solve(coarse_op, coarse_gap, coarse_options)` gives on the grid
+// of twice op's spacing: its operator R K P seen through op, its gap the
+// block average of `gap`, its tolerances at least kSequencingCoarseTolerance.
+// Its work is added to `record` (and its message, if it failed). Nothing if
+// op's grid has no coarser grid. Shared by the EHL and the mixed film.
+template <class Film, class Options, class Solve>
+std::optional<Film> solve_on_coarser_grid(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Options& options,
+                                          Solve&& solve, Film& record) {
+  const Grid& grid = op.grid();
+  const std::optional<Grid> coarse = solvers::coarser_grid(grid, kSequencingMinCells);
+  if (!coarse) return std::nullopt;
+  CoarsenedInfluenceOperator coarse_op(op, *coarse);
+  Eigen::ArrayXd coarse_gap(static_cast<Eigen::Index>(coarse->size()));
+  solvers::restrict_by_average(grid, {gap.data(), grid.size()}, {coarse_gap.data(), coarse->size()});
+  Options coarse_options = options;
+  coarse_options.tolerance = std::max(options.tolerance, kSequencingCoarseTolerance);
+  coarse_options.load_tolerance = std::max(options.load_tolerance, kSequencingCoarseTolerance);
+  Film film = solve(coarse_op, coarse_gap, coarse_options);
+  record.coarse_levels = 1 + film.coarse_levels;
+  if (!film.converged()) record.message = film.message;
+  record.coarse_iterations = film.iterations + film.coarse_iterations;
+  record.coarse_krylov_iterations = film.krylov_iterations + film.coarse_krylov_iterations;
+  return film;
+}
 
 // The Newton iteration of solve_elastic_film on the operator's grid alone
 // (no grid sequencing): from `start` if it holds a film of this grid, else

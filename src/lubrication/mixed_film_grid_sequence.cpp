@@ -13,7 +13,7 @@
 #include <chrono>
 #include <optional>
 
-#include "halfspace/operators/coarsened_influence_operator.hpp"
+#include "film_grid_sequence.hpp"
 #include "halfspace/solvers/grid_transfer.hpp"
 #include "halfspace/solvers/polonsky_keer.hpp"
 
@@ -21,8 +21,6 @@ namespace halfspace::lubrication {
 
 namespace {
 
-// Cells per axis below which no coarser grid is made.
-constexpr std::size_t kSequencingMinCells = 8;
 // The faster films tried where the fine iteration fails from the coarse one.
 constexpr double kSequencedSpeedUp = 4.0;
 constexpr double kSequencedFastest = 64.0;
@@ -37,28 +35,20 @@ constexpr int kSequencedFirstSteps = 60;
 std::optional<MixedFilm> sequenced_start(InfluenceOperator& op, const Eigen::ArrayXd& gap,
                                          const FlowConditions& conditions, const LubricantLaws& laws,
                                          const MixedFilmOptions& options, MixedFilm& record) {
+  const std::optional<MixedFilm> coarse = detail::solve_on_coarser_grid(
+      op, gap, options,
+      [&](InfluenceOperator& coarse_op, const Eigen::ArrayXd& coarse_gap, const MixedFilmOptions& coarse_options) {
+        return solve_mixed_film(coarse_op, coarse_gap, conditions, laws, coarse_options);
+      },
+      record);
+  if (!coarse || !coarse->converged()) return std::nullopt;
+  const MixedFilm& film = *coarse;
   const Grid& grid = op.grid();
-  const std::optional<Grid> coarse = solvers::coarser_grid(grid, kSequencingMinCells);
-  if (!coarse) return std::nullopt;
-  CoarsenedInfluenceOperator coarse_op(op, *coarse);
-  const auto coarse_n = static_cast<Eigen::Index>(coarse->size());
-  Eigen::ArrayXd coarse_gap(coarse_n);
-  solvers::restrict_by_average(grid, {gap.data(), grid.size()}, {coarse_gap.data(), coarse->size()});
-  MixedFilmOptions coarse_options = options;
-  coarse_options.tolerance = std::max(options.tolerance, kSequencingCoarseTolerance);
-  coarse_options.load_tolerance = std::max(options.load_tolerance, kSequencingCoarseTolerance);
-  const MixedFilm film = solve_mixed_film(coarse_op, coarse_gap, conditions, laws, coarse_options);
-  record.coarse_levels = 1 + film.coarse_levels;
-  record.coarse_iterations = film.iterations + film.coarse_iterations;
-  record.coarse_krylov_iterations = film.krylov_iterations + film.coarse_krylov_iterations;
-  if (!film.converged()) {
-    record.message = film.message;
-    return std::nullopt;
-  }
+  const auto coarse_size = solvers::coarser_grid(grid, detail::kSequencingMinCells)->size();
   MixedFilm start;
   const auto prolong = [&](const Eigen::ArrayXd& coarse_values, Eigen::ArrayXd& fine_values) {
     fine_values.resize(static_cast<Eigen::Index>(grid.size()));
-    solvers::prolong_bilinear(grid, {coarse_values.data(), coarse->size()}, {fine_values.data(), grid.size()});
+    solvers::prolong_bilinear(grid, {coarse_values.data(), coarse_size}, {fine_values.data(), grid.size()});
   };
   prolong(film.fluid_pressure, start.fluid_pressure);
   prolong(film.fluid_fraction, start.fluid_fraction);

@@ -275,7 +275,7 @@ TEST(ResultWriterTest, ChunksLargeProfileInEqualPieces) {
 // temporary left beside it.
 TEST(ResultWriterTest, WritesAResultAboveTheInMemoryLimitInPlace) {
   const TempDir dir;
-  const Grid grid = Grid::plane(1200, 1100, 1e-6, 1e-6, Boundary::periodic);
+  const Grid grid = Grid::plane(1300, 1200, 1e-6, 1e-6, Boundary::periodic);
   const SolveResult result = make_result(grid, 3);
   const ResultMetadata metadata = make_metadata();
   ASSERT_GT(result_file_bound(grid, result, metadata), kInMemoryResultBytes);
