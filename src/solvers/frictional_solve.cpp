@@ -234,9 +234,16 @@ double friction_memory_estimate(const Grid& grid, std::size_t steps) {
   // Per cell: the operator's padded symbols and transforms (about 4 padded
   // cells of complex values per field on free grids), about 224 bytes; the
   // solver's workspace (mu p and six pairs of fields) and the step being
-  // solved, about 100; each kept step's six fields and stick map, 56.
+  // solved, about 100; each kept step's six fields and stick map, 56. A
+  // history of several steps is written from a file image assembled in
+  // memory (io/friction_history_writer.cpp), held twice while copied out:
+  // the kept steps' fields and the normal result's (33), uncompressed at
+  // worst. One step is written as a result, in place when large
+  // (io::kInMemoryResultBytes), so the solve's estimate covers it.
   const auto cells = static_cast<double>(grid.size());
-  return cells * (324.0 + 56.0 * static_cast<double>(steps));
+  const auto kept = static_cast<double>(steps);
+  const double image = steps > 1 ? 2.0 * (33.0 + 56.0 * kept) : 0.0;
+  return cells * (324.0 + 56.0 * kept + image);
 }
 
 }  // namespace halfspace::solvers

@@ -76,7 +76,8 @@ std::vector<TangentialResult> solve_tangential_history(const Grid& grid, const E
 // Bytes a frictional solve adds to the normal one's peak on `grid` with
 // `steps` tangential steps kept for writing: the tangential operator's padded
 // symbols and transforms, the solver's workspace, and per kept step its
-// state (six fields) and stick map.
+// state (six fields) and stick map; for a history of several steps, its file
+// image assembled in memory.
 double friction_memory_estimate(const Grid& grid, std::size_t steps);
 
 }  // namespace halfspace::solvers
