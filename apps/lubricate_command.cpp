@@ -22,7 +22,9 @@
 #include <vector>
 
 #include "exit_codes.hpp"
+#include "grid_options.hpp"
 #include "halfspace/error.hpp"
+#include "halfspace/geometry/builtin_surface.hpp"
 #include "halfspace/io/film_history_writer.hpp"
 #include "halfspace/io/friction_history_writer.hpp"
 #include "halfspace/io/hdf5_output.hpp"
@@ -50,6 +52,8 @@ namespace {
 // checks) and the program's own: the files and how to report.
 struct LubricateOptions : GivenOptions, lubrication::LubricationProblemOptions {
   std::optional<std::string> height_map;
+  std::optional<std::string> geometry, grid, size;
+  std::optional<double> radius, wavelength, amplitude;
   std::optional<std::string> window, invalid, detrend;
   std::optional<std::string> roughness;
   std::optional<std::string> stribeck;
@@ -60,6 +64,7 @@ struct LubricateOptions : GivenOptions, lubrication::LubricationProblemOptions {
 
 using LubricateOption = OptionSpec<LubricateOptions>;
 using Kind = OptionKind;
+constexpr std::string_view kSurface = "Surface (exactly one of --height-map, --geometry)";
 constexpr std::string_view kFilm = "Film";
 constexpr std::string_view kElastic = "Elastic film (EHL)";
 constexpr std::string_view kMixed = "Mixed lubrication";
@@ -67,16 +72,28 @@ constexpr std::string_view kTransient = "Transient film (rigid)";
 constexpr std::string_view kOutput = "Output";
 
 const std::array kOptions{
-    LubricateOption{"height-map", &LubricateOptions::height_map, Kind::path, kFilm, "FILE",
-                    "the rigid surface's heights (any format solve reads; spacing from the file) (required)"},
-    LubricateOption{"window", &LubricateOptions::window, Kind::text, kFilm, "I0,J0,NX,NY",
+    LubricateOption{"height-map", &LubricateOptions::height_map, Kind::path, kSurface, "FILE",
+                    "the surface's heights against a flat (any format solve reads; spacing from the file)"},
+    LubricateOption{"window", &LubricateOptions::window, Kind::text, kSurface, "I0,J0,NX,NY",
                     "use only columns I0..I0+NX-1 and rows J0..J0+NY-1 of --height-map (0-based; I0,NX for a "
                     "profile), as solve's"},
-    LubricateOption{"invalid", &LubricateOptions::invalid, Kind::text, kFilm, "MODE",
+    LubricateOption{"invalid", &LubricateOptions::invalid, Kind::text, kSurface, "MODE",
                     "invalid points of --height-map: refuse, fill (harmonic) or crop [refuse]"},
-    LubricateOption{"detrend", &LubricateOptions::detrend, Kind::text, kFilm, "MODE",
+    LubricateOption{"detrend", &LubricateOptions::detrend, Kind::text, kSurface, "MODE",
                     "subtract a least-squares fit from --height-map (after --window): none, mean, plane or "
                     "curvature [none]"},
+    LubricateOption{"geometry", &LubricateOptions::geometry, Kind::text, kSurface, "SHAPE",
+                    "a built-in surface instead of --height-map: sphere, cylinder, wavy or flat (as solve's)"},
+    LubricateOption{"radius", &LubricateOptions::radius, Kind::number, kSurface, "M",
+                    "radius of the sphere or cylinder (m)"},
+    LubricateOption{"wavelength", &LubricateOptions::wavelength, Kind::number, kSurface, "M",
+                    "wavelength of the wavy surface (m)"},
+    LubricateOption{"amplitude", &LubricateOptions::amplitude, Kind::number, kSurface, "M",
+                    "amplitude of the wavy surface (m)"},
+    LubricateOption{"grid", &LubricateOptions::grid, Kind::text, kSurface, "N|NXxNY",
+                    "cells of a built-in geometry: N (1D) or NXxNY (2D)"},
+    LubricateOption{"size", &LubricateOptions::size, Kind::text, kSurface, "L|LXxLY",
+                    "domain of a built-in geometry (m), centred on its apex; spacing = L / N"},
     LubricateOption{"viscosity", &LubricateOptions::viscosity, Kind::number, kFilm, "PA_S",
                     "lubricant viscosity (Pa s) (required)"},
     LubricateOption{"entrainment-velocity", &LubricateOptions::entrainment_velocity, Kind::numbers, kFilm, "UX[,UY]",
@@ -145,7 +162,7 @@ const std::array kOptions{
     LubricateOption{"mixed", &LubricateOptions::mixed, Kind::flag, kMixed, "",
                     "the elastic film may close: asperities in contact carry a contact pressure (needs --E-star)"},
     LubricateOption{"roughness", &LubricateOptions::roughness, Kind::path, kMixed, "FILE",
-                    "heights added to --height-map's (same points and spacing): a rough profile on the contact"},
+                    "heights added to the surface's (same points and spacing): a rough profile on the contact"},
     LubricateOption{"offset", &LubricateOptions::offset, Kind::number, kMixed, "M",
                     "separation control of the mixed film: h0 of h = h0 + gap + K p (m), instead of --force"},
     LubricateOption{"contact-friction", &LubricateOptions::contact_friction, Kind::number, kMixed, "MU",
@@ -258,14 +275,14 @@ void write_film_file(const LubricateOptions& o, const HeightMap& map, const Grid
   });
 }
 
-int report(const LubricateOptions& o, const lubrication::FilmSummary& summary, bool converged) {
+int report(const LubricateOptions& o, const HeightMap& map, const lubrication::FilmSummary& summary, bool converged) {
   if (!converged) {
     fmt::print(stderr, "warning: {}; the result is written to {}\n", summary.message, *o.output);
     return kExitNotConverged;
   }
   if (o.quiet) return kExitOk;
   fmt::print("halfspace {} ({}) lubricate\n", kVersion, kGitHash);
-  fmt::print("  {:<15} {}\n", "surface", *o.height_map);
+  fmt::print("  {:<15} {}\n", "surface", map.source);
   fmt::print("  {:<15} {}\n", "film", summary.model);
   fmt::print("  {:<15} {:.6g} ({} {})\n", "load", summary.load, summary.iterations,
              summary.model == "rigid" ? "sweeps" : "Newton steps");
@@ -329,7 +346,7 @@ int run_elastic(const LubricateOptions& o, const HeightMap& map, const Grid& gri
     write_shear(root, map.dimension == 1 ? std::vector<std::size_t>{map.nx} : std::vector<std::size_t>{map.ny, map.nx},
                 shear, limits);
   });
-  return report(o, summary, film.converged());
+  return report(o, map, summary, film.converged());
 }
 
 // The film's fields and the mixed film's own attributes, beyond the summary's.
@@ -447,7 +464,7 @@ int run_mixed(const LubricateOptions& o, const HeightMap& map, const Grid& grid,
     root.write_double_attribute("entrainment_speed",
                                 std::hypot(used.entrainment_velocity[0], used.entrainment_velocity[1]));
   });
-  const int code = report(o, summary, all_converged);
+  const int code = report(o, map, summary, all_converged);
   if (code == kExitOk && !o.quiet) {
     fmt::print("  {:<15} {:.4g} of the load, area {:.4g} of the cells\n", "contact", film.contact_load_fraction,
                film.contact_area_fraction);
@@ -540,7 +557,7 @@ int run_transient(const LubricateOptions& o, const HeightMap& map, const Grid& g
   }
   if (o.quiet) return kExitOk;
   fmt::print("halfspace {} ({}) lubricate\n", kVersion, kGitHash);
-  fmt::print("  {:<15} {}\n", "surface", *o.height_map);
+  fmt::print("  {:<15} {}\n", "surface", map.source);
   fmt::print("  {:<15} rigid, {} steps of {:.6g} s ({})\n", "film", transient.steps, transient.time_step,
              lubrication::to_string(transient.scheme));
   fmt::print("  {:<15} t {:.6g} s: separation {:.6g} m, load {:.6g}\n", "last step", last.time, last.film.separation,
@@ -565,17 +582,10 @@ void add_roughness(const std::string& path, HeightMap& map) {
   map.heights += rough.heights;
 }
 
-int solve_film(const LubricateOptions& o) {
-  if (!o.height_map) throw InputError("no surface given: pass --height-map FILE");
-  const LubricateSpelling flags(o);
-  const lubrication::LubricationProblem problem = lubrication::make_lubrication_problem(o, flags);
-  if (o.speeds.has_value() != o.stribeck.has_value()) {
-    throw InputError("--speeds and --stribeck go together: the sweep's speeds and its CSV file");
-  }
-  if (!o.output) throw InputError("no output file given: pass --output FILE.h5");
-  io::check_output_path(*o.output);
-  if (o.stribeck) io::check_output_path(*o.stribeck);
-
+// The surface against the flat: a height map, prepared as solve prepares
+// one, or a built-in shape on --grid and --size (grid_options.hpp), centred
+// on the domain as solve --geometry's.
+HeightMap read_film_surface(const LubricateOptions& o) {
   HeightMap map = io::read_height_map(*o.height_map);
   if (o.window || o.invalid || o.detrend) {
     // The library's preparation (solve's): window, invalid points, detrending.
@@ -599,10 +609,68 @@ int solve_film(const LubricateOptions& o) {
   if (!(map.dx > 0.0) || (map.dimension == 2 && !(map.dy > 0.0))) {
     throw InputError(fmt::format("{} does not give its spacing: a film needs dx (and dy) in metres", *o.height_map));
   }
+  return map;
+}
+
+HeightMap builtin_film_surface(const LubricateOptions& o, Boundary boundary) {
+  for (const auto& [key, given] : {std::pair<std::string_view, bool>{"window", o.window.has_value()},
+                                   {"invalid", o.invalid.has_value()},
+                                   {"detrend", o.detrend.has_value()}}) {
+    if (given) throw InputError(fmt::format("{} applies only to --height-map, not to --geometry", o.name(key)));
+  }
+  if (!o.grid) throw InputError("--geometry needs --grid N (1D) or NXxNY (2D)");
+  if (!o.size) throw InputError("--geometry needs --size L or LXxLY (domain size in m)");
+  const geometry::SurfaceShape shape =
+      in_context(o.name("geometry"), [&] { return geometry::parse_surface_shape(*o.geometry); });
+  BuiltinShape made = builtin_shape_from(o, "geometry", shape, o.radius, o.wavelength, o.amplitude);
+  const Grid grid = grid_from_options(*o.grid, o.describe("grid"), *o.size, o.describe("size"), boundary);
+  HeightMap map;
+  map.dimension = grid.dimension();
+  map.nx = grid.nx();
+  map.ny = grid.ny();
+  map.dx = grid.dx();
+  map.dy = grid.dimension() == 2 ? grid.dy() : 0.0;
+  map.heights = geometry::make_surface_heights(grid, made.spec);
+  map.source = std::move(made.source);
+  return map;
+}
+
+HeightMap film_surface(const LubricateOptions& o, Boundary boundary) {
+  if (o.height_map.has_value() == o.geometry.has_value()) {
+    throw InputError(o.height_map ? "--height-map and --geometry are two surfaces: give one"
+                                  : "no surface given: pass --height-map FILE or --geometry SHAPE");
+  }
+  if (o.height_map) {
+    for (const auto& [key, given] : {std::pair<std::string_view, bool>{"grid", o.grid.has_value()},
+                                     {"size", o.size.has_value()},
+                                     {"radius", o.radius.has_value()},
+                                     {"wavelength", o.wavelength.has_value()},
+                                     {"amplitude", o.amplitude.has_value()}}) {
+      if (given) {
+        throw InputError(fmt::format("{} applies only to --geometry; --height-map {} brings its own grid", o.name(key),
+                                     *o.height_map));
+      }
+    }
+    return read_film_surface(o);
+  }
+  return builtin_film_surface(o, boundary);
+}
+
+int solve_film(const LubricateOptions& o) {
+  const LubricateSpelling flags(o);
+  const lubrication::LubricationProblem problem = lubrication::make_lubrication_problem(o, flags);
+  if (o.speeds.has_value() != o.stribeck.has_value()) {
+    throw InputError("--speeds and --stribeck go together: the sweep's speeds and its CSV file");
+  }
+  if (!o.output) throw InputError("no output file given: pass --output FILE.h5");
+  io::check_output_path(*o.output);
+  if (o.stribeck) io::check_output_path(*o.stribeck);
+
+  HeightMap map = film_surface(o, problem.boundary);
   if (o.roughness) add_roughness(*o.roughness, map);
   const Grid grid = map.dimension == 1 ? Grid::line(map.nx, map.dx, problem.boundary)
                                        : Grid::plane(map.nx, map.ny, map.dx, map.dy, problem.boundary);
-  problem.check_grid(grid, flags, *o.height_map);
+  problem.check_grid(grid, flags, map.source);
   if (problem.kind == lubrication::FilmKind::mixed) return run_mixed(o, map, grid, problem);
   if (problem.kind == lubrication::FilmKind::elastic) return run_elastic(o, map, grid, problem);
   if (problem.transient) return run_transient(o, map, grid, problem);
@@ -625,7 +693,7 @@ int solve_film(const LubricateOptions& o) {
                     map.dimension == 1 ? std::vector<std::size_t>{map.nx} : std::vector<std::size_t>{map.ny, map.nx},
                     shear, limits);
       });
-  return report(o, summary, film.solution.converged());
+  return report(o, map, summary, film.solution.converged());
 }
 
 // --plot: the tool is found (and its packages checked) before the solve; the
