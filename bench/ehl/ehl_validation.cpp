@@ -3,10 +3,14 @@
 // schemes and three grids; point contacts against Hamrock & Dowson (1977,
 // k = 1) on three grids; Newton steps and seconds per solve. Run with
 // OMP_NUM_THREADS=1 (the dense LU is serial); `ehl_validation quick` runs a
-// subset.
+// subset; `ehl_validation point 16,32` only the point contacts, on the
+// given cells per Hertz radius (finer grids take the GMRES path with its
+// multigrid preconditioner and grid sequencing, elastic_film.hpp).
 #include <fmt/format.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -69,31 +73,46 @@ Film point(double w, double u, double g, double cells, CouetteScheme scheme) {
 
 }  // namespace
 
+// "16,32" -> {16, 32}.
+std::vector<double> numbers(const char* text) {
+  std::vector<double> values;
+  std::string rest(text);
+  for (std::size_t start = 0; start <= rest.size();) {
+    const std::size_t comma = std::min(rest.find(',', start), rest.size());
+    values.push_back(std::atof(rest.substr(start, comma - start).c_str()));
+    start = comma + 1;
+  }
+  return values;
+}
+
 int main(int argc, char** argv) {
   const bool quick = argc > 1 && std::string_view(argv[1]) == "quick";
   const bool low = argc > 1 && std::string_view(argv[1]) == "low";
-  fmt::print("# line contact vs Pan & Hamrock 1989 (Roelands, Dowson-Higginson; x in [-4.5b, 1.5b])\n");
-  fmt::print("{:>8} {:>8} {:>6} {:>6} {:>13} {:>8} {:>8} {:>6} {:>8}\n", "W", "U", "G", "cells", "scheme", "Hc/PH",
-             "Hmin/PH", "steps", "seconds");
-  const std::vector<double> loads = low     ? std::vector<double>{1e-5}
-                                    : quick ? std::vector<double>{2e-5, 1e-4}
-                                            : std::vector<double>{1e-5, 2e-5, 5e-5, 1e-4, 2e-4};
-  const std::vector<double> speeds = quick ? std::vector<double>{1e-11} : std::vector<double>{1e-11, 3e-11};
-  const std::vector<double> materials = quick ? std::vector<double>{5000} : std::vector<double>{2500, 5000};
-  const std::vector<double> grids = low     ? std::vector<double>{32, 128}
-                                    : quick ? std::vector<double>{32}
-                                            : std::vector<double>{16, 32, 64, 128};
-  for (double w : loads) {
-    for (double u : speeds) {
-      for (double g : materials) {
-        const double pan_central = 2.922 * std::pow(w, -0.166) * std::pow(u, 0.692) * std::pow(g, 0.470);
-        const double pan_minimum = 1.714 * std::pow(w, -0.128) * std::pow(u, 0.694) * std::pow(g, 0.568);
-        for (double cells : grids) {
-          for (CouetteScheme scheme : {CouetteScheme::first_order, CouetteScheme::second_order}) {
-            const Film f = line(w, u, g, cells, scheme);
-            fmt::print("{:8.1e} {:8.1e} {:6.0f} {:6.0f} {:>13} {:8.4f} {:8.4f} {:6d} {:8.3f}{}\n", w, u, g, cells,
-                       to_string(scheme), f.central / pan_central, f.minimum / pan_minimum, f.film.iterations,
-                       f.film.wall_seconds, f.film.converged() ? "" : fmt::format("  {}", f.film.message));
+  const bool points_only = argc > 2 && std::string_view(argv[1]) == "point";
+  if (!points_only) {
+    fmt::print("# line contact vs Pan & Hamrock 1989 (Roelands, Dowson-Higginson; x in [-4.5b, 1.5b])\n");
+    fmt::print("{:>8} {:>8} {:>6} {:>6} {:>13} {:>8} {:>8} {:>6} {:>8}\n", "W", "U", "G", "cells", "scheme", "Hc/PH",
+               "Hmin/PH", "steps", "seconds");
+    const std::vector<double> loads = low     ? std::vector<double>{1e-5}
+                                      : quick ? std::vector<double>{2e-5, 1e-4}
+                                              : std::vector<double>{1e-5, 2e-5, 5e-5, 1e-4, 2e-4};
+    const std::vector<double> speeds = quick ? std::vector<double>{1e-11} : std::vector<double>{1e-11, 3e-11};
+    const std::vector<double> materials = quick ? std::vector<double>{5000} : std::vector<double>{2500, 5000};
+    const std::vector<double> grids = low     ? std::vector<double>{32, 128}
+                                      : quick ? std::vector<double>{32}
+                                              : std::vector<double>{16, 32, 64, 128};
+    for (double w : loads) {
+      for (double u : speeds) {
+        for (double g : materials) {
+          const double pan_central = 2.922 * std::pow(w, -0.166) * std::pow(u, 0.692) * std::pow(g, 0.470);
+          const double pan_minimum = 1.714 * std::pow(w, -0.128) * std::pow(u, 0.694) * std::pow(g, 0.568);
+          for (double cells : grids) {
+            for (CouetteScheme scheme : {CouetteScheme::first_order, CouetteScheme::second_order}) {
+              const Film f = line(w, u, g, cells, scheme);
+              fmt::print("{:8.1e} {:8.1e} {:6.0f} {:6.0f} {:>13} {:8.4f} {:8.4f} {:6d} {:8.3f}{}\n", w, u, g, cells,
+                         to_string(scheme), f.central / pan_central, f.minimum / pan_minimum, f.film.iterations,
+                         f.film.wall_seconds, f.film.converged() ? "" : fmt::format("  {}", f.film.message));
+            }
           }
         }
       }
@@ -104,7 +123,9 @@ int main(int argc, char** argv) {
   fmt::print("{:>8} {:>8} {:>6} {:>6} {:>8} {:>13} {:>8} {:>8} {:>6} {:>8}\n", "W", "U", "G", "cells", "nodes",
              "scheme", "Hc/HD", "Hmin/HD", "steps", "seconds");
   const std::vector<double> point_loads = quick ? std::vector<double>{3e-7} : std::vector<double>{1e-7, 3e-7, 1e-6};
-  const std::vector<double> point_grids = quick ? std::vector<double>{6} : std::vector<double>{6, 8, 10};
+  const std::vector<double> point_grids = points_only ? numbers(argv[2])
+                                          : quick     ? std::vector<double>{6}
+                                                      : std::vector<double>{6, 8, 10};
   for (double w : point_loads) {
     const double u = 1e-11, g = 5000;
     const auto [hd_central, hd_minimum] = testing::hamrock_dowson_point(u, g, w);
