@@ -20,8 +20,7 @@ using testing::kExitOk;
 using testing::ProgramRun;
 using testing::run_program;
 
-const std::vector<std::string> kFilm = {"--viscosity", "0.1", "--entrainment-velocity", "1", "--force", "2",
-                                        "--quiet"};
+const std::vector<std::string> kFilm = {"--viscosity", "0.1", "--entrainment-velocity", "1", "--force", "2", "--quiet"};
 
 std::vector<std::string> lubricate(std::vector<std::string> surface, const std::string& output) {
   std::vector<std::string> argv = {"lubricate"};
@@ -58,8 +57,8 @@ TEST(LubricateGeometryCliTest, BuiltinSphereIsTheGeneratedHeightMap) {
 TEST(LubricateGeometryCliTest, RoughnessIsAddedToTheBuiltinSurface) {
   // A flat roughness file adds nothing: the same film as without it.
   const TempDir dir;
-  ASSERT_EQ(run_program({"generate", "--kind", "flat", "--grid", "24x20", "--size", "4e-4x3e-4", "--output",
-                         "flat.h5", "--quiet"},
+  ASSERT_EQ(run_program({"generate", "--kind", "flat", "--grid", "24x20", "--size", "4e-4x3e-4", "--output", "flat.h5",
+                         "--quiet"},
                         dir.path())
                 .exit_code,
             kExitOk);
@@ -83,21 +82,20 @@ TEST(LubricateGeometryCliTest, RefusesSurfaceOptionsThatDoNotApply) {
                         dir.path())
                 .exit_code,
             kExitOk);
-  expect_input_error(run_program(lubricate({}, "f.h5"), dir.path()), {"no surface given", "--geometry"},
-                     dir / "f.h5");
+  expect_input_error(run_program(lubricate({}, "f.h5"), dir.path()), {"no surface given", "--geometry"}, dir / "f.h5");
   expect_input_error(run_program(lubricate({"--height-map", "c.h5", "--geometry", "sphere"}, "f.h5"), dir.path()),
                      {"--height-map and --geometry"}, dir / "f.h5");
   expect_input_error(run_program(lubricate({"--height-map", "c.h5", "--radius", "0.01"}, "f.h5"), dir.path()),
                      {"--radius", "applies only to --geometry"}, dir / "f.h5");
-  expect_input_error(run_program(lubricate({"--geometry", "sphere", "--radius", "0.01", "--size", "1e-3"}, "f.h5"),
-                                 dir.path()),
-                     {"--geometry needs --grid"}, dir / "f.h5");
-  expect_input_error(run_program(lubricate({"--geometry", "sphere", "--grid", "16", "--size", "1e-3"}, "f.h5"),
-                                 dir.path()),
-                     {"needs --radius"}, dir / "f.h5");
-  expect_input_error(run_program(lubricate({"--geometry", "cube", "--grid", "16", "--size", "1e-3"}, "f.h5"),
-                                 dir.path()),
-                     {"--geometry", "cube"}, dir / "f.h5");
+  expect_input_error(
+      run_program(lubricate({"--geometry", "sphere", "--radius", "0.01", "--size", "1e-3"}, "f.h5"), dir.path()),
+      {"--geometry needs --grid"}, dir / "f.h5");
+  expect_input_error(
+      run_program(lubricate({"--geometry", "sphere", "--grid", "16", "--size", "1e-3"}, "f.h5"), dir.path()),
+      {"needs --radius"}, dir / "f.h5");
+  expect_input_error(
+      run_program(lubricate({"--geometry", "cube", "--grid", "16", "--size", "1e-3"}, "f.h5"), dir.path()),
+      {"--geometry", "cube"}, dir / "f.h5");
   expect_input_error(run_program(lubricate({"--geometry", "sphere", "--radius", "0.01", "--grid", "16", "--size",
                                             "1e-3", "--detrend", "mean"},
                                            "f.h5"),
