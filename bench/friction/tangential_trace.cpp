@@ -4,9 +4,12 @@
 // the products, the stick fraction. The pressure of the normal solve is
 // kept in a file (the third argument) so that a second run skips it.
 // Usage: tangential_trace N [MAX_ITERATIONS] [PRESSURE_FILE] [EVERY] [coarse]
-// [active=UPDATES] (coarse: TangentialOptions::coarse_start on; active:
-// TangentialOptions::active_set_updates, 10 if no number is given).
-// One thread; iteration and product counts, not times, are what it is for.
+// [active=UPDATES] [block=B] [normal] (coarse: TangentialOptions::coarse_start
+// on; active: TangentialOptions::active_set_updates, 10 if no number is
+// given; block: TangentialOptions::coarse_correction_block; normal: the
+// normal solve made and timed even when the pressure file exists, for the
+// step's time against it in the same run). One thread; the counts are
+// exact, the times those of a shared machine.
 #include <fmt/format.h>
 
 #include <Eigen/Core>
@@ -39,9 +42,9 @@ constexpr double kReducedPressure = 0.04;
 constexpr double kMu = 0.3;
 constexpr double kTolerance = 1e-8;
 
-Eigen::ArrayXd normal_pressure(const Grid& grid, const ElasticPair& pair, const std::string& file) {
+Eigen::ArrayXd normal_pressure(const Grid& grid, const ElasticPair& pair, const std::string& file, bool timed) {
   Eigen::ArrayXd pressure(static_cast<Eigen::Index>(grid.size()));
-  if (!file.empty()) {
+  if (!file.empty() && !timed) {
     std::ifstream in(file, std::ios::binary);
     if (in.read(reinterpret_cast<char*>(pressure.data()), static_cast<std::streamsize>(grid.size() * sizeof(double)))) {
       return pressure;
@@ -61,8 +64,8 @@ Eigen::ArrayXd normal_pressure(const Grid& grid, const ElasticPair& pair, const 
   auto solver = solvers::make_solver(grid, e_star, settings);
   const SolveResult normal =
       solver->solve({gap.data(), grid.size()}, Loading::mean_pressure(kReducedPressure * e_star * kRmsSlope));
-  fmt::print("normal solve: {} iterations, contact {:.4f}, {}\n", normal.iterations, normal.contact_fraction,
-             normal.converged() ? "converged" : normal.message);
+  fmt::print("normal solve: {} iterations, {:.3f} s, contact {:.4f}, {}\n", normal.iterations, normal.wall_seconds,
+             normal.contact_fraction, normal.converged() ? "converged" : normal.message);
   pressure = normal.pressure;
   if (!file.empty()) {
     std::ofstream out(file, std::ios::binary);
@@ -73,9 +76,12 @@ Eigen::ArrayXd normal_pressure(const Grid& grid, const ElasticPair& pair, const 
 }
 
 void report(const char* name, const TangentialResult& r) {
-  fmt::print("{}: {} iterations, {} C products, {} M products, residual {:.3e}, stick {:.4f}, force {:.6g}, {}\n", name,
-             r.iterations, r.operator_applications, r.preconditioner_applications, r.residual, r.stick_fraction,
-             r.force_x, r.converged() ? "converged" : r.message);
+  fmt::print(
+      "{}: {} iterations, {:.3f} s, {} C products, {} M products, residual {:.3e}, stick {:.4f}, force {:.6g}, {}\n",
+      name, r.iterations, r.wall_seconds, r.operator_applications, r.preconditioner_applications, r.residual,
+      r.stick_fraction, r.force_x, r.converged() ? "converged" : r.message);
+  fmt::print("  coarse correction: {} products corrected, {} coarse iterations\n", r.coarse_corrections,
+             r.coarse_correction_iterations);
   fmt::print("  active-set phase: {} updates, {} inner iterations\n", r.active_set_updates, r.active_set_iterations);
   fmt::print(
       "  coarse: {} levels, {} iterations, worth {:.1f} C and {:.1f} M products; all products {:.1f}\n",
@@ -90,7 +96,8 @@ int main(int argc, char** argv) {
   try {
     if (argc < 2) {
       std::fprintf(stderr,
-                   "usage: tangential_trace N [MAX_ITERATIONS] [PRESSURE_FILE] [EVERY] [coarse] [active=UPDATES]\n");
+                   "usage: tangential_trace N [MAX_ITERATIONS] [PRESSURE_FILE] [EVERY] [coarse] [active=UPDATES] "
+                   "[block=B] [normal]\n");
       return 2;
     }
     const auto n = static_cast<std::size_t>(std::stoul(argv[1]));
@@ -99,20 +106,27 @@ int main(int argc, char** argv) {
     const int every = argc > 4 ? std::stoi(argv[4]) : 1;
     bool coarse = false;
     int active_set_updates = 0;
+    std::size_t block = 0;
+    bool timed = false;
     for (int a = 5; a < argc; ++a) {
       const std::string arg = argv[a];
       if (arg == "coarse") {
         coarse = true;
+      } else if (arg.starts_with("block=")) {
+        block = static_cast<std::size_t>(std::stoul(arg.substr(6)));
+      } else if (arg == "normal") {
+        timed = true;
       } else if (arg.starts_with("active")) {
         active_set_updates = arg.size() > 7 ? std::stoi(arg.substr(7)) : 10;
       } else {
-        throw std::invalid_argument("unknown argument " + arg + ": allowed are coarse and active[=UPDATES]");
+        throw std::invalid_argument("unknown argument " + arg +
+                                    ": allowed are coarse, active[=UPDATES], block=B and normal");
       }
     }
     set_threads(1);
     const Grid grid = Grid::plane(n, n, kSpacing, kSpacing, Boundary::periodic);
     const ElasticPair pair = ElasticPair::similar(kSteel);
-    const Eigen::ArrayXd pressure = normal_pressure(grid, pair, file);
+    const Eigen::ArrayXd pressure = normal_pressure(grid, pair, file, timed);
     const double load = pressure.sum() * grid.cell_area();
     TangentialOperator op(grid, pair);
     solvers::TangentialOptions options;
@@ -121,6 +135,7 @@ int main(int argc, char** argv) {
     options.max_iterations = cap;
     options.coarse_start = coarse;
     options.active_set_updates = active_set_updates;
+    options.coarse_correction_block = block;
     options.progress = [every](int iteration, double residual) {
       if (iteration % every == 0) fmt::print("  {:5d} {:.3e}\n", iteration, residual);
       std::fflush(stdout);
