@@ -32,8 +32,7 @@ bool TangentialBlockCorrection::applies(const TangentialOperator& op, std::size_
   return op.communicator().size() == 1 && op.grid().periodic() && BlockDeflation::covers(op.grid(), block);
 }
 
-TangentialBlockCorrection::TangentialBlockCorrection(TangentialOperator& op, std::size_t block,
-                                                     double coarse_tolerance)
+TangentialBlockCorrection::TangentialBlockCorrection(TangentialOperator& op, std::size_t block, double coarse_tolerance)
     : grid_(op.grid()), block_(block), coarse_tolerance_(coarse_tolerance) {
   if (!applies(op, block)) {
     throw InputError(fmt::format(
@@ -87,8 +86,7 @@ void TangentialBlockCorrection::update_components() {
   std::array<double, 3> load{};  // N^T D^-1 N
   for (std::size_t I = 0; I < m; ++I) {
     counts_[I] = xx_->block_cells(I);
-    const std::array<double, 3> d =
-        inverse(xx_->coarse_diagonal(I), xy_->coarse_diagonal(I), yy_->coarse_diagonal(I));
+    const std::array<double, 3> d = inverse(xx_->coarse_diagonal(I), xy_->coarse_diagonal(I), yy_->coarse_diagonal(I));
     std::copy(d.begin(), d.end(), inverse_diagonal_.begin() + static_cast<std::ptrdiff_t>(3 * I));
     const double n2 = counts_[I] * counts_[I];
     for (std::size_t k = 0; k < 3; ++k) load[k] += n2 * d[k];
@@ -110,8 +108,7 @@ void TangentialBlockCorrection::apply_coarse(std::span<const double> y, std::spa
   for (std::size_t I = 0; I < m; ++I) out_y[I] += part_[I];
 }
 
-void TangentialBlockCorrection::precondition(std::vector<double>& r, std::vector<double>& out,
-                                             bool fixed_load) const {
+void TangentialBlockCorrection::precondition(std::vector<double>& r, std::vector<double>& out, bool fixed_load) const {
   const std::size_t m = coarse_size();
   const double* d = inverse_diagonal_.data();
   if (fixed_load) {
