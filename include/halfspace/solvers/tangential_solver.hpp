@@ -97,7 +97,11 @@ struct TangentialOptions {
   // block of this many cells a side on the stick cells, its Galerkin matrix
   // from the Cerruti kernel's block pair sums (tangential_block_correction
   // .hpp); 0 for none. Serial 2D periodic grids whose sides it divides into
-  // at least 3 blocks (the solver refuses others).
+  // at least 3 blocks (the solver refuses others). Off by default: on the
+  // benchmark's rough contact it cut no iterations (1024^2 step 1: 67 with
+  // blocks of 32 against 58 without; the frozen-set solves converge as fast
+  // without it), and its coarse work made the step 1.5-1.6x slower
+  // (docs/development-log.md, 2026-11-29, tangmg2).
   std::size_t coarse_correction_block = 0;
   // Called once per iteration with (iteration, residual); may be empty or stop the solve.
   ProgressCallback progress;
