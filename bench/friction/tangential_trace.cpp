@@ -4,11 +4,10 @@
 // the products, the stick fraction. The pressure of the normal solve is
 // kept in a file (the third argument) so that a second run skips it.
 // Usage: tangential_trace N [MAX_ITERATIONS] [PRESSURE_FILE] [EVERY] [coarse]
-// [active=UPDATES] [block=B] [normal] (coarse: TangentialOptions::coarse_start
-// on; active: TangentialOptions::active_set_updates, 10 if no number is
-// given; block: TangentialOptions::coarse_correction_block; normal: the
-// normal solve made and timed even when the pressure file exists, for the
-// step's time against it in the same run). One thread; the counts are
+// [active=UPDATES] [normal] (coarse: TangentialOptions::coarse_start on;
+// active: TangentialOptions::active_set_updates, 10 if no number is given;
+// normal: the normal solve made and timed even when the pressure file
+// exists, for the step's time against it in the same run). One thread; the counts are
 // exact, the times those of a shared machine.
 #include <fmt/format.h>
 
@@ -90,8 +89,6 @@ void report(const char* name, const TangentialResult& r, double cpu) {
       "{:.6g}, {}\n",
       name, r.iterations, r.wall_seconds, cpu, r.operator_applications, r.preconditioner_applications, r.residual,
       r.stick_fraction, r.force_x, r.converged() ? "converged" : r.message);
-  fmt::print("  coarse correction: {} products corrected, {} coarse iterations\n", r.coarse_corrections,
-             r.coarse_correction_iterations);
   fmt::print("  active-set phase: {} updates, {} inner iterations\n", r.active_set_updates, r.active_set_iterations);
   fmt::print(
       "  coarse: {} levels, {} iterations, worth {:.1f} C and {:.1f} M products; all products {:.1f}\n",
@@ -107,7 +104,7 @@ int main(int argc, char** argv) {
     if (argc < 2) {
       std::fprintf(stderr,
                    "usage: tangential_trace N [MAX_ITERATIONS] [PRESSURE_FILE] [EVERY] [coarse] [active=UPDATES] "
-                   "[block=B] [normal]\n");
+                   "[normal]\n");
       return 2;
     }
     const auto n = static_cast<std::size_t>(std::stoul(argv[1]));
@@ -116,21 +113,17 @@ int main(int argc, char** argv) {
     const int every = argc > 4 ? std::stoi(argv[4]) : 1;
     bool coarse = false;
     int active_set_updates = 0;
-    std::size_t block = 0;
     bool timed = false;
     for (int a = 5; a < argc; ++a) {
       const std::string arg = argv[a];
       if (arg == "coarse") {
         coarse = true;
-      } else if (arg.starts_with("block=")) {
-        block = static_cast<std::size_t>(std::stoul(arg.substr(6)));
       } else if (arg == "normal") {
         timed = true;
       } else if (arg.starts_with("active")) {
         active_set_updates = arg.size() > 7 ? std::stoi(arg.substr(7)) : 10;
       } else {
-        throw std::invalid_argument("unknown argument " + arg +
-                                    ": allowed are coarse, active[=UPDATES], block=B and normal");
+        throw std::invalid_argument("unknown argument " + arg + ": allowed are coarse, active[=UPDATES] and normal");
       }
     }
     set_threads(1);
@@ -145,7 +138,6 @@ int main(int argc, char** argv) {
     options.max_iterations = cap;
     options.coarse_start = coarse;
     options.active_set_updates = active_set_updates;
-    options.coarse_correction_block = block;
     options.progress = [every](int iteration, double residual) {
       if (iteration % every == 0) fmt::print("  {:5d} {:.3e}\n", iteration, residual);
       std::fflush(stdout);

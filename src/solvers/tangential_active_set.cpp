@@ -65,7 +65,6 @@ void TangentialActiveSet::prepare() {
     }
   }
   it_.exact_displacement();
-  if (correction_ != nullptr) correction_->update([&](std::size_t i) { return f_.kind[i] == kStick; });
   // Each slipping cell's multiplier lambda = -(ds - a) . e, the approach a
   // under force control estimated as the model's multiplier with no
   // curvature yet (the least-squares fit of ds by the restricted shifts).
@@ -126,15 +125,8 @@ int TangentialActiveSet::solve_frozen(int budget) {
     });
     if (j == 0) norm_start = gg;
     if (!(gg > kInnerReduction * norm_start) || j >= std::min(kMaxInnerSteps, budget)) break;
-    // The coarse correction from t on the stick cells (unscaled there).
-    const bool corrected = correction_ != nullptr && correction_->ready();
-    if (corrected) correction_->solve({f_.tx, n_}, {f_.ty, n_}, force);
     op_.apply_approximate_inverse({f_.tx, n_}, {f_.ty, n_}, {f_.tx, n_}, {f_.ty, n_});
     ++result_.preconditioner_applications;
-    if (corrected) {
-      correction_->add({f_.tx, n_}, {f_.ty, n_});
-      ++result_.coarse_corrections;
-    }
     // rho = Pi R g . Pi R D M t = Pi R g . R D M t (Pi R g is orthogonal to
     // the range of the shifts R a), and sum R D M t for its projection.
     const auto [rho, zx, zy] = sums<3>(comm_, n_, [&](std::size_t i) {

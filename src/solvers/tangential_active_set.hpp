@@ -34,7 +34,6 @@
 #include <cstdint>
 #include <span>
 
-#include "tangential_block_correction.hpp"
 #include "tangential_iteration.hpp"
 
 namespace halfspace::solvers::tangential {
@@ -63,8 +62,7 @@ class TangentialActiveSet {
         up_x_(it.up_x_),
         up_y_(it.up_y_),
         tau_(tau.data()),
-        kappa_(kappa.data()),
-        correction_(it.correction_) {}
+        kappa_(kappa.data()) {}
 
   // From the admissible q of TangentialIteration::start() (u = C q exact):
   // at most max_updates outer iterations, each of at most kMaxInnerSteps
@@ -138,7 +136,6 @@ class TangentialActiveSet {
   const double* up_y_;
   float* tau_;
   float* kappa_;
-  TangentialBlockCorrection* correction_;        // added to the preconditioner, or none
   const double self_ = op_.self_influence().xx;  // C_ii
   Pair fixed_;                                   // the prescribed approach increment (displacement control)
   Symmetric gram_;                               // sum over the cells of the restriction (force control)

@@ -44,21 +44,15 @@ void ConjugateGradientMethod::step() {
   });
   const Symmetric gram{gram_xx, gram_xy, gram_yy};
   const Pair shift_g = force ? solve_pseudo(gram, {sum_x, sum_y}) : Pair{};
-  // Pass B: Pi R g into t (and, for the coarse correction, each cell's
-  // set), then z = M t in place, plus the coarse correction Z A^-1 Z^T Pi R g
-  // on the stick cells (where t is Pi R g itself: no scaling).
-  const bool coarse = correction_ != nullptr;
+  // Pass B: Pi R g into t, then z = M t in place.
   for_each_index(n_, [&](std::size_t i) {
     const Cell c = cell(i);
     const Pair g = projected_gradient(i, c, shift_g);
     f_.tx[i] = c.scale * g.x;
     f_.ty[i] = c.scale * g.y;
-    if (coarse) f_.kind[i] = !c.contact ? kOutside : (c.slip ? kSlip : kStick);
   });
-  const bool corrected = coarse && add_correction_begin();
   op_.apply_approximate_inverse({f_.tx, n_}, {f_.ty, n_}, {f_.tx, n_}, {f_.ty, n_});
   ++result_.preconditioner_applications;
-  if (corrected) add_correction_end();
   // Pass C: z = Pi R M Pi R g.
   const auto [zx, zy] = sums<2>(comm_, n_, [&](std::size_t i) {
     const Cell c = cell(i);
@@ -182,18 +176,6 @@ void ConjugateGradientMethod::step() {
   } else {
     it_.exact_displacement();
   }
-}
-
-bool ConjugateGradientMethod::add_correction_begin() {
-  correction_->update([&](std::size_t i) { return f_.kind[i] == kStick; });
-  if (!correction_->ready()) return false;
-  correction_->solve({f_.tx, n_}, {f_.ty, n_}, problem_.force_controlled);
-  return true;
-}
-
-void ConjugateGradientMethod::add_correction_end() {
-  correction_->add({f_.tx, n_}, {f_.ty, n_});
-  ++result_.coarse_corrections;
 }
 
 }  // namespace halfspace::solvers::tangential

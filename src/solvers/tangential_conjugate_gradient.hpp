@@ -11,7 +11,6 @@
 #include <cmath>
 #include <cstdint>
 
-#include "tangential_block_correction.hpp"
 #include "tangential_iteration.hpp"
 
 namespace halfspace::solvers::tangential {
@@ -27,8 +26,7 @@ class ConjugateGradientMethod {
         n_(it.n_),
         f_(it.f_),
         radius_(it.radius_),
-        updates_since_exact_(it.updates_since_exact_),
-        correction_(it.correction_) {}
+        updates_since_exact_(it.updates_since_exact_) {}
 
   // One preconditioned conjugate-gradient step on the stick/slip sets (the
   // file comment); g holds ds from evaluate(), t the last preconditioned
@@ -97,13 +95,6 @@ class ConjugateGradientMethod {
     return c;
   }
 
-  // The coarse correction around the preconditioner's product: the coarse
-  // set (kind's stick cells) brought up to date and the coarse solve from
-  // t = Pi R g (false if the coarse matrix is not built: a dense contact),
-  // then Z y added to t = M t.
-  bool add_correction_begin();
-  void add_correction_end();
-
   // Pi R g at cell i, c its cell(i) (zero out of contact).
   Pair projected_gradient(std::size_t i, const Cell& c, const Pair& shift) const {
     if (!c.contact) return {};
@@ -120,8 +111,7 @@ class ConjugateGradientMethod {
   const std::size_t n_;
   Fields f_;
   const double* radius_;
-  int& updates_since_exact_;               // the iteration's: products since u = C q was exact
-  TangentialBlockCorrection* correction_;  // added to the preconditioner, or none
+  int& updates_since_exact_;  // the iteration's: products since u = C q was exact
   const double self_ = op_.self_influence().xx;
   double rho_old_ = 0.0;   // the last z . Pi R g
   bool momentum_ = false;  // the last step was taken: its direction may carry over

@@ -120,8 +120,6 @@ inline Pair solve_pseudo(const Symmetric& s, const Pair& v) {
           across * s.xy * v.x + (along - across * half_difference) * v.y};
 }
 
-class TangentialBlockCorrection;
-
 class TangentialIteration {
  public:
   TangentialIteration(TangentialOperator& op, const TangentialOptions& options, const Problem& problem,
@@ -243,10 +241,6 @@ class TangentialIteration {
     if (status) result_.status = *status;
     return status.has_value();
   }
-
-  // The coarse correction the methods add to their preconditioner
-  // (TangentialOptions::coarse_correction_block), or none.
-  void use_correction(TangentialBlockCorrection* correction) { correction_ = correction; }
 
   double approach_x() const { return delta_x_; }
   double approach_y() const { return delta_y_; }
@@ -377,7 +371,6 @@ class TangentialIteration {
   const double* up_x_;  // the previous step's u
   const double* up_y_;
   const double* radius_;
-  TangentialBlockCorrection* correction_ = nullptr;
 
   int updates_since_exact_ = 0;
   double delta_x_ = 0.0;  // the approach's increment over the step

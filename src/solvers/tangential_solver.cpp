@@ -21,7 +21,6 @@
 #include "halfspace/linalg/parallel.hpp"
 #include "halfspace/solvers/grid_transfer.hpp"
 #include "tangential_active_set.hpp"
-#include "tangential_block_correction.hpp"
 #include "tangential_conjugate_gradient.hpp"
 #include "tangential_iteration.hpp"
 #include "tangential_projected_gradient.hpp"
@@ -99,14 +98,8 @@ TangentialSolver::TangentialSolver(TangentialOperator& op, TangentialOptions opt
       tangent_motion_.assign(op_.local_size(), 0.0F);
       curvature_.assign(op_.local_size(), 0.0F);
     }
-    if (options_.coarse_correction_block > 0) {
-      correction_ = std::make_unique<tangential::TangentialBlockCorrection>(op_, options_.coarse_correction_block);
-    }
   }
 }
-
-TangentialSolver::~TangentialSolver() = default;
-TangentialSolver::TangentialSolver(TangentialSolver&&) noexcept = default;
 
 TangentialResult TangentialSolver::solve(std::span<const double> pressure, const TangentialLoading& loading,
                                          const TangentialState& previous) {
@@ -141,7 +134,6 @@ bool TangentialSolver::coarse_start(std::span<const double> pressure, const Tang
     TangentialOptions options = options_;
     options.tolerance = std::max(options_.coarse_tolerance, options_.tolerance);
     options.progress = {};
-    options.coarse_correction_block = 0;  // the levels are coarse already
     TangentialSolver level(coarse_op, options);
     solved = level.solve({coarse_pressure.data(), m}, loading, coarse_previous);
   } catch (const InputError&) {
@@ -273,8 +265,6 @@ TangentialResult TangentialSolver::solve(std::span<const double> pressure, const
   }
   for (Eigen::ArrayXd* field : {&tx_, &ty_, &rx_, &ry_}) field->setZero();
   TangentialIteration it(op_, options_, problem, result, fields);
-  it.use_correction(correction_.get());
-  const long correction_iterations_before = correction_ ? correction_->coarse_iterations() : 0;
   ConjugateGradientMethod conjugate_gradient(it);
   ProjectedGradientMethod projected_gradient(it);
   const double inverse_lipschitz = 1.0 / op_.largest_eigenvalue_bound();
@@ -355,8 +345,6 @@ TangentialResult TangentialSolver::solve(std::span<const double> pressure, const
     result.residual = it.residual();
   }
   result.iterations = k + result.active_set_iterations;
-  if (correction_)
-    result.coarse_correction_iterations = correction_->coarse_iterations() - correction_iterations_before;
 
   // The state and the step's integrals.
   if (fixed) {

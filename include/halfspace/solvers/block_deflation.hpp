@@ -167,12 +167,6 @@ class BlockDeflation {
   // out = A y. Exposed for tests.
   void apply_coarse(std::span<const double> y, std::span<double> out);
   std::size_t coarse_size() const { return blocks_x_ * blocks_y_; }
-  // Block I's cells in the set, n_I, and its diagonal entry A_II (the pair
-  // sums within the block): what a caller solving a coarse system built
-  // from several of these (a vector kernel's components) needs for its
-  // own constraint and Jacobi scaling.
-  double block_cells(std::size_t I) const { return counts_[I]; }
-  double coarse_diagonal(std::size_t I) const { return near_[I * 9 + 4]; }
 
  private:
   // On several processes: the set on the held rows from local_set_ (this

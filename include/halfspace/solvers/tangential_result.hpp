@@ -60,10 +60,6 @@ struct TangentialResult {
   // `iterations`, its products in the counts above).
   int active_set_updates = 0;
   int active_set_iterations = 0;
-  // The coarse correction (TangentialOptions::coarse_correction_block): the
-  // preconditioner products it was added to, and its coarse iterations.
-  int coarse_corrections = 0;
-  long coarse_correction_iterations = 0;
   double wall_seconds = 0.0;
   // Coupled steps of dissimilar bodies (coupled_step.hpp): the normal and
   // tangential solves alternated, and the last pass's change (zero both

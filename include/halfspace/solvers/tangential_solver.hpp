@@ -36,7 +36,6 @@
 #include <Eigen/Core>
 #include <cstdint>
 #include <functional>
-#include <memory>
 #include <span>
 #include <vector>
 
@@ -45,10 +44,6 @@
 #include "halfspace/solvers/tangential_result.hpp"
 
 namespace halfspace::solvers {
-
-namespace tangential {
-class TangentialBlockCorrection;
-}  // namespace tangential
 
 enum class TangentialMethod {
   conjugate_gradient,  // preconditioned, on the stick/slip sets (default)
@@ -92,17 +87,6 @@ struct TangentialOptions {
   // 159 without, and 439 against 273 at 2048^2, where the sets took 27
   // updates to settle (docs/development-log.md, 2026-11-29, tang4). >= 0.
   int active_set_updates = 0;
-  // Conjugate gradients (and the active-set phase): a coarse-grid
-  // correction added to the Fourier preconditioner, two columns (x, y) per
-  // block of this many cells a side on the stick cells, its Galerkin matrix
-  // from the Cerruti kernel's block pair sums (tangential_block_correction
-  // .hpp); 0 for none. Serial 2D periodic grids whose sides it divides into
-  // at least 3 blocks (the solver refuses others). Off by default: on the
-  // benchmark's rough contact it cut no iterations (1024^2 step 1: 67 with
-  // blocks of 32 against 58 without; the frozen-set solves converge as fast
-  // without it), and its coarse work made the step 1.5-1.6x slower
-  // (docs/development-log.md, 2026-11-29, tangmg2).
-  std::size_t coarse_correction_block = 0;
   // Called once per iteration with (iteration, residual); may be empty or stop the solve.
   ProgressCallback progress;
 
@@ -119,8 +103,6 @@ class TangentialSolver {
   // InputError if the options are invalid. For a dissimilar pair it solves
   // the tangential half of the coupled problem (the pressure given).
   TangentialSolver(TangentialOperator& op, TangentialOptions options);
-  ~TangentialSolver();
-  TangentialSolver(TangentialSolver&&) noexcept;
 
   // One load step from `previous` (TangentialState::unloaded for the first)
   // under the pressure `pressure` (Pa, the normal solve's). Throws InputError
@@ -164,7 +146,6 @@ class TangentialSolver {
   // tangential motion and curvature within an outer iteration.
   std::vector<float> tangent_motion_, curvature_;
   Eigen::ArrayXd fx_, fy_;  // the previous displacement less the fixed part (made on the first coupled solve)
-  std::unique_ptr<tangential::TangentialBlockCorrection> correction_;  // coarse_correction_block > 0
 };
 
 }  // namespace halfspace::solvers
