@@ -4,14 +4,17 @@
 // the products, the stick fraction. The pressure of the normal solve is
 // kept in a file (the third argument) so that a second run skips it.
 // Usage: tangential_trace N [MAX_ITERATIONS] [PRESSURE_FILE] [EVERY] [coarse]
-// [active=UPDATES] (coarse: TangentialOptions::coarse_start on; active:
-// TangentialOptions::active_set_updates, 10 if no number is given).
-// One thread; iteration and product counts, not times, are what it is for.
+// [active=UPDATES] [normal] (coarse: TangentialOptions::coarse_start on;
+// active: TangentialOptions::active_set_updates, 10 if no number is given;
+// normal: the normal solve made and timed even when the pressure file
+// exists, for the step's time against it in the same run). One thread; the counts are
+// exact, the times those of a shared machine.
 #include <fmt/format.h>
 
 #include <Eigen/Core>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <exception>
 #include <fstream>
 #include <span>
@@ -39,9 +42,15 @@ constexpr double kReducedPressure = 0.04;
 constexpr double kMu = 0.3;
 constexpr double kTolerance = 1e-8;
 
-Eigen::ArrayXd normal_pressure(const Grid& grid, const ElasticPair& pair, const std::string& file) {
+// The process's CPU time: one thread, so on a shared machine a steadier
+// measure than the wall clock (which counts the time other jobs hold the core).
+double cpu_seconds() {
+  return static_cast<double>(std::clock()) / CLOCKS_PER_SEC;
+}
+
+Eigen::ArrayXd normal_pressure(const Grid& grid, const ElasticPair& pair, const std::string& file, bool timed) {
   Eigen::ArrayXd pressure(static_cast<Eigen::Index>(grid.size()));
-  if (!file.empty()) {
+  if (!file.empty() && !timed) {
     std::ifstream in(file, std::ios::binary);
     if (in.read(reinterpret_cast<char*>(pressure.data()), static_cast<std::streamsize>(grid.size() * sizeof(double)))) {
       return pressure;
@@ -59,9 +68,11 @@ Eigen::ArrayXd normal_pressure(const Grid& grid, const ElasticPair& pair, const 
   settings.tolerance = kTolerance;
   settings.fft_planning = FftPlanning::estimate;
   auto solver = solvers::make_solver(grid, e_star, settings);
+  const double cpu = cpu_seconds();
   const SolveResult normal =
       solver->solve({gap.data(), grid.size()}, Loading::mean_pressure(kReducedPressure * e_star * kRmsSlope));
-  fmt::print("normal solve: {} iterations, contact {:.4f}, {}\n", normal.iterations, normal.contact_fraction,
+  fmt::print("normal solve: {} iterations, {:.3f} s ({:.3f} s CPU), contact {:.4f}, {}\n", normal.iterations,
+             normal.wall_seconds, cpu_seconds() - cpu, normal.contact_fraction,
              normal.converged() ? "converged" : normal.message);
   pressure = normal.pressure;
   if (!file.empty()) {
@@ -72,10 +83,12 @@ Eigen::ArrayXd normal_pressure(const Grid& grid, const ElasticPair& pair, const 
   return pressure;
 }
 
-void report(const char* name, const TangentialResult& r) {
-  fmt::print("{}: {} iterations, {} C products, {} M products, residual {:.3e}, stick {:.4f}, force {:.6g}, {}\n", name,
-             r.iterations, r.operator_applications, r.preconditioner_applications, r.residual, r.stick_fraction,
-             r.force_x, r.converged() ? "converged" : r.message);
+void report(const char* name, const TangentialResult& r, double cpu) {
+  fmt::print(
+      "{}: {} iterations, {:.3f} s ({:.3f} s CPU), {} C products, {} M products, residual {:.3e}, stick {:.4f}, force "
+      "{:.6g}, {}\n",
+      name, r.iterations, r.wall_seconds, cpu, r.operator_applications, r.preconditioner_applications, r.residual,
+      r.stick_fraction, r.force_x, r.converged() ? "converged" : r.message);
   fmt::print("  active-set phase: {} updates, {} inner iterations\n", r.active_set_updates, r.active_set_iterations);
   fmt::print(
       "  coarse: {} levels, {} iterations, worth {:.1f} C and {:.1f} M products; all products {:.1f}\n",
@@ -90,7 +103,8 @@ int main(int argc, char** argv) {
   try {
     if (argc < 2) {
       std::fprintf(stderr,
-                   "usage: tangential_trace N [MAX_ITERATIONS] [PRESSURE_FILE] [EVERY] [coarse] [active=UPDATES]\n");
+                   "usage: tangential_trace N [MAX_ITERATIONS] [PRESSURE_FILE] [EVERY] [coarse] [active=UPDATES] "
+                   "[normal]\n");
       return 2;
     }
     const auto n = static_cast<std::size_t>(std::stoul(argv[1]));
@@ -99,20 +113,23 @@ int main(int argc, char** argv) {
     const int every = argc > 4 ? std::stoi(argv[4]) : 1;
     bool coarse = false;
     int active_set_updates = 0;
+    bool timed = false;
     for (int a = 5; a < argc; ++a) {
       const std::string arg = argv[a];
       if (arg == "coarse") {
         coarse = true;
+      } else if (arg == "normal") {
+        timed = true;
       } else if (arg.starts_with("active")) {
         active_set_updates = arg.size() > 7 ? std::stoi(arg.substr(7)) : 10;
       } else {
-        throw std::invalid_argument("unknown argument " + arg + ": allowed are coarse and active[=UPDATES]");
+        throw std::invalid_argument("unknown argument " + arg + ": allowed are coarse, active[=UPDATES] and normal");
       }
     }
     set_threads(1);
     const Grid grid = Grid::plane(n, n, kSpacing, kSpacing, Boundary::periodic);
     const ElasticPair pair = ElasticPair::similar(kSteel);
-    const Eigen::ArrayXd pressure = normal_pressure(grid, pair, file);
+    const Eigen::ArrayXd pressure = normal_pressure(grid, pair, file, timed);
     const double load = pressure.sum() * grid.cell_area();
     TangentialOperator op(grid, pair);
     solvers::TangentialOptions options;
@@ -128,11 +145,13 @@ int main(int argc, char** argv) {
     };
     TangentialSolver solver(op, options);
     const std::span<const double> p(pressure.data(), grid.size());
+    double cpu = cpu_seconds();
     const TangentialResult first =
         solver.solve(p, TangentialLoading::force(0.5 * kMu * load), TangentialState::unloaded(grid.size()));
-    report("step 1", first);
+    report("step 1", first, cpu_seconds() - cpu);
+    cpu = cpu_seconds();
     const TangentialResult second = solver.solve(p, TangentialLoading::force(0.25 * kMu * load), first.state);
-    report("step 2", second);
+    report("step 2", second, cpu_seconds() - cpu);
     return first.converged() && second.converged() ? 0 : 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());

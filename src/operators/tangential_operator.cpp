@@ -443,17 +443,33 @@ void TangentialOperator::apply_approximate_inverse(std::span<const double> displ
   linalg::for_each_row(m.spectrum_rows, m.spectrum_cols, [&](std::size_t r) {
     const std::size_t begin = r * m.spectrum_cols;
     for (std::size_t k = begin; k < begin + m.spectrum_cols; ++k) {
-      const double mean = 0.5 * (xx[k] + yy[k]);
-      const double half_difference = 0.5 * (xx[k] - yy[k]);
-      const double spread = std::hypot(half_difference, xy[k]);
-      const double upper = inverse(mean + spread);
-      const double lower = inverse(mean - spread);
-      const double along = 0.5 * (upper + lower);
-      // (f(m + s) - f(m - s)) / (2 s), zero when the block is a multiple of I.
-      const double across = spread > 0.0 ? 0.5 * (upper - lower) / spread : 0.0;
-      const double ixx = along + across * half_difference;
-      const double iyy = along - across * half_difference;
-      const double ixy = across * xy[k];
+      double ixx = 0.0;
+      double iyy = 0.0;
+      double ixy = 0.0;
+      // Both eigenvalues above the floor ((xx - f)(yy - f) > xy^2 with
+      // xx > f: the smaller one, m - s, exceeds f): the plain inverse, no
+      // square root (almost every mode; the hypot per mode cost about a
+      // tenth of a tangential step, docs/development-log.md).
+      const double shifted_xx = xx[k] - floor;
+      const double shifted_yy = yy[k] - floor;
+      if (shifted_xx > 0.0 && shifted_xx * shifted_yy > xy[k] * xy[k]) {
+        const double f = scale / (xx[k] * yy[k] - xy[k] * xy[k]);
+        ixx = f * yy[k];
+        iyy = f * xx[k];
+        ixy = -f * xy[k];
+      } else {
+        const double mean = 0.5 * (xx[k] + yy[k]);
+        const double half_difference = 0.5 * (xx[k] - yy[k]);
+        const double spread = std::hypot(half_difference, xy[k]);
+        const double upper = inverse(mean + spread);
+        const double lower = inverse(mean - spread);
+        const double along = 0.5 * (upper + lower);
+        // (f(m + s) - f(m - s)) / (2 s), zero when the block is a multiple of I.
+        const double across = spread > 0.0 ? 0.5 * (upper - lower) / spread : 0.0;
+        ixx = along + across * half_difference;
+        iyy = along - across * half_difference;
+        ixy = across * xy[k];
+      }
       const std::complex<double> ux = sx[k];
       const std::complex<double> uy = sy[k];
       sx[k] = ixx * ux + ixy * uy;
