@@ -57,19 +57,23 @@ int run_single_solve_at(const SolveSetup& setup, const SolvePlace& place) {
   Progress progress(prints, 1, setup.solver.solver_tolerance());
   solvers::SolverOptions settings = setup.solver;
   settings.progress = progress.callback();
-  // The solver and its operator are freed inside solve_surface, before the
-  // statistics and the result file are made, so that the peak memory is the
-  // solve's (docs/development-log.md).
+  // The solver and its operator are freed inside solve_surface_in_place,
+  // before the statistics and the result file are made, so that the peak
+  // memory is the solve's, and the heights hold the initial gap during the
+  // solve where they can (docs/development-log.md).
   const std::string processes = place.processes > 1 ? fmt::format(", {} processes", place.processes) : "";
+  // The surface's statistics before the solve: their transform (three
+  // fields) then adds to the heights alone, not to the result's fields.
   std::optional<Activity> activity(std::in_place,
-                                   fmt::format("solving ({} on the {} grid{})", solvers::to_string(setup.solver.type),
-                                               setup.grid.shape_string(), processes));
-  const SolveResult result =
-      solvers::solve_surface(setup.grid, place.heights, half_space(setup), setup.loading, settings, {}, place.layout);
+                                   fmt::format("computing the statistics of the {} grid", setup.grid.shape_string()));
+  io::ResultMetadata metadata = place.metadata();
+  activity.emplace(fmt::format("solving ({} on the {} grid{})", solvers::to_string(setup.solver.type),
+                               setup.grid.shape_string(), processes));
+  const SolveResult result = solvers::solve_surface_in_place(setup.grid, place.heights, half_space(setup),
+                                                             setup.loading, settings, {}, place.layout);
   progress.clear();
 
-  activity.emplace(fmt::format("computing the statistics of the {} grid", setup.grid.shape_string()));
-  io::ResultMetadata metadata = place.metadata();
+  activity.emplace(fmt::format("computing the contact statistics of the {} grid", setup.grid.shape_string()));
   metadata.coating = setup.coating;
   metadata.bodies = setup.pair;
   metadata.contact_statistics = place.contact_statistics(result);

@@ -16,7 +16,7 @@ namespace halfspace::app {
 
 SolvePlace serial_place(const SolveSetup& setup) {
   const Grid& grid = setup.grid;
-  const std::span<const double> heights(setup.heights.data(), static_cast<std::size_t>(setup.heights.size()));
+  const std::span<double> heights(setup.heights.data(), static_cast<std::size_t>(setup.heights.size()));
   SolvePlace place{.layout = solvers::serial_layout(), .heights = heights};
   place.metadata = [&setup, heights] { return io::result_metadata(provenance(setup), setup.grid, heights); };
   place.contact_statistics = [&grid](const SolveResult& normal) {

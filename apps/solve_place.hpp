@@ -24,7 +24,7 @@ namespace halfspace::app {
 
 struct SolvePlace {
   const solvers::Layout& layout;
-  std::span<const double> heights;                 // the cells `layout` holds here
+  std::span<double> heights;                       // the cells `layout` holds here (lent to a single solve)
   bool first = true;                               // the first (or only) process: it prints and plots
   int processes = 1;                               // how many share the grid
   std::function<io::ResultMetadata()> metadata{};  // provenance and surface statistics

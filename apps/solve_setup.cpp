@@ -30,6 +30,7 @@
 #include "halfspace/memory_estimate.hpp"
 #include "halfspace/physical_ranges.hpp"
 #include "halfspace/solvers/frictional_solve.hpp"
+#include "halfspace/solvers/surface_solve.hpp"
 #include "halfspace/stress/stress_volume.hpp"
 #include "halfspace/stress/stressed_body.hpp"
 #include "halfspace/stress/subsurface_stress.hpp"
@@ -412,7 +413,10 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
   const GridCheck check_grid = [&](const Grid& grid, const std::string& request) {
     problem.check_grid(grid, flags);
     const std::string what = fmt::format("{}: {}", request, solve_description(grid, solver, load_values.size()));
-    const double estimate = std::max(solve_memory_estimate(grid, solver, load_values.size()),
+    // A single frictionless solve lends the heights to the initial gap where it can.
+    const bool gap_in_heights =
+        load_values.size() == 1 && !friction && solvers::initial_gap_in_heights(problem.loading, solver);
+    const double estimate = std::max(solve_memory_estimate(grid, solver, load_values.size(), gap_in_heights),
                                      stress_peak_memory(grid, stress, coating.has_value(), friction.has_value())) +
                             (friction ? solvers::friction_memory_estimate(grid, history_steps) : 0.0);
     if (share.check_memory) {

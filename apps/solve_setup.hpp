@@ -28,8 +28,10 @@ namespace halfspace::app {
 struct SolveSetup : Problem {
   Grid grid;
   // m, (ny, nx) row-major: every row, or (on an MPI process other than the
-  // first) the rows from first_row on that this process solves.
-  Eigen::ArrayXd heights;
+  // first) the rows from first_row on that this process solves. Mutable:
+  // a single solve lends their storage to the solver for the initial gap and
+  // gets them back unchanged (solvers::solve_surface_in_place).
+  mutable Eigen::ArrayXd heights;
   std::size_t first_row = 0;
   std::string height_source;  // "file.h5:/height" or "sphere (radius = 0.01 m)"
   // Height-map preparation steps, one line each; empty if none.

@@ -67,15 +67,17 @@ double operator_bytes(const Extents& g) {
   return kComplex * rows * cols + (g.line ? kDouble * (2.0 * g.nx + 2.0) : 0.0) + kDouble * stored_rows(rows) * cols;
 }
 
-// The Fourier preconditioner: its symbol. Its transform is the operator's
-// (periodic) or works in the operator's padded buffer (free).
+// The Fourier preconditioner: its symbol on a free grid, where its
+// transform works in the operator's padded buffer. On a periodic grid it
+// shares the operator's transform and inverts its symbol (layout.cpp).
 double preconditioner_bytes(const Extents& g) {
+  if (g.periodic) return 0.0;
   const double rows = g.line ? 1.0 : g.ny;
   return kDouble * stored_rows(rows) * (std::floor(g.nx / 2.0) + 1.0);
 }
 
-// The coarse-grid correction (block_deflation.hpp): its field (a float
-// one on single-precision work vectors), the set's flags and three lists
+// The coarse-grid correction (block_deflation.hpp): its field (none on
+// single-precision work vectors, whose products' scratch serves), the set's flags and three lists
 // of 8-byte cells (current, previous, changed), each at most one entry per
 // cell.
 double deflation_bytes(const Extents& g, double field) {
@@ -89,13 +91,15 @@ double work_bytes(const Extents& g, bool mixed) {
 }
 
 // One Polonsky-Keer solver with its operator, between solves: the
-// operator, the preconditioner and the coarse correction (its field in the
-// work vectors' precision). With mixed precision on a periodic grid the
-// single-precision K shares the double one's symbol and its transform
-// lives in the double one's spectrum.
+// operator, the preconditioner and the coarse correction (its field in
+// double, or none on float work vectors). With mixed precision on a
+// periodic grid the single-precision K shares the double one's symbol and
+// its transform lives in the double one's spectrum, its real array the
+// correction's field (balancing_preconditioner.cpp).
 double level_bytes(const Extents& g, bool preconditioned, bool deflated, bool mixed) {
+  const bool single_work = work_bytes(g, mixed) == kFloat;
   return operator_bytes(g) + (preconditioned ? preconditioner_bytes(g) : 0.0) +
-         (deflated ? deflation_bytes(g, work_bytes(g, mixed)) : 0.0);
+         (deflated ? deflation_bytes(g, single_work ? 0.0 : kDouble) : 0.0);
 }
 
 // A solve's result: pressure, displacement and gap, and the residual history.
@@ -179,7 +183,8 @@ double solver_peak(const Grid& grid, const solvers::SolverOptions& settings) {
 
 }  // namespace
 
-double solve_memory_estimate(const Grid& grid, const solvers::SolverOptions& settings, std::size_t load_steps) {
+double solve_memory_estimate(const Grid& grid, const solvers::SolverOptions& settings, std::size_t load_steps,
+                             bool gap_in_heights) {
   const Extents g(grid);
   const double cells = g.cells();
   const double steps = static_cast<double>(std::max<std::size_t>(load_steps, 1));
@@ -188,7 +193,8 @@ double solve_memory_estimate(const Grid& grid, const solvers::SolverOptions& set
   // A sweep keeps each finished step's fields and cluster sizes (at most
   // one cluster per two cells).
   const double kept_step = result_bytes(g, history) + 0.5 * kDouble * cells;
-  const double solving = heights_and_gap + (steps - 1.0) * kept_step + solver_peak(grid, settings);
+  const double lent = gap_in_heights && steps == 1.0 ? kDouble * cells : 0.0;
+  const double solving = heights_and_gap - lent + (steps - 1.0) * kept_step + solver_peak(grid, settings);
   // Writing: the solver is gone; the fields stay, with the contact flags.
   // A sweep's file, and a small result's, is assembled in memory, held twice
   // (HDF5's buffer and the image copied out of it), uncompressed at worst; a

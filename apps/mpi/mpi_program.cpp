@@ -74,7 +74,7 @@ namespace {
 // The place of a solve on this process's rows: the slab statistics and the
 // parallel writers, every hook collective. `setup`, `world` and `slab` must
 // outlive it.
-SolvePlace slab_place(const SolveSetup& setup, std::span<const double> heights, const mpi::DistributedLayout& layout,
+SolvePlace slab_place(const SolveSetup& setup, std::span<double> heights, const mpi::DistributedLayout& layout,
                       const mpi::MpiCommunicator& world, const mpi::SlabLayout& slab) {
   const auto span_of = [](const Eigen::ArrayXd& a) {
     return std::span<const double>(a.data(), static_cast<std::size_t>(a.size()));
@@ -340,8 +340,8 @@ std::optional<int> run_distributed_solve(const SolveSetup& setup) {
   set_threads(setup.threads);
   const mpi::SlabLayout slab = mpi::slab_layout(setup.grid.nx(), setup.grid.ny(), world);
   // This process's rows of the surface (the first process may hold all).
-  const std::span<const double> heights(setup.heights.data() + (slab.first_row - setup.first_row) * slab.nx,
-                                        slab.local_size());
+  const std::span<double> heights(setup.heights.data() + (slab.first_row - setup.first_row) * slab.nx,
+                                  slab.local_size());
   const SolvePlace place = slab_place(setup, heights, layout, world, slab);
   return run_on_slabs(world, [&] { return run_solve_at(setup, place); });
 }

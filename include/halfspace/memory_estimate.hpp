@@ -29,9 +29,13 @@ inline constexpr double kProgramBytes = 40.0 * 1024 * 1024;
 // which keeps every step's fields): kProgramBytes, the heights and the
 // initial gap, and the largest of the solve (the coarse-grid start of
 // pk-multilevel, the fine solve) and the writing of the result file.
+// `gap_in_heights`: a single solve whose initial gap takes the heights'
+// place (solvers::solve_surface_in_place, where
+// solvers::initial_gap_in_heights holds), one field less while it solves.
 // Bytes are doubles: the count for a grid of 2^32 x 2^32 cells does not fit
 // in std::size_t.
-double solve_memory_estimate(const Grid& grid, const solvers::SolverOptions& settings, std::size_t load_steps = 1);
+double solve_memory_estimate(const Grid& grid, const solvers::SolverOptions& settings, std::size_t load_steps = 1,
+                             bool gap_in_heights = false);
 
 // Peak bytes of one process of a distributed solve (the MPI program) on
 // `grid` when it holds `rows` of its rows: kProgramBytes and its share of

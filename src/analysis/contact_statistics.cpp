@@ -9,8 +9,10 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <numeric>
 #include <utility>
+#include <vector>
 
 #include "halfspace/analysis/disjoint_sets.hpp"
 #include "halfspace/error.hpp"
@@ -30,36 +32,48 @@ void check_size(std::string_view what, std::size_t size, const Grid& grid) {
 
 std::vector<std::int64_t> contact_cluster_sizes(const Grid& grid, std::span<const double> pressure) {
   check_size("contact_cluster_sizes: the pressure", pressure.size(), grid);
+  // Row by row (Hoshen & Kopelman 1976): a cell in contact takes the label
+  // of its left or upper neighbour in contact (joining the two labels when
+  // both are), or a new one; only the labels are united, so that the memory
+  // is three rows of labels and the labels' sets, not a set per cell (the
+  // program's peak after a large solve). With wrap-around the last column
+  // meets the first and the last row the first. A 1D grid has one row.
   const std::size_t nx = grid.nx();
-  const std::size_t ny = grid.ny();
+  const std::size_t ny = grid.dimension() == 1 ? 1 : grid.ny();
   const bool wrap = grid.periodic();
-  DisjointSets sets(grid.size());
-  const auto join = [&](std::size_t a, std::size_t b) {
-    if (pressure[a] > 0.0 && pressure[b] > 0.0) sets.unite(a, b);
-  };
+  constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
+  DisjointSets labels(0);
+  std::vector<std::size_t> first_row(nx, kNone);
+  std::vector<std::size_t> previous(nx, kNone);
+  std::vector<std::size_t> current(nx, kNone);
   for (std::size_t j = 0; j < ny; ++j) {
     for (std::size_t i = 0; i < nx; ++i) {
-      const std::size_t k = j * nx + i;
-      if (!(pressure[k] > 0.0)) continue;
-      // Right and lower neighbours; with wrap-around the last column meets
-      // the first and the last row the first. A 1D grid has only one row.
-      if (i + 1 < nx) {
-        join(k, k + 1);
-      } else if (wrap) {
-        join(k, j * nx);
+      if (!(pressure[j * nx + i] > 0.0)) {
+        current[i] = kNone;
+        continue;
       }
-      if (grid.dimension() == 2) {
-        if (j + 1 < ny) {
-          join(k, k + nx);
-        } else if (wrap) {
-          join(k, i);
-        }
+      const std::size_t left = i > 0 ? current[i - 1] : kNone;
+      const std::size_t up = previous[i];
+      if (left == kNone && up == kNone) {
+        current[i] = labels.add(1);
+        continue;
       }
+      current[i] = left != kNone ? left : up;
+      labels.grow(current[i], 1);
+      if (left != kNone && up != kNone) labels.unite(left, up);
+    }
+    if (wrap && current[nx - 1] != kNone && current[0] != kNone) labels.unite(current[nx - 1], current[0]);
+    if (j == 0) first_row = current;
+    std::swap(previous, current);
+  }
+  if (wrap && ny > 1) {
+    for (std::size_t i = 0; i < nx; ++i) {
+      if (previous[i] != kNone && first_row[i] != kNone) labels.unite(previous[i], first_row[i]);
     }
   }
   std::vector<std::int64_t> sizes;
-  for (std::size_t k = 0; k < grid.size(); ++k) {
-    if (pressure[k] > 0.0 && sets.find(k) == k) sizes.push_back(sets.size_of_root(k));
+  for (std::size_t label = 0; label < labels.count(); ++label) {
+    if (labels.find(label) == label) sizes.push_back(labels.size_of_root(label));
   }
   std::sort(sizes.begin(), sizes.end(), std::greater<>());
   return sizes;

@@ -65,18 +65,23 @@ EvenSymbol NormalKernel::periodic_symbol() const {
 EvenSymbol NormalKernel::preconditioner_symbol() const {
   EvenSymbol inverse(grid_.dimension() == 1 ? 1 : grid_.ny(), grid_.nx() / 2 + 1);
   const auto cells = static_cast<double>(grid_.size());
-  double q_min = std::numeric_limits<double>::infinity();
   for (std::size_t r = 0; r < inverse.stored_rows(); ++r) {
     for (std::size_t c = 0; c < inverse.cols(); ++c) {
       const double q = wavenumber(r, c);
-      if (q > 0.0) {
-        inverse.at(r, c) = inverse_symbol(q, cells);
-        q_min = std::min(q_min, q);
-      }
+      if (q > 0.0) inverse.at(r, c) = inverse_symbol(q, cells);
     }
   }
-  inverse.at(0, 0) = inverse_symbol(q_min, cells);
+  inverse.at(0, 0) = preconditioner_at_zero();
   return inverse;
+}
+
+double NormalKernel::preconditioner_at_zero() const {
+  // The smallest non-zero |q| lies on an axis: |q| >= |qx|, |qy|.
+  const std::size_t rows = grid_.dimension() == 1 ? 1 : grid_.ny() / 2 + 1;
+  double q_min = std::numeric_limits<double>::infinity();
+  for (std::size_t c = 1; c < grid_.nx() / 2 + 1; ++c) q_min = std::min(q_min, wavenumber(0, c));
+  for (std::size_t r = 1; r < rows; ++r) q_min = std::min(q_min, wavenumber(r, 0));
+  return inverse_symbol(q_min, static_cast<double>(grid_.size()));
 }
 
 double NormalKernel::self_influence() const {

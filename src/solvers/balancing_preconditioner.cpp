@@ -32,6 +32,8 @@ T* BalancingPreconditioner::field() {
   const auto n = static_cast<Eigen::Index>(op_.local_size());
   if constexpr (std::is_same_v<T, float>) {
     coarse_field_.resize(0);
+    // Z y1 and the images live between products only (apply_balancing).
+    if (single_.scratch.size() == op_.local_size()) return single_.scratch.data();
     if (single_field_.size() != n) single_field_.setZero(n);
     return single_field_.data();
   } else {

@@ -21,16 +21,34 @@ namespace halfspace::solvers {
 struct FourierPreconditioner::Impl {
   // One of the two transforms: double or single precision.
   Impl(const Grid& g, const HalfSpace& half_space, std::shared_ptr<RealFft> shared,
-       std::shared_ptr<SingleRealFft> single_shared = nullptr)
+       std::shared_ptr<SingleRealFft> single_shared = nullptr, const EvenSymbol* operator_kernel = nullptr)
       : grid(g),
         transform(std::move(shared)),
         single(std::move(single_shared)),
-        symbol(kernels::NormalKernel(g, half_space).preconditioner_symbol()) {}
+        symbol(operator_kernel ? EvenSymbol(0, 0) : kernels::NormalKernel(g, half_space).preconditioner_symbol()),
+        kernel(operator_kernel) {
+    if (kernel) {
+      const double cells = static_cast<double>(g.size());
+      inverse = {1.0 / (cells * cells), kernels::NormalKernel(g, half_space).preconditioner_at_zero()};
+    }
+  }
+
+  // out = M^-1 in through `fft`.
+  template <class Fft, class In, class Out>
+  void apply(Fft& fft, In in, Out out) const {
+    if (kernel) {
+      kernel->apply_inverse(inverse, fft, in, out);
+    } else {
+      symbol.apply(fft, in, out);
+    }
+  }
 
   Grid grid;
   std::shared_ptr<RealFft> transform;     // own, or shared with the operator
   std::shared_ptr<SingleRealFft> single;  // instead of `transform`: mixed precision
-  EvenSymbol symbol;                      // E*|q|/(2N) or its layered form, rows folded (even in qy)
+  EvenSymbol symbol;                      // E*|q|/(2N) or its layered form, rows folded (even in qy); or empty:
+  const EvenSymbol* kernel;               // the operator's K symbol, whose inverse it forms
+  EvenSymbol::Inverse inverse;            // 1/N^2 and the mean mode, with `kernel`
 };
 
 FourierPreconditioner::FourierPreconditioner(const Grid& grid, const HalfSpace& half_space, FftPlanning planning)
@@ -46,6 +64,18 @@ FourierPreconditioner::FourierPreconditioner(const Grid& grid, const HalfSpace& 
     : impl_(std::make_unique<Impl>(grid, half_space, nullptr,
                                    checked_grid_transform(grid, std::move(transform), "FourierPreconditioner"))) {}
 
+FourierPreconditioner::FourierPreconditioner(const Grid& grid, const HalfSpace& half_space, const EvenSymbol& kernel,
+                                             std::shared_ptr<RealFft> transform)
+    : impl_(std::make_unique<Impl>(grid, half_space,
+                                   checked_grid_transform(grid, std::move(transform), "FourierPreconditioner"), nullptr,
+                                   &kernel)) {}
+
+FourierPreconditioner::FourierPreconditioner(const Grid& grid, const HalfSpace& half_space, const EvenSymbol& kernel,
+                                             std::shared_ptr<SingleRealFft> transform)
+    : impl_(std::make_unique<Impl>(grid, half_space, nullptr,
+                                   checked_grid_transform(grid, std::move(transform), "FourierPreconditioner"),
+                                   &kernel)) {}
+
 FourierPreconditioner::~FourierPreconditioner() = default;
 
 void FourierPreconditioner::apply(std::span<const double> in, std::span<double> out) {
@@ -53,9 +83,9 @@ void FourierPreconditioner::apply(std::span<const double> in, std::span<double> 
   assert(in.size() == m.grid.size() && out.size() == m.grid.size());
   // `in` is read before `out` is written, so the two may alias.
   if (m.single) {
-    m.symbol.apply(*m.single, in, out);
+    m.apply(*m.single, in, out);
   } else {
-    m.symbol.apply(*m.transform, in, out);
+    m.apply(*m.transform, in, out);
   }
 }
 
@@ -63,7 +93,7 @@ void FourierPreconditioner::apply(std::span<const float> in, std::span<float> ou
   Impl& m = *impl_;
   assert(in.size() == m.grid.size() && out.size() == m.grid.size());
   if (!m.single) throw std::logic_error("FourierPreconditioner: single-precision vectors need its single transform");
-  m.symbol.apply(*m.single, in, out);
+  m.apply(*m.single, in, out);
 }
 
 }  // namespace halfspace::solvers

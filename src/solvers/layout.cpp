@@ -18,7 +18,8 @@ class SerialLayout final : public Layout {
 
   // Periodic grids: both transform the unpadded grid, and Polonsky-Keer
   // applies them one after the other, so one transform serves both (a real
-  // and a complex array per cell less). Free grids: the preconditioner's
+  // and a complex array per cell less), and M^-1 is the inverse of K's
+  // symbol (no symbol of its own). Free grids: the preconditioner's
   // unpadded transform works in the operator's padded buffer, idle between
   // products (16 B per cell less).
   ElasticOperators make_operators(const Grid& grid, const HalfSpace& half_space, bool fourier,
@@ -27,8 +28,10 @@ class SerialLayout final : public Layout {
     ElasticOperators made;
     if (fourier && grid.periodic()) {
       auto transform = make_grid_transform(grid, planning);
-      made.op = std::make_unique<FftInfluenceOperator>(grid, half_space, transform);
-      made.fourier = std::make_unique<FourierPreconditioner>(grid, half_space, transform);
+      auto op = std::make_unique<FftInfluenceOperator>(grid, half_space, transform);
+      // M^-1 as the inverse of K's own symbol: no symbol of its own.
+      made.fourier = std::make_unique<FourierPreconditioner>(grid, half_space, op->periodic_symbol(), transform);
+      made.op = std::move(op);
       return made;
     }
     auto op = std::make_unique<FftInfluenceOperator>(grid, half_space, planning);
@@ -46,8 +49,9 @@ class SerialLayout final : public Layout {
   // Periodic grids: the double transform for the products K p, and one in
   // single precision for the step's products and M^-1, living in the double
   // transform's spectrum (idle between the products K p, and it holds
-  // exactly the single transform's spectrum and real array), and the
-  // single-precision K multiplying by the double one's symbol. Free grids: the
+  // exactly the single transform's spectrum and real array; the real array
+  // is the products' scratch), and the single-precision K multiplying by the
+  // double one's symbol. Free grids: the
   // products stay double (they need the zero-padded transform); M^-1 in
   // single precision in the padded buffer.
   ElasticOperators make_mixed_operators(const Grid& grid, const HalfSpace& half_space, bool fourier,
@@ -57,13 +61,15 @@ class SerialLayout final : public Layout {
     if (grid.periodic()) {
       auto transform = make_grid_transform(grid, planning);
       auto exact = std::make_unique<FftInfluenceOperator>(grid, half_space, transform);
+      const EvenSymbol& kernel = exact->periodic_symbol();
       auto single = make_single_grid_transform(grid, planning, transform->spectrum());
       auto inner = std::make_unique<SinglePrecisionFftOperator>(*exact, single);
       made.op = std::move(exact);
       made.single.kernel = [op = inner.get()](std::span<const float> in, std::span<float> out) { op->apply(in, out); };
+      made.single.scratch = single->input();
       made.inner = std::move(inner);
       if (fourier) {
-        auto preconditioner = std::make_unique<FourierPreconditioner>(grid, half_space, single);
+        auto preconditioner = std::make_unique<FourierPreconditioner>(grid, half_space, kernel, single);
         made.single.precondition = [m = preconditioner.get()](std::span<const float> in, std::span<float> out) {
           m->apply(in, out);
         };

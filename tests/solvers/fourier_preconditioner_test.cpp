@@ -6,14 +6,17 @@
 
 #include <gtest/gtest.h>
 
+#include <complex>
 #include <memory>
 #include <numeric>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "halfspace/error.hpp"
 #include "halfspace/fft/grid_transform.hpp"
 #include "halfspace/fft/real_fft.hpp"
+#include "halfspace/layered_material.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
 #include "operators/operator_test_support.hpp"
 
@@ -92,6 +95,46 @@ TEST(FourierPreconditionerTest, TransformInTheOperatorsScratchGivesTheSameBits) 
     expect_same_products(grid, shared_op, shared_preconditioner, own_op, own_preconditioner);
   }
   EXPECT_TRUE(FftInfluenceOperator(Grid::plane(8, 8, 1e-6, 1e-6, Boundary::periodic), kEStar).scratch().empty());
+}
+
+// Periodic grids: M^-1 formed from the operator's own symbol, 1/(N^2 K),
+// as it is applied (the factory's arrangement, no symbol stored) is the
+// stored symbol's to rounding, in double and in single precision, for a
+// homogeneous and a coated half-space.
+TEST(FourierPreconditionerTest, InverseOfTheOperatorsSymbolIsTheStoredOneToRounding) {
+  const LayeredMaterial coating{3e-6, ElasticBody{5e9, 0.3}, ElasticBody{1e9, 0.25}};
+  for (const HalfSpace& half_space : {HalfSpace(kEStar), HalfSpace(coating)}) {
+    for (const Grid& grid :
+         {Grid::plane(24, 18, 1e-6, 2e-6, Boundary::periodic), Grid::line(40, 1e-6, Boundary::periodic)}) {
+      const auto transform = make_grid_transform(grid, FftPlanning::estimate);
+      FftInfluenceOperator op(grid, half_space, transform);
+      FourierPreconditioner inverted(grid, half_space, op.periodic_symbol(), transform);
+      FourierPreconditioner stored(grid, half_space);
+      const std::vector<double> field = random_field(grid.size(), 5);
+      std::vector<double> got(grid.size());
+      std::vector<double> want(grid.size());
+      inverted.apply(field, got);
+      stored.apply(field, want);
+      const auto error = max_error(got, want);
+      EXPECT_LE(error.relative, 1e-13) << grid.shape_string() << ", at cell " << error.index;
+
+      std::vector<std::complex<double>> workspace(
+          RealFft::workspace_size(grid.dimension() == 1 ? 1 : grid.ny(), grid.nx()));
+      std::vector<std::complex<double>> own_workspace(workspace.size());
+      FourierPreconditioner single_inverted(grid, half_space, op.periodic_symbol(),
+                                            make_single_grid_transform(grid, FftPlanning::estimate, workspace));
+      FourierPreconditioner single_stored(grid, half_space,
+                                          make_single_grid_transform(grid, FftPlanning::estimate, own_workspace));
+      std::vector<float> single_field(field.begin(), field.end());
+      std::vector<float> single_got(grid.size());
+      std::vector<float> single_want(grid.size());
+      single_inverted.apply(std::span<const float>(single_field), std::span<float>(single_got));
+      single_stored.apply(std::span<const float>(single_field), std::span<float>(single_want));
+      const std::vector<double> got_wide(single_got.begin(), single_got.end());
+      const std::vector<double> want_wide(single_want.begin(), single_want.end());
+      EXPECT_LE(max_error(got_wide, want_wide).relative, 1e-5) << grid.shape_string() << ", single precision";
+    }
+  }
 }
 
 TEST(FourierPreconditionerTest, SharedTransformMustMatchTheGrid) {

@@ -14,6 +14,16 @@ class DisjointSets {
  public:
   explicit DisjointSets(std::size_t n) : parent_(n), size_(n, 1) { std::iota(parent_.begin(), parent_.end(), 0); }
 
+  // A new set standing for `size` elements; its index.
+  std::size_t add(std::int64_t size) {
+    parent_.push_back(parent_.size());
+    size_.push_back(size);
+    return parent_.size() - 1;
+  }
+  // `count` more elements in a's set.
+  void grow(std::size_t a, std::int64_t count) { size_[find(a)] += count; }
+  std::size_t count() const { return parent_.size(); }
+
   std::size_t find(std::size_t a) {
     while (parent_[a] != a) {
       parent_[a] = parent_[parent_[a]];

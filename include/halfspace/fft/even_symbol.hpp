@@ -46,6 +46,19 @@ class EvenSymbol {
   // it (mixed precision's work vectors).
   void apply(SingleRealFft& fft, std::span<const float> in, std::span<float> out) const;
 
+  // The inverse multiplier numerator / symbol[r, c], at_zero at r = c = 0
+  // (where a kernel's symbol may vanish), made entry by entry as it is
+  // applied: a symbol's inverse without storing it (the Fourier
+  // preconditioner on the operator's kernel). The same three forms as apply.
+  struct Inverse {
+    double numerator = 1.0;
+    double at_zero = 0.0;
+  };
+  void apply_inverse(const Inverse& inverse, RealFft& fft, std::span<const double> in, std::span<double> out) const;
+  void apply_inverse(const Inverse& inverse, SingleRealFft& fft, std::span<const double> in,
+                     std::span<double> out) const;
+  void apply_inverse(const Inverse& inverse, SingleRealFft& fft, std::span<const float> in, std::span<float> out) const;
+
  private:
   std::size_t rows_;
   std::size_t cols_;

@@ -46,6 +46,10 @@ class NormalKernel {
   // operators of either precision multiply by these.
   EvenSymbol periodic_symbol() const;
   EvenSymbol preconditioner_symbol() const;
+  // preconditioner_symbol()'s mean mode: inverse_symbol(q, N) at the
+  // smallest non-zero wavenumber q. Elsewhere it is 1/(N^2 periodic_symbol()),
+  // which the preconditioner on an operator's kernel forms as it applies it.
+  double preconditioner_at_zero() const;
   // K_ii (m/Pa), the displacement of a cell under unit pressure on itself.
   // Periodic: the inverse DFT at offset 0, (1/N) sum of symbol() over the
   // whole spectrum. Free: free_quadrant's coefficient at offset 0; where a

@@ -76,7 +76,8 @@ class BalancingPreconditioner final : public Preconditioner {
   SinglePrecisionProducts single_;
   // Made when the correction first applies: Z y as a field, then K of it,
   // then K of M^-1's output (8 B per cell, 4 in float, none for a solve
-  // that never deflates).
+  // that never deflates). In float the products' scratch serves instead
+  // where they have one (single_.scratch), so that nothing is made.
   Eigen::ArrayXd coarse_field_;
   Eigen::ArrayXf single_field_;
   // This solve's work.

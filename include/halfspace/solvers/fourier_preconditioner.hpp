@@ -5,6 +5,7 @@
 
 #include <memory>
 
+#include "halfspace/fft/even_symbol.hpp"
 #include "halfspace/fft/fft_planning.hpp"
 #include "halfspace/fft/real_fft.hpp"
 #include "halfspace/grid.hpp"
@@ -33,6 +34,14 @@ class FourierPreconditioner final : public Preconditioner {
   // solve, solver_options.hpp's Precision): M^-1 need only approximate
   // K^-1, so rounding it to float costs no accuracy of the solution.
   FourierPreconditioner(const Grid& grid, const HalfSpace& half_space, std::shared_ptr<SingleRealFft> transform);
+  // On a periodic grid, through either transform: the inverse of the
+  // operator's own symbol `kernel` (FftInfluenceOperator::periodic_symbol(),
+  // which must outlive this), 1/(N^2 kernel) formed as it is applied (the
+  // same values to rounding, no symbol stored), the mean mode as above.
+  FourierPreconditioner(const Grid& grid, const HalfSpace& half_space, const EvenSymbol& kernel,
+                        std::shared_ptr<RealFft> transform);
+  FourierPreconditioner(const Grid& grid, const HalfSpace& half_space, const EvenSymbol& kernel,
+                        std::shared_ptr<SingleRealFft> transform);
   ~FourierPreconditioner() override;
 
   void apply(std::span<const double> in, std::span<double> out) override;

@@ -16,6 +16,12 @@ struct SinglePrecisionProducts {
   // out = M^-1 in, the solver's preconditioner in single precision; empty
   // for a solver without one.
   std::function<void(std::span<const float>, std::span<float>)> precondition;
+  // A field of one value per cell that the products work in (the single
+  // transform's real array): free for a caller's intermediate values
+  // between two products, overwritten by any product that does not write
+  // into it; kernel may read it as its input and write it as its output.
+  // Empty where the products have none.
+  std::span<float> scratch;
 
   explicit operator bool() const { return static_cast<bool>(kernel); }
 };

@@ -37,4 +37,22 @@ Eigen::ArrayXd initial_gap(const Grid& grid, std::span<const double> heights, co
 SolveResult solve_surface(const Grid& grid, std::span<const double> heights, const HalfSpace& half_space,
                           const Loading& loading, const SolverOptions& options,
                           std::span<const double> initial_pressure = {}, const Layout& layout = serial_layout());
+
+// Whether solve_surface_in_place keeps the initial gap in the heights'
+// place: a Polonsky-Keer solver (pk, pk-fourier, pk-multilevel, without
+// adhesion) under load control, whose answer depends on the initial gap only
+// through g0 + K p - approach with an approach of its own, so that the gap
+// less a constant serves. That gap is -h, the heights' exact negation,
+// undone bit for bit afterwards (max(h) - h cannot be undone exactly).
+bool initial_gap_in_heights(const Loading& loading, const SolverOptions& options);
+
+// solve_surface on heights it may borrow: where initial_gap_in_heights
+// holds, their storage holds the initial gap during the solve (the surface
+// is not held twice), and they are given back unchanged, also when the
+// solve throws; else they are only read. The result is solve_surface's bit
+// for bit (which solves on a copy the same way).
+SolveResult solve_surface_in_place(const Grid& grid, std::span<double> heights, const HalfSpace& half_space,
+                                   const Loading& loading, const SolverOptions& options,
+                                   std::span<const double> initial_pressure = {},
+                                   const Layout& layout = serial_layout());
 }  // namespace halfspace::solvers
