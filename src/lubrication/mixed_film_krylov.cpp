@@ -11,8 +11,8 @@
 // with dp_f = P v_s on full nodes, dtheta = v_s on cavitated ones, dp_c =
 // P v_q and D_j = [h_j > h_b] (h_R = max(h, h_b) has no film derivative in
 // contact; on point contacts 1 also where the step lifts h_j above h_b:
-// mixed_film.cpp's take_step_branches), the same rows mixed_film.cpp's dense path assembles. One
-// operator product per product with J. The preconditioner is J with K
+// mixed_film.cpp's take_step_branches), the same rows mixed_film.cpp's
+// dense path assembles. One operator product per product with J. The preconditioner is J with K
 // truncated to (2r + 1)^2 cells around each node: in the mass rows, as the
 // EHL film's preconditioner, the film's Couette difference A_h K is local
 // (Venner & Lubrecht 2000's differential deflection), and in the closed
