@@ -6,7 +6,7 @@
 // = K for the fluid and the contact pressure alike, the Jacobian's blocks are
 //
 //   d balance / d s = (A_p + A_h D K) diag(P full) + A_theta diag(cavitated)
-//   d balance / d q = A_h D K P,          D = diag(h > h_b)
+//   d balance / d q = A_h D K P,          D = diag(h > h_b) (or the step's)
 //   d contact / d q = I (open rows) or K P / H (closed rows, h = 0 imposed)
 //   d contact / d s = 0 (open) or K diag(P full) / H (closed)
 //
@@ -135,6 +135,8 @@ constexpr double kThickFilm = 8.0;
 // times the thinnest fluid film (at least kFilmFloorShare of H).
 constexpr double kLargestStep = 0.5;
 constexpr double kFilmFloorShare = 0.05;
+// The clipped step's tries (1, 1/2, 1/4 of it) before the scaled step's.
+constexpr int kClippedHalvings = 3;
 // The loosest relative tolerance of a GMRES step (far from the solution).
 constexpr double kLargestForcing = 1e-2;
 // The share of the Newton steps (1 / this) a cold start gets on the GMRES path.
@@ -144,6 +146,46 @@ struct State {
   Eigen::ArrayXd s, q, fluid, theta, contact, total, deformation, film, reynolds_film;
   double offset = 0.0;
 };
+
+// The branches the step goes into, as detail::branch_consistent_step takes
+// the cavitation switch's: taken at the current point alone, a contact
+// spot's edge that must open keeps its closed row (h = 0) and its film on
+// the floor h_R = max(h, h_b) (film derivative D_j = 0), so the linear model
+// sees a film that cannot open and asks for hundreds of pressure scales to
+// push the inflow through h_b by Poiseuille flow; the steps crept and 128^2
+// did not finish (docs/development-log.md, 2026-11-29). Here a closed row
+// that the step `step` releases (q + dq <= (h + dh) / H) opens (p_c = 0),
+// and a node on the floor that the step lifts above h_b takes D_j = 1.
+// Branches change only that way, so the passes end; near the solution no
+// node crosses and the Jacobian is the film's own. `film_change` is dh =
+// K (dp_f + dp_c) + dh0 of the step. Returns whether a branch changed (the
+// step is then solved again).
+bool take_step_branches(const State& x, double hb, double H, const Eigen::VectorXd& step,
+                        const Eigen::VectorXd& film_change, std::vector<char>& closed, std::vector<char>& open_film) {
+  const Eigen::Index ni = x.film.size();
+  bool flipped = false;
+  const auto take = [&](char& branch, bool wanted) {
+    if (branch != static_cast<char>(wanted)) {
+      branch = static_cast<char>(wanted);
+      flipped = true;
+    }
+  };
+  for (Eigen::Index j = 0; j < ni; ++j) {
+    const auto jj = static_cast<std::size_t>(j);
+    const double film = x.film[j] + film_change[j];
+    if (closed[jj] != 0 && !(x.q[j] + step[ni + j] > film / H)) take(closed[jj], false);
+    if (x.film[j] <= hb && film > hb) take(open_film[jj], true);
+  }
+  return flipped;
+}
+
+// The contact rows' residuals on the branches `closed`: h / H (closed) or q.
+void contact_residuals(const State& x, double H, const std::vector<char>& closed, Eigen::VectorXd& residual) {
+  const Eigen::Index ni = x.film.size();
+  for (Eigen::Index j = 0; j < ni; ++j) {
+    residual[ni + j] = closed[static_cast<std::size_t>(j)] != 0 ? x.film[j] / H : x.q[j];
+  }
+}
 
 }  // namespace
 
@@ -179,6 +221,11 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
   const double supply = conditions.boundary.supply_fluid_fraction;
   const double hb = options.boundary_film;
   const bool second_order = options.couette_scheme == CouetteScheme::second_order;
+  // The step's branches (take_step_branches) and the clipped step on point
+  // contacts, where they cut the fine Newton steps (64^2: 55 to 33) and let
+  // 128^2 converge; on the rough line contacts of the tests they took 4x the
+  // work (docs/development-log.md, 2026-11-29).
+  const bool step_branches = grid.dimension() == 2;
   const Eigen::Index m = 2 * ni + (load_control ? 1 : 0);  // unknowns
   const Eigen::Index h0 = 2 * ni;                          // index of h0 (load control)
 
@@ -276,7 +323,7 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
   NodeCoefficients coefficients;
   std::vector<LocalTerm> terms;
   terms.reserve(16);
-  Eigen::VectorXd residual(m), step(m), trial_residual(m);
+  Eigen::VectorXd residual(m), step(m), trial_residual(m), clipped(m), pressure_change(ni);
   const Eigen::Index dense_size = krylov ? 0 : m;
   Eigen::MatrixXd jacobian_t(dense_size, dense_size);  // J transposed: row r's derivatives in column r
   Eigen::PartialPivLU<Eigen::MatrixXd> lu(dense_size);
@@ -284,8 +331,9 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
   if (krylov) {
     rows.start.resize(n + 1);
     rows.terms.reserve(16 * n);
-    rows.open_film.resize(n);
   }
+  rows.open_film.resize(n);  // D_j, the floor's branches (both paths)
+  Eigen::VectorXd film_change(ni);
   std::vector<char> branch_full(n, 1);
   std::vector<char> closed(n, 0);  // contact rows on the h branch
   double mass_scale = 1.0;
@@ -307,10 +355,7 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
     const bool dense_too = linearise_too && !krylov;
     const bool rows_too = linearise_too && krylov;
     if (dense_too) jacobian_t.setZero();
-    if (rows_too) {
-      rows.terms.clear();
-      for (std::size_t k = 0; k < n; ++k) rows.open_film[k] = state.film[static_cast<Eigen::Index>(k)] > hb ? 1 : 0;
-    }
+    if (rows_too) rows.terms.clear();
     for (std::size_t k = 0; k < n; ++k) {
       const auto kk = static_cast<Eigen::Index>(k);
       if (rows_too) rows.start[k] = rows.terms.size();
@@ -331,7 +376,7 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
       for (const LocalTerm& t : terms) {
         const auto node = static_cast<Eigen::Index>(t.node);
         column[node] += t.by_pressure / mass_scale;
-        if (t.by_film != 0.0 && state.film[node] > hb) {
+        if (t.by_film != 0.0 && rows.open_film[t.node] != 0) {
           column.segment(ni, ni) += (t.by_film / mass_scale) * k_matrix.col(node);
           by_offset += t.by_film;
         }
@@ -472,6 +517,7 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
           const auto jj = static_cast<Eigen::Index>(j);
           branch_full[j] = x.s[jj] >= 0.0 ? 1 : 0;
           closed[j] = x.film[jj] / H < x.q[jj] ? 1 : 0;
+          rows.open_film[j] = x.film[jj] > hb ? 1 : 0;
         }
         if (krylov) {
           // The rows do not depend on the branches: linearised once, then
@@ -488,7 +534,14 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
             krylov_message = outcome.message;
             return outcome.converged;
           };
-          const bool solved = detail::branch_consistent_step_with(gmres_solve, topology, x.s, step, branch_full);
+          bool solved = true;
+          for (int pass = 0; pass < detail::kBranchPasses; ++pass) {
+            solved = detail::branch_consistent_step_with(gmres_solve, topology, x.s, step, branch_full);
+            if (!solved || pass + 1 == detail::kBranchPasses || !step_branches) break;
+            krylov_solver->film_change(step, film_change);
+            if (!take_step_branches(x, hb, H, step, film_change, closed, rows.open_film)) break;
+            contact_residuals(x, H, closed, residual);
+          }
           result.krylov_iterations += step_iterations;
           result.max_krylov_iterations_per_step = std::max(result.max_krylov_iterations_per_step, step_iterations);
           if (!solved) {
@@ -496,18 +549,56 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
             failed = true;
             break;
           }
-        } else if (!detail::branch_consistent_step([&] { measure(x, residual, true); }, topology, x.s, jacobian_t,
-                                                   residual, lu, step, branch_full)) {
-          result.message = fmt::format("the mixed film's Newton step {} is singular", steps + 1);
-          failed = true;
-          break;
+        } else {
+          bool solved = true;
+          for (int pass = 0; pass < detail::kBranchPasses; ++pass) {
+            const auto linearise_rows = [&] {
+              measure(x, residual, true);
+              contact_residuals(x, H, closed, residual);
+            };
+            solved = detail::branch_consistent_step(linearise_rows, topology, x.s, jacobian_t, residual, lu, step,
+                                                    branch_full);
+            if (!solved || pass + 1 == detail::kBranchPasses || !step_branches) break;
+            // dh = K (dp_f + dp_c) + dh0 with the dense K.
+            pressure_change = P * step.segment(ni, ni);
+            for (std::size_t j = 0; j < n; ++j) {
+              const auto jj = static_cast<Eigen::Index>(j);
+              if (!topology.fixed(j) && branch_full[j] != 0) pressure_change[jj] += P * step[jj];
+            }
+            film_change.noalias() = k_matrix * pressure_change;
+            if (load_control) film_change.array() += step[h0];
+            if (!take_step_branches(x, hb, H, step, film_change, closed, rows.open_film)) break;
+          }
+          if (!solved) {
+            result.message = fmt::format("the mixed film's Newton step {} is singular", steps + 1);
+            failed = true;
+            break;
+          }
         }
         const double largest_change = step.head(2 * ni).cwiseAbs().maxCoeff();
         double lambda = std::min(1.0, kLargestStep / std::max(largest_change, 1e-300));
-        if (load_control) {
-          const double thinnest =
-              std::max(x.film.maxCoeff() > 0.0 ? x.reynolds_film.minCoeff() : 0.0, kFilmFloorShare * H);
-          lambda = std::min(lambda, kLargestStep * thinnest / std::max(std::abs(step[h0]), 1e-300));
+        // h0 by at most kLargestStep times the thinnest film.
+        const double offset_cap =
+            kLargestStep * std::max(x.film.maxCoeff() > 0.0 ? x.reynolds_film.minCoeff() : 0.0, kFilmFloorShare * H);
+        if (load_control) lambda = std::min(lambda, offset_cap / std::max(std::abs(step[h0]), 1e-300));
+        // Where the trust region would shorten the whole step for a few
+        // entries (contact cells, whose fluid pressure the h_b film barely
+        // constrains, asking for tens of pressure scales), first the step
+        // with each entry clipped to the trust region, the rest whole, and
+        // its halves; the line search judges them as the scaled step.
+        if (lambda < 1.0 && step_branches) {
+          clipped.head(2 * ni) = step.head(2 * ni).cwiseMax(-kLargestStep).cwiseMin(kLargestStep);
+          if (load_control) clipped[h0] = std::clamp(step[h0], -offset_cap, offset_cap);
+          for (int halving = 0; halving < kClippedHalvings && !accepted; ++halving) {
+            const double mu = std::ldexp(1.0, -halving);
+            trial.s = x.s + mu * clipped.head(ni).array();
+            trial.q = x.q + mu * clipped.segment(ni, ni).array();
+            trial.offset = load_control ? x.offset + mu * clipped[h0] : x.offset;
+            if (!evaluate(trial)) continue;
+            tried = measure(trial, trial_residual, false);
+            accepted = std::isfinite(tried.norm) && tried.norm <= (1.0 - 1e-4 * mu * lambda) * current.norm;
+          }
+          if (accepted) break;
         }
         for (int halving = 0; halving <= 30; ++halving, lambda *= 0.5) {
           trial.s = x.s + lambda * step.head(ni).array();

@@ -10,8 +10,9 @@
 //
 // with dp_f = P v_s on full nodes, dtheta = v_s on cavitated ones, dp_c =
 // P v_q and D_j = [h_j > h_b] (h_R = max(h, h_b) has no film derivative in
-// contact), the same rows mixed_film.cpp's dense path assembles. One
-// operator product per product with J. The preconditioner is J with K
+// contact; on point contacts 1 also where the step lifts h_j above h_b:
+// mixed_film.cpp's take_step_branches), the same rows mixed_film.cpp's
+// dense path assembles. One operator product per product with J. The preconditioner is J with K
 // truncated to (2r + 1)^2 cells around each node: in the mass rows, as the
 // EHL film's preconditioner, the film's Couette difference A_h K is local
 // (Venner & Lubrecht 2000's differential deflection), and in the closed
@@ -98,6 +99,14 @@ void MixedKrylovSolver::apply_jacobian(const Eigen::VectorXd& v, Eigen::VectorXd
   if (scales_.load_control) {
     out[2 * ni] = scales_.area_over_load * (dp_ds_.dot(v.head(ni)) + P * v.segment(ni, ni).sum());
   }
+}
+
+void MixedKrylovSolver::film_change(const Eigen::VectorXd& step, Eigen::VectorXd& out) {
+  const auto ni = static_cast<Eigen::Index>(n_);
+  total_ = dp_ds_.cwiseProduct(step.head(ni)) + scales_.pressure * step.segment(ni, ni);
+  out.resize(ni);
+  op_.apply(std::span<const double>(total_.data(), n_), std::span<double>(out.data(), n_));
+  if (scales_.load_control) out.array() += step[2 * ni];
 }
 
 bool MixedKrylovSolver::factorise(std::string& message) {

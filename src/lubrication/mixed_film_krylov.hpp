@@ -75,6 +75,10 @@ class MixedKrylovSolver {
                       const MixedScales& scales, double forcing, const Eigen::VectorXd& residual,
                       Eigen::VectorXd& step);
 
+  // The film's change K (dp_f + dp_c) + dh0 (n entries) under `step` on the
+  // branches of the last solve: one operator product.
+  void film_change(const Eigen::VectorXd& step, Eigen::VectorXd& out);
+
  private:
   void apply_jacobian(const Eigen::VectorXd& v, Eigen::VectorXd& out);
   bool factorise(std::string& message);
