@@ -218,8 +218,8 @@ void add_shear(lubrication::FilmSummary& summary, const lubrication::FilmShear& 
 }
 
 // The shear's fields are the rows held at `place`.
-void write_shear(const io::Hdf5Node& root, const std::vector<std::size_t>& shape, const FilmPlace& place,
-                 const lubrication::FilmShear& shear, const lubrication::ShearLimits& limits) {
+void write_shear(const io::Hdf5Node& root, const std::vector<std::size_t>& shape, const lubrication::FilmShear& shear,
+                 const lubrication::ShearLimits& limits, const FilmPlace& place = FilmPlace{}) {
   root.write_dataset_rows("shear_x", shape, place.first_row,
                           std::span<const double>(shear.shear_x.data(), shear.shear_x.size()), "Pa");
   root.write_dataset_rows("shear_y", shape, place.first_row,
@@ -276,8 +276,16 @@ void write_film_file(const LubricateOptions& o, const HeightMap& map, const Grid
   });
 }
 
+// The same for the whole film on this process.
+void write_film_file(const LubricateOptions& o, const HeightMap& map, const Grid& grid,
+                     const lubrication::FilmSummary& summary, const Eigen::ArrayXd& pressure,
+                     const Eigen::ArrayXd& film, const Eigen::ArrayXd& fluid_fraction,
+                     const std::function<void(const io::Hdf5Node&)>& more) {
+  write_film_file(o, map, grid, FilmPlace{}, summary, pressure, film, fluid_fraction, more);
+}
+
 // The summary printed by the first (or only) process, `prints`.
-int report(const LubricateOptions& o, const lubrication::FilmSummary& summary, bool converged, bool prints) {
+int report(const LubricateOptions& o, const lubrication::FilmSummary& summary, bool converged, bool prints = true) {
   if (!converged) {
     if (prints) fmt::print(stderr, "warning: {}; the result is written to {}\n", summary.message, *o.output);
     return kExitNotConverged;
@@ -299,7 +307,7 @@ int report(const LubricateOptions& o, const lubrication::FilmSummary& summary, b
   return kExitOk;
 }
 
-int run_elastic(const LubricateOptions& o, const HeightMap& map, const Grid& grid, const FilmPlace& place,
+int run_elastic(const LubricateOptions& o, const HeightMap& map, const Grid& grid,
                 const lubrication::LubricationProblem& problem) {
   const lubrication::FlowConditions& conditions = problem.conditions;
   const lubrication::LubricantLaws& laws = problem.laws;
@@ -331,25 +339,24 @@ int run_elastic(const LubricateOptions& o, const HeightMap& map, const Grid& gri
   summary.relative_residual = film.relative_residual;
   summary.solve_seconds = film.wall_seconds;
   add_shear(summary, shear);
-  write_film_file(
-      o, map, grid, place, summary, film.pressure, film.film, film.fluid_fraction, [&](const io::Hdf5Node& root) {
-        root.write_dataset(
-            "deformation",
-            map.dimension == 1 ? std::vector<std::size_t>{map.nx} : std::vector<std::size_t>{map.ny, map.nx},
-            std::span<const double>(film.deformation.data(), grid.size()), "m");
-        root.write_double_attribute("E_star", e_star);
-        root.write_string_attribute("piezoviscosity", lubrication::to_string(laws.piezoviscosity));
-        root.write_double_attribute("pressure_viscosity", laws.pressure_viscosity);
-        root.write_double_attribute("roelands_index", laws.piezoviscosity == lubrication::Piezoviscosity::roelands
-                                                          ? laws.roelands_exponent(conditions.viscosity)
-                                                          : 0.0);
-        root.write_string_attribute("compressibility", lubrication::to_string(laws.compressibility));
-        root.write_string_attribute("couette_scheme", lubrication::to_string(options.couette_scheme));
-        root.write_double_attribute("load_error", film.load_error);
-        if (coating) io::write_coating_attributes(root, *coating);
-        write_shear(root, io::field_shape(grid), place, shear, limits);
-      });
-  return report(o, summary, film.converged(), place.first);
+  write_film_file(o, map, grid, summary, film.pressure, film.film, film.fluid_fraction, [&](const io::Hdf5Node& root) {
+    root.write_dataset("deformation",
+                       map.dimension == 1 ? std::vector<std::size_t>{map.nx} : std::vector<std::size_t>{map.ny, map.nx},
+                       std::span<const double>(film.deformation.data(), grid.size()), "m");
+    root.write_double_attribute("E_star", e_star);
+    root.write_string_attribute("piezoviscosity", lubrication::to_string(laws.piezoviscosity));
+    root.write_double_attribute("pressure_viscosity", laws.pressure_viscosity);
+    root.write_double_attribute("roelands_index", laws.piezoviscosity == lubrication::Piezoviscosity::roelands
+                                                      ? laws.roelands_exponent(conditions.viscosity)
+                                                      : 0.0);
+    root.write_string_attribute("compressibility", lubrication::to_string(laws.compressibility));
+    root.write_string_attribute("couette_scheme", lubrication::to_string(options.couette_scheme));
+    root.write_double_attribute("load_error", film.load_error);
+    if (coating) io::write_coating_attributes(root, *coating);
+    write_shear(root, map.dimension == 1 ? std::vector<std::size_t>{map.nx} : std::vector<std::size_t>{map.ny, map.nx},
+                shear, limits);
+  });
+  return report(o, summary, film.converged());
 }
 
 // The film's fields and the mixed film's own attributes, beyond the summary's.
@@ -406,7 +413,7 @@ void write_stribeck_csv(const std::string& path, const std::vector<lubrication::
   if (!out) throw InputError(fmt::format("writing the Stribeck curve to {} failed", path));
 }
 
-int run_mixed(const LubricateOptions& o, const HeightMap& map, const Grid& grid, const FilmPlace& place,
+int run_mixed(const LubricateOptions& o, const HeightMap& map, const Grid& grid,
               const lubrication::LubricationProblem& problem) {
   const lubrication::FlowConditions& conditions = problem.conditions;
   const lubrication::LubricantLaws& laws = problem.laws;
@@ -462,13 +469,12 @@ int run_mixed(const LubricateOptions& o, const HeightMap& map, const Grid& grid,
   summary.friction_coefficient = film.friction_coefficient;
   const std::vector<std::size_t> shape =
       map.dimension == 1 ? std::vector<std::size_t>{map.nx} : std::vector<std::size_t>{map.ny, map.nx};
-  write_film_file(o, map, grid, place, summary, film.pressure, film.film, film.fluid_fraction,
-                  [&](const io::Hdf5Node& root) {
-                    write_mixed_fields(root, shape, grid.size(), film, options, e_star, laws, used.viscosity);
-                    root.write_double_attribute("entrainment_speed",
-                                                std::hypot(used.entrainment_velocity[0], used.entrainment_velocity[1]));
-                  });
-  const int code = report(o, summary, all_converged, place.first);
+  write_film_file(o, map, grid, summary, film.pressure, film.film, film.fluid_fraction, [&](const io::Hdf5Node& root) {
+    write_mixed_fields(root, shape, grid.size(), film, options, e_star, laws, used.viscosity);
+    root.write_double_attribute("entrainment_speed",
+                                std::hypot(used.entrainment_velocity[0], used.entrainment_velocity[1]));
+  });
+  const int code = report(o, summary, all_converged);
   if (code == kExitOk && !o.quiet) {
     fmt::print("  {:<15} {:.4g} of the load, area {:.4g} of the cells\n", "contact", film.contact_load_fraction,
                film.contact_area_fraction);
@@ -544,7 +550,7 @@ int run_transient(const LubricateOptions& o, const HeightMap& map, const Grid& g
                            std::span<const double>(film.solution.fluid_fraction.data(), grid.size()), "");
         io::write_film_attributes(root, summary);
         io::write_grid_attributes(root, grid);
-        write_shear(root, shape, FilmPlace{}, shear, problem.limits);
+        write_shear(root, shape, shear, problem.limits);
         root.write_double_attribute("time_step", transient.time_step);
         root.write_int64_attribute("time_steps", transient.steps);
         root.write_string_attribute("time_scheme", lubrication::to_string(transient.scheme));
@@ -661,7 +667,7 @@ int run_rigid(const LubricateOptions& o, const HeightMap& map, const Grid& grid,
   };
   write_film_file(o, map, grid, place, summary, own(film.solution.pressure), own(film.film),
                   own(film.solution.fluid_fraction),
-                  [&](const io::Hdf5Node& root) { write_shear(root, io::field_shape(grid), place, shear, limits); });
+                  [&](const io::Hdf5Node& root) { write_shear(root, io::field_shape(grid), shear, limits, place); });
   return report(o, summary, film.solution.converged(), place.first);
 }
 
@@ -684,10 +690,10 @@ int solve_film(const LubricateOptions& o) {
                                problem.check_grid(grid, flags, *o.height_map);
                                if (!place.whole) require_film_on_slabs(problem);
                                if (problem.kind == lubrication::FilmKind::mixed) {
-                                 return run_mixed(o, map, grid, place, problem);
+                                 return run_mixed(o, map, grid, problem);
                                }
                                if (problem.kind == lubrication::FilmKind::elastic) {
-                                 return run_elastic(o, map, grid, place, problem);
+                                 return run_elastic(o, map, grid, problem);
                                }
                                if (problem.transient) return run_transient(o, map, grid, problem);
                                return run_rigid(o, map, grid, place, problem);
