@@ -58,8 +58,10 @@ void require_rows(const Grid& whole, const SlabLayout& slab, const MpiCommunicat
   });
   const double fewest = comm.min(static_cast<double>(slab.rows));
   if (fewest < 1.0) {
-    throw InputError(fmt::format("the {} film has fewer rows than the {} processes: each needs at least one row",
-                                 whole.shape_string(), comm.size()));
+    throw InputError(
+        fmt::format("the {} film leaves a process without rows on {} processes (slabs of up to {} "
+                    "rows): each needs at least one row; use fewer processes",
+                    whole.shape_string(), comm.size(), comm.max(static_cast<double>(slab.rows))));
   }
 }
 
