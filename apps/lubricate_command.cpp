@@ -13,8 +13,10 @@
 #include <array>
 #include <cctype>
 #include <chrono>
+#include <cstdint>
 #include <fstream>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -44,6 +46,7 @@
 #include "halfspace/version.hpp"
 #include "option_table.hpp"
 #include "plot_tool.hpp"
+#include "processes.hpp"
 
 namespace halfspace::app {
 namespace {
@@ -231,10 +234,13 @@ void add_shear(lubrication::FilmSummary& summary, const lubrication::FilmShear& 
   summary.friction_coefficient = shear.friction_coefficient;
 }
 
+// The shear's fields are the rows held at `place`.
 void write_shear(const io::Hdf5Node& root, const std::vector<std::size_t>& shape, const lubrication::FilmShear& shear,
-                 const lubrication::ShearLimits& limits) {
-  root.write_dataset("shear_x", shape, std::span<const double>(shear.shear_x.data(), shear.shear_x.size()), "Pa");
-  root.write_dataset("shear_y", shape, std::span<const double>(shear.shear_y.data(), shear.shear_y.size()), "Pa");
+                 const lubrication::ShearLimits& limits, const FilmPlace& place = FilmPlace{}) {
+  root.write_dataset_rows("shear_x", shape, place.first_row,
+                          std::span<const double>(shear.shear_x.data(), shear.shear_x.size()), "Pa");
+  root.write_dataset_rows("shear_y", shape, place.first_row,
+                          std::span<const double>(shear.shear_y.data(), shear.shear_y.size()), "Pa");
   root.write_double_attribute("couette_friction_force_x", shear.couette_force[0]);
   root.write_double_attribute("couette_friction_force_y", shear.couette_force[1]);
   root.write_double_attribute("eyring_stress", limits.eyring_stress);
@@ -254,16 +260,28 @@ int with_lubricate_flags(const LubricateOptions& o, Function&& function) {
   }
 }
 
-void write_film_file(const LubricateOptions& o, const HeightMap& map, const Grid& grid,
+// The fields that a film file holds at most (the mixed film's): pressure,
+// film, fluid fraction, fluid and contact pressure, deformation, shear x and y.
+constexpr int kMostFilmFields = 8;
+
+// The film file, written where `place` says; the fields hold the rows held
+// there.
+void write_film_file(const LubricateOptions& o, const HeightMap& map, const Grid& grid, const FilmPlace& place,
                      const lubrication::FilmSummary& summary, const Eigen::ArrayXd& pressure,
                      const Eigen::ArrayXd& film, const Eigen::ArrayXd& fluid_fraction,
                      const std::function<void(const io::Hdf5Node&)>& more) {
-  const std::vector<std::size_t> shape =
-      map.dimension == 1 ? std::vector<std::size_t>{map.nx} : std::vector<std::size_t>{map.ny, map.nx};
-  io::write_hdf5_file(*o.output, [&](const io::Hdf5Node& root) {
-    root.write_dataset("pressure", shape, std::span<const double>(pressure.data(), grid.size()), "Pa");
-    root.write_dataset("film", shape, std::span<const double>(film.data(), grid.size()), "m");
-    root.write_dataset("fluid_fraction", shape, std::span<const double>(fluid_fraction.data(), grid.size()), "");
+  const std::vector<std::size_t> shape = io::field_shape(grid);
+  const std::uint64_t bound =
+      kMostFilmFields * io::hdf5_dataset_bound(shape, io::Compression::deflate) + io::kHdf5SmallItemsBound;
+  const auto field = [&](const io::Hdf5Node& root, std::string_view name, const Eigen::ArrayXd& values,
+                         std::string_view unit) {
+    root.write_dataset_rows(name, shape, place.first_row,
+                            std::span<const double>(values.data(), static_cast<std::size_t>(values.size())), unit);
+  };
+  place.write_file(*o.output, bound, [&](const io::Hdf5Node& root) {
+    field(root, "pressure", pressure, "Pa");
+    field(root, "film", film, "m");
+    field(root, "fluid_fraction", fluid_fraction, "");
     io::write_film_attributes(root, summary);
     io::write_grid_attributes(root, grid);
     more(root);
@@ -275,12 +293,22 @@ void write_film_file(const LubricateOptions& o, const HeightMap& map, const Grid
   });
 }
 
-int report(const LubricateOptions& o, const HeightMap& map, const lubrication::FilmSummary& summary, bool converged) {
+// The same for the whole film on this process.
+void write_film_file(const LubricateOptions& o, const HeightMap& map, const Grid& grid,
+                     const lubrication::FilmSummary& summary, const Eigen::ArrayXd& pressure,
+                     const Eigen::ArrayXd& film, const Eigen::ArrayXd& fluid_fraction,
+                     const std::function<void(const io::Hdf5Node&)>& more) {
+  write_film_file(o, map, grid, FilmPlace{}, summary, pressure, film, fluid_fraction, more);
+}
+
+// The summary printed by the first (or only) process, `prints`.
+int report(const LubricateOptions& o, const HeightMap& map, const lubrication::FilmSummary& summary, bool converged,
+           bool prints = true) {
   if (!converged) {
-    fmt::print(stderr, "warning: {}; the result is written to {}\n", summary.message, *o.output);
+    if (prints) fmt::print(stderr, "warning: {}; the result is written to {}\n", summary.message, *o.output);
     return kExitNotConverged;
   }
-  if (o.quiet) return kExitOk;
+  if (o.quiet || !prints) return kExitOk;
   fmt::print("halfspace {} ({}) lubricate\n", kVersion, kGitHash);
   fmt::print("  {:<15} {}\n", "surface", map.source);
   fmt::print("  {:<15} {}\n", "film", summary.model);
@@ -475,7 +503,7 @@ int run_mixed(const LubricateOptions& o, const HeightMap& map, const Grid& grid,
 
 // The summary of a rigid film (its own solve's status and counts; a
 // transient run replaces them with the whole run's).
-lubrication::FilmSummary rigid_summary(const lubrication::LubricatedFilm& film, const HeightMap& map,
+lubrication::FilmSummary rigid_summary(const lubrication::LubricatedFilm& film,
                                        const lubrication::FlowConditions& conditions,
                                        std::chrono::steady_clock::time_point started) {
   const lubrication::FilmForces& f = film.forces;
@@ -486,11 +514,10 @@ lubrication::FilmSummary rigid_summary(const lubrication::LubricatedFilm& film, 
   summary.load = f.load;
   summary.mean_pressure = f.mean_pressure;
   summary.separation = film.separation;
-  Eigen::Index centre = 0;
-  map.heights.maxCoeff(&centre);
-  summary.central_film_thickness = film.film[centre];
+  // At the surface's highest point, where the film is the separation.
+  summary.central_film_thickness = film.separation;
   summary.minimum_film_thickness = f.minimum_film_thickness;
-  summary.max_pressure = film.solution.pressure.maxCoeff();
+  summary.max_pressure = f.max_pressure;
   summary.cavitated_fraction = f.cavitated_fraction;
   summary.viscosity = conditions.viscosity;
   summary.iterations = film.solution.iterations;
@@ -525,7 +552,7 @@ int run_transient(const LubricateOptions& o, const HeightMap& map, const Grid& g
       },
       [&](const io::Hdf5Node& root) {
         const lubrication::LubricatedFilm& film = last.film;
-        lubrication::FilmSummary summary = rigid_summary(film, map, conditions, started);
+        lubrication::FilmSummary summary = rigid_summary(film, conditions, started);
         summary.status = std::string(lubrication::to_string(outcome.status));
         summary.message = outcome.message;
         summary.iterations = sweeps;
@@ -656,6 +683,64 @@ HeightMap film_surface(const LubricateOptions& o, Boundary boundary) {
   return builtin_film_surface(o, boundary);
 }
 
+// The surface with --roughness added: what the first process reads.
+HeightMap read_film_map(const LubricateOptions& o, Boundary boundary) {
+  HeightMap map = film_surface(o, boundary);
+  if (o.roughness) add_roughness(*o.roughness, map);
+  return map;
+}
+
+// On several processes only the steady rigid film of a map runs on slabs
+// (mpi/slab_film_rows.hpp); the others are refused, on every process alike.
+void require_film_on_slabs(const lubrication::LubricationProblem& problem) {
+  const auto refuse = [](std::string_view what, std::string_view why) {
+    throw InputError(
+        fmt::format("{} is not available with more than one process ({}): run it without mpirun (the "
+                    "steady rigid film of a map and every film of a profile are)",
+                    what, why));
+  };
+  if (problem.kind == lubrication::FilmKind::mixed) {
+    refuse("the mixed film (--mixed)", "its contact and elastic solves do not run on slabs yet");
+  }
+  if (problem.kind == lubrication::FilmKind::elastic) {
+    refuse("the elastic film (--E-star or E1, nu1, E2, nu2)",
+           "its Newton solve's preconditioner does not run on slabs yet");
+  }
+  if (problem.transient) refuse("the transient film (--time-step)", "its history file is written by one process");
+}
+
+// The rigid film at a separation or a load, on the whole map or on the rows
+// `place` holds (the same code: the rows' solver gives the serial iterates).
+int run_rigid(const LubricateOptions& o, const HeightMap& map, const Grid& grid, const FilmPlace& place,
+              const lubrication::LubricationProblem& problem) {
+  const lubrication::FlowConditions& conditions = problem.conditions;
+  const lubrication::ShearLimits& limits = problem.limits;
+  const auto started = std::chrono::steady_clock::now();
+  const std::unique_ptr<lubrication::FilmRows> rows = place.film_rows(grid, conditions);
+  const lubrication::LubricatedFilm film =
+      problem.load_control ? lubrication::lubricate_at_load(grid, map.heights, conditions, *problem.load_control,
+                                                            problem.cavitation, rows.get())
+                           : lubrication::lubricate_at_separation(grid, map.heights, conditions, *problem.separation,
+                                                                  problem.cavitation, rows.get());
+  lubrication::FilmSummary summary = rigid_summary(film, conditions, started);
+  // One time in the file: every process writes the same attributes.
+  if (rows) summary.solve_seconds = rows->max(summary.solve_seconds);
+  const lubrication::FilmShear shear = lubrication::film_shear(
+      rows ? rows->stencil_grid() : grid, rows ? rows->stencil_conditions() : conditions, {}, limits, film.film,
+      film.solution.pressure, film.solution.fluid_fraction, nullptr, rows.get());
+  add_shear(summary, shear);
+  // The rows held here of a field on the solver's nodes (halo rows dropped).
+  const auto own = [&](const Eigen::ArrayXd& field) -> Eigen::ArrayXd {
+    if (!rows) return field;
+    return field.segment(static_cast<Eigen::Index>(rows->first_own_node()),
+                         static_cast<Eigen::Index>(rows->own_nodes()));
+  };
+  write_film_file(o, map, grid, place, summary, own(film.solution.pressure), own(film.film),
+                  own(film.solution.fluid_fraction),
+                  [&](const io::Hdf5Node& root) { write_shear(root, io::field_shape(grid), shear, limits, place); });
+  return report(o, map, summary, film.solution.converged(), place.first);
+}
+
 int solve_film(const LubricateOptions& o) {
   const LubricateSpelling flags(o);
   const lubrication::LubricationProblem problem = lubrication::make_lubrication_problem(o, flags);
@@ -666,40 +751,33 @@ int solve_film(const LubricateOptions& o) {
   io::check_output_path(*o.output);
   if (o.stribeck) io::check_output_path(*o.stribeck);
 
-  HeightMap map = film_surface(o, problem.boundary);
-  if (o.roughness) add_roughness(*o.roughness, map);
-  const Grid grid = map.dimension == 1 ? Grid::line(map.nx, map.dx, problem.boundary)
-                                       : Grid::plane(map.nx, map.ny, map.dx, map.dy, problem.boundary);
-  problem.check_grid(grid, flags, map.source);
-  if (problem.kind == lubrication::FilmKind::mixed) return run_mixed(o, map, grid, problem);
-  if (problem.kind == lubrication::FilmKind::elastic) return run_elastic(o, map, grid, problem);
-  if (problem.transient) return run_transient(o, map, grid, problem);
-  const lubrication::FlowConditions& conditions = problem.conditions;
-  const lubrication::ShearLimits& limits = problem.limits;
-  const auto started = std::chrono::steady_clock::now();
-  const lubrication::LubricatedFilm film =
-      problem.load_control
-          ? lubrication::lubricate_at_load(grid, map.heights, conditions, *problem.load_control, problem.cavitation)
-          : lubrication::lubricate_at_separation(grid, map.heights, conditions, *problem.separation,
-                                                 problem.cavitation);
-  lubrication::FilmSummary summary = rigid_summary(film, map, conditions, started);
-  const lubrication::FilmShear shear = lubrication::film_shear(grid, conditions, {}, limits, film.film,
-                                                               film.solution.pressure, film.solution.fluid_fraction);
-  add_shear(summary, shear);
-  write_film_file(
-      o, map, grid, summary, film.solution.pressure, film.film, film.solution.fluid_fraction,
-      [&](const io::Hdf5Node& root) {
-        write_shear(root,
-                    map.dimension == 1 ? std::vector<std::size_t>{map.nx} : std::vector<std::size_t>{map.ny, map.nx},
-                    shear, limits);
-      });
-  return report(o, map, summary, film.solution.converged());
+  return run_film_everywhere([&] { return read_film_map(o, problem.boundary); },
+                             [&](HeightMap& map, const FilmPlace& place) {
+                               const Grid grid = map.dimension == 1
+                                                     ? Grid::line(map.nx, map.dx, problem.boundary)
+                                                     : Grid::plane(map.nx, map.ny, map.dx, map.dy, problem.boundary);
+                               problem.check_grid(grid, flags, map.source);
+                               if (!place.whole) require_film_on_slabs(problem);
+                               if (problem.kind == lubrication::FilmKind::mixed) {
+                                 return run_mixed(o, map, grid, problem);
+                               }
+                               if (problem.kind == lubrication::FilmKind::elastic) {
+                                 return run_elastic(o, map, grid, problem);
+                               }
+                               if (problem.transient) return run_transient(o, map, grid, problem);
+                               return run_rigid(o, map, grid, place, problem);
+                             });
 }
 
 // --plot: the tool is found (and its packages checked) before the solve; the
 // figures are drawn from the files written, also for a film that did not
 // converge (as solve --plot does).
 int run_lubricate(const LubricateOptions& o) {
+  if (o.plot && process_count() > 1) {
+    throw InputError(
+        "--plot is not available with more than one process: draw the figures afterwards with "
+        "`halfspace_plot.py film FILE` (scripts/), or run without mpirun");
+  }
   const std::optional<PlotTool> plot =
       o.plot ? std::optional<PlotTool>(find_plot_tool({"--plot", "drop --plot", {}})) : std::nullopt;
   const int code = solve_film(o);

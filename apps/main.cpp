@@ -72,26 +72,18 @@ int main(int argc, char** argv) {
   for (const auto& command : commands) {
     if (!command.parser->parsed()) continue;
     try {
-      // Only solve, generate and stress are distributed; the paper's four
+      // Only solve, generate, stress and lubricate are distributed; the paper's four
       // small line contacts are computed by the first process alone, the
       // others waiting; several processes of another command would write
       // one file side by side.
       const std::string& name = command.parser->get_name();
-      if (halfspace::app::process_count() > 1 && name == "lubricate") {
-        // The rigid film's solver runs on slabs (mpi/slab_film_rows.hpp);
-        // its load control, the elastic and mixed films and the result file
-        // do not yet.
-        throw halfspace::InputError(
-            "lubricate is not available with more than one process yet: its load control, the EHL and mixed films "
-            "and its result file run on one process (only the rigid film's solver runs on slabs, in the library): "
-            "run it without mpirun");
-      }
       const std::vector<std::string> arguments(argv, argv + argc);
       if (name == "paper") return halfspace::app::run_on_first_process([&] { return command.run(arguments); });
-      if (halfspace::app::process_count() > 1 && name != "solve" && name != "generate" && name != "stress") {
+      if (halfspace::app::process_count() > 1 && name != "solve" && name != "generate" && name != "stress" &&
+          name != "lubricate") {
         throw halfspace::InputError(
             fmt::format("{} is not available with more than one process: run it without mpirun (solve, generate, "
-                        "stress and paper are)",
+                        "stress, lubricate and paper are)",
                         name));
       }
       return command.run(arguments);

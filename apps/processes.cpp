@@ -58,6 +58,11 @@ int run_stress_everywhere(const std::filesystem::path& path, const std::function
   StressPlace place = whole_stress_place(read_stress_input(path));
   return run(place);
 }
+int run_film_everywhere(const std::function<HeightMap()>& read,
+                        const std::function<int(HeightMap& map, const FilmPlace& place)>& run) {
+  HeightMap map = read();
+  return run(map, FilmPlace{});
+}
 
 #endif
 

@@ -4,6 +4,7 @@
 // processes.cpp in a serial one) does the program know the difference.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <memory>
@@ -11,9 +12,13 @@
 #include <variant>
 
 #include "halfspace/geometry/builtin_surface.hpp"
+#include "halfspace/height_map.hpp"
+#include "halfspace/io/hdf5_output.hpp"
 #include "halfspace/io/height_map_writer.hpp"
 #include "halfspace/io/result_pressure_reader.hpp"
 #include "halfspace/io/stress_writer.hpp"
+#include "halfspace/lubrication/film_rows.hpp"
+#include "halfspace/lubrication/flow_conditions.hpp"
 #include "halfspace/solvers/layout.hpp"
 #include "halfspace/stress/subsurface_stress.hpp"
 #include "halfspace/surface/self_affine.hpp"
@@ -109,5 +114,36 @@ StressPlace whole_stress_place(io::ResultPressure input);
 // first process alone as one process runs it, the others waiting); a
 // failure on any process throws on all (the first failure's error).
 int run_stress_everywhere(const std::filesystem::path& path, const std::function<int(StressPlace& place)>& run);
+
+// Where the lubricate command's film runs: the whole height map here, or on
+// several MPI processes each process's rows of a 2D map, the hooks then
+// collective.
+struct FilmPlace {
+  bool whole = true;          // the whole map here
+  bool first = true;          // the first (or only) process: it prints
+  std::size_t first_row = 0;  // the map's rows held here begin at this row of the whole map
+  // The film's rows for the solvers (lubrication/film_rows.hpp) on the
+  // whole film's grid under its conditions: null for the whole film.
+  std::function<std::unique_ptr<lubrication::FilmRows>(const Grid& grid, const lubrication::FlowConditions& conditions)>
+      film_rows =
+          [](const Grid&, const lubrication::FlowConditions&) { return std::unique_ptr<lubrication::FilmRows>(); };
+  // Writes the result file: fill(root) writes each field's rows held here
+  // (Hdf5Node::write_dataset_rows from first_row); `bound` bounds the
+  // file's bytes (the space reserved before a parallel write).
+  std::function<void(const std::filesystem::path& path, std::uint64_t bound,
+                     const std::function<void(const io::Hdf5Node& root)>& fill)>
+      write_file = [](const std::filesystem::path& path, std::uint64_t /*bound*/,
+                      const std::function<void(const io::Hdf5Node& root)>& fill) { io::write_hdf5_file(path, fill); };
+};
+
+// Reads the height map with read() and returns run(map, place). One process
+// (and the serial build): the whole map here. Several MPI processes: the
+// first reads the map whole (a failure throws on every process) and hands
+// every process its rows of a 2D map (map.heights; the other members are
+// the whole map's), and all run; a profile, one row, is run by the first
+// process alone as one process runs it, the others waiting. A failure that
+// only some processes meet while running ends them all.
+int run_film_everywhere(const std::function<HeightMap()>& read,
+                        const std::function<int(HeightMap& map, const FilmPlace& place)>& run);
 
 }  // namespace halfspace::app

@@ -126,9 +126,8 @@ SolvePlace slab_place(const SolveSetup& setup, std::span<double> heights, const 
   return place;
 }
 
-// Runs `run` on every process; a failure that only some processes meet in
-// the middle of collective work ends them all (MPI_Abort), since the others
-// wait in a transform or a reduction and cannot learn of it.
+}  // namespace
+
 int run_on_slabs(const mpi::MpiCommunicator& world, const std::function<int()>& run) {
   try {
     return run();
@@ -141,8 +140,6 @@ int run_on_slabs(const mpi::MpiCommunicator& world, const std::function<int()>& 
     mpi::Session::abort(kExitInputError);
   }
 }
-
-}  // namespace
 
 mpi::MpiCommunicator mpi_world() {
   return mpi::MpiCommunicator(MPI_COMM_WORLD);

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -36,38 +37,65 @@ void LoadControlOptions::validate() const {
 
 namespace {
 
-LubricatedFilm solve_at(const Grid& grid, const Eigen::ArrayXd& heights, const FlowConditions& conditions,
-                        double separation, const CavitationSolverOptions& solver, const FilmSolution* start) {
+// The highest and lowest heights of the whole surface.
+std::array<double, 2> height_range(const Eigen::ArrayXd& heights, const FilmRows* rows) {
+  double highest = heights.size() > 0 ? heights.maxCoeff() : -std::numeric_limits<double>::infinity();
+  double lowest = heights.size() > 0 ? heights.minCoeff() : std::numeric_limits<double>::infinity();
+  if (rows != nullptr) {
+    highest = rows->max(highest);
+    lowest = rows->min(lowest);
+  }
+  return {highest, lowest};
+}
+
+LubricatedFilm solve_at(const Grid& grid, const Eigen::ArrayXd& heights, double highest,
+                        const FlowConditions& conditions, double separation, const CavitationSolverOptions& solver,
+                        const FilmSolution* start, FilmRows* rows) {
   LubricatedFilm result;
   result.separation = separation;
-  result.film = film_thickness(grid, heights, separation);
-  const ReynoldsStencil stencil(grid, result.film, conditions);
-  result.solution = solve_cavitating_film(stencil, solver, start);
-  result.forces = film_forces(stencil, result.solution);
+  const Eigen::ArrayXd own = film_thickness(heights, highest, separation);
+  result.film = rows != nullptr ? rows->stencil_field({own.data(), static_cast<std::size_t>(own.size())}) : own;
+  const ReynoldsStencil stencil(rows != nullptr ? rows->stencil_grid() : grid, result.film,
+                                rows != nullptr ? rows->stencil_conditions() : conditions);
+  result.solution = solve_cavitating_film(stencil, solver, start, rows);
+  result.forces = film_forces(stencil, result.solution, rows);
   result.film_solves = 1;
   return result;
+}
+
+void check_heights(const Grid& grid, const Eigen::ArrayXd& heights, const FilmRows* rows) {
+  const std::size_t expected = rows != nullptr ? rows->own_nodes() : grid.size();
+  if (static_cast<std::size_t>(heights.size()) != expected) {
+    throw InputError(fmt::format("heights have {} values, {} {} grid {} {} cells", heights.size(),
+                                 rows != nullptr ? "this process's rows of the" : "the", grid.shape_string(),
+                                 rows != nullptr ? "have" : "has", expected));
+  }
 }
 
 }  // namespace
 
 LubricatedFilm lubricate_at_separation(const Grid& grid, const Eigen::ArrayXd& heights,
                                        const FlowConditions& conditions, double separation,
-                                       const CavitationSolverOptions& solver) {
+                                       const CavitationSolverOptions& solver, FilmRows* rows) {
   conditions.validate(grid);
   solver.validate();
-  return solve_at(grid, heights, conditions, separation, solver, nullptr);
+  check_heights(grid, heights, rows);
+  return solve_at(grid, heights, height_range(heights, rows)[0], conditions, separation, solver, nullptr, rows);
 }
 
 LubricatedFilm lubricate_at_load(const Grid& grid, const Eigen::ArrayXd& heights, const FlowConditions& conditions,
-                                 const LoadControlOptions& load, const CavitationSolverOptions& solver) {
+                                 const LoadControlOptions& load, const CavitationSolverOptions& solver,
+                                 FilmRows* rows) {
   conditions.validate(grid);
   solver.validate();
   load.validate();
-  const double range = heights.size() > 0 ? heights.maxCoeff() - heights.minCoeff() : 0.0;
+  check_heights(grid, heights, rows);
+  const auto [highest, lowest] = height_range(heights, rows);
+  const double range = grid.size() > 0 ? highest - lowest : 0.0;
   const double separation =
       load.initial_separation > 0.0 ? load.initial_separation : (range > 0.0 ? 0.1 * range : 1e-6);
   return search_separation_for_load(load, separation, [&](double s, const FilmSolution* start) {
-    return solve_at(grid, heights, conditions, s, solver, start);
+    return solve_at(grid, heights, highest, conditions, s, solver, start, rows);
   });
 }
 

@@ -58,8 +58,10 @@ void require_rows(const Grid& whole, const SlabLayout& slab, const MpiCommunicat
   });
   const double fewest = comm.min(static_cast<double>(slab.rows));
   if (fewest < 1.0) {
-    throw InputError(fmt::format("the {} film has fewer rows than the {} processes: each needs at least one row",
-                                 whole.shape_string(), comm.size()));
+    throw InputError(
+        fmt::format("the {} film leaves a process without rows on {} processes (slabs of up to {} "
+                    "rows): each needs at least one row; use fewer processes",
+                    whole.shape_string(), comm.size(), comm.max(static_cast<double>(slab.rows))));
   }
 }
 
@@ -68,10 +70,12 @@ void require_rows(const Grid& whole, const SlabLayout& slab, const MpiCommunicat
 SlabFilmRows::SlabFilmRows(const Grid& whole, const lubrication::FlowConditions& conditions, const SlabLayout& slab,
                            const MpiCommunicator& comm)
     : whole_((require_rows(whole, slab, comm), whole)),
+      whole_boundary_(conditions.boundary),
       comm_(comm),
       stencil_grid_(whole),
       stencil_conditions_(conditions) {
   const StencilRows rows = stencil_rows(whole, conditions, slab, comm.size());
+  first_whole_row_ = rows.first;
   own_first_ = rows.low_halo ? 1 : 0;
   own_rows_ = slab.rows;
   if (comm.size() == 1) return;  // the whole film: the serial stencil, nothing to exchange
@@ -159,8 +163,21 @@ void SlabFilmRows::receive_until(Link& link, long sweep, Eigen::ArrayXd& pressur
   }
 }
 
+bool SlabFilmRows::fixed_in_whole(std::size_t k) const {
+  const std::size_t nx = whole_.nx();
+  const std::size_t i = k % nx;
+  const std::size_t j = (first_whole_row_ + k / nx) % whole_.ny();
+  const bool x_edge = whole_boundary_.x == lubrication::AxisBoundary::fixed_pressure && (i == 0 || i + 1 == nx);
+  const bool y_edge =
+      whole_boundary_.y == lubrication::AxisBoundary::fixed_pressure && (j == 0 || j + 1 == whole_.ny());
+  return x_edge || y_edge;
+}
+
 void SlabFilmRows::start(const Eigen::ArrayXd& pressure, const Eigen::ArrayXd& fluid_fraction) {
+  // Each solve (a load search makes several) counts its sweeps from 0; the
+  // previous solve left no message unread (it stopped after a check).
   sweep_ = 0;
+  for (Link& link : links_) link.received = -1;
   for (Link& link : links_) send(link, pressure, fluid_fraction);
 }
 

@@ -57,11 +57,11 @@ class Harness:
         print("FAIL: " + message)
         self.failures.append(message)
 
-    def refusal_case(self, name, processes, arguments, message, output):
-        """`mpiexec -np processes halfspace solve ARGUMENTS` must exit 1 (bad
-        input) with one error line containing `message` and write no
+    def refusal_case(self, name, processes, arguments, message, output, command="solve"):
+        """`mpiexec -np processes halfspace COMMAND ARGUMENTS` must exit 1
+        (bad input) with one error line containing `message` and write no
         `output`."""
-        result = self.run_mpi(processes, ["solve"] + arguments + ["--output", output])
+        result = self.run_mpi(processes, [command] + arguments + ["--output", output])
         where = f"{name}, {processes} processes"
         errors = [line for line in result.stderr.splitlines() if line.startswith("error:")]
         if result.returncode != kExitInputError:

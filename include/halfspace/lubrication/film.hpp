@@ -14,5 +14,8 @@ namespace halfspace::lubrication {
 // positive and finite and the heights are finite and as many as the grid's
 // cells.
 Eigen::ArrayXd film_thickness(const Grid& grid, const Eigen::ArrayXd& heights, double separation);
+// The same for some of the surface's heights (a process's rows), whose
+// highest point over the whole surface is `highest`.
+Eigen::ArrayXd film_thickness(const Eigen::ArrayXd& heights, double highest, double separation);
 
 }  // namespace halfspace::lubrication

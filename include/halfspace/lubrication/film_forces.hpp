@@ -4,6 +4,7 @@
 
 #include <array>
 
+#include "halfspace/lubrication/film_rows.hpp"
 #include "halfspace/lubrication/film_solution.hpp"
 #include "halfspace/lubrication/reynolds_stencil.hpp"
 
@@ -25,10 +26,15 @@ struct FilmForces {
   std::array<double, 2> friction_force{0.0, 0.0};
   double friction_coefficient = 0.0;  // |friction force| / load (0 without load)
   double minimum_film_thickness = 0.0;
+  double max_pressure = 0.0;        // Pa
   double cavitated_fraction = 0.0;  // share of nodes with theta < 1
 };
 
-FilmForces film_forces(const ReynoldsStencil& stencil, const FilmSolution& solution);
+// The forces of `solution` on `stencil`. With `rows` (film_rows.hpp), the
+// stencil and the solution are this process's rows of a film and their
+// halo rows: the forces are the whole film's (sums over the processes, in
+// another order than the serial one's: equal to rounding). Collective then.
+FilmForces film_forces(const ReynoldsStencil& stencil, const FilmSolution& solution, const FilmRows* rows = nullptr);
 
 // What the film's sums (here and film_shear.hpp) take at node k: its
 // trapezoidal weight (half on each fixed-pressure edge it lies on), and the

@@ -11,8 +11,11 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cstddef>
+#include <span>
 
 #include "halfspace/grid.hpp"
+#include "halfspace/lubrication/flow_conditions.hpp"
 
 namespace halfspace::lubrication {
 
@@ -33,6 +36,26 @@ class FilmRows {
   // The largest of `value` and whether `value` holds on every process.
   virtual double max(double value) const = 0;
   virtual bool all(bool value) const = 0;
+
+  // What the film's pipeline (load_control.hpp, film_forces.hpp,
+  // film_shear.hpp) needs beyond the sweeps. The stencil's grid and
+  // conditions: this process's rows and its halo rows, which are
+  // fixed-pressure edges there.
+  virtual const Grid& stencil_grid() const = 0;
+  virtual const FlowConditions& stencil_conditions() const = 0;
+  // A field on the stencil's rows from this process's rows of it (the halo
+  // rows from the neighbours). Collective.
+  virtual Eigen::ArrayXd stencil_field(std::span<const double> rows) const = 0;
+  // This process's nodes of the stencil: first_own_node() .. + own_nodes() - 1.
+  virtual std::size_t first_own_node() const = 0;
+  virtual std::size_t own_nodes() const = 0;
+  // Whether stencil node k holds an imposed pressure of the whole film (a
+  // halo row is fixed in the stencil only so that the sweeps pass over it).
+  virtual bool fixed_in_whole(std::size_t k) const = 0;
+  // values[i] summed over the processes (in rank order: the same bits on
+  // every process), and the smallest of `value`.
+  virtual void sum(std::span<double> values) const = 0;
+  virtual double min(double value) const = 0;
 };
 
 }  // namespace halfspace::lubrication

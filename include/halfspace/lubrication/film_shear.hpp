@@ -26,6 +26,7 @@
 #include <array>
 
 #include "halfspace/grid.hpp"
+#include "halfspace/lubrication/film_rows.hpp"
 #include "halfspace/lubrication/flow_conditions.hpp"
 #include "halfspace/lubrication/lubricant.hpp"
 
@@ -65,9 +66,14 @@ struct FilmShear {
 // the laws and the limits; throws InputError for arrays of the wrong size
 // or a film that is not positive. Nodes where `contact_pressure` (if given)
 // is positive carry no film shear: a mixed film's asperities take them
-// (their friction is the caller's).
+// (their friction is the caller's). With `rows` (film_rows.hpp), `grid`
+// and `conditions` are its stencil's and the fields its nodes' (halo rows
+// included): the shear fields cover this process's rows, the forces the
+// whole film (sums over the processes, equal to the serial ones to
+// rounding). Collective then.
 FilmShear film_shear(const Grid& grid, const FlowConditions& conditions, const LubricantLaws& laws,
                      const ShearLimits& limits, const Eigen::ArrayXd& film, const Eigen::ArrayXd& pressure,
-                     const Eigen::ArrayXd& fluid_fraction, const Eigen::ArrayXd* contact_pressure = nullptr);
+                     const Eigen::ArrayXd& fluid_fraction, const Eigen::ArrayXd* contact_pressure = nullptr,
+                     const FilmRows* rows = nullptr);
 
 }  // namespace halfspace::lubrication

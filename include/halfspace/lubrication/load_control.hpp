@@ -24,16 +24,22 @@ struct LoadControlOptions {
 
 struct LubricatedFilm {
   double separation = 0.0;  // m, the minimum film thickness
-  Eigen::ArrayXd film;      // m
+  // m; the film and the solution cover the whole film, or with FilmRows
+  // (film_rows.hpp) its stencil: this process's rows and the halo rows.
+  Eigen::ArrayXd film;
   FilmSolution solution;
   FilmForces forces;
   int film_solves = 0;  // the solves the separation search took (1 under separation control)
 };
 
 // Separation control: the film at `separation`.
+// With `rows` (both functions), `grid` and `conditions` are the whole
+// film's, `heights` this process's rows of it, and the film is solved on
+// the processes `rows` joins (collective): the iterates are the serial
+// ones, the forces' sums equal the serial ones to rounding.
 LubricatedFilm lubricate_at_separation(const Grid& grid, const Eigen::ArrayXd& heights,
                                        const FlowConditions& conditions, double separation,
-                                       const CavitationSolverOptions& solver = {});
+                                       const CavitationSolverOptions& solver = {}, FilmRows* rows = nullptr);
 
 // Load control: brackets the separation (the load falls as it grows) by
 // factors of 4 from the initial one, then a secant on log load against log
@@ -42,6 +48,7 @@ LubricatedFilm lubricate_at_separation(const Grid& grid, const Eigen::ArrayXd& h
 // not change with the separation, as for a flat film), is returned with its
 // status and message; a load not met is status iteration_limit.
 LubricatedFilm lubricate_at_load(const Grid& grid, const Eigen::ArrayXd& heights, const FlowConditions& conditions,
-                                 const LoadControlOptions& load, const CavitationSolverOptions& solver = {});
+                                 const LoadControlOptions& load, const CavitationSolverOptions& solver = {},
+                                 FilmRows* rows = nullptr);
 
 }  // namespace halfspace::lubrication

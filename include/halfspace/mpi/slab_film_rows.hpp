@@ -38,13 +38,14 @@ class SlabFilmRows final : public lubrication::FilmRows {
   SlabFilmRows(const SlabFilmRows&) = delete;
   SlabFilmRows& operator=(const SlabFilmRows&) = delete;
 
-  // The stencil's grid and conditions: this process's rows and its halo
-  // rows, which are fixed-pressure edges there (the sweeps pass over them).
-  const Grid& stencil_grid() const { return stencil_grid_; }
-  const lubrication::FlowConditions& stencil_conditions() const { return stencil_conditions_; }
-  // A field on the stencil's rows from this process's rows of it (the halo
-  // rows from the neighbours). Collective.
-  Eigen::ArrayXd stencil_field(std::span<const double> rows) const;
+  const Grid& stencil_grid() const override { return stencil_grid_; }
+  const lubrication::FlowConditions& stencil_conditions() const override { return stencil_conditions_; }
+  Eigen::ArrayXd stencil_field(std::span<const double> rows) const override;
+  std::size_t first_own_node() const override { return own_first_ * whole_.nx(); }
+  std::size_t own_nodes() const override { return own_rows_ * whole_.nx(); }
+  bool fixed_in_whole(std::size_t k) const override;
+  void sum(std::span<double> values) const override { comm_.sum(values); }
+  double min(double value) const override { return comm_.min(value); }
   // This process's rows of a field on the stencil's rows.
   Eigen::ArrayXd own_rows(const Eigen::ArrayXd& field) const;
 
@@ -75,8 +76,10 @@ class SlabFilmRows final : public lubrication::FilmRows {
   void send(Link& link, const Eigen::ArrayXd& pressure, const Eigen::ArrayXd& fluid_fraction) const;
 
   Grid whole_;
+  lubrication::FlowBoundary whole_boundary_;
   const MpiCommunicator& comm_;
-  std::size_t own_first_ = 0;  // the first of this process's rows in the stencil
+  std::size_t first_whole_row_ = 0;  // the stencil's first row, as a row of the whole film
+  std::size_t own_first_ = 0;        // the first of this process's rows in the stencil
   std::size_t own_rows_ = 0;
   Grid stencil_grid_;
   lubrication::FlowConditions stencil_conditions_;

@@ -1,0 +1,132 @@
+#!/usr/bin/env python3
+"""`mpiexec halfspace lubricate` against the serial program (HALFSPACE_MPI
+builds; ctest runs it).
+
+usage: distributed_lubricate_test.py MPI_PROGRAM SERIAL_PROGRAM MPIEXEC SOURCE_DIR WORK_DIR
+
+The steady rigid film of a 2D map on 1, 2 and 3 processes (3: uneven slabs)
+must write the serial program's file: the same datasets, shapes, types and
+attributes. Under separation control the solver's iterates are the serial
+ones, so every field equals the serial one to the bit; the forces and flows
+are sums over the processes, added in another order, so the attributes
+(and under load control, the separation found from them, hence the fields)
+equal the serial ones within kFieldTolerance. Cases: fixed edges with
+entrainment along x and oblique, y-periodic with entrainment down and up,
+x-periodic, load control, a prepared map (window and detrending), shear
+limits; a profile (one row) on several processes is run by the first
+process as the serial program runs it, elastic films included. The films
+that do not run on slabs (elastic, mixed, transient) and --plot must be
+refused by every process with one message and no file.
+"""
+import os
+import sys
+
+import h5py
+import numpy as np
+from mpi_harness import Harness, kFieldTolerance, kProcessCounts, kRunAttributes
+
+# The residual is rounding-sized: compared in absolute terms.
+kAbsoluteAttributes = {"relative_residual"}
+# A force's components are compared relative to its magnitude: a component
+# that cancels (y on a film symmetric about its centre line) is rounding
+# about 0, which its own size would not measure.
+kForceVectors = {f"{force}_{axis}": force for force in ("friction_force", "couette_friction_force")
+                 for axis in "xy"}
+# The fields of a film file.
+kFields = ("pressure", "film", "fluid_fraction", "shear_x", "shear_y")
+
+harness = Harness(sys.argv)
+mpi_program, serial_program, mpiexec, source_dir, work_dir = harness.arguments
+fail = harness.fail
+
+
+def compare_files(where, got_path, want_path, bitwise):
+    with h5py.File(got_path, "r") as got, h5py.File(want_path, "r") as want:
+        def force_scale(name):
+            if name not in kForceVectors:
+                return None
+            force = kForceVectors[name]
+            return max(float(np.hypot(want.attrs[force + "_x"], want.attrs[force + "_y"])), 1e-300)
+
+        harness.compare_attributes(where + " /", dict(got.attrs), dict(want.attrs), kRunAttributes, kFieldTolerance,
+                                   kAbsoluteAttributes, force_scale)
+        names = harness.same_objects(where, got, want, required=kFields)
+        if names is None:
+            return
+        worst = 0.0
+        for name in names:
+            harness.compare_attributes(f"{where} /{name}", dict(got[name].attrs), dict(want[name].attrs),
+                                       kRunAttributes, kFieldTolerance)
+            worst = max(worst, harness.compare_dataset(where, name, got[name], want[name], kFieldTolerance))
+            if bitwise and not np.array_equal(got[name][()], want[name][()]):
+                fail(f"{where}: /{name} is not the serial field to the bit")
+        print(f"{where}: largest field difference {worst:.2e} of the field's largest value"
+              + (" (fields equal to the bit)" if bitwise and worst == 0.0 else ""))
+
+
+def film_case(name, arguments, bitwise, process_counts=kProcessCounts):
+    serial_output = harness.serial_output(name, "lubricate", arguments)
+    if serial_output is None:
+        return
+    for where, output in harness.distributed_outputs(name, "lubricate", arguments, process_counts):
+        compare_files(where, output, serial_output, bitwise)
+
+
+def generate(name, arguments):
+    path = os.path.join(work_dir, name + ".h5")
+    result = harness.run([serial_program, "generate"] + arguments + ["--quiet", "--output", path])
+    if result.returncode != 0:
+        fail(f"generate {name}: {result.stderr.strip()}")
+    return path
+
+
+# A ball on a 48 x 40 map (40 rows: 14, 14 and 12 on 3 processes), and a
+# profile of a cylinder.
+ball = generate("ball", ["--kind", "sphere", "--grid", "48x40", "--size", "1e-3x0.8e-3", "--radius", "0.01"])
+cylinder = generate("cylinder", ["--kind", "cylinder", "--grid", "64", "--size", "1e-3", "--radius", "0.01"])
+rough = os.path.join(source_dir, "examples", "self_affine_128.h5")
+common = ["--viscosity", "0.1", "--quiet"]
+on_ball = ["--height-map", ball] + common
+
+# Separation control: the serial iterates on every process count.
+film_case("fixed-along-x", on_ball + ["--entrainment-velocity", "1", "--sliding-velocity", "0.2",
+                                      "--separation", "2e-6"], bitwise=True)
+film_case("fixed-oblique-down", on_ball + ["--entrainment-velocity", "1,-0.4", "--sliding-velocity", "0.2,0.1",
+                                           "--separation", "1e-6", "--side-pressure", "1e5"], bitwise=True)
+film_case("periodic-y-down", on_ball + ["--entrainment-velocity", "1,-0.3", "--periodic-y", "--separation", "1e-6"],
+          bitwise=True)
+film_case("periodic-y-up", on_ball + ["--entrainment-velocity", "0.5,0.5", "--periodic-y", "--separation", "1e-6",
+                                      "--inlet-pressure", "2e5"], bitwise=True)
+film_case("periodic-x", on_ball + ["--entrainment-velocity", "1,0.2", "--periodic-x", "--separation", "1e-6",
+                                   "--supply-fluid-fraction", "0.7"], bitwise=True)
+film_case("shear-limits", on_ball + ["--entrainment-velocity", "1", "--sliding-velocity", "2", "--separation",
+                                     "3e-7", "--eyring-stress", "5e6", "--limiting-shear-stress", "2e7"],
+          bitwise=True)
+# A prepared measured map: a window of the rough example, detrended.
+film_case("rough-window", ["--height-map", rough, "--window", "8,4,64,45", "--detrend", "plane"] + common +
+          ["--entrainment-velocity", "1,0.1", "--separation", "2e-6"], bitwise=True)
+# Load control: the separation search on the forces' sums.
+film_case("load-fixed", on_ball + ["--entrainment-velocity", "1,0.3", "--force", "5"], bitwise=False)
+film_case("load-periodic-y", on_ball + ["--entrainment-velocity", "1,-0.3", "--periodic-y", "--force", "5"],
+          bitwise=False)
+# A profile: the first process runs it as one process does (the elastic
+# film too).
+profile = ["--height-map", cylinder] + common + ["--entrainment-velocity", "1"]
+film_case("profile-rigid", profile + ["--force", "1e3"], bitwise=True, process_counts=(2, 3))
+film_case("profile-elastic", profile + ["--force", "1e4", "--E-star", "1.1e11"], bitwise=True, process_counts=(2, 3))
+
+# What does not run on slabs: refused by every process alike, no file.
+refused = os.path.join(work_dir, "refused.h5")
+base = on_ball + ["--entrainment-velocity", "1"]
+for name, arguments, message in [
+        ("elastic", ["--force", "5", "--E-star", "1e11"], "the elastic film"),
+        ("mixed", ["--force", "5", "--E-star", "1e11", "--mixed"], "the mixed film"),
+        ("transient", ["--separation", "1e-6", "--time-step", "1e-4", "--steps", "2", "--approach-velocity",
+                       "1e-3"], "the transient film"),
+        ("plot", ["--separation", "1e-6", "--plot"], "--plot is not available with more than one process"),
+        # 4 rows on 3 processes: FFTW's slabs of 2 rows leave the third none.
+        ("too-few-rows", ["--window", "0,0,48,4", "--separation", "1e-6"], "leaves a process without rows")]:
+    harness.refusal_case(f"refused {name}", 3 if name == "too-few-rows" else 2, base + arguments, message, refused,
+                         command="lubricate")
+
+harness.finish()
