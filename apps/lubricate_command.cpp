@@ -264,32 +264,42 @@ int with_lubricate_flags(const LubricateOptions& o, Function&& function) {
 // film, fluid fraction, fluid and contact pressure, deformation, shear x and y.
 constexpr int kMostFilmFields = 8;
 
+// The film's fields (the rows `place` holds), its summary, the grid, `more`
+// and where it came from, on a film file's root (the single film's, or a
+// transient run's last step).
+void write_film_root(const io::Hdf5Node& root, const LubricateOptions& o, const HeightMap& map, const Grid& grid,
+                     const FilmPlace& place, const lubrication::FilmSummary& summary, const Eigen::ArrayXd& pressure,
+                     const Eigen::ArrayXd& film, const Eigen::ArrayXd& fluid_fraction,
+                     const std::function<void(const io::Hdf5Node&)>& more) {
+  const std::vector<std::size_t> shape = io::field_shape(grid);
+  const auto field = [&](std::string_view name, const Eigen::ArrayXd& values, std::string_view unit) {
+    root.write_dataset_rows(name, shape, place.first_row,
+                            std::span<const double>(values.data(), static_cast<std::size_t>(values.size())), unit);
+  };
+  field("pressure", pressure, "Pa");
+  field("film", film, "m");
+  field("fluid_fraction", fluid_fraction, "");
+  io::write_film_attributes(root, summary);
+  io::write_grid_attributes(root, grid);
+  more(root);
+  root.write_string_attribute("source", map.source);
+  if (!map.preparation.empty())
+    root.write_string_attribute("preparation", fmt::format("{}", fmt::join(map.preparation, "\n")));
+  root.write_string_attribute("command_line", o.command_line);
+  root.write_string_attribute("halfspace_version", fmt::format("{} ({})", kVersion, kGitHash));
+}
+
 // The film file, written where `place` says; the fields hold the rows held
 // there.
 void write_film_file(const LubricateOptions& o, const HeightMap& map, const Grid& grid, const FilmPlace& place,
                      const lubrication::FilmSummary& summary, const Eigen::ArrayXd& pressure,
                      const Eigen::ArrayXd& film, const Eigen::ArrayXd& fluid_fraction,
                      const std::function<void(const io::Hdf5Node&)>& more) {
-  const std::vector<std::size_t> shape = io::field_shape(grid);
   const std::uint64_t bound =
-      kMostFilmFields * io::hdf5_dataset_bound(shape, io::Compression::deflate) + io::kHdf5SmallItemsBound;
-  const auto field = [&](const io::Hdf5Node& root, std::string_view name, const Eigen::ArrayXd& values,
-                         std::string_view unit) {
-    root.write_dataset_rows(name, shape, place.first_row,
-                            std::span<const double>(values.data(), static_cast<std::size_t>(values.size())), unit);
-  };
+      kMostFilmFields * io::hdf5_dataset_bound(io::field_shape(grid), io::Compression::deflate) +
+      io::kHdf5SmallItemsBound;
   place.write_file(*o.output, bound, [&](const io::Hdf5Node& root) {
-    field(root, "pressure", pressure, "Pa");
-    field(root, "film", film, "m");
-    field(root, "fluid_fraction", fluid_fraction, "");
-    io::write_film_attributes(root, summary);
-    io::write_grid_attributes(root, grid);
-    more(root);
-    root.write_string_attribute("source", map.source);
-    if (!map.preparation.empty())
-      root.write_string_attribute("preparation", fmt::format("{}", fmt::join(map.preparation, "\n")));
-    root.write_string_attribute("command_line", o.command_line);
-    root.write_string_attribute("halfspace_version", fmt::format("{} ({})", kVersion, kGitHash));
+    write_film_root(root, o, map, grid, place, summary, pressure, film, fluid_fraction, more);
   });
 }
 
@@ -299,6 +309,44 @@ void write_film_file(const LubricateOptions& o, const HeightMap& map, const Grid
                      const Eigen::ArrayXd& film, const Eigen::ArrayXd& fluid_fraction,
                      const std::function<void(const io::Hdf5Node&)>& more) {
   write_film_file(o, map, grid, FilmPlace{}, summary, pressure, film, fluid_fraction, more);
+}
+
+// What an elastic and a mixed film report alike: the summary (the film's
+// own cavitated fraction and film solves given), and the body's and the
+// lubricant's attributes.
+template <class Film>
+lubrication::FilmSummary elastic_summary(std::string_view model, const Film& film, const Grid& grid, double viscosity,
+                                         double cavitated_fraction, long long film_solves) {
+  lubrication::FilmSummary summary;
+  summary.model = model;
+  summary.status = std::string(lubrication::to_string(film.status));
+  summary.message = film.message;
+  summary.load = film.load;
+  summary.mean_pressure = film.load / grid.domain_area();
+  summary.separation = film.offset;
+  summary.central_film_thickness = film.central_film_thickness;
+  summary.minimum_film_thickness = film.minimum_film_thickness;
+  summary.max_pressure = film.max_pressure;
+  summary.cavitated_fraction = cavitated_fraction;
+  summary.viscosity = viscosity;
+  summary.iterations = film.iterations;
+  summary.film_solves = film_solves;
+  summary.relative_residual = film.relative_residual;
+  summary.solve_seconds = film.wall_seconds;
+  return summary;
+}
+
+void write_elastic_attributes(const io::Hdf5Node& root, double e_star, const lubrication::LubricantLaws& laws,
+                              double viscosity, lubrication::CouetteScheme scheme, double load_error) {
+  root.write_double_attribute("E_star", e_star);
+  root.write_string_attribute("piezoviscosity", lubrication::to_string(laws.piezoviscosity));
+  root.write_double_attribute("pressure_viscosity", laws.pressure_viscosity);
+  root.write_double_attribute("roelands_index", laws.piezoviscosity == lubrication::Piezoviscosity::roelands
+                                                    ? laws.roelands_exponent(viscosity)
+                                                    : 0.0);
+  root.write_string_attribute("compressibility", lubrication::to_string(laws.compressibility));
+  root.write_string_attribute("couette_scheme", lubrication::to_string(scheme));
+  root.write_double_attribute("load_error", load_error);
 }
 
 // The summary printed by the first (or only) process, `prints`.
@@ -339,40 +387,16 @@ int run_elastic(const LubricateOptions& o, const HeightMap& map, const Grid& gri
   const lubrication::FilmShear shear =
       lubrication::film_shear(grid, conditions, laws, limits, film.film, film.pressure, film.fluid_fraction);
 
-  lubrication::FilmSummary summary;
-  summary.model = "elastic";
-  summary.status = std::string(lubrication::to_string(film.status));
-  summary.message = film.message;
-  summary.load = film.load;
-  summary.mean_pressure = film.load / grid.domain_area();
-  summary.separation = film.offset;
-  summary.central_film_thickness = film.central_film_thickness;
-  summary.minimum_film_thickness = film.minimum_film_thickness;
-  summary.max_pressure = film.max_pressure;
-  summary.cavitated_fraction =
-      static_cast<double>((film.fluid_fraction < 1.0).count()) / static_cast<double>(grid.size());
-  summary.viscosity = conditions.viscosity;
-  summary.iterations = film.iterations;
-  summary.film_solves = 1;
-  summary.relative_residual = film.relative_residual;
-  summary.solve_seconds = film.wall_seconds;
+  lubrication::FilmSummary summary =
+      elastic_summary("elastic", film, grid, conditions.viscosity,
+                      static_cast<double>((film.fluid_fraction < 1.0).count()) / static_cast<double>(grid.size()), 1);
   add_shear(summary, shear);
   write_film_file(o, map, grid, summary, film.pressure, film.film, film.fluid_fraction, [&](const io::Hdf5Node& root) {
-    root.write_dataset("deformation",
-                       map.dimension == 1 ? std::vector<std::size_t>{map.nx} : std::vector<std::size_t>{map.ny, map.nx},
+    root.write_dataset("deformation", io::field_shape(grid),
                        std::span<const double>(film.deformation.data(), grid.size()), "m");
-    root.write_double_attribute("E_star", e_star);
-    root.write_string_attribute("piezoviscosity", lubrication::to_string(laws.piezoviscosity));
-    root.write_double_attribute("pressure_viscosity", laws.pressure_viscosity);
-    root.write_double_attribute("roelands_index", laws.piezoviscosity == lubrication::Piezoviscosity::roelands
-                                                      ? laws.roelands_exponent(conditions.viscosity)
-                                                      : 0.0);
-    root.write_string_attribute("compressibility", lubrication::to_string(laws.compressibility));
-    root.write_string_attribute("couette_scheme", lubrication::to_string(options.couette_scheme));
-    root.write_double_attribute("load_error", film.load_error);
+    write_elastic_attributes(root, e_star, laws, conditions.viscosity, options.couette_scheme, film.load_error);
     if (coating) io::write_coating_attributes(root, *coating);
-    write_shear(root, map.dimension == 1 ? std::vector<std::size_t>{map.nx} : std::vector<std::size_t>{map.ny, map.nx},
-                shear, limits);
+    write_shear(root, io::field_shape(grid), shear, limits);
   });
   return report(o, map, summary, film.converged());
 }
@@ -387,15 +411,7 @@ void write_mixed_fields(const io::Hdf5Node& root, const std::vector<std::size_t>
   field("fluid_pressure", film.fluid_pressure, "Pa");
   field("contact_pressure", film.contact_pressure, "Pa");
   field("deformation", film.deformation, "m");
-  root.write_double_attribute("E_star", e_star);
-  root.write_string_attribute("piezoviscosity", lubrication::to_string(laws.piezoviscosity));
-  root.write_double_attribute("pressure_viscosity", laws.pressure_viscosity);
-  root.write_double_attribute("roelands_index", laws.piezoviscosity == lubrication::Piezoviscosity::roelands
-                                                    ? laws.roelands_exponent(viscosity)
-                                                    : 0.0);
-  root.write_string_attribute("compressibility", lubrication::to_string(laws.compressibility));
-  root.write_string_attribute("couette_scheme", lubrication::to_string(options.couette_scheme));
-  root.write_double_attribute("load_error", film.load_error);
+  write_elastic_attributes(root, e_star, laws, viscosity, options.couette_scheme, film.load_error);
   root.write_double_attribute("fluid_load", film.fluid_load);
   root.write_double_attribute("contact_load", film.contact_load);
   root.write_double_attribute("contact_load_fraction", film.contact_load_fraction);
@@ -466,29 +482,15 @@ int run_mixed(const LubricateOptions& o, const HeightMap& map, const Grid& grid,
     first_failure = film.message;
   }
 
-  lubrication::FilmSummary summary;
-  summary.model = "mixed";
-  summary.status = std::string(lubrication::to_string(film.status));
+  lubrication::FilmSummary summary =
+      elastic_summary("mixed", film, grid, conditions.viscosity, film.cavitated_fraction,
+                      problem.speeds ? static_cast<long long>(problem.speeds->size()) : 1);
   summary.message = all_converged ? std::string() : first_failure;
-  summary.load = film.load;
-  summary.mean_pressure = film.load / grid.domain_area();
-  summary.separation = film.offset;
-  summary.central_film_thickness = film.central_film_thickness;
-  summary.minimum_film_thickness = film.minimum_film_thickness;
-  summary.max_pressure = film.max_pressure;
-  summary.cavitated_fraction = film.cavitated_fraction;
-  summary.viscosity = conditions.viscosity;
-  summary.iterations = film.iterations;
-  summary.film_solves = problem.speeds ? static_cast<long long>(problem.speeds->size()) : 1;
-  summary.relative_residual = film.relative_residual;
-  summary.solve_seconds = film.wall_seconds;
   summary.friction_force_x = film.fluid_friction_force[0] + film.contact_friction_force[0];
   summary.friction_force_y = film.fluid_friction_force[1] + film.contact_friction_force[1];
   summary.friction_coefficient = film.friction_coefficient;
-  const std::vector<std::size_t> shape =
-      map.dimension == 1 ? std::vector<std::size_t>{map.nx} : std::vector<std::size_t>{map.ny, map.nx};
   write_film_file(o, map, grid, summary, film.pressure, film.film, film.fluid_fraction, [&](const io::Hdf5Node& root) {
-    write_mixed_fields(root, shape, grid.size(), film, options, e_star, laws, used.viscosity);
+    write_mixed_fields(root, io::field_shape(grid), grid.size(), film, options, e_star, laws, used.viscosity);
     root.write_double_attribute("entrainment_speed",
                                 std::hypot(used.entrainment_velocity[0], used.entrainment_velocity[1]));
   });
@@ -560,22 +562,14 @@ int run_transient(const LubricateOptions& o, const HeightMap& map, const Grid& g
         const lubrication::FilmShear shear = lubrication::film_shear(
             grid, conditions, {}, problem.limits, film.film, film.solution.pressure, film.solution.fluid_fraction);
         add_shear(summary, shear);
-        const std::vector<std::size_t> shape = io::field_shape(grid);
-        root.write_dataset("pressure", shape, std::span<const double>(film.solution.pressure.data(), grid.size()),
-                           "Pa");
-        root.write_dataset("film", shape, std::span<const double>(film.film.data(), grid.size()), "m");
-        root.write_dataset("fluid_fraction", shape,
-                           std::span<const double>(film.solution.fluid_fraction.data(), grid.size()), "");
-        io::write_film_attributes(root, summary);
-        io::write_grid_attributes(root, grid);
-        write_shear(root, shape, shear, problem.limits);
-        root.write_double_attribute("time_step", transient.time_step);
-        root.write_int64_attribute("time_steps", transient.steps);
-        root.write_string_attribute("time_scheme", lubrication::to_string(transient.scheme));
-        root.write_double_attribute("time", last.time);
-        root.write_string_attribute("source", map.source);
-        root.write_string_attribute("command_line", o.command_line);
-        root.write_string_attribute("halfspace_version", fmt::format("{} ({})", kVersion, kGitHash));
+        write_film_root(root, o, map, grid, FilmPlace{}, summary, film.solution.pressure, film.film,
+                        film.solution.fluid_fraction, [&](const io::Hdf5Node& node) {
+                          write_shear(node, io::field_shape(grid), shear, problem.limits);
+                          node.write_double_attribute("time_step", transient.time_step);
+                          node.write_int64_attribute("time_steps", transient.steps);
+                          node.write_string_attribute("time_scheme", lubrication::to_string(transient.scheme));
+                          node.write_double_attribute("time", last.time);
+                        });
       });
   const bool converged = outcome.status == lubrication::FilmStatus::converged;
   if (!converged) {

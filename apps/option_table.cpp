@@ -158,28 +158,20 @@ void set_from_toml(const BoundOption& spec, const toml::node& node, const std::f
       *std::get<std::optional<std::string>*>(spec.slot) = text;
       break;
     }
-    case OptionKind::dimensions: {
+    case OptionKind::dimensions:
+    case OptionKind::memory: {
+      // Read as text, as on the command line; a memory size is whole bytes.
+      const bool memory = spec.kind == OptionKind::memory;
       std::string text;
       if (node.is_string()) {
         text = *node.value<std::string>();
       } else if (node.is_integer()) {
         text = fmt::format("{}", *node.value<long long>());
-      } else if (node.is_floating_point()) {
+      } else if (node.is_floating_point() && !memory) {
         text = fmt::format("{}", *node.value<double>());  // shortest form that reads back exactly
       } else {
-        throw wrong_type("a number or a string such as \"256x256\"");
-      }
-      *std::get<std::optional<std::string>*>(spec.slot) = text;
-      break;
-    }
-    case OptionKind::memory: {
-      std::string text;
-      if (node.is_string()) {
-        text = *node.value<std::string>();
-      } else if (node.is_integer()) {
-        text = fmt::format("{}", *node.value<long long>());
-      } else {
-        throw wrong_type("a string such as \"8G\" or a whole number of bytes");
+        throw wrong_type(memory ? "a string such as \"8G\" or a whole number of bytes"
+                                : "a number or a string such as \"256x256\"");
       }
       *std::get<std::optional<std::string>*>(spec.slot) = text;
       break;

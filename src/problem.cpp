@@ -195,13 +195,7 @@ std::optional<solvers::SolverOptions::Adhesion> Rules::adhesion() const {
   // in the ranges of their kinds.
   law_ranges(made.law);
   if (o_.adhesion_tol) made.tolerance = *o_.adhesion_tol;
-  if (o_.adhesion_precondition) {
-    if (*o_.adhesion_precondition != "on" && *o_.adhesion_precondition != "off") {
-      throw OptionError("adhesion_precondition", *o_.adhesion_precondition,
-                        "is invalid: allowed values are on and off");
-    }
-    made.precondition = *o_.adhesion_precondition == "on";
-  }
+  if (o_.adhesion_precondition) made.precondition = on_off("adhesion_precondition", *o_.adhesion_precondition);
   return made;
 }
 

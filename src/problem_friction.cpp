@@ -96,18 +96,9 @@ std::optional<solvers::FrictionOptions> Rules::friction(const solvers::SolverOpt
   if (o_.tangential_active_set) friction.active_set_updates = clamped(*o_.tangential_active_set);
   if (o_.normal_load_steps) friction.normal_load_steps = clamped(*o_.normal_load_steps);
   if (o_.tangential_coarse_start) {
-    if (*o_.tangential_coarse_start != "on" && *o_.tangential_coarse_start != "off") {
-      throw OptionError("tangential_coarse_start", *o_.tangential_coarse_start,
-                        "is invalid: allowed values are on and off");
-    }
-    friction.coarse_start = *o_.tangential_coarse_start == "on";
+    friction.coarse_start = on_off("tangential_coarse_start", *o_.tangential_coarse_start);
   }
-  if (o_.coupling) {
-    if (*o_.coupling != "on" && *o_.coupling != "off") {
-      throw OptionError("coupling", *o_.coupling, "is invalid: allowed values are on and off");
-    }
-    friction.coupling = *o_.coupling == "on";
-  }
+  if (o_.coupling) friction.coupling = on_off("coupling", *o_.coupling);
   try {
     friction.validate(normal);
   } catch (const solvers::SolverOptionError& error) {

@@ -84,6 +84,13 @@ class Checks {
     for (const auto& [option, _] : options) all.push_back(name(option));
     return all;
   }
+  // "on" or "off" as true or false.
+  static bool on_off(std::string_view option, const std::string& value) {
+    if (value != "on" && value != "off") {
+      throw OptionError(std::string(option), value, "is invalid: allowed values are on and off");
+    }
+    return value == "on";
+  }
   double positive(std::string_view option, double value, std::string_view unit) const {
     if (!(std::isfinite(value) && value > 0.0)) {
       throw OptionError(std::string(option), format_number(value),

@@ -197,22 +197,9 @@ def friction(heights: npt.NDArray[np.float64], dx: float, dy: float, boundary: s
              progress: Optional[Callable[[int, float], Optional[bool]]], command_line: str, height_source: str,
              preparation: Sequence[str]) -> History: ...
 def read_result(path: str, step: int = -1) -> Result: ...
-def lubricate(heights: npt.NDArray[np.float64], dx: float, dy: float, viscosity: float,
-              entrainment_velocity: Sequence[float], sliding_velocity: Optional[Sequence[float]],
-              separation: Optional[float], force: Optional[float], inlet_pressure: float, outlet_pressure: float,
-              side_pressure: float, periodic_x: bool, periodic_y: bool, supply_fluid_fraction: float,
-              tol: Optional[float], max_iter: Optional[int], e_star: Optional[float], E1: Optional[float],
-              nu1: Optional[float], E2: Optional[float], nu2: Optional[float],
-              coating: Optional[Sequence[Optional[float]]], boundary: Optional[str],
-              pressure_viscosity: Optional[float], piezoviscosity: Optional[str],
-              roelands_index: Optional[float], compressibility: Optional[str], couette_scheme: Optional[str],
-              film_preconditioner: Optional[str], eyring_stress: Optional[float], limiting_shear_stress: Optional[float],
-              limiting_shear_slope: Optional[float], mixed: bool, offset: Optional[float],
-              contact_friction: Optional[float], boundary_film: Optional[float],
-              speeds: Optional[Sequence[float]], time_step: Optional[float], steps: Optional[int],
-              time_scheme: Optional[str], approach_velocity: Optional[float],
-              separation_history: Optional[Sequence[float]], threads: Optional[int]) -> Any:
-    """The film's fields (numpy arrays) and numbers, as halfspace.Film holds them, or with speeds a list of
-    them, one per speed, or with time_step a dict of the steps' films and the run's status
-    (python/src/lubricate.cpp)."""
+def lubricate(heights: npt.NDArray[np.float64], dx: float, dy: float, film: dict[str, Any],
+              threads: Optional[int]) -> Any:
+    """The film of `film` (the library's option names, lubrication_option_names; None: not given): its fields
+    (numpy arrays) and numbers, as halfspace.Film holds them, or with speeds a list of them, one per speed, or
+    with time_step a dict of the steps' films and the run's status (python/src/lubricate.cpp)."""
 def paper_reproduce(test: int, load: float) -> dict[str, Any]: ...

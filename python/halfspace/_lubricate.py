@@ -11,7 +11,7 @@ import numpy.typing as npt
 
 from . import _core
 from ._height_map import HeightMap
-from ._solve import _LAYER_NAMES, _coating, _surface
+from ._solve import _coating, _surface
 
 Velocity = Union[float, Sequence[float]]
 
@@ -255,31 +255,30 @@ def _arguments(surface, *, viscosity: float, entrainment_velocity: Velocity,
               threads: Optional[int] = None, speeds=None) -> tuple:
     height_map = _surface(surface, dx, dy)
     # The rules are the library's (make_lubrication_problem); here the
-    # keywords only become the binding's arguments.
-    given = _coating(coating)
-    layers = [given.get(name) for name in _LAYER_NAMES] if given else None
+    # keywords only become its options (lubrication_option_names).
     if entrainment_velocity is None:
         raise _core.InputError("entrainment_velocity= is needed: UX or (UX, UY) in m/s")
-    return (
-        height_map.heights, height_map.dx, height_map.dy or 0.0, float(viscosity),
-        _velocity(entrainment_velocity, "entrainment_velocity"),
-        None if sliding_velocity is None else _velocity(sliding_velocity, "sliding_velocity"),
-        _optional_float(separation, "separation"), _optional_float(force, "force"), float(inlet_pressure),
-        float(outlet_pressure), float(side_pressure), bool(periodic_x), bool(periodic_y),
-        float(supply_fluid_fraction), _optional_float(tol, "tol"), None if max_iter is None else int(max_iter),
-        *[_optional_float(value, name) for name, value in
-          (("e_star", e_star), ("E1", E1), ("nu1", nu1), ("E2", E2), ("nu2", nu2))],
-        layers, boundary, _optional_float(pressure_viscosity, "pressure_viscosity"), piezoviscosity,
-        _optional_float(roelands_index, "roelands_index"), compressibility, couette_scheme, film_preconditioner,
-        _optional_float(eyring_stress, "eyring_stress"), _optional_float(limiting_shear_stress, "limiting_shear_stress"),
-        _optional_float(limiting_shear_slope, "limiting_shear_slope"),
-        bool(mixed), _optional_float(offset, "offset"), _optional_float(contact_friction, "contact_friction"),
-        _optional_float(boundary_film, "boundary_film"),
-        _sequence(speeds, "speeds must be a sequence of entrainment speeds (m/s)"),
-        _optional_float(time_step, "time_step"), None if steps is None else int(steps), time_scheme,
-        _optional_float(approach_velocity, "approach_velocity"),
-        _sequence(separation_history, "separation_history must be a sequence of separations (m), one a step"),
-        None if threads is None else int(threads))
+    numbers = {name: _optional_float(value, name) for name, value in (
+        ("separation", separation), ("force", force), ("e_star", e_star), ("E1", E1), ("nu1", nu1), ("E2", E2),
+        ("nu2", nu2), ("pressure_viscosity", pressure_viscosity), ("roelands_index", roelands_index),
+        ("eyring_stress", eyring_stress), ("limiting_shear_stress", limiting_shear_stress),
+        ("limiting_shear_slope", limiting_shear_slope), ("offset", offset), ("contact_friction", contact_friction),
+        ("boundary_film", boundary_film), ("time_step", time_step), ("approach_velocity", approach_velocity))}
+    film = {
+        **numbers, **_coating(coating), "viscosity": float(viscosity),
+        "entrainment_velocity": _velocity(entrainment_velocity, "entrainment_velocity"),
+        "sliding_velocity": None if sliding_velocity is None else _velocity(sliding_velocity, "sliding_velocity"),
+        "inlet_pressure": float(inlet_pressure), "outlet_pressure": float(outlet_pressure),
+        "side_pressure": float(side_pressure), "periodic_x": bool(periodic_x), "periodic_y": bool(periodic_y),
+        "supply_fluid_fraction": float(supply_fluid_fraction), "tolerance": _optional_float(tol, "tol"),
+        "max_iterations": None if max_iter is None else int(max_iter), "boundary": boundary,
+        "piezoviscosity": piezoviscosity, "compressibility": compressibility, "couette_scheme": couette_scheme,
+        "film_preconditioner": film_preconditioner, "mixed": bool(mixed),
+        "speeds": _sequence(speeds, "speeds must be a sequence of entrainment speeds (m/s)"),
+        "steps": None if steps is None else int(steps), "time_scheme": time_scheme,
+        "separation_history": _sequence(separation_history,
+                                        "separation_history must be a sequence of separations (m), one a step")}
+    return (height_map.heights, height_map.dx, height_map.dy or 0.0, film, None if threads is None else int(threads))
 
 
 def _called(name: str, surface, keywords: dict, speeds=None, **fixed) -> tuple:

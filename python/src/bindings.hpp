@@ -2,16 +2,21 @@
 // takes and returns, and the functions that add each part of the module.
 #pragma once
 
+#include <fmt/format.h>
 #include <nanobind/nanobind.h>
 #include <nanobind/ndarray.h>
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <cstddef>
 #include <span>
 #include <string>
 #include <string_view>
+#include <type_traits>
+#include <variant>
 #include <vector>
 
+#include "halfspace/error.hpp"
 #include "halfspace/problem.hpp"
 
 namespace halfspace::python {
@@ -40,6 +45,32 @@ class KeywordSpelling : public OptionSpelling {
   std::string name(std::string_view option) const override;
   std::string describe(std::string_view option, std::string_view value) const override;
 };
+
+// The options `given` names (the library's names, `names`: problem.hpp's
+// problem_option_names, lubrication_problem.hpp's lubrication_option_names),
+// None values left unset. A name not listed is refused as an unknown
+// `what`, so a misspelt one never passes silently.
+template <class Options, class Name>
+Options options_from(const nb::dict& given, std::span<const Name> names, std::string_view what) {
+  Options options;
+  for (const auto& [key_object, value] : given) {
+    if (value.is_none()) continue;
+    const std::string key = nb::cast<std::string>(key_object);
+    const auto found = std::ranges::find(names, key, &Name::name);
+    if (found == names.end()) throw InputError(fmt::format("unknown {} '{}'", what, key));
+    std::visit(
+        [&](auto member) {
+          using Member = std::remove_reference_t<decltype(options.*member)>;
+          if constexpr (std::is_same_v<Member, bool>) {
+            options.*member = nb::cast<bool>(value);
+          } else {
+            options.*member = nb::cast<typename Member::value_type>(value);
+          }
+        },
+        found->field);
+  }
+  return options;
+}
 
 void bind_errors(nb::module_& module);
 void bind_surfaces(nb::module_& module);

@@ -18,6 +18,7 @@
 
 #include "bindings.hpp"
 #include "halfspace/error.hpp"
+#include "halfspace/io/hdf5_output.hpp"
 #include "halfspace/layered_material.hpp"
 #include "halfspace/lubrication/elastic_film.hpp"
 #include "halfspace/lubrication/film_shear.hpp"
@@ -45,14 +46,10 @@ auto with_keywords(Work&& work) {
   }
 }
 
-std::vector<std::size_t> shape_of(const Grid& grid) {
-  return grid.dimension() == 1 ? std::vector<std::size_t>{grid.nx()} : std::vector<std::size_t>{grid.ny(), grid.nx()};
-}
-
 // The film's fields and the shear, as the dict _lubricate.py wraps.
 void put_fields(nb::dict& out, const Grid& grid, Eigen::ArrayXd pressure, Eigen::ArrayXd film,
                 Eigen::ArrayXd fluid_fraction, const FilmShear& shear) {
-  const std::vector<std::size_t> shape = shape_of(grid);
+  const std::vector<std::size_t> shape = io::field_shape(grid);
   out["pressure"] = owning_array(std::move(pressure), shape);
   out["film"] = owning_array(std::move(film), shape);
   out["fluid_fraction"] = owning_array(std::move(fluid_fraction), shape);
@@ -186,11 +183,7 @@ nb::dict solve_elastic(const Grid& grid, const Eigen::ArrayXd& heights, const Lu
   const Eigen::ArrayXd gap = heights.maxCoeff() - heights;
   ElasticFilm film = with_keywords([&] {
     nb::gil_scoped_release release;
-    if (coating) {
-      FftInfluenceOperator op(grid, *coating);
-      return solve_elastic_film(op, gap, conditions, laws, options);
-    }
-    FftInfluenceOperator op(grid, e_star);
+    FftInfluenceOperator op = coating ? FftInfluenceOperator(grid, *coating) : FftInfluenceOperator(grid, e_star);
     return solve_elastic_film(op, gap, conditions, laws, options);
   });
   const FilmShear shear =
@@ -199,7 +192,7 @@ nb::dict solve_elastic(const Grid& grid, const Eigen::ArrayXd& heights, const Lu
   const double cavitated = static_cast<double>((film.fluid_fraction < 1.0).count()) / static_cast<double>(grid.size());
   put_elastic_summary(out, "elastic", grid, film, cavitated, 1, laws, conditions.viscosity, options.couette_scheme,
                       e_star);
-  out["deformation"] = owning_array(std::move(film.deformation), shape_of(grid));
+  out["deformation"] = owning_array(std::move(film.deformation), io::field_shape(grid));
   put_fields(out, grid, std::move(film.pressure), std::move(film.film), std::move(film.fluid_fraction), shear);
   return out;
 }
@@ -231,7 +224,7 @@ nb::dict mixed_dict(const Grid& grid, MixedFilm film, const MixedFilmOptions& op
   out["shear_y"] = nb::none();
   out["couette_friction_force"] = nb::none();
   out["limited_fraction"] = nb::none();
-  const std::vector<std::size_t> shape = shape_of(grid);
+  const std::vector<std::size_t> shape = io::field_shape(grid);
   out["fluid_pressure"] = owning_array(std::move(film.fluid_pressure), shape);
   out["contact_pressure"] = owning_array(std::move(film.contact_pressure), shape);
   out["pressure"] = owning_array(std::move(film.pressure), shape);
@@ -272,7 +265,9 @@ nb::object solve_mixed(const Grid& grid, const Eigen::ArrayXd& heights, const Lu
   return curve;
 }
 
-nb::object lubricate(const nb::object& heights_object, double dx, double dy, const LubricationProblemOptions& options,
+// The film of the keywords `given` (lubrication_option_names: None for not
+// given) on the heights.
+nb::object lubricate(const nb::object& heights_object, double dx, double dy, const nb::dict& given,
                      std::optional<int> threads) {
   const auto heights = nb::cast<InputArray>(heights_object, false);
   if (heights.ndim() != 1 && heights.ndim() != 2) {
@@ -284,7 +279,8 @@ nb::object lubricate(const nb::object& heights_object, double dx, double dy, con
         "the surface has non-finite heights: a film needs every height (HeightMap.prepare(invalid='fill'))");
   }
   const KeywordSpelling keywords;
-  const LubricationProblem problem = make_lubrication_problem(options, keywords);
+  const LubricationProblem problem = make_lubrication_problem(
+      options_from<LubricationProblemOptions>(given, lubrication_option_names(), "film option"), keywords);
   const Grid grid = heights.ndim() == 1 ? Grid::line(heights.shape(0), dx, problem.boundary)
                                         : Grid::plane(heights.shape(1), heights.shape(0), dx, dy, problem.boundary);
   problem.check_grid(grid, keywords);
@@ -305,86 +301,8 @@ nb::object lubricate(const nb::object& heights_object, double dx, double dy, con
 }  // namespace
 
 void bind_lubricate(nb::module_& module) {
-  module.def(
-      "lubricate",
-      [](const nb::object& heights, double dx, double dy, double viscosity, const std::vector<double>& entrainment,
-         std::optional<std::vector<double>> sliding, std::optional<double> separation, std::optional<double> force,
-         double inlet_pressure, double outlet_pressure, double side_pressure, bool periodic_x, bool periodic_y,
-         double supply_fluid_fraction, std::optional<double> tol, std::optional<long long> max_iter,
-         std::optional<double> e_star, std::optional<double> e1, std::optional<double> nu1, std::optional<double> e2,
-         std::optional<double> nu2, std::optional<std::vector<std::optional<double>>> coating,
-         std::optional<std::string> boundary, std::optional<double> pressure_viscosity,
-         std::optional<std::string> piezoviscosity, std::optional<double> roelands_index,
-         std::optional<std::string> compressibility, std::optional<std::string> couette_scheme,
-         std::optional<std::string> film_preconditioner, std::optional<double> eyring_stress,
-         std::optional<double> limiting_shear_stress, std::optional<double> limiting_shear_slope, bool mixed,
-         std::optional<double> offset, std::optional<double> contact_friction, std::optional<double> boundary_film,
-         std::optional<std::vector<double>> speeds, std::optional<double> time_step, std::optional<long long> steps,
-         std::optional<std::string> time_scheme, std::optional<double> approach_velocity,
-         std::optional<std::vector<double>> separation_history, std::optional<int> threads) {
-        LubricationProblemOptions o;
-        o.viscosity = viscosity;
-        o.entrainment_velocity = entrainment;
-        o.sliding_velocity = std::move(sliding);
-        o.separation = separation;
-        o.force = force;
-        o.inlet_pressure = inlet_pressure;
-        o.outlet_pressure = outlet_pressure;
-        o.side_pressure = side_pressure;
-        o.periodic_x = periodic_x;
-        o.periodic_y = periodic_y;
-        o.supply_fluid_fraction = supply_fluid_fraction;
-        o.tolerance = tol;
-        o.max_iterations = max_iter;
-        o.e_star = e_star;
-        o.e1 = e1;
-        o.nu1 = nu1;
-        o.e2 = e2;
-        o.nu2 = nu2;
-        if (coating) {  // the five layer_ and substrate_ constants in _solve._LAYER_NAMES's order, None if not given
-          if (coating->size() != 5) {
-            throw InputError("coating needs five values: thickness, layer_E, layer_nu, substrate_E, substrate_nu");
-          }
-          o.layer_thickness = (*coating)[0];
-          o.layer_e = (*coating)[1];
-          o.layer_nu = (*coating)[2];
-          o.substrate_e = (*coating)[3];
-          o.substrate_nu = (*coating)[4];
-        }
-        o.boundary = std::move(boundary);
-        o.pressure_viscosity = pressure_viscosity;
-        o.piezoviscosity = std::move(piezoviscosity);
-        o.roelands_index = roelands_index;
-        o.compressibility = std::move(compressibility);
-        o.couette_scheme = std::move(couette_scheme);
-        o.film_preconditioner = std::move(film_preconditioner);
-        o.eyring_stress = eyring_stress;
-        o.limiting_shear_stress = limiting_shear_stress;
-        o.limiting_shear_slope = limiting_shear_slope;
-        o.mixed = mixed;
-        o.offset = offset;
-        o.contact_friction = contact_friction;
-        o.boundary_film = boundary_film;
-        o.speeds = std::move(speeds);
-        o.time_step = time_step;
-        o.steps = steps;
-        o.time_scheme = std::move(time_scheme);
-        o.approach_velocity = approach_velocity;
-        o.separation_history = std::move(separation_history);
-        return lubricate(heights, dx, dy, o, threads);
-      },
-      nb::arg("heights"), nb::arg("dx"), nb::arg("dy"), nb::arg("viscosity"), nb::arg("entrainment_velocity"),
-      nb::arg("sliding_velocity").none(), nb::arg("separation").none(), nb::arg("force").none(),
-      nb::arg("inlet_pressure"), nb::arg("outlet_pressure"), nb::arg("side_pressure"), nb::arg("periodic_x"),
-      nb::arg("periodic_y"), nb::arg("supply_fluid_fraction"), nb::arg("tol").none(), nb::arg("max_iter").none(),
-      nb::arg("e_star").none(), nb::arg("E1").none(), nb::arg("nu1").none(), nb::arg("E2").none(),
-      nb::arg("nu2").none(), nb::arg("coating").none(), nb::arg("boundary").none(),
-      nb::arg("pressure_viscosity").none(), nb::arg("piezoviscosity").none(), nb::arg("roelands_index").none(),
-      nb::arg("compressibility").none(), nb::arg("couette_scheme").none(), nb::arg("film_preconditioner").none(),
-      nb::arg("eyring_stress").none(), nb::arg("limiting_shear_stress").none(), nb::arg("limiting_shear_slope").none(),
-      nb::arg("mixed"), nb::arg("offset").none(), nb::arg("contact_friction").none(), nb::arg("boundary_film").none(),
-      nb::arg("speeds").none(), nb::arg("time_step").none(), nb::arg("steps").none(), nb::arg("time_scheme").none(),
-      nb::arg("approach_velocity").none(), nb::arg("separation_history").none(), nb::arg("threads").none());
+  module.def("lubricate", &lubricate, nb::arg("heights"), nb::arg("dx"), nb::arg("dy"), nb::arg("film"),
+             nb::arg("threads").none());
 }
 
 }  // namespace halfspace::python

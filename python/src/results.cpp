@@ -253,7 +253,7 @@ Result read(const std::filesystem::path& path, int step) {
 }  // namespace
 
 std::vector<std::size_t> Run::shape() const {
-  return grid.dimension() == 1 ? std::vector<std::size_t>{grid.nx()} : std::vector<std::size_t>{grid.ny(), grid.nx()};
+  return io::field_shape(grid);
 }
 
 void Run::mark_contact() {

@@ -103,23 +103,9 @@ ArraySurface surface_from(const nb::object& heights_object, double dx, double dy
 
 // The problem's keywords (halfspace/problem.hpp: the keyword is the name in
 // problem_option_names) set from `given`, and checked on `surface` by the
-// library's make_problem. A keyword not listed is refused, so a misspelt one
-// never passes silently.
+// library's make_problem.
 Problem checked_problem(const nb::dict& given, const ArraySurface& surface) {
-  ProblemOptions options;
-  const std::span<const ProblemOptionName> names = problem_option_names();
-  for (const auto& [key_object, value] : given) {
-    if (value.is_none()) continue;
-    const std::string key = nb::cast<std::string>(key_object);
-    const auto found = std::ranges::find(names, key, &ProblemOptionName::name);
-    if (found == names.end()) throw InputError(fmt::format("unknown solver option '{}'", key));
-    std::visit(
-        [&](auto member) {
-          using Value = typename std::remove_reference_t<decltype(options.*member)>::value_type;
-          options.*member = nb::cast<Value>(value);
-        },
-        found->field);
-  }
+  const auto options = options_from<ProblemOptions>(given, problem_option_names(), "solver option");
   const KeywordSpelling keywords;
   Problem problem = make_problem(options, keywords);
   problem.check_grid(surface.grid, keywords);

@@ -16,6 +16,7 @@
 #include "bindings.hpp"
 #include "halfspace/error.hpp"
 #include "halfspace/geometry/builtin_surface.hpp"
+#include "halfspace/io/hdf5_output.hpp"
 #include "halfspace/io/height_map_reader.hpp"
 #include "halfspace/surface/padding.hpp"
 #include "halfspace/surface/preparation.hpp"
@@ -172,8 +173,7 @@ OutputArray builtin(const std::string& shape, std::size_t nx, std::size_t ny, in
   spec.amplitude = amplitude;
   const Grid grid = grid_of(nx, ny, dimension, dx, dy, false);
   Eigen::ArrayXd heights = geometry::make_surface_heights(grid, spec);
-  return owning_array(std::move(heights),
-                      dimension == 1 ? std::vector<std::size_t>{nx} : std::vector<std::size_t>{ny, nx});
+  return owning_array(std::move(heights), io::field_shape(grid));
 }
 
 nb::tuple self_affine(std::size_t nx, std::size_t ny, int dimension, double dx, double dy, double hurst,
@@ -199,9 +199,7 @@ nb::tuple self_affine(std::size_t nx, std::size_t ny, int dimension, double dx, 
   used["cutoff_short"] = resolved.short_cutoff;
   used["rolloff"] = resolved.rolloff;
   used["cutoff_long"] = resolved.long_cutoff;
-  return nb::make_tuple(owning_array(std::move(heights),
-                                     dimension == 1 ? std::vector<std::size_t>{nx} : std::vector<std::size_t>{ny, nx}),
-                        used);
+  return nb::make_tuple(owning_array(std::move(heights), io::field_shape(grid)), used);
 }
 
 nb::dict statistics(const InputArray& heights, double dx, double dy, bool periodic) {

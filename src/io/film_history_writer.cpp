@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "csv_text.hpp"
 #include "halfspace/error.hpp"
 #include "halfspace/io/friction_history_writer.hpp"
 #include "halfspace/io/output_file.hpp"
@@ -79,18 +80,6 @@ void write_step(const Hdf5Node& group, const Grid& grid, std::string_view name, 
   node.write_string_attribute("message", s.film.solution.message);
 }
 
-std::string history_csv(const std::vector<std::array<double, kColumns.size()>>& rows) {
-  std::string text;
-  for (std::size_t c = 0; c < kColumns.size(); ++c) text += fmt::format("{}{}", c == 0 ? "" : ",", kColumns[c].name);
-  text += '\n';
-  for (const auto& row : rows) {
-    // {} is the shortest representation that reads back to the same double.
-    for (std::size_t c = 0; c < row.size(); ++c) text += fmt::format("{}{}", c == 0 ? "" : ",", row[c]);
-    text += '\n';
-  }
-  return text;
-}
-
 }  // namespace
 
 void write_film_history(const std::filesystem::path& path, const Grid& grid, std::size_t steps,
@@ -119,7 +108,7 @@ void write_film_history(const std::filesystem::path& path, const Grid& grid, std
                             column_unit(kColumns[c], grid));
       }
     }
-    csv = history_csv(rows);
+    csv = detail::csv_text(kColumns, rows.size(), [&](std::size_t k, std::size_t c) { return rows[k][c]; });
     root.write_int64_attribute("history_steps", static_cast<std::int64_t>(rows.size()));
     // The digest of the .csv written with this file: a .csv beside it with
     // another digest belongs to another history.

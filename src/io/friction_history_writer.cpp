@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "csv_text.hpp"
 #include "halfspace/error.hpp"
 #include "halfspace/io/hdf5_output.hpp"
 #include "halfspace/io/output_file.hpp"
@@ -61,17 +62,8 @@ void check_field(std::string_view field, std::size_t step, Eigen::Index size, co
 }  // namespace
 
 std::string friction_history_csv(std::span<const TangentialResult> steps) {
-  std::string text;
-  for (std::size_t c = 0; c < kColumns.size(); ++c) text += fmt::format("{}{}", c == 0 ? "" : ",", kColumns[c].name);
-  text += '\n';
-  for (std::size_t k = 0; k < steps.size(); ++k) {
-    for (std::size_t c = 0; c < kColumns.size(); ++c) {
-      // {} is the shortest representation that reads back to the same double.
-      text += fmt::format("{}{}", c == 0 ? "" : ",", kColumns[c].value(k, steps[k]));
-    }
-    text += '\n';
-  }
-  return text;
+  return detail::csv_text(kColumns, steps.size(),
+                          [&](std::size_t k, std::size_t c) { return kColumns[c].value(k, steps[k]); });
 }
 
 std::filesystem::path history_csv_path(const std::filesystem::path& result_path) {

@@ -277,16 +277,12 @@ Hdf5Node Hdf5Node::write_dataset(std::string_view name, const std::vector<std::s
 
 Hdf5Node Hdf5Node::write_dataset(std::string_view name, const std::vector<std::size_t>& shape,
                                  std::span<const std::int64_t> values, std::string_view units) const {
-  return Hdf5Node(
-      write_array(id_, name, shape, 0, values.size(), H5T_STD_I64LE, H5T_NATIVE_INT64, values.data(), units, transfer_),
-      transfer_);
+  return write_dataset_rows(name, shape, 0, values, units);
 }
 
 Hdf5Node Hdf5Node::write_dataset(std::string_view name, const std::vector<std::size_t>& shape,
                                  std::span<const std::uint8_t> values, std::string_view units) const {
-  return Hdf5Node(
-      write_array(id_, name, shape, 0, values.size(), H5T_STD_U8LE, H5T_NATIVE_UINT8, values.data(), units, transfer_),
-      transfer_);
+  return write_dataset_rows(name, shape, 0, values, units);
 }
 
 Hdf5Node Hdf5Node::write_dataset_rows(std::string_view name, const std::vector<std::size_t>& shape,

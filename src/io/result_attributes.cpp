@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <type_traits>
 
 namespace halfspace::io {
 namespace {
@@ -108,6 +109,32 @@ const std::array<FilmAttribute, 21> kFilmAttributes{{
     {"friction_coefficient", "", FilmOptional{[](const FilmSummary& f) { return f.friction_coefficient; }}},
 }};
 
+// Writes each attribute of `table` of `source` on `node`, its name after
+// `prefix`, but those named in `skip` and absent optional values.
+template <class Source>
+void write_table(const Hdf5Node& node, std::span<const Attribute<Source>> table, const Source& source,
+                 std::string_view prefix = {}, std::span<const std::string_view> skip = {}) {
+  for (const Attribute<Source>& attribute : table) {
+    if (std::find(skip.begin(), skip.end(), attribute.name) != skip.end()) continue;
+    const std::string name = std::string(prefix) + std::string(attribute.name);
+    std::visit(
+        [&](auto get) {
+          const auto value = get(source);
+          using Value = std::decay_t<decltype(value)>;
+          if constexpr (std::is_same_v<Value, double>) {
+            node.write_double_attribute(name, value);
+          } else if constexpr (std::is_same_v<Value, std::int64_t>) {
+            node.write_int64_attribute(name, value);
+          } else if constexpr (std::is_same_v<Value, std::string>) {
+            node.write_string_attribute(name, value);
+          } else if (value) {
+            node.write_double_attribute(name, *value);
+          }
+        },
+        attribute.value);
+  }
+}
+
 }  // namespace
 
 std::span<const TangentialAttribute> tangential_attributes() {
@@ -115,31 +142,11 @@ std::span<const TangentialAttribute> tangential_attributes() {
 }
 
 void write_tangential_attributes(const Hdf5Node& node, const TangentialResult& result) {
-  for (const TangentialAttribute& attribute : kTangentialAttributes) {
-    const std::string name(attribute.name);
-    if (const auto* number = std::get_if<TangentialNumber>(&attribute.value)) {
-      node.write_double_attribute(name, (*number)(result));
-    } else if (const auto* integer = std::get_if<TangentialInteger>(&attribute.value)) {
-      node.write_int64_attribute(name, (*integer)(result));
-    } else {
-      node.write_string_attribute(name, std::get<TangentialText>(attribute.value)(result));
-    }
-  }
+  write_table<TangentialResult>(node, kTangentialAttributes, result);
 }
 
 void write_film_attributes(const Hdf5Node& node, const lubrication::FilmSummary& summary) {
-  for (const FilmAttribute& attribute : kFilmAttributes) {
-    const std::string name(attribute.name);
-    if (const auto* number = std::get_if<FilmNumber>(&attribute.value)) {
-      node.write_double_attribute(name, (*number)(summary));
-    } else if (const auto* integer = std::get_if<FilmInteger>(&attribute.value)) {
-      node.write_int64_attribute(name, (*integer)(summary));
-    } else if (const auto* text = std::get_if<FilmText>(&attribute.value)) {
-      node.write_string_attribute(name, (*text)(summary));
-    } else if (const std::optional<double> value = std::get<FilmOptional>(attribute.value)(summary)) {
-      node.write_double_attribute(name, *value);
-    }
-  }
+  write_table<lubrication::FilmSummary>(node, kFilmAttributes, summary);
 }
 
 std::span<const ResultAttribute> result_attributes() {
@@ -148,17 +155,7 @@ std::span<const ResultAttribute> result_attributes() {
 
 void write_result_attributes(const Hdf5Node& node, const SolveResult& result, std::string_view prefix,
                              std::span<const std::string_view> skip) {
-  for (const ResultAttribute& attribute : kResultAttributes) {
-    if (std::find(skip.begin(), skip.end(), attribute.name) != skip.end()) continue;
-    const std::string name = std::string(prefix) + std::string(attribute.name);
-    if (const auto* number = std::get_if<Number>(&attribute.value)) {
-      node.write_double_attribute(name, (*number)(result));
-    } else if (const auto* integer = std::get_if<Integer>(&attribute.value)) {
-      node.write_int64_attribute(name, (*integer)(result));
-    } else {
-      node.write_string_attribute(name, std::get<Text>(attribute.value)(result));
-    }
-  }
+  write_table<SolveResult>(node, kResultAttributes, result, prefix, skip);
   // Adhesion: written only for adhesive solves, so other files keep their
   // attributes (docs/file-format.md#adhesion).
   if (const AdhesionRecord& a = result.adhesion; !a.law.empty()) {

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "csv_text.hpp"
 #include "halfspace/analysis/adhesion_sweep.hpp"
 #include "halfspace/analysis/sweep_table.hpp"
 #include "halfspace/error.hpp"
@@ -81,21 +82,9 @@ void write_summary_table(const Hdf5Node& root, const Grid& grid, std::span<const
 
 // The summary table as CSV text (write_sweep_csv's contents).
 std::string sweep_csv_text(std::span<const analysis::SweepStep> steps) {
-  std::string text;
   const std::span<const analysis::SummaryColumn> columns = analysis::summary_columns();
-  for (std::size_t c = 0; c < columns.size(); ++c) {
-    text += c == 0 ? "" : ",";
-    text += columns[c].name;
-  }
-  text += '\n';
-  for (const analysis::SweepStep& step : steps) {
-    for (std::size_t c = 0; c < columns.size(); ++c) {
-      // {} is the shortest representation that reads back to the same double.
-      text += fmt::format("{}{}", c == 0 ? "" : ",", columns[c].value(step));
-    }
-    text += '\n';
-  }
-  return text;
+  return detail::csv_text(columns, steps.size(),
+                          [&](std::size_t k, std::size_t c) { return columns[c].value(steps[k]); });
 }
 
 }  // namespace

@@ -92,21 +92,7 @@ void ElasticFilmOptions::validate() const {
   if (max_iterations < 1) {
     throw OptionError("max_iterations", fmt::format("{}", max_iterations), "is invalid: at least 1 Newton step");
   }
-  if (krylov_restart < 2 || krylov_restart > 500) {
-    throw OptionError("krylov_restart", fmt::format("{}", krylov_restart), "is invalid: allowed range is 2 to 500");
-  }
-  if (krylov_max_iterations < 1) {
-    throw OptionError("krylov_max_iterations", fmt::format("{}", krylov_max_iterations),
-                      "is invalid: at least 1 GMRES iteration");
-  }
-  if (!(krylov_tolerance > 0.0 && krylov_tolerance < 1.0)) {
-    throw OptionError("krylov_tolerance", format_number(krylov_tolerance),
-                      "is invalid: allowed range is 0 < tolerance < 1");
-  }
-  if (preconditioner_neighbourhood < 0 || preconditioner_neighbourhood > 8) {
-    throw OptionError("preconditioner_neighbourhood", fmt::format("{}", preconditioner_neighbourhood),
-                      "is invalid: allowed range is 0 to 8 cells");
-  }
+  detail::film_krylov_settings(*this).validate();
   if (preconditioner != KrylovPreconditioner::multigrid && preconditioner != KrylovPreconditioner::sparse_lu) {
     throw OptionError("preconditioner", fmt::format("{}", static_cast<int>(preconditioner)),
                       "is invalid: allowed are multigrid, sparse-lu");

@@ -20,6 +20,8 @@
 #include <cmath>
 #include <span>
 
+#include "halfspace/error.hpp"
+
 namespace halfspace::lubrication::detail {
 
 namespace {
@@ -35,6 +37,23 @@ constexpr int kRefactoriseAfter = 15;
 // The loosest relative residual of a multigrid-preconditioned step (solve()).
 constexpr double kLoosestMultigridForcing = 1e-3;
 }  // namespace
+
+void FilmKrylovSettings::validate() const {
+  if (restart < 2 || restart > 500) {
+    throw OptionError("krylov_restart", fmt::format("{}", restart), "is invalid: allowed range is 2 to 500");
+  }
+  if (max_iterations < 1) {
+    throw OptionError("krylov_max_iterations", fmt::format("{}", max_iterations),
+                      "is invalid: at least 1 GMRES iteration");
+  }
+  if (!(tolerance > 0.0 && tolerance < 1.0)) {
+    throw OptionError("krylov_tolerance", format_number(tolerance), "is invalid: allowed range is 0 < tolerance < 1");
+  }
+  if (neighbourhood < 0 || neighbourhood > 8) {
+    throw OptionError("preconditioner_neighbourhood", fmt::format("{}", neighbourhood),
+                      "is invalid: allowed range is 0 to 8 cells");
+  }
+}
 
 double film_krylov_memory_estimate(std::size_t nodes, const FilmKrylovSettings& settings) {
   const double per_row = preconditioner_row_entries(settings.neighbourhood);

@@ -28,6 +28,12 @@ struct FilmKrylovSettings {
   double tolerance = 1e-9;   // on ||J x + r|| / ||r||
   int neighbourhood = 0;     // K kept within this many cells (Chebyshev) in the preconditioner
   KrylovPreconditioner preconditioner = KrylovPreconditioner::multigrid;
+
+  // Throws OptionError naming the film option (krylov_restart,
+  // krylov_max_iterations, krylov_tolerance, preconditioner_neighbourhood)
+  // unless 2 <= restart <= 500, max_iterations >= 1, 0 < tolerance < 1 and
+  // 0 <= neighbourhood <= 8.
+  void validate() const;
 };
 
 // The local derivatives of the Newton rows, one row per node in CSR form
@@ -45,11 +51,6 @@ class FilmKrylovSolver {
  public:
   // Reads the translation-invariant K around a node off one product of `op`.
   FilmKrylovSolver(InfluenceOperator& op, const ReynoldsStencil& topology, const FilmKrylovSettings& settings);
-
-  // The sparse part of the last factorised system (rows of the mass
-  // balances over mass_scale, the unknowns s; no h0 column or load row),
-  // for tests of the preconditioner.
-  const CsrMatrix& preconditioner_matrix() const { return matrix_; }
 
   // Solves J step = -residual for the Newton system of the rows `rows`
   // (mass rows over `mass_scale`), the nodes' branches `branch_full`, the

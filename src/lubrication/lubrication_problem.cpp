@@ -26,6 +26,54 @@ constexpr long long kMaxNewtonSteps = 100000;
 // The time steps of a transient film: each is at least one film solve.
 constexpr long long kMaxTimeSteps = 10'000'000;
 
+using O = LubricationProblemOptions;
+
+constexpr std::array kNames{
+    LubricationOptionName{"viscosity", &O::viscosity},
+    LubricationOptionName{"entrainment_velocity", &O::entrainment_velocity},
+    LubricationOptionName{"sliding_velocity", &O::sliding_velocity},
+    LubricationOptionName{"separation", &O::separation},
+    LubricationOptionName{"force", &O::force},
+    LubricationOptionName{"inlet_pressure", &O::inlet_pressure},
+    LubricationOptionName{"outlet_pressure", &O::outlet_pressure},
+    LubricationOptionName{"side_pressure", &O::side_pressure},
+    LubricationOptionName{"periodic_x", &O::periodic_x},
+    LubricationOptionName{"periodic_y", &O::periodic_y},
+    LubricationOptionName{"supply_fluid_fraction", &O::supply_fluid_fraction},
+    LubricationOptionName{"tolerance", &O::tolerance},
+    LubricationOptionName{"max_iterations", &O::max_iterations},
+    LubricationOptionName{"e_star", &O::e_star},
+    LubricationOptionName{"E1", &O::e1},
+    LubricationOptionName{"nu1", &O::nu1},
+    LubricationOptionName{"E2", &O::e2},
+    LubricationOptionName{"nu2", &O::nu2},
+    LubricationOptionName{"layer_thickness", &O::layer_thickness},
+    LubricationOptionName{"layer_E", &O::layer_e},
+    LubricationOptionName{"layer_nu", &O::layer_nu},
+    LubricationOptionName{"substrate_E", &O::substrate_e},
+    LubricationOptionName{"substrate_nu", &O::substrate_nu},
+    LubricationOptionName{"boundary", &O::boundary},
+    LubricationOptionName{"pressure_viscosity", &O::pressure_viscosity},
+    LubricationOptionName{"piezoviscosity", &O::piezoviscosity},
+    LubricationOptionName{"roelands_index", &O::roelands_index},
+    LubricationOptionName{"compressibility", &O::compressibility},
+    LubricationOptionName{"couette_scheme", &O::couette_scheme},
+    LubricationOptionName{"film_preconditioner", &O::film_preconditioner},
+    LubricationOptionName{"eyring_stress", &O::eyring_stress},
+    LubricationOptionName{"limiting_shear_stress", &O::limiting_shear_stress},
+    LubricationOptionName{"limiting_shear_slope", &O::limiting_shear_slope},
+    LubricationOptionName{"mixed", &O::mixed},
+    LubricationOptionName{"offset", &O::offset},
+    LubricationOptionName{"contact_friction", &O::contact_friction},
+    LubricationOptionName{"boundary_film", &O::boundary_film},
+    LubricationOptionName{"speeds", &O::speeds},
+    LubricationOptionName{"time_step", &O::time_step},
+    LubricationOptionName{"steps", &O::steps},
+    LubricationOptionName{"time_scheme", &O::time_scheme},
+    LubricationOptionName{"approach_velocity", &O::approach_velocity},
+    LubricationOptionName{"separation_history", &O::separation_history},
+};
+
 class Rules : public halfspace::detail::Checks {
  public:
   Rules(const LubricationProblemOptions& options, const OptionSpelling& spelling) : Checks(spelling), o_(options) {}
@@ -353,6 +401,10 @@ void LubricationProblem::check_grid(const Grid& grid, const OptionSpelling& spel
     throw spelled_film_error(error, spelling);
   }
   if (kind == FilmKind::mixed) require_mixed_film_fits(grid, mixed, surface);
+}
+
+std::span<const LubricationOptionName> lubrication_option_names() {
+  return kNames;
 }
 
 }  // namespace halfspace::lubrication

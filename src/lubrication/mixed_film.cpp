@@ -65,18 +65,8 @@ void MixedFilmOptions::validate() const {
   if (max_iterations < 1) {
     throw OptionError("max_iterations", std::to_string(max_iterations), "is invalid: at least 1 Newton step");
   }
-  if (krylov_restart < 2 || krylov_restart > 500) {
-    throw OptionError("krylov_restart", std::to_string(krylov_restart), "is invalid: allowed range is 2 to 500");
-  }
-  if (krylov_max_iterations < 1) {
-    throw OptionError("krylov_max_iterations", std::to_string(krylov_max_iterations),
-                      "is invalid: at least 1 GMRES iteration");
-  }
-  fraction(krylov_tolerance, "krylov_tolerance");
-  if (preconditioner_neighbourhood < 0 || preconditioner_neighbourhood > 8) {
-    throw OptionError("preconditioner_neighbourhood", std::to_string(preconditioner_neighbourhood),
-                      "is invalid: allowed range is 0 to 8 cells");
-  }
+  detail::MixedKrylovSettings{krylov_restart, krylov_max_iterations, krylov_tolerance, preconditioner_neighbourhood}
+      .validate();
   friction.validate();
 }
 

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "film_krylov_solver.hpp"
 #include "halfspace/lubrication/reynolds_stencil.hpp"
 #include "halfspace/operators/influence_operator.hpp"
 #include "local_influence.hpp"
@@ -23,12 +24,9 @@
 
 namespace halfspace::lubrication::detail {
 
-struct MixedKrylovSettings {
-  int restart = 40;          // GMRES(m) basis size
-  int max_iterations = 800;  // GMRES iterations per solve, all restarts
-  double tolerance = 1e-9;   // on ||J x + r|| / ||r||
-  int neighbourhood = 1;     // K kept within this many cells (Chebyshev) in the preconditioner
-};
+// The EHL film's GMRES settings; the preconditioner is the mixed film's own
+// (B's sparse LU), whatever `preconditioner` says.
+using MixedKrylovSettings = FilmKrylovSettings;
 
 // The Newton system's state at one step: the mass rows' local derivatives
 // in CSR form (detail::linearise's terms, one row per node), which nodes are

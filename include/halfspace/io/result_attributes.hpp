@@ -22,14 +22,21 @@
 
 namespace halfspace::io {
 
-struct ResultAttribute {
-  std::string_view name;  // the HDF5 attribute name (docs/file-format.md#root-attributes)
-  std::string_view unit;  // SI unit in words; empty for counts, ratios and text
-  // Stored as float64, int64 or a variable-length UTF-8 string.
-  std::variant<double (*)(const SolveResult&), std::int64_t (*)(const SolveResult&),
-               std::string (*)(const SolveResult&)>
+// One attribute of a `Source` (SolveResult, TangentialResult, FilmSummary):
+// its HDF5 name (docs/file-format.md#root-attributes), its SI unit in words
+// (empty for counts, ratios and text), and its value, stored as float64,
+// int64 or a variable-length UTF-8 string (an absent optional: not written).
+template <class Source>
+struct Attribute {
+  std::string_view name;
+  std::string_view unit;
+  std::variant<double (*)(const Source&), std::int64_t (*)(const Source&), std::string (*)(const Source&),
+               std::optional<double> (*)(const Source&)>
       value;
 };
+using ResultAttribute = Attribute<SolveResult>;
+using TangentialAttribute = Attribute<TangentialResult>;
+using FilmAttribute = Attribute<lubrication::FilmSummary>;
 
 // Every attribute of a SolveResult, in the order they are written.
 std::span<const ResultAttribute> result_attributes();
@@ -43,16 +50,8 @@ void write_result_attributes(const Hdf5Node& node, const SolveResult& result, st
 // Friction: the attributes of a tangential load step (TangentialResult), in
 // the same way, on a frictional result's root and each history step's group
 // (docs/file-format.md#friction). stick_fraction and slip_fraction are
-// fractions of the contact cells (p > 0), not of the grid.
-struct TangentialAttribute {
-  std::string_view name;
-  std::string_view unit;
-  std::variant<double (*)(const TangentialResult&), std::int64_t (*)(const TangentialResult&),
-               std::string (*)(const TangentialResult&)>
-      value;
-};
-
-// Every attribute of a TangentialResult, in the order they are written.
+// fractions of the contact cells (p > 0), not of the grid. In the order
+// they are written:
 std::span<const TangentialAttribute> tangential_attributes();
 
 // Writes every attribute of tangential_attributes() on `node`.
@@ -76,15 +75,6 @@ void write_body_attributes(const Hdf5Node& node, const ElasticPair& bodies);
 
 // The root attributes of a lubricated film's file (halfspace lubricate):
 // the same table's form for a FilmSummary, absent optional values skipped.
-struct FilmAttribute {
-  std::string_view name;
-  std::string_view unit;
-  std::variant<double (*)(const lubrication::FilmSummary&), std::int64_t (*)(const lubrication::FilmSummary&),
-               std::string (*)(const lubrication::FilmSummary&),
-               std::optional<double> (*)(const lubrication::FilmSummary&)>
-      value;
-};
-
 void write_film_attributes(const Hdf5Node& node, const lubrication::FilmSummary& summary);
 
 }  // namespace halfspace::io

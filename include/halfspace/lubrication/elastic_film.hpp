@@ -126,12 +126,14 @@ struct ElasticFilmOptions {
   void validate() const;
 };
 
-struct ElasticFilm {
+// What the EHL and the mixed film's Newton solves report alike (ElasticFilm,
+// MixedFilm). Fields (ny, nx) row-major on the grid's cells (the film's nodes).
+struct NewtonFilmResult {
   FilmStatus status = FilmStatus::failure;
   std::string message;            // empty when converged
-  Eigen::ArrayXd pressure;        // Pa, (ny, nx) row-major, on the grid's cells (the film's nodes)
+  Eigen::ArrayXd pressure;        // Pa (the mixed film's: p_f + p_c)
   Eigen::ArrayXd fluid_fraction;  // theta
-  Eigen::ArrayXd film;            // h (m)
+  Eigen::ArrayXd film;            // h (m; the mixed film's: 0 on contact cells)
   Eigen::ArrayXd deformation;     // K p (m, positive away from the rigid surface)
   double offset = 0.0;            // h0 (m); with a free 1D grid it includes the kernel's datum
   double load = 0.0;              // sum(p) dA (N, N/m in 1D)
@@ -142,10 +144,6 @@ struct ElasticFilm {
   double max_pressure = 0.0;
   int iterations = 0;  // Newton steps
   int line_search_halvings = 0;
-  // Newton steps whose GMRES direction was solved again to
-  // krylov_tolerance because no step along the inexact one lowered the
-  // residual.
-  int tight_retries = 0;
   // The GMRES path: whether it was taken, its iterations in all and the
   // most in one Newton step's linear solve (all branch passes).
   bool used_krylov = false;
@@ -154,20 +152,27 @@ struct ElasticFilm {
   // Grid sequencing: the coarser grids solved for the start, their Newton
   // steps and GMRES iterations in all (not in iterations and
   // krylov_iterations), and whether the sequenced start failed and the
-  // solve started again cold (iterations then counts both;
-  // kMaxColdRestartNodes).
+  // solve started again cold (kMaxColdRestartNodes,
+  // kMaxMixedColdRestartNodes; iterations then counts both).
   int coarse_levels = 0;
   int coarse_iterations = 0;
   int coarse_krylov_iterations = 0;
   bool sequencing_fell_back = false;
   double wall_seconds = 0.0;  // all of it, coarse grids included
   // Measured after the solve with the operator's own product (not the
-  // Newton's factorised Jacobian): the relative mass residual and |load -
-  // w| / w.
+  // Newton's factorised Jacobian): the relative mass residual (flux form)
+  // and |load - w| / w.
   double relative_residual = 0.0;
   double load_error = 0.0;
 
   bool converged() const { return status == FilmStatus::converged; }
+};
+
+struct ElasticFilm : NewtonFilmResult {
+  // Newton steps whose GMRES direction was solved again to
+  // krylov_tolerance because no step along the inexact one lowered the
+  // residual.
+  int tight_retries = 0;
 };
 
 // Solves the EHL film on the operator's grid. `gap` is g (m, one value per

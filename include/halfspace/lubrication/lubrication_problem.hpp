@@ -10,8 +10,10 @@
 
 #include <array>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
 
 #include "halfspace/error.hpp"
@@ -73,6 +75,20 @@ struct LubricationProblemOptions : BodyOptions {
   std::optional<double> approach_velocity;
   std::optional<std::vector<double>> separation_history;
 };
+
+// The name of each option of LubricationProblemOptions and where it is
+// held (Python's keyword; the program's flag is the name with '-' for '_'),
+// as problem_option_names.
+using LubricationOptionField =
+    std::variant<bool LubricationProblemOptions::*, std::optional<double> LubricationProblemOptions::*,
+                 std::optional<long long> LubricationProblemOptions::*,
+                 std::optional<std::string> LubricationProblemOptions::*,
+                 std::optional<std::vector<double>> LubricationProblemOptions::*>;
+struct LubricationOptionName {
+  std::string_view name;
+  LubricationOptionField field;
+};
+std::span<const LubricationOptionName> lubrication_option_names();
 
 enum class FilmKind { rigid, elastic, mixed };
 

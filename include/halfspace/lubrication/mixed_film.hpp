@@ -111,27 +111,16 @@ struct MixedFilmOptions {
   bool load_controlled() const { return load > 0.0; }
 };
 
-struct MixedFilm {
-  FilmStatus status = FilmStatus::failure;
-  std::string message;  // empty when converged
-  // (ny, nx) row-major on the grid's cells.
+struct MixedFilm : NewtonFilmResult {
+  // (ny, nx) row-major on the grid's cells; `pressure` is their sum.
   Eigen::ArrayXd fluid_pressure;    // p_f (Pa)
   Eigen::ArrayXd contact_pressure;  // p_c (Pa)
-  Eigen::ArrayXd pressure;          // p_f + p_c
-  Eigen::ArrayXd fluid_fraction;    // theta
-  Eigen::ArrayXd film;              // h (m): the gap, 0 on contact cells
-  Eigen::ArrayXd deformation;       // K (p_f + p_c) (m)
-  double offset = 0.0;              // h0 (m)
   double entrainment_speed = 0.0;   // |U| of the solve (m/s)
-  double load = 0.0;                // sum(p) dA
   double fluid_load = 0.0, contact_load = 0.0;
-  double contact_load_fraction = 0.0;   // contact_load / load
-  double contact_area = 0.0;            // m^2 (m in 1D): cells with p_c > 0
-  double contact_area_fraction = 0.0;   // of all cells
-  double central_film_thickness = 0.0;  // h at the undeformed gap's minimum
-  double minimum_film_thickness = 0.0;  // the smallest h (0 with contact)
-  double max_pressure = 0.0;
-  double cavitated_fraction = 0.0;  // cells with theta < 1 and no contact
+  double contact_load_fraction = 0.0;  // contact_load / load
+  double contact_area = 0.0;           // m^2 (m in 1D): cells with p_c > 0
+  double contact_area_fraction = 0.0;  // of all cells
+  double cavitated_fraction = 0.0;     // cells with theta < 1 and no contact
   // Friction (N in 2D, N/m in 1D, (x, y)) on the rough surface, along the
   // sliding velocity: the film's shear (Couette, capped at the limiting
   // shear stress, and Poiseuille) on cells without contact, and Coulomb's
@@ -139,30 +128,10 @@ struct MixedFilm {
   std::array<double, 2> fluid_friction_force{0.0, 0.0};
   std::array<double, 2> contact_friction_force{0.0, 0.0};
   double friction_coefficient = 0.0;
-  int iterations = 0;  // Newton steps
-  int line_search_halvings = 0;
-  // The GMRES path: whether it was taken, its iterations in all and the
-  // most in one Newton step (all branch passes).
-  bool used_krylov = false;
-  int krylov_iterations = 0;
-  int max_krylov_iterations_per_step = 0;
-  // Grid sequencing: the coarser grids solved for the start, their Newton
-  // steps and GMRES iterations (all levels), and whether the fine grid
-  // started cold after all (kMaxMixedColdRestartNodes).
-  int coarse_levels = 0;
-  int coarse_iterations = 0;
-  int coarse_krylov_iterations = 0;
-  bool sequencing_fell_back = false;
-  double wall_seconds = 0.0;  // all of it, coarse grids included
-  // Measured after the solve apart from the Newton iteration, with the
-  // operator's own product: the flux-form mass residual (on h_R), |load -
-  // w| / w, and the contact complementarity max over cells of
-  // max(-h, 0) / H, max(-p_c, 0) / P and min(h / H, p_c / P).
-  double relative_residual = 0.0;
-  double load_error = 0.0;
+  // The mass residual is measured on h_R; the contact complementarity is
+  // the max over cells of max(-h, 0) / H, max(-p_c, 0) / P and min(h / H,
+  // p_c / P).
   double complementarity_error = 0.0;
-
-  bool converged() const { return status == FilmStatus::converged; }
 };
 
 // Solves the mixed film on the operator's grid (serial; the dense path on
