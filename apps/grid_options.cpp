@@ -41,6 +41,13 @@ Grid grid_from_options(std::string_view grid_text, const std::string& grid_what,
                      spacing("dy", length_y, cells[1], grid_what, size_what), boundary);
 }
 
+Grid grid_for_geometry(const GivenOptions& o, const std::optional<std::string>& grid,
+                       const std::optional<std::string>& size, Boundary boundary) {
+  if (!grid) throw InputError("--geometry needs --grid N (1D) or NXxNY (2D)");
+  if (!size) throw InputError("--geometry needs --size L or LXxLY (domain size in m)");
+  return grid_from_options(*grid, o.describe("grid"), *size, o.describe("size"), boundary);
+}
+
 double require_length(const GivenOptions& o, std::string_view key, double value) {
   if (!(std::isfinite(value) && value > 0.0)) {
     throw InputError(fmt::format("{} is invalid: must be positive (m)", o.describe(key)));

@@ -21,6 +21,11 @@ namespace halfspace::app {
 Grid grid_from_options(std::string_view grid_text, const std::string& grid_what, std::string_view size_text,
                        const std::string& size_what, Boundary boundary);
 
+// The grid of a built-in geometry from the options `grid` and `size`
+// (grid_from_options), each required. Throws InputError naming the missing one.
+Grid grid_for_geometry(const GivenOptions& o, const std::optional<std::string>& grid,
+                       const std::optional<std::string>& size, Boundary boundary);
+
 // The length option `key` (m): positive and finite, and within the program's
 // range of lengths (physical_ranges.hpp). Throws InputError naming it.
 double require_length(const GivenOptions& o, std::string_view key, double value);

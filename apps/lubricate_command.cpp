@@ -639,12 +639,10 @@ HeightMap builtin_film_surface(const LubricateOptions& o, Boundary boundary) {
                                    {"detrend", o.detrend.has_value()}}) {
     if (given) throw InputError(fmt::format("{} applies only to --height-map, not to --geometry", o.name(key)));
   }
-  if (!o.grid) throw InputError("--geometry needs --grid N (1D) or NXxNY (2D)");
-  if (!o.size) throw InputError("--geometry needs --size L or LXxLY (domain size in m)");
   const geometry::SurfaceShape shape =
       in_context(o.name("geometry"), [&] { return geometry::parse_surface_shape(*o.geometry); });
   BuiltinShape made = builtin_shape_from(o, "geometry", shape, o.radius, o.wavelength, o.amplitude);
-  const Grid grid = grid_from_options(*o.grid, o.describe("grid"), *o.size, o.describe("size"), boundary);
+  const Grid grid = grid_for_geometry(o, o.grid, o.size, boundary);
   HeightMap map;
   map.dimension = grid.dimension();
   map.nx = grid.nx();

@@ -166,12 +166,6 @@ void reject_given(const SolveOptions& o, Presence keys, std::string_view reason)
   }
 }
 
-Grid grid_for_geometry(const SolveOptions& o, Boundary boundary) {
-  if (!o.grid) throw InputError("--geometry needs --grid N (1D) or NXxNY (2D)");
-  if (!o.size) throw InputError("--geometry needs --size L or LXxLY (domain size in m)");
-  return grid_from_options(*o.grid, o.describe("grid"), *o.size, o.describe("size"), boundary);
-}
-
 // The checks that need the grid, run as soon as it is known and before the
 // heights are made: the loads' scale on it, and the memory a solve on it
 // needs. `request` names where the grid came from.
@@ -193,7 +187,7 @@ Surface builtin_surface(const SolveOptions& o, Boundary boundary, const GridChec
   const geometry::SurfaceShape shape =
       in_context(o.name("geometry"), [&] { return geometry::parse_surface_shape(*o.geometry); });
   auto [spec, source] = builtin_shape_from(o, "geometry", shape, o.radius, o.wavelength, o.amplitude);
-  Grid grid = grid_for_geometry(o, boundary);
+  Grid grid = grid_for_geometry(o, o.grid, o.size, boundary);
   check_grid(grid, o.describe("grid"));
   // Each process its own rows, from their global coordinates.
   const auto [first_row, rows] = rows_of && grid.dimension() == 2 ? rows_of(grid) : RowRange{0, grid.ny()};

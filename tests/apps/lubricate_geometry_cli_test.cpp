@@ -55,8 +55,14 @@ TEST(LubricateGeometryCliTest, BuiltinSphereIsTheGeneratedHeightMap) {
 }
 
 TEST(LubricateGeometryCliTest, RoughnessIsAddedToTheBuiltinSurface) {
-  // A flat roughness file adds nothing: the same film as without it.
+  // A flat roughness file adds nothing: the same film as without it; a
+  // wavy one changes the film.
   const TempDir dir;
+  ASSERT_EQ(run_program({"generate", "--kind", "wavy", "--grid", "24x20", "--size", "4e-4x3e-4", "--wavelength", "1e-4",
+                         "--amplitude", "2e-8", "--output", "wavy.h5", "--quiet"},
+                        dir.path())
+                .exit_code,
+            kExitOk);
   ASSERT_EQ(run_program({"generate", "--kind", "flat", "--grid", "24x20", "--size", "4e-4x3e-4", "--output", "flat.h5",
                          "--quiet"},
                         dir.path())
@@ -73,6 +79,14 @@ TEST(LubricateGeometryCliTest, RoughnessIsAddedToTheBuiltinSurface) {
   const test::H5 b = test::open_file(dir / "rough.h5");
   EXPECT_EQ(test::read_dataset<double>(a.get(), "/pressure", H5T_NATIVE_DOUBLE),
             test::read_dataset<double>(b.get(), "/pressure", H5T_NATIVE_DOUBLE));
+
+  std::vector<std::string> wavy = builtin;
+  wavy.insert(wavy.end(), {"--roughness", "wavy.h5"});
+  const ProgramRun waved = run_program(lubricate(wavy, "wavy_film.h5"), dir.path());
+  ASSERT_EQ(waved.exit_code, kExitOk) << waved.err;
+  const test::H5 c = test::open_file(dir / "wavy_film.h5");
+  EXPECT_NE(test::read_dataset<double>(a.get(), "/pressure", H5T_NATIVE_DOUBLE),
+            test::read_dataset<double>(c.get(), "/pressure", H5T_NATIVE_DOUBLE));
 }
 
 TEST(LubricateGeometryCliTest, RefusesSurfaceOptionsThatDoNotApply) {
