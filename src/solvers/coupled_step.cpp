@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -10,6 +11,10 @@
 #include "halfspace/linalg/parallel.hpp"
 
 namespace halfspace::solvers {
+
+namespace {
+constexpr double kTightestTangentialTolerance = 1e-12;
+}  // namespace
 
 void CoupledStepOptions::validate() const {
   if (!(tolerance > 0.0 && tolerance < 1.0)) {
@@ -43,6 +48,18 @@ CoupledStepResult CoupledStepSolver::solve(std::span<const double> initial_gap, 
   auto cspan = [n](const Eigen::ArrayXd& a) { return std::span<const double>(a.data(), n); };
   op_.apply_traction_coupling(cspan(previous.shear_x), cspan(previous.shear_y), span(w_));
   CoupledStepResult result;
+  // The alternation's change cannot fall below the noise of the tangential
+  // solves it alternates with, each converged only to its own tolerance (in
+  // near-full slip the slip directions are barely determined and the change
+  // stalls at a few times that tolerance): when a pass fails to halve the
+  // change, the tangential tolerance is tightened tenfold, down to
+  // kTightestTangentialTolerance, for the rest of this step.
+  struct RestoredTolerance {
+    TangentialSolver& solver;
+    double tolerance;
+    ~RestoredTolerance() { solver.set_tolerance(tolerance); }
+  } restored{tangential_, tangential_.options().tolerance};
+  double previous_residual = 0.0;
   Eigen::ArrayXd warm;
   if (!start_pressure.empty())
     warm = Eigen::Map<const Eigen::ArrayXd>(start_pressure.data(), static_cast<Eigen::Index>(n));
@@ -103,6 +120,11 @@ CoupledStepResult CoupledStepSolver::solve(std::span<const double> initial_gap, 
       result.message.clear();
       return result;
     }
+    const double tolerance = tangential_.options().tolerance;
+    if (pass > 1 && result.coupling_residual > 0.5 * previous_residual && tolerance > kTightestTangentialTolerance) {
+      tangential_.set_tolerance(std::max(0.1 * tolerance, kTightestTangentialTolerance));
+    }
+    previous_residual = result.coupling_residual;
     w_.swap(w_new_);
   }
   result.normal.displacement += w_new_;  // the one it was solved with (swapped above); reported, not converged

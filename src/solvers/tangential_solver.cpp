@@ -86,6 +86,13 @@ void TangentialOptions::validate() const {
   }
 }
 
+void TangentialSolver::set_tolerance(double tolerance) {
+  TangentialOptions options = options_;
+  options.tolerance = tolerance;
+  options.validate();
+  options_.tolerance = tolerance;
+}
+
 TangentialSolver::TangentialSolver(TangentialOperator& op, TangentialOptions options)
     : op_(op), options_(std::move(options)) {
   options_.validate();

@@ -122,6 +122,10 @@ class TangentialSolver {
                          std::span<const double> fixed_y);
 
   const TangentialOptions& options() const { return options_; }
+  // The residual tolerance of the next solves (the coupled step tightens it
+  // when its alternation stalls on the tangential solves' noise). Throws
+  // InputError unless 0 < tolerance < 1.
+  void set_tolerance(double tolerance);
 
   // No coarse grid is made with fewer cells than this along an axis.
   static constexpr std::size_t kCoarseStartMinCellsPerAxis = 32;
