@@ -37,15 +37,20 @@ inline SphereContact hertz_sphere_contact(const ElasticPair& pair, double force,
 
 // slip_tolerance (m) bounds |ds| in stick cells; angle_tolerance the
 // misalignment |q/|q| + ds/|ds|| of slipping cells whose slip exceeds 100
-// times it.
+// times it. `fixed`, if given, is the step's fixed tangential displacement
+// (x then y: the pressure's coupling displacement of a dissimilar pair).
 inline void expect_coulomb_conditions(TangentialOperator& op, const Eigen::ArrayXd& pressure, double mu,
                                       const TangentialState& previous, const TangentialResult& result,
-                                      double slip_tolerance, double angle_tolerance) {
+                                      double slip_tolerance, double angle_tolerance,
+                                      const Eigen::ArrayXd* fixed_x = nullptr,
+                                      const Eigen::ArrayXd* fixed_y = nullptr) {
   const std::size_t n = op.local_size();
   const TangentialState& s = result.state;
   Eigen::ArrayXd ux(static_cast<Eigen::Index>(n));
   Eigen::ArrayXd uy(static_cast<Eigen::Index>(n));
   op.apply({s.shear_x.data(), n}, {s.shear_y.data(), n}, {ux.data(), n}, {uy.data(), n});
+  if (fixed_x != nullptr) ux += *fixed_x;
+  if (fixed_y != nullptr) uy += *fixed_y;
   const double dax = s.approach_x - previous.approach_x;
   const double day = s.approach_y - previous.approach_y;
   int bound_violations = 0;

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <string>
 
@@ -32,32 +33,37 @@ struct RoughContact {
   SolveResult contact;
 };
 
-RoughContact rough_contact() {
+RoughContact rough_contact(const ElasticPair& pair = ElasticPair::similar(kSteel), std::uint64_t seed = 3) {
   const Grid grid = Grid::plane(kCells, kCells, kSpacing, kSpacing, Boundary::periodic);
   surface::SelfAffineSpec spec;
   spec.hurst = 0.8;
   spec.short_cutoff = 4e-6;
   spec.rms_slope = 0.1;
-  spec.seed = 3;
+  spec.seed = seed;
   const Eigen::ArrayXd heights = surface::make_self_affine_surface(grid, spec);
   const Eigen::ArrayXd gap = solvers::initial_gap(grid, {heights.data(), grid.size()});
-  const double e_star = ElasticPair::similar(kSteel).composite_modulus();
+  const double e_star = pair.composite_modulus();
   const auto normal = solvers::make_solver(grid, e_star, testing::test_options(solvers::SolverType::pk_fourier));
   return {grid, normal->solve({gap.data(), grid.size()}, Loading::mean_pressure(0.04 * e_star * 0.1))};
 }
 
 TangentialResult step(TangentialOperator& op, solvers::TangentialMethod method, const Eigen::ArrayXd& pressure,
                       const TangentialLoading& loading, const TangentialState& previous, int release_period = 5,
-                      bool coarse_start = true) {
+                      bool coarse_start = true, double mu = kMu, const Eigen::ArrayXd* fixed_x = nullptr,
+                      const Eigen::ArrayXd* fixed_y = nullptr) {
   solvers::TangentialOptions options;
-  options.friction_coefficient = kMu;
+  options.friction_coefficient = mu;
   options.tolerance = 1e-10;
   options.max_iterations = 50000;
   options.method = method;
   options.release_period = release_period;
   options.coarse_start = coarse_start;
   TangentialSolver solver(op, options);
-  return solver.solve({pressure.data(), op.local_size()}, loading, previous);
+  const std::size_t n = op.local_size();
+  if (fixed_x != nullptr) {
+    return solver.solve({pressure.data(), n}, loading, previous, {fixed_x->data(), n}, {fixed_y->data(), n});
+  }
+  return solver.solve({pressure.data(), n}, loading, previous);
 }
 
 // Both methods on one step; the conjugate gradients' result checked and
@@ -109,6 +115,53 @@ TEST(RoughFriction, ConjugateGradientsMeetCoulombAndAgreeWithProjectedGradients)
   const double further = second.state.approach_x + 0.3 * (first.state.approach_x - second.state.approach_x);
   expect_methods_agree(op, contact.pressure, TangentialLoading::displacement(further, second.state.approach_y),
                        second.state, "displacement");
+}
+
+// A steel surface pressed by a rigid rough one at small mu (Dundurs' beta =
+// 0.286, beta/mu 5.7 and 14): the pressure's coupling displacement pulls
+// each spot's surface inwards and most cells slip. The tangential half of
+// the coupled problem (the pressure and its coupling displacement given) at
+// zero force from rest once stalled: every cell slipping, the reduced
+// gradient zero, and the residual above the tolerance for 10000 iterations,
+// because the approach was taken as the mean displacement, not the one the
+// slip conditions fix (seeds 1 and 2 at mu = 0.02 and seed 2 at 0.05 failed
+// so in the program). Both methods now meet Coulomb's conditions, checked
+// by a fresh product, and agree.
+TEST(RoughFriction, CoupledPressingAtSmallMuMeetsCoulombWithBothMethods) {
+  const ElasticPair pair = ElasticPair::on_rigid(kSteel);
+  for (const std::uint64_t seed : {1, 2}) {
+    const auto [grid, contact] = rough_contact(pair, seed);
+    ASSERT_TRUE(contact.converged());
+    TangentialOperator op(grid, pair);
+    const std::size_t n = grid.size();
+    Eigen::ArrayXd fixed_x(static_cast<Eigen::Index>(n));
+    Eigen::ArrayXd fixed_y(static_cast<Eigen::Index>(n));
+    op.apply_pressure_coupling({contact.pressure.data(), n}, {fixed_x.data(), n}, {fixed_y.data(), n});
+    const TangentialState unloaded = TangentialState::unloaded(n);
+    for (const double mu : {0.02, 0.05}) {
+      const TangentialResult cg = step(op, solvers::TangentialMethod::conjugate_gradient, contact.pressure,
+                                       TangentialLoading::force(0.0), unloaded, 5, false, mu, &fixed_x, &fixed_y);
+      const TangentialResult pg = step(op, solvers::TangentialMethod::projected_gradient, contact.pressure,
+                                       TangentialLoading::force(0.0), unloaded, 5, false, mu, &fixed_x, &fixed_y);
+      ASSERT_TRUE(cg.converged()) << "seed " << seed << ", mu " << mu << ": " << cg.message;
+      ASSERT_TRUE(pg.converged()) << "seed " << seed << ", mu " << mu << ": " << pg.message;
+      const double limit = mu * contact.pressure.maxCoeff();
+      const double traction = std::max((cg.state.shear_x - pg.state.shear_x).abs().maxCoeff(),
+                                       (cg.state.shear_y - pg.state.shear_y).abs().maxCoeff());
+      const double scale = std::max(cg.state.displacement_x.abs().maxCoeff(), cg.state.displacement_y.abs().maxCoeff());
+      std::printf(
+          "rough %zu^2 on rigid, seed %d, mu %.2f: stick %.3f (projected gradients %.3f), traction "
+          "difference %.2e mu p_max, iterations %d against %d\n",
+          kCells, static_cast<int>(seed), mu, cg.stick_fraction, pg.stick_fraction, traction / limit, cg.iterations,
+          pg.iterations);
+      EXPECT_LE(traction, 1e-3 * limit);
+      EXPECT_NEAR(cg.force_x, 0.0, 1e-9 * mu * contact.total_force);
+      EXPECT_NEAR(cg.force_y, 0.0, 1e-9 * mu * contact.total_force);
+      EXPECT_LT(cg.stick_fraction, 0.9);  // most cells slip
+      testing::expect_coulomb_conditions(op, contact.pressure, mu, unloaded, cg, 1e-6 * scale, 1e-2, &fixed_x,
+                                         &fixed_y);
+    }
+  }
 }
 
 // Releases held between set updates (the default, release_period 5) and
