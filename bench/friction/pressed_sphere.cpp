@@ -21,8 +21,8 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <chrono>
-#include <cstdlib>
 #include <cmath>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -62,9 +62,9 @@ Pressed press(std::size_t cells, int increments, double mu, bool coupling) {
   friction.coupling = coupling;
   friction.normal_load_steps = increments;
   const auto started = std::chrono::steady_clock::now();
-  const FrictionalSolveResult r =
-      solvers::solve_frictional_surface(grid, {heights.data(), grid.size()}, pair, Loading::force(kForce),
-                                        halfspace::testing::test_options(solvers::SolverType::pk_fourier, 1e-12), friction);
+  const FrictionalSolveResult r = solvers::solve_frictional_surface(
+      grid, {heights.data(), grid.size()}, pair, Loading::force(kForce),
+      halfspace::testing::test_options(solvers::SolverType::pk_fourier, 1e-12), friction);
   Pressed out;
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   if (!r.converged()) {
@@ -82,8 +82,8 @@ Pressed press(std::size_t cells, int increments, double mu, bool coupling) {
       if (!(normal.pressure[k] > 0.0)) continue;
       contact_cells += 1.0;
       if (last.stick[k] == 0.0) {
-        nearest_slip = std::min(nearest_slip, std::hypot(halfspace::testing::centred_x(grid, i),
-                                                         halfspace::testing::centred_y(grid, j)));
+        nearest_slip = std::min(
+            nearest_slip, std::hypot(halfspace::testing::centred_x(grid, i), halfspace::testing::centred_y(grid, j)));
       }
     }
   }
@@ -93,7 +93,9 @@ Pressed press(std::size_t cells, int increments, double mu, bool coupling) {
       for (std::size_t i = 0; i < cells; ++i) {
         const auto k = static_cast<Eigen::Index>(j * cells + i);
         const double ratio = std::hypot(last.state.shear_x[k], last.state.shear_y[k]) / (mu * normal.pressure[k]);
-        row += !(normal.pressure[k] > 0.0) ? '.' : last.stick[k] != 0.0 ? char('0' + std::min(9, int(10 * ratio))) : '#';
+        row += !(normal.pressure[k] > 0.0) ? '.'
+               : last.stick[k] != 0.0      ? char('0' + std::min(9, int(10 * ratio)))
+                                           : '#';
       }
       fmt::print("{}\n", row);
     }
@@ -124,8 +126,8 @@ int main(int argc, char** argv) {
   const std::vector<double> increments = numbers(argc > 2 ? argv[2] : "4,8");
   const std::vector<double> mus = numbers(argc > 3 ? argv[3] : "0.3");
   fmt::print("# rigid sphere R = 10 mm, 10 N into steel (nu 0.3, beta 0.286), free grid over 2.4 a\n");
-  fmt::print("{:>6} {:>6} {:>10} {:>8} {:>8} {:>10} {:>10} {:>6} {:>8}\n", "mu", "cells", "increments", "c/a",
-             "slip/a", "peak %", "approach %", "alts", "seconds");
+  fmt::print("{:>6} {:>6} {:>10} {:>8} {:>8} {:>10} {:>10} {:>6} {:>8}\n", "mu", "cells", "increments", "c/a", "slip/a",
+             "peak %", "approach %", "alts", "seconds");
   for (const double cells : grids) {
     const auto n = static_cast<std::size_t>(cells);
     const Pressed plain = press(n, 1, 0.3, false);
