@@ -43,11 +43,11 @@ void print_friction_summary(std::FILE* out, const SolveSetup& setup, const Frict
   const ElasticPair& pair = *setup.pair;
   if (pair.coating()) {
     fmt::print(out, "friction:            mu = {:g}; the coated half-space against the rigid surface\n",
-               setup.friction->friction_coefficient);
+               setup.friction->tangential.friction_coefficient);
   } else {
     fmt::print(out, "friction:            mu = {:g}; E1 = {:g} Pa, nu1 = {:g}, E2 = {:g} Pa, nu2 = {:g}\n",
-               setup.friction->friction_coefficient, pair.body1().youngs_modulus, pair.body1().poissons_ratio,
-               pair.body2().youngs_modulus, pair.body2().poissons_ratio);
+               setup.friction->tangential.friction_coefficient, pair.body1().youngs_modulus,
+               pair.body1().poissons_ratio, pair.body2().youngs_modulus, pair.body2().poissons_ratio);
   }
   if (!pair.similar()) {
     int alternations = 0;
@@ -111,7 +111,7 @@ int run_frictional_solve(const SolveSetup& setup, const SolvePlace& place) {
     result.dundurs_beta = pair.dundurs_beta();
     activity.emplace(fmt::format("solving {} tangential step{} on the {} grid", options.steps(),
                                  options.steps() == 1 ? "" : "s", setup.grid.shape_string()));
-    Progress progress(prints, options.steps(), options.tolerance);
+    Progress progress(prints, options.steps(), options.tangential.tolerance);
     solvers::FrictionOptions friction = options;
     std::size_t shown = options.steps();
     if (progress.active()) {

@@ -331,7 +331,7 @@ void Problem::check_grid(const Grid& grid, const OptionSpelling& spelling) const
       for (const std::string_view option : {"layer_thickness", "layer_E", "layer_nu", "substrate_E", "substrate_nu"})
         layers.push_back(spelling.name(option));
       throw InputError(fmt::format("the coated half-space ({}) {} ({})", fmt::join(layers, ", "), error.rule(),
-                                   spelling.describe("friction", text(friction->friction_coefficient))));
+                                   spelling.describe("friction", text(friction->tangential.friction_coefficient))));
     }
     try {
       friction->validate(grid, solver, loading);

@@ -73,7 +73,7 @@ std::optional<solvers::FrictionOptions> Rules::friction(const solvers::SolverOpt
     throw InputError(fmt::format("{} with {}: {} {}", mu, describe("e_star", *o_.e_star), error.value(), error.rule()));
   }
   solvers::FrictionOptions friction;
-  friction.friction_coefficient = *o_.friction;
+  friction.tangential.friction_coefficient = *o_.friction;
   const auto steps = [&](std::string_view option, const std::vector<std::array<double, 2>>& given,
                          solvers::TangentialControl control) {
     if (given.empty()) throw OptionError(std::string(option), "", "is invalid: give at least one step");
@@ -88,15 +88,15 @@ std::optional<solvers::FrictionOptions> Rules::friction(const solvers::SolverOpt
       throw OptionError("sliding", text(*o_.sliding), "is invalid: expected a direction X,Y");
     friction.sliding_direction = {(*o_.sliding)[0], (*o_.sliding)[1]};
   }
-  if (o_.tangential_tol) friction.tolerance = *o_.tangential_tol;
+  if (o_.tangential_tol) friction.tangential.tolerance = *o_.tangential_tol;
   // Beyond int, a limit is no limit: validate() sees the nearest int.
   const auto clamped = [](long long value) { return static_cast<int>(std::clamp<long long>(value, INT_MIN, INT_MAX)); };
-  if (o_.tangential_max_iter) friction.max_iterations = clamped(*o_.tangential_max_iter);
-  if (o_.tangential_release_period) friction.release_period = clamped(*o_.tangential_release_period);
-  if (o_.tangential_active_set) friction.active_set_updates = clamped(*o_.tangential_active_set);
+  if (o_.tangential_max_iter) friction.tangential.max_iterations = clamped(*o_.tangential_max_iter);
+  if (o_.tangential_release_period) friction.tangential.release_period = clamped(*o_.tangential_release_period);
+  if (o_.tangential_active_set) friction.tangential.active_set_updates = clamped(*o_.tangential_active_set);
   if (o_.normal_load_steps) friction.normal_load_steps = clamped(*o_.normal_load_steps);
   if (o_.tangential_coarse_start) {
-    friction.coarse_start = on_off("tangential_coarse_start", *o_.tangential_coarse_start);
+    friction.tangential.coarse_start = on_off("tangential_coarse_start", *o_.tangential_coarse_start);
   }
   if (o_.coupling) friction.coupling = on_off("coupling", *o_.coupling);
   try {

@@ -54,6 +54,23 @@ std::string_view kind_of(fs::file_type type) {
 
 // A regular file or nothing may be at `where`; anything else would be
 // replaced by the rename (a device node by a regular file, as root).
+// Writes all of `bytes` (a write may write less than asked): 0, or the
+// errno of the write that failed.
+int write_all(int descriptor, std::span<const char> bytes) {
+  const char* data = bytes.data();
+  std::size_t left = bytes.size();
+  while (left > 0) {
+    const ssize_t written = ::write(descriptor, data, left);
+    if (written < 0) {
+      if (errno != EINTR) return errno;
+      continue;
+    }
+    data += written;
+    left -= static_cast<std::size_t>(written);
+  }
+  return 0;
+}
+
 void require_regular_or_missing(const fs::path& shown, const fs::path& where, bool follow) {
   std::error_code error;
   const fs::file_status status = follow ? fs::status(where, error) : fs::symlink_status(where, error);
@@ -169,18 +186,7 @@ void write_temporary(const fs::path& shown, const fs::path& temporary, std::span
     if (reason == EEXIST) refuse_existing();
     fail(shown, fmt::format("could not create temporary file '{}': {}", temporary.string(), std::strerror(reason)));
   }
-  int error = 0;
-  const char* data = bytes.data();
-  std::size_t left = bytes.size();
-  while (left > 0 && error == 0) {
-    const ssize_t written = ::write(descriptor, data, left);  // may write less than asked
-    if (written < 0) {
-      if (errno != EINTR) error = errno;
-      continue;
-    }
-    data += written;
-    left -= static_cast<std::size_t>(written);
-  }
+  int error = write_all(descriptor, bytes);
   // EINVAL: the file system cannot sync (some FUSE mounts); nothing to report.
   if (error == 0 && ::fsync(descriptor) != 0 && errno != EINVAL) error = errno;
   // Network file systems may report a failed write only at close.
@@ -318,18 +324,7 @@ void write_output_set(std::span<const OutputBytes> files,
     temporaries.push_back(std::make_unique<OutputTemporary>(file.path));
     const fs::path& temporary = temporaries.back()->temporary();
     const int descriptor = ::open(temporary.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
-    int error = descriptor < 0 ? errno : 0;
-    const char* data = file.bytes.data();
-    std::size_t left = file.bytes.size();
-    while (error == 0 && left > 0) {
-      const ssize_t written = ::write(descriptor, data, left);
-      if (written < 0) {
-        if (errno != EINTR) error = errno;
-        continue;
-      }
-      data += written;
-      left -= static_cast<std::size_t>(written);
-    }
+    int error = descriptor < 0 ? errno : write_all(descriptor, file.bytes);
     if (descriptor >= 0 && ::close(descriptor) != 0 && error == 0 && errno != EINTR) error = errno;
     if (error != 0) {
       fail(file.path, fmt::format("could not write temporary file '{}': {}", temporary.string(), std::strerror(error)));

@@ -14,7 +14,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <optional>
 
 #include "halfspace/error.hpp"
 #include "halfspace/mpi/agreement.hpp"
@@ -135,11 +134,6 @@ Eigen::ArrayXd SlabFilmRows::stencil_field(std::span<const double> rows) const {
   return field;
 }
 
-Eigen::ArrayXd SlabFilmRows::own_rows(const Eigen::ArrayXd& field) const {
-  const auto nx = static_cast<Eigen::Index>(whole_.nx());
-  return field.segment(static_cast<Eigen::Index>(own_first_) * nx, static_cast<Eigen::Index>(own_rows_) * nx);
-}
-
 void SlabFilmRows::send(Link& link, const Eigen::ArrayXd& pressure, const Eigen::ArrayXd& fluid_fraction) const {
   const std::size_t nx = whole_.nx();
   check(MPI_Wait(&link.request, MPI_STATUS_IGNORE), "MPI_Wait");
@@ -200,28 +194,6 @@ double SlabFilmRows::max(double value) const {
 
 bool SlabFilmRows::all(bool value) const {
   return comm_.min(value ? 1.0 : 0.0) > 0.5;
-}
-
-lubrication::FilmSolution solve_cavitating_film_on_slabs(const Grid& whole, std::span<const double> film_rows,
-                                                         const lubrication::FlowConditions& conditions,
-                                                         const lubrication::CavitationSolverOptions& options,
-                                                         const SlabLayout& slab, const MpiCommunicator& comm) {
-  run_agreed(comm, [&] {
-    conditions.validate(whole);
-    options.validate();
-    if (film_rows.size() != slab.local_size()) {
-      throw InputError(
-          fmt::format("{} film values for a slab of {} rows of {}", film_rows.size(), slab.rows, whole.shape_string()));
-    }
-  });
-  SlabFilmRows rows(whole, conditions, slab, comm);
-  const Eigen::ArrayXd film = rows.stencil_field(film_rows);
-  std::optional<lubrication::ReynoldsStencil> stencil;
-  run_agreed(comm, [&] { stencil.emplace(rows.stencil_grid(), film, rows.stencil_conditions()); });
-  lubrication::FilmSolution solution = lubrication::solve_cavitating_film(*stencil, options, nullptr, &rows);
-  solution.pressure = rows.own_rows(solution.pressure);
-  solution.fluid_fraction = rows.own_rows(solution.fluid_fraction);
-  return solution;
 }
 
 }  // namespace halfspace::mpi

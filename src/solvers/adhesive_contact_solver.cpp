@@ -412,7 +412,7 @@ struct AdhesiveContactSolver::Impl {
   // restart (Polak-Ribiere+ resets itself where the new gradient
   // contradicts the old direction, and restarting there cost 10-35 % more
   // iterations on the rough benchmark).
-  struct Walk {
+  struct Walk {  // the steps bind its members in this order
     SolveResult& result;
     double energy = 0.0;
     std::array<double, kMemory> recent{};
@@ -553,12 +553,7 @@ SolveResult AdhesiveContactSolver::Impl::solve_displacement(std::span<const doub
 }
 
 bool AdhesiveContactSolver::Impl::conjugate_gradient_step(Walk& walk, int iteration, double residual) {
-  SolveResult& result = walk.result;
-  double& energy = walk.energy;
-  std::array<double, kMemory>& recent = walk.recent;
-  double& free_shift = walk.free_shift;
-  bool& restart = walk.restart;
-  double& rho_old = walk.rho_old;
+  auto& [result, energy, recent, free_shift, restart, rho_old, alpha] = walk;
   const std::size_t m = size();
   const double c = compliance;
   // Preconditioned non-linear conjugate gradients on the free cells
@@ -708,10 +703,7 @@ bool AdhesiveContactSolver::Impl::conjugate_gradient_step(Walk& walk, int iterat
 }
 
 bool AdhesiveContactSolver::Impl::spectral_gradient_step(Walk& walk, int iteration, double residual) {
-  SolveResult& result = walk.result;
-  double& energy = walk.energy;
-  std::array<double, kMemory>& recent = walk.recent;
-  double& alpha = walk.alpha;
+  auto& [result, energy, recent, free_shift, restart, rho_old, alpha] = walk;
   const std::size_t m = size();
   const double c = compliance;
   const double alpha_min = 1e-10 * c;

@@ -9,6 +9,7 @@
 
 #include "halfspace/error.hpp"
 #include "halfspace/linalg/parallel.hpp"
+#include "halfspace/solvers/solver_options.hpp"
 
 namespace halfspace::solvers {
 
@@ -18,10 +19,10 @@ constexpr double kTightestTangentialTolerance = 1e-12;
 
 void CoupledStepOptions::validate() const {
   if (!(tolerance > 0.0 && tolerance < 1.0)) {
-    throw InputError(fmt::format("coupling tolerance = {} is invalid: allowed range is (0, 1)", tolerance));
+    throw SolverOptionError("coupling_tolerance", fmt::format("{}", tolerance), "is invalid: allowed range is (0, 1)");
   }
   if (max_alternations < 1) {
-    throw InputError(fmt::format("max_alternations = {} is invalid: must be at least 1", max_alternations));
+    throw SolverOptionError("max_alternations", fmt::format("{}", max_alternations), "is invalid: must be at least 1");
   }
 }
 

@@ -28,22 +28,19 @@ std::string_view load_unit(const TangentialLoading& loading, const Grid* grid) {
 
 }  // namespace
 
-TangentialOptions FrictionOptions::tangential_options() const {
-  TangentialOptions options;
-  options.friction_coefficient = friction_coefficient;
-  options.tolerance = tolerance;
-  options.max_iterations = max_iterations;
-  options.release_period = release_period;
-  options.active_set_updates = active_set_updates;
-  options.coarse_start = coarse_start;
+TangentialOptions FrictionOptions::tangential_options(const std::size_t& current) const {
+  TangentialOptions options = tangential;
+  if (progress) {
+    options.progress = [this, &current](int iteration, double residual) {
+      return progress(current, iteration, residual);
+    };
+  }
   return options;
 }
 
 void FrictionOptions::validate() const {
-  if (!(std::isfinite(friction_coefficient) && friction_coefficient >= 0.0)) {
-    throw SolverOptionError("friction", number(friction_coefficient),
-                            "is invalid: the friction coefficient mu must be finite and non-negative");
-  }
+  tangential.validate();
+  const double friction_coefficient = tangential.friction_coefficient;
   if (sliding_direction && !history.empty()) {
     throw SolverOptionError("sliding", fmt::format("{},{}", (*sliding_direction)[0], (*sliding_direction)[1]),
                             "cannot be combined with a tangential load: gross sliding is its own step (mu P along "
@@ -71,29 +68,11 @@ void FrictionOptions::validate() const {
                               "is invalid for sliding: without friction (mu = 0) there is no sliding force");
     }
   }
-  if (!(tolerance > 0.0 && tolerance < 1.0)) {
-    throw SolverOptionError("tolerance", number(tolerance), "is invalid: allowed range is (0, 1)");
-  }
-  if (max_iterations < 1) {
-    throw SolverOptionError("max_iterations", fmt::format("{}", max_iterations), "is invalid: must be at least 1");
-  }
-  if (release_period < 1) {
-    throw SolverOptionError("release_period", fmt::format("{}", release_period), "is invalid: must be at least 1");
-  }
-  if (active_set_updates < 0) {
-    throw SolverOptionError("active_set_updates", fmt::format("{}", active_set_updates),
-                            "is invalid: must be at least 0 (0: no active-set phase)");
-  }
   if (normal_load_steps < 1) {
     throw SolverOptionError("normal_load_steps", fmt::format("{}", normal_load_steps),
                             "is invalid: must be at least 1");
   }
-  if (!(coupling_tolerance > 0.0 && coupling_tolerance < 1.0)) {
-    throw SolverOptionError("coupling_tolerance", number(coupling_tolerance), "is invalid: allowed range is (0, 1)");
-  }
-  if (max_alternations < 1) {
-    throw SolverOptionError("max_alternations", fmt::format("{}", max_alternations), "is invalid: must be at least 1");
-  }
+  coupled_step.validate();
 }
 
 void FrictionOptions::validate(const SolverOptions& normal) const {
@@ -122,7 +101,7 @@ void FrictionOptions::validate(const Grid& grid, const SolverOptions& normal, co
   }
   if (loading.load_controlled()) {
     // The force the normal solve will carry; beyond mu P no partial slip exists.
-    const double limit = friction_coefficient * loading.target_force(grid.domain_area());
+    const double limit = tangential.friction_coefficient * loading.target_force(grid.domain_area());
     for (std::size_t k = 0; k < history.size(); ++k) {
       const TangentialLoading& step = history[k];
       if (step.control != TangentialControl::force) continue;

@@ -77,14 +77,8 @@ void solve_coupled(const Grid& grid, std::span<const double> heights, const Elas
   const std::unique_ptr<TangentialOperator> made = layout.make_tangential_operator(grid, pair, normal.fft_planning);
   TangentialOperator& op = *made;
   std::size_t current = 0;
-  TangentialOptions options = friction.tangential_options();
-  if (friction.progress) {
-    options.progress = [&friction, &current](int iteration, double residual) {
-      return friction.progress(current, iteration, residual);
-    };
-  }
-  TangentialSolver tangential(op, options);
-  CoupledStepSolver coupled(*normal_solver, op, tangential, {friction.coupling_tolerance, friction.max_alternations});
+  TangentialSolver tangential(op, friction.tangential_options(current));
+  CoupledStepSolver coupled(*normal_solver, op, tangential, friction.coupled_step);
   TangentialState state = TangentialState::unloaded(op.local_size());
   // At rest tangentially while the normal load grows: the history's control at zero.
   const bool force = friction.sliding_direction || friction.history.front().control == TangentialControl::force;
@@ -169,13 +163,7 @@ std::vector<TangentialResult> solve_tangential_history(const Grid& grid, const E
   const std::unique_ptr<TangentialOperator> made = layout.make_tangential_operator(grid, pair, planning);
   TangentialOperator& op = *made;
   std::size_t current = 0;  // the step the progress callback reports
-  TangentialOptions options = friction.tangential_options();
-  if (friction.progress) {
-    options.progress = [&friction, &current](int iteration, double residual) {
-      return friction.progress(current, iteration, residual);
-    };
-  }
-  TangentialSolver solver(op, options);
+  TangentialSolver solver(op, friction.tangential_options(current));
   const std::span<const double> pressure(normal.pressure.data(), static_cast<std::size_t>(normal.pressure.size()));
   std::vector<TangentialResult> steps;
   steps.reserve(friction.steps());
@@ -188,7 +176,7 @@ std::vector<TangentialResult> solve_tangential_history(const Grid& grid, const E
       // meets with every contact cell at mu p.
       const auto [x, y] = *friction.sliding_direction;
       const double force =
-          friction.friction_coefficient * normal_force(grid, normal, op.communicator()) / std::hypot(x, y);
+          friction.tangential.friction_coefficient * normal_force(grid, normal, op.communicator()) / std::hypot(x, y);
       loading = TangentialLoading::force(force * x, force * y);
     } else {
       loading = friction.history[k];

@@ -44,25 +44,14 @@ struct ActiveSetPhase {
   bool settled = false;
 };
 
-class TangentialActiveSet {
+class TangentialActiveSet : IterationMethod {
  public:
   // tau and kappa: one entry per cell (the slipping cells' tangential
   // motion and curvature within an outer iteration); single precision,
   // since they only shape the Newton step, which the finishing conjugate
   // gradients correct.
   TangentialActiveSet(TangentialIteration& it, std::span<float> tau, std::span<float> kappa)
-      : it_(it),
-        op_(it.op_),
-        problem_(it.problem_),
-        result_(it.result_),
-        comm_(it.comm_),
-        n_(it.n_),
-        f_(it.f_),
-        radius_(it.radius_),
-        up_x_(it.up_x_),
-        up_y_(it.up_y_),
-        tau_(tau.data()),
-        kappa_(kappa.data()) {}
+      : IterationMethod(it), tau_(tau.data()), kappa_(kappa.data()) {}
 
   // From the admissible q of TangentialIteration::start() (u = C q exact):
   // at most max_updates outer iterations, each of at most kMaxInnerSteps
@@ -124,16 +113,6 @@ class TangentialActiveSet {
   // cells that changed set and the largest turn.
   std::pair<double, double> update();
 
-  TangentialIteration& it_;
-  TangentialOperator& op_;
-  const Problem& problem_;
-  TangentialResult& result_;
-  const linalg::Communicator& comm_;
-  const std::size_t n_;
-  Fields f_;
-  const double* radius_;
-  const double* up_x_;
-  const double* up_y_;
   float* tau_;
   float* kappa_;
   const double self_ = op_.self_influence().xx;  // C_ii

@@ -15,18 +15,9 @@
 
 namespace halfspace::solvers::tangential {
 
-class ConjugateGradientMethod {
+class ConjugateGradientMethod : IterationMethod {
  public:
-  explicit ConjugateGradientMethod(TangentialIteration& it)
-      : it_(it),
-        op_(it.op_),
-        problem_(it.problem_),
-        result_(it.result_),
-        comm_(it.comm_),
-        n_(it.n_),
-        f_(it.f_),
-        radius_(it.radius_),
-        updates_since_exact_(it.updates_since_exact_) {}
+  explicit ConjugateGradientMethod(TangentialIteration& it) : IterationMethod(it) {}
 
   // One preconditioned conjugate-gradient step on the stick/slip sets (the
   // file comment); g holds ds from evaluate(), t the last preconditioned
@@ -103,15 +94,6 @@ class ConjugateGradientMethod {
     return {g.x - a.x, g.y - a.y};
   }
 
-  TangentialIteration& it_;
-  TangentialOperator& op_;
-  const Problem& problem_;
-  TangentialResult& result_;
-  const linalg::Communicator& comm_;
-  const std::size_t n_;
-  Fields f_;
-  const double* radius_;
-  int& updates_since_exact_;  // the iteration's: products since u = C q was exact
   const double self_ = op_.self_influence().xx;
   double rho_old_ = 0.0;   // the last z . Pi R g
   bool momentum_ = false;  // the last step was taken: its direction may carry over

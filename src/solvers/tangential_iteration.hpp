@@ -381,9 +381,7 @@ class TangentialIteration {
   }
 
  private:
-  friend class ConjugateGradientMethod;
-  friend class TangentialActiveSet;
-  friend class ProjectedGradientMethod;
+  friend class IterationMethod;
 
   // The methods step the iteration's fields and count its products.
   TangentialOperator& op_;
@@ -403,6 +401,37 @@ class TangentialIteration {
   double residual_ = 0.0;
   bool stop_ = false;          // the progress callback asked to stop
   double motion_floor_ = 0.0;  // m, see start()
+};
+
+// What a method that steps the iteration sees of it: the problem's data and
+// the fields (ConjugateGradientMethod, TangentialActiveSet,
+// ProjectedGradientMethod derive from it).
+class IterationMethod {
+ protected:
+  explicit IterationMethod(TangentialIteration& it)
+      : it_(it),
+        op_(it.op_),
+        problem_(it.problem_),
+        result_(it.result_),
+        comm_(it.comm_),
+        n_(it.n_),
+        f_(it.f_),
+        up_x_(it.up_x_),
+        up_y_(it.up_y_),
+        radius_(it.radius_),
+        updates_since_exact_(it.updates_since_exact_) {}
+
+  TangentialIteration& it_;
+  TangentialOperator& op_;
+  const Problem& problem_;
+  TangentialResult& result_;
+  const linalg::Communicator& comm_;
+  const std::size_t n_;
+  Fields f_;
+  const double* up_x_;  // the previous step's u (less the fixed part)
+  const double* up_y_;
+  const double* radius_;      // mu p
+  int& updates_since_exact_;  // the iteration's: products since u = C q was exact
 };
 
 }  // namespace halfspace::solvers::tangential

@@ -10,17 +10,9 @@
 
 namespace halfspace::solvers::tangential {
 
-class ProjectedGradientMethod {
+class ProjectedGradientMethod : IterationMethod {
  public:
-  explicit ProjectedGradientMethod(TangentialIteration& it)
-      : it_(it),
-        problem_(it.problem_),
-        comm_(it.comm_),
-        n_(it.n_),
-        f_(it.f_),
-        up_x_(it.up_x_),
-        up_y_(it.up_y_),
-        radius_(it.radius_) {}
+  explicit ProjectedGradientMethod(TangentialIteration& it) : IterationMethod(it) {}
 
   // Hands over from conjugate gradients to projected gradients at the
   // current iterate (no momentum; t and r hold q and u = C q).
@@ -34,14 +26,6 @@ class ProjectedGradientMethod {
   void step(double inverse_lipschitz);
 
  private:
-  TangentialIteration& it_;
-  const Problem& problem_;
-  const linalg::Communicator& comm_;
-  const std::size_t n_;
-  Fields f_;
-  const double* up_x_;  // the previous step's u (less the fixed part)
-  const double* up_y_;
-  const double* radius_;
   double momentum_ = 0.0;
 };
 

@@ -20,6 +20,7 @@
 #include "halfspace/error.hpp"
 #include "halfspace/linalg/parallel.hpp"
 #include "halfspace/solvers/grid_transfer.hpp"
+#include "halfspace/solvers/solver_options.hpp"
 #include "tangential_active_set.hpp"
 #include "tangential_conjugate_gradient.hpp"
 #include "tangential_iteration.hpp"
@@ -59,30 +60,26 @@ TangentialState TangentialState::unloaded(std::size_t cells) {
 }
 
 void TangentialOptions::validate() const {
+  const auto at_least = [](std::string_view option, int value, int least, std::string_view rule) {
+    if (value < least) throw SolverOptionError(std::string(option), fmt::format("{}", value), std::string(rule));
+  };
+  const auto fraction = [](std::string_view option, double value) {
+    if (!(value > 0.0 && value < 1.0)) {
+      throw SolverOptionError(std::string(option), fmt::format("{}", value), "is invalid: allowed range is (0, 1)");
+    }
+  };
   if (!(std::isfinite(friction_coefficient) && friction_coefficient >= 0.0)) {
-    throw InputError(
-        fmt::format("friction coefficient mu = {} is invalid: must be finite and non-negative", friction_coefficient));
+    throw SolverOptionError("friction", fmt::format("{}", friction_coefficient),
+                            "is invalid: the friction coefficient mu must be finite and non-negative");
   }
-  if (!(tolerance > 0.0 && tolerance < 1.0)) {
-    throw InputError(fmt::format("tolerance = {} is invalid: allowed range is (0, 1)", tolerance));
-  }
-  if (max_iterations < 1) {
-    throw InputError(fmt::format("max_iterations = {} is invalid: must be at least 1", max_iterations));
-  }
-  if (release_period < 1) {
-    throw InputError(fmt::format("release_period = {} is invalid: must be at least 1", release_period));
-  }
-  if (active_set_updates < 0) {
-    throw InputError(fmt::format("active_set_updates = {} is invalid: must be at least 0", active_set_updates));
-  }
-  if (!(coarse_tolerance > 0.0 && coarse_tolerance < 1.0)) {
-    throw InputError(fmt::format("coarse_tolerance = {} is invalid: allowed range is (0, 1)", coarse_tolerance));
-  }
+  fraction("tolerance", tolerance);
+  at_least("max_iterations", max_iterations, 1, "is invalid: must be at least 1");
+  at_least("release_period", release_period, 1, "is invalid: must be at least 1");
+  at_least("active_set_updates", active_set_updates, 0, "is invalid: must be at least 0 (0: no active-set phase)");
+  fraction("coarse_tolerance", coarse_tolerance);
   if (method != TangentialMethod::conjugate_gradient && method != TangentialMethod::projected_gradient) {
-    throw InputError(
-        fmt::format("tangential method {} is invalid: allowed are conjugate_gradient (0) and "
-                    "projected_gradient (1)",
-                    static_cast<int>(method)));
+    throw SolverOptionError("method", fmt::format("{}", static_cast<int>(method)),
+                            "is invalid: allowed are conjugate_gradient (0) and projected_gradient (1)");
   }
 }
 

@@ -52,11 +52,11 @@ FrictionalSolveResult solve(const SphereCase& sphere, const ElasticPair& pair, c
 
 FrictionOptions history(bool coupling) {
   FrictionOptions friction;
-  friction.friction_coefficient = kMu;
+  friction.tangential.friction_coefficient = kMu;
   friction.history = {TangentialLoading::force(0.5 * kMu * kForce), TangentialLoading::force(0.8 * kMu * kForce, 0.2),
                       TangentialLoading::force(0.2 * kMu * kForce)};
-  friction.tolerance = 1e-12;
-  friction.coupling_tolerance = 1e-12;
+  friction.tangential.tolerance = 1e-12;
+  friction.coupled_step.tolerance = 1e-12;
   friction.coupling = coupling;
   return friction;
 }

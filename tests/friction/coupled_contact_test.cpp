@@ -127,11 +127,11 @@ TEST(CoupledContact, CylinderAgreesWithADenseProjectedGaussSeidelSolve) {
                               .approach;
   const double displacement = 2e-7;
   solvers::FrictionOptions friction;
-  friction.friction_coefficient = mu;
+  friction.tangential.friction_coefficient = mu;
   friction.history = {TangentialLoading::displacement(displacement)};
-  friction.tolerance = 1e-10;
-  friction.max_iterations = 200000;
-  friction.coupling_tolerance = 1e-10;
+  friction.tangential.tolerance = 1e-10;
+  friction.tangential.max_iterations = 200000;
+  friction.coupled_step.tolerance = 1e-10;
   const FrictionalSolveResult result = solvers::solve_frictional_surface(
       grid, {heights.data(), n}, pair, Loading::approach(approach), normal_options(), friction);
   ASSERT_TRUE(result.converged()) << result.failure();
@@ -190,7 +190,7 @@ PressedSphere pressed_sphere(double mu, bool coupling, std::size_t n = 32, int i
   const Eigen::ArrayXd heights =
       testing::field_from(grid, [](double x, double y) { return -(x * x + y * y) / (2 * kRadius); });
   solvers::FrictionOptions friction;
-  friction.friction_coefficient = mu;
+  friction.tangential.friction_coefficient = mu;
   friction.history = {TangentialLoading::force(0.0)};
   friction.coupling = coupling;
   friction.normal_load_steps = increments;

@@ -38,7 +38,7 @@ CoupledHistory coupled_history() {
   CoupledHistory out{Grid::plane(n, n, h, h, Boundary::free), {}, {}};
   out.heights = testing::field_from(out.grid, [&](double x, double y) { return -(x * x + y * y) / (2 * radius); });
   solvers::FrictionOptions friction;
-  friction.friction_coefficient = 0.3;
+  friction.tangential.friction_coefficient = 0.3;
   friction.history = {TangentialLoading::force(0.5), TangentialLoading::force(2.0)};
   out.result =
       solvers::solve_frictional_surface(out.grid, {out.heights.data(), out.grid.size()}, pair, Loading::force(force),

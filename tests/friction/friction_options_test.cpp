@@ -21,7 +21,7 @@ std::string refused_option(const std::function<void()>& check) {
 
 FrictionOptions history(double mu, std::vector<TangentialLoading> steps) {
   FrictionOptions options;
-  options.friction_coefficient = mu;
+  options.tangential.friction_coefficient = mu;
   options.history = std::move(steps);
   return options;
 }
@@ -40,16 +40,16 @@ TEST(FrictionOptions, ValidateNamesTheOption) {
   sliding.sliding_direction = {{0.0, 0.0}};
   EXPECT_EQ(refused_option([&] { sliding.validate(); }), "sliding");
   sliding.sliding_direction = {{1.0, 0.0}};
-  sliding.friction_coefficient = 0.0;
+  sliding.tangential.friction_coefficient = 0.0;
   EXPECT_EQ(refused_option([&] { sliding.validate(); }), "friction");
-  sliding.friction_coefficient = 0.3;
+  sliding.tangential.friction_coefficient = 0.3;
   sliding.history = {TangentialLoading::force(1.0)};
   EXPECT_EQ(refused_option([&] { sliding.validate(); }), "sliding");
   FrictionOptions loose = history(0.3, {TangentialLoading::force(1.0)});
-  loose.tolerance = 1.0;
+  loose.tangential.tolerance = 1.0;
   EXPECT_EQ(refused_option([&] { loose.validate(); }), "tolerance");
   FrictionOptions eager = history(0.3, {TangentialLoading::force(1.0)});
-  eager.release_period = 0;
+  eager.tangential.release_period = 0;
   EXPECT_EQ(refused_option([&] { eager.validate(); }), "release_period");
 }
 
@@ -79,10 +79,10 @@ TEST(FrictionOptions, RulesOfTheSolve) {
   ramp.normal_load_steps = 0;
   EXPECT_EQ(refused_option([&] { ramp.validate(); }), "normal_load_steps");
   ramp.normal_load_steps = 4;
-  ramp.coupling_tolerance = 0.0;
+  ramp.coupled_step.tolerance = 0.0;
   EXPECT_EQ(refused_option([&] { ramp.validate(); }), "coupling_tolerance");
-  ramp.coupling_tolerance = 1e-6;
-  ramp.max_alternations = 0;
+  ramp.coupled_step.tolerance = 1e-6;
+  ramp.coupled_step.max_alternations = 0;
   EXPECT_EQ(refused_option([&] { ramp.validate(); }), "max_alternations");
   solvers::SolverOptions adhesive;
   adhesive.adhesion = solvers::SolverOptions::Adhesion{};

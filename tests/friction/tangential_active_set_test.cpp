@@ -255,17 +255,18 @@ TEST(TangentialActiveSet, NegativeUpdatesAreRefusedByName) {
     EXPECT_NE(std::string(error.what()).find("active_set_updates"), std::string::npos) << error.what();
   }
   solvers::FrictionOptions friction;
-  friction.friction_coefficient = kMu;
+  friction.tangential.friction_coefficient = kMu;
   friction.history = {TangentialLoading::force(1.0)};
-  friction.active_set_updates = -2;
+  friction.tangential.active_set_updates = -2;
   try {
     friction.validate();
     ADD_FAILURE() << "active_set_updates -2 accepted";
   } catch (const solvers::SolverOptionError& error) {
     EXPECT_EQ(error.option(), "active_set_updates");
   }
-  friction.active_set_updates = 7;
-  EXPECT_EQ(friction.tangential_options().active_set_updates, 7);
+  friction.tangential.active_set_updates = 7;
+  const std::size_t step = 0;
+  EXPECT_EQ(friction.tangential_options(step).active_set_updates, 7);
 }
 
 }  // namespace

@@ -1,9 +1,10 @@
 // The rigid Reynolds film with mass-conserving cavitation on slabs against
 // the serial solve of the whole film (run by ctest under mpiexec -np 1, 2
-// and 3 in the MPI build): every process makes the same film whole, keeps
-// its rows, and the slabs' pressure and fluid fraction must equal the
-// serial ones to the last bit (the iterates are the serial ones:
-// slab_film_rows.hpp), with the same sweeps and status, on films that
+// and 3 in the MPI build): every process makes the same surface whole,
+// keeps its rows and solves them as `halfspace lubricate` does under MPI
+// (lubricate_at_separation with mpi::SlabFilmRows); the slabs' pressure
+// and fluid fraction must equal the serial ones to the last bit (the
+// iterates are the serial ones: slab_film_rows.hpp), with the same sweeps and status, on films that
 // cavitate and reform, with fixed or periodic edges along either axis and
 // the entrainment up or down the rows. Exits non-zero on a mismatch,
 // printing it.
@@ -13,11 +14,10 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
-#include <span>
 #include <string>
 
 #include "halfspace/lubrication/cavitation_solver.hpp"
-#include "halfspace/lubrication/reynolds_stencil.hpp"
+#include "halfspace/lubrication/load_control.hpp"
 #include "halfspace/mpi/mpi_communicator.hpp"
 #include "halfspace/mpi/session.hpp"
 #include "halfspace/mpi/slab_fft.hpp"
@@ -51,16 +51,28 @@ Eigen::ArrayXd textured_film(const Grid& grid) {
 void check(const std::string& name, const Grid& grid, const lubrication::FlowConditions& conditions,
            const mpi::MpiCommunicator& comm) {
   const std::string where = fmt::format("{} ({}, {} processes)", name, grid.shape_string(), comm.size());
+  // The texture as heights below a flat plane at its thinnest film: the
+  // film separation + (highest - heights) is the texture to rounding, the
+  // same bits on both paths.
   const Eigen::ArrayXd film = textured_film(grid);
+  const Eigen::ArrayXd heights = -film;
+  const double separation = film.minCoeff();
   lubrication::CavitationSolverOptions options;
   options.tolerance = 1e-10;
-  const lubrication::ReynoldsStencil stencil(grid, film, conditions);
-  const lubrication::FilmSolution serial = lubrication::solve_cavitating_film(stencil, options);
+  const lubrication::FilmSolution serial =
+      lubrication::lubricate_at_separation(grid, heights, conditions, separation, options).solution;
 
+  // The path of `halfspace lubricate` under MPI (apps/mpi/mpi_lubricate.cpp).
   const mpi::SlabLayout slab = mpi::slab_layout(grid.nx(), grid.ny(), comm);
   const std::size_t begin = slab.first_row * grid.nx();
-  const lubrication::FilmSolution slabs = mpi::solve_cavitating_film_on_slabs(
-      grid, std::span<const double>(film.data() + begin, slab.local_size()), conditions, options, slab, comm);
+  mpi::SlabFilmRows rows(grid, conditions, slab, comm);
+  const Eigen::ArrayXd own =
+      heights.segment(static_cast<Eigen::Index>(begin), static_cast<Eigen::Index>(slab.local_size()));
+  lubrication::FilmSolution slabs =
+      lubrication::lubricate_at_separation(grid, own, conditions, separation, options, &rows).solution;
+  const auto first = static_cast<Eigen::Index>(rows.first_own_node());
+  slabs.pressure = slabs.pressure.segment(first, static_cast<Eigen::Index>(rows.own_nodes())).eval();
+  slabs.fluid_fraction = slabs.fluid_fraction.segment(first, static_cast<Eigen::Index>(rows.own_nodes())).eval();
 
   const auto n = static_cast<Eigen::Index>(slab.local_size());
   const auto b = static_cast<Eigen::Index>(begin);

@@ -84,9 +84,9 @@ void check(const Grid& grid, const ElasticPair& pair, bool sliding, const mpi::M
   normal.type = solvers::SolverType::pk_fourier;
   normal.tolerance = 1e-12;
   solvers::FrictionOptions friction;
-  friction.friction_coefficient = 0.3;
-  friction.tolerance = 1e-10;
-  friction.coupling_tolerance = 1e-10;
+  friction.tangential.friction_coefficient = 0.3;
+  friction.tangential.tolerance = 1e-10;
+  friction.coupled_step.tolerance = 1e-10;
   if (sliding) {
     friction.sliding_direction = {{1.0, 0.5}};
   } else {

@@ -19,7 +19,6 @@
 #include <vector>
 
 #include "halfspace/grid.hpp"
-#include "halfspace/lubrication/cavitation_solver.hpp"
 #include "halfspace/lubrication/film_rows.hpp"
 #include "halfspace/lubrication/flow_conditions.hpp"
 #include "halfspace/mpi/mpi_communicator.hpp"
@@ -46,8 +45,6 @@ class SlabFilmRows final : public lubrication::FilmRows {
   bool fixed_in_whole(std::size_t k) const override;
   void sum(std::span<double> values) const override { comm_.sum(values); }
   double min(double value) const override { return comm_.min(value); }
-  // This process's rows of a field on the stencil's rows.
-  Eigen::ArrayXd own_rows(const Eigen::ArrayXd& field) const;
 
   const Grid& whole_grid() const override { return whole_; }
   void start(const Eigen::ArrayXd& pressure, const Eigen::ArrayXd& fluid_fraction) override;
@@ -86,13 +83,5 @@ class SlabFilmRows final : public lubrication::FilmRows {
   std::vector<Link> links_;
   long sweep_ = 0;
 };
-
-// The rigid film of this process's rows `film_rows` (slab.local_size()
-// values) solved on slabs: the pressure and fluid fraction of these rows,
-// the sweeps, residual and status of the whole film. Collective.
-lubrication::FilmSolution solve_cavitating_film_on_slabs(const Grid& whole, std::span<const double> film_rows,
-                                                         const lubrication::FlowConditions& conditions,
-                                                         const lubrication::CavitationSolverOptions& options,
-                                                         const SlabLayout& slab, const MpiCommunicator& comm);
 
 }  // namespace halfspace::mpi

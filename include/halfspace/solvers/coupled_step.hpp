@@ -35,7 +35,8 @@ namespace halfspace::solvers {
 struct CoupledStepOptions {
   double tolerance = 1e-6;  // of the normal displacement the shear's last change makes, relative
   int max_alternations = 100;
-  // Throws InputError naming the option unless 0 < tolerance < 1 and max_alternations >= 1.
+  // Throws SolverOptionError (an InputError) unless 0 < tolerance < 1
+  // ("coupling_tolerance") and max_alternations >= 1 ("max_alternations").
   void validate() const;
 };
 

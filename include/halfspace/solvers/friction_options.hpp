@@ -15,6 +15,7 @@
 
 #include "halfspace/elastic_pair.hpp"
 #include "halfspace/grid.hpp"
+#include "halfspace/solvers/coupled_step.hpp"
 #include "halfspace/solvers/loading.hpp"
 #include "halfspace/solvers/solver_options.hpp"
 #include "halfspace/solvers/tangential_loading.hpp"
@@ -23,18 +24,16 @@
 namespace halfspace::solvers {
 
 struct FrictionOptions {
-  double friction_coefficient = 0.0;  // mu, finite and >= 0
+  // mu and the tangential solver's tolerance, iteration limit, release
+  // period, active-set updates and coarse start (its progress is set per
+  // step from `progress` below).
+  TangentialOptions tangential;
   // The tangential load steps in order (a force, N or N/m in 1D, or a
   // tangential approach, m); more than one is a history.
   std::vector<TangentialLoading> history;
   // Gross sliding along (x, y) (any length but zero) instead of a history:
   // one step at the force mu P in that direction.
   std::optional<std::array<double, 2>> sliding_direction;
-  double tolerance = 1e-6;  // of the tangential solver's residual (tangential_solver.hpp)
-  int max_iterations = 10000;
-  int release_period = 5;      // TangentialOptions::release_period
-  int active_set_updates = 0;  // TangentialOptions::active_set_updates (0: no active-set phase)
-  bool coarse_start = false;   // TangentialOptions::coarse_start (each step started on coarser grids)
   // Elastically dissimilar bodies (Dundurs' beta != 0): solve the coupled
   // normal-tangential problem (coupled_step.hpp), or, false, ignore the
   // coupling (the uncoupled approximation, for comparison). No effect for
@@ -45,27 +44,24 @@ struct FrictionOptions {
   // load (the shear the normal loading leaves depends on the path: a
   // growing contact sticks where it lands).
   int normal_load_steps = 1;
-  double coupling_tolerance = 1e-6;  // CoupledStepOptions::tolerance
-  int max_alternations = 100;        // CoupledStepOptions::max_alternations
+  CoupledStepOptions coupled_step;  // the coupled alternation's tolerance and limit
   // Called once per tangential iteration with (step, iteration, residual);
   // may be empty or stop the solve (solve_result.hpp's IterationDecision).
   std::function<IterationDecision(std::size_t, int, double)> progress;
 
   // The number of tangential steps solved: the history's, or 1 when sliding.
   std::size_t steps() const { return sliding_direction ? 1 : history.size(); }
-  // The tangential solver's options for these.
-  TangentialOptions tangential_options() const;
+  // `tangential`, its progress reporting `progress` at the step `current`.
+  TangentialOptions tangential_options(const std::size_t& current) const;
   // Whether a solve on `pair` is coupled: coupling on and beta != 0.
   bool coupled(const ElasticPair& pair) const { return coupling && !pair.similar(); }
 
-  // Throws SolverOptionError naming the option unless: mu is finite and
-  // >= 0 ("friction"); exactly one of a non-empty history ("tangential_load")
-  // and a sliding direction ("sliding") is given; every load step is finite;
-  // the direction is finite and not zero, and mu > 0 when sliding; the
-  // tangential tolerance, iteration limit, release period and active-set
-  // updates are valid ("tolerance", "max_iterations", "release_period",
-  // "active_set_updates"); normal_load_steps, coupling_tolerance and
-  // max_alternations are valid (their names).
+  // Throws SolverOptionError naming the option unless: `tangential` is
+  // valid (TangentialOptions::validate, mu as "friction"); exactly one of a
+  // non-empty history ("tangential_load") and a sliding direction
+  // ("sliding") is given; every load step is finite; the direction is
+  // finite and not zero, and mu > 0 when sliding; normal_load_steps is at
+  // least 1; `coupled_step` is valid (CoupledStepOptions::validate).
   void validate() const;
 
   // validate(), and no adhesion in `normal`: the cohesive tractions make

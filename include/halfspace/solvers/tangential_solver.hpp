@@ -90,9 +90,10 @@ struct TangentialOptions {
   // Called once per iteration with (iteration, residual); may be empty or stop the solve.
   ProgressCallback progress;
 
-  // Throws InputError naming the option unless mu is finite and >= 0,
-  // 0 < tolerance < 1, max_iterations >= 1, release_period >= 1,
-  // 0 < coarse_tolerance < 1 and active_set_updates >= 0.
+  // Throws SolverOptionError (an InputError) naming the member ("friction"
+  // for mu) unless mu is finite and >= 0, 0 < tolerance < 1,
+  // max_iterations >= 1, release_period >= 1, active_set_updates >= 0 and
+  // 0 < coarse_tolerance < 1.
   void validate() const;
 };
 
