@@ -57,7 +57,7 @@ Pressed press(std::size_t cells, int increments, double mu, bool coupling) {
   const Eigen::ArrayXd heights =
       halfspace::testing::field_from(grid, [](double x, double y) { return -(x * x + y * y) / (2 * kRadius); });
   solvers::FrictionOptions friction;
-  friction.friction_coefficient = mu;
+  friction.tangential.friction_coefficient = mu;
   friction.history = {TangentialLoading::force(0.0)};
   friction.coupling = coupling;
   friction.normal_load_steps = increments;
