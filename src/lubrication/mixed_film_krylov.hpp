@@ -5,8 +5,9 @@
 // formed), right-preconditioned by a sparse approximation of it (the
 // Reynolds stencil and the closed contact rows with K truncated to a few
 // cells around each node) factorised by Eigen's SparseLU
-// (film_preconditioner.hpp). Private to the
-// library.
+// (film_preconditioner.hpp), kept across solves while GMRES converges
+// quickly with it (film_krylov_solver.hpp's LaggedPreconditioner). Private
+// to the library.
 #pragma once
 
 #include <Eigen/Core>

@@ -93,9 +93,10 @@ TEST(LaggedPreconditionerTest, StaleFactorisationServesNearbyMatricesAndIsReplac
           return true;
         },
         [&](int limit, bool) {
-          const int iterations = gmres.solve([&](const Eigen::VectorXd& v, Eigen::VectorXd& out) { out.noalias() = a * v; },
-                                             [&](const Eigen::VectorXd& v, Eigen::VectorXd& out) { out = lu.solve(v); },
-                                             residual, tolerance, limit, x);
+          const int iterations =
+              gmres.solve([&](const Eigen::VectorXd& v, Eigen::VectorXd& out) { out.noalias() = a * v; },
+                          [&](const Eigen::VectorXd& v, Eigen::VectorXd& out) { out = lu.solve(v); }, residual,
+                          tolerance, limit, x);
           return std::pair{iterations, x.allFinite()};
         });
   };
@@ -119,8 +120,11 @@ TEST(LaggedPreconditionerTest, StaleFactorisationServesNearbyMatricesAndIsReplac
   EXPECT_GE(run.iterations, 2 * LaggedPreconditioner::kRefactoriseAfter);
   EXPECT_LE(relative_residual(a, x, residual), 10.0 * tolerance);
   // A factorisation that fails is reported, not used.
-  const LaggedPreconditioner::Run failed =
-      lagged.solve(true, max_iterations, [] { return false; }, [&](int, bool) { return std::pair{0, true}; });
+  const LaggedPreconditioner::Run failed = lagged.solve(
+      true, max_iterations, [] { return false; },
+      [&](int, bool) {
+        return std::pair{0, true};
+      });
   EXPECT_FALSE(failed.factorised);
 }
 
