@@ -32,8 +32,6 @@ namespace {
 double preconditioner_row_entries(int r) {
   return (2.0 * r + 3.0) * (2.0 * r + 5.0);
 }
-// GMRES iterations above which the next step refactorises the preconditioner.
-constexpr int kRefactoriseAfter = 15;
 // The loosest relative residual of a multigrid-preconditioned step (solve()).
 constexpr double kLoosestMultigridForcing = 1e-3;
 }  // namespace
@@ -112,13 +110,9 @@ bool FilmKrylovSolver::factorise(std::string& message) {
   // Rows in compressed form, each row's entries gathered, sorted and
   // summed. Every entry of the pattern is kept, zero or not, so that the
   // pattern is the same at every Newton step (the LU analyses it once).
-  matrix_.rows = n_;
-  matrix_.start.resize(n_ + 1);
-  matrix_.column.clear();
-  matrix_.value.clear();
+  matrix_.clear();
   for (std::size_t k = 0; k < n_; ++k) {
     const auto kk = static_cast<Eigen::Index>(k);
-    matrix_.start[k] = static_cast<int>(matrix_.column.size());
     border_column_[kk] = 0.0;
     row_scratch_.clear();
     if (topology_.fixed(k)) {
@@ -136,17 +130,8 @@ bool FilmKrylovSolver::factorise(std::string& message) {
         });
       }
     }
-    std::sort(row_scratch_.begin(), row_scratch_.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-    for (std::size_t e = 0; e < row_scratch_.size(); ++e) {
-      if (e > 0 && row_scratch_[e].first == row_scratch_[e - 1].first) {
-        matrix_.value.back() += row_scratch_[e].second;
-      } else {
-        matrix_.column.push_back(row_scratch_[e].first);
-        matrix_.value.push_back(row_scratch_[e].second);
-      }
-    }
+    matrix_.append_row(row_scratch_);
   }
-  matrix_.start[n_] = static_cast<int>(matrix_.column.size());
   if (!preconditioner_->factorise(matrix_, message)) return false;
   preconditioner_->apply(border_column_, border_solved_);
   load_row_ = area_over_load_ * dp_ds_;
@@ -201,28 +186,17 @@ KrylovOutcome FilmKrylovSolver::solve(const LocalRows& rows, const std::vector<c
     outcome.converged = true;
     return outcome;
   }
-  // The preconditioner of an earlier step serves while GMRES converges in
-  // few iterations with it (the Jacobian changes little between late
-  // Newton steps): refactorised when a node changed branch, when the last
-  // solve took more than kRefactoriseAfter iterations, or when GMRES with
-  // the old one does not converge in twice that.
-  bool fresh = false;
+  // The preconditioner of an earlier step serves while the branches are
+  // the same (LaggedPreconditioner).
   const bool same_branches = factorised_ && (dp_ds_.array() == load_row_.array() / area_over_load_).all();
-  if (!same_branches || last_iterations_ > kRefactoriseAfter) {
-    factorised_ = factorise(outcome.message);
-    if (!factorised_) return outcome;
-    fresh = true;
-  }
-  const int stale_limit = std::min(settings_.max_iterations, 2 * kRefactoriseAfter);
-  int iterations = gmres(tolerance, fresh ? settings_.max_iterations : stale_limit, residual, step);
-  outcome.iterations = iterations;
-  if (!fresh && !(step.allFinite() && iterations < stale_limit)) {
-    factorised_ = factorise(outcome.message);
-    if (!factorised_) return outcome;
-    iterations = gmres(tolerance, settings_.max_iterations, residual, step);
-    outcome.iterations += iterations;
-  }
-  last_iterations_ = iterations;
+  const LaggedPreconditioner::Run run = lagged_.solve(
+      !same_branches, settings_.max_iterations, [&] { return factorised_ = factorise(outcome.message); },
+      [&](int max_iterations, bool) {
+        const int iterations = gmres(tolerance, max_iterations, residual, step);
+        return std::pair{iterations, step.allFinite()};
+      });
+  outcome.iterations = run.iterations;
+  if (!run.factorised) return outcome;
   // The residual measured with the operator, not GMRES's estimate.
   apply_jacobian(step, work_);
   work_ += residual;

@@ -6,10 +6,33 @@
 
 #include <Eigen/SparseCore>
 #include <Eigen/SparseLU>
+#include <algorithm>
 
 #include "film_multigrid.hpp"
 
 namespace halfspace::lubrication::detail {
+
+void CsrMatrix::clear() {
+  rows = 0;
+  start.assign(1, 0);
+  column.clear();
+  value.clear();
+}
+
+void CsrMatrix::append_row(std::vector<std::pair<int, double>>& entries) {
+  std::sort(entries.begin(), entries.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (std::size_t e = 0; e < entries.size(); ++e) {
+    if (e > 0 && entries[e].first == entries[e - 1].first) {
+      value.back() += entries[e].second;
+    } else {
+      column.push_back(entries[e].first);
+      value.push_back(entries[e].second);
+    }
+  }
+  entries.clear();
+  ++rows;
+  start.push_back(static_cast<int>(column.size()));
+}
 
 namespace {
 
@@ -34,7 +57,7 @@ class SparseLuPreconditioner final : public FilmPreconditioner {
     }
     lu_.factorize(sparse_);
     if (lu_.info() != Eigen::Success) {
-      message = fmt::format("the EHL preconditioner's sparse LU failed: {}", lu_.lastErrorMessage());
+      message = fmt::format("the film preconditioner's sparse LU failed: {}", lu_.lastErrorMessage());
       return false;
     }
     return true;

@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "halfspace/grid.hpp"
@@ -26,6 +27,12 @@ struct CsrMatrix {
   std::vector<double> value;
 
   std::size_t entries() const { return column.size(); }
+  // Empties the matrix for rows appended one by one.
+  void clear();
+  // Appends the next row from `entries` (columns in any order, repeated
+  // ones summed; every entry kept, zero or not, so that a pattern written
+  // in full is the same at every Newton step) and empties `entries`.
+  void append_row(std::vector<std::pair<int, double>>& entries);
   // out = b - A x.
   void residual(const Eigen::VectorXd& b, const Eigen::VectorXd& x, Eigen::VectorXd& out) const;
 };

@@ -501,6 +501,9 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
       const double loose_forcing = std::min(kLargestForcing, current.norm);
       bool accepted = false, failed = false;
       Measure tried;
+      // A branch pass's GMRES (and the tight solve's) goes on from the last
+      // solve's step of this Newton step: they differ in a few rows.
+      bool warm = false;
       for (const bool tight : {false, true}) {
         if (tight && !(krylov && loose_forcing > options.krylov_tolerance)) break;
         for (std::size_t j = 0; j < n; ++j) {
@@ -519,7 +522,8 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
           const double forcing = tight ? 0.0 : loose_forcing;
           const auto gmres_solve = [&] {
             const detail::KrylovOutcome outcome =
-                krylov_solver->solve(rows, branch_full, closed, scales, forcing, residual, step);
+                krylov_solver->solve(rows, branch_full, closed, scales, forcing, residual, step, warm);
+            warm = outcome.converged;
             step_iterations += outcome.iterations;
             krylov_message = outcome.message;
             return outcome.converged;

@@ -47,7 +47,7 @@ double mixed_krylov_memory_estimate(std::size_t nodes, const MixedKrylovSettings
   const double entries = preconditioner_node_entries(settings.neighbourhood);
   const double per_node = 2.0 * 8.0 * (settings.restart + 1)  // GMRES basis, 2 unknowns per node
                           + 16.0 * sizeof(LocalTerm)          // local rows
-                          + entries * (16.0 + 12.0)           // triplets and the compressed matrix
+                          + entries * (12.0 + 12.0)           // the compressed rows and the LU's copy
                           + entries * kFillAllowance * 12.0   // the LU's supernodes
                           + 8.0 * 60.0;                       // the Newton state and work vectors
   return per_node * static_cast<double>(nodes);
@@ -70,6 +70,7 @@ MixedKrylovSolver::MixedKrylovSolver(InfluenceOperator& op, const ReynoldsStenci
   head_out_.resize(2 * ni);
   gmres_.resize(m_, settings_.restart);
   work_.resize(m_);
+  preconditioner_ = make_film_preconditioner(KrylovPreconditioner::sparse_lu, op.grid(), 0);
 }
 
 void MixedKrylovSolver::apply_jacobian(const Eigen::VectorXd& v, Eigen::VectorXd& out) {
@@ -114,55 +115,50 @@ bool MixedKrylovSolver::factorise(std::string& message) {
   const double P = scales_.pressure, H = scales_.film, mass = scales_.mass;
   const std::vector<char>& open_film = rows_->open_film;
   const std::vector<char>& closed = *closed_;
-  triplets_.clear();
   border_column_.setZero();
   // Every entry of the pattern is written, zero or not, so that the pattern
   // is the same at every Newton step (branches and contacts change) and is
   // analysed once.
+  matrix_.clear();
+  row_scratch_.clear();
   for (std::size_t k = 0; k < n_; ++k) {
     const auto row = static_cast<int>(k);
     const auto kk = static_cast<Eigen::Index>(k);
     if (topology_.fixed(k)) {
-      triplets_.emplace_back(row, row, 1.0);
+      row_scratch_.emplace_back(row, 1.0);
     } else {
       for (std::size_t t = rows_->start[k]; t < rows_->start[k + 1]; ++t) {
         const LocalTerm& term = rows_->terms[t];
         const auto j = static_cast<Eigen::Index>(term.node);
-        triplets_.emplace_back(row, static_cast<int>(j),
-                               (term.by_pressure * dp_ds_[j] + term.by_fraction * dtheta_ds_[j]) / mass);
+        row_scratch_.emplace_back(static_cast<int>(j),
+                                  (term.by_pressure * dp_ds_[j] + term.by_fraction * dtheta_ds_[j]) / mass);
         const double by_film = open_film[term.node] != 0 ? term.by_film / mass : 0.0;
         border_column_[kk] += by_film;
         local_.for_each(term.node, [&](std::size_t node, double k_value) {
           const auto mm = static_cast<Eigen::Index>(node);
-          triplets_.emplace_back(row, static_cast<int>(node), by_film * k_value * dp_ds_[mm]);
-          triplets_.emplace_back(row, static_cast<int>(n_ + node), by_film * k_value * P);
+          row_scratch_.emplace_back(static_cast<int>(node), by_film * k_value * dp_ds_[mm]);
+          row_scratch_.emplace_back(static_cast<int>(n_ + node), by_film * k_value * P);
         });
       }
     }
-    // The contact row: the identity on q (open) or the truncated film (closed).
-    const auto contact_row = static_cast<int>(n_ + k);
+    matrix_.append_row(row_scratch_);
+  }
+  // The contact rows: the identity on q (open) or the truncated film (closed).
+  for (std::size_t k = 0; k < n_; ++k) {
+    const auto kk = static_cast<Eigen::Index>(k);
     const bool is_closed = closed[k] != 0;
-    triplets_.emplace_back(contact_row, contact_row, is_closed ? 0.0 : 1.0);
+    row_scratch_.emplace_back(static_cast<int>(n_ + k), is_closed ? 0.0 : 1.0);
     local_.for_each(k, [&](std::size_t node, double k_value) {
       const auto mm = static_cast<Eigen::Index>(node);
-      triplets_.emplace_back(contact_row, static_cast<int>(node), is_closed ? k_value * dp_ds_[mm] / H : 0.0);
-      triplets_.emplace_back(contact_row, static_cast<int>(n_ + node), is_closed ? k_value * P / H : 0.0);
+      row_scratch_.emplace_back(static_cast<int>(node), is_closed ? k_value * dp_ds_[mm] / H : 0.0);
+      row_scratch_.emplace_back(static_cast<int>(n_ + node), is_closed ? k_value * P / H : 0.0);
     });
     border_column_[ni + kk] = is_closed ? 1.0 / H : 0.0;
+    matrix_.append_row(row_scratch_);
   }
-  sparse_.resize(2 * ni, 2 * ni);
-  sparse_.setFromTriplets(triplets_.begin(), triplets_.end());
-  if (!analysed_) {
-    lu_.analyzePattern(sparse_);
-    analysed_ = true;
-  }
-  lu_.factorize(sparse_);
-  if (lu_.info() != Eigen::Success) {
-    message = fmt::format("the mixed film's preconditioner's sparse LU failed: {}", lu_.lastErrorMessage());
-    return false;
-  }
+  if (!preconditioner_->factorise(matrix_, message)) return false;
   if (!scales_.load_control) return true;
-  border_solved_ = lu_.solve(border_column_);
+  preconditioner_->apply(border_column_, border_solved_);
   load_row_.head(ni) = scales_.area_over_load * dp_ds_;
   load_row_.tail(ni).setConstant(scales_.area_over_load * P);
   border_pivot_ = load_row_.dot(border_solved_);
@@ -176,7 +172,7 @@ bool MixedKrylovSolver::factorise(std::string& message) {
 void MixedKrylovSolver::apply_preconditioner(const Eigen::VectorXd& v, Eigen::VectorXd& out) {
   const auto two_n = static_cast<Eigen::Index>(2 * n_);
   head_in_ = v.head(two_n);
-  head_out_ = lu_.solve(head_in_);
+  preconditioner_->apply(head_in_, head_out_);
   if (!scales_.load_control) {
     out = head_out_;
     return;
@@ -187,15 +183,15 @@ void MixedKrylovSolver::apply_preconditioner(const Eigen::VectorXd& v, Eigen::Ve
 }
 
 int MixedKrylovSolver::gmres(double tolerance, int max_iterations, const Eigen::VectorXd& residual,
-                             Eigen::VectorXd& step) {
+                             Eigen::VectorXd& step, bool warm) {
   return gmres_.solve([this](const Eigen::VectorXd& v, Eigen::VectorXd& out) { apply_jacobian(v, out); },
                       [this](const Eigen::VectorXd& v, Eigen::VectorXd& out) { apply_preconditioner(v, out); },
-                      residual, tolerance, max_iterations, step);
+                      residual, tolerance, max_iterations, step, warm);
 }
 
 KrylovOutcome MixedKrylovSolver::solve(const MixedRows& rows, const std::vector<char>& branch_full,
                                        const std::vector<char>& closed, const MixedScales& scales, double forcing,
-                                       const Eigen::VectorXd& residual, Eigen::VectorXd& step) {
+                                       const Eigen::VectorXd& residual, Eigen::VectorXd& step, bool warm) {
   KrylovOutcome outcome;
   rows_ = &rows;
   closed_ = &closed;
@@ -208,9 +204,17 @@ KrylovOutcome MixedKrylovSolver::solve(const MixedRows& rows, const std::vector<
     dp_ds_[jj] = !fixed && branch_full[j] != 0 ? scales.pressure : 0.0;
     dtheta_ds_[jj] = !fixed && branch_full[j] == 0 ? 1.0 : 0.0;
   }
-  if (!factorise(outcome.message)) return outcome;
   const double tolerance = std::max(settings_.tolerance, forcing);
-  outcome.iterations = gmres(tolerance, settings_.max_iterations, residual, step);
+  // The retry after a stale preconditioner failed goes on from where it
+  // stopped (GMRES's residual only falls).
+  const LaggedPreconditioner::Run run = lagged_.solve(
+      false, settings_.max_iterations, [&] { return factorise(outcome.message); },
+      [&](int max_iterations, bool retry) {
+        const int iterations = gmres(tolerance, max_iterations, residual, step, warm || retry);
+        return std::pair{iterations, step.allFinite()};
+      });
+  outcome.iterations = run.iterations;
+  if (!run.factorised) return outcome;
   // The residual recomputed with the operator, not GMRES's estimate.
   apply_jacobian(step, work_);
   const double b_norm = residual.norm();

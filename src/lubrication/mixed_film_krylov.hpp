@@ -4,15 +4,17 @@
 // influence operator per iteration, on the total pressure: K is never
 // formed), right-preconditioned by a sparse approximation of it (the
 // Reynolds stencil and the closed contact rows with K truncated to a few
-// cells around each node) factorised by Eigen's SparseLU. Private to the
-// library.
+// cells around each node) factorised by Eigen's SparseLU
+// (film_preconditioner.hpp), kept across solves while GMRES converges
+// quickly with it (film_krylov_solver.hpp's LaggedPreconditioner). Private
+// to the library.
 #pragma once
 
 #include <Eigen/Core>
-#include <Eigen/SparseCore>
-#include <Eigen/SparseLU>
 #include <cstddef>
+#include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "film_krylov_solver.hpp"
@@ -67,11 +69,14 @@ class MixedKrylovSolver {
   // Solves J step = -residual (2n + 1 or 2n entries) for the rows `rows`,
   // the branches `branch_full` and `closed` and the scales (whose
   // load_control must be the constructor's), to the relative
-  // residual max(settings.tolerance, forcing). Factorises the
-  // preconditioner first; its failure and GMRES's are returned.
+  // residual max(settings.tolerance, forcing); from `step` as given with
+  // `warm` (a branch pass's step from the last pass's), else from 0. The
+  // preconditioner is an earlier solve's while GMRES converges quickly with
+  // it (LaggedPreconditioner), else factorised anew; its failure and
+  // GMRES's are returned.
   KrylovOutcome solve(const MixedRows& rows, const std::vector<char>& branch_full, const std::vector<char>& closed,
-                      const MixedScales& scales, double forcing, const Eigen::VectorXd& residual,
-                      Eigen::VectorXd& step);
+                      const MixedScales& scales, double forcing, const Eigen::VectorXd& residual, Eigen::VectorXd& step,
+                      bool warm);
 
   // The film's change K (dp_f + dp_c) + dh0 (n entries) under `step` on the
   // branches of the last solve: one operator product.
@@ -81,7 +86,7 @@ class MixedKrylovSolver {
   void apply_jacobian(const Eigen::VectorXd& v, Eigen::VectorXd& out);
   bool factorise(std::string& message);
   void apply_preconditioner(const Eigen::VectorXd& v, Eigen::VectorXd& out);
-  int gmres(double tolerance, int max_iterations, const Eigen::VectorXd& residual, Eigen::VectorXd& step);
+  int gmres(double tolerance, int max_iterations, const Eigen::VectorXd& residual, Eigen::VectorXd& step, bool warm);
 
   InfluenceOperator& op_;
   const ReynoldsStencil& topology_;
@@ -96,10 +101,10 @@ class MixedKrylovSolver {
   Eigen::VectorXd dp_ds_, dtheta_ds_, total_, deflection_;
   // The preconditioner: B (2n x 2n, sparse) bordered by the h0 column and
   // the load row under load control.
-  std::vector<Eigen::Triplet<double>> triplets_;
-  Eigen::SparseMatrix<double> sparse_;
-  Eigen::SparseLU<Eigen::SparseMatrix<double>> lu_;
-  bool analysed_ = false;
+  CsrMatrix matrix_;
+  std::vector<std::pair<int, double>> row_scratch_;
+  std::unique_ptr<FilmPreconditioner> preconditioner_;
+  LaggedPreconditioner lagged_;
   Eigen::VectorXd load_row_, border_column_, border_solved_, head_in_, head_out_;
   double border_pivot_ = 0.0;
   RestartedGmres gmres_;

@@ -20,10 +20,10 @@ void RestartedGmres::resize(Eigen::Index size, int restart) {
 }
 
 int RestartedGmres::solve(const Apply& apply, const Apply& precondition, const Eigen::VectorXd& residual,
-                          double tolerance, int max_iterations, Eigen::VectorXd& x) {
+                          double tolerance, int max_iterations, Eigen::VectorXd& x, bool warm) {
   int iterations = 0;
-  x.setZero();
   const double b_norm = residual.norm();
+  if (!warm || b_norm == 0.0 || x.size() != residual.size() || !x.allFinite()) x.setZero(residual.size());
   if (b_norm == 0.0) return 0;
   while (iterations < max_iterations) {
     apply(x, work_);

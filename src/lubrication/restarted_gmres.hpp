@@ -27,14 +27,16 @@ class RestartedGmres {
   // vectors (made once; solve allocates nothing).
   void resize(Eigen::Index size, int restart);
 
-  // Solves A x = -residual (the Newton step of `residual`) from x = 0, with
+  // Solves A x = -residual (the Newton step of `residual`) from x = 0 (or,
+  // with `warm`, from the x given: a branch pass's step from the last
+  // pass's, which differs from it in a few rows), with
   // A M^-1 y = -residual, x = M^-1 y, until GMRES's own estimate of
   // ||A x + residual|| (the Givens-rotated least-squares residual, no product
   // needed) is at most tolerance ||residual||, or `max_iterations` products
   // have been taken, or x stops being finite. Returns the products taken; the
   // caller measures the true residual.
   int solve(const Apply& apply, const Apply& precondition, const Eigen::VectorXd& residual, double tolerance,
-            int max_iterations, Eigen::VectorXd& x);
+            int max_iterations, Eigen::VectorXd& x, bool warm = false);
 
  private:
   int restart_ = 0;
