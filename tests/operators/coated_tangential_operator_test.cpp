@@ -23,7 +23,7 @@ namespace halfspace {
 namespace {
 
 const ElasticBody kSteel{2.1e11, 0.3};
-const ElasticBody kPolymer{7e10, 0.4};  // a softer layer
+const ElasticBody kPolymer{7e10, 0.4};   // a softer layer
 const ElasticBody kCeramic{4e11, 0.22};  // a stiffer one (E1*/E2* < 2: split height t)
 
 // The four products of the operator on one set of fields.
@@ -87,8 +87,7 @@ double periodic_against_free(const ElasticPair& pair, const ElasticPair& layer, 
   const auto centre_free = static_cast<Eigen::Index>((n_free / 2) * n_free + n_free / 2);
   const auto centre_periodic = static_cast<Eigen::Index>((n_periodic / 2) * n_periodic + n_periodic / 2);
   double worst = 0.0;
-  const Eigen::ArrayXd Products::* fields[] = {&Products::ux, &Products::uy, &Products::vx, &Products::vy,
-                                               &Products::w};
+  const Eigen::ArrayXd Products::*fields[] = {&Products::ux, &Products::uy, &Products::vx, &Products::vy, &Products::w};
   for (const auto field : fields) {
     const Eigen::ArrayXd u = a.*field - a0.*field;
     const Eigen::ArrayXd v = b.*field - b0.*field;
@@ -135,8 +134,7 @@ double free_difference(const Grid& grid, const ElasticPair& a, const ElasticPair
   const Products u = products(grid, a, f.tx, f.ty, f.p);
   const Products v = products(grid, b, f.tx, f.ty, f.p);
   double worst = 0.0;
-  const Eigen::ArrayXd Products::* fields[] = {&Products::ux, &Products::uy, &Products::vx, &Products::vy,
-                                               &Products::w};
+  const Eigen::ArrayXd Products::*fields[] = {&Products::ux, &Products::uy, &Products::vx, &Products::vy, &Products::w};
   for (const auto field : fields) {
     worst = std::max(worst, ((u.*field) - (v.*field)).abs().maxCoeff() / (v.*field).abs().maxCoeff());
   }
@@ -177,8 +175,8 @@ TEST(CoatedTangentialOperator, SmoothedRectanglesAreTheirKernelsIntegrals) {
   const double directional = 1e-11;
   const double d = 2e-11;
   for (const double height : {0.3e-6, 2e-6}) {
-    for (const auto& [x, y] : {std::pair{0.0, 0.0}, std::pair{0.4e-6, -0.7e-6}, std::pair{2.5e-6, 1e-6},
-                               std::pair{-30e-6, 12e-6}}) {
+    for (const auto& [x, y] :
+         {std::pair{0.0, 0.0}, std::pair{0.4e-6, -0.7e-6}, std::pair{2.5e-6, 1e-6}, std::pair{-30e-6, 12e-6}}) {
       const kernels::TangentialCoefficients c =
           kernels::cerruti_rectangle_displacement(x, y, a, b, shear, directional, height);
       const kernels::CouplingCoefficients k = kernels::coupling_rectangle_displacement(x, y, a, b, d, height);

@@ -111,35 +111,44 @@ TEST(LayeredSubsurfaceShearStressTest, PeriodicFourierModesMatchThePerModeSoluti
   }
 }
 
+// A partial-slip-like shear beside a Hertz pressure of radius a: mu p along
+// x less a concentric part, and a smaller one along y.
+SurfaceTractions partial_slip(const Grid& grid, double a, double p0, std::vector<double>& pressure,
+                              std::vector<double>& shear_x, std::vector<double>& shear_y) {
+  pressure = hertz_pressure(grid, a, p0);
+  const std::vector<double> inner = hertz_pressure(grid, 0.5 * a, 0.5 * p0);
+  shear_x.resize(grid.size());
+  shear_y.resize(grid.size());
+  for (std::size_t k = 0; k < grid.size(); ++k) {
+    shear_x[k] = 0.3 * (pressure[k] - inner[k]);
+    shear_y[k] = -0.1 * pressure[k];
+  }
+  return {pressure, shear_x, shear_y};
+}
+
+// Periodic grids: the same multipliers up to round-off
+// (layered_fourier_shear_stress_test) through the same transforms. Free
+// grids: Cerruti's rectangle plus each shear's layered remainder, here the
+// difference of equal multipliers. Either way a few eps of the peak pressure.
 TEST(LayeredSubsurfaceShearStressTest, LayerEqualToSubstrateGivesCerrutisStresses) {
-  // The same multipliers up to round-off (layered_fourier_shear_stress_test),
-  // through the same transforms: a few eps of the peak pressure.
   constexpr double kRoundoff = 1e-12;
   const double p0 = 1e9;
-  for (const bool line : {false, true}) {
-    const Grid grid =
-        line ? Grid::line(96, 0.5e-6, Boundary::periodic) : Grid::plane(48, 40, 1e-6, 1e-6, Boundary::periodic);
-    const std::vector<double> pressure = hertz_pressure(grid, 10e-6, p0);
-    // A partial-slip-like shear: mu p along x, less a concentric part, and
-    // a smaller one along y.
-    const std::vector<double> inner = hertz_pressure(grid, 5e-6, 0.5 * p0);
-    std::vector<double> shear_x(grid.size());
-    std::vector<double> shear_y(grid.size());
-    for (std::size_t k = 0; k < grid.size(); ++k) {
-      shear_x[k] = 0.3 * (pressure[k] - inner[k]);
-      shear_y[k] = -0.1 * pressure[k];
+  for (const Boundary boundary : {Boundary::periodic, Boundary::free}) {
+    for (const bool line : {false, true}) {
+      const Grid grid = line ? Grid::line(96, 0.5e-6, boundary) : Grid::plane(48, 48, 1e-6, 1e-6, boundary);
+      std::vector<double> pressure, shear_x, shear_y;
+      const SurfaceTractions tractions = partial_slip(grid, 10e-6, p0, pressure, shear_x, shear_y);
+      const std::vector<double> depths = {1e-6, 4.9e-6, 5e-6, 5.1e-6, 12e-6};
+      const double nu = 0.28;
+      const LayeredMaterial same{5e-6, ElasticBody{210e9, nu}, ElasticBody{210e9, nu}};
+      const StressVolume coated = compute_stress_volume(grid, tractions, depths, same);
+      const StressVolume homogeneous = compute_stress_volume(grid, tractions, depths, nu);
+      const double difference = largest_difference(coated, homogeneous);
+      std::printf("coated (layer = substrate) vs homogeneous under shear, %s %s: %.2e of p0\n",
+                  std::string(to_string(boundary)).c_str(), line ? "1D" : "2D", difference / p0);
+      EXPECT_LT(difference, kRoundoff * p0);
+      EXPECT_EQ(coated.in_layer, (std::vector<bool>{true, true, true, false, false}));
     }
-    const std::vector<double> depths = {1e-6, 4.9e-6, 5e-6, 5.1e-6, 12e-6};
-    const double nu = 0.28;
-    const LayeredMaterial same{5e-6, ElasticBody{210e9, nu}, ElasticBody{210e9, nu}};
-    const SurfaceTractions tractions{pressure, shear_x, shear_y};
-    const StressVolume coated = compute_stress_volume(grid, tractions, depths, same);
-    const StressVolume homogeneous = compute_stress_volume(grid, tractions, depths, nu);
-    const double difference = largest_difference(coated, homogeneous);
-    std::printf("coated (layer = substrate) vs homogeneous under shear, %s: %.2e of p0\n", line ? "1D" : "2D",
-                difference / p0);
-    EXPECT_LT(difference, kRoundoff * p0);
-    EXPECT_EQ(coated.in_layer, (std::vector<bool>{true, true, true, false, false}));
   }
 }
 
@@ -163,43 +172,6 @@ TEST(LayeredSubsurfaceShearStressTest, ShearChangesTheCoatedFieldAndBothBodiesDi
   EXPECT_GT(largest_difference(coated, pressure_only), 0.05 * p0);
   EXPECT_GT(largest_difference(coated, layer), 1e-3 * p0);
   EXPECT_GT(largest_difference(coated, substrate), 1e-3 * p0);
-}
-
-// A partial-slip-like shear beside a Hertz pressure of radius a: mu p along
-// x less a concentric part, and a smaller one along y.
-SurfaceTractions partial_slip(const Grid& grid, double a, double p0, std::vector<double>& pressure,
-                              std::vector<double>& shear_x, std::vector<double>& shear_y) {
-  pressure = hertz_pressure(grid, a, p0);
-  const std::vector<double> inner = hertz_pressure(grid, 0.5 * a, 0.5 * p0);
-  shear_x.resize(grid.size());
-  shear_y.resize(grid.size());
-  for (std::size_t k = 0; k < grid.size(); ++k) {
-    shear_x[k] = 0.3 * (pressure[k] - inner[k]);
-    shear_y[k] = -0.1 * pressure[k];
-  }
-  return {pressure, shear_x, shear_y};
-}
-
-// Free grids: Cerruti's rectangle plus each shear's layered remainder. A
-// layer of the substrate's material makes the remainder the difference of
-// equal multipliers: the homogeneous free field to round-off.
-TEST(LayeredSubsurfaceShearStressTest, FreeLayerEqualToSubstrateGivesTheHomogeneousFreeStresses) {
-  constexpr double kRoundoff = 1e-12;
-  const double p0 = 1e9;
-  for (const bool line : {false, true}) {
-    const Grid grid =
-        line ? Grid::line(96, 0.5e-6, Boundary::free) : Grid::plane(40, 32, 1e-6, 1.25e-6, Boundary::free);
-    std::vector<double> pressure, shear_x, shear_y;
-    const SurfaceTractions tractions = partial_slip(grid, 10e-6, p0, pressure, shear_x, shear_y);
-    const std::vector<double> depths = {0.5e-6, 2e-6, 4e-6, 4.1e-6, 9e-6};
-    const double nu = 0.28;
-    const LayeredMaterial same{4e-6, ElasticBody{210e9, nu}, ElasticBody{210e9, nu}};
-    const StressVolume coated = compute_stress_volume(grid, tractions, depths, same);
-    const StressVolume homogeneous = compute_stress_volume(grid, tractions, depths, nu);
-    const double difference = largest_difference(coated, homogeneous);
-    std::printf("free, layer = substrate, under shear, %s: %.2e of p0\n", line ? "1D" : "2D", difference / p0);
-    EXPECT_LT(difference, kRoundoff * p0);
-  }
 }
 
 // The coating's effect under shear (coated minus homogeneous stresses, the
