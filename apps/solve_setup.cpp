@@ -463,7 +463,6 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
   if (!stress.depths.empty()) {
     in_context(options.describe("stress-depths"), [&] {
       if (coating) stress::require_coated_stress_grid(surface.grid, *coating);
-      if (coating && friction) stress::require_coated_shear_stress_grid(surface.grid, *coating);
       stress::check_depths(surface.grid, stress.depths);
     });
   }

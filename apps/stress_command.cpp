@@ -82,7 +82,6 @@ int stresses_at(StressPlace& place, const StressOptions& o, const std::vector<do
   if (coating) {
     try {
       stress::require_coated_stress_grid(grid, *coating);
-      if (input.has_shear()) stress::require_coated_shear_stress_grid(grid, *coating);
     } catch (const InputError& error) {
       throw InputError(fmt::format("{} is a coated half-space's result: {}", o.result, error.what()));
     }

@@ -182,8 +182,9 @@ def solve(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
         displacement of body 1 against body 2), or sliding ``(X, Y)`` (gross
         sliding along that direction: every contact cell at mu p). Needs E1,
         nu1, E2, nu2 (E2 may be ``inf``, a rigid body 2; dissimilar bodies
-        are solved coupled) or a coating (periodic boundary only; coupled
-        unless coupling is off); no adhesion. The result then has the
+        are solved coupled) or a coating (periodic, or free 2D grids at
+        least 8 split heights across; coupled unless coupling is off); no
+        adhesion. The result then has the
         fields ``shear_x``, ``shear_y`` (Pa), ``stick`` (bool), ``slip_x``,
         ``slip_y`` (m), ``tangential_displacement_x``, ``_y`` (m) as views,
         and ``Result.friction`` the step's record; tangential_tol and

@@ -23,10 +23,6 @@
 namespace halfspace::kernels {
 namespace {
 
-double sinc(double x) {
-  return x == 0.0 ? 1.0 : std::sin(x) / x;
-}
-
 // Antiderivative in X and Y of 1/sqrt(X^2 + Y^2 + s^2), s > 0: the potential of
 // a uniform rectangle at height s. Y + rho is formed without cancellation for
 // Y < 0.
@@ -178,37 +174,18 @@ double LayeredKernel::near_strip_displacement(double x, double h) const {
 }
 
 double LayeredKernel::remainder_strip_spectrum(double qx, double dx) const {
-  const double period = 2.0 * std::numbers::pi / dx;
-  const double q_negligible = 40.0 / material_.thickness;  // as remainder_cell_spectrum
   double sum = 0.0;
-  for (int m = -kAliasImages; m <= kAliasImages; ++m) {
-    const double kx = qx + m * period;
-    if (std::abs(kx) > q_negligible) continue;
-    sum += remainder(std::abs(kx)) * sinc(0.5 * kx * dx);
-  }
+  for_each_alias_image(qx, 0.0, dx, dx, true, kAliasImages, 40.0 / material_.thickness,
+                       [&](double kx, double /*ky*/, double shape) { sum += remainder(std::abs(kx)) * shape; });
   return sum;
 }
 
 double LayeredKernel::remainder_cell_spectrum(double qx, double qy, double dx, double dy) const {
-  // Collocation at cell centres of a piecewise-constant pressure: the cell's
-  // transform is dx dy sinc(qx dx/2) sinc(qy dy/2); on grid points the alias
-  // images e^{i 2 pi m x/dx} are 1, so they add up in one DFT bin.
-  const double period_x = 2.0 * std::numbers::pi / dx;
-  const double period_y = 2.0 * std::numbers::pi / dy;
-  // Beyond q t = 40 the remainder is below e^-40 of its scale: skipped.
-  const double q_negligible = 40.0 / material_.thickness;
+  // Collocation at cell centres of a piecewise-constant pressure; beyond
+  // q t = 40 the remainder is below e^-40 of its scale: skipped.
   double sum = 0.0;
-  for (int my = -kAliasImages; my <= kAliasImages; ++my) {
-    const double ky = qy + my * period_y;
-    if (std::abs(ky) > q_negligible) continue;
-    const double shape_y = sinc(0.5 * ky * dy);
-    for (int mx = -kAliasImages; mx <= kAliasImages; ++mx) {
-      const double kx = qx + mx * period_x;
-      const double q = std::hypot(kx, ky);
-      if (q > q_negligible) continue;
-      sum += remainder(q) * sinc(0.5 * kx * dx) * shape_y;
-    }
-  }
+  for_each_alias_image(qx, qy, dx, dy, false, kAliasImages, 40.0 / material_.thickness,
+                       [&](double kx, double ky, double shape) { sum += remainder(std::hypot(kx, ky)) * shape; });
   return sum;
 }
 

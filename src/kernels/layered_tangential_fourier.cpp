@@ -22,6 +22,7 @@
 #include <cmath>
 
 #include "halfspace/kernels/coupling_fourier.hpp"
+#include "halfspace/kernels/layered_fourier.hpp"
 #include "halfspace/kernels/tangential_fourier.hpp"
 
 namespace halfspace::kernels {
@@ -30,6 +31,61 @@ LayeredTangentialKernel::LayeredTangentialKernel(const LayeredMaterial& material
     : modes_(material), antiplane_(material) {
   const ElasticBody& layer = material.layer;
   layer_shear_modulus_ = layer.youngs_modulus / (2.0 * (1.0 + layer.poissons_ratio));
+  auto factors = [](const ElasticBody& body) {
+    const double compliance = 2.0 * (1.0 + body.poissons_ratio) / body.youngs_modulus;  // 1/G
+    return Factors{compliance, body.poissons_ratio * compliance, (1.0 - 2.0 * body.poissons_ratio) * compliance};
+  };
+  layer_ = factors(layer);
+  substrate_ = factors(material.substrate);
+}
+
+// The closed-form part's symbols (cerruti_rectangle.hpp, coupling_rectangle.hpp)
+// in the same factors: the layer's plus (substrate's - layer's) exp(-q h),
+// the directional one with (1 + q h) exp(-q h). Each difference vanishes
+// like q at q = 0 (the substrate's limit) except the directional part of
+// the tangential one, whose O(q) term has a direction (q_a q_b/q^2).
+LayeredTangentialKernel::Factors LayeredTangentialKernel::remainder(double q, double height) const {
+  const LayeredModeCompliance c = mode_compliance(q);
+  const double e = std::exp(-q * height);
+  return {c.transverse - layer_.shear - (substrate_.shear - layer_.shear) * e,
+          (c.transverse - c.longitudinal) - layer_.directional -
+              (substrate_.directional - layer_.directional) * (1.0 + q * height) * e,
+          c.coupling - layer_.coupling - (substrate_.coupling - layer_.coupling) * e};
+}
+
+void LayeredTangentialKernel::remainder_cell_spectrum(double qx, double qy, double dx, double dy, double height,
+                                                      TangentialCoefficients& tangential,
+                                                      CouplingCoefficients& coupling) const {
+  const double t = material().thickness;
+  tangential = {};
+  coupling = {};
+  auto add = [&](double kx, double ky, double shape) {
+    const double q = std::hypot(kx, ky);
+    TangentialCoefficients s;
+    CouplingCoefficients odd;
+    if (q == 0.0) {
+      // Factors/q tend to finite limits (Richardson extrapolation of the
+      // difference quotient, O(h^2) = 1e-8 relative); the mean over the
+      // directions of q_a q_b/q^2 is delta_ab/2, of the odd coupling 0.
+      constexpr double h = 1e-4;
+      const Factors one = remainder(h / t, height);
+      const Factors two = remainder(2.0 * h / t, height);
+      const double shear = (2.0 * one.shear - 0.5 * two.shear) * t / h;
+      const double directional = (2.0 * one.directional - 0.5 * two.directional) * t / h;
+      s = {shear - 0.5 * directional, shear - 0.5 * directional, 0.0};
+    } else {
+      const Factors f = remainder(q, height);
+      s = tangential_spectrum(kx, ky, f.shear, f.directional);
+      odd = coupling_spectrum(kx, ky, f.coupling);
+    }
+    tangential.xx += s.xx * shape;
+    tangential.yy += s.yy * shape;
+    tangential.xy += s.xy * shape;
+    coupling.x += odd.x * shape;
+    coupling.y += odd.y * shape;
+  };
+  // Beyond q t = 40 the remainder is below e^-40 of its scale (as the normal one's).
+  for_each_alias_image(qx, qy, dx, dy, false, LayeredKernel::kAliasImages, 40.0 / t, add);
 }
 
 LayeredModeCompliance LayeredTangentialKernel::mode_compliance(double q) const {

@@ -4,7 +4,12 @@
 // and both transformed back (four transforms, twice a normal product).
 // Periodic grids use the grid's own transform; free grids the pruned padded
 // one (DC-FFT, Liu, Wang & Liu 2000), with the coefficients laid out on the
-// (2ny, 2nx) wrap-around grid as FftInfluenceOperator lays out Love's.
+// (2ny, 2nx) wrap-around grid as FftInfluenceOperator lays out Love's. A
+// coated body on a free grid splits its symbols as the normal coated kernel
+// does (NormalKernel): closed-form cell coefficients (the layer's, plus the
+// substrate's less the layer's smoothed to the split height) and the rest
+// added to each bin of the padded spectrum (docs/theory.md, "Tangential
+// compliance of a coated half-space").
 #include "halfspace/operators/tangential_operator.hpp"
 
 #include <fmt/format.h>
@@ -15,6 +20,8 @@
 #include <complex>
 #include <cstddef>
 #include <functional>
+#include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -25,6 +32,8 @@
 #include "halfspace/kernels/cerruti_rectangle.hpp"
 #include "halfspace/kernels/coupling_rectangle.hpp"
 #include "halfspace/kernels/coupling_strip.hpp"
+#include "halfspace/kernels/layered_tangential_fourier.hpp"
+#include "halfspace/kernels/normal_kernel.hpp"
 #include "halfspace/kernels/periodic_fourier.hpp"
 #include "halfspace/kernels/tangential_strip.hpp"
 #include "halfspace/linalg/parallel.hpp"
@@ -119,18 +128,31 @@ std::unique_ptr<TangentialTransforms> make_serial_transforms(const Grid& grid, F
   return std::make_unique<SerialTangentialTransforms>(grid, planning);
 }
 
+std::string coated_free_grid_refusal(const Grid& grid, const ElasticPair& pair) {
+  if (!pair.coating() || grid.periodic()) return {};
+  if (grid.dimension() == 1) {
+    return fmt::format(
+        "a coated half-space's tangential compliance on the free 1D grid ({}) is not built "
+        "(use --boundary periodic)",
+        grid.shape_string());
+  }
+  const LayeredMaterial& coating = *pair.coating();
+  if (!kernels::NormalKernel(grid, coating).spectral_remainder()) {
+    return fmt::format(
+        "a coated half-space's tangential compliance on the free {} grid needs a layer thin against the "
+        "domain (split height {:.6g} m <= 1/8 of the shorter side, {:.6g} m; layer t = {:.6g} m): its "
+        "remainder is built on the padded spectrum (use --boundary periodic, or a larger domain)",
+        grid.shape_string(), kernels::LayeredKernel(coating).split_height(),
+        std::min(static_cast<double>(grid.nx()) * grid.dx(), static_cast<double>(grid.ny()) * grid.dy()),
+        coating.thickness);
+  }
+  return {};
+}
+
 namespace {
 
-// A coated body's compliance is known per Fourier mode only: free grids
-// would need its cell coefficients in real space (Cerruti's rectangle plus a
-// remainder, as the normal kernel has), which are not built.
 void check_body(const Grid& grid, const ElasticPair& pair) {
-  if (pair.coating() && !grid.periodic()) {
-    throw InputError(
-        fmt::format("a coated half-space's tangential compliance on the {} grid ({}) is not supported: "
-                    "it is built per Fourier mode, for periodic grids only",
-                    grid.shape_string(), to_string(grid.boundary())));
-  }
+  if (const std::string refusal = coated_free_grid_refusal(grid, pair); !refusal.empty()) throw InputError(refusal);
 }
 
 }  // namespace
@@ -152,8 +174,13 @@ struct TangentialOperator::Impl {
     if (g.periodic()) {
       init_periodic();
     } else {
+      if (const auto& coating = p.coating()) {
+        coated = ElasticPair::on_rigid(coating->substrate);
+        height = kernels::LayeredKernel(*coating).split_height();
+      }
       init_free();
       if (coupled) init_free_coupling();
+      if (coated) add_coated_remainder();
     }
     const double count = transforms->transform_size();
     for (std::size_t k = 0; k < size; ++k) {
@@ -227,8 +254,14 @@ struct TangentialOperator::Impl {
     auto coefficient = [&](long di, long dj) {
       const double x = static_cast<double>(di) * grid.dx();
       const double y = static_cast<double>(dj) * grid.dy();
-      return line ? kernels::tangential_strip_displacement(x, grid.dx(), e_star, shear)
-                  : kernels::cerruti_rectangle_displacement(x, y, a, b, shear, directional);
+      if (line) return kernels::tangential_strip_displacement(x, grid.dx(), e_star, shear);
+      kernels::TangentialCoefficients k = kernels::cerruti_rectangle_displacement(x, y, a, b, shear, directional);
+      if (coated) {
+        const kernels::TangentialCoefficients far = kernels::cerruti_rectangle_displacement(
+            x, y, a, b, coated->shear_compliance() - shear, coated->directional_compliance() - directional, height);
+        k = {k.xx + far.xx, k.yy + far.yy, k.xy + far.xy};
+      }
+      return k;
     };
     self = coefficient(0, 0);
     std::vector<double>* parts[3] = {&xx, &yy, &xy};
@@ -265,6 +298,7 @@ struct TangentialOperator::Impl {
     const double a = 0.5 * grid.dx();
     const double b = 0.5 * grid.dy();
     const double d = pair.coupling_compliance();
+    const double far_d = coated ? coated->coupling_compliance() - d : 0.0;
     std::vector<double>* parts[2] = {&coupling_x, &coupling_y};
     for (int part = 0; part < (line ? 1 : 2); ++part) {
       const std::span<const std::complex<double>> spectrum =
@@ -277,14 +311,54 @@ struct TangentialOperator::Impl {
             const long dj = line ? 0 : r == ny ? static_cast<long>(ny) : signed_offset(r, ny);
             const double x = static_cast<double>(di) * grid.dx();
             const double y = static_cast<double>(dj) * grid.dy();
-            const kernels::CouplingCoefficients k = line ? kernels::coupling_strip_displacement(x, grid.dx(), d)
-                                                         : kernels::coupling_rectangle_displacement(x, y, a, b, d);
-            return part == 0 ? k.x : k.y;
+            if (line) return kernels::coupling_strip_displacement(x, grid.dx(), d).x;
+            const kernels::CouplingCoefficients k = kernels::coupling_rectangle_displacement(x, y, a, b, d);
+            if (!coated) return part == 0 ? k.x : k.y;
+            const kernels::CouplingCoefficients far =
+                kernels::coupling_rectangle_displacement(x, y, a, b, far_d, height);
+            return part == 0 ? k.x + far.x : k.y + far.y;
           });
       const double inverse_n = 1.0 / transforms->transform_size();
       std::vector<double>& target = *parts[part];
       for (std::size_t k = 0; k < target.size(); ++k) target[k] = spectrum[k].imag() * inverse_n;
     }
+  }
+
+  // A coated body's remainder (LayeredTangentialKernel::
+  // remainder_cell_spectrum) added to each bin held here; then K_ii, the
+  // inverse DFT at offset 0 of the whole padded symbol (columns other than
+  // 0 and nx stand for two modes; xy's vanishes).
+  void add_coated_remainder() {
+    const kernels::LayeredTangentialKernel layered(*pair.coating());
+    const std::size_t nx = grid.nx();
+    const std::size_t ny = grid.ny();
+    const double inverse_n = 1.0 / transforms->transform_size();
+    linalg::for_each_row(spectrum_rows, spectrum_cols, [&](std::size_t block) {
+      for (std::size_t k = block * spectrum_cols; k < (block + 1) * spectrum_cols; ++k) {
+        const auto [r, c] = transforms->mode(k);
+        kernels::TangentialCoefficients s;
+        kernels::CouplingCoefficients odd;
+        layered.remainder_cell_spectrum(kernels::dft_wavenumber(c, 2 * nx, grid.dx()),
+                                        kernels::dft_wavenumber(r, 2 * ny, grid.dy()), grid.dx(), grid.dy(), height, s,
+                                        odd);
+        // The odd parts vanish on their Nyquist column or row, as the DFT
+        // of an odd sequence does there.
+        xx[k] += s.xx * inverse_n;
+        yy[k] += s.yy * inverse_n;
+        if (c != nx && r != ny) xy[k] += s.xy * inverse_n;
+        if (coupled && c != nx) coupling_x[k] += odd.x * inverse_n;
+        if (coupled && r != ny) coupling_y[k] += odd.y * inverse_n;
+      }
+    });
+    double diagonal[2] = {0.0, 0.0};
+    for (std::size_t k = 0; k < xx.size(); ++k) {
+      const std::size_t c = transforms->mode(k).col;
+      const double weight = c == 0 || c == nx ? 1.0 : 2.0;
+      diagonal[0] += weight * xx[k];
+      diagonal[1] += weight * yy[k];
+    }
+    transforms->communicator().sum(diagonal);
+    self = {diagonal[0], diagonal[1], 0.0};
   }
 
   std::span<std::complex<double>> forward(int k, std::span<const double> values) {
@@ -304,6 +378,11 @@ struct TangentialOperator::Impl {
   // The coupling's imaginary symbol c (coupling_fourier.hpp), empty unless coupled.
   std::vector<double> coupling_x, coupling_y;
   kernels::TangentialCoefficients self;
+  // Free grids, coated: the substrate against the rigid body, whose factors
+  // less the layer's (the pair's) weight the smoothed closed forms at the
+  // split height (m).
+  std::optional<ElasticPair> coated;
+  double height = 0.0;
   double largest = 0.0;         // largest_eigenvalue_bound()
   double largest_stored = 0.0;  // the same in the stored symbol's scale
   double inverse_scale = 0.0;   // 1/count^2: the inverse symbol's scale

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <string>
 
+#include "halfspace/operators/tangential_operator.hpp"
 #include "halfspace/solvers/adhesion_law.hpp"
 
 namespace halfspace::solvers {
@@ -118,12 +119,8 @@ void FrictionOptions::validate(const Grid& grid, const SolverOptions& normal, co
 }
 
 void FrictionOptions::check_body(const Grid& grid, const ElasticPair& pair) {
-  if (pair.coating() && !grid.periodic()) {
-    throw SolverOptionError("coating", "given",
-                            fmt::format("cannot be combined with friction on the {} grid ({}): a coated half-space's "
-                                        "tangential compliance is built per Fourier mode, for periodic grids only "
-                                        "(use a periodic boundary)",
-                                        grid.shape_string(), to_string(grid.boundary())));
+  if (const std::string refusal = operators::coated_free_grid_refusal(grid, pair); !refusal.empty()) {
+    throw SolverOptionError("coating", "given", fmt::format("cannot be combined with friction here: {}", refusal));
   }
 }
 

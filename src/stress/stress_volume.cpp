@@ -206,10 +206,11 @@ double stress_memory_estimate(const Grid& grid, bool coated, bool shear) {
   // grid the remainder's six parts on the padded half spectrum (12).
   // Shear: two more spectra (periodic: about 1 double a cell each; free: the
   // padded one's 4) and, on free grids, two more sets of six quadrants;
-  // below a coating (periodic only) each half-spectrum mode's shear
-  // solution and its two profiles (15 doubles, 7.5 a cell).
-  const double coated_shear = coated && grid.periodic() ? 7.5 : 0.0;
-  const double shear_workspace = shear ? (grid.periodic() ? 2.0 + coated_shear : 20.0) : 0.0;
+  // below a coating each half-spectrum mode's shear solution and its two
+  // profiles (periodic: 15 doubles, 7.5 a cell) or the remainder's six
+  // parts per shear (free: 24 a cell).
+  const double coated_shear = coated ? (grid.periodic() ? 7.5 : 24.0) : 0.0;
+  const double shear_workspace = shear ? (grid.periodic() ? 2.0 : 20.0) + coated_shear : 0.0;
   const double workspace =
       ((grid.periodic() ? (coated ? 11.5 : 6.0) : (coated ? 38.0 : 26.0)) + shear_workspace) * 8.0 * cells;
   // The pressure itself and one depth's nine fields.

@@ -29,9 +29,9 @@
 // rectangle_shear_stress.hpp convolved like the pressure's, each term summed
 // in the spectrum before the one inverse transform per component. Their
 // Nyquist rows and columns are zeroed by their own parities. Coated bodies
-// (periodic grids) take the layered shear multipliers of
-// layered_fourier_shear_stress.hpp (LayeredShearModes); free coated grids
-// take no shear (the coating's cell coefficients under shear are not built).
+// take the layered shear multipliers of layered_fourier_shear_stress.hpp
+// (periodic grids: LayeredShearModes; free grids: the remainder of each
+// shear, as the pressure's, against Cerruti's rectangle).
 //
 // Free: sigma_c(i) = sum_j C_c(x_i - x_j, z) p_j with the exact cell
 // coefficients C_c of rectangle_stress.hpp, a linear convolution done on the
@@ -92,11 +92,6 @@ double component_of(const StressTensor& s, std::size_t c) {
   return 0.0;
 }
 
-// sin(x)/x, the transform of a cell (over its width) at x = q dx/2.
-double sinc(double x) {
-  return std::abs(x) < 1e-8 ? 1.0 - x * x / 6.0 : std::sin(x) / x;
-}
-
 // Signed offset (cells) of wrap-around index k on a 2n-periodic axis; the
 // middle index n only ever meets padding (any value would do) and gets 0 via
 // `valid` = false.
@@ -124,15 +119,6 @@ void require_coated_stress_grid(const Grid& grid, const LayeredMaterial& coating
         "shorter side: t = {:.6g} m, L = {:.6g} m on the free {} grid (use --boundary periodic, or a larger domain)",
         coating.thickness, side, grid.shape_string()));
   }
-}
-
-void require_coated_shear_stress_grid(const Grid& grid, const LayeredMaterial& coating) {
-  if (grid.periodic()) return;
-  throw InputError(fmt::format(
-      "subsurface stresses under shear tractions on a coated half-space (layer t = {:.6g} m, E1 = {:.6g} Pa on E2 = "
-      "{:.6g} Pa) are computed on periodic grids only, not on the free {} grid: the coating's stress coefficients "
-      "of a sheared cell are not built (use --boundary periodic, or the stresses of the pressure alone)",
-      coating.thickness, coating.layer.youngs_modulus, coating.substrate.youngs_modulus, grid.shape_string()));
 }
 
 double checked_depth(double depth) {
@@ -191,8 +177,8 @@ struct SubsurfaceStress::Impl {
       // spectrum is the samples' DFT times the cell's transform.
       cell_x.resize(kx.size());
       cell_y.resize(rows);
-      for (std::size_t c = 0; c < kx.size(); ++c) cell_x[c] = sinc(0.5 * kx[c] * grid.dx());
-      for (std::size_t r = 0; r < rows; ++r) cell_y[r] = line ? 1.0 : sinc(0.5 * ky[r] * grid.dy());
+      for (std::size_t c = 0; c < kx.size(); ++c) cell_x[c] = kernels::cell_sinc(0.5 * kx[c] * grid.dx());
+      for (std::size_t r = 0; r < rows; ++r) cell_y[r] = line ? 1.0 : kernels::cell_sinc(0.5 * ky[r] * grid.dy());
       if (layered) solve_modes();
     } else {
       summed.resize(held);
@@ -200,7 +186,7 @@ struct SubsurfaceStress::Impl {
       choose_quadrant_rows(line);
       for (auto& q : quadrants[0]) q.resize(quadrant_rows.size() * quadrant_cols);
       if (layered) {
-        for (auto& part : remainder) part.resize(held);
+        for (auto& part : remainder[0]) part.resize(held);
       }
     }
   }
@@ -261,9 +247,6 @@ struct SubsurfaceStress::Impl {
     check_field(tractions.pressure, "pressure");
     if (shear[0]) check_field(tractions.shear_x, "shear traction along x");
     if (shear[1]) check_field(tractions.shear_y, "shear traction along y");
-    if (layered && (shear[0] || shear[1]) && !grid.periodic()) {
-      require_coated_shear_stress_grid(grid, layered->material());
-    }
   }
 
   void set_tractions(const SurfaceTractions& tractions) {
@@ -296,6 +279,10 @@ struct SubsurfaceStress::Impl {
     spectra[t].resize(spectra[0].size());
     if (!grid.periodic()) {
       for (auto& q : quadrants[t]) q.resize(quadrant_rows.size() * quadrant_cols);
+      if (layered) {
+        if (!antiplane) antiplane.emplace(layered->material());
+        for (auto& part : remainder[t]) part.resize(held);
+      }
     }
   }
 
@@ -389,13 +376,17 @@ struct SubsurfaceStress::Impl {
     }
   }
 
-  // The remainder of a coated body at depth z, per bin of the padded grid's
-  // half spectrum: sum over the alias images K of D(k + K) times the cell's
-  // transform over its area, sinc(Kx dx/2) sinc(Ky dy/2) (the DFT of the
-  // remainder's cell coefficients, as LayeredKernel::remainder_cell_spectrum
-  // for the displacement). Odd components (xz, yz: imaginary multipliers)
-  // keep their imaginary part; xy, xz on the Nyquist column and xy, yz on the
-  // Nyquist row are 0, as the DFT of an odd sequence is there.
+  // The remainder of a coated body at depth z, per traction set and bin of
+  // the padded grid's half spectrum: sum over the alias images K of D(k +
+  // K) times the cell's transform over its area, sinc(Kx dx/2) sinc(Ky
+  // dy/2) (the DFT of the remainder's cell coefficients, as
+  // LayeredKernel::remainder_cell_spectrum for the displacement). D is the
+  // layered multiplier less the homogeneous one of the depth's body: the
+  // pressure's (layered_fourier_stress.hpp against fourier_stress.hpp) or a
+  // shear's (layered_fourier_shear_stress.hpp against
+  // fourier_shear_stress.hpp). A multiplier odd in exactly one axis is
+  // imaginary: its imaginary part is kept; the components odd in x (in y)
+  // are 0 on the Nyquist column (row), as the DFT of an odd sequence is.
   void compute_remainder(double z) {
     const Body body = layered->body_at(z);
     const double body_nu = poisson_ratio_at(z);
@@ -405,70 +396,85 @@ struct SubsurfaceStress::Impl {
     // below 1e-16 of its scale.
     const double decay_length = body == Body::layer ? 2.0 * t - z : z;
     const double q_negligible = 45.0 / decay_length;
-    const auto difference = [&](double kx, double ky, std::array<double, kComponentCount>& out) {
+    using Parts = std::array<std::array<double, kComponentCount>, kTractionCount>;
+    const auto imaginary = [](Component kind, Traction traction) {
+      return odd_in_x(kind, traction) != odd_in_y(kind, traction);
+    };
+    const auto difference = [&](double kx, double ky, Parts& out) {
       const double q = std::hypot(kx, ky);
       const AiryProfile profile = layered->profile(layered->solve(q), z, body);
+      const bool shear = active[1] || active[2];
+      const AiryProfile longitudinal = shear ? layered->profile(layered->solve_shear(q), z, body) : AiryProfile{};
+      const AntiplaneProfile transverse = shear ? antiplane->profile(q, z, body) : AntiplaneProfile{};
       const double decay = std::exp(-q * z);
-      for (std::size_t c = 0; c < kComponentCount; ++c) {
-        const auto kind = static_cast<Component>(c);
-        const std::complex<double> d = layered_stress_component(kind, kx, ky, profile, body_nu) -
-                                       fourier_stress_component(kind, kx, ky, z, decay, body_nu);
-        out[c] = kind == Component::xz || kind == Component::yz ? d.imag() : d.real();
+      for (std::size_t tr = 0; tr < kTractionCount; ++tr) {
+        if (!active[tr]) continue;
+        const auto traction = static_cast<Traction>(tr);
+        for (std::size_t c = 0; c < kComponentCount; ++c) {
+          const auto kind = static_cast<Component>(c);
+          const std::complex<double> layered_part =
+              traction == Traction::pressure
+                  ? layered_stress_component(kind, kx, ky, profile, body_nu)
+                  : layered_shear_stress_component(kind, traction, kx, ky, longitudinal, transverse, body_nu);
+          const std::complex<double> d =
+              layered_part - fourier_traction_stress_component(kind, traction, kx, ky, z, decay, body_nu);
+          out[tr][c] = imaginary(kind, traction) ? d.imag() : d.real();
+        }
       }
     };
-    // The q = 0 image: D's in-plane components tend to direction-dependent
-    // limits A + B cos(2 phi); the bin takes their angular mean A (the
-    // cos(2 phi) part is a kernel whose integral over the period vanishes).
-    // A line (plane strain) has one direction, x, and its limit.
+    // The q = 0 image: D's components even in both axes tend to
+    // direction-dependent limits A + B cos(2 phi); the bin takes their
+    // angular mean A (the cos(2 phi) part is a kernel whose integral over the
+    // period vanishes); the others' mean is 0. A line (plane strain) has one
+    // direction, x, and its limit.
     const bool line = grid.dimension() == 1;
-    std::array<double, kComponentCount> at_zero{};
+    Parts at_zero{};
     {
       const double small = 1e-6 / t;
-      std::array<double, kComponentCount> along_x{};
-      std::array<double, kComponentCount> along_y{};
+      Parts along_x{};
+      Parts along_y{};
       difference(small, 0.0, along_x);
       difference(0.0, small, along_y);
-      for (const Component c : {Component::xx, Component::yy, Component::zz}) {
-        const auto k = static_cast<std::size_t>(c);
-        at_zero[k] = line ? along_x[k] : 0.5 * (along_x[k] + along_y[k]);
+      for (std::size_t tr = 0; tr < kTractionCount; ++tr) {
+        for (std::size_t k = 0; k < kComponentCount; ++k) {
+          const auto kind = static_cast<Component>(k);
+          const auto traction = static_cast<Traction>(tr);
+          if (odd_in_x(kind, traction) || (!line && odd_in_y(kind, traction))) continue;
+          at_zero[tr][k] = line ? along_x[tr][k] : 0.5 * (along_x[tr][k] + along_y[tr][k]);
+        }
       }
     }
     const std::size_t padded_rows = line ? 1 : 2 * rows;
-    const int images_y = line ? 0 : kernels::LayeredKernel::kAliasImages;
     const std::size_t padded_cols = 2 * grid.nx();
     const double dx = grid.dx();
     const double dy = grid.dy();
-    const double period_x = 2.0 * std::numbers::pi / dx;
-    const double period_y = 2.0 * std::numbers::pi / dy;
-    constexpr int kImages = kernels::LayeredKernel::kAliasImages;
     for_each_mode([&](std::size_t bin, std::size_t r, std::size_t c) {
       const double qy = line ? 0.0 : kernels::dft_wavenumber(r, padded_rows, dy);
-      std::array<double, kComponentCount> d{};
-      {
-        const double qx = kernels::dft_wavenumber(c, padded_cols, dx);
-        std::array<double, kComponentCount> sum{};
-        for (int my = -images_y; my <= images_y; ++my) {
-          const double ky = line ? 0.0 : qy + my * period_y;  // a line's dy is no spacing
-          if (std::abs(ky) > q_negligible) continue;
-          const double shape_y = line ? 1.0 : sinc(0.5 * ky * dy);
-          for (int mx = -kImages; mx <= kImages; ++mx) {
-            const double kx = qx + mx * period_x;
-            if (std::hypot(kx, ky) > q_negligible) continue;
-            if (kx == 0.0 && ky == 0.0) {
-              d = at_zero;
-            } else {
-              difference(kx, ky, d);
-            }
-            const double shape = sinc(0.5 * kx * dx) * shape_y;
-            for (std::size_t k = 0; k < kComponentCount; ++k) sum[k] += d[k] * shape;
-          }
-        }
-        const bool nyquist_col = c == grid.nx();
-        const bool nyquist_row = r == rows;
+      const double qx = kernels::dft_wavenumber(c, padded_cols, dx);
+      Parts sum{};
+      Parts d{};
+      // A line's dy is no spacing: one image row.
+      kernels::for_each_alias_image(qx, qy, dx, dy, line, kernels::LayeredKernel::kAliasImages, q_negligible,
+                                    [&](double kx, double ky, double shape) {
+                                      if (kx == 0.0 && ky == 0.0) {
+                                        d = at_zero;
+                                      } else {
+                                        difference(kx, ky, d);
+                                      }
+                                      for (std::size_t tr = 0; tr < kTractionCount; ++tr) {
+                                        for (std::size_t k = 0; k < kComponentCount; ++k)
+                                          sum[tr][k] += d[tr][k] * shape;
+                                      }
+                                    });
+      const bool nyquist_col = c == grid.nx();
+      const bool nyquist_row = r == rows;
+      for (std::size_t tr = 0; tr < kTractionCount; ++tr) {
+        if (!active[tr]) continue;
+        const auto traction = static_cast<Traction>(tr);
         for (std::size_t k = 0; k < kComponentCount; ++k) {
           const auto kind = static_cast<Component>(k);
-          const bool zero = (nyquist_col && odd_in_x(kind)) || (nyquist_row && odd_in_y(kind));
-          remainder[k][bin] = zero ? 0.0 : sum[k];
+          const bool zero = (nyquist_col && odd_in_x(kind, traction)) || (nyquist_row && odd_in_y(kind, traction));
+          remainder[tr][k][bin] = zero ? 0.0 : sum[tr][k];
         }
       }
     });
@@ -496,13 +502,14 @@ struct SubsurfaceStress::Impl {
             transform_coefficients(quadrants[t][component], odd_in_x(kind, traction), odd_in_y(kind, traction), line);
         const std::vector<std::complex<double>>& traction_spectrum = spectra[t];
         if (layered) {
-          // The remainder's multiplier (pressure only): real, or i times the
-          // stored value for the imaginary ones (xz, yz).
-          const bool imaginary = kind == Component::xz || kind == Component::yz;
-          const std::vector<double>& part = remainder[component];
+          // The remainder's multiplier: real, or i times the stored value
+          // for the imaginary ones (odd in exactly one axis).
+          const bool imaginary = odd_in_x(kind, traction) != odd_in_y(kind, traction);
+          const std::vector<double>& part = remainder[t][component];
           linalg::for_each_index(spectrum.size(), [&](std::size_t k) {
             const std::complex<double> added = imaginary ? std::complex<double>(0.0, part[k]) : part[k];
-            spectrum[k] = traction_spectrum[k] * (kernel_spectrum[k] + added) * inverse_n;
+            const std::complex<double> term = traction_spectrum[k] * (kernel_spectrum[k] + added) * inverse_n;
+            spectrum[k] = first ? term : spectrum[k] + term;
           });
         } else if (first) {
           linalg::for_each_index(spectrum.size(), [&](std::size_t k) {
@@ -596,9 +603,12 @@ struct SubsurfaceStress::Impl {
   std::size_t quadrant_cols = 0;
   // Per traction, the coefficients at non-negative offsets (shears' made when first set).
   std::array<std::array<std::vector<double>, kComponentCount>, kTractionCount> quadrants;
-  // Coated bodies (free grids): the remainder's spectrum at the current depth
-  // (real part, or imaginary for xz and yz), on the coefficients' half spectrum.
-  std::array<std::vector<double>, kComponentCount> remainder;
+  // Coated bodies (free grids): per traction (shears' made when first set),
+  // the remainder's spectrum at the current depth (real part, or imaginary
+  // for the odd multipliers), on the coefficients' half spectrum; and the
+  // antiplane problem of the shears.
+  std::array<std::array<std::vector<double>, kComponentCount>, kTractionCount> remainder;
+  std::optional<LayeredAntiplane> antiplane;
 };
 
 SubsurfaceStress::SubsurfaceStress(const Grid& grid, double nu, FftPlanning planning)

@@ -90,11 +90,17 @@ TEST(FrictionOptions, RulesOfTheSolve) {
   EXPECT_EQ(refused_option([&] { history(0.3, {TangentialLoading::force(1.0)}).validate(plane, adhesive, ten); }),
             "adhesion");
   EXPECT_EQ(refused_option([&] { history(0.3, {TangentialLoading::force(1.0)}).validate(adhesive); }), "adhesion");
-  // A coated body: periodic grids only (its compliance is known per mode).
-  const ElasticPair coated = ElasticPair::coated({1e-6, {2e11, 0.3}, {7e10, 0.33}});
+  // A coated body: refused on free grids less than 8 split heights across
+  // (its remainder goes in by DFT only there) and on free lines.
+  const ElasticPair coated = ElasticPair::coated({2e-6, {2e11, 0.3}, {7e10, 0.33}});
   const Grid free = Grid::plane(8, 8, 1e-6, 1e-6, Boundary::free);
   const Grid periodic = Grid::plane(8, 8, 1e-6, 1e-6, Boundary::periodic);
   EXPECT_EQ(refused_option([&] { FrictionOptions::check_body(free, coated); }), "coating");
+  EXPECT_EQ(refused_option([&] { FrictionOptions::check_body(Grid::line(256, 1e-6, Boundary::free), coated); }),
+            "coating");
+  EXPECT_EQ(
+      refused_option([&] { FrictionOptions::check_body(Grid::plane(64, 64, 1e-6, 1e-6, Boundary::free), coated); }),
+      "accepted");
   EXPECT_EQ(refused_option([&] { FrictionOptions::check_body(periodic, coated); }), "accepted");
   EXPECT_EQ(refused_option([&] { FrictionOptions::check_body(free, ElasticPair::on_rigid({2e11, 0.3})); }), "accepted");
   EXPECT_EQ(refused_option([] { FrictionOptions::refuse_composite_modulus_only(); }), "pair");

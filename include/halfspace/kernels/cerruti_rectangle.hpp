@@ -15,7 +15,12 @@ namespace halfspace::kernels {
 //   u_a = (1/(2 pi)) [(shear - directional) delta_ab / rho + directional x_a x_b / rho^3] F_b.
 // Finite everywhere, including on the cell's edges and corners; xx and yy
 // even in x and y, xy odd in each.
+// With height h > 0 (m) the kernel is smoothed, rho^2 = x^2 + y^2 + h^2:
+// its symbol is exp(-q h) (shear delta_ab / q - directional (1 + q h)
+// q_a q_b / q^3), the point-load solution's times exp(-q h) up to the
+// (1 + q h) of the directional part; a coated body's far field on free
+// grids (docs/theory.md, "Tangential compliance of a coated half-space").
 TangentialCoefficients cerruti_rectangle_displacement(double x, double y, double half_width_x, double half_width_y,
-                                                      double shear, double directional);
+                                                      double shear, double directional, double height = 0.0);
 
 }  // namespace halfspace::kernels

@@ -6,11 +6,42 @@
 // half-space"): M = 1 for identical materials or t -> inf, E1*/E2* for t -> 0.
 #pragma once
 
+#include <cmath>
+#include <numbers>
 #include <vector>
 
 #include "halfspace/layered_material.hpp"
 
 namespace halfspace::kernels {
+
+// sin(x)/x: a cell's transform over its width at x = q dx/2.
+inline double cell_sinc(double x) {
+  return x == 0.0 ? 1.0 : std::sin(x) / x;
+}
+
+// The alias images K = (qx + 2 pi m/dx, qy + 2 pi n/dy), |m|, |n| <= images
+// (n = 0 on a line), with |K| <= q_negligible: term(Kx, Ky, shape), shape the
+// cell's transform over its area, sinc(Kx dx/2) sinc(Ky dy/2) (a line: the
+// first factor). Summed, a kernel's transform times the shape over them is
+// the DFT at (qx, qy) of its cell coefficients on a grid of spacing (dx, dy)
+// (collocation at cell centres: on grid points the images coincide).
+template <class Term>
+void for_each_alias_image(double qx, double qy, double dx, double dy, bool line, int images, double q_negligible,
+                          Term&& term) {
+  const double period_x = 2.0 * std::numbers::pi / dx;
+  const double period_y = 2.0 * std::numbers::pi / dy;
+  const int images_y = line ? 0 : images;
+  for (int my = -images_y; my <= images_y; ++my) {
+    const double ky = line ? 0.0 : qy + my * period_y;
+    if (std::abs(ky) > q_negligible) continue;
+    const double shape_y = line ? 1.0 : cell_sinc(0.5 * ky * dy);
+    for (int mx = -images; mx <= images; ++mx) {
+      const double kx = qx + mx * period_x;
+      if (std::hypot(kx, ky) > q_negligible) continue;
+      term(kx, ky, cell_sinc(0.5 * kx * dx) * shape_y);
+    }
+  }
+}
 
 class LayeredKernel {
  public:

@@ -51,7 +51,29 @@ class LayeredTangentialKernel {
   // Both at once (one pair of solves).
   void symbols(double qx, double qy, TangentialCoefficients& tangential, CouplingCoefficients& coupling) const;
 
+  // Free grids (docs/theory.md, "Tangential compliance of a coated
+  // half-space"): the symbols less their closed-form part, which is the
+  // layer's Cerruti and coupling kernels plus the substrate's less the
+  // layer's smoothed to `height` h (m; cerruti_rectangle.hpp,
+  // coupling_rectangle.hpp, their `height`). The rest is finite at q = 0 and
+  // decays like exp(-q t); summed over the alias images times the cell's
+  // transform (for_each_alias_image, layered_fourier.hpp) it is the DFT at
+  // (qx, qy) of its cell coefficients on a grid of spacing (dx, dy). The
+  // q = 0 image takes the mean over directions of its limit there.
+  void remainder_cell_spectrum(double qx, double qy, double dx, double dy, double height,
+                               TangentialCoefficients& tangential, CouplingCoefficients& coupling) const;
+
  private:
+  // The remainder's three factors times q (1/Pa), the forms of
+  // tangential_spectrum (shear, directional) and coupling_spectrum.
+  struct Factors {
+    double shear = 0.0;
+    double directional = 0.0;
+    double coupling = 0.0;
+  };
+  Factors remainder(double q, double height) const;
+  Factors layer_;      // a homogeneous body's 1/G, nu/G, (1 - 2 nu)/G: the layer's
+  Factors substrate_;  // and the substrate's
   stress::LayeredFourierStress modes_;
   stress::LayeredAntiplane antiplane_;
   double layer_shear_modulus_;  // mu1, Pa

@@ -10,12 +10,15 @@
 // (kernels/coupling_coefficients.hpp): the tangential displacement of a
 // pressure and the normal displacement of a traction, by the same transforms
 // (coupling_fourier, coupling_rectangle, coupling_strip). A coated body
-// (ElasticPair::coated) takes its symbols per mode from the pair, on
-// periodic grids only.
+// (ElasticPair::coated) takes its symbols per mode from the pair; on free
+// 2D grids the layer's closed forms plus a remainder added per mode, as the
+// normal coated kernel (docs/theory.md, "Tangential compliance of a coated
+// half-space").
 #pragma once
 
 #include <memory>
 #include <span>
+#include <string>
 
 #include "halfspace/elastic_pair.hpp"
 #include "halfspace/fft/fft_planning.hpp"
@@ -26,9 +29,15 @@
 
 namespace halfspace::operators {
 
+// Why the pair's tangential compliance is not built on `grid`, or empty: a
+// coated body on a free 1D grid, or on a free 2D grid whose shorter side is
+// less than 8 split heights (NormalKernel::spectral_remainder: the remainder
+// goes in by DFT only there).
+std::string coated_free_grid_refusal(const Grid& grid, const ElasticPair& pair);
+
 class TangentialOperator {
  public:
-  // Throws InputError if the pair is coated and the grid not periodic.
+  // Throws InputError with coated_free_grid_refusal's reason, if any.
   TangentialOperator(const Grid& grid, const ElasticPair& pair, FftPlanning planning = FftPlanning::estimate);
   // The same on `transforms` (a distributed layout's slab transforms of
   // `grid`): fields hold this process's cells, reductions go over its

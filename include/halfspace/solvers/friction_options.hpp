@@ -82,10 +82,10 @@ struct FrictionOptions {
   void validate(const Grid& grid, const SolverOptions& normal, const Loading& loading) const;
 
   // The rule of the bodies on `grid`: a coated half-space
-  // (ElasticPair::coated) is solved on periodic grids only ("coating": its
-  // tangential compliance is known per Fourier mode,
-  // kernels/layered_tangential_fourier.hpp, not as free-grid cell
-  // coefficients). Throws SolverOptionError.
+  // (ElasticPair::coated) is refused ("coating") where its tangential
+  // compliance is not built (operators::coated_free_grid_refusal: free 1D
+  // grids, free 2D grids less than 8 split heights across). Throws
+  // SolverOptionError.
   static void check_body(const Grid& grid, const ElasticPair& pair);
   // The refusal of a material given as E* alone ("pair": E* does not fix
   // the tangential compliance), named for front ends that find it before

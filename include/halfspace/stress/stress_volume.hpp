@@ -94,8 +94,7 @@ StressVolume compute_stress_volume(const Grid& grid, const SurfaceTractions& tra
 // material or pressure.
 StressVolume compute_stress_volume(const Grid& grid, std::span<const double> pressure, std::span<const double> depths,
                                    const LayeredMaterial& coating, FftPlanning planning = FftPlanning::estimate);
-// The same under the pressure and shear tractions (periodic grids for a
-// shear: require_coated_shear_stress_grid).
+// The same under the pressure and shear tractions.
 StressVolume compute_stress_volume(const Grid& grid, const SurfaceTractions& tractions, std::span<const double> depths,
                                    const LayeredMaterial& coating, FftPlanning planning = FftPlanning::estimate);
 

@@ -37,12 +37,6 @@ inline constexpr double kFreeCoatedStressThicknessRatio = 0.125;
 // domain's shorter side, or its length in 1D).
 void require_coated_stress_grid(const Grid& grid, const LayeredMaterial& coating);
 
-// Throws InputError naming the coating and the free grid unless the stresses
-// of shear tractions on `coating` can be computed on `grid`: periodic grids
-// only (the layered shear field is built per Fourier mode; a free grid would
-// need the coating's cell coefficients under shear).
-void require_coated_shear_stress_grid(const Grid& grid, const LayeredMaterial& coating);
-
 // Throws InputError unless depth is finite and > 0 (m); returns it.
 double checked_depth(double depth);
 
@@ -119,8 +113,7 @@ class SubsurfaceStress {
   // every depth; a later set_pressure drops them. A coated half-space takes
   // the layered shear field (layered_fourier_shear_stress.hpp; its modes
   // solved when a shear is first set, about 60 bytes per cell). Throws
-  // InputError as set_pressure does for each field, and for a shear on a
-  // coated half-space on a free grid (require_coated_shear_stress_grid).
+  // InputError as set_pressure does for each field.
   void set_tractions(const SurfaceTractions& tractions);
   // Whether `tractions` hold a shear on any process (SurfaceTractions::
   // has_shear, reduced: a process without rows holds empty spans either
