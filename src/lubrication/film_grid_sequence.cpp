@@ -84,6 +84,15 @@ ElasticFilm solve_elastic_film(InfluenceOperator& op, const Eigen::ArrayXd& gap,
     result.iterations += sequenced_steps;
     result.krylov_iterations += sequenced_krylov;
     result.sequencing_fell_back = true;
+  } else if (!coarse_start && !result.converged() &&
+             (grid.nx() % 2 != 0 || (grid.dimension() == 2 && grid.ny() % 2 != 0))) {
+    // Not sequenced for the grid's odd shape alone: say how to be.
+    result.message += fmt::format(
+        " (the {} grid has an odd node count, which grid sequencing cannot coarsen, so the film started cold: an "
+        "even grid such as {} starts it from the coarser grids' film)",
+        grid.shape_string(),
+        grid.dimension() == 1 ? fmt::format("{}", grid.nx() + grid.nx() % 2)
+                              : fmt::format("{}x{}", grid.nx() + grid.nx() % 2, grid.ny() + grid.ny() % 2));
   } else if (coarse_start && !result.converged()) {
     result.message +=
         fmt::format(" (started from the coarser grids' film{}{}; no cold restart above {} nodes)",

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "halfspace/grid.hpp"
 #include "halfspace/lubrication/elastic_film.hpp"
@@ -24,7 +25,7 @@ constexpr double kMaterialParameter = 5000;
 
 // A point contact on an n x n grid over x in [-3.5a, 1.5a], y in [-2.5a,
 // 2.5a] (a the Hertz radius), as bench/ehl/ehl_scaling.cpp lays it out.
-ElasticFilm solve_point(std::size_t n, bool sequencing) {
+ElasticFilm solve_point(std::size_t n, bool sequencing, int max_iterations = ElasticFilmOptions{}.max_iterations) {
   const double e_prime = 2.0 * kEStar;
   const double load = kLoadParameter * e_prime * kRadius * kRadius;
   const double a = testing::hertz_point(load, kRadius, kEStar).radius;
@@ -47,7 +48,9 @@ ElasticFilm solve_point(std::size_t n, bool sequencing) {
                            .pressure_viscosity = kMaterialParameter / e_prime,
                            .compressibility = Compressibility::dowson_higginson};
   FftInfluenceOperator op(grid, kEStar);
-  return solve_elastic_film(op, gap, conditions, laws, {.load = load, .grid_sequencing = sequencing});
+  ElasticFilmOptions options{.load = load, .grid_sequencing = sequencing};
+  options.max_iterations = max_iterations;
+  return solve_elastic_film(op, gap, conditions, laws, options);
 }
 
 // Hamrock & Dowson's (1977) fit (k = 1) and the tolerances of
@@ -113,6 +116,19 @@ TEST(FilmGridSequenceTest, OddOrSmallGridsSolveCold) {
   const ElasticFilm small = solve_point(32, true);
   ASSERT_TRUE(small.converged()) << small.message;
   EXPECT_EQ(small.coarse_levels, 0);
+}
+
+// A film that fails on an odd grid says that the grid's shape kept it from
+// grid sequencing and which even grid would not; an even grid's failure
+// does not.
+TEST(FilmGridSequenceTest, OddGridFailureNamesTheEvenGrid) {
+  const ElasticFilm odd = solve_point(49, true, 2);
+  ASSERT_FALSE(odd.converged());
+  EXPECT_NE(odd.message.find("the 49x49 grid has an odd node count"), std::string::npos) << odd.message;
+  EXPECT_NE(odd.message.find("an even grid such as 50x50"), std::string::npos) << odd.message;
+  const ElasticFilm even = solve_point(64, true, 2);
+  ASSERT_FALSE(even.converged());
+  EXPECT_EQ(even.message.find("odd node count"), std::string::npos) << even.message;
 }
 
 }  // namespace
