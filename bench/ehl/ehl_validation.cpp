@@ -14,6 +14,7 @@
 #include <string_view>
 #include <vector>
 
+#include "../number_list.hpp"
 #include "ehl_case.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/lubrication/elastic_film.hpp"
@@ -75,18 +76,6 @@ Film point(double w, double u, double g, double cells, CouetteScheme scheme) {
 
 }  // namespace
 
-// "16,32" -> {16, 32}.
-std::vector<double> numbers(const char* text) {
-  std::vector<double> values;
-  std::string rest(text);
-  for (std::size_t start = 0; start <= rest.size();) {
-    const std::size_t comma = std::min(rest.find(',', start), rest.size());
-    values.push_back(std::atof(rest.substr(start, comma - start).c_str()));
-    start = comma + 1;
-  }
-  return values;
-}
-
 int main(int argc, char** argv) {
   const bool quick = argc > 1 && std::string_view(argv[1]) == "quick";
   const bool low = argc > 1 && std::string_view(argv[1]) == "low";
@@ -125,7 +114,7 @@ int main(int argc, char** argv) {
   fmt::print("{:>8} {:>8} {:>6} {:>6} {:>8} {:>13} {:>8} {:>8} {:>6} {:>8}\n", "W", "U", "G", "cells", "nodes",
              "scheme", "Hc/HD", "Hmin/HD", "steps", "seconds");
   const std::vector<double> point_loads = quick ? std::vector<double>{3e-7} : std::vector<double>{1e-7, 3e-7, 1e-6};
-  const std::vector<double> point_grids = points_only ? numbers(argv[2])
+  const std::vector<double> point_grids = points_only ? bench::number_list(argv[2])
                                           : quick     ? std::vector<double>{6}
                                                       : std::vector<double>{6, 8, 10};
   for (double w : point_loads) {

@@ -26,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "../number_list.hpp"
 #include "halfspace/elastic_pair.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/solvers/frictional_solve.hpp"
@@ -107,24 +108,12 @@ Pressed press(std::size_t cells, int increments, double mu, bool coupling) {
   return out;
 }
 
-std::vector<double> numbers(const std::string& text) {
-  std::vector<double> values;
-  std::size_t start = 0;
-  while (start <= text.size()) {
-    const std::size_t comma = text.find(',', start);
-    values.push_back(std::stod(text.substr(start, comma - start)));
-    if (comma == std::string::npos) break;
-    start = comma + 1;
-  }
-  return values;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::vector<double> grids = numbers(argc > 1 ? argv[1] : "32");
-  const std::vector<double> increments = numbers(argc > 2 ? argv[2] : "4,8");
-  const std::vector<double> mus = numbers(argc > 3 ? argv[3] : "0.3");
+  const std::vector<double> grids = bench::number_list(argc > 1 ? argv[1] : "32");
+  const std::vector<double> increments = bench::number_list(argc > 2 ? argv[2] : "4,8");
+  const std::vector<double> mus = bench::number_list(argc > 3 ? argv[3] : "0.3");
   fmt::print("# rigid sphere R = 10 mm, 10 N into steel (nu 0.3, beta 0.286), free grid over 2.4 a\n");
   fmt::print("{:>6} {:>6} {:>10} {:>8} {:>8} {:>10} {:>10} {:>6} {:>8}\n", "mu", "cells", "increments", "c/a", "slip/a",
              "peak %", "approach %", "alts", "seconds");
