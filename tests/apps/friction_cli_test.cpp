@@ -432,56 +432,61 @@ TEST(FrictionCliTest, ACoupledHistoryWritesEachStepsPressure) {
   EXPECT_LT(H5Lexists(u.get(), "/steps/001/pressure", H5P_DEFAULT), 1);
 }
 
-// A coated half-space with friction (periodic grids): the result has the
-// friction fields and attributes beside the coating's, and a layer of the
-// substrate's own material gives the homogeneous body's (--E1, --nu1 on a
+// A coated half-space with friction (periodic and free grids): the result
+// has the friction fields and attributes beside the coating's, and a layer of
+// the substrate's own material gives the homogeneous body's (--E1, --nu1 on a
 // rigid --E2 inf) shear, stick map and approach (both solved coupled).
 TEST(FrictionCliTest, CoatedHalfSpaceWritesTheShear) {
   constexpr double kSameBodyTolerance = 1e-9;  // two converged solves of one problem (the library test: 1e-14)
   const TempDir dir;
-  auto periodic = [](const std::string& output, const std::vector<std::string>& body) {
-    std::vector<std::string> arguments{"solve", "--geometry", "sphere", "--radius",           "0.01",     "--grid",
-                                       "32x32", "--size",     "4e-4",   "--boundary",         "periodic", "--force",
-                                       "10",    "--friction", "0.3",    "--tangential-force", "1.2",      "--output",
-                                       output,  "--threads",  "1"};
-    arguments.insert(arguments.end(), body.begin(), body.end());
-    return arguments;
-  };
-  const std::string e = fmt::format("{}", kE);
-  const std::string nu = fmt::format("{}", kNu);
-  ProgramRun run = run_program(periodic("coated.h5", {"--layer-thickness", "2e-5", "--layer-E", e, "--layer-nu", nu,
-                                                      "--substrate-E", e, "--substrate-nu", nu}),
-                               dir.path());
-  ASSERT_EQ(run.exit_code, kExitOk) << run.err;
-  EXPECT_NE(run.out.find("the coated half-space against the rigid surface"), std::string::npos) << run.out;
-  run = run_program(periodic("plain.h5", {"--E1", e, "--nu1", nu, "--E2", "inf", "--nu2", "0.3"}), dir.path());
-  ASSERT_EQ(run.exit_code, kExitOk) << run.err;
+  for (const std::string boundary : {"periodic", "free"}) {
+    SCOPED_TRACE(boundary);
+    auto sphere_on = [&](const std::string& output, const std::vector<std::string>& body) {
+      std::vector<std::string> arguments{"solve", "--geometry", "sphere", "--radius",           "0.01",   "--grid",
+                                         "32x32", "--size",     "4e-4",   "--boundary",         boundary, "--force",
+                                         "10",    "--friction", "0.3",    "--tangential-force", "1.2",    "--output",
+                                         output,  "--threads",  "1"};
+      arguments.insert(arguments.end(), body.begin(), body.end());
+      return arguments;
+    };
+    const std::string e = fmt::format("{}", kE);
+    const std::string nu = fmt::format("{}", kNu);
+    const std::string coated_file = boundary + "-coated.h5";
+    const std::string plain_file = boundary + "-plain.h5";
+    ProgramRun run = run_program(sphere_on(coated_file, {"--layer-thickness", "2e-5", "--layer-E", e, "--layer-nu", nu,
+                                                         "--substrate-E", e, "--substrate-nu", nu}),
+                                 dir.path());
+    ASSERT_EQ(run.exit_code, kExitOk) << run.err;
+    EXPECT_NE(run.out.find("the coated half-space against the rigid surface"), std::string::npos) << run.out;
+    run = run_program(sphere_on(plain_file, {"--E1", e, "--nu1", nu, "--E2", "inf", "--nu2", "0.3"}), dir.path());
+    ASSERT_EQ(run.exit_code, kExitOk) << run.err;
 
-  const test::H5 coated = test::open_file(dir / "coated.h5");
-  const test::H5 plain = test::open_file(dir / "plain.h5");
-  EXPECT_EQ(test::read_double_attribute(coated.get(), "layer_thickness"), 2e-5);
-  for (const char* name : {"/slip_x", "/slip_y", "/tangential_displacement_x", "/tangential_displacement_y"}) {
-    EXPECT_EQ(test::dataset_shape(coated.get(), name), (std::vector<hsize_t>{32, 32})) << name;
+    const test::H5 coated = test::open_file(dir / coated_file);
+    const test::H5 plain = test::open_file(dir / plain_file);
+    EXPECT_EQ(test::read_double_attribute(coated.get(), "layer_thickness"), 2e-5);
+    for (const char* name : {"/slip_x", "/slip_y", "/tangential_displacement_x", "/tangential_displacement_y"}) {
+      EXPECT_EQ(test::dataset_shape(coated.get(), name), (std::vector<hsize_t>{32, 32})) << name;
+    }
+    const auto pressure = test::read_dataset<double>(plain.get(), "/pressure", H5T_NATIVE_DOUBLE);
+    const double scale = kMu * *std::max_element(pressure.begin(), pressure.end());
+    for (const char* name : {"/shear_x", "/shear_y", "/pressure"}) {
+      const auto a = test::read_dataset<double>(coated.get(), name, H5T_NATIVE_DOUBLE);
+      const auto b = test::read_dataset<double>(plain.get(), name, H5T_NATIVE_DOUBLE);
+      ASSERT_EQ(a.size(), b.size());
+      double worst = 0.0;
+      for (std::size_t i = 0; i < a.size(); ++i) worst = std::max(worst, std::abs(a[i] - b[i]));
+      EXPECT_LT(worst, kSameBodyTolerance * scale) << name;
+    }
+    EXPECT_EQ(test::read_dataset<std::uint8_t>(coated.get(), "/stick", H5T_NATIVE_UINT8),
+              test::read_dataset<std::uint8_t>(plain.get(), "/stick", H5T_NATIVE_UINT8));
+    const double approach = test::read_double_attribute(plain.get(), "tangential_approach_x");
+    EXPECT_NEAR(test::read_double_attribute(coated.get(), "tangential_approach_x"), approach,
+                kSameBodyTolerance * std::abs(approach));
+    EXPECT_NEAR(test::read_double_attribute(coated.get(), "tangential_force_x"), 1.2, 1e-9 * 1.2);
+    const double stick = test::read_double_attribute(coated.get(), "stick_fraction");
+    EXPECT_GT(stick, 0.0);
+    EXPECT_LT(stick, 1.0);
   }
-  const auto pressure = test::read_dataset<double>(plain.get(), "/pressure", H5T_NATIVE_DOUBLE);
-  const double scale = kMu * *std::max_element(pressure.begin(), pressure.end());
-  for (const char* name : {"/shear_x", "/shear_y", "/pressure"}) {
-    const auto a = test::read_dataset<double>(coated.get(), name, H5T_NATIVE_DOUBLE);
-    const auto b = test::read_dataset<double>(plain.get(), name, H5T_NATIVE_DOUBLE);
-    ASSERT_EQ(a.size(), b.size());
-    double worst = 0.0;
-    for (std::size_t i = 0; i < a.size(); ++i) worst = std::max(worst, std::abs(a[i] - b[i]));
-    EXPECT_LT(worst, kSameBodyTolerance * scale) << name;
-  }
-  EXPECT_EQ(test::read_dataset<std::uint8_t>(coated.get(), "/stick", H5T_NATIVE_UINT8),
-            test::read_dataset<std::uint8_t>(plain.get(), "/stick", H5T_NATIVE_UINT8));
-  const double approach = test::read_double_attribute(plain.get(), "tangential_approach_x");
-  EXPECT_NEAR(test::read_double_attribute(coated.get(), "tangential_approach_x"), approach,
-              kSameBodyTolerance * approach);
-  EXPECT_NEAR(test::read_double_attribute(coated.get(), "tangential_force_x"), 1.2, 1e-9 * 1.2);
-  const double stick = test::read_double_attribute(coated.get(), "stick_fraction");
-  EXPECT_GT(stick, 0.0);
-  EXPECT_LT(stick, 1.0);
 }
 
 TEST(FrictionCliTest, RefusalsNameTheOptions) {
