@@ -165,9 +165,11 @@ const std::array kOptions{
                 "tangential step: at most N semi-smooth Newton updates of the stick/slip sets and slip directions "
                 "(conjugate gradients on the frozen sets between) before the conjugate gradients finish (0: none) "
                 "[0]"},
-    SolveOption{"tangential-coarse-start", &SolveOptions::tangential_coarse_start, Kind::text, kFriction, "on|off",
+    SolveOption{"tangential-coarse-start", &SolveOptions::tangential_coarse_start, Kind::text, kFriction,
+                "on|off|automatic",
                 "tangential step: solve it first on grids of twice, four times, ... the spacing and start from the "
-                "prolonged traction (serial solves of similar bodies on grids that halve) [off]"},
+                "prolonged traction (serial solves of similar bodies on grids that halve); automatic: on grids of "
+                "fewer than 2048^2 cells [automatic]"},
     SolveOption{"no-coupling", &SolveOptions::no_coupling, Kind::flag, kFriction, "",
                 "dissimilar bodies (Dundurs' beta != 0): ignore the normal-tangential coupling (the pressure of the "
                 "frictionless solve, for comparison); by default the coupled problem is solved"},

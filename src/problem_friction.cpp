@@ -96,7 +96,15 @@ std::optional<solvers::FrictionOptions> Rules::friction(const solvers::SolverOpt
   if (o_.tangential_active_set) friction.tangential.active_set_updates = clamped(*o_.tangential_active_set);
   if (o_.normal_load_steps) friction.normal_load_steps = clamped(*o_.normal_load_steps);
   if (o_.tangential_coarse_start) {
-    friction.tangential.coarse_start = on_off("tangential_coarse_start", *o_.tangential_coarse_start);
+    const std::string& value = *o_.tangential_coarse_start;
+    if (value == "automatic") {
+      friction.tangential.coarse_start = solvers::TangentialCoarseStart::automatic;
+    } else if (value == "on" || value == "off") {
+      friction.tangential.coarse_start =
+          value == "on" ? solvers::TangentialCoarseStart::on : solvers::TangentialCoarseStart::off;
+    } else {
+      throw OptionError("tangential_coarse_start", value, "is invalid: allowed values are on, off and automatic");
+    }
   }
   if (o_.coupling) friction.coupling = on_off("coupling", *o_.coupling);
   try {

@@ -182,7 +182,7 @@ TEST(ProblemTest, FrictionIsMadeFromItsOptions) {
   EXPECT_EQ(problem.friction->tangential.tolerance, 1e-8);
   EXPECT_EQ(problem.friction->tangential.max_iterations, 50);
   EXPECT_EQ(problem.friction->tangential.release_period, 3);
-  EXPECT_TRUE(problem.friction->tangential.coarse_start);
+  EXPECT_EQ(problem.friction->tangential.coarse_start, TangentialCoarseStart::on);
   EXPECT_FALSE(problem.friction->coupling);
   EXPECT_EQ(problem.friction->normal_load_steps, 3);
   EXPECT_TRUE(problem.pair->similar());
@@ -240,9 +240,9 @@ TEST(ProblemTest, FrictionRulesNameTheOption) {
   EXPECT_EQ(refusal([&] { make_problem(options); }), "tangential_release_period=0 is invalid: must be at least 1");
   options = friction_problem();
   options.tangential_coarse_start = "maybe";
-  EXPECT_EQ(refused(options), "--tangential_coarse_start maybe is invalid: allowed values are on and off");
+  EXPECT_EQ(refused(options), "--tangential_coarse_start maybe is invalid: allowed values are on, off and automatic");
   options = friction_problem();
-  EXPECT_FALSE(make_problem(options).friction->tangential.coarse_start);
+  EXPECT_EQ(make_problem(options).friction->tangential.coarse_start, TangentialCoarseStart::automatic);
   options = friction_problem();
   options.friction = -0.1;
   EXPECT_TRUE(starts_with(refused(options), "--friction -0.1 is invalid: the friction coefficient mu must be finite"));

@@ -3,8 +3,9 @@
 // rest, then back to 0.25 mu P), traced: the residual of every iteration,
 // the products, the stick fraction. The pressure of the normal solve is
 // kept in a file (the third argument) so that a second run skips it.
-// Usage: tangential_trace N [MAX_ITERATIONS] [PRESSURE_FILE] [EVERY] [coarse]
-// [active=UPDATES] [normal] (coarse: TangentialOptions::coarse_start on;
+// Usage: tangential_trace N [MAX_ITERATIONS] [PRESSURE_FILE] [EVERY] [coarse|fine]
+// [active=UPDATES] [normal] (coarse, fine: TangentialOptions::coarse_start on,
+// off, automatic without either;
 // active: TangentialOptions::active_set_updates, 10 if no number is given;
 // normal: the normal solve made and timed even when the pressure file
 // exists, for the step's time against it in the same run). One thread; the counts are
@@ -103,7 +104,7 @@ int main(int argc, char** argv) {
   try {
     if (argc < 2) {
       std::fprintf(stderr,
-                   "usage: tangential_trace N [MAX_ITERATIONS] [PRESSURE_FILE] [EVERY] [coarse] [active=UPDATES] "
+                   "usage: tangential_trace N [MAX_ITERATIONS] [PRESSURE_FILE] [EVERY] [coarse|fine] [active=UPDATES] "
                    "[normal]\n");
       return 2;
     }
@@ -111,19 +112,20 @@ int main(int argc, char** argv) {
     const int cap = argc > 2 ? std::stoi(argv[2]) : 20000;
     const std::string file = argc > 3 ? argv[3] : "";
     const int every = argc > 4 ? std::stoi(argv[4]) : 1;
-    bool coarse = false;
+    TangentialCoarseStart coarse_start = TangentialCoarseStart::automatic;
     int active_set_updates = 0;
     bool timed = false;
     for (int a = 5; a < argc; ++a) {
       const std::string arg = argv[a];
-      if (arg == "coarse") {
-        coarse = true;
+      if (arg == "coarse" || arg == "fine") {
+        coarse_start = arg == "coarse" ? TangentialCoarseStart::on : TangentialCoarseStart::off;
       } else if (arg == "normal") {
         timed = true;
       } else if (arg.starts_with("active")) {
         active_set_updates = arg.size() > 7 ? std::stoi(arg.substr(7)) : 10;
       } else {
-        throw std::invalid_argument("unknown argument " + arg + ": allowed are coarse, active[=UPDATES] and normal");
+        throw std::invalid_argument("unknown argument " + arg +
+                                    ": allowed are coarse, fine, active[=UPDATES] and normal");
       }
     }
     set_threads(1);
@@ -136,7 +138,7 @@ int main(int argc, char** argv) {
     options.friction_coefficient = kMu;
     options.tolerance = kTolerance;
     options.max_iterations = cap;
-    options.coarse_start = coarse;
+    options.coarse_start = coarse_start;
     options.active_set_updates = active_set_updates;
     options.progress = [every](int iteration, double residual) {
       if (iteration % every == 0) fmt::print("  {:5d} {:.3e}\n", iteration, residual);

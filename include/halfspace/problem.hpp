@@ -106,7 +106,7 @@ struct ProblemOptions : BodyOptions {
   std::optional<long long> tangential_max_iter;
   std::optional<long long> tangential_release_period;  // TangentialOptions::release_period
   std::optional<long long> tangential_active_set;      // TangentialOptions::active_set_updates
-  std::optional<std::string> tangential_coarse_start;  // "on" or "off" (TangentialOptions::coarse_start)
+  std::optional<std::string> tangential_coarse_start;  // "on", "off" or "automatic" (TangentialOptions::coarse_start)
   std::optional<std::string> coupling;
   std::optional<long long> normal_load_steps;
   // The solver (solver_options.hpp) and the threads.

@@ -81,6 +81,11 @@ void TangentialOptions::validate() const {
     throw SolverOptionError("method", fmt::format("{}", static_cast<int>(method)),
                             "is invalid: allowed are conjugate_gradient (0) and projected_gradient (1)");
   }
+  if (coarse_start != TangentialCoarseStart::off && coarse_start != TangentialCoarseStart::on &&
+      coarse_start != TangentialCoarseStart::automatic) {
+    throw SolverOptionError("coarse_start", fmt::format("{}", static_cast<int>(coarse_start)),
+                            "is invalid: allowed are off (0), on (1) and automatic (2)");
+  }
 }
 
 void TangentialSolver::set_tolerance(double tolerance) {
@@ -236,7 +241,7 @@ TangentialResult TangentialSolver::solve(std::span<const double> pressure, const
   // fields exist, so that the coarse levels do not add to the peak.
   CoarseStart coarse;
   const bool serial = comm.size() == 1 && n == grid.size();
-  const bool coarse_started = !sliding && serial && !fixed && options_.coarse_start &&
+  const bool coarse_started = !sliding && serial && !fixed && options_.coarse_start_wanted(grid) &&
                               options_.method == TangentialMethod::conjugate_gradient && mu > 0.0 &&
                               coarse_start(pressure, loading, previous, coarse);
 

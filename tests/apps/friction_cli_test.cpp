@@ -560,7 +560,7 @@ TEST(FrictionCliTest, RefusalsNameTheOptions) {
        {"--tangential-active-set -1 is invalid: must be at least 0"}},
       {sphere(16, "bad.h5", {"--tangential-active-set", "10"}), {"--tangential-active-set 10 needs --friction MU"}},
       {sphere(16, "bad.h5", {"--friction", "0.3", "--tangential-force", "1", "--tangential-coarse-start", "yes"}),
-       {"--tangential-coarse-start yes is invalid: allowed values are on and off"}},
+       {"--tangential-coarse-start yes is invalid: allowed values are on, off and automatic"}},
       {sphere(16, "bad.h5", {"--tangential-coarse-start", "on"}), {"--tangential-coarse-start on needs --friction MU"}},
   };
   for (const Case& c : cases) {

@@ -57,7 +57,7 @@ TangentialResult step(TangentialOperator& op, solvers::TangentialMethod method, 
   options.max_iterations = 50000;
   options.method = method;
   options.release_period = release_period;
-  options.coarse_start = coarse_start;
+  options.coarse_start = coarse_start ? TangentialCoarseStart::on : TangentialCoarseStart::off;
   TangentialSolver solver(op, options);
   const std::size_t n = op.local_size();
   if (fixed_x != nullptr) {

@@ -73,16 +73,18 @@ def test_active_set_phase_gives_the_same_step():
 
 def test_coarse_start_gives_the_same_step():
     # tangential_coarse_start (--tangential-coarse-start): one coarser grid (32^2) starts the 64^2 step, which
-    # converges to the default start's traction and approach (both to a duality gap of 1e-10).
+    # converges to the fine start's traction and approach (both to a duality gap of 1e-10); None (automatic)
+    # takes the coarse start on this grid.
     ratio = 0.5
     surface = sphere(64)
     results = [hs.solve(surface, **STEEL, force=FORCE, friction=MU, tangential_force=(ratio * MU * FORCE, 0.0),
                         tangential_tol=1e-10, tangential_coarse_start=start, threads=1, fft_planning="estimate")
-               for start in (None, True)]
+               for start in (False, True, None)]
     for result in results:
         assert result.converged and result.friction["converged"], result.friction["message"]
-    plain, coarse = results
+    plain, coarse, automatic = results
     assert plain.friction["coarse_levels"] == 0 and coarse.friction["coarse_levels"] == 1
+    assert automatic.friction["coarse_levels"] == 1
     assert coarse.attributes["tangential_coarse_levels"] == 1
     limit = MU * plain.pressure.max()
     assert np.max(np.abs(coarse.shear_x - plain.shear_x)) <= 1e-4 * limit

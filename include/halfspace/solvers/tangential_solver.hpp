@@ -50,6 +50,9 @@ enum class TangentialMethod {
   projected_gradient,  // FISTA with restart, unpreconditioned
 };
 
+// TangentialOptions::coarse_start.
+enum class TangentialCoarseStart { off, on, automatic };
+
 struct TangentialOptions {
   double friction_coefficient = 0.0;  // mu, >= 0 and finite
   double tolerance = 1e-6;            // of the residual above
@@ -67,11 +70,23 @@ struct TangentialOptions {
   // axis, to coarse_tolerance), its traction prolonged as the fraction of
   // the disc each coarse cell uses (q / mu p, so that slip directions carry
   // over and the fine start is admissible), as pk-multilevel starts the
-  // normal problem. Serial even grids without a fixed displacement. Off
-  // by default: at 1024^2 it saves 17 % of a step's products, but at
-  // 2048^2 the fine step from it cycled between the sets for about 80
-  // iterations (docs/development-log.md, 2026-11-29).
-  bool coarse_start = false;
+  // normal problem. Serial even grids without a fixed displacement.
+  // automatic (the default): on grids of fewer than
+  // kCoarseStartAutomaticBelowCells cells.
+  TangentialCoarseStart coarse_start = TangentialCoarseStart::automatic;
+  // The automatic rule. On the benchmark's rough periodic contact the coarse
+  // start cut the first step's CPU time by 8 %, 2 % and 22 % at 256^2,
+  // 512^2 and 1024^2 (1024^2: 46 iterations against 58), but at 2048^2 the
+  // fine step from it swung between the stick and slip sets for about 80
+  // iterations (134 against 97; docs/development-log.md, 2026-11-29,
+  // branch fric29d).
+  static constexpr std::size_t kCoarseStartAutomaticBelowCells = std::size_t{1} << 22;
+  // Whether the coarse start is wanted on `grid` (its other conditions
+  // aside).
+  bool coarse_start_wanted(const Grid& grid) const {
+    return coarse_start == TangentialCoarseStart::on ||
+           (coarse_start == TangentialCoarseStart::automatic && grid.size() < kCoarseStartAutomaticBelowCells);
+  }
   // Of the coarse solves (the fine one's if tighter), in (0, 1): on the
   // benchmark's 1024^2 contact 1e-2, 1e-3, 1e-4 gave 139, 132, 154 fine
   // products' worth for the first step (docs/development-log.md).
@@ -92,8 +107,8 @@ struct TangentialOptions {
 
   // Throws SolverOptionError (an InputError) naming the member ("friction"
   // for mu) unless mu is finite and >= 0, 0 < tolerance < 1,
-  // max_iterations >= 1, release_period >= 1, active_set_updates >= 0 and
-  // 0 < coarse_tolerance < 1.
+  // max_iterations >= 1, release_period >= 1, active_set_updates >= 0,
+  // 0 < coarse_tolerance < 1 and method and coarse_start are named values.
   void validate() const;
 };
 
@@ -157,6 +172,7 @@ class TangentialSolver {
 
 // The library and its front ends name these without the folder's namespace.
 namespace halfspace {
+using solvers::TangentialCoarseStart;
 using solvers::TangentialMethod;
 using solvers::TangentialOptions;
 using solvers::TangentialSolver;
