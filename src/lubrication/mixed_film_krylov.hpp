@@ -21,6 +21,7 @@
 #include "halfspace/lubrication/reynolds_stencil.hpp"
 #include "halfspace/operators/influence_operator.hpp"
 #include "local_influence.hpp"
+#include "mixed_block_preconditioner.hpp"
 #include "restarted_gmres.hpp"
 #include "reynolds_linearisation.hpp"
 
@@ -62,6 +63,9 @@ class MixedKrylovSolver {
   // the system has the h0 column and load row under load control.
   MixedKrylovSolver(InfluenceOperator& op, const ReynoldsStencil& topology, const MixedKrylovSettings& settings,
                     bool load_control);
+  ~MixedKrylovSolver();  // TRACE
+  double trace_factorise_ = 0, trace_apply_ = 0, trace_op_ = 0;  // TRACE
+  int trace_factorisations_ = 0, trace_applies_ = 0;              // TRACE
 
   // K_00: a cell's displacement under unit pressure on itself.
   double self_influence() const { return local_.self(); }
@@ -102,8 +106,14 @@ class MixedKrylovSolver {
   // The preconditioner: B (2n x 2n, sparse) bordered by the h0 column and
   // the load row under load control.
   CsrMatrix matrix_;
-  std::vector<std::pair<int, double>> row_scratch_;
+  std::vector<std::pair<int, double>> row_scratch_, film_scratch_;
   std::unique_ptr<FilmPreconditioner> preconditioner_;
+  // The block preconditioner: the mass rows' M and F (n x n).
+  CsrMatrix film_matrix_;
+  std::unique_ptr<MixedBlockPreconditioner> block_;
+  void apply_inverse(const Eigen::VectorXd& in, Eigen::VectorXd& out);
+  bool factorise_block(std::string& message);
+  bool factorise_border(std::string& message);
   LaggedPreconditioner lagged_;
   Eigen::VectorXd load_row_, border_column_, border_solved_, head_in_, head_out_;
   double border_pivot_ = 0.0;
