@@ -36,7 +36,8 @@ double waves(double x, double length, double amplitude, double phase) {
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    fmt::print(stderr, "usage: mixed_scaling N [speed] [gmres|dense|automatic] [neighbourhood] [sequenced|cold] "
+    fmt::print(stderr,
+               "usage: mixed_scaling N [speed] [gmres|dense|automatic] [neighbourhood] [sequenced|cold] "
                "[multigrid|sparse-lu]\n");
     return 2;
   }

@@ -6,8 +6,6 @@
 
 #include <Eigen/SparseCore>
 #include <Eigen/SparseLU>
-#include <Eigen/IterativeLinearSolvers>
-#include <cstdlib>
 #include <algorithm>
 
 #include "film_multigrid.hpp"
@@ -73,41 +71,7 @@ class SparseLuPreconditioner final : public FilmPreconditioner {
   bool analysed_ = false;
 };
 
-// TRIAL: Eigen's IncompleteLUT (Saad's ILUT) with a drop tolerance and a
-// fill factor.
-class IncompleteLuPreconditioner final : public FilmPreconditioner {
- public:
-  IncompleteLuPreconditioner(double drop, int fill) {
-    lu_.setDroptol(drop);
-    lu_.setFillfactor(fill);
-  }
-  bool factorise(const CsrMatrix& matrix, std::string& message) override {
-    const auto n = static_cast<Eigen::Index>(matrix.rows);
-    const Eigen::Map<const Eigen::SparseMatrix<double, Eigen::RowMajor, int>> rows(
-        n, n, static_cast<Eigen::Index>(matrix.entries()), matrix.start.data(), matrix.column.data(),
-        matrix.value.data());
-    sparse_ = rows;
-    lu_.compute(sparse_);
-    if (lu_.info() != Eigen::Success) {
-      message = "the film preconditioner's incomplete LU failed";
-      return false;
-    }
-    return true;
-  }
-  void apply(const Eigen::VectorXd& in, Eigen::VectorXd& out) override { out = lu_.solve(in); }
-
- private:
-  Eigen::SparseMatrix<double, Eigen::RowMajor> sparse_;
-  Eigen::IncompleteLUT<double, int> lu_;
-};
-
 }  // namespace
-
-std::unique_ptr<FilmPreconditioner> make_trial_ilut() {
-  const char* drop = std::getenv("HS_ILUT_DROP");
-  const char* fill = std::getenv("HS_ILUT_FILL");
-  return std::make_unique<IncompleteLuPreconditioner>(drop ? std::atof(drop) : 1e-4, fill ? std::atoi(fill) : 10);
-}
 
 std::unique_ptr<FilmPreconditioner> make_film_preconditioner(KrylovPreconditioner kind, const Grid& grid,
                                                              int line_axis) {

@@ -65,7 +65,7 @@ class MixedBlockPreconditioner {
   const std::vector<char>* closed_ = nullptr;
   const Eigen::VectorXd* dp_ds_ = nullptr;
   double pressure_ = 1.0, film_scale_ = 1.0;
-  std::vector<int> spot_index_;        // per node: its index among the closed cells, or -1
+  std::vector<int> spot_index_;         // per node: its index among the closed cells, or -1
   std::vector<std::size_t> spot_node_;  // the closed cells
   Eigen::SparseMatrix<double> spots_;   // K_CC
   Eigen::SparseLU<Eigen::SparseMatrix<double>> spots_lu_;

@@ -18,19 +18,17 @@
 // (Venner & Lubrecht 2000's differential deflection), and in the closed
 // contact rows the truncated K keeps the stiff local part of the contact
 // operator, leaving GMRES its smooth far field. The bordered system (h0
-// column c, load row l) is solved through B's LU by the Schur complement.
+// column c, load row l) is solved through B's approximate inverse (the
+// block Gauss–Seidel's or the LU's) by the Schur complement.
 #include "mixed_film_krylov.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
-#include <cstdlib>
 #include <span>
 
 namespace halfspace::lubrication::detail {
-std::unique_ptr<FilmPreconditioner> make_trial_ilut();
 
 namespace {
 // Entries per node of the preconditioner: a mass row's (up to 8) local terms
@@ -51,10 +49,9 @@ double mixed_krylov_memory_estimate(std::size_t nodes, const MixedKrylovSettings
   // The block preconditioner's M and F hold a mass row's entries each (half
   // of the node's), the V-cycle its levels; the LU the whole sparse part,
   // its copy and its fill.
-  const double preconditioner =
-      settings.preconditioner == KrylovPreconditioner::multigrid
-          ? entries * 12.0 + MixedBlockPreconditioner::bytes_per_node(0.5 * entries)
-          : entries * (12.0 + 12.0) + entries * kFillAllowance * 12.0;
+  const double preconditioner = settings.preconditioner == KrylovPreconditioner::multigrid
+                                    ? entries * 12.0 + MixedBlockPreconditioner::bytes_per_node(0.5 * entries)
+                                    : entries * (12.0 + 12.0) + entries * kFillAllowance * 12.0;
   const double per_node = 2.0 * 8.0 * (settings.restart + 1)  // GMRES basis, 2 unknowns per node
                           + 16.0 * sizeof(LocalTerm)          // local rows
                           + preconditioner + 8.0 * 60.0;      // the Newton state and work vectors
@@ -78,22 +75,15 @@ MixedKrylovSolver::MixedKrylovSolver(InfluenceOperator& op, const ReynoldsStenci
   head_out_.resize(2 * ni);
   gmres_.resize(m_, settings_.restart);
   work_.resize(m_);
-  if (settings_.preconditioner == KrylovPreconditioner::multigrid && !std::getenv("HS_ILUT")) {
+  if (settings_.preconditioner == KrylovPreconditioner::multigrid) {
     const int line_axis = topology.couette_y() > topology.couette_x() ? 1 : 0;
     block_ = std::make_unique<MixedBlockPreconditioner>(op.grid(), line_axis, local_);
   } else {
-    preconditioner_ = std::getenv("HS_ILUT") ? make_trial_ilut()
-                                             : make_film_preconditioner(KrylovPreconditioner::sparse_lu, op.grid(), 0);
+    preconditioner_ = make_film_preconditioner(KrylovPreconditioner::sparse_lu, op.grid(), 0);
   }
 }
 
 void MixedKrylovSolver::apply_jacobian(const Eigen::VectorXd& v, Eigen::VectorXd& out) {
-  const auto t0 = std::chrono::steady_clock::now();  // TRACE
-  struct Done {
-    std::chrono::steady_clock::time_point t0;
-    MixedKrylovSolver* self;
-    ~Done() { self->trace_op_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); }
-  } done{t0, this};
   const auto ni = static_cast<Eigen::Index>(n_);
   const double P = scales_.pressure;
   total_ = dp_ds_.cwiseProduct(v.head(ni)) + P * v.segment(ni, ni);
@@ -130,22 +120,7 @@ void MixedKrylovSolver::film_change(const Eigen::VectorXd& step, Eigen::VectorXd
   if (scales_.load_control) out.array() += step[2 * ni];
 }
 
-MixedKrylovSolver::~MixedKrylovSolver() {  // TRACE
-  if (std::getenv("HS_TRACE"))
-    fmt::print(stderr, "TRACE n {} factorisations {} ({:.2f} s) applies {} ({:.2f} s) jacobian {:.2f} s\n", n_,
-               trace_factorisations_, trace_factorise_, trace_applies_, trace_apply_, trace_op_);
-}
-
 void MixedKrylovSolver::apply_inverse(const Eigen::VectorXd& in, Eigen::VectorXd& out) {
-  const auto t0 = std::chrono::steady_clock::now();  // TRACE
-  struct Done {
-    std::chrono::steady_clock::time_point t0;
-    MixedKrylovSolver* self;
-    ~Done() {
-      self->trace_apply_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      ++self->trace_applies_;
-    }
-  } done{t0, this};
   if (block_) {
     block_->apply(in, out);
   } else {
@@ -187,20 +162,12 @@ bool MixedKrylovSolver::factorise_block(std::string& message) {
     matrix_.append_row(row_scratch_);
     film_matrix_.append_row(film_scratch_);
   }
-  for (std::size_t k = 0; k < n_; ++k) border_column_[ni + static_cast<Eigen::Index>(k)] = closed[k] != 0 ? 1.0 / H : 0.0;
+  for (std::size_t k = 0; k < n_; ++k)
+    border_column_[ni + static_cast<Eigen::Index>(k)] = closed[k] != 0 ? 1.0 / H : 0.0;
   return block_->factorise(matrix_, film_matrix_, closed, dp_ds_, scales_.pressure, H, message);
 }
 
 bool MixedKrylovSolver::factorise(std::string& message) {
-  const auto t0 = std::chrono::steady_clock::now();  // TRACE
-  struct Done {
-    std::chrono::steady_clock::time_point t0;
-    MixedKrylovSolver* self;
-    ~Done() {
-      self->trace_factorise_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      ++self->trace_factorisations_;
-    }
-  } done{t0, this};
   if (block_) {
     if (!factorise_block(message)) return false;
     return factorise_border(message);

@@ -4,10 +4,11 @@
 // influence operator per iteration, on the total pressure: K is never
 // formed), right-preconditioned by a sparse approximation of it (the
 // Reynolds stencil and the closed contact rows with K truncated to a few
-// cells around each node) factorised by Eigen's SparseLU
-// (film_preconditioner.hpp), kept across solves while GMRES converges
-// quickly with it (film_krylov_solver.hpp's LaggedPreconditioner). Private
-// to the library.
+// cells around each node), inverted approximately by block Gauss–Seidel
+// with the EHL film's V-cycle on the mass rows (mixed_block_preconditioner.hpp)
+// or exactly by Eigen's SparseLU (film_preconditioner.hpp), and kept across
+// solves while GMRES converges quickly with it (film_krylov_solver.hpp's
+// LaggedPreconditioner). Private to the library.
 #pragma once
 
 #include <Eigen/Core>
@@ -27,8 +28,8 @@
 
 namespace halfspace::lubrication::detail {
 
-// The EHL film's GMRES settings; the preconditioner is the mixed film's own
-// (B's sparse LU), whatever `preconditioner` says.
+// The EHL film's GMRES settings; `preconditioner` multigrid is the block
+// Gauss–Seidel of mixed_block_preconditioner.hpp, sparse_lu B's sparse LU.
 using MixedKrylovSettings = FilmKrylovSettings;
 
 // The Newton system's state at one step: the mass rows' local derivatives
@@ -63,9 +64,6 @@ class MixedKrylovSolver {
   // the system has the h0 column and load row under load control.
   MixedKrylovSolver(InfluenceOperator& op, const ReynoldsStencil& topology, const MixedKrylovSettings& settings,
                     bool load_control);
-  ~MixedKrylovSolver();  // TRACE
-  double trace_factorise_ = 0, trace_apply_ = 0, trace_op_ = 0;  // TRACE
-  int trace_factorisations_ = 0, trace_applies_ = 0;              // TRACE
 
   // K_00: a cell's displacement under unit pressure on itself.
   double self_influence() const { return local_.self(); }

@@ -324,8 +324,7 @@ TEST(MixedFilmKrylovTest, MultigridPreconditionerGivesTheSparseLuFilm) {
   EXPECT_LE((by_multigrid.fluid_pressure - by_lu.fluid_pressure).abs().maxCoeff(), 2e-4 * peak);
   EXPECT_NEAR(by_multigrid.contact_load_fraction, by_lu.contact_load_fraction, 3e-5);
   EXPECT_EQ(by_multigrid.contact_area_fraction, by_lu.contact_area_fraction);
-  EXPECT_NEAR(by_multigrid.central_film_thickness, by_lu.central_film_thickness,
-              1e-6 * by_lu.central_film_thickness);
+  EXPECT_NEAR(by_multigrid.central_film_thickness, by_lu.central_film_thickness, 1e-6 * by_lu.central_film_thickness);
 }
 
 TEST(MixedFilmKrylovTest, RefusesInvalidKrylovOptionsNamingThem) {
