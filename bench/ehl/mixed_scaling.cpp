@@ -5,7 +5,7 @@
 // 0.2 um of roughness, incommensurate waves of wavelengths 0.23a to 0.61a
 // along x and obliquely, the same surface on every grid.
 // Usage: mixed_scaling N [speed m/s, 0.05] [gmres|dense|automatic]
-// [neighbourhood, 1] [sequenced|cold]. One solve per process, so that the
+// [neighbourhood, 1] [sequenced|cold] [multigrid|sparse-lu]. One solve per process, so that the
 // peak resident size is the solve's.
 #include <fmt/format.h>
 #include <sys/resource.h>
@@ -36,7 +36,9 @@ double waves(double x, double length, double amplitude, double phase) {
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    fmt::print(stderr, "usage: mixed_scaling N [speed] [gmres|dense|automatic] [neighbourhood] [sequenced|cold]\n");
+    fmt::print(stderr,
+               "usage: mixed_scaling N [speed] [gmres|dense|automatic] [neighbourhood] [sequenced|cold] "
+               "[multigrid|sparse-lu]\n");
     return 2;
   }
   const auto n = static_cast<std::size_t>(std::atol(argv[1]));
@@ -44,6 +46,8 @@ int main(int argc, char** argv) {
   const FilmLinearSolve solve = argc > 3 ? parse_film_linear_solve(argv[3]) : FilmLinearSolve::automatic;
   const int neighbourhood = argc > 4 ? std::atoi(argv[4]) : 1;
   const bool sequenced = argc > 5 ? std::string_view(argv[5]) != "cold" : true;
+  const KrylovPreconditioner preconditioner =
+      argc > 6 ? parse_krylov_preconditioner(argv[6]) : MixedFilmOptions{}.preconditioner;
   const double e_prime = 2.0 * kEStar;
   const double load = 3e-7 * e_prime * kRadius * kRadius;
   const double a = std::cbrt(3.0 * load * kRadius / (4.0 * kEStar));
@@ -74,17 +78,18 @@ int main(int argc, char** argv) {
   options.linear_solve = solve;
   options.preconditioner_neighbourhood = neighbourhood;
   options.grid_sequencing = sequenced;
+  options.preconditioner = preconditioner;
   options.friction.shear.limiting_shear_slope = 0.05;
   const MixedFilm f = solve_mixed_film(op, gap, conditions, bench::roelands_laws(5000), options);
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   const double peak = static_cast<double>(usage.ru_maxrss) * 1024.0;
   fmt::print(
-      "N {} u {} solve {} r {} {}: {} ({}), {} Newton steps, {} GMRES its (most {} per step), {} halvings, coarse "
+      "N {} u {} solve {} r {} {} {}: {} ({}), {} Newton steps, {} GMRES its (most {} per step), {} halvings, coarse "
       "levels {} ({} Newton steps, {} GMRES its){}, {:.2f} s, contact load fraction {:.4f}, contact area {:.4f}, h_c "
       "{:.4g} m, mu {:.4f}, residual {:.2e}, load error "
       "{:.2e}, complementarity {:.2e}, peak RSS {:.0f} B/node\n",
-      n, speed, to_string(solve), neighbourhood, sequenced ? "sequenced" : "cold",
+      n, speed, to_string(solve), neighbourhood, sequenced ? "sequenced" : "cold", to_string(preconditioner),
       f.converged() ? "converged" : "FAILED", f.message, f.iterations, f.krylov_iterations,
       f.max_krylov_iterations_per_step, f.line_search_halvings, f.coarse_levels, f.coarse_iterations,
       f.coarse_krylov_iterations, f.sequencing_fell_back ? ", fell back cold" : "", f.wall_seconds,

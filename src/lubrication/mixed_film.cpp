@@ -65,8 +65,13 @@ void MixedFilmOptions::validate() const {
   if (max_iterations < 1) {
     throw OptionError("max_iterations", std::to_string(max_iterations), "is invalid: at least 1 Newton step");
   }
-  detail::MixedKrylovSettings{krylov_restart, krylov_max_iterations, krylov_tolerance, preconditioner_neighbourhood}
+  detail::MixedKrylovSettings{krylov_restart, krylov_max_iterations, krylov_tolerance, preconditioner_neighbourhood,
+                              preconditioner}
       .validate();
+  if (preconditioner != KrylovPreconditioner::multigrid && preconditioner != KrylovPreconditioner::sparse_lu) {
+    throw OptionError("preconditioner", std::to_string(static_cast<int>(preconditioner)),
+                      "is invalid: allowed are multigrid, sparse-lu");
+  }
   friction.validate();
 }
 
@@ -82,7 +87,7 @@ bool takes_krylov(const Grid& grid, const MixedFilmOptions& options) {
 
 detail::MixedKrylovSettings mixed_krylov_settings(const MixedFilmOptions& options) {
   return {options.krylov_restart, options.krylov_max_iterations, options.krylov_tolerance,
-          options.preconditioner_neighbourhood};
+          options.preconditioner_neighbourhood, options.preconditioner};
 }
 
 }  // namespace

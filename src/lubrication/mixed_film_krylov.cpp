@@ -18,7 +18,8 @@
 // (Venner & Lubrecht 2000's differential deflection), and in the closed
 // contact rows the truncated K keeps the stiff local part of the contact
 // operator, leaving GMRES its smooth far field. The bordered system (h0
-// column c, load row l) is solved through B's LU by the Schur complement.
+// column c, load row l) is solved through B's approximate inverse (the
+// block Gauss–Seidel's or the LU's) by the Schur complement.
 #include "mixed_film_krylov.hpp"
 
 #include <fmt/format.h>
@@ -45,11 +46,15 @@ constexpr double kFillAllowance = 20.0;
 
 double mixed_krylov_memory_estimate(std::size_t nodes, const MixedKrylovSettings& settings) {
   const double entries = preconditioner_node_entries(settings.neighbourhood);
+  // The block preconditioner's M and F hold a mass row's entries each (half
+  // of the node's), the V-cycle its levels; the LU the whole sparse part,
+  // its copy and its fill.
+  const double preconditioner = settings.preconditioner == KrylovPreconditioner::multigrid
+                                    ? entries * 12.0 + MixedBlockPreconditioner::bytes_per_node(0.5 * entries)
+                                    : entries * (12.0 + 12.0) + entries * kFillAllowance * 12.0;
   const double per_node = 2.0 * 8.0 * (settings.restart + 1)  // GMRES basis, 2 unknowns per node
                           + 16.0 * sizeof(LocalTerm)          // local rows
-                          + entries * (12.0 + 12.0)           // the compressed rows and the LU's copy
-                          + entries * kFillAllowance * 12.0   // the LU's supernodes
-                          + 8.0 * 60.0;                       // the Newton state and work vectors
+                          + preconditioner + 8.0 * 60.0;      // the Newton state and work vectors
   return per_node * static_cast<double>(nodes);
 }
 
@@ -70,7 +75,12 @@ MixedKrylovSolver::MixedKrylovSolver(InfluenceOperator& op, const ReynoldsStenci
   head_out_.resize(2 * ni);
   gmres_.resize(m_, settings_.restart);
   work_.resize(m_);
-  preconditioner_ = make_film_preconditioner(KrylovPreconditioner::sparse_lu, op.grid(), 0);
+  if (settings_.preconditioner == KrylovPreconditioner::multigrid) {
+    const int line_axis = topology.couette_y() > topology.couette_x() ? 1 : 0;
+    block_ = std::make_unique<MixedBlockPreconditioner>(op.grid(), line_axis, local_);
+  } else {
+    preconditioner_ = make_film_preconditioner(KrylovPreconditioner::sparse_lu, op.grid(), 0);
+  }
 }
 
 void MixedKrylovSolver::apply_jacobian(const Eigen::VectorXd& v, Eigen::VectorXd& out) {
@@ -110,7 +120,58 @@ void MixedKrylovSolver::film_change(const Eigen::VectorXd& step, Eigen::VectorXd
   if (scales_.load_control) out.array() += step[2 * ni];
 }
 
+void MixedKrylovSolver::apply_inverse(const Eigen::VectorXd& in, Eigen::VectorXd& out) {
+  if (block_) {
+    block_->apply(in, out);
+  } else {
+    preconditioner_->apply(in, out);
+  }
+}
+
+bool MixedKrylovSolver::factorise_block(std::string& message) {
+  const auto ni = static_cast<Eigen::Index>(n_);
+  const double H = scales_.film, mass = scales_.mass;
+  const std::vector<char>& open_film = rows_->open_film;
+  const std::vector<char>& closed = *closed_;
+  border_column_.setZero();
+  matrix_.clear();
+  film_matrix_.clear();
+  row_scratch_.clear();
+  film_scratch_.clear();
+  for (std::size_t k = 0; k < n_; ++k) {
+    const auto row = static_cast<int>(k);
+    const auto kk = static_cast<Eigen::Index>(k);
+    if (topology_.fixed(k)) {
+      row_scratch_.emplace_back(row, 1.0);
+    } else {
+      for (std::size_t t = rows_->start[k]; t < rows_->start[k + 1]; ++t) {
+        const LocalTerm& term = rows_->terms[t];
+        const auto j = static_cast<Eigen::Index>(term.node);
+        row_scratch_.emplace_back(static_cast<int>(j),
+                                  (term.by_pressure * dp_ds_[j] + term.by_fraction * dtheta_ds_[j]) / mass);
+        const double by_film = open_film[term.node] != 0 ? term.by_film / mass : 0.0;
+        border_column_[kk] += by_film;
+        if (by_film == 0.0) continue;
+        local_.for_each(term.node, [&](std::size_t node, double k_value) {
+          const auto mm = static_cast<Eigen::Index>(node);
+          film_scratch_.emplace_back(static_cast<int>(node), by_film * k_value);
+          if (closed[node] == 0) row_scratch_.emplace_back(static_cast<int>(node), by_film * k_value * dp_ds_[mm]);
+        });
+      }
+    }
+    matrix_.append_row(row_scratch_);
+    film_matrix_.append_row(film_scratch_);
+  }
+  for (std::size_t k = 0; k < n_; ++k)
+    border_column_[ni + static_cast<Eigen::Index>(k)] = closed[k] != 0 ? 1.0 / H : 0.0;
+  return block_->factorise(matrix_, film_matrix_, closed, dp_ds_, scales_.pressure, H, message);
+}
+
 bool MixedKrylovSolver::factorise(std::string& message) {
+  if (block_) {
+    if (!factorise_block(message)) return false;
+    return factorise_border(message);
+  }
   const auto ni = static_cast<Eigen::Index>(n_);
   const double P = scales_.pressure, H = scales_.film, mass = scales_.mass;
   const std::vector<char>& open_film = rows_->open_film;
@@ -157,8 +218,14 @@ bool MixedKrylovSolver::factorise(std::string& message) {
     matrix_.append_row(row_scratch_);
   }
   if (!preconditioner_->factorise(matrix_, message)) return false;
+  return factorise_border(message);
+}
+
+bool MixedKrylovSolver::factorise_border(std::string& message) {
+  const auto ni = static_cast<Eigen::Index>(n_);
+  const double P = scales_.pressure;
   if (!scales_.load_control) return true;
-  preconditioner_->apply(border_column_, border_solved_);
+  apply_inverse(border_column_, border_solved_);
   load_row_.head(ni) = scales_.area_over_load * dp_ds_;
   load_row_.tail(ni).setConstant(scales_.area_over_load * P);
   border_pivot_ = load_row_.dot(border_solved_);
@@ -172,7 +239,7 @@ bool MixedKrylovSolver::factorise(std::string& message) {
 void MixedKrylovSolver::apply_preconditioner(const Eigen::VectorXd& v, Eigen::VectorXd& out) {
   const auto two_n = static_cast<Eigen::Index>(2 * n_);
   head_in_ = v.head(two_n);
-  preconditioner_->apply(head_in_, head_out_);
+  apply_inverse(head_in_, head_out_);
   if (!scales_.load_control) {
     out = head_out_;
     return;

@@ -4,10 +4,11 @@
 // influence operator per iteration, on the total pressure: K is never
 // formed), right-preconditioned by a sparse approximation of it (the
 // Reynolds stencil and the closed contact rows with K truncated to a few
-// cells around each node) factorised by Eigen's SparseLU
-// (film_preconditioner.hpp), kept across solves while GMRES converges
-// quickly with it (film_krylov_solver.hpp's LaggedPreconditioner). Private
-// to the library.
+// cells around each node), inverted approximately by block Gauss–Seidel
+// with the EHL film's V-cycle on the mass rows (mixed_block_preconditioner.hpp)
+// or exactly by Eigen's SparseLU (film_preconditioner.hpp), and kept across
+// solves while GMRES converges quickly with it (film_krylov_solver.hpp's
+// LaggedPreconditioner). Private to the library.
 #pragma once
 
 #include <Eigen/Core>
@@ -21,13 +22,14 @@
 #include "halfspace/lubrication/reynolds_stencil.hpp"
 #include "halfspace/operators/influence_operator.hpp"
 #include "local_influence.hpp"
+#include "mixed_block_preconditioner.hpp"
 #include "restarted_gmres.hpp"
 #include "reynolds_linearisation.hpp"
 
 namespace halfspace::lubrication::detail {
 
-// The EHL film's GMRES settings; the preconditioner is the mixed film's own
-// (B's sparse LU), whatever `preconditioner` says.
+// The EHL film's GMRES settings; `preconditioner` multigrid is the block
+// Gauss–Seidel of mixed_block_preconditioner.hpp, sparse_lu B's sparse LU.
 using MixedKrylovSettings = FilmKrylovSettings;
 
 // The Newton system's state at one step: the mass rows' local derivatives
@@ -102,8 +104,14 @@ class MixedKrylovSolver {
   // The preconditioner: B (2n x 2n, sparse) bordered by the h0 column and
   // the load row under load control.
   CsrMatrix matrix_;
-  std::vector<std::pair<int, double>> row_scratch_;
+  std::vector<std::pair<int, double>> row_scratch_, film_scratch_;
   std::unique_ptr<FilmPreconditioner> preconditioner_;
+  // The block preconditioner: the mass rows' M and F (n x n).
+  CsrMatrix film_matrix_;
+  std::unique_ptr<MixedBlockPreconditioner> block_;
+  void apply_inverse(const Eigen::VectorXd& in, Eigen::VectorXd& out);
+  bool factorise_block(std::string& message);
+  bool factorise_border(std::string& message);
   LaggedPreconditioner lagged_;
   Eigen::VectorXd load_row_, border_column_, border_solved_, head_in_, head_out_;
   double border_pivot_ = 0.0;

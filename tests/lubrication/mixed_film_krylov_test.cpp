@@ -300,6 +300,33 @@ TEST(MixedFilmKrylovTest, SequencedFineIterationOpensContactEdgesWithoutCreeping
   EXPECT_NEAR(f.contact_load_fraction, 0.2542, 5e-5);
 }
 
+// The two preconditioners of the GMRES path (the block Gauss–Seidel with
+// the multigrid V-cycle on the mass rows, the default, and the sparse LU of
+// the whole sparse part) give the same film on the grid-sequenced 34^2
+// rough point contact, within the solver's tolerances, each holding its
+// conditions apart from the solver.
+TEST(MixedFilmKrylovTest, MultigridPreconditionerGivesTheSparseLuFilm) {
+  const RoughContact point = rough_point(34, 0.2e-6);
+  FftInfluenceOperator op(point.grid, kEStar);
+  const double speed = 0.1;
+  MixedFilmOptions multigrid = options_for(kPointLoad, FilmLinearSolve::automatic);
+  EXPECT_EQ(multigrid.preconditioner, KrylovPreconditioner::multigrid);
+  MixedFilmOptions sparse_lu = multigrid;
+  sparse_lu.preconditioner = KrylovPreconditioner::sparse_lu;
+  const MixedFilm by_multigrid = solve_mixed_film(op, point.gap, flow(speed), laws(), multigrid);
+  const MixedFilm by_lu = solve_mixed_film(op, point.gap, flow(speed), laws(), sparse_lu);
+  ASSERT_TRUE(by_multigrid.converged()) << by_multigrid.message;
+  ASSERT_TRUE(by_lu.converged()) << by_lu.message;
+  EXPECT_FALSE(by_multigrid.sequencing_fell_back);
+  expect_solution_holds(op, point.gap, flow(speed), multigrid, by_multigrid);
+  const double peak = by_lu.max_pressure;
+  EXPECT_LE((by_multigrid.pressure - by_lu.pressure).abs().maxCoeff(), 1e-6 * peak);
+  EXPECT_LE((by_multigrid.fluid_pressure - by_lu.fluid_pressure).abs().maxCoeff(), 2e-4 * peak);
+  EXPECT_NEAR(by_multigrid.contact_load_fraction, by_lu.contact_load_fraction, 3e-5);
+  EXPECT_EQ(by_multigrid.contact_area_fraction, by_lu.contact_area_fraction);
+  EXPECT_NEAR(by_multigrid.central_film_thickness, by_lu.central_film_thickness, 1e-6 * by_lu.central_film_thickness);
+}
+
 TEST(MixedFilmKrylovTest, RefusesInvalidKrylovOptionsNamingThem) {
   const auto message = [](const MixedFilmOptions& options) {
     try {
@@ -321,6 +348,9 @@ TEST(MixedFilmKrylovTest, RefusesInvalidKrylovOptionsNamingThem) {
   options = options_for(kPointLoad, FilmLinearSolve::gmres);
   options.krylov_max_iterations = 0;
   EXPECT_NE(message(options).find("krylov_max_iterations"), std::string::npos);
+  options = options_for(kPointLoad, FilmLinearSolve::gmres);
+  options.preconditioner = static_cast<KrylovPreconditioner>(7);
+  EXPECT_NE(message(options).find("preconditioner"), std::string::npos);
 }
 
 }  // namespace

@@ -97,6 +97,12 @@ struct MixedFilmOptions {
   int krylov_max_iterations = 800;
   double krylov_tolerance = 1e-9;
   int preconditioner_neighbourhood = 1;
+  // The GMRES preconditioner: block Gauss–Seidel with the EHL film's
+  // multigrid V-cycle on the mass rows and a sparse LU on the closed
+  // contact rows (its cost grows as the nodes), or the sparse LU of the
+  // whole 2n x 2n sparse part (fill growing faster than n: kept for
+  // cross-checks).
+  KrylovPreconditioner preconditioner = KrylovPreconditioner::multigrid;
   // Grid sequencing on 2D grids of more than kMixedSequencingNodes nodes
   // with even cell counts, under load control without a start.
   bool grid_sequencing = true;
