@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 #include <variant>
 
 #include "halfspace/kernels/love_rectangle.hpp"
@@ -55,24 +56,27 @@ double NormalKernel::inverse_symbol(double q, double cells) const {
 
 EvenSymbol NormalKernel::periodic_symbol() const {
   EvenSymbol kernel(grid_.dimension() == 1 ? 1 : grid_.ny(), grid_.nx() / 2 + 1);
-  const double inverse_n = 1.0 / static_cast<double>(grid_.size());
   for (std::size_t r = 0; r < kernel.stored_rows(); ++r) {
-    for (std::size_t c = 0; c < kernel.cols(); ++c) kernel.at(r, c) = symbol(wavenumber(r, c)) * inverse_n;
+    for (std::size_t c = 0; c < kernel.cols(); ++c) kernel.at(r, c) = periodic_symbol(r, c);
   }
   return kernel;
 }
 
 EvenSymbol NormalKernel::preconditioner_symbol() const {
   EvenSymbol inverse(grid_.dimension() == 1 ? 1 : grid_.ny(), grid_.nx() / 2 + 1);
-  const auto cells = static_cast<double>(grid_.size());
   for (std::size_t r = 0; r < inverse.stored_rows(); ++r) {
-    for (std::size_t c = 0; c < inverse.cols(); ++c) {
-      const double q = wavenumber(r, c);
-      if (q > 0.0) inverse.at(r, c) = inverse_symbol(q, cells);
-    }
+    for (std::size_t c = 0; c < inverse.cols(); ++c) inverse.at(r, c) = preconditioner_symbol(r, c);
   }
-  inverse.at(0, 0) = preconditioner_at_zero();
   return inverse;
+}
+
+double NormalKernel::periodic_symbol(std::size_t row, std::size_t col) const {
+  return symbol(wavenumber(row, col)) * (1.0 / static_cast<double>(grid_.size()));
+}
+
+double NormalKernel::preconditioner_symbol(std::size_t row, std::size_t col) const {
+  const double q = wavenumber(row, col);
+  return q > 0.0 ? inverse_symbol(q, static_cast<double>(grid_.size())) : preconditioner_at_zero();
 }
 
 double NormalKernel::preconditioner_at_zero() const {
@@ -146,6 +150,24 @@ void NormalKernel::add_real_space_remainder(std::vector<double>& quadrant, std::
   });
 }
 
+// The quadrant rows a block of wrap-around rows reads are consecutive
+// unless it spans row ny (serially, all of them).
+void NormalKernel::write_padded_rows(std::size_t first, std::size_t rows, std::span<double> values) const {
+  const std::size_t ny = grid_.dimension() == 1 ? 0 : grid_.ny();
+  std::size_t low = ny;
+  std::size_t high = 0;
+  for (std::size_t r = first; r < first + rows; ++r) {
+    low = std::min(low, ny == 0 ? 0 : mirrored(r, ny));
+    high = std::max(high, ny == 0 ? 0 : mirrored(r, ny));
+  }
+  const std::vector<double> quadrant = free_quadrant(low, high - low + 1);
+  const std::size_t nx = grid_.nx();
+  linalg::for_each_row(rows, 2 * nx, [&](std::size_t i) {
+    const std::size_t dj = (ny == 0 ? 0 : mirrored(first + i, ny)) - low;
+    for (std::size_t c = 0; c < 2 * nx; ++c) values[i * 2 * nx + c] = quadrant[dj * (nx + 1) + mirrored(c, nx)];
+  });
+}
+
 bool NormalKernel::spectral_remainder() const {
   if (!layered_) return false;
   const double length = static_cast<double>(grid_.nx()) * grid_.dx();
@@ -172,17 +194,12 @@ double NormalKernel::padded_remainder(std::size_t row, std::size_t col) const {
   return layered_->remainder_cell_spectrum(qx, qy, dx, grid_.dy());
 }
 
-// The inverse DFT's sum over the full spectrum (columns other than 0 and nx
-// stand for two).
+// The inverse DFT's sum over the full spectrum, row by row.
 double NormalKernel::padded_self_influence(const EvenSymbol& padded) const {
-  double sum = 0.0;
-  for (std::size_t r = 0; r < padded.rows(); ++r) {
-    const std::size_t stored = padded.folded(r);
-    for (std::size_t c = 0; c < padded.cols(); ++c) {
-      sum += (c == 0 || c == grid_.nx() ? 1.0 : 2.0) * padded.at(stored, c);
-    }
-  }
-  return sum;
+  const std::size_t cols = padded.cols();
+  return padded_self_influence(padded.rows() * cols, [&](std::size_t k) {
+    return std::pair{padded.at(padded.folded(k / cols), k % cols), k % cols};
+  });
 }
 
 }  // namespace halfspace::kernels

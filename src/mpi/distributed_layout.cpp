@@ -1,4 +1,5 @@
-// The slab operators behind solvers::Layout: make_solver runs the serial
+// The slab transforms behind solvers::Layout, on which the one
+// FftInfluenceOperator, FourierPreconditioner and TangentialOperator run: make_solver runs the serial
 // solver loops (polonsky_keer.cpp, the multilevel and adhesive solvers)
 // unchanged over them, their reductions going through the operator's
 // communicator. A hardness cap is elementwise (the projection onto [0, H])
@@ -12,11 +13,10 @@
 #include <utility>
 #include <variant>
 
-#include "halfspace/mpi/slab_fft.hpp"
-#include "halfspace/mpi/slab_fourier_operator.hpp"
-#include "halfspace/mpi/slab_free_operator.hpp"
 #include "halfspace/mpi/slab_level_transfer.hpp"
-#include "halfspace/mpi/slab_tangential_transforms.hpp"
+#include "halfspace/mpi/slab_spectral_transforms.hpp"
+#include "halfspace/operators/fft_influence_operator.hpp"
+#include "halfspace/solvers/fourier_preconditioner.hpp"
 
 namespace halfspace::mpi {
 namespace {
@@ -31,16 +31,14 @@ constexpr const char* kNotYet = "is not available with more than one process yet
 solvers::ElasticOperators DistributedLayout::make_operators(const Grid& grid, const HalfSpace& half_space, bool fourier,
                                                             FftPlanning planning) const {
   solvers::ElasticOperators made;
-  if (grid.periodic()) {
-    auto transform = std::make_shared<SlabRealFft>(grid.nx(), grid.ny(), comm_, planning);
-    made.op = std::make_unique<SlabFourierOperator>(grid, half_space, transform);
-    if (fourier) made.fourier = std::make_unique<SlabFourierPreconditioner>(grid, half_space, transform);
-    return made;
-  }
-  auto op = std::make_unique<SlabFreeOperator>(grid, half_space, comm_, planning);
+  std::shared_ptr<operators::SpectralTransforms> transforms = make_slab_transforms(grid, comm_, planning, {.count = 1});
+  auto op = std::make_unique<FftInfluenceOperator>(grid, half_space, transforms);
   if (fourier) {
-    made.fourier = std::make_unique<SlabFourierPreconditioner>(
-        grid, half_space, std::make_shared<SlabRealFft>(grid.nx(), grid.ny(), comm_, planning, op->scratch()));
+    if (!grid.periodic()) {
+      transforms =
+          make_slab_transforms(grid, comm_, planning, {.count = 1, .unpadded = true, .workspace = op->scratch()});
+    }
+    made.fourier = std::make_unique<solvers::FourierPreconditioner>(grid, half_space, std::move(transforms));
   }
   made.op = std::move(op);
   return made;
@@ -49,12 +47,12 @@ solvers::ElasticOperators DistributedLayout::make_operators(const Grid& grid, co
 std::unique_ptr<TangentialOperator> DistributedLayout::make_tangential_operator(const Grid& grid,
                                                                                 const ElasticPair& pair,
                                                                                 FftPlanning planning) const {
-  return std::make_unique<TangentialOperator>(grid, pair, make_slab_tangential_transforms(grid, comm_, planning));
+  return std::make_unique<TangentialOperator>(grid, pair, make_slab_transforms(grid, comm_, planning));
 }
 
-std::unique_ptr<operators::TangentialTransforms> DistributedLayout::make_transforms(const Grid& grid,
-                                                                                    FftPlanning planning) const {
-  return make_slab_tangential_transforms(grid, comm_, planning);
+std::unique_ptr<operators::SpectralTransforms> DistributedLayout::make_transforms(const Grid& grid,
+                                                                                  FftPlanning planning) const {
+  return make_slab_transforms(grid, comm_, planning);
 }
 
 solvers::RowSlab DistributedLayout::rows(const Grid& grid) const {

@@ -26,9 +26,6 @@
 #include <vector>
 
 #include "halfspace/error.hpp"
-#include "halfspace/fft/grid_transform.hpp"
-#include "halfspace/fft/padded_real_fft.hpp"
-#include "halfspace/fft/real_fft.hpp"
 #include "halfspace/kernels/cerruti_rectangle.hpp"
 #include "halfspace/kernels/coupling_rectangle.hpp"
 #include "halfspace/kernels/coupling_strip.hpp"
@@ -49,84 +46,7 @@ long signed_offset(std::size_t k, std::size_t n) {
   return k < n ? static_cast<long>(k) : k == n ? 0 : static_cast<long>(k) - 2 * static_cast<long>(n);
 }
 
-// The serial transforms: the grid's own transform per component on
-// periodic grids (shared with nothing), the pruned padded one on free grids.
-class SerialTangentialTransforms final : public TangentialTransforms {
- public:
-  SerialTangentialTransforms(const Grid& grid, FftPlanning planning) : size_(grid.size()) {
-    if (grid.periodic()) {
-      for (auto& t : periodic_) t = make_grid_transform(grid, planning);
-    } else {
-      for (auto& t : padded_)
-        t = std::make_unique<PaddedRealFft>(grid.dimension() == 1 ? 1 : grid.ny(), grid.nx(), planning);
-    }
-  }
-
-  std::size_t local_size() const override { return size_; }
-  const linalg::Communicator& communicator() const override { return linalg::serial_communicator(); }
-  std::size_t spectrum_blocks() const override { return spectrum_rows(); }
-  std::size_t spectrum_length() const override {
-    return padded_[0] ? padded_[0]->spectrum_cols() : periodic_[0]->spectrum_cols();
-  }
-  SpectrumMode mode(std::size_t k) const override { return {k / spectrum_length(), k % spectrum_length()}; }
-  std::size_t spectrum_rows() const override { return padded_[0] ? padded_[0]->spectrum_rows() : periodic_[0]->rows(); }
-  double transform_size() const override {
-    return padded_[0] ? static_cast<double>(padded_[0]->padded_size()) : static_cast<double>(size_);
-  }
-
-  std::span<std::complex<double>> forward(int k, std::span<const double> values) override {
-    if (padded_[0]) {
-      padded_[k]->forward(values);
-      return padded_[k]->spectrum();
-    }
-    RealFft& fft = *periodic_[k];
-    if (!fft.forward_from(values)) {
-      std::span<double> input = fft.input();
-      linalg::for_each_index(values.size(), [&](std::size_t i) { input[i] = values[i]; });
-      fft.forward();
-    }
-    return fft.spectrum();
-  }
-
-  std::span<std::complex<double>> spectrum(int k) override {
-    return padded_[0] ? padded_[k]->spectrum() : periodic_[k]->spectrum();
-  }
-
-  void backward(int k, std::span<double> values) override {
-    if (padded_[0]) {
-      padded_[k]->backward(values);
-      return;
-    }
-    RealFft& fft = *periodic_[k];
-    if (!fft.backward_into(values)) {
-      fft.backward();
-      std::span<const double> output = fft.output();
-      linalg::for_each_index(values.size(), [&](std::size_t i) { values[i] = output[i]; });
-    }
-  }
-
-  std::span<const std::complex<double>> transform_wraparound(
-      const std::function<double(std::size_t row, std::size_t col)>& value) override {
-    PaddedRealFft& fft = *padded_[0];
-    linalg::for_each_row(fft.spectrum_rows(), fft.spectrum_cols(), [&](std::size_t r) {
-      std::span<double> row = fft.padded_row(r);
-      for (std::size_t c = 0; c < row.size(); ++c) row[c] = value(r, c);
-    });
-    fft.forward_all_rows();
-    return fft.spectrum();
-  }
-
- private:
-  std::size_t size_;
-  std::shared_ptr<RealFft> periodic_[2];      // periodic grids: one transform per component
-  std::unique_ptr<PaddedRealFft> padded_[2];  // free grids
-};
-
 }  // namespace
-
-std::unique_ptr<TangentialTransforms> make_serial_transforms(const Grid& grid, FftPlanning planning) {
-  return std::make_unique<SerialTangentialTransforms>(grid, planning);
-}
 
 std::string coated_free_grid_refusal(const Grid& grid, const ElasticPair& pair) {
   if (!pair.coating() || grid.periodic()) return {};
@@ -158,7 +78,7 @@ void check_body(const Grid& grid, const ElasticPair& pair) {
 }  // namespace
 
 struct TangentialOperator::Impl {
-  Impl(const Grid& g, const ElasticPair& p, std::unique_ptr<TangentialTransforms> t)
+  Impl(const Grid& g, const ElasticPair& p, std::unique_ptr<SpectralTransforms> t)
       : grid(g), pair(p), transforms(std::move(t)) {
     spectrum_rows = transforms->spectrum_blocks();
     spectrum_cols = transforms->spectrum_length();
@@ -370,7 +290,7 @@ struct TangentialOperator::Impl {
 
   Grid grid;
   ElasticPair pair;
-  std::unique_ptr<TangentialTransforms> transforms;
+  std::unique_ptr<SpectralTransforms> transforms;
   std::size_t spectrum_rows = 0;  // the entries held here, as blocks x length
   std::size_t spectrum_cols = 0;
   std::vector<double> xx, yy, xy;  // the real symbol, one per entry held here
@@ -392,7 +312,7 @@ TangentialOperator::TangentialOperator(const Grid& grid, const ElasticPair& pair
     : TangentialOperator(grid, pair, make_serial_transforms(grid, planning)) {}
 
 TangentialOperator::TangentialOperator(const Grid& grid, const ElasticPair& pair,
-                                       std::unique_ptr<TangentialTransforms> transforms)
+                                       std::unique_ptr<SpectralTransforms> transforms)
     : impl_((check_body(grid, pair), std::make_unique<Impl>(grid, pair, std::move(transforms)))) {}
 
 std::size_t TangentialOperator::local_size() const {

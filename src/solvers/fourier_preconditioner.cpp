@@ -5,6 +5,8 @@
 // half-space gets the inverse of its own kernel, E1*|q| / (2 M(q t)).
 #include "halfspace/solvers/fourier_preconditioner.hpp"
 
+#include <fmt/format.h>
+
 #include <cassert>
 #include <complex>
 #include <memory>
@@ -12,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "halfspace/error.hpp"
 #include "halfspace/fft/even_symbol.hpp"
 #include "halfspace/fft/grid_transform.hpp"
 #include "halfspace/fft/real_fft.hpp"
@@ -43,12 +46,28 @@ struct FourierPreconditioner::Impl {
     }
   }
 
+  // On spectral transforms of the grid's own spectrum.
+  Impl(const Grid& g, const HalfSpace& half_space, std::shared_ptr<operators::SpectralTransforms> t)
+      : grid(g), symbol(0, 0), kernel(nullptr), transforms(std::move(t)) {
+    if (transforms->transform_size() != static_cast<double>(g.size())) {
+      throw InputError(
+          fmt::format("FourierPreconditioner: the transforms are not the {} grid's own (unpadded)", g.shape_string()));
+    }
+    const kernels::NormalKernel normal(g, half_space);
+    held = operators::held_values(
+        *transforms, [&](operators::SpectrumMode m) { return normal.preconditioner_symbol(m.row, m.col); });
+  }
+
   Grid grid;
   std::shared_ptr<RealFft> transform;     // own, or shared with the operator
   std::shared_ptr<SingleRealFft> single;  // instead of `transform`: mixed precision
   EvenSymbol symbol;                      // E*|q|/(2N) or its layered form, rows folded (even in qy); or empty:
   const EvenSymbol* kernel;               // the operator's K symbol, whose inverse it forms
   EvenSymbol::Inverse inverse;            // 1/N^2 and the mean mode, with `kernel`
+  // Instead of the transforms above: spectral transforms and the symbol on
+  // the entries held there.
+  std::shared_ptr<operators::SpectralTransforms> transforms;
+  std::vector<double> held;
 };
 
 FourierPreconditioner::FourierPreconditioner(const Grid& grid, const HalfSpace& half_space, FftPlanning planning)
@@ -76,12 +95,20 @@ FourierPreconditioner::FourierPreconditioner(const Grid& grid, const HalfSpace& 
                                    checked_grid_transform(grid, std::move(transform), "FourierPreconditioner"),
                                    &kernel)) {}
 
+FourierPreconditioner::FourierPreconditioner(const Grid& grid, const HalfSpace& half_space,
+                                             std::shared_ptr<operators::SpectralTransforms> transforms)
+    : impl_(std::make_unique<Impl>(grid, half_space, std::move(transforms))) {}
+
 FourierPreconditioner::~FourierPreconditioner() = default;
 
 void FourierPreconditioner::apply(std::span<const double> in, std::span<double> out) {
   Impl& m = *impl_;
-  assert(in.size() == m.grid.size() && out.size() == m.grid.size());
   // `in` is read before `out` is written, so the two may alias.
+  if (m.transforms) {
+    operators::apply_symbol(*m.transforms, 0, m.held, in, out);
+    return;
+  }
+  assert(in.size() == m.grid.size() && out.size() == m.grid.size());
   if (m.single) {
     m.apply(*m.single, in, out);
   } else {

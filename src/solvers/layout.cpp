@@ -100,7 +100,7 @@ std::unique_ptr<LevelTransfer> Layout::level_transfer(const Grid& /*fine*/, std:
 }
 
 // The whole grid here.
-std::unique_ptr<operators::TangentialTransforms> Layout::make_transforms(const Grid& grid, FftPlanning planning) const {
+std::unique_ptr<operators::SpectralTransforms> Layout::make_transforms(const Grid& grid, FftPlanning planning) const {
   return operators::make_serial_transforms(grid, planning);
 }
 

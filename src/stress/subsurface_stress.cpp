@@ -577,7 +577,7 @@ struct SubsurfaceStress::Impl {
   // The rows of the grid held here, and the layout's transforms of its
   // fields, whose spectrum entries held here number `held`.
   solvers::RowSlab slab;
-  std::unique_ptr<operators::TangentialTransforms> transforms;
+  std::unique_ptr<operators::SpectralTransforms> transforms;
   std::size_t held = 0;
   // Per traction (Traction order): whether it was set, and its spectrum.
   static constexpr std::size_t kTractionCount = 3;

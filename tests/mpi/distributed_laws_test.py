@@ -163,10 +163,16 @@ solve_case("adhesion-coated-approach", coated + ["--adhesion", "exponential", "-
            (), kAdhesiveLooseTolerance, kAdhesivePathAttributes)
 
 # Adhesion on free grids: the energy on the whole zero-padded grid, each
-# process its rows j and ny + j (SlabFreeOperator's circulant form), under
-# displacement and load control and with Maugis-Dugdale by SPG, compared as
-# the periodic ones are. Under load control at 1e-10 the serial solve breaks
-# down (no decrease in the line search at a residual of 3.8e-10): 1e-9.
+# process its rows j and ny + j (the slab transforms' padded circulant form),
+# under displacement and load control and with Maugis-Dugdale by SPG,
+# compared as the periodic ones are. Under load control at 1e-10 the serial
+# solve breaks down (no decrease in the line search at a residual of
+# 3.8e-10): 1e-9. SPG on a free grid stops at --tol 1e-8 where rounding
+# puts it (210 to 243 iterations): the serial adhesive force itself moves
+# 2.1e-6 between --tol 1e-8 and 1e-9, and the distributed ones were
+# measured 1.5e-7 to 1.6e-6 from the serial one (the padded kernel's
+# spectrum rounded differently on slabs): compared within kSpgFreeTolerance.
+kSpgFreeTolerance = 5e-6
 free_exponential = exponential[:3] + ["free"] + exponential[4:]
 solve_case("adhesion-free-approach", free_exponential + ["--approach", "2e-7"], skipped=kAdhesivePathAttributes)
 solve_case("adhesion-free-force", free_exponential[:-1] + ["1e-9", "--mean-pressure", "1e6"], (),
@@ -174,7 +180,7 @@ solve_case("adhesion-free-force", free_exponential[:-1] + ["1e-9", "--mean-press
 solve_case("adhesion-free-md-spg", adhesive[:3] + ["free"] + adhesive[4:-4] +
            ["--adhesion", "md", "--work-of-adhesion", "0.05", "--adhesion-stress", "5e6",
             "--adhesion-precondition", "off", "--tol", "1e-8", "--approach", "2e-7"],
-           (), kPaperFormTolerance, kPaperFormPathAttributes)
+           (), kSpgFreeTolerance, kPaperFormPathAttributes)
 
 def generate_case(name, arguments):
     serial_output = harness.serial_output(name, "generate", arguments)

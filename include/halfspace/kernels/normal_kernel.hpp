@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "halfspace/fft/even_symbol.hpp"
@@ -46,6 +47,10 @@ class NormalKernel {
   // operators of either precision multiply by these.
   EvenSymbol periodic_symbol() const;
   EvenSymbol preconditioner_symbol() const;
+  // The same at row `row`, column `col` of that spectrum (the entries a
+  // distributed transform holds).
+  double periodic_symbol(std::size_t row, std::size_t col) const;
+  double preconditioner_symbol(std::size_t row, std::size_t col) const;
   // preconditioner_symbol()'s mean mode: inverse_symbol(q, N) at the
   // smallest non-zero wavenumber q. Elsewhere it is 1/(N^2 periodic_symbol()),
   // which the preconditioner on an operator's kernel forms as it applies it.
@@ -75,6 +80,10 @@ class NormalKernel {
       for (std::size_t c = 0; c < values.size(); ++c) values[c] = quadrant[dj * (nx + 1) + mirrored(c, nx)];
     });
   }
+  // Rows [first, first + rows) of the same wrap-around grid, 2nx values
+  // each in `values`, from the quadrant rows they read (a block of a
+  // distributed transform's rows).
+  void write_padded_rows(std::size_t first, std::size_t rows, std::span<double> values) const;
   // Distance (in cells) of wrap-around index k on a 2n-periodic axis: k,
   // then 2n - k for the negative offsets. The middle index n gets distance
   // n: it multiplies only padding, never reaching the first n outputs.
@@ -93,6 +102,18 @@ class NormalKernel {
   double padded_remainder(std::size_t row, std::size_t col) const;
   // K_ii of a padded symbol (1/N folded in): its inverse DFT at offset 0.
   double padded_self_influence(const EvenSymbol& padded) const;
+  // The same over `count` bins of it, bin(k) giving {value, column kx}
+  // (the bins a process holds; the caller sums over the processes).
+  template <class Bin>
+  double padded_self_influence(std::size_t count, Bin&& bin) const {
+    double sum = 0.0;
+    for (std::size_t k = 0; k < count; ++k) {
+      const auto [value, col] = bin(k);
+      // Columns other than kx = 0 and nx stand for two bins.
+      sum += (col == 0 || col == grid_.nx() ? 1.0 : 2.0) * value;
+    }
+    return sum;
+  }
 
  private:
   void add_real_space_remainder(std::vector<double>& quadrant, std::size_t first_row, std::size_t rows) const;

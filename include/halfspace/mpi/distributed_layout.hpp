@@ -1,6 +1,6 @@
 // A grid spread over MPI processes in FFTW-MPI's slabs of rows, as a
-// solvers::Layout: its operators are the slab ones (periodic:
-// SlabFourierOperator, homogeneous or coated; free: SlabFreeOperator), its
+// solvers::Layout: its operators are the serial ones on slab transforms
+// (slab_spectral_transforms.hpp; periodic or free, homogeneous or coated), its
 // multilevel levels SlabLevelTransfer's (small ones gathered, solved whole
 // on every process), and what it does not run yet is refused with a message
 // that names the alternative, never solved wrongly. Compiled only with
@@ -20,11 +20,12 @@ class DistributedLayout final : public solvers::Layout {
   // Over `comm`, which must outlive the layout and everything it makes.
   explicit DistributedLayout(const MpiCommunicator& comm) : comm_(comm) {}
 
-  // Periodic: the kernel on the grid's transform, which the preconditioner
-  // shares (Polonsky-Keer applies them one after the other); free: the
-  // padded convolution, the preconditioner (the unpadded periodic symbol, as
-  // the serial solvers use on free grids) on a transform of its own working
-  // in the operator's padded buffer, idle between products. Collective.
+  // FftInfluenceOperator on the slab transforms. Periodic: the
+  // preconditioner shares them (Polonsky-Keer applies the two one after the
+  // other); free: the padded convolution, the preconditioner (the unpadded
+  // periodic symbol, as the serial solvers use on free grids) on an
+  // unpadded transform of its own working in the operator's padded buffer,
+  // idle between products. Collective.
   solvers::ElasticOperators make_operators(const Grid& grid, const HalfSpace& half_space, bool fourier,
                                            FftPlanning planning) const override;
   // The slab transforms' tangential operator (2D grids, periodic or free).
@@ -32,15 +33,14 @@ class DistributedLayout final : public solvers::Layout {
                                                                FftPlanning planning) const override;
   // The slab transforms (2D grids, periodic or free): this process's rows
   // and spectrum columns. Collective.
-  std::unique_ptr<operators::TangentialTransforms> make_transforms(const Grid& grid,
-                                                                   FftPlanning planning) const override;
+  std::unique_ptr<operators::SpectralTransforms> make_transforms(const Grid& grid, FftPlanning planning) const override;
   solvers::RowSlab rows(const Grid& grid) const override;
   const linalg::Communicator& communicator() const override { return comm_; }
   // Takes a 2D grid (periodic or free, homogeneous or coated), solver pk,
   // pk-fourier or pk-multilevel (block deflation and the active-set phase
   // as the serial solvers take them), with or without a hardness cap; with
   // adhesion (the adhesive solver, which then replaces the type; on free
-  // grids on SlabFreeOperator's padded circulant form). Throws
+  // grids on the operator's padded circulant form). Throws
   // SolverOptionError naming the option and what to use instead, e.g.
   // "type = lemke is not available with more than one process yet: use
   // solver pk-multilevel, pk-fourier or pk".

@@ -58,7 +58,7 @@ class SlabPaddedRealFft {
   // The same for this process's rows of the padded grid's top half, all 2nx
   // values of each (layout().rows * 2nx values; the padding columns need
   // not be zero): the transforms of a field living on the padded grid
-  // (SlabFreeOperator's circulant form), whose padding rows ny .. 2ny - 1
+  // (the free operator's circulant form on slabs), whose padding rows ny .. 2ny - 1
   // the form transforms as a second top half. Collective.
   void forward_wide(std::span<const double> block);
   void backward_wide(std::span<double> block);

@@ -25,7 +25,7 @@
 #include "halfspace/grid.hpp"
 #include "halfspace/kernels/tangential_coefficients.hpp"
 #include "halfspace/linalg/communicator.hpp"
-#include "halfspace/operators/tangential_transforms.hpp"
+#include "halfspace/operators/spectral_transforms.hpp"
 
 namespace halfspace::operators {
 
@@ -42,7 +42,7 @@ class TangentialOperator {
   // The same on `transforms` (a distributed layout's slab transforms of
   // `grid`): fields hold this process's cells, reductions go over its
   // communicator. Collective.
-  TangentialOperator(const Grid& grid, const ElasticPair& pair, std::unique_ptr<TangentialTransforms> transforms);
+  TangentialOperator(const Grid& grid, const ElasticPair& pair, std::unique_ptr<SpectralTransforms> transforms);
   ~TangentialOperator();
   TangentialOperator(const TangentialOperator&) = delete;
   TangentialOperator& operator=(const TangentialOperator&) = delete;

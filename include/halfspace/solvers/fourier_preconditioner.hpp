@@ -10,6 +10,7 @@
 #include "halfspace/fft/real_fft.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/half_space.hpp"
+#include "halfspace/operators/spectral_transforms.hpp"
 #include "halfspace/solvers/preconditioner.hpp"
 
 namespace halfspace::solvers {
@@ -42,6 +43,12 @@ class FourierPreconditioner final : public Preconditioner {
                         std::shared_ptr<RealFft> transform);
   FourierPreconditioner(const Grid& grid, const HalfSpace& half_space, const EvenSymbol& kernel,
                         std::shared_ptr<SingleRealFft> transform);
+  // The same on `transforms` (transform 0 used; a distributed layout's
+  // slab transforms of the grid's own, unpadded spectrum, on free grids
+  // too), the symbol on the spectrum entries held here. Collective; throws
+  // InputError if the transforms are padded.
+  FourierPreconditioner(const Grid& grid, const HalfSpace& half_space,
+                        std::shared_ptr<operators::SpectralTransforms> transforms);
   ~FourierPreconditioner() override;
 
   void apply(std::span<const double> in, std::span<double> out) override;

@@ -14,8 +14,8 @@
 #include "halfspace/half_space.hpp"
 #include "halfspace/linalg/communicator.hpp"
 #include "halfspace/operators/influence_operator.hpp"
+#include "halfspace/operators/spectral_transforms.hpp"
 #include "halfspace/operators/tangential_operator.hpp"
-#include "halfspace/operators/tangential_transforms.hpp"
 #include "halfspace/solvers/preconditioner.hpp"
 #include "halfspace/solvers/single_precision_products.hpp"
 
@@ -66,8 +66,7 @@ class Layout {
   // multiplies its own symbols on whichever spectrum entries are held here
   // (the subsurface stresses). This default holds the whole grid here (the
   // serial transforms, operators::make_serial_transforms). Collective.
-  virtual std::unique_ptr<operators::TangentialTransforms> make_transforms(const Grid& grid,
-                                                                           FftPlanning planning) const;
+  virtual std::unique_ptr<operators::SpectralTransforms> make_transforms(const Grid& grid, FftPlanning planning) const;
   // The same for a mixed-precision solve (solver_options.hpp's Precision):
   // the operator in double, and where this layout can, the Fourier
   // preconditioner and `inner` in single precision. This default (a layout

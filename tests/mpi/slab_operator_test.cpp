@@ -1,15 +1,17 @@
-// The distributed free-boundary operator against the serial one (HALFSPACE_MPI
-// builds; ctest runs it on 2 and 3 processes): on grids whose rows and
-// padded spectrum columns split unevenly, leaving some process without rows
-// or without columns, SlabFreeOperator's product of a random pressure must
-// equal FftInfluenceOperator's rows within kTolerance of the largest
-// displacement, in place too, with the same K_ii; the Fourier
-// preconditioner on a free grid, in the operator's buffer, likewise against
-// FourierPreconditioner; the circulant form (K and K^-1 on the whole
-// zero-padded grid, the adhesive solver's) of a random field on the padded
-// grid against FftInfluenceOperator's form, each process's rows j and
+// The normal operator and the Fourier preconditioner on slab transforms
+// (mpi/slab_spectral_transforms.hpp) against the serial ones (HALFSPACE_MPI
+// builds; ctest runs it on 2 and 3 processes), on grids whose rows and
+// spectrum columns split unevenly, leaving some process without rows or
+// without columns. Free grids: FftInfluenceOperator's product of a random
+// pressure must equal the serial operator's rows within kTolerance of the
+// largest displacement, in place too, with the same K_ii; the Fourier
+// preconditioner, on unpadded slab transforms in the operator's buffer,
+// likewise against the serial one; the circulant form (K and K^-1 on the
+// whole zero-padded grid, the adhesive solver's) of a random field on the
+// padded grid against the serial operator's form, each process's rows j and
 // ny + j, in place too (or both refusing a kernel that is not positive
-// definite).
+// definite). Periodic grids: the product, the preconditioner sharing the
+// operator's transforms, K_ii (equal bits) and the circulant form's K^-1.
 // Every process builds the whole random field and the serial product and
 // compares its own rows.
 #include <fmt/format.h>
@@ -32,9 +34,9 @@
 #include "halfspace/mpi/mpi_communicator.hpp"
 #include "halfspace/mpi/session.hpp"
 #include "halfspace/mpi/slab_fft.hpp"
-#include "halfspace/mpi/slab_fourier_operator.hpp"
-#include "halfspace/mpi/slab_free_operator.hpp"
+#include "halfspace/mpi/slab_spectral_transforms.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
+#include "halfspace/operators/spectral_transforms.hpp"
 #include "halfspace/solvers/fourier_preconditioner.hpp"
 
 namespace {
@@ -88,7 +90,7 @@ struct Checker {
   }
 };
 
-void check_grid(Checker& check, std::size_t nx, std::size_t ny, const HalfSpace& body) {
+void check_free_grid(Checker& check, std::size_t nx, std::size_t ny, const HalfSpace& body) {
   const mpi::MpiCommunicator& comm = check.comm;
   const Grid grid = Grid::plane(nx, ny, 2e-6, 3e-6, Boundary::free);
   std::mt19937_64 random(nx * 1000 + ny);
@@ -103,7 +105,8 @@ void check_grid(Checker& check, std::size_t nx, std::size_t ny, const HalfSpace&
   std::vector<double> expected(grid.size());
   serial.apply(pressure, expected);
 
-  mpi::SlabFreeOperator distributed(grid, body, comm);
+  FftInfluenceOperator distributed(grid, body,
+                                   mpi::make_slab_transforms(grid, comm, FftPlanning::estimate, {.count = 1}));
   const mpi::SlabLayout layout = mpi::slab_layout(nx, ny, comm);
   if (distributed.local_size() != layout.local_size()) {
     check.report(false, fmt::format("{}: local size {} is not the slab's {}", grid.shape_string(),
@@ -130,8 +133,10 @@ void check_grid(Checker& check, std::size_t nx, std::size_t ny, const HalfSpace&
   serial_fourier.apply(pressure, preconditioned);
   // In the operator's padded buffer, as the solvers use it: neither may
   // disturb the other between products.
-  mpi::SlabFourierPreconditioner fourier(
-      grid, body, std::make_shared<mpi::SlabRealFft>(nx, ny, comm, FftPlanning::estimate, distributed.scratch()));
+  solvers::FourierPreconditioner fourier(
+      grid, body,
+      mpi::make_slab_transforms(grid, comm, FftPlanning::estimate,
+                                {.count = 1, .unpadded = true, .workspace = distributed.scratch()}));
   fourier.apply(mine, got);
   check.rows("Fourier preconditioner", grid, layout, got, preconditioned);
   distributed.apply(mine, got);
@@ -178,6 +183,39 @@ void check_grid(Checker& check, std::size_t nx, std::size_t ny, const HalfSpace&
   check.padded_rows("circulant K^-1 in place", grid, layout, local, whole);
 }
 
+void check_periodic_grid(Checker& check, std::size_t nx, std::size_t ny, const HalfSpace& body) {
+  const mpi::MpiCommunicator& comm = check.comm;
+  const Grid grid = Grid::plane(nx, ny, 2e-6, 3e-6, Boundary::periodic);
+  std::mt19937_64 random(nx * 1000 + ny + 7);
+  std::uniform_real_distribution<double> uniform(0.0, 1e6);
+  std::vector<double> pressure(grid.size());
+  for (double& p : pressure) p = uniform(random);
+  const std::string what = std::holds_alternative<LayeredMaterial>(body) ? "coated" : "homogeneous";
+
+  FftInfluenceOperator serial(grid, body);
+  solvers::FourierPreconditioner serial_fourier(grid, body);
+  std::shared_ptr<operators::SpectralTransforms> transforms =
+      mpi::make_slab_transforms(grid, comm, FftPlanning::estimate, {.count = 1});
+  FftInfluenceOperator distributed(grid, body, transforms);
+  solvers::FourierPreconditioner fourier(grid, body, transforms);
+  const mpi::SlabLayout layout = mpi::slab_layout(nx, ny, comm);
+  const std::span<const double> mine(pressure.data() + layout.first_row * nx, layout.local_size());
+  std::vector<double> expected(grid.size());
+  std::vector<double> got(layout.local_size());
+  serial.apply(pressure, expected);
+  distributed.apply(mine, got);
+  check.rows(fmt::format("periodic K p, {},", what).c_str(), grid, layout, got, expected);
+  serial_fourier.apply(pressure, expected);
+  fourier.apply(mine, got);
+  check.rows(fmt::format("periodic preconditioner, {},", what).c_str(), grid, layout, got, expected);
+  check.report(distributed.self_influence() == serial.self_influence() && distributed.local_size() == got.size(),
+               fmt::format("periodic K_ii, {}, on the {} grid: {} (serial {})", what, grid.shape_string(),
+                           distributed.self_influence(), serial.self_influence()));
+  serial.circulant_form().apply_inverse(pressure, expected);
+  distributed.circulant_form().apply_inverse(mine, got);
+  check.rows(fmt::format("periodic circulant K^-1, {},", what).c_str(), grid, layout, got, expected);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -192,7 +230,8 @@ int main(int argc, char** argv) {
       // columns of a 3 x 9 grid leave it without columns; 2 x 2 is the
       // smallest grid.
       for (const auto& [nx, ny] : {std::pair<std::size_t, std::size_t>{64, 51}, {45, 32}, {17, 2}, {3, 9}, {2, 2}}) {
-        check_grid(check, nx, ny, kEStar);
+        check_free_grid(check, nx, ny, kEStar);
+        check_periodic_grid(check, nx, ny, kEStar);
       }
       // Coated: a layer thin against the 128 um x 153 um domain (its
       // remainder in the padded spectrum) and a thick one (in the cell
@@ -200,7 +239,8 @@ int main(int argc, char** argv) {
       const ElasticBody layer{3e11, 0.25};
       const ElasticBody substrate{7e10, 0.33};
       for (const double thickness : {4e-6, 1e-4})
-        check_grid(check, 64, 51, LayeredMaterial{thickness, layer, substrate});
+        check_free_grid(check, 64, 51, LayeredMaterial{thickness, layer, substrate});
+      check_periodic_grid(check, 64, 51, LayeredMaterial{4e-6, layer, substrate});
       failures = check.failures;
     }
     return failures == 0 ? 0 : 1;

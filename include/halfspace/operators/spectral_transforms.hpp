@@ -1,0 +1,92 @@
+// The transforms an FFT operator multiplies its symbols on: the whole grid
+// on this process (the serial ones, make_serial_transforms), or this
+// process's slab of rows of a grid spread over MPI processes
+// (mpi/slab_spectral_transforms.hpp, made by the distributed layout). The
+// operators (FftInfluenceOperator, FourierPreconditioner, TangentialOperator)
+// compute their symbols and apply them once, on whichever spectrum entries
+// the transforms hold here.
+#pragma once
+
+#include <complex>
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "halfspace/fft/fft_planning.hpp"
+#include "halfspace/grid.hpp"
+#include "halfspace/linalg/communicator.hpp"
+#include "halfspace/operators/circulant_form.hpp"
+
+namespace halfspace::operators {
+
+// A mode of the (padded, on free grids) spectrum: the row (ky) and the
+// column (kx, 0 <= kx <= nx/2 or nx) of the whole transform.
+struct SpectrumMode {
+  std::size_t row = 0;
+  std::size_t col = 0;
+};
+
+class SpectralTransforms {
+ public:
+  virtual ~SpectralTransforms() = default;
+
+  // The field values held here, and the processes the field is spread over.
+  virtual std::size_t local_size() const = 0;
+  virtual const linalg::Communicator& communicator() const = 0;
+  // The spectrum entries held here, as blocks x length (for parallel loops),
+  // entry k standing for mode(k).
+  virtual std::size_t spectrum_blocks() const = 0;
+  virtual std::size_t spectrum_length() const = 0;
+  std::size_t held() const { return spectrum_blocks() * spectrum_length(); }
+  virtual SpectrumMode mode(std::size_t k) const = 0;
+  // The rows of the whole spectrum (the padded grid's on free grids).
+  virtual std::size_t spectrum_rows() const = 0;
+  // The N of backward(forward(x)) = N x.
+  virtual double transform_size() const = 0;
+
+  // The spectrum of `values` (local_size() values) in transform `k` (0, or
+  // 1 where there are two), valid until its backward(). Collective on a
+  // distributed grid.
+  virtual std::span<std::complex<double>> forward(int k, std::span<const double> values) = 0;
+  virtual std::span<std::complex<double>> spectrum(int k) = 0;
+  // The unnormalised inverse of spectrum(k) into `values`. Collective.
+  virtual void backward(int k, std::span<double> values) = 0;
+  // Transform 0's whole buffer, whose contents matter only from forward()
+  // to backward(): a workspace for a transform that runs only between
+  // products (the Fourier preconditioner's on a free grid).
+  virtual std::span<std::complex<double>> workspace() = 0;
+
+  // Free grids: the DFT of the real wrap-around array on the whole padded
+  // grid (spectrum_rows() x 2 nx), on the entries held here (a kernel's
+  // coefficients, transformed once). `fill(first, rows, values)` writes its
+  // rows [first, first + rows) (2 nx values each, row-major), blocks of
+  // rows possibly at once on several threads. Collective.
+  using WraparoundRows = std::function<void(std::size_t first, std::size_t rows, std::span<double> values)>;
+  virtual std::span<const std::complex<double>> transform_wraparound_rows(const WraparoundRows& fill) = 0;
+  // The same with the array given value by value.
+  std::span<const std::complex<double>> transform_wraparound(
+      const std::function<double(std::size_t row, std::size_t col)>& value);
+
+  // Free grids: K as a circulant on the whole padded grid (circulant_form.hpp)
+  // from its symbols on the entries held here, 1/N of one transform pair
+  // folded in: `kernel` (K) and `stiffness` (K^-1). Collective.
+  virtual std::unique_ptr<CirculantForm> padded_form(std::vector<double> kernel, std::vector<double> stiffness) = 0;
+};
+
+// The serial transforms: the whole of `grid` on this process, two of the
+// grid's own transforms (periodic) or two pruned padded ones (free; 1D or 2D).
+std::unique_ptr<SpectralTransforms> make_serial_transforms(const Grid& grid, FftPlanning planning);
+
+// f(mode) on the entries `transforms` holds here, in parallel.
+std::vector<double> held_values(const SpectralTransforms& transforms, const std::function<double(SpectrumMode)>& f);
+
+// out = the multiplier `symbol` (one value per entry held here) applied to
+// `in` through transform `k`: forward, multiply, backward. `in` is read
+// before `out` is written, so they may be the same array. Collective;
+// allocates nothing.
+void apply_symbol(SpectralTransforms& transforms, int k, const std::vector<double>& symbol, std::span<const double> in,
+                  std::span<double> out);
+
+}  // namespace halfspace::operators
