@@ -25,7 +25,7 @@
 #include "halfspace/mpi/mpi_communicator.hpp"
 #include "halfspace/mpi/session.hpp"
 #include "halfspace/mpi/slab_fft.hpp"
-#include "halfspace/mpi/slab_tangential_transforms.hpp"
+#include "halfspace/mpi/slab_spectral_transforms.hpp"
 #include "halfspace/operators/tangential_operator.hpp"
 #include "halfspace/solvers/frictional_solve.hpp"
 
@@ -172,8 +172,7 @@ void check_operators(const Grid& grid, const ElasticPair& pair, const mpi::MpiCo
   const Eigen::ArrayXd qx = 1e6 * (Eigen::ArrayXd::Random(n) + 1.0);
   const Eigen::ArrayXd qy = 1e6 * (Eigen::ArrayXd::Random(n) + 1.0);
   operators::TangentialOperator serial(grid, pair);
-  operators::TangentialOperator slabs(grid, pair,
-                                      mpi::make_slab_tangential_transforms(grid, comm, FftPlanning::estimate));
+  operators::TangentialOperator slabs(grid, pair, mpi::make_slab_transforms(grid, comm, FftPlanning::estimate));
   Eigen::ArrayXd want_x(n), want_y(n), got_x(local), got_y(local);
   auto mine = [&](const Eigen::ArrayXd& a) { return std::span<const double>(a.data() + begin, slab.local_size()); };
   auto all = [](const Eigen::ArrayXd& a) {
