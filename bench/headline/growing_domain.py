@@ -32,19 +32,8 @@ from pathlib import Path
 import h5py
 
 # The headline script's helpers: its directory is this script's.
-from headline import EXIT_NOT_CONVERGED, EXIT_OK, ROOT, git, integer_list, run, size_list
+from headline import EXIT_NOT_CONVERGED, EXIT_OK, ROOT, git, integer_list, run, shown_path, size_list
 
-
-def shown_path(argument: str) -> str:
-    """An argument as the results file records it: a path outside the
-    project as '<dir>/name' (machine paths do not belong in results)."""
-    path = Path(argument)
-    if not path.is_absolute():
-        return argument
-    try:
-        return str(path.resolve().relative_to(ROOT.resolve()))
-    except ValueError:
-        return f"<dir>/{path.name}"
 
 CELL = 1e-6  # m
 

@@ -99,6 +99,18 @@ def parse_arguments(argv):
     return p.parse_args(argv)
 
 
+def shown_path(argument: str) -> str:
+    """An argument as the results file records it: a path outside the
+    project as '<dir>/name' (machine paths do not belong in results)."""
+    path = Path(argument)
+    if not path.is_absolute():
+        return argument
+    try:
+        return str(path.resolve().relative_to(ROOT.resolve()))
+    except ValueError:
+        return f"<dir>/{path.name}"
+
+
 def shown(command):
     return shlex.join(map(str, command))
 
@@ -337,7 +349,7 @@ def main(argv):
         f"- commit: `{git('describe', '--always', '--dirty')}`",
         f"- machine: {uname.system} {uname.release} {uname.machine}, nproc {nproc}, cpu {cpu_model()}",
         f"- load: {load_before} (1, 5, 15 min) before the run, {load_average()} after (includes the run)",
-        f"- command: `{shlex.join(['headline.py', *argv])}`",
+        f"- command: `{shlex.join(['headline.py', *(shown_path(a) for a in argv)])}`",
     ])
     out_dir = Path(args.out_dir)
     out_dir.mkdir(parents=True, exist_ok=True)
