@@ -60,6 +60,17 @@ void for_each_row(std::size_t rows, std::size_t row_length, Body&& body) {
   }
 }
 
+// A reduction's per-cell function, inlined with everything it calls: GCC's
+// inliner gives up on a term of a few dozen lines called four times in the
+// unrolled loop below and calls it per cell instead (no vectorisation, the
+// lanes in memory), which made the Polonsky-Keer passes 1.5-2x slower once
+// they handled a hardness cap (docs/development-log.md, 2026-11-30).
+#if defined(__GNUC__)
+#define HALFSPACE_INLINE_TERM __attribute__((always_inline, flatten))
+#else
+#define HALFSPACE_INLINE_TERM
+#endif
+
 // The fixed-block reduction behind sums and sums_and_range: block b folds its
 // indices in order into a copy of `identity` with add(acc, i), and the block
 // results are merged in block order with merge(total, part), so the result
@@ -103,7 +114,8 @@ std::array<double, K> sums(const Communicator& comm, std::size_t n, Term&& term)
     for (std::size_t k = 0; k < K; ++k) acc[k] += t[k];
   };
   const std::array<double, K> total = reduce_in_blocks(
-      n, std::array<double, K>{}, [&](std::array<double, K>& acc, std::size_t i) { add_to(acc, term(i)); }, add_to);
+      n, std::array<double, K>{},
+      [&](std::array<double, K>& acc, std::size_t i) HALFSPACE_INLINE_TERM { add_to(acc, term(i)); }, add_to);
   return global_sum(comm, total);
 }
 template <std::size_t K, class Term>
@@ -130,7 +142,7 @@ template <std::size_t K, class Term>
 SumsAndRange<K> sums_and_range(const Communicator& comm, std::size_t n, Term&& term) {
   SumsAndRange<K> total = reduce_in_blocks(
       n, SumsAndRange<K>{},
-      [&](SumsAndRange<K>& acc, std::size_t i) {
+      [&](SumsAndRange<K>& acc, std::size_t i) HALFSPACE_INLINE_TERM {
         const auto [t, value] = term(i);
         acc.add(t, value, value);
       },
