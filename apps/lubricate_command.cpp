@@ -350,10 +350,15 @@ void write_elastic_attributes(const io::Hdf5Node& root, double e_star, const lub
 }
 
 // The summary printed by the first (or only) process, `prints`.
+// A film that did not converge: the warning and what to try
+// (LubricationProblem::failure_hint).
 int report(const LubricateOptions& o, const HeightMap& map, const lubrication::FilmSummary& summary, bool converged,
-           bool prints = true) {
+           const lubrication::LubricationProblem& problem, bool prints = true) {
   if (!converged) {
-    if (prints) fmt::print(stderr, "warning: {}; the result is written to {}\n", summary.message, *o.output);
+    if (prints) {
+      fmt::print(stderr, "warning: {}; the result is written to {}\n  {}\n", summary.message, *o.output,
+                 problem.failure_hint(LubricateSpelling(o)));
+    }
     return kExitNotConverged;
   }
   if (o.quiet || !prints) return kExitOk;
@@ -398,7 +403,7 @@ int run_elastic(const LubricateOptions& o, const HeightMap& map, const Grid& gri
     if (coating) io::write_coating_attributes(root, *coating);
     write_shear(root, io::field_shape(grid), shear, limits);
   });
-  return report(o, map, summary, film.converged());
+  return report(o, map, summary, film.converged(), problem);
 }
 
 // The film's fields and the mixed film's own attributes, beyond the summary's.
@@ -494,7 +499,7 @@ int run_mixed(const LubricateOptions& o, const HeightMap& map, const Grid& grid,
     root.write_double_attribute("entrainment_speed",
                                 std::hypot(used.entrainment_velocity[0], used.entrainment_velocity[1]));
   });
-  const int code = report(o, map, summary, all_converged);
+  const int code = report(o, map, summary, all_converged, problem);
   if (code == kExitOk && !o.quiet) {
     fmt::print("  {:<15} {:.4g} of the load, area {:.4g} of the cells\n", "contact", film.contact_load_fraction,
                film.contact_area_fraction);
@@ -730,7 +735,7 @@ int run_rigid(const LubricateOptions& o, const HeightMap& map, const Grid& grid,
   write_film_file(o, map, grid, place, summary, own(film.solution.pressure), own(film.film),
                   own(film.solution.fluid_fraction),
                   [&](const io::Hdf5Node& root) { write_shear(root, io::field_shape(grid), shear, limits, place); });
-  return report(o, map, summary, film.solution.converged(), place.first);
+  return report(o, map, summary, film.solution.converged(), problem, place.first);
 }
 
 int solve_film(const LubricateOptions& o) {

@@ -46,6 +46,11 @@ auto with_keywords(Work&& work) {
   }
 }
 
+// A film's message, with what to try where it did not converge.
+std::string with_hint(const std::string& message, bool converged, const LubricationProblem& problem) {
+  return converged ? message : fmt::format("{}; {}", message, problem.failure_hint(KeywordSpelling()));
+}
+
 // The film's fields and the shear, as the dict _lubricate.py wraps.
 void put_fields(nb::dict& out, const Grid& grid, Eigen::ArrayXd pressure, Eigen::ArrayXd film,
                 Eigen::ArrayXd fluid_fraction, const FilmShear& shear) {
@@ -71,7 +76,7 @@ nb::dict rigid_dict(const Grid& grid, const Eigen::ArrayXd& heights, const Lubri
   nb::dict out;
   out["model"] = "rigid";
   out["status"] = std::string(to_string(film.solution.status));
-  out["message"] = film.solution.message;
+  out["message"] = with_hint(film.solution.message, film.solution.converged(), problem);
   out["converged"] = film.solution.converged();
   out["load"] = f.load;
   out["mean_pressure"] = f.mean_pressure;
@@ -146,12 +151,12 @@ nb::dict solve_transient(const Grid& grid, const Eigen::ArrayXd& heights, const 
 // The numbers an elastic and a mixed film report alike, under the keys of
 // the program's summary, in its order.
 template <class Film>
-void put_elastic_summary(nb::dict& out, const char* model, const Grid& grid, const Film& film,
-                         double cavitated_fraction, long long film_solves, const LubricantLaws& laws, double viscosity,
-                         CouetteScheme couette_scheme, double e_star) {
+void put_elastic_summary(nb::dict& out, const LubricationProblem& problem, const char* model, const Grid& grid,
+                         const Film& film, double cavitated_fraction, long long film_solves, const LubricantLaws& laws,
+                         double viscosity, CouetteScheme couette_scheme, double e_star) {
   out["model"] = model;
   out["status"] = std::string(to_string(film.status));
-  out["message"] = film.message;
+  out["message"] = with_hint(film.message, film.converged(), problem);
   out["converged"] = film.converged();
   out["load"] = film.load;
   out["mean_pressure"] = film.load / grid.domain_area();
@@ -190,8 +195,8 @@ nb::dict solve_elastic(const Grid& grid, const Eigen::ArrayXd& heights, const Lu
       film_shear(grid, conditions, laws, problem.limits, film.film, film.pressure, film.fluid_fraction);
   nb::dict out;
   const double cavitated = static_cast<double>((film.fluid_fraction < 1.0).count()) / static_cast<double>(grid.size());
-  put_elastic_summary(out, "elastic", grid, film, cavitated, 1, laws, conditions.viscosity, options.couette_scheme,
-                      e_star);
+  put_elastic_summary(out, problem, "elastic", grid, film, cavitated, 1, laws, conditions.viscosity,
+                      options.couette_scheme, e_star);
   out["deformation"] = owning_array(std::move(film.deformation), io::field_shape(grid));
   put_fields(out, grid, std::move(film.pressure), std::move(film.film), std::move(film.fluid_fraction), shear);
   return out;
@@ -199,10 +204,13 @@ nb::dict solve_elastic(const Grid& grid, const Eigen::ArrayXd& heights, const Lu
 
 // A mixed film's numbers and fields, as `halfspace lubricate --mixed` writes
 // them (its summary and write_mixed_fields).
-nb::dict mixed_dict(const Grid& grid, MixedFilm film, const MixedFilmOptions& options, const LubricantLaws& laws,
-                    double viscosity, double e_star, long long film_solves) {
+nb::dict mixed_dict(const Grid& grid, const LubricationProblem& problem, MixedFilm film, double viscosity,
+                    long long film_solves) {
+  const MixedFilmOptions& options = problem.mixed;
+  const LubricantLaws& laws = problem.laws;
+  const double e_star = problem.e_star;
   nb::dict out;
-  put_elastic_summary(out, "mixed", grid, film, film.cavitated_fraction, film_solves, laws, viscosity,
+  put_elastic_summary(out, problem, "mixed", grid, film, film.cavitated_fraction, film_solves, laws, viscosity,
                       options.couette_scheme, e_star);
   out["entrainment_speed"] = film.entrainment_speed;
   out["fluid_load"] = film.fluid_load;
@@ -249,7 +257,7 @@ nb::object solve_mixed(const Grid& grid, const Eigen::ArrayXd& heights, const Lu
       nb::gil_scoped_release release;
       return solve_mixed_film(op, gap, conditions, laws, options);
     });
-    return mixed_dict(grid, std::move(film), options, laws, conditions.viscosity, e_star, 1);
+    return mixed_dict(grid, problem, std::move(film), conditions.viscosity, 1);
   }
   std::vector<StribeckPoint> points = with_keywords([&] {
     nb::gil_scoped_release release;
@@ -257,7 +265,7 @@ nb::object solve_mixed(const Grid& grid, const Eigen::ArrayXd& heights, const Lu
   });
   nb::list curve;
   for (StribeckPoint& point : points) {
-    nb::dict film = mixed_dict(grid, std::move(point.film), options, laws, conditions.viscosity, e_star, 1);
+    nb::dict film = mixed_dict(grid, problem, std::move(point.film), conditions.viscosity, 1);
     film["hersey_number"] = point.hersey_number;
     film["entrainment_speed"] = point.entrainment_speed;
     curve.append(film);

@@ -381,6 +381,32 @@ LubricationProblem make_lubrication_problem(const LubricationProblemOptions& opt
   }
 }
 
+std::string LubricationProblem::failure_hint(const OptionSpelling& spelling) const {
+  const auto name = [&](std::string_view option) { return spelling.name(option); };
+  const auto solver = [&](int max_iterations, double tolerance) {
+    return fmt::format("more {} (now {}) or a looser {} (now {:g})", name("max_iterations"), max_iterations,
+                       name("tolerance"), tolerance);
+  };
+  if (kind == FilmKind::rigid) {
+    return "to try: " + solver(cavitation.max_iterations, cavitation.tolerance);
+  }
+  if (kind == FilmKind::elastic) {
+    return fmt::format(
+        "to try: a faster {} or a smaller {} first (a thicker film converges more easily), {}, or {} sparse-lu "
+        "(exact, on small grids)",
+        name("entrainment_velocity"), name("force"), solver(elastic.max_iterations, elastic.tolerance),
+        name("film_preconditioner"));
+  }
+  if (!mixed.load_controlled()) {
+    return fmt::format("to try: a larger {} (a thicker film), a faster {}, {}", name("offset"),
+                       name("entrainment_velocity"), solver(mixed.max_iterations, mixed.tolerance));
+  }
+  return fmt::format(
+      "to try: {} from a faster speed down to this one (each film starts from the last; finer steps where one "
+      "fails), a smaller {}, {}",
+      name("speeds"), name("force"), solver(mixed.max_iterations, mixed.tolerance));
+}
+
 void LubricationProblem::check_grid(const Grid& grid, const OptionSpelling& spelling, std::string_view surface) const {
   // A film periodic along every axis has no pressure level and no supply:
   // named here by the options that made it so (FlowConditions::validate

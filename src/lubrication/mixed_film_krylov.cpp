@@ -26,6 +26,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <span>
 
 namespace halfspace::lubrication::detail {
@@ -128,37 +129,47 @@ void MixedKrylovSolver::apply_inverse(const Eigen::VectorXd& in, Eigen::VectorXd
   }
 }
 
+// Mass row k of the sparse part into row_scratch_ (the identity on a fixed
+// node): the local terms' d/ds, and each open film term's by_film K around
+// its node through film_entry(node, by_film K); with `every_entry` also the
+// zero ones (closed film terms), so that the LU's pattern stays the same at
+// every Newton step. Adds the row's h0 derivative into border_column_.
+template <class FilmEntry>
+void MixedKrylovSolver::mass_row(std::size_t k, bool every_entry, FilmEntry&& film_entry) {
+  if (topology_.fixed(k)) {
+    row_scratch_.emplace_back(static_cast<int>(k), 1.0);
+    return;
+  }
+  const double mass = scales_.mass;
+  const std::vector<char>& open_film = rows_->open_film;
+  for (std::size_t t = rows_->start[k]; t < rows_->start[k + 1]; ++t) {
+    const LocalTerm& term = rows_->terms[t];
+    const auto j = static_cast<Eigen::Index>(term.node);
+    row_scratch_.emplace_back(static_cast<int>(j),
+                              (term.by_pressure * dp_ds_[j] + term.by_fraction * dtheta_ds_[j]) / mass);
+    const double by_film = open_film[term.node] != 0 ? term.by_film / mass : 0.0;
+    border_column_[static_cast<Eigen::Index>(k)] += by_film;
+    if (by_film == 0.0 && !every_entry) continue;
+    local_.for_each(term.node, [&](std::size_t node, double k_value) { film_entry(node, by_film * k_value); });
+  }
+}
+
 bool MixedKrylovSolver::factorise_block(std::string& message) {
   const auto ni = static_cast<Eigen::Index>(n_);
-  const double H = scales_.film, mass = scales_.mass;
-  const std::vector<char>& open_film = rows_->open_film;
+  const double H = scales_.film;
   const std::vector<char>& closed = *closed_;
   border_column_.setZero();
   matrix_.clear();
   film_matrix_.clear();
   row_scratch_.clear();
   film_scratch_.clear();
+  // M takes the film's K on the open cells (through dp/ds), F all of it.
   for (std::size_t k = 0; k < n_; ++k) {
-    const auto row = static_cast<int>(k);
-    const auto kk = static_cast<Eigen::Index>(k);
-    if (topology_.fixed(k)) {
-      row_scratch_.emplace_back(row, 1.0);
-    } else {
-      for (std::size_t t = rows_->start[k]; t < rows_->start[k + 1]; ++t) {
-        const LocalTerm& term = rows_->terms[t];
-        const auto j = static_cast<Eigen::Index>(term.node);
-        row_scratch_.emplace_back(static_cast<int>(j),
-                                  (term.by_pressure * dp_ds_[j] + term.by_fraction * dtheta_ds_[j]) / mass);
-        const double by_film = open_film[term.node] != 0 ? term.by_film / mass : 0.0;
-        border_column_[kk] += by_film;
-        if (by_film == 0.0) continue;
-        local_.for_each(term.node, [&](std::size_t node, double k_value) {
-          const auto mm = static_cast<Eigen::Index>(node);
-          film_scratch_.emplace_back(static_cast<int>(node), by_film * k_value);
-          if (closed[node] == 0) row_scratch_.emplace_back(static_cast<int>(node), by_film * k_value * dp_ds_[mm]);
-        });
-      }
-    }
+    mass_row(k, false, [&](std::size_t node, double entry) {
+      film_scratch_.emplace_back(static_cast<int>(node), entry);
+      if (closed[node] == 0)
+        row_scratch_.emplace_back(static_cast<int>(node), entry * dp_ds_[static_cast<Eigen::Index>(node)]);
+    });
     matrix_.append_row(row_scratch_);
     film_matrix_.append_row(film_scratch_);
   }
@@ -173,8 +184,7 @@ bool MixedKrylovSolver::factorise(std::string& message) {
     return factorise_border(message);
   }
   const auto ni = static_cast<Eigen::Index>(n_);
-  const double P = scales_.pressure, H = scales_.film, mass = scales_.mass;
-  const std::vector<char>& open_film = rows_->open_film;
+  const double P = scales_.pressure, H = scales_.film;
   const std::vector<char>& closed = *closed_;
   border_column_.setZero();
   // Every entry of the pattern is written, zero or not, so that the pattern
@@ -183,25 +193,10 @@ bool MixedKrylovSolver::factorise(std::string& message) {
   matrix_.clear();
   row_scratch_.clear();
   for (std::size_t k = 0; k < n_; ++k) {
-    const auto row = static_cast<int>(k);
-    const auto kk = static_cast<Eigen::Index>(k);
-    if (topology_.fixed(k)) {
-      row_scratch_.emplace_back(row, 1.0);
-    } else {
-      for (std::size_t t = rows_->start[k]; t < rows_->start[k + 1]; ++t) {
-        const LocalTerm& term = rows_->terms[t];
-        const auto j = static_cast<Eigen::Index>(term.node);
-        row_scratch_.emplace_back(static_cast<int>(j),
-                                  (term.by_pressure * dp_ds_[j] + term.by_fraction * dtheta_ds_[j]) / mass);
-        const double by_film = open_film[term.node] != 0 ? term.by_film / mass : 0.0;
-        border_column_[kk] += by_film;
-        local_.for_each(term.node, [&](std::size_t node, double k_value) {
-          const auto mm = static_cast<Eigen::Index>(node);
-          row_scratch_.emplace_back(static_cast<int>(node), by_film * k_value * dp_ds_[mm]);
-          row_scratch_.emplace_back(static_cast<int>(n_ + node), by_film * k_value * P);
-        });
-      }
-    }
+    mass_row(k, true, [&](std::size_t node, double entry) {
+      row_scratch_.emplace_back(static_cast<int>(node), entry * dp_ds_[static_cast<Eigen::Index>(node)]);
+      row_scratch_.emplace_back(static_cast<int>(n_ + node), entry * P);
+    });
     matrix_.append_row(row_scratch_);
   }
   // The contact rows: the identity on q (open) or the truncated film (closed).
@@ -281,7 +276,10 @@ KrylovOutcome MixedKrylovSolver::solve(const MixedRows& rows, const std::vector<
         return std::pair{iterations, step.allFinite()};
       });
   outcome.iterations = run.iterations;
-  if (!run.factorised) return outcome;
+  if (!run.factorised) {
+    outcome.relative_residual = std::numeric_limits<double>::infinity();  // no step at all
+    return outcome;
+  }
   // The residual recomputed with the operator, not GMRES's estimate.
   apply_jacobian(step, work_);
   const double b_norm = residual.norm();

@@ -110,6 +110,8 @@ class MixedKrylovSolver {
   CsrMatrix film_matrix_;
   std::unique_ptr<MixedBlockPreconditioner> block_;
   void apply_inverse(const Eigen::VectorXd& in, Eigen::VectorXd& out);
+  template <class FilmEntry>
+  void mass_row(std::size_t k, bool every_entry, FilmEntry&& film_entry);
   bool factorise_block(std::string& message);
   bool factorise_border(std::string& message);
   LaggedPreconditioner lagged_;

@@ -31,13 +31,17 @@ constexpr double kLoadTolerance = 1e-7;
 // library's cold: both converged to 1e-11 of the mass balance.
 constexpr double kWarmVersusCold = 1e-6;
 
+// `generate` a cylinder (R = 10 mm) of `grid` points over `size` m into `file`: its exit code.
+int generate_cylinder(const TempDir& dir, const std::string& grid, const std::string& size, const std::string& file) {
+  return run_program({"generate", "--kind", "cylinder", "--grid", grid, "--size", size, "--radius", "0.01", "--output",
+                      file, "--quiet"},
+                     dir.path())
+      .exit_code;
+}
+
 TEST(LubricateCliTest, CarriesTheForceAndWritesTheLibrarysFilm) {
   const TempDir dir;
-  ASSERT_EQ(run_program({"generate", "--kind", "cylinder", "--grid", "401", "--size", "8e-4", "--radius", "0.01",
-                         "--output", "cylinder.h5", "--quiet"},
-                        dir.path())
-                .exit_code,
-            kExitOk);
+  ASSERT_EQ(generate_cylinder(dir, "401", "8e-4", "cylinder.h5"), kExitOk);
   const ProgramRun run =
       run_program({"lubricate", "--height-map", "cylinder.h5", "--viscosity", "0.1", "--entrainment-velocity", "1",
                    "--sliding-velocity", "0.2", "--force", "4000", "--output", "film.h5"},
@@ -70,11 +74,7 @@ TEST(LubricateCliTest, CarriesTheForceAndWritesTheLibrarysFilm) {
 // force, and the file holds the film, deformation and attributes.
 TEST(LubricateCliTest, ElasticFilmIsTheLibrarys) {
   const TempDir dir;
-  ASSERT_EQ(run_program({"generate", "--kind", "cylinder", "--grid", "129", "--size", "7e-4", "--radius", "0.01",
-                         "--output", "cylinder.h5", "--quiet"},
-                        dir.path())
-                .exit_code,
-            kExitOk);
+  ASSERT_EQ(generate_cylinder(dir, "129", "7e-4", "cylinder.h5"), kExitOk);
   const ProgramRun run = run_program({"lubricate",   "--height-map",
                                       "cylinder.h5", "--viscosity",
                                       "0.04",        "--entrainment-velocity",
@@ -119,11 +119,7 @@ TEST(LubricateCliTest, ElasticFilmIsTheLibrarys) {
 
 TEST(LubricateCliTest, RejectsBadElasticInputNamingTheOption) {
   const TempDir dir;
-  ASSERT_EQ(run_program({"generate", "--kind", "cylinder", "--grid", "41", "--size", "8e-4", "--radius", "0.01",
-                         "--output", "c.h5", "--quiet"},
-                        dir.path())
-                .exit_code,
-            kExitOk);
+  ASSERT_EQ(generate_cylinder(dir, "41", "8e-4", "c.h5"), kExitOk);
   const std::vector<std::string> base{
       "lubricate", "--height-map", "c.h5", "--viscosity", "0.04", "--entrainment-velocity", "1", "--output", "f.h5"};
   const auto with = [&](std::vector<std::string> more) {
@@ -145,13 +141,27 @@ TEST(LubricateCliTest, RejectsBadElasticInputNamingTheOption) {
                      dir / "f.h5");
 }
 
+// A film that does not converge (one Newton step) is written, exits with the
+// not-converged code and says what to try, naming the flags.
+TEST(LubricateCliTest, UnconvergedElasticFilmSaysWhatToTry) {
+  const TempDir dir;
+  ASSERT_EQ(generate_cylinder(dir, "41", "8e-4", "c.h5"), kExitOk);
+  const ProgramRun run =
+      run_program({"lubricate", "--height-map", "c.h5", "--viscosity", "0.04", "--entrainment-velocity", "1", "--force",
+                   "1e3", "--E-star", "1e11", "--max-iterations", "1", "--output", "f.h5"},
+                  dir.path());
+  EXPECT_EQ(run.exit_code, testing::kExitNotConverged) << run.err;
+  EXPECT_TRUE(fs::exists(dir / "f.h5"));
+  for (const std::string_view part :
+       {"to try: a faster --entrainment-velocity or a smaller --force", "more --max-iterations (now 1)",
+        "a looser --tolerance (now 1e-08)", "--film-preconditioner sparse-lu"}) {
+    EXPECT_NE(run.err.find(part), std::string::npos) << part << " not in: " << run.err;
+  }
+}
+
 TEST(LubricateCliTest, RejectsBadInputNamingTheOption) {
   const TempDir dir;
-  ASSERT_EQ(run_program({"generate", "--kind", "cylinder", "--grid", "41", "--size", "8e-4", "--radius", "0.01",
-                         "--output", "c.h5", "--quiet"},
-                        dir.path())
-                .exit_code,
-            kExitOk);
+  ASSERT_EQ(generate_cylinder(dir, "41", "8e-4", "c.h5"), kExitOk);
   expect_input_error(run_program({"lubricate", "--height-map", "c.h5", "--viscosity", "-1", "--entrainment-velocity",
                                   "1", "--separation", "1e-6", "--output", "f.h5"},
                                  dir.path()),
@@ -179,11 +189,7 @@ TEST(LubricateCliTest, RejectsBadInputNamingTheOption) {
 // than with a full supply).
 TEST(LubricateCliTest, StarvedSupplyIsTheLibrarys) {
   const TempDir dir;
-  ASSERT_EQ(run_program({"generate", "--kind", "cylinder", "--grid", "201", "--size", "8e-4", "--radius", "0.01",
-                         "--output", "cylinder.h5", "--quiet"},
-                        dir.path())
-                .exit_code,
-            kExitOk);
+  ASSERT_EQ(generate_cylinder(dir, "201", "8e-4", "cylinder.h5"), kExitOk);
   const auto run_with = [&](std::string_view supply, std::string_view output) {
     return run_program(
         {"lubricate", "--height-map", "cylinder.h5", "--viscosity", "0.1", "--entrainment-velocity", "1",

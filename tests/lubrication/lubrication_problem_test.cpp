@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <functional>
+#include <initializer_list>
 #include <string>
+#include <string_view>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -358,6 +360,34 @@ TEST(LubricationProblemTest, GridRulesNameTheFlowOptionAndTheSurface) {
   EXPECT_NO_THROW(mixed.check_grid(Grid::line(kMaxMixedFilmNodes, 1e-6, Boundary::free)));
   EXPECT_NO_THROW(mixed.check_grid(Grid::line(kMaxMixedFilmNodes + 1, 1e-6, Boundary::free)));
   EXPECT_NO_THROW(mixed.check_grid(Grid::plane(64, 64, 1e-6, 1e-6, Boundary::free)));
+}
+
+// What to try where a film did not converge names the options that help, in
+// the front end's spelling, with the solver settings in force.
+TEST(LubricationProblemTest, FailureHintNamesWhatToTry) {
+  const auto contains_all = [](const std::string& hint, std::initializer_list<std::string_view> parts) {
+    for (const std::string_view part : parts) EXPECT_NE(hint.find(part), std::string::npos) << part << " in " << hint;
+  };
+  LubricationProblemOptions rigid = rigid_film();
+  rigid.max_iterations = 5000;
+  contains_all(make_lubrication_problem(rigid).failure_hint(kFlags),
+               {"to try: more --max_iterations (now 5000) or a looser --tolerance (now 1e-11)"});
+  LubricationProblemOptions ehl = elastic_film();
+  ehl.tolerance = 1e-7;
+  const std::string elastic = make_lubrication_problem(ehl).failure_hint(kFlags);
+  contains_all(elastic, {"a faster --entrainment_velocity or a smaller --force", "more --max_iterations (now 100)",
+                         "a looser --tolerance (now 1e-07)", "--film_preconditioner sparse-lu"});
+  EXPECT_EQ(elastic.find("--speeds"), std::string::npos);  // the EHL film has no sweep
+  contains_all(
+      make_lubrication_problem(mixed_film()).failure_hint(kFlags),
+      {"--speeds from a faster speed down to this one", "a smaller --force", "more --max_iterations (now 200)"});
+  contains_all(make_lubrication_problem(mixed_film()).failure_hint(kLibrary), {"speeds from", "smaller force"});
+  LubricationProblemOptions offset = mixed_film();
+  offset.force.reset();
+  offset.offset = -1e-7;
+  const std::string by_offset = make_lubrication_problem(offset).failure_hint(kFlags);
+  contains_all(by_offset, {"a larger --offset", "a faster --entrainment_velocity"});
+  EXPECT_EQ(by_offset.find("--speeds"), std::string::npos);  // a sweep is load controlled
 }
 
 TEST(LubricationProblemTest, ValidOptionsMakeTheTypedFilm) {

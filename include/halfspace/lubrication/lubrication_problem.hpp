@@ -119,6 +119,13 @@ struct LubricationProblem {
   // Throws InputError naming the option.
   void check_grid(const Grid& grid, const OptionSpelling& spelling = {},
                   std::string_view surface = "the surface") const;
+
+  // What to try where the film did not converge, naming the options that
+  // help as `spelling` writes them: "to try: ...". The elastic and mixed
+  // films converge more easily at a higher speed or a lighter load, and the
+  // mixed film from a faster one (a Stribeck sweep's speeds, each film from
+  // the last); every film with more iterations or a looser tolerance.
+  std::string failure_hint(const OptionSpelling& spelling = {}) const;
 };
 
 // Applies the defaults and checks every option and their combinations that
