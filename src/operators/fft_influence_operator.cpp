@@ -113,8 +113,8 @@ struct FftInfluenceOperator::Impl {
   }
 
   // Periodic: the stiffness on the entries held here. Free: the padded
-  // grid's form from the kernel's eigenvalues k = N symbol, which must be
-  // positive (K^-1 is 1/(N k) with 1/N of the pair).
+  // grid's form from the kernel's eigenvalues k on the form's transform,
+  // which must be positive (K^-1 is 1/(N k) with 1/N of the pair).
   std::unique_ptr<CirculantForm> make_circulant_form(InfluenceOperator& op) {
     if (grid().periodic()) {
       const double inverse_n = 1.0 / static_cast<double>(grid().size());
@@ -124,14 +124,27 @@ struct FftInfluenceOperator::Impl {
                                           return q > 0.0 ? normal.stiffness(q) * inverse_n : 0.0;
                                         }));
     }
-    const double n = transforms->transform_size();
+    // The coefficients transformed again on the form's own transform: its
+    // unnormalised eigenvalues k (the spectral remainder added per bin).
+    const std::span<const std::complex<double>> spectrum = transforms->transform_form_wraparound(
+        [&](std::size_t first, std::size_t rows, const SpectralTransforms::Row& row) {
+          normal.write_padded_rows(first, rows, row);
+        });
+    const bool remainder = normal.spectral_remainder();
+    EvenSymbol kernel_form = held_symbol(*transforms, [&](std::size_t k, SpectrumMode m) {
+      double value = spectrum[k].real();
+      if (remainder) value += normal.padded_remainder(m.row, m.col) * 1.0;
+      return value;
+    });
     double smallest = std::numeric_limits<double>::infinity();
-    for (const double value : kernel.stored()) smallest = std::min(smallest, value * n);
+    for (const double k : kernel_form.stored()) smallest = std::min(smallest, k);
     smallest = -transforms->communicator().max(-smallest);
     if (!(smallest > 0.0)) throw InputError(not_positive_definite(grid(), smallest));
-    EvenSymbol stiffness = kernel;
-    for (double& value : stiffness.stored()) value = 1.0 / (n * (n * value));
-    return transforms->padded_form(kernel, std::move(stiffness));
+    const double inverse_m = 1.0 / transforms->transform_size();
+    EvenSymbol stiffness = kernel_form;
+    for (double& k : stiffness.stored()) k = k > 0.0 ? inverse_m / k : 0.0;
+    for (double& k : kernel_form.stored()) k *= inverse_m;
+    return transforms->padded_form(std::move(kernel_form), std::move(stiffness));
   }
 
   kernels::NormalKernel normal;

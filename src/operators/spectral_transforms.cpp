@@ -108,11 +108,19 @@ class SerialSpectralTransforms final : public SpectralTransforms {
 
   // A transform of the whole padded grid of its own: the pruned ones never
   // hold the padding.
-  std::unique_ptr<CirculantForm> padded_form(EvenSymbol kernel, EvenSymbol stiffness) override {
+  std::span<const std::complex<double>> transform_form_wraparound(const WraparoundRows& fill) override {
     if (!padded_[0]) throw std::logic_error("a periodic grid's circulant form is the grid itself");
-    auto fft = grid_.dimension() == 1 ? std::make_unique<RealFft>(2 * grid_.nx(), planning_)
-                                      : std::make_unique<RealFft>(2 * grid_.ny(), 2 * grid_.nx(), planning_);
-    return std::make_unique<WholeGridForm>(std::move(fft), std::move(kernel), std::move(stiffness));
+    const std::size_t width = 2 * grid_.nx();
+    whole_ = grid_.dimension() == 1 ? std::make_unique<RealFft>(width, planning_)
+                                    : std::make_unique<RealFft>(2 * grid_.ny(), width, planning_);
+    fill(0, padded_[0]->spectrum_rows(), [&](std::size_t r) { return whole_->input().subspan(r * width, width); });
+    whole_->forward();
+    return whole_->spectrum();
+  }
+
+  std::unique_ptr<CirculantForm> padded_form(EvenSymbol kernel, EvenSymbol stiffness) override {
+    if (!whole_) throw std::logic_error("padded_form: transform_form_wraparound first");
+    return std::make_unique<WholeGridForm>(std::move(whole_), std::move(kernel), std::move(stiffness));
   }
 
  private:
@@ -120,6 +128,7 @@ class SerialSpectralTransforms final : public SpectralTransforms {
   FftPlanning planning_;
   std::shared_ptr<RealFft> own_[2];           // the grid's own transforms
   std::unique_ptr<PaddedRealFft> padded_[2];  // or the padded ones (free grids)
+  std::unique_ptr<RealFft> whole_;            // the whole padded grid's, until padded_form takes it
 };
 
 }  // namespace

@@ -90,6 +90,14 @@ class SpectralTransforms {
   std::span<const std::complex<double>> transform_wraparound(
       const std::function<double(std::size_t row, std::size_t col)>& value);
 
+  // The same DFT on the transform padded_form() works on (serially a
+  // transform of the whole padded grid, made here and kept for it; on slabs
+  // transform_wraparound_rows), so that the form's symbols are its own
+  // transform's eigenvalues. Collective.
+  virtual std::span<const std::complex<double>> transform_form_wraparound(const WraparoundRows& fill) {
+    return transform_wraparound_rows(fill);
+  }
+
   // Free grids: K as a circulant on the whole padded grid (circulant_form.hpp)
   // from its symbols on the entries held here, 1/N of one transform pair
   // folded in: `kernel` (K) and `stiffness` (K^-1). Collective.
