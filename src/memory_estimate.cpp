@@ -219,10 +219,6 @@ double slab_solve_memory_estimate(const Grid& grid, const solvers::SolverOptions
   // last step adds that step's contact flags, less than the solver it
   // follows.
   const double kept_steps = (steps - 1.0) * (share * result_bytes(g, history) + 0.5 * kDouble * g.cells());
-  // The slab operator and preconditioner keep their multipliers on the
-  // whole (transposed) half spectrum, not folded as the serial EvenSymbol:
-  // counted on top of the folded ones solver_peak has.
-  const double unfolded_symbols = 2.0 * kDouble * (std::floor(g.nx / 2.0) + 1.0) * g.ny;
   // Block deflation on a slab keeps its contact flags and cell lists on its
   // held rows (block_deflation.cpp): its own, counted in the share, and a
   // halo of at most three block rows more (one each side, and the rest of
@@ -237,14 +233,13 @@ double slab_solve_memory_estimate(const Grid& grid, const solvers::SolverOptions
   }
   // The adhesive energy's circulant form on a free 2D grid transforms the
   // padding rows through a second pruned padded transform of its own
-  // (slab_free_operator.cpp: its buffer, 2ny complex values per held
+  // (slab_spectral_transforms.cpp: its buffer, 2ny complex values per held
   // column) and keeps a copy of the kernel's folded multiplier beside its
   // stiffness; the serial form has one whole transform.
   const double adhesive_form = settings.adhesion && !g.periodic && !g.line
                                    ? kComplex * 2.0 * g.ny * (g.nx + 1.0) + kDouble * (g.ny + 1.0) * (g.nx + 1.0)
                                    : 0.0;
-  return kProgramBytes +
-         share * (2.0 * kDouble * g.cells() + solver_peak(grid, settings) + unfolded_symbols + adhesive_form) +
+  return kProgramBytes + share * (2.0 * kDouble * g.cells() + solver_peak(grid, settings) + adhesive_form) +
          halo_deflation + kept_steps;
 }
 

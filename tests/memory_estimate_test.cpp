@@ -111,7 +111,7 @@ TEST(MemoryEstimateTest, SlabSweepKeepsItsRowsOfEveryStepAndEveryStepsClusterSiz
 
 TEST(MemoryEstimateTest, SlabAdhesionOnAFreeGridCountsItsSecondPaddedTransform) {
   // The adhesive energy's form on a free grid: the serial one transforms
-  // the whole padded grid once; on slabs (slab_free_operator.cpp) the
+  // the whole padded grid once; on slabs (slab_spectral_transforms.cpp) the
   // padding rows go through a second pruned padded transform (2ny complex
   // values per column), so one process holding every row needs that much
   // more than the serial solve.

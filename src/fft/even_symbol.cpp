@@ -9,23 +9,42 @@ namespace halfspace::fft {
 
 namespace {
 
-// spectrum[r, c] *= symbol[r, c] for either precision of the spectrum (the
-// symbol stays double; a float spectrum is multiplied by its rounded value).
-template <class Real>
-void multiply_spectrum(const EvenSymbol& symbol, const std::vector<double>& values,
-                       std::span<std::complex<Real>> spectrum) {
+// spectrum[r, c] *= factor(symbol[r, c]) for either precision of the
+// spectrum (the symbol stays double; a float spectrum is multiplied by the
+// rounded factor), entry 0 by `first` if given. A transposed symbol's
+// columns fold: those past the stored ones read their mirror.
+template <class Real, class Factor>
+void scale_spectrum(const EvenSymbol& symbol, const std::vector<double>& values, std::span<std::complex<Real>> spectrum,
+                    Factor&& factor, const double* first = nullptr) {
   const std::size_t rows = symbol.rows();
   const std::size_t cols = symbol.cols();
+  const std::size_t stored = symbol.stored_cols();
   assert(spectrum.size() == rows * cols);
-  if (rows == 1) {
-    linalg::for_each_index(cols, [&](std::size_t c) { spectrum[c] *= static_cast<Real>(values[c]); });
+  if (rows == 0 || cols == 0) return;
+  const std::size_t skip = first ? 1 : 0;
+  if (first) spectrum[0] *= static_cast<Real>(*first);
+  if (rows == 1 && !symbol.transposed()) {
+    linalg::for_each_index(cols - skip,
+                           [&](std::size_t k) { spectrum[k + skip] *= static_cast<Real>(factor(values[k + skip])); });
     return;
   }
   linalg::for_each_row(rows, cols, [&](std::size_t r) {
     std::complex<Real>* row = spectrum.data() + r * cols;
-    const double* factor = values.data() + symbol.folded(r) * cols;
-    for (std::size_t c = 0; c < cols; ++c) row[c] *= static_cast<Real>(factor[c]);
+    const double* value = values.data() + (symbol.transposed() ? r : symbol.folded(r)) * stored;
+    const std::size_t from = r == 0 ? skip : 0;
+    if (!symbol.transposed()) {
+      for (std::size_t c = from; c < cols; ++c) row[c] *= static_cast<Real>(factor(value[c]));
+      return;
+    }
+    for (std::size_t c = from; c < stored; ++c) row[c] *= static_cast<Real>(factor(value[c]));
+    for (std::size_t c = stored; c < cols; ++c) row[c] *= static_cast<Real>(factor(value[cols - c]));
   });
+}
+
+template <class Real>
+void multiply_spectrum(const EvenSymbol& symbol, const std::vector<double>& values,
+                       std::span<std::complex<Real>> spectrum) {
+  scale_spectrum(symbol, values, spectrum, [](double value) { return value; });
 }
 
 // spectrum[r, c] *= inverse.numerator / symbol[r, c], and inverse.at_zero
@@ -33,21 +52,9 @@ void multiply_spectrum(const EvenSymbol& symbol, const std::vector<double>& valu
 template <class Real>
 void divide_spectrum(const EvenSymbol& symbol, const std::vector<double>& values, const EvenSymbol::Inverse& inverse,
                      std::span<std::complex<Real>> spectrum) {
-  const std::size_t rows = symbol.rows();
-  const std::size_t cols = symbol.cols();
-  assert(spectrum.size() == rows * cols);
   const double numerator = inverse.numerator;
-  spectrum[0] *= static_cast<Real>(inverse.at_zero);
-  if (rows == 1) {
-    linalg::for_each_index(cols - 1,
-                           [&](std::size_t k) { spectrum[k + 1] *= static_cast<Real>(numerator / values[k + 1]); });
-    return;
-  }
-  linalg::for_each_row(rows, cols, [&](std::size_t r) {
-    std::complex<Real>* row = spectrum.data() + r * cols;
-    const double* factor = values.data() + symbol.folded(r) * cols;
-    for (std::size_t c = r == 0 ? 1 : 0; c < cols; ++c) row[c] *= static_cast<Real>(numerator / factor[c]);
-  });
+  scale_spectrum(
+      symbol, values, spectrum, [numerator](double value) { return numerator / value; }, &inverse.at_zero);
 }
 
 // out = in through `fft` and `multiply` (of the spectrum) in the
@@ -107,10 +114,8 @@ void EvenSymbol::apply(SingleRealFft& fft, std::span<const float> in, std::span<
   apply_in_precision(fft, in, out, [this](auto spectrum) { multiply(spectrum); });
 }
 
-void EvenSymbol::apply_inverse(const Inverse& inverse, RealFft& fft, std::span<const double> in,
-                               std::span<double> out) const {
-  assert(fft.rows() == rows_ && fft.spectrum_cols() == cols_);
-  apply_in_precision(fft, in, out, [&](auto spectrum) { divide_spectrum(*this, values_, inverse, spectrum); });
+void EvenSymbol::divide(const Inverse& inverse, std::span<std::complex<double>> spectrum) const {
+  divide_spectrum(*this, values_, inverse, spectrum);
 }
 
 void EvenSymbol::apply_inverse(const Inverse& inverse, SingleRealFft& fft, std::span<const double> in,

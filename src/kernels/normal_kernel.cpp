@@ -54,14 +54,6 @@ double NormalKernel::inverse_symbol(double q, double cells) const {
   return layered_ ? 1.0 / (layered_->spectrum(q) * cells) : q * (0.5 * e_star_ / cells);
 }
 
-EvenSymbol NormalKernel::periodic_symbol() const {
-  EvenSymbol kernel(grid_.dimension() == 1 ? 1 : grid_.ny(), grid_.nx() / 2 + 1);
-  for (std::size_t r = 0; r < kernel.stored_rows(); ++r) {
-    for (std::size_t c = 0; c < kernel.cols(); ++c) kernel.at(r, c) = periodic_symbol(r, c);
-  }
-  return kernel;
-}
-
 EvenSymbol NormalKernel::preconditioner_symbol() const {
   EvenSymbol inverse(grid_.dimension() == 1 ? 1 : grid_.ny(), grid_.nx() / 2 + 1);
   for (std::size_t r = 0; r < inverse.stored_rows(); ++r) {
@@ -152,7 +144,8 @@ void NormalKernel::add_real_space_remainder(std::vector<double>& quadrant, std::
 
 // The quadrant rows a block of wrap-around rows reads are consecutive
 // unless it spans row ny (serially, all of them).
-void NormalKernel::write_padded_rows(std::size_t first, std::size_t rows, std::span<double> values) const {
+void NormalKernel::write_padded_rows(std::size_t first, std::size_t rows,
+                                     const std::function<std::span<double>(std::size_t)>& row) const {
   const std::size_t ny = grid_.dimension() == 1 ? 0 : grid_.ny();
   std::size_t low = ny;
   std::size_t high = 0;
@@ -164,7 +157,8 @@ void NormalKernel::write_padded_rows(std::size_t first, std::size_t rows, std::s
   const std::size_t nx = grid_.nx();
   linalg::for_each_row(rows, 2 * nx, [&](std::size_t i) {
     const std::size_t dj = (ny == 0 ? 0 : mirrored(first + i, ny)) - low;
-    for (std::size_t c = 0; c < 2 * nx; ++c) values[i * 2 * nx + c] = quadrant[dj * (nx + 1) + mirrored(c, nx)];
+    const std::span<double> values = row(i);
+    for (std::size_t c = 0; c < 2 * nx; ++c) values[c] = quadrant[dj * (nx + 1) + mirrored(c, nx)];
   });
 }
 
@@ -179,27 +173,12 @@ bool NormalKernel::spectral_remainder() const {
 // coefficients are 2n-periodic, as the DC-FFT's wrap-around grid is, so it
 // enters each bin exactly; their periodic images, which the isolated contact
 // has not, decay like t^2 / r^3 (the |q| term of R at q = 0).
-void NormalKernel::add_spectral_remainder(EvenSymbol& padded, double scale) const {
-  if (!spectral_remainder()) return;
-  linalg::for_each_row(padded.stored_rows(), padded.cols(), [&](std::size_t r) {
-    for (std::size_t c = 0; c < padded.cols(); ++c) padded.at(r, c) += padded_remainder(r, c) * scale;
-  });
-}
-
 double NormalKernel::padded_remainder(std::size_t row, std::size_t col) const {
   const double dx = grid_.dx();
   const double qx = dft_wavenumber(col, 2 * grid_.nx(), dx);
   if (grid_.dimension() == 1) return layered_->remainder_strip_spectrum(qx, dx);
   const double qy = dft_wavenumber(row, 2 * grid_.ny(), grid_.dy());
   return layered_->remainder_cell_spectrum(qx, qy, dx, grid_.dy());
-}
-
-// The inverse DFT's sum over the full spectrum, row by row.
-double NormalKernel::padded_self_influence(const EvenSymbol& padded) const {
-  const std::size_t cols = padded.cols();
-  return padded_self_influence(padded.rows() * cols, [&](std::size_t k) {
-    return std::pair{padded.at(padded.folded(k / cols), k % cols), k % cols};
-  });
 }
 
 }  // namespace halfspace::kernels

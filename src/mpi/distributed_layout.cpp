@@ -15,8 +15,6 @@
 
 #include "halfspace/mpi/slab_level_transfer.hpp"
 #include "halfspace/mpi/slab_spectral_transforms.hpp"
-#include "halfspace/operators/fft_influence_operator.hpp"
-#include "halfspace/solvers/fourier_preconditioner.hpp"
 
 namespace halfspace::mpi {
 namespace {
@@ -28,31 +26,9 @@ constexpr const char* kNotYet = "is not available with more than one process yet
 
 }  // namespace
 
-solvers::ElasticOperators DistributedLayout::make_operators(const Grid& grid, const HalfSpace& half_space, bool fourier,
-                                                            FftPlanning planning) const {
-  solvers::ElasticOperators made;
-  std::shared_ptr<operators::SpectralTransforms> transforms = make_slab_transforms(grid, comm_, planning, {.count = 1});
-  auto op = std::make_unique<FftInfluenceOperator>(grid, half_space, transforms);
-  if (fourier) {
-    if (!grid.periodic()) {
-      transforms =
-          make_slab_transforms(grid, comm_, planning, {.count = 1, .unpadded = true, .workspace = op->scratch()});
-    }
-    made.fourier = std::make_unique<solvers::FourierPreconditioner>(grid, half_space, std::move(transforms));
-  }
-  made.op = std::move(op);
-  return made;
-}
-
-std::unique_ptr<TangentialOperator> DistributedLayout::make_tangential_operator(const Grid& grid,
-                                                                                const ElasticPair& pair,
-                                                                                FftPlanning planning) const {
-  return std::make_unique<TangentialOperator>(grid, pair, make_slab_transforms(grid, comm_, planning));
-}
-
-std::unique_ptr<operators::SpectralTransforms> DistributedLayout::make_transforms(const Grid& grid,
-                                                                                  FftPlanning planning) const {
-  return make_slab_transforms(grid, comm_, planning);
+std::unique_ptr<operators::SpectralTransforms> DistributedLayout::make_transforms(
+    const Grid& grid, FftPlanning planning, const operators::TransformsShape& shape) const {
+  return make_slab_transforms(grid, comm_, planning, shape);
 }
 
 solvers::RowSlab DistributedLayout::rows(const Grid& grid) const {

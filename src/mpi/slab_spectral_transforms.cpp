@@ -51,8 +51,8 @@ struct Columns {
 template <class Fft>
 class SlabTransforms : public operators::SpectralTransforms {
  public:
-  SlabTransforms(const Grid& grid, const MpiCommunicator& comm, FftPlanning planning, const SlabTransformsShape& shape,
-                 std::size_t length)
+  SlabTransforms(const Grid& grid, const MpiCommunicator& comm, FftPlanning planning,
+                 const operators::TransformsShape& shape, std::size_t length)
       : comm_(comm), planning_(planning) {
     for (int k = 0; k < shape.count; ++k) {
       if constexpr (std::is_same_v<Fft, SlabRealFft>) {
@@ -69,6 +69,7 @@ class SlabTransforms : public operators::SpectralTransforms {
   std::size_t spectrum_blocks() const override { return held_.columns; }
   std::size_t spectrum_length() const override { return held_.length; }
   SpectrumMode mode(std::size_t k) const override { return held_.mode(k); }
+  bool transposed() const override { return true; }
   std::size_t spectrum_rows() const override { return held_.length; }
   std::span<std::complex<double>> forward(int k, std::span<const double> values) override {
     fft_[k]->forward(values);
@@ -87,7 +88,7 @@ class SlabTransforms : public operators::SpectralTransforms {
 class PeriodicSlabTransforms final : public SlabTransforms<SlabRealFft> {
  public:
   PeriodicSlabTransforms(const Grid& grid, const MpiCommunicator& comm, FftPlanning planning,
-                         const SlabTransformsShape& shape)
+                         const operators::TransformsShape& shape)
       : SlabTransforms(grid, comm, planning, shape, grid.ny()), cells_(static_cast<double>(grid.size())) {}
 
   std::size_t local_size() const override { return fft_[0]->layout().local_size(); }
@@ -96,8 +97,7 @@ class PeriodicSlabTransforms final : public SlabTransforms<SlabRealFft> {
   std::span<const std::complex<double>> transform_wraparound_rows(const WraparoundRows& /*fill*/) override {
     throw std::logic_error("a periodic grid's symbols are analytic: no wrap-around coefficients");
   }
-  std::unique_ptr<operators::CirculantForm> padded_form(std::vector<double> /*kernel*/,
-                                                        std::vector<double> /*stiffness*/) override {
+  std::unique_ptr<operators::CirculantForm> padded_form(EvenSymbol /*kernel*/, EvenSymbol /*stiffness*/) override {
     throw std::logic_error("a periodic grid's circulant form is the grid itself");
   }
 
@@ -110,10 +110,10 @@ class PeriodicSlabTransforms final : public SlabTransforms<SlabRealFft> {
 class SlabPaddedCirculantForm final : public operators::CirculantForm {
  public:
   // `top` is the operator's transform (its buffer used only inside a
-  // product); `kernel` and `stiffness` on this process's columns
-  // ([c * 2ny + r]), with 1/N of one transform pair in.
-  SlabPaddedCirculantForm(SlabPaddedRealFft& top, std::unique_ptr<SlabPaddedRealFft> bottom, std::vector<double> kernel,
-                          std::vector<double> stiffness)
+  // product); `kernel` and `stiffness` on this process's columns (2ny rows
+  // each, folded), with 1/N of one transform pair in.
+  SlabPaddedCirculantForm(SlabPaddedRealFft& top, std::unique_ptr<SlabPaddedRealFft> bottom, EvenSymbol kernel,
+                          EvenSymbol stiffness)
       : CirculantForm(true),
         top_(top),
         bottom_(std::move(bottom)),
@@ -126,7 +126,7 @@ class SlabPaddedCirculantForm final : public operators::CirculantForm {
   void apply_inverse(std::span<const double> in, std::span<double> out) override { multiply(in, out, stiffness_); }
 
  private:
-  void multiply(std::span<const double> in, std::span<double> out, const std::vector<double>& symbol) {
+  void multiply(std::span<const double> in, std::span<double> out, const EvenSymbol& symbol) {
     assert(in.size() == local_size() && out.size() == local_size());
     const std::size_t half = local_size() / 2;
     // In place is safe: both halves are read before either is written.
@@ -135,12 +135,11 @@ class SlabPaddedCirculantForm final : public operators::CirculantForm {
     const std::size_t padded_rows = 2 * top_.layout().ny;
     std::complex<double>* a = top_.spectrum().data();
     std::complex<double>* b = bottom_->spectrum().data();
-    const double* s = symbol.data();
     linalg::for_each_row(top_.layout().columns, padded_rows, [&](std::size_t c) {
       for (std::size_t r = 0; r < padded_rows; ++r) {
         const std::size_t k = c * padded_rows + r;
         const double sign = r % 2 == 0 ? 1.0 : -1.0;
-        const std::complex<double> product = (a[k] + sign * b[k]) * s[k];
+        const std::complex<double> product = (a[k] + sign * b[k]) * symbol.at(c, symbol.folded(r));
         a[k] = product;
         b[k] = sign * product;
       }
@@ -151,14 +150,14 @@ class SlabPaddedCirculantForm final : public operators::CirculantForm {
 
   SlabPaddedRealFft& top_;
   std::unique_ptr<SlabPaddedRealFft> bottom_;
-  std::vector<double> kernel_;
-  std::vector<double> stiffness_;
+  EvenSymbol kernel_;
+  EvenSymbol stiffness_;
 };
 
 class FreeSlabTransforms final : public SlabTransforms<SlabPaddedRealFft> {
  public:
   FreeSlabTransforms(const Grid& grid, const MpiCommunicator& comm, FftPlanning planning,
-                     const SlabTransformsShape& shape)
+                     const operators::TransformsShape& shape)
       : SlabTransforms(grid, comm, planning, shape, 2 * grid.ny()), nx_(grid.nx()), ny_(grid.ny()) {}
 
   std::size_t local_size() const override { return fft_[0]->layout().rows * nx_; }
@@ -177,7 +176,9 @@ class FreeSlabTransforms final : public SlabTransforms<SlabPaddedRealFft> {
     const std::size_t held = held_.columns * held_.length;
     std::vector<std::complex<double>> sum(held);
     for (std::size_t a = 0; a < 2; ++a) {
-      if (rows > 0) fill(first_row + a * ny_, rows, wide);
+      if (rows > 0) {
+        fill(first_row + a * ny_, rows, [&](std::size_t i) { return std::span(wide).subspan(i * width, width); });
+      }
       for (std::size_t b = 0; b < 2; ++b) {
         linalg::for_each_row(rows, nx_, [&](std::size_t i) {
           for (std::size_t c = 0; c < nx_; ++c) quadrant[i * nx_ + c] = wide[i * width + c + b * nx_];
@@ -198,8 +199,7 @@ class FreeSlabTransforms final : public SlabTransforms<SlabPaddedRealFft> {
     return spectrum;
   }
 
-  std::unique_ptr<operators::CirculantForm> padded_form(std::vector<double> kernel,
-                                                        std::vector<double> stiffness) override {
+  std::unique_ptr<operators::CirculantForm> padded_form(EvenSymbol kernel, EvenSymbol stiffness) override {
     return std::make_unique<SlabPaddedCirculantForm>(*fft_[0],
                                                      std::make_unique<SlabPaddedRealFft>(nx_, ny_, comm_, planning_),
                                                      std::move(kernel), std::move(stiffness));
@@ -214,7 +214,7 @@ class FreeSlabTransforms final : public SlabTransforms<SlabPaddedRealFft> {
 
 std::unique_ptr<operators::SpectralTransforms> make_slab_transforms(const Grid& grid, const MpiCommunicator& comm,
                                                                     FftPlanning planning,
-                                                                    const SlabTransformsShape& shape) {
+                                                                    const operators::TransformsShape& shape) {
   if (grid.dimension() != 2) {
     throw InputError(fmt::format("the distributed operators need a 2D grid, not a {}D one", grid.dimension()));
   }

@@ -9,21 +9,24 @@
 namespace halfspace::operators {
 namespace {
 
-const Grid& checked_periodic(const Grid& grid) {
-  if (!grid.periodic()) {
+const Grid& checked_periodic(const FftInfluenceOperator& exact) {
+  if (!exact.grid().periodic()) {
     throw InputError(
         "SinglePrecisionFftOperator: a free grid's product needs its zero-padded transform; periodic grids only");
   }
-  return grid;
+  if (exact.symbol().transposed()) {
+    throw InputError("SinglePrecisionFftOperator: the operator's symbol is held in slabs; one process only");
+  }
+  return exact.grid();
 }
 
 }  // namespace
 
 SinglePrecisionFftOperator::SinglePrecisionFftOperator(const FftInfluenceOperator& exact,
                                                        std::shared_ptr<SingleRealFft> transform)
-    : grid_(checked_periodic(exact.grid())),
+    : grid_(checked_periodic(exact)),
       transform_(checked_grid_transform(grid_, std::move(transform), "SinglePrecisionFftOperator")),
-      kernel_(exact.periodic_symbol()),
+      kernel_(exact.symbol()),
       self_influence_(exact.self_influence()) {}
 
 void SinglePrecisionFftOperator::apply(std::span<const double> pressure, std::span<double> displacement) {

@@ -16,37 +16,61 @@
 namespace halfspace::operators {
 namespace {
 
-// The grid's own transform per component on periodic grids (shared with
-// nothing), the pruned padded one on free grids.
+// K and K^-1 as symbols on a transform of the whole padded grid of a free
+// one (its padding carries values here).
+class WholeGridForm final : public CirculantForm {
+ public:
+  WholeGridForm(std::unique_ptr<RealFft> fft, EvenSymbol kernel, EvenSymbol stiffness)
+      : CirculantForm(true), fft_(std::move(fft)), kernel_(std::move(kernel)), stiffness_(std::move(stiffness)) {}
+  std::size_t local_size() const override { return fft_->real_size(); }
+  std::size_t size() const override { return fft_->real_size(); }
+  std::size_t row_stride() const override { return fft_->real_size() / fft_->rows(); }
+  void apply(std::span<const double> in, std::span<double> out) override { kernel_.apply(*fft_, in, out); }
+  void apply_inverse(std::span<const double> in, std::span<double> out) override { stiffness_.apply(*fft_, in, out); }
+
+ private:
+  std::unique_ptr<RealFft> fft_;
+  EvenSymbol kernel_;
+  EvenSymbol stiffness_;
+};
+
+// The grid's own transforms (periodic, or unpadded; the first possibly in
+// a workspace), or the pruned padded ones on free grids.
 class SerialSpectralTransforms final : public SpectralTransforms {
  public:
-  SerialSpectralTransforms(const Grid& grid, FftPlanning planning) : size_(grid.size()) {
-    if (grid.periodic()) {
-      for (auto& t : periodic_) t = make_grid_transform(grid, planning);
-    } else {
-      for (auto& t : padded_)
-        t = std::make_unique<PaddedRealFft>(grid.dimension() == 1 ? 1 : grid.ny(), grid.nx(), planning);
+  SerialSpectralTransforms(const Grid& grid, FftPlanning planning, const TransformsShape& shape)
+      : grid_(grid), planning_(planning) {
+    for (int k = 0; k < shape.count; ++k) {
+      if (grid.periodic() || shape.unpadded) {
+        own_[k] = k == 0 && !shape.workspace.empty() ? make_grid_transform(grid, planning, shape.workspace)
+                                                     : make_grid_transform(grid, planning);
+      } else {
+        padded_[k] = std::make_unique<PaddedRealFft>(grid.dimension() == 1 ? 1 : grid.ny(), grid.nx(), planning);
+      }
     }
   }
 
-  std::size_t local_size() const override { return size_; }
+  std::size_t local_size() const override { return grid_.size(); }
   const linalg::Communicator& communicator() const override { return linalg::serial_communicator(); }
   std::size_t spectrum_blocks() const override { return spectrum_rows(); }
   std::size_t spectrum_length() const override {
-    return padded_[0] ? padded_[0]->spectrum_cols() : periodic_[0]->spectrum_cols();
+    return padded_[0] ? padded_[0]->spectrum_cols() : own_[0]->spectrum_cols();
   }
   SpectrumMode mode(std::size_t k) const override { return {k / spectrum_length(), k % spectrum_length()}; }
-  std::size_t spectrum_rows() const override { return padded_[0] ? padded_[0]->spectrum_rows() : periodic_[0]->rows(); }
+  bool transposed() const override { return false; }
+  std::size_t spectrum_rows() const override { return padded_[0] ? padded_[0]->spectrum_rows() : own_[0]->rows(); }
   double transform_size() const override {
-    return padded_[0] ? static_cast<double>(padded_[0]->padded_size()) : static_cast<double>(size_);
+    return static_cast<double>(padded_[0] ? padded_[0]->padded_size() : grid_.size());
   }
 
+  // The grid's own transform reads and writes the caller's arrays directly
+  // where FFTW allows it, else copies through its own buffers.
   std::span<std::complex<double>> forward(int k, std::span<const double> values) override {
     if (padded_[0]) {
       padded_[k]->forward(values);
       return padded_[k]->spectrum();
     }
-    RealFft& fft = *periodic_[k];
+    RealFft& fft = *own_[k];
     if (!fft.forward_from(values)) {
       std::span<double> input = fft.input();
       linalg::for_each_index(values.size(), [&](std::size_t i) { input[i] = values[i]; });
@@ -56,7 +80,7 @@ class SerialSpectralTransforms final : public SpectralTransforms {
   }
 
   std::span<std::complex<double>> spectrum(int k) override {
-    return padded_[0] ? padded_[k]->spectrum() : periodic_[k]->spectrum();
+    return padded_[0] ? padded_[k]->spectrum() : own_[k]->spectrum();
   }
 
   void backward(int k, std::span<double> values) override {
@@ -64,7 +88,7 @@ class SerialSpectralTransforms final : public SpectralTransforms {
       padded_[k]->backward(values);
       return;
     }
-    RealFft& fft = *periodic_[k];
+    RealFft& fft = *own_[k];
     if (!fft.backward_into(values)) {
       fft.backward();
       std::span<const double> output = fft.output();
@@ -74,62 +98,68 @@ class SerialSpectralTransforms final : public SpectralTransforms {
 
   std::span<std::complex<double>> workspace() override { return spectrum(0); }
 
-  // Row by row, in parallel, straight into the padded rows.
+  // Straight into the padded rows, all at once.
   std::span<const std::complex<double>> transform_wraparound_rows(const WraparoundRows& fill) override {
     PaddedRealFft& fft = *padded_[0];
-    linalg::for_each_row(fft.spectrum_rows(), 2 * fft.spectrum_cols(),
-                         [&](std::size_t r) { fill(r, 1, fft.padded_row(r)); });
+    fill(0, fft.spectrum_rows(), [&](std::size_t r) { return fft.padded_row(r); });
     fft.forward_all_rows();
     return fft.spectrum();
   }
 
-  // The serial FftInfluenceOperator forms its padded grid on a transform of
-  // the whole padded grid instead (its symbols rows folded).
-  std::unique_ptr<CirculantForm> padded_form(std::vector<double> /*kernel*/,
-                                             std::vector<double> /*stiffness*/) override {
-    throw std::logic_error("the serial transforms make no padded circulant form");
+  // A transform of the whole padded grid of its own: the pruned ones never
+  // hold the padding.
+  std::span<const std::complex<double>> transform_form_wraparound(const WraparoundRows& fill) override {
+    if (!padded_[0]) throw std::logic_error("a periodic grid's circulant form is the grid itself");
+    const std::size_t width = 2 * grid_.nx();
+    whole_ = grid_.dimension() == 1 ? std::make_unique<RealFft>(width, planning_)
+                                    : std::make_unique<RealFft>(2 * grid_.ny(), width, planning_);
+    fill(0, padded_[0]->spectrum_rows(), [&](std::size_t r) { return whole_->input().subspan(r * width, width); });
+    whole_->forward();
+    return whole_->spectrum();
+  }
+
+  std::unique_ptr<CirculantForm> padded_form(EvenSymbol kernel, EvenSymbol stiffness) override {
+    if (!whole_) throw std::logic_error("padded_form: transform_form_wraparound first");
+    return std::make_unique<WholeGridForm>(std::move(whole_), std::move(kernel), std::move(stiffness));
   }
 
  private:
-  std::size_t size_;
-  std::shared_ptr<RealFft> periodic_[2];      // periodic grids: one transform per component
-  std::unique_ptr<PaddedRealFft> padded_[2];  // free grids
+  Grid grid_;
+  FftPlanning planning_;
+  std::shared_ptr<RealFft> own_[2];           // the grid's own transforms
+  std::unique_ptr<PaddedRealFft> padded_[2];  // or the padded ones (free grids)
+  std::unique_ptr<RealFft> whole_;            // the whole padded grid's, until padded_form takes it
 };
 
 }  // namespace
 
 std::span<const std::complex<double>> SpectralTransforms::transform_wraparound(
     const std::function<double(std::size_t row, std::size_t col)>& value) {
-  return transform_wraparound_rows([&](std::size_t first, std::size_t rows, std::span<double> values) {
-    const std::size_t width = values.size() / rows;
-    linalg::for_each_row(rows, width, [&](std::size_t i) {
-      for (std::size_t c = 0; c < width; ++c) values[i * width + c] = value(first + i, c);
+  return transform_wraparound_rows([&](std::size_t first, std::size_t rows, const Row& row) {
+    linalg::for_each_row(rows, 2 * spectrum_length(), [&](std::size_t i) {
+      const std::span<double> values = row(i);
+      for (std::size_t c = 0; c < values.size(); ++c) values[c] = value(first + i, c);
     });
   });
 }
 
-std::unique_ptr<SpectralTransforms> make_serial_transforms(const Grid& grid, FftPlanning planning) {
-  return std::make_unique<SerialSpectralTransforms>(grid, planning);
+std::unique_ptr<SpectralTransforms> make_serial_transforms(const Grid& grid, FftPlanning planning,
+                                                           const TransformsShape& shape) {
+  if (shape.count < 1 || shape.count > 2) throw std::logic_error("spectral transforms: count must be 1 or 2");
+  return std::make_unique<SerialSpectralTransforms>(grid, planning, shape);
 }
 
-std::vector<double> held_values(const SpectralTransforms& transforms, const std::function<double(SpectrumMode)>& f) {
-  std::vector<double> values(transforms.held());
+EvenSymbol held_symbol(const SpectralTransforms& transforms,
+                       const std::function<double(std::size_t k, SpectrumMode mode)>& f) {
+  EvenSymbol symbol(transforms.spectrum_blocks(), transforms.spectrum_length(), transforms.transposed());
   const std::size_t length = transforms.spectrum_length();
-  linalg::for_each_row(transforms.spectrum_blocks(), length, [&](std::size_t block) {
-    for (std::size_t k = block * length; k < (block + 1) * length; ++k) values[k] = f(transforms.mode(k));
+  linalg::for_each_row(symbol.stored_rows(), symbol.stored_cols(), [&](std::size_t r) {
+    for (std::size_t c = 0; c < symbol.stored_cols(); ++c) {
+      const std::size_t k = r * length + c;
+      symbol.at(r, c) = f(k, transforms.mode(k));
+    }
   });
-  return values;
-}
-
-void apply_symbol(SpectralTransforms& transforms, int k, const std::vector<double>& symbol, std::span<const double> in,
-                  std::span<double> out) {
-  const std::span<std::complex<double>> spectrum = transforms.forward(k, in);
-  const std::size_t length = transforms.spectrum_length();
-  const double* s = symbol.data();
-  linalg::for_each_row(transforms.spectrum_blocks(), length, [&](std::size_t block) {
-    for (std::size_t i = block * length; i < (block + 1) * length; ++i) spectrum[i] *= s[i];
-  });
-  transforms.backward(k, out);
+  return symbol;
 }
 
 }  // namespace halfspace::operators

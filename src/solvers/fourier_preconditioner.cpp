@@ -12,7 +12,6 @@
 #include <memory>
 #include <stdexcept>
 #include <utility>
-#include <vector>
 
 #include "halfspace/error.hpp"
 #include "halfspace/fft/even_symbol.hpp"
@@ -21,73 +20,88 @@
 #include "halfspace/kernels/normal_kernel.hpp"
 
 namespace halfspace::solvers {
+namespace {
+
+std::shared_ptr<operators::SpectralTransforms> checked_unpadded(
+    const Grid& grid, std::shared_ptr<operators::SpectralTransforms> transforms) {
+  if (transforms->transform_size() != static_cast<double>(grid.size())) {
+    throw InputError(
+        fmt::format("FourierPreconditioner: the transforms are not the {} grid's own (unpadded)", grid.shape_string()));
+  }
+  return transforms;
+}
+
+}  // namespace
+
 struct FourierPreconditioner::Impl {
-  // One of the two transforms: double or single precision.
-  Impl(const Grid& g, const HalfSpace& half_space, std::shared_ptr<RealFft> shared,
-       std::shared_ptr<SingleRealFft> single_shared = nullptr, const EvenSymbol* operator_kernel = nullptr)
-      : grid(g),
-        transform(std::move(shared)),
-        single(std::move(single_shared)),
-        symbol(operator_kernel ? EvenSymbol(0, 0) : kernels::NormalKernel(g, half_space).preconditioner_symbol()),
-        kernel(operator_kernel) {
-    if (kernel) {
-      const double cells = static_cast<double>(g.size());
-      inverse = {1.0 / (cells * cells), kernels::NormalKernel(g, half_space).preconditioner_at_zero()};
-    }
-  }
-
-  // out = M^-1 in through `fft`.
-  template <class Fft, class In, class Out>
-  void apply(Fft& fft, In in, Out out) const {
-    if (kernel) {
-      kernel->apply_inverse(inverse, fft, in, out);
-    } else {
-      symbol.apply(fft, in, out);
-    }
-  }
-
-  // On spectral transforms of the grid's own spectrum.
-  Impl(const Grid& g, const HalfSpace& half_space, std::shared_ptr<operators::SpectralTransforms> t)
-      : grid(g), symbol(0, 0), kernel(nullptr), transforms(std::move(t)) {
-    if (transforms->transform_size() != static_cast<double>(g.size())) {
-      throw InputError(
-          fmt::format("FourierPreconditioner: the transforms are not the {} grid's own (unpadded)", g.shape_string()));
-    }
+  // On `t` (double) or `s` (single precision); its own symbol, or the
+  // inverse of the operator's `operator_kernel`.
+  Impl(const Grid& g, const HalfSpace& half_space, std::shared_ptr<operators::SpectralTransforms> t,
+       std::shared_ptr<SingleRealFft> s, const EvenSymbol* operator_kernel)
+      : grid(g), transforms(std::move(t)), single(std::move(s)), kernel(operator_kernel) {
     const kernels::NormalKernel normal(g, half_space);
-    held = operators::held_values(
-        *transforms, [&](operators::SpectrumMode m) { return normal.preconditioner_symbol(m.row, m.col); });
+    if (!kernel) {
+      symbol = single ? normal.preconditioner_symbol()
+                      : operators::held_symbol(*transforms, [&](std::size_t, operators::SpectrumMode m) {
+                          return normal.preconditioner_symbol(m.row, m.col);
+                        });
+      return;
+    }
+    const double cells = static_cast<double>(g.size());
+    inverse = {1.0 / (cells * cells), normal.preconditioner_at_zero()};
+    // A slab not holding the mean mode divides its first entry too.
+    if (transforms && transforms->held() > 0 && (transforms->mode(0).row != 0 || transforms->mode(0).col != 0)) {
+      inverse.at_zero = inverse.numerator / kernel->at(0, 0);
+    }
+  }
+
+  // spectrum *= M^-1's symbol.
+  template <class Spectrum>
+  void multiply(Spectrum spectrum) const {
+    if (kernel) {
+      kernel->divide(inverse, spectrum);
+    } else {
+      symbol.multiply(spectrum);
+    }
+  }
+
+  // out = M^-1 in through the single-precision transform.
+  template <class In, class Out>
+  void apply_single(In in, Out out) const {
+    if (kernel) {
+      kernel->apply_inverse(inverse, *single, in, out);
+    } else {
+      symbol.apply(*single, in, out);
+    }
   }
 
   Grid grid;
-  std::shared_ptr<RealFft> transform;     // own, or shared with the operator
-  std::shared_ptr<SingleRealFft> single;  // instead of `transform`: mixed precision
-  EvenSymbol symbol;                      // E*|q|/(2N) or its layered form, rows folded (even in qy); or empty:
-  const EvenSymbol* kernel;               // the operator's K symbol, whose inverse it forms
-  EvenSymbol::Inverse inverse;            // 1/N^2 and the mean mode, with `kernel`
-  // Instead of the transforms above: spectral transforms and the symbol on
-  // the entries held there.
-  std::shared_ptr<operators::SpectralTransforms> transforms;
-  std::vector<double> held;
+  std::shared_ptr<operators::SpectralTransforms> transforms;  // own, or shared with the operator
+  std::shared_ptr<SingleRealFft> single;                      // instead of `transforms`: mixed precision
+  EvenSymbol symbol{0, 0};      // E*|q|/(2N) or its layered form (held_symbol's layout); or empty:
+  const EvenSymbol* kernel;     // the operator's K symbol, whose inverse it forms
+  EvenSymbol::Inverse inverse;  // 1/N^2 and the mean mode, with `kernel`
 };
 
 FourierPreconditioner::FourierPreconditioner(const Grid& grid, const HalfSpace& half_space, FftPlanning planning)
-    : impl_(std::make_unique<Impl>(grid, half_space, make_grid_transform(grid, planning))) {}
+    : FourierPreconditioner(grid, half_space,
+                            operators::make_serial_transforms(grid, planning, {.count = 1, .unpadded = true})) {}
 
 FourierPreconditioner::FourierPreconditioner(const Grid& grid, const HalfSpace& half_space,
-                                             std::shared_ptr<RealFft> transform)
-    : impl_(std::make_unique<Impl>(grid, half_space,
-                                   checked_grid_transform(grid, std::move(transform), "FourierPreconditioner"))) {}
+                                             std::shared_ptr<operators::SpectralTransforms> transforms)
+    : impl_(std::make_unique<Impl>(grid, half_space, checked_unpadded(grid, std::move(transforms)), nullptr, nullptr)) {
+}
+
+FourierPreconditioner::FourierPreconditioner(const Grid& grid, const HalfSpace& half_space, const EvenSymbol& kernel,
+                                             std::shared_ptr<operators::SpectralTransforms> transforms)
+    : impl_(std::make_unique<Impl>(grid, half_space, checked_unpadded(grid, std::move(transforms)), nullptr, &kernel)) {
+}
 
 FourierPreconditioner::FourierPreconditioner(const Grid& grid, const HalfSpace& half_space,
                                              std::shared_ptr<SingleRealFft> transform)
     : impl_(std::make_unique<Impl>(grid, half_space, nullptr,
-                                   checked_grid_transform(grid, std::move(transform), "FourierPreconditioner"))) {}
-
-FourierPreconditioner::FourierPreconditioner(const Grid& grid, const HalfSpace& half_space, const EvenSymbol& kernel,
-                                             std::shared_ptr<RealFft> transform)
-    : impl_(std::make_unique<Impl>(grid, half_space,
-                                   checked_grid_transform(grid, std::move(transform), "FourierPreconditioner"), nullptr,
-                                   &kernel)) {}
+                                   checked_grid_transform(grid, std::move(transform), "FourierPreconditioner"),
+                                   nullptr)) {}
 
 FourierPreconditioner::FourierPreconditioner(const Grid& grid, const HalfSpace& half_space, const EvenSymbol& kernel,
                                              std::shared_ptr<SingleRealFft> transform)
@@ -95,32 +109,25 @@ FourierPreconditioner::FourierPreconditioner(const Grid& grid, const HalfSpace& 
                                    checked_grid_transform(grid, std::move(transform), "FourierPreconditioner"),
                                    &kernel)) {}
 
-FourierPreconditioner::FourierPreconditioner(const Grid& grid, const HalfSpace& half_space,
-                                             std::shared_ptr<operators::SpectralTransforms> transforms)
-    : impl_(std::make_unique<Impl>(grid, half_space, std::move(transforms))) {}
-
 FourierPreconditioner::~FourierPreconditioner() = default;
 
 void FourierPreconditioner::apply(std::span<const double> in, std::span<double> out) {
-  Impl& m = *impl_;
+  const Impl& m = *impl_;
   // `in` is read before `out` is written, so the two may alias.
-  if (m.transforms) {
-    operators::apply_symbol(*m.transforms, 0, m.held, in, out);
+  if (m.single) {
+    assert(in.size() == m.grid.size() && out.size() == m.grid.size());
+    m.apply_single(in, out);
     return;
   }
-  assert(in.size() == m.grid.size() && out.size() == m.grid.size());
-  if (m.single) {
-    m.apply(*m.single, in, out);
-  } else {
-    m.apply(*m.transform, in, out);
-  }
+  operators::apply_spectral(*m.transforms, 0, in, out,
+                            [&](std::span<std::complex<double>> spectrum) { m.multiply(spectrum); });
 }
 
 void FourierPreconditioner::apply(std::span<const float> in, std::span<float> out) {
-  Impl& m = *impl_;
+  const Impl& m = *impl_;
   assert(in.size() == m.grid.size() && out.size() == m.grid.size());
   if (!m.single) throw std::logic_error("FourierPreconditioner: single-precision vectors need its single transform");
-  m.apply(*m.single, in, out);
+  m.apply_single(in, out);
 }
 
 }  // namespace halfspace::solvers

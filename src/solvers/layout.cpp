@@ -1,5 +1,5 @@
-// The serial layout: the FFT operator and the Fourier preconditioner on the
-// whole grid, sharing what they can.
+// The operators every layout makes on its transforms, and the serial
+// layout: the whole grid on this process, one slab.
 #include "halfspace/solvers/layout.hpp"
 
 #include "halfspace/fft/grid_transform.hpp"
@@ -16,35 +16,9 @@ class SerialLayout final : public Layout {
  public:
   explicit SerialLayout(bool estimated_plans) : estimated_plans_(estimated_plans) {}
 
-  // Periodic grids: both transform the unpadded grid, and Polonsky-Keer
-  // applies them one after the other, so one transform serves both (a real
-  // and a complex array per cell less), and M^-1 is the inverse of K's
-  // symbol (no symbol of its own). Free grids: the preconditioner's
-  // unpadded transform works in the operator's padded buffer, idle between
-  // products (16 B per cell less).
-  ElasticOperators make_operators(const Grid& grid, const HalfSpace& half_space, bool fourier,
-                                  FftPlanning planning) const override {
-    if (estimated_plans_) planning = FftPlanning::estimate;
-    ElasticOperators made;
-    if (fourier && grid.periodic()) {
-      auto transform = make_grid_transform(grid, planning);
-      auto op = std::make_unique<FftInfluenceOperator>(grid, half_space, transform);
-      // M^-1 as the inverse of K's own symbol: no symbol of its own.
-      made.fourier = std::make_unique<FourierPreconditioner>(grid, half_space, op->periodic_symbol(), transform);
-      made.op = std::move(op);
-      return made;
-    }
-    auto op = std::make_unique<FftInfluenceOperator>(grid, half_space, planning);
-    if (fourier) {
-      made.fourier =
-          std::make_unique<FourierPreconditioner>(grid, half_space, make_grid_transform(grid, planning, op->scratch()));
-    }
-    made.op = std::move(op);
-    return made;
-  }
-  std::unique_ptr<TangentialOperator> make_tangential_operator(const Grid& grid, const ElasticPair& pair,
-                                                               FftPlanning planning) const override {
-    return std::make_unique<TangentialOperator>(grid, pair, estimated_plans_ ? FftPlanning::estimate : planning);
+  std::unique_ptr<operators::SpectralTransforms> make_transforms(
+      const Grid& grid, FftPlanning planning, const operators::TransformsShape& shape) const override {
+    return operators::make_serial_transforms(grid, estimated_plans_ ? FftPlanning::estimate : planning, shape);
   }
   // Periodic grids: the double transform for the products K p, and one in
   // single precision for the step's products and M^-1, living in the double
@@ -59,10 +33,10 @@ class SerialLayout final : public Layout {
     if (estimated_plans_) planning = FftPlanning::estimate;
     ElasticOperators made;
     if (grid.periodic()) {
-      auto transform = make_grid_transform(grid, planning);
-      auto exact = std::make_unique<FftInfluenceOperator>(grid, half_space, transform);
-      const EvenSymbol& kernel = exact->periodic_symbol();
-      auto single = make_single_grid_transform(grid, planning, transform->spectrum());
+      auto exact =
+          std::make_unique<FftInfluenceOperator>(grid, half_space, make_transforms(grid, planning, {.count = 1}));
+      const EvenSymbol& kernel = exact->symbol();
+      auto single = make_single_grid_transform(grid, planning, exact->transforms()->workspace());
       auto inner = std::make_unique<SinglePrecisionFftOperator>(*exact, single);
       made.op = std::move(exact);
       made.single.kernel = [op = inner.get()](std::span<const float> in, std::span<float> out) { op->apply(in, out); };
@@ -77,10 +51,10 @@ class SerialLayout final : public Layout {
       }
       return made;
     }
-    auto op = std::make_unique<FftInfluenceOperator>(grid, half_space, planning);
+    auto op = std::make_unique<FftInfluenceOperator>(grid, half_space, make_transforms(grid, planning, {.count = 1}));
     if (fourier) {
-      made.fourier = std::make_unique<FourierPreconditioner>(grid, half_space,
-                                                             make_single_grid_transform(grid, planning, op->scratch()));
+      made.fourier = std::make_unique<FourierPreconditioner>(
+          grid, half_space, make_single_grid_transform(grid, planning, op->transforms()->workspace()));
     }
     made.op = std::move(op);
     return made;
@@ -94,14 +68,30 @@ class SerialLayout final : public Layout {
 
 }  // namespace
 
+ElasticOperators Layout::make_operators(const Grid& grid, const HalfSpace& half_space, bool fourier,
+                                        FftPlanning planning) const {
+  ElasticOperators made;
+  std::shared_ptr<operators::SpectralTransforms> transforms = make_transforms(grid, planning, {.count = 1});
+  auto op = std::make_unique<FftInfluenceOperator>(grid, half_space, transforms);
+  if (fourier && grid.periodic()) {
+    made.fourier = std::make_unique<FourierPreconditioner>(grid, half_space, op->symbol(), std::move(transforms));
+  } else if (fourier) {
+    made.fourier = std::make_unique<FourierPreconditioner>(
+        grid, half_space,
+        make_transforms(grid, planning, {.count = 1, .unpadded = true, .workspace = transforms->workspace()}));
+  }
+  made.op = std::move(op);
+  return made;
+}
+
+std::unique_ptr<TangentialOperator> Layout::make_tangential_operator(const Grid& grid, const ElasticPair& pair,
+                                                                     FftPlanning planning) const {
+  return std::make_unique<TangentialOperator>(grid, pair, make_transforms(grid, planning));
+}
+
 // Every level whole here (the MultilevelSolver's default).
 std::unique_ptr<LevelTransfer> Layout::level_transfer(const Grid& /*fine*/, std::size_t /*min_cells_per_axis*/) const {
   return nullptr;
-}
-
-// The whole grid here.
-std::unique_ptr<operators::SpectralTransforms> Layout::make_transforms(const Grid& grid, FftPlanning planning) const {
-  return operators::make_serial_transforms(grid, planning);
 }
 
 ElasticOperators Layout::make_mixed_operators(const Grid& /*grid*/, const HalfSpace& /*half_space*/, bool /*fourier*/,

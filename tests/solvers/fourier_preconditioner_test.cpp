@@ -1,12 +1,13 @@
 // The Fourier preconditioner: on a periodic grid it inverts K except on the
 // mean mode, and it can share one transform (and its buffers) with the
-// periodic FFT operator, interleaved as Polonsky-Keer applies them, with the
+// FFT operator (its transforms, or their idle buffer), interleaved as Polonsky-Keer applies them, with the
 // same bits as separate transforms.
 #include "halfspace/solvers/fourier_preconditioner.hpp"
 
 #include <gtest/gtest.h>
 
 #include <complex>
+#include <functional>
 #include <memory>
 #include <numeric>
 #include <span>
@@ -70,9 +71,10 @@ void expect_same_products(const Grid& grid, FftInfluenceOperator& shared_op,
 TEST(FourierPreconditionerTest, SharedTransformGivesTheSameBits) {
   for (const Grid& grid :
        {Grid::plane(24, 18, 1e-6, 2e-6, Boundary::periodic), Grid::line(40, 1e-6, Boundary::periodic)}) {
-    const auto transform = make_grid_transform(grid, FftPlanning::estimate);
-    FftInfluenceOperator shared_op(grid, kEStar, transform);
-    FourierPreconditioner shared_preconditioner(grid, kEStar, transform);
+    const std::shared_ptr<operators::SpectralTransforms> transforms =
+        operators::make_serial_transforms(grid, FftPlanning::estimate, {.count = 1});
+    FftInfluenceOperator shared_op(grid, kEStar, transforms);
+    FourierPreconditioner shared_preconditioner(grid, kEStar, transforms);
     FftInfluenceOperator own_op(grid, kEStar);
     FourierPreconditioner own_preconditioner(grid, kEStar);
 
@@ -81,20 +83,21 @@ TEST(FourierPreconditionerTest, SharedTransformGivesTheSameBits) {
 }
 
 // Free grids: the preconditioner's transform in the operator's padded
-// buffer (the factory's arrangement) gives the bits of separate buffers.
-TEST(FourierPreconditionerTest, TransformInTheOperatorsScratchGivesTheSameBits) {
+// buffer (the layout's arrangement) gives the bits of separate buffers.
+TEST(FourierPreconditionerTest, TransformInTheOperatorsWorkspaceGivesTheSameBits) {
   for (const Grid& grid : {Grid::plane(24, 18, 1e-6, 2e-6, Boundary::free), Grid::line(40, 1e-6, Boundary::free),
                            Grid::line(41, 1e-6, Boundary::free), Grid::plane(9, 7, 1e-6, 1e-6, Boundary::free)}) {
     FftInfluenceOperator shared_op(grid, kEStar);
-    ASSERT_FALSE(shared_op.scratch().empty());
-    FourierPreconditioner shared_preconditioner(grid, kEStar,
-                                                make_grid_transform(grid, FftPlanning::estimate, shared_op.scratch()));
+    FourierPreconditioner shared_preconditioner(
+        grid, kEStar,
+        operators::make_serial_transforms(
+            grid, FftPlanning::estimate,
+            {.count = 1, .unpadded = true, .workspace = shared_op.transforms()->workspace()}));
     FftInfluenceOperator own_op(grid, kEStar);
     FourierPreconditioner own_preconditioner(grid, kEStar);
 
     expect_same_products(grid, shared_op, shared_preconditioner, own_op, own_preconditioner);
   }
-  EXPECT_TRUE(FftInfluenceOperator(Grid::plane(8, 8, 1e-6, 1e-6, Boundary::periodic), kEStar).scratch().empty());
 }
 
 // Periodic grids: M^-1 formed from the operator's own symbol, 1/(N^2 K),
@@ -106,9 +109,8 @@ TEST(FourierPreconditionerTest, InverseOfTheOperatorsSymbolIsTheStoredOneToRound
   for (const HalfSpace& half_space : {HalfSpace(kEStar), HalfSpace(coating)}) {
     for (const Grid& grid :
          {Grid::plane(24, 18, 1e-6, 2e-6, Boundary::periodic), Grid::line(40, 1e-6, Boundary::periodic)}) {
-      const auto transform = make_grid_transform(grid, FftPlanning::estimate);
-      FftInfluenceOperator op(grid, half_space, transform);
-      FourierPreconditioner inverted(grid, half_space, op.periodic_symbol(), transform);
+      FftInfluenceOperator op(grid, half_space);
+      FourierPreconditioner inverted(grid, half_space, op.symbol(), op.transforms());
       FourierPreconditioner stored(grid, half_space);
       const std::vector<double> field = random_field(grid.size(), 5);
       std::vector<double> got(grid.size());
@@ -121,7 +123,7 @@ TEST(FourierPreconditionerTest, InverseOfTheOperatorsSymbolIsTheStoredOneToRound
       std::vector<std::complex<double>> workspace(
           RealFft::workspace_size(grid.dimension() == 1 ? 1 : grid.ny(), grid.nx()));
       std::vector<std::complex<double>> own_workspace(workspace.size());
-      FourierPreconditioner single_inverted(grid, half_space, op.periodic_symbol(),
+      FourierPreconditioner single_inverted(grid, half_space, op.symbol(),
                                             make_single_grid_transform(grid, FftPlanning::estimate, workspace));
       FourierPreconditioner single_stored(grid, half_space,
                                           make_single_grid_transform(grid, FftPlanning::estimate, own_workspace));
@@ -137,28 +139,43 @@ TEST(FourierPreconditionerTest, InverseOfTheOperatorsSymbolIsTheStoredOneToRound
   }
 }
 
-TEST(FourierPreconditionerTest, SharedTransformMustMatchTheGrid) {
+// Transforms of another grid, or padded where the grid's own are needed
+// (or the reverse), are refused with a message naming the shapes.
+TEST(FourierPreconditionerTest, TransformsMustBeTheGrids) {
   const Grid periodic = Grid::plane(16, 12, 1e-6, 1e-6, Boundary::periodic);
-  const auto wrong = std::make_shared<RealFft>(16, 16, FftPlanning::estimate);
-  try {
-    FourierPreconditioner preconditioner(periodic, kEStar, wrong);
-    FAIL() << "expected InputError";
-  } catch (const InputError& error) {
-    EXPECT_NE(std::string(error.what()).find("16x16 but the grid needs 12x16"), std::string::npos) << error.what();
-  }
-  try {
-    FftInfluenceOperator op(periodic, kEStar, wrong);
-    FAIL() << "expected InputError";
-  } catch (const InputError& error) {
-    EXPECT_NE(std::string(error.what()).find("16x16 but the grid needs 12x16"), std::string::npos) << error.what();
-  }
-  const Grid free = Grid::plane(16, 16, 1e-6, 1e-6, Boundary::free);
-  try {
-    FftInfluenceOperator op(free, kEStar, wrong);
-    FAIL() << "expected InputError";
-  } catch (const InputError& error) {
-    EXPECT_NE(std::string(error.what()).find("periodic grid"), std::string::npos) << error.what();
-  }
+  const Grid free = Grid::plane(16, 12, 1e-6, 1e-6, Boundary::free);
+  const auto expect_refused = [](const std::function<void()>& make, const std::string& wanted) {
+    try {
+      make();
+      ADD_FAILURE() << "expected InputError with " << wanted;
+    } catch (const InputError& error) {
+      EXPECT_NE(std::string(error.what()).find(wanted), std::string::npos) << error.what();
+    }
+  };
+  expect_refused(
+      [&] { FourierPreconditioner(free, kEStar, operators::make_serial_transforms(free, FftPlanning::estimate)); },
+      "not the 16x12 grid's own (unpadded)");
+  expect_refused(
+      [&] {
+        FftInfluenceOperator(free, kEStar,
+                             operators::make_serial_transforms(free, FftPlanning::estimate, {.unpadded = true}));
+      },
+      "not the 16x12 free grid's (zero-padded)");
+  expect_refused(
+      [&] {
+        FftInfluenceOperator(periodic, kEStar,
+                             operators::make_serial_transforms(Grid::plane(16, 16, 1e-6, 1e-6, Boundary::periodic),
+                                                               FftPlanning::estimate));
+      },
+      "not the 16x12 periodic grid's (its own)");
+  std::vector<std::complex<double>> workspace(RealFft::workspace_size(16, 16));
+  expect_refused(
+      [&] {
+        FourierPreconditioner(periodic, kEStar,
+                              make_single_grid_transform(Grid::plane(16, 16, 1e-6, 1e-6, Boundary::periodic),
+                                                         FftPlanning::estimate, workspace));
+      },
+      "16x16 but the grid needs 12x16");
 }
 
 }  // namespace

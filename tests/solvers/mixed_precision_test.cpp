@@ -13,10 +13,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <cstdint>
 #include <cstdio>
 #include <functional>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -256,10 +258,9 @@ TEST(MixedPrecisionTest, ReportsNonConvergenceInsteadOfHidingIt) {
 TEST(MixedPrecisionTest, InnerProductIsSinglePrecision) {
   const Grid grid = Grid::plane(64, 48, 1.0, 1.0, Boundary::periodic);
   const Eigen::ArrayXd pressure = self_affine_gap(grid, 3) + 1.0;
-  auto transform = make_grid_transform(grid, FftPlanning::estimate);
-  FftInfluenceOperator exact(grid, kEStar, transform);
-  SinglePrecisionFftOperator single(exact,
-                                    make_single_grid_transform(grid, FftPlanning::estimate, transform->spectrum()));
+  FftInfluenceOperator exact(grid, kEStar);
+  const std::span<std::complex<double>> workspace = exact.transforms()->workspace();
+  SinglePrecisionFftOperator single(exact, make_single_grid_transform(grid, FftPlanning::estimate, workspace));
   Eigen::ArrayXd u_exact(static_cast<Eigen::Index>(grid.size()));
   Eigen::ArrayXd u_single(static_cast<Eigen::Index>(grid.size()));
   exact.apply({pressure.data(), grid.size()}, {u_exact.data(), grid.size()});
@@ -271,9 +272,9 @@ TEST(MixedPrecisionTest, InnerProductIsSinglePrecision) {
   // Free grids need the padded transform: refused with a message.
   const Grid free = Grid::plane(64, 48, 1.0, 1.0, Boundary::free);
   const FftInfluenceOperator free_exact(free, kEStar);
-  EXPECT_THROW(SinglePrecisionFftOperator(
-                   free_exact, make_single_grid_transform(free, FftPlanning::estimate, transform->spectrum())),
-               InputError);
+  EXPECT_THROW(
+      SinglePrecisionFftOperator(free_exact, make_single_grid_transform(free, FftPlanning::estimate, workspace)),
+      InputError);
 }
 
 // The option named in every refusal: an unknown value, the dense solvers,
@@ -293,13 +294,9 @@ void expect_refused(const std::function<void()>& action, const std::string& want
 // single-precision ones.
 class DoubleOnlyLayout final : public Layout {
  public:
-  ElasticOperators make_operators(const Grid& grid, const HalfSpace& half_space, bool fourier,
-                                  FftPlanning planning) const override {
-    return serial_layout().make_operators(grid, half_space, fourier, planning);
-  }
-  std::unique_ptr<TangentialOperator> make_tangential_operator(const Grid& grid, const ElasticPair& pair,
-                                                               FftPlanning planning) const override {
-    return serial_layout().make_tangential_operator(grid, pair, planning);
+  std::unique_ptr<operators::SpectralTransforms> make_transforms(
+      const Grid& grid, FftPlanning planning, const operators::TransformsShape& shape) const override {
+    return serial_layout().make_transforms(grid, planning, shape);
   }
   RowSlab rows(const Grid& grid) const override { return serial_layout().rows(grid); }
   const linalg::Communicator& communicator() const override { return serial_layout().communicator(); }

@@ -1,8 +1,10 @@
-// A real multiplier on a RealFft spectrum that is even in the row
-// wavenumber, as every half-space kernel and preconditioner symbol is
-// (they depend on |q|). Rows r and rows - r carry the same values, so only
-// rows 0 .. rows/2 are stored: half the memory of a full symbol, and half
-// the symbol traffic of each multiplication.
+// A real multiplier on a spectrum that is even in the row wavenumber ky, as
+// every half-space kernel and preconditioner symbol is (they depend on |q|).
+// The spectrum is laid out as rows x cols entries, ky being the row (a
+// RealFft's, row-major) or, transposed, the column (a slab transform's
+// columns kx, each holding every ky). Entries ky and n - ky carry the same
+// value, so only ky = 0 .. n/2 are stored: half the memory of a full
+// symbol, and half the symbol traffic of each multiplication.
 #pragma once
 
 #include <complex>
@@ -16,20 +18,39 @@ namespace halfspace::fft {
 
 class EvenSymbol {
  public:
-  // For a spectrum of `rows` rows of `cols` (complex) entries; all zero.
-  EvenSymbol(std::size_t rows, std::size_t cols) : rows_(rows), cols_(cols), values_(stored_rows() * cols, 0.0) {}
+  // For a spectrum of `rows` rows of `cols` (complex) entries, ky along
+  // the columns if `transposed`; all zero.
+  EvenSymbol(std::size_t rows, std::size_t cols, bool transposed = false)
+      : rows_(rows), cols_(cols), transposed_(transposed), values_(stored_rows() * stored_cols(), 0.0) {}
 
   std::size_t rows() const { return rows_; }
   std::size_t cols() const { return cols_; }
-  // Rows 0 .. rows/2; row r > rows/2 reads row rows - r.
-  std::size_t stored_rows() const { return rows_ / 2 + 1 < rows_ ? rows_ / 2 + 1 : rows_; }
-  double& at(std::size_t stored_row, std::size_t col) { return values_[stored_row * cols_ + col]; }
-  double at(std::size_t stored_row, std::size_t col) const { return values_[stored_row * cols_ + col]; }
-  // The stored row that spectrum row r uses.
-  std::size_t folded(std::size_t row) const { return row < stored_rows() ? row : rows_ - row; }
+  bool transposed() const { return transposed_; }
+  // The stored rows and columns: ky = 0 .. n/2 of n along the folded axis.
+  std::size_t stored_rows() const { return transposed_ ? rows_ : half(rows_); }
+  std::size_t stored_cols() const { return transposed_ ? half(cols_) : cols_; }
+  double& at(std::size_t stored_row, std::size_t stored_col) {
+    return values_[stored_row * stored_cols() + stored_col];
+  }
+  double at(std::size_t stored_row, std::size_t stored_col) const {
+    return values_[stored_row * stored_cols() + stored_col];
+  }
+  // The value at spectrum entry (row, col).
+  double value(std::size_t row, std::size_t col) const {
+    return transposed_ ? at(row, folded(col)) : at(folded(row), col);
+  }
+  // Every stored value (row-major), e.g. to map them one by one.
+  std::span<double> stored() { return values_; }
+  std::span<const double> stored() const { return values_; }
+  // The stored row (column, transposed) that spectrum row (column) k uses:
+  // k <= n/2 itself, else n - k.
+  std::size_t folded(std::size_t k) const {
+    const std::size_t n = transposed_ ? cols_ : rows_;
+    return k < half(n) ? k : n - k;
+  }
 
   // spectrum[r, c] *= symbol[r, c], in parallel over rows (or over the
-  // entries of a single row).
+  // entries of a single row, not transposed).
   void multiply(std::span<std::complex<double>> spectrum) const;
   // out = the multiplier applied to `in` through `fft` (of this symbol's
   // shape): the forward transform, multiply(), the backward one, each array
@@ -47,21 +68,25 @@ class EvenSymbol {
   void apply(SingleRealFft& fft, std::span<const float> in, std::span<float> out) const;
 
   // The inverse multiplier numerator / symbol[r, c], at_zero at r = c = 0
-  // (where a kernel's symbol may vanish), made entry by entry as it is
-  // applied: a symbol's inverse without storing it (the Fourier
-  // preconditioner on the operator's kernel). The same three forms as apply.
+  // (the mean mode, where a kernel's symbol may vanish; a slab's first
+  // entry need not be that mode), made entry by entry as it is applied: a
+  // symbol's inverse without storing it (the Fourier preconditioner on the
+  // operator's kernel). The same forms as multiply and apply.
   struct Inverse {
     double numerator = 1.0;
     double at_zero = 0.0;
   };
-  void apply_inverse(const Inverse& inverse, RealFft& fft, std::span<const double> in, std::span<double> out) const;
+  void divide(const Inverse& inverse, std::span<std::complex<double>> spectrum) const;
   void apply_inverse(const Inverse& inverse, SingleRealFft& fft, std::span<const double> in,
                      std::span<double> out) const;
   void apply_inverse(const Inverse& inverse, SingleRealFft& fft, std::span<const float> in, std::span<float> out) const;
 
  private:
+  static std::size_t half(std::size_t n) { return n / 2 + 1 < n ? n / 2 + 1 : n; }
+
   std::size_t rows_;
   std::size_t cols_;
+  bool transposed_;
   std::vector<double> values_;
 };
 

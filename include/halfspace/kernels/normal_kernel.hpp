@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <span>
 #include <vector>
@@ -39,17 +40,15 @@ class NormalKernel {
   // The same over `cells` (a transform's 1/N folded in), rounded as the
   // Fourier preconditioner has always formed it.
   double inverse_symbol(double q, double cells) const;
-  // On the spectrum of the grid's own transform ((ny, nx/2 + 1), one row in
-  // 1D), FFTW's 1/N folded in: symbol(q) / N, 0 at q = 0 (K on a periodic
-  // grid); and inverse_symbol(q, N), the mean mode given the smallest
-  // non-zero wavenumber's value so that it stays positive definite (the
-  // Fourier preconditioner, an approximate K^-1 on any grid). The serial
-  // operators of either precision multiply by these.
-  EvenSymbol periodic_symbol() const;
-  EvenSymbol preconditioner_symbol() const;
-  // The same at row `row`, column `col` of that spectrum (the entries a
-  // distributed transform holds).
+  // At row `row`, column `col` of the spectrum of the grid's own transform
+  // ((ny, nx/2 + 1), one row in 1D), FFTW's 1/N folded in: symbol(q) / N, 0
+  // at q = 0 (K on a periodic grid); and inverse_symbol(q, N), the mean mode
+  // given the smallest non-zero wavenumber's value so that it stays
+  // positive definite (the Fourier preconditioner, an approximate K^-1 on
+  // any grid). preconditioner_symbol() is the latter on the whole spectrum,
+  // rows folded (a single-precision transform's).
   double periodic_symbol(std::size_t row, std::size_t col) const;
+  EvenSymbol preconditioner_symbol() const;
   double preconditioner_symbol(std::size_t row, std::size_t col) const;
   // preconditioner_symbol()'s mean mode: inverse_symbol(q, N) at the
   // smallest non-zero wavenumber q. Elsewhere it is 1/(N^2 periodic_symbol()),
@@ -67,23 +66,13 @@ class NormalKernel {
   // rectangle (2D) or the plane-strain strip (1D); coated, the closed-form
   // part plus, unless spectral_remainder(), the remainder in real space.
   std::vector<double> free_quadrant(std::size_t first_row, std::size_t rows) const;
-  // The padded (2ny, 2nx) wrap-around grid's coefficients from the whole
-  // quadrant: rows 0 .. rows - 1 written into row(r) (2nx values each).
-  // They depend on |offset| only, so index k of a 2n-periodic axis reads the
-  // quadrant at mirrored(k, n).
-  template <class Row>
-  void write_padded(const std::vector<double>& quadrant, std::size_t rows, Row&& row) const {
-    const std::size_t nx = grid_.nx();
-    linalg::for_each_row(rows, 2 * nx, [&](std::size_t r) {
-      const std::size_t dj = grid_.dimension() == 1 ? 0 : mirrored(r, grid_.ny());
-      auto values = row(r);
-      for (std::size_t c = 0; c < values.size(); ++c) values[c] = quadrant[dj * (nx + 1) + mirrored(c, nx)];
-    });
-  }
-  // Rows [first, first + rows) of the same wrap-around grid, 2nx values
-  // each in `values`, from the quadrant rows they read (a block of a
-  // distributed transform's rows).
-  void write_padded_rows(std::size_t first, std::size_t rows, std::span<double> values) const;
+  // Rows [first, first + rows) of the padded (2ny, 2nx) wrap-around grid's
+  // coefficients, 2nx values each into row(i) (i counted from first), from
+  // the quadrant rows they read (all of them once, serially; a block of a
+  // distributed transform's rows). They depend on |offset| only, so index k
+  // of a 2n-periodic axis reads the quadrant at mirrored(k, n).
+  void write_padded_rows(std::size_t first, std::size_t rows,
+                         const std::function<std::span<double>(std::size_t)>& row) const;
   // Distance (in cells) of wrap-around index k on a 2n-periodic axis: k,
   // then 2n - k for the negative offsets. The middle index n gets distance
   // n: it multiplies only padding, never reaching the first n outputs.
@@ -92,17 +81,12 @@ class NormalKernel {
   // Coated free grids: whether the remainder goes into the padded spectrum
   // (the layer is thin against the domain) rather than into free_quadrant.
   bool spectral_remainder() const;
-  // Adds the remainder's padded spectrum, times `scale`, to `padded` (the
-  // (2ny, 2nx) grid's symbol, rows folded); does nothing unless
-  // spectral_remainder().
-  void add_spectral_remainder(EvenSymbol& padded, double scale) const;
   // The remainder's value in bin (row, col) of the padded grid's spectrum
   // (ky and kx indices of the (2ny, 2nx) transform; row 0 in 1D), for a
   // coated body only.
   double padded_remainder(std::size_t row, std::size_t col) const;
-  // K_ii of a padded symbol (1/N folded in): its inverse DFT at offset 0.
-  double padded_self_influence(const EvenSymbol& padded) const;
-  // The same over `count` bins of it, bin(k) giving {value, column kx}
+  // K_ii of a padded symbol (1/N folded in), its inverse DFT at offset 0,
+  // over `count` bins of it, bin(k) giving {value, column kx}
   // (the bins a process holds; the caller sums over the processes).
   template <class Bin>
   double padded_self_influence(std::size_t count, Bin&& bin) const {

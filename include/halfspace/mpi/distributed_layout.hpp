@@ -20,20 +20,10 @@ class DistributedLayout final : public solvers::Layout {
   // Over `comm`, which must outlive the layout and everything it makes.
   explicit DistributedLayout(const MpiCommunicator& comm) : comm_(comm) {}
 
-  // FftInfluenceOperator on the slab transforms. Periodic: the
-  // preconditioner shares them (Polonsky-Keer applies the two one after the
-  // other); free: the padded convolution, the preconditioner (the unpadded
-  // periodic symbol, as the serial solvers use on free grids) on an
-  // unpadded transform of its own working in the operator's padded buffer,
-  // idle between products. Collective.
-  solvers::ElasticOperators make_operators(const Grid& grid, const HalfSpace& half_space, bool fourier,
-                                           FftPlanning planning) const override;
-  // The slab transforms' tangential operator (2D grids, periodic or free).
-  std::unique_ptr<TangentialOperator> make_tangential_operator(const Grid& grid, const ElasticPair& pair,
-                                                               FftPlanning planning) const override;
   // The slab transforms (2D grids, periodic or free): this process's rows
-  // and spectrum columns. Collective.
-  std::unique_ptr<operators::SpectralTransforms> make_transforms(const Grid& grid, FftPlanning planning) const override;
+  // and spectrum columns, on which the layout's operators run. Collective.
+  std::unique_ptr<operators::SpectralTransforms> make_transforms(
+      const Grid& grid, FftPlanning planning, const operators::TransformsShape& shape = {}) const override;
   solvers::RowSlab rows(const Grid& grid) const override;
   const linalg::Communicator& communicator() const override { return comm_; }
   // Takes a 2D grid (periodic or free, homogeneous or coated), solver pk,

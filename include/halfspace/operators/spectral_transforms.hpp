@@ -1,5 +1,5 @@
 // The transforms an FFT operator multiplies its symbols on: the whole grid
-// on this process (the serial ones, make_serial_transforms), or this
+// on this process (the serial ones, make_serial_transforms: one slab), or this
 // process's slab of rows of a grid spread over MPI processes
 // (mpi/slab_spectral_transforms.hpp, made by the distributed layout). The
 // operators (FftInfluenceOperator, FourierPreconditioner, TangentialOperator)
@@ -14,6 +14,7 @@
 #include <span>
 #include <vector>
 
+#include "halfspace/fft/even_symbol.hpp"
 #include "halfspace/fft/fft_planning.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/linalg/communicator.hpp"
@@ -26,6 +27,21 @@ namespace halfspace::operators {
 struct SpectrumMode {
   std::size_t row = 0;
   std::size_t col = 0;
+};
+
+// What to transform: how many fields at once, and whether a free grid is
+// padded.
+struct TransformsShape {
+  // One per field transformed at once: 2 (the tangential operator's
+  // traction components) or 1 (the normal operator, the preconditioner).
+  int count = 2;
+  // The grid's own (periodic) transform on a free grid too: the Fourier
+  // preconditioner's, which need only approximate K^-1.
+  bool unpadded = false;
+  // With count 1, on the grid's own transform: FFTW-aligned memory it works
+  // in (RealFft's and SlabRealFft's workspace), e.g. a free operator's idle
+  // padded buffer (workspace()).
+  std::span<std::complex<double>> workspace = {};
 };
 
 class SpectralTransforms {
@@ -41,6 +57,9 @@ class SpectralTransforms {
   virtual std::size_t spectrum_length() const = 0;
   std::size_t held() const { return spectrum_blocks() * spectrum_length(); }
   virtual SpectrumMode mode(std::size_t k) const = 0;
+  // Whether a block is a column kx holding every row ky (a slab's
+  // transposed spectrum) rather than a row ky (the serial spectrum).
+  virtual bool transposed() const = 0;
   // The rows of the whole spectrum (the padded grid's on free grids).
   virtual std::size_t spectrum_rows() const = 0;
   // The N of backward(forward(x)) = N x.
@@ -60,33 +79,56 @@ class SpectralTransforms {
 
   // Free grids: the DFT of the real wrap-around array on the whole padded
   // grid (spectrum_rows() x 2 nx), on the entries held here (a kernel's
-  // coefficients, transformed once). `fill(first, rows, values)` writes its
-  // rows [first, first + rows) (2 nx values each, row-major), blocks of
-  // rows possibly at once on several threads. Collective.
-  using WraparoundRows = std::function<void(std::size_t first, std::size_t rows, std::span<double> values)>;
+  // coefficients, transformed once). `fill(first, rows, row)` writes its
+  // rows [first, first + rows) into row(i) (2 nx values each; i counted
+  // from first), blocks of rows possibly at once on several threads.
+  // Collective.
+  using Row = std::function<std::span<double>(std::size_t i)>;
+  using WraparoundRows = std::function<void(std::size_t first, std::size_t rows, const Row& row)>;
   virtual std::span<const std::complex<double>> transform_wraparound_rows(const WraparoundRows& fill) = 0;
   // The same with the array given value by value.
   std::span<const std::complex<double>> transform_wraparound(
       const std::function<double(std::size_t row, std::size_t col)>& value);
 
+  // The same DFT on the transform padded_form() works on (serially a
+  // transform of the whole padded grid, made here and kept for it; on slabs
+  // transform_wraparound_rows), so that the form's symbols are its own
+  // transform's eigenvalues. Collective.
+  virtual std::span<const std::complex<double>> transform_form_wraparound(const WraparoundRows& fill) {
+    return transform_wraparound_rows(fill);
+  }
+
   // Free grids: K as a circulant on the whole padded grid (circulant_form.hpp)
   // from its symbols on the entries held here, 1/N of one transform pair
   // folded in: `kernel` (K) and `stiffness` (K^-1). Collective.
-  virtual std::unique_ptr<CirculantForm> padded_form(std::vector<double> kernel, std::vector<double> stiffness) = 0;
+  virtual std::unique_ptr<CirculantForm> padded_form(EvenSymbol kernel, EvenSymbol stiffness) = 0;
 };
 
-// The serial transforms: the whole of `grid` on this process, two of the
-// grid's own transforms (periodic) or two pruned padded ones (free; 1D or 2D).
-std::unique_ptr<SpectralTransforms> make_serial_transforms(const Grid& grid, FftPlanning planning);
+// The serial transforms: the whole of `grid` on this process, `shape.count`
+// of the grid's own transforms (periodic, or unpadded) or of the pruned
+// padded ones (free; 1D or 2D). Throws InputError if the workspace is too
+// small.
+std::unique_ptr<SpectralTransforms> make_serial_transforms(const Grid& grid, FftPlanning planning,
+                                                           const TransformsShape& shape = {});
 
-// f(mode) on the entries `transforms` holds here, in parallel.
-std::vector<double> held_values(const SpectralTransforms& transforms, const std::function<double(SpectrumMode)>& f);
+// f(k, mode(k)) on the entries k `transforms` holds here, computed in
+// parallel on the stored ones only: f must be even in the row wavenumber ky.
+EvenSymbol held_symbol(const SpectralTransforms& transforms,
+                       const std::function<double(std::size_t k, SpectrumMode mode)>& f);
 
-// out = the multiplier `symbol` (one value per entry held here) applied to
-// `in` through transform `k`: forward, multiply, backward. `in` is read
-// before `out` is written, so they may be the same array. Collective;
-// allocates nothing.
-void apply_symbol(SpectralTransforms& transforms, int k, const std::vector<double>& symbol, std::span<const double> in,
-                  std::span<double> out);
+// out = `multiply`(spectrum) applied to `in` through transform `k`:
+// forward, multiply, backward. `in` is read before `out` is written, so
+// they may be the same array. Collective; allocates nothing.
+template <class Multiply>
+void apply_spectral(SpectralTransforms& transforms, int k, std::span<const double> in, std::span<double> out,
+                    Multiply&& multiply) {
+  multiply(transforms.forward(k, in));
+  transforms.backward(k, out);
+}
+// The same with the multiplier `symbol` (held_symbol's layout).
+inline void apply_symbol(SpectralTransforms& transforms, int k, const EvenSymbol& symbol, std::span<const double> in,
+                         std::span<double> out) {
+  apply_spectral(transforms, k, in, out, [&](std::span<std::complex<double>> spectrum) { symbol.multiply(spectrum); });
+}
 
 }  // namespace halfspace::operators

@@ -18,37 +18,34 @@ namespace halfspace::solvers {
 class FourierPreconditioner final : public Preconditioner {
  public:
   // The inverse of the half-space's kernel (kernels/normal_kernel.hpp),
-  // E*|q|/2 homogeneous, E1*|q| / (2 M(q t)) coated. Plans an unpadded
-  // transform of the grid (free grids too: the preconditioner need only be
-  // close to K^-1, not equal to it). The mean mode, where the inverse
+  // E*|q|/2 homogeneous, E1*|q| / (2 M(q t)) coated, on the grid's own
+  // (unpadded) transform, free grids too: the preconditioner need only be
+  // close to K^-1, not equal to it. The mean mode, where the inverse
   // vanishes, gets the value of the smallest non-zero wavenumber so that
-  // M^-1 stays positive definite. Throws InputError for an invalid modulus
-  // or coating.
+  // M^-1 stays positive definite. Plans serial transforms of its own.
+  // Throws InputError for an invalid modulus or coating.
   FourierPreconditioner(const Grid& grid, const HalfSpace& half_space, FftPlanning planning = FftPlanning::estimate);
-  // The same with `transform` (the grid's (ny, nx), or nx in 1D, transform)
-  // instead of one of its own, e.g. the one a periodic FftInfluenceOperator
-  // uses: the solver applies the two one after the other, so one set of
-  // buffers serves both. Nothing sharing it may run while apply() does.
-  // Throws InputError if the transform's shape is not the grid's.
-  FourierPreconditioner(const Grid& grid, const HalfSpace& half_space, std::shared_ptr<RealFft> transform);
-  // The same through a single-precision transform (a mixed-precision
-  // solve, solver_options.hpp's Precision): M^-1 need only approximate
-  // K^-1, so rounding it to float costs no accuracy of the solution.
-  FourierPreconditioner(const Grid& grid, const HalfSpace& half_space, std::shared_ptr<SingleRealFft> transform);
-  // On a periodic grid, through either transform: the inverse of the
-  // operator's own symbol `kernel` (FftInfluenceOperator::periodic_symbol(),
-  // which must outlive this), 1/(N^2 kernel) formed as it is applied (the
-  // same values to rounding, no symbol stored), the mean mode as above.
-  FourierPreconditioner(const Grid& grid, const HalfSpace& half_space, const EvenSymbol& kernel,
-                        std::shared_ptr<RealFft> transform);
-  FourierPreconditioner(const Grid& grid, const HalfSpace& half_space, const EvenSymbol& kernel,
-                        std::shared_ptr<SingleRealFft> transform);
-  // The same on `transforms` (transform 0 used; a distributed layout's
-  // slab transforms of the grid's own, unpadded spectrum, on free grids
-  // too), the symbol on the spectrum entries held here. Collective; throws
-  // InputError if the transforms are padded.
+  // The same on `transforms` (transform 0 used; serial or a distributed
+  // layout's slabs), the symbol on the spectrum entries held there.
+  // Collective; throws InputError if they are not the grid's own.
   FourierPreconditioner(const Grid& grid, const HalfSpace& half_space,
                         std::shared_ptr<operators::SpectralTransforms> transforms);
+  // On a periodic grid, the inverse of the operator's own symbol `kernel`
+  // (FftInfluenceOperator::symbol(), which must outlive this) on the
+  // operator's `transforms`: the solver applies the two one after the
+  // other, so one transform serves both, and 1/(N^2 kernel) is formed as
+  // it is applied (the same values to rounding, no symbol stored), the
+  // mean mode as above.
+  FourierPreconditioner(const Grid& grid, const HalfSpace& half_space, const EvenSymbol& kernel,
+                        std::shared_ptr<operators::SpectralTransforms> transforms);
+  // Through a single-precision transform of the grid (a mixed-precision
+  // solve, solver_options.hpp's Precision; serial only): M^-1 need only
+  // approximate K^-1, so rounding it to float costs no accuracy of the
+  // solution. With `kernel`, its inverse as above. Throws InputError if the
+  // transform's shape is not the grid's.
+  FourierPreconditioner(const Grid& grid, const HalfSpace& half_space, std::shared_ptr<SingleRealFft> transform);
+  FourierPreconditioner(const Grid& grid, const HalfSpace& half_space, const EvenSymbol& kernel,
+                        std::shared_ptr<SingleRealFft> transform);
   ~FourierPreconditioner() override;
 
   void apply(std::span<const double> in, std::span<double> out) override;
