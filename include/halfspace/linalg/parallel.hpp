@@ -63,8 +63,8 @@ void for_each_row(std::size_t rows, std::size_t row_length, Body&& body) {
 // A reduction's per-cell function, inlined with everything it calls: GCC's
 // inliner gives up on a term of a few dozen lines called four times in the
 // unrolled loop below and calls it per cell instead (no vectorisation, the
-// lanes in memory), which made the Polonsky-Keer passes 1.5-2x slower once
-// they handled a hardness cap (docs/development-log.md, 2026-11-30).
+// lanes in memory), as it did with the Polonsky-Keer passes once they
+// handled a hardness cap (docs/development-log.md, 2026-11-29).
 #if defined(__GNUC__)
 #define HALFSPACE_INLINE_TERM __attribute__((always_inline, flatten))
 #else
