@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "halfspace/error.hpp"
+#include "halfspace/fft/even_symbol.hpp"
 #include "halfspace/linalg/parallel.hpp"
 #include "halfspace/mpi/slab_fft.hpp"
 #include "halfspace/mpi/slab_padded_fft.hpp"

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "halfspace/fft/even_symbol.hpp"
 #include "halfspace/fft/grid_transform.hpp"
 #include "halfspace/fft/padded_real_fft.hpp"
 #include "halfspace/fft/real_fft.hpp"
@@ -147,6 +148,11 @@ std::unique_ptr<SpectralTransforms> make_serial_transforms(const Grid& grid, Fft
                                                            const TransformsShape& shape) {
   if (shape.count < 1 || shape.count > 2) throw std::logic_error("spectral transforms: count must be 1 or 2");
   return std::make_unique<SerialSpectralTransforms>(grid, planning, shape);
+}
+
+void apply_symbol(SpectralTransforms& transforms, int k, const EvenSymbol& symbol, std::span<const double> in,
+                  std::span<double> out) {
+  apply_spectral(transforms, k, in, out, [&](std::span<std::complex<double>> spectrum) { symbol.multiply(spectrum); });
 }
 
 EvenSymbol held_symbol(const SpectralTransforms& transforms,

@@ -14,11 +14,16 @@
 #include <span>
 #include <vector>
 
-#include "halfspace/fft/even_symbol.hpp"
 #include "halfspace/fft/fft_planning.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/linalg/communicator.hpp"
 #include "halfspace/operators/circulant_form.hpp"
+
+// Declared only: the symbol's header reaches the internal transforms
+// (fft/real_fft.hpp), which the installed headers must not.
+namespace halfspace::fft {
+class EvenSymbol;
+}  // namespace halfspace::fft
 
 namespace halfspace::operators {
 
@@ -101,7 +106,7 @@ class SpectralTransforms {
   // Free grids: K as a circulant on the whole padded grid (circulant_form.hpp)
   // from its symbols on the entries held here, 1/N of one transform pair
   // folded in: `kernel` (K) and `stiffness` (K^-1). Collective.
-  virtual std::unique_ptr<CirculantForm> padded_form(EvenSymbol kernel, EvenSymbol stiffness) = 0;
+  virtual std::unique_ptr<CirculantForm> padded_form(fft::EvenSymbol kernel, fft::EvenSymbol stiffness) = 0;
 };
 
 // The serial transforms: the whole of `grid` on this process, `shape.count`
@@ -113,8 +118,8 @@ std::unique_ptr<SpectralTransforms> make_serial_transforms(const Grid& grid, Fft
 
 // f(k, mode(k)) on the entries k `transforms` holds here, computed in
 // parallel on the stored ones only: f must be even in the row wavenumber ky.
-EvenSymbol held_symbol(const SpectralTransforms& transforms,
-                       const std::function<double(std::size_t k, SpectrumMode mode)>& f);
+fft::EvenSymbol held_symbol(const SpectralTransforms& transforms,
+                            const std::function<double(std::size_t k, SpectrumMode mode)>& f);
 
 // out = `multiply`(spectrum) applied to `in` through transform `k`:
 // forward, multiply, backward. `in` is read before `out` is written, so
@@ -126,9 +131,7 @@ void apply_spectral(SpectralTransforms& transforms, int k, std::span<const doubl
   transforms.backward(k, out);
 }
 // The same with the multiplier `symbol` (held_symbol's layout).
-inline void apply_symbol(SpectralTransforms& transforms, int k, const EvenSymbol& symbol, std::span<const double> in,
-                         std::span<double> out) {
-  apply_spectral(transforms, k, in, out, [&](std::span<std::complex<double>> spectrum) { symbol.multiply(spectrum); });
-}
+void apply_symbol(SpectralTransforms& transforms, int k, const fft::EvenSymbol& symbol, std::span<const double> in,
+                  std::span<double> out);
 
 }  // namespace halfspace::operators
