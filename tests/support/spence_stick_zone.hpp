@@ -23,11 +23,17 @@
 namespace halfspace::testing {
 
 // Complete elliptic integrals of the parameter m = k^2.
-inline double elliptic_k(double m) { return std::comp_ellint_1(std::sqrt(m)); }
-inline double elliptic_e(double m) { return std::comp_ellint_2(std::sqrt(m)); }
+inline double elliptic_k(double m) {
+  return std::comp_ellint_1(std::sqrt(m));
+}
+inline double elliptic_e(double m) {
+  return std::comp_ellint_2(std::sqrt(m));
+}
 
 // |beta|/mu for a stick ratio k = c/a in (0, 1); both decrease with k.
-inline double spence_plane_beta_over_mu(double k) { return elliptic_k(1.0 - k * k) / elliptic_k(k * k); }
+inline double spence_plane_beta_over_mu(double k) {
+  return elliptic_k(1.0 - k * k) / elliptic_k(k * k);
+}
 
 inline double spence_axisymmetric_beta_over_mu(double k) {
   const auto f = [](double t) { return elliptic_e(1.0 - t * t) - 0.5 * elliptic_k(1.0 - t * t); };
