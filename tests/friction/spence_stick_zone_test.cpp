@@ -58,10 +58,9 @@ struct PressedCylinder {
   bool converged = false;
 };
 
-// A rigid cylinder (R = 10 mm) pressed by 2e5 N/m in `increments` equal
-// steps into a body (E = 210 GPa, nu), free line of `cells` over 2.4 b.
-PressedCylinder press_cylinder(double nu, double mu, std::size_t cells, int increments) {
-  const ElasticPair pair = ElasticPair::on_rigid(ElasticBody{2.1e11, nu});
+// A cylinder (R = 10 mm) pressed by 2e5 N/m in `increments` equal steps
+// against `pair`, free line of `cells` over 2.4 b.
+PressedCylinder press_cylinder(const ElasticPair& pair, double mu, std::size_t cells, int increments) {
   const double radius = 0.01;
   const double load = 2e5;
   const double b = testing::hertz_line(load, radius, pair.composite_modulus()).half_width;
@@ -98,6 +97,11 @@ PressedCylinder press_cylinder(double nu, double mu, std::size_t cells, int incr
   return out;
 }
 
+// A rigid cylinder pressed into a body (E = 210 GPa, nu).
+PressedCylinder press_cylinder(double nu, double mu, std::size_t cells, int increments) {
+  return press_cylinder(ElasticPair::on_rigid(ElasticBody{2.1e11, nu}), mu, cells, increments);
+}
+
 double beta_of(double nu) {
   return ElasticPair::on_rigid(ElasticBody{2.1e11, nu}).dundurs_beta();
 }
@@ -119,6 +123,21 @@ TEST(SpenceStickZone, CylinderPressedIntoANearlyIncompressibleBody) {
     EXPECT_NEAR(pressed.stick_edge, spence, 0.02) << "beta/mu " << ratio;
     EXPECT_NEAR(pressed.half_width, 1.0, 0.02);  // the pressure hardly moves: Hertz's b within a cell or two
   }
+}
+
+// Two elastic bodies, steel (body 1) on a softer, nearly incompressible
+// body 2 (E = 21 GPa, nu = 0.45): beta = -0.052, negative, and the
+// reference takes |beta|. Measured -0.011 at beta/mu = 1 (200 cells, 32
+// increments).
+TEST(SpenceStickZone, SteelCylinderOnASofterBody) {
+  const ElasticPair pair(ElasticBody{2.1e11, 0.3}, ElasticBody{2.1e10, 0.45});
+  const double beta = pair.dundurs_beta();
+  ASSERT_LT(beta, -0.04);
+  const PressedCylinder pressed = press_cylinder(pair, std::abs(beta), 200, 32);
+  const double spence = testing::spence_plane_stick_ratio(1.0);
+  std::printf("steel cylinder on a softer body, beta %.4f, beta/mu -1: c/a %.4f, Spence %.4f (%+.4f)\n", beta,
+              pressed.stick_edge, spence, pressed.stick_edge - spence);
+  EXPECT_NEAR(pressed.stick_edge, spence, 0.02);
 }
 
 // The reference neglects the shear's effect on the pressure (the normal
