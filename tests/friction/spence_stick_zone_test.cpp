@@ -127,7 +127,7 @@ TEST(SpenceStickZone, CylinderPressedIntoANearlyIncompressibleBody) {
 
 // Two elastic bodies, steel (body 1) on a softer, nearly incompressible
 // body 2 (E = 21 GPa, nu = 0.45): beta = -0.052, negative, and the
-// reference takes |beta|. Measured -0.011 at beta/mu = 1 (200 cells, 32
+// reference takes |beta|. Measured -0.008 at |beta|/mu = 1 (200 cells, 32
 // increments).
 TEST(SpenceStickZone, SteelCylinderOnASofterBody) {
   const ElasticPair pair(ElasticBody{2.1e11, 0.3}, ElasticBody{2.1e10, 0.45});
