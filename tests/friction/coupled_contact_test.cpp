@@ -251,7 +251,7 @@ TEST(CoupledContact, RigidSpherePressedIntoAnElasticHalfSpace) {
 // passes; the coupled step now tightens the tangential tolerance when a
 // pass fails to halve the change. In full slip the coupling's effect is
 // linear in mu: the peak pressure's change at mu = 0.03 is 3 times that at
-// 0.01 (bench/friction/pressed_sphere: 3.144 % and 1.036 %).
+// 0.01 (bench/friction/pressed_contact: 3.144 % and 1.036 %).
 TEST(CoupledContact, AlternationConvergesInNearlyFullSlip) {
   const PressedSphere plain = pressed_sphere(0.3, false, 64, 1);
   const PressedSphere low = pressed_sphere(0.01, true, 64, 8);
