@@ -5,7 +5,8 @@
 #   spinning  GOMP_SPINCOUNT=300000, GNU OpenMP's own default (the program's
 #             behaviour before it chose passive waiting itself)
 #   passive   the program's default now (OMP_WAIT_POLICY=passive)
-# Usage: bench/concurrent_solves.sh [PROGRAM] [GRID] [REPEATS]
+#   spinN     GOMP_SPINCOUNT=N, a short spin before sleeping (e.g. spin10000)
+# Usage: [MODES="spinning spin10000 passive"] bench/concurrent_solves.sh [PROGRAM] [GRID] [REPEATS]
 #   PROGRAM  the halfspace executable [build/bin/halfspace]
 #   GRID     cells of the rough periodic surface solved [1024x1024]
 #   REPEATS  rounds per mode; medians are reported [3]
@@ -64,8 +65,13 @@ load_before="$(cut -d' ' -f1-3 /proc/loadavg)"
 
 echo "| mode | alone (s) | together: first (s) | together: second (s) | worst / alone |"
 echo "|---|--:|--:|--:|--:|"
-for mode in spinning passive; do
-  if [[ "$mode" == spinning ]]; then export GOMP_SPINCOUNT=300000; else unset GOMP_SPINCOUNT; fi
+for mode in ${MODES:-spinning passive}; do
+  case "$mode" in
+    spinning) export GOMP_SPINCOUNT=300000 ;;
+    spin[0-9]*) export GOMP_SPINCOUNT="${mode#spin}" ;;
+    passive) unset GOMP_SPINCOUNT ;;
+    *) echo "unknown mode '$mode': allowed spinning, passive, spinN (N spins)" >&2; exit 2 ;;
+  esac
   mapfile -t times < <(measure)
   worst="$(printf '%s\n' "${times[1]}" "${times[2]}" | sort -g | tail -1)"
   printf '| %s | %.2f | %.2f | %.2f | %.2f |\n' "$mode" "${times[0]}" "${times[1]}" "${times[2]}" \
