@@ -310,13 +310,6 @@ struct TangentialOperator::Impl {
     self = {diagonal[0], diagonal[1], 0.0};
   }
 
-  std::span<std::complex<double>> forward(int k, std::span<const double> values) {
-    return transforms->forward(k, values);
-  }
-  std::span<std::complex<double>> spectrum(int k) { return transforms->spectrum(k); }
-  void backward(int k, std::span<double> values) { transforms->backward(k, values); }
-  std::size_t local_size() const { return transforms->local_size(); }
-
   Grid grid;
   ElasticPair pair;
   std::unique_ptr<SpectralTransforms> transforms;
@@ -348,7 +341,7 @@ TangentialOperator::TangentialOperator(const Grid& grid, const ElasticPair& pair
     : impl_((check_body(grid, pair), std::make_unique<Impl>(grid, pair, std::move(transforms)))) {}
 
 std::size_t TangentialOperator::local_size() const {
-  return impl_->local_size();
+  return impl_->transforms->local_size();
 }
 
 const linalg::Communicator& TangentialOperator::communicator() const {
@@ -376,8 +369,8 @@ bool TangentialOperator::coupled() const {
 void TangentialOperator::apply_pressure_coupling(std::span<const double> pressure, std::span<double> displacement_x,
                                                  std::span<double> displacement_y) {
   Impl& m = *impl_;
-  assert(pressure.size() == m.local_size());
-  assert(displacement_x.size() == m.local_size() && displacement_y.size() == m.local_size());
+  assert(pressure.size() == local_size());
+  assert(displacement_x.size() == local_size() && displacement_y.size() == local_size());
   if (!m.coupled) {
     std::fill(displacement_x.begin(), displacement_x.end(), 0.0);
     std::fill(displacement_y.begin(), displacement_y.end(), 0.0);
@@ -385,8 +378,8 @@ void TangentialOperator::apply_pressure_coupling(std::span<const double> pressur
   }
   // U_a = i c_a P: the pressure's spectrum in transform 0, the y part
   // written into transform 1's.
-  const std::span<std::complex<double>> sx = m.forward(0, pressure);
-  const std::span<std::complex<double>> sy = m.spectrum(1);
+  const std::span<std::complex<double>> sx = m.transforms->forward(0, pressure);
+  const std::span<std::complex<double>> sy = m.transforms->spectrum(1);
   const double* cx = m.coupling_x.stored().data();
   const double* cy = m.coupling_y.stored().data();
   const std::complex<double> i(0.0, 1.0);
@@ -397,22 +390,22 @@ void TangentialOperator::apply_pressure_coupling(std::span<const double> pressur
       sy[k] = (sign * cy[j]) * p;
     });
   });
-  m.backward(0, displacement_x);
-  m.backward(1, displacement_y);
+  m.transforms->backward(0, displacement_x);
+  m.transforms->backward(1, displacement_y);
 }
 
 void TangentialOperator::apply_traction_coupling(std::span<const double> traction_x, std::span<const double> traction_y,
                                                  std::span<double> normal_displacement) {
   Impl& m = *impl_;
-  assert(traction_x.size() == m.local_size() && traction_y.size() == m.local_size());
-  assert(normal_displacement.size() == m.local_size());
+  assert(traction_x.size() == local_size() && traction_y.size() == local_size());
+  assert(normal_displacement.size() == local_size());
   if (!m.coupled) {
     std::fill(normal_displacement.begin(), normal_displacement.end(), 0.0);
     return;
   }
   // U_n = -i (c_x T_x + c_y T_y): K^T, the odd kernel's negative.
-  const std::span<std::complex<double>> sx = m.forward(0, traction_x);
-  const std::span<std::complex<double>> sy = m.forward(1, traction_y);
+  const std::span<std::complex<double>> sx = m.transforms->forward(0, traction_x);
+  const std::span<std::complex<double>> sy = m.transforms->forward(1, traction_y);
   const double* cx = m.coupling_x.stored().data();
   const double* cy = m.coupling_y.stored().data();
   const std::complex<double> minus_i(0.0, -1.0);
@@ -421,7 +414,7 @@ void TangentialOperator::apply_traction_coupling(std::span<const double> tractio
       sx[k] = minus_i * (cx[j] * sx[k] + (sign * cy[j]) * sy[k]);
     });
   });
-  m.backward(0, normal_displacement);
+  m.transforms->backward(0, normal_displacement);
 }
 
 double TangentialOperator::largest_eigenvalue_bound() const {
@@ -431,12 +424,12 @@ double TangentialOperator::largest_eigenvalue_bound() const {
 void TangentialOperator::apply(std::span<const double> traction_x, std::span<const double> traction_y,
                                std::span<double> displacement_x, std::span<double> displacement_y) {
   Impl& m = *impl_;
-  assert(traction_x.size() == m.local_size() && traction_y.size() == m.local_size());
-  assert(displacement_x.size() == m.local_size() && displacement_y.size() == m.local_size());
+  assert(traction_x.size() == local_size() && traction_y.size() == local_size());
+  assert(displacement_x.size() == local_size() && displacement_y.size() == local_size());
   // Both inputs are read into the spectra before either output is written,
   // so in place is safe.
-  const std::span<std::complex<double>> sx = m.forward(0, traction_x);
-  const std::span<std::complex<double>> sy = m.forward(1, traction_y);
+  const std::span<std::complex<double>> sx = m.transforms->forward(0, traction_x);
+  const std::span<std::complex<double>> sy = m.transforms->forward(1, traction_y);
   const double* xx = m.xx.stored().data();
   const double* yy = m.yy.stored().data();
   const double* xy = m.xy.stored().data();
@@ -449,8 +442,8 @@ void TangentialOperator::apply(std::span<const double> traction_x, std::span<con
       sy[k] = c_xy * tx + yy[j] * ty;
     });
   });
-  m.backward(0, displacement_x);
-  m.backward(1, displacement_y);
+  m.transforms->backward(0, displacement_x);
+  m.transforms->backward(1, displacement_y);
 }
 
 // The inverse of the symmetric 2x2 block S = m I + D (D traceless, D^2 =
@@ -460,10 +453,10 @@ void TangentialOperator::apply_approximate_inverse(std::span<const double> displ
                                                    std::span<const double> displacement_y, std::span<double> traction_x,
                                                    std::span<double> traction_y) {
   Impl& m = *impl_;
-  assert(displacement_x.size() == m.local_size() && displacement_y.size() == m.local_size());
-  assert(traction_x.size() == m.local_size() && traction_y.size() == m.local_size());
-  const std::span<std::complex<double>> sx = m.forward(0, displacement_x);
-  const std::span<std::complex<double>> sy = m.forward(1, displacement_y);
+  assert(displacement_x.size() == local_size() && displacement_y.size() == local_size());
+  assert(traction_x.size() == local_size() && traction_y.size() == local_size());
+  const std::span<std::complex<double>> sx = m.transforms->forward(0, displacement_x);
+  const std::span<std::complex<double>> sy = m.transforms->forward(1, displacement_y);
   const double* xx = m.xx.stored().data();
   const double* yy = m.yy.stored().data();
   const double* xy = m.xy.stored().data();
@@ -508,8 +501,8 @@ void TangentialOperator::apply_approximate_inverse(std::span<const double> displ
       sy[k] = ixy * ux + iyy * uy;
     });
   });
-  m.backward(0, traction_x);
-  m.backward(1, traction_y);
+  m.transforms->backward(0, traction_x);
+  m.transforms->backward(1, traction_y);
 }
 
 }  // namespace halfspace::operators
