@@ -286,15 +286,8 @@ Command add_generate_command(CLI::App& program) {
   CLI::App* generate = program.add_subcommand(
       "generate", "Write a synthetic surface (self-affine random, sphere, cylinder, wavy, flat) as an HDF5 height map");
   generate->footer("The file reads back with `halfspace solve --height-map FILE`; see docs/usage.md.");
-  add_config_option(*generate, "rms-slope = 0.1");
-  add_options(*generate, std::span<const GenerateOption>(kOptions));
-  return {generate, [generate](const std::vector<std::string>& argv) {
-            GenerateOptions options;
-            const std::vector<BoundOption> bound = bind_options(std::span<const GenerateOption>(kOptions), options);
-            read_command_line(*generate, argv, bound, options);
-            merge_config_file(bound, {}, "generate", options);
-            return run_generate(options);
-          }};
+  return {generate,
+          table_command(*generate, std::span<const GenerateOption>(kOptions), "rms-slope = 0.1", run_generate)};
 }
 
 }  // namespace halfspace::app

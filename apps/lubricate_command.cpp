@@ -800,15 +800,10 @@ Command add_lubricate_command(CLI::App& program) {
       "Solve the Reynolds film with mass-conserving cavitation between a height map and a flat, rigid or elastic "
       "(EHL, with --E-star)");
   lubricate->footer("See docs/usage.md#lubricated-films and docs/theory.md.");
-  add_config_option(*lubricate, "viscosity = 0.1");
-  add_options(*lubricate, std::span<const LubricateOption>(kOptions));
-  return {lubricate, [lubricate](const std::vector<std::string>& argv) {
-            LubricateOptions options;
-            const std::vector<BoundOption> bound = bind_options(std::span<const LubricateOption>(kOptions), options);
-            read_command_line(*lubricate, argv, bound, options);
-            merge_config_file(bound, {}, "lubricate", options);
-            return with_lubricate_flags(options, [&] { return run_lubricate(options); });
-          }};
+  return {lubricate, table_command(*lubricate, std::span<const LubricateOption>(kOptions), "viscosity = 0.1",
+                                   [](const LubricateOptions& options) {
+                                     return with_lubricate_flags(options, [&] { return run_lubricate(options); });
+                                   })};
 }
 
 }  // namespace halfspace::app

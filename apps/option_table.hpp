@@ -91,8 +91,9 @@ using AlternativeGroup = std::vector<Alternative>;
 void add_option(CLI::App& command, std::string_view key, OptionKind kind, std::string_view group,
                 std::string_view value_name, std::string_view help);
 
-// Registers --config FILE, whose keys are the options of `command_name`.
-void add_config_option(CLI::App& command, std::string_view command_name);
+// Registers --config FILE (a TOML file of the command's options; `example`
+// one of its lines, for the help).
+void add_config_option(CLI::App& command, std::string_view example);
 
 // Registers every option of `table` with CLI11.
 template <class Options>
@@ -127,6 +128,24 @@ void read_command_line(const CLI::App& command, const std::vector<std::string>& 
 // of the wrong type, naming the key and the file.
 void merge_config_file(std::span<const BoundOption> options, std::span<const AlternativeGroup> alternatives,
                        std::string_view command_name, GivenOptions& given);
+
+// The run of a command whose options are `table` alone (no alternatives),
+// registered here with --config (`example` as add_config_option's): reads
+// the command line, then the file, into Options and returns run(options).
+template <class Options, class Run>
+std::function<int(const std::vector<std::string>&)> table_command(CLI::App& command,
+                                                                  std::span<const OptionSpec<Options>> table,
+                                                                  std::string_view example, Run run) {
+  add_config_option(command, example);
+  add_options(command, table);
+  return [&command, table, run](const std::vector<std::string>& argv) {
+    Options options;
+    const std::vector<BoundOption> bound = bind_options(table, options);
+    read_command_line(command, argv, bound, options);
+    merge_config_file(bound, {}, command.get_name(), options);
+    return run(options);
+  };
+}
 
 // Runs `function`; a library InputError (not a FileError) it throws is thrown
 // again with `context` (an option and its value) in front.

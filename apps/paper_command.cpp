@@ -138,15 +138,7 @@ Command add_paper_command(CLI::App& program) {
       "paper", "Reproduce Table 1 of the seed paper (Lemke, LCPquad and Polonsky-Keer on four line contacts)");
   command->footer(
       "Files: testN.csv, testN.h5, summary.md and the figures testN.png, testN_zoom.png; see docs/paper.md.");
-  add_config_option(*command, "load = 2e5");
-  add_options(*command, std::span<const PaperOption>(kOptions));
-  return {command, [command](const std::vector<std::string>& argv) {
-            PaperOptions options;
-            const std::vector<BoundOption> bound = bind_options(std::span<const PaperOption>(kOptions), options);
-            read_command_line(*command, argv, bound, options);
-            merge_config_file(bound, {}, "paper", options);
-            return run_paper(options);
-          }};
+  return {command, table_command(*command, std::span<const PaperOption>(kOptions), "load = 2e5", run_paper)};
 }
 
 }  // namespace halfspace::app

@@ -2,7 +2,6 @@
 // (coarsened_influence_operator.hpp).
 #include "halfspace/operators/coarsened_influence_operator.hpp"
 
-#include <algorithm>
 #include <cassert>
 #include <complex>
 #include <vector>
@@ -12,19 +11,7 @@
 
 namespace halfspace::operators {
 
-namespace {
-// The spectrum's rows and columns for the coarse grid's transform.
-std::size_t symbol_rows(const Grid& coarse) {
-  if (coarse.dimension() == 1) return 1;
-  return coarse.periodic() ? coarse.ny() : 2 * coarse.ny();
-}
-std::size_t symbol_cols(const Grid& coarse) {
-  return coarse.periodic() ? coarse.nx() / 2 + 1 : coarse.nx() + 1;
-}
-}  // namespace
-
-CoarsenedInfluenceOperator::CoarsenedInfluenceOperator(InfluenceOperator& fine, const Grid& coarse)
-    : coarse_(coarse), kernel_(symbol_rows(coarse), symbol_cols(coarse)) {
+CoarsenedInfluenceOperator::CoarsenedInfluenceOperator(InfluenceOperator& fine, const Grid& coarse) : coarse_(coarse) {
   const Grid& fine_grid = fine.grid();
   if (fine.local_size() != fine_grid.size()) {
     throw InputError("the coarsened influence operator needs a serial fine operator (one process)");
@@ -41,55 +28,30 @@ CoarsenedInfluenceOperator::CoarsenedInfluenceOperator(InfluenceOperator& fine, 
   fine.apply(fine_pressure, fine_displacement);
   solvers::restrict_by_average(fine_grid, fine_displacement, coefficients);
   self_influence_ = coefficients[0];
-  if (coarse_.periodic()) {
-    transform_ = coarse_.dimension() == 1 ? std::make_unique<RealFft>(nx, FftPlanning::estimate)
-                                          : std::make_unique<RealFft>(rows, nx, FftPlanning::estimate);
-    std::copy(coefficients.begin(), coefficients.end(), transform_->input().begin());
-    transform_->forward();
-    const double inverse_n = 1.0 / static_cast<double>(coarse_.size());
-    const std::span<const std::complex<double>> spectrum = transform_->spectrum();
-    for (std::size_t r = 0; r < kernel_.stored_rows(); ++r) {
-      for (std::size_t c = 0; c < kernel_.cols(); ++c) {
-        kernel_.at(r, c) = spectrum[r * kernel_.cols() + c].real() * inverse_n;
-      }
-    }
-    return;
-  }
-  // Free grids: the coefficients laid out on the (2 ny, 2 nx) wrap-around
-  // grid of the DC-FFT (offset -d at 2n - d, nothing at n), whose spectrum
-  // is real up to rounding, the coefficients being even in each offset.
-  padded_ = std::make_unique<PaddedRealFft>(rows, nx, FftPlanning::estimate);
+  transforms_ = make_serial_transforms(coarse_, FftPlanning::estimate, {.count = 1});
+  // Periodic grids: the coefficients' own spectrum. Free grids: the
+  // coefficients laid out on the (2 ny, 2 nx) wrap-around grid of the
+  // DC-FFT (offset -d at 2n - d, nothing at n). Either is real up to
+  // rounding, the coefficients being even in each offset.
   const auto folded = [](std::size_t index, std::size_t n) {
     return index < n ? index : (index == n ? n : 2 * n - index);  // n: the unused middle
   };
-  for (std::size_t r = 0; r < padded_->spectrum_rows(); ++r) {
-    const std::span<double> row = padded_->padded_row(r);
-    const std::size_t dy = rows == 1 ? 0 : folded(r, rows);
-    for (std::size_t c = 0; c < 2 * nx; ++c) {
-      const std::size_t dx = folded(c, nx);
-      row[c] = dy == rows || dx == nx ? 0.0 : coefficients[dy * nx + dx];
-    }
-  }
-  padded_->forward_all_rows();
-  const double inverse_n = 1.0 / static_cast<double>(padded_->padded_size());
-  const std::span<const std::complex<double>> spectrum = padded_->spectrum();
-  for (std::size_t r = 0; r < kernel_.stored_rows(); ++r) {
-    for (std::size_t c = 0; c < kernel_.cols(); ++c)
-      kernel_.at(r, c) = spectrum[r * kernel_.cols() + c].real() * inverse_n;
-  }
+  const std::span<const std::complex<double>> spectrum =
+      coarse_.periodic() ? transforms_->forward(0, coefficients)
+                         : transforms_->transform_wraparound([&](std::size_t r, std::size_t c) {
+                             const std::size_t dy = rows == 1 ? 0 : folded(r, rows);
+                             const std::size_t dx = folded(c, nx);
+                             return dy == rows || dx == nx ? 0.0 : coefficients[dy * nx + dx];
+                           });
+  const double inverse_n = 1.0 / transforms_->transform_size();
+  kernel_ = held_symbol(*transforms_, [&](std::size_t k, SpectrumMode) { return spectrum[k].real() * inverse_n; });
 }
 
 CoarsenedInfluenceOperator::~CoarsenedInfluenceOperator() = default;
 
 void CoarsenedInfluenceOperator::apply(std::span<const double> pressure, std::span<double> displacement) {
   assert(pressure.size() == coarse_.size() && displacement.size() == coarse_.size());
-  if (padded_) {
-    padded_->forward(pressure);
-    kernel_.multiply(padded_->spectrum());
-    padded_->backward(displacement);
-    return;
-  }
-  kernel_.apply(*transform_, pressure, displacement);
+  apply_symbol(*transforms_, 0, kernel_, pressure, displacement);
 }
 
 }  // namespace halfspace::operators

@@ -23,9 +23,9 @@
 #include <optional>
 #include <string>
 #include <utility>
-#include <vector>
 
 #include "halfspace/error.hpp"
+#include "halfspace/fft/even_symbol.hpp"
 #include "halfspace/kernels/cerruti_rectangle.hpp"
 #include "halfspace/kernels/coupling_rectangle.hpp"
 #include "halfspace/kernels/coupling_strip.hpp"
@@ -44,6 +44,37 @@ namespace {
 // odd xy part, whose spectrum then stays real, and n for the even parts.
 long signed_offset(std::size_t k, std::size_t n) {
   return k < n ? static_cast<long>(k) : k == n ? 0 : static_cast<long>(k) - 2 * static_cast<long>(n);
+}
+
+// run(k, j, sign) for the entries k of block `b` held here (`length` each):
+// j the stored entry of a symbol folded in ky as `layout` (EvenSymbol's
+// layout), sign -1 where ky is mirrored (an odd part's value is then the
+// stored one's negative), else +1.
+template <class Run>
+void for_each_entry(const EvenSymbol& layout, std::size_t b, std::size_t length, Run&& run) {
+  const std::size_t begin = b * length;
+  if (!layout.transposed()) {
+    const std::size_t stored = layout.folded(b);
+    const double sign = stored == b ? 1.0 : -1.0;
+    for (std::size_t c = 0; c < length; ++c) run(begin + c, stored * length + c, sign);
+    return;
+  }
+  const std::size_t stored = layout.stored_cols();
+  for (std::size_t c = 0; c < stored; ++c) run(begin + c, b * stored + c, 1.0);
+  for (std::size_t c = stored; c < length; ++c) run(begin + c, b * stored + length - c, -1.0);
+}
+
+// f(j, k, mode(k)) for every stored entry j of a symbol folded as `layout`
+// on `transforms`, k the held entry it stands for (ky <= n/2).
+template <class F>
+void for_each_stored(const SpectralTransforms& transforms, const EvenSymbol& layout, F&& f) {
+  const std::size_t length = transforms.spectrum_length();
+  for (std::size_t r = 0; r < layout.stored_rows(); ++r) {
+    for (std::size_t c = 0; c < layout.stored_cols(); ++c) {
+      const std::size_t k = r * length + c;
+      f(r * layout.stored_cols() + c, k, transforms.mode(k));
+    }
+  }
 }
 
 }  // namespace
@@ -82,15 +113,10 @@ struct TangentialOperator::Impl {
       : grid(g), pair(p), transforms(std::move(t)) {
     spectrum_rows = transforms->spectrum_blocks();
     spectrum_cols = transforms->spectrum_length();
-    const std::size_t size = spectrum_rows * spectrum_cols;
-    xx.assign(size, 0.0);
-    yy.assign(size, 0.0);
-    xy.assign(size, 0.0);
+    const EvenSymbol layout(spectrum_rows, spectrum_cols, transforms->transposed());
+    xx = yy = xy = layout;
     coupled = !p.similar();
-    if (coupled) {
-      coupling_x.assign(size, 0.0);
-      coupling_y.assign(size, 0.0);
-    }
+    if (coupled) coupling_x = coupling_y = layout;
     if (g.periodic()) {
       init_periodic();
     } else {
@@ -102,10 +128,11 @@ struct TangentialOperator::Impl {
       if (coupled) init_free_coupling();
       if (coated) add_coated_remainder();
     }
+    // Over the stored entries: a mirrored one has the same eigenvalues.
     const double count = transforms->transform_size();
-    for (std::size_t k = 0; k < size; ++k) {
-      const double mean = 0.5 * (xx[k] + yy[k]);
-      const double spread = std::hypot(0.5 * (xx[k] - yy[k]), xy[k]);
+    for (std::size_t j = 0; j < xx.stored().size(); ++j) {
+      const double mean = 0.5 * (xx.stored()[j] + yy.stored()[j]);
+      const double spread = std::hypot(0.5 * (xx.stored()[j] - yy.stored()[j]), xy.stored()[j]);
       largest = std::max(largest, count * (mean + spread));
     }
     largest = transforms->communicator().max(largest);
@@ -125,25 +152,25 @@ struct TangentialOperator::Impl {
       return std::pair{kernels::dft_wavenumber(c, nx, grid.dx()),
                        grid.dimension() == 1 ? 0.0 : kernels::dft_wavenumber(r, rows, grid.dy())};
     };
-    for (std::size_t k = 0; k < xx.size(); ++k) {
-      const auto [r, c] = transforms->mode(k);
+    for_each_stored(*transforms, xx, [&](std::size_t j, std::size_t, SpectrumMode m) {
+      const auto [r, c] = m;
       const auto [qx, qy] = wavenumbers(r, c);
       kernels::TangentialCoefficients s;
       kernels::CouplingCoefficients odd;
       pair.symbols(qx, qy, s, odd);
-      xx[k] = s.xx * inverse_n;
-      yy[k] = s.yy * inverse_n;
-      xy[k] = s.xy * inverse_n;
+      xx.stored()[j] = s.xx * inverse_n;
+      yy.stored()[j] = s.yy * inverse_n;
+      xy.stored()[j] = s.xy * inverse_n;
       if (coupled) {
         // The odd symbol's component along an axis vanishes at that axis's
         // Nyquist frequency (an odd sequence's DFT does), where +q and -q
         // are the same mode: otherwise the product would not be real.
         const bool nyquist_x = 2 * c == nx;
         const bool nyquist_y = grid.dimension() == 2 && 2 * r == rows;
-        coupling_x[k] = nyquist_x ? 0.0 : odd.x * inverse_n;
-        coupling_y[k] = nyquist_y ? 0.0 : odd.y * inverse_n;
+        coupling_x.stored()[j] = nyquist_x ? 0.0 : odd.x * inverse_n;
+        coupling_y.stored()[j] = nyquist_y ? 0.0 : odd.y * inverse_n;
       }
-    }
+    });
     double sum_xx = 0.0;
     double sum_yy = 0.0;
     for (std::size_t r = 0; r < rows; ++r) {
@@ -184,7 +211,7 @@ struct TangentialOperator::Impl {
       return k;
     };
     self = coefficient(0, 0);
-    std::vector<double>* parts[3] = {&xx, &yy, &xy};
+    EvenSymbol* parts[3] = {&xx, &yy, &xy};
     for (int part = 0; part < (line ? 2 : 3); ++part) {
       const bool odd = part == 2;
       const std::span<const std::complex<double>> spectrum =
@@ -202,8 +229,9 @@ struct TangentialOperator::Impl {
             return part == 0 ? k.xx : part == 1 ? k.yy : k.xy;
           });
       const double inverse_n = 1.0 / transforms->transform_size();
-      std::vector<double>& target = *parts[part];
-      for (std::size_t k = 0; k < target.size(); ++k) target[k] = spectrum[k].real() * inverse_n;
+      for_each_stored(*transforms, xx, [&](std::size_t j, std::size_t k, SpectrumMode) {
+        parts[part]->stored()[j] = spectrum[k].real() * inverse_n;
+      });
     }
   }
 
@@ -219,7 +247,7 @@ struct TangentialOperator::Impl {
     const double b = 0.5 * grid.dy();
     const double d = pair.coupling_compliance();
     const double far_d = coated ? coated->coupling_compliance() - d : 0.0;
-    std::vector<double>* parts[2] = {&coupling_x, &coupling_y};
+    EvenSymbol* parts[2] = {&coupling_x, &coupling_y};
     for (int part = 0; part < (line ? 1 : 2); ++part) {
       const std::span<const std::complex<double>> spectrum =
           transforms->transform_wraparound([&](std::size_t r, std::size_t c) {
@@ -239,8 +267,9 @@ struct TangentialOperator::Impl {
             return part == 0 ? k.x + far.x : k.y + far.y;
           });
       const double inverse_n = 1.0 / transforms->transform_size();
-      std::vector<double>& target = *parts[part];
-      for (std::size_t k = 0; k < target.size(); ++k) target[k] = spectrum[k].imag() * inverse_n;
+      for_each_stored(*transforms, xx, [&](std::size_t j, std::size_t k, SpectrumMode) {
+        parts[part]->stored()[j] = spectrum[k].imag() * inverse_n;
+      });
     }
   }
 
@@ -253,9 +282,9 @@ struct TangentialOperator::Impl {
     const std::size_t nx = grid.nx();
     const std::size_t ny = grid.ny();
     const double inverse_n = 1.0 / transforms->transform_size();
-    linalg::for_each_row(spectrum_rows, spectrum_cols, [&](std::size_t block) {
-      for (std::size_t k = block * spectrum_cols; k < (block + 1) * spectrum_cols; ++k) {
-        const auto [r, c] = transforms->mode(k);
+    linalg::for_each_row(xx.stored_rows(), xx.stored_cols(), [&](std::size_t row) {
+      for (std::size_t j = row * xx.stored_cols(); j < (row + 1) * xx.stored_cols(); ++j) {
+        const auto [r, c] = transforms->mode(row * spectrum_cols + j % xx.stored_cols());
         kernels::TangentialCoefficients s;
         kernels::CouplingCoefficients odd;
         layered.remainder_cell_spectrum(kernels::dft_wavenumber(c, 2 * nx, grid.dx()),
@@ -263,40 +292,36 @@ struct TangentialOperator::Impl {
                                         odd);
         // The odd parts vanish on their Nyquist column or row, as the DFT
         // of an odd sequence does there.
-        xx[k] += s.xx * inverse_n;
-        yy[k] += s.yy * inverse_n;
-        if (c != nx && r != ny) xy[k] += s.xy * inverse_n;
-        if (coupled && c != nx) coupling_x[k] += odd.x * inverse_n;
-        if (coupled && r != ny) coupling_y[k] += odd.y * inverse_n;
+        xx.stored()[j] += s.xx * inverse_n;
+        yy.stored()[j] += s.yy * inverse_n;
+        if (c != nx && r != ny) xy.stored()[j] += s.xy * inverse_n;
+        if (coupled && c != nx) coupling_x.stored()[j] += odd.x * inverse_n;
+        if (coupled && r != ny) coupling_y.stored()[j] += odd.y * inverse_n;
       }
     });
     double diagonal[2] = {0.0, 0.0};
-    for (std::size_t k = 0; k < xx.size(); ++k) {
+    for (std::size_t k = 0; k < transforms->held(); ++k) {
       const std::size_t c = transforms->mode(k).col;
       const double weight = c == 0 || c == nx ? 1.0 : 2.0;
-      diagonal[0] += weight * xx[k];
-      diagonal[1] += weight * yy[k];
+      diagonal[0] += weight * xx.value(k / spectrum_cols, k % spectrum_cols);
+      diagonal[1] += weight * yy.value(k / spectrum_cols, k % spectrum_cols);
     }
     transforms->communicator().sum(diagonal);
     self = {diagonal[0], diagonal[1], 0.0};
   }
-
-  std::span<std::complex<double>> forward(int k, std::span<const double> values) {
-    return transforms->forward(k, values);
-  }
-  std::span<std::complex<double>> spectrum(int k) { return transforms->spectrum(k); }
-  void backward(int k, std::span<double> values) { transforms->backward(k, values); }
-  std::size_t local_size() const { return transforms->local_size(); }
 
   Grid grid;
   ElasticPair pair;
   std::unique_ptr<SpectralTransforms> transforms;
   std::size_t spectrum_rows = 0;  // the entries held here, as blocks x length
   std::size_t spectrum_cols = 0;
-  std::vector<double> xx, yy, xy;  // the real symbol, one per entry held here
+  // The real symbol on the entries held here, folded in ky (xx, yy even in
+  // ky, xy odd: its mirrored entries are the stored ones' negatives).
+  EvenSymbol xx{0, 0}, yy{0, 0}, xy{0, 0};
   bool coupled = false;
-  // The coupling's imaginary symbol c (coupling_fourier.hpp), empty unless coupled.
-  std::vector<double> coupling_x, coupling_y;
+  // The coupling's imaginary symbol c (coupling_fourier.hpp), folded the
+  // same (c_x even in ky, c_y odd), empty unless coupled.
+  EvenSymbol coupling_x{0, 0}, coupling_y{0, 0};
   kernels::TangentialCoefficients self;
   // Free grids, coated: the substrate against the rigid body, whose factors
   // less the layer's (the pair's) weight the smoothed closed forms at the
@@ -316,7 +341,7 @@ TangentialOperator::TangentialOperator(const Grid& grid, const ElasticPair& pair
     : impl_((check_body(grid, pair), std::make_unique<Impl>(grid, pair, std::move(transforms)))) {}
 
 std::size_t TangentialOperator::local_size() const {
-  return impl_->local_size();
+  return impl_->transforms->local_size();
 }
 
 const linalg::Communicator& TangentialOperator::communicator() const {
@@ -344,8 +369,8 @@ bool TangentialOperator::coupled() const {
 void TangentialOperator::apply_pressure_coupling(std::span<const double> pressure, std::span<double> displacement_x,
                                                  std::span<double> displacement_y) {
   Impl& m = *impl_;
-  assert(pressure.size() == m.local_size());
-  assert(displacement_x.size() == m.local_size() && displacement_y.size() == m.local_size());
+  assert(pressure.size() == local_size());
+  assert(displacement_x.size() == local_size() && displacement_y.size() == local_size());
   if (!m.coupled) {
     std::fill(displacement_x.begin(), displacement_x.end(), 0.0);
     std::fill(displacement_y.begin(), displacement_y.end(), 0.0);
@@ -353,43 +378,43 @@ void TangentialOperator::apply_pressure_coupling(std::span<const double> pressur
   }
   // U_a = i c_a P: the pressure's spectrum in transform 0, the y part
   // written into transform 1's.
-  const std::span<std::complex<double>> sx = m.forward(0, pressure);
-  const std::span<std::complex<double>> sy = m.spectrum(1);
-  const double* cx = m.coupling_x.data();
-  const double* cy = m.coupling_y.data();
+  const std::span<std::complex<double>> sx = m.transforms->forward(0, pressure);
+  const std::span<std::complex<double>> sy = m.transforms->spectrum(1);
+  const double* cx = m.coupling_x.stored().data();
+  const double* cy = m.coupling_y.stored().data();
   const std::complex<double> i(0.0, 1.0);
   linalg::for_each_row(m.spectrum_rows, m.spectrum_cols, [&](std::size_t r) {
-    const std::size_t begin = r * m.spectrum_cols;
-    for (std::size_t k = begin; k < begin + m.spectrum_cols; ++k) {
+    for_each_entry(m.xx, r, m.spectrum_cols, [&](std::size_t k, std::size_t j, double sign) {
       const std::complex<double> p = i * sx[k];
-      sx[k] = cx[k] * p;
-      sy[k] = cy[k] * p;
-    }
+      sx[k] = cx[j] * p;
+      sy[k] = (sign * cy[j]) * p;
+    });
   });
-  m.backward(0, displacement_x);
-  m.backward(1, displacement_y);
+  m.transforms->backward(0, displacement_x);
+  m.transforms->backward(1, displacement_y);
 }
 
 void TangentialOperator::apply_traction_coupling(std::span<const double> traction_x, std::span<const double> traction_y,
                                                  std::span<double> normal_displacement) {
   Impl& m = *impl_;
-  assert(traction_x.size() == m.local_size() && traction_y.size() == m.local_size());
-  assert(normal_displacement.size() == m.local_size());
+  assert(traction_x.size() == local_size() && traction_y.size() == local_size());
+  assert(normal_displacement.size() == local_size());
   if (!m.coupled) {
     std::fill(normal_displacement.begin(), normal_displacement.end(), 0.0);
     return;
   }
   // U_n = -i (c_x T_x + c_y T_y): K^T, the odd kernel's negative.
-  const std::span<std::complex<double>> sx = m.forward(0, traction_x);
-  const std::span<std::complex<double>> sy = m.forward(1, traction_y);
-  const double* cx = m.coupling_x.data();
-  const double* cy = m.coupling_y.data();
+  const std::span<std::complex<double>> sx = m.transforms->forward(0, traction_x);
+  const std::span<std::complex<double>> sy = m.transforms->forward(1, traction_y);
+  const double* cx = m.coupling_x.stored().data();
+  const double* cy = m.coupling_y.stored().data();
   const std::complex<double> minus_i(0.0, -1.0);
   linalg::for_each_row(m.spectrum_rows, m.spectrum_cols, [&](std::size_t r) {
-    const std::size_t begin = r * m.spectrum_cols;
-    for (std::size_t k = begin; k < begin + m.spectrum_cols; ++k) sx[k] = minus_i * (cx[k] * sx[k] + cy[k] * sy[k]);
+    for_each_entry(m.xx, r, m.spectrum_cols, [&](std::size_t k, std::size_t j, double sign) {
+      sx[k] = minus_i * (cx[j] * sx[k] + (sign * cy[j]) * sy[k]);
+    });
   });
-  m.backward(0, normal_displacement);
+  m.transforms->backward(0, normal_displacement);
 }
 
 double TangentialOperator::largest_eigenvalue_bound() const {
@@ -399,26 +424,26 @@ double TangentialOperator::largest_eigenvalue_bound() const {
 void TangentialOperator::apply(std::span<const double> traction_x, std::span<const double> traction_y,
                                std::span<double> displacement_x, std::span<double> displacement_y) {
   Impl& m = *impl_;
-  assert(traction_x.size() == m.local_size() && traction_y.size() == m.local_size());
-  assert(displacement_x.size() == m.local_size() && displacement_y.size() == m.local_size());
+  assert(traction_x.size() == local_size() && traction_y.size() == local_size());
+  assert(displacement_x.size() == local_size() && displacement_y.size() == local_size());
   // Both inputs are read into the spectra before either output is written,
   // so in place is safe.
-  const std::span<std::complex<double>> sx = m.forward(0, traction_x);
-  const std::span<std::complex<double>> sy = m.forward(1, traction_y);
-  const double* xx = m.xx.data();
-  const double* yy = m.yy.data();
-  const double* xy = m.xy.data();
+  const std::span<std::complex<double>> sx = m.transforms->forward(0, traction_x);
+  const std::span<std::complex<double>> sy = m.transforms->forward(1, traction_y);
+  const double* xx = m.xx.stored().data();
+  const double* yy = m.yy.stored().data();
+  const double* xy = m.xy.stored().data();
   linalg::for_each_row(m.spectrum_rows, m.spectrum_cols, [&](std::size_t r) {
-    const std::size_t begin = r * m.spectrum_cols;
-    for (std::size_t k = begin; k < begin + m.spectrum_cols; ++k) {
+    for_each_entry(m.xx, r, m.spectrum_cols, [&](std::size_t k, std::size_t j, double sign) {
       const std::complex<double> tx = sx[k];
       const std::complex<double> ty = sy[k];
-      sx[k] = xx[k] * tx + xy[k] * ty;
-      sy[k] = xy[k] * tx + yy[k] * ty;
-    }
+      const double c_xy = sign * xy[j];
+      sx[k] = xx[j] * tx + c_xy * ty;
+      sy[k] = c_xy * tx + yy[j] * ty;
+    });
   });
-  m.backward(0, displacement_x);
-  m.backward(1, displacement_y);
+  m.transforms->backward(0, displacement_x);
+  m.transforms->backward(1, displacement_y);
 }
 
 // The inverse of the symmetric 2x2 block S = m I + D (D traceless, D^2 =
@@ -428,20 +453,20 @@ void TangentialOperator::apply_approximate_inverse(std::span<const double> displ
                                                    std::span<const double> displacement_y, std::span<double> traction_x,
                                                    std::span<double> traction_y) {
   Impl& m = *impl_;
-  assert(displacement_x.size() == m.local_size() && displacement_y.size() == m.local_size());
-  assert(traction_x.size() == m.local_size() && traction_y.size() == m.local_size());
-  const std::span<std::complex<double>> sx = m.forward(0, displacement_x);
-  const std::span<std::complex<double>> sy = m.forward(1, displacement_y);
-  const double* xx = m.xx.data();
-  const double* yy = m.yy.data();
-  const double* xy = m.xy.data();
+  assert(displacement_x.size() == local_size() && displacement_y.size() == local_size());
+  assert(traction_x.size() == local_size() && traction_y.size() == local_size());
+  const std::span<std::complex<double>> sx = m.transforms->forward(0, displacement_x);
+  const std::span<std::complex<double>> sy = m.transforms->forward(1, displacement_y);
+  const double* xx = m.xx.stored().data();
+  const double* yy = m.yy.stored().data();
+  const double* xy = m.xy.stored().data();
   const double largest = m.largest_stored;
   const double floor = 1e-9 * largest;
   const double scale = m.inverse_scale;
   auto inverse = [&](double eigenvalue) { return scale / (eigenvalue > floor ? eigenvalue : largest); };
   linalg::for_each_row(m.spectrum_rows, m.spectrum_cols, [&](std::size_t r) {
-    const std::size_t begin = r * m.spectrum_cols;
-    for (std::size_t k = begin; k < begin + m.spectrum_cols; ++k) {
+    // On the stored entry j: ixy, odd in xy, takes the mirrored sign.
+    for_each_entry(m.xx, r, m.spectrum_cols, [&](std::size_t k, std::size_t j, double sign) {
       double ixx = 0.0;
       double iyy = 0.0;
       double ixy = 0.0;
@@ -449,17 +474,17 @@ void TangentialOperator::apply_approximate_inverse(std::span<const double> displ
       // xx > f: the smaller one, m - s, exceeds f): the plain inverse, no
       // square root (almost every mode; the hypot per mode cost about a
       // tenth of a tangential step, docs/development-log.md).
-      const double shifted_xx = xx[k] - floor;
-      const double shifted_yy = yy[k] - floor;
-      if (shifted_xx > 0.0 && shifted_xx * shifted_yy > xy[k] * xy[k]) {
-        const double f = scale / (xx[k] * yy[k] - xy[k] * xy[k]);
-        ixx = f * yy[k];
-        iyy = f * xx[k];
-        ixy = -f * xy[k];
+      const double shifted_xx = xx[j] - floor;
+      const double shifted_yy = yy[j] - floor;
+      if (shifted_xx > 0.0 && shifted_xx * shifted_yy > xy[j] * xy[j]) {
+        const double f = scale / (xx[j] * yy[j] - xy[j] * xy[j]);
+        ixx = f * yy[j];
+        iyy = f * xx[j];
+        ixy = -f * xy[j];
       } else {
-        const double mean = 0.5 * (xx[k] + yy[k]);
-        const double half_difference = 0.5 * (xx[k] - yy[k]);
-        const double spread = std::hypot(half_difference, xy[k]);
+        const double mean = 0.5 * (xx[j] + yy[j]);
+        const double half_difference = 0.5 * (xx[j] - yy[j]);
+        const double spread = std::hypot(half_difference, xy[j]);
         const double upper = inverse(mean + spread);
         const double lower = inverse(mean - spread);
         const double along = 0.5 * (upper + lower);
@@ -467,16 +492,17 @@ void TangentialOperator::apply_approximate_inverse(std::span<const double> displ
         const double across = spread > 0.0 ? 0.5 * (upper - lower) / spread : 0.0;
         ixx = along + across * half_difference;
         iyy = along - across * half_difference;
-        ixy = across * xy[k];
+        ixy = across * xy[j];
       }
+      ixy *= sign;
       const std::complex<double> ux = sx[k];
       const std::complex<double> uy = sy[k];
       sx[k] = ixx * ux + ixy * uy;
       sy[k] = ixy * ux + iyy * uy;
-    }
+    });
   });
-  m.backward(0, traction_x);
-  m.backward(1, traction_y);
+  m.transforms->backward(0, traction_x);
+  m.transforms->backward(1, traction_y);
 }
 
 }  // namespace halfspace::operators

@@ -116,11 +116,15 @@ TEST(CouplingOperator, TheTwoProductsAreEachOthersTransposes) {
 // (U = i c P with c odd in q), a traction mode cos(q.x) t normally by
 // c.t sin(q.x).
 TEST(CouplingOperator, PeriodicModeIsMultipliedByTheSymbol) {
+  // ky = -2: a row past the stored half of the ky-folded symbol, where c_y
+  // takes the stored value's negative (odd ny too).
   for (const Grid& grid :
-       {Grid::plane(32, 16, 1e-6, 2e-6, Boundary::periodic), Grid::line(64, 1e-6, Boundary::periodic)}) {
+       {Grid::plane(32, 16, 1e-6, 2e-6, Boundary::periodic), Grid::plane(12, 9, 1e-6, 1.5e-6, Boundary::periodic),
+        Grid::line(64, 1e-6, Boundary::periodic)}) {
     TangentialOperator op(grid, kPair);
     const double qx = 2.0 * std::numbers::pi * 3.0 / (static_cast<double>(grid.nx()) * grid.dx());
-    const double qy = grid.dimension() == 1 ? 0.0 : 2.0 * std::numbers::pi * -2.0 / (16.0 * 2e-6);
+    const double qy =
+        grid.dimension() == 1 ? 0.0 : 2.0 * std::numbers::pi * -2.0 / (static_cast<double>(grid.ny()) * grid.dy());
     const std::size_t n = grid.size();
     Eigen::ArrayXd p(static_cast<Eigen::Index>(n));
     Eigen::ArrayXd sine(static_cast<Eigen::Index>(n));

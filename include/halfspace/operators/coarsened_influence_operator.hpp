@@ -7,10 +7,9 @@
 #include <span>
 
 #include "halfspace/fft/even_symbol.hpp"
-#include "halfspace/fft/padded_real_fft.hpp"
-#include "halfspace/fft/real_fft.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/operators/influence_operator.hpp"
+#include "halfspace/operators/spectral_transforms.hpp"
 
 namespace halfspace::operators {
 
@@ -22,7 +21,8 @@ namespace halfspace::operators {
 // periodic, homogeneous or coated, is), so it is a convolution on the
 // coarse grid: its coefficients are read off one fine product (a unit
 // pressure on one coarse cell) and each product then costs an FFT of the
-// coarse grid (zero-padded on free grids), not of the fine one.
+// coarse grid (zero-padded on free grids, make_serial_transforms), not of
+// the fine one.
 class CoarsenedInfluenceOperator final : public InfluenceOperator {
  public:
   // `coarse` must be solvers::coarser_grid(fine.grid(), ...). `fine` is
@@ -40,9 +40,8 @@ class CoarsenedInfluenceOperator final : public InfluenceOperator {
  private:
   Grid coarse_;
   double self_influence_ = 0.0;
-  std::unique_ptr<PaddedRealFft> padded_;  // free grids
-  std::unique_ptr<RealFft> transform_;     // periodic grids
-  EvenSymbol kernel_;                      // the coefficients' spectrum, FFTW's 1/N folded in
+  std::unique_ptr<SpectralTransforms> transforms_;
+  EvenSymbol kernel_{0, 0};  // the coefficients' spectrum, FFTW's 1/N folded in
 };
 
 }  // namespace halfspace::operators
