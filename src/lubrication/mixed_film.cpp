@@ -32,6 +32,7 @@
 #include "halfspace/solvers/polonsky_keer.hpp"
 #include "mixed_film_grid_sequence.hpp"
 #include "mixed_film_krylov.hpp"
+#include "newton_forcing.hpp"
 #include "reynolds_linearisation.hpp"
 
 namespace halfspace::lubrication {
@@ -135,14 +136,18 @@ constexpr int kClippedHalvings = 3;
 // The loosest relative tolerance of a GMRES step (far from the solution).
 constexpr double kLargestForcing = 1e-2;
 // A GMRES step that stops short of its forcing term (the iteration limit)
-// is still taken if it lowers the linear model's residual below this share
-// of the Newton residual: ||J d + F|| < ||F|| makes d a descent direction
-// of ||F||^2 (Dembo, Eisenstat & Steihaug 1982), and the line search judges
-// it. On the fine grid's first steps from an interpolated coarse film GMRES
-// stalled far above the forcing term (128^2: 0.59 after 800 iterations) and
-// the failed step ended the Newton iteration (docs/development-log.md,
-// 2026-11-29, branch lub30g).
+// is still taken, far from the solution (a residual norm of at least
+// kLargestForcing), if it lowers the linear model's residual below this
+// share of the Newton residual: ||J d + F|| < ||F|| makes d a descent
+// direction of ||F||^2 (Dembo, Eisenstat & Steihaug 1982), and the line
+// search judges it. On the fine grid's first steps from an interpolated
+// coarse film GMRES stalled far above the forcing term (128^2: 0.59 after
+// 800 iterations) and the failed step ended the Newton iteration. Near the
+// solution such steps crept (256^2: the norm moved in its fifth digit per
+// 800 iterations) where the continuation's smaller speed step converges
+// (docs/development-log.md, 2026-11-29, branches lub30g and lub30h).
 constexpr double kLoosestLinearResidual = 0.9;
+
 // The share of the Newton steps (1 / this) a cold start gets on the GMRES path.
 constexpr int kKrylovColdShare = 4;
 
@@ -460,6 +465,7 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
     }
     mass_scale = couette;
   };
+  const double smallest_tolerance = std::min({options.tolerance, options.load_tolerance, options.contact_tolerance});
   const auto converged = [&](const Measure& measured) {
     return measured.mass <= options.tolerance && measured.load <= options.load_tolerance &&
            measured.contact <= options.contact_tolerance;
@@ -490,6 +496,8 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
     result.status = FilmStatus::failure;
     result.message.clear();
     Measure current = measure(x, residual, false);
+    // The forcing term's history (newton_forcing): this start's steps only.
+    double previous_norm = 0.0, forcing = kLargestForcing;
     for (int iteration = 0;; ++iteration) {
       if (converged(current)) {
         result.status = FilmStatus::converged;
@@ -509,17 +517,19 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
         break;
       }
       // An inexact Newton step on the GMRES path (Dembo, Eisenstat &
-      // Steihaug 1982): GMRES to a relative residual of the order of the
-      // Newton residual, solved again to krylov_tolerance when no step along
-      // the loose direction lowers the residual (as the EHL film does).
-      const double loose_forcing = std::min(kLargestForcing, current.norm);
+      // Steihaug 1982): GMRES to the forcing term, solved again to
+      // krylov_tolerance when no step along the loose direction lowers the
+      // residual (as the EHL film does).
+      forcing = detail::newton_forcing(current.norm, previous_norm, forcing, kLargestForcing, smallest_tolerance);
+      previous_norm = current.norm;
+      const bool short_steps_taken = current.norm >= kLargestForcing;
       bool accepted = false, failed = false;
       Measure tried;
       // A branch pass's GMRES (and the tight solve's) goes on from the last
       // solve's step of this Newton step: they differ in a few rows.
       bool warm = false;
       for (const bool tight : {false, true}) {
-        if (tight && !(krylov && loose_forcing > options.krylov_tolerance)) break;
+        if (tight && !(krylov && forcing > options.krylov_tolerance)) break;
         for (std::size_t j = 0; j < n; ++j) {
           const auto jj = static_cast<Eigen::Index>(j);
           branch_full[j] = x.s[jj] >= 0.0 ? 1 : 0;
@@ -533,14 +543,14 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
           const detail::MixedScales scales{P, H, mass_scale, load_control ? area / w : 0.0, load_control};
           int step_iterations = 0;
           std::string krylov_message;
-          const double forcing = tight ? 0.0 : loose_forcing;
+          const double step_forcing = tight ? 0.0 : forcing;
           const auto gmres_solve = [&] {
             const detail::KrylovOutcome outcome =
-                krylov_solver->solve(rows, branch_full, closed, scales, forcing, residual, step, warm);
+                krylov_solver->solve(rows, branch_full, closed, scales, step_forcing, residual, step, warm);
             warm = outcome.converged;
             step_iterations += outcome.iterations;
             krylov_message = outcome.message;
-            return outcome.converged || outcome.relative_residual <= kLoosestLinearResidual;
+            return outcome.converged || (short_steps_taken && outcome.relative_residual <= kLoosestLinearResidual);
           };
           bool solved = true;
           for (int pass = 0; pass < detail::kBranchPasses; ++pass) {

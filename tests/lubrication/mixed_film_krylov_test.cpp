@@ -327,14 +327,17 @@ TEST(MixedFilmKrylovTest, MultigridPreconditionerGivesTheSparseLuFilm) {
   EXPECT_NEAR(by_multigrid.central_film_thickness, by_lu.central_film_thickness, 1e-6 * by_lu.central_film_thickness);
 }
 
-// A loose Newton step whose GMRES stops short of its forcing term but
-// lowers the linear residual (relative residual below 0.9) is still a
-// descent direction for the residual norm and is taken, the line search
-// judging it: with GMRES cut to a few iterations per solve the film still
-// converges to the one of the full solves (failing the Newton iteration on
-// each short GMRES, as before, left no film at all).
+// GMRES cut to 3 iterations per solve (6 with the retry after a stale
+// preconditioner): the film still converges to the one of the full solves.
+// The forcing term (newton_forcing.hpp) asks the last steps no more than
+// the stopping test needs, and far from the solution a step whose GMRES
+// stops short of its forcing term but lowers the linear residual below 0.9
+// is taken (a descent direction; the line search judges it). With the
+// forcing term min(1e-2, ||F||) and no short steps, the Newton iteration
+// failed on each short GMRES and the speed continuation stalled (checked
+// with a trial switch; docs/development-log.md, branch lub30h).
 TEST(MixedFilmKrylovTest, ShortGmresStepsStillDescendToTheFilm) {
-  constexpr int kShortGmres = 4;
+  constexpr int kShortGmres = 3;
   const RoughContact point = rough_point(13, 0.2e-6);
   FftInfluenceOperator op(point.grid, kEStar);
   const double speed = 0.05;

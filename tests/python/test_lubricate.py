@@ -195,3 +195,16 @@ def test_both_bodies_make_the_composite_modulus():
 def test_unknown_keyword_is_refused():
     with pytest.raises(TypeError, match="viscosty"):
         hs.lubricate(PROFILE, viscosty=0.1, **{k: v for k, v in BASE.items() if k != "viscosity"})
+
+
+def test_unconverged_elastic_film_says_what_to_try():
+    """One Newton step (max_iter=1) does not converge the EHL film: the film
+    is returned unconverged, its message gives the solver's reason and then
+    what to try, named by the keywords (LubricationProblem::failure_hint)."""
+    film = hs.lubricate(PROFILE, **{**ELASTIC, "max_iter": 1})
+    assert not film.converged and film.status != "converged"
+    reason, hint = film.message.split("; to try: ")
+    assert reason
+    for named in ("faster entrainment_velocity", "smaller force", "more max_iter (now 1)", "looser tol",
+                  "film_preconditioner sparse-lu"):
+        assert named in hint, named

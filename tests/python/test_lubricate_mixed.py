@@ -161,6 +161,25 @@ def test_bad_mixed_keyword_is_named(keywords, message):
         hs.lubricate(-(LINE + ROUGH), **{**KEYWORDS, **keywords})
 
 
+def test_unconverged_mixed_film_says_what_to_try():
+    """Two Newton steps per solve (max_iter=2) do not bring the mixed film to
+    tol=1e-15 (the speed continuation's solves neither): the film is
+    returned unconverged, its message gives the solver's reason and then
+    what to try, named by the keywords with the settings in force
+    (LubricationProblem::failure_hint). (max_iter=1 alone converges here:
+    the continuation's warm-started one-step solves reach 1e-8.)"""
+    film = hs.lubricate(-(LINE + ROUGH), **{**KEYWORDS, "max_iter": 2, "tol": 1e-15})
+    assert not film.converged and film.status != "converged"
+    reason, hint = film.message.split("; to try: ")
+    assert "mixed film did not converge in 2 Newton steps" in reason
+    for named in ("speeds from a faster speed", "a smaller force", "more max_iter (now 2)",
+                  "looser tol (now 1e-15)"):
+        assert named in hint, named
+    # The same film given its steps converges: the hint is the failure's only.
+    converged = hs.lubricate(-(LINE + ROUGH), **KEYWORDS)
+    assert converged.converged and "to try" not in converged.message
+
+
 @pytest.mark.parametrize("keywords, message", [
     ({"speeds": [1.0, -0.1]}, r"speeds=-0.1 m/s is invalid"),
     ({"speeds": []}, "speeds must be a sequence"),
