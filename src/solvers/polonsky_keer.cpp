@@ -666,12 +666,10 @@ class Iteration {
   // iteration cycled between that and all cells just below the cap. Every
   // cell at the cap (a load of H times the domain): the highest of them.
   double all_capped_approach() const {
-    const double highest_capped = linalg::max_of(comm_, n_, [&](std::size_t i) {
-      return pressure_[i] > 0.0 ? surface_[i] : -kInfinity;
-    });
-    const double lowest_free = linalg::min_of(comm_, n_, [&](std::size_t i) {
-      return pressure_[i] > 0.0 ? kInfinity : surface_[i];
-    });
+    const double highest_capped =
+        linalg::max_of(comm_, n_, [&](std::size_t i) { return pressure_[i] > 0.0 ? surface_[i] : -kInfinity; });
+    const double lowest_free =
+        linalg::min_of(comm_, n_, [&](std::size_t i) { return pressure_[i] > 0.0 ? kInfinity : surface_[i]; });
     return std::isfinite(lowest_free) ? 0.5 * (highest_capped + lowest_free) : highest_capped;
   }
 
