@@ -109,15 +109,12 @@ struct CappedScale {
 };
 
 // One solve: the iterate and the paper's steps, each one or two passes over
-// the cells. The fields live in the result (pressure p, and the
-// displacement's array, which holds the deformed surface s = g0 + u during
-// the iteration and u = K p at its end) and in the solver's workspace (the
-// direction t, and one array that holds z = M^-1 g, then the image K t,
-// then the step's correction c, then K c). The gap g = s - approach is
-// computed where read, not stored: a field less, and one read for it where
-// g0 + u took two (the passes are bound by memory bandwidth). Work is the
-// work vectors' precision: double, or float with mixed precision's
-// SinglePrecisionProducts (see the header).
+// the cells. The fields live in the result (pressure p, displacement
+// u = K p; the gap g = g0 + u - approach is computed where read, not
+// stored: a field less, one more read per pass) and in the solver's workspace (the direction t, and one
+// array that holds z = M^-1 g, then the image K t, then the step's
+// correction c, then K c). Work is their precision: double, or float with
+// mixed precision's SinglePrecisionProducts (see the header).
 template <class Work>
 class Iteration {
  public:
@@ -138,7 +135,7 @@ class Iteration {
         n_(op.local_size()),
         cells_(static_cast<double>(op.grid().size())),
         pressure_(result.pressure.data()),
-        surface_(result.displacement.data()),
+        displacement_(result.displacement.data()),
         direction_(direction),
         preconditioned_gap_(image),
         image_(image),
@@ -151,7 +148,8 @@ class Iteration {
         // zero), and its set holds the cells leaving the cap, whose gaps the
         // approach (the mean over the contact below the cap) does not balance.
         set_{pressure_,
-             surface_,
+             problem.initial_gap.data(),
+             displacement_,
              &approach_,
              projected_ || problem.bounds.capped(),
              problem.load_controlled && (projected_ || problem.bounds.capped()),
@@ -198,9 +196,7 @@ class Iteration {
         pressure_[i] = bounds_.snap(scale.stored(pressure_[i], bounds_.upper) * scale.factor);
       });
     } else if (!warm) {
-      // u = 0 here: s = g0.
-      for_each_index(n_, [&](std::size_t i) { surface_[i] = problem_.initial_gap[i]; });
-      local_overlap_pressure();
+      local_overlap_pressure();  // u = 0 here: g = g0 - approach
     }
     exact_displacement();
   }
@@ -375,7 +371,7 @@ class Iteration {
       const double pi = q > 0.0 ? std::max(q + shift, 0.0) : 0.0;
       const double entry = q > 0.0 && moved <= 0.0 ? 1.0 : 0.0;
       pressure_[i] = pi;
-      surface_[i] -= tau * image_[i];
+      displacement_[i] -= tau * image_[i];
       correction_[i] = static_cast<Work>(pi - moved);
       return std::array<double, 3>{pi, entry, q != moved ? 1.0 : 0.0};
     });
@@ -482,7 +478,7 @@ class Iteration {
       if (filled) pi = pre > 0.0 ? upper : (gap(i) < fill_below ? fill : 0.0);
       const double entry = entries && moved <= 0.0 && pre > 0.0 ? 1.0 : 0.0;
       pressure_[i] = pi;
-      surface_[i] -= tau * image_[i];
+      displacement_[i] -= tau * image_[i];
       correction_[i] = static_cast<Work>(pi - moved);
       return std::array<double, 3>{entry, correction_[i] != 0.0 ? 1.0 : 0.0, pre * scale.factor >= upper ? 1.0 : 0.0};
     });
@@ -506,12 +502,10 @@ class Iteration {
     ++updates_since_exact_;
   }
 
-  // The result's summary of the final iterate, whose surface and gap are
-  // current; the displacement's array gets back u = s - g0.
+  // The result's summary of the final iterate, whose displacement and gap
+  // are current.
   void summarise(int iterations) {
-    const bool holds_surface = !deferred_.holds_displacement;
     const auto [pressure_total, contact_total, plastic_total] = sums<3>(comm_, n_, [&](std::size_t i) {
-      if (holds_surface) surface_[i] -= problem_.initial_gap[i];
       return std::array<double, 3>{pressure_[i], pressure_[i] > 0.0 ? 1.0 : 0.0,
                                    bounds_.at_cap(pressure_[i]) ? 1.0 : 0.0};
     });
@@ -528,14 +522,12 @@ class Iteration {
   }
 
  private:
-  // Steps 8-9 end with work on p and s that the next evaluation does in its
-  // first pass rather than in passes of their own: adding K c to s, and the
-  // load-restoring scale of p and u. After an exact product the array holds
-  // u = K p, which that pass makes s.
+  // Steps 8-9 end with work on p and u that the next evaluation does in its
+  // first pass rather than in passes of their own: adding K c (held in g)
+  // to u, and the load-restoring scale of p and u.
   struct Deferred {
     double scale = 1.0;
     bool add_correction = false;
-    bool holds_displacement = false;
   };
 
   // f(z), z the step's search gradient: g itself or M^-1 g (precondition()).
@@ -547,7 +539,7 @@ class Iteration {
   }
 
   // The gap of the cell (see the class comment).
-  double gap(std::size_t i) const { return surface_[i] - approach_; }
+  double gap(std::size_t i) const { return problem_.initial_gap[i] + displacement_[i] - approach_; }
 
   // out = K in on the work vectors, by the inner products (see the header).
   void kernel_product(const Work* in, Work* out) {
@@ -638,16 +630,14 @@ class Iteration {
     return CappedScale{scale, true};
   }
 
-  // u = K p afresh, after the deferred scale of p (K c is superseded); the
-  // next measure() adds g0.
+  // u = K p afresh, after the deferred scale of p (K c is superseded).
   void exact_displacement() {
     if (deferred_.scale != 1.0) {
       const double scale = deferred_.scale;
       for_each_index(n_, [&](std::size_t i) { pressure_[i] = bounds_.snap(pressure_[i] * scale); });
     }
     deferred_ = {};
-    op_.apply({pressure_, n_}, {surface_, n_});
-    deferred_.holds_displacement = true;
+    op_.apply({pressure_, n_}, {displacement_, n_});
     ++result_.operator_applications;
     updates_since_exact_ = 0;
   }
@@ -666,43 +656,39 @@ class Iteration {
   // iteration cycled between that and all cells just below the cap. Every
   // cell at the cap (a load of H times the domain): the highest of them.
   double all_capped_approach() const {
-    const double highest_capped =
-        linalg::max_of(comm_, n_, [&](std::size_t i) { return pressure_[i] > 0.0 ? surface_[i] : -kInfinity; });
-    const double lowest_free =
-        linalg::min_of(comm_, n_, [&](std::size_t i) { return pressure_[i] > 0.0 ? kInfinity : surface_[i]; });
+    const double highest_capped = linalg::max_of(comm_, n_, [&](std::size_t i) {
+      return pressure_[i] > 0.0 ? problem_.initial_gap[i] + displacement_[i] : -kInfinity;
+    });
+    const double lowest_free = linalg::min_of(comm_, n_, [&](std::size_t i) {
+      return pressure_[i] > 0.0 ? kInfinity : problem_.initial_gap[i] + displacement_[i];
+    });
     return std::isfinite(lowest_free) ? 0.5 * (highest_capped + lowest_free) : highest_capped;
   }
 
-  // Step 1's two passes: the deferred work, the contact set's mean gap (the
-  // approach) and the range of u, then g (not stored), the residual's sums,
-  // G = sum over the search set of g^2 and sum over it of g t_old (Powell's
-  // test). With a preconditioner, preconditioned_gap_ receives g on the
-  // search set.
+  // Step 1's two passes: the deferred work and the contact set's mean gap
+  // (the approach), then g (not stored), the residual's sums, G = sum over the search set
+  // of g^2 and sum over it of g t_old (Powell's test). With a
+  // preconditioner, preconditioned_gap_ receives g on the search set.
   void measure() {
     const Deferred deferred = std::exchange(deferred_, Deferred{});
     const double scale = deferred.scale;
     const bool add = deferred.add_correction;
-    const bool from_displacement = deferred.holds_displacement;
-    const bool changed = add || scale != 1.0 || from_displacement;
     const auto settled = linalg::sums_and_range<3>(comm_, n_, [&](std::size_t i) {
-      const double g0 = problem_.initial_gap[i];
-      double si = surface_[i];
+      double ui = displacement_[i];
       double pi = pressure_[i];
-      double ui = from_displacement ? si : si - g0;
       if (add) ui += correction_image_[i];
       if (scale != 1.0) {
         ui *= scale;
         pi = bounds_.snap(pi * scale);
       }
-      if (changed) {
-        // s + K c directly when only K c is added: no rounding from g0.
-        si = add && scale == 1.0 && !from_displacement ? si + correction_image_[i] : g0 + ui;
-        surface_[i] = si;
+      if (add || scale != 1.0) {
+        displacement_[i] = ui;
         pressure_[i] = pi;
       }
       const double in_contact = pi > 0.0 ? 1.0 : 0.0;
       const double below_cap = set_.in_contact(i) ? 1.0 : 0.0;
-      return std::pair{std::array<double, 3>{below_cap * si, below_cap, in_contact}, ui};
+      const double surface = problem_.initial_gap[i] + ui;
+      return std::pair{std::array<double, 3>{below_cap * surface, below_cap, in_contact}, ui};
     });
     contact_cells_ = settled.sums[2];
     // Under load control the approach makes the mean gap on the contact set
@@ -723,7 +709,7 @@ class Iteration {
     const double upper = bounds_.upper;
     const auto [weighted_gap, overlap, pressure_sum, gap_norm, gap_along, released, direction_sum] =
         sums<7>(comm_, n_, [&](std::size_t i) {
-          const double g = surface_[i] - approach;
+          const double g = problem_.initial_gap[i] + displacement_[i] - approach;
           const double in_set = set_.contains(i, g) ? 1.0 : 0.0;  // a mask, not a branch
           if (store_gap) preconditioned_gap_[i] = static_cast<Work>(in_set * g);
           const double over = std::max(-g, 0.0);
@@ -759,7 +745,7 @@ class Iteration {
   const std::size_t n_;               // the cells this process holds
   const double cells_;                // the cells of the whole grid
   double* pressure_;                  // p
-  double* surface_;                   // s = g0 + u (u = K p once summarised)
+  double* displacement_;              // u = K p
   Work* direction_;                   // the conjugate direction t
   // One array of the solver's workspace in four successive roles: g on the
   // search set, made z = M^-1 g in place (steps 1-2); the image K t of the

@@ -24,13 +24,13 @@ namespace halfspace::solvers {
 // out of contact. Under `mean_free` (load control) directions must be
 // mean-free on the set, so that a step keeps the force.
 //
-// The gap g = s - approach is computed where read, from the deformed
-// surface s = g0 + u (initial gap plus displacement) and the approach, both
-// of which the solver updates in place, as Polonsky-Keer computes it: the
-// solver stores no gap field.
+// The gap g = g0 + u - approach is computed where read, from the initial
+// gap g0, the displacement u and the approach (which the solver updates in
+// place), as Polonsky-Keer computes it: the solver stores no gap field.
 struct SearchSet {
   const double* pressure = nullptr;
-  const double* surface = nullptr;
+  const double* initial_gap = nullptr;
+  const double* displacement = nullptr;
   const double* approach = nullptr;
   bool overlap = false;
   bool mean_free = false;
@@ -47,7 +47,7 @@ struct SearchSet {
     return set;
   }
 
-  double gap(std::size_t i) const { return surface[i] - *approach; }
+  double gap(std::size_t i) const { return initial_gap[i] + displacement[i] - *approach; }
   // In contact and below the cap: the cells whose gap vanishes at the
   // solution (the elastic part of the contact).
   bool in_contact(std::size_t i) const { return mask ? mask[i] != 0 : (pressure[i] > 0.0) & (pressure[i] < upper); }
