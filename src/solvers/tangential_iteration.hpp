@@ -29,8 +29,13 @@ using linalg::sums;
 // 17, 17 and 20 iterations on the rough test contact).
 inline constexpr int kConjugateUpdatesBetweenExactProducts = 4;
 // Conjugate gradients that do not halve the gap in this many steps stall
-// (sets swinging back and forth): projected gradients take over.
+// (sets swinging back and forth): projected gradients take over for a while
+// (tangential_solver.cpp).
 inline constexpr int kStalledConjugateSteps = 100;
+// Projected-gradient steps after a stall before conjugate gradients resume,
+// and the stall after which projected gradients go on to the end.
+inline constexpr int kProjectedStepsAfterStall = 20;
+inline constexpr int kConjugateStalls = 4;
 // Slip increments below this fraction of the previous step's largest
 // displacement are rounding of the products, not motion (the residual's
 // scale is kept above it).
