@@ -71,9 +71,9 @@ struct Contact {
 
   Fields fields() {
     double* w = work.data();
-    return {qx.data(),     qy.data(),         w,
-            w + kCells,    w + 2 * kCells,    w + 3 * kCells,
-            w + 4 * kCells, w + 5 * kCells,   w + 6 * kCells,
+    return {qx.data(),      qy.data(),      w,
+            w + kCells,     w + 2 * kCells, w + 3 * kCells,
+            w + 4 * kCells, w + 5 * kCells, w + 6 * kCells,
             w + 7 * kCells, kind.data()};
   }
 
