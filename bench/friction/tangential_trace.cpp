@@ -4,11 +4,13 @@
 // the products, the stick fraction. The pressure of the normal solve is
 // kept in a file (the third argument) so that a second run skips it.
 // Usage: tangential_trace N [MAX_ITERATIONS] [PRESSURE_FILE] [EVERY] [coarse|fine]
-// [active=UPDATES] [normal] (coarse, fine: TangentialOptions::coarse_start on,
+// [active=UPDATES] [normal] [perturb=K] (coarse, fine: TangentialOptions::coarse_start on,
 // off, automatic without either;
 // active: TangentialOptions::active_set_updates, 10 if no number is given;
 // normal: the normal solve made and timed even when the pressure file
-// exists, for the step's time against it in the same run). One thread; the counts are
+// exists, for the step's time against it in the same run; perturb: both
+// tangential loads times 1 + K 1e-15, a rounding-level change of the input
+// whose iterations should stay near the unperturbed ones). One thread; the counts are
 // exact, the times those of a shared machine.
 #include <fmt/format.h>
 
@@ -105,7 +107,7 @@ int main(int argc, char** argv) {
     if (argc < 2) {
       std::fprintf(stderr,
                    "usage: tangential_trace N [MAX_ITERATIONS] [PRESSURE_FILE] [EVERY] [coarse|fine] [active=UPDATES] "
-                   "[normal]\n");
+                   "[normal] [perturb=K]\n");
       return 2;
     }
     const auto n = static_cast<std::size_t>(std::stoul(argv[1]));
@@ -115,17 +117,20 @@ int main(int argc, char** argv) {
     TangentialCoarseStart coarse_start = TangentialCoarseStart::automatic;
     int active_set_updates = 0;
     bool timed = false;
+    double scale = 1.0;
     for (int a = 5; a < argc; ++a) {
       const std::string arg = argv[a];
       if (arg == "coarse" || arg == "fine") {
         coarse_start = arg == "coarse" ? TangentialCoarseStart::on : TangentialCoarseStart::off;
       } else if (arg == "normal") {
         timed = true;
+      } else if (arg.starts_with("perturb=")) {
+        scale = 1.0 + std::stod(arg.substr(8)) * 1e-15;
       } else if (arg.starts_with("active")) {
         active_set_updates = arg.size() > 7 ? std::stoi(arg.substr(7)) : 10;
       } else {
         throw std::invalid_argument("unknown argument " + arg +
-                                    ": allowed are coarse, fine, active[=UPDATES] and normal");
+                                    ": allowed are coarse, fine, active[=UPDATES], normal and perturb=K");
       }
     }
     set_threads(1);
@@ -149,10 +154,10 @@ int main(int argc, char** argv) {
     const std::span<const double> p(pressure.data(), grid.size());
     double cpu = cpu_seconds();
     const TangentialResult first =
-        solver.solve(p, TangentialLoading::force(0.5 * kMu * load), TangentialState::unloaded(grid.size()));
+        solver.solve(p, TangentialLoading::force(scale * 0.5 * kMu * load), TangentialState::unloaded(grid.size()));
     report("step 1", first, cpu_seconds() - cpu);
     cpu = cpu_seconds();
-    const TangentialResult second = solver.solve(p, TangentialLoading::force(0.25 * kMu * load), first.state);
+    const TangentialResult second = solver.solve(p, TangentialLoading::force(scale * 0.25 * kMu * load), first.state);
     report("step 2", second, cpu_seconds() - cpu);
     return first.converged() && second.converged() ? 0 : 1;
   } catch (const std::exception& e) {

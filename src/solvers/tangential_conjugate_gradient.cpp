@@ -164,8 +164,7 @@ void ConjugateGradientMethod::step() {
   bool linear = clipped_cells == 0.0;
   if (force) {
     // The directions keep the force; what the circles and clips moved is
-    // given back by the stick cells alike, or, if that pushes one over its
-    // disc, by the exact projection onto the force and the discs.
+    // given back by the stick cells alike (restore_force).
     if (it_.restore_force(sum_qx, sum_qy, stick_cells)) linear = false;
   }
   // u follows q by the product C d already made, up to the circles'

@@ -30,6 +30,10 @@ class ConjugateGradientMethod : IterationMethod {
   // on frozen releases (tangential_solver.cpp).
   void allow_release(bool allowed) { release_ = allowed; }
 
+  // The next step a steepest-descent one (no momentum), as after other
+  // steps moved q (projected gradients after a stall).
+  void restart() { momentum_ = false; }
+
  private:
   // Fields::kind's values.
   static constexpr std::uint8_t kOutside = 0;

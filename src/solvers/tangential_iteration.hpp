@@ -29,8 +29,13 @@ using linalg::sums;
 // 17, 17 and 20 iterations on the rough test contact).
 inline constexpr int kConjugateUpdatesBetweenExactProducts = 4;
 // Conjugate gradients that do not halve the gap in this many steps stall
-// (sets swinging back and forth): projected gradients take over.
+// (sets swinging back and forth): projected gradients take over for a while
+// (tangential_solver.cpp).
 inline constexpr int kStalledConjugateSteps = 100;
+// Projected-gradient steps after a stall before conjugate gradients resume,
+// and the stall after which projected gradients go on to the end.
+inline constexpr int kProjectedStepsAfterStall = 20;
+inline constexpr int kConjugateStalls = 4;
 // Slip increments below this fraction of the previous step's largest
 // displacement are rounding of the products, not motion (the residual's
 // scale is kept above it).
@@ -38,6 +43,9 @@ inline constexpr double kResolvedMotion = 1e-9;
 // A traction within this relative distance of mu p is at the limit (a
 // projected traction lies on the circle to rounding).
 inline constexpr double kAtLimit = 1e-12;
+// Passes of restore_force that give the force clipped stick cells lost to the
+// stick cells left before the exact projection takes over.
+inline constexpr int kForceRestoringPasses = 8;
 // A force within this relative distance of mu P is gross sliding.
 inline constexpr double kSlidingForce = 1e-9;
 
@@ -186,31 +194,43 @@ class TangentialIteration {
   }
 
   // Gives q the force it lacks, target - (held_x, held_y), through its
-  // `stick_cells` alike; if there are none, or that pushes one over its
-  // disc, by the exact projection onto the force and the discs. Returns
-  // whether the projection was taken.
+  // `stick_cells` alike: a stick cell the shift pushes over its disc is
+  // clipped onto its circle and the force the clip took is given again by
+  // the stick cells left, until no cell is clipped. Slipping cells stay on
+  // their circles. Only if no stick cell is left, or the clipped force does
+  // not settle in kForceRestoringPasses, is the force restored by the exact
+  // projection onto the force and the discs, which shifts the slipping cells
+  // too: taken on every step, it moved thousands of them off their circles
+  // and back each time, and a free 256^2 sphere's step stalled on
+  // rounding-level changes of the input (docs/development-log.md,
+  // 2026-11-30). Returns whether a cell was clipped or the projection taken.
   bool restore_force(double held_x, double held_y, double stick_cells) {
-    const double ex = problem_.target_x - held_x;
-    const double ey = problem_.target_y - held_y;
-    bool exact = stick_cells == 0.0;
-    if (!exact && (ex != 0.0 || ey != 0.0)) {
+    double ex = problem_.target_x - held_x;
+    double ey = problem_.target_y - held_y;
+    bool changed = false;
+    for (int pass = 0; pass < kForceRestoringPasses && stick_cells > 0.0 && (ex != 0.0 || ey != 0.0); ++pass) {
       const double sx = ex / stick_cells;
       const double sy = ey / stick_cells;
-      const auto [over] = sums<1>(comm_, n_, [&](std::size_t i) {
+      const auto [clipped_cells, lost_x, lost_y] = sums<3>(comm_, n_, [&](std::size_t i) {
         const double radius = radius_[i];
-        if (!(radius > 0.0) || at_limit(f_.qx[i], f_.qy[i], radius)) return std::array<double, 1>{};
-        f_.qx[i] += sx;
-        f_.qy[i] += sy;
-        return std::array<double, 1>{magnitude(f_.qx[i], f_.qy[i]) > radius ? 1.0 : 0.0};
+        if (!(radius > 0.0) || at_limit(f_.qx[i], f_.qy[i], radius)) return std::array<double, 3>{};
+        const double x = f_.qx[i] + sx;
+        const double y = f_.qy[i] + sy;
+        std::tie(f_.qx[i], f_.qy[i]) = clipped(x, y, radius);
+        if (magnitude(x, y) <= radius) return std::array<double, 3>{};
+        return std::array<double, 3>{1.0, x - f_.qx[i], y - f_.qy[i]};
       });
-      exact = over > 0.0;
+      if (clipped_cells == 0.0) return changed;
+      changed = true;
+      ex = lost_x;
+      ey = lost_y;
+      stick_cells -= clipped_cells;
     }
-    if (exact) {
-      const auto [sx, sy] = force_shift([&](std::size_t i) { return std::pair{f_.qx[i], f_.qy[i]}; });
-      for_each_index(
-          n_, [&](std::size_t i) { std::tie(f_.qx[i], f_.qy[i]) = clipped(f_.qx[i] + sx, f_.qy[i] + sy, radius_[i]); });
-    }
-    return exact;
+    if (ex == 0.0 && ey == 0.0) return changed;
+    const auto [sx, sy] = force_shift([&](std::size_t i) { return std::pair{f_.qx[i], f_.qy[i]}; });
+    for_each_index(
+        n_, [&](std::size_t i) { std::tie(f_.qx[i], f_.qy[i]) = clipped(f_.qx[i] + sx, f_.qy[i] + sy, radius_[i]); });
+    return true;
   }
 
   // The slip the products resolve: motion below this fraction of the

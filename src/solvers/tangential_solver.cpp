@@ -325,19 +325,33 @@ TangentialResult TangentialSolver::solve(std::span<const double> pressure, const
     const int offset = result.active_set_iterations;
     double best = std::numeric_limits<double>::infinity();
     int best_at = 0;
+    int stalls = 0;
+    int projected_left = 0;  // projected steps before conjugate gradients resume
     for (;; ++k) {
       it.evaluate(offset + k);
       if (it.finished(offset + k)) break;
       if (conjugate) {
         // A stall (the gap not halved in kStalledConjugateSteps steps) hands
-        // over to projected gradients, which converge whatever the sets do.
+        // over to projected gradients, which converge whatever the sets do:
+        // for kProjectedStepsAfterStall steps, which settle the sets the
+        // conjugate gradients swung, after which these resume from a
+        // steepest-descent step; for good after kConjugateStalls stalls.
+        // (Projected gradients to the end took 760-3400 iterations where
+        // the conjugate gradients resumed took about 100: docs/
+        // development-log.md, 2026-11-30.)
         if (it.residual() < 0.5 * best) {
           best = it.residual();
           best_at = k;
         } else if (k - best_at > kStalledConjugateSteps) {
           conjugate = false;
+          projected_left = ++stalls < kConjugateStalls ? kProjectedStepsAfterStall : -1;
           projected_gradient.begin();
         }
+      } else if (projected_left > 0 && --projected_left == 0) {
+        conjugate = true;
+        conjugate_gradient.restart();
+        best = it.residual();
+        best_at = k;
       }
       if (conjugate) {
         // Releases only every release_period iterations: an active-set
