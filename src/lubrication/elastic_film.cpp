@@ -271,6 +271,22 @@ ElasticFilm detail::solve_film_newton(InfluenceOperator& op, const Eigen::ArrayX
     pressure_scale = contact.max_pressure;
     x.pressure = contact.pressure;
     x.theta = Eigen::ArrayXd::Ones(ni);
+    // A dry contact on nodes of imposed pressure only (a wedge touching at
+    // its outlet edge) leaves the film's nodes unloaded, and the first
+    // Newton step from there was singular at any load: the load spread
+    // evenly over them instead.
+    double free_load = 0.0;
+    std::size_t free_nodes = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      if (topology.fixed(k)) continue;
+      free_load += contact.pressure[static_cast<Eigen::Index>(k)];
+      ++free_nodes;
+    }
+    if (!(free_load > 0.0) && free_nodes > 0) {
+      const double mean = w / (area * static_cast<double>(free_nodes));
+      for (std::size_t k = 0; k < n; ++k) x.pressure[static_cast<Eigen::Index>(k)] = topology.fixed(k) ? 0.0 : mean;
+      pressure_scale = mean;
+    }
     // The undeformed gap at the dry contact's edge (b^2 / 2R for a
     // cylinder or sphere) sets the scale of the elastic film.
     for (Eigen::Index k = 0; k < ni; ++k) {
