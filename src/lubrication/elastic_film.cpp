@@ -465,7 +465,9 @@ ElasticFilm detail::solve_film_newton(InfluenceOperator& op, const Eigen::ArrayX
       // from it. When no step along that direction lowers the residual,
       // the direction is solved again to krylov_tolerance before the
       // iteration gives up: near the solution the loose direction's error
-      // can outweigh the descent it promises.
+      // can outweigh the descent it promises. The mixed film's Eisenstat &
+      // Walker term (newton_forcing.hpp) took a Newton step more here at 64^2
+      // and 512^2 (docs/development-log.md, 2026-11-30, branch lub30i).
       const double loose_forcing = std::min(kLargestForcing, current.norm);
       bool accepted = false, failed = false;
       Measure tried;
