@@ -305,16 +305,7 @@ ElasticFilm detail::solve_film_newton(InfluenceOperator& op, const Eigen::ArrayX
 
   // p, theta, K p and h of s and h0; false if a film is not positive.
   const auto evaluate = [&](State& state) {
-    for (Eigen::Index k = 0; k < ni; ++k) {
-      if (topology.fixed(static_cast<std::size_t>(k))) {
-        state.pressure[k] = topology.fixed_pressure(static_cast<std::size_t>(k));
-        state.theta[k] = supply;
-        continue;
-      }
-      state.s[k] = std::max(state.s[k], -1.0);
-      state.pressure[k] = pressure_scale * std::max(state.s[k], 0.0);
-      state.theta[k] = 1.0 + std::min(state.s[k], 0.0);
-    }
+    detail::set_pressure_and_fraction(topology, pressure_scale, supply, state.s, state.pressure, state.theta);
     op.apply({state.pressure.data(), n}, {state.deformation.data(), n});
     state.film = state.offset + gap + state.deformation;
     return (state.film > 0.0).all() && state.film.allFinite();
