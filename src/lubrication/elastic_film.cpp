@@ -271,6 +271,22 @@ ElasticFilm detail::solve_film_newton(InfluenceOperator& op, const Eigen::ArrayX
     pressure_scale = contact.max_pressure;
     x.pressure = contact.pressure;
     x.theta = Eigen::ArrayXd::Ones(ni);
+    // A dry contact on nodes of imposed pressure only (a wedge touching at
+    // its outlet edge) leaves the film's nodes unloaded, and the first
+    // Newton step from there was singular at any load: the load spread
+    // evenly over them instead.
+    double free_load = 0.0;
+    std::size_t free_nodes = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      if (topology.fixed(k)) continue;
+      free_load += contact.pressure[static_cast<Eigen::Index>(k)];
+      ++free_nodes;
+    }
+    if (!(free_load > 0.0) && free_nodes > 0) {
+      const double mean = w / (area * static_cast<double>(free_nodes));
+      for (std::size_t k = 0; k < n; ++k) x.pressure[static_cast<Eigen::Index>(k)] = topology.fixed(k) ? 0.0 : mean;
+      pressure_scale = mean;
+    }
     // The undeformed gap at the dry contact's edge (b^2 / 2R for a
     // cylinder or sphere) sets the scale of the elastic film.
     for (Eigen::Index k = 0; k < ni; ++k) {
@@ -289,16 +305,7 @@ ElasticFilm detail::solve_film_newton(InfluenceOperator& op, const Eigen::ArrayX
 
   // p, theta, K p and h of s and h0; false if a film is not positive.
   const auto evaluate = [&](State& state) {
-    for (Eigen::Index k = 0; k < ni; ++k) {
-      if (topology.fixed(static_cast<std::size_t>(k))) {
-        state.pressure[k] = topology.fixed_pressure(static_cast<std::size_t>(k));
-        state.theta[k] = supply;
-        continue;
-      }
-      state.s[k] = std::max(state.s[k], -1.0);
-      state.pressure[k] = pressure_scale * std::max(state.s[k], 0.0);
-      state.theta[k] = 1.0 + std::min(state.s[k], 0.0);
-    }
+    detail::set_pressure_and_fraction(topology, pressure_scale, supply, state.s, state.pressure, state.theta);
     op.apply({state.pressure.data(), n}, {state.deformation.data(), n});
     state.film = state.offset + gap + state.deformation;
     return (state.film > 0.0).all() && state.film.allFinite();
@@ -449,7 +456,9 @@ ElasticFilm detail::solve_film_newton(InfluenceOperator& op, const Eigen::ArrayX
       // from it. When no step along that direction lowers the residual,
       // the direction is solved again to krylov_tolerance before the
       // iteration gives up: near the solution the loose direction's error
-      // can outweigh the descent it promises.
+      // can outweigh the descent it promises. The mixed film's Eisenstat &
+      // Walker term (newton_forcing.hpp) took a Newton step more here at 64^2
+      // and 512^2 (docs/development-log.md, 2026-11-30, branch lub30i).
       const double loose_forcing = std::min(kLargestForcing, current.norm);
       bool accepted = false, failed = false;
       Measure tried;

@@ -311,16 +311,7 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
   if (!load_control) x.offset = options.offset;
 
   const auto evaluate = [&](State& state) {
-    for (Eigen::Index k = 0; k < ni; ++k) {
-      if (topology.fixed(static_cast<std::size_t>(k))) {
-        state.fluid[k] = topology.fixed_pressure(static_cast<std::size_t>(k));
-        state.theta[k] = supply;
-        continue;
-      }
-      state.s[k] = std::max(state.s[k], -1.0);
-      state.fluid[k] = P * std::max(state.s[k], 0.0);
-      state.theta[k] = 1.0 + std::min(state.s[k], 0.0);
-    }
+    detail::set_pressure_and_fraction(topology, P, supply, state.s, state.fluid, state.theta);
     state.contact = P * state.q;
     state.total = state.fluid + state.contact;
     op.apply({state.total.data(), n}, {state.deformation.data(), n});

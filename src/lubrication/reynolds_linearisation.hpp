@@ -68,6 +68,24 @@ bool branch_consistent_step(Linearise&& linearise, const ReynoldsStencil& topolo
   return branch_consistent_step_with(dense_solve, topology, s, step, branch_full, switch_band);
 }
 
+// The p-theta switch on the film's nodes (s clipped at -1, a fully
+// cavitated node): p = P max(s, 0), theta = 1 + min(s, 0); on nodes of
+// imposed pressure that pressure and the supply's fluid fraction.
+inline void set_pressure_and_fraction(const ReynoldsStencil& topology, double pressure_scale, double supply,
+                                      Eigen::ArrayXd& s, Eigen::ArrayXd& pressure, Eigen::ArrayXd& theta) {
+  for (Eigen::Index k = 0; k < s.size(); ++k) {
+    const auto node = static_cast<std::size_t>(k);
+    if (topology.fixed(node)) {
+      pressure[k] = topology.fixed_pressure(node);
+      theta[k] = supply;
+      continue;
+    }
+    s[k] = std::max(s[k], -1.0);
+    pressure[k] = pressure_scale * std::max(s[k], 0.0);
+    theta[k] = 1.0 + std::min(s[k], 0.0);
+  }
+}
+
 // The nodes' pressure-dependent coefficients for a film: rho / rho0, eps =
 // rho h^3 / (12 eta) and their derivatives.
 struct NodeCoefficients {
