@@ -184,17 +184,4 @@ std::function<int(const std::vector<std::string>&)> table_command(CLI::App& comm
   };
 }
 
-// Runs `function`; a library InputError (not a FileError) it throws is thrown
-// again with `context` (an option and its value) in front.
-template <class Function>
-auto in_context(const std::string& context, Function&& function) {
-  try {
-    return function();
-  } catch (const FileError&) {
-    throw;
-  } catch (const InputError& error) {
-    throw InputError(context + ": " + error.what());
-  }
-}
-
 }  // namespace halfspace::app

@@ -23,19 +23,6 @@
 namespace halfspace {
 namespace {
 
-// Runs `parse`; an InputError (not a FileError) it throws is thrown again
-// with the option's name in front.
-template <class Parse>
-auto named(const OptionSpelling& spelling, std::string_view option, Parse&& parse) {
-  try {
-    return parse();
-  } catch (const FileError&) {
-    throw;
-  } catch (const InputError& error) {
-    throw InputError(fmt::format("{}: {}", spelling.name(option), error.what()));
-  }
-}
-
 // Splits "AxB" at 'x' or 'X'; a single part when there is none.
 std::vector<std::string_view> split_dimensions(std::string_view text) {
   std::vector<std::string_view> parts;
@@ -175,11 +162,12 @@ BuiltinShape builtin_shape(std::string_view shape_option, std::string_view shape
 surface::PreparationOptions checked_preparation(const SurfaceOptions& o, Boundary boundary,
                                                 const OptionSpelling& spelling) {
   surface::PreparationOptions prepare;
-  if (o.window) prepare.window = named(spelling, "window", [&] { return surface::parse_window(*o.window); });
+  if (o.window) prepare.window = in_context(spelling.name("window"), [&] { return surface::parse_window(*o.window); });
   if (o.invalid) {
-    prepare.invalid = named(spelling, "invalid", [&] { return surface::parse_invalid_points(*o.invalid); });
+    prepare.invalid = in_context(spelling.name("invalid"), [&] { return surface::parse_invalid_points(*o.invalid); });
   }
-  if (o.detrend) prepare.detrend = named(spelling, "detrend", [&] { return surface::parse_detrend(*o.detrend); });
+  if (o.detrend)
+    prepare.detrend = in_context(spelling.name("detrend"), [&] { return surface::parse_detrend(*o.detrend); });
   if (o.pad) {
     const std::string pad = spelling.describe("pad", format_number(*o.pad));
     if (boundary == Boundary::periodic) {
@@ -225,7 +213,7 @@ SurfaceChoice make_surface_choice(const SurfaceOptions& o, Boundary boundary, co
            fmt::format("applies only to {}; a built-in geometry takes its spacing from {} and {}", name("height_map"),
                        name("grid"), name("size")));
     const geometry::SurfaceShape shape =
-        named(spelling, "geometry", [&] { return geometry::parse_surface_shape(*o.geometry); });
+        in_context(spelling.name("geometry"), [&] { return geometry::parse_surface_shape(*o.geometry); });
     BuiltinShape made = builtin_shape("geometry", *o.geometry, shape, o.radius, o.wavelength, o.amplitude, spelling);
     if (!o.grid) throw InputError(fmt::format("{} needs {} N (1D) or NXxNY (2D)", name("geometry"), name("grid")));
     if (!o.size) {
@@ -241,9 +229,11 @@ SurfaceChoice make_surface_choice(const SurfaceOptions& o, Boundary boundary, co
          fmt::format("cannot be used with {}: it applies only to {}; the grid and its spacing come from the file",
                      name("height_map"), name("geometry")));
   HeightMapFile file{.path = *o.height_map};
-  if (o.format) file.read.format = named(spelling, "format", [&] { return io::parse_height_map_format(*o.format); });
+  if (o.format)
+    file.read.format = in_context(spelling.name("format"), [&] { return io::parse_height_map_format(*o.format); });
   if (o.dataset) file.read.dataset = *o.dataset;
-  if (o.unit) file.read.unit = named(spelling, "unit", [&] { return io::require_length_unit(*o.unit, "unit"); });
+  if (o.unit)
+    file.read.unit = in_context(spelling.name("unit"), [&] { return io::require_length_unit(*o.unit, "unit"); });
   file.prepare = checked_preparation(o, boundary, spelling);
   if (o.dx) file.dx = checked_length("dx", *o.dx, spelling);
   if (o.dy) file.dy = checked_length("dy", *o.dy, spelling);
