@@ -15,18 +15,7 @@ namespace halfspace {
 namespace {
 
 using Flags = testing::FlagSpelling;  // a program's spelling ("--name value")
-
-// The message of the InputError `make` throws; empty (and a failure) if none.
-template <class Make>
-std::string refusal(Make make) {
-  try {
-    make();
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  ADD_FAILURE() << "accepted";
-  return {};
-}
+using testing::refusal;
 
 SurfaceOptions sphere() {
   return {.geometry = "sphere", .radius = 0.01, .grid = "64x32", .size = "1e-3"};
