@@ -14,7 +14,6 @@
 
 #include "activity.hpp"
 #include "exit_codes.hpp"
-#include "grid_options.hpp"
 #include "halfspace/error.hpp"
 #include "halfspace/geometry/builtin_surface.hpp"
 #include "halfspace/io/height_map_writer.hpp"
@@ -24,6 +23,7 @@
 #include "halfspace/physical_ranges.hpp"
 #include "halfspace/surface/self_affine.hpp"
 #include "halfspace/surface/statistics.hpp"
+#include "halfspace/surface/surface_options.hpp"
 #include "halfspace/version.hpp"
 #include "memory_check.hpp"
 #include "option_table.hpp"
@@ -105,10 +105,15 @@ struct Generated {
   SurfaceSource source;
 };
 
-// A length option (require_length), if given.
+// The program's spelling of the library's checks of these options.
+GivenSpelling flags(const GenerateOptions& o) {
+  return {o, std::span<const GenerateOption>(kOptions)};
+}
+
+// A length option (checked_length), if given.
 std::optional<double> length(const GenerateOptions& o, std::string_view key, const std::optional<double>& value) {
   if (!value) return std::nullopt;
-  return require_length(o, key, *value);
+  return checked_length(key, *value, flags(o));
 }
 
 void reject(const GenerateOptions& o, std::initializer_list<const char*> keys, std::string_view reason) {
@@ -128,7 +133,7 @@ bool makes_whole(const Grid& grid) {
 Grid grid_from(const GenerateOptions& o, Boundary boundary) {
   if (!o.grid) throw InputError("no grid given: pass --grid N (1D) or NXxNY (2D)");
   if (!o.size) throw InputError("no domain size given: pass --size L or LXxLY (m)");
-  Grid grid = grid_from_options(*o.grid, o.describe("grid"), *o.size, o.describe("size"), boundary);
+  Grid grid = grid_from_text(*o.grid, *o.size, boundary, flags(o));
   const std::optional<MemoryLimit> limit =
       memory_limit(o.max_memory, o.max_memory ? o.describe("max-memory") : std::string("--max-memory"));
   require_memory(fmt::format("{}: generating {} cells", o.describe("grid"), grid.size()),
@@ -193,7 +198,7 @@ Generated builtin(const GenerateOptions& o, geometry::SurfaceShape shape) {
   for (const char* key : kSelfAffineKeys) {
     if (o.given(key)) throw InputError(fmt::format("{} does not apply to --kind {}", o.name(key), kind));
   }
-  auto [spec, source] = builtin_shape_from(o, "kind", shape, o.radius, o.wavelength, o.amplitude);
+  auto [spec, source] = builtin_shape("kind", kind, shape, o.radius, o.wavelength, o.amplitude, flags(o));
   // Only a wavy surface with whole periods repeats with the domain.
   Grid probe = grid_from(o, Boundary::free);
   const bool periodic = shape == geometry::SurfaceShape::wavy && whole_periods(probe, spec.wavelength);

@@ -11,7 +11,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cctype>
 #include <chrono>
 #include <cstdint>
 #include <fstream>
@@ -21,10 +20,10 @@
 #include <span>
 #include <string>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include "exit_codes.hpp"
-#include "grid_options.hpp"
 #include "halfspace/error.hpp"
 #include "halfspace/geometry/builtin_surface.hpp"
 #include "halfspace/io/film_history_writer.hpp"
@@ -42,22 +41,20 @@
 #include "halfspace/lubrication/transient_film.hpp"
 #include "halfspace/material.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
-#include "halfspace/surface/preparation.hpp"
+#include "halfspace/surface/surface_options.hpp"
 #include "halfspace/version.hpp"
 #include "option_table.hpp"
 #include "plot_tool.hpp"
 #include "processes.hpp"
+#include "surface_option_table.hpp"
 
 namespace halfspace::app {
 namespace {
 
-// The film's options (LubricationProblemOptions, which make_lubrication_problem
+// The surface's options (SurfaceOptions, which make_surface_choice checks),
+// the film's (LubricationProblemOptions, which make_lubrication_problem
 // checks) and the program's own: the files and how to report.
-struct LubricateOptions : GivenOptions, lubrication::LubricationProblemOptions {
-  std::optional<std::string> height_map;
-  std::optional<std::string> geometry, grid, size;
-  std::optional<double> radius, wavelength, amplitude;
-  std::optional<std::string> window, invalid, detrend;
+struct LubricateOptions : GivenOptions, SurfaceOptions, lubrication::LubricationProblemOptions {
   std::optional<std::string> roughness;
   std::optional<std::string> stribeck;
   std::optional<std::string> output;
@@ -67,36 +64,14 @@ struct LubricateOptions : GivenOptions, lubrication::LubricationProblemOptions {
 
 using LubricateOption = OptionSpec<LubricateOptions>;
 using Kind = OptionKind;
-constexpr std::string_view kSurface = "Surface (exactly one of --height-map, --geometry)";
 constexpr std::string_view kFilm = "Film";
 constexpr std::string_view kElastic = "Elastic film (EHL)";
 constexpr std::string_view kMixed = "Mixed lubrication";
 constexpr std::string_view kTransient = "Transient film (rigid)";
 constexpr std::string_view kOutput = "Output";
 
-const std::array kOptions{
-    LubricateOption{"height-map", &LubricateOptions::height_map, Kind::path, kSurface, "FILE",
-                    "the surface's heights against a flat (any format solve reads; spacing from the file)"},
-    LubricateOption{"window", &LubricateOptions::window, Kind::text, kSurface, "I0,J0,NX,NY",
-                    "use only columns I0..I0+NX-1 and rows J0..J0+NY-1 of --height-map (0-based; I0,NX for a "
-                    "profile), as solve's"},
-    LubricateOption{"invalid", &LubricateOptions::invalid, Kind::text, kSurface, "MODE",
-                    "invalid points of --height-map: refuse, fill (harmonic) or crop [refuse]"},
-    LubricateOption{"detrend", &LubricateOptions::detrend, Kind::text, kSurface, "MODE",
-                    "subtract a least-squares fit from --height-map (after --window): none, mean, plane or "
-                    "curvature [none]"},
-    LubricateOption{"geometry", &LubricateOptions::geometry, Kind::text, kSurface, "SHAPE",
-                    "a built-in surface instead of --height-map: sphere, cylinder, wavy or flat (as solve's)"},
-    LubricateOption{"radius", &LubricateOptions::radius, Kind::number, kSurface, "M",
-                    "radius of the sphere or cylinder (m)"},
-    LubricateOption{"wavelength", &LubricateOptions::wavelength, Kind::number, kSurface, "M",
-                    "wavelength of the wavy surface (m)"},
-    LubricateOption{"amplitude", &LubricateOptions::amplitude, Kind::number, kSurface, "M",
-                    "amplitude of the wavy surface (m)"},
-    LubricateOption{"grid", &LubricateOptions::grid, Kind::text, kSurface, "N|NXxNY",
-                    "cells of a built-in geometry: N (1D) or NXxNY (2D)"},
-    LubricateOption{"size", &LubricateOptions::size, Kind::text, kSurface, "L|LXxLY",
-                    "domain of a built-in geometry (m), centred on its apex; spacing = L / N"},
+// The rows of lubricate's own options, after the surface's.
+const std::array kOwnOptions{
     LubricateOption{"viscosity", &LubricateOptions::viscosity, Kind::number, kFilm, "PA_S",
                     "lubricant viscosity (Pa s) (required)"},
     LubricateOption{"entrainment-velocity", &LubricateOptions::entrainment_velocity, Kind::numbers, kFilm, "UX[,UY]",
@@ -194,37 +169,13 @@ const std::array kOptions{
                     "centre line, maps of a 2D film; the Stribeck curve of --stribeck)"},
     LubricateOption{"quiet", &LubricateOptions::quiet, Kind::flag, kOutput, "", "print nothing on success"},
 };
+const std::array kOptions = joined(surface_option_table<LubricateOptions>(), kOwnOptions);
 
-// The program's spelling of the film's options: the flag (or the config
-// file's key) of each, with the value the library shows.
-class LubricateSpelling : public OptionSpelling {
- public:
-  explicit LubricateSpelling(const LubricateOptions& options) : options_(options) {}
-  std::string name(std::string_view option) const override { return options_.name(key(option)); }
-  std::string describe(std::string_view option, std::string_view value) const override {
-    const std::string flag = key(option);
-    if (options_.from_config.contains(flag)) return fmt::format("{} = {} in {}", flag, value, *options_.config);
-    return fmt::format("--{} {}", flag, value);
-  }
-
- private:
-  // The table's key of a problem option: its name with '-' for '_'
-  // ("layer_E" is --layer-E, "e_star" --E-star).
-  static std::string key(std::string_view option) {
-    for (const LubricateOption& spec : kOptions) {
-      const bool same = std::ranges::equal(spec.key, option, [](char a, char b) {
-        return std::tolower(static_cast<unsigned char>(a)) ==
-               std::tolower(static_cast<unsigned char>(b == '_' ? '-' : b));
-      });
-      if (same) return std::string(spec.key);
-    }
-    std::string flag(option);
-    std::ranges::replace(flag, '_', '-');
-    return flag;
-  }
-
-  const LubricateOptions& options_;
-};
+// The program's spelling of the film's and the surface's options, with the
+// values (and units) the library shows.
+GivenSpelling flags(const LubricateOptions& options) {
+  return {options, std::span<const LubricateOption>(kOptions), true};
+}
 
 // The film's shear on the lower surface (film_shear.hpp): its friction in
 // the summary, its fields and the limits in the file.
@@ -256,7 +207,7 @@ int with_lubricate_flags(const LubricateOptions& o, Function&& function) {
   try {
     return function();
   } catch (const OptionError& error) {
-    throw lubrication::spelled_film_error(error, LubricateSpelling(o));
+    throw lubrication::spelled_film_error(error, flags(o));
   }
 }
 
@@ -357,7 +308,7 @@ int report(const LubricateOptions& o, const HeightMap& map, const lubrication::F
   if (!converged) {
     if (prints) {
       fmt::print(stderr, "warning: {}; the result is written to {}\n  {}\n", summary.message, *o.output,
-                 problem.failure_hint(LubricateSpelling(o)));
+                 problem.failure_hint(flags(o)));
     }
     return kExitNotConverged;
   }
@@ -608,81 +559,23 @@ void add_roughness(const std::string& path, HeightMap& map) {
   map.heights += rough.heights;
 }
 
-// The surface against the flat: a height map, prepared as solve prepares
-// one, or a built-in shape on --grid and --size (grid_options.hpp), centred
-// on the domain as solve --geometry's.
-HeightMap read_film_surface(const LubricateOptions& o) {
-  HeightMap map = io::read_height_map(*o.height_map);
-  if (o.window || o.invalid || o.detrend) {
-    // The library's preparation (solve's): window, invalid points, detrending.
-    const auto flagged = [](std::string_view flag, const auto& parse) {
-      try {
-        return parse();
-      } catch (const InputError& error) {
-        throw InputError(fmt::format("--{}: {}", flag, error.what()));
-      }
-    };
-    surface::PreparationOptions prepare;
-    if (o.window) prepare.window = flagged("window", [&] { return surface::parse_window(*o.window); });
-    if (o.invalid) prepare.invalid = flagged("invalid", [&] { return surface::parse_invalid_points(*o.invalid); });
-    if (o.detrend) prepare.detrend = flagged("detrend", [&] { return surface::parse_detrend(*o.detrend); });
-    surface::prepare_height_map(map, prepare);
-  }
-  if (!map.all_valid()) {
-    throw InputError(
-        fmt::format("{} has invalid points: a film needs every height (or pass --invalid fill)", *o.height_map));
-  }
-  if (!(map.dx > 0.0) || (map.dimension == 2 && !(map.dy > 0.0))) {
-    throw InputError(fmt::format("{} does not give its spacing: a film needs dx (and dy) in metres", *o.height_map));
-  }
-  return map;
-}
-
-HeightMap builtin_film_surface(const LubricateOptions& o, Boundary boundary) {
-  for (const auto& [key, given] : {std::pair<std::string_view, bool>{"window", o.window.has_value()},
-                                   {"invalid", o.invalid.has_value()},
-                                   {"detrend", o.detrend.has_value()}}) {
-    if (given) throw InputError(fmt::format("{} applies only to --height-map, not to --geometry", o.name(key)));
-  }
-  const geometry::SurfaceShape shape =
-      in_context(o.name("geometry"), [&] { return geometry::parse_surface_shape(*o.geometry); });
-  BuiltinShape made = builtin_shape_from(o, "geometry", shape, o.radius, o.wavelength, o.amplitude);
-  const Grid grid = grid_for_geometry(o, o.grid, o.size, boundary);
+// The surface against the flat (a height map, prepared as solve prepares
+// one, or a built-in shape on its grid, centred on the domain as solve's),
+// with --roughness added: what the first process reads.
+HeightMap read_film_map(const LubricateOptions& o, const SurfaceChoice& choice) {
   HeightMap map;
-  map.dimension = grid.dimension();
-  map.nx = grid.nx();
-  map.ny = grid.ny();
-  map.dx = grid.dx();
-  map.dy = grid.dimension() == 2 ? grid.dy() : 0.0;
-  map.heights = geometry::make_surface_heights(grid, made.spec);
-  map.source = std::move(made.source);
-  return map;
-}
-
-HeightMap film_surface(const LubricateOptions& o, Boundary boundary) {
-  if (o.height_map.has_value() == o.geometry.has_value()) {
-    throw InputError(o.height_map ? "--height-map and --geometry are two surfaces: give one"
-                                  : "no surface given: pass --height-map FILE or --geometry SHAPE");
+  if (const auto* file = std::get_if<HeightMapFile>(&choice)) {
+    map = read_height_map_file(*file, flags(o));
+  } else {
+    const auto& [shape, grid] = std::get<BuiltinSurface>(choice);
+    map.dimension = grid.dimension();
+    map.nx = grid.nx();
+    map.ny = grid.ny();
+    map.dx = grid.dx();
+    map.dy = grid.dimension() == 2 ? grid.dy() : 0.0;
+    map.heights = geometry::make_surface_heights(grid, shape.spec);
+    map.source = shape.source;
   }
-  if (o.height_map) {
-    for (const auto& [key, given] : {std::pair<std::string_view, bool>{"grid", o.grid.has_value()},
-                                     {"size", o.size.has_value()},
-                                     {"radius", o.radius.has_value()},
-                                     {"wavelength", o.wavelength.has_value()},
-                                     {"amplitude", o.amplitude.has_value()}}) {
-      if (given) {
-        throw InputError(fmt::format("{} applies only to --geometry; --height-map {} brings its own grid", o.name(key),
-                                     *o.height_map));
-      }
-    }
-    return read_film_surface(o);
-  }
-  return builtin_film_surface(o, boundary);
-}
-
-// The surface with --roughness added: what the first process reads.
-HeightMap read_film_map(const LubricateOptions& o, Boundary boundary) {
-  HeightMap map = film_surface(o, boundary);
   if (o.roughness) add_roughness(*o.roughness, map);
   return map;
 }
@@ -739,8 +632,9 @@ int run_rigid(const LubricateOptions& o, const HeightMap& map, const Grid& grid,
 }
 
 int solve_film(const LubricateOptions& o) {
-  const LubricateSpelling flags(o);
-  const lubrication::LubricationProblem problem = lubrication::make_lubrication_problem(o, flags);
+  const GivenSpelling spelling = flags(o);
+  const lubrication::LubricationProblem problem = lubrication::make_lubrication_problem(o, spelling);
+  const SurfaceChoice surface = make_surface_choice(o, problem.boundary, spelling);
   if (o.speeds.has_value() != o.stribeck.has_value()) {
     throw InputError("--speeds and --stribeck go together: the sweep's speeds and its CSV file");
   }
@@ -748,12 +642,12 @@ int solve_film(const LubricateOptions& o) {
   io::check_output_path(*o.output);
   if (o.stribeck) io::check_output_path(*o.stribeck);
 
-  return run_film_everywhere([&] { return read_film_map(o, problem.boundary); },
+  return run_film_everywhere([&] { return read_film_map(o, surface); },
                              [&](HeightMap& map, const FilmPlace& place) {
                                const Grid grid = map.dimension == 1
                                                      ? Grid::line(map.nx, map.dx, problem.boundary)
                                                      : Grid::plane(map.nx, map.ny, map.dx, map.dy, problem.boundary);
-                               problem.check_grid(grid, flags, map.source);
+                               problem.check_grid(grid, spelling, map.source);
                                if (!place.whole) require_film_on_slabs(problem);
                                if (problem.kind == lubrication::FilmKind::mixed) {
                                  return run_mixed(o, map, grid, problem);

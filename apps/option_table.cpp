@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -251,6 +252,30 @@ std::string GivenOptions::name(std::string_view key) const {
     return fmt::format("{} (in {})", key, config.value_or(""));
   }
   return fmt::format("--{}", key);
+}
+
+std::string GivenSpelling::describe(std::string_view option, std::string_view value) const {
+  const std::string flag = key(option);
+  if (library_values_ && given_.from_config.contains(flag)) {
+    return fmt::format("{} = {} in {}", flag, value, given_.config.value_or(""));
+  }
+  if (library_values_ || !given_.given(flag)) return fmt::format("--{} {}", flag, value);
+  std::string written = given_.describe(flag);
+  if (written.ends_with(' ')) written.pop_back();  // a flag, which has no value
+  return written;
+}
+
+std::string GivenSpelling::key(std::string_view option) const {
+  for (const std::string_view key : keys_) {
+    const bool same = std::ranges::equal(key, option, [](char a, char b) {
+      return std::tolower(static_cast<unsigned char>(a)) ==
+             std::tolower(static_cast<unsigned char>(b == '_' ? '-' : b));
+    });
+    if (same) return std::string(key);
+  }
+  std::string flag(option);
+  std::ranges::replace(flag, '_', '-');
+  return flag;
 }
 
 void add_option(CLI::App& command, std::string_view key, OptionKind kind, std::string_view group,

@@ -7,6 +7,8 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <array>
 #include <functional>
 #include <map>
 #include <optional>
@@ -18,6 +20,7 @@
 #include <vector>
 
 #include "halfspace/error.hpp"
+#include "halfspace/problem.hpp"
 
 namespace halfspace::app {
 
@@ -70,6 +73,15 @@ struct OptionSpec {
   std::string_view help;
 };
 
+// The rows of `first`, then those of `second`.
+template <class Spec, std::size_t N, std::size_t M>
+std::array<Spec, N + M> joined(const std::array<Spec, N>& first, const std::array<Spec, M>& second) {
+  std::array<Spec, N + M> rows{};
+  std::ranges::copy(first, rows.begin());
+  std::ranges::copy(second, rows.begin() + N);
+  return rows;
+}
+
 // An option of the table bound to an options object.
 struct BoundOption {
   std::string_view key;
@@ -86,6 +98,31 @@ struct Alternative {
   std::vector<std::string_view> keys;       // every key that belongs to it
 };
 using AlternativeGroup = std::vector<Alternative>;
+
+// The program's spelling of a library's options (OptionSpelling,
+// problem.hpp): an option's flag is the table key that is its name with '-'
+// for '_', case aside ("e_star" is --E-star, "layer_E" --layer-E); its value
+// the one the user wrote, if given, or with `library_values` the one the
+// library shows ("-1 Pa s", "2 m/s (y component)").
+class GivenSpelling : public OptionSpelling {
+ public:
+  template <class Options>
+  GivenSpelling(const GivenOptions& given, std::span<const OptionSpec<Options>> table, bool library_values = false)
+      : given_(given), library_values_(library_values) {
+    for (const OptionSpec<Options>& spec : table) keys_.push_back(spec.key);
+  }
+  std::string name(std::string_view option) const override { return given_.name(key(option)); }
+  std::string describe(std::string_view option, std::string_view value) const override;
+
+ protected:
+  // The table's key of `option`; its name with '-' for '_' if none matches.
+  virtual std::string key(std::string_view option) const;
+
+ private:
+  const GivenOptions& given_;
+  bool library_values_;
+  std::vector<std::string_view> keys_;
+};
 
 // Registers one option with CLI11 (the non-template part of add_options).
 void add_option(CLI::App& command, std::string_view key, OptionKind kind, std::string_view group,
@@ -145,19 +182,6 @@ std::function<int(const std::vector<std::string>&)> table_command(CLI::App& comm
     merge_config_file(bound, {}, command.get_name(), options);
     return run(options);
   };
-}
-
-// Runs `function`; a library InputError (not a FileError) it throws is thrown
-// again with `context` (an option and its value) in front.
-template <class Function>
-auto in_context(const std::string& context, Function&& function) {
-  try {
-    return function();
-  } catch (const FileError&) {
-    throw;
-  } catch (const InputError& error) {
-    throw InputError(context + ": " + error.what());
-  }
 }
 
 }  // namespace halfspace::app

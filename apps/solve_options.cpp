@@ -3,13 +3,10 @@
 // TOML merge, so the flag names and the config keys cannot drift apart.
 #include "solve_options.hpp"
 
-#include <fmt/format.h>
-
-#include <algorithm>
 #include <array>
-#include <cctype>
 #include <span>
 
+#include "surface_option_table.hpp"
 #include "value_parsing.hpp"
 
 namespace halfspace::app {
@@ -18,9 +15,6 @@ namespace {
 using Kind = OptionKind;
 using SolveOption = OptionSpec<SolveOptions>;
 
-constexpr std::string_view kSurface = "Surface (exactly one of --height-map, --geometry)";
-constexpr std::string_view kPreparation = "Height-map format and preparation (applied in this order)";
-constexpr std::string_view kGrid = "Grid";
 constexpr std::string_view kMaterial = "Material (E1, nu1, E2 and nu2, or E-star)";
 constexpr std::string_view kCoating = "Coated half-space (all five, instead of the material; the surface is rigid)";
 constexpr std::string_view kLoad = "Load (exactly one)";
@@ -32,38 +26,11 @@ constexpr std::string_view kFriction =
     "Friction (Coulomb; needs E1, nu1, E2, nu2, dissimilar bodies solved coupled; one normal load)";
 constexpr std::string_view kAdhesion = "Adhesion (a cohesive law beside the hard wall; --approach may be negative)";
 
-const std::array kOptions{
-    SolveOption{"height-map", &SolveOptions::height_map, Kind::path, kSurface, "FILE",
-                "HDF5 height map (m): a rank-1 profile or a (ny, nx) map; its grid is used"},
-    SolveOption{"dataset", &SolveOptions::dataset, Kind::text, kSurface, "PATH",
-                "dataset in the height map file [/height]"},
-    SolveOption{"dx", &SolveOptions::dx, Kind::number, kSurface, "M",
-                "height map spacing along x (m); overrides the file's dx attribute"},
-    SolveOption{"dy", &SolveOptions::dy, Kind::number, kSurface, "M",
-                "height map spacing along y (m); overrides the file's dy attribute"},
-    SolveOption{"format", &SolveOptions::format, Kind::text, kPreparation, "NAME",
-                "height map format: auto (by extension), hdf5, npy, matrix, profile, x3p or gsf [auto]"},
-    SolveOption{"unit", &SolveOptions::unit, Kind::text, kPreparation, "UNIT",
-                "length unit of npy, text and unlabelled GSF files: m, mm, um, nm [m]"},
-    SolveOption{"window", &SolveOptions::window, Kind::text, kPreparation, "I0,J0,NX,NY",
-                "use only columns I0..I0+NX-1 and rows J0..J0+NY-1 (0-based; I0,NX for a profile)"},
-    SolveOption{"invalid", &SolveOptions::invalid, Kind::text, kPreparation, "MODE",
-                "invalid (masked or NaN) points: refuse, fill (harmonic) or crop (largest valid rectangle) [refuse]"},
-    SolveOption{"detrend", &SolveOptions::detrend, Kind::text, kPreparation, "MODE",
-                "subtract a least-squares fit: none, mean, plane or curvature [none]"},
-    SolveOption{"pad", &SolveOptions::pad, Kind::number, kPreparation, "FACTOR",
+// The rows of solve's own options, after the surface's.
+const std::array kOwnOptions{
+    SolveOption{"pad", &SolveOptions::pad, Kind::number, kPreparationGroup, "FACTOR",
                 "free boundary only: embed the map in a FACTOR times larger grid at its lowest height [1]"},
-    SolveOption{"geometry", &SolveOptions::geometry, Kind::text, kSurface, "SHAPE",
-                "built-in surface: sphere, cylinder, flat or wavy"},
-    SolveOption{"radius", &SolveOptions::radius, Kind::number, kSurface, "M", "sphere or cylinder radius (m)"},
-    SolveOption{"wavelength", &SolveOptions::wavelength, Kind::number, kSurface, "M", "wavy surface wavelength (m)"},
-    SolveOption{"amplitude", &SolveOptions::amplitude, Kind::number, kSurface, "M",
-                "wavy surface amplitude A (m): h = -A (1 - cos ...)"},
-    SolveOption{"grid", &SolveOptions::grid, Kind::dimensions, kGrid, "N|NXxNY",
-                "cells of a built-in geometry: N (1D) or NXxNY (2D)"},
-    SolveOption{"size", &SolveOptions::size, Kind::dimensions, kGrid, "L|LXxLY",
-                "domain size of a built-in geometry (m); spacing = L / N"},
-    SolveOption{"boundary", &SolveOptions::boundary, Kind::text, kGrid, "TYPE", "periodic or free [free]"},
+    SolveOption{"boundary", &SolveOptions::boundary, Kind::text, kGridGroup, "TYPE", "periodic or free [free]"},
     SolveOption{"E1", &SolveOptions::e1, Kind::number, kMaterial, "PA", "Young's modulus of body 1 (Pa)"},
     SolveOption{"nu1", &SolveOptions::nu1, Kind::number, kMaterial, "NU", "Poisson's ratio of body 1"},
     SolveOption{"E2", &SolveOptions::e2, Kind::modulus, kMaterial, "PA",
@@ -183,6 +150,7 @@ const std::array kOptions{
     SolveOption{"plot", &SolveOptions::plot, Kind::flag, kOutput, "",
                 "draw PNG figures next to the output with scripts/halfspace_plot.py (maps; sweep curves)"},
 };
+const std::array kOptions = joined(surface_option_table<SolveOptions>(), kOwnOptions);
 
 // Options that exclude each other (Alternative, option_table.hpp): the
 // surface is chosen only by its selectors, so `--grid` alone must not silently
@@ -232,35 +200,13 @@ ProblemOptions problem_options(const SolveOptions& options) {
   return problem;
 }
 
-namespace {
+FlagSpelling::FlagSpelling(const SolveOptions& options)
+    : GivenSpelling(options, std::span<const SolveOption>(kOptions)) {}
 
-// The key of the table's option that `option` names: the same words with '-'
-// for '_' ("E-star" for "e_star").
-std::string_view flag(std::string_view option) {
+std::string FlagSpelling::key(std::string_view option) const {
   if (option == "adhesion_tol") return "tol";
   if (option == "coupling") return "no-coupling";
-  for (const SolveOption& spec : kOptions) {
-    const bool same = std::ranges::equal(spec.key, option, [](char a, char b) {
-      return std::tolower(static_cast<unsigned char>(a)) ==
-             std::tolower(static_cast<unsigned char>(b == '_' ? '-' : b));
-    });
-    if (same) return spec.key;
-  }
-  return option;
-}
-
-}  // namespace
-
-std::string FlagSpelling::name(std::string_view option) const {
-  return options_.name(flag(option));
-}
-
-std::string FlagSpelling::describe(std::string_view option, std::string_view value) const {
-  const std::string_view key = flag(option);
-  if (!options_.given(key)) return fmt::format("--{} {}", key, value);
-  std::string given = options_.describe(key);
-  if (given.ends_with(' ')) given.pop_back();  // a flag, which has no value
-  return given;
+  return GivenSpelling::key(option);
 }
 
 }  // namespace halfspace::app

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "halfspace/problem.hpp"
+#include "halfspace/surface/surface_options.hpp"
 #include "option_table.hpp"
 
 namespace halfspace::app {
@@ -17,26 +18,9 @@ namespace halfspace::app {
 // Everything `halfspace solve` accepts. An empty optional was given neither on
 // the command line nor in the config file; defaults are applied later, in
 // make_solve_setup, so that "not given" stays distinguishable from "default".
-struct SolveOptions : GivenOptions, ProblemOptions {
-  // Surface: a height map file, or a built-in geometry.
-  std::optional<std::string> height_map;
-  std::optional<std::string> dataset;
-  std::optional<double> dx;
-  std::optional<double> dy;
-  // Height-map format and preparation (docs/usage.md#height-map-formats-and-preparation).
-  std::optional<std::string> format;
-  std::optional<std::string> unit;
-  std::optional<std::string> window;
-  std::optional<std::string> invalid;
-  std::optional<std::string> detrend;
-  std::optional<double> pad;
-  std::optional<std::string> geometry;
-  std::optional<double> radius;
-  std::optional<double> wavelength;
-  std::optional<double> amplitude;
-  // Grid of a built-in geometry.
-  std::optional<std::string> grid;
-  std::optional<std::string> size;
+struct SolveOptions : GivenOptions, SurfaceOptions, ProblemOptions {
+  // The surface (a height map file or a built-in geometry) is SurfaceOptions'
+  // (halfspace/surface/surface_options.hpp); the boundary of its grid.
   std::optional<std::string> boundary;
   // The body, interface law, loads and solver settings are ProblemOptions'
   // (halfspace/problem.hpp), under the same names.
@@ -81,14 +65,12 @@ ProblemOptions problem_options(const SolveOptions& options);
 
 // The program's spelling of the problem's options (problem.hpp): the flag or
 // config key of each ("adhesion_tol" is --tol) and its value as written.
-class FlagSpelling : public OptionSpelling {
+class FlagSpelling : public GivenSpelling {
  public:
-  explicit FlagSpelling(const SolveOptions& options) : options_(options) {}
-  std::string name(std::string_view option) const override;
-  std::string describe(std::string_view option, std::string_view value) const override;
+  explicit FlagSpelling(const SolveOptions& options);
 
- private:
-  const SolveOptions& options_;
+ protected:
+  std::string key(std::string_view option) const override;
 };
 
 }  // namespace halfspace::app

@@ -4,21 +4,18 @@
 #include "solve_setup.hpp"
 
 #include <fmt/format.h>
-#include <fmt/ranges.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
 #include <functional>
-#include <initializer_list>
 #include <optional>
-#include <tuple>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include "activity.hpp"
 #include "friction_setup.hpp"
-#include "grid_options.hpp"
 #include "halfspace/elastic_pair.hpp"
 #include "halfspace/error.hpp"
 #include "halfspace/geometry/builtin_surface.hpp"
@@ -28,13 +25,11 @@
 #include "halfspace/io/sweep_writer.hpp"
 #include "halfspace/io/xdmf_writer.hpp"
 #include "halfspace/memory_estimate.hpp"
-#include "halfspace/physical_ranges.hpp"
 #include "halfspace/solvers/frictional_solve.hpp"
 #include "halfspace/solvers/surface_solve.hpp"
 #include "halfspace/stress/stress_volume.hpp"
 #include "halfspace/stress/stressed_body.hpp"
 #include "halfspace/stress/subsurface_stress.hpp"
-#include "halfspace/surface/padding.hpp"
 #include "halfspace/surface/preparation.hpp"
 #include "memory_check.hpp"
 #include "processes.hpp"
@@ -45,27 +40,6 @@ namespace halfspace::app {
 namespace {
 
 namespace fs = std::filesystem;
-
-// Keys paired with whether they were given.
-using Presence = std::initializer_list<std::pair<std::string_view, bool>>;
-
-std::vector<std::string> given_names(const SolveOptions& options, Presence keys) {
-  std::vector<std::string> names;
-  for (const auto& [key, given] : keys) {
-    if (given) names.push_back(options.name(key));
-  }
-  return names;
-}
-
-void check_surface_choice(const SolveOptions& options) {
-  if (options.height_map && options.geometry) {
-    throw InputError(fmt::format("{} and {} cannot be combined: give exactly one surface", options.name("height-map"),
-                                 options.name("geometry")));
-  }
-  if (!options.height_map && !options.geometry) {
-    throw InputError("no surface given: pass --height-map FILE or --geometry sphere|cylinder|flat|wavy");
-  }
-}
 
 // "the solve (pk-multilevel, free boundary, 4194304 cells)", with the steps
 // of a sweep.
@@ -159,168 +133,53 @@ void check_outputs_against_inputs(const SolveOptions& o, const fs::path& output,
   }
 }
 
-void reject_given(const SolveOptions& o, Presence keys, std::string_view reason) {
-  const std::vector<std::string> given = given_names(o, keys);
-  if (!given.empty()) {
-    throw InputError(fmt::format("{} {}", given.front(), reason));
-  }
-}
-
 // The checks that need the grid, run as soon as it is known and before the
 // heights are made: the loads' scale on it, and the memory a solve on it
 // needs. `request` names where the grid came from.
 using GridCheck = std::function<void(const Grid& grid, const std::string& request)>;
 
-Surface builtin_surface(const SolveOptions& o, Boundary boundary, const GridCheck& check_grid,
+Surface builtin_surface(const SolveOptions& o, const BuiltinSurface& builtin, const GridCheck& check_grid,
                         const std::function<RowRange(const Grid&)>& rows_of) {
-  reject_given(o,
-               {{"dataset", o.dataset.has_value()},
-                {"dx", o.dx.has_value()},
-                {"dy", o.dy.has_value()},
-                {"format", o.format.has_value()},
-                {"unit", o.unit.has_value()},
-                {"window", o.window.has_value()},
-                {"invalid", o.invalid.has_value()},
-                {"detrend", o.detrend.has_value()},
-                {"pad", o.pad.has_value()}},
-               "applies only to --height-map; a built-in geometry takes its spacing from --grid and --size");
-  const geometry::SurfaceShape shape =
-      in_context(o.name("geometry"), [&] { return geometry::parse_surface_shape(*o.geometry); });
-  auto [spec, source] = builtin_shape_from(o, "geometry", shape, o.radius, o.wavelength, o.amplitude);
-  Grid grid = grid_for_geometry(o, o.grid, o.size, boundary);
+  const Grid& grid = builtin.grid;
   check_grid(grid, o.describe("grid"));
   // Each process its own rows, from their global coordinates.
   const auto [first_row, rows] = rows_of && grid.dimension() == 2 ? rows_of(grid) : RowRange{0, grid.ny()};
   const Activity activity(
       fmt::format("making the {} surface on the {} grid", o.describe("geometry"), grid.shape_string()));
-  Eigen::ArrayXd heights = geometry::make_surface_rows(grid, spec, first_row, rows);
-  return {std::move(grid), std::move(heights), std::move(source), {}, first_row, rows};
-}
-
-// The spacing along one axis: the option if given, else the file attribute
-// (0 when the file has none; the reader rejects negative ones).
-std::optional<double> height_map_spacing(const SolveOptions& o, std::string_view key,
-                                         const std::optional<double>& option, double attribute) {
-  if (option) return require_length(o, key, *option);
-  if (attribute > 0.0) return attribute;
-  return std::nullopt;
-}
-
-// Both spacings are named at once when both are missing, so one retry suffices.
-void require_spacings(const std::string& file, const std::vector<std::string_view>& missing) {
-  if (missing.empty()) return;
-  std::vector<std::string> flags;
-  for (std::string_view key : missing) flags.push_back(fmt::format("--{}", key));
-  throw FileError(fmt::format("height map {} does not state its spacing {}: pass {} (m)", file,
-                              fmt::join(missing, " and "), fmt::join(flags, " and ")));
-}
-
-io::ReadOptions read_options_from(const SolveOptions& o) {
-  io::ReadOptions read;
-  if (o.format) read.format = in_context(o.name("format"), [&] { return io::parse_height_map_format(*o.format); });
-  if (o.dataset) read.dataset = *o.dataset;
-  if (o.unit) read.unit = in_context(o.name("unit"), [&] { return io::require_length_unit(*o.unit, "unit"); });
-  return read;
-}
-
-surface::PreparationOptions preparation_from(const SolveOptions& o, Boundary boundary) {
-  surface::PreparationOptions prepare;
-  if (o.window) prepare.window = in_context(o.name("window"), [&] { return surface::parse_window(*o.window); });
-  if (o.invalid) {
-    prepare.invalid = in_context(o.name("invalid"), [&] { return surface::parse_invalid_points(*o.invalid); });
-  }
-  if (o.detrend) prepare.detrend = in_context(o.name("detrend"), [&] { return surface::parse_detrend(*o.detrend); });
-  if (o.pad) {
-    if (boundary == Boundary::periodic) {
-      throw InputError(
-          fmt::format("{} cannot be combined with --boundary periodic: padding is for free boundaries "
-                      "(a periodic surface repeats without a margin)",
-                      o.describe("pad")));
-    }
-    if (o.mean_pressure) {
-      throw InputError(
-          fmt::format("{} cannot be combined with {}: the mean pressure would be taken over the padded "
-                      "area; give --force instead",
-                      o.describe("pad"), o.name("mean-pressure")));
-    }
-    if (!(*o.pad >= surface::kMinPadFactor && *o.pad <= surface::kMaxPadFactor)) {
-      throw InputError(fmt::format("{} is invalid: the factor must be in [{}, {}]", o.describe("pad"),
-                                   surface::kMinPadFactor, surface::kMaxPadFactor));
-    }
-    prepare.pad_factor = *o.pad;
-  }
-  return prepare;
+  Eigen::ArrayXd heights = geometry::make_surface_rows(grid, builtin.shape.spec, first_row, rows);
+  return {grid, std::move(heights), builtin.shape.source, {}, first_row, rows};
 }
 
 // `slabs`: read this process's rows through it (reads_height_map_in_slabs);
 // null: read the whole map.
-Surface height_map_surface(const SolveOptions& o, Boundary boundary, const GridCheck& check_grid,
-                           const SurfaceSharing* slabs) {
-  reject_given(o,
-               {{"radius", o.radius.has_value()},
-                {"wavelength", o.wavelength.has_value()},
-                {"amplitude", o.amplitude.has_value()},
-                {"grid", o.grid.has_value()},
-                {"size", o.size.has_value()}},
-               "cannot be used with --height-map: the grid and its spacing come from the file");
-  const std::string& file = *o.height_map;
-  const io::ReadOptions read = read_options_from(o);
-  const surface::PreparationOptions prepare = preparation_from(o, boundary);
-  const Activity reading(fmt::format("reading the height map {}", file));
+Surface height_map_surface(const HeightMapFile& file, Boundary boundary, const OptionSpelling& flags,
+                           const GridCheck& check_grid, const SurfaceSharing* slabs) {
+  const Activity reading(fmt::format("reading the height map {}", file.path));
   HeightMap map;
   std::size_t first_row = 0;
   std::optional<std::size_t> slab_rows;  // set when this process holds only some rows
   if (slabs) {
-    io::HeightMapRows part = slabs->read_hdf5_rows(file, io::hdf5_dataset(read));
+    io::HeightMapRows part = slabs->read_hdf5_rows(file.path, io::hdf5_dataset(file.read));
     map = std::move(part.map);
     first_row = part.first_row;
     if (part.rows != map.ny) slab_rows = part.rows;
-  } else {
-    map = io::read_height_map(file, read);
-  }
-  std::string source = map.source.empty() ? file : map.source;
-
-  const std::optional<double> dx = height_map_spacing(o, "dx", o.dx, map.dx);
-  std::optional<double> dy;
-  if (map.dimension == 1) {
-    if (o.dy) throw InputError(fmt::format("{} does not apply to the 1D profile in {}", o.name("dy"), file));
-    require_spacings(file, dx ? std::vector<std::string_view>{} : std::vector<std::string_view>{"dx"});
-  } else {
-    dy = height_map_spacing(o, "dy", o.dy, map.dy);
-    std::vector<std::string_view> missing;
-    if (!dx) missing.push_back("dx");
-    if (!dy) missing.push_back("dy");
-    require_spacings(file, missing);
-  }
-  map.dx = *dx;
-  map.dy = dy.value_or(0.0);
-  // Spacings from the file's attributes get the range the options have.
-  for (const auto& [key, value, given] :
-       {std::tuple{"dx", map.dx, o.dx.has_value()}, std::tuple{"dy", map.dy, o.dy.has_value() || map.dimension == 1}}) {
-    if (!given) {
-      require_in_range(
-          fmt::format("the spacing {} = {:g} m of height map {} (override it with --{})", key, value, file, key), value,
-          kMinLength, kMaxLength, "m");
-    }
-  }
-
-  try {
-    if (slabs) {
-      // prepare_height_map's steps that apply (reads_height_map_in_slabs),
-      // with the whole map's sums when the rows are spread out.
-      const linalg::Communicator& comm = slab_rows ? *slabs->communicator : linalg::serial_communicator();
+    set_spacing(map, file, flags);
+    // prepare_height_map's steps that apply (reads_height_map_in_slabs),
+    // with the whole map's sums when the rows are spread out.
+    const linalg::Communicator& comm = slab_rows ? *slabs->communicator : linalg::serial_communicator();
+    try {
       surface::refuse_invalid_points_rows(map, first_row, comm);
-      surface::detrend_rows(map, prepare.detrend, first_row, comm);
-    } else {
-      surface::prepare_height_map(map, prepare);
+    } catch (const FileError& error) {
+      throw with_invalid_points_hint(error, flags);
     }
-  } catch (const FileError& error) {
-    // Only the refusal of invalid points is a FileError here: say how to proceed.
-    throw FileError(fmt::format("{} (pass --invalid fill or --invalid crop)", error.what()));
+    surface::detrend_rows(map, file.prepare.detrend, first_row, comm);
+  } else {
+    map = read_height_map_file(file, flags);
   }
+  std::string source = map.source.empty() ? file.path : map.source;
   Grid grid =
       map.dimension == 1 ? Grid::line(map.nx, map.dx, boundary) : Grid::plane(map.nx, map.ny, map.dx, map.dy, boundary);
-  check_grid(grid, fmt::format("height map {} ({} cells{})", file, grid.shape_string(),
+  check_grid(grid, fmt::format("height map {} ({} cells{})", file.path, grid.shape_string(),
                                map.preparation.empty() ? "" : " after preparation"));
   const std::size_t rows = slab_rows.value_or(grid.dimension() == 1 ? 1 : grid.ny());
   return {std::move(grid), std::move(map.heights), std::move(source), std::move(map.preparation), first_row, rows};
@@ -379,25 +238,31 @@ double stress_peak_memory(const Grid& grid, const StressRequest& stress, bool co
 
 }  // namespace
 
-bool reads_height_map_in_slabs(const SolveOptions& o) {
-  if (!o.height_map || o.geometry || o.window || o.pad) return false;
+bool reads_height_map_in_slabs(const HeightMapFile& file) {
+  if (file.prepare.window || file.prepare.pad_factor > 1.0) return false;
+  if (file.prepare.invalid != surface::InvalidPoints::refuse) return false;
   try {
-    if (o.invalid && surface::parse_invalid_points(*o.invalid) != surface::InvalidPoints::refuse) return false;
-    return io::checked_format(*o.height_map, read_options_from(o)) == io::HeightMapFormat::hdf5;
+    return io::checked_format(file.path, file.read) == io::HeightMapFormat::hdf5;
   } catch (const InputError&) {
     return false;  // the whole reading reports it, as the serial program does
   }
 }
 
 SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& share) {
-  check_surface_choice(options);
   const FlagSpelling flags(options);
+  const Boundary boundary =
+      in_context(options.name("boundary"), [&] { return parse_boundary(options.boundary.value_or("free")); });
+  const SurfaceChoice choice = make_surface_choice(options, boundary, flags);
+  if (options.pad && options.mean_pressure) {
+    throw InputError(
+        fmt::format("{} cannot be combined with {}: the mean pressure would be taken over the padded area; give "
+                    "--force instead",
+                    options.describe("pad"), options.name("mean-pressure")));
+  }
   Problem problem = make_problem(problem_options(options), flags);
   const std::optional<LayeredMaterial>& coating = problem.coating;
   const std::vector<double>& load_values = problem.load_values;
   const solvers::SolverOptions& solver = problem.solver;
-  const Boundary boundary =
-      in_context(options.name("boundary"), [&] { return parse_boundary(options.boundary.value_or("free")); });
   fs::path output = output_from(options);
   const std::optional<MemoryLimit> limit = memory_limit(options.max_memory, options.describe("max-memory"));
   const StressRequest stress = stress_request_from(options, load_values.size(), problem);
@@ -439,14 +304,16 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
   };
   check_outputs_against_inputs(options, output, load_values.size() > 1 || history_steps > 1, solver.fft_planning);
 
+  const auto* builtin = std::get_if<BuiltinSurface>(&choice);
+  const auto* file = std::get_if<HeightMapFile>(&choice);
   Surface surface = [&] {
-    if (options.geometry && share.rows) return builtin_surface(options, boundary, check_grid, share.rows);
-    if (!options.geometry && share.read_hdf5_rows && reads_height_map_in_slabs(options)) {
-      return height_map_surface(options, boundary, check_grid, &share);
+    if (builtin && share.rows) return builtin_surface(options, *builtin, check_grid, share.rows);
+    if (file && share.read_hdf5_rows && reads_height_map_in_slabs(*file)) {
+      return height_map_surface(*file, boundary, flags, check_grid, &share);
     }
     return share.whole([&] {
-      return options.geometry ? builtin_surface(options, boundary, check_grid, {})
-                              : height_map_surface(options, boundary, check_grid, nullptr);
+      return builtin ? builtin_surface(options, *builtin, check_grid, {})
+                     : height_map_surface(*file, boundary, flags, check_grid, nullptr);
     });
   }();
   const std::size_t rows = surface.grid.dimension() == 1 ? 1 : surface.grid.ny();

@@ -18,6 +18,7 @@
 #include "halfspace/solvers/contact_solver.hpp"
 #include "halfspace/solvers/friction_options.hpp"
 #include "halfspace/stress/stressed_body.hpp"
+#include "halfspace/surface/surface_options.hpp"
 #include "memory_check.hpp"
 #include "solve_options.hpp"
 
@@ -94,11 +95,10 @@ struct SurfaceSharing {
       check_memory;
 };
 
-// Whether make_solve_setup reads the height map of `options` in rows when
-// `share` can: an HDF5 file whose preparation needs no whole map (no
-// window, invalid points refused, any detrending; a periodic grid is never
-// padded).
-bool reads_height_map_in_slabs(const SolveOptions& options);
+// Whether make_solve_setup reads the height map `file` in rows when `share`
+// can: an HDF5 file whose preparation needs no whole map (no window or
+// padding, invalid points refused, any detrending).
+bool reads_height_map_in_slabs(const HeightMapFile& file);
 
 // Applies the defaults, checks every option and their combinations, builds
 // the surface (reading the height map file, if any; through `share`) and

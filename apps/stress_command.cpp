@@ -80,11 +80,8 @@ int stresses_at(StressPlace& place, const StressOptions& o, const std::vector<do
         format_number(coating->substrate.poissons_ratio)));
   }
   if (coating) {
-    try {
-      stress::require_coated_stress_grid(grid, *coating);
-    } catch (const InputError& error) {
-      throw InputError(fmt::format("{} is a coated half-space's result: {}", o.result, error.what()));
-    }
+    in_context(fmt::format("{} is a coated half-space's result", o.result),
+               [&] { stress::require_coated_stress_grid(grid, *coating); });
   }
   // Whose stresses (the file's bodies or coating give the default and the
   // Poisson's ratio, stress/stressed_body.hpp).

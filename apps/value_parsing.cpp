@@ -8,12 +8,9 @@
 #include <array>
 #include <charconv>
 #include <cmath>
-#include <optional>
 #include <system_error>
 
-#include "halfspace/checked_size.hpp"
 #include "halfspace/error.hpp"
-#include "halfspace/physical_ranges.hpp"
 
 namespace halfspace::app {
 namespace {
@@ -22,19 +19,6 @@ namespace {
 // mantissas ("+1e3") often enough to accept it.
 std::string_view without_plus(std::string_view text) {
   return (text.size() > 1 && text.front() == '+') ? text.substr(1) : text;
-}
-
-// Splits "AxB" at 'x' or 'X'; a single part when there is none.
-std::vector<std::string_view> split_dimensions(std::string_view text) {
-  std::vector<std::string_view> parts;
-  std::size_t start = 0;
-  for (std::size_t k = 0; k <= text.size(); ++k) {
-    if (k == text.size() || text[k] == 'x' || text[k] == 'X') {
-      parts.push_back(text.substr(start, k - start));
-      start = k + 1;
-    }
-  }
-  return parts;
 }
 
 // The parts of `text` between `separator`s (one part when there is none).
@@ -87,52 +71,6 @@ long long parse_integer(std::string_view text, std::string_view what) {
     throw InputError(fmt::format("{} is invalid: expected a whole number", what));
   }
   return value;
-}
-
-std::vector<std::size_t> parse_grid_shape(std::string_view text, std::string_view what) {
-  const std::vector<std::string_view> parts = split_dimensions(text);
-  std::vector<std::size_t> counts;
-  for (std::string_view part : parts) {
-    std::size_t n = 0;
-    const auto [end, error] = std::from_chars(part.data(), part.data() + part.size(), n);
-    if (parts.size() > 2 || part.empty() || error != std::errc() || end != part.data() + part.size()) {
-      throw InputError(
-          fmt::format("{} is invalid: expected N cells (1D) or NXxNY cells (2D), e.g. 256 or 256x128", what));
-    }
-    counts.push_back(n);
-  }
-  for (std::size_t axis = 0; axis < counts.size(); ++axis) {
-    if (counts[axis] < 2) {
-      const char* name = counts.size() == 1 ? "n" : (axis == 0 ? "nx" : "ny");
-      throw InputError(
-          fmt::format("{} is invalid: need at least 2 cells along each axis (got {} = {})", what, name, counts[axis]));
-    }
-  }
-  const std::size_t rows = counts.size() == 2 ? counts[1] : 1;
-  const std::optional<std::size_t> cells = checked_multiply(counts[0], rows);
-  if (!cells || *cells > kMaxGridCells) {
-    throw InputError(fmt::format("{} is invalid: {:.4g} cells is more than the {:.4g} a grid can have", what,
-                                 static_cast<double>(counts[0]) * static_cast<double>(rows),
-                                 static_cast<double>(kMaxGridCells)));
-  }
-  return counts;
-}
-
-std::vector<double> parse_domain_size(std::string_view text, std::string_view what) {
-  const std::vector<std::string_view> parts = split_dimensions(text);
-  if (parts.size() > 2) {
-    throw InputError(fmt::format("{} is invalid: expected L or LXxLY in m, e.g. 1e-3 or 2e-3x1e-3", what));
-  }
-  std::vector<double> lengths;
-  for (std::string_view part : parts) {
-    const double length = parse_number(part, what);
-    if (!(length >= kMinLength && length <= kMaxLength)) {
-      throw InputError(fmt::format("{} is invalid: each length of the domain must be in [{:g}, {:g}] m (got {:g})",
-                                   what, kMinLength, kMaxLength, length));
-    }
-    lengths.push_back(length);
-  }
-  return lengths;
 }
 
 double parse_memory_size(std::string_view text, std::string_view what) {

@@ -1,4 +1,4 @@
-// Strict parsers for command-line values (numbers, grid shapes, domain sizes,
+// Strict parsers for command-line values (numbers, memory sizes, lists,
 // tangential load steps) and shell quoting of the command line recorded in
 // output files.
 #pragma once
@@ -18,17 +18,6 @@ double parse_number(std::string_view text, std::string_view what);
 
 // The whole of `text` as a decimal integer. Throws InputError otherwise.
 long long parse_integer(std::string_view text, std::string_view what);
-
-// A grid shape "N" (1D) or "NXxNY" (2D), at least 2 cells per axis and at
-// most kMaxGridCells in all (checked_size.hpp; their product is checked, not
-// computed, so 4294967296x4294967296 does not wrap round to 0). Returns one
-// or two counts. Throws InputError naming `what` and saying why otherwise.
-std::vector<std::size_t> parse_grid_shape(std::string_view text, std::string_view what);
-
-// A domain size "L" or "LXxLY" (m), each in [kMinLength, kMaxLength]
-// (physical_ranges.hpp). Returns one or two lengths. Throws InputError naming
-// `what` otherwise.
-std::vector<double> parse_domain_size(std::string_view text, std::string_view what);
 
 // A memory size: a whole number of bytes ("1000000000"), or a number with
 // one of the binary units K, M, G, T, each optionally followed by "iB" or

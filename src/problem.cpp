@@ -161,12 +161,8 @@ std::optional<solvers::SolverOptions::Adhesion> Rules::adhesion() const {
     return std::nullopt;
   }
   const std::string adhesion = s_.describe("adhesion", *o_.adhesion);
-  AdhesionLawType type{};
-  try {
-    type = solvers::parse_adhesion_law_type(*o_.adhesion);
-  } catch (const InputError& error) {
-    throw InputError(fmt::format("{}: {}", name("adhesion"), error.what()));
-  }
+  const AdhesionLawType type =
+      in_context(name("adhesion"), [&] { return solvers::parse_adhesion_law_type(*o_.adhesion); });
   if (o_.solver) {
     throw InputError(fmt::format("{} cannot be combined with {}: adhesion has its own solver (adhesive-pcg)",
                                  s_.describe("solver", *o_.solver), adhesion));
@@ -227,11 +223,7 @@ solvers::SolverOptions Rules::solver() const {
     solver.validate();
   });
   if (o_.fft_planning) {
-    try {
-      solver.fft_planning = parse_fft_planning(*o_.fft_planning);
-    } catch (const InputError& error) {
-      throw InputError(fmt::format("{}: {}", name("fft_planning"), error.what()));
-    }
+    solver.fft_planning = in_context(name("fft_planning"), [&] { return parse_fft_planning(*o_.fft_planning); });
   }
   return solver;
 }
@@ -317,11 +309,7 @@ void Problem::check_grid(const Grid& grid, const OptionSpelling& spelling) const
       require_in_range(given + which(k), values[k], kMinLength, kMaxLength, "m");
     }
     // Hardness cap: no load above H times the domain area.
-    try {
-      solver.interface_law.check_load(grid, Loading{loading.mode, values[k]});
-    } catch (const InputError& error) {
-      throw InputError(fmt::format("{}{}: {}", given, which(k), error.what()));
-    }
+    in_context(given + which(k), [&] { solver.interface_law.check_load(grid, Loading{loading.mode, values[k]}); });
   }
   if (friction) {
     try {

@@ -19,24 +19,13 @@ namespace halfspace {
 namespace {
 
 using Flags = testing::FlagSpelling;  // a program's spelling ("--name value")
+using testing::refusal;
 
 ProblemOptions sphere_problem() {
   ProblemOptions options;
   options.e_star = 1e9;
   options.force = std::vector<double>{0.1};
   return options;
-}
-
-// The message of the InputError `make` throws; empty (and a failure) if none.
-template <class Make>
-std::string refusal(Make make) {
-  try {
-    make();
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  ADD_FAILURE() << "accepted";
-  return {};
 }
 
 bool starts_with(const std::string& text, const std::string& start) {

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "halfspace/elastic_pair.hpp"
+#include "halfspace/error.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/layered_material.hpp"
 #include "halfspace/solvers/friction_options.hpp"
@@ -41,6 +42,20 @@ class OptionSpelling {
     return std::string(option) + "=" + std::string(value);
   }
 };
+
+// Runs `function`; an InputError (not a FileError) it throws is thrown again
+// with `context` in front: the option it came from as a front end spells
+// it ("--window", "boundary"), with its value or not.
+template <class Function>
+auto in_context(const std::string& context, Function&& function) {
+  try {
+    return function();
+  } catch (const FileError&) {
+    throw;
+  } catch (const InputError& error) {
+    throw InputError(context + ": " + error.what());
+  }
+}
 
 // The elastic body as a front end gives it, in a contact problem and in a
 // lubricated film alike: e_star; or E1, nu1, E2 (inf: a rigid body 2), nu2;

@@ -297,11 +297,7 @@ nb::object lubricate(const nb::object& heights_object, double dx, double dy, con
   // The elastic films' FFT plans take the threads in force (process-wide; a
   // solve(threads=) before may have changed them): the program's unless
   // threads= says otherwise, so that the rounding is the program's too.
-  try {
-    set_threads(threads.value_or(default_threads()));
-  } catch (const InputError& error) {
-    throw InputError(fmt::format("threads={}: {}", threads.value_or(0), error.what()));
-  }
+  in_context(fmt::format("threads={}", threads.value_or(0)), [&] { set_threads(threads.value_or(default_threads())); });
   if (problem.kind == FilmKind::mixed) return solve_mixed(grid, z, problem);
   return solve_elastic(grid, z, problem);
 }

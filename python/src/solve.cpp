@@ -84,12 +84,7 @@ ArraySurface surface_from(const nb::object& heights_object, double dx, double dy
   if (heights.ndim() != 1 && heights.ndim() != 2) {
     throw InputError(fmt::format("the surface must be a 1D or 2D array, got {} dimensions", heights.ndim()));
   }
-  Boundary boundary;
-  try {
-    boundary = parse_boundary(boundary_name);
-  } catch (const InputError& error) {
-    throw InputError(fmt::format("boundary: {}", error.what()));
-  }
+  const Boundary boundary = in_context("boundary", [&] { return parse_boundary(boundary_name); });
   Grid grid = heights.ndim() == 1 ? Grid::line(heights.shape(0), dx, boundary)
                                   : Grid::plane(heights.shape(1), heights.shape(0), dx, dy, boundary);
   for (std::size_t k = 0; k < heights.size(); ++k) {

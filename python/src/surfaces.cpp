@@ -1,7 +1,6 @@
 // Height maps in and out of Python: the readers with the preparation steps,
 // the built-in and self-affine generators, and the surface statistics.
 #include <fmt/format.h>
-#include <fmt/ranges.h>
 #include <nanobind/stl/filesystem.h>
 #include <nanobind/stl/optional.h>
 #include <nanobind/stl/pair.h>
@@ -12,16 +11,17 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <variant>
 
 #include "bindings.hpp"
 #include "halfspace/error.hpp"
 #include "halfspace/geometry/builtin_surface.hpp"
 #include "halfspace/io/hdf5_output.hpp"
 #include "halfspace/io/height_map_reader.hpp"
-#include "halfspace/surface/padding.hpp"
 #include "halfspace/surface/preparation.hpp"
 #include "halfspace/surface/self_affine.hpp"
 #include "halfspace/surface/statistics.hpp"
+#include "halfspace/surface/surface_options.hpp"
 
 namespace halfspace::python {
 namespace {
@@ -47,34 +47,11 @@ nb::dict map_dict(HeightMap&& map) {
   return out;
 }
 
+// The preparation's keywords, checked by the library (surface_options.hpp).
 surface::PreparationOptions preparation_options(const std::optional<std::string>& window, const std::string& invalid,
                                                 const std::string& detrend, double pad) {
-  surface::PreparationOptions prepare;
-  const auto named = [](std::string_view keyword, auto&& parse) {
-    try {
-      return parse();
-    } catch (const FileError&) {
-      throw;
-    } catch (const InputError& error) {
-      throw InputError(fmt::format("{}: {}", keyword, error.what()));
-    }
-  };
-  if (window) prepare.window = named("window", [&] { return surface::parse_window(*window); });
-  prepare.invalid = named("invalid", [&] { return surface::parse_invalid_points(invalid); });
-  prepare.detrend = named("detrend", [&] { return surface::parse_detrend(detrend); });
-  if (!(pad >= surface::kMinPadFactor && pad <= surface::kMaxPadFactor)) {
-    throw InputError(fmt::format("pad={} is invalid: the factor must be in [{}, {}]", pad, surface::kMinPadFactor,
-                                 surface::kMaxPadFactor));
-  }
-  prepare.pad_factor = pad;
-  return prepare;
-}
-
-double checked_spacing(const char* keyword, double value) {
-  if (!(std::isfinite(value) && value > 0.0)) {
-    throw InputError(fmt::format("{}={} is invalid: the spacing must be positive and finite (m)", keyword, value));
-  }
-  return value;
+  return checked_preparation({.window = window, .invalid = invalid, .detrend = detrend, .pad = pad}, Boundary::free,
+                             KeywordSpelling());
 }
 
 void prepare(HeightMap& map, const surface::PreparationOptions& options) {
@@ -90,39 +67,27 @@ nb::dict read_map(const std::filesystem::path& path, const std::string& format, 
                   const std::optional<std::string>& unit, const std::optional<std::string>& window,
                   const std::string& invalid, const std::string& detrend, std::optional<double> dx,
                   std::optional<double> dy, double pad) {
-  io::ReadOptions read;
-  try {
-    read.format = io::parse_height_map_format(format);
-  } catch (const InputError& error) {
-    throw InputError(fmt::format("format: {}", error.what()));
-  }
-  read.dataset = dataset;
-  if (unit) read.unit = io::require_length_unit(*unit, "unit");
-  const surface::PreparationOptions options = preparation_options(window, invalid, detrend, pad);
+  const KeywordSpelling keywords;
+  const SurfaceOptions given{.height_map = path.string(),
+                             .dataset = dataset,
+                             .dx = dx,
+                             .dy = dy,
+                             .format = format,
+                             .unit = unit,
+                             .window = window,
+                             .invalid = invalid,
+                             .detrend = detrend,
+                             .pad = pad};
+  const HeightMapFile file = std::get<HeightMapFile>(make_surface_choice(given, Boundary::free, keywords));
   HeightMap map;
   {
     nb::gil_scoped_release release;
-    map = io::read_height_map(path, read);
+    map = io::read_height_map(path, file.read);
   }
-  if (dx) map.dx = checked_spacing("dx", *dx);
-  if (map.dimension == 1) {
-    if (dy) throw InputError(fmt::format("dy does not apply to the 1D profile in {}", path.string()));
-    if (!(map.dx > 0.0)) {
-      throw FileError(fmt::format("height map {} does not state its spacing dx: pass dx= (m)", path.string()));
-    }
-  } else {
-    if (dy) map.dy = checked_spacing("dy", *dy);
-    std::vector<std::string> missing;
-    if (!(map.dx > 0.0)) missing.emplace_back("dx");
-    if (!(map.dy > 0.0)) missing.emplace_back("dy");
-    if (!missing.empty()) {
-      throw FileError(fmt::format("height map {} does not state its spacing {}: pass {}= (m)", path.string(),
-                                  fmt::join(missing, " and "), fmt::join(missing, "= and ")));
-    }
-  }
+  set_spacing(map, file, keywords);
   {
     nb::gil_scoped_release release;
-    prepare(map, options);
+    prepare(map, file.prepare);
   }
   return map_dict(std::move(map));
 }

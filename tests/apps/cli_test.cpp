@@ -444,7 +444,7 @@ TEST(CliTest, GridOnCommandLineConflictsWithHeightMapOfConfigFile) {
   write_text(dir / "run.toml", "height-map = \"surface.h5\"\nE-star = 1e11\nforce = 1\n");
   const fs::path output = dir / "out.h5";
   expect_input_error(run({"solve", "--config", "run.toml", "--grid", "64x64", "--output", output.string()}, dir),
-                     "--grid cannot be used with --height-map", output);
+                     "--grid cannot be used with height-map (in run.toml)", output);
 }
 
 TEST(CliTest, ConfigPathsAreRelativeToTheConfigFile) {
