@@ -16,8 +16,9 @@
 // spread uniformly (zero on a periodic grid), keeps g_ref from vanishing where
 // the first two do: a flat punch in full contact has ptp(initial_gap) = 0 and
 // ptp(K p) -> 0 at its solution, so without it the residual stalled at O(1)
-// or became 0/0. It costs one product K 1 per solver, on its first solve; on
-// other contacts ptp(K p) is the larger term. The iteration stops when
+// or became 0/0. It costs one product K 1 per solver, on its first solve, on
+// free grids (on a periodic grid it is zero by the operator's contract, no
+// product); on other contacts ptp(K p) is the larger term. The iteration stops when
 // residual <= tolerance, checked on the final (p, K p) pair, so the returned
 // fields are mutually consistent. Under load control the force equals the
 // target to rounding at every iterate: the paper restores it by scaling the
@@ -46,6 +47,23 @@
 //    (BalancingPreconditioner, the coarse-grid correction) restarts them
 //    when it changes.
 // docs/solvers.md says what each form costs and saves.
+//
+// Chord steps. A preconditioned step that the projection clips costs a
+// third product: the image K t gives the step length tau, and the
+// correction c = P(p - tau t) - (p - tau t) its own K c. With a fixed
+// M^-1 (not in iterations of an adapting one's correction), without a cap,
+// the step is taken along the chord d = P(p - tau0 t) - p of the projected
+// path instead, tau0 estimated from the previous step of the same kind
+// (restarted or conjugate: M^-1 approximating K^-1, their lengths are of
+// order one and change slowly): p + s d is admissible for s in [0, 1], its
+// energy is minimised there exactly from K d, and u += s K d: one product,
+// never a correction. Without clipping d = -tau0 t and s tau0 is tau, the
+// same step; the minimiser beyond the first cell to reach zero is taken
+// and projected with its correction, as above. On the growing-domain
+// surfaces it saved 15-25 % of the FFT pairs per solve at 256^2-1024^2
+// (docs/development-log.md, "2026-11-30: chord steps"). The chord is that
+// of the projection arc of gradient projection methods (Bertsekas 1999,
+// Nonlinear Programming, ch. 2), here along a conjugate direction.
 //
 // Mixed precision. Given an `inner` operator (K in single precision,
 // single_precision_fft_operator.hpp), the step's images K t and the
@@ -106,6 +124,12 @@ struct PolonskyKeerOptions {
   // runs on the calling thread between iterations, so it may print; its
   // IterationDecision::stop ends the solve with status `stopped`.
   ProgressCallback progress;
+  // The solve is only the start of a finer one (pk-multilevel's coarse
+  // levels): it ends on the residual of the updated displacement, without
+  // the exact product that confirms it and without the independent check
+  // of the conditions (the finer solve, whose result is reported, does
+  // both). Saves two products per coarse level.
+  bool start_only = false;
 
   // Throws InputError naming the option unless 0 < tolerance < 1 and
   // max_iterations >= 1.
