@@ -48,6 +48,8 @@ constexpr double kEntriesKept = 0.01;
 // kind (advance_chord). 2 took the fewest FFT pairs of 1-100 on rough
 // surfaces, 256^2-1024^2 (docs/development-log.md, 2026-11-30).
 constexpr double kChordGrowth = 2.0;
+// A chord that does not descend shrinks its estimate by this factor.
+constexpr double kChordShrink = 0.25;
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
@@ -460,6 +462,11 @@ class Iteration {
     // by clipping wanted more).
     if (chord_length_ > 0.0) {
       step_estimate_[chord_kind_] = std::abs(std::min(wanted, std::max(chord_length_, kChordGrowth)) * tau0);
+    } else {
+      // No descent along the chord: the projection clipped too much of
+      // the step (tau0 far too long). A shorter chord descends (as tau0
+      // falls, d tends to -tau0 t, along which g.d < 0).
+      step_estimate_[chord_kind_] *= kChordShrink;
     }
     return true;
   }
