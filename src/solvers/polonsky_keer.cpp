@@ -157,7 +157,11 @@ class Iteration {
         bounds_(problem.bounds),
         uniform_response_range_(uniform_response_range),
         approach_(problem.approach) {
-    if (uniform_response_range_ < 0.0) {
+    if (uniform_response_range_ < 0.0 && op.grid().periodic()) {
+      // A periodic operator is translation invariant with a mean-free
+      // response (influence_operator.hpp): K 1 = 0, so no product.
+      uniform_response_range_ = 0.0;
+    } else if (uniform_response_range_ < 0.0) {
       // ptp(K 1) for the gap scale (see the header), once per solver; the
       // work vectors are free until the iteration starts.
       for_each_index(n_, [&](std::size_t i) { direction_[i] = 1; });
@@ -210,7 +214,7 @@ class Iteration {
       exact_displacement();
     }
     measure();
-    if (residual_ <= options_.tolerance && updates_since_exact_ > 0) {
+    if (residual_ <= options_.tolerance && updates_since_exact_ > 0 && !options_.start_only) {
       // Convergence is judged on the exact product only.
       exact_displacement();
       measure();
@@ -918,7 +922,7 @@ SolveResult PolonskyKeer::run(std::span<const double> initial_gap, const Loading
   single_direction_.resize(0);
   single_image_.resize(0);
   result.gap.resize(n);
-  if (result.converged()) {
+  if (result.converged() && !options_.start_only) {
     // "Converged" must mean the conditions hold, checked apart from the
     // residual (contact_conditions.hpp): a false one becomes a breakdown.
     const ContactConditionReport check =

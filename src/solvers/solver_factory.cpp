@@ -112,7 +112,10 @@ std::unique_ptr<ContactSolver> make_polonsky_keer(const Grid& grid, const HalfSp
   // (see stiff_coating_on_free_grid).
   if (stiff_coating_on_free_grid(grid, half_space)) projected = false;
   PolonskyKeerOptions pk = polonsky_keer_options(options, tolerance, projected);
-  if (!fine) pk.progress = nullptr;  // progress reports the fine solve only
+  if (!fine) {
+    pk.progress = nullptr;  // progress reports the fine solve only
+    pk.start_only = true;   // a coarse level only starts the finer one
+  }
   // The preconditioner not on 1D grids: there the preconditioned steps clip
   // hundreds of cells each, and the iteration cycles on measured profiles
   // under moderate loads, while the projected form alone converges at every

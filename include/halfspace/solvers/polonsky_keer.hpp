@@ -16,8 +16,9 @@
 // spread uniformly (zero on a periodic grid), keeps g_ref from vanishing where
 // the first two do: a flat punch in full contact has ptp(initial_gap) = 0 and
 // ptp(K p) -> 0 at its solution, so without it the residual stalled at O(1)
-// or became 0/0. It costs one product K 1 per solver, on its first solve; on
-// other contacts ptp(K p) is the larger term. The iteration stops when
+// or became 0/0. It costs one product K 1 per solver, on its first solve, on
+// free grids (on a periodic grid it is zero by the operator's contract, no
+// product); on other contacts ptp(K p) is the larger term. The iteration stops when
 // residual <= tolerance, checked on the final (p, K p) pair, so the returned
 // fields are mutually consistent. Under load control the force equals the
 // target to rounding at every iterate: the paper restores it by scaling the
@@ -106,6 +107,12 @@ struct PolonskyKeerOptions {
   // runs on the calling thread between iterations, so it may print; its
   // IterationDecision::stop ends the solve with status `stopped`.
   ProgressCallback progress;
+  // The solve is only the start of a finer one (pk-multilevel's coarse
+  // levels): it ends on the residual of the updated displacement, without
+  // the exact product that confirms it and without the independent check
+  // of the conditions (the finer solve, whose result is reported, does
+  // both). Saves two products per coarse level.
+  bool start_only = false;
 
   // Throws InputError naming the option unless 0 < tolerance < 1 and
   // max_iterations >= 1.
