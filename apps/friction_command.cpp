@@ -64,7 +64,9 @@ void print_friction_summary(std::FILE* out, const SolveSetup& setup, const Frict
   int iterations = 0;
   for (const TangentialResult& step : steps) {
     dissipated += step.dissipated_energy;
-    iterations += step.iterations;
+    // A coupled step's work is every alternation's tangential solve, not
+    // only the last one's.
+    iterations += step.coupled ? step.coupling_tangential_iterations : step.iterations;
   }
   fmt::print(out, "tangential steps:    {}{} ({} iterations in all)\n", steps.size(),
              setup.friction->sliding_direction ? " (gross sliding)" : "", iterations);

@@ -42,6 +42,7 @@ TangentialResult repeated(const TangentialResult& previous) {
   result.message.clear();
   result.dissipated_energy = 0.0;
   result.iterations = 0;
+  result.coupling_tangential_iterations = 0;
   result.residual = 0.0;
   result.residual_history.clear();
   result.operator_applications = 0;
@@ -54,6 +55,7 @@ TangentialResult repeated(const TangentialResult& previous) {
 TangentialResult recorded(const CoupledStepResult& step) {
   TangentialResult t = step.tangential;
   t.coupling_alternations = step.alternations;
+  t.coupling_tangential_iterations = step.tangential_iterations;
   t.coupling_residual = step.coupling_residual;
   t.coupled = true;
   if (!step.converged()) {

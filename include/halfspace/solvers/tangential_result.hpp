@@ -65,6 +65,7 @@ struct TangentialResult {
   // tangential solves alternated, and the last pass's change (zero both
   // when uncoupled; iterations and products above are the last pass's).
   int coupling_alternations = 0;
+  int coupling_tangential_iterations = 0;  // the tangential iterations of every pass
   double coupling_residual = 0.0;
   double dundurs_beta = 0.0;  // of the pair the step was solved for
   bool coupled = false;       // solved coupled with the normal problem (beta != 0 and coupling on)
