@@ -7,7 +7,7 @@
 // objects are made once per grid; each benchmark iteration times the solves
 // alone. The counters give iterations per step, the times, their ratio and
 // the process's peak memory per grid point. bench/tangential_bench.sh runs
-// it over grid sizes and prints the table of docs/performance.md.
+// it over grid sizes and prints the table of docs/development-log.md.
 // One thread (the shared machine's other loads make two spin at barriers).
 // HALFSPACE_BENCH_LARGE=1 adds 2048^2 and 4096^2.
 #include <benchmark/benchmark.h>

@@ -63,7 +63,7 @@ stress::VonMisesMaximum write_stress_group(const Hdf5Node& root, stress::Subsurf
   group.write_string_attribute("sign_convention", "tension positive (compression negative); z positive downwards");
   group.write_dataset_rows("depths", {depths.size()}, 0, lead ? depths : std::span<const double>(), "m");
   // Without deflate: the fields' float64 mantissas barely compress (23% at
-  // 512^2) at 15 times the time of the plain write (docs/performance.md).
+  // 512^2) at 15 times the time of the plain write (docs/development-log.md).
   const std::vector<std::size_t> shape = volume_shape(grid, depths.size());
   std::vector<Hdf5Node> fields;
   fields.reserve(kStoredFields);

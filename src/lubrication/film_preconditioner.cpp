@@ -37,7 +37,7 @@ void CsrMatrix::append_row(std::vector<std::pair<int, double>>& entries) {
 namespace {
 
 // SparseLU's fill relative to the matrix's entries, a measured allowance
-// (64^2 to 256^2 point contacts with COLAMD; docs/performance.md).
+// (64^2 to 256^2 point contacts with COLAMD; docs/development-log.md).
 constexpr double kFillAllowance = 12.0;
 
 // Eigen's supernodal LU with the COLAMD ordering; the pattern is the same

@@ -89,7 +89,7 @@ TEST(FilmGridSequenceTest, SequencedFilmEqualsColdFilm) {
 }
 
 // At 25 cells per Hertz radius the cold start takes 16 Newton steps
-// (docs/performance.md); the start interpolated from 64^2 leaves the fine
+// (docs/development-log.md); the start interpolated from 64^2 leaves the fine
 // grid the discretisation difference (measured 10 steps, 2 coarse levels).
 TEST(FilmGridSequenceTest, CoarseStartSavesFineNewtonSteps) {
   const ElasticFilm cold = solve_point(128, false);
