@@ -422,7 +422,7 @@ class Iteration {
     const double z_mean = z_mean_;
     Work* image = image_;
     const auto formed = with_z([&](auto z) {
-      return linalg::sums_and_range<3>(comm_, n_, [&](std::size_t i) {
+      return linalg::sums_and_range<3>(comm_, n_, [&](std::size_t i) HALFSPACE_INLINE_TERM {
         const double g = gap(i);
         const double t = set_.contains(i, g) ? (z(i) - z_mean) + beta * (direction_[i] - t_mean) : 0.0;
         direction_[i] = static_cast<Work>(t);
@@ -470,7 +470,7 @@ class Iteration {
     chord_clipped_ = chord_sums_.clipped;
     kernel_product(image, image);  // K d in place
     ++result_.operator_applications;
-    const auto [image_sum, d_sum, d_image] = sums<3>(comm_, n_, [&](std::size_t i) {
+    const auto [image_sum, d_sum, d_image] = sums<3>(comm_, n_, [&](std::size_t i) HALFSPACE_INLINE_TERM {
       const double di = chord(i);
       const double in_set = set_.contains(i, gap(i)) ? 1.0 : 0.0;
       return std::array<double, 3>{in_set * image[i], in_set * di, di * image[i]};
@@ -519,17 +519,18 @@ class Iteration {
     // adapting M^-1 judges by them whether the set has settled).
     const double step = s * tau_;
     const bool overshoot = chord_overshoot_;
-    const auto [new_pressure_sum, entered, corrected, clipped] = sums<4>(comm_, n_, [&](std::size_t i) {
-      const double before = pressure_[i];
-      const double moved = before + s * chord(i);
-      const double pi = bounds_.project(moved);
-      const double along = before - step * direction_[i];
-      pressure_[i] = pi;
-      displacement_[i] += s * image[i];
-      if (overshoot) image[i] = static_cast<Work>(pi - moved);
-      return std::array<double, 4>{pi, before == 0.0 && pi > 0.0 ? 1.0 : 0.0, pi != moved ? 1.0 : 0.0,
-                                   bounds_.project(along) != along ? 1.0 : 0.0};
-    });
+    const auto [new_pressure_sum, entered, corrected, clipped] =
+        sums<4>(comm_, n_, [&](std::size_t i) HALFSPACE_INLINE_TERM {
+          const double before = pressure_[i];
+          const double moved = before + s * chord(i);
+          const double pi = bounds_.project(moved);
+          const double along = before - step * direction_[i];
+          pressure_[i] = pi;
+          displacement_[i] += s * image[i];
+          if (overshoot) image[i] = static_cast<Work>(pi - moved);
+          return std::array<double, 4>{pi, before == 0.0 && pi > 0.0 ? 1.0 : 0.0, pi != moved ? 1.0 : 0.0,
+                                       bounds_.project(along) != along ? 1.0 : 0.0};
+        });
     conjugate_ = entered <= kEntriesKept * contact_cells_ && s > 0.0;
     if (chord_overshoot_) {
       finish_step(corrected, corrected > 0.0);
@@ -867,7 +868,7 @@ class Iteration {
     const bool capped = bounds_.capped();
     const double upper = bounds_.upper;
     const auto [weighted_gap, overlap, pressure_sum, gap_norm, gap_along, released, direction_sum] =
-        sums<7>(comm_, n_, [&](std::size_t i) {
+        sums<7>(comm_, n_, [&](std::size_t i) HALFSPACE_INLINE_TERM {
           const double g = problem_.initial_gap[i] + displacement_[i] - approach;
           const double in_set = set_.contains(i, g) ? 1.0 : 0.0;  // a mask, not a branch
           if (store_gap) preconditioned_gap_[i] = static_cast<Work>(in_set * g);
