@@ -44,13 +44,6 @@ constexpr double kRefinementFactor = 1e-2;
 constexpr double kPowellRestart = 0.2;
 constexpr double kEntriesKept = 0.01;
 
-// A chord step's estimate grows at most by this factor per step of its
-// kind (advance_chord). 2 took the fewest FFT pairs of 1-100 on rough
-// surfaces, 256^2-1024^2 (docs/development-log.md, 2026-11-30).
-constexpr double kChordGrowth = 2.0;
-// A chord that does not descend shrinks its estimate by this factor.
-constexpr double kChordShrink = 0.25;
-
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // A stall of load control (Iteration::evaluate): the residual has not
@@ -163,8 +156,7 @@ class Iteration {
              problem.bounds.upper},
         bounds_(problem.bounds),
         uniform_response_range_(uniform_response_range),
-        approach_(problem.approach),
-        chord_(projected_ && preconditioner != nullptr) {
+        approach_(problem.approach) {
     if (uniform_response_range_ < 0.0 && op.grid().periodic()) {
       // A periodic operator is translation invariant with a mean-free
       // response (influence_operator.hpp): K 1 = 0, so no product.
@@ -316,17 +308,12 @@ class Iteration {
     // iterations it saves.
     const double t_mean =
         problem_.load_controlled && beta != 0.0 && search_cells_ > 0.0 ? direction_sum_ / search_cells_ : 0.0;
-    chord_now_ = chord_step();
-    if (chord_now_) {
-      form_direction_and_chord(beta, t_mean);
-    } else {
-      with_z([&](auto z) {
-        for_each_index(n_, [&](std::size_t i) {
-          direction_[i] =
-              static_cast<Work>(set_.contains(i, gap(i)) ? (z(i) - z_mean) + beta * (direction_[i] - t_mean) : 0.0);
-        });
+    with_z([&](auto z) {
+      for_each_index(n_, [&](std::size_t i) {
+        direction_[i] =
+            static_cast<Work>(set_.contains(i, gap(i)) ? (z(i) - z_mean) + beta * (direction_[i] - t_mean) : 0.0);
       });
-    }
+    });
     previous_norm_ = search_norm_;
   }
 
@@ -339,7 +326,6 @@ class Iteration {
   // the set, as conjugate() keeps them under load control (the curvature
   // t.Kt - mean(Kt) sum(t) of a direction with a mean can vanish).
   bool step_length(int iteration) {
-    if (chord_now_) return chord_length(iteration);
     kernel_product(direction_, image_);
     ++result_.operator_applications;
     const auto [image_sum, t_sum, gt, t_image] = sums<4>(comm_, n_, [&](std::size_t i) {
@@ -367,10 +353,6 @@ class Iteration {
   // addition of K c and the scaling are left to the next evaluation's first
   // pass (Deferred).
   void advance() {
-    if (chord_now_) {
-      advance_chord();
-      return;
-    }
     if (bounds_.capped()) {
       advance_capped();
       return;
@@ -401,144 +383,6 @@ class Iteration {
     conjugate_ = entered <= entries_kept && tau > 0.0;
     finish_step(corrected, corrected > 0.0 || shift != 0.0);
     if (problem_.load_controlled && !shifted) {
-      deferred_.scale = problem_.target_force / (problem_.cell_area * new_pressure_sum);
-    }
-  }
-
-  // Step 3 with the chord of steps 4-9 (see the header) in the same pass:
-  // t = z + beta t, and d = P(p - tau0 t) - p written over z (the work
-  // array holds z, then d, then K d), with the sums the chord's step
-  // length needs. tau0 is the estimate for this kind of step, of the sign
-  // of g.t so that the chord descends; g.t is known before the pass from
-  // the sums of steps 1-2 (the same set and gap): G + beta (g.t_old -
-  // mean(t_old) sum g). Should rounding make the pass's own g.t of the other
-  // sign, the chord is formed again in a pass of its own.
-  void form_direction_and_chord(double beta, double t_mean) {
-    chord_kind_ = conjugate_ ? 1 : 0;
-    const double estimate = step_estimate_[chord_kind_];
-    const double predicted = search_norm_ + beta * (gap_along_direction_ - t_mean * search_gap_sum_);
-    tau_ = predicted >= 0.0 ? estimate : -estimate;
-    const double tau0 = tau_;
-    const double z_mean = z_mean_;
-    Work* image = image_;
-    const auto formed = with_z([&](auto z) {
-      return linalg::sums_and_range<3>(comm_, n_, [&](std::size_t i) HALFSPACE_INLINE_TERM {
-        const double g = gap(i);
-        const double t = set_.contains(i, g) ? (z(i) - z_mean) + beta * (direction_[i] - t_mean) : 0.0;
-        direction_[i] = static_cast<Work>(t);
-        const double ti = direction_[i];  // as stored
-        const double moved = pressure_[i] - tau0 * ti;
-        const double di = bounds_.project(moved) - pressure_[i];
-        image[i] = static_cast<Work>(di);
-        const double limit = di < 0.0 ? pressure_[i] / -di : kInfinity;
-        return std::pair{std::array<double, 3>{g * ti, g * di, moved < 0.0 ? 1.0 : 0.0}, limit};
-      });
-    });
-    chord_sums_ = {formed.sums[1], formed.sums[2], formed.min};
-    if ((formed.sums[0] >= 0.0) != (tau0 >= 0.0)) {
-      tau_ = -tau0;
-      form_chord();
-    }
-  }
-
-  // The chord d = P(p - tau_ t) - p of the direction t in a pass of its own
-  // (see form_direction_and_chord).
-  void form_chord() {
-    const double tau0 = tau_;
-    Work* image = image_;
-    const auto formed = linalg::sums_and_range<2>(comm_, n_, [&](std::size_t i) {
-      const double di = chord(i);
-      image[i] = static_cast<Work>(di);
-      const double limit = di < 0.0 ? pressure_[i] / -di : kInfinity;
-      const double clip = pressure_[i] - tau0 * direction_[i] < 0.0 ? 1.0 : 0.0;
-      return std::pair{std::array<double, 2>{gap(i) * di, clip}, limit};
-    });
-    chord_sums_ = {formed.sums[0], formed.sums[1], formed.min};
-  }
-
-  // Steps 4-9 as chord steps (preconditioned, uncapped; see the header):
-  // the chord d = P(p - tau0 t) - p of the projected path at the estimated
-  // step tau0, and p + s d with s minimising the energy on the segment
-  // (admissible for s in [0, 1], and beyond up to the first cell to reach
-  // zero when none was clipped). Its one product is K d, where
-  // Polonsky-Keer's step needs K t and, when the projection clips, K c.
-  // Without clipping d = -tau0 t, and s tau0 is Polonsky-Keer's tau.
-  bool chord_length(int iteration) {
-    const double tau0 = tau_;
-    Work* image = image_;
-    const double gd = chord_sums_.gd;
-    chord_clipped_ = chord_sums_.clipped;
-    kernel_product(image, image);  // K d in place
-    ++result_.operator_applications;
-    const auto [image_sum, d_sum, d_image] = sums<3>(comm_, n_, [&](std::size_t i) HALFSPACE_INLINE_TERM {
-      const double di = chord(i);
-      const double in_set = set_.contains(i, gap(i)) ? 1.0 : 0.0;
-      return std::array<double, 3>{in_set * image[i], in_set * di, di * image[i]};
-    });
-    const double image_mean = problem_.load_controlled && search_cells_ > 0.0 ? image_sum / search_cells_ : 0.0;
-    const double curvature = d_image - image_mean * d_sum;
-    if (!(curvature > 0.0)) {
-      result_.status = SolveStatus::breakdown;
-      result_.message = fmt::format("non-positive curvature d.Kd = {:.3e} at iteration {}", curvature, iteration);
-      return false;
-    }
-    const double wanted = -gd / curvature;
-    // Where no cell clipped at tau0 (d = -tau0 t) but the minimiser lies
-    // beyond the first cell to reach zero, the step goes there and
-    // projects: Polonsky-Keer's step, with its correction K c.
-    chord_overshoot_ = chord_clipped_ == 0.0 && std::isfinite(wanted) && wanted > chord_sums_.limit;
-    chord_length_ =
-        std::isfinite(wanted) && wanted > 0.0 ? (chord_overshoot_ ? wanted : std::min(wanted, chord_sums_.limit)) : 0.0;
-    // The next estimate for this kind of step (restarted or conjugate: their
-    // lengths differ by several times, and one estimate for both made the
-    // chords alternate between too short and too long): the step the chord
-    // wanted, at most kChordGrowth times this one (a chord cut at its end
-    // by clipping wanted more).
-    if (chord_length_ > 0.0) {
-      step_estimate_[chord_kind_] = std::abs(std::min(wanted, std::max(chord_length_, kChordGrowth)) * tau0);
-    } else {
-      // No descent along the chord: the projection clipped too much of
-      // the step (tau0 far too long). A shorter chord descends (as tau0
-      // falls, d tends to -tau0 t, along which g.d < 0).
-      step_estimate_[chord_kind_] *= kChordShrink;
-    }
-    return true;
-  }
-
-  // The chord of the current step (chord_length) at cell i, recomputed from
-  // p and t where read: t is kept for the next conjugate direction and the
-  // work array holds K d.
-  double chord(std::size_t i) const { return bounds_.project(pressure_[i] - tau_ * direction_[i]) - pressure_[i]; }
-
-  void advance_chord() {
-    const double s = chord_length_;
-    Work* image = image_;
-    // The work array: K d, read, then the correction c of an overshooting
-    // step (K d is not needed after this pass).
-    // The cells clipped are counted at the step taken along t, s tau0 (an
-    // adapting M^-1 judges by them whether the set has settled).
-    const double step = s * tau_;
-    const bool overshoot = chord_overshoot_;
-    const auto [new_pressure_sum, entered, corrected, clipped] =
-        sums<4>(comm_, n_, [&](std::size_t i) HALFSPACE_INLINE_TERM {
-          const double before = pressure_[i];
-          const double moved = before + s * chord(i);
-          const double pi = bounds_.project(moved);
-          const double along = before - step * direction_[i];
-          pressure_[i] = pi;
-          displacement_[i] += s * image[i];
-          if (overshoot) image[i] = static_cast<Work>(pi - moved);
-          return std::array<double, 4>{pi, before == 0.0 && pi > 0.0 ? 1.0 : 0.0, pi != moved ? 1.0 : 0.0,
-                                       bounds_.project(along) != along ? 1.0 : 0.0};
-        });
-    conjugate_ = entered <= kEntriesKept * contact_cells_ && s > 0.0;
-    if (chord_overshoot_) {
-      finish_step(corrected, corrected > 0.0);
-    } else {
-      if (preconditioner_) preconditioner_->observe_step({clipped, search_cells_});
-      ++updates_since_exact_;
-    }
-    if (problem_.load_controlled) {
       deferred_.scale = problem_.target_force / (problem_.cell_area * new_pressure_sum);
     }
   }
@@ -868,7 +712,7 @@ class Iteration {
     const bool capped = bounds_.capped();
     const double upper = bounds_.upper;
     const auto [weighted_gap, overlap, pressure_sum, gap_norm, gap_along, released, direction_sum] =
-        sums<7>(comm_, n_, [&](std::size_t i) HALFSPACE_INLINE_TERM {
+        sums<7>(comm_, n_, [&](std::size_t i) {
           const double g = problem_.initial_gap[i] + displacement_[i] - approach;
           const double in_set = set_.contains(i, g) ? 1.0 : 0.0;  // a mask, not a branch
           if (store_gap) preconditioned_gap_[i] = static_cast<Work>(in_set * g);
@@ -910,8 +754,7 @@ class Iteration {
   // One array of the solver's workspace in four successive roles: g on the
   // search set, made z = M^-1 g in place (steps 1-2); the image K t of the
   // direction (steps 4-5); the step's correction c (steps 6-9), made K c in
-  // place (added to u at step 1). A chord step: z, then the chord d (step
-  // 3), made K d in place.
+  // place (added to u at step 1).
   Work* preconditioned_gap_;
   Work* image_;
   Work* correction_;
@@ -943,25 +786,6 @@ class Iteration {
   bool load_by_shift_ = false;  // the load restored by load_shift, not by scaling
   bool stop_ = false;           // the progress callback asked to stop
   double tau_ = 0.0;
-  // Chord steps (advance_chord): with a preconditioner in the projected
-  // form, whose steps are of order one (M^-1 approximates K^-1), not with a
-  // cap or once the load is restored by shifting. The estimated step
-  // lengths of restarted and conjugate steps, the kind of the current one,
-  // and g.t of its direction.
-  const bool chord_;
-  double step_estimate_[2] = {1.0, 1.0};
-  int chord_kind_ = 0;
-  bool chord_now_ = false;  // this iteration's step is a chord step
-  struct ChordSums {
-    double gd = 0.0;           // g.d
-    double clipped = 0.0;      // cells clipped at tau0
-    double limit = kInfinity;  // the s at which the first cell reaches zero along d
-  };
-  ChordSums chord_sums_;
-  double chord_length_ = 0.0;     // s of the current step
-  double chord_clipped_ = 0.0;    // cells its projection clipped
-  bool chord_overshoot_ = false;  // it goes past the chord's end (Polonsky-Keer's step)
-  bool chord_step() const { return chord_ && !bounds_.capped() && !load_by_shift_ && !preconditioner_->correcting(); }
 };
 
 // Steps 0 to 9 until the iteration ends, then the result's summary.

@@ -51,8 +51,6 @@ class BalancingPreconditioner final : public Preconditioner {
   // the kernel K e_0: one product, and the correction's field).
   bool adapt(const SearchSet& set, std::span<const double> residuals) override;
   void observe_step(const StepReport& step) override;
-  // The correction applies in this iteration.
-  bool correcting() const override { return active_; }
   // The correction's products and coarse work in this solve, and its record.
   void report(SolveResult& result) const override;
 

@@ -48,24 +48,6 @@
 //    when it changes.
 // docs/solvers.md says what each form costs and saves.
 //
-// Chord steps. A preconditioned step that the projection clips costs a
-// third product: the image K t gives the step length tau, and the
-// correction c = P(p - tau t) - (p - tau t) its own K c. With a fixed
-// M^-1 (not in iterations of an adapting one's correction), without a cap,
-// the step is taken along the chord d = P(p - tau0 t) - p of the projected
-// path instead, tau0 estimated from the previous step of the same kind
-// (restarted or conjugate: M^-1 approximating K^-1, their lengths are of
-// order one and change slowly): p + s d is admissible for s in [0, 1], its
-// energy is minimised there exactly from K d, and u += s K d: one product,
-// never a correction. Without clipping d = -tau0 t and s tau0 is tau, the
-// same step; the minimiser beyond the first cell to reach zero is taken
-// and projected with its correction, as above. d is formed in the pass
-// that forms t (the sign of tau0, that of g.t, is known before it), so a
-// chord step makes as many passes over the fields as the step it
-// replaces. The chord is that of the projection arc of gradient
-// projection methods (Bertsekas 1999, Nonlinear Programming, ch. 2), here
-// along a conjugate direction (docs/development-log.md, "chord steps").
-//
 // Mixed precision. Given an `inner` operator (K in single precision,
 // single_precision_fft_operator.hpp), the step's images K t and the
 // projection's corrections K c come from it; given SinglePrecisionProducts

@@ -89,12 +89,6 @@ class Preconditioner {
   virtual bool adapt(const SearchSet& /*set*/, std::span<const double> /*residuals*/) { return false; }
   // After each step of a contact solve.
   virtual void observe_step(const StepReport& /*step*/) {}
-  // Whether the applications since the last adapt() add a correction to a
-  // fixed M^-1 (block deflation's coarse correction): their steps are of
-  // another length than the plain M^-1's, so a solver that estimates step
-  // lengths from earlier steps (Polonsky-Keer's chord steps) takes exact
-  // ones in them.
-  virtual bool correcting() const { return false; }
   // A contact solve ends: adds the work M^-1 did beyond its applications
   // (which the solver counts) to `result`.
   virtual void report(SolveResult& /*result*/) const {}
