@@ -135,8 +135,8 @@ const std::array kOwnOptions{
     SolveOption{"tangential-coarse-start", &SolveOptions::tangential_coarse_start, Kind::text, kFriction,
                 "on|off|automatic",
                 "tangential step: solve it first on grids of twice, four times, ... the spacing and start from the "
-                "prolonged traction (serial solves of similar bodies on grids that halve); automatic: on grids of "
-                "fewer than 2048^2 cells [automatic]"},
+                "prolonged traction (serial solves of similar bodies on grids that halve); automatic: on wherever "
+                "it applies [automatic]"},
     SolveOption{"no-coupling", &SolveOptions::no_coupling, Kind::flag, kFriction, "",
                 "dissimilar bodies (Dundurs' beta != 0): ignore the normal-tangential coupling (the pressure of the "
                 "frictionless solve, for comparison); by default the coupled problem is solved"},

@@ -4,13 +4,15 @@
 // the products, the stick fraction. The pressure of the normal solve is
 // kept in a file (the third argument) so that a second run skips it.
 // Usage: tangential_trace N [MAX_ITERATIONS] [PRESSURE_FILE] [EVERY] [coarse|fine]
-// [active=UPDATES] [normal] [perturb=K] (coarse, fine: TangentialOptions::coarse_start on,
+// [active=UPDATES] [normal] [perturb=K] [seed=S] (coarse, fine: TangentialOptions::coarse_start on,
 // off, automatic without either;
 // active: TangentialOptions::active_set_updates, 10 if no number is given;
 // normal: the normal solve made and timed even when the pressure file
 // exists, for the step's time against it in the same run; perturb: both
 // tangential loads times 1 + K 1e-15, a rounding-level change of the input
-// whose iterations should stay near the unperturbed ones). One thread; the counts are
+// whose iterations should stay near the unperturbed ones; seed: the
+// surface's seed, 1 if not given, for another contact of the same
+// statistics, which needs its own pressure file). One thread; the counts are
 // exact, the times those of a shared machine.
 #include <fmt/format.h>
 
@@ -51,7 +53,8 @@ double cpu_seconds() {
   return static_cast<double>(std::clock()) / CLOCKS_PER_SEC;
 }
 
-Eigen::ArrayXd normal_pressure(const Grid& grid, const ElasticPair& pair, const std::string& file, bool timed) {
+Eigen::ArrayXd normal_pressure(const Grid& grid, const ElasticPair& pair, const std::string& file, bool timed,
+                               unsigned seed) {
   Eigen::ArrayXd pressure(static_cast<Eigen::Index>(grid.size()));
   if (!file.empty() && !timed) {
     std::ifstream in(file, std::ios::binary);
@@ -63,7 +66,7 @@ Eigen::ArrayXd normal_pressure(const Grid& grid, const ElasticPair& pair, const 
   spec.hurst = 0.8;
   spec.short_cutoff = kShortCutoff;
   spec.rms_slope = kRmsSlope;
-  spec.seed = 1;
+  spec.seed = seed;
   const Eigen::ArrayXd heights = surface::make_self_affine_surface(grid, spec);
   const Eigen::ArrayXd gap = solvers::initial_gap(grid, {heights.data(), grid.size()});
   const double e_star = pair.composite_modulus();
@@ -107,7 +110,7 @@ int main(int argc, char** argv) {
     if (argc < 2) {
       std::fprintf(stderr,
                    "usage: tangential_trace N [MAX_ITERATIONS] [PRESSURE_FILE] [EVERY] [coarse|fine] [active=UPDATES] "
-                   "[normal] [perturb=K]\n");
+                   "[normal] [perturb=K] [seed=S]\n");
       return 2;
     }
     const auto n = static_cast<std::size_t>(std::stoul(argv[1]));
@@ -118,6 +121,7 @@ int main(int argc, char** argv) {
     int active_set_updates = 0;
     bool timed = false;
     double scale = 1.0;
+    unsigned seed = 1;
     for (int a = 5; a < argc; ++a) {
       const std::string arg = argv[a];
       if (arg == "coarse" || arg == "fine") {
@@ -126,17 +130,19 @@ int main(int argc, char** argv) {
         timed = true;
       } else if (arg.starts_with("perturb=")) {
         scale = 1.0 + std::stod(arg.substr(8)) * 1e-15;
+      } else if (arg.starts_with("seed=")) {
+        seed = static_cast<unsigned>(std::stoul(arg.substr(5)));
       } else if (arg.starts_with("active")) {
         active_set_updates = arg.size() > 7 ? std::stoi(arg.substr(7)) : 10;
       } else {
         throw std::invalid_argument("unknown argument " + arg +
-                                    ": allowed are coarse, fine, active[=UPDATES], normal and perturb=K");
+                                    ": allowed are coarse, fine, active[=UPDATES], normal, perturb=K and seed=S");
       }
     }
     set_threads(1);
     const Grid grid = Grid::plane(n, n, kSpacing, kSpacing, Boundary::periodic);
     const ElasticPair pair = ElasticPair::similar(kSteel);
-    const Eigen::ArrayXd pressure = normal_pressure(grid, pair, file, timed);
+    const Eigen::ArrayXd pressure = normal_pressure(grid, pair, file, timed, seed);
     const double load = pressure.sum() * grid.cell_area();
     TangentialOperator op(grid, pair);
     solvers::TangentialOptions options;

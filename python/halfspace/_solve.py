@@ -198,7 +198,7 @@ def solve(surface: Union[HeightMap, np.ndarray], *, dx: Optional[float] = None, 
         tangential_coarse_start True solves each step first on grids of
         twice, four times, ... the spacing and starts from the prolonged
         traction (``--tangential-coarse-start on``; False: off; None:
-        automatic, on grids of fewer than 2048^2 cells). Dissimilar bodies: coupling
+        automatic, on wherever it applies). Dissimilar bodies: coupling
         False ignores the normal-tangential coupling (``--no-coupling``: the
         frictionless pressure; None: coupled), normal_load_steps N applies
         the normal load in N increments before the tangential steps

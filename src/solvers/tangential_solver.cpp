@@ -241,7 +241,7 @@ TangentialResult TangentialSolver::solve(std::span<const double> pressure, const
   // fields exist, so that the coarse levels do not add to the peak.
   CoarseStart coarse;
   const bool serial = comm.size() == 1 && n == grid.size();
-  const bool coarse_started = !sliding && serial && !fixed && options_.coarse_start_wanted(grid) &&
+  const bool coarse_started = !sliding && serial && !fixed && options_.coarse_start_wanted() &&
                               options_.method == TangentialMethod::conjugate_gradient && mu > 0.0 &&
                               coarse_start(pressure, loading, previous, coarse);
 
@@ -327,11 +327,12 @@ TangentialResult TangentialSolver::solve(std::span<const double> pressure, const
     int best_at = 0;
     int stalls = 0;
     int projected_left = 0;  // projected steps before conjugate gradients resume
+    const int stall_window = coarse_started ? kStalledConjugateStepsAfterCoarseStart : kStalledConjugateSteps;
     for (;; ++k) {
       it.evaluate(offset + k);
       if (it.finished(offset + k)) break;
       if (conjugate) {
-        // A stall (the gap not halved in kStalledConjugateSteps steps) hands
+        // A stall (the gap not halved in stall_window steps) hands
         // over to projected gradients, which converge whatever the sets do:
         // for kProjectedStepsAfterStall steps, which settle the sets the
         // conjugate gradients swung, after which these resume from a
@@ -342,7 +343,7 @@ TangentialResult TangentialSolver::solve(std::span<const double> pressure, const
         if (it.residual() < 0.5 * best) {
           best = it.residual();
           best_at = k;
-        } else if (k - best_at > kStalledConjugateSteps) {
+        } else if (k - best_at > stall_window) {
           conjugate = false;
           projected_left = ++stalls < kConjugateStalls ? kProjectedStepsAfterStall : -1;
           projected_gradient.begin();

@@ -106,19 +106,17 @@ TEST(FrictionOptions, RulesOfTheSolve) {
   EXPECT_EQ(refused_option([] { FrictionOptions::refuse_composite_modulus_only(); }), "pair");
 }
 
-// The coarse start's automatic rule: below 2048^2 cells, on or off forced
-// whatever the size; a value outside the enum is refused.
-TEST(FrictionOptions, CoarseStartAutomaticBelow2048Squared) {
+// The coarse start's automatic rule: on (the default), whatever the size
+// since the short stall window after it (it won at 2048^2 too); off forces
+// the fine start; a value outside the enum is refused.
+TEST(FrictionOptions, CoarseStartAutomaticIsOn) {
   solvers::TangentialOptions options;
   EXPECT_EQ(options.coarse_start, TangentialCoarseStart::automatic);
-  const Grid below = Grid::plane(2048, 1024, 1e-6, 1e-6, Boundary::periodic);
-  const Grid at = Grid::plane(2048, 2048, 1e-6, 1e-6, Boundary::periodic);
-  EXPECT_TRUE(options.coarse_start_wanted(below));
-  EXPECT_FALSE(options.coarse_start_wanted(at));
+  EXPECT_TRUE(options.coarse_start_wanted());
   options.coarse_start = TangentialCoarseStart::on;
-  EXPECT_TRUE(options.coarse_start_wanted(at));
+  EXPECT_TRUE(options.coarse_start_wanted());
   options.coarse_start = TangentialCoarseStart::off;
-  EXPECT_FALSE(options.coarse_start_wanted(below));
+  EXPECT_FALSE(options.coarse_start_wanted());
   options.coarse_start = static_cast<TangentialCoarseStart>(7);
   EXPECT_EQ(refused_option([&] { options.validate(); }), "coarse_start");
 }

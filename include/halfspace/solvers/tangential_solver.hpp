@@ -71,22 +71,14 @@ struct TangentialOptions {
   // the disc each coarse cell uses (q / mu p, so that slip directions carry
   // over and the fine start is admissible), as pk-multilevel starts the
   // normal problem. Serial even grids without a fixed displacement.
-  // automatic (the default): on grids of fewer than
-  // kCoarseStartAutomaticBelowCells cells.
+  // automatic (the default) and on: wherever it applies (on the benchmark's
+  // rough periodic contact it cut the first step's products by 19 %, 11 %,
+  // 0 % and 15 % at 256^2, 512^2, 1024^2 and 2048^2 against the fine start,
+  // with the stall rule's short window after it; docs/development-log.md,
+  // 2026-11-30, branch fric29h); off: the fine start.
   TangentialCoarseStart coarse_start = TangentialCoarseStart::automatic;
-  // The automatic rule. On the benchmark's rough periodic contact the coarse
-  // start cut the first step's CPU time by 8 %, 2 % and 22 % at 256^2,
-  // 512^2 and 1024^2 (1024^2: 46 iterations against 58), but at 2048^2 the
-  // fine step from it swung between the stick and slip sets for about 80
-  // iterations (134 against 97; docs/development-log.md, 2026-11-29,
-  // branch fric29d).
-  static constexpr std::size_t kCoarseStartAutomaticBelowCells = std::size_t{1} << 22;
-  // Whether the coarse start is wanted on `grid` (its other conditions
-  // aside).
-  bool coarse_start_wanted(const Grid& grid) const {
-    return coarse_start == TangentialCoarseStart::on ||
-           (coarse_start == TangentialCoarseStart::automatic && grid.size() < kCoarseStartAutomaticBelowCells);
-  }
+  // Whether the coarse start is wanted (its other conditions aside).
+  bool coarse_start_wanted() const { return coarse_start != TangentialCoarseStart::off; }
   // Of the coarse solves (the fine one's if tighter), in (0, 1): on the
   // benchmark's 1024^2 contact 1e-2, 1e-3, 1e-4 gave 139, 132, 154 fine
   // products' worth for the first step (docs/development-log.md).
