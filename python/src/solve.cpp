@@ -154,10 +154,7 @@ Result solve(const nb::object& heights, double dx, double dy, const std::string&
   std::span<const double> start;
   if (initial_pressure) {
     start = values(*initial_pressure);
-    if (start.size() != surface.grid.size()) {
-      throw InputError(
-          fmt::format("initial_pressure has {} values but the surface has {}", start.size(), surface.grid.size()));
-    }
+    check_field_size("initial_pressure", start.size(), surface.grid);
   }
   ProgressHook hook(std::move(progress));
   problem.solver.progress = hook.callback();

@@ -2,8 +2,6 @@
 // (fixed blocking, so the same bits for any thread count).
 #include "halfspace/surface/statistics.hpp"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -15,13 +13,6 @@
 
 namespace halfspace::surface {
 namespace {
-
-void check_size(std::string_view what, std::size_t size, const Grid& grid) {
-  if (size != grid.size()) {
-    throw InputError(
-        fmt::format("{} has {} values but the grid has {} cells ({})", what, size, grid.size(), grid.shape_string()));
-  }
-}
 
 // Signed wavenumber index of DFT bin k of an axis of n points: 0, 1, ...,
 // n/2, -(n-1)/2, ..., -1 (the Nyquist bin of an even axis counts as +n/2).
@@ -92,7 +83,7 @@ double rms_height(std::span<const double> heights) {
 }
 
 double rms_slope(const Grid& grid, std::span<const double> heights) {
-  check_size("rms_slope: the heights", heights.size(), grid);
+  check_field_size("rms_slope: the heights", heights.size(), grid);
   const double square = grid.periodic() ? spectral_slope_sq(grid, heights) : finite_difference_slope_sq(grid, heights);
   return std::sqrt(square);
 }
