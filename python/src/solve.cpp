@@ -81,12 +81,8 @@ struct ArraySurface {
 
 ArraySurface surface_from(const nb::object& heights_object, double dx, double dy, const std::string& boundary_name) {
   const auto heights = nb::cast<InputArray>(heights_object, false);
-  if (heights.ndim() != 1 && heights.ndim() != 2) {
-    throw InputError(fmt::format("the surface must be a 1D or 2D array, got {} dimensions", heights.ndim()));
-  }
   const Boundary boundary = in_context("boundary", [&] { return parse_boundary(boundary_name); });
-  Grid grid = heights.ndim() == 1 ? Grid::line(heights.shape(0), dx, boundary)
-                                  : Grid::plane(heights.shape(1), heights.shape(0), dx, dy, boundary);
+  Grid grid = array_grid(heights, dx, dy, boundary, "the surface");
   for (std::size_t k = 0; k < heights.size(); ++k) {
     if (!std::isfinite(heights.data()[k])) {
       throw InputError(fmt::format(
