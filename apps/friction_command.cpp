@@ -4,9 +4,7 @@
 
 #include <fmt/format.h>
 
-#include <array>
 #include <cstdio>
-#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -155,22 +153,14 @@ int run_frictional_solve(const SolveSetup& setup, const SolvePlace& place) {
     // Subsurface stresses (--stress-depths) under the pressure and the step's
     // shear, written while the result is (on several processes each its rows).
     // Body 1 (a coated body, or --stress-body 1) takes the traction on it, -q.
-    std::unique_ptr<stress::SubsurfaceStress> stresses;
-    std::array<std::vector<double>, 2> body1_shear;
     if (!setup.stress_depths.empty() && !result.steps.empty()) {
-      stresses = setup.coating ? std::make_unique<stress::SubsurfaceStress>(setup.grid, *setup.coating, place.layout,
-                                                                            setup.solver.fft_planning)
-                               : std::make_unique<stress::SubsurfaceStress>(setup.grid, setup.stress_body.poisson_ratio,
-                                                                            place.layout, setup.solver.fft_planning);
       const TangentialResult& step = result.steps.front();
-      const std::size_t cells = stresses->local_size();
-      const stress::SurfaceTractions on_body2{
-          {normal.pressure.data(), cells}, {step.state.shear_x.data(), cells}, {step.state.shear_y.data(), cells}};
-      const stress::SurfaceTractions tractions = stress::tractions_on(setup.stress_body.body, on_body2, body1_shear);
-      metadata.extra_groups = [&stresses, &setup, tractions](const io::Hdf5Node& root) {
-        io::write_stress_group(root, *stresses, tractions, setup.stress_depths);
+      const auto field = [](const Eigen::ArrayXd& f) {
+        return std::span<const double>(f.data(), static_cast<std::size_t>(f.size()));
       };
-      metadata.extra_groups_bytes = io::stress_group_bound(setup.grid, setup.stress_depths.size());
+      io::attach_stress_group(metadata, setup.grid, setup.coating, setup.stress_body,
+                              {field(normal.pressure), field(step.state.shear_x), field(step.state.shear_y)},
+                              setup.stress_depths, place.layout, setup.solver.fft_planning);
       activity.emplace(fmt::format("computing stresses at {} depths and writing {}", setup.stress_depths.size(),
                                    setup.output.string()));
     }

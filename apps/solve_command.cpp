@@ -6,7 +6,6 @@
 #include <fmt/ranges.h>
 
 #include <cstdio>
-#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -79,18 +78,10 @@ int run_single_solve_at(const SolveSetup& setup, const SolvePlace& place) {
   metadata.contact_statistics = place.contact_statistics(result);
   // Subsurface stresses (--stress-depths), computed depth by depth while the
   // result's /stress group is written (on several processes each its rows).
-  std::unique_ptr<stress::SubsurfaceStress> stresses;
   if (!setup.stress_depths.empty()) {
-    stresses = setup.coating ? std::make_unique<stress::SubsurfaceStress>(setup.grid, *setup.coating, place.layout,
-                                                                          setup.solver.fft_planning)
-                             : std::make_unique<stress::SubsurfaceStress>(setup.grid, setup.stress_body.poisson_ratio,
-                                                                          place.layout, setup.solver.fft_planning);
     const std::span<const double> pressure(result.pressure.data(), static_cast<std::size_t>(result.pressure.size()));
-    const stress::SurfaceTractions tractions{pressure, {}, {}, setup.stress_body.body};
-    metadata.extra_groups = [&stresses, &setup, tractions](const io::Hdf5Node& root) {
-      io::write_stress_group(root, *stresses, tractions, setup.stress_depths);
-    };
-    metadata.extra_groups_bytes = io::stress_group_bound(setup.grid, setup.stress_depths.size());
+    io::attach_stress_group(metadata, setup.grid, setup.coating, setup.stress_body, {pressure, {}, {}},
+                            setup.stress_depths, place.layout, setup.solver.fft_planning);
     activity.emplace(fmt::format("computing stresses at {} depths and writing {}", setup.stress_depths.size(),
                                  setup.output.string()));
   } else {

@@ -207,13 +207,6 @@ StressRequest stress_request_from(const SolveOptions& o, std::size_t load_steps,
   StressRequest request;
   const std::string what = o.describe("stress-depths");
   request.depths = range ? parse_depth_range(*o.stress_depths, what) : parse_depth_list(*o.stress_depths, what);
-  if (problem.coating && o.stress_nu) {
-    // Each body's own Poisson's ratio: --layer-nu and --substrate-nu.
-    throw InputError(fmt::format(
-        "{} is not used for a coated half-space: the stresses take --layer-nu in the layer and --substrate-nu "
-        "below it; drop --stress-nu",
-        o.describe("stress-nu")));
-  }
   const std::optional<stress::StressedBody> body =
       o.stress_body ? std::optional(stress::parse_stressed_body(*o.stress_body, "--stress-body")) : std::nullopt;
   const std::optional<ElasticPair> bodies =

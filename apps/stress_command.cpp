@@ -72,13 +72,6 @@ int stresses_at(StressPlace& place, const StressOptions& o, const std::vector<do
   in_context(o.depths ? fmt::format("--depths {}", *o.depths) : fmt::format("--depth-range {}", *o.depth_range),
              [&] { stress::check_depths(grid, depths); });
   const std::optional<LayeredMaterial>& coating = input.coating;
-  if (coating && o.nu) {
-    throw InputError(fmt::format(
-        "--nu {} is not used: {} is a coated half-space's result, whose stresses take its layer_nu = {} in the "
-        "layer and substrate_nu = {} below it; drop --nu",
-        *o.nu, o.result, format_number(coating->layer.poissons_ratio),
-        format_number(coating->substrate.poissons_ratio)));
-  }
   if (coating) {
     in_context(fmt::format("{} is a coated half-space's result", o.result),
                [&] { stress::require_coated_stress_grid(grid, *coating); });

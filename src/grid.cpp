@@ -82,4 +82,18 @@ std::string Grid::shape_string() const {
   return dimension_ == 1 ? fmt::format("{}", nx_) : fmt::format("{}x{}", nx_, ny_);
 }
 
+void check_field_size(std::string_view what, std::size_t size, const Grid& grid) {
+  check_field_size(what, size, grid, grid.size());
+}
+
+void check_field_size(std::string_view what, std::size_t size, const Grid& grid, std::size_t held) {
+  if (size == held) return;
+  if (held == grid.size()) {
+    throw InputError(
+        fmt::format("{} has {} values but the grid has {} cells ({})", what, size, held, grid.shape_string()));
+  }
+  throw InputError(
+      fmt::format("{} has {} values but {} cells of the {} grid are held here", what, size, held, grid.shape_string()));
+}
+
 }  // namespace halfspace

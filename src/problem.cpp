@@ -261,7 +261,7 @@ std::span<const ProblemOptionName> problem_option_names() {
 
 Problem make_problem(const ProblemOptions& options, const OptionSpelling& spelling) {
   const Rules rules(options, spelling);
-  try {
+  return detail::spelled_errors(spelling, [&] {
     std::optional<ProblemBody> body = make_body(options, spelling);
     if (!body) {
       throw InputError(fmt::format("no material given: pass {}, or {}, {}, {} and {}", rules.name("e_star"),
@@ -274,9 +274,7 @@ Problem make_problem(const ProblemOptions& options, const OptionSpelling& spelli
     problem.friction = rules.friction(problem.solver, problem.load_values.size());
     problem.threads = rules.threads();
     return problem;
-  } catch (const OptionError& error) {
-    throw spelled(error, spelling);
-  }
+  });
 }
 
 void Problem::check_grid(const Grid& grid, const OptionSpelling& spelling) const {

@@ -85,11 +85,7 @@ class BodyRules : public detail::Checks {
 }  // namespace
 
 std::optional<ProblemBody> make_body(const BodyOptions& options, const OptionSpelling& spelling) {
-  try {
-    return BodyRules(options, spelling).body();
-  } catch (const OptionError& error) {
-    throw detail::spelled(error, spelling);
-  }
+  return detail::spelled_errors(spelling, [&] { return BodyRules(options, spelling).body(); });
 }
 
 }  // namespace halfspace

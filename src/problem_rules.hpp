@@ -55,6 +55,16 @@ using Presence = std::vector<std::pair<std::string_view, bool>>;
 // One option's broken rule as the front end writes it: "--tol 2 is invalid: ...".
 InputError spelled(const OptionError& error, const OptionSpelling& spelling);
 
+// Runs `function`; an OptionError it throws is thrown again spelled.
+template <class Function>
+auto spelled_errors(const OptionSpelling& spelling, Function&& function) {
+  try {
+    return function();
+  } catch (const OptionError& error) {
+    throw spelled(error, spelling);
+  }
+}
+
 // The checks of single options, written with the front end's spelling; each
 // throws OptionError naming the option, its value and its allowed range.
 class Checks {

@@ -56,4 +56,12 @@ class Grid {
   Boundary boundary_;
 };
 
+// Throws InputError unless the field `what` ("initial gap", "write_result:
+// field 'gap'") holds one value per cell of `grid`, or with `held`, one per
+// cell this process holds of it (its slab of rows; all of them on one
+// process). The message names the field, its count and the count expected,
+// with "here" when that is a slab's.
+void check_field_size(std::string_view what, std::size_t size, const Grid& grid);
+void check_field_size(std::string_view what, std::size_t size, const Grid& grid, std::size_t held);
+
 }  // namespace halfspace

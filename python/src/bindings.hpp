@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "halfspace/error.hpp"
+#include "halfspace/grid.hpp"
 #include "halfspace/problem.hpp"
 
 namespace halfspace::python {
@@ -32,6 +33,20 @@ using OutputArray = nb::ndarray<nb::numpy, double>;
 
 inline std::span<const double> values(const InputArray& array) {
   return {array.data(), array.size()};
+}
+
+// Refuses `heights` unless a 1D (n) or 2D (ny, nx) array; `what` names it.
+inline void check_array_dimensions(const InputArray& heights, std::string_view what) {
+  if (heights.ndim() != 1 && heights.ndim() != 2) {
+    throw InputError(fmt::format("{} must be a 1D or 2D array, got {} dimensions", what, heights.ndim()));
+  }
+}
+
+// The grid of the heights array (check_array_dimensions).
+inline Grid array_grid(const InputArray& heights, double dx, double dy, Boundary boundary, std::string_view what) {
+  check_array_dimensions(heights, what);
+  return heights.ndim() == 1 ? Grid::line(heights.shape(0), dx, boundary)
+                             : Grid::plane(heights.shape(1), heights.shape(0), dx, dy, boundary);
 }
 
 // A new numpy array owning `field` (moved, not copied), shaped `shape`.

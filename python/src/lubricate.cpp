@@ -278,9 +278,7 @@ nb::object solve_mixed(const Grid& grid, const Eigen::ArrayXd& heights, const Lu
 nb::object lubricate(const nb::object& heights_object, double dx, double dy, const nb::dict& given,
                      std::optional<int> threads) {
   const auto heights = nb::cast<InputArray>(heights_object, false);
-  if (heights.ndim() != 1 && heights.ndim() != 2) {
-    throw InputError(fmt::format("the surface must be a 1D or 2D array, got {} dimensions", heights.ndim()));
-  }
+  check_array_dimensions(heights, "the surface");
   const Eigen::ArrayXd z = Eigen::Map<const Eigen::ArrayXd>(heights.data(), static_cast<Eigen::Index>(heights.size()));
   if (!z.allFinite()) {
     throw InputError(
@@ -289,8 +287,7 @@ nb::object lubricate(const nb::object& heights_object, double dx, double dy, con
   const KeywordSpelling keywords;
   const LubricationProblem problem = make_lubrication_problem(
       options_from<LubricationProblemOptions>(given, lubrication_option_names(), "film option"), keywords);
-  const Grid grid = heights.ndim() == 1 ? Grid::line(heights.shape(0), dx, problem.boundary)
-                                        : Grid::plane(heights.shape(1), heights.shape(0), dx, dy, problem.boundary);
+  const Grid grid = array_grid(heights, dx, dy, problem.boundary, "the surface");
   problem.check_grid(grid, keywords);
   if (problem.transient) return solve_transient(grid, z, problem);
   if (problem.kind == FilmKind::rigid) return solve_rigid(grid, z, problem);

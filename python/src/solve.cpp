@@ -81,12 +81,8 @@ struct ArraySurface {
 
 ArraySurface surface_from(const nb::object& heights_object, double dx, double dy, const std::string& boundary_name) {
   const auto heights = nb::cast<InputArray>(heights_object, false);
-  if (heights.ndim() != 1 && heights.ndim() != 2) {
-    throw InputError(fmt::format("the surface must be a 1D or 2D array, got {} dimensions", heights.ndim()));
-  }
   const Boundary boundary = in_context("boundary", [&] { return parse_boundary(boundary_name); });
-  Grid grid = heights.ndim() == 1 ? Grid::line(heights.shape(0), dx, boundary)
-                                  : Grid::plane(heights.shape(1), heights.shape(0), dx, dy, boundary);
+  Grid grid = array_grid(heights, dx, dy, boundary, "the surface");
   for (std::size_t k = 0; k < heights.size(); ++k) {
     if (!std::isfinite(heights.data()[k])) {
       throw InputError(fmt::format(
@@ -154,10 +150,7 @@ Result solve(const nb::object& heights, double dx, double dy, const std::string&
   std::span<const double> start;
   if (initial_pressure) {
     start = values(*initial_pressure);
-    if (start.size() != surface.grid.size()) {
-      throw InputError(
-          fmt::format("initial_pressure has {} values but the surface has {}", start.size(), surface.grid.size()));
-    }
+    check_field_size("initial_pressure", start.size(), surface.grid);
   }
   ProgressHook hook(std::move(progress));
   problem.solver.progress = hook.callback();

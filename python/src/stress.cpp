@@ -1,7 +1,6 @@
 // halfspace.subsurface_stress: the stress field below a solved contact
 // (stress/stress_volume.hpp), as `halfspace stress` computes it, with each
 // field handed to numpy without a copy.
-#include <fmt/format.h>
 #include <nanobind/stl/optional.h>
 #include <nanobind/stl/string.h>
 #include <nanobind/stl/vector.h>
@@ -32,13 +31,6 @@ nb::dict subsurface_stress(const Result& result, const std::vector<double>& dept
   const Grid& grid = result.run->grid;
   const Eigen::ArrayXd& pressure = result.result().pressure;
   const std::optional<LayeredMaterial>& coating = result.run->coating;
-  if (coating && nu) {
-    throw InputError(fmt::format(
-        "nu={} is not used: the result is of a coated half-space, whose stresses take layer_nu = {} in the layer "
-        "and substrate_nu = {} below it; drop nu",
-        format_number(*nu), format_number(coating->layer.poissons_ratio),
-        format_number(coating->substrate.poissons_ratio)));
-  }
   // Whose stresses: the library's rule (stress/stressed_body.hpp), with the
   // result's bodies or coating.
   const std::optional<stress::StressedBody> requested =

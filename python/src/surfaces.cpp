@@ -94,9 +94,7 @@ nb::dict read_map(const std::filesystem::path& path, const std::string& format, 
 
 // An array's heights as a HeightMap with NaN (and inf) as invalid points.
 HeightMap map_from(const InputArray& heights, double dx, double dy, const std::string& source) {
-  if (heights.ndim() != 1 && heights.ndim() != 2) {
-    throw InputError(fmt::format("heights must be a 1D or 2D array, got {} dimensions", heights.ndim()));
-  }
+  check_array_dimensions(heights, "heights");
   HeightMap map;
   map.dimension = static_cast<int>(heights.ndim());
   map.nx = heights.shape(heights.ndim() - 1);
@@ -168,12 +166,7 @@ nb::tuple self_affine(std::size_t nx, std::size_t ny, int dimension, double dx, 
 }
 
 nb::dict statistics(const InputArray& heights, double dx, double dy, bool periodic) {
-  if (heights.ndim() != 1 && heights.ndim() != 2) {
-    throw InputError(fmt::format("heights must be a 1D or 2D array, got {} dimensions", heights.ndim()));
-  }
-  const int dimension = static_cast<int>(heights.ndim());
-  const Grid grid =
-      grid_of(heights.shape(dimension - 1), dimension == 2 ? heights.shape(0) : 1, dimension, dx, dy, periodic);
+  const Grid grid = array_grid(heights, dx, dy, periodic ? Boundary::periodic : Boundary::free, "heights");
   surface::SurfaceStatistics s;
   {
     nb::gil_scoped_release release;

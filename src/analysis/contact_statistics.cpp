@@ -3,8 +3,6 @@
 // union-find, linear in the number of cells.
 #include "halfspace/analysis/contact_statistics.hpp"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -19,19 +17,10 @@
 #include "halfspace/linalg/parallel.hpp"
 
 namespace halfspace::analysis {
-namespace {
-
-void check_size(std::string_view what, std::size_t size, const Grid& grid) {
-  if (size != grid.size()) {
-    throw InputError(
-        fmt::format("{} has {} values but the grid has {} cells ({})", what, size, grid.size(), grid.shape_string()));
-  }
-}
-
-}  // namespace
+namespace {}  // namespace
 
 std::vector<std::int64_t> contact_cluster_sizes(const Grid& grid, std::span<const double> pressure) {
-  check_size("contact_cluster_sizes: the pressure", pressure.size(), grid);
+  check_field_size("contact_cluster_sizes: the pressure", pressure.size(), grid);
   // Row by row (Hoshen & Kopelman 1976): a cell in contact takes the label
   // of its left or upper neighbour in contact (joining the two labels when
   // both are), or a new one; only the labels are united, so that the memory
@@ -80,8 +69,8 @@ std::vector<std::int64_t> contact_cluster_sizes(const Grid& grid, std::span<cons
 }
 
 ContactStatistics contact_statistics(const Grid& grid, std::span<const double> pressure, std::span<const double> gap) {
-  check_size("contact_statistics: the pressure", pressure.size(), grid);
-  check_size("contact_statistics: the gap", gap.size(), grid);
+  check_field_size("contact_statistics: the pressure", pressure.size(), grid);
+  check_field_size("contact_statistics: the gap", gap.size(), grid);
   return contact_statistics(grid, pressure, gap, linalg::serial_communicator(), contact_cluster_sizes(grid, pressure));
 }
 

@@ -21,10 +21,7 @@ std::vector<SweepStep> run_load_sweep(ContactSolver& solver, const Grid& grid, s
                                       const solvers::Layout& layout) {
   if (values.empty()) throw InputError("load sweep: no load given");
   const std::size_t cells = layout.rows(grid).count * grid.nx();
-  if (initial_gap.size() != cells) {
-    throw InputError(fmt::format("load sweep: the initial gap has {} entries, but the grid has {} cells here",
-                                 initial_gap.size(), cells));
-  }
+  check_field_size("load sweep: the initial gap", initial_gap.size(), grid, cells);
   std::vector<Loading> loads;
   for (const double value : values) {
     const Loading loading{mode, value};

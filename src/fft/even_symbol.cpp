@@ -11,34 +11,26 @@ namespace {
 
 // spectrum[r, c] *= factor(symbol[r, c]) for either precision of the
 // spectrum (the symbol stays double; a float spectrum is multiplied by the
-// rounded factor), entry 0 by `first` if given. A transposed symbol's
-// columns fold: those past the stored ones read their mirror.
+// rounded factor), entry 0 by `first` if given (what the factor made of it
+// there, perhaps 1/0, is replaced).
 template <class Real, class Factor>
 void scale_spectrum(const EvenSymbol& symbol, const std::vector<double>& values, std::span<std::complex<Real>> spectrum,
                     Factor&& factor, const double* first = nullptr) {
   const std::size_t rows = symbol.rows();
   const std::size_t cols = symbol.cols();
-  const std::size_t stored = symbol.stored_cols();
   assert(spectrum.size() == rows * cols);
   if (rows == 0 || cols == 0) return;
-  const std::size_t skip = first ? 1 : 0;
-  if (first) spectrum[0] *= static_cast<Real>(*first);
+  const std::complex<Real> entry0 = spectrum[0];
+  const double* value = values.data();
   if (rows == 1 && !symbol.transposed()) {
-    linalg::for_each_index(cols - skip,
-                           [&](std::size_t k) { spectrum[k + skip] *= static_cast<Real>(factor(values[k + skip])); });
-    return;
+    linalg::for_each_index(cols, [&](std::size_t k) { spectrum[k] *= static_cast<Real>(factor(value[k])); });
+  } else {
+    linalg::for_each_row(rows, cols, [&](std::size_t r) {
+      symbol.for_each_entry(
+          r, [&](std::size_t k, std::size_t j, double) { spectrum[k] *= static_cast<Real>(factor(value[j])); });
+    });
   }
-  linalg::for_each_row(rows, cols, [&](std::size_t r) {
-    std::complex<Real>* row = spectrum.data() + r * cols;
-    const double* value = values.data() + (symbol.transposed() ? r : symbol.folded(r)) * stored;
-    const std::size_t from = r == 0 ? skip : 0;
-    if (!symbol.transposed()) {
-      for (std::size_t c = from; c < cols; ++c) row[c] *= static_cast<Real>(factor(value[c]));
-      return;
-    }
-    for (std::size_t c = from; c < stored; ++c) row[c] *= static_cast<Real>(factor(value[c]));
-    for (std::size_t c = stored; c < cols; ++c) row[c] *= static_cast<Real>(factor(value[cols - c]));
-  });
+  if (first) spectrum[0] = entry0 * static_cast<Real>(*first);
 }
 
 template <class Real>

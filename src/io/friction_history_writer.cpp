@@ -52,11 +52,8 @@ std::string step_name(std::size_t step, std::size_t steps) {
 }
 
 void check_field(std::string_view field, std::size_t step, Eigen::Index size, const Grid& grid) {
-  if (static_cast<std::size_t>(size) != grid.size()) {
-    throw InputError(
-        fmt::format("write_friction_history: field '{}' of step {} has {} values but the grid has {} cells ({})", field,
-                    step, size, grid.size(), grid.shape_string()));
-  }
+  check_field_size(fmt::format("write_friction_history: field '{}' of step {}", field, step),
+                   static_cast<std::size_t>(size), grid);
 }
 
 }  // namespace

@@ -28,10 +28,7 @@ constexpr const char* kUnits =
     "total_force and tangential_force in N (N/m in 1D); solve_seconds in s";
 
 void check_size(std::string_view field, std::size_t size, const Grid& grid) {
-  if (size != grid.size()) {
-    throw InputError(fmt::format("write_result: field '{}' has {} values but the grid has {} cells ({})", field, size,
-                                 grid.size(), grid.shape_string()));
-  }
+  check_field_size(fmt::format("write_result: field '{}'", field), size, grid);
 }
 
 std::span<const double> values(const Eigen::ArrayXd& field) {

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "halfspace/io/result_attributes.hpp"
@@ -28,6 +29,27 @@ std::vector<std::size_t> volume_shape(const Grid& grid, std::size_t depth_count)
 }
 
 }  // namespace
+
+void attach_stress_group(ResultMetadata& metadata, const Grid& grid, const std::optional<LayeredMaterial>& coating,
+                         const stress::StressedBodyChoice& body, const stress::SurfaceTractions& on_body2,
+                         std::span<const double> depths, const solvers::Layout& layout, FftPlanning planning) {
+  // Held by the writer's callback, which may be copied.
+  struct Attached {
+    std::unique_ptr<stress::SubsurfaceStress> stresses;
+    std::array<std::vector<double>, 2> body1_shear;
+    stress::SurfaceTractions tractions;
+    std::vector<double> depths;
+  };
+  const auto attached = std::make_shared<Attached>();
+  attached->stresses = coating ? std::make_unique<stress::SubsurfaceStress>(grid, *coating, layout, planning)
+                               : std::make_unique<stress::SubsurfaceStress>(grid, body.poisson_ratio, layout, planning);
+  attached->tractions = stress::tractions_on(body.body, on_body2, attached->body1_shear);
+  attached->depths.assign(depths.begin(), depths.end());
+  metadata.extra_groups = [attached](const Hdf5Node& root) {
+    write_stress_group(root, *attached->stresses, attached->tractions, attached->depths);
+  };
+  metadata.extra_groups_bytes = stress_group_bound(grid, depths.size());
+}
 
 stress::VonMisesMaximum write_stress_group(const Hdf5Node& root, stress::SubsurfaceStress& stresses,
                                            std::span<const double> pressure, std::span<const double> depths) {

@@ -25,11 +25,7 @@ namespace halfspace::io {
 namespace {
 
 void check_field(std::string_view field, std::size_t step, std::size_t size, const Grid& grid) {
-  if (size != grid.size()) {
-    throw InputError(
-        fmt::format("write_sweep_result: field '{}' of step {} has {} values but the grid has {} cells ({})", field,
-                    step, size, grid.size(), grid.shape_string()));
-  }
+  check_field_size(fmt::format("write_sweep_result: field '{}' of step {}", field, step), size, grid);
 }
 
 // "000", "001", ...: zero-padded so that names sort in step order.

@@ -82,11 +82,7 @@ class Rules : public halfspace::detail::Checks {
   // option and its value.
   template <class Parse>
   auto parsed(std::string_view option, const std::string& value, Parse&& parse) const {
-    try {
-      return parse(value);
-    } catch (const InputError& error) {
-      throw InputError(fmt::format("{}: {}", s_.describe(option, "'" + value + "'"), error.what()));
-    }
+    return in_context(s_.describe(option, "'" + value + "'"), [&] { return parse(value); });
   }
 
   void control() const;
@@ -340,13 +336,7 @@ LubricationProblem make_lubrication_problem(const LubricationProblemOptions& opt
       }
       return problem;
     }
-    if (o.boundary) {
-      try {
-        problem.boundary = parse_boundary(*o.boundary);
-      } catch (const InputError& error) {
-        throw InputError(fmt::format("{}: {}", rules.name("boundary"), error.what()));
-      }
-    }
+    if (o.boundary) problem.boundary = in_context(rules.name("boundary"), [&] { return parse_boundary(*o.boundary); });
     problem.laws = rules.laws();
     const std::optional<CouetteScheme> scheme =
         o.couette_scheme ? std::optional(rules.parsed("couette_scheme", *o.couette_scheme, parse_couette_scheme))

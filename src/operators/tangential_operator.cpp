@@ -46,24 +46,6 @@ long signed_offset(std::size_t k, std::size_t n) {
   return k < n ? static_cast<long>(k) : k == n ? 0 : static_cast<long>(k) - 2 * static_cast<long>(n);
 }
 
-// run(k, j, sign) for the entries k of block `b` held here (`length` each):
-// j the stored entry of a symbol folded in ky as `layout` (EvenSymbol's
-// layout), sign -1 where ky is mirrored (an odd part's value is then the
-// stored one's negative), else +1.
-template <class Run>
-void for_each_entry(const EvenSymbol& layout, std::size_t b, std::size_t length, Run&& run) {
-  const std::size_t begin = b * length;
-  if (!layout.transposed()) {
-    const std::size_t stored = layout.folded(b);
-    const double sign = stored == b ? 1.0 : -1.0;
-    for (std::size_t c = 0; c < length; ++c) run(begin + c, stored * length + c, sign);
-    return;
-  }
-  const std::size_t stored = layout.stored_cols();
-  for (std::size_t c = 0; c < stored; ++c) run(begin + c, b * stored + c, 1.0);
-  for (std::size_t c = stored; c < length; ++c) run(begin + c, b * stored + length - c, -1.0);
-}
-
 // f(j, k, mode(k)) for every stored entry j of a symbol folded as `layout`
 // on `transforms`, k the held entry it stands for (ky <= n/2).
 template <class F>
@@ -384,7 +366,7 @@ void TangentialOperator::apply_pressure_coupling(std::span<const double> pressur
   const double* cy = m.coupling_y.stored().data();
   const std::complex<double> i(0.0, 1.0);
   linalg::for_each_row(m.spectrum_rows, m.spectrum_cols, [&](std::size_t r) {
-    for_each_entry(m.xx, r, m.spectrum_cols, [&](std::size_t k, std::size_t j, double sign) {
+    m.xx.for_each_entry(r, [&](std::size_t k, std::size_t j, double sign) {
       const std::complex<double> p = i * sx[k];
       sx[k] = cx[j] * p;
       sy[k] = (sign * cy[j]) * p;
@@ -410,7 +392,7 @@ void TangentialOperator::apply_traction_coupling(std::span<const double> tractio
   const double* cy = m.coupling_y.stored().data();
   const std::complex<double> minus_i(0.0, -1.0);
   linalg::for_each_row(m.spectrum_rows, m.spectrum_cols, [&](std::size_t r) {
-    for_each_entry(m.xx, r, m.spectrum_cols, [&](std::size_t k, std::size_t j, double sign) {
+    m.xx.for_each_entry(r, [&](std::size_t k, std::size_t j, double sign) {
       sx[k] = minus_i * (cx[j] * sx[k] + (sign * cy[j]) * sy[k]);
     });
   });
@@ -434,7 +416,7 @@ void TangentialOperator::apply(std::span<const double> traction_x, std::span<con
   const double* yy = m.yy.stored().data();
   const double* xy = m.xy.stored().data();
   linalg::for_each_row(m.spectrum_rows, m.spectrum_cols, [&](std::size_t r) {
-    for_each_entry(m.xx, r, m.spectrum_cols, [&](std::size_t k, std::size_t j, double sign) {
+    m.xx.for_each_entry(r, [&](std::size_t k, std::size_t j, double sign) {
       const std::complex<double> tx = sx[k];
       const std::complex<double> ty = sy[k];
       const double c_xy = sign * xy[j];
@@ -466,7 +448,7 @@ void TangentialOperator::apply_approximate_inverse(std::span<const double> displ
   auto inverse = [&](double eigenvalue) { return scale / (eigenvalue > floor ? eigenvalue : largest); };
   linalg::for_each_row(m.spectrum_rows, m.spectrum_cols, [&](std::size_t r) {
     // On the stored entry j: ixy, odd in xy, takes the mirrored sign.
-    for_each_entry(m.xx, r, m.spectrum_cols, [&](std::size_t k, std::size_t j, double sign) {
+    m.xx.for_each_entry(r, [&](std::size_t k, std::size_t j, double sign) {
       double ixx = 0.0;
       double iyy = 0.0;
       double ixy = 0.0;

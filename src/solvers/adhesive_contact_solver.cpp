@@ -920,13 +920,9 @@ SolveResult AdhesiveContactSolver::do_solve(std::span<const double> initial_gap,
                                             std::span<const double> initial_pressure) {
   Impl& m = *impl_;
   const std::size_t n = m.cells;
-  if (initial_gap.size() != n) {
-    throw InputError(fmt::format("adhesive solve: the initial gap has {} entries, but the grid has {} cells",
-                                 initial_gap.size(), n));
-  }
-  if (!initial_pressure.empty() && initial_pressure.size() != n) {
-    throw InputError(fmt::format("adhesive solve: the initial pressure has {} entries, but the grid has {} cells",
-                                 initial_pressure.size(), n));
+  check_field_size("adhesive solve: the initial gap", initial_gap.size(), m.grid, n);
+  if (!initial_pressure.empty()) {
+    check_field_size("adhesive solve: the initial pressure", initial_pressure.size(), m.grid, n);
   }
   if (!std::isfinite(loading.value)) {
     throw InputError(fmt::format("{} = {} is invalid: must be finite", to_string(loading.mode), loading.value));

@@ -18,12 +18,6 @@
 namespace halfspace::solvers {
 namespace {
 
-void check_size(std::string_view what, std::size_t got, std::size_t expected) {
-  if (got != expected) {
-    throw InputError(fmt::format("{} has {} entries, but the grid has {} cells", what, got, expected));
-  }
-}
-
 std::string memory_string(double bytes) {
   constexpr double kMiB = 1024.0 * 1024.0;
   constexpr double kGiB = 1024.0 * kMiB;
@@ -120,7 +114,7 @@ ContactLcp make_contact_lcp(const Grid& grid, double e_star, const Eigen::Matrix
   checked_composite_modulus(e_star);
   options.validate();
   loading.validate();
-  check_size("initial gap", initial_gap.size(), n);
+  check_field_size("initial gap", initial_gap.size(), grid);
   if (influence.rows() != size || influence.cols() != size) {
     throw InputError(
         fmt::format("influence matrix is {} x {}, but the grid has {} cells", influence.rows(), influence.cols(), n));

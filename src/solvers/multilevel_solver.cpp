@@ -105,10 +105,7 @@ SolveResult MultilevelSolver::do_solve(std::span<const double> initial_gap, cons
     result.solver = std::string(name());
     return result;
   }
-  if (initial_gap.size() != local_size) {
-    throw InputError(
-        fmt::format("initial gap has {} entries, but the grid has {} cells here", initial_gap.size(), local_size));
-  }
+  check_field_size("initial gap", initial_gap.size(), grid_, local_size);
   loading.validate();
   CoarseStart coarse;
   SolveResult result = solve_level(*fine_, initial_gap, loading, coarse_start(grid_, initial_gap, loading, coarse));

@@ -61,19 +61,13 @@ struct Problem {
   PressureBounds bounds;           // the interface law's admissible pressures
 };
 
-void check_size(std::string_view what, std::size_t got, std::size_t expected) {
-  if (got != expected) {
-    throw InputError(fmt::format("{} has {} entries, but the grid has {} cells", what, got, expected));
-  }
-}
-
 // The problem of a solve, checked.
 Problem make_problem(const InfluenceOperator& op, std::span<const double> initial_gap, const Loading& loading,
                      const PressureBounds& bounds) {
   const Grid& grid = op.grid();
   const linalg::Communicator& comm = op.communicator();
   const std::size_t n = op.local_size();
-  check_size("initial gap", initial_gap.size(), n);
+  check_field_size("initial gap", initial_gap.size(), grid, n);
   loading.validate();
   const double gap_max = linalg::max_of(comm, n, [&](std::size_t i) { return initial_gap[i]; });
   const double gap_min = linalg::min_of(comm, n, [&](std::size_t i) { return initial_gap[i]; });
@@ -867,14 +861,14 @@ SolveResult PolonskyKeer::do_solve(std::span<const double> initial_gap, const Lo
                                    std::span<const double> initial_pressure) {
   const std::size_t n = op_.local_size();
   if (initial_pressure.empty()) return run(initial_gap, loading, Eigen::ArrayXd(static_cast<Eigen::Index>(n)), false);
-  check_size("initial pressure", initial_pressure.size(), n);
+  check_field_size("initial pressure", initial_pressure.size(), op_.grid(), n);
   return run(initial_gap, loading,
              Eigen::Map<const Eigen::ArrayXd>(initial_pressure.data(), static_cast<Eigen::Index>(n)), true);
 }
 
 SolveResult PolonskyKeer::do_solve_from(std::span<const double> initial_gap, const Loading& loading,
                                         Eigen::ArrayXd&& start) {
-  check_size("initial pressure", static_cast<std::size_t>(start.size()), op_.local_size());
+  check_field_size("initial pressure", static_cast<std::size_t>(start.size()), op_.grid(), op_.local_size());
   return run(initial_gap, loading, std::move(start), true);
 }
 

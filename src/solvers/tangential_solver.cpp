@@ -31,12 +31,6 @@ namespace {
 
 using namespace tangential;
 
-void check_size(std::string_view what, std::size_t got, std::size_t expected) {
-  if (got != expected) {
-    throw InputError(fmt::format("{} has {} entries, but the grid has {} cells", what, got, expected));
-  }
-}
-
 }  // namespace
 
 std::string_view to_string(TangentialControl control) {
@@ -176,10 +170,10 @@ TangentialResult TangentialSolver::solve(std::span<const double> pressure, const
   const std::size_t n = op_.local_size();
   const Grid& grid = op_.grid();
   const linalg::Communicator& comm = op_.communicator();
-  check_size("pressure", pressure.size(), n);
+  check_field_size("pressure", pressure.size(), grid, n);
   for (const Eigen::ArrayXd* field : {&previous.shear_x, &previous.shear_y, &previous.displacement_x,
                                       &previous.displacement_y, &previous.slip_x, &previous.slip_y}) {
-    check_size("previous tangential state", static_cast<std::size_t>(field->size()), n);
+    check_field_size("previous tangential state", static_cast<std::size_t>(field->size()), grid, n);
   }
   loading.validate();
   const double mu = options_.friction_coefficient;
@@ -197,8 +191,8 @@ TangentialResult TangentialSolver::solve(std::span<const double> pressure, const
   problem.previous = &previous;
   const bool fixed = !fixed_x.empty() || !fixed_y.empty();
   if (fixed) {
-    check_size("fixed tangential displacement x", fixed_x.size(), n);
-    check_size("fixed tangential displacement y", fixed_y.size(), n);
+    check_field_size("fixed tangential displacement x", fixed_x.size(), grid, n);
+    check_field_size("fixed tangential displacement y", fixed_y.size(), grid, n);
     if (fx_.size() != static_cast<Eigen::Index>(n)) {
       fx_.setZero(static_cast<Eigen::Index>(n));
       fy_.setZero(static_cast<Eigen::Index>(n));

@@ -37,6 +37,14 @@ StressedBodyChoice choose_stressed_body(std::optional<StressedBody> requested, s
           "the coated body's (body 1); drop {} or pass 1",
           body_option, body_option));
     }
+    if (given) {
+      const LayeredMaterial& coating = *bodies->coating();
+      throw InputError(fmt::format(
+          "{}{}{} is not used for a coated half-space: its stresses take the layer's Poisson's ratio ({}) in the "
+          "layer and the substrate's ({}) below it; drop {}",
+          nu_option, nu_option.ends_with('=') ? "" : " ", format_number(*given),
+          format_number(coating.layer.poissons_ratio), format_number(coating.substrate.poissons_ratio), nu_option));
+    }
     return {body, bodies->body1().poissons_ratio};
   }
   if (given) return {body, checked_poisson_ratio(*given)};

@@ -223,10 +223,7 @@ struct SubsurfaceStress::Impl {
   // Throws InputError unless `field` has the size of the cells held here
   // and finite values; on every process if any process's are not finite.
   void check_field(std::span<const double> field, std::string_view name) const {
-    if (field.size() != local_size()) {
-      throw InputError(fmt::format("subsurface stress: the {} has {} values but {} cells of the {} grid are held here",
-                                   name, field.size(), local_size(), grid.shape_string()));
-    }
+    check_field_size(fmt::format("subsurface stress: the {}", name), field.size(), grid, local_size());
     const auto bad = std::find_if(field.begin(), field.end(), [](double v) { return !std::isfinite(v); });
     const bool here = bad != field.end();
     if (communicator().max(here ? 1.0 : 0.0) == 0.0) return;
@@ -296,10 +293,8 @@ struct SubsurfaceStress::Impl {
     checked_depth(grid, depth);
     if (!has_pressure) throw InputError("subsurface stress: no pressure was set before computing stresses");
     for (std::size_t c = 0; c < kComponentCount; ++c) {
-      if (fields[c].size() != local_size()) {
-        throw InputError(fmt::format("subsurface stress: the {} field has {} values but {} cells are held here",
-                                     kComponentNames[c], fields[c].size(), local_size()));
-      }
+      check_field_size(fmt::format("subsurface stress: the {} field", kComponentNames[c]), fields[c].size(), grid,
+                       local_size());
     }
     if (grid.periodic()) {
       compute_periodic(depth, fields);

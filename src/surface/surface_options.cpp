@@ -91,11 +91,7 @@ std::vector<double> domain_size(std::string_view text, const std::string& what) 
 }  // namespace
 
 double checked_length(std::string_view option, double value, const OptionSpelling& spelling) {
-  try {
-    return detail::Checks(spelling).length(option, value);
-  } catch (const OptionError& error) {
-    throw detail::spelled(error, spelling);
-  }
+  return detail::spelled_errors(spelling, [&] { return detail::Checks(spelling).length(option, value); });
 }
 
 Grid grid_from_text(std::string_view cells, std::string_view size, Boundary boundary, const OptionSpelling& spelling,

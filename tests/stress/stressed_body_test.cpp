@@ -79,6 +79,12 @@ TEST(StressedBodyTest, ACoatedBodyIsBodyOne) {
   const std::string message =
       error_of([&] { choose_stressed_body(StressedBody::body2, std::nullopt, coated, "--body", "--nu"); });
   EXPECT_NE(message.find("--body 2 is not available for a coated half-space"), std::string::npos) << message;
+  // Each depth takes the layer's or the substrate's own ratio: a given one is refused, not ignored.
+  const std::string given = error_of([&] { choose_stressed_body(std::nullopt, 0.4, coated, "--body", "--nu"); });
+  EXPECT_NE(given.find("--nu 0.4 is not used for a coated half-space"), std::string::npos) << given;
+  EXPECT_NE(given.find("(0.25) in the layer and the substrate's (0.3)"), std::string::npos) << given;
+  EXPECT_NE(error_of([&] { choose_stressed_body(std::nullopt, 0.4, coated, "body=", "nu="); }).find("nu=0.4 is not"),
+            std::string::npos);
 }
 
 TEST(StressedBodyTest, BodyOneTakesTheOppositeShear) {

@@ -48,6 +48,23 @@ class EvenSymbol {
     const std::size_t n = transposed_ ? cols_ : rows_;
     return k < half(n) ? k : n - k;
   }
+  // run(k, j, sign) for the entries k of spectrum row r (cols() each): j
+  // the stored value it uses, sign -1 where ky is mirrored (n - ky: an odd
+  // part's value is there the stored one's negative), else +1. The one walk
+  // of the folded layout, for the multipliers here and the tangential ones.
+  template <class Run>
+  void for_each_entry(std::size_t r, Run&& run) const {
+    const std::size_t begin = r * cols_;
+    if (!transposed_) {
+      const std::size_t stored = folded(r);
+      const double sign = stored == r ? 1.0 : -1.0;
+      for (std::size_t c = 0; c < cols_; ++c) run(begin + c, stored * cols_ + c, sign);
+      return;
+    }
+    const std::size_t stored = stored_cols();
+    for (std::size_t c = 0; c < stored; ++c) run(begin + c, r * stored + c, 1.0);
+    for (std::size_t c = stored; c < cols_; ++c) run(begin + c, r * stored + cols_ - c, -1.0);
+  }
 
   // spectrum[r, c] *= symbol[r, c], in parallel over rows (or over the
   // entries of a single row, not transposed).

@@ -8,12 +8,16 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <span>
 #include <string>
 
 #include "halfspace/grid.hpp"
 #include "halfspace/io/hdf5_output.hpp"
+#include "halfspace/io/result_writer.hpp"
+#include "halfspace/layered_material.hpp"
 #include "halfspace/stress/stress_volume.hpp"
+#include "halfspace/stress/stressed_body.hpp"
 #include "halfspace/stress/subsurface_stress.hpp"
 #include "halfspace/stress/surface_traction.hpp"
 
@@ -40,6 +44,17 @@ stress::VonMisesMaximum write_stress_group(const Hdf5Node& root, stress::Subsurf
 
 // An upper bound on the bytes the /stress group adds to a file.
 std::uint64_t stress_group_bound(const Grid& grid, std::size_t depth_count);
+
+// Has the result file written with `metadata` hold the /stress group
+// (extra_groups and its bound): the stresses at `depths` of `body` (with its
+// Poisson's ratio), or of the coated half-space below `coating`, under
+// `on_body2` (a result's pressure and shear, the tractions on body 2; body 1
+// takes -q, tractions_on), computed depth by depth on this process's rows
+// of `layout` while the file is written. `on_body2`'s fields must outlive
+// the write. Throws InputError for what SubsurfaceStress refuses.
+void attach_stress_group(ResultMetadata& metadata, const Grid& grid, const std::optional<LayeredMaterial>& coating,
+                         const stress::StressedBodyChoice& body, const stress::SurfaceTractions& on_body2,
+                         std::span<const double> depths, const solvers::Layout& layout, FftPlanning planning);
 
 struct StressFileMetadata {
   std::string source;        // the result file the pressure came from

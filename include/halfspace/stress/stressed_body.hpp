@@ -32,7 +32,8 @@ struct StressedBodyChoice {
 // The body (`requested`, else the default) and its Poisson's ratio: `given`
 // if set, else the body's own from `bodies`. Throws InputError naming the
 // options: body 2 of a coated result (the rigid counter-body: only the
-// coated body's field is computed), no Poisson's ratio to be had (neither
+// coated body's field is computed), `given` for a coated result (each depth
+// takes the layer's or the substrate's own), no Poisson's ratio to be had (neither
 // `given` nor the bodies), or none named for two elastic bodies of different
 // Poisson's ratios. Options are named as the front end spells them.
 StressedBodyChoice choose_stressed_body(std::optional<StressedBody> requested, std::optional<double> given,
