@@ -188,36 +188,6 @@ bool take_step_branches(const State& x, double hb, double H, const Eigen::Vector
   return flipped;
 }
 
-// The crossing step, near the solution (a residual norm below
-// kCrossingNorm): a node within kCrossingBand of the p-theta switch (outside
-// kSwitchBand, which branch_consistent_step_with settles) takes the branch
-// of s + ds, the step's end point, and the step is solved again with the
-// right-hand side F + (J_branch - J_own) s on those nodes, the exact
-// piecewise-linear model across the kink (a primal-dual active set step,
-// Hintermüller, Ito & Kunisch 2003, on the p-theta switch). At 256^2 the
-// Newton step linearised on the pressurised branch sent a few cells at s =
-// 1e-4 to 1e-2 across the switch and the line search cut the step to 3e-5
-// to keep them on it (docs/development-log.md, branches lub30h and lub30j);
-// the plain flip without the offset, and on every node, made 128^2 worse
-// (lub30i). Returns whether a branch changed.
-constexpr double kCrossingBand = 0.05;
-constexpr double kCrossingNorm = 0.1;
-
-bool take_crossing_branches(const ReynoldsStencil& topology, const Eigen::ArrayXd& s, const Eigen::VectorXd& step,
-                            std::vector<char>& branch_full) {
-  bool flipped = false;
-  for (std::size_t j = 0; j < branch_full.size(); ++j) {
-    const auto jj = static_cast<Eigen::Index>(j);
-    if (topology.fixed(j) || std::abs(s[jj]) <= detail::kSwitchBand || std::abs(s[jj]) > kCrossingBand) continue;
-    const char wanted = s[jj] + step[jj] >= 0.0 ? 1 : 0;
-    if (wanted != branch_full[j]) {
-      branch_full[j] = wanted;
-      flipped = true;
-    }
-  }
-  return flipped;
-}
-
 // The contact rows' residuals on the branches `closed`: h / H (closed) or q.
 void contact_residuals(const State& x, double H, const std::vector<char>& closed, Eigen::VectorXd& residual) {
   const Eigen::Index ni = x.film.size();
@@ -365,9 +335,6 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
   rows.open_film.resize(n);  // D_j, the floor's branches (both paths)
   Eigen::VectorXd film_change(ni);
   std::vector<char> branch_full(n, 1);
-  // The crossing step's: the plain step's branches and step, its right-hand side.
-  std::vector<char> plain_full(n, 1);
-  Eigen::VectorXd plain_step(m), crossing_rhs(m), rhs(m);
   std::vector<char> closed(n, 0);  // contact rows on the h branch
   double mass_scale = 1.0;
 
@@ -568,41 +535,21 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
           int step_iterations = 0;
           std::string krylov_message;
           const double step_forcing = tight ? 0.0 : forcing;
-          // The crossing step's right-hand side: F + (J_branch - J_own) s_C.
-          bool crossing = false;
           const auto gmres_solve = [&] {
-            if (crossing) rhs = residual + crossing_rhs;
-            const detail::KrylovOutcome outcome = krylov_solver->solve(rows, branch_full, closed, scales, step_forcing,
-                                                                       crossing ? rhs : residual, step, warm);
+            const detail::KrylovOutcome outcome =
+                krylov_solver->solve(rows, branch_full, closed, scales, step_forcing, residual, step, warm);
             warm = outcome.converged;
             step_iterations += outcome.iterations;
             krylov_message = outcome.message;
             return outcome.converged || (short_steps_taken && outcome.relative_residual <= kLoosestLinearResidual);
           };
           bool solved = true;
-          const bool crossing_here = step_branches && current.norm < kCrossingNorm;
           for (int pass = 0; pass < detail::kBranchPasses; ++pass) {
             solved = detail::branch_consistent_step_with(gmres_solve, topology, x.s, step, branch_full);
             if (!solved || pass + 1 == detail::kBranchPasses || !step_branches) break;
             krylov_solver->film_change(step, film_change);
             if (!take_step_branches(x, hb, H, step, film_change, closed, rows.open_film)) break;
             contact_residuals(x, H, closed, residual);
-          }
-          // Near the solution, the crossing step: solved once more on the
-          // branches of the step's end point for the nodes near the switch
-          // that it carries across, with the offset that makes the linear
-          // model the piecewise-linear one there; the plain step kept where
-          // that solve fails.
-          if (solved && crossing_here) plain_full = branch_full;
-          if (solved && crossing_here && take_crossing_branches(topology, x.s, step, branch_full)) {
-            plain_step = step;
-            krylov_solver->crossing_offset(plain_full, branch_full, x.s, crossing_rhs);
-            crossing = true;
-            if (!gmres_solve()) {
-              step = plain_step;
-              branch_full = plain_full;
-              crossing = false;
-            }
           }
           result.krylov_iterations += step_iterations;
           result.max_krylov_iterations_per_step = std::max(result.max_krylov_iterations_per_step, step_iterations);

@@ -121,30 +121,6 @@ void MixedKrylovSolver::film_change(const Eigen::VectorXd& step, Eigen::VectorXd
   if (scales_.load_control) out.array() += step[2 * ni];
 }
 
-void MixedKrylovSolver::crossing_offset(const std::vector<char>& own_full, const std::vector<char>& branch_full,
-                                        const Eigen::ArrayXd& s, Eigen::VectorXd& out) {
-  const auto ni = static_cast<Eigen::Index>(n_);
-  // The product with the two branches' difference in d/ds in place of
-  // d/ds: J's s columns are all that the branches change.
-  crossing_dp_.setZero(ni);
-  crossing_dtheta_.setZero(ni);
-  crossing_v_.setZero(m_);
-  for (std::size_t j = 0; j < n_; ++j) {
-    if (topology_.fixed(j) || own_full[j] == branch_full[j]) continue;
-    const auto jj = static_cast<Eigen::Index>(j);
-    const double to_full = branch_full[j] != 0 ? 1.0 : -1.0;
-    crossing_dp_[jj] = to_full * scales_.pressure;
-    crossing_dtheta_[jj] = -to_full;
-    crossing_v_[jj] = s[jj];
-  }
-  dp_ds_.swap(crossing_dp_);
-  dtheta_ds_.swap(crossing_dtheta_);
-  out.resize(m_);
-  apply_jacobian(crossing_v_, out);
-  dp_ds_.swap(crossing_dp_);
-  dtheta_ds_.swap(crossing_dtheta_);
-}
-
 void MixedKrylovSolver::apply_inverse(const Eigen::VectorXd& in, Eigen::VectorXd& out) {
   if (block_) {
     block_->apply(in, out);

@@ -84,15 +84,6 @@ class MixedKrylovSolver {
   // branches of the last solve: one operator product.
   void film_change(const Eigen::VectorXd& step, Eigen::VectorXd& out);
 
-  // (J_branch - J_own) v on the last solve's rows, with v = s on the nodes
-  // whose branch `branch_full` differs from `own_full` (the branches of s
-  // itself) and 0 elsewhere: the term that makes the step's linear model
-  // the exact piecewise-linear one across the p-theta switch on those nodes
-  // (mixed_film.cpp's crossing step). One operator product; `out` has the
-  // system's size.
-  void crossing_offset(const std::vector<char>& own_full, const std::vector<char>& branch_full, const Eigen::ArrayXd& s,
-                       Eigen::VectorXd& out);
-
  private:
   void apply_jacobian(const Eigen::VectorXd& v, Eigen::VectorXd& out);
   bool factorise(std::string& message);
@@ -110,7 +101,6 @@ class MixedKrylovSolver {
   const std::vector<char>* closed_ = nullptr;
   MixedScales scales_;
   Eigen::VectorXd dp_ds_, dtheta_ds_, total_, deflection_;
-  Eigen::VectorXd crossing_dp_, crossing_dtheta_, crossing_v_;  // crossing_offset's
   // The preconditioner: B (2n x 2n, sparse) bordered by the h0 column and
   // the load row under load control.
   CsrMatrix matrix_;
