@@ -88,8 +88,9 @@ TEST(PaperCliTest, SolveRefusesADenseSolverOnALargeGrid) {
   const fs::path output = dir / "big.h5";
   const ProgramRun result =
       run({"solve", "--geometry", "sphere", "--radius", "0.01", "--grid", "128x128", "--size", "1e-3", "--E-star",
-           "1e11", "--force", "1", "--solver", "lemke", "--output", output.string()},
+           "1e11", "--force", "1", "--solver", "lemke", "--max-memory", "64G", "--output", output.string()},
           dir);
+  // --max-memory: the grid's refusal, not the machine's free memory, must decide.
   testing::expect_input_error(result, "grid 128x128 has 16384 cells");
   EXPECT_NE(result.err.find("solver pk-multilevel"), std::string::npos) << result.err;
   EXPECT_FALSE(fs::exists(output));
