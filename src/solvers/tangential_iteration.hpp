@@ -30,13 +30,10 @@ using linalg::sums;
 inline constexpr int kConjugateUpdatesBetweenExactProducts = 4;
 // Conjugate gradients that do not halve the gap in this many steps stall
 // (sets swinging back and forth): projected gradients take over for a while
-// (tangential_solver.cpp). After a coarse-grid start, which leaves the gap
-// near 1e-3, the shorter window: on the rough benchmark contact no step from
-// 256^2 to 1024^2 goes 20 steps without halving it, while at 2048^2 the
-// step from the coarse start swung for 100 (171 iterations, 479 products'
-// worth with the long window; 124 and 299 with the short one). From the
-// fine start the short window lost there (156 iterations against 123: the
-// sets still form): docs/development-log.md, 2026-11-30, fric29h.
+// (tangential_solver.cpp). After a coarse-grid start the sets are already
+// near their final size, so a swing is caught sooner; from the fine start
+// the sets are still forming and the short window hands over too early
+// (measurements: docs/development-log.md, 2026-11-30, fric29h).
 inline constexpr int kStalledConjugateSteps = 100;
 inline constexpr int kStalledConjugateStepsAfterCoarseStart = 20;
 // Projected-gradient steps after a stall before conjugate gradients resume,
