@@ -187,7 +187,8 @@ Surface height_map_surface(const HeightMapFile& file, Boundary boundary, const O
 
 // Subsurface stresses (--stress-depths, --stress-body, --stress-nu): the
 // depths and whose stresses with which Poisson's ratio (the library's rule,
-// stress/stressed_body.hpp), or none.
+// stress/stressed_body.hpp), or none. Which of these flags need which is
+// the program's own: Python asks for stresses by a call of their own.
 struct StressRequest {
   std::vector<double> depths;
   stress::StressedBodyChoice body;
@@ -209,24 +210,9 @@ StressRequest stress_request_from(const SolveOptions& o, std::size_t load_steps,
   request.depths = range ? parse_depth_range(*o.stress_depths, what) : parse_depth_list(*o.stress_depths, what);
   const std::optional<stress::StressedBody> body =
       o.stress_body ? std::optional(stress::parse_stressed_body(*o.stress_body, "--stress-body")) : std::nullopt;
-  const std::optional<ElasticPair> bodies =
-      problem.coating ? std::optional(ElasticPair::coated(*problem.coating)) : problem.pair;
-  request.body = stress::choose_stressed_body(body, o.stress_nu, bodies, "--stress-body", "--stress-nu");
+  // problem.pair is the coated body's (ElasticPair::coated) with a coating.
+  request.body = stress::choose_stressed_body(body, o.stress_nu, problem.pair, "--stress-body", "--stress-nu");
   return request;
-}
-
-// The peak while the stresses are computed and written after the solve: the
-// heights and the result's fields (5 arrays) kept, the transforms and one
-// depth's fields (the depths are computed and written one at a time).
-// With friction, the shear tractions' transforms too and, for body 1 (a
-// coated body, or --stress-body 1), its tractions (-q, stress::tractions_on).
-double stress_peak_memory(const Grid& grid, const StressRequest& stress, bool coated, bool shear) {
-  const std::size_t depth_count = stress.depths.size();
-  if (depth_count == 0) return 0.0;
-  const bool body1 = stress.body.body == stress::StressedBody::body1;
-  const double body1_shear = body1 && shear ? 16.0 * static_cast<double>(grid.size()) : 0.0;
-  return kProgramBytes + 6.0 * 8.0 * static_cast<double>(grid.size()) + body1_shear +
-         stress::stress_memory_estimate(grid, coated, shear);
 }
 
 }  // namespace
@@ -246,13 +232,8 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
   const Boundary boundary =
       in_context(options.name("boundary"), [&] { return parse_boundary(options.boundary.value_or("free")); });
   const SurfaceChoice choice = make_surface_choice(options, boundary, flags);
-  if (options.pad && options.mean_pressure) {
-    throw InputError(
-        fmt::format("{} cannot be combined with {}: the mean pressure would be taken over the padded area; give "
-                    "--force instead",
-                    options.describe("pad"), options.name("mean-pressure")));
-  }
   Problem problem = make_problem(problem_options(options), flags);
+  if (const auto* file = std::get_if<HeightMapFile>(&choice)) problem.check_padding(file->prepare.pad_factor, flags);
   const std::optional<LayeredMaterial>& coating = problem.coating;
   const std::vector<double>& load_values = problem.load_values;
   const solvers::SolverOptions& solver = problem.solver;
@@ -268,9 +249,12 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
     // A single frictionless solve lends the heights to the initial gap where it can.
     const bool gap_in_heights =
         load_values.size() == 1 && !friction && solvers::initial_gap_in_heights(problem.loading, solver);
-    const double estimate = std::max(solve_memory_estimate(grid, solver, load_values.size(), gap_in_heights),
-                                     stress_peak_memory(grid, stress, coating.has_value(), friction.has_value())) +
-                            (friction ? solvers::friction_memory_estimate(grid, history_steps) : 0.0);
+    const double stress_peak =
+        solve_stress_memory_estimate(grid, stress.depths.size(), coating.has_value(), friction.has_value(),
+                                     stress.body.body == stress::StressedBody::body1);
+    const double estimate =
+        std::max(solve_memory_estimate(grid, solver, load_values.size(), gap_in_heights), stress_peak) +
+        (friction ? solvers::friction_memory_estimate(grid, history_steps) : 0.0);
     if (share.check_memory) {
       // A process holding some rows runs the distributed solve (what is not
       // distributed is refused on several processes before it starts); a
@@ -285,8 +269,7 @@ SolveSetup make_solve_setup(const SolveOptions& options, const SurfaceSharing& s
                                                          static_cast<double>(rows) / static_cast<double>(all_rows)
                                                    : 0.0;
             // The stresses' transforms and one depth's fields too (computed after the solve).
-            const double stress_share = stress_peak_memory(grid, stress, coating.has_value(), friction.has_value()) *
-                                        static_cast<double>(rows) / static_cast<double>(all_rows);
+            const double stress_share = stress_peak * static_cast<double>(rows) / static_cast<double>(all_rows);
             return std::max(slab_solve_memory_estimate(grid, solver, rows, load_values.size()), stress_share) +
                    friction_share;
           },

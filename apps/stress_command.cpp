@@ -89,16 +89,11 @@ int stresses_at(StressPlace& place, const StressOptions& o, const std::vector<do
   const stress::StressedBodyChoice body = in_context(fmt::format("result file '{}'", o.result), [&] {
     return stress::choose_stressed_body(requested, given_nu, bodies, "--body", "--nu");
   });
-  const double nu = body.poisson_ratio;
-  // The pressure (and shear tractions) read twice (reader and field), the
-  // transforms and one depth's fields: the depths are computed and written
-  // one at a time.
   const bool shear = input.has_shear();
   // On several processes each holds its share of the fields and transforms
   // (the first process has read the whole result besides, and freed it).
   const double share = static_cast<double>(input.pressure.size()) / static_cast<double>(grid.size());
-  const double estimate = kProgramBytes + share * ((shear ? 64.0 : 16.0) * static_cast<double>(grid.size()) +
-                                                   stress::stress_memory_estimate(grid, coating.has_value(), shear));
+  const double estimate = stress_command_memory_estimate(grid, coating.has_value(), shear, share);
   const std::string what = o.max_memory ? fmt::format("--max-memory {}", *o.max_memory) : "--max-memory";
   place.agree([&] {
     require_memory(fmt::format("stresses on the {} grid of {} (the transforms and one depth's 9 fields of {} cells "
@@ -111,9 +106,8 @@ int stresses_at(StressPlace& place, const StressOptions& o, const std::vector<do
   {
     const Activity activity(fmt::format("computing stresses at {} depths on the {} grid and writing {}", depths.size(),
                                         grid.shape_string(), output));
-    std::unique_ptr<stress::SubsurfaceStress> stresses =
-        coating ? std::make_unique<stress::SubsurfaceStress>(grid, *coating, place.layout)
-                : std::make_unique<stress::SubsurfaceStress>(grid, nu, place.layout);
+    const std::unique_ptr<stress::SubsurfaceStress> stresses =
+        stress::make_subsurface_stress(grid, coating, body, place.layout);
     // Body 1 (a coated result's body, ElasticPair::coated) takes the
     // traction on it, -q of the file's /shear_x, /shear_y.
     std::array<std::vector<double>, 2> body1_shear;
@@ -131,7 +125,7 @@ int stresses_at(StressPlace& place, const StressOptions& o, const std::vector<do
                                       grid.shape_string(), to_string(grid.boundary()), coating->thickness,
                                       coating->layer.poissons_ratio, coating->substrate.poissons_ratio)
                         : fmt::format("{} ({}), body {}, Poisson's ratio {}", grid.shape_string(),
-                                      to_string(grid.boundary()), stress::body_number(body.body), nu));
+                                      to_string(grid.boundary()), stress::body_number(body.body), body.poisson_ratio));
     row("tractions", shear ? "pressure and shear (/shear_x, /shear_y)" : "pressure");
     row("depths", fmt::format("{} from {:.6g} m to {:.6g} m", depths.size(), depths.front(), depths.back()));
     const auto& m = maximum;

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "halfspace/io/result_writer.hpp"
+#include "halfspace/stress/stress_volume.hpp"
 
 namespace halfspace {
 namespace {
@@ -241,6 +242,21 @@ double slab_solve_memory_estimate(const Grid& grid, const solvers::SolverOptions
                                    : 0.0;
   return kProgramBytes + share * (2.0 * kDouble * g.cells() + solver_peak(grid, settings) + adhesive_form) +
          halo_deflation + kept_steps;
+}
+
+double solve_stress_memory_estimate(const Grid& grid, std::size_t depth_count, bool coated, bool shear,
+                                    bool body1_tractions) {
+  if (depth_count == 0) return 0.0;
+  const double cells = static_cast<double>(grid.size());
+  const double body1_shear = body1_tractions && shear ? 2.0 * kDouble * cells : 0.0;
+  return kProgramBytes + 6.0 * kDouble * cells + body1_shear + stress::stress_memory_estimate(grid, coated, shear);
+}
+
+double stress_command_memory_estimate(const Grid& grid, bool coated, bool shear, double share) {
+  // Pressure, or pressure and two shear tractions, twice, and body 1's two
+  // negated shear tractions: 2 or 8 arrays of doubles.
+  const double tractions = (shear ? 8.0 : 2.0) * kDouble * static_cast<double>(grid.size());
+  return kProgramBytes + share * (tractions + stress::stress_memory_estimate(grid, coated, shear));
 }
 
 double generate_memory_estimate(const Grid& grid) {

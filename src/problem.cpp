@@ -337,6 +337,14 @@ void Problem::check_grid(const Grid& grid, const OptionSpelling& spelling) const
   }
 }
 
+void Problem::check_padding(double pad_factor, const OptionSpelling& spelling) const {
+  if (pad_factor > 1.0 && loading.mode == ControlMode::mean_pressure) {
+    throw InputError(fmt::format(
+        "{} cannot be combined with {}: the mean pressure would be taken over the padded area; give {} instead",
+        spelling.describe("pad", format_number(pad_factor)), spelling.name("mean_pressure"), spelling.name("force")));
+  }
+}
+
 void Problem::check_heights(const Grid& grid, std::span<const double> heights, const OptionSpelling& spelling) const {
   if (loading.mode != ControlMode::approach || !grid.periodic() || heights.empty()) return;
   const Eigen::Map<const Eigen::ArrayXd> h(heights.data(), static_cast<Eigen::Index>(heights.size()));

@@ -140,6 +140,20 @@ TEST(ProblemTest, PeriodicApproachesStayBelowTheMeanGap) {
                           "approach=1e-07,6e-07 (value 2: 6e-07 m) is invalid for a periodic surface"));
 }
 
+// A padded map spreads a mean pressure over the padding too: refused with a
+// mean-pressure load, taken with a force.
+TEST(ProblemTest, APaddedMapTakesAForceButNoMeanPressure) {
+  EXPECT_NO_THROW(make_problem(sphere_problem()).check_padding(2.0));
+  ProblemOptions options = sphere_problem();
+  options.force.reset();
+  options.mean_pressure = std::vector<double>{1e5};
+  const Problem problem = make_problem(options);
+  EXPECT_NO_THROW(problem.check_padding(1.0));
+  EXPECT_TRUE(starts_with(refusal([&] { problem.check_padding(2.0); }),
+                          "pad=2 cannot be combined with mean_pressure: the mean pressure would be taken over the "
+                          "padded area; give force instead"));
+}
+
 // Both steel bodies, a force and friction with one tangential force step.
 ProblemOptions friction_problem() {
   ProblemOptions options;

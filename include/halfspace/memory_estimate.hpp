@@ -50,6 +50,21 @@ double solve_memory_estimate(const Grid& grid, const solvers::SolverOptions& set
 double slab_solve_memory_estimate(const Grid& grid, const solvers::SolverOptions& settings, std::size_t rows,
                                   std::size_t load_steps = 1);
 
+// Peak bytes while a solve's stresses are computed and written after it, at
+// `depth_count` depths (0: none asked, 0 bytes): kProgramBytes, the heights
+// and the result's fields (6 arrays) kept, the stress transforms and one
+// depth's fields (the depths go one at a time). `shear`: the result has shear
+// tractions (friction); `body1_tractions`: the stressed body is body 1, which
+// takes their negatives in two arrays of its own (stress::tractions_on).
+double solve_stress_memory_estimate(const Grid& grid, std::size_t depth_count, bool coated, bool shear,
+                                    bool body1_tractions);
+
+// Peak bytes of `halfspace stress` on a result of `grid`: kProgramBytes and,
+// of the cells this process holds (`share` of the grid: 1 on one process),
+// the tractions read twice (the reader's copy and the field), body 1's
+// negated shear and the stress transforms with one depth's fields.
+double stress_command_memory_estimate(const Grid& grid, bool coated, bool shear, double share = 1.0);
+
 // Peak bytes of `halfspace generate` on `grid`: kProgramBytes, the
 // synthesis transform of a self-affine surface and the heights (the
 // deterministic shapes need less).

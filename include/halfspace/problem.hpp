@@ -166,6 +166,10 @@ struct Problem : ProblemBody {
   // FrictionOptions::check_body: a coating on a periodic grid).
   // Throws InputError naming the option.
   void check_grid(const Grid& grid, const OptionSpelling& spelling = {}) const;
+  // The rule that needs the surface's preparation: a map padded for a free
+  // grid (`pad_factor` > 1) takes no mean-pressure load, which would be
+  // taken over the padded area too. Throws InputError naming both options.
+  void check_padding(double pad_factor, const OptionSpelling& spelling = {}) const;
   // Displacement control on a periodic grid: each approach below the mean
   // initial gap of `heights` (check_periodic_approach), named as an option.
   void check_heights(const Grid& grid, std::span<const double> heights, const OptionSpelling& spelling = {}) const;

@@ -85,14 +85,13 @@ void write_step(const Hdf5Node& group, const Grid& grid, std::string_view name, 
 void write_film_history(const std::filesystem::path& path, const Grid& grid, std::size_t steps,
                         const std::function<void(const FilmStepSink&)>& run,
                         const std::function<void(const Hdf5Node& root)>& fill_root) {
-  const std::size_t digits = std::max<std::size_t>(3, fmt::format("{}", steps).size());
   std::vector<std::array<double, kColumns.size()>> rows;
   std::string csv;
   const std::vector<char> image = hdf5_file_image(path, [&](const Hdf5Node& root) {
     {
       const Hdf5Node group = root.create_group("steps");
       run([&](const Step& s) {
-        write_step(group, grid, fmt::format("{:0{}}", s.step, digits), s);
+        write_step(group, grid, step_group_name(s.step, steps + 1), s);
         std::array<double, kColumns.size()> row{};
         for (std::size_t c = 0; c < kColumns.size(); ++c) row[c] = kColumns[c].value(s);
         rows.push_back(row);

@@ -46,11 +46,6 @@ std::string column_unit(const HistoryColumn& column, const Grid& grid) {
 }
 
 // "000", "001", ...: zero-padded so that names sort in step order.
-std::string step_name(std::size_t step, std::size_t steps) {
-  const std::size_t digits = std::max<std::size_t>(3, fmt::format("{}", steps - 1).size());
-  return fmt::format("{:0{}}", step, digits);
-}
-
 void check_field(std::string_view field, std::size_t step, Eigen::Index size, const Grid& grid) {
   check_field_size(fmt::format("write_friction_history: field '{}' of step {}", field, step),
                    static_cast<std::size_t>(size), grid);
@@ -79,7 +74,7 @@ void write_friction_history_contents(const Hdf5Node& root, const Grid& grid, std
   {
     const Hdf5Node group = root.create_group("steps");
     for (std::size_t k = 0; k < steps.size(); ++k) {
-      const Hdf5Node step = group.create_group(step_name(k, steps.size()));
+      const Hdf5Node step = group.create_group(step_group_name(k, steps.size()));
       write_tangential_fields(step, grid, steps[k], rows);
       write_tangential_attributes(step, steps[k]);
       if (!metadata.step_normals.empty()) {

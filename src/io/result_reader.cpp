@@ -15,6 +15,7 @@
 #include "hdf5_handle.hpp"
 #include "hdf5_stored_data.hpp"
 #include "hdf5_superblock.hpp"
+#include "hdf5_writing.hpp"
 #include "reader_support.hpp"
 
 namespace halfspace::io {
@@ -198,8 +199,8 @@ StoredResult read_result(const std::filesystem::path& path, int step) {
     if (chosen < 0 || chosen >= stored.steps) {
       reader.fail(fmt::format("step {} is out of range: the sweep has steps 0 to {}", step, stored.steps - 1));
     }
-    const int digits = std::max(3, static_cast<int>(fmt::format("{}", stored.steps - 1).size()));
-    stored.group = fmt::format("/steps/{:0{}}", chosen, digits);
+    stored.group =
+        "/steps/" + step_group_name(static_cast<std::size_t>(chosen), static_cast<std::size_t>(stored.steps));
   } else if (step >= 0) {
     reader.fail(fmt::format("step {} was asked for, but the file holds a single result", step));
   }

@@ -41,8 +41,7 @@ void attach_stress_group(ResultMetadata& metadata, const Grid& grid, const std::
     std::vector<double> depths;
   };
   const auto attached = std::make_shared<Attached>();
-  attached->stresses = coating ? std::make_unique<stress::SubsurfaceStress>(grid, *coating, layout, planning)
-                               : std::make_unique<stress::SubsurfaceStress>(grid, body.poisson_ratio, layout, planning);
+  attached->stresses = stress::make_subsurface_stress(grid, coating, body, layout, planning);
   attached->tractions = stress::tractions_on(body.body, on_body2, attached->body1_shear);
   attached->depths.assign(depths.begin(), depths.end());
   metadata.extra_groups = [attached](const Hdf5Node& root) {

@@ -29,11 +29,6 @@ void check_field(std::string_view field, std::size_t step, std::size_t size, con
 }
 
 // "000", "001", ...: zero-padded so that names sort in step order.
-std::string step_name(std::size_t step, std::size_t steps) {
-  const std::size_t digits = std::max<std::size_t>(3, fmt::format("{}", steps - 1).size());
-  return fmt::format("{:0{}}", step, digits);
-}
-
 std::string column_unit(const analysis::SummaryColumn& column, const Grid& grid, std::string_view load_mode) {
   const std::string_view force = grid.dimension() == 1 ? "N/m" : "N";
   if (column.name == "load") {
@@ -114,7 +109,7 @@ void write_sweep_contents(const Hdf5Node& root, const Grid& grid, std::span<cons
   {
     const Hdf5Node steps_group = root.create_group("steps");
     for (std::size_t k = 0; k < steps.size(); ++k) {
-      write_step(steps_group, step_name(k, steps.size()), grid, steps[k], rows);
+      write_step(steps_group, step_group_name(k, steps.size()), grid, steps[k], rows);
     }
   }
   write_summary_table(root, grid, steps, metadata.load_mode, rows);

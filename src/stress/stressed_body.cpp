@@ -67,4 +67,12 @@ StressedBodyChoice choose_stressed_body(std::optional<StressedBody> requested, s
       nu_option));
 }
 
+std::unique_ptr<SubsurfaceStress> make_subsurface_stress(const Grid& grid,
+                                                         const std::optional<LayeredMaterial>& coating,
+                                                         const StressedBodyChoice& body, const solvers::Layout& layout,
+                                                         FftPlanning planning) {
+  if (coating) return std::make_unique<SubsurfaceStress>(grid, *coating, layout, planning);
+  return std::make_unique<SubsurfaceStress>(grid, body.poisson_ratio, layout, planning);
+}
+
 }  // namespace halfspace::stress

@@ -5,10 +5,12 @@
 // (docs/theory.md, "Stresses under shear tractions").
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string_view>
 
 #include "halfspace/elastic_pair.hpp"
+#include "halfspace/stress/subsurface_stress.hpp"
 #include "halfspace/stress/surface_traction.hpp"
 
 namespace halfspace::stress {
@@ -39,5 +41,13 @@ struct StressedBodyChoice {
 StressedBodyChoice choose_stressed_body(std::optional<StressedBody> requested, std::optional<double> given,
                                         const std::optional<ElasticPair>& bodies, std::string_view body_option,
                                         std::string_view nu_option);
+
+// The stress field of the chosen body: the coated body's, each depth with
+// its layer's or substrate's constants, where `coating` is set; else the
+// homogeneous half-space of `body`'s Poisson's ratio.
+std::unique_ptr<SubsurfaceStress> make_subsurface_stress(const Grid& grid,
+                                                         const std::optional<LayeredMaterial>& coating,
+                                                         const StressedBodyChoice& body, const solvers::Layout& layout,
+                                                         FftPlanning planning = FftPlanning::estimate);
 
 }  // namespace halfspace::stress
