@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <span>
 #include <string>
@@ -47,6 +48,17 @@ inline Grid array_grid(const InputArray& heights, double dx, double dy, Boundary
   check_array_dimensions(heights, what);
   return heights.ndim() == 1 ? Grid::line(heights.shape(0), dx, boundary)
                              : Grid::plane(heights.shape(1), heights.shape(0), dx, dy, boundary);
+}
+
+// Refuses heights with a NaN or an infinity, naming the first one's index:
+// a contact or a film needs every height.
+inline void require_finite_heights(const InputArray& heights, std::string_view what) {
+  for (std::size_t k = 0; k < heights.size(); ++k) {
+    if (!std::isfinite(heights.data()[k])) {
+      throw InputError(fmt::format(
+          "{} has a non-finite height at index {}: prepare it first (HeightMap.prepare(invalid='fill'))", what, k));
+    }
+  }
 }
 
 // A new numpy array owning `field` (moved, not copied), shaped `shape`.

@@ -279,11 +279,8 @@ nb::object lubricate(const nb::object& heights_object, double dx, double dy, con
                      std::optional<int> threads) {
   const auto heights = nb::cast<InputArray>(heights_object, false);
   check_array_dimensions(heights, "the surface");
+  require_finite_heights(heights, "the surface");
   const Eigen::ArrayXd z = Eigen::Map<const Eigen::ArrayXd>(heights.data(), static_cast<Eigen::Index>(heights.size()));
-  if (!z.allFinite()) {
-    throw InputError(
-        "the surface has non-finite heights: a film needs every height (HeightMap.prepare(invalid='fill'))");
-  }
   const KeywordSpelling keywords;
   const LubricationProblem problem = make_lubrication_problem(
       options_from<LubricationProblemOptions>(given, lubrication_option_names(), "film option"), keywords);

@@ -83,12 +83,7 @@ ArraySurface surface_from(const nb::object& heights_object, double dx, double dy
   const auto heights = nb::cast<InputArray>(heights_object, false);
   const Boundary boundary = in_context("boundary", [&] { return parse_boundary(boundary_name); });
   Grid grid = array_grid(heights, dx, dy, boundary, "the surface");
-  for (std::size_t k = 0; k < heights.size(); ++k) {
-    if (!std::isfinite(heights.data()[k])) {
-      throw InputError(fmt::format(
-          "the surface has a non-finite height at index {}: prepare it first (HeightMap.prepare(invalid='fill'))", k));
-    }
-  }
+  require_finite_heights(heights, "the surface");
   return {std::move(grid), heights_object, values(heights)};
 }
 
