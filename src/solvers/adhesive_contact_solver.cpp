@@ -420,7 +420,35 @@ struct AdhesiveContactSolver::Impl {
     bool restart = true;
     double rho_old = 0.0;
     double alpha = 0.0;
+    bool recomputed = false;  // the last step failed its line search and recomputed the state
   };
+  // The state recomputed from v alone, as at the start: S v by its product
+  // (the steps update it and the energy by increments, which drift by
+  // rounding), the gradient, the periodic multiplier and the energy; the
+  // conjugate directions restart.
+  void recompute(Walk& walk) {
+    stiffness_times(x, sx);
+    ++walk.result.operator_applications;
+    make_gradient();
+    walk.free_shift = mean_shift();
+    walk.energy = 0.5 * dot(x, sx) + interaction_energy(x, nullptr, 0.0);
+    walk.recent.fill(walk.energy);
+    walk.restart = true;
+  }
+  // A line search that found no decrease: once, the state is recomputed and
+  // the walk goes on from there (true); a second time in a row it breaks
+  // down (false, the result says why).
+  bool after_failed_line_search(Walk& walk, int iteration, double residual) {
+    if (!walk.recomputed) {
+      recompute(walk);
+      walk.recomputed = true;
+      return true;
+    }
+    walk.result.status = SolveStatus::breakdown;
+    walk.result.message =
+        fmt::format("the line search found no decrease at iteration {} (residual {:.3g})", iteration, residual);
+    return false;
+  }
   // One iteration of either minimiser from the state in x, sx and gradient
   // at `residual`: true if it moved, false if it broke down (the result's
   // status and message then say why).
@@ -519,13 +547,8 @@ SolveResult AdhesiveContactSolver::Impl::solve_displacement(std::span<const doub
     result.message = "no displacement satisfies the constraints";
     return result;
   }
-  stiffness_times(x, sx);
-  result.operator_applications = 1;
-  make_gradient();
   Walk walk{result};
-  walk.free_shift = mean_shift();
-  walk.energy = 0.5 * dot(x, sx) + interaction_energy(x, nullptr, 0.0);
-  walk.recent.fill(walk.energy);
+  recompute(walk);
   walk.alpha = compliance;
   const double c = compliance;
   result.status = SolveStatus::iteration_limit;
@@ -553,7 +576,7 @@ SolveResult AdhesiveContactSolver::Impl::solve_displacement(std::span<const doub
 }
 
 bool AdhesiveContactSolver::Impl::conjugate_gradient_step(Walk& walk, int iteration, double residual) {
-  auto& [result, energy, recent, free_shift, restart, rho_old, alpha] = walk;
+  auto& [result, energy, recent, free_shift, restart, rho_old, alpha, recomputed] = walk;
   const std::size_t m = size();
   const double c = compliance;
   // Preconditioned non-linear conjugate gradients on the free cells
@@ -669,12 +692,8 @@ bool AdhesiveContactSolver::Impl::conjugate_gradient_step(Walk& walk, int iterat
     step *= 0.5;
   }
   const double trial_energy = energy + change;
-  if (backtracks >= kMaxBacktracks) {
-    result.status = SolveStatus::breakdown;
-    result.message =
-        fmt::format("the line search found no decrease at iteration {} (residual {:.3g})", iteration, residual);
-    return false;
-  }
+  if (backtracks >= kMaxBacktracks) return after_failed_line_search(walk, iteration, residual);
+  recomputed = false;
   const bool refresh = !clipped && (iteration + 1) % kRefreshEvery == 0;
   if (refresh) {
     x = trial;
@@ -703,7 +722,7 @@ bool AdhesiveContactSolver::Impl::conjugate_gradient_step(Walk& walk, int iterat
 }
 
 bool AdhesiveContactSolver::Impl::spectral_gradient_step(Walk& walk, int iteration, double residual) {
-  auto& [result, energy, recent, free_shift, restart, rho_old, alpha] = walk;
+  auto& [result, energy, recent, free_shift, restart, rho_old, alpha, recomputed] = walk;
   const std::size_t m = size();
   const double c = compliance;
   const double alpha_min = 1e-10 * c;
@@ -738,12 +757,8 @@ bool AdhesiveContactSolver::Impl::spectral_gradient_step(Walk& walk, int iterati
     double next = curvature > 0.0 ? -0.5 * slope * step * step / curvature : 0.5 * step;
     step = std::clamp(next, 0.1 * step, 0.5 * step);
   }
-  if (backtracks >= kMaxBacktracks) {
-    result.status = SolveStatus::breakdown;
-    result.message =
-        fmt::format("the line search found no decrease at iteration {} (residual {:.3g})", iteration, residual);
-    return false;
-  }
+  if (backtracks >= kMaxBacktracks) return after_failed_line_search(walk, iteration, residual);
+  recomputed = false;
   // s = step d, y = G_new - G; the Barzilai-Borwein step s.s / s.y.
   if (step == 1.0) {
     x = trial;
