@@ -25,6 +25,7 @@
 #include <optional>
 #include <vector>
 
+#include "film_newton.hpp"
 #include "halfspace/error.hpp"
 #include "halfspace/lubrication/cavitation_solver.hpp"
 #include "halfspace/lubrication/reynolds_stencil.hpp"
@@ -131,10 +132,6 @@ constexpr double kThickFilm = 8.0;
 // times the thinnest fluid film (at least kFilmFloorShare of H).
 constexpr double kLargestStep = 0.5;
 constexpr double kFilmFloorShare = 0.05;
-// The clipped step's tries (1, 1/2, 1/4 of it) before the scaled step's.
-constexpr int kClippedHalvings = 3;
-// The loosest relative tolerance of a GMRES step (far from the solution).
-constexpr double kLargestForcing = 1e-2;
 // A GMRES step that stops short of its forcing term (the iteration limit)
 // is still taken, far from the solution (a residual norm of at least
 // kLargestForcing), if it lowers the linear model's residual below this
@@ -338,9 +335,6 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
   std::vector<char> closed(n, 0);  // contact rows on the h branch
   double mass_scale = 1.0;
 
-  struct Measure {
-    double norm = 0.0, mass = 0.0, load = 0.0, contact = 0.0;
-  };
   const auto measure = [&](const State& state, Eigen::VectorXd& out, bool linearise_too) {
     coefficients.update(laws, eta0, state.fluid, state.reynolds_film);
     double couette = 0.0;
@@ -350,7 +344,7 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
                                         state.reynolds_film[static_cast<Eigen::Index>(k)]);
       }
     }
-    Measure result_measure;
+    detail::FilmMeasure result_measure;
     double largest = 0.0;
     const bool dense_too = linearise_too && !krylov;
     const bool rows_too = linearise_too && krylov;
@@ -456,11 +450,6 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
     }
     mass_scale = couette;
   };
-  const double smallest_tolerance = std::min({options.tolerance, options.load_tolerance, options.contact_tolerance});
-  const auto converged = [&](const Measure& measured) {
-    return measured.mass <= options.tolerance && measured.load <= options.load_tolerance &&
-           measured.contact <= options.contact_tolerance;
-  };
 
   evaluate(x);
   scale_masses();
@@ -469,175 +458,120 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
   // cold, with a quarter of the steps: where it fails the dry and thick
   // starts failed too on the rough point contacts measured (32^2, 64^2:
   // 134 steps spent), and the speed continuation from a faster film is the
-  // cheaper way on (solve_mixed_film).
+  // cheaper way on (solve_mixed_film). Each start but the last gets an
+  // equal share of the steps.
   const std::size_t attempts = given_start || !load_control || krylov ? 1 : kStarts.size();
   const int cold_budget = krylov && !given_start && load_control
                               ? std::max(1, options.max_iterations / kKrylovColdShare)
                               : options.max_iterations;
-  int steps = 0;
-  for (std::size_t attempt = 0; attempt < attempts; ++attempt) {
-    if (attempt > 0) {
-      set_start(kStarts[attempt]);
-      evaluate(x);
-      scale_masses();
+  // The film's differences from the EHL film's Newton iteration: the
+  // contact rows' tolerance, Eisenstat & Walker's forcing term, a refused
+  // step counted (the continuations add the steps of every solve), up to
+  // three starts, the step's branches and the clipped step on point
+  // contacts.
+  detail::FilmNewton newton;
+  newton.rules = {
+      .words = {.solver = "the mixed film's", .film = "the mixed film", .krylov_step = "the mixed film's "},
+      .tolerances = {.mass = options.tolerance, .load = options.load_tolerance, .contact = options.contact_tolerance},
+      .forcing = detail::FilmForcing::eisenstat_walker,
+      .krylov = krylov,
+      .krylov_tolerance = options.krylov_tolerance,
+      .counts_refused_steps = true,
+      .starts = attempts,
+      .share = std::max(1, options.max_iterations / static_cast<int>(attempts)),
+      .limit = cold_budget};
+  newton.measure = [&] { return measure(x, residual, false); };
+  newton.lay_start = [&](std::size_t attempt) {
+    set_start(kStarts[attempt]);
+    evaluate(x);
+    scale_masses();
+    return true;
+  };
+  // A branch pass's GMRES (and the tight solve's) goes on from the last
+  // solve's step of this Newton step: they differ in a few rows.
+  bool warm = false;
+  newton.solve = [&](const detail::FilmMeasure& current, double forcing, bool tight) {
+    detail::FilmNewtonSolve outcome;
+    if (!tight) warm = false;
+    for (std::size_t j = 0; j < n; ++j) {
+      const auto jj = static_cast<Eigen::Index>(j);
+      branch_full[j] = x.s[jj] >= 0.0 ? 1 : 0;
+      closed[j] = x.film[jj] / H < x.q[jj] ? 1 : 0;
+      rows.open_film[j] = x.film[jj] > hb ? 1 : 0;
     }
-    // Each start but the last gets an equal share of the steps.
-    const int budget = attempt + 1 == attempts ? cold_budget - steps
-                                               : std::max(1, options.max_iterations / static_cast<int>(attempts));
-    result.status = FilmStatus::failure;
-    result.message.clear();
-    Measure current = measure(x, residual, false);
-    // The forcing term's history (newton_forcing): this start's steps only.
-    double previous_norm = 0.0, forcing = kLargestForcing;
-    for (int iteration = 0;; ++iteration) {
-      if (converged(current)) {
-        result.status = FilmStatus::converged;
-        break;
-      }
-      if (!std::isfinite(current.norm)) {
-        result.message = fmt::format("the mixed film's Newton iteration diverged after {} steps", steps);
-        break;
-      }
-      if (iteration == budget) {
-        result.status = FilmStatus::iteration_limit;
-        result.message = fmt::format(
-            "the mixed film did not converge in {} Newton steps: relative mass residual {:.3g} (tolerance {:.3g}), "
-            "load error {:.3g} (tolerance {:.3g}), contact residual {:.3g} (tolerance {:.3g})",
-            steps, current.mass, options.tolerance, current.load, options.load_tolerance, current.contact,
-            options.contact_tolerance);
-        break;
-      }
-      // An inexact Newton step on the GMRES path (Dembo, Eisenstat &
-      // Steihaug 1982): GMRES to the forcing term, solved again to
-      // krylov_tolerance when no step along the loose direction lowers the
-      // residual (as the EHL film does).
-      forcing = detail::newton_forcing(current.norm, previous_norm, forcing, kLargestForcing, smallest_tolerance);
-      previous_norm = current.norm;
-      const bool short_steps_taken = current.norm >= kLargestForcing;
-      bool accepted = false, failed = false;
-      Measure tried;
-      // A branch pass's GMRES (and the tight solve's) goes on from the last
-      // solve's step of this Newton step: they differ in a few rows.
-      bool warm = false;
-      for (const bool tight : {false, true}) {
-        if (tight && !(krylov && forcing > options.krylov_tolerance)) break;
+    if (!krylov) {
+      for (int pass = 0; pass < detail::kBranchPasses; ++pass) {
+        const auto linearise_rows = [&] {
+          measure(x, residual, true);
+          contact_residuals(x, H, closed, residual);
+        };
+        outcome.solved =
+            detail::branch_consistent_step(linearise_rows, topology, x.s, jacobian_t, residual, lu, step, branch_full);
+        if (!outcome.solved || pass + 1 == detail::kBranchPasses || !step_branches) break;
+        // dh = K (dp_f + dp_c) + dh0 with the dense K.
+        pressure_change = P * step.segment(ni, ni);
         for (std::size_t j = 0; j < n; ++j) {
           const auto jj = static_cast<Eigen::Index>(j);
-          branch_full[j] = x.s[jj] >= 0.0 ? 1 : 0;
-          closed[j] = x.film[jj] / H < x.q[jj] ? 1 : 0;
-          rows.open_film[j] = x.film[jj] > hb ? 1 : 0;
+          if (!topology.fixed(j) && branch_full[j] != 0) pressure_change[jj] += P * step[jj];
         }
-        if (krylov) {
-          // The rows do not depend on the branches: linearised once, then
-          // one GMRES solve per branch pass.
-          measure(x, residual, true);
-          const detail::MixedScales scales{P, H, mass_scale, load_control ? area / w : 0.0, load_control};
-          int step_iterations = 0;
-          std::string krylov_message;
-          const double step_forcing = tight ? 0.0 : forcing;
-          const auto gmres_solve = [&] {
-            const detail::KrylovOutcome outcome =
-                krylov_solver->solve(rows, branch_full, closed, scales, step_forcing, residual, step, warm);
-            warm = outcome.converged;
-            step_iterations += outcome.iterations;
-            krylov_message = outcome.message;
-            return outcome.converged || (short_steps_taken && outcome.relative_residual <= kLoosestLinearResidual);
-          };
-          bool solved = true;
-          for (int pass = 0; pass < detail::kBranchPasses; ++pass) {
-            solved = detail::branch_consistent_step_with(gmres_solve, topology, x.s, step, branch_full);
-            if (!solved || pass + 1 == detail::kBranchPasses || !step_branches) break;
-            krylov_solver->film_change(step, film_change);
-            if (!take_step_branches(x, hb, H, step, film_change, closed, rows.open_film)) break;
-            contact_residuals(x, H, closed, residual);
-          }
-          result.krylov_iterations += step_iterations;
-          result.max_krylov_iterations_per_step = std::max(result.max_krylov_iterations_per_step, step_iterations);
-          if (!solved) {
-            result.message = fmt::format("the mixed film's Newton step {}: {}", steps + 1, krylov_message);
-            failed = true;
-            break;
-          }
-        } else {
-          bool solved = true;
-          for (int pass = 0; pass < detail::kBranchPasses; ++pass) {
-            const auto linearise_rows = [&] {
-              measure(x, residual, true);
-              contact_residuals(x, H, closed, residual);
-            };
-            solved = detail::branch_consistent_step(linearise_rows, topology, x.s, jacobian_t, residual, lu, step,
-                                                    branch_full);
-            if (!solved || pass + 1 == detail::kBranchPasses || !step_branches) break;
-            // dh = K (dp_f + dp_c) + dh0 with the dense K.
-            pressure_change = P * step.segment(ni, ni);
-            for (std::size_t j = 0; j < n; ++j) {
-              const auto jj = static_cast<Eigen::Index>(j);
-              if (!topology.fixed(j) && branch_full[j] != 0) pressure_change[jj] += P * step[jj];
-            }
-            film_change.noalias() = k_matrix * pressure_change;
-            if (load_control) film_change.array() += step[h0];
-            if (!take_step_branches(x, hb, H, step, film_change, closed, rows.open_film)) break;
-          }
-          if (!solved) {
-            result.message = fmt::format("the mixed film's Newton step {} is singular", steps + 1);
-            failed = true;
-            break;
-          }
-        }
-        const double largest_change = step.head(2 * ni).cwiseAbs().maxCoeff();
-        double lambda = std::min(1.0, kLargestStep / std::max(largest_change, 1e-300));
-        // h0 by at most kLargestStep times the thinnest film.
-        const double offset_cap =
-            kLargestStep * std::max(x.film.maxCoeff() > 0.0 ? x.reynolds_film.minCoeff() : 0.0, kFilmFloorShare * H);
-        if (load_control) lambda = std::min(lambda, offset_cap / std::max(std::abs(step[h0]), 1e-300));
-        // Where the trust region would shorten the whole step for a few
-        // entries (contact cells, whose fluid pressure the h_b film barely
-        // constrains, asking for tens of pressure scales), first the step
-        // with each entry clipped to the trust region, the rest whole, and
-        // its halves; the line search judges them as the scaled step.
-        if (lambda < 1.0 && step_branches) {
-          clipped.head(2 * ni) = step.head(2 * ni).cwiseMax(-kLargestStep).cwiseMin(kLargestStep);
-          if (load_control) clipped[h0] = std::clamp(step[h0], -offset_cap, offset_cap);
-          for (int halving = 0; halving < kClippedHalvings && !accepted; ++halving) {
-            const double mu = std::ldexp(1.0, -halving);
-            trial.s = x.s + mu * clipped.head(ni).array();
-            trial.q = x.q + mu * clipped.segment(ni, ni).array();
-            trial.offset = load_control ? x.offset + mu * clipped[h0] : x.offset;
-            if (!evaluate(trial)) continue;
-            tried = measure(trial, trial_residual, false);
-            accepted = std::isfinite(tried.norm) && tried.norm <= (1.0 - 1e-4 * mu * lambda) * current.norm;
-          }
-          if (accepted) break;
-        }
-        for (int halving = 0; halving <= 30; ++halving, lambda *= 0.5) {
-          trial.s = x.s + lambda * step.head(ni).array();
-          trial.q = x.q + lambda * step.segment(ni, ni).array();
-          trial.offset = load_control ? x.offset + lambda * step[h0] : x.offset;
-          if (!evaluate(trial)) continue;
-          tried = measure(trial, trial_residual, false);
-          if (std::isfinite(tried.norm) && tried.norm <= (1.0 - 1e-4 * lambda) * current.norm) {
-            accepted = true;
-            break;
-          }
-          ++result.line_search_halvings;
-        }
-        if (accepted) break;
+        film_change.noalias() = k_matrix * pressure_change;
+        if (load_control) film_change.array() += step[h0];
+        if (!take_step_branches(x, hb, H, step, film_change, closed, rows.open_film)) break;
       }
-      ++steps;
-      if (failed) break;
-      if (!accepted) {
-        result.message = fmt::format(
-            "the mixed film's Newton iteration stalled at step {}: no step along the Newton direction lowers the "
-            "residual (relative mass residual {:.3g}, load error {:.3g}, contact residual {:.3g})",
-            steps, current.mass, current.load, current.contact);
-        break;
-      }
-      std::swap(x, trial);
-      current = tried;
+      return outcome;
     }
-    if (result.converged()) break;
-  }
-  result.iterations = steps;
+    // The rows do not depend on the branches: linearised once, then one
+    // GMRES solve per branch pass.
+    measure(x, residual, true);
+    const detail::MixedScales scales{P, H, mass_scale, load_control ? area / w : 0.0, load_control};
+    const bool short_steps_taken = current.norm >= detail::kLargestForcing;
+    const auto gmres_solve = [&] {
+      const detail::KrylovOutcome solved =
+          krylov_solver->solve(rows, branch_full, closed, scales, forcing, residual, step, warm);
+      warm = solved.converged;
+      outcome.krylov_iterations += solved.iterations;
+      outcome.krylov_message = solved.message;
+      return solved.converged || (short_steps_taken && solved.relative_residual <= kLoosestLinearResidual);
+    };
+    for (int pass = 0; pass < detail::kBranchPasses; ++pass) {
+      outcome.solved = detail::branch_consistent_step_with(gmres_solve, topology, x.s, step, branch_full);
+      if (!outcome.solved || pass + 1 == detail::kBranchPasses || !step_branches) break;
+      krylov_solver->film_change(step, film_change);
+      if (!take_step_branches(x, hb, H, step, film_change, closed, rows.open_film)) break;
+      contact_residuals(x, H, closed, residual);
+    }
+    return outcome;
+  };
+  // s and q by at most kLargestStep, h0 by at most kLargestStep times the
+  // thinnest film.
+  const auto offset_cap = [&] {
+    return kLargestStep * std::max(x.film.maxCoeff() > 0.0 ? x.reynolds_film.minCoeff() : 0.0, kFilmFloorShare * H);
+  };
+  newton.trust_region = [&] {
+    const double largest_change = step.head(2 * ni).cwiseAbs().maxCoeff();
+    const double lambda = std::min(1.0, kLargestStep / std::max(largest_change, 1e-300));
+    return load_control ? std::min(lambda, offset_cap() / std::max(std::abs(step[h0]), 1e-300)) : lambda;
+  };
+  // Where the trust region would shorten the whole step for a few entries
+  // (contact cells, whose fluid pressure the h_b film barely constrains,
+  // asking for tens of pressure scales), first the step with each entry
+  // clipped to the trust region, the rest whole, and its halves.
+  newton.clip = [&](double lambda) {
+    if (!(lambda < 1.0 && step_branches)) return false;
+    clipped.head(2 * ni) = step.head(2 * ni).cwiseMax(-kLargestStep).cwiseMin(kLargestStep);
+    if (load_control) clipped[h0] = std::clamp(step[h0], -offset_cap(), offset_cap());
+    return true;
+  };
+  newton.try_step = [&](double scale, bool clip) -> std::optional<detail::FilmMeasure> {
+    const Eigen::VectorXd& along = clip ? clipped : step;
+    trial.s = x.s + scale * along.head(ni).array();
+    trial.q = x.q + scale * along.segment(ni, ni).array();
+    trial.offset = load_control ? x.offset + scale * along[h0] : x.offset;
+    if (!evaluate(trial)) return std::nullopt;
+    return measure(trial, trial_residual, false);
+  };
+  newton.accept = [&] { std::swap(x, trial); };
+  detail::run_film_newton(newton, result);
   result.used_krylov = krylov;
   result.entrainment_speed = std::hypot(conditions.entrainment_velocity[0], conditions.entrainment_velocity[1]);
 
