@@ -336,83 +336,51 @@ ElasticFilm detail::solve_film_newton(InfluenceOperator& op, const Eigen::ArrayX
   // and the measured relative residuals.
   const auto measure = [&](const State& state, Eigen::VectorXd& out, bool linearise_too) {
     coefficients.update(laws, eta0, state.pressure, state.film);
-    double couette = 0.0;
-    for (std::size_t k = 0; k < n; ++k) {
-      if (!topology.fixed(k)) {
-        couette =
-            std::max(couette, (topology.couette_x() + topology.couette_y()) * coefficients.rho[k] * state.film[k]);
-      }
-    }
-    detail::FilmMeasure m;
-    double largest = 0.0;
     const bool dense_too = linearise_too && !krylov;
     if (dense_too) jacobian_t.setZero();
-    if (linearise_too && krylov) rows.terms.clear();
-    for (std::size_t k = 0; k < n; ++k) {
-      const auto kk = static_cast<Eigen::Index>(k);
-      if (linearise_too && krylov) rows.start[k] = rows.terms.size();
-      if (topology.fixed(k)) {
-        out[kk] = 0.0;
-        if (dense_too) jacobian_t(kk, kk) = 1.0;
-        continue;
-      }
-      const double balance =
-          linearise(topology, k, coefficients, state.pressure, state.theta, state.film, second_order, terms);
-      largest = std::max(largest, std::abs(balance));
-      out[kk] = balance / mass_scale;
-      if (linearise_too && krylov) rows.terms.insert(rows.terms.end(), terms.begin(), terms.end());
-      if (!dense_too) continue;
-      auto column = jacobian_t.col(kk);
-      double by_offset = 0.0;
-      for (const LocalTerm& t : terms) {
-        const auto node = static_cast<Eigen::Index>(t.node);
-        if (t.by_film != 0.0) column.head(ni) += (t.by_film / mass_scale) * k_matrix.col(node);
-        by_offset += t.by_film;
-        column[node] += t.by_pressure / mass_scale;
-      }
-      column[ni] = by_offset / mass_scale;
-    }
+    detail::FilmMeasure m;
+    m.mass = detail::mass_rows(topology, coefficients, state.pressure, state.theta, state.film, second_order,
+                               mass_scale, terms, out, linearise_too && krylov ? &rows : nullptr,
+                               [&](std::size_t k, const std::vector<LocalTerm>& row_terms) {
+                                 if (!dense_too) return;
+                                 auto column = jacobian_t.col(static_cast<Eigen::Index>(k));
+                                 double by_offset = 0.0;
+                                 for (const LocalTerm& t : row_terms) {
+                                   const auto node = static_cast<Eigen::Index>(t.node);
+                                   if (t.by_film != 0.0) {
+                                     column.head(ni) += (t.by_film / mass_scale) * k_matrix.col(node);
+                                   }
+                                   by_offset += t.by_film;
+                                   column[node] += t.by_pressure / mass_scale;
+                                 }
+                                 column[ni] = by_offset / mass_scale;
+                               });
     const double load = state.pressure.sum() * area;
     out[ni] = (load - w) / w;
-    m.mass = largest / (couette > 0.0 ? couette : 1.0);
     m.load = std::abs(load - w) / w;
     m.norm = out.norm();
-    if (linearise_too && krylov) rows.start[n] = rows.terms.size();
-    if (dense_too) {
-      // Columns of J are rows of J^T: scale by dp/ds, then add d theta / ds.
-      for (std::size_t j = 0; j < n; ++j) {
-        const auto jj = static_cast<Eigen::Index>(j);
-        const bool fixed = topology.fixed(j);
-        const bool full = !fixed && branch_full[j] != 0;
-        if (fixed) {
-          jacobian_t.row(jj).setZero();
-          jacobian_t(jj, jj) = 1.0;
-        } else {
-          jacobian_t.row(jj) *= full ? pressure_scale : 0.0;
-        }
-        jacobian_t(jj, ni) = full ? pressure_scale * area / w : 0.0;
+    if (!dense_too) return m;
+    // Columns of J are rows of J^T: scale by dp/ds, then add d theta / ds.
+    for (std::size_t j = 0; j < n; ++j) {
+      const auto jj = static_cast<Eigen::Index>(j);
+      const bool fixed = topology.fixed(j);
+      const bool full = !fixed && branch_full[j] != 0;
+      if (fixed) {
+        jacobian_t.row(jj).setZero();
+        jacobian_t(jj, jj) = 1.0;
+      } else {
+        jacobian_t.row(jj) *= full ? pressure_scale : 0.0;
       }
-      for (std::size_t k = 0; k < n; ++k) {
-        if (topology.fixed(k)) continue;
-        linearise(topology, k, coefficients, state.pressure, state.theta, state.film, second_order, terms);
-        for (const LocalTerm& t : terms) {
-          const auto node = static_cast<Eigen::Index>(t.node);
-          if (!topology.fixed(t.node) && branch_full[t.node] == 0) {
-            jacobian_t(node, static_cast<Eigen::Index>(k)) += t.by_fraction / mass_scale;
-          }
-        }
-      }
+      jacobian_t(jj, ni) = full ? pressure_scale * area / w : 0.0;
     }
+    detail::add_fraction_columns(topology, coefficients, state.pressure, state.theta, state.film, second_order,
+                                 mass_scale, branch_full, terms, jacobian_t);
     return m;
   };
 
   // The mass rows' scale: the largest Couette outflow of the start.
-  const auto scale_masses = [&]() {
-    double couette = 0.0;
-    for (std::size_t k = 0; k < n; ++k) {
-      if (!topology.fixed(k)) couette = std::max(couette, (topology.couette_x() + topology.couette_y()) * x.film[k]);
-    }
-    mass_scale = couette;
+  const auto scale_masses = [&] {
+    mass_scale = detail::largest_couette_outflow(topology, Eigen::ArrayXd::Ones(ni), x.film);
   };
   scale_masses();
 

@@ -31,8 +31,9 @@ std::string residuals(const FilmTolerances& tolerances, const FilmMeasure& measu
     if (tolerances.contact) text += fmt::format(", contact residual {:.3g}", measured.contact);
     return text;
   }
-  std::string text = fmt::format("relative mass residual {:.3g} (tolerance {:.3g}), load error {:.3g} (tolerance {:.3g})",
-                                 measured.mass, tolerances.mass, measured.load, tolerances.load);
+  std::string text =
+      fmt::format("relative mass residual {:.3g} (tolerance {:.3g}), load error {:.3g} (tolerance {:.3g})",
+                  measured.mass, tolerances.mass, measured.load, tolerances.load);
   if (tolerances.contact) {
     text += fmt::format(", contact residual {:.3g} (tolerance {:.3g})", measured.contact, *tolerances.contact);
   }
@@ -85,12 +86,12 @@ int run_film_newton(const FilmNewton& newton, NewtonFilmResult& result) {
         if (tight) ++tight_retries;
         const FilmNewtonSolve solve = newton.solve(current, tight ? 0.0 : forcing, tight);
         result.krylov_iterations += solve.krylov_iterations;
-        result.max_krylov_iterations_per_step = std::max(result.max_krylov_iterations_per_step, solve.krylov_iterations);
+        result.max_krylov_iterations_per_step =
+            std::max(result.max_krylov_iterations_per_step, solve.krylov_iterations);
         if (!solve.solved) {
-          result.message =
-              rules.krylov
-                  ? fmt::format("{}Newton step {}: {}", rules.words.krylov_step, steps + 1, solve.krylov_message)
-                  : fmt::format("{} Newton step {} is singular", rules.words.solver, steps + 1);
+          result.message = rules.krylov ? fmt::format("{}Newton step {}: {}", rules.words.krylov_step, steps + 1,
+                                                      solve.krylov_message)
+                                        : fmt::format("{} Newton step {} is singular", rules.words.solver, steps + 1);
           failed = true;
           break;
         }
@@ -104,8 +105,8 @@ int run_film_newton(const FilmNewton& newton, NewtonFilmResult& result) {
             const std::optional<FilmMeasure> measured = newton.try_step(mu, true);
             if (!measured) continue;
             tried = *measured;
-            accepted = std::isfinite(tried.norm) &&
-                       tried.norm <= (1.0 - kSufficientDecrease * mu * lambda) * current.norm;
+            accepted =
+                std::isfinite(tried.norm) && tried.norm <= (1.0 - kSufficientDecrease * mu * lambda) * current.norm;
           }
           if (accepted) break;
         }

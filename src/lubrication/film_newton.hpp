@@ -53,8 +53,8 @@ struct FilmNewtonRules {
   FilmNewtonWords words;
   FilmTolerances tolerances;
   FilmForcing forcing = FilmForcing::residual_norm;
-  bool krylov = false;             // GMRES steps (else the dense LU's)
-  double krylov_tolerance = 0.0;   // the tight solve's
+  bool krylov = false;                // GMRES steps (else the dense LU's)
+  double krylov_tolerance = 0.0;      // the tight solve's
   bool counts_refused_steps = false;  // a step the solve or line search refuses counts as a step
   std::size_t starts = 1;
   int share = 0;  // steps a start but the last gets before the next takes over (0: no hand-over)

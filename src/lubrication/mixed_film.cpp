@@ -337,46 +337,27 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
 
   const auto measure = [&](const State& state, Eigen::VectorXd& out, bool linearise_too) {
     coefficients.update(laws, eta0, state.fluid, state.reynolds_film);
-    double couette = 0.0;
-    for (std::size_t k = 0; k < n; ++k) {
-      if (!topology.fixed(k)) {
-        couette = std::max(couette, (topology.couette_x() + topology.couette_y()) * coefficients.rho[k] *
-                                        state.reynolds_film[static_cast<Eigen::Index>(k)]);
-      }
-    }
     detail::FilmMeasure result_measure;
-    double largest = 0.0;
     const bool dense_too = linearise_too && !krylov;
-    const bool rows_too = linearise_too && krylov;
     if (dense_too) jacobian_t.setZero();
-    if (rows_too) rows.terms.clear();
-    for (std::size_t k = 0; k < n; ++k) {
-      const auto kk = static_cast<Eigen::Index>(k);
-      if (rows_too) rows.start[k] = rows.terms.size();
-      if (topology.fixed(k)) {
-        out[kk] = 0.0;
-        continue;
-      }
-      const double balance =
-          linearise(topology, k, coefficients, state.fluid, state.theta, state.reynolds_film, second_order, terms);
-      largest = std::max(largest, std::abs(balance));
-      out[kk] = balance / mass_scale;
-      if (rows_too) rows.terms.insert(rows.terms.end(), terms.begin(), terms.end());
-      if (!dense_too) continue;
-      // Per unit pressure: the local d/dp_f in the s block, the film's
-      // d/dp (through K, for p_f and p_c alike) in the q block.
-      auto column = jacobian_t.col(kk);
-      double by_offset = 0.0;
-      for (const LocalTerm& t : terms) {
-        const auto node = static_cast<Eigen::Index>(t.node);
-        column[node] += t.by_pressure / mass_scale;
-        if (t.by_film != 0.0 && rows.open_film[t.node] != 0) {
-          column.segment(ni, ni) += (t.by_film / mass_scale) * k_matrix.col(node);
-          by_offset += t.by_film;
-        }
-      }
-      if (load_control) column[h0] = by_offset / mass_scale;
-    }
+    // Per unit pressure: the local d/dp_f in the s block, the film's d/dp
+    // (through K, for p_f and p_c alike) in the q block.
+    result_measure.mass = detail::mass_rows(
+        topology, coefficients, state.fluid, state.theta, state.reynolds_film, second_order, mass_scale, terms, out,
+        linearise_too && krylov ? &rows : nullptr, [&](std::size_t k, const std::vector<LocalTerm>& row_terms) {
+          if (!dense_too) return;
+          auto column = jacobian_t.col(static_cast<Eigen::Index>(k));
+          double by_offset = 0.0;
+          for (const LocalTerm& t : row_terms) {
+            const auto node = static_cast<Eigen::Index>(t.node);
+            column[node] += t.by_pressure / mass_scale;
+            if (t.by_film != 0.0 && rows.open_film[t.node] != 0) {
+              column.segment(ni, ni) += (t.by_film / mass_scale) * k_matrix.col(node);
+              by_offset += t.by_film;
+            }
+          }
+          if (load_control) column[h0] = by_offset / mass_scale;
+        });
     double contact = 0.0;
     for (Eigen::Index k = 0; k < ni; ++k) {
       const double row = std::min(state.q[k], state.film[k] / H);
@@ -385,11 +366,9 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
     }
     const double load = (state.fluid + state.contact).sum() * area;
     if (load_control) out[h0] = (load - w) / w;
-    result_measure.mass = largest / (couette > 0.0 ? couette : 1.0);
     result_measure.load = load_control ? std::abs(load - w) / w : 0.0;
     result_measure.contact = contact;
     result_measure.norm = out.norm();
-    if (rows_too) rows.start[n] = rows.terms.size();
     if (!dense_too) return result_measure;
     // Rows of J^T are the unknowns: s_j from the pressure rows (zero where
     // s_j is cavitated or the node fixed), q_j = P times the film block.
@@ -404,15 +383,8 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
       }
       jacobian_t.row(ni + jj) *= P;
     }
-    for (std::size_t k = 0; k < n; ++k) {
-      if (topology.fixed(k)) continue;
-      linearise(topology, k, coefficients, state.fluid, state.theta, state.reynolds_film, second_order, terms);
-      for (const LocalTerm& t : terms) {
-        if (!topology.fixed(t.node) && branch_full[t.node] == 0) {
-          jacobian_t(static_cast<Eigen::Index>(t.node), static_cast<Eigen::Index>(k)) += t.by_fraction / mass_scale;
-        }
-      }
-    }
+    detail::add_fraction_columns(topology, coefficients, state.fluid, state.theta, state.reynolds_film, second_order,
+                                 mass_scale, branch_full, terms, jacobian_t);
     // The contact rows: open ones fix q, closed ones the film.
     for (std::size_t k = 0; k < n; ++k) {
       const auto kk = static_cast<Eigen::Index>(k);
@@ -440,15 +412,8 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
     return result_measure;
   };
 
-  const auto scale_masses = [&]() {
-    double couette = 0.0;
-    for (std::size_t k = 0; k < n; ++k) {
-      if (!topology.fixed(k)) {
-        couette = std::max(
-            couette, (topology.couette_x() + topology.couette_y()) * x.reynolds_film[static_cast<Eigen::Index>(k)]);
-      }
-    }
-    mass_scale = couette;
+  const auto scale_masses = [&] {
+    mass_scale = detail::largest_couette_outflow(topology, Eigen::ArrayXd::Ones(ni), x.reynolds_film);
   };
 
   evaluate(x);
