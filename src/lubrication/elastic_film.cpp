@@ -469,15 +469,7 @@ ElasticFilm detail::solve_film_newton(InfluenceOperator& op, const Eigen::ArrayX
   result.relative_residual =
       elastic_film_residual(grid, conditions, laws, x.film, x.pressure, x.theta, options.couette_scheme);
   result.load_error = std::abs(result.load - w) / w;
-  if (result.converged()) {
-    if (!(result.relative_residual <= 10.0 * options.tolerance && result.load_error <= 10.0 * options.load_tolerance &&
-          satisfies_complementarity(x.pressure, x.theta))) {
-      result.status = FilmStatus::failure;
-      result.message = fmt::format(
-          "the EHL check failed after the Newton iteration stopped: relative mass residual {:.3g}, load error {:.3g}",
-          result.relative_residual, result.load_error);
-    }
-  }
+  detail::check_after_newton(newton.rules, 0.0, satisfies_complementarity(x.pressure, x.theta), result);
   result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return result;
 }

@@ -26,17 +26,13 @@ bool converged(const FilmTolerances& tolerances, const FilmMeasure& measured) {
 
 // The relative residuals for a message, with their tolerances or without.
 std::string residuals(const FilmTolerances& tolerances, const FilmMeasure& measured, bool with_tolerances) {
-  if (!with_tolerances) {
-    std::string text = fmt::format("relative mass residual {:.3g}, load error {:.3g}", measured.mass, measured.load);
-    if (tolerances.contact) text += fmt::format(", contact residual {:.3g}", measured.contact);
-    return text;
-  }
-  std::string text =
-      fmt::format("relative mass residual {:.3g} (tolerance {:.3g}), load error {:.3g} (tolerance {:.3g})",
-                  measured.mass, tolerances.mass, measured.load, tolerances.load);
-  if (tolerances.contact) {
-    text += fmt::format(", contact residual {:.3g} (tolerance {:.3g})", measured.contact, *tolerances.contact);
-  }
+  const auto one = [&](std::string_view name, double value, double tolerance) {
+    return with_tolerances ? fmt::format("{} {:.3g} (tolerance {:.3g})", name, value, tolerance)
+                           : fmt::format("{} {:.3g}", name, value);
+  };
+  std::string text = one("relative mass residual", measured.mass, tolerances.mass) + ", " +
+                     one("load error", measured.load, tolerances.load);
+  if (tolerances.contact) text += ", " + one("contact residual", measured.contact, *tolerances.contact);
   return text;
 }
 
@@ -137,6 +133,20 @@ int run_film_newton(const FilmNewton& newton, NewtonFilmResult& result) {
   }
   result.iterations = steps;
   return tight_retries;
+}
+
+void check_after_newton(const FilmNewtonRules& rules, double contact, bool complementary, NewtonFilmResult& result) {
+  const FilmTolerances& tolerances = rules.tolerances;
+  if (!result.converged() ||
+      (result.relative_residual <= 10.0 * tolerances.mass && result.load_error <= 10.0 * tolerances.load &&
+       (!tolerances.contact || contact <= 10.0 * *tolerances.contact) && complementary)) {
+    return;
+  }
+  result.status = FilmStatus::failure;
+  result.message = fmt::format(
+      "{} check failed after the Newton iteration stopped: relative mass residual {:.3g}, load error {:.3g}",
+      rules.words.solver, result.relative_residual, result.load_error);
+  if (tolerances.contact) result.message += fmt::format(", contact complementarity {:.3g}", contact);
 }
 
 }  // namespace halfspace::lubrication::detail

@@ -86,4 +86,11 @@ struct FilmNewton {
 // tight retries (steps solved again to krylov_tolerance).
 int run_film_newton(const FilmNewton& newton, NewtonFilmResult& result);
 
+// The check apart from the iteration, after it converged: `result`'s
+// relative mass residual and load error, measured after it stopped (and
+// the contact complementarity `contact` where the film has contact rows),
+// within ten times the tolerances, and the cavitation's complementarity
+// (`complementary`). Else a failure.
+void check_after_newton(const FilmNewtonRules& rules, double contact, bool complementary, NewtonFilmResult& result);
+
 }  // namespace halfspace::lubrication::detail

@@ -464,30 +464,10 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
       closed[j] = x.film[jj] / H < x.q[jj] ? 1 : 0;
       rows.open_film[j] = x.film[jj] > hb ? 1 : 0;
     }
-    if (!krylov) {
-      for (int pass = 0; pass < detail::kBranchPasses; ++pass) {
-        const auto linearise_rows = [&] {
-          measure(x, residual, true);
-          contact_residuals(x, H, closed, residual);
-        };
-        outcome.solved =
-            detail::branch_consistent_step(linearise_rows, topology, x.s, jacobian_t, residual, lu, step, branch_full);
-        if (!outcome.solved || pass + 1 == detail::kBranchPasses || !step_branches) break;
-        // dh = K (dp_f + dp_c) + dh0 with the dense K.
-        pressure_change = P * step.segment(ni, ni);
-        for (std::size_t j = 0; j < n; ++j) {
-          const auto jj = static_cast<Eigen::Index>(j);
-          if (!topology.fixed(j) && branch_full[j] != 0) pressure_change[jj] += P * step[jj];
-        }
-        film_change.noalias() = k_matrix * pressure_change;
-        if (load_control) film_change.array() += step[h0];
-        if (!take_step_branches(x, hb, H, step, film_change, closed, rows.open_film)) break;
-      }
-      return outcome;
-    }
-    // The rows do not depend on the branches: linearised once, then one
-    // GMRES solve per branch pass.
-    measure(x, residual, true);
+    // On the GMRES path the rows do not depend on the branches: linearised
+    // once, then one GMRES solve per branch pass; the dense path's J is
+    // formed again per pass.
+    if (krylov) measure(x, residual, true);
     const detail::MixedScales scales{P, H, mass_scale, load_control ? area / w : 0.0, load_control};
     const bool short_steps_taken = current.norm >= detail::kLargestForcing;
     const auto gmres_solve = [&] {
@@ -498,12 +478,29 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
       outcome.krylov_message = solved.message;
       return solved.converged || (short_steps_taken && solved.relative_residual <= kLoosestLinearResidual);
     };
-    for (int pass = 0; pass < detail::kBranchPasses; ++pass) {
-      outcome.solved = detail::branch_consistent_step_with(gmres_solve, topology, x.s, step, branch_full);
-      if (!outcome.solved || pass + 1 == detail::kBranchPasses || !step_branches) break;
-      krylov_solver->film_change(step, film_change);
-      if (!take_step_branches(x, hb, H, step, film_change, closed, rows.open_film)) break;
+    const auto linearise_rows = [&] {
+      measure(x, residual, true);
       contact_residuals(x, H, closed, residual);
+    };
+    for (int pass = 0; pass < detail::kBranchPasses; ++pass) {
+      outcome.solved = krylov ? detail::branch_consistent_step_with(gmres_solve, topology, x.s, step, branch_full)
+                              : detail::branch_consistent_step(linearise_rows, topology, x.s, jacobian_t, residual, lu,
+                                                               step, branch_full);
+      if (!outcome.solved || pass + 1 == detail::kBranchPasses || !step_branches) break;
+      if (krylov) {
+        krylov_solver->film_change(step, film_change);
+      } else {
+        // dh = K (dp_f + dp_c) + dh0 with the dense K.
+        pressure_change = P * step.segment(ni, ni);
+        for (std::size_t j = 0; j < n; ++j) {
+          const auto jj = static_cast<Eigen::Index>(j);
+          if (!topology.fixed(j) && branch_full[j] != 0) pressure_change[jj] += P * step[jj];
+        }
+        film_change.noalias() = k_matrix * pressure_change;
+        if (load_control) film_change.array() += step[h0];
+      }
+      if (!take_step_branches(x, hb, H, step, film_change, closed, rows.open_film)) break;
+      if (krylov) contact_residuals(x, H, closed, residual);
     }
     return outcome;
   };
@@ -584,27 +581,32 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
   }
   result.central_film_thickness = result.film[centre];
   result.minimum_film_thickness = result.film.minCoeff();
-  if (result.converged()) {
-    if (!(result.relative_residual <= 10.0 * options.tolerance && result.load_error <= 10.0 * options.load_tolerance &&
-          result.complementarity_error <= 10.0 * options.contact_tolerance &&
-          satisfies_complementarity(result.fluid_pressure, result.fluid_fraction))) {
-      result.status = FilmStatus::failure;
-      result.message = fmt::format(
-          "the mixed film's check failed after the Newton iteration stopped: relative mass residual {:.3g}, load "
-          "error {:.3g}, contact complementarity {:.3g}",
-          result.relative_residual, result.load_error, result.complementarity_error);
-    }
-  }
+  detail::check_after_newton(newton.rules, result.complementarity_error,
+                             satisfies_complementarity(result.fluid_pressure, result.fluid_fraction), result);
   add_mixed_friction(grid, conditions, laws, options.friction, hb, result);
   result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return result;
 }
 
-// The GMRES work of `from` added into `into` (continuations count every solve).
-void add_krylov_work(const MixedFilm& from, int& iterations, int& most_per_step) {
-  iterations += from.krylov_iterations;
-  most_per_step = std::max(most_per_step, from.max_krylov_iterations_per_step);
-}
+// The Newton and GMRES work of a continuation's solves (every solve counts,
+// the films between are discarded).
+struct Work {
+  int steps = 0, solves = 0, krylov = 0, most_krylov = 0;
+
+  void add(const MixedFilm& film, int solve = 1) {
+    steps += film.iterations;
+    solves += solve;
+    krylov += film.krylov_iterations;
+    most_krylov = std::max(most_krylov, film.max_krylov_iterations_per_step);
+  }
+  // `film` with the work as its counts.
+  MixedFilm into(MixedFilm film) const {
+    film.iterations = steps;
+    film.krylov_iterations = krylov;
+    film.max_krylov_iterations_per_step = most_krylov;
+    return film;
+  }
+};
 
 }  // namespace
 
@@ -631,16 +633,14 @@ constexpr int kContinuationSolves = 60;
 
 MixedFilm continue_in_speed(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
                             const LubricantLaws& laws, const MixedFilmOptions& options, MixedFilm film, double factor,
-                            int& steps, int& solves, int& krylov, int& most_krylov) {
+                            Work& work) {
   double ratio = kContinuationRatio;
-  while (factor != 1.0 && solves < kContinuationSolves) {
+  while (factor != 1.0 && work.solves < kContinuationSolves) {
     const double log_step = std::min(std::abs(std::log(factor)), std::log(ratio));
     const double next =
         std::abs(std::log(factor)) <= log_step ? 1.0 : factor * std::exp(factor > 1.0 ? -log_step : log_step);
     MixedFilm trial = solve_once(op, gap, at_speed_factor(conditions, next), laws, options, &film);
-    ++solves;
-    steps += trial.iterations;
-    add_krylov_work(trial, krylov, most_krylov);
+    work.add(trial);
     if (trial.converged()) {
       film = std::move(trial);
       factor = next;
@@ -656,7 +656,7 @@ MixedFilm continue_in_speed(InfluenceOperator& op, const Eigen::ArrayXd& gap, co
   if (factor != 1.0) {
     film.status = FilmStatus::iteration_limit;
     film.message =
-        fmt::format("speed continuation stopped after {} solves at {:.4g} times the velocities", solves, factor);
+        fmt::format("speed continuation stopped after {} solves at {:.4g} times the velocities", work.solves, factor);
   }
   return film;
 }
@@ -676,8 +676,8 @@ MixedFilm continue_in_offset(InfluenceOperator& op, const Eigen::ArrayXd& gap, c
                              const LubricantLaws& laws, const MixedFilmOptions& options, const MixedFilm* start,
                              MixedFilm failed) {
   MixedFilm from;
-  int steps = failed.iterations, solves = 1, krylov = failed.krylov_iterations,
-      most_krylov = failed.max_krylov_iterations_per_step;
+  Work work;
+  work.add(failed);
   if (start != nullptr && start->converged() && start->fluid_pressure.size() == gap.size()) {
     from = *start;
   } else {
@@ -689,21 +689,17 @@ MixedFilm continue_in_offset(InfluenceOperator& op, const Eigen::ArrayXd& gap, c
     MixedFilmOptions by_load = options;
     by_load.load = dry.total_force;
     from = solve_mixed_film(op, gap, conditions, laws, by_load);
-    steps += from.iterations;
-    add_krylov_work(from, krylov, most_krylov);
-    ++solves;
+    work.add(from);
     if (!from.converged()) return failed;
   }
   const double first = from.offset;
   double done = 0.0, step = 1.0;
-  while (done < 1.0 && solves < kOffsetSolves) {
+  while (done < 1.0 && work.solves < kOffsetSolves) {
     const double next = std::min(1.0, done + step);
     MixedFilmOptions at = options;
     at.offset = first + next * (options.offset - first);
     MixedFilm trial = solve_once(op, gap, conditions, laws, at, &from);
-    ++solves;
-    steps += trial.iterations;
-    add_krylov_work(trial, krylov, most_krylov);
+    work.add(trial);
     if (trial.converged()) {
       from = std::move(trial);
       done = next;
@@ -713,21 +709,15 @@ MixedFilm continue_in_offset(InfluenceOperator& op, const Eigen::ArrayXd& gap, c
     step *= 0.5;
     if (step < kSmallestOffsetStep) {
       trial.message = fmt::format("separation continuation stalled at h0 = {:.6g} m: {}", at.offset, trial.message);
-      trial.iterations = steps;
-      trial.krylov_iterations = krylov;
-      trial.max_krylov_iterations_per_step = most_krylov;
-      return trial;
+      return work.into(std::move(trial));
     }
   }
   if (done < 1.0) {
     from.status = FilmStatus::iteration_limit;
-    from.message = fmt::format("separation continuation stopped after {} solves at h0 = {:.6g} m", solves,
+    from.message = fmt::format("separation continuation stopped after {} solves at h0 = {:.6g} m", work.solves,
                                first + done * (options.offset - first));
   }
-  from.iterations = steps;
-  from.krylov_iterations = krylov;
-  from.max_krylov_iterations_per_step = most_krylov;
-  return from;
+  return work.into(std::move(from));
 }
 
 }  // namespace
@@ -749,8 +739,8 @@ MixedFilm detail::solve_mixed_film_on_grid(InfluenceOperator& op, const Eigen::A
   // Where the film does not converge from its starts (the mixed regime, with
   // contacts coming and going), continue in the speed: from the given film's
   // speed if it has one, else from a faster film that converges.
-  int steps = film.iterations, solves = use == MixedStartUse::continue_only ? 0 : 1, krylov = film.krylov_iterations,
-      most_krylov = film.max_krylov_iterations_per_step;
+  Work work;
+  work.add(film, use == MixedStartUse::continue_only ? 0 : 1);
   MixedFilm from;
   double factor = 0.0;
   const double speed = std::hypot(conditions.entrainment_velocity[0], conditions.entrainment_velocity[1]);
@@ -760,25 +750,14 @@ MixedFilm detail::solve_mixed_film_on_grid(InfluenceOperator& op, const Eigen::A
   }
   for (double faster = 4.0; factor == 0.0 && faster <= 1e4; faster *= 4.0) {
     MixedFilm trial = solve_once(op, gap, at_speed_factor(conditions, faster), laws, options, nullptr);
-    ++solves;
-    steps += trial.iterations;
-    add_krylov_work(trial, krylov, most_krylov);
+    work.add(trial);
     if (trial.converged()) {
       from = std::move(trial);
       factor = faster;
     }
   }
-  if (factor == 0.0) {
-    film.iterations = steps;
-    film.krylov_iterations = krylov;
-    film.max_krylov_iterations_per_step = most_krylov;
-    return film;
-  }
-  MixedFilm continued = continue_in_speed(op, gap, conditions, laws, options, std::move(from), factor, steps, solves,
-                                          krylov, most_krylov);
-  continued.iterations = steps;
-  continued.krylov_iterations = krylov;
-  continued.max_krylov_iterations_per_step = most_krylov;
+  if (factor == 0.0) return work.into(std::move(film));
+  MixedFilm continued = work.into(continue_in_speed(op, gap, conditions, laws, options, std::move(from), factor, work));
   continued.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return continued;
 }
