@@ -300,7 +300,6 @@ ElasticFilm detail::solve_film_newton(InfluenceOperator& op, const Eigen::ArrayX
     x.s[k] = x.pressure[k] > 0.0 ? x.pressure[k] / pressure_scale : x.theta[k] - 1.0;
   }
   x.deformation.resize(ni);
-  x.film.resize(ni);
 
   // p, theta, K p and h of s and h0; false if a film is not positive.
   const auto evaluate = [&](State& state) {

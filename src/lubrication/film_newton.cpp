@@ -95,26 +95,26 @@ int run_film_newton(const FilmNewton& newton, NewtonFilmResult& result) {
         // residual's norm; where the film clips, first the clipped step and
         // its halves, judged as the scaled step.
         double lambda = newton.trust_region();
+        // Whether `scale` times the step (or the clipped one) lowers the
+        // norm by Armijo's share of `length`; nothing where its film is not
+        // valid.
+        const auto lowers = [&](double scale, bool clipped, double length) -> std::optional<bool> {
+          const std::optional<FilmMeasure> measured = newton.try_step(scale, clipped);
+          if (!measured) return std::nullopt;
+          tried = *measured;
+          return std::isfinite(tried.norm) && tried.norm <= (1.0 - kSufficientDecrease * length) * current.norm;
+        };
         if (newton.clip && newton.clip(lambda)) {
           for (int halving = 0; halving < kClippedHalvings && !accepted; ++halving) {
             const double mu = std::ldexp(1.0, -halving);
-            const std::optional<FilmMeasure> measured = newton.try_step(mu, true);
-            if (!measured) continue;
-            tried = *measured;
-            accepted =
-                std::isfinite(tried.norm) && tried.norm <= (1.0 - kSufficientDecrease * mu * lambda) * current.norm;
+            accepted = lowers(mu, true, mu * lambda).value_or(false);
           }
           if (accepted) break;
         }
-        for (int halving = 0; halving <= kMostHalvings; ++halving, lambda *= 0.5) {
-          const std::optional<FilmMeasure> measured = newton.try_step(lambda, false);
-          if (!measured) continue;
-          tried = *measured;
-          if (std::isfinite(tried.norm) && tried.norm <= (1.0 - kSufficientDecrease * lambda) * current.norm) {
-            accepted = true;
-            break;
-          }
-          ++result.line_search_halvings;
+        for (int halving = 0; halving <= kMostHalvings && !accepted; ++halving, lambda *= 0.5) {
+          const std::optional<bool> lower = lowers(lambda, false, lambda);
+          accepted = lower.value_or(false);
+          if (lower && !accepted) ++result.line_search_halvings;
         }
         if (accepted) break;
       }

@@ -276,15 +276,10 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
   const double H = film_scale;
 
   State x;
-  x.s.resize(ni);
-  x.q.resize(ni);
-  x.fluid.resize(ni);
-  x.theta.resize(ni);
-  x.contact.resize(ni);
-  x.total.resize(ni);
-  x.deformation.resize(ni);
-  x.film.resize(ni);
-  x.reynolds_film.resize(ni);
+  for (Eigen::ArrayXd* field :
+       {&x.s, &x.q, &x.fluid, &x.theta, &x.contact, &x.total, &x.deformation, &x.film, &x.reynolds_film}) {
+    field->resize(ni);
+  }
   const auto set_start = [&](Start kind) {
     if (kind == Start::dry_contact) {
       x.s.setZero();
