@@ -12,9 +12,9 @@
 // and the load row. K is read off one product of the operator with a unit
 // pressure (it is translation invariant), so free and periodic grids and
 // coated half-spaces all use the operator the contact solvers use. A
-// backtracking line search on the scaled residual's norm keeps the films
-// positive and the semi-smooth steps (a node switching between full and
-// cavitated) from diverging. Each step's linear system is solved by the
+// backtracking line search on the scaled residual's norm (film_newton.hpp,
+// the iteration the mixed film shares) keeps the films positive and the
+// semi-smooth steps (a node switching full/cavitated) from diverging. Each step's linear system is solved by the
 // dense LU of J, or on larger grids by GMRES with K applied by the
 // operator (film_krylov_solver.hpp), which never forms K.
 #include "halfspace/lubrication/elastic_film.hpp"
@@ -401,7 +401,8 @@ ElasticFilm detail::solve_film_newton(InfluenceOperator& op, const Eigen::ArrayX
                   .counts_refused_steps = false,
                   .starts = dry_start ? kStartFilms.size() : 1,
                   .share = options.max_iterations / 2,
-                  .limit = options.max_iterations};
+                  .limit = options.max_iterations,
+                  .limit_on_each_start = true};
   newton.measure = [&] { return measure(x, residual, false); };
   newton.lay_start = [&](std::size_t attempt) {
     x = initial;

@@ -46,7 +46,9 @@ int run_film_newton(const FilmNewton& newton, NewtonFilmResult& result) {
   for (std::size_t attempt = 0;; ++attempt) {
     result.status = FilmStatus::failure;
     result.message.clear();
-    const bool hands_over = attempt + 1 < rules.starts && rules.share > 0;
+    const bool last = attempt + 1 >= rules.starts;
+    const bool hands_over = !last && rules.share > 0;
+    const bool limited = last || rules.limit_on_each_start;
     FilmMeasure current = newton.measure();
     // The forcing term's history (newton_forcing): this start's steps only.
     double previous_norm = 0.0, forcing = kLargestForcing;
@@ -61,7 +63,7 @@ int run_film_newton(const FilmNewton& newton, NewtonFilmResult& result) {
       }
       // This start has used its share of the steps: the rest to the next.
       if (hands_over && iteration == rules.share) break;
-      if (steps >= rules.limit) {
+      if (limited && steps == rules.limit) {
         result.status = FilmStatus::iteration_limit;
         result.message = fmt::format("{} did not converge in {} Newton steps: {}", rules.words.film, steps,
                                      residuals(tolerances, current, true));
@@ -128,7 +130,7 @@ int run_film_newton(const FilmNewton& newton, NewtonFilmResult& result) {
       newton.accept();
       current = tried;
     }
-    if (result.status != FilmStatus::failure || attempt + 1 >= rules.starts) break;
+    if (result.status != FilmStatus::failure || last) break;
     if (!newton.lay_start(attempt + 1)) break;
   }
   result.iterations = steps;

@@ -59,6 +59,9 @@ struct FilmNewtonRules {
   std::size_t starts = 1;
   int share = 0;  // steps a start but the last gets before the next takes over (0: no hand-over)
   int limit = 0;  // steps in all
+  // Whether the limit ends any start (else the last only: the others end
+  // at their share, and the last may then have less than none left).
+  bool limit_on_each_start = true;
 };
 
 // The rules and the film's physics.

@@ -1,5 +1,6 @@
 // Newton's method on the mixed film (mixed_film.hpp): the EHL solver's
-// semi-smooth Newton (elastic_film.cpp) with a contact pressure per node.
+// semi-smooth Newton (elastic_film.cpp, film_newton.hpp) with a contact
+// pressure per node.
 // The unknowns are [s (n), q (n), h0] with p_f = P max(s, 0), theta = 1 +
 // min(s, 0) and p_c = P q; the rows are the n mass balances (on the film h_R
 // = max(h, h_b)), the n contact rows min(q, h / H) and the load. With dh/dp
@@ -427,8 +428,8 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
   // The film's differences from the EHL film's Newton iteration: the
   // contact rows' tolerance, Eisenstat & Walker's forcing term, a refused
   // step counted (the continuations add the steps of every solve), up to
-  // three starts, the step's branches and the clipped step on point
-  // contacts.
+  // three starts with the limit on the last, the step's branches and the
+  // clipped step on point contacts.
   detail::FilmNewton newton;
   newton.rules = {
       .words = {.solver = "the mixed film's", .film = "the mixed film", .krylov_step = "the mixed film's "},
@@ -439,7 +440,8 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
       .counts_refused_steps = true,
       .starts = attempts,
       .share = std::max(1, options.max_iterations / static_cast<int>(attempts)),
-      .limit = cold_budget};
+      .limit = cold_budget,
+      .limit_on_each_start = false};
   newton.measure = [&] { return measure(x, residual, false); };
   newton.lay_start = [&](std::size_t attempt) {
     set_start(kStarts[attempt]);
