@@ -12,9 +12,9 @@
 // and the load row. K is read off one product of the operator with a unit
 // pressure (it is translation invariant), so free and periodic grids and
 // coated half-spaces all use the operator the contact solvers use. A
-// backtracking line search on the scaled residual's norm keeps the films
-// positive and the semi-smooth steps (a node switching between full and
-// cavitated) from diverging. Each step's linear system is solved by the
+// backtracking line search on the scaled residual's norm (film_newton.hpp,
+// the iteration the mixed film shares) keeps the films positive and the
+// semi-smooth steps (a node switching full/cavitated) from diverging. Each step's linear system is solved by the
 // dense LU of J, or on larger grids by GMRES with K applied by the
 // operator (film_krylov_solver.hpp), which never forms K.
 #include "halfspace/lubrication/elastic_film.hpp"
@@ -31,6 +31,7 @@
 
 #include "film_grid_sequence.hpp"
 #include "film_krylov_solver.hpp"
+#include "film_newton.hpp"
 #include "halfspace/error.hpp"
 #include "halfspace/lubrication/cavitation_solver.hpp"
 #include "halfspace/lubrication/reynolds_stencil.hpp"
@@ -110,8 +111,6 @@ constexpr std::array<double, 2> kStartFilms{0.5, 8.0};
 // The trust region of a Newton step, in units of the pressure scale (the
 // dry contact's peak) and of the thinnest film.
 constexpr double kLargestStep = 0.5;
-// The loosest relative tolerance of a GMRES step (far from the solution).
-constexpr double kLargestForcing = 1e-2;
 // Only nodes exactly on the cavitation switch (s = 0: the dry start's
 // unloaded nodes) take the branch their step goes into; every other node
 // takes the branch of its side, whose derivative is exact for short steps,
@@ -301,7 +300,6 @@ ElasticFilm detail::solve_film_newton(InfluenceOperator& op, const Eigen::ArrayX
     x.s[k] = x.pressure[k] > 0.0 ? x.pressure[k] / pressure_scale : x.theta[k] - 1.0;
   }
   x.deformation.resize(ni);
-  x.film.resize(ni);
 
   // p, theta, K p and h of s and h0; false if a film is not positive.
   const auto evaluate = [&](State& state) {
@@ -335,212 +333,124 @@ ElasticFilm detail::solve_film_newton(InfluenceOperator& op, const Eigen::ArrayX
 
   // The scaled residual (mass rows over mass_scale, the load row over w)
   // and the measured relative residuals.
-  struct Measure {
-    double norm = 0.0, mass = 0.0, load = 0.0;
-  };
   const auto measure = [&](const State& state, Eigen::VectorXd& out, bool linearise_too) {
     coefficients.update(laws, eta0, state.pressure, state.film);
-    double couette = 0.0;
-    for (std::size_t k = 0; k < n; ++k) {
-      if (!topology.fixed(k)) {
-        couette =
-            std::max(couette, (topology.couette_x() + topology.couette_y()) * coefficients.rho[k] * state.film[k]);
-      }
-    }
-    Measure m;
-    double largest = 0.0;
     const bool dense_too = linearise_too && !krylov;
     if (dense_too) jacobian_t.setZero();
-    if (linearise_too && krylov) rows.terms.clear();
-    for (std::size_t k = 0; k < n; ++k) {
-      const auto kk = static_cast<Eigen::Index>(k);
-      if (linearise_too && krylov) rows.start[k] = rows.terms.size();
-      if (topology.fixed(k)) {
-        out[kk] = 0.0;
-        if (dense_too) jacobian_t(kk, kk) = 1.0;
-        continue;
-      }
-      const double balance =
-          linearise(topology, k, coefficients, state.pressure, state.theta, state.film, second_order, terms);
-      largest = std::max(largest, std::abs(balance));
-      out[kk] = balance / mass_scale;
-      if (linearise_too && krylov) rows.terms.insert(rows.terms.end(), terms.begin(), terms.end());
-      if (!dense_too) continue;
-      auto column = jacobian_t.col(kk);
-      double by_offset = 0.0;
-      for (const LocalTerm& t : terms) {
-        const auto node = static_cast<Eigen::Index>(t.node);
-        if (t.by_film != 0.0) column.head(ni) += (t.by_film / mass_scale) * k_matrix.col(node);
-        by_offset += t.by_film;
-        column[node] += t.by_pressure / mass_scale;
-      }
-      column[ni] = by_offset / mass_scale;
-    }
+    detail::FilmMeasure m;
+    m.mass = detail::mass_rows(topology, coefficients, state.pressure, state.theta, state.film, second_order,
+                               mass_scale, terms, out, linearise_too && krylov ? &rows : nullptr,
+                               [&](std::size_t k, const std::vector<LocalTerm>& row_terms) {
+                                 if (!dense_too) return;
+                                 auto column = jacobian_t.col(static_cast<Eigen::Index>(k));
+                                 double by_offset = 0.0;
+                                 for (const LocalTerm& t : row_terms) {
+                                   const auto node = static_cast<Eigen::Index>(t.node);
+                                   if (t.by_film != 0.0) {
+                                     column.head(ni) += (t.by_film / mass_scale) * k_matrix.col(node);
+                                   }
+                                   by_offset += t.by_film;
+                                   column[node] += t.by_pressure / mass_scale;
+                                 }
+                                 column[ni] = by_offset / mass_scale;
+                               });
     const double load = state.pressure.sum() * area;
     out[ni] = (load - w) / w;
-    m.mass = largest / (couette > 0.0 ? couette : 1.0);
     m.load = std::abs(load - w) / w;
     m.norm = out.norm();
-    if (linearise_too && krylov) rows.start[n] = rows.terms.size();
-    if (dense_too) {
-      // Columns of J are rows of J^T: scale by dp/ds, then add d theta / ds.
-      for (std::size_t j = 0; j < n; ++j) {
-        const auto jj = static_cast<Eigen::Index>(j);
-        const bool fixed = topology.fixed(j);
-        const bool full = !fixed && branch_full[j] != 0;
-        if (fixed) {
-          jacobian_t.row(jj).setZero();
-          jacobian_t(jj, jj) = 1.0;
-        } else {
-          jacobian_t.row(jj) *= full ? pressure_scale : 0.0;
-        }
-        jacobian_t(jj, ni) = full ? pressure_scale * area / w : 0.0;
+    if (!dense_too) return m;
+    // Columns of J are rows of J^T: scale by dp/ds, then add d theta / ds.
+    for (std::size_t j = 0; j < n; ++j) {
+      const auto jj = static_cast<Eigen::Index>(j);
+      const bool fixed = topology.fixed(j);
+      const bool full = !fixed && branch_full[j] != 0;
+      if (fixed) {
+        jacobian_t.row(jj).setZero();
+        jacobian_t(jj, jj) = 1.0;
+      } else {
+        jacobian_t.row(jj) *= full ? pressure_scale : 0.0;
       }
-      for (std::size_t k = 0; k < n; ++k) {
-        if (topology.fixed(k)) continue;
-        linearise(topology, k, coefficients, state.pressure, state.theta, state.film, second_order, terms);
-        for (const LocalTerm& t : terms) {
-          const auto node = static_cast<Eigen::Index>(t.node);
-          if (!topology.fixed(t.node) && branch_full[t.node] == 0) {
-            jacobian_t(node, static_cast<Eigen::Index>(k)) += t.by_fraction / mass_scale;
-          }
-        }
-      }
+      jacobian_t(jj, ni) = full ? pressure_scale * area / w : 0.0;
     }
+    detail::add_fraction_columns(topology, coefficients, state.pressure, state.theta, state.film, second_order,
+                                 mass_scale, branch_full, terms, jacobian_t);
     return m;
   };
 
   // The mass rows' scale: the largest Couette outflow of the start.
-  const auto scale_masses = [&]() {
-    double couette = 0.0;
-    for (std::size_t k = 0; k < n; ++k) {
-      if (!topology.fixed(k)) couette = std::max(couette, (topology.couette_x() + topology.couette_y()) * x.film[k]);
-    }
-    mass_scale = couette;
+  const auto scale_masses = [&] {
+    mass_scale = detail::largest_couette_outflow(topology, Eigen::ArrayXd::Ones(ni), x.film);
   };
   scale_masses();
 
   const State initial = x;
   State trial = x;
   Eigen::VectorXd trial_residual(ni + 1);
-  int steps_before = 0;  // Newton steps of failed starts
-  for (std::size_t attempt = 0;; ++attempt) {
-    Measure current = measure(x, residual, false);
-    for (int iteration = 0;; ++iteration) {
-      result.iterations = steps_before + iteration;
-      if (current.mass <= options.tolerance && current.load <= options.load_tolerance) {
-        result.status = FilmStatus::converged;
-        break;
-      }
-      if (!std::isfinite(current.norm)) {
-        result.status = FilmStatus::failure;
-        result.message = fmt::format("the EHL Newton iteration diverged after {} steps", iteration);
-        break;
-      }
-      if (dry_start && attempt + 1 < kStartFilms.size() && iteration > 0 && iteration == options.max_iterations / 2) {
-        // The thin start has used half the steps: leave the rest to the next.
-        result.status = FilmStatus::failure;
-        break;
-      }
-      if (steps_before + iteration == options.max_iterations) {
-        result.status = FilmStatus::iteration_limit;
-        result.message = fmt::format(
-            "the EHL film did not converge in {} Newton steps: relative mass residual {:.3g} (tolerance {:.3g}), "
-            "load error {:.3g} (tolerance {:.3g})",
-            steps_before + iteration, current.mass, options.tolerance, current.load, options.load_tolerance);
-        break;
-      }
-      // An inexact Newton step (Dembo, Eisenstat & Steihaug 1982): GMRES to
-      // a relative residual of the order of the Newton residual keeps the
-      // quadratic convergence near the solution and spares iterations far
-      // from it. When no step along that direction lowers the residual,
-      // the direction is solved again to krylov_tolerance before the
-      // iteration gives up: near the solution the loose direction's error
-      // can outweigh the descent it promises. The mixed film's Eisenstat &
-      // Walker term (newton_forcing.hpp) took a Newton step more here at 64^2
-      // and 512^2 (docs/development-log.md, 2026-11-30, branch lub30i).
-      const double loose_forcing = std::min(kLargestForcing, current.norm);
-      bool accepted = false, failed = false;
-      Measure tried;
-      for (const bool tight : {false, true}) {
-        if (tight && !(krylov && loose_forcing > options.krylov_tolerance)) break;
-        if (tight) ++result.tight_retries;
-        // The generalised Jacobian's branch per node: full where s >= 0,
-        // cavitated below (branch_consistent_step settles the nodes at s = 0).
-        for (std::size_t j = 0; j < n; ++j) branch_full[j] = x.s[static_cast<Eigen::Index>(j)] >= 0.0 ? 1 : 0;
-        if (krylov) {
-          // The linearisation does not depend on the branches: once, then
-          // one GMRES solve per branch pass.
-          measure(x, residual, true);
-          int step_iterations = 0;
-          std::string krylov_message;
-          const double forcing = tight ? 0.0 : loose_forcing;
-          const auto gmres_solve = [&] {
-            const detail::KrylovOutcome outcome =
-                krylov_solver->solve(rows, branch_full, pressure_scale, mass_scale, area / w, forcing, residual, step);
-            step_iterations += outcome.iterations;
-            krylov_message = outcome.message;
-            return outcome.converged;
-          };
-          const bool solved =
-              detail::branch_consistent_step_with(gmres_solve, topology, x.s, step, branch_full, kBranchChoiceBand);
-          result.krylov_iterations += step_iterations;
-          result.max_krylov_iterations_per_step = std::max(result.max_krylov_iterations_per_step, step_iterations);
-          if (!solved) {
-            result.status = FilmStatus::failure;
-            result.message = fmt::format("Newton step {}: {}", iteration + 1, krylov_message);
-            failed = true;
-            break;
-          }
-        } else if (!detail::branch_consistent_step([&] { measure(x, residual, true); }, topology, x.s, jacobian_t,
-                                                   residual, lu, step, branch_full, kBranchChoiceBand)) {
-          result.status = FilmStatus::failure;
-          result.message = fmt::format("the EHL Newton step {} is singular", iteration + 1);
-          failed = true;
-          break;
-        }
-        // A trust region on the step: no pressure changes by more than the
-        // pressure scale, h0 by no more than the thinnest film. Then
-        // backtracking on the scaled residual's norm.
-        const double largest_change = step.head(ni).cwiseAbs().maxCoeff();
-        const double film_change = std::abs(step[ni]) / x.film.minCoeff();
-        double lambda = std::min(
-            {1.0, kLargestStep / std::max(largest_change, 1e-300), kLargestStep / std::max(film_change, 1e-300)});
-        for (int halving = 0; halving <= 30; ++halving, lambda *= 0.5) {
-          trial.s = x.s + lambda * step.head(ni).array();
-          trial.offset = x.offset + lambda * step[ni];
-          if (!evaluate(trial)) continue;
-          tried = measure(trial, trial_residual, false);
-          if (std::isfinite(tried.norm) && tried.norm <= (1.0 - 1e-4 * lambda) * current.norm) {
-            accepted = true;
-            break;
-          }
-          ++result.line_search_halvings;
-        }
-        if (accepted) break;
-      }
-      if (failed) break;
-      if (!accepted) {
-        result.status = FilmStatus::failure;
-        result.message = fmt::format(
-            "the EHL Newton iteration stalled at step {}: no step along the Newton direction lowers the residual "
-            "(relative mass residual {:.3g}, load error {:.3g})",
-            iteration + 1, current.mass, current.load);
-        break;
-      }
-      std::swap(x, trial);
-      current = tried;
-    }
-    if (result.status != FilmStatus::failure || !dry_start || attempt + 1 == kStartFilms.size()) break;
-    // A failed dry start: again from the next start film.
-    steps_before = result.iterations;
+  // The film's differences from the mixed film's Newton iteration: two
+  // starts (a thin film with half the steps, then a thick one), steps
+  // counted when taken, GMRES to min(1e-2, ||F||) (Eisenstat & Walker's
+  // term, newton_forcing.hpp, took a Newton step more here at 64^2 and
+  // 512^2: docs/development-log.md, 2026-11-30, branch lub30i), the trust
+  // region on s and h0 alone.
+  detail::FilmNewton newton;
+  newton.rules = {.words = {.solver = "the EHL", .film = "the EHL film", .krylov_step = ""},
+                  .tolerances = {.mass = options.tolerance, .load = options.load_tolerance, .contact = std::nullopt},
+                  .forcing = detail::FilmForcing::residual_norm,
+                  .krylov = krylov,
+                  .krylov_tolerance = options.krylov_tolerance,
+                  .counts_refused_steps = false,
+                  .starts = dry_start ? kStartFilms.size() : 1,
+                  .share = options.max_iterations / 2,
+                  .limit = options.max_iterations,
+                  .limit_on_each_start = true};
+  newton.measure = [&] { return measure(x, residual, false); };
+  newton.lay_start = [&](std::size_t attempt) {
     x = initial;
-    x.offset = dry_offset + kStartFilms[attempt + 1] * edge_gap;
-    if (!evaluate(x)) break;
+    x.offset = dry_offset + kStartFilms[attempt] * edge_gap;
+    if (!evaluate(x)) return false;
     scale_masses();
-    result.status = FilmStatus::failure;
-    result.message.clear();
-  }
+    return true;
+  };
+  newton.solve = [&](const detail::FilmMeasure&, double forcing, bool) {
+    detail::FilmNewtonSolve outcome;
+    // The generalised Jacobian's branch per node: full where s >= 0,
+    // cavitated below (branch_consistent_step settles the nodes at s = 0).
+    for (std::size_t j = 0; j < n; ++j) branch_full[j] = x.s[static_cast<Eigen::Index>(j)] >= 0.0 ? 1 : 0;
+    if (!krylov) {
+      outcome.solved = detail::branch_consistent_step([&] { measure(x, residual, true); }, topology, x.s, jacobian_t,
+                                                      residual, lu, step, branch_full, kBranchChoiceBand);
+      return outcome;
+    }
+    // The linearisation does not depend on the branches: once, then one
+    // GMRES solve per branch pass.
+    measure(x, residual, true);
+    const auto gmres_solve = [&] {
+      const detail::KrylovOutcome solved =
+          krylov_solver->solve(rows, branch_full, pressure_scale, mass_scale, area / w, forcing, residual, step);
+      outcome.krylov_iterations += solved.iterations;
+      outcome.krylov_message = solved.message;
+      return solved.converged;
+    };
+    outcome.solved =
+        detail::branch_consistent_step_with(gmres_solve, topology, x.s, step, branch_full, kBranchChoiceBand);
+    return outcome;
+  };
+  // No pressure changes by more than the pressure scale, h0 by no more than
+  // the thinnest film.
+  newton.trust_region = [&] {
+    const double largest_change = step.head(ni).cwiseAbs().maxCoeff();
+    const double film_change = std::abs(step[ni]) / x.film.minCoeff();
+    return std::min(
+        {1.0, kLargestStep / std::max(largest_change, 1e-300), kLargestStep / std::max(film_change, 1e-300)});
+  };
+  newton.try_step = [&](double lambda, bool) -> std::optional<detail::FilmMeasure> {
+    trial.s = x.s + lambda * step.head(ni).array();
+    trial.offset = x.offset + lambda * step[ni];
+    if (!evaluate(trial)) return std::nullopt;
+    return measure(trial, trial_residual, false);
+  };
+  newton.accept = [&] { std::swap(x, trial); };
+  result.tight_retries = detail::run_film_newton(newton, result);
 
   result.used_krylov = krylov;
   result.pressure = x.pressure;
@@ -559,15 +469,7 @@ ElasticFilm detail::solve_film_newton(InfluenceOperator& op, const Eigen::ArrayX
   result.relative_residual =
       elastic_film_residual(grid, conditions, laws, x.film, x.pressure, x.theta, options.couette_scheme);
   result.load_error = std::abs(result.load - w) / w;
-  if (result.converged()) {
-    if (!(result.relative_residual <= 10.0 * options.tolerance && result.load_error <= 10.0 * options.load_tolerance &&
-          satisfies_complementarity(x.pressure, x.theta))) {
-      result.status = FilmStatus::failure;
-      result.message = fmt::format(
-          "the EHL check failed after the Newton iteration stopped: relative mass residual {:.3g}, load error {:.3g}",
-          result.relative_residual, result.load_error);
-    }
-  }
+  detail::check_after_newton(newton.rules, 0.0, satisfies_complementarity(x.pressure, x.theta), result);
   result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return result;
 }

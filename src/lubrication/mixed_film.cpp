@@ -1,5 +1,6 @@
 // Newton's method on the mixed film (mixed_film.hpp): the EHL solver's
-// semi-smooth Newton (elastic_film.cpp) with a contact pressure per node.
+// semi-smooth Newton (elastic_film.cpp, film_newton.hpp) with a contact
+// pressure per node.
 // The unknowns are [s (n), q (n), h0] with p_f = P max(s, 0), theta = 1 +
 // min(s, 0) and p_c = P q; the rows are the n mass balances (on the film h_R
 // = max(h, h_b)), the n contact rows min(q, h / H) and the load. With dh/dp
@@ -25,6 +26,7 @@
 #include <optional>
 #include <vector>
 
+#include "film_newton.hpp"
 #include "halfspace/error.hpp"
 #include "halfspace/lubrication/cavitation_solver.hpp"
 #include "halfspace/lubrication/reynolds_stencil.hpp"
@@ -131,10 +133,6 @@ constexpr double kThickFilm = 8.0;
 // times the thinnest fluid film (at least kFilmFloorShare of H).
 constexpr double kLargestStep = 0.5;
 constexpr double kFilmFloorShare = 0.05;
-// The clipped step's tries (1, 1/2, 1/4 of it) before the scaled step's.
-constexpr int kClippedHalvings = 3;
-// The loosest relative tolerance of a GMRES step (far from the solution).
-constexpr double kLargestForcing = 1e-2;
 // A GMRES step that stops short of its forcing term (the iteration limit)
 // is still taken, far from the solution (a residual norm of at least
 // kLargestForcing), if it lowers the linear model's residual below this
@@ -279,15 +277,10 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
   const double H = film_scale;
 
   State x;
-  x.s.resize(ni);
-  x.q.resize(ni);
-  x.fluid.resize(ni);
-  x.theta.resize(ni);
-  x.contact.resize(ni);
-  x.total.resize(ni);
-  x.deformation.resize(ni);
-  x.film.resize(ni);
-  x.reynolds_film.resize(ni);
+  for (Eigen::ArrayXd* field :
+       {&x.s, &x.q, &x.fluid, &x.theta, &x.contact, &x.total, &x.deformation, &x.film, &x.reynolds_film}) {
+    field->resize(ni);
+  }
   const auto set_start = [&](Start kind) {
     if (kind == Start::dry_contact) {
       x.s.setZero();
@@ -338,51 +331,29 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
   std::vector<char> closed(n, 0);  // contact rows on the h branch
   double mass_scale = 1.0;
 
-  struct Measure {
-    double norm = 0.0, mass = 0.0, load = 0.0, contact = 0.0;
-  };
   const auto measure = [&](const State& state, Eigen::VectorXd& out, bool linearise_too) {
     coefficients.update(laws, eta0, state.fluid, state.reynolds_film);
-    double couette = 0.0;
-    for (std::size_t k = 0; k < n; ++k) {
-      if (!topology.fixed(k)) {
-        couette = std::max(couette, (topology.couette_x() + topology.couette_y()) * coefficients.rho[k] *
-                                        state.reynolds_film[static_cast<Eigen::Index>(k)]);
-      }
-    }
-    Measure result_measure;
-    double largest = 0.0;
+    detail::FilmMeasure result_measure;
     const bool dense_too = linearise_too && !krylov;
-    const bool rows_too = linearise_too && krylov;
     if (dense_too) jacobian_t.setZero();
-    if (rows_too) rows.terms.clear();
-    for (std::size_t k = 0; k < n; ++k) {
-      const auto kk = static_cast<Eigen::Index>(k);
-      if (rows_too) rows.start[k] = rows.terms.size();
-      if (topology.fixed(k)) {
-        out[kk] = 0.0;
-        continue;
-      }
-      const double balance =
-          linearise(topology, k, coefficients, state.fluid, state.theta, state.reynolds_film, second_order, terms);
-      largest = std::max(largest, std::abs(balance));
-      out[kk] = balance / mass_scale;
-      if (rows_too) rows.terms.insert(rows.terms.end(), terms.begin(), terms.end());
-      if (!dense_too) continue;
-      // Per unit pressure: the local d/dp_f in the s block, the film's
-      // d/dp (through K, for p_f and p_c alike) in the q block.
-      auto column = jacobian_t.col(kk);
-      double by_offset = 0.0;
-      for (const LocalTerm& t : terms) {
-        const auto node = static_cast<Eigen::Index>(t.node);
-        column[node] += t.by_pressure / mass_scale;
-        if (t.by_film != 0.0 && rows.open_film[t.node] != 0) {
-          column.segment(ni, ni) += (t.by_film / mass_scale) * k_matrix.col(node);
-          by_offset += t.by_film;
-        }
-      }
-      if (load_control) column[h0] = by_offset / mass_scale;
-    }
+    // Per unit pressure: the local d/dp_f in the s block, the film's d/dp
+    // (through K, for p_f and p_c alike) in the q block.
+    result_measure.mass = detail::mass_rows(
+        topology, coefficients, state.fluid, state.theta, state.reynolds_film, second_order, mass_scale, terms, out,
+        linearise_too && krylov ? &rows : nullptr, [&](std::size_t k, const std::vector<LocalTerm>& row_terms) {
+          if (!dense_too) return;
+          auto column = jacobian_t.col(static_cast<Eigen::Index>(k));
+          double by_offset = 0.0;
+          for (const LocalTerm& t : row_terms) {
+            const auto node = static_cast<Eigen::Index>(t.node);
+            column[node] += t.by_pressure / mass_scale;
+            if (t.by_film != 0.0 && rows.open_film[t.node] != 0) {
+              column.segment(ni, ni) += (t.by_film / mass_scale) * k_matrix.col(node);
+              by_offset += t.by_film;
+            }
+          }
+          if (load_control) column[h0] = by_offset / mass_scale;
+        });
     double contact = 0.0;
     for (Eigen::Index k = 0; k < ni; ++k) {
       const double row = std::min(state.q[k], state.film[k] / H);
@@ -391,11 +362,9 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
     }
     const double load = (state.fluid + state.contact).sum() * area;
     if (load_control) out[h0] = (load - w) / w;
-    result_measure.mass = largest / (couette > 0.0 ? couette : 1.0);
     result_measure.load = load_control ? std::abs(load - w) / w : 0.0;
     result_measure.contact = contact;
     result_measure.norm = out.norm();
-    if (rows_too) rows.start[n] = rows.terms.size();
     if (!dense_too) return result_measure;
     // Rows of J^T are the unknowns: s_j from the pressure rows (zero where
     // s_j is cavitated or the node fixed), q_j = P times the film block.
@@ -410,15 +379,8 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
       }
       jacobian_t.row(ni + jj) *= P;
     }
-    for (std::size_t k = 0; k < n; ++k) {
-      if (topology.fixed(k)) continue;
-      linearise(topology, k, coefficients, state.fluid, state.theta, state.reynolds_film, second_order, terms);
-      for (const LocalTerm& t : terms) {
-        if (!topology.fixed(t.node) && branch_full[t.node] == 0) {
-          jacobian_t(static_cast<Eigen::Index>(t.node), static_cast<Eigen::Index>(k)) += t.by_fraction / mass_scale;
-        }
-      }
-    }
+    detail::add_fraction_columns(topology, coefficients, state.fluid, state.theta, state.reynolds_film, second_order,
+                                 mass_scale, branch_full, terms, jacobian_t);
     // The contact rows: open ones fix q, closed ones the film.
     for (std::size_t k = 0; k < n; ++k) {
       const auto kk = static_cast<Eigen::Index>(k);
@@ -446,20 +408,8 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
     return result_measure;
   };
 
-  const auto scale_masses = [&]() {
-    double couette = 0.0;
-    for (std::size_t k = 0; k < n; ++k) {
-      if (!topology.fixed(k)) {
-        couette = std::max(
-            couette, (topology.couette_x() + topology.couette_y()) * x.reynolds_film[static_cast<Eigen::Index>(k)]);
-      }
-    }
-    mass_scale = couette;
-  };
-  const double smallest_tolerance = std::min({options.tolerance, options.load_tolerance, options.contact_tolerance});
-  const auto converged = [&](const Measure& measured) {
-    return measured.mass <= options.tolerance && measured.load <= options.load_tolerance &&
-           measured.contact <= options.contact_tolerance;
+  const auto scale_masses = [&] {
+    mass_scale = detail::largest_couette_outflow(topology, Eigen::ArrayXd::Ones(ni), x.reynolds_film);
   };
 
   evaluate(x);
@@ -469,175 +419,118 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
   // cold, with a quarter of the steps: where it fails the dry and thick
   // starts failed too on the rough point contacts measured (32^2, 64^2:
   // 134 steps spent), and the speed continuation from a faster film is the
-  // cheaper way on (solve_mixed_film).
+  // cheaper way on (solve_mixed_film). Each start but the last gets an
+  // equal share of the steps.
   const std::size_t attempts = given_start || !load_control || krylov ? 1 : kStarts.size();
   const int cold_budget = krylov && !given_start && load_control
                               ? std::max(1, options.max_iterations / kKrylovColdShare)
                               : options.max_iterations;
-  int steps = 0;
-  for (std::size_t attempt = 0; attempt < attempts; ++attempt) {
-    if (attempt > 0) {
-      set_start(kStarts[attempt]);
-      evaluate(x);
-      scale_masses();
+  // The film's differences from the EHL film's Newton iteration: the
+  // contact rows' tolerance, Eisenstat & Walker's forcing term, a refused
+  // step counted (the continuations add the steps of every solve), up to
+  // three starts with the limit on the last, the step's branches and the
+  // clipped step on point contacts.
+  detail::FilmNewton newton;
+  newton.rules = {
+      .words = {.solver = "the mixed film's", .film = "the mixed film", .krylov_step = "the mixed film's "},
+      .tolerances = {.mass = options.tolerance, .load = options.load_tolerance, .contact = options.contact_tolerance},
+      .forcing = detail::FilmForcing::eisenstat_walker,
+      .krylov = krylov,
+      .krylov_tolerance = options.krylov_tolerance,
+      .counts_refused_steps = true,
+      .starts = attempts,
+      .share = std::max(1, options.max_iterations / static_cast<int>(attempts)),
+      .limit = cold_budget,
+      .limit_on_each_start = false};
+  newton.measure = [&] { return measure(x, residual, false); };
+  newton.lay_start = [&](std::size_t attempt) {
+    set_start(kStarts[attempt]);
+    evaluate(x);
+    scale_masses();
+    return true;
+  };
+  // A branch pass's GMRES (and the tight solve's) goes on from the last
+  // solve's step of this Newton step: they differ in a few rows.
+  bool warm = false;
+  newton.solve = [&](const detail::FilmMeasure& current, double forcing, bool tight) {
+    detail::FilmNewtonSolve outcome;
+    if (!tight) warm = false;
+    for (std::size_t j = 0; j < n; ++j) {
+      const auto jj = static_cast<Eigen::Index>(j);
+      branch_full[j] = x.s[jj] >= 0.0 ? 1 : 0;
+      closed[j] = x.film[jj] / H < x.q[jj] ? 1 : 0;
+      rows.open_film[j] = x.film[jj] > hb ? 1 : 0;
     }
-    // Each start but the last gets an equal share of the steps.
-    const int budget = attempt + 1 == attempts ? cold_budget - steps
-                                               : std::max(1, options.max_iterations / static_cast<int>(attempts));
-    result.status = FilmStatus::failure;
-    result.message.clear();
-    Measure current = measure(x, residual, false);
-    // The forcing term's history (newton_forcing): this start's steps only.
-    double previous_norm = 0.0, forcing = kLargestForcing;
-    for (int iteration = 0;; ++iteration) {
-      if (converged(current)) {
-        result.status = FilmStatus::converged;
-        break;
-      }
-      if (!std::isfinite(current.norm)) {
-        result.message = fmt::format("the mixed film's Newton iteration diverged after {} steps", steps);
-        break;
-      }
-      if (iteration == budget) {
-        result.status = FilmStatus::iteration_limit;
-        result.message = fmt::format(
-            "the mixed film did not converge in {} Newton steps: relative mass residual {:.3g} (tolerance {:.3g}), "
-            "load error {:.3g} (tolerance {:.3g}), contact residual {:.3g} (tolerance {:.3g})",
-            steps, current.mass, options.tolerance, current.load, options.load_tolerance, current.contact,
-            options.contact_tolerance);
-        break;
-      }
-      // An inexact Newton step on the GMRES path (Dembo, Eisenstat &
-      // Steihaug 1982): GMRES to the forcing term, solved again to
-      // krylov_tolerance when no step along the loose direction lowers the
-      // residual (as the EHL film does).
-      forcing = detail::newton_forcing(current.norm, previous_norm, forcing, kLargestForcing, smallest_tolerance);
-      previous_norm = current.norm;
-      const bool short_steps_taken = current.norm >= kLargestForcing;
-      bool accepted = false, failed = false;
-      Measure tried;
-      // A branch pass's GMRES (and the tight solve's) goes on from the last
-      // solve's step of this Newton step: they differ in a few rows.
-      bool warm = false;
-      for (const bool tight : {false, true}) {
-        if (tight && !(krylov && forcing > options.krylov_tolerance)) break;
+    // On the GMRES path the rows do not depend on the branches: linearised
+    // once, then one GMRES solve per branch pass; the dense path's J is
+    // formed again per pass.
+    if (krylov) measure(x, residual, true);
+    const detail::MixedScales scales{P, H, mass_scale, load_control ? area / w : 0.0, load_control};
+    const bool short_steps_taken = current.norm >= detail::kLargestForcing;
+    const auto gmres_solve = [&] {
+      const detail::KrylovOutcome solved =
+          krylov_solver->solve(rows, branch_full, closed, scales, forcing, residual, step, warm);
+      warm = solved.converged;
+      outcome.krylov_iterations += solved.iterations;
+      outcome.krylov_message = solved.message;
+      return solved.converged || (short_steps_taken && solved.relative_residual <= kLoosestLinearResidual);
+    };
+    const auto linearise_rows = [&] {
+      measure(x, residual, true);
+      contact_residuals(x, H, closed, residual);
+    };
+    for (int pass = 0; pass < detail::kBranchPasses; ++pass) {
+      outcome.solved = krylov ? detail::branch_consistent_step_with(gmres_solve, topology, x.s, step, branch_full)
+                              : detail::branch_consistent_step(linearise_rows, topology, x.s, jacobian_t, residual, lu,
+                                                               step, branch_full);
+      if (!outcome.solved || pass + 1 == detail::kBranchPasses || !step_branches) break;
+      if (krylov) {
+        krylov_solver->film_change(step, film_change);
+      } else {
+        // dh = K (dp_f + dp_c) + dh0 with the dense K.
+        pressure_change = P * step.segment(ni, ni);
         for (std::size_t j = 0; j < n; ++j) {
           const auto jj = static_cast<Eigen::Index>(j);
-          branch_full[j] = x.s[jj] >= 0.0 ? 1 : 0;
-          closed[j] = x.film[jj] / H < x.q[jj] ? 1 : 0;
-          rows.open_film[j] = x.film[jj] > hb ? 1 : 0;
+          if (!topology.fixed(j) && branch_full[j] != 0) pressure_change[jj] += P * step[jj];
         }
-        if (krylov) {
-          // The rows do not depend on the branches: linearised once, then
-          // one GMRES solve per branch pass.
-          measure(x, residual, true);
-          const detail::MixedScales scales{P, H, mass_scale, load_control ? area / w : 0.0, load_control};
-          int step_iterations = 0;
-          std::string krylov_message;
-          const double step_forcing = tight ? 0.0 : forcing;
-          const auto gmres_solve = [&] {
-            const detail::KrylovOutcome outcome =
-                krylov_solver->solve(rows, branch_full, closed, scales, step_forcing, residual, step, warm);
-            warm = outcome.converged;
-            step_iterations += outcome.iterations;
-            krylov_message = outcome.message;
-            return outcome.converged || (short_steps_taken && outcome.relative_residual <= kLoosestLinearResidual);
-          };
-          bool solved = true;
-          for (int pass = 0; pass < detail::kBranchPasses; ++pass) {
-            solved = detail::branch_consistent_step_with(gmres_solve, topology, x.s, step, branch_full);
-            if (!solved || pass + 1 == detail::kBranchPasses || !step_branches) break;
-            krylov_solver->film_change(step, film_change);
-            if (!take_step_branches(x, hb, H, step, film_change, closed, rows.open_film)) break;
-            contact_residuals(x, H, closed, residual);
-          }
-          result.krylov_iterations += step_iterations;
-          result.max_krylov_iterations_per_step = std::max(result.max_krylov_iterations_per_step, step_iterations);
-          if (!solved) {
-            result.message = fmt::format("the mixed film's Newton step {}: {}", steps + 1, krylov_message);
-            failed = true;
-            break;
-          }
-        } else {
-          bool solved = true;
-          for (int pass = 0; pass < detail::kBranchPasses; ++pass) {
-            const auto linearise_rows = [&] {
-              measure(x, residual, true);
-              contact_residuals(x, H, closed, residual);
-            };
-            solved = detail::branch_consistent_step(linearise_rows, topology, x.s, jacobian_t, residual, lu, step,
-                                                    branch_full);
-            if (!solved || pass + 1 == detail::kBranchPasses || !step_branches) break;
-            // dh = K (dp_f + dp_c) + dh0 with the dense K.
-            pressure_change = P * step.segment(ni, ni);
-            for (std::size_t j = 0; j < n; ++j) {
-              const auto jj = static_cast<Eigen::Index>(j);
-              if (!topology.fixed(j) && branch_full[j] != 0) pressure_change[jj] += P * step[jj];
-            }
-            film_change.noalias() = k_matrix * pressure_change;
-            if (load_control) film_change.array() += step[h0];
-            if (!take_step_branches(x, hb, H, step, film_change, closed, rows.open_film)) break;
-          }
-          if (!solved) {
-            result.message = fmt::format("the mixed film's Newton step {} is singular", steps + 1);
-            failed = true;
-            break;
-          }
-        }
-        const double largest_change = step.head(2 * ni).cwiseAbs().maxCoeff();
-        double lambda = std::min(1.0, kLargestStep / std::max(largest_change, 1e-300));
-        // h0 by at most kLargestStep times the thinnest film.
-        const double offset_cap =
-            kLargestStep * std::max(x.film.maxCoeff() > 0.0 ? x.reynolds_film.minCoeff() : 0.0, kFilmFloorShare * H);
-        if (load_control) lambda = std::min(lambda, offset_cap / std::max(std::abs(step[h0]), 1e-300));
-        // Where the trust region would shorten the whole step for a few
-        // entries (contact cells, whose fluid pressure the h_b film barely
-        // constrains, asking for tens of pressure scales), first the step
-        // with each entry clipped to the trust region, the rest whole, and
-        // its halves; the line search judges them as the scaled step.
-        if (lambda < 1.0 && step_branches) {
-          clipped.head(2 * ni) = step.head(2 * ni).cwiseMax(-kLargestStep).cwiseMin(kLargestStep);
-          if (load_control) clipped[h0] = std::clamp(step[h0], -offset_cap, offset_cap);
-          for (int halving = 0; halving < kClippedHalvings && !accepted; ++halving) {
-            const double mu = std::ldexp(1.0, -halving);
-            trial.s = x.s + mu * clipped.head(ni).array();
-            trial.q = x.q + mu * clipped.segment(ni, ni).array();
-            trial.offset = load_control ? x.offset + mu * clipped[h0] : x.offset;
-            if (!evaluate(trial)) continue;
-            tried = measure(trial, trial_residual, false);
-            accepted = std::isfinite(tried.norm) && tried.norm <= (1.0 - 1e-4 * mu * lambda) * current.norm;
-          }
-          if (accepted) break;
-        }
-        for (int halving = 0; halving <= 30; ++halving, lambda *= 0.5) {
-          trial.s = x.s + lambda * step.head(ni).array();
-          trial.q = x.q + lambda * step.segment(ni, ni).array();
-          trial.offset = load_control ? x.offset + lambda * step[h0] : x.offset;
-          if (!evaluate(trial)) continue;
-          tried = measure(trial, trial_residual, false);
-          if (std::isfinite(tried.norm) && tried.norm <= (1.0 - 1e-4 * lambda) * current.norm) {
-            accepted = true;
-            break;
-          }
-          ++result.line_search_halvings;
-        }
-        if (accepted) break;
+        film_change.noalias() = k_matrix * pressure_change;
+        if (load_control) film_change.array() += step[h0];
       }
-      ++steps;
-      if (failed) break;
-      if (!accepted) {
-        result.message = fmt::format(
-            "the mixed film's Newton iteration stalled at step {}: no step along the Newton direction lowers the "
-            "residual (relative mass residual {:.3g}, load error {:.3g}, contact residual {:.3g})",
-            steps, current.mass, current.load, current.contact);
-        break;
-      }
-      std::swap(x, trial);
-      current = tried;
+      if (!take_step_branches(x, hb, H, step, film_change, closed, rows.open_film)) break;
+      if (krylov) contact_residuals(x, H, closed, residual);
     }
-    if (result.converged()) break;
-  }
-  result.iterations = steps;
+    return outcome;
+  };
+  // s and q by at most kLargestStep, h0 by at most kLargestStep times the
+  // thinnest film.
+  const auto offset_cap = [&] {
+    return kLargestStep * std::max(x.film.maxCoeff() > 0.0 ? x.reynolds_film.minCoeff() : 0.0, kFilmFloorShare * H);
+  };
+  newton.trust_region = [&] {
+    const double largest_change = step.head(2 * ni).cwiseAbs().maxCoeff();
+    const double lambda = std::min(1.0, kLargestStep / std::max(largest_change, 1e-300));
+    return load_control ? std::min(lambda, offset_cap() / std::max(std::abs(step[h0]), 1e-300)) : lambda;
+  };
+  // Where the trust region would shorten the whole step for a few entries
+  // (contact cells, whose fluid pressure the h_b film barely constrains,
+  // asking for tens of pressure scales), first the step with each entry
+  // clipped to the trust region, the rest whole, and its halves.
+  newton.clip = [&](double lambda) {
+    if (!(lambda < 1.0 && step_branches)) return false;
+    clipped.head(2 * ni) = step.head(2 * ni).cwiseMax(-kLargestStep).cwiseMin(kLargestStep);
+    if (load_control) clipped[h0] = std::clamp(step[h0], -offset_cap(), offset_cap());
+    return true;
+  };
+  newton.try_step = [&](double scale, bool clip) -> std::optional<detail::FilmMeasure> {
+    const Eigen::VectorXd& along = clip ? clipped : step;
+    trial.s = x.s + scale * along.head(ni).array();
+    trial.q = x.q + scale * along.segment(ni, ni).array();
+    trial.offset = load_control ? x.offset + scale * along[h0] : x.offset;
+    if (!evaluate(trial)) return std::nullopt;
+    return measure(trial, trial_residual, false);
+  };
+  newton.accept = [&] { std::swap(x, trial); };
+  detail::run_film_newton(newton, result);
   result.used_krylov = krylov;
   result.entrainment_speed = std::hypot(conditions.entrainment_velocity[0], conditions.entrainment_velocity[1]);
 
@@ -685,27 +578,32 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
   }
   result.central_film_thickness = result.film[centre];
   result.minimum_film_thickness = result.film.minCoeff();
-  if (result.converged()) {
-    if (!(result.relative_residual <= 10.0 * options.tolerance && result.load_error <= 10.0 * options.load_tolerance &&
-          result.complementarity_error <= 10.0 * options.contact_tolerance &&
-          satisfies_complementarity(result.fluid_pressure, result.fluid_fraction))) {
-      result.status = FilmStatus::failure;
-      result.message = fmt::format(
-          "the mixed film's check failed after the Newton iteration stopped: relative mass residual {:.3g}, load "
-          "error {:.3g}, contact complementarity {:.3g}",
-          result.relative_residual, result.load_error, result.complementarity_error);
-    }
-  }
+  detail::check_after_newton(newton.rules, result.complementarity_error,
+                             satisfies_complementarity(result.fluid_pressure, result.fluid_fraction), result);
   add_mixed_friction(grid, conditions, laws, options.friction, hb, result);
   result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return result;
 }
 
-// The GMRES work of `from` added into `into` (continuations count every solve).
-void add_krylov_work(const MixedFilm& from, int& iterations, int& most_per_step) {
-  iterations += from.krylov_iterations;
-  most_per_step = std::max(most_per_step, from.max_krylov_iterations_per_step);
-}
+// The Newton and GMRES work of a continuation's solves (every solve counts,
+// the films between are discarded).
+struct Work {
+  int steps = 0, solves = 0, krylov = 0, most_krylov = 0;
+
+  void add(const MixedFilm& film, int solve = 1) {
+    steps += film.iterations;
+    solves += solve;
+    krylov += film.krylov_iterations;
+    most_krylov = std::max(most_krylov, film.max_krylov_iterations_per_step);
+  }
+  // `film` with the work as its counts.
+  MixedFilm into(MixedFilm film) const {
+    film.iterations = steps;
+    film.krylov_iterations = krylov;
+    film.max_krylov_iterations_per_step = most_krylov;
+    return film;
+  }
+};
 
 }  // namespace
 
@@ -732,16 +630,14 @@ constexpr int kContinuationSolves = 60;
 
 MixedFilm continue_in_speed(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
                             const LubricantLaws& laws, const MixedFilmOptions& options, MixedFilm film, double factor,
-                            int& steps, int& solves, int& krylov, int& most_krylov) {
+                            Work& work) {
   double ratio = kContinuationRatio;
-  while (factor != 1.0 && solves < kContinuationSolves) {
+  while (factor != 1.0 && work.solves < kContinuationSolves) {
     const double log_step = std::min(std::abs(std::log(factor)), std::log(ratio));
     const double next =
         std::abs(std::log(factor)) <= log_step ? 1.0 : factor * std::exp(factor > 1.0 ? -log_step : log_step);
     MixedFilm trial = solve_once(op, gap, at_speed_factor(conditions, next), laws, options, &film);
-    ++solves;
-    steps += trial.iterations;
-    add_krylov_work(trial, krylov, most_krylov);
+    work.add(trial);
     if (trial.converged()) {
       film = std::move(trial);
       factor = next;
@@ -757,7 +653,7 @@ MixedFilm continue_in_speed(InfluenceOperator& op, const Eigen::ArrayXd& gap, co
   if (factor != 1.0) {
     film.status = FilmStatus::iteration_limit;
     film.message =
-        fmt::format("speed continuation stopped after {} solves at {:.4g} times the velocities", solves, factor);
+        fmt::format("speed continuation stopped after {} solves at {:.4g} times the velocities", work.solves, factor);
   }
   return film;
 }
@@ -777,8 +673,8 @@ MixedFilm continue_in_offset(InfluenceOperator& op, const Eigen::ArrayXd& gap, c
                              const LubricantLaws& laws, const MixedFilmOptions& options, const MixedFilm* start,
                              MixedFilm failed) {
   MixedFilm from;
-  int steps = failed.iterations, solves = 1, krylov = failed.krylov_iterations,
-      most_krylov = failed.max_krylov_iterations_per_step;
+  Work work;
+  work.add(failed);
   if (start != nullptr && start->converged() && start->fluid_pressure.size() == gap.size()) {
     from = *start;
   } else {
@@ -790,21 +686,17 @@ MixedFilm continue_in_offset(InfluenceOperator& op, const Eigen::ArrayXd& gap, c
     MixedFilmOptions by_load = options;
     by_load.load = dry.total_force;
     from = solve_mixed_film(op, gap, conditions, laws, by_load);
-    steps += from.iterations;
-    add_krylov_work(from, krylov, most_krylov);
-    ++solves;
+    work.add(from);
     if (!from.converged()) return failed;
   }
   const double first = from.offset;
   double done = 0.0, step = 1.0;
-  while (done < 1.0 && solves < kOffsetSolves) {
+  while (done < 1.0 && work.solves < kOffsetSolves) {
     const double next = std::min(1.0, done + step);
     MixedFilmOptions at = options;
     at.offset = first + next * (options.offset - first);
     MixedFilm trial = solve_once(op, gap, conditions, laws, at, &from);
-    ++solves;
-    steps += trial.iterations;
-    add_krylov_work(trial, krylov, most_krylov);
+    work.add(trial);
     if (trial.converged()) {
       from = std::move(trial);
       done = next;
@@ -814,21 +706,15 @@ MixedFilm continue_in_offset(InfluenceOperator& op, const Eigen::ArrayXd& gap, c
     step *= 0.5;
     if (step < kSmallestOffsetStep) {
       trial.message = fmt::format("separation continuation stalled at h0 = {:.6g} m: {}", at.offset, trial.message);
-      trial.iterations = steps;
-      trial.krylov_iterations = krylov;
-      trial.max_krylov_iterations_per_step = most_krylov;
-      return trial;
+      return work.into(std::move(trial));
     }
   }
   if (done < 1.0) {
     from.status = FilmStatus::iteration_limit;
-    from.message = fmt::format("separation continuation stopped after {} solves at h0 = {:.6g} m", solves,
+    from.message = fmt::format("separation continuation stopped after {} solves at h0 = {:.6g} m", work.solves,
                                first + done * (options.offset - first));
   }
-  from.iterations = steps;
-  from.krylov_iterations = krylov;
-  from.max_krylov_iterations_per_step = most_krylov;
-  return from;
+  return work.into(std::move(from));
 }
 
 }  // namespace
@@ -850,8 +736,8 @@ MixedFilm detail::solve_mixed_film_on_grid(InfluenceOperator& op, const Eigen::A
   // Where the film does not converge from its starts (the mixed regime, with
   // contacts coming and going), continue in the speed: from the given film's
   // speed if it has one, else from a faster film that converges.
-  int steps = film.iterations, solves = use == MixedStartUse::continue_only ? 0 : 1, krylov = film.krylov_iterations,
-      most_krylov = film.max_krylov_iterations_per_step;
+  Work work;
+  work.add(film, use == MixedStartUse::continue_only ? 0 : 1);
   MixedFilm from;
   double factor = 0.0;
   const double speed = std::hypot(conditions.entrainment_velocity[0], conditions.entrainment_velocity[1]);
@@ -861,25 +747,14 @@ MixedFilm detail::solve_mixed_film_on_grid(InfluenceOperator& op, const Eigen::A
   }
   for (double faster = 4.0; factor == 0.0 && faster <= 1e4; faster *= 4.0) {
     MixedFilm trial = solve_once(op, gap, at_speed_factor(conditions, faster), laws, options, nullptr);
-    ++solves;
-    steps += trial.iterations;
-    add_krylov_work(trial, krylov, most_krylov);
+    work.add(trial);
     if (trial.converged()) {
       from = std::move(trial);
       factor = faster;
     }
   }
-  if (factor == 0.0) {
-    film.iterations = steps;
-    film.krylov_iterations = krylov;
-    film.max_krylov_iterations_per_step = most_krylov;
-    return film;
-  }
-  MixedFilm continued = continue_in_speed(op, gap, conditions, laws, options, std::move(from), factor, steps, solves,
-                                          krylov, most_krylov);
-  continued.iterations = steps;
-  continued.krylov_iterations = krylov;
-  continued.max_krylov_iterations_per_step = most_krylov;
+  if (factor == 0.0) return work.into(std::move(film));
+  MixedFilm continued = work.into(continue_in_speed(op, gap, conditions, laws, options, std::move(from), factor, work));
   continued.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return continued;
 }

@@ -8,6 +8,9 @@
 
 namespace halfspace::lubrication::detail {
 
+// The loosest relative tolerance of a GMRES step (far from the solution).
+inline constexpr double kLargestForcing = 1e-2;
+
 // eta_k for ||F_k|| = `norm` after ||F_{k-1}|| = `previous_norm` (<= 0 on
 // the first step: `largest`) and eta_{k-1} = `previous`: Eisenstat &
 // Walker's (1996) choice 2, eta_k = gamma (||F_k|| / ||F_{k-1}||)^alpha with

@@ -179,6 +179,67 @@ inline double linearise(const ReynoldsStencil& topology, std::size_t k, const No
   return balance;
 }
 
+// The largest Couette outflow (u_x + u_y) rho h over the free nodes, the
+// mass rows' scale (rho: the density ratio, or 1 at the start).
+template <class Density>
+double largest_couette_outflow(const ReynoldsStencil& topology, const Density& rho, const Eigen::ArrayXd& h) {
+  double couette = 0.0;
+  for (Eigen::Index k = 0; k < h.size(); ++k) {
+    if (!topology.fixed(static_cast<std::size_t>(k))) {
+      couette = std::max(couette, (topology.couette_x() + topology.couette_y()) * rho[k] * h[k]);
+    }
+  }
+  return couette;
+}
+
+// A Newton residual's mass rows at (p, theta, h), `c` updated there: each
+// free node's balance over mass_scale into `out` (0 where p is imposed);
+// its local terms appended to `rows` (offsets and terms, the GMRES path's;
+// null: not wanted) and handed to `dense_row(k, terms)`. Returns the
+// relative mass residual: the largest balance over the largest Couette
+// outflow.
+template <class Rows, class DenseRow>
+double mass_rows(const ReynoldsStencil& topology, const NodeCoefficients& c, const Eigen::ArrayXd& p,
+                 const Eigen::ArrayXd& theta, const Eigen::ArrayXd& h, bool second_order, double mass_scale,
+                 std::vector<LocalTerm>& terms, Eigen::VectorXd& out, Rows* rows, DenseRow&& dense_row) {
+  const auto n = static_cast<std::size_t>(h.size());
+  if (rows != nullptr) rows->terms.clear();
+  double largest = 0.0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto kk = static_cast<Eigen::Index>(k);
+    if (rows != nullptr) rows->start[k] = rows->terms.size();
+    if (topology.fixed(k)) {
+      out[kk] = 0.0;
+      continue;
+    }
+    const double balance = linearise(topology, k, c, p, theta, h, second_order, terms);
+    largest = std::max(largest, std::abs(balance));
+    out[kk] = balance / mass_scale;
+    if (rows != nullptr) rows->terms.insert(rows->terms.end(), terms.begin(), terms.end());
+    dense_row(k, terms);
+  }
+  if (rows != nullptr) rows->start[n] = rows->terms.size();
+  const double couette = largest_couette_outflow(topology, c.rho, h);
+  return largest / (couette > 0.0 ? couette : 1.0);
+}
+
+// The dense J^T's d balance / d s of the cavitated free nodes (d theta / d s
+// = 1 there), added to the mass rows' columns.
+inline void add_fraction_columns(const ReynoldsStencil& topology, const NodeCoefficients& c, const Eigen::ArrayXd& p,
+                                 const Eigen::ArrayXd& theta, const Eigen::ArrayXd& h, bool second_order,
+                                 double mass_scale, const std::vector<char>& branch_full, std::vector<LocalTerm>& terms,
+                                 Eigen::MatrixXd& jacobian_t) {
+  for (std::size_t k = 0; k < branch_full.size(); ++k) {
+    if (topology.fixed(k)) continue;
+    linearise(topology, k, c, p, theta, h, second_order, terms);
+    for (const LocalTerm& t : terms) {
+      if (!topology.fixed(t.node) && branch_full[t.node] == 0) {
+        jacobian_t(static_cast<Eigen::Index>(t.node), static_cast<Eigen::Index>(k)) += t.by_fraction / mass_scale;
+      }
+    }
+  }
+}
+
 // The dense K from one product: K(i, j) depends only on the offset of the
 // two cells, and is even in each axis' offset on free grids.
 inline Eigen::MatrixXd influence_matrix(InfluenceOperator& op) {

@@ -1,0 +1,154 @@
+#include "film_newton.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "newton_forcing.hpp"
+
+namespace halfspace::lubrication::detail {
+
+namespace {
+
+// The clipped step's tries (1, 1/2, 1/4 of it) before the scaled step's.
+constexpr int kClippedHalvings = 3;
+// The scaled step's halvings before the line search gives up.
+constexpr int kMostHalvings = 30;
+// Armijo's sufficient decrease of the residual's norm (Dennis & Schnabel
+// 1983, sec. 6.3).
+constexpr double kSufficientDecrease = 1e-4;
+
+bool converged(const FilmTolerances& tolerances, const FilmMeasure& measured) {
+  return measured.mass <= tolerances.mass && measured.load <= tolerances.load &&
+         (!tolerances.contact || measured.contact <= *tolerances.contact);
+}
+
+// The relative residuals for a message, with their tolerances or without.
+std::string residuals(const FilmTolerances& tolerances, const FilmMeasure& measured, bool with_tolerances) {
+  const auto one = [&](std::string_view name, double value, double tolerance) {
+    return with_tolerances ? fmt::format("{} {:.3g} (tolerance {:.3g})", name, value, tolerance)
+                           : fmt::format("{} {:.3g}", name, value);
+  };
+  std::string text = one("relative mass residual", measured.mass, tolerances.mass) + ", " +
+                     one("load error", measured.load, tolerances.load);
+  if (tolerances.contact) text += ", " + one("contact residual", measured.contact, *tolerances.contact);
+  return text;
+}
+
+}  // namespace
+
+int run_film_newton(const FilmNewton& newton, NewtonFilmResult& result) {
+  const FilmNewtonRules& rules = newton.rules;
+  const FilmTolerances& tolerances = rules.tolerances;
+  const double smallest_tolerance = std::min({tolerances.mass, tolerances.load, tolerances.contact.value_or(1.0)});
+  int steps = 0, tight_retries = 0;
+  for (std::size_t attempt = 0;; ++attempt) {
+    result.status = FilmStatus::failure;
+    result.message.clear();
+    const bool last = attempt + 1 >= rules.starts;
+    const bool hands_over = !last && rules.share > 0;
+    const bool limited = last || rules.limit_on_each_start;
+    FilmMeasure current = newton.measure();
+    // The forcing term's history (newton_forcing): this start's steps only.
+    double previous_norm = 0.0, forcing = kLargestForcing;
+    for (int iteration = 0;; ++iteration) {
+      if (converged(tolerances, current)) {
+        result.status = FilmStatus::converged;
+        break;
+      }
+      if (!std::isfinite(current.norm)) {
+        result.message = fmt::format("{} Newton iteration diverged after {} steps", rules.words.solver, steps);
+        break;
+      }
+      // This start has used its share of the steps: the rest to the next.
+      if (hands_over && iteration == rules.share) break;
+      if (limited && steps == rules.limit) {
+        result.status = FilmStatus::iteration_limit;
+        result.message = fmt::format("{} did not converge in {} Newton steps: {}", rules.words.film, steps,
+                                     residuals(tolerances, current, true));
+        break;
+      }
+      // An inexact Newton step: GMRES to the forcing term, solved again to
+      // krylov_tolerance when no step along the loose direction lowers the
+      // residual (near the solution the loose direction's error can outweigh
+      // the descent it promises).
+      forcing = rules.forcing == FilmForcing::eisenstat_walker
+                    ? newton_forcing(current.norm, previous_norm, forcing, kLargestForcing, smallest_tolerance)
+                    : std::min(kLargestForcing, current.norm);
+      previous_norm = current.norm;
+      bool accepted = false, failed = false;
+      FilmMeasure tried;
+      for (const bool tight : {false, true}) {
+        if (tight && !(rules.krylov && forcing > rules.krylov_tolerance)) break;
+        if (tight) ++tight_retries;
+        const FilmNewtonSolve solve = newton.solve(current, tight ? 0.0 : forcing, tight);
+        result.krylov_iterations += solve.krylov_iterations;
+        result.max_krylov_iterations_per_step =
+            std::max(result.max_krylov_iterations_per_step, solve.krylov_iterations);
+        if (!solve.solved) {
+          result.message = rules.krylov ? fmt::format("{}Newton step {}: {}", rules.words.krylov_step, steps + 1,
+                                                      solve.krylov_message)
+                                        : fmt::format("{} Newton step {} is singular", rules.words.solver, steps + 1);
+          failed = true;
+          break;
+        }
+        // The trust region's length, then backtracking on the scaled
+        // residual's norm; where the film clips, first the clipped step and
+        // its halves, judged as the scaled step.
+        double lambda = newton.trust_region();
+        // Whether `scale` times the step (or the clipped one) lowers the
+        // norm by Armijo's share of `length`; nothing where its film is not
+        // valid.
+        const auto lowers = [&](double scale, bool clipped, double length) -> std::optional<bool> {
+          const std::optional<FilmMeasure> measured = newton.try_step(scale, clipped);
+          if (!measured) return std::nullopt;
+          tried = *measured;
+          return std::isfinite(tried.norm) && tried.norm <= (1.0 - kSufficientDecrease * length) * current.norm;
+        };
+        if (newton.clip && newton.clip(lambda)) {
+          for (int halving = 0; halving < kClippedHalvings && !accepted; ++halving) {
+            const double mu = std::ldexp(1.0, -halving);
+            accepted = lowers(mu, true, mu * lambda).value_or(false);
+          }
+          if (accepted) break;
+        }
+        for (int halving = 0; halving <= kMostHalvings && !accepted; ++halving, lambda *= 0.5) {
+          const std::optional<bool> lower = lowers(lambda, false, lambda);
+          accepted = lower.value_or(false);
+          if (lower && !accepted) ++result.line_search_halvings;
+        }
+        if (accepted) break;
+      }
+      if (!accepted && !failed) {
+        result.message = fmt::format(
+            "{} Newton iteration stalled at step {}: no step along the Newton direction lowers the residual ({})",
+            rules.words.solver, steps + 1, residuals(tolerances, current, false));
+      }
+      if (accepted || rules.counts_refused_steps) ++steps;
+      if (!accepted) break;
+      newton.accept();
+      current = tried;
+    }
+    if (result.status != FilmStatus::failure || last) break;
+    if (!newton.lay_start(attempt + 1)) break;
+  }
+  result.iterations = steps;
+  return tight_retries;
+}
+
+void check_after_newton(const FilmNewtonRules& rules, double contact, bool complementary, NewtonFilmResult& result) {
+  const FilmTolerances& tolerances = rules.tolerances;
+  if (!result.converged() ||
+      (result.relative_residual <= 10.0 * tolerances.mass && result.load_error <= 10.0 * tolerances.load &&
+       (!tolerances.contact || contact <= 10.0 * *tolerances.contact) && complementary)) {
+    return;
+  }
+  result.status = FilmStatus::failure;
+  result.message = fmt::format(
+      "{} check failed after the Newton iteration stopped: relative mass residual {:.3g}, load error {:.3g}",
+      rules.words.solver, result.relative_residual, result.load_error);
+  if (tolerances.contact) result.message += fmt::format(", contact complementarity {:.3g}", contact);
+}
+
+}  // namespace halfspace::lubrication::detail
