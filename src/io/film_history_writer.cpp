@@ -16,6 +16,7 @@
 #include "halfspace/io/output_file.hpp"
 #include "hdf5_writing.hpp"
 #include "md5.hpp"
+#include "step_group_name.hpp"
 
 namespace halfspace::io {
 namespace {

@@ -19,6 +19,7 @@
 #include "halfspace/io/xdmf_writer.hpp"
 #include "hdf5_writing.hpp"
 #include "md5.hpp"
+#include "step_group_name.hpp"
 
 namespace halfspace::io {
 namespace {

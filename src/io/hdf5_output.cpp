@@ -388,11 +388,6 @@ Hdf5Node Hdf5Node::create_group(std::string_view name) const {
   return Hdf5Node(group, transfer_);
 }
 
-std::string step_group_name(std::size_t step, std::size_t count) {
-  const std::size_t digits = std::max<std::size_t>(3, fmt::format("{}", count == 0 ? 0 : count - 1).size());
-  return fmt::format("{:0{}}", step, digits);
-}
-
 std::vector<char> hdf5_file_image(const std::filesystem::path& path,
                                   const std::function<void(const Hdf5Node& root)>& fill) {
   check_output_path(path);  // before assembling, which may take a while

@@ -24,11 +24,6 @@ namespace halfspace::io {
 std::vector<char> hdf5_file_image(const std::filesystem::path& path,
                                   const std::function<void(const Hdf5Node& root)>& fill);
 
-// The group name of step `step` of `count` in a history or sweep file: zero
-// padded to at least three digits, so that the names sort in step order
-// (the result reader finds a sweep's step by it too).
-std::string step_group_name(std::size_t step, std::size_t count);
-
 // Which rows of the fields a writer holds: all of them (the serial
 // writers), or, in a file that several processes write at once, this
 // process's rows from first_row on; the `lead` process writes the datasets

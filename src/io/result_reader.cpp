@@ -15,8 +15,8 @@
 #include "hdf5_handle.hpp"
 #include "hdf5_stored_data.hpp"
 #include "hdf5_superblock.hpp"
-#include "hdf5_writing.hpp"
 #include "reader_support.hpp"
+#include "step_group_name.hpp"
 
 namespace halfspace::io {
 namespace {

@@ -19,6 +19,7 @@
 #include "halfspace/io/result_attributes.hpp"
 #include "halfspace/io/xdmf_writer.hpp"
 #include "md5.hpp"
+#include "step_group_name.hpp"
 #include "sweep_writing.hpp"
 
 namespace halfspace::io {
