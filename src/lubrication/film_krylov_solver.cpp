@@ -77,8 +77,7 @@ FilmKrylovSolver::FilmKrylovSolver(InfluenceOperator& op, const ReynoldsStencil&
   border_solved_.resize(ni);
   head_in_.resize(ni);
   head_out_.resize(ni);
-  gmres_.resize(ni + 1, m);
-  work_.resize(ni + 1);
+  krylov_.resize(ni + 1, m);
   const int line_axis = topology.couette_y() > topology.couette_x() ? 1 : 0;
   preconditioner_ = make_film_preconditioner(settings_.preconditioner, op_.grid(), line_axis);
 }
@@ -152,13 +151,6 @@ void FilmKrylovSolver::apply_preconditioner(const Eigen::VectorXd& v, Eigen::Vec
   out[ni] = z;
 }
 
-int FilmKrylovSolver::gmres(double tolerance, int max_iterations, const Eigen::VectorXd& residual,
-                            Eigen::VectorXd& step) {
-  return gmres_.solve([this](const Eigen::VectorXd& v, Eigen::VectorXd& out) { apply_jacobian(v, out); },
-                      [this](const Eigen::VectorXd& v, Eigen::VectorXd& out) { apply_preconditioner(v, out); },
-                      residual, tolerance, max_iterations, step);
-}
-
 KrylovOutcome FilmKrylovSolver::solve(const LocalRows& rows, const std::vector<char>& branch_full,
                                       double pressure_scale, double mass_scale, double area_over_load, double forcing,
                                       const Eigen::VectorXd& residual, Eigen::VectorXd& step) {
@@ -179,36 +171,19 @@ KrylovOutcome FilmKrylovSolver::solve(const LocalRows& rows, const std::vector<c
     dp_ds_[jj] = !fixed && branch_full[j] != 0 ? pressure_scale : 0.0;
     dtheta_ds_[jj] = !fixed && branch_full[j] == 0 ? 1.0 : 0.0;
   }
-  KrylovOutcome outcome;
-  const double b_norm = residual.norm();
-  if (b_norm == 0.0) {
-    step.setZero();
-    outcome.converged = true;
-    return outcome;
-  }
   // The preconditioner of an earlier step serves while the branches are
-  // the same (LaggedPreconditioner).
+  // the same (LaggedPreconditioner); GMRES from 0, on the retry too.
   const bool same_branches = factorised_ && (dp_ds_.array() == load_row_.array() / area_over_load_).all();
-  const LaggedPreconditioner::Run run = lagged_.solve(
-      !same_branches, settings_.max_iterations, [&] { return factorised_ = factorise(outcome.message); },
-      [&](int max_iterations, bool) {
-        const int iterations = gmres(tolerance, max_iterations, residual, step);
-        return std::pair{iterations, step.allFinite()};
-      });
-  outcome.iterations = run.iterations;
-  if (!run.factorised) return outcome;
-  // The residual measured with the operator, not GMRES's estimate.
-  apply_jacobian(step, work_);
-  work_ += residual;
-  outcome.relative_residual = work_.norm() / b_norm;
-  outcome.converged = std::isfinite(outcome.relative_residual) && outcome.relative_residual <= tolerance;
-  if (!outcome.converged) {
-    outcome.message = fmt::format(
-        "the EHL Newton step's GMRES solve did not converge: relative residual {:.3g} (tolerance {:.3g}) after {} "
-        "iterations",
-        outcome.relative_residual, tolerance, outcome.iterations);
-  }
-  return outcome;
+  const KrylovNewtonStep::Rule rule{
+      .tolerance = tolerance,
+      .refactorise = !same_branches,
+      .failure =
+          "the EHL Newton step's GMRES solve did not converge: relative residual {0:.3g} (tolerance {2:.3g}) "
+          "after {1} iterations"};
+  return krylov_.solve([this](const Eigen::VectorXd& v, Eigen::VectorXd& out) { apply_jacobian(v, out); },
+                       [this](const Eigen::VectorXd& v, Eigen::VectorXd& out) { apply_preconditioner(v, out); },
+                       [this](std::string& message) { return factorised_ = factorise(message); }, residual,
+                       settings_.max_iterations, rule, step);
 }
 
 }  // namespace halfspace::lubrication::detail

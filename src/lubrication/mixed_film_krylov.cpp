@@ -26,7 +26,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <span>
 
 namespace halfspace::lubrication::detail {
@@ -74,8 +73,7 @@ MixedKrylovSolver::MixedKrylovSolver(InfluenceOperator& op, const ReynoldsStenci
   border_solved_.resize(2 * ni);
   head_in_.resize(2 * ni);
   head_out_.resize(2 * ni);
-  gmres_.resize(m_, settings_.restart);
-  work_.resize(m_);
+  krylov_.resize(m_, settings_.restart);
   if (settings_.preconditioner == KrylovPreconditioner::multigrid) {
     const int line_axis = topology.couette_y() > topology.couette_x() ? 1 : 0;
     block_ = std::make_unique<MixedBlockPreconditioner>(op.grid(), line_axis, local_);
@@ -244,17 +242,9 @@ void MixedKrylovSolver::apply_preconditioner(const Eigen::VectorXd& v, Eigen::Ve
   out[two_n] = z;
 }
 
-int MixedKrylovSolver::gmres(double tolerance, int max_iterations, const Eigen::VectorXd& residual,
-                             Eigen::VectorXd& step, bool warm) {
-  return gmres_.solve([this](const Eigen::VectorXd& v, Eigen::VectorXd& out) { apply_jacobian(v, out); },
-                      [this](const Eigen::VectorXd& v, Eigen::VectorXd& out) { apply_preconditioner(v, out); },
-                      residual, tolerance, max_iterations, step, warm);
-}
-
 KrylovOutcome MixedKrylovSolver::solve(const MixedRows& rows, const std::vector<char>& branch_full,
                                        const std::vector<char>& closed, const MixedScales& scales, double forcing,
                                        const Eigen::VectorXd& residual, Eigen::VectorXd& step, bool warm) {
-  KrylovOutcome outcome;
   rows_ = &rows;
   closed_ = &closed;
   const bool load_control = scales_.load_control;
@@ -266,32 +256,19 @@ KrylovOutcome MixedKrylovSolver::solve(const MixedRows& rows, const std::vector<
     dp_ds_[jj] = !fixed && branch_full[j] != 0 ? scales.pressure : 0.0;
     dtheta_ds_[jj] = !fixed && branch_full[j] == 0 ? 1.0 : 0.0;
   }
-  const double tolerance = std::max(settings_.tolerance, forcing);
   // The retry after a stale preconditioner failed goes on from where it
-  // stopped (GMRES's residual only falls).
-  const LaggedPreconditioner::Run run = lagged_.solve(
-      false, settings_.max_iterations, [&] { return factorise(outcome.message); },
-      [&](int max_iterations, bool retry) {
-        const int iterations = gmres(tolerance, max_iterations, residual, step, warm || retry);
-        return std::pair{iterations, step.allFinite()};
-      });
-  outcome.iterations = run.iterations;
-  if (!run.factorised) {
-    outcome.relative_residual = std::numeric_limits<double>::infinity();  // no step at all
-    return outcome;
-  }
-  // The residual recomputed with the operator, not GMRES's estimate.
-  apply_jacobian(step, work_);
-  const double b_norm = residual.norm();
-  outcome.relative_residual = b_norm > 0.0 ? (work_ + residual).norm() / b_norm : 0.0;
-  // GMRES's estimate and the true residual part by rounding: allow 10x.
-  outcome.converged = step.allFinite() && outcome.relative_residual <= 10.0 * tolerance;
-  if (!outcome.converged) {
-    outcome.message =
-        fmt::format("the mixed film's GMRES reached a relative residual of {:.3g} in {} iterations (tolerance {:.3g})",
-                    outcome.relative_residual, outcome.iterations, tolerance);
-  }
-  return outcome;
+  // stopped (GMRES's residual only falls); GMRES's estimate and the true
+  // residual part by rounding: allow 10x.
+  const KrylovNewtonStep::Rule rule{
+      .tolerance = std::max(settings_.tolerance, forcing),
+      .allowance = 10.0,
+      .warm = warm,
+      .retry_warm = true,
+      .failure = "the mixed film's GMRES reached a relative residual of {0:.3g} in {1} iterations (tolerance {2:.3g})"};
+  return krylov_.solve([this](const Eigen::VectorXd& v, Eigen::VectorXd& out) { apply_jacobian(v, out); },
+                       [this](const Eigen::VectorXd& v, Eigen::VectorXd& out) { apply_preconditioner(v, out); },
+                       [this](std::string& message) { return factorise(message); }, residual, settings_.max_iterations,
+                       rule, step);
 }
 
 }  // namespace halfspace::lubrication::detail

@@ -1,7 +1,6 @@
 // Restarted GMRES with right preconditioning (Saad & Schultz 1986; Saad
-// 2003, alg. 9.5) on matrix-free operators: the linear solve of the Newton
-// steps of the EHL film (film_krylov_solver.hpp) and of the mixed film
-// (mixed_film_krylov.hpp). Private to the library.
+// 2003, alg. 9.5) on matrix-free operators: the linear solve of the EHL and
+// mixed films' Newton steps (krylov_newton_step.hpp). Private to the library.
 #pragma once
 
 #include <Eigen/Core>
