@@ -17,8 +17,8 @@
 #include "film_preconditioner.hpp"
 #include "halfspace/lubrication/reynolds_stencil.hpp"
 #include "halfspace/operators/influence_operator.hpp"
-#include "krylov_newton_step.hpp"
 #include "local_influence.hpp"
+#include "restarted_gmres.hpp"
 #include "reynolds_linearisation.hpp"
 
 namespace halfspace::lubrication::detail {
@@ -66,7 +66,6 @@ class FilmKrylovSolver {
  private:
   void apply_jacobian(const Eigen::VectorXd& v, Eigen::VectorXd& out);
   bool factorise(std::string& message);
-  void apply_preconditioner(const Eigen::VectorXd& v, Eigen::VectorXd& out);
 
   InfluenceOperator& op_;
   const ReynoldsStencil& topology_;
@@ -82,10 +81,7 @@ class FilmKrylovSolver {
   CsrMatrix matrix_;
   std::vector<std::pair<int, double>> row_scratch_;
   std::unique_ptr<FilmPreconditioner> preconditioner_;
-  bool factorised_ = false;   // a factorisation exists (the branches are compared with its load row)
-  Eigen::VectorXd load_row_;  // the load row of the factorised preconditioner
-  Eigen::VectorXd border_column_, border_solved_, head_in_, head_out_;
-  double border_pivot_ = 0.0;
+  bool factorised_ = false;  // a factorisation exists (the branches are compared with its load row)
   KrylovNewtonStep krylov_;
 };
 

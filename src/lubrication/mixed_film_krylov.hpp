@@ -7,7 +7,7 @@
 // cells around each node), inverted approximately by block Gauss–Seidel
 // with the EHL film's V-cycle on the mass rows (mixed_block_preconditioner.hpp)
 // or exactly by Eigen's SparseLU (film_preconditioner.hpp), and kept across
-// solves while GMRES converges quickly with it (krylov_newton_step.hpp).
+// solves while GMRES converges quickly with it (restarted_gmres.hpp).
 // Private to the library.
 #pragma once
 
@@ -86,7 +86,6 @@ class MixedKrylovSolver {
  private:
   void apply_jacobian(const Eigen::VectorXd& v, Eigen::VectorXd& out);
   bool factorise(std::string& message);
-  void apply_preconditioner(const Eigen::VectorXd& v, Eigen::VectorXd& out);
 
   InfluenceOperator& op_;
   const ReynoldsStencil& topology_;
@@ -107,13 +106,10 @@ class MixedKrylovSolver {
   // The block preconditioner: the mass rows' M and F (n x n).
   CsrMatrix film_matrix_;
   std::unique_ptr<MixedBlockPreconditioner> block_;
-  void apply_inverse(const Eigen::VectorXd& in, Eigen::VectorXd& out);
   template <class FilmEntry>
   void mass_row(std::size_t k, bool every_entry, FilmEntry&& film_entry);
   bool factorise_block(std::string& message);
   bool factorise_border(std::string& message);
-  Eigen::VectorXd load_row_, border_column_, border_solved_, head_in_, head_out_;
-  double border_pivot_ = 0.0;
   KrylovNewtonStep krylov_;
 };
 
