@@ -77,11 +77,11 @@ int RestartedGmres::solve(const Apply& apply, const Apply& precondition, const E
   return iterations;
 }
 
-void KrylovNewtonStep::setup(Eigen::Index size, Eigen::Index border, int restart, Apply inverse) {
+void KrylovNewtonStep::setup(Eigen::Index size, Eigen::Index sparse_rows, int restart, Apply inverse) {
   gmres_.resize(size, restart);
   inverse_ = std::move(inverse);
-  bordered_ = size == border + 1;
-  for (Eigen::VectorXd* v : {&border_column, &load_row, &border_solved_, &head_in_, &head_out_}) v->resize(border);
+  bordered_ = size == sparse_rows + 1;
+  for (Eigen::VectorXd* v : {&border_column, &load_row, &border_solved_, &head_in_, &head_out_}) v->resize(sparse_rows);
   work_.resize(size);
 }
 

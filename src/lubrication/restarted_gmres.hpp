@@ -115,9 +115,9 @@ class KrylovNewtonStep {
     const char* failure = "";  // fmt message: {0} the measured residual, {1} the iterations, {2} the tolerance
   };
 
-  // Systems of `size` unknowns, B of `border` rows (size = border + 1: the
-  // bordered system), a GMRES(restart) basis and M (`inverse`).
-  void setup(Eigen::Index size, Eigen::Index border, int restart, Apply inverse);
+  // Systems of `size` unknowns, B of `sparse_rows` rows (bordered when
+  // size = sparse_rows + 1), a GMRES(restart) basis and M (`inverse`).
+  void setup(Eigen::Index size, Eigen::Index sparse_rows, int restart, Apply inverse);
 
   // c and l, the caller's to set before factorise_border.
   Eigen::VectorXd border_column, load_row;
