@@ -69,18 +69,13 @@ FilmKrylovSolver::FilmKrylovSolver(InfluenceOperator& op, const ReynoldsStencil&
   const auto ni = static_cast<Eigen::Index>(n_);
   const int m = settings_.restart;
   dp_ds_.resize(ni);
-  load_row_.resize(ni);
   dtheta_ds_.resize(ni);
   product_in_.resize(ni);
   product_out_.resize(ni);
-  border_column_.resize(ni);
-  border_solved_.resize(ni);
-  head_in_.resize(ni);
-  head_out_.resize(ni);
-  gmres_.resize(ni + 1, m);
-  work_.resize(ni + 1);
   const int line_axis = topology.couette_y() > topology.couette_x() ? 1 : 0;
   preconditioner_ = make_film_preconditioner(settings_.preconditioner, op_.grid(), line_axis);
+  krylov_.setup(ni + 1, ni, m,
+                [this](const Eigen::VectorXd& in, Eigen::VectorXd& out) { preconditioner_->apply(in, out); });
 }
 
 void FilmKrylovSolver::apply_jacobian(const Eigen::VectorXd& v, Eigen::VectorXd& out) {
@@ -113,7 +108,7 @@ bool FilmKrylovSolver::factorise(std::string& message) {
   matrix_.clear();
   for (std::size_t k = 0; k < n_; ++k) {
     const auto kk = static_cast<Eigen::Index>(k);
-    border_column_[kk] = 0.0;
+    krylov_.border_column[kk] = 0.0;
     row_scratch_.clear();
     if (topology_.fixed(k)) {
       row_scratch_.emplace_back(static_cast<int>(k), 1.0);
@@ -123,7 +118,7 @@ bool FilmKrylovSolver::factorise(std::string& message) {
         const auto j = static_cast<Eigen::Index>(term.node);
         row_scratch_.emplace_back(static_cast<int>(j),
                                   (term.by_pressure * dp_ds_[j] + term.by_fraction * dtheta_ds_[j]) / mass_scale_);
-        border_column_[kk] += term.by_film / mass_scale_;
+        krylov_.border_column[kk] += term.by_film / mass_scale_;
         local_.for_each(term.node, [&](std::size_t m, double k_value) {
           row_scratch_.emplace_back(static_cast<int>(m),
                                     term.by_film / mass_scale_ * k_value * dp_ds_[static_cast<Eigen::Index>(m)]);
@@ -133,30 +128,9 @@ bool FilmKrylovSolver::factorise(std::string& message) {
     matrix_.append_row(row_scratch_);
   }
   if (!preconditioner_->factorise(matrix_, message)) return false;
-  preconditioner_->apply(border_column_, border_solved_);
-  load_row_ = area_over_load_ * dp_ds_;
-  border_pivot_ = load_row_.dot(border_solved_);
-  if (!(std::isfinite(border_pivot_) && border_pivot_ != 0.0)) {
-    message = "the EHL preconditioner is singular: no node carries pressure to balance the load";
-    return false;
-  }
-  return true;
-}
-
-void FilmKrylovSolver::apply_preconditioner(const Eigen::VectorXd& v, Eigen::VectorXd& out) {
-  const auto ni = static_cast<Eigen::Index>(n_);
-  head_in_ = v.head(ni);
-  preconditioner_->apply(head_in_, head_out_);
-  const double z = (load_row_.dot(head_out_) - v[ni]) / border_pivot_;
-  out.head(ni) = head_out_ - z * border_solved_;
-  out[ni] = z;
-}
-
-int FilmKrylovSolver::gmres(double tolerance, int max_iterations, const Eigen::VectorXd& residual,
-                            Eigen::VectorXd& step) {
-  return gmres_.solve([this](const Eigen::VectorXd& v, Eigen::VectorXd& out) { apply_jacobian(v, out); },
-                      [this](const Eigen::VectorXd& v, Eigen::VectorXd& out) { apply_preconditioner(v, out); },
-                      residual, tolerance, max_iterations, step);
+  krylov_.load_row = area_over_load_ * dp_ds_;
+  return krylov_.factorise_border("the EHL preconditioner is singular: no node carries pressure to balance the load",
+                                  message);
 }
 
 KrylovOutcome FilmKrylovSolver::solve(const LocalRows& rows, const std::vector<char>& branch_full,
@@ -179,36 +153,18 @@ KrylovOutcome FilmKrylovSolver::solve(const LocalRows& rows, const std::vector<c
     dp_ds_[jj] = !fixed && branch_full[j] != 0 ? pressure_scale : 0.0;
     dtheta_ds_[jj] = !fixed && branch_full[j] == 0 ? 1.0 : 0.0;
   }
-  KrylovOutcome outcome;
-  const double b_norm = residual.norm();
-  if (b_norm == 0.0) {
-    step.setZero();
-    outcome.converged = true;
-    return outcome;
-  }
   // The preconditioner of an earlier step serves while the branches are
-  // the same (LaggedPreconditioner).
-  const bool same_branches = factorised_ && (dp_ds_.array() == load_row_.array() / area_over_load_).all();
-  const LaggedPreconditioner::Run run = lagged_.solve(
-      !same_branches, settings_.max_iterations, [&] { return factorised_ = factorise(outcome.message); },
-      [&](int max_iterations, bool) {
-        const int iterations = gmres(tolerance, max_iterations, residual, step);
-        return std::pair{iterations, step.allFinite()};
-      });
-  outcome.iterations = run.iterations;
-  if (!run.factorised) return outcome;
-  // The residual measured with the operator, not GMRES's estimate.
-  apply_jacobian(step, work_);
-  work_ += residual;
-  outcome.relative_residual = work_.norm() / b_norm;
-  outcome.converged = std::isfinite(outcome.relative_residual) && outcome.relative_residual <= tolerance;
-  if (!outcome.converged) {
-    outcome.message = fmt::format(
-        "the EHL Newton step's GMRES solve did not converge: relative residual {:.3g} (tolerance {:.3g}) after {} "
-        "iterations",
-        outcome.relative_residual, tolerance, outcome.iterations);
-  }
-  return outcome;
+  // the same (LaggedPreconditioner); GMRES from 0, on the retry too.
+  const bool same_branches = factorised_ && (dp_ds_.array() == krylov_.load_row.array() / area_over_load_).all();
+  const KrylovNewtonStep::Rule rule{
+      .tolerance = tolerance,
+      .refactorise = !same_branches,
+      .failure =
+          "the EHL Newton step's GMRES solve did not converge: relative residual {0:.3g} (tolerance {2:.3g}) "
+          "after {1} iterations"};
+  return krylov_.solve([this](const Eigen::VectorXd& v, Eigen::VectorXd& out) { apply_jacobian(v, out); },
+                       [this](std::string& message) { return factorised_ = factorise(message); }, residual,
+                       settings_.max_iterations, rule, step);
 }
 
 }  // namespace halfspace::lubrication::detail

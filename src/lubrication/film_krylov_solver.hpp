@@ -8,7 +8,6 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <algorithm>
 #include <cstddef>
 #include <memory>
 #include <string>
@@ -36,56 +35,6 @@ struct FilmKrylovSettings {
   // unless 2 <= restart <= 500, max_iterations >= 1, 0 < tolerance < 1 and
   // 0 <= neighbourhood <= 8.
   void validate() const;
-};
-
-// A Newton iteration's preconditioner kept from one linear solve to the
-// next (a lagged preconditioner; Knoll & Keyes 2004, J. Comput. Phys. 193,
-// 357): an earlier factorisation serves while GMRES converges with it in
-// few iterations, as the Jacobian changes little between late Newton steps
-// and between a step's branch passes (a few rows). Refactorised when the
-// caller asks (`refactorise`), when the last solve took more than
-// kRefactoriseAfter iterations, or when GMRES with the old one does not
-// converge within twice that (then solved again with the new one).
-class LaggedPreconditioner {
- public:
-  static constexpr int kRefactoriseAfter = 15;
-
-  struct Run {
-    bool factorised = true;  // false: `factorise` failed (its message is the caller's)
-    int iterations = 0;      // GMRES products, every attempt
-    int factorisations = 0;
-  };
-
-  // `factorise()` returns whether it succeeded; `gmres(max_iterations,
-  // retry)` solves (retry: the second attempt, with a new factorisation)
-  // and returns {iterations, whether its step is finite}.
-  template <class Factorise, class Gmres>
-  Run solve(bool refactorise, int max_iterations, Factorise&& factorise, Gmres&& gmres) {
-    Run run;
-    bool fresh = false;
-    if (!factorised_ || refactorise || last_iterations_ > kRefactoriseAfter) {
-      factorised_ = factorise();
-      ++run.factorisations;
-      if (!factorised_) return {false, 0, run.factorisations};
-      fresh = true;
-    }
-    const int stale_limit = std::min(max_iterations, 2 * kRefactoriseAfter);
-    auto [iterations, finite] = gmres(fresh ? max_iterations : stale_limit, false);
-    run.iterations = iterations;
-    if (!fresh && !(finite && iterations < stale_limit)) {
-      factorised_ = factorise();
-      ++run.factorisations;
-      if (!factorised_) return {false, run.iterations, run.factorisations};
-      iterations = gmres(max_iterations, true).first;
-      run.iterations += iterations;
-    }
-    last_iterations_ = iterations;
-    return run;
-  }
-
- private:
-  bool factorised_ = false;
-  int last_iterations_ = 0;
 };
 
 // The local derivatives of the Newton rows, one row per node in CSR form
@@ -117,10 +66,6 @@ class FilmKrylovSolver {
  private:
   void apply_jacobian(const Eigen::VectorXd& v, Eigen::VectorXd& out);
   bool factorise(std::string& message);
-  void apply_preconditioner(const Eigen::VectorXd& v, Eigen::VectorXd& out);
-  // GMRES from step = 0 to the relative residual `tolerance` (GMRES's own
-  // estimate); the iterations taken.
-  int gmres(double tolerance, int max_iterations, const Eigen::VectorXd& residual, Eigen::VectorXd& step);
 
   InfluenceOperator& op_;
   const ReynoldsStencil& topology_;
@@ -136,14 +81,8 @@ class FilmKrylovSolver {
   CsrMatrix matrix_;
   std::vector<std::pair<int, double>> row_scratch_;
   std::unique_ptr<FilmPreconditioner> preconditioner_;
-  LaggedPreconditioner lagged_;
-  bool factorised_ = false;   // a factorisation exists (the branches are compared with its load row)
-  Eigen::VectorXd load_row_;  // the load row of the factorised preconditioner
-  Eigen::VectorXd border_column_, border_solved_, head_in_, head_out_;
-  double border_pivot_ = 0.0;
-  // GMRES workspace.
-  RestartedGmres gmres_;
-  Eigen::VectorXd work_;
+  bool factorised_ = false;  // a factorisation exists (the branches are compared with its load row)
+  KrylovNewtonStep krylov_;
 };
 
 }  // namespace halfspace::lubrication::detail

@@ -26,7 +26,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <span>
 
 namespace halfspace::lubrication::detail {
@@ -69,13 +68,10 @@ MixedKrylovSolver::MixedKrylovSolver(InfluenceOperator& op, const ReynoldsStenci
   dtheta_ds_.resize(ni);
   total_.resize(ni);
   deflection_.resize(ni);
-  load_row_.resize(2 * ni);
-  border_column_.resize(2 * ni);
-  border_solved_.resize(2 * ni);
-  head_in_.resize(2 * ni);
-  head_out_.resize(2 * ni);
-  gmres_.resize(m_, settings_.restart);
-  work_.resize(m_);
+  // M: the block Gauss–Seidel's or the LU's.
+  krylov_.setup(m_, 2 * ni, settings_.restart, [this](const Eigen::VectorXd& in, Eigen::VectorXd& out) {
+    return block_ ? block_->apply(in, out) : preconditioner_->apply(in, out);
+  });
   if (settings_.preconditioner == KrylovPreconditioner::multigrid) {
     const int line_axis = topology.couette_y() > topology.couette_x() ? 1 : 0;
     block_ = std::make_unique<MixedBlockPreconditioner>(op.grid(), line_axis, local_);
@@ -121,19 +117,11 @@ void MixedKrylovSolver::film_change(const Eigen::VectorXd& step, Eigen::VectorXd
   if (scales_.load_control) out.array() += step[2 * ni];
 }
 
-void MixedKrylovSolver::apply_inverse(const Eigen::VectorXd& in, Eigen::VectorXd& out) {
-  if (block_) {
-    block_->apply(in, out);
-  } else {
-    preconditioner_->apply(in, out);
-  }
-}
-
 // Mass row k of the sparse part into row_scratch_ (the identity on a fixed
 // node): the local terms' d/ds, and each open film term's by_film K around
 // its node through film_entry(node, by_film K); with `every_entry` also the
 // zero ones (closed film terms), so that the LU's pattern stays the same at
-// every Newton step. Adds the row's h0 derivative into border_column_.
+// every Newton step. Adds the row's h0 derivative into krylov_.border_column.
 template <class FilmEntry>
 void MixedKrylovSolver::mass_row(std::size_t k, bool every_entry, FilmEntry&& film_entry) {
   if (topology_.fixed(k)) {
@@ -148,7 +136,7 @@ void MixedKrylovSolver::mass_row(std::size_t k, bool every_entry, FilmEntry&& fi
     row_scratch_.emplace_back(static_cast<int>(j),
                               (term.by_pressure * dp_ds_[j] + term.by_fraction * dtheta_ds_[j]) / mass);
     const double by_film = open_film[term.node] != 0 ? term.by_film / mass : 0.0;
-    border_column_[static_cast<Eigen::Index>(k)] += by_film;
+    krylov_.border_column[static_cast<Eigen::Index>(k)] += by_film;
     if (by_film == 0.0 && !every_entry) continue;
     local_.for_each(term.node, [&](std::size_t node, double k_value) { film_entry(node, by_film * k_value); });
   }
@@ -158,7 +146,7 @@ bool MixedKrylovSolver::factorise_block(std::string& message) {
   const auto ni = static_cast<Eigen::Index>(n_);
   const double H = scales_.film;
   const std::vector<char>& closed = *closed_;
-  border_column_.setZero();
+  krylov_.border_column.setZero();
   matrix_.clear();
   film_matrix_.clear();
   row_scratch_.clear();
@@ -174,7 +162,7 @@ bool MixedKrylovSolver::factorise_block(std::string& message) {
     film_matrix_.append_row(film_scratch_);
   }
   for (std::size_t k = 0; k < n_; ++k)
-    border_column_[ni + static_cast<Eigen::Index>(k)] = closed[k] != 0 ? 1.0 / H : 0.0;
+    krylov_.border_column[ni + static_cast<Eigen::Index>(k)] = closed[k] != 0 ? 1.0 / H : 0.0;
   return block_->factorise(matrix_, film_matrix_, closed, dp_ds_, scales_.pressure, H, message);
 }
 
@@ -186,7 +174,7 @@ bool MixedKrylovSolver::factorise(std::string& message) {
   const auto ni = static_cast<Eigen::Index>(n_);
   const double P = scales_.pressure, H = scales_.film;
   const std::vector<char>& closed = *closed_;
-  border_column_.setZero();
+  krylov_.border_column.setZero();
   // Every entry of the pattern is written, zero or not, so that the pattern
   // is the same at every Newton step (branches and contacts change) and is
   // analysed once.
@@ -209,7 +197,7 @@ bool MixedKrylovSolver::factorise(std::string& message) {
       row_scratch_.emplace_back(static_cast<int>(node), is_closed ? k_value * dp_ds_[mm] / H : 0.0);
       row_scratch_.emplace_back(static_cast<int>(n_ + node), is_closed ? k_value * P / H : 0.0);
     });
-    border_column_[ni + kk] = is_closed ? 1.0 / H : 0.0;
+    krylov_.border_column[ni + kk] = is_closed ? 1.0 / H : 0.0;
     matrix_.append_row(row_scratch_);
   }
   if (!preconditioner_->factorise(matrix_, message)) return false;
@@ -217,44 +205,17 @@ bool MixedKrylovSolver::factorise(std::string& message) {
 }
 
 bool MixedKrylovSolver::factorise_border(std::string& message) {
-  const auto ni = static_cast<Eigen::Index>(n_);
-  const double P = scales_.pressure;
   if (!scales_.load_control) return true;
-  apply_inverse(border_column_, border_solved_);
-  load_row_.head(ni) = scales_.area_over_load * dp_ds_;
-  load_row_.tail(ni).setConstant(scales_.area_over_load * P);
-  border_pivot_ = load_row_.dot(border_solved_);
-  if (!(std::isfinite(border_pivot_) && border_pivot_ != 0.0)) {
-    message = "the mixed film's preconditioner is singular: no pressure balances the load";
-    return false;
-  }
-  return true;
-}
-
-void MixedKrylovSolver::apply_preconditioner(const Eigen::VectorXd& v, Eigen::VectorXd& out) {
-  const auto two_n = static_cast<Eigen::Index>(2 * n_);
-  head_in_ = v.head(two_n);
-  apply_inverse(head_in_, head_out_);
-  if (!scales_.load_control) {
-    out = head_out_;
-    return;
-  }
-  const double z = (load_row_.dot(head_out_) - v[two_n]) / border_pivot_;
-  out.head(two_n) = head_out_ - z * border_solved_;
-  out[two_n] = z;
-}
-
-int MixedKrylovSolver::gmres(double tolerance, int max_iterations, const Eigen::VectorXd& residual,
-                             Eigen::VectorXd& step, bool warm) {
-  return gmres_.solve([this](const Eigen::VectorXd& v, Eigen::VectorXd& out) { apply_jacobian(v, out); },
-                      [this](const Eigen::VectorXd& v, Eigen::VectorXd& out) { apply_preconditioner(v, out); },
-                      residual, tolerance, max_iterations, step, warm);
+  const auto ni = static_cast<Eigen::Index>(n_);
+  krylov_.load_row.head(ni) = scales_.area_over_load * dp_ds_;
+  krylov_.load_row.tail(ni).setConstant(scales_.area_over_load * scales_.pressure);
+  return krylov_.factorise_border("the mixed film's preconditioner is singular: no pressure balances the load",
+                                  message);
 }
 
 KrylovOutcome MixedKrylovSolver::solve(const MixedRows& rows, const std::vector<char>& branch_full,
                                        const std::vector<char>& closed, const MixedScales& scales, double forcing,
                                        const Eigen::VectorXd& residual, Eigen::VectorXd& step, bool warm) {
-  KrylovOutcome outcome;
   rows_ = &rows;
   closed_ = &closed;
   const bool load_control = scales_.load_control;
@@ -266,32 +227,18 @@ KrylovOutcome MixedKrylovSolver::solve(const MixedRows& rows, const std::vector<
     dp_ds_[jj] = !fixed && branch_full[j] != 0 ? scales.pressure : 0.0;
     dtheta_ds_[jj] = !fixed && branch_full[j] == 0 ? 1.0 : 0.0;
   }
-  const double tolerance = std::max(settings_.tolerance, forcing);
   // The retry after a stale preconditioner failed goes on from where it
-  // stopped (GMRES's residual only falls).
-  const LaggedPreconditioner::Run run = lagged_.solve(
-      false, settings_.max_iterations, [&] { return factorise(outcome.message); },
-      [&](int max_iterations, bool retry) {
-        const int iterations = gmres(tolerance, max_iterations, residual, step, warm || retry);
-        return std::pair{iterations, step.allFinite()};
-      });
-  outcome.iterations = run.iterations;
-  if (!run.factorised) {
-    outcome.relative_residual = std::numeric_limits<double>::infinity();  // no step at all
-    return outcome;
-  }
-  // The residual recomputed with the operator, not GMRES's estimate.
-  apply_jacobian(step, work_);
-  const double b_norm = residual.norm();
-  outcome.relative_residual = b_norm > 0.0 ? (work_ + residual).norm() / b_norm : 0.0;
-  // GMRES's estimate and the true residual part by rounding: allow 10x.
-  outcome.converged = step.allFinite() && outcome.relative_residual <= 10.0 * tolerance;
-  if (!outcome.converged) {
-    outcome.message =
-        fmt::format("the mixed film's GMRES reached a relative residual of {:.3g} in {} iterations (tolerance {:.3g})",
-                    outcome.relative_residual, outcome.iterations, tolerance);
-  }
-  return outcome;
+  // stopped (GMRES's residual only falls); GMRES's estimate and the true
+  // residual part by rounding: allow 10x.
+  const KrylovNewtonStep::Rule rule{
+      .tolerance = std::max(settings_.tolerance, forcing),
+      .allowance = 10.0,
+      .warm = warm,
+      .retry_warm = true,
+      .failure = "the mixed film's GMRES reached a relative residual of {0:.3g} in {1} iterations (tolerance {2:.3g})"};
+  return krylov_.solve([this](const Eigen::VectorXd& v, Eigen::VectorXd& out) { apply_jacobian(v, out); },
+                       [this](std::string& message) { return factorise(message); }, residual, settings_.max_iterations,
+                       rule, step);
 }
 
 }  // namespace halfspace::lubrication::detail

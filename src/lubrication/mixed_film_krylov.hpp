@@ -7,8 +7,8 @@
 // cells around each node), inverted approximately by block Gauss–Seidel
 // with the EHL film's V-cycle on the mass rows (mixed_block_preconditioner.hpp)
 // or exactly by Eigen's SparseLU (film_preconditioner.hpp), and kept across
-// solves while GMRES converges quickly with it (film_krylov_solver.hpp's
-// LaggedPreconditioner). Private to the library.
+// solves while GMRES converges quickly with it (restarted_gmres.hpp).
+// Private to the library.
 #pragma once
 
 #include <Eigen/Core>
@@ -23,7 +23,6 @@
 #include "halfspace/operators/influence_operator.hpp"
 #include "local_influence.hpp"
 #include "mixed_block_preconditioner.hpp"
-#include "restarted_gmres.hpp"
 #include "reynolds_linearisation.hpp"
 
 namespace halfspace::lubrication::detail {
@@ -87,8 +86,6 @@ class MixedKrylovSolver {
  private:
   void apply_jacobian(const Eigen::VectorXd& v, Eigen::VectorXd& out);
   bool factorise(std::string& message);
-  void apply_preconditioner(const Eigen::VectorXd& v, Eigen::VectorXd& out);
-  int gmres(double tolerance, int max_iterations, const Eigen::VectorXd& residual, Eigen::VectorXd& step, bool warm);
 
   InfluenceOperator& op_;
   const ReynoldsStencil& topology_;
@@ -109,16 +106,11 @@ class MixedKrylovSolver {
   // The block preconditioner: the mass rows' M and F (n x n).
   CsrMatrix film_matrix_;
   std::unique_ptr<MixedBlockPreconditioner> block_;
-  void apply_inverse(const Eigen::VectorXd& in, Eigen::VectorXd& out);
   template <class FilmEntry>
   void mass_row(std::size_t k, bool every_entry, FilmEntry&& film_entry);
   bool factorise_block(std::string& message);
   bool factorise_border(std::string& message);
-  LaggedPreconditioner lagged_;
-  Eigen::VectorXd load_row_, border_column_, border_solved_, head_in_, head_out_;
-  double border_pivot_ = 0.0;
-  RestartedGmres gmres_;
-  Eigen::VectorXd work_;
+  KrylovNewtonStep krylov_;
 };
 
 }  // namespace halfspace::lubrication::detail

@@ -1,9 +1,15 @@
 // Restarted, right-preconditioned GMRES (restarted_gmres.hpp): Arnoldi by
 // modified Gram-Schmidt, the Hessenberg matrix reduced by Givens rotations
-// as it grows, so that |g_{j+1}| is the residual norm of the current iterate.
+// as it grows, so that |g_{j+1}| is the residual norm of the current iterate;
+// and a Newton step's solve with it.
 #include "restarted_gmres.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
+#include <initializer_list>
+#include <limits>
+#include <utility>
 
 namespace halfspace::lubrication::detail {
 
@@ -69,6 +75,63 @@ int RestartedGmres::solve(const Apply& apply, const Apply& precondition, const E
     if (!x.allFinite()) break;
   }
   return iterations;
+}
+
+void KrylovNewtonStep::setup(Eigen::Index size, Eigen::Index sparse_rows, int restart, Apply inverse) {
+  gmres_.resize(size, restart);
+  inverse_ = std::move(inverse);
+  bordered_ = size == sparse_rows + 1;
+  for (Eigen::VectorXd* v : {&border_column, &load_row, &border_solved_, &head_in_, &head_out_}) v->resize(sparse_rows);
+  work_.resize(size);
+}
+
+bool KrylovNewtonStep::factorise_border(const char* singular, std::string& message) {
+  inverse_(border_column, border_solved_);
+  border_pivot_ = load_row.dot(border_solved_);
+  if (std::isfinite(border_pivot_) && border_pivot_ != 0.0) return true;
+  message = singular;
+  return false;
+}
+
+void KrylovNewtonStep::precondition(const Eigen::VectorXd& v, Eigen::VectorXd& out) {
+  if (!bordered_) return inverse_(v, out);
+  const Eigen::Index n = head_in_.size();
+  head_in_ = v.head(n);
+  inverse_(head_in_, head_out_);
+  const double z = (load_row.dot(head_out_) - v[n]) / border_pivot_;
+  out.head(n) = head_out_ - z * border_solved_;
+  out[n] = z;
+}
+
+KrylovOutcome KrylovNewtonStep::solve(const Apply& jacobian, const std::function<bool(std::string&)>& factorise,
+                                      const Eigen::VectorXd& residual, int max_iterations, const Rule& rule,
+                                      Eigen::VectorXd& step) {
+  const Apply preconditioner = [this](const Eigen::VectorXd& v, Eigen::VectorXd& out) { precondition(v, out); };
+  KrylovOutcome outcome;
+  const LaggedPreconditioner::Run run = lagged_.solve(
+      rule.refactorise, max_iterations, [&] { return factorise(outcome.message); },
+      [&](int iterations_allowed, bool retry) {
+        const bool warm = rule.warm || (retry && rule.retry_warm);
+        const int iterations =
+            gmres_.solve(jacobian, preconditioner, residual, rule.tolerance, iterations_allowed, step, warm);
+        return std::pair{iterations, step.allFinite()};
+      });
+  outcome.iterations = run.iterations;
+  if (!run.factorised) {
+    outcome.relative_residual = std::numeric_limits<double>::infinity();  // no step at all
+    return outcome;
+  }
+  // The residual measured with the operator, not GMRES's estimate.
+  jacobian(step, work_);
+  work_ += residual;
+  const double b_norm = residual.norm();
+  outcome.relative_residual = b_norm > 0.0 ? work_.norm() / b_norm : 0.0;
+  outcome.converged = step.allFinite() && outcome.relative_residual <= rule.allowance * rule.tolerance;
+  if (!outcome.converged) {
+    outcome.message =
+        fmt::format(fmt::runtime(rule.failure), outcome.relative_residual, outcome.iterations, rule.tolerance);
+  }
+  return outcome;
 }
 
 }  // namespace halfspace::lubrication::detail

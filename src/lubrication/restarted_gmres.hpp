@@ -1,12 +1,14 @@
 // Restarted GMRES with right preconditioning (Saad & Schultz 1986; Saad
-// 2003, alg. 9.5) on matrix-free operators: the linear solve of the Newton
-// steps of the EHL film (film_krylov_solver.hpp) and of the mixed film
-// (mixed_film_krylov.hpp). Private to the library.
+// 2003, alg. 9.5) on matrix-free operators, and the linear solve of the EHL
+// and mixed films' Newton steps with it (KrylovNewtonStep). Private to the
+// library.
 #pragma once
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <functional>
 #include <string>
+#include <utility>
 
 namespace halfspace::lubrication::detail {
 
@@ -42,6 +44,102 @@ class RestartedGmres {
   int restart_ = 0;
   Eigen::MatrixXd basis_, hessenberg_;
   Eigen::VectorXd givens_c_, givens_s_, g_, y_, work_, preconditioned_;
+};
+
+// A Newton iteration's preconditioner kept from one linear solve to the
+// next (a lagged preconditioner; Knoll & Keyes 2004, J. Comput. Phys. 193,
+// 357): an earlier factorisation serves while GMRES converges with it in
+// few iterations, as the Jacobian changes little between late Newton steps
+// and between a step's branch passes (a few rows). Refactorised when the
+// caller asks (`refactorise`), when the last solve took more than
+// kRefactoriseAfter iterations, or when GMRES with the old one does not
+// converge within twice that (then solved again with the new one).
+class LaggedPreconditioner {
+ public:
+  static constexpr int kRefactoriseAfter = 15;
+
+  struct Run {
+    bool factorised = true;  // false: `factorise` failed (its message is the caller's)
+    int iterations = 0;      // GMRES products, every attempt
+    int factorisations = 0;
+  };
+
+  // `factorise()` returns whether it succeeded; `gmres(max_iterations,
+  // retry)` solves (retry: the second attempt, with a new factorisation)
+  // and returns {iterations, whether its step is finite}.
+  template <class Factorise, class Gmres>
+  Run solve(bool refactorise, int max_iterations, Factorise&& factorise, Gmres&& gmres) {
+    Run run;
+    bool fresh = false;
+    if (!factorised_ || refactorise || last_iterations_ > kRefactoriseAfter) {
+      factorised_ = factorise();
+      ++run.factorisations;
+      if (!factorised_) return {false, 0, run.factorisations};
+      fresh = true;
+    }
+    const int stale_limit = std::min(max_iterations, 2 * kRefactoriseAfter);
+    auto [iterations, finite] = gmres(fresh ? max_iterations : stale_limit, false);
+    run.iterations = iterations;
+    if (!fresh && !(finite && iterations < stale_limit)) {
+      factorised_ = factorise();
+      ++run.factorisations;
+      if (!factorised_) return {false, run.iterations, run.factorisations};
+      iterations = gmres(max_iterations, true).first;
+      run.iterations += iterations;
+    }
+    last_iterations_ = iterations;
+    return run;
+  }
+
+ private:
+  bool factorised_ = false;
+  int last_iterations_ = 0;
+};
+
+// A Newton step's linear solve J step = -residual: GMRES right-preconditioned
+// by a lagged preconditioner, the residual then measured with the operator.
+// The preconditioner is the caller's approximate inverse M ~ B^-1 of the
+// Jacobian's sparse part B, bordered under load control by the h0 column c
+// and the load row l, [B c; l^T 0], whose inverse is applied by the Schur
+// complement: z = (l^T M f - g) / (l^T M c), y = M f - z M c. What the EHL
+// and mixed films' solves differ in is a Rule.
+class KrylovNewtonStep {
+ public:
+  using Apply = RestartedGmres::Apply;
+  struct Rule {
+    double tolerance = 0.0;    // on GMRES's estimate of ||J step + residual|| / ||residual||
+    double allowance = 1.0;    // converged when the measured residual is at most allowance * tolerance
+    bool refactorise = false;  // the kept preconditioner no longer fits the system
+    bool warm = false;         // from `step` as given, else from 0
+    bool retry_warm = false;   // the retry after a stale preconditioner goes on from where it stopped
+    const char* failure = "";  // fmt message: {0} the measured residual, {1} the iterations, {2} the tolerance
+  };
+
+  // Systems of `size` unknowns, B of `sparse_rows` rows (bordered when
+  // size = sparse_rows + 1), a GMRES(restart) basis and M (`inverse`).
+  void setup(Eigen::Index size, Eigen::Index sparse_rows, int restart, Apply inverse);
+
+  // c and l, the caller's to set before factorise_border.
+  Eigen::VectorXd border_column, load_row;
+  // M c, once M is factorised; false with the message `singular` when
+  // l^T M c is 0 or not finite.
+  bool factorise_border(const char* singular, std::string& message);
+
+  // Solves J step = -residual within `max_iterations` products per attempt;
+  // `factorise(message)` makes M (and the border). Returns the
+  // factorisation's failure (relative residual infinite) or GMRES's.
+  KrylovOutcome solve(const Apply& jacobian, const std::function<bool(std::string&)>& factorise,
+                      const Eigen::VectorXd& residual, int max_iterations, const Rule& rule, Eigen::VectorXd& step);
+
+ private:
+  void precondition(const Eigen::VectorXd& v, Eigen::VectorXd& out);
+
+  RestartedGmres gmres_;
+  LaggedPreconditioner lagged_;
+  Apply inverse_;
+  bool bordered_ = false;
+  Eigen::VectorXd work_, border_solved_, head_in_, head_out_;
+  double border_pivot_ = 0.0;
 };
 
 }  // namespace halfspace::lubrication::detail

@@ -1,5 +1,5 @@
 // The film GMRES's reuse of work between linear solves
-// (src/lubrication/film_krylov_solver.hpp, restarted_gmres.hpp): a solve
+// (src/lubrication/restarted_gmres.hpp): a solve
 // warm-started from a nearby system's solution, and a preconditioner
 // factorised for an earlier matrix, reach the tolerance on the new system
 // (measured here with the dense matrix, not GMRES's estimate); the stale
@@ -11,7 +11,6 @@
 #include <random>
 #include <utility>
 
-#include "lubrication/film_krylov_solver.hpp"
 #include "lubrication/restarted_gmres.hpp"
 
 namespace halfspace::lubrication::detail {
