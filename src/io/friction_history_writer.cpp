@@ -46,7 +46,6 @@ std::string column_unit(const HistoryColumn& column, const Grid& grid) {
   return std::string(column.unit);
 }
 
-// "000", "001", ...: zero-padded so that names sort in step order.
 void check_field(std::string_view field, std::size_t step, Eigen::Index size, const Grid& grid) {
   check_field_size(fmt::format("write_friction_history: field '{}' of step {}", field, step),
                    static_cast<std::size_t>(size), grid);

@@ -29,7 +29,6 @@ void check_field(std::string_view field, std::size_t step, std::size_t size, con
   check_field_size(fmt::format("write_sweep_result: field '{}' of step {}", field, step), size, grid);
 }
 
-// "000", "001", ...: zero-padded so that names sort in step order.
 std::string column_unit(const analysis::SummaryColumn& column, const Grid& grid, std::string_view load_mode) {
   const std::string_view force = grid.dimension() == 1 ? "N/m" : "N";
   if (column.name == "load") {
