@@ -92,17 +92,17 @@ void EvenSymbol::multiply(std::span<std::complex<float>> spectrum) const {
 }
 
 void EvenSymbol::apply(RealFft& fft, std::span<const double> in, std::span<double> out) const {
-  assert(fft.rows() == rows_ && fft.spectrum_cols() == cols_);
+  assert(fft.spectrum_blocks() == rows_ && fft.spectrum_length() == cols_ && fft.transposed() == transposed_);
   apply_in_precision(fft, in, out, [this](auto spectrum) { multiply(spectrum); });
 }
 
 void EvenSymbol::apply(SingleRealFft& fft, std::span<const double> in, std::span<double> out) const {
-  assert(fft.rows() == rows_ && fft.spectrum_cols() == cols_);
+  assert(fft.spectrum_blocks() == rows_ && fft.spectrum_length() == cols_ && fft.transposed() == transposed_);
   apply_widened(fft, in, out, [this](auto spectrum) { multiply(spectrum); });
 }
 
 void EvenSymbol::apply(SingleRealFft& fft, std::span<const float> in, std::span<float> out) const {
-  assert(fft.rows() == rows_ && fft.spectrum_cols() == cols_);
+  assert(fft.spectrum_blocks() == rows_ && fft.spectrum_length() == cols_ && fft.transposed() == transposed_);
   apply_in_precision(fft, in, out, [this](auto spectrum) { multiply(spectrum); });
 }
 
@@ -112,13 +112,13 @@ void EvenSymbol::divide(const Inverse& inverse, std::span<std::complex<double>> 
 
 void EvenSymbol::apply_inverse(const Inverse& inverse, SingleRealFft& fft, std::span<const double> in,
                                std::span<double> out) const {
-  assert(fft.rows() == rows_ && fft.spectrum_cols() == cols_);
+  assert(fft.spectrum_blocks() == rows_ && fft.spectrum_length() == cols_ && fft.transposed() == transposed_);
   apply_widened(fft, in, out, [&](auto spectrum) { divide_spectrum(*this, values_, inverse, spectrum); });
 }
 
 void EvenSymbol::apply_inverse(const Inverse& inverse, SingleRealFft& fft, std::span<const float> in,
                                std::span<float> out) const {
-  assert(fft.rows() == rows_ && fft.spectrum_cols() == cols_);
+  assert(fft.spectrum_blocks() == rows_ && fft.spectrum_length() == cols_ && fft.transposed() == transposed_);
   apply_in_precision(fft, in, out, [&](auto spectrum) { divide_spectrum(*this, values_, inverse, spectrum); });
 }
 

@@ -40,8 +40,12 @@ struct Fftw<double> {
   static constexpr auto plan_with_nthreads = fftw_plan_with_nthreads;
   static constexpr auto plan_r2c = fftw_plan_dft_r2c;
   static constexpr auto plan_c2r = fftw_plan_dft_c2r;
+  static constexpr auto plan_many_r2c = fftw_plan_many_dft_r2c;
+  static constexpr auto plan_many_c2r = fftw_plan_many_dft_c2r;
+  static constexpr auto plan_many_c2c = fftw_plan_many_dft;
   static constexpr auto execute_r2c = fftw_execute_dft_r2c;
   static constexpr auto execute_c2r = fftw_execute_dft_c2r;
+  static constexpr auto execute_c2c = fftw_execute_dft;
   static constexpr auto destroy_plan = fftw_destroy_plan;
   static constexpr auto alignment_of = fftw_alignment_of;
 };
@@ -54,8 +58,12 @@ struct Fftw<float> {
   static constexpr auto plan_with_nthreads = fftwf_plan_with_nthreads;
   static constexpr auto plan_r2c = fftwf_plan_dft_r2c;
   static constexpr auto plan_c2r = fftwf_plan_dft_c2r;
+  static constexpr auto plan_many_r2c = fftwf_plan_many_dft_r2c;
+  static constexpr auto plan_many_c2r = fftwf_plan_many_dft_c2r;
+  static constexpr auto plan_many_c2c = fftwf_plan_many_dft;
   static constexpr auto execute_r2c = fftwf_execute_dft_r2c;
   static constexpr auto execute_c2r = fftwf_execute_dft_c2r;
+  static constexpr auto execute_c2c = fftwf_execute_dft;
   static constexpr auto destroy_plan = fftwf_destroy_plan;
   static constexpr auto alignment_of = fftwf_alignment_of;
 };

@@ -8,12 +8,13 @@ namespace halfspace::fft {
 
 std::shared_ptr<RealFft> make_grid_transform(const Grid& grid, FftPlanning planning) {
   if (grid.dimension() == 1) return std::make_shared<RealFft>(grid.nx(), planning, FftOutput::overwrite_input);
-  return std::make_shared<RealFft>(grid.ny(), grid.nx(), planning, FftOutput::overwrite_input);
+  return std::make_shared<RealFft>(grid.ny(), grid.nx(), planning, FftOutput::overwrite_input, FftLayout::transposed);
 }
 
 std::shared_ptr<RealFft> make_grid_transform(const Grid& grid, FftPlanning planning,
                                              std::span<std::complex<double>> workspace) {
-  return std::make_shared<RealFft>(grid.dimension() == 1 ? 1 : grid.ny(), grid.nx(), planning, workspace);
+  return std::make_shared<RealFft>(grid.dimension() == 1 ? 1 : grid.ny(), grid.nx(), planning, workspace,
+                                   FftLayout::transposed);
 }
 
 std::shared_ptr<SingleRealFft> make_single_grid_transform(const Grid& grid, FftPlanning planning,
@@ -22,7 +23,8 @@ std::shared_ptr<SingleRealFft> make_single_grid_transform(const Grid& grid, FftP
   // has the layout of float[2] ([complex.numbers]).
   const std::span<std::complex<float>> floats{reinterpret_cast<std::complex<float>*>(workspace.data()),
                                               2 * workspace.size()};
-  return std::make_shared<SingleRealFft>(grid.dimension() == 1 ? 1 : grid.ny(), grid.nx(), planning, floats);
+  return std::make_shared<SingleRealFft>(grid.dimension() == 1 ? 1 : grid.ny(), grid.nx(), planning, floats,
+                                         FftLayout::transposed);
 }
 
 template <class Real>

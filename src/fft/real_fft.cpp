@@ -3,11 +3,13 @@
 // planner (and plan destruction) is not thread-safe, so every call into it
 // here is serialised by one mutex; only the execution runs unlocked.
 // Measured planning loads and saves wisdom (fft_wisdom.cpp) under the same
-// lock.
+// lock. A transposed 2D transform (FftLayout::transposed) runs the rows in
+// blocks on the threads itself and the kx blocks through one threaded plan.
 #include "halfspace/fft/real_fft.hpp"
 
 #include <fftw3.h>
 #include <fmt/format.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <cassert>
@@ -78,16 +80,17 @@ BasicRealFft<Real>::BasicRealFft(std::size_t n, FftPlanning planning, FftOutput 
 }
 
 template <class Real>
-BasicRealFft<Real>::BasicRealFft(std::size_t rows, std::size_t cols, FftPlanning planning, FftOutput output)
-    : rows_(rows), cols_(cols) {
+BasicRealFft<Real>::BasicRealFft(std::size_t rows, std::size_t cols, FftPlanning planning, FftOutput output,
+                                 FftLayout layout)
+    : rows_(rows), cols_(cols), transposed_(layout == FftLayout::transposed && rows > 1) {
   const int dims[2] = {checked_extent(rows), checked_extent(cols)};
   make_plans(2, dims, planning, output);
 }
 
 template <class Real>
 BasicRealFft<Real>::BasicRealFft(std::size_t rows, std::size_t cols, FftPlanning planning,
-                                 std::span<std::complex<Real>> workspace)
-    : rows_(rows), cols_(cols) {
+                                 std::span<std::complex<Real>> workspace, FftLayout layout)
+    : rows_(rows), cols_(cols), transposed_(layout == FftLayout::transposed && rows > 1) {
   const std::size_t needed = workspace_size(rows, cols);
   if (workspace.size() < needed) {
     throw InputError(fmt::format("a {}x{} real FFT needs a workspace of {} complex values, but was given {}", rows,
@@ -115,6 +118,11 @@ BasicRealFft<Real>::BasicRealFft(BasicRealFft&& other) noexcept
       output_(std::exchange(other.output_, nullptr)),
       forward_plan_(std::exchange(other.forward_plan_, nullptr)),
       backward_plan_(std::exchange(other.backward_plan_, nullptr)),
+      transposed_(std::exchange(other.transposed_, false)),
+      rows_forward_{std::exchange(other.rows_forward_[0], nullptr), std::exchange(other.rows_forward_[1], nullptr)},
+      rows_backward_{std::exchange(other.rows_backward_[0], nullptr), std::exchange(other.rows_backward_[1], nullptr)},
+      row_buffers_(std::exchange(other.row_buffers_, nullptr)),
+      row_buffer_count_(std::exchange(other.row_buffer_count_, 0)),
       owns_buffers_(std::exchange(other.owns_buffers_, true)),
       lazy_input_(std::exchange(other.lazy_input_, false)),
       input_alignment_(other.input_alignment_),
@@ -131,6 +139,13 @@ BasicRealFft<Real>& BasicRealFft<Real>::operator=(BasicRealFft&& other) noexcept
     output_ = std::exchange(other.output_, nullptr);
     forward_plan_ = std::exchange(other.forward_plan_, nullptr);
     backward_plan_ = std::exchange(other.backward_plan_, nullptr);
+    transposed_ = std::exchange(other.transposed_, false);
+    for (int k = 0; k < 2; ++k) {
+      rows_forward_[k] = std::exchange(other.rows_forward_[k], nullptr);
+      rows_backward_[k] = std::exchange(other.rows_backward_[k], nullptr);
+    }
+    row_buffers_ = std::exchange(other.row_buffers_, nullptr);
+    row_buffer_count_ = std::exchange(other.row_buffer_count_, 0);
     owns_buffers_ = std::exchange(other.owns_buffers_, true);
     lazy_input_ = std::exchange(other.lazy_input_, false);
     input_alignment_ = other.input_alignment_;
@@ -161,11 +176,15 @@ void BasicRealFft<Real>::make_plans(int rank, const int* dims, FftPlanning plann
       F<Real>::plan_with_nthreads(threads());
       detail::before_planning(planning, kSingle<Real>);
       const unsigned flags = planner_flags(planning);
-      // Out of place both ways: r2c keeps its input (forward_from() relies on
-      // it); c2r may destroy the spectrum, which every forward() rewrites.
-      forward_plan_ = F<Real>::plan_r2c(rank, dims, input_, as_fftw(spectrum_), flags | FFTW_PRESERVE_INPUT);
-      backward_plan_ = F<Real>::plan_c2r(rank, dims, as_fftw(spectrum_), output_, flags | FFTW_DESTROY_INPUT);
-      planned = forward_plan_ != nullptr && backward_plan_ != nullptr;
+      if (transposed_) {
+        planned = make_transposed_plans(flags);
+      } else {
+        // Out of place both ways: r2c keeps its input (forward_from() relies on
+        // it); c2r may destroy the spectrum, which every forward() rewrites.
+        forward_plan_ = F<Real>::plan_r2c(rank, dims, input_, as_fftw(spectrum_), flags | FFTW_PRESERVE_INPUT);
+        backward_plan_ = F<Real>::plan_c2r(rank, dims, as_fftw(spectrum_), output_, flags | FFTW_DESTROY_INPUT);
+        planned = forward_plan_ != nullptr && backward_plan_ != nullptr;
+      }
       if (planned) detail::after_planning(planning, kSingle<Real>);
     }
   }
@@ -196,6 +215,77 @@ void BasicRealFft<Real>::make_plans(int rank, const int* dims, FftPlanning plann
 }
 
 template <class Real>
+bool BasicRealFft<Real>::make_transposed_plans(unsigned flags) {
+  const int rows = static_cast<int>(rows_);
+  const int cols = static_cast<int>(cols_);
+  const int h = static_cast<int>(spectrum_cols());
+  row_buffer_count_ = std::max(1, threads());
+  row_buffers_ = reinterpret_cast<std::complex<Real>*>(
+      F<Real>::alloc_complex(static_cast<std::size_t>(row_buffer_count_) * kBlockRows * spectrum_cols()));
+  if (row_buffers_ == nullptr) return false;
+  // The rows' plans run one per thread, inside transposed_forward's loop.
+  F<Real>::plan_with_nthreads(1);
+  const int counts[2] = {rows >= static_cast<int>(kBlockRows) ? static_cast<int>(kBlockRows) : 0,
+                         rows % static_cast<int>(kBlockRows)};
+  for (int k = 0; k < 2; ++k) {
+    if (counts[k] == 0) continue;
+    rows_forward_[k] = F<Real>::plan_many_r2c(1, &cols, counts[k], input_, nullptr, 1, cols, as_fftw(row_buffers_),
+                                              nullptr, 1, h, flags | FFTW_PRESERVE_INPUT);
+    rows_backward_[k] = F<Real>::plan_many_c2r(1, &cols, counts[k], as_fftw(row_buffers_), nullptr, 1, h, output_,
+                                               nullptr, 1, cols, flags | FFTW_DESTROY_INPUT);
+    if (rows_forward_[k] == nullptr || rows_backward_[k] == nullptr) return false;
+  }
+  F<Real>::plan_with_nthreads(threads());
+  forward_plan_ = F<Real>::plan_many_c2c(1, &rows, h, as_fftw(spectrum_), nullptr, 1, rows, as_fftw(spectrum_), nullptr,
+                                         1, rows, FFTW_FORWARD, flags);
+  backward_plan_ = F<Real>::plan_many_c2c(1, &rows, h, as_fftw(spectrum_), nullptr, 1, rows, as_fftw(spectrum_),
+                                          nullptr, 1, rows, FFTW_BACKWARD, flags);
+  return forward_plan_ != nullptr && backward_plan_ != nullptr;
+}
+
+template <class Real>
+void BasicRealFft<Real>::transposed_forward(const Real* in) {
+  const std::size_t h = spectrum_cols();
+  const auto blocks = static_cast<std::ptrdiff_t>((rows_ + kBlockRows - 1) / kBlockRows);
+  const int team = static_cast<int>(std::min<std::ptrdiff_t>(row_buffer_count_, blocks));
+  // Each block's rows into the thread's buffer, then scattered down the
+  // kx blocks: kBlockRows consecutive entries of each.
+#pragma omp parallel for schedule(static) num_threads(team)
+  for (std::ptrdiff_t b = 0; b < blocks; ++b) {
+    const std::size_t first = static_cast<std::size_t>(b) * kBlockRows;
+    const std::size_t count = std::min(kBlockRows, rows_ - first);
+    std::complex<Real>* const buffer = row_buffers_ + static_cast<std::size_t>(omp_get_thread_num()) * kBlockRows * h;
+    // Planned with FFTW_PRESERVE_INPUT: never written through.
+    F<Real>::execute_r2c(rows_forward_[count == kBlockRows ? 0 : 1], const_cast<Real*>(in + first * cols_),
+                         as_fftw(buffer));
+    for (std::size_t c = 0; c < h; ++c) {
+      std::complex<Real>* const entries = spectrum_ + c * rows_ + first;
+      for (std::size_t r = 0; r < count; ++r) entries[r] = buffer[r * h + c];
+    }
+  }
+  F<Real>::execute_c2c(forward_plan_, as_fftw(spectrum_), as_fftw(spectrum_));
+}
+
+template <class Real>
+void BasicRealFft<Real>::transposed_backward(Real* out) {
+  F<Real>::execute_c2c(backward_plan_, as_fftw(spectrum_), as_fftw(spectrum_));
+  const std::size_t h = spectrum_cols();
+  const auto blocks = static_cast<std::ptrdiff_t>((rows_ + kBlockRows - 1) / kBlockRows);
+  const int team = static_cast<int>(std::min<std::ptrdiff_t>(row_buffer_count_, blocks));
+#pragma omp parallel for schedule(static) num_threads(team)
+  for (std::ptrdiff_t b = 0; b < blocks; ++b) {
+    const std::size_t first = static_cast<std::size_t>(b) * kBlockRows;
+    const std::size_t count = std::min(kBlockRows, rows_ - first);
+    std::complex<Real>* const buffer = row_buffers_ + static_cast<std::size_t>(omp_get_thread_num()) * kBlockRows * h;
+    for (std::size_t c = 0; c < h; ++c) {
+      const std::complex<Real>* const entries = spectrum_ + c * rows_ + first;
+      for (std::size_t r = 0; r < count; ++r) buffer[r * h + c] = entries[r];
+    }
+    F<Real>::execute_c2r(rows_backward_[count == kBlockRows ? 0 : 1], as_fftw(buffer), out + first * cols_);
+  }
+}
+
+template <class Real>
 Real* BasicRealFft<Real>::real_input() {
   if (input_ == nullptr && lazy_input_) {
     Real* made = nullptr;
@@ -217,6 +307,10 @@ Real* BasicRealFft<Real>::real_input() {
 template <class Real>
 void BasicRealFft<Real>::forward() {
   assert(forward_plan_ != nullptr);
+  if (transposed_) {
+    transposed_forward(real_input());
+    return;
+  }
   F<Real>::execute_r2c(forward_plan_, real_input(), as_fftw(spectrum_));
 }
 
@@ -224,6 +318,10 @@ template <class Real>
 void BasicRealFft<Real>::backward() {
   assert(backward_plan_ != nullptr);
   real_input();
+  if (transposed_) {
+    transposed_backward(output_);
+    return;
+  }
   F<Real>::execute_c2r(backward_plan_, as_fftw(spectrum_), output_);
 }
 
@@ -233,6 +331,10 @@ bool BasicRealFft<Real>::forward_from(std::span<const Real> values) {
   // The plan was made with FFTW_PRESERVE_INPUT, so the const_cast is never written through.
   Real* data = const_cast<Real*>(values.data());
   if (values.size() != real_size() || F<Real>::alignment_of(data) != input_alignment_) return false;
+  if (transposed_) {
+    transposed_forward(data);
+    return true;
+  }
   F<Real>::execute_r2c(forward_plan_, data, as_fftw(spectrum_));
   return true;
 }
@@ -243,6 +345,10 @@ bool BasicRealFft<Real>::backward_into(std::span<Real> values) {
   if (values.size() != real_size() || F<Real>::alignment_of(values.data()) != output_alignment_) {
     return false;
   }
+  if (transposed_) {
+    transposed_backward(values.data());
+    return true;
+  }
   F<Real>::execute_c2r(backward_plan_, as_fftw(spectrum_), values.data());
   return true;
 }
@@ -250,19 +356,22 @@ bool BasicRealFft<Real>::backward_into(std::span<Real> values) {
 template <class Real>
 void BasicRealFft<Real>::release() noexcept {
   if (input_ == nullptr && output_ == nullptr && spectrum_ == nullptr && forward_plan_ == nullptr &&
-      backward_plan_ == nullptr) {
+      backward_plan_ == nullptr && row_buffers_ == nullptr) {
     return;
   }
   const std::lock_guard<std::mutex> lock(detail::fftw_planner_mutex());
-  if (forward_plan_ != nullptr) F<Real>::destroy_plan(forward_plan_);
-  if (backward_plan_ != nullptr) F<Real>::destroy_plan(backward_plan_);
+  for (Plan* plan : {&forward_plan_, &backward_plan_, &rows_forward_[0], &rows_forward_[1], &rows_backward_[0],
+                     &rows_backward_[1]}) {
+    if (*plan != nullptr) F<Real>::destroy_plan(*plan);
+    *plan = nullptr;
+  }
+  F<Real>::free(row_buffers_);
+  row_buffers_ = nullptr;
   if (output_ != input_) F<Real>::free(output_);
   if (owns_buffers_) {
     F<Real>::free(input_);
     F<Real>::free(spectrum_);
   }
-  forward_plan_ = nullptr;
-  backward_plan_ = nullptr;
   input_ = nullptr;
   output_ = nullptr;
   spectrum_ = nullptr;

@@ -54,10 +54,15 @@ double NormalKernel::inverse_symbol(double q, double cells) const {
   return layered_ ? 1.0 / (layered_->spectrum(q) * cells) : q * (0.5 * e_star_ / cells);
 }
 
-EvenSymbol NormalKernel::preconditioner_symbol() const {
-  EvenSymbol inverse(grid_.dimension() == 1 ? 1 : grid_.ny(), grid_.nx() / 2 + 1);
+EvenSymbol NormalKernel::preconditioner_symbol(bool transposed) const {
+  const std::size_t rows = grid_.dimension() == 1 ? 1 : grid_.ny();
+  const std::size_t cols = grid_.nx() / 2 + 1;
+  transposed = transposed && rows > 1;
+  EvenSymbol inverse = transposed ? EvenSymbol(cols, rows, true) : EvenSymbol(rows, cols);
   for (std::size_t r = 0; r < inverse.stored_rows(); ++r) {
-    for (std::size_t c = 0; c < inverse.cols(); ++c) inverse.at(r, c) = preconditioner_symbol(r, c);
+    for (std::size_t c = 0; c < inverse.stored_cols(); ++c) {
+      inverse.at(r, c) = transposed ? preconditioner_symbol(c, r) : preconditioner_symbol(r, c);
+    }
   }
   return inverse;
 }

@@ -14,10 +14,18 @@ const Grid& checked_periodic(const FftInfluenceOperator& exact) {
     throw InputError(
         "SinglePrecisionFftOperator: a free grid's product needs its zero-padded transform; periodic grids only");
   }
-  if (exact.symbol().transposed()) {
+  return exact.grid();
+}
+
+// The operator's symbol, laid out as the single-precision transform's
+// spectrum: a symbol held in slabs (MPI) covers only this process's part.
+const EvenSymbol& checked_symbol(const FftInfluenceOperator& exact, const SingleRealFft& transform) {
+  const EvenSymbol& symbol = exact.symbol();
+  if (symbol.rows() != transform.spectrum_blocks() || symbol.cols() != transform.spectrum_length() ||
+      symbol.transposed() != transform.transposed()) {
     throw InputError("SinglePrecisionFftOperator: the operator's symbol is held in slabs; one process only");
   }
-  return exact.grid();
+  return symbol;
 }
 
 }  // namespace
@@ -26,7 +34,7 @@ SinglePrecisionFftOperator::SinglePrecisionFftOperator(const FftInfluenceOperato
                                                        std::shared_ptr<SingleRealFft> transform)
     : grid_(checked_periodic(exact)),
       transform_(checked_grid_transform(grid_, std::move(transform), "SinglePrecisionFftOperator")),
-      kernel_(exact.symbol()),
+      kernel_(checked_symbol(exact, *transform_)),
       self_influence_(exact.self_influence()) {}
 
 void SinglePrecisionFftOperator::apply(std::span<const double> pressure, std::span<double> displacement) {

@@ -53,12 +53,19 @@ class SerialSpectralTransforms final : public SpectralTransforms {
 
   std::size_t local_size() const override { return grid_.size(); }
   const linalg::Communicator& communicator() const override { return linalg::serial_communicator(); }
-  std::size_t spectrum_blocks() const override { return spectrum_rows(); }
-  std::size_t spectrum_length() const override {
-    return padded_[0] ? padded_[0]->spectrum_cols() : own_[0]->spectrum_cols();
+  std::size_t spectrum_blocks() const override {
+    return padded_[0] ? padded_[0]->spectrum_rows() : own_[0]->spectrum_blocks();
   }
-  SpectrumMode mode(std::size_t k) const override { return {k / spectrum_length(), k % spectrum_length()}; }
-  bool transposed() const override { return false; }
+  std::size_t spectrum_length() const override {
+    return padded_[0] ? padded_[0]->spectrum_cols() : own_[0]->spectrum_length();
+  }
+  SpectrumMode mode(std::size_t k) const override {
+    const std::size_t block = k / spectrum_length();
+    const std::size_t entry = k % spectrum_length();
+    return transposed() ? SpectrumMode{entry, block} : SpectrumMode{block, entry};
+  }
+  // The grid's own 2D transforms are transposed (grid_transform.hpp).
+  bool transposed() const override { return !padded_[0] && own_[0]->transposed(); }
   std::size_t spectrum_rows() const override { return padded_[0] ? padded_[0]->spectrum_rows() : own_[0]->rows(); }
   double transform_size() const override {
     return static_cast<double>(padded_[0] ? padded_[0]->padded_size() : grid_.size());

@@ -41,7 +41,7 @@ struct FourierPreconditioner::Impl {
       : grid(g), transforms(std::move(t)), single(std::move(s)), kernel(operator_kernel) {
     const kernels::NormalKernel normal(g, half_space);
     if (!kernel) {
-      symbol = single ? normal.preconditioner_symbol()
+      symbol = single ? normal.preconditioner_symbol(single->transposed())
                       : operators::held_symbol(*transforms, [&](std::size_t, operators::SpectrumMode m) {
                           return normal.preconditioner_symbol(m.row, m.col);
                         });

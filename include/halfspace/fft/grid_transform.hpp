@@ -2,6 +2,9 @@
 // operator and the Fourier preconditioner use (and may share): nx values in
 // 1D, (ny, nx) in 2D, the inverse overwriting the input (FftOutput::
 // overwrite_input: one real array less; nothing needs the input afterwards).
+// In 2D the spectrum is transposed (FftLayout::transposed, kx-major): the
+// faster transform at large sizes, and the slab transforms' layout, which
+// every operator on the transforms already handles.
 #pragma once
 
 #include <complex>

@@ -19,6 +19,15 @@ namespace halfspace::fft {
 // PaddedRealFft's.)
 enum class FftOutput { separate, overwrite_input };
 
+// How a 2D spectrum is laid out. row_major: FFTW's own, rows x (cols/2 + 1),
+// ky along the rows. transposed: (cols/2 + 1) x rows, each kx a block of
+// every ky, as a slab transform's (FFTW_MPI_TRANSPOSED_OUT). A transposed
+// transform takes the rows a few at a time through a small buffer and then
+// the kx blocks as contiguous transforms; FFTW's 2D plan instead runs down
+// columns whose entries lie a row apart, on a different page each at large
+// sizes, and grows faster than N log N (docs/performance.md).
+enum class FftLayout { row_major, transposed };
+
 // FFTW's plan type for each precision.
 template <class Real>
 struct FftwPlanOf;
@@ -48,15 +57,18 @@ class BasicRealFft {
   // 1D transform of n real values; the spectrum has n/2 + 1 entries.
   // Throws InputError if a length is 0 or exceeds INT_MAX (FFTW's limit).
   BasicRealFft(std::size_t n, FftPlanning planning, FftOutput output = FftOutput::separate);
-  // 2D transform of a (rows, cols) real array; the spectrum is (rows, cols/2 + 1).
-  BasicRealFft(std::size_t rows, std::size_t cols, FftPlanning planning, FftOutput output = FftOutput::separate);
+  // 2D transform of a (rows, cols) real array; the spectrum is (rows, cols/2 + 1),
+  // or (cols/2 + 1, rows) transposed (with rows > 1).
+  BasicRealFft(std::size_t rows, std::size_t cols, FftPlanning planning, FftOutput output = FftOutput::separate,
+               FftLayout layout = FftLayout::row_major);
   // The 2D (rows > 1) or 1D (rows = 1) transform with FftOutput::overwrite_input
   // over `workspace`, memory it does not own (FFTW-aligned, at least
   // workspace_size(rows, cols) values): the spectrum, then the real array.
   // For memory that is idle while this transform runs, such as another
   // transform's buffer; planning and every transform overwrite it. Throws
   // InputError if the workspace is too small.
-  BasicRealFft(std::size_t rows, std::size_t cols, FftPlanning planning, std::span<std::complex<Real>> workspace);
+  BasicRealFft(std::size_t rows, std::size_t cols, FftPlanning planning, std::span<std::complex<Real>> workspace,
+               FftLayout layout = FftLayout::row_major);
   static std::size_t workspace_size(std::size_t rows, std::size_t cols) {
     return rows * (cols / 2 + 1) + (rows * cols + 1) / 2;
   }
@@ -71,6 +83,11 @@ class BasicRealFft {
   std::size_t real_size() const { return rows_ * cols_; }
   std::size_t spectrum_cols() const { return cols_ / 2 + 1; }
   std::size_t spectrum_size() const { return rows_ * spectrum_cols(); }
+  // The spectrum as blocks x length: rows x spectrum_cols() (row-major) or
+  // spectrum_cols() x rows (transposed).
+  bool transposed() const { return transposed_; }
+  std::size_t spectrum_blocks() const { return transposed_ ? spectrum_cols() : rows_; }
+  std::size_t spectrum_length() const { return transposed_ ? rows_ : spectrum_cols(); }
 
   // (rows, cols), row-major. Read by forward() and never modified by it, so
   // values written once stay (unless FftOutput::overwrite_input, where
@@ -80,7 +97,8 @@ class BasicRealFft {
   // backward(): users that only transform their own arrays (forward_from,
   // backward_into) never hold it.
   std::span<Real> input() { return {real_input(), real_size()}; }
-  // Written by forward(), read (and destroyed) by backward(); (rows, cols/2 + 1).
+  // Written by forward(), read (and destroyed) by backward(); (rows, cols/2 + 1),
+  // or transposed.
   std::span<std::complex<Real>> spectrum() { return {spectrum_, spectrum_size()}; }
   // Written by backward(); the input buffer itself with FftOutput::overwrite_input.
   std::span<Real> output() {
@@ -102,9 +120,23 @@ class BasicRealFft {
   bool backward_into(std::span<Real> values);
 
  private:
+  using Plan = typename FftwPlanOf<Real>::type;
+  // Rows per block of a transposed transform: with 16, every block of a
+  // real array starts at its first row's alignment (16 rows of floats are
+  // a multiple of 64 bytes), so one plan serves every block.
+  static constexpr std::size_t kBlockRows = 16;
+
   void make_plans(int rank, const int* dims, FftPlanning planning, FftOutput output,
                   std::complex<Real>* workspace = nullptr);
+  // The transposed layout's plans (the planner's lock held): the rows' in
+  // blocks of kBlockRows (and one of the rows left over) between the real
+  // array and a block buffer, the kx blocks' in place; false if FFTW fails.
+  bool make_transposed_plans(unsigned flags);
   void release() noexcept;
+  // The transposed layout's transforms: spectrum = DFT(in); out = inverse
+  // DFT(spectrum), without 1/N.
+  void transposed_forward(const Real* in);
+  void transposed_backward(Real* out);
   // input_, made (zeroed, FFTW-aligned) if it was left to first use.
   Real* real_input();
 
@@ -113,8 +145,13 @@ class BasicRealFft {
   Real* input_ = nullptr;
   std::complex<Real>* spectrum_ = nullptr;
   Real* output_ = nullptr;
-  typename FftwPlanOf<Real>::type forward_plan_ = nullptr;
-  typename FftwPlanOf<Real>::type backward_plan_ = nullptr;
+  Plan forward_plan_ = nullptr;  // row-major: the 2D plans; transposed: the kx blocks'
+  Plan backward_plan_ = nullptr;
+  bool transposed_ = false;
+  Plan rows_forward_[2] = {nullptr, nullptr};  // transposed: kBlockRows rows, and the rows left over
+  Plan rows_backward_[2] = {nullptr, nullptr};
+  std::complex<Real>* row_buffers_ = nullptr;  // transposed: kBlockRows spectrum rows per thread
+  int row_buffer_count_ = 0;
   bool owns_buffers_ = true;
   bool lazy_input_ = false;  // overwrite_input, own buffers: input_ made on first use
   // fftw_alignment_of the planned real arrays: new-array execution needs the same.
@@ -131,6 +168,7 @@ extern template class BasicRealFft<float>;
 
 // The library and its front ends name these without the folder's namespace.
 namespace halfspace {
+using fft::FftLayout;
 using fft::FftOutput;
 using fft::RealFft;
 using fft::SingleRealFft;

@@ -45,10 +45,11 @@ class NormalKernel {
   // at q = 0 (K on a periodic grid); and inverse_symbol(q, N), the mean mode
   // given the smallest non-zero wavenumber's value so that it stays
   // positive definite (the Fourier preconditioner, an approximate K^-1 on
-  // any grid). preconditioner_symbol() is the latter on the whole spectrum,
-  // rows folded (a single-precision transform's).
+  // any grid). preconditioner_symbol(transposed) is the latter on the whole
+  // spectrum in a single-precision grid transform's layout (kx-major if
+  // `transposed`, as make_single_grid_transform's in 2D), ky folded.
   double periodic_symbol(std::size_t row, std::size_t col) const;
-  EvenSymbol preconditioner_symbol() const;
+  EvenSymbol preconditioner_symbol(bool transposed) const;
   double preconditioner_symbol(std::size_t row, std::size_t col) const;
   // preconditioner_symbol()'s mean mode: inverse_symbol(q, N) at the
   // smallest non-zero wavenumber q. Elsewhere it is 1/(N^2 periodic_symbol()),
