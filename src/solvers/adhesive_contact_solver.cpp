@@ -34,6 +34,13 @@ namespace {
 constexpr std::size_t kMemory = 10;
 constexpr double kSufficientDecrease = 1e-4;
 constexpr int kMaxBacktracks = 40;
+// The rounding of an energy change summed cell by cell, in units of
+// machine epsilon times the energies' magnitudes (the elastic energy and
+// the sum of the cells' |interaction energies|): within it a change cannot
+// be told from zero. Near the tolerance the true decrease falls below it
+// and the line search can only fail; after a failure has recomputed the
+// state, the next search accepts a change within this noise.
+constexpr double kEnergyRounding = 16.0;
 // S v is updated along the steps (S v += lambda S d); it is recomputed from v
 // this often, so rounding does not accumulate.
 constexpr int kRefreshEvery = 50;
@@ -648,11 +655,12 @@ bool AdhesiveContactSolver::Impl::conjugate_gradient_step(Walk& walk, int iterat
   // monotone with a cap (non-monotone steps cycled there: a rough sweep
   // alternated between two held sets for 20000 iterations).
   const double allowance = capped ? 0.0 : *std::max_element(recent.begin(), recent.end()) - energy;
-  const std::array<double, 2> along = linalg::sums<2>(comm, m, [&](std::size_t i) {
-    return std::array<double, 2>{direction[i] * sx[i], direction[i] * s_direction[i]};
+  const std::array<double, 3> along = linalg::sums<3>(comm, m, [&](std::size_t i) {
+    return std::array<double, 3>{direction[i] * sx[i], direction[i] * s_direction[i], x[i] * sx[i]};
   });
   const double linear = along[0];
   const double quadratic = 0.5 * along[1];
+  double noise = 0.5 * std::abs(along[2]);  // + the cells' |interaction energies|, times the rounding
   double step = plain || !(quadratic > 0.0) ? 1.0 : -0.5 * slope / quadratic;
   double change = 0.0;
   bool clipped = false;
@@ -661,15 +669,18 @@ bool AdhesiveContactSolver::Impl::conjugate_gradient_step(Walk& walk, int iterat
   for (;; ++backtracks) {
     // The trial point, whether the wall clips it, and (if not) the
     // interaction energy's change, in one pass.
-    const std::array<double, 2> moved = linalg::sums<2>(comm, m, [&](std::size_t i) {
+    const std::array<double, 3> moved = linalg::sums<3>(comm, m, [&](std::size_t i) {
       trial[i] = x[i] + step * direction[i];
       const double cut = (below[i] ? trial[i] > lower[i] : trial[i] < lower[i]) ? 1.0 : 0.0;
-      if (!physical[i]) return std::array<double, 2>{cut, 0.0};
+      if (!physical[i]) return std::array<double, 3>{cut, 0.0, 0.0};
       const double g = offset[i] + x[i];
-      const double change_i = cell_energy(law, g + step * direction[i]) - cell_energy(law, g);
-      return std::array<double, 2>{cut, change_i};
+      const double before = cell_energy(law, g);
+      return std::array<double, 3>{cut, cell_energy(law, g + step * direction[i]) - before, std::abs(before)};
     });
     clipped = moved[0] > 0.0;
+    if (backtracks == 0) {
+      noise = recomputed ? kEnergyRounding * std::numeric_limits<double>::epsilon() * (noise + moved[2]) : 0.0;
+    }
     double decrease = step * slope;
     if (clipped) {
       project(trial, trial);
@@ -688,7 +699,7 @@ bool AdhesiveContactSolver::Impl::conjugate_gradient_step(Walk& walk, int iterat
     } else {
       change = step * linear + step * step * quadratic + moved[1];
     }
-    if (change <= allowance + kSufficientDecrease * decrease || backtracks >= kMaxBacktracks) break;
+    if (change <= allowance + kSufficientDecrease * decrease + noise || backtracks >= kMaxBacktracks) break;
     step *= 0.5;
   }
   const double trial_energy = energy + change;
