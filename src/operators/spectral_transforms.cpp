@@ -54,18 +54,18 @@ class SerialSpectralTransforms final : public SpectralTransforms {
   std::size_t local_size() const override { return grid_.size(); }
   const linalg::Communicator& communicator() const override { return linalg::serial_communicator(); }
   std::size_t spectrum_blocks() const override {
-    return padded_[0] ? padded_[0]->spectrum_rows() : own_[0]->spectrum_blocks();
+    return padded_[0] ? padded_[0]->spectrum_blocks() : own_[0]->spectrum_blocks();
   }
   std::size_t spectrum_length() const override {
-    return padded_[0] ? padded_[0]->spectrum_cols() : own_[0]->spectrum_length();
+    return padded_[0] ? padded_[0]->spectrum_length() : own_[0]->spectrum_length();
   }
   SpectrumMode mode(std::size_t k) const override {
     const std::size_t block = k / spectrum_length();
     const std::size_t entry = k % spectrum_length();
     return transposed() ? SpectrumMode{entry, block} : SpectrumMode{block, entry};
   }
-  // The grid's own 2D transforms are transposed (grid_transform.hpp).
-  bool transposed() const override { return !padded_[0] && own_[0]->transposed(); }
+  // 2D transforms are transposed (grid_transform.hpp, padded_real_fft.hpp).
+  bool transposed() const override { return padded_[0] ? padded_[0]->transposed() : own_[0]->transposed(); }
   std::size_t spectrum_rows() const override { return padded_[0] ? padded_[0]->spectrum_rows() : own_[0]->rows(); }
   double transform_size() const override {
     return static_cast<double>(padded_[0] ? padded_[0]->padded_size() : grid_.size());
@@ -106,21 +106,22 @@ class SerialSpectralTransforms final : public SpectralTransforms {
 
   std::span<std::complex<double>> workspace() override { return spectrum(0); }
 
-  // Straight into the padded rows, all at once.
+  // Straight into the padded transform's rows, a block at a time.
   std::span<const std::complex<double>> transform_wraparound_rows(const WraparoundRows& fill) override {
     PaddedRealFft& fft = *padded_[0];
-    fill(0, fft.spectrum_rows(), [&](std::size_t r) { return fft.padded_row(r); });
-    fft.forward_all_rows();
+    fft.forward_rows(fill);
     return fft.spectrum();
   }
 
-  // A transform of the whole padded grid of its own: the pruned ones never
-  // hold the padding.
+  // A transform of the whole padded grid of its own (the pruned ones never
+  // hold the padding), in their layout, so that the symbols on them serve
+  // it.
   std::span<const std::complex<double>> transform_form_wraparound(const WraparoundRows& fill) override {
     if (!padded_[0]) throw std::logic_error("a periodic grid's circulant form is the grid itself");
     const std::size_t width = 2 * grid_.nx();
     whole_ = grid_.dimension() == 1 ? std::make_unique<RealFft>(width, planning_)
-                                    : std::make_unique<RealFft>(2 * grid_.ny(), width, planning_);
+                                    : std::make_unique<RealFft>(2 * grid_.ny(), width, planning_, FftOutput::separate,
+                                                                FftLayout::transposed);
     fill(0, padded_[0]->spectrum_rows(), [&](std::size_t r) { return whole_->input().subspan(r * width, width); });
     whole_->forward();
     return whole_->spectrum();
