@@ -15,6 +15,14 @@ namespace halfspace::fft::detail {
 // FFTW's planner flags for `planning`.
 unsigned planner_flags(FftPlanning planning);
 
+// Asks the kernel (Linux, where transparent huge pages are on "madvise")
+// to back the whole pages of [memory, memory + bytes) by huge pages: a
+// large transform's passes and the transposed layout's scatter touch a
+// new 4 KiB page every few entries, and the TLB misses cost more than the
+// arithmetic. Before first touch, so the faults map huge pages. Advice
+// only; nothing fails without it.
+void advise_huge_pages(void* memory, std::size_t bytes);
+
 // n as FFTW's int extent; throws InputError naming n unless 1 <= n <= INT_MAX.
 int checked_extent(std::size_t n);
 

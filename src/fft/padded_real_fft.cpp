@@ -64,6 +64,7 @@ PaddedRealFft::PaddedRealFft(std::size_t rows, std::size_t cols, FftPlanning pla
     const std::lock_guard<std::mutex> lock(detail::fftw_planner_mutex());
     detail::init_fftw_threads();
     spectrum_ = reinterpret_cast<std::complex<double>*>(fftw_alloc_complex(spectrum_size()));
+    if (spectrum_ != nullptr) detail::advise_huge_pages(spectrum_, spectrum_size() * sizeof(std::complex<double>));
     buffers_ = rows == 1 ? 1 : std::max(1, threads());
     real_ = fftw_alloc_real((rows == 1 ? 1 : static_cast<std::size_t>(buffers_) * kBlockRows) * real_stride());
     allocated = spectrum_ != nullptr && real_ != nullptr;

@@ -14,8 +14,12 @@
 #include <algorithm>
 #include <cassert>
 #include <climits>
+#include <cstdint>
 #include <mutex>
 #include <new>
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 #include <stdexcept>
 #include <type_traits>
 #include <utility>
@@ -52,6 +56,19 @@ unsigned planner_flags(FftPlanning planning) {
       break;
   }
   return FFTW_ESTIMATE;
+}
+
+void advise_huge_pages(void* memory, std::size_t bytes) {
+#if defined(MADV_HUGEPAGE)
+  constexpr std::uintptr_t kPage = 4096;
+  const auto begin = (reinterpret_cast<std::uintptr_t>(memory) + kPage - 1) & ~(kPage - 1);
+  const auto end = (reinterpret_cast<std::uintptr_t>(memory) + bytes) & ~(kPage - 1);
+  // Advice only: where the kernel refuses it, the memory keeps small pages.
+  if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+#else
+  (void)memory;
+  (void)bytes;
+#endif
 }
 
 int checked_extent(std::size_t n) {
@@ -166,6 +183,7 @@ void BasicRealFft<Real>::make_plans(int rank, const int* dims, FftPlanning plann
     if (owns_buffers_) {
       spectrum_ = reinterpret_cast<std::complex<Real>*>(F<Real>::alloc_complex(spectrum_size()));
       input_ = F<Real>::alloc_real(real_size());
+      if (spectrum_ != nullptr) detail::advise_huge_pages(spectrum_, spectrum_size() * sizeof(std::complex<Real>));
     } else {
       spectrum_ = workspace;
       input_ = reinterpret_cast<Real*>(workspace + spectrum_size());
