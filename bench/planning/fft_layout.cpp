@@ -97,18 +97,26 @@ class Pair {
       plans_[2] =
           fftw_plan_many_dft(1, &ni, kBlock, buffers_, nullptr, 1, ni, buffers_, nullptr, 1, ni, FFTW_BACKWARD, flags);
       fftw_plan_with_nthreads(threads_);
-    } else if (variant == "fused") {
+    } else if (variant == "fused" || variant == "fused2") {
+      // fused2: the rows' spectra written kx-major into the buffer (entry
+      // c of row r at c * kRows + r), so that the scatter copies 16
+      // consecutive entries per kx.
+      const bool strided = variant == "fused2";
       threads_ = omp_get_max_threads();
       buffers_ = fftw_alloc_complex(static_cast<std::size_t>(threads_) * kRows * h_);
       const int rows = kRows;
       fftw_plan_with_nthreads(1);
-      plans_[0] = fftw_plan_many_dft_r2c(1, &ni, rows, x_, nullptr, 1, ni, buffers_, nullptr, 1, hi, flags);
-      plans_[3] = fftw_plan_many_dft_c2r(1, &ni, rows, buffers_, nullptr, 1, hi, y_, nullptr, 1, ni, flags);
+      plans_[0] = fftw_plan_many_dft_r2c(1, &ni, rows, x_, nullptr, 1, ni, buffers_, nullptr, strided ? rows : 1,
+                                         strided ? 1 : hi, flags);
+      plans_[3] = fftw_plan_many_dft_c2r(1, &ni, rows, buffers_, nullptr, strided ? rows : 1, strided ? 1 : hi, y_,
+                                         nullptr, 1, ni, flags);
+      strided_ = strided;
       fftw_plan_with_nthreads(threads_);
       plans_[1] = fftw_plan_many_dft(1, &ni, hi, s, nullptr, 1, ni, s, nullptr, 1, ni, FFTW_FORWARD, flags);
       plans_[2] = fftw_plan_many_dft(1, &ni, hi, s, nullptr, 1, ni, s, nullptr, 1, ni, FFTW_BACKWARD, flags);
     } else {
-      throw std::invalid_argument("variant " + variant + ": allowed are plain, transposed, blocked, columns and fused");
+      throw std::invalid_argument("variant " + variant +
+                                  ": allowed are plain, transposed, blocked, columns, fused and fused2");
     }
     const int planned = variant == "plain" ? 2 : 4;
     for (int k = 0; k < planned; ++k) {
@@ -137,7 +145,7 @@ class Pair {
       fftw_execute(plans_[1]);
     } else if (variant_ == "transposed") {
       for (fftw_plan p : plans_) fftw_execute(p);
-    } else if (variant_ == "fused") {
+    } else if (variant_ == "fused" || variant_ == "fused2") {
       rows_to_spectrum();
       fftw_execute(plans_[1]);
       fftw_execute(plans_[2]);
@@ -179,9 +187,13 @@ class Pair {
       auto* buffer = reinterpret_cast<Complex*>(buffers_) + static_cast<std::size_t>(omp_get_thread_num()) * kRows * h_;
       const std::size_t r0 = static_cast<std::size_t>(b) * kRows;
       fftw_execute_dft_r2c(plans_[0], x_ + r0 * n_, reinterpret_cast<fftw_complex*>(buffer));
-      for (std::size_t c = 0; c < h_; ++c) {
-        Complex* column = s + c * n_ + r0;
-        for (std::size_t r = 0; r < kRows; ++r) column[r] = buffer[r * h_ + c];
+      if (strided_) {
+        for (std::size_t c = 0; c < h_; ++c) std::copy_n(buffer + c * kRows, kRows, s + c * n_ + r0);
+      } else {
+        for (std::size_t c = 0; c < h_; ++c) {
+          Complex* column = s + c * n_ + r0;
+          for (std::size_t r = 0; r < kRows; ++r) column[r] = buffer[r * h_ + c];
+        }
       }
     }
   }
@@ -193,9 +205,13 @@ class Pair {
     for (std::ptrdiff_t b = 0; b < static_cast<std::ptrdiff_t>(blocks); ++b) {
       auto* buffer = reinterpret_cast<Complex*>(buffers_) + static_cast<std::size_t>(omp_get_thread_num()) * kRows * h_;
       const std::size_t r0 = static_cast<std::size_t>(b) * kRows;
-      for (std::size_t c = 0; c < h_; ++c) {
-        const Complex* column = s + c * n_ + r0;
-        for (std::size_t r = 0; r < kRows; ++r) buffer[r * h_ + c] = column[r];
+      if (strided_) {
+        for (std::size_t c = 0; c < h_; ++c) std::copy_n(s + c * n_ + r0, kRows, buffer + c * kRows);
+      } else {
+        for (std::size_t c = 0; c < h_; ++c) {
+          const Complex* column = s + c * n_ + r0;
+          for (std::size_t r = 0; r < kRows; ++r) buffer[r * h_ + c] = column[r];
+        }
       }
       fftw_execute_dft_c2r(plans_[3], reinterpret_cast<fftw_complex*>(buffer), y_ + r0 * n_);
     }
@@ -231,6 +247,7 @@ class Pair {
   fftw_complex* t_ = nullptr;
   fftw_complex* buffers_ = nullptr;  // columns: kBlock columns per thread
   int threads_ = 1;
+  bool strided_ = false;  // fused2
   fftw_plan plans_[4] = {nullptr, nullptr, nullptr, nullptr};
 };
 
