@@ -321,6 +321,7 @@ TangentialResult TangentialSolver::solve(std::span<const double> pressure, const
     int best_at = 0;
     int stalls = 0;
     int projected_left = 0;  // projected steps before conjugate gradients resume
+    int release_period = options_.release_period;
     const int stall_window = coarse_started ? kStalledConjugateStepsAfterCoarseStart : kStalledConjugateSteps;
     for (;; ++k) {
       it.evaluate(offset + k);
@@ -333,13 +334,17 @@ TangentialResult TangentialSolver::solve(std::span<const double> pressure, const
         // steepest-descent step; for good after kConjugateStalls stalls.
         // (Projected gradients to the end took 760-3400 iterations where
         // the conjugate gradients resumed took about 100: docs/
-        // development-log.md, 2026-11-30.)
+        // development-log.md, 2026-11-30.) Each stall also doubles the
+        // release period: the sets that swung get longer inner solves
+        // between their updates (4096^2: 196 iterations, where the fixed
+        // period reached the fourth stall and crawled).
         if (it.residual() < 0.5 * best) {
           best = it.residual();
           best_at = k;
         } else if (k - best_at > stall_window) {
           conjugate = false;
           projected_left = ++stalls < kConjugateStalls ? kProjectedStepsAfterStall : -1;
+          release_period *= 2;
           projected_gradient.begin();
         }
       } else if (projected_left > 0 && --projected_left == 0) {
@@ -352,7 +357,7 @@ TangentialResult TangentialSolver::solve(std::span<const double> pressure, const
         // Releases only every release_period iterations: an active-set
         // outer loop whose inner conjugate gradients run on frozen releases
         // (Hintermueller, Ito & Kunisch 2002 update the sets between solves).
-        conjugate_gradient.allow_release(k % options_.release_period == 0);
+        conjugate_gradient.allow_release(k % release_period == 0);
         conjugate_gradient.step();
       } else {
         projected_gradient.step(inverse_lipschitz);
