@@ -261,18 +261,28 @@ bool BasicRealFft<Real>::make_transposed_plans(unsigned flags) {
   return forward_plan_ != nullptr && backward_plan_ != nullptr;
 }
 
+// body(first, count, buffer) for each block of kBlockRows rows (count in
+// the last may be fewer), on the threads, buffer the thread's own.
 template <class Real>
-void BasicRealFft<Real>::transposed_forward(const Real* in) {
+template <class Body>
+void BasicRealFft<Real>::for_each_row_block(Body&& body) {
   const std::size_t h = spectrum_cols();
   const auto blocks = static_cast<std::ptrdiff_t>((rows_ + kBlockRows - 1) / kBlockRows);
   const int team = static_cast<int>(std::min<std::ptrdiff_t>(row_buffer_count_, blocks));
-  // Each block's rows into the thread's buffer, then scattered down the
-  // kx blocks: kBlockRows consecutive entries of each.
 #pragma omp parallel for schedule(static) num_threads(team)
   for (std::ptrdiff_t b = 0; b < blocks; ++b) {
     const std::size_t first = static_cast<std::size_t>(b) * kBlockRows;
-    const std::size_t count = std::min(kBlockRows, rows_ - first);
-    std::complex<Real>* const buffer = row_buffers_ + static_cast<std::size_t>(omp_get_thread_num()) * kBlockRows * h;
+    body(first, std::min(kBlockRows, rows_ - first),
+         row_buffers_ + static_cast<std::size_t>(omp_get_thread_num()) * kBlockRows * h);
+  }
+}
+
+template <class Real>
+void BasicRealFft<Real>::transposed_forward(const Real* in) {
+  const std::size_t h = spectrum_cols();
+  // Each block's rows into the thread's buffer, then scattered down the
+  // kx blocks: count consecutive entries of each.
+  for_each_row_block([&](std::size_t first, std::size_t count, std::complex<Real>* buffer) {
     // Planned with FFTW_PRESERVE_INPUT: never written through.
     F<Real>::execute_r2c(rows_forward_[count == kBlockRows ? 0 : 1], const_cast<Real*>(in + first * cols_),
                          as_fftw(buffer));
@@ -280,7 +290,7 @@ void BasicRealFft<Real>::transposed_forward(const Real* in) {
       std::complex<Real>* const entries = spectrum_ + c * rows_ + first;
       for (std::size_t r = 0; r < count; ++r) entries[r] = buffer[r * h + c];
     }
-  }
+  });
   F<Real>::execute_c2c(forward_plan_, as_fftw(spectrum_), as_fftw(spectrum_));
 }
 
@@ -288,19 +298,13 @@ template <class Real>
 void BasicRealFft<Real>::transposed_backward(Real* out) {
   F<Real>::execute_c2c(backward_plan_, as_fftw(spectrum_), as_fftw(spectrum_));
   const std::size_t h = spectrum_cols();
-  const auto blocks = static_cast<std::ptrdiff_t>((rows_ + kBlockRows - 1) / kBlockRows);
-  const int team = static_cast<int>(std::min<std::ptrdiff_t>(row_buffer_count_, blocks));
-#pragma omp parallel for schedule(static) num_threads(team)
-  for (std::ptrdiff_t b = 0; b < blocks; ++b) {
-    const std::size_t first = static_cast<std::size_t>(b) * kBlockRows;
-    const std::size_t count = std::min(kBlockRows, rows_ - first);
-    std::complex<Real>* const buffer = row_buffers_ + static_cast<std::size_t>(omp_get_thread_num()) * kBlockRows * h;
+  for_each_row_block([&](std::size_t first, std::size_t count, std::complex<Real>* buffer) {
     for (std::size_t c = 0; c < h; ++c) {
       const std::complex<Real>* const entries = spectrum_ + c * rows_ + first;
       for (std::size_t r = 0; r < count; ++r) buffer[r * h + c] = entries[r];
     }
     F<Real>::execute_c2r(rows_backward_[count == kBlockRows ? 0 : 1], as_fftw(buffer), out + first * cols_);
-  }
+  });
 }
 
 template <class Real>

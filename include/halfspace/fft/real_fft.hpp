@@ -137,6 +137,8 @@ class BasicRealFft {
   // DFT(spectrum), without 1/N.
   void transposed_forward(const Real* in);
   void transposed_backward(Real* out);
+  template <class Body>
+  void for_each_row_block(Body&& body);
   // input_, made (zeroed, FFTW-aligned) if it was left to first use.
   Real* real_input();
 
