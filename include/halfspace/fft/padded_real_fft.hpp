@@ -82,6 +82,9 @@ class PaddedRealFft {
   // blocks, or gathered from there.
   void scatter_rows(int thread, std::size_t first, std::size_t count);
   void gather_rows(int thread, std::size_t first, std::size_t count);
+  // The plan of `plans` (rows_forward_ or rows_backward_) for a block of
+  // `count` rows.
+  fftw_plan_s* plan_for(fftw_plan_s* const* plans, std::size_t count) const;
 
   std::size_t block_rows_;
   std::size_t block_cols_;
@@ -93,9 +96,6 @@ class PaddedRealFft {
   // c2r of the first two.
   fftw_plan_s* rows_forward_[3] = {};
   fftw_plan_s* rows_backward_[2] = {};
-  // The plan of `plans` (rows_forward_ or rows_backward_) for a block of
-  // `count` rows.
-  fftw_plan_s* plan_for(fftw_plan_s* const* plans, std::size_t count) const;
   fftw_plan_s* columns_forward_ = nullptr;  // 2D: c2c of each kx block, in place
   fftw_plan_s* columns_backward_ = nullptr;
 };
