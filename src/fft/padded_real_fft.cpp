@@ -10,7 +10,6 @@
 #include "halfspace/fft/padded_real_fft.hpp"
 
 #include <fmt/format.h>
-#include <omp.h>
 
 #include <algorithm>
 #include <cassert>
@@ -21,10 +20,12 @@
 #include "fftw_planner.hpp"
 #include "halfspace/linalg/parallel.hpp"
 #include "halfspace/threads.hpp"
+#include "row_blocks.hpp"
 
 namespace halfspace::fft {
 
 using detail::as_fftw;
+using detail::kBlockRows;
 
 namespace {
 
@@ -78,7 +79,7 @@ PaddedRealFft::PaddedRealFft(std::size_t rows, std::size_t cols, FftPlanning pla
         rows_backward_[0] = row_plan(false, padded_cols, 1, real_, stride, spectrum_, flags);
         planned = rows_forward_[0] != nullptr && rows_backward_[0] != nullptr;
       } else {
-        // The rows' plans run one per thread (for_each_row_block), in place
+        // The rows' plans run one per thread (detail::for_each_row_block), in place
         // in the thread's buffer.
         fftw_plan_with_nthreads(1);
         auto* in_buffer = reinterpret_cast<std::complex<double>*>(real_);
@@ -124,15 +125,8 @@ fftw_plan_s* PaddedRealFft::plan_for(fftw_plan_s* const* plans, std::size_t coun
   return count == block_rows_ % kBlockRows ? plans[1] : plans[2];
 }
 
-template <class Body>
-void PaddedRealFft::for_each_row_block(std::size_t rows, Body&& body) {
-  const auto blocks = static_cast<std::ptrdiff_t>((rows + kBlockRows - 1) / kBlockRows);
-  const int team = static_cast<int>(std::min<std::ptrdiff_t>(buffers_, blocks));
-#pragma omp parallel for schedule(static) num_threads(team)
-  for (std::ptrdiff_t b = 0; b < blocks; ++b) {
-    const std::size_t first = static_cast<std::size_t>(b) * kBlockRows;
-    body(omp_get_thread_num(), first, std::min(kBlockRows, rows - first));
-  }
+double* PaddedRealFft::buffer_row(int thread, std::size_t r) const {
+  return real_ + (static_cast<std::size_t>(thread) * kBlockRows + r) * real_stride();
 }
 
 void PaddedRealFft::scatter_rows(int thread, std::size_t first, std::size_t count) {
@@ -167,7 +161,7 @@ void PaddedRealFft::forward(std::span<const double> block) {
     fftw_execute(rows_forward_[0]);
     return;
   }
-  for_each_row_block(block_rows_, [&](int thread, std::size_t first, std::size_t count) {
+  detail::for_each_row_block(block_rows_, buffers_, [&](int thread, std::size_t first, std::size_t count) {
     for (std::size_t r = 0; r < count; ++r) {
       double* const row = buffer_row(thread, r);
       std::copy_n(block.data() + (first + r) * nx, nx, row);
@@ -190,7 +184,7 @@ void PaddedRealFft::forward_rows(const Rows& fill) {
     fftw_execute(rows_forward_[0]);
     return;
   }
-  for_each_row_block(spectrum_rows(), [&](int thread, std::size_t first, std::size_t count) {
+  detail::for_each_row_block(spectrum_rows(), buffers_, [&](int thread, std::size_t first, std::size_t count) {
     fill(first, count, [&](std::size_t i) { return std::span<double>(buffer_row(thread, i), width); });
     scatter_rows(thread, first, count);
   });
@@ -206,7 +200,7 @@ void PaddedRealFft::backward(std::span<double> block) {
     return;
   }
   fftw_execute(columns_backward_);
-  for_each_row_block(block_rows_, [&](int thread, std::size_t first, std::size_t count) {
+  detail::for_each_row_block(block_rows_, buffers_, [&](int thread, std::size_t first, std::size_t count) {
     gather_rows(thread, first, count);
     for (std::size_t r = 0; r < count; ++r) std::copy_n(buffer_row(thread, r), nx, block.data() + (first + r) * nx);
   });

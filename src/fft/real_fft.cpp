@@ -9,7 +9,6 @@
 
 #include <fftw3.h>
 #include <fmt/format.h>
-#include <omp.h>
 
 #include <algorithm>
 #include <cassert>
@@ -27,6 +26,7 @@
 #include "fftw_planner.hpp"
 #include "halfspace/error.hpp"
 #include "halfspace/threads.hpp"
+#include "row_blocks.hpp"
 
 namespace halfspace::fft {
 namespace detail {
@@ -82,6 +82,7 @@ int checked_extent(std::size_t n) {
 
 using detail::as_fftw;
 using detail::checked_extent;
+using detail::kBlockRows;
 using detail::planner_flags;
 
 // Whether Real is single precision (its wisdom is kept apart).
@@ -261,20 +262,9 @@ bool BasicRealFft<Real>::make_transposed_plans(unsigned flags) {
   return forward_plan_ != nullptr && backward_plan_ != nullptr;
 }
 
-// body(first, count, buffer) for each block of kBlockRows rows (count in
-// the last may be fewer), on the threads, buffer the thread's own.
 template <class Real>
-template <class Body>
-void BasicRealFft<Real>::for_each_row_block(Body&& body) {
-  const std::size_t h = spectrum_cols();
-  const auto blocks = static_cast<std::ptrdiff_t>((rows_ + kBlockRows - 1) / kBlockRows);
-  const int team = static_cast<int>(std::min<std::ptrdiff_t>(row_buffer_count_, blocks));
-#pragma omp parallel for schedule(static) num_threads(team)
-  for (std::ptrdiff_t b = 0; b < blocks; ++b) {
-    const std::size_t first = static_cast<std::size_t>(b) * kBlockRows;
-    body(first, std::min(kBlockRows, rows_ - first),
-         row_buffers_ + static_cast<std::size_t>(omp_get_thread_num()) * kBlockRows * h);
-  }
+std::complex<Real>* BasicRealFft<Real>::row_buffer(int thread) const {
+  return row_buffers_ + static_cast<std::size_t>(thread) * kBlockRows * spectrum_cols();
 }
 
 template <class Real>
@@ -282,7 +272,8 @@ void BasicRealFft<Real>::transposed_forward(const Real* in) {
   const std::size_t h = spectrum_cols();
   // Each block's rows into the thread's buffer, then scattered down the
   // kx blocks: count consecutive entries of each.
-  for_each_row_block([&](std::size_t first, std::size_t count, std::complex<Real>* buffer) {
+  detail::for_each_row_block(rows_, row_buffer_count_, [&](int thread, std::size_t first, std::size_t count) {
+    std::complex<Real>* const buffer = row_buffer(thread);
     // Planned with FFTW_PRESERVE_INPUT: never written through.
     F<Real>::execute_r2c(rows_forward_[count == kBlockRows ? 0 : 1], const_cast<Real*>(in + first * cols_),
                          as_fftw(buffer));
@@ -298,7 +289,8 @@ template <class Real>
 void BasicRealFft<Real>::transposed_backward(Real* out) {
   F<Real>::execute_c2c(backward_plan_, as_fftw(spectrum_), as_fftw(spectrum_));
   const std::size_t h = spectrum_cols();
-  for_each_row_block([&](std::size_t first, std::size_t count, std::complex<Real>* buffer) {
+  detail::for_each_row_block(rows_, row_buffer_count_, [&](int thread, std::size_t first, std::size_t count) {
+    std::complex<Real>* const buffer = row_buffer(thread);
     for (std::size_t c = 0; c < h; ++c) {
       const std::complex<Real>* const entries = spectrum_ + c * rows_ + first;
       for (std::size_t r = 0; r < count; ++r) buffer[r * h + c] = entries[r];

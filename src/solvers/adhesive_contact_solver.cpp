@@ -660,7 +660,8 @@ bool AdhesiveContactSolver::Impl::conjugate_gradient_step(Walk& walk, int iterat
   });
   const double linear = along[0];
   const double quadratic = 0.5 * along[1];
-  double noise = 0.5 * std::abs(along[2]);  // + the cells' |interaction energies|, times the rounding
+  const double elastic_energy = 0.5 * std::abs(along[2]);
+  double noise = 0.0;  // the change's rounding, accepted after a recomputed state
   double step = plain || !(quadratic > 0.0) ? 1.0 : -0.5 * slope / quadratic;
   double change = 0.0;
   bool clipped = false;
@@ -679,7 +680,7 @@ bool AdhesiveContactSolver::Impl::conjugate_gradient_step(Walk& walk, int iterat
     });
     clipped = moved[0] > 0.0;
     if (backtracks == 0) {
-      noise = recomputed ? kEnergyRounding * std::numeric_limits<double>::epsilon() * (noise + moved[2]) : 0.0;
+      if (recomputed) noise = kEnergyRounding * std::numeric_limits<double>::epsilon() * (elastic_energy + moved[2]);
     }
     double decrease = step * slope;
     if (clipped) {

@@ -63,20 +63,12 @@ class PaddedRealFft {
   void backward(std::span<double> block);
 
  private:
-  // Rows per block of the row transforms in 2D.
-  static constexpr std::size_t kBlockRows = 16;
-
   void release() noexcept;
-  // The real rows of a thread's buffer (2D) or the one row (1D), each
-  // real_stride() values: 2 block_cols() and room for the r2c's last entry.
+  // The real rows of a thread's buffer (2D: a block of rows,
+  // src/fft/row_blocks.hpp) or the one row (1D), each real_stride() values:
+  // 2 block_cols() and room for the r2c's last entry.
   std::size_t real_stride() const { return 2 * spectrum_cols(); }
-  double* buffer_row(int thread, std::size_t r) const {
-    return real_ + (static_cast<std::size_t>(thread) * kBlockRows + r) * real_stride();
-  }
-  // 2D: body(thread, first, count) for the blocks of kBlockRows of `rows`
-  // rows, on the threads (each with its own buffer).
-  template <class Body>
-  void for_each_row_block(std::size_t rows, Body&& body);
+  double* buffer_row(int thread, std::size_t r) const;
   // 2D: the row transforms of a thread's count buffer rows (in place), and
   // their spectra scattered into rows [first, first + count) of the kx
   // blocks, or gathered from there.
@@ -89,9 +81,9 @@ class PaddedRealFft {
   std::size_t block_rows_;
   std::size_t block_cols_;
   std::complex<double>* spectrum_ = nullptr;
-  double* real_ = nullptr;  // 2D: kBlockRows rows per thread; 1D: the padded row
+  double* real_ = nullptr;  // 2D: a block of rows per thread; 1D: the padded row
   int buffers_ = 1;         // threads with a buffer (2D)
-  // r2c in a buffer (in place) of kBlockRows rows, of the data rows left
+  // r2c in a buffer (in place) of a full block of rows, of the data rows left
   // over and of all padded rows left over (1D: the row, into the spectrum);
   // c2r of the first two.
   fftw_plan_s* rows_forward_[3] = {};

@@ -121,24 +121,21 @@ class BasicRealFft {
 
  private:
   using Plan = typename FftwPlanOf<Real>::type;
-  // Rows per block of a transposed transform: with 16, every block of a
-  // real array starts at its first row's alignment (16 rows of floats are
-  // a multiple of 64 bytes), so one plan serves every block.
-  static constexpr std::size_t kBlockRows = 16;
 
   void make_plans(int rank, const int* dims, FftPlanning planning, FftOutput output,
                   std::complex<Real>* workspace = nullptr);
   // The transposed layout's plans (the planner's lock held): the rows' in
-  // blocks of kBlockRows (and one of the rows left over) between the real
-  // array and a block buffer, the kx blocks' in place; false if FFTW fails.
+  // blocks (src/fft/row_blocks.hpp; and one of the rows left over) between
+  // the real array and a block buffer, the kx blocks' in place; false if
+  // FFTW fails.
   bool make_transposed_plans(unsigned flags);
   void release() noexcept;
   // The transposed layout's transforms: spectrum = DFT(in); out = inverse
   // DFT(spectrum), without 1/N.
   void transposed_forward(const Real* in);
   void transposed_backward(Real* out);
-  template <class Body>
-  void for_each_row_block(Body&& body);
+  // A thread's block buffer (transposed).
+  std::complex<Real>* row_buffer(int thread) const;
   // input_, made (zeroed, FFTW-aligned) if it was left to first use.
   Real* real_input();
 
@@ -150,9 +147,9 @@ class BasicRealFft {
   Plan forward_plan_ = nullptr;  // row-major: the 2D plans; transposed: the kx blocks'
   Plan backward_plan_ = nullptr;
   bool transposed_ = false;
-  Plan rows_forward_[2] = {nullptr, nullptr};  // transposed: kBlockRows rows, and the rows left over
+  Plan rows_forward_[2] = {nullptr, nullptr};  // transposed: a full block of rows, and the rows left over
   Plan rows_backward_[2] = {nullptr, nullptr};
-  std::complex<Real>* row_buffers_ = nullptr;  // transposed: kBlockRows spectrum rows per thread
+  std::complex<Real>* row_buffers_ = nullptr;  // transposed: a block's spectrum rows per thread
   int row_buffer_count_ = 0;
   bool owns_buffers_ = true;
   bool lazy_input_ = false;  // overwrite_input, own buffers: input_ made on first use
