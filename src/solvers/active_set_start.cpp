@@ -31,8 +31,12 @@ void ActiveSetOptions::validate() const {
     throw SolverOptionError("active_set.inner_reduction", fmt::format("{}", inner_reduction),
                             "is invalid: allowed range is (0, 1)");
   }
-  if (max_inner < 1) {
-    throw SolverOptionError("active_set.max_inner", fmt::format("{}", max_inner), "is invalid: must be at least 1");
+  if (min_inner < 1) {
+    throw SolverOptionError("active_set.min_inner", fmt::format("{}", min_inner), "is invalid: must be at least 1");
+  }
+  if (max_inner < min_inner) {
+    throw SolverOptionError("active_set.max_inner", fmt::format("{}", max_inner),
+                            fmt::format("is invalid: must be at least active_set.min_inner ({})", min_inner));
   }
   if (max_outer < 1) {
     throw SolverOptionError("active_set.max_outer", fmt::format("{}", max_outer), "is invalid: must be at least 1");
@@ -161,7 +165,8 @@ ActiveSetRecord ActiveSetStart::run_on(std::span<const double> initial_gap, cons
       });
       inner_norms_.push_back(std::sqrt(rr));
       if (inner == 0) first_norm = rr;
-      if (!(rr > options_.inner_reduction * options_.inner_reduction * first_norm)) break;
+      const bool reduced = !(rr > options_.inner_reduction * options_.inner_reduction * first_norm);
+      if (!(rr > 0.0) || (reduced && inner >= options_.min_inner)) break;
       if (preconditioner_.adapt(set, inner_norms_)) conjugate = false;
       if constexpr (kSingle) {
         single.precondition({kt, n}, {kt, n});

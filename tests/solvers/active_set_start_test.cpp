@@ -73,6 +73,8 @@ TEST_P(ActiveSetStartTest, MatchesTheDefaultSolverAndCountsItsWork) {
     // are part of the result's.
     EXPECT_GE(active.active_set_outer, 1) << c.what;
     EXPECT_GE(active.active_set_inner, 1) << c.what;
+    // Each set update follows a linear solve of at least min_inner steps.
+    EXPECT_GE(active.active_set_inner, ActiveSetOptions{}.min_inner * active.active_set_outer) << c.what;
     EXPECT_GT(active.iterations, active.active_set_inner) << c.what << ": Polonsky-Keer finishes";
     EXPECT_GE(active.operator_applications, active.active_set_inner + active.active_set_outer) << c.what;
   }
@@ -217,8 +219,14 @@ TEST(ActiveSetOptionsTest, NamesTheOptionItRefuses) {
   options.inner_reduction = 1.0;
   EXPECT_NE(message_of(options).find("active_set.inner_reduction"), std::string::npos) << message_of(options);
   options = {};
+  options.min_inner = 0;
+  EXPECT_NE(message_of(options).find("active_set.min_inner"), std::string::npos) << message_of(options);
+  options = {};
   options.max_inner = 0;
   EXPECT_NE(message_of(options).find("active_set.max_inner"), std::string::npos);
+  options = {};
+  options.max_inner = 1;  // below min_inner, 2
+  EXPECT_NE(message_of(options).find("at least active_set.min_inner (2)"), std::string::npos) << message_of(options);
   options = {};
   options.max_outer = 0;
   EXPECT_NE(message_of(options).find("active_set.max_outer"), std::string::npos);

@@ -11,7 +11,14 @@ struct ActiveSetOptions {
   // FFT pairs of 0.1-0.3 on rough surfaces, 256^2-2048^2
   // (docs/development-log.md, "fewer FFT pairs per solve").
   double inner_reduction = 0.2;
-  // Conjugate-gradient iterations per linear solve at most.
+  // Conjugate-gradient iterations per linear solve at least and at most.
+  // One deflated step can reach inner_reduction alone while the pressure on
+  // the set is still far from the solve's, and a set update from it moves
+  // cells it should not: at 16384^2 the updates then grew (3.1, 2.3, 4.3
+  // million cells) and the phase gave up, where two steps per solve settle
+  // the set in 5 updates (docs/development-log.md, "2026-11-30: 16384^2
+  // solved: two steps per linear solve of the active-set phase").
+  int min_inner = 2;
   int max_inner = 50;
   // Set updates at most.
   int max_outer = 12;
@@ -19,8 +26,8 @@ struct ActiveSetOptions {
   double settled_changes = 1e-3;
 
   // Throws SolverOptionError naming the option ("active_set.inner_reduction",
-  // ...) unless 0 < inner_reduction < 1, max_inner >= 1, max_outer >= 1 and
-  // 0 <= settled_changes < 1.
+  // ...) unless 0 < inner_reduction < 1, 1 <= min_inner <= max_inner,
+  // max_outer >= 1 and 0 <= settled_changes < 1.
   void validate() const;
 };
 
