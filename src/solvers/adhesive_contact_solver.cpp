@@ -679,8 +679,8 @@ bool AdhesiveContactSolver::Impl::conjugate_gradient_step(Walk& walk, int iterat
       return std::array<double, 3>{cut, cell_energy(law, g + step * direction[i]) - before, std::abs(before)};
     });
     clipped = moved[0] > 0.0;
-    if (backtracks == 0) {
-      if (recomputed) noise = kEnergyRounding * std::numeric_limits<double>::epsilon() * (elastic_energy + moved[2]);
+    if (backtracks == 0 && recomputed) {
+      noise = kEnergyRounding * std::numeric_limits<double>::epsilon() * (elastic_energy + moved[2]);
     }
     double decrease = step * slope;
     if (clipped) {

@@ -14,10 +14,10 @@ struct ActiveSetOptions {
   // Conjugate-gradient iterations per linear solve at least and at most.
   // One deflated step can reach inner_reduction alone while the pressure on
   // the set is still far from the solve's, and a set update from it moves
-  // cells it should not: at 16384^2 the updates then did not settle (3.1,
-  // 2.3, then 4.3 million cells changed) and the phase gave up, where two
-  // steps per solve settle the set in 5 updates (docs/development-log.md,
-  // "16384^2 solved: two steps per linear solve of the active-set phase").
+  // cells it should not: at 16384^2 the updates then did not settle and
+  // the phase gave up, where two steps per solve settle the set
+  // (docs/development-log.md, "16384^2 solved: two steps per linear solve
+  // of the active-set phase").
   int min_inner = 2;
   int max_inner = 50;
   // Set updates at most.
