@@ -13,6 +13,7 @@
 
 #include "halfspace/error.hpp"
 #include "halfspace/io/output_file.hpp"
+#include "hdf5_chunk_compression.hpp"
 #include "hdf5_handle.hpp"
 #include "hdf5_writing.hpp"
 
@@ -184,7 +185,14 @@ hid_t write_array(hid_t location, std::string_view name, const std::vector<std::
       H5Dcreate2(location, key.c_str(), file_type, space.get(), H5P_DEFAULT, properties.get(), H5P_DEFAULT));
   if (!dataset.valid()) fail_hdf5(fmt::format("could not create dataset '{}'", name));
   if (whole) {
-    if (elements > 0 && H5Dwrite(dataset.get(), memory_type, H5S_ALL, H5S_ALL, transfer, data) < 0) {
+    // Deflated chunks are compressed on the threads where the types need no
+    // conversion; elsewhere (and in the parallel HDF5) HDF5's pipeline runs.
+    const std::vector<hsize_t> chunk = chunk_shape(dims);
+    const bool threaded = compression == Compression::deflate && !chunk.empty() &&
+                          H5Zfilter_avail(H5Z_FILTER_DEFLATE) > 0 && H5Tequal(file_type, memory_type) > 0;
+    const bool written = threaded && detail::write_deflated_chunks(dataset.get(), name, dims, chunk,
+                                                                   H5Tget_size(file_type), kDeflateLevel, data);
+    if (!written && elements > 0 && H5Dwrite(dataset.get(), memory_type, H5S_ALL, H5S_ALL, transfer, data) < 0) {
       fail_hdf5(fmt::format("could not write dataset '{}'", name));
     }
   } else {
