@@ -521,11 +521,25 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
     if (load_control) clipped[h0] = std::clamp(step[h0], -offset_cap(), offset_cap());
     return true;
   };
+  // The trial point on a bent path: a node the step carries across the
+  // cavitation switch (from outside the switch band) stops on it, s = 0, as
+  // a projected Newton method's path stops at its bounds (Bertsekas 1982);
+  // the next step's branch passes choose its side from the direction. On the
+  // straight path the linear model, exact on the node's own branch, is wrong
+  // past the switch, and the line search cut the step to 1e-5 for a few
+  // pressurised nodes at s = 1e-4 to 1e-2: 256^2 crept for 45 minutes and
+  // did not converge (docs/development-log.md, 2026-11-30).
   newton.try_step = [&](double scale, bool clip) -> std::optional<detail::FilmMeasure> {
     const Eigen::VectorXd& along = clip ? clipped : step;
     trial.s = x.s + scale * along.head(ni).array();
     trial.q = x.q + scale * along.segment(ni, ni).array();
     trial.offset = load_control ? x.offset + scale * along[h0] : x.offset;
+    for (Eigen::Index k = 0; k < ni; ++k) {
+      const bool crossed = (x.s[k] > 0.0) != (trial.s[k] > 0.0);
+      if (crossed && std::abs(x.s[k]) > detail::kSwitchBand && !topology.fixed(static_cast<std::size_t>(k))) {
+        trial.s[k] = 0.0;
+      }
+    }
     if (!evaluate(trial)) return std::nullopt;
     return measure(trial, trial_residual, false);
   };

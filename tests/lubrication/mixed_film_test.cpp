@@ -125,14 +125,15 @@ TEST(MixedFilmTest, ThickFilmEqualsTheElasticFilm) {
     EXPECT_EQ(mixed.contact_load_fraction, 0.0);
     EXPECT_EQ(mixed.contact_area_fraction, 0.0);
     // With no cell below h_b the two Newton iterations solve the same
-    // equations from the same start: measured equal to 1e-14 (pressure, of
-    // the peak; film, of the thinnest), asserted well below the EHL
-    // solver's tolerance of 1e-8.
+    // equations from the same start, on paths that differ where the mixed
+    // film's stops nodes at the cavitation switch: measured equal to 3e-10
+    // (pressure, of the peak; film, of the thinnest), asserted well below
+    // the solvers' tolerance of 1e-8.
     const double peak = ehl.pressure.maxCoeff();
-    EXPECT_LE((mixed.pressure - ehl.pressure).abs().maxCoeff(), 1e-10 * peak);
-    EXPECT_LE((mixed.film - ehl.film).abs().maxCoeff(), 1e-10 * ehl.minimum_film_thickness);
-    EXPECT_NEAR(mixed.central_film_thickness / ehl.central_film_thickness, 1.0, 1e-10);
-    EXPECT_NEAR(mixed.minimum_film_thickness / ehl.minimum_film_thickness, 1.0, 1e-10);
+    EXPECT_LE((mixed.pressure - ehl.pressure).abs().maxCoeff(), 2e-9 * peak);
+    EXPECT_LE((mixed.film - ehl.film).abs().maxCoeff(), 2e-9 * ehl.minimum_film_thickness);
+    EXPECT_NEAR(mixed.central_film_thickness / ehl.central_film_thickness, 1.0, 2e-9);
+    EXPECT_NEAR(mixed.minimum_film_thickness / ehl.minimum_film_thickness, 1.0, 2e-9);
     expect_solution_holds(op, line.gap, conditions, mixed_options(), mixed);
   }
 }

@@ -92,8 +92,10 @@ struct MixedFilmOptions {
   // GMRES: the restart length, the iterations per Newton step, the
   // relative residual it must reach (looser far from the solution: an
   // inexact Newton) and how many cells around a node the preconditioner
-  // keeps of K.
-  int krylov_restart = 40;
+  // keeps of K. A restart of 40 stagnated (0.2 after 800 iterations) on a
+  // 256^2 rough point contact that 80 to 150 solve (docs/development-log.md,
+  // 2026-11-30); the basis costs 16 (restart + 1) bytes per node.
+  int krylov_restart = 100;
   int krylov_max_iterations = 800;
   double krylov_tolerance = 1e-9;
   int preconditioner_neighbourhood = 1;
