@@ -137,7 +137,9 @@ TEST(MixedPrecisionTest, GivesTheDoublePressureWithBlockDeflation) {
       ASSERT_TRUE(pair.mixed.converged()) << what << ": " << pair.mixed.message;
       ASSERT_GT(pair.mixed.deflation.deflated_iterations, 0)
           << what << ": the correction must join for this test to mean anything";
-      if (phase == ActiveSet::on) ASSERT_GT(pair.mixed.active_set_outer, 0) << what;
+      if (phase == ActiveSet::on) {
+        ASSERT_GT(pair.mixed.active_set_outer, 0) << what;
+      }
       expect_conditions_hold(grid, gap, pair.mixed, 1e-8 * (gap.maxCoeff() - gap.minCoeff()));
       const double difference = pressure_difference(pair);
       std::printf("%s: double %d iterations, mixed %d (%d deflated); max |dp| / max p = %.1e\n", what.c_str(),
@@ -200,7 +202,9 @@ TEST(MixedPrecisionTest, CoarseCorrectionOnFloatVectorsIsTheDoubleOneToFloatRoun
   EXPECT_GT(correction, 1e-2);
   // Off the set the correction is zero in both.
   for (Eigen::Index i = 0; i < n; ++i) {
-    if (in_set[i] == 0.0) ASSERT_EQ(single_out[i], 0.0F) << i;
+    if (in_set[i] == 0.0) {
+      ASSERT_EQ(single_out[i], 0.0F) << i;
+    }
   }
   SolveResult report;
   mixed_b.report(report);
