@@ -8,6 +8,7 @@ packages=(
   libeigen3-dev
   libfftw3-dev  # double and single precision (fftw3, fftw3f) with their OpenMP libraries
   libhdf5-dev
+  zlib1g-dev  # result fields deflated on the threads (src/io/hdf5_chunk_compression.cpp)
   libgtest-dev libgmock-dev
   libbenchmark-dev
   libcli11-dev
