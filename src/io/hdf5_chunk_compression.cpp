@@ -27,21 +27,22 @@ constexpr std::size_t kChunksPerThread = 4;
 
 struct ChunkWork {
   std::vector<unsigned char> plain, shuffled, packed;
-  std::vector<hsize_t> offset;
+  std::vector<hsize_t> offset, at;  // the chunk's origin; gather_chunk's row
   uLongf packed_size = 0;
   bool failed = false;
 };
 
 // The chunk at `offset` of `data`, padded with zeros, into `plain`.
 void gather_chunk(const unsigned char* data, const std::vector<hsize_t>& dims, const std::vector<hsize_t>& chunk,
-                  const std::vector<hsize_t>& offset, std::size_t element_size, std::vector<unsigned char>& plain) {
+                  const std::vector<hsize_t>& offset, std::size_t element_size, std::vector<hsize_t>& at,
+                  std::vector<unsigned char>& plain) {
   const std::size_t rank = dims.size();
   bool partial = false;
   for (std::size_t k = 0; k < rank; ++k) partial = partial || offset[k] + chunk[k] > dims[k];
   if (partial) std::fill(plain.begin(), plain.end(), 0);
   const hsize_t run = std::min(chunk[rank - 1], dims[rank - 1] - offset[rank - 1]);
   // Walk the chunk's rows (every axis but the last) that lie inside the data.
-  std::vector<hsize_t> at(rank, 0);
+  std::fill(at.begin(), at.end(), 0);
   while (true) {
     bool inside = true;
     std::size_t source = 0, target = 0;
@@ -94,13 +95,16 @@ bool write_deflated_chunks(hid_t dataset, std::string_view name, const std::vect
     chunks *= per_axis[k];
   }
   const std::size_t chunk_bytes = chunk_elements * element_size;
-  const int team = std::max(1, threads());
-  std::vector<ChunkWork> work(static_cast<std::size_t>(team) * kChunksPerThread);
+  // No more threads and buffers than chunks: a small field on many threads
+  // must not allocate a batch it cannot fill.
+  const int team = static_cast<int>(std::min<std::size_t>(std::max(1, threads()), chunks));
+  std::vector<ChunkWork> work(std::min(static_cast<std::size_t>(team) * kChunksPerThread, chunks));
   for (ChunkWork& w : work) {
     w.plain.resize(chunk_bytes);
     w.shuffled.resize(element_size > 1 ? chunk_bytes : 0);
     w.packed.resize(compressBound(static_cast<uLong>(chunk_bytes)));
     w.offset.resize(rank);
+    w.at.resize(rank);
   }
   const auto* bytes = static_cast<const unsigned char*>(data);
   for (std::size_t first = 0; first < chunks; first += work.size()) {
@@ -114,7 +118,7 @@ bool write_deflated_chunks(hid_t dataset, std::string_view name, const std::vect
         w.offset[k] = (index % per_axis[k]) * chunk[k];
         index /= per_axis[k];
       }
-      gather_chunk(bytes, dims, chunk, w.offset, element_size, w.plain);
+      gather_chunk(bytes, dims, chunk, w.offset, element_size, w.at, w.plain);
       const std::vector<unsigned char>& filtered = element_size > 1 ? w.shuffled : w.plain;
       if (element_size > 1) shuffle_bytes(w.plain, element_size, w.shuffled);
       w.packed_size = static_cast<uLongf>(w.packed.size());
