@@ -526,7 +526,7 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
   // a projected Newton method's path stops at its bounds (Bertsekas 1982);
   // the next step's branch passes choose its side from the direction. On the
   // straight path the linear model, exact on the node's own branch, is wrong
-  // past the switch, and the line search cut the step to 1e-5 for a few
+  // past the switch, and the line search cut the step to 3e-5 for a few
   // pressurised nodes at s = 1e-4 to 1e-2: 256^2 crept for 45 minutes and
   // did not converge (docs/development-log.md, 2026-11-30).
   newton.try_step = [&](double scale, bool clip) -> std::optional<detail::FilmMeasure> {
