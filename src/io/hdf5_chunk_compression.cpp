@@ -27,41 +27,36 @@ constexpr std::size_t kChunksPerThread = 4;
 
 struct ChunkWork {
   std::vector<unsigned char> plain, shuffled, packed;
-  std::vector<hsize_t> offset, at;  // the chunk's origin; gather_chunk's row
+  std::vector<hsize_t> offset;
   uLongf packed_size = 0;
   bool failed = false;
 };
 
-// The chunk at `offset` of `data`, padded with zeros, into `plain`.
+// The chunk at `offset` of `data`, padded with zeros, into `plain`: row by
+// row (a row runs along the last axis), each row's coordinates from its
+// index in the chunk.
 void gather_chunk(const unsigned char* data, const std::vector<hsize_t>& dims, const std::vector<hsize_t>& chunk,
-                  const std::vector<hsize_t>& offset, std::size_t element_size, std::vector<hsize_t>& at,
-                  std::vector<unsigned char>& plain) {
-  const std::size_t rank = dims.size();
+                  const std::vector<hsize_t>& offset, std::size_t element_size, std::vector<unsigned char>& plain) {
+  const std::size_t last = dims.size() - 1;
   bool partial = false;
-  for (std::size_t k = 0; k < rank; ++k) partial = partial || offset[k] + chunk[k] > dims[k];
+  for (std::size_t k = 0; k <= last; ++k) partial = partial || offset[k] + chunk[k] > dims[k];
   if (partial) std::fill(plain.begin(), plain.end(), 0);
-  const hsize_t run = std::min(chunk[rank - 1], dims[rank - 1] - offset[rank - 1]);
-  // Walk the chunk's rows (every axis but the last) that lie inside the data.
-  std::fill(at.begin(), at.end(), 0);
-  while (true) {
+  const hsize_t run = std::min(chunk[last], dims[last] - offset[last]);
+  std::size_t rows = 1;
+  for (std::size_t k = 0; k < last; ++k) rows *= chunk[k];
+  for (std::size_t row = 0; row < rows; ++row) {
     bool inside = true;
-    std::size_t source = 0, target = 0;
-    for (std::size_t k = 0; k < rank; ++k) {
-      const hsize_t coordinate = offset[k] + at[k];
+    std::size_t rest = row, source = offset[last], stride = dims[last];
+    for (std::size_t k = last; k-- > 0;) {
+      const hsize_t coordinate = offset[k] + rest % chunk[k];
+      rest /= chunk[k];
       inside = inside && coordinate < dims[k];
-      source = source * dims[k] + coordinate;
-      target = target * chunk[k] + at[k];
+      source += coordinate * stride;
+      stride *= dims[k];
     }
-    if (inside) std::memcpy(plain.data() + target * element_size, data + source * element_size, run * element_size);
-    // The next row: the odometer over axes rank-2 .. 0.
-    std::size_t axis = rank - 1;
-    while (axis > 0) {
-      --axis;
-      if (++at[axis] < chunk[axis]) break;
-      at[axis] = 0;
-      if (axis == 0) return;
+    if (inside) {
+      std::memcpy(plain.data() + row * chunk[last] * element_size, data + source * element_size, run * element_size);
     }
-    if (rank == 1) return;
   }
 }
 
@@ -104,7 +99,6 @@ bool write_deflated_chunks(hid_t dataset, std::string_view name, const std::vect
     w.shuffled.resize(element_size > 1 ? chunk_bytes : 0);
     w.packed.resize(compressBound(static_cast<uLong>(chunk_bytes)));
     w.offset.resize(rank);
-    w.at.resize(rank);
   }
   const auto* bytes = static_cast<const unsigned char*>(data);
   for (std::size_t first = 0; first < chunks; first += work.size()) {
@@ -118,7 +112,7 @@ bool write_deflated_chunks(hid_t dataset, std::string_view name, const std::vect
         w.offset[k] = (index % per_axis[k]) * chunk[k];
         index /= per_axis[k];
       }
-      gather_chunk(bytes, dims, chunk, w.offset, element_size, w.at, w.plain);
+      gather_chunk(bytes, dims, chunk, w.offset, element_size, w.plain);
       const std::vector<unsigned char>& filtered = element_size > 1 ? w.shuffled : w.plain;
       if (element_size > 1) shuffle_bytes(w.plain, element_size, w.shuffled);
       w.packed_size = static_cast<uLongf>(w.packed.size());

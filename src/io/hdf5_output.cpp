@@ -144,6 +144,13 @@ std::vector<hsize_t> chunk_shape(const std::vector<hsize_t>& dims) {
   return chunk;
 }
 
+// Whether a dataset with chunks `chunk` (empty: contiguous) is stored with
+// the shuffle and deflate filters. Deflate is optional in an HDF5 build;
+// without it the file stays valid, only larger.
+bool deflated(const std::vector<hsize_t>& chunk, Compression compression) {
+  return !chunk.empty() && compression == Compression::deflate && H5Zfilter_avail(H5Z_FILTER_DEFLATE) > 0;
+}
+
 PropertyList creation_properties(const std::vector<hsize_t>& dims, Compression compression) {
   PropertyList properties(H5Pcreate(H5P_DATASET_CREATE));
   if (!properties.valid()) fail_hdf5("could not create dataset properties");
@@ -152,9 +159,7 @@ PropertyList creation_properties(const std::vector<hsize_t>& dims, Compression c
   if (H5Pset_chunk(properties.get(), static_cast<int>(chunk.size()), chunk.data()) < 0) {
     fail_hdf5("could not set the chunk shape");
   }
-  // Deflate is optional in an HDF5 build; without it the file stays valid,
-  // only larger.
-  if (compression == Compression::deflate && H5Zfilter_avail(H5Z_FILTER_DEFLATE) > 0) {
+  if (deflated(chunk, compression)) {
     if (H5Pset_shuffle(properties.get()) < 0 || H5Pset_deflate(properties.get(), kDeflateLevel) < 0) {
       fail_hdf5("could not set the compression filters");
     }
@@ -188,8 +193,7 @@ hid_t write_array(hid_t location, std::string_view name, const std::vector<std::
     // Deflated chunks are compressed on the threads where the types need no
     // conversion; elsewhere (and in the parallel HDF5) HDF5's pipeline runs.
     const std::vector<hsize_t> chunk = chunk_shape(dims);
-    const bool threaded = compression == Compression::deflate && !chunk.empty() &&
-                          H5Zfilter_avail(H5Z_FILTER_DEFLATE) > 0 && H5Tequal(file_type, memory_type) > 0;
+    const bool threaded = deflated(chunk, compression) && H5Tequal(file_type, memory_type) > 0;
     const bool written = threaded && detail::write_deflated_chunks(dataset.get(), name, dims, chunk,
                                                                    H5Tget_size(file_type), kDeflateLevel, data);
     if (!written && elements > 0 && H5Dwrite(dataset.get(), memory_type, H5S_ALL, H5S_ALL, transfer, data) < 0) {
