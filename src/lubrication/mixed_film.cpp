@@ -3,11 +3,12 @@
 // pressure per node.
 // The unknowns are [s (n), q (n), h0] with p_f = P max(s, 0), theta = 1 +
 // min(s, 0) and p_c = P q; the rows are the n mass balances (on the film h_R
-// = max(h, h_b)), the n contact rows min(q, h / H) and the load. With dh/dp
-// = K for the fluid and the contact pressure alike, the Jacobian's blocks are
+// = reynolds_film(h, h_b)), the n contact rows min(q, h / H) and the load.
+// With dh/dp = K for the fluid and the contact pressure alike, the
+// Jacobian's blocks are
 //
 //   d balance / d s = (A_p + A_h D K) diag(P full) + A_theta diag(cavitated)
-//   d balance / d q = A_h D K P,          D = diag(h > h_b) (or the step's)
+//   d balance / d q = A_h D K P,          D = diag(dh_R / dh) (or the step's)
 //   d contact / d q = I (open rows) or K P / H (closed rows, h = 0 imposed)
 //   d contact / d s = 0 (open) or K diag(P full) / H (closed)
 //
@@ -38,6 +39,23 @@
 #include "reynolds_linearisation.hpp"
 
 namespace halfspace::lubrication {
+
+double reynolds_film(double film, double boundary_film) {
+  if (film >= 1.5 * boundary_film) return film;
+  if (film <= 0.5 * boundary_film) return boundary_film;
+  const double above = film - 0.5 * boundary_film;
+  return boundary_film + above * above / (2.0 * boundary_film);
+}
+
+double reynolds_film_slope(double film, double boundary_film) {
+  if (film >= 1.5 * boundary_film) return 1.0;
+  if (film <= 0.5 * boundary_film) return 0.0;
+  return (film - 0.5 * boundary_film) / boundary_film;
+}
+
+Eigen::ArrayXd reynolds_film(const Eigen::ArrayXd& film, double boundary_film) {
+  return film.unaryExpr([boundary_film](double h) { return reynolds_film(h, boundary_film); });
+}
 
 void MixedFrictionOptions::validate() const {
   if (!(std::isfinite(contact_friction) && contact_friction >= 0.0)) {
@@ -157,18 +175,19 @@ struct State {
 // The branches the step goes into, as detail::branch_consistent_step takes
 // the cavitation switch's: taken at the current point alone, a contact
 // spot's edge that must open keeps its closed row (h = 0) and its film on
-// the floor h_R = max(h, h_b) (film derivative D_j = 0), so the linear model
+// the floor h_R = h_b (film derivative D_j = 0), so the linear model
 // sees a film that cannot open and asks for hundreds of pressure scales to
 // push the inflow through h_b by Poiseuille flow; the steps crept and 128^2
 // did not finish (docs/development-log.md, 2026-11-29). Here a closed row
 // that the step `step` releases (q + dq <= (h + dh) / H) opens (p_c = 0),
-// and a node on the floor that the step lifts above h_b takes D_j = 1.
+// and a node below 1.5 h_b that the step lifts above it takes D_j = 1.
 // Branches change only that way, so the passes end; near the solution no
 // node crosses and the Jacobian is the film's own. `film_change` is dh =
 // K (dp_f + dp_c) + dh0 of the step. Returns whether a branch changed (the
 // step is then solved again).
 bool take_step_branches(const State& x, double hb, double H, const Eigen::VectorXd& step,
-                        const Eigen::VectorXd& film_change, std::vector<char>& closed, std::vector<char>& open_film) {
+                        const Eigen::VectorXd& film_change, std::vector<char>& closed,
+                        std::vector<double>& film_slope) {
   const Eigen::Index ni = x.film.size();
   bool flipped = false;
   const auto take = [&](char& branch, bool wanted) {
@@ -181,9 +200,35 @@ bool take_step_branches(const State& x, double hb, double H, const Eigen::Vector
     const auto jj = static_cast<std::size_t>(j);
     const double film = x.film[j] + film_change[j];
     if (closed[jj] != 0 && !(x.q[j] + step[ni + j] > film / H)) take(closed[jj], false);
-    if (x.film[j] <= hb && film > hb) take(open_film[jj], true);
+    if (film_slope[jj] < 1.0 && reynolds_film_slope(film, hb) == 1.0) {
+      film_slope[jj] = 1.0;
+      flipped = true;
+    }
   }
   return flipped;
+}
+
+// Whether the look-ahead's branches (take_step_branches, from an earlier
+// pass's step) hold for the final step `step` with film change
+// `film_change`: every row it released ends open (q + dq <= (h + dh) / H)
+// and every film it lifted ends above 1.5 h_b. Each pass solves the step
+// again, and the last step can undo what an earlier one promised; a
+// released node whose film then falls keeps h < 0 with its row on q, and
+// no step along such a direction lowered the residual (the 64^2 level of a
+// measured map stalled; docs/development-log.md, 2026-11-30).
+bool look_ahead_holds(const State& x, double hb, double H, const Eigen::VectorXd& step,
+                      const Eigen::VectorXd& film_change, const std::vector<char>& closed,
+                      const std::vector<double>& film_slope) {
+  const Eigen::Index ni = x.film.size();
+  for (Eigen::Index j = 0; j < ni; ++j) {
+    const auto jj = static_cast<std::size_t>(j);
+    const double film = x.film[j] + film_change[j];
+    const bool released = closed[jj] == 0 && x.film[j] / H < x.q[j];
+    if (released && x.q[j] + step[ni + j] > film / H) return false;
+    const bool lifted = film_slope[jj] > reynolds_film_slope(x.film[j], hb);
+    if (lifted && reynolds_film_slope(film, hb) < 1.0) return false;
+  }
+  return true;
 }
 
 // The contact rows' residuals on the branches `closed`: h / H (closed) or q.
@@ -309,7 +354,7 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
     state.total = state.fluid + state.contact;
     op.apply({state.total.data(), n}, {state.deformation.data(), n});
     state.film = state.offset + gap + state.deformation;
-    state.reynolds_film = state.film.max(hb);
+    state.reynolds_film = reynolds_film(state.film, hb);
     return state.film.allFinite();
   };
 
@@ -325,7 +370,7 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
     rows.start.resize(n + 1);
     rows.terms.reserve(16 * n);
   }
-  rows.open_film.resize(n);  // D_j, the floor's branches (both paths)
+  rows.film_slope.resize(n);  // D_j, the floor's slopes (both paths)
   Eigen::VectorXd film_change(ni);
   std::vector<char> branch_full(n, 1);
   std::vector<char> closed(n, 0);  // contact rows on the h branch
@@ -347,9 +392,10 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
           for (const LocalTerm& t : row_terms) {
             const auto node = static_cast<Eigen::Index>(t.node);
             column[node] += t.by_pressure / mass_scale;
-            if (t.by_film != 0.0 && rows.open_film[t.node] != 0) {
-              column.segment(ni, ni) += (t.by_film / mass_scale) * k_matrix.col(node);
-              by_offset += t.by_film;
+            const double by_film = t.by_film * rows.film_slope[t.node];
+            if (by_film != 0.0) {
+              column.segment(ni, ni) += (by_film / mass_scale) * k_matrix.col(node);
+              by_offset += by_film;
             }
           }
           if (load_control) column[h0] = by_offset / mass_scale;
@@ -455,12 +501,15 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
   newton.solve = [&](const detail::FilmMeasure& current, double forcing, bool tight) {
     detail::FilmNewtonSolve outcome;
     if (!tight) warm = false;
-    for (std::size_t j = 0; j < n; ++j) {
-      const auto jj = static_cast<Eigen::Index>(j);
-      branch_full[j] = x.s[jj] >= 0.0 ? 1 : 0;
-      closed[j] = x.film[jj] / H < x.q[jj] ? 1 : 0;
-      rows.open_film[j] = x.film[jj] > hb ? 1 : 0;
-    }
+    const auto branches_at_x = [&] {
+      for (std::size_t j = 0; j < n; ++j) {
+        const auto jj = static_cast<Eigen::Index>(j);
+        branch_full[j] = x.s[jj] >= 0.0 ? 1 : 0;
+        closed[j] = x.film[jj] / H < x.q[jj] ? 1 : 0;
+        rows.film_slope[j] = reynolds_film_slope(x.film[jj], hb);
+      }
+    };
+    branches_at_x();
     // On the GMRES path the rows do not depend on the branches: linearised
     // once, then one GMRES solve per branch pass; the dense path's J is
     // formed again per pass.
@@ -479,25 +528,43 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
       measure(x, residual, true);
       contact_residuals(x, H, closed, residual);
     };
-    for (int pass = 0; pass < detail::kBranchPasses; ++pass) {
-      outcome.solved = krylov ? detail::branch_consistent_step_with(gmres_solve, topology, x.s, step, branch_full)
-                              : detail::branch_consistent_step(linearise_rows, topology, x.s, jacobian_t, residual, lu,
-                                                               step, branch_full);
-      if (!outcome.solved || pass + 1 == detail::kBranchPasses || !step_branches) break;
+    const auto solve_step = [&] {
+      return krylov ? detail::branch_consistent_step_with(gmres_solve, topology, x.s, step, branch_full)
+                    : detail::branch_consistent_step(linearise_rows, topology, x.s, jacobian_t, residual, lu, step,
+                                                     branch_full);
+    };
+    // dh = K (dp_f + dp_c) + dh0 of the step.
+    const auto step_film_change = [&] {
       if (krylov) {
         krylov_solver->film_change(step, film_change);
-      } else {
-        // dh = K (dp_f + dp_c) + dh0 with the dense K.
-        pressure_change = P * step.segment(ni, ni);
-        for (std::size_t j = 0; j < n; ++j) {
-          const auto jj = static_cast<Eigen::Index>(j);
-          if (!topology.fixed(j) && branch_full[j] != 0) pressure_change[jj] += P * step[jj];
-        }
-        film_change.noalias() = k_matrix * pressure_change;
-        if (load_control) film_change.array() += step[h0];
+        return;
       }
-      if (!take_step_branches(x, hb, H, step, film_change, closed, rows.open_film)) break;
+      pressure_change = P * step.segment(ni, ni);
+      for (std::size_t j = 0; j < n; ++j) {
+        const auto jj = static_cast<Eigen::Index>(j);
+        if (!topology.fixed(j) && branch_full[j] != 0) pressure_change[jj] += P * step[jj];
+      }
+      film_change.noalias() = k_matrix * pressure_change;
+      if (load_control) film_change.array() += step[h0];
+    };
+    bool looked_ahead = false;
+    for (int pass = 0; pass < detail::kBranchPasses; ++pass) {
+      outcome.solved = solve_step();
+      if (!outcome.solved || pass + 1 == detail::kBranchPasses || !step_branches) break;
+      step_film_change();
+      if (!take_step_branches(x, hb, H, step, film_change, closed, rows.film_slope)) break;
+      looked_ahead = true;
       if (krylov) contact_residuals(x, H, closed, residual);
+    }
+    if (outcome.solved && looked_ahead && options.checked_step_branches) {
+      step_film_change();
+      if (!look_ahead_holds(x, hb, H, step, film_change, closed, rows.film_slope)) {
+        // The step on the current point's branches (a generalised Jacobian
+        // of the residual there).
+        branches_at_x();
+        if (krylov) contact_residuals(x, H, closed, residual);
+        outcome.solved = solve_step();
+      }
     }
     return outcome;
   };
@@ -561,7 +628,7 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
   result.deformation.resize(ni);
   op.apply({result.pressure.data(), n}, {result.deformation.data(), n});
   result.film = x.offset + gap + result.deformation;
-  const Eigen::ArrayXd reynolds_film = result.film.max(hb);
+  const Eigen::ArrayXd seen_film = reynolds_film(result.film, hb);
   result.fluid_load = result.fluid_pressure.sum() * area;
   result.contact_load = result.contact_pressure.sum() * area;
   result.load = result.fluid_load + result.contact_load;
@@ -575,7 +642,7 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
   result.cavitated_fraction =
       static_cast<double>(((result.fluid_fraction < 1.0) && (result.contact_pressure <= 0.0)).count()) /
       static_cast<double>(n);
-  result.relative_residual = elastic_film_residual(grid, conditions, laws, reynolds_film, result.fluid_pressure,
+  result.relative_residual = elastic_film_residual(grid, conditions, laws, seen_film, result.fluid_pressure,
                                                    result.fluid_fraction, options.couette_scheme);
   result.load_error = load_control ? std::abs(result.load - w) / w : 0.0;
   double complementarity = 0.0;

@@ -154,7 +154,28 @@ MixedFilm solve_sequenced(InfluenceOperator& op, const Eigen::ArrayXd& gap, cons
 
 MixedFilm solve_mixed_film(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
                            const LubricantLaws& laws, const MixedFilmOptions& options, const MixedFilm* start) {
-  return solve_sequenced(op, gap, conditions, laws, options, start, true);
+  const auto started = std::chrono::steady_clock::now();
+  MixedFilm film = solve_sequenced(op, gap, conditions, laws, options, start, true);
+  // A point contact that failed with the look-ahead's steps as they come:
+  // again with checked steps (MixedFilmOptions::checked_step_branches), its
+  // coarser grids too. Both solves' work is counted.
+  if (film.converged() || options.checked_step_branches || op.grid().dimension() != 2) return film;
+  MixedFilmOptions checked = options;
+  checked.checked_step_branches = true;
+  MixedFilm again = solve_sequenced(op, gap, conditions, laws, checked, start, true);
+  again.iterations += film.iterations;
+  again.krylov_iterations += film.krylov_iterations;
+  again.line_search_halvings += film.line_search_halvings;
+  again.coarse_iterations += film.coarse_iterations;
+  again.coarse_krylov_iterations += film.coarse_krylov_iterations;
+  again.max_krylov_iterations_per_step =
+      std::max(again.max_krylov_iterations_per_step, film.max_krylov_iterations_per_step);
+  if (!again.converged()) {
+    again.message =
+        fmt::format("{} (also with checked step branches; with the look-ahead's: {})", again.message, film.message);
+  }
+  again.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  return again;
 }
 
 }  // namespace halfspace::lubrication

@@ -9,9 +9,9 @@
 //   load row:      dA / w sum(dp_f + dp_c)
 //
 // with dp_f = P v_s on full nodes, dtheta = v_s on cavitated ones, dp_c =
-// P v_q and D_j = [h_j > h_b] (h_R = max(h, h_b) has no film derivative in
-// contact; on point contacts 1 also where the step lifts h_j above h_b:
-// mixed_film.cpp's take_step_branches), the same rows mixed_film.cpp's
+// P v_q and D_j = dh_R / dh (reynolds_film's slope: 0 in contact; on point
+// contacts 1 also where the step lifts h_j above 1.5 h_b: mixed_film.cpp's
+// take_step_branches), the same rows mixed_film.cpp's
 // dense path assembles. One operator product per product with J. The preconditioner is J with K
 // truncated to (2r + 1)^2 cells around each node: in the mass rows, as the
 // EHL film's preconditioner, the film's Couette difference A_h K is local
@@ -86,7 +86,7 @@ void MixedKrylovSolver::apply_jacobian(const Eigen::VectorXd& v, Eigen::VectorXd
   total_ = dp_ds_.cwiseProduct(v.head(ni)) + P * v.segment(ni, ni);
   op_.apply(std::span<const double>(total_.data(), n_), std::span<double>(deflection_.data(), n_));
   if (scales_.load_control) deflection_.array() += v[2 * ni];
-  const std::vector<char>& open_film = rows_->open_film;
+  const std::vector<double>& film_slope = rows_->film_slope;
   const std::vector<char>& closed = *closed_;
   for (std::size_t k = 0; k < n_; ++k) {
     const auto kk = static_cast<Eigen::Index>(k);
@@ -98,7 +98,7 @@ void MixedKrylovSolver::apply_jacobian(const Eigen::VectorXd& v, Eigen::VectorXd
         const LocalTerm& term = rows_->terms[t];
         const auto j = static_cast<Eigen::Index>(term.node);
         sum += (term.by_pressure * dp_ds_[j] + term.by_fraction * dtheta_ds_[j]) * v[j];
-        if (open_film[term.node] != 0) sum += term.by_film * deflection_[j];
+        sum += term.by_film * film_slope[term.node] * deflection_[j];
       }
       out[kk] = sum / scales_.mass;
     }
@@ -129,13 +129,13 @@ void MixedKrylovSolver::mass_row(std::size_t k, bool every_entry, FilmEntry&& fi
     return;
   }
   const double mass = scales_.mass;
-  const std::vector<char>& open_film = rows_->open_film;
+  const std::vector<double>& film_slope = rows_->film_slope;
   for (std::size_t t = rows_->start[k]; t < rows_->start[k + 1]; ++t) {
     const LocalTerm& term = rows_->terms[t];
     const auto j = static_cast<Eigen::Index>(term.node);
     row_scratch_.emplace_back(static_cast<int>(j),
                               (term.by_pressure * dp_ds_[j] + term.by_fraction * dtheta_ds_[j]) / mass);
-    const double by_film = open_film[term.node] != 0 ? term.by_film / mass : 0.0;
+    const double by_film = term.by_film * film_slope[term.node] / mass;
     krylov_.border_column[static_cast<Eigen::Index>(k)] += by_film;
     if (by_film == 0.0 && !every_entry) continue;
     local_.for_each(term.node, [&](std::size_t node, double k_value) { film_entry(node, by_film * k_value); });

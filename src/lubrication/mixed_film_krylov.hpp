@@ -34,12 +34,12 @@ using MixedKrylovSettings = FilmKrylovSettings;
 // The Newton system's state at one step: the mass rows' local derivatives
 // in CSR form (detail::linearise's terms, one row per node), which nodes are
 // on the full-film branch, which contact rows are closed (impose h = 0), and
-// which films are above the boundary film (their derivative reaches the
-// Reynolds equation).
+// how much of each node's film change reaches the Reynolds equation (the
+// slope of reynolds_film: 0 on the boundary film, 1 above 1.5 h_b).
 struct MixedRows {
   std::vector<std::size_t> start;  // n + 1 offsets into terms
   std::vector<LocalTerm> terms;
-  std::vector<char> open_film;  // h > h_b
+  std::vector<double> film_slope;  // dh_R / dh
 };
 
 // The system's scales: the unknowns are [s, q, h0] with p_f = P max(s, 0),

@@ -1,6 +1,6 @@
 // The friction of a mixed film (mixed_film.hpp): the film's shear
 // (film_shear: Couette with its limits, and Poiseuille) on cells without
-// contact, the film taken at least h_b as the Reynolds equation sees it,
+// contact, the film as the Reynolds equation sees it (reynolds_film),
 // and Coulomb's mu p_c along the sliding velocity on contact cells (no
 // sliding: no asperity friction).
 #include <cmath>
@@ -12,7 +12,7 @@ namespace halfspace::lubrication {
 
 void add_mixed_friction(const Grid& grid, const FlowConditions& conditions, const LubricantLaws& laws,
                         const MixedFrictionOptions& friction, double boundary_film, MixedFilm& film) {
-  const Eigen::ArrayXd seen_film = film.film.max(boundary_film);
+  const Eigen::ArrayXd seen_film = reynolds_film(film.film, boundary_film);
   const FilmShear fluid = film_shear(grid, conditions, laws, friction.shear, seen_film, film.fluid_pressure,
                                      film.fluid_fraction, &film.contact_pressure);
   const std::array<double, 2>& sliding = conditions.sliding_velocity;

@@ -110,7 +110,7 @@ RoughContact rough_point(std::size_t n, double amplitude) {
 // pressures with the operator's own product, the load, h >= 0, p_c >= 0
 // and p_c h = 0 (to 1e-9 of the film scale, the gap's range inside the
 // contact), the fluid's p–theta complementarity (p_f >= 0, theta in [0, 1],
-// p_f (1 - theta) = 0) and the flux-form mass balance on h_R = max(h, h_b).
+// p_f (1 - theta) = 0) and the flux-form mass balance on h_R = reynolds_film(h, h_b).
 void expect_solution_holds(FftInfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
                            const MixedFilmOptions& options, const MixedFilm& f) {
   const std::size_t n = op.grid().size();
@@ -135,8 +135,8 @@ void expect_solution_holds(FftInfluenceOperator& op, const Eigen::ArrayXd& gap, 
   }
   EXPECT_NEAR(total.sum() * op.grid().cell_area() / options.load, 1.0, 1e-8);
   EXPECT_TRUE(satisfies_complementarity(f.fluid_pressure, f.fluid_fraction));
-  EXPECT_LE(elastic_film_residual(op.grid(), conditions, laws(), film.max(options.boundary_film), f.fluid_pressure,
-                                  f.fluid_fraction),
+  EXPECT_LE(elastic_film_residual(op.grid(), conditions, laws(), reynolds_film(film, options.boundary_film),
+                                  f.fluid_pressure, f.fluid_fraction),
             1e-7);
   EXPECT_NEAR(f.contact_load_fraction, f.contact_pressure.sum() / total.sum(), 1e-12);
 }
@@ -206,6 +206,31 @@ TEST(MixedFilmKrylovTest, GmresPathEqualsTheDensePathOnASmallPointContact) {
   EXPECT_LE((gmres.fluid_pressure - dense.fluid_pressure).abs().maxCoeff(), 2e-4 * peak);
   EXPECT_NEAR(gmres.contact_load_fraction, dense.contact_load_fraction, 3e-5);
   EXPECT_EQ(gmres.contact_area_fraction, dense.contact_area_fraction);
+}
+
+// The checked step branches (MixedFilmOptions::checked_step_branches, the
+// second try where the look-ahead's steps fail) find the same film in the
+// mixed regime: the same pressure to the solver's tolerance, the same
+// contact cells.
+TEST(MixedFilmKrylovTest, CheckedStepBranchesFindTheSameFilm) {
+  const RoughContact point = rough_point(13, 0.2e-6);
+  FftInfluenceOperator op(point.grid, kEStar);
+  const double speed = 0.05;
+  const MixedFilmOptions look_ahead = options_for(kPointLoad, FilmLinearSolve::automatic);
+  MixedFilmOptions checked = look_ahead;
+  checked.checked_step_branches = true;
+  const MixedFilm faster = solve_mixed_film(op, point.gap, flow(4.0 * speed), laws(), look_ahead);
+  ASSERT_TRUE(faster.converged()) << faster.message;
+  const MixedFilm first = solve_mixed_film(op, point.gap, flow(speed), laws(), look_ahead, &faster);
+  const MixedFilm second = solve_mixed_film(op, point.gap, flow(speed), laws(), checked, &faster);
+  ASSERT_TRUE(first.converged()) << first.message;
+  ASSERT_TRUE(second.converged()) << second.message;
+  EXPECT_GT(second.contact_load_fraction, 0.05);
+  expect_solution_holds(op, point.gap, flow(speed), checked, second);
+  const double peak = first.max_pressure;
+  EXPECT_LE((second.pressure - first.pressure).abs().maxCoeff(), 1e-6 * peak);
+  EXPECT_NEAR(second.contact_load_fraction, first.contact_load_fraction, 3e-5);
+  EXPECT_EQ(second.contact_area_fraction, first.contact_area_fraction);
 }
 
 // A rough point contact over falling speeds (each from the last; a coarse

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -83,7 +84,7 @@ MixedFilmOptions mixed_options(double load = kLoad) {
 // The conditions checked apart from the solver: the film rebuilt from the
 // pressures with the operator's own product, the load, h >= 0 and p_c >= 0
 // and p_c h = 0, the fluid's p–theta complementarity, and the flux-form mass
-// balance on h_R = max(h, h_b).
+// balance on h_R = reynolds_film(h, h_b).
 void expect_solution_holds(FftInfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
                            const MixedFilmOptions& options, const MixedFilm& f) {
   const std::size_t n = op.grid().size();
@@ -104,10 +105,34 @@ void expect_solution_holds(FftInfluenceOperator& op, const Eigen::ArrayXd& gap, 
     EXPECT_NEAR(total.sum() * op.grid().cell_area() / options.load, 1.0, 1e-8);
   }
   EXPECT_TRUE(satisfies_complementarity(f.fluid_pressure, f.fluid_fraction));
-  EXPECT_LE(elastic_film_residual(op.grid(), conditions, laws(), film.max(options.boundary_film), f.fluid_pressure,
-                                  f.fluid_fraction),
+  EXPECT_LE(elastic_film_residual(op.grid(), conditions, laws(), reynolds_film(film, options.boundary_film),
+                                  f.fluid_pressure, f.fluid_fraction),
             10.0 * options.tolerance);
   EXPECT_NEAR(f.contact_load_fraction, f.contact_pressure.sum() / total.sum(), 1e-12);
+}
+
+// The film the Reynolds equation sees: the gap above 1.5 h_b, h_b below h_b / 2,
+// within h_b / 8 of max(h, h_b) and never below it, with a slope that is
+// the difference quotient's and continuous at both joins (no kink for the
+// Newton iteration to stall on).
+TEST(MixedFilmTest, ReynoldsFilmRoundsTheBoundaryFilmOff) {
+  const double hb = 2e-9;
+  EXPECT_EQ(reynolds_film(3.0 * hb, hb), 3.0 * hb);
+  EXPECT_EQ(reynolds_film(1.5 * hb, hb), 1.5 * hb);
+  EXPECT_EQ(reynolds_film(0.0, hb), hb);
+  EXPECT_EQ(reynolds_film(-hb, hb), hb);
+  EXPECT_DOUBLE_EQ(reynolds_film(hb, hb), 1.125 * hb);
+  const double step = 1e-6 * hb;
+  for (double h = 0.3 * hb; h <= 1.7 * hb; h += 0.01 * hb) {
+    const double r = reynolds_film(h, hb);
+    EXPECT_GE(r, std::max(h, hb) * (1.0 - 1e-15)) << h / hb;
+    EXPECT_LE(r - std::max(h, hb), 0.125 * hb * (1.0 + 1e-12)) << h / hb;
+    const double quotient = (reynolds_film(h + step, hb) - reynolds_film(h - step, hb)) / (2.0 * step);
+    EXPECT_NEAR(reynolds_film_slope(h, hb), quotient, 1e-6) << h / hb;
+  }
+  for (const double join : {0.5 * hb, 1.5 * hb}) {
+    EXPECT_NEAR(reynolds_film_slope(join - step, hb), reynolds_film_slope(join + step, hb), 2e-6) << join / hb;
+  }
 }
 
 // Thick film: no cell comes near closing, the contact pressure is 0 and the
@@ -178,16 +203,22 @@ TEST(MixedFilmTest, SlowFilmTendsToTheDryContact) {
 
 // Separation control at the offset load control found carries the same load
 // with the same pressures: from a film at another speed, and cold (from the
-// load-controlled film at the dry contact's load, continued in h0).
+// load-controlled film at the dry contact's load, continued in h0). Both
+// solved to a mass residual of 1e-11: the pressures of two films that meet
+// the default 1e-8 differ by up to 9e-8 of the peak (measured), as the
+// residual allows.
 TEST(MixedFilmTest, SeparationControlReproducesLoadControl) {
   const RoughLine line = rough_line(0.2e-6);
   FftInfluenceOperator op(line.grid, kEStar);
   const FlowConditions conditions = flow(0.0215);
-  const MixedFilm by_load = solve_mixed_film(op, line.gap, conditions, laws(), mixed_options());
+  MixedFilmOptions load_options = mixed_options();
+  load_options.tolerance = 1e-11;
+  const MixedFilm by_load = solve_mixed_film(op, line.gap, conditions, laws(), load_options);
   ASSERT_TRUE(by_load.converged()) << by_load.message;
   ASSERT_GT(by_load.contact_load_fraction, 0.1);
   ASSERT_LT(by_load.contact_load_fraction, 0.9);
   MixedFilmOptions options = mixed_options(0.0);
+  options.tolerance = 1e-11;
   options.offset = by_load.offset;
   const MixedFilm other_speed = solve_mixed_film(op, line.gap, flow(0.01), laws(), mixed_options());
   ASSERT_TRUE(other_speed.converged()) << other_speed.message;
@@ -196,7 +227,7 @@ TEST(MixedFilmTest, SeparationControlReproducesLoadControl) {
     const MixedFilm by_offset = solve_mixed_film(op, line.gap, conditions, laws(), options, start);
     ASSERT_TRUE(by_offset.converged()) << by_offset.message;
     expect_solution_holds(op, line.gap, conditions, options, by_offset);
-    // Measured: load within 3e-13, pressures within 3e-11 of the peak.
+    // Measured: pressures within 7e-12 of the peak.
     EXPECT_NEAR(by_offset.load / kLoad, 1.0, 1e-8);
     EXPECT_LE((by_offset.pressure - by_load.pressure).abs().maxCoeff(), 1e-8 * by_load.max_pressure);
   }

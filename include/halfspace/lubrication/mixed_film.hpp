@@ -5,12 +5,13 @@
 // one elastic body through the same influence operator K:
 //
 //   div( rho h_R^3 / (12 eta) grad p_f ) = div( U rho h_R theta ),
-//   h = h0 + g + K (p_f + p_c),   h_R = max(h, h_b),   sum(p_f + p_c) dA = w,
+//   h = h0 + g + K (p_f + p_c),   h_R = R(h; h_b),     sum(p_f + p_c) dA = w,
 //   p_f >= 0,  0 <= theta <= 1,  p_f (1 - theta) = 0        (cavitation, JFO)
 //   h >= 0,    p_c >= 0,         h p_c = 0                  (contact)
 //
 // h_b is a boundary film (a few molecular layers): the Reynolds equation sees
-// at least h_b, so its rows stay regular in contact cells (fluid pressure is
+// at least h_b (R, reynolds_film below: max(h, h_b) rounded off), so its
+// rows stay regular in contact cells (fluid pressure is
 // still defined there, and the Poiseuille flow through a contact patch is
 // that of h_b, negligible, as h_b^3) and the fluid's film is the elastic gap
 // wherever that is thicker. At high speeds (no cell below h_b) the equations
@@ -57,6 +58,19 @@ inline constexpr std::size_t kMixedSequencingNodes = 1024;
 // takes hours (a 128^2 rough point contact did not finish in 30 minutes;
 // docs/development-log.md) and the failure is reported instead.
 inline constexpr std::size_t kMaxMixedColdRestartNodes = 64 * 64;
+
+// The film the Reynolds equation sees, R(h; h_b): the gap h where h >= 1.5
+// h_b, the boundary film h_b where h <= h_b / 2, and between them the
+// quadratic h_b + (h - h_b / 2)^2 / (2 h_b) that joins the two with a
+// continuous slope. The kink of max(h, h_b) stalled the Newton iteration on
+// rough point contacts in the mixed regime: nodes around contact spots sit
+// at h = h_b, where the film's derivative jumped from 0 to 1 and no step
+// lowered the residual (docs/development-log.md, 2026-11-30).
+double reynolds_film(double film, double boundary_film);
+// dR/dh, in [0, 1].
+double reynolds_film_slope(double film, double boundary_film);
+// R on every cell of `film`.
+Eigen::ArrayXd reynolds_film(const Eigen::ArrayXd& film, double boundary_film);
 
 // How the film's shear and the asperities' friction are taken.
 struct MixedFrictionOptions {
@@ -108,6 +122,15 @@ struct MixedFilmOptions {
   // Grid sequencing on 2D grids of more than kMixedSequencingNodes nodes
   // with even cell counts, under load control without a start.
   bool grid_sequencing = true;
+  // The branches of a point contact's Newton step: the look-ahead's (a
+  // contact row the step releases opens, a film it lifts reaches Reynolds)
+  // kept only where they hold for the final step, else the current point's.
+  // Off, the look-ahead is taken as its passes leave it: faster where it
+  // converges (2-4x on the synthetic point contacts), but on a measured
+  // map's mixed regime it stalled where the checked steps converge
+  // (docs/development-log.md, 2026-11-30). A solve that fails with it off
+  // is solved again with it on (solve_mixed_film).
+  bool checked_step_branches = false;
   MixedFrictionOptions friction;
 
   // Throws InputError naming the option unless load >= 0 and finite, offset
