@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <utility>
 #include <vector>
 
 #include "halfspace/lubrication/cavitation_solver.hpp"
@@ -208,6 +209,26 @@ TEST(MixedFilmKrylovTest, GmresPathEqualsTheDensePathOnASmallPointContact) {
   EXPECT_EQ(gmres.contact_area_fraction, dense.contact_area_fraction);
 }
 
+namespace {
+
+// A speed of the 13^2 rough point contact in the mixed regime.
+constexpr double kMixedSpeed = 0.05;
+
+// The films of `first` and `second` at `speed`, both started from the film
+// of `first` at four times the speed (cold, the continuation to `speed`
+// costs some 150-300 Newton steps); empty where the faster one failed.
+std::pair<MixedFilm, MixedFilm> films_from_a_faster_one(FftInfluenceOperator& op, const RoughContact& point,
+                                                        double speed, const MixedFilmOptions& first,
+                                                        const MixedFilmOptions& second) {
+  const MixedFilm faster = solve_mixed_film(op, point.gap, flow(4.0 * speed), laws(), first);
+  EXPECT_TRUE(faster.converged()) << faster.message;
+  if (!faster.converged()) return {};
+  return {solve_mixed_film(op, point.gap, flow(speed), laws(), first, &faster),
+          solve_mixed_film(op, point.gap, flow(speed), laws(), second, &faster)};
+}
+
+}  // namespace
+
 // The checked step branches (MixedFilmOptions::checked_step_branches, the
 // second try where the look-ahead's steps fail) find the same film in the
 // mixed regime: the same pressure to the solver's tolerance, the same
@@ -215,18 +236,14 @@ TEST(MixedFilmKrylovTest, GmresPathEqualsTheDensePathOnASmallPointContact) {
 TEST(MixedFilmKrylovTest, CheckedStepBranchesFindTheSameFilm) {
   const RoughContact point = rough_point(13, 0.2e-6);
   FftInfluenceOperator op(point.grid, kEStar);
-  const double speed = 0.05;
   const MixedFilmOptions look_ahead = options_for(kPointLoad, FilmLinearSolve::automatic);
   MixedFilmOptions checked = look_ahead;
   checked.checked_step_branches = true;
-  const MixedFilm faster = solve_mixed_film(op, point.gap, flow(4.0 * speed), laws(), look_ahead);
-  ASSERT_TRUE(faster.converged()) << faster.message;
-  const MixedFilm first = solve_mixed_film(op, point.gap, flow(speed), laws(), look_ahead, &faster);
-  const MixedFilm second = solve_mixed_film(op, point.gap, flow(speed), laws(), checked, &faster);
+  const auto [first, second] = films_from_a_faster_one(op, point, kMixedSpeed, look_ahead, checked);
   ASSERT_TRUE(first.converged()) << first.message;
   ASSERT_TRUE(second.converged()) << second.message;
   EXPECT_GT(second.contact_load_fraction, 0.05);
-  expect_solution_holds(op, point.gap, flow(speed), checked, second);
+  expect_solution_holds(op, point.gap, flow(kMixedSpeed), checked, second);
   const double peak = first.max_pressure;
   EXPECT_LE((second.pressure - first.pressure).abs().maxCoeff(), 1e-6 * peak);
   EXPECT_NEAR(second.contact_load_fraction, first.contact_load_fraction, 3e-5);
@@ -365,17 +382,13 @@ TEST(MixedFilmKrylovTest, ShortGmresStepsStillDescendToTheFilm) {
   constexpr int kShortGmres = 3;
   const RoughContact point = rough_point(13, 0.2e-6);
   FftInfluenceOperator op(point.grid, kEStar);
-  const double speed = 0.05;
   const MixedFilmOptions full = options_for(kPointLoad, FilmLinearSolve::gmres);
   MixedFilmOptions short_gmres = full;
   short_gmres.krylov_max_iterations = kShortGmres;
-  const MixedFilm faster = solve_mixed_film(op, point.gap, flow(4.0 * speed), laws(), full);
-  ASSERT_TRUE(faster.converged()) << faster.message;
-  const MixedFilm expected = solve_mixed_film(op, point.gap, flow(speed), laws(), full, &faster);
-  const MixedFilm f = solve_mixed_film(op, point.gap, flow(speed), laws(), short_gmres, &faster);
+  const auto [expected, f] = films_from_a_faster_one(op, point, kMixedSpeed, full, short_gmres);
   ASSERT_TRUE(expected.converged()) << expected.message;
   ASSERT_TRUE(f.converged()) << f.message;
-  expect_solution_holds(op, point.gap, flow(speed), short_gmres, f);
+  expect_solution_holds(op, point.gap, flow(kMixedSpeed), short_gmres, f);
   const double peak = expected.max_pressure;
   EXPECT_LE((f.pressure - expected.pressure).abs().maxCoeff(), 1e-6 * peak);
   EXPECT_EQ(f.contact_area_fraction, expected.contact_area_fraction);
