@@ -354,7 +354,8 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
     state.total = state.fluid + state.contact;
     op.apply({state.total.data(), n}, {state.deformation.data(), n});
     state.film = state.offset + gap + state.deformation;
-    state.reynolds_film = reynolds_film(state.film, hb);
+    // In place: evaluate runs at every line-search trial.
+    state.reynolds_film = state.film.unaryExpr([hb](double h) { return reynolds_film(h, hb); });
     return state.film.allFinite();
   };
 

@@ -232,18 +232,22 @@ std::pair<MixedFilm, MixedFilm> films_from_a_faster_one(FftInfluenceOperator& op
 // The checked step branches (MixedFilmOptions::checked_step_branches, the
 // second try where the look-ahead's steps fail) find the same film in the
 // mixed regime: the same pressure to the solver's tolerance, the same
-// contact cells.
+// contact cells. At 0.01 m/s the look-ahead's branches do not hold for some
+// steps, so the two iterations differ (measured: 50 and 10 Newton steps;
+// at 0.05 m/s they were the same steps).
 TEST(MixedFilmKrylovTest, CheckedStepBranchesFindTheSameFilm) {
+  constexpr double kSpeed = 0.01;
   const RoughContact point = rough_point(13, 0.2e-6);
   FftInfluenceOperator op(point.grid, kEStar);
   const MixedFilmOptions look_ahead = options_for(kPointLoad, FilmLinearSolve::automatic);
   MixedFilmOptions checked = look_ahead;
   checked.checked_step_branches = true;
-  const auto [first, second] = films_from_a_faster_one(op, point, kMixedSpeed, look_ahead, checked);
+  const auto [first, second] = films_from_a_faster_one(op, point, kSpeed, look_ahead, checked);
   ASSERT_TRUE(first.converged()) << first.message;
   ASSERT_TRUE(second.converged()) << second.message;
+  EXPECT_NE(second.iterations, first.iterations);
   EXPECT_GT(second.contact_load_fraction, 0.05);
-  expect_solution_holds(op, point.gap, flow(kMixedSpeed), checked, second);
+  expect_solution_holds(op, point.gap, flow(kSpeed), checked, second);
   const double peak = first.max_pressure;
   EXPECT_LE((second.pressure - first.pressure).abs().maxCoeff(), 1e-6 * peak);
   EXPECT_NEAR(second.contact_load_fraction, first.contact_load_fraction, 3e-5);
