@@ -31,21 +31,27 @@ void ConjugateGradientMethod::step() {
   // The reduced gradient R g (pass A), and the projector onto the force's
   // constraint: sum over stick cells of v plus over slipping cells of
   // their tangent part vanishes; Pi v = v - R a with a = Gram^-1 (sum R v).
-  const auto [g_dot_z_old, gram_xx, gram_xy, gram_yy, sum_x, sum_y] = sums<6>(comm_, n_, [&](std::size_t i) {
-    const Cell c = cell(i);
-    if (!c.contact) return std::array<double, 6>{};
-    const Pair g = c.tangent(f_.gx[i], f_.gy[i]);
-    return std::array<double, 6>{g.x * f_.tx[i] + g.y * f_.ty[i],
-                                 c.slip ? 1.0 - c.nx * c.nx : 1.0,
-                                 c.slip ? -c.nx * c.ny : 0.0,
-                                 c.slip ? 1.0 - c.ny * c.ny : 1.0,
-                                 g.x,
-                                 g.y};
-  });
+  const auto [g_dot_z_old, gram_xx, gram_xy, gram_yy, sum_x, sum_y] =
+      contact_sums<6>(comm_, contact_, [&](std::size_t i) {
+        const Cell c = cell(i);
+        if (!c.contact) return std::array<double, 6>{};
+        const Pair g = c.tangent(f_.gx[i], f_.gy[i]);
+        return std::array<double, 6>{g.x * f_.tx[i] + g.y * f_.ty[i],
+                                     c.slip ? 1.0 - c.nx * c.nx : 1.0,
+                                     c.slip ? -c.nx * c.ny : 0.0,
+                                     c.slip ? 1.0 - c.ny * c.ny : 1.0,
+                                     g.x,
+                                     g.y};
+      });
   const Symmetric gram{gram_xx, gram_xy, gram_yy};
   const Pair shift_g = force ? solve_pseudo(gram, {sum_x, sum_y}) : Pair{};
-  // Pass B: Pi R g into t, then z = M t in place.
+  // Pass B: Pi R g into t (zero outside the contact, where the last M t
+  // left its values), then z = M t in place.
   for_each_index(n_, [&](std::size_t i) {
+    f_.tx[i] = 0.0;
+    f_.ty[i] = 0.0;
+  });
+  for_each_contact(contact_, [&](std::size_t i) {
     const Cell c = cell(i);
     const Pair g = projected_gradient(i, c, shift_g);
     f_.tx[i] = c.scale * g.x;
@@ -54,20 +60,13 @@ void ConjugateGradientMethod::step() {
   op_.apply_approximate_inverse({f_.tx, n_}, {f_.ty, n_}, {f_.tx, n_}, {f_.ty, n_});
   ++result_.preconditioner_applications;
   // Pass C: z = Pi R M Pi R g.
-  const auto [zx, zy] = sums<2>(comm_, n_, [&](std::size_t i) {
-    const Cell c = cell(i);
-    if (!c.contact) return std::array<double, 2>{};
-    const Pair z = c.restrict(f_.tx[i], f_.ty[i]);
+  const auto [zx, zy] = contact_sums<2>(comm_, contact_, [&](std::size_t i) {
+    const Pair z = cell(i).restrict(f_.tx[i], f_.ty[i]);
     return std::array<double, 2>{z.x, z.y};
   });
   const Pair shift_z = force ? solve_pseudo(gram, {zx, zy}) : Pair{};
-  const auto [rho, g_dot_d_old] = sums<2>(comm_, n_, [&](std::size_t i) {
+  const auto [rho, g_dot_d_old] = contact_sums<2>(comm_, contact_, [&](std::size_t i) {
     const Cell c = cell(i);
-    if (!c.contact) {
-      f_.tx[i] = 0.0;
-      f_.ty[i] = 0.0;
-      return std::array<double, 2>{};
-    }
     const Pair z = c.restrict(f_.tx[i], f_.ty[i]);
     const Pair a = c.tangent(shift_z.x, shift_z.y);
     f_.tx[i] = z.x - a.x;
@@ -96,14 +95,9 @@ void ConjugateGradientMethod::step() {
   // Pass D: d = z + beta R d_old, with the step's model along it but for
   // C d: the descent Pi R g . d and the circles' curvature term; each
   // cell's set is kept, since C d then overwrites g (one field pair less).
-  const auto [descent, bending] = sums<2>(comm_, n_, [&](std::size_t i) {
+  const auto [descent, bending] = contact_sums<2>(comm_, contact_, [&](std::size_t i) {
     const Cell c = cell(i);
-    f_.kind[i] = !c.contact ? kOutside : (c.slip ? kSlip : kStick);
-    if (!c.contact) {
-      f_.rx[i] = 0.0;
-      f_.ry[i] = 0.0;
-      return std::array<double, 2>{};
-    }
+    f_.kind[i] = c.slip ? kSlip : kStick;
     const Pair d = c.tangent(f_.rx[i], f_.ry[i]);
     double dx = f_.tx[i] + beta * d.x;
     double dy = f_.ty[i] + beta * d.y;
@@ -128,8 +122,8 @@ void ConjugateGradientMethod::step() {
   op_.apply({f_.rx, n_}, {f_.ry, n_}, {wx, n_}, {wy, n_});
   ++result_.operator_applications;
   // The step minimising the quadratic model along d (curvature included).
-  const auto [stiffness] =
-      sums<1>(comm_, n_, [&](std::size_t i) { return std::array<double, 1>{f_.rx[i] * wx[i] + f_.ry[i] * wy[i]}; });
+  const auto [stiffness] = contact_sums<1>(
+      comm_, contact_, [&](std::size_t i) { return std::array<double, 1>{f_.rx[i] * wx[i] + f_.ry[i] * wy[i]}; });
   const double model = stiffness + bending;
   if (!(descent > 0.0 && model > 0.0)) {
     // Not taken (the next evaluate() makes g again from u).
@@ -140,12 +134,10 @@ void ConjugateGradientMethod::step() {
   // Pass E: q -= alpha d, slipping cells back onto their circles, stick
   // cells over their discs clipped onto them; u -= alpha C d in the same
   // pass (replaced below by the exact product where that is due).
-  const auto [clipped_cells, stick_cells, sum_qx, sum_qy] = sums<4>(comm_, n_, [&](std::size_t i) {
+  const auto [clipped_cells, stick_cells, sum_qx, sum_qy] = contact_sums<4>(comm_, contact_, [&](std::size_t i) {
     f_.ux[i] -= alpha * wx[i];
     f_.uy[i] -= alpha * wy[i];
-    const std::uint8_t kind = f_.kind[i];
-    if (kind == kOutside) return std::array<double, 4>{};
-    const bool slip = kind == kSlip;
+    const bool slip = f_.kind[i] == kSlip;
     const double x = f_.qx[i] - alpha * f_.rx[i];
     const double y = f_.qy[i] - alpha * f_.ry[i];
     const double radius = radius_[i];

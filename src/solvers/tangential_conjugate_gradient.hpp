@@ -31,12 +31,18 @@ class ConjugateGradientMethod : IterationMethod {
   void allow_release(bool allowed) { release_ = allowed; }
 
   // The next step a steepest-descent one (no momentum), as after other
-  // steps moved q (projected gradients after a stall).
-  void restart() { momentum_ = false; }
+  // steps moved q (projected gradients after a stall, which leave their own
+  // values in r: the direction is zero outside the contact again).
+  void restart() {
+    momentum_ = false;
+    for_each_index(n_, [&](std::size_t i) {
+      f_.rx[i] = 0.0;
+      f_.ry[i] = 0.0;
+    });
+  }
 
  private:
   // Fields::kind's values.
-  static constexpr std::uint8_t kOutside = 0;
   static constexpr std::uint8_t kStick = 1;  // stick or released
   static constexpr std::uint8_t kSlip = 2;
 

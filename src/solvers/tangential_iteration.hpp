@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <utility>
 
 #include "halfspace/linalg/parallel.hpp"
@@ -58,6 +59,24 @@ inline double magnitude(double x, double y) {
   return std::sqrt(x * x + y * y);
 }
 
+// sums<K>, sums_and_range<K> and for_each_index over the cells of
+// `contact` (Problem::contact): term(i) and body(i) get the cell's index.
+template <std::size_t K, class Term>
+std::array<double, K> contact_sums(const linalg::Communicator& comm, std::span<const std::size_t> contact,
+                                   Term&& term) {
+  return sums<K>(comm, contact.size(), [&](std::size_t k) HALFSPACE_INLINE_TERM { return term(contact[k]); });
+}
+template <std::size_t K, class Term>
+linalg::SumsAndRange<K> contact_sums_and_range(const linalg::Communicator& comm, std::span<const std::size_t> contact,
+                                               Term&& term) {
+  return linalg::sums_and_range<K>(comm, contact.size(),
+                                   [&](std::size_t k) HALFSPACE_INLINE_TERM { return term(contact[k]); });
+}
+template <class Body>
+void for_each_contact(std::span<const std::size_t> contact, Body&& body) {
+  for_each_index(contact.size(), [&](std::size_t k) HALFSPACE_INLINE_TERM { body(contact[k]); });
+}
+
 inline bool at_limit(double qx, double qy, double radius) {
   return radius > 0.0 && magnitude(qx, qy) >= radius * (1.0 - kAtLimit);
 }
@@ -73,6 +92,12 @@ inline std::pair<double, double> clipped(double x, double y, double radius) {
 
 struct Problem {
   const double* radius = nullptr;  // mu p
+  // The cells with mu p > 0, ascending. The passes of every iteration run
+  // over these alone: a rough contact holds a few percent of the grid, and
+  // the passes over the whole grid took more than a quarter of a 1024^2
+  // step (docs/development-log.md). Outside them q and the direction r stay
+  // zero and g, t, u hold values nothing reads until the next exact product.
+  std::span<const std::size_t> contact;
   const TangentialState* previous = nullptr;
   // The previous displacement less the step's fixed part (the pressure's
   // coupling displacement; the previous one itself without coupling).
@@ -100,7 +125,8 @@ struct Fields {
   double* rx;
   double* ry;
   // Conjugate gradients only: each contact cell's set within a step, while
-  // gx, gy hold C d (tangential_conjugate_gradient.cpp).
+  // gx, gy hold C d (tangential_conjugate_gradient.cpp); unused outside
+  // the contact.
   std::uint8_t* kind;
 };
 
@@ -145,7 +171,8 @@ class TangentialIteration {
         f_(f),
         up_x_(problem.previous_x),
         up_y_(problem.previous_y),
-        radius_(problem.radius) {}
+        radius_(problem.radius),
+        contact_(problem.contact) {}
 
   // Step 0: the previous traction, clipped to the new discs and, under
   // force control, the force's missing part spread over the contact in
@@ -188,7 +215,7 @@ class TangentialIteration {
       // Given back by the stick cells alike (a shift of every cell would
       // move the slipping ones off their circles by a hair, and the
       // approach, measured over the stick cells, with them).
-      const auto [held_x, held_y, stick_cells] = sums<3>(comm_, n_, [&](std::size_t i) {
+      const auto [held_x, held_y, stick_cells] = contact_sums<3>(comm_, contact_, [&](std::size_t i) {
         if (!(radius_[i] > 0.0)) return std::array<double, 3>{};
         return std::array<double, 3>{f_.qx[i], f_.qy[i], at_limit(f_.qx[i], f_.qy[i], radius_[i]) ? 0.0 : 1.0};
       });
@@ -215,7 +242,7 @@ class TangentialIteration {
     for (int pass = 0; pass < kForceRestoringPasses && stick_cells > 0.0 && (ex != 0.0 || ey != 0.0); ++pass) {
       const double sx = ex / stick_cells;
       const double sy = ey / stick_cells;
-      const auto [clipped_cells, lost_x, lost_y] = sums<3>(comm_, n_, [&](std::size_t i) {
+      const auto [clipped_cells, lost_x, lost_y] = contact_sums<3>(comm_, contact_, [&](std::size_t i) {
         const double radius = radius_[i];
         if (!(radius > 0.0) || at_limit(f_.qx[i], f_.qy[i], radius)) return std::array<double, 3>{};
         const double x = f_.qx[i] + sx;
@@ -241,7 +268,7 @@ class TangentialIteration {
   // previous displacement is rounding (a step repeating the previous load
   // moves nothing, and the residual would compare rounding with rounding).
   void set_motion_floor() {
-    const auto previous = linalg::sums_and_range<1>(comm_, n_, [&](std::size_t i) {
+    const auto previous = contact_sums_and_range<1>(comm_, contact_, [&](std::size_t i) {
       return std::pair{std::array<double, 1>{}, radius_[i] > 0.0 ? magnitude(up_x_[i], up_y_[i]) : 0.0};
     });
     motion_floor_ = kResolvedMotion * std::max(previous.max, 0.0);
@@ -262,8 +289,15 @@ class TangentialIteration {
   bool finished(int iteration) {
     const std::optional<SolveStatus> status =
         stopping_status(residual_, options_.tolerance, iteration, options_.max_iterations, &result_.message, stop_);
-    if (status) result_.status = *status;
-    return status.has_value();
+    if (!status) return false;
+    result_.status = *status;
+    // Stopped short: u exact everywhere (the linear updates followed it in
+    // the contact alone) and the residual reported of that u.
+    if (updates_since_exact_ > 0) {
+      exact_displacement();
+      measure();
+    }
+    return true;
   }
 
   double approach_x() const { return delta_x_; }
@@ -276,7 +310,7 @@ class TangentialIteration {
   template <class Moved>
   std::pair<double, double> force_shift(Moved&& moved) const {
     auto mismatch = [&](double sx, double sy) {
-      return sums<5>(comm_, n_, [&](std::size_t i) {
+      return contact_sums<5>(comm_, contact_, [&](std::size_t i) {
         const double radius = radius_[i];
         if (!(radius > 0.0)) return std::array<double, 5>{};
         auto [x, y] = moved(i);
@@ -348,7 +382,7 @@ class TangentialIteration {
   // stuck above the tolerance (a rough steel contact on a rigid body at
   // mu = 0.05, pressed: 5.7e-3 for 10000 iterations).
   void full_slip_approach() {
-    const auto [xx, xy, yy, across_x, across_y] = sums<5>(comm_, n_, [&](std::size_t i) {
+    const auto [xx, xy, yy, across_x, across_y] = contact_sums<5>(comm_, contact_, [&](std::size_t i) {
       const double radius = radius_[i];
       if (!(radius > 0.0)) return std::array<double, 5>{};
       const double m = magnitude(f_.qx[i], f_.qy[i]);
@@ -366,13 +400,14 @@ class TangentialIteration {
 
   void measure() {
     if (problem_.force_controlled) {
-      const auto [stick_x, stick_y, stick_cells, contact_x, contact_y] = sums<5>(comm_, n_, [&](std::size_t i) {
-        if (!(radius_[i] > 0.0)) return std::array<double, 5>{};
-        const double dx = f_.ux[i] - up_x_[i];
-        const double dy = f_.uy[i] - up_y_[i];
-        const double stick = at_limit(f_.qx[i], f_.qy[i], radius_[i]) ? 0.0 : 1.0;
-        return std::array<double, 5>{stick * dx, stick * dy, stick, dx, dy};
-      });
+      const auto [stick_x, stick_y, stick_cells, contact_x, contact_y] =
+          contact_sums<5>(comm_, contact_, [&](std::size_t i) {
+            if (!(radius_[i] > 0.0)) return std::array<double, 5>{};
+            const double dx = f_.ux[i] - up_x_[i];
+            const double dy = f_.uy[i] - up_y_[i];
+            const double stick = at_limit(f_.qx[i], f_.qy[i], radius_[i]) ? 0.0 : 1.0;
+            return std::array<double, 5>{stick * dx, stick * dy, stick, dx, dy};
+          });
       const double cells = stick_cells > 0.0 ? stick_cells : problem_.contact_cells;
       delta_x_ = (stick_cells > 0.0 ? stick_x : contact_x) / cells;
       delta_y_ = (stick_cells > 0.0 ? stick_y : contact_y) / cells;
@@ -383,7 +418,7 @@ class TangentialIteration {
     }
     const double delta_x = delta_x_;
     const double delta_y = delta_y_;
-    const auto settled = linalg::sums_and_range<2>(comm_, n_, [&](std::size_t i) {
+    const auto settled = contact_sums_and_range<2>(comm_, contact_, [&](std::size_t i) {
       const double radius = radius_[i];
       if (!(radius > 0.0)) {
         f_.gx[i] = 0.0;
@@ -418,6 +453,7 @@ class TangentialIteration {
   const double* up_x_;  // the previous step's u
   const double* up_y_;
   const double* radius_;
+  const std::span<const std::size_t> contact_;
 
   int updates_since_exact_ = 0;
   double delta_x_ = 0.0;  // the approach's increment over the step
@@ -443,6 +479,7 @@ class IterationMethod {
         up_x_(it.up_x_),
         up_y_(it.up_y_),
         radius_(it.radius_),
+        contact_(it.contact_),
         updates_since_exact_(it.updates_since_exact_) {}
 
   TangentialIteration& it_;
@@ -454,8 +491,9 @@ class IterationMethod {
   Fields f_;
   const double* up_x_;  // the previous step's u (less the fixed part)
   const double* up_y_;
-  const double* radius_;      // mu p
-  int& updates_since_exact_;  // the iteration's: products since u = C q was exact
+  const double* radius_;                        // mu p
+  const std::span<const std::size_t> contact_;  // the cells with mu p > 0
+  int& updates_since_exact_;                    // the iteration's: products since u = C q was exact
 };
 
 }  // namespace halfspace::solvers::tangential

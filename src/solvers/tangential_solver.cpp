@@ -184,10 +184,15 @@ TangentialResult TangentialSolver::solve(std::span<const double> pressure, const
   });
   if (bad > 0.0) throw InputError("pressure holds a negative or non-finite value: friction needs a contact pressure");
   for_each_index(n, [&](std::size_t i) { radius_[static_cast<Eigen::Index>(i)] = mu * pressure[i]; });
+  contact_.clear();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (radius_[static_cast<Eigen::Index>(i)] > 0.0) contact_.push_back(i);
+  }
 
   const double area = grid.cell_area();
   Problem problem;
   problem.radius = radius_.data();
+  problem.contact = contact_;
   problem.previous = &previous;
   const bool fixed = !fixed_x.empty() || !fixed_y.empty();
   if (fixed) {

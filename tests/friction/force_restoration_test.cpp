@@ -47,6 +47,7 @@ struct Contact {
   std::vector<double> work = std::vector<double>(8 * kCells, 0.0);
   std::vector<std::uint8_t> kind = std::vector<std::uint8_t>(kCells, 0);
   std::vector<bool> slipping = std::vector<bool>(kCells, false);
+  std::vector<std::size_t> contact;  // the cells with mu p > 0
   double stick_cells = 0.0;
 
   Contact() {
@@ -55,6 +56,7 @@ struct Contact {
         radius[i] = 0.0;
         continue;
       }
+      contact.push_back(i);
       const double angle = 0.7 * static_cast<double>(i);
       if (i % 2 == 0) {
         slipping[i] = true;
@@ -94,6 +96,7 @@ bool restore_and_check(Contact& c, double missing_x, double missing_y, bool slip
   const auto [held_x, held_y] = c.force();
   Problem problem;
   problem.radius = c.radius.data();
+  problem.contact = c.contact;
   problem.force_controlled = true;
   problem.target_x = held_x + missing_x;
   problem.target_y = held_y + missing_y;

@@ -149,6 +149,9 @@ class TangentialSolver {
   TangentialOperator& op_;
   TangentialOptions options_;
   Eigen::ArrayXd radius_;  // mu p
+  // The cells in contact (mu p > 0), ascending: the iteration's passes run
+  // over these alone (tangential_iteration.hpp, Problem::contact).
+  std::vector<std::size_t> contact_;
   // The slip increment (and, within a conjugate-gradient step, C times the
   // direction), then workspace: the methods' search direction and previous
   // iterate or preconditioned gradient.
