@@ -140,6 +140,11 @@ BasicRealFft<Real>::BasicRealFft(BasicRealFft&& other) noexcept
       rows_forward_{std::exchange(other.rows_forward_[0], nullptr), std::exchange(other.rows_forward_[1], nullptr)},
       rows_backward_{std::exchange(other.rows_backward_[0], nullptr), std::exchange(other.rows_backward_[1], nullptr)},
       row_buffers_(std::exchange(other.row_buffers_, nullptr)),
+      columns_forward_{std::exchange(other.columns_forward_[0], nullptr),
+                       std::exchange(other.columns_forward_[1], nullptr)},
+      columns_backward_{std::exchange(other.columns_backward_[0], nullptr),
+                        std::exchange(other.columns_backward_[1], nullptr)},
+      columns_aligned_(std::exchange(other.columns_aligned_, false)),
       row_buffer_count_(std::exchange(other.row_buffer_count_, 0)),
       owns_buffers_(std::exchange(other.owns_buffers_, true)),
       lazy_input_(std::exchange(other.lazy_input_, false)),
@@ -161,7 +166,10 @@ BasicRealFft<Real>& BasicRealFft<Real>::operator=(BasicRealFft&& other) noexcept
     for (int k = 0; k < 2; ++k) {
       rows_forward_[k] = std::exchange(other.rows_forward_[k], nullptr);
       rows_backward_[k] = std::exchange(other.rows_backward_[k], nullptr);
+      columns_forward_[k] = std::exchange(other.columns_forward_[k], nullptr);
+      columns_backward_[k] = std::exchange(other.columns_backward_[k], nullptr);
     }
+    columns_aligned_ = std::exchange(other.columns_aligned_, false);
     row_buffers_ = std::exchange(other.row_buffers_, nullptr);
     row_buffer_count_ = std::exchange(other.row_buffer_count_, 0);
     owns_buffers_ = std::exchange(other.owns_buffers_, true);
@@ -254,6 +262,18 @@ bool BasicRealFft<Real>::make_transposed_plans(unsigned flags) {
                                                nullptr, 1, cols, flags | FFTW_DESTROY_INPUT);
     if (rows_forward_[k] == nullptr || rows_backward_[k] == nullptr) return false;
   }
+  // The columns' plans for transform_columns, on one thread each.
+  const int column_counts[2] = {h >= static_cast<int>(kColumnBlock) ? static_cast<int>(kColumnBlock) : 0, 1};
+  for (int k = 0; k < 2; ++k) {
+    if (column_counts[k] == 0) continue;
+    columns_forward_[k] = F<Real>::plan_many_c2c(1, &rows, column_counts[k], as_fftw(spectrum_), nullptr, 1, rows,
+                                                 as_fftw(spectrum_), nullptr, 1, rows, FFTW_FORWARD, flags);
+    columns_backward_[k] = F<Real>::plan_many_c2c(1, &rows, column_counts[k], as_fftw(spectrum_), nullptr, 1, rows,
+                                                  as_fftw(spectrum_), nullptr, 1, rows, FFTW_BACKWARD, flags);
+    if (columns_forward_[k] == nullptr || columns_backward_[k] == nullptr) return false;
+  }
+  columns_aligned_ = F<Real>::alignment_of(reinterpret_cast<Real*>(spectrum_ + rows_)) ==
+                     F<Real>::alignment_of(reinterpret_cast<Real*>(spectrum_));
   F<Real>::plan_with_nthreads(threads());
   forward_plan_ = F<Real>::plan_many_c2c(1, &rows, h, as_fftw(spectrum_), nullptr, 1, rows, as_fftw(spectrum_), nullptr,
                                          1, rows, FFTW_FORWARD, flags);
@@ -269,6 +289,12 @@ std::complex<Real>* BasicRealFft<Real>::row_buffer(int thread) const {
 
 template <class Real>
 void BasicRealFft<Real>::transposed_forward(const Real* in) {
+  transposed_forward_rows(in);
+  F<Real>::execute_c2c(forward_plan_, as_fftw(spectrum_), as_fftw(spectrum_));
+}
+
+template <class Real>
+void BasicRealFft<Real>::transposed_forward_rows(const Real* in) {
   const std::size_t h = spectrum_cols();
   // Each block's rows into the thread's buffer, then scattered down the
   // kx blocks: count consecutive entries of each.
@@ -282,12 +308,16 @@ void BasicRealFft<Real>::transposed_forward(const Real* in) {
       for (std::size_t r = 0; r < count; ++r) entries[r] = buffer[r * h + c];
     }
   });
-  F<Real>::execute_c2c(forward_plan_, as_fftw(spectrum_), as_fftw(spectrum_));
 }
 
 template <class Real>
 void BasicRealFft<Real>::transposed_backward(Real* out) {
   F<Real>::execute_c2c(backward_plan_, as_fftw(spectrum_), as_fftw(spectrum_));
+  transposed_backward_rows(out);
+}
+
+template <class Real>
+void BasicRealFft<Real>::transposed_backward_rows(Real* out) {
   const std::size_t h = spectrum_cols();
   detail::for_each_row_block(rows_, row_buffer_count_, [&](int thread, std::size_t first, std::size_t count) {
     std::complex<Real>* const buffer = row_buffer(thread);
@@ -297,6 +327,29 @@ void BasicRealFft<Real>::transposed_backward(Real* out) {
     }
     F<Real>::execute_c2r(rows_backward_[count == kBlockRows ? 0 : 1], as_fftw(buffer), out + first * cols_);
   });
+}
+
+template <class Real>
+void BasicRealFft<Real>::forward_rows_from(std::span<const Real> values) {
+  assert(columns_in_parts() && takes_input(values));
+  transposed_forward_rows(values.data());
+}
+
+template <class Real>
+void BasicRealFft<Real>::transform_columns(std::size_t first, std::size_t count, bool forward) {
+  assert(columns_in_parts() && first + count <= spectrum_cols());
+  Plan const* plans = forward ? columns_forward_ : columns_backward_;
+  std::complex<Real>* column = spectrum_ + first * rows_;
+  for (; count >= kColumnBlock && plans[0] != nullptr; count -= kColumnBlock, column += kColumnBlock * rows_) {
+    F<Real>::execute_c2c(plans[0], as_fftw(column), as_fftw(column));
+  }
+  for (; count > 0; --count, column += rows_) F<Real>::execute_c2c(plans[1], as_fftw(column), as_fftw(column));
+}
+
+template <class Real>
+void BasicRealFft<Real>::backward_rows_into(std::span<Real> values) {
+  assert(columns_in_parts() && takes_output(values));
+  transposed_backward_rows(values.data());
 }
 
 template <class Real>
@@ -340,6 +393,16 @@ void BasicRealFft<Real>::backward() {
 }
 
 template <class Real>
+bool BasicRealFft<Real>::takes_input(std::span<const Real> values) const {
+  return values.size() == real_size() && F<Real>::alignment_of(const_cast<Real*>(values.data())) == input_alignment_;
+}
+
+template <class Real>
+bool BasicRealFft<Real>::takes_output(std::span<const Real> values) const {
+  return values.size() == real_size() && F<Real>::alignment_of(const_cast<Real*>(values.data())) == output_alignment_;
+}
+
+template <class Real>
 bool BasicRealFft<Real>::forward_from(std::span<const Real> values) {
   assert(forward_plan_ != nullptr);
   // The plan was made with FFTW_PRESERVE_INPUT, so the const_cast is never written through.
@@ -374,8 +437,9 @@ void BasicRealFft<Real>::release() noexcept {
     return;
   }
   const std::lock_guard<std::mutex> lock(detail::fftw_planner_mutex());
-  for (Plan* plan : {&forward_plan_, &backward_plan_, &rows_forward_[0], &rows_forward_[1], &rows_backward_[0],
-                     &rows_backward_[1]}) {
+  for (Plan* plan :
+       {&forward_plan_, &backward_plan_, &rows_forward_[0], &rows_forward_[1], &rows_backward_[0], &rows_backward_[1],
+        &columns_forward_[0], &columns_forward_[1], &columns_backward_[0], &columns_backward_[1]}) {
     if (*plan != nullptr) F<Real>::destroy_plan(*plan);
     *plan = nullptr;
   }

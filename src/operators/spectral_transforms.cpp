@@ -4,6 +4,7 @@
 // on the entries held here, and its product.
 #include "halfspace/operators/spectral_transforms.hpp"
 
+#include <algorithm>
 #include <complex>
 #include <stdexcept>
 #include <utility>
@@ -106,6 +107,33 @@ class SerialSpectralTransforms final : public SpectralTransforms {
 
   std::span<std::complex<double>> workspace() override { return spectrum(0); }
 
+  void apply_pair(std::span<const double> in_0, std::span<const double> in_1, std::span<double> out_0,
+                  std::span<double> out_1, const BlockMultiply& multiply) override {
+    if (padded_[0] || !own_[1] || !own_[0]->columns_in_parts() || !own_[1]->columns_in_parts() ||
+        !own_[0]->takes_input(in_0) || !own_[1]->takes_input(in_1) || !own_[0]->takes_output(out_0) ||
+        !own_[1]->takes_output(out_1)) {
+      SpectralTransforms::apply_pair(in_0, in_1, out_0, out_1, multiply);
+      return;
+    }
+    RealFft& a = *own_[0];
+    RealFft& b = *own_[1];
+    a.forward_rows_from(in_0);
+    b.forward_rows_from(in_1);
+    const std::size_t columns = a.spectrum_cols();
+    constexpr std::size_t kGroup = RealFft::kColumnBlock;
+    linalg::for_each_row((columns + kGroup - 1) / kGroup, kGroup * a.rows(), [&](std::size_t group) {
+      const std::size_t first = group * kGroup;
+      const std::size_t count = std::min(kGroup, columns - first);
+      a.transform_columns(first, count, true);
+      b.transform_columns(first, count, true);
+      multiply(first, count);
+      a.transform_columns(first, count, false);
+      b.transform_columns(first, count, false);
+    });
+    a.backward_rows_into(out_0);
+    b.backward_rows_into(out_1);
+  }
+
   // Straight into the padded transform's rows, a block at a time.
   std::span<const std::complex<double>> transform_wraparound_rows(const WraparoundRows& fill) override {
     PaddedRealFft& fft = *padded_[0];
@@ -150,6 +178,15 @@ std::span<const std::complex<double>> SpectralTransforms::transform_wraparound(
       for (std::size_t c = 0; c < values.size(); ++c) values[c] = value(first + i, c);
     });
   });
+}
+
+void SpectralTransforms::apply_pair(std::span<const double> in_0, std::span<const double> in_1, std::span<double> out_0,
+                                    std::span<double> out_1, const BlockMultiply& multiply) {
+  forward(0, in_0);
+  forward(1, in_1);
+  linalg::for_each_row(spectrum_blocks(), spectrum_length(), [&](std::size_t block) { multiply(block, 1); });
+  backward(0, out_0);
+  backward(1, out_1);
 }
 
 std::unique_ptr<SpectralTransforms> make_serial_transforms(const Grid& grid, FftPlanning planning,

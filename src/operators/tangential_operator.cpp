@@ -84,6 +84,31 @@ std::string coated_free_grid_refusal(const Grid& grid, const ElasticPair& pair) 
 
 namespace {
 
+// A spectrum's entries as (real, imaginary) pairs of doubles.
+double* as_reals(std::span<std::complex<double>> spectrum) {
+  return reinterpret_cast<double*>(spectrum.data());
+}
+
+// (x, y) = S (x, y) for the symmetric 2x2 block S = {xx, xy, yy} on one
+// mode's complex entries, as pairs of doubles: through std::complex the
+// compiler built each product on the stack and the loads stalled on the
+// stores (most of the multiplication's time, docs/development-log.md).
+struct Block {
+  double xx;
+  double xy;
+  double yy;
+};
+inline void multiply_block(const Block& s, double* x, double* y) {
+  const double xr = x[0];
+  const double xi = x[1];
+  const double yr = y[0];
+  const double yi = y[1];
+  x[0] = s.xx * xr + s.xy * yr;
+  x[1] = s.xx * xi + s.xy * yi;
+  y[0] = s.xy * xr + s.yy * yr;
+  y[1] = s.xy * xi + s.yy * yi;
+}
+
 void check_body(const Grid& grid, const ElasticPair& pair) {
   if (const std::string refusal = coated_free_grid_refusal(grid, pair); !refusal.empty()) throw InputError(refusal);
 }
@@ -410,22 +435,19 @@ void TangentialOperator::apply(std::span<const double> traction_x, std::span<con
   assert(displacement_x.size() == local_size() && displacement_y.size() == local_size());
   // Both inputs are read into the spectra before either output is written,
   // so in place is safe.
-  const std::span<std::complex<double>> sx = m.transforms->forward(0, traction_x);
-  const std::span<std::complex<double>> sy = m.transforms->forward(1, traction_y);
+  double* const sx = as_reals(m.transforms->spectrum(0));
+  double* const sy = as_reals(m.transforms->spectrum(1));
   const double* xx = m.xx.stored().data();
   const double* yy = m.yy.stored().data();
   const double* xy = m.xy.stored().data();
-  linalg::for_each_row(m.spectrum_rows, m.spectrum_cols, [&](std::size_t r) {
-    m.xx.for_each_entry(r, [&](std::size_t k, std::size_t j, double sign) {
-      const std::complex<double> tx = sx[k];
-      const std::complex<double> ty = sy[k];
-      const double c_xy = sign * xy[j];
-      sx[k] = xx[j] * tx + c_xy * ty;
-      sy[k] = c_xy * tx + yy[j] * ty;
-    });
-  });
-  m.transforms->backward(0, displacement_x);
-  m.transforms->backward(1, displacement_y);
+  m.transforms->apply_pair(traction_x, traction_y, displacement_x, displacement_y,
+                           [&](std::size_t first, std::size_t count) {
+                             for (std::size_t r = first; r < first + count; ++r) {
+                               m.xx.for_each_entry(r, [&](std::size_t k, std::size_t j, double sign) {
+                                 multiply_block({xx[j], sign * xy[j], yy[j]}, sx + 2 * k, sy + 2 * k);
+                               });
+                             }
+                           });
 }
 
 // The inverse of the symmetric 2x2 block S = m I + D (D traceless, D^2 =
@@ -437,8 +459,8 @@ void TangentialOperator::apply_approximate_inverse(std::span<const double> displ
   Impl& m = *impl_;
   assert(displacement_x.size() == local_size() && displacement_y.size() == local_size());
   assert(traction_x.size() == local_size() && traction_y.size() == local_size());
-  const std::span<std::complex<double>> sx = m.transforms->forward(0, displacement_x);
-  const std::span<std::complex<double>> sy = m.transforms->forward(1, displacement_y);
+  double* const sx = as_reals(m.transforms->spectrum(0));
+  double* const sy = as_reals(m.transforms->spectrum(1));
   const double* xx = m.xx.stored().data();
   const double* yy = m.yy.stored().data();
   const double* xy = m.xy.stored().data();
@@ -446,8 +468,8 @@ void TangentialOperator::apply_approximate_inverse(std::span<const double> displ
   const double floor = 1e-9 * largest;
   const double scale = m.inverse_scale;
   auto inverse = [&](double eigenvalue) { return scale / (eigenvalue > floor ? eigenvalue : largest); };
-  linalg::for_each_row(m.spectrum_rows, m.spectrum_cols, [&](std::size_t r) {
-    // On the stored entry j: ixy, odd in xy, takes the mirrored sign.
+  // On the stored entry j: ixy, odd in xy, takes the mirrored sign.
+  const auto invert_spectrum_block = [&](std::size_t r) {
     m.xx.for_each_entry(r, [&](std::size_t k, std::size_t j, double sign) {
       double ixx = 0.0;
       double iyy = 0.0;
@@ -476,15 +498,13 @@ void TangentialOperator::apply_approximate_inverse(std::span<const double> displ
         iyy = along - across * half_difference;
         ixy = across * xy[j];
       }
-      ixy *= sign;
-      const std::complex<double> ux = sx[k];
-      const std::complex<double> uy = sy[k];
-      sx[k] = ixx * ux + ixy * uy;
-      sy[k] = ixy * ux + iyy * uy;
+      multiply_block({ixx, sign * ixy, iyy}, sx + 2 * k, sy + 2 * k);
     });
-  });
-  m.transforms->backward(0, traction_x);
-  m.transforms->backward(1, traction_y);
+  };
+  m.transforms->apply_pair(displacement_x, displacement_y, traction_x, traction_y,
+                           [&](std::size_t first, std::size_t count) {
+                             for (std::size_t r = first; r < first + count; ++r) invert_spectrum_block(r);
+                           });
 }
 
 }  // namespace halfspace::operators

@@ -285,6 +285,43 @@ TEST(RealFftTest, TransposedLayoutMatchesDirectDftAndRoundTrips) {
   set_threads(threads_before);
 }
 
+// The transposed transform in parts (rows, columns a few at a time in any
+// order, rows back) gives the whole transforms' spectrum and inverse, with
+// column counts below, at and above the planned block and a remainder.
+TEST(RealFftTest, ColumnsInPartsGiveTheWholeTransforms) {
+  for (const auto& [rows, cols] :
+       std::vector<std::pair<std::size_t, std::size_t>>{{2, 3}, {6, 8}, {17, 30}, {32, 40}, {9, 64}}) {
+    const std::size_t n = rows * cols;
+    RealFft whole(rows, cols, FftPlanning::estimate, FftOutput::overwrite_input, FftLayout::transposed);
+    RealFft parts(rows, cols, FftPlanning::estimate, FftOutput::overwrite_input, FftLayout::transposed);
+    ASSERT_TRUE(parts.columns_in_parts()) << rows << "x" << cols;
+    double* values = fftw_alloc_real(n);
+    const std::vector<double> x = random_values(n, static_cast<unsigned>(n));
+    std::copy(x.begin(), x.end(), values);
+    ASSERT_TRUE(parts.takes_input({values, n}));
+    ASSERT_TRUE(parts.takes_output({values, n}));
+    ASSERT_FALSE(parts.takes_input({values, n - 1}));
+    ASSERT_TRUE(whole.forward_from({values, n}));
+    parts.forward_rows_from({values, n});
+    // From the last columns back, in groups of 3 (not the planned block) and
+    // then the rest at once.
+    const std::size_t columns = parts.spectrum_cols();
+    std::size_t left = columns;
+    for (; left > 3; left -= 3) parts.transform_columns(left - 3, 3, true);
+    parts.transform_columns(0, left, true);
+    for (std::size_t k = 0; k < parts.spectrum_size(); ++k) {
+      ASSERT_LE(std::abs(parts.spectrum()[k] - whole.spectrum()[k]), 1e-14 * static_cast<double>(n))
+          << rows << "x" << cols << " entry " << k;
+    }
+    parts.transform_columns(0, columns, false);
+    parts.backward_rows_into({values, n});
+    for (std::size_t i = 0; i < n; ++i) {
+      ASSERT_NEAR(values[i] / static_cast<double>(n), x[i], 1e-14) << rows << "x" << cols << " at " << i;
+    }
+    fftw_free(values);
+  }
+}
+
 TEST(RealFftTest, RejectsEmptySize) {
   EXPECT_THROW(RealFft(0, FftPlanning::estimate), InputError);
 }

@@ -118,6 +118,26 @@ class BasicRealFft {
   // `values` must not overlap spectrum().
   bool forward_from(std::span<const Real> values);
   bool backward_into(std::span<Real> values);
+  // Whether forward_from / backward_into take `values` directly.
+  bool takes_input(std::span<const Real> values) const;
+  bool takes_output(std::span<const Real> values) const;
+
+  // The transposed layout's transforms in parts, so that a caller can work
+  // on a few kx columns while they are in cache between the two ways
+  // (SpectralTransforms::apply_pair): forward_rows_from(values) leaves the
+  // rows' DFTs in the spectrum, its columns not yet transformed;
+  // transform_columns(first, count, forward) takes the columns [first,
+  // first + count) one way on the calling thread (threads may take disjoint
+  // columns at once); backward_rows_into(values) takes the rows back once
+  // every column went back. Together the same transforms as forward_from
+  // and backward_into, whose conditions on `values` (takes_input,
+  // takes_output) they need, as they need columns_in_parts().
+  bool columns_in_parts() const { return transposed_ && columns_aligned_; }
+  void forward_rows_from(std::span<const Real> values);
+  void transform_columns(std::size_t first, std::size_t count, bool forward);
+  void backward_rows_into(std::span<Real> values);
+  // The columns transform_columns is planned to take at once.
+  static constexpr std::size_t kColumnBlock = 8;
 
  private:
   using Plan = typename FftwPlanOf<Real>::type;
@@ -134,6 +154,9 @@ class BasicRealFft {
   // DFT(spectrum), without 1/N.
   void transposed_forward(const Real* in);
   void transposed_backward(Real* out);
+  // Their row parts (the columns left to the caller).
+  void transposed_forward_rows(const Real* in);
+  void transposed_backward_rows(Real* out);
   // A thread's block buffer (transposed).
   std::complex<Real>* row_buffer(int thread) const;
   // input_, made (zeroed, FFTW-aligned) if it was left to first use.
@@ -150,6 +173,11 @@ class BasicRealFft {
   Plan rows_forward_[2] = {nullptr, nullptr};  // transposed: a full block of rows, and the rows left over
   Plan rows_backward_[2] = {nullptr, nullptr};
   std::complex<Real>* row_buffers_ = nullptr;  // transposed: a block's spectrum rows per thread
+  // transposed: kColumnBlock kx columns and a single one, on one thread
+  // (transform_columns); every column starts at the spectrum's alignment.
+  Plan columns_forward_[2] = {nullptr, nullptr};
+  Plan columns_backward_[2] = {nullptr, nullptr};
+  bool columns_aligned_ = false;
   int row_buffer_count_ = 0;
   bool owns_buffers_ = true;
   bool lazy_input_ = false;  // overwrite_input, own buffers: input_ made on first use

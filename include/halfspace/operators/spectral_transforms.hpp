@@ -77,6 +77,19 @@ class SpectralTransforms {
   virtual std::span<std::complex<double>> spectrum(int k) = 0;
   // The unnormalised inverse of spectrum(k) into `values`. Collective.
   virtual void backward(int k, std::span<double> values) = 0;
+  // Both transforms at once (count 2): out_k = the unnormalised inverse
+  // transform of the spectrum of in_k once multiply(first, count) has
+  // worked on the spectrum blocks [first, first + count) of spectrum(0) and
+  // spectrum(1) together; it may be called for disjoint ranges on several
+  // threads at once. Serially on a transposed transform a few kx columns at
+  // a time go forward, are multiplied and go back while they are in cache
+  // (the spectrum is read and written once instead of three times); else
+  // forward, multiply and backward. The inputs are read before the outputs
+  // are written. Collective; allocates nothing.
+  using BlockMultiply = std::function<void(std::size_t first, std::size_t count)>;
+  virtual void apply_pair(std::span<const double> in_0, std::span<const double> in_1, std::span<double> out_0,
+                          std::span<double> out_1, const BlockMultiply& multiply);
+
   // Transform 0's whole buffer, whose contents matter only from forward()
   // to backward(): a workspace for a transform that runs only between
   // products (the Fourier preconditioner's on a free grid).
