@@ -140,6 +140,7 @@ BasicRealFft<Real>::BasicRealFft(BasicRealFft&& other) noexcept
       rows_forward_{std::exchange(other.rows_forward_[0], nullptr), std::exchange(other.rows_forward_[1], nullptr)},
       rows_backward_{std::exchange(other.rows_backward_[0], nullptr), std::exchange(other.rows_backward_[1], nullptr)},
       row_buffers_(std::exchange(other.row_buffers_, nullptr)),
+      row_reals_(std::exchange(other.row_reals_, nullptr)),
       columns_forward_{std::exchange(other.columns_forward_[0], nullptr),
                        std::exchange(other.columns_forward_[1], nullptr)},
       columns_backward_{std::exchange(other.columns_backward_[0], nullptr),
@@ -171,6 +172,7 @@ BasicRealFft<Real>& BasicRealFft<Real>::operator=(BasicRealFft&& other) noexcept
     }
     columns_aligned_ = std::exchange(other.columns_aligned_, false);
     row_buffers_ = std::exchange(other.row_buffers_, nullptr);
+    row_reals_ = std::exchange(other.row_reals_, nullptr);
     row_buffer_count_ = std::exchange(other.row_buffer_count_, 0);
     owns_buffers_ = std::exchange(other.owns_buffers_, true);
     lazy_input_ = std::exchange(other.lazy_input_, false);
@@ -250,6 +252,10 @@ bool BasicRealFft<Real>::make_transposed_plans(unsigned flags) {
   row_buffers_ = reinterpret_cast<std::complex<Real>*>(
       F<Real>::alloc_complex(static_cast<std::size_t>(row_buffer_count_) * kBlockRows * spectrum_cols()));
   if (row_buffers_ == nullptr) return false;
+  if constexpr (!std::is_same_v<Real, double>) {
+    row_reals_ = F<Real>::alloc_real(static_cast<std::size_t>(row_buffer_count_) * kBlockRows * cols_);
+    if (row_reals_ == nullptr) return false;
+  }
   // The rows' plans run one per thread, inside transposed_forward's loop.
   F<Real>::plan_with_nthreads(1);
   const int counts[2] = {rows >= static_cast<int>(kBlockRows) ? static_cast<int>(kBlockRows) : 0,
@@ -288,6 +294,11 @@ std::complex<Real>* BasicRealFft<Real>::row_buffer(int thread) const {
 }
 
 template <class Real>
+Real* BasicRealFft<Real>::row_real(int thread) const {
+  return row_reals_ + static_cast<std::size_t>(thread) * kBlockRows * cols_;
+}
+
+template <class Real>
 void BasicRealFft<Real>::transposed_forward(const Real* in) {
   transposed_forward_rows(in);
   F<Real>::execute_c2c(forward_plan_, as_fftw(spectrum_), as_fftw(spectrum_));
@@ -295,7 +306,6 @@ void BasicRealFft<Real>::transposed_forward(const Real* in) {
 
 template <class Real>
 void BasicRealFft<Real>::transposed_forward_rows(const Real* in) {
-  const std::size_t h = spectrum_cols();
   // Each block's rows into the thread's buffer, then scattered down the
   // kx blocks: count consecutive entries of each.
   detail::for_each_row_block(rows_, row_buffer_count_, [&](int thread, std::size_t first, std::size_t count) {
@@ -303,11 +313,26 @@ void BasicRealFft<Real>::transposed_forward_rows(const Real* in) {
     // Planned with FFTW_PRESERVE_INPUT: never written through.
     F<Real>::execute_r2c(rows_forward_[count == kBlockRows ? 0 : 1], const_cast<Real*>(in + first * cols_),
                          as_fftw(buffer));
-    for (std::size_t c = 0; c < h; ++c) {
-      std::complex<Real>* const entries = spectrum_ + c * rows_ + first;
-      for (std::size_t r = 0; r < count; ++r) entries[r] = buffer[r * h + c];
-    }
+    scatter_rows(buffer, first, count);
   });
+}
+
+template <class Real>
+void BasicRealFft<Real>::scatter_rows(const std::complex<Real>* buffer, std::size_t first, std::size_t count) {
+  const std::size_t h = spectrum_cols();
+  for (std::size_t c = 0; c < h; ++c) {
+    std::complex<Real>* const entries = spectrum_ + c * rows_ + first;
+    for (std::size_t r = 0; r < count; ++r) entries[r] = buffer[r * h + c];
+  }
+}
+
+template <class Real>
+void BasicRealFft<Real>::gather_rows(std::complex<Real>* buffer, std::size_t first, std::size_t count) const {
+  const std::size_t h = spectrum_cols();
+  for (std::size_t c = 0; c < h; ++c) {
+    const std::complex<Real>* const entries = spectrum_ + c * rows_ + first;
+    for (std::size_t r = 0; r < count; ++r) buffer[r * h + c] = entries[r];
+  }
 }
 
 template <class Real>
@@ -318,13 +343,9 @@ void BasicRealFft<Real>::transposed_backward(Real* out) {
 
 template <class Real>
 void BasicRealFft<Real>::transposed_backward_rows(Real* out) {
-  const std::size_t h = spectrum_cols();
   detail::for_each_row_block(rows_, row_buffer_count_, [&](int thread, std::size_t first, std::size_t count) {
     std::complex<Real>* const buffer = row_buffer(thread);
-    for (std::size_t c = 0; c < h; ++c) {
-      const std::complex<Real>* const entries = spectrum_ + c * rows_ + first;
-      for (std::size_t r = 0; r < count; ++r) buffer[r * h + c] = entries[r];
-    }
+    gather_rows(buffer, first, count);
     F<Real>::execute_c2r(rows_backward_[count == kBlockRows ? 0 : 1], as_fftw(buffer), out + first * cols_);
   });
 }
@@ -333,6 +354,39 @@ template <class Real>
 void BasicRealFft<Real>::forward_rows_from(std::span<const Real> values) {
   assert(columns_in_parts() && takes_input(values));
   transposed_forward_rows(values.data());
+}
+
+template <class Real>
+bool BasicRealFft<Real>::takes_double_rows() const {
+  return !std::is_same_v<Real, double> && columns_in_parts() && row_reals_ != nullptr &&
+         F<Real>::alignment_of(row_reals_) == input_alignment_ &&
+         F<Real>::alignment_of(row_reals_) == output_alignment_;
+}
+
+template <class Real>
+void BasicRealFft<Real>::forward_rows_from(std::span<const double> values) requires(!std::is_same_v<Real, double>) {
+  assert(takes_double_rows() && values.size() == real_size());
+  detail::for_each_row_block(rows_, row_buffer_count_, [&](int thread, std::size_t first, std::size_t count) {
+    Real* const real = row_real(thread);
+    const double* const from = values.data() + first * cols_;
+    for (std::size_t i = 0; i < count * cols_; ++i) real[i] = static_cast<Real>(from[i]);
+    std::complex<Real>* const buffer = row_buffer(thread);
+    F<Real>::execute_r2c(rows_forward_[count == kBlockRows ? 0 : 1], real, as_fftw(buffer));
+    scatter_rows(buffer, first, count);
+  });
+}
+
+template <class Real>
+void BasicRealFft<Real>::backward_rows_into(std::span<double> values) requires(!std::is_same_v<Real, double>) {
+  assert(takes_double_rows() && values.size() == real_size());
+  detail::for_each_row_block(rows_, row_buffer_count_, [&](int thread, std::size_t first, std::size_t count) {
+    std::complex<Real>* const buffer = row_buffer(thread);
+    gather_rows(buffer, first, count);
+    Real* const real = row_real(thread);
+    F<Real>::execute_c2r(rows_backward_[count == kBlockRows ? 0 : 1], as_fftw(buffer), real);
+    double* const to = values.data() + first * cols_;
+    for (std::size_t i = 0; i < count * cols_; ++i) to[i] = real[i];
+  });
 }
 
 template <class Real>
@@ -433,7 +487,7 @@ bool BasicRealFft<Real>::backward_into(std::span<Real> values) {
 template <class Real>
 void BasicRealFft<Real>::release() noexcept {
   if (input_ == nullptr && output_ == nullptr && spectrum_ == nullptr && forward_plan_ == nullptr &&
-      backward_plan_ == nullptr && row_buffers_ == nullptr) {
+      backward_plan_ == nullptr && row_buffers_ == nullptr && row_reals_ == nullptr) {
     return;
   }
   const std::lock_guard<std::mutex> lock(detail::fftw_planner_mutex());
@@ -445,6 +499,8 @@ void BasicRealFft<Real>::release() noexcept {
   }
   F<Real>::free(row_buffers_);
   row_buffers_ = nullptr;
+  F<Real>::free(row_reals_);
+  row_reals_ = nullptr;
   if (output_ != input_) F<Real>::free(output_);
   if (owns_buffers_) {
     F<Real>::free(input_);

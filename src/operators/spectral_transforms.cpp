@@ -4,7 +4,6 @@
 // on the entries held here, and its product.
 #include "halfspace/operators/spectral_transforms.hpp"
 
-#include <algorithm>
 #include <complex>
 #include <stdexcept>
 #include <utility>
@@ -115,23 +114,7 @@ class SerialSpectralTransforms final : public SpectralTransforms {
       SpectralTransforms::apply_pair(in_0, in_1, out_0, out_1, multiply);
       return;
     }
-    RealFft& a = *own_[0];
-    RealFft& b = *own_[1];
-    a.forward_rows_from(in_0);
-    b.forward_rows_from(in_1);
-    const std::size_t columns = a.spectrum_cols();
-    constexpr std::size_t kGroup = RealFft::kColumnBlock;
-    linalg::for_each_row((columns + kGroup - 1) / kGroup, kGroup * a.rows(), [&](std::size_t group) {
-      const std::size_t first = group * kGroup;
-      const std::size_t count = std::min(kGroup, columns - first);
-      a.transform_columns(first, count, true);
-      b.transform_columns(first, count, true);
-      multiply(first, count);
-      a.transform_columns(first, count, false);
-      b.transform_columns(first, count, false);
-    });
-    a.backward_rows_into(out_0);
-    b.backward_rows_into(out_1);
+    fft::transform_pair_by_columns(*own_[0], *own_[1], in_0, in_1, out_0, out_1, multiply);
   }
 
   // Straight into the padded transform's rows, a block at a time.

@@ -84,13 +84,8 @@ std::string coated_free_grid_refusal(const Grid& grid, const ElasticPair& pair) 
 
 namespace {
 
-// A spectrum's entries as (real, imaginary) pairs of doubles.
-double* as_reals(std::span<std::complex<double>> spectrum) {
-  return reinterpret_cast<double*>(spectrum.data());
-}
-
 // (x, y) = S (x, y) for the symmetric 2x2 block S = {xx, xy, yy} on one
-// mode's complex entries, as pairs of doubles: through std::complex the
+// mode's complex entries, as pairs of reals: through std::complex the
 // compiler built each product on the stack and the loads stalled on the
 // stores (most of the multiplication's time, docs/development-log.md).
 struct Block {
@@ -98,15 +93,25 @@ struct Block {
   double xy;
   double yy;
 };
-inline void multiply_block(const Block& s, double* x, double* y) {
-  const double xr = x[0];
-  const double xi = x[1];
-  const double yr = y[0];
-  const double yi = y[1];
-  x[0] = s.xx * xr + s.xy * yr;
-  x[1] = s.xx * xi + s.xy * yi;
-  y[0] = s.xy * xr + s.yy * yr;
-  y[1] = s.xy * xi + s.yy * yi;
+template <class Real>
+inline void multiply_block(const Block& block, Real* x, Real* y) {
+  const auto xx = static_cast<Real>(block.xx);
+  const auto xy = static_cast<Real>(block.xy);
+  const auto yy = static_cast<Real>(block.yy);
+  const Real xr = x[0];
+  const Real xi = x[1];
+  const Real yr = y[0];
+  const Real yi = y[1];
+  x[0] = xx * xr + xy * yr;
+  x[1] = xx * xi + xy * yi;
+  y[0] = xy * xr + yy * yr;
+  y[1] = xy * xi + yy * yi;
+}
+
+// A spectrum's entries as (real, imaginary) pairs.
+template <class Real>
+Real* as_reals(std::span<std::complex<Real>> spectrum) {
+  return reinterpret_cast<Real*>(spectrum.data());
 }
 
 void check_body(const Grid& grid, const ElasticPair& pair) {
@@ -338,10 +343,99 @@ struct TangentialOperator::Impl {
   double largest = 0.0;         // largest_eigenvalue_bound()
   double largest_stored = 0.0;  // the same in the stored symbol's scale
   double inverse_scale = 0.0;   // 1/count^2: the inverse symbol's scale
+  // Serial periodic 2D grids: the transforms of the single-precision
+  // products, in the memory of the double ones' spectra (idle while these
+  // run); empty elsewhere.
+  std::unique_ptr<SingleRealFft> single[2];
+
+  void make_single_transforms(FftPlanning planning) {
+    if (!grid.periodic() || grid.dimension() != 2) return;
+    for (int k = 0; k < 2; ++k) {
+      const std::span<std::complex<double>> memory = transforms->spectrum(k);
+      const std::span<std::complex<float>> workspace(reinterpret_cast<std::complex<float>*>(memory.data()),
+                                                     2 * memory.size());
+      if (workspace.size() < SingleRealFft::workspace_size(grid.ny(), grid.nx())) return;
+      single[k] = std::make_unique<SingleRealFft>(grid.ny(), grid.nx(), planning, workspace, FftLayout::transposed);
+    }
+    // The spectra must be laid out as the double ones, where the symbols are.
+    if (!single[0]->takes_double_rows() || !single[1]->takes_double_rows() ||
+        single[0]->spectrum_blocks() != spectrum_rows || single[0]->spectrum_length() != spectrum_cols) {
+      single[0].reset();
+      single[1].reset();
+    }
+  }
+  bool single_takes(std::span<const double> in_x, std::span<const double> in_y, std::span<const double> out_x,
+                    std::span<const double> out_y) const {
+    const std::size_t n = grid.size();
+    return in_x.size() == n && in_y.size() == n && out_x.size() == n && out_y.size() == n;
+  }
+
+  // (x, y) = S (x, y) on the spectrum blocks [first, first + count) of the
+  // two spectra (pairs of reals), S the symbol.
+  template <class Real>
+  void multiply(Real* sx, Real* sy, std::size_t first, std::size_t count) const {
+    const double* const sxx = xx.stored().data();
+    const double* const syy = yy.stored().data();
+    const double* const sxy = xy.stored().data();
+    for (std::size_t r = first; r < first + count; ++r) {
+      xx.for_each_entry(r, [&](std::size_t k, std::size_t j, double sign) {
+        multiply_block({sxx[j], sign * sxy[j], syy[j]}, sx + 2 * k, sy + 2 * k);
+      });
+    }
+  }
+
+  // (x, y) = S^-1 (x, y) the same way (apply_approximate_inverse): the
+  // inverse of the symmetric 2x2 block S = m I + D (D traceless, D^2 = s^2
+  // I, eigenvalues m +- s) is f(m + s) P+ + f(m - s) P-, f(x) = 1/x, with
+  // the spectral projectors P+- = (I +- D/s)/2.
+  template <class Real>
+  void invert(Real* sx, Real* sy, std::size_t first, std::size_t count) const {
+    const double* const sxx = xx.stored().data();
+    const double* const syy = yy.stored().data();
+    const double* const sxy = xy.stored().data();
+    const double floor = 1e-9 * largest_stored;
+    const double scale = inverse_scale;
+    auto inverse = [&](double eigenvalue) { return scale / (eigenvalue > floor ? eigenvalue : largest_stored); };
+    for (std::size_t r = first; r < first + count; ++r) {
+      // On the stored entry j: ixy, odd in xy, takes the mirrored sign.
+      xx.for_each_entry(r, [&](std::size_t k, std::size_t j, double sign) {
+        double ixx = 0.0;
+        double iyy = 0.0;
+        double ixy = 0.0;
+        // Both eigenvalues above the floor ((xx - f)(yy - f) > xy^2 with
+        // xx > f: the smaller one, m - s, exceeds f): the plain inverse, no
+        // square root (almost every mode; the hypot per mode cost about a
+        // tenth of a tangential step, docs/development-log.md).
+        const double shifted_xx = sxx[j] - floor;
+        const double shifted_yy = syy[j] - floor;
+        if (shifted_xx > 0.0 && shifted_xx * shifted_yy > sxy[j] * sxy[j]) {
+          const double f = scale / (sxx[j] * syy[j] - sxy[j] * sxy[j]);
+          ixx = f * syy[j];
+          iyy = f * sxx[j];
+          ixy = -f * sxy[j];
+        } else {
+          const double mean = 0.5 * (sxx[j] + syy[j]);
+          const double half_difference = 0.5 * (sxx[j] - syy[j]);
+          const double spread = std::hypot(half_difference, sxy[j]);
+          const double upper = inverse(mean + spread);
+          const double lower = inverse(mean - spread);
+          const double along = 0.5 * (upper + lower);
+          // (f(m + s) - f(m - s)) / (2 s), zero when the block is a multiple of I.
+          const double across = spread > 0.0 ? 0.5 * (upper - lower) / spread : 0.0;
+          ixx = along + across * half_difference;
+          iyy = along - across * half_difference;
+          ixy = across * sxy[j];
+        }
+        multiply_block({ixx, sign * ixy, iyy}, sx + 2 * k, sy + 2 * k);
+      });
+    }
+  }
 };
 
 TangentialOperator::TangentialOperator(const Grid& grid, const ElasticPair& pair, FftPlanning planning)
-    : TangentialOperator(grid, pair, make_serial_transforms(grid, planning)) {}
+    : TangentialOperator(grid, pair, make_serial_transforms(grid, planning)) {
+  impl_->make_single_transforms(planning);
+}
 
 TangentialOperator::TangentialOperator(const Grid& grid, const ElasticPair& pair,
                                        std::unique_ptr<SpectralTransforms> transforms)
@@ -437,17 +531,26 @@ void TangentialOperator::apply(std::span<const double> traction_x, std::span<con
   // so in place is safe.
   double* const sx = as_reals(m.transforms->spectrum(0));
   double* const sy = as_reals(m.transforms->spectrum(1));
-  const double* xx = m.xx.stored().data();
-  const double* yy = m.yy.stored().data();
-  const double* xy = m.xy.stored().data();
   m.transforms->apply_pair(traction_x, traction_y, displacement_x, displacement_y,
-                           [&](std::size_t first, std::size_t count) {
-                             for (std::size_t r = first; r < first + count; ++r) {
-                               m.xx.for_each_entry(r, [&](std::size_t k, std::size_t j, double sign) {
-                                 multiply_block({xx[j], sign * xy[j], yy[j]}, sx + 2 * k, sy + 2 * k);
-                               });
-                             }
-                           });
+                           [&](std::size_t first, std::size_t count) { m.multiply(sx, sy, first, count); });
+}
+
+void TangentialOperator::apply_in_single_precision(std::span<const double> traction_x,
+                                                   std::span<const double> traction_y, std::span<double> displacement_x,
+                                                   std::span<double> displacement_y) {
+  Impl& m = *impl_;
+  if (!m.single[0] || !m.single_takes(traction_x, traction_y, displacement_x, displacement_y)) {
+    apply(traction_x, traction_y, displacement_x, displacement_y);
+    return;
+  }
+  float* const sx = as_reals(m.single[0]->spectrum());
+  float* const sy = as_reals(m.single[1]->spectrum());
+  fft::transform_pair_by_columns(*m.single[0], *m.single[1], traction_x, traction_y, displacement_x, displacement_y,
+                                 [&](std::size_t first, std::size_t count) { m.multiply(sx, sy, first, count); });
+}
+
+bool TangentialOperator::single_precision() const {
+  return static_cast<bool>(impl_->single[0]);
 }
 
 // The inverse of the symmetric 2x2 block S = m I + D (D traceless, D^2 =
@@ -461,50 +564,23 @@ void TangentialOperator::apply_approximate_inverse(std::span<const double> displ
   assert(traction_x.size() == local_size() && traction_y.size() == local_size());
   double* const sx = as_reals(m.transforms->spectrum(0));
   double* const sy = as_reals(m.transforms->spectrum(1));
-  const double* xx = m.xx.stored().data();
-  const double* yy = m.yy.stored().data();
-  const double* xy = m.xy.stored().data();
-  const double largest = m.largest_stored;
-  const double floor = 1e-9 * largest;
-  const double scale = m.inverse_scale;
-  auto inverse = [&](double eigenvalue) { return scale / (eigenvalue > floor ? eigenvalue : largest); };
-  // On the stored entry j: ixy, odd in xy, takes the mirrored sign.
-  const auto invert_spectrum_block = [&](std::size_t r) {
-    m.xx.for_each_entry(r, [&](std::size_t k, std::size_t j, double sign) {
-      double ixx = 0.0;
-      double iyy = 0.0;
-      double ixy = 0.0;
-      // Both eigenvalues above the floor ((xx - f)(yy - f) > xy^2 with
-      // xx > f: the smaller one, m - s, exceeds f): the plain inverse, no
-      // square root (almost every mode; the hypot per mode cost about a
-      // tenth of a tangential step, docs/development-log.md).
-      const double shifted_xx = xx[j] - floor;
-      const double shifted_yy = yy[j] - floor;
-      if (shifted_xx > 0.0 && shifted_xx * shifted_yy > xy[j] * xy[j]) {
-        const double f = scale / (xx[j] * yy[j] - xy[j] * xy[j]);
-        ixx = f * yy[j];
-        iyy = f * xx[j];
-        ixy = -f * xy[j];
-      } else {
-        const double mean = 0.5 * (xx[j] + yy[j]);
-        const double half_difference = 0.5 * (xx[j] - yy[j]);
-        const double spread = std::hypot(half_difference, xy[j]);
-        const double upper = inverse(mean + spread);
-        const double lower = inverse(mean - spread);
-        const double along = 0.5 * (upper + lower);
-        // (f(m + s) - f(m - s)) / (2 s), zero when the block is a multiple of I.
-        const double across = spread > 0.0 ? 0.5 * (upper - lower) / spread : 0.0;
-        ixx = along + across * half_difference;
-        iyy = along - across * half_difference;
-        ixy = across * xy[j];
-      }
-      multiply_block({ixx, sign * ixy, iyy}, sx + 2 * k, sy + 2 * k);
-    });
-  };
   m.transforms->apply_pair(displacement_x, displacement_y, traction_x, traction_y,
-                           [&](std::size_t first, std::size_t count) {
-                             for (std::size_t r = first; r < first + count; ++r) invert_spectrum_block(r);
-                           });
+                           [&](std::size_t first, std::size_t count) { m.invert(sx, sy, first, count); });
+}
+
+void TangentialOperator::apply_approximate_inverse_in_single_precision(std::span<const double> displacement_x,
+                                                                       std::span<const double> displacement_y,
+                                                                       std::span<double> traction_x,
+                                                                       std::span<double> traction_y) {
+  Impl& m = *impl_;
+  if (!m.single[0] || !m.single_takes(displacement_x, displacement_y, traction_x, traction_y)) {
+    apply_approximate_inverse(displacement_x, displacement_y, traction_x, traction_y);
+    return;
+  }
+  float* const sx = as_reals(m.single[0]->spectrum());
+  float* const sy = as_reals(m.single[1]->spectrum());
+  fft::transform_pair_by_columns(*m.single[0], *m.single[1], displacement_x, displacement_y, traction_x, traction_y,
+                                 [&](std::size_t first, std::size_t count) { m.invert(sx, sy, first, count); });
 }
 
 }  // namespace halfspace::operators

@@ -57,7 +57,11 @@ void ConjugateGradientMethod::step() {
     f_.tx[i] = c.scale * g.x;
     f_.ty[i] = c.scale * g.y;
   });
-  op_.apply_approximate_inverse({f_.tx, n_}, {f_.ty, n_}, {f_.tx, n_}, {f_.ty, n_});
+  if (single_) {
+    op_.apply_approximate_inverse_in_single_precision({f_.tx, n_}, {f_.ty, n_}, {f_.tx, n_}, {f_.ty, n_});
+  } else {
+    op_.apply_approximate_inverse({f_.tx, n_}, {f_.ty, n_}, {f_.tx, n_}, {f_.ty, n_});
+  }
   ++result_.preconditioner_applications;
   // Pass C: z = Pi R M Pi R g.
   const auto [zx, zy] = contact_sums<2>(comm_, contact_, [&](std::size_t i) {
@@ -119,7 +123,11 @@ void ConjugateGradientMethod::step() {
   // w = C d into g's fields.
   double* const wx = f_.gx;
   double* const wy = f_.gy;
-  op_.apply({f_.rx, n_}, {f_.ry, n_}, {wx, n_}, {wy, n_});
+  if (single_) {
+    op_.apply_in_single_precision({f_.rx, n_}, {f_.ry, n_}, {wx, n_}, {wy, n_});
+  } else {
+    op_.apply({f_.rx, n_}, {f_.ry, n_}, {wx, n_}, {wy, n_});
+  }
   ++result_.operator_applications;
   // The step minimising the quadratic model along d (curvature included).
   const auto [stiffness] = contact_sums<1>(

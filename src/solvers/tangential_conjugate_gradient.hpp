@@ -105,6 +105,8 @@ class ConjugateGradientMethod : IterationMethod {
   }
 
   const double self_ = op_.self_influence().xx;
+  // TangentialOptions::precision mixed: C d and M in single precision.
+  const bool single_ = options_.precision == Precision::mixed;
   double rho_old_ = 0.0;   // the last z . Pi R g
   bool momentum_ = false;  // the last step was taken: its direction may carry over
   bool release_ = true;    // allow_release()

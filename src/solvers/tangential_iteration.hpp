@@ -471,6 +471,7 @@ class IterationMethod {
   explicit IterationMethod(TangentialIteration& it)
       : it_(it),
         op_(it.op_),
+        options_(it.options_),
         problem_(it.problem_),
         result_(it.result_),
         comm_(it.comm_),
@@ -484,6 +485,7 @@ class IterationMethod {
 
   TangentialIteration& it_;
   TangentialOperator& op_;
+  const TangentialOptions& options_;
   const Problem& problem_;
   TangentialResult& result_;
   const linalg::Communicator& comm_;

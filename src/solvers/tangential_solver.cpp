@@ -75,6 +75,10 @@ void TangentialOptions::validate() const {
     throw SolverOptionError("method", fmt::format("{}", static_cast<int>(method)),
                             "is invalid: allowed are conjugate_gradient (0) and projected_gradient (1)");
   }
+  if (precision != Precision::double_precision && precision != Precision::mixed) {
+    throw SolverOptionError("precision", fmt::format("{}", static_cast<int>(precision)),
+                            "is invalid: allowed are double (0) and mixed (1)");
+  }
   if (coarse_start != TangentialCoarseStart::off && coarse_start != TangentialCoarseStart::on &&
       coarse_start != TangentialCoarseStart::automatic) {
     throw SolverOptionError("coarse_start", fmt::format("{}", static_cast<int>(coarse_start)),

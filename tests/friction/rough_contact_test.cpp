@@ -254,6 +254,59 @@ TEST(RoughFriction, CoarseStartGivesTheSameStepAsTheFineStart) {
   }
 }
 
+// TangentialOptions::precision: the single-precision products C d and M
+// (the default on a serial periodic grid) against double ones. The
+// operator's single-precision products are within float rounding of the
+// double ones and not equal to them (so the single path ran); the step
+// solved both ways meets Coulomb's conditions (a fresh double product) and
+// gives the same traction within 1e-8 of the largest mu p at the solver
+// tolerance 1e-10, with the force met to rounding.
+TEST(RoughFriction, SinglePrecisionDirectionsGiveTheDoubleStep) {
+  const auto [grid, contact] = rough_contact();
+  ASSERT_TRUE(contact.converged());
+  TangentialOperator op(grid, ElasticPair::similar(kSteel));
+  ASSERT_TRUE(op.single_precision());
+  EXPECT_FALSE(TangentialOperator(Grid::plane(16, 16, kSpacing, kSpacing, Boundary::free), ElasticPair::similar(kSteel))
+                   .single_precision());
+  const std::size_t n = grid.size();
+  const Eigen::ArrayXd tx = contact.pressure * 0.3;
+  const Eigen::ArrayXd ty = contact.pressure.sqrt() * 1e3;
+  Eigen::ArrayXd ux(n), uy(n), sx(n), sy(n);
+  for (const bool inverse : {false, true}) {
+    if (inverse) {
+      op.apply_approximate_inverse({tx.data(), n}, {ty.data(), n}, {ux.data(), n}, {uy.data(), n});
+      op.apply_approximate_inverse_in_single_precision({tx.data(), n}, {ty.data(), n}, {sx.data(), n}, {sy.data(), n});
+    } else {
+      op.apply({tx.data(), n}, {ty.data(), n}, {ux.data(), n}, {uy.data(), n});
+      op.apply_in_single_precision({tx.data(), n}, {ty.data(), n}, {sx.data(), n}, {sy.data(), n});
+    }
+    const double scale = std::max(ux.abs().maxCoeff(), uy.abs().maxCoeff());
+    const double error = std::max((sx - ux).abs().maxCoeff(), (sy - uy).abs().maxCoeff());
+    EXPECT_LT(error, 1e-5 * scale) << (inverse ? "approximate inverse" : "product");
+    EXPECT_GT(error, 0.0) << (inverse ? "approximate inverse" : "product");
+  }
+  const double limit = kMu * contact.total_force;
+  const TangentialState unloaded = TangentialState::unloaded(n);
+  const TangentialLoading loading = TangentialLoading::force(0.5 * limit, 0.2 * limit);
+  TangentialResult results[2];
+  for (const bool single : {false, true}) {
+    solvers::TangentialOptions options;
+    options.friction_coefficient = kMu;
+    options.tolerance = 1e-10;
+    options.precision = single ? solvers::Precision::mixed : solvers::Precision::double_precision;
+    TangentialSolver solver(op, options);
+    results[single ? 1 : 0] = solver.solve({contact.pressure.data(), n}, loading, unloaded);
+    const TangentialResult& r = results[single ? 1 : 0];
+    ASSERT_TRUE(r.converged()) << r.message;
+    const double moved = std::max(r.state.displacement_x.abs().maxCoeff(), r.state.displacement_y.abs().maxCoeff());
+    testing::expect_coulomb_conditions(op, contact.pressure, kMu, unloaded, r, 1e-6 * moved, 1e-2);
+    EXPECT_NEAR(r.force_x, 0.5 * limit, 1e-9 * limit);
+  }
+  const double peak = kMu * contact.pressure.maxCoeff();
+  EXPECT_LT((results[1].state.shear_x - results[0].state.shear_x).abs().maxCoeff(), 1e-8 * peak);
+  EXPECT_LT((results[1].state.shear_y - results[0].state.shear_y).abs().maxCoeff(), 1e-8 * peak);
+}
+
 TEST(RoughFriction, CoarseToleranceOutsideTheUnitIntervalIsRefused) {
   solvers::TangentialOptions options;
   options.friction_coefficient = kMu;

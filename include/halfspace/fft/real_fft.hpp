@@ -2,11 +2,14 @@
 // owns: the one place the library touches FFTW's planner.
 #pragma once
 
+#include <algorithm>
 #include <complex>
 #include <cstddef>
 #include <span>
+#include <type_traits>
 
 #include "halfspace/fft/fft_planning.hpp"
+#include "halfspace/linalg/parallel.hpp"
 
 struct fftw_plan_s;   // FFTW's opaque plan types (double and single precision),
 struct fftwf_plan_s;  // so that <fftw3.h> stays private
@@ -138,6 +141,13 @@ class BasicRealFft {
   void backward_rows_into(std::span<Real> values);
   // The columns transform_columns is planned to take at once.
   static constexpr std::size_t kColumnBlock = 8;
+  // A single-precision transform of double fields: forward_rows_from and
+  // backward_rows_into with `values` in double, each block of rows rounded
+  // into a thread's buffer on the way in and widened from it on the way
+  // out; where takes_double_rows() (single precision, columns_in_parts()).
+  bool takes_double_rows() const;
+  void forward_rows_from(std::span<const double> values) requires(!std::is_same_v<Real, double>);
+  void backward_rows_into(std::span<double> values) requires(!std::is_same_v<Real, double>);
 
  private:
   using Plan = typename FftwPlanOf<Real>::type;
@@ -157,6 +167,12 @@ class BasicRealFft {
   // Their row parts (the columns left to the caller).
   void transposed_forward_rows(const Real* in);
   void transposed_backward_rows(Real* out);
+  // A block's rows between a thread's buffer (rows of spectrum_cols()) and
+  // the kx columns.
+  void scatter_rows(const std::complex<Real>* buffer, std::size_t first, std::size_t count);
+  void gather_rows(std::complex<Real>* buffer, std::size_t first, std::size_t count) const;
+  // A thread's block of real rows (single precision, transposed).
+  Real* row_real(int thread) const;
   // A thread's block buffer (transposed).
   std::complex<Real>* row_buffer(int thread) const;
   // input_, made (zeroed, FFTW-aligned) if it was left to first use.
@@ -173,6 +189,7 @@ class BasicRealFft {
   Plan rows_forward_[2] = {nullptr, nullptr};  // transposed: a full block of rows, and the rows left over
   Plan rows_backward_[2] = {nullptr, nullptr};
   std::complex<Real>* row_buffers_ = nullptr;  // transposed: a block's spectrum rows per thread
+  Real* row_reals_ = nullptr;                  // transposed, single precision: a block's real rows per thread
   // transposed: kColumnBlock kx columns and a single one, on one thread
   // (transform_columns); every column starts at the spectrum's alignment.
   Plan columns_forward_[2] = {nullptr, nullptr};
@@ -190,6 +207,35 @@ using RealFft = BasicRealFft<double>;
 using SingleRealFft = BasicRealFft<float>;
 extern template class BasicRealFft<double>;
 extern template class BasicRealFft<float>;
+
+// out_a, out_b = the unnormalised inverse transforms of the spectra of in_a,
+// in_b once multiply(first, count) has worked on the kx columns [first,
+// first + count) of both: the rows of both forward, then each few columns
+// of both forward, multiplied and back while they are in cache, then the
+// rows of both back. a and b are transforms of one shape with
+// columns_in_parts(), and take the values as their forward_rows_from and
+// backward_rows_into do; multiply may run on several threads at once for
+// disjoint columns. The inputs are read before the outputs are written.
+template <class Real, class Value, class Multiply>
+void transform_pair_by_columns(BasicRealFft<Real>& a, BasicRealFft<Real>& b, std::span<const Value> in_a,
+                               std::span<const Value> in_b, std::span<Value> out_a, std::span<Value> out_b,
+                               Multiply&& multiply) {
+  a.forward_rows_from(in_a);
+  b.forward_rows_from(in_b);
+  const std::size_t columns = a.spectrum_cols();
+  constexpr std::size_t kGroup = BasicRealFft<Real>::kColumnBlock;
+  linalg::for_each_row((columns + kGroup - 1) / kGroup, kGroup * a.rows(), [&](std::size_t group) {
+    const std::size_t first = group * kGroup;
+    const std::size_t count = std::min(kGroup, columns - first);
+    a.transform_columns(first, count, true);
+    b.transform_columns(first, count, true);
+    multiply(first, count);
+    a.transform_columns(first, count, false);
+    b.transform_columns(first, count, false);
+  });
+  a.backward_rows_into(out_a);
+  b.backward_rows_into(out_b);
+}
 
 }  // namespace halfspace::fft
 

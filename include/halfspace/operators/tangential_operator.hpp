@@ -74,6 +74,21 @@ class TangentialOperator {
   void apply_approximate_inverse(std::span<const double> displacement_x, std::span<const double> displacement_y,
                                  std::span<double> traction_x, std::span<double> traction_y);
 
+  // apply() and apply_approximate_inverse() with single-precision
+  // transforms, where single_precision(): the fields stay double, the
+  // spectra are float (in the double ones' memory, so nothing is added to
+  // the operator's size) and the product's relative error is about 1e-7;
+  // elsewhere the double products themselves. For the inner products of
+  // an iteration whose errors exact products correct (the tangential
+  // step's conjugate gradients, TangentialOptions::precision). Allocates
+  // nothing; shares the transforms with the double products.
+  bool single_precision() const;  // a serial periodic 2D grid
+  void apply_in_single_precision(std::span<const double> traction_x, std::span<const double> traction_y,
+                                 std::span<double> displacement_x, std::span<double> displacement_y);
+  void apply_approximate_inverse_in_single_precision(std::span<const double> displacement_x,
+                                                     std::span<const double> displacement_y,
+                                                     std::span<double> traction_x, std::span<double> traction_y);
+
   // Whether the pair couples the normal and tangential problems (Dundurs'
   // beta != 0, ElasticPair::similar() false). The coupling products below
   // are exactly zero otherwise.

@@ -40,6 +40,7 @@
 #include <vector>
 
 #include "halfspace/operators/tangential_operator.hpp"
+#include "halfspace/solvers/solver_options.hpp"
 #include "halfspace/solvers/tangential_loading.hpp"
 #include "halfspace/solvers/tangential_result.hpp"
 
@@ -94,13 +95,21 @@ struct TangentialOptions {
   // 159 without, and 439 against 273 at 2048^2, where the sets took 27
   // updates to settle (docs/development-log.md, 2026-11-29, tang4). >= 0.
   int active_set_updates = 0;
+  // Conjugate gradients: mixed, the direction's product C d and the
+  // preconditioner through single-precision transforms where the operator
+  // has them (TangentialOperator::single_precision(): serial periodic 2D
+  // grids), their errors corrected by the exact double product C q every few
+  // steps and always before the stop, whose duality gap is measured in
+  // double; double_precision: every product in double.
+  Precision precision = Precision::mixed;
   // Called once per iteration with (iteration, residual); may be empty or stop the solve.
   ProgressCallback progress;
 
   // Throws SolverOptionError (an InputError) naming the member ("friction"
   // for mu) unless mu is finite and >= 0, 0 < tolerance < 1,
   // max_iterations >= 1, release_period >= 1, active_set_updates >= 0,
-  // 0 < coarse_tolerance < 1 and method and coarse_start are named values.
+  // 0 < coarse_tolerance < 1 and method, coarse_start and precision are
+  // named values.
   void validate() const;
 };
 
