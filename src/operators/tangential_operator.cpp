@@ -364,10 +364,19 @@ struct TangentialOperator::Impl {
       single[1].reset();
     }
   }
-  bool single_takes(std::span<const double> in_x, std::span<const double> in_y, std::span<const double> out_x,
-                    std::span<const double> out_y) const {
+  // (out_x, out_y) from (in_x, in_y) through the single-precision
+  // transforms, multiply(sx, sy, first, count) working on the spectra's
+  // blocks [first, first + count); false, and nothing done, without them.
+  template <class Multiply>
+  bool single_pair(std::span<const double> in_x, std::span<const double> in_y, std::span<double> out_x,
+                   std::span<double> out_y, Multiply&& multiply) {
     const std::size_t n = grid.size();
-    return in_x.size() == n && in_y.size() == n && out_x.size() == n && out_y.size() == n;
+    if (!single[0] || in_x.size() != n || in_y.size() != n || out_x.size() != n || out_y.size() != n) return false;
+    float* const sx = as_reals(single[0]->spectrum());
+    float* const sy = as_reals(single[1]->spectrum());
+    fft::transform_pair_by_columns(*single[0], *single[1], in_x, in_y, out_x, out_y,
+                                   [&](std::size_t first, std::size_t count) { multiply(sx, sy, first, count); });
+    return true;
   }
 
   // (x, y) = S (x, y) on the spectrum blocks [first, first + count) of the
@@ -539,23 +548,16 @@ void TangentialOperator::apply_in_single_precision(std::span<const double> tract
                                                    std::span<const double> traction_y, std::span<double> displacement_x,
                                                    std::span<double> displacement_y) {
   Impl& m = *impl_;
-  if (!m.single[0] || !m.single_takes(traction_x, traction_y, displacement_x, displacement_y)) {
-    apply(traction_x, traction_y, displacement_x, displacement_y);
-    return;
-  }
-  float* const sx = as_reals(m.single[0]->spectrum());
-  float* const sy = as_reals(m.single[1]->spectrum());
-  fft::transform_pair_by_columns(*m.single[0], *m.single[1], traction_x, traction_y, displacement_x, displacement_y,
-                                 [&](std::size_t first, std::size_t count) { m.multiply(sx, sy, first, count); });
+  const bool done = m.single_pair(
+      traction_x, traction_y, displacement_x, displacement_y,
+      [&](float* sx, float* sy, std::size_t first, std::size_t count) { m.multiply(sx, sy, first, count); });
+  if (!done) apply(traction_x, traction_y, displacement_x, displacement_y);
 }
 
 bool TangentialOperator::single_precision() const {
   return static_cast<bool>(impl_->single[0]);
 }
 
-// The inverse of the symmetric 2x2 block S = m I + D (D traceless, D^2 =
-// s^2 I, eigenvalues m +- s) is f(m + s) P+ + f(m - s) P-, f(x) = 1/x, with
-// the spectral projectors P+- = (I +- D/s)/2.
 void TangentialOperator::apply_approximate_inverse(std::span<const double> displacement_x,
                                                    std::span<const double> displacement_y, std::span<double> traction_x,
                                                    std::span<double> traction_y) {
@@ -573,14 +575,10 @@ void TangentialOperator::apply_approximate_inverse_in_single_precision(std::span
                                                                        std::span<double> traction_x,
                                                                        std::span<double> traction_y) {
   Impl& m = *impl_;
-  if (!m.single[0] || !m.single_takes(displacement_x, displacement_y, traction_x, traction_y)) {
-    apply_approximate_inverse(displacement_x, displacement_y, traction_x, traction_y);
-    return;
-  }
-  float* const sx = as_reals(m.single[0]->spectrum());
-  float* const sy = as_reals(m.single[1]->spectrum());
-  fft::transform_pair_by_columns(*m.single[0], *m.single[1], displacement_x, displacement_y, traction_x, traction_y,
-                                 [&](std::size_t first, std::size_t count) { m.invert(sx, sy, first, count); });
+  const bool done = m.single_pair(
+      displacement_x, displacement_y, traction_x, traction_y,
+      [&](float* sx, float* sy, std::size_t first, std::size_t count) { m.invert(sx, sy, first, count); });
+  if (!done) apply_approximate_inverse(displacement_x, displacement_y, traction_x, traction_y);
 }
 
 }  // namespace halfspace::operators
