@@ -33,6 +33,20 @@ void scale_spectrum(const EvenSymbol& symbol, const std::vector<double>& values,
   if (first) spectrum[0] = entry0 * static_cast<Real>(*first);
 }
 
+// The same on spectrum rows [first, first + count) alone, serially.
+template <class Factor>
+void scale_rows(const EvenSymbol& symbol, const std::vector<double>& values, std::span<std::complex<double>> spectrum,
+                std::size_t first, std::size_t count, Factor&& factor, const double* at_zero = nullptr) {
+  assert(spectrum.size() == symbol.rows() * symbol.cols() && first + count <= symbol.rows());
+  if (count == 0 || symbol.cols() == 0) return;
+  const std::complex<double> entry0 = spectrum[0];
+  const double* value = values.data();
+  for (std::size_t r = first; r < first + count; ++r) {
+    symbol.for_each_entry(r, [&](std::size_t k, std::size_t j, double) { spectrum[k] *= factor(value[j]); });
+  }
+  if (at_zero && first == 0) spectrum[0] = entry0 * *at_zero;
+}
+
 template <class Real>
 void multiply_spectrum(const EvenSymbol& symbol, const std::vector<double>& values,
                        std::span<std::complex<Real>> spectrum) {
@@ -91,6 +105,10 @@ void EvenSymbol::multiply(std::span<std::complex<float>> spectrum) const {
   multiply_spectrum(*this, values_, spectrum);
 }
 
+void EvenSymbol::multiply(std::span<std::complex<double>> spectrum, std::size_t first, std::size_t count) const {
+  scale_rows(*this, values_, spectrum, first, count, [](double value) { return value; });
+}
+
 void EvenSymbol::apply(RealFft& fft, std::span<const double> in, std::span<double> out) const {
   assert(fft.spectrum_blocks() == rows_ && fft.spectrum_length() == cols_ && fft.transposed() == transposed_);
   apply_in_precision(fft, in, out, [this](auto spectrum) { multiply(spectrum); });
@@ -108,6 +126,14 @@ void EvenSymbol::apply(SingleRealFft& fft, std::span<const float> in, std::span<
 
 void EvenSymbol::divide(const Inverse& inverse, std::span<std::complex<double>> spectrum) const {
   divide_spectrum(*this, values_, inverse, spectrum);
+}
+
+void EvenSymbol::divide(const Inverse& inverse, std::span<std::complex<double>> spectrum, std::size_t first,
+                        std::size_t count) const {
+  const double numerator = inverse.numerator;
+  scale_rows(
+      *this, values_, spectrum, first, count, [numerator](double value) { return numerator / value; },
+      &inverse.at_zero);
 }
 
 void EvenSymbol::apply_inverse(const Inverse& inverse, SingleRealFft& fft, std::span<const double> in,

@@ -117,6 +117,15 @@ class SerialSpectralTransforms final : public SpectralTransforms {
     fft::transform_pair_by_columns(*own_[0], *own_[1], in_0, in_1, out_0, out_1, multiply);
   }
 
+  void apply_by_blocks(int k, std::span<const double> in, std::span<double> out,
+                       const BlockMultiply& multiply) override {
+    if (padded_[0] || !own_[k]->columns_in_parts() || !own_[k]->takes_input(in) || !own_[k]->takes_output(out)) {
+      SpectralTransforms::apply_by_blocks(k, in, out, multiply);
+      return;
+    }
+    fft::transform_by_columns(*own_[k], in, out, multiply);
+  }
+
   // Straight into the padded transform's rows, a block at a time.
   std::span<const std::complex<double>> transform_wraparound_rows(const WraparoundRows& fill) override {
     PaddedRealFft& fft = *padded_[0];
@@ -172,6 +181,13 @@ void SpectralTransforms::apply_pair(std::span<const double> in_0, std::span<cons
   backward(1, out_1);
 }
 
+void SpectralTransforms::apply_by_blocks(int k, std::span<const double> in, std::span<double> out,
+                                         const BlockMultiply& multiply) {
+  forward(k, in);
+  linalg::for_each_row(spectrum_blocks(), spectrum_length(), [&](std::size_t block) { multiply(block, 1); });
+  backward(k, out);
+}
+
 std::unique_ptr<SpectralTransforms> make_serial_transforms(const Grid& grid, FftPlanning planning,
                                                            const TransformsShape& shape) {
   if (shape.count < 1 || shape.count > 2) throw std::logic_error("spectral transforms: count must be 1 or 2");
@@ -180,7 +196,9 @@ std::unique_ptr<SpectralTransforms> make_serial_transforms(const Grid& grid, Fft
 
 void apply_symbol(SpectralTransforms& transforms, int k, const EvenSymbol& symbol, std::span<const double> in,
                   std::span<double> out) {
-  apply_spectral(transforms, k, in, out, [&](std::span<std::complex<double>> spectrum) { symbol.multiply(spectrum); });
+  const std::span<std::complex<double>> spectrum = transforms.spectrum(k);
+  transforms.apply_by_blocks(k, in, out,
+                             [&](std::size_t first, std::size_t count) { symbol.multiply(spectrum, first, count); });
 }
 
 EvenSymbol held_symbol(const SpectralTransforms& transforms,

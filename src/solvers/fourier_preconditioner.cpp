@@ -119,8 +119,14 @@ void FourierPreconditioner::apply(std::span<const double> in, std::span<double> 
     m.apply_single(in, out);
     return;
   }
-  operators::apply_spectral(*m.transforms, 0, in, out,
-                            [&](std::span<std::complex<double>> spectrum) { m.multiply(spectrum); });
+  const std::span<std::complex<double>> spectrum = m.transforms->spectrum(0);
+  m.transforms->apply_by_blocks(0, in, out, [&](std::size_t first, std::size_t count) {
+    if (m.kernel) {
+      m.kernel->divide(m.inverse, spectrum, first, count);
+    } else {
+      m.symbol.multiply(spectrum, first, count);
+    }
+  });
 }
 
 void FourierPreconditioner::apply(std::span<const float> in, std::span<float> out) {

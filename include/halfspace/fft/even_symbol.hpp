@@ -69,6 +69,9 @@ class EvenSymbol {
   // spectrum[r, c] *= symbol[r, c], in parallel over rows (or over the
   // entries of a single row, not transposed).
   void multiply(std::span<std::complex<double>> spectrum) const;
+  // The same on spectrum rows [first, first + count) alone, on this
+  // thread (the products that multiply a few kx columns at a time).
+  void multiply(std::span<std::complex<double>> spectrum, std::size_t first, std::size_t count) const;
   // out = the multiplier applied to `in` through `fft` (of this symbol's
   // shape): the forward transform, multiply(), the backward one, each array
   // transformed directly where FFTW allows it, else copied through the
@@ -94,6 +97,8 @@ class EvenSymbol {
     double at_zero = 0.0;
   };
   void divide(const Inverse& inverse, std::span<std::complex<double>> spectrum) const;
+  void divide(const Inverse& inverse, std::span<std::complex<double>> spectrum, std::size_t first,
+              std::size_t count) const;
   void apply_inverse(const Inverse& inverse, SingleRealFft& fft, std::span<const double> in,
                      std::span<double> out) const;
   void apply_inverse(const Inverse& inverse, SingleRealFft& fft, std::span<const float> in, std::span<float> out) const;

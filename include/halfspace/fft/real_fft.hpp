@@ -208,6 +208,28 @@ using SingleRealFft = BasicRealFft<float>;
 extern template class BasicRealFft<double>;
 extern template class BasicRealFft<float>;
 
+// out = the unnormalised inverse transform of the spectrum of in once
+// multiply(first, count) has worked on its kx columns [first, first +
+// count): the rows forward, then each few columns forward, multiplied and
+// back while they are in cache, then the rows back (the spectrum is read
+// and written once instead of three times). The same conditions as
+// transform_pair_by_columns below.
+template <class Real, class Value, class Multiply>
+void transform_by_columns(BasicRealFft<Real>& fft, std::span<const Value> in, std::span<Value> out,
+                          Multiply&& multiply) {
+  fft.forward_rows_from(in);
+  const std::size_t columns = fft.spectrum_cols();
+  constexpr std::size_t kGroup = BasicRealFft<Real>::kColumnBlock;
+  linalg::for_each_row((columns + kGroup - 1) / kGroup, kGroup * fft.rows(), [&](std::size_t group) {
+    const std::size_t first = group * kGroup;
+    const std::size_t count = std::min(kGroup, columns - first);
+    fft.transform_columns(first, count, true);
+    multiply(first, count);
+    fft.transform_columns(first, count, false);
+  });
+  fft.backward_rows_into(out);
+}
+
 // out_a, out_b = the unnormalised inverse transforms of the spectra of in_a,
 // in_b once multiply(first, count) has worked on the kx columns [first,
 // first + count) of both: the rows of both forward, then each few columns

@@ -90,6 +90,11 @@ class SpectralTransforms {
   virtual void apply_pair(std::span<const double> in_0, std::span<const double> in_1, std::span<double> out_0,
                           std::span<double> out_1, const BlockMultiply& multiply);
 
+  // out = transform k's inverse of multiply(first, count) on its spectrum
+  // blocks, as apply_pair for one field (a product with a symbol).
+  virtual void apply_by_blocks(int k, std::span<const double> in, std::span<double> out,
+                               const BlockMultiply& multiply);
+
   // Transform 0's whole buffer, whose contents matter only from forward()
   // to backward(): a workspace for a transform that runs only between
   // products (the Fourier preconditioner's on a free grid).
