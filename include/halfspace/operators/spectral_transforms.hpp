@@ -92,8 +92,7 @@ class SpectralTransforms {
 
   // out = transform k's inverse of multiply(first, count) on its spectrum
   // blocks, as apply_pair for one field (a product with a symbol).
-  virtual void apply_by_blocks(int k, std::span<const double> in, std::span<double> out,
-                               const BlockMultiply& multiply);
+  virtual void apply_by_blocks(int k, std::span<const double> in, std::span<double> out, const BlockMultiply& multiply);
 
   // Transform 0's whole buffer, whose contents matter only from forward()
   // to backward(): a workspace for a transform that runs only between
