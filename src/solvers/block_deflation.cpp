@@ -343,7 +343,10 @@ bool BlockDeflation::too_many_pair_terms(const std::vector<double>& counts) cons
 // Full: A_IJ = sum over S_I x S_J of k. Update, with chi' = chi + delta the
 // new set's indicator: A'_IJ - A_IJ = sum delta_a chi'_c k + sum chi_a
 // delta_c k, i.e. the changed cells of I (with the sign of the change)
-// against J's new cells and I's old cells against J's changed cells.
+// against J's new cells and I's old cells against J's changed cells. k is
+// even, so A (and each update) is symmetric: only the neighbours (dy, dx)
+// from (0, 0) on are summed, and A_JI is copied from A_IJ (half the pair
+// sums; A exactly symmetric).
 void BlockDeflation::refresh(bool full) {
   if (near_kernel_.empty()) throw std::logic_error("BlockDeflation::update before set_kernel");
   full = full || !built_;
@@ -364,8 +367,8 @@ void BlockDeflation::refresh(bool full) {
   for (std::ptrdiff_t index = first_block; index < end_block; ++index) {
     const auto I = static_cast<std::size_t>(index);
     const std::size_t i = held_block(I);
-    for (int dy = -1; dy <= 1; ++dy) {
-      for (int dx = -1; dx <= 1; ++dx) {
+    for (int dy = 0; dy <= 1; ++dy) {
+      for (int dx = dy == 0 ? 0 : -1; dx <= 1; ++dx) {
         std::size_t J = 0;
         if (!neighbour_block(I, dy, dx, J)) continue;  // beyond a free grid's edge: the entry stays zero
         const std::size_t j = held_block(J);
@@ -388,8 +391,20 @@ void BlockDeflation::refresh(bool full) {
   }
   // The owners' entries are copied, not summed: the same bits as one process.
   share_owned(near_, 9);
+  mirror_near();
   built_ = true;
   ++(full ? stats_.rebuilds : stats_.updates);
+}
+
+void BlockDeflation::mirror_near() {
+  for (std::size_t I = 0; I < coarse_size(); ++I) {
+    for (int dy = -1; dy <= 0; ++dy) {
+      for (int dx = -1; dx <= (dy == 0 ? -1 : 1); ++dx) {
+        std::size_t J = 0;
+        if (neighbour_block(I, dy, dx, J)) near_[I * 9 + neighbour(dy, dx)] = near_[J * 9 + neighbour(-dy, -dx)];
+      }
+    }
+  }
 }
 
 void BlockDeflation::apply_coarse(std::span<const double> y, std::span<double> out) {

@@ -192,6 +192,8 @@ class BlockDeflation {
   // Brings A up to date with the current set, from all pairs if `full` or
   // A was never built.
   void refresh(bool full);
+  // A_IJ for the neighbours before (0, 0) from A_JI (refresh).
+  void mirror_near();
   // Lists the cells of the current set and the changed cells per block;
   // the current set becomes the built one.
   void list_cells();
