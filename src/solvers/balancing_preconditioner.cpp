@@ -134,7 +134,7 @@ void BalancingPreconditioner::apply_balancing(std::span<const T> in, std::span<T
     }
   };
   const SearchSet& given = set_;
-  const bool make_mask = given.mask == nullptr;
+  const bool make_mask = given.mask == nullptr && given.search_mask == nullptr;
   if (make_mask && set_mask_.size() != n) set_mask_.assign(n, 0);
   std::uint8_t* mask = set_mask_.data();
   const auto [count, in_sum] = sums<2>(comm, n, [&](std::size_t i) {

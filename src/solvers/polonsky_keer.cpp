@@ -10,11 +10,13 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <optional>
 #include <stdexcept>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 #include "halfspace/error.hpp"
 #include "halfspace/linalg/parallel.hpp"
@@ -136,6 +138,7 @@ class Iteration {
         correction_(image),
         correction_image_(image),
         projected_(options.form == PolonskyKeerForm::projected),
+        in_set_(n_, 0),
         // With a cap the paper's form searches the projected set too: its
         // entries alone stall once the cells below the cap are too few to
         // move the load among them (the mean-free direction on one cell is
@@ -147,7 +150,9 @@ class Iteration {
              &approach_,
              projected_ || problem.bounds.capped(),
              problem.load_controlled && (projected_ || problem.bounds.capped()),
-             problem.bounds.upper},
+             problem.bounds.upper,
+             nullptr,
+             in_set_.data()},
         bounds_(problem.bounds),
         uniform_response_range_(uniform_response_range),
         approach_(problem.approach) {
@@ -270,16 +275,21 @@ class Iteration {
       }
       ++result_.preconditioner_applications;
     }
-    const auto [z_sum, gz, cells, gap_sum] = with_z([&](auto z) {
-      return sums<4>(comm_, n_, [&](std::size_t i) {
-        const double g = gap(i);
-        const double in_set = set_.contains(i, g) ? 1.0 : 0.0;
-        const double zi = z(i);
-        return std::array<double, 4>{in_set * zi, in_set * (g * zi), in_set, in_set * g};
+    // The set's cells and its sum of g are measure()'s; z = g needs no pass.
+    double z_sum = set_gap_sum_;
+    double gz = gap_norm_;
+    if (!z_is_gap_) {
+      const std::uint8_t* const in_set = in_set_.data();
+      const Work* const z = preconditioned_gap_;
+      const std::array<double, 2> along = sums<2>(comm_, n_, [&](std::size_t i) {
+        const double zi = in_set[i] ? static_cast<double>(z[i]) : 0.0;
+        return std::array<double, 2>{zi, gap(i) * zi};
       });
-    });
-    search_cells_ = cells;
-    search_gap_sum_ = gap_sum;
+      z_sum = along[0];
+      gz = along[1];
+    }
+    search_cells_ = set_cells_;
+    search_gap_sum_ = set_gap_sum_;
     z_mean_ = set_.mean_free ? z_sum / search_cells_ : 0.0;
     search_norm_ = gz - z_mean_ * search_gap_sum_;
   }
@@ -302,12 +312,15 @@ class Iteration {
     // iterations it saves.
     const double t_mean =
         problem_.load_controlled && beta != 0.0 && search_cells_ > 0.0 ? direction_sum_ / search_cells_ : 0.0;
+    const std::uint8_t* const in_set = in_set_.data();
     with_z([&](auto z) {
       for_each_index(n_, [&](std::size_t i) {
-        direction_[i] =
-            static_cast<Work>(set_.contains(i, gap(i)) ? (z(i) - z_mean) + beta * (direction_[i] - t_mean) : 0.0);
+        direction_[i] = static_cast<Work>(in_set[i] ? (z(i) - z_mean) + beta * (direction_[i] - t_mean) : 0.0);
       });
     });
+    // g.t on the set from the sums at hand (t is the line above on it):
+    // sum g (z - mean z) + beta sum g (t_old - t_mean).
+    gap_along_new_ = search_norm_ + beta * (gap_along_direction_ - t_mean * search_gap_sum_);
     previous_norm_ = search_norm_;
   }
 
@@ -322,12 +335,14 @@ class Iteration {
   bool step_length(int iteration) {
     kernel_product(direction_, image_);
     ++result_.operator_applications;
-    const auto [image_sum, t_sum, gt, t_image] = sums<4>(comm_, n_, [&](std::size_t i) {
-      const double g = gap(i);
-      const double in_set = set_.contains(i, g) ? 1.0 : 0.0;
-      return std::array<double, 4>{in_set * image_[i], in_set * direction_[i], in_set * (g * direction_[i]),
-                                   in_set * (image_[i] * direction_[i])};
+    // t vanishes off the set: only K t's sum needs the set.
+    const std::uint8_t* const in_set = in_set_.data();
+    const auto [image_sum, t_sum, t_image] = sums<3>(comm_, n_, [&](std::size_t i) {
+      const double ti = direction_[i];
+      const double image = image_[i];
+      return std::array<double, 3>{in_set[i] ? image : 0.0, ti, image * ti};
     });
+    const double gt = gap_along_new_;
     const double image_mean = problem_.load_controlled && search_cells_ > 0.0 ? image_sum / search_cells_ : 0.0;
     const double curvature = t_image - image_mean * t_sum;
     tau_ = gt / curvature;
@@ -705,19 +720,24 @@ class Iteration {
     // pressure-weighted gap by its positive part only (see the header).
     const bool capped = bounds_.capped();
     const double upper = bounds_.upper;
-    const auto [weighted_gap, overlap, pressure_sum, gap_norm, gap_along, released, direction_sum] =
-        sums<7>(comm_, n_, [&](std::size_t i) {
-          const double g = problem_.initial_gap[i] + displacement_[i] - approach;
-          const double in_set = set_.contains(i, g) ? 1.0 : 0.0;  // a mask, not a branch
-          if (store_gap) preconditioned_gap_[i] = static_cast<Work>(in_set * g);
-          const double over = std::max(-g, 0.0);
-          const double weighted = capped ? pressure_[i] * std::max(g, 0.0) : pressure_[i] * std::abs(g);
-          const double overlap_weight = capped ? (upper - pressure_[i]) / upper : 1.0;
-          const double release = capped && bounds_.at_cap(pressure_[i]) && g > 0.0 ? 1.0 : 0.0;
-          return std::array<double, 7>{
-              weighted, overlap_weight * over, pressure_[i], in_set * (g * g), in_set * (g * direction_[i]),
-              release,  in_set * direction_[i]};
-        });
+    std::uint8_t* const in_set_mask = in_set_.data();
+    const auto [weighted_gap, overlap, pressure_sum, gap_norm, gap_along, released, direction_sum, set_cells,
+                set_gap_sum] = sums<9>(comm_, n_, [&](std::size_t i) {
+      const double g = problem_.initial_gap[i] + displacement_[i] - approach;
+      const bool contained = set_.contains(i, g);
+      in_set_mask[i] = contained ? 1 : 0;
+      const double in_set = contained ? 1.0 : 0.0;  // a mask, not a branch
+      if (store_gap) preconditioned_gap_[i] = static_cast<Work>(in_set * g);
+      const double over = std::max(-g, 0.0);
+      const double weighted = capped ? pressure_[i] * std::max(g, 0.0) : pressure_[i] * std::abs(g);
+      const double overlap_weight = capped ? (upper - pressure_[i]) / upper : 1.0;
+      const double release = capped && bounds_.at_cap(pressure_[i]) && g > 0.0 ? 1.0 : 0.0;
+      return std::array<double, 9>{
+          weighted, overlap_weight * over,  pressure_[i], in_set * (g * g), in_set * (g * direction_[i]),
+          release,  in_set * direction_[i], in_set,       in_set * g};
+    });
+    set_cells_ = set_cells;
+    set_gap_sum_ = set_gap_sum;
     released_cells_ = released;
     direction_sum_ = direction_sum;
     gap_norm_ = gap_norm;
@@ -754,6 +774,9 @@ class Iteration {
   Work* correction_;
   Work* correction_image_;
   const bool projected_;  // the form (see the header)
+  // The search set of the last measure(), a byte per cell: set_ reads it
+  // (search_mask) until advance() moves p and u.
+  std::vector<std::uint8_t> in_set_;
   const SearchSet set_;
   const PressureBounds bounds_;
   double& uniform_response_range_;  // ptp(K 1), the solver's
@@ -768,6 +791,9 @@ class Iteration {
   double gap_norm_ = 0.0;             // sum over the search set of g^2
   double gap_along_direction_ = 0.0;  // sum over the search set of g t_old
   double direction_sum_ = 0.0;        // sum over the search set of t_old
+  double set_cells_ = 0.0;            // cells in the search set (measure())
+  double set_gap_sum_ = 0.0;          // sum over the search set of g (measure())
+  double gap_along_new_ = 0.0;        // sum over the search set of g t (conjugate())
   bool z_is_gap_ = true;              // z: g itself, or M^-1 g (preconditioned_gap_)
   double z_mean_ = 0.0;
   double search_cells_ = 0.0;

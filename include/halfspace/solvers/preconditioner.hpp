@@ -39,6 +39,10 @@ struct SearchSet {
   // active-set phase's fixed set, active_set_start.hpp), every cell of it
   // in contact below the cap.
   const std::uint8_t* mask = nullptr;
+  // With the fields: the set as it is now, a byte per cell, which
+  // contains(i) reads instead of p, g0 and u (a solver's snapshot, valid
+  // until it moves p or u).
+  const std::uint8_t* search_mask = nullptr;
 
   static SearchSet of_mask(const std::uint8_t* mask, bool mean_free) {
     SearchSet set;
@@ -51,7 +55,10 @@ struct SearchSet {
   // In contact and below the cap: the cells whose gap vanishes at the
   // solution (the elastic part of the contact).
   bool in_contact(std::size_t i) const { return mask ? mask[i] != 0 : (pressure[i] > 0.0) & (pressure[i] < upper); }
-  bool contains(std::size_t i) const { return mask ? mask[i] != 0 : contains(i, gap(i)); }
+  bool contains(std::size_t i) const {
+    if (mask) return mask[i] != 0;
+    return search_mask ? search_mask[i] != 0 : contains(i, gap(i));
+  }
   // The same for a set of the fields (no mask) and a cell whose gap g the
   // caller has at hand. Bitwise, not short-circuit, so that masks over the
   // cells stay free of branches (contact edges are everywhere).
