@@ -133,23 +133,14 @@ void PaddedRealFft::scatter_rows(int thread, std::size_t first, std::size_t coun
   double* const real = buffer_row(thread, 0);
   fftw_execute_dft_r2c(plan_for(rows_forward_, count), real, as_fftw(reinterpret_cast<std::complex<double>*>(real)));
   const auto* spectra = reinterpret_cast<const std::complex<double>*>(real);
-  const std::size_t cols = spectrum_cols();
-  const std::size_t length = spectrum_rows();
-  for (std::size_t c = 0; c < cols; ++c) {
-    std::complex<double>* const entries = spectrum_ + c * length + first;
-    for (std::size_t r = 0; r < count; ++r) entries[r] = spectra[r * cols + c];
-  }
+  detail::scatter_block(spectra, spectrum_cols(), spectrum_, spectrum_rows(), first, count, false);
 }
 
 void PaddedRealFft::gather_rows(int thread, std::size_t first, std::size_t count) {
   double* const real = buffer_row(thread, 0);
   auto* const spectra = reinterpret_cast<std::complex<double>*>(real);
-  const std::size_t cols = spectrum_cols();
-  const std::size_t length = spectrum_rows();
-  for (std::size_t c = 0; c < cols; ++c) {
-    const std::complex<double>* const entries = spectrum_ + c * length + first;
-    for (std::size_t r = 0; r < count; ++r) spectra[r * cols + c] = entries[r];
-  }
+  detail::gather_block(static_cast<const std::complex<double>*>(spectrum_), spectrum_rows(), spectra, spectrum_cols(),
+                       first, count);
   fftw_execute_dft_c2r(plan_for(rows_backward_, count), as_fftw(spectra), real);
 }
 

@@ -146,6 +146,7 @@ BasicRealFft<Real>::BasicRealFft(BasicRealFft&& other) noexcept
       columns_backward_{std::exchange(other.columns_backward_[0], nullptr),
                         std::exchange(other.columns_backward_[1], nullptr)},
       columns_aligned_(std::exchange(other.columns_aligned_, false)),
+      streaming_(std::exchange(other.streaming_, false)),
       row_buffer_count_(std::exchange(other.row_buffer_count_, 0)),
       owns_buffers_(std::exchange(other.owns_buffers_, true)),
       lazy_input_(std::exchange(other.lazy_input_, false)),
@@ -171,6 +172,7 @@ BasicRealFft<Real>& BasicRealFft<Real>::operator=(BasicRealFft&& other) noexcept
       columns_backward_[k] = std::exchange(other.columns_backward_[k], nullptr);
     }
     columns_aligned_ = std::exchange(other.columns_aligned_, false);
+    streaming_ = std::exchange(other.streaming_, false);
     row_buffers_ = std::exchange(other.row_buffers_, nullptr);
     row_reals_ = std::exchange(other.row_reals_, nullptr);
     row_buffer_count_ = std::exchange(other.row_buffer_count_, 0);
@@ -249,6 +251,9 @@ bool BasicRealFft<Real>::make_transposed_plans(unsigned flags) {
   const int cols = static_cast<int>(cols_);
   const int h = static_cast<int>(spectrum_cols());
   row_buffer_count_ = std::max(1, threads());
+  // Streaming stores need 16-byte aligned entries (a workspace's may not be).
+  streaming_ = std::is_same_v<Real, double> && reinterpret_cast<std::uintptr_t>(spectrum_) % 16 == 0 &&
+               spectrum_size() * sizeof(std::complex<Real>) > detail::kStreamingSpectrumBytes;
   row_buffers_ = reinterpret_cast<std::complex<Real>*>(
       F<Real>::alloc_complex(static_cast<std::size_t>(row_buffer_count_) * kBlockRows * spectrum_cols()));
   if (row_buffers_ == nullptr) return false;
@@ -319,20 +324,12 @@ void BasicRealFft<Real>::transposed_forward_rows(const Real* in) {
 
 template <class Real>
 void BasicRealFft<Real>::scatter_rows(const std::complex<Real>* buffer, std::size_t first, std::size_t count) {
-  const std::size_t h = spectrum_cols();
-  for (std::size_t c = 0; c < h; ++c) {
-    std::complex<Real>* const entries = spectrum_ + c * rows_ + first;
-    for (std::size_t r = 0; r < count; ++r) entries[r] = buffer[r * h + c];
-  }
+  detail::scatter_block(buffer, spectrum_cols(), spectrum_, rows_, first, count, streaming_);
 }
 
 template <class Real>
 void BasicRealFft<Real>::gather_rows(std::complex<Real>* buffer, std::size_t first, std::size_t count) const {
-  const std::size_t h = spectrum_cols();
-  for (std::size_t c = 0; c < h; ++c) {
-    const std::complex<Real>* const entries = spectrum_ + c * rows_ + first;
-    for (std::size_t r = 0; r < count; ++r) buffer[r * h + c] = entries[r];
-  }
+  detail::gather_block(static_cast<const std::complex<Real>*>(spectrum_), rows_, buffer, spectrum_cols(), first, count);
 }
 
 template <class Real>

@@ -195,6 +195,7 @@ class BasicRealFft {
   Plan columns_forward_[2] = {nullptr, nullptr};
   Plan columns_backward_[2] = {nullptr, nullptr};
   bool columns_aligned_ = false;
+  bool streaming_ = false;  // the rows' scatter into the columns by streaming stores
   int row_buffer_count_ = 0;
   bool owns_buffers_ = true;
   bool lazy_input_ = false;  // overwrite_input, own buffers: input_ made on first use
