@@ -209,6 +209,18 @@ using SingleRealFft = BasicRealFft<float>;
 extern template class BasicRealFft<double>;
 extern template class BasicRealFft<float>;
 
+// body(first, count) for the kx columns of `fft` in groups of
+// kColumnBlock (count fewer in the last), in parallel.
+template <class Real, class Body>
+void for_each_column_group(const BasicRealFft<Real>& fft, Body&& body) {
+  const std::size_t columns = fft.spectrum_cols();
+  constexpr std::size_t kGroup = BasicRealFft<Real>::kColumnBlock;
+  linalg::for_each_row((columns + kGroup - 1) / kGroup, kGroup * fft.rows(), [&](std::size_t group) {
+    const std::size_t first = group * kGroup;
+    body(first, std::min(kGroup, columns - first));
+  });
+}
+
 // out = the unnormalised inverse transform of the spectrum of in once
 // multiply(first, count) has worked on its kx columns [first, first +
 // count): the rows forward, then each few columns forward, multiplied and
@@ -219,11 +231,7 @@ template <class Real, class Value, class Multiply>
 void transform_by_columns(BasicRealFft<Real>& fft, std::span<const Value> in, std::span<Value> out,
                           Multiply&& multiply) {
   fft.forward_rows_from(in);
-  const std::size_t columns = fft.spectrum_cols();
-  constexpr std::size_t kGroup = BasicRealFft<Real>::kColumnBlock;
-  linalg::for_each_row((columns + kGroup - 1) / kGroup, kGroup * fft.rows(), [&](std::size_t group) {
-    const std::size_t first = group * kGroup;
-    const std::size_t count = std::min(kGroup, columns - first);
+  for_each_column_group(fft, [&](std::size_t first, std::size_t count) {
     fft.transform_columns(first, count, true);
     multiply(first, count);
     fft.transform_columns(first, count, false);
@@ -245,11 +253,7 @@ void transform_pair_by_columns(BasicRealFft<Real>& a, BasicRealFft<Real>& b, std
                                Multiply&& multiply) {
   a.forward_rows_from(in_a);
   b.forward_rows_from(in_b);
-  const std::size_t columns = a.spectrum_cols();
-  constexpr std::size_t kGroup = BasicRealFft<Real>::kColumnBlock;
-  linalg::for_each_row((columns + kGroup - 1) / kGroup, kGroup * a.rows(), [&](std::size_t group) {
-    const std::size_t first = group * kGroup;
-    const std::size_t count = std::min(kGroup, columns - first);
+  for_each_column_group(a, [&](std::size_t first, std::size_t count) {
     a.transform_columns(first, count, true);
     b.transform_columns(first, count, true);
     multiply(first, count);
