@@ -111,11 +111,12 @@ double result_bytes(const Extents& g, double history) {
 // The fields of a Polonsky-Keer solve: the pressure and displacement, the
 // two work vectors (the gap, not stored during the iteration, takes their
 // place at the end: never more than they), the residual history reserved
-// for the iteration limit; and a byte per cell for the active-set phase
-// before it (active_set_start.cpp), whose displacement takes the place of
-// the solve's and whose byte mask is the one field more.
+// for the iteration limit; a byte per cell for the search set's mask
+// (polonsky_keer.cpp); and a byte per cell for the active-set phase before
+// it (active_set_start.cpp), whose displacement takes the place of the
+// solve's and whose byte mask is the one field more.
 double solve_bytes(const Extents& g, double history, bool mixed) {
-  return (2.0 * kDouble + 2.0 * work_bytes(g, mixed) + 1.0) * g.cells() + history;
+  return (2.0 * kDouble + 2.0 * work_bytes(g, mixed) + 2.0) * g.cells() + history;
 }
 
 // The dense LCP solvers (lemke, lcpquad) on N <= kMaxDenseCells cells: the
