@@ -251,8 +251,8 @@ bool BasicRealFft<Real>::make_transposed_plans(unsigned flags) {
   const int cols = static_cast<int>(cols_);
   const int h = static_cast<int>(spectrum_cols());
   row_buffer_count_ = std::max(1, threads());
-  // Streaming stores need 16-byte aligned entries (a workspace's may not be).
-  streaming_ = std::is_same_v<Real, double> && reinterpret_cast<std::uintptr_t>(spectrum_) % 16 == 0 &&
+  // Streaming stores need entries aligned to their size (a workspace's may not be).
+  streaming_ = reinterpret_cast<std::uintptr_t>(spectrum_) % sizeof(std::complex<Real>) == 0 &&
                spectrum_size() * sizeof(std::complex<Real>) > detail::kStreamingSpectrumBytes;
   row_buffers_ = reinterpret_cast<std::complex<Real>*>(
       F<Real>::alloc_complex(static_cast<std::size_t>(row_buffer_count_) * kBlockRows * spectrum_cols()));

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <complex>
 #include <cstddef>
+#include <cstring>
 #include <type_traits>
 
 #if defined(__SSE2__)
@@ -44,15 +45,19 @@ void for_each_row_block(std::size_t rows, int buffers, Body&& body) {
 inline constexpr std::size_t kStreamingSpectrumBytes = std::size_t{16} << 20;
 
 // Stores `value` at `to`; streaming (the line written without being read
-// first, and not kept in the caches) for double spectra past the caches.
+// first, and not kept in the caches) for spectra past the caches.
 template <class Real>
 inline void store_entry(std::complex<Real>* to, const std::complex<Real>& value, bool streaming) {
-#if defined(__SSE2__)
-  if constexpr (std::is_same_v<Real, double>) {
-    if (streaming) {
+#if defined(__SSE2__) && defined(__x86_64__)
+  if (streaming) {
+    if constexpr (std::is_same_v<Real, double>) {
       _mm_stream_pd(reinterpret_cast<double*>(to), _mm_loadu_pd(reinterpret_cast<const double*>(&value)));
-      return;
+    } else {
+      long long bits = 0;  // a float entry's 8 bytes
+      std::memcpy(&bits, &value, sizeof bits);
+      _mm_stream_si64(reinterpret_cast<long long*>(to), bits);
     }
+    return;
   }
 #endif
   (void)streaming;
