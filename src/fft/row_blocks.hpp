@@ -20,7 +20,7 @@ namespace halfspace::fft::detail {
 // Rows per block: a multiple of 16, so that every block of a real array
 // starts at its first row's alignment (16 rows of floats are a multiple of
 // 64 bytes) and one FFTW plan serves every full block. 64 rather than 16:
-// each kx block then receives 1 kB runs, not 256 B, and whole products ran
+// each kx block then receives 1 kB runs, not 256 B, and whole solves ran
 // 5-10 % faster from 512^2 to 4096^2 (development log, 2026-12-01).
 inline constexpr std::size_t kBlockRows = 64;
 
