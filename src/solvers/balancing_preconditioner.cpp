@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cstdint>
 #include <stdexcept>
 #include <type_traits>
 #include <utility>
@@ -121,7 +120,8 @@ template <class T>
 void BalancingPreconditioner::apply_balancing(std::span<const T> in, std::span<T> out) {
   const std::size_t n = op_.local_size();
   const linalg::Communicator& comm = op_.communicator();
-  const bool mean_free = set_.mean_free;
+  const SearchSet& set = set_;
+  const bool mean_free = set.mean_free;
   T* z = out.data();
   // One field holds Z y1, then its image (K in place), then K of M^-1's
   // output: post_correction needs the coarse y1 alone, which it keeps.
@@ -133,17 +133,10 @@ void BalancingPreconditioner::apply_balancing(std::span<const T> in, std::span<T
       op_.apply({from, n}, {to, n});
     }
   };
-  const SearchSet& given = set_;
-  const bool make_mask = given.mask == nullptr && given.search_mask == nullptr;
-  if (make_mask && set_mask_.size() != n) set_mask_.assign(n, 0);
-  std::uint8_t* mask = set_mask_.data();
   const auto [count, in_sum] = sums<2>(comm, n, [&](std::size_t i) {
-    const bool contained = given.contains(i);
-    if (make_mask) mask[i] = contained ? 1 : 0;
-    const double inside = contained ? 1.0 : 0.0;
+    const double inside = set.contains(i) ? 1.0 : 0.0;
     return std::array<double, 2>{inside, inside * static_cast<double>(in[i])};
   });
-  const SearchSet set = make_mask ? SearchSet::of_mask(mask, mean_free) : given;
   const double shift = mean_free ? in_sum / count : 0.0;
   for_each_index(n, [&](std::size_t i) { z[i] = static_cast<T>(set.contains(i) ? in[i] - shift : 0.0); });
   // values = values - minus on the set, zero elsewhere, mean-free on the set

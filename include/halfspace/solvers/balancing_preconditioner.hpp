@@ -18,8 +18,6 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <cstdint>
-#include <vector>
 
 #include "halfspace/operators/influence_operator.hpp"
 #include "halfspace/solvers/block_deflation.hpp"
@@ -72,10 +70,6 @@ class BalancingPreconditioner final : public Preconditioner {
   BlockDeflation& deflation_;
   DeflationSchedule schedule_;
   SearchSet set_;
-  // The search set as a byte mask, made by apply_balancing's first pass
-  // (1 B per cell, when the correction first applies): its other passes
-  // read a byte per cell instead of p, g0 and u.
-  std::vector<std::uint8_t> set_mask_;
   bool active_ = false;        // the correction applies in this iteration
   bool continuing_ = false;    // the next begin_solve() keeps the schedule
   bool kernel_known_ = false;  // deflation_ has the kernel (one product, when first needed)

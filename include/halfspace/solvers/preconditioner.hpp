@@ -90,7 +90,9 @@ class Preconditioner {
   // an adapting M^-1 keeps what it has learned about the iteration.
   virtual void continue_next_solve() {}
   // Before an application in a contact solve: the iterate's search set
-  // (valid until the application) and the residuals so far. Returns whether
+  // (valid until the application; a byte mask in it, mask or search_mask,
+  // spares the application's passes three fields per cell) and the
+  // residuals so far. Returns whether
   // M^-1 changed since the last application, so that the solver restarts
   // its conjugate directions.
   virtual bool adapt(const SearchSet& /*set*/, std::span<const double> /*residuals*/) { return false; }
