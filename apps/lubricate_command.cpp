@@ -580,25 +580,6 @@ HeightMap read_film_map(const LubricateOptions& o, const SurfaceChoice& choice) 
   return map;
 }
 
-// On several processes only the steady rigid film of a map runs on slabs
-// (mpi/slab_film_rows.hpp); the others are refused, on every process alike.
-void require_film_on_slabs(const lubrication::LubricationProblem& problem) {
-  const auto refuse = [](std::string_view what, std::string_view why) {
-    throw InputError(
-        fmt::format("{} is not available with more than one process ({}): run it without mpirun (the "
-                    "steady rigid film of a map and every film of a profile are)",
-                    what, why));
-  };
-  if (problem.kind == lubrication::FilmKind::mixed) {
-    refuse("the mixed film (--mixed)", "its contact and elastic solves do not run on slabs yet");
-  }
-  if (problem.kind == lubrication::FilmKind::elastic) {
-    refuse("the elastic film (--E-star or E1, nu1, E2, nu2)",
-           "its Newton solve's preconditioner does not run on slabs yet");
-  }
-  if (problem.transient) refuse("the transient film (--time-step)", "its history file is written by one process");
-}
-
 // The rigid film at a separation or a load, on the whole map or on the rows
 // `place` holds (the same code: the rows' solver gives the serial iterates).
 int run_rigid(const LubricateOptions& o, const HeightMap& map, const Grid& grid, const FilmPlace& place,
@@ -642,13 +623,15 @@ int solve_film(const LubricateOptions& o) {
   io::check_output_path(*o.output);
   if (o.stribeck) io::check_output_path(*o.stribeck);
 
+  // On several processes only the steady rigid film's solver runs on slabs
+  // of rows (mpi/slab_film_rows.hpp); the first process solves the others.
+  const bool on_slabs = problem.kind == lubrication::FilmKind::rigid && !problem.transient;
   return run_film_everywhere([&] { return read_film_map(o, surface); },
                              [&](HeightMap& map, const FilmPlace& place) {
                                const Grid grid = map.dimension == 1
                                                      ? Grid::line(map.nx, map.dx, problem.boundary)
                                                      : Grid::plane(map.nx, map.ny, map.dx, map.dy, problem.boundary);
                                problem.check_grid(grid, spelling, map.source);
-                               if (!place.whole) require_film_on_slabs(problem);
                                if (problem.kind == lubrication::FilmKind::mixed) {
                                  return run_mixed(o, map, grid, problem);
                                }
@@ -657,7 +640,8 @@ int solve_film(const LubricateOptions& o) {
                                }
                                if (problem.transient) return run_transient(o, map, grid, problem);
                                return run_rigid(o, map, grid, place, problem);
-                             });
+                             },
+                             on_slabs);
 }
 
 // --plot: the tool is found (and its packages checked) before the solve; the

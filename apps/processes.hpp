@@ -138,12 +138,14 @@ struct FilmPlace {
 
 // Reads the height map with read() and returns run(map, place). One process
 // (and the serial build): the whole map here. Several MPI processes: the
-// first reads the map whole (a failure throws on every process) and hands
-// every process its rows of a 2D map (map.heights; the other members are
-// the whole map's), and all run; a profile, one row, is run by the first
-// process alone as one process runs it, the others waiting. A failure that
-// only some processes meet while running ends them all.
+// first reads the map whole (a failure throws on every process); where
+// `on_slabs` (the films whose solver runs on rows: lubrication/film_rows.hpp)
+// it hands every process its rows of a 2D map (map.heights; the other
+// members are the whole map's), and all run; a profile, one row, and a film
+// not on slabs are run by the first process alone as one process runs them,
+// the others waiting. A failure that only some processes meet while running
+// ends them all.
 int run_film_everywhere(const std::function<HeightMap()>& read,
-                        const std::function<int(HeightMap& map, const FilmPlace& place)>& run);
+                        const std::function<int(HeightMap& map, const FilmPlace& place)>& run, bool on_slabs);
 
 }  // namespace halfspace::app

@@ -3,8 +3,9 @@
 // map whole (the serial command's reader) and hands every process its slab
 // of rows; the rigid film is solved on the slabs (mpi::SlabFilmRows, the
 // serial solver's iterates) and all write their rows of the result file at
-// once (the parallel HDF5). A profile, one row, is run by the first process
-// as the serial program runs it.
+// once (the parallel HDF5). A profile, one row, and the films whose solvers
+// do not run on rows (elastic, mixed, transient) are run by the first
+// process as the serial program runs them.
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -57,7 +58,7 @@ HeightMap broadcast_map_description(const mpi::MpiCommunicator& world, const std
 }  // namespace
 
 int run_film_everywhere(const std::function<HeightMap()>& read,
-                        const std::function<int(HeightMap& map, const FilmPlace& place)>& run) {
+                        const std::function<int(HeightMap& map, const FilmPlace& place)>& run, bool on_slabs) {
   const mpi::MpiCommunicator world = mpi_world();
   if (world.size() == 1) {
     HeightMap map = read();
@@ -69,7 +70,7 @@ int run_film_everywhere(const std::function<HeightMap()>& read,
     if (root) whole.emplace(read());
   });
   HeightMap map = broadcast_map_description(world, whole);
-  if (map.dimension == 1) return run_on_first_process([&] { return run(*whole, FilmPlace{}); });
+  if (map.dimension == 1 || !on_slabs) return run_on_first_process([&] { return run(*whole, FilmPlace{}); });
 
   const mpi::SlabLayout slab = mpi::slab_layout(map.nx, map.ny, world);
   map.heights.resize(static_cast<Eigen::Index>(slab.local_size()));
