@@ -79,6 +79,16 @@ struct Fftw<float> {
 // Held for every call into FFTW other than fftw_execute.
 std::mutex& fftw_planner_mutex();
 
+// Threads for one transform of `reals` real values: the program's threads,
+// or one below kMinRealsForThreads (256^2). A waiting OpenMP thread
+// (passive, as the program makes them) takes tens of microseconds to wake,
+// about what a whole 128^2 transform pair takes on one thread: with two
+// threads a bare 128^2 pair ran 4x slower than on one, and the mixed film
+// of 64^2 cells (its padded 128^2 transforms) 1.2x slower (development log,
+// 2026-12-01).
+inline constexpr std::size_t kMinRealsForThreads = std::size_t{1} << 16;
+int transform_threads(std::size_t reals);
+
 // The lock held: sets up FFTW's thread support (both precisions), once per process. Must come
 // before planning and before importing wisdom (wisdom names the threaded
 // solvers, which exist only after it). Throws std::runtime_error on failure.

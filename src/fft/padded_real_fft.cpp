@@ -66,7 +66,8 @@ PaddedRealFft::PaddedRealFft(std::size_t rows, std::size_t cols, FftPlanning pla
     detail::init_fftw_threads();
     spectrum_ = reinterpret_cast<std::complex<double>*>(fftw_alloc_complex(spectrum_size()));
     if (spectrum_ != nullptr) detail::advise_huge_pages(spectrum_, spectrum_size() * sizeof(std::complex<double>));
-    buffers_ = rows == 1 ? 1 : std::max(1, threads());
+    const int team = detail::transform_threads(2 * rows * 2 * cols);  // the padded grid's reals
+    buffers_ = rows == 1 ? 1 : team;
     real_ = fftw_alloc_real((rows == 1 ? 1 : static_cast<std::size_t>(buffers_) * kBlockRows) * real_stride());
     allocated = spectrum_ != nullptr && real_ != nullptr;
     if (allocated) {
@@ -74,7 +75,7 @@ PaddedRealFft::PaddedRealFft(std::size_t rows, std::size_t cols, FftPlanning pla
       const unsigned flags = detail::planner_flags(planning) | FFTW_DESTROY_INPUT;
       if (rows == 1) {
         // One long row: FFTW's threaded 1D plans, out of place.
-        fftw_plan_with_nthreads(threads());
+        fftw_plan_with_nthreads(team);
         rows_forward_[0] = row_plan(true, padded_cols, 1, real_, stride, spectrum_, flags);
         rows_backward_[0] = row_plan(false, padded_cols, 1, real_, stride, spectrum_, flags);
         planned = rows_forward_[0] != nullptr && rows_backward_[0] != nullptr;
@@ -96,7 +97,7 @@ PaddedRealFft::PaddedRealFft(std::size_t rows, std::size_t cols, FftPlanning pla
             planned = planned && rows_backward_[k] != nullptr;
           }
         }
-        fftw_plan_with_nthreads(threads());
+        fftw_plan_with_nthreads(team);
         columns_forward_ = block_plan(FFTW_FORWARD, padded_rows, spectrum_columns, spectrum_, flags);
         columns_backward_ = block_plan(FFTW_BACKWARD, padded_rows, spectrum_columns, spectrum_, flags);
         planned = planned && columns_forward_ != nullptr && columns_backward_ != nullptr;

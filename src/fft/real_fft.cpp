@@ -46,6 +46,10 @@ void init_fftw_threads() {
   }
 }
 
+int transform_threads(std::size_t reals) {
+  return reals < kMinRealsForThreads ? 1 : std::max(1, threads());
+}
+
 unsigned planner_flags(FftPlanning planning) {
   switch (planning) {
     case FftPlanning::measure:
@@ -148,6 +152,7 @@ BasicRealFft<Real>::BasicRealFft(BasicRealFft&& other) noexcept
       columns_aligned_(std::exchange(other.columns_aligned_, false)),
       streaming_(std::exchange(other.streaming_, false)),
       row_buffer_count_(std::exchange(other.row_buffer_count_, 0)),
+      team_(other.team_),
       owns_buffers_(std::exchange(other.owns_buffers_, true)),
       lazy_input_(std::exchange(other.lazy_input_, false)),
       input_alignment_(other.input_alignment_),
@@ -176,6 +181,7 @@ BasicRealFft<Real>& BasicRealFft<Real>::operator=(BasicRealFft&& other) noexcept
     row_buffers_ = std::exchange(other.row_buffers_, nullptr);
     row_reals_ = std::exchange(other.row_reals_, nullptr);
     row_buffer_count_ = std::exchange(other.row_buffer_count_, 0);
+    team_ = other.team_;
     owns_buffers_ = std::exchange(other.owns_buffers_, true);
     lazy_input_ = std::exchange(other.lazy_input_, false);
     input_alignment_ = other.input_alignment_;
@@ -204,7 +210,8 @@ void BasicRealFft<Real>::make_plans(int rank, const int* dims, FftPlanning plann
     output_ = output == FftOutput::separate ? F<Real>::alloc_real(real_size()) : input_;
     allocated = input_ != nullptr && output_ != nullptr && spectrum_ != nullptr;
     if (allocated) {
-      F<Real>::plan_with_nthreads(threads());
+      team_ = detail::transform_threads(real_size());
+      F<Real>::plan_with_nthreads(team_);
       detail::before_planning(planning, kSingle<Real>);
       const unsigned flags = planner_flags(planning);
       if (transposed_) {
@@ -250,7 +257,7 @@ bool BasicRealFft<Real>::make_transposed_plans(unsigned flags) {
   const int rows = static_cast<int>(rows_);
   const int cols = static_cast<int>(cols_);
   const int h = static_cast<int>(spectrum_cols());
-  row_buffer_count_ = std::max(1, threads());
+  row_buffer_count_ = team_;
   // Streaming stores need entries aligned to their size (a workspace's may not be).
   streaming_ = reinterpret_cast<std::uintptr_t>(spectrum_) % sizeof(std::complex<Real>) == 0 &&
                spectrum_size() * sizeof(std::complex<Real>) > detail::kStreamingSpectrumBytes;
@@ -285,7 +292,7 @@ bool BasicRealFft<Real>::make_transposed_plans(unsigned flags) {
   }
   columns_aligned_ = F<Real>::alignment_of(reinterpret_cast<Real*>(spectrum_ + rows_)) ==
                      F<Real>::alignment_of(reinterpret_cast<Real*>(spectrum_));
-  F<Real>::plan_with_nthreads(threads());
+  F<Real>::plan_with_nthreads(row_buffer_count_);
   forward_plan_ = F<Real>::plan_many_c2c(1, &rows, h, as_fftw(spectrum_), nullptr, 1, rows, as_fftw(spectrum_), nullptr,
                                          1, rows, FFTW_FORWARD, flags);
   backward_plan_ = F<Real>::plan_many_c2c(1, &rows, h, as_fftw(spectrum_), nullptr, 1, rows, as_fftw(spectrum_),

@@ -86,6 +86,8 @@ class BasicRealFft {
   std::size_t real_size() const { return rows_ * cols_; }
   std::size_t spectrum_cols() const { return cols_ / 2 + 1; }
   std::size_t spectrum_size() const { return rows_ * spectrum_cols(); }
+  // The threads a transposed transform runs on (detail::transform_threads).
+  int team() const { return team_; }
   // The spectrum as blocks x length: rows x spectrum_cols() (row-major) or
   // spectrum_cols() x rows (transposed).
   bool transposed() const { return transposed_; }
@@ -197,6 +199,7 @@ class BasicRealFft {
   bool columns_aligned_ = false;
   bool streaming_ = false;  // the rows' scatter into the columns by streaming stores
   int row_buffer_count_ = 0;
+  int team_ = 1;  // detail::transform_threads of the real size
   bool owns_buffers_ = true;
   bool lazy_input_ = false;  // overwrite_input, own buffers: input_ made on first use
   // fftw_alignment_of the planned real arrays: new-array execution needs the same.
@@ -215,10 +218,16 @@ template <class Real, class Body>
 void for_each_column_group(const BasicRealFft<Real>& fft, Body&& body) {
   const std::size_t columns = fft.spectrum_cols();
   constexpr std::size_t kGroup = BasicRealFft<Real>::kColumnBlock;
-  linalg::for_each_row((columns + kGroup - 1) / kGroup, kGroup * fft.rows(), [&](std::size_t group) {
+  const auto group_body = [&](std::size_t group) {
     const std::size_t first = group * kGroup;
     body(first, std::min(kGroup, columns - first));
-  });
+  };
+  const std::size_t groups = (columns + kGroup - 1) / kGroup;
+  if (fft.team() <= 1) {
+    for (std::size_t group = 0; group < groups; ++group) group_body(group);
+    return;
+  }
+  linalg::for_each_row(groups, kGroup * fft.rows(), group_body);
 }
 
 // out = the unnormalised inverse transform of the spectrum of in once
