@@ -66,7 +66,7 @@ PaddedRealFft::PaddedRealFft(std::size_t rows, std::size_t cols, FftPlanning pla
     detail::init_fftw_threads();
     spectrum_ = reinterpret_cast<std::complex<double>*>(fftw_alloc_complex(spectrum_size()));
     if (spectrum_ != nullptr) detail::advise_huge_pages(spectrum_, spectrum_size() * sizeof(std::complex<double>));
-    const int team = detail::transform_threads(2 * rows * 2 * cols);  // the padded grid's reals
+    const int team = detail::transform_threads((rows == 1 ? 1 : 2 * rows) * 2 * cols);  // the padded grid's reals
     buffers_ = rows == 1 ? 1 : team;
     real_ = fftw_alloc_real((rows == 1 ? 1 : static_cast<std::size_t>(buffers_) * kBlockRows) * real_stride());
     allocated = spectrum_ != nullptr && real_ != nullptr;

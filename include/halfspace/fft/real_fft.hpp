@@ -86,7 +86,7 @@ class BasicRealFft {
   std::size_t real_size() const { return rows_ * cols_; }
   std::size_t spectrum_cols() const { return cols_ / 2 + 1; }
   std::size_t spectrum_size() const { return rows_ * spectrum_cols(); }
-  // The threads a transposed transform runs on (detail::transform_threads).
+  // The threads the transform runs on: one below 256^2 (detail::transform_threads).
   int team() const { return team_; }
   // The spectrum as blocks x length: rows x spectrum_cols() (row-major) or
   // spectrum_cols() x rows (transposed).
