@@ -18,9 +18,9 @@
 #include "halfspace/io/fft_wisdom_file.hpp"
 #include "halfspace/io/output_file.hpp"
 #include "halfspace/memory_estimate.hpp"
+#include "halfspace/openmp_waiting.hpp"
 #include "halfspace/version.hpp"
 #include "lubricate_command.hpp"
-#include "openmp_waiting.hpp"
 #include "paper_command.hpp"
 #include "processes.hpp"
 #include "solve_command.hpp"
@@ -28,7 +28,7 @@
 
 int main(int argc, char** argv) {
   // First: it may start the program again, with OMP_WAIT_POLICY=passive.
-  halfspace::app::use_passive_openmp_waiting(argv);
+  halfspace::use_passive_openmp_waiting(argv);
   // MPI's setup, in an MPI build, before anything else reads argv.
   const halfspace::app::Processes processes(argc, argv);
   const bool prints = halfspace::app::prints_messages();

@@ -16,6 +16,7 @@
 #include "ehl_case.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/lubrication/elastic_film.hpp"
+#include "halfspace/openmp_waiting.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
 #include "support/analytic_solutions.hpp"
 
@@ -25,6 +26,9 @@ using bench::kEStar;
 using bench::kRadius;
 
 int main(int argc, char** argv) {
+  // As the halfspace program: spinning threads beside another process made
+  // a 128^2 mixed film take 279 s instead of 31 (development log, 2026-12-01).
+  halfspace::use_passive_openmp_waiting(argv);
   if (argc < 2) {
     fmt::print(stderr,
                "usage: ehl_scaling N [gmres|dense] [neighbourhood] [cold|sequenced] [tolerance] "

@@ -18,6 +18,7 @@
 #include "ehl_case.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/lubrication/mixed_film.hpp"
+#include "halfspace/openmp_waiting.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
 
 using namespace halfspace;
@@ -35,6 +36,9 @@ double waves(double x, double length, double amplitude, double phase) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // As the halfspace program: spinning threads beside another process made
+  // a 128^2 mixed film take 279 s instead of 31 (development log, 2026-12-01).
+  halfspace::use_passive_openmp_waiting(argv);
   if (argc < 2) {
     fmt::print(stderr,
                "usage: mixed_scaling N [speed] [gmres|dense|automatic] [neighbourhood] [sequenced|cold] "

@@ -4,8 +4,9 @@
 // passive. On a machine shared with other processes that spinning takes the
 // cores the others need, and a solve runs 15-30 times slower than alone.
 // The halfspace program makes the policy passive itself (docs/usage.md,
-// Threads); a program that links the library should set
-// OMP_WAIT_POLICY=passive in its environment before it starts (the GNU
+// Threads); a program that links the library should call
+// use_passive_openmp_waiting (openmp_waiting.hpp) first thing in main, or
+// set OMP_WAIT_POLICY=passive in its environment before it starts (the GNU
 // OpenMP runtime reads it when it is loaded, before main).
 #pragma once
 

@@ -7,7 +7,7 @@
 // machine is idle (bench/results/2026-11-25-concurrent.md).
 #pragma once
 
-namespace halfspace::app {
+namespace halfspace {
 
 // Makes this process's OpenMP threads wait passively unless the user chose a
 // policy (OMP_WAIT_POLICY or GOMP_SPINCOUNT set and not empty). GNU OpenMP reads its
@@ -18,4 +18,4 @@ namespace halfspace::app {
 // (then it runs with the runtime's default waiting).
 void use_passive_openmp_waiting(char** argv);
 
-}  // namespace halfspace::app
+}  // namespace halfspace

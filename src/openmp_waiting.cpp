@@ -1,12 +1,13 @@
-// Passive OpenMP waiting for the program, by executing it again with the
-// policy in its environment (see the header for why).
-#include "openmp_waiting.hpp"
+// Passive OpenMP waiting for a program (the halfspace program, the film
+// benchmarks), by executing it again with the policy in its environment
+// (see the header for why).
+#include "halfspace/openmp_waiting.hpp"
 
 #include <unistd.h>
 
 #include <cstdlib>
 
-namespace halfspace::app {
+namespace halfspace {
 
 namespace {
 
@@ -25,4 +26,4 @@ void use_passive_openmp_waiting(char** argv) {
   ::execv("/proc/self/exe", argv);
 }
 
-}  // namespace halfspace::app
+}  // namespace halfspace
