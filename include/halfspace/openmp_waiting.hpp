@@ -1,10 +1,8 @@
 // OpenMP threads that wait for work spin on their core for a while (GNU
 // OpenMP: up to 300,000 spins per wait) unless OMP_WAIT_POLICY is passive.
 // Alone on a machine that costs nothing; beside other busy processes the
-// spinning threads take the cores those need, and a solve ran 15-30 times
-// slower than alone (DeflatedSolverTest/Periodic: 20.7 s instead of 0.68 s
-// with two threads under load). Passive waiting costs a few percent when the
-// machine is idle (bench/results/2026-11-25-concurrent.md).
+// spinning threads take the cores those need, and solves run many times
+// slower than alone (measured: docs/usage.md, Sharing the machine).
 #pragma once
 
 namespace halfspace {

@@ -151,7 +151,6 @@ BasicRealFft<Real>::BasicRealFft(BasicRealFft&& other) noexcept
                         std::exchange(other.columns_backward_[1], nullptr)},
       columns_aligned_(std::exchange(other.columns_aligned_, false)),
       streaming_(std::exchange(other.streaming_, false)),
-      row_buffer_count_(std::exchange(other.row_buffer_count_, 0)),
       team_(other.team_),
       owns_buffers_(std::exchange(other.owns_buffers_, true)),
       lazy_input_(std::exchange(other.lazy_input_, false)),
@@ -180,7 +179,6 @@ BasicRealFft<Real>& BasicRealFft<Real>::operator=(BasicRealFft&& other) noexcept
     streaming_ = std::exchange(other.streaming_, false);
     row_buffers_ = std::exchange(other.row_buffers_, nullptr);
     row_reals_ = std::exchange(other.row_reals_, nullptr);
-    row_buffer_count_ = std::exchange(other.row_buffer_count_, 0);
     team_ = other.team_;
     owns_buffers_ = std::exchange(other.owns_buffers_, true);
     lazy_input_ = std::exchange(other.lazy_input_, false);
@@ -257,15 +255,14 @@ bool BasicRealFft<Real>::make_transposed_plans(unsigned flags) {
   const int rows = static_cast<int>(rows_);
   const int cols = static_cast<int>(cols_);
   const int h = static_cast<int>(spectrum_cols());
-  row_buffer_count_ = team_;
   // Streaming stores need entries aligned to their size (a workspace's may not be).
   streaming_ = reinterpret_cast<std::uintptr_t>(spectrum_) % sizeof(std::complex<Real>) == 0 &&
                spectrum_size() * sizeof(std::complex<Real>) > detail::kStreamingSpectrumBytes;
   row_buffers_ = reinterpret_cast<std::complex<Real>*>(
-      F<Real>::alloc_complex(static_cast<std::size_t>(row_buffer_count_) * kBlockRows * spectrum_cols()));
+      F<Real>::alloc_complex(static_cast<std::size_t>(team_) * kBlockRows * spectrum_cols()));
   if (row_buffers_ == nullptr) return false;
   if constexpr (!std::is_same_v<Real, double>) {
-    row_reals_ = F<Real>::alloc_real(static_cast<std::size_t>(row_buffer_count_) * kBlockRows * cols_);
+    row_reals_ = F<Real>::alloc_real(static_cast<std::size_t>(team_) * kBlockRows * cols_);
     if (row_reals_ == nullptr) return false;
   }
   // The rows' plans run one per thread, inside transposed_forward's loop.
@@ -292,7 +289,7 @@ bool BasicRealFft<Real>::make_transposed_plans(unsigned flags) {
   }
   columns_aligned_ = F<Real>::alignment_of(reinterpret_cast<Real*>(spectrum_ + rows_)) ==
                      F<Real>::alignment_of(reinterpret_cast<Real*>(spectrum_));
-  F<Real>::plan_with_nthreads(row_buffer_count_);
+  F<Real>::plan_with_nthreads(team_);
   forward_plan_ = F<Real>::plan_many_c2c(1, &rows, h, as_fftw(spectrum_), nullptr, 1, rows, as_fftw(spectrum_), nullptr,
                                          1, rows, FFTW_FORWARD, flags);
   backward_plan_ = F<Real>::plan_many_c2c(1, &rows, h, as_fftw(spectrum_), nullptr, 1, rows, as_fftw(spectrum_),
@@ -320,7 +317,7 @@ template <class Real>
 void BasicRealFft<Real>::transposed_forward_rows(const Real* in) {
   // Each block's rows into the thread's buffer, then scattered down the
   // kx blocks: count consecutive entries of each.
-  detail::for_each_row_block(rows_, row_buffer_count_, [&](int thread, std::size_t first, std::size_t count) {
+  detail::for_each_row_block(rows_, team_, [&](int thread, std::size_t first, std::size_t count) {
     std::complex<Real>* const buffer = row_buffer(thread);
     // Planned with FFTW_PRESERVE_INPUT: never written through.
     F<Real>::execute_r2c(rows_forward_[count == kBlockRows ? 0 : 1], const_cast<Real*>(in + first * cols_),
@@ -347,7 +344,7 @@ void BasicRealFft<Real>::transposed_backward(Real* out) {
 
 template <class Real>
 void BasicRealFft<Real>::transposed_backward_rows(Real* out) {
-  detail::for_each_row_block(rows_, row_buffer_count_, [&](int thread, std::size_t first, std::size_t count) {
+  detail::for_each_row_block(rows_, team_, [&](int thread, std::size_t first, std::size_t count) {
     std::complex<Real>* const buffer = row_buffer(thread);
     gather_rows(buffer, first, count);
     F<Real>::execute_c2r(rows_backward_[count == kBlockRows ? 0 : 1], as_fftw(buffer), out + first * cols_);
@@ -370,7 +367,7 @@ bool BasicRealFft<Real>::takes_double_rows() const {
 template <class Real>
 void BasicRealFft<Real>::forward_rows_from(std::span<const double> values) requires(!std::is_same_v<Real, double>) {
   assert(takes_double_rows() && values.size() == real_size());
-  detail::for_each_row_block(rows_, row_buffer_count_, [&](int thread, std::size_t first, std::size_t count) {
+  detail::for_each_row_block(rows_, team_, [&](int thread, std::size_t first, std::size_t count) {
     Real* const real = row_real(thread);
     const double* const from = values.data() + first * cols_;
     for (std::size_t i = 0; i < count * cols_; ++i) real[i] = static_cast<Real>(from[i]);
@@ -383,7 +380,7 @@ void BasicRealFft<Real>::forward_rows_from(std::span<const double> values) requi
 template <class Real>
 void BasicRealFft<Real>::backward_rows_into(std::span<double> values) requires(!std::is_same_v<Real, double>) {
   assert(takes_double_rows() && values.size() == real_size());
-  detail::for_each_row_block(rows_, row_buffer_count_, [&](int thread, std::size_t first, std::size_t count) {
+  detail::for_each_row_block(rows_, team_, [&](int thread, std::size_t first, std::size_t count) {
     std::complex<Real>* const buffer = row_buffer(thread);
     gather_rows(buffer, first, count);
     Real* const real = row_real(thread);

@@ -9,7 +9,6 @@
 #include <type_traits>
 
 #include "halfspace/fft/fft_planning.hpp"
-#include "halfspace/linalg/parallel.hpp"
 
 struct fftw_plan_s;   // FFTW's opaque plan types (double and single precision),
 struct fftwf_plan_s;  // so that <fftw3.h> stays private
@@ -198,8 +197,7 @@ class BasicRealFft {
   Plan columns_backward_[2] = {nullptr, nullptr};
   bool columns_aligned_ = false;
   bool streaming_ = false;  // the rows' scatter into the columns by streaming stores
-  int row_buffer_count_ = 0;
-  int team_ = 1;  // detail::transform_threads of the real size
+  int team_ = 1;            // threads (detail::transform_threads); a transposed transform's row buffers
   bool owns_buffers_ = true;
   bool lazy_input_ = false;  // overwrite_input, own buffers: input_ made on first use
   // fftw_alignment_of the planned real arrays: new-array execution needs the same.
@@ -218,16 +216,12 @@ template <class Real, class Body>
 void for_each_column_group(const BasicRealFft<Real>& fft, Body&& body) {
   const std::size_t columns = fft.spectrum_cols();
   constexpr std::size_t kGroup = BasicRealFft<Real>::kColumnBlock;
-  const auto group_body = [&](std::size_t group) {
-    const std::size_t first = group * kGroup;
+  const auto groups = static_cast<std::ptrdiff_t>((columns + kGroup - 1) / kGroup);
+#pragma omp parallel for schedule(static) num_threads(fft.team())
+  for (std::ptrdiff_t group = 0; group < groups; ++group) {
+    const std::size_t first = static_cast<std::size_t>(group) * kGroup;
     body(first, std::min(kGroup, columns - first));
-  };
-  const std::size_t groups = (columns + kGroup - 1) / kGroup;
-  if (fft.team() <= 1) {
-    for (std::size_t group = 0; group < groups; ++group) group_body(group);
-    return;
   }
-  linalg::for_each_row(groups, kGroup * fft.rows(), group_body);
 }
 
 // out = the unnormalised inverse transform of the spectrum of in once
