@@ -21,6 +21,7 @@
 #include <span>
 
 #include "halfspace/error.hpp"
+#include "halfspace/linalg/parallel.hpp"
 
 namespace halfspace::lubrication::detail {
 
@@ -83,11 +84,11 @@ void FilmKrylovSolver::apply_jacobian(const Eigen::VectorXd& v, Eigen::VectorXd&
   product_in_ = dp_ds_.cwiseProduct(v.head(ni));
   op_.apply(std::span<const double>(product_in_.data(), n_), std::span<double>(product_out_.data(), n_));
   const double by_offset = v[ni];
-  for (std::size_t k = 0; k < n_; ++k) {
+  linalg::for_each_index(n_, [&](std::size_t k) {
     const auto kk = static_cast<Eigen::Index>(k);
     if (topology_.fixed(k)) {
       out[kk] = v[kk];
-      continue;
+      return;
     }
     double sum = 0.0;
     for (std::size_t t = rows_->start[k]; t < rows_->start[k + 1]; ++t) {
@@ -97,7 +98,7 @@ void FilmKrylovSolver::apply_jacobian(const Eigen::VectorXd& v, Eigen::VectorXd&
              term.by_film * (product_out_[j] + by_offset);
     }
     out[kk] = sum / mass_scale_;
-  }
+  });
   out[ni] = area_over_load_ * dp_ds_.dot(v.head(ni));
 }
 

@@ -11,12 +11,14 @@
 #include "film_multigrid.hpp"
 
 #include <fmt/format.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
 #include <span>
 
 #include "banded_lu.hpp"
+#include "halfspace/linalg/parallel.hpp"
 
 namespace halfspace::lubrication::detail {
 
@@ -31,6 +33,17 @@ constexpr int kPostSweeps = 1;
 constexpr int kMaxBand = 4;
 // Line sweeps on a coarsest grid too large for the direct solve.
 constexpr int kCoarsestSweeps = 8;
+// A Galerkin product's rows or the lines' factorisations are shared out
+// among the threads from this many nodes: a row costs tens of nanoseconds,
+// waking the team tens of microseconds.
+constexpr std::size_t kParallelNodes = 4096;
+// The sweeps' chains of consecutive lines (chain_lines), on levels of at
+// least kChainedNodes nodes; a smaller level is swept as one chain, line
+// after line, as on one thread: there the wake-ups cost what the second
+// thread saves, and the mixed film's Newton path (which any change of the
+// smoother moves) stays as it was on the grids its continuation runs on.
+constexpr long kLinesPerChain = 32;
+constexpr std::size_t kChainedNodes = 65536;
 
 // The fine-to-coarse transfer of one axis of n nodes: halved if coarsened.
 bool coarsens(std::size_t n, bool periodic) {
@@ -51,11 +64,11 @@ long offset(long a, long b, long n, bool periodic) {
 }  // namespace
 
 void CsrMatrix::residual(const Eigen::VectorXd& b, const Eigen::VectorXd& x, Eigen::VectorXd& out) const {
-  for (std::size_t i = 0; i < rows; ++i) {
+  linalg::for_each_index(rows, [&](std::size_t i) {
     double sum = b[static_cast<Eigen::Index>(i)];
     for (int e = start[i]; e < start[i + 1]; ++e) sum -= value[e] * x[column[e]];
     out[static_cast<Eigen::Index>(i)] = sum;
-  }
+  });
 }
 
 FilmMultigrid::FilmMultigrid(const Grid& grid, int line_axis, bool scale_columns)
@@ -105,6 +118,12 @@ FilmMultigrid::FilmMultigrid(const Grid& grid, int line_axis, bool scale_columns
     if (coarser) {
       level.to_coarse_x = make_axis(nx);
       level.to_coarse_y = make_axis(ny);
+      level.node_x.resize(n);
+      level.node_y.resize(n);
+      for (std::size_t i = 0; i < n; ++i) {
+        level.node_x[i] = static_cast<int>(i % nx);
+        level.node_y[i] = static_cast<int>(i / nx);
+      }
       nx = level.to_coarse_x.coarse;
       ny = level.to_coarse_y.coarse;
     }
@@ -112,7 +131,6 @@ FilmMultigrid::FilmMultigrid(const Grid& grid, int line_axis, bool scale_columns
     levels_.push_back(std::move(level));
     if (!coarser) break;
   }
-  line_rhs_.resize(std::max(levels_[0].nx, levels_[0].ny));
 }
 
 std::size_t FilmMultigrid::line_count(const Level& level) const {
@@ -171,16 +189,53 @@ bool FilmMultigrid::split_lines(Level& level, std::string& message) {
     }
   }
   off.start[a.rows] = static_cast<int>(off.column.size());
-  for (std::size_t line = 0; line < line_count(level); ++line) {
-    std::span<double> band(level.band.data() + line * length * stride, length * stride);
-    std::span<int> pivots(level.pivots.data() + line * length, length);
-    if (!banded_lu_factorise(band, pivots, kl, ku)) {
-      message = fmt::format("the EHL multigrid preconditioner's line {} of the {} x {} grid is singular", line,
-                            level.nx, level.ny);
-      return false;
+  const auto lines = static_cast<std::ptrdiff_t>(line_count(level));
+  std::ptrdiff_t singular = lines;  // the first singular line, if any
+#pragma omp parallel for schedule(static) reduction(min : singular) if (a.rows > kParallelNodes)
+  for (std::ptrdiff_t line = 0; line < lines; ++line) {
+    const auto at = static_cast<std::size_t>(line) * length;
+    if (!banded_lu_factorise(std::span<double>(level.band.data() + at * stride, length * stride),
+                             std::span<int>(level.pivots.data() + at, length), kl, ku)) {
+      singular = std::min(singular, line);
     }
   }
+  if (singular < lines) {
+    message = fmt::format("the EHL multigrid preconditioner's line {} of the {} x {} grid is singular", singular,
+                          level.nx, level.ny);
+    return false;
+  }
+  chain_lines(level);
   return true;
+}
+
+void FilmMultigrid::chain_lines(Level& level) const {
+  // The lines' reach across one another through the off-band entries (the
+  // nearest image's on a periodic grid). Chains at least one longer than
+  // the reach, coloured alternately (an even number of them on a periodic
+  // grid, where the last chain meets the first), touch none of their colour.
+  const CsrMatrix& off = level.off_band;
+  const auto nx = static_cast<long>(level.nx);
+  const auto lines = static_cast<long>(line_count(level));
+  const auto line_of = [&](long j) { return line_axis_ == 0 ? j / nx : j % nx; };
+  long reach = 0;
+  for (std::size_t i = 0; i < off.rows; ++i) {
+    const long own = line_of(static_cast<long>(i));
+    for (int e = off.start[i]; e < off.start[i + 1]; ++e) {
+      reach = std::max(reach, std::abs(offset(own, line_of(off.column[e]), lines, periodic_)));
+    }
+  }
+  const long shortest = std::max(kLinesPerChain, reach + 1);
+  long count = level.nx * level.ny < kChainedNodes ? 1 : std::max(1L, lines / shortest);
+  if (periodic_ && count % 2 == 1) count = std::max(1L, count - 1);
+  level.chains.clear();
+  level.colour_start.assign(count > 1 ? 3 : 2, 0);
+  for (long colour = 0; colour < (count > 1 ? 2 : 1); ++colour) {
+    for (long k = colour; k < count; k += 2) {
+      const long first = lines * k / count, next = lines * (k + 1) / count;
+      level.chains.emplace_back(static_cast<std::size_t>(first), static_cast<std::size_t>(next - first));
+    }
+    level.colour_start[static_cast<std::size_t>(colour) + 1] = level.chains.size();
+  }
 }
 
 void FilmMultigrid::find_fixed(Level& level) {
@@ -198,79 +253,117 @@ void FilmMultigrid::galerkin(const Level& fine, Level& coarse) {
   // The fine stencil's reach sets the coarse one's: children lie within
   // 1.5 fine cells of their coarse cell's centre, parents likewise.
   long reach = 0;
-  for (std::size_t i = 0; i < a.rows; ++i) {
-    const long xi = static_cast<long>(i) % fnx, yi = static_cast<long>(i) / fnx;
-    for (int e = a.start[i]; e < a.start[i + 1]; ++e) {
-      const long j = a.column[e];
-      reach = std::max(
-          {reach, std::abs(offset(xi, j % fnx, fnx, periodic_)), std::abs(offset(yi, j / fnx, fny, periodic_))});
+  const auto fine_rows = static_cast<std::ptrdiff_t>(a.rows);
+#pragma omp parallel for schedule(static) reduction(max : reach) if (a.rows > kParallelNodes)
+  for (std::ptrdiff_t i = 0; i < fine_rows; ++i) {
+    const long xi = fine.node_x[static_cast<std::size_t>(i)], yi = fine.node_y[static_cast<std::size_t>(i)];
+    for (int e = a.start[static_cast<std::size_t>(i)]; e < a.start[static_cast<std::size_t>(i) + 1]; ++e) {
+      const auto j = static_cast<std::size_t>(a.column[e]);
+      reach = std::max({reach, std::abs(offset(xi, fine.node_x[j], fnx, periodic_)),
+                        std::abs(offset(yi, fine.node_y[j], fny, periodic_))});
     }
   }
   const long w = (reach + 3) / 2;
   const long side = 2 * w + 1;
-  window_.assign(static_cast<std::size_t>(side * side), 0.0);
-  touched_.assign(static_cast<std::size_t>(side * side), 0);
   CsrMatrix& c = coarse.own;
   c.rows = coarse.nx * coarse.ny;
   c.start.resize(c.rows + 1);
-  c.column.clear();
-  c.value.clear();
+  row_count_.resize(c.rows);
+  const int team = a.rows > kParallelNodes ? omp_get_max_threads() : 1;
+  if (galerkin_scratch_.size() < static_cast<std::size_t>(team))
+    galerkin_scratch_.resize(static_cast<std::size_t>(team));
+  for (int t = 0; t < team; ++t) {
+    galerkin_scratch_[static_cast<std::size_t>(t)].window.assign(static_cast<std::size_t>(side * side), 0.0);
+    galerkin_scratch_[static_cast<std::size_t>(t)].touched.assign(static_cast<std::size_t>(side * side), 0);
+  }
   const Axis& ax = fine.to_coarse_x;
   const Axis& ay = fine.to_coarse_y;
-  for (long cy = 0; cy < cny; ++cy) {
-    for (long cx = 0; cx < cnx; ++cx) {
-      const auto row = static_cast<std::size_t>(cy * cnx + cx);
-      c.start[row] = static_cast<int>(c.column.size());
-      const Children& kids_y = ay.children[static_cast<std::size_t>(cy)];
-      const Children& kids_x = ax.children[static_cast<std::size_t>(cx)];
-      for (int ky = 0; ky < kids_y.count; ++ky) {
-        for (int kx = 0; kx < kids_x.count; ++kx) {
-          const auto i = static_cast<std::size_t>(kids_y.index[ky] * fnx + kids_x.index[kx]);
-          if (fine.fixed[i]) continue;
-          const double wi = kids_y.weight[ky] * kids_x.weight[kx];
-          for (int e = a.start[i]; e < a.start[i + 1]; ++e) {
-            const long j = a.column[e];
-            if (fine.fixed[static_cast<std::size_t>(j)]) continue;
-            const Parents& px = ax.parents[static_cast<std::size_t>(j % fnx)];
-            const Parents& py = ay.parents[static_cast<std::size_t>(j / fnx)];
-            const double v = wi * a.value[e];
-            for (int qy = 0; qy < py.count; ++qy) {
-              const long dy = offset(cy, py.index[qy], cny, periodic_) + w;
-              for (int qx = 0; qx < px.count; ++qx) {
-                const long dx = offset(cx, px.index[qx], cnx, periodic_) + w;
-                const auto slot = static_cast<std::size_t>(dy * side + dx);
-                window_[slot] += v * py.weight[qy] * px.weight[qx];
-                touched_[slot] = 1;
-              }
+  // Coarse row (cx, cy) into the thread's scratch.
+  const auto coarse_row = [&](GalerkinScratch& scratch, std::vector<int>& columns, std::vector<double>& values, long cx,
+                              long cy) {
+    std::vector<double>& window = scratch.window;
+    std::vector<char>& touched = scratch.touched;
+    std::vector<std::pair<int, double>>& row_entries = scratch.row_entries;
+    const auto row = static_cast<std::size_t>(cy * cnx + cx);
+    const Children& kids_y = ay.children[static_cast<std::size_t>(cy)];
+    const Children& kids_x = ax.children[static_cast<std::size_t>(cx)];
+    for (int ky = 0; ky < kids_y.count; ++ky) {
+      for (int kx = 0; kx < kids_x.count; ++kx) {
+        const auto i = static_cast<std::size_t>(kids_y.index[ky] * fnx + kids_x.index[kx]);
+        if (fine.fixed[i]) continue;
+        const double wi = kids_y.weight[ky] * kids_x.weight[kx];
+        for (int e = a.start[i]; e < a.start[i + 1]; ++e) {
+          const long j = a.column[e];
+          if (fine.fixed[static_cast<std::size_t>(j)]) continue;
+          const Parents& px = ax.parents[static_cast<std::size_t>(fine.node_x[static_cast<std::size_t>(j)])];
+          const Parents& py = ay.parents[static_cast<std::size_t>(fine.node_y[static_cast<std::size_t>(j)])];
+          const double v = wi * a.value[e];
+          for (int qy = 0; qy < py.count; ++qy) {
+            const long dy = offset(cy, py.index[qy], cny, periodic_) + w;
+            for (int qx = 0; qx < px.count; ++qx) {
+              const long dx = offset(cx, px.index[qx], cnx, periodic_) + w;
+              const auto slot = static_cast<std::size_t>(dy * side + dx);
+              window[slot] += v * py.weight[qy] * px.weight[qx];
+              touched[slot] = 1;
             }
           }
         }
       }
-      row_entries_.clear();
-      for (long dy = 0; dy < side; ++dy) {
-        for (long dx = 0; dx < side; ++dx) {
-          const auto slot = static_cast<std::size_t>(dy * side + dx);
-          if (!touched_[slot]) continue;
-          long jx = cx + dx - w, jy = cy + dy - w;
-          if (periodic_) {
-            jx = (jx + cnx) % cnx;
-            jy = (jy + cny) % cny;
-          }
-          row_entries_.emplace_back(static_cast<int>(jy * cnx + jx), window_[slot]);
-          window_[slot] = 0.0;
-          touched_[slot] = 0;
+    }
+    row_entries.clear();
+    for (long dy = 0; dy < side; ++dy) {
+      for (long dx = 0; dx < side; ++dx) {
+        const auto slot = static_cast<std::size_t>(dy * side + dx);
+        if (!touched[slot]) continue;
+        long jx = cx + dx - w, jy = cy + dy - w;
+        if (periodic_) {
+          jx = (jx + cnx) % cnx;
+          jy = (jy + cny) % cny;
         }
-      }
-      // A coarse node whose children are all fixed is fixed itself.
-      if (row_entries_.empty()) row_entries_.emplace_back(static_cast<int>(row), 1.0);
-      if (periodic_) std::sort(row_entries_.begin(), row_entries_.end());
-      for (const auto& [column, value] : row_entries_) {
-        c.column.push_back(column);
-        c.value.push_back(value);
+        row_entries.emplace_back(static_cast<int>(jy * cnx + jx), window[slot]);
+        window[slot] = 0.0;
+        touched[slot] = 0;
       }
     }
+    // A coarse node whose children are all fixed is fixed itself.
+    if (row_entries.empty()) row_entries.emplace_back(static_cast<int>(row), 1.0);
+    if (periodic_) std::sort(row_entries.begin(), row_entries.end());
+    for (const auto& [column, value] : row_entries) {
+      columns.push_back(column);
+      values.push_back(value);
+    }
+    row_count_[row] = static_cast<int>(row_entries.size());
+  };
+  // Each thread builds a contiguous run of rows; the runs are then joined
+  // in order, so the matrix is the same whatever the thread count.
+#pragma omp parallel num_threads(team)
+  {
+    const auto t = static_cast<std::size_t>(omp_get_thread_num());
+    const auto threads = static_cast<std::size_t>(omp_get_num_threads());
+    GalerkinScratch& scratch = galerkin_scratch_[t];
+    // The first run goes straight into the matrix (it starts at 0): one
+    // thread holds no second copy.
+    std::vector<int>& column = t == 0 ? c.column : scratch.column;
+    std::vector<double>& value = t == 0 ? c.value : scratch.value;
+    column.clear();
+    value.clear();
+    const std::size_t begin = c.rows * t / threads, end = c.rows * (t + 1) / threads;
+    for (std::size_t row = begin; row < end; ++row) {
+      coarse_row(scratch, column, value, static_cast<long>(row) % cnx, static_cast<long>(row) / cnx);
+    }
+#pragma omp barrier
+#pragma omp single
+    {
+      c.start[0] = 0;
+      for (std::size_t row = 0; row < c.rows; ++row) c.start[row + 1] = c.start[row] + row_count_[row];
+      c.column.resize(static_cast<std::size_t>(c.start[c.rows]));
+      c.value.resize(static_cast<std::size_t>(c.start[c.rows]));
+    }
+    if (t > 0) {
+      std::copy(column.begin(), column.end(), c.column.begin() + c.start[begin]);
+      std::copy(value.begin(), value.end(), c.value.begin() + c.start[begin]);
+    }
   }
-  c.start[c.rows] = static_cast<int>(c.column.size());
 }
 
 bool FilmMultigrid::factorise(const CsrMatrix& matrix, std::string& message) {
@@ -316,12 +409,12 @@ bool FilmMultigrid::factorise(const CsrMatrix& matrix, std::string& message) {
 
 void FilmMultigrid::smooth(Level& level, bool forward) {
   const CsrMatrix& off = level.off_band;
-  const std::size_t lines = line_count(level);
   const std::size_t length = line_length(level);
   const std::size_t stride = banded_lu_stride(level.kl, level.ku);
-  std::span<double> rhs(line_rhs_.data(), length);
-  for (std::size_t k = 0; k < lines; ++k) {
-    const std::size_t line = forward ? k : lines - 1 - k;
+  const std::size_t colours = level.colour_start.size() - 1;
+  const auto threads = static_cast<std::size_t>(omp_get_max_threads());
+  if (line_rhs_.size() < threads * length) line_rhs_.resize(threads * length);
+  const auto relax = [&](std::size_t line, std::span<double> rhs) {
     for (std::size_t t = 0; t < length; ++t) {
       const std::size_t i = node(level, line, t);
       double sum = level.b[static_cast<Eigen::Index>(i)];
@@ -331,13 +424,24 @@ void FilmMultigrid::smooth(Level& level, bool forward) {
     banded_lu_solve(std::span<const double>(level.band.data() + line * length * stride, length * stride),
                     std::span<const int>(level.pivots.data() + line * length, length), level.kl, level.ku, rhs);
     for (std::size_t t = 0; t < length; ++t) level.x[static_cast<Eigen::Index>(node(level, line, t))] = rhs[t];
+  };
+  for (std::size_t k = 0; k < colours; ++k) {
+    const std::size_t colour = forward ? k : colours - 1 - k;
+    const std::size_t first = level.colour_start[colour];
+    const auto count = static_cast<std::ptrdiff_t>(level.colour_start[colour + 1] - first);
+#pragma omp parallel for schedule(static) if (count > 1)
+    for (std::ptrdiff_t q = 0; q < count; ++q) {
+      const auto [start, lines] = level.chains[first + static_cast<std::size_t>(q)];
+      std::span<double> rhs(line_rhs_.data() + static_cast<std::size_t>(omp_get_thread_num()) * length, length);
+      for (std::size_t m = 0; m < lines; ++m) relax(forward ? start + m : start + lines - 1 - m, rhs);
+    }
   }
 }
 
 void FilmMultigrid::restrict_residual(const Level& fine, Level& coarse) const {
   const Axis& ax = fine.to_coarse_x;
   const Axis& ay = fine.to_coarse_y;
-  for (std::size_t cy = 0; cy < coarse.ny; ++cy) {
+  linalg::for_each_row(coarse.ny, coarse.nx, [&](std::size_t cy) {
     for (std::size_t cx = 0; cx < coarse.nx; ++cx) {
       const Children& kids_y = ay.children[cy];
       const Children& kids_x = ax.children[cx];
@@ -351,13 +455,13 @@ void FilmMultigrid::restrict_residual(const Level& fine, Level& coarse) const {
       }
       coarse.b[static_cast<Eigen::Index>(cy * coarse.nx + cx)] = sum;
     }
-  }
+  });
 }
 
 void FilmMultigrid::prolongate_add(const Level& coarse, Level& fine) const {
   const Axis& ax = fine.to_coarse_x;
   const Axis& ay = fine.to_coarse_y;
-  for (std::size_t y = 0; y < fine.ny; ++y) {
+  linalg::for_each_row(fine.ny, fine.nx, [&](std::size_t y) {
     const Parents& py = ay.parents[y];
     for (std::size_t x = 0; x < fine.nx; ++x) {
       const Parents& px = ax.parents[x];
@@ -372,7 +476,7 @@ void FilmMultigrid::prolongate_add(const Level& coarse, Level& fine) const {
       }
       fine.x[static_cast<Eigen::Index>(y * fine.nx + x)] += sum;
     }
-  }
+  });
 }
 
 void FilmMultigrid::cycle(std::size_t l) {
@@ -404,13 +508,16 @@ void FilmMultigrid::apply(const Eigen::VectorXd& in, Eigen::VectorXd& out) {
 double FilmMultigrid::bytes_per_node(double row_entries) {
   // The fine level: the scaled copy of the matrix and its off-band part
   // (at most the row's entries each), the band factors of lines up to
-  // kMaxBand wide, pivots, four vectors (x, b, r, D); the coarse levels a
-  // third of the fine nodes with Galerkin rows of up to 25 entries held
-  // twice (the operator and its off-band part).
-  const double band = 8.0 * static_cast<double>(banded_lu_stride(kMaxBand, kMaxBand)) + 4.0 + 4.0 * 8.0;
+  // kMaxBand wide, pivots, four vectors (x, b, r, D), the nodes' column and
+  // row; the coarse levels a third of the fine nodes with Galerkin rows of
+  // up to 25 entries held twice (the operator and its off-band part); and
+  // the threads' rows of the Galerkin product besides the first's, at most
+  // the first coarse level's (a quarter of the fine nodes).
+  const double band = 8.0 * static_cast<double>(banded_lu_stride(kMaxBand, kMaxBand)) + 4.0 + 4.0 * 8.0 + 2.0 * 4.0;
   const double fine = 2.0 * 12.0 * row_entries + band;
   const double coarse = (2.0 * 12.0 * 25.0 + band) / 3.0;
-  return fine + coarse;
+  const double threads_rows = 12.0 * 25.0 / 4.0;
+  return fine + coarse + threads_rows;
 }
 
 }  // namespace halfspace::lubrication::detail

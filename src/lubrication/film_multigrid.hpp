@@ -1,7 +1,9 @@
 // A geometric multigrid V-cycle as the EHL GMRES's preconditioner
 // (film_preconditioner.hpp): line Gauss–Seidel along the entrainment
 // direction as the smoother (each line's band of the matrix solved
-// exactly), Galerkin coarse operators P^T A P with cell-centred bilinear
+// exactly), the lines swept in chains of consecutive lines coloured
+// alternately so that the chains of one colour are swept in parallel (the
+// result does not depend on the thread count), Galerkin coarse operators P^T A P with cell-centred bilinear
 // prolongation P, and a sparse LU on the coarsest grid, optionally on the
 // matrix with its unknowns scaled by the diagonal (A D^-1). Venner & Lubrecht
 // (2000, "Multilevel Methods in Lubrication") solve the EHL film
@@ -80,16 +82,24 @@ class FilmMultigrid final : public FilmPreconditioner {
     // into them would give the coarse problem free edges).
     std::vector<char> fixed;
     int kl = 0, ku = 0;  // the line bands' sub- and superdiagonals
+    // The lines cut into chains of consecutive lines, {first, count},
+    // coloured alternately: colour c's chains are chains[colour_start[c] ..
+    // colour_start[c + 1]), none coupled to another of its colour by the
+    // off-band entries.
+    std::vector<std::pair<std::size_t, std::size_t>> chains;
+    std::vector<std::size_t> colour_start;
     std::vector<double> band;
     std::vector<int> pivots;
     Eigen::VectorXd x, b, r;
-    Axis to_coarse_x, to_coarse_y;  // to the next level (unset on the coarsest)
+    Axis to_coarse_x, to_coarse_y;    // to the next level (unset on the coarsest)
+    std::vector<int> node_x, node_y;  // each node's column and row (no division in the Galerkin product)
   };
 
   std::size_t line_count(const Level& level) const;
   std::size_t line_length(const Level& level) const;
   std::size_t node(const Level& level, std::size_t line, std::size_t t) const;
   bool split_lines(Level& level, std::string& message);
+  void chain_lines(Level& level) const;
   static void find_fixed(Level& level);
   void galerkin(const Level& fine, Level& coarse);
   void smooth(Level& level, bool forward);
@@ -103,11 +113,20 @@ class FilmMultigrid final : public FilmPreconditioner {
   int line_axis_;
   bool direct_coarsest_ = false;
   std::vector<Level> levels_;
+  // One line's right-hand side per thread (grown on the first sweep).
   std::vector<double> line_rhs_;
-  // The Galerkin product's per-row accumulator over coarse offsets.
-  std::vector<double> window_;
-  std::vector<char> touched_;
-  std::vector<std::pair<int, double>> row_entries_;
+  // The Galerkin product's per-thread scratch: the row accumulator over
+  // coarse offsets, and the thread's rows before they are joined (but the
+  // first thread's, written in place).
+  struct GalerkinScratch {
+    std::vector<double> window;
+    std::vector<char> touched;
+    std::vector<std::pair<int, double>> row_entries;
+    std::vector<int> column;
+    std::vector<double> value;
+  };
+  std::vector<GalerkinScratch> galerkin_scratch_;
+  std::vector<int> row_count_;
   Eigen::SparseMatrix<double> coarsest_;
   Eigen::SparseLU<Eigen::SparseMatrix<double>> coarsest_lu_;
 };

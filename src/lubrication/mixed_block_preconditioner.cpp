@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include "halfspace/linalg/parallel.hpp"
+
 namespace halfspace::lubrication::detail {
 
 MixedBlockPreconditioner::MixedBlockPreconditioner(const Grid& grid, int line_axis, const LocalInfluence& local)
@@ -80,11 +82,11 @@ void MixedBlockPreconditioner::apply(const Eigen::VectorXd& in, Eigen::VectorXd&
       total_[static_cast<Eigen::Index>(spot_node_[c])] = spot_total_[static_cast<Eigen::Index>(c)];
     }
   }
-  for (std::size_t k = 0; k < n_; ++k) {
+  linalg::for_each_index(n_, [&](std::size_t k) {
     double sum = in[static_cast<Eigen::Index>(k)];
     for (int e = film.start[k]; e < film.start[k + 1]; ++e) sum -= film.value[e] * total_[film.column[e]];
     mass_rhs_[static_cast<Eigen::Index>(k)] = sum;
-  }
+  });
   multigrid_.apply(mass_rhs_, v_s_);
   out.resize(2 * ni);
   out.head(ni) = v_s_;

@@ -28,6 +28,8 @@
 #include <cmath>
 #include <span>
 
+#include "halfspace/linalg/parallel.hpp"
+
 namespace halfspace::lubrication::detail {
 
 namespace {
@@ -88,7 +90,7 @@ void MixedKrylovSolver::apply_jacobian(const Eigen::VectorXd& v, Eigen::VectorXd
   if (scales_.load_control) deflection_.array() += v[2 * ni];
   const std::vector<double>& film_slope = rows_->film_slope;
   const std::vector<char>& closed = *closed_;
-  for (std::size_t k = 0; k < n_; ++k) {
+  linalg::for_each_index(n_, [&](std::size_t k) {
     const auto kk = static_cast<Eigen::Index>(k);
     if (topology_.fixed(k)) {
       out[kk] = v[kk];
@@ -103,7 +105,7 @@ void MixedKrylovSolver::apply_jacobian(const Eigen::VectorXd& v, Eigen::VectorXd
       out[kk] = sum / scales_.mass;
     }
     out[ni + kk] = closed[k] != 0 ? deflection_[kk] / scales_.film : v[ni + kk];
-  }
+  });
   if (scales_.load_control) {
     out[2 * ni] = scales_.area_over_load * (dp_ds_.dot(v.head(ni)) + P * v.segment(ni, ni).sum());
   }

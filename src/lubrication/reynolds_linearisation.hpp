@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "halfspace/linalg/parallel.hpp"
 #include "halfspace/lubrication/lubricant.hpp"
 #include "halfspace/lubrication/reynolds_stencil.hpp"
 #include "halfspace/operators/influence_operator.hpp"
@@ -98,14 +99,16 @@ struct NodeCoefficients {
     eps.resize(n);
     eps_p.resize(n);
     eps_h.resize(n);
-    for (Eigen::Index k = 0; k < n; ++k) {
+    // The laws' powers and exponentials are the cost: shared among the threads.
+    linalg::for_each_index(static_cast<std::size_t>(n), [&](std::size_t node) {
+      const auto k = static_cast<Eigen::Index>(node);
       const double pk = std::max(p[k], 0.0);
       rho[k] = laws.density_ratio(pk);
       rho_p[k] = laws.density_ratio_slope(pk);
       eps[k] = rho[k] * h[k] * h[k] * h[k] / (12.0 * eta0 * laws.viscosity_ratio(pk, eta0));
       eps_p[k] = eps[k] * (rho_p[k] / rho[k] - laws.viscosity_log_slope(pk, eta0));
       eps_h[k] = 3.0 * eps[k] / h[k];
-    }
+    });
   }
 };
 

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "halfspace/grid.hpp"
+#include "halfspace/threads.hpp"
 #include "lubrication/banded_lu.hpp"
 
 namespace halfspace::lubrication::detail {
@@ -176,6 +177,44 @@ TEST(FilmMultigridTest, VCycleContractsOnAPeriodicGrid) {
   }
   FilmMultigrid multigrid(grid, 0, false);
   EXPECT_LT(contraction(multigrid, a, kCycles), kLargestContraction);
+}
+
+// Grids of at least 256^2 nodes are swept in chains of lines, those of one
+// colour on different threads (film_multigrid.cpp): the V-cycle must be the
+// same linear map, to the bit, on one thread and on three, and still
+// contract; on a periodic grid whose 9 chains of 32 lines are made 8 (an odd
+// count would put two of one colour side by side across the wrap), and on
+// a free one.
+TEST(FilmMultigridTest, ChainedSweepsAreTheSameMapOnAnyThreadCount) {
+  const int original = threads();
+  for (const Boundary boundary : {Boundary::periodic, Boundary::free}) {
+    const std::size_t n = boundary == Boundary::periodic ? 288 : 272;
+    const Grid grid = Grid::plane(n, n, 1.0, 1.0, boundary);
+    CsrMatrix a = model_operator(
+        grid, [&](std::size_t x, std::size_t) { return x < n / 2 ? 100.0 : 1e-6; }, 1.0);
+    for (std::size_t k = 0; k < a.rows; ++k) {
+      for (int e = a.start[k]; e < a.start[k + 1]; ++e) {
+        if (a.column[e] == static_cast<int>(k)) a.value[e] += 1e-2;
+      }
+    }
+    Eigen::VectorXd in(static_cast<Eigen::Index>(a.rows));
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+    for (Eigen::Index i = 0; i < in.size(); ++i) in[i] = uniform(random);
+    std::vector<Eigen::VectorXd> out;
+    for (const int count : {1, 3}) {
+      set_threads(count);
+      FilmMultigrid multigrid(grid, 0, false);
+      std::string message;
+      ASSERT_TRUE(multigrid.factorise(a, message)) << message;
+      out.emplace_back();
+      multigrid.apply(in, out.back());
+      if (count == 3) EXPECT_LT(contraction(multigrid, a, kCycles), kLargestContraction) << n << "^2";
+    }
+    set_threads(original);
+    ASSERT_EQ(out[0].size(), out[1].size());
+    EXPECT_TRUE(out[0] == out[1]) << n << "^2: largest difference " << (out[0] - out[1]).cwiseAbs().maxCoeff();
+  }
 }
 
 // The line solves: a band that needs row interchanges (zero diagonal
