@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "newton_forcing.hpp"
 
@@ -52,6 +53,7 @@ int run_film_newton(const FilmNewton& newton, NewtonFilmResult& result) {
     FilmMeasure current = newton.measure();
     // The forcing term's history (newton_forcing): this start's steps only.
     double previous_norm = 0.0, forcing = kLargestForcing;
+    std::vector<double> norms{current.norm};  // after each of this start's steps (the stagnation rule's)
     for (int iteration = 0;; ++iteration) {
       if (converged(tolerances, current)) {
         result.status = FilmStatus::converged;
@@ -129,6 +131,16 @@ int run_film_newton(const FilmNewton& newton, NewtonFilmResult& result) {
       if (!accepted) break;
       newton.accept();
       current = tried;
+      norms.push_back(current.norm);
+      const auto window = static_cast<std::size_t>(rules.stagnation_steps);
+      if (window > 0 && norms.size() > window && !converged(tolerances, current) &&
+          current.norm > rules.stagnation_share * norms[norms.size() - 1 - window]) {
+        result.message = fmt::format(
+            "{} Newton iteration stagnated: the residual's norm fell from {:.3g} to {:.3g} in {} steps ({})",
+            rules.words.solver, norms[norms.size() - 1 - window], current.norm, window,
+            residuals(tolerances, current, false));
+        break;
+      }
     }
     if (result.status != FilmStatus::failure || last) break;
     if (!newton.lay_start(attempt + 1)) break;

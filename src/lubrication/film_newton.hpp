@@ -62,6 +62,10 @@ struct FilmNewtonRules {
   // Whether the limit ends any start (else the last only: the others end
   // at their share, and the last may then have less than none left).
   bool limit_on_each_start = true;
+  // Give up (a failure) where the residual's norm after a step is above
+  // stagnation_share times its value stagnation_steps steps before (0: never).
+  int stagnation_steps = 0;
+  double stagnation_share = 1.0;
 };
 
 // The rules and the film's physics.

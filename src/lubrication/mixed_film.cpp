@@ -166,6 +166,15 @@ constexpr double kLoosestLinearResidual = 0.9;
 
 // The share of the Newton steps (1 / this) a cold start gets on the GMRES path.
 constexpr int kKrylovColdShare = 4;
+// The fine grid's first try from the coarse film (MixedStartUse::try_only)
+// gives up where GMRES stops short of its forcing term or the residual's
+// norm has not fallen below kStagnationShare of its value kStagnationSteps
+// steps before: on a rough point contact such a try crept for thousands of
+// GMRES iterations before it stalled (at 128^2 80 % of the fine grid's),
+// and the way round, a faster film and the continuation in the speed, was
+// the cheaper one (docs/development-log.md, 2026-12-01).
+constexpr int kStagnationSteps = 3;
+constexpr double kStagnationShare = 0.75;
 
 struct State {
   Eigen::ArrayXd s, q, fluid, theta, contact, total, deformation, film, reynolds_film;
@@ -245,7 +254,8 @@ namespace {
 
 // One Newton solve from `start` or the standard starts.
 MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
-                     const LubricantLaws& laws, const MixedFilmOptions& options, const MixedFilm* start) {
+                     const LubricantLaws& laws, const MixedFilmOptions& options, const MixedFilm* start,
+                     bool only_trying = false) {
   const auto started = std::chrono::steady_clock::now();
   const Grid& grid = op.grid();
   conditions.validate(grid);
@@ -489,6 +499,10 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
       .share = std::max(1, options.max_iterations / static_cast<int>(attempts)),
       .limit = cold_budget,
       .limit_on_each_start = false};
+  if (only_trying) {
+    newton.rules.stagnation_steps = kStagnationSteps;
+    newton.rules.stagnation_share = kStagnationShare;
+  }
   newton.measure = [&] { return measure(x, residual, false); };
   newton.lay_start = [&](std::size_t attempt) {
     set_start(kStarts[attempt]);
@@ -516,7 +530,8 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
     // formed again per pass.
     if (krylov) measure(x, residual, true);
     const detail::MixedScales scales{P, H, mass_scale, load_control ? area / w : 0.0, load_control};
-    const bool short_steps_taken = current.norm >= detail::kLargestForcing;
+    // A try (only_trying) takes none: it gives up where GMRES stops short.
+    const bool short_steps_taken = current.norm >= detail::kLargestForcing && !only_trying;
     const auto gmres_solve = [&] {
       const detail::KrylovOutcome solved =
           krylov_solver->solve(rows, branch_full, closed, scales, forcing, residual, step, warm);
@@ -807,8 +822,8 @@ MixedFilm detail::solve_mixed_film_on_grid(InfluenceOperator& op, const Eigen::A
   const auto started = std::chrono::steady_clock::now();
   MixedFilm film;
   if (use != MixedStartUse::continue_only) {
-    film = solve_once(op, gap, conditions, laws, options, start);
-    if (film.converged() || use == MixedStartUse::solve_only) return film;
+    film = solve_once(op, gap, conditions, laws, options, start, use == MixedStartUse::try_only);
+    if (film.converged() || use == MixedStartUse::solve_only || use == MixedStartUse::try_only) return film;
   }
   if (!options.load_controlled()) {
     MixedFilm continued = continue_in_offset(op, gap, conditions, laws, options, start, std::move(film));

@@ -26,7 +26,8 @@ constexpr double kSequencedSpeedUp = 4.0;
 constexpr double kSequencedFastest = 64.0;
 // The Newton steps the fine grid gets from the coarse film before the
 // faster film is tried (a rough point contact at 64^2: 55 steps; with 25,
-// every level gave up and the solve took 200 steps; docs/development-log.md).
+// every level gave up and the solve took 200 steps; docs/development-log.md);
+// fewer where the iteration stagnates (MixedStartUse::try_only).
 constexpr int kSequencedFirstSteps = 60;
 
 // The film on the grid of twice the spacing, interpolated onto op's grid, or
@@ -106,7 +107,7 @@ MixedFilm solve_sequenced(InfluenceOperator& op, const Eigen::ArrayXd& gap, cons
     MixedFilmOptions first = options;
     first.max_iterations = std::min(options.max_iterations, kSequencedFirstSteps);
     result = detail::solve_mixed_film_on_grid(op, gap, conditions, laws, first, &*coarse_start,
-                                              detail::MixedStartUse::solve_only);
+                                              detail::MixedStartUse::try_only);
   }
   int steps = result.iterations, krylov = result.krylov_iterations;
   // A fine Newton iteration that failed from the coarse film (its steps

@@ -14,7 +14,10 @@ namespace halfspace::lubrication::detail {
 // and, where that fails, the continuations solve_mixed_film documents; the
 // Newton iteration alone; or (a converged start at another speed) the
 // continuation in the speed from it alone.
-enum class MixedStartUse { solve_then_continue, solve_only, continue_only };
+// try_only: solve_only, giving up where the Newton iteration stagnates or a
+// step's GMRES stops short of its forcing term (the fine grid's first try
+// from the coarse film, which has a way round).
+enum class MixedStartUse { solve_then_continue, solve_only, try_only, continue_only };
 
 // The mixed film on the operator's grid alone (no coarser grid): the Newton
 // iteration from `start` or the standard starts (mixed_film.cpp) and the

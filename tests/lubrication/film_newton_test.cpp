@@ -1,0 +1,82 @@
+// The films' shared Newton driver (src/lubrication/film_newton.hpp) on a
+// model whose every full step multiplies the residual's norm by a fixed
+// rate: the stagnation rule (give up where the norm has not fallen below a
+// share of its value some steps before) must end an iteration that creeps
+// and leave one that converges, however slowly its rule allows, alone.
+#include "lubrication/film_newton.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <optional>
+#include <string>
+
+namespace halfspace::lubrication::detail {
+namespace {
+
+constexpr double kTolerance = 1e-8;
+
+struct CreepingModel {
+  double rate = 0.5;  // the norm after a full step over the norm before
+  double x = 1.0, trial = 1.0;
+  int steps_taken = 0;
+
+  FilmMeasure at(double value) const {
+    return {.norm = std::abs(value), .mass = std::abs(value), .load = 0.0, .contact = 0.0};
+  }
+
+  FilmNewton newton(int stagnation_steps, double stagnation_share) {
+    FilmNewton n;
+    n.rules = {.words = {.solver = "the model's", .film = "the model", .krylov_step = "the model's "},
+               .tolerances = {.mass = kTolerance, .load = kTolerance, .contact = std::nullopt},
+               .limit = 1000,
+               .stagnation_steps = stagnation_steps,
+               .stagnation_share = stagnation_share};
+    n.measure = [this] { return at(x); };
+    n.lay_start = [](std::size_t) { return false; };
+    n.solve = [](const FilmMeasure&, double, bool) {
+      FilmNewtonSolve solved;
+      solved.solved = true;
+      return solved;
+    };
+    n.trust_region = [] { return 1.0; };
+    n.try_step = [this](double scale, bool) -> std::optional<FilmMeasure> {
+      trial = x * (1.0 - scale * (1.0 - rate));
+      return at(trial);
+    };
+    n.accept = [this] {
+      x = trial;
+      ++steps_taken;
+    };
+    return n;
+  }
+};
+
+TEST(FilmNewtonTest, StagnationRuleEndsACreepingIteration) {
+  // 0.95 per step: 0.857 over three steps, above the share 0.75.
+  CreepingModel creeping{.rate = 0.95};
+  NewtonFilmResult result;
+  run_film_newton(creeping.newton(3, 0.75), result);
+  EXPECT_FALSE(result.converged());
+  EXPECT_EQ(result.iterations, 3);
+  EXPECT_NE(result.message.find("stagnated"), std::string::npos) << result.message;
+  // Without the rule the same iteration converges (in log(1e-8) / log(0.95)
+  // = 360 steps).
+  CreepingModel unruled{.rate = 0.95};
+  NewtonFilmResult converged;
+  run_film_newton(unruled.newton(0, 1.0), converged);
+  EXPECT_TRUE(converged.converged()) << converged.message;
+  EXPECT_EQ(converged.iterations, static_cast<int>(std::ceil(std::log(kTolerance) / std::log(0.95))));
+}
+
+TEST(FilmNewtonTest, StagnationRuleLeavesAConvergingIterationAlone) {
+  // 0.9 per step: 0.729 over three steps, below the share 0.75.
+  CreepingModel slow{.rate = 0.9};
+  NewtonFilmResult result;
+  run_film_newton(slow.newton(3, 0.75), result);
+  EXPECT_TRUE(result.converged()) << result.message;
+  EXPECT_EQ(result.iterations, static_cast<int>(std::ceil(std::log(kTolerance) / std::log(0.9))));
+}
+
+}  // namespace
+}  // namespace halfspace::lubrication::detail
