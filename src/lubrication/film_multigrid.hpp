@@ -3,13 +3,14 @@
 // direction as the smoother (each line's band of the matrix solved
 // exactly), the lines swept in chains of consecutive lines coloured
 // alternately so that the chains of one colour are swept in parallel (the
-// result does not depend on the thread count), Galerkin coarse operators P^T A P with cell-centred bilinear
-// prolongation P, and a sparse LU on the coarsest grid, optionally on the
-// matrix with its unknowns scaled by the diagonal (A D^-1). Venner & Lubrecht
-// (2000, "Multilevel Methods in Lubrication") solve the EHL film
-// with line relaxation for the same reason: where the pressure is high the
-// Poiseuille term vanishes and each row is an upwind difference along the
-// flow, which a line solve inverts exactly. Private to the library.
+// result does not depend on the thread count), Galerkin coarse operators
+// P^T A P with cell-centred bilinear prolongation P, and a sparse LU on the
+// coarsest grid, optionally on the matrix with its unknowns scaled by the
+// diagonal (A D^-1). Venner & Lubrecht (2000, "Multilevel Methods in
+// Lubrication") solve the EHL film with line relaxation for the same
+// reason: where the pressure is high the Poiseuille term vanishes and each
+// row is an upwind difference along the flow, which a line solve inverts
+// exactly. Private to the library.
 #pragma once
 
 #include <Eigen/Core>

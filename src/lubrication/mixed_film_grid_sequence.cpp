@@ -27,8 +27,13 @@ constexpr double kSequencedFastest = 64.0;
 // The Newton steps the fine grid gets from the coarse film before the
 // faster film is tried (a rough point contact at 64^2: 55 steps; with 25,
 // every level gave up and the solve took 200 steps; docs/development-log.md);
-// fewer where the iteration stagnates (MixedStartUse::try_only).
+// fewer where the iteration stagnates on grids of at most kTryingNodes
+// nodes (MixedStartUse::try_only). Up to 128^2 the tries from the coarse
+// film failed on every rough point contact traced, after thousands of GMRES
+// iterations; from 256^2 they converged, and giving up there sent a 512^2
+// film the longer way round (docs/development-log.md, 2026-12-01).
 constexpr int kSequencedFirstSteps = 60;
+constexpr std::size_t kTryingNodes = 128 * 128;
 
 // The film on the grid of twice the spacing, interpolated onto op's grid, or
 // nothing if there is no coarser grid or its film did not converge. Adds the
@@ -106,8 +111,9 @@ MixedFilm solve_sequenced(InfluenceOperator& op, const Eigen::ArrayXd& gap, cons
   if (coarse_start) {
     MixedFilmOptions first = options;
     first.max_iterations = std::min(options.max_iterations, kSequencedFirstSteps);
-    result = detail::solve_mixed_film_on_grid(op, gap, conditions, laws, first, &*coarse_start,
-                                              detail::MixedStartUse::try_only);
+    result = detail::solve_mixed_film_on_grid(
+        op, gap, conditions, laws, first, &*coarse_start,
+        grid.size() <= kTryingNodes ? detail::MixedStartUse::try_only : detail::MixedStartUse::solve_only);
   }
   int steps = result.iterations, krylov = result.krylov_iterations;
   // A fine Newton iteration that failed from the coarse film (its steps
