@@ -209,24 +209,27 @@ bool FilmMultigrid::split_lines(Level& level, std::string& message) {
 }
 
 void FilmMultigrid::chain_lines(Level& level) const {
-  // The lines' reach across one another through the off-band entries (the
-  // nearest image's on a periodic grid). Chains at least one longer than
-  // the reach, coloured alternately (an even number of them on a periodic
-  // grid, where the last chain meets the first), touch none of their colour.
-  const CsrMatrix& off = level.off_band;
-  const auto nx = static_cast<long>(level.nx);
+  // Chains at least one line longer than the lines' reach across one
+  // another through the off-band entries (the nearest image's on a periodic
+  // grid), coloured alternately (an even number of them on a periodic grid,
+  // where the last chain meets the first), touch none of their colour. A
+  // level below kChainedNodes is one chain, and its reach is not needed.
   const auto lines = static_cast<long>(line_count(level));
-  const auto line_of = [&](long j) { return line_axis_ == 0 ? j / nx : j % nx; };
-  long reach = 0;
-  for (std::size_t i = 0; i < off.rows; ++i) {
-    const long own = line_of(static_cast<long>(i));
-    for (int e = off.start[i]; e < off.start[i + 1]; ++e) {
-      reach = std::max(reach, std::abs(offset(own, line_of(off.column[e]), lines, periodic_)));
+  long count = 1;
+  if (level.nx * level.ny >= kChainedNodes) {
+    const CsrMatrix& off = level.off_band;
+    const auto nx = static_cast<long>(level.nx);
+    const auto line_of = [&](long j) { return line_axis_ == 0 ? j / nx : j % nx; };
+    long reach = 0;
+    for (std::size_t i = 0; i < off.rows; ++i) {
+      const long own = line_of(static_cast<long>(i));
+      for (int e = off.start[i]; e < off.start[i + 1]; ++e) {
+        reach = std::max(reach, std::abs(offset(own, line_of(off.column[e]), lines, periodic_)));
+      }
     }
+    count = std::max(1L, lines / std::max(kLinesPerChain, reach + 1));
+    if (periodic_ && count % 2 == 1) count = std::max(1L, count - 1);
   }
-  const long shortest = std::max(kLinesPerChain, reach + 1);
-  long count = level.nx * level.ny < kChainedNodes ? 1 : std::max(1L, lines / shortest);
-  if (periodic_ && count % 2 == 1) count = std::max(1L, count - 1);
   level.chains.clear();
   level.colour_start.assign(count > 1 ? 3 : 2, 0);
   for (long colour = 0; colour < (count > 1 ? 2 : 1); ++colour) {
