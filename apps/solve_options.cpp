@@ -164,7 +164,8 @@ const std::vector<AlternativeGroup> kAlternatives{
     {{{"tangential-force"}, {"tangential-force"}},
      {{"tangential-displacement"}, {"tangential-displacement"}},
      {{"sliding"}, {"sliding"}}},
-    {{{"height-map"}, {"height-map", "dataset", "dx", "dy", "format", "unit", "window", "invalid", "detrend", "pad"}},
+    {{{"height-map"},
+      {"height-map", "dataset", "dx", "dy", "format", "unit", "window", "invalid", "detrend", "resample", "pad"}},
      {{"geometry"}, {"geometry", "radius", "wavelength", "amplitude", "grid", "size"}}},
 };
 

@@ -218,7 +218,7 @@ StressRequest stress_request_from(const SolveOptions& o, std::size_t load_steps,
 }  // namespace
 
 bool reads_height_map_in_slabs(const HeightMapFile& file) {
-  if (file.prepare.window || file.prepare.pad_factor > 1.0) return false;
+  if (file.prepare.window || file.prepare.resample || file.prepare.pad_factor > 1.0) return false;
   if (file.prepare.invalid != surface::InvalidPoints::refuse) return false;
   try {
     return io::checked_format(file.path, file.read) == io::HeightMapFormat::hdf5;

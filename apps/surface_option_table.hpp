@@ -19,7 +19,7 @@ inline constexpr std::string_view kGridGroup = "Grid";
 // The rows of the surface's options for the options struct `Options` (a
 // SurfaceOptions); the pad factor is solve's own row.
 template <class Options>
-std::array<OptionSpec<Options>, 15> surface_option_table() {
+std::array<OptionSpec<Options>, 16> surface_option_table() {
   using Spec = OptionSpec<Options>;
   using Kind = OptionKind;
   return {
@@ -40,6 +40,9 @@ std::array<OptionSpec<Options>, 15> surface_option_table() {
            "invalid (masked or NaN) points: refuse, fill (harmonic) or crop (largest valid rectangle) [refuse]"},
       Spec{"detrend", &Options::detrend, Kind::text, kPreparationGroup, "MODE",
            "subtract a least-squares fit: none, mean, plane or curvature [none]"},
+      Spec{"resample", &Options::resample, Kind::text, kPreparationGroup, "NXxNY",
+           "resample onto NXxNY cells (N for a profile) over the same lengths: linear interpolation where finer, "
+           "cell means where coarser (at most 16x finer)"},
       Spec{"geometry", &Options::geometry, Kind::text, kSurfaceGroup, "SHAPE",
            "built-in surface: sphere, cylinder, flat or wavy"},
       Spec{"radius", &Options::radius, Kind::number, kSurfaceGroup, "M", "sphere or cylinder radius (m)"},

@@ -11,6 +11,7 @@ from . import _core
 from ._topography import NATIVE_EXTENSIONS, read_with_surface_topography
 
 Window = Union[str, Sequence[int], None]
+Cells = Union[str, int, Sequence[int], None]
 
 
 def _window_text(window: Window) -> Optional[str]:
@@ -18,6 +19,15 @@ def _window_text(window: Window) -> Optional[str]:
     if window is None or isinstance(window, str):
         return window
     return ",".join(str(int(v)) for v in window)
+
+
+def _cells_text(cells: Cells) -> Optional[str]:
+    """The library's resample syntax "NXxNY" (or "N") from a tuple or an int."""
+    if cells is None or isinstance(cells, str):
+        return cells
+    if isinstance(cells, (int, np.integer)):
+        return str(int(cells))
+    return "x".join(str(int(v)) for v in cells)
 
 
 class HeightMap:
@@ -66,15 +76,17 @@ class HeightMap:
         return (self.heights.shape[1] * self.dx, self.heights.shape[0] * self.dy)
 
     def prepare(self, *, window: Window = None, invalid: str = "refuse", detrend: str = "none",
-                pad: float = 1.0) -> "HeightMap":
+                resample: Cells = None, pad: float = 1.0) -> "HeightMap":
         """A new map after the library's preparation steps, in this order:
         window ``(i0, j0, nx, ny)`` (or ``(i0, nx)``), invalid points
         (``"refuse"``, ``"fill"`` or ``"crop"``), detrending (``"none"``,
-        ``"mean"``, ``"plane"``, ``"curvature"``) and padding (``pad`` > 1,
-        free boundaries). Each step that changes the map adds a line to
-        ``preparation``."""
+        ``"mean"``, ``"plane"``, ``"curvature"``), resampling onto ``(nx,
+        ny)`` cells (or ``n`` for a profile) over the same lengths (linear
+        interpolation where finer, cell means where coarser) and padding
+        (``pad`` > 1, free boundaries). Each step that changes the map adds
+        a line to ``preparation``."""
         prepared = _core.prepare(self.heights, self.dx, self.dy or 0.0, self.source, _window_text(window), invalid,
-                                 detrend, pad)
+                                 detrend, _cells_text(resample), pad)
         return HeightMap._from_core(prepared, preparation=self.preparation, periodic=self.periodic)
 
     def statistics(self, periodic: Optional[bool] = None) -> dict:
@@ -99,7 +111,7 @@ class HeightMap:
 def read_height_map(path: Union[str, os.PathLike], *, format: str = "auto", unit: Optional[str] = None,
                     window: Window = None, invalid: str = "refuse", detrend: str = "none",
                     dx: Optional[float] = None, dy: Optional[float] = None, dataset: Optional[str] = None,
-                    pad: float = 1.0) -> HeightMap:
+                    resample: Cells = None, pad: float = 1.0) -> HeightMap:
     """Reads a height map and prepares it as ``halfspace solve --height-map`` does.
 
     Formats read natively (``format="auto"`` chooses by extension): HDF5 and
@@ -107,7 +119,8 @@ def read_height_map(path: Union[str, os.PathLike], *, format: str = "auto", unit
     ``/height``), NumPy ``.npy``, text matrices (``.txt .csv .dat .asc``),
     Dektak profiles, ISO 25178 X3P and Gwyddion GSF. ``unit`` is the length
     unit of files that state none ("um", "nm", ...). ``dx``/``dy`` override
-    or supply the spacing (m). Other instrument formats (.sur, .plu, .opd,
+    or supply the spacing (m). The preparation keywords are
+    :meth:`HeightMap.prepare`'s. Other instrument formats (.sur, .plu, .opd,
     .di, MetroPro .dat, ...) are read through the SurfaceTopography package
     where it is installed (``format="surfacetopography"`` forces it).
 
@@ -119,17 +132,18 @@ def read_height_map(path: Union[str, os.PathLike], *, format: str = "auto", unit
     wants_fallback = format.lower() in ("surfacetopography", "surface-topography")
     if wants_fallback or (format == "auto" and extension not in NATIVE_EXTENSIONS):
         return read_with_surface_topography(path, unit=unit, window=_window_text(window), invalid=invalid,
-                                            detrend=detrend, dx=dx, dy=dy, pad=pad,
+                                            detrend=detrend, dx=dx, dy=dy, resample=_cells_text(resample), pad=pad,
                                             reason=None if wants_fallback else extension)
     try:
         prepared = _core.read_height_map(path, format, dataset or "", unit, _window_text(window), invalid, detrend,
-                                         dx, dy, pad)
+                                         _cells_text(resample), dx, dy, pad)
     except _core.FileError:
         # A .dat file is a text matrix to halfspace and a Zygo MetroPro file
         # to its instrument: a binary one goes to SurfaceTopography.
         if format == "auto" and extension == ".dat" and _looks_binary(path):
             return read_with_surface_topography(path, unit=unit, window=_window_text(window), invalid=invalid,
-                                                detrend=detrend, dx=dx, dy=dy, pad=pad, reason=extension)
+                                                detrend=detrend, dx=dx, dy=dy, resample=_cells_text(resample), pad=pad,
+                                                reason=extension)
         raise
     return HeightMap._from_core(prepared)
 

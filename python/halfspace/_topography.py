@@ -36,8 +36,8 @@ def _metres_per(unit, path: str) -> float:
 
 
 def read_with_surface_topography(path: str, *, unit: Optional[str], window: Optional[str], invalid: str,
-                                 detrend: str, dx: Optional[float], dy: Optional[float], pad: float,
-                                 reason: Optional[str]):
+                                 detrend: str, dx: Optional[float], dy: Optional[float], resample: Optional[str],
+                                 pad: float, reason: Optional[str]):
     from ._height_map import HeightMap
 
     try:
@@ -83,4 +83,4 @@ def read_with_surface_topography(path: str, *, unit: Optional[str], window: Opti
         spacing_y = dy
     source = f"{path} (SurfaceTopography, {type(reader).__name__})"
     surface = HeightMap(values, spacing_x, spacing_y, source=source)
-    return surface.prepare(window=window, invalid=invalid, detrend=detrend, pad=pad)
+    return surface.prepare(window=window, invalid=invalid, detrend=detrend, resample=resample, pad=pad)

@@ -49,9 +49,11 @@ nb::dict map_dict(HeightMap&& map) {
 
 // The preparation's keywords, checked by the library (surface_options.hpp).
 surface::PreparationOptions preparation_options(const std::optional<std::string>& window, const std::string& invalid,
-                                                const std::string& detrend, double pad) {
-  return checked_preparation({.window = window, .invalid = invalid, .detrend = detrend, .pad = pad}, Boundary::free,
-                             KeywordSpelling());
+                                                const std::string& detrend, const std::optional<std::string>& resample,
+                                                double pad) {
+  return checked_preparation(
+      {.window = window, .invalid = invalid, .detrend = detrend, .resample = resample, .pad = pad}, Boundary::free,
+      KeywordSpelling());
 }
 
 void prepare(HeightMap& map, const surface::PreparationOptions& options) {
@@ -65,8 +67,8 @@ void prepare(HeightMap& map, const surface::PreparationOptions& options) {
 
 nb::dict read_map(const std::filesystem::path& path, const std::string& format, const std::string& dataset,
                   const std::optional<std::string>& unit, const std::optional<std::string>& window,
-                  const std::string& invalid, const std::string& detrend, std::optional<double> dx,
-                  std::optional<double> dy, double pad) {
+                  const std::string& invalid, const std::string& detrend, const std::optional<std::string>& resample,
+                  std::optional<double> dx, std::optional<double> dy, double pad) {
   const KeywordSpelling keywords;
   const SurfaceOptions given{.height_map = path.string(),
                              .dataset = dataset,
@@ -77,6 +79,7 @@ nb::dict read_map(const std::filesystem::path& path, const std::string& format, 
                              .window = window,
                              .invalid = invalid,
                              .detrend = detrend,
+                             .resample = resample,
                              .pad = pad};
   const HeightMapFile file = std::get<HeightMapFile>(make_surface_choice(given, Boundary::free, keywords));
   HeightMap map;
@@ -117,8 +120,8 @@ HeightMap map_from(const InputArray& heights, double dx, double dy, const std::s
 
 nb::dict prepare_array(const InputArray& heights, double dx, double dy, const std::string& source,
                        const std::optional<std::string>& window, const std::string& invalid, const std::string& detrend,
-                       double pad) {
-  const surface::PreparationOptions options = preparation_options(window, invalid, detrend, pad);
+                       const std::optional<std::string>& resample, double pad) {
+  const surface::PreparationOptions options = preparation_options(window, invalid, detrend, resample, pad);
   HeightMap map = map_from(heights, dx, dy, source);
   {
     nb::gil_scoped_release release;
@@ -182,9 +185,10 @@ nb::dict statistics(const InputArray& heights, double dx, double dy, bool period
 
 void bind_surfaces(nb::module_& module) {
   module.def("read_height_map", &read_map, nb::arg("path"), nb::arg("format"), nb::arg("dataset"), nb::arg("unit"),
-             nb::arg("window"), nb::arg("invalid"), nb::arg("detrend"), nb::arg("dx"), nb::arg("dy"), nb::arg("pad"));
+             nb::arg("window"), nb::arg("invalid"), nb::arg("detrend"), nb::arg("resample"), nb::arg("dx"),
+             nb::arg("dy"), nb::arg("pad"));
   module.def("prepare", &prepare_array, nb::arg("heights"), nb::arg("dx"), nb::arg("dy"), nb::arg("source"),
-             nb::arg("window"), nb::arg("invalid"), nb::arg("detrend"), nb::arg("pad"));
+             nb::arg("window"), nb::arg("invalid"), nb::arg("detrend"), nb::arg("resample"), nb::arg("pad"));
   module.def("builtin_surface", &builtin, nb::arg("shape"), nb::arg("nx"), nb::arg("ny"), nb::arg("dimension"),
              nb::arg("dx"), nb::arg("dy"), nb::arg("radius"), nb::arg("wavelength"), nb::arg("amplitude"));
   module.def("self_affine", &self_affine, nb::arg("nx"), nb::arg("ny"), nb::arg("dimension"), nb::arg("dx"),

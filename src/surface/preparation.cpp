@@ -11,6 +11,7 @@ void prepare_height_map(HeightMap& map, const PreparationOptions& options) {
   if (options.invalid == InvalidPoints::refuse) refuse_invalid_points(map);
   detrend(map, options.detrend);
   if (options.invalid == InvalidPoints::fill) fill_invalid_points(map);
+  if (options.resample) resample(map, *options.resample);
   if (options.pad_factor != 1.0) pad_for_free_boundary(map, options.pad_factor);
 }
 

@@ -164,6 +164,9 @@ surface::PreparationOptions checked_preparation(const SurfaceOptions& o, Boundar
   }
   if (o.detrend)
     prepare.detrend = in_context(spelling.name("detrend"), [&] { return surface::parse_detrend(*o.detrend); });
+  if (o.resample) {
+    prepare.resample = in_context(spelling.name("resample"), [&] { return surface::parse_resample(*o.resample); });
+  }
   if (o.pad) {
     const std::string pad = spelling.describe("pad", format_number(*o.pad));
     if (boundary == Boundary::periodic) {
@@ -205,6 +208,7 @@ SurfaceChoice make_surface_choice(const SurfaceOptions& o, Boundary boundary, co
             {"window", o.window.has_value()},
             {"invalid", o.invalid.has_value()},
             {"detrend", o.detrend.has_value()},
+            {"resample", o.resample.has_value()},
             {"pad", o.pad.has_value()}},
            fmt::format("applies only to {}; a built-in geometry takes its spacing from {} and {}", name("height_map"),
                        name("grid"), name("size")));

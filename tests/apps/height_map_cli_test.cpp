@@ -1,6 +1,7 @@
 // Tests of the height-map formats and preparation options of `halfspace
 // solve` through the real executable: every format, --window, --invalid,
-// --detrend, --pad, their record in the result file, and their input errors.
+// --detrend, --resample, --pad, their record in the result file, and their input errors.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
@@ -11,6 +12,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "io/hdf5_test_support.hpp"
@@ -174,6 +176,36 @@ TEST(HeightMapCliTest, PaddingKeepsThePressureOnTheMap) {
   EXPECT_LE(worst, kPaddingPressureTolerance * peak) << "largest pressure difference on the map";
 }
 
+// --resample changes the cells, not the lengths: the refined map's spacing
+// is half the file's, the coarsened map's twice, and both carry the force.
+TEST(HeightMapCliTest, ResampleChangesTheCellsNotTheLengths) {
+  const TempDir dir;
+  const fs::path map = kFormatDataDir / "di-5-crop-c-le-f8.npy";
+  const fs::path output = dir / "out.h5";
+  for (const auto& [cells, nx, ny, method] :
+       {std::tuple<const char*, std::size_t, std::size_t, const char*>{"128x96", 128, 96, "x: linear interpolation"},
+        {"32x24", 32, 24, "x: cell means"}}) {
+    SCOPED_TRACE(cells);
+    const ProgramRun result = run(solve(map, output,
+                                        {"--dx", "1.953125e-9", "--dy", "1.953125e-9", "--detrend", "plane",
+                                         "--resample", cells, "--force", "2e-9"}),
+                                  dir);
+    ASSERT_EQ(result.exit_code, kExitOk) << result.err;
+    test::expect_contains(string_attribute(output, "preparation"),
+                          {"detrend plane", fmt::format("resample: the 64x48 map to {}", cells), method});
+    EXPECT_EQ(dataset(output, "height").size(), nx * ny);
+    const test::H5 file = test::open_file(output);
+    EXPECT_DOUBLE_EQ(test::read_double_attribute(file.get(), "dx") * static_cast<double>(nx), 64 * 1.953125e-9);
+    EXPECT_DOUBLE_EQ(test::read_double_attribute(file.get(), "dy") * static_cast<double>(ny), 48 * 1.953125e-9);
+    const std::vector<double> pressure = dataset(output, "pressure");
+    double force = 0.0;
+    for (const double p : pressure)
+      force += p * 64 * 1.953125e-9 / static_cast<double>(nx) * 48 * 1.953125e-9 / static_cast<double>(ny);
+    EXPECT_NEAR(force, 2e-9, 1e-9 * 2e-9);
+    fs::remove(output);
+  }
+}
+
 TEST(HeightMapCliTest, PreparationOptionsAreCheckedBeforeReading) {
   const TempDir dir;
   const fs::path output = dir / "out.h5";
@@ -194,10 +226,18 @@ TEST(HeightMapCliTest, PreparationOptionsAreCheckedBeforeReading) {
                      output);
   expect_input_error(run(with({"--mean-pressure", "1e5", "--pad", "2"}), dir), {"--pad 2", "--mean-pressure"}, output);
   expect_input_error(run(with({"--force", "1", "--pad", "40"}), dir), {"--pad 40 is invalid", "[1, 16]"}, output);
+  expect_input_error(run(with({"--force", "1", "--resample", "64by48"}), dir), {"--resample", "expected NXxNY"},
+                     output);
+  expect_input_error(run(with({"--force", "1", "--resample", "1025x48"}), dir),
+                     {"resample 1025x48", "refine the 64x48 map", "more than 16 times (at most 1024 cells)"}, output);
   expect_input_error(run({"solve", "--geometry", "flat", "--grid", "8x8", "--size", "1e-3", "--E-star", "1e9",
                           "--force", "1", "--detrend", "plane", "--output", output.string()},
                          dir),
                      {"--detrend", "applies only to --height-map"}, output);
+  expect_input_error(run({"solve", "--geometry", "flat", "--grid", "8x8", "--size", "1e-3", "--E-star", "1e9",
+                          "--force", "1", "--resample", "16x16", "--output", output.string()},
+                         dir),
+                     {"--resample", "applies only to --height-map"}, output);
 }
 
 TEST(HeightMapCliTest, MislabelledFilesAreNamed) {

@@ -92,6 +92,33 @@ def test_window_and_detrend(data_dir, reference):
     assert np.array_equal(same.heights, window.heights)
 
 
+def test_resample_keeps_lengths_and_planes(data_dir, reference):
+    # A plane on the cell centres stays that plane on the new centres.
+    ny, nx, dx = 12, 16, 1e-6
+    y, x = (np.mgrid[0:ny, 0:nx] + 0.5) * dx
+    plane = _plane(x, y)
+    for cells in ((40, 30), "8x6", (40, 6)):
+        resampled = hs.HeightMap(plane, dx).prepare(resample=cells)
+        new_ny, new_nx = resampled.shape
+        assert resampled.size == pytest.approx((nx * dx, ny * dx), rel=1e-14)
+        y2, x2 = (np.mgrid[0:new_ny, 0:new_nx] + 0.5)
+        expected = _plane(x2 * resampled.dx, y2 * resampled.dy)
+        assert np.max(np.abs(resampled.heights - expected)) < 1e-18
+        assert "resample" in resampled.preparation[-1]
+    read = hs.read_height_map(data_dir / "di-5-crop-48x64.h5", detrend="plane", resample=(128, 96))
+    assert read.shape == (96, 128) and read.dx == pytest.approx(DX / 2, rel=1e-14)
+    profile = hs.HeightMap(np.arange(10.0) * 1e-9, 1e-6).prepare(resample=20)
+    assert profile.shape == (20,)
+    with pytest.raises(hs.InputError, match="more than 16 times"):
+        reference.prepare(resample=(2000, 48))
+    with pytest.raises(hs.InputError, match="expected NXxNY"):
+        reference.prepare(resample="64by48")
+
+
+def _plane(x, y):
+    return 1e-7 + 0.01 * x - 0.02 * y
+
+
 def test_array_heights_with_nan_prepare():
     heights = np.add.outer(np.arange(8.0), np.arange(10.0)) * 1e-9
     heights[3, 4] = np.nan

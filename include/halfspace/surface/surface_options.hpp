@@ -28,7 +28,7 @@ struct SurfaceOptions {
   // profile, x3p or gsf; an HDF5 dataset; the length unit of files that
   // state none), the spacings that override the file's, and its preparation
   // (surface/preparation.hpp: window "I0,J0,NX,NY", invalid points, detrend,
-  // pad factor of a free boundary).
+  // resample "NXxNY", pad factor of a free boundary).
   std::optional<std::string> height_map{};
   std::optional<std::string> dataset{};
   std::optional<double> dx{};
@@ -38,6 +38,7 @@ struct SurfaceOptions {
   std::optional<std::string> window{};
   std::optional<std::string> invalid{};
   std::optional<std::string> detrend{};
+  std::optional<std::string> resample{};
   std::optional<double> pad{};
   // A built-in shape (sphere, cylinder, flat, wavy) and the lengths it needs,
   // on a grid of `grid` cells ("N" or "NXxNY") over `size` ("L" or "LXxLY").
