@@ -403,7 +403,7 @@ void write_stribeck_csv(const std::string& path, const std::vector<lubrication::
   if (!out) throw InputError(fmt::format("writing the Stribeck curve to {} failed", path));
 }
 
-int run_mixed(const LubricateOptions& o, const HeightMap& map, const Grid& grid,
+int run_mixed(const LubricateOptions& o, const HeightMap& map, const Grid& grid, const FilmPlace& place,
               const lubrication::LubricationProblem& problem) {
   const lubrication::FlowConditions& conditions = problem.conditions;
   const lubrication::LubricantLaws& laws = problem.laws;
@@ -418,8 +418,10 @@ int run_mixed(const LubricateOptions& o, const HeightMap& map, const Grid& grid,
   std::string first_failure;
   if (problem.speeds) {
     std::vector<lubrication::StribeckPoint> points =
-        lubrication::stribeck_sweep(op, gap, conditions, laws, options, *problem.speeds);
-    write_stribeck_csv(*o.stribeck, points);
+        place.sweep_processes
+            ? lubrication::stribeck_sweep(op, gap, conditions, laws, options, *problem.speeds, *place.sweep_processes)
+            : lubrication::stribeck_sweep(op, gap, conditions, laws, options, *problem.speeds);
+    if (place.first) write_stribeck_csv(*o.stribeck, points);
     for (const lubrication::StribeckPoint& point : points) {
       if (!point.film.converged() && all_converged) {
         all_converged = false;
@@ -445,13 +447,18 @@ int run_mixed(const LubricateOptions& o, const HeightMap& map, const Grid& grid,
   summary.friction_force_x = film.fluid_friction_force[0] + film.contact_friction_force[0];
   summary.friction_force_y = film.fluid_friction_force[1] + film.contact_friction_force[1];
   summary.friction_coefficient = film.friction_coefficient;
-  write_film_file(o, map, grid, summary, film.pressure, film.film, film.fluid_fraction, [&](const io::Hdf5Node& root) {
-    write_mixed_fields(root, io::field_shape(grid), grid.size(), film, options, e_star, laws, used.viscosity);
-    root.write_double_attribute("entrainment_speed",
-                                std::hypot(used.entrainment_velocity[0], used.entrainment_velocity[1]));
-  });
-  const int code = report(o, map, summary, all_converged, problem);
-  if (code == kExitOk && !o.quiet) {
+  // With the speeds shared out, the first process holds the last film whole
+  // (stribeck_sweep) and writes it.
+  if (place.first) {
+    write_film_file(
+        o, map, grid, summary, film.pressure, film.film, film.fluid_fraction, [&](const io::Hdf5Node& root) {
+          write_mixed_fields(root, io::field_shape(grid), grid.size(), film, options, e_star, laws, used.viscosity);
+          root.write_double_attribute("entrainment_speed",
+                                      std::hypot(used.entrainment_velocity[0], used.entrainment_velocity[1]));
+        });
+  }
+  const int code = report(o, map, summary, all_converged, problem, place.first);
+  if (code == kExitOk && !o.quiet && place.first) {
     fmt::print("  {:<15} {:.4g} of the load, area {:.4g} of the cells\n", "contact", film.contact_load_fraction,
                film.contact_area_fraction);
     if (o.stribeck) fmt::print("  {:<15} {} ({} speeds)\n", "stribeck", *o.stribeck, problem.speeds->size());
@@ -623,9 +630,13 @@ int solve_film(const LubricateOptions& o) {
   io::check_output_path(*o.output);
   if (o.stribeck) io::check_output_path(*o.stribeck);
 
-  // On several processes only the steady rigid film's solver runs on slabs
-  // of rows (mpi/slab_film_rows.hpp); the first process solves the others.
-  const bool on_slabs = problem.kind == lubrication::FilmKind::rigid && !problem.transient;
+  // On several processes the steady rigid film's solver runs on slabs of
+  // rows (mpi/slab_film_rows.hpp), a mixed film's Stribeck sweep shares out
+  // its speeds, and the first process solves the others.
+  const FilmSpread spread = problem.kind == lubrication::FilmKind::rigid && !problem.transient ? FilmSpread::row_slabs
+                            : problem.kind == lubrication::FilmKind::mixed && problem.speeds
+                                ? FilmSpread::sweep_speeds
+                                : FilmSpread::first_process;
   return run_film_everywhere([&] { return read_film_map(o, surface); },
                              [&](HeightMap& map, const FilmPlace& place) {
                                const Grid grid = map.dimension == 1
@@ -633,7 +644,7 @@ int solve_film(const LubricateOptions& o) {
                                                      : Grid::plane(map.nx, map.ny, map.dx, map.dy, problem.boundary);
                                problem.check_grid(grid, spelling, map.source);
                                if (problem.kind == lubrication::FilmKind::mixed) {
-                                 return run_mixed(o, map, grid, problem);
+                                 return run_mixed(o, map, grid, place, problem);
                                }
                                if (problem.kind == lubrication::FilmKind::elastic) {
                                  return run_elastic(o, map, grid, problem);
@@ -641,7 +652,7 @@ int solve_film(const LubricateOptions& o) {
                                if (problem.transient) return run_transient(o, map, grid, problem);
                                return run_rigid(o, map, grid, place, problem);
                              },
-                             on_slabs);
+                             spread);
 }
 
 // --plot: the tool is found (and its packages checked) before the solve; the

@@ -59,7 +59,7 @@ int run_stress_everywhere(const std::filesystem::path& path, const std::function
   return run(place);
 }
 int run_film_everywhere(const std::function<HeightMap()>& read,
-                        const std::function<int(HeightMap& map, const FilmPlace& place)>& run, bool /*on_slabs*/) {
+                        const std::function<int(HeightMap& map, const FilmPlace& place)>& run, FilmSpread /*spread*/) {
   HeightMap map = read();
   return run(map, FilmPlace{});
 }

@@ -17,6 +17,7 @@
 #include "halfspace/io/height_map_writer.hpp"
 #include "halfspace/io/result_pressure_reader.hpp"
 #include "halfspace/io/stress_writer.hpp"
+#include "halfspace/linalg/communicator.hpp"
 #include "halfspace/lubrication/film_rows.hpp"
 #include "halfspace/lubrication/flow_conditions.hpp"
 #include "halfspace/solvers/layout.hpp"
@@ -122,6 +123,9 @@ struct FilmPlace {
   bool whole = true;          // the whole map here
   bool first = true;          // the first (or only) process: it prints
   std::size_t first_row = 0;  // the map's rows held here begin at this row of the whole map
+  // The processes sharing a Stribeck sweep's speeds, each with the whole map
+  // (lubrication::stribeck_sweep); null: the whole sweep here.
+  const linalg::Communicator* sweep_processes = nullptr;
   // The film's rows for the solvers (lubrication/film_rows.hpp) on the
   // whole film's grid under its conditions: null for the whole film.
   std::function<std::unique_ptr<lubrication::FilmRows>(const Grid& grid, const lubrication::FlowConditions& conditions)>
@@ -136,16 +140,21 @@ struct FilmPlace {
                       const std::function<void(const io::Hdf5Node& root)>& fill) { io::write_hdf5_file(path, fill); };
 };
 
+// How a film's work is spread over several processes: run by the first
+// alone; on slabs of rows (the films whose solver runs on rows:
+// lubrication/film_rows.hpp); or a Stribeck sweep's speeds shared out.
+enum class FilmSpread { first_process, row_slabs, sweep_speeds };
+
 // Reads the height map with read() and returns run(map, place). One process
 // (and the serial build): the whole map here. Several MPI processes: the
-// first reads the map whole (a failure throws on every process); where
-// `on_slabs` (the films whose solver runs on rows: lubrication/film_rows.hpp)
-// it hands every process its rows of a 2D map (map.heights; the other
-// members are the whole map's), and all run; a profile, one row, and a film
-// not on slabs are run by the first process alone as one process runs them,
-// the others waiting. A failure that only some processes meet while running
-// ends them all.
+// first reads the map whole (a failure throws on every process); with
+// row_slabs it hands every process its rows of a 2D map (map.heights; the
+// other members are the whole map's), and all run; with sweep_speeds every
+// process gets the whole map and runs with place.sweep_processes set; a
+// profile or one row on slabs, and first_process, are run by the first
+// process alone as one process runs them, the others waiting. A failure
+// that only some processes meet while running ends them all.
 int run_film_everywhere(const std::function<HeightMap()>& read,
-                        const std::function<int(HeightMap& map, const FilmPlace& place)>& run, bool on_slabs);
+                        const std::function<int(HeightMap& map, const FilmPlace& place)>& run, FilmSpread spread);
 
 }  // namespace halfspace::app

@@ -5,7 +5,9 @@
 // serial solver's iterates) and all write their rows of the result file at
 // once (the parallel HDF5). A profile, one row, and the films whose solvers
 // do not run on rows (elastic, mixed, transient) are run by the first
-// process as the serial program runs them.
+// process as the serial program runs them; a Stribeck sweep's speeds are
+// shared out, every process holding the whole map.
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -58,7 +60,7 @@ HeightMap broadcast_map_description(const mpi::MpiCommunicator& world, const std
 }  // namespace
 
 int run_film_everywhere(const std::function<HeightMap()>& read,
-                        const std::function<int(HeightMap& map, const FilmPlace& place)>& run, bool on_slabs) {
+                        const std::function<int(HeightMap& map, const FilmPlace& place)>& run, FilmSpread spread) {
   const mpi::MpiCommunicator world = mpi_world();
   if (world.size() == 1) {
     HeightMap map = read();
@@ -70,7 +72,22 @@ int run_film_everywhere(const std::function<HeightMap()>& read,
     if (root) whole.emplace(read());
   });
   HeightMap map = broadcast_map_description(world, whole);
-  if (map.dimension == 1 || !on_slabs) return run_on_first_process([&] { return run(*whole, FilmPlace{}); });
+  if (spread == FilmSpread::sweep_speeds) {
+    // Every process solves its run of the speeds on the whole map.
+    map.heights.resize(static_cast<Eigen::Index>(map.nx * map.ny));
+    if (root) map.heights = whole->heights;
+    constexpr Eigen::Index kChunk = Eigen::Index{1} << 28;  // MPI counts are ints
+    for (Eigen::Index at = 0; at < map.heights.size(); at += kChunk) {
+      const auto count = static_cast<int>(std::min(kChunk, map.heights.size() - at));
+      mpi::check(MPI_Bcast(map.heights.data() + at, count, MPI_DOUBLE, 0, world.get()), "MPI_Bcast");
+    }
+    whole.reset();
+    const FilmPlace place{.first = root, .sweep_processes = &world};
+    return run_on_slabs(world, [&] { return run(map, place); });
+  }
+  if (map.dimension == 1 || spread != FilmSpread::row_slabs) {
+    return run_on_first_process([&] { return run(*whole, FilmPlace{}); });
+  }
 
   const mpi::SlabLayout slab = mpi::slab_layout(map.nx, map.ny, world);
   map.heights.resize(static_cast<Eigen::Index>(slab.local_size()));

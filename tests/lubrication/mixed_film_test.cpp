@@ -269,6 +269,46 @@ TEST(MixedFilmTest, StribeckCurveHasItsThreeRegimes) {
   EXPECT_LT(curve[lowest].film.friction_coefficient, curve[0].film.friction_coefficient);
 }
 
+// The shared sweep's runs: every speed once, contiguous runs in speed order
+// on the processes from the last to the first (the last speed on process
+// 0), their lengths within one of each other.
+TEST(MixedFilmTest, StribeckRunsCoverTheSpeedsOnceTheLastOnTheFirstProcess) {
+  for (std::size_t speeds = 0; speeds <= 11; ++speeds) {
+    for (int size = 1; size <= 5; ++size) {
+      SCOPED_TRACE(::testing::Message() << speeds << " speeds on " << size << " processes");
+      std::size_t next = 0, shortest = speeds, longest = 0;
+      for (int rank = size - 1; rank >= 0; --rank) {
+        const auto [first, end] = stribeck_run(speeds, rank, size);
+        EXPECT_EQ(first, next);
+        ASSERT_GE(end, first);
+        next = end;
+        shortest = std::min(shortest, end - first);
+        longest = std::max(longest, end - first);
+      }
+      EXPECT_EQ(next, speeds);
+      EXPECT_LE(longest - shortest, 1u);
+      if (speeds > 0) EXPECT_EQ(stribeck_run(speeds, 0, size).second, speeds);
+    }
+  }
+}
+
+// On one process the shared sweep is the sweep, to the bit.
+TEST(MixedFilmTest, SharedSweepOnOneProcessIsTheSweep) {
+  const RoughLine line = rough_line(0.2e-6);
+  FftInfluenceOperator op(line.grid, kEStar);
+  const std::vector<double> speeds{0.1, 0.03};
+  const std::vector<StribeckPoint> plain = stribeck_sweep(op, line.gap, flow(1.0), laws(), mixed_options(), speeds);
+  const std::vector<StribeckPoint> shared =
+      stribeck_sweep(op, line.gap, flow(1.0), laws(), mixed_options(), speeds, linalg::serial_communicator());
+  ASSERT_EQ(shared.size(), plain.size());
+  for (std::size_t k = 0; k < plain.size(); ++k) {
+    ASSERT_TRUE(plain[k].film.converged()) << plain[k].film.message;
+    EXPECT_EQ(shared[k].hersey_number, plain[k].hersey_number);
+    EXPECT_TRUE((shared[k].film.pressure == plain[k].film.pressure).all());
+    EXPECT_EQ(shared[k].film.friction_coefficient, plain[k].film.friction_coefficient);
+  }
+}
+
 // A wedge that touches only at its outlet edge, where the pressure is
 // imposed: the dry contact that starts the Newton iteration carries the
 // load on that node alone. Nearly rigid the film is the inclined slider's,

@@ -16,7 +16,9 @@ x-periodic, load control, a prepared map (window and detrending), shear
 limits; a profile (one row) on several processes is run by the first
 process as the serial program runs it, elastic films included, and so are
 the films of a map whose solvers do not run on slabs (elastic, mixed,
-transient): their files must be the serial program's to the bit. --plot
+transient): their files must be the serial program's to the bit; a mixed
+film's Stribeck sweep shares out its speeds, and its curve and last film
+must equal the serial ones to the solver's tolerance. --plot
 and a map with fewer rows than processes must be refused by every process
 with one message and no file.
 """
@@ -136,6 +138,56 @@ film_case("map-mixed", base + ["--force", "5", "--E-star", "1e11", "--mixed"], b
 film_case("map-transient", base + ["--separation", "1e-6", "--time-step", "1e-4", "--steps", "2",
                                    "--approach-velocity", "1e-3"], bitwise=True, process_counts=(2,),
           required=kFields + ("history/load", "steps/002/pressure"), text_files=(".csv",))
+
+# A Stribeck sweep shares out its speeds: contiguous runs, the last on the
+# first process, each run's first speed started as a single solve is (not
+# from the previous speed), so the curve and the last film equal the
+# serial ones to the solver's tolerance (1e-8 on the mass balance and the
+# load), not to the bit. From full film to 22 % of the load on contact.
+kSweepTolerance = 1e-6
+
+
+def sweep_case(name, arguments, process_counts):
+    runs = {}
+    for processes in (0,) + process_counts:
+        where = f"{name}, {processes or 'serial'} processes"
+        output = os.path.join(work_dir, f"{name}-{processes}.h5")
+        curve = os.path.join(work_dir, f"{name}-{processes}.csv")
+        command = ["lubricate"] + arguments + ["--stribeck", curve, "--output", output]
+        result = harness.run([serial_program] + command) if processes == 0 else harness.run_mpi(processes, command)
+        if result.returncode != 0:
+            fail(f"{where}: exit {result.returncode}: {result.stderr.strip()}")
+            continue
+        runs[processes] = (where, output, np.genfromtxt(curve, delimiter=",", names=True, dtype=None,
+                                                         encoding="utf-8"))
+    if 0 not in runs:
+        return
+    _, serial_output, serial_curve = runs.pop(0)
+    if "converged" not in set(serial_curve["status"]) or len(serial_curve) < 3:
+        fail(f"{name}: the serial sweep did not run as the case needs: {serial_curve}")
+    if not np.max(serial_curve["contact_load_fraction"]) > 0.1:
+        fail(f"{name}: the serial sweep never reaches contact; the case tests less than it should")
+    for where, output, curve in runs.values():
+        if list(curve["status"]) != list(serial_curve["status"]):
+            fail(f"{where}: statuses {list(curve['status'])}, serial {list(serial_curve['status'])}")
+        worst = 0.0
+        for column in serial_curve.dtype.names:
+            if column in ("status", "newton_steps"):
+                continue
+            want, got = serial_curve[column], curve[column]
+            scale = max(float(np.max(np.abs(want))), 1e-300)
+            worst = max(worst, float(np.max(np.abs(got - want))) / scale)
+        if worst > kSweepTolerance:
+            fail(f"{where}: the Stribeck curve differs by {worst:.2e} of a column's largest value "
+                 f"(allowed {kSweepTolerance:.0e})")
+        with h5py.File(output, "r") as got, h5py.File(serial_output, "r") as want:
+            for field in ("pressure", "fluid_pressure", "contact_pressure", "film", "fluid_fraction"):
+                worst = max(worst, harness.compare_dataset(where, field, got[field], want[field], kSweepTolerance))
+        print(f"{where}: largest difference {worst:.2e} of a column's or field's largest value")
+
+
+sweep_case("mixed-sweep", base + ["--force", "5", "--E-star", "1e11", "--mixed", "--speeds", "0.03,0.01,0.003"],
+           process_counts=(1, 2, 3))
 
 # Refused by every process alike, no file.
 refused = os.path.join(work_dir, "refused.h5")

@@ -30,8 +30,10 @@
 #include <cstddef>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
+#include "halfspace/linalg/communicator.hpp"
 #include "halfspace/lubrication/elastic_film.hpp"
 #include "halfspace/lubrication/film_shear.hpp"
 #include "halfspace/lubrication/film_solution.hpp"
@@ -214,5 +216,27 @@ struct StribeckPoint {
 std::vector<StribeckPoint> stribeck_sweep(InfluenceOperator& op, const Eigen::ArrayXd& gap,
                                           const FlowConditions& conditions, const LubricantLaws& laws,
                                           const MixedFilmOptions& options, const std::vector<double>& speeds);
+
+// The sweep shared out among `processes`, each holding the whole gap and a
+// serial operator on the whole grid (the films are independent solves):
+// contiguous runs of the speeds, the last run on process 0 (the runs go to
+// the processes in reverse order) so that it holds the last speed's film
+// whole. Within a run each speed starts from the previous one as above; a
+// run's first speed starts as a single solve does (grid-sequenced), so its
+// film equals the one-process sweep's to the solver's tolerance, not to
+// the bit. Every process returns every point: its own whole, the others'
+// with their film's summary (status, message, Newton and GMRES counts,
+// load, friction forces and coefficient, contact share and area, central
+// and minimum film thickness, peak pressure) but not its fields.
+// Collective: every process passes the same speeds.
+std::vector<StribeckPoint> stribeck_sweep(InfluenceOperator& op, const Eigen::ArrayXd& gap,
+                                          const FlowConditions& conditions, const LubricantLaws& laws,
+                                          const MixedFilmOptions& options, const std::vector<double>& speeds,
+                                          const linalg::Communicator& processes);
+
+// The run of `speeds` indices [first, end) that process `rank` of `size`
+// solves in the shared sweep (possibly empty when there are fewer speeds
+// than processes).
+std::pair<std::size_t, std::size_t> stribeck_run(std::size_t speeds, int rank, int size);
 
 }  // namespace halfspace::lubrication
