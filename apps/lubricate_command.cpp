@@ -416,12 +416,25 @@ int run_mixed(const LubricateOptions& o, const HeightMap& map, const Grid& grid,
   lubrication::MixedFilm film;
   bool all_converged = true;
   std::string first_failure;
+  // With the speeds shared out, what may fail on one process alone (the
+  // memory of a whole film, writing the files) ends every process alike,
+  // before any waits for another; otherwise this process runs alone.
+  const auto agreed = [&](const std::function<void()>& step) {
+    if (place.sweep_processes) {
+      agree_everywhere(step);
+    } else {
+      step();
+    }
+  };
   if (problem.speeds) {
+    if (place.sweep_processes) agreed([&] { lubrication::require_mixed_film_fits(grid, options, "the mixed film"); });
     std::vector<lubrication::StribeckPoint> points =
         place.sweep_processes
             ? lubrication::stribeck_sweep(op, gap, conditions, laws, options, *problem.speeds, *place.sweep_processes)
             : lubrication::stribeck_sweep(op, gap, conditions, laws, options, *problem.speeds);
-    if (place.first) write_stribeck_csv(*o.stribeck, points);
+    agreed([&] {
+      if (place.first) write_stribeck_csv(*o.stribeck, points);
+    });
     for (const lubrication::StribeckPoint& point : points) {
       if (!point.film.converged() && all_converged) {
         all_converged = false;
@@ -449,14 +462,15 @@ int run_mixed(const LubricateOptions& o, const HeightMap& map, const Grid& grid,
   summary.friction_coefficient = film.friction_coefficient;
   // With the speeds shared out, the first process holds the last film whole
   // (stribeck_sweep) and writes it.
-  if (place.first) {
+  agreed([&] {
+    if (!place.first) return;
     write_film_file(
         o, map, grid, summary, film.pressure, film.film, film.fluid_fraction, [&](const io::Hdf5Node& root) {
           write_mixed_fields(root, io::field_shape(grid), grid.size(), film, options, e_star, laws, used.viscosity);
           root.write_double_attribute("entrainment_speed",
                                       std::hypot(used.entrainment_velocity[0], used.entrainment_velocity[1]));
         });
-  }
+  });
   const int code = report(o, map, summary, all_converged, problem, place.first);
   if (code == kExitOk && !o.quiet && place.first) {
     fmt::print("  {:<15} {:.4g} of the load, area {:.4g} of the cells\n", "contact", film.contact_load_fraction,

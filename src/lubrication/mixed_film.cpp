@@ -172,7 +172,9 @@ constexpr int kKrylovColdShare = 4;
 // steps before: on a rough point contact such a try crept for thousands of
 // GMRES iterations before it stalled (at 128^2 80 % of the fine grid's),
 // and the way round, a faster film and the continuation in the speed, was
-// the cheaper one (docs/development-log.md, 2026-12-01).
+// the cheaper one (docs/development-log.md, 2026-12-01). On larger grids
+// (MixedStartUse::try_until_short) only the first rule holds: a measured
+// map's 256^2 try took 1,200 GMRES iterations per step before it failed.
 constexpr int kStagnationSteps = 3;
 constexpr double kStagnationShare = 0.75;
 
@@ -255,7 +257,8 @@ namespace {
 // One Newton solve from `start` or the standard starts.
 MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
                      const LubricantLaws& laws, const MixedFilmOptions& options, const MixedFilm* start,
-                     bool only_trying = false) {
+                     detail::MixedStartUse use = detail::MixedStartUse::solve_only) {
+  const bool only_trying = use == detail::MixedStartUse::try_only || use == detail::MixedStartUse::try_until_short;
   const auto started = std::chrono::steady_clock::now();
   const Grid& grid = op.grid();
   conditions.validate(grid);
@@ -499,7 +502,7 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
       .share = std::max(1, options.max_iterations / static_cast<int>(attempts)),
       .limit = cold_budget,
       .limit_on_each_start = false};
-  if (only_trying) {
+  if (use == detail::MixedStartUse::try_only) {
     newton.rules.stagnation_steps = kStagnationSteps;
     newton.rules.stagnation_share = kStagnationShare;
   }
@@ -822,8 +825,8 @@ MixedFilm detail::solve_mixed_film_on_grid(InfluenceOperator& op, const Eigen::A
   const auto started = std::chrono::steady_clock::now();
   MixedFilm film;
   if (use != MixedStartUse::continue_only) {
-    film = solve_once(op, gap, conditions, laws, options, start, use == MixedStartUse::try_only);
-    if (film.converged() || use == MixedStartUse::solve_only || use == MixedStartUse::try_only) return film;
+    film = solve_once(op, gap, conditions, laws, options, start, use);
+    if (film.converged() || use != MixedStartUse::solve_then_continue) return film;
   }
   if (!options.load_controlled()) {
     MixedFilm continued = continue_in_offset(op, gap, conditions, laws, options, start, std::move(film));

@@ -30,8 +30,13 @@ constexpr double kSequencedFastest = 64.0;
 // fewer where the iteration stagnates on grids of at most kTryingNodes
 // nodes (MixedStartUse::try_only). Up to 128^2 the tries from the coarse
 // film failed on every rough point contact traced, after thousands of GMRES
-// iterations; from 256^2 they converged, and giving up there sent a 512^2
-// film the longer way round (docs/development-log.md, 2026-12-01).
+// iterations; from 256^2 they converged, and giving up on stagnation there
+// sent a 512^2 film the longer way round (docs/development-log.md,
+// 2026-12-01). Above, a try ends where a step's GMRES stops short of its
+// forcing term (MixedStartUse::try_until_short): the synthetic 256^2 and
+// 512^2 films are unchanged, and a measured 256^2 window's try that failed
+// after 14,576 GMRES iterations ends at its first step (1926 -> 1467 CPU
+// s; docs/development-log.md, 2026-12-01, twenty-sixth session).
 constexpr int kSequencedFirstSteps = 60;
 constexpr std::size_t kTryingNodes = 128 * 128;
 
@@ -113,7 +118,7 @@ MixedFilm solve_sequenced(InfluenceOperator& op, const Eigen::ArrayXd& gap, cons
     first.max_iterations = std::min(options.max_iterations, kSequencedFirstSteps);
     result = detail::solve_mixed_film_on_grid(
         op, gap, conditions, laws, first, &*coarse_start,
-        grid.size() <= kTryingNodes ? detail::MixedStartUse::try_only : detail::MixedStartUse::solve_only);
+        grid.size() <= kTryingNodes ? detail::MixedStartUse::try_only : detail::MixedStartUse::try_until_short);
   }
   int steps = result.iterations, krylov = result.krylov_iterations;
   // A fine Newton iteration that failed from the coarse film (its steps

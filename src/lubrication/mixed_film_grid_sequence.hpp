@@ -16,8 +16,10 @@ namespace halfspace::lubrication::detail {
 // continuation in the speed from it alone.
 // try_only: solve_only, giving up where the Newton iteration stagnates or a
 // step's GMRES stops short of its forcing term (the fine grid's first try
-// from the coarse film, which has a way round).
-enum class MixedStartUse { solve_then_continue, solve_only, try_only, continue_only };
+// from the coarse film, which has a way round); try_until_short: giving up
+// only where a step's GMRES stops short (the same try on the larger grids,
+// where a try that converges may stagnate first).
+enum class MixedStartUse { solve_then_continue, solve_only, try_only, try_until_short, continue_only };
 
 // The mixed film on the operator's grid alone (no coarser grid): the Newton
 // iteration from `start` or the standard starts (mixed_film.cpp) and the

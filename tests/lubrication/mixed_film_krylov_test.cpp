@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -18,6 +19,7 @@
 #include "halfspace/lubrication/mixed_film.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
 #include "halfspace/solvers/polonsky_keer.hpp"
+#include "lubrication/mixed_film_grid_sequence.hpp"
 #include "support/analytic_solutions.hpp"
 
 namespace halfspace::lubrication {
@@ -396,6 +398,32 @@ TEST(MixedFilmKrylovTest, ShortGmresStepsStillDescendToTheFilm) {
   const double peak = expected.max_pressure;
   EXPECT_LE((f.pressure - expected.pressure).abs().maxCoeff(), 1e-6 * peak);
   EXPECT_EQ(f.contact_area_fraction, expected.contact_area_fraction);
+}
+
+// A try (the fine grid's first from the coarse film, which has a way
+// round) takes no such short step. From the film at 64x the speed with one
+// GMRES iteration per solve (two with the retry), the iteration itself
+// goes on through short steps (measured: 22 steps), while a try, try_only
+// or try_until_short (grids above 128^2), ends at the first step whose
+// GMRES stops short (measured: the sixth), with GMRES's message.
+TEST(MixedFilmKrylovTest, TriesEndAtTheirFirstShortGmresStep) {
+  const RoughContact point = rough_point(13, 0.2e-6);
+  FftInfluenceOperator op(point.grid, kEStar);
+  const MixedFilmOptions full = options_for(kPointLoad, FilmLinearSolve::gmres);
+  MixedFilmOptions short_gmres = full;
+  short_gmres.krylov_max_iterations = 1;
+  const MixedFilm faster = solve_mixed_film(op, point.gap, flow(64.0 * kMixedSpeed), laws(), full);
+  ASSERT_TRUE(faster.converged()) << faster.message;
+  const MixedFilm solved = detail::solve_mixed_film_on_grid(op, point.gap, flow(kMixedSpeed), laws(), short_gmres,
+                                                            &faster, detail::MixedStartUse::solve_only);
+  EXPECT_GT(solved.iterations, 10) << solved.message;
+  for (const detail::MixedStartUse use : {detail::MixedStartUse::try_until_short, detail::MixedStartUse::try_only}) {
+    const MixedFilm tried =
+        detail::solve_mixed_film_on_grid(op, point.gap, flow(kMixedSpeed), laws(), short_gmres, &faster, use);
+    EXPECT_FALSE(tried.converged());
+    EXPECT_LT(2 * tried.iterations, solved.iterations);
+    EXPECT_NE(tried.message.find("GMRES reached a relative residual"), std::string::npos) << tried.message;
+  }
 }
 
 TEST(MixedFilmKrylovTest, RefusesInvalidKrylovOptionsNamingThem) {
