@@ -10,6 +10,7 @@
 #include <string>
 
 #include "halfspace/error.hpp"
+#include "support/height_map_fixtures.hpp"
 
 namespace halfspace::surface {
 namespace {
@@ -18,23 +19,7 @@ namespace {
 // represent is rounding only; the brief asks for 1e-12 of the heights.
 constexpr double kExactRelativeTolerance = 1e-12;
 
-HeightMap map_from(std::size_t nx, std::size_t ny, double dx, double dy,
-                   const std::function<double(double, double)>& h) {
-  HeightMap map;
-  map.dimension = ny == 1 ? 1 : 2;
-  map.nx = nx;
-  map.ny = ny;
-  map.dx = dx;
-  map.dy = ny == 1 ? 0.0 : dy;
-  map.source = "synthetic";
-  map.heights.resize(static_cast<Eigen::Index>(nx * ny));
-  for (std::size_t j = 0; j < ny; ++j) {
-    for (std::size_t i = 0; i < nx; ++i) {
-      map.heights[static_cast<Eigen::Index>(j * nx + i)] = h(static_cast<double>(i) * dx, static_cast<double>(j) * dy);
-    }
-  }
-  return map;
-}
+using testing::sampled_map;
 
 // Largest |residual| over valid points, relative to the largest |height| before.
 double worst_relative_residual(const HeightMap& after, double scale) {
@@ -47,7 +32,7 @@ double worst_relative_residual(const HeightMap& after, double scale) {
 
 TEST(DetrendTest, RemovesPlaneWithLargeOffsetExactly) {
   // A tilted plane with an offset 10^4 times its relief, anisotropic cells.
-  HeightMap map = map_from(97, 61, 2.0e-6, 3.5e-6, [](double x, double y) { return 1e-2 + 3e-3 * x - 7e-4 * y; });
+  HeightMap map = sampled_map(97, 61, 2.0e-6, 3.5e-6, [](double x, double y) { return 1e-2 + 3e-3 * x - 7e-4 * y; });
   const double scale = map.heights.abs().maxCoeff();
   detrend(map, Detrend::plane);
   EXPECT_LE(worst_relative_residual(map, scale), kExactRelativeTolerance);
@@ -57,7 +42,7 @@ TEST(DetrendTest, RemovesPlaneWithLargeOffsetExactly) {
 }
 
 TEST(DetrendTest, RemovesQuadricExactly) {
-  HeightMap map = map_from(80, 50, 1e-6, 2e-6, [](double x, double y) {
+  HeightMap map = sampled_map(80, 50, 1e-6, 2e-6, [](double x, double y) {
     return -5e-5 + 2e-2 * x + 1e-2 * y - (x * x + 0.5 * x * y + 3 * y * y) / (2 * 0.01);
   });
   const double scale = map.heights.abs().maxCoeff();
@@ -67,17 +52,17 @@ TEST(DetrendTest, RemovesQuadricExactly) {
 
 TEST(DetrendTest, RemovesProfileParabolaAndLine) {
   HeightMap parabola =
-      map_from(300, 1, 1e-7, 0.0, [](double x, double) { return 4e-6 - x * x / (2 * 1e-3) + 0.1 * x; });
+      sampled_map(300, 1, 1e-7, 0.0, [](double x, double) { return 4e-6 - x * x / (2 * 1e-3) + 0.1 * x; });
   const double scale = parabola.heights.abs().maxCoeff();
   detrend(parabola, Detrend::curvature);
   EXPECT_LE(worst_relative_residual(parabola, scale), kExactRelativeTolerance);
-  HeightMap line = map_from(300, 1, 1e-7, 0.0, [](double x, double) { return 4e-6 + 0.1 * x; });
+  HeightMap line = sampled_map(300, 1, 1e-7, 0.0, [](double x, double) { return 4e-6 + 0.1 * x; });
   detrend(line, Detrend::plane);
   EXPECT_LE(worst_relative_residual(line, 4e-6), kExactRelativeTolerance);
 }
 
 TEST(DetrendTest, FitsOnlyValidPointsAndKeepsInvalidOnesNaN) {
-  HeightMap map = map_from(20, 10, 1e-6, 1e-6, [](double x, double y) { return 1e-6 + 0.01 * x + 0.02 * y; });
+  HeightMap map = sampled_map(20, 10, 1e-6, 1e-6, [](double x, double y) { return 1e-6 + 0.01 * x + 0.02 * y; });
   map.valid.assign(map.size(), 1);
   for (std::size_t k : {3u, 47u, 150u}) {
     map.valid[k] = 0;
@@ -91,7 +76,7 @@ TEST(DetrendTest, FitsOnlyValidPointsAndKeepsInvalidOnesNaN) {
 
 TEST(DetrendTest, MeanRemovalLeavesZeroMeanAndPlaneRemovalLeavesRoughness) {
   // A plane plus a zero-mean, plane-orthogonal pattern: only the plane goes.
-  HeightMap map = map_from(64, 64, 1.0, 1.0, [](double x, double y) {
+  HeightMap map = sampled_map(64, 64, 1.0, 1.0, [](double x, double y) {
     return 5.0 + 0.25 * x - 0.5 * y + std::cos(2 * M_PI * x / 8) * std::cos(2 * M_PI * y / 8);
   });
   HeightMap mean_only = map;
@@ -108,7 +93,7 @@ TEST(DetrendTest, MeanRemovalLeavesZeroMeanAndPlaneRemovalLeavesRoughness) {
 }
 
 TEST(DetrendTest, NoneChangesNothing) {
-  HeightMap map = map_from(4, 3, 1.0, 1.0, [](double x, double y) { return x + y; });
+  HeightMap map = sampled_map(4, 3, 1.0, 1.0, [](double x, double y) { return x + y; });
   const Eigen::ArrayXd before = map.heights;
   detrend(map, Detrend::none);
   EXPECT_TRUE((map.heights == before).all());
@@ -116,7 +101,7 @@ TEST(DetrendTest, NoneChangesNothing) {
 }
 
 TEST(DetrendTest, RejectsFitsTheValidPointsCannotDetermine) {
-  HeightMap map = map_from(5, 4, 1.0, 1.0, [](double x, double) { return x; });
+  HeightMap map = sampled_map(5, 4, 1.0, 1.0, [](double x, double) { return x; });
   map.valid.assign(map.size(), 0);
   for (std::size_t i = 0; i < 5; ++i) map.valid[2 * 5 + i] = 1;  // one row: no y slope
   try {

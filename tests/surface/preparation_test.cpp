@@ -10,6 +10,7 @@
 
 #include "halfspace/error.hpp"
 #include "halfspace/surface/padding.hpp"
+#include "support/height_map_fixtures.hpp"
 
 namespace halfspace::surface {
 namespace {
@@ -30,15 +31,7 @@ HeightMap index_map(std::size_t nx, std::size_t ny) {
   return map;
 }
 
-std::string input_error_of(const std::function<void()>& step) {
-  try {
-    step();
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  ADD_FAILURE() << "no InputError";
-  return {};
-}
+using testing::input_error_of;
 
 TEST(WindowTest, ParsesMapAndProfileWindows) {
   const Window map = parse_window("10,20,128,64");

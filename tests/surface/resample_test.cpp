@@ -12,38 +12,17 @@
 
 #include "halfspace/error.hpp"
 #include "halfspace/surface/preparation.hpp"
+#include "support/height_map_fixtures.hpp"
 
 namespace halfspace::surface {
 namespace {
 
+using testing::input_error_of;
+
 // Heights f(x, y) at the cell centres of an nx x ny map of spacing dx, dy.
 HeightMap sampled_map(std::size_t nx, std::size_t ny, double dx, double dy,
                       const std::function<double(double, double)>& f) {
-  HeightMap map;
-  map.dimension = ny == 1 ? 1 : 2;
-  map.nx = nx;
-  map.ny = ny;
-  map.dx = dx;
-  map.dy = ny == 1 ? 0.0 : dy;
-  map.source = "test map";
-  map.heights.resize(static_cast<Eigen::Index>(nx * ny));
-  for (std::size_t j = 0; j < ny; ++j) {
-    for (std::size_t i = 0; i < nx; ++i) {
-      map.heights[static_cast<Eigen::Index>(j * nx + i)] =
-          f((static_cast<double>(i) + 0.5) * dx, (static_cast<double>(j) + 0.5) * dy);
-    }
-  }
-  return map;
-}
-
-std::string input_error_of(const std::function<void()>& step) {
-  try {
-    step();
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  ADD_FAILURE() << "no InputError";
-  return {};
+  return testing::sampled_map(nx, ny, dx, dy, f, 0.5);
 }
 
 double plane(double x, double y) {
