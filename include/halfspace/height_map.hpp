@@ -23,7 +23,8 @@ struct HeightMap {
   std::vector<std::uint8_t> valid;
   std::string source;  // "file.h5:/height", for the output's provenance
   // One line per preparation step applied after reading (window, invalid
-  // points, detrending, padding), in order; written to the result file.
+  // points, detrending, resampling, padding), in order; written to the
+  // result file.
   std::vector<std::string> preparation;
 
   std::size_t size() const { return nx * ny; }
