@@ -427,7 +427,9 @@ int run_mixed(const LubricateOptions& o, const HeightMap& map, const Grid& grid,
     }
   };
   if (problem.speeds) {
-    if (place.sweep_processes) agreed([&] { lubrication::require_mixed_film_fits(grid, options, "the mixed film"); });
+    if (place.sweep_processes) {
+      agree_everywhere([&] { lubrication::require_mixed_film_fits(grid, options, "the mixed film"); });
+    }
     std::vector<lubrication::StribeckPoint> points =
         place.sweep_processes
             ? lubrication::stribeck_sweep(op, gap, conditions, laws, options, *problem.speeds, *place.sweep_processes)

@@ -74,8 +74,11 @@ int run_film_everywhere(const std::function<HeightMap()>& read,
   HeightMap map = broadcast_map_description(world, whole);
   if (spread == FilmSpread::sweep_speeds) {
     // Every process solves its run of the speeds on the whole map.
-    map.heights.resize(static_cast<Eigen::Index>(map.nx * map.ny));
-    if (root) map.heights = whole->heights;
+    if (root) {
+      map.heights = std::move(whole->heights);
+    } else {
+      map.heights.resize(static_cast<Eigen::Index>(map.nx * map.ny));
+    }
     constexpr Eigen::Index kChunk = Eigen::Index{1} << 28;  // MPI counts are ints
     for (Eigen::Index at = 0; at < map.heights.size(); at += kChunk) {
       const auto count = static_cast<int>(std::min(kChunk, map.heights.size() - at));

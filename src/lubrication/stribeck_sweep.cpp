@@ -18,9 +18,8 @@ namespace halfspace::lubrication {
 
 namespace {
 
-// Checks the sweep's input (every process alike) and returns |U|.
-double checked_speed(const FlowConditions& conditions, const MixedFilmOptions& options,
-                     const std::vector<double>& speeds) {
+// Checks the sweep's input (every process alike).
+void check_sweep(const FlowConditions& conditions, const MixedFilmOptions& options, const std::vector<double>& speeds) {
   options.validate();
   if (!options.load_controlled()) throw InputError("a Stribeck sweep is load controlled: give the mixed film a load");
   const std::array<double, 2>& u = conditions.entrainment_velocity;
@@ -32,7 +31,6 @@ double checked_speed(const FlowConditions& conditions, const MixedFilmOptions& o
       throw OptionError("speeds", format_number(s) + " m/s", "is invalid: speeds must be positive and finite");
     }
   }
-  return speed;
 }
 
 // The Hersey number eta0 s / w' at speed s, w' the load per unit width
@@ -114,7 +112,7 @@ std::pair<std::size_t, std::size_t> stribeck_run(std::size_t speeds, int rank, i
 std::vector<StribeckPoint> stribeck_sweep(InfluenceOperator& op, const Eigen::ArrayXd& gap,
                                           const FlowConditions& conditions, const LubricantLaws& laws,
                                           const MixedFilmOptions& options, const std::vector<double>& speeds) {
-  checked_speed(conditions, options, speeds);
+  check_sweep(conditions, options, speeds);
   std::vector<StribeckPoint> points(speeds.size());
   sweep_run(op, gap, conditions, laws, options, speeds, 0, speeds.size(), points);
   return points;
@@ -124,7 +122,7 @@ std::vector<StribeckPoint> stribeck_sweep(InfluenceOperator& op, const Eigen::Ar
                                           const FlowConditions& conditions, const LubricantLaws& laws,
                                           const MixedFilmOptions& options, const std::vector<double>& speeds,
                                           const linalg::Communicator& processes) {
-  checked_speed(conditions, options, speeds);
+  check_sweep(conditions, options, speeds);
   const std::size_t m = speeds.size();
   std::vector<StribeckPoint> points(m);
   const auto [first, end] = stribeck_run(m, processes.rank(), processes.size());

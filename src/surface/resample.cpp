@@ -152,10 +152,11 @@ void resample(HeightMap& map, const Resample& resample) {
       rows_done[static_cast<Eigen::Index>(j * resample.nx + k)] = sum;
     }
   }
-  Eigen::ArrayXd heights = Eigen::ArrayXd::Zero(static_cast<Eigen::Index>(resample.nx * new_ny));
+  Eigen::ArrayXd heights;
   if (new_ny == old_ny) {
     heights = std::move(rows_done);
   } else {
+    heights.setZero(static_cast<Eigen::Index>(resample.nx * new_ny));
     const AxisWeights along_y = axis_weights(old_ny, new_ny);
     const auto nx = static_cast<Eigen::Index>(resample.nx);
     for (std::size_t k = 0; k < new_ny; ++k) {

@@ -27,13 +27,13 @@ inline constexpr std::size_t kMaxResampleRefinement = 16;
 Resample parse_resample(std::string_view text);
 
 // Replaces the map's heights by their values on nx x ny cells spanning the
-// same lengths (nx dx by ny dy; the spacing becomes L / n), axis by axis:
-// where an axis is refined, linear interpolation between the old cells'
-// centres (the outermost half cells keep the edge values); where it is
-// coarsened, each new cell is the area-weighted mean of the old cells it
-// overlaps (no aliasing of the wavelengths the new grid cannot hold); an
-// equal count is left alone. Both keep a plane a plane, and the mean height
-// is kept exactly by coarsening. Throws InputError naming the counts and the
+// same lengths (nx dx by ny dy; the spacing becomes L / n), axis by axis
+// through the piecewise-linear interpolant of the heights at the old cells'
+// centres, its first and last pieces extended over the outer half cells:
+// where an axis is refined, the interpolant at the new centres; where it is
+// coarsened, its mean over each new cell (no aliasing of the wavelengths the
+// new grid cannot hold); an equal count is left alone. Both keep a plane
+// that plane exactly. Throws InputError naming the counts and the
 // map when the map has invalid points or no spacing, a count is below 2 or
 // refines an axis more than kMaxResampleRefinement times, or the dimension
 // differs; throws when the new map does not fit in the memory available.
