@@ -4,7 +4,16 @@
 // gap the fine gap's block average) interpolated bilinearly, fluid and
 // contact pressure and fluid fraction apart, with its h0, as the fine
 // Newton start. The speed continuation a cold start needs in the mixed
-// regime is then paid on the coarsest grid only.
+// regime is then paid on the coarsest grid only. A coarse film is only a
+// start: it gets its own coarser start and, on the coarsest grid, the
+// speed continuation, but none of the answer's fall-backs (faster films,
+// the cold restart, the retry with checked step branches). Where it fails,
+// the fine grid goes the faster films' way at once. On a measured map the
+// coarse grids are the harder problem (at 3e-4 m/s, 0.96 of the load in
+// contact at 32^2 against 0.16 at 256^2), and their fall-backs took most
+// of the time: a measured 128^2 window 318 -> 76 s, 256^2 1467 -> ~500 CPU
+// s, the same films (docs/development-log.md, 2026-12-01, twenty-seventh
+// session).
 #include "mixed_film_grid_sequence.hpp"
 
 #include <fmt/format.h>
@@ -40,6 +49,11 @@ constexpr double kSequencedFastest = 64.0;
 constexpr int kSequencedFirstSteps = 60;
 constexpr std::size_t kTryingNodes = 128 * 128;
 
+// Below: the solve of one grid with its coarser grids.
+MixedFilm solve_sequenced(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
+                          const LubricantLaws& laws, const MixedFilmOptions& options, const MixedFilm* start,
+                          bool faster_allowed);
+
 // The film on the grid of twice the spacing, interpolated onto op's grid, or
 // nothing if there is no coarser grid or its film did not converge. Adds the
 // coarse work to `record`, and a failed coarse film's message.
@@ -49,7 +63,7 @@ std::optional<MixedFilm> sequenced_start(InfluenceOperator& op, const Eigen::Arr
   const std::optional<MixedFilm> coarse = detail::solve_on_coarser_grid(
       op, gap, options,
       [&](InfluenceOperator& coarse_op, const Eigen::ArrayXd& coarse_gap, const MixedFilmOptions& coarse_options) {
-        return solve_mixed_film(coarse_op, coarse_gap, conditions, laws, coarse_options);
+        return solve_sequenced(coarse_op, coarse_gap, conditions, laws, coarse_options, nullptr, false);
       },
       record);
   if (!coarse || !coarse->converged()) return std::nullopt;
@@ -93,9 +107,11 @@ std::optional<MixedFilm> sequenced_start(InfluenceOperator& op, const Eigen::Arr
   return start;
 }
 
-// solve_mixed_film, where a failed fine iteration tries faster films only
-// if `faster_allowed` (the faster films themselves do not: the speeds
-// stay bounded).
+// solve_mixed_film without its checked retry, where a failed fine
+// iteration tries faster films and, on small grids, the cold restart only
+// if `faster_allowed`: the answer's solve. The faster films themselves do
+// not (the speeds stay bounded), nor do the coarse grids' starts
+// (sequenced_start).
 MixedFilm solve_sequenced(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
                           const LubricantLaws& laws, const MixedFilmOptions& options, const MixedFilm* start,
                           bool faster_allowed) {
