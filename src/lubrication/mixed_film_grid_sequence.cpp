@@ -5,15 +5,15 @@
 // contact pressure and fluid fraction apart, with its h0, as the fine
 // Newton start. The speed continuation a cold start needs in the mixed
 // regime is then paid on the coarsest grid only. A coarse film is only a
-// start: it gets its own coarser start and, on the coarsest grid, the
-// speed continuation, but none of the answer's fall-backs (faster films,
-// the cold restart, the retry with checked step branches). Where it fails,
-// the fine grid goes the faster films' way at once. On a measured map the
-// coarse grids are the harder problem (at 3e-4 m/s, 0.96 of the load in
-// contact at 32^2 against 0.16 at 256^2), and their fall-backs took most
-// of the time: a measured 128^2 window 318 -> 76 s, 256^2 1467 -> ~500 CPU
-// s, the same films (docs/development-log.md, 2026-12-01, twenty-seventh
-// session).
+// start (SolveEffort::start): it gets its own coarser start and, on the
+// coarsest grid, the speed continuation, then one cold try with checked
+// step branches, but none of the answer's other fall-backs (faster films,
+// the cold restart, the retry with checked branches and continuations).
+// Where it fails, the fine grid goes the faster films' way at once. On a
+// measured map the coarse grids are the harder problem (at 3e-4 m/s 0.96
+// of the load in contact at 32^2 against 0.16 at 256^2), and their
+// fall-backs took most of the time (docs/development-log.md, 2026-12-01,
+// twenty-seventh session).
 #include "mixed_film_grid_sequence.hpp"
 
 #include <fmt/format.h>
@@ -49,21 +49,51 @@ constexpr double kSequencedFastest = 64.0;
 constexpr int kSequencedFirstSteps = 60;
 constexpr std::size_t kTryingNodes = 128 * 128;
 
-// Below: the solve of one grid with its coarser grids.
+// What a grid's solve is for, and so which fall-backs it gets where its
+// Newton iteration fails from its start:
+//  - answer: the faster films and the speed continuation from them, and on
+//    grids of at most kMaxMixedColdRestartNodes the cold restart;
+//  - faster_film: a faster film the answer continues from: none;
+//  - start: a coarse grid's film, the next grid's start: none, but the
+//    coarsest grid's speed continuation (solve_mixed_film_on_grid) and a
+//    cold try with checked step branches (quick_start) where that fails;
+//  - quick_start: that try: coarser grids as quick_start, the coarsest
+//    grid's Newton iteration from its cold starts alone.
+enum class SolveEffort { answer, faster_film, start, quick_start };
+
 MixedFilm solve_sequenced(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
                           const LubricantLaws& laws, const MixedFilmOptions& options, const MixedFilm* start,
-                          bool faster_allowed);
+                          SolveEffort effort);
+
+// A coarse grid's film as a start (SolveEffort::start or quick_start), with
+// the checked try where a start fails; the work of both is counted.
+MixedFilm solve_start(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
+                      const LubricantLaws& laws, const MixedFilmOptions& options, SolveEffort effort) {
+  MixedFilm film = solve_sequenced(op, gap, conditions, laws, options, nullptr, effort);
+  if (film.converged() || effort == SolveEffort::quick_start || options.checked_step_branches) return film;
+  MixedFilmOptions checked = options;
+  checked.checked_step_branches = true;
+  MixedFilm again = solve_sequenced(op, gap, conditions, laws, checked, nullptr, SolveEffort::quick_start);
+  again.iterations += film.iterations;
+  again.krylov_iterations += film.krylov_iterations;
+  again.coarse_iterations += film.coarse_iterations;
+  again.coarse_krylov_iterations += film.coarse_krylov_iterations;
+  if (!again.converged())
+    again.message = fmt::format("{} (a cold try with checked step branches: {})", film.message, again.message);
+  return again;
+}
 
 // The film on the grid of twice the spacing, interpolated onto op's grid, or
 // nothing if there is no coarser grid or its film did not converge. Adds the
 // coarse work to `record`, and a failed coarse film's message.
 std::optional<MixedFilm> sequenced_start(InfluenceOperator& op, const Eigen::ArrayXd& gap,
                                          const FlowConditions& conditions, const LubricantLaws& laws,
-                                         const MixedFilmOptions& options, MixedFilm& record) {
+                                         const MixedFilmOptions& options, SolveEffort effort, MixedFilm& record) {
   const std::optional<MixedFilm> coarse = detail::solve_on_coarser_grid(
       op, gap, options,
       [&](InfluenceOperator& coarse_op, const Eigen::ArrayXd& coarse_gap, const MixedFilmOptions& coarse_options) {
-        return solve_sequenced(coarse_op, coarse_gap, conditions, laws, coarse_options, nullptr, false);
+        return solve_start(coarse_op, coarse_gap, conditions, laws, coarse_options,
+                           effort == SolveEffort::quick_start ? SolveEffort::quick_start : SolveEffort::start);
       },
       record);
   if (!coarse || !coarse->converged()) return std::nullopt;
@@ -107,14 +137,11 @@ std::optional<MixedFilm> sequenced_start(InfluenceOperator& op, const Eigen::Arr
   return start;
 }
 
-// solve_mixed_film without its checked retry, where a failed fine
-// iteration tries faster films and, on small grids, the cold restart only
-// if `faster_allowed`: the answer's solve. The faster films themselves do
-// not (the speeds stay bounded), nor do the coarse grids' starts
-// (sequenced_start).
+// solve_mixed_film without its checked retry, with the fall-backs `effort`
+// allows.
 MixedFilm solve_sequenced(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
                           const LubricantLaws& laws, const MixedFilmOptions& options, const MixedFilm* start,
-                          bool faster_allowed) {
+                          SolveEffort effort) {
   const auto started = std::chrono::steady_clock::now();
   const Grid& grid = op.grid();
   options.validate();
@@ -122,12 +149,17 @@ MixedFilm solve_sequenced(InfluenceOperator& op, const Eigen::ArrayXd& gap, cons
                         grid.dimension() == 2 && options.linear_solve != FilmLinearSolve::dense &&
                         grid.size() > kMixedSequencingNodes && op.local_size() == grid.size() &&
                         static_cast<std::size_t>(gap.size()) == grid.size() && gap.allFinite();
-  if (!sequence) return detail::solve_mixed_film_on_grid(op, gap, conditions, laws, options, start);
+  if (!sequence) {
+    return detail::solve_mixed_film_on_grid(op, gap, conditions, laws, options, start,
+                                            effort == SolveEffort::quick_start
+                                                ? detail::MixedStartUse::solve_only
+                                                : detail::MixedStartUse::solve_then_continue);
+  }
   // The fine grid's memory first: the coarse grids would take minutes on a
   // grid the fine solve cannot hold.
   require_mixed_film_fits(grid, options, "the mixed film");
   MixedFilm record;
-  const std::optional<MixedFilm> coarse_start = sequenced_start(op, gap, conditions, laws, options, record);
+  const std::optional<MixedFilm> coarse_start = sequenced_start(op, gap, conditions, laws, options, effort, record);
   MixedFilm result;
   if (coarse_start) {
     MixedFilmOptions first = options;
@@ -142,10 +174,11 @@ MixedFilm solve_sequenced(InfluenceOperator& op, const Eigen::ArrayXd& gap, cons
   // the film at a faster speed, grid-sequenced in turn (4, 16, ... times the
   // velocities: the faster, the further from contact and the easier), and
   // the continuation in the speed from it on this grid.
-  for (double faster = kSequencedSpeedUp; faster_allowed && !result.converged() && faster <= kSequencedFastest;
+  const bool answer = effort == SolveEffort::answer;
+  for (double faster = kSequencedSpeedUp; answer && !result.converged() && faster <= kSequencedFastest;
        faster *= kSequencedSpeedUp) {
-    const MixedFilm fast =
-        solve_sequenced(op, gap, detail::at_speed_factor(conditions, faster), laws, options, nullptr, false);
+    const MixedFilm fast = solve_sequenced(op, gap, detail::at_speed_factor(conditions, faster), laws, options, nullptr,
+                                           SolveEffort::faster_film);
     steps += fast.iterations;
     krylov += fast.krylov_iterations;
     record.coarse_iterations += fast.coarse_iterations;
@@ -158,7 +191,7 @@ MixedFilm solve_sequenced(InfluenceOperator& op, const Eigen::ArrayXd& gap, cons
     result.sequencing_fell_back = true;
     break;
   }
-  if (!result.converged() && faster_allowed && grid.size() <= kMaxMixedColdRestartNodes) {
+  if (!result.converged() && answer && grid.size() <= kMaxMixedColdRestartNodes) {
     // The last resort on small grids: the cold start with its continuations.
     result = detail::solve_mixed_film_on_grid(op, gap, conditions, laws, options, nullptr);
     steps += result.iterations;
@@ -183,14 +216,14 @@ MixedFilm solve_sequenced(InfluenceOperator& op, const Eigen::ArrayXd& gap, cons
 MixedFilm solve_mixed_film(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
                            const LubricantLaws& laws, const MixedFilmOptions& options, const MixedFilm* start) {
   const auto started = std::chrono::steady_clock::now();
-  MixedFilm film = solve_sequenced(op, gap, conditions, laws, options, start, true);
+  MixedFilm film = solve_sequenced(op, gap, conditions, laws, options, start, SolveEffort::answer);
   // A point contact that failed with the look-ahead's steps as they come:
   // again with checked steps (MixedFilmOptions::checked_step_branches), its
   // coarser grids too. Both solves' work is counted.
   if (film.converged() || options.checked_step_branches || op.grid().dimension() != 2) return film;
   MixedFilmOptions checked = options;
   checked.checked_step_branches = true;
-  MixedFilm again = solve_sequenced(op, gap, conditions, laws, checked, start, true);
+  MixedFilm again = solve_sequenced(op, gap, conditions, laws, checked, start, SolveEffort::answer);
   again.iterations += film.iterations;
   again.krylov_iterations += film.krylov_iterations;
   again.line_search_halvings += film.line_search_halvings;

@@ -325,6 +325,35 @@ TEST(MixedFilmKrylovTest, GridSequencedFilmEqualsTheColdOne) {
   EXPECT_EQ(sequenced.contact_area_fraction, cold.contact_area_fraction);
 }
 
+// A coarse grid's film is only a start: where the 17^2 film fails at the
+// speed asked for (its own continuation and one cold try with checked step
+// branches spent), the 34^2 grid goes the faster films' way at once
+// instead of waiting for the coarse grid's other fall-backs. Measured on
+// this contact (0.4 um roughness, 0.003 m/s): the same 51 fine Newton
+// steps and film both ways, 579 coarse steps against 2014 when the coarse
+// film had every fall-back of an answer (docs/development-log.md,
+// 2026-12-01, twenty-seventh session). The film is the unsequenced
+// solve's.
+TEST(MixedFilmKrylovTest, CoarseFilmIsOnlyAStart) {
+  const RoughContact point = rough_point(34, 0.4e-6);
+  FftInfluenceOperator op(point.grid, kEStar);
+  const double speed = 0.003;
+  const MixedFilmOptions options = options_for(kPointLoad, FilmLinearSolve::automatic);
+  MixedFilmOptions cold_options = options;
+  cold_options.grid_sequencing = false;
+  const MixedFilm sequenced = solve_mixed_film(op, point.gap, flow(speed), laws(), options);
+  const MixedFilm cold = solve_mixed_film(op, point.gap, flow(speed), laws(), cold_options);
+  ASSERT_TRUE(sequenced.converged()) << sequenced.message;
+  ASSERT_TRUE(cold.converged()) << cold.message;
+  EXPECT_EQ(sequenced.coarse_levels, 1);
+  EXPECT_TRUE(sequenced.sequencing_fell_back);
+  EXPECT_LT(sequenced.coarse_iterations, 1000);
+  expect_solution_holds(op, point.gap, flow(speed), options, sequenced);
+  EXPECT_GT(sequenced.contact_load_fraction, 0.99);
+  EXPECT_LE((sequenced.pressure - cold.pressure).abs().maxCoeff(), 1e-6 * cold.max_pressure);
+  EXPECT_NEAR(sequenced.contact_load_fraction, cold.contact_load_fraction, 3e-5);
+}
+
 // The fine Newton iteration from the coarse film, where the interpolated
 // start closes contact rows on cells the solution has open: taken at the
 // current point, such a row keeps h = 0 and its film on the floor h_b, the
