@@ -76,6 +76,9 @@ MixedFilm solve_start(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Fl
   MixedFilm again = solve_sequenced(op, gap, conditions, laws, checked, nullptr, SolveEffort::quick_start);
   again.iterations += film.iterations;
   again.krylov_iterations += film.krylov_iterations;
+  again.line_search_halvings += film.line_search_halvings;
+  again.max_krylov_iterations_per_step =
+      std::max(again.max_krylov_iterations_per_step, film.max_krylov_iterations_per_step);
   again.coarse_iterations += film.coarse_iterations;
   again.coarse_krylov_iterations += film.coarse_krylov_iterations;
   if (!again.converged())
