@@ -65,6 +65,18 @@ MixedFilm solve_sequenced(InfluenceOperator& op, const Eigen::ArrayXd& gap, cons
                           const LubricantLaws& laws, const MixedFilmOptions& options, const MixedFilm* start,
                           SolveEffort effort);
 
+// Adds the work of the failed solve `earlier` to the counts of `again`, the
+// solve after it.
+void add_earlier_work(MixedFilm& again, const MixedFilm& earlier) {
+  again.iterations += earlier.iterations;
+  again.krylov_iterations += earlier.krylov_iterations;
+  again.line_search_halvings += earlier.line_search_halvings;
+  again.max_krylov_iterations_per_step =
+      std::max(again.max_krylov_iterations_per_step, earlier.max_krylov_iterations_per_step);
+  again.coarse_iterations += earlier.coarse_iterations;
+  again.coarse_krylov_iterations += earlier.coarse_krylov_iterations;
+}
+
 // A coarse grid's film as a start (SolveEffort::start or quick_start), with
 // the checked try where a start fails; the work of both is counted.
 MixedFilm solve_start(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
@@ -74,13 +86,7 @@ MixedFilm solve_start(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Fl
   MixedFilmOptions checked = options;
   checked.checked_step_branches = true;
   MixedFilm again = solve_sequenced(op, gap, conditions, laws, checked, nullptr, SolveEffort::quick_start);
-  again.iterations += film.iterations;
-  again.krylov_iterations += film.krylov_iterations;
-  again.line_search_halvings += film.line_search_halvings;
-  again.max_krylov_iterations_per_step =
-      std::max(again.max_krylov_iterations_per_step, film.max_krylov_iterations_per_step);
-  again.coarse_iterations += film.coarse_iterations;
-  again.coarse_krylov_iterations += film.coarse_krylov_iterations;
+  add_earlier_work(again, film);
   if (!again.converged())
     again.message = fmt::format("{} (a cold try with checked step branches: {})", film.message, again.message);
   return again;
@@ -227,13 +233,7 @@ MixedFilm solve_mixed_film(InfluenceOperator& op, const Eigen::ArrayXd& gap, con
   MixedFilmOptions checked = options;
   checked.checked_step_branches = true;
   MixedFilm again = solve_sequenced(op, gap, conditions, laws, checked, start, SolveEffort::answer);
-  again.iterations += film.iterations;
-  again.krylov_iterations += film.krylov_iterations;
-  again.line_search_halvings += film.line_search_halvings;
-  again.coarse_iterations += film.coarse_iterations;
-  again.coarse_krylov_iterations += film.coarse_krylov_iterations;
-  again.max_krylov_iterations_per_step =
-      std::max(again.max_krylov_iterations_per_step, film.max_krylov_iterations_per_step);
+  add_earlier_work(again, film);
   if (!again.converged()) {
     again.message =
         fmt::format("{} (also with checked step branches; with the look-ahead's: {})", again.message, film.message);
