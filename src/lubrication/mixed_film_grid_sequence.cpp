@@ -53,13 +53,14 @@ constexpr std::size_t kTryingNodes = 128 * 128;
 // Newton iteration fails from its start:
 //  - answer: the faster films and the speed continuation from them, and on
 //    grids of at most kMaxMixedColdRestartNodes the cold restart;
-//  - faster_film: a faster film the answer continues from: none;
-//  - start: a coarse grid's film, the next grid's start: none, but the
-//    coarsest grid's speed continuation (solve_mixed_film_on_grid) and a
-//    cold try with checked step branches (quick_start) where that fails;
+//  - start: a film another solve starts from (a faster film the answer
+//    continues from, a coarse grid's film the next grid starts from):
+//    none, but the coarsest grid's speed continuation
+//    (solve_mixed_film_on_grid), and for a coarse grid's film a cold try
+//    with checked step branches where that fails (solve_start);
 //  - quick_start: that try: coarser grids as quick_start, the coarsest
 //    grid's Newton iteration from its cold starts alone.
-enum class SolveEffort { answer, faster_film, start, quick_start };
+enum class SolveEffort { answer, start, quick_start };
 
 MixedFilm solve_sequenced(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
                           const LubricantLaws& laws, const MixedFilmOptions& options, const MixedFilm* start,
@@ -187,7 +188,7 @@ MixedFilm solve_sequenced(InfluenceOperator& op, const Eigen::ArrayXd& gap, cons
   for (double faster = kSequencedSpeedUp; answer && !result.converged() && faster <= kSequencedFastest;
        faster *= kSequencedSpeedUp) {
     const MixedFilm fast = solve_sequenced(op, gap, detail::at_speed_factor(conditions, faster), laws, options, nullptr,
-                                           SolveEffort::faster_film);
+                                           SolveEffort::start);
     steps += fast.iterations;
     krylov += fast.krylov_iterations;
     record.coarse_iterations += fast.coarse_iterations;

@@ -298,6 +298,16 @@ TEST(MixedFilmKrylovTest, SlowPointContactTendsToTheDryContact) {
   EXPECT_LT(differences.back(), 0.005);
 }
 
+// The film solved with `options` (grid-sequenced) and again with grid
+// sequencing off (the cold start and its continuations).
+std::pair<MixedFilm, MixedFilm> sequenced_and_cold(FftInfluenceOperator& op, const Eigen::ArrayXd& gap, double speed,
+                                                   const MixedFilmOptions& options) {
+  MixedFilmOptions cold_options = options;
+  cold_options.grid_sequencing = false;
+  return {solve_mixed_film(op, gap, flow(speed), laws(), options),
+          solve_mixed_film(op, gap, flow(speed), laws(), cold_options)};
+}
+
 // Grid sequencing: a rough point contact on 34^2 (8 cells per Hertz
 // radius) started from the 17^2 film finds the film of the cold start
 // with its speed continuation, in fewer Newton steps on the fine grid.
@@ -305,11 +315,8 @@ TEST(MixedFilmKrylovTest, GridSequencedFilmEqualsTheColdOne) {
   const RoughContact point = rough_point(34, 0.2e-6);
   FftInfluenceOperator op(point.grid, kEStar);
   const double speed = 0.1;
-  MixedFilmOptions sequenced_options = options_for(kPointLoad, FilmLinearSolve::automatic);
-  MixedFilmOptions cold_options = sequenced_options;
-  cold_options.grid_sequencing = false;
-  const MixedFilm sequenced = solve_mixed_film(op, point.gap, flow(speed), laws(), sequenced_options);
-  const MixedFilm cold = solve_mixed_film(op, point.gap, flow(speed), laws(), cold_options);
+  const MixedFilmOptions sequenced_options = options_for(kPointLoad, FilmLinearSolve::automatic);
+  const auto [sequenced, cold] = sequenced_and_cold(op, point.gap, speed, sequenced_options);
   ASSERT_TRUE(sequenced.converged()) << sequenced.message;
   ASSERT_TRUE(cold.converged()) << cold.message;
   EXPECT_EQ(sequenced.coarse_levels, 1);
@@ -339,10 +346,7 @@ TEST(MixedFilmKrylovTest, CoarseFilmIsOnlyAStart) {
   FftInfluenceOperator op(point.grid, kEStar);
   const double speed = 0.003;
   const MixedFilmOptions options = options_for(kPointLoad, FilmLinearSolve::automatic);
-  MixedFilmOptions cold_options = options;
-  cold_options.grid_sequencing = false;
-  const MixedFilm sequenced = solve_mixed_film(op, point.gap, flow(speed), laws(), options);
-  const MixedFilm cold = solve_mixed_film(op, point.gap, flow(speed), laws(), cold_options);
+  const auto [sequenced, cold] = sequenced_and_cold(op, point.gap, speed, options);
   ASSERT_TRUE(sequenced.converged()) << sequenced.message;
   ASSERT_TRUE(cold.converged()) << cold.message;
   EXPECT_EQ(sequenced.coarse_levels, 1);
