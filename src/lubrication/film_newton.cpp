@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "newton_forcing.hpp"
@@ -54,6 +56,16 @@ int run_film_newton(const FilmNewton& newton, NewtonFilmResult& result) {
     // The forcing term's history (newton_forcing): this start's steps only.
     double previous_norm = 0.0, forcing = kLargestForcing;
     std::vector<double> norms{current.norm};  // after each of this start's steps (the stagnation rule's)
+    // The watchdog's stalled point (its measure and message) while it runs.
+    std::optional<FilmMeasure> stalled;
+    std::string stall_message;
+    int watched = 0;
+    const auto back_to_stall = [&] {
+      newton.restore();
+      current = newton.measure();
+      stalled.reset();
+      result.message = stall_message;
+    };
     for (int iteration = 0;; ++iteration) {
       if (converged(tolerances, current)) {
         result.status = FilmStatus::converged;
@@ -66,6 +78,7 @@ int run_film_newton(const FilmNewton& newton, NewtonFilmResult& result) {
       // This start has used its share of the steps: the rest to the next.
       if (hands_over && iteration == rules.share) break;
       if (limited && steps == rules.limit) {
+        if (stalled) back_to_stall();
         result.status = FilmStatus::iteration_limit;
         result.message = fmt::format("{} did not converge in {} Newton steps: {}", rules.words.film, steps,
                                      residuals(tolerances, current, true));
@@ -122,16 +135,44 @@ int run_film_newton(const FilmNewton& newton, NewtonFilmResult& result) {
         }
         if (accepted) break;
       }
+      if (!accepted && !failed && stalled) {
+        if (rules.counts_refused_steps) ++steps;
+        back_to_stall();
+        break;
+      }
       if (!accepted && !failed) {
         result.message = fmt::format(
             "{} Newton iteration stalled at step {}: no step along the Newton direction lowers the residual ({})",
             rules.words.solver, steps + 1, residuals(tolerances, current, false));
+        // The watchdog: the trust region's step taken anyway, from a
+        // saved point to come back to.
+        if (rules.watchdog_steps > 0) {
+          const std::optional<FilmMeasure> measured = newton.try_step(newton.trust_region(), false);
+          if (measured && std::isfinite(measured->norm)) {
+            newton.save();
+            stalled = current;
+            stall_message = std::move(result.message);
+            result.message.clear();
+            watched = 0;
+            tried = *measured;
+            accepted = true;
+            ++result.watchdog_steps;
+          }
+        }
       }
       if (accepted || rules.counts_refused_steps) ++steps;
       if (!accepted) break;
       newton.accept();
       current = tried;
       norms.push_back(current.norm);
+      if (stalled) {
+        if (current.norm <= (1.0 - kSufficientDecrease) * stalled->norm) {
+          stalled.reset();
+        } else if (++watched > rules.watchdog_steps) {
+          back_to_stall();
+          break;
+        }
+      }
       const auto window = static_cast<std::size_t>(rules.stagnation_steps);
       if (window > 0 && norms.size() > window && !converged(tolerances, current) &&
           current.norm > rules.stagnation_share * norms[norms.size() - 1 - window]) {

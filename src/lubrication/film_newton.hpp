@@ -66,6 +66,13 @@ struct FilmNewtonRules {
   // stagnation_share times its value stagnation_steps steps before (0: never).
   int stagnation_steps = 0;
   double stagnation_share = 1.0;
+  // The watchdog (Chamberlain, Powell, Lemarechal & Pedersen 1982): where
+  // no step along the Newton direction lowers the residual, the trust
+  // region's step is taken anyway, and the iteration goes back to the
+  // stalled point (FilmNewton::save, restore) and reports the stall there
+  // unless the residual's norm falls below the stalled one within this many
+  // further steps (0: no watchdog; a film with one gives save and restore).
+  int watchdog_steps = 0;
 };
 
 // The rules and the film's physics.
@@ -86,6 +93,8 @@ struct FilmNewton {
   // measure; nothing where its film is not valid. `accept` takes the trial.
   std::function<std::optional<FilmMeasure>(double scale, bool clipped)> try_step;
   std::function<void()> accept;
+  // The watchdog's: keep the current state, and make it current again.
+  std::function<void()> save, restore;
 };
 
 // Runs the Newton iteration from the current state, into `result`'s status,

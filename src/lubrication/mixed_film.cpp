@@ -177,6 +177,15 @@ constexpr int kKrylovColdShare = 4;
 // map's 256^2 try took 1,200 GMRES iterations per step before it failed.
 constexpr int kStagnationSteps = 3;
 constexpr double kStagnationShare = 0.75;
+// The watchdog's steps (detail::FilmNewtonRules::watchdog_steps) past a
+// stall. Where the line search finds no lower point the residual's norm
+// has a kink along the Newton direction (a contact row's or the cavitation
+// switch's branch, docs/development-log.md, 2026-12-01, twenty-seventh
+// session), and a step over it often pays: the measured window resampled
+// to 512^2 stalled at a relative mass residual of 3e-7 and, with the
+// watchdog, converged (twenty-eighth session). A try
+// (MixedStartUse::try_only) gives up at a stall instead.
+constexpr int kWatchdogSteps = 4;
 
 struct State {
   Eigen::ArrayXd s, q, fluid, theta, contact, total, deformation, film, reynolds_film;
@@ -505,6 +514,8 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
   if (use == detail::MixedStartUse::try_only) {
     newton.rules.stagnation_steps = kStagnationSteps;
     newton.rules.stagnation_share = kStagnationShare;
+  } else {
+    newton.rules.watchdog_steps = kWatchdogSteps;
   }
   newton.measure = [&] { return measure(x, residual, false); };
   newton.lay_start = [&](std::size_t attempt) {
@@ -630,6 +641,9 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
     return measure(trial, trial_residual, false);
   };
   newton.accept = [&] { std::swap(x, trial); };
+  State saved;
+  newton.save = [&] { saved = x; };
+  newton.restore = [&] { x = saved; };
   detail::run_film_newton(newton, result);
   result.used_krylov = krylov;
   result.entrainment_speed = std::hypot(conditions.entrainment_velocity[0], conditions.entrainment_velocity[1]);

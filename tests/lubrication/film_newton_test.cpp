@@ -2,7 +2,9 @@
 // model whose every full step multiplies the residual's norm by a fixed
 // rate: the stagnation rule (give up where the norm has not fallen below a
 // share of its value some steps before) must end an iteration that creeps
-// and leave one that converges, however slowly its rule allows, alone.
+// and leave one that converges, however slowly its rule allows, alone; and
+// on a model with a kink the watchdog must step over it where that pays and
+// go back to the stall where it does not.
 #include "lubrication/film_newton.hpp"
 
 #include <gtest/gtest.h>
@@ -76,6 +78,101 @@ TEST(FilmNewtonTest, StagnationRuleLeavesAConvergingIterationAlone) {
   run_film_newton(slow.newton(3, 0.75), result);
   EXPECT_TRUE(result.converged()) << result.message;
   EXPECT_EQ(result.iterations, static_cast<int>(std::ceil(std::log(kTolerance) / std::log(0.9))));
+}
+
+// A model with a kink: from the start every step along the Newton
+// direction, however short, raises the residual's norm by the step's
+// length (a branch switch the linear model does not see); once across,
+// every full step multiplies it by `rate`.
+struct KinkedModel {
+  double rate = 0.1;
+  double x = 1.0, trial = 1.0, saved = 1.0;
+  bool across = false, trial_across = false, saved_across = false;
+
+  FilmMeasure at(double value) const {
+    return {.norm = std::abs(value), .mass = std::abs(value), .load = 0.0, .contact = 0.0};
+  }
+
+  FilmNewton newton(int watchdog_steps) {
+    FilmNewton n;
+    n.rules = {.words = {.solver = "the model's", .film = "the model", .krylov_step = "the model's "},
+               .tolerances = {.mass = kTolerance, .load = kTolerance, .contact = std::nullopt},
+               .limit = 1000,
+               .watchdog_steps = watchdog_steps};
+    n.measure = [this] { return at(x); };
+    n.lay_start = [](std::size_t) { return false; };
+    n.solve = [](const FilmMeasure&, double, bool) {
+      FilmNewtonSolve solved;
+      solved.solved = true;
+      return solved;
+    };
+    n.trust_region = [] { return 1.0; };
+    n.try_step = [this](double scale, bool) -> std::optional<FilmMeasure> {
+      trial = across ? x * (1.0 - scale * (1.0 - rate)) : x * (1.0 + scale);
+      trial_across = true;
+      return at(trial);
+    };
+    n.accept = [this] {
+      x = trial;
+      across = trial_across;
+    };
+    n.save = [this] {
+      saved = x;
+      saved_across = across;
+    };
+    n.restore = [this] {
+      x = saved;
+      across = saved_across;
+    };
+    return n;
+  }
+};
+
+// The steps from norm `from` to the tolerance at `rate` per step.
+int steps_to_tolerance(double from, double rate) {
+  int steps = 0;
+  for (double norm = from; norm > kTolerance; norm *= rate) ++steps;
+  return steps;
+}
+
+TEST(FilmNewtonTest, WatchdogStepsOverAKink) {
+  // Without the watchdog the line search finds no lower point: a stall.
+  KinkedModel plain;
+  NewtonFilmResult stalled;
+  run_film_newton(plain.newton(0), stalled);
+  EXPECT_FALSE(stalled.converged());
+  EXPECT_NE(stalled.message.find("stalled at step 1"), std::string::npos) << stalled.message;
+  EXPECT_EQ(stalled.watchdog_steps, 0);
+  // With it the step across (norm 2) is taken, the next falls below the
+  // stalled norm 1, and the iteration converges.
+  KinkedModel watched;
+  NewtonFilmResult result;
+  run_film_newton(watched.newton(4), result);
+  EXPECT_TRUE(result.converged()) << result.message;
+  EXPECT_EQ(result.watchdog_steps, 1);
+  EXPECT_EQ(result.iterations, 1 + steps_to_tolerance(2.0, 0.1));
+  EXPECT_LE(std::abs(watched.x), kTolerance);
+}
+
+TEST(FilmNewtonTest, WatchdogGoesBackToTheStallWhereItDoesNotPay) {
+  // Across the kink at 0.9 per step the norm needs 7 steps to fall from 2
+  // below the stalled 1: more than the watchdog's 4, so the iteration
+  // returns to the stalled point and reports the stall there.
+  KinkedModel slow{.rate = 0.9};
+  NewtonFilmResult result;
+  run_film_newton(slow.newton(4), result);
+  EXPECT_FALSE(result.converged());
+  EXPECT_NE(result.message.find("stalled at step 1"), std::string::npos) << result.message;
+  EXPECT_EQ(result.watchdog_steps, 1);
+  EXPECT_EQ(result.iterations, 5);  // the step across and 4 more, all spent
+  EXPECT_EQ(slow.x, 1.0);
+  EXPECT_FALSE(slow.across);
+  // Given 7 steps it pays.
+  KinkedModel patient{.rate = 0.9};
+  NewtonFilmResult converged;
+  run_film_newton(patient.newton(7), converged);
+  EXPECT_TRUE(converged.converged()) << converged.message;
+  EXPECT_EQ(converged.iterations, 1 + steps_to_tolerance(2.0, 0.9));
 }
 
 }  // namespace

@@ -287,7 +287,9 @@ TEST(MixedFilmTest, StribeckRunsCoverTheSpeedsOnceTheLastOnTheFirstProcess) {
       }
       EXPECT_EQ(next, speeds);
       EXPECT_LE(longest - shortest, 1u);
-      if (speeds > 0) EXPECT_EQ(stribeck_run(speeds, 0, size).second, speeds);
+      if (speeds > 0) {
+        EXPECT_EQ(stribeck_run(speeds, 0, size).second, speeds);
+      }
     }
   }
 }

@@ -144,6 +144,9 @@ struct NewtonFilmResult {
   double max_pressure = 0.0;
   int iterations = 0;  // Newton steps
   int line_search_halvings = 0;
+  // Stalls the Newton iteration stepped over anyway (the mixed film's
+  // watchdog, docs/solvers.md), kept or not.
+  int watchdog_steps = 0;
   // The GMRES path: whether it was taken, its iterations in all and the
   // most in one Newton step's linear solve (all branch passes).
   bool used_krylov = false;
