@@ -135,7 +135,9 @@ int run_film_newton(const FilmNewton& newton, NewtonFilmResult& result) {
         }
         if (accepted) break;
       }
-      if (!accepted && !failed && stalled) {
+      // Past a stall, a step the solve or the line search refuses ends
+      // the watchdog: back to the stalled point.
+      if (!accepted && stalled) {
         if (rules.counts_refused_steps) ++steps;
         back_to_stall();
         break;
