@@ -18,30 +18,38 @@ namespace {
 
 constexpr double kTolerance = 1e-8;
 
+// A scalar model's measure: the residual is its state.
+FilmMeasure at(double value) {
+  return {.norm = std::abs(value), .mass = std::abs(value), .load = 0.0, .contact = 0.0};
+}
+
+// What the models share: one start, a linear solve that always succeeds,
+// the whole step in the trust region, at most 1000 steps, the state `x`.
+FilmNewton model_newton(const double& x) {
+  FilmNewton n;
+  n.rules = {.words = {.solver = "the model's", .film = "the model", .krylov_step = "the model's "},
+             .tolerances = {.mass = kTolerance, .load = kTolerance, .contact = std::nullopt},
+             .limit = 1000};
+  n.measure = [&x] { return at(x); };
+  n.lay_start = [](std::size_t) { return false; };
+  n.solve = [](const FilmMeasure&, double, bool) {
+    FilmNewtonSolve solved;
+    solved.solved = true;
+    return solved;
+  };
+  n.trust_region = [] { return 1.0; };
+  return n;
+}
+
 struct CreepingModel {
   double rate = 0.5;  // the norm after a full step over the norm before
   double x = 1.0, trial = 1.0;
   int steps_taken = 0;
 
-  FilmMeasure at(double value) const {
-    return {.norm = std::abs(value), .mass = std::abs(value), .load = 0.0, .contact = 0.0};
-  }
-
   FilmNewton newton(int stagnation_steps, double stagnation_share) {
-    FilmNewton n;
-    n.rules = {.words = {.solver = "the model's", .film = "the model", .krylov_step = "the model's "},
-               .tolerances = {.mass = kTolerance, .load = kTolerance, .contact = std::nullopt},
-               .limit = 1000,
-               .stagnation_steps = stagnation_steps,
-               .stagnation_share = stagnation_share};
-    n.measure = [this] { return at(x); };
-    n.lay_start = [](std::size_t) { return false; };
-    n.solve = [](const FilmMeasure&, double, bool) {
-      FilmNewtonSolve solved;
-      solved.solved = true;
-      return solved;
-    };
-    n.trust_region = [] { return 1.0; };
+    FilmNewton n = model_newton(x);
+    n.rules.stagnation_steps = stagnation_steps;
+    n.rules.stagnation_share = stagnation_share;
     n.try_step = [this](double scale, bool) -> std::optional<FilmMeasure> {
       trial = x * (1.0 - scale * (1.0 - rate));
       return at(trial);
@@ -89,24 +97,9 @@ struct KinkedModel {
   double x = 1.0, trial = 1.0, saved = 1.0;
   bool across = false, trial_across = false, saved_across = false;
 
-  FilmMeasure at(double value) const {
-    return {.norm = std::abs(value), .mass = std::abs(value), .load = 0.0, .contact = 0.0};
-  }
-
   FilmNewton newton(int watchdog_steps) {
-    FilmNewton n;
-    n.rules = {.words = {.solver = "the model's", .film = "the model", .krylov_step = "the model's "},
-               .tolerances = {.mass = kTolerance, .load = kTolerance, .contact = std::nullopt},
-               .limit = 1000,
-               .watchdog_steps = watchdog_steps};
-    n.measure = [this] { return at(x); };
-    n.lay_start = [](std::size_t) { return false; };
-    n.solve = [](const FilmMeasure&, double, bool) {
-      FilmNewtonSolve solved;
-      solved.solved = true;
-      return solved;
-    };
-    n.trust_region = [] { return 1.0; };
+    FilmNewton n = model_newton(x);
+    n.rules.watchdog_steps = watchdog_steps;
     n.try_step = [this](double scale, bool) -> std::optional<FilmMeasure> {
       trial = across ? x * (1.0 - scale * (1.0 - rate)) : x * (1.0 + scale);
       trial_across = true;
