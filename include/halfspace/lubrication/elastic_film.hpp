@@ -145,7 +145,8 @@ struct NewtonFilmResult {
   int iterations = 0;  // Newton steps
   int line_search_halvings = 0;
   // Stalls the Newton iteration stepped over anyway (the mixed film's
-  // watchdog, docs/solvers.md), kept or not.
+  // watchdog, docs/solvers.md), kept or not; as line_search_halvings, the
+  // last Newton solve's (not summed over a continuation's solves).
   int watchdog_steps = 0;
   // The GMRES path: whether it was taken, its iterations in all and the
   // most in one Newton step's linear solve (all branch passes).
