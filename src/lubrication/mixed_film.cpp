@@ -15,7 +15,11 @@
 // plus the h0 column and the load row; the contact rows are the active-set
 // form of the complementarity (Hintermüller, Ito & Kunisch 2003: the
 // primal-dual active set method is a semi-smooth Newton on the min
-// function).
+// function). With a smoothing mu > 0 the contact rows are instead the
+// smoothed Fischer–Burmeister function q + h/H - sqrt(q^2 + (h/H)^2 + 2 mu),
+// zero where q > 0, h > 0 and q h / H = mu (Kanzow 1996, Chen & Harker
+// 1993): a smooth exchange of contact and fluid pressure on contact cells,
+// followed down to mu = 0 (solve_mixed_film_smoothed).
 #include "halfspace/lubrication/mixed_film.hpp"
 
 #include <fmt/format.h>
@@ -187,6 +191,9 @@ constexpr double kStagnationShare = 0.75;
 // (MixedStartUse::try_only) gives up at a stall instead.
 constexpr int kWatchdogSteps = 4;
 
+// The smoothed contact row and its derivatives by q and f = h / H.
+double smoothed_contact_row(double q, double f, double mu) { return q + f - std::sqrt(q * q + f * f + 2.0 * mu); }
+
 struct State {
   Eigen::ArrayXd s, q, fluid, theta, contact, total, deformation, film, reynolds_film;
   double offset = 0.0;
@@ -205,7 +212,7 @@ struct State {
 // node crosses and the Jacobian is the film's own. `film_change` is dh =
 // K (dp_f + dp_c) + dh0 of the step. Returns whether a branch changed (the
 // step is then solved again).
-bool take_step_branches(const State& x, double hb, double H, const Eigen::VectorXd& step,
+bool take_step_branches(const State& x, double hb, double H, bool smoothed, const Eigen::VectorXd& step,
                         const Eigen::VectorXd& film_change, std::vector<char>& closed,
                         std::vector<double>& film_slope) {
   const Eigen::Index ni = x.film.size();
@@ -219,7 +226,7 @@ bool take_step_branches(const State& x, double hb, double H, const Eigen::Vector
   for (Eigen::Index j = 0; j < ni; ++j) {
     const auto jj = static_cast<std::size_t>(j);
     const double film = x.film[j] + film_change[j];
-    if (closed[jj] != 0 && !(x.q[j] + step[ni + j] > film / H)) take(closed[jj], false);
+    if (!smoothed && closed[jj] != 0 && !(x.q[j] + step[ni + j] > film / H)) take(closed[jj], false);
     if (film_slope[jj] < 1.0 && reynolds_film_slope(film, hb) == 1.0) {
       film_slope[jj] = 1.0;
       flipped = true;
@@ -236,14 +243,14 @@ bool take_step_branches(const State& x, double hb, double H, const Eigen::Vector
 // released node whose film then falls keeps h < 0 with its row on q, and
 // no step along such a direction lowered the residual (the 64^2 level of a
 // measured map stalled; docs/development-log.md, 2026-11-30).
-bool look_ahead_holds(const State& x, double hb, double H, const Eigen::VectorXd& step,
+bool look_ahead_holds(const State& x, double hb, double H, bool smoothed, const Eigen::VectorXd& step,
                       const Eigen::VectorXd& film_change, const std::vector<char>& closed,
                       const std::vector<double>& film_slope) {
   const Eigen::Index ni = x.film.size();
   for (Eigen::Index j = 0; j < ni; ++j) {
     const auto jj = static_cast<std::size_t>(j);
     const double film = x.film[j] + film_change[j];
-    const bool released = closed[jj] == 0 && x.film[j] / H < x.q[j];
+    const bool released = !smoothed && closed[jj] == 0 && x.film[j] / H < x.q[j];
     if (released && x.q[j] + step[ni + j] > film / H) return false;
     const bool lifted = film_slope[jj] > reynolds_film_slope(x.film[j], hb);
     if (lifted && reynolds_film_slope(film, hb) < 1.0) return false;
@@ -251,8 +258,11 @@ bool look_ahead_holds(const State& x, double hb, double H, const Eigen::VectorXd
   return true;
 }
 
-// The contact rows' residuals on the branches `closed`: h / H (closed) or q.
-void contact_residuals(const State& x, double H, const std::vector<char>& closed, Eigen::VectorXd& residual) {
+// The contact rows' residuals on the branches `closed`: h / H (closed) or q
+// (the smoothed rows have no branches).
+void contact_residuals(const State& x, double H, bool smoothed, const std::vector<char>& closed,
+                       Eigen::VectorXd& residual) {
+  if (smoothed) return;
   const Eigen::Index ni = x.film.size();
   for (Eigen::Index j = 0; j < ni; ++j) {
     residual[ni + j] = closed[static_cast<std::size_t>(j)] != 0 ? x.film[j] / H : x.q[j];
@@ -263,10 +273,12 @@ void contact_residuals(const State& x, double H, const std::vector<char>& closed
 
 namespace {
 
-// One Newton solve from `start` or the standard starts.
+// One Newton solve from `start` or the standard starts, with the contact
+// rows smoothed by `smoothing` (mu) where it is > 0.
 MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
                      const LubricantLaws& laws, const MixedFilmOptions& options, const MixedFilm* start,
-                     detail::MixedStartUse use = detail::MixedStartUse::solve_only) {
+                     detail::MixedStartUse use = detail::MixedStartUse::solve_only, double smoothing = 0.0) {
+  const bool smoothed = smoothing > 0.0;
   const bool only_trying = use == detail::MixedStartUse::try_only || use == detail::MixedStartUse::try_until_short;
   const auto started = std::chrono::steady_clock::now();
   const Grid& grid = op.grid();
@@ -394,6 +406,10 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
     rows.terms.reserve(16 * n);
   }
   rows.film_slope.resize(n);  // D_j, the floor's slopes (both paths)
+  if (smoothed) {
+    rows.contact_by_q.resize(n);
+    rows.contact_by_film.resize(n);
+  }
   Eigen::VectorXd film_change(ni);
   std::vector<char> branch_full(n, 1);
   std::vector<char> closed(n, 0);  // contact rows on the h branch
@@ -425,7 +441,8 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
         });
     double contact = 0.0;
     for (Eigen::Index k = 0; k < ni; ++k) {
-      const double row = std::min(state.q[k], state.film[k] / H);
+      const double row = smoothed ? smoothed_contact_row(state.q[k], state.film[k] / H, smoothing)
+                                  : std::min(state.q[k], state.film[k] / H);
       out[ni + k] = row;
       contact = std::max(contact, std::abs(row));
     }
@@ -450,21 +467,24 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
     }
     detail::add_fraction_columns(topology, coefficients, state.fluid, state.theta, state.reynolds_film, second_order,
                                  mass_scale, branch_full, terms, jacobian_t);
-    // The contact rows: open ones fix q, closed ones the film.
+    // The contact rows: open ones fix q, closed ones the film; smoothed
+    // ones weigh both.
     for (std::size_t k = 0; k < n; ++k) {
       const auto kk = static_cast<Eigen::Index>(k);
       auto column = jacobian_t.col(ni + kk);
-      if (closed[k] == 0) {
+      if (!smoothed && closed[k] == 0) {
         column[ni + kk] = 1.0;
         continue;
       }
+      const double by_film = smoothed ? rows.contact_by_film[k] : 1.0;
       for (std::size_t j = 0; j < n; ++j) {
         const auto jj = static_cast<Eigen::Index>(j);
-        const double by_pressure = k_matrix(kk, jj) * P / H;
+        const double by_pressure = by_film * k_matrix(kk, jj) * P / H;
         column[ni + jj] = by_pressure;
         column[jj] = !topology.fixed(j) && branch_full[j] != 0 ? by_pressure : 0.0;
       }
-      if (load_control) column[h0] = 1.0 / H;
+      if (smoothed) column[ni + kk] += rows.contact_by_q[k];
+      if (load_control) column[h0] = by_film / H;
     }
     if (load_control) {
       auto column = jacobian_t.col(h0);
@@ -536,6 +556,13 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
         branch_full[j] = x.s[jj] >= 0.0 ? 1 : 0;
         closed[j] = x.film[jj] / H < x.q[jj] ? 1 : 0;
         rows.film_slope[j] = reynolds_film_slope(x.film[jj], hb);
+        if (smoothed) {
+          // The preconditioner takes the row's larger weight as its branch.
+          const double q = x.q[jj], f = x.film[jj] / H, root = std::sqrt(q * q + f * f + 2.0 * smoothing);
+          rows.contact_by_q[j] = 1.0 - q / root;
+          rows.contact_by_film[j] = 1.0 - f / root;
+          closed[j] = rows.contact_by_film[j] > rows.contact_by_q[j] ? 1 : 0;
+        }
       }
     };
     branches_at_x();
@@ -556,7 +583,7 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
     };
     const auto linearise_rows = [&] {
       measure(x, residual, true);
-      contact_residuals(x, H, closed, residual);
+      contact_residuals(x, H, smoothed, closed, residual);
     };
     const auto solve_step = [&] {
       return krylov ? detail::branch_consistent_step_with(gmres_solve, topology, x.s, step, branch_full)
@@ -582,17 +609,17 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
       outcome.solved = solve_step();
       if (!outcome.solved || pass + 1 == detail::kBranchPasses || !step_branches) break;
       step_film_change();
-      if (!take_step_branches(x, hb, H, step, film_change, closed, rows.film_slope)) break;
+      if (!take_step_branches(x, hb, H, smoothed, step, film_change, closed, rows.film_slope)) break;
       looked_ahead = true;
-      if (krylov) contact_residuals(x, H, closed, residual);
+      if (krylov) contact_residuals(x, H, smoothed, closed, residual);
     }
     if (outcome.solved && looked_ahead && options.checked_step_branches) {
       step_film_change();
-      if (!look_ahead_holds(x, hb, H, step, film_change, closed, rows.film_slope)) {
+      if (!look_ahead_holds(x, hb, H, smoothed, step, film_change, closed, rows.film_slope)) {
         // The step on the current point's branches (a generalised Jacobian
         // of the residual there).
         branches_at_x();
-        if (krylov) contact_residuals(x, H, closed, residual);
+        if (krylov) contact_residuals(x, H, smoothed, closed, residual);
         outcome.solved = solve_step();
       }
     }
@@ -651,10 +678,14 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
   // The result, with the contact pressure's rounding clipped (q below 0 by
   // the contact tolerance, and on open cells, h / H >= q, q within the
   // tolerance of 0: the dense LU's step sets it to 0 exactly, the inexact
-  // GMRES step only to its residual) and the check made apart from the
-  // iteration.
+  // GMRES step only to its residual; a smoothed film keeps all of it, q h /
+  // H = mu on every cell) and the check made apart from the iteration.
   result.fluid_pressure = x.fluid;
-  result.contact_pressure = (x.film / H < x.q).select(x.contact.max(0.0), 0.0);
+  if (smoothed) {
+    result.contact_pressure = x.contact.max(0.0);
+  } else {
+    result.contact_pressure = (x.film / H < x.q).select(x.contact.max(0.0), 0.0);
+  }
   result.pressure = result.fluid_pressure + result.contact_pressure;
   result.fluid_fraction = x.theta;
   result.offset = x.offset;
@@ -699,6 +730,18 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
   return result;
 }
 
+// The contact rows' smoothing (solve_mixed_film_smoothed): from mu =
+// kFirstSmoothing down by kSmoothingFactor per solve to kLastSmoothing,
+// then the film itself (mu = 0). mu is q h / H on contact cells in the
+// units of the pressure and film scales, so 1e-2 spreads the contact
+// pressure over films of a hundredth of H; on the measured map's 64^2 window at 4e-4
+// m/s this crossed the transition (contact share 0.07 to 0.71 between 8e-4
+// and 4e-4 m/s) where the plain continuation stalled (docs/development-log.md,
+// 2026-12-02, thirtieth session).
+constexpr double kFirstSmoothing = 1e-2;
+constexpr double kSmoothingFactor = 0.1;
+constexpr double kLastSmoothing = 1e-12;
+
 // The Newton and GMRES work of a continuation's solves (every solve counts,
 // the films between are discarded).
 struct Work {
@@ -720,6 +763,29 @@ struct Work {
 };
 
 }  // namespace
+
+MixedFilm detail::solve_mixed_film_smoothed(InfluenceOperator& op, const Eigen::ArrayXd& gap,
+                                           const FlowConditions& conditions, const LubricantLaws& laws,
+                                           const MixedFilmOptions& options, const MixedFilm& start) {
+  Work work;
+  MixedFilm from = start;
+  for (double mu = kFirstSmoothing;; mu *= kSmoothingFactor) {
+    const bool last = mu < kLastSmoothing;
+    // A smoothed film meets the complementarity to sqrt(mu): its check
+    // (and the contact rows' tolerance) is that, the last film's the
+    // options'.
+    MixedFilmOptions at = options;
+    if (!last) at.contact_tolerance = std::clamp(2.0 * std::sqrt(mu), options.contact_tolerance, 0.5);
+    MixedFilm film = solve_once(op, gap, conditions, laws, at, &from, MixedStartUse::solve_only, last ? 0.0 : mu);
+    work.add(film, 0);
+    if (!film.converged()) {
+      film.message = fmt::format("the contact rows' smoothing stopped at mu = {:.3g}: {}", mu, film.message);
+      return work.into(std::move(film));
+    }
+    if (last) return work.into(std::move(film));
+    from = std::move(film);
+  }
+}
 
 FlowConditions detail::at_speed_factor(const FlowConditions& conditions, double factor) {
   FlowConditions scaled = conditions;
@@ -746,13 +812,26 @@ MixedFilm continue_in_speed(InfluenceOperator& op, const Eigen::ArrayXd& gap, co
                             const LubricantLaws& laws, const MixedFilmOptions& options, MixedFilm film, double factor,
                             Work& work) {
   double ratio = kContinuationRatio;
+  bool smoothing_helps = true;
   while (factor != 1.0 && work.solves < kContinuationSolves) {
     const double log_step = std::min(std::abs(std::log(factor)), std::log(ratio));
     const double next =
         std::abs(std::log(factor)) <= log_step ? 1.0 : factor * std::exp(factor > 1.0 ? -log_step : log_step);
-    MixedFilm trial = solve_once(op, gap, at_speed_factor(conditions, next), laws, options, &film);
+    const FlowConditions at = at_speed_factor(conditions, next);
+    MixedFilm trial = solve_once(op, gap, at, laws, options, &film);
     work.add(trial);
+    if (!trial.converged() && smoothing_helps && op.grid().dimension() == 2) {
+      // The same step with the contact rows smoothed, before a shorter one;
+      // after a failed one, not again before a step converges (where the
+      // films themselves fail, as on a coarse grid's, each try costs as much
+      // as the plain one).
+      MixedFilm smoothed = detail::solve_mixed_film_smoothed(op, gap, at, laws, options, film);
+      work.add(smoothed, 0);
+      smoothing_helps = smoothed.converged();
+      if (smoothing_helps) trial = std::move(smoothed);
+    }
     if (trial.converged()) {
+      smoothing_helps = true;
       film = std::move(trial);
       factor = next;
       ratio = std::min(ratio * 1.5, kContinuationRatio);

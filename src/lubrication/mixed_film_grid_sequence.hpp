@@ -28,6 +28,15 @@ MixedFilm solve_mixed_film_on_grid(InfluenceOperator& op, const Eigen::ArrayXd& 
                                    const LubricantLaws& laws, const MixedFilmOptions& options, const MixedFilm* start,
                                    MixedStartUse use = MixedStartUse::solve_then_continue);
 
+// The mixed film from the converged film `start` (of the same grid, at
+// another speed or load) with its contact rows smoothed (mixed_film.cpp),
+// the smoothing followed down to the film itself; where a plain Newton
+// iteration stalls in the transition between the full film and the
+// contact.
+MixedFilm solve_mixed_film_smoothed(InfluenceOperator& op, const Eigen::ArrayXd& gap,
+                                    const FlowConditions& conditions, const LubricantLaws& laws,
+                                    const MixedFilmOptions& options, const MixedFilm& start);
+
 // `conditions` with the entrainment and sliding velocities times `factor`.
 FlowConditions at_speed_factor(const FlowConditions& conditions, double factor);
 

@@ -5,7 +5,8 @@
 //
 //   mass row k:    sum over k's local terms (node j) of
 //                    by_pressure dp_f_j + by_fraction dtheta_j + by_film D_j dh_j
-//   contact row k: v_q_k (open: p_c = 0), or dh_k / H (closed: h = 0)
+//   contact row k: v_q_k (open: p_c = 0), or dh_k / H (closed: h = 0), or
+//                  a_k v_q_k + b_k dh_k / H (smoothed rows' weights)
 //   load row:      dA / w sum(dp_f + dp_c)
 //
 // with dp_f = P v_s on full nodes, dtheta = v_s on cavitated ones, dp_c =
@@ -104,7 +105,11 @@ void MixedKrylovSolver::apply_jacobian(const Eigen::VectorXd& v, Eigen::VectorXd
       }
       out[kk] = sum / scales_.mass;
     }
-    out[ni + kk] = closed[k] != 0 ? deflection_[kk] / scales_.film : v[ni + kk];
+    if (!rows_->contact_by_q.empty()) {
+      out[ni + kk] = rows_->contact_by_q[k] * v[ni + kk] + rows_->contact_by_film[k] * deflection_[kk] / scales_.film;
+    } else {
+      out[ni + kk] = closed[k] != 0 ? deflection_[kk] / scales_.film : v[ni + kk];
+    }
   });
   if (scales_.load_control) {
     out[2 * ni] = scales_.area_over_load * (dp_ds_.dot(v.head(ni)) + P * v.segment(ni, ni).sum());

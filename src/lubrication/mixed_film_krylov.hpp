@@ -40,6 +40,9 @@ struct MixedRows {
   std::vector<std::size_t> start;  // n + 1 offsets into terms
   std::vector<LocalTerm> terms;
   std::vector<double> film_slope;  // dh_R / dh
+  // Smoothed contact rows (empty: the min's branches): d row / d q and
+  // d row / d (h / H).
+  std::vector<double> contact_by_q, contact_by_film;
 };
 
 // The system's scales: the unknowns are [s, q, h0] with p_f = P max(s, 0),

@@ -459,6 +459,47 @@ TEST(MixedFilmKrylovTest, TriesEndAtTheirFirstShortGmresStep) {
   }
 }
 
+// The contact rows' smoothing followed down to zero
+// (detail::solve_mixed_film_smoothed, the speed continuation's second try
+// of a step) ends at the film of the plain Newton iteration from the same
+// start on the rough point contact, on the GMRES path (whose
+// preconditioner takes each smoothed row's larger weight as its branch) and
+// on the dense one (the weights in the Jacobian), within the solver's
+// tolerances, each film holding its conditions apart from the solver. (On
+// the rough line of mixed_film_test.cpp the smoothed iteration crept, 200
+// Newton steps at mu = 1e-4, so the continuation smooths point contacts
+// only.)
+TEST(MixedFilmKrylovTest, SmoothedContactRowsEndAtThePlainFilm) {
+  const RoughContact point = rough_point(13, 0.2e-6);
+  struct Case {
+    const RoughContact& contact;
+    double load, speed;
+    FilmLinearSolve solve;
+  };
+  for (const Case& c : {Case{point, kPointLoad, kMixedSpeed, FilmLinearSolve::gmres},
+                        Case{point, kPointLoad, kMixedSpeed, FilmLinearSolve::dense}}) {
+    SCOPED_TRACE(::testing::Message() << "grid " << c.contact.grid.shape_string());
+    FftInfluenceOperator op(c.contact.grid, kEStar);
+    const MixedFilmOptions options = options_for(c.load, c.solve);
+    const MixedFilm faster = solve_mixed_film(op, c.contact.gap, flow(4.0 * c.speed), laws(), options);
+    ASSERT_TRUE(faster.converged()) << faster.message;
+    const MixedFilm plain = detail::solve_mixed_film_on_grid(op, c.contact.gap, flow(c.speed), laws(), options,
+                                                             &faster, detail::MixedStartUse::solve_only);
+    const MixedFilm smoothed =
+        detail::solve_mixed_film_smoothed(op, c.contact.gap, flow(c.speed), laws(), options, faster);
+    ASSERT_TRUE(plain.converged()) << plain.message;
+    ASSERT_TRUE(smoothed.converged()) << smoothed.message;
+    EXPECT_EQ(smoothed.used_krylov, c.solve == FilmLinearSolve::gmres);
+    EXPECT_GT(smoothed.contact_load_fraction, 0.05);
+    expect_solution_holds(op, c.contact.gap, flow(c.speed), options, smoothed);
+    const double peak = plain.max_pressure;
+    EXPECT_LE((smoothed.pressure - plain.pressure).abs().maxCoeff(), 1e-6 * peak);
+    EXPECT_LE((smoothed.fluid_pressure - plain.fluid_pressure).abs().maxCoeff(), 2e-4 * peak);
+    EXPECT_NEAR(smoothed.contact_load_fraction, plain.contact_load_fraction, 3e-5);
+    EXPECT_EQ(smoothed.contact_area_fraction, plain.contact_area_fraction);
+  }
+}
+
 TEST(MixedFilmKrylovTest, RefusesInvalidKrylovOptionsNamingThem) {
   const auto message = [](const MixedFilmOptions& options) {
     try {
