@@ -192,7 +192,9 @@ constexpr double kStagnationShare = 0.75;
 constexpr int kWatchdogSteps = 4;
 
 // The smoothed contact row and its derivatives by q and f = h / H.
-double smoothed_contact_row(double q, double f, double mu) { return q + f - std::sqrt(q * q + f * f + 2.0 * mu); }
+double smoothed_contact_row(double q, double f, double mu) {
+  return q + f - std::sqrt(q * q + f * f + 2.0 * mu);
+}
 
 struct State {
   Eigen::ArrayXd s, q, fluid, theta, contact, total, deformation, film, reynolds_film;
@@ -765,8 +767,8 @@ struct Work {
 }  // namespace
 
 MixedFilm detail::solve_mixed_film_smoothed(InfluenceOperator& op, const Eigen::ArrayXd& gap,
-                                           const FlowConditions& conditions, const LubricantLaws& laws,
-                                           const MixedFilmOptions& options, const MixedFilm& start) {
+                                            const FlowConditions& conditions, const LubricantLaws& laws,
+                                            const MixedFilmOptions& options, const MixedFilm& start) {
   Work work;
   MixedFilm from = start;
   for (double mu = kFirstSmoothing;; mu *= kSmoothingFactor) {

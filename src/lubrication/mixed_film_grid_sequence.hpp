@@ -33,9 +33,8 @@ MixedFilm solve_mixed_film_on_grid(InfluenceOperator& op, const Eigen::ArrayXd& 
 // the smoothing followed down to the film itself; where a plain Newton
 // iteration stalls in the transition between the full film and the
 // contact.
-MixedFilm solve_mixed_film_smoothed(InfluenceOperator& op, const Eigen::ArrayXd& gap,
-                                    const FlowConditions& conditions, const LubricantLaws& laws,
-                                    const MixedFilmOptions& options, const MixedFilm& start);
+MixedFilm solve_mixed_film_smoothed(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
+                                    const LubricantLaws& laws, const MixedFilmOptions& options, const MixedFilm& start);
 
 // `conditions` with the entrainment and sliding velocities times `factor`.
 FlowConditions at_speed_factor(const FlowConditions& conditions, double factor);

@@ -483,8 +483,8 @@ TEST(MixedFilmKrylovTest, SmoothedContactRowsEndAtThePlainFilm) {
     const MixedFilmOptions options = options_for(c.load, c.solve);
     const MixedFilm faster = solve_mixed_film(op, c.contact.gap, flow(4.0 * c.speed), laws(), options);
     ASSERT_TRUE(faster.converged()) << faster.message;
-    const MixedFilm plain = detail::solve_mixed_film_on_grid(op, c.contact.gap, flow(c.speed), laws(), options,
-                                                             &faster, detail::MixedStartUse::solve_only);
+    const MixedFilm plain = detail::solve_mixed_film_on_grid(op, c.contact.gap, flow(c.speed), laws(), options, &faster,
+                                                             detail::MixedStartUse::solve_only);
     const MixedFilm smoothed =
         detail::solve_mixed_film_smoothed(op, c.contact.gap, flow(c.speed), laws(), options, faster);
     ASSERT_TRUE(plain.converged()) << plain.message;
