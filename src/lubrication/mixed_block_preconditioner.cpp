@@ -15,14 +15,22 @@ MixedBlockPreconditioner::MixedBlockPreconditioner(const Grid& grid, int line_ax
   total_.resize(ni);
   mass_rhs_.resize(ni);
   v_s_.resize(ni);
+  open_q_.resize(ni);
+  weight_q_.resize(n_);
+  weight_film_.resize(n_);
 }
 
 bool MixedBlockPreconditioner::factorise(const CsrMatrix& mass, const CsrMatrix& film, const std::vector<char>& closed,
                                          const Eigen::VectorXd& dp_ds, double pressure_scale, double film_scale,
+                                         const std::vector<double>* by_q, const std::vector<double>* by_film,
                                          std::string& message) {
   film_ = &film;
-  closed_ = &closed;
   dp_ds_ = &dp_ds;
+  for (std::size_t k = 0; k < n_; ++k) {
+    const bool is_closed = closed[k] != 0;
+    weight_q_[k] = by_q != nullptr ? (*by_q)[k] : (is_closed ? 0.0 : 1.0);
+    weight_film_[k] = by_film != nullptr ? (*by_film)[k] : (is_closed ? 1.0 : 0.0);
+  }
   pressure_ = pressure_scale;
   film_scale_ = film_scale;
   if (!multigrid_.factorise(mass, message)) return false;
@@ -37,9 +45,12 @@ bool MixedBlockPreconditioner::factorise(const CsrMatrix& mass, const CsrMatrix&
   if (spots == 0) return true;
   spot_entries_.clear();
   for (std::size_t c = 0; c < spot_node_.size(); ++c) {
-    local_.for_each(spot_node_[c], [&](std::size_t m, double k_value) {
+    const std::size_t k = spot_node_[c];
+    local_.for_each(k, [&](std::size_t m, double k_value) {
       if (spot_index_[m] >= 0) spot_entries_.emplace_back(static_cast<int>(c), spot_index_[m], k_value);
     });
+    const double shift = weight_q_[k] * film_scale_ / (weight_film_[k] * pressure_);
+    if (shift != 0.0) spot_entries_.emplace_back(static_cast<int>(c), static_cast<int>(c), shift);
   }
   spots_.resize(spots, spots);
   spots_.setFromTriplets(spot_entries_.begin(), spot_entries_.end());
@@ -57,11 +68,13 @@ void MixedBlockPreconditioner::solve_spots(const Eigen::VectorXd& in, const Eige
   const Eigen::VectorXd& dp_ds = *dp_ds_;
   for (std::size_t c = 0; c < spot_node_.size(); ++c) {
     const std::size_t k = spot_node_[c];
-    double rhs = film_scale_ * in[ni + static_cast<Eigen::Index>(k)];
+    const auto kk = static_cast<Eigen::Index>(k);
+    const double by_film = weight_film_[k];
+    double rhs = film_scale_ * (in[ni + kk] + weight_q_[k] * dp_ds[kk] * v_s[kk] / pressure_) / by_film;
     local_.for_each(k, [&](std::size_t m, double k_value) {
       if (spot_index_[m] >= 0) return;
       const auto mm = static_cast<Eigen::Index>(m);
-      rhs -= k_value * (dp_ds[mm] * v_s[mm] + pressure_ * in[ni + mm]);
+      rhs -= k_value * (dp_ds[mm] * v_s[mm] + pressure_ * in[ni + mm] / weight_q_[m]);
     });
     spot_rhs_[static_cast<Eigen::Index>(c)] = rhs;
   }
@@ -73,8 +86,13 @@ void MixedBlockPreconditioner::apply(const Eigen::VectorXd& in, Eigen::VectorXd&
   const CsrMatrix& film = *film_;
   const Eigen::VectorXd& dp_ds = *dp_ds_;
   const bool spots = !spot_node_.empty();
-  // The spots' total pressure with v_s = 0, then the mass rows given it.
-  total_ = pressure_ * in.tail(ni);
+  // The open rows' v_q, the spots' total pressure with v_s = 0, then the
+  // mass rows given it.
+  for (std::size_t k = 0; k < n_; ++k) {
+    const auto kk = static_cast<Eigen::Index>(k);
+    open_q_[kk] = spot_index_[k] >= 0 ? 0.0 : in[ni + kk] / weight_q_[k];
+  }
+  total_ = pressure_ * open_q_;
   if (spots) {
     v_s_.setZero();
     solve_spots(in, v_s_);
@@ -90,7 +108,7 @@ void MixedBlockPreconditioner::apply(const Eigen::VectorXd& in, Eigen::VectorXd&
   multigrid_.apply(mass_rhs_, v_s_);
   out.resize(2 * ni);
   out.head(ni) = v_s_;
-  out.tail(ni) = in.tail(ni);
+  out.tail(ni) = open_q_;
   if (!spots) return;
   // The spots again with the mass rows' v_s.
   solve_spots(in, v_s_);
@@ -101,7 +119,7 @@ void MixedBlockPreconditioner::apply(const Eigen::VectorXd& in, Eigen::VectorXd&
 }
 
 double MixedBlockPreconditioner::bytes_per_node(double row_entries) {
-  return FilmMultigrid::bytes_per_node(row_entries) + 4.0 * 8.0;
+  return FilmMultigrid::bytes_per_node(row_entries) + 7.0 * 8.0;
 }
 
 }  // namespace halfspace::lubrication::detail

@@ -7,6 +7,11 @@
 //   open contact rows:    v_q = r_q              (t = dp/ds v_s + P r_q)
 //   closed contact rows:  (K t) / H = r_q        (h = 0 imposed)
 //
+// Smoothed contact rows (mixed_film.cpp) read a v_q + b (K t) / H = r_q;
+// those with b > a are taken as closed, with v_q = (t - dp/ds v_s) / P
+// putting a H / (b P) on the diagonal of K_CC, the others as open with
+// v_q = r_q / a (their b K t / H left to GMRES).
+//
 // The open rows are eliminated; what remains of the mass rows, M v_s = r_s -
 // F t (M = A + F diag(dp/ds) on the open cells), is a Reynolds operator
 // with the EHL film's local elastic term, which the EHL film's V-cycle
@@ -40,11 +45,13 @@ class MixedBlockPreconditioner {
 
   // Prepares the map for the mass rows' M and F (n x n, as above; both
   // must outlive the applications), the closed contact rows, the nodes'
-  // dp/ds (0 where cavitated or fixed) and the scales P and H. Returns
-  // false with a message when the V-cycle's lines or the spots' LU are
-  // singular.
+  // dp/ds (0 where cavitated or fixed) and the scales P and H; with
+  // smoothed rows also their weights a (`by_q`) and b (`by_film`), else
+  // null. Returns false with a message
+  // when the V-cycle's lines or the spots' LU are singular.
   bool factorise(const CsrMatrix& mass, const CsrMatrix& film, const std::vector<char>& closed,
-                 const Eigen::VectorXd& dp_ds, double pressure_scale, double film_scale, std::string& message);
+                 const Eigen::VectorXd& dp_ds, double pressure_scale, double film_scale,
+                 const std::vector<double>* by_q, const std::vector<double>* by_film, std::string& message);
 
   // out ~ B^-1 in for the 2n rows [mass; contact] and unknowns [s; q].
   void apply(const Eigen::VectorXd& in, Eigen::VectorXd& out);
@@ -62,15 +69,17 @@ class MixedBlockPreconditioner {
   std::size_t n_;
   FilmMultigrid multigrid_;
   const CsrMatrix* film_ = nullptr;
-  const std::vector<char>* closed_ = nullptr;
   const Eigen::VectorXd* dp_ds_ = nullptr;
+  // The contact rows' weights a and b at the factorisation (the map is
+  // kept over Newton steps): (1, 0) open, (0, 1) closed, or the smoothed ones.
+  std::vector<double> weight_q_, weight_film_;
   double pressure_ = 1.0, film_scale_ = 1.0;
   std::vector<int> spot_index_;         // per node: its index among the closed cells, or -1
   std::vector<std::size_t> spot_node_;  // the closed cells
   Eigen::SparseMatrix<double> spots_;   // K_CC
   Eigen::SparseLU<Eigen::SparseMatrix<double>> spots_lu_;
   std::vector<Eigen::Triplet<double>> spot_entries_;
-  Eigen::VectorXd spot_rhs_, spot_total_, total_, mass_rhs_, v_s_;
+  Eigen::VectorXd spot_rhs_, spot_total_, total_, mass_rhs_, v_s_, open_q_;
 };
 
 }  // namespace halfspace::lubrication::detail

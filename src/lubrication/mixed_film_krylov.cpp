@@ -168,9 +168,14 @@ bool MixedKrylovSolver::factorise_block(std::string& message) {
     matrix_.append_row(row_scratch_);
     film_matrix_.append_row(film_scratch_);
   }
-  for (std::size_t k = 0; k < n_; ++k)
-    krylov_.border_column[ni + static_cast<Eigen::Index>(k)] = closed[k] != 0 ? 1.0 / H : 0.0;
-  return block_->factorise(matrix_, film_matrix_, closed, dp_ds_, scales_.pressure, H, message);
+  const bool smoothed = !rows_->contact_by_q.empty();
+  for (std::size_t k = 0; k < n_; ++k) {
+    const double by_film = smoothed ? rows_->contact_by_film[k] : 1.0;
+    krylov_.border_column[ni + static_cast<Eigen::Index>(k)] = closed[k] != 0 ? by_film / H : 0.0;
+  }
+  return block_->factorise(matrix_, film_matrix_, closed, dp_ds_, scales_.pressure, H,
+                           smoothed ? &rows_->contact_by_q : nullptr, smoothed ? &rows_->contact_by_film : nullptr,
+                           message);
 }
 
 bool MixedKrylovSolver::factorise(std::string& message) {
@@ -194,17 +199,20 @@ bool MixedKrylovSolver::factorise(std::string& message) {
     });
     matrix_.append_row(row_scratch_);
   }
-  // The contact rows: the identity on q (open) or the truncated film (closed).
+  // The contact rows: the identity on q (open), the truncated film
+  // (closed), or the smoothed rows' weights of both.
+  const bool smoothed = !rows_->contact_by_q.empty();
   for (std::size_t k = 0; k < n_; ++k) {
     const auto kk = static_cast<Eigen::Index>(k);
-    const bool is_closed = closed[k] != 0;
-    row_scratch_.emplace_back(static_cast<int>(n_ + k), is_closed ? 0.0 : 1.0);
+    const double by_q = smoothed ? rows_->contact_by_q[k] : (closed[k] != 0 ? 0.0 : 1.0);
+    const double by_film = smoothed ? rows_->contact_by_film[k] : (closed[k] != 0 ? 1.0 : 0.0);
+    row_scratch_.emplace_back(static_cast<int>(n_ + k), by_q);
     local_.for_each(k, [&](std::size_t node, double k_value) {
       const auto mm = static_cast<Eigen::Index>(node);
-      row_scratch_.emplace_back(static_cast<int>(node), is_closed ? k_value * dp_ds_[mm] / H : 0.0);
-      row_scratch_.emplace_back(static_cast<int>(n_ + node), is_closed ? k_value * P / H : 0.0);
+      row_scratch_.emplace_back(static_cast<int>(node), by_film * k_value * dp_ds_[mm] / H);
+      row_scratch_.emplace_back(static_cast<int>(n_ + node), by_film * k_value * P / H);
     });
-    krylov_.border_column[ni + kk] = is_closed ? 1.0 / H : 0.0;
+    krylov_.border_column[ni + kk] = by_film / H;
     matrix_.append_row(row_scratch_);
   }
   if (!preconditioner_->factorise(matrix_, message)) return false;
