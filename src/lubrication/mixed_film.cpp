@@ -715,7 +715,9 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
   for (Eigen::Index k = 0; k < ni; ++k) {
     const double h = result.film[k] / H;
     const double pc = x.contact[k] / P;
-    complementarity = std::max({complementarity, -h, -pc, std::abs(std::min(h, pc))});
+    // A smoothed film's own rows: h > 0, p_c > 0, h p_c / (H P) = mu.
+    const double row = smoothed ? smoothed_contact_row(pc, h, smoothing) : std::min(h, pc);
+    complementarity = std::max({complementarity, -h, -pc, std::abs(row)});
   }
   result.complementarity_error = complementarity;
   // The film on contact cells is 0 to the rounding of h0 + g + K p (h0 may be
@@ -773,9 +775,10 @@ MixedFilm detail::solve_mixed_film_smoothed(InfluenceOperator& op, const Eigen::
   MixedFilm from = start;
   for (double mu = kFirstSmoothing;; mu *= kSmoothingFactor) {
     const bool last = mu < kLastSmoothing;
-    // A smoothed film meets the complementarity to sqrt(mu): its check
-    // (and the contact rows' tolerance) is that, the last film's the
-    // options'.
+    // A smoothed film is only the next one's start: its contact rows are
+    // solved to 2 sqrt(mu), what min(q, h / H) is at q h / H = mu (tighter
+    // rows, a 1e-2 mu, made the levels harder on the measured map's 64^2
+    // window and one failed), the last film's to the options' tolerance.
     MixedFilmOptions at = options;
     if (!last) at.contact_tolerance = std::clamp(2.0 * std::sqrt(mu), options.contact_tolerance, 0.5);
     MixedFilm film = solve_once(op, gap, conditions, laws, at, &from, MixedStartUse::solve_only, last ? 0.0 : mu);
@@ -809,38 +812,46 @@ using detail::at_speed_factor;
 constexpr double kContinuationRatio = 2.0;
 constexpr double kSmallestRatio = 1.02;
 constexpr int kContinuationSolves = 60;
+constexpr double kRatioAfterSmoothing = 1.1;
 
 MixedFilm continue_in_speed(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
                             const LubricantLaws& laws, const MixedFilmOptions& options, MixedFilm film, double factor,
                             Work& work) {
   double ratio = kContinuationRatio;
-  bool smoothing_helps = true;
   while (factor != 1.0 && work.solves < kContinuationSolves) {
     const double log_step = std::min(std::abs(std::log(factor)), std::log(ratio));
     const double next =
         std::abs(std::log(factor)) <= log_step ? 1.0 : factor * std::exp(factor > 1.0 ? -log_step : log_step);
-    const FlowConditions at = at_speed_factor(conditions, next);
-    MixedFilm trial = solve_once(op, gap, at, laws, options, &film);
+    MixedFilm trial = solve_once(op, gap, at_speed_factor(conditions, next), laws, options, &film);
     work.add(trial);
-    if (!trial.converged() && smoothing_helps && op.grid().dimension() == 2) {
-      // The same step with the contact rows smoothed, before a shorter one;
-      // after a failed one, not again before a step converges (where the
-      // films themselves fail, as on a coarse grid's, each try costs as much
-      // as the plain one).
-      MixedFilm smoothed = detail::solve_mixed_film_smoothed(op, gap, at, laws, options, film);
-      work.add(smoothed, 0);
-      smoothing_helps = smoothed.converged();
-      if (smoothing_helps) trial = std::move(smoothed);
-    }
     if (trial.converged()) {
-      smoothing_helps = true;
       film = std::move(trial);
       factor = next;
       ratio = std::min(ratio * 1.5, kContinuationRatio);
       continue;
     }
     ratio = std::sqrt(ratio);
-    if (ratio < kSmallestRatio) {
+    if (ratio >= kSmallestRatio) continue;
+    // Stalled. On point contacts the last resort: the contact rows
+    // smoothed, from the last film straight to the velocities, else to the
+    // step that stalled (and on from there).
+    bool rescued = false;
+    if (op.grid().dimension() == 2) {
+      for (const double target : {1.0, next}) {
+        MixedFilm smoothed =
+            detail::solve_mixed_film_smoothed(op, gap, at_speed_factor(conditions, target), laws, options, film);
+        work.add(smoothed, 0);
+        if (smoothed.converged()) {
+          film = std::move(smoothed);
+          factor = target;
+          ratio = kRatioAfterSmoothing;
+          rescued = true;
+          break;
+        }
+        if (next == 1.0) break;
+      }
+    }
+    if (!rescued) {
       trial.message = fmt::format("speed continuation stalled at {:.4g} times the velocities: {}", next, trial.message);
       return trial;
     }
@@ -892,6 +903,12 @@ MixedFilm continue_in_offset(InfluenceOperator& op, const Eigen::ArrayXd& gap, c
     at.offset = first + next * (options.offset - first);
     MixedFilm trial = solve_once(op, gap, conditions, laws, at, &from);
     work.add(trial);
+    if (!trial.converged() && step * 0.5 < kSmallestOffsetStep && op.grid().dimension() == 2) {
+      // Stalled: as in the speed continuation, the smoothed contact rows.
+      MixedFilm smoothed = detail::solve_mixed_film_smoothed(op, gap, conditions, laws, at, from);
+      work.add(smoothed, 0);
+      if (smoothed.converged()) trial = std::move(smoothed);
+    }
     if (trial.converged()) {
       from = std::move(trial);
       done = next;
