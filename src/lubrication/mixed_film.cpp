@@ -738,10 +738,11 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
 // kFirstSmoothing down by kSmoothingFactor per solve to kLastSmoothing,
 // then the film itself (mu = 0). mu is q h / H on contact cells in the
 // units of the pressure and film scales, so 1e-2 spreads the contact
-// pressure over films of a hundredth of H; on the measured map's 64^2 window at 4e-4
-// m/s this crossed the transition (contact share 0.07 to 0.71 between 8e-4
-// and 4e-4 m/s) where the plain continuation stalled (docs/development-log.md,
-// 2026-12-02, thirtieth session).
+// pressure over films of a hundredth of H. On the measured map's 64^2
+// window at 4e-4 m/s it went from the 8e-4 m/s film (contact share 0.07)
+// to the film (0.71) where the halving had stalled at 7.8e-4 m/s
+// (docs/development-log.md, 2026-12-02, thirtieth session). Tried on
+// every failed step instead of at a stall it cost 3.5x at 128^2.
 constexpr double kFirstSmoothing = 1e-2;
 constexpr double kSmoothingFactor = 0.1;
 constexpr double kLastSmoothing = 1e-12;

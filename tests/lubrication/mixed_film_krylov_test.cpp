@@ -460,12 +460,14 @@ TEST(MixedFilmKrylovTest, TriesEndAtTheirFirstShortGmresStep) {
 }
 
 // The contact rows' smoothing followed down to zero
-// (detail::solve_mixed_film_smoothed, the speed continuation's second try
-// of a step) ends at the film of the plain Newton iteration from the same
-// start on the rough point contact, on the GMRES path (whose
-// preconditioner takes each smoothed row's larger weight as its branch) and
-// on the dense one (the weights in the Jacobian), within the solver's
-// tolerances, each film holding its conditions apart from the solver. (On
+// (detail::solve_mixed_film_smoothed, the continuations' last resort where
+// they stall) ends at the film of the plain Newton iteration from the same
+// start on the rough point contact, on the GMRES path with either
+// preconditioner (the block one takes a row whose film weight is the larger
+// as closed, its q weight on the diagonal of the spots' K; the sparse LU
+// takes both weights) and on the dense path (the weights in the Jacobian),
+// within the solver's tolerances, each film holding its conditions apart
+// from the solver. (On
 // the rough line of mixed_film_test.cpp the smoothed iteration crept, 200
 // Newton steps at mu = 1e-4, so the continuation smooths point contacts
 // only.)
@@ -475,12 +477,17 @@ TEST(MixedFilmKrylovTest, SmoothedContactRowsEndAtThePlainFilm) {
     const RoughContact& contact;
     double load, speed;
     FilmLinearSolve solve;
+    KrylovPreconditioner preconditioner;
   };
-  for (const Case& c : {Case{point, kPointLoad, kMixedSpeed, FilmLinearSolve::gmres},
-                        Case{point, kPointLoad, kMixedSpeed, FilmLinearSolve::dense}}) {
-    SCOPED_TRACE(::testing::Message() << "grid " << c.contact.grid.shape_string());
+  for (const Case& c :
+       {Case{point, kPointLoad, kMixedSpeed, FilmLinearSolve::gmres, KrylovPreconditioner::multigrid},
+        Case{point, kPointLoad, kMixedSpeed, FilmLinearSolve::gmres, KrylovPreconditioner::sparse_lu},
+        Case{point, kPointLoad, kMixedSpeed, FilmLinearSolve::dense, KrylovPreconditioner::multigrid}}) {
+    SCOPED_TRACE(::testing::Message() << "linear solve " << static_cast<int>(c.solve) << ", preconditioner "
+                                      << static_cast<int>(c.preconditioner));
     FftInfluenceOperator op(c.contact.grid, kEStar);
-    const MixedFilmOptions options = options_for(c.load, c.solve);
+    MixedFilmOptions options = options_for(c.load, c.solve);
+    options.preconditioner = c.preconditioner;
     const MixedFilm faster = solve_mixed_film(op, c.contact.gap, flow(4.0 * c.speed), laws(), options);
     ASSERT_TRUE(faster.converged()) << faster.message;
     const MixedFilm plain = detail::solve_mixed_film_on_grid(op, c.contact.gap, flow(c.speed), laws(), options, &faster,
