@@ -191,7 +191,7 @@ constexpr double kStagnationShare = 0.75;
 // (MixedStartUse::try_only) gives up at a stall instead.
 constexpr int kWatchdogSteps = 4;
 
-// The smoothed contact row and its derivatives by q and f = h / H.
+// The smoothed contact row at q and f = h / H.
 double smoothed_contact_row(double q, double f, double mu) {
   return q + f - std::sqrt(q * q + f * f + 2.0 * mu);
 }

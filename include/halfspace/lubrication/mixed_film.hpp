@@ -179,7 +179,10 @@ struct MixedFilm : NewtonFilmResult {
 // 2 (halved where a step fails); under separation control one continues in
 // h0: from the start, or from the load-controlled film at the load of the
 // dry contact at the approach -h0 (so a cold start needs h0 < 0: contact
-// when dry). `iterations` then counts every Newton step. Without a start,
+// when dry). On 2D grids a continuation whose halving stalls tries, last,
+// the contact rows smoothed and followed down to the film itself
+// (docs/theory.md, mixed lubrication). `iterations` then counts every
+// Newton step. Without a start,
 // a load-controlled point contact of more than kMixedSequencingNodes nodes
 // starts from the film of the grid of twice the spacing instead
 // (options.grid_sequencing; its steps in coarse_iterations).
