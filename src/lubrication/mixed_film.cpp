@@ -750,7 +750,7 @@ constexpr double kLastSmoothing = 1e-12;
 // The Newton and GMRES work of a continuation's solves (every solve counts,
 // the films between are discarded).
 struct Work {
-  int steps = 0, solves = 0, krylov = 0, most_krylov = 0;
+  int steps = 0, solves = 0, krylov = 0, most_krylov = 0, rescues = 0;
 
   void add(const MixedFilm& film, int solve = 1) {
     steps += film.iterations;
@@ -763,6 +763,7 @@ struct Work {
     film.iterations = steps;
     film.krylov_iterations = krylov;
     film.max_krylov_iterations_per_step = most_krylov;
+    film.smoothed_rescues = rescues;
     return film;
   }
 };
@@ -837,7 +838,7 @@ MixedFilm continue_in_speed(InfluenceOperator& op, const Eigen::ArrayXd& gap, co
     // smoothed, from the last film straight to the velocities, else to the
     // step that stalled (and on from there).
     bool rescued = false;
-    if (op.grid().dimension() == 2) {
+    if (op.grid().dimension() == 2 && options.smoothed_rescue) {
       for (const double target : {1.0, next}) {
         MixedFilm smoothed =
             detail::solve_mixed_film_smoothed(op, gap, at_speed_factor(conditions, target), laws, options, film);
@@ -847,6 +848,7 @@ MixedFilm continue_in_speed(InfluenceOperator& op, const Eigen::ArrayXd& gap, co
           factor = target;
           ratio = kRatioAfterSmoothing;
           rescued = true;
+          ++work.rescues;
           break;
         }
         if (next == 1.0) break;
@@ -904,11 +906,15 @@ MixedFilm continue_in_offset(InfluenceOperator& op, const Eigen::ArrayXd& gap, c
     at.offset = first + next * (options.offset - first);
     MixedFilm trial = solve_once(op, gap, conditions, laws, at, &from);
     work.add(trial);
-    if (!trial.converged() && step * 0.5 < kSmallestOffsetStep && op.grid().dimension() == 2) {
+    if (!trial.converged() && step * 0.5 < kSmallestOffsetStep && op.grid().dimension() == 2 &&
+        options.smoothed_rescue) {
       // Stalled: as in the speed continuation, the smoothed contact rows.
       MixedFilm smoothed = detail::solve_mixed_film_smoothed(op, gap, conditions, laws, at, from);
       work.add(smoothed, 0);
-      if (smoothed.converged()) trial = std::move(smoothed);
+      if (smoothed.converged()) {
+        trial = std::move(smoothed);
+        ++work.rescues;
+      }
     }
     if (trial.converged()) {
       from = std::move(trial);

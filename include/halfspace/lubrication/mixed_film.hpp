@@ -133,6 +133,11 @@ struct MixedFilmOptions {
   // (docs/development-log.md, 2026-11-30). A solve that fails with it off
   // is solved again with it on (solve_mixed_film).
   bool checked_step_branches = false;
+  // Where a continuation's halving stalls on a 2D grid, the film from the
+  // last converged one with the contact rows smoothed and the smoothing
+  // followed down to zero (docs/theory.md, mixed lubrication). Off, the
+  // stall is reported.
+  bool smoothed_rescue = true;
   MixedFrictionOptions friction;
 
   // Throws InputError naming the option unless load >= 0 and finite, offset
@@ -165,6 +170,9 @@ struct MixedFilm : NewtonFilmResult {
   // the max over cells of max(-h, 0) / H, max(-p_c, 0) / P and min(h / H,
   // p_c / P).
   double complementarity_error = 0.0;
+  // Stalls of this grid's continuations that the smoothed contact rows
+  // got past (MixedFilmOptions::smoothed_rescue).
+  int smoothed_rescues = 0;
 };
 
 // Solves the mixed film on the operator's grid (serial; the dense path on
