@@ -541,6 +541,32 @@ TEST(MixedFilmKrylovTest, SmoothedRowsGetPastAStalledContinuation) {
   EXPECT_EQ(f.contact_area_fraction, expected.contact_area_fraction);
 }
 
+// A Stribeck sweep's point that fails from the last film is solved again
+// alone: with the rescue off, the 17^2 contact's way up from 7e-4 to 1e-3
+// m/s stalls (above), and the point alone, from the faster films down,
+// converges to the film of the stall-free route; its iterations count both.
+TEST(MixedFilmKrylovTest, SweepSolvesAPointAloneWhereTheWayFromTheLastStalls) {
+  const RoughContact point = rough_point(17, 0.2e-6);
+  FftInfluenceOperator op(point.grid, kEStar);
+  MixedFilmOptions plain = options_for(kPointLoad, FilmLinearSolve::automatic);
+  plain.smoothed_rescue = false;
+  const std::vector<StribeckPoint> sweep = stribeck_sweep(op, point.gap, flow(1.0), laws(), plain, {7e-4, 1e-3});
+  ASSERT_EQ(sweep.size(), 2u);
+  ASSERT_TRUE(sweep[0].film.converged()) << sweep[0].film.message;
+  const MixedFilm& f = sweep[1].film;
+  ASSERT_TRUE(f.converged()) << f.message;
+  expect_solution_holds(op, point.gap, flow(1e-3), plain, f);
+  const MixedFilm faster = solve_mixed_film(op, point.gap, flow(3e-3), laws(), plain);
+  ASSERT_TRUE(faster.converged()) << faster.message;
+  const MixedFilm expected = solve_mixed_film(op, point.gap, flow(1e-3), laws(), plain, &faster);
+  const MixedFilm alone = solve_mixed_film(op, point.gap, flow(1e-3), laws(), plain);
+  ASSERT_TRUE(expected.converged()) << expected.message;
+  ASSERT_TRUE(alone.converged()) << alone.message;
+  EXPECT_GT(f.iterations, alone.iterations);
+  EXPECT_LE((f.pressure - expected.pressure).abs().maxCoeff(), 1e-6 * expected.max_pressure);
+  EXPECT_NEAR(f.contact_load_fraction, expected.contact_load_fraction, 3e-5);
+}
+
 TEST(MixedFilmKrylovTest, RefusesInvalidKrylovOptionsNamingThem) {
   const auto message = [](const MixedFilmOptions& options) {
     try {

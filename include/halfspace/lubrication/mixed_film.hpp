@@ -221,7 +221,8 @@ struct StribeckPoint {
 };
 
 // The mixed film at each entrainment speed (m/s, > 0, in the given order;
-// each warm-started from the previous), the velocities scaled from
+// each warm-started from the previous, and where that fails solved again
+// without a start, as alone), the velocities scaled from
 // `conditions` (their direction and slide-to-roll ratio kept; the
 // entrainment velocity must not be zero). Load control only.
 std::vector<StribeckPoint> stribeck_sweep(InfluenceOperator& op, const Eigen::ArrayXd& gap,
