@@ -786,7 +786,8 @@ MixedFilm detail::solve_mixed_film_smoothed(InfluenceOperator& op, const Eigen::
     MixedFilm film = solve_once(op, gap, conditions, laws, at, &from, MixedStartUse::solve_only, last ? 0.0 : mu);
     work.add(film, 0);
     if (!film.converged()) {
-      film.message = fmt::format("the contact rows' smoothing stopped at mu = {:.3g}: {}", mu, film.message);
+      film.message =
+          fmt::format("the contact rows' smoothing stopped at mu = {:.3g}: {}", last ? 0.0 : mu, film.message);
       return work.into(std::move(film));
     }
     if (last) return work.into(std::move(film));
