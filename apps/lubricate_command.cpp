@@ -329,7 +329,9 @@ int report(const LubricateOptions& o, const HeightMap& map, const lubrication::F
   return kExitOk;
 }
 
-int run_elastic(const LubricateOptions& o, const HeightMap& map, const Grid& grid,
+// The EHL film on the whole map, or on the rows `place` holds (the film's
+// solver on an operator of slab transforms; the same code).
+int run_elastic(const LubricateOptions& o, const HeightMap& map, const Grid& grid, const FilmPlace& place,
                 const lubrication::LubricationProblem& problem) {
   const lubrication::FlowConditions& conditions = problem.conditions;
   const lubrication::LubricantLaws& laws = problem.laws;
@@ -337,24 +339,40 @@ int run_elastic(const LubricateOptions& o, const HeightMap& map, const Grid& gri
   const lubrication::ShearLimits& limits = problem.limits;
   const std::optional<LayeredMaterial>& coating = problem.coating;
   const double e_star = problem.e_star;
-  const Eigen::ArrayXd gap = map.heights.maxCoeff() - map.heights;
-  FftInfluenceOperator op = coating ? FftInfluenceOperator(grid, *coating) : FftInfluenceOperator(grid, e_star);
+  // The rows' halo for the shear and the reductions over the processes.
+  const std::unique_ptr<lubrication::FilmRows> rows = place.film_rows(grid, conditions);
+  const double highest = rows ? rows->max(map.heights.maxCoeff()) : map.heights.maxCoeff();
+  const Eigen::ArrayXd gap = highest - map.heights;
+  const HalfSpace body = coating ? HalfSpace(*coating) : HalfSpace(e_star);
+  const std::shared_ptr<operators::SpectralTransforms> transforms = place.transforms(grid);
+  FftInfluenceOperator op = transforms ? FftInfluenceOperator(grid, body, transforms) : FftInfluenceOperator(grid, body);
   const lubrication::ElasticFilm film = lubrication::solve_elastic_film(op, gap, conditions, laws, options);
-  const lubrication::FilmShear shear =
-      lubrication::film_shear(grid, conditions, laws, limits, film.film, film.pressure, film.fluid_fraction);
+  const auto stencil = [&](const Eigen::ArrayXd& field) {
+    return rows ? rows->stencil_field({field.data(), static_cast<std::size_t>(field.size())}) : field;
+  };
+  const lubrication::FilmShear shear = lubrication::film_shear(
+      rows ? rows->stencil_grid() : grid, rows ? rows->stencil_conditions() : conditions, laws, limits,
+      stencil(film.film), stencil(film.pressure), stencil(film.fluid_fraction), nullptr, rows.get());
 
-  lubrication::FilmSummary summary =
-      elastic_summary("elastic", film, grid, conditions.viscosity,
-                      static_cast<double>((film.fluid_fraction < 1.0).count()) / static_cast<double>(grid.size()), 1);
+  double cavitated = static_cast<double>((film.fluid_fraction < 1.0).count());
+  if (rows) rows->sum({&cavitated, 1});
+  lubrication::FilmSummary summary = elastic_summary("elastic", film, grid, conditions.viscosity,
+                                                     cavitated / static_cast<double>(grid.size()), 1);
+  // One time in the file: every process writes the same attributes.
+  if (rows) summary.solve_seconds = rows->max(summary.solve_seconds);
   add_shear(summary, shear);
-  write_film_file(o, map, grid, summary, film.pressure, film.film, film.fluid_fraction, [&](const io::Hdf5Node& root) {
-    root.write_dataset("deformation", io::field_shape(grid),
-                       std::span<const double>(film.deformation.data(), grid.size()), "m");
-    write_elastic_attributes(root, e_star, laws, conditions.viscosity, options.couette_scheme, film.load_error);
-    if (coating) io::write_coating_attributes(root, *coating);
-    write_shear(root, io::field_shape(grid), shear, limits);
-  });
-  return report(o, map, summary, film.converged(), problem);
+  write_film_file(o, map, grid, place, summary, film.pressure, film.film, film.fluid_fraction,
+                  [&](const io::Hdf5Node& root) {
+                    root.write_dataset_rows("deformation", io::field_shape(grid), place.first_row,
+                                            std::span<const double>(film.deformation.data(),
+                                                                    static_cast<std::size_t>(film.deformation.size())),
+                                            "m");
+                    write_elastic_attributes(root, e_star, laws, conditions.viscosity, options.couette_scheme,
+                                             film.load_error);
+                    if (coating) io::write_coating_attributes(root, *coating);
+                    write_shear(root, io::field_shape(grid), shear, limits, place);
+                  });
+  return report(o, map, summary, film.converged(), problem, place.first);
 }
 
 // The film's fields and the mixed film's own attributes, beyond the summary's.
@@ -646,10 +664,13 @@ int solve_film(const LubricateOptions& o) {
   io::check_output_path(*o.output);
   if (o.stribeck) io::check_output_path(*o.stribeck);
 
-  // On several processes the steady rigid film's solver runs on slabs of
-  // rows (mpi/slab_film_rows.hpp), a mixed film's Stribeck sweep shares out
-  // its speeds, and the first process solves the others.
-  const FilmSpread spread = problem.kind == lubrication::FilmKind::rigid && !problem.transient ? FilmSpread::row_slabs
+  // On several processes the steady rigid and EHL films' solvers run on
+  // slabs of rows (mpi/slab_film_rows.hpp, lubrication/elastic_film.hpp), a
+  // mixed film's Stribeck sweep shares out its speeds, and the first
+  // process solves the others.
+  const bool on_rows = (problem.kind == lubrication::FilmKind::rigid || problem.kind == lubrication::FilmKind::elastic) &&
+                       !problem.transient;
+  const FilmSpread spread = on_rows ? FilmSpread::row_slabs
                             : problem.kind == lubrication::FilmKind::mixed && problem.speeds
                                 ? FilmSpread::sweep_speeds
                                 : FilmSpread::first_process;
@@ -663,7 +684,7 @@ int solve_film(const LubricateOptions& o) {
                                  return run_mixed(o, map, grid, place, problem);
                                }
                                if (problem.kind == lubrication::FilmKind::elastic) {
-                                 return run_elastic(o, map, grid, problem);
+                                 return run_elastic(o, map, grid, place, problem);
                                }
                                if (problem.transient) return run_transient(o, map, grid, problem);
                                return run_rigid(o, map, grid, place, problem);

@@ -20,6 +20,7 @@
 #include "halfspace/linalg/communicator.hpp"
 #include "halfspace/lubrication/film_rows.hpp"
 #include "halfspace/lubrication/flow_conditions.hpp"
+#include "halfspace/operators/spectral_transforms.hpp"
 #include "halfspace/solvers/layout.hpp"
 #include "halfspace/stress/subsurface_stress.hpp"
 #include "halfspace/surface/self_affine.hpp"
@@ -131,6 +132,10 @@ struct FilmPlace {
   std::function<std::unique_ptr<lubrication::FilmRows>(const Grid& grid, const lubrication::FlowConditions& conditions)>
       film_rows =
           [](const Grid&, const lubrication::FlowConditions&) { return std::unique_ptr<lubrication::FilmRows>(); };
+  // The influence operator's transforms on the film's grid: the slabs of
+  // rows held here; null: the serial ones of the whole grid.
+  std::function<std::shared_ptr<operators::SpectralTransforms>(const Grid& grid)> transforms =
+      [](const Grid&) { return std::shared_ptr<operators::SpectralTransforms>(); };
   // Writes the result file: fill(root) writes each field's rows held here
   // (Hdf5Node::write_dataset_rows from first_row); `bound` bounds the
   // file's bytes (the space reserved before a parallel write).
@@ -141,8 +146,9 @@ struct FilmPlace {
 };
 
 // How a film's work is spread over several processes: run by the first
-// alone; on slabs of rows (the films whose solver runs on rows:
-// lubrication/film_rows.hpp); or a Stribeck sweep's speeds shared out.
+// alone; on slabs of rows (the films whose solvers run on rows: the rigid
+// film's, lubrication/film_rows.hpp, and the EHL film's on a distributed
+// operator); or a Stribeck sweep's speeds shared out.
 enum class FilmSpread { first_process, row_slabs, sweep_speeds };
 
 // Reads the height map with read() and returns run(map, place). One process

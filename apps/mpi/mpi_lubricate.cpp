@@ -2,11 +2,12 @@
 // run_film_everywhere): the first process reads and prepares the height
 // map whole (the serial command's reader) and hands every process its slab
 // of rows; the rigid film is solved on the slabs (mpi::SlabFilmRows, the
-// serial solver's iterates) and all write their rows of the result file at
-// once (the parallel HDF5). A profile, one row, and the films whose solvers
-// do not run on rows (elastic, mixed, transient) are run by the first
-// process as the serial program runs them; a Stribeck sweep's speeds are
-// shared out, every process holding the whole map.
+// serial solver's iterates), the EHL film on an influence operator of slab
+// transforms (lubrication/elastic_film.hpp), and all write their rows of
+// the result file at once (the parallel HDF5). A profile, one row, and the
+// films whose solvers do not run on rows (mixed, transient) are run by the
+// first process as the serial program runs them; a Stribeck sweep's speeds
+// are shared out, every process holding the whole map.
 #include <algorithm>
 #include <cstdint>
 #include <memory>
@@ -20,6 +21,7 @@
 #include "halfspace/mpi/row_exchange.hpp"
 #include "halfspace/mpi/slab_fft.hpp"
 #include "halfspace/mpi/slab_film_rows.hpp"
+#include "halfspace/mpi/slab_spectral_transforms.hpp"
 #include "mpi_program.hpp"
 
 namespace halfspace::app {
@@ -101,6 +103,10 @@ int run_film_everywhere(const std::function<HeightMap()>& read,
   FilmPlace place{.whole = false, .first = root, .first_row = slab.first_row};
   place.film_rows = [&world, slab](const Grid& grid, const lubrication::FlowConditions& conditions) {
     return std::unique_ptr<lubrication::FilmRows>(std::make_unique<mpi::SlabFilmRows>(grid, conditions, slab, world));
+  };
+  place.transforms = [&world](const Grid& grid) {
+    return std::shared_ptr<operators::SpectralTransforms>(
+        mpi::make_slab_transforms(grid, world, FftPlanning::estimate, {.count = 1}));
   };
   place.write_file = [&world](const std::filesystem::path& path, std::uint64_t bound,
                               const std::function<void(const io::Hdf5Node& root)>& fill) {

@@ -32,6 +32,7 @@
 #include "film_grid_sequence.hpp"
 #include "film_krylov_solver.hpp"
 #include "film_newton.hpp"
+#include "film_slab.hpp"
 #include "halfspace/error.hpp"
 #include "halfspace/lubrication/cavitation_solver.hpp"
 #include "halfspace/lubrication/reynolds_stencil.hpp"
@@ -130,25 +131,30 @@ struct State {
 
 }  // namespace
 
+using detail::FilmSlab;
 using detail::influence_matrix;
 using detail::linearise;
 using detail::LocalTerm;
 using detail::NodeCoefficients;
 
-double elastic_film_residual(const Grid& grid, const FlowConditions& conditions, const LubricantLaws& laws,
-                             const Eigen::ArrayXd& film, const Eigen::ArrayXd& pressure,
-                             const Eigen::ArrayXd& fluid_fraction, CouetteScheme scheme) {
+double detail::film_flux_residual(const FilmSlab& slab, const ReynoldsStencil& topology,
+                                  const FlowConditions& conditions, const LubricantLaws& laws,
+                                  const Eigen::ArrayXd& film, const Eigen::ArrayXd& pressure,
+                                  const Eigen::ArrayXd& fluid_fraction, CouetteScheme scheme) {
   // Face by face: each face's flux leaves one control volume and enters the
-  // other (the flux form, written apart from the Newton's node form).
-  const ReynoldsStencil topology(grid, Eigen::ArrayXd::Ones(static_cast<Eigen::Index>(grid.size())), conditions);
+  // other (the flux form, written apart from the Newton's node form). On
+  // a slab every face of this process's nodes lies in the stencil.
+  const Grid& grid = slab.stencil_grid();
   const std::size_t n = grid.size();
+  const std::size_t first = slab.own_first();
+  const std::size_t end = first + slab.own_nodes();
   const double eta0 = conditions.viscosity;
   Eigen::ArrayXd eps(static_cast<Eigen::Index>(n)), mass(static_cast<Eigen::Index>(n));
   double couette = 0.0;
   for (std::size_t k = 0; k < n; ++k) {
     const double pk = std::max(pressure[k], 0.0);
     mass[k] = laws.density_ratio(pk) * film[k] * fluid_fraction[k];
-    if (!topology.fixed(k)) {
+    if (k >= first && k < end && !topology.fixed(k)) {
       couette = std::max(couette, (topology.couette_x() + topology.couette_y()) * laws.density_ratio(pk) * film[k]);
     }
     eps[k] = laws.density_ratio(pk) * std::pow(film[k], 3) / (12.0 * eta0 * laws.viscosity_ratio(pk, eta0));
@@ -183,10 +189,20 @@ double elastic_film_residual(const Grid& grid, const FlowConditions& conditions,
     }
   }
   double largest = 0.0;
-  for (std::size_t k = 0; k < n; ++k) {
+  for (std::size_t k = first; k < end; ++k) {
     if (!topology.fixed(k)) largest = std::max(largest, std::abs(balance[k]));
   }
+  largest = slab.max(largest);
+  couette = slab.max(couette);
   return largest / (couette > 0.0 ? couette : 1.0);
+}
+
+double elastic_film_residual(const Grid& grid, const FlowConditions& conditions, const LubricantLaws& laws,
+                             const Eigen::ArrayXd& film, const Eigen::ArrayXd& pressure,
+                             const Eigen::ArrayXd& fluid_fraction, CouetteScheme scheme) {
+  const detail::FilmSlab whole(grid, conditions, grid.size(), linalg::serial_communicator(), 0);
+  const ReynoldsStencil topology(grid, Eigen::ArrayXd::Ones(static_cast<Eigen::Index>(grid.size())), conditions);
+  return detail::film_flux_residual(whole, topology, conditions, laws, film, pressure, fluid_fraction, scheme);
 }
 
 detail::FilmKrylovSettings detail::film_krylov_settings(const ElasticFilmOptions& options) {
@@ -197,8 +213,8 @@ detail::FilmKrylovSettings detail::film_krylov_settings(const ElasticFilmOptions
           .preconditioner = options.preconditioner};
 }
 
-void detail::require_film_memory(const Grid& grid, const ElasticFilmOptions& options) {
-  const double needed = detail::film_krylov_memory_estimate(grid.size(), film_krylov_settings(options));
+void detail::require_film_memory(const Grid& grid, const ElasticFilmOptions& options, std::size_t nodes) {
+  const double needed = detail::film_krylov_memory_estimate(nodes, film_krylov_settings(options));
   const auto available = available_memory();
   if (available && needed > available->bytes) {
     throw InputError(fmt::format("the EHL solve on the {} grid needs about {}, more than the {} available ({})",
@@ -215,9 +231,17 @@ ElasticFilm detail::solve_film_newton(InfluenceOperator& op, const Eigen::ArrayX
   conditions.validate(grid);
   laws.validate(conditions.viscosity);
   options.validate();
-  const std::size_t n = grid.size();
-  if (op.local_size() != n) throw InputError("the EHL film needs a serial influence operator (one process)");
-  const bool krylov = options.linear_solve == FilmLinearSolve::gmres ||
+  const bool second_order = options.couette_scheme == CouetteScheme::second_order;
+  // This process's rows and the halo the stencil reaches (two rows for the
+  // second-order Couette flux's upstream extrapolation).
+  const FilmSlab slab(grid, conditions, op.local_size(), op.communicator(), second_order ? 2 : 1);
+  const std::size_t n = slab.own_nodes();
+  const std::size_t first = slab.own_first();
+  const bool spread = slab.distributed();
+  if (spread && options.linear_solve == FilmLinearSolve::dense) {
+    throw InputError("the EHL solver's dense linear solve runs on one process: use the gmres solve on several");
+  }
+  const bool krylov = spread || options.linear_solve == FilmLinearSolve::gmres ||
                       (options.linear_solve == FilmLinearSolve::automatic && n > kAutomaticKrylovNodes);
   if (!krylov && n > kMaxElasticFilmNodes) {
     throw InputError(fmt::format(
@@ -225,13 +249,17 @@ ElasticFilm detail::solve_film_newton(InfluenceOperator& op, const Eigen::ArrayX
         grid.shape_string(), n, kMaxElasticFilmNodes));
   }
   const detail::FilmKrylovSettings krylov_settings = detail::film_krylov_settings(options);
-  if (krylov) detail::require_film_memory(grid, options);
-  if (static_cast<std::size_t>(gap.size()) != n || !gap.allFinite()) {
-    throw InputError(fmt::format("EHL gap has {} values, the {} grid has {} cells; every value must be finite",
-                                 gap.size(), grid.shape_string(), n));
+  if (krylov) detail::require_film_memory(grid, options, n);
+  if (!slab.all(static_cast<std::size_t>(gap.size()) == n && gap.allFinite())) {
+    throw InputError(fmt::format("EHL gap has {} values, the {} grid has {} cells{}; every value must be finite",
+                                 gap.size(), grid.shape_string(), grid.size(),
+                                 spread ? fmt::format(" ({} on this process)", n) : ""));
   }
   const auto ni = static_cast<Eigen::Index>(n);
-  const ReynoldsStencil topology(grid, Eigen::ArrayXd::Ones(ni), conditions);
+  const auto own = [&](Eigen::ArrayXd& field) { return field.segment(static_cast<Eigen::Index>(first), ni); };
+  const auto stencil_size = static_cast<Eigen::Index>(slab.stencil_nodes());
+  const ReynoldsStencil topology(slab.stencil_grid(), Eigen::ArrayXd::Ones(stencil_size), slab.stencil_conditions());
+  const detail::OwnNodes own_nodes{.first = first, .count = n, .comm = spread ? &slab.communicator() : nullptr};
   const double eta0 = conditions.viscosity;
   const double area = grid.cell_area();
   const double w = options.load;
@@ -240,18 +268,19 @@ ElasticFilm detail::solve_film_newton(InfluenceOperator& op, const Eigen::ArrayX
     throw InputError("EHL entrainment velocity is zero: the film needs entrainment to carry a load");
   }
 
-  const bool second_order = options.couette_scheme == CouetteScheme::second_order;
   ElasticFilm result;
   State x;
+  for (Eigen::ArrayXd* field : {&x.pressure, &x.theta, &x.deformation, &x.film}) field->setZero(stencil_size);
   // The start: a previous film, or the dry contact at the load with a film
   // laid over it (Newton then finds h0).
   double pressure_scale = 0.0;
   double dry_offset = 0.0, edge_gap = 0.0;
-  const bool dry_start = !(start != nullptr && start->pressure.size() == ni && start->fluid_fraction.size() == ni);
+  const bool dry_start =
+      !slab.all(start != nullptr && start->pressure.size() == ni && start->fluid_fraction.size() == ni);
   if (!dry_start) {
     pressure_scale = std::max(start->max_pressure, w / grid.domain_area());
-    x.pressure = start->pressure;
-    x.theta = start->fluid_fraction;
+    own(x.pressure) = start->pressure;
+    own(x.theta) = start->fluid_fraction;
     x.offset = start->offset;
   } else {
     solvers::PolonskyKeer dry(op);
@@ -268,22 +297,26 @@ ElasticFilm detail::solve_film_newton(InfluenceOperator& op, const Eigen::ArrayX
       return result;
     }
     pressure_scale = contact.max_pressure;
-    x.pressure = contact.pressure;
-    x.theta = Eigen::ArrayXd::Ones(ni);
+    own(x.pressure) = contact.pressure;
+    own(x.theta).setOnes();
     // A dry contact on nodes of imposed pressure only (a wedge touching at
     // its outlet edge) leaves the film's nodes unloaded, and the first
     // Newton step from there was singular at any load: the load spread
     // evenly over them instead.
     double free_load = 0.0;
-    std::size_t free_nodes = 0;
+    double free_nodes = 0.0;
     for (std::size_t k = 0; k < n; ++k) {
-      if (topology.fixed(k)) continue;
+      if (topology.fixed(first + k)) continue;
       free_load += contact.pressure[static_cast<Eigen::Index>(k)];
-      ++free_nodes;
+      free_nodes += 1.0;
     }
-    if (!(free_load > 0.0) && free_nodes > 0) {
-      const double mean = w / (area * static_cast<double>(free_nodes));
-      for (std::size_t k = 0; k < n; ++k) x.pressure[static_cast<Eigen::Index>(k)] = topology.fixed(k) ? 0.0 : mean;
+    free_load = slab.sum(free_load);
+    free_nodes = slab.sum(free_nodes);
+    if (!(free_load > 0.0) && free_nodes > 0.0) {
+      const double mean = w / (area * free_nodes);
+      for (std::size_t k = 0; k < n; ++k) {
+        x.pressure[static_cast<Eigen::Index>(first + k)] = topology.fixed(first + k) ? 0.0 : mean;
+      }
       pressure_scale = mean;
     }
     // The undeformed gap at the dry contact's edge (b^2 / 2R for a
@@ -291,22 +324,26 @@ ElasticFilm detail::solve_film_newton(InfluenceOperator& op, const Eigen::ArrayX
     for (Eigen::Index k = 0; k < ni; ++k) {
       if (contact.pressure[k] > 0.0) edge_gap = std::max(edge_gap, gap[k]);
     }
-    if (!(edge_gap > 0.0)) edge_gap = std::max(gap.maxCoeff(), 1e-9);
+    edge_gap = slab.max(edge_gap);
+    if (!(edge_gap > 0.0)) edge_gap = std::max(slab.max(ni > 0 ? gap.maxCoeff() : 0.0), 1e-9);
     dry_offset = -contact.approach;
     x.offset = dry_offset + kStartFilms[0] * edge_gap;
   }
   x.s.resize(ni);
   for (Eigen::Index k = 0; k < ni; ++k) {
-    x.s[k] = x.pressure[k] > 0.0 ? x.pressure[k] / pressure_scale : x.theta[k] - 1.0;
+    const auto at = static_cast<Eigen::Index>(first) + k;
+    x.s[k] = x.pressure[at] > 0.0 ? x.pressure[at] / pressure_scale : x.theta[at] - 1.0;
   }
-  x.deformation.resize(ni);
 
-  // p, theta, K p and h of s and h0; false if a film is not positive.
+  // p, theta, K p and h of s and h0, on this process's nodes and then the
+  // halo; false (on every process) if a film is not positive.
   const auto evaluate = [&](State& state) {
-    detail::set_pressure_and_fraction(topology, pressure_scale, supply, state.s, state.pressure, state.theta);
-    op.apply({state.pressure.data(), n}, {state.deformation.data(), n});
-    state.film = state.offset + gap + state.deformation;
-    return (state.film > 0.0).all() && state.film.allFinite();
+    detail::set_pressure_and_fraction(topology, pressure_scale, supply, state.s, state.pressure, state.theta, first);
+    op.apply({state.pressure.data() + first, n}, {state.deformation.data() + first, n});
+    own(state.film) = state.offset + gap + own(state.deformation);
+    if (!slab.all((own(state.film) > 0.0).all() && own(state.film).allFinite())) return false;
+    for (Eigen::ArrayXd* field : {&state.pressure, &state.theta, &state.film}) slab.exchange(field->data());
+    return true;
   };
   if (!evaluate(x)) {
     result.message = "the start of the EHL solve has a film that is not positive";
@@ -326,38 +363,40 @@ ElasticFilm detail::solve_film_newton(InfluenceOperator& op, const Eigen::ArrayX
   if (krylov) {
     rows.start.resize(n + 1);
     rows.terms.reserve(16 * n);
-    krylov_solver.emplace(op, topology, krylov_settings);
+    krylov_solver.emplace(op, topology, krylov_settings, slab);
   }
   std::vector<char> branch_full(n, 1);
   double mass_scale = 1.0;
 
   // The scaled residual (mass rows over mass_scale, the load row over w)
   // and the measured relative residuals.
-  const auto measure = [&](const State& state, Eigen::VectorXd& out, bool linearise_too) {
+  const auto measure = [&](State& state, Eigen::VectorXd& out, bool linearise_too) {
     coefficients.update(laws, eta0, state.pressure, state.film);
     const bool dense_too = linearise_too && !krylov;
     if (dense_too) jacobian_t.setZero();
     detail::FilmMeasure m;
-    m.mass = detail::mass_rows(topology, coefficients, state.pressure, state.theta, state.film, second_order,
-                               mass_scale, terms, out, linearise_too && krylov ? &rows : nullptr,
-                               [&](std::size_t k, const std::vector<LocalTerm>& row_terms) {
-                                 if (!dense_too) return;
-                                 auto column = jacobian_t.col(static_cast<Eigen::Index>(k));
-                                 double by_offset = 0.0;
-                                 for (const LocalTerm& t : row_terms) {
-                                   const auto node = static_cast<Eigen::Index>(t.node);
-                                   if (t.by_film != 0.0) {
-                                     column.head(ni) += (t.by_film / mass_scale) * k_matrix.col(node);
-                                   }
-                                   by_offset += t.by_film;
-                                   column[node] += t.by_pressure / mass_scale;
-                                 }
-                                 column[ni] = by_offset / mass_scale;
-                               });
-    const double load = state.pressure.sum() * area;
+    m.mass = detail::mass_rows(
+        topology, coefficients, state.pressure, state.theta, state.film, second_order, mass_scale, terms, out,
+        linearise_too && krylov ? &rows : nullptr,
+        [&](std::size_t k, const std::vector<LocalTerm>& row_terms) {
+          if (!dense_too) return;
+          auto column = jacobian_t.col(static_cast<Eigen::Index>(k));
+          double by_offset = 0.0;
+          for (const LocalTerm& t : row_terms) {
+            const auto node = static_cast<Eigen::Index>(t.node);
+            if (t.by_film != 0.0) {
+              column.head(ni) += (t.by_film / mass_scale) * k_matrix.col(node);
+            }
+            by_offset += t.by_film;
+            column[node] += t.by_pressure / mass_scale;
+          }
+          column[ni] = by_offset / mass_scale;
+        },
+        own_nodes);
+    const double load = slab.sum(own(state.pressure).sum()) * area;
     out[ni] = (load - w) / w;
     m.load = std::abs(load - w) / w;
-    m.norm = out.norm();
+    m.norm = slab.norm(out, 1);
     if (!dense_too) return m;
     // Columns of J are rows of J^T: scale by dp/ds, then add d theta / ds.
     for (std::size_t j = 0; j < n; ++j) {
@@ -378,9 +417,7 @@ ElasticFilm detail::solve_film_newton(InfluenceOperator& op, const Eigen::ArrayX
   };
 
   // The mass rows' scale: the largest Couette outflow of the start.
-  const auto scale_masses = [&] {
-    mass_scale = detail::largest_couette_outflow(topology, Eigen::ArrayXd::Ones(ni), x.film);
-  };
+  const auto scale_masses = [&] { mass_scale = detail::largest_couette_outflow(topology, x.film, own_nodes); };
   scale_masses();
 
   const State initial = x;
@@ -432,14 +469,15 @@ ElasticFilm detail::solve_film_newton(InfluenceOperator& op, const Eigen::ArrayX
       return solved.converged;
     };
     outcome.solved =
-        detail::branch_consistent_step_with(gmres_solve, topology, x.s, step, branch_full, kBranchChoiceBand);
+        detail::branch_consistent_step_on(gmres_solve, topology, first, x.s, step, branch_full, kBranchChoiceBand,
+                                          [&](bool flipped) { return !slab.all(!flipped); });
     return outcome;
   };
   // No pressure changes by more than the pressure scale, h0 by no more than
   // the thinnest film.
   newton.trust_region = [&] {
-    const double largest_change = step.head(ni).cwiseAbs().maxCoeff();
-    const double film_change = std::abs(step[ni]) / x.film.minCoeff();
+    const double largest_change = slab.max(ni > 0 ? step.head(ni).cwiseAbs().maxCoeff() : 0.0);
+    const double film_change = std::abs(step[ni]) / slab.min(own(x.film).minCoeff());
     return std::min(
         {1.0, kLargestStep / std::max(largest_change, 1e-300), kLargestStep / std::max(film_change, 1e-300)});
   };
@@ -452,24 +490,32 @@ ElasticFilm detail::solve_film_newton(InfluenceOperator& op, const Eigen::ArrayX
   newton.accept = [&] { std::swap(x, trial); };
   result.tight_retries = detail::run_film_newton(newton, result);
 
+  // This process's rows of the fields; the scalars of the whole film.
   result.used_krylov = krylov;
-  result.pressure = x.pressure;
-  result.fluid_fraction = x.theta;
-  result.film = x.film;
-  result.deformation = x.deformation;
+  result.pressure = own(x.pressure);
+  result.fluid_fraction = own(x.theta);
+  result.film = own(x.film);
+  result.deformation = own(x.deformation);
   result.offset = x.offset;
-  result.load = x.pressure.sum() * area;
+  result.load = slab.sum(result.pressure.sum()) * area;
+  // The contact's centre: the first node of the smallest undeformed gap.
   Eigen::Index centre = 0;
-  gap.minCoeff(&centre);
-  result.central_film_thickness = x.film[centre];
-  result.minimum_film_thickness = x.film.minCoeff();
-  result.max_pressure = x.pressure.maxCoeff();
+  const double smallest_gap = slab.min(ni > 0 ? gap.minCoeff(&centre) : INFINITY);
+  const bool holds_centre = ni > 0 && gap[centre] == smallest_gap;
+  const double centre_node = slab.min(
+      holds_centre ? static_cast<double>(slab.whole_node(first + static_cast<std::size_t>(centre))) : INFINITY);
+  const bool owns_centre =
+      holds_centre && static_cast<double>(slab.whole_node(first + static_cast<std::size_t>(centre))) == centre_node;
+  result.central_film_thickness = slab.max(owns_centre ? result.film[centre] : -INFINITY);
+  result.minimum_film_thickness = slab.min(ni > 0 ? result.film.minCoeff() : INFINITY);
+  result.max_pressure = slab.max(ni > 0 ? result.pressure.maxCoeff() : -INFINITY);
   // The check apart from the iteration: the flux-form residual, the
   // complementarity and the load.
   result.relative_residual =
-      elastic_film_residual(grid, conditions, laws, x.film, x.pressure, x.theta, options.couette_scheme);
+      detail::film_flux_residual(slab, topology, conditions, laws, x.film, x.pressure, x.theta, options.couette_scheme);
   result.load_error = std::abs(result.load - w) / w;
-  detail::check_after_newton(newton.rules, 0.0, satisfies_complementarity(x.pressure, x.theta), result);
+  detail::check_after_newton(newton.rules, 0.0,
+                             slab.all(satisfies_complementarity(result.pressure, result.fluid_fraction)), result);
   result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return result;
 }

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <optional>
@@ -29,25 +30,41 @@ std::optional<ElasticFilm> sequenced_start(InfluenceOperator& op, const Eigen::A
       },
       record);
   if (!coarse) return std::nullopt;
-  const ElasticFilm& film = *coarse;
+  ElasticFilm film = *coarse;
   const Grid& grid = op.grid();
   const auto coarse_size = solvers::coarser_grid(grid, detail::kSequencingMinCells)->size();
   const auto coarse_n = static_cast<Eigen::Index>(coarse_size);
+  // On several processes each solved the coarse film whole: the first
+  // one's is taken by all, so that they start alike whatever their rounding.
+  const linalg::Communicator& comm = op.communicator();
+  if (comm.size() > 1) {
+    std::array<double, 2> scalars{film.offset, film.converged() ? 1.0 : 0.0};
+    linalg::broadcast_from_first(comm, scalars);
+    film.offset = scalars[0];
+    film.status = scalars[1] > 0.5 ? FilmStatus::converged : FilmStatus::failure;
+    if (film.pressure.size() == coarse_n && film.fluid_fraction.size() == coarse_n) {
+      linalg::broadcast_from_first(comm, {film.pressure.data(), coarse_size});
+      linalg::broadcast_from_first(comm, {film.fluid_fraction.data(), coarse_size});
+    }
+  }
   if (converged_only && !film.converged()) return std::nullopt;
   if (film.pressure.size() != coarse_n || !film.pressure.allFinite() || film.fluid_fraction.size() != coarse_n ||
       !film.fluid_fraction.allFinite()) {
     return std::nullopt;
   }
+  // This process's rows of the fine start.
+  const std::size_t own = op.local_size();
+  const std::size_t first_row = linalg::first_row_held(comm, own / grid.nx());
   ElasticFilm start;
-  start.pressure.resize(static_cast<Eigen::Index>(grid.size()));
+  start.pressure.resize(static_cast<Eigen::Index>(own));
   start.fluid_fraction.resize(start.pressure.size());
-  solvers::prolong_bilinear(grid, {film.pressure.data(), coarse_size}, {start.pressure.data(), grid.size()});
-  solvers::prolong_bilinear(grid, {film.fluid_fraction.data(), coarse_size},
-                            {start.fluid_fraction.data(), grid.size()});
+  solvers::prolong_bilinear_rows(grid, {film.pressure.data(), coarse_size}, first_row, {start.pressure.data(), own});
+  solvers::prolong_bilinear_rows(grid, {film.fluid_fraction.data(), coarse_size}, first_row,
+                                 {start.fluid_fraction.data(), own});
   // The coarse film's h0 carries over: the coarse gap is the fine one's
   // block average and the coarse K the fine one's.
   start.offset = film.offset;
-  start.max_pressure = start.pressure.maxCoeff();
+  start.max_pressure = comm.max(own > 0 ? start.pressure.maxCoeff() : 0.0);
   return start;
 }
 
@@ -60,13 +77,17 @@ ElasticFilm solve_elastic_film(InfluenceOperator& op, const Eigen::ArrayXd& gap,
   conditions.validate(grid);
   laws.validate(conditions.viscosity);
   options.validate();
-  const bool sequence = options.grid_sequencing && start == nullptr && options.linear_solve != FilmLinearSolve::dense &&
-                        grid.size() > kAutomaticKrylovNodes && op.local_size() == grid.size() &&
-                        static_cast<std::size_t>(gap.size()) == grid.size() && gap.allFinite();
+  // On several processes each holds its rows of `gap` (agreed: the
+  // decision is collective).
+  const bool sequence =
+      options.grid_sequencing && start == nullptr && options.linear_solve != FilmLinearSolve::dense &&
+      grid.size() > kAutomaticKrylovNodes &&
+      op.communicator().min(static_cast<std::size_t>(gap.size()) == op.local_size() && gap.allFinite() ? 1.0 : 0.0) >
+          0.5;
   if (!sequence) return detail::solve_film_newton(op, gap, conditions, laws, options, start);
   // The fine grid's memory first: the coarse grids would take minutes on a
   // grid the fine solve cannot hold.
-  detail::require_film_memory(grid, options);
+  detail::require_film_memory(grid, options, op.local_size());
   ElasticFilm record;
   // Up to kMaxColdRestartNodes a failed coarse film is dropped for the cold
   // start; above, the cold start cannot be expected to converge, and a

@@ -11,6 +11,7 @@
 #include <span>
 
 #include "film_krylov_solver.hpp"
+#include "film_slab.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/lubrication/elastic_film.hpp"
 #include "halfspace/operators/coarsened_influence_operator.hpp"
@@ -24,7 +25,8 @@ inline constexpr std::size_t kSequencingMinCells = 8;
 
 // The film `solve(coarse_op, coarse_gap, coarse_options)` gives on the grid
 // of twice op's spacing: its operator R K P seen through op, its gap the
-// block average of `gap`, its tolerances at least kSequencingCoarseTolerance.
+// block average of `gap`, its tolerances at least kSequencingCoarseTolerance
+// (on a distributed op, the coarse film solved whole on every process).
 // Its work is added to `record` (and its message, if it failed). Nothing if
 // op's grid has no coarser grid. Shared by the EHL and the mixed film.
 template <class Film, class Options, class Solve>
@@ -33,9 +35,13 @@ std::optional<Film> solve_on_coarser_grid(InfluenceOperator& op, const Eigen::Ar
   const Grid& grid = op.grid();
   const std::optional<Grid> coarse = solvers::coarser_grid(grid, kSequencingMinCells);
   if (!coarse) return std::nullopt;
+  // On a distributed operator `gap` is this process's rows; the coarse
+  // operator and gap are then whole on every process.
   CoarsenedInfluenceOperator coarse_op(op, *coarse);
   Eigen::ArrayXd coarse_gap(static_cast<Eigen::Index>(coarse->size()));
-  solvers::restrict_by_average(grid, {gap.data(), grid.size()}, {coarse_gap.data(), coarse->size()});
+  const auto own = static_cast<std::size_t>(gap.size());
+  solvers::restrict_rows_by_average(grid, {gap.data(), own}, linalg::first_row_held(op.communicator(), own / grid.nx()),
+                                    {coarse_gap.data(), coarse->size()}, op.communicator());
   Options coarse_options = options;
   coarse_options.tolerance = std::max(options.tolerance, kSequencingCoarseTolerance);
   coarse_options.load_tolerance = std::max(options.load_tolerance, kSequencingCoarseTolerance);
@@ -57,7 +63,15 @@ ElasticFilm solve_film_newton(InfluenceOperator& op, const Eigen::ArrayXd& gap, 
 FilmKrylovSettings film_krylov_settings(const ElasticFilmOptions& options);
 
 // Throws InputError naming the grid if the GMRES path's memory estimate
-// (film_krylov_memory_estimate) exceeds the memory available.
-void require_film_memory(const Grid& grid, const ElasticFilmOptions& options);
+// (film_krylov_memory_estimate) for this process's `nodes` exceeds the
+// memory available.
+void require_film_memory(const Grid& grid, const ElasticFilmOptions& options, std::size_t nodes);
+
+// The largest |mass balance| over this process's unknown nodes of `slab`
+// (fields on its stencil, halo current), relative to the largest Couette
+// outflow, reduced over the processes: elastic_film_residual's check.
+double film_flux_residual(const FilmSlab& slab, const ReynoldsStencil& topology, const FlowConditions& conditions,
+                          const LubricantLaws& laws, const Eigen::ArrayXd& film, const Eigen::ArrayXd& pressure,
+                          const Eigen::ArrayXd& fluid_fraction, CouetteScheme scheme);
 
 }  // namespace halfspace::lubrication::detail

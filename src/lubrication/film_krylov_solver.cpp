@@ -65,28 +65,52 @@ double film_krylov_memory_estimate(std::size_t nodes, const FilmKrylovSettings& 
 }
 
 FilmKrylovSolver::FilmKrylovSolver(InfluenceOperator& op, const ReynoldsStencil& topology,
-                                   const FilmKrylovSettings& settings)
-    : op_(op), topology_(topology), settings_(settings), n_(op.grid().size()), local_(op, settings.neighbourhood) {
+                                   const FilmKrylovSettings& settings, const FilmSlab& slab)
+    : op_(op),
+      topology_(topology),
+      settings_(settings),
+      slab_(slab),
+      n_(slab.own_nodes()),
+      first_(slab.own_first()),
+      local_(op, settings.neighbourhood, slab.first_row()) {
   const auto ni = static_cast<Eigen::Index>(n_);
+  const auto stencil = static_cast<Eigen::Index>(slab.stencil_nodes());
   const int m = settings_.restart;
-  dp_ds_.resize(ni);
-  dtheta_ds_.resize(ni);
+  dp_ds_.resize(stencil);
+  dtheta_ds_.resize(stencil);
   product_in_.resize(ni);
   product_out_.resize(ni);
+  if (slab.distributed()) {
+    v_stencil_.setZero(stencil);
+    product_stencil_.setZero(stencil);
+  }
   const int line_axis = topology.couette_y() > topology.couette_x() ? 1 : 0;
-  preconditioner_ = make_film_preconditioner(settings_.preconditioner, op_.grid(), line_axis);
+  preconditioner_ = make_film_preconditioner(settings_.preconditioner, slab.own_grid(), line_axis);
   krylov_.setup(ni + 1, ni, m,
                 [this](const Eigen::VectorXd& in, Eigen::VectorXd& out) { preconditioner_->apply(in, out); });
+  krylov_.distribute(slab.krylov_distribution());
 }
 
 void FilmKrylovSolver::apply_jacobian(const Eigen::VectorXd& v, Eigen::VectorXd& out) {
   const auto ni = static_cast<Eigen::Index>(n_);
-  product_in_ = dp_ds_.cwiseProduct(v.head(ni));
+  const auto first = static_cast<Eigen::Index>(first_);
+  product_in_ = dp_ds_.segment(first, ni).cwiseProduct(v.head(ni));
   op_.apply(std::span<const double>(product_in_.data(), n_), std::span<double>(product_out_.data(), n_));
+  // The rows reach the halo's nodes: v and K dp/ds v there from their owners.
+  const double* values = v.data();
+  const double* deformation = product_out_.data();
+  if (slab_.distributed()) {
+    v_stencil_.segment(first, ni) = v.head(ni);
+    product_stencil_.segment(first, ni) = product_out_;
+    slab_.exchange(v_stencil_.data());
+    slab_.exchange(product_stencil_.data());
+    values = v_stencil_.data();
+    deformation = product_stencil_.data();
+  }
   const double by_offset = v[ni];
   linalg::for_each_index(n_, [&](std::size_t k) {
     const auto kk = static_cast<Eigen::Index>(k);
-    if (topology_.fixed(k)) {
+    if (topology_.fixed(first_ + k)) {
       out[kk] = v[kk];
       return;
     }
@@ -94,42 +118,54 @@ void FilmKrylovSolver::apply_jacobian(const Eigen::VectorXd& v, Eigen::VectorXd&
     for (std::size_t t = rows_->start[k]; t < rows_->start[k + 1]; ++t) {
       const LocalTerm& term = rows_->terms[t];
       const auto j = static_cast<Eigen::Index>(term.node);
-      sum += (term.by_pressure * dp_ds_[j] + term.by_fraction * dtheta_ds_[j]) * v[j] +
-             term.by_film * (product_out_[j] + by_offset);
+      sum += (term.by_pressure * dp_ds_[j] + term.by_fraction * dtheta_ds_[j]) * values[j] +
+             term.by_film * (deformation[j] + by_offset);
     }
     out[kk] = sum / mass_scale_;
   });
-  out[ni] = area_over_load_ * dp_ds_.dot(v.head(ni));
+  out[ni] = area_over_load_ * slab_.sum(dp_ds_.segment(first, ni).dot(v.head(ni)));
 }
 
 bool FilmKrylovSolver::factorise(std::string& message) {
   // Rows in compressed form, each row's entries gathered, sorted and
   // summed. Every entry of the pattern is kept, zero or not, so that the
   // pattern is the same at every Newton step (the LU analyses it once).
+  // Columns are this process's nodes; the couplings to other processes'
+  // nodes are left out (GMRES has them through the Jacobian).
+  const std::size_t nx = slab_.whole_grid().nx();
+  const std::size_t own_begin = slab_.first_row() * nx;
+  const auto own_column = [&](std::size_t stencil_node) {
+    return stencil_node >= first_ && stencil_node < first_ + n_ ? static_cast<int>(stencil_node - first_) : -1;
+  };
   matrix_.clear();
   for (std::size_t k = 0; k < n_; ++k) {
     const auto kk = static_cast<Eigen::Index>(k);
     krylov_.border_column[kk] = 0.0;
     row_scratch_.clear();
-    if (topology_.fixed(k)) {
+    if (topology_.fixed(first_ + k)) {
       row_scratch_.emplace_back(static_cast<int>(k), 1.0);
     } else {
       for (std::size_t t = rows_->start[k]; t < rows_->start[k + 1]; ++t) {
         const LocalTerm& term = rows_->terms[t];
         const auto j = static_cast<Eigen::Index>(term.node);
-        row_scratch_.emplace_back(static_cast<int>(j),
-                                  (term.by_pressure * dp_ds_[j] + term.by_fraction * dtheta_ds_[j]) / mass_scale_);
+        const int column = own_column(term.node);
+        if (column >= 0) {
+          row_scratch_.emplace_back(column,
+                                    (term.by_pressure * dp_ds_[j] + term.by_fraction * dtheta_ds_[j]) / mass_scale_);
+        }
         krylov_.border_column[kk] += term.by_film / mass_scale_;
-        local_.for_each(term.node, [&](std::size_t m, double k_value) {
-          row_scratch_.emplace_back(static_cast<int>(m),
-                                    term.by_film / mass_scale_ * k_value * dp_ds_[static_cast<Eigen::Index>(m)]);
+        local_.for_each(slab_.whole_node(term.node), [&](std::size_t m, double k_value) {
+          if (m < own_begin || m >= own_begin + n_) return;
+          const std::size_t own = m - own_begin;
+          row_scratch_.emplace_back(static_cast<int>(own), term.by_film / mass_scale_ * k_value *
+                                                               dp_ds_[static_cast<Eigen::Index>(first_ + own)]);
         });
       }
     }
     matrix_.append_row(row_scratch_);
   }
   if (!preconditioner_->factorise(matrix_, message)) return false;
-  krylov_.load_row = area_over_load_ * dp_ds_;
+  krylov_.load_row = area_over_load_ * dp_ds_.segment(static_cast<Eigen::Index>(first_), static_cast<Eigen::Index>(n_));
   return krylov_.factorise_border("the EHL preconditioner is singular: no node carries pressure to balance the load",
                                   message);
 }
@@ -149,14 +185,19 @@ KrylovOutcome FilmKrylovSolver::solve(const LocalRows& rows, const std::vector<c
   mass_scale_ = mass_scale;
   area_over_load_ = area_over_load;
   for (std::size_t j = 0; j < n_; ++j) {
-    const auto jj = static_cast<Eigen::Index>(j);
-    const bool fixed = topology_.fixed(j);
+    const auto jj = static_cast<Eigen::Index>(first_ + j);
+    const bool fixed = topology_.fixed(first_ + j);
     dp_ds_[jj] = !fixed && branch_full[j] != 0 ? pressure_scale : 0.0;
     dtheta_ds_[jj] = !fixed && branch_full[j] == 0 ? 1.0 : 0.0;
   }
+  slab_.exchange(dp_ds_.data());
+  slab_.exchange(dtheta_ds_.data());
   // The preconditioner of an earlier step serves while the branches are
   // the same (LaggedPreconditioner); GMRES from 0, on the retry too.
-  const bool same_branches = factorised_ && (dp_ds_.array() == krylov_.load_row.array() / area_over_load_).all();
+  const bool same_branches = slab_.all(
+      factorised_ && (dp_ds_.segment(static_cast<Eigen::Index>(first_), static_cast<Eigen::Index>(n_)).array() ==
+                      krylov_.load_row.array() / area_over_load_)
+                         .all());
   const KrylovNewtonStep::Rule rule{
       .tolerance = tolerance,
       .refactorise = !same_branches,

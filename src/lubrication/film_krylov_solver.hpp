@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "film_preconditioner.hpp"
+#include "film_slab.hpp"
 #include "halfspace/lubrication/reynolds_stencil.hpp"
 #include "halfspace/operators/influence_operator.hpp"
 #include "local_influence.hpp"
@@ -37,8 +38,9 @@ struct FilmKrylovSettings {
   void validate() const;
 };
 
-// The local derivatives of the Newton rows, one row per node in CSR form
-// (the terms of detail::linearise), filled by the Newton's linearisation.
+// The local derivatives of the Newton rows, one row per node of this
+// process in CSR form (the terms of detail::linearise, their nodes the
+// stencil's: film_slab.hpp), filled by the Newton's linearisation.
 struct LocalRows {
   std::vector<std::size_t> start;  // n + 1 offsets into terms
   std::vector<LocalTerm> terms;
@@ -50,11 +52,16 @@ double film_krylov_memory_estimate(std::size_t nodes, const FilmKrylovSettings& 
 
 class FilmKrylovSolver {
  public:
-  // Reads the translation-invariant K around a node off one product of `op`.
-  FilmKrylovSolver(InfluenceOperator& op, const ReynoldsStencil& topology, const FilmKrylovSettings& settings);
+  // Reads the translation-invariant K around a node off one product of
+  // `op`. `topology` is the stencil of `slab` (this process's rows and
+  // their halo); on several processes the preconditioner is each
+  // process's own rows' block (block Jacobi: the couplings across slabs
+  // are left to GMRES). Collective on several processes, as solve is.
+  FilmKrylovSolver(InfluenceOperator& op, const ReynoldsStencil& topology, const FilmKrylovSettings& settings,
+                   const FilmSlab& slab);
 
   // Solves J step = -residual for the Newton system of the rows `rows`
-  // (mass rows over `mass_scale`), the nodes' branches `branch_full`, the
+  // (mass rows over `mass_scale`), the own nodes' branches `branch_full`, the
   // pressure scale dp/ds and the load row's `area / load`, to the relative
   // residual max(settings.tolerance, forcing) (an inexact Newton step).
   // Factorises the preconditioner first; its failure and GMRES's are
@@ -70,12 +77,16 @@ class FilmKrylovSolver {
   InfluenceOperator& op_;
   const ReynoldsStencil& topology_;
   FilmKrylovSettings settings_;
-  std::size_t n_;
+  const FilmSlab& slab_;
+  std::size_t n_;         // this process's nodes (the unknowns but h0)
+  std::size_t first_;     // the stencil node of the first of them
   LocalInfluence local_;  // K within settings.neighbourhood cells, for the preconditioner
   // The current linear system.
   const LocalRows* rows_ = nullptr;
   double mass_scale_ = 1.0, area_over_load_ = 1.0;
-  Eigen::VectorXd dp_ds_, dtheta_ds_, product_in_, product_out_;
+  // dp/ds and dtheta/ds on the stencil; the product's own rows; on several
+  // processes v and K dp/ds v on the stencil too.
+  Eigen::VectorXd dp_ds_, dtheta_ds_, product_in_, product_out_, v_stencil_, product_stencil_;
   // The preconditioner: B (the n x n sparse part) bordered by the h0
   // column and the load row, solved through M ~ B^-1 and M c.
   CsrMatrix matrix_;

@@ -5,8 +5,10 @@
 // never formed. Private to the library.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdlib>
+#include <span>
 #include <vector>
 
 #include "halfspace/grid.hpp"
@@ -16,13 +18,35 @@ namespace halfspace::lubrication::detail {
 
 class LocalInfluence {
  public:
-  LocalInfluence(InfluenceOperator& op, int radius) : grid_(op.grid()), r_(radius) {
+  // `first_row`: the first of the operator's rows this process holds (0 on
+  // one process); on several, every process takes the rows of the product
+  // it needs from the others. Collective then.
+  LocalInfluence(InfluenceOperator& op, int radius, std::size_t first_row = 0) : grid_(op.grid()), r_(radius) {
     const std::size_t n = grid_.size();
-    std::vector<double> unit(n, 0.0), column(n, 0.0);
-    unit[0] = 1.0;
+    const std::size_t local = op.local_size();
+    std::vector<double> unit(local, 0.0), column(local, 0.0);
+    if (first_row == 0 && local > 0) unit[0] = 1.0;
     op.apply(unit, column);
     const auto nx = static_cast<long>(grid_.nx());
     const auto ny = static_cast<long>(grid_.ny());
+    // The product's rows within r of row 0 (both sides on a periodic grid).
+    std::vector<double> near;
+    const auto reach = static_cast<std::size_t>(std::min<long>(r_ + 1, ny));
+    if (local != n) {
+      const std::size_t width = grid_.nx() * sizeof(double);
+      near.assign(2 * reach * grid_.nx(), 0.0);
+      const auto mine = std::as_bytes(std::span<const double>(column));
+      op.communicator().fetch_rows(mine, first_row, 0,
+                                   std::as_writable_bytes(std::span(near).first(reach * grid_.nx())), width);
+      op.communicator().fetch_rows(mine, first_row, static_cast<std::size_t>(ny) - reach,
+                                   std::as_writable_bytes(std::span(near).last(reach * grid_.nx())), width);
+    }
+    const auto value = [&](long cx, long cy) {
+      if (local == n) return column[static_cast<std::size_t>(cy * nx + cx)];
+      const long row =
+          cy < static_cast<long>(reach) ? cy : static_cast<long>(reach) + cy - (ny - static_cast<long>(reach));
+      return near[static_cast<std::size_t>(row * nx + cx)];
+    };
     k_.assign(static_cast<std::size_t>((2 * r_ + 1) * (2 * r_ + 1)), 0.0);
     for (long oy = -r_; oy <= r_; ++oy) {
       for (long ox = -r_; ox <= r_; ++ox) {
@@ -35,7 +59,7 @@ class LocalInfluence {
           cy = std::abs(oy);
           if (cx >= nx || cy >= ny) continue;
         }
-        k_[offset(ox, oy)] = column[static_cast<std::size_t>(cy * nx + cx)];
+        k_[offset(ox, oy)] = value(cx, cy);
       }
     }
   }

@@ -25,16 +25,35 @@ void RestartedGmres::resize(Eigen::Index size, int restart) {
   preconditioned_.resize(size);
 }
 
+void RestartedGmres::distribute(KrylovDistribution distribution, Eigen::Index replicated) {
+  distribution_ = std::move(distribution);
+  replicated_ = replicated;
+}
+
+double RestartedGmres::dot(Eigen::Ref<const Eigen::VectorXd> a, Eigen::Ref<const Eigen::VectorXd> b) const {
+  if (!distribution_.spread()) return a.dot(b);
+  const Eigen::Index own = a.size() - replicated_;
+  return distribution_.sum(a.head(own).dot(b.head(own))) + a.tail(replicated_).dot(b.tail(replicated_));
+}
+
+double RestartedGmres::norm(Eigen::Ref<const Eigen::VectorXd> v) const {
+  return distribution_.spread() ? std::sqrt(dot(v, v)) : v.norm();
+}
+
+bool RestartedGmres::all_finite(const Eigen::VectorXd& v) const {
+  return distribution_.spread() ? distribution_.all(v.allFinite()) : v.allFinite();
+}
+
 int RestartedGmres::solve(const Apply& apply, const Apply& precondition, const Eigen::VectorXd& residual,
                           double tolerance, int max_iterations, Eigen::VectorXd& x, bool warm) {
   int iterations = 0;
-  const double b_norm = residual.norm();
-  if (!warm || b_norm == 0.0 || x.size() != residual.size() || !x.allFinite()) x.setZero(residual.size());
+  const double b_norm = norm(residual);
+  if (!warm || b_norm == 0.0 || x.size() != residual.size() || !all_finite(x)) x.setZero(residual.size());
   if (b_norm == 0.0) return 0;
   while (iterations < max_iterations) {
     apply(x, work_);
     work_ = -residual - work_;
-    const double beta = work_.norm();
+    const double beta = norm(work_);
     if (beta <= tolerance * b_norm) break;
     basis_.col(0) = work_ / beta;
     g_.setZero();
@@ -45,12 +64,12 @@ int RestartedGmres::solve(const Apply& apply, const Apply& precondition, const E
       precondition(work_, preconditioned_);
       apply(preconditioned_, work_);
       for (int i = 0; i <= j; ++i) {
-        hessenberg_(i, j) = basis_.col(i).dot(work_);
+        hessenberg_(i, j) = dot(basis_.col(i), work_);
         work_ -= hessenberg_(i, j) * basis_.col(i);
       }
-      const double norm = work_.norm();
-      hessenberg_(j + 1, j) = norm;
-      if (norm > 0.0) basis_.col(j + 1) = work_ / norm;
+      const double length = norm(work_);
+      hessenberg_(j + 1, j) = length;
+      if (length > 0.0) basis_.col(j + 1) = work_ / length;
       for (int i = 0; i < j; ++i) {
         const double upper = hessenberg_(i, j), lower = hessenberg_(i + 1, j);
         hessenberg_(i, j) = givens_c_[i] * upper + givens_s_[i] * lower;
@@ -65,14 +84,14 @@ int RestartedGmres::solve(const Apply& apply, const Apply& precondition, const E
       g_[j] *= givens_c_[j];
       ++iterations;
       size = j + 1;
-      if (std::abs(g_[j + 1]) <= tolerance * b_norm || norm == 0.0) break;
+      if (std::abs(g_[j + 1]) <= tolerance * b_norm || length == 0.0) break;
     }
     y_.head(size) = g_.head(size);
     hessenberg_.topLeftCorner(size, size).triangularView<Eigen::Upper>().solveInPlace(y_.head(size));
     work_.noalias() = basis_.leftCols(size) * y_.head(size);
     precondition(work_, preconditioned_);
     x += preconditioned_;
-    if (!x.allFinite()) break;
+    if (!all_finite(x)) break;
   }
   return iterations;
 }
@@ -85,9 +104,14 @@ void KrylovNewtonStep::setup(Eigen::Index size, Eigen::Index sparse_rows, int re
   work_.resize(size);
 }
 
+void KrylovNewtonStep::distribute(KrylovDistribution distribution) {
+  distribution_ = distribution;
+  gmres_.distribute(std::move(distribution), bordered_ ? 1 : 0);
+}
+
 bool KrylovNewtonStep::factorise_border(const char* singular, std::string& message) {
   inverse_(border_column, border_solved_);
-  border_pivot_ = load_row.dot(border_solved_);
+  border_pivot_ = sum(load_row.dot(border_solved_));
   if (std::isfinite(border_pivot_) && border_pivot_ != 0.0) return true;
   message = singular;
   return false;
@@ -98,7 +122,7 @@ void KrylovNewtonStep::precondition(const Eigen::VectorXd& v, Eigen::VectorXd& o
   const Eigen::Index n = head_in_.size();
   head_in_ = v.head(n);
   inverse_(head_in_, head_out_);
-  const double z = (load_row.dot(head_out_) - v[n]) / border_pivot_;
+  const double z = (sum(load_row.dot(head_out_)) - v[n]) / border_pivot_;
   out.head(n) = head_out_ - z * border_solved_;
   out[n] = z;
 }
@@ -114,7 +138,7 @@ KrylovOutcome KrylovNewtonStep::solve(const Apply& jacobian, const std::function
         const bool warm = rule.warm || (retry && rule.retry_warm);
         const int iterations =
             gmres_.solve(jacobian, preconditioner, residual, rule.tolerance, iterations_allowed, step, warm);
-        return std::pair{iterations, step.allFinite()};
+        return std::pair{iterations, gmres_.all_finite(step)};
       });
   outcome.iterations = run.iterations;
   if (!run.factorised) {
@@ -124,9 +148,9 @@ KrylovOutcome KrylovNewtonStep::solve(const Apply& jacobian, const std::function
   // The residual measured with the operator, not GMRES's estimate.
   jacobian(step, work_);
   work_ += residual;
-  const double b_norm = residual.norm();
-  outcome.relative_residual = b_norm > 0.0 ? work_.norm() / b_norm : 0.0;
-  outcome.converged = step.allFinite() && outcome.relative_residual <= rule.allowance * rule.tolerance;
+  const double b_norm = gmres_.norm(residual);
+  outcome.relative_residual = b_norm > 0.0 ? gmres_.norm(work_) / b_norm : 0.0;
+  outcome.converged = gmres_.all_finite(step) && outcome.relative_residual <= rule.allowance * rule.tolerance;
   if (!outcome.converged) {
     outcome.message =
         fmt::format(fmt::runtime(rule.failure), outcome.relative_residual, outcome.iterations, rule.tolerance);

@@ -20,6 +20,18 @@ struct KrylovOutcome {
   std::string message;             // empty when converged
 };
 
+// How a solve's vectors are spread over processes (film_slab.hpp): each
+// holds its own entries of B's rows, followed by the `replicated` entries
+// every process holds alike (the border's h0), counted once; `sum` adds a
+// value over the processes and `all` agrees on a condition. Unset (one
+// process): Eigen's products as they are.
+struct KrylovDistribution {
+  std::function<double(double)> sum;
+  std::function<bool(bool)> all;
+
+  bool spread() const { return static_cast<bool>(sum); }
+};
+
 class RestartedGmres {
  public:
   // out = A v, or out = M^-1 v (out never aliases v).
@@ -40,7 +52,18 @@ class RestartedGmres {
   int solve(const Apply& apply, const Apply& precondition, const Eigen::VectorXd& residual, double tolerance,
             int max_iterations, Eigen::VectorXd& x, bool warm = false);
 
+  // Vectors spread over processes, the last `replicated` entries on every
+  // one (set before solve; the serial products otherwise).
+  void distribute(KrylovDistribution distribution, Eigen::Index replicated);
+  // The inner product, norm and finiteness of the solve's vectors as the
+  // distribution has them.
+  double dot(Eigen::Ref<const Eigen::VectorXd> a, Eigen::Ref<const Eigen::VectorXd> b) const;
+  double norm(Eigen::Ref<const Eigen::VectorXd> v) const;
+  bool all_finite(const Eigen::VectorXd& v) const;
+
  private:
+  KrylovDistribution distribution_;
+  Eigen::Index replicated_ = 0;
   int restart_ = 0;
   Eigen::MatrixXd basis_, hessenberg_;
   Eigen::VectorXd givens_c_, givens_s_, g_, y_, work_, preconditioned_;
@@ -125,6 +148,10 @@ class KrylovNewtonStep {
   // l^T M c is 0 or not finite.
   bool factorise_border(const char* singular, std::string& message);
 
+  // The solve's vectors spread over processes, the border (if any) on every
+  // one (RestartedGmres::distribute).
+  void distribute(KrylovDistribution distribution);
+
   // Solves J step = -residual within `max_iterations` products per attempt;
   // `factorise(message)` makes M (and the border). Returns the
   // factorisation's failure (relative residual infinite) or GMRES's.
@@ -134,7 +161,11 @@ class KrylovNewtonStep {
  private:
   void precondition(const Eigen::VectorXd& v, Eigen::VectorXd& out);
 
+  // Sums B's rows' inner products over the processes.
+  double sum(double local) const { return distribution_.spread() ? distribution_.sum(local) : local; }
+
   RestartedGmres gmres_;
+  KrylovDistribution distribution_;
   LaggedPreconditioner lagged_;
   Apply inverse_;
   bool bordered_ = false;

@@ -10,8 +10,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
+#include "halfspace/linalg/communicator.hpp"
 #include "halfspace/linalg/parallel.hpp"
 #include "halfspace/lubrication/lubricant.hpp"
 #include "halfspace/lubrication/reynolds_stencil.hpp"
@@ -34,25 +36,37 @@ inline constexpr int kBranchPasses = 4;
 // Qi & Sun 1993). Returns false when the step is not finite (J singular).
 // The same with any linear solve: `solve()` fills `step` for the current
 // branches and returns false when it cannot (reported by the caller).
-template <class Solve>
-bool branch_consistent_step_with(Solve&& solve, const ReynoldsStencil& topology, const Eigen::ArrayXd& s,
-                                 const Eigen::VectorXd& step, std::vector<char>& branch_full,
-                                 double switch_band = kSwitchBand) {
+// On several processes (film_slab.hpp) `s`, `step` and `branch_full` are
+// this process's nodes, the first of them the stencil's node `first`, and
+// `any` agrees on whether a branch flipped anywhere (the next pass is
+// collective).
+template <class Solve, class Any>
+bool branch_consistent_step_on(Solve&& solve, const ReynoldsStencil& topology, std::size_t first,
+                               const Eigen::ArrayXd& s, const Eigen::VectorXd& step, std::vector<char>& branch_full,
+                               double switch_band, Any&& any) {
   for (int pass = 0; pass < kBranchPasses; ++pass) {
     if (!solve()) return false;
     bool flipped = false;
     for (std::size_t j = 0; j < branch_full.size(); ++j) {
       const auto jj = static_cast<Eigen::Index>(j);
-      if (topology.fixed(j) || std::abs(s[jj]) > switch_band) continue;
+      if (topology.fixed(first + j) || std::abs(s[jj]) > switch_band) continue;
       const char wanted = step[jj] >= 0.0 ? 1 : 0;
       if (wanted != branch_full[j]) {
         branch_full[j] = wanted;
         flipped = true;
       }
     }
-    if (!flipped) break;
+    if (!any(flipped)) break;
   }
   return true;
+}
+
+template <class Solve>
+bool branch_consistent_step_with(Solve&& solve, const ReynoldsStencil& topology, const Eigen::ArrayXd& s,
+                                 const Eigen::VectorXd& step, std::vector<char>& branch_full,
+                                 double switch_band = kSwitchBand) {
+  return branch_consistent_step_on(std::forward<Solve>(solve), topology, 0, s, step, branch_full, switch_band,
+                                   [](bool flipped) { return flipped; });
 }
 
 template <class Linearise>
@@ -72,18 +86,22 @@ bool branch_consistent_step(Linearise&& linearise, const ReynoldsStencil& topolo
 // The p-theta switch on the film's nodes (s clipped at -1, a fully
 // cavitated node): p = P max(s, 0), theta = 1 + min(s, 0); on nodes of
 // imposed pressure that pressure and the supply's fluid fraction.
+// `s` may be a slab's own nodes, the first of them the stencil node `first`
+// of `pressure` and `theta` (film_slab.hpp).
 inline void set_pressure_and_fraction(const ReynoldsStencil& topology, double pressure_scale, double supply,
-                                      Eigen::ArrayXd& s, Eigen::ArrayXd& pressure, Eigen::ArrayXd& theta) {
+                                      Eigen::ArrayXd& s, Eigen::ArrayXd& pressure, Eigen::ArrayXd& theta,
+                                      std::size_t first = 0) {
   for (Eigen::Index k = 0; k < s.size(); ++k) {
-    const auto node = static_cast<std::size_t>(k);
+    const auto node = first + static_cast<std::size_t>(k);
+    const auto at = static_cast<Eigen::Index>(node);
     if (topology.fixed(node)) {
-      pressure[k] = topology.fixed_pressure(node);
-      theta[k] = supply;
+      pressure[at] = topology.fixed_pressure(node);
+      theta[at] = supply;
       continue;
     }
     s[k] = std::max(s[k], -1.0);
-    pressure[k] = pressure_scale * std::max(s[k], 0.0);
-    theta[k] = 1.0 + std::min(s[k], 0.0);
+    pressure[at] = pressure_scale * std::max(s[k], 0.0);
+    theta[at] = 1.0 + std::min(s[k], 0.0);
   }
 }
 
@@ -195,6 +213,29 @@ double largest_couette_outflow(const ReynoldsStencil& topology, const Density& r
   return couette;
 }
 
+// The nodes of a stencil a Newton residual's rows are this process's
+// (film_slab.hpp): `count` from `first`, the extremes reduced by `max`
+// over the processes. The default: every node, one process.
+struct OwnNodes {
+  std::size_t first = 0;
+  std::size_t count = static_cast<std::size_t>(-1);
+  const linalg::Communicator* comm = nullptr;
+
+  std::size_t end(std::size_t nodes) const { return count == static_cast<std::size_t>(-1) ? nodes : first + count; }
+  double max(double local) const { return comm != nullptr ? comm->max(local) : local; }
+};
+
+// The same over this process's nodes, reduced.
+inline double largest_couette_outflow(const ReynoldsStencil& topology, const Eigen::ArrayXd& h, const OwnNodes& own) {
+  double couette = 0.0;
+  for (std::size_t k = own.first; k < own.end(static_cast<std::size_t>(h.size())); ++k) {
+    if (!topology.fixed(k)) {
+      couette = std::max(couette, (topology.couette_x() + topology.couette_y()) * h[static_cast<Eigen::Index>(k)]);
+    }
+  }
+  return own.max(couette);
+}
+
 // A Newton residual's mass rows at (p, theta, h), `c` updated there: each
 // free node's balance over mass_scale into `out` (0 where p is imposed);
 // its local terms appended to `rows` (offsets and terms, the GMRES path's;
@@ -204,25 +245,32 @@ double largest_couette_outflow(const ReynoldsStencil& topology, const Density& r
 template <class Rows, class DenseRow>
 double mass_rows(const ReynoldsStencil& topology, const NodeCoefficients& c, const Eigen::ArrayXd& p,
                  const Eigen::ArrayXd& theta, const Eigen::ArrayXd& h, bool second_order, double mass_scale,
-                 std::vector<LocalTerm>& terms, Eigen::VectorXd& out, Rows* rows, DenseRow&& dense_row) {
-  const auto n = static_cast<std::size_t>(h.size());
+                 std::vector<LocalTerm>& terms, Eigen::VectorXd& out, Rows* rows, DenseRow&& dense_row,
+                 const OwnNodes& own = {}) {
+  // With a slab (`own`), rows, out and dense_row count from its first node.
+  const std::size_t first = own.first;
+  const std::size_t end = own.end(static_cast<std::size_t>(h.size()));
   if (rows != nullptr) rows->terms.clear();
   double largest = 0.0;
-  for (std::size_t k = 0; k < n; ++k) {
-    const auto kk = static_cast<Eigen::Index>(k);
-    if (rows != nullptr) rows->start[k] = rows->terms.size();
+  double couette = 0.0;
+  for (std::size_t k = first; k < end; ++k) {
+    const auto kk = static_cast<Eigen::Index>(k - first);
+    if (rows != nullptr) rows->start[k - first] = rows->terms.size();
     if (topology.fixed(k)) {
       out[kk] = 0.0;
       continue;
     }
     const double balance = linearise(topology, k, c, p, theta, h, second_order, terms);
     largest = std::max(largest, std::abs(balance));
+    const auto at = static_cast<Eigen::Index>(k);
+    couette = std::max(couette, (topology.couette_x() + topology.couette_y()) * c.rho[at] * h[at]);
     out[kk] = balance / mass_scale;
     if (rows != nullptr) rows->terms.insert(rows->terms.end(), terms.begin(), terms.end());
-    dense_row(k, terms);
+    dense_row(k - first, terms);
   }
-  if (rows != nullptr) rows->start[n] = rows->terms.size();
-  const double couette = largest_couette_outflow(topology, c.rho, h);
+  if (rows != nullptr) rows->start[end - first] = rows->terms.size();
+  largest = own.max(largest);
+  couette = own.max(couette);
   return largest / (couette > 0.0 ? couette : 1.0);
 }
 

@@ -6,27 +6,32 @@
 #include <complex>
 #include <vector>
 
-#include "halfspace/error.hpp"
 #include "halfspace/solvers/grid_transfer.hpp"
 
 namespace halfspace::operators {
 
 CoarsenedInfluenceOperator::CoarsenedInfluenceOperator(InfluenceOperator& fine, const Grid& coarse) : coarse_(coarse) {
   const Grid& fine_grid = fine.grid();
-  if (fine.local_size() != fine_grid.size()) {
-    throw InputError("the coarsened influence operator needs a serial fine operator (one process)");
-  }
+  const std::size_t local = fine.local_size();
+  const linalg::Communicator& comm = fine.communicator();
   const std::size_t nx = coarse_.nx();
   const std::size_t rows = coarse_.dimension() == 1 ? 1 : coarse_.ny();
   // R K P's coefficients: the coarse displacement under a unit pressure on
   // coarse cell 0, at every offset (0 .. n-1 per axis; on periodic grids
-  // the wrapped offsets too).
-  std::vector<double> unit(coarse_.size(), 0.0), coefficients(coarse_.size(), 0.0);
-  std::vector<double> fine_pressure(fine_grid.size()), fine_displacement(fine_grid.size());
-  unit[0] = 1.0;
-  solvers::prolong_constant(fine_grid, unit, fine_pressure);
+  // the wrapped offsets too). A distributed fine operator takes the product
+  // on its slabs, and every process gets the coefficients whole.
+  std::vector<double> coefficients(coarse_.size(), 0.0);
+  std::vector<double> fine_pressure(local, 0.0), fine_displacement(local);
+  // P of the unit pressure: 1 on the fine cells of coarse cell 0 (rows 0
+  // and 1 of a plane, columns 0 and 1), on this process's rows.
+  const std::size_t fine_nx = fine_grid.nx();
+  const std::size_t first_row = linalg::first_row_held(comm, local / fine_nx);
+  const std::size_t covered_rows = fine_grid.dimension() == 1 ? 1 : 2;
+  for (std::size_t k = 0; k < local; ++k) {
+    if (first_row + k / fine_nx < covered_rows && k % fine_nx < 2) fine_pressure[k] = 1.0;
+  }
   fine.apply(fine_pressure, fine_displacement);
-  solvers::restrict_by_average(fine_grid, fine_displacement, coefficients);
+  solvers::restrict_rows_by_average(fine_grid, fine_displacement, first_row, coefficients, comm);
   self_influence_ = coefficients[0];
   transforms_ = make_serial_transforms(coarse_, FftPlanning::estimate, {.count = 1});
   // Periodic grids: the coefficients' own spectrum. Free grids: the

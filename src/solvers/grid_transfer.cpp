@@ -75,21 +75,46 @@ Bracket bracket(std::size_t i, std::size_t coarse_count, bool periodic) {
 }  // namespace
 
 void prolong_bilinear(const Grid& fine, std::span<const double> coarse_values, std::span<double> fine_values) {
+  prolong_bilinear_rows(fine, coarse_values, 0, fine_values);
+}
+
+void prolong_bilinear_rows(const Grid& fine, std::span<const double> coarse_values, std::size_t first_row,
+                           std::span<double> fine_rows) {
   const bool line = fine.dimension() == 1;
   const std::size_t nx = fine.nx(), ny = line ? 1 : fine.ny();
   const std::size_t cx = nx / 2, cy = line ? 1 : ny / 2;
-  assert(fine_values.size() == nx * ny && coarse_values.size() == cx * cy);
+  const std::size_t rows = fine_rows.size() / nx;
+  assert(fine_rows.size() == nx * rows && first_row + rows <= ny && coarse_values.size() == cx * cy);
   const bool periodic = fine.periodic();
-  for (std::size_t j = 0; j < ny; ++j) {
+  for (std::size_t r = 0; r < rows; ++r) {
+    const std::size_t j = first_row + r;
     const Bracket y = line ? Bracket{} : bracket(j, cy, periodic);
     for (std::size_t i = 0; i < nx; ++i) {
       const Bracket x = bracket(i, cx, periodic);
       const auto at = [&](std::size_t row, std::size_t column) { return coarse_values[row * cx + column]; };
       const double low = (1.0 - x.weight) * at(y.low, x.low) + x.weight * at(y.low, x.high);
       const double high = (1.0 - x.weight) * at(y.high, x.low) + x.weight * at(y.high, x.high);
-      fine_values[j * nx + i] = (1.0 - y.weight) * low + y.weight * high;
+      fine_rows[r * nx + i] = (1.0 - y.weight) * low + y.weight * high;
     }
   }
+}
+
+void restrict_rows_by_average(const Grid& fine, std::span<const double> fine_rows, std::size_t first_row,
+                              std::span<double> coarse_values, const linalg::Communicator& comm) {
+  if (comm.size() == 1) return restrict_by_average(fine, fine_rows, coarse_values);
+  const std::size_t nx = fine.nx();
+  const std::size_t cx = nx / 2;
+  const std::size_t rows = fine_rows.size() / nx;
+  assert(fine.dimension() == 2 && coarse_values.size() * 4 == fine.size() && first_row + rows <= fine.ny());
+  std::fill(coarse_values.begin(), coarse_values.end(), 0.0);
+  // Each process its rows' halves of the averages; a pair of rows split
+  // between two processes is completed by the sum.
+  for (std::size_t r = 0; r < rows; ++r) {
+    const double* row = fine_rows.data() + r * nx;
+    double* coarse_row = coarse_values.data() + ((first_row + r) / 2) * cx;
+    for (std::size_t i = 0; i < cx; ++i) coarse_row[i] += 0.25 * (row[2 * i] + row[2 * i + 1]);
+  }
+  comm.sum(coarse_values);
 }
 
 }  // namespace halfspace::solvers

@@ -4,9 +4,12 @@
 // process while the distributed one around it reduces over all.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <cstring>
 #include <span>
+#include <vector>
 
 namespace halfspace::linalg {
 
@@ -33,6 +36,29 @@ class Communicator {
   virtual void fetch_rows(std::span<const std::byte> mine, std::size_t mine_first, std::size_t first,
                           std::span<std::byte> wanted, std::size_t unit) const = 0;
 };
+
+// The rows held by the processes before this one, each holding `rows`
+// whole rows of a field in slabs in rank order: this process's first row.
+// Collective.
+inline std::size_t first_row_held(const Communicator& comm, std::size_t rows) {
+  if (comm.size() == 1) return 0;
+  std::vector<std::uint64_t> every(static_cast<std::size_t>(comm.size()), 0);
+  const std::uint64_t mine = rows;
+  comm.concatenate(std::as_bytes(std::span(&mine, 1)), std::as_writable_bytes(std::span(every)), sizeof(mine));
+  std::size_t first = 0;
+  for (int p = 0; p < comm.rank(); ++p) first += every[static_cast<std::size_t>(p)];
+  return first;
+}
+
+// The first process's `values` on every process (each passing as many).
+// Collective.
+inline void broadcast_from_first(const Communicator& comm, std::span<double> values) {
+  if (comm.size() == 1) return;
+  std::vector<double> all(values.size());
+  const std::span<const double> mine = comm.rank() == 0 ? std::span<const double>(values) : std::span<const double>();
+  comm.concatenate(std::as_bytes(mine), std::as_writable_bytes(std::span(all)), sizeof(double));
+  std::copy(all.begin(), all.end(), values.begin());
+}
 
 // One process holding the whole field: every reduction is the identity.
 class SerialCommunicator final : public Communicator {

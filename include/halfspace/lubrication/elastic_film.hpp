@@ -188,6 +188,16 @@ struct ElasticFilm : NewtonFilmResult {
 // dense solve on more than kMaxElasticFilmNodes nodes, and for a GMRES
 // solve whose memory estimate exceeds the memory available; non-convergence
 // (of the Newton iteration or of a step's GMRES) is a status.
+//
+// On an operator spread over processes in slabs of rows (the distributed
+// operators of mpi/; collective then): `gap` and the result's fields are
+// this process's rows, its scalars the whole film's, and `start` a film of
+// the same slabs. The Newton iteration runs on each process's rows and a
+// halo of the rows next to them, with GMRES (the dense solve is refused),
+// its preconditioner each process's block of rows (so the iterates, not
+// the film, differ from one process's); grid sequencing is not made on
+// slabs yet, so the film starts from the dry contact. Each process needs
+// at least two rows with the second-order Couette flux, one without.
 ElasticFilm solve_elastic_film(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
                                const LubricantLaws& laws, const ElasticFilmOptions& options,
                                const ElasticFilm* start = nullptr);

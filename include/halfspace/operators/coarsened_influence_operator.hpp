@@ -26,8 +26,9 @@ namespace halfspace::operators {
 class CoarsenedInfluenceOperator final : public InfluenceOperator {
  public:
   // `coarse` must be solvers::coarser_grid(fine.grid(), ...). `fine` is
-  // used only here (one product). Throws InputError if `fine` is
-  // distributed.
+  // used only here (one product). A distributed `fine` (slabs of rows)
+  // takes that product collectively, and the coarse operator is then the
+  // serial one on every process (the coarse field whole).
   CoarsenedInfluenceOperator(InfluenceOperator& fine, const Grid& coarse);
   ~CoarsenedInfluenceOperator() override;
   CoarsenedInfluenceOperator(const CoarsenedInfluenceOperator&) = delete;

@@ -7,6 +7,7 @@
 #include <span>
 
 #include "halfspace/grid.hpp"
+#include "halfspace/linalg/communicator.hpp"
 
 namespace halfspace::solvers {
 
@@ -27,5 +28,17 @@ void prolong_constant(const Grid& fine, std::span<const double> coarse_values, s
 // 1/4); wrapped around on periodic grids, held constant beyond the outer
 // coarse nodes otherwise.
 void prolong_bilinear(const Grid& fine, std::span<const double> coarse_values, std::span<double> fine_values);
+
+// The same for the fine rows from `first_row` that `fine_rows` holds (a
+// process's slab of a distributed field; the coarse field whole).
+void prolong_bilinear_rows(const Grid& fine, std::span<const double> coarse_values, std::size_t first_row,
+                           std::span<double> fine_rows);
+
+// restrict_by_average of a 2D field of which each process of `comm` holds
+// the rows from `first_row` that `fine_rows` holds: the coarse field whole
+// on every process (a collective sum; on one process restrict_by_average
+// itself).
+void restrict_rows_by_average(const Grid& fine, std::span<const double> fine_rows, std::size_t first_row,
+                              std::span<double> coarse_values, const linalg::Communicator& comm);
 
 }  // namespace halfspace::solvers

@@ -1,0 +1,96 @@
+// A film's slab of rows with its halo (film_slab.hpp).
+#include "film_slab.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <span>
+
+#include "halfspace/error.hpp"
+
+namespace halfspace::lubrication::detail {
+
+FilmSlab::FilmSlab(const Grid& whole, const FlowConditions& conditions, std::size_t own_nodes,
+                   const linalg::Communicator& comm, std::size_t halo)
+    : whole_(whole),
+      comm_(comm),
+      own_nodes_(own_nodes),
+      stencil_grid_(whole),
+      own_grid_(whole),
+      stencil_conditions_(conditions) {
+  if (comm.size() == 1) {
+    own_rows_ = whole.dimension() == 1 ? 1 : whole.ny();
+    return;
+  }
+  // Agreed on every process before anything collective that needs rows.
+  const bool spread_1d = whole.dimension() != 2;
+  if (comm.max(spread_1d ? 1.0 : 0.0) > 0.5) {
+    throw InputError(fmt::format("the film on several processes needs a 2D grid, not {}", whole.shape_string()));
+  }
+  const std::size_t nx = whole.nx();
+  own_rows_ = own_nodes / nx;
+  const double fewest = comm.min(static_cast<double>(own_rows_));
+  if (fewest < static_cast<double>(halo) || fewest < 1.0) {
+    throw InputError(fmt::format(
+        "the {} film on {} processes leaves a process {} rows: each needs at least {} (the Reynolds stencil's "
+        "reach); use fewer processes",
+        whole.shape_string(), comm.size(), fewest, std::max<std::size_t>(halo, 1)));
+  }
+  first_row_ = linalg::first_row_held(comm, own_rows_);
+  const bool periodic = conditions.boundary.y == AxisBoundary::periodic;
+  low_halo_ = first_row_ > 0 || periodic ? halo : 0;
+  high_halo_ = first_row_ + own_rows_ < whole.ny() || periodic ? halo : 0;
+  own_first_ = low_halo_ * nx;
+  stencil_grid_ = Grid::plane(nx, own_rows_ + low_halo_ + high_halo_, whole.dx(), whole.dy(), whole.boundary());
+  own_grid_ = Grid::plane(nx, own_rows_, whole.dx(), whole.dy(), whole.boundary());
+  stencil_conditions_.boundary.y = AxisBoundary::fixed_pressure;
+}
+
+std::size_t FilmSlab::whole_node(std::size_t stencil_node) const {
+  if (!distributed()) return stencil_node;
+  const std::size_t nx = whole_.nx();
+  const std::size_t ny = whole_.ny();
+  const std::size_t row = (first_row_ + ny - low_halo_ + stencil_node / nx) % ny;
+  return row * nx + stencil_node % nx;
+}
+
+void FilmSlab::fetch(const double* field, std::size_t whole_first, std::size_t rows, double* into) const {
+  const std::size_t nx = whole_.nx();
+  const std::span<const double> mine(field + own_first_, own_nodes_);
+  comm_.fetch_rows(std::as_bytes(mine), first_row_, whole_first, std::as_writable_bytes(std::span(into, rows * nx)),
+                   nx * sizeof(double));
+}
+
+void FilmSlab::exchange(double* field) const {
+  if (!distributed()) return;
+  const std::size_t ny = whole_.ny();
+  // Each halo is one range of whole rows (every process holds at least
+  // `halo` rows): below, the rows before this process's (wrapped on a
+  // periodic film); above, those after.
+  fetch(field, (first_row_ + ny - low_halo_) % ny, low_halo_, field);
+  fetch(field, (first_row_ + own_rows_) % ny, high_halo_, field + own_first_ + own_nodes_);
+}
+
+double FilmSlab::sum(double local) const {
+  comm_.sum(std::span(&local, 1));
+  return local;
+}
+
+double FilmSlab::dot(Eigen::Ref<const Eigen::VectorXd> a, Eigen::Ref<const Eigen::VectorXd> b,
+                     Eigen::Index replicated) const {
+  if (!distributed()) return a.dot(b);
+  const Eigen::Index own = a.size() - replicated;
+  return sum(a.head(own).dot(b.head(own))) + a.tail(replicated).dot(b.tail(replicated));
+}
+
+double FilmSlab::norm(Eigen::Ref<const Eigen::VectorXd> v, Eigen::Index replicated) const {
+  if (!distributed()) return v.norm();
+  return std::sqrt(dot(v, v, replicated));
+}
+
+KrylovDistribution FilmSlab::krylov_distribution() const {
+  if (!distributed()) return {};
+  return {.sum = [this](double local) { return sum(local); }, .all = [this](bool local) { return all(local); }};
+}
+
+}  // namespace halfspace::lubrication::detail
