@@ -345,7 +345,8 @@ int run_elastic(const LubricateOptions& o, const HeightMap& map, const Grid& gri
   const Eigen::ArrayXd gap = highest - map.heights;
   const HalfSpace body = coating ? HalfSpace(*coating) : HalfSpace(e_star);
   const std::shared_ptr<operators::SpectralTransforms> transforms = place.transforms(grid);
-  FftInfluenceOperator op = transforms ? FftInfluenceOperator(grid, body, transforms) : FftInfluenceOperator(grid, body);
+  FftInfluenceOperator op =
+      transforms ? FftInfluenceOperator(grid, body, transforms) : FftInfluenceOperator(grid, body);
   const lubrication::ElasticFilm film = lubrication::solve_elastic_film(op, gap, conditions, laws, options);
   const auto stencil = [&](const Eigen::ArrayXd& field) {
     return rows ? rows->stencil_field({field.data(), static_cast<std::size_t>(field.size())}) : field;
@@ -356,22 +357,20 @@ int run_elastic(const LubricateOptions& o, const HeightMap& map, const Grid& gri
 
   double cavitated = static_cast<double>((film.fluid_fraction < 1.0).count());
   if (rows) rows->sum({&cavitated, 1});
-  lubrication::FilmSummary summary = elastic_summary("elastic", film, grid, conditions.viscosity,
-                                                     cavitated / static_cast<double>(grid.size()), 1);
+  lubrication::FilmSummary summary =
+      elastic_summary("elastic", film, grid, conditions.viscosity, cavitated / static_cast<double>(grid.size()), 1);
   // One time in the file: every process writes the same attributes.
   if (rows) summary.solve_seconds = rows->max(summary.solve_seconds);
   add_shear(summary, shear);
-  write_film_file(o, map, grid, place, summary, film.pressure, film.film, film.fluid_fraction,
-                  [&](const io::Hdf5Node& root) {
-                    root.write_dataset_rows("deformation", io::field_shape(grid), place.first_row,
-                                            std::span<const double>(film.deformation.data(),
-                                                                    static_cast<std::size_t>(film.deformation.size())),
-                                            "m");
-                    write_elastic_attributes(root, e_star, laws, conditions.viscosity, options.couette_scheme,
-                                             film.load_error);
-                    if (coating) io::write_coating_attributes(root, *coating);
-                    write_shear(root, io::field_shape(grid), shear, limits, place);
-                  });
+  write_film_file(
+      o, map, grid, place, summary, film.pressure, film.film, film.fluid_fraction, [&](const io::Hdf5Node& root) {
+        root.write_dataset_rows(
+            "deformation", io::field_shape(grid), place.first_row,
+            std::span<const double>(film.deformation.data(), static_cast<std::size_t>(film.deformation.size())), "m");
+        write_elastic_attributes(root, e_star, laws, conditions.viscosity, options.couette_scheme, film.load_error);
+        if (coating) io::write_coating_attributes(root, *coating);
+        write_shear(root, io::field_shape(grid), shear, limits, place);
+      });
   return report(o, map, summary, film.converged(), problem, place.first);
 }
 
@@ -668,8 +667,9 @@ int solve_film(const LubricateOptions& o) {
   // slabs of rows (mpi/slab_film_rows.hpp, lubrication/elastic_film.hpp), a
   // mixed film's Stribeck sweep shares out its speeds, and the first
   // process solves the others.
-  const bool on_rows = (problem.kind == lubrication::FilmKind::rigid || problem.kind == lubrication::FilmKind::elastic) &&
-                       !problem.transient;
+  const bool on_rows =
+      (problem.kind == lubrication::FilmKind::rigid || problem.kind == lubrication::FilmKind::elastic) &&
+      !problem.transient;
   const FilmSpread spread = on_rows ? FilmSpread::row_slabs
                             : problem.kind == lubrication::FilmKind::mixed && problem.speeds
                                 ? FilmSpread::sweep_speeds
