@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <span>
+#include <tuple>
 
 #include "halfspace/error.hpp"
 #include "halfspace/linalg/parallel.hpp"
@@ -85,9 +86,17 @@ FilmKrylovSolver::FilmKrylovSolver(InfluenceOperator& op, const ReynoldsStencil&
     product_stencil_.setZero(stencil);
   }
   const int line_axis = topology.couette_y() > topology.couette_x() ? 1 : 0;
-  preconditioner_ = make_film_preconditioner(settings_.preconditioner, slab.own_grid(), line_axis);
+  Grid block_grid = slab.own_grid();
+  if (slab.distributed()) {
+    std::tie(below_, above_) = slab.rows_around_limits(kSlabOverlapRows);
+    const Grid& whole = slab.whole_grid();
+    block_grid = Grid::plane(whole.nx(), n_ / whole.nx() + below_ + above_, whole.dx(), whole.dy(), whole.boundary());
+    block_in_.setZero(static_cast<Eigen::Index>(block_grid.size()));
+    block_out_.setZero(block_in_.size());
+  }
+  preconditioner_ = make_film_preconditioner(settings_.preconditioner, block_grid, line_axis);
   krylov_.setup(ni + 1, ni, m,
-                [this](const Eigen::VectorXd& in, Eigen::VectorXd& out) { preconditioner_->apply(in, out); });
+                [this](const Eigen::VectorXd& in, Eigen::VectorXd& out) { apply_preconditioner(in, out); });
   krylov_.distribute(slab.krylov_distribution());
 }
 
@@ -126,16 +135,25 @@ void FilmKrylovSolver::apply_jacobian(const Eigen::VectorXd& v, Eigen::VectorXd&
   out[ni] = area_over_load_ * slab_.sum(dp_ds_.segment(first, ni).dot(v.head(ni)));
 }
 
+void FilmKrylovSolver::apply_preconditioner(const Eigen::VectorXd& in, Eigen::VectorXd& out) {
+  if (!slab_.distributed()) return preconditioner_->apply(in, out);
+  // Restricted additive Schwarz: the block's right-hand side with the
+  // neighbours' overlap rows, its approximate inverse, this process's rows.
+  slab_.rows_around(in.data(), below_, above_, 1, block_in_.data());
+  preconditioner_->apply(block_in_, block_out_);
+  out = block_out_.segment(static_cast<Eigen::Index>(below_ * slab_.whole_grid().nx()), static_cast<Eigen::Index>(n_));
+}
+
 bool FilmKrylovSolver::factorise(std::string& message) {
   // Rows in compressed form, each row's entries gathered, sorted and
   // summed. Every entry of the pattern is kept, zero or not, so that the
   // pattern is the same at every Newton step (the LU analyses it once).
-  // Columns are this process's nodes; the couplings to other processes'
-  // nodes are left out (GMRES has them through the Jacobian).
-  const std::size_t nx = slab_.whole_grid().nx();
-  const std::size_t own_begin = slab_.first_row() * nx;
-  const auto own_column = [&](std::size_t stencil_node) {
-    return stencil_node >= first_ && stencil_node < first_ + n_ ? static_cast<int>(stencil_node - first_) : -1;
+  // On several processes the columns are whole-grid nodes (the block's
+  // rows are then gathered: gather_block_rows), and K's neighbourhood is
+  // kept where it lies in the stencil.
+  const bool spread = slab_.distributed();
+  const auto column_of = [&](std::size_t stencil_node) {
+    return static_cast<int>(spread ? slab_.whole_node(stencil_node) : stencil_node);
   };
   matrix_.clear();
   for (std::size_t k = 0; k < n_; ++k) {
@@ -143,31 +161,72 @@ bool FilmKrylovSolver::factorise(std::string& message) {
     krylov_.border_column[kk] = 0.0;
     row_scratch_.clear();
     if (topology_.fixed(first_ + k)) {
-      row_scratch_.emplace_back(static_cast<int>(k), 1.0);
+      row_scratch_.emplace_back(column_of(first_ + k), 1.0);
     } else {
       for (std::size_t t = rows_->start[k]; t < rows_->start[k + 1]; ++t) {
         const LocalTerm& term = rows_->terms[t];
         const auto j = static_cast<Eigen::Index>(term.node);
-        const int column = own_column(term.node);
-        if (column >= 0) {
-          row_scratch_.emplace_back(column,
-                                    (term.by_pressure * dp_ds_[j] + term.by_fraction * dtheta_ds_[j]) / mass_scale_);
-        }
+        row_scratch_.emplace_back(column_of(term.node),
+                                  (term.by_pressure * dp_ds_[j] + term.by_fraction * dtheta_ds_[j]) / mass_scale_);
         krylov_.border_column[kk] += term.by_film / mass_scale_;
         local_.for_each(slab_.whole_node(term.node), [&](std::size_t m, double k_value) {
-          if (m < own_begin || m >= own_begin + n_) return;
-          const std::size_t own = m - own_begin;
-          row_scratch_.emplace_back(static_cast<int>(own), term.by_film / mass_scale_ * k_value *
-                                                               dp_ds_[static_cast<Eigen::Index>(first_ + own)]);
+          const std::size_t at = slab_.stencil_node(m);
+          if (at == FilmSlab::kOutside) return;
+          row_scratch_.emplace_back(static_cast<int>(m),
+                                    term.by_film / mass_scale_ * k_value * dp_ds_[static_cast<Eigen::Index>(at)]);
         });
       }
     }
     matrix_.append_row(row_scratch_);
   }
-  if (!preconditioner_->factorise(matrix_, message)) return false;
+  if (spread) gather_block_rows();
+  const bool factorised = preconditioner_->factorise(spread ? block_ : matrix_, message);
+  if (!slab_.all(factorised)) {
+    if (factorised) message = "the EHL preconditioner could not be factorised on another process";
+    return false;
+  }
   krylov_.load_row = area_over_load_ * dp_ds_.segment(static_cast<Eigen::Index>(first_), static_cast<Eigen::Index>(n_));
   return krylov_.factorise_border("the EHL preconditioner is singular: no node carries pressure to balance the load",
                                   message);
+}
+
+void FilmKrylovSolver::gather_block_rows() {
+  // This process's rows packed to the widest row of any process, then the
+  // overlap's rows fetched from their owners in the same form.
+  const std::size_t nx = slab_.whole_grid().nx();
+  const std::size_t ny = slab_.whole_grid().ny();
+  std::size_t widest = 0;
+  for (std::size_t k = 0; k < n_; ++k) {
+    widest = std::max(widest, static_cast<std::size_t>(matrix_.start[k + 1] - matrix_.start[k]));
+  }
+  const auto width = static_cast<std::size_t>(slab_.max(static_cast<double>(widest)));
+  packed_own_.assign(n_ * 2 * width, -1.0);
+  for (std::size_t k = 0; k < n_; ++k) {
+    for (auto e = static_cast<std::size_t>(matrix_.start[k]); e < static_cast<std::size_t>(matrix_.start[k + 1]); ++e) {
+      const std::size_t slot = k * 2 * width + 2 * (e - static_cast<std::size_t>(matrix_.start[k]));
+      packed_own_[slot] = matrix_.column[e];
+      packed_own_[slot + 1] = matrix_.value[e];
+    }
+  }
+  const std::size_t block_nodes = static_cast<std::size_t>(block_in_.size());
+  packed_block_.resize(block_nodes * 2 * width);
+  slab_.rows_around(packed_own_.data(), below_, above_, 2 * width, packed_block_.data());
+  // The block's rows in its own columns: a whole-grid node's row counted
+  // from the block's first row, if it lies in the block.
+  const std::size_t block_rows = block_nodes / nx;
+  const std::size_t block_first = slab_.whole_row_around(0, below_);
+  block_.clear();
+  for (std::size_t k = 0; k < block_nodes; ++k) {
+    for (std::size_t e = 0; e < width; ++e) {
+      const double column = packed_block_[k * 2 * width + 2 * e];
+      if (column < 0.0) break;
+      const auto node = static_cast<std::size_t>(column);
+      const std::size_t row = (node / nx + ny - block_first) % ny;
+      if (row >= block_rows) continue;
+      row_scratch_.emplace_back(static_cast<int>(row * nx + node % nx), packed_block_[k * 2 * width + 2 * e + 1]);
+    }
+    block_.append_row(row_scratch_);
+  }
 }
 
 KrylovOutcome FilmKrylovSolver::solve(const LocalRows& rows, const std::vector<char>& branch_full,

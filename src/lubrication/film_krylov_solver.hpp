@@ -50,13 +50,19 @@ struct LocalRows {
 // local rows, the preconditioner with a fill allowance, the Newton state).
 double film_krylov_memory_estimate(std::size_t nodes, const FilmKrylovSettings& settings);
 
+// Rows of the neighbours' each side that a process's block of the
+// preconditioner takes in on several processes (film_krylov_solver.cpp).
+inline constexpr std::size_t kSlabOverlapRows = 16;
+
 class FilmKrylovSolver {
  public:
   // Reads the translation-invariant K around a node off one product of
   // `op`. `topology` is the stencil of `slab` (this process's rows and
-  // their halo); on several processes the preconditioner is each
-  // process's own rows' block (block Jacobi: the couplings across slabs
-  // are left to GMRES). Collective on several processes, as solve is.
+  // their halo); on several processes the preconditioner is a restricted
+  // additive Schwarz one (Cai & Sarkis 1999): each process inverts
+  // approximately the block of its rows and kSlabOverlapRows rows of its
+  // neighbours' each side, and keeps its own rows of the result. Collective
+  // on several processes, as solve is.
   FilmKrylovSolver(InfluenceOperator& op, const ReynoldsStencil& topology, const FilmKrylovSettings& settings,
                    const FilmSlab& slab);
 
@@ -73,6 +79,11 @@ class FilmKrylovSolver {
  private:
   void apply_jacobian(const Eigen::VectorXd& v, Eigen::VectorXd& out);
   bool factorise(std::string& message);
+  // On several processes: the sparse part's rows of the block this
+  // process's preconditioner inverts (its rows and the overlap), and
+  // M^-1 of that block restricted to its own rows.
+  void gather_block_rows();
+  void apply_preconditioner(const Eigen::VectorXd& in, Eigen::VectorXd& out);
 
   InfluenceOperator& op_;
   const ReynoldsStencil& topology_;
@@ -92,6 +103,14 @@ class FilmKrylovSolver {
   CsrMatrix matrix_;
   std::vector<std::pair<int, double>> row_scratch_;
   std::unique_ptr<FilmPreconditioner> preconditioner_;
+  // On several processes: the overlap's rows below and above, the block's
+  // matrix, this process's rows in whole-grid columns packed to a common
+  // width (column, value; column -1 past a row's end) and the block's,
+  // and the block's vectors.
+  std::size_t below_ = 0, above_ = 0;
+  CsrMatrix block_;
+  std::vector<double> packed_own_, packed_block_;
+  Eigen::VectorXd block_in_, block_out_;
   bool factorised_ = false;  // a factorisation exists (the branches are compared with its load row)
   KrylovNewtonStep krylov_;
 };

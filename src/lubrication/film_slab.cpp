@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <span>
 
@@ -38,6 +39,7 @@ FilmSlab::FilmSlab(const Grid& whole, const FlowConditions& conditions, std::siz
   }
   first_row_ = linalg::first_row_held(comm, own_rows_);
   const bool periodic = conditions.boundary.y == AxisBoundary::periodic;
+  periodic_y_ = periodic;
   low_halo_ = first_row_ > 0 || periodic ? halo : 0;
   high_halo_ = first_row_ + own_rows_ < whole.ny() || periodic ? halo : 0;
   own_first_ = low_halo_ * nx;
@@ -52,6 +54,14 @@ std::size_t FilmSlab::whole_node(std::size_t stencil_node) const {
   const std::size_t ny = whole_.ny();
   const std::size_t row = (first_row_ + ny - low_halo_ + stencil_node / nx) % ny;
   return row * nx + stencil_node % nx;
+}
+
+std::size_t FilmSlab::stencil_node(std::size_t whole_node) const {
+  if (!distributed()) return whole_node;
+  const std::size_t nx = whole_.nx();
+  const std::size_t ny = whole_.ny();
+  const std::size_t row = (whole_node / nx + ny + low_halo_ - first_row_) % ny;
+  return row < stencil_grid_.ny() ? row * nx + whole_node % nx : kOutside;
 }
 
 void FilmSlab::fetch(const double* field, std::size_t whole_first, std::size_t rows, double* into) const {
@@ -69,6 +79,37 @@ void FilmSlab::exchange(double* field) const {
   // periodic film); above, those after.
   fetch(field, (first_row_ + ny - low_halo_) % ny, low_halo_, field);
   fetch(field, (first_row_ + own_rows_) % ny, high_halo_, field + own_first_ + own_nodes_);
+}
+
+void FilmSlab::fetch_wrapping(const double* own, std::size_t first, std::size_t rows, std::size_t width,
+                              double* into) const {
+  const std::size_t ny = whole_.ny();
+  const std::size_t unit = whole_.nx() * width;
+  const std::size_t head = std::min(rows, ny - first);  // up to the last row, then from row 0
+  const auto mine = std::as_bytes(std::span(own, own_rows_ * unit));
+  comm_.fetch_rows(mine, first_row_, first, std::as_writable_bytes(std::span(into, head * unit)),
+                   unit * sizeof(double));
+  comm_.fetch_rows(mine, first_row_, 0, std::as_writable_bytes(std::span(into + head * unit, (rows - head) * unit)),
+                   unit * sizeof(double));
+}
+
+std::pair<std::size_t, std::size_t> FilmSlab::rows_around_limits(std::size_t wanted) const {
+  if (!distributed()) return {0, 0};
+  const std::size_t ny = whole_.ny();
+  if (!periodic_y_) return {std::min(wanted, first_row_), std::min(wanted, ny - first_row_ - own_rows_)};
+  const std::size_t others = ny - own_rows_;
+  const std::size_t below = std::min(wanted, others / 2);
+  return {below, std::min(wanted, others - below)};
+}
+
+void FilmSlab::rows_around(const double* own, std::size_t below, std::size_t above, std::size_t width,
+                           double* around) const {
+  const std::size_t ny = whole_.ny();
+  const std::size_t unit = whole_.nx() * width;
+  std::copy(own, own + own_rows_ * unit, around + below * unit);
+  if (!distributed()) return;
+  fetch_wrapping(own, (first_row_ + ny - below) % ny, below, width, around);
+  fetch_wrapping(own, (first_row_ + own_rows_) % ny, above, width, around + (below + own_rows_) * unit);
 }
 
 double FilmSlab::sum(double local) const {

@@ -12,6 +12,7 @@
 
 #include <Eigen/Core>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 #include "halfspace/grid.hpp"
@@ -44,13 +45,32 @@ class FilmSlab {
   std::size_t own_first() const { return own_first_; }  // the stencil node of this process's first node
   std::size_t own_nodes() const { return own_nodes_; }
   std::size_t first_row() const { return first_row_; }  // this process's first row of the whole grid
-  // The whole grid's node of a stencil node.
+  // The whole grid's node of a stencil node, and the stencil node of a
+  // whole grid's node (kOutside if it is not in the stencil).
   std::size_t whole_node(std::size_t stencil_node) const;
+  static constexpr std::size_t kOutside = static_cast<std::size_t>(-1);
+  std::size_t stencil_node(std::size_t whole_node) const;
 
   // Fills the halo rows of a stencil field (stencil_nodes() values) from
   // the processes that own them (this process's own rows already in
   // place). Collective; nothing on one process.
   void exchange(double* field) const;
+
+  // The rows around this process's: `below` rows before its first and
+  // `above` after its last (wrapped on a y-periodic film; each at most the
+  // rows the others hold together), `width` values per node, into
+  // `around`: the rows below, `own` (this process's rows), the rows above.
+  // Collective (each process its own counts); on one process `own` alone.
+  void rows_around(const double* own, std::size_t below, std::size_t above, std::size_t width, double* around) const;
+  // The most rows below and above this process's that rows_around can take
+  // (the film's edges, or on a y-periodic film the other processes' rows
+  // shared between the two sides), up to `wanted` each.
+  std::pair<std::size_t, std::size_t> rows_around_limits(std::size_t wanted) const;
+  // The whole grid's row of a row of the rows around (`below` before
+  // this process's first).
+  std::size_t whole_row_around(std::size_t row, std::size_t below) const {
+    return (first_row_ + whole_.ny() - below + row) % whole_.ny();
+  }
 
   // Reductions over the processes (the identity on one).
   double sum(double local) const;
@@ -69,8 +89,13 @@ class FilmSlab {
 
  private:
   void fetch(const double* field, std::size_t whole_first, std::size_t rows, double* into) const;
+  // Whole rows [first, first + rows) of a field held `width` values per
+  // node, own rows at `own`, into `into` (a range that may wrap past the
+  // last row: two collective fetches, always both).
+  void fetch_wrapping(const double* own, std::size_t first, std::size_t rows, std::size_t width, double* into) const;
 
   Grid whole_;
+  bool periodic_y_ = false;
   const linalg::Communicator& comm_;
   std::size_t first_row_ = 0, own_rows_ = 0, own_first_ = 0, own_nodes_ = 0;
   std::size_t low_halo_ = 0, high_halo_ = 0;

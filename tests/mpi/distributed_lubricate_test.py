@@ -136,7 +136,7 @@ film_case("profile-elastic", profile + ["--force", "1e4", "--E-star", "1.1e11"],
 
 # The EHL film of a map on slabs: solved to a relative mass residual of
 # 1e-11, the fields agree far within kElasticTolerance (measured: at most
-# 4.4e-10 of their largest values, on the second-order case); the relative
+# 6.6e-12 of their largest values, on the second-order case); the relative
 # residual and the load error are compared in absolute terms.
 kElasticTolerance = 1e-7
 base = on_ball + ["--entrainment-velocity", "1"]
