@@ -7,8 +7,10 @@
 
 #include <Eigen/Core>
 #include <algorithm>
+#include <memory>
 #include <optional>
 #include <span>
+#include <utility>
 
 #include "film_krylov_solver.hpp"
 #include "film_slab.hpp"
@@ -16,6 +18,7 @@
 #include "halfspace/lubrication/elastic_film.hpp"
 #include "halfspace/operators/coarsened_influence_operator.hpp"
 #include "halfspace/operators/influence_operator.hpp"
+#include "halfspace/operators/spectral_transforms.hpp"
 #include "halfspace/solvers/grid_transfer.hpp"
 
 namespace halfspace::lubrication::detail {
@@ -23,10 +26,15 @@ namespace halfspace::lubrication::detail {
 // Cells per axis below which no coarser grid is made.
 inline constexpr std::size_t kSequencingMinCells = 8;
 
+// Rows of a coarse grid that every process must get for the coarse film to
+// be solved on slabs (else it is solved whole on every process).
+inline constexpr std::size_t kMinSlabRows = 16;
+
 // The film `solve(coarse_op, coarse_gap, coarse_options)` gives on the grid
 // of twice op's spacing: its operator R K P seen through op, its gap the
 // block average of `gap`, its tolerances at least kSequencingCoarseTolerance
-// (on a distributed op, the coarse film solved whole on every process).
+// (on a distributed op, the coarse film on slabs of the coarse rows, or
+// whole on every process where they would be too thin).
 // Its work is added to `record` (and its message, if it failed). Nothing if
 // op's grid has no coarser grid. Shared by the EHL and the mixed film.
 template <class Film, class Options, class Solve>
@@ -35,13 +43,26 @@ std::optional<Film> solve_on_coarser_grid(InfluenceOperator& op, const Eigen::Ar
   const Grid& grid = op.grid();
   const std::optional<Grid> coarse = solvers::coarser_grid(grid, kSequencingMinCells);
   if (!coarse) return std::nullopt;
-  // On a distributed operator `gap` is this process's rows; the coarse
-  // operator and gap are then whole on every process.
-  CoarsenedInfluenceOperator coarse_op(op, *coarse);
+  // On a distributed operator `gap` is this process's rows, and the coarse
+  // film is solved on slabs of the coarse rows too, unless a process would
+  // hold fewer than kMinSlabRows of them: then whole on every process.
+  const linalg::Communicator& comm = op.communicator();
+  std::unique_ptr<operators::SpectralTransforms> transforms = op.transforms_for(*coarse);
+  if (comm.size() > 1 &&
+      comm.min(static_cast<double>(transforms->local_size() / coarse->nx())) < static_cast<double>(kMinSlabRows)) {
+    transforms = operators::make_serial_transforms(*coarse, FftPlanning::estimate, {.count = 1});
+  }
+  CoarsenedInfluenceOperator coarse_op(op, *coarse, std::move(transforms));
   Eigen::ArrayXd coarse_gap(static_cast<Eigen::Index>(coarse->size()));
   const auto own = static_cast<std::size_t>(gap.size());
-  solvers::restrict_rows_by_average(grid, {gap.data(), own}, linalg::first_row_held(op.communicator(), own / grid.nx()),
-                                    {coarse_gap.data(), coarse->size()}, op.communicator());
+  solvers::restrict_rows_by_average(grid, {gap.data(), own}, linalg::first_row_held(comm, own / grid.nx()),
+                                    {coarse_gap.data(), coarse->size()}, comm);
+  if (coarse_op.local_size() != coarse->size()) {
+    const std::size_t first =
+        linalg::first_row_held(coarse_op.communicator(), coarse_op.local_size() / coarse->nx()) * coarse->nx();
+    coarse_gap =
+        coarse_gap.segment(static_cast<Eigen::Index>(first), static_cast<Eigen::Index>(coarse_op.local_size())).eval();
+  }
   Options coarse_options = options;
   coarse_options.tolerance = std::max(options.tolerance, kSequencingCoarseTolerance);
   coarse_options.load_tolerance = std::max(options.load_tolerance, kSequencingCoarseTolerance);

@@ -32,10 +32,12 @@ FilmSlab::FilmSlab(const Grid& whole, const FlowConditions& conditions, std::siz
   own_rows_ = own_nodes / nx;
   const double fewest = comm.min(static_cast<double>(own_rows_));
   if (fewest < static_cast<double>(halo) || fewest < 1.0) {
-    throw InputError(fmt::format(
-        "the {} film on {} processes leaves a process {} rows: each needs at least {} (the Reynolds stencil's "
-        "reach); use fewer processes",
-        whole.shape_string(), comm.size(), fewest, std::max<std::size_t>(halo, 1)));
+    const auto needed = std::max<std::size_t>(halo, 1);
+    throw InputError(
+        fmt::format("the {} film on {} processes leaves a process with {} row{}: each needs at least {} (the Reynolds "
+                    "stencil's reach{}); use fewer processes",
+                    whole.shape_string(), comm.size(), fewest, fewest == 1.0 ? "" : "s", needed,
+                    halo > 1 ? " with the second-order Couette flux" : ""));
   }
   first_row_ = linalg::first_row_held(comm, own_rows_);
   const bool periodic = conditions.boundary.y == AxisBoundary::periodic;

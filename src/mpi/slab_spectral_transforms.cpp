@@ -67,6 +67,10 @@ class SlabTransforms : public operators::SpectralTransforms {
   }
 
   const linalg::Communicator& communicator() const override { return comm_; }
+  std::unique_ptr<operators::SpectralTransforms> make_for(const Grid& grid,
+                                                          const operators::TransformsShape& shape) const override {
+    return make_slab_transforms(grid, comm_, FftPlanning::estimate, shape);
+  }
   std::size_t spectrum_blocks() const override { return held_.columns; }
   std::size_t spectrum_length() const override { return held_.length; }
   SpectrumMode mode(std::size_t k) const override { return held_.mode(k); }

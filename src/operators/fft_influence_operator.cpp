@@ -175,6 +175,10 @@ const linalg::Communicator& FftInfluenceOperator::communicator() const {
   return impl_->transforms->communicator();
 }
 
+std::unique_ptr<SpectralTransforms> FftInfluenceOperator::transforms_for(const Grid& grid) const {
+  return transforms()->make_for(grid, {.count = 1});
+}
+
 double FftInfluenceOperator::self_influence() const {
   return impl_->self;
 }

@@ -39,6 +39,9 @@ class WholeGridForm final : public CirculantForm {
 // a workspace), or the pruned padded ones on free grids.
 class SerialSpectralTransforms final : public SpectralTransforms {
  public:
+  std::unique_ptr<SpectralTransforms> make_for(const Grid& grid, const TransformsShape& shape) const override {
+    return make_serial_transforms(grid, FftPlanning::estimate, shape);
+  }
   SerialSpectralTransforms(const Grid& grid, FftPlanning planning, const TransformsShape& shape)
       : grid_(grid), planning_(planning) {
     for (int k = 0; k < shape.count; ++k) {

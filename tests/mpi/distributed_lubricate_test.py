@@ -22,9 +22,10 @@ rows), so its file must equal the serial one to the solver's tolerance
 (kElasticTolerance), on free and periodic bodies, homogeneous and coated,
 with the first- and second-order Couette flux. A mixed
 film's Stribeck sweep shares out its speeds, and its curve and last film
-must equal the serial ones to the solver's tolerance. --plot
-and a map with fewer rows than processes must be refused by every process
-with one message and no file.
+must equal the serial ones to the solver's tolerance. --plot, a map with
+fewer rows than processes, and an EHL film whose halo needs more rows than
+a process holds must be refused by every process with one message and no
+file.
 """
 import os
 import sys
@@ -222,8 +223,11 @@ refused = os.path.join(work_dir, "refused.h5")
 for name, arguments, message in [
         ("plot", ["--separation", "1e-6", "--plot"], "--plot is not available with more than one process"),
         # 4 rows on 3 processes: FFTW's slabs of 2 rows leave the third none.
-        ("too-few-rows", ["--window", "0,0,48,4", "--separation", "1e-6"], "leaves a process without rows")]:
-    harness.refusal_case(f"refused {name}", 3 if name == "too-few-rows" else 2, base + arguments, message, refused,
+        ("too-few-rows", ["--window", "0,0,48,4", "--separation", "1e-6"], "leaves a process without rows"),
+        # 5 rows on 3 processes: 2, 2 and 1, and the second-order flux's halo is two rows.
+        ("elastic-too-few-rows", ["--window", "0,0,48,5", "--force", "0.5", "--E-star", "1e11", "--couette-scheme",
+                                  "second-order"], "leaves a process with 1 row: each needs at least 2")]:
+    harness.refusal_case(f"refused {name}", 2 if name == "plot" else 3, base + arguments, message, refused,
                          command="lubricate")
 
 harness.finish()

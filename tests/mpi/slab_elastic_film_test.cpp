@@ -9,7 +9,8 @@
 // tolerance, not to the bit: the films, pressures and h0 must agree within kTolerance of
 // their scale, both converged and checked. Free and periodic grids, the
 // first- and second-order Couette fluxes, entrainment along x and
-// oblique, and a grid taller than the preconditioner's overlap reaches. Exits non-zero on a mismatch, printing it.
+// oblique, a grid taller than the preconditioner's overlap reaches, and
+// one whose coarse film is solved on slabs too. Exits non-zero on a mismatch, printing it.
 #include <fmt/format.h>
 
 #include <Eigen/Core>
@@ -78,9 +79,10 @@ Case ball(const std::string& name, double vy, CouetteScheme scheme, std::size_t 
 }
 
 // A cylinder across x on a periodic grid, the film periodic along y, its
-// gap waved along y so that the rows differ.
-Case waved_cylinder(const std::string& name, double vy) {
-  const std::size_t nx = 64, ny = 24;
+// gap waved along y so that the rows differ; `ny` rows (128: the coarse
+// film of grid sequencing on slabs of its rows too, kMinSlabRows each).
+Case waved_cylinder(const std::string& name, double vy, std::size_t ny = 24) {
+  const std::size_t nx = 64;
   const double dx = 4e-6;
   Case c{.name = name, .grid = Grid::plane(nx, ny, dx, dx, Boundary::periodic), .gap = {}, .conditions = {}};
   c.gap.resize(static_cast<Eigen::Index>(nx * ny));
@@ -157,6 +159,7 @@ int main(int argc, char** argv) {
     check(ball("ball, tall free grid, entrainment along x", 0.0, CouetteScheme::first_order, 56), world);
     check(waved_cylinder("waved cylinder, periodic grid, film periodic along y", 0.0), world);
     check(waved_cylinder("waved cylinder, periodic grid, entrainment down y", -0.2), world);
+    check(waved_cylinder("waved cylinder, tall periodic grid, the coarse film on slabs too", -0.2, 128), world);
     int total = failures;
     MPI_Allreduce(&failures, &total, 1, MPI_INT, MPI_SUM, world.get());
     failures = total;

@@ -27,16 +27,25 @@ class CoarsenedInfluenceOperator final : public InfluenceOperator {
  public:
   // `coarse` must be solvers::coarser_grid(fine.grid(), ...). `fine` is
   // used only here (one product). A distributed `fine` (slabs of rows)
-  // takes that product collectively, and the coarse operator is then the
-  // serial one on every process (the coarse field whole).
+  // takes that product collectively; the coarse operator multiplies on
+  // `transforms` of the coarse grid (one transform, fine.transforms_for
+  // by default): serial ones (every process then holds the coarse field
+  // whole) or slabs of the coarse rows.
   CoarsenedInfluenceOperator(InfluenceOperator& fine, const Grid& coarse);
+  CoarsenedInfluenceOperator(InfluenceOperator& fine, const Grid& coarse,
+                             std::unique_ptr<SpectralTransforms> transforms);
   ~CoarsenedInfluenceOperator() override;
   CoarsenedInfluenceOperator(const CoarsenedInfluenceOperator&) = delete;
   CoarsenedInfluenceOperator& operator=(const CoarsenedInfluenceOperator&) = delete;
 
   const Grid& grid() const override { return coarse_; }
+  std::size_t local_size() const override { return transforms_->local_size(); }
+  const linalg::Communicator& communicator() const override { return transforms_->communicator(); }
   void apply(std::span<const double> pressure, std::span<double> displacement) override;
   double self_influence() const override { return self_influence_; }
+  std::unique_ptr<SpectralTransforms> transforms_for(const Grid& grid) const override {
+    return transforms_->make_for(grid, {.count = 1});
+  }
 
  private:
   Grid coarse_;

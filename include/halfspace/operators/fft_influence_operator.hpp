@@ -40,6 +40,8 @@ class FftInfluenceOperator final : public InfluenceOperator {
   const linalg::Communicator& communicator() const override;
   void apply(std::span<const double> pressure, std::span<double> displacement) override;
   double self_influence() const override;
+  // Its transforms' kind (serial or slabs) for `grid`.
+  std::unique_ptr<SpectralTransforms> transforms_for(const Grid& grid) const override;
   // Periodic: the kernel and its inverse on the transforms. Free: K on the
   // whole padded grid (SpectralTransforms::padded_form: serially a transform
   // of the whole padded grid, 4 ny nx reals and half as many complex values

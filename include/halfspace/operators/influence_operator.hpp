@@ -4,6 +4,7 @@
 // of rows per process, include/halfspace/mpi/) are interchangeable.
 #pragma once
 
+#include <memory>
 #include <span>
 
 #include "halfspace/error.hpp"
@@ -12,6 +13,8 @@
 #include "halfspace/operators/circulant_form.hpp"
 
 namespace halfspace::operators {
+
+class SpectralTransforms;
 
 class InfluenceOperator {
  public:
@@ -38,6 +41,13 @@ class InfluenceOperator {
   // K_ii (m/Pa): the displacement of a cell under unit pressure on itself
   // alone. The same for every cell (the operator is translation invariant).
   virtual double self_influence() const = 0;
+
+  // Transforms of the kind this operator multiplies on (serial, or on the
+  // same processes' slabs), one transform, for another grid: those a
+  // coarser operator made from this one multiplies on
+  // (coarsened_influence_operator.hpp). This default: serial ones.
+  // Collective.
+  virtual std::unique_ptr<SpectralTransforms> transforms_for(const Grid& grid) const;
 
   // K as a multiplier on its transform grid (circulant_form.hpp), made on the
   // first call (its transform and the inverse symbol) and owned by the

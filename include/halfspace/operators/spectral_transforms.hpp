@@ -99,6 +99,11 @@ class SpectralTransforms {
   // products (the Fourier preconditioner's on a free grid).
   virtual std::span<std::complex<double>> workspace() = 0;
 
+  // Transforms of the same kind for another grid `grid` (serial, or on the
+  // same processes' slabs), planned by FFTW's estimate: a coarser grid's
+  // (coarsened_influence_operator.hpp), made for a few products. Collective.
+  virtual std::unique_ptr<SpectralTransforms> make_for(const Grid& grid, const TransformsShape& shape) const = 0;
+
   // Free grids: the DFT of the real wrap-around array on the whole padded
   // grid (spectrum_rows() x 2 nx), on the entries held here (a kernel's
   // coefficients, transformed once). `fill(first, rows, row)` writes its
