@@ -29,6 +29,7 @@
 #include <chrono>
 #include <cmath>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "film_newton.hpp"
@@ -839,11 +840,13 @@ MixedFilm continue_in_speed(InfluenceOperator& op, const Eigen::ArrayXd& gap, co
     // smoothed, from the last film straight to the velocities, else to the
     // step that stalled (and on from there).
     bool rescued = false;
+    std::string smoothed_failure;  // the last smoothed solve's message, for the stall's
     if (op.grid().dimension() == 2 && options.smoothed_rescue) {
       for (const double target : {1.0, next}) {
         MixedFilm smoothed =
             detail::solve_mixed_film_smoothed(op, gap, at_speed_factor(conditions, target), laws, options, film);
         work.add(smoothed, 0);
+        smoothed_failure = smoothed.message;
         if (smoothed.converged()) {
           film = std::move(smoothed);
           factor = target;
@@ -856,7 +859,9 @@ MixedFilm continue_in_speed(InfluenceOperator& op, const Eigen::ArrayXd& gap, co
       }
     }
     if (!rescued) {
-      trial.message = fmt::format("speed continuation stalled at {:.4g} times the velocities: {}", next, trial.message);
+      trial.message = fmt::format("speed continuation stalled at {:.4g} times the velocities: {}{}{}", next,
+                                  trial.message, smoothed_failure.empty() ? "" : "; with smoothed contact rows: ",
+                                  smoothed_failure);
       return trial;
     }
   }
@@ -915,6 +920,8 @@ MixedFilm continue_in_offset(InfluenceOperator& op, const Eigen::ArrayXd& gap, c
       if (smoothed.converged()) {
         trial = std::move(smoothed);
         ++work.rescues;
+      } else {
+        trial.message += fmt::format("; with smoothed contact rows: {}", smoothed.message);
       }
     }
     if (trial.converged()) {
