@@ -859,9 +859,9 @@ MixedFilm continue_in_speed(InfluenceOperator& op, const Eigen::ArrayXd& gap, co
       }
     }
     if (!rescued) {
-      trial.message = fmt::format("speed continuation stalled at {:.4g} times the velocities: {}{}{}", next,
-                                  trial.message, smoothed_failure.empty() ? "" : "; with smoothed contact rows: ",
-                                  smoothed_failure);
+      trial.message =
+          fmt::format("speed continuation stalled at {:.4g} times the velocities: {}{}{}", next, trial.message,
+                      smoothed_failure.empty() ? "" : "; with smoothed contact rows: ", smoothed_failure);
       return trial;
     }
   }
