@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <climits>
+#include <initializer_list>
 #include <cstdint>
 #include <stdexcept>
 #include <utility>
@@ -98,7 +99,8 @@ void MpiCommunicator::fetch_rows(std::span<const std::byte> mine, std::size_t mi
   const auto me = static_cast<std::size_t>(rank_);
   // (held first, held rows, wanted first, wanted rows) of every process.
   const std::array<unsigned long long, 4> ranges = {mine_first, mine.size() / unit, first, wanted.size() / unit};
-  std::vector<unsigned long long> every(4 * size);
+  std::vector<unsigned long long>& every = ranges_;
+  every.resize(4 * size);
   check(MPI_Allgather(ranges.data(), 4, MPI_UNSIGNED_LONG_LONG, every.data(), 4, MPI_UNSIGNED_LONG_LONG, comm_),
         "MPI_Allgather");
   auto as_int = [](unsigned long long value) {
@@ -113,7 +115,11 @@ void MpiCommunicator::fetch_rows(std::span<const std::byte> mine, std::size_t mi
     const unsigned long long end = std::min(a + m, b + n);
     return std::pair<unsigned long long, unsigned long long>{begin, end > begin ? end - begin : 0};
   };
-  std::vector<int> send_counts(size), send_offsets(size), receive_counts(size), receive_offsets(size);
+  std::vector<int>& send_counts = send_counts_;
+  std::vector<int>& send_offsets = send_offsets_;
+  std::vector<int>& receive_counts = receive_counts_;
+  std::vector<int>& receive_offsets = receive_offsets_;
+  for (std::vector<int>* v : {&send_counts, &send_offsets, &receive_counts, &receive_offsets}) v->resize(size);
   for (std::size_t p = 0; p < size; ++p) {
     const auto sent = overlap(every[4 * me], every[4 * me + 1], every[4 * p + 2], every[4 * p + 3]);
     send_counts[p] = as_int(sent.second);

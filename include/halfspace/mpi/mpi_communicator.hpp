@@ -31,6 +31,8 @@ class MpiCommunicator final : public linalg::Communicator {
   void concatenate(std::span<const std::byte> mine, std::span<std::byte> all, std::size_t unit) const override;
   // Every process's held and wanted ranges gathered, then one MPI_Alltoallv
   // of whole units (as row_exchange.cpp does for fields of doubles).
+  // Allocates only the first time (its scratch is kept): a Newton-Krylov
+  // solve on slabs fetches halo rows in every iteration.
   void fetch_rows(std::span<const std::byte> mine, std::size_t mine_first, std::size_t first,
                   std::span<std::byte> wanted, std::size_t unit) const override;
 
@@ -39,6 +41,10 @@ class MpiCommunicator final : public linalg::Communicator {
   int size_ = 1;
   int rank_ = 0;
   mutable std::vector<double> gathered_;  // every process's values, rank by rank
+  // fetch_rows's scratch: every process's ranges, and the Alltoallv's counts
+  // and offsets.
+  mutable std::vector<unsigned long long> ranges_;
+  mutable std::vector<int> send_counts_, send_offsets_, receive_counts_, receive_offsets_;
 };
 
 // Throws std::runtime_error naming `call` unless `code` is MPI_SUCCESS (MPI's
