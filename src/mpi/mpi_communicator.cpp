@@ -9,8 +9,8 @@
 #include <algorithm>
 #include <array>
 #include <climits>
-#include <initializer_list>
 #include <cstdint>
+#include <initializer_list>
 #include <stdexcept>
 #include <utility>
 
