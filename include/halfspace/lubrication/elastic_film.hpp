@@ -194,10 +194,11 @@ struct ElasticFilm : NewtonFilmResult {
 // this process's rows, its scalars the whole film's, and `start` a film of
 // the same slabs. The Newton iteration runs on each process's rows and a
 // halo of the rows next to them, with GMRES (the dense solve is refused),
-// its preconditioner each process's block of rows (so the iterates, not
-// the film, differ from one process's); grid sequencing is not made on
-// slabs yet, so the film starts from the dry contact. Each process needs
-// at least two rows with the second-order Couette flux, one without.
+// its preconditioner each process's block of rows with an overlap (so the
+// iterates, not the film, differ from one process's); grid sequencing's
+// coarse films run on slabs of their rows too, or whole on every process
+// where the slabs would be thin. Each process needs at least two rows with
+// the second-order Couette flux, one without.
 ElasticFilm solve_elastic_film(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
                                const LubricantLaws& laws, const ElasticFilmOptions& options,
                                const ElasticFilm* start = nullptr);
