@@ -36,37 +36,10 @@ std::optional<ElasticFilm> sequenced_start(InfluenceOperator& op, const Eigen::A
   const Grid& grid = op.grid();
   const auto coarse_size = solvers::coarser_grid(grid, detail::kSequencingMinCells)->size();
   const auto coarse_n = static_cast<Eigen::Index>(coarse_size);
-  // On several processes the coarse film's fields are made whole: from the
-  // slabs of the coarse rows, or, where each process solved it whole, the
-  // first process's taken by all, so that they start alike whatever their
-  // rounding.
   const linalg::Communicator& comm = op.communicator();
-  if (comm.size() > 1) {
-    const auto whole_here = [&](const Eigen::ArrayXd& field) { return field.size() == coarse_n ? 1.0 : 0.0; };
-    const auto rows_total = [&](const Eigen::ArrayXd& field) {
-      std::array<double, 1> size{static_cast<double>(field.size())};
-      comm.sum(size);
-      return size[0];
-    };
-    if (comm.min(std::min(whole_here(film.pressure), whole_here(film.fluid_fraction))) > 0.5) {
-      std::array<double, 2> scalars{film.offset, film.converged() ? 1.0 : 0.0};
-      linalg::broadcast_from_first(comm, scalars);
-      film.offset = scalars[0];
-      film.status = scalars[1] > 0.5 ? FilmStatus::converged : FilmStatus::failure;
-      linalg::broadcast_from_first(comm, {film.pressure.data(), coarse_size});
-      linalg::broadcast_from_first(comm, {film.fluid_fraction.data(), coarse_size});
-    } else if (rows_total(film.pressure) == static_cast<double>(coarse_size) &&
-               rows_total(film.fluid_fraction) == static_cast<double>(coarse_size)) {
-      const std::size_t unit = solvers::coarser_grid(grid, detail::kSequencingMinCells)->nx() * sizeof(double);
-      for (Eigen::ArrayXd* field : {&film.pressure, &film.fluid_fraction}) {
-        Eigen::ArrayXd whole(coarse_n);
-        comm.concatenate(std::as_bytes(std::span<const double>(field->data(), static_cast<std::size_t>(field->size()))),
-                         std::as_writable_bytes(std::span<double>(whole.data(), coarse_size)), unit);
-        *field = std::move(whole);
-      }
-    } else {
-      return std::nullopt;  // no fields to start from (on every process alike)
-    }
+  if (!detail::make_coarse_fields_whole(comm, *solvers::coarser_grid(grid, detail::kSequencingMinCells), film,
+                                        {&film.pressure, &film.fluid_fraction})) {
+    return std::nullopt;  // no fields to start from (on every process alike)
   }
   if (converged_only && !film.converged()) return std::nullopt;
   if (film.pressure.size() != coarse_n || !film.pressure.allFinite() || film.fluid_fraction.size() != coarse_n ||
@@ -90,6 +63,43 @@ std::optional<ElasticFilm> sequenced_start(InfluenceOperator& op, const Eigen::A
 }
 
 }  // namespace
+
+bool detail::make_coarse_fields_whole(const linalg::Communicator& comm, const Grid& coarse, NewtonFilmResult& film,
+                                      std::initializer_list<Eigen::ArrayXd*> fields) {
+  if (comm.size() <= 1) return true;
+  const std::size_t coarse_size = coarse.size();
+  const auto coarse_n = static_cast<Eigen::Index>(coarse_size);
+  const auto whole_here = [&](const Eigen::ArrayXd& field) { return field.size() == coarse_n ? 1.0 : 0.0; };
+  const auto rows_total = [&](const Eigen::ArrayXd& field) {
+    std::array<double, 1> size{static_cast<double>(field.size())};
+    comm.sum(size);
+    return size[0];
+  };
+  double every_whole = 1.0;
+  for (const Eigen::ArrayXd* field : fields) every_whole = std::min(every_whole, whole_here(*field));
+  if (comm.min(every_whole) > 0.5) {
+    // Solved whole on every process: the first process's film, so that they
+    // start alike whatever their rounding.
+    std::array<double, 2> scalars{film.offset, film.converged() ? 1.0 : 0.0};
+    linalg::broadcast_from_first(comm, scalars);
+    film.offset = scalars[0];
+    film.status = scalars[1] > 0.5 ? FilmStatus::converged : FilmStatus::failure;
+    for (Eigen::ArrayXd* field : fields) linalg::broadcast_from_first(comm, {field->data(), coarse_size});
+    return true;
+  }
+  for (const Eigen::ArrayXd* field : fields) {
+    if (rows_total(*field) != static_cast<double>(coarse_size)) return false;
+  }
+  // Solved on slabs of the coarse rows: the rows concatenated.
+  const std::size_t unit = coarse.nx() * sizeof(double);
+  for (Eigen::ArrayXd* field : fields) {
+    Eigen::ArrayXd whole(coarse_n);
+    comm.concatenate(std::as_bytes(std::span<const double>(field->data(), static_cast<std::size_t>(field->size()))),
+                     std::as_writable_bytes(std::span<double>(whole.data(), coarse_size)), unit);
+    *field = std::move(whole);
+  }
+  return true;
+}
 
 ElasticFilm solve_elastic_film(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
                                const LubricantLaws& laws, const ElasticFilmOptions& options, const ElasticFilm* start) {

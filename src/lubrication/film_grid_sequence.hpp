@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 #include <algorithm>
+#include <initializer_list>
 #include <memory>
 #include <optional>
 #include <span>
@@ -73,6 +74,15 @@ std::optional<Film> solve_on_coarser_grid(InfluenceOperator& op, const Eigen::Ar
   record.coarse_krylov_iterations = film.krylov_iterations + film.coarse_krylov_iterations;
   return film;
 }
+
+// On several processes (`comm`), the fields of a film solved on the grid
+// `coarse` made whole on every process: where each process solved it whole,
+// the first process's fields, h0 and status taken by all (so that they
+// start alike whatever their rounding); where it was solved on slabs of the
+// coarse rows, the rows concatenated. False (on every process alike) when
+// the fields are neither. Nothing to do on one process.
+bool make_coarse_fields_whole(const linalg::Communicator& comm, const Grid& coarse, NewtonFilmResult& film,
+                              std::initializer_list<Eigen::ArrayXd*> fields);
 
 // The Newton iteration of solve_elastic_film on the operator's grid alone
 // (no grid sequencing): from `start` if it holds a film of this grid, else

@@ -179,7 +179,7 @@ bool FilmKrylovSolver::factorise(std::string& message) {
     }
     matrix_.append_row(row_scratch_);
   }
-  if (spread) gather_block_rows();
+  if (spread) slab_.gather_rows(matrix_, below_, above_, block_, block_scratch_);
   const bool factorised = preconditioner_->factorise(spread ? block_ : matrix_, message);
   if (!slab_.all(factorised)) {
     if (factorised) message = "the EHL preconditioner could not be factorised on another process";
@@ -188,45 +188,6 @@ bool FilmKrylovSolver::factorise(std::string& message) {
   krylov_.load_row = area_over_load_ * dp_ds_.segment(static_cast<Eigen::Index>(first_), static_cast<Eigen::Index>(n_));
   return krylov_.factorise_border("the EHL preconditioner is singular: no node carries pressure to balance the load",
                                   message);
-}
-
-void FilmKrylovSolver::gather_block_rows() {
-  // This process's rows packed to the widest row of any process, then the
-  // overlap's rows fetched from their owners in the same form.
-  const std::size_t nx = slab_.whole_grid().nx();
-  const std::size_t ny = slab_.whole_grid().ny();
-  std::size_t widest = 0;
-  for (std::size_t k = 0; k < n_; ++k) {
-    widest = std::max(widest, static_cast<std::size_t>(matrix_.start[k + 1] - matrix_.start[k]));
-  }
-  const auto width = static_cast<std::size_t>(slab_.max(static_cast<double>(widest)));
-  packed_own_.assign(n_ * 2 * width, -1.0);
-  for (std::size_t k = 0; k < n_; ++k) {
-    for (auto e = static_cast<std::size_t>(matrix_.start[k]); e < static_cast<std::size_t>(matrix_.start[k + 1]); ++e) {
-      const std::size_t slot = k * 2 * width + 2 * (e - static_cast<std::size_t>(matrix_.start[k]));
-      packed_own_[slot] = matrix_.column[e];
-      packed_own_[slot + 1] = matrix_.value[e];
-    }
-  }
-  const std::size_t block_nodes = static_cast<std::size_t>(block_in_.size());
-  packed_block_.resize(block_nodes * 2 * width);
-  slab_.rows_around(packed_own_.data(), below_, above_, 2 * width, packed_block_.data());
-  // The block's rows in its own columns: a whole-grid node's row counted
-  // from the block's first row, if it lies in the block.
-  const std::size_t block_rows = block_nodes / nx;
-  const std::size_t block_first = slab_.whole_row_around(0, below_);
-  block_.clear();
-  for (std::size_t k = 0; k < block_nodes; ++k) {
-    for (std::size_t e = 0; e < width; ++e) {
-      const double column = packed_block_[k * 2 * width + 2 * e];
-      if (column < 0.0) break;
-      const auto node = static_cast<std::size_t>(column);
-      const std::size_t row = (node / nx + ny - block_first) % ny;
-      if (row >= block_rows) continue;
-      row_scratch_.emplace_back(static_cast<int>(row * nx + node % nx), packed_block_[k * 2 * width + 2 * e + 1]);
-    }
-    block_.append_row(row_scratch_);
-  }
 }
 
 KrylovOutcome FilmKrylovSolver::solve(const LocalRows& rows, const std::vector<char>& branch_full,

@@ -79,10 +79,9 @@ class FilmKrylovSolver {
  private:
   void apply_jacobian(const Eigen::VectorXd& v, Eigen::VectorXd& out);
   bool factorise(std::string& message);
-  // On several processes: the sparse part's rows of the block this
-  // process's preconditioner inverts (its rows and the overlap), and
-  // M^-1 of that block restricted to its own rows.
-  void gather_block_rows();
+  // On several processes: M^-1 of the block this process's
+  // preconditioner inverts (its rows and the overlap) restricted to its
+  // own rows.
   void apply_preconditioner(const Eigen::VectorXd& in, Eigen::VectorXd& out);
 
   InfluenceOperator& op_;
@@ -104,12 +103,10 @@ class FilmKrylovSolver {
   std::vector<std::pair<int, double>> row_scratch_;
   std::unique_ptr<FilmPreconditioner> preconditioner_;
   // On several processes: the overlap's rows below and above, the block's
-  // matrix, this process's rows in whole-grid columns packed to a common
-  // width (column, value; column -1 past a row's end) and the block's,
-  // and the block's vectors.
+  // matrix (FilmSlab::gather_rows) and vectors.
   std::size_t below_ = 0, above_ = 0;
   CsrMatrix block_;
-  std::vector<double> packed_own_, packed_block_;
+  FilmSlab::RowScratch block_scratch_;
   Eigen::VectorXd block_in_, block_out_;
   bool factorised_ = false;  // a factorisation exists (the branches are compared with its load row)
   KrylovNewtonStep krylov_;

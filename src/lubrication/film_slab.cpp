@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <span>
+#include <stdexcept>
 
 #include "halfspace/error.hpp"
 
@@ -114,6 +115,47 @@ void FilmSlab::rows_around(const double* own, std::size_t below, std::size_t abo
   fetch_wrapping(own, (first_row_ + own_rows_) % ny, above, width, around + (below + own_rows_) * unit);
 }
 
+void FilmSlab::gather_rows(const CsrMatrix& own, std::size_t below, std::size_t above, CsrMatrix& block,
+                           RowScratch& scratch) const {
+  // This process's rows packed to the widest row of any process (column,
+  // value; column -1 past a row's end), then the block's rows fetched from
+  // their owners in the same form.
+  const std::size_t nx = whole_.nx();
+  const std::size_t ny = whole_.ny();
+  std::size_t widest = 0;
+  for (std::size_t k = 0; k < own_nodes_; ++k) {
+    widest = std::max(widest, static_cast<std::size_t>(own.start[k + 1] - own.start[k]));
+  }
+  const auto width = static_cast<std::size_t>(max(static_cast<double>(widest)));
+  scratch.packed_own.assign(own_nodes_ * 2 * width, -1.0);
+  for (std::size_t k = 0; k < own_nodes_; ++k) {
+    for (auto e = static_cast<std::size_t>(own.start[k]); e < static_cast<std::size_t>(own.start[k + 1]); ++e) {
+      const std::size_t slot = k * 2 * width + 2 * (e - static_cast<std::size_t>(own.start[k]));
+      scratch.packed_own[slot] = own.column[e];
+      scratch.packed_own[slot + 1] = own.value[e];
+    }
+  }
+  const std::size_t block_rows = own_rows_ + below + above;
+  const std::size_t block_nodes = block_rows * nx;
+  scratch.packed_block.resize(block_nodes * 2 * width);
+  rows_around(scratch.packed_own.data(), below, above, 2 * width, scratch.packed_block.data());
+  // A whole-grid node's column in the block: its row counted from the
+  // block's first row, if it lies in the block.
+  const std::size_t block_first = whole_row_around(0, below);
+  block.clear();
+  for (std::size_t k = 0; k < block_nodes; ++k) {
+    for (std::size_t e = 0; e < width; ++e) {
+      const double column = scratch.packed_block[k * 2 * width + 2 * e];
+      if (column < 0.0) break;
+      const auto node = static_cast<std::size_t>(column);
+      const std::size_t row = (node / nx + ny - block_first) % ny;
+      if (row >= block_rows) continue;
+      scratch.row.emplace_back(static_cast<int>(row * nx + node % nx), scratch.packed_block[k * 2 * width + 2 * e + 1]);
+    }
+    block.append_row(scratch.row);
+  }
+}
+
 double FilmSlab::sum(double local) const {
   comm_.sum(std::span(&local, 1));
   return local;
@@ -129,6 +171,22 @@ double FilmSlab::dot(Eigen::Ref<const Eigen::VectorXd> a, Eigen::Ref<const Eigen
 double FilmSlab::norm(Eigen::Ref<const Eigen::VectorXd> v, Eigen::Index replicated) const {
   if (!distributed()) return v.norm();
   return std::sqrt(dot(v, v, replicated));
+}
+
+void FilmSlabRows::complete(Eigen::ArrayXd& pressure, Eigen::ArrayXd& fluid_fraction) {
+  slab_.exchange(pressure.data());
+  slab_.exchange(fluid_fraction.data());
+}
+
+Eigen::ArrayXd FilmSlabRows::stencil_field(std::span<const double> rows) const {
+  Eigen::ArrayXd field = Eigen::ArrayXd::Zero(static_cast<Eigen::Index>(slab_.stencil_nodes()));
+  std::copy(rows.begin(), rows.end(), field.data() + slab_.own_first());
+  slab_.exchange(field.data());
+  return field;
+}
+
+bool FilmSlabRows::fixed_in_whole(std::size_t) const {
+  throw std::logic_error("FilmSlabRows does not know the whole film's fixed nodes");
 }
 
 KrylovDistribution FilmSlab::krylov_distribution() const {

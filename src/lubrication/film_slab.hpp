@@ -15,8 +15,10 @@
 #include <utility>
 #include <vector>
 
+#include "film_preconditioner.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/linalg/communicator.hpp"
+#include "halfspace/lubrication/film_rows.hpp"
 #include "halfspace/lubrication/flow_conditions.hpp"
 #include "restarted_gmres.hpp"
 
@@ -72,6 +74,19 @@ class FilmSlab {
     return (first_row_ + whole_.ny() - below + row) % whole_.ny();
   }
 
+  // The rows of a sparse matrix that a block of rows around this process's
+  // holds (`below` rows before its first, `above` after its last, as
+  // rows_around): `own` this process's rows (columns whole-grid nodes),
+  // `block` the block's rows in the block's own columns (entries outside
+  // the block dropped). `scratch` keeps the packed rows between calls.
+  // Collective.
+  struct RowScratch {
+    std::vector<double> packed_own, packed_block;
+    std::vector<std::pair<int, double>> row;
+  };
+  void gather_rows(const CsrMatrix& own, std::size_t below, std::size_t above, CsrMatrix& block,
+                   RowScratch& scratch) const;
+
   // Reductions over the processes (the identity on one).
   double sum(double local) const;
   double max(double local) const { return comm_.max(local); }
@@ -101,6 +116,37 @@ class FilmSlab {
   std::size_t low_halo_ = 0, high_halo_ = 0;
   Grid stencil_grid_, own_grid_;
   FlowConditions stencil_conditions_;
+};
+
+// A slab seen as the film pipeline's FilmRows (film_rows.hpp), for what
+// follows a Newton solve on slabs (the mixed film's shear, film_shear.hpp):
+// stencil fields, this process's nodes and the reductions. The cavitation
+// solver's sweeps do not run on it: their halo calls exchange the rows as
+// they are, and fixed_in_whole throws std::logic_error.
+class FilmSlabRows final : public FilmRows {
+ public:
+  explicit FilmSlabRows(const FilmSlab& slab) : slab_(slab) {}
+
+  const Grid& whole_grid() const override { return slab_.whole_grid(); }
+  void start(const Eigen::ArrayXd&, const Eigen::ArrayXd&) override {}
+  void before_sweep(Eigen::ArrayXd& pressure, Eigen::ArrayXd& fluid_fraction) override {
+    complete(pressure, fluid_fraction);
+  }
+  void after_sweep(const Eigen::ArrayXd&, const Eigen::ArrayXd&) override {}
+  void complete(Eigen::ArrayXd& pressure, Eigen::ArrayXd& fluid_fraction) override;
+  double max(double value) const override { return slab_.max(value); }
+  bool all(bool value) const override { return slab_.all(value); }
+  const Grid& stencil_grid() const override { return slab_.stencil_grid(); }
+  const FlowConditions& stencil_conditions() const override { return slab_.stencil_conditions(); }
+  Eigen::ArrayXd stencil_field(std::span<const double> rows) const override;
+  std::size_t first_own_node() const override { return slab_.own_first(); }
+  std::size_t own_nodes() const override { return slab_.own_nodes(); }
+  bool fixed_in_whole(std::size_t k) const override;
+  void sum(std::span<double> values) const override { slab_.communicator().sum(values); }
+  double min(double value) const override { return slab_.min(value); }
+
+ private:
+  const FilmSlab& slab_;
 };
 
 }  // namespace halfspace::lubrication::detail

@@ -8,8 +8,8 @@
 
 namespace halfspace::lubrication::detail {
 
-MixedBlockPreconditioner::MixedBlockPreconditioner(const Grid& grid, int line_axis, const LocalInfluence& local)
-    : local_(local), n_(grid.size()), multigrid_(grid, line_axis, true) {
+MixedBlockPreconditioner::MixedBlockPreconditioner(const Grid& grid, int line_axis)
+    : n_(grid.size()), multigrid_(grid, line_axis, true) {
   const auto ni = static_cast<Eigen::Index>(n_);
   spot_index_.assign(n_, -1);
   total_.resize(ni);
@@ -20,11 +20,12 @@ MixedBlockPreconditioner::MixedBlockPreconditioner(const Grid& grid, int line_ax
   weight_film_.resize(n_);
 }
 
-bool MixedBlockPreconditioner::factorise(const CsrMatrix& mass, const CsrMatrix& film, const std::vector<char>& closed,
-                                         const Eigen::VectorXd& dp_ds, double pressure_scale, double film_scale,
-                                         const std::vector<double>* by_q, const std::vector<double>* by_film,
-                                         std::string& message) {
+bool MixedBlockPreconditioner::factorise(const CsrMatrix& mass, const CsrMatrix& film, const CsrMatrix& near,
+                                         const std::vector<char>& closed, const Eigen::VectorXd& dp_ds,
+                                         double pressure_scale, double film_scale, const std::vector<double>* by_q,
+                                         const std::vector<double>* by_film, std::string& message) {
   film_ = &film;
+  near_ = &near;
   dp_ds_ = &dp_ds;
   for (std::size_t k = 0; k < n_; ++k) {
     const bool is_closed = closed[k] != 0;
@@ -46,9 +47,10 @@ bool MixedBlockPreconditioner::factorise(const CsrMatrix& mass, const CsrMatrix&
   spot_entries_.clear();
   for (std::size_t c = 0; c < spot_node_.size(); ++c) {
     const std::size_t k = spot_node_[c];
-    local_.for_each(k, [&](std::size_t m, double k_value) {
-      if (spot_index_[m] >= 0) spot_entries_.emplace_back(static_cast<int>(c), spot_index_[m], k_value);
-    });
+    for (int e = near.start[k]; e < near.start[k + 1]; ++e) {
+      const auto m = static_cast<std::size_t>(near.column[e]);
+      if (spot_index_[m] >= 0) spot_entries_.emplace_back(static_cast<int>(c), spot_index_[m], near.value[e]);
+    }
     const double shift = weight_q_[k] * film_scale_ / (weight_film_[k] * pressure_);
     if (shift != 0.0) spot_entries_.emplace_back(static_cast<int>(c), static_cast<int>(c), shift);
   }
@@ -71,11 +73,13 @@ void MixedBlockPreconditioner::solve_spots(const Eigen::VectorXd& in, const Eige
     const auto kk = static_cast<Eigen::Index>(k);
     const double by_film = weight_film_[k];
     double rhs = film_scale_ * (in[ni + kk] + weight_q_[k] * dp_ds[kk] * v_s[kk] / pressure_) / by_film;
-    local_.for_each(k, [&](std::size_t m, double k_value) {
-      if (spot_index_[m] >= 0) return;
+    const CsrMatrix& near = *near_;
+    for (int e = near.start[k]; e < near.start[k + 1]; ++e) {
+      const auto m = static_cast<std::size_t>(near.column[e]);
+      if (spot_index_[m] >= 0) continue;
       const auto mm = static_cast<Eigen::Index>(m);
-      rhs -= k_value * (dp_ds[mm] * v_s[mm] + pressure_ * in[ni + mm] / weight_q_[m]);
-    });
+      rhs -= near.value[e] * (dp_ds[mm] * v_s[mm] + pressure_ * in[ni + mm] / weight_q_[m]);
+    }
     spot_rhs_[static_cast<Eigen::Index>(c)] = rhs;
   }
   spot_total_ = spots_lu_.solve(spot_rhs_);

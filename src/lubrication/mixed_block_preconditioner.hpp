@@ -33,23 +33,24 @@
 #include "film_multigrid.hpp"
 #include "film_preconditioner.hpp"
 #include "halfspace/grid.hpp"
-#include "local_influence.hpp"
 
 namespace halfspace::lubrication::detail {
 
 class MixedBlockPreconditioner {
  public:
   // For matrices on `grid` with the V-cycle's lines along `line_axis` (the
-  // entrainment's); `local` is the truncated K of the mass and contact rows.
-  MixedBlockPreconditioner(const Grid& grid, int line_axis, const LocalInfluence& local);
+  // entrainment's). On several processes `grid` is a slab's block of rows
+  // with its overlap (mixed_film_krylov.cpp).
+  MixedBlockPreconditioner(const Grid& grid, int line_axis);
 
-  // Prepares the map for the mass rows' M and F (n x n, as above; both
-  // must outlive the applications), the closed contact rows, the nodes'
-  // dp/ds (0 where cavitated or fixed) and the scales P and H; with
-  // smoothed rows also their weights a (`by_q`) and b (`by_film`), else
-  // null. Returns false with a message
-  // when the V-cycle's lines or the spots' LU are singular.
-  bool factorise(const CsrMatrix& mass, const CsrMatrix& film, const std::vector<char>& closed,
+  // Prepares the map for the mass rows' M and F (n x n, as above), the
+  // truncated K around each node (`near`, row k: K_km for the cells m near
+  // k), the closed contact rows, the nodes' dp/ds (0 where cavitated or
+  // fixed) and the scales P and H; with smoothed rows also their weights a
+  // (`by_q`) and b (`by_film`), else null. F, `near` and dp/ds must outlive
+  // the applications. Returns false with a message when the V-cycle's
+  // lines or the spots' LU are singular.
+  bool factorise(const CsrMatrix& mass, const CsrMatrix& film, const CsrMatrix& near, const std::vector<char>& closed,
                  const Eigen::VectorXd& dp_ds, double pressure_scale, double film_scale,
                  const std::vector<double>* by_q, const std::vector<double>* by_film, std::string& message);
 
@@ -65,10 +66,10 @@ class MixedBlockPreconditioner {
   // the open cells around them).
   void solve_spots(const Eigen::VectorXd& in, const Eigen::VectorXd& v_s);
 
-  const LocalInfluence& local_;
   std::size_t n_;
   FilmMultigrid multigrid_;
   const CsrMatrix* film_ = nullptr;
+  const CsrMatrix* near_ = nullptr;
   const Eigen::VectorXd* dp_ds_ = nullptr;
   // The contact rows' weights a and b at the factorisation (the map is
   // kept over Newton steps): (1, 0) open, (0, 1) closed, or the smoothed ones.

@@ -32,7 +32,9 @@
 #include <string>
 #include <vector>
 
+#include "film_grid_sequence.hpp"
 #include "film_newton.hpp"
+#include "film_slab.hpp"
 #include "halfspace/error.hpp"
 #include "halfspace/lubrication/cavitation_solver.hpp"
 #include "halfspace/lubrication/reynolds_stencil.hpp"
@@ -118,8 +120,9 @@ detail::MixedKrylovSettings mixed_krylov_settings(const MixedFilmOptions& option
 
 }  // namespace
 
-void require_mixed_film_fits(const Grid& grid, const MixedFilmOptions& options, std::string_view surface) {
-  const std::size_t n = grid.size();
+void require_mixed_film_fits(const Grid& grid, const MixedFilmOptions& options, std::string_view surface,
+                             std::size_t nodes) {
+  const std::size_t n = nodes > 0 ? nodes : grid.size();
   if (!takes_krylov(grid, options)) {
     if (n > kMaxMixedFilmNodes) {
       throw InputError(fmt::format(
@@ -197,6 +200,10 @@ double smoothed_contact_row(double q, double f, double mu) {
   return q + f - std::sqrt(q * q + f * f + 2.0 * mu);
 }
 
+// The Newton state: s and q on this process's nodes, fluid pressure,
+// fraction and films on its stencil (halo current), contact and total
+// pressure and deformation on its nodes (film_slab.hpp; on one process all
+// of them the grid's).
 struct State {
   Eigen::ArrayXd s, q, fluid, theta, contact, total, deformation, film, reynolds_film;
   double offset = 0.0;
@@ -215,10 +222,12 @@ struct State {
 // node crosses and the Jacobian is the film's own. `film_change` is dh =
 // K (dp_f + dp_c) + dh0 of the step. Returns whether a branch changed (the
 // step is then solved again).
-bool take_step_branches(const State& x, double hb, double H, bool smoothed, const Eigen::VectorXd& step,
-                        const Eigen::VectorXd& film_change, std::vector<char>& closed,
+// On a slab (film_slab.hpp) the own nodes' from the stencil node `first`;
+// the caller agrees on the answer.
+bool take_step_branches(const State& x, std::size_t first, double hb, double H, bool smoothed,
+                        const Eigen::VectorXd& step, const Eigen::VectorXd& film_change, std::vector<char>& closed,
                         std::vector<double>& film_slope) {
-  const Eigen::Index ni = x.film.size();
+  const Eigen::Index ni = x.q.size();
   bool flipped = false;
   const auto take = [&](char& branch, bool wanted) {
     if (branch != static_cast<char>(wanted)) {
@@ -228,10 +237,11 @@ bool take_step_branches(const State& x, double hb, double H, bool smoothed, cons
   };
   for (Eigen::Index j = 0; j < ni; ++j) {
     const auto jj = static_cast<std::size_t>(j);
-    const double film = x.film[j] + film_change[j];
+    const std::size_t at = first + jj;
+    const double film = x.film[static_cast<Eigen::Index>(at)] + film_change[j];
     if (!smoothed && closed[jj] != 0 && !(x.q[j] + step[ni + j] > film / H)) take(closed[jj], false);
-    if (film_slope[jj] < 1.0 && reynolds_film_slope(film, hb) == 1.0) {
-      film_slope[jj] = 1.0;
+    if (film_slope[at] < 1.0 && reynolds_film_slope(film, hb) == 1.0) {
+      film_slope[at] = 1.0;
       flipped = true;
     }
   }
@@ -246,16 +256,17 @@ bool take_step_branches(const State& x, double hb, double H, bool smoothed, cons
 // released node whose film then falls keeps h < 0 with its row on q, and
 // no step along such a direction lowered the residual (the 64^2 level of a
 // measured map stalled; docs/development-log.md, 2026-11-30).
-bool look_ahead_holds(const State& x, double hb, double H, bool smoothed, const Eigen::VectorXd& step,
-                      const Eigen::VectorXd& film_change, const std::vector<char>& closed,
+bool look_ahead_holds(const State& x, std::size_t first, double hb, double H, bool smoothed,
+                      const Eigen::VectorXd& step, const Eigen::VectorXd& film_change, const std::vector<char>& closed,
                       const std::vector<double>& film_slope) {
-  const Eigen::Index ni = x.film.size();
+  const Eigen::Index ni = x.q.size();
   for (Eigen::Index j = 0; j < ni; ++j) {
     const auto jj = static_cast<std::size_t>(j);
-    const double film = x.film[j] + film_change[j];
-    const bool released = !smoothed && closed[jj] == 0 && x.film[j] / H < x.q[j];
+    const auto at = static_cast<Eigen::Index>(first) + j;
+    const double film = x.film[at] + film_change[j];
+    const bool released = !smoothed && closed[jj] == 0 && x.film[at] / H < x.q[j];
     if (released && x.q[j] + step[ni + j] > film / H) return false;
-    const bool lifted = film_slope[jj] > reynolds_film_slope(x.film[j], hb);
+    const bool lifted = film_slope[first + jj] > reynolds_film_slope(x.film[at], hb);
     if (lifted && reynolds_film_slope(film, hb) < 1.0) return false;
   }
   return true;
@@ -263,12 +274,13 @@ bool look_ahead_holds(const State& x, double hb, double H, bool smoothed, const 
 
 // The contact rows' residuals on the branches `closed`: h / H (closed) or q
 // (the smoothed rows have no branches).
-void contact_residuals(const State& x, double H, bool smoothed, const std::vector<char>& closed,
+void contact_residuals(const State& x, std::size_t first, double H, bool smoothed, const std::vector<char>& closed,
                        Eigen::VectorXd& residual) {
   if (smoothed) return;
-  const Eigen::Index ni = x.film.size();
+  const Eigen::Index ni = x.q.size();
   for (Eigen::Index j = 0; j < ni; ++j) {
-    residual[ni + j] = closed[static_cast<std::size_t>(j)] != 0 ? x.film[j] / H : x.q[j];
+    residual[ni + j] =
+        closed[static_cast<std::size_t>(j)] != 0 ? x.film[static_cast<Eigen::Index>(first) + j] / H : x.q[j];
   }
 }
 
@@ -288,17 +300,29 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
   conditions.validate(grid);
   laws.validate(conditions.viscosity);
   options.validate();
-  const std::size_t n = grid.size();
-  if (op.local_size() != n) throw InputError("the mixed film needs a serial influence operator (one process)");
-  require_mixed_film_fits(grid, options, "the mixed film");
-  const bool krylov = takes_krylov(grid, options);
+  const bool second_order = options.couette_scheme == CouetteScheme::second_order;
+  // This process's rows and the halo the stencil reaches (film_slab.hpp):
+  // on one process the whole grid.
+  const detail::FilmSlab slab(grid, conditions, op.local_size(), op.communicator(), second_order ? 2 : 1);
+  const std::size_t n = slab.own_nodes();
+  const std::size_t first = slab.own_first();
+  const bool spread = slab.distributed();
+  if (spread && options.linear_solve == FilmLinearSolve::dense) {
+    throw InputError("the mixed film's dense linear solve runs on one process: use the gmres solve on several");
+  }
+  require_mixed_film_fits(grid, options, "the mixed film", n);
+  const bool krylov = spread || takes_krylov(grid, options);
   const detail::MixedKrylovSettings krylov_settings = mixed_krylov_settings(options);
-  if (static_cast<std::size_t>(gap.size()) != n || !gap.allFinite()) {
-    throw InputError(fmt::format("mixed film gap has {} values, the {} grid has {} cells; every value must be finite",
-                                 gap.size(), grid.shape_string(), n));
+  if (!slab.all(static_cast<std::size_t>(gap.size()) == n && gap.allFinite())) {
+    throw InputError(fmt::format("mixed film gap has {} values, the {} grid has {} cells{}; every value must be finite",
+                                 gap.size(), grid.shape_string(), grid.size(),
+                                 spread ? fmt::format(" ({} on this process)", n) : ""));
   }
   const auto ni = static_cast<Eigen::Index>(n);
-  const ReynoldsStencil topology(grid, Eigen::ArrayXd::Ones(ni), conditions);
+  const auto own = [&](auto& field) { return field.segment(static_cast<Eigen::Index>(first), ni); };
+  const auto stencil_size = static_cast<Eigen::Index>(slab.stencil_nodes());
+  const ReynoldsStencil topology(slab.stencil_grid(), Eigen::ArrayXd::Ones(stencil_size), slab.stencil_conditions());
+  const detail::OwnNodes own_nodes{.first = first, .count = n, .comm = spread ? &slab.communicator() : nullptr};
   if (topology.couette_x() + topology.couette_y() <= 0.0) {
     throw InputError(
         "mixed film entrainment velocity is zero: at zero speed the film carries nothing (solve the dry contact)");
@@ -309,7 +333,6 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
   const double w = options.load;
   const double supply = conditions.boundary.supply_fluid_fraction;
   const double hb = options.boundary_film;
-  const bool second_order = options.couette_scheme == CouetteScheme::second_order;
   // The step's branches (take_step_branches) and the clipped step on point
   // contacts, where they cut the fine Newton steps (64^2: 55 to 33) and let
   // 128^2 converge; on the rough line contacts of the tests they took 4x the
@@ -324,8 +347,8 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
   solvers::PolonskyKeer dry_solver(op);
   double pressure_scale = 0.0, film_scale = 0.0, dry_offset = options.offset;
   Eigen::ArrayXd dry_pressure = Eigen::ArrayXd::Zero(ni);
-  const bool given_start = start != nullptr && start->fluid_pressure.size() == ni &&
-                           start->contact_pressure.size() == ni && start->fluid_fraction.size() == ni;
+  const bool given_start = slab.all(start != nullptr && start->fluid_pressure.size() == ni &&
+                                    start->contact_pressure.size() == ni && start->fluid_fraction.size() == ni);
   if (load_control || !given_start) {
     const solvers::Loading loading =
         load_control ? solvers::Loading::force(w) : solvers::Loading::approach(std::max(-options.offset, 0.0));
@@ -344,14 +367,19 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
   for (Eigen::Index k = 0; k < ni; ++k) {
     if (dry_pressure[k] > 0.0) film_scale = std::max(film_scale, gap[k]);
   }
-  if (!(film_scale > 0.0)) film_scale = std::max(gap.maxCoeff() - gap.minCoeff(), 1e-9);
+  film_scale = slab.max(film_scale);
+  if (!(film_scale > 0.0)) {
+    film_scale =
+        std::max(slab.max(ni > 0 ? gap.maxCoeff() : -INFINITY) - slab.min(ni > 0 ? gap.minCoeff() : INFINITY), 1e-9);
+  }
   // The dense path's K; the GMRES path's solver (which reads K_00).
   const Eigen::MatrixXd k_matrix = krylov ? Eigen::MatrixXd() : influence_matrix(op);
   std::optional<detail::MixedKrylovSolver> krylov_solver;
-  if (krylov) krylov_solver.emplace(op, topology, krylov_settings, load_control);
+  if (krylov) krylov_solver.emplace(op, topology, krylov_settings, load_control, slab);
   const double self_influence = krylov ? krylov_solver->self_influence() : k_matrix(0, 0);
   if (given_start) {
-    pressure_scale = std::max(pressure_scale, (start->fluid_pressure + start->contact_pressure).maxCoeff());
+    pressure_scale = std::max(
+        pressure_scale, slab.max(ni > 0 ? (start->fluid_pressure + start->contact_pressure).maxCoeff() : -INFINITY));
   }
   if (!(pressure_scale > 0.0)) pressure_scale = 1e-3 * film_scale / self_influence;
   if (load_control) pressure_scale = std::max(pressure_scale, w / grid.domain_area());
@@ -359,10 +387,8 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
   const double H = film_scale;
 
   State x;
-  for (Eigen::ArrayXd* field :
-       {&x.s, &x.q, &x.fluid, &x.theta, &x.contact, &x.total, &x.deformation, &x.film, &x.reynolds_film}) {
-    field->resize(ni);
-  }
+  for (Eigen::ArrayXd* field : {&x.s, &x.q, &x.contact, &x.total, &x.deformation}) field->resize(ni);
+  for (Eigen::ArrayXd* field : {&x.fluid, &x.theta, &x.film, &x.reynolds_film}) field->setZero(stencil_size);
   const auto set_start = [&](Start kind) {
     if (kind == Start::dry_contact) {
       x.s.setZero();
@@ -385,15 +411,19 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
   }
   if (!load_control) x.offset = options.offset;
 
+  // The fields of s, q and h0 on this process's nodes, then the halo; false
+  // (on every process) if a film is not finite.
   const auto evaluate = [&](State& state) {
-    detail::set_pressure_and_fraction(topology, P, supply, state.s, state.fluid, state.theta);
+    detail::set_pressure_and_fraction(topology, P, supply, state.s, state.fluid, state.theta, first);
     state.contact = P * state.q;
-    state.total = state.fluid + state.contact;
+    state.total = own(state.fluid) + state.contact;
     op.apply({state.total.data(), n}, {state.deformation.data(), n});
-    state.film = state.offset + gap + state.deformation;
+    own(state.film) = state.offset + gap + state.deformation;
+    if (!slab.all(own(state.film).allFinite())) return false;
+    for (Eigen::ArrayXd* field : {&state.fluid, &state.theta, &state.film}) slab.exchange(field->data());
     // In place: evaluate runs at every line-search trial.
     state.reynolds_film = state.film.unaryExpr([hb](double h) { return reynolds_film(h, hb); });
-    return state.film.allFinite();
+    return true;
   };
 
   NodeCoefficients coefficients;
@@ -408,7 +438,7 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
     rows.start.resize(n + 1);
     rows.terms.reserve(16 * n);
   }
-  rows.film_slope.resize(n);  // D_j, the floor's slopes (both paths)
+  rows.film_slope.resize(slab.stencil_nodes());  // D_j, the floor's slopes (both paths; on the stencil)
   if (smoothed) {
     rows.contact_by_q.resize(n);
     rows.contact_by_film.resize(n);
@@ -427,7 +457,8 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
     // (through K, for p_f and p_c alike) in the q block.
     result_measure.mass = detail::mass_rows(
         topology, coefficients, state.fluid, state.theta, state.reynolds_film, second_order, mass_scale, terms, out,
-        linearise_too && krylov ? &rows : nullptr, [&](std::size_t k, const std::vector<LocalTerm>& row_terms) {
+        linearise_too && krylov ? &rows : nullptr,
+        [&](std::size_t k, const std::vector<LocalTerm>& row_terms) {
           if (!dense_too) return;
           auto column = jacobian_t.col(static_cast<Eigen::Index>(k));
           double by_offset = 0.0;
@@ -441,19 +472,20 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
             }
           }
           if (load_control) column[h0] = by_offset / mass_scale;
-        });
+        },
+        own_nodes);
     double contact = 0.0;
     for (Eigen::Index k = 0; k < ni; ++k) {
-      const double row = smoothed ? smoothed_contact_row(state.q[k], state.film[k] / H, smoothing)
-                                  : std::min(state.q[k], state.film[k] / H);
+      const double f = state.film[static_cast<Eigen::Index>(first) + k] / H;
+      const double row = smoothed ? smoothed_contact_row(state.q[k], f, smoothing) : std::min(state.q[k], f);
       out[ni + k] = row;
       contact = std::max(contact, std::abs(row));
     }
-    const double load = (state.fluid + state.contact).sum() * area;
+    const double load = slab.sum((own(state.fluid) + state.contact).sum()) * area;
     if (load_control) out[h0] = (load - w) / w;
     result_measure.load = load_control ? std::abs(load - w) / w : 0.0;
-    result_measure.contact = contact;
-    result_measure.norm = out.norm();
+    result_measure.contact = slab.max(contact);
+    result_measure.norm = slab.norm(out, load_control ? 1 : 0);
     if (!dense_too) return result_measure;
     // Rows of J^T are the unknowns: s_j from the pressure rows (zero where
     // s_j is cavitated or the node fixed), q_j = P times the film block.
@@ -500,9 +532,7 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
     return result_measure;
   };
 
-  const auto scale_masses = [&] {
-    mass_scale = detail::largest_couette_outflow(topology, Eigen::ArrayXd::Ones(ni), x.reynolds_film);
-  };
+  const auto scale_masses = [&] { mass_scale = detail::largest_couette_outflow(topology, x.reynolds_film, own_nodes); };
 
   evaluate(x);
   scale_masses();
@@ -554,14 +584,19 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
     detail::FilmNewtonSolve outcome;
     if (!tight) warm = false;
     const auto branches_at_x = [&] {
+      // The floor's slopes on the whole stencil (its halo's films are
+      // current), the branches on this process's nodes.
+      for (Eigen::Index k = 0; k < stencil_size; ++k) {
+        rows.film_slope[static_cast<std::size_t>(k)] = reynolds_film_slope(x.film[k], hb);
+      }
       for (std::size_t j = 0; j < n; ++j) {
         const auto jj = static_cast<Eigen::Index>(j);
+        const double film = x.film[static_cast<Eigen::Index>(first + j)];
         branch_full[j] = x.s[jj] >= 0.0 ? 1 : 0;
-        closed[j] = x.film[jj] / H < x.q[jj] ? 1 : 0;
-        rows.film_slope[j] = reynolds_film_slope(x.film[jj], hb);
+        closed[j] = film / H < x.q[jj] ? 1 : 0;
         if (smoothed) {
           // The preconditioner takes the row's larger weight as its branch.
-          const double q = x.q[jj], f = x.film[jj] / H, root = std::sqrt(q * q + f * f + 2.0 * smoothing);
+          const double q = x.q[jj], f = film / H, root = std::sqrt(q * q + f * f + 2.0 * smoothing);
           rows.contact_by_q[j] = 1.0 - q / root;
           rows.contact_by_film[j] = 1.0 - f / root;
           closed[j] = rows.contact_by_film[j] > rows.contact_by_q[j] ? 1 : 0;
@@ -586,10 +621,12 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
     };
     const auto linearise_rows = [&] {
       measure(x, residual, true);
-      contact_residuals(x, H, smoothed, closed, residual);
+      contact_residuals(x, first, H, smoothed, closed, residual);
     };
     const auto solve_step = [&] {
-      return krylov ? detail::branch_consistent_step_with(gmres_solve, topology, x.s, step, branch_full)
+      return krylov ? detail::branch_consistent_step_on(gmres_solve, topology, first, x.s, step, branch_full,
+                                                        detail::kSwitchBand,
+                                                        [&](bool flipped) { return !slab.all(!flipped); })
                     : detail::branch_consistent_step(linearise_rows, topology, x.s, jacobian_t, residual, lu, step,
                                                      branch_full);
     };
@@ -612,17 +649,20 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
       outcome.solved = solve_step();
       if (!outcome.solved || pass + 1 == detail::kBranchPasses || !step_branches) break;
       step_film_change();
-      if (!take_step_branches(x, hb, H, smoothed, step, film_change, closed, rows.film_slope)) break;
+      // Agreed: the next pass is collective. A lifted film's slope reaches
+      // the neighbours' halo.
+      if (slab.all(!take_step_branches(x, first, hb, H, smoothed, step, film_change, closed, rows.film_slope))) break;
+      slab.exchange(rows.film_slope.data());
       looked_ahead = true;
-      if (krylov) contact_residuals(x, H, smoothed, closed, residual);
+      if (krylov) contact_residuals(x, first, H, smoothed, closed, residual);
     }
     if (outcome.solved && looked_ahead && options.checked_step_branches) {
       step_film_change();
-      if (!look_ahead_holds(x, hb, H, smoothed, step, film_change, closed, rows.film_slope)) {
+      if (!slab.all(look_ahead_holds(x, first, hb, H, smoothed, step, film_change, closed, rows.film_slope))) {
         // The step on the current point's branches (a generalised Jacobian
         // of the residual there).
         branches_at_x();
-        if (krylov) contact_residuals(x, H, smoothed, closed, residual);
+        if (krylov) contact_residuals(x, first, H, smoothed, closed, residual);
         outcome.solved = solve_step();
       }
     }
@@ -631,10 +671,12 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
   // s and q by at most kLargestStep, h0 by at most kLargestStep times the
   // thinnest film.
   const auto offset_cap = [&] {
-    return kLargestStep * std::max(x.film.maxCoeff() > 0.0 ? x.reynolds_film.minCoeff() : 0.0, kFilmFloorShare * H);
+    const double thickest = slab.max(ni > 0 ? own(x.film).maxCoeff() : -INFINITY);
+    const double thinnest = slab.min(ni > 0 ? own(x.reynolds_film).minCoeff() : INFINITY);
+    return kLargestStep * std::max(thickest > 0.0 ? thinnest : 0.0, kFilmFloorShare * H);
   };
   newton.trust_region = [&] {
-    const double largest_change = step.head(2 * ni).cwiseAbs().maxCoeff();
+    const double largest_change = slab.max(ni > 0 ? step.head(2 * ni).cwiseAbs().maxCoeff() : 0.0);
     const double lambda = std::min(1.0, kLargestStep / std::max(largest_change, 1e-300));
     return load_control ? std::min(lambda, offset_cap() / std::max(std::abs(step[h0]), 1e-300)) : lambda;
   };
@@ -663,7 +705,7 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
     trial.offset = load_control ? x.offset + scale * along[h0] : x.offset;
     for (Eigen::Index k = 0; k < ni; ++k) {
       const bool crossed = (x.s[k] > 0.0) != (trial.s[k] > 0.0);
-      if (crossed && std::abs(x.s[k]) > detail::kSwitchBand && !topology.fixed(static_cast<std::size_t>(k))) {
+      if (crossed && std::abs(x.s[k]) > detail::kSwitchBand && !topology.fixed(first + static_cast<std::size_t>(k))) {
         trial.s[k] = 0.0;
       }
     }
@@ -683,34 +725,47 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
   // tolerance of 0: the dense LU's step sets it to 0 exactly, the inexact
   // GMRES step only to its residual; a smoothed film keeps all of it, q h /
   // H = mu on every cell) and the check made apart from the iteration.
-  result.fluid_pressure = x.fluid;
+  // This process's rows of the fields; the scalars of the whole film.
+  result.fluid_pressure = own(x.fluid);
   if (smoothed) {
     result.contact_pressure = x.contact.max(0.0);
   } else {
-    result.contact_pressure = (x.film / H < x.q).select(x.contact.max(0.0), 0.0);
+    result.contact_pressure = (own(x.film) / H < x.q).select(x.contact.max(0.0), 0.0);
   }
   result.pressure = result.fluid_pressure + result.contact_pressure;
-  result.fluid_fraction = x.theta;
+  result.fluid_fraction = own(x.theta);
   result.offset = x.offset;
   result.deformation.resize(ni);
   op.apply({result.pressure.data(), n}, {result.deformation.data(), n});
   result.film = x.offset + gap + result.deformation;
-  const Eigen::ArrayXd seen_film = reynolds_film(result.film, hb);
-  result.fluid_load = result.fluid_pressure.sum() * area;
-  result.contact_load = result.contact_pressure.sum() * area;
+  result.fluid_load = slab.sum(result.fluid_pressure.sum()) * area;
+  result.contact_load = slab.sum(result.contact_pressure.sum()) * area;
   result.load = result.fluid_load + result.contact_load;
   result.contact_load_fraction = result.load > 0.0 ? result.contact_load / result.load : 0.0;
-  const auto in_contact = (result.contact_pressure > 0.0).count();
-  result.contact_area = static_cast<double>(in_contact) * area;
-  result.contact_area_fraction = static_cast<double>(in_contact) / static_cast<double>(n);
+  const double whole_nodes = static_cast<double>(grid.size());
+  const double in_contact = slab.sum(static_cast<double>((result.contact_pressure > 0.0).count()));
+  result.contact_area = in_contact * area;
+  result.contact_area_fraction = in_contact / whole_nodes;
+  // The contact's centre: the first node of the smallest undeformed gap.
   Eigen::Index centre = 0;
-  gap.minCoeff(&centre);
-  result.max_pressure = result.pressure.maxCoeff();
+  const double smallest_gap = slab.min(ni > 0 ? gap.minCoeff(&centre) : INFINITY);
+  const bool holds_centre = ni > 0 && gap[centre] == smallest_gap;
+  const double centre_node = slab.min(
+      holds_centre ? static_cast<double>(slab.whole_node(first + static_cast<std::size_t>(centre))) : INFINITY);
+  const bool owns_centre =
+      holds_centre && static_cast<double>(slab.whole_node(first + static_cast<std::size_t>(centre))) == centre_node;
+  result.max_pressure = slab.max(ni > 0 ? result.pressure.maxCoeff() : -INFINITY);
   result.cavitated_fraction =
-      static_cast<double>(((result.fluid_fraction < 1.0) && (result.contact_pressure <= 0.0)).count()) /
-      static_cast<double>(n);
-  result.relative_residual = elastic_film_residual(grid, conditions, laws, seen_film, result.fluid_pressure,
-                                                   result.fluid_fraction, options.couette_scheme);
+      slab.sum(static_cast<double>(((result.fluid_fraction < 1.0) && (result.contact_pressure <= 0.0)).count())) /
+      whole_nodes;
+  // The flux-form check on the stencil: the final film (K of the clipped
+  // pressure) with its halo.
+  Eigen::ArrayXd seen_film = Eigen::ArrayXd::Zero(stencil_size);
+  own(seen_film) = result.film;
+  slab.exchange(seen_film.data());
+  seen_film = reynolds_film(seen_film, hb);
+  result.relative_residual =
+      detail::film_flux_residual(slab, topology, conditions, laws, seen_film, x.fluid, x.theta, options.couette_scheme);
   result.load_error = load_control ? std::abs(result.load - w) / w : 0.0;
   double complementarity = 0.0;
   for (Eigen::Index k = 0; k < ni; ++k) {
@@ -720,17 +775,22 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
     const double row = smoothed ? smoothed_contact_row(pc, h, smoothing) : std::min(h, pc);
     complementarity = std::max({complementarity, -h, -pc, std::abs(row)});
   }
-  result.complementarity_error = complementarity;
+  result.complementarity_error = slab.max(complementarity);
   // The film on contact cells is 0 to the rounding of h0 + g + K p (h0 may be
   // 1e4 times the film); the check above saw the film as computed.
   for (Eigen::Index k = 0; k < ni; ++k) {
     if (result.contact_pressure[k] > 0.0 || result.film[k] < 0.0) result.film[k] = 0.0;
   }
-  result.central_film_thickness = result.film[centre];
-  result.minimum_film_thickness = result.film.minCoeff();
+  result.central_film_thickness = slab.max(owns_centre ? result.film[centre] : -INFINITY);
+  result.minimum_film_thickness = slab.min(ni > 0 ? result.film.minCoeff() : INFINITY);
   detail::check_after_newton(newton.rules, result.complementarity_error,
-                             satisfies_complementarity(result.fluid_pressure, result.fluid_fraction), result);
-  add_mixed_friction(grid, conditions, laws, options.friction, hb, result);
+                             slab.all(satisfies_complementarity(result.fluid_pressure, result.fluid_fraction)), result);
+  if (spread) {
+    const detail::FilmSlabRows rows_view(slab);
+    add_mixed_friction(grid, conditions, laws, options.friction, hb, result, &rows_view);
+  } else {
+    add_mixed_friction(grid, conditions, laws, options.friction, hb, result);
+  }
   result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return result;
 }
@@ -890,13 +950,15 @@ MixedFilm continue_in_offset(InfluenceOperator& op, const Eigen::ArrayXd& gap, c
   MixedFilm from;
   Work work;
   work.add(failed);
-  if (start != nullptr && start->converged() && start->fluid_pressure.size() == gap.size()) {
+  // On several processes each holds its rows (agreed).
+  if (op.communicator().min(
+          start != nullptr && start->converged() && start->fluid_pressure.size() == gap.size() ? 1.0 : 0.0) > 0.5) {
     from = *start;
   } else {
     if (!(-options.offset > 0.0)) return failed;
     solvers::PolonskyKeer dry_solver(op);
-    const solvers::SolveResult dry =
-        dry_solver.solve({gap.data(), op.grid().size()}, solvers::Loading::approach(-options.offset));
+    const solvers::SolveResult dry = dry_solver.solve({gap.data(), static_cast<std::size_t>(gap.size())},
+                                                      solvers::Loading::approach(-options.offset));
     if (!dry.converged() || !(dry.total_force > 0.0)) return failed;
     MixedFilmOptions by_load = options;
     by_load.load = dry.total_force;

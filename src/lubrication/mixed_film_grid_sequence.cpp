@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <chrono>
 #include <optional>
+#include <span>
 
 #include "film_grid_sequence.hpp"
 #include "halfspace/solvers/grid_transfer.hpp"
@@ -106,14 +107,24 @@ std::optional<MixedFilm> sequenced_start(InfluenceOperator& op, const Eigen::Arr
                            effort == SolveEffort::quick_start ? SolveEffort::quick_start : SolveEffort::start);
       },
       record);
-  if (!coarse || !coarse->converged()) return std::nullopt;
-  const MixedFilm& film = *coarse;
+  if (!coarse) return std::nullopt;
+  MixedFilm film = *coarse;
   const Grid& grid = op.grid();
-  const auto coarse_size = solvers::coarser_grid(grid, detail::kSequencingMinCells)->size();
+  const Grid coarse_grid = *solvers::coarser_grid(grid, detail::kSequencingMinCells);
+  const std::size_t coarse_size = coarse_grid.size();
+  // On several processes the coarse film whole on every process
+  // (film_grid_sequence.hpp), this process's rows of the fine start.
+  const linalg::Communicator& comm = op.communicator();
+  if (!detail::make_coarse_fields_whole(comm, coarse_grid, film, {&film.fluid_pressure, &film.fluid_fraction}) ||
+      !film.converged()) {
+    return std::nullopt;
+  }
+  const std::size_t n = op.local_size();
+  const std::size_t first_row = linalg::first_row_held(comm, n / grid.nx());
   MixedFilm start;
   const auto prolong = [&](const Eigen::ArrayXd& coarse_values, Eigen::ArrayXd& fine_values) {
-    fine_values.resize(static_cast<Eigen::Index>(grid.size()));
-    solvers::prolong_bilinear(grid, {coarse_values.data(), coarse_size}, {fine_values.data(), grid.size()});
+    fine_values.resize(static_cast<Eigen::Index>(n));
+    solvers::prolong_bilinear_rows(grid, {coarse_values.data(), coarse_size}, first_row, {fine_values.data(), n});
   };
   prolong(film.fluid_pressure, start.fluid_pressure);
   prolong(film.fluid_fraction, start.fluid_fraction);
@@ -124,8 +135,9 @@ std::optional<MixedFilm> sequenced_start(InfluenceOperator& op, const Eigen::Arr
   // is the fine dry contact's under the interpolated fluid pressure instead,
   // carrying what the fluid does not: the contact rows then hold and the
   // load balances at the start, the Newton iteration corrects the fluid.
-  const std::size_t n = grid.size();
-  const double fluid_load = start.fluid_pressure.sum() * grid.cell_area();
+  double fluid_sum = start.fluid_pressure.sum();
+  if (comm.size() > 1) comm.sum(std::span(&fluid_sum, 1));
+  const double fluid_load = fluid_sum * grid.cell_area();
   Eigen::ArrayXd loaded_gap(static_cast<Eigen::Index>(n));
   op.apply({start.fluid_pressure.data(), n}, {loaded_gap.data(), n});
   loaded_gap += gap;
@@ -155,10 +167,13 @@ MixedFilm solve_sequenced(InfluenceOperator& op, const Eigen::ArrayXd& gap, cons
   const auto started = std::chrono::steady_clock::now();
   const Grid& grid = op.grid();
   options.validate();
-  const bool sequence = options.grid_sequencing && start == nullptr && options.load_controlled() &&
-                        grid.dimension() == 2 && options.linear_solve != FilmLinearSolve::dense &&
-                        grid.size() > kMixedSequencingNodes && op.local_size() == grid.size() &&
-                        static_cast<std::size_t>(gap.size()) == grid.size() && gap.allFinite();
+  // On several processes each holds its rows of `gap` (agreed: the
+  // decision is collective).
+  const bool sequence =
+      options.grid_sequencing && start == nullptr && options.load_controlled() && grid.dimension() == 2 &&
+      options.linear_solve != FilmLinearSolve::dense && grid.size() > kMixedSequencingNodes &&
+      op.communicator().min(static_cast<std::size_t>(gap.size()) == op.local_size() && gap.allFinite() ? 1.0 : 0.0) >
+          0.5;
   if (!sequence) {
     return detail::solve_mixed_film_on_grid(op, gap, conditions, laws, options, start,
                                             effort == SolveEffort::quick_start
@@ -167,7 +182,7 @@ MixedFilm solve_sequenced(InfluenceOperator& op, const Eigen::ArrayXd& gap, cons
   }
   // The fine grid's memory first: the coarse grids would take minutes on a
   // grid the fine solve cannot hold.
-  require_mixed_film_fits(grid, options, "the mixed film");
+  require_mixed_film_fits(grid, options, "the mixed film", op.local_size());
   MixedFilm record;
   const std::optional<MixedFilm> coarse_start = sequenced_start(op, gap, conditions, laws, options, effort, record);
   MixedFilm result;

@@ -28,7 +28,9 @@
 #include <algorithm>
 #include <cmath>
 #include <span>
+#include <tuple>
 
+#include "halfspace/error.hpp"
 #include "halfspace/linalg/parallel.hpp"
 
 namespace halfspace::lubrication::detail {
@@ -62,46 +64,93 @@ double mixed_krylov_memory_estimate(std::size_t nodes, const MixedKrylovSettings
 }
 
 MixedKrylovSolver::MixedKrylovSolver(InfluenceOperator& op, const ReynoldsStencil& topology,
-                                     const MixedKrylovSettings& settings, bool load_control)
-    : op_(op), topology_(topology), settings_(settings), n_(op.grid().size()), local_(op, settings.neighbourhood) {
+                                     const MixedKrylovSettings& settings, bool load_control, const FilmSlab& slab)
+    : op_(op),
+      topology_(topology),
+      settings_(settings),
+      slab_(slab),
+      n_(slab.own_nodes()),
+      first_(slab.own_first()),
+      local_(op, settings.neighbourhood, slab.first_row()) {
   const auto ni = static_cast<Eigen::Index>(n_);
+  const auto stencil = static_cast<Eigen::Index>(slab.stencil_nodes());
+  const bool spread = slab.distributed();
+  if (spread && settings_.preconditioner != KrylovPreconditioner::multigrid) {
+    throw InputError(
+        "the mixed film's sparse-lu preconditioner runs on one process: use the multigrid preconditioner on several");
+  }
   m_ = 2 * ni + (load_control ? 1 : 0);
   scales_.load_control = load_control;
-  dp_ds_.resize(ni);
-  dtheta_ds_.resize(ni);
+  dp_ds_.setZero(stencil);
+  dtheta_ds_.setZero(stencil);
+  closed_stencil_.setZero(stencil);
   total_.resize(ni);
   deflection_.resize(ni);
-  // M: the block Gauss–Seidel's or the LU's.
-  krylov_.setup(m_, 2 * ni, settings_.restart, [this](const Eigen::VectorXd& in, Eigen::VectorXd& out) {
-    return block_ ? block_->apply(in, out) : preconditioner_->apply(in, out);
-  });
-  if (settings_.preconditioner == KrylovPreconditioner::multigrid) {
-    const int line_axis = topology.couette_y() > topology.couette_x() ? 1 : 0;
-    block_ = std::make_unique<MixedBlockPreconditioner>(op.grid(), line_axis, local_);
-  } else {
-    preconditioner_ = make_film_preconditioner(KrylovPreconditioner::sparse_lu, op.grid(), 0);
+  if (spread) {
+    v_stencil_.setZero(stencil);
+    deflection_stencil_.setZero(stencil);
   }
+  krylov_.setup(m_, 2 * ni, settings_.restart,
+                [this](const Eigen::VectorXd& in, Eigen::VectorXd& out) { apply_preconditioner(in, out); });
+  krylov_.distribute(slab.krylov_distribution());
+  if (settings_.preconditioner != KrylovPreconditioner::multigrid) {
+    preconditioner_ = make_film_preconditioner(KrylovPreconditioner::sparse_lu, op.grid(), 0);
+    return;
+  }
+  // K near each own node, in whole-grid columns (it does not change).
+  near_.clear();
+  for (std::size_t k = 0; k < n_; ++k) {
+    local_.for_each(slab.whole_node(first_ + k), [&](std::size_t node, double k_value) {
+      row_scratch_.emplace_back(static_cast<int>(node), k_value);
+    });
+    near_.append_row(row_scratch_);
+  }
+  const int line_axis = topology.couette_y() > topology.couette_x() ? 1 : 0;
+  Grid block_grid = slab.own_grid();
+  if (spread) {
+    std::tie(below_, above_) = slab.rows_around_limits(kSlabOverlapRows);
+    const Grid& whole = slab.whole_grid();
+    block_grid = Grid::plane(whole.nx(), n_ / whole.nx() + below_ + above_, whole.dx(), whole.dy(), whole.boundary());
+    const auto block_n = static_cast<Eigen::Index>(block_grid.size());
+    block_in_.setZero(2 * block_n);
+    block_out_.setZero(2 * block_n);
+    slab.gather_rows(near_, below_, above_, block_near_, block_scratch_);
+  }
+  block_ = std::make_unique<MixedBlockPreconditioner>(block_grid, line_axis);
 }
 
 void MixedKrylovSolver::apply_jacobian(const Eigen::VectorXd& v, Eigen::VectorXd& out) {
   const auto ni = static_cast<Eigen::Index>(n_);
+  const auto first = static_cast<Eigen::Index>(first_);
   const double P = scales_.pressure;
-  total_ = dp_ds_.cwiseProduct(v.head(ni)) + P * v.segment(ni, ni);
+  total_ = dp_ds_.segment(first, ni).cwiseProduct(v.head(ni)) + P * v.segment(ni, ni);
   op_.apply(std::span<const double>(total_.data(), n_), std::span<double>(deflection_.data(), n_));
   if (scales_.load_control) deflection_.array() += v[2 * ni];
+  // The mass rows reach the halo's nodes: v_s and the film's change there
+  // from their owners.
+  const double* values = v.data();  // on one process the stencil is the own nodes (first_ = 0)
+  const double* deflection = deflection_.data();
+  if (slab_.distributed()) {
+    v_stencil_.segment(first, ni) = v.head(ni);
+    deflection_stencil_.segment(first, ni) = deflection_;
+    slab_.exchange(v_stencil_.data());
+    slab_.exchange(deflection_stencil_.data());
+    values = v_stencil_.data();
+    deflection = deflection_stencil_.data();
+  }
   const std::vector<double>& film_slope = rows_->film_slope;
   const std::vector<char>& closed = *closed_;
   linalg::for_each_index(n_, [&](std::size_t k) {
     const auto kk = static_cast<Eigen::Index>(k);
-    if (topology_.fixed(k)) {
+    if (topology_.fixed(first_ + k)) {
       out[kk] = v[kk];
     } else {
       double sum = 0.0;
       for (std::size_t t = rows_->start[k]; t < rows_->start[k + 1]; ++t) {
         const LocalTerm& term = rows_->terms[t];
         const auto j = static_cast<Eigen::Index>(term.node);
-        sum += (term.by_pressure * dp_ds_[j] + term.by_fraction * dtheta_ds_[j]) * v[j];
-        sum += term.by_film * film_slope[term.node] * deflection_[j];
+        sum += (term.by_pressure * dp_ds_[j] + term.by_fraction * dtheta_ds_[j]) * values[j];
+        sum += term.by_film * film_slope[term.node] * deflection[j];
       }
       out[kk] = sum / scales_.mass;
     }
@@ -112,27 +161,47 @@ void MixedKrylovSolver::apply_jacobian(const Eigen::VectorXd& v, Eigen::VectorXd
     }
   });
   if (scales_.load_control) {
-    out[2 * ni] = scales_.area_over_load * (dp_ds_.dot(v.head(ni)) + P * v.segment(ni, ni).sum());
+    out[2 * ni] =
+        scales_.area_over_load * slab_.sum(dp_ds_.segment(first, ni).dot(v.head(ni)) + P * v.segment(ni, ni).sum());
   }
+}
+
+void MixedKrylovSolver::apply_preconditioner(const Eigen::VectorXd& in, Eigen::VectorXd& out) {
+  if (!block_) return preconditioner_->apply(in, out);
+  if (!slab_.distributed()) return block_->apply(in, out);
+  // Restricted additive Schwarz: the block's right-hand side (mass rows,
+  // then contact rows) with the neighbours' overlap rows, its approximate
+  // inverse, this process's rows of both halves.
+  const auto ni = static_cast<Eigen::Index>(n_);
+  const Eigen::Index block_n = block_in_.size() / 2;
+  slab_.rows_around(in.data(), below_, above_, 1, block_in_.data());
+  slab_.rows_around(in.data() + ni, below_, above_, 1, block_in_.data() + block_n);
+  block_->apply(block_in_, block_out_);
+  const auto own_at = static_cast<Eigen::Index>(below_ * slab_.whole_grid().nx());
+  out.resize(2 * ni);
+  out.head(ni) = block_out_.segment(own_at, ni);
+  out.tail(ni) = block_out_.segment(block_n + own_at, ni);
 }
 
 void MixedKrylovSolver::film_change(const Eigen::VectorXd& step, Eigen::VectorXd& out) {
   const auto ni = static_cast<Eigen::Index>(n_);
-  total_ = dp_ds_.cwiseProduct(step.head(ni)) + scales_.pressure * step.segment(ni, ni);
+  total_ = dp_ds_.segment(static_cast<Eigen::Index>(first_), ni).cwiseProduct(step.head(ni)) +
+           scales_.pressure * step.segment(ni, ni);
   out.resize(ni);
   op_.apply(std::span<const double>(total_.data(), n_), std::span<double>(out.data(), n_));
   if (scales_.load_control) out.array() += step[2 * ni];
 }
 
-// Mass row k of the sparse part into row_scratch_ (the identity on a fixed
-// node): the local terms' d/ds, and each open film term's by_film K around
-// its node through film_entry(node, by_film K); with `every_entry` also the
-// zero ones (closed film terms), so that the LU's pattern stays the same at
-// every Newton step. Adds the row's h0 derivative into krylov_.border_column.
+// Mass row k (an own node) of the sparse part into row_scratch_ (the
+// identity on a fixed node): the local terms' d/ds, and each open film
+// term's by_film K around its node through film_entry(whole-grid node,
+// by_film K); with `every_entry` also the zero ones (closed film terms), so
+// that the LU's pattern stays the same at every Newton step. Adds the row's
+// h0 derivative into krylov_.border_column. Columns are whole-grid nodes.
 template <class FilmEntry>
 void MixedKrylovSolver::mass_row(std::size_t k, bool every_entry, FilmEntry&& film_entry) {
-  if (topology_.fixed(k)) {
-    row_scratch_.emplace_back(static_cast<int>(k), 1.0);
+  if (topology_.fixed(first_ + k)) {
+    row_scratch_.emplace_back(static_cast<int>(slab_.whole_node(first_ + k)), 1.0);
     return;
   }
   const double mass = scales_.mass;
@@ -140,12 +209,13 @@ void MixedKrylovSolver::mass_row(std::size_t k, bool every_entry, FilmEntry&& fi
   for (std::size_t t = rows_->start[k]; t < rows_->start[k + 1]; ++t) {
     const LocalTerm& term = rows_->terms[t];
     const auto j = static_cast<Eigen::Index>(term.node);
-    row_scratch_.emplace_back(static_cast<int>(j),
+    row_scratch_.emplace_back(static_cast<int>(slab_.whole_node(term.node)),
                               (term.by_pressure * dp_ds_[j] + term.by_fraction * dtheta_ds_[j]) / mass);
     const double by_film = term.by_film * film_slope[term.node] / mass;
     krylov_.border_column[static_cast<Eigen::Index>(k)] += by_film;
     if (by_film == 0.0 && !every_entry) continue;
-    local_.for_each(term.node, [&](std::size_t node, double k_value) { film_entry(node, by_film * k_value); });
+    local_.for_each(slab_.whole_node(term.node),
+                    [&](std::size_t node, double k_value) { film_entry(node, by_film * k_value); });
   }
 }
 
@@ -153,17 +223,23 @@ bool MixedKrylovSolver::factorise_block(std::string& message) {
   const auto ni = static_cast<Eigen::Index>(n_);
   const double H = scales_.film;
   const std::vector<char>& closed = *closed_;
+  const bool spread = slab_.distributed();
   krylov_.border_column.setZero();
   matrix_.clear();
   film_matrix_.clear();
   row_scratch_.clear();
   film_scratch_.clear();
-  // M takes the film's K on the open cells (through dp/ds), F all of it.
+  for (std::size_t k = 0; k < n_; ++k) closed_stencil_[static_cast<Eigen::Index>(first_ + k)] = closed[k];
+  slab_.exchange(closed_stencil_.data());
+  // M takes the film's K on the open cells (through dp/ds), F all of it;
+  // on a slab M keeps the cells the stencil holds.
   for (std::size_t k = 0; k < n_; ++k) {
     mass_row(k, false, [&](std::size_t node, double entry) {
       film_scratch_.emplace_back(static_cast<int>(node), entry);
-      if (closed[node] == 0)
-        row_scratch_.emplace_back(static_cast<int>(node), entry * dp_ds_[static_cast<Eigen::Index>(node)]);
+      const std::size_t at = slab_.stencil_node(node);
+      if (at == FilmSlab::kOutside) return;
+      const auto aa = static_cast<Eigen::Index>(at);
+      if (closed_stencil_[aa] == 0.0) row_scratch_.emplace_back(static_cast<int>(node), entry * dp_ds_[aa]);
     });
     matrix_.append_row(row_scratch_);
     film_matrix_.append_row(film_scratch_);
@@ -173,9 +249,45 @@ bool MixedKrylovSolver::factorise_block(std::string& message) {
     const double by_film = smoothed ? rows_->contact_by_film[k] : 1.0;
     krylov_.border_column[ni + static_cast<Eigen::Index>(k)] = closed[k] != 0 ? by_film / H : 0.0;
   }
-  return block_->factorise(matrix_, film_matrix_, closed, dp_ds_, scales_.pressure, H,
-                           smoothed ? &rows_->contact_by_q : nullptr, smoothed ? &rows_->contact_by_film : nullptr,
-                           message);
+  bool factorised = false;
+  if (!spread) {
+    factorised = block_->factorise(matrix_, film_matrix_, near_, closed, dp_ds_, scales_.pressure, H,
+                                   smoothed ? &rows_->contact_by_q : nullptr,
+                                   smoothed ? &rows_->contact_by_film : nullptr, message);
+  } else {
+    // The block's rows and nodes from their owners: M, F, and per node the
+    // closed row, dp/ds and the smoothed weights.
+    slab_.gather_rows(matrix_, below_, above_, block_mass_, block_scratch_);
+    slab_.gather_rows(film_matrix_, below_, above_, block_film_, block_scratch_);
+    constexpr std::size_t kNodeData = 4;
+    node_data_.resize(n_ * kNodeData);
+    for (std::size_t k = 0; k < n_; ++k) {
+      node_data_[k * kNodeData] = closed[k];
+      node_data_[k * kNodeData + 1] = dp_ds_[static_cast<Eigen::Index>(first_ + k)];
+      node_data_[k * kNodeData + 2] = smoothed ? rows_->contact_by_q[k] : 0.0;
+      node_data_[k * kNodeData + 3] = smoothed ? rows_->contact_by_film[k] : 0.0;
+    }
+    const std::size_t block_n = static_cast<std::size_t>(block_in_.size() / 2);
+    block_node_data_.resize(block_n * kNodeData);
+    slab_.rows_around(node_data_.data(), below_, above_, kNodeData, block_node_data_.data());
+    block_closed_.resize(block_n);
+    block_dp_ds_.resize(static_cast<Eigen::Index>(block_n));
+    block_by_q_.resize(block_n);
+    block_by_film_.resize(block_n);
+    for (std::size_t k = 0; k < block_n; ++k) {
+      block_closed_[k] = block_node_data_[k * kNodeData] != 0.0 ? 1 : 0;
+      block_dp_ds_[static_cast<Eigen::Index>(k)] = block_node_data_[k * kNodeData + 1];
+      block_by_q_[k] = block_node_data_[k * kNodeData + 2];
+      block_by_film_[k] = block_node_data_[k * kNodeData + 3];
+    }
+    factorised = block_->factorise(block_mass_, block_film_, block_near_, block_closed_, block_dp_ds_, scales_.pressure,
+                                   H, smoothed ? &block_by_q_ : nullptr, smoothed ? &block_by_film_ : nullptr, message);
+  }
+  if (!slab_.all(factorised)) {
+    if (factorised) message = "the mixed film's preconditioner could not be factorised on another process";
+    return false;
+  }
+  return true;
 }
 
 bool MixedKrylovSolver::factorise(std::string& message) {
@@ -183,6 +295,7 @@ bool MixedKrylovSolver::factorise(std::string& message) {
     if (!factorise_block(message)) return false;
     return factorise_border(message);
   }
+  // The sparse LU (one process: the stencil is the grid).
   const auto ni = static_cast<Eigen::Index>(n_);
   const double P = scales_.pressure, H = scales_.film;
   const std::vector<char>& closed = *closed_;
@@ -222,7 +335,7 @@ bool MixedKrylovSolver::factorise(std::string& message) {
 bool MixedKrylovSolver::factorise_border(std::string& message) {
   if (!scales_.load_control) return true;
   const auto ni = static_cast<Eigen::Index>(n_);
-  krylov_.load_row.head(ni) = scales_.area_over_load * dp_ds_;
+  krylov_.load_row.head(ni) = scales_.area_over_load * dp_ds_.segment(static_cast<Eigen::Index>(first_), ni);
   krylov_.load_row.tail(ni).setConstant(scales_.area_over_load * scales_.pressure);
   return krylov_.factorise_border("the mixed film's preconditioner is singular: no pressure balances the load",
                                   message);
@@ -237,11 +350,13 @@ KrylovOutcome MixedKrylovSolver::solve(const MixedRows& rows, const std::vector<
   scales_ = scales;
   scales_.load_control = load_control;
   for (std::size_t j = 0; j < n_; ++j) {
-    const auto jj = static_cast<Eigen::Index>(j);
-    const bool fixed = topology_.fixed(j);
+    const auto jj = static_cast<Eigen::Index>(first_ + j);
+    const bool fixed = topology_.fixed(first_ + j);
     dp_ds_[jj] = !fixed && branch_full[j] != 0 ? scales.pressure : 0.0;
     dtheta_ds_[jj] = !fixed && branch_full[j] == 0 ? 1.0 : 0.0;
   }
+  slab_.exchange(dp_ds_.data());
+  slab_.exchange(dtheta_ds_.data());
   // The retry after a stale preconditioner failed goes on from where it
   // stopped (GMRES's residual only falls); GMRES's estimate and the true
   // residual part by rounding: allow 10x.

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "film_krylov_solver.hpp"
+#include "film_slab.hpp"
 #include "halfspace/lubrication/reynolds_stencil.hpp"
 #include "halfspace/operators/influence_operator.hpp"
 #include "local_influence.hpp"
@@ -32,16 +33,17 @@ namespace halfspace::lubrication::detail {
 using MixedKrylovSettings = FilmKrylovSettings;
 
 // The Newton system's state at one step: the mass rows' local derivatives
-// in CSR form (detail::linearise's terms, one row per node), which nodes are
-// on the full-film branch, which contact rows are closed (impose h = 0), and
-// how much of each node's film change reaches the Reynolds equation (the
-// slope of reynolds_film: 0 on the boundary film, 1 above 1.5 h_b).
+// in CSR form (detail::linearise's terms, one row per own node, the terms'
+// nodes the stencil's), which nodes are on the full-film branch, which
+// contact rows are closed (impose h = 0), and how much of each node's film
+// change reaches the Reynolds equation (the slope of reynolds_film: 0 on
+// the boundary film, 1 above 1.5 h_b; on the stencil, halo included).
 struct MixedRows {
   std::vector<std::size_t> start;  // n + 1 offsets into terms
   std::vector<LocalTerm> terms;
   std::vector<double> film_slope;  // dh_R / dh
   // Smoothed contact rows (empty: the min's branches): d row / d q and
-  // d row / d (h / H).
+  // d row / d (h / H), on the own nodes.
   std::vector<double> contact_by_q, contact_by_film;
 };
 
@@ -64,14 +66,19 @@ class MixedKrylovSolver {
  public:
   // Reads the translation-invariant K around a node off one product of `op`;
   // the system has the h0 column and load row under load control.
+  // `topology` is the stencil of `slab`; the unknowns are this process's
+  // [s, q] and h0. On several processes the block preconditioner is a
+  // restricted additive Schwarz one, as the EHL film's
+  // (film_krylov_solver.hpp), and the sparse LU is refused (InputError).
+  // Collective on several processes, as solve is.
   MixedKrylovSolver(InfluenceOperator& op, const ReynoldsStencil& topology, const MixedKrylovSettings& settings,
-                    bool load_control);
+                    bool load_control, const FilmSlab& slab);
 
   // K_00: a cell's displacement under unit pressure on itself.
   double self_influence() const { return local_.self(); }
 
   // Solves J step = -residual (2n + 1 or 2n entries) for the rows `rows`,
-  // the branches `branch_full` and `closed` and the scales (whose
+  // the own nodes' branches `branch_full` and `closed` and the scales (whose
   // load_control must be the constructor's), to the relative
   // residual max(settings.tolerance, forcing); from `step` as given with
   // `warm` (a branch pass's step from the last pass's), else from 0. The
@@ -82,37 +89,55 @@ class MixedKrylovSolver {
                       const MixedScales& scales, double forcing, const Eigen::VectorXd& residual, Eigen::VectorXd& step,
                       bool warm);
 
-  // The film's change K (dp_f + dp_c) + dh0 (n entries) under `step` on the
-  // branches of the last solve: one operator product.
+  // The film's change K (dp_f + dp_c) + dh0 (n entries, the own nodes')
+  // under `step` on the branches of the last solve: one operator product.
   void film_change(const Eigen::VectorXd& step, Eigen::VectorXd& out);
 
  private:
   void apply_jacobian(const Eigen::VectorXd& v, Eigen::VectorXd& out);
+  void apply_preconditioner(const Eigen::VectorXd& in, Eigen::VectorXd& out);
   bool factorise(std::string& message);
+  template <class FilmEntry>
+  void mass_row(std::size_t k, bool every_entry, FilmEntry&& film_entry);
+  bool factorise_block(std::string& message);
+  bool factorise_border(std::string& message);
 
   InfluenceOperator& op_;
   const ReynoldsStencil& topology_;
   MixedKrylovSettings settings_;
-  std::size_t n_;
+  const FilmSlab& slab_;
+  std::size_t n_;         // this process's nodes
+  std::size_t first_;     // the stencil node of the first of them
   Eigen::Index m_;        // unknowns: 2n (+ 1 with h0)
   LocalInfluence local_;  // K within settings.neighbourhood cells, for the preconditioner
   // The current linear system.
   const MixedRows* rows_ = nullptr;
   const std::vector<char>* closed_ = nullptr;
   MixedScales scales_;
-  Eigen::VectorXd dp_ds_, dtheta_ds_, total_, deflection_;
+  // dp/ds, dtheta/ds and the closed rows (1 or 0) on the stencil; the
+  // product's own rows; on several processes v_s and the film's change on
+  // the stencil too.
+  Eigen::VectorXd dp_ds_, dtheta_ds_, closed_stencil_, total_, deflection_, v_stencil_, deflection_stencil_;
   // The preconditioner: B (2n x 2n, sparse) bordered by the h0 column and
   // the load row under load control.
   CsrMatrix matrix_;
   std::vector<std::pair<int, double>> row_scratch_, film_scratch_;
   std::unique_ptr<FilmPreconditioner> preconditioner_;
-  // The block preconditioner: the mass rows' M and F (n x n).
-  CsrMatrix film_matrix_;
+  // The block preconditioner: the mass rows' M and F and the truncated K
+  // around each node (n x n, columns whole-grid nodes).
+  CsrMatrix film_matrix_, near_;
   std::unique_ptr<MixedBlockPreconditioner> block_;
-  template <class FilmEntry>
-  void mass_row(std::size_t k, bool every_entry, FilmEntry&& film_entry);
-  bool factorise_block(std::string& message);
-  bool factorise_border(std::string& message);
+  // On several processes, the block of this process's rows with the
+  // overlap: its rows below and above, M, F and K near each node, the
+  // nodes' closed rows, dp/ds and smoothed weights, and its vectors.
+  std::size_t below_ = 0, above_ = 0;
+  CsrMatrix block_mass_, block_film_, block_near_;
+  FilmSlab::RowScratch block_scratch_;
+  std::vector<double> node_data_, block_node_data_;
+  std::vector<char> block_closed_;
+  Eigen::VectorXd block_dp_ds_;
+  std::vector<double> block_by_q_, block_by_film_;
+  Eigen::VectorXd block_in_, block_out_;
   KrylovNewtonStep krylov_;
 };
 

@@ -3,6 +3,7 @@
 // contact, the film as the Reynolds equation sees it (reynolds_film),
 // and Coulomb's mu p_c along the sliding velocity on contact cells (no
 // sliding: no asperity friction).
+#include <array>
 #include <cmath>
 
 #include "halfspace/lubrication/film_shear.hpp"
@@ -11,13 +12,29 @@
 namespace halfspace::lubrication {
 
 void add_mixed_friction(const Grid& grid, const FlowConditions& conditions, const LubricantLaws& laws,
-                        const MixedFrictionOptions& friction, double boundary_film, MixedFilm& film) {
-  const Eigen::ArrayXd seen_film = reynolds_film(film.film, boundary_film);
-  const FilmShear fluid = film_shear(grid, conditions, laws, friction.shear, seen_film, film.fluid_pressure,
-                                     film.fluid_fraction, &film.contact_pressure);
+                        const MixedFrictionOptions& friction, double boundary_film, MixedFilm& film,
+                        const FilmRows* rows) {
+  FilmShear fluid;
+  std::array<double, 1> contact_sum{(film.contact_pressure.max(0.0)).sum()};
+  if (rows == nullptr) {
+    const Eigen::ArrayXd seen_film = reynolds_film(film.film, boundary_film);
+    fluid = film_shear(grid, conditions, laws, friction.shear, seen_film, film.fluid_pressure, film.fluid_fraction,
+                       &film.contact_pressure);
+  } else {
+    // The pressure gradient reaches the neighbours' rows: the fields on the
+    // stencil.
+    const auto stencil = [&](const Eigen::ArrayXd& field) {
+      return rows->stencil_field({field.data(), static_cast<std::size_t>(field.size())});
+    };
+    const Eigen::ArrayXd seen_film = reynolds_film(stencil(film.film), boundary_film);
+    const Eigen::ArrayXd contact = stencil(film.contact_pressure);
+    fluid = film_shear(rows->stencil_grid(), rows->stencil_conditions(), laws, friction.shear, seen_film,
+                       stencil(film.fluid_pressure), stencil(film.fluid_fraction), &contact, rows);
+    rows->sum(contact_sum);
+  }
   const std::array<double, 2>& sliding = conditions.sliding_velocity;
   const double sliding_speed = std::hypot(sliding[0], sliding[1]);
-  const double contact_load = (film.contact_pressure.max(0.0)).sum() * grid.cell_area();
+  const double contact_load = contact_sum[0] * grid.cell_area();
   for (int axis = 0; axis < 2; ++axis) {
     film.fluid_friction_force[axis] = fluid.friction_force[axis];
     film.contact_friction_force[axis] =

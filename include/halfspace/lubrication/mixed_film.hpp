@@ -202,14 +202,18 @@ MixedFilm solve_mixed_film(InfluenceOperator& op, const Eigen::ArrayXd& gap, con
 // Throws InputError naming `surface` and the grid if the linear solve
 // `options` choose for `grid` cannot take it: the dense path beyond
 // kMaxMixedFilmNodes nodes, or the GMRES path's memory estimate above the
-// memory available. solve_mixed_film checks the same.
+// memory available, for `nodes` of the grid's nodes (0: all of them; on
+// several processes a process's share). solve_mixed_film checks the same.
 void require_mixed_film_fits(const Grid& grid, const MixedFilmOptions& options,
-                             std::string_view surface = "the surface");
+                             std::string_view surface = "the surface", std::size_t nodes = 0);
 
 // The friction forces and coefficient of `film` (filled into it), from its
-// pressures, fluid fraction and film; called by solve_mixed_film.
+// pressures, fluid fraction and film; called by solve_mixed_film. With
+// `rows` (film_rows.hpp) the film's fields are this process's rows of the
+// grid and the forces the whole film's (collective).
 void add_mixed_friction(const Grid& grid, const FlowConditions& conditions, const LubricantLaws& laws,
-                        const MixedFrictionOptions& friction, double boundary_film, MixedFilm& film);
+                        const MixedFrictionOptions& friction, double boundary_film, MixedFilm& film,
+                        const FilmRows* rows = nullptr);
 
 // One point of a Stribeck curve.
 struct StribeckPoint {
