@@ -374,12 +374,14 @@ int run_elastic(const LubricateOptions& o, const HeightMap& map, const Grid& gri
   return report(o, map, summary, film.converged(), problem, place.first);
 }
 
-// The film's fields and the mixed film's own attributes, beyond the summary's.
-void write_mixed_fields(const io::Hdf5Node& root, const std::vector<std::size_t>& shape, std::size_t size,
+// The film's fields (the rows `place` holds) and the mixed film's own
+// attributes, beyond the summary's.
+void write_mixed_fields(const io::Hdf5Node& root, const std::vector<std::size_t>& shape, const FilmPlace& place,
                         const lubrication::MixedFilm& film, const lubrication::MixedFilmOptions& options, double e_star,
                         const lubrication::LubricantLaws& laws, double viscosity) {
   const auto field = [&](std::string_view name, const Eigen::ArrayXd& values, std::string_view unit) {
-    root.write_dataset(name, shape, std::span<const double>(values.data(), size), unit);
+    root.write_dataset_rows(name, shape, place.first_row,
+                            std::span<const double>(values.data(), static_cast<std::size_t>(values.size())), unit);
   };
   field("fluid_pressure", film.fluid_pressure, "Pa");
   field("contact_pressure", film.contact_pressure, "Pa");
@@ -420,6 +422,9 @@ void write_stribeck_csv(const std::string& path, const std::vector<lubrication::
   if (!out) throw InputError(fmt::format("writing the Stribeck curve to {} failed", path));
 }
 
+// The mixed film on the whole map, or on the rows `place` holds (the
+// film's solver on an operator of slab transforms; the same code), or a
+// Stribeck sweep, whole or with its speeds shared out.
 int run_mixed(const LubricateOptions& o, const HeightMap& map, const Grid& grid, const FilmPlace& place,
               const lubrication::LubricationProblem& problem) {
   const lubrication::FlowConditions& conditions = problem.conditions;
@@ -427,8 +432,13 @@ int run_mixed(const LubricateOptions& o, const HeightMap& map, const Grid& grid,
   const lubrication::MixedFilmOptions& options = problem.mixed;
   const double e_star = problem.e_star;
   if (o.stribeck) io::check_output_path(*o.stribeck);
-  const Eigen::ArrayXd gap = map.heights.maxCoeff() - map.heights;
-  FftInfluenceOperator op(grid, e_star);
+  // On slabs the reductions over the processes.
+  const std::unique_ptr<lubrication::FilmRows> rows = place.film_rows(grid, conditions);
+  const double highest = rows ? rows->max(map.heights.maxCoeff()) : map.heights.maxCoeff();
+  const Eigen::ArrayXd gap = highest - map.heights;
+  const std::shared_ptr<operators::SpectralTransforms> transforms = place.transforms(grid);
+  FftInfluenceOperator op =
+      transforms ? FftInfluenceOperator(grid, e_star, transforms) : FftInfluenceOperator(grid, e_star);
   lubrication::FlowConditions used = conditions;
   lubrication::MixedFilm film;
   bool all_converged = true;
@@ -479,17 +489,26 @@ int run_mixed(const LubricateOptions& o, const HeightMap& map, const Grid& grid,
   summary.friction_force_x = film.fluid_friction_force[0] + film.contact_friction_force[0];
   summary.friction_force_y = film.fluid_friction_force[1] + film.contact_friction_force[1];
   summary.friction_coefficient = film.friction_coefficient;
-  // With the speeds shared out, the first process holds the last film whole
-  // (stribeck_sweep) and writes it.
-  agreed([&] {
-    if (!place.first) return;
-    write_film_file(
-        o, map, grid, summary, film.pressure, film.film, film.fluid_fraction, [&](const io::Hdf5Node& root) {
-          write_mixed_fields(root, io::field_shape(grid), grid.size(), film, options, e_star, laws, used.viscosity);
-          root.write_double_attribute("entrainment_speed",
-                                      std::hypot(used.entrainment_velocity[0], used.entrainment_velocity[1]));
-        });
-  });
+  // One time in the file: every process writes the same attributes.
+  if (rows) summary.solve_seconds = rows->max(summary.solve_seconds);
+  const auto write = [&](const FilmPlace& at) {
+    write_film_file(o, map, grid, at, summary, film.pressure, film.film, film.fluid_fraction,
+                    [&](const io::Hdf5Node& root) {
+                      write_mixed_fields(root, io::field_shape(grid), at, film, options, e_star, laws, used.viscosity);
+                      root.write_double_attribute(
+                          "entrainment_speed", std::hypot(used.entrainment_velocity[0], used.entrainment_velocity[1]));
+                    });
+  };
+  if (!place.whole) {
+    // On slabs every process writes its rows (the parallel writer).
+    write(place);
+  } else {
+    // With the speeds shared out, the first process holds the last film
+    // whole (stribeck_sweep) and writes it.
+    agreed([&] {
+      if (place.first) write(FilmPlace{});
+    });
+  }
   const int code = report(o, map, summary, all_converged, problem, place.first);
   if (code == kExitOk && !o.quiet && place.first) {
     fmt::print("  {:<15} {:.4g} of the load, area {:.4g} of the cells\n", "contact", film.contact_load_fraction,
@@ -663,12 +682,13 @@ int solve_film(const LubricateOptions& o) {
   io::check_output_path(*o.output);
   if (o.stribeck) io::check_output_path(*o.stribeck);
 
-  // On several processes the steady rigid and EHL films' solvers run on
-  // slabs of rows (mpi/slab_film_rows.hpp, lubrication/elastic_film.hpp), a
-  // mixed film's Stribeck sweep shares out its speeds, and the first
-  // process solves the others.
+  // On several processes the steady rigid, EHL and mixed films' solvers
+  // run on slabs of rows (mpi/slab_film_rows.hpp; lubrication/elastic_film.hpp
+  // and mixed_film.hpp on a distributed operator), a mixed film's Stribeck
+  // sweep shares out its speeds, and the first process solves the others.
   const bool on_rows =
-      (problem.kind == lubrication::FilmKind::rigid || problem.kind == lubrication::FilmKind::elastic) &&
+      (problem.kind == lubrication::FilmKind::rigid || problem.kind == lubrication::FilmKind::elastic ||
+       (problem.kind == lubrication::FilmKind::mixed && !problem.speeds)) &&
       !problem.transient;
   const FilmSpread spread = on_rows ? FilmSpread::row_slabs
                             : problem.kind == lubrication::FilmKind::mixed && problem.speeds
