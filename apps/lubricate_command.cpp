@@ -254,14 +254,6 @@ void write_film_file(const LubricateOptions& o, const HeightMap& map, const Grid
   });
 }
 
-// The same for the whole film on this process.
-void write_film_file(const LubricateOptions& o, const HeightMap& map, const Grid& grid,
-                     const lubrication::FilmSummary& summary, const Eigen::ArrayXd& pressure,
-                     const Eigen::ArrayXd& film, const Eigen::ArrayXd& fluid_fraction,
-                     const std::function<void(const io::Hdf5Node&)>& more) {
-  write_film_file(o, map, grid, FilmPlace{}, summary, pressure, film, fluid_fraction, more);
-}
-
 // What an elastic and a mixed film report alike: the summary (the film's
 // own cavitated fraction and film solves given), and the body's and the
 // lubricant's attributes.
@@ -694,22 +686,28 @@ int solve_film(const LubricateOptions& o) {
                             : problem.kind == lubrication::FilmKind::mixed && problem.speeds
                                 ? FilmSpread::sweep_speeds
                                 : FilmSpread::first_process;
-  return run_film_everywhere([&] { return read_film_map(o, surface); },
-                             [&](HeightMap& map, const FilmPlace& place) {
-                               const Grid grid = map.dimension == 1
-                                                     ? Grid::line(map.nx, map.dx, problem.boundary)
-                                                     : Grid::plane(map.nx, map.ny, map.dx, map.dy, problem.boundary);
-                               problem.check_grid(grid, spelling, map.source);
-                               if (problem.kind == lubrication::FilmKind::mixed) {
-                                 return run_mixed(o, map, grid, place, problem);
-                               }
-                               if (problem.kind == lubrication::FilmKind::elastic) {
-                                 return run_elastic(o, map, grid, place, problem);
-                               }
-                               if (problem.transient) return run_transient(o, map, grid, problem);
-                               return run_rigid(o, map, grid, place, problem);
-                             },
-                             spread);
+  return run_film_everywhere(
+      [&] { return read_film_map(o, surface); },
+      [&](HeightMap& map, const FilmPlace& place) {
+        const Grid grid = map.dimension == 1 ? Grid::line(map.nx, map.dx, problem.boundary)
+                                             : Grid::plane(map.nx, map.ny, map.dx, map.dy, problem.boundary);
+        if (place.whole) {
+          problem.check_grid(grid, spelling, map.source);
+        } else {
+          // Each process checks its share of the memory, agreed.
+          agree_everywhere(
+              [&] { problem.check_grid(grid, spelling, map.source, static_cast<std::size_t>(map.heights.size())); });
+        }
+        if (problem.kind == lubrication::FilmKind::mixed) {
+          return run_mixed(o, map, grid, place, problem);
+        }
+        if (problem.kind == lubrication::FilmKind::elastic) {
+          return run_elastic(o, map, grid, place, problem);
+        }
+        if (problem.transient) return run_transient(o, map, grid, problem);
+        return run_rigid(o, map, grid, place, problem);
+      },
+      spread);
 }
 
 // --plot: the tool is found (and its packages checked) before the solve; the

@@ -249,7 +249,9 @@ ElasticFilm detail::solve_film_newton(InfluenceOperator& op, const Eigen::ArrayX
         grid.shape_string(), n, kMaxElasticFilmNodes));
   }
   const detail::FilmKrylovSettings krylov_settings = detail::film_krylov_settings(options);
-  if (krylov) detail::require_film_memory(grid, options, n);
+  if (krylov) {
+    detail::agree_on_input(slab.communicator(), [&] { detail::require_film_memory(grid, options, n); });
+  }
   if (!slab.all(static_cast<std::size_t>(gap.size()) == n && gap.allFinite())) {
     throw InputError(fmt::format("EHL gap has {} values, the {} grid has {} cells{}; every value must be finite",
                                  gap.size(), grid.shape_string(), grid.size(),

@@ -118,7 +118,7 @@ ElasticFilm solve_elastic_film(InfluenceOperator& op, const Eigen::ArrayXd& gap,
   if (!sequence) return detail::solve_film_newton(op, gap, conditions, laws, options, start);
   // The fine grid's memory first: the coarse grids would take minutes on a
   // grid the fine solve cannot hold.
-  detail::require_film_memory(grid, options, op.local_size());
+  detail::agree_on_input(op.communicator(), [&] { detail::require_film_memory(grid, options, op.local_size()); });
   ElasticFilm record;
   // Up to kMaxColdRestartNodes a failed coarse film is dropped for the cold
   // start; above, the cold start cannot be expected to converge, and a

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <span>
 #include <stdexcept>
+#include <string>
 
 #include "halfspace/error.hpp"
 
@@ -171,6 +172,19 @@ double FilmSlab::dot(Eigen::Ref<const Eigen::VectorXd> a, Eigen::Ref<const Eigen
 double FilmSlab::norm(Eigen::Ref<const Eigen::VectorXd> v, Eigen::Index replicated) const {
   if (!distributed()) return v.norm();
   return std::sqrt(dot(v, v, replicated));
+}
+
+void agree_on_input(const linalg::Communicator& comm, const std::function<void()>& check) {
+  if (comm.size() <= 1) return check();
+  std::string message;
+  try {
+    check();
+  } catch (const InputError& error) {
+    message = error.what();
+  }
+  if (comm.min(message.empty() ? 1.0 : 0.0) > 0.5) return;
+  if (!message.empty()) throw InputError(message);
+  throw InputError("another process's share of the film does not fit (its message is that process's)");
 }
 
 void FilmSlabRows::complete(Eigen::ArrayXd& pressure, Eigen::ArrayXd& fluid_fraction) {

@@ -12,6 +12,7 @@
 
 #include <Eigen/Core>
 #include <cstddef>
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -117,6 +118,12 @@ class FilmSlab {
   Grid stencil_grid_, own_grid_;
   FlowConditions stencil_conditions_;
 };
+
+// Runs `check` on every process of `comm`: where it throws InputError on
+// some process (a memory check of its share), every process throws, that
+// process with its message, the others naming it. Collective; on one
+// process `check()`.
+void agree_on_input(const linalg::Communicator& comm, const std::function<void()>& check);
 
 // A slab seen as the film pipeline's FilmRows (film_rows.hpp), for what
 // follows a Newton solve on slabs (the mixed film's shear, film_shear.hpp):

@@ -397,7 +397,8 @@ std::string LubricationProblem::failure_hint(const OptionSpelling& spelling) con
       name("speeds"), name("force"), solver(mixed.max_iterations, mixed.tolerance));
 }
 
-void LubricationProblem::check_grid(const Grid& grid, const OptionSpelling& spelling, std::string_view surface) const {
+void LubricationProblem::check_grid(const Grid& grid, const OptionSpelling& spelling, std::string_view surface,
+                                    std::size_t nodes) const {
   // A film periodic along every axis has no pressure level and no supply:
   // named here by the options that made it so (FlowConditions::validate
   // cannot name them).
@@ -416,7 +417,7 @@ void LubricationProblem::check_grid(const Grid& grid, const OptionSpelling& spel
   } catch (const OptionError& error) {
     throw spelled_film_error(error, spelling);
   }
-  if (kind == FilmKind::mixed) require_mixed_film_fits(grid, mixed, surface);
+  if (kind == FilmKind::mixed) require_mixed_film_fits(grid, mixed, surface, nodes);
 }
 
 std::span<const LubricationOptionName> lubrication_option_names() {

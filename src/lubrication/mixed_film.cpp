@@ -310,7 +310,7 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
   if (spread && options.linear_solve == FilmLinearSolve::dense) {
     throw InputError("the mixed film's dense linear solve runs on one process: use the gmres solve on several");
   }
-  require_mixed_film_fits(grid, options, "the mixed film", n);
+  detail::agree_on_input(slab.communicator(), [&] { require_mixed_film_fits(grid, options, "the mixed film", n); });
   const bool krylov = spread || takes_krylov(grid, options);
   const detail::MixedKrylovSettings krylov_settings = mixed_krylov_settings(options);
   if (!slab.all(static_cast<std::size_t>(gap.size()) == n && gap.allFinite())) {

@@ -182,7 +182,8 @@ MixedFilm solve_sequenced(InfluenceOperator& op, const Eigen::ArrayXd& gap, cons
   }
   // The fine grid's memory first: the coarse grids would take minutes on a
   // grid the fine solve cannot hold.
-  require_mixed_film_fits(grid, options, "the mixed film", op.local_size());
+  detail::agree_on_input(op.communicator(),
+                         [&] { require_mixed_film_fits(grid, options, "the mixed film", op.local_size()); });
   MixedFilm record;
   const std::optional<MixedFilm> coarse_start = sequenced_start(op, gap, conditions, laws, options, effort, record);
   MixedFilm result;

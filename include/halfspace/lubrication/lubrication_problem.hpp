@@ -9,6 +9,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <optional>
 #include <span>
 #include <string>
@@ -114,11 +115,12 @@ struct LubricationProblem {
   std::optional<TransientFilmOptions> transient;
 
   // The grid's rules: the flow's (FlowConditions::validate(grid)) and the
-  // mixed film's (require_mixed_film_fits); `surface` names the heights in
-  // messages.
+  // mixed film's (require_mixed_film_fits, for `nodes` of the grid's nodes:
+  // 0 all of them, on slabs of rows a process's share); `surface` names the
+  // heights in messages.
   // Throws InputError naming the option.
-  void check_grid(const Grid& grid, const OptionSpelling& spelling = {},
-                  std::string_view surface = "the surface") const;
+  void check_grid(const Grid& grid, const OptionSpelling& spelling = {}, std::string_view surface = "the surface",
+                  std::size_t nodes = 0) const;
 
   // What to try where the film did not converge, naming the options that
   // help as `spelling` writes them: "to try: ...". The elastic and mixed
