@@ -164,8 +164,8 @@ double detail::film_flux_residual(const FilmSlab& slab, const ReynoldsStencil& t
   const double uy = conditions.entrainment_velocity[1];
   // The upwinded mass flux density through the face downstream of `up`.
   const auto carried = [&](std::size_t up, std::size_t up_up) {
-    return up_up == Neighbours::kNone || scheme == CouetteScheme::first_order ? mass[up]
-                                                                              : 1.5 * mass[up] - 0.5 * mass[up_up];
+    if (up_up == Neighbours::kNone || scheme == CouetteScheme::first_order) return mass[up];
+    return std::max(1.5 * mass[up] - 0.5 * mass[up_up], 0.5 * mass[up]);  // limited as the Newton rows are
   };
   for (std::size_t k = 0; k < n; ++k) {
     const Neighbours nb = topology.neighbours(k);

@@ -136,6 +136,13 @@ struct LocalTerm {
   double by_pressure, by_film, by_fraction;
 };
 
+// The second-order Couette flux 1.5 m_up - 0.5 m_upup, limited to at least
+// 0.5 m_up (so that no face carries mass upstream): whether the limit
+// holds, i.e. the flux is 0.5 m_up.
+inline bool second_order_flux_limited(double up_mass, double up_up_mass) {
+  return 1.5 * up_mass - 0.5 * up_up_mass < 0.5 * up_mass;
+}
+
 // The balance of node k (per unit area, m/s) and its local derivatives
 // (up to 5 faces + 3 Couette terms).
 inline double linearise(const ReynoldsStencil& topology, std::size_t k, const NodeCoefficients& c,
@@ -165,11 +172,27 @@ inline double linearise(const ReynoldsStencil& topology, std::size_t k, const No
   // node (first order), or at second order the linear extrapolation 1.5
   // m_up - 0.5 m_upup (Venner & Lubrecht 2000's second-order upstream
   // scheme), first order where the upstream node has no upstream neighbour
-  // (next to a fixed edge).
+  // (next to a fixed edge). The extrapolation is limited to at least 0.5
+  // m_up (second_order_flux): where the film's mass flux falls by more than
+  // half in a cell (its rupture behind a constriction), 1.5 m_up - 0.5
+  // m_upup turns negative, and with oblique entrainment a cavitated node's
+  // balance then asked for a fluid fraction below 0 (the Newton iteration
+  // stalled at a mass residual of 1e-4; docs/development-log.md,
+  // 2026-12-02, thirty-second session).
   const auto mass = [&](std::size_t node, double coefficient) {
     balance += coefficient * c.rho[node] * h[node] * theta[node];
     terms.push_back({node, coefficient * c.rho_p[node] * h[node] * theta[node], coefficient * c.rho[node] * theta[node],
                      coefficient * c.rho[node] * h[node]});
+  };
+  const auto node_mass = [&](std::size_t node) { return c.rho[node] * h[node] * theta[node]; };
+  // The limited second-order flux from `up` with `up_up` behind it.
+  const auto extrapolated = [&](std::size_t up, std::size_t up_up, double coefficient) {
+    if (second_order_flux_limited(node_mass(up), node_mass(up_up))) {
+      mass(up, 0.5 * coefficient);
+    } else {
+      mass(up, 1.5 * coefficient);
+      mass(up_up, -0.5 * coefficient);
+    }
   };
   const auto couette = [&](double coefficient, auto upstream_of) {
     if (coefficient == 0.0) return;
@@ -184,15 +207,13 @@ inline double linearise(const ReynoldsStencil& topology, std::size_t k, const No
       mass(up, -coefficient);
       return;
     }
-    mass(k, 1.5 * coefficient);
-    mass(up, -0.5 * coefficient);
+    extrapolated(k, up, coefficient);
     // In through the upstream face.
     const std::size_t up_up = upstream_of(topology.neighbours(up));
     if (up_up == Neighbours::kNone) {
       mass(up, -coefficient);
     } else {
-      mass(up, -1.5 * coefficient);
-      mass(up_up, 0.5 * coefficient);
+      extrapolated(up, up_up, -coefficient);
     }
   };
   couette(topology.couette_x(), [&](const Neighbours& n) { return topology.upstream_x(n); });
