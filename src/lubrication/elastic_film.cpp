@@ -501,14 +501,8 @@ ElasticFilm detail::solve_film_newton(InfluenceOperator& op, const Eigen::ArrayX
   result.offset = x.offset;
   result.load = slab.sum(result.pressure.sum()) * area;
   // The contact's centre: the first node of the smallest undeformed gap.
-  Eigen::Index centre = 0;
-  const double smallest_gap = slab.min(ni > 0 ? gap.minCoeff(&centre) : INFINITY);
-  const bool holds_centre = ni > 0 && gap[centre] == smallest_gap;
-  const double centre_node = slab.min(
-      holds_centre ? static_cast<double>(slab.whole_node(first + static_cast<std::size_t>(centre))) : INFINITY);
-  const bool owns_centre =
-      holds_centre && static_cast<double>(slab.whole_node(first + static_cast<std::size_t>(centre))) == centre_node;
-  result.central_film_thickness = slab.max(owns_centre ? result.film[centre] : -INFINITY);
+  const Eigen::Index centre = slab.centre_node(gap);
+  result.central_film_thickness = slab.max(centre >= 0 ? result.film[centre] : -INFINITY);
   result.minimum_film_thickness = slab.min(ni > 0 ? result.film.minCoeff() : INFINITY);
   result.max_pressure = slab.max(ni > 0 ? result.pressure.maxCoeff() : -INFINITY);
   // The check apart from the iteration: the flux-form residual, the

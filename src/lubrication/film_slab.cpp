@@ -157,6 +157,16 @@ void FilmSlab::gather_rows(const CsrMatrix& own, std::size_t below, std::size_t 
   }
 }
 
+Eigen::Index FilmSlab::centre_node(const Eigen::ArrayXd& gap) const {
+  Eigen::Index centre = 0;
+  const bool any = gap.size() > 0;
+  const double smallest = min(any ? gap.minCoeff(&centre) : INFINITY);
+  const bool holds = any && gap[centre] == smallest;
+  const auto node = static_cast<double>(whole_node(own_first_ + static_cast<std::size_t>(centre)));
+  const double first = min(holds ? node : INFINITY);
+  return holds && node == first ? centre : -1;
+}
+
 double FilmSlab::sum(double local) const {
   comm_.sum(std::span(&local, 1));
   return local;

@@ -88,6 +88,11 @@ class FilmSlab {
   void gather_rows(const CsrMatrix& own, std::size_t below, std::size_t above, CsrMatrix& block,
                    RowScratch& scratch) const;
 
+  // The contact's centre, the first node of the whole grid with the smallest
+  // of `gap` (this process's nodes): its index among this process's nodes
+  // if it holds it, else -1. Collective.
+  Eigen::Index centre_node(const Eigen::ArrayXd& gap) const;
+
   // Reductions over the processes (the identity on one).
   double sum(double local) const;
   double max(double local) const { return comm_.max(local); }

@@ -747,13 +747,7 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
   result.contact_area = in_contact * area;
   result.contact_area_fraction = in_contact / whole_nodes;
   // The contact's centre: the first node of the smallest undeformed gap.
-  Eigen::Index centre = 0;
-  const double smallest_gap = slab.min(ni > 0 ? gap.minCoeff(&centre) : INFINITY);
-  const bool holds_centre = ni > 0 && gap[centre] == smallest_gap;
-  const double centre_node = slab.min(
-      holds_centre ? static_cast<double>(slab.whole_node(first + static_cast<std::size_t>(centre))) : INFINITY);
-  const bool owns_centre =
-      holds_centre && static_cast<double>(slab.whole_node(first + static_cast<std::size_t>(centre))) == centre_node;
+  const Eigen::Index centre = slab.centre_node(gap);
   result.max_pressure = slab.max(ni > 0 ? result.pressure.maxCoeff() : -INFINITY);
   result.cavitated_fraction =
       slab.sum(static_cast<double>(((result.fluid_fraction < 1.0) && (result.contact_pressure <= 0.0)).count())) /
@@ -781,7 +775,7 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
   for (Eigen::Index k = 0; k < ni; ++k) {
     if (result.contact_pressure[k] > 0.0 || result.film[k] < 0.0) result.film[k] = 0.0;
   }
-  result.central_film_thickness = slab.max(owns_centre ? result.film[centre] : -INFINITY);
+  result.central_film_thickness = slab.max(centre >= 0 ? result.film[centre] : -INFINITY);
   result.minimum_film_thickness = slab.min(ni > 0 ? result.film.minCoeff() : INFINITY);
   detail::check_after_newton(newton.rules, result.complementarity_error,
                              slab.all(satisfies_complementarity(result.fluid_pressure, result.fluid_fraction)), result);
