@@ -106,16 +106,8 @@ void FilmKrylovSolver::apply_jacobian(const Eigen::VectorXd& v, Eigen::VectorXd&
   product_in_ = dp_ds_.segment(first, ni).cwiseProduct(v.head(ni));
   op_.apply(std::span<const double>(product_in_.data(), n_), std::span<double>(product_out_.data(), n_));
   // The rows reach the halo's nodes: v and K dp/ds v there from their owners.
-  const double* values = v.data();
-  const double* deformation = product_out_.data();
-  if (slab_.distributed()) {
-    v_stencil_.segment(first, ni) = v.head(ni);
-    product_stencil_.segment(first, ni) = product_out_;
-    slab_.exchange(v_stencil_.data());
-    slab_.exchange(product_stencil_.data());
-    values = v_stencil_.data();
-    deformation = product_stencil_.data();
-  }
+  const double* values = slab_.on_stencil(v.head(ni), v_stencil_);
+  const double* deformation = slab_.on_stencil(product_out_, product_stencil_);
   const double by_offset = v[ni];
   linalg::for_each_index(n_, [&](std::size_t k) {
     const auto kk = static_cast<Eigen::Index>(k);

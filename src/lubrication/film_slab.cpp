@@ -106,6 +106,13 @@ std::pair<std::size_t, std::size_t> FilmSlab::rows_around_limits(std::size_t wan
   return {below, std::min(wanted, others - below)};
 }
 
+const double* FilmSlab::on_stencil(Eigen::Ref<const Eigen::VectorXd> own, Eigen::VectorXd& stencil) const {
+  if (!distributed()) return own.data();
+  stencil.segment(static_cast<Eigen::Index>(own_first_), static_cast<Eigen::Index>(own_nodes_)) = own;
+  exchange(stencil.data());
+  return stencil.data();
+}
+
 void FilmSlab::rows_around(const double* own, std::size_t below, std::size_t above, std::size_t width,
                            double* around) const {
   const std::size_t ny = whole_.ny();

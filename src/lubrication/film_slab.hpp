@@ -59,6 +59,12 @@ class FilmSlab {
   // place). Collective; nothing on one process.
   void exchange(double* field) const;
 
+  // The stencil values of a field given on this process's nodes (`own`):
+  // `own` itself on one process (the stencil is the own nodes), else
+  // `stencil` (stencil_nodes() values) with `own` copied in and the halo
+  // exchanged. Collective on several processes.
+  const double* on_stencil(Eigen::Ref<const Eigen::VectorXd> own, Eigen::VectorXd& stencil) const;
+
   // The rows around this process's: `below` rows before its first and
   // `above` after its last (wrapped on a y-periodic film; each at most the
   // rows the others hold together), `width` values per node, into

@@ -54,9 +54,12 @@ double mixed_krylov_memory_estimate(std::size_t nodes, const MixedKrylovSettings
   // The block preconditioner's M and F hold a mass row's entries each (half
   // of the node's), the V-cycle its levels; the LU the whole sparse part,
   // its copy and its fill.
-  const double preconditioner = settings.preconditioner == KrylovPreconditioner::multigrid
-                                    ? entries * 12.0 + MixedBlockPreconditioner::bytes_per_node(0.5 * entries)
-                                    : entries * (12.0 + 12.0) + entries * kFillAllowance * 12.0;
+  // The block preconditioner also keeps the truncated K around each node.
+  const double patch = (2.0 * settings.neighbourhood + 1.0) * (2.0 * settings.neighbourhood + 1.0);
+  const double preconditioner =
+      settings.preconditioner == KrylovPreconditioner::multigrid
+          ? entries * 12.0 + patch * 12.0 + MixedBlockPreconditioner::bytes_per_node(0.5 * entries)
+          : entries * (12.0 + 12.0) + entries * kFillAllowance * 12.0;
   const double per_node = 2.0 * 8.0 * (settings.restart + 1)  // GMRES basis, 2 unknowns per node
                           + 16.0 * sizeof(LocalTerm)          // local rows
                           + preconditioner + 8.0 * 60.0;      // the Newton state and work vectors
@@ -128,16 +131,8 @@ void MixedKrylovSolver::apply_jacobian(const Eigen::VectorXd& v, Eigen::VectorXd
   if (scales_.load_control) deflection_.array() += v[2 * ni];
   // The mass rows reach the halo's nodes: v_s and the film's change there
   // from their owners.
-  const double* values = v.data();  // on one process the stencil is the own nodes (first_ = 0)
-  const double* deflection = deflection_.data();
-  if (slab_.distributed()) {
-    v_stencil_.segment(first, ni) = v.head(ni);
-    deflection_stencil_.segment(first, ni) = deflection_;
-    slab_.exchange(v_stencil_.data());
-    slab_.exchange(deflection_stencil_.data());
-    values = v_stencil_.data();
-    deflection = deflection_stencil_.data();
-  }
+  const double* values = slab_.on_stencil(v.head(ni), v_stencil_);
+  const double* deflection = slab_.on_stencil(deflection_, deflection_stencil_);
   const std::vector<double>& film_slope = rows_->film_slope;
   const std::vector<char>& closed = *closed_;
   linalg::for_each_index(n_, [&](std::size_t k) {
