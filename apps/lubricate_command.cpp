@@ -30,6 +30,7 @@
 #include "halfspace/io/friction_history_writer.hpp"
 #include "halfspace/io/hdf5_output.hpp"
 #include "halfspace/io/height_map_reader.hpp"
+#include "halfspace/io/mixed_trace_writer.hpp"
 #include "halfspace/io/output_file.hpp"
 #include "halfspace/io/result_attributes.hpp"
 #include "halfspace/layered_material.hpp"
@@ -57,6 +58,7 @@ namespace {
 struct LubricateOptions : GivenOptions, SurfaceOptions, lubrication::LubricationProblemOptions {
   std::optional<std::string> roughness;
   std::optional<std::string> stribeck;
+  std::optional<std::string> trace;
   std::optional<std::string> output;
   bool plot = false;
   bool quiet = false;
@@ -151,6 +153,9 @@ const std::array kOwnOptions{
                     "Stribeck sweep: entrainment speeds (m/s), sliding scaled alike; needs --stribeck"},
     LubricateOption{"stribeck", &LubricateOptions::stribeck, Kind::path, kMixed, "FILE.csv",
                     "the Stribeck curve of --speeds as CSV"},
+    LubricateOption{"trace", &LubricateOptions::trace, Kind::path, kMixed, "FILE.csv",
+                    "one line per Newton solve of the mixed film as it ends (grid, speed, steps, GMRES iterations, "
+                    "seconds), written as the run goes: where a long run is and where its time went"},
     LubricateOption{"time-step", &LubricateOptions::time_step, Kind::number, kTransient, "DT",
                     "step the rigid film in time (s): the squeeze term d(h theta)/dt from --separation at t = 0, "
                     "moved by --approach-velocity, --separation-history or --force; writes /steps and a CSV "
@@ -421,9 +426,23 @@ int run_mixed(const LubricateOptions& o, const HeightMap& map, const Grid& grid,
               const lubrication::LubricationProblem& problem) {
   const lubrication::FlowConditions& conditions = problem.conditions;
   const lubrication::LubricantLaws& laws = problem.laws;
-  const lubrication::MixedFilmOptions& options = problem.mixed;
+  lubrication::MixedFilmOptions options = problem.mixed;
   const double e_star = problem.e_star;
   if (o.stribeck) io::check_output_path(*o.stribeck);
+  // --trace: the first process writes the solves' lines (on slabs every
+  // process takes the same solves); opening it may fail there alone.
+  std::optional<io::MixedTraceWriter> trace;
+  if (o.trace) {
+    const auto open = [&] {
+      if (place.first) trace.emplace(*o.trace);
+    };
+    if (place.whole) {
+      open();
+    } else {
+      agree_everywhere(open);
+    }
+    if (trace) options.trace = trace->callback();
+  }
   // On slabs the reductions over the processes.
   const std::unique_ptr<lubrication::FilmRows> rows = place.film_rows(grid, conditions);
   const double highest = rows ? rows->max(map.heights.maxCoeff()) : map.heights.maxCoeff();
@@ -502,6 +521,10 @@ int run_mixed(const LubricateOptions& o, const HeightMap& map, const Grid& grid,
     });
   }
   const int code = report(o, map, summary, all_converged, problem, place.first);
+  if (trace && !trace->failure().empty()) {
+    fmt::print(stderr, "error: {}; the film is written to {}\n", trace->failure(), *o.output);
+    return kExitInputError;
+  }
   if (code == kExitOk && !o.quiet && place.first) {
     fmt::print("  {:<15} {:.4g} of the load, area {:.4g} of the cells\n", "contact", film.contact_load_fraction,
                film.contact_area_fraction);
@@ -663,6 +686,27 @@ int run_rigid(const LubricateOptions& o, const HeightMap& map, const Grid& grid,
   return report(o, map, summary, film.solution.converged(), problem, place.first);
 }
 
+// --trace: a mixed film's, a file of its own, and on one process where a
+// Stribeck sweep's speeds are shared out (each process would trace its own).
+void check_trace_path(const LubricateOptions& o, const lubrication::LubricationProblem& problem) {
+  if (problem.kind != lubrication::FilmKind::mixed) {
+    throw InputError(fmt::format("--trace {} traces the mixed film's Newton solves: it needs --mixed", *o.trace));
+  }
+  if (problem.speeds && process_count() > 1) {
+    throw InputError(fmt::format(
+        "--trace {} with a Stribeck sweep on several processes: each process solves its own speeds; trace the "
+        "sweep on one process",
+        *o.trace));
+  }
+  io::check_output_path(*o.trace);
+  for (const std::optional<std::string>& other : {o.output, o.stribeck}) {
+    if (other && io::same_file(*o.trace, *other)) {
+      throw InputError(
+          fmt::format("--trace {} is the same file as {}: give the trace a file of its own", *o.trace, *other));
+    }
+  }
+}
+
 int solve_film(const LubricateOptions& o) {
   const GivenSpelling spelling = flags(o);
   const lubrication::LubricationProblem problem = lubrication::make_lubrication_problem(o, spelling);
@@ -673,6 +717,7 @@ int solve_film(const LubricateOptions& o) {
   if (!o.output) throw InputError("no output file given: pass --output FILE.h5");
   io::check_output_path(*o.output);
   if (o.stribeck) io::check_output_path(*o.stribeck);
+  if (o.trace) check_trace_path(o, problem);
 
   // On several processes the steady rigid, EHL and mixed films' solvers
   // run on slabs of rows (mpi/slab_film_rows.hpp; lubrication/elastic_film.hpp

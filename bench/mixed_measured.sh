@@ -6,11 +6,13 @@
 # It is the case of docs/performance.md's issue-30 rows: at 3e-4 m/s the
 # film is in the transition (contact carries 0.25 of the load at 128^2,
 # 0.16 at 256^2), and each grid's coarse levels are the window resampled.
-# Usage: bench/mixed_measured.sh [PROGRAM] [GRID] [SPEED] [THREADS]
+# Usage: bench/mixed_measured.sh [PROGRAM] [GRID] [SPEED] [THREADS] [TRACE]
 #   PROGRAM  the halfspace executable [build/bin/halfspace]
 #   GRID     cells per side of the resampled window [128]
 #   SPEED    entrainment speed, m/s [3e-4]
 #   THREADS  OpenMP threads [1]
+#   TRACE    where to write the run's trace (lubricate --trace: one line
+#            per Newton solve as it ends) [none]
 # Prints the CPU and wall seconds, the peak resident size, and the
 # program's summary (Newton steps, film, contact share), or its error.
 set -euo pipefail
@@ -19,6 +21,8 @@ program="$(realpath "${1:-$root/build/bin/halfspace}")"
 side="${2:-128}"
 speed="${3:-3e-4}"
 threads="${4:-1}"
+trace=()
+if [[ -n "${5:-}" ]]; then trace=(--trace "$(realpath -m "$5")"); fi
 map="$root/../shared/data/topography/metropro-1.h5"
 if [[ ! -f "$map" ]]; then
   echo "mixed_measured.sh: $map not found (the shared topography data sits beside the project)" >&2
@@ -44,7 +48,7 @@ OMP_NUM_THREADS="$threads" /usr/bin/time -f "%U CPU s, %e wall s, %M KB peak" -o
   --resample "${side}x${side}" --roughness ball.h5 --mixed --viscosity 0.04 \
   --entrainment-velocity "$speed" --sliding-velocity "$sliding" --force 5.04 --E-star 1.1e11 \
   --pressure-viscosity 2.27e-8 --piezoviscosity roelands --limiting-shear-slope 0.05 \
-  --output film.h5 > out.txt 2>&1 || status=$?
+  "${trace[@]}" --output film.h5 > out.txt 2>&1 || status=$?
 echo "metropro-1 window resampled to ${side}^2, ${speed} m/s, ${threads} thread(s): $(cat time.txt)"
 grep -E "load  |film  |contact  |error" out.txt || true
 exit "$status"

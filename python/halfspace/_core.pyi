@@ -198,7 +198,7 @@ def friction(heights: npt.NDArray[np.float64], dx: float, dy: float, boundary: s
              preparation: Sequence[str]) -> History: ...
 def read_result(path: str, step: int = -1) -> Result: ...
 def lubricate(heights: npt.NDArray[np.float64], dx: float, dy: float, film: dict[str, Any],
-              threads: Optional[int]) -> Any:
+              threads: Optional[int], trace: Optional[str]) -> Any:
     """The film of `film` (the library's option names, lubrication_option_names; None: not given): its fields
     (numpy arrays) and numbers, as halfspace.Film holds them, or with speeds a list of them, one per speed, or
     with time_step a dict of the steps' films and the run's status (python/src/lubricate.cpp)."""

@@ -4,6 +4,7 @@ stribeck: the mixed film's Stribeck curve, as ``halfspace lubricate --mixed --sp
 from __future__ import annotations
 
 import inspect
+import os
 from typing import Any, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy as np
@@ -252,7 +253,8 @@ def _arguments(surface, *, viscosity: float, entrainment_velocity: Velocity,
               contact_friction: Optional[float] = None, boundary_film: Optional[float] = None,
               time_step: Optional[float] = None, steps: Optional[int] = None, time_scheme: Optional[str] = None,
               approach_velocity: Optional[float] = None, separation_history: Optional[Sequence[float]] = None,
-              threads: Optional[int] = None, speeds=None) -> tuple:
+              threads: Optional[int] = None, trace: Optional[Union[str, "os.PathLike[str]"]] = None,
+              speeds=None) -> tuple:
     height_map = _surface(surface, dx, dy)
     # The rules are the library's (make_lubrication_problem); here the
     # keywords only become its options (lubrication_option_names).
@@ -278,7 +280,8 @@ def _arguments(surface, *, viscosity: float, entrainment_velocity: Velocity,
         "steps": None if steps is None else int(steps), "time_scheme": time_scheme,
         "separation_history": _sequence(separation_history,
                                         "separation_history must be a sequence of separations (m), one a step")}
-    return (height_map.heights, height_map.dx, height_map.dy or 0.0, film, None if threads is None else int(threads))
+    return (height_map.heights, height_map.dx, height_map.dy or 0.0, film, None if threads is None else int(threads),
+            None if trace is None else os.fspath(trace))
 
 
 def _called(name: str, surface, keywords: dict, speeds=None, **fixed) -> tuple:
@@ -347,6 +350,9 @@ def lubricate(surface: Union[HeightMap, np.ndarray], **keywords: Any) -> Union[F
         separation carries it, the body's inertia neglected); steps (None
         with a history: its length); time_scheme ("bdf2", the default, or
         "backward-euler"). Returns a :class:`FilmHistory`.
+    trace: a mixed film's trace (``--trace``): a CSV file that gets one
+        line per Newton solve as it ends (grid, speed, steps, GMRES
+        iterations, seconds; docs/file-format.md), written as the solve goes.
     threads: threads of an elastic or mixed film's solve (None: the CPUs
         this process may use, as the program). Process-wide, as in
         :func:`solve`.

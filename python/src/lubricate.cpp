@@ -19,6 +19,8 @@
 #include "bindings.hpp"
 #include "halfspace/error.hpp"
 #include "halfspace/io/hdf5_output.hpp"
+#include "halfspace/io/mixed_trace_writer.hpp"
+#include "halfspace/io/output_file.hpp"
 #include "halfspace/layered_material.hpp"
 #include "halfspace/lubrication/elastic_film.hpp"
 #include "halfspace/lubrication/film_shear.hpp"
@@ -245,24 +247,39 @@ nb::dict mixed_dict(const Grid& grid, const LubricationProblem& problem, MixedFi
 // The mixed film (one dict), or with speeds= the Stribeck sweep (a list of
 // dicts, each with its speed and Hersey number), as run_mixed in
 // apps/lubricate_command.cpp.
-nb::object solve_mixed(const Grid& grid, const Eigen::ArrayXd& heights, const LubricationProblem& problem) {
+// With `trace` (trace=) every Newton solve's line goes to that CSV file
+// (io::MixedTraceWriter, as `--trace`); a write that failed raises
+// FileError after the solve.
+nb::object solve_mixed(const Grid& grid, const Eigen::ArrayXd& heights, const LubricationProblem& problem,
+                       const std::optional<std::string>& trace) {
   const FlowConditions& conditions = problem.conditions;
   const LubricantLaws& laws = problem.laws;
-  const MixedFilmOptions& options = problem.mixed;
+  MixedFilmOptions options = problem.mixed;
   const double e_star = problem.e_star;
   const Eigen::ArrayXd gap = heights.maxCoeff() - heights;
   FftInfluenceOperator op(grid, e_star);
+  std::optional<io::MixedTraceWriter> writer;
+  if (trace) {
+    io::check_output_path(*trace);
+    writer.emplace(*trace);
+    options.trace = writer->callback();
+  }
+  const auto check_trace = [&] {
+    if (writer && !writer->failure().empty()) throw FileError(writer->failure());
+  };
   if (!problem.speeds) {
     MixedFilm film = with_keywords([&] {
       nb::gil_scoped_release release;
       return solve_mixed_film(op, gap, conditions, laws, options);
     });
+    check_trace();
     return mixed_dict(grid, problem, std::move(film), conditions.viscosity, 1);
   }
   std::vector<StribeckPoint> points = with_keywords([&] {
     nb::gil_scoped_release release;
     return stribeck_sweep(op, gap, conditions, laws, options, *problem.speeds);
   });
+  check_trace();
   nb::list curve;
   for (StribeckPoint& point : points) {
     nb::dict film = mixed_dict(grid, problem, std::move(point.film), conditions.viscosity, 1);
@@ -276,7 +293,7 @@ nb::object solve_mixed(const Grid& grid, const Eigen::ArrayXd& heights, const Lu
 // The film of the keywords `given` (lubrication_option_names: None for not
 // given) on the heights.
 nb::object lubricate(const nb::object& heights_object, double dx, double dy, const nb::dict& given,
-                     std::optional<int> threads) {
+                     std::optional<int> threads, const std::optional<std::string>& trace) {
   const auto heights = nb::cast<InputArray>(heights_object, false);
   check_array_dimensions(heights, "the surface");
   require_finite_heights(heights, "the surface");
@@ -286,13 +303,16 @@ nb::object lubricate(const nb::object& heights_object, double dx, double dy, con
       options_from<LubricationProblemOptions>(given, lubrication_option_names(), "film option"), keywords);
   const Grid grid = array_grid(heights, dx, dy, problem.boundary, "the surface");
   problem.check_grid(grid, keywords);
+  if (trace && problem.kind != FilmKind::mixed) {
+    throw InputError(fmt::format("trace='{}' traces the mixed film's Newton solves: it needs mixed=True", *trace));
+  }
   if (problem.transient) return solve_transient(grid, z, problem);
   if (problem.kind == FilmKind::rigid) return solve_rigid(grid, z, problem);
   // The elastic films' FFT plans take the threads in force (process-wide; a
   // solve(threads=) before may have changed them): the program's unless
   // threads= says otherwise, so that the rounding is the program's too.
   in_context(fmt::format("threads={}", threads.value_or(0)), [&] { set_threads(threads.value_or(default_threads())); });
-  if (problem.kind == FilmKind::mixed) return solve_mixed(grid, z, problem);
+  if (problem.kind == FilmKind::mixed) return solve_mixed(grid, z, problem, trace);
   return solve_elastic(grid, z, problem);
 }
 
@@ -300,7 +320,7 @@ nb::object lubricate(const nb::object& heights_object, double dx, double dy, con
 
 void bind_lubricate(nb::module_& module) {
   module.def("lubricate", &lubricate, nb::arg("heights"), nb::arg("dx"), nb::arg("dy"), nb::arg("film"),
-             nb::arg("threads").none());
+             nb::arg("threads").none(), nb::arg("trace").none());
 }
 
 }  // namespace halfspace::python

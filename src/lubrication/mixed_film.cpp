@@ -290,9 +290,9 @@ namespace {
 
 // One Newton solve from `start` or the standard starts, with the contact
 // rows smoothed by `smoothing` (mu) where it is > 0.
-MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
-                     const LubricantLaws& laws, const MixedFilmOptions& options, const MixedFilm* start,
-                     detail::MixedStartUse use = detail::MixedStartUse::solve_only, double smoothing = 0.0) {
+MixedFilm newton_solve(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
+                       const LubricantLaws& laws, const MixedFilmOptions& options, const MixedFilm* start,
+                       detail::MixedStartUse use = detail::MixedStartUse::solve_only, double smoothing = 0.0) {
   const bool smoothed = smoothing > 0.0;
   const bool only_trying = use == detail::MixedStartUse::try_only || use == detail::MixedStartUse::try_until_short;
   const auto started = std::chrono::steady_clock::now();
@@ -787,6 +787,35 @@ MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Flo
   }
   result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return result;
+}
+
+// newton_solve, traced (MixedFilmOptions::trace).
+MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
+                     const LubricantLaws& laws, const MixedFilmOptions& options, const MixedFilm* start,
+                     detail::MixedStartUse use = detail::MixedStartUse::solve_only, double smoothing = 0.0) {
+  const auto started = std::chrono::steady_clock::now();
+  MixedFilm film = newton_solve(op, gap, conditions, laws, options, start, use, smoothing);
+  if (options.trace) {
+    const Grid& grid = op.grid();
+    options.trace(MixedSolveRecord{
+        .nx = grid.nx(),
+        .ny = grid.dimension() == 2 ? grid.ny() : 1,
+        .entrainment_speed = std::hypot(conditions.entrainment_velocity[0], conditions.entrainment_velocity[1]),
+        .smoothing = smoothing,
+        .warm = start != nullptr,
+        .checked_step_branches = options.checked_step_branches,
+        .status = film.status,
+        .newton_steps = film.iterations,
+        .krylov_iterations = film.krylov_iterations,
+        .most_krylov_per_step = film.max_krylov_iterations_per_step,
+        .line_search_halvings = film.line_search_halvings,
+        .watchdog_steps = film.watchdog_steps,
+        .relative_residual = film.relative_residual,
+        .contact_load_fraction = film.contact_load_fraction,
+        .wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(),
+    });
+  }
+  return film;
 }
 
 // The contact rows' smoothing (solve_mixed_film_smoothed): from mu =

@@ -40,6 +40,23 @@ void make_rough_line(const TempDir& dir, std::size_t points = 97) {
             kExitOk);
 }
 
+// The rows of a CSV file after its header (into `header`), split at commas.
+std::vector<std::vector<std::string>> read_csv(const std::filesystem::path& path, std::string& header) {
+  std::ifstream csv(path);
+  std::getline(csv, header);
+  std::vector<std::vector<std::string>> rows;
+  for (std::string line; std::getline(csv, line);) {
+    std::vector<std::string> cells;
+    std::size_t from = 0;
+    for (std::size_t comma; (comma = line.find(',', from)) != std::string::npos; from = comma + 1) {
+      cells.push_back(line.substr(from, comma - from));
+    }
+    cells.push_back(line.substr(from));
+    rows.push_back(cells);
+  }
+  return rows;
+}
+
 const std::vector<std::string> kMixedRun{"lubricate",
                                          "--height-map",
                                          "cylinder.h5",
@@ -194,24 +211,34 @@ TEST(LubricateMixedCliTest, StribeckSweepWritesItsCurve) {
   make_rough_line(dir);
   const ProgramRun run =
       run_program(mixed_run({"--entrainment-velocity", "1", "--sliding-velocity", "0.5", "--speeds", "1,0.001,0.0001",
-                             "--stribeck", "s.csv", "--output", "m.h5", "--quiet"}),
+                             "--stribeck", "s.csv", "--trace", "t.csv", "--output", "m.h5", "--quiet"}),
                   dir.path());
   ASSERT_EQ(run.exit_code, kExitOk) << run.err;
-  std::ifstream csv(dir / "s.csv");
-  std::string line;
-  ASSERT_TRUE(std::getline(csv, line));
-  EXPECT_EQ(line.rfind("entrainment_speed,hersey_number,friction_coefficient,", 0), 0u) << line;
-  std::vector<std::vector<std::string>> rows;
-  while (std::getline(csv, line)) {
-    std::vector<std::string> cells;
-    std::size_t from = 0;
-    for (std::size_t comma; (comma = line.find(',', from)) != std::string::npos; from = comma + 1) {
-      cells.push_back(line.substr(from, comma - from));
-    }
-    cells.push_back(line.substr(from));
-    rows.push_back(cells);
-  }
+  std::string header;
+  const std::vector<std::vector<std::string>> rows = read_csv(dir / "s.csv", header);
+  EXPECT_EQ(header.rfind("entrainment_speed,hersey_number,friction_coefficient,", 0), 0u) << header;
   ASSERT_EQ(rows.size(), 3u);
+  // The trace: one line per Newton solve, whose steps add up to the sweep's
+  // (column 10 of the curve), the last one the slowest speed's answer.
+  std::string trace_header;
+  const std::vector<std::vector<std::string>> solves = read_csv(dir / "t.csv", trace_header);
+  EXPECT_EQ(trace_header.rfind("solve,nx,ny,entrainment_speed,smoothing,start,checked_step_branches,status,"
+                               "newton_steps,gmres_iterations,",
+                               0),
+            0u)
+      << trace_header;
+  ASSERT_GE(solves.size(), 3u);
+  long long traced_steps = 0, swept_steps = 0;
+  for (std::size_t k = 0; k < solves.size(); ++k) {
+    ASSERT_EQ(solves[k].size(), 16u);
+    EXPECT_EQ(std::stoul(solves[k][0]), k + 1);
+    EXPECT_EQ(solves[k][1], "97");
+    traced_steps += std::stoll(solves[k][8]);
+  }
+  for (const auto& row : rows) swept_steps += std::stoll(row[10]);
+  EXPECT_EQ(traced_steps, swept_steps);
+  EXPECT_EQ(std::stod(solves.back()[3]), 0.0001);
+  EXPECT_EQ(solves.back()[7], "converged");
   // speed, Hersey number, friction coefficient, ..., contact share (column 5), status (column 9).
   EXPECT_EQ(std::stod(rows[0][5]), 0.0);
   EXPECT_GT(std::stod(rows[2][5]), std::stod(rows[1][5]));
@@ -246,6 +273,9 @@ TEST(LubricateMixedCliTest, RejectsBadMixedInputNamingTheOption) {
   };
   expect_input_error(rigid_with({"--contact-friction", "0.1"}), {"--mixed"}, dir / "f.h5");
   expect_input_error(rigid_with({"--mixed"}), {"--mixed needs an elastic body"}, dir / "f.h5");
+  expect_input_error(rigid_with({"--trace", "t.csv"}), {"--trace t.csv", "needs --mixed"}, dir / "f.h5");
+  expect_input_error(with({"--trace", "./f.h5"}), {"--trace ./f.h5 is the same file as f.h5"}, dir / "f.h5");
+  EXPECT_FALSE(std::filesystem::exists(dir / "t.csv"));
   // A roughness of another size (a profile beyond the dense path's 2048
   // points is no longer refused: it takes the GMRES path).
   ASSERT_EQ(

@@ -8,6 +8,7 @@
 // on the same rough gap at the same load).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -356,6 +357,54 @@ TEST(MixedFilmKrylovTest, CoarseFilmIsOnlyAStart) {
   EXPECT_GT(sequenced.contact_load_fraction, 0.99);
   EXPECT_LE((sequenced.pressure - cold.pressure).abs().maxCoeff(), 1e-6 * cold.max_pressure);
   EXPECT_NEAR(sequenced.contact_load_fraction, cold.contact_load_fraction, 3e-5);
+}
+
+// The trace (MixedFilmOptions::trace) sees every Newton solve once: on the
+// case above, whose 17^2 film fails and whose 34^2 grid takes the faster
+// films and the speed continuation, the records' steps and GMRES
+// iterations add up to the film's counts (fine and coarse), both grids and
+// several speeds appear, the last record is the answer's, and tracing does
+// not change the film (to the bit).
+TEST(MixedFilmKrylovTest, TraceRecordsEveryNewtonSolve) {
+  const RoughContact point = rough_point(34, 0.4e-6);
+  FftInfluenceOperator op(point.grid, kEStar);
+  const double speed = 0.003;
+  MixedFilmOptions options = options_for(kPointLoad, FilmLinearSolve::automatic);
+  const MixedFilm untraced = solve_mixed_film(op, point.gap, flow(speed), laws(), options);
+  std::vector<MixedSolveRecord> records;
+  options.trace = [&](const MixedSolveRecord& record) { records.push_back(record); };
+  const MixedFilm f = solve_mixed_film(op, point.gap, flow(speed), laws(), options);
+  ASSERT_TRUE(f.converged()) << f.message;
+  ASSERT_FALSE(records.empty());
+  long long steps = 0, krylov = 0, fine_steps = 0;
+  int coarse = 0, fine = 0;
+  std::vector<double> speeds;
+  for (const MixedSolveRecord& r : records) {
+    steps += r.newton_steps;
+    krylov += r.krylov_iterations;
+    EXPECT_LE(r.most_krylov_per_step, r.krylov_iterations);
+    EXPECT_GE(r.wall_seconds, 0.0);
+    EXPECT_TRUE(r.nx == r.ny && (r.nx == 17 || r.nx == 34)) << r.nx << " x " << r.ny;
+    (r.nx == 17 ? coarse : fine) += 1;
+    if (r.nx == 34) fine_steps += r.newton_steps;
+    speeds.push_back(r.entrainment_speed);
+  }
+  EXPECT_EQ(steps, f.iterations + f.coarse_iterations);
+  EXPECT_EQ(fine_steps, f.iterations);
+  EXPECT_EQ(krylov, f.krylov_iterations + f.coarse_krylov_iterations);
+  EXPECT_GT(coarse, 0);
+  EXPECT_GT(fine, 1);
+  std::sort(speeds.begin(), speeds.end());
+  EXPECT_GT(std::unique(speeds.begin(), speeds.end()) - speeds.begin(), 2);
+  const MixedSolveRecord& last = records.back();
+  EXPECT_EQ(last.nx, 34U);
+  EXPECT_EQ(last.status, FilmStatus::converged);
+  EXPECT_DOUBLE_EQ(last.entrainment_speed, speed);
+  EXPECT_EQ(last.contact_load_fraction, f.contact_load_fraction);
+  EXPECT_EQ(last.relative_residual, f.relative_residual);
+  ASSERT_TRUE(untraced.converged()) << untraced.message;
+  EXPECT_EQ(f.iterations, untraced.iterations);
+  EXPECT_EQ((f.pressure - untraced.pressure).abs().maxCoeff(), 0.0);
 }
 
 // The fine Newton iteration from the coarse film, where the interpolated

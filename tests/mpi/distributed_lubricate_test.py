@@ -176,6 +176,38 @@ film_case("map-mixed-periodic", ["--height-map", ball, "--entrainment-velocity",
                                  "--boundary", "periodic"] + mixed,
           bitwise=False, required=kMixedFields, tolerance=kElasticTolerance, skip=kMixedSkip)
 
+
+
+def trace_case(processes):
+    """--trace on slabs: the first process writes each solve's line once
+    (every process takes the same solves), numbered in order; the last is
+    the film's, and the steps of the lines on the map's grid add up to the
+    file's Newton steps."""
+    where = f"map-mixed --trace, {processes} processes"
+    trace = os.path.join(work_dir, f"trace-np{processes}.csv")
+    output = os.path.join(work_dir, f"trace-np{processes}.h5")
+    result = harness.run_mpi(processes, ["lubricate", "--height-map", ball, "--entrainment-velocity", "0.003"] + mixed +
+                             ["--trace", trace, "--output", output])
+    if result.returncode != 0:
+        fail(f"{where}: exit {result.returncode}: {result.stderr.strip()}")
+        return
+    rows = np.atleast_1d(np.genfromtxt(trace, delimiter=",", names=True, dtype=None, encoding="utf-8"))
+    with h5py.File(output, "r") as file:
+        iterations = int(file.attrs["iterations"])
+    fine = (rows["nx"] == 48) & (rows["ny"] == 40)
+    if list(rows["solve"]) != list(range(1, len(rows) + 1)):
+        fail(f"{where}: the solves are numbered {list(rows['solve'])}")
+    if rows["status"][-1] != "converged" or not fine[-1]:
+        fail(f"{where}: the last line is not the film's: {rows[-1]}")
+    if int(np.sum(rows["newton_steps"][fine])) != iterations:
+        fail(f"{where}: the fine lines' {int(np.sum(rows['newton_steps'][fine]))} Newton steps, the file's "
+             f"{iterations}")
+    print(f"{where}: {len(rows)} solves, {iterations} fine Newton steps")
+
+
+for count in (2, 3):
+    trace_case(count)
+
 # The transient film of a map does not run on slabs: the first process
 # solves it whole, as the serial program does.
 film_case("map-transient", base + ["--separation", "1e-6", "--time-step", "1e-4", "--steps", "2",
@@ -247,7 +279,11 @@ for name, arguments, message in [
         ("elastic-too-few-rows", ["--window", "0,0,48,5", "--force", "0.5", "--E-star", "1e11", "--couette-scheme",
                                   "second-order"], "leaves a process with 1 row: each needs at least 2"),
         ("mixed-too-few-rows", ["--window", "0,0,48,5", "--force", "0.5", "--E-star", "1e11", "--mixed",
-                                "--couette-scheme", "second-order"], "leaves a process with 1 row: each needs at least 2")]:
+                                "--couette-scheme", "second-order"], "leaves a process with 1 row: each needs at least 2"),
+        # Each process would trace its own speeds.
+        ("trace-shared-sweep", ["--force", "5", "--E-star", "1e11", "--mixed", "--speeds", "0.03,0.01", "--stribeck",
+                                os.path.join(work_dir, "refused.csv"), "--trace", os.path.join(work_dir, "t.csv")],
+         "with a Stribeck sweep on several processes")]:
     harness.refusal_case(f"refused {name}", 2 if name == "plot" else 3, base + arguments, message, refused,
                          command="lubricate")
 

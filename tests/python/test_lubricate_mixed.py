@@ -109,11 +109,18 @@ def test_stribeck_curve_equals_cli(tmp_path, cli, rough_line):
     digits) and its last film (to rounding)."""
     fields, attributes = _cli(cli, rough_line, tmp_path / "last.h5", [
         "--entrainment-velocity", "1", "--sliding-velocity", "0.5", "--speeds", "1,0.001,0.0001", "--stribeck",
-        str(tmp_path / "s.csv")])
+        str(tmp_path / "s.csv"), "--trace", str(tmp_path / "t_cli.csv")])
     _, _, heights, dx = rough_line
     curve = hs.stribeck(heights, [1.0, 0.001, 0.0001], dx=dx, entrainment_velocity=1.0, sliding_velocity=0.5,
-                        **{k: v for k, v in MIXED.items() if k != "mixed"})
+                        trace=tmp_path / "t_py.csv", **{k: v for k, v in MIXED.items() if k != "mixed"})
     assert len(curve) == 3 and curve.converged
+    # The traces: the same Newton solves, line by line, but for their times.
+    traces = []
+    for name in ("t_cli.csv", "t_py.csv"):
+        with open(tmp_path / name, newline="") as file:
+            traces.append([{k: v for k, v in row.items() if k != "wall_seconds"} for row in csv.DictReader(file)])
+    assert traces[0] == traces[1] and len(traces[0]) >= 3
+    assert sum(int(row["newton_steps"]) for row in traces[1]) == sum(curve.newton_steps)
     with open(tmp_path / "s.csv", newline="") as file:
         rows = list(csv.DictReader(file))
     assert list(rows[0].keys()) == list(hs.StribeckCurve.COLUMNS)
@@ -192,6 +199,13 @@ def test_bad_stribeck_keyword_is_named(keywords, message):
     speeds = arguments.pop("speeds")
     with pytest.raises(hs.InputError, match=message):
         hs.stribeck(-(LINE + ROUGH), speeds, **arguments)
+
+
+def test_trace_needs_the_mixed_film(tmp_path):
+    keywords = {k: v for k, v in KEYWORDS.items() if k not in ("mixed", "e_star")}
+    with pytest.raises(hs.InputError, match="needs mixed=True"):
+        hs.lubricate(-(LINE + ROUGH), trace=tmp_path / "t.csv", **keywords)
+    assert not (tmp_path / "t.csv").exists()
 
 
 def test_stribeck_refuses_unknown_and_mixed_keywords():

@@ -28,6 +28,7 @@
 #include <Eigen/Core>
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -86,6 +87,27 @@ struct MixedFrictionOptions {
   void validate() const;
 };
 
+// One Newton solve of the mixed film as it ends (MixedFilmOptions::trace):
+// a coarse level's, a continuation's or a smoothed solve's as well as the
+// film's own, so that a long run shows where it is and where its time goes.
+struct MixedSolveRecord {
+  std::size_t nx = 0, ny = 0;      // the solve's grid (ny 1 on a profile)
+  double entrainment_speed = 0.0;  // |U| (m/s)
+  double smoothing = 0.0;          // mu of smoothed contact rows; 0: the film's own rows
+  bool warm = false;               // from a given film, else the standard starts
+  bool checked_step_branches = false;
+  FilmStatus status = FilmStatus::failure;
+  int newton_steps = 0;
+  int krylov_iterations = 0;  // GMRES iterations in all (0 on the dense path)
+  int most_krylov_per_step = 0;
+  int line_search_halvings = 0;
+  int watchdog_steps = 0;
+  double relative_residual = 0.0;  // the flux-form mass residual checked at the end
+  double contact_load_fraction = 0.0;
+  double wall_seconds = 0.0;
+};
+using MixedSolveTrace = std::function<void(const MixedSolveRecord&)>;
+
 struct MixedFilmOptions {
   // Load control: the load w (N in 2D, N/m in 1D) > 0, h0 unknown. Separation
   // control (load 0): h0 = offset is given and the load follows.
@@ -139,6 +161,9 @@ struct MixedFilmOptions {
   // stall is reported.
   bool smoothed_rescue = true;
   MixedFrictionOptions friction;
+  // Called with every Newton solve as it ends (on several processes on
+  // each, with the same record); empty: none.
+  MixedSolveTrace trace;
 
   // Throws InputError naming the option unless load >= 0 and finite, offset
   // finite, boundary_film > 0 and finite, the tolerances in (0, 1),
