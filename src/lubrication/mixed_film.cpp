@@ -917,7 +917,12 @@ MixedFilm continue_in_speed(InfluenceOperator& op, const Eigen::ArrayXd& gap, co
       ratio = std::min(ratio * 1.5, kContinuationRatio);
       continue;
     }
-    ratio = std::sqrt(ratio);
+    // Half the step that failed (in log speed): the last step to the
+    // velocities can be shorter than the ratio allowed, and halving the
+    // ratio alone tried it again as it was (a measured 512^2 window spent
+    // 150 s on the same failed solve twice; docs/development-log.md,
+    // 2026-12-02, thirty-third session).
+    ratio = std::exp(0.5 * log_step);
     if (ratio >= kSmallestRatio) continue;
     // Stalled. On point contacts the last resort: the contact rows
     // smoothed, from the last film straight to the velocities, else to the
@@ -993,11 +998,12 @@ MixedFilm continue_in_offset(InfluenceOperator& op, const Eigen::ArrayXd& gap, c
   double done = 0.0, step = 1.0;
   while (done < 1.0 && work.solves < kOffsetSolves) {
     const double next = std::min(1.0, done + step);
+    const double taken = next - done;
     MixedFilmOptions at = options;
     at.offset = first + next * (options.offset - first);
     MixedFilm trial = solve_once(op, gap, conditions, laws, at, &from);
     work.add(trial);
-    if (!trial.converged() && step * 0.5 < kSmallestOffsetStep && op.grid().dimension() == 2 &&
+    if (!trial.converged() && taken * 0.5 < kSmallestOffsetStep && op.grid().dimension() == 2 &&
         options.smoothed_rescue) {
       // Stalled: as in the speed continuation, the smoothed contact rows.
       MixedFilm smoothed = detail::solve_mixed_film_smoothed(op, gap, conditions, laws, at, from);
@@ -1015,7 +1021,7 @@ MixedFilm continue_in_offset(InfluenceOperator& op, const Eigen::ArrayXd& gap, c
       step = std::min(2.0 * step, 1.0);
       continue;
     }
-    step *= 0.5;
+    step = 0.5 * taken;  // of the step that failed, as the speed continuation's
     if (step < kSmallestOffsetStep) {
       trial.message = fmt::format("separation continuation stalled at h0 = {:.6g} m: {}", at.offset, trial.message);
       return work.into(std::move(trial));

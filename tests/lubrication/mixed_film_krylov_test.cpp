@@ -554,11 +554,14 @@ TEST(MixedFilmKrylovTest, SmoothedContactRowsEndAtThePlainFilm) {
 
 // The smoothed contact rows as the speed continuation's last resort
 // (MixedFilmOptions::smoothed_rescue): on a 17^2 rough point contact, from
-// the film at 7e-4 m/s up to 1e-3 m/s (contact load share 0.93 to 0.80) the
-// halving stalls (measured at 0.887 times the velocities) and, without the
-// rescue, the failure is reported; with it the film converges and is the
-// one reached from 3e-3 m/s without a stall (measured 2.4e-10 of the peak
-// apart), holding its conditions apart from the solver.
+// the film at 7e-4 m/s up to 1e-3 m/s (contact load share 0.93 to 0.80)
+// the continuation's halving stalls (measured at 0.8896 times the
+// velocities) and, without the rescue, the grid's solve reports it; with
+// it the film converges and is the one reached from 3e-3 m/s without a
+// stall, holding its conditions apart from the solver. (solve_mixed_film
+// gets past this stall without the rescue too, by its retry with checked
+// step branches, since the halving no longer repeats a failed step:
+// docs/development-log.md, 2026-12-02, thirty-third session.)
 TEST(MixedFilmKrylovTest, SmoothedRowsGetPastAStalledContinuation) {
   const RoughContact point = rough_point(17, 0.2e-6);
   FftInfluenceOperator op(point.grid, kEStar);
@@ -570,11 +573,15 @@ TEST(MixedFilmKrylovTest, SmoothedRowsGetPastAStalledContinuation) {
   const MixedFilm faster = solve_mixed_film(op, point.gap, flow(3e-3), laws(), plain);
   ASSERT_TRUE(slower.converged()) << slower.message;
   ASSERT_TRUE(faster.converged()) << faster.message;
-  const MixedFilm stalled = solve_mixed_film(op, point.gap, flow(1e-3), laws(), plain, &slower);
+  const auto on_grid = [&](const MixedFilmOptions& options) {
+    return detail::solve_mixed_film_on_grid(op, point.gap, flow(1e-3), laws(), options, &slower,
+                                            detail::MixedStartUse::solve_then_continue);
+  };
+  const MixedFilm stalled = on_grid(plain);
   EXPECT_FALSE(stalled.converged());
   EXPECT_NE(stalled.message.find("speed continuation stalled"), std::string::npos) << stalled.message;
   EXPECT_EQ(stalled.smoothed_rescues, 0);
-  const MixedFilm f = solve_mixed_film(op, point.gap, flow(1e-3), laws(), rescued, &slower);
+  const MixedFilm f = on_grid(rescued);
   ASSERT_TRUE(f.converged()) << f.message;
   EXPECT_GE(f.smoothed_rescues, 1);
   expect_solution_holds(op, point.gap, flow(1e-3), rescued, f);
@@ -584,11 +591,13 @@ TEST(MixedFilmKrylovTest, SmoothedRowsGetPastAStalledContinuation) {
   expect_same_film(f, expected);
 }
 
-// A Stribeck sweep's point that fails from the last film is solved again
-// alone: with the rescue off, the 17^2 contact's way up from 7e-4 to 1e-3
-// m/s stalls (above), and the point alone, from the faster films down,
-// converges to the film of the stall-free route; its iterations count both.
-TEST(MixedFilmKrylovTest, SweepSolvesAPointAloneWhereTheWayFromTheLastStalls) {
+// A Stribeck sweep's point from the last film: with the rescue off, the
+// 17^2 contact's way up from 7e-4 to 1e-3 m/s stalls (above) and the
+// retry with checked step branches gets there; the point is the film
+// reached from 3e-3 m/s. (Where that fails too, the point is solved again
+// alone; the halving's fix took this case's failure away, and no small
+// case was found that still fails: docs/development-log.md, 2026-12-02.)
+TEST(MixedFilmKrylovTest, SweepPointFromTheLastFilmIsTheFilmFromAbove) {
   const RoughContact point = rough_point(17, 0.2e-6);
   FftInfluenceOperator op(point.grid, kEStar);
   MixedFilmOptions plain = options_for(kPointLoad, FilmLinearSolve::automatic);
@@ -602,10 +611,7 @@ TEST(MixedFilmKrylovTest, SweepSolvesAPointAloneWhereTheWayFromTheLastStalls) {
   const MixedFilm faster = solve_mixed_film(op, point.gap, flow(3e-3), laws(), plain);
   ASSERT_TRUE(faster.converged()) << faster.message;
   const MixedFilm expected = solve_mixed_film(op, point.gap, flow(1e-3), laws(), plain, &faster);
-  const MixedFilm alone = solve_mixed_film(op, point.gap, flow(1e-3), laws(), plain);
   ASSERT_TRUE(expected.converged()) << expected.message;
-  ASSERT_TRUE(alone.converged()) << alone.message;
-  EXPECT_GT(f.iterations, alone.iterations);
   EXPECT_LE((f.pressure - expected.pressure).abs().maxCoeff(), 1e-6 * expected.max_pressure);
   EXPECT_NEAR(f.contact_load_fraction, expected.contact_load_fraction, 3e-5);
 }
