@@ -177,7 +177,6 @@ film_case("map-mixed-periodic", ["--height-map", ball, "--entrainment-velocity",
           bitwise=False, required=kMixedFields, tolerance=kElasticTolerance, skip=kMixedSkip)
 
 
-
 def trace_case(processes):
     """--trace on slabs: the first process writes each solve's line once
     (every process takes the same solves), numbered in order; the last is
@@ -286,5 +285,7 @@ for name, arguments, message in [
          "with a Stribeck sweep on several processes")]:
     harness.refusal_case(f"refused {name}", 2 if name == "plot" else 3, base + arguments, message, refused,
                          command="lubricate")
+if os.path.exists(os.path.join(work_dir, "t.csv")):
+    fail("refused trace-shared-sweep: the trace was written")
 
 harness.finish()
