@@ -112,16 +112,6 @@ constexpr std::array<double, 2> kStartFilms{0.5, 8.0};
 // The trust region of a Newton step, in units of the pressure scale (the
 // dry contact's peak) and of the thinnest film.
 constexpr double kLargestStep = 0.5;
-// Only nodes exactly on the cavitation switch (s = 0: the dry start's
-// unloaded nodes) take the branch their step goes into; every other node
-// takes the branch of its side, whose derivative is exact for short steps,
-// so that the Newton direction descends. A band around the switch (1e-9 in
-// s before 2026-11-29) is 1e-9 of the pressure scale on the pressure side,
-// which the scaled residual sees 1e5 times more strongly than 1e-9 of
-// theta: a node at p = 2.3e-10 p_scale given the cavitated branch stalled
-// the 1024^2 point contact at a mass residual of 6.65e-6
-// (docs/development-log.md).
-constexpr double kBranchChoiceBand = 0.0;
 
 // The state of the Newton iteration: s and h0, and what follows from them.
 struct State {
@@ -457,7 +447,7 @@ ElasticFilm detail::solve_film_newton(InfluenceOperator& op, const Eigen::ArrayX
     for (std::size_t j = 0; j < n; ++j) branch_full[j] = x.s[static_cast<Eigen::Index>(j)] >= 0.0 ? 1 : 0;
     if (!krylov) {
       outcome.solved = detail::branch_consistent_step([&] { measure(x, residual, true); }, topology, x.s, jacobian_t,
-                                                      residual, lu, step, branch_full, kBranchChoiceBand);
+                                                      residual, lu, step, branch_full, detail::kSwitchBand);
       return outcome;
     }
     // The linearisation does not depend on the branches: once, then one
@@ -471,7 +461,7 @@ ElasticFilm detail::solve_film_newton(InfluenceOperator& op, const Eigen::ArrayX
       return solved.converged;
     };
     outcome.solved =
-        detail::branch_consistent_step_on(gmres_solve, topology, first, x.s, step, branch_full, kBranchChoiceBand,
+        detail::branch_consistent_step_on(gmres_solve, topology, first, x.s, step, branch_full, detail::kSwitchBand,
                                           [&](bool flipped) { return !slab.all(!flipped); });
     return outcome;
   };

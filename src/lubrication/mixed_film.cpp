@@ -691,7 +691,7 @@ MixedFilm newton_solve(InfluenceOperator& op, const Eigen::ArrayXd& gap, const F
     return true;
   };
   // The trial point on a bent path: a node the step carries across the
-  // cavitation switch (from outside the switch band) stops on it, s = 0, as
+  // cavitation switch (from off it) stops on it, s = 0, as
   // a projected Newton method's path stops at its bounds (Bertsekas 1982);
   // the next step's branch passes choose its side from the direction. On the
   // straight path the linear model, exact on the node's own branch, is wrong

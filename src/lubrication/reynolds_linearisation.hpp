@@ -22,9 +22,17 @@
 namespace halfspace::lubrication::detail {
 
 // Nodes within this of the switch s = 0 take the branch their step goes
-// into (the mixed film's band; the EHL film passes its own, 0: see
-// elastic_film.cpp); the passes that may take.
-inline constexpr double kSwitchBand = 1e-9;
+// into; the passes that may take. Only nodes exactly on it (the dry
+// start's unloaded nodes, a node a bent trial path stopped on) choose:
+// every other node takes the branch of its side, whose derivative is exact
+// for short steps, so that the Newton direction descends. A band of 1e-9
+// in s is 1e-9 of the pressure scale on the pressure side, which a thick
+// film's mass row sees through h^3 far more strongly than 1e-9 of theta:
+// nodes at p ~ 5e-10 of the scale given the cavitated branch stalled the
+// EHL film's 1024^2 point contact at a mass residual of 6.65e-6 and the
+// mixed film's 512^2 measured window below 1.4e-3 m/s
+// (docs/development-log.md, 2026-11-29 and 2026-12-02).
+inline constexpr double kSwitchBand = 0.0;
 inline constexpr int kBranchPasses = 4;
 
 // One semi-smooth Newton step on the generalised Jacobian's branches
