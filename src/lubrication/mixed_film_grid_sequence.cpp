@@ -13,7 +13,8 @@
 // measured map the coarse grids are the harder problem (at 3e-4 m/s 0.96
 // of the load in contact at 32^2 against 0.16 at 256^2), and their
 // fall-backs took most of the time (docs/development-log.md, 2026-12-01,
-// twenty-seventh session).
+// twenty-seventh session). The exception: a 256^2 grid under a 512^2
+// answer is an answer itself (kCoarseAnswerNodes).
 #include "mixed_film_grid_sequence.hpp"
 
 #include <fmt/format.h>
@@ -49,6 +50,19 @@ constexpr double kSequencedFastest = 64.0;
 // s; docs/development-log.md, 2026-12-01, twenty-sixth session).
 constexpr int kSequencedFirstSteps = 60;
 constexpr std::size_t kTryingNodes = 128 * 128;
+// A coarse grid of 256^2 nodes (up to, not including, 512^2) under an
+// answer is solved as an answer itself (with the faster films and the speed
+// continuation on it), not as a start: the continuation is then paid on
+// the coarser grid, and the fine grid's try starts from its film at the
+// speed asked. On the measured window resampled to 512^2 (1e-3 m/s) the
+// 512^2 try from the 256^2 film took 8 Newton steps (48 s) where the 512^2
+// continuation from 16 times the speed took 198 s. Below, the try costs more
+// than the continuation (a 256^2 try from the 128^2 film: 34 steps, 6,285
+// GMRES iterations, 98 s); above, the 1024^2 try from the 512^2 film failed
+// after 20 minutes (docs/development-log.md, 2026-12-03, thirty-fifth
+// session).
+constexpr std::size_t kCoarseAnswerNodes = 256 * 256;
+constexpr std::size_t kCoarseAnswerBelow = 512 * 512;
 
 // What a grid's solve is for, and so which fall-backs it gets where its
 // Newton iteration fails from its start:
@@ -103,6 +117,10 @@ std::optional<MixedFilm> sequenced_start(InfluenceOperator& op, const Eigen::Arr
   const std::optional<MixedFilm> coarse = detail::solve_on_coarser_grid(
       op, gap, options,
       [&](InfluenceOperator& coarse_op, const Eigen::ArrayXd& coarse_gap, const MixedFilmOptions& coarse_options) {
+        const std::size_t coarse_nodes = coarse_op.grid().size();
+        if (effort == SolveEffort::answer && coarse_nodes >= kCoarseAnswerNodes && coarse_nodes < kCoarseAnswerBelow) {
+          return solve_sequenced(coarse_op, coarse_gap, conditions, laws, coarse_options, nullptr, SolveEffort::answer);
+        }
         return solve_start(coarse_op, coarse_gap, conditions, laws, coarse_options,
                            effort == SolveEffort::quick_start ? SolveEffort::quick_start : SolveEffort::start);
       },
