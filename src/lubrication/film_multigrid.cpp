@@ -249,6 +249,50 @@ void FilmMultigrid::find_fixed(Level& level) {
   }
 }
 
+// Rows [0, out.rows) of `out` made by row(scratch, r, columns, values) on
+// `team` threads: each thread builds a contiguous run of rows, and the runs
+// are joined in order, so the matrix is the same whatever the thread count.
+// The first run goes straight into the matrix (it starts at 0): one thread
+// holds no second copy.
+template <class Scratch, class Row>
+void build_rows_in_runs(CsrMatrix& out, int team, std::vector<Scratch>& scratches, std::vector<int>& row_count,
+                        Row&& row) {
+  out.start.resize(out.rows + 1);
+  row_count.resize(out.rows);
+#pragma omp parallel num_threads(team)
+  {
+    const auto t = static_cast<std::size_t>(omp_get_thread_num());
+    const auto threads = static_cast<std::size_t>(omp_get_num_threads());
+    Scratch& scratch = scratches[t];
+    std::vector<int>& column = t == 0 ? out.column : scratch.column;
+    std::vector<double>& value = t == 0 ? out.value : scratch.value;
+    column.clear();
+    value.clear();
+    const std::size_t begin = out.rows * t / threads, end = out.rows * (t + 1) / threads;
+    for (std::size_t r = begin; r < end; ++r) {
+      const std::size_t before = column.size();
+      row(scratch, r, column, value);
+      row_count[r] = static_cast<int>(column.size() - before);
+    }
+#pragma omp barrier
+#pragma omp single
+    {
+      out.start[0] = 0;
+      for (std::size_t r = 0; r < out.rows; ++r) out.start[r + 1] = out.start[r] + row_count[r];
+      out.column.resize(static_cast<std::size_t>(out.start[out.rows]));
+      out.value.resize(static_cast<std::size_t>(out.start[out.rows]));
+    }
+    if (t > 0) {
+      std::copy(column.begin(), column.end(), out.column.begin() + out.start[begin]);
+      std::copy(value.begin(), value.end(), out.value.begin() + out.start[begin]);
+    }
+  }
+}
+
+// P^T A P in two products: A P (fine rows, coarse columns), then P^T (A P).
+// Each fine row's A P is made once, where the product row by row would
+// make it again for each of the up to 4 coarse rows the node is a child
+// of: a third of the work (docs/development-log.md, 2026-12-03).
 void FilmMultigrid::galerkin(const Level& fine, Level& coarse) {
   const CsrMatrix& a = *fine.matrix;
   const auto fnx = static_cast<long>(fine.nx), fny = static_cast<long>(fine.ny);
@@ -266,107 +310,108 @@ void FilmMultigrid::galerkin(const Level& fine, Level& coarse) {
                         std::abs(offset(yi, fine.node_y[j], fny, periodic_))});
     }
   }
+  // A P's row i spans the parents of the nodes within `reach` of i: within
+  // (reach + 1) / 2 + 2 coarse cells of i's first parent.
+  const long w_ap = (reach + 1) / 2 + 2;
+  const long side_ap = 2 * w_ap + 1;
   const long w = (reach + 3) / 2;
   const long side = 2 * w + 1;
-  CsrMatrix& c = coarse.own;
-  c.rows = coarse.nx * coarse.ny;
-  c.start.resize(c.rows + 1);
-  row_count_.resize(c.rows);
   const int team = a.rows > kParallelNodes ? omp_get_max_threads() : 1;
   if (galerkin_scratch_.size() < static_cast<std::size_t>(team))
     galerkin_scratch_.resize(static_cast<std::size_t>(team));
+  const auto window_size = static_cast<std::size_t>(std::max(side, side_ap) * std::max(side, side_ap));
   for (int t = 0; t < team; ++t) {
-    galerkin_scratch_[static_cast<std::size_t>(t)].window.assign(static_cast<std::size_t>(side * side), 0.0);
-    galerkin_scratch_[static_cast<std::size_t>(t)].touched.assign(static_cast<std::size_t>(side * side), 0);
+    galerkin_scratch_[static_cast<std::size_t>(t)].window.assign(window_size, 0.0);
+    galerkin_scratch_[static_cast<std::size_t>(t)].touched.assign(window_size, 0);
   }
   const Axis& ax = fine.to_coarse_x;
   const Axis& ay = fine.to_coarse_y;
-  // Coarse row (cx, cy) into the thread's scratch.
-  const auto coarse_row = [&](GalerkinScratch& scratch, std::vector<int>& columns, std::vector<double>& values, long cx,
-                              long cy) {
-    std::vector<double>& window = scratch.window;
-    std::vector<char>& touched = scratch.touched;
+  // The window's entries around (cx, cy), half-width `half`, into the row
+  // (in slot order, by column on periodic grids), the window cleared.
+  const auto flush = [&](GalerkinScratch& scratch, long cx, long cy, long half, std::vector<int>& columns,
+                         std::vector<double>& values) {
+    const long width = 2 * half + 1;
     std::vector<std::pair<int, double>>& row_entries = scratch.row_entries;
-    const auto row = static_cast<std::size_t>(cy * cnx + cx);
-    const Children& kids_y = ay.children[static_cast<std::size_t>(cy)];
-    const Children& kids_x = ax.children[static_cast<std::size_t>(cx)];
-    for (int ky = 0; ky < kids_y.count; ++ky) {
-      for (int kx = 0; kx < kids_x.count; ++kx) {
-        const auto i = static_cast<std::size_t>(kids_y.index[ky] * fnx + kids_x.index[kx]);
-        if (fine.fixed[i]) continue;
-        const double wi = kids_y.weight[ky] * kids_x.weight[kx];
-        for (int e = a.start[i]; e < a.start[i + 1]; ++e) {
-          const long j = a.column[e];
-          if (fine.fixed[static_cast<std::size_t>(j)]) continue;
-          const Parents& px = ax.parents[static_cast<std::size_t>(fine.node_x[static_cast<std::size_t>(j)])];
-          const Parents& py = ay.parents[static_cast<std::size_t>(fine.node_y[static_cast<std::size_t>(j)])];
-          const double v = wi * a.value[e];
-          for (int qy = 0; qy < py.count; ++qy) {
-            const long dy = offset(cy, py.index[qy], cny, periodic_) + w;
-            for (int qx = 0; qx < px.count; ++qx) {
-              const long dx = offset(cx, px.index[qx], cnx, periodic_) + w;
-              const auto slot = static_cast<std::size_t>(dy * side + dx);
-              window[slot] += v * py.weight[qy] * px.weight[qx];
-              touched[slot] = 1;
-            }
-          }
-        }
-      }
-    }
     row_entries.clear();
-    for (long dy = 0; dy < side; ++dy) {
-      for (long dx = 0; dx < side; ++dx) {
-        const auto slot = static_cast<std::size_t>(dy * side + dx);
-        if (!touched[slot]) continue;
-        long jx = cx + dx - w, jy = cy + dy - w;
+    for (long dy = 0; dy < width; ++dy) {
+      for (long dx = 0; dx < width; ++dx) {
+        const auto slot = static_cast<std::size_t>(dy * width + dx);
+        if (!scratch.touched[slot]) continue;
+        long jx = cx + dx - half, jy = cy + dy - half;
         if (periodic_) {
           jx = (jx + cnx) % cnx;
           jy = (jy + cny) % cny;
         }
-        row_entries.emplace_back(static_cast<int>(jy * cnx + jx), window[slot]);
-        window[slot] = 0.0;
-        touched[slot] = 0;
+        row_entries.emplace_back(static_cast<int>(jy * cnx + jx), scratch.window[slot]);
+        scratch.window[slot] = 0.0;
+        scratch.touched[slot] = 0;
       }
     }
-    // A coarse node whose children are all fixed is fixed itself.
-    if (row_entries.empty()) row_entries.emplace_back(static_cast<int>(row), 1.0);
     if (periodic_) std::sort(row_entries.begin(), row_entries.end());
     for (const auto& [column, value] : row_entries) {
       columns.push_back(column);
       values.push_back(value);
     }
-    row_count_[row] = static_cast<int>(row_entries.size());
   };
-  // Each thread builds a contiguous run of rows; the runs are then joined
-  // in order, so the matrix is the same whatever the thread count.
-#pragma omp parallel num_threads(team)
-  {
-    const auto t = static_cast<std::size_t>(omp_get_thread_num());
-    const auto threads = static_cast<std::size_t>(omp_get_num_threads());
-    GalerkinScratch& scratch = galerkin_scratch_[t];
-    // The first run goes straight into the matrix (it starts at 0): one
-    // thread holds no second copy.
-    std::vector<int>& column = t == 0 ? c.column : scratch.column;
-    std::vector<double>& value = t == 0 ? c.value : scratch.value;
-    column.clear();
-    value.clear();
-    const std::size_t begin = c.rows * t / threads, end = c.rows * (t + 1) / threads;
-    for (std::size_t row = begin; row < end; ++row) {
-      coarse_row(scratch, column, value, static_cast<long>(row) % cnx, static_cast<long>(row) / cnx);
-    }
-#pragma omp barrier
-#pragma omp single
-    {
-      c.start[0] = 0;
-      for (std::size_t row = 0; row < c.rows; ++row) c.start[row + 1] = c.start[row] + row_count_[row];
-      c.column.resize(static_cast<std::size_t>(c.start[c.rows]));
-      c.value.resize(static_cast<std::size_t>(c.start[c.rows]));
-    }
-    if (t > 0) {
-      std::copy(column.begin(), column.end(), c.column.begin() + c.start[begin]);
-      std::copy(value.begin(), value.end(), c.value.begin() + c.start[begin]);
-    }
-  }
+  // A P, row i: each entry a_ij spread over j's coarse parents (none on
+  // fixed rows and columns, which the transfers leave out).
+  CsrMatrix& ap = galerkin_ap_;
+  ap.rows = a.rows;
+  build_rows_in_runs(
+      ap, team, galerkin_scratch_, row_count_,
+      [&](GalerkinScratch& scratch, std::size_t i, std::vector<int>& columns, std::vector<double>& values) {
+        if (fine.fixed[i]) return;
+        const long hx = ax.parents[static_cast<std::size_t>(fine.node_x[i])].index[0];
+        const long hy = ay.parents[static_cast<std::size_t>(fine.node_y[i])].index[0];
+        for (int e = a.start[i]; e < a.start[i + 1]; ++e) {
+          const auto j = static_cast<std::size_t>(a.column[e]);
+          if (fine.fixed[j]) continue;
+          const Parents& px = ax.parents[static_cast<std::size_t>(fine.node_x[j])];
+          const Parents& py = ay.parents[static_cast<std::size_t>(fine.node_y[j])];
+          for (int qy = 0; qy < py.count; ++qy) {
+            const long dy = offset(hy, py.index[qy], cny, periodic_) + w_ap;
+            const double vy = a.value[e] * py.weight[qy];
+            for (int qx = 0; qx < px.count; ++qx) {
+              const long dx = offset(hx, px.index[qx], cnx, periodic_) + w_ap;
+              const auto slot = static_cast<std::size_t>(dy * side_ap + dx);
+              scratch.window[slot] += vy * px.weight[qx];
+              scratch.touched[slot] = 1;
+            }
+          }
+        }
+        flush(scratch, hx, hy, w_ap, columns, values);
+      });
+  // P^T (A P), coarse row (cx, cy): its children's rows of A P, weighted.
+  CsrMatrix& c = coarse.own;
+  c.rows = coarse.nx * coarse.ny;
+  build_rows_in_runs(
+      c, team, galerkin_scratch_, row_count_,
+      [&](GalerkinScratch& scratch, std::size_t row, std::vector<int>& columns, std::vector<double>& values) {
+        const auto cx = static_cast<long>(row) % cnx, cy = static_cast<long>(row) / cnx;
+        const Children& kids_y = ay.children[static_cast<std::size_t>(cy)];
+        const Children& kids_x = ax.children[static_cast<std::size_t>(cx)];
+        for (int ky = 0; ky < kids_y.count; ++ky) {
+          for (int kx = 0; kx < kids_x.count; ++kx) {
+            const auto i = static_cast<std::size_t>(kids_y.index[ky] * fnx + kids_x.index[kx]);
+            const double wi = kids_y.weight[ky] * kids_x.weight[kx];
+            for (int e = ap.start[i]; e < ap.start[i + 1]; ++e) {
+              const long column = ap.column[e];
+              const long dy = offset(cy, column / cnx, cny, periodic_) + w;
+              const long dx = offset(cx, column % cnx, cnx, periodic_) + w;
+              const auto slot = static_cast<std::size_t>(dy * side + dx);
+              scratch.window[slot] += wi * ap.value[e];
+              scratch.touched[slot] = 1;
+            }
+          }
+        }
+        const std::size_t before = columns.size();
+        flush(scratch, cx, cy, w, columns, values);
+        // A coarse node whose children are all fixed is fixed itself.
+        if (columns.size() == before) {
+          columns.push_back(static_cast<int>(row));
+          values.push_back(1.0);
+        }
+      });
 }
 
 bool FilmMultigrid::factorise(const CsrMatrix& matrix, std::string& message) {
@@ -514,13 +559,14 @@ double FilmMultigrid::bytes_per_node(double row_entries) {
   // kMaxBand wide, pivots, four vectors (x, b, r, D), the nodes' column and
   // row; the coarse levels a third of the fine nodes with Galerkin rows of
   // up to 25 entries held twice (the operator and its off-band part); and
-  // the threads' rows of the Galerkin product besides the first's, at most
-  // the first coarse level's (a quarter of the fine nodes).
+  // the Galerkin product's A P on the fine nodes (up to 16 coarse columns
+  // a row for stencils reaching 2 cells) and the threads' rows of it
+  // besides the first's, at most as many again.
   const double band = 8.0 * static_cast<double>(banded_lu_stride(kMaxBand, kMaxBand)) + 4.0 + 4.0 * 8.0 + 2.0 * 4.0;
   const double fine = 2.0 * 12.0 * row_entries + band;
   const double coarse = (2.0 * 12.0 * 25.0 + band) / 3.0;
-  const double threads_rows = 12.0 * 25.0 / 4.0;
-  return fine + coarse + threads_rows;
+  const double product = 2.0 * 12.0 * 16.0;
+  return fine + coarse + product;
 }
 
 }  // namespace halfspace::lubrication::detail

@@ -46,6 +46,9 @@ class FilmMultigrid final : public FilmPreconditioner {
   void apply(const Eigen::VectorXd& in, Eigen::VectorXd& out) override;
 
   std::size_t levels() const { return levels_.size(); }
+  // Level l's operator after factorise (0: the fine one as scaled; then
+  // the Galerkin operators), for tests.
+  const CsrMatrix& level_matrix(std::size_t l) const { return *levels_[l].matrix; }
   // Bytes per fine node held besides the fine matrix, for a fine matrix of
   // `row_entries` entries per row.
   static double bytes_per_node(double row_entries);
@@ -127,6 +130,7 @@ class FilmMultigrid final : public FilmPreconditioner {
     std::vector<double> value;
   };
   std::vector<GalerkinScratch> galerkin_scratch_;
+  CsrMatrix galerkin_ap_;  // A P of the level being coarsened
   std::vector<int> row_count_;
   Eigen::SparseMatrix<double> coarsest_;
   Eigen::SparseLU<Eigen::SparseMatrix<double>> coarsest_lu_;

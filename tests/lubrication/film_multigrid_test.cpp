@@ -219,6 +219,97 @@ TEST(FilmMultigridTest, ChainedSweepsAreTheSameMapOnAnyThreadCount) {
   }
 }
 
+// The coarse operator is P^T A P (film_multigrid.cpp forms it as P^T (A
+// P), row by row) for P built here from the header's rule alone: 3/4 from a
+// node's own coarse cell and 1/4 from the next one on its side (the own
+// cell alone at a free edge, wrapped on a periodic grid), fixed rows left
+// out of both transfers, and a coarse node whose children are all fixed
+// held by an identity row. A random operator reaching 2 cells each way
+// (the mixed film's mass rows with the preconditioner's truncated K),
+// identity rows on the free grid's edges; rounding is the only difference.
+TEST(FilmMultigridTest, CoarseOperatorIsTheGalerkinProductOfAReach2Operator) {
+  for (const Boundary boundary : {Boundary::free, Boundary::periodic}) {
+    const std::size_t nx = 48, ny = 40, n = nx * ny;  // one coarsening: 24 x 20 <= kDirectNodes
+    const Grid grid = Grid::plane(nx, ny, 1.0, 1.0, boundary);
+    const bool periodic = boundary == Boundary::periodic;
+    std::mt19937 random(5);
+    std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+    CsrMatrix a;
+    a.clear();
+    std::vector<std::pair<int, double>> row;
+    std::vector<char> fixed(n, 0);
+    for (std::size_t y = 0; y < ny; ++y) {
+      for (std::size_t x = 0; x < nx; ++x) {
+        const std::size_t k = y * nx + x;
+        if (!periodic && (x == 0 || y == 0 || x + 1 == nx || y + 1 == ny)) {
+          fixed[k] = 1;
+          row.emplace_back(static_cast<int>(k), 1.0);
+        } else {
+          for (long dy = -2; dy <= 2; ++dy) {
+            for (long dx = -2; dx <= 2; ++dx) {
+              const long jx = static_cast<long>(x) + dx, jy = static_cast<long>(y) + dy;
+              const auto wrap = [](long i, std::size_t m) { return (i + static_cast<long>(m)) % static_cast<long>(m); };
+              if (!periodic && (jx < 0 || jy < 0 || jx >= static_cast<long>(nx) || jy >= static_cast<long>(ny)))
+                continue;
+              const double value = dx == 0 && dy == 0 ? 30.0 : uniform(random);
+              row.emplace_back(static_cast<int>(wrap(jy, ny) * static_cast<long>(nx) + wrap(jx, nx)), value);
+            }
+          }
+        }
+        a.append_row(row);
+      }
+    }
+    FilmMultigrid multigrid(grid, 0, false);
+    std::string message;
+    ASSERT_TRUE(multigrid.factorise(a, message)) << message;
+    ASSERT_EQ(multigrid.levels(), 2U);
+    // P (n x nc), dense.
+    const std::size_t cx = nx / 2, cy = ny / 2, nc = cx * cy;
+    const auto axis_weights = [&](std::size_t i, std::size_t coarse) {
+      std::vector<std::pair<std::size_t, double>> weights;
+      const long own = static_cast<long>(i / 2);
+      long other = i % 2 == 0 ? own - 1 : own + 1;
+      if (periodic) other = (other + static_cast<long>(coarse)) % static_cast<long>(coarse);
+      if (other < 0 || other >= static_cast<long>(coarse)) {
+        weights.emplace_back(static_cast<std::size_t>(own), 1.0);
+      } else {
+        weights.emplace_back(static_cast<std::size_t>(own), 0.75);
+        weights.emplace_back(static_cast<std::size_t>(other), 0.25);
+      }
+      return weights;
+    };
+    Eigen::MatrixXd p = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(nc));
+    for (std::size_t k = 0; k < n; ++k) {
+      if (fixed[k]) continue;
+      for (const auto& [px, wx] : axis_weights(k % nx, cx)) {
+        for (const auto& [py, wy] : axis_weights(k / nx, cy)) {
+          p(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(py * cx + px)) += wx * wy;
+        }
+      }
+    }
+    Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+    for (std::size_t k = 0; k < n; ++k) {
+      for (int e = a.start[k]; e < a.start[k + 1]; ++e) dense(static_cast<Eigen::Index>(k), a.column[e]) += a.value[e];
+    }
+    Eigen::MatrixXd expected = p.transpose() * dense * p;
+    for (Eigen::Index c = 0; c < expected.rows(); ++c) {
+      if (p.col(c).isZero()) expected(c, c) = 1.0;  // every child fixed
+    }
+    const CsrMatrix& coarse = multigrid.level_matrix(1);
+    ASSERT_EQ(coarse.rows, nc);
+    Eigen::MatrixXd formed = Eigen::MatrixXd::Zero(expected.rows(), expected.cols());
+    for (std::size_t k = 0; k < nc; ++k) {
+      for (int e = coarse.start[k]; e < coarse.start[k + 1]; ++e) {
+        EXPECT_EQ(formed(static_cast<Eigen::Index>(k), coarse.column[e]), 0.0) << "a column twice in row " << k;
+        formed(static_cast<Eigen::Index>(k), coarse.column[e]) = coarse.value[e];
+      }
+    }
+    EXPECT_LE((formed - expected).cwiseAbs().maxCoeff(), 1e-13 * expected.cwiseAbs().maxCoeff())
+        << (periodic ? "periodic" : "free");
+    EXPECT_GT(expected.cwiseAbs().maxCoeff(), 1.0);
+  }
+}
+
 // The line solves: a band that needs row interchanges (zero diagonal
 // entries) against Eigen's dense partial-pivot LU, to rounding.
 TEST(BandedLuTest, SolvesABandThatNeedsPivoting) {
