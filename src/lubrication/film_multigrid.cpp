@@ -290,9 +290,10 @@ void build_rows_in_runs(CsrMatrix& out, int team, std::vector<Scratch>& scratche
 }
 
 // P^T A P in two products: A P (fine rows, coarse columns), then P^T (A P).
-// Each fine row's A P is made once, where the product row by row would
-// make it again for each of the up to 4 coarse rows the node is a child
-// of: a third of the work (docs/development-log.md, 2026-12-03).
+// Each fine row's A P is made once per thread, where the product row by
+// row would make it again for each of the up to 4 coarse rows the node is
+// a child of (docs/development-log.md, 2026-12-03). A P is held a few fine
+// lines at a time: a coarse line's rows need the 4 fine lines around it.
 void FilmMultigrid::galerkin(const Level& fine, Level& coarse) {
   const CsrMatrix& a = *fine.matrix;
   const auto fnx = static_cast<long>(fine.nx), fny = static_cast<long>(fine.ny);
@@ -319,32 +320,36 @@ void FilmMultigrid::galerkin(const Level& fine, Level& coarse) {
   const int team = a.rows > kParallelNodes ? omp_get_max_threads() : 1;
   if (galerkin_scratch_.size() < static_cast<std::size_t>(team))
     galerkin_scratch_.resize(static_cast<std::size_t>(team));
-  const auto window_size = static_cast<std::size_t>(std::max(side, side_ap) * std::max(side, side_ap));
   for (int t = 0; t < team; ++t) {
-    galerkin_scratch_[static_cast<std::size_t>(t)].window.assign(window_size, 0.0);
-    galerkin_scratch_[static_cast<std::size_t>(t)].touched.assign(window_size, 0);
+    GalerkinScratch& scratch = galerkin_scratch_[static_cast<std::size_t>(t)];
+    scratch.window.assign(static_cast<std::size_t>(side * side), 0.0);
+    scratch.touched.assign(static_cast<std::size_t>(side * side), 0);
+    scratch.ap_window.assign(static_cast<std::size_t>(side_ap * side_ap), 0.0);
+    scratch.ap_touched.assign(static_cast<std::size_t>(side_ap * side_ap), 0);
+    for (ProductLine& line : scratch.lines) line.y = -1;
   }
   const Axis& ax = fine.to_coarse_x;
   const Axis& ay = fine.to_coarse_y;
-  // The window's entries around (cx, cy), half-width `half`, into the row
-  // (in slot order, by column on periodic grids), the window cleared.
-  const auto flush = [&](GalerkinScratch& scratch, long cx, long cy, long half, std::vector<int>& columns,
-                         std::vector<double>& values) {
+  // The window's entries around (cx, cy), half-width `half`, appended to
+  // `columns` and `values` (in slot order, by column on periodic grids),
+  // the window cleared.
+  const auto flush = [&](GalerkinScratch& scratch, std::vector<double>& window, std::vector<char>& touched, long cx,
+                         long cy, long half, std::vector<int>& columns, std::vector<double>& values) {
     const long width = 2 * half + 1;
     std::vector<std::pair<int, double>>& row_entries = scratch.row_entries;
     row_entries.clear();
     for (long dy = 0; dy < width; ++dy) {
       for (long dx = 0; dx < width; ++dx) {
         const auto slot = static_cast<std::size_t>(dy * width + dx);
-        if (!scratch.touched[slot]) continue;
+        if (!touched[slot]) continue;
         long jx = cx + dx - half, jy = cy + dy - half;
         if (periodic_) {
           jx = (jx + cnx) % cnx;
           jy = (jy + cny) % cny;
         }
-        row_entries.emplace_back(static_cast<int>(jy * cnx + jx), scratch.window[slot]);
-        scratch.window[slot] = 0.0;
-        scratch.touched[slot] = 0;
+        row_entries.emplace_back(static_cast<int>(jy * cnx + jx), window[slot]);
+        window[slot] = 0.0;
+        touched[slot] = 0;
       }
     }
     if (periodic_) std::sort(row_entries.begin(), row_entries.end());
@@ -353,16 +358,22 @@ void FilmMultigrid::galerkin(const Level& fine, Level& coarse) {
       values.push_back(value);
     }
   };
-  // A P, row i: each entry a_ij spread over j's coarse parents (none on
-  // fixed rows and columns, which the transfers leave out).
-  CsrMatrix& ap = galerkin_ap_;
-  ap.rows = a.rows;
-  build_rows_in_runs(
-      ap, team, galerkin_scratch_, row_count_,
-      [&](GalerkinScratch& scratch, std::size_t i, std::vector<int>& columns, std::vector<double>& values) {
-        if (fine.fixed[i]) return;
-        const long hx = ax.parents[static_cast<std::size_t>(fine.node_x[i])].index[0];
-        const long hy = ay.parents[static_cast<std::size_t>(fine.node_y[i])].index[0];
+  // A P on fine line y, in the thread's line cache: row i's entries a_ij
+  // spread over j's coarse parents (none on fixed rows and columns, which
+  // the transfers leave out).
+  const auto product_line = [&](GalerkinScratch& scratch, long y) -> const ProductLine& {
+    ProductLine& line = scratch.lines[static_cast<std::size_t>(y) % scratch.lines.size()];
+    if (line.y == y) return line;
+    line.y = y;
+    line.start.resize(static_cast<std::size_t>(fnx) + 1);
+    line.column.clear();
+    line.value.clear();
+    line.start[0] = 0;
+    for (long x = 0; x < fnx; ++x) {
+      const auto i = static_cast<std::size_t>(y * fnx + x);
+      if (!fine.fixed[i]) {
+        const long hx = ax.parents[static_cast<std::size_t>(x)].index[0];
+        const long hy = ay.parents[static_cast<std::size_t>(y)].index[0];
         for (int e = a.start[i]; e < a.start[i + 1]; ++e) {
           const auto j = static_cast<std::size_t>(a.column[e]);
           if (fine.fixed[j]) continue;
@@ -374,13 +385,17 @@ void FilmMultigrid::galerkin(const Level& fine, Level& coarse) {
             for (int qx = 0; qx < px.count; ++qx) {
               const long dx = offset(hx, px.index[qx], cnx, periodic_) + w_ap;
               const auto slot = static_cast<std::size_t>(dy * side_ap + dx);
-              scratch.window[slot] += vy * px.weight[qx];
-              scratch.touched[slot] = 1;
+              scratch.ap_window[slot] += vy * px.weight[qx];
+              scratch.ap_touched[slot] = 1;
             }
           }
         }
-        flush(scratch, hx, hy, w_ap, columns, values);
-      });
+        flush(scratch, scratch.ap_window, scratch.ap_touched, hx, hy, w_ap, line.column, line.value);
+      }
+      line.start[static_cast<std::size_t>(x) + 1] = static_cast<int>(line.column.size());
+    }
+    return line;
+  };
   // P^T (A P), coarse row (cx, cy): its children's rows of A P, weighted.
   CsrMatrix& c = coarse.own;
   c.rows = coarse.nx * coarse.ny;
@@ -391,21 +406,22 @@ void FilmMultigrid::galerkin(const Level& fine, Level& coarse) {
         const Children& kids_y = ay.children[static_cast<std::size_t>(cy)];
         const Children& kids_x = ax.children[static_cast<std::size_t>(cx)];
         for (int ky = 0; ky < kids_y.count; ++ky) {
+          const ProductLine& line = product_line(scratch, kids_y.index[ky]);
           for (int kx = 0; kx < kids_x.count; ++kx) {
-            const auto i = static_cast<std::size_t>(kids_y.index[ky] * fnx + kids_x.index[kx]);
+            const auto x = static_cast<std::size_t>(kids_x.index[kx]);
             const double wi = kids_y.weight[ky] * kids_x.weight[kx];
-            for (int e = ap.start[i]; e < ap.start[i + 1]; ++e) {
-              const long column = ap.column[e];
+            for (int e = line.start[x]; e < line.start[x + 1]; ++e) {
+              const long column = line.column[static_cast<std::size_t>(e)];
               const long dy = offset(cy, column / cnx, cny, periodic_) + w;
               const long dx = offset(cx, column % cnx, cnx, periodic_) + w;
               const auto slot = static_cast<std::size_t>(dy * side + dx);
-              scratch.window[slot] += wi * ap.value[e];
+              scratch.window[slot] += wi * line.value[static_cast<std::size_t>(e)];
               scratch.touched[slot] = 1;
             }
           }
         }
         const std::size_t before = columns.size();
-        flush(scratch, cx, cy, w, columns, values);
+        flush(scratch, scratch.window, scratch.touched, cx, cy, w, columns, values);
         // A coarse node whose children are all fixed is fixed itself.
         if (columns.size() == before) {
           columns.push_back(static_cast<int>(row));
@@ -559,14 +575,13 @@ double FilmMultigrid::bytes_per_node(double row_entries) {
   // kMaxBand wide, pivots, four vectors (x, b, r, D), the nodes' column and
   // row; the coarse levels a third of the fine nodes with Galerkin rows of
   // up to 25 entries held twice (the operator and its off-band part); and
-  // the Galerkin product's A P on the fine nodes (up to 16 coarse columns
-  // a row for stencils reaching 2 cells) and the threads' rows of it
-  // besides the first's, at most as many again.
+  // the threads' rows of the Galerkin product besides the first's, at most
+  // the first coarse level's (a quarter of the fine nodes).
   const double band = 8.0 * static_cast<double>(banded_lu_stride(kMaxBand, kMaxBand)) + 4.0 + 4.0 * 8.0 + 2.0 * 4.0;
   const double fine = 2.0 * 12.0 * row_entries + band;
   const double coarse = (2.0 * 12.0 * 25.0 + band) / 3.0;
-  const double product = 2.0 * 12.0 * 16.0;
-  return fine + coarse + product;
+  const double threads_rows = 12.0 * 25.0 / 4.0;
+  return fine + coarse + threads_rows;
 }
 
 }  // namespace halfspace::lubrication::detail

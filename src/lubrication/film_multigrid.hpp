@@ -119,18 +119,25 @@ class FilmMultigrid final : public FilmPreconditioner {
   std::vector<Level> levels_;
   // One line's right-hand side per thread (grown on the first sweep).
   std::vector<double> line_rhs_;
-  // The Galerkin product's per-thread scratch: the row accumulator over
-  // coarse offsets, and the thread's rows before they are joined (but the
-  // first thread's, written in place).
+  // A P on one fine line: its nx rows' coarse columns and values.
+  struct ProductLine {
+    long y = -1;  // the fine line held, or -1
+    std::vector<int> start, column;
+    std::vector<double> value;
+  };
+  // The Galerkin product's per-thread scratch: the row accumulators over
+  // coarse offsets (P^T (A P)'s and A P's), the A P of the fine lines last
+  // used (a coarse line's children span 4), and the thread's rows before
+  // they are joined (but the first thread's, written in place).
   struct GalerkinScratch {
-    std::vector<double> window;
-    std::vector<char> touched;
+    std::vector<double> window, ap_window;
+    std::vector<char> touched, ap_touched;
     std::vector<std::pair<int, double>> row_entries;
+    std::array<ProductLine, 8> lines;
     std::vector<int> column;
     std::vector<double> value;
   };
   std::vector<GalerkinScratch> galerkin_scratch_;
-  CsrMatrix galerkin_ap_;  // A P of the level being coarsened
   std::vector<int> row_count_;
   Eigen::SparseMatrix<double> coarsest_;
   Eigen::SparseLU<Eigen::SparseMatrix<double>> coarsest_lu_;
