@@ -168,5 +168,39 @@ TEST(FilmNewtonTest, WatchdogGoesBackToTheStallWhereItDoesNotPay) {
   EXPECT_EQ(converged.iterations, 1 + steps_to_tolerance(2.0, 0.9));
 }
 
+TEST(FilmNewtonTest, NoTightRetryWhileTheWatchdogRuns) {
+  // A dead end: every step, on either side, raises the norm. GMRES steps:
+  // at the stall the refused loose step is solved again to the tight
+  // tolerance; from the watchdog's point a refused step ends the watchdog
+  // at once, without a tight solve.
+  double x = 1.0, trial = 1.0, saved = 1.0;
+  int tight_solves = 0;
+  FilmNewton n = model_newton(x);
+  n.rules.krylov = true;
+  n.rules.krylov_tolerance = 1e-12;
+  n.rules.watchdog_steps = 4;
+  n.solve = [&tight_solves](const FilmMeasure&, double, bool tight) {
+    if (tight) ++tight_solves;
+    FilmNewtonSolve solved;
+    solved.solved = true;
+    return solved;
+  };
+  n.try_step = [&](double scale, bool) -> std::optional<FilmMeasure> {
+    trial = x * (1.0 + scale);
+    return at(trial);
+  };
+  n.accept = [&] { x = trial; };
+  n.save = [&] { saved = x; };
+  n.restore = [&] { x = saved; };
+  NewtonFilmResult result;
+  const int tight_retries = run_film_newton(n, result);
+  EXPECT_FALSE(result.converged());
+  EXPECT_NE(result.message.find("stalled at step 1"), std::string::npos) << result.message;
+  EXPECT_EQ(result.watchdog_steps, 1);
+  EXPECT_EQ(tight_retries, 1);
+  EXPECT_EQ(tight_solves, 1);
+  EXPECT_EQ(x, 1.0);  // back at the stall
+}
+
 }  // namespace
 }  // namespace halfspace::lubrication::detail
