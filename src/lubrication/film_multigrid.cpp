@@ -369,11 +369,11 @@ void FilmMultigrid::galerkin(const Level& fine, Level& coarse) {
     line.column.clear();
     line.value.clear();
     line.start[0] = 0;
+    const long hy = ay.parents[static_cast<std::size_t>(y)].index[0];
     for (long x = 0; x < fnx; ++x) {
       const auto i = static_cast<std::size_t>(y * fnx + x);
       if (!fine.fixed[i]) {
         const long hx = ax.parents[static_cast<std::size_t>(x)].index[0];
-        const long hy = ay.parents[static_cast<std::size_t>(y)].index[0];
         for (int e = a.start[i]; e < a.start[i + 1]; ++e) {
           const auto j = static_cast<std::size_t>(a.column[e]);
           if (fine.fixed[j]) continue;
