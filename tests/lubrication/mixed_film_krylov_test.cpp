@@ -615,6 +615,37 @@ TEST(MixedFilmKrylovTest, SweepPointFromTheLastFilmIsTheFilmFromAbove) {
   EXPECT_NEAR(f.contact_load_fraction, expected.contact_load_fraction, 3e-5);
 }
 
+// In full film the speed continuation's first step is sqrt(2), not 2: on
+// the measured window at 1024^2 the first step of 2 from the faster film
+// failed where the step of sqrt(2) converged, and a failed step costs more
+// than a step. From the film at 4x the speed (no contact load) the solves
+// run at 4 / sqrt(2), then (the ratio grown to its ceiling of 2) at
+// sqrt(2) and 1 times the speed, and the film is the one solved directly.
+TEST(MixedFilmKrylovTest, FullFilmContinuationStartsWithTheSquareRootOfTwo) {
+  const RoughContact point = rough_point(13, 0.05e-6);
+  FftInfluenceOperator op(point.grid, kEStar);
+  const double speed = 4.0 * kMixedSpeed;
+  MixedFilmOptions options = options_for(kPointLoad, FilmLinearSolve::gmres);
+  const MixedFilm faster = solve_mixed_film(op, point.gap, flow(4.0 * speed), laws(), options);
+  ASSERT_TRUE(faster.converged()) << faster.message;
+  ASSERT_EQ(faster.contact_load_fraction, 0.0);
+  std::vector<double> factors;
+  options.trace = [&](const MixedSolveRecord& record) { factors.push_back(record.entrainment_speed / speed); };
+  const MixedFilm f = detail::solve_mixed_film_on_grid(op, point.gap, flow(speed), laws(), options, &faster,
+                                                       detail::MixedStartUse::continue_only);
+  ASSERT_TRUE(f.converged()) << f.message;
+  EXPECT_EQ(f.contact_load_fraction, 0.0);
+  ASSERT_EQ(factors.size(), 3u);
+  EXPECT_NEAR(factors[0], 4.0 / std::numbers::sqrt2, 1e-12);
+  EXPECT_NEAR(factors[1], std::numbers::sqrt2, 1e-12);
+  EXPECT_NEAR(factors[2], 1.0, 1e-12);
+  options.trace = nullptr;
+  expect_solution_holds(op, point.gap, flow(speed), options, f);
+  const MixedFilm direct = solve_mixed_film(op, point.gap, flow(speed), laws(), options, &faster);
+  ASSERT_TRUE(direct.converged()) << direct.message;
+  expect_same_film(f, direct);
+}
+
 TEST(MixedFilmKrylovTest, RefusesInvalidKrylovOptionsNamingThem) {
   const auto message = [](const MixedFilmOptions& options) {
     try {
