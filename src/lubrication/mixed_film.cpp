@@ -28,6 +28,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <vector>
@@ -893,10 +894,12 @@ using detail::at_speed_factor;
 
 // Continuation in the speed: from a film solved at `factor` times the
 // velocities down (or up) to the velocities themselves, in steps of at most
-// kContinuationRatio, each warm-started from the last; a step that fails is
-// halved (in log speed) down to kSmallestRatio. The films between are
-// discarded; the steps are counted into the result's iterations.
+// kContinuationRatio (kFullFilmRatio in full film), each warm-started from
+// the last; a step that fails is halved (in log speed) down to
+// kSmallestRatio. The films between are discarded; the steps are counted
+// into the result's iterations.
 constexpr double kContinuationRatio = 2.0;
+constexpr double kFullFilmRatio = std::numbers::sqrt2;
 constexpr double kSmallestRatio = 1.02;
 constexpr int kContinuationSolves = 60;
 constexpr double kRatioAfterSmoothing = 1.1;
@@ -904,21 +907,21 @@ constexpr double kRatioAfterSmoothing = 1.1;
 MixedFilm continue_in_speed(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
                             const LubricantLaws& laws, const MixedFilmOptions& options, MixedFilm film, double factor,
                             Work& work) {
-  // In full film the first step is sqrt(kContinuationRatio): from the
-  // faster film the first step of 2 failed on the measured window at
-  // 1024^2 (451 s) where the step of sqrt(2) converged, and the ratio grows
-  // back after it (docs/development-log.md, 2026-12-03, thirty-eighth
-  // session).
-  double ratio = film.contact_load_fraction == 0.0 ? std::sqrt(kContinuationRatio) : kContinuationRatio;
-  // In full film (no contact load in the last film) the ratio that failed
-  // is not tried again: the films thin smoothly as the speed falls, and the
-  // step that failed once failed again after each success at the halved
-  // ratio (the measured window at 1024^2: four of its five failed steps,
-  // 2 700 s of 87 min). In the mixed regime the ratio comes back: there a
-  // small step can meet a kink a larger one steps over (a 17^2 rough point
-  // contact stalled with the ratio held; docs/development-log.md,
-  // 2026-12-03, thirty-fifth and thirty-seventh sessions).
-  double ceiling = kContinuationRatio;
+  // In full film (no contact load in the last film) the steps are at most
+  // kFullFilmRatio, and the ratio that failed is not tried again: the films
+  // thin smoothly as the speed falls, and on the measured window at 1024^2
+  // every step of 2 failed (451 to 611 s each, the first one or after a
+  // step of sqrt(2)) where the steps of sqrt(2) converged. In the mixed
+  // regime the ratio
+  // comes back to kContinuationRatio: there a small step can meet a kink a
+  // larger one steps over (a 17^2 rough point contact stalled with the
+  // ratio held; docs/development-log.md, 2026-12-03, thirty-fifth,
+  // thirty-seventh and thirty-eighth sessions).
+  const auto ceiling_after = [](const MixedFilm& last, double ceiling) {
+    return last.contact_load_fraction > 0.0 ? kContinuationRatio : std::min(ceiling, kFullFilmRatio);
+  };
+  double ceiling = ceiling_after(film, kContinuationRatio);
+  double ratio = ceiling;
   while (factor != 1.0 && work.solves < kContinuationSolves) {
     const double log_step = std::min(std::abs(std::log(factor)), std::log(ratio));
     const double next =
@@ -928,7 +931,7 @@ MixedFilm continue_in_speed(InfluenceOperator& op, const Eigen::ArrayXd& gap, co
     if (trial.converged()) {
       film = std::move(trial);
       factor = next;
-      if (film.contact_load_fraction > 0.0) ceiling = kContinuationRatio;
+      ceiling = ceiling_after(film, ceiling);
       ratio = std::min(ratio * 1.5, ceiling);
       continue;
     }
