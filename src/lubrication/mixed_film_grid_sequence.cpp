@@ -103,8 +103,7 @@ MixedFilm solve_start(InfluenceOperator& op, const Eigen::ArrayXd& gap, const Fl
                       const LubricantLaws& laws, const MixedFilmOptions& options, SolveEffort effort) {
   bool coarser_grid_failed = false;
   MixedFilm film = solve_sequenced(op, gap, conditions, laws, options, nullptr, effort, &coarser_grid_failed);
-  if (film.converged() || effort == SolveEffort::quick_start || options.checked_step_branches ||
-      coarser_grid_failed) {
+  if (film.converged() || effort == SolveEffort::quick_start || options.checked_step_branches || coarser_grid_failed) {
     return film;
   }
   MixedFilmOptions checked = options;
