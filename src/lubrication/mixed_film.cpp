@@ -912,11 +912,10 @@ MixedFilm continue_in_speed(InfluenceOperator& op, const Eigen::ArrayXd& gap, co
   // thin smoothly as the speed falls, and on the measured window at 1024^2
   // every step of 2 failed (451 to 611 s each, the first one or after a
   // step of sqrt(2)) where the steps of sqrt(2) converged. In the mixed
-  // regime the ratio
-  // comes back to kContinuationRatio: there a small step can meet a kink a
-  // larger one steps over (a 17^2 rough point contact stalled with the
-  // ratio held; docs/development-log.md, 2026-12-03, thirty-fifth,
-  // thirty-seventh and thirty-eighth sessions).
+  // regime the ratio comes back to kContinuationRatio: there a small step
+  // can meet a kink a larger one steps over (a 17^2 rough point contact
+  // stalled with the ratio held; docs/development-log.md, 2026-12-03,
+  // thirty-fifth, thirty-seventh and thirty-eighth sessions).
   const auto ceiling_after = [](const MixedFilm& last, double ceiling) {
     return last.contact_load_fraction > 0.0 ? kContinuationRatio : std::min(ceiling, kFullFilmRatio);
   };
