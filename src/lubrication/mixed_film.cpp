@@ -604,11 +604,20 @@ MixedFilm newton_solve(InfluenceOperator& op, const Eigen::ArrayXd& gap, const F
         }
       }
     };
-    branches_at_x();
-    // On the GMRES path the rows do not depend on the branches: linearised
-    // once, then one GMRES solve per branch pass; the dense path's J is
-    // formed again per pass.
-    if (krylov) measure(x, residual, true);
+    // The tight retry keeps the branches and the linearisation the loose
+    // passes ended with: from the current point's branches it ran all its
+    // passes again, and at 1024^2 none of those retries led to a step; from
+    // the loose passes' branches the stalls of the measured window's
+    // continuation steps were passed without the watchdog (0.0113 m/s: 697
+    // -> 545 GMRES iterations; docs/development-log.md, 2026-12-03,
+    // thirty-eighth session).
+    if (!tight) {
+      branches_at_x();
+      // On the GMRES path the rows do not depend on the branches: linearised
+      // once, then one GMRES solve per branch pass; the dense path's J is
+      // formed again per pass.
+      if (krylov) measure(x, residual, true);
+    }
     const detail::MixedScales scales{P, H, mass_scale, load_control ? area / w : 0.0, load_control};
     // A try (only_trying) takes none: it gives up where GMRES stops short.
     const bool short_steps_taken = current.norm >= detail::kLargestForcing && !only_trying;
