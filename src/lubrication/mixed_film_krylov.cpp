@@ -62,6 +62,7 @@ double mixed_krylov_memory_estimate(std::size_t nodes, const MixedKrylovSettings
           : entries * (12.0 + 12.0) + entries * kFillAllowance * 12.0;
   const double per_node = 2.0 * 8.0 * (settings.restart + 1)  // GMRES basis, 2 unknowns per node
                           + 16.0 * sizeof(LocalTerm)          // local rows
+                          + 16.0 * (sizeof(int) + 16.0)       // their derivatives on the solve's branches
                           + preconditioner + 8.0 * 60.0;      // the Newton state and work vectors
   return per_node * static_cast<double>(nodes);
 }
@@ -133,7 +134,6 @@ void MixedKrylovSolver::apply_jacobian(const Eigen::VectorXd& v, Eigen::VectorXd
   // from their owners.
   const double* values = slab_.on_stencil(v.head(ni), v_stencil_);
   const double* deflection = slab_.on_stencil(deflection_, deflection_stencil_);
-  const std::vector<double>& film_slope = rows_->film_slope;
   const std::vector<char>& closed = *closed_;
   linalg::for_each_index(n_, [&](std::size_t k) {
     const auto kk = static_cast<Eigen::Index>(k);
@@ -142,10 +142,9 @@ void MixedKrylovSolver::apply_jacobian(const Eigen::VectorXd& v, Eigen::VectorXd
     } else {
       double sum = 0.0;
       for (std::size_t t = rows_->start[k]; t < rows_->start[k + 1]; ++t) {
-        const LocalTerm& term = rows_->terms[t];
-        const auto j = static_cast<Eigen::Index>(term.node);
-        sum += (term.by_pressure * dp_ds_[j] + term.by_fraction * dtheta_ds_[j]) * values[j];
-        sum += term.by_film * film_slope[term.node] * deflection[j];
+        const int j = term_node_[t];
+        sum += term_by_s_[t] * values[j];
+        sum += term_by_deflection_[t] * deflection[j];
       }
       out[kk] = sum / scales_.mass;
     }
@@ -200,17 +199,13 @@ void MixedKrylovSolver::mass_row(std::size_t k, bool every_entry, FilmEntry&& fi
     return;
   }
   const double mass = scales_.mass;
-  const std::vector<double>& film_slope = rows_->film_slope;
   for (std::size_t t = rows_->start[k]; t < rows_->start[k + 1]; ++t) {
-    const LocalTerm& term = rows_->terms[t];
-    const auto j = static_cast<Eigen::Index>(term.node);
-    row_scratch_.emplace_back(static_cast<int>(slab_.whole_node(term.node)),
-                              (term.by_pressure * dp_ds_[j] + term.by_fraction * dtheta_ds_[j]) / mass);
-    const double by_film = term.by_film * film_slope[term.node] / mass;
+    const std::size_t whole = slab_.whole_node(static_cast<std::size_t>(term_node_[t]));
+    row_scratch_.emplace_back(static_cast<int>(whole), term_by_s_[t] / mass);
+    const double by_film = term_by_deflection_[t] / mass;
     krylov_.border_column[static_cast<Eigen::Index>(k)] += by_film;
     if (by_film == 0.0 && !every_entry) continue;
-    local_.for_each(slab_.whole_node(term.node),
-                    [&](std::size_t node, double k_value) { film_entry(node, by_film * k_value); });
+    local_.for_each(whole, [&](std::size_t node, double k_value) { film_entry(node, by_film * k_value); });
   }
 }
 
@@ -352,6 +347,18 @@ KrylovOutcome MixedKrylovSolver::solve(const MixedRows& rows, const std::vector<
   }
   slab_.exchange(dp_ds_.data());
   slab_.exchange(dtheta_ds_.data());
+  // Each local term's derivatives by its node's s and by the film's change
+  // there, on these branches: GMRES applies them at every iteration.
+  term_node_.resize(rows.terms.size());
+  term_by_s_.resize(rows.terms.size());
+  term_by_deflection_.resize(rows.terms.size());
+  linalg::for_each_index(rows.terms.size(), [&](std::size_t t) {
+    const LocalTerm& term = rows.terms[t];
+    const auto j = static_cast<Eigen::Index>(term.node);
+    term_node_[t] = static_cast<int>(term.node);
+    term_by_s_[t] = term.by_pressure * dp_ds_[j] + term.by_fraction * dtheta_ds_[j];
+    term_by_deflection_[t] = term.by_film * rows.film_slope[term.node];
+  });
   // The retry after a stale preconditioner failed goes on from where it
   // stopped (GMRES's residual only falls); GMRES's estimate and the true
   // residual part by rounding: allow 10x.

@@ -118,6 +118,10 @@ class MixedKrylovSolver {
   // product's own rows; on several processes v_s and the film's change on
   // the stencil too.
   Eigen::VectorXd dp_ds_, dtheta_ds_, closed_stencil_, total_, deflection_, v_stencil_, deflection_stencil_;
+  // Per local term of the rows: its stencil node, d/ds there and d/d(the
+  // film's change) there, on the current branches.
+  std::vector<int> term_node_;
+  std::vector<double> term_by_s_, term_by_deflection_;
   // The preconditioner: B (2n x 2n, sparse) bordered by the h0 column and
   // the load row under load control.
   CsrMatrix matrix_;
