@@ -194,17 +194,30 @@ MixedFilm solve_sequenced(InfluenceOperator& op, const Eigen::ArrayXd& gap, cons
   const Grid& grid = op.grid();
   options.validate();
   // On several processes each holds its rows of `gap` (agreed: the
-  // decision is collective).
+  // decision is collective). A grid of odd shape has no coarser grid: it is
+  // the coarsest, solved from its cold starts with the speed continuation
+  // (as the first grid of at most kMixedSequencingNodes is).
+  const bool wanted = options.grid_sequencing && start == nullptr && options.load_controlled() &&
+                      grid.dimension() == 2 && options.linear_solve != FilmLinearSolve::dense &&
+                      grid.size() > kMixedSequencingNodes;
+  const bool coarsens = solvers::coarser_grid(grid, detail::kSequencingMinCells).has_value();
   const bool sequence =
-      options.grid_sequencing && start == nullptr && options.load_controlled() && grid.dimension() == 2 &&
-      options.linear_solve != FilmLinearSolve::dense && grid.size() > kMixedSequencingNodes &&
+      wanted && coarsens &&
       op.communicator().min(static_cast<std::size_t>(gap.size()) == op.local_size() && gap.allFinite() ? 1.0 : 0.0) >
           0.5;
   if (!sequence) {
-    return detail::solve_mixed_film_on_grid(op, gap, conditions, laws, options, start,
-                                            effort == SolveEffort::quick_start
-                                                ? detail::MixedStartUse::solve_only
-                                                : detail::MixedStartUse::solve_then_continue);
+    MixedFilm film = detail::solve_mixed_film_on_grid(op, gap, conditions, laws, options, start,
+                                                      effort == SolveEffort::quick_start
+                                                          ? detail::MixedStartUse::solve_only
+                                                          : detail::MixedStartUse::solve_then_continue);
+    const bool odd = grid.nx() % 2 != 0 || grid.ny() % 2 != 0;
+    if (wanted && odd && !film.converged() && effort == SolveEffort::answer) {
+      film.message += fmt::format(
+          " (the {} grid has an odd node count, which grid sequencing cannot coarsen, so the film started cold: an "
+          "even grid such as {}x{} starts it from the coarser grids' film)",
+          grid.shape_string(), grid.nx() + grid.nx() % 2, grid.ny() + grid.ny() % 2);
+    }
+    return film;
   }
   // The fine grid's memory first: the coarse grids would take minutes on a
   // grid the fine solve cannot hold.

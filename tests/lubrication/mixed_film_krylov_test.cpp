@@ -645,6 +645,30 @@ TEST(MixedFilmKrylovTest, FullFilmContinuationStepsAreTheSquareRootOfTwo) {
   expect_same_film(f, direct);
 }
 
+// Grid sequencing halves the grid down to kMixedSequencingNodes; a grid of
+// odd shape above that cannot be halved and is the coarsest grid itself,
+// solved from its cold starts with the speed continuation. 70^2 halves to
+// 35^2 (1 225 nodes): the 35^2 film used to fail at once for want of a
+// coarser one, with an empty message, and so did the 70^2 answer (above
+// kMaxMixedColdRestartNodes, no cold restart), as did any grid whose
+// halving meets an odd side above 32 cells (1000^2: 125^2).
+TEST(MixedFilmKrylovTest, AnOddGridIsTheCoarsestGridOfTheSequence) {
+  const RoughContact point = rough_point(70, 0.2e-6);
+  ASSERT_GT(point.grid.size(), kMaxMixedColdRestartNodes);
+  FftInfluenceOperator op(point.grid, kEStar);
+  const MixedFilmOptions options = options_for(kPointLoad, FilmLinearSolve::gmres);
+  std::vector<std::size_t> sides;
+  MixedFilmOptions traced = options;
+  traced.trace = [&](const MixedSolveRecord& record) { sides.push_back(record.nx); };
+  const MixedFilm f = solve_mixed_film(op, point.gap, flow(0.1), laws(), traced);
+  ASSERT_TRUE(f.converged()) << f.message;
+  EXPECT_EQ(f.coarse_levels, 1);
+  ASSERT_FALSE(sides.empty());
+  EXPECT_EQ(*std::min_element(sides.begin(), sides.end()), 35U);
+  EXPECT_EQ(sides.back(), 70U);
+  expect_solution_holds(op, point.gap, flow(0.1), options, f);
+}
+
 TEST(MixedFilmKrylovTest, RefusesInvalidKrylovOptionsNamingThem) {
   const auto message = [](const MixedFilmOptions& options) {
     try {
