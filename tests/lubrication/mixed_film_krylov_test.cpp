@@ -20,6 +20,7 @@
 #include "halfspace/lubrication/mixed_film.hpp"
 #include "halfspace/operators/fft_influence_operator.hpp"
 #include "halfspace/solvers/polonsky_keer.hpp"
+#include "halfspace/threads.hpp"
 #include "lubrication/mixed_film_grid_sequence.hpp"
 #include "support/analytic_solutions.hpp"
 
@@ -667,6 +668,34 @@ TEST(MixedFilmKrylovTest, AnOddGridIsTheCoarsestGridOfTheSequence) {
   EXPECT_EQ(*std::min_element(sides.begin(), sides.end()), 35U);
   EXPECT_EQ(sides.back(), 70U);
   expect_solution_holds(op, point.gap, flow(0.1), options, f);
+}
+
+// Above linalg's threshold for threads (16 384 nodes) the mixed film's
+// loops run on the threads (the Jacobian's rows, the terms' derivatives,
+// the multigrid's chains): the film must be the same to the bit on one
+// thread and two, GMRES iteration for GMRES iteration.
+TEST(MixedFilmKrylovTest, TheSameFilmOnOneThreadAndTwo) {
+  const RoughContact point = rough_point(136, 0.2e-6);
+  ASSERT_GT(point.grid.size(), 16384U);
+  FftInfluenceOperator op(point.grid, kEStar);
+  const int original = threads();
+  std::vector<MixedFilm> films;
+  std::vector<std::vector<int>> iterations(2);
+  for (const int count : {1, 2}) {
+    set_threads(count);
+    MixedFilmOptions options = options_for(kPointLoad, FilmLinearSolve::gmres);
+    options.trace = [&](const MixedSolveRecord& record) {
+      iterations[static_cast<std::size_t>(count - 1)].push_back(record.krylov_iterations);
+    };
+    films.push_back(solve_mixed_film(op, point.gap, flow(0.4), laws(), options));
+  }
+  set_threads(original);
+  ASSERT_TRUE(films[0].converged()) << films[0].message;
+  ASSERT_TRUE(films[1].converged()) << films[1].message;
+  EXPECT_EQ(iterations[0], iterations[1]);
+  EXPECT_TRUE((films[0].pressure == films[1].pressure).all())
+      << "largest difference " << (films[0].pressure - films[1].pressure).abs().maxCoeff();
+  EXPECT_EQ(films[0].offset, films[1].offset);
 }
 
 TEST(MixedFilmKrylovTest, RefusesInvalidKrylovOptionsNamingThem) {
