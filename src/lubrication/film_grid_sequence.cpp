@@ -64,6 +64,17 @@ std::optional<ElasticFilm> sequenced_start(InfluenceOperator& op, const Eigen::A
 
 }  // namespace
 
+std::string detail::odd_grid_note(const Grid& grid) {
+  const bool line = grid.dimension() == 1;
+  if (grid.nx() % 2 == 0 && (line || grid.ny() % 2 == 0)) return {};
+  return fmt::format(
+      " (the {} grid has an odd node count, which grid sequencing cannot coarsen, so the film started cold: an even "
+      "grid such as {} starts it from the coarser grids' film)",
+      grid.shape_string(),
+      line ? fmt::format("{}", grid.nx() + grid.nx() % 2)
+           : fmt::format("{}x{}", grid.nx() + grid.nx() % 2, grid.ny() + grid.ny() % 2));
+}
+
 bool detail::make_coarse_fields_whole(const linalg::Communicator& comm, const Grid& coarse, NewtonFilmResult& film,
                                       std::initializer_list<Eigen::ArrayXd*> fields) {
   if (comm.size() <= 1) return true;
@@ -136,15 +147,9 @@ ElasticFilm solve_elastic_film(InfluenceOperator& op, const Eigen::ArrayXd& gap,
     result.iterations += sequenced_steps;
     result.krylov_iterations += sequenced_krylov;
     result.sequencing_fell_back = true;
-  } else if (!coarse_start && !result.converged() &&
-             (grid.nx() % 2 != 0 || (grid.dimension() == 2 && grid.ny() % 2 != 0))) {
+  } else if (!coarse_start && !result.converged()) {
     // Not sequenced for the grid's odd shape alone: say how to be.
-    result.message += fmt::format(
-        " (the {} grid has an odd node count, which grid sequencing cannot coarsen, so the film started cold: an "
-        "even grid such as {} starts it from the coarser grids' film)",
-        grid.shape_string(),
-        grid.dimension() == 1 ? fmt::format("{}", grid.nx() + grid.nx() % 2)
-                              : fmt::format("{}x{}", grid.nx() + grid.nx() % 2, grid.ny() + grid.ny() % 2));
+    result.message += detail::odd_grid_note(grid);
   } else if (coarse_start && !result.converged()) {
     result.message +=
         fmt::format(" (started from the coarser grids' film{}{}; no cold restart above {} nodes)",

@@ -11,6 +11,7 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <string>
 #include <utility>
 
 #include "film_krylov_solver.hpp"
@@ -26,6 +27,12 @@ namespace halfspace::lubrication::detail {
 
 // Cells per axis below which no coarser grid is made.
 inline constexpr std::size_t kSequencingMinCells = 8;
+
+// Where `grid` has an odd cell count (which no coarser grid halves): the
+// note a failed film's message ends with, saying why it started cold and
+// which even grid would be sequenced; empty otherwise. Shared by the EHL and
+// the mixed film.
+std::string odd_grid_note(const Grid& grid);
 
 // Rows of a coarse grid that every process must get for the coarse film to
 // be solved on slabs (else it is solved whole on every process).

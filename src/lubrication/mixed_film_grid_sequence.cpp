@@ -210,13 +210,7 @@ MixedFilm solve_sequenced(InfluenceOperator& op, const Eigen::ArrayXd& gap, cons
                                                       effort == SolveEffort::quick_start
                                                           ? detail::MixedStartUse::solve_only
                                                           : detail::MixedStartUse::solve_then_continue);
-    const bool odd = grid.nx() % 2 != 0 || grid.ny() % 2 != 0;
-    if (wanted && odd && !film.converged() && effort == SolveEffort::answer) {
-      film.message += fmt::format(
-          " (the {} grid has an odd node count, which grid sequencing cannot coarsen, so the film started cold: an "
-          "even grid such as {}x{} starts it from the coarser grids' film)",
-          grid.shape_string(), grid.nx() + grid.nx() % 2, grid.ny() + grid.ny() % 2);
-    }
+    if (wanted && !film.converged() && effort == SolveEffort::answer) film.message += detail::odd_grid_note(grid);
     return film;
   }
   // The fine grid's memory first: the coarse grids would take minutes on a
