@@ -137,6 +137,8 @@ const std::array kOwnOptions{
     LubricateOption{"film-preconditioner", &LubricateOptions::film_preconditioner, Kind::text, kElastic, "NAME",
                     "the EHL film's GMRES preconditioner: multigrid or sparse-lu (exact, for cross-checks) "
                     "[multigrid]"},
+    LubricateOption{"fft-planning", &LubricateOptions::fft_planning, Kind::text, kElastic, "MODE",
+                    "FFTW planning effort for the elastic film's transforms: estimate, measure or patient [estimate]"},
     LubricateOption{"max-iterations", &LubricateOptions::max_iterations, Kind::integer, kFilm, "N",
                     "Newton steps of an elastic film, 1 to 100000 [100; 200 mixed]; sweeps of a rigid one [2e6]"},
     LubricateOption{"mixed", &LubricateOptions::mixed, Kind::flag, kMixed, "",
@@ -341,9 +343,9 @@ int run_elastic(const LubricateOptions& o, const HeightMap& map, const Grid& gri
   const double highest = rows ? rows->max(map.heights.maxCoeff()) : map.heights.maxCoeff();
   const Eigen::ArrayXd gap = highest - map.heights;
   const HalfSpace body = coating ? HalfSpace(*coating) : HalfSpace(e_star);
-  const std::shared_ptr<operators::SpectralTransforms> transforms = place.transforms(grid);
-  FftInfluenceOperator op =
-      transforms ? FftInfluenceOperator(grid, body, transforms) : FftInfluenceOperator(grid, body);
+  const std::shared_ptr<operators::SpectralTransforms> transforms = place.transforms(grid, problem.fft_planning);
+  FftInfluenceOperator op = transforms ? FftInfluenceOperator(grid, body, transforms)
+                                       : FftInfluenceOperator(grid, body, problem.fft_planning);
   const lubrication::ElasticFilm film = lubrication::solve_elastic_film(op, gap, conditions, laws, options);
   const auto stencil = [&](const Eigen::ArrayXd& field) {
     return rows ? rows->stencil_field({field.data(), static_cast<std::size_t>(field.size())}) : field;
@@ -447,9 +449,9 @@ int run_mixed(const LubricateOptions& o, const HeightMap& map, const Grid& grid,
   const std::unique_ptr<lubrication::FilmRows> rows = place.film_rows(grid, conditions);
   const double highest = rows ? rows->max(map.heights.maxCoeff()) : map.heights.maxCoeff();
   const Eigen::ArrayXd gap = highest - map.heights;
-  const std::shared_ptr<operators::SpectralTransforms> transforms = place.transforms(grid);
-  FftInfluenceOperator op =
-      transforms ? FftInfluenceOperator(grid, e_star, transforms) : FftInfluenceOperator(grid, e_star);
+  const std::shared_ptr<operators::SpectralTransforms> transforms = place.transforms(grid, problem.fft_planning);
+  FftInfluenceOperator op = transforms ? FftInfluenceOperator(grid, e_star, transforms)
+                                       : FftInfluenceOperator(grid, e_star, problem.fft_planning);
   lubrication::FlowConditions used = conditions;
   lubrication::MixedFilm film;
   bool all_converged = true;

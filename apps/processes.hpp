@@ -132,11 +132,10 @@ struct FilmPlace {
   std::function<std::unique_ptr<lubrication::FilmRows>(const Grid& grid, const lubrication::FlowConditions& conditions)>
       film_rows =
           [](const Grid&, const lubrication::FlowConditions&) { return std::unique_ptr<lubrication::FilmRows>(); };
-  // The influence operator's transforms on the film's grid: the slabs of
-  // rows held here; null: the serial ones of the whole grid.
-  std::function<std::shared_ptr<operators::SpectralTransforms>(const Grid& grid)> transforms = [](const Grid&) {
-    return std::shared_ptr<operators::SpectralTransforms>();
-  };
+  // The influence operator's transforms on the film's grid, planned so:
+  // the slabs of rows held here; null: the serial ones of the whole grid.
+  std::function<std::shared_ptr<operators::SpectralTransforms>(const Grid& grid, FftPlanning planning)> transforms =
+      [](const Grid&, FftPlanning) { return std::shared_ptr<operators::SpectralTransforms>(); };
   // Writes the result file: fill(root) writes each field's rows held here
   // (Hdf5Node::write_dataset_rows from first_row); `bound` bounds the
   // file's bytes (the space reserved before a parallel write).

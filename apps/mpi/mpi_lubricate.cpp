@@ -104,9 +104,9 @@ int run_film_everywhere(const std::function<HeightMap()>& read,
   place.film_rows = [&world, slab](const Grid& grid, const lubrication::FlowConditions& conditions) {
     return std::unique_ptr<lubrication::FilmRows>(std::make_unique<mpi::SlabFilmRows>(grid, conditions, slab, world));
   };
-  place.transforms = [&world](const Grid& grid) {
+  place.transforms = [&world](const Grid& grid, FftPlanning planning) {
     return std::shared_ptr<operators::SpectralTransforms>(
-        mpi::make_slab_transforms(grid, world, FftPlanning::estimate, {.count = 1}));
+        mpi::make_slab_transforms(grid, world, planning, {.count = 1}));
   };
   place.write_file = [&world](const std::filesystem::path& path, std::uint64_t bound,
                               const std::function<void(const io::Hdf5Node& root)>& fill) {

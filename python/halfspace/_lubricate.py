@@ -247,7 +247,7 @@ def _arguments(surface, *, viscosity: float, entrainment_velocity: Velocity,
               pressure_viscosity: Optional[float] = None, piezoviscosity: Optional[str] = None,
               roelands_index: Optional[float] = None, compressibility: Optional[str] = None,
               couette_scheme: Optional[str] = None, film_preconditioner: Optional[str] = None,
-              eyring_stress: Optional[float] = None,
+              fft_planning: Optional[str] = None, eyring_stress: Optional[float] = None,
               limiting_shear_stress: Optional[float] = None,
               limiting_shear_slope: Optional[float] = None, mixed: bool = False, offset: Optional[float] = None,
               contact_friction: Optional[float] = None, boundary_film: Optional[float] = None,
@@ -275,7 +275,7 @@ def _arguments(surface, *, viscosity: float, entrainment_velocity: Velocity,
         "supply_fluid_fraction": float(supply_fluid_fraction), "tolerance": _optional_float(tol, "tol"),
         "max_iterations": None if max_iter is None else int(max_iter), "boundary": boundary,
         "piezoviscosity": piezoviscosity, "compressibility": compressibility, "couette_scheme": couette_scheme,
-        "film_preconditioner": film_preconditioner, "mixed": bool(mixed),
+        "film_preconditioner": film_preconditioner, "fft_planning": fft_planning, "mixed": bool(mixed),
         "speeds": _sequence(speeds, "speeds must be a sequence of entrainment speeds (m/s)"),
         "steps": None if steps is None else int(steps), "time_scheme": time_scheme,
         "separation_history": _sequence(separation_history,
@@ -325,7 +325,9 @@ def lubricate(surface: Union[HeightMap, np.ndarray], **keywords: Any) -> Union[F
         compressibility ("none", "dowson-higginson"; None: Dowson-Higginson),
         couette_scheme ("first-order", "second-order"); film_preconditioner
         (the GMRES preconditioner: "multigrid", the default, or "sparse-lu",
-        exact, for cross-checks).
+        exact, for cross-checks); fft_planning (FFTW's effort planning the
+        elastic film's transforms: "estimate", the default, "measure" or
+        "patient").
     eyring_stress (tau0, Pa), limiting_shear_stress (tau_L0, Pa),
         limiting_shear_slope (gamma): the film's Couette shear stress is
         tau0 asinh(tau_N / tau0) (Eyring) and/or at most tau_L0 + gamma p;

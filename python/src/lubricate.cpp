@@ -190,7 +190,7 @@ nb::dict solve_elastic(const Grid& grid, const Eigen::ArrayXd& heights, const Lu
   const Eigen::ArrayXd gap = heights.maxCoeff() - heights;
   ElasticFilm film = with_keywords([&] {
     nb::gil_scoped_release release;
-    FftInfluenceOperator op = coating ? FftInfluenceOperator(grid, *coating) : FftInfluenceOperator(grid, e_star);
+    FftInfluenceOperator op(grid, coating ? HalfSpace(*coating) : HalfSpace(e_star), problem.fft_planning);
     return solve_elastic_film(op, gap, conditions, laws, options);
   });
   const FilmShear shear =
@@ -257,7 +257,7 @@ nb::object solve_mixed(const Grid& grid, const Eigen::ArrayXd& heights, const Lu
   MixedFilmOptions options = problem.mixed;
   const double e_star = problem.e_star;
   const Eigen::ArrayXd gap = heights.maxCoeff() - heights;
-  FftInfluenceOperator op(grid, e_star);
+  FftInfluenceOperator op(grid, e_star, problem.fft_planning);
   std::optional<io::MixedTraceWriter> writer;
   if (trace) {
     io::check_output_path(*trace);

@@ -59,6 +59,7 @@ constexpr std::array kNames{
     LubricationOptionName{"compressibility", &O::compressibility},
     LubricationOptionName{"couette_scheme", &O::couette_scheme},
     LubricationOptionName{"film_preconditioner", &O::film_preconditioner},
+    LubricationOptionName{"fft_planning", &O::fft_planning},
     LubricationOptionName{"eyring_stress", &O::eyring_stress},
     LubricationOptionName{"limiting_shear_stress", &O::limiting_shear_stress},
     LubricationOptionName{"limiting_shear_slope", &O::limiting_shear_slope},
@@ -194,6 +195,7 @@ FilmKind Rules::kind(bool elastic, bool coated) const {
                                                     {"compressibility", o_.compressibility.has_value()},
                                                     {"couette_scheme", o_.couette_scheme.has_value()},
                                                     {"film_preconditioner", o_.film_preconditioner.has_value()},
+                                                    {"fft_planning", o_.fft_planning.has_value()},
                                                     {"boundary", o_.boundary.has_value()}});
     if (!present.empty()) {
       throw InputError(fmt::format(
@@ -338,6 +340,7 @@ LubricationProblem make_lubrication_problem(const LubricationProblemOptions& opt
     }
     if (o.boundary) problem.boundary = in_context(rules.name("boundary"), [&] { return parse_boundary(*o.boundary); });
     problem.laws = rules.laws();
+    if (o.fft_planning) problem.fft_planning = rules.parsed("fft_planning", *o.fft_planning, parse_fft_planning);
     const std::optional<CouetteScheme> scheme =
         o.couette_scheme ? std::optional(rules.parsed("couette_scheme", *o.couette_scheme, parse_couette_scheme))
                          : std::nullopt;

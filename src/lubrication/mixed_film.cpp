@@ -900,6 +900,7 @@ FlowConditions detail::at_speed_factor(const FlowConditions& conditions, double 
 
 namespace {
 using detail::at_speed_factor;
+using detail::kFullFilmStartTolerance;
 
 // Continuation in the speed: from a film solved at `factor` times the
 // velocities down (or up) to the velocities themselves, in steps of at most
@@ -928,13 +929,19 @@ MixedFilm continue_in_speed(InfluenceOperator& op, const Eigen::ArrayXd& gap, co
   const auto ceiling_after = [](const MixedFilm& last, double ceiling) {
     return last.contact_load_fraction > 0.0 ? kContinuationRatio : std::min(ceiling, kFullFilmRatio);
   };
+  // A film between, in full film: only a start (kFullFilmStartTolerance).
+  MixedFilmOptions full_film_start = options;
+  full_film_start.tolerance = std::max(options.tolerance, kFullFilmStartTolerance);
+  full_film_start.load_tolerance = std::max(options.load_tolerance, kFullFilmStartTolerance);
+  full_film_start.contact_tolerance = std::max(options.contact_tolerance, 1e-2 * kFullFilmStartTolerance);
   double ceiling = ceiling_after(film, kContinuationRatio);
   double ratio = ceiling;
   while (factor != 1.0 && work.solves < kContinuationSolves) {
     const double log_step = std::min(std::abs(std::log(factor)), std::log(ratio));
     const double next =
         std::abs(std::log(factor)) <= log_step ? 1.0 : factor * std::exp(factor > 1.0 ? -log_step : log_step);
-    MixedFilm trial = solve_once(op, gap, at_speed_factor(conditions, next), laws, options, &film);
+    MixedFilm trial = solve_once(op, gap, at_speed_factor(conditions, next), laws,
+                                 next != 1.0 && film.contact_load_fraction == 0.0 ? full_film_start : options, &film);
     work.add(trial);
     if (trial.converged()) {
       film = std::move(trial);

@@ -139,6 +139,10 @@ TEST(LubricateCliTest, RejectsBadElasticInputNamingTheOption) {
                      {"pressure-viscosity coefficient"}, dir / "f.h5");
   expect_input_error(with({"--force", "1e3", "--E-star", "1e11", "--max-iterations", "0"}), {"--max-iterations 0"},
                      dir / "f.h5");
+  expect_input_error(with({"--force", "1e3", "--E-star", "1e11", "--fft-planning", "exhaustive"}),
+                     {"--fft-planning 'exhaustive'", "'estimate', 'measure' or 'patient'"}, dir / "f.h5");
+  expect_input_error(with({"--separation", "1e-6", "--fft-planning", "estimate"}),
+                     {"--fft-planning need an elastic film"}, dir / "f.h5");
 }
 
 // A film that does not converge (one Newton step) is written, exits with the

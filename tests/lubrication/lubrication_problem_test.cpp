@@ -120,6 +120,10 @@ TEST(LubricationProblemTest, EachRuleIsRefusedNamingTheOptionInBothSpellings) {
        "--pressure_viscosity need an elastic film: give --e_star"},
       {"rigid with a boundary", [](auto& o) { o.boundary = "periodic"; }, rigid_film, "boundary need an elastic film",
        "--boundary need an elastic film"},
+      {"rigid with FFT planning", [](auto& o) { o.fft_planning = "measure"; }, rigid_film,
+       "fft_planning need an elastic film", "--fft_planning need an elastic film"},
+      {"unknown FFT planning", [](auto& o) { o.fft_planning = "exhaustive"; }, elastic_film,
+       "fft_planning='exhaustive': ", "--fft_planning 'exhaustive': "},
       {"mixed without a body", [](auto& o) { o.e_star.reset(); }, mixed_film, "mixed needs an elastic body",
        "--mixed needs an elastic body"},
       {"mixed with a coating",
@@ -429,6 +433,7 @@ TEST(LubricationProblemTest, ValidOptionsMakeTheTypedFilm) {
   pair.boundary = "periodic";
   pair.couette_scheme = "second-order";
   pair.film_preconditioner = "sparse-lu";
+  pair.fft_planning = "patient";
   pair.max_iterations = 30;
   const LubricationProblem ehl = make_lubrication_problem(pair);
   EXPECT_EQ(ehl.kind, FilmKind::elastic);
@@ -442,6 +447,8 @@ TEST(LubricationProblemTest, ValidOptionsMakeTheTypedFilm) {
   EXPECT_EQ(ehl.elastic.couette_scheme, CouetteScheme::second_order);
   EXPECT_EQ(ehl.elastic.preconditioner, KrylovPreconditioner::sparse_lu);
   EXPECT_EQ(make_lubrication_problem(elastic_film()).elastic.preconditioner, KrylovPreconditioner::multigrid);
+  EXPECT_EQ(ehl.fft_planning, FftPlanning::patient);
+  EXPECT_EQ(make_lubrication_problem(elastic_film()).fft_planning, FftPlanning::estimate);
 
   LubricationProblemOptions coated = elastic_film();
   coated.e_star.reset();

@@ -176,6 +176,7 @@ def test_bad_rigid_keyword_is_named(keywords, message):
     ({"compressibility": "tait"}, "compressibility='tait'"),
     ({"couette_scheme": "third-order"}, "couette_scheme='third-order'"),
     ({"film_preconditioner": "jacobi"}, "film_preconditioner='jacobi'"),
+    ({"fft_planning": "exhaustive"}, "fft_planning='exhaustive'.*'estimate', 'measure'"),
     ({"boundary": "open"}, "boundary:"),
     ({"e_star": -1.0}, "E\\*|e_star|modulus"),
     ({"E1": 2e11}, "e_star cannot be combined with E1"),

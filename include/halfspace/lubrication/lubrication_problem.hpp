@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "halfspace/error.hpp"
+#include "halfspace/fft/fft_planning.hpp"
 #include "halfspace/grid.hpp"
 #include "halfspace/layered_material.hpp"
 #include "halfspace/lubrication/cavitation_solver.hpp"
@@ -57,6 +58,9 @@ struct LubricationProblemOptions : BodyOptions {
   std::optional<std::string> couette_scheme;
   // The EHL film's GMRES preconditioner ("multigrid" or "sparse-lu"), elastic only.
   std::optional<std::string> film_preconditioner;
+  // FFTW's effort planning the influence operator's transforms ("estimate",
+  // "measure" or "patient"), elastic only.
+  std::optional<std::string> fft_planning;
   // The solver of the film in force.
   std::optional<double> tolerance;
   std::optional<long long> max_iterations;
@@ -102,6 +106,11 @@ struct LubricationProblem {
   Boundary boundary = Boundary::free;      // the elastic half-space's
   FlowConditions conditions;               // checked on the grid by check_grid
   LubricantLaws laws;                      // none for the rigid film
+  // The influence operator's FFT plans (elastic and mixed): estimated
+  // unless told. Measured plans did not shorten the films' solves (the EHL
+  // point contact at 1024^2, the mixed film at 512^2; docs/performance.md),
+  // whose time is in the Newton and GMRES iterations, not the transforms.
+  FftPlanning fft_planning = FftPlanning::estimate;
   ShearLimits limits;
   // The rigid film's solver and its control: the separation, or the load.
   CavitationSolverOptions cavitation;
