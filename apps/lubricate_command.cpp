@@ -13,6 +13,7 @@
 #include <array>
 #include <chrono>
 #include <cstdint>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <memory>
@@ -26,6 +27,7 @@
 #include "exit_codes.hpp"
 #include "halfspace/error.hpp"
 #include "halfspace/geometry/builtin_surface.hpp"
+#include "halfspace/io/fft_wisdom_file.hpp"
 #include "halfspace/io/film_history_writer.hpp"
 #include "halfspace/io/friction_history_writer.hpp"
 #include "halfspace/io/hdf5_output.hpp"
@@ -33,6 +35,7 @@
 #include "halfspace/io/mixed_trace_writer.hpp"
 #include "halfspace/io/output_file.hpp"
 #include "halfspace/io/result_attributes.hpp"
+#include "halfspace/io/xdmf_writer.hpp"
 #include "halfspace/layered_material.hpp"
 #include "halfspace/lubrication/elastic_film.hpp"
 #include "halfspace/lubrication/film_shear.hpp"
@@ -709,6 +712,35 @@ void check_trace_path(const LubricateOptions& o, const lubrication::LubricationP
   }
 }
 
+// No output may replace an input or another output (docs/usage.md#output-files):
+// the result, its XDMF sidecar, a transient film's history CSV, the Stribeck
+// curve, the trace and, with measured plans, the FFTW wisdom file saved at
+// exit; against the height map and the roughness. Checked before anything
+// is read or solved.
+void check_outputs_against_inputs(const LubricateOptions& o, const lubrication::LubricationProblem& problem) {
+  const std::filesystem::path output = *o.output;
+  std::vector<io::RunFile> outputs{{o.describe("output"), output},
+                                   {fmt::format("the XDMF sidecar {} (the {} name with .xdmf)",
+                                                io::xdmf_sidecar_path(output).string(), o.name("output")),
+                                    io::xdmf_sidecar_path(output)}};
+  if (problem.transient) {
+    outputs.push_back({fmt::format("the history CSV {} (the {} name with .csv)", io::history_csv_path(output).string(),
+                                   o.name("output")),
+                       io::history_csv_path(output)});
+  }
+  if (o.stribeck) outputs.push_back({o.describe("stribeck"), *o.stribeck});
+  if (o.trace) outputs.push_back({o.describe("trace"), *o.trace});
+  if (problem.kind != lubrication::FilmKind::rigid && problem.fft_planning != FftPlanning::estimate) {
+    if (const std::optional<std::filesystem::path> wisdom = io::fft_wisdom_path()) {
+      outputs.push_back({fmt::format("the FFTW wisdom file {}", wisdom->string()), *wisdom});
+    }
+  }
+  std::vector<io::RunFile> inputs;
+  if (o.height_map) inputs.push_back({o.describe("height-map"), *o.height_map});
+  if (o.roughness) inputs.push_back({o.describe("roughness"), *o.roughness});
+  io::check_outputs_apart(outputs, inputs);
+}
+
 int solve_film(const LubricateOptions& o) {
   const GivenSpelling spelling = flags(o);
   const lubrication::LubricationProblem problem = lubrication::make_lubrication_problem(o, spelling);
@@ -720,6 +752,7 @@ int solve_film(const LubricateOptions& o) {
   io::check_output_path(*o.output);
   if (o.stribeck) io::check_output_path(*o.stribeck);
   if (o.trace) check_trace_path(o, problem);
+  check_outputs_against_inputs(o, problem);
 
   // On several processes the steady rigid, EHL and mixed films' solvers
   // run on slabs of rows (mpi/slab_film_rows.hpp; lubrication/elastic_film.hpp

@@ -85,11 +85,7 @@ fs::path output_from(const SolveOptions& o) {
 // save the wisdom file. Checked before anything is read, solved or written
 // (docs/usage.md#output-files).
 void check_outputs_against_inputs(const SolveOptions& o, const fs::path& output, bool sweep, FftPlanning planning) {
-  struct File {
-    std::string what;
-    fs::path path;
-  };
-  std::vector<File> outputs{{o.describe("output"), output}};
+  std::vector<io::RunFile> outputs{{o.describe("output"), output}};
   if (sweep) {
     outputs.push_back({fmt::format("the sweep's CSV table {} (the {} name with .csv)",
                                    io::sweep_csv_path(output).string(), o.name("output")),
@@ -103,7 +99,7 @@ void check_outputs_against_inputs(const SolveOptions& o, const fs::path& output,
       outputs.push_back({fmt::format("the FFTW wisdom file {}", wisdom->string()), *wisdom});
     }
   }
-  std::vector<File> inputs;
+  std::vector<io::RunFile> inputs;
   if (o.height_map) inputs.push_back({o.describe("height-map"), *o.height_map});
   if (o.config) inputs.push_back({fmt::format("--config {}", *o.config), *o.config});
 
@@ -116,21 +112,7 @@ void check_outputs_against_inputs(const SolveOptions& o, const fs::path& output,
       throw FileError(fmt::format("{} is invalid: {}", outputs[k].what, error.what()));
     }
   }
-  for (std::size_t k = 0; k < outputs.size(); ++k) {
-    for (const File& input : inputs) {
-      if (io::same_file(outputs[k].path, input.path)) {
-        throw InputError(
-            fmt::format("{} would overwrite the input {}: both are the file '{}'; choose another output name",
-                        outputs[k].what, input.what, input.path.string()));
-      }
-    }
-    for (std::size_t m = 0; m < k; ++m) {
-      if (io::same_file(outputs[k].path, outputs[m].path)) {
-        throw InputError(fmt::format("{} and {} are the same file '{}'; choose another output name", outputs[m].what,
-                                     outputs[k].what, outputs[k].path.string()));
-      }
-    }
-  }
+  io::check_outputs_apart(outputs, inputs);
 }
 
 // The checks that need the grid, run as soon as it is known and before the

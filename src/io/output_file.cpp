@@ -240,6 +240,24 @@ bool same_file(const fs::path& output, const fs::path& other) {
   return resolved(output) == resolved(other);
 }
 
+void check_outputs_apart(std::span<const RunFile> outputs, std::span<const RunFile> inputs) {
+  for (std::size_t k = 0; k < outputs.size(); ++k) {
+    for (const RunFile& input : inputs) {
+      if (same_file(outputs[k].path, input.path)) {
+        throw InputError(
+            fmt::format("{} would overwrite the input {}: both are the file '{}'; choose another output name",
+                        outputs[k].what, input.what, input.path.string()));
+      }
+    }
+    for (std::size_t m = 0; m < k; ++m) {
+      if (same_file(outputs[k].path, outputs[m].path)) {
+        throw InputError(fmt::format("{} and {} are the same file '{}'; choose another output name", outputs[m].what,
+                                     outputs[k].what, outputs[k].path.string()));
+      }
+    }
+  }
+}
+
 namespace {
 
 fs::path temporary_beside(const fs::path& target) {

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -186,6 +188,38 @@ TEST(LubricateCliTest, RejectsBadInputNamingTheOption) {
                                   "1", "--separation", "1e-6", "--periodic-x", "--output", "f.h5"},
                                  dir.path()),
                      {"--periodic-x on a 1D grid: the film is periodic along every axis"}, dir / "f.h5");
+}
+
+// No output replaces an input: the result named as the height map, the
+// roughness or (mixed) the Stribeck curve named as the height map are
+// refused before anything is solved, and the input is left as it was.
+TEST(LubricateCliTest, RefusesAnOutputThatWouldReplaceAnInput) {
+  const TempDir dir;
+  ASSERT_EQ(generate_cylinder(dir, "41", "8e-4", "c.h5"), kExitOk);
+  ASSERT_EQ(generate_cylinder(dir, "41", "8e-4", "r.h5"), kExitOk);
+  const auto bytes = [&](const char* name) {
+    std::ifstream in(dir / name, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  const std::string map = bytes("c.h5"), roughness = bytes("r.h5");
+  const std::vector<std::string> rigid{
+      "lubricate", "--height-map", "c.h5", "--viscosity", "0.1", "--entrainment-velocity", "1", "--separation", "1e-6"};
+  const auto with = [&](const std::vector<std::string>& base, std::vector<std::string> more) {
+    std::vector<std::string> args = base;
+    args.insert(args.end(), more.begin(), more.end());
+    return run_program(args, dir.path());
+  };
+  expect_input_error(with(rigid, {"--output", "./c.h5"}),
+                     {"--output ./c.h5 would overwrite the input --height-map c.h5", "choose another output name"});
+  const std::vector<std::string> mixed{
+      "lubricate", "--height-map", "c.h5",  "--viscosity", "0.04",   "--entrainment-velocity",
+      "0.001",     "--force",      "4.4e4", "--E-star",    "1.1e11", "--mixed"};
+  expect_input_error(with(mixed, {"--roughness", "r.h5", "--output", "r.h5"}),
+                     {"--output r.h5 would overwrite the input --roughness r.h5"});
+  expect_input_error(with(mixed, {"--speeds", "0.002,0.001", "--stribeck", "c.h5", "--output", "f.h5"}),
+                     {"--stribeck c.h5 would overwrite the input --height-map c.h5"}, dir / "f.h5");
+  EXPECT_EQ(bytes("c.h5"), map);
+  EXPECT_EQ(bytes("r.h5"), roughness);
 }
 
 // A starved supply: the program passes --supply-fluid-fraction to the film

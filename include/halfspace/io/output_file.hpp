@@ -14,6 +14,7 @@
 #include <functional>
 #include <memory>
 #include <span>
+#include <string>
 
 namespace halfspace::io {
 
@@ -35,6 +36,16 @@ std::filesystem::path output_target(const std::filesystem::path& path);
 // links, "..", and relative names, or the same existing file under another
 // name (a hard link).
 bool same_file(const std::filesystem::path& output, const std::filesystem::path& other);
+
+// A file of a run and how its messages name it ("--output f.h5").
+struct RunFile {
+  std::string what;
+  std::filesystem::path path;
+};
+
+// Throws InputError where an output would replace one of `inputs` or an
+// earlier output (same_file), naming both and the file.
+void check_outputs_apart(std::span<const RunFile> outputs, std::span<const RunFile> inputs);
 
 // Writes `bytes` to `path` atomically: checks the path (as above), creates
 // `<target>.tmp-<pid>` exclusively beside the target, writes and fsyncs it,
