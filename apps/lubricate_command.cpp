@@ -35,7 +35,6 @@
 #include "halfspace/io/mixed_trace_writer.hpp"
 #include "halfspace/io/output_file.hpp"
 #include "halfspace/io/result_attributes.hpp"
-#include "halfspace/io/xdmf_writer.hpp"
 #include "halfspace/layered_material.hpp"
 #include "halfspace/lubrication/elastic_film.hpp"
 #include "halfspace/lubrication/film_shear.hpp"
@@ -713,16 +712,13 @@ void check_trace_path(const LubricateOptions& o, const lubrication::LubricationP
 }
 
 // No output may replace an input or another output (docs/usage.md#output-files):
-// the result, its XDMF sidecar, a transient film's history CSV, the Stribeck
-// curve, the trace and, with measured plans, the FFTW wisdom file saved at
-// exit; against the height map and the roughness. Checked before anything
-// is read or solved.
+// the result (a film's file has no XDMF sidecar), a transient film's history
+// CSV, the Stribeck curve, the trace and, with measured plans, the FFTW
+// wisdom file saved at exit; against the height map and the roughness.
+// Checked before anything is read or solved.
 void check_outputs_against_inputs(const LubricateOptions& o, const lubrication::LubricationProblem& problem) {
   const std::filesystem::path output = *o.output;
-  std::vector<io::RunFile> outputs{{o.describe("output"), output},
-                                   {fmt::format("the XDMF sidecar {} (the {} name with .xdmf)",
-                                                io::xdmf_sidecar_path(output).string(), o.name("output")),
-                                    io::xdmf_sidecar_path(output)}};
+  std::vector<io::RunFile> outputs{{o.describe("output"), output}};
   if (problem.transient) {
     outputs.push_back({fmt::format("the history CSV {} (the {} name with .csv)", io::history_csv_path(output).string(),
                                    o.name("output")),
