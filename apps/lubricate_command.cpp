@@ -726,7 +726,7 @@ void check_outputs_against_inputs(const LubricateOptions& o, const lubrication::
   }
   if (o.stribeck) outputs.push_back({o.describe("stribeck"), *o.stribeck});
   if (o.trace) outputs.push_back({o.describe("trace"), *o.trace});
-  if (problem.kind != lubrication::FilmKind::rigid && problem.fft_planning != FftPlanning::estimate) {
+  if (problem.fft_planning != FftPlanning::estimate) {  // a rigid film has no transforms: always estimate
     if (const std::optional<std::filesystem::path> wisdom = io::fft_wisdom_path()) {
       outputs.push_back({fmt::format("the FFTW wisdom file {}", wisdom->string()), *wisdom});
     }
