@@ -423,7 +423,10 @@ ElasticFilm detail::solve_film_newton(InfluenceOperator& op, const Eigen::ArrayX
   // region on s and h0 alone.
   detail::FilmNewton newton;
   newton.rules = {.words = {.solver = "the EHL", .film = "the EHL film", .krylov_step = ""},
-                  .tolerances = {.mass = options.tolerance, .load = options.load_tolerance, .contact = std::nullopt},
+                  .tolerances = {.mass = options.tolerance,
+                                 .load = options.load_tolerance,
+                                 .contact = std::nullopt,
+                                 .start_norm_share = std::nullopt},
                   .forcing = detail::FilmForcing::residual_norm,
                   .krylov = krylov,
                   .krylov_tolerance = options.krylov_tolerance,

@@ -22,9 +22,14 @@ constexpr int kMostHalvings = 30;
 // 1983, sec. 6.3).
 constexpr double kSufficientDecrease = 1e-4;
 
-bool converged(const FilmTolerances& tolerances, const FilmMeasure& measured) {
-  return measured.mass <= tolerances.mass && measured.load <= tolerances.load &&
-         (!tolerances.contact || measured.contact <= *tolerances.contact);
+// `first_norm`: the residual's norm where the start's iteration began.
+bool converged(const FilmTolerances& tolerances, const FilmMeasure& measured, double first_norm) {
+  const auto within = [&](double scale) {
+    return measured.mass <= scale * tolerances.mass && measured.load <= scale * tolerances.load &&
+           (!tolerances.contact || measured.contact <= scale * *tolerances.contact);
+  };
+  return within(1.0) || (tolerances.start_norm_share && measured.norm <= *tolerances.start_norm_share * first_norm &&
+                         within(kCheckAllowance));
 }
 
 // The relative residuals for a message, with their tolerances or without.
@@ -67,7 +72,7 @@ int run_film_newton(const FilmNewton& newton, NewtonFilmResult& result) {
       result.message = stall_message;
     };
     for (int iteration = 0;; ++iteration) {
-      if (converged(tolerances, current)) {
+      if (converged(tolerances, current, norms.front())) {
         result.status = FilmStatus::converged;
         break;
       }
@@ -181,7 +186,7 @@ int run_film_newton(const FilmNewton& newton, NewtonFilmResult& result) {
         }
       }
       const auto window = static_cast<std::size_t>(rules.stagnation_steps);
-      if (window > 0 && norms.size() > window && !converged(tolerances, current) &&
+      if (window > 0 && norms.size() > window && !converged(tolerances, current, norms.front()) &&
           current.norm > rules.stagnation_share * norms[norms.size() - 1 - window]) {
         result.message = fmt::format(
             "{} Newton iteration stagnated: the residual's norm fell from {:.3g} to {:.3g} in {} steps ({})",
@@ -200,8 +205,9 @@ int run_film_newton(const FilmNewton& newton, NewtonFilmResult& result) {
 void check_after_newton(const FilmNewtonRules& rules, double contact, bool complementary, NewtonFilmResult& result) {
   const FilmTolerances& tolerances = rules.tolerances;
   if (!result.converged() ||
-      (result.relative_residual <= 10.0 * tolerances.mass && result.load_error <= 10.0 * tolerances.load &&
-       (!tolerances.contact || contact <= 10.0 * *tolerances.contact) && complementary)) {
+      (result.relative_residual <= kCheckAllowance * tolerances.mass &&
+       result.load_error <= kCheckAllowance * tolerances.load &&
+       (!tolerances.contact || contact <= kCheckAllowance * *tolerances.contact) && complementary)) {
     return;
   }
   result.status = FilmStatus::failure;

@@ -29,7 +29,16 @@ struct FilmMeasure {
 struct FilmTolerances {
   double mass = 0.0, load = 0.0;
   std::optional<double> contact;
+  // A film that is only the next solve's start: converged also where the
+  // residual's norm is at most this share of its value where the start's
+  // iteration began and the relative residuals are within the check's
+  // allowance (kCheckAllowance times the tolerances).
+  std::optional<double> start_norm_share;
 };
+
+// How far past its tolerances the check after the iteration
+// (check_after_newton) lets a converged film's measured residuals be.
+inline constexpr double kCheckAllowance = 10.0;
 
 // How loose a GMRES step may be (newton_forcing.hpp): the Newton
 // residual's norm, or Eisenstat & Walker's choice from its history.
@@ -105,8 +114,8 @@ int run_film_newton(const FilmNewton& newton, NewtonFilmResult& result);
 // The check apart from the iteration, after it converged: `result`'s
 // relative mass residual and load error, measured after it stopped (and
 // the contact complementarity `contact` where the film has contact rows),
-// within ten times the tolerances, and the cavitation's complementarity
-// (`complementary`). Else a failure.
+// within kCheckAllowance times the tolerances, and the cavitation's complementarity
+// (`complementary`). Else a failure. The allowance is kCheckAllowance.
 void check_after_newton(const FilmNewtonRules& rules, double contact, bool complementary, NewtonFilmResult& result);
 
 }  // namespace halfspace::lubrication::detail

@@ -552,19 +552,24 @@ MixedFilm newton_solve(InfluenceOperator& op, const Eigen::ArrayXd& gap, const F
   // contact rows' tolerance, Eisenstat & Walker's forcing term, a refused
   // step counted (the continuations add the steps of every solve), up to
   // three starts with the limit on the last, the step's branches and the
-  // clipped step on point contacts.
+  // clipped step on point contacts, and a start's norm rule where the film
+  // is only the next solve's start.
   detail::FilmNewton newton;
-  newton.rules = {
-      .words = {.solver = "the mixed film's", .film = "the mixed film", .krylov_step = "the mixed film's "},
-      .tolerances = {.mass = options.tolerance, .load = options.load_tolerance, .contact = options.contact_tolerance},
-      .forcing = detail::FilmForcing::eisenstat_walker,
-      .krylov = krylov,
-      .krylov_tolerance = options.krylov_tolerance,
-      .counts_refused_steps = true,
-      .starts = attempts,
-      .share = std::max(1, options.max_iterations / static_cast<int>(attempts)),
-      .limit = cold_budget,
-      .limit_on_each_start = false};
+  newton.rules = {.words = {.solver = "the mixed film's", .film = "the mixed film", .krylov_step = "the mixed film's "},
+                  .tolerances = {.mass = options.tolerance,
+                                 .load = options.load_tolerance,
+                                 .contact = options.contact_tolerance,
+                                 .start_norm_share = use == detail::MixedStartUse::solve_as_start
+                                                         ? std::optional<double>(detail::kStartNormShare)
+                                                         : std::nullopt},
+                  .forcing = detail::FilmForcing::eisenstat_walker,
+                  .krylov = krylov,
+                  .krylov_tolerance = options.krylov_tolerance,
+                  .counts_refused_steps = true,
+                  .starts = attempts,
+                  .share = std::max(1, options.max_iterations / static_cast<int>(attempts)),
+                  .limit = cold_budget,
+                  .limit_on_each_start = false};
   if (use == detail::MixedStartUse::try_only) {
     newton.rules.stagnation_steps = kStagnationSteps;
     newton.rules.stagnation_share = kStagnationShare;
@@ -929,7 +934,8 @@ MixedFilm continue_in_speed(InfluenceOperator& op, const Eigen::ArrayXd& gap, co
   const auto ceiling_after = [](const MixedFilm& last, double ceiling) {
     return last.contact_load_fraction > 0.0 ? kContinuationRatio : std::min(ceiling, kFullFilmRatio);
   };
-  // A film between, in full film: only a start (kFullFilmStartTolerance).
+  // A film between, in full film: only a start (kFullFilmStartTolerance,
+  // kStartNormShare).
   MixedFilmOptions full_film_start = options;
   full_film_start.tolerance = std::max(options.tolerance, kFullFilmStartTolerance);
   full_film_start.load_tolerance = std::max(options.load_tolerance, kFullFilmStartTolerance);
@@ -940,8 +946,10 @@ MixedFilm continue_in_speed(InfluenceOperator& op, const Eigen::ArrayXd& gap, co
     const double log_step = std::min(std::abs(std::log(factor)), std::log(ratio));
     const double next =
         std::abs(std::log(factor)) <= log_step ? 1.0 : factor * std::exp(factor > 1.0 ? -log_step : log_step);
-    MixedFilm trial = solve_once(op, gap, at_speed_factor(conditions, next), laws,
-                                 next != 1.0 && film.contact_load_fraction == 0.0 ? full_film_start : options, &film);
+    const bool only_a_start = next != 1.0 && film.contact_load_fraction == 0.0;
+    MixedFilm trial =
+        solve_once(op, gap, at_speed_factor(conditions, next), laws, only_a_start ? full_film_start : options, &film,
+                   only_a_start ? detail::MixedStartUse::solve_as_start : detail::MixedStartUse::solve_only);
     work.add(trial);
     if (trial.converged()) {
       film = std::move(trial);

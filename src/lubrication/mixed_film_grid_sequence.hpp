@@ -18,8 +18,10 @@ namespace halfspace::lubrication::detail {
 // step's GMRES stops short of its forcing term (the fine grid's first try
 // from the coarse film, which has a way round); try_until_short: giving up
 // only where a step's GMRES stops short (the same try on the larger grids,
-// where a try that converges may stagnate first).
-enum class MixedStartUse { solve_then_continue, solve_only, try_only, try_until_short, continue_only };
+// where a try that converges may stagnate first); solve_as_start:
+// solve_only, the film only the next solve's start (FilmTolerances::
+// start_norm_share = kStartNormShare).
+enum class MixedStartUse { solve_then_continue, solve_only, try_only, try_until_short, continue_only, solve_as_start };
 
 // The mixed film on the operator's grid alone (no coarser grid): the Newton
 // iteration from `start` or the standard starts (mixed_film.cpp) and the
@@ -47,6 +49,14 @@ MixedFilm solve_mixed_film_smoothed(InfluenceOperator& op, const Eigen::ArrayXd&
 // the answer is: at 32^2 a loose one sent the continuation through 20
 // solves instead of 7.
 inline constexpr double kFullFilmStartTolerance = 3e-3;
+// Such a film is also taken where a Newton step has lowered the residual's
+// norm to a tenth of its first value (with the relative residuals within
+// the check's allowance, ten times the start tolerance). At 1024^2 the
+// first step lowered it 20- to 60-fold, and the largest mass residual then
+// took 1 or 2 more steps (85 to 150 s, each a tight GMRES retry after a
+// line search that failed) to fall below the start tolerance
+// (docs/development-log.md, 2026-12-03, forty-first session).
+inline constexpr double kStartNormShare = 0.1;
 
 // `conditions` with the entrainment and sliding velocities times `factor`.
 FlowConditions at_speed_factor(const FlowConditions& conditions, double factor);

@@ -4,7 +4,9 @@
 // share of its value some steps before) must end an iteration that creeps
 // and leave one that converges, however slowly its rule allows, alone; and
 // on a model with a kink the watchdog must step over it where that pays and
-// go back to the stall where it does not.
+// go back to the stall where it does not; a start's rule
+// (FilmTolerances::start_norm_share) must end an iteration where the norm
+// has fallen and the residuals are within the allowance, and only there.
 #include "lubrication/film_newton.hpp"
 
 #include <gtest/gtest.h>
@@ -27,9 +29,10 @@ FilmMeasure at(double value) {
 // the whole step in the trust region, at most 1000 steps, the state `x`.
 FilmNewton model_newton(const double& x) {
   FilmNewton n;
-  n.rules = {.words = {.solver = "the model's", .film = "the model", .krylov_step = "the model's "},
-             .tolerances = {.mass = kTolerance, .load = kTolerance, .contact = std::nullopt},
-             .limit = 1000};
+  n.rules = {
+      .words = {.solver = "the model's", .film = "the model", .krylov_step = "the model's "},
+      .tolerances = {.mass = kTolerance, .load = kTolerance, .contact = std::nullopt, .start_norm_share = std::nullopt},
+      .limit = 1000};
   n.measure = [&x] { return at(x); };
   n.lay_start = [](std::size_t) { return false; };
   n.solve = [](const FilmMeasure&, double, bool) {
@@ -200,6 +203,61 @@ TEST(FilmNewtonTest, NoTightRetryWhileTheWatchdogRuns) {
   EXPECT_EQ(tight_retries, 1);
   EXPECT_EQ(tight_solves, 1);
   EXPECT_EQ(x, 1.0);  // back at the stall
+}
+
+// A model whose residual's norm falls 20-fold per full step while its
+// largest relative mass residual falls by a tenth (as the 1024^2 mixed
+// film's did between speeds): the progress k after k full steps, the norm
+// 0.05^k, the mass residual mass0 0.9^k.
+struct UnevenModel {
+  double mass0 = 0.02;
+  double k = 0.0, trial = 0.0;
+
+  FilmMeasure measured(double progress) const {
+    const double norm = std::pow(0.05, progress);
+    return {.norm = norm, .mass = mass0 * std::pow(0.9, progress), .load = 0.0, .contact = 0.0};
+  }
+  FilmNewton newton(std::optional<double> start_norm_share) {
+    FilmNewton n = model_newton(k);
+    n.rules.tolerances.mass = 3e-3;
+    n.rules.tolerances.start_norm_share = start_norm_share;
+    n.measure = [this] { return measured(k); };
+    n.try_step = [this](double scale, bool) -> std::optional<FilmMeasure> {
+      trial = k + scale;
+      return measured(trial);
+    };
+    n.accept = [this] { k = trial; };
+    return n;
+  }
+};
+
+// A start's rule: a tenth of the first norm, with the mass residual within
+// the check's allowance, ends the iteration after one step; without it the
+// mass residual takes ceil(log(0.15) / log(0.9)) = 19.
+TEST(FilmNewtonTest, AStartEndsWhereTheNormHasFallenTenfold) {
+  UnevenModel start;
+  NewtonFilmResult taken;
+  run_film_newton(start.newton(0.1), taken);
+  EXPECT_TRUE(taken.converged()) << taken.message;
+  EXPECT_EQ(taken.iterations, 1);
+  UnevenModel answer;
+  NewtonFilmResult solved;
+  run_film_newton(answer.newton(std::nullopt), solved);
+  EXPECT_TRUE(solved.converged()) << solved.message;
+  EXPECT_EQ(solved.iterations, 19);
+}
+
+// The norm's fall alone is not enough: with a mass residual ten times the
+// start's above (0.2 0.9^k), the iteration goes on until the mass residual
+// is within the allowance (3e-2: ceil(log(0.15) / log(0.9)) = 19 steps).
+TEST(FilmNewtonTest, AStartStillNeedsItsResidualsWithinTheAllowance) {
+  UnevenModel far{.mass0 = 0.2};
+  NewtonFilmResult taken;
+  run_film_newton(far.newton(0.1), taken);
+  EXPECT_TRUE(taken.converged()) << taken.message;
+  EXPECT_EQ(taken.iterations, 19);
+  EXPECT_GT(far.measured(far.k).mass, 3e-3);
+  EXPECT_LE(far.measured(far.k).mass, kCheckAllowance * 3e-3);
 }
 
 }  // namespace

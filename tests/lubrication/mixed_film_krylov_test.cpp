@@ -21,6 +21,7 @@
 #include "halfspace/operators/fft_influence_operator.hpp"
 #include "halfspace/solvers/polonsky_keer.hpp"
 #include "halfspace/threads.hpp"
+#include "lubrication/film_newton.hpp"
 #include "lubrication/mixed_film_grid_sequence.hpp"
 #include "support/analytic_solutions.hpp"
 
@@ -622,7 +623,9 @@ TEST(MixedFilmKrylovTest, SweepPointFromTheLastFilmIsTheFilmFromAbove) {
 // step. From the film at 4x the speed (no contact load) the solves run at
 // 4 / sqrt(2), 2, sqrt(2) and 1 times the speed, and the film is the one
 // solved directly. The films between are only starts, solved to
-// kFullFilmStartTolerance; the last to the options' tolerance.
+// kFullFilmStartTolerance (or, where the residual's norm has fallen to
+// kStartNormShare, within the check's allowance of it); the last to the
+// options' tolerance.
 TEST(MixedFilmKrylovTest, FullFilmContinuationStepsAreTheSquareRootOfTwo) {
   const RoughContact point = rough_point(13, 0.05e-6);
   FftInfluenceOperator op(point.grid, kEStar);
@@ -643,7 +646,8 @@ TEST(MixedFilmKrylovTest, FullFilmContinuationStepsAreTheSquareRootOfTwo) {
   for (std::size_t k = 0; k < expected.size(); ++k) {
     EXPECT_NEAR(records[k].entrainment_speed / speed, expected[k], 1e-12) << "solve " << k;
     EXPECT_EQ(records[k].status, FilmStatus::converged) << "solve " << k;
-    const double bound = k + 1 < expected.size() ? detail::kFullFilmStartTolerance : options.tolerance;
+    const double bound =
+        k + 1 < expected.size() ? detail::kCheckAllowance * detail::kFullFilmStartTolerance : options.tolerance;
     EXPECT_LE(records[k].relative_residual, bound) << "solve " << k;
     if (k + 1 < expected.size()) stopped_early = stopped_early || records[k].relative_residual > options.tolerance;
   }
