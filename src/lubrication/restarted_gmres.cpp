@@ -1,48 +1,21 @@
 // Restarted, right-preconditioned GMRES (restarted_gmres.hpp): Arnoldi by
-// classical Gram-Schmidt with a second pass where needed (the basis is read
-// twice per pass, not per vector as modified Gram-Schmidt's, and on the
-// threads), the Hessenberg matrix reduced by Givens rotations as it grows,
-// so that |g_{j+1}| is the residual norm of the current iterate; and a
-// Newton step's solve with it.
+// modified Gram-Schmidt, the Hessenberg matrix reduced by Givens rotations
+// as it grows, so that |g_{j+1}| is the residual norm of the current iterate;
+// and a Newton step's solve with it.
 #include "restarted_gmres.hpp"
 
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <cmath>
 #include <initializer_list>
 #include <limits>
 #include <utility>
 
-#include "halfspace/linalg/parallel.hpp"
-
 namespace halfspace::lubrication::detail {
-
-namespace {
-
-// Where classical Gram-Schmidt keeps less than this share of the vector's
-// length, the pass is repeated ("twice is enough": Giraud, Langou,
-// Rozloznik & van den Eshof 2005).
-constexpr double kSecondPassBelow = 0.7071067811865476;
-
-// The row blocks of the projections: linalg's fixed blocks, so that the
-// sums have the same bits whatever the number of threads.
-constexpr auto kBlocks = static_cast<std::ptrdiff_t>(linalg::kReductionBlocks);
-
-// The rows [begin, end) of block b of `rows`.
-std::pair<Eigen::Index, Eigen::Index> block_rows(Eigen::Index rows, std::ptrdiff_t b) {
-  const Eigen::Index block = (rows + kBlocks - 1) / kBlocks;
-  const Eigen::Index begin = std::min(rows, b * block);
-  return {begin, std::min(rows, begin + block) - begin};
-}
-
-}  // namespace
 
 void RestartedGmres::resize(Eigen::Index size, int restart) {
   restart_ = restart;
   basis_.resize(size, restart + 1);
-  block_sums_.resize(restart + 2, kBlocks);
-  projection_.resize(restart + 2);
   hessenberg_.resize(restart + 1, restart);
   givens_c_.resize(restart);
   givens_s_.resize(restart);
@@ -71,64 +44,6 @@ bool RestartedGmres::all_finite(const Eigen::VectorXd& v) const {
   return distribution_.spread() ? distribution_.all(v.allFinite()) : v.allFinite();
 }
 
-void RestartedGmres::project(int columns) {
-  const Eigen::Index rows = own_rows();
-#pragma omp parallel for schedule(static) if (rows > static_cast <Eigen::Index>(linalg::kParallelThreshold))
-  for (std::ptrdiff_t b = 0; b < kBlocks; ++b) {
-    const auto [begin, length] = block_rows(rows, b);
-    const auto w = work_.segment(begin, length);
-    for (int i = 0; i < columns; ++i) block_sums_(i, b) = basis_.col(i).segment(begin, length).dot(w);
-    block_sums_(columns, b) = w.squaredNorm();
-  }
-  for (int i = 0; i <= columns; ++i) {
-    double total = 0.0;
-    for (std::ptrdiff_t b = 0; b < kBlocks; ++b) total += block_sums_(i, b);
-    projection_[i] = total;
-  }
-  if (!distribution_.spread()) return;
-  const Eigen::Index tail = basis_.rows() - rows;
-  for (int i = 0; i <= columns; ++i) {
-    const double replicated =
-        (i < columns ? basis_.col(i).tail(tail).dot(work_.tail(tail)) : work_.tail(tail).squaredNorm());
-    projection_[i] = distribution_.sum(projection_[i]) + replicated;
-  }
-}
-
-void RestartedGmres::subtract_projection(int columns) {
-  const Eigen::Index rows = basis_.rows();
-#pragma omp parallel for schedule(static) if (rows > static_cast <Eigen::Index>(linalg::kParallelThreshold))
-  for (std::ptrdiff_t b = 0; b < kBlocks; ++b) {
-    const auto [begin, length] = block_rows(rows, b);
-    work_.segment(begin, length).noalias() -= basis_.block(begin, 0, length, columns) * projection_.head(columns);
-  }
-}
-
-void RestartedGmres::combine(int columns) {
-  const Eigen::Index rows = basis_.rows();
-#pragma omp parallel for schedule(static) if (rows > static_cast <Eigen::Index>(linalg::kParallelThreshold))
-  for (std::ptrdiff_t b = 0; b < kBlocks; ++b) {
-    const auto [begin, length] = block_rows(rows, b);
-    work_.segment(begin, length).noalias() = basis_.block(begin, 0, length, columns) * y_.head(columns);
-  }
-}
-
-double RestartedGmres::orthogonalise(int columns, int j) {
-  project(columns);
-  const double before = std::sqrt(projection_[columns]);
-  hessenberg_.col(j).head(columns) = projection_.head(columns);
-  subtract_projection(columns);
-  project(0);
-  double length = std::sqrt(projection_[0]);
-  if (length < kSecondPassBelow * before) {
-    project(columns);
-    hessenberg_.col(j).head(columns) += projection_.head(columns);
-    subtract_projection(columns);
-    project(0);
-    length = std::sqrt(projection_[0]);
-  }
-  return length;
-}
-
 int RestartedGmres::solve(const Apply& apply, const Apply& precondition, const Eigen::VectorXd& residual,
                           double tolerance, int max_iterations, Eigen::VectorXd& x, bool warm) {
   int iterations = 0;
@@ -148,7 +63,11 @@ int RestartedGmres::solve(const Apply& apply, const Apply& precondition, const E
       work_ = basis_.col(j);
       precondition(work_, preconditioned_);
       apply(preconditioned_, work_);
-      const double length = orthogonalise(j + 1, j);
+      for (int i = 0; i <= j; ++i) {
+        hessenberg_(i, j) = dot(basis_.col(i), work_);
+        work_ -= hessenberg_(i, j) * basis_.col(i);
+      }
+      const double length = norm(work_);
       hessenberg_(j + 1, j) = length;
       if (length > 0.0) basis_.col(j + 1) = work_ / length;
       for (int i = 0; i < j; ++i) {
@@ -169,7 +88,7 @@ int RestartedGmres::solve(const Apply& apply, const Apply& precondition, const E
     }
     y_.head(size) = g_.head(size);
     hessenberg_.topLeftCorner(size, size).triangularView<Eigen::Upper>().solveInPlace(y_.head(size));
-    combine(size);
+    work_.noalias() = basis_.leftCols(size) * y_.head(size);
     precondition(work_, preconditioned_);
     x += preconditioned_;
     if (!all_finite(x)) break;

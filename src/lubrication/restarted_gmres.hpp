@@ -62,27 +62,11 @@ class RestartedGmres {
   bool all_finite(const Eigen::VectorXd& v) const;
 
  private:
-  // The Arnoldi step's orthogonalisation of work_ against the first
-  // `columns` basis vectors, by classical Gram-Schmidt, again where it lost
-  // too much of work_ (Daniel, Gragg, Kaufman & Stewart 1976): the projection
-  // into the Hessenberg matrix's column j; returns the length left.
-  double orthogonalise(int columns, int j);
-  // projection_ = V^T work_ over `columns` basis vectors (and work_'s
-  // squared norm after them), summed in fixed row blocks on the threads.
-  void project(int columns);
-  // work_ -= V projection_ (subtract), or work_ = V y_ (combine), on the
-  // threads by row blocks.
-  void subtract_projection(int columns);
-  void combine(int columns);
-  // The rows whose products are this process's own (the rest replicated).
-  Eigen::Index own_rows() const { return basis_.rows() - (distribution_.spread() ? replicated_ : 0); }
-
   KrylovDistribution distribution_;
   Eigen::Index replicated_ = 0;
   int restart_ = 0;
   Eigen::MatrixXd basis_, hessenberg_;
-  Eigen::MatrixXd block_sums_;  // (restart + 2) x blocks: each row block's share of a projection
-  Eigen::VectorXd givens_c_, givens_s_, g_, y_, work_, preconditioned_, projection_;
+  Eigen::VectorXd givens_c_, givens_s_, g_, y_, work_, preconditioned_;
 };
 
 // A Newton iteration's preconditioner kept from one linear solve to the
