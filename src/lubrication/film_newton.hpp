@@ -114,8 +114,8 @@ int run_film_newton(const FilmNewton& newton, NewtonFilmResult& result);
 // The check apart from the iteration, after it converged: `result`'s
 // relative mass residual and load error, measured after it stopped (and
 // the contact complementarity `contact` where the film has contact rows),
-// within kCheckAllowance times the tolerances, and the cavitation's complementarity
-// (`complementary`). Else a failure. The allowance is kCheckAllowance.
+// within kCheckAllowance times the tolerances, and the cavitation's
+// complementarity (`complementary`). Else a failure.
 void check_after_newton(const FilmNewtonRules& rules, double contact, bool complementary, NewtonFilmResult& result);
 
 }  // namespace halfspace::lubrication::detail

@@ -53,9 +53,10 @@ inline constexpr double kFullFilmStartTolerance = 3e-3;
 // norm to a tenth of its first value (with the relative residuals within
 // the check's allowance, ten times the start tolerance). At 1024^2 the
 // first step lowered it 20- to 60-fold, and the largest mass residual then
-// took 1 or 2 more steps (85 to 150 s, each a tight GMRES retry after a
-// line search that failed) to fall below the start tolerance
-// (docs/development-log.md, 2026-12-03, forty-first session).
+// took 1 or 2 more steps (29 to 87 s each) to fall below the start
+// tolerance (docs/development-log.md, 2026-12-03, forty-first session).
+// The film before the last, the answer's start, is solved without it
+// (mixed_film.cpp, continue_in_speed).
 inline constexpr double kStartNormShare = 0.1;
 
 // `conditions` with the entrainment and sliding velocities times `factor`.
