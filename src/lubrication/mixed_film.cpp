@@ -942,16 +942,19 @@ MixedFilm continue_in_speed(InfluenceOperator& op, const Eigen::ArrayXd& gap, co
   full_film_start.contact_tolerance = std::max(options.contact_tolerance, 1e-2 * kFullFilmStartTolerance);
   double ceiling = ceiling_after(film, kContinuationRatio);
   double ratio = ceiling;
+  // The ratio after a step that converged.
+  const auto grown_ratio = [&] { return std::min(ratio * 1.5, ceiling); };
   while (factor != 1.0 && work.solves < kContinuationSolves) {
     const double log_step = std::min(std::abs(std::log(factor)), std::log(ratio));
     const double next =
         std::abs(std::log(factor)) <= log_step ? 1.0 : factor * std::exp(factor > 1.0 ? -log_step : log_step);
-    // The film before the last is the answer's start: solved to the start
-    // tolerance without the norm rule (from a start a Newton step worse the
-    // 1024^2 answer took 439 s instead of 287 s; docs/development-log.md,
-    // 2026-12-03, forty-first session).
+    // The film before the last (the step after it reaches the velocities)
+    // is the answer's start: solved to the start tolerance without the norm
+    // rule (from a start a Newton step worse the 1024^2 answer took 439 s
+    // instead of 287 s; docs/development-log.md, 2026-12-03, forty-first
+    // session).
     const bool only_a_start = next != 1.0 && film.contact_load_fraction == 0.0;
-    const bool answers_start = std::abs(std::log(next)) <= std::log(std::min(ratio * 1.5, ceiling));
+    const bool answers_start = std::abs(std::log(next)) <= std::log(grown_ratio());
     MixedFilm trial = solve_once(
         op, gap, at_speed_factor(conditions, next), laws, only_a_start ? full_film_start : options, &film,
         only_a_start && !answers_start ? detail::MixedStartUse::solve_as_start : detail::MixedStartUse::solve_only);
@@ -960,7 +963,7 @@ MixedFilm continue_in_speed(InfluenceOperator& op, const Eigen::ArrayXd& gap, co
       film = std::move(trial);
       factor = next;
       ceiling = ceiling_after(film, ceiling);
-      ratio = std::min(ratio * 1.5, ceiling);
+      ratio = grown_ratio();
       continue;
     }
     // Half the step that failed (in log speed): the last step to the
