@@ -586,6 +586,9 @@ MixedFilm newton_solve(InfluenceOperator& op, const Eigen::ArrayXd& gap, const F
   // A branch pass's GMRES (and the tight solve's) goes on from the last
   // solve's step of this Newton step: they differ in a few rows.
   bool warm = false;
+  // The branches the step was last solved on (the passes flip branch_full
+  // after each solve, the last one's too): the trial path's.
+  std::vector<char> solved_full(n, 1);
   newton.solve = [&](const detail::FilmMeasure& current, double forcing, bool tight) {
     detail::FilmNewtonSolve outcome;
     if (!tight) warm = false;
@@ -630,11 +633,13 @@ MixedFilm newton_solve(InfluenceOperator& op, const Eigen::ArrayXd& gap, const F
       const detail::KrylovOutcome solved =
           krylov_solver->solve(rows, branch_full, closed, scales, forcing, residual, step, warm);
       warm = solved.converged;
+      solved_full = branch_full;
       outcome.krylov_iterations += solved.iterations;
       outcome.krylov_message = solved.message;
       return solved.converged || (short_steps_taken && solved.relative_residual <= kLoosestLinearResidual);
     };
     const auto linearise_rows = [&] {
+      solved_full = branch_full;
       measure(x, residual, true);
       contact_residuals(x, first, H, smoothed, closed, residual);
     };
@@ -713,6 +718,13 @@ MixedFilm newton_solve(InfluenceOperator& op, const Eigen::ArrayXd& gap, const F
   // past the switch, and the line search cut the step to 3e-5 for a few
   // pressurised nodes at s = 1e-4 to 1e-2: 256^2 crept for 45 minutes and
   // did not converge (docs/development-log.md, 2026-11-30).
+  // A node on the switch that the step moves to the side other than the
+  // branch it was solved on stays on it (detail::stays_on_switch): where
+  // the branch passes end before the branches agree with the step, that
+  // side's derivative is not the model's, and a thick film's mass row sees
+  // a pressure through h^3 far more than a fraction: at 1024^2 the
+  // residual's norm rose along such a direction 50 times faster than it
+  // fell (docs/development-log.md, 2026-12-04).
   newton.try_step = [&](double scale, bool clip) -> std::optional<detail::FilmMeasure> {
     const Eigen::VectorXd& along = clip ? clipped : step;
     trial.s = x.s + scale * along.head(ni).array();
@@ -720,7 +732,10 @@ MixedFilm newton_solve(InfluenceOperator& op, const Eigen::ArrayXd& gap, const F
     trial.offset = load_control ? x.offset + scale * along[h0] : x.offset;
     for (Eigen::Index k = 0; k < ni; ++k) {
       const bool crossed = (x.s[k] > 0.0) != (trial.s[k] > 0.0);
-      if (crossed && std::abs(x.s[k]) > detail::kSwitchBand && !topology.fixed(first + static_cast<std::size_t>(k))) {
+      const auto kk = static_cast<std::size_t>(k);
+      if (topology.fixed(first + kk)) continue;
+      if ((crossed && std::abs(x.s[k]) > detail::kSwitchBand) ||
+          detail::stays_on_switch(x.s[k], along[k], solved_full[kk] != 0)) {
         trial.s[k] = 0.0;
       }
     }

@@ -69,6 +69,17 @@ bool branch_consistent_step_on(Solve&& solve, const ReynoldsStencil& topology, s
   return true;
 }
 
+// Whether a node at `s` on the switch (|s| <= kSwitchBand) stays on it
+// along a step of `change` in s solved on the full-film branch (`solved_full`)
+// or the cavitated one: where the branch passes end (kBranchPasses) before
+// every node's branch agrees with its step, the other side's derivative is
+// not the linear model's, and the trial path keeps the node at s = 0, where
+// the model's error is its change on the solved branch alone rather than the
+// jump between the branches.
+inline bool stays_on_switch(double s, double change, bool solved_full) {
+  return std::abs(s) <= kSwitchBand && change != 0.0 && (change > 0.0) != solved_full;
+}
+
 template <class Solve>
 bool branch_consistent_step_with(Solve&& solve, const ReynoldsStencil& topology, const Eigen::ArrayXd& s,
                                  const Eigen::VectorXd& step, std::vector<char>& branch_full,
