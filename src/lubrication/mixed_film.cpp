@@ -652,10 +652,9 @@ MixedFilm newton_solve(InfluenceOperator& op, const Eigen::ArrayXd& gap, const F
       contact_residuals(x, first, H, smoothed, closed, residual);
     };
     const auto solve_step = [&] {
-      return krylov ? detail::branch_consistent_step_on(gmres_solve, topology, first, x.s, step, branch_full,
-                                                        detail::kSwitchBand,
-                                                        [&](bool flipped) { return !slab.all(!flipped); },
-                                                        kKrylovSwitchPasses)
+      return krylov ? detail::branch_consistent_step_on(
+                          gmres_solve, topology, first, x.s, step, branch_full, detail::kSwitchBand,
+                          [&](bool flipped) { return !slab.all(!flipped); }, kKrylovSwitchPasses)
                     : detail::branch_consistent_step(linearise_rows, topology, x.s, jacobian_t, residual, lu, step,
                                                      branch_full);
     };
