@@ -32,10 +32,10 @@ TEST(BranchPassesTest, OnlyANodeOnTheSwitchSteppingToTheOtherBranchStays) {
 }
 
 TEST(BranchPassesTest, PassesThatEndFlipTheBranchesAfterTheLastSolve) {
-  // Two nodes on the switch whose steps flip sign whenever either node's
-  // branch flips: the passes end at kBranchPasses with branches set from
-  // the last step, not those it was solved on, which is why the trial path
-  // reads the solve's own branches.
+  // Two nodes on the switch: node 1's step always goes against its branch
+  // (it flips at every pass), node 2's with it. The passes end at their
+  // limit with branches set from the last step, not those it was solved
+  // on, which is why the trial path reads the solve's own branches.
   const Grid grid = Grid::line(4, 1e-6, Boundary::free);
   FlowConditions conditions;
   conditions.entrainment_velocity = {1.0, 0.0};
@@ -62,6 +62,11 @@ TEST(BranchPassesTest, PassesThatEndFlipTheBranchesAfterTheLastSolve) {
   EXPECT_NE(branches[1], last[1]);
   EXPECT_TRUE(detail::stays_on_switch(s[1], step[1], last[1] != 0));
   EXPECT_FALSE(detail::stays_on_switch(s[2], step[2], last[2] != 0));
+  // The GMRES path's limit.
+  solved_on.clear();
+  ASSERT_TRUE(detail::branch_consistent_step_on(
+      solve, topology, 0, s, step, branches, detail::kSwitchBand, [](bool flipped) { return flipped; }, 2));
+  EXPECT_EQ(solved_on.size(), 2U);
 }
 
 }  // namespace
