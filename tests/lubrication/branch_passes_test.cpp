@@ -47,7 +47,6 @@ TEST(BranchPassesTest, PassesThatEndFlipTheBranchesAfterTheLastSolve) {
   std::vector<std::vector<char>> solved_on;
   const auto solve = [&] {
     solved_on.push_back(branches);
-    // Node 1's step goes against its branch, node 2's with it.
     step[1] = branches[1] != 0 ? -1.0 : 1.0;
     step[2] = branches[2] != 0 ? 1.0 : -1.0;
     return true;
