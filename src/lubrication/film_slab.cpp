@@ -33,13 +33,14 @@ FilmSlab::FilmSlab(const Grid& whole, const FlowConditions& conditions, std::siz
   const std::size_t nx = whole.nx();
   own_rows_ = own_nodes / nx;
   const double fewest = comm.min(static_cast<double>(own_rows_));
-  if (fewest < static_cast<double>(halo) || fewest < 1.0) {
-    const auto needed = std::max<std::size_t>(halo, 1);
-    throw InputError(
-        fmt::format("the {} film on {} processes leaves a process with {} row{}: each needs at least {} (the Reynolds "
-                    "stencil's reach{}); use fewer processes",
-                    whole.shape_string(), comm.size(), fewest, fewest == 1.0 ? "" : "s", needed,
-                    halo > 1 ? " with the second-order Couette flux" : ""));
+  // Each process's rows are a grid of their own (own_grid_: at least 2
+  // rows) and reach the stencil's halo.
+  const auto needed = std::max<std::size_t>(halo, 2);
+  if (fewest < static_cast<double>(needed)) {
+    throw InputError(fmt::format(
+        "the {} film on {} processes leaves a process with {} row{}: each needs at least {} (a grid of its own rows, "
+        "as deep as the Reynolds stencil reaches); use fewer processes",
+        whole.shape_string(), comm.size(), fewest, fewest == 1.0 ? "" : "s", needed));
   }
   first_row_ = linalg::first_row_held(comm, own_rows_);
   const bool periodic = conditions.boundary.y == AxisBoundary::periodic;

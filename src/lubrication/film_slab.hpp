@@ -30,8 +30,9 @@ class FilmSlab {
   // The film on `whole` with `conditions`, of which this process holds
   // `own_nodes` nodes (whole rows, in rank order over `comm`), with `halo`
   // rows of each neighbour. Collective. Throws InputError when the grid is
-  // 1D and spread, or some process holds fewer than `halo` rows (then the
-  // halo would reach past its neighbour).
+  // 1D and spread, or some process holds fewer than 2 rows (its rows are a
+  // grid of their own) or fewer than `halo` (then the halo would reach past
+  // its neighbour).
   FilmSlab(const Grid& whole, const FlowConditions& conditions, std::size_t own_nodes, const linalg::Communicator& comm,
            std::size_t halo);
 

@@ -195,6 +195,14 @@ constexpr double kStagnationShare = 0.75;
 // watchdog, converged (twenty-eighth session). A try
 // (MixedStartUse::try_only) gives up at a stall instead.
 constexpr int kWatchdogSteps = 4;
+// The GMRES path's passes over the switch nodes' branches per solve of the
+// step (the dense path's detail::kBranchPasses): each is a GMRES solve, and
+// a node whose branch still disagrees with its step after them stays on
+// the switch along the trial path (detail::stays_on_switch). From 4, at
+// 1024^2 the GMRES iterations after the coarse levels fell by a fifth and
+// the answer's first step from 16 solves to 8 (docs/development-log.md,
+// 2026-12-04).
+constexpr int kKrylovSwitchPasses = 2;
 
 // The smoothed contact row at q and f = h / H.
 double smoothed_contact_row(double q, double f, double mu) {
@@ -644,9 +652,9 @@ MixedFilm newton_solve(InfluenceOperator& op, const Eigen::ArrayXd& gap, const F
       contact_residuals(x, first, H, smoothed, closed, residual);
     };
     const auto solve_step = [&] {
-      return krylov ? detail::branch_consistent_step_on(gmres_solve, topology, first, x.s, step, branch_full,
-                                                        detail::kSwitchBand,
-                                                        [&](bool flipped) { return !slab.all(!flipped); })
+      return krylov ? detail::branch_consistent_step_on(
+                          gmres_solve, topology, first, x.s, step, branch_full, detail::kSwitchBand,
+                          [&](bool flipped) { return !slab.all(!flipped); }, kKrylovSwitchPasses)
                     : detail::branch_consistent_step(linearise_rows, topology, x.s, jacobian_t, residual, lu, step,
                                                      branch_full);
     };

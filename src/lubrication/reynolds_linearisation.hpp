@@ -47,12 +47,12 @@ inline constexpr int kBranchPasses = 4;
 // On several processes (film_slab.hpp) `s`, `step` and `branch_full` are
 // this process's nodes, the first of them the stencil's node `first`, and
 // `any` agrees on whether a branch flipped anywhere (the next pass is
-// collective).
+// collective). At most `passes` solves.
 template <class Solve, class Any>
 bool branch_consistent_step_on(Solve&& solve, const ReynoldsStencil& topology, std::size_t first,
                                const Eigen::ArrayXd& s, const Eigen::VectorXd& step, std::vector<char>& branch_full,
-                               double switch_band, Any&& any) {
-  for (int pass = 0; pass < kBranchPasses; ++pass) {
+                               double switch_band, Any&& any, int passes = kBranchPasses) {
+  for (int pass = 0; pass < passes; ++pass) {
     if (!solve()) return false;
     bool flipped = false;
     for (std::size_t j = 0; j < branch_full.size(); ++j) {
@@ -71,7 +71,7 @@ bool branch_consistent_step_on(Solve&& solve, const ReynoldsStencil& topology, s
 
 // Whether a node at `s` on the switch (|s| <= kSwitchBand) stays on it
 // along a step of `change` in s solved on the full-film branch (`solved_full`)
-// or the cavitated one: where the branch passes end (kBranchPasses) before
+// or the cavitated one: where the branch passes end before
 // every node's branch agrees with its step, the other side's derivative is
 // not the linear model's, and the trial path keeps the node at s = 0, where
 // the model's error is its change on the solved branch alone rather than the

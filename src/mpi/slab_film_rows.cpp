@@ -62,6 +62,15 @@ void require_rows(const Grid& whole, const SlabLayout& slab, const MpiCommunicat
                     "rows): each needs at least one row; use fewer processes",
                     whole.shape_string(), comm.size(), comm.max(static_cast<double>(slab.rows))));
   }
+  // One row at an edge of a free film leaves a stencil of two rows, both
+  // fixed: no grid the Reynolds stencil holds (the film's shear refused it
+  // on that process alone, and the others waited for it).
+  if (fewest < 2.0) {
+    throw InputError(
+        fmt::format("the {} film on {} processes leaves a process with 1 row: each needs at least 2; "
+                    "use fewer processes",
+                    whole.shape_string(), comm.size()));
+  }
 }
 
 }  // namespace

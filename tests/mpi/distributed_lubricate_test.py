@@ -275,6 +275,8 @@ for name, arguments, message in [
         # 4 rows on 3 processes: FFTW's slabs of 2 rows leave the third none.
         ("too-few-rows", ["--window", "0,0,48,4", "--separation", "1e-6"], "leaves a process without rows"),
         # 5 rows on 3 processes: 2, 2 and 1, and the second-order flux's halo is two rows.
+        # 7 rows on 3 processes: 3, 3 and 1, and one row is no grid.
+        ("one-row", ["--window", "0,0,48,7", "--separation", "1e-6"], "leaves a process with 1 row: each needs at least 2"),
         ("elastic-too-few-rows", ["--window", "0,0,48,5", "--force", "0.5", "--E-star", "1e11", "--couette-scheme",
                                   "second-order"], "leaves a process with 1 row: each needs at least 2"),
         ("mixed-too-few-rows", ["--window", "0,0,48,5", "--force", "0.5", "--E-star", "1e11", "--mixed",

@@ -30,7 +30,8 @@ class SlabFilmRows final : public lubrication::FilmRows {
  public:
   // This process's rows `slab` of the 2D film on `whole` with `conditions`.
   // Collective; throws InputError (on every process alike) for a 1D grid or
-  // when some process holds no row. `comm` must outlive this object.
+  // when some process holds fewer than 2 rows. `comm` must outlive this
+  // object.
   SlabFilmRows(const Grid& whole, const lubrication::FlowConditions& conditions, const SlabLayout& slab,
                const MpiCommunicator& comm);
   ~SlabFilmRows() override;
