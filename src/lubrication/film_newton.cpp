@@ -138,10 +138,14 @@ int run_film_newton(const FilmNewton& newton, NewtonFilmResult& result) {
           }
           if (accepted) break;
         }
+        // Where the halving is about to pass below the step's first kink,
+        // the step to that kink first (newton.first_kink).
+        const double kink = newton.first_kink ? newton.first_kink(lambda) : INFINITY;
         for (int halving = 0; halving <= kMostHalvings && !accepted; ++halving, lambda *= 0.5) {
           const std::optional<bool> lower = lowers(lambda, false, lambda);
           accepted = lower.value_or(false);
           if (lower && !accepted) ++result.line_search_halvings;
+          if (!accepted && kink > 0.5 * lambda && kink < lambda) accepted = lowers(kink, false, kink).value_or(false);
         }
         if (accepted) break;
       }

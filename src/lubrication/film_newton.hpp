@@ -101,6 +101,14 @@ struct FilmNewton {
   // The trial state at `scale` times the step (or the clipped step) and its
   // measure; nothing where its film is not valid. `accept` takes the trial.
   std::function<std::optional<FilmMeasure>(double scale, bool clipped)> try_step;
+  // Where given: the smallest scale below `longest` at which the step
+  // carries a node just past a kink of the residual (the cavitation
+  // switch), infinity if none. The line search tries it before halving
+  // below it: halving alone crept towards a kink a node sat a hair above,
+  // each step accepted at a few times less than the kink's scale and the
+  // node never reaching it (a Zeno creep; docs/development-log.md,
+  // 2026-12-04, forty-third session).
+  std::function<double(double longest)> first_kink;
   std::function<void()> accept;
   // The watchdog's: keep the current state, and make it current again.
   std::function<void()> save, restore;

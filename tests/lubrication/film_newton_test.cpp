@@ -6,7 +6,8 @@
 // on a model with a kink the watchdog must step over it where that pays and
 // go back to the stall where it does not; a start's rule
 // (FilmTolerances::start_norm_share) must end an iteration where the norm
-// has fallen and the residuals are within the allowance, and only there.
+// has fallen and the residuals are within the allowance, and only there;
+// the step to the first kink must end a creep towards a kink.
 #include "lubrication/film_newton.hpp"
 
 #include <gtest/gtest.h>
@@ -169,6 +170,74 @@ TEST(FilmNewtonTest, WatchdogGoesBackToTheStallWhereItDoesNotPay) {
   run_film_newton(patient.newton(7), converged);
   EXPECT_TRUE(converged.converged()) << converged.message;
   EXPECT_EQ(converged.iterations, 1 + steps_to_tolerance(2.0, 0.9));
+}
+
+// A node a hair above a kink (the cavitation switch at s = 0): the Newton
+// direction, solved on the node's side, carries s to -c, and the residual's
+// norm is s + c on that side. A trial past the kink holds the node at s = 0
+// (the bent path) while the rest of the step goes on, which the norm pays
+// for at 1e3 times the overshoot. On the kink the next solve takes the
+// other branch, and every full step multiplies the norm by `rate`.
+struct ZenoModel {
+  double rate = 0.1, c = 1.0;
+  double s = 1e-3, norm_on_kink = 0.0;  // s > 0: on its side; s == 0: on the kink
+  double trial_s = 0.0, trial_norm = 0.0;
+
+  double norm() const { return s > 0.0 ? s + c : norm_on_kink; }
+  double kink_scale() const { return s / (s + c); }
+
+  FilmNewton newton(bool with_first_kink) {
+    FilmNewton n = model_newton(s);
+    n.measure = [this] { return at(norm()); };
+    n.try_step = [this](double scale, bool) -> std::optional<FilmMeasure> {
+      if (s == 0.0) {
+        trial_s = 0.0;
+        trial_norm = norm_on_kink * (1.0 - scale * (1.0 - rate));
+      } else if (scale <= kink_scale()) {
+        trial_s = s - scale * (s + c);
+        trial_norm = trial_s + c;
+      } else {
+        trial_s = 0.0;
+        trial_norm = c + 1e3 * (scale - kink_scale()) * (s + c);
+      }
+      return at(trial_norm);
+    };
+    n.accept = [this] {
+      if (s > 0.0 && trial_s == 0.0) norm_on_kink = trial_norm;
+      if (s == 0.0) norm_on_kink = trial_norm;
+      s = trial_s;
+    };
+    if (with_first_kink) {
+      n.first_kink = [this](double longest) {
+        const double at_kink = kink_scale() * (1.0 + 1e-12);
+        return s > 0.0 && at_kink < longest ? at_kink : INFINITY;
+      };
+    }
+    return n;
+  }
+};
+
+// Halving alone creeps towards the kink: each accepted step stops short of
+// it, s falls but never reaches 0, and the norm stays near c until no
+// halving is short enough. With the step to the first kink (FilmNewton::
+// first_kink) the node lands on it, the next solve takes the other branch,
+// and the iteration converges at `rate` per step.
+TEST(FilmNewtonTest, TheStepToTheFirstKinkEndsAZenoCreep) {
+  ZenoModel halving;
+  NewtonFilmResult crept;
+  run_film_newton(halving.newton(false), crept);
+  EXPECT_FALSE(crept.converged());
+  EXPECT_GT(halving.s, 0.0);
+  EXPECT_GT(halving.norm(), 0.99 * halving.c);
+  EXPECT_NE(crept.message.find("no step along the Newton direction lowers the residual"), std::string::npos)
+      << crept.message;
+
+  ZenoModel kinked;
+  NewtonFilmResult converged;
+  run_film_newton(kinked.newton(true), converged);
+  ASSERT_TRUE(converged.converged()) << converged.message;
+  EXPECT_EQ(kinked.s, 0.0);
+  EXPECT_EQ(converged.iterations, 1 + steps_to_tolerance(kinked.c, kinked.rate));
 }
 
 TEST(FilmNewtonTest, NoTightRetryWhileTheWatchdogRuns) {
