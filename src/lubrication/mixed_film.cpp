@@ -201,7 +201,7 @@ constexpr int kWatchdogSteps = 4;
 // the switch along the trial path (detail::stays_on_switch). From 4, at
 // 1024^2 the GMRES iterations after the coarse levels fell by a fifth and
 // the answer's first step from 16 solves to 8 (docs/development-log.md,
-// 2026-12-04).
+// 2026-12-04, forty-second and forty-third sessions).
 constexpr int kKrylovSwitchPasses = 2;
 
 // The smoothed contact row at q and f = h / H.
