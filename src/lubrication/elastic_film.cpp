@@ -112,6 +112,14 @@ constexpr std::array<double, 2> kStartFilms{0.5, 8.0};
 // The trust region of a Newton step, in units of the pressure scale (the
 // dry contact's peak) and of the thinnest film.
 constexpr double kLargestStep = 0.5;
+// A start stagnates (and the next takes over) where the residual's norm
+// has not fallen below kStagnationShare of its value kStagnationSteps steps
+// before: on the bent trial path a failing thin start crept at relative
+// decreases of 1e-6 for ten steps, where the straight path stalled at once
+// (bench/ehl/ehl_validation.cpp; docs/development-log.md, 2026-12-04,
+// forty-fourth session).
+constexpr int kStagnationSteps = 5;
+constexpr double kStagnationShare = 0.99;
 
 // The state of the Newton iteration: s and h0, and what follows from them.
 struct State {
@@ -358,6 +366,7 @@ ElasticFilm detail::solve_film_newton(InfluenceOperator& op, const Eigen::ArrayX
     krylov_solver.emplace(op, topology, krylov_settings, slab);
   }
   std::vector<char> branch_full(n, 1);
+  std::vector<char> solved_full(n, 1);  // the branches the step was solved on
   double mass_scale = 1.0;
 
   // The scaled residual (mass rows over mass_scale, the load row over w)
@@ -434,7 +443,9 @@ ElasticFilm detail::solve_film_newton(InfluenceOperator& op, const Eigen::ArrayX
                   .starts = dry_start ? kStartFilms.size() : 1,
                   .share = options.max_iterations / 2,
                   .limit = options.max_iterations,
-                  .limit_on_each_start = true};
+                  .limit_on_each_start = true,
+                  .stagnation_steps = kStagnationSteps,
+                  .stagnation_share = kStagnationShare};
   newton.measure = [&] { return measure(x, residual, false); };
   newton.lay_start = [&](std::size_t attempt) {
     x = initial;
@@ -449,8 +460,12 @@ ElasticFilm detail::solve_film_newton(InfluenceOperator& op, const Eigen::ArrayX
     // cavitated below (branch_consistent_step settles the nodes at s = 0).
     for (std::size_t j = 0; j < n; ++j) branch_full[j] = x.s[static_cast<Eigen::Index>(j)] >= 0.0 ? 1 : 0;
     if (!krylov) {
-      outcome.solved = detail::branch_consistent_step([&] { measure(x, residual, true); }, topology, x.s, jacobian_t,
-                                                      residual, lu, step, branch_full, detail::kSwitchBand);
+      const auto linearise = [&] {
+        solved_full = branch_full;
+        measure(x, residual, true);
+      };
+      outcome.solved = detail::branch_consistent_step(linearise, topology, x.s, jacobian_t, residual, lu, step,
+                                                      branch_full, detail::kSwitchBand);
       return outcome;
     }
     // The linearisation does not depend on the branches: once, then one
@@ -459,6 +474,7 @@ ElasticFilm detail::solve_film_newton(InfluenceOperator& op, const Eigen::ArrayX
     const auto gmres_solve = [&] {
       const detail::KrylovOutcome solved =
           krylov_solver->solve(rows, branch_full, pressure_scale, mass_scale, area / w, forcing, residual, step);
+      solved_full = branch_full;
       outcome.krylov_iterations += solved.iterations;
       outcome.krylov_message = solved.message;
       return solved.converged;
@@ -476,8 +492,13 @@ ElasticFilm detail::solve_film_newton(InfluenceOperator& op, const Eigen::ArrayX
     return std::min(
         {1.0, kLargestStep / std::max(largest_change, 1e-300), kLargestStep / std::max(film_change, 1e-300)});
   };
+  // The trial point on the bent path (detail::bent_trial_path), as the
+  // mixed film's: on the straight path a few nodes carried across the
+  // switch cut every other Newton step to a few thousandths, and the 1024^2
+  // point contact took 13 fine Newton steps instead of 5, 75 trial points
+  // instead of 5 (docs/development-log.md, 2026-12-04, forty-fourth session).
   newton.try_step = [&](double lambda, bool) -> std::optional<detail::FilmMeasure> {
-    trial.s = x.s + lambda * step.head(ni).array();
+    detail::bent_trial_path(topology, first, x.s, step, lambda, solved_full, trial.s);
     trial.offset = x.offset + lambda * step[ni];
     if (!evaluate(trial)) return std::nullopt;
     return measure(trial, trial_residual, false);

@@ -718,12 +718,8 @@ MixedFilm newton_solve(InfluenceOperator& op, const Eigen::ArrayXd& gap, const F
     if (load_control) clipped[h0] = std::clamp(step[h0], -offset_cap(), offset_cap());
     return true;
   };
-  // The trial point on a bent path: a node the step carries across the
-  // cavitation switch (from off it) stops on it, s = 0, as
-  // a projected Newton method's path stops at its bounds (Bertsekas 1982);
-  // the next step's branch passes choose its side from the direction. On the
-  // straight path the linear model, exact on the node's own branch, is wrong
-  // past the switch, and the line search cut the step to 3e-5 for a few
+  // The trial point on the bent path (detail::bent_trial_path). On the
+  // straight path the line search cut the step to 3e-5 for a few
   // pressurised nodes at s = 1e-4 to 1e-2: 256^2 crept for 45 minutes and
   // did not converge (docs/development-log.md, 2026-11-30).
   // A node on the switch that the step moves to the side other than the
@@ -735,18 +731,9 @@ MixedFilm newton_solve(InfluenceOperator& op, const Eigen::ArrayXd& gap, const F
   // fell (docs/development-log.md, 2026-12-04).
   newton.try_step = [&](double scale, bool clip) -> std::optional<detail::FilmMeasure> {
     const Eigen::VectorXd& along = clip ? clipped : step;
-    trial.s = x.s + scale * along.head(ni).array();
+    detail::bent_trial_path(topology, first, x.s, along, scale, solved_full, trial.s);
     trial.q = x.q + scale * along.segment(ni, ni).array();
     trial.offset = load_control ? x.offset + scale * along[h0] : x.offset;
-    for (Eigen::Index k = 0; k < ni; ++k) {
-      const bool crossed = (x.s[k] > 0.0) != (trial.s[k] > 0.0);
-      const auto kk = static_cast<std::size_t>(k);
-      if (topology.fixed(first + kk)) continue;
-      if ((crossed && std::abs(x.s[k]) > detail::kSwitchBand) ||
-          detail::stays_on_switch(x.s[k], along[k], solved_full[kk] != 0)) {
-        trial.s[k] = 0.0;
-      }
-    }
     if (!evaluate(trial)) return std::nullopt;
     return measure(trial, trial_residual, false);
   };

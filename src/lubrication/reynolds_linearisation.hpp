@@ -80,6 +80,30 @@ inline bool stays_on_switch(double s, double change, bool solved_full) {
   return std::abs(s) <= kSwitchBand && change != 0.0 && (change > 0.0) != solved_full;
 }
 
+// The trial point on a bent path, s + scale * along with every node the
+// step carries across the cavitation switch (from off it) stopped on it,
+// s = 0, as a projected Newton method's path stops at its bounds
+// (Bertsekas 1982), and every node on the switch that stays_on_switch holds;
+// the next step's branch passes choose its side from the direction. On the
+// straight path the linear model, exact on a node's own branch, is wrong past
+// the switch, and the line search cuts the whole step for a few nodes
+// (docs/development-log.md, 2026-11-30 and 2026-12-04). `s` and
+// `solved_full` are this process's nodes, the first the stencil's `first`.
+inline void bent_trial_path(const ReynoldsStencil& topology, std::size_t first, const Eigen::ArrayXd& s,
+                            const Eigen::VectorXd& along, double scale, const std::vector<char>& solved_full,
+                            Eigen::ArrayXd& trial_s) {
+  const Eigen::Index n = s.size();
+  trial_s = s + scale * along.head(n).array();
+  for (Eigen::Index k = 0; k < n; ++k) {
+    const auto kk = static_cast<std::size_t>(k);
+    if (topology.fixed(first + kk)) continue;
+    const bool crossed = (s[k] > 0.0) != (trial_s[k] > 0.0);
+    if ((crossed && std::abs(s[k]) > kSwitchBand) || stays_on_switch(s[k], along[k], solved_full[kk] != 0)) {
+      trial_s[k] = 0.0;
+    }
+  }
+}
+
 template <class Solve>
 bool branch_consistent_step_with(Solve&& solve, const ReynoldsStencil& topology, const Eigen::ArrayXd& s,
                                  const Eigen::VectorXd& step, std::vector<char>& branch_full,
