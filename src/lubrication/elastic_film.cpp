@@ -112,9 +112,9 @@ constexpr std::array<double, 2> kStartFilms{0.5, 8.0};
 // The trust region of a Newton step, in units of the pressure scale (the
 // dry contact's peak) and of the thinnest film.
 constexpr double kLargestStep = 0.5;
-// A start stagnates (and the next takes over) where the residual's norm
-// has not fallen below kStagnationShare of its value kStagnationSteps steps
-// before: on the bent trial path a failing thin start crept at relative
+// A start but the last stagnates (and the next takes over) where the
+// residual's norm has not fallen below kStagnationShare of its value
+// kStagnationSteps steps before: on the bent trial path a failing thin start crept at relative
 // decreases of 1e-6 for ten steps, where the straight path stalled at once
 // (bench/ehl/ehl_validation.cpp; docs/development-log.md, 2026-12-04,
 // forty-fourth session).
@@ -445,7 +445,8 @@ ElasticFilm detail::solve_film_newton(InfluenceOperator& op, const Eigen::ArrayX
                   .limit = options.max_iterations,
                   .limit_on_each_start = true,
                   .stagnation_steps = kStagnationSteps,
-                  .stagnation_share = kStagnationShare};
+                  .stagnation_share = kStagnationShare,
+                  .stagnation_ends_last_start = false};
   newton.measure = [&] { return measure(x, residual, false); };
   newton.lay_start = [&](std::size_t attempt) {
     x = initial;

@@ -190,7 +190,8 @@ int run_film_newton(const FilmNewton& newton, NewtonFilmResult& result) {
         }
       }
       const auto window = static_cast<std::size_t>(rules.stagnation_steps);
-      if (window > 0 && norms.size() > window && !converged(tolerances, current, norms.front()) &&
+      if (window > 0 && (!last || rules.stagnation_ends_last_start) && norms.size() > window &&
+          !converged(tolerances, current, norms.front()) &&
           current.norm > rules.stagnation_share * norms[norms.size() - 1 - window]) {
         result.message = fmt::format(
             "{} Newton iteration stagnated: the residual's norm fell from {:.3g} to {:.3g} in {} steps ({})",

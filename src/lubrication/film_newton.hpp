@@ -75,6 +75,9 @@ struct FilmNewtonRules {
   // stagnation_share times its value stagnation_steps steps before (0: never).
   int stagnation_steps = 0;
   double stagnation_share = 1.0;
+  // Whether the stagnation rule ends the last start too (else only a start
+  // the next one takes over from).
+  bool stagnation_ends_last_start = true;
   // The watchdog (Chamberlain, Powell, Lemarechal & Pedersen 1982): where
   // no step along the Newton direction lowers the residual, the trust
   // region's step is taken anyway, and the iteration goes back to the

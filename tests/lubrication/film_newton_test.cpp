@@ -2,7 +2,8 @@
 // model whose every full step multiplies the residual's norm by a fixed
 // rate: the stagnation rule (give up where the norm has not fallen below a
 // share of its value some steps before) must end an iteration that creeps
-// and leave one that converges, however slowly its rule allows, alone; and
+// and leave one that converges, however slowly its rule allows, alone (and,
+// where asked, hand over to the next start without ending the last); and
 // on a model with a kink the watchdog must step over it where that pays and
 // go back to the stall where it does not; a start's rule
 // (FilmTolerances::start_norm_share) must end an iteration where the norm
@@ -90,6 +91,37 @@ TEST(FilmNewtonTest, StagnationRuleLeavesAConvergingIterationAlone) {
   run_film_newton(slow.newton(3, 0.75), result);
   EXPECT_TRUE(result.converged()) << result.message;
   EXPECT_EQ(result.iterations, static_cast<int>(std::ceil(std::log(kTolerance) / std::log(0.9))));
+}
+
+TEST(FilmNewtonTest, StagnationRuleCanHandOverWithoutEndingTheLastStart) {
+  // Two starts, the rule for starts the next takes over from only (the EHL
+  // film's): the first creeps at 0.999 per step and hands over after the
+  // rule's 5 steps; the second converges at 0.1 per step.
+  CreepingModel model{.rate = 0.999};
+  FilmNewton two = model.newton(5, 0.99);
+  two.rules.starts = 2;
+  two.rules.share = 500;
+  two.rules.stagnation_ends_last_start = false;
+  two.lay_start = [&model](std::size_t) {
+    model.x = 1.0;
+    model.rate = 0.1;
+    return true;
+  };
+  NewtonFilmResult result;
+  run_film_newton(two, result);
+  EXPECT_TRUE(result.converged()) << result.message;
+  int fast_steps = 0;
+  for (double y = 1.0; std::abs(y) > kTolerance; ++fast_steps) y *= 1.0 - (1.0 - 0.1);
+  EXPECT_EQ(result.iterations, 5 + fast_steps);
+  // On its last start the same rule leaves the creep of the first test
+  // alone: it converges.
+  CreepingModel last{.rate = 0.95};
+  FilmNewton one = last.newton(3, 0.75);
+  one.rules.stagnation_ends_last_start = false;
+  NewtonFilmResult alone;
+  run_film_newton(one, alone);
+  EXPECT_TRUE(alone.converged()) << alone.message;
+  EXPECT_EQ(alone.iterations, static_cast<int>(std::ceil(std::log(kTolerance) / std::log(0.95))));
 }
 
 // A model with a kink: from the start every step along the Newton
