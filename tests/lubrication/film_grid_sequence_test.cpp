@@ -90,7 +90,12 @@ TEST(FilmGridSequenceTest, SequencedFilmEqualsColdFilm) {
 
 // At 25 cells per Hertz radius the cold start takes 16 Newton steps
 // (docs/development-log.md); the start interpolated from 64^2 leaves the fine
-// grid the discretisation difference (measured 10 steps, 2 coarse levels).
+// grid the discretisation difference: 4 steps on 2 coarse levels with the
+// line search on the bent path, 11 on the straight one, where every other
+// step was cut short by nodes it carried across the cavitation switch
+// (docs/development-log.md, 2026-12-04, forty-fourth session).
+constexpr int kMostSequencedFineSteps = 6;
+
 TEST(FilmGridSequenceTest, CoarseStartSavesFineNewtonSteps) {
   const ElasticFilm cold = solve_point(128, false);
   const ElasticFilm sequenced = solve_point(128, true);
@@ -98,6 +103,7 @@ TEST(FilmGridSequenceTest, CoarseStartSavesFineNewtonSteps) {
   ASSERT_TRUE(sequenced.converged()) << sequenced.message;
   EXPECT_EQ(sequenced.coarse_levels, 2);
   EXPECT_LT(sequenced.iterations, cold.iterations);
+  EXPECT_LE(sequenced.iterations, kMostSequencedFineSteps);
   EXPECT_LT(sequenced.krylov_iterations, cold.krylov_iterations);
   EXPECT_NEAR(sequenced.central_film_thickness / cold.central_film_thickness, 1.0, kSameFilm);
   EXPECT_NEAR(sequenced.minimum_film_thickness / cold.minimum_film_thickness, 1.0, kSameFilm);
