@@ -114,10 +114,10 @@ constexpr std::array<double, 2> kStartFilms{0.5, 8.0};
 constexpr double kLargestStep = 0.5;
 // A start but the last stagnates (and the next takes over) where the
 // residual's norm has not fallen below kStagnationShare of its value
-// kStagnationSteps steps before: on the bent trial path a failing thin start crept at relative
-// decreases of 1e-6 for ten steps, where the straight path stalled at once
-// (bench/ehl/ehl_validation.cpp; docs/development-log.md, 2026-12-04,
-// forty-fourth session).
+// kStagnationSteps steps before: on the bent trial path a failing thin
+// start crept at relative decreases of 1e-6 for ten steps, where the
+// straight path stalled at once (bench/ehl/ehl_validation.cpp;
+// docs/development-log.md, 2026-12-04, forty-fourth session).
 constexpr int kStagnationSteps = 5;
 constexpr double kStagnationShare = 0.99;
 
