@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 
+#include "dry_contact_memo.hpp"
 #include "halfspace/lubrication/mixed_film.hpp"
 #include "halfspace/operators/influence_operator.hpp"
 
@@ -25,9 +26,11 @@ enum class MixedStartUse { solve_then_continue, solve_only, try_only, try_until_
 
 // The mixed film on the operator's grid alone (no coarser grid): the Newton
 // iteration from `start` or the standard starts (mixed_film.cpp) and the
-// continuations, as `use` says.
-MixedFilm solve_mixed_film_on_grid(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
-                                   const LubricantLaws& laws, const MixedFilmOptions& options, const MixedFilm* start,
+// continuations, as `use` says. Each Newton solve takes its dry contact
+// from `dry` (solved there once for the grid and loading).
+MixedFilm solve_mixed_film_on_grid(InfluenceOperator& op, const Eigen::ArrayXd& gap, DryContactMemo& dry,
+                                   const FlowConditions& conditions, const LubricantLaws& laws,
+                                   const MixedFilmOptions& options, const MixedFilm* start,
                                    MixedStartUse use = MixedStartUse::solve_then_continue);
 
 // The mixed film from the converged film `start` (of the same grid, at
@@ -35,8 +38,9 @@ MixedFilm solve_mixed_film_on_grid(InfluenceOperator& op, const Eigen::ArrayXd& 
 // the smoothing followed down to the film itself; where a plain Newton
 // iteration stalls in the transition between the full film and the
 // contact.
-MixedFilm solve_mixed_film_smoothed(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
-                                    const LubricantLaws& laws, const MixedFilmOptions& options, const MixedFilm& start);
+MixedFilm solve_mixed_film_smoothed(InfluenceOperator& op, const Eigen::ArrayXd& gap, DryContactMemo& dry,
+                                    const FlowConditions& conditions, const LubricantLaws& laws,
+                                    const MixedFilmOptions& options, const MixedFilm& start);
 
 // The relative mass residual and load error to which the speed
 // continuation solves a film between in full film (the last film carries no

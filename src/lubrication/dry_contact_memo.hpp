@@ -1,0 +1,46 @@
+// The dry contact a mixed film's Newton solve starts from and takes its
+// scales from (mixed_film.cpp: the pressure, its peak, the approach): the
+// same for every solve on one grid at one loading, and a grid's speed
+// continuation makes up to one solve per step, so it is solved once per
+// grid and loading and kept through one solve_mixed_film call. On the
+// measured window at 1024^2 the free grid's Polonsky–Keer solve took 7 to
+// 8 s of every continuation step (docs/development-log.md, 2026-12-04,
+// forty-fifth session). Private to the library.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstddef>
+#include <deque>
+
+#include "halfspace/operators/influence_operator.hpp"
+#include "halfspace/solvers/loading.hpp"
+#include "halfspace/solvers/solve_result.hpp"
+
+namespace halfspace::lubrication::detail {
+
+class DryContactMemo {
+ public:
+  // The dry contact of `gap` (this process's rows) on op's grid under
+  // `loading`, by Polonsky–Keer: the kept one where `op`, its grid, the
+  // gap's values and the loading are a kept solve's on every process, else
+  // solved and kept in place of the one kept for `op` and its grid (a
+  // separation continuation moves the approach at every step). Collective
+  // on several processes. The reference holds until the memo goes.
+  const solvers::SolveResult& solve(InfluenceOperator& op, const Eigen::ArrayXd& gap, const solvers::Loading& loading);
+
+  // The Polonsky–Keer solves made (not the kept ones handed out).
+  int solves() const { return solves_; }
+
+ private:
+  struct Kept {
+    const InfluenceOperator* op = nullptr;
+    std::size_t nx = 0, ny = 0;
+    Eigen::ArrayXd gap;
+    solvers::Loading loading;
+    solvers::SolveResult result;
+  };
+  std::deque<Kept> kept_;  // one per operator and grid; stable references
+  int solves_ = 0;
+};
+
+}  // namespace halfspace::lubrication::detail
