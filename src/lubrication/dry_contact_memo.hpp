@@ -21,11 +21,13 @@ namespace halfspace::lubrication::detail {
 class DryContactMemo {
  public:
   // The dry contact of `gap` (this process's rows) on op's grid under
-  // `loading`, by Polonsky–Keer: the kept one where `op`, its grid, the
-  // gap's values and the loading are a kept solve's on every process, else
-  // solved and kept in place of the one kept for `op` and its grid (a
-  // separation continuation moves the approach at every step). Collective
-  // on several processes. The reference holds until the memo goes.
+  // `loading`, by Polonsky–Keer: the kept one where `op`, the gap's values
+  // and the loading are the solve's kept for the grid's shape on every
+  // process, else solved and kept in its place (a separation continuation
+  // moves the approach at every step). An operator object is taken to stay
+  // the same operator while the memo lives. Collective on several
+  // processes. The reference holds until the memo goes; its values until
+  // the next solve on a grid of the same shape.
   const solvers::SolveResult& solve(InfluenceOperator& op, const Eigen::ArrayXd& gap, const solvers::Loading& loading);
 
   // The Polonsky–Keer solves made (not the kept ones handed out).
@@ -39,7 +41,7 @@ class DryContactMemo {
     solvers::Loading loading;
     solvers::SolveResult result;
   };
-  std::deque<Kept> kept_;  // one per operator and grid; stable references
+  std::deque<Kept> kept_;  // one per grid shape; stable references
   int solves_ = 0;
 };
 

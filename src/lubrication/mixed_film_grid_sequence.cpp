@@ -277,11 +277,10 @@ MixedFilm solve_sequenced(InfluenceOperator& op, const Eigen::ArrayXd& gap, deta
 
 }  // namespace
 
-MixedFilm solve_mixed_film(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
-                           const LubricantLaws& laws, const MixedFilmOptions& options, const MixedFilm* start) {
+MixedFilm detail::solve_mixed_film(InfluenceOperator& op, const Eigen::ArrayXd& gap, DryContactMemo& dry,
+                                   const FlowConditions& conditions, const LubricantLaws& laws,
+                                   const MixedFilmOptions& options, const MixedFilm* start) {
   const auto started = std::chrono::steady_clock::now();
-  // Every grid's dry contact, solved once for all its solves.
-  detail::DryContactMemo dry;
   MixedFilm film = solve_sequenced(op, gap, dry, conditions, laws, options, start, SolveEffort::answer);
   // A point contact that failed with the look-ahead's steps as they come:
   // again with checked steps (MixedFilmOptions::checked_step_branches), its
@@ -297,6 +296,13 @@ MixedFilm solve_mixed_film(InfluenceOperator& op, const Eigen::ArrayXd& gap, con
   }
   again.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return again;
+}
+
+MixedFilm solve_mixed_film(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
+                           const LubricantLaws& laws, const MixedFilmOptions& options, const MixedFilm* start) {
+  // Every grid's dry contact, solved once for all its solves.
+  detail::DryContactMemo dry;
+  return detail::solve_mixed_film(op, gap, dry, conditions, laws, options, start);
 }
 
 }  // namespace halfspace::lubrication

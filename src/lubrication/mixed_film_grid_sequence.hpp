@@ -24,6 +24,12 @@ namespace halfspace::lubrication::detail {
 // start_norm_share = kStartNormShare).
 enum class MixedStartUse { solve_then_continue, solve_only, try_only, try_until_short, continue_only, solve_as_start };
 
+// solve_mixed_film with each grid's dry contact kept in `dry`: a Stribeck
+// sweep's points share it.
+MixedFilm solve_mixed_film(InfluenceOperator& op, const Eigen::ArrayXd& gap, DryContactMemo& dry,
+                           const FlowConditions& conditions, const LubricantLaws& laws, const MixedFilmOptions& options,
+                           const MixedFilm* start = nullptr);
+
 // The mixed film on the operator's grid alone (no coarser grid): the Newton
 // iteration from `start` or the standard starts (mixed_film.cpp) and the
 // continuations, as `use` says. Each Newton solve takes its dry contact

@@ -73,14 +73,30 @@ TEST(DryContactMemoTest, HandsOutTheKeptSolveOnlyForTheSameProblem) {
   EXPECT_EQ(memo.solves(), 4);
   EXPECT_NEAR(by_approach.approach, approach, 1e-12 * approach);
 
-  // Another operator on the same grid and gap (a softer body): solved anew,
-  // and the first operator's kept solve is still its own.
+  // Another operator on a grid of the same shape (a softer body): solved
+  // anew, in the first operator's place (one kept solve per grid shape).
   FftInfluenceOperator softer(ball_grid(), 0.5 * kEStar);
   const solvers::SolveResult& soft = memo.solve(softer, gap, solvers::Loading::force(kForce));
   EXPECT_EQ(memo.solves(), 5);
   EXPECT_GT(soft.approach, 1.5 * fresh.approach);
   memo.solve(op, moved, solvers::Loading::approach(approach));
-  EXPECT_EQ(memo.solves(), 5);
+  EXPECT_EQ(memo.solves(), 6);
+
+  // A grid of another shape is kept beside it.
+  const Grid coarse = Grid::plane(kCells / 2, kCells / 2, 2.0 * kSpacing, 2.0 * kSpacing, Boundary::free);
+  FftInfluenceOperator coarse_op(coarse, kEStar);
+  Eigen::ArrayXd coarse_gap(static_cast<Eigen::Index>(coarse.size()));
+  for (std::size_t j = 0; j < kCells / 2; ++j) {
+    for (std::size_t i = 0; i < kCells / 2; ++i) {
+      coarse_gap[static_cast<Eigen::Index>(j * kCells / 2 + i)] =
+          gap[static_cast<Eigen::Index>(2 * j * kCells + 2 * i)];
+    }
+  }
+  memo.solve(coarse_op, coarse_gap, solvers::Loading::force(kForce));
+  EXPECT_EQ(memo.solves(), 7);
+  memo.solve(op, moved, solvers::Loading::approach(approach));
+  memo.solve(coarse_op, coarse_gap, solvers::Loading::force(kForce));
+  EXPECT_EQ(memo.solves(), 7);
 }
 
 }  // namespace
