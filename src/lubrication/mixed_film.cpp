@@ -298,7 +298,7 @@ namespace {
 
 // One Newton solve from `start` or the standard starts, with the contact
 // rows smoothed by `smoothing` (mu) where it is > 0.
-MixedFilm newton_solve(InfluenceOperator& op, const Eigen::ArrayXd& gap, detail::DryContactMemo& dry,
+MixedFilm newton_solve(InfluenceOperator& op, const Eigen::ArrayXd& gap, detail::MixedFilmKeep& keep,
                        const FlowConditions& conditions, const LubricantLaws& laws, const MixedFilmOptions& options,
                        const MixedFilm* start, detail::MixedStartUse use = detail::MixedStartUse::solve_only,
                        double smoothing = 0.0) {
@@ -351,7 +351,7 @@ MixedFilm newton_solve(InfluenceOperator& op, const Eigen::ArrayXd& gap, detail:
   const Eigen::Index h0 = 2 * ni;                          // index of h0 (load control)
 
   MixedFilm result;
-  // The dry contact (the grid's, kept in `dry`): the start and the scales P
+  // The dry contact (the grid's, kept in `keep`): the start and the scales P
   // (its peak pressure) and H (the largest undeformed gap inside it).
   double pressure_scale = 0.0, film_scale = 0.0, dry_offset = options.offset;
   Eigen::ArrayXd dry_pressure = Eigen::ArrayXd::Zero(ni);
@@ -361,7 +361,7 @@ MixedFilm newton_solve(InfluenceOperator& op, const Eigen::ArrayXd& gap, detail:
     const solvers::Loading loading =
         load_control ? solvers::Loading::force(w) : solvers::Loading::approach(std::max(-options.offset, 0.0));
     if (load_control || -options.offset > 0.0) {
-      const solvers::SolveResult& contact = dry.solve(op, gap, loading);
+      const solvers::SolveResult& contact = keep.dry.solve(op, gap, loading);
       if (!contact.converged()) {
         result.message =
             fmt::format("the dry contact that starts the mixed solve did not converge: {}", contact.message);
@@ -383,7 +383,7 @@ MixedFilm newton_solve(InfluenceOperator& op, const Eigen::ArrayXd& gap, detail:
   // The dense path's K; the GMRES path's solver (which reads K_00).
   const Eigen::MatrixXd k_matrix = krylov ? Eigen::MatrixXd() : influence_matrix(op);
   std::optional<detail::MixedKrylovSolver> krylov_solver;
-  if (krylov) krylov_solver.emplace(op, topology, krylov_settings, load_control, slab);
+  if (krylov) krylov_solver.emplace(op, topology, krylov_settings, load_control, slab, &keep.arnoldi);
   const double self_influence = krylov ? krylov_solver->self_influence() : k_matrix(0, 0);
   if (given_start) {
     pressure_scale = std::max(
@@ -832,12 +832,12 @@ MixedFilm newton_solve(InfluenceOperator& op, const Eigen::ArrayXd& gap, detail:
 }
 
 // newton_solve, traced (MixedFilmOptions::trace).
-MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, detail::DryContactMemo& dry,
+MixedFilm solve_once(InfluenceOperator& op, const Eigen::ArrayXd& gap, detail::MixedFilmKeep& keep,
                      const FlowConditions& conditions, const LubricantLaws& laws, const MixedFilmOptions& options,
                      const MixedFilm* start, detail::MixedStartUse use = detail::MixedStartUse::solve_only,
                      double smoothing = 0.0) {
   const auto started = std::chrono::steady_clock::now();
-  MixedFilm film = newton_solve(op, gap, dry, conditions, laws, options, start, use, smoothing);
+  MixedFilm film = newton_solve(op, gap, keep, conditions, laws, options, start, use, smoothing);
   if (options.trace) {
     const Grid& grid = op.grid();
     options.trace(MixedSolveRecord{
@@ -898,7 +898,7 @@ struct Work {
 }  // namespace
 
 MixedFilm detail::solve_mixed_film_smoothed(InfluenceOperator& op, const Eigen::ArrayXd& gap,
-                                            detail::DryContactMemo& dry, const FlowConditions& conditions,
+                                            detail::MixedFilmKeep& keep, const FlowConditions& conditions,
                                             const LubricantLaws& laws, const MixedFilmOptions& options,
                                             const MixedFilm& start) {
   Work work;
@@ -911,7 +911,7 @@ MixedFilm detail::solve_mixed_film_smoothed(InfluenceOperator& op, const Eigen::
     // window and one failed), the last film's to the options' tolerance.
     MixedFilmOptions at = options;
     if (!last) at.contact_tolerance = std::clamp(2.0 * std::sqrt(mu), options.contact_tolerance, 0.5);
-    MixedFilm film = solve_once(op, gap, dry, conditions, laws, at, &from, MixedStartUse::solve_only, last ? 0.0 : mu);
+    MixedFilm film = solve_once(op, gap, keep, conditions, laws, at, &from, MixedStartUse::solve_only, last ? 0.0 : mu);
     work.add(film, 0);
     if (!film.converged()) {
       film.message =
@@ -948,7 +948,7 @@ constexpr double kSmallestRatio = 1.02;
 constexpr int kContinuationSolves = 60;
 constexpr double kRatioAfterSmoothing = 1.1;
 
-MixedFilm continue_in_speed(InfluenceOperator& op, const Eigen::ArrayXd& gap, detail::DryContactMemo& dry,
+MixedFilm continue_in_speed(InfluenceOperator& op, const Eigen::ArrayXd& gap, detail::MixedFilmKeep& keep,
                             const FlowConditions& conditions, const LubricantLaws& laws,
                             const MixedFilmOptions& options, MixedFilm film, double factor, Work& work) {
   // In full film (no contact load in the last film) the steps are at most
@@ -985,7 +985,7 @@ MixedFilm continue_in_speed(InfluenceOperator& op, const Eigen::ArrayXd& gap, de
     const bool only_a_start = next != 1.0 && film.contact_load_fraction == 0.0;
     const bool answers_start = std::abs(std::log(next)) <= std::log(grown_ratio());
     MixedFilm trial = solve_once(
-        op, gap, dry, at_speed_factor(conditions, next), laws, only_a_start ? full_film_start : options, &film,
+        op, gap, keep, at_speed_factor(conditions, next), laws, only_a_start ? full_film_start : options, &film,
         only_a_start && !answers_start ? detail::MixedStartUse::solve_as_start : detail::MixedStartUse::solve_only);
     work.add(trial);
     if (trial.converged()) {
@@ -1011,7 +1011,7 @@ MixedFilm continue_in_speed(InfluenceOperator& op, const Eigen::ArrayXd& gap, de
     if (op.grid().dimension() == 2 && options.smoothed_rescue) {
       for (const double target : {1.0, next}) {
         MixedFilm smoothed =
-            detail::solve_mixed_film_smoothed(op, gap, dry, at_speed_factor(conditions, target), laws, options, film);
+            detail::solve_mixed_film_smoothed(op, gap, keep, at_speed_factor(conditions, target), laws, options, film);
         work.add(smoothed, 0);
         smoothed_failure = smoothed.message;
         if (smoothed.converged()) {
@@ -1051,7 +1051,7 @@ namespace {
 constexpr int kOffsetSolves = 40;
 constexpr double kSmallestOffsetStep = 1.0 / 256.0;
 
-MixedFilm continue_in_offset(InfluenceOperator& op, const Eigen::ArrayXd& gap, detail::DryContactMemo& dry,
+MixedFilm continue_in_offset(InfluenceOperator& op, const Eigen::ArrayXd& gap, detail::MixedFilmKeep& keep,
                              const FlowConditions& conditions, const LubricantLaws& laws,
                              const MixedFilmOptions& options, const MixedFilm* start, MixedFilm failed) {
   MixedFilm from;
@@ -1063,7 +1063,7 @@ MixedFilm continue_in_offset(InfluenceOperator& op, const Eigen::ArrayXd& gap, d
     from = *start;
   } else {
     if (!(-options.offset > 0.0)) return failed;
-    const solvers::SolveResult& contact = dry.solve(op, gap, solvers::Loading::approach(-options.offset));
+    const solvers::SolveResult& contact = keep.dry.solve(op, gap, solvers::Loading::approach(-options.offset));
     if (!contact.converged() || !(contact.total_force > 0.0)) return failed;
     MixedFilmOptions by_load = options;
     by_load.load = contact.total_force;
@@ -1078,12 +1078,12 @@ MixedFilm continue_in_offset(InfluenceOperator& op, const Eigen::ArrayXd& gap, d
     const double taken = next - done;
     MixedFilmOptions at = options;
     at.offset = first + next * (options.offset - first);
-    MixedFilm trial = solve_once(op, gap, dry, conditions, laws, at, &from);
+    MixedFilm trial = solve_once(op, gap, keep, conditions, laws, at, &from);
     work.add(trial);
     if (!trial.converged() && taken * 0.5 < kSmallestOffsetStep && op.grid().dimension() == 2 &&
         options.smoothed_rescue) {
       // Stalled: as in the speed continuation, the smoothed contact rows.
-      MixedFilm smoothed = detail::solve_mixed_film_smoothed(op, gap, dry, conditions, laws, at, from);
+      MixedFilm smoothed = detail::solve_mixed_film_smoothed(op, gap, keep, conditions, laws, at, from);
       work.add(smoothed, 0);
       if (smoothed.converged()) {
         trial = std::move(smoothed);
@@ -1115,17 +1115,17 @@ MixedFilm continue_in_offset(InfluenceOperator& op, const Eigen::ArrayXd& gap, d
 }  // namespace
 
 MixedFilm detail::solve_mixed_film_on_grid(InfluenceOperator& op, const Eigen::ArrayXd& gap,
-                                           detail::DryContactMemo& dry, const FlowConditions& conditions,
+                                           detail::MixedFilmKeep& keep, const FlowConditions& conditions,
                                            const LubricantLaws& laws, const MixedFilmOptions& options,
                                            const MixedFilm* start, MixedStartUse use) {
   const auto started = std::chrono::steady_clock::now();
   MixedFilm film;
   if (use != MixedStartUse::continue_only) {
-    film = solve_once(op, gap, dry, conditions, laws, options, start, use);
+    film = solve_once(op, gap, keep, conditions, laws, options, start, use);
     if (film.converged() || use != MixedStartUse::solve_then_continue) return film;
   }
   if (!options.load_controlled()) {
-    MixedFilm continued = continue_in_offset(op, gap, dry, conditions, laws, options, start, std::move(film));
+    MixedFilm continued = continue_in_offset(op, gap, keep, conditions, laws, options, start, std::move(film));
     continued.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     return continued;
   }
@@ -1142,7 +1142,7 @@ MixedFilm detail::solve_mixed_film_on_grid(InfluenceOperator& op, const Eigen::A
     factor = start->entrainment_speed / speed;
   }
   for (double faster = 4.0; factor == 0.0 && faster <= 1e4; faster *= 4.0) {
-    MixedFilm trial = solve_once(op, gap, dry, at_speed_factor(conditions, faster), laws, options, nullptr);
+    MixedFilm trial = solve_once(op, gap, keep, at_speed_factor(conditions, faster), laws, options, nullptr);
     work.add(trial);
     if (trial.converged()) {
       from = std::move(trial);
@@ -1151,7 +1151,7 @@ MixedFilm detail::solve_mixed_film_on_grid(InfluenceOperator& op, const Eigen::A
   }
   if (factor == 0.0) return work.into(std::move(film));
   MixedFilm continued =
-      work.into(continue_in_speed(op, gap, dry, conditions, laws, options, std::move(from), factor, work));
+      work.into(continue_in_speed(op, gap, keep, conditions, laws, options, std::move(from), factor, work));
   continued.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return continued;
 }

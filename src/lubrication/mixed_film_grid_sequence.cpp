@@ -24,10 +24,10 @@
 #include <optional>
 #include <span>
 
-#include "dry_contact_memo.hpp"
 #include "film_grid_sequence.hpp"
 #include "halfspace/solvers/grid_transfer.hpp"
 #include "halfspace/solvers/polonsky_keer.hpp"
+#include "mixed_film_keep.hpp"
 
 namespace halfspace::lubrication {
 
@@ -78,7 +78,7 @@ constexpr std::size_t kCoarseAnswerBelow = 512 * 512;
 //    grid's Newton iteration from its cold starts alone.
 enum class SolveEffort { answer, start, quick_start };
 
-MixedFilm solve_sequenced(InfluenceOperator& op, const Eigen::ArrayXd& gap, detail::DryContactMemo& dry,
+MixedFilm solve_sequenced(InfluenceOperator& op, const Eigen::ArrayXd& gap, detail::MixedFilmKeep& keep,
                           const FlowConditions& conditions, const LubricantLaws& laws, const MixedFilmOptions& options,
                           const MixedFilm* start, SolveEffort effort, bool* coarser_grid_failed = nullptr);
 
@@ -100,17 +100,17 @@ void add_earlier_work(MixedFilm& again, const MixedFilm& earlier) {
 // start from the coarser grid's checked try, which has just failed, and
 // fail the same way (on the measured window at 1024^2 each grid from 128^2
 // up repeated the 32^2 and 64^2 grids' checked solves, to the bit).
-MixedFilm solve_start(InfluenceOperator& op, const Eigen::ArrayXd& gap, detail::DryContactMemo& dry,
+MixedFilm solve_start(InfluenceOperator& op, const Eigen::ArrayXd& gap, detail::MixedFilmKeep& keep,
                       const FlowConditions& conditions, const LubricantLaws& laws, const MixedFilmOptions& options,
                       SolveEffort effort) {
   bool coarser_grid_failed = false;
-  MixedFilm film = solve_sequenced(op, gap, dry, conditions, laws, options, nullptr, effort, &coarser_grid_failed);
+  MixedFilm film = solve_sequenced(op, gap, keep, conditions, laws, options, nullptr, effort, &coarser_grid_failed);
   if (film.converged() || effort == SolveEffort::quick_start || options.checked_step_branches || coarser_grid_failed) {
     return film;
   }
   MixedFilmOptions checked = options;
   checked.checked_step_branches = true;
-  MixedFilm again = solve_sequenced(op, gap, dry, conditions, laws, checked, nullptr, SolveEffort::quick_start);
+  MixedFilm again = solve_sequenced(op, gap, keep, conditions, laws, checked, nullptr, SolveEffort::quick_start);
   add_earlier_work(again, film);
   if (!again.converged())
     again.message = fmt::format("{} (a cold try with checked step branches: {})", film.message, again.message);
@@ -120,7 +120,7 @@ MixedFilm solve_start(InfluenceOperator& op, const Eigen::ArrayXd& gap, detail::
 // The film on the grid of twice the spacing, interpolated onto op's grid, or
 // nothing if there is no coarser grid or its film did not converge. Adds the
 // coarse work to `record`, and a failed coarse film's message.
-std::optional<MixedFilm> sequenced_start(InfluenceOperator& op, const Eigen::ArrayXd& gap, detail::DryContactMemo& dry,
+std::optional<MixedFilm> sequenced_start(InfluenceOperator& op, const Eigen::ArrayXd& gap, detail::MixedFilmKeep& keep,
                                          const FlowConditions& conditions, const LubricantLaws& laws,
                                          const MixedFilmOptions& options, SolveEffort effort, MixedFilm& record) {
   const std::optional<MixedFilm> coarse = detail::solve_on_coarser_grid(
@@ -128,10 +128,10 @@ std::optional<MixedFilm> sequenced_start(InfluenceOperator& op, const Eigen::Arr
       [&](InfluenceOperator& coarse_op, const Eigen::ArrayXd& coarse_gap, const MixedFilmOptions& coarse_options) {
         const std::size_t coarse_nodes = coarse_op.grid().size();
         if (effort == SolveEffort::answer && coarse_nodes >= kCoarseAnswerNodes && coarse_nodes < kCoarseAnswerBelow) {
-          return solve_sequenced(coarse_op, coarse_gap, dry, conditions, laws, coarse_options, nullptr,
+          return solve_sequenced(coarse_op, coarse_gap, keep, conditions, laws, coarse_options, nullptr,
                                  SolveEffort::answer);
         }
-        return solve_start(coarse_op, coarse_gap, dry, conditions, laws, coarse_options,
+        return solve_start(coarse_op, coarse_gap, keep, conditions, laws, coarse_options,
                            effort == SolveEffort::quick_start ? SolveEffort::quick_start : SolveEffort::start);
       },
       record);
@@ -190,7 +190,7 @@ std::optional<MixedFilm> sequenced_start(InfluenceOperator& op, const Eigen::Arr
 // solve_mixed_film without its checked retry, with the fall-backs `effort`
 // allows. Sets `coarser_grid_failed` (if given) where the grid is sequenced
 // and its coarser grid gave no film.
-MixedFilm solve_sequenced(InfluenceOperator& op, const Eigen::ArrayXd& gap, detail::DryContactMemo& dry,
+MixedFilm solve_sequenced(InfluenceOperator& op, const Eigen::ArrayXd& gap, detail::MixedFilmKeep& keep,
                           const FlowConditions& conditions, const LubricantLaws& laws, const MixedFilmOptions& options,
                           const MixedFilm* start, SolveEffort effort, bool* coarser_grid_failed) {
   const auto started = std::chrono::steady_clock::now();
@@ -209,7 +209,7 @@ MixedFilm solve_sequenced(InfluenceOperator& op, const Eigen::ArrayXd& gap, deta
       op.communicator().min(static_cast<std::size_t>(gap.size()) == op.local_size() && gap.allFinite() ? 1.0 : 0.0) >
           0.5;
   if (!sequence) {
-    MixedFilm film = detail::solve_mixed_film_on_grid(op, gap, dry, conditions, laws, options, start,
+    MixedFilm film = detail::solve_mixed_film_on_grid(op, gap, keep, conditions, laws, options, start,
                                                       effort == SolveEffort::quick_start
                                                           ? detail::MixedStartUse::solve_only
                                                           : detail::MixedStartUse::solve_then_continue);
@@ -222,14 +222,14 @@ MixedFilm solve_sequenced(InfluenceOperator& op, const Eigen::ArrayXd& gap, deta
                          [&] { require_mixed_film_fits(grid, options, "the mixed film", op.local_size()); });
   MixedFilm record;
   const std::optional<MixedFilm> coarse_start =
-      sequenced_start(op, gap, dry, conditions, laws, options, effort, record);
+      sequenced_start(op, gap, keep, conditions, laws, options, effort, record);
   if (coarser_grid_failed != nullptr) *coarser_grid_failed = !coarse_start;
   MixedFilm result;
   if (coarse_start) {
     MixedFilmOptions first = options;
     first.max_iterations = std::min(options.max_iterations, kSequencedFirstSteps);
     result = detail::solve_mixed_film_on_grid(
-        op, gap, dry, conditions, laws, first, &*coarse_start,
+        op, gap, keep, conditions, laws, first, &*coarse_start,
         grid.size() <= kTryingNodes ? detail::MixedStartUse::try_only : detail::MixedStartUse::try_until_short);
   }
   int steps = result.iterations, krylov = result.krylov_iterations;
@@ -241,14 +241,14 @@ MixedFilm solve_sequenced(InfluenceOperator& op, const Eigen::ArrayXd& gap, deta
   const bool answer = effort == SolveEffort::answer;
   for (double faster = kSequencedSpeedUp; answer && !result.converged() && faster <= kSequencedFastest;
        faster *= kSequencedSpeedUp) {
-    const MixedFilm fast = solve_sequenced(op, gap, dry, detail::at_speed_factor(conditions, faster), laws, options,
+    const MixedFilm fast = solve_sequenced(op, gap, keep, detail::at_speed_factor(conditions, faster), laws, options,
                                            nullptr, SolveEffort::start);
     steps += fast.iterations;
     krylov += fast.krylov_iterations;
     record.coarse_iterations += fast.coarse_iterations;
     record.coarse_krylov_iterations += fast.coarse_krylov_iterations;
     if (!fast.converged()) continue;
-    result = detail::solve_mixed_film_on_grid(op, gap, dry, conditions, laws, options, &fast,
+    result = detail::solve_mixed_film_on_grid(op, gap, keep, conditions, laws, options, &fast,
                                               detail::MixedStartUse::continue_only);
     steps += result.iterations;
     krylov += result.krylov_iterations;
@@ -257,7 +257,7 @@ MixedFilm solve_sequenced(InfluenceOperator& op, const Eigen::ArrayXd& gap, deta
   }
   if (!result.converged() && answer && grid.size() <= kMaxMixedColdRestartNodes) {
     // The last resort on small grids: the cold start with its continuations.
-    result = detail::solve_mixed_film_on_grid(op, gap, dry, conditions, laws, options, nullptr);
+    result = detail::solve_mixed_film_on_grid(op, gap, keep, conditions, laws, options, nullptr);
     steps += result.iterations;
     krylov += result.krylov_iterations;
     result.sequencing_fell_back = true;
@@ -277,18 +277,18 @@ MixedFilm solve_sequenced(InfluenceOperator& op, const Eigen::ArrayXd& gap, deta
 
 }  // namespace
 
-MixedFilm detail::solve_mixed_film(InfluenceOperator& op, const Eigen::ArrayXd& gap, DryContactMemo& dry,
+MixedFilm detail::solve_mixed_film(InfluenceOperator& op, const Eigen::ArrayXd& gap, MixedFilmKeep& keep,
                                    const FlowConditions& conditions, const LubricantLaws& laws,
                                    const MixedFilmOptions& options, const MixedFilm* start) {
   const auto started = std::chrono::steady_clock::now();
-  MixedFilm film = solve_sequenced(op, gap, dry, conditions, laws, options, start, SolveEffort::answer);
+  MixedFilm film = solve_sequenced(op, gap, keep, conditions, laws, options, start, SolveEffort::answer);
   // A point contact that failed with the look-ahead's steps as they come:
   // again with checked steps (MixedFilmOptions::checked_step_branches), its
   // coarser grids too. Both solves' work is counted.
   if (film.converged() || options.checked_step_branches || op.grid().dimension() != 2) return film;
   MixedFilmOptions checked = options;
   checked.checked_step_branches = true;
-  MixedFilm again = solve_sequenced(op, gap, dry, conditions, laws, checked, start, SolveEffort::answer);
+  MixedFilm again = solve_sequenced(op, gap, keep, conditions, laws, checked, start, SolveEffort::answer);
   add_earlier_work(again, film);
   if (!again.converged()) {
     again.message =
@@ -300,9 +300,9 @@ MixedFilm detail::solve_mixed_film(InfluenceOperator& op, const Eigen::ArrayXd& 
 
 MixedFilm solve_mixed_film(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowConditions& conditions,
                            const LubricantLaws& laws, const MixedFilmOptions& options, const MixedFilm* start) {
-  // Every grid's dry contact, solved once for all its solves.
-  detail::DryContactMemo dry;
-  return detail::solve_mixed_film(op, gap, dry, conditions, laws, options, start);
+  // Every grid's dry contact solved once for all its solves, one GMRES basis.
+  detail::MixedFilmKeep keep;
+  return detail::solve_mixed_film(op, gap, keep, conditions, laws, options, start);
 }
 
 }  // namespace halfspace::lubrication

@@ -5,9 +5,9 @@
 
 #include <Eigen/Core>
 
-#include "dry_contact_memo.hpp"
 #include "halfspace/lubrication/mixed_film.hpp"
 #include "halfspace/operators/influence_operator.hpp"
+#include "mixed_film_keep.hpp"
 
 namespace halfspace::lubrication::detail {
 
@@ -24,17 +24,18 @@ namespace halfspace::lubrication::detail {
 // start_norm_share = kStartNormShare).
 enum class MixedStartUse { solve_then_continue, solve_only, try_only, try_until_short, continue_only, solve_as_start };
 
-// solve_mixed_film with each grid's dry contact kept in `dry`: a Stribeck
-// sweep's points share it.
-MixedFilm solve_mixed_film(InfluenceOperator& op, const Eigen::ArrayXd& gap, DryContactMemo& dry,
+// solve_mixed_film with what its solves keep in `keep` (mixed_film_keep.hpp):
+// a Stribeck sweep's points share it.
+MixedFilm solve_mixed_film(InfluenceOperator& op, const Eigen::ArrayXd& gap, MixedFilmKeep& keep,
                            const FlowConditions& conditions, const LubricantLaws& laws, const MixedFilmOptions& options,
                            const MixedFilm* start = nullptr);
 
 // The mixed film on the operator's grid alone (no coarser grid): the Newton
 // iteration from `start` or the standard starts (mixed_film.cpp) and the
 // continuations, as `use` says. Each Newton solve takes its dry contact
-// from `dry` (solved there once for the grid and loading).
-MixedFilm solve_mixed_film_on_grid(InfluenceOperator& op, const Eigen::ArrayXd& gap, DryContactMemo& dry,
+// (solved there once for the grid and loading) and its GMRES basis from
+// `keep`.
+MixedFilm solve_mixed_film_on_grid(InfluenceOperator& op, const Eigen::ArrayXd& gap, MixedFilmKeep& keep,
                                    const FlowConditions& conditions, const LubricantLaws& laws,
                                    const MixedFilmOptions& options, const MixedFilm* start,
                                    MixedStartUse use = MixedStartUse::solve_then_continue);
@@ -44,7 +45,7 @@ MixedFilm solve_mixed_film_on_grid(InfluenceOperator& op, const Eigen::ArrayXd& 
 // the smoothing followed down to the film itself; where a plain Newton
 // iteration stalls in the transition between the full film and the
 // contact.
-MixedFilm solve_mixed_film_smoothed(InfluenceOperator& op, const Eigen::ArrayXd& gap, DryContactMemo& dry,
+MixedFilm solve_mixed_film_smoothed(InfluenceOperator& op, const Eigen::ArrayXd& gap, MixedFilmKeep& keep,
                                     const FlowConditions& conditions, const LubricantLaws& laws,
                                     const MixedFilmOptions& options, const MixedFilm& start);
 

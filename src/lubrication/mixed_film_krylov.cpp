@@ -68,7 +68,8 @@ double mixed_krylov_memory_estimate(std::size_t nodes, const MixedKrylovSettings
 }
 
 MixedKrylovSolver::MixedKrylovSolver(InfluenceOperator& op, const ReynoldsStencil& topology,
-                                     const MixedKrylovSettings& settings, bool load_control, const FilmSlab& slab)
+                                     const MixedKrylovSettings& settings, bool load_control, const FilmSlab& slab,
+                                     ArnoldiStorage* arnoldi)
     : op_(op),
       topology_(topology),
       settings_(settings),
@@ -94,8 +95,9 @@ MixedKrylovSolver::MixedKrylovSolver(InfluenceOperator& op, const ReynoldsStenci
     v_stencil_.setZero(stencil);
     deflection_stencil_.setZero(stencil);
   }
-  krylov_.setup(m_, 2 * ni, settings_.restart,
-                [this](const Eigen::VectorXd& in, Eigen::VectorXd& out) { apply_preconditioner(in, out); });
+  krylov_.setup(
+      m_, 2 * ni, settings_.restart,
+      [this](const Eigen::VectorXd& in, Eigen::VectorXd& out) { apply_preconditioner(in, out); }, arnoldi);
   krylov_.distribute(slab.krylov_distribution());
   if (settings_.preconditioner != KrylovPreconditioner::multigrid) {
     preconditioner_ = make_film_preconditioner(KrylovPreconditioner::sparse_lu, op.grid(), 0);

@@ -71,8 +71,9 @@ class MixedKrylovSolver {
   // restricted additive Schwarz one, as the EHL film's
   // (film_krylov_solver.hpp), and the sparse LU is refused (InputError).
   // Collective on several processes, as solve is.
+  // The GMRES basis lives in `arnoldi` where given (kept across solvers).
   MixedKrylovSolver(InfluenceOperator& op, const ReynoldsStencil& topology, const MixedKrylovSettings& settings,
-                    bool load_control, const FilmSlab& slab);
+                    bool load_control, const FilmSlab& slab, ArnoldiStorage* arnoldi = nullptr);
 
   // K_00: a cell's displacement under unit pressure on itself.
   double self_influence() const { return local_.self(); }

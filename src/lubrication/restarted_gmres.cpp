@@ -9,13 +9,27 @@
 #include <cmath>
 #include <initializer_list>
 #include <limits>
+#include <memory>
+#include <new>
 #include <utility>
 
 namespace halfspace::lubrication::detail {
 
-void RestartedGmres::resize(Eigen::Index size, int restart) {
+double* ArnoldiStorage::reserve(std::size_t values) {
+  if (values > capacity_) {
+    data_.reset();  // the old pages go before the new ones come
+    data_ = std::make_unique_for_overwrite<double[]>(values);
+    capacity_ = values;
+  }
+  return data_.get();
+}
+
+void RestartedGmres::resize(Eigen::Index size, int restart, ArnoldiStorage* storage) {
   restart_ = restart;
-  basis_.resize(size, restart + 1);
+  ArnoldiStorage& held = storage != nullptr ? *storage : own_basis_;
+  // Re-seating a Map (Eigen's documented placement new).
+  new (&basis_)
+      Eigen::Map<Eigen::MatrixXd>(held.reserve(static_cast<std::size_t>(size) * (restart + 1)), size, restart + 1);
   hessenberg_.resize(restart + 1, restart);
   givens_c_.resize(restart);
   givens_s_.resize(restart);
@@ -96,8 +110,9 @@ int RestartedGmres::solve(const Apply& apply, const Apply& precondition, const E
   return iterations;
 }
 
-void KrylovNewtonStep::setup(Eigen::Index size, Eigen::Index sparse_rows, int restart, Apply inverse) {
-  gmres_.resize(size, restart);
+void KrylovNewtonStep::setup(Eigen::Index size, Eigen::Index sparse_rows, int restart, Apply inverse,
+                             ArnoldiStorage* storage) {
+  gmres_.resize(size, restart, storage);
   inverse_ = std::move(inverse);
   bordered_ = size == sparse_rows + 1;
   for (Eigen::VectorXd* v : {&border_column, &load_row, &border_solved_, &head_in_, &head_out_}) v->resize(sparse_rows);

@@ -6,7 +6,9 @@
 
 #include <Eigen/Core>
 #include <algorithm>
+#include <cstddef>
 #include <functional>
+#include <memory>
 #include <string>
 #include <utility>
 
@@ -32,14 +34,31 @@ struct KrylovDistribution {
   bool spread() const { return static_cast<bool>(sum); }
 };
 
+// Storage for a GMRES basis that outlives one solver: the mixed film makes
+// a solver per Newton solve, and a basis made afresh each time (up to 1.7 GB
+// at 1024^2) is paged in afresh, one page fault per 4 kB on first touch; on
+// the measured window at 1024^2 those faults were about 7 % of the run
+// (docs/development-log.md, 2026-12-04, forty-fifth session). It grows to
+// the largest basis asked for and leaves its values uninitialised.
+class ArnoldiStorage {
+ public:
+  // At least `values` doubles, their contents unspecified.
+  double* reserve(std::size_t values);
+
+ private:
+  std::unique_ptr<double[]> data_;
+  std::size_t capacity_ = 0;
+};
+
 class RestartedGmres {
  public:
   // out = A v, or out = M^-1 v (out never aliases v).
   using Apply = std::function<void(const Eigen::VectorXd& v, Eigen::VectorXd& out)>;
 
   // Workspace for systems of `size` unknowns and a basis of `restart`
-  // vectors (made once; solve allocates nothing).
-  void resize(Eigen::Index size, int restart);
+  // vectors (made once; solve allocates nothing), the basis in `storage`
+  // where given (which must outlive the solver's solves), else its own.
+  void resize(Eigen::Index size, int restart, ArnoldiStorage* storage = nullptr);
 
   // Solves A x = -residual (the Newton step of `residual`) from x = 0 (or,
   // with `warm`, from the x given: a branch pass's step from the last
@@ -65,7 +84,10 @@ class RestartedGmres {
   KrylovDistribution distribution_;
   Eigen::Index replicated_ = 0;
   int restart_ = 0;
-  Eigen::MatrixXd basis_, hessenberg_;
+  ArnoldiStorage own_basis_;
+  // size x (restart + 1), in own_basis_ or the storage lent to resize.
+  Eigen::Map<Eigen::MatrixXd> basis_{nullptr, 0, 0};
+  Eigen::MatrixXd hessenberg_;
   Eigen::VectorXd givens_c_, givens_s_, g_, y_, work_, preconditioned_;
 };
 
@@ -139,8 +161,10 @@ class KrylovNewtonStep {
   };
 
   // Systems of `size` unknowns, B of `sparse_rows` rows (bordered when
-  // size = sparse_rows + 1), a GMRES(restart) basis and M (`inverse`).
-  void setup(Eigen::Index size, Eigen::Index sparse_rows, int restart, Apply inverse);
+  // size = sparse_rows + 1), a GMRES(restart) basis (in `storage` where
+  // given, RestartedGmres::resize) and M (`inverse`).
+  void setup(Eigen::Index size, Eigen::Index sparse_rows, int restart, Apply inverse,
+             ArnoldiStorage* storage = nullptr);
 
   // c and l, the caller's to set before factorise_border.
   Eigen::VectorXd border_column, load_row;

@@ -55,8 +55,9 @@ void sweep_run(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowCondi
                std::size_t first, std::size_t end, std::vector<StribeckPoint>& points) {
   const std::array<double, 2>& u = conditions.entrainment_velocity;
   const double speed = std::hypot(u[0], u[1]);
-  // The grids' dry contacts, the same at every speed: solved once.
-  detail::DryContactMemo dry;
+  // The grids' dry contacts, the same at every speed, solved once; one
+  // GMRES basis.
+  detail::MixedFilmKeep keep;
   for (std::size_t k = first; k < end; ++k) {
     const double s = speeds[k];
     StribeckPoint& point = points[k];
@@ -64,9 +65,9 @@ void sweep_run(InfluenceOperator& op, const Eigen::ArrayXd& gap, const FlowCondi
     point.hersey_number = hersey_number(op.grid(), conditions, options, s);
     const MixedFilm* previous = k > first && points[k - 1].film.converged() ? &points[k - 1].film : nullptr;
     const FlowConditions at = detail::at_speed_factor(conditions, s / speed);
-    point.film = detail::solve_mixed_film(op, gap, dry, at, laws, options, previous);
+    point.film = detail::solve_mixed_film(op, gap, keep, at, laws, options, previous);
     if (point.film.converged() || previous == nullptr) continue;
-    MixedFilm alone = detail::solve_mixed_film(op, gap, dry, at, laws, options);
+    MixedFilm alone = detail::solve_mixed_film(op, gap, keep, at, laws, options);
     alone.iterations += point.film.iterations;
     alone.krylov_iterations += point.film.krylov_iterations;
     if (!alone.converged()) alone.message = point.film.message + "; solved alone: " + alone.message;

@@ -491,18 +491,18 @@ TEST(MixedFilmKrylovTest, ShortGmresStepsStillDescendToTheFilm) {
 TEST(MixedFilmKrylovTest, TriesEndAtTheirFirstShortGmresStep) {
   const RoughContact point = rough_point(13, 0.2e-6);
   FftInfluenceOperator op(point.grid, kEStar);
-  detail::DryContactMemo dry;
+  detail::MixedFilmKeep keep;
   const MixedFilmOptions full = options_for(kPointLoad, FilmLinearSolve::gmres);
   MixedFilmOptions short_gmres = full;
   short_gmres.krylov_max_iterations = 1;
   const MixedFilm faster = solve_mixed_film(op, point.gap, flow(64.0 * kMixedSpeed), laws(), full);
   ASSERT_TRUE(faster.converged()) << faster.message;
-  const MixedFilm solved = detail::solve_mixed_film_on_grid(op, point.gap, dry, flow(kMixedSpeed), laws(), short_gmres,
+  const MixedFilm solved = detail::solve_mixed_film_on_grid(op, point.gap, keep, flow(kMixedSpeed), laws(), short_gmres,
                                                             &faster, detail::MixedStartUse::solve_only);
   EXPECT_GT(solved.iterations, 10) << solved.message;
   for (const detail::MixedStartUse use : {detail::MixedStartUse::try_until_short, detail::MixedStartUse::try_only}) {
     const MixedFilm tried =
-        detail::solve_mixed_film_on_grid(op, point.gap, dry, flow(kMixedSpeed), laws(), short_gmres, &faster, use);
+        detail::solve_mixed_film_on_grid(op, point.gap, keep, flow(kMixedSpeed), laws(), short_gmres, &faster, use);
     EXPECT_FALSE(tried.converged());
     EXPECT_LT(2 * tried.iterations, solved.iterations);
     EXPECT_NE(tried.message.find("GMRES reached a relative residual"), std::string::npos) << tried.message;
@@ -536,15 +536,15 @@ TEST(MixedFilmKrylovTest, SmoothedContactRowsEndAtThePlainFilm) {
     SCOPED_TRACE(::testing::Message() << "linear solve " << static_cast<int>(c.solve) << ", preconditioner "
                                       << static_cast<int>(c.preconditioner));
     FftInfluenceOperator op(c.contact.grid, kEStar);
-    detail::DryContactMemo dry;
+    detail::MixedFilmKeep keep;
     MixedFilmOptions options = options_for(c.load, c.solve);
     options.preconditioner = c.preconditioner;
     const MixedFilm faster = solve_mixed_film(op, c.contact.gap, flow(4.0 * c.speed), laws(), options);
     ASSERT_TRUE(faster.converged()) << faster.message;
-    const MixedFilm plain = detail::solve_mixed_film_on_grid(op, c.contact.gap, dry, flow(c.speed), laws(), options,
+    const MixedFilm plain = detail::solve_mixed_film_on_grid(op, c.contact.gap, keep, flow(c.speed), laws(), options,
                                                              &faster, detail::MixedStartUse::solve_only);
     const MixedFilm smoothed =
-        detail::solve_mixed_film_smoothed(op, c.contact.gap, dry, flow(c.speed), laws(), options, faster);
+        detail::solve_mixed_film_smoothed(op, c.contact.gap, keep, flow(c.speed), laws(), options, faster);
     ASSERT_TRUE(plain.converged()) << plain.message;
     ASSERT_TRUE(smoothed.converged()) << smoothed.message;
     EXPECT_EQ(smoothed.used_krylov, c.solve == FilmLinearSolve::gmres);
@@ -569,7 +569,7 @@ TEST(MixedFilmKrylovTest, SmoothedContactRowsEndAtThePlainFilm) {
 TEST(MixedFilmKrylovTest, SmoothedRowsGetPastAStalledContinuation) {
   const RoughContact point = rough_point(17, 0.1e-6);
   FftInfluenceOperator op(point.grid, kEStar);
-  detail::DryContactMemo dry;
+  detail::MixedFilmKeep keep;
   const MixedFilmOptions rescued = options_for(kPointLoad, FilmLinearSolve::automatic);
   EXPECT_TRUE(rescued.smoothed_rescue);
   MixedFilmOptions plain = rescued;
@@ -579,7 +579,7 @@ TEST(MixedFilmKrylovTest, SmoothedRowsGetPastAStalledContinuation) {
   ASSERT_TRUE(slower.converged()) << slower.message;
   ASSERT_TRUE(faster.converged()) << faster.message;
   const auto on_grid = [&](const MixedFilmOptions& options) {
-    return detail::solve_mixed_film_on_grid(op, point.gap, dry, flow(1e-3), laws(), options, &slower,
+    return detail::solve_mixed_film_on_grid(op, point.gap, keep, flow(1e-3), laws(), options, &slower,
                                             detail::MixedStartUse::solve_then_continue);
   };
   const MixedFilm stalled = on_grid(plain);
@@ -632,7 +632,7 @@ TEST(MixedFilmKrylovTest, SweepPointFromTheLastFilmIsTheFilmFromAbove) {
 TEST(MixedFilmKrylovTest, FullFilmContinuationStepsAreTheSquareRootOfTwo) {
   const RoughContact point = rough_point(13, 0.05e-6);
   FftInfluenceOperator op(point.grid, kEStar);
-  detail::DryContactMemo dry;
+  detail::MixedFilmKeep keep;
   const double speed = 4.0 * kMixedSpeed;
   MixedFilmOptions options = options_for(kPointLoad, FilmLinearSolve::gmres);
   const MixedFilm faster = solve_mixed_film(op, point.gap, flow(4.0 * speed), laws(), options);
@@ -640,14 +640,14 @@ TEST(MixedFilmKrylovTest, FullFilmContinuationStepsAreTheSquareRootOfTwo) {
   ASSERT_EQ(faster.contact_load_fraction, 0.0);
   std::vector<MixedSolveRecord> records;
   options.trace = [&](const MixedSolveRecord& record) { records.push_back(record); };
-  const MixedFilm f = detail::solve_mixed_film_on_grid(op, point.gap, dry, flow(speed), laws(), options, &faster,
+  const MixedFilm f = detail::solve_mixed_film_on_grid(op, point.gap, keep, flow(speed), laws(), options, &faster,
                                                        detail::MixedStartUse::continue_only);
   ASSERT_TRUE(f.converged()) << f.message;
   EXPECT_EQ(f.contact_load_fraction, 0.0);
   const std::vector<double> expected{4.0 / std::numbers::sqrt2, 2.0, std::numbers::sqrt2, 1.0};
   ASSERT_EQ(records.size(), expected.size());
   // The dry contact that scales each solve is the grid's, solved once.
-  EXPECT_EQ(dry.solves(), 1);
+  EXPECT_EQ(keep.dry.solves(), 1);
   bool stopped_early = false;
   for (std::size_t k = 0; k < expected.size(); ++k) {
     EXPECT_NEAR(records[k].entrainment_speed / speed, expected[k], 1e-12) << "solve " << k;
@@ -673,7 +673,7 @@ TEST(MixedFilmKrylovTest, FullFilmContinuationStepsAreTheSquareRootOfTwo) {
 TEST(MixedFilmKrylovTest, MixedRegimeFilmsBetweenAreSolvedToTheTolerance) {
   const RoughContact point = rough_point(17, 0.2e-6);
   FftInfluenceOperator op(point.grid, kEStar);
-  detail::DryContactMemo dry;
+  detail::MixedFilmKeep keep;
   MixedFilmOptions options = options_for(kPointLoad, FilmLinearSolve::gmres);
   options.smoothed_rescue = false;
   const MixedFilm faster = solve_mixed_film(op, point.gap, flow(3e-3), laws(), options);
@@ -681,7 +681,7 @@ TEST(MixedFilmKrylovTest, MixedRegimeFilmsBetweenAreSolvedToTheTolerance) {
   ASSERT_GT(faster.contact_load_fraction, 0.0);
   std::vector<MixedSolveRecord> records;
   options.trace = [&](const MixedSolveRecord& record) { records.push_back(record); };
-  const MixedFilm f = detail::solve_mixed_film_on_grid(op, point.gap, dry, flow(1e-3), laws(), options, &faster,
+  const MixedFilm f = detail::solve_mixed_film_on_grid(op, point.gap, keep, flow(1e-3), laws(), options, &faster,
                                                        detail::MixedStartUse::continue_only);
   ASSERT_TRUE(f.converged()) << f.message;
   ASSERT_GE(records.size(), 2U);

@@ -66,5 +66,35 @@ TEST(RestartedGmresTest, ReachesTheToleranceWithTheSameBitsOnAnyThreads) {
   EXPECT_EQ((x1 - x2).cwiseAbs().maxCoeff(), 0.0);
 }
 
+// A basis in lent storage (ArnoldiStorage, kept across solvers as the mixed
+// film keeps it across its Newton solves): the same iterates as the
+// solver's own basis, storage left dirty by a larger solve, and the storage
+// grown only for a larger basis.
+TEST(RestartedGmresTest, LentBasisStorageGivesTheSameIterates) {
+  constexpr double tolerance = 1e-8;
+  const auto solve = [&](Eigen::Index n, ArnoldiStorage* storage, Eigen::VectorXd& x) {
+    const Bidiagonal a{n, 1.0, 3.0, 0.8};
+    const auto jacobi = [&](const Eigen::VectorXd& v, Eigen::VectorXd& out) {
+      for (Eigen::Index i = 0; i < n; ++i) out[i] = v[i] / a.d(i);
+    };
+    RestartedGmres gmres;
+    gmres.resize(n, 30, storage);
+    const int iterations = gmres.solve(a, jacobi, smooth_load(n), tolerance, 1000, x);
+    EXPECT_LE(measured_residual(a, x, smooth_load(n)), 10.0 * tolerance);
+    return iterations;
+  };
+  ArnoldiStorage storage;
+  Eigen::VectorXd own_large(4000), lent_large(4000), own_small(1000), lent_small(1000);
+  const int own_large_its = solve(4000, nullptr, own_large);
+  EXPECT_EQ(solve(4000, &storage, lent_large), own_large_its);
+  EXPECT_EQ((own_large - lent_large).cwiseAbs().maxCoeff(), 0.0);
+  const double* large_basis = storage.reserve(1);
+  const int own_small_its = solve(1000, nullptr, own_small);
+  EXPECT_EQ(solve(1000, &storage, lent_small), own_small_its);
+  EXPECT_EQ((own_small - lent_small).cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_EQ(storage.reserve(4000 * 31), large_basis);
+  EXPECT_NE(storage.reserve(4000 * 31 + 1), nullptr);
+}
+
 }  // namespace
 }  // namespace halfspace::lubrication::detail

@@ -151,9 +151,9 @@ void check(const Case& c, double total_load, const mpi::MpiCommunicator& comm, d
     return slower;
   };
   FftInfluenceOperator serial_op(c.grid, kEStar);
-  detail::DryContactMemo serial_dry;
+  detail::MixedFilmKeep serial_keep;
   const MixedFilm serial = smoothed ? detail::solve_mixed_film_smoothed(
-                                          serial_op, c.gap, serial_dry, c.conditions, laws, options,
+                                          serial_op, c.gap, serial_keep, c.conditions, laws, options,
                                           solve_mixed_film(serial_op, c.gap, start_conditions(), laws, options))
                                     : solve_mixed_film(serial_op, c.gap, c.conditions, laws, options);
 
@@ -164,9 +164,9 @@ void check(const Case& c, double total_load, const mpi::MpiCommunicator& comm, d
   const auto begin = static_cast<Eigen::Index>(layout.first_row * c.grid.nx());
   const auto n = static_cast<Eigen::Index>(own);
   const Eigen::ArrayXd gap = c.gap.segment(begin, n);
-  detail::DryContactMemo slab_dry;
+  detail::MixedFilmKeep slab_keep;
   const MixedFilm slabs =
-      smoothed ? detail::solve_mixed_film_smoothed(slab_op, gap, slab_dry, c.conditions, laws, options,
+      smoothed ? detail::solve_mixed_film_smoothed(slab_op, gap, slab_keep, c.conditions, laws, options,
                                                    solve_mixed_film(slab_op, gap, start_conditions(), laws, options))
                : solve_mixed_film(slab_op, gap, c.conditions, laws, options);
 
