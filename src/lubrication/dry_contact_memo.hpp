@@ -2,10 +2,11 @@
 // scales from (mixed_film.cpp: the pressure, its peak, the approach): the
 // same for every solve on one grid at one loading, and a grid's speed
 // continuation makes up to one solve per step, so it is solved once per
-// grid and loading and kept through one solve_mixed_film call. On the
-// measured window at 1024^2 the free grid's Polonsky–Keer solve took 7 to
-// 8 s of every continuation step (docs/development-log.md, 2026-12-04,
-// forty-fifth session). Private to the library.
+// grid and loading and kept through one solve_mixed_film call or Stribeck
+// sweep (mixed_film_keep.hpp). On the measured window at 1024^2 the free
+// grid's Polonsky–Keer solve took 7 to 8 s of every continuation step
+// (docs/development-log.md, 2026-12-04, forty-fifth session). Private to
+// the library.
 #pragma once
 
 #include <Eigen/Core>

@@ -37,8 +37,9 @@ struct KrylovDistribution {
 // Storage for a GMRES basis that outlives one solver: the mixed film makes
 // a solver per Newton solve, and a basis made afresh each time (up to 1.7 GB
 // at 1024^2) is paged in afresh, one page fault per 4 kB on first touch; on
-// the measured window at 1024^2 those faults were about 7 % of the run
-// (docs/development-log.md, 2026-12-04, forty-fifth session). It grows to
+// the measured window at 1024^2 the kernel's zeroing of those pages was
+// 6.5 % of a profile's samples (docs/development-log.md, 2026-12-04,
+// forty-fifth session). It grows to
 // the largest basis asked for and leaves its values uninitialised.
 class ArnoldiStorage {
  public:
