@@ -39,8 +39,8 @@ struct KrylovDistribution {
 // at 1024^2) is paged in afresh, one page fault per 4 kB on first touch; on
 // the measured window at 1024^2 the kernel's zeroing of those pages was
 // 6.5 % of a profile's samples (docs/development-log.md, 2026-12-04,
-// forty-fifth session). It grows to
-// the largest basis asked for and leaves its values uninitialised.
+// forty-fifth session). It grows to the largest basis asked for and leaves
+// its values uninitialised.
 class ArnoldiStorage {
  public:
   // At least `values` doubles, their contents unspecified.
@@ -55,6 +55,12 @@ class RestartedGmres {
  public:
   // out = A v, or out = M^-1 v (out never aliases v).
   using Apply = std::function<void(const Eigen::VectorXd& v, Eigen::VectorXd& out)>;
+
+  // Not copied or moved: basis_ views storage, and a Map's assignment
+  // copies values instead of re-seating the view.
+  RestartedGmres() = default;
+  RestartedGmres(const RestartedGmres&) = delete;
+  RestartedGmres& operator=(const RestartedGmres&) = delete;
 
   // Workspace for systems of `size` unknowns and a basis of `restart`
   // vectors (made once; solve allocates nothing), the basis in `storage`

@@ -69,7 +69,7 @@ TEST(RestartedGmresTest, ReachesTheToleranceWithTheSameBitsOnAnyThreads) {
 // A basis in lent storage (ArnoldiStorage, kept across solvers as the mixed
 // film keeps it across its Newton solves): the same iterates as the
 // solver's own basis, storage left dirty by a larger solve, and the storage
-// grown only for a larger basis.
+// not made anew for a basis it holds.
 TEST(RestartedGmresTest, LentBasisStorageGivesTheSameIterates) {
   constexpr double tolerance = 1e-8;
   const auto solve = [&](Eigen::Index n, ArnoldiStorage* storage, Eigen::VectorXd& x) {
@@ -93,7 +93,6 @@ TEST(RestartedGmresTest, LentBasisStorageGivesTheSameIterates) {
   EXPECT_EQ(solve(1000, &storage, lent_small), own_small_its);
   EXPECT_EQ((own_small - lent_small).cwiseAbs().maxCoeff(), 0.0);
   EXPECT_EQ(storage.reserve(4000 * 31), large_basis);
-  EXPECT_NE(storage.reserve(4000 * 31 + 1), nullptr);
 }
 
 }  // namespace
