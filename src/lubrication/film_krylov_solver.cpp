@@ -138,8 +138,9 @@ void FilmKrylovSolver::apply_preconditioner(const Eigen::VectorXd& in, Eigen::Ve
 
 bool FilmKrylovSolver::factorise(std::string& message) {
   // Rows in compressed form, each row's entries gathered, sorted and
-  // summed. Every entry of the pattern is kept, zero or not, so that the
-  // pattern is the same at every Newton step (the LU analyses it once).
+  // summed, on all threads (csr_rows_in_runs.hpp). Every entry of the
+  // pattern is kept, zero or not, so that the pattern is the same at every
+  // Newton step (the LU analyses it once).
   // On several processes the columns are whole-grid nodes (the block's
   // rows are then gathered: gather_block_rows), and K's neighbourhood is
   // kept where it lies in the stencil.
@@ -147,30 +148,27 @@ bool FilmKrylovSolver::factorise(std::string& message) {
   const auto column_of = [&](std::size_t stencil_node) {
     return static_cast<int>(spread ? slab_.whole_node(stencil_node) : stencil_node);
   };
-  matrix_.clear();
-  for (std::size_t k = 0; k < n_; ++k) {
+  gather_rows_in_runs(matrix_, n_, row_runs_, row_count_, [&](std::size_t k, std::vector<std::pair<int, double>>& row) {
     const auto kk = static_cast<Eigen::Index>(k);
     krylov_.border_column[kk] = 0.0;
-    row_scratch_.clear();
     if (topology_.fixed(first_ + k)) {
-      row_scratch_.emplace_back(column_of(first_ + k), 1.0);
-    } else {
-      for (std::size_t t = rows_->start[k]; t < rows_->start[k + 1]; ++t) {
-        const LocalTerm& term = rows_->terms[t];
-        const auto j = static_cast<Eigen::Index>(term.node);
-        row_scratch_.emplace_back(column_of(term.node),
-                                  (term.by_pressure * dp_ds_[j] + term.by_fraction * dtheta_ds_[j]) / mass_scale_);
-        krylov_.border_column[kk] += term.by_film / mass_scale_;
-        local_.for_each(slab_.whole_node(term.node), [&](std::size_t m, double k_value) {
-          const std::size_t at = slab_.stencil_node(m);
-          if (at == FilmSlab::kOutside) return;
-          row_scratch_.emplace_back(static_cast<int>(m),
-                                    term.by_film / mass_scale_ * k_value * dp_ds_[static_cast<Eigen::Index>(at)]);
-        });
-      }
+      row.emplace_back(column_of(first_ + k), 1.0);
+      return;
     }
-    matrix_.append_row(row_scratch_);
-  }
+    for (std::size_t t = rows_->start[k]; t < rows_->start[k + 1]; ++t) {
+      const LocalTerm& term = rows_->terms[t];
+      const auto j = static_cast<Eigen::Index>(term.node);
+      row.emplace_back(column_of(term.node),
+                       (term.by_pressure * dp_ds_[j] + term.by_fraction * dtheta_ds_[j]) / mass_scale_);
+      krylov_.border_column[kk] += term.by_film / mass_scale_;
+      local_.for_each(slab_.whole_node(term.node), [&](std::size_t m, double k_value) {
+        const std::size_t at = slab_.stencil_node(m);
+        if (at == FilmSlab::kOutside) return;
+        row.emplace_back(static_cast<int>(m),
+                         term.by_film / mass_scale_ * k_value * dp_ds_[static_cast<Eigen::Index>(at)]);
+      });
+    }
+  });
   if (spread) slab_.gather_rows(matrix_, below_, above_, block_, block_scratch_);
   const bool factorised = preconditioner_->factorise(spread ? block_ : matrix_, message);
   if (!slab_.all(factorised)) {

@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "csr_rows_in_runs.hpp"
 #include "film_preconditioner.hpp"
 #include "film_slab.hpp"
 #include "halfspace/lubrication/reynolds_stencil.hpp"
@@ -100,7 +101,8 @@ class FilmKrylovSolver {
   // The preconditioner: B (the n x n sparse part) bordered by the h0
   // column and the load row, solved through M ~ B^-1 and M c.
   CsrMatrix matrix_;
-  std::vector<std::pair<int, double>> row_scratch_;
+  std::vector<GatheredRowRun> row_runs_;  // the rows being built, per thread
+  std::vector<int> row_count_;
   std::unique_ptr<FilmPreconditioner> preconditioner_;
   // On several processes: the overlap's rows below and above, the block's
   // matrix (FilmSlab::gather_rows) and vectors.

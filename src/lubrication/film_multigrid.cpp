@@ -18,6 +18,7 @@
 #include <span>
 
 #include "banded_lu.hpp"
+#include "csr_rows_in_runs.hpp"
 #include "halfspace/linalg/parallel.hpp"
 
 namespace halfspace::lubrication::detail {
@@ -246,46 +247,6 @@ void FilmMultigrid::find_fixed(Level& level) {
   level.fixed.assign(a.rows, 0);
   for (std::size_t i = 0; i < a.rows; ++i) {
     level.fixed[i] = a.start[i + 1] - a.start[i] == 1 && a.column[a.start[i]] == static_cast<int>(i) ? 1 : 0;
-  }
-}
-
-// Rows [0, out.rows) of `out` made by row(scratch, r, columns, values) on
-// `team` threads: each thread builds a contiguous run of rows, and the runs
-// are joined in order, so the matrix is the same whatever the thread count.
-// The first run goes straight into the matrix (it starts at 0): one thread
-// holds no second copy.
-template <class Scratch, class Row>
-void build_rows_in_runs(CsrMatrix& out, int team, std::vector<Scratch>& scratches, std::vector<int>& row_count,
-                        Row&& row) {
-  out.start.resize(out.rows + 1);
-  row_count.resize(out.rows);
-#pragma omp parallel num_threads(team)
-  {
-    const auto t = static_cast<std::size_t>(omp_get_thread_num());
-    const auto threads = static_cast<std::size_t>(omp_get_num_threads());
-    Scratch& scratch = scratches[t];
-    std::vector<int>& column = t == 0 ? out.column : scratch.column;
-    std::vector<double>& value = t == 0 ? out.value : scratch.value;
-    column.clear();
-    value.clear();
-    const std::size_t begin = out.rows * t / threads, end = out.rows * (t + 1) / threads;
-    for (std::size_t r = begin; r < end; ++r) {
-      const std::size_t before = column.size();
-      row(scratch, r, column, value);
-      row_count[r] = static_cast<int>(column.size() - before);
-    }
-#pragma omp barrier
-#pragma omp single
-    {
-      out.start[0] = 0;
-      for (std::size_t r = 0; r < out.rows; ++r) out.start[r + 1] = out.start[r] + row_count[r];
-      out.column.resize(static_cast<std::size_t>(out.start[out.rows]));
-      out.value.resize(static_cast<std::size_t>(out.start[out.rows]));
-    }
-    if (t > 0) {
-      std::copy(column.begin(), column.end(), out.column.begin() + out.start[begin]);
-      std::copy(value.begin(), value.end(), out.value.begin() + out.start[begin]);
-    }
   }
 }
 

@@ -19,7 +19,7 @@ void CsrMatrix::clear() {
   value.clear();
 }
 
-void CsrMatrix::append_row(std::vector<std::pair<int, double>>& entries) {
+void append_summed(std::vector<std::pair<int, double>>& entries, std::vector<int>& column, std::vector<double>& value) {
   std::sort(entries.begin(), entries.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   for (std::size_t e = 0; e < entries.size(); ++e) {
     if (e > 0 && entries[e].first == entries[e - 1].first) {
@@ -29,6 +29,10 @@ void CsrMatrix::append_row(std::vector<std::pair<int, double>>& entries) {
       value.push_back(entries[e].second);
     }
   }
+}
+
+void CsrMatrix::append_row(std::vector<std::pair<int, double>>& entries) {
+  append_summed(entries, column, value);
   entries.clear();
   ++rows;
   start.push_back(static_cast<int>(column.size()));

@@ -37,6 +37,11 @@ struct CsrMatrix {
   void residual(const Eigen::VectorXd& b, const Eigen::VectorXd& x, Eigen::VectorXd& out) const;
 };
 
+// Appends one row's `entries` (columns in any order, repeated ones summed,
+// every entry kept) to `column` and `value`, columns ascending; sorts
+// `entries`.
+void append_summed(std::vector<std::pair<int, double>>& entries, std::vector<int>& column, std::vector<double>& value);
+
 class FilmPreconditioner {
  public:
   virtual ~FilmPreconditioner() = default;

@@ -30,6 +30,7 @@
 #include <span>
 #include <tuple>
 
+#include "csr_rows_in_runs.hpp"
 #include "halfspace/error.hpp"
 #include "halfspace/linalg/parallel.hpp"
 
@@ -104,13 +105,10 @@ MixedKrylovSolver::MixedKrylovSolver(InfluenceOperator& op, const ReynoldsStenci
     return;
   }
   // K near each own node, in whole-grid columns (it does not change).
-  near_.clear();
-  for (std::size_t k = 0; k < n_; ++k) {
-    local_.for_each(slab.whole_node(first_ + k), [&](std::size_t node, double k_value) {
-      row_scratch_.emplace_back(static_cast<int>(node), k_value);
-    });
-    near_.append_row(row_scratch_);
-  }
+  gather_rows_in_runs(near_, n_, row_runs_, row_count_, [&](std::size_t k, std::vector<std::pair<int, double>>& row) {
+    local_.for_each(slab.whole_node(first_ + k),
+                    [&](std::size_t node, double k_value) { row.emplace_back(static_cast<int>(node), k_value); });
+  });
   const int line_axis = topology.couette_y() > topology.couette_x() ? 1 : 0;
   Grid block_grid = slab.own_grid();
   if (spread) {
@@ -188,27 +186,38 @@ void MixedKrylovSolver::film_change(const Eigen::VectorXd& step, Eigen::VectorXd
   if (scales_.load_control) out.array() += step[2 * ni];
 }
 
-// Mass row k (an own node) of the sparse part into row_scratch_ (the
-// identity on a fixed node): the local terms' d/ds, and each open film
-// term's by_film K around its node through film_entry(whole-grid node,
-// by_film K); with `every_entry` also the zero ones (closed film terms), so
-// that the LU's pattern stays the same at every Newton step. Adds the row's
-// h0 derivative into krylov_.border_column. Columns are whole-grid nodes.
-template <class FilmEntry>
-void MixedKrylovSolver::mass_row(std::size_t k, bool every_entry, FilmEntry&& film_entry) {
+// Mass row k (an own node) of the sparse part: its local terms' d/ds
+// through s_entry(whole-grid node, value) (the identity on a fixed node),
+// and each open film term's by_film K around its node through
+// film_entry(whole-grid node, by_film K); with `every_entry` also the zero
+// ones (closed film terms), so that the LU's pattern stays the same at
+// every Newton step. Called from several threads at once.
+template <class SEntry, class FilmEntry>
+void MixedKrylovSolver::mass_row(std::size_t k, bool every_entry, SEntry&& s_entry, FilmEntry&& film_entry) const {
   if (topology_.fixed(first_ + k)) {
-    row_scratch_.emplace_back(static_cast<int>(slab_.whole_node(first_ + k)), 1.0);
+    s_entry(slab_.whole_node(first_ + k), 1.0);
     return;
   }
   const double mass = scales_.mass;
   for (std::size_t t = rows_->start[k]; t < rows_->start[k + 1]; ++t) {
     const std::size_t whole = slab_.whole_node(static_cast<std::size_t>(term_node_[t]));
-    row_scratch_.emplace_back(static_cast<int>(whole), term_by_s_[t] / mass);
+    s_entry(whole, term_by_s_[t] / mass);
     const double by_film = term_by_deflection_[t] / mass;
-    krylov_.border_column[static_cast<Eigen::Index>(k)] += by_film;
     if (by_film == 0.0 && !every_entry) continue;
     local_.for_each(whole, [&](std::size_t node, double k_value) { film_entry(node, by_film * k_value); });
   }
+}
+
+// The mass rows' h0 derivatives into krylov_.border_column's first n entries.
+void MixedKrylovSolver::mass_rows_border() {
+  const double mass = scales_.mass;
+  linalg::for_each_index(n_, [&](std::size_t k) {
+    double sum = 0.0;
+    if (!topology_.fixed(first_ + k)) {
+      for (std::size_t t = rows_->start[k]; t < rows_->start[k + 1]; ++t) sum += term_by_deflection_[t] / mass;
+    }
+    krylov_.border_column[static_cast<Eigen::Index>(k)] = sum;
+  });
 }
 
 bool MixedKrylovSolver::factorise_block(std::string& message) {
@@ -216,26 +225,27 @@ bool MixedKrylovSolver::factorise_block(std::string& message) {
   const double H = scales_.film;
   const std::vector<char>& closed = *closed_;
   const bool spread = slab_.distributed();
-  krylov_.border_column.setZero();
-  matrix_.clear();
-  film_matrix_.clear();
-  row_scratch_.clear();
-  film_scratch_.clear();
+  mass_rows_border();
   for (std::size_t k = 0; k < n_; ++k) closed_stencil_[static_cast<Eigen::Index>(first_ + k)] = closed[k];
   slab_.exchange(closed_stencil_.data());
   // M takes the film's K on the open cells (through dp/ds), F all of it;
   // on a slab M keeps the cells the stencil holds.
-  for (std::size_t k = 0; k < n_; ++k) {
-    mass_row(k, false, [&](std::size_t node, double entry) {
-      film_scratch_.emplace_back(static_cast<int>(node), entry);
-      const std::size_t at = slab_.stencil_node(node);
-      if (at == FilmSlab::kOutside) return;
-      const auto aa = static_cast<Eigen::Index>(at);
-      if (closed_stencil_[aa] == 0.0) row_scratch_.emplace_back(static_cast<int>(node), entry * dp_ds_[aa]);
-    });
-    matrix_.append_row(row_scratch_);
-    film_matrix_.append_row(film_scratch_);
-  }
+  gather_rows_in_runs(matrix_, n_, row_runs_, row_count_, [&](std::size_t k, std::vector<std::pair<int, double>>& row) {
+    mass_row(
+        k, false, [&](std::size_t node, double entry) { row.emplace_back(static_cast<int>(node), entry); },
+        [&](std::size_t node, double entry) {
+          const std::size_t at = slab_.stencil_node(node);
+          if (at == FilmSlab::kOutside) return;
+          const auto aa = static_cast<Eigen::Index>(at);
+          if (closed_stencil_[aa] == 0.0) row.emplace_back(static_cast<int>(node), entry * dp_ds_[aa]);
+        });
+  });
+  gather_rows_in_runs(film_matrix_, n_, row_runs_, row_count_,
+                      [&](std::size_t k, std::vector<std::pair<int, double>>& row) {
+                        mass_row(
+                            k, false, [](std::size_t, double) {},
+                            [&](std::size_t node, double entry) { row.emplace_back(static_cast<int>(node), entry); });
+                      });
   const bool smoothed = !rows_->contact_by_q.empty();
   for (std::size_t k = 0; k < n_; ++k) {
     const double by_film = smoothed ? rows_->contact_by_film[k] : 1.0;
@@ -291,17 +301,19 @@ bool MixedKrylovSolver::factorise(std::string& message) {
   const auto ni = static_cast<Eigen::Index>(n_);
   const double P = scales_.pressure, H = scales_.film;
   const std::vector<char>& closed = *closed_;
-  krylov_.border_column.setZero();
+  mass_rows_border();
   // Every entry of the pattern is written, zero or not, so that the pattern
   // is the same at every Newton step (branches and contacts change) and is
   // analysed once.
   matrix_.clear();
   row_scratch_.clear();
   for (std::size_t k = 0; k < n_; ++k) {
-    mass_row(k, true, [&](std::size_t node, double entry) {
-      row_scratch_.emplace_back(static_cast<int>(node), entry * dp_ds_[static_cast<Eigen::Index>(node)]);
-      row_scratch_.emplace_back(static_cast<int>(n_ + node), entry * P);
-    });
+    mass_row(
+        k, true, [&](std::size_t node, double entry) { row_scratch_.emplace_back(static_cast<int>(node), entry); },
+        [&](std::size_t node, double entry) {
+          row_scratch_.emplace_back(static_cast<int>(node), entry * dp_ds_[static_cast<Eigen::Index>(node)]);
+          row_scratch_.emplace_back(static_cast<int>(n_ + node), entry * P);
+        });
     matrix_.append_row(row_scratch_);
   }
   // The contact rows: the identity on q (open), the truncated film

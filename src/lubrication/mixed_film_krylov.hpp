@@ -18,6 +18,7 @@
 #include <utility>
 #include <vector>
 
+#include "csr_rows_in_runs.hpp"
 #include "film_krylov_solver.hpp"
 #include "film_slab.hpp"
 #include "halfspace/lubrication/reynolds_stencil.hpp"
@@ -98,8 +99,9 @@ class MixedKrylovSolver {
   void apply_jacobian(const Eigen::VectorXd& v, Eigen::VectorXd& out);
   void apply_preconditioner(const Eigen::VectorXd& in, Eigen::VectorXd& out);
   bool factorise(std::string& message);
-  template <class FilmEntry>
-  void mass_row(std::size_t k, bool every_entry, FilmEntry&& film_entry);
+  template <class SEntry, class FilmEntry>
+  void mass_row(std::size_t k, bool every_entry, SEntry&& s_entry, FilmEntry&& film_entry) const;
+  void mass_rows_border();
   bool factorise_block(std::string& message);
   bool factorise_border(std::string& message);
 
@@ -126,7 +128,9 @@ class MixedKrylovSolver {
   // The preconditioner: B (2n x 2n, sparse) bordered by the h0 column and
   // the load row under load control.
   CsrMatrix matrix_;
-  std::vector<std::pair<int, double>> row_scratch_, film_scratch_;
+  std::vector<std::pair<int, double>> row_scratch_;  // the sparse LU's rows, one at a time
+  std::vector<GatheredRowRun> row_runs_;             // the block's rows, per thread
+  std::vector<int> row_count_;
   std::unique_ptr<FilmPreconditioner> preconditioner_;
   // The block preconditioner: the mass rows' M and F and the truncated K
   // around each node (n x n, columns whole-grid nodes).
