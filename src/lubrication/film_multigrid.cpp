@@ -149,48 +149,53 @@ bool FilmMultigrid::split_lines(Level& level, std::string& message) {
   const auto nx = static_cast<long>(level.nx);
   const auto line_of = [&](long j) { return line_axis_ == 0 ? j / nx : j % nx; };
   const auto position = [&](long j) { return line_axis_ == 0 ? j % nx : j / nx; };
+  const auto rows = static_cast<std::ptrdiff_t>(a.rows);
+  const bool threaded = a.rows > kParallelNodes;
   // The bands' width from the pattern.
-  level.kl = 0;
-  level.ku = 0;
-  for (std::size_t i = 0; i < a.rows; ++i) {
-    const auto ii = static_cast<long>(i);
-    for (int e = a.start[i]; e < a.start[i + 1]; ++e) {
+  int kl = 0, ku = 0;
+#pragma omp parallel for schedule(static) reduction(max : kl, ku) if (threaded)
+  for (std::ptrdiff_t i = 0; i < rows; ++i) {
+    for (int e = a.start[static_cast<std::size_t>(i)]; e < a.start[static_cast<std::size_t>(i) + 1]; ++e) {
       const long j = a.column[e];
-      const long d = position(j) - position(ii);
-      if (line_of(j) != line_of(ii) || std::abs(d) > kMaxBand) continue;
-      level.kl = std::max(level.kl, static_cast<int>(-d));
-      level.ku = std::max(level.ku, static_cast<int>(d));
+      const long d = position(j) - position(i);
+      if (line_of(j) != line_of(i) || std::abs(d) > kMaxBand) continue;
+      kl = std::max(kl, static_cast<int>(-d));
+      ku = std::max(ku, static_cast<int>(d));
     }
   }
-  const int kl = level.kl, ku = level.ku;
+  level.kl = kl;
+  level.ku = ku;
   const std::size_t stride = banded_lu_stride(kl, ku);
   const std::size_t length = line_length(level);
-  level.band.assign(a.rows * stride, 0.0);
+  const auto lines = static_cast<std::ptrdiff_t>(line_count(level));
+  level.band.resize(a.rows * stride);
   level.pivots.resize(a.rows);
+#pragma omp parallel for schedule(static) if (threaded)
+  for (std::ptrdiff_t line = 0; line < lines; ++line) {
+    const auto at = static_cast<std::size_t>(line) * length * stride;
+    std::fill_n(level.band.begin() + static_cast<std::ptrdiff_t>(at), length * stride, 0.0);
+  }
+  // Each row's in-band entries into its line's band (rows write apart), the
+  // others into the off-band matrix, rows in runs (csr_rows_in_runs.hpp).
   CsrMatrix& off = level.off_band;
   off.rows = a.rows;
-  off.start.resize(a.rows + 1);
-  off.column.clear();
-  off.value.clear();
-  for (std::size_t i = 0; i < a.rows; ++i) {
-    const auto ii = static_cast<long>(i);
-    off.start[i] = static_cast<int>(off.column.size());
-    const std::size_t line = static_cast<std::size_t>(line_of(ii));
-    const auto t = static_cast<std::size_t>(position(ii));
-    std::span<double> band(level.band.data() + line * length * stride, length * stride);
-    for (int e = a.start[i]; e < a.start[i + 1]; ++e) {
-      const long j = a.column[e];
-      const long d = position(j) - position(ii);
-      if (line_of(j) == line_of(ii) && d >= -kl && d <= ku) {
-        band[banded_index(kl, ku, t, static_cast<std::size_t>(position(j)))] += a.value[e];
-      } else {
-        off.column.push_back(static_cast<int>(j));
-        off.value.push_back(a.value[e]);
-      }
-    }
-  }
-  off.start[a.rows] = static_cast<int>(off.column.size());
-  const auto lines = static_cast<std::ptrdiff_t>(line_count(level));
+  build_rows_in_runs(off, threaded ? omp_get_max_threads() : 1, off_band_runs_, row_count_,
+                     [&](GatheredRowRun&, std::size_t i, std::vector<int>& column, std::vector<double>& value) {
+                       const auto ii = static_cast<long>(i);
+                       const std::size_t line = static_cast<std::size_t>(line_of(ii));
+                       const auto t = static_cast<std::size_t>(position(ii));
+                       std::span<double> band(level.band.data() + line * length * stride, length * stride);
+                       for (int e = a.start[i]; e < a.start[i + 1]; ++e) {
+                         const long j = a.column[e];
+                         const long d = position(j) - position(ii);
+                         if (line_of(j) == line_of(ii) && d >= -kl && d <= ku) {
+                           band[banded_index(kl, ku, t, static_cast<std::size_t>(position(j)))] += a.value[e];
+                         } else {
+                           column.push_back(static_cast<int>(j));
+                           value.push_back(a.value[e]);
+                         }
+                       }
+                     });
   std::ptrdiff_t singular = lines;  // the first singular line, if any
 #pragma omp parallel for schedule(static) reduction(min : singular) if (a.rows > kParallelNodes)
   for (std::ptrdiff_t line = 0; line < lines; ++line) {
@@ -244,10 +249,10 @@ void FilmMultigrid::chain_lines(Level& level) const {
 
 void FilmMultigrid::find_fixed(Level& level) {
   const CsrMatrix& a = *level.matrix;
-  level.fixed.assign(a.rows, 0);
-  for (std::size_t i = 0; i < a.rows; ++i) {
+  level.fixed.resize(a.rows);
+  linalg::for_each_index(a.rows, [&](std::size_t i) {
     level.fixed[i] = a.start[i + 1] - a.start[i] == 1 && a.column[a.start[i]] == static_cast<int>(i) ? 1 : 0;
-  }
+  });
 }
 
 // P^T A P in two products: A P (fine rows, coarse columns), then P^T (A P).
@@ -395,16 +400,22 @@ bool FilmMultigrid::factorise(const CsrMatrix& matrix, std::string& message) {
   // The unknowns scaled by the diagonal (A D^-1, D = |diag A|), if asked.
   const auto n = static_cast<Eigen::Index>(matrix.rows);
   column_scale_.setOnes(n);
-  for (std::size_t i = 0; i < matrix.rows && scale_columns_; ++i) {
-    for (int e = matrix.start[i]; e < matrix.start[i + 1]; ++e) {
-      if (matrix.column[e] == static_cast<int>(i) && matrix.value[e] != 0.0) {
-        column_scale_[static_cast<Eigen::Index>(i)] = std::abs(matrix.value[e]);
+  if (scale_columns_) {
+    linalg::for_each_index(matrix.rows, [&](std::size_t i) {
+      for (int e = matrix.start[i]; e < matrix.start[i + 1]; ++e) {
+        if (matrix.column[e] == static_cast<int>(i) && matrix.value[e] != 0.0) {
+          column_scale_[static_cast<Eigen::Index>(i)] = std::abs(matrix.value[e]);
+        }
       }
-    }
+    });
   }
   CsrMatrix& scaled = levels_[0].own;
-  scaled = matrix;
-  for (std::size_t e = 0; e < scaled.value.size(); ++e) scaled.value[e] /= column_scale_[scaled.column[e]];
+  scaled.rows = matrix.rows;
+  scaled.start = matrix.start;
+  scaled.column = matrix.column;
+  scaled.value.resize(matrix.value.size());
+  linalg::for_each_index(matrix.value.size(),
+                         [&](std::size_t e) { scaled.value[e] = matrix.value[e] / column_scale_[matrix.column[e]]; });
   levels_[0].matrix = &scaled;
   for (std::size_t l = 0; l < levels_.size(); ++l) {
     Level& level = levels_[l];

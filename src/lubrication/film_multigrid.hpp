@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "csr_rows_in_runs.hpp"
 #include "film_preconditioner.hpp"
 #include "halfspace/grid.hpp"
 
@@ -138,6 +139,7 @@ class FilmMultigrid final : public FilmPreconditioner {
     std::vector<double> value;
   };
   std::vector<GalerkinScratch> galerkin_scratch_;
+  std::vector<GatheredRowRun> off_band_runs_;  // split_lines's rows, per thread
   std::vector<int> row_count_;
   Eigen::SparseMatrix<double> coarsest_;
   Eigen::SparseLU<Eigen::SparseMatrix<double>> coarsest_lu_;

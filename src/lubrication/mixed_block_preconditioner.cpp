@@ -92,11 +92,11 @@ void MixedBlockPreconditioner::apply(const Eigen::VectorXd& in, Eigen::VectorXd&
   const bool spots = !spot_node_.empty();
   // The open rows' v_q, the spots' total pressure with v_s = 0, then the
   // mass rows given it.
-  for (std::size_t k = 0; k < n_; ++k) {
+  linalg::for_each_index(n_, [&](std::size_t k) {
     const auto kk = static_cast<Eigen::Index>(k);
     open_q_[kk] = spot_index_[k] >= 0 ? 0.0 : in[ni + kk] / weight_q_[k];
-  }
-  total_ = pressure_ * open_q_;
+    total_[kk] = pressure_ * open_q_[kk];
+  });
   if (spots) {
     v_s_.setZero();
     solve_spots(in, v_s_);
@@ -111,8 +111,11 @@ void MixedBlockPreconditioner::apply(const Eigen::VectorXd& in, Eigen::VectorXd&
   });
   multigrid_.apply(mass_rhs_, v_s_);
   out.resize(2 * ni);
-  out.head(ni) = v_s_;
-  out.tail(ni) = open_q_;
+  linalg::for_each_index(n_, [&](std::size_t k) {
+    const auto kk = static_cast<Eigen::Index>(k);
+    out[kk] = v_s_[kk];
+    out[ni + kk] = open_q_[kk];
+  });
   if (!spots) return;
   // The spots again with the mass rows' v_s.
   solve_spots(in, v_s_);

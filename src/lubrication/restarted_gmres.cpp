@@ -13,6 +13,8 @@
 #include <new>
 #include <utility>
 
+#include "halfspace/linalg/parallel.hpp"
+
 namespace halfspace::lubrication::detail {
 
 double* ArnoldiStorage::reserve(std::size_t values) {
@@ -135,10 +137,16 @@ bool KrylovNewtonStep::factorise_border(const char* singular, std::string& messa
 void KrylovNewtonStep::precondition(const Eigen::VectorXd& v, Eigen::VectorXd& out) {
   if (!bordered_) return inverse_(v, out);
   const Eigen::Index n = head_in_.size();
-  head_in_ = v.head(n);
+  linalg::for_each_index(static_cast<std::size_t>(n), [&](std::size_t k) {
+    head_in_[static_cast<Eigen::Index>(k)] = v[static_cast<Eigen::Index>(k)];
+  });
   inverse_(head_in_, head_out_);
   const double z = (sum(load_row.dot(head_out_)) - v[n]) / border_pivot_;
-  out.head(n) = head_out_ - z * border_solved_;
+  out.resize(n + 1);
+  linalg::for_each_index(static_cast<std::size_t>(n), [&](std::size_t k) {
+    const auto kk = static_cast<Eigen::Index>(k);
+    out[kk] = head_out_[kk] - z * border_solved_[kk];
+  });
   out[n] = z;
 }
 
