@@ -34,9 +34,10 @@ constexpr int kPostSweeps = 1;
 constexpr int kMaxBand = 4;
 // Line sweeps on a coarsest grid too large for the direct solve.
 constexpr int kCoarsestSweeps = 8;
-// A Galerkin product's rows or the lines' factorisations are shared out
-// among the threads from this many nodes: a row costs tens of nanoseconds,
-// waking the team tens of microseconds.
+// The lines' factorisations and the levels' other loops are shared out
+// among the threads from this many nodes, as the rows built in runs are
+// (kRowsInRunsFrom): a row costs tens of nanoseconds, waking the team tens
+// of microseconds.
 constexpr std::size_t kParallelNodes = 4096;
 // The sweeps' chains of consecutive lines (chain_lines), on levels of at
 // least kChainedNodes nodes; a smaller level is swept as one chain, line
@@ -179,7 +180,7 @@ bool FilmMultigrid::split_lines(Level& level, std::string& message) {
   // others into the off-band matrix, rows in runs (csr_rows_in_runs.hpp).
   CsrMatrix& off = level.off_band;
   off.rows = a.rows;
-  build_rows_in_runs(off, threaded ? omp_get_max_threads() : 1, off_band_runs_, row_count_,
+  build_rows_in_runs(off, row_run_team(a.rows), off_band_runs_, row_count_,
                      [&](GatheredRowRun&, std::size_t i, std::vector<int>& column, std::vector<double>& value) {
                        const auto ii = static_cast<long>(i);
                        const std::size_t line = static_cast<std::size_t>(line_of(ii));
@@ -283,7 +284,7 @@ void FilmMultigrid::galerkin(const Level& fine, Level& coarse) {
   const long side_ap = 2 * w_ap + 1;
   const long w = (reach + 3) / 2;
   const long side = 2 * w + 1;
-  const int team = a.rows > kParallelNodes ? omp_get_max_threads() : 1;
+  const int team = row_run_team(a.rows);
   if (galerkin_scratch_.size() < static_cast<std::size_t>(team))
     galerkin_scratch_.resize(static_cast<std::size_t>(team));
   for (int t = 0; t < team; ++t) {

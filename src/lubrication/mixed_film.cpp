@@ -1067,7 +1067,7 @@ MixedFilm continue_in_offset(InfluenceOperator& op, const Eigen::ArrayXd& gap, d
     if (!contact.converged() || !(contact.total_force > 0.0)) return failed;
     MixedFilmOptions by_load = options;
     by_load.load = contact.total_force;
-    from = solve_mixed_film(op, gap, conditions, laws, by_load);
+    from = detail::solve_mixed_film(op, gap, keep, conditions, laws, by_load);
     work.add(from);
     if (!from.converged()) return failed;
   }
