@@ -923,6 +923,14 @@ MixedFilm detail::solve_mixed_film_smoothed(InfluenceOperator& op, const Eigen::
   }
 }
 
+MixedFilmOptions detail::full_film_start_options(const MixedFilmOptions& options) {
+  MixedFilmOptions start = options;
+  start.tolerance = std::max(options.tolerance, kFullFilmStartTolerance);
+  start.load_tolerance = std::max(options.load_tolerance, kFullFilmStartTolerance);
+  start.contact_tolerance = std::max(options.contact_tolerance, 1e-2 * kFullFilmStartTolerance);
+  return start;
+}
+
 FlowConditions detail::at_speed_factor(const FlowConditions& conditions, double factor) {
   FlowConditions scaled = conditions;
   for (int axis = 0; axis < 2; ++axis) {
@@ -965,10 +973,7 @@ MixedFilm continue_in_speed(InfluenceOperator& op, const Eigen::ArrayXd& gap, de
   };
   // A film between, in full film: only a start (kFullFilmStartTolerance,
   // kStartNormShare).
-  MixedFilmOptions full_film_start = options;
-  full_film_start.tolerance = std::max(options.tolerance, kFullFilmStartTolerance);
-  full_film_start.load_tolerance = std::max(options.load_tolerance, kFullFilmStartTolerance);
-  full_film_start.contact_tolerance = std::max(options.contact_tolerance, 1e-2 * kFullFilmStartTolerance);
+  const MixedFilmOptions full_film_start = detail::full_film_start_options(options);
   double ceiling = ceiling_after(film, kContinuationRatio);
   double ratio = ceiling;
   // The ratio after a step that converged.

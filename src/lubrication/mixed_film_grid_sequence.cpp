@@ -119,10 +119,12 @@ MixedFilm solve_start(InfluenceOperator& op, const Eigen::ArrayXd& gap, detail::
 
 // The film on the grid of twice the spacing, interpolated onto op's grid, or
 // nothing if there is no coarser grid or its film did not converge. Adds the
-// coarse work to `record`, and a failed coarse film's message.
+// coarse work to `record`, and a failed coarse film's message. Sets
+// `coarse_in_full_film` where the coarse film carries no contact load.
 std::optional<MixedFilm> sequenced_start(InfluenceOperator& op, const Eigen::ArrayXd& gap, detail::MixedFilmKeep& keep,
                                          const FlowConditions& conditions, const LubricantLaws& laws,
-                                         const MixedFilmOptions& options, SolveEffort effort, MixedFilm& record) {
+                                         const MixedFilmOptions& options, SolveEffort effort, MixedFilm& record,
+                                         bool& coarse_in_full_film) {
   const std::optional<MixedFilm> coarse = detail::solve_on_coarser_grid(
       op, gap, options,
       [&](InfluenceOperator& coarse_op, const Eigen::ArrayXd& coarse_gap, const MixedFilmOptions& coarse_options) {
@@ -137,6 +139,7 @@ std::optional<MixedFilm> sequenced_start(InfluenceOperator& op, const Eigen::Arr
       record);
   if (!coarse) return std::nullopt;
   MixedFilm film = *coarse;
+  coarse_in_full_film = film.contact_load_fraction == 0.0;
   const Grid& grid = op.grid();
   const Grid coarse_grid = *solvers::coarser_grid(grid, detail::kSequencingMinCells);
   const std::size_t coarse_size = coarse_grid.size();
@@ -221,12 +224,20 @@ MixedFilm solve_sequenced(InfluenceOperator& op, const Eigen::ArrayXd& gap, deta
   detail::agree_on_input(op.communicator(),
                          [&] { require_mixed_film_fits(grid, options, "the mixed film", op.local_size()); });
   MixedFilm record;
+  bool coarse_in_full_film = false;
   const std::optional<MixedFilm> coarse_start =
-      sequenced_start(op, gap, keep, conditions, laws, options, effort, record);
+      sequenced_start(op, gap, keep, conditions, laws, options, effort, record, coarse_in_full_film);
   if (coarser_grid_failed != nullptr) *coarser_grid_failed = !coarse_start;
   MixedFilm result;
   if (coarse_start) {
-    MixedFilmOptions first = options;
+    // A start in full film (its coarser film carries no contact load) is
+    // solved only to the start tolerance, as the speed continuation's films
+    // between are: the 1024^2 film at 0.016 m/s that the measured window's
+    // continuation starts from took 12 Newton steps to 1e-8, 7 to the start
+    // tolerance, and the answer was the same to every printed digit
+    // (docs/development-log.md, 2026-12-04, forty-seventh session).
+    MixedFilmOptions first =
+        effort == SolveEffort::start && coarse_in_full_film ? detail::full_film_start_options(options) : options;
     first.max_iterations = std::min(options.max_iterations, kSequencedFirstSteps);
     result = detail::solve_mixed_film_on_grid(
         op, gap, keep, conditions, laws, first, &*coarse_start,

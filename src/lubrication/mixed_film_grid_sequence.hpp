@@ -70,6 +70,12 @@ inline constexpr double kFullFilmStartTolerance = 3e-3;
 // (mixed_film.cpp, continue_in_speed).
 inline constexpr double kStartNormShare = 0.1;
 
+// `options` with the tolerances of a film in full film that is only the
+// next solve's start: the mass residual and the load error to
+// kFullFilmStartTolerance, the contact rows to a hundredth of it (the
+// speed continuation's films between, a grid-sequenced start's fine grid).
+MixedFilmOptions full_film_start_options(const MixedFilmOptions& options);
+
 // `conditions` with the entrainment and sliding velocities times `factor`.
 FlowConditions at_speed_factor(const FlowConditions& conditions, double factor);
 

@@ -361,6 +361,35 @@ TEST(MixedFilmKrylovTest, CoarseFilmIsOnlyAStart) {
   EXPECT_NEAR(sequenced.contact_load_fraction, cold.contact_load_fraction, 3e-5);
 }
 
+// A grid-sequenced start in full film (its coarser film carries no contact
+// load) is only the next grid's start and is solved to the start tolerance
+// (detail::kFullFilmStartTolerance), not to the coarse grids' tolerance
+// (kSequencingCoarseTolerance): on a 68^2 rough point contact in full film
+// the 34^2 start, itself sequenced from 17^2, ends between the two (1.7e-3
+// after 7 Newton steps, measured once), and the answer from it is the
+// unsequenced solve's film, holding its conditions apart from the solver.
+TEST(MixedFilmKrylovTest, SequencedStartInFullFilmIsSolvedToTheStartTolerance) {
+  const RoughContact point = rough_point(68, 0.2e-6);
+  FftInfluenceOperator op(point.grid, kEStar);
+  const double speed = 1.0;
+  MixedFilmOptions options = options_for(kPointLoad, FilmLinearSolve::automatic);
+  std::vector<MixedSolveRecord> records;
+  options.trace = [&](const MixedSolveRecord& record) { records.push_back(record); };
+  const auto [sequenced, cold] = sequenced_and_cold(op, point.gap, speed, options);
+  ASSERT_TRUE(sequenced.converged()) << sequenced.message;
+  ASSERT_TRUE(cold.converged()) << cold.message;
+  EXPECT_EQ(sequenced.coarse_levels, 2);
+  EXPECT_FALSE(sequenced.sequencing_fell_back);
+  EXPECT_EQ(sequenced.contact_load_fraction, 0.0);
+  const auto start = std::find_if(records.begin(), records.end(), [](const MixedSolveRecord& r) { return r.nx == 34; });
+  ASSERT_NE(start, records.end());
+  EXPECT_EQ(start->status, FilmStatus::converged);
+  EXPECT_GT(start->relative_residual, kSequencingCoarseTolerance);
+  EXPECT_LE(start->relative_residual, detail::kCheckAllowance * detail::kFullFilmStartTolerance);
+  expect_solution_holds(op, point.gap, flow(speed), options, sequenced);
+  expect_same_film(sequenced, cold);
+}
+
 // The trace (MixedFilmOptions::trace) sees every Newton solve once: on the
 // case above, whose 17^2 film fails and whose 34^2 grid takes the faster
 // films and the speed continuation, the records' steps and GMRES
