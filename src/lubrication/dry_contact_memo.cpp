@@ -1,12 +1,36 @@
 #include "dry_contact_memo.hpp"
 
 #include <algorithm>
+#include <memory>
 #include <span>
 #include <utility>
+#include <variant>
 
+#include "halfspace/operators/fft_influence_operator.hpp"
+#include "halfspace/solvers/fourier_preconditioner.hpp"
 #include "halfspace/solvers/polonsky_keer.hpp"
 
 namespace halfspace::lubrication::detail {
+
+solvers::SolveResult solve_dry_contact(InfluenceOperator& op, const Eigen::ArrayXd& gap,
+                                       const solvers::Loading& loading) {
+  const std::span<const double> initial_gap(gap.data(), static_cast<std::size_t>(gap.size()));
+  auto* fft = dynamic_cast<operators::FftInfluenceOperator*>(&op);
+  const Grid& grid = op.grid();
+  if (fft == nullptr || grid.dimension() != 2 || !std::holds_alternative<double>(fft->half_space())) {
+    return solvers::PolonskyKeer(op).solve(initial_gap, loading);
+  }
+  const std::shared_ptr<operators::SpectralTransforms>& transforms = fft->transforms();
+  const std::unique_ptr<solvers::FourierPreconditioner> preconditioner =
+      grid.periodic()
+          ? std::make_unique<solvers::FourierPreconditioner>(grid, fft->half_space(), fft->symbol(), transforms)
+          : std::make_unique<solvers::FourierPreconditioner>(
+                grid, fft->half_space(),
+                transforms->make_for(grid, {.count = 1, .unpadded = true, .workspace = transforms->workspace()}));
+  solvers::PolonskyKeerOptions options;
+  options.form = solvers::PolonskyKeerForm::projected;
+  return solvers::PolonskyKeer(op, options, {}, preconditioner.get()).solve(initial_gap, loading);
+}
 
 const solvers::SolveResult& DryContactMemo::solve(InfluenceOperator& op, const Eigen::ArrayXd& gap,
                                                   const solvers::Loading& loading) {
@@ -23,8 +47,7 @@ const solvers::SolveResult& DryContactMemo::solve(InfluenceOperator& op, const E
                     std::equal(gap.begin(), gap.end(), slot->gap.begin());
   // Every process solves, or none does (the solve is collective).
   if (op.communicator().min(here ? 1.0 : 0.0) > 0.5) return slot->result;
-  solvers::PolonskyKeer solver(op);
-  solvers::SolveResult result = solver.solve({gap.data(), static_cast<std::size_t>(gap.size())}, loading);
+  solvers::SolveResult result = solve_dry_contact(op, gap, loading);
   ++solves_;
   if (slot == kept_.end()) slot = kept_.emplace(kept_.end());
   slot->op = &op;

@@ -19,10 +19,23 @@
 
 namespace halfspace::lubrication::detail {
 
+// The dry contact of `gap` (this process's rows) on op's grid under
+// `loading`, by Polonsky–Keer: in the projected form with the Fourier
+// preconditioner where `op` is a homogeneous half-space's FFT operator on a
+// 2D grid (as `solve --solver pk-fourier`; its grid's own transform works
+// in the operator's idle buffer), in the paper's form otherwise (a coarse
+// grid's R K P, a line, where the preconditioner cycles on measured
+// profiles, and a coating, whose stiff layers it does not serve;
+// solver_factory.cpp). On the measured window at 512^2: 25 iterations
+// instead of 94 (docs/development-log.md, 2026-12-04, forty-seventh
+// session). Collective on several processes.
+solvers::SolveResult solve_dry_contact(InfluenceOperator& op, const Eigen::ArrayXd& gap,
+                                       const solvers::Loading& loading);
+
 class DryContactMemo {
  public:
   // The dry contact of `gap` (this process's rows) on op's grid under
-  // `loading`, by Polonsky–Keer: the kept one where `op`, the gap's values
+  // `loading` (solve_dry_contact): the kept one where `op`, the gap's values
   // and the loading are the solve's kept for the grid's shape on every
   // process, else solved and kept in its place (a separation continuation
   // moves the approach at every step). An operator object is taken to stay

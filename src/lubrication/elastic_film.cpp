@@ -29,6 +29,7 @@
 #include <optional>
 #include <vector>
 
+#include "dry_contact_memo.hpp"
 #include "film_grid_sequence.hpp"
 #include "film_krylov_solver.hpp"
 #include "film_newton.hpp"
@@ -37,7 +38,6 @@
 #include "halfspace/lubrication/cavitation_solver.hpp"
 #include "halfspace/lubrication/reynolds_stencil.hpp"
 #include "halfspace/memory_estimate.hpp"
-#include "halfspace/solvers/polonsky_keer.hpp"
 #include "reynolds_linearisation.hpp"
 
 namespace halfspace::lubrication {
@@ -283,8 +283,7 @@ ElasticFilm detail::solve_film_newton(InfluenceOperator& op, const Eigen::ArrayX
     own(x.theta) = start->fluid_fraction;
     x.offset = start->offset;
   } else {
-    solvers::PolonskyKeer dry(op);
-    const solvers::SolveResult contact = dry.solve({gap.data(), n}, solvers::Loading::force(w));
+    const solvers::SolveResult contact = detail::solve_dry_contact(op, gap, solvers::Loading::force(w));
     if (!contact.converged()) {
       result.message = fmt::format("the dry contact that starts the EHL solve did not converge: {}", contact.message);
       // Fields of the grid's size all the same, so that the failure is

@@ -26,7 +26,6 @@
 
 #include "film_grid_sequence.hpp"
 #include "halfspace/solvers/grid_transfer.hpp"
-#include "halfspace/solvers/polonsky_keer.hpp"
 #include "mixed_film_keep.hpp"
 
 namespace halfspace::lubrication {
@@ -177,9 +176,8 @@ std::optional<MixedFilm> sequenced_start(InfluenceOperator& op, const Eigen::Arr
   // block average and the coarse K the fine one's.
   start.offset = film.offset;
   if (options.load - fluid_load > 0.0) {
-    solvers::PolonskyKeer contact_solver(op);
     const solvers::SolveResult contact =
-        contact_solver.solve({loaded_gap.data(), n}, solvers::Loading::force(options.load - fluid_load));
+        detail::solve_dry_contact(op, loaded_gap, solvers::Loading::force(options.load - fluid_load));
     if (contact.converged()) {
       start.contact_pressure = contact.pressure;
       start.offset = -contact.approach;

@@ -70,7 +70,7 @@ std::string not_positive_definite(const Grid& grid, double smallest) {
 
 struct FftInfluenceOperator::Impl {
   Impl(const Grid& g, const HalfSpace& half_space, std::shared_ptr<SpectralTransforms> t)
-      : normal(g, half_space), transforms(checked(g, std::move(t))) {
+      : normal(g, half_space), body(half_space), transforms(checked(g, std::move(t))) {
     if (grid().periodic()) {
       // FFTW's 1/N folded in.
       kernel =
@@ -148,6 +148,7 @@ struct FftInfluenceOperator::Impl {
   }
 
   kernels::NormalKernel normal;
+  HalfSpace body;
   std::shared_ptr<SpectralTransforms> transforms;  // own, or shared with a preconditioner
   EvenSymbol kernel{0, 0};                         // 1/N folded in
   double self = 0.0;
@@ -194,6 +195,10 @@ void FftInfluenceOperator::apply(std::span<const double> pressure, std::span<dou
 
 const std::shared_ptr<SpectralTransforms>& FftInfluenceOperator::transforms() const {
   return impl_->transforms;
+}
+
+const HalfSpace& FftInfluenceOperator::half_space() const {
+  return impl_->body;
 }
 
 const EvenSymbol& FftInfluenceOperator::symbol() const {

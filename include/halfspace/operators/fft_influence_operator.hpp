@@ -50,6 +50,8 @@ class FftInfluenceOperator final : public InfluenceOperator {
   // kernel, with its datum at 1 m, can be so on domains longer than about 1 m).
   CirculantForm& circulant_form() override;
 
+  // The half-space it was made for.
+  const HalfSpace& half_space() const;
   // The transforms it multiplies on (their workspace() is idle between
   // products: a free grid's preconditioner or a single-precision transform
   // may work in it).
