@@ -303,7 +303,8 @@ MixedFilm newton_solve(InfluenceOperator& op, const Eigen::ArrayXd& gap, detail:
                        const MixedFilm* start, detail::MixedStartUse use = detail::MixedStartUse::solve_only,
                        double smoothing = 0.0) {
   const bool smoothed = smoothing > 0.0;
-  const bool only_trying = use == detail::MixedStartUse::try_only || use == detail::MixedStartUse::try_until_short;
+  const bool only_trying = use == detail::MixedStartUse::try_only || use == detail::MixedStartUse::try_until_short ||
+                           use == detail::MixedStartUse::try_as_start;
   const auto started = std::chrono::steady_clock::now();
   const Grid& grid = op.grid();
   conditions.validate(grid);
@@ -566,7 +567,8 @@ MixedFilm newton_solve(InfluenceOperator& op, const Eigen::ArrayXd& gap, detail:
                   .tolerances = {.mass = options.tolerance,
                                  .load = options.load_tolerance,
                                  .contact = options.contact_tolerance,
-                                 .start_norm_share = use == detail::MixedStartUse::solve_as_start
+                                 .start_norm_share = use == detail::MixedStartUse::solve_as_start ||
+                                                             use == detail::MixedStartUse::try_as_start
                                                          ? std::optional<double>(detail::kStartNormShare)
                                                          : std::nullopt},
                   .forcing = detail::FilmForcing::eisenstat_walker,

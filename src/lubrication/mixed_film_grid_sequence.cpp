@@ -234,12 +234,19 @@ MixedFilm solve_sequenced(InfluenceOperator& op, const Eigen::ArrayXd& gap, deta
     // continuation starts from took 12 Newton steps to 1e-8, 7 to the start
     // tolerance, and the answer was the same to every printed digit
     // (docs/development-log.md, 2026-12-04, forty-seventh session).
-    MixedFilmOptions first =
-        effort == SolveEffort::start && coarse_in_full_film ? detail::full_film_start_options(options) : options;
+    // Above kTryingNodes it also stops where a step has lowered the
+    // residual's norm to kStartNormShare of its first value, as those films
+    // between do: at 1024^2 that film then took 5 Newton steps (294 GMRES
+    // iterations) instead of 7 (454), the 512^2 one under it 3 (182) instead
+    // of 5 (420) (docs/development-log.md, 2026-12-04, forty-eighth
+    // session).
+    const bool only_a_start = effort == SolveEffort::start && coarse_in_full_film;
+    MixedFilmOptions first = only_a_start ? detail::full_film_start_options(options) : options;
     first.max_iterations = std::min(options.max_iterations, kSequencedFirstSteps);
-    result = detail::solve_mixed_film_on_grid(
-        op, gap, keep, conditions, laws, first, &*coarse_start,
-        grid.size() <= kTryingNodes ? detail::MixedStartUse::try_only : detail::MixedStartUse::try_until_short);
+    const detail::MixedStartUse use = grid.size() <= kTryingNodes ? detail::MixedStartUse::try_only
+                                      : only_a_start              ? detail::MixedStartUse::try_as_start
+                                                                  : detail::MixedStartUse::try_until_short;
+    result = detail::solve_mixed_film_on_grid(op, gap, keep, conditions, laws, first, &*coarse_start, use);
   }
   int steps = result.iterations, krylov = result.krylov_iterations;
   // A fine Newton iteration that failed from the coarse film (its steps

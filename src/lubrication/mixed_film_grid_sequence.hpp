@@ -21,8 +21,17 @@ namespace halfspace::lubrication::detail {
 // only where a step's GMRES stops short (the same try on the larger grids,
 // where a try that converges may stagnate first); solve_as_start:
 // solve_only, the film only the next solve's start (FilmTolerances::
-// start_norm_share = kStartNormShare).
-enum class MixedStartUse { solve_then_continue, solve_only, try_only, try_until_short, continue_only, solve_as_start };
+// start_norm_share = kStartNormShare); try_as_start: try_until_short on
+// such a film (a grid-sequenced start in full film).
+enum class MixedStartUse {
+  solve_then_continue,
+  solve_only,
+  try_only,
+  try_until_short,
+  continue_only,
+  solve_as_start,
+  try_as_start
+};
 
 // solve_mixed_film with what its solves keep in `keep` (mixed_film_keep.hpp):
 // a Stribeck sweep's points share it.

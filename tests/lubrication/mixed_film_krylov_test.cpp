@@ -694,6 +694,40 @@ TEST(MixedFilmKrylovTest, FullFilmContinuationStepsAreTheSquareRootOfTwo) {
   expect_same_film(f, direct);
 }
 
+// A grid-sequenced start in full film on a grid above 128^2 is tried
+// (MixedStartUse::try_as_start) with the films between's norm rule: it
+// stops where a step has lowered the residual's norm to kStartNormShare of
+// its first value, within the check's allowance of the start tolerance,
+// as the film between solved from the same start does (solve_as_start),
+// step for step; the try without the rule (try_until_short) goes on to the
+// start tolerance in more steps. From the film at twice the speed.
+TEST(MixedFilmKrylovTest, TriedStartInFullFilmStopsByTheNormRule) {
+  const RoughContact point = rough_point(13, 0.05e-6);
+  FftInfluenceOperator op(point.grid, kEStar);
+  detail::MixedFilmKeep keep;
+  const double speed = 4.0 * kMixedSpeed;
+  const MixedFilmOptions options = options_for(kPointLoad, FilmLinearSolve::gmres);
+  const MixedFilm faster = solve_mixed_film(op, point.gap, flow(2.0 * speed), laws(), options);
+  ASSERT_TRUE(faster.converged()) << faster.message;
+  ASSERT_EQ(faster.contact_load_fraction, 0.0);
+  const MixedFilmOptions start_options = detail::full_film_start_options(options);
+  const auto from_faster = [&](detail::MixedStartUse use) {
+    return detail::solve_mixed_film_on_grid(op, point.gap, keep, flow(speed), laws(), start_options, &faster, use);
+  };
+  const MixedFilm tried = from_faster(detail::MixedStartUse::try_as_start);
+  const MixedFilm between = from_faster(detail::MixedStartUse::solve_as_start);
+  const MixedFilm plain = from_faster(detail::MixedStartUse::try_until_short);
+  ASSERT_TRUE(tried.converged()) << tried.message;
+  ASSERT_TRUE(between.converged()) << between.message;
+  ASSERT_TRUE(plain.converged()) << plain.message;
+  EXPECT_GT(tried.relative_residual, detail::kFullFilmStartTolerance);
+  EXPECT_LE(tried.relative_residual, detail::kCheckAllowance * detail::kFullFilmStartTolerance);
+  EXPECT_LE(plain.relative_residual, detail::kFullFilmStartTolerance);
+  EXPECT_LT(tried.iterations, plain.iterations);
+  EXPECT_EQ(tried.iterations, between.iterations);
+  EXPECT_EQ((tried.pressure - between.pressure).abs().maxCoeff(), 0.0);
+}
+
 // In the mixed regime the films between are solved to the answer's
 // tolerance: a loose film there sent the continuation at 32^2 through 20
 // solves instead of 7. From the 17^2 film at 3e-3 m/s, which carries
