@@ -948,12 +948,13 @@ using detail::kFullFilmStartTolerance;
 
 // Continuation in the speed: from a film solved at `factor` times the
 // velocities down (or up) to the velocities themselves, in steps of at most
-// kContinuationRatio (kFullFilmRatio in full film), each warm-started from
-// the last; a step that fails is halved (in log speed) down to
-// kSmallestRatio. The films between are discarded; the steps are counted
-// into the result's iterations.
+// kContinuationRatio (in full film kFullFilmRatio, the last step
+// kAnswerStartRatio), each warm-started from the last; a step that fails is
+// halved (in log speed) down to kSmallestRatio. The films between are
+// discarded; the steps are counted into the result's iterations.
 constexpr double kContinuationRatio = 2.0;
-constexpr double kFullFilmRatio = std::numbers::sqrt2;
+constexpr double kFullFilmRatio = 2.0;
+constexpr double kAnswerStartRatio = std::numbers::sqrt2;
 constexpr double kSmallestRatio = 1.02;
 constexpr int kContinuationSolves = 60;
 constexpr double kRatioAfterSmoothing = 1.1;
@@ -961,15 +962,19 @@ constexpr double kRatioAfterSmoothing = 1.1;
 MixedFilm continue_in_speed(InfluenceOperator& op, const Eigen::ArrayXd& gap, detail::MixedFilmKeep& keep,
                             const FlowConditions& conditions, const LubricantLaws& laws,
                             const MixedFilmOptions& options, MixedFilm film, double factor, Work& work) {
-  // In full film (no contact load in the last film) the steps are at most
-  // kFullFilmRatio, and the ratio that failed is not tried again: the films
-  // thin smoothly as the speed falls, and on the measured window at 1024^2
-  // every step of 2 failed (451 to 611 s each, the first one or after a
-  // step of sqrt(2)) where the steps of sqrt(2) converged. In the mixed
-  // regime the ratio comes back to kContinuationRatio: there a small step
-  // can meet a kink a larger one steps over (a 17^2 rough point contact
-  // stalled with the ratio held; docs/development-log.md, 2026-12-03,
-  // thirty-fifth, thirty-seventh and thirty-eighth sessions).
+  // In full film (no contact load in the last film) the ratio that failed
+  // is not tried again: the films thin smoothly as the speed falls, and on
+  // the measured window at 1024^2 every step of 2 failed then (451 to 611 s
+  // each) where steps of sqrt(2) converged. In the mixed regime the ratio
+  // comes back to kContinuationRatio: there a small step can meet a kink a
+  // larger one steps over (a 17^2 rough point contact stalled with the
+  // ratio held; docs/development-log.md, 2026-12-03, thirty-fifth,
+  // thirty-seventh and thirty-eighth sessions). Since the films between are
+  // only starts, that window's steps of 2 take 1 Newton step each; the last
+  // step in full film, to the velocities, is at most kAnswerStartRatio: the
+  // answer from the film at 2 times the speed took 852 GMRES iterations,
+  // from the one at sqrt(2) times 578-695 (docs/development-log.md,
+  // 2026-12-04, forty-eighth session).
   const auto ceiling_after = [](const MixedFilm& last, double ceiling) {
     return last.contact_load_fraction > 0.0 ? kContinuationRatio : std::min(ceiling, kFullFilmRatio);
   };
@@ -981,16 +986,20 @@ MixedFilm continue_in_speed(InfluenceOperator& op, const Eigen::ArrayXd& gap, de
   // The ratio after a step that converged.
   const auto grown_ratio = [&] { return std::min(ratio * 1.5, ceiling); };
   while (factor != 1.0 && work.solves < kContinuationSolves) {
-    const double log_step = std::min(std::abs(std::log(factor)), std::log(ratio));
-    const double next =
-        std::abs(std::log(factor)) <= log_step ? 1.0 : factor * std::exp(factor > 1.0 ? -log_step : log_step);
+    const double log_factor = std::abs(std::log(factor));
+    const bool in_full_film = film.contact_load_fraction == 0.0;
+    const double last_step = in_full_film ? std::log(kAnswerStartRatio) : std::log(ratio);
+    double log_step = std::min(log_factor, std::log(ratio));
+    if (log_step >= log_factor && log_factor > last_step + std::log(kSmallestRatio)) log_step = log_factor - last_step;
+    const double next = log_factor <= log_step ? 1.0 : factor * std::exp(factor > 1.0 ? -log_step : log_step);
     // The film before the last (the step after it reaches the velocities)
     // is the answer's start: solved to the start tolerance without the norm
     // rule (from a start a Newton step worse the 1024^2 answer took 439 s
     // instead of 287 s; docs/development-log.md, 2026-12-03, forty-first
     // session).
-    const bool only_a_start = next != 1.0 && film.contact_load_fraction == 0.0;
-    const bool answers_start = std::abs(std::log(next)) <= std::log(grown_ratio());
+    const bool only_a_start = next != 1.0 && in_full_film;
+    const bool answers_start =
+        std::abs(std::log(next)) <= std::min(std::log(grown_ratio()), in_full_film ? last_step : INFINITY) + 1e-12;
     MixedFilm trial = solve_once(
         op, gap, keep, at_speed_factor(conditions, next), laws, only_a_start ? full_film_start : options, &film,
         only_a_start && !answers_start ? detail::MixedStartUse::solve_as_start : detail::MixedStartUse::solve_only);

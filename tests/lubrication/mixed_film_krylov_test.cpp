@@ -649,16 +649,16 @@ TEST(MixedFilmKrylovTest, SweepPointFromTheLastFilmIsTheFilmFromAbove) {
   EXPECT_NEAR(f.contact_load_fraction, expected.contact_load_fraction, 3e-5);
 }
 
-// In full film the speed continuation's steps are sqrt(2), not 2: on the
-// measured window at 1024^2 each step of 2 from a full film failed where
-// the steps of sqrt(2) converged, and a failed step costs more than a
-// step. From the film at 4x the speed (no contact load) the solves run at
-// 4 / sqrt(2), 2, sqrt(2) and 1 times the speed, and the film is the one
+// In full film the speed continuation's steps are 2 and its last, to the
+// velocities, sqrt(2): on the measured window at 1024^2 the answer took
+// 852 GMRES iterations from the film at twice the speed, 578-695 from the
+// one at sqrt(2) times. From the film at 4x the speed (no contact load) the
+// solves run at 2, sqrt(2) and 1 times the speed, and the film is the one
 // solved directly. The films between are only starts, solved to
 // kFullFilmStartTolerance (or, where the residual's norm has fallen to
 // kStartNormShare, within the check's allowance of it); the last to the
 // options' tolerance.
-TEST(MixedFilmKrylovTest, FullFilmContinuationStepsAreTheSquareRootOfTwo) {
+TEST(MixedFilmKrylovTest, FullFilmContinuationStepsAreTwoAndLastTheSquareRootOfTwo) {
   const RoughContact point = rough_point(13, 0.05e-6);
   FftInfluenceOperator op(point.grid, kEStar);
   detail::MixedFilmKeep keep;
@@ -673,7 +673,7 @@ TEST(MixedFilmKrylovTest, FullFilmContinuationStepsAreTheSquareRootOfTwo) {
                                                        detail::MixedStartUse::continue_only);
   ASSERT_TRUE(f.converged()) << f.message;
   EXPECT_EQ(f.contact_load_fraction, 0.0);
-  const std::vector<double> expected{4.0 / std::numbers::sqrt2, 2.0, std::numbers::sqrt2, 1.0};
+  const std::vector<double> expected{2.0, std::numbers::sqrt2, 1.0};
   ASSERT_EQ(records.size(), expected.size());
   // The dry contact that scales each solve is the grid's, solved once.
   EXPECT_EQ(keep.dry.solves(), 1);
