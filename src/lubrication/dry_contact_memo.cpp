@@ -20,13 +20,8 @@ solvers::SolveResult solve_dry_contact(InfluenceOperator& op, const Eigen::Array
   if (fft == nullptr || grid.dimension() != 2 || !std::holds_alternative<double>(fft->half_space())) {
     return solvers::PolonskyKeer(op).solve(initial_gap, loading);
   }
-  const std::shared_ptr<operators::SpectralTransforms>& transforms = fft->transforms();
-  const std::unique_ptr<solvers::FourierPreconditioner> preconditioner =
-      grid.periodic()
-          ? std::make_unique<solvers::FourierPreconditioner>(grid, fft->half_space(), fft->symbol(), transforms)
-          : std::make_unique<solvers::FourierPreconditioner>(
-                grid, fft->half_space(),
-                transforms->make_for(grid, {.count = 1, .unpadded = true, .workspace = transforms->workspace()}));
+  const std::unique_ptr<solvers::FourierPreconditioner> preconditioner = solvers::make_fourier_preconditioner(
+      *fft, [&](const operators::TransformsShape& shape) { return fft->transforms()->make_for(grid, shape); });
   solvers::PolonskyKeerOptions options;
   options.form = solvers::PolonskyKeerForm::projected;
   return solvers::PolonskyKeer(op, options, {}, preconditioner.get()).solve(initial_gap, loading);

@@ -988,9 +988,13 @@ MixedFilm continue_in_speed(InfluenceOperator& op, const Eigen::ArrayXd& gap, de
   while (factor != 1.0 && work.solves < kContinuationSolves) {
     const double log_factor = std::abs(std::log(factor));
     const bool in_full_film = film.contact_load_fraction == 0.0;
-    const double last_step = in_full_film ? std::log(kAnswerStartRatio) : std::log(ratio);
+    const double last_step = std::log(kAnswerStartRatio);  // in full film
     double log_step = std::min(log_factor, std::log(ratio));
-    if (log_step >= log_factor && log_factor > last_step + std::log(kSmallestRatio)) log_step = log_factor - last_step;
+    // In full film a step that would reach the velocities from farther than
+    // kAnswerStartRatio stops that far short of them.
+    if (in_full_film && log_step >= log_factor && log_factor > last_step + std::log(kSmallestRatio)) {
+      log_step = log_factor - last_step;
+    }
     const double next = log_factor <= log_step ? 1.0 : factor * std::exp(factor > 1.0 ? -log_step : log_step);
     // The film before the last (the step after it reaches the velocities)
     // is the answer's start: solved to the start tolerance without the norm

@@ -18,6 +18,7 @@
 #include "halfspace/fft/grid_transform.hpp"
 #include "halfspace/fft/real_fft.hpp"
 #include "halfspace/kernels/normal_kernel.hpp"
+#include "halfspace/operators/fft_influence_operator.hpp"
 
 namespace halfspace::solvers {
 namespace {
@@ -134,6 +135,15 @@ void FourierPreconditioner::apply(std::span<const float> in, std::span<float> ou
   assert(in.size() == m.grid.size() && out.size() == m.grid.size());
   if (!m.single) throw std::logic_error("FourierPreconditioner: single-precision vectors need its single transform");
   m.apply_single(in, out);
+}
+
+std::unique_ptr<FourierPreconditioner> make_fourier_preconditioner(const operators::FftInfluenceOperator& op,
+                                                                   const MakeTransforms& make_transforms) {
+  const Grid& grid = op.grid();
+  const std::shared_ptr<operators::SpectralTransforms>& transforms = op.transforms();
+  if (grid.periodic()) return std::make_unique<FourierPreconditioner>(grid, op.half_space(), op.symbol(), transforms);
+  return std::make_unique<FourierPreconditioner>(
+      grid, op.half_space(), make_transforms({.count = 1, .unpadded = true, .workspace = transforms->workspace()}));
 }
 
 }  // namespace halfspace::solvers

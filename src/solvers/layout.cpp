@@ -71,14 +71,10 @@ class SerialLayout final : public Layout {
 ElasticOperators Layout::make_operators(const Grid& grid, const HalfSpace& half_space, bool fourier,
                                         FftPlanning planning) const {
   ElasticOperators made;
-  std::shared_ptr<operators::SpectralTransforms> transforms = make_transforms(grid, planning, {.count = 1});
-  auto op = std::make_unique<FftInfluenceOperator>(grid, half_space, transforms);
-  if (fourier && grid.periodic()) {
-    made.fourier = std::make_unique<FourierPreconditioner>(grid, half_space, op->symbol(), std::move(transforms));
-  } else if (fourier) {
-    made.fourier = std::make_unique<FourierPreconditioner>(
-        grid, half_space,
-        make_transforms(grid, planning, {.count = 1, .unpadded = true, .workspace = transforms->workspace()}));
+  auto op = std::make_unique<FftInfluenceOperator>(grid, half_space, make_transforms(grid, planning, {.count = 1}));
+  if (fourier) {
+    made.fourier = make_fourier_preconditioner(
+        *op, [&](const operators::TransformsShape& shape) { return make_transforms(grid, planning, shape); });
   }
   made.op = std::move(op);
   return made;

@@ -3,6 +3,7 @@
 // inverse of K on any grid.
 #pragma once
 
+#include <functional>
 #include <memory>
 
 #include "halfspace/fft/even_symbol.hpp"
@@ -12,6 +13,10 @@
 #include "halfspace/half_space.hpp"
 #include "halfspace/operators/spectral_transforms.hpp"
 #include "halfspace/solvers/preconditioner.hpp"
+
+namespace halfspace::operators {
+class FftInfluenceOperator;
+}  // namespace halfspace::operators
 
 namespace halfspace::solvers {
 
@@ -58,5 +63,18 @@ class FourierPreconditioner final : public Preconditioner {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+// Makes transforms of a shape for op's grid (a layout's, or
+// SpectralTransforms::make_for).
+using MakeTransforms =
+    std::function<std::unique_ptr<operators::SpectralTransforms>(const operators::TransformsShape& shape)>;
+
+// The Fourier preconditioner of `op` and its half-space: on a periodic grid
+// the inverse of op's own symbol on op's transforms; on a free grid on the
+// grid's own (unpadded) transform that `make_transforms` makes, working in
+// op's idle workspace. Layout::make_operators and the films' dry contact
+// (src/lubrication/dry_contact_memo.cpp) make it so.
+std::unique_ptr<FourierPreconditioner> make_fourier_preconditioner(const operators::FftInfluenceOperator& op,
+                                                                   const MakeTransforms& make_transforms);
 
 }  // namespace halfspace::solvers
